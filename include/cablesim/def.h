@@ -1,0 +1,149 @@
+/* Definition structs: plain data a caller fills (or a loader fills) and hands to cs_model_create().
+ * Every quantity is SI (m, kg, s, N, Pa, J, rad). Each struct has a cs_default_*() that returns the
+ * documented defaults (docs/assumptions.md); fields that are design data default to 0 and must be set.
+ *
+ * Frame: x along the barrier, y the direction of attack (attack face at y = 0, protected side y > 0),
+ * z up from grade. */
+#ifndef CABLESIM_DEF_H
+#define CABLESIM_DEF_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum { CS_MAX_CRUSH_POINTS = 16 };
+
+/* Wire rope material: the idealised law of the paper (Fig. 3). Tension T against strain e:
+ *   T = EA e                      up to T = r_el * Fu            (elastic, slope EA)
+ *   T = r_el Fu + r_2 EA (e - e1) up to T = Fu                   (secondary slope r_2 * EA)
+ *   T = Fu                        up to e = breaking_strain      (plastic)
+ *   broken                        beyond.
+ * Unloading is elastic with slope EA; the plastic stretch stays. */
+typedef struct cs_rope_def {
+    double area;                    /* metallic area A, m^2 */
+    double modulus;                 /* apparent modulus E, Pa */
+    double nominal_strength;        /* Fu, N */
+    double elastic_limit_ratio;     /* r_el: end of the first slope as a fraction of Fu (paper: 0.6) */
+    double secondary_modulus_ratio; /* r_2: second slope as a fraction of E (paper: 0.6) */
+    double breaking_strain;         /* total strain at which the rope breaks (paper: 0.03) */
+    double mass_per_length;         /* kg/m, reported only (the cable is quasi-static) */
+} cs_rope_def;
+
+typedef struct cs_cable_def {
+    double height;         /* z of the cable at the posts, m */
+    double pretension;     /* installed tension, N */
+    double post_friction;  /* mu between cable and post (capstan at a threaded post) */
+    cs_rope_def rope;
+} cs_cable_def;
+
+/* Steel post section. */
+typedef struct cs_section_def {
+    double plastic_modulus; /* Zx, m^3 */
+    double inertia;         /* Ix, m^4 */
+    double web_area;        /* Aw for shear, m^2 */
+    double yield_stress;    /* Fy, Pa */
+    double modulus;         /* E, Pa */
+} cs_section_def;
+
+/* Footing (or the post itself driven in soil) and the soil around it: lateral capacity by Eq. 21,
+ *   S1 B D^2 - c_d P D - c_h P H = 0  =>  P = S1 B D^2 / (c_d D + c_h H),
+ * evaluated in the paper's units (psf, ft, lb) and converted; see footing.c. */
+typedef struct cs_footing_def {
+    double diameter;          /* B, m (width facing the soil) */
+    double depth;             /* D, embedment, m */
+    double soil_pressure;     /* S1, average soil pressure above the point of rotation, Pa */
+    double soil_pressure_cap; /* the paper caps S1 at 8000 psf, Pa */
+    double coeff_depth;       /* c_d (paper 2.37; building code 2.34) */
+    double coeff_height;      /* c_h (paper 2.64; building code 2.55) */
+    double rotation_limit;    /* footing rotation in soil at which the post is lost, rad */
+    double pullout_capacity;  /* axial pull along the post that pulls it out, N */
+} cs_footing_def;
+
+typedef enum cs_attachment {
+    CS_ATTACH_THROUGH = 0, /* cable threaded through the post: slides with capstan friction */
+    CS_ATTACH_CLAMPED = 1  /* cable clamped to the post: no sliding */
+} cs_attachment;
+
+typedef struct cs_post_def {
+    double x;               /* position along the barrier, m */
+    double height;          /* top of the post above grade, m */
+    cs_section_def section;
+    cs_footing_def footing;
+    cs_attachment attachment;
+    double rotation_limit;  /* post rotation from vertical at which it fails (paper: 45 deg), rad */
+} cs_post_def;
+
+/* A cable end anchor (dead-man). Cable c is tied to the start anchor at one end and the end anchor at
+ * the other. The anchor pulls out when the sum of the tied cables' tensions reaches its capacity. */
+typedef struct cs_anchor_def {
+    double x;                /* m */
+    double z;                /* height where the cables are tied, m */
+    double pullout_capacity; /* N */
+} cs_anchor_def;
+
+typedef struct cs_barrier_def {
+    int cable_count;
+    const cs_cable_def *cables;
+    int post_count;
+    const cs_post_def *posts; /* in increasing x */
+    cs_anchor_def start_anchor; /* at the low-x end */
+    cs_anchor_def end_anchor;   /* at the high-x end */
+} cs_barrier_def;
+
+/* Vehicle: a rigid body with a crushable front face. Body frame: x forward, y left, z up, origin at
+ * the centre of gravity. Heights are above grade with the vehicle at rest on its tyres. */
+typedef struct cs_vehicle_def {
+    double mass;                  /* kg */
+    double inertia[3];            /* roll Ixx, pitch Iyy, yaw Izz about the CG, kg m^2 */
+    double cg_height;             /* m */
+    double cg_to_front;           /* CG to the undeformed front face, m */
+    double front_width;           /* width of the front face, m */
+    double face_bottom;           /* lowest point of the front face (bumper bottom), m */
+    double face_top;              /* top of the front face (hood edge), m */
+    double front_to_cargo_bed;    /* front face to the front of the cargo bed, m (ratings) */
+    double wheelbase;             /* m */
+    double cg_to_front_axle;      /* m */
+    double track;                 /* m */
+    double tyre_static_deflection;/* m: sets the tyre stiffness from the static axle loads */
+    double tyre_damping_ratio;    /* fraction of critical, bounce mode */
+    double rolling_resistance;    /* coefficient of rolling resistance (free-rolling, unbraked) */
+    double tyre_friction;         /* lateral (side-slip) friction coefficient */
+    double face_friction;         /* mu between cable and front face */
+    int crush_point_count;        /* points of the loading curve, deformation increasing, first (0,0) */
+    double crush_deformation[CS_MAX_CRUSH_POINTS]; /* m */
+    double crush_force[CS_MAX_CRUSH_POINTS];       /* N */
+    double crush_unload_stiffness;                 /* N/m; crush is permanent beyond elastic recovery */
+} cs_vehicle_def;
+
+/* The attack and how to integrate it. */
+typedef struct cs_scenario_def {
+    double speed;           /* m/s at first contact */
+    double angle;           /* between barrier line and travel direction, rad (pi/2 = head-on) */
+    double impact_x;        /* where the centre of the front face meets the cable line, m */
+    double start_gap;       /* distance from the front face to the cable line at t = 0, m */
+    double dt;              /* time step, s */
+    double t_end;           /* time limit, s */
+    double output_interval; /* recording interval, s (0: every step) */
+    double crush_tolerance; /* relative change of face force that ends the crush iteration (paper: 0.05) */
+    double solver_tolerance;/* relative residual of the quasi-static barrier solve */
+    int solver_max_sweeps;  /* cap on Gauss-Seidel sweeps of the barrier solve in one step */
+    double stop_speed;      /* forward speed below which the vehicle counts as stopped, m/s */
+    double gravity;         /* m/s^2 */
+} cs_scenario_def;
+
+cs_rope_def cs_default_rope_def(void);
+cs_cable_def cs_default_cable_def(void);
+cs_section_def cs_default_section_def(void);
+cs_footing_def cs_default_footing_def(void);
+cs_post_def cs_default_post_def(void);
+cs_anchor_def cs_default_anchor_def(void);
+cs_barrier_def cs_default_barrier_def(void);
+cs_vehicle_def cs_default_vehicle_def(void);
+cs_scenario_def cs_default_scenario_def(void);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Install the Debian packages cablesim needs, only those missing. Safe to run again.
+set -euo pipefail
+pkgs=(build-essential cmake pkg-config clang libcyaml-dev libudunits2-dev libcmocka-dev libcairo2-dev)
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+echo "installing: ${missing[*]}"
+sudo=""
+[ "$(id -u)" -ne 0 ] && sudo="sudo"
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
