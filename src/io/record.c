@@ -1,0 +1,64 @@
+#include "record.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+int cs_record_init(cs_record *rec, const cs_model *model) {
+    memset(rec, 0, sizeof *rec);
+    rec->cable_count = cs_model_cable_count(model);
+    rec->post_count = cs_model_post_count(model);
+    rec->max_nodes = rec->post_count + 4; /* two anchors, every post, two face corners */
+    return 0;
+}
+
+static int grow(cs_record *rec) {
+    int cap = rec->capacity ? 2 * rec->capacity : 256;
+    size_t nc = (size_t)rec->cable_count, np = (size_t)rec->post_count, nn = (size_t)rec->max_nodes;
+    void *p;
+#define CS_GROW(field, count)                                                                          \
+    p = realloc(rec->field, (size_t)cap * (count) * sizeof *rec->field);                               \
+    if (!p) return -1;                                                                                 \
+    rec->field = p;
+    CS_GROW(vehicle, 1)
+    CS_GROW(energy, 1)
+    CS_GROW(cables, nc)
+    CS_GROW(posts, np)
+    CS_GROW(path_count, nc)
+    CS_GROW(path_xyz, nc * nn * 3)
+    CS_GROW(path_tension, nc * nn)
+#undef CS_GROW
+    rec->capacity = cap;
+    return 0;
+}
+
+void cs_record_frame(const cs_model *model, const cs_state *state, void *user) {
+    cs_record *rec = user;
+    if (rec->failed) return;
+    if (rec->frame_count == rec->capacity && grow(rec) != 0) {
+        rec->failed = 1;
+        return;
+    }
+    int f = rec->frame_count;
+    cs_state_vehicle(model, state, &rec->vehicle[f]);
+    cs_state_energy(state, &rec->energy[f]);
+    for (int c = 0; c < rec->cable_count; c++) {
+        size_t k = (size_t)f * (size_t)rec->cable_count + (size_t)c;
+        cs_state_cable(model, state, c, &rec->cables[k]);
+        rec->path_count[k] = cs_state_cable_path(model, state, c, rec->path_xyz + k * (size_t)rec->max_nodes * 3,
+                                                 rec->path_tension + k * (size_t)rec->max_nodes, rec->max_nodes);
+    }
+    for (int p = 0; p < rec->post_count; p++)
+        cs_state_post(model, state, p, &rec->posts[(size_t)f * (size_t)rec->post_count + (size_t)p]);
+    rec->frame_count++;
+}
+
+void cs_record_free(cs_record *rec) {
+    free(rec->vehicle);
+    free(rec->energy);
+    free(rec->cables);
+    free(rec->posts);
+    free(rec->path_count);
+    free(rec->path_xyz);
+    free(rec->path_tension);
+    memset(rec, 0, sizeof *rec);
+}

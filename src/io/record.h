@@ -1,0 +1,30 @@
+/* A run's recorded frames, collected through cs_run's output callback; the input of every writer
+ * (CSV, JSON, plots, report). Growing the arrays happens here, outside the engine's step. */
+#ifndef CS_RECORD_H
+#define CS_RECORD_H
+
+#include "cablesim/cablesim.h"
+
+typedef struct cs_record {
+    int cable_count;
+    int post_count;
+    int max_nodes;            /* path points kept per cable and frame */
+    int frame_count;
+    int capacity;
+    int failed;               /* an allocation failed; frames after it were dropped */
+    cs_vehicle_view *vehicle; /* [frame] */
+    cs_energy *energy;        /* [frame] */
+    cs_cable_view *cables;    /* [frame * cable_count + c] */
+    cs_post_view *posts;      /* [frame * post_count + p] */
+    int *path_count;          /* [frame * cable_count + c] */
+    double *path_xyz;         /* [(frame * cable_count + c) * max_nodes * 3] */
+    double *path_tension;     /* [(frame * cable_count + c) * max_nodes] */
+} cs_record;
+
+/* Prepare an empty record for the model. Returns 0, or -1 if memory is short. */
+int cs_record_init(cs_record *rec, const cs_model *model);
+/* cs_output_fn: append the state as one frame (user is the cs_record). */
+void cs_record_frame(const cs_model *model, const cs_state *state, void *user);
+void cs_record_free(cs_record *rec);
+
+#endif
