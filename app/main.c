@@ -1,0 +1,196 @@
+/* cablesim: run, check and list cable-barrier models. Exit status: 0 done, 1 the run or its outputs
+ * failed, 2 a bad model or command line. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cablesim/cablesim.h"
+#include "loader.h"
+#include "outfile.h"
+#include "record.h"
+#include "schema.h"
+#include "writers.h"
+
+enum { EXIT_RUN = 1, EXIT_BAD = 2 };
+
+static const char usage[] =
+    "usage: cablesim run FILE [-o DIR] [--dt T] [--t-end T] [--set PATH=VALUE]...\n"
+    "       cablesim check FILE [--set PATH=VALUE]...\n"
+    "       cablesim list      the named parts of the library (data/*.yaml)\n"
+    "       cablesim schema    the model-file reference (docs/file-format.md)\n"
+    "       cablesim --help | --version\n"
+    "\n"
+    "run writes DIR/timeseries.csv, DIR/events.csv and DIR/summary.json (default DIR: results/<model name>)\n"
+    "and prints a summary. Values take units: --dt \"0.2 ms\", --set scenario.speed=\"35 mph\",\n"
+    "--set barrier.cables[0].pretension=\"8 kip\". Exit status: 0 done, 1 the run failed, 2 bad model or "
+    "usage.\n";
+
+typedef struct options {
+    const char *command, *file, *out_dir;
+} options;
+
+static int bad_usage(const char *what) {
+    fprintf(stderr, "cablesim: %s\n%s", what, usage);
+    return EXIT_BAD;
+}
+
+/* Parse the command line into o, queueing --set, --dt and --t-end on the loader. */
+static int parse(int argc, char **argv, options *o, cs_loader *l) {
+    for (int i = 2; i < argc; i++) {
+        const char *a = argv[i], *v = NULL;
+        char set[1024];
+        static const char *const valued[][2] = {
+            {"--set", NULL}, {"--dt", "scenario.dt"}, {"--t-end", "scenario.t_end"}, {"-o", NULL}};
+        int k = -1;
+        for (int j = 0; j < 4; j++) {
+            size_t n = strlen(valued[j][0]);
+            if (strncmp(a, valued[j][0], n) == 0 && (a[n] == '\0' || a[n] == '=')) {
+                k = j;
+                v = a[n] == '=' ? a + n + 1 : i + 1 < argc ? argv[++i] : NULL;
+            }
+        }
+        if (k < 0 && a[0] == '-') return bad_usage("unknown option");
+        if (k < 0 && o->file) return bad_usage("more than one model file");
+        if (k < 0)
+            o->file = a;
+        else if (!v)
+            return bad_usage("an option lacks its value");
+        else if (k == 3)
+            o->out_dir = v;
+        else {
+            snprintf(set, sizeof set, "%s%s%s", valued[k][1] ? valued[k][1] : "", valued[k][1] ? "=" : "", v);
+            cs_loader_set(l, set);
+        }
+    }
+    return o->file ? 0 : bad_usage("no model file");
+}
+
+static int write_outputs(const char *dir, const cs_model_input *in, const cs_state *state,
+                         const cs_record *rec) {
+    char why[512] = "";
+    cs_outdir out;
+    int rc = cs_out_open(&out, dir, why, sizeof why);
+    static const char *const names[] = {"timeseries.csv", "events.csv", "summary.json"};
+    for (int k = 0; rc == 0 && k < 3; k++) {
+        FILE *f = cs_out_begin(&out, names[k], why, sizeof why);
+        if (!f) {
+            rc = -1;
+            break;
+        }
+        rc = k == 0   ? cs_write_timeseries(f, rec, why, sizeof why)
+             : k == 1 ? cs_write_events(f, state, why, sizeof why)
+                      : cs_write_summary_json(f, in, state, why, sizeof why);
+        char end_why[512];
+        if (cs_out_end(&out, f, end_why, sizeof end_why) != 0 && rc == 0) {
+            snprintf(why, sizeof why, "%s", end_why);
+            rc = -1;
+        }
+    }
+    if (rc == 0) rc = cs_out_commit(&out, why, sizeof why);
+    if (rc != 0) {
+        cs_out_abort(&out);
+        fprintf(stderr, "cablesim: nothing written: %s\n", why);
+    }
+    return rc;
+}
+
+static int run(const cs_model_input *in, cs_model *model, const char *dir) {
+    cs_error err = {0};
+    cs_record rec;
+    cs_state *state = cs_state_create(model, &err);
+    int rc = EXIT_RUN;
+    if (!state || cs_record_init(&rec, model) != 0) {
+        fprintf(stderr, "cablesim: %s\n", state ? "out of memory" : err.message);
+        cs_state_free(state);
+        return EXIT_RUN;
+    }
+    char path[1024];
+    if (!dir) snprintf(path, sizeof path, "results/%s", in->name);
+    if (cs_run(model, state, cs_record_frame, &rec, &err) != CS_OK)
+        fprintf(stderr, "cablesim: the run failed, nothing written: %s\n", err.message);
+    else if (rec.failed)
+        fprintf(stderr, "cablesim: out of memory while recording, nothing written\n");
+    else if (write_outputs(dir ? dir : path, in, state, &rec) == 0) {
+        cs_write_report(stdout, in, state);
+        printf("  outputs              %s/{timeseries.csv,events.csv,summary.json}\n", dir ? dir : path);
+        rc = 0;
+    }
+    cs_record_free(&rec);
+    cs_state_free(state);
+    return rc;
+}
+
+static int list(cs_loader *l) {
+    static const char *const titles[] = {"Vehicles", "Wire ropes", "Post sections"};
+    for (int k = 0; k < CS_PART_KIND_COUNT; k++) {
+        const char **names, **docs;
+        int n = cs_loader_library(l, (cs_part_kind)k, &names, &docs);
+        if (n < 0) break;
+        printf("%s%s:\n", k ? "\n" : "", titles[k]);
+        for (int i = 0; i < n; i++) {
+            cs_any_def d;
+            if (cs_loader_part(l, (cs_part_kind)k, names[i], &d) != 0) continue;
+            if (k == CS_PART_VEHICLE)
+                printf("  %-14s %7.0f kg (%6.0f lb), crush force %.0f kN at %.2f m  %s\n", names[i],
+                       d.vehicle.mass, d.vehicle.mass / 0.45359237,
+                       d.vehicle.crush_force[d.vehicle.crush_point_count - 1] / 1e3,
+                       d.vehicle.crush_deformation[d.vehicle.crush_point_count - 1], docs[i]);
+            else if (k == CS_PART_ROPE)
+                printf("  %-14s A %7.1f mm2 (%.3f in2), Fu %6.1f kN (%5.1f kip)  %s\n", names[i],
+                       d.rope.area * 1e6, d.rope.area / 0.00064516, d.rope.nominal_strength / 1e3,
+                       d.rope.nominal_strength / 4448.2216152605, docs[i]);
+            else
+                printf("  %-14s Zx %.3f in3, Ix %.3f in4, Aw %.3f in2, Fy %.0f ksi  %s\n", names[i],
+                       d.section.plastic_modulus / 1.6387064e-05, d.section.inertia / 4.162314256e-07,
+                       d.section.web_area / 0.00064516, d.section.yield_stress / 6894757.29316836, docs[i]);
+        }
+    }
+    if (cs_loader_error_count(l)) {
+        cs_loader_print_errors(l, stderr);
+        return EXIT_BAD;
+    }
+    return 0;
+}
+
+int main(int argc, char **argv) {
+    if (argc < 2) return bad_usage("no command");
+    const char *cmd = argv[1];
+    if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
+        fputs(usage, stdout);
+        return 0;
+    }
+    if (strcmp(cmd, "--version") == 0) {
+        printf("cablesim %s\n", CS_VERSION_STRING);
+        return 0;
+    }
+    if (strcmp(cmd, "schema") == 0) return cs_schema_markdown(stdout) == 0 ? 0 : EXIT_RUN;
+    int is_run = strcmp(cmd, "run") == 0, is_check = strcmp(cmd, "check") == 0;
+    if (!is_run && !is_check && strcmp(cmd, "list") != 0) return bad_usage("unknown command");
+    char why[256];
+    cs_loader *l = cs_loader_create(NULL, why, sizeof why);
+    if (!l) {
+        fprintf(stderr, "cablesim: %s\n", why);
+        return EXIT_RUN;
+    }
+    int rc;
+    options o = {cmd, NULL, NULL};
+    cs_model_input in;
+    cs_model *model = NULL;
+    if (!is_run && !is_check)
+        rc = list(l);
+    else if ((rc = parse(argc, argv, &o, l)) != 0) {
+    } else if (cs_loader_load(l, o.file, &in) != 0 || !(model = cs_loader_build(l, &in))) {
+        cs_loader_print_errors(l, stderr);
+        fprintf(stderr, "cablesim: %s: %d problem%s, nothing run\n", o.file, cs_loader_error_count(l),
+                cs_loader_error_count(l) == 1 ? "" : "s");
+        rc = EXIT_BAD;
+    } else if (is_check) {
+        printf("%s: %s is a valid model (%d cables, %d posts)\n", o.file, in.name, in.barrier.cable_count,
+               in.barrier.post_count);
+    } else {
+        rc = run(&in, model, o.out_dir);
+    }
+    cs_model_free(model);
+    cs_loader_free(l);
+    return rc;
+}

@@ -1,0 +1,498 @@
+/* Checked values into the engine's definition structs: units, ranges, parts, post runs, and the
+ * physical checks that need several fields, each reported at the field's place. */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "loader_int.h"
+
+enum { MAX_POSTS = 10000 };
+static const double POS_TOL = 1e-3; /* m: two positions closer than this are the same */
+static const double PI = 3.14159265358979323846;
+
+static const cs_node *at(const cs_node *map, const char *key) {
+    const cs_node *n = cs_node_get(map, key);
+    return n ? n : map;
+}
+
+static const cs_field *field_of(const cs_node *map, const char *key) {
+    return &map->table->fields[cs_table_find(map->table, key)];
+}
+
+/* Read one scalar as the field's quantity and check its range. */
+static int read_value(cs_loader *l, const cs_node *n, const cs_field *f, double *out) {
+    char why[300], hint[160];
+    cs_field_hint(f, hint, sizeof hint);
+    if ((f->flags & CS_NONE_OK) && strcmp(n->text, "none") == 0) {
+        *out = INFINITY;
+        return 0;
+    }
+    if (cs_units_read(l->units, n->text, f->q, out, why, sizeof why) != 0) {
+        cs_err_node(l, n, 0, "%s (expected %s)", why, hint);
+        return -1;
+    }
+    const char *bad = NULL;
+    double deg = 180 / PI;
+    if ((f->flags & CS_POS) && !(*out > 0))
+        bad = "must be above zero";
+    else if ((f->flags & CS_NONNEG) && *out < 0)
+        bad = "must not be negative";
+    else if ((f->flags & CS_MAX1) && *out > 1)
+        bad = "must be at most 1";
+    else if ((f->flags & CS_MAX90) && *out > PI / 2 + 1e-12)
+        bad = "must be at most 90 deg";
+    else if ((f->flags & CS_MAX180) && *out >= PI)
+        bad = "must be below 180 deg";
+    if (bad) {
+        if (f->q == CS_Q_ANGLE)
+            cs_err_node(l, n, 0, "'%s' (%.6g deg) %s (expected %s)", n->text, *out * deg, bad, hint);
+        else
+            cs_err_node(l, n, 0, "'%s' %s (expected %s)", n->text, bad, hint);
+        return -1;
+    }
+    return 0;
+}
+
+/* A quantity by key; 1 if read, 0 if absent, -1 if wrong. */
+static int get_qty(cs_loader *l, const cs_node *map, const char *key, double *out) {
+    const cs_node *n = cs_node_get(map, key);
+    if (!n) return 0;
+    return read_value(l, n, field_of(map, key), out) == 0 ? 1 : -1;
+}
+
+/* A list of quantities by key: count read, 0 if absent, -1 if wrong. */
+static int get_list(cs_loader *l, const cs_node *map, const char *key, double *out, int max) {
+    const cs_node *n = cs_node_get(map, key);
+    if (!n) return 0;
+    if (n->count > max) {
+        cs_err_node(l, n, 0, "%d values (expected at most %d)", n->count, max);
+        return -1;
+    }
+    int ok = 1;
+    for (int i = 0; i < n->count; i++)
+        ok &= read_value(l, n->items[i], field_of(map, key), &out[i]) == 0;
+    return ok ? n->count : -1;
+}
+
+static void check_required(cs_loader *l, const cs_node *map) {
+    for (int i = 0; i < map->table->count; i++) {
+        const cs_field *f = &map->table->fields[i];
+        if (!(f->flags & CS_REQ) || map->items[i]) continue;
+        char hint[200];
+        if (f->kind == CS_F_MAP || f->kind == CS_F_SEQ)
+            snprintf(hint, sizeof hint, "%s %s", f->kind == CS_F_SEQ ? "a list of" : "a", f->sub->name);
+        else
+            cs_field_hint(f, hint, sizeof hint);
+        cs_err_node(l, map, 0, "missing '%s' (expected %s)", f->key, hint);
+    }
+}
+
+static int fields(cs_loader *l, const cs_node *map, void *target, int required) {
+    int before = l->error_count;
+    if (required) check_required(l, map);
+    for (int i = 0; i < map->table->count; i++) {
+        const cs_field *f = &map->table->fields[i];
+        const cs_node *n = map->items[i];
+        if (!n || f->offset < 0) continue;
+        char *dst = (char *)target + f->offset;
+        if (f->kind == CS_F_QTY) {
+            double v;
+            if (read_value(l, n, f, &v) == 0) memcpy(dst, &v, sizeof v);
+        } else if (f->kind == CS_F_MAP) {
+            fields(l, n, dst, required);
+        } else if (f->kind == CS_F_INT) {
+            char *end;
+            errno = 0;
+            long v = strtol(n->text, &end, 10);
+            int iv = (int)v;
+            if (end == n->text || *end || errno || v > INT_MAX || v < ((f->flags & CS_POS) ? 1 : 0))
+                cs_err_node(l, n, 0, "'%s' is not a %swhole number (expected %s)", n->text,
+                            (f->flags & CS_POS) ? "positive " : "", "e.g. 200");
+            else
+                memcpy(dst, &iv, sizeof iv);
+        } else if (f->kind == CS_F_ENUM) {
+            int k = 0;
+            while (f->words[k] && strcmp(f->words[k], n->text) != 0)
+                k++;
+            char hint[100];
+            cs_field_hint(f, hint, sizeof hint);
+            if (f->words[k])
+                memcpy(dst, &k, sizeof k);
+            else
+                cs_err_node(l, n, 0, "'%s' is not a choice (expected %s)", n->text, hint);
+        }
+    }
+    return l->error_count - before;
+}
+
+int cs_convert_fields(cs_loader *l, const cs_node *map, void *target) {
+    return fields(l, map, target, 1);
+}
+
+/* ---- vehicle ---- */
+
+static void crush_curve(cs_loader *l, const cs_node *v, cs_vehicle_def *out) {
+    double def[CS_MAX_CRUSH_POINTS], force[CS_MAX_CRUSH_POINTS], speed, depth;
+    int nd = get_list(l, v, "crush_deformation", def, CS_MAX_CRUSH_POINTS);
+    int nf = get_list(l, v, "crush_force", force, CS_MAX_CRUSH_POINTS);
+    int nr = get_list(l, v, "crush_force_fraction", force, CS_MAX_CRUSH_POINTS);
+    int gs = get_qty(l, v, "crush_fit_speed", &speed), gd = get_qty(l, v, "crush_fit_depth", &depth);
+    const cs_node *list = at(v, "crush_deformation");
+    if (nd <= 0 || nf < 0 || nr < 0 || gs < 0 || gd < 0) return;
+    if ((nf > 0) == (nr > 0)) {
+        cs_err_node(l, v, 0, "give crush_force or crush_force_fraction (expected exactly one of them)");
+        return;
+    }
+    int n = nf > 0 ? nf : nr;
+    if (n != nd || nd < 2) {
+        cs_err_node(l, list, 0, "%d deformations and %d forces (expected two or more pairs)", nd, n);
+        return;
+    }
+    if (def[0] != 0 || force[0] != 0) {
+        cs_err_node(l, list, 0, "the curve starts at (%g m, %g) (expected the point 0, 0 first)", def[0],
+                    force[0]);
+        return;
+    }
+    for (int i = 1; i < n; i++)
+        if (!(def[i] > def[i - 1])) {
+            cs_err_node(l, list->items[i], 0, "deformations must increase (expected above %g m)", def[i - 1]);
+            return;
+        }
+    if (nr > 0) { /* Fmax: the area under the curve up to depth equals the test's kinetic energy */
+        if (gs != 1 || gd != 1 || depth > def[n - 1]) {
+            cs_err_node(l, v, 0,
+                        "crush_force_fraction needs crush_fit_speed and crush_fit_depth (expected a "
+                        "depth within the curve, up to %g m)",
+                        def[n - 1]);
+            return;
+        }
+        double area = 0;
+        for (int i = 1; i < n && def[i - 1] < depth; i++) {
+            double x1 = fmin(def[i], depth);
+            double f1 = force[i - 1] + (force[i] - force[i - 1]) * (x1 - def[i - 1]) / (def[i] - def[i - 1]);
+            area += 0.5 * (force[i - 1] + f1) * (x1 - def[i - 1]);
+        }
+        double fmax = 0.5 * out->mass * speed * speed / area;
+        for (int i = 0; i < n; i++)
+            force[i] *= fmax;
+    }
+    out->crush_point_count = n;
+    memcpy(out->crush_deformation, def, (size_t)n * sizeof *def);
+    memcpy(out->crush_force, force, (size_t)n * sizeof *force);
+}
+
+int cs_convert_vehicle(cs_loader *l, const cs_node *v, cs_vehicle_def *out) {
+    int before = l->error_count;
+    *out = cs_default_vehicle_def();
+    fields(l, v, out, 1);
+    const cs_node *box = cs_node_get(v, "inertia_box");
+    if (box) {
+        double b[3];
+        check_required(l, box);
+        if (get_qty(l, box, "length", &b[0]) == 1 && get_qty(l, box, "width", &b[1]) == 1 &&
+            get_qty(l, box, "height", &b[2]) == 1) {
+            out->inertia[0] = out->mass * (b[1] * b[1] + b[2] * b[2]) / 12;
+            out->inertia[1] = out->mass * (b[0] * b[0] + b[2] * b[2]) / 12;
+            out->inertia[2] = out->mass * (b[0] * b[0] + b[1] * b[1]) / 12;
+        }
+    } else {
+        static const char *const keys[] = {"roll_inertia", "pitch_inertia", "yaw_inertia"};
+        for (int i = 0; i < 3; i++)
+            if (!cs_node_get(v, keys[i]))
+                cs_err_node(l, v, 0,
+                            "missing '%s' (expected a moment of inertia, e.g. \"35000 kg m2\", or "
+                            "inertia_box)",
+                            keys[i]);
+    }
+    crush_curve(l, v, out);
+    if (l->error_count > before) return l->error_count - before;
+    if (out->face_top <= out->face_bottom)
+        cs_err_node(l, at(v, "face_top"), 0,
+                    "the face top (%g m) is not above its bottom (%g m) (expected "
+                    "face_top > face_bottom)",
+                    out->face_top, out->face_bottom);
+    if (out->cg_to_front_axle >= out->wheelbase)
+        cs_err_node(l, at(v, "cg_to_front_axle"), 0,
+                    "the CG (%g m behind the front axle) is not between the "
+                    "axles (expected less than the wheelbase, %g m)",
+                    out->cg_to_front_axle, out->wheelbase);
+    if (out->cg_to_front <= out->cg_to_front_axle)
+        cs_err_node(l, at(v, "cg_to_front"), 0,
+                    "the front face (%g m ahead of the CG) is behind the front axle "
+                    "(expected more than cg_to_front_axle, %g m)",
+                    out->cg_to_front, out->cg_to_front_axle);
+    return l->error_count - before;
+}
+
+/* ---- ropes, cables ---- */
+
+int cs_convert_rope(cs_loader *l, const cs_node *rope, cs_rope_def *out, double *diameter) {
+    int before = l->error_count;
+    const cs_node *from = cs_node_get(rope, "scale_from");
+    double d = 0, d0 = 0;
+    int has_d = get_qty(l, rope, "diameter", &d);
+    *out = cs_default_rope_def();
+    if (from) {
+        const cs_node *base = l->depth < 16 ? cs_find_part(l, from->source, "ropes", from->text, from) : NULL;
+        l->depth++;
+        int base_errors = base ? cs_convert_rope(l, base, out, &d0) : 1;
+        l->depth--;
+        if (base_errors) return l->error_count - before + (l->error_count == before);
+        if (has_d != 1 || d0 <= 0) {
+            cs_err_node(l, from, 0,
+                        "scaling needs this rope's and '%s''s diameter (expected diameter in both)",
+                        from->text);
+            return l->error_count - before;
+        }
+        double r = (d / d0) * (d / d0);
+        out->area *= r;
+        out->nominal_strength *= r;
+        out->mass_per_length *= r;
+    }
+    fields(l, rope, out, !from);
+    if (diameter) *diameter = has_d == 1 ? d : d0;
+    return l->error_count - before;
+}
+
+static void convert_cable(cs_loader *l, const cs_node *c, cs_cable_def *out) {
+    *out = cs_default_cable_def();
+    const cs_node *name = cs_node_get(c, "rope");
+    const cs_node *rope = name ? cs_find_part(l, name->source, "ropes", name->text, name) : NULL;
+    if (rope && cs_convert_rope(l, rope, &out->rope, NULL) != 0) return;
+    if (fields(l, c, out, 1) != 0 || !rope) return;
+    const cs_rope_def *r = &out->rope;
+    double ea = r->area * r->modulus, fu = r->nominal_strength;
+    double strain_fu = r->elastic_limit_ratio * fu / ea +
+                       (1 - r->elastic_limit_ratio) * fu / (r->secondary_modulus_ratio * ea);
+    if (r->breaking_strain <= strain_fu)
+        cs_err_node(l, at(c, "breaking_strain"), 0,
+                    "breaking strain %g is below the strain at nominal strength "
+                    "%.4g (expected more, e.g. 0.03)",
+                    r->breaking_strain, strain_fu);
+    if (out->pretension >= r->elastic_limit_ratio * fu)
+        cs_err_node(l, at(c, "pretension"), 0,
+                    "pretension %.4g kN is beyond the rope's elastic limit %.4g kN "
+                    "(expected less)",
+                    out->pretension / 1e3, r->elastic_limit_ratio * fu / 1e3);
+}
+
+/* ---- posts ---- */
+
+typedef struct post_slot {
+    cs_post_def def;
+    const cs_node *group;
+} post_slot;
+
+static int by_x(const void *a, const void *b) {
+    const post_slot *p = a, *q = b;
+    return (p->def.x > q->def.x) - (p->def.x < q->def.x);
+}
+
+/* The positions of a group: one by one (x) or a run. Returns the count, -1 on errors. */
+static int positions(cs_loader *l, const cs_node *g, double *xs, int max) {
+    int nx = get_list(l, g, "x", xs, max);
+    double from = 0, to = 0, spacing = 0, ex[256];
+    int gf = get_qty(l, g, "from", &from), gt = get_qty(l, g, "to", &to),
+        gs = get_qty(l, g, "spacing", &spacing);
+    int ne = get_list(l, g, "except", ex, 256), before = l->error_count;
+    const cs_node *count = cs_node_get(g, "count");
+    if (nx < 0 || gf < 0 || gt < 0 || gs < 0 || ne < 0) return -1;
+    if (nx > 0) {
+        if (gf || gt || gs || count || ne) {
+            cs_err_node(l, g, 0, "posts given by x and as a run (expected x, or from/spacing/to or count)");
+            return -1;
+        }
+        return nx;
+    }
+    if (!gf || !gs || !gt == !count) {
+        cs_err_node(l, g, 0, "%s (expected x: [...], or from, spacing and one of to or count)",
+                    !gf   ? "missing 'from'"
+                    : !gs ? "missing 'spacing'"
+                          : "give to or count, not both");
+        return -1;
+    }
+    long n;
+    if (count) {
+        char *end;
+        n = strtol(count->text, &end, 10) - 1;
+        if (end == count->text || *end || n < 0) {
+            cs_err_node(l, count, 0, "'%s' is not a positive whole number (expected e.g. 19)", count->text);
+            return -1;
+        }
+    } else {
+        double steps = (to - from) / spacing;
+        n = lround(steps);
+        if (steps < -1e-9 || fabs(from + (double)n * spacing - to) > POS_TOL) {
+            cs_err_node(l, at(g, "to"), 0,
+                        "the run does not end here: %g m is not %g m plus a whole number of "
+                        "%g-m spacings (expected e.g. %g m)",
+                        to, from, spacing, from + fmax((double)n, 0) * spacing);
+            return -1;
+        }
+    }
+    if (n + 1 > max) {
+        cs_err_node(l, g, 0, "%ld posts (expected at most %d)", n + 1, max);
+        return -1;
+    }
+    int k = 0, used[256] = {0};
+    for (long i = 0; i <= n; i++) {
+        double x = from + (double)i * spacing;
+        int skip = 0;
+        for (int e = 0; e < ne; e++)
+            if (fabs(ex[e] - x) < POS_TOL) skip = used[e] = 1;
+        if (!skip) xs[k++] = x;
+    }
+    for (int e = 0; e < ne; e++)
+        if (!used[e])
+            cs_err_node(l, cs_node_get(g, "except")->items[e], 0,
+                        "no post of the run stands at %g m (expected one "
+                        "of the run's positions)",
+                        ex[e]);
+    return l->error_count > before ? -1 : k;
+}
+
+static int convert_group(cs_loader *l, const cs_node *g, const cs_node *soil, cs_post_def *def) {
+    int before = l->error_count;
+    *def = cs_default_post_def();
+    const cs_node *name = cs_node_get(g, "section");
+    const cs_node *section = name ? cs_find_part(l, name->source, "sections", name->text, name) : NULL;
+    if (section) fields(l, section, &def->section, 1);
+    if (soil) fields(l, soil, &def->footing, 0);
+    fields(l, g, def, 1);
+    return l->error_count - before;
+}
+
+static int convert_posts(cs_loader *l, const cs_node *barrier, cs_barrier_def *out) {
+    const cs_node *groups = cs_node_get(barrier, "posts"), *soil = cs_node_get(barrier, "soil");
+    int before = l->error_count, total = 0;
+    double *xs = malloc(MAX_POSTS * sizeof *xs);
+    post_slot *posts = malloc(MAX_POSTS * sizeof *posts);
+    for (int gi = 0; xs && posts && groups && gi < groups->count; gi++) {
+        const cs_node *g = groups->items[gi];
+        cs_post_def def;
+        int n = positions(l, g, xs, MAX_POSTS - total);
+        if (convert_group(l, g, soil, &def) != 0 || n < 0) continue;
+        for (int i = 0; i < n; i++) {
+            posts[total] = (post_slot){def, g};
+            posts[total++].def.x = xs[i];
+        }
+    }
+    if (l->error_count == before && total == 0 && groups)
+        cs_err_node(l, groups, 0, "no posts (expected at least one)");
+    if (l->error_count == before && posts) {
+        qsort(posts, (size_t)total, sizeof *posts, by_x);
+        cs_post_def *defs = cs_arena_alloc(l, (size_t)total * sizeof *defs);
+        l->post_origin = cs_arena_alloc(l, (size_t)total * sizeof *l->post_origin);
+        for (int i = 0; defs && l->post_origin && i < total; i++) {
+            defs[i] = posts[i].def;
+            l->post_origin[i] = posts[i].group;
+            if (i > 0 && defs[i].x - defs[i - 1].x < POS_TOL)
+                cs_err_node(l, posts[i].group, 0,
+                            "two posts at x = %g m (%s and %s) (expected one post per "
+                            "position: leave one out with except)",
+                            defs[i].x, posts[i - 1].group->path, posts[i].group->path);
+        }
+        out->posts = defs;
+        out->post_count = total;
+    }
+    free(xs);
+    free(posts);
+    return l->error_count - before;
+}
+
+/* ---- the model ---- */
+
+static void check_barrier(cs_loader *l, const cs_node *barrier, const cs_barrier_def *b) {
+    const cs_node *cables = cs_node_get(barrier, "cables"), *anchors = cs_node_get(barrier, "anchors");
+    const cs_post_def *first = &b->posts[0], *last = &b->posts[b->post_count - 1];
+    for (int c = 0; c < b->cable_count; c++) {
+        for (int p = 0; p < b->post_count; p++) {
+            if (b->cables[c].height <= b->posts[p].height) continue;
+            cs_err_node(l, at(cables->items[c], "height"), 0,
+                        "the cable (%g m) is above the top of the post at "
+                        "x = %g m (%g m) (expected a height up to the posts' tops)",
+                        b->cables[c].height, b->posts[p].x, b->posts[p].height);
+            break;
+        }
+    }
+    const cs_node *start = at(anchors, "start"), *end = at(anchors, "end");
+    if (b->start_anchor.x >= first->x)
+        cs_err_node(l, at(start, "x"), 0,
+                    "the start anchor (x = %g m) is inside the barrier (expected it before "
+                    "the first post, x = %g m)",
+                    b->start_anchor.x, first->x);
+    if (b->end_anchor.x <= last->x)
+        cs_err_node(l, at(end, "x"), 0,
+                    "the end anchor (x = %g m) is inside the barrier (expected it after the "
+                    "last post, x = %g m)",
+                    b->end_anchor.x, last->x);
+}
+
+static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_def *s,
+                           const cs_barrier_def *b) {
+    if (b && (s->impact_x <= b->start_anchor.x || s->impact_x >= b->end_anchor.x))
+        cs_err_node(l, at(sc, "impact_x"), 0,
+                    "the impact point (%g m) is outside the barrier (expected between "
+                    "the anchors, %g m to %g m)",
+                    s->impact_x, b->start_anchor.x, b->end_anchor.x);
+    if (s->t_end <= s->dt)
+        cs_err_node(l, at(sc, "t_end"), 0,
+                    "the time limit %g s is not above the time step %g s (expected t_end > "
+                    "dt)",
+                    s->t_end, s->dt);
+    if (s->stop_speed >= s->speed)
+        cs_err_node(l, at(sc, "stop_speed"), 0,
+                    "the stop speed %g m/s is not below the impact speed %g m/s "
+                    "(expected less)",
+                    s->stop_speed, s->speed);
+}
+
+static const cs_node *need(cs_loader *l, const cs_node *root, const char *key, const char *hint) {
+    const cs_node *n = cs_node_get(root, key);
+    if (!n) cs_err_node(l, root, 0, "missing '%s' (expected %s)", key, hint);
+    return n;
+}
+
+int cs_convert_model(cs_loader *l, const cs_node *root, const char *file, cs_model_input *out) {
+    int before = l->error_count;
+    const cs_node *name = cs_node_get(root, "name");
+    const char *base = strrchr(file, '/') ? strrchr(file, '/') + 1 : file;
+    char stem[256];
+    snprintf(stem, sizeof stem, "%.*s", (int)strcspn(base, "."), base);
+    out->name = cs_arena_strdup(l, name ? name->text : stem);
+    out->file = file;
+    const cs_node *barrier = need(l, root, "barrier", "a barrier mapping, or barrier: {file: other.yaml}");
+    const cs_node *vehicle = need(l, root, "vehicle", "a vehicle part's name, e.g. vehicle: M");
+    const cs_node *scenario = need(l, root, "scenario", "a scenario mapping with speed and impact_x");
+    l->vehicle_node = vehicle;
+    l->scenario_node = scenario;
+    if (vehicle) cs_convert_vehicle(l, vehicle, &out->vehicle);
+    out->scenario = cs_default_scenario_def();
+    if (scenario && fields(l, scenario, &out->scenario, 1) == 0)
+        check_scenario(l, scenario, &out->scenario, NULL);
+    if (!barrier) return l->error_count - before;
+    int barrier_before = l->error_count;
+    out->barrier = cs_default_barrier_def();
+    check_required(l, barrier);
+    const cs_node *cables = cs_node_get(barrier, "cables"), *anchors = cs_node_get(barrier, "anchors");
+    l->anchors_node = anchors;
+    if (anchors) fields(l, anchors, &out->barrier, 1);
+    if (cables && cables->count == 0) cs_err_node(l, cables, 0, "no cables (expected at least one)");
+    cs_cable_def *defs = cables ? cs_arena_alloc(l, (size_t)cables->count * sizeof *defs + 1) : NULL;
+    l->cable_origin = cables ? cs_arena_alloc(l, (size_t)cables->count * sizeof *l->cable_origin + 1) : NULL;
+    for (int c = 0; defs && l->cable_origin && c < cables->count; c++) {
+        convert_cable(l, cables->items[c], &defs[c]);
+        l->cable_origin[c] = cables->items[c];
+    }
+    out->barrier.cables = defs;
+    out->barrier.cable_count = cables ? cables->count : 0;
+    convert_posts(l, barrier, &out->barrier);
+    if (l->error_count == barrier_before) {
+        check_barrier(l, barrier, &out->barrier);
+        if (scenario && l->error_count == before) check_scenario(l, scenario, &out->scenario, &out->barrier);
+    }
+    return l->error_count - before;
+}

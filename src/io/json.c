@@ -1,0 +1,190 @@
+/* summary.json: the response parameters, the events and the resolved inputs (SI, keys as in the
+ * model file). A limit given as "none" is null. */
+#include <math.h>
+#include <string.h>
+
+#include "schema.h"
+#include "writers.h"
+
+static void jstr(FILE *f, const char *s) {
+    fputc('"', f);
+    for (; *s; s++) {
+        if (*s == '"' || *s == '\\')
+            fprintf(f, "\\%c", *s);
+        else if ((unsigned char)*s < 0x20)
+            fprintf(f, "\\u%04x", *s);
+        else
+            fputc(*s, f);
+    }
+    fputc('"', f);
+}
+
+static void jkey(cs_wout *w, int *first, const char *key) {
+    fprintf(w->f, "%s", *first ? "" : ",");
+    *first = 0;
+    jstr(w->f, key);
+    fputc(':', w->f);
+}
+
+static void jnum(cs_wout *w, int *first, const char *key, double v) {
+    jkey(w, first, key);
+    cs_w_num(w, v, key);
+}
+
+/* The fields of a table that map to members of def, as "key":value pairs. */
+static void jfields(cs_wout *w, int *first, const cs_table *t, const void *def) {
+    for (int i = 0; i < t->count; i++) {
+        const cs_field *fd = &t->fields[i];
+        const char *at = (const char *)def + fd->offset;
+        if (fd->offset < 0) continue;
+        jkey(w, first, fd->key);
+        if (fd->kind == CS_F_MAP) {
+            int sub = 1;
+            fputc('{', w->f);
+            jfields(w, &sub, fd->sub, at);
+            fputc('}', w->f);
+        } else if (fd->kind == CS_F_INT || fd->kind == CS_F_ENUM) {
+            int v;
+            memcpy(&v, at, sizeof v);
+            if (fd->kind == CS_F_ENUM)
+                jstr(w->f, fd->words[v]);
+            else
+                fprintf(w->f, "%d", v);
+        } else {
+            double v;
+            memcpy(&v, at, sizeof v);
+            if ((fd->flags & CS_NONE_OK) && isinf(v) && v > 0)
+                fprintf(w->f, "null");
+            else
+                cs_w_num(w, v, fd->key);
+        }
+    }
+}
+
+static void jobject(cs_wout *w, int *first, const char *key, const cs_table *t, const void *def) {
+    int sub = 1;
+    jkey(w, first, key);
+    fputc('{', w->f);
+    jfields(w, &sub, t, def);
+    fputc('}', w->f);
+}
+
+static void jarray(cs_wout *w, int *first, const char *key, const double *v, int n) {
+    jkey(w, first, key);
+    fputc('[', w->f);
+    for (int i = 0; i < n; i++) {
+        if (i) fputc(',', w->f);
+        cs_w_num(w, v[i], key);
+    }
+    fputc(']', w->f);
+}
+
+static void inputs(cs_wout *w, const cs_model_input *in) {
+    FILE *f = w->f;
+    int top = 1, b = 1, v = 1;
+    fprintf(f, "{");
+    jkey(w, &top, "name");
+    jstr(f, in->name);
+    jkey(w, &top, "file");
+    jstr(f, in->file);
+    jkey(w, &top, "barrier");
+    fprintf(f, "{");
+    jkey(w, &b, "cables");
+    fprintf(f, "[");
+    for (int c = 0; c < in->barrier.cable_count; c++) {
+        int first = 1;
+        fprintf(f, "%s{", c ? "," : "");
+        jfields(w, &first, &cs_table_cable, &in->barrier.cables[c]);
+        jobject(w, &first, "rope", &cs_table_rope, &in->barrier.cables[c].rope);
+        fprintf(f, "}");
+    }
+    fprintf(f, "]");
+    jkey(w, &b, "posts");
+    fprintf(f, "[");
+    for (int p = 0; p < in->barrier.post_count; p++) {
+        const cs_post_def *post = &in->barrier.posts[p];
+        int first = 1;
+        fprintf(f, "%s\n{", p ? "," : "");
+        jnum(w, &first, "x", post->x);
+        jfields(w, &first, &cs_table_posts, post);
+        jobject(w, &first, "section", &cs_table_section, &post->section);
+        fprintf(f, "}");
+    }
+    fprintf(f, "]");
+    jobject(w, &b, "anchors", &cs_table_anchors, &in->barrier);
+    fprintf(f, "}");
+    jkey(w, &top, "vehicle");
+    fprintf(f, "{");
+    jfields(w, &v, &cs_table_vehicle, &in->vehicle);
+    jarray(w, &v, "crush_deformation", in->vehicle.crush_deformation, in->vehicle.crush_point_count);
+    jarray(w, &v, "crush_force", in->vehicle.crush_force, in->vehicle.crush_point_count);
+    fprintf(f, "}");
+    jobject(w, &top, "scenario", &cs_table_scenario, &in->scenario);
+    fprintf(f, "}");
+}
+
+int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_state *state, char *why,
+                          size_t why_size) {
+    cs_summary s;
+    cs_state_summary(state, &s);
+    cs_wout w = {f, 0, ""};
+    int first = 1;
+    fprintf(f, "{");
+    jkey(&w, &first, "outcome");
+    jstr(f, cs_outcome_name(s.outcome));
+    jnum(&w, &first, "t_end_s", s.t);
+    jnum(&w, &first, "max_50ms_decel_g", s.max_decel_50ms_g);
+    jnum(&w, &first, "t_max_50ms_decel_s", s.t_max_decel);
+    jnum(&w, &first, "max_dynamic_penetration_m", s.max_dynamic_penetration);
+    jnum(&w, &first, "max_barrier_deflection_m", s.max_barrier_deflection);
+    jkey(&w, &first, "stopped");
+    fprintf(f, s.outcome == CS_STOPPED ? "true" : "false");
+    jkey(&w, &first, "stop_time_s");
+    if (s.outcome == CS_STOPPED)
+        cs_w_num(&w, s.stop_time, "stop_time_s");
+    else
+        fprintf(f, "null");
+    jkey(&w, &first, "exit_speed_mps");
+    if (s.outcome == CS_BREAKTHROUGH)
+        cs_w_num(&w, s.exit_speed, "exit_speed_mps");
+    else
+        fprintf(f, "null");
+    jkey(&w, &first, "first_contact_time_s");
+    if (s.first_contact_time >= 0)
+        cs_w_num(&w, s.first_contact_time, "first_contact_time_s");
+    else
+        fprintf(f, "null");
+    jkey(&w, &first, "posts_failed_left");
+    fprintf(f, "%d", s.posts_failed_left);
+    jkey(&w, &first, "posts_failed_right");
+    fprintf(f, "%d", s.posts_failed_right);
+    jkey(&w, &first, "cables_broken");
+    fprintf(f, "%d", s.cables_broken);
+    jnum(&w, &first, "max_cable_tension_n", s.max_cable_tension);
+    jnum(&w, &first, "initial_kinetic_energy_j", s.initial_kinetic_energy);
+    jnum(&w, &first, "energy_balance_error", s.energy_balance_error);
+    jarray(&w, &first, "final_position_m", s.final_position, 3);
+    jkey(&w, &first, "solver_warnings");
+    fprintf(f, "%d", s.solver_warnings);
+    jkey(&w, &first, "events");
+    fprintf(f, "[");
+    for (int i = 0; i < cs_state_event_count(state); i++) {
+        const cs_event *e = cs_state_event(state, i);
+        char element[48];
+        int ef = 1;
+        snprintf(element, sizeof element, "%s %d", cs_element_kind_name(e->element_kind), e->element);
+        fprintf(f, "%s\n{", i ? "," : "");
+        jnum(&w, &ef, "t_s", e->t);
+        jkey(&w, &ef, "type");
+        jstr(f, cs_event_type_name(e->type));
+        jkey(&w, &ef, "element");
+        jstr(f, element);
+        jnum(&w, &ef, "value", e->value);
+        fprintf(f, "}");
+    }
+    fprintf(f, "],\n\"inputs\":");
+    inputs(&w, in);
+    fprintf(f, "}\n");
+    if (w.bad) snprintf(why, why_size, "summary.json: %s", w.why);
+    return w.bad ? -1 : 0;
+}

@@ -1,0 +1,49 @@
+/* Model files: read (YAML via libcyaml, units via udunits2), resolve parts and file references, apply
+ * --set overrides, check, and fill the engine's definition structs. Every problem is collected as
+ * "file:line:column: what is wrong (what was expected)". A loader holds all its own state. */
+#ifndef CS_LOADER_H
+#define CS_LOADER_H
+
+#include <stdio.h>
+
+#include "cablesim/cablesim.h"
+
+typedef struct cs_loader cs_loader;
+
+/* A loaded model. The arrays behind barrier.cables and barrier.posts belong to the loader. */
+typedef struct cs_model_input {
+    const char *name; /* model name (results/<name>) */
+    const char *file; /* the model file */
+    cs_barrier_def barrier;
+    cs_vehicle_def vehicle;
+    cs_scenario_def scenario;
+} cs_model_input;
+
+/* data_dir: the parts library (NULL: $CABLESIM_DATA_DIR, else the source tree's data/). NULL if the
+ * unit database cannot be loaded (why filled). */
+cs_loader *cs_loader_create(const char *data_dir, char *why, size_t why_size);
+void cs_loader_free(cs_loader *loader);
+
+/* Queue an override "PATH=VALUE" for the next load. Returns 0, or -1 (error recorded). */
+int cs_loader_set(cs_loader *loader, const char *assignment);
+/* Load, resolve, override and check a model. Returns 0, or -1 with the errors recorded. */
+int cs_loader_load(cs_loader *loader, const char *path, cs_model_input *out);
+/* Build the engine model from a loaded input; on failure the engine's message is recorded at the
+ * location of the element it names. */
+cs_model *cs_loader_build(cs_loader *loader, const cs_model_input *in);
+
+int cs_loader_error_count(const cs_loader *loader);
+/* The i-th problem, sorted by file and line. */
+const char *cs_loader_error(cs_loader *loader, int i);
+void cs_loader_print_errors(cs_loader *loader, FILE *out);
+
+/* ---- the parts library (and a model file's own parts) ---- */
+typedef enum cs_part_kind { CS_PART_VEHICLE, CS_PART_ROPE, CS_PART_SECTION, CS_PART_KIND_COUNT } cs_part_kind;
+
+/* Names of the library's parts of a kind, in file order. Returns the count (-1: library errors). */
+int cs_loader_library(cs_loader *loader, cs_part_kind kind, const char ***names, const char ***descriptions);
+/* Resolve a named library part into its definition (cs_vehicle_def, cs_rope_def or cs_section_def).
+ * Returns 0, or -1 with errors recorded. */
+int cs_loader_part(cs_loader *loader, cs_part_kind kind, const char *name, void *def);
+
+#endif

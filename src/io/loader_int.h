@@ -1,0 +1,89 @@
+/* Inside the loader: the node tree every file is turned into, the file table, errors. */
+#ifndef CS_LOADER_INT_H
+#define CS_LOADER_INT_H
+
+#include <stdarg.h>
+
+#include "loader.h"
+#include "schema.h"
+#include "units.h"
+#include "yamlpos.h"
+
+/* A value of a model: a scalar, a mapping of a schema table, or a sequence. */
+typedef struct cs_node {
+    cs_ykind kind;
+    const cs_table *table;  /* CS_Y_MAP */
+    const char *text;       /* CS_Y_SCALAR */
+    struct cs_node **items; /* CS_Y_MAP: [table->count] (NULL: absent); CS_Y_SEQ: [count] */
+    int count;
+    int source;       /* file index, or -1 - k for the k-th --set */
+    const char *path; /* document path in that source */
+} cs_node;
+
+typedef struct cs_lfile {
+    char *name;     /* as given, for messages */
+    char *real;     /* canonical path, to find it again */
+    cs_yposmap map; /* where its nodes are */
+    cs_node *root;  /* NULL if it failed to load */
+    int loading;    /* being loaded (a reference cycle if met again) */
+} cs_lfile;
+
+typedef struct cs_lerror {
+    int source, line, col, seq;
+    char *text;
+} cs_lerror;
+
+typedef struct cs_lset {
+    char *path, *value;
+} cs_lset;
+
+struct cs_loader {
+    char data_dir[1024];
+    cs_units *units;
+    struct cs_chunk *arena;
+    cs_lfile *files;
+    int file_count, file_capacity;
+    int library_state; /* 0 not read, 1 read, -1 failed */
+    int library_first, library_end;
+    cs_lerror *errors;
+    int error_count, error_capacity, errors_sorted;
+    cs_lset *sets;
+    int set_count, set_capacity;
+    int depth;                   /* nesting of part and file references */
+    const cs_node **post_origin; /* group node of each loaded post */
+    const cs_node **cable_origin;
+    const cs_node *vehicle_node, *scenario_node, *anchors_node;
+};
+
+void *cs_arena_alloc(cs_loader *l, size_t size); /* zeroed; NULL when out of memory */
+char *cs_arena_strdup(cs_loader *l, const char *s);
+
+/* Record a problem at a node (its key if at_key) or at a place in a file (source < 0: a --set). */
+void cs_err_node(cs_loader *l, const cs_node *at, int at_key, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+void cs_err_at(cs_loader *l, int source, int line, int col, const char *fmt, ...)
+    __attribute__((format(printf, 5, 6)));
+/* The expected-value hint of a field: "a length, e.g. \"8 ft\"". */
+void cs_field_hint(const cs_field *f, char *buf, size_t size);
+
+/* Read a file into the file table (once). Returns its index, or -1 (errors recorded at from). */
+int cs_file_load(cs_loader *l, const char *path, const cs_node *from);
+/* The field of a mapping node by key (NULL if absent). */
+const cs_node *cs_node_get(const cs_node *map, const char *key);
+/* Split the next component off a path: 1 key, 2 [index], 0 end, -1 malformed. */
+int cs_path_next(const char **p, char *key, size_t key_size, long *index);
+
+/* Resolve references of a file's model (vehicle/barrier/scenario) into a fresh root. */
+cs_node *cs_resolve_model(cs_loader *l, int file);
+/* A named part (list: "vehicles", "ropes", "sections") seen from a source, resolved. NULL if absent. */
+const cs_node *cs_find_part(cs_loader *l, int source, const char *list, const char *name,
+                            const cs_node *from);
+int cs_library_read(cs_loader *l);
+
+/* Convert checked values into definition structs. Each returns the errors it recorded. */
+int cs_convert_fields(cs_loader *l, const cs_node *map, void *target);
+int cs_convert_vehicle(cs_loader *l, const cs_node *vehicle, cs_vehicle_def *out);
+int cs_convert_rope(cs_loader *l, const cs_node *rope, cs_rope_def *out, double *diameter);
+int cs_convert_model(cs_loader *l, const cs_node *root, const char *file, cs_model_input *out);
+
+#endif

@@ -1,0 +1,26 @@
+/* Output files written atomically: each to DIR/name.tmp, flushed and fsync'ed, then all renamed at
+ * once by cs_out_commit; cs_out_abort removes the temporaries so a failed run leaves nothing. */
+#ifndef CS_OUTFILE_H
+#define CS_OUTFILE_H
+
+#include <stdio.h>
+
+enum { CS_OUT_MAX_FILES = 8 };
+
+typedef struct cs_outdir {
+    char dir[1024];
+    int count;
+    char names[CS_OUT_MAX_FILES][64];
+} cs_outdir;
+
+/* Create dir (and its parents). Returns 0, or -1 with why filled. */
+int cs_out_open(cs_outdir *out, const char *dir, char *why, size_t why_size);
+/* Start DIR/name.tmp. NULL with why filled on failure. */
+FILE *cs_out_begin(cs_outdir *out, const char *name, char *why, size_t why_size);
+/* Flush, fsync and close a file from cs_out_begin. Returns 0, or -1 with why filled. */
+int cs_out_end(cs_outdir *out, FILE *f, char *why, size_t why_size);
+/* Rename every temporary to its name. Returns 0, or -1 with why filled. */
+int cs_out_commit(cs_outdir *out, char *why, size_t why_size);
+void cs_out_abort(cs_outdir *out);
+
+#endif

@@ -1,0 +1,48 @@
+/* The readable summary printed after a run: SI first, US units beside. */
+#include <math.h>
+
+#include "writers.h"
+
+static const double MPH = 0.44704, FT = 0.3048, KIP = 4448.2216152605;
+
+void cs_write_report(FILE *f, const cs_model_input *in, const cs_state *state) {
+    cs_summary s;
+    cs_state_summary(state, &s);
+    const cs_scenario_def *sc = &in->scenario;
+    fprintf(f, "%s: ", in->name);
+    if (s.outcome == CS_STOPPED)
+        fprintf(f, "the vehicle stopped at t = %.3f s\n", s.stop_time);
+    else if (s.outcome == CS_BREAKTHROUGH)
+        fprintf(f, "the vehicle broke through, exit speed %.2f m/s (%.1f mph)\n", s.exit_speed,
+                s.exit_speed / MPH);
+    else
+        fprintf(f, "%s at t = %.3f s\n", cs_outcome_name(s.outcome), s.t);
+    fprintf(f,
+            "  impact               %.2f m/s (%.1f mph), %.1f deg, x = %.2f m (%.2f ft), %.0f kg (%.0f lb)\n",
+            sc->speed, sc->speed / MPH, sc->angle * 180 / 3.14159265358979323846, sc->impact_x,
+            sc->impact_x / FT, in->vehicle.mass, in->vehicle.mass / 0.45359237);
+    fprintf(f, "  max 50-ms deceleration %.3f g at t = %.3f s\n", s.max_decel_50ms_g, s.t_max_decel);
+    fprintf(f, "  max penetration      %.3f m (%.2f ft)\n", s.max_dynamic_penetration,
+            s.max_dynamic_penetration / FT);
+    fprintf(f, "  max deflection       %.3f m (%.2f ft)\n", s.max_barrier_deflection,
+            s.max_barrier_deflection / FT);
+    fprintf(f, "  max cable tension    %.1f kN (%.1f kip)\n", s.max_cable_tension / 1e3,
+            s.max_cable_tension / KIP);
+    fprintf(f, "  cables broken        %d of %d\n", s.cables_broken, in->barrier.cable_count);
+    fprintf(f, "  posts failed         %d left, %d right (of %d)\n", s.posts_failed_left,
+            s.posts_failed_right, in->barrier.post_count);
+    fprintf(f, "  kinetic energy       %.1f kJ (%.0f ft-kip)\n", s.initial_kinetic_energy / 1e3,
+            s.initial_kinetic_energy / (KIP * FT));
+    fprintf(f, "  energy balance error %.3f %%\n", 100 * s.energy_balance_error);
+    if (s.solver_warnings)
+        fprintf(f, "  solver warnings      %d steps (largest residual %.2g)\n", s.solver_warnings,
+                s.max_solver_residual);
+    int n = cs_state_event_count(state);
+    fprintf(f, "  events               %d\n", n);
+    for (int i = 0; i < n && i < 30; i++) {
+        const cs_event *e = cs_state_event(state, i);
+        fprintf(f, "    %8.4f s  %-18s %s %d\n", e->t, cs_event_type_name(e->type),
+                cs_element_kind_name(e->element_kind), e->element);
+    }
+    if (n > 30) fprintf(f, "    ... %d more in events.csv\n", n - 30);
+}

@@ -1,0 +1,397 @@
+#include "schema.h"
+
+#include <stddef.h>
+#include <string.h>
+
+#define N(a) ((int)(sizeof(a) / sizeof((a)[0])))
+/* Field builders: quantity, text, sub-table. */
+#define QTY(key, q, flags, type, member, doc)                                                                \
+    { key, CS_F_QTY, q, flags, (long)offsetof(type, member), NULL, NULL, doc }
+#define QTY_ONLY(key, q, flags, doc)                                                                         \
+    { key, CS_F_QTY, q, flags, -1, NULL, NULL, doc }
+#define TEXT(key, flags, doc)                                                                                \
+    { key, CS_F_TEXT, CS_Q_NUMBER, flags, -1, NULL, NULL, doc }
+#define LIST(key, q, flags, doc)                                                                             \
+    { key, CS_F_LIST, q, flags, -1, NULL, NULL, doc }
+#define SUB(key, kind, flags, offset, table, doc)                                                            \
+    { key, kind, CS_Q_NUMBER, flags, offset, &table, NULL, doc }
+
+static const char *const attachment_words[] = {"through", "clamped", NULL};
+
+#define NAMED_PART(what)                                                                                     \
+    TEXT("name", 0, "the part's name, by which other parts and models use it (in a parts list: required)"),  \
+        TEXT("description", 0, "what the part is and where its numbers come from"),                          \
+        TEXT("part", 0, "start from the named " what " part; the fields given here replace its fields")
+
+static const cs_field box_fields[] = {
+    QTY_ONLY("length", CS_Q_LENGTH, CS_REQ | CS_POS, "box length (x, along travel)"),
+    QTY_ONLY("width", CS_Q_LENGTH, CS_REQ | CS_POS, "box width (y)"),
+    QTY_ONLY("height", CS_Q_LENGTH, CS_REQ | CS_POS, "box height (z)"),
+};
+const cs_table cs_table_box = {"inertia_box",
+                               "A uniform box of the vehicle's mass whose moments of inertia "
+                               "replace roll/pitch/yaw_inertia: roll m(W^2+H^2)/12, pitch m(L^2+H^2)/12, "
+                               "yaw m(L^2+W^2)/12.",
+                               CS_T_NONE, box_fields, N(box_fields)};
+
+#define V(key, q, flags, member, doc) QTY(key, q, flags, cs_vehicle_def, member, doc)
+static const cs_field vehicle_fields[] = {
+    NAMED_PART("vehicle"),
+    TEXT("file", 0, "take the vehicle of another model file (path relative to this file)"),
+    V("mass", CS_Q_MASS, CS_REQ | CS_POS, mass, "total mass"),
+    V("roll_inertia", CS_Q_INERTIA, CS_POS, inertia[0], "Ixx about the CG (or give inertia_box)"),
+    V("pitch_inertia", CS_Q_INERTIA, CS_POS, inertia[1], "Iyy about the CG (or give inertia_box)"),
+    V("yaw_inertia", CS_Q_INERTIA, CS_POS, inertia[2], "Izz about the CG (or give inertia_box)"),
+    SUB("inertia_box", CS_F_MAP, 0, -1, cs_table_box, "inertia of a uniform box instead of the three above"),
+    V("cg_height", CS_Q_LENGTH, CS_REQ | CS_POS, cg_height, "CG above grade at rest"),
+    V("cg_to_front", CS_Q_LENGTH, CS_REQ | CS_POS, cg_to_front, "CG to the undeformed front face"),
+    V("front_width", CS_Q_LENGTH, CS_REQ | CS_POS, front_width, "width of the front face"),
+    V("face_bottom", CS_Q_LENGTH, CS_REQ | CS_NONNEG, face_bottom, "lowest point of the front face (bumper)"),
+    V("face_top", CS_Q_LENGTH, CS_REQ | CS_POS, face_top, "top of the front face (hood edge)"),
+    V("front_to_cargo_bed", CS_Q_LENGTH, CS_NONNEG, front_to_cargo_bed,
+      "front face to the front of the cargo bed (penetration ratings)"),
+    V("wheelbase", CS_Q_LENGTH, CS_REQ | CS_POS, wheelbase, "front axle to rear axle (group centre)"),
+    V("cg_to_front_axle", CS_Q_LENGTH, CS_REQ | CS_POS, cg_to_front_axle, "CG behind the front axle"),
+    V("track", CS_Q_LENGTH, CS_REQ | CS_POS, track, "distance between the left and right wheels"),
+    V("tyre_static_deflection", CS_Q_LENGTH, CS_POS, tyre_static_deflection,
+      "tyre deflection under the static load; sets the tyre stiffness"),
+    V("tyre_damping_ratio", CS_Q_NUMBER, CS_NONNEG, tyre_damping_ratio, "tyre damping, fraction of critical"),
+    V("rolling_resistance", CS_Q_NUMBER, CS_NONNEG, rolling_resistance, "rolling resistance coefficient"),
+    V("tyre_friction", CS_Q_NUMBER, CS_NONNEG, tyre_friction, "tyre side (lateral) friction coefficient"),
+    V("face_friction", CS_Q_NUMBER, CS_NONNEG, face_friction, "friction between cable and front face"),
+    LIST("crush_deformation", CS_Q_LENGTH, CS_REQ | CS_NONNEG,
+         "crush curve: deformations, increasing, first 0 (at most 16 points)"),
+    LIST("crush_force", CS_Q_FORCE, CS_NONNEG, "crush curve: forces at those deformations, first 0"),
+    LIST("crush_force_fraction", CS_Q_NUMBER, CS_NONNEG,
+         "crush curve as fractions of Fmax, instead of crush_force; Fmax from crush_fit_speed"),
+    QTY_ONLY("crush_fit_speed", CS_Q_SPEED, CS_POS,
+             "with crush_force_fraction: Fmax makes the area under the curve up to crush_fit_depth equal the "
+             "kinetic energy at this speed (rigid-wall test)"),
+    QTY_ONLY("crush_fit_depth", CS_Q_LENGTH, CS_POS, "with crush_fit_speed: the deformation of that test"),
+    V("crush_unload_stiffness", CS_Q_STIFFNESS, CS_POS, crush_unload_stiffness,
+      "unloading slope of the crush curve (crush is permanent)"),
+};
+const cs_table cs_table_vehicle = {"vehicle", "A vehicle: rigid body with a crushable front face.",
+                                   CS_T_VEHICLE, vehicle_fields, N(vehicle_fields)};
+
+#define R(key, q, flags, member, doc) QTY(key, q, flags, cs_rope_def, member, doc)
+static const cs_field rope_fields[] = {
+    TEXT("name", 0, "the part's name, by which cables use it (in a parts list: required)"),
+    TEXT("description", 0, "what the rope is and where its numbers come from"),
+    TEXT("scale_from", 0,
+         "start from the named rope and scale area, strength and mass per length by "
+         "(diameter / its diameter)^2; fields given here replace the result"),
+    QTY_ONLY("diameter", CS_Q_LENGTH, CS_POS, "nominal diameter (needed by scale_from)"),
+    R("area", CS_Q_AREA, CS_REQ | CS_POS, area, "metallic area A"),
+    R("modulus", CS_Q_PRESSURE, CS_REQ | CS_POS, modulus, "apparent modulus of elasticity E"),
+    R("nominal_strength", CS_Q_FORCE, CS_REQ | CS_POS, nominal_strength, "nominal (breaking) strength Fu"),
+    R("elastic_limit_ratio", CS_Q_NUMBER, CS_POS | CS_MAX1, elastic_limit_ratio,
+      "end of the first slope as a fraction of Fu"),
+    R("secondary_modulus_ratio", CS_Q_NUMBER, CS_POS | CS_MAX1, secondary_modulus_ratio,
+      "second slope as a fraction of E"),
+    R("breaking_strain", CS_Q_NUMBER, CS_POS, breaking_strain, "total strain at which the rope breaks"),
+    R("mass_per_length", CS_Q_MASS_PER_LENGTH, CS_NONNEG, mass_per_length, "weight per length (reported)"),
+};
+const cs_table cs_table_rope = {"rope", "A wire rope: the paper's tension-strain law.", CS_T_ROPE,
+                                rope_fields, N(rope_fields)};
+
+#define S(key, q, flags, member, doc) QTY(key, q, flags, cs_section_def, member, doc)
+static const cs_field section_fields[] = {
+    NAMED_PART("section"),
+    S("plastic_modulus", CS_Q_SECTION_MODULUS, CS_REQ | CS_POS, plastic_modulus, "plastic modulus Zx"),
+    S("inertia", CS_Q_SECOND_MOMENT, CS_REQ | CS_POS, inertia, "second moment of area Ix"),
+    S("web_area", CS_Q_AREA, CS_REQ | CS_POS, web_area, "shear area Aw"),
+    S("yield_stress", CS_Q_PRESSURE, CS_POS, yield_stress, "yield stress Fy"),
+    S("modulus", CS_Q_PRESSURE, CS_POS, modulus, "Young's modulus E"),
+};
+const cs_table cs_table_section = {"section", "A steel post section (strong axis).", CS_T_SECTION,
+                                   section_fields, N(section_fields)};
+
+static const cs_field parts_fields[] = {
+    SUB("vehicles", CS_F_SEQ, 0, -1, cs_table_vehicle, "named vehicles"),
+    SUB("ropes", CS_F_SEQ, 0, -1, cs_table_rope, "named wire ropes"),
+    SUB("sections", CS_F_SEQ, 0, -1, cs_table_section, "named post sections"),
+};
+const cs_table cs_table_parts = {"parts",
+                                 "Named parts defined in this file, used by name like the library's "
+                                 "(a name here hides the library's).",
+                                 CS_T_NONE, parts_fields, N(parts_fields)};
+
+#define FT(key, q, flags, member, doc) QTY(key, q, flags, cs_footing_def, member, doc)
+#define SOIL_FIELDS                                                                                          \
+    FT("soil_pressure", CS_Q_PRESSURE, CS_POS, soil_pressure,                                                \
+       "S1 of Eq. 21: soil pressure above the point of rotation"),                                           \
+        FT("soil_pressure_cap", CS_Q_PRESSURE, CS_POS, soil_pressure_cap, "upper limit of S1"),              \
+        FT("coeff_depth", CS_Q_NUMBER, CS_POS, coeff_depth, "Eq. 21 coefficient of P D"),                    \
+        FT("coeff_height", CS_Q_NUMBER, CS_POS, coeff_height, "Eq. 21 coefficient of P H")
+static const cs_field soil_fields[] = {SOIL_FIELDS};
+const cs_table cs_table_soil = {"soil",
+                                "Soil of every footing of the barrier (a footing may replace any of it).",
+                                CS_T_FOOTING, soil_fields, N(soil_fields)};
+
+static const cs_field footing_fields[] = {
+    FT("diameter", CS_Q_LENGTH, CS_REQ | CS_POS, diameter,
+       "B: width facing the soil (a round footing's diameter; a rectangular one's side facing the load)"),
+    FT("depth", CS_Q_LENGTH, CS_REQ | CS_POS, depth, "D: embedment depth"),
+    SOIL_FIELDS,
+    FT("rotation_limit", CS_Q_ANGLE, CS_POS | CS_MAX90, rotation_limit,
+       "footing rotation at which the post is lost"),
+    FT("pullout_capacity", CS_Q_FORCE, CS_POS | CS_NONE_OK, pullout_capacity,
+       "axial pull that pulls the post out (none: never)"),
+};
+const cs_table cs_table_footing = {"footing", "A post's footing in the soil (Eq. 21 lateral capacity).",
+                                   CS_T_FOOTING, footing_fields, N(footing_fields)};
+
+static const cs_field cable_fields[] = {
+    TEXT("rope", CS_REQ, "name of a rope part"),
+    QTY("height", CS_Q_LENGTH, CS_REQ | CS_POS, cs_cable_def, height, "height of the cable at the posts"),
+    QTY("pretension", CS_Q_FORCE, CS_NONNEG, cs_cable_def, pretension, "installed tension"),
+    QTY("post_friction", CS_Q_NUMBER, CS_NONNEG, cs_cable_def, post_friction,
+        "friction between cable and post (capstan at a threaded post)"),
+    QTY("elastic_limit_ratio", CS_Q_NUMBER, CS_POS | CS_MAX1, cs_cable_def, rope.elastic_limit_ratio,
+        "replaces the rope's"),
+    QTY("secondary_modulus_ratio", CS_Q_NUMBER, CS_POS | CS_MAX1, cs_cable_def, rope.secondary_modulus_ratio,
+        "replaces the rope's"),
+    QTY("breaking_strain", CS_Q_NUMBER, CS_POS, cs_cable_def, rope.breaking_strain, "replaces the rope's"),
+};
+const cs_table cs_table_cable = {"cable",
+                                 "One cable, from the start anchor to the end anchor through every post.",
+                                 CS_T_CABLE, cable_fields, N(cable_fields)};
+
+#define P(key, q, flags, member, doc) QTY(key, q, flags, cs_post_def, member, doc)
+static const cs_field posts_fields[] = {
+    TEXT("name", 0, "a label for the group (\"line posts\")"),
+    LIST("x", CS_Q_LENGTH, 0, "posts one by one: their positions along the barrier"),
+    QTY_ONLY("from", CS_Q_LENGTH, 0, "a run of posts: position of the first"),
+    QTY_ONLY("to", CS_Q_LENGTH, 0, "a run: position of the last (or give count)"),
+    QTY_ONLY("spacing", CS_Q_LENGTH, CS_POS, "a run: distance between posts"),
+    {"count", CS_F_INT, CS_Q_NUMBER, CS_POS, -1, NULL, NULL, "a run: number of posts (or give to)"},
+    LIST("except", CS_Q_LENGTH, 0, "a run: positions left out (other groups' posts stand there)"),
+    P("height", CS_Q_LENGTH, CS_REQ | CS_POS, height, "top of the post above grade"),
+    TEXT("section", CS_REQ, "name of a section part"),
+    P("yield_stress", CS_Q_PRESSURE, CS_POS, section.yield_stress, "replaces the section's Fy"),
+    P("modulus", CS_Q_PRESSURE, CS_POS, section.modulus, "replaces the section's E"),
+    SUB("footing", CS_F_MAP, CS_REQ, (long)offsetof(cs_post_def, footing), cs_table_footing, "the footing"),
+    {"attachment", CS_F_ENUM, CS_Q_NUMBER, 0, (long)offsetof(cs_post_def, attachment), NULL, attachment_words,
+     "how the cables hold to the post: through (threaded, sliding with friction) or clamped"},
+    P("rotation_limit", CS_Q_ANGLE, CS_POS | CS_MAX90, rotation_limit, "post rotation at which it fails"),
+};
+const cs_table cs_table_posts = {"posts",
+                                 "A group of identical posts: one by one (x) or as a run (from, "
+                                 "spacing, to or count).",
+                                 CS_T_POST, posts_fields, N(posts_fields)};
+
+static const cs_field anchor_fields[] = {
+    QTY("x", CS_Q_LENGTH, CS_REQ, cs_anchor_def, x, "position along the barrier"),
+    QTY("z", CS_Q_LENGTH, CS_NONNEG, cs_anchor_def, z, "height where the cables are tied"),
+    QTY("pullout_capacity", CS_Q_FORCE, CS_POS | CS_NONE_OK, cs_anchor_def, pullout_capacity,
+        "sum of cable tensions that pulls the anchor out (none: rigid)"),
+};
+const cs_table cs_table_anchor = {"anchor", "A cable end anchor (dead-man).", CS_T_ANCHOR, anchor_fields,
+                                  N(anchor_fields)};
+
+static const cs_field anchors_fields[] = {
+    SUB("start", CS_F_MAP, CS_REQ, (long)offsetof(cs_barrier_def, start_anchor), cs_table_anchor,
+        "the anchor at the low-x end"),
+    SUB("end", CS_F_MAP, CS_REQ, (long)offsetof(cs_barrier_def, end_anchor), cs_table_anchor,
+        "the anchor at the high-x end"),
+};
+const cs_table cs_table_anchors = {"anchors", "The two cable end anchors.", CS_T_BARRIER, anchors_fields,
+                                   N(anchors_fields)};
+
+static const cs_field barrier_fields[] = {
+    TEXT("file", 0, "take the barrier of another model file; the fields given here replace its fields"),
+    SUB("soil", CS_F_MAP, 0, -1, cs_table_soil, "soil of every footing"),
+    SUB("cables", CS_F_SEQ, CS_REQ, -1, cs_table_cable, "the cables"),
+    SUB("posts", CS_F_SEQ, CS_REQ, -1, cs_table_posts, "groups of posts"),
+    SUB("anchors", CS_F_MAP, CS_REQ, 0, cs_table_anchors, "the end anchors"),
+};
+const cs_table cs_table_barrier = {"barrier",
+                                   "The cable barrier. Frame: x along the barrier, y the direction "
+                                   "of attack, z up from grade.",
+                                   CS_T_BARRIER, barrier_fields, N(barrier_fields)};
+
+#define SC(key, q, flags, member, doc) QTY(key, q, flags, cs_scenario_def, member, doc)
+static const cs_field scenario_fields[] = {
+    TEXT("file", 0, "take the scenario of another model file; the fields given here replace its fields"),
+    SC("speed", CS_Q_SPEED, CS_REQ | CS_POS, speed, "vehicle speed at first contact"),
+    SC("angle", CS_Q_ANGLE, CS_POS | CS_MAX180, angle, "between barrier line and travel (90 deg: head-on)"),
+    SC("impact_x", CS_Q_LENGTH, CS_REQ, impact_x, "where the centre of the front face meets the cable line"),
+    SC("start_gap", CS_Q_LENGTH, CS_NONNEG, start_gap, "front face to the cable line at t = 0"),
+    SC("dt", CS_Q_TIME, CS_POS, dt, "time step"),
+    SC("t_end", CS_Q_TIME, CS_POS, t_end, "time limit"),
+    SC("output_interval", CS_Q_TIME, CS_NONNEG, output_interval, "recording interval (0: every step)"),
+    SC("crush_tolerance", CS_Q_NUMBER, CS_POS, crush_tolerance,
+       "relative change that ends the crush iteration"),
+    SC("solver_tolerance", CS_Q_NUMBER, CS_POS, solver_tolerance, "relative residual of the barrier solve"),
+    {"solver_max_sweeps", CS_F_INT, CS_Q_NUMBER, CS_POS, (long)offsetof(cs_scenario_def, solver_max_sweeps),
+     NULL, NULL, "cap on the barrier solve's sweeps in one step"},
+    SC("stop_speed", CS_Q_SPEED, CS_NONNEG, stop_speed, "forward speed below which the vehicle has stopped"),
+    SC("gravity", CS_Q_ACCELERATION, CS_NONNEG, gravity, "acceleration of gravity"),
+};
+const cs_table cs_table_scenario = {"scenario", "The attack and how to integrate it.", CS_T_SCENARIO,
+                                    scenario_fields, N(scenario_fields)};
+
+static const cs_field model_fields[] = {
+    TEXT("name", 0, "the model's name (output folder results/NAME); default: the file name"),
+    TEXT("description", 0, "what the model is"),
+    SUB("parts", CS_F_MAP, 0, -1, cs_table_parts, "named parts of this file"),
+    SUB("barrier", CS_F_MAP, 0, -1, cs_table_barrier, "the barrier"),
+    SUB("vehicle", CS_F_PART, 0, -1, cs_table_vehicle, "the vehicle: a part's name, or a mapping"),
+    SUB("scenario", CS_F_MAP, 0, -1, cs_table_scenario, "the impact"),
+};
+const cs_table cs_table_model = {"model",
+                                 "A model file. A file to run needs barrier, vehicle and scenario; "
+                                 "a file of parts (like data/*.yaml) needs only parts.",
+                                 CS_T_NONE, model_fields, N(model_fields)};
+
+int cs_table_find(const cs_table *t, const char *key) {
+    for (int i = 0; i < t->count; i++)
+        if (strcmp(t->fields[i].key, key) == 0) return i;
+    return -1;
+}
+
+void cs_target_defaults(cs_target t, cs_any_def *out) {
+    memset(out, 0, sizeof *out);
+    switch (t) {
+    case CS_T_VEHICLE:
+        out->vehicle = cs_default_vehicle_def();
+        break;
+    case CS_T_ROPE:
+        out->rope = cs_default_rope_def();
+        break;
+    case CS_T_SECTION:
+        out->section = cs_default_section_def();
+        break;
+    case CS_T_CABLE:
+        out->cable = cs_default_cable_def();
+        break;
+    case CS_T_POST:
+        out->post = cs_default_post_def();
+        break;
+    case CS_T_FOOTING:
+        out->footing = cs_default_footing_def();
+        break;
+    case CS_T_ANCHOR:
+        out->anchor = cs_default_anchor_def();
+        break;
+    case CS_T_BARRIER:
+        out->barrier = cs_default_barrier_def();
+        break;
+    case CS_T_SCENARIO:
+        out->scenario = cs_default_scenario_def();
+        break;
+    case CS_T_NONE:
+        break;
+    }
+}
+
+/* ---- the reference, docs/file-format.md ---- */
+
+static const cs_table *const doc_tables[] = {
+    &cs_table_model,   &cs_table_parts,   &cs_table_vehicle, &cs_table_box,      &cs_table_rope,
+    &cs_table_section, &cs_table_barrier, &cs_table_soil,    &cs_table_cable,    &cs_table_posts,
+    &cs_table_footing, &cs_table_anchors, &cs_table_anchor,  &cs_table_scenario,
+};
+
+static void doc_type(FILE *out, const cs_field *f) {
+    const cs_quantity_info *qi = cs_quantity_get(f->q);
+    switch (f->kind) {
+    case CS_F_QTY:
+        if (f->q == CS_Q_NUMBER)
+            fprintf(out, "number");
+        else
+            fprintf(out, "%s (%s)", qi->name, qi->label);
+        if (f->flags & CS_NONE_OK) fprintf(out, " or `none`");
+        break;
+    case CS_F_INT:
+        fprintf(out, "whole number");
+        break;
+    case CS_F_TEXT:
+        fprintf(out, "text");
+        break;
+    case CS_F_ENUM:
+        fprintf(out, "one of");
+        for (int i = 0; f->words[i]; i++)
+            fprintf(out, "%s `%s`", i ? "," : "", f->words[i]);
+        break;
+    case CS_F_LIST:
+        fprintf(out, "list of %s (%s)", qi->name, qi->label);
+        break;
+    case CS_F_MAP:
+        fprintf(out, "[%s](#%s)", f->sub->name, f->sub->name);
+        break;
+    case CS_F_SEQ:
+        fprintf(out, "list of [%s](#%s)", f->sub->name, f->sub->name);
+        break;
+    case CS_F_PART:
+        fprintf(out, "name, or [%s](#%s)", f->sub->name, f->sub->name);
+        break;
+    }
+}
+
+static void doc_default(FILE *out, const cs_table *t, const cs_field *f, const cs_any_def *defaults) {
+    if (f->flags & CS_REQ) {
+        fprintf(out, "required");
+        return;
+    }
+    if (f->offset < 0 || t->target == CS_T_NONE || f->kind == CS_F_MAP) {
+        fprintf(out, "-");
+        return;
+    }
+    const char *at = (const char *)defaults + f->offset;
+    int i;
+    double d;
+    switch (f->kind) {
+    case CS_F_INT:
+    case CS_F_ENUM:
+        memcpy(&i, at, sizeof i);
+        if (f->kind == CS_F_ENUM)
+            fprintf(out, "`%s`", f->words[i]);
+        else
+            fprintf(out, "%d", i);
+        break;
+    default:
+        memcpy(&d, at, sizeof d);
+        fprintf(out, "%.6g", d);
+        if (f->q != CS_Q_NUMBER) fprintf(out, " %s", cs_quantity_get(f->q)->label);
+        break;
+    }
+}
+
+int cs_schema_markdown(FILE *out) {
+    fprintf(out,
+            "# Model file format\n\n"
+            "<!-- Generated by `cablesim schema`; tests/cli_schema.sh checks that this file matches. -->\n\n"
+            "A model is a YAML file with up to three parts, `barrier`, `vehicle` and `scenario`, that may "
+            "live in one file or come from others: `vehicle: M` names a part of the library (data/*.yaml) "
+            "or of the file's own `parts`; `barrier: {file: other.yaml}` takes the barrier of another "
+            "file, and any field given beside `file` or `part` replaces the one it brings.\n\n"
+            "Every dimensional value takes a unit: `\"8 ft\"`, `1.75 in`, `52 kip`, `8000 psf`, `40 mph`, "
+            "`15000 lb` (mass), `52 kip` or `5 lbf` (force), `0.5 ms`, `45 deg`. A bare number is SI. "
+            "Units are read by udunits2, plus `mph`, `kph`, `psf`, `ksf`, `kips`, `deg`, `lbm` and `g` "
+            "(standard gravity where an acceleration is expected). A unit of the wrong kind is an error.\n\n"
+            "`cablesim run FILE --set PATH=VALUE` replaces any value by its path, e.g. "
+            "`--set scenario.speed=\"35 mph\"` or `--set barrier.cables[0].pretension=\"8 kip\"`.\n\n"
+            "## Quantities\n\n| quantity | SI unit | example |\n| --- | --- | --- |\n");
+    for (int q = 0; q < CS_Q_COUNT; q++) {
+        const cs_quantity_info *qi = cs_quantity_get((cs_quantity)q);
+        fprintf(out, "| %s | %s | `%s` |\n", qi->name, qi->label, qi->example);
+    }
+    for (size_t k = 0; k < sizeof doc_tables / sizeof doc_tables[0]; k++) {
+        const cs_table *t = doc_tables[k];
+        cs_any_def defaults;
+        cs_target_defaults(t->target, &defaults);
+        fprintf(out, "\n## %s\n\n%s\n\n| key | type | default | meaning |\n| --- | --- | --- | --- |\n",
+                t->name, t->doc);
+        for (int i = 0; i < t->count; i++) {
+            const cs_field *f = &t->fields[i];
+            fprintf(out, "| `%s` | ", f->key);
+            doc_type(out, f);
+            fprintf(out, " | ");
+            doc_default(out, t, f, &defaults);
+            fprintf(out, " | %s |\n", f->doc);
+        }
+    }
+    return ferror(out) ? -1 : 0;
+}

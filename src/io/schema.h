@@ -1,0 +1,91 @@
+/* The model-file schema: one table per YAML mapping, each field with its kind, quantity, checks, the
+ * definition-struct member it fills and its documentation. The loader, the libcyaml schema, the
+ * --set paths, the JSON echo of the inputs and docs/file-format.md all come from these tables. */
+#ifndef CS_SCHEMA_H
+#define CS_SCHEMA_H
+
+#include <stdio.h>
+
+#include "cablesim/def.h"
+#include "units.h"
+
+typedef enum cs_fkind {
+    CS_F_QTY,  /* a quantity with a unit: "8 ft" */
+    CS_F_INT,  /* a whole number */
+    CS_F_TEXT, /* text or a part name */
+    CS_F_ENUM, /* one of the field's words */
+    CS_F_LIST, /* a list of quantities */
+    CS_F_MAP,  /* a nested mapping (sub table) */
+    CS_F_SEQ,  /* a list of mappings (sub table) */
+    CS_F_PART  /* the name of a part, or a mapping (sub table) */
+} cs_fkind;
+
+enum cs_fflag {
+    CS_REQ = 1u << 0,     /* must be given (after files and parts are merged) */
+    CS_POS = 1u << 1,     /* > 0 */
+    CS_NONNEG = 1u << 2,  /* >= 0 */
+    CS_MAX1 = 1u << 3,    /* <= 1 */
+    CS_NONE_OK = 1u << 4, /* "none": no limit (stored as infinity) */
+    CS_MAX90 = 1u << 5,   /* an angle up to 90 deg */
+    CS_MAX180 = 1u << 6   /* an angle below 180 deg */
+};
+
+typedef enum cs_target {
+    CS_T_NONE = 0,
+    CS_T_VEHICLE,
+    CS_T_ROPE,
+    CS_T_SECTION,
+    CS_T_CABLE,
+    CS_T_POST,
+    CS_T_FOOTING,
+    CS_T_ANCHOR,
+    CS_T_BARRIER,
+    CS_T_SCENARIO
+} cs_target;
+
+typedef struct cs_table cs_table;
+
+typedef struct cs_field {
+    const char *key;
+    cs_fkind kind;
+    cs_quantity q;
+    unsigned flags;
+    long offset; /* member of the table's target struct (for MAP: the sub struct), or -1 */
+    const cs_table *sub;
+    const char *const *words; /* CS_F_ENUM: NULL-terminated */
+    const char *doc;
+} cs_field;
+
+struct cs_table {
+    const char *name;
+    const char *doc;
+    cs_target target;
+    const cs_field *fields;
+    int count;
+};
+
+/* Any definition struct, for defaults and generic field access. */
+typedef union cs_any_def {
+    cs_vehicle_def vehicle;
+    cs_rope_def rope;
+    cs_section_def section;
+    cs_cable_def cable;
+    cs_post_def post;
+    cs_footing_def footing;
+    cs_anchor_def anchor;
+    cs_barrier_def barrier;
+    cs_scenario_def scenario;
+} cs_any_def;
+
+extern const cs_table cs_table_model, cs_table_parts, cs_table_vehicle, cs_table_box, cs_table_rope,
+    cs_table_section, cs_table_barrier, cs_table_soil, cs_table_cable, cs_table_posts, cs_table_footing,
+    cs_table_anchors, cs_table_anchor, cs_table_scenario;
+
+/* The index of key in t, or -1. */
+int cs_table_find(const cs_table *t, const char *key);
+/* The defaults of a target struct (cs_default_*). */
+void cs_target_defaults(cs_target t, cs_any_def *out);
+/* Print the file-format reference (docs/file-format.md). Returns 0 or -1 on a write error. */
+int cs_schema_markdown(FILE *out);
+
+#endif
