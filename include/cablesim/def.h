@@ -32,9 +32,9 @@ typedef struct cs_rope_def {
 } cs_rope_def;
 
 typedef struct cs_cable_def {
-    double height;         /* z of the cable at the posts, m */
-    double pretension;     /* installed tension, N */
-    double post_friction;  /* mu between cable and post (capstan at a threaded post) */
+    double height;        /* z of the cable at the posts, m */
+    double pretension;    /* installed tension, N */
+    double post_friction; /* mu between cable and post (capstan at a threaded post) */
     cs_rope_def rope;
 } cs_cable_def;
 
@@ -67,12 +67,12 @@ typedef enum cs_attachment {
 } cs_attachment;
 
 typedef struct cs_post_def {
-    double x;               /* position along the barrier, m */
-    double height;          /* top of the post above grade, m */
+    double x;      /* position along the barrier, m */
+    double height; /* top of the post above grade, m */
     cs_section_def section;
     cs_footing_def footing;
     cs_attachment attachment;
-    double rotation_limit;  /* post rotation from vertical at which it fails (paper: 45 deg), rad */
+    double rotation_limit; /* post rotation from vertical at which it fails (paper: 45 deg), rad */
 } cs_post_def;
 
 /* A cable end anchor (dead-man). Cable c is tied to the start anchor at one end and the end anchor at
@@ -87,7 +87,7 @@ typedef struct cs_barrier_def {
     int cable_count;
     const cs_cable_def *cables;
     int post_count;
-    const cs_post_def *posts; /* in increasing x */
+    const cs_post_def *posts;   /* in increasing x */
     cs_anchor_def start_anchor; /* at the low-x end */
     cs_anchor_def end_anchor;   /* at the high-x end */
 } cs_barrier_def;
@@ -95,23 +95,23 @@ typedef struct cs_barrier_def {
 /* Vehicle: a rigid body with a crushable front face. Body frame: x forward, y left, z up, origin at
  * the centre of gravity. Heights are above grade with the vehicle at rest on its tyres. */
 typedef struct cs_vehicle_def {
-    double mass;                  /* kg */
-    double inertia[3];            /* roll Ixx, pitch Iyy, yaw Izz about the CG, kg m^2 */
-    double cg_height;             /* m */
-    double cg_to_front;           /* CG to the undeformed front face, m */
-    double front_width;           /* width of the front face, m */
-    double face_bottom;           /* lowest point of the front face (bumper bottom), m */
-    double face_top;              /* top of the front face (hood edge), m */
-    double front_to_cargo_bed;    /* front face to the front of the cargo bed, m (ratings) */
-    double wheelbase;             /* m */
-    double cg_to_front_axle;      /* m */
-    double track;                 /* m */
-    double tyre_static_deflection;/* m: sets the tyre stiffness from the static axle loads */
-    double tyre_damping_ratio;    /* fraction of critical, bounce mode */
-    double rolling_resistance;    /* coefficient of rolling resistance (free-rolling, unbraked) */
-    double tyre_friction;         /* lateral (side-slip) friction coefficient */
-    double face_friction;         /* mu between cable and front face */
-    int crush_point_count;        /* points of the loading curve, deformation increasing, first (0,0) */
+    double mass;                   /* kg */
+    double inertia[3];             /* roll Ixx, pitch Iyy, yaw Izz about the CG, kg m^2 */
+    double cg_height;              /* m */
+    double cg_to_front;            /* CG to the undeformed front face, m */
+    double front_width;            /* width of the front face, m */
+    double face_bottom;            /* lowest point of the front face (bumper bottom), m */
+    double face_top;               /* top of the front face (hood edge), m */
+    double front_to_cargo_bed;     /* front face to the front of the cargo bed, m (ratings) */
+    double wheelbase;              /* m */
+    double cg_to_front_axle;       /* m */
+    double track;                  /* m */
+    double tyre_static_deflection; /* m: sets the tyre stiffness from the static axle loads */
+    double tyre_damping_ratio;     /* fraction of critical, bounce mode */
+    double rolling_resistance;     /* coefficient of rolling resistance (free-rolling, unbraked) */
+    double tyre_friction;          /* lateral (side-slip) friction coefficient */
+    double face_friction;          /* mu between cable and front face */
+    int crush_point_count;         /* points of the loading curve, deformation increasing, first (0,0) */
     double crush_deformation[CS_MAX_CRUSH_POINTS]; /* m */
     double crush_force[CS_MAX_CRUSH_POINTS];       /* N */
     double crush_unload_stiffness;                 /* N/m; crush is permanent beyond elastic recovery */
@@ -119,18 +119,18 @@ typedef struct cs_vehicle_def {
 
 /* The attack and how to integrate it. */
 typedef struct cs_scenario_def {
-    double speed;           /* m/s at first contact */
-    double angle;           /* between barrier line and travel direction, rad (pi/2 = head-on) */
-    double impact_x;        /* where the centre of the front face meets the cable line, m */
-    double start_gap;       /* distance from the front face to the cable line at t = 0, m */
-    double dt;              /* time step, s */
-    double t_end;           /* time limit, s */
-    double output_interval; /* recording interval, s (0: every step) */
-    double crush_tolerance; /* relative change of face force that ends the crush iteration (paper: 0.05) */
-    double solver_tolerance;/* relative residual of the quasi-static barrier solve */
-    int solver_max_sweeps;  /* cap on Gauss-Seidel sweeps of the barrier solve in one step */
-    double stop_speed;      /* forward speed below which the vehicle counts as stopped, m/s */
-    double gravity;         /* m/s^2 */
+    double speed;            /* m/s at first contact */
+    double angle;            /* between barrier line and travel direction, rad (pi/2 = head-on) */
+    double impact_x;         /* where the centre of the front face meets the cable line, m */
+    double start_gap;        /* distance from the front face to the cable line at t = 0, m */
+    double dt;               /* time step, s */
+    double t_end;            /* time limit, s */
+    double output_interval;  /* recording interval, s (0: every step) */
+    double crush_tolerance;  /* relative change of face force that ends the crush iteration (paper: 0.05) */
+    double solver_tolerance; /* relative residual of the quasi-static barrier solve */
+    int solver_max_sweeps;   /* cap on Gauss-Seidel sweeps of the barrier solve in one step */
+    double stop_speed;       /* forward speed below which the vehicle counts as stopped, m/s */
+    double gravity;          /* m/s^2 */
 } cs_scenario_def;
 
 cs_rope_def cs_default_rope_def(void);

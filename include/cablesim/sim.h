@@ -12,9 +12,9 @@ extern "C" {
 
 typedef enum cs_status {
     CS_OK = 0,
-    CS_ERR_INVALID = 1,  /* a definition is physically impossible or out of range */
-    CS_ERR_MEMORY = 2,   /* allocation failed or a size limit was exceeded */
-    CS_ERR_UNSTABLE = 3  /* the run went numerically wrong; the message names time and element */
+    CS_ERR_INVALID = 1, /* a definition is physically impossible or out of range */
+    CS_ERR_MEMORY = 2,  /* allocation failed or a size limit was exceeded */
+    CS_ERR_UNSTABLE = 3 /* the run went numerically wrong; the message names time and element */
 } cs_status;
 
 enum { CS_MESSAGE_SIZE = 256 };
@@ -61,8 +61,7 @@ typedef void (*cs_output_fn)(const cs_model *model, const cs_state *state, void 
 
 /* Step until the run ends. on_output (may be NULL) is called at t = 0, every output interval and at
  * the end. Returns CS_OK or the error of the failing step. */
-cs_status cs_run(const cs_model *model, cs_state *state, cs_output_fn on_output, void *user,
-                 cs_error *err);
+cs_status cs_run(const cs_model *model, cs_state *state, cs_output_fn on_output, void *user, cs_error *err);
 
 /* ---- events ---- */
 typedef enum cs_event_type {
@@ -80,59 +79,69 @@ typedef enum cs_event_type {
     CS_EVENT_TYPE_COUNT
 } cs_event_type;
 
-typedef enum cs_element_kind { CS_ELEMENT_CABLE, CS_ELEMENT_POST, CS_ELEMENT_ANCHOR, CS_ELEMENT_VEHICLE } cs_element_kind;
+typedef enum cs_element_kind {
+    CS_ELEMENT_CABLE,
+    CS_ELEMENT_POST,
+    CS_ELEMENT_ANCHOR,
+    CS_ELEMENT_VEHICLE
+} cs_element_kind;
 
 typedef struct cs_event {
-    double t;              /* s */
+    double t; /* s */
     cs_event_type type;
     cs_element_kind element_kind;
-    int element;           /* index of the cable, post or anchor (0 start, 1 end); 0 for the vehicle */
-    double value;          /* what triggered it, SI (tension N, rotation rad, shear N, speed m/s) */
+    int element;  /* index of the cable, post or anchor (0 start, 1 end); 0 for the vehicle */
+    double value; /* what triggered it, SI (tension N, rotation rad, shear N, speed m/s) */
 } cs_event;
 
-const char *cs_event_type_name(cs_event_type type);  /* "cable_break", "post_hinge", ... */
+const char *cs_event_type_name(cs_event_type type);     /* "cable_break", "post_hinge", ... */
 const char *cs_element_kind_name(cs_element_kind kind); /* "cable", "post", "anchor", "vehicle" */
 int cs_state_event_count(const cs_state *state);
 const cs_event *cs_state_event(const cs_state *state, int index);
 
 /* ---- views ---- */
 typedef struct cs_vehicle_view {
-    double t;                  /* s */
-    double position[3];        /* CG, m */
-    double velocity[3];        /* CG, m/s */
-    double acceleration[3];    /* CG, m/s^2 */
-    double roll, pitch, yaw;   /* rad (yaw 0 = body x along world x) */
-    double angular_velocity[3];/* body frame, rad/s */
-    double forward_speed;      /* along the initial travel direction, m/s */
-    double decel_50ms_g;       /* 50-ms moving average of the deceleration along travel, g */
-    double crush;              /* permanent-plus-elastic set of the front face, m */
-    double face_force;         /* normal force on the front face, N */
-    double penetration;        /* furthest point of the front face past the attack face (y), m */
-    double barrier_force[3];   /* resultant force of the barrier on the vehicle, N */
-    double front_corners[2][3];/* left and right ends of the front face at mid-face height, m */
+    double t;                   /* s */
+    double position[3];         /* CG, m */
+    double velocity[3];         /* CG, m/s */
+    double acceleration[3];     /* CG, m/s^2 */
+    double roll, pitch, yaw;    /* rad (yaw 0 = body x along world x) */
+    double angular_velocity[3]; /* body frame, rad/s */
+    double forward_speed;       /* along the initial travel direction, m/s */
+    double decel_50ms_g;        /* 50-ms moving average of the deceleration along travel, g */
+    double crush;               /* permanent-plus-elastic set of the front face, m */
+    double face_force;          /* normal force on the front face, N */
+    double penetration;         /* furthest point of the front face past the attack face (y), m */
+    double barrier_force[3];    /* resultant force of the barrier on the vehicle, N */
+    double front_corners[2][3]; /* left and right ends of the front face at mid-face height, m */
 } cs_vehicle_view;
 
 void cs_state_vehicle(const cs_model *model, const cs_state *state, cs_vehicle_view *out);
 
-typedef enum cs_cable_status { CS_CABLE_INTACT = 0, CS_CABLE_BROKEN, CS_CABLE_RELEASED, CS_CABLE_SLIPPED } cs_cable_status;
+typedef enum cs_cable_status {
+    CS_CABLE_INTACT = 0,
+    CS_CABLE_BROKEN,
+    CS_CABLE_RELEASED,
+    CS_CABLE_SLIPPED
+} cs_cable_status;
 
 typedef struct cs_cable_view {
     cs_cable_status status;
-    int engaged;          /* 1 while the vehicle's face pushes it */
-    double max_tension;   /* largest span tension now, N */
-    double max_strain;    /* largest span strain now */
-    int node_count;       /* points of the cable's path (anchors, standing posts, face corners) */
+    int engaged;        /* 1 while the vehicle's face pushes it */
+    double max_tension; /* largest span tension now, N */
+    double max_strain;  /* largest span strain now */
+    int node_count;     /* points of the cable's path (anchors, standing posts, face corners) */
 } cs_cable_view;
 
 void cs_state_cable(const cs_model *model, const cs_state *state, int cable, cs_cable_view *out);
 /* Copy up to capacity path points (x, y, z triplets) and span tensions (node_count - 1 of them). */
-int cs_state_cable_path(const cs_model *model, const cs_state *state, int cable, double *xyz,
-                        double *tension, int capacity);
+int cs_state_cable_path(const cs_model *model, const cs_state *state, int cable, double *xyz, double *tension,
+                        int capacity);
 
 typedef enum cs_post_status {
     CS_POST_ELASTIC = 0,
-    CS_POST_HINGED,      /* plastic hinge at the base, rotating at Mp */
-    CS_POST_SOIL,        /* footing rotating in the soil at its capacity */
+    CS_POST_HINGED, /* plastic hinge at the base, rotating at Mp */
+    CS_POST_SOIL,   /* footing rotating in the soil at its capacity */
     CS_POST_FAILED_ROTATION,
     CS_POST_FAILED_SHEAR,
     CS_POST_FAILED_PULLOUT
@@ -140,31 +149,32 @@ typedef enum cs_post_status {
 
 typedef struct cs_post_view {
     cs_post_status status;
-    double tilt;          /* rotation from vertical, rad */
-    double tilt_dir[2];   /* horizontal direction the top moves, unit */
-    double base_moment;   /* N m */
-    double base_shear;    /* N */
-    double axial_pull;    /* N, positive pulling the post out */
+    double tilt;            /* rotation from vertical, rad */
+    double tilt_dir[2];     /* horizontal direction the top moves, unit */
+    double base_moment;     /* N m */
+    double base_shear;      /* N */
+    double axial_pull;      /* N, positive pulling the post out */
     double moment_capacity; /* min(Mp, footing), N m */
-    double top[3];        /* m */
+    double top[3];          /* m */
 } cs_post_view;
 
 void cs_state_post(const cs_model *model, const cs_state *state, int post, cs_post_view *out);
 const char *cs_post_status_name(cs_post_status status);
 
 /* Energy ledger, J. Every term is a state function or an accumulated dissipation computed on its own;
- * balance_error = (sum now - sum at t = 0) / initial kinetic energy. */
+ * balance_error = (sum now - sum at t = 0) / initial kinetic energy (for a vehicle starting at rest:
+ * / m g h_cg). */
 typedef struct cs_energy {
     double vehicle_kinetic;
-    double vehicle_potential;  /* gravity and tyre springs, relative to t = 0 */
+    double vehicle_potential; /* gravity and tyre springs, relative to t = 0 */
     double cable_elastic;
     double cable_plastic;
     double post_elastic;
     double post_plastic;
     double soil;
     double crush;
-    double friction;           /* tyres, cable sliding over supports */
-    double released;           /* stored energy lost at sudden failures (massless cable and posts) */
+    double friction; /* tyres, cable sliding over supports */
+    double released; /* stored energy lost at sudden failures (massless cable and posts) */
     double initial_total;
     double initial_kinetic;
     double balance_error;
@@ -175,23 +185,23 @@ void cs_state_energy(const cs_state *state, cs_energy *out);
 /* Response parameters, updated every step. */
 typedef struct cs_summary {
     cs_outcome outcome;
-    double t;                         /* time reached, s */
-    double max_decel_50ms_g;          /* g */
-    double t_max_decel;               /* s */
-    double max_dynamic_penetration;   /* m, front face past the attack face */
-    double max_barrier_deflection;    /* m, largest y of any cable path point */
-    double stop_time;                 /* s, valid if outcome == CS_STOPPED */
-    double exit_speed;                /* m/s, valid if outcome == CS_BREAKTHROUGH */
-    double first_contact_time;        /* s, < 0 before contact */
-    int posts_failed_left;            /* x below the impact point */
+    double t;                       /* time reached, s */
+    double max_decel_50ms_g;        /* g */
+    double t_max_decel;             /* s */
+    double max_dynamic_penetration; /* m, front face past the attack face */
+    double max_barrier_deflection;  /* m, largest y of any cable path point */
+    double stop_time;               /* s, valid if outcome == CS_STOPPED */
+    double exit_speed;              /* m/s, valid if outcome == CS_BREAKTHROUGH */
+    double first_contact_time;      /* s, < 0 before contact */
+    int posts_failed_left;          /* x below the impact point */
     int posts_failed_right;
     int cables_broken;
-    double initial_kinetic_energy;    /* J */
-    double energy_balance_error;      /* fraction, largest |error| over the run */
-    double max_cable_tension;         /* N over the run */
-    double final_position[3];         /* CG, m */
-    int solver_warnings;              /* steps whose barrier solve hit its sweep cap */
-    double max_solver_residual;       /* largest relative residual left by such a step */
+    double initial_kinetic_energy; /* J */
+    double energy_balance_error;   /* fraction, largest |error| over the run */
+    double max_cable_tension;      /* N over the run */
+    double final_position[3];      /* CG, m */
+    int solver_warnings;           /* steps whose barrier solve hit its sweep cap */
+    double max_solver_residual;    /* largest relative residual left by such a step */
 } cs_summary;
 
 void cs_state_summary(const cs_state *state, cs_summary *out);

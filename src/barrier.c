@@ -1,0 +1,176 @@
+/* The quasi-static barrier: for the vehicle's pose at the end of a step, find the state in which
+ *   - every standing post is in moment equilibrium with its cables (post.c),
+ *   - every support satisfies the capstan condition, sticking or sliding (cable.c),
+ *   - the face's crush balances the cables' push on it (the paper's crush correction),
+ * by Gauss-Seidel over these local problems, each solved exactly with its neighbours held, until the
+ * largest relative residual found in a sweep is below the solver tolerance. The cables and posts are
+ * massless (the paper's assumption): wave travel along a 50-m barrier takes ~20 ms. */
+#include "internal.h"
+#include "vec3.h"
+
+#include <math.h>
+
+static void face_axis(const cs_state *s, double *x) {
+    double bx[3] = {1.0, 0.0, 0.0};
+    quat_rotate(x, s->quat, bx);
+}
+
+/* Normal force of the cables on the face for a trial crush (corner nodes moved there). */
+static double face_normal_force(const cs_model *model, cs_state *s, double crush) {
+    double ax[3], f[3] = {0.0, 0.0, 0.0}, mo[3] = {0.0, 0.0, 0.0};
+    face_axis(s, ax);
+    cs_contact_place_corners(model, s, crush);
+    double n = cs_post_place_captured(model, s, crush, f, mo) > 0.0 ? -v3_dot(f, ax) : 0.0;
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        if (!cs->engaged || cs->status != CS_CABLE_INTACT) continue;
+        const cs_cable_model *cm = &model->cables[c];
+        for (int i = 1; i + 1 < cs->node_count; i++) {
+            if (cs->node[i] != CS_NODE_LEFT && cs->node[i] != CS_NODE_RIGHT) continue;
+            cs->tension[i - 1] = cs_span_tension(cm, cs, i - 1);
+            cs->tension[i] = cs_span_tension(cm, cs, i);
+        }
+        for (int i = 1; i + 1 < cs->node_count; i++) {
+            if (cs->node[i] != CS_NODE_LEFT && cs->node[i] != CS_NODE_RIGHT) continue;
+            double f[3];
+            cs_node_force(cs, i, f);
+            n -= v3_dot(f, ax);
+        }
+    }
+    return n;
+}
+
+static int any_engaged(const cs_model *model, const cs_state *s) {
+    for (int c = 0; c < model->cable_count; c++)
+        if (s->cables[c].engaged && s->cables[c].status == CS_CABLE_INTACT) return 1;
+    for (int p = 0; p < model->post_count; p++)
+        if (s->posts[p].captured && cs_post_standing(&s->posts[p])) return 1;
+    return 0;
+}
+
+/* Crush correction: solve N(crush) = C(crush), N falling and C rising with crush (regula falsi),
+ * stopping when the force changes by less than the crush tolerance; the sweep loop repeats it until
+ * the barrier as a whole converges. Returns the relative residual found on entry. */
+static double crush_solve(const cs_model *model, cs_state *s) {
+    const cs_vehicle_def *v = &model->vehicle.def;
+    double lo = cs_crush_permanent(v, s->crush_max);
+    double scale = v->crush_force[v->crush_point_count - 1];
+    if (!any_engaged(model, s)) {
+        s->crush = lo;
+        s->face_force = 0.0;
+        return 0.0;
+    }
+    double x = s->crush < lo ? lo : s->crush;
+    double n = face_normal_force(model, s, x), g = n - cs_crush_force(v, x, s->crush_max);
+    double entry = fabs(g) / scale;
+    double glo = face_normal_force(model, s, lo) - cs_crush_force(v, lo, s->crush_max);
+    if (glo <= 0.0) { /* the cables do not even reach the permanent set */
+        s->crush = lo;
+        s->face_force = face_normal_force(model, s, lo);
+        return glo < 0.0 ? 0.0 : entry;
+    }
+    double a = lo, ga = glo, b = x > lo ? x : lo + 1e-3,
+           gb = face_normal_force(model, s, b) - cs_crush_force(v, b, s->crush_max);
+    for (int k = 0; gb > 0.0 && k < 60; k++) {
+        a = b, ga = gb;
+        b = lo + 2.0 * (b - lo);
+        gb = face_normal_force(model, s, b) - cs_crush_force(v, b, s->crush_max);
+    }
+    double tol = model->scenario.crush_tolerance, xr = a, last = n;
+    int side = 0;
+    for (int it = 0; it < 60; it++) {
+        xr = (a * gb - b * ga) / (gb - ga);
+        double nr = face_normal_force(model, s, xr), gr = nr - cs_crush_force(v, xr, s->crush_max);
+        int done =
+            fabs(nr - last) <= tol * fmax(fabs(nr), 1e-9 * scale) && fabs(gr) <= tol * fmax(nr, 1e-9 * scale);
+        last = nr;
+        if (done || fabs(gr) <= 1e-12 * scale || b - a < 1e-13) break;
+        if (gr > 0.0) {
+            a = xr, ga = gr;
+            if (side == 1) gb *= 0.5;
+            side = 1;
+        } else {
+            b = xr, gb = gr;
+            if (side == -1) ga *= 0.5;
+            side = -1;
+        }
+    }
+    s->crush = xr;
+    s->face_force = face_normal_force(model, s, xr);
+    return entry;
+}
+
+double cs_barrier_solve(const cs_model *model, cs_state *s) {
+    const cs_scenario_def *sc = &model->scenario;
+    double worst = 0.0;
+    for (int sweep = 0; sweep < sc->solver_max_sweeps; sweep++) {
+        worst = 0.0;
+        for (int k = 0; k < model->post_count; k++) {
+            int p = (sweep % 2 == 0) ? k : model->post_count - 1 - k; /* alternate direction */
+            worst = fmax(worst, cs_post_solve(model, s, p, sc->solver_tolerance));
+        }
+        for (int c = 0; c < model->cable_count; c++) {
+            cs_cable_state *cs = &s->cables[c];
+            if (cs->status != CS_CABLE_INTACT) continue;
+            const cs_cable_model *cm = &model->cables[c];
+            int n = cs->node_count;
+            for (int k = 1; k + 1 < n; k++) {
+                int i = (sweep % 2 == 0) ? k : n - 1 - k; /* alternate direction */
+                worst = fmax(worst, cs_cable_slide_node(model, cm, cs, i, sc->solver_tolerance));
+            }
+        }
+        worst = fmax(worst, crush_solve(model, s));
+        if (worst <= sc->solver_tolerance) break;
+    }
+    for (int c = 0; c < model->cable_count; c++)
+        cs_cable_update_tensions(&model->cables[c], &s->cables[c]);
+    s->solver_residual = worst;
+    if (worst > sc->solver_tolerance) {
+        s->summary.solver_warnings++;
+        if (worst > s->summary.max_solver_residual) s->summary.max_solver_residual = worst;
+    }
+    return worst;
+}
+
+/* Resultant force and moment (about the CG) of the cables on the vehicle, through the face corners. */
+void cs_barrier_force(const cs_model *model, cs_state *s) {
+    v3_set(s->force, 0.0, 0.0, 0.0);
+    v3_set(s->moment, 0.0, 0.0, 0.0);
+    cs_post_place_captured(model, s, s->crush, s->force, s->moment);
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        if (!cs->engaged || cs->status != CS_CABLE_INTACT) continue;
+        for (int i = 1; i + 1 < cs->node_count; i++) {
+            if (cs->node[i] != CS_NODE_LEFT && cs->node[i] != CS_NODE_RIGHT) continue;
+            double f[3], r[3], t[3];
+            cs_node_force(cs, i, f);
+            v3_add(s->force, s->force, f);
+            v3_sub(r, cs->pos + 3 * i, s->pos);
+            v3_cross(t, r, f);
+            v3_add(s->moment, s->moment, t);
+        }
+    }
+}
+
+void cs_barrier_commit(const cs_model *model, cs_state *s) {
+    for (int c = 0; c < model->cable_count; c++)
+        cs_cable_commit(model, c, s);
+    for (int p = 0; p < model->post_count; p++)
+        cs_post_commit(model, s, p);
+    const cs_vehicle_def *v = &model->vehicle.def;
+    double f = cs_crush_force(v, s->crush, s->crush_max);
+    s->e_crush += 0.5 * (f + s->crush_force_committed) * (s->crush - s->crush_committed);
+    if (s->crush > s->crush_max) s->crush_max = s->crush;
+    s->crush_committed = s->crush;
+    s->crush_force_committed = f;
+}
+
+/* Stored plus dissipated energy of the barrier side; a sudden failure changes it with no work done. */
+double cs_barrier_stored_energy(const cs_model *model, const cs_state *s) {
+    double e = s->e_cable_plastic + s->e_post_plastic + s->e_soil + s->e_crush + s->e_friction;
+    for (int c = 0; c < model->cable_count; c++)
+        e += cs_cable_stored_energy(&model->cables[c], &s->cables[c]);
+    for (int p = 0; p < model->post_count; p++)
+        e += cs_post_stored_energy(model, s, p);
+    return e;
+}

@@ -1,0 +1,236 @@
+/* Cables: the rope law, span tensions, and sliding through supports with capstan friction.
+ *
+ * A cable is a chain of straight spans between its supports (anchors, standing posts, the corners of
+ * the vehicle's face). Node i carries a material coordinate m_i: the unstretched length of rope from
+ * the start anchor. Span i holds s_i = m_{i+1} - m_i of rope over a chord of length l_i, so its strain
+ * is e_i = l_i / s_i - 1 and its tension follows from the rope law (Eqs. 1-2, Fig. 3).
+ *
+ * Across a support that turns the cable by theta with friction mu, the tensions may differ at most by
+ * R = exp(mu theta) (Eq. 3). If the ratio would exceed R, rope slides through the support toward the
+ * higher tension until the ratio is exactly R; otherwise it sticks. Eqs. 5-6 are the two-span case;
+ * solving this for every support in turn (Gauss-Seidel, barrier.c) generalises them to the whole
+ * cable. Sliding moves m_i only, so the total rope between anchors is conserved. */
+#include "internal.h"
+#include "vec3.h"
+
+#include <math.h>
+#include <string.h>
+
+/* Backbone: elastic slope EA to T1, secondary slope to Fu, then constant Fu (plastic). */
+static double rope_backbone(const cs_rope *r, double e) {
+    if (e <= r->e1) return r->ea * e;
+    if (e <= r->e2) return r->t1 + r->k2 * (e - r->e1);
+    return r->fu;
+}
+
+/* Tension at total strain e with committed plastic strain ep: elastic from ep with slope EA, capped
+ * by the backbone (the return map of an elastic-plastic law with hardening); zero when slack. */
+double cs_rope_tension(const cs_rope *r, double e, double ep) {
+    double trial = r->ea * (e - ep);
+    if (trial <= 0.0) return 0.0;
+    double b = rope_backbone(r, e);
+    return trial < b ? trial : b;
+}
+
+/* Recoverable energy of a span of unstretched length s under tension T (unloading slope EA). */
+double cs_rope_elastic_energy(const cs_rope *r, double t, double s) {
+    return 0.5 * t * t / r->ea * s;
+}
+
+double cs_span_length(const cs_cable_state *cs, int i) {
+    return v3_dist(cs->pos + 3 * i, cs->pos + 3 * (i + 1));
+}
+
+static double span_tension_at(const cs_rope *r, double length, double material, double ep) {
+    if (material <= 1e-12) return r->fu; /* no rope left in the span: as taut as the rope gets */
+    return cs_rope_tension(r, length / material - 1.0, ep);
+}
+
+double cs_span_tension(const cs_cable_model *cm, const cs_cable_state *cs, int i) {
+    return span_tension_at(&cm->rope, cs_span_length(cs, i), cs->m[i + 1] - cs->m[i], cs->ep[i]);
+}
+
+void cs_cable_update_tensions(const cs_cable_model *cm, cs_cable_state *cs) {
+    for (int i = 0; i + 1 < cs->node_count; i++)
+        cs->tension[i] = cs->status == CS_CABLE_INTACT ? cs_span_tension(cm, cs, i) : 0.0;
+}
+
+/* Capstan ratio R = exp(mu theta) at interior node i; theta is the turning angle of the path. */
+double cs_node_friction_ratio(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs,
+                              int i) {
+    double a[3], b[3];
+    v3_sub(a, cs->pos + 3 * i, cs->pos + 3 * (i - 1));
+    v3_sub(b, cs->pos + 3 * (i + 1), cs->pos + 3 * i);
+    double na = v3_norm(a), nb = v3_norm(b);
+    if (na < 1e-12 || nb < 1e-12) return 1.0;
+    double c = v3_dot(a, b) / (na * nb);
+    double theta = acos(c > 1.0 ? 1.0 : (c < -1.0 ? -1.0 : c));
+    int id = cs->node[i];
+    double mu = id >= 0 ? cm->mu_post : model->vehicle.def.face_friction;
+    return exp(mu * theta);
+}
+
+/* Solve node i's sliding condition exactly (regula falsi, Illinois variant) with its neighbours'
+ * material held. Returns the relative violation found before solving (0 if it was sticking). */
+double cs_cable_slide_node(const cs_model *model, const cs_cable_model *cm, cs_cable_state *cs, int i,
+                           double tol) {
+    int id = cs->node[i];
+    if (id >= 0 && model->posts[id].clamped) return 0.0;
+    const cs_rope *r = &cm->rope;
+    double ll = cs_span_length(cs, i - 1), lr = cs_span_length(cs, i);
+    double m0 = cs->m[i - 1], m2 = cs->m[i + 1], m = cs->m[i];
+    double epl = cs->ep[i - 1], epr = cs->ep[i];
+    double tl = span_tension_at(r, ll, m - m0, epl), tr = span_tension_at(r, lr, m2 - m, epr);
+    double ratio = cs_node_friction_ratio(model, cm, cs, i);
+    /* dir = +1: left side too taut, rope slides into the left span (m grows). */
+    int dir;
+    double viol;
+    if (tl > ratio * tr) {
+        dir = 1, viol = tl - ratio * tr;
+    } else if (tr > ratio * tl) {
+        dir = -1, viol = tr - ratio * tl;
+    } else {
+        return 0.0;
+    }
+    double rel = viol / r->fu;
+    if (rel <= tol * 1e-3) return rel;
+    double eps = 1e-12 * (m2 - m0);
+    double a = m, b = dir > 0 ? m2 - eps : m0 + eps;
+    /* h(x) > 0 at a, < 0 at b */
+#define CS_H(x)                                                                                              \
+    (dir > 0 ? span_tension_at(r, ll, (x)-m0, epl) - ratio * span_tension_at(r, lr, m2 - (x), epr)           \
+             : span_tension_at(r, lr, m2 - (x), epr) - ratio * span_tension_at(r, ll, (x)-m0, epl))
+    double ha = viol, hb = CS_H(b), x = a;
+    if (hb >= 0.0) {
+        cs->m[i] = b; /* cannot be met inside the bracket: slide to its end */
+        return rel;
+    }
+    int side = 0;
+    for (int it = 0; it < 100; it++) {
+        x = (a * hb - b * ha) / (hb - ha);
+        double hx = CS_H(x);
+        if (fabs(hx) <= 1e-4 * tol * r->fu || fabs(b - a) <= 1e-15 * (m2 - m0)) break;
+        if (hx > 0.0) {
+            a = x, ha = hx;
+            if (side == 1) hb *= 0.5;
+            side = 1;
+        } else {
+            b = x, hb = hx;
+            if (side == -1) ha *= 0.5;
+            side = -1;
+        }
+    }
+#undef CS_H
+    cs->m[i] = x;
+    return rel;
+}
+
+/* Keep where[] (post -> node index) in step with node[] from index `from` on. */
+static void reindex(cs_cable_state *cs, int from) {
+    for (int i = from; i < cs->node_count; i++)
+        if (cs->node[i] >= 0) cs->where[cs->node[i]] = i;
+}
+
+void cs_cable_insert_node(cs_cable_state *cs, int at, int id, const double *p) {
+    int n = cs->node_count;
+    double l1 = v3_dist(cs->pos + 3 * (at - 1), p), l2 = v3_dist(p, cs->pos + 3 * at);
+    double f = (l1 + l2) > 0.0 ? l1 / (l1 + l2) : 0.5;
+    double m_new = cs->m[at - 1] + f * (cs->m[at] - cs->m[at - 1]);
+    double mc_new = cs->m_commit[at - 1] + f * (cs->m_commit[at] - cs->m_commit[at - 1]);
+    memmove(cs->node + at + 1, cs->node + at, (size_t)(n - at) * sizeof *cs->node);
+    memmove(cs->m + at + 1, cs->m + at, (size_t)(n - at) * sizeof *cs->m);
+    memmove(cs->m_commit + at + 1, cs->m_commit + at, (size_t)(n - at) * sizeof *cs->m_commit);
+    memmove(cs->pos + 3 * (at + 1), cs->pos + 3 * at, (size_t)(n - at) * 3 * sizeof *cs->pos);
+    /* span at-1 splits into at-1 and at, both keeping its plastic strain */
+    memmove(cs->ep + at, cs->ep + at - 1, (size_t)(n - at) * sizeof *cs->ep);
+    memmove(cs->tension + at, cs->tension + at - 1, (size_t)(n - at) * sizeof *cs->tension);
+    cs->node[at] = id;
+    cs->m[at] = m_new;
+    cs->m_commit[at] = mc_new;
+    v3_copy(cs->pos + 3 * at, p);
+    cs->node_count = n + 1;
+    reindex(cs, at);
+}
+
+void cs_cable_remove_node(cs_cable_state *cs, int at) {
+    int n = cs->node_count;
+    if (cs->node[at] >= 0) cs->where[cs->node[at]] = -1;
+    double s1 = cs->m[at] - cs->m[at - 1], s2 = cs->m[at + 1] - cs->m[at];
+    double ep = (s1 + s2) > 0.0 ? (cs->ep[at - 1] * s1 + cs->ep[at] * s2) / (s1 + s2) : cs->ep[at - 1];
+    cs->ep[at - 1] = ep;
+    memmove(cs->ep + at, cs->ep + at + 1, (size_t)(n - 2 - at) * sizeof *cs->ep);
+    memmove(cs->tension + at, cs->tension + at + 1, (size_t)(n - 2 - at) * sizeof *cs->tension);
+    memmove(cs->node + at, cs->node + at + 1, (size_t)(n - 1 - at) * sizeof *cs->node);
+    memmove(cs->m + at, cs->m + at + 1, (size_t)(n - 1 - at) * sizeof *cs->m);
+    memmove(cs->m_commit + at, cs->m_commit + at + 1, (size_t)(n - 1 - at) * sizeof *cs->m_commit);
+    memmove(cs->pos + 3 * at, cs->pos + 3 * (at + 1), (size_t)(n - 1 - at) * 3 * sizeof *cs->pos);
+    cs->node_count = n - 1;
+    reindex(cs, at);
+}
+
+/* Force the cable's two spans put on node i (toward its neighbours), N. */
+void cs_node_force(const cs_cable_state *cs, int i, double *f) {
+    v3_set(f, 0.0, 0.0, 0.0);
+    for (int k = -1; k <= 1; k += 2) {
+        int j = i + k, span = k < 0 ? i - 1 : i;
+        if (j < 0 || j >= cs->node_count) continue;
+        double d[3];
+        v3_sub(d, cs->pos + 3 * j, cs->pos + 3 * i);
+        double n = v3_norm(d);
+        if (n > 1e-12) v3_addto(f, d, cs->tension[span] / n);
+    }
+}
+
+double cs_cable_stored_energy(const cs_cable_model *cm, const cs_cable_state *cs) {
+    if (cs->status != CS_CABLE_INTACT) return 0.0;
+    double e = 0.0;
+    for (int i = 0; i + 1 < cs->node_count; i++)
+        e += cs_rope_elastic_energy(&cm->rope, cs->tension[i], cs->m[i + 1] - cs->m[i]);
+    return e;
+}
+
+/* End of step: plastic flow of each span (work T dep s) and friction work of rope that slid over each
+ * support (|slide| |T_left - T_right| measured along the stretched rope). */
+void cs_cable_commit(const cs_model *model, int c, cs_state *s) {
+    const cs_cable_model *cm = &model->cables[c];
+    cs_cable_state *cs = &s->cables[c];
+    if (cs->status != CS_CABLE_INTACT) return;
+    const cs_rope *r = &cm->rope;
+    double worst = 0.0, tmax = 0.0;
+    for (int i = 0; i + 1 < cs->node_count; i++) {
+        double sm = cs->m[i + 1] - cs->m[i];
+        double e = sm > 1e-12 ? cs_span_length(cs, i) / sm - 1.0 : r->e_break * 2.0;
+        double t = cs_rope_tension(r, e, cs->ep[i]);
+        cs->tension[i] = t;
+        if (t > 0.0 && r->ea * (e - cs->ep[i]) > t) {
+            double ep = e - t / r->ea;
+            s->e_cable_plastic += t * (ep - cs->ep[i]) * sm;
+            cs->ep[i] = ep;
+        }
+        if (e > worst) worst = e;
+        if (t > tmax) tmax = t;
+    }
+    for (int i = 1; i + 1 < cs->node_count; i++) {
+        double slide = cs->m[i] - cs->m_commit[i];
+        if (slide == 0.0) continue;
+        double sl = cs->m[i] - cs->m[i - 1], sr = cs->m[i + 1] - cs->m[i];
+        double stretch = 0.5 * (cs_span_length(cs, i - 1) / sl + cs_span_length(cs, i) / sr);
+        s->e_friction += fabs(slide) * fabs(cs->tension[i - 1] - cs->tension[i]) * stretch;
+    }
+    memcpy(cs->m_commit, cs->m, (size_t)cs->node_count * sizeof *cs->m);
+    if (tmax > cs->max_tension_seen) cs->max_tension_seen = tmax;
+    cs->max_strain = worst;
+}
+
+/* A span strained to the breaking strain breaks the cable; from then on it carries nothing. */
+int cs_cable_check_break(const cs_model *model, int c, cs_state *s) {
+    cs_cable_state *cs = &s->cables[c];
+    if (cs->status != CS_CABLE_INTACT || cs->max_strain < model->cables[c].rope.e_break) return 0;
+    double tmax = 0.0;
+    for (int i = 0; i + 1 < cs->node_count; i++)
+        tmax = fmax(tmax, cs->tension[i]);
+    cs->status = CS_CABLE_BROKEN;
+    cs->engaged = 0;
+    cs_event_add(model, s, CS_EVENT_CABLE_BREAK, CS_ELEMENT_CABLE, c, tmax);
+    return 1;
+}

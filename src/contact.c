@@ -1,0 +1,167 @@
+/* Contact between the vehicle's front face and the cables.
+ *
+ * In plan the face is the segment between its two corners. A cable whose straight path the face has
+ * crossed wraps the face: each corner that lies on the protected side of the path (to the left of the
+ * path directed from the start anchor to the end anchor) becomes a support of the cable, with capstan
+ * friction (cable.c). Between the vehicle and the nearest standing posts the cable stays straight.
+ * A corner that no longer pushes the path (the cable runs straight past it) is released.
+ *
+ * Heights: a cable engages at its natural height (the straight line between its neighbouring
+ * supports) and then rides on the face at that body-frame height. If at first contact the natural
+ * height lies below the face's bottom edge the vehicle rides over the cable (override); above the top
+ * edge it runs under it (underride). Later, an engaged cable slips off the same way only when its
+ * natural line is beyond the edge and friction on the face cannot hold it (|F_z| > mu F_n in the
+ * vehicle frame). Either way the cable leaves the contact for good. */
+#include "internal.h"
+#include "vec3.h"
+
+#include <math.h>
+
+static const int corner_id[2] = {CS_NODE_LEFT, CS_NODE_RIGHT};
+
+static double corner_y(const cs_model *model, int k) {
+    return (k == 0 ? 0.5 : -0.5) * model->vehicle.def.front_width;
+}
+
+static int is_corner(int id) {
+    return id == CS_NODE_LEFT || id == CS_NODE_RIGHT;
+}
+
+static int find_node(const cs_cable_state *cs, int id) {
+    for (int i = 0; i < cs->node_count; i++)
+        if (cs->node[i] == id) return i;
+    return -1;
+}
+
+/* > 0 if p lies to the left of the directed line a -> b in plan. */
+static double left_of(const double *a, const double *b, const double *p) {
+    return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
+}
+
+/* Height of the straight line between the nearest non-corner nodes around index i at abscissa x. */
+static double natural_height(const cs_cable_state *cs, int lo, int hi, double x) {
+    while (lo > 0 && is_corner(cs->node[lo]))
+        lo--;
+    while (hi < cs->node_count - 1 && is_corner(cs->node[hi]))
+        hi++;
+    const double *a = cs->pos + 3 * lo, *b = cs->pos + 3 * hi;
+    double f = (b[0] - a[0]) != 0.0 ? (x - a[0]) / (b[0] - a[0]) : 0.5;
+    f = f < 0.0 ? 0.0 : (f > 1.0 ? 1.0 : f);
+    return a[2] + f * (b[2] - a[2]);
+}
+
+/* World z of the face's bottom and top edges at a corner, and the body z that maps to world z. */
+static void face_heights(const cs_model *model, const cs_state *s, int k, double *bottom, double *top) {
+    const cs_vehicle_def *v = &model->vehicle.def;
+    double p[3];
+    cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), v->face_bottom - v->cg_height, p);
+    *bottom = p[2];
+    cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), v->face_top - v->cg_height, p);
+    *top = p[2];
+}
+
+static double body_z_for(const cs_model *model, const cs_state *s, int k, double zw) {
+    double p0[3], p1[3];
+    cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), 0.0, p0);
+    cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), 1.0, p1);
+    return (zw - p0[2]) / (p1[2] - p0[2]);
+}
+
+/* Friction on the face holds the cable at its height while the vertical pull of its spans is at most
+ * mu times the pull normal to the vertical face (in the face's own frame). */
+static int friction_holds(const cs_model *model, const cs_state *s, const cs_cable_state *cs, int i) {
+    double f[3], fb[3];
+    cs_node_force(cs, i, f);
+    quat_unrotate(fb, s->quat, f);
+    return fabs(fb[2]) <= model->vehicle.def.face_friction * hypot(fb[0], fb[1]);
+}
+
+static void slip(const cs_model *model, cs_state *s, int c, cs_event_type why) {
+    cs_cable_state *cs = &s->cables[c];
+    s->e_released += cs_cable_stored_energy(&model->cables[c], cs);
+    for (int i = cs->node_count - 2; i >= 1; i--)
+        if (is_corner(cs->node[i])) cs_cable_remove_node(cs, i);
+    cs->status = CS_CABLE_SLIPPED;
+    cs->engaged = 0;
+    cs_event_add(model, s, why, CS_ELEMENT_CABLE, c, s->t);
+}
+
+void cs_contact_place_corners(const cs_model *model, cs_state *s, double crush) {
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        if (!cs->engaged) continue;
+        for (int i = 1; i + 1 < cs->node_count; i++) {
+            int k = cs->node[i] == CS_NODE_LEFT ? 0 : (cs->node[i] == CS_NODE_RIGHT ? 1 : -1);
+            if (k >= 0)
+                cs_vehicle_face_point(model, s, crush, corner_y(model, k), cs->corner_z[k], cs->pos + 3 * i);
+        }
+    }
+}
+
+static void update_cable(const cs_model *model, cs_state *s, int c) {
+    cs_cable_state *cs = &s->cables[c];
+    cs_contact_place_corners(model, s, s->crush);
+    /* release corners that no longer push the path; check the height of those that do */
+    for (int i = cs->node_count - 2; i >= 1; i--) {
+        if (!is_corner(cs->node[i])) continue;
+        int k = cs->node[i] == CS_NODE_LEFT ? 0 : 1;
+        if (left_of(cs->pos + 3 * (i - 1), cs->pos + 3 * (i + 1), cs->pos + 3 * i) <= 0.0) {
+            cs_cable_remove_node(cs, i);
+            continue;
+        }
+        double lo, hi, zn = natural_height(cs, i - 1, i + 1, cs->pos[3 * i]);
+        face_heights(model, s, k, &lo, &hi);
+        if ((zn < lo || zn > hi) && !friction_holds(model, s, cs, i)) {
+            slip(model, s, c, zn < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
+            return;
+        }
+    }
+    /* engage corners that have crossed the path */
+    for (int k = 0; k < 2; k++) {
+        if (find_node(cs, corner_id[k]) >= 0) continue;
+        double lo, hi, p[3];
+        face_heights(model, s, k, &lo, &hi);
+        cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), 0.0, p);
+        int j = 1;
+        while (j < cs->node_count - 1 && cs->pos[3 * j] <= p[0])
+            j++;
+        if (p[0] <= cs->pos[0] || p[0] >= cs->pos[3 * (cs->node_count - 1)])
+            continue; /* beyond the anchors */
+        double zn = natural_height(cs, j - 1, j, p[0]);
+        p[2] = zn;
+        if (left_of(cs->pos + 3 * (j - 1), cs->pos + 3 * j, p) <= 0.0) continue;
+        if (zn < lo || zn > hi) {
+            slip(model, s, c, zn < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
+            return;
+        }
+        cs->corner_z[k] = body_z_for(model, s, k, zn);
+        cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), cs->corner_z[k], p);
+        cs_cable_insert_node(cs, j, corner_id[k], p);
+    }
+    cs->engaged = find_node(cs, CS_NODE_LEFT) >= 0 || find_node(cs, CS_NODE_RIGHT) >= 0;
+    if (cs->engaged && !s->contact_started) {
+        s->contact_started = 1;
+        s->summary.first_contact_time = s->t;
+    }
+}
+
+/* Bring every intact cable's path in line with the vehicle's new pose. */
+void cs_contact_update(const cs_model *model, cs_state *s) {
+    for (int c = 0; c < model->cable_count; c++)
+        if (s->cables[c].status == CS_CABLE_INTACT) update_cable(model, s, c);
+}
+
+/* Take failed posts out of every path and release the cables of failed anchors. */
+void cs_contact_drop_failed(const cs_model *model, cs_state *s) {
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        if (cs->status != CS_CABLE_INTACT) continue;
+        if (s->anchor_failed[0] || s->anchor_failed[1]) {
+            cs->status = CS_CABLE_RELEASED;
+            cs->engaged = 0;
+            continue;
+        }
+        for (int i = cs->node_count - 2; i >= 1; i--)
+            if (cs->node[i] >= 0 && !cs_post_standing(&s->posts[cs->node[i]])) cs_cable_remove_node(cs, i);
+    }
+}

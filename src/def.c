@@ -1,0 +1,96 @@
+/* Default definitions. Values that are not design data are the documented assumptions of
+ * docs/assumptions.md; design data (geometry, masses, strengths) default to 0 and must be given. */
+#include "cablesim/def.h"
+
+#include <math.h>
+#include <string.h>
+
+#define CS_PSF 47.88025898033584 /* Pa per lbf/ft^2 */
+#define CS_PI 3.14159265358979323846
+
+cs_rope_def cs_default_rope_def(void) {
+    cs_rope_def d;
+    memset(&d, 0, sizeof d);
+    d.elastic_limit_ratio = 0.6;     /* paper: the modulus drops at 60% of nominal strength */
+    d.secondary_modulus_ratio = 0.6; /* paper: "reduced by 40%" */
+    d.breaking_strain = 0.03;        /* paper's 0.03 read as a strain (model-notes.md) */
+    return d;
+}
+
+cs_cable_def cs_default_cable_def(void) {
+    cs_cable_def d;
+    memset(&d, 0, sizeof d);
+    d.post_friction = 0.15; /* steel rope in a steel hole, docs/assumptions.md */
+    d.rope = cs_default_rope_def();
+    return d;
+}
+
+cs_section_def cs_default_section_def(void) {
+    cs_section_def d;
+    memset(&d, 0, sizeof d);
+    d.modulus = 200e9;
+    return d;
+}
+
+cs_footing_def cs_default_footing_def(void) {
+    cs_footing_def d;
+    memset(&d, 0, sizeof d);
+    d.soil_pressure_cap = 8000.0 * CS_PSF; /* paper: S1 at most 8000 psf under dynamic load */
+    d.coeff_depth = 2.37;                  /* paper's Eq. 21 */
+    d.coeff_height = 2.64;
+    d.rotation_limit = CS_PI / 4.0;
+    return d;
+}
+
+cs_post_def cs_default_post_def(void) {
+    cs_post_def d;
+    memset(&d, 0, sizeof d);
+    d.section = cs_default_section_def();
+    d.footing = cs_default_footing_def();
+    d.attachment = CS_ATTACH_THROUGH;
+    d.rotation_limit = CS_PI / 4.0; /* paper: 45 degrees */
+    return d;
+}
+
+cs_anchor_def cs_default_anchor_def(void) {
+    cs_anchor_def d;
+    memset(&d, 0, sizeof d);
+    d.pullout_capacity = HUGE_VAL; /* rigid unless a capacity is given */
+    return d;
+}
+
+cs_barrier_def cs_default_barrier_def(void) {
+    cs_barrier_def d;
+    memset(&d, 0, sizeof d);
+    d.start_anchor = cs_default_anchor_def();
+    d.end_anchor = cs_default_anchor_def();
+    return d;
+}
+
+cs_vehicle_def cs_default_vehicle_def(void) {
+    cs_vehicle_def d;
+    memset(&d, 0, sizeof d);
+    d.tyre_static_deflection = 0.05;
+    d.tyre_damping_ratio = 0.3;
+    d.rolling_resistance = 0.01;
+    d.tyre_friction = 0.7;
+    d.face_friction = 0.3;
+    d.crush_unload_stiffness = 2.0e7;
+    return d;
+}
+
+cs_scenario_def cs_default_scenario_def(void) {
+    cs_scenario_def d;
+    memset(&d, 0, sizeof d);
+    d.angle = CS_PI / 2.0;
+    d.start_gap = 0.05;
+    d.dt = 0.5e-3;
+    d.t_end = 3.0;
+    d.output_interval = 1e-3;
+    d.crush_tolerance = 0.05;
+    d.solver_tolerance = 1e-5;
+    d.solver_max_sweeps = 300;
+    d.stop_speed = 0.05;
+    d.gravity = 9.80665;
+    return d;
+}

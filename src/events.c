@@ -1,0 +1,43 @@
+/* Failure and end-of-run events: what, when, which element. */
+#include "internal.h"
+
+static const char *const event_names[CS_EVENT_TYPE_COUNT] = {
+    "cable_break",    "post_hinge", "post_rotation_limit", "post_shear", "post_pullout", "footing_rotation",
+    "anchor_pullout", "override",   "underride",           "stopped",    "breakthrough"};
+
+const char *cs_event_type_name(cs_event_type type) {
+    return (type >= 0 && type < CS_EVENT_TYPE_COUNT) ? event_names[type] : "unknown";
+}
+
+const char *cs_element_kind_name(cs_element_kind kind) {
+    switch (kind) {
+    case CS_ELEMENT_CABLE:
+        return "cable";
+    case CS_ELEMENT_POST:
+        return "post";
+    case CS_ELEMENT_ANCHOR:
+        return "anchor";
+    case CS_ELEMENT_VEHICLE:
+        return "vehicle";
+    }
+    return "unknown";
+}
+
+/* The capacity covers every element failing once plus the end event, so nothing is dropped. */
+void cs_event_add(const cs_model *model, cs_state *s, cs_event_type type, cs_element_kind kind, int element,
+                  double value) {
+    if (s->event_count >= model->event_capacity) return;
+    cs_event *e = &s->events[s->event_count++];
+    e->t = s->t;
+    e->type = type;
+    e->element_kind = kind;
+    e->element = element;
+    e->value = value;
+}
+
+int cs_state_event_count(const cs_state *s) {
+    return s->event_count;
+}
+const cs_event *cs_state_event(const cs_state *s, int i) {
+    return (i >= 0 && i < s->event_count) ? &s->events[i] : NULL;
+}

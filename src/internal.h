@@ -1,0 +1,199 @@
+/* Engine internals shared by the physics files: the model (derived, immutable) and the state.
+ * One file per physics area works on these: vehicle.c, cable.c, post.c, footing.c, anchor.c,
+ * contact.c, barrier.c (the quasi-static solve that couples them), step.c, energy.c, events.c. */
+#ifndef CS_INTERNAL_H
+#define CS_INTERNAL_H
+
+#include "cablesim/cablesim.h"
+
+/* Node ids on a cable's path: posts are 0..post_count-1, the rest are negative. */
+enum { CS_MAX_CABLES_PER_POST = 64 }; /* = the model's cable limit */
+enum { CS_NODE_START = -1, CS_NODE_END = -2, CS_NODE_LEFT = -3, CS_NODE_RIGHT = -4 };
+
+typedef struct cs_rope {
+    double ea;      /* axial stiffness E A, N */
+    double fu;      /* nominal strength, N */
+    double t1;      /* end of the first slope, N */
+    double e1;      /* strain there */
+    double k2;      /* second slope, N per unit strain */
+    double e2;      /* strain at Fu */
+    double e_break; /* breaking strain */
+} cs_rope;
+
+typedef struct cs_cable_model {
+    double z;          /* height at the posts, m */
+    double pretension; /* N */
+    double mu_post;
+    cs_rope rope;
+} cs_cable_model;
+
+typedef struct cs_post_model {
+    double x, height;
+    double k_rot;          /* elastic rotational stiffness about the base, 3 E I / h_ref, N m/rad */
+    double mp;             /* plastic moment Zx Fy, N m */
+    double footing_moment; /* Eq. 21 capacity times its load height, N m */
+    double moment_cap;     /* min(mp, footing_moment) */
+    int soil_yields;       /* 1 if the footing is weaker than the post */
+    double shear_cap;      /* 0.6 Aw Fy, N */
+    double pullout_cap;    /* N */
+    double rot_limit;      /* rad */
+    double load_height;    /* mean cable height on the post, m */
+    int clamped;
+    cs_footing_def footing;
+} cs_post_model;
+
+typedef struct cs_vehicle_model {
+    cs_vehicle_def def;
+    double wheel[4][3]; /* body-frame tyre contact points at rest (FL, FR, RL, RR) */
+    double tyre_k[4];   /* N/m */
+    double tyre_c[4];   /* N s/m */
+    double inv_inertia[3];
+} cs_vehicle_model;
+
+struct cs_model {
+    int cable_count, post_count, max_nodes;
+    cs_cable_model *cables;
+    cs_post_model *posts;
+    cs_anchor_def anchors[2];
+    cs_vehicle_model vehicle;
+    cs_scenario_def scenario;
+    double dir[3];       /* initial travel direction, unit */
+    double start_pos[3]; /* CG at t = 0 */
+    double start_yaw;
+    int window_steps; /* steps in the 50-ms average */
+    int event_capacity;
+};
+
+/* A cable's current path: node ids in order from the start anchor to the end anchor, the material
+ * coordinate m of each node (unstretched length from the start anchor), the plastic strain of each
+ * span, and cached geometry and tension of each span. */
+typedef struct cs_cable_state {
+    cs_cable_status status;
+    int engaged;
+    int node_count;
+    int *node;          /* [max_nodes] */
+    int *where;         /* [post_count] index of each post in node[], -1 if not on the path */
+    double *m;          /* [max_nodes] material coordinate, m */
+    double *m_commit;   /* [max_nodes] at the end of the previous step */
+    double *ep;         /* [max_nodes - 1] plastic strain of each span (committed) */
+    double *tension;    /* [max_nodes - 1] N */
+    double *pos;        /* [max_nodes * 3] node positions, m */
+    double corner_z[2]; /* body-frame z of the contact on the face (left, right), m */
+    double max_tension_seen;
+    double max_strain; /* largest span strain at the last commit */
+} cs_cable_state;
+
+typedef struct cs_post_state {
+    cs_post_status status;
+    double tilt[2];      /* rotation vector: direction and angle the top moves, rad */
+    double plastic[2];   /* plastic part of the rotation (committed), rad */
+    double moment[2];    /* resisting generalised moment, N m */
+    double shear, axial; /* N */
+    int yielded;         /* hinge or soil event already reported */
+    int captured;        /* struck by the face: pushed over by it, off the cable paths */
+    double push;         /* force of the face on a captured post, N */
+} cs_post_state;
+
+struct cs_state {
+    double t;
+    long step;
+    cs_outcome outcome;
+    int frozen;
+
+    /* vehicle */
+    double pos[3], vel[3], quat[4], omega[3]; /* omega in the body frame */
+    double acc[3];
+    double force[3], moment[3]; /* barrier resultant on the vehicle (world, about the CG) */
+    double crush, crush_max;    /* face set-back now and the largest reached, m */
+    double crush_committed, crush_force_committed;
+    double face_force; /* N */
+    int contact_started;
+
+    int cable_count_alloc;
+    cs_cable_state *cables;
+    cs_post_state *posts;
+    int anchor_failed[2];
+
+    /* energy accumulators, J */
+    double e_cable_plastic, e_post_plastic, e_soil, e_crush, e_friction, e_released;
+    double e_initial_total, e_initial_kinetic;
+    double e_initial_potential_ref; /* CG height at t = 0 */
+    cs_energy energy;
+
+    /* response */
+    double *speed_ring; /* forward speed at the last window_steps steps */
+    int ring_fill;
+    double decel_50ms_g;
+    cs_summary summary;
+    double solver_residual;
+
+    cs_event *events;
+    int event_count;
+};
+
+/* ---- rope law (cable.c) ---- */
+double cs_rope_tension(const cs_rope *rope, double strain, double plastic_strain);
+double cs_rope_elastic_energy(const cs_rope *rope, double tension, double material);
+
+/* ---- cable paths (cable.c) ---- */
+double cs_span_length(const cs_cable_state *cs, int span);
+double cs_span_tension(const cs_cable_model *cm, const cs_cable_state *cs, int span);
+void cs_cable_update_tensions(const cs_cable_model *cm, cs_cable_state *cs);
+double cs_cable_slide_node(const cs_model *model, const cs_cable_model *cm, cs_cable_state *cs, int i,
+                           double tol);
+double cs_node_friction_ratio(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs,
+                              int i);
+void cs_cable_insert_node(cs_cable_state *cs, int at, int id, const double *p);
+void cs_cable_remove_node(cs_cable_state *cs, int at);
+void cs_cable_commit(const cs_model *model, int c, cs_state *s);
+int cs_cable_check_break(const cs_model *model, int c, cs_state *s);
+double cs_cable_stored_energy(const cs_cable_model *cm, const cs_cable_state *cs);
+void cs_node_force(const cs_cable_state *cs, int i, double *f);
+
+/* ---- posts and footings (post.c, footing.c) ---- */
+double cs_footing_capacity(const cs_footing_def *f, double load_height);
+void cs_post_attachment(const cs_model *model, int post, const double *tilt, double z, double *out);
+double cs_post_solve(const cs_model *model, cs_state *s, int post, double tol);
+void cs_post_commit(const cs_model *model, cs_state *s, int post);
+double cs_post_stored_energy(const cs_model *model, const cs_state *s, int post);
+int cs_post_standing(const cs_post_state *ps);
+int cs_post_check_failure(const cs_model *model, cs_state *s, int post);
+void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double *q);
+double cs_post_place_captured(const cs_model *model, cs_state *s, double crush, double *force,
+                              double *moment);
+int cs_post_capture(const cs_model *model, cs_state *s);
+
+/* ---- vehicle (vehicle.c) ---- */
+void cs_vehicle_body_to_world(const cs_state *s, const double *body, double *world);
+void cs_vehicle_face_point(const cs_model *model, const cs_state *s, double crush, double y_body,
+                           double z_body, double *world);
+void cs_vehicle_integrate(const cs_model *model, cs_state *s);
+double cs_crush_force(const cs_vehicle_def *v, double crush, double crush_max);
+double cs_crush_curve(const cs_vehicle_def *v, double crush);
+double cs_crush_permanent(const cs_vehicle_def *v, double crush_max);
+double cs_vehicle_kinetic_energy(const cs_model *model, const cs_state *s);
+double cs_vehicle_potential_energy(const cs_model *model, const cs_state *s);
+
+/* ---- contact (contact.c) ---- */
+void cs_contact_update(const cs_model *model, cs_state *s);
+void cs_contact_place_corners(const cs_model *model, cs_state *s, double crush);
+void cs_contact_drop_failed(const cs_model *model, cs_state *s);
+
+/* ---- barrier solve (barrier.c) ---- */
+double cs_barrier_solve(const cs_model *model, cs_state *s);
+void cs_barrier_force(const cs_model *model, cs_state *s);
+void cs_barrier_commit(const cs_model *model, cs_state *s);
+double cs_barrier_stored_energy(const cs_model *model, const cs_state *s);
+
+/* ---- anchors (anchor.c) ---- */
+int cs_anchor_check(const cs_model *model, cs_state *s);
+
+/* ---- energy, events, response ---- */
+void cs_energy_update(const cs_model *model, cs_state *s);
+double cs_energy_total(const cs_energy *e);
+double cs_energy_scale(const cs_model *model, const cs_state *s);
+void cs_event_add(const cs_model *model, cs_state *s, cs_event_type type, cs_element_kind kind, int element,
+                  double value);
+void cs_response_update(const cs_model *model, cs_state *s);
+
+#endif

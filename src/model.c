@@ -1,0 +1,326 @@
+/* Building the immutable model: check every definition, then derive what the step needs
+ * (rope breakpoints, post capacities, tyre springs, the start pose). */
+#include "internal.h"
+#include "vec3.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { CS_MAX_POSTS = 20000, CS_MAX_CABLES = 64 };
+#define CS_MAX_STEPS 5.0e7
+
+static int fail(cs_error *err, const char *fmt, ...) {
+    if (err) {
+        va_list ap;
+        va_start(ap, fmt);
+        err->status = CS_ERR_INVALID;
+        vsnprintf(err->message, sizeof err->message, fmt, ap);
+        va_end(ap);
+    }
+    return 1;
+}
+
+static int positive(double v) {
+    return isfinite(v) && v > 0.0;
+}
+static int non_negative(double v) {
+    return isfinite(v) && v >= 0.0;
+}
+
+static int check_rope(const cs_rope_def *r, int c, cs_error *err) {
+    if (!positive(r->area)) return fail(err, "cable %d: rope area must be > 0", c);
+    if (!positive(r->modulus)) return fail(err, "cable %d: rope modulus must be > 0", c);
+    if (!positive(r->nominal_strength)) return fail(err, "cable %d: rope nominal strength must be > 0", c);
+    if (!(r->elastic_limit_ratio > 0.0 && r->elastic_limit_ratio <= 1.0))
+        return fail(err, "cable %d: elastic limit ratio must be in (0, 1]", c);
+    if (!(r->secondary_modulus_ratio > 0.0 && r->secondary_modulus_ratio <= 1.0))
+        return fail(err, "cable %d: secondary modulus ratio must be in (0, 1]", c);
+    double e2 = r->nominal_strength *
+                (r->elastic_limit_ratio / r->modulus +
+                 (1.0 - r->elastic_limit_ratio) / (r->secondary_modulus_ratio * r->modulus)) /
+                r->area;
+    if (!(r->breaking_strain > e2))
+        return fail(err, "cable %d: breaking strain %.4g must exceed the strain at nominal strength %.4g", c,
+                    r->breaking_strain, e2);
+    return 0;
+}
+
+static int check_barrier(const cs_barrier_def *b, cs_error *err) {
+    if (b->cable_count < 1 || b->cable_count > CS_MAX_CABLES)
+        return fail(err, "barrier: %d cables (expected 1 to %d)", b->cable_count, CS_MAX_CABLES);
+    if (b->post_count < 0 || b->post_count > CS_MAX_POSTS)
+        return fail(err, "barrier: %d posts (expected 0 to %d)", b->post_count, CS_MAX_POSTS);
+    if (!b->cables || (b->post_count > 0 && !b->posts))
+        return fail(err, "barrier: missing cable or post array");
+    double lo = b->start_anchor.x, hi = b->end_anchor.x;
+    if (!isfinite(lo) || !isfinite(hi) || !(hi > lo))
+        return fail(err, "barrier: end anchor x %.4g m must exceed start anchor x %.4g m", hi, lo);
+    for (int k = 0; k < 2; k++) {
+        const cs_anchor_def *a = k ? &b->end_anchor : &b->start_anchor;
+        if (!non_negative(a->z)) return fail(err, "anchor %d: height must be >= 0", k);
+        if (!(a->pullout_capacity > 0.0)) return fail(err, "anchor %d: pullout capacity must be > 0", k);
+    }
+    for (int p = 0; p < b->post_count; p++) {
+        const cs_post_def *d = &b->posts[p];
+        if (!isfinite(d->x)) return fail(err, "post %d: position is not a number", p);
+        if (!(d->x > lo && d->x < hi))
+            return fail(err,
+                        "post %d: x %.4g m is not between the anchors (%.4g to %.4g m): an anchor inside the "
+                        "barrier",
+                        p, d->x, lo, hi);
+        if (p > 0 && !(d->x > b->posts[p - 1].x))
+            return fail(err, "post %d: x %.4g m does not exceed post %d's %.4g m (zero or negative spacing)",
+                        p, d->x, p - 1, b->posts[p - 1].x);
+        if (!positive(d->height)) return fail(err, "post %d: height must be > 0", p);
+        const cs_section_def *s = &d->section;
+        if (!positive(s->plastic_modulus) || !positive(s->inertia) || !positive(s->web_area) ||
+            !positive(s->yield_stress) || !positive(s->modulus))
+            return fail(err, "post %d: section properties (Zx, Ix, Aw, Fy, E) must all be > 0", p);
+        const cs_footing_def *f = &d->footing;
+        if (!positive(f->diameter) || !positive(f->depth))
+            return fail(err, "post %d: footing diameter and depth must be > 0", p);
+        if (!positive(f->soil_pressure) || !positive(f->soil_pressure_cap))
+            return fail(err, "post %d: soil pressure must be > 0", p);
+        if (!positive(f->coeff_depth) || !non_negative(f->coeff_height))
+            return fail(err, "post %d: Eq. 21 coefficients must be > 0", p);
+        if (!positive(f->pullout_capacity)) return fail(err, "post %d: pullout capacity must be > 0", p);
+        if (!(d->rotation_limit > 0.0 && d->rotation_limit < 1.5) ||
+            !(f->rotation_limit > 0.0 && f->rotation_limit < 1.5))
+            return fail(err, "post %d: rotation limits must be between 0 and 1.5 rad", p);
+    }
+    for (int c = 0; c < b->cable_count; c++) {
+        const cs_cable_def *d = &b->cables[c];
+        if (!positive(d->height)) return fail(err, "cable %d: height must be > 0", c);
+        for (int p = 0; p < b->post_count; p++)
+            if (d->height > b->posts[p].height)
+                return fail(err, "cable %d: height %.4g m is above the top of post %d (%.4g m)", c, d->height,
+                            p, b->posts[p].height);
+        if (!non_negative(d->pretension)) return fail(err, "cable %d: pretension must be >= 0", c);
+        if (!non_negative(d->post_friction) || d->post_friction > 2.0)
+            return fail(err, "cable %d: post friction must be in [0, 2]", c);
+        if (check_rope(&d->rope, c, err)) return 1;
+        if (d->pretension >= d->rope.elastic_limit_ratio * d->rope.nominal_strength)
+            return fail(err, "cable %d: pretension exceeds the rope's elastic limit", c);
+    }
+    return 0;
+}
+
+static int check_vehicle(const cs_vehicle_def *v, cs_error *err) {
+    if (!positive(v->mass)) return fail(err, "vehicle: mass must be > 0");
+    for (int i = 0; i < 3; i++)
+        if (!positive(v->inertia[i])) return fail(err, "vehicle: inertia must be > 0");
+    if (!positive(v->cg_height) || !positive(v->cg_to_front) || !positive(v->front_width) ||
+        !positive(v->wheelbase) || !positive(v->track))
+        return fail(err, "vehicle: CG height, CG to front, front width, wheelbase and track must be > 0");
+    if (!non_negative(v->face_bottom) || !(v->face_top > v->face_bottom))
+        return fail(err, "vehicle: face top must be above face bottom >= 0");
+    if (!(v->cg_to_front_axle > 0.0 && v->cg_to_front_axle < v->wheelbase))
+        return fail(err, "vehicle: CG must lie between the axles");
+    if (!(v->cg_to_front > v->cg_to_front_axle))
+        return fail(err, "vehicle: the front face must be ahead of the front axle");
+    if (!positive(v->tyre_static_deflection) || !non_negative(v->tyre_damping_ratio) ||
+        !non_negative(v->rolling_resistance) || !non_negative(v->tyre_friction) ||
+        !non_negative(v->face_friction))
+        return fail(err, "vehicle: tyre and friction parameters must be >= 0 (static deflection > 0)");
+    if (v->crush_point_count < 2 || v->crush_point_count > CS_MAX_CRUSH_POINTS)
+        return fail(err, "vehicle: crush curve needs 2 to %d points", CS_MAX_CRUSH_POINTS);
+    if (v->crush_deformation[0] != 0.0 || v->crush_force[0] != 0.0)
+        return fail(err, "vehicle: crush curve must start at (0 m, 0 N)");
+    for (int i = 1; i < v->crush_point_count; i++) {
+        if (!(v->crush_deformation[i] > v->crush_deformation[i - 1]))
+            return fail(err, "vehicle: crush deformation must increase (point %d)", i);
+        if (!(v->crush_force[i] >= v->crush_force[i - 1]) || !isfinite(v->crush_force[i]))
+            return fail(err, "vehicle: crush force must not decrease (point %d)", i);
+    }
+    if (!(v->crush_force[v->crush_point_count - 1] > 0.0))
+        return fail(err, "vehicle: crush force must rise above 0");
+    if (!positive(v->crush_unload_stiffness))
+        return fail(err, "vehicle: crush unloading stiffness must be > 0");
+    return 0;
+}
+
+static int check_scenario(const cs_scenario_def *s, cs_error *err) {
+    if (!non_negative(s->speed) || s->speed > 100.0)
+        return fail(err, "scenario: speed must be in [0, 100] m/s");
+    if (!(s->angle > 0.0 && s->angle < 3.14159265358979))
+        return fail(err, "scenario: angle must be between 0 and 180 degrees (exclusive)");
+    if (!isfinite(s->impact_x)) return fail(err, "scenario: impact point is not a number");
+    if (!non_negative(s->start_gap)) return fail(err, "scenario: start gap must be >= 0");
+    if (!positive(s->dt) || s->dt > 0.01) return fail(err, "scenario: time step must be in (0, 10 ms]");
+    if (!positive(s->t_end) || s->t_end < s->dt)
+        return fail(err, "scenario: end time must be at least one step");
+    if (s->t_end / s->dt > CS_MAX_STEPS)
+        return fail(err, "scenario: %.3g steps (end time / time step) exceed the limit of %.0g",
+                    s->t_end / s->dt, CS_MAX_STEPS);
+    if (!non_negative(s->output_interval)) return fail(err, "scenario: output interval must be >= 0");
+    if (!(s->crush_tolerance > 0.0 && s->crush_tolerance < 1.0))
+        return fail(err, "scenario: crush tolerance must be in (0, 1)");
+    if (!(s->solver_tolerance > 0.0 && s->solver_tolerance < 0.1))
+        return fail(err, "scenario: solver tolerance must be in (0, 0.1)");
+    if (s->solver_max_sweeps < 1 || s->solver_max_sweeps > 100000)
+        return fail(err, "scenario: solver sweeps must be in [1, 100000]");
+    if (!non_negative(s->stop_speed)) return fail(err, "scenario: stop speed must be >= 0");
+    if (!non_negative(s->gravity) || s->gravity > 100.0)
+        return fail(err, "scenario: gravity must be in [0, 100]");
+    return 0;
+}
+
+static void derive_rope(const cs_rope_def *d, cs_rope *r) {
+    r->ea = d->modulus * d->area;
+    r->fu = d->nominal_strength;
+    r->t1 = d->elastic_limit_ratio * r->fu;
+    r->e1 = r->t1 / r->ea;
+    r->k2 = d->secondary_modulus_ratio * r->ea;
+    r->e2 = r->e1 + (r->fu - r->t1) / r->k2;
+    r->e_break = d->breaking_strain;
+}
+
+static void derive_vehicle(const cs_vehicle_def *v, double g, cs_vehicle_model *vm) {
+    vm->def = *v;
+    double a = v->cg_to_front_axle, b = v->wheelbase - a;
+    double axle_load[2] = {v->mass * g * b / v->wheelbase, v->mass * g * a / v->wheelbase};
+    for (int i = 0; i < 4; i++) {
+        int rear = i >= 2;
+        double side = (i % 2 == 0) ? 0.5 : -0.5; /* left wheels first */
+        v3_set(vm->wheel[i], rear ? -b : a, side * v->track, -v->cg_height);
+        double n = 0.5 * axle_load[rear];
+        vm->tyre_k[i] = n / v->tyre_static_deflection;
+        double m_share = g > 0.0 ? n / g : 0.25 * v->mass;
+        vm->tyre_c[i] = 2.0 * v->tyre_damping_ratio * sqrt(vm->tyre_k[i] * m_share);
+        if (g == 0.0) vm->tyre_k[i] = vm->tyre_c[i] = 0.0;
+    }
+    for (int i = 0; i < 3; i++)
+        vm->inv_inertia[i] = 1.0 / v->inertia[i];
+}
+
+/* Largest stable step of the vehicle against the stiffest span a cable can offer it: half the
+ * closest support spacing, all cables in parallel (explicit integration: dt < 2 / omega). */
+static double critical_step(const cs_model *m, const cs_barrier_def *b) {
+    double gap = b->end_anchor.x - b->start_anchor.x, prev = b->start_anchor.x;
+    for (int p = 0; p <= b->post_count; p++) {
+        double x = p < b->post_count ? b->posts[p].x : b->end_anchor.x;
+        if (x - prev < gap) gap = x - prev;
+        prev = x;
+    }
+    double k = 0.0;
+    for (int c = 0; c < m->cable_count; c++)
+        k += m->cables[c].rope.ea / (0.5 * gap);
+    const cs_vehicle_def *v = &m->vehicle.def;
+    double r = 0.5 * v->front_width, mass = v->mass;
+    double rot[3] = {v->inertia[0] / (r * r), v->inertia[1] / (v->cg_to_front * v->cg_to_front),
+                     v->inertia[2] / (r * r)};
+    for (int i = 0; i < 3; i++)
+        if (rot[i] < mass) mass = rot[i];
+    return 2.0 * sqrt(mass / k);
+}
+
+cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *vehicle,
+                          const cs_scenario_def *scenario, cs_error *err) {
+    if (err) err->status = CS_OK, err->message[0] = '\0';
+    if (!barrier || !vehicle || !scenario) {
+        fail(err, "missing barrier, vehicle or scenario definition");
+        return NULL;
+    }
+    if (check_barrier(barrier, err) || check_vehicle(vehicle, err) || check_scenario(scenario, err))
+        return NULL;
+
+    cs_model *m = calloc(1, sizeof *m);
+    if (!m) goto oom;
+    m->cable_count = barrier->cable_count;
+    m->post_count = barrier->post_count;
+    m->max_nodes = m->post_count + 4;
+    m->cables = calloc((size_t)m->cable_count, sizeof *m->cables);
+    m->posts = calloc((size_t)(m->post_count ? m->post_count : 1), sizeof *m->posts);
+    if (!m->cables || !m->posts) goto oom;
+
+    for (int c = 0; c < m->cable_count; c++) {
+        const cs_cable_def *d = &barrier->cables[c];
+        cs_cable_model *cm = &m->cables[c];
+        cm->z = d->height;
+        cm->pretension = d->pretension;
+        cm->mu_post = d->post_friction;
+        derive_rope(&d->rope, &cm->rope);
+    }
+    double mean_z = 0.0;
+    for (int c = 0; c < m->cable_count; c++)
+        mean_z += m->cables[c].z / m->cable_count;
+    for (int p = 0; p < m->post_count; p++) {
+        const cs_post_def *d = &barrier->posts[p];
+        cs_post_model *pm = &m->posts[p];
+        pm->x = d->x;
+        pm->height = d->height;
+        pm->load_height = mean_z;
+        pm->k_rot = 3.0 * d->section.modulus * d->section.inertia / mean_z; /* cantilever, Eq. 10 */
+        pm->mp = d->section.plastic_modulus * d->section.yield_stress;
+        pm->footing = d->footing;
+        pm->footing_moment = cs_footing_capacity(&d->footing, mean_z) * mean_z;
+        pm->soil_yields = pm->footing_moment < pm->mp;
+        pm->moment_cap = pm->soil_yields ? pm->footing_moment : pm->mp;
+        pm->shear_cap = 0.6 * d->section.web_area * d->section.yield_stress;
+        pm->pullout_cap = d->footing.pullout_capacity;
+        pm->rot_limit = pm->soil_yields ? d->footing.rotation_limit : d->rotation_limit;
+        pm->clamped = d->attachment == CS_ATTACH_CLAMPED;
+    }
+    m->anchors[0] = barrier->start_anchor;
+    m->anchors[1] = barrier->end_anchor;
+    m->scenario = *scenario;
+    derive_vehicle(vehicle, scenario->gravity, &m->vehicle);
+
+    double dt_crit = critical_step(m, barrier);
+    if (scenario->dt > dt_crit) {
+        fail(err, "scenario: time step %.3g ms is too large for the stiffest cable span; use at most %.3g ms",
+             scenario->dt * 1e3, dt_crit * 1e3);
+        cs_model_free(m);
+        return NULL;
+    }
+
+    /* Start pose: the face centre travels along dir to (impact_x, 0); every face corner starts
+     * start_gap short of the cable line. */
+    double th = scenario->angle;
+    v3_set(m->dir, cos(th), sin(th), 0.0);
+    m->start_yaw = th;
+    double yc = -scenario->start_gap - 0.5 * vehicle->front_width * fabs(cos(th));
+    double xc = scenario->impact_x + m->dir[0] * yc / m->dir[1];
+    v3_set(m->start_pos, xc - m->dir[0] * vehicle->cg_to_front, yc - m->dir[1] * vehicle->cg_to_front,
+           vehicle->cg_height);
+    m->window_steps = (int)lround(0.05 / scenario->dt);
+    if (m->window_steps < 1) m->window_steps = 1;
+    m->event_capacity = 4 * m->post_count + 4 * m->cable_count + 16;
+    return m;
+
+oom:
+    cs_model_free(m);
+    if (err) err->status = CS_ERR_MEMORY, snprintf(err->message, sizeof err->message, "out of memory");
+    return NULL;
+}
+
+void cs_model_free(cs_model *m) {
+    if (!m) return;
+    free(m->cables);
+    free(m->posts);
+    free(m);
+}
+
+int cs_model_cable_count(const cs_model *m) {
+    return m->cable_count;
+}
+int cs_model_post_count(const cs_model *m) {
+    return m->post_count;
+}
+double cs_model_post_x(const cs_model *m, int p) {
+    return m->posts[p].x;
+}
+double cs_model_cable_height(const cs_model *m, int c) {
+    return m->cables[c].z;
+}
+double cs_model_footing_capacity(const cs_model *m, int p, double h) {
+    return cs_footing_capacity(&m->posts[p].footing, h);
+}
+const cs_vehicle_def *cs_model_vehicle(const cs_model *m) {
+    return &m->vehicle.def;
+}
+const cs_scenario_def *cs_model_scenario(const cs_model *m) {
+    return &m->scenario;
+}

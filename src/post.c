@@ -1,0 +1,303 @@
+/* Posts: a post tilts about its base by a rotation vector alpha = theta * u (u the horizontal
+ * direction its top moves). A cable at height z sits at base + z a(alpha), with the post axis
+ *   a = (u sin theta, cos theta).
+ * The cables' generalised moment on the post is Q = sum z J^T F, J = da/dalpha (virtual work), and the
+ * post resists with an elastic-plastic rotational spring: k (alpha - alpha_p) up to the capacity
+ * M_cap, then rotation at constant moment (the plastic hinge of Eqs. 13-20, or the footing rotating
+ * in the soil past Eq. 21). k = 3 E I / h is the cantilever of Eqs. 10-11 seen at the load height h.
+ * M_cap = min(Zx Fy, P(h) h): whichever of post and footing is weaker yields, and its work goes to
+ * post plastic or soil. The post is massless: each step its tilt is solved so that Q = resistance. */
+#include "internal.h"
+#include "vec3.h"
+
+#include <math.h>
+
+int cs_post_standing(const cs_post_state *ps) {
+    return ps->status == CS_POST_ELASTIC || ps->status == CS_POST_HINGED || ps->status == CS_POST_SOIL;
+}
+
+/* sin(t)/t and its derivative over t, with series near 0. */
+static void sinc_terms(double t, double *s, double *g) {
+    if (t < 1e-4) {
+        *s = 1.0 - t * t / 6.0;
+        *g = -1.0 / 3.0 + t * t / 30.0;
+    } else {
+        *s = sin(t) / t;
+        *g = (t * cos(t) - sin(t)) / (t * t * t);
+    }
+}
+
+void cs_post_attachment(const cs_model *model, int p, const double *tilt, double z, double *out) {
+    double t = hypot(tilt[0], tilt[1]), s, g;
+    sinc_terms(t, &s, &g);
+    v3_set(out, model->posts[p].x + z * tilt[0] * s, z * tilt[1] * s, z * cos(t));
+}
+
+/* Jacobian of the post axis a(alpha), 3 x 2, row-major. */
+static void axis_jacobian(const double *al, double *j) {
+    double t = hypot(al[0], al[1]), s, g;
+    sinc_terms(t, &s, &g);
+    j[0] = s + al[0] * al[0] * g, j[1] = al[0] * al[1] * g;
+    j[2] = al[0] * al[1] * g, j[3] = s + al[1] * al[1] * g;
+    j[4] = -s * al[0], j[5] = -s * al[1];
+}
+
+void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double *q) {
+    double tr[2] = {pm->k_rot * (tilt[0] - ps->plastic[0]), pm->k_rot * (tilt[1] - ps->plastic[1])};
+    double n = hypot(tr[0], tr[1]);
+    double f = n > pm->moment_cap ? pm->moment_cap / n : 1.0;
+    q[0] = tr[0] * f, q[1] = tr[1] * f;
+}
+
+/* Place the post's cable nodes for a tilt, let the rope slide through the post's own holes (from the
+ * material it had on entry, so the residual is a function of the tilt alone), and return the residual
+ * r = Q_cables - Q_resist. Also gives the resultant cable force on the post (for shear and pullout).
+ * Sliding inside this block matters: held rope would make the post look as stiff as the cable. */
+static void post_residual(const cs_model *model, cs_state *s, int p, const double *tilt,
+                          const double *m_entry, double *r, double *force) {
+    double j[6], q[2] = {0.0, 0.0};
+    axis_jacobian(tilt, j);
+    if (force) v3_set(force, 0.0, 0.0, 0.0);
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
+        if (i < 0) continue;
+        const cs_cable_model *cm = &model->cables[c];
+        cs_post_attachment(model, p, tilt, cm->z, cs->pos + 3 * i);
+        cs->m[i] = m_entry[c];
+        cs_cable_slide_node(model, cm, cs, i, model->scenario.solver_tolerance);
+        cs->tension[i - 1] = cs_span_tension(cm, cs, i - 1);
+        cs->tension[i] = cs_span_tension(cm, cs, i);
+        double f[3];
+        cs_node_force(cs, i, f);
+        q[0] += cm->z * (j[0] * f[0] + j[2] * f[1] + j[4] * f[2]);
+        q[1] += cm->z * (j[1] * f[0] + j[3] * f[1] + j[5] * f[2]);
+        if (force) v3_add(force, force, f);
+    }
+    double res[2];
+    cs_post_resistance(&model->posts[p], &s->posts[p], tilt, res);
+    r[0] = q[0] - res[0], r[1] = q[1] - res[1];
+}
+
+static void entry_material(const cs_model *model, const cs_state *s, int p, double *m_entry) {
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
+        m_entry[c] = i >= 0 ? cs->m[i] : 0.0;
+    }
+}
+
+/* Newton on the post's tilt with a finite-difference Jacobian and backtracking. Returns the relative
+ * residual found on entry. */
+double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol) {
+    cs_post_state *ps = &s->posts[p];
+    if (!cs_post_standing(ps) || ps->captured) return 0.0;
+    const cs_post_model *pm = &model->posts[p];
+    double scale = pm->moment_cap, r[2], m_entry[CS_MAX_CABLES_PER_POST];
+    double *al = ps->tilt;
+    entry_material(model, s, p, m_entry);
+    post_residual(model, s, p, al, m_entry, r, NULL);
+    double entry = hypot(r[0], r[1]) / scale;
+    double rn = entry;
+    for (int it = 0; it < 30 && rn > 1e-3 * tol; it++) {
+        /* On the plastic plateau the radial slope of the resistance is zero; if the cables pull less
+         * than the capacity the post unloads, so restart from just inside the elastic range. */
+        double tr[2] = {al[0] - ps->plastic[0], al[1] - ps->plastic[1]}, tn = hypot(tr[0], tr[1]);
+        if (pm->k_rot * tn > pm->moment_cap && (r[0] * tr[0] + r[1] * tr[1]) < 0.0) {
+            double f = 0.999 * pm->moment_cap / (pm->k_rot * tn);
+            al[0] = ps->plastic[0] + f * tr[0], al[1] = ps->plastic[1] + f * tr[1];
+            post_residual(model, s, p, al, m_entry, r, NULL);
+            rn = hypot(r[0], r[1]) / scale;
+            continue;
+        }
+        double h = 1e-7, jac[4], rp[2];
+        for (int k = 0; k < 2; k++) {
+            double a2[2] = {al[0], al[1]};
+            a2[k] += h;
+            post_residual(model, s, p, a2, m_entry, rp, NULL);
+            jac[k] = (rp[0] - r[0]) / h; /* column k: d r / d alpha_k */
+            jac[2 + k] = (rp[1] - r[1]) / h;
+        }
+        double det = jac[0] * jac[3] - jac[1] * jac[2];
+        double d[2];
+        if (fabs(det) > 1e-300) {
+            d[0] = -(jac[3] * r[0] - jac[1] * r[1]) / det;
+            d[1] = -(-jac[2] * r[0] + jac[0] * r[1]) / det;
+        } else {
+            d[0] = r[0] / pm->k_rot, d[1] = r[1] / pm->k_rot; /* J ~ -k in the elastic range */
+        }
+        double dn = hypot(d[0], d[1]);
+        if (dn > 0.05) d[0] *= 0.05 / dn, d[1] *= 0.05 / dn;
+        double step = 1.0, trial[2], rt[2], rtn = rn;
+        for (int ls = 0; ls < 12; ls++, step *= 0.5) {
+            trial[0] = al[0] + step * d[0], trial[1] = al[1] + step * d[1];
+            post_residual(model, s, p, trial, m_entry, rt, NULL);
+            rtn = hypot(rt[0], rt[1]) / scale;
+            if (rtn < rn) break;
+        }
+        if (!(rtn < rn)) break;
+        al[0] = trial[0], al[1] = trial[1], r[0] = rt[0], r[1] = rt[1], rn = rtn;
+    }
+    post_residual(model, s, p, al, m_entry, r, NULL); /* leave the nodes at the accepted tilt */
+    return entry;
+}
+
+/* End of step: plastic rotation (radial return) and its work, base shear and axial pull. */
+void cs_post_commit(const cs_model *model, cs_state *s, int p) {
+    cs_post_state *ps = &s->posts[p];
+    if (!cs_post_standing(ps)) return;
+    const cs_post_model *pm = &model->posts[p];
+    double tr[2] = {pm->k_rot * (ps->tilt[0] - ps->plastic[0]), pm->k_rot * (ps->tilt[1] - ps->plastic[1])};
+    double n = hypot(tr[0], tr[1]);
+    if (n > pm->moment_cap) {
+        double u[2] = {tr[0] / n, tr[1] / n};
+        double np[2] = {ps->tilt[0] - pm->moment_cap / pm->k_rot * u[0],
+                        ps->tilt[1] - pm->moment_cap / pm->k_rot * u[1]};
+        double w = pm->moment_cap * hypot(np[0] - ps->plastic[0], np[1] - ps->plastic[1]);
+        if (pm->soil_yields)
+            s->e_soil += w;
+        else
+            s->e_post_plastic += w;
+        ps->plastic[0] = np[0], ps->plastic[1] = np[1];
+        if (!ps->yielded) {
+            ps->yielded = 1;
+            ps->status = pm->soil_yields ? CS_POST_SOIL : CS_POST_HINGED;
+            cs_event_add(model, s, pm->soil_yields ? CS_EVENT_FOOTING_ROTATION : CS_EVENT_POST_HINGE,
+                         CS_ELEMENT_POST, p, pm->moment_cap);
+        }
+    }
+    cs_post_resistance(pm, ps, ps->tilt, ps->moment);
+    if (ps->captured) {
+        ps->shear = ps->push, ps->axial = 0.0;
+        return;
+    }
+    double r[2], f[3], axis[3], m_entry[CS_MAX_CABLES_PER_POST];
+    entry_material(model, s, p, m_entry);
+    post_residual(model, s, p, ps->tilt, m_entry, r, f);
+    /* base shear from the post's own moment over the load height (what equilibrium allows), so a
+     * step the solver left short of equilibrium cannot report a shear it never had */
+    ps->shear = hypot(ps->moment[0], ps->moment[1]) / pm->load_height;
+    cs_post_attachment(model, p, ps->tilt, 1.0, axis);
+    axis[0] -= pm->x;
+    ps->axial = v3_dot(f, axis);
+}
+
+/* Failure of a standing post: rotation limit, base shear, pullout. Returns 1 if it failed. */
+int cs_post_check_failure(const cs_model *model, cs_state *s, int p) {
+    cs_post_state *ps = &s->posts[p];
+    if (!cs_post_standing(ps)) return 0;
+    const cs_post_model *pm = &model->posts[p];
+    double tilt = hypot(ps->tilt[0], ps->tilt[1]);
+    cs_post_status st;
+    cs_event_type ev;
+    double value;
+    if (tilt >= pm->rot_limit) {
+        st = CS_POST_FAILED_ROTATION, ev = CS_EVENT_POST_ROTATION_LIMIT, value = tilt;
+    } else if (ps->shear >= pm->shear_cap) {
+        st = CS_POST_FAILED_SHEAR, ev = CS_EVENT_POST_SHEAR, value = ps->shear;
+    } else if (ps->axial >= pm->pullout_cap) {
+        st = CS_POST_FAILED_PULLOUT, ev = CS_EVENT_POST_PULLOUT, value = ps->axial;
+    } else {
+        return 0;
+    }
+    ps->status = st;
+    cs_event_add(model, s, ev, CS_ELEMENT_POST, p, value);
+    return 1;
+}
+
+double cs_post_stored_energy(const cs_model *model, const cs_state *s, int p) {
+    const cs_post_state *ps = &s->posts[p];
+    if (!cs_post_standing(ps)) return 0.0;
+    double q[2];
+    cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
+    return 0.5 * (q[0] * q[0] + q[1] * q[1]) / model->posts[p].k_rot;
+}
+
+/* ---- posts struck by the face ----
+ * A standing post whose base the face's bottom edge reaches (within its width plus a margin) is
+ * struck by the vehicle: it leaves the cable paths and is pushed over at the face's bottom edge,
+ * height zb. With the face a distance d past the post's base (along the vehicle's heading f), the post
+ * leans by theta = asin(d / zb) toward f, resisting with its moment M (elastic-plastic, as above).
+ * The push on the vehicle is M / (zb cos theta) against f, so that push x dd = M dtheta: the work
+ * the vehicle does is exactly what the post stores and dissipates. */
+#define CS_CAPTURE_MARGIN 0.1 /* m beyond each face corner that still strikes a post */
+
+static void face_frame(const cs_model *model, const cs_state *s, double crush, double *origin, double *f,
+                       double *left, double *zb) {
+    const cs_vehicle_def *v = &model->vehicle.def;
+    double x[3], bx[3] = {1.0, 0.0, 0.0}, by[3] = {0.0, 1.0, 0.0};
+    cs_vehicle_face_point(model, s, crush, 0.0, v->face_bottom - v->cg_height, origin);
+    quat_rotate(x, s->quat, bx);
+    x[2] = 0.0;
+    double n = v3_norm(x);
+    v3_scale(f, x, n > 0.0 ? 1.0 / n : 0.0);
+    quat_rotate(left, s->quat, by);
+    *zb = origin[2] > 0.05 ? origin[2] : 0.05;
+}
+
+/* Place every captured post for a trial crush; returns the push's component along the vehicle's
+ * heading (the captured posts' share of the face's normal force). With force/moment given, also
+ * adds the pushes to the barrier's resultant on the vehicle. */
+double cs_post_place_captured(const cs_model *model, cs_state *s, double crush, double *force,
+                              double *moment) {
+    double o[3], f[3], left[3], zb, total = 0.0;
+    face_frame(model, s, crush, o, f, left, &zb);
+    for (int p = 0; p < model->post_count; p++) {
+        cs_post_state *ps = &s->posts[p];
+        if (!ps->captured || !cs_post_standing(ps)) continue;
+        const cs_post_model *pm = &model->posts[p];
+        double base[3] = {pm->x, 0.0, 0.0}, rel[3];
+        v3_sub(rel, o, base);
+        double d = v3_dot(rel, f);
+        double sn = d / zb;
+        sn = sn < 0.0 ? 0.0 : (sn > 0.999 ? 0.999 : sn);
+        double th = asin(sn);
+        ps->tilt[0] = th * f[0], ps->tilt[1] = th * f[1];
+        double q[2];
+        cs_post_resistance(pm, ps, ps->tilt, q);
+        double m = q[0] * f[0] + q[1] * f[1];
+        if (m < 0.0 || d <= 0.0) { /* the face has backed off: the post stands at its set, free */
+            ps->tilt[0] = ps->plastic[0], ps->tilt[1] = ps->plastic[1];
+            ps->push = 0.0;
+            continue;
+        }
+        ps->push = m / (zb * cos(th));
+        total += ps->push;
+        if (force) {
+            double pt[3], fv[3], r[3], t[3];
+            v3_copy(pt, base);
+            v3_addto(pt, f, d);
+            pt[2] = zb;
+            v3_scale(fv, f, -ps->push);
+            v3_add(force, force, fv);
+            v3_sub(r, pt, s->pos);
+            v3_cross(t, r, fv);
+            v3_add(moment, moment, t);
+        }
+    }
+    return total;
+}
+
+/* Capture the standing posts the face has reached. Returns 1 if any was captured. */
+int cs_post_capture(const cs_model *model, cs_state *s) {
+    const cs_vehicle_def *v = &model->vehicle.def;
+    double o[3], f[3], left[3], zb;
+    face_frame(model, s, s->crush, o, f, left, &zb);
+    int any = 0;
+    for (int p = 0; p < model->post_count; p++) {
+        cs_post_state *ps = &s->posts[p];
+        if (ps->captured || !cs_post_standing(ps)) continue;
+        double top[3], rel[3];
+        cs_post_attachment(model, p, ps->tilt, zb, top);
+        v3_sub(rel, o, top);
+        double d = v3_dot(rel, f), lat = v3_dot(rel, left);
+        if (d < 0.0 || fabs(lat) > 0.5 * v->front_width + CS_CAPTURE_MARGIN || d > zb) continue;
+        ps->captured = 1;
+        for (int c = 0; c < model->cable_count; c++) {
+            cs_cable_state *cs = &s->cables[c];
+            if (cs->status == CS_CABLE_INTACT && cs->where[p] > 0) cs_cable_remove_node(cs, cs->where[p]);
+        }
+        any = 1;
+    }
+    return any;
+}

@@ -1,0 +1,90 @@
+/* Response parameters, updated every step: the 50-ms moving-average deceleration, penetration of the
+ * front face past the attack face (y = 0), barrier deflection, failed posts on each side, and the end
+ * of the run (stopped, broke through, time limit). */
+#include "internal.h"
+#include "vec3.h"
+
+#include <math.h>
+
+#define CS_STANDARD_GRAVITY 9.80665 /* m/s^2 per g, whatever the scenario's gravity */
+
+/* 50-ms average of the deceleration along the initial travel direction: the change of forward speed
+ * over the window, (u(t - W) - u(t)) / W, from a ring of the last window_steps + 1 speeds. */
+static void update_decel(const cs_model *model, cs_state *s, double u) {
+    int n = model->window_steps + 1;
+    s->speed_ring[s->step % n] = u;
+    if (s->ring_fill < n) s->ring_fill++;
+    if (s->ring_fill < n) return;
+    double old = s->speed_ring[(s->step + 1) % n];
+    double w = model->window_steps * model->scenario.dt;
+    s->decel_50ms_g = (old - u) / w / CS_STANDARD_GRAVITY;
+    if (s->decel_50ms_g > s->summary.max_decel_50ms_g) {
+        s->summary.max_decel_50ms_g = s->decel_50ms_g;
+        s->summary.t_max_decel = s->t;
+    }
+}
+
+/* Furthest y of the face's four corners (crushed face). */
+static double face_penetration(const cs_model *model, const cs_state *s) {
+    const cs_vehicle_def *v = &model->vehicle.def;
+    double best = -HUGE_VAL, p[3];
+    for (int k = 0; k < 4; k++) {
+        double y = (k % 2 ? 0.5 : -0.5) * v->front_width,
+               z = (k < 2 ? v->face_bottom : v->face_top) - v->cg_height;
+        cs_vehicle_face_point(model, s, s->crush, y, z, p);
+        if (p[1] > best) best = p[1];
+    }
+    return best;
+}
+
+static void end_run(const cs_model *model, cs_state *s, cs_outcome outcome, double value) {
+    s->outcome = outcome;
+    if (outcome == CS_STOPPED) {
+        s->summary.stop_time = s->t;
+        cs_event_add(model, s, CS_EVENT_STOPPED, CS_ELEMENT_VEHICLE, 0, value);
+    } else if (outcome == CS_BREAKTHROUGH) {
+        s->summary.exit_speed = value;
+        cs_event_add(model, s, CS_EVENT_BREAKTHROUGH, CS_ELEMENT_VEHICLE, 0, value);
+    }
+}
+
+void cs_response_update(const cs_model *model, cs_state *s) {
+    cs_summary *sm = &s->summary;
+    double u = v3_dot(s->vel, model->dir);
+    update_decel(model, s, u);
+    double pen = face_penetration(model, s);
+    if (pen > sm->max_dynamic_penetration) sm->max_dynamic_penetration = pen;
+
+    int engaged = 0, intact = 0;
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        intact += cs->status == CS_CABLE_INTACT;
+        engaged += cs->status == CS_CABLE_INTACT && cs->engaged;
+        if (cs->max_tension_seen > sm->max_cable_tension) sm->max_cable_tension = cs->max_tension_seen;
+        for (int i = 0; cs->status == CS_CABLE_INTACT && i < cs->node_count; i++)
+            if (cs->pos[3 * i + 1] > sm->max_barrier_deflection)
+                sm->max_barrier_deflection = cs->pos[3 * i + 1];
+    }
+    sm->cables_broken = 0;
+    for (int c = 0; c < model->cable_count; c++)
+        sm->cables_broken += s->cables[c].status == CS_CABLE_BROKEN;
+    sm->posts_failed_left = sm->posts_failed_right = 0;
+    for (int p = 0; p < model->post_count; p++) {
+        if (cs_post_standing(&s->posts[p])) continue;
+        if (model->posts[p].x < model->scenario.impact_x)
+            sm->posts_failed_left++;
+        else
+            sm->posts_failed_right++;
+    }
+    sm->t = s->t;
+    v3_copy(sm->final_position, s->pos);
+
+    if (s->contact_started && u <= model->scenario.stop_speed) {
+        end_run(model, s, CS_STOPPED, sm->max_dynamic_penetration);
+    } else if (s->contact_started && engaged == 0 && (intact == 0 || s->pos[1] > 0.0)) {
+        end_run(model, s, CS_BREAKTHROUGH, v3_norm(s->vel));
+    } else if (s->t >= model->scenario.t_end - 0.5 * model->scenario.dt) {
+        end_run(model, s, CS_TIME_LIMIT, 0.0);
+    }
+    sm->outcome = s->outcome;
+}

@@ -1,0 +1,254 @@
+/* The state: allocated once per model (the step never allocates), reset to t = 0, and read through
+ * views. */
+#include "internal.h"
+#include "vec3.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+cs_state *cs_state_create(const cs_model *model, cs_error *err) {
+    cs_state *s = calloc(1, sizeof *s);
+    int nc = model->cable_count, np = model->post_count, nn = model->max_nodes;
+    if (!s) goto oom;
+    s->cables = calloc((size_t)nc, sizeof *s->cables);
+    s->posts = calloc((size_t)(np ? np : 1), sizeof *s->posts);
+    s->events = calloc((size_t)model->event_capacity, sizeof *s->events);
+    s->speed_ring = calloc((size_t)model->window_steps + 1, sizeof *s->speed_ring);
+    if (!s->cables || !s->posts || !s->events || !s->speed_ring) goto oom;
+    s->cable_count_alloc = nc;
+    for (int c = 0; c < nc; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        cs->node = calloc((size_t)nn, sizeof *cs->node);
+        cs->where = calloc((size_t)(np ? np : 1), sizeof *cs->where);
+        cs->m = calloc((size_t)nn, sizeof *cs->m);
+        cs->m_commit = calloc((size_t)nn, sizeof *cs->m_commit);
+        cs->ep = calloc((size_t)nn, sizeof *cs->ep);
+        cs->tension = calloc((size_t)nn, sizeof *cs->tension);
+        cs->pos = calloc((size_t)nn * 3, sizeof *cs->pos);
+        if (!cs->node || !cs->where || !cs->m || !cs->m_commit || !cs->ep || !cs->tension || !cs->pos)
+            goto oom;
+    }
+    cs_state_reset(model, s);
+    return s;
+oom:
+    cs_state_free(s);
+    if (err) err->status = CS_ERR_MEMORY, strcpy(err->message, "out of memory allocating the state");
+    return NULL;
+}
+
+void cs_state_free(cs_state *s) {
+    if (!s) return;
+    if (s->cables) {
+        for (int c = 0; c < s->cable_count_alloc; c++) {
+            cs_cable_state *cs = &s->cables[c];
+            free(cs->node), free(cs->where), free(cs->m), free(cs->m_commit), free(cs->ep), free(cs->tension);
+            free(cs->pos);
+        }
+    }
+    free(s->cables), free(s->posts), free(s->events), free(s->speed_ring);
+    free(s);
+}
+
+/* A cable at t = 0: start anchor, every post, end anchor, straight at its height, rope laid in with
+ * the pretension (s = l / (1 + T0 / EA) on every span). */
+static void reset_cable(const cs_model *model, int c, cs_cable_state *cs) {
+    const cs_cable_model *cm = &model->cables[c];
+    cs->status = CS_CABLE_INTACT;
+    cs->engaged = 0;
+    cs->node_count = model->post_count + 2;
+    cs->node[0] = CS_NODE_START;
+    v3_set(cs->pos, model->anchors[0].x, 0.0, model->anchors[0].z);
+    for (int p = 0; p < model->post_count; p++) {
+        cs->node[p + 1] = p;
+        cs->where[p] = p + 1;
+        v3_set(cs->pos + 3 * (p + 1), model->posts[p].x, 0.0, cm->z);
+    }
+    int last = cs->node_count - 1;
+    cs->node[last] = CS_NODE_END;
+    v3_set(cs->pos + 3 * last, model->anchors[1].x, 0.0, model->anchors[1].z);
+    double stretch = 1.0 + cm->pretension / cm->rope.ea;
+    cs->m[0] = 0.0;
+    for (int i = 0; i < last; i++) {
+        cs->m[i + 1] = cs->m[i] + cs_span_length(cs, i) / stretch;
+        cs->ep[i] = 0.0;
+    }
+    memcpy(cs->m_commit, cs->m, (size_t)cs->node_count * sizeof *cs->m);
+    cs_cable_update_tensions(cm, cs);
+    cs->max_tension_seen = cm->pretension;
+    cs->max_strain = cm->pretension / cm->rope.ea;
+    cs->corner_z[0] = cs->corner_z[1] = 0.0;
+}
+
+void cs_state_reset(const cs_model *model, cs_state *s) {
+    s->t = 0.0;
+    s->step = 0;
+    s->outcome = CS_RUNNING;
+    s->frozen = 0;
+    v3_copy(s->pos, model->start_pos);
+    v3_scale(s->vel, model->dir, model->scenario.speed);
+    quat_from_yaw(s->quat, model->start_yaw);
+    v3_set(s->omega, 0.0, 0.0, 0.0);
+    v3_set(s->acc, 0.0, 0.0, 0.0);
+    v3_set(s->force, 0.0, 0.0, 0.0);
+    v3_set(s->moment, 0.0, 0.0, 0.0);
+    s->crush = s->crush_max = s->crush_committed = s->crush_force_committed = s->face_force = 0.0;
+    s->contact_started = 0;
+    for (int c = 0; c < model->cable_count; c++)
+        reset_cable(model, c, &s->cables[c]);
+    memset(s->posts, 0, (size_t)model->post_count * sizeof *s->posts);
+    s->anchor_failed[0] = s->anchor_failed[1] = 0;
+    s->e_cable_plastic = s->e_post_plastic = s->e_soil = s->e_crush = s->e_friction = s->e_released = 0.0;
+    s->event_count = 0;
+    s->ring_fill = 0;
+    s->decel_50ms_g = 0.0;
+    s->solver_residual = 0.0;
+    memset(&s->summary, 0, sizeof s->summary);
+    s->summary.first_contact_time = -1.0;
+    s->summary.stop_time = -1.0;
+    s->summary.exit_speed = -1.0;
+
+    s->e_initial_potential_ref = cs_vehicle_potential_energy(model, s);
+    s->e_initial_kinetic = cs_vehicle_kinetic_energy(model, s);
+    s->e_initial_total = 0.0;
+    cs_energy_update(model, s);
+    s->e_initial_total = cs_energy_total(&s->energy);
+    cs_energy_update(model, s);
+    s->summary.energy_balance_error = 0.0;
+    s->summary.initial_kinetic_energy = s->e_initial_kinetic;
+    s->summary.max_cable_tension = 0.0;
+}
+
+double cs_state_time(const cs_state *s) {
+    return s->t;
+}
+
+void cs_state_summary(const cs_state *s, cs_summary *out) {
+    *out = s->summary;
+}
+
+const char *cs_outcome_name(cs_outcome o) {
+    switch (o) {
+    case CS_RUNNING:
+        return "running";
+    case CS_STOPPED:
+        return "stopped";
+    case CS_BREAKTHROUGH:
+        return "breakthrough";
+    case CS_TIME_LIMIT:
+        return "time_limit";
+    }
+    return "unknown";
+}
+
+const char *cs_post_status_name(cs_post_status st) {
+    switch (st) {
+    case CS_POST_ELASTIC:
+        return "elastic";
+    case CS_POST_HINGED:
+        return "hinged";
+    case CS_POST_SOIL:
+        return "soil";
+    case CS_POST_FAILED_ROTATION:
+        return "failed_rotation";
+    case CS_POST_FAILED_SHEAR:
+        return "failed_shear";
+    case CS_POST_FAILED_PULLOUT:
+        return "failed_pullout";
+    }
+    return "unknown";
+}
+
+void cs_state_vehicle(const cs_model *model, const cs_state *s, cs_vehicle_view *out) {
+    const cs_vehicle_def *v = &model->vehicle.def;
+    memset(out, 0, sizeof *out);
+    out->t = s->t;
+    v3_copy(out->position, s->pos);
+    v3_copy(out->velocity, s->vel);
+    v3_copy(out->acceleration, s->acc);
+    v3_copy(out->angular_velocity, s->omega);
+    quat_to_euler(s->quat, &out->roll, &out->pitch, &out->yaw);
+    out->forward_speed = v3_dot(s->vel, model->dir);
+    out->decel_50ms_g = s->decel_50ms_g;
+    out->crush = s->crush;
+    out->face_force = s->face_force;
+    out->penetration = s->summary.max_dynamic_penetration;
+    v3_copy(out->barrier_force, s->force);
+    double zmid = 0.5 * (v->face_bottom + v->face_top) - v->cg_height;
+    for (int k = 0; k < 2; k++)
+        cs_vehicle_face_point(model, s, s->crush, (k == 0 ? 0.5 : -0.5) * v->front_width, zmid,
+                              out->front_corners[k]);
+}
+
+void cs_state_cable(const cs_model *model, const cs_state *s, int c, cs_cable_view *out) {
+    (void)model;
+    const cs_cable_state *cs = &s->cables[c];
+    out->status = cs->status;
+    out->engaged = cs->engaged;
+    out->node_count = cs->node_count;
+    out->max_tension = 0.0;
+    out->max_strain = 0.0;
+    if (cs->status != CS_CABLE_INTACT) return;
+    for (int i = 0; i + 1 < cs->node_count; i++) {
+        if (cs->tension[i] > out->max_tension) out->max_tension = cs->tension[i];
+        double sm = cs->m[i + 1] - cs->m[i];
+        double e = sm > 0.0 ? cs_span_length(cs, i) / sm - 1.0 : 0.0;
+        if (e > out->max_strain) out->max_strain = e;
+    }
+}
+
+int cs_state_cable_path(const cs_model *model, const cs_state *s, int c, double *xyz, double *tension,
+                        int capacity) {
+    (void)model;
+    const cs_cable_state *cs = &s->cables[c];
+    int n = cs->node_count < capacity ? cs->node_count : capacity;
+    for (int i = 0; i < n; i++) {
+        if (xyz) v3_copy(xyz + 3 * i, cs->pos + 3 * i);
+        if (tension && i + 1 < n) tension[i] = cs->status == CS_CABLE_INTACT ? cs->tension[i] : 0.0;
+    }
+    return n;
+}
+
+void cs_state_post(const cs_model *model, const cs_state *s, int p, cs_post_view *out) {
+    const cs_post_state *ps = &s->posts[p];
+    const cs_post_model *pm = &model->posts[p];
+    memset(out, 0, sizeof *out);
+    out->status = ps->status;
+    out->tilt = hypot(ps->tilt[0], ps->tilt[1]);
+    if (out->tilt > 0.0)
+        out->tilt_dir[0] = ps->tilt[0] / out->tilt, out->tilt_dir[1] = ps->tilt[1] / out->tilt;
+    out->base_moment = hypot(ps->moment[0], ps->moment[1]);
+    out->base_shear = ps->shear;
+    out->axial_pull = ps->axial;
+    out->moment_capacity = pm->moment_cap;
+    cs_post_attachment(model, p, ps->tilt, pm->height, out->top);
+}
+
+/* FNV-1a over the bytes of every number that evolves. */
+static void hash_bytes(unsigned long long *h, const void *data, size_t n) {
+    const unsigned char *b = data;
+    for (size_t i = 0; i < n; i++)
+        *h = (*h ^ b[i]) * 1099511628211ULL;
+}
+
+unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
+    unsigned long long h = 1469598103934665603ULL;
+    hash_bytes(&h, &s->t, sizeof s->t);
+    hash_bytes(&h, s->pos, sizeof s->pos);
+    hash_bytes(&h, s->vel, sizeof s->vel);
+    hash_bytes(&h, s->quat, sizeof s->quat);
+    hash_bytes(&h, s->omega, sizeof s->omega);
+    hash_bytes(&h, &s->crush, sizeof s->crush);
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        hash_bytes(&h, cs->node, (size_t)cs->node_count * sizeof *cs->node);
+        hash_bytes(&h, cs->m, (size_t)cs->node_count * sizeof *cs->m);
+        hash_bytes(&h, cs->pos, (size_t)cs->node_count * 3 * sizeof *cs->pos);
+    }
+    for (int p = 0; p < model->post_count; p++) {
+        hash_bytes(&h, s->posts[p].tilt, sizeof s->posts[p].tilt);
+        hash_bytes(&h, s->posts[p].plastic, sizeof s->posts[p].plastic);
+    }
+    hash_bytes(&h, &s->energy, sizeof s->energy);
+    return h;
+}

@@ -1,0 +1,131 @@
+/* The vehicle: a rigid body in 6 degrees of freedom on four tyres, with a crushable front face.
+ *
+ * Forces: gravity; each tyre a vertical spring-damper at its contact point (stiffness from the static
+ * axle load and a static deflection), with rolling resistance along the wheel's heading and regularised
+ * Coulomb friction across it, F = -mu N v / sqrt(v^2 + v_reg^2); the barrier's resultant force and
+ * moment from the last quasi-static solve. Integration is semi-implicit Euler: v += a dt, x += v dt,
+ * and Euler's equations in the body frame, I dw/dt = tau - w x I w, with the quaternion advanced by
+ * the exponential map.
+ *
+ * Crush: the front face sits cg_to_front - crush ahead of the CG. Loading follows the force-deformation
+ * curve (extrapolated with its last slope); below the largest crush reached the face unloads elastically
+ * with crush_unload_stiffness, so the permanent set stays. */
+#include "internal.h"
+#include "vec3.h"
+
+#include <math.h>
+
+#define CS_TYRE_VREG 0.05 /* m/s: slip speed over which tyre friction builds up to mu N */
+
+void cs_vehicle_body_to_world(const cs_state *s, const double *body, double *world) {
+    quat_rotate(world, s->quat, body);
+    v3_add(world, world, s->pos);
+}
+
+void cs_vehicle_face_point(const cs_model *model, const cs_state *s, double crush, double y_body,
+                           double z_body, double *world) {
+    double b[3] = {model->vehicle.def.cg_to_front - crush, y_body, z_body};
+    cs_vehicle_body_to_world(s, b, world);
+}
+
+double cs_crush_curve(const cs_vehicle_def *v, double d) {
+    int n = v->crush_point_count;
+    const double *x = v->crush_deformation, *f = v->crush_force;
+    if (d <= 0.0) return 0.0;
+    int i = 1;
+    while (i < n - 1 && d > x[i])
+        i++;
+    return f[i - 1] + (f[i] - f[i - 1]) * (d - x[i - 1]) / (x[i] - x[i - 1]);
+}
+
+double cs_crush_force(const cs_vehicle_def *v, double d, double dmax) {
+    if (d >= dmax) return cs_crush_curve(v, d);
+    double f = cs_crush_curve(v, dmax) - v->crush_unload_stiffness * (dmax - d);
+    return f > 0.0 ? f : 0.0;
+}
+
+double cs_crush_permanent(const cs_vehicle_def *v, double dmax) {
+    double p = dmax - cs_crush_curve(v, dmax) / v->crush_unload_stiffness;
+    return p > 0.0 ? p : 0.0;
+}
+
+/* Tyre contact force of wheel w (world) at its contact point; adds its dissipated power. */
+static void tyre_force(const cs_model *model, const cs_state *s, int w, double *f, double *point,
+                       double *power) {
+    const cs_vehicle_model *vm = &model->vehicle;
+    v3_set(f, 0.0, 0.0, 0.0);
+    cs_vehicle_body_to_world(s, vm->wheel[w], point);
+    double comp = vm->def.tyre_static_deflection - point[2];
+    if (comp <= 0.0) return;
+    double r[3], wv[3], v[3];
+    v3_sub(r, point, s->pos);
+    quat_rotate(wv, s->quat, s->omega);
+    v3_cross(v, wv, r);
+    v3_add(v, v, s->vel);
+    double n = vm->tyre_k[w] * comp - vm->tyre_c[w] * v[2];
+    if (n <= 0.0) return;
+    double fwd[3], body_x[3] = {1.0, 0.0, 0.0};
+    quat_rotate(fwd, s->quat, body_x);
+    fwd[2] = 0.0;
+    double fn = v3_norm(fwd);
+    if (fn < 1e-9) return; /* standing on its nose: no rolling direction */
+    v3_scale(fwd, fwd, 1.0 / fn);
+    double side[3] = {-fwd[1], fwd[0], 0.0};
+    double vf = v3_dot(v, fwd), vs = v3_dot(v, side);
+    double ff = -vm->def.rolling_resistance * n * vf / sqrt(vf * vf + CS_TYRE_VREG * CS_TYRE_VREG);
+    double fs = -vm->def.tyre_friction * n * vs / sqrt(vs * vs + CS_TYRE_VREG * CS_TYRE_VREG);
+    v3_set(f, ff * fwd[0] + fs * side[0], ff * fwd[1] + fs * side[1], n);
+    double damp = vm->tyre_c[w] * v[2];
+    *power += -(ff * vf + fs * vs) + (n < vm->tyre_k[w] * comp ? damp * v[2] : 0.0);
+}
+
+void cs_vehicle_integrate(const cs_model *model, cs_state *s) {
+    const cs_vehicle_model *vm = &model->vehicle;
+    double dt = model->scenario.dt, m = vm->def.mass;
+    double f[3], mo[3], power = 0.0;
+    v3_set(f, s->force[0], s->force[1], s->force[2] - m * model->scenario.gravity);
+    v3_copy(mo, s->moment);
+    for (int w = 0; w < 4; w++) {
+        double fw[3], p[3], r[3], t[3];
+        tyre_force(model, s, w, fw, p, &power);
+        v3_add(f, f, fw);
+        v3_sub(r, p, s->pos);
+        v3_cross(t, r, fw);
+        v3_add(mo, mo, t);
+    }
+    s->e_friction += power * dt;
+
+    v3_scale(s->acc, f, 1.0 / m);
+    v3_addto(s->vel, s->acc, dt);
+    v3_addto(s->pos, s->vel, dt);
+
+    double tb[3], iw[3], gyro[3];
+    quat_unrotate(tb, s->quat, mo);
+    for (int i = 0; i < 3; i++)
+        iw[i] = vm->def.inertia[i] * s->omega[i];
+    v3_cross(gyro, s->omega, iw);
+    for (int i = 0; i < 3; i++)
+        s->omega[i] += dt * vm->inv_inertia[i] * (tb[i] - gyro[i]);
+    quat_integrate(s->quat, s->omega, dt);
+}
+
+double cs_vehicle_kinetic_energy(const cs_model *model, const cs_state *s) {
+    const double *in = model->vehicle.def.inertia;
+    double e = 0.5 * model->vehicle.def.mass * v3_dot(s->vel, s->vel);
+    for (int i = 0; i < 3; i++)
+        e += 0.5 * in[i] * s->omega[i] * s->omega[i];
+    return e;
+}
+
+/* Gravity (from grade) plus the tyre springs, absolute; energy.c takes it relative to t = 0. */
+double cs_vehicle_potential_energy(const cs_model *model, const cs_state *s) {
+    const cs_vehicle_model *vm = &model->vehicle;
+    double e = vm->def.mass * model->scenario.gravity * s->pos[2];
+    for (int w = 0; w < 4; w++) {
+        double p[3];
+        cs_vehicle_body_to_world(s, vm->wheel[w], p);
+        double comp = vm->def.tyre_static_deflection - p[2];
+        if (comp > 0.0) e += 0.5 * vm->tyre_k[w] * comp * comp;
+    }
+    return e;
+}

@@ -1,0 +1,38 @@
+/* A full APS3-like crash (tests/fixture.h): the energy ledger balances, every response parameter is
+ * finite, and two runs hash to the same final state (determinism). */
+#include "check.h"
+#include "fixture.h"
+
+static unsigned long long run_aps3(cs_summary *out) {
+    fixture fx;
+    fixture_aps3(&fx);
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    cs_state *s = cs_state_create(m, &err);
+    assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
+    cs_state_summary(s, out);
+    unsigned long long h = cs_state_hash(m, s);
+    cs_state_free(s);
+    cs_model_free(m);
+    return h;
+}
+
+static void ledger_balances_and_run_is_deterministic(void **state) {
+    (void)state;
+    cs_summary a, b;
+    unsigned long long ha = run_aps3(&a), hb = run_aps3(&b);
+    assert_true(ha == hb);
+    assert_true(a.outcome != CS_RUNNING);
+    /* the largest imbalance over the whole run, as a fraction of the initial kinetic energy: 2% is
+     * the robustness bound of issue 7; the engine's 1% goal is not met yet (issue 2's note) */
+    assert_true(fabs(a.energy_balance_error) <= 0.02);
+    CHECK_REL(a.initial_kinetic_energy, 0.5 * 15000 * LB * pow(40 * MPH, 2), 1e-12);
+    assert_true(isfinite(a.max_decel_50ms_g) && isfinite(a.max_dynamic_penetration));
+    assert_true(a.first_contact_time > 0.0);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {cmocka_unit_test(ledger_balances_and_run_is_deterministic)};
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

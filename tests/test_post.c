@@ -1,0 +1,90 @@
+/* Posts: cantilever deflection in the elastic range (Eqs. 10-11), the onset of the plastic hinge at
+ * Mp = Zx Fy, and shear failure at 0.6 Aw Fy. One cable pulls post 0 toward +y over anchors set 1 m
+ * behind the barrier line. */
+#include "check.h"
+#include "fixture.h"
+#include "internal.h"
+#include "lay.h"
+
+typedef struct world {
+    fixture fx;
+    cs_model *model;
+    cs_state *state;
+} world;
+
+static world *make_world(double web_area) {
+    static world w;
+    fixture_aps3(&w.fx);
+    w.fx.barrier.cable_count = 1; /* one cable: the load height is its height */
+    if (web_area > 0.0) w.fx.posts[0].section.web_area = web_area;
+    cs_error err;
+    w.model = cs_model_create(&w.fx.barrier, &w.fx.vehicle, &w.fx.scenario, &err);
+    assert_non_null(w.model);
+    w.state = cs_state_create(w.model, &err);
+    return &w;
+}
+
+/* Pull post 0 with both spans at the given strain and solve its equilibrium. */
+static void pull(world *w, double strain) {
+    double x = w->model->posts[0].x, z = w->model->cables[0].z;
+    double a[3] = {x - 5.0, 1.0, z}, b[3] = {x, 0.0, z}, c[3] = {x + 5.0, 1.0, z};
+    lay_cable(w->state, a, b, c, strain, strain);
+    memset(&w->state->posts[0], 0, sizeof w->state->posts[0]);
+    cs_post_solve(w->model, w->state, 0, 1e-12);
+    cs_post_commit(w->model, w->state, 0);
+}
+
+static void cantilever_deflection(void **state) {
+    (void)state;
+    world *w = make_world(0.0);
+    pull(w, 2e-4);
+    const cs_cable_state *cs = &w->state->cables[0];
+    double f[3];
+    cs_node_force(cs, 1, f);
+    double z = w->model->cables[0].z, ei = w->fx.posts[0].section.modulus * w->fx.posts[0].section.inertia;
+    double deflection = cs->pos[4];                             /* y of the cable on the post */
+    CHECK_REL(deflection, f[1] * z * z * z / (3.0 * ei), 1e-3); /* Eq. 11 with L2 = 0 */
+    assert_int_equal(w->state->posts[0].status, CS_POST_ELASTIC);
+    cs_state_free(w->state);
+    cs_model_free(w->model);
+}
+
+static void plastic_hinge_at_mp(void **state) {
+    (void)state;
+    world *w = make_world(0.0);
+    double mp = w->fx.posts[0].section.plastic_modulus * w->fx.posts[0].section.yield_stress;
+    pull(w, 2e-4);
+    assert_true(hypot(w->state->posts[0].moment[0], w->state->posts[0].moment[1]) < mp);
+    pull(w, 3e-3);
+    assert_int_equal(w->state->posts[0].status, CS_POST_HINGED);
+    CHECK_REL(hypot(w->state->posts[0].moment[0], w->state->posts[0].moment[1]), mp, 1e-9);
+    const cs_event *e = cs_state_event(w->state, cs_state_event_count(w->state) - 1);
+    assert_int_equal(e->type, CS_EVENT_POST_HINGE);
+    cs_state_free(w->state);
+    cs_model_free(w->model);
+}
+
+static void shear_failure_onset(void **state) {
+    (void)state;
+    double fy = 50 * KSI, cap = 5000.0; /* a thin web: 5 kN of shear capacity */
+    world *w = make_world(cap / (0.6 * fy));
+    pull(w, 2e-4);
+    double v = w->state->posts[0].shear;
+    assert_true(v < cap);
+    assert_int_equal(cs_post_check_failure(w->model, w->state, 0), 0);
+    pull(w, 3e-3);
+    assert_true(w->state->posts[0].shear >= cap);
+    assert_int_equal(cs_post_check_failure(w->model, w->state, 0), 1);
+    assert_int_equal(w->state->posts[0].status, CS_POST_FAILED_SHEAR);
+    cs_state_free(w->state);
+    cs_model_free(w->model);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(cantilever_deflection),
+        cmocka_unit_test(plastic_hinge_at_mp),
+        cmocka_unit_test(shear_failure_onset),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

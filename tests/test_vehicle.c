@@ -1,0 +1,73 @@
+/* Vehicle: free rolling (speed kept, or lost at mu_r g) and settling on the tyres after a drop (static
+ * equilibrium at the design ride height). */
+#include "check.h"
+#include "fixture.h"
+#include "internal.h"
+#include "vec3.h"
+
+static double v3_norm_test(const double *v) {
+    return v3_norm(v);
+}
+
+static cs_model *model_for(fixture *fx) {
+    cs_error err;
+    cs_model *m = cs_model_create(&fx->barrier, &fx->vehicle, &fx->scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    return m;
+}
+
+static void run_until(const cs_model *m, cs_state *s, double t) {
+    cs_error err;
+    while (s->t < t - 1e-12 && s->outcome == CS_RUNNING)
+        assert_int_equal(cs_step(m, s, &err), CS_OK);
+}
+
+static void rolling_freely_keeps_its_speed(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    fx.scenario.impact_x = 1000.0; /* far past the end anchor: never touches a cable */
+    fx.vehicle.rolling_resistance = 0.0;
+    cs_model *m = model_for(&fx);
+    cs_state *s = cs_state_create(m, NULL);
+    run_until(m, s, 1.0);
+    CHECK_REL(v3_norm_test(s->vel), fx.scenario.speed, 1e-9);
+    CHECK_ABS(s->pos[2], fx.vehicle.cg_height, 1e-9);
+    cs_state_free(s);
+    cs_model_free(m);
+
+    fx.vehicle.rolling_resistance = 0.01; /* v(t) = v0 - mu_r g t */
+    m = model_for(&fx);
+    s = cs_state_create(m, NULL);
+    run_until(m, s, 1.0);
+    CHECK_REL(fx.scenario.speed - v3_norm_test(s->vel), 0.01 * fx.scenario.gravity * 1.0, 1e-3);
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
+static void dropped_vehicle_settles_on_its_tyres(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    fx.scenario.impact_x = 1000.0;
+    fx.scenario.speed = 0.0;
+    fx.scenario.t_end = 10.0;
+    cs_model *m = model_for(&fx);
+    cs_state *s = cs_state_create(m, NULL);
+    s->pos[2] += 0.3; /* dropped from 0.3 m above its ride height: the ledger starts from there */
+    cs_energy_update(m, s);
+    s->e_initial_total = cs_energy_total(&s->energy);
+    run_until(m, s, 6.0);
+    CHECK_ABS(s->pos[2], fx.vehicle.cg_height, 1e-3); /* every tyre back at its static deflection */
+    CHECK_ABS(s->vel[2], 0.0, 1e-3);
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(rolling_freely_keeps_its_speed),
+        cmocka_unit_test(dropped_vehicle_settles_on_its_tyres),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
