@@ -35,7 +35,6 @@ static int read_value(cs_loader *l, const cs_node *n, const cs_field *f, double 
         return -1;
     }
     const char *bad = NULL;
-    double deg = 180 / PI;
     if ((f->flags & CS_POS) && !(*out > 0))
         bad = "must be above zero";
     else if ((f->flags & CS_NONNEG) && *out < 0)
@@ -47,10 +46,7 @@ static int read_value(cs_loader *l, const cs_node *n, const cs_field *f, double 
     else if ((f->flags & CS_MAX180) && *out >= PI)
         bad = "must be below 180 deg";
     if (bad) {
-        if (f->q == CS_Q_ANGLE)
-            cs_err_node(l, n, 0, "'%s' (%.6g deg) %s (expected %s)", n->text, *out * deg, bad, hint);
-        else
-            cs_err_node(l, n, 0, "'%s' %s (expected %s)", n->text, bad, hint);
+        cs_err_node(l, n, 0, "'%s' %s (expected %s)", n->text, bad, hint);
         return -1;
     }
     return 0;
@@ -77,10 +73,17 @@ static int get_list(cs_loader *l, const cs_node *map, const char *key, double *o
     return ok ? n->count : -1;
 }
 
+/* Was key written in the file but dropped for its wrong shape (already reported)? */
+static int given_but_bad(const cs_loader *l, const cs_node *map, const char *key) {
+    char path[600];
+    snprintf(path, sizeof path, "%s%s%s", map->path, map->path[0] ? "." : "", key);
+    return map->source >= 0 && cs_yposmap_find(&l->files[map->source].map, path) != NULL;
+}
+
 static void check_required(cs_loader *l, const cs_node *map) {
     for (int i = 0; i < map->table->count; i++) {
         const cs_field *f = &map->table->fields[i];
-        if (!(f->flags & CS_REQ) || map->items[i]) continue;
+        if (!(f->flags & CS_REQ) || map->items[i] || given_but_bad(l, map, f->key)) continue;
         char hint[200];
         if (f->kind == CS_F_MAP || f->kind == CS_F_SEQ)
             snprintf(hint, sizeof hint, "%s %s", f->kind == CS_F_SEQ ? "a list of" : "a", f->sub->name);
@@ -208,7 +211,7 @@ int cs_convert_vehicle(cs_loader *l, const cs_node *v, cs_vehicle_def *out) {
                             keys[i]);
     }
     crush_curve(l, v, out);
-    if (l->error_count > before) return l->error_count - before;
+    if (l->error_count > before || cs_damaged(l, v)) return l->error_count - before;
     if (out->face_top <= out->face_bottom)
         cs_err_node(l, at(v, "face_top"), 0,
                     "the face top (%g m) is not above its bottom (%g m) (expected "
@@ -262,7 +265,7 @@ static void convert_cable(cs_loader *l, const cs_node *c, cs_cable_def *out) {
     const cs_node *name = cs_node_get(c, "rope");
     const cs_node *rope = name ? cs_find_part(l, name->source, "ropes", name->text, name) : NULL;
     if (rope && cs_convert_rope(l, rope, &out->rope, NULL) != 0) return;
-    if (fields(l, c, out, 1) != 0 || !rope) return;
+    if (fields(l, c, out, 1) != 0 || !rope || cs_damaged(l, c)) return;
     const cs_rope_def *r = &out->rope;
     double ea = r->area * r->modulus, fu = r->nominal_strength;
     double strain_fu = r->elastic_limit_ratio * fu / ea +
@@ -438,6 +441,7 @@ static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_de
                     "the impact point (%g m) is outside the barrier (expected between "
                     "the anchors, %g m to %g m)",
                     s->impact_x, b->start_anchor.x, b->end_anchor.x);
+    if (b) return; /* the rest was checked without the barrier */
     if (s->t_end <= s->dt)
         cs_err_node(l, at(sc, "t_end"), 0,
                     "the time limit %g s is not above the time step %g s (expected t_end > "
@@ -452,7 +456,7 @@ static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_de
 
 static const cs_node *need(cs_loader *l, const cs_node *root, const char *key, const char *hint) {
     const cs_node *n = cs_node_get(root, key);
-    if (!n) cs_err_node(l, root, 0, "missing '%s' (expected %s)", key, hint);
+    if (!n && !given_but_bad(l, root, key)) cs_err_node(l, root, 0, "missing '%s' (expected %s)", key, hint);
     return n;
 }
 
@@ -471,8 +475,8 @@ int cs_convert_model(cs_loader *l, const cs_node *root, const char *file, cs_mod
     l->scenario_node = scenario;
     if (vehicle) cs_convert_vehicle(l, vehicle, &out->vehicle);
     out->scenario = cs_default_scenario_def();
-    if (scenario && fields(l, scenario, &out->scenario, 1) == 0)
-        check_scenario(l, scenario, &out->scenario, NULL);
+    int scenario_ok = scenario && fields(l, scenario, &out->scenario, 1) == 0 && !cs_damaged(l, scenario);
+    if (scenario_ok) check_scenario(l, scenario, &out->scenario, NULL);
     if (!barrier) return l->error_count - before;
     int barrier_before = l->error_count;
     out->barrier = cs_default_barrier_def();
@@ -490,9 +494,10 @@ int cs_convert_model(cs_loader *l, const cs_node *root, const char *file, cs_mod
     out->barrier.cables = defs;
     out->barrier.cable_count = cables ? cables->count : 0;
     convert_posts(l, barrier, &out->barrier);
-    if (l->error_count == barrier_before) {
+    if (l->error_count == barrier_before && !cs_damaged(l, barrier)) {
         check_barrier(l, barrier, &out->barrier);
-        if (scenario && l->error_count == before) check_scenario(l, scenario, &out->scenario, &out->barrier);
+        if (scenario_ok && l->error_count == barrier_before)
+            check_scenario(l, scenario, &out->scenario, &out->barrier);
     }
     return l->error_count - before;
 }

@@ -133,7 +133,10 @@ void cs_field_hint(const cs_field *f, char *buf, size_t size) {
             snprintf(buf, size, "%s, e.g. %s", f->kind == CS_F_LIST ? "a list of numbers" : "a number",
                      q->example);
         else
-            snprintf(buf, size, "%s%s, e.g. \"%s\"%s", f->kind == CS_F_LIST ? "a list of values of " : "a ",
+            snprintf(buf, size, "%s%s, e.g. \"%s\"%s",
+                     f->kind == CS_F_LIST          ? "a list of values of "
+                     : strchr("aeiou", q->name[0]) ? "an "
+                                                   : "a ",
                      q->name, q->example, f->flags & CS_NONE_OK ? " or none" : "");
         break;
     case CS_F_INT:
@@ -423,7 +426,7 @@ int cs_loader_load(cs_loader *l, const char *path, cs_model_input *out) {
     cs_node *root = f >= 0 ? cs_resolve_model(l, f) : NULL;
     for (int k = 0; root && k < l->set_count; k++)
         apply_set(l, &root, k);
-    if (root && l->error_count == 0) cs_convert_model(l, root, l->files[f].name, out);
+    if (root) cs_convert_model(l, root, l->files[f].name, out);
     return l->error_count ? -1 : 0;
 }
 

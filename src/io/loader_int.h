@@ -68,6 +68,8 @@ void cs_field_hint(const cs_field *f, char *buf, size_t size);
 
 /* Read a file into the file table (once). Returns its index, or -1 (errors recorded at from). */
 int cs_file_load(cs_loader *l, const char *path, const cs_node *from);
+/* Does the node's subtree hold a key or value whose shape was reported wrong? */
+int cs_damaged(const cs_loader *l, const cs_node *n);
 /* The field of a mapping node by key (NULL if absent). */
 const cs_node *cs_node_get(const cs_node *map, const char *key);
 /* Split the next component off a path: 1 key, 2 [index], 0 end, -1 malformed. */

@@ -15,9 +15,9 @@ static int grow(cs_record *rec) {
     int cap = rec->capacity ? 2 * rec->capacity : 256;
     size_t nc = (size_t)rec->cable_count, np = (size_t)rec->post_count, nn = (size_t)rec->max_nodes;
     void *p;
-#define CS_GROW(field, count)                                                                          \
-    p = realloc(rec->field, (size_t)cap * (count) * sizeof *rec->field);                               \
-    if (!p) return -1;                                                                                 \
+#define CS_GROW(field, count)                                                                                \
+    p = realloc(rec->field, (size_t)cap * (count) * sizeof *rec->field);                                     \
+    if (!p) return -1;                                                                                       \
     rec->field = p;
     CS_GROW(vehicle, 1)
     CS_GROW(energy, 1)
@@ -44,8 +44,9 @@ void cs_record_frame(const cs_model *model, const cs_state *state, void *user) {
     for (int c = 0; c < rec->cable_count; c++) {
         size_t k = (size_t)f * (size_t)rec->cable_count + (size_t)c;
         cs_state_cable(model, state, c, &rec->cables[k]);
-        rec->path_count[k] = cs_state_cable_path(model, state, c, rec->path_xyz + k * (size_t)rec->max_nodes * 3,
-                                                 rec->path_tension + k * (size_t)rec->max_nodes, rec->max_nodes);
+        rec->path_count[k] =
+            cs_state_cable_path(model, state, c, rec->path_xyz + k * (size_t)rec->max_nodes * 3,
+                                rec->path_tension + k * (size_t)rec->max_nodes, rec->max_nodes);
     }
     for (int p = 0; p < rec->post_count; p++)
         cs_state_post(model, state, p, &rec->posts[(size_t)f * (size_t)rec->post_count + (size_t)p]);

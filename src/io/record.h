@@ -8,7 +8,7 @@
 typedef struct cs_record {
     int cable_count;
     int post_count;
-    int max_nodes;            /* path points kept per cable and frame */
+    int max_nodes; /* path points kept per cable and frame */
     int frame_count;
     int capacity;
     int failed;               /* an allocation failed; frames after it were dropped */

@@ -61,7 +61,9 @@ static void walk(const char *path, shape *out) {
     while ((rc = cs_path_next(&path, key, sizeof key, &index)) > 0) {
         if (rc == 1) {
             int i = t ? cs_table_find(t, key) : -1;
-            if (i < 0 || (out->item == 0 && out->field && out->field->kind == CS_F_SEQ)) {
+            if (out->item == 0 && out->field && out->field->kind == CS_F_SEQ)
+                i = -1, t = NULL; /* under a bad list */
+            if (i < 0) {
                 out->known = 0;
                 if (*path == '\0' && t) snprintf(out->bad_key, sizeof out->bad_key, "%s", key);
                 return;
@@ -137,9 +139,10 @@ static void table_keys(const cs_table *t, char *buf, size_t size) {
 
 /* Check every node's key and shape; report each problem at its place. */
 static void check_shape(cs_loader *l, int file, skips *sk) {
-    const cs_yposmap *map = &l->files[file].map;
+    cs_yposmap *map = &l->files[file].map;
     for (int i = 0; i < map->count; i++) {
-        const cs_ypos *e = &map->items[i];
+        cs_ypos *e = &map->items[i];
+        int before = l->error_count;
         shape s;
         walk(e->path, &s);
         char want[200];
@@ -161,11 +164,21 @@ static void check_shape(cs_loader *l, int file, skips *sk) {
             if (sk->count < 64) snprintf(sk->path[sk->count++], 256, "%s", s.skey);
         } else if (s.known && e->duplicate) {
             const cs_ypos *first = cs_yposmap_find(map, e->path);
-            cs_err_at(l, file, e->key_line, e->key_col, "%s: given twice (first at line %d)", e->path,
-                      first->key_line);
+            cs_err_at(l, file, e->key_line, e->key_col, "%s: given twice (first at %d:%d)", e->path,
+                      first->key_line, first->key_col);
             if (sk->count < 64) snprintf(sk->path[sk->count++], 256, "%s", s.skey);
         }
+        e->bad = l->error_count > before;
     }
+}
+
+int cs_damaged(const cs_loader *l, const cs_node *n) {
+    if (n->source < 0) return 0;
+    const cs_yposmap *map = &l->files[n->source].map;
+    size_t len = strlen(n->path);
+    for (int i = 0; i < map->count; i++)
+        if (map->items[i].bad && strncmp(map->items[i].path, n->path, len) == 0) return 1;
+    return 0;
 }
 
 /* ---- the libcyaml schema of a file ---- */
@@ -342,14 +355,15 @@ static int read_file(cs_loader *l, int file) {
     }
     lf->root = map_node(l, &cs_table_model, data, file, "", "", 0);
     cyaml_free(&config, &top, data, 0);
-    return lf->root && l->error_count == before ? 0 : -1;
+    return lf->root ? 0 : -1; /* shape errors are recorded; the rest is still checked */
 }
 
 int cs_file_load(cs_loader *l, const char *path, const cs_node *from) {
     char real[PATH_MAX];
     if (!realpath(path, real)) {
         if (from)
-            cs_err_node(l, from, 0, "cannot open '%s' (expected a readable YAML file)", path);
+            cs_err_node(l, from, 0, "cannot open '%s' (expected a readable YAML file)",
+                        from->kind == CS_Y_SCALAR ? from->text : path);
         else
             cs_err_at(l, INT_MIN, 0, 0, "%s: cannot open the file (expected a readable YAML file)", path);
         return -1;

@@ -27,8 +27,8 @@ static int add(cs_yposmap *map, char *path, cs_ykind kind, yaml_mark_t at, yaml_
     }
     int duplicate = cs_yposmap_find(map, path) != NULL;
     map->items[map->count++] = (cs_ypos){
-        path,     kind, (int)at.line + 1, (int)at.column + 1, (int)key_at.line + 1, (int)key_at.column + 1,
-        duplicate};
+        path,      kind, (int)at.line + 1, (int)at.column + 1, (int)key_at.line + 1, (int)key_at.column + 1,
+        duplicate, 0};
     return 0;
 }
 

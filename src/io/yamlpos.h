@@ -12,6 +12,7 @@ typedef struct cs_ypos {
     int line, col;         /* of the value, 1-based */
     int key_line, key_col; /* of its key in the parent mapping (= line, col for sequence items) */
     int duplicate;         /* the key occurs earlier in the same mapping */
+    int bad;               /* its key or shape was reported wrong */
 } cs_ypos;
 
 typedef struct cs_yposmap {
