@@ -77,7 +77,8 @@ static void add_error(cs_loader *l, int source, int line, int col, const char *f
     if (source >= 0 && source < l->file_count)
         snprintf(where, sizeof where, "%s:%d:%d: ", l->files[source].name, line, col);
     else if (source < 0 && source != INT_MIN && -1 - source < l->set_count)
-        snprintf(where, sizeof where, "--set %s=%s: ", l->sets[-1 - source].path, l->sets[-1 - source].value);
+        snprintf(where, sizeof where, "--set %s%s%s: ", l->sets[-1 - source].path,
+                 l->sets[-1 - source].bad ? "" : "=", l->sets[-1 - source].value);
     if (l->error_count == l->error_capacity) {
         int cap = l->error_capacity ? 2 * l->error_capacity : 16;
         cs_lerror *p = realloc(l->errors, (size_t)cap * sizeof *p);
@@ -353,8 +354,9 @@ int cs_loader_set(cs_loader *l, const char *assignment) {
     }
     memcpy(s->path, assignment, n);
     s->path[n] = '\0';
+    s->bad = !eq || n == 0;
     l->set_count++;
-    if (!eq || n == 0) {
+    if (s->bad) {
         cs_err_at(l, -l->set_count, 0, 0, "expected PATH=VALUE, e.g. scenario.speed=\"35 mph\"");
         return -1;
     }
@@ -425,7 +427,7 @@ int cs_loader_load(cs_loader *l, const char *path, cs_model_input *out) {
     int f = cs_file_load(l, path, NULL);
     cs_node *root = f >= 0 ? cs_resolve_model(l, f) : NULL;
     for (int k = 0; root && k < l->set_count; k++)
-        apply_set(l, &root, k);
+        if (!l->sets[k].bad) apply_set(l, &root, k);
     if (root) cs_convert_model(l, root, l->files[f].name, out);
     return l->error_count ? -1 : 0;
 }

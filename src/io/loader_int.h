@@ -35,6 +35,7 @@ typedef struct cs_lerror {
 
 typedef struct cs_lset {
     char *path, *value;
+    int bad; /* not PATH=VALUE */
 } cs_lset;
 
 struct cs_loader {

@@ -1,0 +1,290 @@
+/* The loader: the examples and every library part load with the documented values; --set, file and
+ * part references; every problem reported with its place; two loaders in two threads. */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <pthread.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "loader.h"
+
+static const double PI = 3.14159265358979323846, FT = 0.3048, IN = 0.0254, LB = 0.45359237,
+                    LBF = 0.45359237 * 9.80665;
+
+static void close_to(double got, double want) {
+    if (!(fabs(got - want) <= 1e-9 * fabs(want) + 1e-12)) fail_msg("got %.17g, want %.17g", got, want);
+}
+
+static cs_loader *new_loader(void) {
+    char why[256];
+    cs_loader *l = cs_loader_create(CS_SOURCE_DIR "/data", why, sizeof why);
+    if (!l) fail_msg("%s", why);
+    return l;
+}
+
+/* Load a model (and build it with the engine); fail with the loader's messages. */
+static cs_loader *load(const char *file, cs_model_input *in, const char *const *sets) {
+    cs_loader *l = new_loader();
+    for (int i = 0; sets && sets[i]; i++)
+        cs_loader_set(l, sets[i]);
+    cs_model *m = NULL;
+    if (cs_loader_load(l, file, in) != 0 || !(m = cs_loader_build(l, in))) {
+        cs_loader_print_errors(l, stderr);
+        fail_msg("%s did not load", file);
+    }
+    cs_model_free(m);
+    return l;
+}
+
+static void test_aps3(void **state) {
+    (void)state;
+    cs_model_input in;
+    cs_loader *l = load(CS_SOURCE_DIR "/examples/aps3.yaml", &in, NULL);
+    const cs_barrier_def *b = &in.barrier;
+    assert_string_equal(in.name, "aps3");
+    assert_int_equal(b->cable_count, 2);
+    assert_int_equal(b->post_count, 16);
+    for (int p = 0; p < 16; p++)
+        close_to(b->posts[p].x, 8 * (p + 1) * FT);
+    close_to(b->posts[6].x, 56 * FT); /* intermediate anchor posts at 56 and 80 ft */
+    close_to(b->posts[6].section.plastic_modulus, 2.631 * pow(IN, 3));
+    close_to(b->posts[9].footing.diameter, 3 * FT);
+    close_to(b->posts[9].footing.depth, 5 * FT);
+    close_to(b->posts[9].footing.pullout_capacity, 50000 * LBF);
+    close_to(b->posts[0].section.plastic_modulus, 1.287 * pow(IN, 3));
+    close_to(b->posts[0].section.yield_stress, 50e3 * LBF / (IN * IN));
+    close_to(b->posts[0].footing.diameter, 9 * IN);
+    close_to(b->posts[0].footing.soil_pressure, 8000 * LBF / (FT * FT));
+    close_to(b->posts[0].footing.coeff_depth, 2.37);
+    close_to(b->posts[0].rotation_limit, PI / 4);
+    assert_int_equal(b->posts[0].attachment, CS_ATTACH_THROUGH);
+    close_to(b->posts[0].height, 7 * FT);
+    close_to(b->cables[0].height, 2.83 * FT);
+    close_to(b->cables[1].height, 4 * FT);
+    close_to(b->cables[0].rope.area, 0.471 * 1.75 * 1.75 * IN * IN); /* the d^2 rule */
+    close_to(b->cables[0].rope.nominal_strength, 91.4e3 * 1.75 * 1.75 * LBF);
+    close_to(b->cables[0].rope.modulus, 20e6 * LBF / (IN * IN));
+    close_to(b->cables[0].pretension, 5000 * LBF);
+    close_to(b->cables[0].post_friction, 0.15);
+    close_to(b->start_anchor.x, 0);
+    close_to(b->end_anchor.x, 136 * FT);
+    assert_true(isinf(b->end_anchor.pullout_capacity));
+    close_to(in.scenario.speed, 17.8816);
+    close_to(in.scenario.angle, PI / 2);
+    close_to(in.scenario.impact_x, 68 * FT);
+    close_to(in.scenario.dt, 0.5e-3);
+    close_to(in.scenario.t_end, 3);
+    close_to(in.vehicle.mass, 15000 * LB);
+    cs_loader_free(l);
+}
+
+static void test_aps1_aps4_layouts(void **state) {
+    (void)state;
+    cs_model_input in;
+    cs_loader *l = load(CS_SOURCE_DIR "/examples/aps1.yaml", &in, NULL);
+    assert_int_equal(in.barrier.post_count, 19);
+    for (int k = 0; k < 19; k++) {
+        close_to(in.barrier.posts[k].x, (4 + 8 * k) * FT);
+        int anchor = k % 6 == 0;
+        close_to(in.barrier.posts[k].footing.diameter, anchor ? 8 * FT : 18 * IN);
+    }
+    close_to(in.barrier.end_anchor.x, 152 * FT);
+    close_to(in.barrier.cables[0].rope.area, 0.471 * 1.5 * 1.5 * IN * IN);
+    close_to(in.scenario.impact_x, 72 * FT);
+    cs_loader_free(l);
+    l = load(CS_SOURCE_DIR "/examples/aps4.yaml", &in, NULL);
+    assert_int_equal(in.barrier.post_count, 19);
+    for (int k = 0; k < 19; k++) {
+        close_to(in.barrier.posts[k].x, (7.635 + 8.17 * k) * FT);
+        int anchor = k % 4 == 3;
+        close_to(in.barrier.posts[k].footing.depth, anchor ? 6 * FT : 3 * FT);
+    }
+    close_to(in.barrier.cables[1].rope.nominal_strength, 91.4e3 * 1.1 * 1.1 * LBF);
+    cs_loader_free(l);
+}
+
+static void test_library_parts(void **state) {
+    (void)state;
+    cs_loader *l = new_loader();
+    int total = 0;
+    for (int k = 0; k < CS_PART_KIND_COUNT; k++) {
+        const char **names, **docs;
+        int n = cs_loader_library(l, (cs_part_kind)k, &names, &docs);
+        assert_true(n > 0);
+        for (int i = 0; i < n; i++, total++) {
+            union {
+                cs_vehicle_def v;
+                cs_rope_def r;
+                cs_section_def s;
+            } d;
+            if (cs_loader_part(l, (cs_part_kind)k, names[i], &d) != 0) {
+                cs_loader_print_errors(l, stderr);
+                fail_msg("part %s", names[i]);
+            }
+            assert_true(strlen(docs[i]) > 0);
+        }
+    }
+    assert_int_equal(total, 5 + 6 + 4);
+    cs_vehicle_def m;
+    assert_int_equal(cs_loader_part(l, CS_PART_VEHICLE, "SD-STD-02.01", &m), 0);
+    double mass = 15000 * LB, v = 39.25 * 0.44704, fmax = 0.5 * mass * v * v / 0.6;
+    close_to(m.mass, mass);
+    close_to(m.inertia[0], mass * (2.4 * 2.4 + 2.5 * 2.5) / 12);
+    close_to(m.inertia[1], mass * (7.5 * 7.5 + 2.5 * 2.5) / 12);
+    close_to(m.inertia[2], mass * (7.5 * 7.5 + 2.4 * 2.4) / 12);
+    assert_int_equal(m.crush_point_count, 6);
+    close_to(m.crush_force[4], fmax); /* 1.7456 MN */
+    close_to(m.crush_force[5], 3 * fmax);
+    close_to(m.crush_deformation[5], 1.0);
+    close_to(m.crush_unload_stiffness, 2e7);
+    cs_rope_def r;
+    assert_int_equal(cs_loader_part(l, CS_PART_ROPE, "A603-0.75in", &r), 0);
+    close_to(r.nominal_strength, 52000 * LBF);
+    close_to(r.mass_per_length, 0.95 * LB / FT);
+    assert_int_equal(cs_loader_part(l, CS_PART_ROPE, "no-such-rope", &r), -1);
+    assert_non_null(strstr(cs_loader_error(l, 0), "no rope part named 'no-such-rope'"));
+    cs_loader_free(l);
+}
+
+static void test_set(void **state) {
+    (void)state;
+    static const char *const sets[] = {"scenario.speed=35 mph",
+                                       "barrier.cables[0].pretension=8 kip",
+                                       "barrier.posts[0].footing.depth=4 ft",
+                                       "barrier.posts[1].x[0]=32 ft",
+                                       "scenario.dt=0.2 ms",
+                                       "vehicle.mass=16000 lb",
+                                       "barrier.soil.coeff_depth=2.34",
+                                       NULL};
+    cs_model_input in;
+    cs_loader *l = load(CS_SOURCE_DIR "/tests/good/base.yaml", &in, sets);
+    close_to(in.scenario.speed, 35 * 0.44704);
+    close_to(in.barrier.cables[0].pretension, 8000 * LBF);
+    close_to(in.barrier.cables[1].pretension, 5000 * LBF);
+    close_to(in.barrier.posts[0].footing.depth, 4 * FT);
+    close_to(in.barrier.posts[3].footing.depth, 5 * FT); /* the anchor post at 32 ft */
+    close_to(in.barrier.posts[0].footing.coeff_depth, 2.34);
+    close_to(in.scenario.dt, 0.2e-3);
+    close_to(in.vehicle.mass, 16000 * LB);
+    cs_loader_free(l);
+    static const char *const swap[] = {"vehicle=H", NULL};
+    l = load(CS_SOURCE_DIR "/tests/good/base.yaml", &in, swap);
+    close_to(in.vehicle.mass, 65000 * LB);
+    cs_loader_free(l);
+}
+
+static void expect_problems(const char *file, const char *const *sets, const char *const *want) {
+    cs_loader *l = new_loader();
+    for (int i = 0; sets && sets[i]; i++)
+        cs_loader_set(l, sets[i]);
+    cs_model_input in;
+    assert_int_equal(cs_loader_load(l, file, &in), -1);
+    int n = 0;
+    while (want[n])
+        n++;
+    if (cs_loader_error_count(l) != n) {
+        cs_loader_print_errors(l, stderr);
+        fail_msg("%d problems, %d expected", cs_loader_error_count(l), n);
+    }
+    for (int i = 0; i < n; i++)
+        if (strncmp(cs_loader_error(l, i), want[i], strlen(want[i])) != 0)
+            fail_msg("problem %d: '%s', expected '%s...'", i, cs_loader_error(l, i), want[i]);
+    cs_loader_free(l);
+}
+
+static void test_set_errors(void **state) {
+    (void)state;
+    static const char *const sets[] = {"scenario.sped=35 mph",
+                                       "barrier.cables[5].height=1 m",
+                                       "barrier.posts=3",
+                                       "scenario.speed=35 kg",
+                                       "no equals sign",
+                                       "barrier..x=1",
+                                       NULL};
+    static const char *const want[] = {
+        "--set scenario.sped=35 mph: unknown key 'sped' in scenario",
+        "--set barrier.cables[5].height=1 m: no entry [5] (expected an index below 2)",
+        "--set barrier.posts=3: 'posts' is not a single value",
+        "--set scenario.speed=35 kg: 'kg' is a unit of mass, not of speed",
+        "--set no equals sign: expected PATH=VALUE",
+        "--set barrier..x=1: malformed path",
+        NULL};
+    expect_problems(CS_SOURCE_DIR "/tests/good/base.yaml", sets, want);
+}
+
+static void test_references(void **state) {
+    (void)state;
+    cs_model_input in;
+    cs_loader *l = load(CS_SOURCE_DIR "/tests/good/split.yaml", &in, NULL);
+    assert_string_equal(in.name, "split");
+    close_to(in.vehicle.mass, 16000 * LB);      /* heavy-M: M with its own mass */
+    close_to(in.vehicle.cg_height, 1.0);        /* ... and the rest of M */
+    close_to(in.scenario.speed, 30 * 0.44704);  /* replaced beside file: */
+    close_to(in.scenario.impact_x, 28 * FT);    /* from base.yaml */
+    assert_int_equal(in.barrier.post_count, 7); /* from base.yaml */
+    close_to(in.barrier.end_anchor.pullout_capacity, 100000 * LBF);
+    assert_int_equal(in.barrier.posts[3].attachment, CS_ATTACH_CLAMPED);
+    cs_loader_free(l);
+    static const char *const thin[] = {"barrier.cables[0].rope=thin", NULL};
+    l = load(CS_SOURCE_DIR "/tests/good/split.yaml", &in, thin);
+    close_to(in.barrier.cables[0].rope.area, 0.471 * 0.25 * IN * IN); /* a rope of this file, scaled */
+    close_to(in.barrier.cables[0].rope.breaking_strain, 0.04);
+    cs_loader_free(l);
+}
+
+static void test_every_problem_reported(void **state) {
+    (void)state;
+    static const char *const want[] = {
+        CS_SOURCE_DIR "/tests/bad/many_errors.yaml:5:57: barrier.cables[0]: unknown key 'colour'",
+        CS_SOURCE_DIR "/tests/bad/many_errors.yaml:6:7: barrier.cables[1]: missing 'height'",
+        CS_SOURCE_DIR
+        "/tests/bad/many_errors.yaml:6:36: barrier.cables[1].pretension: 'kg' is a unit of mass",
+        CS_SOURCE_DIR "/tests/bad/many_errors.yaml:8:29: barrier.posts[0].spacing: '0 ft' must be above zero",
+        CS_SOURCE_DIR "/tests/bad/many_errors.yaml:12:26: vehicle.mass: '-1 lb' must be above zero",
+        CS_SOURCE_DIR "/tests/bad/many_errors.yaml:13:19: scenario.speed: 'kg' is a unit of mass",
+        CS_SOURCE_DIR "/tests/bad/many_errors.yaml:13:47: scenario.dt: 'fast' is not a number",
+        NULL};
+    expect_problems(CS_SOURCE_DIR "/tests/bad/many_errors.yaml", NULL, want);
+}
+
+/* Two loaders, each with its own units and files, at once. */
+static void *load_aps3(void *arg) {
+    cs_model_input in;
+    char why[256];
+    cs_loader *l = cs_loader_create(CS_SOURCE_DIR "/data", why, sizeof why);
+    *(double *)arg =
+        l && cs_loader_load(l, CS_SOURCE_DIR "/examples/aps3.yaml", &in) == 0 ? in.barrier.posts[15].x : -1;
+    cs_loader_free(l);
+    return NULL;
+}
+
+static void test_two_threads(void **state) {
+    (void)state;
+    pthread_t t[2];
+    double x[2];
+    for (int i = 0; i < 2; i++)
+        assert_int_equal(pthread_create(&t[i], NULL, load_aps3, &x[i]), 0);
+    for (int i = 0; i < 2; i++)
+        pthread_join(t[i], NULL);
+    for (int i = 0; i < 2; i++)
+        close_to(x[i], 128 * FT);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_aps3),
+        cmocka_unit_test(test_aps1_aps4_layouts),
+        cmocka_unit_test(test_library_parts),
+        cmocka_unit_test(test_set),
+        cmocka_unit_test(test_set_errors),
+        cmocka_unit_test(test_references),
+        cmocka_unit_test(test_every_problem_reported),
+        cmocka_unit_test(test_two_threads),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,126 @@
+/* Units: exact conversion factors, the field's aliases, wrong dimensions, and two unit systems used
+ * from two threads at once. */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <pthread.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "units.h"
+
+static double read_ok(cs_units *u, const char *text, cs_quantity q) {
+    double v = NAN;
+    char why[256] = "";
+    int rc = cs_units_read(u, text, q, &v, why, sizeof why);
+    if (rc != 0) fail_msg("'%s': %s", text, why);
+    return v;
+}
+
+static void close_to(double got, double want) {
+    if (!(fabs(got - want) <= 1e-12 * fabs(want))) fail_msg("got %.17g, want %.17g", got, want);
+}
+
+static int setup(void **state) {
+    char why[256];
+    *state = cs_units_create(why, sizeof why);
+    return *state ? 0 : -1;
+}
+
+static int teardown(void **state) {
+    cs_units_free(*state);
+    return 0;
+}
+
+/* Exact factors: 1 ft = 0.3048 m, 1 lb = 0.45359237 kg, g0 = 9.80665 m/s^2, lbf = lb g0. */
+static void test_exact_factors(void **state) {
+    cs_units *u = *state;
+    const double lbf = 0.45359237 * 9.80665, ft = 0.3048, in = 0.0254;
+    close_to(read_ok(u, "40 mph", CS_Q_SPEED), 17.8816);                     /* 40 * 1609.344 / 3600 */
+    close_to(read_ok(u, "8000 psf", CS_Q_PRESSURE), 8000 * lbf / (ft * ft)); /* 383042.0718... */
+    close_to(read_ok(u, "8000 psf", CS_Q_PRESSURE), 383042.07184268673);
+    close_to(read_ok(u, "52 kip", CS_Q_FORCE), 52000 * lbf);
+    close_to(read_ok(u, "20000 ksi", CS_Q_PRESSURE), 20e6 * lbf / (in * in));
+    close_to(read_ok(u, "15000 lb", CS_Q_MASS), 6803.88555);
+    close_to(read_ok(u, "1.75 in", CS_Q_LENGTH), 0.04445);
+    close_to(read_ok(u, "8 ft", CS_Q_LENGTH), 2.4384);
+    close_to(read_ok(u, "0.5 ms", CS_Q_TIME), 5e-4);
+    close_to(read_ok(u, "45 deg", CS_Q_ANGLE), 0.78539816339744831);
+    close_to(read_ok(u, "0.471 in2", CS_Q_AREA), 0.471 * in * in);
+    close_to(read_ok(u, "1.67 lb/ft", CS_Q_MASS_PER_LENGTH), 1.67 * 0.45359237 / ft);
+    close_to(read_ok(u, "20 MN/m", CS_Q_STIFFNESS), 2e7);
+    close_to(read_ok(u, "2.192 in4", CS_Q_SECOND_MOMENT), 2.192 * pow(in, 4));
+    close_to(read_ok(u, "1.287 in3", CS_Q_SECTION_MODULUS), 1.287 * pow(in, 3));
+    close_to(read_ok(u, "1 g", CS_Q_ACCELERATION), 9.80665);
+    close_to(read_ok(u, "1 lbf", CS_Q_FORCE), lbf);
+    close_to(read_ok(u, "60 km/h", CS_Q_SPEED), 60 / 3.6);
+}
+
+static void test_bare_numbers_are_si(void **state) {
+    cs_units *u = *state;
+    close_to(read_ok(u, "17.8816", CS_Q_SPEED), 17.8816);
+    close_to(read_ok(u, "  0.15 ", CS_Q_NUMBER), 0.15);
+    close_to(read_ok(u, "1.5708", CS_Q_ANGLE), 1.5708);
+    close_to(read_ok(u, "1.75in", CS_Q_LENGTH), 0.04445);
+    close_to(read_ok(u, "-5 kip", CS_Q_FORCE), -5000 * 0.45359237 * 9.80665);
+}
+
+static void expect_error(cs_units *u, const char *text, cs_quantity q, const char *part) {
+    double v;
+    char why[256] = "";
+    assert_int_equal(cs_units_read(u, text, q, &v, why, sizeof why), -1);
+    if (!strstr(why, part)) fail_msg("'%s': message '%s' lacks '%s'", text, why, part);
+}
+
+static void test_wrong_units(void **state) {
+    cs_units *u = *state;
+    expect_error(u, "40 kg", CS_Q_SPEED, "'kg' is a unit of mass, not of speed");
+    expect_error(u, "15000 lb", CS_Q_FORCE, "'lb' is a unit of mass, not of force");
+    expect_error(u, "1 lbf", CS_Q_MASS, "'lbf' is a unit of force, not of mass");
+    expect_error(u, "3 furlongz", CS_Q_LENGTH, "unknown unit 'furlongz'");
+    expect_error(u, "fast", CS_Q_TIME, "'fast' is not a number");
+    expect_error(u, "", CS_Q_TIME, "is not a number");
+    expect_error(u, "1 g", CS_Q_FORCE, "'g' is a unit of mass"); /* gram, unless an acceleration */
+    expect_error(u, "0.3 m", CS_Q_NUMBER, "'m' is a unit of length, not of number");
+    expect_error(u, "nan", CS_Q_LENGTH, "is not a number");
+    expect_error(u, "1e400 m", CS_Q_LENGTH, "is not a number");
+}
+
+/* Each thread has its own unit system; both read at once. */
+static void *convert_many(void *arg) {
+    char why[256];
+    cs_units *u = cs_units_create(why, sizeof why);
+    double sum = 0, v;
+    for (int i = 0; u && i < 300; i++)
+        if (cs_units_read(u, (i & 1) ? "40 mph" : "8 ft", (i & 1) ? CS_Q_SPEED : CS_Q_LENGTH, &v, why,
+                          sizeof why) == 0)
+            sum += v;
+    cs_units_free(u);
+    *(double *)arg = sum;
+    return NULL;
+}
+
+static void test_two_threads(void **state) {
+    (void)state;
+    pthread_t t[2];
+    double sums[2] = {0, 0};
+    for (int i = 0; i < 2; i++)
+        assert_int_equal(pthread_create(&t[i], NULL, convert_many, &sums[i]), 0);
+    for (int i = 0; i < 2; i++)
+        pthread_join(t[i], NULL);
+    for (int i = 0; i < 2; i++)
+        close_to(sums[i], 150 * 17.8816 + 150 * 2.4384);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_exact_factors),
+        cmocka_unit_test(test_bare_numbers_are_si),
+        cmocka_unit_test(test_wrong_units),
+        cmocka_unit_test(test_two_threads),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}
