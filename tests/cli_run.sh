@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# The command end to end: help, version, list, check, a short run of examples/aps3.yaml and its outputs,
+# --set on the command line, and that a refused model writes nothing.
+set -u
+cs=${1:?usage: bash tests/cli_run.sh path/to/cablesim}
+pass=0
+fail=0
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+ok() { pass=$((pass + 1)); }
+bad() { echo "FAIL: $*"; fail=$((fail + 1)); }
+check() { if eval "$2"; then ok; else bad "$1"; fi; }
+
+check "--help" '"$cs" --help | grep -q "usage: cablesim run FILE"'
+check "--version" '"$cs" --version | grep -q "^cablesim [0-9]"'
+"$cs" frobnicate >/dev/null 2>&1
+check "unknown command is status 2" '[ $? -eq 2 ]'
+"$cs" run >/dev/null 2>&1
+check "run without a file is status 2" '[ $? -eq 2 ]'
+check "list names the parts" '"$cs" list | grep -q "^  M " && "$cs" list | grep -q "A603-1.75in" && "$cs" list | grep -q "HSS4x4x1/8"'
+for f in examples/*.yaml; do
+    check "check $f" '"$cs" check "$f" >/dev/null'
+done
+check "check --set" '"$cs" check examples/aps3.yaml --set scenario.speed="35 mph" --set "barrier.cables[0].pretension=8 kip" >/dev/null'
+
+out="$tmp/aps3"
+"$cs" run examples/aps3.yaml -o "$out" --t-end "20 ms" --set scenario.speed="35 mph" >"$tmp/stdout" 2>"$tmp/stderr"
+check "run exits 0" '[ $? -eq 0 ] || { cat "$tmp/stderr"; false; }'
+check "run prints a summary in SI and US units" 'grep -q "mph" "$tmp/stdout" && grep -q "kip" "$tmp/stdout" && grep -q " ft)" "$tmp/stdout"'
+for f in timeseries.csv events.csv summary.json; do
+    check "$f written" '[ -s "$out/$f" ]'
+done
+check "no temporaries left" '[ -z "$(ls "$out" | grep "\.tmp$")" ]'
+check "timeseries header has units" 'head -1 "$out/timeseries.csv" | grep -q "^t_s,x_m,y_m,z_m,vx_mps,.*decel_50ms_g.*cable0_max_tension_n.*post0_state.*energy_balance_error$"'
+check "timeseries has rows" '[ "$(wc -l <"$out/timeseries.csv")" -gt 10 ]'
+check "events header" 'head -1 "$out/events.csv" | grep -q "^t_s,type,element_kind,element,value_si$"'
+for key in max_50ms_decel_g max_dynamic_penetration_m max_barrier_deflection_m stopped stop_time_s exit_speed_mps \
+    posts_failed_left posts_failed_right initial_kinetic_energy_j energy_balance_error events inputs; do
+    check "summary.json has $key" 'grep -q "\"$key\":" "$out/summary.json"'
+done
+check "--set reached the run" 'grep -q "\"speed\":15.6464" "$out/summary.json"'
+check "no NaN or infinity in outputs" '! grep -qiE "(^|[,:[])-?(nan|inf)" "$out/timeseries.csv" "$out/summary.json" "$out/events.csv"'
+
+cp "$out/summary.json" "$tmp/before.json"
+"$cs" run examples/aps3.yaml -o "$out" --set scenario.speed="35 kg" >/dev/null 2>"$tmp/stderr"
+check "a refused model is status 2" '[ $? -eq 2 ]'
+check "the refusal names the place" 'grep -q "^--set scenario.speed=35 kg: .*not of speed" "$tmp/stderr"'
+check "a refused run leaves earlier outputs alone" 'cmp -s "$tmp/before.json" "$out/summary.json"'
+"$cs" run tests/bad/zero_spacing.yaml -o "$tmp/never" >/dev/null 2>&1
+check "a bad model writes nothing" '[ $? -eq 2 ] && [ ! -e "$tmp/never" ]'
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
