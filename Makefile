@@ -17,11 +17,7 @@ build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
 
 demo: build
-	@if [ -x $(BUILD)/cablesim ] && [ -f examples/aps3.yaml ]; then \
-	  $(BUILD)/cablesim run examples/aps3.yaml -o $(DEMO_OUT); \
-	else \
-	  $(BUILD)/aps3_demo; \
-	fi
+	$(BUILD)/cablesim run examples/aps3.yaml -o $(DEMO_OUT)
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
