@@ -15,12 +15,28 @@ static void face_axis(const cs_state *s, double *x) {
     quat_rotate(x, s->quat, bx);
 }
 
-/* Normal force of the cables on the face for a trial crush (corner nodes moved there). */
-static double face_normal_force(const cs_model *model, cs_state *s, double crush) {
+/* Normal force on the face at the state as it stands: the cables through the corners plus the
+ * pushes of captured posts, along the vehicle's heading. */
+double cs_face_normal_force_now(const cs_model *model, cs_state *s) {
     double ax[3], f[3] = {0.0, 0.0, 0.0}, mo[3] = {0.0, 0.0, 0.0};
     face_axis(s, ax);
+    double n = cs_post_place_captured(model, s, s->crush, f, mo) > 0.0 ? -v3_dot(f, ax) : 0.0;
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        if (!cs->engaged || cs->status != CS_CABLE_INTACT) continue;
+        for (int i = 1; i + 1 < cs->node_count; i++) {
+            if (cs->node[i] != CS_NODE_LEFT && cs->node[i] != CS_NODE_RIGHT) continue;
+            double fc[3];
+            cs_node_force(cs, i, fc);
+            n -= v3_dot(fc, ax);
+        }
+    }
+    return n;
+}
+
+/* Normal force for a trial crush, with the corner nodes moved there. */
+static double face_normal_force(const cs_model *model, cs_state *s, double crush) {
     cs_contact_place_corners(model, s, crush);
-    double n = cs_post_place_captured(model, s, crush, f, mo) > 0.0 ? -v3_dot(f, ax) : 0.0;
     for (int c = 0; c < model->cable_count; c++) {
         cs_cable_state *cs = &s->cables[c];
         if (!cs->engaged || cs->status != CS_CABLE_INTACT) continue;
@@ -30,13 +46,11 @@ static double face_normal_force(const cs_model *model, cs_state *s, double crush
             cs->tension[i - 1] = cs_span_tension(cm, cs, i - 1);
             cs->tension[i] = cs_span_tension(cm, cs, i);
         }
-        for (int i = 1; i + 1 < cs->node_count; i++) {
-            if (cs->node[i] != CS_NODE_LEFT && cs->node[i] != CS_NODE_RIGHT) continue;
-            double f[3];
-            cs_node_force(cs, i, f);
-            n -= v3_dot(f, ax);
-        }
     }
+    double saved = s->crush;
+    s->crush = crush;
+    double n = cs_face_normal_force_now(model, s);
+    s->crush = saved;
     return n;
 }
 
@@ -100,10 +114,11 @@ static double crush_solve(const cs_model *model, cs_state *s) {
     return entry;
 }
 
-double cs_barrier_solve(const cs_model *model, cs_state *s) {
+/* Gauss-Seidel over the local problems, up to `sweeps` sweeps. */
+static double gauss_seidel(const cs_model *model, cs_state *s, int sweeps) {
     const cs_scenario_def *sc = &model->scenario;
     double worst = 0.0;
-    for (int sweep = 0; sweep < sc->solver_max_sweeps; sweep++) {
+    for (int sweep = 0; sweep < sweeps; sweep++) {
         worst = 0.0;
         for (int k = 0; k < model->post_count; k++) {
             int p = (sweep % 2 == 0) ? k : model->post_count - 1 - k; /* alternate direction */
@@ -115,15 +130,23 @@ double cs_barrier_solve(const cs_model *model, cs_state *s) {
             const cs_cable_model *cm = &model->cables[c];
             int n = cs->node_count;
             for (int k = 1; k + 1 < n; k++) {
-                int i = (sweep % 2 == 0) ? k : n - 1 - k; /* alternate direction */
+                int i = (sweep % 2 == 0) ? k : n - 1 - k;
                 worst = fmax(worst, cs_cable_slide_node(model, cm, cs, i, sc->solver_tolerance));
             }
         }
         worst = fmax(worst, crush_solve(model, s));
         if (worst <= sc->solver_tolerance) break;
     }
-    for (int c = 0; c < model->cable_count; c++)
-        cs_cable_update_tensions(&model->cables[c], &s->cables[c]);
+    return worst;
+}
+
+double cs_barrier_solve(const cs_model *model, cs_state *s) {
+    const cs_scenario_def *sc = &model->scenario;
+    if (!any_engaged(model, s)) crush_solve(model, s); /* an unloaded face springs back to its set */
+    double worst = cs_barrier_newton(model, s);
+    if (worst < 0.0) worst = gauss_seidel(model, s, sc->solver_max_sweeps); /* band too wide */
+    for (int c = 0; c < model->cable_count; c++) cs_cable_update_tensions(&model->cables[c], &s->cables[c]);
+    s->face_force = any_engaged(model, s) ? cs_face_normal_force_now(model, s) : 0.0;
     s->solver_residual = worst;
     if (worst > sc->solver_tolerance) {
         s->summary.solver_warnings++;

@@ -94,6 +94,19 @@ typedef struct cs_post_state {
     double push;         /* force of the face on a captured post, N */
 } cs_post_state;
 
+/* Workspace of the Newton solve of the barrier (solve.c), sized at state creation. */
+typedef struct cs_solver {
+    struct slot *slots;  /* unknowns in barrier order */
+    int *tilt_index;     /* [post_count] index of a post's first tilt unknown, -1 if none */
+    int *node_index;     /* [cable_count * max_nodes] index of a node's material unknown, -1 if none */
+    int crush_index;
+    double *x, *r, *dx, *xt, *rt;
+    double *band;        /* banded Jacobian / LU factors */
+    size_t band_capacity;
+    int *pivot;
+    int kl, ku, band_width;
+} cs_solver;
+
 struct cs_state {
     double t;
     long step;
@@ -129,6 +142,8 @@ struct cs_state {
 
     cs_event *events;
     int event_count;
+
+    cs_solver solver;
 };
 
 /* ---- rope law (cable.c) ---- */
@@ -158,6 +173,7 @@ void cs_post_commit(const cs_model *model, cs_state *s, int post);
 double cs_post_stored_energy(const cs_model *model, const cs_state *s, int post);
 int cs_post_standing(const cs_post_state *ps);
 int cs_post_check_failure(const cs_model *model, cs_state *s, int post);
+void cs_post_residual_now(const cs_model *model, const cs_state *s, int post, double *r);
 void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double *q);
 double cs_post_place_captured(const cs_model *model, cs_state *s, double crush, double *force,
                               double *moment);
@@ -181,6 +197,10 @@ void cs_contact_drop_failed(const cs_model *model, cs_state *s);
 
 /* ---- barrier solve (barrier.c) ---- */
 double cs_barrier_solve(const cs_model *model, cs_state *s);
+double cs_barrier_newton(const cs_model *model, cs_state *s);
+double cs_face_normal_force_now(const cs_model *model, cs_state *s);
+int cs_solver_init(const cs_model *model, cs_solver *w);
+void cs_solver_free(cs_solver *w);
 void cs_barrier_force(const cs_model *model, cs_state *s);
 void cs_barrier_commit(const cs_model *model, cs_state *s);
 double cs_barrier_stored_energy(const cs_model *model, const cs_state *s);

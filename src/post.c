@@ -79,6 +79,25 @@ static void post_residual(const cs_model *model, cs_state *s, int p, const doubl
     r[0] = q[0] - res[0], r[1] = q[1] - res[1];
 }
 
+/* Residual at the state as it stands (nodes placed, tensions current): cables minus resistance. */
+void cs_post_residual_now(const cs_model *model, const cs_state *s, int p, double *r) {
+    const cs_post_state *ps = &s->posts[p];
+    double j[6], q[2] = {0.0, 0.0};
+    axis_jacobian(ps->tilt, j);
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
+        if (i < 0) continue;
+        double f[3], z = model->cables[c].z;
+        cs_node_force(cs, i, f);
+        q[0] += z * (j[0] * f[0] + j[2] * f[1] + j[4] * f[2]);
+        q[1] += z * (j[1] * f[0] + j[3] * f[1] + j[5] * f[2]);
+    }
+    double res[2];
+    cs_post_resistance(&model->posts[p], ps, ps->tilt, res);
+    r[0] = q[0] - res[0], r[1] = q[1] - res[1];
+}
+
 static void entry_material(const cs_model *model, const cs_state *s, int p, double *m_entry) {
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];

@@ -29,6 +29,7 @@ cs_state *cs_state_create(const cs_model *model, cs_error *err) {
         if (!cs->node || !cs->where || !cs->m || !cs->m_commit || !cs->ep || !cs->tension || !cs->pos)
             goto oom;
     }
+    if (cs_solver_init(model, &s->solver) != 0) goto oom;
     cs_state_reset(model, s);
     return s;
 oom:
@@ -46,6 +47,7 @@ void cs_state_free(cs_state *s) {
             free(cs->pos);
         }
     }
+    cs_solver_free(&s->solver);
     free(s->cables), free(s->posts), free(s->events), free(s->speed_ring);
     free(s);
 }

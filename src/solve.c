@@ -1,0 +1,378 @@
+/* The barrier's quasi-static equilibrium as one nonlinear system, solved by semi-smooth Newton.
+ *
+ * Unknowns: the tilt (2) of every standing post on a cable path, the material coordinate m of every
+ * support node the rope can slide through (posts that do not clamp, face corners), and the crush.
+ * Residuals (each scaled by its element's capacity):
+ *   post:   Q_cables(alpha) - Q_resist(alpha)                              (post.c)
+ *   node:   lambda - proj_[-b, b](lambda + c dm) + eps c dm,                (capstan, Eq. 3)
+ *           lambda = T_L - T_R, b = tanh(mu theta / 2) (T_L + T_R), dm = m - m_commit, c = EA / l.
+ *           |T_L - T_R| <= b is T_high <= exp(mu theta) T_low; the projection makes the node stick
+ *           (dm = 0) inside the band and slide (lambda = +-b) outside it, as Coulomb friction.
+ *           eps keeps a node between two slack spans sticking instead of undetermined.
+ *   crush:  N(crush) - C(crush)                                             (barrier.c)
+ * Unknowns are ordered along the barrier, so the Jacobian is banded: finite differences perturb
+ * columns 2w + 1 apart together, and a banded LU with partial pivoting solves each Newton step. Cost
+ * is linear in the number of posts; the solution does not depend on any sweep order, so a symmetric
+ * impact stays symmetric. */
+#include "internal.h"
+#include "vec3.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <stdio.h>
+
+#define CS_STICK_EPS 1e-9
+
+enum { U_TILT = 0, U_NODE = 1, U_CRUSH = 2 };
+
+static int is_corner(int id) { return id == CS_NODE_LEFT || id == CS_NODE_RIGHT; }
+
+static int node_slides(const cs_model *model, const cs_cable_state *cs, int i) {
+    int id = cs->node[i];
+    return is_corner(id) || (id >= 0 && !model->posts[id].clamped);
+}
+
+/* ---- assembling the unknowns in barrier order ---- */
+typedef struct slot {
+    double x;
+    int kind, a, b;
+} slot;
+
+/* The band holds rows of up to 2 kl + ku + 1 entries; a post slot has 2 + cables unknowns, and the
+ * face adds two corners per cable and the crush, so this covers neighbouring slots with room. */
+int cs_solver_init(const cs_model *model, cs_solver *w) {
+    memset(w, 0, sizeof *w);
+    size_t nc = (size_t)model->cable_count, np = (size_t)model->post_count, nn = (size_t)model->max_nodes;
+    size_t n = 2 * np + nc * nn + 1, per_row = 3 * (12 + 8 * nc) + 1;
+    w->slots = calloc(n, sizeof *w->slots);
+    w->tilt_index = calloc(np ? np : 1, sizeof *w->tilt_index);
+    w->node_index = calloc(nc * nn, sizeof *w->node_index);
+    w->x = calloc(5 * n, sizeof *w->x);
+    w->band_capacity = n * per_row;
+    w->band = calloc(w->band_capacity, sizeof *w->band);
+    w->pivot = calloc(n, sizeof *w->pivot);
+    if (!w->slots || !w->tilt_index || !w->node_index || !w->x || !w->band || !w->pivot) return -1;
+    w->r = w->x + n, w->dx = w->x + 2 * n, w->xt = w->x + 3 * n, w->rt = w->x + 4 * n;
+    return 0;
+}
+
+void cs_solver_free(cs_solver *w) {
+    free(w->slots), free(w->tilt_index), free(w->node_index), free(w->x), free(w->band), free(w->pivot);
+    memset(w, 0, sizeof *w);
+}
+
+static int cmp_slot(const void *pa, const void *pb) {
+    const slot *a = pa, *b = pb;
+    if (a->x != b->x) return a->x < b->x ? -1 : 1;
+    if (a->kind != b->kind) return a->kind - b->kind;
+    if (a->a != b->a) return a->a - b->a;
+    return a->b - b->b;
+}
+
+static int post_on_path(const cs_model *model, const cs_state *s, int p) {
+    const cs_post_state *ps = &s->posts[p];
+    if (!cs_post_standing(ps) || ps->captured) return 0;
+    for (int c = 0; c < model->cable_count; c++)
+        if (s->cables[c].status == CS_CABLE_INTACT && s->cables[c].where[p] > 0) return 1;
+    return 0;
+}
+
+static int has_face_load(const cs_model *model, const cs_state *s) {
+    for (int c = 0; c < model->cable_count; c++)
+        if (s->cables[c].engaged && s->cables[c].status == CS_CABLE_INTACT) return 1;
+    for (int p = 0; p < model->post_count; p++)
+        if (s->posts[p].captured && cs_post_standing(&s->posts[p])) return 1;
+    return 0;
+}
+
+/* Fill the unknown list (kind, a, b) sorted along x; returns the count. */
+static int assemble(const cs_model *model, cs_state *s, cs_solver *w) {
+    slot *sl = w->slots;
+    int n = 0;
+    for (int p = 0; p < model->post_count; p++) {
+        if (!post_on_path(model, s, p)) continue;
+        sl[n++] = (slot){model->posts[p].x, U_TILT, p, 0};
+        sl[n++] = (slot){model->posts[p].x, U_TILT, p, 1};
+    }
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        if (cs->status != CS_CABLE_INTACT) continue;
+        for (int i = 1; i + 1 < cs->node_count; i++)
+            if (node_slides(model, cs, i)) sl[n++] = (slot){cs->pos[3 * i], U_NODE, c, i};
+    }
+    if (has_face_load(model, s)) sl[n++] = (slot){s->pos[0], U_CRUSH, 0, 0};
+    qsort(sl, (size_t)n, sizeof *sl, cmp_slot);
+    /* index maps: tilt of post p, node i of cable c, crush */
+    for (int p = 0; p < model->post_count; p++) w->tilt_index[p] = -1;
+    for (int c = 0; c < model->cable_count; c++)
+        for (int i = 0; i < model->max_nodes; i++) w->node_index[c * model->max_nodes + i] = -1;
+    w->crush_index = -1;
+    for (int k = 0; k < n; k++) {
+        if (sl[k].kind == U_TILT && sl[k].b == 0) w->tilt_index[sl[k].a] = k;
+        if (sl[k].kind == U_NODE) w->node_index[sl[k].a * model->max_nodes + sl[k].b] = k;
+        if (sl[k].kind == U_CRUSH) w->crush_index = k;
+    }
+    return n;
+}
+
+/* Unknowns a node's position depends on: its post's tilt, or the crush for a corner. */
+static void position_deps(const cs_model *model, const cs_solver *w, const cs_cable_state *cs, int i, int *lo, int *hi) {
+    int id = cs->node[i], k = -1;
+    if (id >= 0 && w->tilt_index[id] >= 0) k = w->tilt_index[id];
+    if (is_corner(id)) k = w->crush_index;
+    if (k < 0) return;
+    int k2 = (id >= 0) ? k + 1 : k;
+    if (k < *lo) *lo = k;
+    if (k2 > *hi) *hi = k2;
+    (void)model;
+}
+
+/* Range of unknowns the residual of a node's neighbourhood (nodes i-1..i+1) depends on. */
+static void neighbourhood(const cs_model *model, const cs_solver *w, const cs_cable_state *cs, int c, int i, int *lo,
+                          int *hi) {
+    for (int j = i - 1; j <= i + 1; j++) {
+        if (j < 0 || j >= cs->node_count) continue;
+        int k = w->node_index[c * model->max_nodes + j];
+        if (k >= 0) {
+            if (k < *lo) *lo = k;
+            if (k > *hi) *hi = k;
+        }
+        position_deps(model, w, cs, j, lo, hi);
+    }
+}
+
+/* Lower and upper bandwidth of the Jacobian from the structure of the residuals. */
+static void bandwidth(const cs_model *model, cs_state *s, cs_solver *w, int n, int *kl, int *ku) {
+    *kl = *ku = 0;
+    for (int k = 0; k < n; k++) {
+        const slot *u = &w->slots[k];
+        int lo = k, hi = k;
+        if (u->kind == U_NODE) {
+            neighbourhood(model, w, &s->cables[u->a], u->a, u->b, &lo, &hi);
+        } else if (u->kind == U_TILT) {
+            for (int c = 0; c < model->cable_count; c++) {
+                const cs_cable_state *cs = &s->cables[c];
+                if (cs->status == CS_CABLE_INTACT && cs->where[u->a] > 0) neighbourhood(model, w, cs, c, cs->where[u->a], &lo, &hi);
+            }
+            hi = hi > k + 1 ? hi : k + 1;
+            lo = lo < k - 1 ? lo : k - 1;
+        } else {
+            for (int c = 0; c < model->cable_count; c++) {
+                const cs_cable_state *cs = &s->cables[c];
+                if (cs->status != CS_CABLE_INTACT) continue;
+                for (int i = 1; i + 1 < cs->node_count; i++)
+                    if (is_corner(cs->node[i])) neighbourhood(model, w, cs, c, i, &lo, &hi);
+            }
+        }
+        if (lo < 0) lo = 0;
+        if (hi > n - 1) hi = n - 1;
+        if (k - lo > *kl) *kl = k - lo; /* row k depends on column lo: below the diagonal */
+        if (hi - k > *ku) *ku = hi - k;
+    }
+}
+
+/* ---- state <-> vector ---- */
+static void gather(const cs_model *model, const cs_state *s, const cs_solver *w, int n, double *x) {
+    for (int k = 0; k < n; k++) {
+        const slot *u = &w->slots[k];
+        if (u->kind == U_TILT) x[k] = s->posts[u->a].tilt[u->b];
+        if (u->kind == U_NODE) x[k] = s->cables[u->a].m[u->b];
+        if (u->kind == U_CRUSH) x[k] = s->crush;
+    }
+    (void)model;
+}
+
+/* Put x into the state and bring every node position and span tension in line with it. */
+static void scatter(const cs_model *model, cs_state *s, const cs_solver *w, int n, const double *x) {
+    for (int k = 0; k < n; k++) {
+        const slot *u = &w->slots[k];
+        if (u->kind == U_TILT) s->posts[u->a].tilt[u->b] = x[k];
+        if (u->kind == U_NODE) s->cables[u->a].m[u->b] = x[k];
+        if (u->kind == U_CRUSH) s->crush = x[k];
+    }
+    cs_contact_place_corners(model, s, s->crush);
+    cs_post_place_captured(model, s, s->crush, NULL, NULL);
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        if (cs->status != CS_CABLE_INTACT) continue;
+        for (int i = 1; i + 1 < cs->node_count; i++)
+            if (cs->node[i] >= 0)
+                cs_post_attachment(model, cs->node[i], s->posts[cs->node[i]].tilt, model->cables[c].z, cs->pos + 3 * i);
+        cs_cable_update_tensions(&model->cables[c], cs);
+    }
+}
+
+/* ---- residuals ---- */
+static double node_residual(const cs_model *model, const cs_state *s, int c, int i) {
+    const cs_cable_model *cm = &model->cables[c];
+    const cs_cable_state *cs = &s->cables[c];
+    double tl = cs->tension[i - 1], tr = cs->tension[i];
+    double mu_theta = log(cs_node_friction_ratio(model, cm, cs, i));
+    double lambda = tl - tr, b = tanh(0.5 * mu_theta) * (tl + tr);
+    double cstiff = cm->rope.ea / (cs_span_length(cs, i - 1) + cs_span_length(cs, i) + 1e-9);
+    double dm = cs->m[i] - cs->m_commit[i], y = lambda + cstiff * dm;
+    double proj = y > b ? b : (y < -b ? -b : y);
+    return (lambda - proj + CS_STICK_EPS * cstiff * dm) / cm->rope.fu;
+}
+
+static void residual(const cs_model *model, cs_state *s, const cs_solver *w, int n, double *r) {
+    for (int k = 0; k < n; k++) {
+        const slot *u = &w->slots[k];
+        if (u->kind == U_NODE) {
+            r[k] = node_residual(model, s, u->a, u->b);
+        } else if (u->kind == U_TILT && u->b == 0) {
+            double q[2];
+            cs_post_residual_now(model, s, u->a, q);
+            double scale = model->posts[u->a].moment_cap;
+            r[k] = q[0] / scale, r[k + 1] = q[1] / scale;
+        } else if (u->kind == U_CRUSH) {
+            const cs_vehicle_def *v = &model->vehicle.def;
+            double nf = cs_face_normal_force_now(model, s);
+            r[k] = (nf - cs_crush_force(v, s->crush, s->crush_max)) / v->crush_force[v->crush_point_count - 1];
+        }
+    }
+}
+
+static double norm_inf(const double *r, int n) {
+    double m = 0.0;
+    for (int k = 0; k < n; k++) m = fmax(m, fabs(r[k]));
+    return m;
+}
+
+static double fd_step(const slot *u, double x) {
+    if (u->kind == U_NODE) return 1e-8 * fmax(1.0, fabs(x));
+    return 1e-8;
+}
+
+/* ---- banded LU with partial pivoting: row i keeps columns i-kl .. i+ku+kl ---- */
+#define BAND(w, i, j) ((w)->band[(size_t)(i) * (size_t)(w)->band_width + (size_t)((j) - (i) + (w)->kl)])
+
+static int band_factor(cs_solver *w, int n) {
+    int kl = w->kl, ku = w->ku;
+    for (int k = 0; k < n; k++) {
+        int last = k + kl < n - 1 ? k + kl : n - 1, p = k;
+        double best = fabs(BAND(w, k, k));
+        for (int i = k + 1; i <= last; i++)
+            if (fabs(BAND(w, i, k)) > best) best = fabs(BAND(w, i, k)), p = i;
+        w->pivot[k] = p;
+        if (best == 0.0) return -1;
+        int jend = k + ku + kl < n - 1 ? k + ku + kl : n - 1;
+        if (p != k)
+            for (int j = k; j <= jend; j++) {
+                double t = BAND(w, k, j);
+                BAND(w, k, j) = BAND(w, p, j);
+                BAND(w, p, j) = t;
+            }
+        for (int i = k + 1; i <= last; i++) {
+            double f = BAND(w, i, k) / BAND(w, k, k);
+            BAND(w, i, k) = f;
+            if (f != 0.0)
+                for (int j = k + 1; j <= jend; j++) BAND(w, i, j) -= f * BAND(w, k, j);
+        }
+    }
+    return 0;
+}
+
+static void band_solve(const cs_solver *w, int n, double *b) {
+    int kl = w->kl, ku = w->ku;
+    for (int k = 0; k < n; k++) {
+        int p = w->pivot[k];
+        if (p != k) {
+            double t = b[k];
+            b[k] = b[p];
+            b[p] = t;
+        }
+        int last = k + kl < n - 1 ? k + kl : n - 1;
+        for (int i = k + 1; i <= last; i++) b[i] -= BAND(w, i, k) * b[k];
+    }
+    for (int k = n - 1; k >= 0; k--) {
+        int jend = k + ku + kl < n - 1 ? k + ku + kl : n - 1;
+        double sum = b[k];
+        for (int j = k + 1; j <= jend; j++) sum -= BAND(w, k, j) * b[j];
+        b[k] = sum / BAND(w, k, k);
+    }
+}
+
+/* Finite-difference Jacobian, columns 2 w + 1 apart perturbed together. */
+static void jacobian(const cs_model *model, cs_state *s, cs_solver *w, int n, const double *x, const double *r) {
+    int kl = w->kl, ku = w->ku, stride = kl + ku + 1;
+    memset(w->band, 0, (size_t)n * (size_t)w->band_width * sizeof *w->band);
+    for (int g = 0; g < stride && g < n; g++) {
+        memcpy(w->xt, x, (size_t)n * sizeof *x);
+        for (int j = g; j < n; j += stride) w->xt[j] += fd_step(&w->slots[j], x[j]);
+        scatter(model, s, w, n, w->xt);
+        residual(model, s, w, n, w->rt);
+        for (int j = g; j < n; j += stride) {
+            double h = w->xt[j] - x[j];
+            int i0 = j - ku > 0 ? j - ku : 0, i1 = j + kl < n - 1 ? j + kl : n - 1;
+            for (int i = i0; i <= i1; i++) BAND(w, i, j) = (w->rt[i] - r[i]) / h;
+        }
+    }
+}
+
+/* Largest fraction of a Newton step that keeps every span's rope at least half of what it has, turns
+ * no post by more than 0.1 rad and moves the crush by at most 5 cm. */
+static double max_step(const cs_model *model, const cs_state *s, const cs_solver *w, int n, const double *dx) {
+    double t = 1.0;
+    for (int k = 0; k < n; k++) {
+        const slot *u = &w->slots[k];
+        if (u->kind == U_TILT && fabs(dx[k]) * t > 0.1) t = 0.1 / fabs(dx[k]);
+        if (u->kind == U_CRUSH && fabs(dx[k]) * t > 0.05) t = 0.05 / fabs(dx[k]);
+    }
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        if (cs->status != CS_CABLE_INTACT) continue;
+        for (int i = 0; i + 1 < cs->node_count; i++) {
+            int a = w->node_index[c * model->max_nodes + i], b = w->node_index[c * model->max_nodes + i + 1];
+            double ds = (b >= 0 ? dx[b] : 0.0) - (a >= 0 ? dx[a] : 0.0), sm = cs->m[i + 1] - cs->m[i];
+            if (ds < 0.0 && -ds * t > 0.5 * sm) t = 0.5 * sm / -ds;
+        }
+    }
+    return t;
+}
+
+double cs_barrier_newton(const cs_model *model, cs_state *s) {
+    cs_solver *w = &s->solver;
+    int n = assemble(model, s, w);
+    if (n == 0) return 0.0;
+    bandwidth(model, s, w, n, &w->kl, &w->ku);
+    w->band_width = 2 * w->kl + w->ku + 1;
+    if ((size_t)n * (size_t)w->band_width > w->band_capacity) return -1.0; /* caller falls back */
+    double *x = w->x, *r = w->r, *dx = w->dx;
+    gather(model, s, w, n, x);
+    scatter(model, s, w, n, x);
+    residual(model, s, w, n, r);
+    double rn = norm_inf(r, n), tol = model->scenario.solver_tolerance;
+    for (int it = 0; it < 15 && rn > tol; it++) {
+        jacobian(model, s, w, n, x, r);
+        if (band_factor(w, n) != 0) break;
+        for (int k = 0; k < n; k++) dx[k] = -r[k];
+        band_solve(w, n, dx);
+        double t = max_step(model, s, w, n, dx), merit = 0.0, trial_merit = 0.0;
+        for (int k = 0; k < n; k++) merit += r[k] * r[k];
+        int accepted = 0;
+        for (int ls = 0; ls < 30; ls++, t *= 0.5) {
+            for (int k = 0; k < n; k++) w->xt[k] = x[k] + t * dx[k];
+            scatter(model, s, w, n, w->xt);
+            residual(model, s, w, n, w->rt);
+            trial_merit = 0.0;
+            for (int k = 0; k < n; k++) trial_merit += w->rt[k] * w->rt[k];
+            if (trial_merit < (1.0 - 1e-4 * t) * merit) {
+                accepted = 1;
+                break;
+            }
+        }
+        if (getenv("CS_NEWTON_DEBUG")) {
+            int worst = 0;
+            for (int k = 0; k < n; k++) if (fabs(w->rt[k]) > fabs(w->rt[worst])) worst = k;
+            fprintf(stderr, "t=%.4f it %d n %d kl %d ku %d |r| %.3g -> %.3g step %.3g acc %d worst %d kind %d a %d b %d\n", s->t, it, n, w->kl, w->ku, rn, norm_inf(w->rt, n), t, accepted, worst, w->slots[worst].kind, w->slots[worst].a, w->slots[worst].b);
+        }
+        if (!accepted) break;
+        memcpy(x, w->xt, (size_t)n * sizeof *x);
+        memcpy(r, w->rt, (size_t)n * sizeof *r);
+        rn = norm_inf(r, n);
+    }
+    scatter(model, s, w, n, x);
+    return rn;
+}
