@@ -80,7 +80,8 @@ cs_status cs_step(const cs_model *model, cs_state *s, cs_error *err) {
     cs_vehicle_integrate(model, s); /* 1. the vehicle moves under last step's forces */
     s->t += model->scenario.dt;
     s->step++;
-    cs_contact_update(model, s);  /* 2. cables wrap onto or leave the face */
+    cs_contact_update(model, s);  /* 2. cables wrap onto or leave the face, */
+    cs_post_capture(model, s);    /*    posts it reaches are struck */
     cs_barrier_solve(model, s);   /* 3. posts, sliding and crush in equilibrium */
     cs_barrier_commit(model, s);  /* 4. plastic flow, friction and crush work */
     resolve_failures(model, s);   /* 5. breaks, post and anchor failures */
