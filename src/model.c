@@ -85,7 +85,8 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
             return fail(err, "post %d: soil pressure must be > 0", p);
         if (!positive(f->coeff_depth) || !non_negative(f->coeff_height))
             return fail(err, "post %d: Eq. 21 coefficients must be > 0", p);
-        if (!positive(f->pullout_capacity)) return fail(err, "post %d: pullout capacity must be > 0", p);
+        if (!(f->pullout_capacity > 0.0)) /* HUGE_VAL: never pulls out */
+            return fail(err, "post %d: pullout capacity must be > 0", p);
         if (!(d->rotation_limit > 0.0 && d->rotation_limit < 1.5) ||
             !(f->rotation_limit > 0.0 && f->rotation_limit < 1.5))
             return fail(err, "post %d: rotation limits must be between 0 and 1.5 rad", p);

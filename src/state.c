@@ -143,6 +143,20 @@ const char *cs_outcome_name(cs_outcome o) {
     return "unknown";
 }
 
+const char *cs_cable_status_name(cs_cable_status st) {
+    switch (st) {
+    case CS_CABLE_INTACT:
+        return "intact";
+    case CS_CABLE_BROKEN:
+        return "broken";
+    case CS_CABLE_RELEASED:
+        return "released";
+    case CS_CABLE_SLIPPED:
+        return "slipped";
+    }
+    return "unknown";
+}
+
 const char *cs_post_status_name(cs_post_status st) {
     switch (st) {
     case CS_POST_ELASTIC:

@@ -3,7 +3,20 @@
 #ifndef CS_TEST_LAY_H
 #define CS_TEST_LAY_H
 
+#include "fixture.h"
 #include "internal.h"
+
+/* A model and its state built from a fixture, for tests that reach into the engine. */
+typedef struct world {
+    fixture fx;
+    cs_model *model;
+    cs_state *state;
+} world;
+
+static inline void world_free(world *w) {
+    cs_state_free(w->state);
+    cs_model_free(w->model);
+}
 
 static inline cs_cable_state *lay_cable(cs_state *s, const double *a, const double *b, const double *c,
                                         double e1, double e2) {

@@ -5,12 +5,6 @@
 #include "internal.h"
 #include "lay.h"
 
-typedef struct world {
-    fixture fx;
-    cs_model *model;
-    cs_state *state;
-} world;
-
 static world *make_world(double mu) {
     static world w;
     fixture_aps3(&w.fx);
@@ -21,11 +15,6 @@ static world *make_world(double mu) {
     w.state = cs_state_create(w.model, &err);
     assert_non_null(w.state);
     return &w;
-}
-
-static void free_world(world *w) {
-    cs_state_free(w->state);
-    cs_model_free(w->model);
 }
 
 static void rope_law_points(void **state) {
@@ -43,7 +32,7 @@ static void rope_law_points(void **state) {
     CHECK_REL(cs_rope_tension(r, 0.025, 0.0), fu, 1e-12);           /* plastic plateau */
     CHECK_REL(cs_rope_tension(r, 0.004, 0.003), ea * 0.001, 1e-12); /* elastic unloading from a set */
     CHECK_ABS(cs_rope_tension(r, 0.002, 0.003), 0.0, 0.0);          /* slack below the set */
-    free_world(w);
+    world_free(w);
 }
 
 static void capstan_ratio_on_frictional_support(void **state) {
@@ -64,7 +53,7 @@ static void capstan_ratio_on_frictional_support(void **state) {
     double m1 = cs->m[1];
     CHECK_ABS(cs_cable_slide_node(w->model, cm, cs, 1, 1e-9), 0.0, 0.0);
     CHECK_ABS(cs->m[1], m1, 0.0);
-    free_world(w);
+    world_free(w);
 }
 
 static void frictionless_sliding_equalises_tension(void **state) {
@@ -79,7 +68,7 @@ static void frictionless_sliding_equalises_tension(void **state) {
         cm->rope.ea * (10.0 / total - 1.0); /* one tension: EA (L / S - 1), Eqs. 1-6 with mu = 0 */
     CHECK_REL(cs_span_tension(cm, cs, 0), expect, 1e-8);
     CHECK_REL(cs_span_tension(cm, cs, 1), expect, 1e-8);
-    free_world(w);
+    world_free(w);
 }
 
 static void breaking_strain_breaks_the_cable(void **state) {
@@ -103,7 +92,7 @@ static void breaking_strain_breaks_the_cable(void **state) {
     assert_int_equal(w->state->cables[0].status, CS_CABLE_BROKEN);
     const cs_event *e = cs_state_event(w->state, cs_state_event_count(w->state) - 1);
     assert_int_equal(e->type, CS_EVENT_CABLE_BREAK);
-    free_world(w);
+    world_free(w);
 }
 
 int main(void) {

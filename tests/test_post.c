@@ -6,12 +6,6 @@
 #include "internal.h"
 #include "lay.h"
 
-typedef struct world {
-    fixture fx;
-    cs_model *model;
-    cs_state *state;
-} world;
-
 static world *make_world(double web_area) {
     static world w;
     fixture_aps3(&w.fx);
@@ -45,8 +39,7 @@ static void cantilever_deflection(void **state) {
     double deflection = cs->pos[4];                             /* y of the cable on the post */
     CHECK_REL(deflection, f[1] * z * z * z / (3.0 * ei), 1e-3); /* Eq. 11 with L2 = 0 */
     assert_int_equal(w->state->posts[0].status, CS_POST_ELASTIC);
-    cs_state_free(w->state);
-    cs_model_free(w->model);
+    world_free(w);
 }
 
 static void plastic_hinge_at_mp(void **state) {
@@ -60,8 +53,7 @@ static void plastic_hinge_at_mp(void **state) {
     CHECK_REL(hypot(w->state->posts[0].moment[0], w->state->posts[0].moment[1]), mp, 1e-9);
     const cs_event *e = cs_state_event(w->state, cs_state_event_count(w->state) - 1);
     assert_int_equal(e->type, CS_EVENT_POST_HINGE);
-    cs_state_free(w->state);
-    cs_model_free(w->model);
+    world_free(w);
 }
 
 static void shear_failure_onset(void **state) {
@@ -76,8 +68,7 @@ static void shear_failure_onset(void **state) {
     assert_true(w->state->posts[0].shear >= cap);
     assert_int_equal(cs_post_check_failure(w->model, w->state, 0), 1);
     assert_int_equal(w->state->posts[0].status, CS_POST_FAILED_SHEAR);
-    cs_state_free(w->state);
-    cs_model_free(w->model);
+    world_free(w);
 }
 
 int main(void) {

@@ -134,6 +134,7 @@ typedef struct cs_cable_view {
 } cs_cable_view;
 
 void cs_state_cable(const cs_model *model, const cs_state *state, int cable, cs_cable_view *out);
+const char *cs_cable_status_name(cs_cable_status status); /* "intact", "broken", "released", "slipped" */
 /* Copy up to capacity path points (x, y, z triplets) and span tensions (node_count - 1 of them). */
 int cs_state_cable_path(const cs_model *model, const cs_state *state, int cable, double *xyz, double *tension,
                         int capacity);

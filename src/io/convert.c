@@ -135,6 +135,14 @@ int cs_convert_fields(cs_loader *l, const cs_node *map, void *target) {
     return fields(l, map, target, 1);
 }
 
+/* Report key's value v at its place unless it is above other's value lo. */
+static void above(cs_loader *l, const cs_node *map, const char *key, double v, const char *other, double lo,
+                  const char *unit) {
+    if (!(v > lo))
+        cs_err_node(l, at(map, key), 0, "%g %s is not above %s, %g %s (expected %s > %s)", v, unit, other, lo,
+                    unit, key, other);
+}
+
 /* ---- vehicle ---- */
 
 static void crush_curve(cs_loader *l, const cs_node *v, cs_vehicle_def *out) {
@@ -212,21 +220,9 @@ int cs_convert_vehicle(cs_loader *l, const cs_node *v, cs_vehicle_def *out) {
     }
     crush_curve(l, v, out);
     if (l->error_count > before || cs_damaged(l, v)) return l->error_count - before;
-    if (out->face_top <= out->face_bottom)
-        cs_err_node(l, at(v, "face_top"), 0,
-                    "the face top (%g m) is not above its bottom (%g m) (expected "
-                    "face_top > face_bottom)",
-                    out->face_top, out->face_bottom);
-    if (out->cg_to_front_axle >= out->wheelbase)
-        cs_err_node(l, at(v, "cg_to_front_axle"), 0,
-                    "the CG (%g m behind the front axle) is not between the "
-                    "axles (expected less than the wheelbase, %g m)",
-                    out->cg_to_front_axle, out->wheelbase);
-    if (out->cg_to_front <= out->cg_to_front_axle)
-        cs_err_node(l, at(v, "cg_to_front"), 0,
-                    "the front face (%g m ahead of the CG) is behind the front axle "
-                    "(expected more than cg_to_front_axle, %g m)",
-                    out->cg_to_front, out->cg_to_front_axle);
+    above(l, v, "face_top", out->face_top, "face_bottom", out->face_bottom, "m");
+    above(l, v, "wheelbase", out->wheelbase, "cg_to_front_axle", out->cg_to_front_axle, "m");
+    above(l, v, "cg_to_front", out->cg_to_front, "cg_to_front_axle", out->cg_to_front_axle, "m");
     return l->error_count - before;
 }
 
@@ -442,16 +438,8 @@ static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_de
                     "the anchors, %g m to %g m)",
                     s->impact_x, b->start_anchor.x, b->end_anchor.x);
     if (b) return; /* the rest was checked without the barrier */
-    if (s->t_end <= s->dt)
-        cs_err_node(l, at(sc, "t_end"), 0,
-                    "the time limit %g s is not above the time step %g s (expected t_end > "
-                    "dt)",
-                    s->t_end, s->dt);
-    if (s->stop_speed >= s->speed)
-        cs_err_node(l, at(sc, "stop_speed"), 0,
-                    "the stop speed %g m/s is not below the impact speed %g m/s "
-                    "(expected less)",
-                    s->stop_speed, s->speed);
+    above(l, sc, "t_end", s->t_end, "dt", s->dt, "s");
+    above(l, sc, "speed", s->speed, "stop_speed", s->stop_speed, "m/s");
 }
 
 static const cs_node *need(cs_loader *l, const cs_node *root, const char *key, const char *hint) {

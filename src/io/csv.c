@@ -14,7 +14,6 @@ void cs_w_num(cs_wout *w, double v, const char *what) {
     fprintf(w->f, "%.10g", v);
 }
 
-static const char *const cable_status[] = {"intact", "broken", "released", "slipped"};
 
 static const char *const energy_names[] = {
     "ke_j",   "pe_j",    "cable_elastic_j", "cable_plastic_j", "post_elastic_j",      "post_plastic_j",
@@ -69,7 +68,7 @@ int cs_write_timeseries(FILE *f, const cs_record *rec, char *why, size_t why_siz
             snprintf(what, sizeof what, "cable %d's tension at t = %g s", c, v->t);
             fputc(',', f);
             cs_w_num(&w, cv->max_tension, what);
-            fprintf(f, ",%s", cable_status[cv->status]);
+            fprintf(f, ",%s", cs_cable_status_name(cv->status));
         }
         for (int p = 0; p < rec->post_count; p++) {
             const cs_post_view *pv = &rec->posts[(size_t)i * (size_t)rec->post_count + (size_t)p];

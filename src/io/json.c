@@ -172,7 +172,10 @@ int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_state *sta
         const cs_event *e = cs_state_event(state, i);
         char element[48];
         int ef = 1;
-        snprintf(element, sizeof element, "%s %d", cs_element_kind_name(e->element_kind), e->element);
+        if (e->element_kind == CS_ELEMENT_VEHICLE)
+            snprintf(element, sizeof element, "vehicle");
+        else
+            snprintf(element, sizeof element, "%s %d", cs_element_kind_name(e->element_kind), e->element);
         fprintf(f, "%s\n{", i ? "," : "");
         jnum(&w, &ef, "t_s", e->t);
         jkey(&w, &ef, "type");

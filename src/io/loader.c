@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "grow.h"
 #include "loader_int.h"
 
 #ifndef CS_DATA_DIR
@@ -79,13 +80,7 @@ static void add_error(cs_loader *l, int source, int line, int col, const char *f
     else if (source < 0 && source != INT_MIN && -1 - source < l->set_count)
         snprintf(where, sizeof where, "--set %s%s%s: ", l->sets[-1 - source].path,
                  l->sets[-1 - source].bad ? "" : "=", l->sets[-1 - source].value);
-    if (l->error_count == l->error_capacity) {
-        int cap = l->error_capacity ? 2 * l->error_capacity : 16;
-        cs_lerror *p = realloc(l->errors, (size_t)cap * sizeof *p);
-        if (!p) return;
-        l->errors = p;
-        l->error_capacity = cap;
-    }
+    if (cs_grow(&l->errors, &l->error_capacity, l->error_count, sizeof *l->errors) != 0) return;
     size_t n = strlen(where) + strlen(msg) + 1;
     char *text = malloc(n);
     if (!text) return;
@@ -336,13 +331,7 @@ cs_node *cs_resolve_model(cs_loader *l, int file) {
 
 int cs_loader_set(cs_loader *l, const char *assignment) {
     const char *eq = strchr(assignment, '=');
-    if (l->set_count == l->set_capacity) {
-        int cap = l->set_capacity ? 2 * l->set_capacity : 8;
-        cs_lset *p = realloc(l->sets, (size_t)cap * sizeof *p);
-        if (!p) return -1;
-        l->sets = p;
-        l->set_capacity = cap;
-    }
+    if (cs_grow(&l->sets, &l->set_capacity, l->set_count, sizeof *l->sets) != 0) return -1;
     size_t n = eq ? (size_t)(eq - assignment) : strlen(assignment);
     cs_lset *s = &l->sets[l->set_count];
     s->path = malloc(n + 1);

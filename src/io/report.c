@@ -16,7 +16,7 @@ void cs_write_report(FILE *f, const cs_model_input *in, const cs_state *state) {
         fprintf(f, "the vehicle broke through, exit speed %.2f m/s (%.1f mph)\n", s.exit_speed,
                 s.exit_speed / MPH);
     else
-        fprintf(f, "%s at t = %.3f s\n", cs_outcome_name(s.outcome), s.t);
+        fprintf(f, "the time limit was reached at t = %.3f s\n", s.t);
     fprintf(f,
             "  impact               %.2f m/s (%.1f mph), %.1f deg, x = %.2f m (%.2f ft), %.0f kg (%.0f lb)\n",
             sc->speed, sc->speed / MPH, sc->angle * 180 / 3.14159265358979323846, sc->impact_x,

@@ -1,5 +1,6 @@
 #include "schema.h"
 
+#include <math.h>
 #include <stddef.h>
 #include <string.h>
 
@@ -353,6 +354,10 @@ static void doc_default(FILE *out, const cs_table *t, const cs_field *f, const c
         break;
     default:
         memcpy(&d, at, sizeof d);
+        if (isinf(d)) {
+            fprintf(out, "`none`");
+            break;
+        }
         fprintf(out, "%.6g", d);
         if (f->q != CS_Q_NUMBER) fprintf(out, " %s", cs_quantity_get(f->q)->label);
         break;

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "grow.h"
 #include "loader_int.h"
 
 /* libcyaml stores each mapping as slots: [2i] the value (string, mapping or array), [2i+1] the
@@ -376,13 +377,7 @@ int cs_file_load(cs_loader *l, const char *path, const cs_node *from) {
         }
         return l->files[i].root ? i : -1;
     }
-    if (l->file_count == l->file_capacity) {
-        int cap = l->file_capacity ? 2 * l->file_capacity : 8;
-        cs_lfile *p = realloc(l->files, (size_t)cap * sizeof *p);
-        if (!p) return -1;
-        l->files = p;
-        l->file_capacity = cap;
-    }
+    if (cs_grow(&l->files, &l->file_capacity, l->file_count, sizeof *l->files) != 0) return -1;
     int f = l->file_count++;
     cs_lfile *lf = &l->files[f];
     memset(lf, 0, sizeof *lf);

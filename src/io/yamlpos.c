@@ -1,6 +1,8 @@
 #define _POSIX_C_SOURCE 200809L
 #include "yamlpos.h"
 
+#include "grow.h"
+
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,13 +20,7 @@ typedef struct frame {
 } frame;
 
 static int add(cs_yposmap *map, char *path, cs_ykind kind, yaml_mark_t at, yaml_mark_t key_at) {
-    if (map->count == map->capacity) {
-        int cap = map->capacity ? 2 * map->capacity : 64;
-        cs_ypos *p = realloc(map->items, (size_t)cap * sizeof *p);
-        if (!p) return -1;
-        map->items = p;
-        map->capacity = cap;
-    }
+    if (cs_grow(&map->items, &map->capacity, map->count, sizeof *map->items) != 0) return -1;
     int duplicate = cs_yposmap_find(map, path) != NULL;
     map->items[map->count++] = (cs_ypos){
         path,      kind, (int)at.line + 1, (int)at.column + 1, (int)key_at.line + 1, (int)key_at.column + 1,
