@@ -22,7 +22,7 @@
 #include <string.h>
 #include <stdio.h>
 
-#define CS_STICK_EPS 1e-9
+#define CS_STICK_EPS 1e-4
 
 enum { U_TILT = 0, U_NODE = 1, U_CRUSH = 2 };
 
@@ -204,6 +204,13 @@ static void scatter(const cs_model *model, cs_state *s, const cs_solver *w, int 
 }
 
 /* ---- residuals ---- */
+/* clamp(y, -b, b) with its corners rounded over a width w (softplus), so Newton sees a smooth switch
+ * between sticking and sliding; it departs from the exact clamp by at most w ln 2. */
+static double softplus(double x) { return x > 30.0 ? x : log1p(exp(x)); }
+static double smooth_clamp(double y, double b, double w) {
+    return y - w * softplus((y - b) / w) + w * softplus((-y - b) / w);
+}
+
 static double node_residual(const cs_model *model, const cs_state *s, int c, int i) {
     const cs_cable_model *cm = &model->cables[c];
     const cs_cable_state *cs = &s->cables[c];
@@ -212,7 +219,7 @@ static double node_residual(const cs_model *model, const cs_state *s, int c, int
     double lambda = tl - tr, b = tanh(0.5 * mu_theta) * (tl + tr);
     double cstiff = cm->rope.ea / (cs_span_length(cs, i - 1) + cs_span_length(cs, i) + 1e-9);
     double dm = cs->m[i] - cs->m_commit[i], y = lambda + cstiff * dm;
-    double proj = y > b ? b : (y < -b ? -b : y);
+    double proj = smooth_clamp(y, b, 1e-4 * cm->rope.fu);
     return (lambda - proj + CS_STICK_EPS * cstiff * dm) / cm->rope.fu;
 }
 
@@ -326,7 +333,7 @@ static double max_step(const cs_model *model, const cs_state *s, const cs_solver
         for (int i = 0; i + 1 < cs->node_count; i++) {
             int a = w->node_index[c * model->max_nodes + i], b = w->node_index[c * model->max_nodes + i + 1];
             double ds = (b >= 0 ? dx[b] : 0.0) - (a >= 0 ? dx[a] : 0.0), sm = cs->m[i + 1] - cs->m[i];
-            if (ds < 0.0 && -ds * t > 0.5 * sm) t = 0.5 * sm / -ds;
+            if (ds < 0.0 && -ds * t > 0.5 * sm) { t = 0.5 * sm / -ds; if (getenv("CS_NEWTON_DEBUG") && t < 1e-3) fprintf(stderr, "  limit: cable %d span %d (%d-%d) s %.4g ds %.4g a %d b %d\n", c, i, cs->node[i], cs->node[i+1], sm, ds, a, b); }
         }
     }
     return t;
@@ -344,7 +351,7 @@ double cs_barrier_newton(const cs_model *model, cs_state *s) {
     scatter(model, s, w, n, x);
     residual(model, s, w, n, r);
     double rn = norm_inf(r, n), tol = model->scenario.solver_tolerance;
-    for (int it = 0; it < 15 && rn > tol; it++) {
+    for (int it = 0; it < 60 && rn > tol; it++) {
         jacobian(model, s, w, n, x, r);
         if (band_factor(w, n) != 0) break;
         for (int k = 0; k < n; k++) dx[k] = -r[k];
