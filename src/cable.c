@@ -61,10 +61,13 @@ double cs_node_friction_ratio(const cs_model *model, const cs_cable_model *cm, c
     double a[3], b[3];
     v3_sub(a, cs->pos + 3 * i, cs->pos + 3 * (i - 1));
     v3_sub(b, cs->pos + 3 * (i + 1), cs->pos + 3 * i);
-    double na = v3_norm(a), nb = v3_norm(b);
-    if (na < 1e-12 || nb < 1e-12) return 1.0;
-    double c = v3_dot(a, b) / (na * nb);
-    double theta = acos(c > 1.0 ? 1.0 : (c < -1.0 ? -1.0 : c));
+    double x[3];
+    v3_cross(x, a, b);
+    /* turning angle, rounded near a straight path where |offset| would make it a kink:
+     * sqrt(theta^2 + t0^2) - t0 differs from theta by less than t0 = 1 mrad */
+    const double t0 = 1e-3;
+    double theta = atan2(v3_norm(x), v3_dot(a, b));
+    theta = sqrt(theta * theta + t0 * t0) - t0;
     int id = cs->node[i];
     double mu = id >= 0 ? cm->mu_post : model->vehicle.def.face_friction;
     return exp(mu * theta);

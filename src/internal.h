@@ -96,12 +96,12 @@ typedef struct cs_post_state {
 
 /* Workspace of the Newton solve of the barrier (solve.c), sized at state creation. */
 typedef struct cs_solver {
-    struct slot *slots;  /* unknowns in barrier order */
-    int *tilt_index;     /* [post_count] index of a post's first tilt unknown, -1 if none */
-    int *node_index;     /* [cable_count * max_nodes] index of a node's material unknown, -1 if none */
+    struct slot *slots; /* unknowns in barrier order */
+    int *tilt_index;    /* [post_count] index of a post's first tilt unknown, -1 if none */
+    int *node_index;    /* [cable_count * max_nodes] index of a node's material unknown, -1 if none */
     int crush_index;
     double *x, *r, *dx, *xt, *rt;
-    double *band;        /* banded Jacobian / LU factors */
+    double *band; /* banded Jacobian / LU factors */
     size_t band_capacity;
     int *pivot;
     int kl, ku, band_width;

@@ -46,7 +46,7 @@ static void axis_jacobian(const double *al, double *j) {
  * rounded over 1% of M_cap (softplus) and a 0.1% slope past it, so that Newton sees a smooth,
  * regular yield. */
 static double capped(double n, double cap) {
-    double w = 0.01 * cap, x = (n - cap) / w;
+    double w = 0.05 * cap, x = (n - cap) / w;
     double sp = x > 30.0 ? x : log1p(exp(x));
     return n - (1.0 - 1e-3) * w * sp;
 }

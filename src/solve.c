@@ -10,6 +10,9 @@
  *           (dm = 0) inside the band and slide (lambda = +-b) outside it, as Coulomb friction.
  *           eps keeps a node between two slack spans sticking instead of undetermined.
  *   crush:  N(crush) - C(crush)                                             (barrier.c)
+ * Three corners are rounded so that Newton sees a smooth problem (docs/assumptions.md): the clamp
+ * over 1e-4 Fu (softplus), the post's yield over 5% of its capacity (post.c; the hinge develops
+ * between first yield and Mp), and the capstan angle within 1 mrad of a straight path (cable.c).
  * Unknowns are ordered along the barrier, so the Jacobian is banded: finite differences perturb
  * columns 2w + 1 apart together, and a banded LU with partial pivoting solves each Newton step. Cost
  * is linear in the number of posts; the solution does not depend on any sweep order, so a symmetric
@@ -20,13 +23,14 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <stdio.h>
 
 #define CS_STICK_EPS 1e-4
 
 enum { U_TILT = 0, U_NODE = 1, U_CRUSH = 2 };
 
-static int is_corner(int id) { return id == CS_NODE_LEFT || id == CS_NODE_RIGHT; }
+static int is_corner(int id) {
+    return id == CS_NODE_LEFT || id == CS_NODE_RIGHT;
+}
 
 static int node_slides(const cs_model *model, const cs_cable_state *cs, int i) {
     int id = cs->node[i];
@@ -104,9 +108,11 @@ static int assemble(const cs_model *model, cs_state *s, cs_solver *w) {
     if (has_face_load(model, s)) sl[n++] = (slot){s->pos[0], U_CRUSH, 0, 0};
     qsort(sl, (size_t)n, sizeof *sl, cmp_slot);
     /* index maps: tilt of post p, node i of cable c, crush */
-    for (int p = 0; p < model->post_count; p++) w->tilt_index[p] = -1;
+    for (int p = 0; p < model->post_count; p++)
+        w->tilt_index[p] = -1;
     for (int c = 0; c < model->cable_count; c++)
-        for (int i = 0; i < model->max_nodes; i++) w->node_index[c * model->max_nodes + i] = -1;
+        for (int i = 0; i < model->max_nodes; i++)
+            w->node_index[c * model->max_nodes + i] = -1;
     w->crush_index = -1;
     for (int k = 0; k < n; k++) {
         if (sl[k].kind == U_TILT && sl[k].b == 0) w->tilt_index[sl[k].a] = k;
@@ -117,7 +123,7 @@ static int assemble(const cs_model *model, cs_state *s, cs_solver *w) {
 }
 
 /* Unknowns a node's position depends on: its post's tilt, or the crush for a corner. */
-static void position_deps(const cs_model *model, const cs_solver *w, const cs_cable_state *cs, int i, int *lo, int *hi) {
+static void position_deps(const cs_solver *w, const cs_cable_state *cs, int i, int *lo, int *hi) {
     int id = cs->node[i], k = -1;
     if (id >= 0 && w->tilt_index[id] >= 0) k = w->tilt_index[id];
     if (is_corner(id)) k = w->crush_index;
@@ -125,12 +131,11 @@ static void position_deps(const cs_model *model, const cs_solver *w, const cs_ca
     int k2 = (id >= 0) ? k + 1 : k;
     if (k < *lo) *lo = k;
     if (k2 > *hi) *hi = k2;
-    (void)model;
 }
 
 /* Range of unknowns the residual of a node's neighbourhood (nodes i-1..i+1) depends on. */
-static void neighbourhood(const cs_model *model, const cs_solver *w, const cs_cable_state *cs, int c, int i, int *lo,
-                          int *hi) {
+static void neighbourhood(const cs_model *model, const cs_solver *w, const cs_cable_state *cs, int c, int i,
+                          int *lo, int *hi) {
     for (int j = i - 1; j <= i + 1; j++) {
         if (j < 0 || j >= cs->node_count) continue;
         int k = w->node_index[c * model->max_nodes + j];
@@ -138,7 +143,7 @@ static void neighbourhood(const cs_model *model, const cs_solver *w, const cs_ca
             if (k < *lo) *lo = k;
             if (k > *hi) *hi = k;
         }
-        position_deps(model, w, cs, j, lo, hi);
+        position_deps(w, cs, j, lo, hi);
     }
 }
 
@@ -153,7 +158,8 @@ static void bandwidth(const cs_model *model, cs_state *s, cs_solver *w, int n, i
         } else if (u->kind == U_TILT) {
             for (int c = 0; c < model->cable_count; c++) {
                 const cs_cable_state *cs = &s->cables[c];
-                if (cs->status == CS_CABLE_INTACT && cs->where[u->a] > 0) neighbourhood(model, w, cs, c, cs->where[u->a], &lo, &hi);
+                if (cs->status == CS_CABLE_INTACT && cs->where[u->a] > 0)
+                    neighbourhood(model, w, cs, c, cs->where[u->a], &lo, &hi);
             }
             hi = hi > k + 1 ? hi : k + 1;
             lo = lo < k - 1 ? lo : k - 1;
@@ -173,14 +179,13 @@ static void bandwidth(const cs_model *model, cs_state *s, cs_solver *w, int n, i
 }
 
 /* ---- state <-> vector ---- */
-static void gather(const cs_model *model, const cs_state *s, const cs_solver *w, int n, double *x) {
+static void gather(const cs_state *s, const cs_solver *w, int n, double *x) {
     for (int k = 0; k < n; k++) {
         const slot *u = &w->slots[k];
         if (u->kind == U_TILT) x[k] = s->posts[u->a].tilt[u->b];
         if (u->kind == U_NODE) x[k] = s->cables[u->a].m[u->b];
         if (u->kind == U_CRUSH) x[k] = s->crush;
     }
-    (void)model;
 }
 
 /* Put x into the state and bring every node position and span tension in line with it. */
@@ -198,7 +203,8 @@ static void scatter(const cs_model *model, cs_state *s, const cs_solver *w, int 
         if (cs->status != CS_CABLE_INTACT) continue;
         for (int i = 1; i + 1 < cs->node_count; i++)
             if (cs->node[i] >= 0)
-                cs_post_attachment(model, cs->node[i], s->posts[cs->node[i]].tilt, model->cables[c].z, cs->pos + 3 * i);
+                cs_post_attachment(model, cs->node[i], s->posts[cs->node[i]].tilt, model->cables[c].z,
+                                   cs->pos + 3 * i);
         cs_cable_update_tensions(&model->cables[c], cs);
     }
 }
@@ -206,7 +212,9 @@ static void scatter(const cs_model *model, cs_state *s, const cs_solver *w, int 
 /* ---- residuals ---- */
 /* clamp(y, -b, b) with its corners rounded over a width w (softplus), so Newton sees a smooth switch
  * between sticking and sliding; it departs from the exact clamp by at most w ln 2. */
-static double softplus(double x) { return x > 30.0 ? x : log1p(exp(x)); }
+static double softplus(double x) {
+    return x > 30.0 ? x : log1p(exp(x));
+}
 static double smooth_clamp(double y, double b, double w) {
     return y - w * softplus((y - b) / w) + w * softplus((-y - b) / w);
 }
@@ -236,14 +244,16 @@ static void residual(const cs_model *model, cs_state *s, const cs_solver *w, int
         } else if (u->kind == U_CRUSH) {
             const cs_vehicle_def *v = &model->vehicle.def;
             double nf = cs_face_normal_force_now(model, s);
-            r[k] = (nf - cs_crush_force(v, s->crush, s->crush_max)) / v->crush_force[v->crush_point_count - 1];
+            r[k] =
+                (nf - cs_crush_force(v, s->crush, s->crush_max)) / v->crush_force[v->crush_point_count - 1];
         }
     }
 }
 
 static double norm_inf(const double *r, int n) {
     double m = 0.0;
-    for (int k = 0; k < n; k++) m = fmax(m, fabs(r[k]));
+    for (int k = 0; k < n; k++)
+        m = fmax(m, fabs(r[k]));
     return m;
 }
 
@@ -275,7 +285,8 @@ static int band_factor(cs_solver *w, int n) {
             double f = BAND(w, i, k) / BAND(w, k, k);
             BAND(w, i, k) = f;
             if (f != 0.0)
-                for (int j = k + 1; j <= jend; j++) BAND(w, i, j) -= f * BAND(w, k, j);
+                for (int j = k + 1; j <= jend; j++)
+                    BAND(w, i, j) -= f * BAND(w, k, j);
         }
     }
     return 0;
@@ -291,36 +302,42 @@ static void band_solve(const cs_solver *w, int n, double *b) {
             b[p] = t;
         }
         int last = k + kl < n - 1 ? k + kl : n - 1;
-        for (int i = k + 1; i <= last; i++) b[i] -= BAND(w, i, k) * b[k];
+        for (int i = k + 1; i <= last; i++)
+            b[i] -= BAND(w, i, k) * b[k];
     }
     for (int k = n - 1; k >= 0; k--) {
         int jend = k + ku + kl < n - 1 ? k + ku + kl : n - 1;
         double sum = b[k];
-        for (int j = k + 1; j <= jend; j++) sum -= BAND(w, k, j) * b[j];
+        for (int j = k + 1; j <= jend; j++)
+            sum -= BAND(w, k, j) * b[j];
         b[k] = sum / BAND(w, k, k);
     }
 }
 
 /* Finite-difference Jacobian, columns 2 w + 1 apart perturbed together. */
-static void jacobian(const cs_model *model, cs_state *s, cs_solver *w, int n, const double *x, const double *r) {
+static void jacobian(const cs_model *model, cs_state *s, cs_solver *w, int n, const double *x,
+                     const double *r) {
     int kl = w->kl, ku = w->ku, stride = kl + ku + 1;
     memset(w->band, 0, (size_t)n * (size_t)w->band_width * sizeof *w->band);
     for (int g = 0; g < stride && g < n; g++) {
         memcpy(w->xt, x, (size_t)n * sizeof *x);
-        for (int j = g; j < n; j += stride) w->xt[j] += fd_step(&w->slots[j], x[j]);
+        for (int j = g; j < n; j += stride)
+            w->xt[j] += fd_step(&w->slots[j], x[j]);
         scatter(model, s, w, n, w->xt);
         residual(model, s, w, n, w->rt);
         for (int j = g; j < n; j += stride) {
             double h = w->xt[j] - x[j];
             int i0 = j - ku > 0 ? j - ku : 0, i1 = j + kl < n - 1 ? j + kl : n - 1;
-            for (int i = i0; i <= i1; i++) BAND(w, i, j) = (w->rt[i] - r[i]) / h;
+            for (int i = i0; i <= i1; i++)
+                BAND(w, i, j) = (w->rt[i] - r[i]) / h;
         }
     }
 }
 
 /* Largest fraction of a Newton step that keeps every span's rope at least half of what it has, turns
  * no post by more than 0.1 rad and moves the crush by at most 5 cm. */
-static double max_step(const cs_model *model, const cs_state *s, const cs_solver *w, int n, const double *dx) {
+static double max_step(const cs_model *model, const cs_state *s, const cs_solver *w, int n,
+                       const double *dx) {
     double t = 1.0;
     for (int k = 0; k < n; k++) {
         const slot *u = &w->slots[k];
@@ -333,7 +350,7 @@ static double max_step(const cs_model *model, const cs_state *s, const cs_solver
         for (int i = 0; i + 1 < cs->node_count; i++) {
             int a = w->node_index[c * model->max_nodes + i], b = w->node_index[c * model->max_nodes + i + 1];
             double ds = (b >= 0 ? dx[b] : 0.0) - (a >= 0 ? dx[a] : 0.0), sm = cs->m[i + 1] - cs->m[i];
-            if (ds < 0.0 && -ds * t > 0.5 * sm) { t = 0.5 * sm / -ds; if (getenv("CS_NEWTON_DEBUG") && t < 1e-3) fprintf(stderr, "  limit: cable %d span %d (%d-%d) s %.4g ds %.4g a %d b %d\n", c, i, cs->node[i], cs->node[i+1], sm, ds, a, b); }
+            if (ds < 0.0 && -ds * t > 0.5 * sm) t = 0.5 * sm / -ds;
         }
     }
     return t;
@@ -347,33 +364,32 @@ double cs_barrier_newton(const cs_model *model, cs_state *s) {
     w->band_width = 2 * w->kl + w->ku + 1;
     if ((size_t)n * (size_t)w->band_width > w->band_capacity) return -1.0; /* caller falls back */
     double *x = w->x, *r = w->r, *dx = w->dx;
-    gather(model, s, w, n, x);
+    gather(s, w, n, x);
     scatter(model, s, w, n, x);
     residual(model, s, w, n, r);
     double rn = norm_inf(r, n), tol = model->scenario.solver_tolerance;
-    for (int it = 0; it < 60 && rn > tol; it++) {
+    for (int it = 0; it < 30 && rn > tol; it++) {
         jacobian(model, s, w, n, x, r);
         if (band_factor(w, n) != 0) break;
-        for (int k = 0; k < n; k++) dx[k] = -r[k];
+        for (int k = 0; k < n; k++)
+            dx[k] = -r[k];
         band_solve(w, n, dx);
         double t = max_step(model, s, w, n, dx), merit = 0.0, trial_merit = 0.0;
-        for (int k = 0; k < n; k++) merit += r[k] * r[k];
+        for (int k = 0; k < n; k++)
+            merit += r[k] * r[k];
         int accepted = 0;
         for (int ls = 0; ls < 30; ls++, t *= 0.5) {
-            for (int k = 0; k < n; k++) w->xt[k] = x[k] + t * dx[k];
+            for (int k = 0; k < n; k++)
+                w->xt[k] = x[k] + t * dx[k];
             scatter(model, s, w, n, w->xt);
             residual(model, s, w, n, w->rt);
             trial_merit = 0.0;
-            for (int k = 0; k < n; k++) trial_merit += w->rt[k] * w->rt[k];
+            for (int k = 0; k < n; k++)
+                trial_merit += w->rt[k] * w->rt[k];
             if (trial_merit < (1.0 - 1e-4 * t) * merit) {
                 accepted = 1;
                 break;
             }
-        }
-        if (getenv("CS_NEWTON_DEBUG")) {
-            int worst = 0;
-            for (int k = 0; k < n; k++) if (fabs(w->rt[k]) > fabs(w->rt[worst])) worst = k;
-            fprintf(stderr, "t=%.4f it %d n %d kl %d ku %d |r| %.3g -> %.3g step %.3g acc %d worst %d kind %d a %d b %d\n", s->t, it, n, w->kl, w->ku, rn, norm_inf(w->rt, n), t, accepted, worst, w->slots[worst].kind, w->slots[worst].a, w->slots[worst].b);
         }
         if (!accepted) break;
         memcpy(x, w->xt, (size_t)n * sizeof *x);
