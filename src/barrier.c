@@ -144,7 +144,8 @@ double cs_barrier_solve(const cs_model *model, cs_state *s) {
     const cs_scenario_def *sc = &model->scenario;
     if (!any_engaged(model, s)) crush_solve(model, s); /* an unloaded face springs back to its set */
     double worst = cs_barrier_newton(model, s);
-    if (worst < 0.0) worst = gauss_seidel(model, s, sc->solver_max_sweeps); /* band too wide */
+    if (worst < 0.0)
+        worst = gauss_seidel(model, s, sc->solver_max_sweeps); /* Newton stalled, or band too wide */
     for (int c = 0; c < model->cable_count; c++)
         cs_cable_update_tensions(&model->cables[c], &s->cables[c]);
     s->face_force = any_engaged(model, s) ? cs_face_normal_force_now(model, s) : 0.0;

@@ -63,11 +63,7 @@ double cs_node_friction_ratio(const cs_model *model, const cs_cable_model *cm, c
     v3_sub(b, cs->pos + 3 * (i + 1), cs->pos + 3 * i);
     double x[3];
     v3_cross(x, a, b);
-    /* turning angle, rounded near a straight path where |offset| would make it a kink:
-     * sqrt(theta^2 + t0^2) - t0 differs from theta by less than t0 = 1 mrad */
-    const double t0 = 1e-3;
-    double theta = atan2(v3_norm(x), v3_dot(a, b));
-    theta = sqrt(theta * theta + t0 * t0) - t0;
+    double theta = atan2(v3_norm(x), v3_dot(a, b)); /* turning angle, accurate near 0 and pi */
     int id = cs->node[i];
     double mu = id >= 0 ? cm->mu_post : model->vehicle.def.face_friction;
     return exp(mu * theta);

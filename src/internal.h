@@ -100,7 +100,7 @@ typedef struct cs_solver {
     int *tilt_index;    /* [post_count] index of a post's first tilt unknown, -1 if none */
     int *node_index;    /* [cable_count * max_nodes] index of a node's material unknown, -1 if none */
     int crush_index;
-    double *x, *r, *dx, *xt, *rt;
+    double *x, *r, *dx, *xt, *rt, *x0;
     double *band; /* banded Jacobian / LU factors */
     size_t band_capacity;
     int *pivot;

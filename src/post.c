@@ -42,19 +42,10 @@ static void axis_jacobian(const double *al, double *j) {
     j[4] = -s * al[0], j[5] = -s * al[1];
 }
 
-/* Magnitude of the resisting moment for an elastic trial moment n: min(n, M_cap) with the corner
- * rounded over 1% of M_cap (softplus) and a 0.1% slope past it, so that Newton sees a smooth,
- * regular yield. */
-static double capped(double n, double cap) {
-    double w = 0.05 * cap, x = (n - cap) / w;
-    double sp = x > 30.0 ? x : log1p(exp(x));
-    return n - (1.0 - 1e-3) * w * sp;
-}
-
 void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double *q) {
     double tr[2] = {pm->k_rot * (tilt[0] - ps->plastic[0]), pm->k_rot * (tilt[1] - ps->plastic[1])};
     double n = hypot(tr[0], tr[1]);
-    double f = n > 0.0 ? capped(n, pm->moment_cap) / n : 1.0;
+    double f = n > pm->moment_cap ? pm->moment_cap / n : 1.0;
     q[0] = tr[0] * f, q[1] = tr[1] * f;
 }
 
@@ -176,8 +167,8 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     if (!cs_post_standing(ps)) return;
     const cs_post_model *pm = &model->posts[p];
     double tr[2] = {pm->k_rot * (ps->tilt[0] - ps->plastic[0]), pm->k_rot * (ps->tilt[1] - ps->plastic[1])};
-    double n = hypot(tr[0], tr[1]), q = n > 0.0 ? capped(n, pm->moment_cap) : 0.0;
-    if (n - q > 1e-9 * pm->moment_cap) { /* the part of the trial moment past the rounded cap flows */
+    double n = hypot(tr[0], tr[1]), q = pm->moment_cap;
+    if (n > q) { /* radial return to the capacity */
         double u[2] = {tr[0] / n, tr[1] / n};
         double np[2] = {ps->tilt[0] - q / pm->k_rot * u[0], ps->tilt[1] - q / pm->k_rot * u[1]};
         double w = q * hypot(np[0] - ps->plastic[0], np[1] - ps->plastic[1]);
@@ -186,7 +177,7 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
         else
             s->e_post_plastic += w;
         ps->plastic[0] = np[0], ps->plastic[1] = np[1];
-        if (!ps->yielded && q >= 0.99 * pm->moment_cap) {
+        if (!ps->yielded) {
             ps->yielded = 1;
             ps->status = pm->soil_yields ? CS_POST_SOIL : CS_POST_HINGED;
             cs_event_add(model, s, pm->soil_yields ? CS_EVENT_FOOTING_ROTATION : CS_EVENT_POST_HINGE,

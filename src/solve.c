@@ -10,9 +10,8 @@
  *           (dm = 0) inside the band and slide (lambda = +-b) outside it, as Coulomb friction.
  *           eps keeps a node between two slack spans sticking instead of undetermined.
  *   crush:  N(crush) - C(crush)                                             (barrier.c)
- * Three corners are rounded so that Newton sees a smooth problem (docs/assumptions.md): the clamp
- * over 1e-4 Fu (softplus), the post's yield over 5% of its capacity (post.c; the hinge develops
- * between first yield and Mp), and the capstan angle within 1 mrad of a straight path (cable.c).
+ * The clamp's corners are rounded over 1e-4 Fu (softplus) so that Newton sees a smooth switch between
+ * sticking and sliding (docs/assumptions.md).
  * Unknowns are ordered along the barrier, so the Jacobian is banded: finite differences perturb
  * columns 2w + 1 apart together, and a banded LU with partial pivoting solves each Newton step. Cost
  * is linear in the number of posts; the solution does not depend on any sweep order, so a symmetric
@@ -25,6 +24,7 @@
 #include <string.h>
 
 #define CS_STICK_EPS 1e-4
+#define CS_NEWTON_GIVE_UP 1e-2 /* residual above which the step goes to Gauss-Seidel instead */
 
 enum { U_TILT = 0, U_NODE = 1, U_CRUSH = 2 };
 
@@ -52,12 +52,12 @@ int cs_solver_init(const cs_model *model, cs_solver *w) {
     w->slots = calloc(n, sizeof *w->slots);
     w->tilt_index = calloc(np ? np : 1, sizeof *w->tilt_index);
     w->node_index = calloc(nc * nn, sizeof *w->node_index);
-    w->x = calloc(5 * n, sizeof *w->x);
+    w->x = calloc(6 * n, sizeof *w->x);
     w->band_capacity = n * per_row;
     w->band = calloc(w->band_capacity, sizeof *w->band);
     w->pivot = calloc(n, sizeof *w->pivot);
     if (!w->slots || !w->tilt_index || !w->node_index || !w->x || !w->band || !w->pivot) return -1;
-    w->r = w->x + n, w->dx = w->x + 2 * n, w->xt = w->x + 3 * n, w->rt = w->x + 4 * n;
+    w->r = w->x + n, w->dx = w->x + 2 * n, w->xt = w->x + 3 * n, w->rt = w->x + 4 * n, w->x0 = w->x + 5 * n;
     return 0;
 }
 
@@ -365,6 +365,7 @@ double cs_barrier_newton(const cs_model *model, cs_state *s) {
     if ((size_t)n * (size_t)w->band_width > w->band_capacity) return -1.0; /* caller falls back */
     double *x = w->x, *r = w->r, *dx = w->dx;
     gather(s, w, n, x);
+    memcpy(w->x0, x, (size_t)n * sizeof *x);
     scatter(model, s, w, n, x);
     residual(model, s, w, n, r);
     double rn = norm_inf(r, n), tol = model->scenario.solver_tolerance;
@@ -395,6 +396,10 @@ double cs_barrier_newton(const cs_model *model, cs_state *s) {
         memcpy(x, w->xt, (size_t)n * sizeof *x);
         memcpy(r, w->rt, (size_t)n * sizeof *r);
         rn = norm_inf(r, n);
+    }
+    if (rn > CS_NEWTON_GIVE_UP) { /* stalled far from a solution: hand the step back untouched */
+        scatter(model, s, w, n, w->x0);
+        return -1.0;
     }
     scatter(model, s, w, n, x);
     return rn;
