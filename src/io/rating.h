@@ -1,0 +1,50 @@
+/* Anti-ram ratings: how a run's result reads against SD-STD-02.01 (1985), its revision A (2003) and
+ * ASTM F2656. Facts from shared/reference/data/standards.md; what could not be confirmed there is a
+ * named field of cs_rating_rules with its documented default (docs/ratings.md), so a user can see and
+ * override it. This is post-processing of a run's summary: no physics here. */
+#ifndef CS_RATING_H
+#define CS_RATING_H
+
+#include "cablesim/cablesim.h"
+
+typedef enum cs_standard {
+    CS_SD_STD_02_01 = 0,
+    CS_SD_STD_02_01A,
+    CS_ASTM_F2656,
+    CS_STANDARD_COUNT
+} cs_standard;
+
+typedef struct cs_rating_rules {
+    /* speed windows of the 30, 40 and 50 mph ratings, m/s (UNCONFIRMED: 28.0-37.9, 38.0-46.9, >= 47.0 mph) */
+    double window_low[3];
+    double window_high[3];
+    /* depth of the barrier from its attack face to its protected-side face, m (a cable barrier's posts
+     * and rails; measured-from-the-inside rules subtract it) */
+    double barrier_depth;
+} cs_rating_rules;
+
+typedef struct cs_rating {
+    cs_standard standard;
+    char vehicle_class[8]; /* "M", "C", "PU", "H" (ASTM); "truck" (SD-STD) */
+    int speed_mph;         /* 30, 40, 50 (60 for C/PU); 0 if below every window */
+    double penetration;    /* m, as the standard measures it (HUGE_VAL through the barrier) */
+    const char *reference; /* what the penetration is measured from and to */
+    char label[24];        /* "K8/L2", "M40/P1", "K12 (A)", or "none" */
+    int rated;             /* 0 if the run earns no rating */
+} cs_rating;
+
+cs_rating_rules cs_default_rating_rules(void);
+const char *cs_standard_name(cs_standard s);               /* "sd-std-02.01", "sd-std-02.01a", "astm-f2656" */
+int cs_standard_parse(const char *name, cs_standard *out); /* 0 on success */
+
+/* The rating a run earns: its vehicle class and impact speed, and its summary's outcome and
+ * penetration measured as the standard says (vehicle front, or front of the cargo bed). */
+cs_rating cs_rate_run(cs_standard standard, const char *vehicle_class, double speed,
+                      const cs_summary *summary, const cs_vehicle_def *vehicle, const cs_rating_rules *rules);
+
+/* Pieces, for tests and for `cablesim rate`: the speed designation (mph) of an impact speed, and the
+ * penetration level of a measured penetration ("L3", "P2"...; NULL if none). */
+int cs_rating_speed_mph(const cs_rating_rules *rules, double speed);
+const char *cs_rating_level(cs_standard standard, double penetration);
+
+#endif

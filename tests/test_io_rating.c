@@ -1,0 +1,75 @@
+/* Ratings: every penetration boundary (1, 6, 7, 15, 30 m) and speed window edge, and the reference
+ * point each standard measures from (data/standards.md). */
+#include "check.h"
+#include "rating.h"
+
+#define MPH 0.44704
+
+static cs_summary stopped_at(double front) {
+    cs_summary s;
+    memset(&s, 0, sizeof s);
+    s.outcome = CS_STOPPED;
+    s.max_dynamic_penetration = front;
+    return s;
+}
+
+static void penetration_boundaries(void **state) {
+    (void)state;
+    struct {
+        cs_standard std;
+        double p;
+        const char *level;
+    } cases[] = {
+        {CS_SD_STD_02_01, 1.00, "L3"}, {CS_SD_STD_02_01, 1.01, "L2"},  {CS_SD_STD_02_01, 6.00, "L2"},
+        {CS_SD_STD_02_01, 6.01, "L1"}, {CS_SD_STD_02_01, 15.0, "L1"},  {CS_SD_STD_02_01, 15.01, NULL},
+        {CS_SD_STD_02_01A, 1.00, "A"}, {CS_SD_STD_02_01A, 1.01, NULL}, {CS_ASTM_F2656, 1.00, "P1"},
+        {CS_ASTM_F2656, 1.01, "P2"},   {CS_ASTM_F2656, 7.00, "P2"},    {CS_ASTM_F2656, 7.01, "P3"},
+        {CS_ASTM_F2656, 30.0, "P3"},   {CS_ASTM_F2656, 30.01, "P4"}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        const char *got = cs_rating_level(cases[i].std, cases[i].p);
+        if (cases[i].level == NULL)
+            assert_null(got);
+        else
+            assert_string_equal(got, cases[i].level);
+    }
+}
+
+static void speed_windows(void **state) {
+    (void)state;
+    cs_rating_rules r = cs_default_rating_rules();
+    const double mph[] = {27.9, 28.0, 37.9, 38.0, 46.9, 47.0, 60.0};
+    const int rating[] = {0, 30, 30, 40, 40, 50, 50};
+    for (int i = 0; i < 7; i++)
+        assert_int_equal(cs_rating_speed_mph(&r, mph[i] * MPH), rating[i]);
+}
+
+static void reference_points(void **state) {
+    (void)state;
+    cs_rating_rules rules = cs_default_rating_rules();
+    cs_vehicle_def truck = cs_default_vehicle_def();
+    truck.front_to_cargo_bed = 2.6;
+    cs_summary s = stopped_at(3.9); /* the truck's front stopped 3.9 m past the attack face */
+    cs_rating sd = cs_rate_run(CS_SD_STD_02_01, "M", 40 * MPH, &s, &truck, &rules);
+    CHECK_ABS(sd.penetration, 3.9, 1e-12); /* front from the attack face */
+    assert_string_equal(sd.label, "K8/L2");
+    cs_rating astm = cs_rate_run(CS_ASTM_F2656, "M", 40 * MPH, &s, &truck, &rules);
+    CHECK_ABS(astm.penetration, 3.9 - 2.6 - rules.barrier_depth,
+              1e-12); /* cargo bed from the protected face */
+    assert_string_equal(astm.label, "M40/P2");
+    cs_rating rev_a = cs_rate_run(CS_SD_STD_02_01A, "M", 50 * MPH, &s, &truck, &rules);
+    assert_string_equal(rev_a.label, "none"); /* 1.2 m > 1 m */
+    s.outcome = CS_BREAKTHROUGH;
+    cs_rating through = cs_rate_run(CS_ASTM_F2656, "M", 50 * MPH, &s, &truck, &rules);
+    assert_string_equal(through.label, "M50/P4");
+    assert_string_equal(cs_rate_run(CS_SD_STD_02_01, "M", 50 * MPH, &s, &truck, &rules).label, "none");
+    cs_standard st;
+    assert_int_equal(cs_standard_parse("astm-f2656", &st), 0);
+    assert_int_equal(st, CS_ASTM_F2656);
+    assert_int_equal(cs_standard_parse("pas-68", &st), -1);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {cmocka_unit_test(penetration_boundaries),
+                                       cmocka_unit_test(speed_windows), cmocka_unit_test(reference_points)};
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
