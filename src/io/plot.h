@@ -1,0 +1,150 @@
+/* A small plotting layer on cairo: panels with axes (nice ticks, unit labels, an optional second y scale
+ * on the right, equal-aspect views), lines, markers, filled and stacked areas, text, legends and a
+ * colour bar, written as PNG, SVG or PDF. Immediate mode: a figure is a function that draws on a
+ * cs_plot; cs_plot_write calls it once for the format asked. Device units are pixels (points in PDF). */
+#ifndef CS_PLOT_H
+#define CS_PLOT_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include <cairo.h>
+
+typedef enum cs_plot_format { CS_PLOT_UNKNOWN = -1, CS_PLOT_PNG, CS_PLOT_SVG, CS_PLOT_PDF } cs_plot_format;
+
+/* The format named by a file name's extension (.png, .svg, .pdf), CS_PLOT_UNKNOWN otherwise. */
+cs_plot_format cs_plot_format_of(const char *name);
+const char *cs_plot_extension(cs_plot_format format); /* "png", "svg", "pdf" */
+
+typedef struct cs_plot {
+    cairo_t *cr;
+    double width, height;
+} cs_plot;
+
+typedef struct cs_rgb {
+    double r, g, b;
+} cs_rgb;
+
+typedef enum cs_marker {
+    CS_MARK_NONE = 0,
+    CS_MARK_CIRCLE,
+    CS_MARK_SQUARE,
+    CS_MARK_TRIANGLE, /* pointing up */
+    CS_MARK_DIAMOND,
+    CS_MARK_CROSS /* an x */
+} cs_marker;
+
+typedef enum cs_dash { CS_SOLID = 0, CS_DASHED, CS_DOTTED } cs_dash;
+
+typedef struct cs_style {
+    cs_rgb color;
+    double width; /* line width; 0 draws no line (markers only) */
+    cs_dash dash;
+    cs_marker marker; /* drawn at every point */
+    double marker_size;
+} cs_style;
+
+typedef struct cs_box {
+    double x, y, w, h; /* device units, y down */
+} cs_box;
+
+enum { CS_LEGEND_MAX = 16, CS_LABEL_SIZE = 96 };
+
+typedef enum cs_legend_kind { CS_LEGEND_LINE, CS_LEGEND_AREA } cs_legend_kind;
+
+typedef struct cs_legend_entry {
+    cs_legend_kind kind;
+    cs_style style; /* for an area: style.color is the fill */
+    char label[CS_LABEL_SIZE];
+} cs_legend_entry;
+
+typedef enum cs_legend_place {
+    CS_LEGEND_TOP_RIGHT,
+    CS_LEGEND_TOP_LEFT,
+    CS_LEGEND_BOTTOM_RIGHT,
+    CS_LEGEND_BOTTOM_LEFT,
+    CS_LEGEND_OUTSIDE_RIGHT /* needs legend_width reserved before layout */
+} cs_legend_place;
+
+/* One panel. The caller sets the labels and options, fits the data range, then lays it out; after
+ * cs_axes_layout the ranges are final and area is the plotting area. */
+typedef struct cs_axes {
+    const char *title;
+    const char *xlabel, *ylabel; /* with units: "time (s)" */
+    const char *y2label;         /* right axis, showing y * y2_scale (e.g. mph beside m/s) */
+    double y2_scale;             /* 0: no right axis */
+    int equal;                   /* a view: one unit is as long on x as on y */
+    int fix_x, fix_y;            /* keep the range as set, do not round it out to ticks */
+    double legend_width;         /* space kept on the right for an outside legend */
+    double x0, x1, y0, y1;       /* data range */
+    double xstep, ystep, y2step; /* tick spacing, set by layout */
+    cs_box area;                 /* plotting area, set by layout */
+    int legend_count;
+    cs_legend_entry legend[CS_LEGEND_MAX];
+} cs_axes;
+
+/* Empty axes with these labels (NULL: none). */
+void cs_axes_init(cs_axes *a, const char *title, const char *xlabel, const char *ylabel);
+/* Widen the range to hold the finite points (x or y may be NULL: that coordinate is not fitted). */
+void cs_axes_fit(cs_axes *a, const double *x, const double *y, int n);
+void cs_axes_fit_point(cs_axes *a, double x, double y);
+/* Set the range (and keep it: no rounding out to ticks). */
+void cs_axes_set_x(cs_axes *a, double x0, double x1);
+void cs_axes_set_y(cs_axes *a, double y0, double y1);
+/* Choose ticks, fix the ranges and the area inside panel, draw frame, grid, ticks, labels, title. */
+void cs_axes_layout(cs_plot *p, cs_axes *a, cs_box panel);
+/* Device coordinates of a data point (after layout). */
+double cs_axes_px(const cs_axes *a, double x);
+double cs_axes_py(const cs_axes *a, double y);
+
+/* A tick spacing of 1, 2 or 5 times a power of ten giving about target ticks over [lo, hi]. */
+double cs_plot_nice_step(double lo, double hi, int target);
+
+/* Data drawing, clipped to the area. A non-finite y breaks a line. label: a legend entry (NULL: none). */
+void cs_plot_line(cs_plot *p, cs_axes *a, const double *x, const double *y, int n, const cs_style *s,
+                  const char *label);
+/* Fill between lo and hi (lo NULL: zero). */
+void cs_plot_area(cs_plot *p, cs_axes *a, const double *x, const double *lo, const double *hi, int n,
+                  cs_rgb fill, double alpha, const char *label);
+/* Stacked areas: layer k (of count) is y[k * n + i]; bands are drawn from zero upward in order. */
+void cs_plot_stack(cs_plot *p, cs_axes *a, const double *x, const double *y, int count, int n,
+                   const cs_rgb *fills, const char *const *labels);
+void cs_plot_hline(cs_plot *p, cs_axes *a, double y, const cs_style *s, const char *label);
+void cs_plot_vline(cs_plot *p, cs_axes *a, double x, const cs_style *s, const char *label);
+/* A closed polygon: fill (NULL: none) and outline (NULL: none). */
+void cs_plot_polygon(cs_plot *p, cs_axes *a, const double *x, const double *y, int n, const cs_rgb *fill,
+                     const cs_style *outline);
+/* A line segment from (x0, y0) to (x1, y1). */
+void cs_plot_segment(cs_plot *p, cs_axes *a, double x0, double y0, double x1, double y1, const cs_style *s);
+/* Text at a data point, offset by (dx, dy) device units; align 0 left, 0.5 centre, 1 right of the point.
+ * Drawn on a white halo so it stays readable over lines. */
+void cs_plot_label(cs_plot *p, cs_axes *a, double x, double y, double dx, double dy, double align,
+                   const char *text);
+/* Add a legend entry without drawing (for things drawn piecewise). */
+void cs_axes_legend_add(cs_axes *a, cs_legend_kind kind, const cs_style *s, const char *label);
+void cs_plot_legend(cs_plot *p, const cs_axes *a, cs_legend_place place);
+
+/* Text in device units: size in px, align as for cs_plot_label, vertical centre at y. */
+void cs_plot_text(cs_plot *p, double x, double y, double size, int bold, double align, const char *text);
+/* A horizontal colour bar of the colour map over [0, 1] with ticks at 0, 0.25, ..., 1. */
+void cs_plot_colorbar(cs_plot *p, cs_box box, const char *label);
+/* The sequential colour map: f in [0, 1] from blue (low) to red (high). */
+cs_rgb cs_plot_colormap(double f);
+/* A distinct colour for series k. */
+cs_rgb cs_plot_palette(int k);
+
+typedef int (*cs_plot_draw_fn)(cs_plot *p, const void *user, char *why, size_t why_size);
+
+/* Draw a width x height figure with draw and write it to f in format. Returns 0, or -1 with why filled
+ * (draw's own failure, a cairo error, a write error). */
+int cs_plot_write(FILE *f, cs_plot_format format, double width, double height, cs_plot_draw_fn draw,
+                  const void *user, char *why, size_t why_size);
+/* The same to a file; the format follows path's extension. */
+int cs_plot_save(const char *path, double width, double height, cs_plot_draw_fn draw, const void *user,
+                 char *why, size_t why_size);
+
+/* Release what cairo and fontconfig keep for the life of the process (font configuration and caches).
+ * Optional, once at exit after the last plot: it keeps leak checkers quiet. */
+void cs_plot_release(void);
+
+#endif
