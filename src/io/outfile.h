@@ -5,7 +5,7 @@
 
 #include <stdio.h>
 
-enum { CS_OUT_MAX_FILES = 8 };
+enum { CS_OUT_MAX_FILES = 32 }; /* the three data files and the plots */
 
 typedef struct cs_outdir {
     char dir[1024];

@@ -1,0 +1,733 @@
+/* The figures of a run (figures.h). Every time series comes from the recorded frames (record.h), every
+ * marked failure from the events; nothing here recomputes the physics. */
+#include "figures.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+static const double G0 = 9.80665, MPH = 0.44704, FT = 0.3048, KIP = 4448.2216152605,
+                    PI = 3.14159265358979323846;
+static const double MARGIN = 8, SNAP_WIDTH = 1800, SNAP_HEADER = 150;
+static const double SNAP_BEHIND = 3; /* m of the vehicle behind its face that the top view shows */
+enum { SNAPS = 6, NEAR_POSTS = 4 };
+
+/* y at time tq, linear between frames. */
+static double value_at(const double *t, const double *y, int n, double tq) {
+    if (n == 0) return NAN;
+    for (int i = 0; i + 1 < n; i++)
+        if (tq <= t[i + 1]) {
+            double u = t[i + 1] > t[i] ? (tq - t[i]) / (t[i + 1] - t[i]) : 1;
+            return y[i] + fmax(0, u) * (y[i + 1] - y[i]);
+        }
+    return y[n - 1];
+}
+
+static cs_box whole(const cs_plot *p) {
+    return (cs_box){MARGIN, MARGIN, p->width - 2 * MARGIN, p->height - 2 * MARGIN};
+}
+
+static cs_style line(cs_rgb c, double width) {
+    return (cs_style){c, width, CS_SOLID, CS_MARK_NONE, 0};
+}
+static cs_style dashed(cs_rgb c, double width) {
+    return (cs_style){c, width, CS_DASHED, CS_MARK_NONE, 0};
+}
+static cs_style mark(cs_rgb c, cs_marker m, double size) {
+    return (cs_style){c, 0, CS_SOLID, m, size};
+}
+
+static const cs_rgb BLACK = {0.1, 0.1, 0.1}, GREY = {0.55, 0.55, 0.55}, RED = {0.85, 0.1, 0.1};
+
+enum { TITLE_SIZE = 200 };
+
+/* Axes over the run's time, y from zero, titled "<model>: what" (d NULL: what alone) in title, which the
+ * axes keep; y2label and y2_scale as in cs_axes (NULL, 0: no right axis). */
+static void time_axes(cs_axes *a, char *title, const cs_figure_data *d, const char *what, const char *ylabel,
+                      const char *y2label, double y2_scale, const double *t, int n) {
+    snprintf(title, TITLE_SIZE, "%s%s%s", d ? d->in->name : "", d ? ": " : "", what);
+    cs_axes_init(a, title, "time (s)", ylabel);
+    a->y2label = y2label;
+    a->y2_scale = y2_scale;
+    cs_axes_fit(a, t, NULL, n);
+    cs_axes_fit_point(a, NAN, 0);
+}
+
+/* A point marker on a curve at time tq, with a legend entry once per kind (*shown). */
+static void mark_at(cs_plot *p, cs_axes *a, const double *t, const double *y, int n, double tq,
+                    const cs_style *s, const char *legend, int *shown) {
+    double x = tq, v = value_at(t, y, n, tq);
+    cs_plot_line(p, a, &x, &v, 1, s, *shown ? NULL : legend);
+    *shown = 1;
+}
+
+/* ---- 1: deceleration ---- */
+
+static void fig_deceleration(cs_plot *p, const cs_figure_data *d, double *t) {
+    const cs_record *r = d->rec;
+    int n = r->frame_count, imax = -1;
+    double *raw = t + n, *avg = t + 2 * n;
+    double ux = cos(d->in->scenario.angle), uy = sin(d->in->scenario.angle);
+    for (int i = 0; i < n; i++) {
+        const cs_vehicle_view *v = &r->vehicle[i];
+        raw[i] = -(v->acceleration[0] * ux + v->acceleration[1] * uy) / G0;
+        /* the average exists once a whole window has passed */
+        avg[i] = v->t > 0.05 + 0.5 * d->in->scenario.dt ? v->decel_50ms_g : NAN;
+        if (isfinite(avg[i]) && (imax < 0 || avg[i] > avg[imax])) imax = i;
+    }
+    char title[TITLE_SIZE], note[96];
+    cs_axes a;
+    time_axes(&a, title, d, "deceleration of the CG along the initial travel direction", "deceleration (g)",
+              NULL, 0, t, n);
+    cs_axes_fit(&a, NULL, raw, n);
+    cs_axes_layout(p, &a, whole(p));
+    cs_style zero = line(GREY, 1);
+    cs_plot_hline(p, &a, 0, &zero, NULL);
+    cs_style s_raw = line((cs_rgb){0.55, 0.70, 0.90}, 1.2), s_avg = line((cs_rgb){0.05, 0.25, 0.60}, 3);
+    cs_plot_line(p, &a, t, raw, n, &s_raw, "raw (every recorded frame)");
+    cs_plot_line(p, &a, t, avg, n, &s_avg, "50-ms moving average (defined from t = 50 ms)");
+    if (imax >= 0) {
+        cs_style m = mark(RED, CS_MARK_CIRCLE, 13);
+        cs_plot_line(p, &a, &t[imax], &avg[imax], 1, &m, "largest 50-ms average");
+        snprintf(note, sizeof note, "max %.2f g at t = %.3f s", avg[imax], t[imax]);
+        cs_plot_label(p, &a, t[imax], avg[imax], 12, -16, 0, note);
+    }
+    cs_plot_legend(p, &a, CS_LEGEND_TOP_RIGHT);
+}
+
+/* ---- 2: speed ---- */
+
+static void fig_speed(cs_plot *p, const cs_figure_data *d, double *t) {
+    const cs_record *r = d->rec;
+    int n = r->frame_count;
+    double *u = t + n;
+    for (int i = 0; i < n; i++)
+        u[i] = r->vehicle[i].forward_speed;
+    char title[TITLE_SIZE], note[128];
+    cs_axes a;
+    time_axes(&a, title, d, "speed of the CG along the initial travel direction", "speed (m/s)",
+              "speed (mph)", 1 / MPH, t, n);
+    cs_axes_fit(&a, NULL, u, n);
+    cs_axes_layout(p, &a, whole(p));
+    cs_style s = line(cs_plot_palette(0), 3);
+    cs_plot_line(p, &a, t, u, n, &s, "forward speed");
+    for (int k = 0; k < d->event_count; k++) {
+        const cs_event *e = &d->events[k];
+        if (e->type != CS_EVENT_STOPPED && e->type != CS_EVENT_BREAKTHROUGH) continue;
+        int shown = 0;
+        cs_style m = mark(RED, CS_MARK_DIAMOND, 14);
+        mark_at(p, &a, t, u, n, e->t, &m, cs_event_type_name(e->type), &shown);
+        if (e->type == CS_EVENT_STOPPED)
+            snprintf(note, sizeof note, "stopped at t = %.3f s", e->t);
+        else
+            snprintf(note, sizeof note, "broke through at t = %.3f s, exit %.1f m/s (%.1f mph)", e->t,
+                     e->value, e->value / MPH);
+        cs_plot_label(p, &a, e->t, value_at(t, u, n, e->t), -12, 22, 1, note);
+    }
+    cs_plot_legend(p, &a, CS_LEGEND_BOTTOM_LEFT);
+}
+
+/* ---- 3: penetration ---- */
+
+static void fig_penetration(cs_plot *p, const cs_figure_data *d, double *t) {
+    const cs_record *r = d->rec;
+    int n = r->frame_count, nc = r->cable_count, imax = -1;
+    double *face = t + n, *pen = t + 2 * n, *cable = t + 3 * n;
+    for (int i = 0; i < n; i++) {
+        const cs_vehicle_view *v = &r->vehicle[i];
+        face[i] = fmax(v->front_corners[0][1], v->front_corners[1][1]);
+        pen[i] = v->penetration;
+        if (imax < 0 || pen[i] > pen[imax]) imax = i;
+        cable[i] = NAN;
+        for (int c = 0; c < nc; c++) {
+            size_t k = (size_t)i * (size_t)nc + (size_t)c;
+            if (r->cables[k].status != CS_CABLE_INTACT) continue;
+            for (int j = 0; j < r->path_count[k]; j++) {
+                double y = r->path_xyz[(k * (size_t)r->max_nodes + (size_t)j) * 3 + 1];
+                if (!(y <= cable[i])) cable[i] = y;
+            }
+        }
+    }
+    char title[TITLE_SIZE], note[96];
+    cs_axes a;
+    time_axes(&a, title, d, "penetration past the attack face (y = 0)", "distance past the attack face (m)",
+              "distance past the attack face (ft)", 1 / FT, t, n);
+    cs_axes_fit(&a, NULL, face, 3 * n); /* face, pen and cable follow each other */
+    cs_axes_layout(p, &a, whole(p));
+    /* widest first: where the curves coincide (the face pushing the cables) all three stay visible */
+    cs_style zero = line(GREY, 1.5), s_face = line((cs_rgb){0.60, 0.78, 0.95}, 8), s_pen = line(RED, 2.5),
+             s_cable = dashed((cs_rgb){0.05, 0.50, 0.10}, 3.5);
+    cs_plot_hline(p, &a, 0, &zero, "attack face (cable line before impact)");
+    cs_plot_line(p, &a, t, face, n, &s_face, "front face now (mid-height corners)");
+    cs_plot_line(p, &a, t, pen, n, &s_pen, "dynamic penetration (largest so far, any face corner)");
+    cs_plot_line(p, &a, t, cable, n, &s_cable, "barrier deflection (furthest point of an intact cable)");
+    if (imax >= 0) {
+        snprintf(note, sizeof note, "max %.2f m (%.1f ft)", pen[imax], pen[imax] / FT);
+        cs_plot_label(p, &a, t[imax], pen[imax], -8, -16, 1, note);
+    }
+    cs_plot_legend(p, &a, CS_LEGEND_BOTTOM_RIGHT);
+}
+
+/* ---- 4: cable tensions ---- */
+
+static void fig_cables(cs_plot *p, const cs_figure_data *d, double *t) {
+    const cs_record *r = d->rec;
+    const cs_barrier_def *b = &d->in->barrier;
+    int n = r->frame_count, nc = r->cable_count;
+    for (int c = 0; c < nc; c++)
+        for (int i = 0; i < n; i++)
+            t[(size_t)(1 + c) * (size_t)n + (size_t)i] =
+                r->cables[(size_t)i * (size_t)nc + (size_t)c].max_tension / 1e3;
+    char title[TITLE_SIZE], label[CS_LABEL_SIZE];
+    cs_axes a;
+    time_axes(&a, title, d, "tension of each cable (largest span)", "tension (kN)", "tension (kip)",
+              1e3 / KIP, t, n);
+    cs_axes_fit(&a, NULL, t + n, n * nc);
+    int same = 1;
+    for (int c = 0; c < b->cable_count; c++) {
+        cs_axes_fit_point(&a, NAN, b->cables[c].rope.nominal_strength / 1e3);
+        same &= b->cables[c].rope.nominal_strength == b->cables[0].rope.nominal_strength;
+    }
+    cs_axes_layout(p, &a, whole(p));
+    for (int c = 0; c < b->cable_count && c < nc; c++) {
+        double fu = b->cables[c].rope.nominal_strength;
+        if (same && c > 0) break;
+        snprintf(label, sizeof label, "rope strength Fu%s = %.0f kN (%.0f kip)", same ? "" : " of this cable",
+                 fu / 1e3, fu / KIP);
+        cs_style s = dashed(same ? BLACK : cs_plot_palette(c), 1.5);
+        cs_plot_hline(p, &a, fu / 1e3, &s, label);
+    }
+    for (int c = 0; c < nc; c++) {
+        double h = c < b->cable_count ? b->cables[c].height : NAN;
+        snprintf(label, sizeof label, "cable %d at %.2f m (%.2f ft)", c, h, h / FT);
+        cs_style s = line(cs_plot_palette(c), 2.5);
+        cs_plot_line(p, &a, t, t + (size_t)(1 + c) * (size_t)n, n, &s, label);
+    }
+    int shown[3] = {0, 0, 0};
+    for (int k = 0; k < d->event_count; k++) {
+        const cs_event *e = &d->events[k];
+        if (e->element_kind != CS_ELEMENT_CABLE || e->element < 0 || e->element >= nc) continue;
+        const double *y = t + (size_t)(1 + e->element) * (size_t)n;
+        if (e->type == CS_EVENT_CABLE_BREAK) {
+            cs_style m = mark(RED, CS_MARK_CROSS, 16);
+            double x = e->t, v = e->value / 1e3;
+            cs_plot_line(p, &a, &x, &v, 1, &m, shown[0]++ ? NULL : "cable breaks");
+            snprintf(label, sizeof label, "cable %d breaks, %.0f kN", e->element, v);
+            cs_plot_label(p, &a, x, v, 12, -14, 0, label);
+        } else if (e->type == CS_EVENT_OVERRIDE || e->type == CS_EVENT_UNDERRIDE) {
+            int over = e->type == CS_EVENT_OVERRIDE;
+            cs_style m = mark(cs_plot_palette(e->element), over ? CS_MARK_TRIANGLE : CS_MARK_DIAMOND, 13);
+            mark_at(p, &a, t, y, n, e->t, &m,
+                    over ? "the vehicle rides over the cable" : "the vehicle runs under the cable",
+                    &shown[1 + !over]);
+            snprintf(label, sizeof label, "%s cable %d", over ? "over" : "under", e->element);
+            cs_plot_label(p, &a, e->t, value_at(t, y, n, e->t), 0, -18, 0.5, label);
+        }
+    }
+    cs_plot_legend(p, &a, CS_LEGEND_TOP_RIGHT);
+}
+
+/* ---- 5: the posts nearest the impact ---- */
+
+/* 0 elastic, 1 yielding (hinge or footing in the soil), 2 failed. */
+static int post_rank(cs_post_status s) {
+    return s == CS_POST_ELASTIC ? 0 : s == CS_POST_HINGED || s == CS_POST_SOIL ? 1 : 2;
+}
+
+/* Up to max post indices by distance from the impact point, nearest first. Returns how many. */
+static int nearest_posts(const cs_model_input *in, int *idx, int max) {
+    int count = 0;
+    double x0 = in->scenario.impact_x;
+    for (int p = 0; p < in->barrier.post_count; p++) {
+        double dp = fabs(in->barrier.posts[p].x - x0);
+        int j = count < max ? count++ : max;
+        while (j > 0 && fabs(in->barrier.posts[idx[j - 1]].x - x0) > dp) {
+            if (j < max) idx[j] = idx[j - 1];
+            j--;
+        }
+        if (j < max) idx[j] = p;
+    }
+    return count;
+}
+
+static int is_failure(cs_event_type type) {
+    return type == CS_EVENT_POST_ROTATION_LIMIT || type == CS_EVENT_POST_SHEAR ||
+           type == CS_EVENT_POST_PULLOUT;
+}
+
+static void fig_posts(cs_plot *p, const cs_figure_data *d, double *t) {
+    const cs_record *r = d->rec;
+    const cs_post_def *posts = d->in->barrier.posts;
+    int n = r->frame_count, np = r->post_count, idx[NEAR_POSTS];
+    int count = nearest_posts(d->in, idx, np < NEAR_POSTS ? np : NEAR_POSTS);
+    double *moment = t + n, *tilt = t + (size_t)(1 + NEAR_POSTS) * (size_t)n;
+    /* a curve ends where its post fails: a failed post carries nothing */
+    for (int k = 0; k < count; k++)
+        for (int i = 0, failed = 0; i < n; i++) {
+            const cs_post_view *v = &r->posts[(size_t)i * (size_t)np + (size_t)idx[k]];
+            moment[(size_t)k * (size_t)n + (size_t)i] = failed ? NAN : v->base_moment / 1e3;
+            tilt[(size_t)k * (size_t)n + (size_t)i] = failed ? NAN : v->tilt * 180 / PI;
+            failed = post_rank(v->status) == 2;
+        }
+    char title[TITLE_SIZE], label[CS_LABEL_SIZE], mtitle[TITLE_SIZE], ttitle[TITLE_SIZE];
+    snprintf(title, sizeof title, "%s: the %d posts nearest the impact point (x = %.2f m)", d->in->name,
+             count, d->in->scenario.impact_x);
+    cs_plot_text(p, 0.5 * p->width, MARGIN + 14, 18, 1, 0.5, title);
+    double half = 0.5 * (p->height - 40 - 2 * MARGIN);
+    cs_axes am, at;
+    time_axes(&am, mtitle, NULL, "base moment (a curve ends where its post fails)", "base moment (kN·m)",
+              NULL, 0, t, n);
+    time_axes(&at, ttitle, NULL, "tilt from vertical", "tilt (deg)", NULL, 0, t, n);
+    am.legend_width = at.legend_width = 330;
+    cs_axes_fit(&am, NULL, moment, n * count);
+    cs_axes_fit(&at, NULL, tilt, n * count);
+    for (int k = 0; k < count && n > 0; k++) {
+        cs_axes_fit_point(&am, NAN, r->posts[idx[k]].moment_capacity / 1e3);
+        cs_axes_fit_point(&at, NAN, posts[idx[k]].rotation_limit * 180 / PI);
+    }
+    cs_axes_layout(p, &am, (cs_box){MARGIN, MARGIN + 40, p->width - 2 * MARGIN, half});
+    cs_axes_layout(p, &at, (cs_box){MARGIN, MARGIN + 40 + half, p->width - 2 * MARGIN, half});
+    /* limits, once per distinct value, naming the posts it is theirs */
+    for (int k = 0; k < count && n > 0; k++) {
+        double cap = r->posts[idx[k]].moment_capacity, lim = posts[idx[k]].rotation_limit;
+        int new_cap = 1, new_lim = 1, len;
+        for (int j = 0; j < k; j++) {
+            new_cap &= r->posts[idx[j]].moment_capacity != cap;
+            new_lim &= posts[idx[j]].rotation_limit != lim;
+        }
+        cs_style s = dashed(BLACK, 1.5);
+        if (new_cap) {
+            len = snprintf(label, sizeof label, "capacity %.1f kN·m (post", cap / 1e3);
+            for (int j = k, m = 0; j < count; j++)
+                if (r->posts[idx[j]].moment_capacity == cap && len < (int)sizeof label - 8)
+                    len += snprintf(label + len, sizeof label - (size_t)len, "%s %d", m++ ? "," : "", idx[j]);
+            snprintf(label + len, sizeof label - (size_t)len, ")");
+            cs_plot_hline(p, &am, cap / 1e3, &s, label);
+        }
+        snprintf(label, sizeof label, "rotation limit %.0f deg", lim * 180 / PI);
+        if (new_lim) cs_plot_hline(p, &at, lim * 180 / PI, &s, label);
+    }
+    /* a wide line under a narrow one: mirror posts of a centred impact coincide and both show */
+    for (int k = 0; k < count; k++) {
+        cs_style s = line(cs_plot_palette(k), k % 2 ? 2.2 : 6.5);
+        snprintf(label, sizeof label, "post %d at x = %.2f m (%.1f ft)", idx[k], posts[idx[k]].x,
+                 posts[idx[k]].x / FT);
+        cs_plot_line(p, &am, t, moment + (size_t)k * (size_t)n, n, &s, label);
+        cs_plot_line(p, &at, t, tilt + (size_t)k * (size_t)n, n, &s, label);
+    }
+    int shown[2][2] = {{0, 0}, {0, 0}};
+    for (int e = 0; e < d->event_count; e++) {
+        const cs_event *ev = &d->events[e];
+        int fail = is_failure(ev->type),
+            yield = ev->type == CS_EVENT_POST_HINGE || ev->type == CS_EVENT_FOOTING_ROTATION;
+        if (ev->element_kind != CS_ELEMENT_POST || (!fail && !yield)) continue;
+        for (int k = 0; k < count; k++) {
+            if (idx[k] != ev->element) continue;
+            cs_style m = fail ? mark(RED, CS_MARK_CROSS, 15) : mark(cs_plot_palette(k), CS_MARK_CIRCLE, 11);
+            const char *what = fail ? "post fails" : "post yields (hinge or soil)";
+            mark_at(p, &am, t, moment + (size_t)k * (size_t)n, n, ev->t, &m, what, &shown[0][fail]);
+            mark_at(p, &at, t, tilt + (size_t)k * (size_t)n, n, ev->t, &m, what, &shown[1][fail]);
+        }
+    }
+    cs_plot_legend(p, &am, CS_LEGEND_OUTSIDE_RIGHT);
+    cs_plot_legend(p, &at, CS_LEGEND_OUTSIDE_RIGHT);
+}
+
+/* ---- 6: the energy ledger ---- */
+
+static const struct {
+    const char *label;
+    size_t offset;
+    cs_rgb color;
+} ledger[] = {
+    /* bottom to top: what is gone for good, what is stored, what still moves */
+    {"crush of the vehicle", offsetof(cs_energy, crush), {0.80, 0.20, 0.20}},
+    {"post plastic (hinges)", offsetof(cs_energy, post_plastic), {0.20, 0.55, 0.25}},
+    {"soil (footings rotating)", offsetof(cs_energy, soil), {0.55, 0.38, 0.22}},
+    {"cable plastic", offsetof(cs_energy, cable_plastic), {0.90, 0.50, 0.10}},
+    {"friction (tyres, rope sliding)", offsetof(cs_energy, friction), {0.55, 0.40, 0.75}},
+    {"released at failures", offsetof(cs_energy, released), {0.85, 0.50, 0.70}},
+    {"post elastic", offsetof(cs_energy, post_elastic), {0.55, 0.80, 0.50}},
+    {"cable elastic", offsetof(cs_energy, cable_elastic), {0.98, 0.78, 0.40}},
+    {"vehicle potential", offsetof(cs_energy, vehicle_potential), {0.70, 0.70, 0.70}},
+    {"vehicle kinetic", offsetof(cs_energy, vehicle_kinetic), {0.35, 0.60, 0.90}},
+};
+enum { LEDGER_TERMS = sizeof ledger / sizeof ledger[0] };
+
+static double ledger_term(const cs_energy *e, int k) {
+    double v;
+    memcpy(&v, (const char *)e + ledger[k].offset, sizeof v);
+    return v;
+}
+
+static void fig_energy(cs_plot *p, const cs_figure_data *d, double *t) {
+    const cs_record *r = d->rec;
+    int n = r->frame_count, used = 0;
+    double *sum = t + n, *y = t + 2 * n;
+    const char *labels[LEDGER_TERMS];
+    cs_rgb fills[LEDGER_TERMS];
+    double ke0 = n ? r->energy[0].initial_kinetic : 0, total0 = n ? r->energy[0].initial_total : 0;
+    for (int i = 0; i < n; i++)
+        sum[i] = 0;
+    for (int k = 0; k < LEDGER_TERMS; k++) {
+        double *v = y + (size_t)used * (size_t)n, big = 0;
+        for (int i = 0; i < n; i++) {
+            v[i] = ledger_term(&r->energy[i], k) / 1e3;
+            sum[i] += v[i];
+            big = fmax(big, fabs(v[i]));
+        }
+        if (big <= 1e-6 * fmax(ke0 / 1e3, 1e-3)) continue; /* a term that stays zero takes no band */
+        labels[used] = ledger[k].label;
+        fills[used++] = ledger[k].color;
+    }
+    char title[TITLE_SIZE], label[CS_LABEL_SIZE];
+    snprintf(label, sizeof label, "energy ledger (balance error at the end %.2f %%)",
+             n ? 100 * r->energy[n - 1].balance_error : 0.0);
+    cs_axes a;
+    time_axes(&a, title, d, label, "energy (kJ)", NULL, 0, t, n);
+    a.legend_width = 330;
+    cs_axes_fit(&a, NULL, sum, n);
+    cs_axes_fit_point(&a, NAN, total0 / 1e3);
+    cs_axes_layout(p, &a, whole(p));
+    cs_plot_stack(p, &a, t, y, used, n, fills, labels);
+    cs_style s_sum = line(BLACK, 1.5), s_ke = dashed(BLACK, 2.5),
+             s_tot = (cs_style){RED, 2, CS_DOTTED, CS_MARK_NONE, 0};
+    cs_plot_line(p, &a, t, sum, n, &s_sum, "sum of the terms");
+    snprintf(label, sizeof label, "initial kinetic energy %.1f kJ", ke0 / 1e3);
+    cs_plot_hline(p, &a, ke0 / 1e3, &s_ke, label);
+    if (total0 - ke0 > 1e-3 * ke0) {
+        snprintf(label, sizeof label, "initial total (with pretension) %.1f kJ", total0 / 1e3);
+        cs_plot_hline(p, &a, total0 / 1e3, &s_tot, label);
+    }
+    cs_plot_legend(p, &a, CS_LEGEND_OUTSIDE_RIGHT);
+}
+
+/* ---- 7: snapshots ---- */
+
+/* The schematic body: front face (crushed), rear, half width, face bottom and top, wheels; body frame
+ * (x forward, z up from the CG). The definition has no overall length: the rear overhang is taken equal
+ * to the front one. */
+typedef struct body {
+    double xf, xr, hw, zb, zt, axle[2], wheel_r, wheel_z;
+} body;
+
+static body vehicle_body(const cs_vehicle_def *v, double crush) {
+    body b;
+    double overhang = v->cg_to_front - v->cg_to_front_axle;
+    b.xf = v->cg_to_front - crush;
+    b.axle[0] = v->cg_to_front_axle;
+    b.axle[1] = v->cg_to_front_axle - v->wheelbase;
+    b.xr = b.axle[1] - (overhang > 0 ? overhang : 0.1 * v->wheelbase);
+    if (!(b.xr < b.xf - 0.5)) b.xr = -v->cg_to_front;
+    b.hw = 0.5 * v->front_width;
+    b.zb = v->face_bottom - v->cg_height;
+    b.zt = v->face_top - v->cg_height;
+    b.wheel_r = fmin(0.5, fmax(0.2, 0.9 * v->face_bottom));
+    b.wheel_z = b.wheel_r - v->cg_height;
+    return b;
+}
+
+/* World point of a body point (roll, pitch, yaw: rotations about x, y, z applied in z-y-x order). */
+static void to_world(const cs_vehicle_view *v, double bx, double by, double bz, double w[3]) {
+    double cr = cos(v->roll), sr = sin(v->roll), cp = cos(v->pitch), sp = sin(v->pitch), cy = cos(v->yaw),
+           sy = sin(v->yaw);
+    w[0] = v->position[0] + cy * cp * bx + (cy * sp * sr - sy * cr) * by + (cy * sp * cr + sy * sr) * bz;
+    w[1] = v->position[1] + sy * cp * bx + (sy * sp * sr + cy * cr) * by + (sy * sp * cr - cy * sr) * bz;
+    w[2] = v->position[2] - sp * bx + cp * sr * by + cp * cr * bz;
+}
+
+/* The outline of the body seen from above (side 0: x-y of a plan at mid-face height) or from the side
+ * (side 1: y-z of the centre plane): 4 corners, front face first (corners 0 and 1). */
+static void outline(const cs_vehicle_def *vd, const cs_vehicle_view *v, int side, double *u, double *w) {
+    body b = vehicle_body(vd, v->crush);
+    double zm = 0.5 * (b.zb + b.zt), p[3];
+    const double corners[4][3] = {{b.xf, b.hw, zm}, {b.xf, -b.hw, zm}, {b.xr, -b.hw, zm}, {b.xr, b.hw, zm}};
+    const double profile[4][3] = {{b.xf, 0, b.zt}, {b.xf, 0, b.zb}, {b.xr, 0, b.zb}, {b.xr, 0, b.zt}};
+    for (int k = 0; k < 4; k++) {
+        const double *c = side ? profile[k] : corners[k];
+        to_world(v, c[0], c[1], c[2], p);
+        u[k] = side ? p[1] : p[0];
+        w[k] = side ? p[2] : p[1];
+    }
+}
+
+typedef struct snap_geometry {
+    int frames[SNAPS], count;
+    double x0, x1, y0, y1, z0, z1; /* views' ranges, m: top x-y, side ys0-y1 by z */
+    double ys0;
+    double area_h, top_w, row_h; /* layout, device units */
+    double tmax;                 /* largest span tension of the run, N */
+} snap_geometry;
+
+static const double *path_xyz(const cs_record *r, int f, int c) {
+    return r->path_xyz + ((size_t)f * (size_t)r->cable_count + (size_t)c) * (size_t)r->max_nodes * 3;
+}
+
+static void snap_layout(const cs_figure_data *d, snap_geometry *g) {
+    const cs_record *r = d->rec;
+    const cs_barrier_def *b = &d->in->barrier;
+    int n = r->frame_count, first = 0;
+    memset(g, 0, sizeof *g);
+    while (first < n - 1 && r->vehicle[first].face_force <= 0) {
+        int engaged = 0;
+        for (int c = 0; c < r->cable_count; c++)
+            engaged |= r->cables[(size_t)first * (size_t)r->cable_count + (size_t)c].engaged;
+        if (engaged) break;
+        first++;
+    }
+    for (int k = 0; n > 0 && k < SNAPS; k++) {
+        double tk = r->vehicle[first].t + k * (r->vehicle[n - 1].t - r->vehicle[first].t) / (SNAPS - 1);
+        int f = first;
+        while (f + 1 < n && fabs(r->vehicle[f + 1].t - tk) <= fabs(r->vehicle[f].t - tk))
+            f++;
+        g->frames[g->count++] = f;
+    }
+    double xi = d->in->scenario.impact_x;
+    g->x0 = fmax(b->start_anchor.x, xi - 25) - 1;
+    g->x1 = fmin(b->end_anchor.x, xi + 25) + 1;
+    g->y0 = g->y1 = g->ys0 = 0;
+    g->z0 = -0.3;
+    g->z1 = fmax(b->start_anchor.z, b->end_anchor.z);
+    for (int p = 0; p < b->post_count; p++)
+        g->z1 = fmax(g->z1, b->posts[p].height);
+    for (int s = 0; s < g->count; s++) {
+        int f = g->frames[s];
+        double u[4], w[4];
+        outline(&d->in->vehicle, &r->vehicle[f], 0, u, w);
+        for (int k = 0; k < 4; k++)
+            g->ys0 = fmin(g->ys0, w[k]), g->y1 = fmax(g->y1, w[k]);
+        g->y0 = fmin(g->y0, fmin(w[0], w[1]) - SNAP_BEHIND);
+        outline(&d->in->vehicle, &r->vehicle[f], 1, u, w);
+        for (int k = 0; k < 4; k++)
+            g->z1 = fmax(g->z1, w[k]);
+        for (int c = 0; c < r->cable_count; c++) {
+            const double *xyz = path_xyz(r, f, c);
+            for (int j = 0; j < r->path_count[(size_t)f * (size_t)r->cable_count + (size_t)c]; j++)
+                if (xyz[3 * j] >= g->x0 && xyz[3 * j] <= g->x1) g->y1 = fmax(g->y1, xyz[3 * j + 1]);
+        }
+        for (int p = 0; p < r->post_count; p++)
+            g->y1 = fmax(g->y1, r->posts[(size_t)f * (size_t)r->post_count + (size_t)p].top[1]);
+    }
+    for (size_t i = 0; i < (size_t)n * (size_t)r->cable_count * (size_t)r->max_nodes; i++)
+        g->tmax = fmax(g->tmax, r->path_tension[i]);
+    g->y0 = fmax(g->y0, g->ys0) - 0.3, g->ys0 -= 0.5, g->y1 += 0.5, g->z1 += 0.3;
+    /* rows: equal-aspect top view (x-y) and side view (y-z) side by side, as wide as the figure */
+    const double extra_w = 104, extra_h = 110;
+    double wide = (g->x1 - g->x0) / (g->y1 - g->y0) + (g->y1 - g->ys0) / (g->z1 - g->z0);
+    g->area_h = fmin(300, fmax(110, (SNAP_WIDTH - 2 * MARGIN - 2 * extra_w) / wide));
+    g->top_w = g->area_h * (g->x1 - g->x0) / (g->y1 - g->y0) + extra_w;
+    g->top_w = fmin(g->top_w, SNAP_WIDTH - 2 * MARGIN - extra_w - 200);
+    g->row_h = g->area_h + extra_h;
+}
+
+static cs_rgb post_color(cs_post_status s) {
+    if (s == CS_POST_ELASTIC) return (cs_rgb){0.10, 0.55, 0.25};
+    if (s == CS_POST_HINGED || s == CS_POST_SOIL) return (cs_rgb){0.60, 0.20, 0.75};
+    return BLACK;
+}
+
+/* One view of frame f: side 0 top (x-y), side 1 side (y-z). */
+static void draw_view(cs_plot *p, const cs_figure_data *d, const snap_geometry *g, int f, int side,
+                      cs_box panel) {
+    const cs_record *r = d->rec;
+    const cs_barrier_def *b = &d->in->barrier;
+    char title[96];
+    snprintf(title, sizeof title, "t = %.3f s: %s", r->vehicle[f].t,
+             side ? "side view (y-z)" : "top view (x-y)");
+    cs_axes a;
+    cs_axes_init(&a, title, side ? "y, toward the protected side (m)" : "x, along the barrier (m)",
+                 side ? "z, height (m)" : "y (m)");
+    a.equal = 1;
+    if (side) {
+        cs_axes_set_x(&a, g->ys0, g->y1);
+        cs_axes_set_y(&a, g->z0, g->z1);
+    } else {
+        cs_axes_set_x(&a, g->x0, g->x1);
+        cs_axes_set_y(&a, g->y0, g->y1);
+    }
+    cs_axes_layout(p, &a, panel);
+    cs_style ground = line((cs_rgb){0.60, 0.45, 0.30}, 2), face_line = dashed(GREY, 1);
+    if (side)
+        cs_plot_hline(p, &a, 0, &ground, NULL);
+    else
+        cs_plot_hline(p, &a, 0, &face_line, NULL);
+    /* posts: elastic first, failed last, so the worst state shows on top */
+    for (int rank = 0; rank < 3; rank++)
+        for (int q = 0; q < r->post_count; q++) {
+            const cs_post_view *pv = &r->posts[(size_t)f * (size_t)r->post_count + (size_t)q];
+            if (post_rank(pv->status) != rank) continue;
+            double bx = side ? 0 : b->posts[q].x, tx = side ? pv->top[1] : pv->top[0],
+                   ty = side ? pv->top[2] : pv->top[1];
+            cs_style s = line(post_color(pv->status), 3.5);
+            cs_plot_segment(p, &a, bx, 0, tx, ty, &s);
+            cs_style m =
+                mark(post_color(pv->status), rank == 2 ? CS_MARK_CROSS : CS_MARK_SQUARE, rank == 2 ? 10 : 7);
+            cs_plot_line(p, &a, &bx, (const double[]){0}, 1, &m, NULL);
+        }
+    /* cables, each span coloured by its tension */
+    for (int c = 0; c < r->cable_count; c++) {
+        size_t k = (size_t)f * (size_t)r->cable_count + (size_t)c;
+        const double *xyz = path_xyz(r, f, c), *ten = r->path_tension + k * (size_t)r->max_nodes;
+        int intact = r->cables[k].status == CS_CABLE_INTACT;
+        for (int j = 0; j + 1 < r->path_count[k]; j++) {
+            const double *p0 = xyz + 3 * j, *p1 = p0 + 3;
+            cs_style s = intact ? line(cs_plot_colormap(ten[j] / g->tmax), 3) : dashed(GREY, 2);
+            cs_plot_segment(p, &a, side ? p0[1] : p0[0], side ? p0[2] : p0[1], side ? p1[1] : p1[0],
+                            side ? p1[2] : p1[1], &s);
+        }
+    }
+    /* the vehicle: outline, wheels (side view), front face */
+    const cs_vehicle_view *v = &r->vehicle[f];
+    double u[4], w[4];
+    outline(&d->in->vehicle, v, side, u, w);
+    cs_rgb body_fill = {0.80, 0.80, 0.80};
+    cs_style edge = line(GREY, 1.5), face = line(BLACK, 5);
+    cs_plot_polygon(p, &a, u, w, 4, &body_fill, &edge);
+    if (side) {
+        body bd = vehicle_body(&d->in->vehicle, v->crush);
+        for (int k = 0; k < 2; k++) {
+            double cu[24], cw[24], pt[3];
+            for (int j = 0; j < 24; j++) {
+                to_world(v, bd.axle[k] + bd.wheel_r * cos(j * PI / 12), 0,
+                         bd.wheel_z + bd.wheel_r * sin(j * PI / 12), pt);
+                cu[j] = pt[1], cw[j] = pt[2];
+            }
+            cs_rgb tyre = {0.25, 0.25, 0.25};
+            cs_plot_polygon(p, &a, cu, cw, 24, &tyre, NULL);
+        }
+    }
+    cs_plot_segment(p, &a, u[0], w[0], u[1], w[1], &face);
+}
+
+static void fig_snapshots(cs_plot *p, const cs_figure_data *d, double *t) {
+    (void)t;
+    snap_geometry g;
+    snap_layout(d, &g);
+    if (g.tmax <= 0) g.tmax = 1;
+    char text[200];
+    snprintf(text, sizeof text, "%s: the crash in %d snapshots, from first contact to the end of the run",
+             d->in->name, g.count);
+    cs_plot_text(p, MARGIN + 10, MARGIN + 16, 20, 1, 0, text);
+    snprintf(text, sizeof text, "cable tension / largest recorded (%.0f kN, %.0f kip)", g.tmax / 1e3,
+             g.tmax / KIP);
+    cs_plot_colorbar(p, (cs_box){MARGIN + 40, MARGIN + 80, 480, 20}, text);
+    cs_axes key;
+    cs_axes_init(&key, NULL, NULL, NULL);
+    cs_style s0 = line(post_color(CS_POST_ELASTIC), 3.5), s1 = line(post_color(CS_POST_HINGED), 3.5),
+             s2 = (cs_style){BLACK, 3.5, CS_SOLID, CS_MARK_CROSS, 10}, sv = line(BLACK, 5),
+             sb = dashed(GREY, 2);
+    cs_style sf = line((cs_rgb){0.80, 0.80, 0.80}, 0);
+    cs_axes_legend_add(&key, CS_LEGEND_LINE, &s0, "post elastic");
+    cs_axes_legend_add(&key, CS_LEGEND_LINE, &s1, "post yielding (hinge or soil)");
+    cs_axes_legend_add(&key, CS_LEGEND_LINE, &s2, "post failed");
+    key.area = (cs_box){600, MARGIN + 40, 400, 100};
+    cs_plot_legend(p, &key, CS_LEGEND_TOP_LEFT);
+    cs_axes_init(&key, NULL, NULL, NULL);
+    cs_axes_legend_add(&key, CS_LEGEND_AREA, &sf, "vehicle (schematic outline)");
+    cs_axes_legend_add(&key, CS_LEGEND_LINE, &sv, "front face (crushed)");
+    cs_axes_legend_add(&key, CS_LEGEND_LINE, &sb, "cable not intact (broken, released, slipped off)");
+    key.area = (cs_box){920, MARGIN + 40, 400, 100};
+    cs_plot_legend(p, &key, CS_LEGEND_TOP_LEFT);
+    for (int s = 0; s < g.count; s++) {
+        double y = SNAP_HEADER + s * g.row_h;
+        draw_view(p, d, &g, g.frames[s], 0, (cs_box){MARGIN, y, g.top_w, g.row_h});
+        draw_view(p, d, &g, g.frames[s], 1,
+                  (cs_box){MARGIN + g.top_w, y, p->width - 2 * MARGIN - g.top_w, g.row_h});
+    }
+}
+
+/* ---- the table of figures ---- */
+
+/* A figure draws on p from d; t holds the frames' times followed by room for SERIES(cable count) more
+ * series of as many values. */
+typedef void (*figure_fn)(cs_plot *p, const cs_figure_data *d, double *t);
+#define SERIES(cables) (3 + LEDGER_TERMS + 2 * NEAR_POSTS + (cables))
+
+static const struct {
+    const char *name;
+    figure_fn draw;
+    double width, height;
+} figures[CS_FIG_COUNT] = {
+    {"deceleration", fig_deceleration, 1200, 700},
+    {"speed", fig_speed, 1200, 700},
+    {"penetration", fig_penetration, 1200, 700},
+    {"cables", fig_cables, 1200, 700},
+    {"posts", fig_posts, 1300, 950},
+    {"energy", fig_energy, 1300, 750},
+    {"snapshots", fig_snapshots, SNAP_WIDTH, 0},
+};
+
+const char *cs_figure_name(cs_figure figure) {
+    return figure >= 0 && figure < CS_FIG_COUNT ? figures[figure].name : "unknown";
+}
+
+void cs_figure_size(cs_figure figure, const cs_figure_data *d, double *width, double *height) {
+    *width = figures[figure].width;
+    *height = figures[figure].height;
+    if (figure == CS_FIG_SNAPSHOTS) {
+        snap_geometry g;
+        snap_layout(d, &g);
+        *height = SNAP_HEADER + g.count * g.row_h + MARGIN;
+    }
+}
+
+typedef struct figure_job {
+    const cs_figure_data *d;
+    cs_figure figure;
+} figure_job;
+
+/* cs_plot_draw_fn: the scratch series of the figure's frames, then the figure. */
+static int draw_figure(cs_plot *p, const void *user, char *why, size_t why_size) {
+    const figure_job *job = user;
+    const cs_record *r = job->d->rec;
+    size_t n = (size_t)r->frame_count;
+    double *t = malloc((n * (size_t)SERIES(r->cable_count) + 1) * sizeof *t);
+    if (!t) {
+        snprintf(why, why_size, "out of memory while drawing %s", figures[job->figure].name);
+        return -1;
+    }
+    for (size_t i = 0; i < n; i++)
+        t[i] = r->vehicle[i].t;
+    figures[job->figure].draw(p, job->d, t);
+    free(t);
+    return 0;
+}
+
+int cs_figure_write(FILE *f, cs_plot_format format, cs_figure figure, const cs_figure_data *d, char *why,
+                    size_t why_size) {
+    if (figure < 0 || figure >= CS_FIG_COUNT) {
+        snprintf(why, why_size, "no figure %d", (int)figure);
+        return -1;
+    }
+    double w, h;
+    cs_figure_size(figure, d, &w, &h);
+    figure_job job = {d, figure};
+    return cs_plot_write(f, format, w, h, draw_figure, &job, why, why_size);
+}
+
+int cs_figures_write(cs_outdir *out, const char *subdir, const cs_plot_format *formats, int format_count,
+                     const cs_figure_data *d, char *why, size_t why_size) {
+    char path[1200], name[64];
+    snprintf(path, sizeof path, "%s/%s", out->dir, subdir);
+    if (mkdir(path, 0777) != 0 && errno != EEXIST) {
+        snprintf(why, why_size, "%s: %s", path, strerror(errno));
+        return -1;
+    }
+    for (int k = 0; k < CS_FIG_COUNT; k++)
+        for (int j = 0; j < format_count; j++) {
+            snprintf(name, sizeof name, "%s/%s.%s", subdir, figures[k].name, cs_plot_extension(formats[j]));
+            FILE *f = cs_out_begin(out, name, why, why_size);
+            if (!f) return -1;
+            int rc = cs_figure_write(f, formats[j], (cs_figure)k, d, why, why_size);
+            char end_why[512];
+            if (cs_out_end(out, f, end_why, sizeof end_why) != 0 && rc == 0) {
+                snprintf(why, why_size, "%s", end_why);
+                rc = -1;
+            }
+            if (rc != 0) return -1;
+        }
+    return 0;
+}

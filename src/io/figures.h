@@ -1,0 +1,45 @@
+/* The figures of a run, drawn from its recorded frames and its events with the plotting layer (plot.h):
+ * deceleration, speed, penetration, cable tensions, the posts nearest the impact, the energy ledger and
+ * a strip of top and side snapshots. */
+#ifndef CS_FIGURES_H
+#define CS_FIGURES_H
+
+#include "loader.h"
+#include "outfile.h"
+#include "plot.h"
+#include "record.h"
+
+/* What a figure reads: the resolved model (name, barrier, vehicle, scenario), the frames, the events. */
+typedef struct cs_figure_data {
+    const cs_model_input *in;
+    const cs_record *rec;
+    const cs_event *events;
+    int event_count;
+} cs_figure_data;
+
+typedef enum cs_figure {
+    CS_FIG_DECELERATION = 0,
+    CS_FIG_SPEED,
+    CS_FIG_PENETRATION,
+    CS_FIG_CABLES,
+    CS_FIG_POSTS,
+    CS_FIG_ENERGY,
+    CS_FIG_SNAPSHOTS,
+    CS_FIG_COUNT
+} cs_figure;
+
+/* The figure's file stem: "deceleration", "speed", "penetration", "cables", "posts", "energy",
+ * "snapshots". */
+const char *cs_figure_name(cs_figure figure);
+/* Its size in device units (the snapshots' height follows the geometry of the run). */
+void cs_figure_size(cs_figure figure, const cs_figure_data *d, double *width, double *height);
+/* Draw one figure to f. Returns 0, or -1 with why filled. */
+int cs_figure_write(FILE *f, cs_plot_format format, cs_figure figure, const cs_figure_data *d, char *why,
+                    size_t why_size);
+/* Every figure in every format, as subdir/<name>.<ext> files begun and ended on out; cs_out_commit
+ * then renames them together with the run's other outputs. Creates out's DIR/subdir. Returns 0, or -1
+ * with why filled. */
+int cs_figures_write(cs_outdir *out, const char *subdir, const cs_plot_format *formats, int format_count,
+                     const cs_figure_data *d, char *why, size_t why_size);
+
+#endif

@@ -1,0 +1,425 @@
+/* Plots: the plotting layer puts a known value on the expected pixel, and every figure of a synthetic
+ * run comes out as a PNG of the stated size that is not blank, and as well-formed SVG and PDF; the set
+ * written through an output directory is complete and leaves no temporaries. */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include <cmocka.h>
+
+#include "figures.h"
+#include "plot.h"
+
+enum { FRAMES = 300, CABLES = 2, POSTS = 6 };
+static const double PI = 3.14159265358979323846, G0 = 9.80665;
+
+/* ---- files ---- */
+
+typedef struct tmpdir {
+    char path[64];
+} tmpdir;
+
+static void tmp_make(tmpdir *d) {
+    snprintf(d->path, sizeof d->path, "/tmp/cs_plots_XXXXXX");
+    assert_non_null(mkdtemp(d->path));
+}
+
+static void tmp_file(const tmpdir *d, const char *name, char *out, size_t size) {
+    int n = snprintf(out, size, "%s/%s", d->path, name);
+    assert_true(n > 0 && (size_t)n < size);
+}
+
+/* Remove DIR/name for every name, then DIR/plots and DIR. */
+static void tmp_remove(const tmpdir *d, const char *const *names, int count) {
+    char p[256];
+    for (int i = 0; i < count; i++) {
+        tmp_file(d, names[i], p, sizeof p);
+        unlink(p);
+    }
+    tmp_file(d, "plots", p, sizeof p);
+    rmdir(p);
+    rmdir(d->path);
+}
+
+/* The whole file into a malloc'ed buffer; *size its length. */
+static unsigned char *slurp(const char *path, long *size) {
+    FILE *f = fopen(path, "rb");
+    if (!f) fail_msg("%s: cannot open", path);
+    fseek(f, 0, SEEK_END);
+    *size = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    unsigned char *buf = malloc((size_t)*size + 1);
+    assert_non_null(buf);
+    assert_int_equal(fread(buf, 1, (size_t)*size, f), (size_t)*size);
+    buf[*size] = 0;
+    fclose(f);
+    return buf;
+}
+
+/* A PNG of width x height (from its IHDR) whose pixels are not all alike (variance of grey level). */
+static void check_png(const char *path, int width, int height) {
+    long size;
+    unsigned char *b = slurp(path, &size);
+    static const unsigned char magic[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    assert_true(size > 33);
+    assert_memory_equal(b, magic, 8);
+    assert_memory_equal(b + 12, "IHDR", 4);
+    uint32_t w = (uint32_t)b[16] << 24 | (uint32_t)b[17] << 16 | (uint32_t)b[18] << 8 | b[19];
+    uint32_t h = (uint32_t)b[20] << 24 | (uint32_t)b[21] << 16 | (uint32_t)b[22] << 8 | b[23];
+    free(b);
+    if ((int)w != width || (int)h != height)
+        fail_msg("%s is %ux%u, expected %dx%d", path, w, h, width, height);
+    cairo_surface_t *s = cairo_image_surface_create_from_png(path);
+    assert_int_equal(cairo_surface_status(s), CAIRO_STATUS_SUCCESS);
+    const unsigned char *px = cairo_image_surface_get_data(s);
+    int stride = cairo_image_surface_get_stride(s);
+    double sum = 0, sum2 = 0, ink = 0, n = (double)width * height;
+    for (int y = 0; y < height; y++)
+        for (int x = 0; x < width; x++) {
+            const unsigned char *p = px + (size_t)y * (size_t)stride + 4 * (size_t)x;
+            double g = (p[0] + p[1] + p[2]) / 3.0;
+            sum += g, sum2 += g * g, ink += g < 200;
+        }
+    cairo_surface_destroy(s);
+    double var = sum2 / n - (sum / n) * (sum / n);
+    if (!(var > 100)) fail_msg("%s looks blank: grey-level variance %g", path, var);
+    if (!(ink / n > 0.01)) fail_msg("%s has almost no ink: %.2f %% dark pixels", path, 100 * ink / n);
+}
+
+static void check_svg(const char *path) {
+    long size;
+    char *b = (char *)slurp(path, &size);
+    assert_true(size > 100);
+    assert_memory_equal(b, "<?xml", 5);
+    assert_non_null(strstr(b, "<svg"));
+    long end = size;
+    while (end > 0 && (b[end - 1] == '\n' || b[end - 1] == ' '))
+        end--;
+    if (end < 6 || memcmp(b + end - 6, "</svg>", 6) != 0) fail_msg("%s does not end with </svg>", path);
+    free(b);
+}
+
+static void check_pdf(const char *path) {
+    long size;
+    char *b = (char *)slurp(path, &size);
+    assert_true(size > 100);
+    assert_memory_equal(b, "%PDF-", 5);
+    long end = size;
+    while (end > 0 && (b[end - 1] == '\n' || b[end - 1] == '\r'))
+        end--;
+    if (end < 5 || memcmp(b + end - 5, "%%EOF", 5) != 0) fail_msg("%s does not end with %%%%EOF", path);
+    free(b);
+}
+
+/* ---- the plotting layer ---- */
+
+static void test_nice_step(void **state) {
+    (void)state;
+    assert_float_equal(cs_plot_nice_step(0, 7.3, 6), 2, 1e-12);
+    assert_float_equal(cs_plot_nice_step(0, 0.189, 4), 0.05, 1e-12);
+    assert_float_equal(cs_plot_nice_step(-500, 1200, 7), 500, 1e-9);
+    assert_float_equal(cs_plot_nice_step(3, 3, 5), 1, 0); /* an empty range still has a step */
+}
+
+static void test_format_of(void **state) {
+    (void)state;
+    assert_int_equal(cs_plot_format_of("a/b/speed.png"), CS_PLOT_PNG);
+    assert_int_equal(cs_plot_format_of("x.svg"), CS_PLOT_SVG);
+    assert_int_equal(cs_plot_format_of("x.pdf"), CS_PLOT_PDF);
+    assert_int_equal(cs_plot_format_of("x.jpg"), CS_PLOT_UNKNOWN);
+    assert_int_equal(cs_plot_format_of(".png"), CS_PLOT_UNKNOWN);
+    assert_string_equal(cs_plot_extension(CS_PLOT_SVG), "svg");
+}
+
+/* A panel over x in [0, 10], y in [0, 4] with a red horizontal line at y = 2.5 and a blue vertical line
+ * at x = 7; the drawing's plotting area comes back through the user pointer. */
+typedef struct known_lines {
+    cs_box *area;
+} known_lines;
+
+static int draw_known(cs_plot *p, const void *user, char *why, size_t why_size) {
+    (void)why, (void)why_size;
+    const known_lines *k = user;
+    cs_axes a;
+    cs_axes_init(&a, "known lines", "x (m)", "y (kN)");
+    cs_axes_set_x(&a, 0, 10);
+    cs_axes_set_y(&a, 0, 4);
+    cs_axes_layout(p, &a, (cs_box){0, 0, p->width, p->height});
+    const double x[] = {0, 10}, y[] = {2.5, 2.5}, vx[] = {7, 7}, vy[] = {0, 4};
+    cs_style red = {{1, 0, 0}, 2, CS_SOLID, CS_MARK_NONE, 0},
+             blue = {{0, 0, 1}, 2, CS_SOLID, CS_MARK_NONE, 0};
+    cs_plot_line(p, &a, x, y, 2, &red, "y = 2.5");
+    cs_plot_line(p, &a, vx, vy, 2, &blue, NULL);
+    *k->area = a.area;
+    return 0;
+}
+
+/* Mean pixel centre along a scan of the pixels that are mostly of channel ch (cairo RGB24 is B, G, R). */
+static double centre_of(cairo_surface_t *s, int fixed, int vertical, int ch) {
+    const unsigned char *px = cairo_image_surface_get_data(s);
+    int stride = cairo_image_surface_get_stride(s);
+    int n = vertical ? cairo_image_surface_get_height(s) : cairo_image_surface_get_width(s);
+    double sum = 0, count = 0;
+    for (int i = 0; i < n; i++) {
+        const unsigned char *p = vertical ? px + (size_t)i * (size_t)stride + 4 * (size_t)fixed
+                                          : px + (size_t)fixed * (size_t)stride + 4 * (size_t)i;
+        int others = ch == 2 ? p[0] + p[1] : p[1] + p[2];
+        if (p[ch] > 200 && others < 160) sum += i + 0.5, count++;
+    }
+    if (count == 0) fail_msg("no pixels of the line along %s %d", vertical ? "column" : "row", fixed);
+    return sum / count;
+}
+
+static void test_known_value_lands_on_its_pixel(void **state) {
+    (void)state;
+    tmpdir d;
+    tmp_make(&d);
+    char path[256];
+    tmp_file(&d, "known.png", path, sizeof path);
+    cs_box area = {0, 0, 0, 0};
+    known_lines k = {&area};
+    char why[256] = "";
+    if (cs_plot_save(path, 640, 400, draw_known, &k, why, sizeof why) != 0) fail_msg("%s", why);
+    check_png(path, 640, 400);
+    /* the area is a real part of the picture */
+    assert_true(area.x > 20 && area.y > 10 && area.w > 400 && area.h > 250);
+    assert_true(area.x + area.w < 640 && area.y + area.h < 400);
+    cairo_surface_t *s = cairo_image_surface_create_from_png(path);
+    double row = area.y + (4 - 2.5) / 4 * area.h, col = area.x + 7.0 / 10 * area.w;
+    double got_row = centre_of(s, (int)(area.x + 0.3 * area.w), 1, 2);
+    double got_col = centre_of(s, (int)(area.y + 0.5 * area.h + 7), 0, 0);
+    cairo_surface_destroy(s);
+    if (fabs(got_row - row) > 1) fail_msg("y = 2.5 drawn at row %.2f, expected %.2f", got_row, row);
+    if (fabs(got_col - col) > 1) fail_msg("x = 7 drawn at column %.2f, expected %.2f", got_col, col);
+    const char *names[] = {"known.png", "known.svg", "known.pdf"};
+    for (int f = 1; f < 3; f++) {
+        tmp_file(&d, names[f], path, sizeof path);
+        if (cs_plot_save(path, 640, 400, draw_known, &k, why, sizeof why) != 0) fail_msg("%s", why);
+        (f == 1 ? check_svg : check_pdf)(path);
+    }
+    tmp_file(&d, "known.txt", path, sizeof path);
+    assert_int_equal(cs_plot_save(path, 640, 400, draw_known, &k, why, sizeof why), -1);
+    assert_non_null(strstr(why, "unknown plot format"));
+    tmp_remove(&d, names, 3);
+}
+
+/* ---- the figures of a synthetic run ---- */
+
+/* A 2000-kg car at 10 m/s head-on into two cables on six posts, decelerating at a steady 2 g: cable 0
+ * breaks at 0.2 s, the two middle posts hinge at 0.1 s and fail at 0.25 s, the car stops at the end. */
+typedef struct synthetic {
+    cs_cable_def cables[CABLES];
+    cs_post_def posts[POSTS];
+    cs_model_input in;
+    cs_record rec;
+    cs_event events[8];
+    cs_figure_data d;
+    tmpdir dir; /* where its figures go */
+} synthetic;
+
+static synthetic *synthetic_new(int frames) {
+    synthetic *s = calloc(1, sizeof *s);
+    assert_non_null(s);
+    for (int c = 0; c < CABLES; c++) {
+        s->cables[c] = cs_default_cable_def();
+        s->cables[c].height = 0.6 + 0.3 * c;
+        s->cables[c].rope = cs_default_rope_def();
+        s->cables[c].rope.nominal_strength = 500e3;
+    }
+    static const double px[POSTS] = {5, 10, 17, 23, 30, 35};
+    for (int p = 0; p < POSTS; p++) {
+        s->posts[p] = cs_default_post_def();
+        s->posts[p].x = px[p];
+        s->posts[p].height = 1.2;
+        s->posts[p].rotation_limit = PI / 4;
+    }
+    cs_model_input *in = &s->in;
+    in->name = "synthetic";
+    in->file = "synthetic.yaml";
+    in->barrier = cs_default_barrier_def();
+    in->barrier.cable_count = CABLES;
+    in->barrier.cables = s->cables;
+    in->barrier.post_count = POSTS;
+    in->barrier.posts = s->posts;
+    in->barrier.start_anchor.x = 0;
+    in->barrier.end_anchor.x = 40;
+    in->vehicle = cs_default_vehicle_def();
+    cs_vehicle_def *v = &in->vehicle;
+    v->mass = 2000, v->cg_height = 0.6, v->cg_to_front = 2.0, v->front_width = 1.8, v->face_bottom = 0.3;
+    v->face_top = 0.9, v->wheelbase = 2.8, v->cg_to_front_axle = 1.1, v->track = 1.5;
+    in->scenario = cs_default_scenario_def();
+    in->scenario.speed = 10, in->scenario.angle = PI / 2, in->scenario.impact_x = 20, in->scenario.dt = 5e-4;
+
+    cs_record *r = &s->rec;
+    r->cable_count = CABLES, r->post_count = POSTS, r->max_nodes = POSTS + 4;
+    r->frame_count = r->capacity = frames;
+    size_t n = (size_t)(frames > 0 ? frames : 1), nn = (size_t)r->max_nodes;
+    r->vehicle = calloc(n, sizeof *r->vehicle);
+    r->energy = calloc(n, sizeof *r->energy);
+    r->cables = calloc(n * CABLES, sizeof *r->cables);
+    r->posts = calloc(n * POSTS, sizeof *r->posts);
+    r->path_count = calloc(n * CABLES, sizeof *r->path_count);
+    r->path_xyz = calloc(n * CABLES * nn * 3, sizeof *r->path_xyz);
+    r->path_tension = calloc(n * CABLES * nn, sizeof *r->path_tension);
+    assert_true(r->vehicle && r->energy && r->cables && r->posts && r->path_count && r->path_xyz &&
+                r->path_tension);
+    double a = 2 * G0, u0 = 10, ke0 = 0.5 * v->mass * u0 * u0;
+    for (int i = 0; i < frames; i++) {
+        double t = i * 1e-3, u = u0 - a * t, y = -v->cg_to_front + u0 * t - 0.5 * a * t * t;
+        cs_vehicle_view *vv = &r->vehicle[i];
+        vv->t = t;
+        vv->position[0] = 20, vv->position[1] = y, vv->position[2] = v->cg_height;
+        vv->velocity[1] = vv->forward_speed = u;
+        vv->acceleration[1] = -a;
+        vv->yaw = PI / 2;
+        vv->decel_50ms_g = t > 0.05 ? 2 : 0;
+        vv->crush = fmin(0.2, t);
+        double face = y + v->cg_to_front - vv->crush;
+        for (int k = 0; k < 2; k++)
+            vv->front_corners[k][0] = 20 + (k ? -0.9 : 0.9), vv->front_corners[k][1] = face,
+            vv->front_corners[k][2] = 0.6;
+        vv->penetration = fmax(0, face);
+        vv->face_force = face > 0 ? 1e5 : 0;
+        cs_energy *e = &r->energy[i];
+        e->initial_kinetic = e->initial_total = ke0;
+        e->vehicle_kinetic = 0.5 * v->mass * u * u;
+        double gone = ke0 - e->vehicle_kinetic;
+        e->crush = 0.4 * gone, e->post_plastic = 0.3 * gone, e->cable_elastic = 0.2 * gone,
+        e->friction = 0.1 * gone;
+        for (int c = 0; c < CABLES; c++) {
+            size_t k = (size_t)i * CABLES + (size_t)c;
+            int broken = c == 0 && t >= 0.2;
+            double tension = broken ? 0 : 20e3 + 1.5e6 * t * (c ? 0.5 : 1);
+            r->cables[k].status = broken ? CS_CABLE_BROKEN : CS_CABLE_INTACT;
+            r->cables[k].engaged = face > 0;
+            r->cables[k].max_tension = tension;
+            r->cables[k].node_count = r->path_count[k] = 4;
+            const double pts[4][2] = {{0, 0}, {19.1, fmax(0, face)}, {20.9, fmax(0, face)}, {40, 0}};
+            for (int j = 0; j < 4; j++) {
+                double *q = r->path_xyz + (k * nn + (size_t)j) * 3;
+                q[0] = pts[j][0], q[1] = pts[j][1], q[2] = s->cables[c].height;
+                if (j < 3) r->path_tension[k * nn + (size_t)j] = tension;
+            }
+        }
+        for (int p = 0; p < POSTS; p++) {
+            cs_post_view *pv = &r->posts[(size_t)i * POSTS + (size_t)p];
+            int middle = p == 2 || p == 3;
+            pv->tilt = middle ? fmin(0.8, 3.2 * t) : 0.02 * t;
+            pv->status = !middle || t < 0.1 ? CS_POST_ELASTIC
+                         : t < 0.25         ? CS_POST_HINGED
+                                            : CS_POST_FAILED_ROTATION;
+            pv->moment_capacity = 8e3;
+            pv->base_moment = fmin(8e3, 8e4 * pv->tilt);
+            pv->top[0] = px[p], pv->top[1] = 1.2 * sin(pv->tilt), pv->top[2] = 1.2 * cos(pv->tilt);
+        }
+    }
+    const cs_event ev[] = {
+        {0.1, CS_EVENT_POST_HINGE, CS_ELEMENT_POST, 2, 8e3},
+        {0.1, CS_EVENT_POST_HINGE, CS_ELEMENT_POST, 3, 8e3},
+        {0.2, CS_EVENT_CABLE_BREAK, CS_ELEMENT_CABLE, 0, 320e3},
+        {0.25, CS_EVENT_POST_ROTATION_LIMIT, CS_ELEMENT_POST, 2, 0.8},
+        {0.25, CS_EVENT_POST_ROTATION_LIMIT, CS_ELEMENT_POST, 3, 0.8},
+        {0.27, CS_EVENT_OVERRIDE, CS_ELEMENT_CABLE, 1, 0.27},
+        {0.299, CS_EVENT_STOPPED, CS_ELEMENT_VEHICLE, 0, 0.3},
+    };
+    memcpy(s->events, ev, sizeof ev);
+    s->d = (cs_figure_data){&s->in, &s->rec, s->events, (int)(sizeof ev / sizeof ev[0])};
+    tmp_make(&s->dir);
+    return s;
+}
+
+static void synthetic_free(synthetic *s, const char *const *names, int count) {
+    tmp_remove(&s->dir, names, count);
+    cs_record_free(&s->rec);
+    free(s);
+}
+
+static void write_every_figure(int frames) {
+    synthetic *s = synthetic_new(frames);
+    char names[CS_FIG_COUNT * 3][64], why[512] = "";
+    const char *list[CS_FIG_COUNT * 3];
+    for (int k = 0; k < CS_FIG_COUNT; k++)
+        for (int f = 0; f < 3; f++) {
+            char path[256];
+            snprintf(names[3 * k + f], sizeof names[0], "%s.%s", cs_figure_name((cs_figure)k),
+                     cs_plot_extension((cs_plot_format)f));
+            list[3 * k + f] = names[3 * k + f];
+            tmp_file(&s->dir, names[3 * k + f], path, sizeof path);
+            FILE *out = fopen(path, "wb");
+            assert_non_null(out);
+            if (cs_figure_write(out, (cs_plot_format)f, (cs_figure)k, &s->d, why, sizeof why) != 0)
+                fail_msg("%s: %s", names[3 * k + f], why);
+            assert_int_equal(fclose(out), 0);
+            double w, h;
+            cs_figure_size((cs_figure)k, &s->d, &w, &h);
+            if (f == CS_PLOT_PNG)
+                check_png(path, (int)ceil(w), (int)ceil(h));
+            else
+                (f == CS_PLOT_SVG ? check_svg : check_pdf)(path);
+        }
+    synthetic_free(s, list, CS_FIG_COUNT * 3);
+}
+
+static void test_every_figure_of_a_run(void **state) {
+    (void)state;
+    write_every_figure(FRAMES);
+}
+
+static void test_runs_of_one_frame_and_none(void **state) {
+    (void)state;
+    write_every_figure(1);
+    write_every_figure(0);
+}
+
+/* The set through an output directory: every figure as PNG and SVG under plots/, none left as .tmp. */
+static void test_figures_through_outdir(void **state) {
+    (void)state;
+    synthetic *s = synthetic_new(FRAMES);
+    cs_outdir out;
+    char why[512] = "";
+    assert_int_equal(cs_out_open(&out, s->dir.path, why, sizeof why), 0);
+    static const cs_plot_format formats[] = {CS_PLOT_PNG, CS_PLOT_SVG};
+    if (cs_figures_write(&out, "plots", formats, 2, &s->d, why, sizeof why) != 0) fail_msg("%s", why);
+    char names[2 * CS_FIG_COUNT][64], path[256];
+    const char *list[2 * CS_FIG_COUNT];
+    for (int k = 0; k < CS_FIG_COUNT; k++)
+        for (int f = 0; f < 2; f++) {
+            int i = 2 * k + f;
+            snprintf(names[i], sizeof names[i], "plots/%s.%s", cs_figure_name((cs_figure)k),
+                     cs_plot_extension(formats[f]));
+            list[i] = names[i];
+            tmp_file(&s->dir, names[i], path, sizeof path);
+            assert_int_equal(access(path, F_OK), -1); /* not before the commit */
+        }
+    assert_int_equal(cs_out_commit(&out, why, sizeof why), 0);
+    for (int i = 0; i < 2 * CS_FIG_COUNT; i++) {
+        tmp_file(&s->dir, names[i], path, sizeof path);
+        if (access(path, F_OK) != 0) fail_msg("%s missing", names[i]);
+        strcat(path, ".tmp");
+        assert_int_equal(access(path, F_OK), -1);
+    }
+    tmp_file(&s->dir, "plots/speed.png", path, sizeof path);
+    check_png(path, 1200, 700);
+    synthetic_free(s, list, 2 * CS_FIG_COUNT);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_nice_step),
+        cmocka_unit_test(test_format_of),
+        cmocka_unit_test(test_known_value_lands_on_its_pixel),
+        cmocka_unit_test(test_every_figure_of_a_run),
+        cmocka_unit_test(test_runs_of_one_frame_and_none),
+        cmocka_unit_test(test_figures_through_outdir),
+    };
+    int rc = cmocka_run_group_tests(tests, NULL, NULL);
+    cs_plot_release();
+    return rc;
+}
