@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cablesim/cablesim.h"
+#include "figures.h"
 #include "loader.h"
 #include "outfile.h"
 #include "record.h"
@@ -14,19 +15,21 @@
 enum { EXIT_RUN = 1, EXIT_BAD = 2 };
 
 static const char usage[] =
-    "usage: cablesim run FILE [-o DIR] [--dt T] [--t-end T] [--set PATH=VALUE]...\n"
+    "usage: cablesim run FILE [-o DIR] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
     "       cablesim check FILE [--set PATH=VALUE]...\n"
     "       cablesim list      the named parts of the library (data/*.yaml)\n"
     "       cablesim schema    the model-file reference (docs/file-format.md)\n"
     "       cablesim --help | --version\n"
     "\n"
     "run writes DIR/timeseries.csv, DIR/events.csv and DIR/summary.json (default DIR: results/<model name>)\n"
-    "and prints a summary. Values take units: --dt \"0.2 ms\", --set scenario.speed=\"35 mph\",\n"
+    "and prints a summary; --plots also draws the run's figures as DIR/plots/*.png and *.svg.\n"
+    "Values take units: --dt \"0.2 ms\", --set scenario.speed=\"35 mph\",\n"
     "--set barrier.cables[0].pretension=\"8 kip\". Exit status: 0 done, 1 the run failed, 2 bad model or "
     "usage.\n";
 
 typedef struct options {
     const char *command, *file, *out_dir;
+    int plots;
 } options;
 
 static int bad_usage(const char *what) {
@@ -39,6 +42,10 @@ static int parse(int argc, char **argv, options *o, cs_loader *l) {
     for (int i = 2; i < argc; i++) {
         const char *a = argv[i], *v = NULL;
         char set[1024];
+        if (strcmp(a, "--plots") == 0) {
+            o->plots = 1;
+            continue;
+        }
         static const char *const valued[][2] = {
             {"--set", NULL}, {"--dt", "scenario.dt"}, {"--t-end", "scenario.t_end"}, {"-o", NULL}};
         int k = -1;
@@ -65,8 +72,27 @@ static int parse(int argc, char **argv, options *o, cs_loader *l) {
     return o->file ? 0 : bad_usage("no model file");
 }
 
+/* DIR/plots/<figure>.png and .svg, begun on out. */
+static int write_plots(cs_outdir *out, const cs_model_input *in, const cs_state *state, const cs_record *rec,
+                       char *why, size_t why_size) {
+    int n = cs_state_event_count(state);
+    cs_event *events = malloc((size_t)(n > 0 ? n : 1) * sizeof *events);
+    if (!events) {
+        snprintf(why, why_size, "out of memory");
+        return -1;
+    }
+    for (int i = 0; i < n; i++)
+        events[i] = *cs_state_event(state, i);
+    static const cs_plot_format formats[] = {CS_PLOT_PNG, CS_PLOT_SVG};
+    cs_figure_data d = {in, rec, events, n};
+    int rc = cs_figures_write(out, "plots", formats, 2, &d, why, why_size);
+    cs_plot_release();
+    free(events);
+    return rc;
+}
+
 static int write_outputs(const char *dir, const cs_model_input *in, const cs_state *state,
-                         const cs_record *rec) {
+                         const cs_record *rec, int plots) {
     char why[512] = "";
     cs_outdir out;
     int rc = cs_out_open(&out, dir, why, sizeof why);
@@ -86,6 +112,7 @@ static int write_outputs(const char *dir, const cs_model_input *in, const cs_sta
             rc = -1;
         }
     }
+    if (rc == 0 && plots) rc = write_plots(&out, in, state, rec, why, sizeof why);
     if (rc == 0) rc = cs_out_commit(&out, why, sizeof why);
     if (rc != 0) {
         cs_out_abort(&out);
@@ -94,7 +121,7 @@ static int write_outputs(const char *dir, const cs_model_input *in, const cs_sta
     return rc;
 }
 
-static int run(const cs_model_input *in, cs_model *model, const char *dir) {
+static int run(const cs_model_input *in, cs_model *model, const char *dir, int plots) {
     cs_error err = {0};
     cs_record rec;
     cs_state *state = cs_state_create(model, &err);
@@ -110,9 +137,10 @@ static int run(const cs_model_input *in, cs_model *model, const char *dir) {
         fprintf(stderr, "cablesim: the run failed, nothing written: %s\n", err.message);
     else if (rec.failed)
         fprintf(stderr, "cablesim: out of memory while recording, nothing written\n");
-    else if (write_outputs(dir ? dir : path, in, state, &rec) == 0) {
+    else if (write_outputs(dir ? dir : path, in, state, &rec, plots) == 0) {
         cs_write_report(stdout, in, state);
-        printf("  outputs              %s/{timeseries.csv,events.csv,summary.json}\n", dir ? dir : path);
+        printf("  outputs              %s/{timeseries.csv,events.csv,summary.json%s}\n", dir ? dir : path,
+               plots ? ",plots/*.png,plots/*.svg" : "");
         rc = 0;
     }
     cs_record_free(&rec);
@@ -173,7 +201,7 @@ int main(int argc, char **argv) {
         return EXIT_RUN;
     }
     int rc;
-    options o = {cmd, NULL, NULL};
+    options o = {cmd, NULL, NULL, 0};
     cs_model_input in;
     cs_model *model = NULL;
     if (!is_run && !is_check)
@@ -188,7 +216,7 @@ int main(int argc, char **argv) {
         printf("%s: %s is a valid model (%d cables, %d posts)\n", o.file, in.name, in.barrier.cable_count,
                in.barrier.post_count);
     } else {
-        rc = run(&in, model, o.out_dir);
+        rc = run(&in, model, o.out_dir, o.plots);
     }
     cs_model_free(model);
     cs_loader_free(l);

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# `cablesim run FILE --plots`: every figure as PNG and SVG under DIR/plots, committed with the other outputs;
+# without --plots no plots directory appears.
+set -u
+cs=${1:?usage: bash tests/cli_plots.sh path/to/cablesim}
+pass=0
+fail=0
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+ok() { pass=$((pass + 1)); }
+bad() { echo "FAIL: $*"; fail=$((fail + 1)); }
+check() { if eval "$2"; then ok; else bad "$1"; fi; }
+
+check "--help names --plots" '"$cs" --help | grep -q -- "--plots"'
+
+"$cs" run examples/aps3.yaml -o "$tmp/none" --t-end "20 ms" >/dev/null 2>"$tmp/stderr"
+check "a run without --plots exits 0" '[ $? -eq 0 ] || { cat "$tmp/stderr"; false; }'
+check "a run without --plots draws nothing" '[ ! -e "$tmp/none/plots" ]'
+
+out="$tmp/aps3"
+"$cs" run examples/aps3.yaml --plots -o "$out" --t-end "20 ms" >"$tmp/stdout" 2>"$tmp/stderr"
+check "run --plots exits 0" '[ $? -eq 0 ] || { cat "$tmp/stderr"; false; }'
+check "the summary names the plots" 'grep -q "plots/\*.png" "$tmp/stdout"'
+for f in timeseries.csv events.csv summary.json; do
+    check "$f still written" '[ -s "$out/$f" ]'
+done
+for name in deceleration speed penetration cables posts energy snapshots; do
+    check "$name.png is a PNG" '[ "$(head -c 8 "$out/plots/$name.png" | od -An -tx1 | tr -d " \n")" = 89504e470d0a1a0a ]'
+    check "$name.svg is an SVG" 'head -c 200 "$out/plots/$name.svg" | grep -q "<svg" && tail -c 20 "$out/plots/$name.svg" | grep -q "</svg>"'
+done
+check "no temporaries left" '[ -z "$(find "$out" -name "*.tmp")" ]'
+
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
