@@ -119,11 +119,28 @@ double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol) {
     double entry = hypot(r[0], r[1]) / scale;
     double rn = entry;
     for (int it = 0; it < 30 && rn > 1e-3 * tol; it++) {
-        /* On the plastic plateau the radial slope of the resistance is zero; if the cables pull less
-         * than the capacity the post unloads, so restart from just inside the elastic range. */
+        /* On the plastic plateau the radial slope of the resistance is zero, so Newton cannot see
+         * that a post the cables pull less than its capacity must come back. Along the radial line
+         * from the elastic boundary to here the residual changes sign once: if it is still positive
+         * at the boundary the root lies between (bisect); if not, the post unloads into the
+         * elastic range (restart there). */
         double tr[2] = {al[0] - ps->plastic[0], al[1] - ps->plastic[1]}, tn = hypot(tr[0], tr[1]);
         if (pm->k_rot * tn > pm->moment_cap && (r[0] * tr[0] + r[1] * tr[1]) < 0.0) {
-            double f = 0.999 * pm->moment_cap / (pm->k_rot * tn);
+            double lo = 0.999 * pm->moment_cap / (pm->k_rot * tn), hi = 1.0, rb[2];
+            double b[2] = {ps->plastic[0] + lo * tr[0], ps->plastic[1] + lo * tr[1]};
+            post_residual(model, s, p, b, m_entry, rb, NULL);
+            double f = lo;
+            if (rb[0] * tr[0] + rb[1] * tr[1] > 0.0) {
+                for (int k = 0; k < 40; k++) {
+                    f = 0.5 * (lo + hi);
+                    b[0] = ps->plastic[0] + f * tr[0], b[1] = ps->plastic[1] + f * tr[1];
+                    post_residual(model, s, p, b, m_entry, rb, NULL);
+                    if (rb[0] * tr[0] + rb[1] * tr[1] > 0.0)
+                        lo = f;
+                    else
+                        hi = f;
+                }
+            }
             al[0] = ps->plastic[0] + f * tr[0], al[1] = ps->plastic[1] + f * tr[1];
             post_residual(model, s, p, al, m_entry, r, NULL);
             rn = hypot(r[0], r[1]) / scale;
