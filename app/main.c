@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cablesim/cablesim.h"
+#include "commands.h"
 #include "figures.h"
 #include "loader.h"
 #include "outfile.h"
@@ -17,6 +18,7 @@ enum { EXIT_RUN = 1, EXIT_BAD = 2 };
 static const char usage[] =
     "usage: cablesim run FILE [-o DIR] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
     "       cablesim check FILE [--set PATH=VALUE]...\n"
+    "       cablesim rate FILE --standard sd-std-02.01|sd-std-02.01a|astm-f2656 [--class M50|K8]\n"
     "       cablesim list      the named parts of the library (data/*.yaml)\n"
     "       cablesim schema    the model-file reference (docs/file-format.md)\n"
     "       cablesim --help | --version\n"
@@ -139,6 +141,9 @@ static int run(const cs_model_input *in, cs_model *model, const char *dir, int p
         fprintf(stderr, "cablesim: out of memory while recording, nothing written\n");
     else if (write_outputs(dir ? dir : path, in, state, &rec, plots) == 0) {
         cs_write_report(stdout, in, state);
+        cs_summary sm;
+        cs_state_summary(state, &sm);
+        cs_print_run_rating(stdout, &in->vehicle, in->scenario.speed, &sm);
         printf("  outputs              %s/{timeseries.csv,events.csv,summary.json%s}\n", dir ? dir : path,
                plots ? ",plots/*.png,plots/*.svg" : "");
         rc = 0;
@@ -192,6 +197,7 @@ int main(int argc, char **argv) {
         return 0;
     }
     if (strcmp(cmd, "schema") == 0) return cs_schema_markdown(stdout) == 0 ? 0 : EXIT_RUN;
+    if (strcmp(cmd, "rate") == 0) return cs_command_rate(argc, argv);
     int is_run = strcmp(cmd, "run") == 0, is_check = strcmp(cmd, "check") == 0;
     if (!is_run && !is_check && strcmp(cmd, "list") != 0) return bad_usage("unknown command");
     char why[256];

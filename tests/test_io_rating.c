@@ -68,8 +68,16 @@ static void reference_points(void **state) {
     assert_int_equal(cs_standard_parse("pas-68", &st), -1);
 }
 
+static void vehicle_classes_by_mass(void **state) {
+    (void)state;
+    assert_string_equal(cs_rating_vehicle_class(15000 * 0.45359237), "M"); /* the SD-STD truck */
+    assert_string_equal(cs_rating_vehicle_class(2430 * 0.45359237), "C");
+    assert_null(cs_rating_vehicle_class(4000.0)); /* between PU and M */
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(penetration_boundaries),
-                                       cmocka_unit_test(speed_windows), cmocka_unit_test(reference_points)};
+                                       cmocka_unit_test(speed_windows), cmocka_unit_test(reference_points),
+                                       cmocka_unit_test(vehicle_classes_by_mass)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

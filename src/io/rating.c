@@ -89,3 +89,13 @@ cs_rating cs_rate_run(cs_standard standard, const char *vehicle_class, double sp
     }
     return r;
 }
+
+const char *cs_rating_vehicle_class(double mass) {
+    static const struct {
+        const char *name;
+        double kg;
+    } classes[] = {{"C", 1100.0}, {"PU", 2300.0}, {"M", 6800.0}, {"H", 29500.0}}; /* ASTM F2656-07 */
+    for (int i = 0; i < 4; i++)
+        if (fabs(mass - classes[i].kg) <= 0.05 * classes[i].kg) return classes[i].name;
+    return NULL;
+}

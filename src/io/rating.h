@@ -45,6 +45,10 @@ cs_rating cs_rate_run(cs_standard standard, const char *vehicle_class, double sp
 /* Pieces, for tests and for `cablesim rate`: the speed designation (mph) of an impact speed, and the
  * penetration level of a measured penetration ("L3", "P2"...; NULL if none). */
 int cs_rating_speed_mph(const cs_rating_rules *rules, double speed);
+
+/* The standard test vehicle a vehicle of this mass stands for ("C", "PU", "M", "H"), within 5% of
+ * the test mass; NULL if none. */
+const char *cs_rating_vehicle_class(double mass);
 const char *cs_rating_level(cs_standard standard, double penetration);
 
 #endif

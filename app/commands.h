@@ -1,0 +1,14 @@
+/* The command's subcommands that live in their own files. */
+#ifndef CS_APP_COMMANDS_H
+#define CS_APP_COMMANDS_H
+
+#include <stdio.h>
+
+#include "cablesim/cablesim.h"
+
+/* `cablesim rate FILE --standard S [--class C] [--set PATH=VALUE]...`; argv[1] is "rate". */
+int cs_command_rate(int argc, char **argv);
+/* The rating line(s) `run` prints for a run of a standard test vehicle (nothing otherwise). */
+void cs_print_run_rating(FILE *out, const cs_vehicle_def *vehicle, double speed, const cs_summary *summary);
+
+#endif
