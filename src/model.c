@@ -48,11 +48,12 @@ static int check_rope(const cs_rope_def *r, int c, cs_error *err) {
 }
 
 static int check_barrier(const cs_barrier_def *b, cs_error *err) {
-    if (b->cable_count < 1 || b->cable_count > CS_MAX_CABLES)
-        return fail(err, "barrier: %d cables (expected 1 to %d)", b->cable_count, CS_MAX_CABLES);
+    if (b->cable_count < 0 || b->cable_count > CS_MAX_CABLES)
+        return fail(err, "barrier: %d cables (expected 0 to %d)", b->cable_count, CS_MAX_CABLES);
+    if (b->cable_count == 0 && b->post_count == 0) return fail(err, "barrier: no cables and no posts");
     if (b->post_count < 0 || b->post_count > CS_MAX_POSTS)
         return fail(err, "barrier: %d posts (expected 0 to %d)", b->post_count, CS_MAX_POSTS);
-    if (!b->cables || (b->post_count > 0 && !b->posts))
+    if ((b->cable_count > 0 && !b->cables) || (b->post_count > 0 && !b->posts))
         return fail(err, "barrier: missing cable or post array");
     double lo = b->start_anchor.x, hi = b->end_anchor.x;
     if (!isfinite(lo) || !isfinite(hi) || !(hi > lo))
@@ -232,7 +233,7 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
     m->cable_count = barrier->cable_count;
     m->post_count = barrier->post_count;
     m->max_nodes = m->post_count + 4;
-    m->cables = calloc((size_t)m->cable_count, sizeof *m->cables);
+    m->cables = calloc((size_t)(m->cable_count ? m->cable_count : 1), sizeof *m->cables);
     m->posts = calloc((size_t)(m->post_count ? m->post_count : 1), sizeof *m->posts);
     if (!m->cables || !m->posts) goto oom;
 
@@ -244,9 +245,12 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
         cm->mu_post = d->post_friction;
         derive_rope(&d->rope, &cm->rope);
     }
+    /* the load height of every post: its cables' mean height, or for a barrier of posts alone
+     * (bollards, a bogie test) the height where the vehicle's face strikes them */
     double mean_z = 0.0;
     for (int c = 0; c < m->cable_count; c++)
         mean_z += m->cables[c].z / m->cable_count;
+    if (m->cable_count == 0) mean_z = vehicle->face_bottom > 0.05 ? vehicle->face_bottom : 0.05;
     for (int p = 0; p < m->post_count; p++) {
         const cs_post_def *d = &barrier->posts[p];
         cs_post_model *pm = &m->posts[p];

@@ -328,6 +328,10 @@ int cs_post_capture(const cs_model *model, cs_state *s) {
         double d = v3_dot(rel, f), lat = v3_dot(rel, left);
         if (d < 0.0 || fabs(lat) > 0.5 * v->front_width + CS_CAPTURE_MARGIN || d > zb) continue;
         ps->captured = 1;
+        if (!s->contact_started) {
+            s->contact_started = 1;
+            s->summary.first_contact_time = s->t;
+        }
         for (int c = 0; c < model->cable_count; c++) {
             cs_cable_state *cs = &s->cables[c];
             if (cs->status == CS_CABLE_INTACT && cs->where[p] > 0) cs_cable_remove_node(cs, cs->where[p]);

@@ -55,7 +55,9 @@ void cs_response_update(const cs_model *model, cs_state *s) {
     double pen = face_penetration(model, s);
     if (pen > sm->max_dynamic_penetration) sm->max_dynamic_penetration = pen;
 
-    int engaged = 0, intact = 0;
+    int engaged = 0, intact = 0; /* a struck post still standing holds the vehicle like a cable */
+    for (int p = 0; p < model->post_count; p++)
+        engaged += s->posts[p].captured && cs_post_standing(&s->posts[p]);
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
         intact += cs->status == CS_CABLE_INTACT;

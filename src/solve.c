@@ -51,7 +51,7 @@ int cs_solver_init(const cs_model *model, cs_solver *w) {
     size_t n = 2 * np + nc * nn + 1, per_row = 3 * (12 + 8 * nc) + 1;
     w->slots = calloc(n, sizeof *w->slots);
     w->tilt_index = calloc(np ? np : 1, sizeof *w->tilt_index);
-    w->node_index = calloc(nc * nn, sizeof *w->node_index);
+    w->node_index = calloc(nc ? nc * nn : 1, sizeof *w->node_index);
     w->x = calloc(6 * n, sizeof *w->x);
     w->band_capacity = n * per_row;
     w->band = calloc(w->band_capacity, sizeof *w->band);

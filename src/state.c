@@ -11,7 +11,7 @@ cs_state *cs_state_create(const cs_model *model, cs_error *err) {
     cs_state *s = calloc(1, sizeof *s);
     int nc = model->cable_count, np = model->post_count, nn = model->max_nodes;
     if (!s) goto oom;
-    s->cables = calloc((size_t)nc, sizeof *s->cables);
+    s->cables = calloc((size_t)(nc ? nc : 1), sizeof *s->cables);
     s->posts = calloc((size_t)(np ? np : 1), sizeof *s->posts);
     s->events = calloc((size_t)model->event_capacity, sizeof *s->events);
     s->speed_ring = calloc((size_t)model->window_steps + 1, sizeof *s->speed_ring);

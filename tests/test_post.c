@@ -86,11 +86,43 @@ static void shear_failure_onset(void **state) {
     world_free(w);
 }
 
+/* A barrier of one post and no cable (a bogie test, a bollard): the vehicle's face strikes the post
+ * and pushes it over. Whichever yields (here the hinge: Mp < Eq. 21 at the strike height) takes the
+ * capacity times the plastic rotation, M_cap (theta_fail - M_cap / k), and the vehicle leaves once
+ * the post fails. */
+static void struck_post_absorbs_capacity_times_rotation(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    cs_post_def post = fx.posts[0];
+    post.x = 0.0;
+    fx.barrier.cable_count = 0;
+    fx.barrier.post_count = 1;
+    fx.barrier.posts = &post;
+    fx.barrier.start_anchor.x = -10.0, fx.barrier.end_anchor.x = 10.0;
+    fx.scenario.impact_x = 0.0;
+    fx.scenario.speed = 5.0;
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    assert_non_null(m);
+    cs_state *s = cs_state_create(m, &err);
+    assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
+    const cs_post_model *pm = &m->posts[0];
+    assert_int_equal(s->posts[0].status, CS_POST_FAILED_ROTATION);
+    assert_int_equal(s->outcome, CS_BREAKTHROUGH);
+    double theta = hypot(s->posts[0].tilt[0], s->posts[0].tilt[1]);
+    CHECK_REL(s->e_soil + s->e_post_plastic, pm->moment_cap * (theta - pm->moment_cap / pm->k_rot), 1e-6);
+    CHECK_ABS(theta, pm->rot_limit, 0.02); /* reached within a step */
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(cantilever_deflection),
         cmocka_unit_test(plastic_hinge_at_mp),
         cmocka_unit_test(shear_failure_onset),
+        cmocka_unit_test(struck_post_absorbs_capacity_times_rotation),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
