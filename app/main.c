@@ -19,6 +19,7 @@ static const char usage[] =
     "usage: cablesim run FILE [-o DIR] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
     "       cablesim check FILE [--set PATH=VALUE]...\n"
     "       cablesim rate FILE --standard sd-std-02.01|sd-std-02.01a|astm-f2656 [--class M50|K8]\n"
+    "       cablesim validate [-o DIR]   the validation suite: DIR/validation.md and .csv\n"
     "       cablesim list      the named parts of the library (data/*.yaml)\n"
     "       cablesim schema    the model-file reference (docs/file-format.md)\n"
     "       cablesim --help | --version\n"
@@ -198,6 +199,7 @@ int main(int argc, char **argv) {
     }
     if (strcmp(cmd, "schema") == 0) return cs_schema_markdown(stdout) == 0 ? 0 : EXIT_RUN;
     if (strcmp(cmd, "rate") == 0) return cs_command_rate(argc, argv);
+    if (strcmp(cmd, "validate") == 0) return cs_command_validate(argc, argv);
     int is_run = strcmp(cmd, "run") == 0, is_check = strcmp(cmd, "check") == 0;
     if (!is_run && !is_check && strcmp(cmd, "list") != 0) return bad_usage("unknown command");
     char why[256];
