@@ -50,8 +50,10 @@ static int run_model(const cs_model *m, result *r) {
     clock_t c0 = clock();
     cs_state *s = cs_state_create(m, &err);
     r->ok = s && cs_run(m, s, NULL, NULL, &err) == CS_OK;
-    if (r->ok) collect(s, r);
-    else fprintf(stderr, "cablesim validate: a run failed: %s\n", err.message);
+    if (r->ok)
+        collect(s, r);
+    else
+        fprintf(stderr, "cablesim validate: a run failed: %s\n", err.message);
     cs_state_free(s);
     r->seconds = (double)(clock() - c0) / CLOCKS_PER_SEC;
     return r->ok ? 0 : -1;
@@ -66,7 +68,8 @@ static int run_file(const char *path, const char *const *sets, result *r) {
         fprintf(stderr, "cablesim validate: %s\n", why);
         return -1;
     }
-    for (int i = 0; sets && sets[i]; i++) cs_loader_set(l, sets[i]);
+    for (int i = 0; sets && sets[i]; i++)
+        cs_loader_set(l, sets[i]);
     cs_model_input in;
     cs_model *m = NULL;
     int rc = -1;
@@ -91,8 +94,9 @@ static void csv_row(FILE *csv, const char *suite, const char *name, const char *
         return;
     }
     fprintf(csv, "%s,%s,\"%s\",1,%s,%.6g,%.6g,%s,%s,%s,%s,%d,%d,%.6g,%.6g\n", suite, name, variant,
-            cs_outcome_name(r->sm.outcome), r->sm.max_decel_50ms_g, r->sm.max_dynamic_penetration, exit, stop, b1, b2,
-            r->sm.posts_failed_left, r->sm.posts_failed_right, r->sm.energy_balance_error, r->absorbed);
+            cs_outcome_name(r->sm.outcome), r->sm.max_decel_50ms_g, r->sm.max_dynamic_penetration, exit, stop,
+            b1, b2, r->sm.posts_failed_left, r->sm.posts_failed_right, r->sm.energy_balance_error,
+            r->absorbed);
 }
 
 static const char *fmt_time(double t, char *buf, size_t n) {
@@ -103,15 +107,18 @@ static const char *fmt_time(double t, char *buf, size_t n) {
     return buf;
 }
 
-static double rel_err(double model, double test) { return 100.0 * (model - test) / fabs(test); }
+static double rel_err(double model, double test) {
+    return 100.0 * (model - test) / fabs(test);
+}
 
 /* ---- crash tests ---- */
 static const char *const crash_names[3] = {"aps1", "aps3", "aps4"};
 
 static void write_crash(FILE *md, FILE *csv, const char *examples, result *base) {
     char path[1024], a[32], b[32];
-    fprintf(md, "## Crash tests\n\nThe three designs of `examples/aps*.yaml`, 15,000-lb truck at 40 mph head-on "
-                "(assumed: docs/assumptions.md).\n\n");
+    fprintf(md,
+            "## Crash tests\n\nThe three designs of `examples/aps*.yaml`, 15,000-lb truck at 40 mph head-on "
+            "(assumed: docs/assumptions.md).\n\n");
     for (int k = 0; k < 3; k++) {
         snprintf(path, sizeof path, "%s/%s.yaml", examples, crash_names[k]);
         run_file(path, NULL, &base[k]);
@@ -119,9 +126,10 @@ static void write_crash(FILE *md, FILE *csv, const char *examples, result *base)
     }
     const result *r = &base[0];
     fprintf(md, "### APS1 against the crash test and the paper's simulation (paper, Table 3)\n\n");
-    fprintf(md, "| response | crash test | paper's simulation | cablesim | cablesim vs test |\n|---|---|---|---|---|\n");
-    fprintf(md, "| max 50-ms average deceleration | 1.485 g | 1.247 g | %.3f g | %+.0f%% |\n", r->sm.max_decel_50ms_g,
-            rel_err(r->sm.max_decel_50ms_g, 1.485));
+    fprintf(md, "| response | crash test | paper's simulation | cablesim | cablesim vs test "
+                "|\n|---|---|---|---|---|\n");
+    fprintf(md, "| max 50-ms average deceleration | 1.485 g | 1.247 g | %.3f g | %+.0f%% |\n",
+            r->sm.max_decel_50ms_g, rel_err(r->sm.max_decel_50ms_g, 1.485));
     if (r->sm.outcome == CS_BREAKTHROUGH)
         fprintf(md, "| exit speed | 31.2 mph | 29.4 mph | %.1f mph | %+.0f%% |\n", r->sm.exit_speed / MPH,
                 rel_err(r->sm.exit_speed / MPH, 31.2));
@@ -132,28 +140,35 @@ static void write_crash(FILE *md, FILE *csv, const char *examples, result *base)
         const double test[2] = {0.088, 0.123}, paper[2] = {0.255, 0.295};
         fprintf(md, "| time when cable %d broke | %.3f s | %.3f s | %s | %s |\n", c + 1, test[c], paper[c],
                 fmt_time(r->cable_break[c], a, sizeof a),
-                r->cable_break[c] < 0.0 ? "no break"
-                                        : (snprintf(b, sizeof b, "%+.0f ms", 1e3 * (r->cable_break[c] - test[c])), b));
+                r->cable_break[c] < 0.0
+                    ? "no break"
+                    : (snprintf(b, sizeof b, "%+.0f ms", 1e3 * (r->cable_break[c] - test[c])), b));
     }
     int dec_ok = r->ok && fabs(rel_err(r->sm.max_decel_50ms_g, 1.485)) <= 15.0;
-    int exit_ok = r->ok && r->sm.outcome == CS_BREAKTHROUGH && fabs(rel_err(r->sm.exit_speed / MPH, 31.2)) <= 15.0;
+    int exit_ok =
+        r->ok && r->sm.outcome == CS_BREAKTHROUGH && fabs(rel_err(r->sm.exit_speed / MPH, 31.2)) <= 15.0;
     int brk_ok = r->ok && r->cable_break[0] >= 0.0 && r->cable_break[1] >= 0.0 &&
                  fabs(r->cable_break[0] - 0.088) <= 0.05 && fabs(r->cable_break[1] - 0.123) <= 0.05;
-    fprintf(md, "\nTargets (issue 4): exit speed and deceleration within 15%%, both break times within 50 ms: "
-                "deceleration %s, exit speed %s, break times %s.\n\n",
+    fprintf(md,
+            "\nTargets (issue 4): exit speed and deceleration within 15%%, both break times within 50 ms: "
+            "deceleration %s, exit speed %s, break times %s.\n\n",
             dec_ok ? "met" : "NOT met", exit_ok ? "met" : "NOT met", brk_ok ? "met" : "NOT met");
     fprintf(md, "### APS3 and APS4: blind predictions (the measured results are withheld)\n\n");
-    fprintf(md, "| response | APS3 cablesim | APS3 test | APS4 cablesim | APS4 test |\n|---|---|---|---|---|\n");
+    fprintf(md,
+            "| response | APS3 cablesim | APS3 test | APS4 cablesim | APS4 test |\n|---|---|---|---|---|\n");
     const result *p3 = &base[1], *p4 = &base[2];
-    fprintf(md, "| outcome | %s at %.3f s | withheld | %s at %.3f s | withheld |\n", cs_outcome_name(p3->sm.outcome),
-            p3->sm.t, cs_outcome_name(p4->sm.outcome), p4->sm.t);
+    fprintf(md, "| outcome | %s at %.3f s | withheld | %s at %.3f s | withheld |\n",
+            cs_outcome_name(p3->sm.outcome), p3->sm.t, cs_outcome_name(p4->sm.outcome), p4->sm.t);
     fprintf(md, "| max 50-ms average deceleration | %.3f g | withheld | %.3f g | withheld |\n",
             p3->sm.max_decel_50ms_g, p4->sm.max_decel_50ms_g);
     fprintf(md, "| max dynamic penetration | %.2f m | withheld | %.2f m | withheld |\n",
             p3->sm.max_dynamic_penetration, p4->sm.max_dynamic_penetration);
-    fprintf(md, "| exit speed | %s | withheld | %s | withheld |\n",
-            p3->sm.outcome == CS_BREAKTHROUGH ? (snprintf(a, sizeof a, "%.1f mph", p3->sm.exit_speed / MPH), a) : "-",
-            p4->sm.outcome == CS_BREAKTHROUGH ? (snprintf(b, sizeof b, "%.1f mph", p4->sm.exit_speed / MPH), b) : "-");
+    fprintf(
+        md, "| exit speed | %s | withheld | %s | withheld |\n",
+        p3->sm.outcome == CS_BREAKTHROUGH ? (snprintf(a, sizeof a, "%.1f mph", p3->sm.exit_speed / MPH), a)
+                                          : "-",
+        p4->sm.outcome == CS_BREAKTHROUGH ? (snprintf(b, sizeof b, "%.1f mph", p4->sm.exit_speed / MPH), b)
+                                          : "-");
     fprintf(md, "| posts failed left / right | %d / %d | withheld | %d / %d | withheld |\n\n",
             p3->sm.posts_failed_left, p3->sm.posts_failed_right, p4->sm.posts_failed_left,
             p4->sm.posts_failed_right);
@@ -213,11 +228,14 @@ static void write_bogie(FILE *md, FILE *csv) {
     char why[256];
     cs_loader *l = cs_loader_create(NULL, why, sizeof why);
     if (!l) return;
-    fprintf(md, "## Bogie tests of W6x16 posts in soil (paper, Table 2)\n\nThe 2,237-lb bogie strikes the post at "
-                "24.875 in; the post rotates in the soil by Eq. 21 (S1 = 8000 psf, B = the 4.03-in flange) or "
-                "hinges at Mp, and fails at 45 degrees. Energy absorbed = the bogie's loss of kinetic energy.\n\n");
-    fprintf(md, "| test | speed | embedment | energy measured | energy cablesim | error | deflection measured | "
-                "failure measured | failure cablesim |\n|---|---|---|---|---|---|---|---|---|\n");
+    fprintf(
+        md,
+        "## Bogie tests of W6x16 posts in soil (paper, Table 2)\n\nThe 2,237-lb bogie strikes the post at "
+        "24.875 in; the post rotates in the soil by Eq. 21 (S1 = 8000 psf, B = the 4.03-in flange) or "
+        "hinges at Mp, and fails at 45 degrees. Energy absorbed = the bogie's loss of kinetic energy.\n\n");
+    fprintf(md,
+            "| test | speed | embedment | energy measured | energy cablesim | error | deflection measured | "
+            "failure measured | failure cablesim |\n|---|---|---|---|---|---|---|---|---|\n");
     int good = 0;
     for (int i = 0; i < 10; i++) {
         const bogie_test *t = &bogie_tests[i];
@@ -228,22 +246,28 @@ static void write_bogie(FILE *md, FILE *csv) {
         if (r.sm.posts_failed_left + r.sm.posts_failed_right > 0) mode = "rotation (45 deg)";
         int mode_ok = !t->pullout && strcmp(mode, "rotation (45 deg)") == 0;
         good += mode_ok && fabs(err) <= 20.0;
-        fprintf(md, "| %s | %.2f mph | %.0f mm | %.0f ft-lb | %.0f ft-lb | %+.0f%% | %.0f mm | %s | %s |\n", t->name,
-                t->mph, t->embedment_mm, t->energy_ftlb, e, err, t->deflection_mm,
+        fprintf(md, "| %s | %.2f mph | %.0f mm | %.0f ft-lb | %.0f ft-lb | %+.0f%% | %.0f mm | %s | %s |\n",
+                t->name, t->mph, t->embedment_mm, t->energy_ftlb, e, err, t->deflection_mm,
                 t->pullout ? "pulled out" : "rotation", mode);
         csv_row(csv, "bogie", t->name, "baseline", &r);
     }
-    fprintf(md, "\nTarget (issue 4): right failure mode and energy within 20%% in at least 8 of 10: %d of 10, %s. "
-                "The post-in-soil model has no pullout and no soil inertia; see docs/theory.md.\n\n",
-            good, good >= 8 ? "met" : "NOT met");
+    fprintf(
+        md,
+        "\nTarget (issue 4): right failure mode and energy within 20%% in at least 8 of 10: %d of 10, %s. "
+        "The post-in-soil model has no pullout and no soil inertia; see docs/theory.md.\n\n",
+        good, good >= 8 ? "met" : "NOT met");
     cs_loader_free(l);
 }
 
 /* ---- verification ---- */
 static void write_verification(FILE *md) {
-    fprintf(md, "## Verification against closed forms\n\nEq. 21 as the engine evaluates it (S1 = 8000 psf, H = 3 ft) "
-                "against the P column of the paper's Table 4:\n\n| B | D | P paper | P cablesim |\n|---|---|---|---|\n");
-    const double bft[] = {0.75, 1.5, 3, 3, 8}, dft[] = {3, 3, 5, 6, 4}, p[] = {3593, 7186, 30349, 39024, 58851};
+    fprintf(
+        md,
+        "## Verification against closed forms\n\nEq. 21 as the engine evaluates it (S1 = 8000 psf, H = 3 ft) "
+        "against the P column of the paper's Table 4:\n\n| B | D | P paper | P cablesim "
+        "|\n|---|---|---|---|\n");
+    const double bft[] = {0.75, 1.5, 3, 3, 8}, dft[] = {3, 3, 5, 6, 4},
+                 p[] = {3593, 7186, 30349, 39024, 58851};
     for (int i = 0; i < 5; i++) {
         cs_footing_def f = cs_default_footing_def();
         f.diameter = bft[i] * FT, f.depth = dft[i] * FT, f.soil_pressure = 8000.0 * 47.88025898033584;
@@ -251,16 +275,20 @@ static void write_verification(FILE *md) {
         double pn = s1 * f.diameter * f.depth * f.depth / (f.coeff_depth * f.depth + f.coeff_height * h);
         fprintf(md, "| %.2f ft | %.0f ft | %.0f lb | %.0f lb |\n", bft[i], dft[i], p[i], pn / (LB * 9.80665));
     }
-    fprintf(md, "\nThe engine's other closed-form checks run in `make test` (tests/test_*.c): rope law points, capstan "
-                "ratio exp(mu theta), frictionless sliding EA(L/S - 1), cantilever deflection R z^3 / 3EI, hinge at "
-                "Mp, shear onset, struck-post work M_cap x plastic rotation, free rolling, settling on the tyres, no "
-                "yaw in a symmetric impact, the energy ledger within 1%%.\n\n");
+    fprintf(
+        md,
+        "\nThe engine's other closed-form checks run in `make test` (tests/test_*.c): rope law points, "
+        "capstan "
+        "ratio exp(mu theta), frictionless sliding EA(L/S - 1), cantilever deflection R z^3 / 3EI, hinge at "
+        "Mp, shear onset, struck-post work M_cap x plastic rotation, free rolling, settling on the tyres, no "
+        "yaw in a symmetric impact, the energy ledger within 1%%.\n\n");
 }
 
 /* ---- convergence and sensitivity ---- */
 static void write_convergence(FILE *md, FILE *csv, const char *examples) {
     const char *dts[] = {"0.5 ms", "0.25 ms", "0.1 ms", "0.05 ms"};
-    fprintf(md, "## Time-step convergence\n\n| test | dt | outcome | max 50-ms decel | penetration | exit speed | ledger "
+    fprintf(md, "## Time-step convergence\n\n| test | dt | outcome | max 50-ms decel | penetration | exit "
+                "speed | ledger "
                 "error |\n|---|---|---|---|---|---|---|\n");
     for (int k = 0; k < 3; k++) {
         double first[2] = {0, 0}, last[2] = {0, 0};
@@ -295,13 +323,18 @@ static void write_sensitivity(FILE *md, FILE *csv, const char *examples) {
     } inputs[] = {
         {"impact speed 38-42 mph", "scenario.speed=38 mph", "scenario.speed=42 mph"},
         {"soil S1 6000-8000 psf", "barrier.soil.soil_pressure=6000 psf", NULL},
-        {"line-post yield stress -10%/+10%", "barrier.posts[0].yield_stress=45 ksi", "barrier.posts[0].yield_stress=55 ksi"},
-        {"cable-post friction 0.10-0.20", "barrier.cables[0].post_friction=0.1", "barrier.cables[0].post_friction=0.2"},
+        {"line-post yield stress -10%/+10%", "barrier.posts[0].yield_stress=45 ksi",
+         "barrier.posts[0].yield_stress=55 ksi"},
+        {"cable-post friction 0.10-0.20", "barrier.cables[0].post_friction=0.1",
+         "barrier.cables[0].post_friction=0.2"},
         {"pretension 2-8 kip", "barrier.cables[0].pretension=2 kip", "barrier.cables[0].pretension=8 kip"},
     };
-    fprintf(md, "## Sensitivity to what the paper does not give\n\nEach input moved alone over its range (the other "
-                "cable follows where a cable value is moved); the band of each response.\n\n| test | input | outcomes | "
-                "max 50-ms decel | penetration |\n|---|---|---|---|---|\n");
+    fprintf(
+        md,
+        "## Sensitivity to what the paper does not give\n\nEach input moved alone over its range (the other "
+        "cable follows where a cable value is moved); the band of each response.\n\n| test | input | "
+        "outcomes | "
+        "max 50-ms decel | penetration |\n|---|---|---|---|---|\n");
     for (int k = 0; k < 3; k++) {
         char path[1024];
         snprintf(path, sizeof path, "%s/%s.yaml", examples, crash_names[k]);
@@ -321,19 +354,23 @@ static void write_sensitivity(FILE *md, FILE *csv, const char *examples) {
                 result r;
                 if (run_file(path, sets, &r) != 0) continue;
                 dmin = fmin(dmin, r.sm.max_decel_50ms_g), dmax = fmax(dmax, r.sm.max_decel_50ms_g);
-                pmin = fmin(pmin, r.sm.max_dynamic_penetration), pmax = fmax(pmax, r.sm.max_dynamic_penetration);
+                pmin = fmin(pmin, r.sm.max_dynamic_penetration),
+                pmax = fmax(pmax, r.sm.max_dynamic_penetration);
                 size_t n = strlen(outcomes);
-                snprintf(outcomes + n, sizeof outcomes - n, "%s%s", n ? ", " : "", cs_outcome_name(r.sm.outcome));
+                snprintf(outcomes + n, sizeof outcomes - n, "%s%s", n ? ", " : "",
+                         cs_outcome_name(r.sm.outcome));
                 csv_row(csv, "sensitivity", crash_names[k], set, &r);
             }
-            fprintf(md, "| %s | %s | %s | %.2f-%.2f g | %.2f-%.2f m |\n", crash_names[k], inputs[i].what, outcomes, dmin,
-                    dmax, pmin, pmax);
+            fprintf(md, "| %s | %s | %s | %.2f-%.2f g | %.2f-%.2f m |\n", crash_names[k], inputs[i].what,
+                    outcomes, dmin, dmax, pmin, pmax);
         }
     }
     fprintf(md, "\n");
 }
 
-static int wanted(const char *only, const char *part) { return !only || strstr(only, part) != NULL; }
+static int wanted(const char *only, const char *part) {
+    return !only || strstr(only, part) != NULL;
+}
 
 int cs_command_validate(int argc, char **argv) {
     const char *dir = "results/validation", *examples = "examples", *only = NULL;
@@ -368,11 +405,14 @@ int cs_command_validate(int argc, char **argv) {
         return 1;
     }
     time_t t0 = time(NULL);
-    fprintf(md, "# cablesim validation\n\nOne parameter set for every case (docs/assumptions.md); nothing is tuned to "
+    fprintf(md, "# cablesim validation\n\nOne parameter set for every case (docs/assumptions.md); nothing is "
+                "tuned to "
                 "a test. Written by `cablesim validate`.\n\n");
-    fprintf(csv, "suite,case,variant,ok,outcome,max_50ms_decel_g,max_dynamic_penetration_m,exit_speed_mps,stop_time_s,"
-                 "cable1_break_s,cable2_break_s,posts_failed_left,posts_failed_right,energy_balance_error,"
-                 "energy_absorbed_j\n");
+    fprintf(
+        csv,
+        "suite,case,variant,ok,outcome,max_50ms_decel_g,max_dynamic_penetration_m,exit_speed_mps,stop_time_s,"
+        "cable1_break_s,cable2_break_s,posts_failed_left,posts_failed_right,energy_balance_error,"
+        "energy_absorbed_j\n");
     result base[3];
     if (wanted(only, "crash")) write_crash(md, csv, examples, base);
     if (wanted(only, "bogie")) write_bogie(md, csv);
