@@ -11,6 +11,7 @@
 #include "outfile.h"
 #include "record.h"
 #include "schema.h"
+#include "sweepcmd.h"
 #include "writers.h"
 
 enum { EXIT_RUN = 1, EXIT_BAD = 2 };
@@ -18,6 +19,7 @@ enum { EXIT_RUN = 1, EXIT_BAD = 2 };
 static const char usage[] =
     "usage: cablesim run FILE [-o DIR] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
     "       cablesim check FILE [--set PATH=VALUE]...\n"
+    "       cablesim sweep SPEC.yaml [-o DIR] [--threads N]   a study: grids, Monte Carlo (see sweep --help)\n"
     "       cablesim rate FILE --standard sd-std-02.01|sd-std-02.01a|astm-f2656 [--class M50|K8]\n"
     "       cablesim validate [-o DIR]   the validation suite: DIR/validation.md and .csv\n"
     "       cablesim list      the named parts of the library (data/*.yaml)\n"
@@ -198,6 +200,7 @@ int main(int argc, char **argv) {
         return 0;
     }
     if (strcmp(cmd, "schema") == 0) return cs_schema_markdown(stdout) == 0 ? 0 : EXIT_RUN;
+    if (strcmp(cmd, "sweep") == 0) return cs_sweep_command(argc, argv);
     if (strcmp(cmd, "rate") == 0) return cs_command_rate(argc, argv);
     if (strcmp(cmd, "validate") == 0) return cs_command_validate(argc, argv);
     int is_run = strcmp(cmd, "run") == 0, is_check = strcmp(cmd, "check") == 0;

@@ -1,0 +1,449 @@
+/* A sweep's outputs: runs.csv (one row per run), summary.md and summary.json (outcome probabilities
+ * with 95% Wilson intervals, response statistics, Spearman rank correlation of inputs and responses). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sweep.h"
+
+#define Z95 1.959963984540054
+
+static const char *const method_names[] = {"grid", "monte_carlo", "latin_hypercube"};
+
+/* ---- the responses ---- */
+
+enum { R_DECEL, R_PEN, R_DEFL, R_TENSION, R_POSTS, R_CABLES, R_COUNT };
+static const char *const response_keys[R_COUNT] = {"max_50ms_decel_g",
+                                                   "max_dynamic_penetration_m",
+                                                   "max_barrier_deflection_m",
+                                                   "max_cable_tension_n",
+                                                   "posts_failed",
+                                                   "cables_broken"};
+static const char *const response_labels[R_COUNT] = {"max 50-ms deceleration (g)",
+                                                     "max dynamic penetration (m)",
+                                                     "max barrier deflection (m)",
+                                                     "max cable tension (N)",
+                                                     "posts failed",
+                                                     "cables broken"};
+
+static double response(const cs_sweep_result *r, int k) {
+    const cs_summary *s = &r->summary;
+    switch (k) {
+    case R_DECEL:
+        return s->max_decel_50ms_g;
+    case R_PEN:
+        return s->max_dynamic_penetration;
+    case R_DEFL:
+        return s->max_barrier_deflection;
+    case R_TENSION:
+        return s->max_cable_tension;
+    case R_POSTS:
+        return s->posts_failed_left + s->posts_failed_right;
+    default:
+        return s->cables_broken;
+    }
+}
+
+/* failure events: every event type but the two that end a run */
+static int is_failure_event(int t) {
+    return t != CS_EVENT_STOPPED && t != CS_EVENT_BREAKTHROUGH;
+}
+
+/* ---- runs.csv ---- */
+
+static void csv_text(FILE *f, const char *s) {
+    if (!strpbrk(s, ",\"\n\r")) {
+        fputs(s, f);
+        return;
+    }
+    fputc('"', f);
+    for (; *s; s++) {
+        if (*s == '"') fputc('"', f);
+        fputc(*s, f);
+    }
+    fputc('"', f);
+}
+
+static void csv_num(FILE *f, double v) {
+    if (isfinite(v)) fprintf(f, "%.10g", v);
+}
+
+int cs_sweep_write_runs(FILE *f, const cs_sweep_spec *s, const double *x, const cs_sweep_result *r, long n,
+                        char *why, size_t why_size) {
+    int k = s->var_count;
+    fprintf(f, "run");
+    for (int j = 0; j < k; j++) {
+        char head[600];
+        const cs_sweep_var *v = &s->vars[j];
+        snprintf(head, sizeof head, "%s%s%s%s", v->path, v->unit[0] ? " [" : "", v->unit,
+                 v->unit[0] ? "]" : "");
+        fputc(',', f);
+        csv_text(f, head);
+    }
+    fprintf(f,
+            ",outcome,astm_f2656,time_reached [s],max_50ms_decel [g],t_max_50ms_decel [s],"
+            "max_dynamic_penetration [m],max_barrier_deflection [m],stop_time [s],exit_speed [m/s],"
+            "first_contact_time [s],posts_failed_left,posts_failed_right,cables_broken,max_cable_tension [N],"
+            "initial_kinetic_energy [J],energy_balance_error [1],solver_warnings,max_solver_residual [1],"
+            "final_x [m],final_y [m],final_z [m]");
+    for (int t = 0; t < CS_EVENT_TYPE_COUNT; t++)
+        if (is_failure_event(t)) fprintf(f, ",events_%s", cs_event_type_name((cs_event_type)t));
+    fprintf(f, ",error\n");
+    for (long i = 0; i < n; i++) {
+        const cs_sweep_result *ri = &r[i];
+        const cs_summary *m = &ri->summary;
+        fprintf(f, "%ld", i);
+        for (int j = 0; j < k; j++) {
+            char value[256];
+            cs_sweep_value_text(&s->vars[j], x[i * k + j], value, sizeof value);
+            fputc(',', f);
+            csv_text(f, value);
+        }
+        if (ri->status != CS_RUN_OK) {
+            fprintf(f, ",%s,", ri->status == CS_RUN_BAD_MODEL ? "bad_model" : "failed");
+            for (int c = 0; c < 19; c++)
+                fputc(',', f);
+            for (int t = 0; t < CS_EVENT_TYPE_COUNT; t++)
+                if (is_failure_event(t)) fputc(',', f);
+            fputc(',', f);
+            csv_text(f, ri->error);
+            fputc('\n', f);
+            continue;
+        }
+        fprintf(f, ",%s,", cs_outcome_name(m->outcome));
+        csv_text(f, ri->rating);
+        const double a[] = {m->t,
+                            m->max_decel_50ms_g,
+                            m->t_max_decel,
+                            m->max_dynamic_penetration,
+                            m->max_barrier_deflection,
+                            m->outcome == CS_STOPPED ? m->stop_time : NAN,
+                            m->outcome == CS_BREAKTHROUGH ? m->exit_speed : NAN,
+                            m->first_contact_time >= 0 ? m->first_contact_time : NAN};
+        for (size_t c = 0; c < sizeof a / sizeof a[0]; c++)
+            fputc(',', f), csv_num(f, a[c]);
+        fprintf(f, ",%d,%d,%d", m->posts_failed_left, m->posts_failed_right, m->cables_broken);
+        const double b[] = {m->max_cable_tension, m->initial_kinetic_energy, m->energy_balance_error};
+        for (size_t c = 0; c < sizeof b / sizeof b[0]; c++)
+            fputc(',', f), csv_num(f, b[c]);
+        fprintf(f, ",%d,", m->solver_warnings);
+        csv_num(f, m->max_solver_residual);
+        for (int c = 0; c < 3; c++)
+            fputc(',', f), csv_num(f, m->final_position[c]);
+        for (int t = 0; t < CS_EVENT_TYPE_COUNT; t++)
+            if (is_failure_event(t)) fprintf(f, ",%d", ri->event_counts[t]);
+        fprintf(f, ",\n");
+    }
+    if (ferror(f)) {
+        snprintf(why, why_size, "write error");
+        return -1;
+    }
+    return 0;
+}
+
+/* ---- the summary ---- */
+
+typedef struct tally {
+    char name[48];
+    char label[96];
+    long count;
+} tally;
+
+typedef struct stats {
+    double mean, sd, min, p05, p50, p95, max;
+} stats;
+
+typedef struct summary {
+    long n, ok, bad_model, failed;
+    tally *t; /* outcomes, penetration, events, ratings */
+    int tally_count;
+    stats resp[R_COUNT];
+    double *rho; /* [var * R_COUNT + response]; NaN: not numeric or constant */
+} summary;
+
+static int cmp_double(const void *a, const void *b) {
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+static double quantile(const double *sorted, long n, double p) {
+    double h = (double)(n - 1) * p;
+    long lo = (long)floor(h);
+    if (lo >= n - 1) return sorted[n - 1];
+    return sorted[lo] + (h - (double)lo) * (sorted[lo + 1] - sorted[lo]);
+}
+
+static int add_tally(summary *s, const char *name, const char *label, long count) {
+    tally *t = realloc(s->t, (size_t)(s->tally_count + 1) * sizeof *t);
+    if (!t) return -1;
+    s->t = t;
+    tally *e = &t[s->tally_count++];
+    snprintf(e->name, sizeof e->name, "%s", name);
+    snprintf(e->label, sizeof e->label, "%s", label);
+    e->count = count;
+    return 0;
+}
+
+static int make_summary(summary *s, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
+                        long n) {
+    memset(s, 0, sizeof *s);
+    s->n = n;
+    int k = spec->var_count;
+    long *ok = malloc((size_t)(n > 0 ? n : 1) * sizeof *ok);
+    double *a = malloc((size_t)(n > 0 ? n : 1) * sizeof *a), *b = malloc((size_t)(n > 0 ? n : 1) * sizeof *b);
+    s->rho = malloc((size_t)(k > 0 ? k : 1) * R_COUNT * sizeof *s->rho);
+    if (!ok || !a || !b || !s->rho) goto oom;
+    for (long i = 0; i < n; i++) {
+        if (r[i].status == CS_RUN_OK)
+            ok[s->ok++] = i;
+        else if (r[i].status == CS_RUN_BAD_MODEL)
+            s->bad_model++;
+        else
+            s->failed++;
+    }
+    static const cs_outcome outcomes[] = {CS_STOPPED, CS_BREAKTHROUGH, CS_TIME_LIMIT};
+    static const char *const outcome_labels[] = {"stopped", "breakthrough",
+                                                 "time limit reached (still moving)"};
+    for (int o = 0; o < 3; o++) {
+        long c = 0;
+        for (long i = 0; i < s->ok; i++)
+            c += r[ok[i]].summary.outcome == outcomes[o];
+        if (add_tally(s, cs_outcome_name(outcomes[o]), outcome_labels[o], c) != 0) goto oom;
+    }
+    long pen = 0;
+    for (long i = 0; i < s->ok; i++)
+        pen += r[ok[i]].summary.outcome == CS_BREAKTHROUGH || r[ok[i]].summary.max_dynamic_penetration > 1.0;
+    if (add_tally(s, "penetration_over_1m", "penetration > 1 m (or breakthrough)", pen) != 0) goto oom;
+    for (int t = 0; t < CS_EVENT_TYPE_COUNT; t++) {
+        if (!is_failure_event(t)) continue;
+        long c = 0;
+        for (long i = 0; i < s->ok; i++)
+            c += r[ok[i]].event_counts[t] > 0;
+        char name[48], label[96];
+        snprintf(name, sizeof name, "event_%s", cs_event_type_name((cs_event_type)t));
+        snprintf(label, sizeof label, "at least one %s", cs_event_type_name((cs_event_type)t));
+        if (add_tally(s, name, label, c) != 0) goto oom;
+    }
+    /* ratings, in order of first appearance by run */
+    int first_rating = s->tally_count;
+    for (long i = 0; i < s->ok; i++) {
+        char name[48];
+        snprintf(name, sizeof name, "rating %s", r[ok[i]].rating);
+        int seen = 0;
+        for (int t = first_rating; t < s->tally_count && !seen; t++)
+            if (strcmp(s->t[t].name, name) == 0) s->t[t].count++, seen = 1;
+        if (!seen && add_tally(s, name, r[ok[i]].rating, 1) != 0) goto oom;
+    }
+    for (int q = 0; q < R_COUNT; q++) {
+        for (long i = 0; i < s->ok; i++)
+            a[i] = response(&r[ok[i]], q);
+        stats *st = &s->resp[q];
+        *st = (stats){NAN, NAN, NAN, NAN, NAN, NAN, NAN};
+        if (s->ok > 0) {
+            double sum = 0, ss = 0;
+            for (long i = 0; i < s->ok; i++)
+                sum += a[i];
+            st->mean = sum / (double)s->ok;
+            for (long i = 0; i < s->ok; i++)
+                ss += (a[i] - st->mean) * (a[i] - st->mean);
+            st->sd = s->ok > 1 ? sqrt(ss / (double)(s->ok - 1)) : NAN;
+            qsort(a, (size_t)s->ok, sizeof *a, cmp_double);
+            st->min = a[0], st->max = a[s->ok - 1];
+            st->p05 = quantile(a, s->ok, 0.05), st->p50 = quantile(a, s->ok, 0.5),
+            st->p95 = quantile(a, s->ok, 0.95);
+        }
+        for (int j = 0; j < k; j++) {
+            for (long i = 0; i < s->ok; i++) {
+                a[i] = response(&r[ok[i]], q);
+                b[i] = cs_sweep_value_used(&spec->vars[j], x[ok[i] * k + j]);
+            }
+            s->rho[j * R_COUNT + q] = spec->vars[j].numeric ? cs_spearman(b, a, s->ok) : NAN;
+        }
+    }
+    free(ok), free(a), free(b);
+    return 0;
+oom:
+    free(ok), free(a), free(b);
+    free(s->rho), free(s->t);
+    return -1;
+}
+
+static void free_summary(summary *s) {
+    free(s->rho);
+    free(s->t);
+}
+
+static void md_num(FILE *f, double v) {
+    if (isfinite(v))
+        fprintf(f, "%.4g", v);
+    else
+        fprintf(f, "n/a");
+}
+
+int cs_sweep_write_summary_md(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
+                              long n, char *why, size_t why_size) {
+    summary s;
+    if (make_summary(&s, spec, x, r, n) != 0) {
+        snprintf(why, why_size, "out of memory");
+        return -1;
+    }
+    int k = spec->var_count;
+    fprintf(f, "# Sweep %s\n\n", spec->file);
+    fprintf(f, "Model `%s`, method %s, %ld runs", spec->model, method_names[spec->method], n);
+    if (spec->method != CS_SWEEP_GRID) fprintf(f, ", seed %llu", (unsigned long long)spec->seed);
+    fprintf(f, ": %ld ran to the end, %ld bad models, %ld failed.\n\n", s.ok, s.bad_model, s.failed);
+    for (int i = 0; i < spec->set_count; i++)
+        fprintf(f, "%s`%s`%s", i ? ", " : "Fixed for every run: ", spec->sets[i],
+                i + 1 == spec->set_count ? ".\n\n" : "");
+    fprintf(f, "## Inputs\n\n| path | SI unit | varied as |\n| --- | --- | --- |\n");
+    for (int j = 0; j < k; j++)
+        fprintf(f, "| `%s` | %s | %s |\n", spec->vars[j].path,
+                spec->vars[j].unit[0] ? spec->vars[j].unit : "-", spec->vars[j].desc);
+    fprintf(f,
+            "\n## Outcomes\n\nProbabilities over the %ld runs that ran to the end, with 95%% Wilson score "
+            "intervals.\n\n| outcome | runs | probability | 95%% interval |\n| --- | --- | --- | --- |\n",
+            s.ok);
+    for (int t = 0; t < s.tally_count; t++) {
+        cs_interval w = cs_wilson(s.t[t].count, s.ok, Z95);
+        fprintf(f, "| %s%s | %ld | ", strncmp(s.t[t].name, "rating ", 7) == 0 ? "ASTM F2656 rating " : "",
+                s.t[t].label, s.t[t].count);
+        md_num(f, w.p);
+        fprintf(f, " | ");
+        md_num(f, w.lo);
+        fprintf(f, " - ");
+        md_num(f, w.hi);
+        fprintf(f, " |\n");
+    }
+    fprintf(f, "\n## Responses\n\n| response | mean | sd | min | 5%% | median | 95%% | max |\n"
+               "| --- | --- | --- | --- | --- | --- | --- | --- |\n");
+    for (int q = 0; q < R_COUNT; q++) {
+        const stats *st = &s.resp[q];
+        const double v[] = {st->mean, st->sd, st->min, st->p05, st->p50, st->p95, st->max};
+        fprintf(f, "| %s |", response_labels[q]);
+        for (int c = 0; c < 7; c++)
+            fputc(' ', f), md_num(f, v[c]), fprintf(f, " |");
+        fputc('\n', f);
+    }
+    fprintf(f, "\n## Input importance\n\nSpearman rank correlation of each input with each response (n/a: "
+               "text input, or a constant column).\n\n| input |");
+    for (int q = 0; q < R_COUNT; q++)
+        fprintf(f, " %s |", response_labels[q]);
+    fprintf(f, "\n| --- |");
+    for (int q = 0; q < R_COUNT; q++)
+        fprintf(f, " --- |");
+    fputc('\n', f);
+    for (int j = 0; j < k; j++) {
+        fprintf(f, "| `%s` |", spec->vars[j].path);
+        for (int q = 0; q < R_COUNT; q++) {
+            double rho = s.rho[j * R_COUNT + q];
+            fputc(' ', f);
+            if (isfinite(rho))
+                fprintf(f, "%+.2f", rho);
+            else
+                fprintf(f, "n/a");
+            fprintf(f, " |");
+        }
+        fputc('\n', f);
+    }
+    free_summary(&s);
+    if (ferror(f)) {
+        snprintf(why, why_size, "write error");
+        return -1;
+    }
+    return 0;
+}
+
+static void jstr(FILE *f, const char *s) {
+    fputc('"', f);
+    for (; *s; s++) {
+        if (*s == '"' || *s == '\\')
+            fprintf(f, "\\%c", *s);
+        else if ((unsigned char)*s < 0x20)
+            fprintf(f, "\\u%04x", *s);
+        else
+            fputc(*s, f);
+    }
+    fputc('"', f);
+}
+
+static void jnum(FILE *f, double v) {
+    if (isfinite(v))
+        fprintf(f, "%.10g", v);
+    else
+        fprintf(f, "null");
+}
+
+int cs_sweep_write_summary_json(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
+                                long n, char *why, size_t why_size) {
+    summary s;
+    if (make_summary(&s, spec, x, r, n) != 0) {
+        snprintf(why, why_size, "out of memory");
+        return -1;
+    }
+    int k = spec->var_count;
+    fprintf(f, "{\"spec\":");
+    jstr(f, spec->file);
+    fprintf(f, ",\"model\":");
+    jstr(f, spec->model);
+    fprintf(
+        f,
+        ",\"method\":\"%s\",\"seed\":%llu,\"runs\":%ld,\"ok\":%ld,\"bad_model\":%ld,\"failed\":%ld,\"set\":[",
+        method_names[spec->method], (unsigned long long)spec->seed, n, s.ok, s.bad_model, s.failed);
+    for (int i = 0; i < spec->set_count; i++) {
+        if (i) fputc(',', f);
+        jstr(f, spec->sets[i]);
+    }
+    fprintf(f, "],\"inputs\":[");
+    for (int j = 0; j < k; j++) {
+        fprintf(f, "%s{\"path\":", j ? "," : "");
+        jstr(f, spec->vars[j].path);
+        fprintf(f, ",\"unit\":");
+        jstr(f, spec->vars[j].unit);
+        fprintf(f, ",\"varied_as\":");
+        jstr(f, spec->vars[j].desc);
+        fputc('}', f);
+    }
+    fprintf(f, "],\"probabilities\":{");
+    for (int t = 0; t < s.tally_count; t++) {
+        cs_interval w = cs_wilson(s.t[t].count, s.ok, Z95);
+        if (t) fputc(',', f);
+        jstr(f, s.t[t].name);
+        fprintf(f, ":{\"count\":%ld,\"p\":", s.t[t].count);
+        jnum(f, w.p);
+        fprintf(f, ",\"ci95\":[");
+        jnum(f, w.lo);
+        fputc(',', f);
+        jnum(f, w.hi);
+        fprintf(f, "]}");
+    }
+    fprintf(f, "},\"responses\":{");
+    static const char *const stat_names[] = {"mean", "sd", "min", "p05", "median", "p95", "max"};
+    for (int q = 0; q < R_COUNT; q++) {
+        const stats *st = &s.resp[q];
+        const double v[] = {st->mean, st->sd, st->min, st->p05, st->p50, st->p95, st->max};
+        fprintf(f, "%s\"%s\":{", q ? "," : "", response_keys[q]);
+        for (int c = 0; c < 7; c++) {
+            fprintf(f, "%s\"%s\":", c ? "," : "", stat_names[c]);
+            jnum(f, v[c]);
+        }
+        fputc('}', f);
+    }
+    fprintf(f, "},\"spearman\":{");
+    for (int q = 0; q < R_COUNT; q++) {
+        fprintf(f, "%s\"%s\":{", q ? "," : "", response_keys[q]);
+        for (int j = 0; j < k; j++) {
+            if (j) fputc(',', f);
+            jstr(f, spec->vars[j].path);
+            fputc(':', f);
+            jnum(f, s.rho[j * R_COUNT + q]);
+        }
+        fputc('}', f);
+    }
+    fprintf(f, "}}\n");
+    free_summary(&s);
+    if (ferror(f)) {
+        snprintf(why, why_size, "write error");
+        return -1;
+    }
+    return 0;
+}

@@ -1,0 +1,230 @@
+/* The runs' inputs (counter-based random numbers, distributions, grids, Latin hypercubes) and the
+ * statistics of the results (Wilson intervals, ranks, Spearman correlation). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sweep.h"
+
+/* ---- random numbers: a pure function of the key ---- */
+
+static uint64_t mix64(uint64_t z) {
+    z += 0x9e3779b97f4a7c15ull;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+}
+
+double cs_sweep_u01(uint64_t seed, uint64_t a, uint64_t b, uint64_t stream) {
+    uint64_t h = mix64(mix64(mix64(mix64(seed) ^ a) ^ b) ^ stream);
+    return ((double)(h >> 11) + 0.5) * 0x1p-53; /* in (0, 1): never 0 or 1 */
+}
+
+/* ---- the normal distribution ---- */
+
+double cs_normal_cdf(double x) {
+    return 0.5 * erfc(-x / sqrt(2.0));
+}
+
+double cs_normal_quantile(double p) {
+    if (!(p > 0)) return -HUGE_VAL;
+    if (!(p < 1)) return HUGE_VAL;
+    static const double a[] = {-3.969683028665376e+01, 2.209460984245205e+02,  -2.759285104469687e+02,
+                               1.383577518672690e+02,  -3.066479806614716e+01, 2.506628277459239e+00};
+    static const double b[] = {-5.447609879822406e+01, 1.615858368580409e+02, -1.556989798598866e+02,
+                               6.680131188771972e+01, -1.328068155288572e+01};
+    static const double c[] = {-7.784894002430293e-03, -3.223964580411365e-01, -2.400758277161838e+00,
+                               -2.549732539343734e+00, 4.374664141464968e+00,  2.938163982698783e+00};
+    static const double d[] = {7.784695709041462e-03, 3.224671290700398e-01, 2.445134137142996e+00,
+                               3.754408661907416e+00};
+    const double low = 0.02425;
+    double x;
+    if (p < low || p > 1 - low) {
+        double q = sqrt(-2 * log(p < low ? p : 1 - p));
+        x = (((((c[0] * q + c[1]) * q + c[2]) * q + c[3]) * q + c[4]) * q + c[5]) /
+            ((((d[0] * q + d[1]) * q + d[2]) * q + d[3]) * q + 1);
+        if (p > 1 - low) x = -x;
+    } else {
+        double q = p - 0.5, r = q * q;
+        x = (((((a[0] * r + a[1]) * r + a[2]) * r + a[3]) * r + a[4]) * r + a[5]) * q /
+            (((((b[0] * r + b[1]) * r + b[2]) * r + b[3]) * r + b[4]) * r + 1);
+    }
+    /* one Halley step on the exact CDF (erfc keeps the tails accurate) */
+    double e = p < 0.5 ? cs_normal_cdf(x) - p : (1 - p) - 0.5 * erfc(x / sqrt(2.0));
+    double u = e * 2.5066282746310002 * exp(x * x / 2); /* sqrt(2 pi) */
+    return x - u / (1 + x * u / 2);
+}
+
+/* the untruncated CDF and quantile in standard units */
+static double dist_std(const cs_dist *d, double x) {
+    return d->kind == CS_DIST_LOGNORMAL ? (x > 0 ? (log(x) - d->a) / d->b : -HUGE_VAL) : (x - d->a) / d->b;
+}
+
+int cs_dist_prepare(cs_dist *d) {
+    if (d->kind == CS_DIST_UNIFORM) {
+        d->lo = d->a, d->hi = d->b;
+        d->p_lo = 0, d->p_hi = 1;
+        return d->a < d->b ? 0 : -1;
+    }
+    d->p_lo = isinf(d->lo) ? 0 : cs_normal_cdf(dist_std(d, d->lo));
+    d->p_hi = isinf(d->hi) ? 1 : cs_normal_cdf(dist_std(d, d->hi));
+    return d->p_hi > d->p_lo ? 0 : -1;
+}
+
+double cs_dist_quantile(const cs_dist *d, double u) {
+    if (d->kind == CS_DIST_UNIFORM) return d->a + u * (d->b - d->a);
+    double z = cs_normal_quantile(d->p_lo + u * (d->p_hi - d->p_lo));
+    double x = d->kind == CS_DIST_LOGNORMAL ? exp(d->a + d->b * z) : d->a + d->b * z;
+    return fmin(fmax(x, d->lo), d->hi);
+}
+
+/* ---- the runs' inputs ---- */
+
+double *cs_latin_hypercube(uint64_t seed, long n, int k) {
+    double *u = malloc((size_t)(n > 0 ? n : 1) * (size_t)(k > 0 ? k : 1) * sizeof *u);
+    long *perm = malloc((size_t)(n > 0 ? n : 1) * sizeof *perm);
+    if (!u || !perm) {
+        free(u);
+        free(perm);
+        return NULL;
+    }
+    for (int j = 0; j < k; j++) {
+        /* Fisher-Yates with numbers keyed by (variable, step): stream 1 */
+        for (long i = 0; i < n; i++)
+            perm[i] = i;
+        for (long i = n - 1; i > 0; i--) {
+            long r = (long)(cs_sweep_u01(seed, (uint64_t)j, (uint64_t)i, 1) * (double)(i + 1));
+            if (r > i) r = i;
+            long t = perm[i];
+            perm[i] = perm[r], perm[r] = t;
+        }
+        /* run i falls in stratum perm[i], at a point keyed by (run, variable): stream 2 */
+        for (long i = 0; i < n; i++)
+            u[i * k + j] = ((double)perm[i] + cs_sweep_u01(seed, (uint64_t)i, (uint64_t)j, 2)) / (double)n;
+    }
+    free(perm);
+    return u;
+}
+
+double *cs_sweep_samples(const cs_sweep_spec *s, long *run_count) {
+    long n = s->runs;
+    int k = s->var_count;
+    *run_count = n;
+    double *x = malloc((size_t)(n > 0 ? n : 1) * (size_t)(k > 0 ? k : 1) * sizeof *x);
+    if (!x) return NULL;
+    if (s->method == CS_SWEEP_GRID) {
+        for (long i = 0; i < n; i++) {
+            long rest = i;
+            for (int j = k - 1; j >= 0; j--) { /* the last variable varies fastest */
+                const cs_sweep_var *v = &s->vars[j];
+                int level = (int)(rest % v->level_count);
+                rest /= v->level_count;
+                x[i * k + j] = v->numeric ? v->levels[level] : level;
+            }
+        }
+        return x;
+    }
+    double *u = NULL;
+    if (s->method == CS_SWEEP_LATIN_HYPERCUBE && !(u = cs_latin_hypercube(s->seed, n, k))) {
+        free(x);
+        return NULL;
+    }
+    for (long i = 0; i < n; i++)
+        for (int j = 0; j < k; j++) {
+            double p = u ? u[i * k + j] : cs_sweep_u01(s->seed, (uint64_t)i, (uint64_t)j, 0);
+            x[i * k + j] = cs_dist_quantile(&s->vars[j].dist, p);
+        }
+    free(u);
+    return x;
+}
+
+void cs_sweep_value_text(const cs_sweep_var *v, double x, char *buf, size_t size) {
+    if (!v->numeric)
+        snprintf(buf, size, "%s", v->texts[(int)x]);
+    else if (v->integer)
+        snprintf(buf, size, "%.0f", x);
+    else
+        snprintf(buf, size, "%.12g", x);
+}
+
+double cs_sweep_value_used(const cs_sweep_var *v, double x) {
+    if (!v->numeric) return x;
+    char buf[64];
+    cs_sweep_value_text(v, x, buf, sizeof buf);
+    return strtod(buf, NULL);
+}
+
+const char *cs_astm_class_by_mass(double mass) {
+    static const char *const names[] = {"C", "PU", "M", "H"};
+    static const double lb[] = {2430, 5070, 15000, 65000};
+    int best = 2;
+    double gap = HUGE_VAL;
+    for (int i = 0; i < 4; i++) {
+        double g = fabs(log(mass / (lb[i] * 0.45359237)));
+        if (g < gap) gap = g, best = i;
+    }
+    return names[best];
+}
+
+/* ---- statistics ---- */
+
+cs_interval cs_wilson(long k, long n, double z) {
+    cs_interval r = {NAN, NAN, NAN};
+    if (n <= 0) return r;
+    double p = (double)k / (double)n, z2 = z * z, nn = (double)n;
+    double centre = (p + z2 / (2 * nn)) / (1 + z2 / nn);
+    double half = z / (1 + z2 / nn) * sqrt(p * (1 - p) / nn + z2 / (4 * nn * nn));
+    r.p = p;
+    r.lo = fmax(0.0, centre - half);
+    r.hi = fmin(1.0, centre + half);
+    return r;
+}
+
+typedef struct ranked {
+    double v;
+    long i;
+} ranked;
+
+static int by_value(const void *a, const void *b) {
+    const ranked *x = a, *y = b;
+    if (x->v < y->v) return -1;
+    if (x->v > y->v) return 1;
+    return x->i < y->i ? -1 : x->i > y->i; /* a total order: the same ranks on every machine */
+}
+
+int cs_ranks(const double *x, long n, double *rank) {
+    ranked *r = malloc((size_t)(n > 0 ? n : 1) * sizeof *r);
+    if (!r) return -1;
+    for (long i = 0; i < n; i++)
+        r[i] = (ranked){x[i], i};
+    qsort(r, (size_t)n, sizeof *r, by_value);
+    for (long i = 0; i < n;) {
+        long j = i + 1;
+        while (j < n && r[j].v == r[i].v)
+            j++;
+        double mean = 0.5 * (double)(i + 1 + j); /* ranks i+1 .. j */
+        for (long t = i; t < j; t++)
+            rank[r[t].i] = mean;
+        i = j;
+    }
+    free(r);
+    return 0;
+}
+
+double cs_spearman(const double *x, const double *y, long n) {
+    if (n < 2) return NAN;
+    double *rx = malloc((size_t)n * sizeof *rx), *ry = malloc((size_t)n * sizeof *ry);
+    double rho = NAN;
+    if (rx && ry && cs_ranks(x, n, rx) == 0 && cs_ranks(y, n, ry) == 0) {
+        double mean = 0.5 * (double)(n + 1), sxy = 0, sxx = 0, syy = 0;
+        for (long i = 0; i < n; i++) {
+            double dx = rx[i] - mean, dy = ry[i] - mean;
+            sxy += dx * dy, sxx += dx * dx, syy += dy * dy;
+        }
+        if (sxx > 0 && syy > 0) rho = sxy / sqrt(sxx * syy);
+    }
+    free(rx);
+    free(ry);
+    return rho;
+}

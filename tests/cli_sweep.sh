@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# cablesim sweep end to end: the same runs.csv (byte for byte) and summaries on 1 and 2 threads, a grid,
+# a Monte Carlo, a Latin hypercube, the outputs' shape, plain progress lines when not on a terminal,
+# and every spec in tests/sweep/bad/ refused with status 2 and exactly the problems its "# expect:
+# LINE:COL: text" lines name. The runs are 10 ms long so the suite stays fast.
+set -u
+cs=${1:?usage: bash tests/cli_sweep.sh path/to/cablesim}
+pass=0
+fail=0
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+ok() { pass=$((pass + 1)); }
+bad() { echo "FAIL: $*"; fail=$((fail + 1)); }
+check() { if eval "$2"; then ok; else bad "$1"; fi; }
+
+check "sweep --help" '"$cs" sweep --help | grep -q "usage: cablesim sweep SPEC.yaml"'
+"$cs" sweep >/dev/null 2>&1
+check "sweep without a spec is status 2" '[ $? -eq 2 ]'
+
+for spec in lhs grid mc; do
+    for t in 1 2; do
+        "$cs" sweep "tests/sweep/$spec.yaml" -o "$tmp/$spec-$t" --threads "$t" >"$tmp/$spec-$t.out" 2>"$tmp/$spec-$t.err"
+        check "$spec on $t threads exits 0" '[ $? -eq 0 ] || { cat "$tmp/$spec-$t.err"; false; }'
+    done
+    for f in runs.csv summary.md summary.json; do
+        check "$spec: $f the same on 1 and 2 threads" 'cmp "$tmp/$spec-1/$f" "$tmp/$spec-2/$f"'
+    done
+    check "$spec: no run failed" 'grep -q "; 0 did not run to the end" "$tmp/$spec-1.out"'
+    check "$spec: progress as plain lines" 'grep -q "^sweep: [0-9]*/[0-9]* runs (100%)" "$tmp/$spec-1.err"'
+done
+
+runs="$tmp/lhs-1/runs.csv"
+check "runs.csv: 4 runs and a header" '[ "$(wc -l <"$runs")" -eq 5 ]'
+check "runs.csv: inputs in SI with units" 'head -1 "$runs" | grep -q "^run,barrier.soil.soil_pressure \[Pa\],barrier.posts\[0\].yield_stress \[Pa\],scenario.speed \[m/s\],outcome,astm_f2656,"'
+check "runs.csv: responses" 'head -1 "$runs" | grep -q "max_dynamic_penetration \[m\].*events_cable_break.*,error$"'
+check "runs.csv: rows in run order" '[ "$(cut -d, -f1 "$runs" | tail -n +2 | tr "\n" " ")" = "0 1 2 3 " ]'
+check "runs.csv: speeds within 38-42 mph" 'awk -F, "NR > 1 && (\$4 < 38 * 0.44704 || \$4 > 42 * 0.44704) { bad = 1 } END { exit bad }" "$runs"'
+check "runs.csv: soil pressure above its 4000-psf minimum" 'awk -F, "NR > 1 && \$2 < 4000 * 47.880258 { bad = 1 } END { exit bad }" "$runs"'
+check "runs.csv: an ASTM label per run" '[ "$(cut -d, -f6 "$runs" | tail -n +2 | grep -cE "^(none|(C|PU|M|H)[0-9]+/P[1-4])$")" -eq 4 ]'
+check "summary.json: Wilson intervals and Spearman" 'grep -q "\"breakthrough\":{\"count\":0,\"p\":0,\"ci95\":\[0,0.48" "$tmp/lhs-1/summary.json" && grep -q "\"spearman\":{\"max_50ms_decel_g\":{\"barrier.soil.soil_pressure\":" "$tmp/lhs-1/summary.json"'
+check "summary.md: outcome table" 'grep -q "^| penetration > 1 m (or breakthrough) | " "$tmp/lhs-1/summary.md" && grep -q "^## Input importance" "$tmp/lhs-1/summary.md"'
+check "grid: 3 x 2 runs, last variable fastest" '[ "$(cut -d, -f3 "$tmp/grid-1/runs.csv" | tail -n +2 | tr "\n" " ")" = "SD-STD-02.01 PU SD-STD-02.01 PU SD-STD-02.01 PU " ]'
+check "grid: the PU run is rated as a PU" 'grep -q ",PU,time_limit,PU40/P1," "$tmp/grid-1/runs.csv"'
+check "grid: a text input has no Spearman" 'grep -q "\"vehicle\":null" "$tmp/grid-1/summary.json"'
+
+# --runs, --seed and --t-end from the command line; a different seed gives other inputs
+"$cs" sweep tests/sweep/mc.yaml -o "$tmp/mc-seed" --runs 3 --seed 99 --t-end "5 ms" --quiet >/dev/null 2>&1
+check "--runs --seed --t-end" '[ "$(wc -l <"$tmp/mc-seed/runs.csv")" -eq 4 ] && ! cmp -s <(head -2 "$tmp/mc-seed/runs.csv") <(head -2 "$tmp/mc-1/runs.csv") && grep -q "scenario.t_end=5 ms" "$tmp/mc-seed/summary.json"'
+check "--runs on a grid is refused" '! "$cs" sweep tests/sweep/grid.yaml -o "$tmp/x" --runs 3 >/dev/null 2>&1'
+
+files=0
+for f in tests/sweep/bad/*.yaml; do
+    files=$((files + 1))
+    out=$("$cs" sweep "$f" -o "$tmp/bad" 2>&1)
+    rc=$?
+    good=1
+    if [ "$rc" -ne 2 ]; then echo "FAIL $f: exit status $rc (expected 2)"; good=0; fi
+    expected=0
+    while IFS= read -r line; do
+        spec=${line#"# expect: "}
+        pos=${spec%%: *}
+        text=${spec#*: }
+        expected=$((expected + 1))
+        if ! grep -F -- "$f:$pos: " <<<"$out" | grep -qF -- "$text"; then
+            echo "FAIL $f: no problem '$text' at $pos"
+            good=0
+        fi
+    done < <(grep '^# expect: ' "$f")
+    got=$(grep -c "^$f:[0-9]*:[0-9]*: " <<<"$out")
+    if [ "$expected" -eq 0 ] || [ "$got" -ne "$expected" ]; then
+        echo "FAIL $f: $got problems reported, $expected expected"
+        good=0
+    fi
+    if [ "$good" -eq 1 ]; then ok; else fail=$((fail + 1)); echo "$out"; fi
+done
+check "bad specs wrote nothing" '[ ! -e "$tmp/bad" ]'
+check "at least 15 bad specs" '[ "$files" -ge 15 ]'
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]

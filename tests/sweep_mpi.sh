@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# cablesim-mpi sweep: the same runs.csv and summaries, byte for byte, on 1, 2 and 3 MPI ranks (3 splits 4
+# runs unevenly) and with 2 threads on each of 2 ranks. Exit 77 (skipped) only when MPI or mpirun is absent.
+set -u
+cs=${1:-}
+if [ -z "$cs" ]; then
+    echo "SKIP: cablesim-mpi was not built (MPI not found: install libopenmpi-dev openmpi-bin, then re-run cmake)"
+    exit 77
+fi
+if ! command -v mpirun >/dev/null 2>&1; then
+    echo "SKIP: mpirun is absent (install openmpi-bin)"
+    exit 77
+fi
+flags=(--oversubscribe)
+[ "$(id -u)" -eq 0 ] && flags+=(--allow-run-as-root)
+pass=0
+fail=0
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+for spec in lhs grid; do
+    for case in "1 1" "2 1" "3 1" "2 2"; do
+        set -- $case
+        out="$tmp/$spec-$1-$2"
+        if ! mpirun "${flags[@]}" -n "$1" "$cs" sweep "tests/sweep/$spec.yaml" -o "$out" --threads "$2" \
+            >"$out.log" 2>&1; then
+            echo "FAIL: $spec on $1 ranks x $2 threads"
+            cat "$out.log"
+            fail=$((fail + 1))
+            continue
+        fi
+        grep -q "on $1 rank" "$out.log" || { echo "FAIL: $spec did not run on $1 ranks"; cat "$out.log"; fail=$((fail + 1)); }
+        if [ "$1 $2" != "1 1" ]; then
+            for f in runs.csv summary.md summary.json; do
+                if cmp "$tmp/$spec-1-1/$f" "$out/$f"; then
+                    pass=$((pass + 1))
+                else
+                    echo "FAIL: $spec $f differs between 1 rank and $1 ranks x $2 threads"
+                    fail=$((fail + 1))
+                fi
+            done
+        fi
+    done
+done
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]
