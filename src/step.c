@@ -9,7 +9,9 @@
  * no work done on it: re-solve at the same vehicle pose until nothing more fails, and book the stored
  * energy that vanished (massless cable snapping, posts letting go) as released. */
 static void resolve_failures(const cs_model *model, cs_state *s) {
-    double before = cs_barrier_stored_energy(model, s);
+    /* what is released is the whole drop across the failures; a cable slipping off the face inside
+     * the loop books its own share too (contact.c), so restart from the total before the loop */
+    double before = cs_barrier_stored_energy(model, s), released = s->e_released;
     int changed = 0;
     for (int round = 0; round <= model->cable_count + model->post_count + 2; round++) {
         int any = 0;
@@ -26,7 +28,7 @@ static void resolve_failures(const cs_model *model, cs_state *s) {
         cs_barrier_solve(model, s);
         cs_barrier_commit(model, s);
     }
-    if (changed) s->e_released += before - cs_barrier_stored_energy(model, s);
+    if (changed) s->e_released = released + before - cs_barrier_stored_energy(model, s);
 }
 
 static cs_status unstable(const cs_model *model, cs_state *s, cs_error *err, const char *what, int element) {
