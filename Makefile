@@ -17,7 +17,7 @@ build: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
 
 demo: build
-	$(BUILD)/cablesim run examples/aps3.yaml -o $(DEMO_OUT) --plots
+	$(BUILD)/cablesim run examples/aps3.yaml -o $(DEMO_OUT) --plots --report
 
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)

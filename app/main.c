@@ -10,6 +10,7 @@
 #include "loader.h"
 #include "outfile.h"
 #include "record.h"
+#include "report_html.h"
 #include "schema.h"
 #include "sweepcmd.h"
 #include "writers.h"
@@ -18,6 +19,7 @@ enum { EXIT_RUN = 1, EXIT_BAD = 2 };
 
 static const char usage[] =
     "usage: cablesim run FILE [-o DIR] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
+    "                [--report]\n"
     "       cablesim check FILE [--set PATH=VALUE]...\n"
     "       cablesim sweep SPEC.yaml [-o DIR] [--threads N]   a study: grids, Monte Carlo (see sweep --help)\n"
     "       cablesim rate FILE --standard sd-std-02.01|sd-std-02.01a|astm-f2656 [--class M50|K8]\n"
@@ -27,14 +29,15 @@ static const char usage[] =
     "       cablesim --help | --version\n"
     "\n"
     "run writes DIR/timeseries.csv, DIR/events.csv and DIR/summary.json (default DIR: results/<model name>)\n"
-    "and prints a summary; --plots also draws the run's figures as DIR/plots/*.png and *.svg.\n"
+    "and prints a summary; --plots also draws the run's figures as DIR/plots/*.png and *.svg; --report\n"
+    "writes DIR/report.html, one page that opens from disk: summary, failure timeline, plots, 3D replay.\n"
     "Values take units: --dt \"0.2 ms\", --set scenario.speed=\"35 mph\",\n"
     "--set barrier.cables[0].pretension=\"8 kip\". Exit status: 0 done, 1 the run failed, 2 bad model or "
     "usage.\n";
 
 typedef struct options {
     const char *command, *file, *out_dir;
-    int plots;
+    int plots, report;
 } options;
 
 static int bad_usage(const char *what) {
@@ -49,6 +52,10 @@ static int parse(int argc, char **argv, options *o, cs_loader *l) {
         char set[1024];
         if (strcmp(a, "--plots") == 0) {
             o->plots = 1;
+            continue;
+        }
+        if (strcmp(a, "--report") == 0) {
+            o->report = 1;
             continue;
         }
         static const char *const valued[][2] = {
@@ -96,8 +103,35 @@ static int write_plots(cs_outdir *out, const cs_model_input *in, const cs_state 
     return rc;
 }
 
+#ifdef CS_HAVE_REPORT
+enum { HAVE_REPORT = 1 };
+#else
+enum { HAVE_REPORT = 0 };
+#endif
+
+/* DIR/report.html, begun on out. A build that lacked node and npm has no page: a warning, no file. */
+static int write_report_html(cs_outdir *out, const cs_model_input *in, const cs_state *state,
+                             const cs_record *rec, char *why, size_t why_size) {
+#ifdef CS_HAVE_REPORT
+    FILE *f = cs_out_begin(out, "report.html", why, why_size);
+    if (!f) return -1;
+    int rc = cs_write_report_html(f, cs_report_page, cs_report_page_size, in, state, rec, why, why_size);
+    char end_why[512];
+    if (cs_out_end(out, f, end_why, sizeof end_why) != 0 && rc == 0) {
+        snprintf(why, why_size, "%s", end_why);
+        rc = -1;
+    }
+    return rc;
+#else
+    (void)out, (void)in, (void)state, (void)rec, (void)why, (void)why_size;
+    fprintf(stderr, "cablesim: warning: no report.html: this cablesim was built without node and npm "
+                    "(install them with scripts/install-deps.sh and build again)\n");
+    return 0;
+#endif
+}
+
 static int write_outputs(const char *dir, const cs_model_input *in, const cs_state *state,
-                         const cs_record *rec, int plots) {
+                         const cs_record *rec, int plots, int report) {
     char why[512] = "";
     cs_outdir out;
     int rc = cs_out_open(&out, dir, why, sizeof why);
@@ -118,6 +152,7 @@ static int write_outputs(const char *dir, const cs_model_input *in, const cs_sta
         }
     }
     if (rc == 0 && plots) rc = write_plots(&out, in, state, rec, why, sizeof why);
+    if (rc == 0 && report) rc = write_report_html(&out, in, state, rec, why, sizeof why);
     if (rc == 0) rc = cs_out_commit(&out, why, sizeof why);
     if (rc != 0) {
         cs_out_abort(&out);
@@ -126,7 +161,7 @@ static int write_outputs(const char *dir, const cs_model_input *in, const cs_sta
     return rc;
 }
 
-static int run(const cs_model_input *in, cs_model *model, const char *dir, int plots) {
+static int run(const cs_model_input *in, cs_model *model, const char *dir, int plots, int report) {
     cs_error err = {0};
     cs_record rec;
     cs_state *state = cs_state_create(model, &err);
@@ -142,13 +177,13 @@ static int run(const cs_model_input *in, cs_model *model, const char *dir, int p
         fprintf(stderr, "cablesim: the run failed, nothing written: %s\n", err.message);
     else if (rec.failed)
         fprintf(stderr, "cablesim: out of memory while recording, nothing written\n");
-    else if (write_outputs(dir ? dir : path, in, state, &rec, plots) == 0) {
+    else if (write_outputs(dir ? dir : path, in, state, &rec, plots, report) == 0) {
         cs_write_report(stdout, in, state);
         cs_summary sm;
         cs_state_summary(state, &sm);
         cs_print_run_rating(stdout, &in->vehicle, in->scenario.speed, &sm);
-        printf("  outputs              %s/{timeseries.csv,events.csv,summary.json%s}\n", dir ? dir : path,
-               plots ? ",plots/*.png,plots/*.svg" : "");
+        printf("  outputs              %s/{timeseries.csv,events.csv,summary.json%s%s}\n", dir ? dir : path,
+               plots ? ",plots/*.png,plots/*.svg" : "", report && HAVE_REPORT ? ",report.html" : "");
         rc = 0;
     }
     cs_record_free(&rec);
@@ -212,7 +247,7 @@ int main(int argc, char **argv) {
         return EXIT_RUN;
     }
     int rc;
-    options o = {cmd, NULL, NULL, 0};
+    options o = {cmd, NULL, NULL, 0, 0};
     cs_model_input in;
     cs_model *model = NULL;
     if (!is_run && !is_check)
@@ -227,7 +262,7 @@ int main(int argc, char **argv) {
         printf("%s: %s is a valid model (%d cables, %d posts)\n", o.file, in.name, in.barrier.cable_count,
                in.barrier.post_count);
     } else {
-        rc = run(&in, model, o.out_dir, o.plots);
+        rc = run(&in, model, o.out_dir, o.plots, o.report);
     }
     cs_model_free(model);
     cs_loader_free(l);

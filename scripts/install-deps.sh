@@ -2,6 +2,10 @@
 # Install the Debian packages cablesim needs, only those missing. Safe to run again.
 set -euo pipefail
 pkgs=(build-essential cmake pkg-config clang libcyaml-dev libudunits2-dev libcmocka-dev libcairo2-dev)
+# report.html (report/): node and npm build its page (Debian's only where none is installed: a newer one
+# may be); Debian's chromium and chromium-driver run its browser test.
+pkgs+=(chromium chromium-driver)
+{ command -v node && command -v npm; } >/dev/null 2>&1 || pkgs+=(nodejs npm)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")

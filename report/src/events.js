@@ -1,0 +1,72 @@
+// The failure timeline in words: events.csv, one row per moment and kind of event (elements that
+// fail together, like the two mirror posts of a centred impact, share a row).
+import { pair, fmt } from './units.js';
+
+// What each event type means and how its value (SI) reads.
+const KINDS = {
+  post_hinge: { group: 'yield', text: (who) => `${who} yield${s(who)}: a plastic hinge forms at the base`, value: (v) => `moment capacity ${pair('moment', v)}` },
+  footing_rotation: { group: 'yield', text: (who) => `${who} start${s(who)} rotating in the soil (footing at its capacity)`, value: (v) => `moment capacity ${pair('moment', v)}` },
+  post_rotation_limit: { group: 'fail', text: (who) => `${who} fail${s(who)}: tilted past the rotation limit, out of the barrier`, value: (v) => `tilt ${fmt((v * 180) / Math.PI, 1)}°` },
+  post_shear: { group: 'fail', text: (who) => `${who} fail${s(who)}: sheared off at the base`, value: (v) => `base shear ${pair('force', v)}` },
+  post_pullout: { group: 'fail', text: (who) => `${who} fail${s(who)}: pulled out of the footing`, value: (v) => `axial pull ${pair('force', v)}` },
+  anchor_pullout: { group: 'fail', text: (who) => `${who} pull${s(who)} out of the ground: its cables go slack`, value: (v) => `pull ${pair('force', v)}` },
+  cable_break: { group: 'break', text: (who) => `${who} break${s(who)}`, value: (v) => `tension ${pair('force', v)}` },
+  override: { group: 'slip', text: (who) => `The vehicle rides over ${lower(who)}: it slips under the front face and stops holding the vehicle`, value: () => '' },
+  underride: { group: 'slip', text: (who) => `The vehicle runs under ${lower(who)}: it slips over the front face and stops holding the vehicle`, value: () => '' },
+  stopped: { group: 'end', text: () => 'The vehicle has stopped: the barrier contained it', value: (v) => `dynamic penetration ${pair('length', v)}` },
+  breakthrough: { group: 'end', text: () => 'The vehicle is through the barrier: no cable holds it any more', value: (v) => `exit speed ${pair('speed', v)}` },
+};
+
+function s(who) {
+  return / and /.test(who) ? '' : 's';
+}
+function lower(who) {
+  return who.charAt(0).toLowerCase() + who.slice(1);
+}
+
+function list(words) {
+  return words.length <= 1 ? words.join('') : `${words.slice(0, -1).join(', ')} and ${words[words.length - 1]}`;
+}
+
+// Who: "Post 7 (x = 19.51 m)", "Posts 7 and 8 (x = 19.51 and 21.95 m)", "Cable 0 (upper, 1.22 m high)".
+function who(data, kind, elements) {
+  const b = data.barrier;
+  if (kind === 'post') {
+    const xs = elements.map((p) => (b.posts[p] ? fmt(b.posts[p][0], 2) : '?'));
+    return `${elements.length > 1 ? 'Posts' : 'Post'} ${list(elements.map(String))} (x = ${list(xs)} m)`;
+  }
+  if (kind === 'cable') {
+    const hs = elements.map((c) => (b.cables[c] ? fmt(b.cables[c][0], 2) : '?'));
+    return `${elements.length > 1 ? 'Cables' : 'Cable'} ${list(elements.map(String))} (${list(hs)} m high)`;
+  }
+  if (kind === 'anchor') return list(elements.map((a) => (a === 0 ? 'The start anchor' : 'The end anchor')));
+  return 'The vehicle';
+}
+
+export const GROUP_COLORS = { yield: '#9933bf', fail: '#1a1a1a', break: '#d62728', slip: '#e67300', end: '#1f77b4', contact: '#2ca02c' };
+
+// Rows: {t, type, group, text, value, elements, kind}. The first contact comes first.
+export function timeline(data) {
+  const rows = [];
+  if (data.summary.first_contact !== null) {
+    rows.push({ t: data.summary.first_contact, type: 'contact', group: 'contact', kind: 'vehicle', elements: [], text: 'First contact: the front face reaches the cables', value: '' });
+  }
+  for (const [t, type, kind, element, value] of data.events) {
+    const last = rows[rows.length - 1];
+    if (last && last.t === t && last.type === type && last.kind === kind && kind !== 'vehicle') {
+      last.elements.push(element);
+      last.values.push(value);
+      continue;
+    }
+    rows.push({ t, type, kind, group: KINDS[type] ? KINDS[type].group : 'end', elements: [element], values: [value] });
+  }
+  for (const r of rows) {
+    if (r.type === 'contact') continue;
+    const k = KINDS[r.type];
+    const w = who(data, r.kind, r.elements);
+    r.text = k ? k.text(w) : `${r.type}: ${w}`;
+    const distinct = [...new Set(r.values.map((v) => v.toPrecision(4)))];
+    r.value = k ? (distinct.length === 1 ? k.value(r.values[0]) : r.values.map((v) => k.value(v)).join('; ')) : '';
+  }
+  return rows;
+}

@@ -1,0 +1,131 @@
+// The run in words and in numbers (SI with US units beside), and the failure timeline as a table.
+import { pair, both, fmt, seconds } from './units.js';
+import { timeline, GROUP_COLORS } from './events.js';
+
+function el(tag, attrs = {}, ...children) {
+  const e = document.createElement(tag);
+  for (const [k, v] of Object.entries(attrs)) {
+    if (k === 'class') e.className = v;
+    else if (k.startsWith('on')) e.addEventListener(k.slice(2), v);
+    else e.setAttribute(k, v);
+  }
+  for (const c of children) if (c !== null && c !== undefined) e.append(c);
+  return e;
+}
+export { el };
+
+const OUTCOME = {
+  stopped: { word: 'Stopped', cls: 'good' },
+  breakthrough: { word: 'Broke through', cls: 'bad' },
+  time_limit: { word: 'Time limit reached', cls: 'neutral' },
+  running: { word: 'Did not finish', cls: 'neutral' },
+};
+
+export function story(data) {
+  const s = data.summary;
+  const sc = data.scenario;
+  const posts = data.barrier.posts.length;
+  const cables = data.barrier.cables.length;
+  const angle = (sc.angle * 180) / Math.PI;
+  const failed = s.posts_failed_left + s.posts_failed_right;
+  const parts = [];
+  parts.push(
+    `A ${pair('mass', data.vehicle.mass)} vehicle struck the ${data.name} barrier (${cables} cable${cables === 1 ? '' : 's'} on ${posts} posts) ` +
+      `${Math.abs(angle - 90) < 0.5 ? 'head-on' : `at ${fmt(angle, 0)}° to the barrier line`} at ${pair('speed', sc.speed)}, ` +
+      `centred at x = ${pair('length', sc.impact_x)} along the barrier.`,
+  );
+  if (s.outcome === 'stopped')
+    parts.push(`The barrier stopped it at t = ${seconds(s.stop_time)}, ${pair('length', s.max_penetration)} past the cable line.`);
+  else if (s.outcome === 'breakthrough')
+    parts.push(`It broke through at t = ${seconds(s.t_end)}, still moving at ${pair('speed', s.exit_speed)}, after pushing ${pair('length', s.max_penetration)} past the cable line.`);
+  else parts.push(`The simulation ended at its time limit, t = ${seconds(s.t_end)}, with the vehicle still moving; the furthest it got was ${pair('length', s.max_penetration)} past the cable line.`);
+  parts.push(
+    `${failed} of ${posts} posts failed (${s.posts_failed_left} on the low-x side of the impact, ${s.posts_failed_right} on the high-x side) and ` +
+      `${s.cables_broken === 0 ? 'no cable broke' : `${s.cables_broken} of ${cables} cables broke`}. ` +
+      `The largest 50-ms average deceleration was ${fmt(s.max_decel_50ms_g, 2)} g at t = ${seconds(s.t_max_decel)}.`,
+  );
+  const slips = data.events.filter((e) => e[1] === 'override' || e[1] === 'underride');
+  if (slips.length) {
+    const over = slips.filter((e) => e[1] === 'override').length;
+    parts.push(
+      over === slips.length
+        ? `The cables slipped under the front bumper (the vehicle rode over ${over === 1 ? 'one cable' : 'them'}).`
+        : `Cables slipped off the front face ${slips.length} times (over or under it).`,
+    );
+  }
+  return parts.join(' ');
+}
+
+function card(label, si, us, note, cls = '') {
+  return el('div', { class: `card ${cls}` }, el('div', { class: 'label' }, label), el('div', { class: 'value' }, si), el('div', { class: 'us' }, us || '\u00a0'), el('div', { class: 'note' }, note || '\u00a0'));
+}
+
+export function cards(data) {
+  const s = data.summary;
+  const o = OUTCOME[s.outcome] || OUTCOME.running;
+  const posts = data.barrier.posts.length;
+  const cables = data.barrier.cables.length;
+  const [penSI, penUS] = both.length(s.max_penetration);
+  const [exitSI, exitUS] = s.exit_speed !== null ? both.speed(s.exit_speed) : ['–', s.outcome === 'stopped' ? 'the vehicle stopped' : 'the vehicle did not get through'];
+  const [keSI, keUS] = both.energy(s.initial_kinetic_energy);
+  return el(
+    'div',
+    { class: 'cards' },
+    card('Outcome', o.word, s.outcome === 'breakthrough' ? `at t = ${seconds(s.t_end)}` : s.outcome === 'stopped' ? `at t = ${seconds(s.stop_time)}` : `t = ${seconds(s.t_end)}`, `run of ${seconds(s.t_end)} simulated`, o.cls),
+    card('Max 50-ms deceleration', `${fmt(s.max_decel_50ms_g, 2)} g`, `at t = ${seconds(s.t_max_decel)}`, 'average over the worst 50 ms'),
+    card('Penetration', penSI, penUS, 'front face past the cable line'),
+    card('Exit speed', exitSI, exitUS, s.exit_speed !== null ? 'speed as it got through' : 'while the run lasted'),
+    card('Posts failed', `${s.posts_failed_left + s.posts_failed_right} of ${posts}`, `${s.posts_failed_left} left, ${s.posts_failed_right} right`, `cables broken: ${s.cables_broken} of ${cables}`),
+    card('Energy balance', `${fmt(100 * s.energy_balance_error, 2)} %`, `of ${keSI} (${keUS})`, 'ledger error, largest over the run', Math.abs(s.energy_balance_error) > 0.05 ? 'warn' : ''),
+  );
+}
+
+export function summaryTable(data) {
+  const s = data.summary;
+  const sc = data.scenario;
+  const rows = [
+    ['Outcome', (OUTCOME[s.outcome] || OUTCOME.running).word, `at t = ${seconds(s.t_end)}`],
+    ['Model', data.name, data.file],
+    ['Vehicle mass', ...both.mass(data.vehicle.mass)],
+    ['Impact speed', ...both.speed(sc.speed)],
+    ['Impact angle (90° = head-on)', ...both.angle(sc.angle)],
+    ['Impact point along the barrier', ...both.length(sc.impact_x)],
+    ['Initial kinetic energy', ...both.energy(s.initial_kinetic_energy)],
+    ['First contact', s.first_contact === null ? 'none' : seconds(s.first_contact), null],
+    ['Max 50-ms deceleration', `${fmt(s.max_decel_50ms_g, 3)} g`, `at t = ${seconds(s.t_max_decel)}`],
+    ['Max dynamic penetration (front face)', ...both.length(s.max_penetration)],
+    ['Max barrier deflection (cable)', ...both.length(s.max_deflection)],
+    ['Max cable tension', ...both.force(s.max_cable_tension)],
+    ['Posts failed', `${s.posts_failed_left + s.posts_failed_right} of ${data.barrier.posts.length}`, `${s.posts_failed_left} at lower x than the impact, ${s.posts_failed_right} at higher x`],
+    ['Cables broken', `${s.cables_broken} of ${data.barrier.cables.length}`, null],
+    ['Exit speed', ...(s.exit_speed === null ? ['none', null] : both.speed(s.exit_speed))],
+    ['Stop time', s.stop_time === null ? 'did not stop' : seconds(s.stop_time), null],
+    ['Energy balance error', `${fmt(100 * s.energy_balance_error, 3)} %`, 'of the initial kinetic energy'],
+    ['Solver warnings', `${s.solver_warnings} steps`, s.solver_warnings ? `steps whose barrier equilibrium stopped short of its tolerance (largest relative residual ${fmt(s.max_solver_residual, 2)})` : 'every step reached equilibrium'],
+    ['Time step / recording interval', `${fmt(sc.dt * 1e3, 2)} ms / ${fmt(sc.output_interval * 1e3, 2)} ms`, null],
+  ];
+  const tbody = el('tbody');
+  for (const [name, si, us] of rows) tbody.append(el('tr', {}, el('th', { scope: 'row' }, name), el('td', {}, si), el('td', { class: 'us' }, us || '')));
+  return el('table', { class: 'summary' }, el('thead', {}, el('tr', {}, el('th', {}, 'Quantity'), el('th', {}, 'SI'), el('th', {}, 'US customary'))), tbody);
+}
+
+// The timeline table; seek(t) moves the replay there when a row is clicked.
+export function timelineTable(data, seek) {
+  const rows = timeline(data);
+  const tbody = el('tbody');
+  for (const r of rows) {
+    const tr = el(
+      'tr',
+      { class: `ev ${r.group}`, title: 'show this moment in the 3D replay', tabindex: '0', onclick: () => seek(r.t), onkeydown: (e) => e.key === 'Enter' && seek(r.t) },
+      el('td', { class: 'num' }, fmt(r.t, 4)),
+      el('td', {}, el('span', { class: 'dot', style: `background:${GROUP_COLORS[r.group]}` }), r.text),
+      el('td', { class: 'val' }, r.value),
+    );
+    tr.dataset.t = r.t;
+    tbody.append(tr);
+  }
+  return {
+    rows,
+    table: el('table', { class: 'timeline' }, el('thead', {}, el('tr', {}, el('th', {}, 'time (s)'), el('th', {}, 'what happened'), el('th', {}, 'value'))), tbody),
+  };
+}

@@ -1,0 +1,170 @@
+// report.html in a real browser: Debian's headless chromium driven by playwright-core. Runs a short real
+// simulation with --report, opens the page from file:// and checks what a reader would see: no console
+// errors and no network requests, the summary and the timeline filled, the 3D replay drawn (pixels read
+// back), scrubbing to the end moves the vehicle, playing advances, every plot has data. Screenshots go
+// to OUT (a build dir: test artifacts, never committed).
+//
+//   node report/test/browser.mjs --cablesim BUILD/cablesim --modules BUILD/report/node_modules --out DIR
+//        [--report FILE]      check this report instead of running one
+//        [--model FILE] [--t-end T]   the run (default examples/aps3.yaml, 0.12 s)
+import { createRequire } from 'node:module';
+import { spawnSync } from 'node:child_process';
+import { existsSync, mkdirSync, mkdtempSync, rmSync, statSync } from 'node:fs';
+import { join, resolve } from 'node:path';
+import { pathToFileURL } from 'node:url';
+
+const args = {};
+for (let i = 2; i < process.argv.length; i += 2) args[process.argv[i].replace(/^--/, '')] = process.argv[i + 1];
+if (!args.modules || !args.out || (!args.cablesim && !args.report)) {
+  console.error('usage: node report/test/browser.mjs --cablesim CABLESIM --modules NODE_MODULES --out DIR [--report FILE]');
+  process.exit(2);
+}
+const out = resolve(args.out);
+mkdirSync(out, { recursive: true });
+const chromiumPath = process.env.CS_CHROMIUM || '/usr/bin/chromium';
+
+let passed = 0;
+let failed = 0;
+function check(what, ok, detail = '') {
+  if (ok) passed++;
+  else {
+    failed++;
+    console.log(`FAIL: ${what}${detail ? `: ${detail}` : ''}`);
+  }
+}
+function finish() {
+  console.log(`${passed} passed, ${failed} failed`);
+  process.exit(failed ? 1 : 0);
+}
+
+let report = args.report && resolve(args.report);
+if (!report) {
+  const dir = join(out, 'run');
+  rmSync(dir, { recursive: true, force: true });
+  const t0 = Date.now();
+  const r = spawnSync(args.cablesim, ['run', args.model || 'examples/aps3.yaml', '--t-end', args['t-end'] || '0.12 s', '-o', dir, '--report'], { encoding: 'utf8' });
+  check('cablesim run --report exits 0', r.status === 0, `${r.status} ${r.stderr}`);
+  check('the summary names report.html', /report\.html/.test(r.stdout), r.stdout);
+  report = join(dir, 'report.html');
+  console.log(`run: ${((Date.now() - t0) / 1000).toFixed(1)} s`);
+}
+check('report.html exists', existsSync(report));
+if (!existsSync(report)) finish();
+const size = statSync(report).size;
+check('report.html is at most a few MB', size > 100e3 && size < 8e6, `${size} bytes`);
+if (!existsSync(chromiumPath)) {
+  check(`a browser at ${chromiumPath}`, false, 'install Debian chromium (bash scripts/install-deps.sh)');
+  finish();
+}
+
+const require = createRequire(join(resolve(args.modules), 'noop.js'));
+const { chromium } = require('playwright-core');
+const profile = mkdtempSync(join(out, 'profile-'));
+const context = await chromium.launchPersistentContext(profile, {
+  executablePath: chromiumPath,
+  headless: true,
+  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+  viewport: { width: 1400, height: 1000 },
+  deviceScaleFactor: 1,
+});
+const page = context.pages()[0] || (await context.newPage());
+const consoleErrors = [];
+const requests = [];
+page.on('console', (m) => {
+  if (m.type() === 'error') consoleErrors.push(m.text());
+});
+page.on('pageerror', (e) => consoleErrors.push(`page error: ${e.message}`));
+page.on('request', (r) => {
+  if (!/^(file|data|blob):/.test(r.url())) requests.push(r.url());
+});
+
+try {
+  const t0 = Date.now();
+  await page.goto(pathToFileURL(report).href, { waitUntil: 'load' });
+  await page.waitForFunction(() => window.csReport && window.csReport.ready, null, { timeout: 60000 });
+  console.log(`page ready: ${((Date.now() - t0) / 1000).toFixed(1)} s`);
+  const state = await page.evaluate(() => ({ errors: window.csReport.errors, data: window.csReport.data, replayError: window.csReport.replay && window.csReport.replay.error }));
+  check('the page reports no errors of its own', state.errors.length === 0, state.errors.join('; '));
+
+  // summary and timeline
+  const story = await page.textContent('#story');
+  check('the story says what happened', story.length > 100 && /vehicle/.test(story), story);
+  check('six summary cards', (await page.locator('.card').count()) === 6);
+  const rows = await page.locator('table.timeline tbody tr').count();
+  check('the timeline lists the events', rows >= 2 && rows <= state.data.events + 1, `${rows} rows for ${state.data.events} events`);
+  const table = await page.textContent('table.summary');
+  check('the summary table gives SI and US units', /m\/s/.test(table) && /mph/.test(table) && /kip/.test(table) && /ft/.test(table));
+
+  // the 3D replay
+  check('the 3D replay started (WebGL)', !state.replayError, state.replayError);
+  if (!state.replayError) {
+    const first = await page.evaluate(() => {
+      window.csReport.replay.seekFrame(0);
+      return { pos: window.csReport.replay.vehiclePosition(), px: window.csReport.replay.readPixels(), n: window.csReport.replay.frameCount };
+    });
+    check('the replay has frames', first.n >= 10, `${first.n}`);
+    check('the 3D canvas drew a non-blank frame', first.px.nonBackground > 0.2 && first.px.colours > 30, JSON.stringify(first.px));
+    await page.screenshot({ path: join(out, 'replay-start.png') });
+    // scrub to the end with the slider, as a reader would
+    await page.focus('#scrub');
+    await page.keyboard.press('End');
+    const last = await page.evaluate(() => ({ frame: window.csReport.replay.frame, pos: window.csReport.replay.vehiclePosition(), px: window.csReport.replay.readPixels(), clock: document.getElementById('clock').textContent }));
+    check('the slider scrubs to the last frame', last.frame === first.n - 1, `${last.frame} of ${first.n}`);
+    const moved = Math.hypot(...last.pos.map((v, i) => v - first.pos[i]));
+    check('scrubbing to the end moves the vehicle', moved > 0.5, `${moved.toFixed(3)} m`);
+    check('the rendered frame changes with it', last.px.hash !== first.px.hash && last.px.nonBackground > 0.2);
+    check('the clock shows the time', /t = \d/.test(last.clock), last.clock);
+    await page.screenshot({ path: join(out, 'replay-end.png') });
+    // play from the start for a moment, then pause
+    await page.click('#restart');
+    await page.click('#play');
+    await page.waitForTimeout(1500);
+    const playing = await page.evaluate(() => ({ frame: window.csReport.replay.frame, playing: window.csReport.replay.playing }));
+    await page.click('#play');
+    const paused = await page.evaluate(() => window.csReport.replay.frame);
+    await page.waitForTimeout(400);
+    const still = await page.evaluate(() => window.csReport.replay.frame);
+    check('play advances the replay', playing.frame > 0, JSON.stringify(playing));
+    check('pause stops it', paused === still, `${paused} -> ${still}`);
+    // a timeline row moves the replay to its time
+    await page.locator('table.timeline tbody tr').nth(1).click();
+    const rowT = Number(await page.locator('table.timeline tbody tr').nth(1).getAttribute('data-t'));
+    const at = await page.evaluate(() => window.csReport.replay.frame);
+    const frameT = await page.evaluate((i) => JSON.parse(document.getElementById('cs-data').textContent).frames[i][0], at);
+    check('a timeline row seeks the replay', Math.abs(frameT - rowT) < 0.01, `${frameT} vs ${rowT}`);
+  }
+
+  // the plots
+  const plots = await page.evaluate(() =>
+    window.csReport.plots.map((p) => {
+      const canvas = document.querySelector(`#plot-${p.key} canvas`);
+      const ctx = canvas.getContext('2d');
+      const img = ctx.getImageData(0, 0, canvas.width, canvas.height).data;
+      let ink = 0;
+      for (let i = 0; i < img.length; i += 4) if (img[i + 3] > 0 && img[i] + img[i + 1] + img[i + 2] < 600) ink++;
+      return { ...p, ink: ink / (canvas.width * canvas.height) };
+    }),
+  );
+  const expected = ['deceleration', 'speed', 'penetration', 'cables', 'post_tilt', 'post_moment', 'energy'];
+  check('every plot is there', expected.every((k) => plots.some((p) => p.key === k)), plots.map((p) => p.key).join(','));
+  for (const p of plots) {
+    check(`plot ${p.key} has its time axis`, p.length >= 10, `${p.length}`);
+    check(`plot ${p.key}: every series has data`, p.points.length > 0 && p.points.every((n) => n > 0), JSON.stringify(p.points));
+    check(`plot ${p.key} is drawn`, p.ink > 0.01, `${(100 * p.ink).toFixed(2)} % ink`);
+  }
+
+  await page.evaluate(() => window.scrollTo(0, 0));
+  await page.screenshot({ path: join(out, 'report-top.png') });
+  for (const id of ['summary', 'replay-section', 'timeline-section', 'plots-section', 'numbers'])
+    await page.locator(`#${id}`).screenshot({ path: join(out, `section-${id}.png`) });
+  await page.screenshot({ path: join(out, 'report-full.png'), fullPage: true });
+  check('no console errors', consoleErrors.length === 0, consoleErrors.join(' | '));
+  check('no network requests', requests.length === 0, requests.join(' '));
+} catch (e) {
+  check('the browser session', false, e.stack || String(e));
+} finally {
+  await context.close();
+  rmSync(profile, { recursive: true, force: true });
+}
+console.log(`screenshots: ${out}/{report-top,report-full,replay-start,replay-end,section-*}.png`);
+finish();

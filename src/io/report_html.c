@@ -1,0 +1,515 @@
+/* report.html (report_html.h): the run's data as one JSON object inside the page built from report/. */
+#include "report_html.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "writers.h"
+
+static const double G0 = 9.80665;
+
+typedef struct jw {
+    cs_wout w;
+    char what[96]; /* names the value being written, for the message of a non-finite one */
+} jw;
+
+/* A JSON string; '<', '>' and '&' as \u escapes so that no "</script>" or "<!--" can appear. */
+static void jstr(FILE *f, const char *s) {
+    fputc('"', f);
+    for (; s && *s; s++) {
+        unsigned char c = (unsigned char)*s;
+        if (c == '"' || c == '\\')
+            fprintf(f, "\\%c", c);
+        else if (c < 0x20 || c == '<' || c == '>' || c == '&')
+            fprintf(f, "\\u%04x", c);
+        else
+            fputc(c, f);
+    }
+    fputc('"', f);
+}
+
+/* A number with 6 significant digits (the data of a page, not of an analysis: the CSV has 10). */
+static void num(jw *j, double v) {
+    if (j->w.bad) return;
+    if (!isfinite(v)) {
+        j->w.bad = 1;
+        snprintf(j->w.why, sizeof j->w.why, "%s is %s", j->what, isnan(v) ? "NaN" : "infinite");
+        return;
+    }
+    fprintf(j->w.f, "%.6g", v == 0 ? 0.0 : v); /* no "-0" */
+}
+
+/* A number that may be absent on purpose (NaN: null). */
+static void opt(jw *j, double v) {
+    if (isnan(v))
+        fputs("null", j->w.f);
+    else
+        num(j, v);
+}
+
+static void key(jw *j, int *first, const char *k) {
+    fprintf(j->w.f, "%s\"%s\":", *first ? "" : ",", k);
+    *first = 0;
+}
+
+static void knum(jw *j, int *first, const char *k, double v) {
+    key(j, first, k);
+    snprintf(j->what, sizeof j->what, "%s", k);
+    num(j, v);
+}
+
+static void kopt(jw *j, int *first, const char *k, double v) {
+    key(j, first, k);
+    snprintf(j->what, sizeof j->what, "%s", k);
+    opt(j, v);
+}
+
+static void kint(jw *j, int *first, const char *k, int v) {
+    key(j, first, k);
+    fprintf(j->w.f, "%d", v);
+}
+
+static void kstr(jw *j, int *first, const char *k, const char *v) {
+    key(j, first, k);
+    jstr(j->w.f, v);
+}
+
+/* Frames kept: 0, stride, 2 stride, ... and always the last. */
+static int kept_count(int n, int stride) {
+    return n <= 0 ? 0 : (n - 1) / stride + 1 + ((n - 1) % stride != 0);
+}
+static int kept_frame(int n, int stride, int k) {
+    int f = k * stride;
+    return f < n ? f : n - 1;
+}
+
+/* A series over the kept frames: value(rec, frame, arg). */
+typedef double (*series_fn)(const cs_record *r, const cs_model_input *in, int f, int arg);
+
+static void series(jw *j, const cs_record *r, const cs_model_input *in, int stride, series_fn fn, int arg,
+                   int nullable, const char *what) {
+    int n = r->frame_count, count = kept_count(n, stride);
+    fputc('[', j->w.f);
+    for (int k = 0; k < count && !j->w.bad; k++) {
+        int f = kept_frame(n, stride, k);
+        if (k) fputc(',', j->w.f);
+        snprintf(j->what, sizeof j->what, "%s at t = %g s", what, r->vehicle[f].t);
+        double v = fn(r, in, f, arg);
+        if (nullable)
+            opt(j, v);
+        else
+            num(j, v);
+    }
+    fputc(']', j->w.f);
+}
+
+static double s_time(const cs_record *r, const cs_model_input *in, int f, int arg) {
+    (void)in, (void)arg;
+    return r->vehicle[f].t;
+}
+static double s_decel(const cs_record *r, const cs_model_input *in, int f, int arg) {
+    (void)arg;
+    const double *a = r->vehicle[f].acceleration;
+    return -(a[0] * cos(in->scenario.angle) + a[1] * sin(in->scenario.angle)) / G0;
+}
+/* the 50-ms average exists once a whole window has passed */
+static double s_decel50(const cs_record *r, const cs_model_input *in, int f, int arg) {
+    (void)arg;
+    return r->vehicle[f].t > 0.05 + 0.5 * in->scenario.dt ? r->vehicle[f].decel_50ms_g : NAN;
+}
+static double s_speed(const cs_record *r, const cs_model_input *in, int f, int arg) {
+    (void)in, (void)arg;
+    return r->vehicle[f].forward_speed;
+}
+static double s_penetration(const cs_record *r, const cs_model_input *in, int f, int arg) {
+    (void)in, (void)arg;
+    return r->vehicle[f].penetration;
+}
+static double s_face(const cs_record *r, const cs_model_input *in, int f, int arg) {
+    (void)in, (void)arg;
+    return fmax(r->vehicle[f].front_corners[0][1], r->vehicle[f].front_corners[1][1]);
+}
+/* the furthest point of an intact cable (NaN: none intact) */
+static double s_deflection(const cs_record *r, const cs_model_input *in, int f, int arg) {
+    (void)in, (void)arg;
+    double y = NAN;
+    for (int c = 0; c < r->cable_count; c++) {
+        size_t k = (size_t)f * (size_t)r->cable_count + (size_t)c;
+        if (r->cables[k].status != CS_CABLE_INTACT) continue;
+        for (int i = 0; i < r->path_count[k]; i++) {
+            double yi = r->path_xyz[(k * (size_t)r->max_nodes + (size_t)i) * 3 + 1];
+            if (!(yi <= y)) y = yi;
+        }
+    }
+    return y;
+}
+static double s_tension(const cs_record *r, const cs_model_input *in, int f, int c) {
+    (void)in;
+    return r->cables[(size_t)f * (size_t)r->cable_count + (size_t)c].max_tension;
+}
+static double s_tilt(const cs_record *r, const cs_model_input *in, int f, int p) {
+    (void)in;
+    return r->posts[(size_t)f * (size_t)r->post_count + (size_t)p].tilt;
+}
+static double s_moment(const cs_record *r, const cs_model_input *in, int f, int p) {
+    (void)in;
+    return r->posts[(size_t)f * (size_t)r->post_count + (size_t)p].base_moment;
+}
+
+static const struct {
+    const char *key;
+    size_t offset;
+} ledger[] = {
+    {"crush", offsetof(cs_energy, crush)},
+    {"post_plastic", offsetof(cs_energy, post_plastic)},
+    {"soil", offsetof(cs_energy, soil)},
+    {"cable_plastic", offsetof(cs_energy, cable_plastic)},
+    {"friction", offsetof(cs_energy, friction)},
+    {"released", offsetof(cs_energy, released)},
+    {"post_elastic", offsetof(cs_energy, post_elastic)},
+    {"cable_elastic", offsetof(cs_energy, cable_elastic)},
+    {"vehicle_potential", offsetof(cs_energy, vehicle_potential)},
+    {"vehicle_kinetic", offsetof(cs_energy, vehicle_kinetic)},
+    {"balance_error", offsetof(cs_energy, balance_error)},
+};
+enum { LEDGER_TERMS = sizeof ledger / sizeof ledger[0] };
+
+static double s_energy(const cs_record *r, const cs_model_input *in, int f, int k) {
+    (void)in;
+    double v;
+    memcpy(&v, (const char *)&r->energy[f] + ledger[k].offset, sizeof v);
+    return v;
+}
+
+/* Post indices nearest the impact point, nearest first, at most max. Returns how many. */
+static int nearest_posts(const cs_model_input *in, int *idx, int max) {
+    int count = 0;
+    double x0 = in->scenario.impact_x;
+    for (int p = 0; p < in->barrier.post_count; p++) {
+        double dp = fabs(in->barrier.posts[p].x - x0);
+        int j = count < max ? count++ : max;
+        while (j > 0 && fabs(in->barrier.posts[idx[j - 1]].x - x0) > dp) {
+            if (j < max) idx[j] = idx[j - 1];
+            j--;
+        }
+        if (j < max) idx[j] = p;
+    }
+    return count;
+}
+
+enum { NEAR_POSTS = 4 };
+
+static void write_series(jw *j, const cs_model_input *in, const cs_record *r, int stride) {
+    FILE *f = j->w.f;
+    int first = 1, idx[NEAR_POSTS];
+    int near = nearest_posts(in, idx, r->post_count < NEAR_POSTS ? r->post_count : NEAR_POSTS);
+    fputc('{', f);
+    kint(j, &first, "stride", stride);
+    static const struct {
+        const char *key, *what;
+        series_fn fn;
+        int nullable;
+    } plain[] = {
+        {"t", "time", s_time, 0},
+        {"decel", "the deceleration", s_decel, 0},
+        {"decel50", "the 50-ms deceleration", s_decel50, 1},
+        {"speed", "the forward speed", s_speed, 0},
+        {"penetration", "the penetration", s_penetration, 0},
+        {"face", "the front face", s_face, 0},
+        {"deflection", "the barrier deflection", s_deflection, 1},
+    };
+    for (size_t k = 0; k < sizeof plain / sizeof plain[0]; k++) {
+        key(j, &first, plain[k].key);
+        series(j, r, in, stride, plain[k].fn, 0, plain[k].nullable, plain[k].what);
+    }
+    key(j, &first, "tension");
+    fputc('[', f);
+    for (int c = 0; c < r->cable_count; c++) {
+        if (c) fputc(',', f);
+        series(j, r, in, stride, s_tension, c, 0, "a cable's tension");
+    }
+    fputc(']', f);
+    key(j, &first, "near_posts");
+    fputc('[', f);
+    for (int k = 0; k < near; k++)
+        fprintf(f, "%s%d", k ? "," : "", idx[k]);
+    fputc(']', f);
+    static const struct {
+        const char *key, *what;
+        series_fn fn;
+    } per_post[] = {{"post_tilt", "a post's tilt", s_tilt},
+                    {"post_moment", "a post's base moment", s_moment}};
+    for (int m = 0; m < 2; m++) {
+        key(j, &first, per_post[m].key);
+        fputc('[', f);
+        for (int k = 0; k < near; k++) {
+            if (k) fputc(',', f);
+            series(j, r, in, stride, per_post[m].fn, idx[k], 0, per_post[m].what);
+        }
+        fputc(']', f);
+    }
+    key(j, &first, "post_capacity");
+    fputc('[', f);
+    for (int k = 0; k < near && r->frame_count > 0; k++) {
+        if (k) fputc(',', f);
+        snprintf(j->what, sizeof j->what, "post %d's moment capacity", idx[k]);
+        num(j, r->posts[idx[k]].moment_capacity);
+    }
+    fputc(']', f);
+    key(j, &first, "energy");
+    fputc('{', f);
+    int ef = 1;
+    for (int k = 0; k < LEDGER_TERMS; k++) {
+        key(j, &ef, ledger[k].key);
+        series(j, r, in, stride, s_energy, k, 0, "the energy ledger");
+    }
+    fputc('}', f);
+    if (r->frame_count > 0) {
+        knum(j, &first, "initial_kinetic", r->energy[0].initial_kinetic);
+        knum(j, &first, "initial_total", r->energy[0].initial_total);
+    }
+    fputc('}', f);
+}
+
+/* Bytes of one replay frame, roughly (a number ~ 8 characters). */
+static double replay_frame_bytes(const cs_record *r) {
+    int nodes = 0;
+    for (size_t k = 0; k < (size_t)r->frame_count * (size_t)r->cable_count; k++)
+        if (r->path_count[k] > nodes) nodes = r->path_count[k];
+    return 8.0 * (10 + 4 * r->post_count + r->cable_count * (4 + 4 * nodes));
+}
+
+/* frames: [[t, [x, y, z, roll, pitch, yaw, crush, face_force], [top x, y, z, status]*posts,
+ * [[status, engaged, [x, y, z]*nodes, [span tension]*(nodes-1)]]*cables], ...] */
+static void write_frames(jw *j, const cs_record *r, int stride) {
+    FILE *f = j->w.f;
+    int n = r->frame_count, count = kept_count(n, stride);
+    fputc('[', f);
+    for (int k = 0; k < count && !j->w.bad; k++) {
+        int fr = kept_frame(n, stride, k);
+        const cs_vehicle_view *v = &r->vehicle[fr];
+        snprintf(j->what, sizeof j->what, "the replay frame at t = %g s", v->t);
+        fprintf(f, "%s\n[", k ? "," : "");
+        num(j, v->t);
+        const double pose[] = {v->position[0], v->position[1], v->position[2], v->roll,
+                               v->pitch,       v->yaw,         v->crush,       v->face_force};
+        fputs(",[", f);
+        for (size_t i = 0; i < sizeof pose / sizeof pose[0]; i++) {
+            if (i) fputc(',', f);
+            num(j, pose[i]);
+        }
+        fputs("],[", f);
+        for (int p = 0; p < r->post_count; p++) {
+            const cs_post_view *pv = &r->posts[(size_t)fr * (size_t)r->post_count + (size_t)p];
+            fputs(p ? "," : "", f);
+            for (int i = 0; i < 3; i++) {
+                num(j, pv->top[i]);
+                fputc(',', f);
+            }
+            fprintf(f, "%d", (int)pv->status);
+        }
+        fputs("],[", f);
+        for (int c = 0; c < r->cable_count; c++) {
+            size_t ck = (size_t)fr * (size_t)r->cable_count + (size_t)c;
+            const cs_cable_view *cv = &r->cables[ck];
+            const double *xyz = r->path_xyz + ck * (size_t)r->max_nodes * 3,
+                         *ten = r->path_tension + ck * (size_t)r->max_nodes;
+            int nodes = r->path_count[ck];
+            fprintf(f, "%s[%d,%d,[", c ? "," : "", (int)cv->status, cv->engaged);
+            for (int i = 0; i < 3 * nodes; i++) {
+                if (i) fputc(',', f);
+                num(j, xyz[i]);
+            }
+            fputs("],[", f);
+            for (int i = 0; i + 1 < nodes; i++) {
+                if (i) fputc(',', f);
+                num(j, ten[i]);
+            }
+            fputs("]]", f);
+        }
+        fputs("]]", f);
+    }
+    fputc(']', f);
+}
+
+int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *state, const cs_record *r,
+                         char *why, size_t why_size) {
+    jw j = {{f, 0, ""}, ""};
+    cs_summary s;
+    cs_state_summary(state, &s);
+    const cs_scenario_def *sc = &in->scenario;
+    const cs_vehicle_def *v = &in->vehicle;
+    const cs_barrier_def *b = &in->barrier;
+    int first = 1, sf = 1;
+    fputc('{', f);
+    kint(&j, &first, "format", 1);
+    kstr(&j, &first, "name", in->name);
+    kstr(&j, &first, "file", in->file);
+    kstr(&j, &first, "version", CS_VERSION_STRING);
+    key(&j, &first, "summary");
+    fputc('{', f);
+    kstr(&j, &sf, "outcome", cs_outcome_name(s.outcome));
+    knum(&j, &sf, "t_end", s.t);
+    knum(&j, &sf, "max_decel_50ms_g", s.max_decel_50ms_g);
+    knum(&j, &sf, "t_max_decel", s.t_max_decel);
+    knum(&j, &sf, "max_penetration", s.max_dynamic_penetration);
+    knum(&j, &sf, "max_deflection", s.max_barrier_deflection);
+    kopt(&j, &sf, "stop_time", s.outcome == CS_STOPPED ? s.stop_time : NAN);
+    kopt(&j, &sf, "exit_speed", s.outcome == CS_BREAKTHROUGH ? s.exit_speed : NAN);
+    kopt(&j, &sf, "first_contact", s.first_contact_time >= 0 ? s.first_contact_time : NAN);
+    kint(&j, &sf, "posts_failed_left", s.posts_failed_left);
+    kint(&j, &sf, "posts_failed_right", s.posts_failed_right);
+    kint(&j, &sf, "cables_broken", s.cables_broken);
+    knum(&j, &sf, "max_cable_tension", s.max_cable_tension);
+    knum(&j, &sf, "initial_kinetic_energy", s.initial_kinetic_energy);
+    knum(&j, &sf, "energy_balance_error", s.energy_balance_error);
+    kint(&j, &sf, "solver_warnings", s.solver_warnings);
+    knum(&j, &sf, "max_solver_residual", s.max_solver_residual);
+    fputc('}', f);
+    key(&j, &first, "scenario");
+    fputc('{', f);
+    sf = 1;
+    knum(&j, &sf, "speed", sc->speed);
+    knum(&j, &sf, "angle", sc->angle);
+    knum(&j, &sf, "impact_x", sc->impact_x);
+    knum(&j, &sf, "dt", sc->dt);
+    knum(&j, &sf, "t_end", sc->t_end);
+    knum(&j, &sf, "output_interval", sc->output_interval);
+    fputc('}', f);
+    key(&j, &first, "vehicle");
+    fputc('{', f);
+    sf = 1;
+    knum(&j, &sf, "mass", v->mass);
+    knum(&j, &sf, "cg_height", v->cg_height);
+    knum(&j, &sf, "cg_to_front", v->cg_to_front);
+    knum(&j, &sf, "front_width", v->front_width);
+    knum(&j, &sf, "face_bottom", v->face_bottom);
+    knum(&j, &sf, "face_top", v->face_top);
+    knum(&j, &sf, "wheelbase", v->wheelbase);
+    knum(&j, &sf, "cg_to_front_axle", v->cg_to_front_axle);
+    knum(&j, &sf, "track", v->track);
+    fputc('}', f);
+    /* barrier: posts [x, height, rotation limit], cables [height, Fu, pretension], anchors [x, z] */
+    key(&j, &first, "barrier");
+    fputs("{\"posts\":[", f);
+    snprintf(j.what, sizeof j.what, "the barrier");
+    for (int p = 0; p < b->post_count; p++) {
+        fputs(p ? ",[" : "[", f);
+        num(&j, b->posts[p].x);
+        fputc(',', f);
+        num(&j, b->posts[p].height);
+        fputc(',', f);
+        opt(&j, isfinite(b->posts[p].rotation_limit) ? b->posts[p].rotation_limit : NAN);
+        fputc(']', f);
+    }
+    fputs("],\"cables\":[", f);
+    for (int c = 0; c < b->cable_count; c++) {
+        fputs(c ? ",[" : "[", f);
+        num(&j, b->cables[c].height);
+        fputc(',', f);
+        num(&j, b->cables[c].rope.nominal_strength);
+        fputc(',', f);
+        num(&j, b->cables[c].pretension);
+        fputc(']', f);
+    }
+    fputs("],\"anchors\":[[", f);
+    num(&j, b->start_anchor.x);
+    fputc(',', f);
+    num(&j, b->start_anchor.z);
+    fputs("],[", f);
+    num(&j, b->end_anchor.x);
+    fputc(',', f);
+    num(&j, b->end_anchor.z);
+    fputs("]]}", f);
+    /* events: [t, type, element kind, element, value (SI)] */
+    key(&j, &first, "events");
+    fputc('[', f);
+    for (int i = 0; i < cs_state_event_count(state); i++) {
+        const cs_event *e = cs_state_event(state, i);
+        fprintf(f, "%s\n[", i ? "," : "");
+        snprintf(j.what, sizeof j.what, "an event's time or value");
+        num(&j, e->t);
+        fputc(',', f);
+        jstr(f, cs_event_type_name(e->type));
+        fputc(',', f);
+        jstr(f, cs_element_kind_name(e->element_kind));
+        fprintf(f, ",%d,", e->element);
+        num(&j, e->value);
+        fputc(']', f);
+    }
+    fputc(']', f);
+    int n = r->frame_count;
+    int series_stride = n > CS_REPORT_SERIES_MAX ? (n + CS_REPORT_SERIES_MAX - 1) / CS_REPORT_SERIES_MAX : 1;
+    double fit = CS_REPORT_REPLAY_BYTES / replay_frame_bytes(r);
+    int replay_max = fit < CS_REPORT_REPLAY_MIN   ? CS_REPORT_REPLAY_MIN
+                     : fit > CS_REPORT_REPLAY_MAX ? CS_REPORT_REPLAY_MAX
+                                                  : (int)fit;
+    int replay_stride = n > replay_max ? (n + replay_max - 1) / replay_max : 1;
+    key(&j, &first, "series");
+    write_series(&j, in, r, series_stride);
+    kint(&j, &first, "replay_stride", replay_stride);
+    key(&j, &first, "frames");
+    write_frames(&j, r, replay_stride);
+    fputs("}", f);
+    if (j.w.bad) {
+        snprintf(why, why_size, "report.html: %s", j.w.why);
+        return -1;
+    }
+    if (ferror(f)) {
+        snprintf(why, why_size, "report.html: write error");
+        return -1;
+    }
+    return 0;
+}
+
+static void html_text(FILE *f, const char *s) {
+    for (; s && *s; s++) {
+        if (*s == '&')
+            fputs("&amp;", f);
+        else if (*s == '<')
+            fputs("&lt;", f);
+        else if (*s == '>')
+            fputs("&gt;", f);
+        else if (*s == '"')
+            fputs("&quot;", f);
+        else
+            fputc(*s, f);
+    }
+}
+
+int cs_write_report_html(FILE *f, const unsigned char *page, size_t size, const cs_model_input *in,
+                         const cs_state *state, const cs_record *rec, char *why, size_t why_size) {
+    static const char title[] = "@CS_TITLE@", data[] = "@CS_DATA@";
+    const size_t nt = sizeof title - 1, nd = sizeof data - 1;
+    size_t i = 0, from = 0;
+    int data_written = 0;
+    while (i < size) {
+        int is_title = i + nt <= size && memcmp(page + i, title, nt) == 0;
+        int is_data = i + nd <= size && memcmp(page + i, data, nd) == 0;
+        if (!is_title && !is_data) {
+            i++;
+            continue;
+        }
+        fwrite(page + from, 1, i - from, f);
+        if (is_title) {
+            html_text(f, in->name);
+            i += nt;
+        } else {
+            if (cs_write_report_json(f, in, state, rec, why, why_size) != 0) return -1;
+            data_written = 1;
+            i += nd;
+        }
+        from = i;
+    }
+    fwrite(page + from, 1, size - from, f);
+    if (!data_written) {
+        snprintf(why, why_size, "report.html: the page has no %s marker (a broken build of report/)", data);
+        return -1;
+    }
+    if (ferror(f)) {
+        snprintf(why, why_size, "report.html: write error");
+        return -1;
+    }
+    return 0;
+}

@@ -1,0 +1,41 @@
+/* report.html: one self-contained page (no network) with the run's summary, its failure timeline,
+ * interactive plots and a 3D replay. The page itself (HTML, CSS and the bundled JavaScript of report/)
+ * is built from report/ by esbuild and compiled into the command as cs_report_page (only when the build
+ * found node and npm: CS_HAVE_REPORT); this writer fills its markers with the run's data:
+ *   @CS_TITLE@  the model's name, HTML-escaped
+ *   @CS_DATA@   the run as one JSON object (cs_write_report_json), safe inside <script>. */
+#ifndef CS_REPORT_HTML_H
+#define CS_REPORT_HTML_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "loader.h"
+#include "record.h"
+
+/* Defined by the generated source of a build with the report (CMake: report/). */
+extern const unsigned char cs_report_page[];
+extern const size_t cs_report_page_size;
+
+/* Limits of the data blob: the plotted series keep at most CS_REPORT_SERIES_MAX frames, the replay
+ * as many frames as fit in about CS_REPORT_REPLAY_BYTES (at least CS_REPORT_REPLAY_MIN, at most
+ * CS_REPORT_REPLAY_MAX); the first and last frames are always kept. */
+enum {
+    CS_REPORT_SERIES_MAX = 4000,
+    CS_REPORT_REPLAY_BYTES = 3000000,
+    CS_REPORT_REPLAY_MIN = 200,
+    CS_REPORT_REPLAY_MAX = 1500
+};
+
+/* The run as JSON: summary, scenario, vehicle, barrier, events, series (plots) and frames (replay). Every
+ * '<', '>' and '&' is escaped, so the text can stand inside a <script> element. Returns 0, or -1 with
+ * why filled (a non-finite number where one must be finite, a write error). */
+int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *state, const cs_record *rec,
+                         char *why, size_t why_size);
+
+/* The page (size bytes, with the markers above) with its markers filled. Returns 0, or -1 with why
+ * filled. */
+int cs_write_report_html(FILE *f, const unsigned char *page, size_t size, const cs_model_input *in,
+                         const cs_state *state, const cs_record *rec, char *why, size_t why_size);
+
+#endif

@@ -1,0 +1,219 @@
+/* report.html's writer (src/io/report_html.c) on a short real run: the markers of a page are filled,
+ * the title is HTML-escaped and the data cannot close its <script>, the data has every part the page
+ * reads, a page without its data marker is refused, and a long record is subsampled to the budget. The
+ * page itself is tested in a browser (report/test/browser.mjs). */
+#define _POSIX_C_SOURCE 200809L
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "loader.h"
+#include "record.h"
+#include "report_html.h"
+
+typedef struct run {
+    cs_loader *loader;
+    cs_model_input in;
+    cs_model *model;
+    cs_state *state;
+    cs_record rec;
+} run;
+
+static int setup(void **st) {
+    run *r = calloc(1, sizeof *r);
+    char why[256];
+    assert_non_null(r);
+    r->loader = cs_loader_create(NULL, why, sizeof why);
+    assert_non_null(r->loader);
+    cs_loader_set(r->loader, "scenario.t_end=40 ms");
+    if (cs_loader_load(r->loader, "examples/aps3.yaml", &r->in) != 0) {
+        cs_loader_print_errors(r->loader, stderr);
+        fail();
+    }
+    r->model = cs_loader_build(r->loader, &r->in);
+    assert_non_null(r->model);
+    cs_error err = {0};
+    r->state = cs_state_create(r->model, &err);
+    assert_non_null(r->state);
+    assert_int_equal(cs_record_init(&r->rec, r->model), 0);
+    assert_int_equal(cs_run(r->model, r->state, cs_record_frame, &r->rec, &err), CS_OK);
+    assert_false(r->rec.failed);
+    *st = r;
+    return 0;
+}
+
+static int teardown(void **st) {
+    run *r = *st;
+    cs_record_free(&r->rec);
+    cs_state_free(r->state);
+    cs_model_free(r->model);
+    cs_loader_free(r->loader);
+    free(r);
+    return 0;
+}
+
+/* The page written from template into a malloc'ed string; rc the writer's return. */
+static char *page(run *r, const cs_record *rec, const char *template, int *rc, char *why, size_t why_size) {
+    char *buf = NULL;
+    size_t size = 0;
+    FILE *f = open_memstream(&buf, &size);
+    assert_non_null(f);
+    *rc = cs_write_report_html(f, (const unsigned char *)template, strlen(template), &r->in, r->state, rec,
+                               why, why_size);
+    fclose(f);
+    return buf;
+}
+
+static size_t count(const char *s, const char *what) {
+    size_t n = 0;
+    for (const char *p = strstr(s, what); p; p = strstr(p + 1, what))
+        n++;
+    return n;
+}
+
+/* Elements of the JSON array that follows "key": (numbers or nested arrays), counted at its own level. */
+static int array_length(const char *json, const char *key) {
+    const char *p = strstr(json, key);
+    assert_non_null(p);
+    p = strchr(p, '[');
+    assert_non_null(p);
+    int depth = 0, n = 0;
+    for (; *p; p++) {
+        if (*p == '[' && ++depth == 1 && p[1] != ']') n = 1;
+        if (*p == ']' && --depth == 0) return n;
+        if (*p == ',' && depth == 1) n++;
+    }
+    fail_msg("%s: unterminated array", key);
+    return -1;
+}
+
+static void markers_filled(void **st) {
+    run *r = *st;
+    const char *name = r->in.name;
+    r->in.name = "a<b>&\"c</script>";
+    char why[256] = "";
+    int rc;
+    char *html = page(r, &r->rec, "<title>@CS_TITLE@</title><h1>@CS_TITLE@</h1><script>@CS_DATA@</script>!",
+                      &rc, why, sizeof why);
+    r->in.name = name;
+    if (rc != 0) fail_msg("%s", why);
+    assert_int_equal(count(html, "<title>a&lt;b&gt;&amp;&quot;c&lt;/script&gt;</title>"), 1);
+    assert_int_equal(count(html, "<h1>a&lt;b&gt;&amp;&quot;c&lt;/script&gt;</h1>"), 1);
+    assert_int_equal(count(html, "@CS_"), 0);
+    /* the data holds the name escaped and nothing that ends its script early */
+    assert_int_equal(count(html, "</script>"), 1);
+    assert_int_equal(count(html, "<!--"), 0);
+    assert_non_null(strstr(html, "\"name\":\"a\\u003cb\\u003e\\u0026\\\"c\\u003c/script\\u003e\""));
+    assert_non_null(strstr(html, "</script>!"));
+    assert_null(strstr(html, "nan"));
+    assert_null(strstr(html, "inf"));
+    free(html);
+}
+
+static void data_complete(void **st) {
+    run *r = *st;
+    char why[256] = "";
+    int rc;
+    char *json = page(r, &r->rec, "@CS_DATA@", &rc, why, sizeof why);
+    if (rc != 0) fail_msg("%s", why);
+    assert_true(json[0] == '{' && json[strlen(json) - 1] == '}');
+    static const char *const keys[] = {"\"summary\":",
+                                       "\"outcome\":",
+                                       "\"max_decel_50ms_g\":",
+                                       "\"max_penetration\":",
+                                       "\"exit_speed\":",
+                                       "\"posts_failed_left\":",
+                                       "\"energy_balance_error\":",
+                                       "\"scenario\":",
+                                       "\"vehicle\":",
+                                       "\"barrier\":",
+                                       "\"events\":",
+                                       "\"series\":",
+                                       "\"decel50\":",
+                                       "\"tension\":",
+                                       "\"near_posts\":",
+                                       "\"post_tilt\":",
+                                       "\"energy\":",
+                                       "\"vehicle_kinetic\":",
+                                       "\"frames\":"};
+    for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++)
+        if (!strstr(json, keys[k])) fail_msg("no %s in the data", keys[k]);
+    /* every recorded frame of a short run is kept, for the plots and the replay */
+    assert_int_equal(array_length(json, "\"t\":"), r->rec.frame_count);
+    assert_int_equal(array_length(json, "\"frames\":"), r->rec.frame_count);
+    assert_int_equal(array_length(json, "\"tension\":"), r->rec.cable_count);
+    assert_int_equal(array_length(json, "\"posts\":"), r->rec.post_count);
+    assert_int_equal(array_length(json, "\"events\":"), cs_state_event_count(r->state));
+    free(json);
+}
+
+static void page_without_data_marker(void **st) {
+    run *r = *st;
+    char why[256] = "";
+    int rc;
+    char *html = page(r, &r->rec, "<title>@CS_TITLE@</title>", &rc, why, sizeof why);
+    assert_int_equal(rc, -1);
+    assert_non_null(strstr(why, "@CS_DATA@"));
+    free(html);
+}
+
+/* A record of many frames (the short run's frames repeated, time running on) is subsampled: the plots'
+ * series to CS_REPORT_SERIES_MAX frames, the replay to its budget; the first and last frames stay. */
+static void long_record_subsampled(void **st) {
+    run *r = *st;
+    const cs_record *s = &r->rec;
+    enum { N = 9001 };
+    cs_record big = *s;
+    size_t nc = (size_t)s->cable_count, np = (size_t)s->post_count, nn = (size_t)s->max_nodes;
+    big.frame_count = big.capacity = N;
+    big.vehicle = malloc(N * sizeof *big.vehicle);
+    big.energy = malloc(N * sizeof *big.energy);
+    big.cables = malloc(N * nc * sizeof *big.cables);
+    big.posts = malloc(N * np * sizeof *big.posts);
+    big.path_count = malloc(N * nc * sizeof *big.path_count);
+    big.path_xyz = malloc(N * nc * nn * 3 * sizeof *big.path_xyz);
+    big.path_tension = malloc(N * nc * nn * sizeof *big.path_tension);
+    assert_true(big.vehicle && big.energy && big.cables && big.posts && big.path_count && big.path_xyz &&
+                big.path_tension);
+    for (size_t i = 0; i < N; i++) {
+        size_t j = i % (size_t)s->frame_count;
+        big.vehicle[i] = s->vehicle[j];
+        big.vehicle[i].t = 1e-3 * (double)i;
+        big.energy[i] = s->energy[j];
+        memcpy(big.cables + i * nc, s->cables + j * nc, nc * sizeof *big.cables);
+        memcpy(big.posts + i * np, s->posts + j * np, np * sizeof *big.posts);
+        memcpy(big.path_count + i * nc, s->path_count + j * nc, nc * sizeof *big.path_count);
+        memcpy(big.path_xyz + i * nc * nn * 3, s->path_xyz + j * nc * nn * 3,
+               nc * nn * 3 * sizeof *big.path_xyz);
+        memcpy(big.path_tension + i * nc * nn, s->path_tension + j * nc * nn,
+               nc * nn * sizeof *big.path_tension);
+    }
+    char why[256] = "";
+    int rc;
+    char *json = page(r, &big, "@CS_DATA@", &rc, why, sizeof why);
+    if (rc != 0) fail_msg("%s", why);
+    int series = array_length(json, "\"t\":"), frames = array_length(json, "\"frames\":");
+    assert_in_range(series, CS_REPORT_SERIES_MAX / 2, CS_REPORT_SERIES_MAX + 1);
+    assert_in_range(frames, CS_REPORT_REPLAY_MIN, CS_REPORT_REPLAY_MAX + 1);
+    assert_true(strlen(json) < 8000000);
+    /* the last frame's time closes both */
+    assert_non_null(strstr(json, ",9]"));
+    assert_non_null(strstr(json, "\n[9,["));
+    free(json);
+    cs_record_free(&big);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(markers_filled),
+        cmocka_unit_test(data_complete),
+        cmocka_unit_test(page_without_data_marker),
+        cmocka_unit_test(long_record_subsampled),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}
