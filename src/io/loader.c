@@ -48,8 +48,7 @@ cs_loader *cs_loader_create(const char *data_dir, char *why, size_t why_size) {
     return l;
 }
 
-void cs_loader_free(cs_loader *l) {
-    if (!l) return;
+void cs_loader_reset(cs_loader *l) {
     for (int i = 0; i < l->file_count; i++)
         cs_yposmap_free(&l->files[i].map);
     free(l->files);
@@ -66,6 +65,17 @@ void cs_loader_free(cs_loader *l) {
         free(l->arena);
         l->arena = next;
     }
+    cs_units *units = l->units;
+    char data_dir[sizeof l->data_dir];
+    memcpy(data_dir, l->data_dir, sizeof data_dir);
+    memset(l, 0, sizeof *l);
+    l->units = units;
+    memcpy(l->data_dir, data_dir, sizeof data_dir);
+}
+
+void cs_loader_free(cs_loader *l) {
+    if (!l) return;
+    cs_loader_reset(l);
     cs_units_free(l->units);
     free(l);
 }
@@ -411,14 +421,23 @@ static void apply_set(cs_loader *l, cs_node **root, int k) {
         cs_err_at(l, src, 0, 0, "malformed path (expected keys and [index], e.g. barrier.cables[0].height)");
 }
 
-int cs_loader_load(cs_loader *l, const char *path, cs_model_input *out) {
-    memset(out, 0, sizeof *out);
-    int f = cs_file_load(l, path, NULL);
+static int load(cs_loader *l, int f, cs_model_input *out) {
     cs_node *root = f >= 0 ? cs_resolve_model(l, f) : NULL;
     for (int k = 0; root && k < l->set_count; k++)
         if (!l->sets[k].bad) apply_set(l, &root, k);
     if (root) cs_convert_model(l, root, l->files[f].name, out);
     return l->error_count ? -1 : 0;
+}
+
+int cs_loader_load(cs_loader *l, const char *path, cs_model_input *out) {
+    memset(out, 0, sizeof *out);
+    return load(l, cs_file_load(l, path, NULL), out);
+}
+
+int cs_loader_load_buffer(cs_loader *l, const char *name, const char *data, size_t size,
+                          cs_model_input *out) {
+    memset(out, 0, sizeof *out);
+    return load(l, cs_data_load(l, name, data, size), out);
 }
 
 /* ---- the library ---- */

@@ -28,6 +28,13 @@ void cs_loader_free(cs_loader *loader);
 int cs_loader_set(cs_loader *loader, const char *assignment);
 /* Load, resolve, override and check a model. Returns 0, or -1 with the errors recorded. */
 int cs_loader_load(cs_loader *loader, const char *path, cs_model_input *out);
+/* The same for a model file's contents held in memory (size bytes, needed only during the call). name
+ * stands for the file in messages; files the model refers to are found from name's folder. */
+int cs_loader_load_buffer(cs_loader *loader, const char *name, const char *data, size_t size,
+                          cs_model_input *out);
+/* Forget every loaded file, override and error, keeping the unit database: ready for a new model.
+ * Whatever an earlier load returned becomes invalid. */
+void cs_loader_reset(cs_loader *loader);
 /* Build the engine model from a loaded input; on failure the engine's message is recorded at the
  * location of the element it names. */
 cs_model *cs_loader_build(cs_loader *loader, const cs_model_input *in);

@@ -21,8 +21,10 @@ typedef struct cs_node {
 } cs_node;
 
 typedef struct cs_lfile {
-    char *name;     /* as given, for messages */
-    char *real;     /* canonical path, to find it again */
+    char *name;       /* as given, for messages */
+    char *real;       /* canonical path, to find it again */
+    const char *data; /* its contents, when loaded from memory (NULL: read real) */
+    size_t size;
     cs_yposmap map; /* where its nodes are */
     cs_node *root;  /* NULL if it failed to load */
     int loading;    /* being loaded (a reference cycle if met again) */
@@ -69,6 +71,8 @@ void cs_field_hint(const cs_field *f, char *buf, size_t size);
 
 /* Read a file into the file table (once). Returns its index, or -1 (errors recorded at from). */
 int cs_file_load(cs_loader *l, const char *path, const cs_node *from);
+/* The same for contents held in memory under a name (files it refers to are found from its folder). */
+int cs_data_load(cs_loader *l, const char *name, const char *data, size_t size);
 /* Does the node's subtree hold a key or value whose shape was reported wrong? */
 int cs_damaged(const cs_loader *l, const cs_node *n);
 /* The field of a mapping node by key (NULL if absent). */

@@ -323,7 +323,8 @@ static void cyaml_log_capture(cyaml_log_t level, void *ctx, const char *fmt, va_
 
 static int read_file(cs_loader *l, int file) {
     cs_lfile *lf = &l->files[file];
-    if (cs_yposmap_read(&lf->map, lf->real) != 0) {
+    if ((lf->data ? cs_yposmap_read_data(&lf->map, lf->data, lf->size)
+                  : cs_yposmap_read(&lf->map, lf->real)) != 0) {
         cs_err_at(l, file, lf->map.error_line, lf->map.error_col, "%s", lf->map.error);
         return -1;
     }
@@ -346,7 +347,9 @@ static int read_file(cs_loader *l, int file) {
                              .log_level = CYAML_LOG_ERROR,
                              .flags = CYAML_CFG_IGNORE_UNKNOWN_KEYS};
     slot *data = NULL;
-    cyaml_err_t rc = cyaml_load_file(lf->real, &config, &top, (cyaml_data_t **)&data, NULL);
+    cyaml_err_t rc = lf->data ? cyaml_load_data((const uint8_t *)lf->data, lf->size, &config, &top,
+                                                (cyaml_data_t **)&data, NULL)
+                              : cyaml_load_file(lf->real, &config, &top, (cyaml_data_t **)&data, NULL);
     if (rc != CYAML_OK) {
         if (l->error_count == before) {
             log[strcspn(log, "\n")] = '\0';
@@ -357,6 +360,24 @@ static int read_file(cs_loader *l, int file) {
     lf->root = map_node(l, &cs_table_model, data, file, "", "", 0);
     cyaml_free(&config, &top, data, 0);
     return lf->root ? 0 : -1; /* shape errors are recorded; the rest is still checked */
+}
+
+/* A new entry of the file table, read. Returns its index, or -1. */
+static int add_file(cs_loader *l, const char *name, const char *real, const char *data, size_t size) {
+    if (cs_grow(&l->files, &l->file_capacity, l->file_count, sizeof *l->files) != 0) return -1;
+    int f = l->file_count++;
+    cs_lfile *lf = &l->files[f];
+    memset(lf, 0, sizeof *lf);
+    lf->name = cs_arena_strdup(l, name);
+    lf->real = cs_arena_strdup(l, real);
+    lf->data = data;
+    lf->size = size;
+    if (!lf->name || !lf->real) return -1;
+    lf->loading = 1;
+    int rc = read_file(l, f);
+    l->files[f].loading = 0;
+    if (rc != 0) l->files[f].root = NULL;
+    return rc == 0 ? f : -1;
 }
 
 int cs_file_load(cs_loader *l, const char *path, const cs_node *from) {
@@ -377,18 +398,12 @@ int cs_file_load(cs_loader *l, const char *path, const cs_node *from) {
         }
         return l->files[i].root ? i : -1;
     }
-    if (cs_grow(&l->files, &l->file_capacity, l->file_count, sizeof *l->files) != 0) return -1;
-    int f = l->file_count++;
-    cs_lfile *lf = &l->files[f];
-    memset(lf, 0, sizeof *lf);
-    lf->name = cs_arena_strdup(l, path);
-    lf->real = cs_arena_strdup(l, real);
-    if (!lf->name || !lf->real) return -1;
-    lf->loading = 1;
-    int rc = read_file(l, f);
-    l->files[f].loading = 0;
-    if (rc != 0) l->files[f].root = NULL;
-    return rc == 0 ? f : -1;
+    return add_file(l, path, real, NULL, 0);
+}
+
+int cs_data_load(cs_loader *l, const char *name, const char *data, size_t size) {
+    char real[PATH_MAX]; /* the file it stands for, if there is one */
+    return add_file(l, name, realpath(name, real) ? real : name, data, size);
 }
 
 const cs_node *cs_node_get(const cs_node *map, const char *key) {

@@ -72,26 +72,18 @@ static const char *node(cs_yposmap *map, frame *stack, int depth, const yaml_eve
     return path;
 }
 
-int cs_yposmap_read(cs_yposmap *map, const char *filename) {
-    memset(map, 0, sizeof *map);
-    FILE *f = fopen(filename, "rb");
-    if (!f) {
-        snprintf(map->error, sizeof map->error, "cannot open the file");
-        return -1;
-    }
-    yaml_parser_t parser;
-    yaml_parser_initialize(&parser);
-    yaml_parser_set_input_file(&parser, f);
+/* Read the events of a parser whose input is set. */
+static int read_events(cs_yposmap *map, yaml_parser_t *parser) {
     frame stack[MAX_DEPTH];
     int depth = 0, done = 0, docs = 0;
     while (!done && !map->error[0]) {
         yaml_event_t ev;
-        if (!yaml_parser_parse(&parser, &ev)) {
+        if (!yaml_parser_parse(parser, &ev)) {
             snprintf(map->error, sizeof map->error, "YAML syntax: %s%s%s",
-                     parser.problem ? parser.problem : "error", parser.context ? " " : "",
-                     parser.context ? parser.context : "");
-            map->error_line = (int)parser.problem_mark.line + 1;
-            map->error_col = (int)parser.problem_mark.column + 1;
+                     parser->problem ? parser->problem : "error", parser->context ? " " : "",
+                     parser->context ? parser->context : "");
+            map->error_line = (int)parser->problem_mark.line + 1;
+            map->error_col = (int)parser->problem_mark.column + 1;
             break;
         }
         const char *path = "";
@@ -130,9 +122,33 @@ int cs_yposmap_read(cs_yposmap *map, const char *filename) {
     }
     while (depth > 0)
         free(stack[--depth].key);
+    return map->error[0] ? -1 : 0;
+}
+
+int cs_yposmap_read(cs_yposmap *map, const char *filename) {
+    memset(map, 0, sizeof *map);
+    FILE *f = fopen(filename, "rb");
+    if (!f) {
+        snprintf(map->error, sizeof map->error, "cannot open the file");
+        return -1;
+    }
+    yaml_parser_t parser;
+    yaml_parser_initialize(&parser);
+    yaml_parser_set_input_file(&parser, f);
+    int rc = read_events(map, &parser);
     yaml_parser_delete(&parser);
     fclose(f);
-    return map->error[0] ? -1 : 0;
+    return rc;
+}
+
+int cs_yposmap_read_data(cs_yposmap *map, const char *data, size_t size) {
+    memset(map, 0, sizeof *map);
+    yaml_parser_t parser;
+    yaml_parser_initialize(&parser);
+    yaml_parser_set_input_string(&parser, (const unsigned char *)data, size);
+    int rc = read_events(map, &parser);
+    yaml_parser_delete(&parser);
+    return rc;
 }
 
 void cs_yposmap_free(cs_yposmap *map) {

@@ -4,6 +4,8 @@
 #ifndef CS_YAMLPOS_H
 #define CS_YAMLPOS_H
 
+#include <stddef.h>
+
 typedef enum cs_ykind { CS_Y_SCALAR, CS_Y_MAP, CS_Y_SEQ, CS_Y_ALIAS } cs_ykind;
 
 typedef struct cs_ypos {
@@ -24,6 +26,8 @@ typedef struct cs_yposmap {
 
 /* Read the file. Returns 0, or -1 with map->error set (syntax error or unreadable file). */
 int cs_yposmap_read(cs_yposmap *map, const char *filename);
+/* The same for a file's contents held in memory. */
+int cs_yposmap_read_data(cs_yposmap *map, const char *data, size_t size);
 void cs_yposmap_free(cs_yposmap *map);
 /* The node at path ("" is the root), or NULL. */
 const cs_ypos *cs_yposmap_find(const cs_yposmap *map, const char *path);
