@@ -316,11 +316,12 @@ static int positions(cs_loader *l, const cs_node *g, double *xs, int max) {
     long n;
     if (count) {
         char *end;
-        n = strtol(count->text, &end, 10) - 1;
-        if (end == count->text || *end || n < 0) {
+        n = strtol(count->text, &end, 10); /* posts; n - 1 below, once n > 0 (LONG_MIN - 1 overflows) */
+        if (end == count->text || *end || n < 1) {
             cs_err_node(l, count, 0, "'%s' is not a positive whole number (expected e.g. 19)", count->text);
             return -1;
         }
+        n--;
     } else {
         double steps = (to - from) / spacing;
         n = lround(steps);
