@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Install the Debian packages cablesim needs, only those missing. Safe to run again.
 set -euo pipefail
-pkgs=(build-essential cmake pkg-config clang libcyaml-dev libudunits2-dev libcmocka-dev libcairo2-dev)
+# clang + libclang-rt-14-dev: the sanitizer and libFuzzer runtimes (make sanitize, make fuzz); llvm-14:
+# llvm-symbolizer, so their reports name functions and lines.
+pkgs=(build-essential cmake pkg-config clang libclang-rt-14-dev llvm-14 libcyaml-dev libudunits2-dev libcmocka-dev
+  libcairo2-dev)
 # report.html (report/): node and npm build its page (Debian's only where none is installed: a newer one
 # may be); Debian's chromium and chromium-driver run its browser test.
 pkgs+=(chromium chromium-driver)
