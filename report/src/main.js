@@ -67,8 +67,7 @@ function main() {
     const t = f[0];
     const k = indexAt(S.t, t);
     const failed = data.barrier.posts.filter((_, p) => postState(f[2][4 * p + 3]) === 'failed').length;
-    const broken = f[3].filter((c) => c[0] === 1).length;
-    const slipped = f[3].filter((c) => c[0] === 3).length;
+    const cableState = ['intact', 'broken', 'released', 'slipped off'].map((word, s) => [f[3].filter((c) => c[0] === s).length, word]);
     const latest = rows.filter((r) => r.t <= t + 1e-9).pop();
     const lines = [
       ['t', seconds(t)],
@@ -76,7 +75,7 @@ function main() {
       ['penetration', pair('length', S.penetration[k])],
       ['50-ms decel.', S.decel50[k] === null ? 'from 50 ms' : `${fmt(S.decel50[k], 2)} g`],
       ['posts failed', `${failed} of ${data.barrier.posts.length}`],
-      ['cables', `${broken} broken${slipped ? `, ${slipped} slipped off` : ''} of ${f[3].length}`],
+      ['cables', cableState.filter(([n], s) => n > 0 || s === 0).map(([n, word]) => `${n} ${word}`).join(', ')],
     ];
     const box = $('hud');
     box.replaceChildren(...lines.map(([a, b]) => el('div', {}, el('span', { class: 'k' }, a), ' ', el('span', { class: 'v' }, b))));

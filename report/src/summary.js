@@ -44,14 +44,13 @@ export function story(data) {
       `${s.cables_broken === 0 ? 'no cable broke' : `${s.cables_broken} of ${cables} cables broke`}. ` +
       `The largest 50-ms average deceleration was ${fmt(s.max_decel_50ms_g, 2)} g at t = ${seconds(s.t_max_decel)}.`,
   );
-  const slips = data.events.filter((e) => e[1] === 'override' || e[1] === 'underride');
-  if (slips.length) {
-    const over = slips.filter((e) => e[1] === 'override').length;
-    parts.push(
-      over === slips.length
-        ? `The cables slipped under the front bumper (the vehicle rode over ${over === 1 ? 'one cable' : 'them'}).`
-        : `Cables slipped off the front face ${slips.length} times (over or under it).`,
-    );
+  for (const [type, what] of [
+    ['override', 'slipped under the front bumper: the vehicle rode over'],
+    ['underride', 'slipped over the front face: the vehicle ran under'],
+  ]) {
+    const cs = [...new Set(data.events.filter((e) => e[1] === type).map((e) => e[3]))];
+    if (cs.length === 1) parts.push(`Cable ${cs[0]} ${what} it.`);
+    else if (cs.length > 1) parts.push(`Cables ${cs.slice(0, -1).join(', ')} and ${cs[cs.length - 1]} ${what} them.`);
   }
   return parts.join(' ');
 }

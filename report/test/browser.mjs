@@ -7,6 +7,7 @@
 //   node report/test/browser.mjs --cablesim BUILD/cablesim --modules BUILD/report/node_modules --out DIR
 //        [--report FILE]      check this report instead of running one
 //        [--model FILE] [--t-end T]   the run (default examples/aps3.yaml, 0.12 s)
+//        [--docs-shot FILE]   also the top of the page, replay at 60 % of the run, 1200 x 1080 (docs/report.png)
 import { createRequire } from 'node:module';
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, mkdtempSync, rmSync, statSync } from 'node:fs';
@@ -158,6 +159,15 @@ try {
   for (const id of ['summary', 'replay-section', 'timeline-section', 'plots-section', 'numbers'])
     await page.locator(`#${id}`).screenshot({ path: join(out, `section-${id}.png`) });
   await page.screenshot({ path: join(out, 'report-full.png'), fullPage: true });
+  if (args['docs-shot']) {
+    await page.setViewportSize({ width: 1200, height: 1080 });
+    await page.evaluate(() => {
+      window.csReport.replay.seekFrame(Math.round(0.6 * (window.csReport.replay.frameCount - 1)));
+      window.scrollTo(0, 0);
+    });
+    await page.waitForTimeout(500);
+    await page.screenshot({ path: resolve(args['docs-shot']) });
+  }
   check('no console errors', consoleErrors.length === 0, consoleErrors.join(' | '));
   check('no network requests', requests.length === 0, requests.join(' '));
 } catch (e) {
