@@ -7,11 +7,11 @@
  * A corner that no longer pushes the path (the cable runs straight past it) is released.
  *
  * Heights: a cable engages at its natural height (the straight line between its neighbouring
- * supports) and then rides on the face at that body-frame height. If at first contact the natural
- * height lies below the face's bottom edge the vehicle rides over the cable (override); above the top
- * edge it runs under it (underride). Later, an engaged cable slips off the same way only when its
- * natural line is beyond the edge and friction on the face cannot hold it (|F_z| > mu F_n in the
- * vehicle frame). Either way the cable leaves the contact for good. */
+ * supports). If at first contact that lies below the face's bottom edge the vehicle rides over the
+ * cable (override); above the top edge it runs under it (underride). Once engaged, the contact slides
+ * along the face whenever its spans pull it up or down harder than friction holds (|F_z| > mu F_n in
+ * the vehicle frame), until friction holds again; if it reaches the edge still pulled, the cable
+ * slips off (override below, underride above). Either way the cable leaves the contact for good. */
 #include "internal.h"
 #include "vec3.h"
 
@@ -67,13 +67,45 @@ static double body_z_for(const cs_model *model, const cs_state *s, int k, double
     return (zw - p0[2]) / (p1[2] - p0[2]);
 }
 
-/* Friction on the face holds the cable at its height while the vertical pull of its spans is at most
- * mu times the pull normal to the vertical face (in the face's own frame). */
-static int friction_holds(const cs_model *model, const cs_state *s, const cs_cable_state *cs, int i) {
+/* Vertical pull on the contact beyond what friction on the vertical face holds, dir * F_z - mu F_n in
+ * the vehicle frame, with the contact at body height z (the rope in the spans held). */
+static double vertical_excess(const cs_model *model, cs_state *s, int c, int i, int k, double z, int dir,
+                              double *fz) {
+    cs_cable_state *cs = &s->cables[c];
+    const cs_cable_model *cm = &model->cables[c];
+    cs->corner_z[k] = z;
+    cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), z, cs->pos + 3 * i);
+    cs->tension[i - 1] = cs_span_tension(cm, cs, i - 1);
+    cs->tension[i] = cs_span_tension(cm, cs, i);
     double f[3], fb[3];
     cs_node_force(cs, i, f);
     quat_unrotate(fb, s->quat, f);
-    return fabs(fb[2]) <= model->vehicle.def.face_friction * hypot(fb[0], fb[1]);
+    *fz = fb[2];
+    return dir * fb[2] - model->vehicle.def.face_friction * hypot(fb[0], fb[1]);
+}
+
+/* The contact slides along the face while the spans pull it up or down harder than friction holds,
+ * until friction holds again (bisection); the work of the vertical pull over the slide is friction
+ * work. Returns 1 if it reaches the face's edge still pulled on: the cable slips off. */
+static int slide_on_face(const cs_model *model, cs_state *s, int c, int i, int k) {
+    const cs_vehicle_def *v = &model->vehicle.def;
+    double z0 = s->cables[c].corner_z[k], fz0, fz;
+    if (vertical_excess(model, s, c, i, k, z0, 1, &fz0) <= 0.0 &&
+        vertical_excess(model, s, c, i, k, z0, -1, &fz0) <= 0.0)
+        return 0;
+    int dir = fz0 > 0.0 ? 1 : -1;
+    double edge = (dir > 0 ? v->face_top : v->face_bottom) - v->cg_height, a = z0, b = edge;
+    if (vertical_excess(model, s, c, i, k, edge, dir, &fz) > 0.0) return 1;
+    for (int it = 0; it < 50; it++) {
+        double m = 0.5 * (a + b);
+        if (vertical_excess(model, s, c, i, k, m, dir, &fz) > 0.0)
+            a = m;
+        else
+            b = m;
+    }
+    vertical_excess(model, s, c, i, k, b, dir, &fz);
+    s->e_friction += 0.5 * fabs(fz0 + fz) * fabs(b - z0);
+    return 0;
 }
 
 static void slip(const cs_model *model, cs_state *s, int c, cs_event_type why) {
@@ -109,10 +141,10 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
             cs_cable_remove_node(cs, i);
             continue;
         }
-        double lo, hi, zn = natural_height(cs, i - 1, i + 1, cs->pos[3 * i]);
-        face_heights(model, s, k, &lo, &hi);
-        if ((zn < lo || zn > hi) && !friction_holds(model, s, cs, i)) {
-            slip(model, s, c, zn < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
+        if (slide_on_face(model, s, c, i, k)) {
+            double zn = natural_height(cs, i - 1, i + 1, cs->pos[3 * i]), lo, hi;
+            face_heights(model, s, k, &lo, &hi);
+            slip(model, s, c, zn < 0.5 * (lo + hi) ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
             return;
         }
     }
