@@ -134,6 +134,15 @@ static double gauss_seidel(const cs_model *model, cs_state *s, int sweeps) {
                 worst = fmax(worst, cs_cable_slide_node(model, cm, cs, i, sc->solver_tolerance));
             }
         }
+        for (int c = 0; c < model->cable_count; c++) { /* contact heights on the face */
+            cs_cable_state *cs = &s->cables[c];
+            if (cs->status != CS_CABLE_INTACT || !cs->engaged) continue;
+            for (int i = 1; i + 1 < cs->node_count; i++)
+                if (cs->node[i] == CS_NODE_LEFT || cs->node[i] == CS_NODE_RIGHT)
+                    worst = fmax(worst,
+                                 cs_contact_solve_height(model, s, c, i, cs->node[i] == CS_NODE_LEFT ? 0 : 1,
+                                                         sc->solver_tolerance));
+        }
         worst = fmax(worst, crush_solve(model, s));
         if (worst <= sc->solver_tolerance) break;
     }
@@ -178,6 +187,7 @@ void cs_barrier_force(const cs_model *model, cs_state *s) {
 }
 
 void cs_barrier_commit(const cs_model *model, cs_state *s) {
+    cs_contact_commit(model, s);
     for (int c = 0; c < model->cable_count; c++)
         cs_cable_commit(model, c, s);
     for (int p = 0; p < model->post_count; p++)

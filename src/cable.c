@@ -46,8 +46,23 @@ static double span_tension_at(const cs_rope *r, double length, double material, 
     return cs_rope_tension(r, length / material - 1.0, ep);
 }
 
+/* Plastic strain of span i with its ends at material coordinates lo and hi: the rope it kept since the
+ * last commit at its own plastic strain, plus the rope that slid in across either end at the plastic
+ * strain of the span it came from (the permanent stretch travels with the rope; first-order upwind). */
+static double span_plastic(const cs_cable_state *cs, int i, double lo, double hi) {
+    double s = hi - lo;
+    if (s <= 1e-12) return cs->ep[i];
+    double gl = i > 0 ? fmin(fmax(0.0, cs->m_commit[i] - lo), s) : 0.0;
+    double gr = i + 2 < cs->node_count ? fmin(fmax(0.0, hi - cs->m_commit[i + 1]), s - gl) : 0.0;
+    double e = cs->ep[i] * (s - gl - gr);
+    if (gl > 0.0) e += cs->ep[i - 1] * gl;
+    if (gr > 0.0) e += cs->ep[i + 1] * gr;
+    return e / s;
+}
+
 double cs_span_tension(const cs_cable_model *cm, const cs_cable_state *cs, int i) {
-    return span_tension_at(&cm->rope, cs_span_length(cs, i), cs->m[i + 1] - cs->m[i], cs->ep[i]);
+    return span_tension_at(&cm->rope, cs_span_length(cs, i), cs->m[i + 1] - cs->m[i],
+                           span_plastic(cs, i, cs->m[i], cs->m[i + 1]));
 }
 
 void cs_cable_update_tensions(const cs_cable_model *cm, cs_cable_state *cs) {
@@ -78,8 +93,8 @@ double cs_cable_slide_node(const cs_model *model, const cs_cable_model *cm, cs_c
     const cs_rope *r = &cm->rope;
     double ll = cs_span_length(cs, i - 1), lr = cs_span_length(cs, i);
     double m0 = cs->m[i - 1], m2 = cs->m[i + 1], m = cs->m[i];
-    double epl = cs->ep[i - 1], epr = cs->ep[i];
-    double tl = span_tension_at(r, ll, m - m0, epl), tr = span_tension_at(r, lr, m2 - m, epr);
+    double tl = span_tension_at(r, ll, m - m0, span_plastic(cs, i - 1, m0, m));
+    double tr = span_tension_at(r, lr, m2 - m, span_plastic(cs, i, m, m2));
     double ratio = cs_node_friction_ratio(model, cm, cs, i);
     /* dir = +1: left side too taut, rope slides into the left span (m grows). */
     int dir;
@@ -97,8 +112,10 @@ double cs_cable_slide_node(const cs_model *model, const cs_cable_model *cm, cs_c
     double a = m, b = dir > 0 ? m2 - eps : m0 + eps;
     /* h(x) > 0 at a, < 0 at b */
 #define CS_H(x)                                                                                              \
-    (dir > 0 ? span_tension_at(r, ll, (x)-m0, epl) - ratio * span_tension_at(r, lr, m2 - (x), epr)           \
-             : span_tension_at(r, lr, m2 - (x), epr) - ratio * span_tension_at(r, ll, (x)-m0, epl))
+    (dir > 0 ? span_tension_at(r, ll, (x)-m0, span_plastic(cs, i - 1, m0, (x))) -                            \
+                   ratio * span_tension_at(r, lr, m2 - (x), span_plastic(cs, i, (x), m2))                    \
+             : span_tension_at(r, lr, m2 - (x), span_plastic(cs, i, (x), m2)) -                              \
+                   ratio * span_tension_at(r, ll, (x)-m0, span_plastic(cs, i - 1, m0, (x))))
     double ha = viol, hb = CS_H(b), x = a;
     if (hb >= 0.0) {
         cs->m[i] = b; /* cannot be met inside the bracket: slide to its end */
@@ -196,6 +213,9 @@ void cs_cable_commit(const cs_model *model, int c, cs_state *s) {
     if (cs->status != CS_CABLE_INTACT) return;
     const cs_rope *r = &cm->rope;
     double worst = 0.0, tmax = 0.0;
+    for (int i = 0; i + 1 < cs->node_count; i++) /* carry the plastic strain with the rope that slid */
+        cs->ep_mix[i] = span_plastic(cs, i, cs->m[i], cs->m[i + 1]);
+    memcpy(cs->ep, cs->ep_mix, (size_t)(cs->node_count - 1) * sizeof *cs->ep);
     for (int i = 0; i + 1 < cs->node_count; i++) {
         double sm = cs->m[i + 1] - cs->m[i];
         double e = sm > 1e-12 ? cs_span_length(cs, i) / sm - 1.0 : r->e_break * 2.0;

@@ -7,11 +7,12 @@
  * A corner that no longer pushes the path (the cable runs straight past it) is released.
  *
  * Heights: a cable engages at its natural height (the straight line between its neighbouring
- * supports) and then rides on the face at that body-frame height. If at first contact the natural
- * height lies below the face's bottom edge the vehicle rides over the cable (override); above the top
- * edge it runs under it (underride). Later, an engaged cable slips off the same way only when its
- * natural line is beyond the edge and friction on the face cannot hold it (|F_z| > mu F_n in the
- * vehicle frame). Either way the cable leaves the contact for good. */
+ * supports); below the face's bottom edge at first contact the vehicle rides over it (override), above
+ * the top edge it runs under it (underride). Once engaged, the contact's height on the face is an
+ * unknown of the barrier solve with Coulomb friction on the vertical face: it sticks while the spans'
+ * pull along the face is at most mu times their pull into it, else it slides with the pull (solve.c,
+ * cs_contact_solve_height). A contact that slides past an edge slips off the same way. Either way the
+ * cable leaves the contact for good. */
 #include "internal.h"
 #include "vec3.h"
 
@@ -67,13 +68,61 @@ static double body_z_for(const cs_model *model, const cs_state *s, int k, double
     return (zw - p0[2]) / (p1[2] - p0[2]);
 }
 
-/* Friction on the face holds the cable at its height while the vertical pull of its spans is at most
- * mu times the pull normal to the vertical face (in the face's own frame). */
-static int friction_holds(const cs_model *model, const cs_state *s, const cs_cable_state *cs, int i) {
+/* The cable's pull on contact node i in the vehicle frame: up the face (fz) and normal to it (fn). */
+void cs_contact_face_force(const cs_model *model, const cs_state *s, int c, int i, double *fz, double *fn) {
     double f[3], fb[3];
-    cs_node_force(cs, i, f);
+    cs_node_force(&s->cables[c], i, f);
     quat_unrotate(fb, s->quat, f);
-    return fabs(fb[2]) <= model->vehicle.def.face_friction * hypot(fb[0], fb[1]);
+    *fz = fb[2];
+    *fn = hypot(fb[0], fb[1]);
+    (void)model;
+}
+
+/* dir * F_z - mu F_n with the contact of corner k at body height z (the rope in the spans held). */
+static double height_excess(const cs_model *model, cs_state *s, int c, int i, int k, double z, int dir) {
+    cs_cable_state *cs = &s->cables[c];
+    const cs_cable_model *cm = &model->cables[c];
+    cs->corner_z[k] = z;
+    cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), z, cs->pos + 3 * i);
+    cs->tension[i - 1] = cs_span_tension(cm, cs, i - 1);
+    cs->tension[i] = cs_span_tension(cm, cs, i);
+    double fz, fn;
+    cs_contact_face_force(model, s, c, i, &fz, &fn);
+    return dir * fz - model->vehicle.def.face_friction * fn;
+}
+
+/* Local solve of a contact's height (Coulomb friction on the vertical face, measured from where it was
+ * at the end of the last step): it sticks while |F_z| <= mu F_n, else slides with the pull until
+ * |F_z| = mu F_n (bisection over up to 2 m). Returns the relative violation found on entry. */
+double cs_contact_solve_height(const cs_model *model, cs_state *s, int c, int i, int k, double tol) {
+    cs_cable_state *cs = &s->cables[c];
+    double z0 = cs->corner_z_commit[k], fu = model->cables[c].rope.fu;
+    double up = height_excess(model, s, c, i, k, z0, 1), down = height_excess(model, s, c, i, k, z0, -1);
+    int dir = up > 0.0 ? 1 : (down > 0.0 ? -1 : 0);
+    double entry = 0.0;
+    {
+        double fz, fn;
+        height_excess(model, s, c, i, k, cs->corner_z[k], 1);
+        cs_contact_face_force(model, s, c, i, &fz, &fn);
+        double b = model->vehicle.def.face_friction * fn, dz = cs->corner_z[k] - z0;
+        entry =
+            (fabs(fz) > b || (dz != 0.0 && fabs(fabs(fz) - b) > tol * fu)) ? fabs(fabs(fz) - b) / fu : 0.0;
+    }
+    if (dir == 0) {
+        height_excess(model, s, c, i, k, z0, 1);
+        return entry;
+    }
+    double a = z0, b = z0 + 2.0 * dir;
+    if (height_excess(model, s, c, i, k, b, dir) > 0.0) return entry; /* pulled off the face */
+    for (int it = 0; it < 60; it++) {
+        double m = 0.5 * (a + b);
+        if (height_excess(model, s, c, i, k, m, dir) > 0.0)
+            a = m;
+        else
+            b = m;
+    }
+    height_excess(model, s, c, i, k, b, dir);
+    return entry;
 }
 
 static void slip(const cs_model *model, cs_state *s, int c, cs_event_type why) {
@@ -101,20 +150,11 @@ void cs_contact_place_corners(const cs_model *model, cs_state *s, double crush) 
 static void update_cable(const cs_model *model, cs_state *s, int c) {
     cs_cable_state *cs = &s->cables[c];
     cs_contact_place_corners(model, s, s->crush);
-    /* release corners that no longer push the path; check the height of those that do */
+    /* release corners that no longer push the path */
     for (int i = cs->node_count - 2; i >= 1; i--) {
         if (!is_corner(cs->node[i])) continue;
-        int k = cs->node[i] == CS_NODE_LEFT ? 0 : 1;
-        if (left_of(cs->pos + 3 * (i - 1), cs->pos + 3 * (i + 1), cs->pos + 3 * i) <= 0.0) {
+        if (left_of(cs->pos + 3 * (i - 1), cs->pos + 3 * (i + 1), cs->pos + 3 * i) <= 0.0)
             cs_cable_remove_node(cs, i);
-            continue;
-        }
-        double lo, hi, zn = natural_height(cs, i - 1, i + 1, cs->pos[3 * i]);
-        face_heights(model, s, k, &lo, &hi);
-        if ((zn < lo || zn > hi) && !friction_holds(model, s, cs, i)) {
-            slip(model, s, c, zn < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
-            return;
-        }
     }
     /* engage corners that have crossed the path */
     for (int k = 0; k < 2; k++) {
@@ -134,7 +174,7 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
             slip(model, s, c, zn < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
             return;
         }
-        cs->corner_z[k] = body_z_for(model, s, k, zn);
+        cs->corner_z[k] = cs->corner_z_commit[k] = body_z_for(model, s, k, zn);
         cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), cs->corner_z[k], p);
         cs_cable_insert_node(cs, j, corner_id[k], p);
     }
@@ -149,6 +189,43 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
 void cs_contact_update(const cs_model *model, cs_state *s) {
     for (int c = 0; c < model->cable_count; c++)
         if (s->cables[c].status == CS_CABLE_INTACT) update_cable(model, s, c);
+}
+
+/* End of step: friction work of contacts that slid along the face (|dz| |F_z|, F_z at the bound). */
+void cs_contact_commit(const cs_model *model, cs_state *s) {
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        if (cs->status != CS_CABLE_INTACT || !cs->engaged) continue;
+        for (int i = 1; i + 1 < cs->node_count; i++) {
+            if (!is_corner(cs->node[i])) continue;
+            int k = cs->node[i] == CS_NODE_LEFT ? 0 : 1;
+            double fz, fn;
+            cs_contact_face_force(model, s, c, i, &fz, &fn);
+            s->e_friction += fabs(cs->corner_z[k] - cs->corner_z_commit[k]) * fabs(fz);
+            cs->corner_z_commit[k] = cs->corner_z[k];
+        }
+    }
+}
+
+/* A contact that slid past the face's edge leaves it: the cable slips off (below: the vehicle rides
+ * over it; above: it runs under it). Returns 1 if any did. */
+int cs_contact_check_slip(const cs_model *model, cs_state *s) {
+    const cs_vehicle_def *v = &model->vehicle.def;
+    double lo = v->face_bottom - v->cg_height, hi = v->face_top - v->cg_height;
+    int any = 0;
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        if (cs->status != CS_CABLE_INTACT || !cs->engaged) continue;
+        for (int i = 1; i + 1 < cs->node_count; i++) {
+            if (!is_corner(cs->node[i])) continue;
+            double z = cs->corner_z[cs->node[i] == CS_NODE_LEFT ? 0 : 1];
+            if (z >= lo && z <= hi) continue;
+            slip(model, s, c, z < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
+            any = 1;
+            break;
+        }
+    }
+    return any;
 }
 
 /* Take failed posts out of every path and release the cables of failed anchors. */

@@ -71,14 +71,16 @@ typedef struct cs_cable_state {
     cs_cable_status status;
     int engaged;
     int node_count;
-    int *node;          /* [max_nodes] */
-    int *where;         /* [post_count] index of each post in node[], -1 if not on the path */
-    double *m;          /* [max_nodes] material coordinate, m */
-    double *m_commit;   /* [max_nodes] at the end of the previous step */
-    double *ep;         /* [max_nodes - 1] plastic strain of each span (committed) */
-    double *tension;    /* [max_nodes - 1] N */
-    double *pos;        /* [max_nodes * 3] node positions, m */
-    double corner_z[2]; /* body-frame z of the contact on the face (left, right), m */
+    int *node;                 /* [max_nodes] */
+    int *where;                /* [post_count] index of each post in node[], -1 if not on the path */
+    double *m;                 /* [max_nodes] material coordinate, m */
+    double *m_commit;          /* [max_nodes] at the end of the previous step */
+    double *ep;                /* [max_nodes - 1] plastic strain of each span (committed) */
+    double *ep_mix;            /* [max_nodes - 1] scratch of the commit */
+    double *tension;           /* [max_nodes - 1] N */
+    double *pos;               /* [max_nodes * 3] node positions, m */
+    double corner_z[2];        /* body-frame z of the contact on the face (left, right), m */
+    double corner_z_commit[2]; /* the same at the end of the previous step */
     double max_tension_seen;
     double max_strain; /* largest span strain at the last commit */
 } cs_cable_state;
@@ -99,6 +101,7 @@ typedef struct cs_solver {
     struct slot *slots; /* unknowns in barrier order */
     int *tilt_index;    /* [post_count] index of a post's first tilt unknown, -1 if none */
     int *node_index;    /* [cable_count * max_nodes] index of a node's material unknown, -1 if none */
+    int *height_index;  /* [cable_count * 2] index of a face contact height unknown, -1 if none */
     int crush_index;
     double *x, *r, *dx, *xt, *rt, *x0;
     double *band; /* banded Jacobian / LU factors */
@@ -194,6 +197,10 @@ double cs_vehicle_potential_energy(const cs_model *model, const cs_state *s);
 void cs_contact_update(const cs_model *model, cs_state *s);
 void cs_contact_place_corners(const cs_model *model, cs_state *s, double crush);
 void cs_contact_drop_failed(const cs_model *model, cs_state *s);
+void cs_contact_face_force(const cs_model *model, const cs_state *s, int c, int i, double *fz, double *fn);
+double cs_contact_solve_height(const cs_model *model, cs_state *s, int c, int i, int k, double tol);
+void cs_contact_commit(const cs_model *model, cs_state *s);
+int cs_contact_check_slip(const cs_model *model, cs_state *s);
 
 /* ---- barrier solve (barrier.c) ---- */
 double cs_barrier_solve(const cs_model *model, cs_state *s);

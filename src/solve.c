@@ -26,10 +26,18 @@
 #define CS_STICK_EPS 1e-4
 #define CS_NEWTON_GIVE_UP 1e-2 /* residual above which the step goes to Gauss-Seidel instead */
 
-enum { U_TILT = 0, U_NODE = 1, U_CRUSH = 2 };
+enum { U_TILT = 0, U_NODE = 1, U_CRUSH = 2, U_HEIGHT = 3 };
 
 static int is_corner(int id) {
     return id == CS_NODE_LEFT || id == CS_NODE_RIGHT;
+}
+
+/* Index on the cable's path of face corner k (0 left, 1 right). */
+static int corner_node(const cs_cable_state *cs, int k) {
+    int id = k == 0 ? CS_NODE_LEFT : CS_NODE_RIGHT;
+    for (int i = 1; i + 1 < cs->node_count; i++)
+        if (cs->node[i] == id) return i;
+    return -1;
 }
 
 static int node_slides(const cs_model *model, const cs_cable_state *cs, int i) {
@@ -48,21 +56,24 @@ typedef struct slot {
 int cs_solver_init(const cs_model *model, cs_solver *w) {
     memset(w, 0, sizeof *w);
     size_t nc = (size_t)model->cable_count, np = (size_t)model->post_count, nn = (size_t)model->max_nodes;
-    size_t n = 2 * np + nc * nn + 1, per_row = 3 * (12 + 8 * nc) + 1;
+    size_t n = 2 * np + nc * nn + 2 * nc + 1, per_row = 3 * (12 + 8 * nc) + 1;
     w->slots = calloc(n, sizeof *w->slots);
     w->tilt_index = calloc(np ? np : 1, sizeof *w->tilt_index);
     w->node_index = calloc(nc ? nc * nn : 1, sizeof *w->node_index);
+    w->height_index = calloc(nc ? 2 * nc : 1, sizeof *w->height_index);
     w->x = calloc(6 * n, sizeof *w->x);
     w->band_capacity = n * per_row;
     w->band = calloc(w->band_capacity, sizeof *w->band);
     w->pivot = calloc(n, sizeof *w->pivot);
-    if (!w->slots || !w->tilt_index || !w->node_index || !w->x || !w->band || !w->pivot) return -1;
+    if (!w->slots || !w->tilt_index || !w->node_index || !w->height_index || !w->x || !w->band || !w->pivot)
+        return -1;
     w->r = w->x + n, w->dx = w->x + 2 * n, w->xt = w->x + 3 * n, w->rt = w->x + 4 * n, w->x0 = w->x + 5 * n;
     return 0;
 }
 
 void cs_solver_free(cs_solver *w) {
-    free(w->slots), free(w->tilt_index), free(w->node_index), free(w->x), free(w->band), free(w->pivot);
+    free(w->slots), free(w->tilt_index), free(w->node_index), free(w->height_index), free(w->x),
+        free(w->band), free(w->pivot);
     memset(w, 0, sizeof *w);
 }
 
@@ -102,8 +113,11 @@ static int assemble(const cs_model *model, cs_state *s, cs_solver *w) {
     for (int c = 0; c < model->cable_count; c++) {
         cs_cable_state *cs = &s->cables[c];
         if (cs->status != CS_CABLE_INTACT) continue;
-        for (int i = 1; i + 1 < cs->node_count; i++)
+        for (int i = 1; i + 1 < cs->node_count; i++) {
             if (node_slides(model, cs, i)) sl[n++] = (slot){cs->pos[3 * i], U_NODE, c, i};
+            if (is_corner(cs->node[i]))
+                sl[n++] = (slot){cs->pos[3 * i], U_HEIGHT, c, cs->node[i] == CS_NODE_LEFT ? 0 : 1};
+        }
     }
     if (has_face_load(model, s)) sl[n++] = (slot){s->pos[0], U_CRUSH, 0, 0};
     qsort(sl, (size_t)n, sizeof *sl, cmp_slot);
@@ -114,7 +128,10 @@ static int assemble(const cs_model *model, cs_state *s, cs_solver *w) {
         for (int i = 0; i < model->max_nodes; i++)
             w->node_index[c * model->max_nodes + i] = -1;
     w->crush_index = -1;
+    for (int i = 0; i < 2 * model->cable_count; i++)
+        w->height_index[i] = -1;
     for (int k = 0; k < n; k++) {
+        if (sl[k].kind == U_HEIGHT) w->height_index[2 * sl[k].a + sl[k].b] = k;
         if (sl[k].kind == U_TILT && sl[k].b == 0) w->tilt_index[sl[k].a] = k;
         if (sl[k].kind == U_NODE) w->node_index[sl[k].a * model->max_nodes + sl[k].b] = k;
         if (sl[k].kind == U_CRUSH) w->crush_index = k;
@@ -123,10 +140,19 @@ static int assemble(const cs_model *model, cs_state *s, cs_solver *w) {
 }
 
 /* Unknowns a node's position depends on: its post's tilt, or the crush for a corner. */
-static void position_deps(const cs_solver *w, const cs_cable_state *cs, int i, int *lo, int *hi) {
+static void widen(int k, int *lo, int *hi) {
+    if (k < 0) return;
+    if (k < *lo) *lo = k;
+    if (k > *hi) *hi = k;
+}
+
+static void position_deps(const cs_solver *w, const cs_cable_state *cs, int c, int i, int *lo, int *hi) {
     int id = cs->node[i], k = -1;
     if (id >= 0 && w->tilt_index[id] >= 0) k = w->tilt_index[id];
-    if (is_corner(id)) k = w->crush_index;
+    if (is_corner(id)) {
+        widen(w->height_index[2 * c + (id == CS_NODE_LEFT ? 0 : 1)], lo, hi);
+        k = w->crush_index;
+    }
     if (k < 0) return;
     int k2 = (id >= 0) ? k + 1 : k;
     if (k < *lo) *lo = k;
@@ -143,7 +169,7 @@ static void neighbourhood(const cs_model *model, const cs_solver *w, const cs_ca
             if (k < *lo) *lo = k;
             if (k > *hi) *hi = k;
         }
-        position_deps(w, cs, j, lo, hi);
+        position_deps(w, cs, c, j, lo, hi);
     }
 }
 
@@ -155,6 +181,8 @@ static void bandwidth(const cs_model *model, cs_state *s, cs_solver *w, int n, i
         int lo = k, hi = k;
         if (u->kind == U_NODE) {
             neighbourhood(model, w, &s->cables[u->a], u->a, u->b, &lo, &hi);
+        } else if (u->kind == U_HEIGHT) {
+            neighbourhood(model, w, &s->cables[u->a], u->a, corner_node(&s->cables[u->a], u->b), &lo, &hi);
         } else if (u->kind == U_TILT) {
             for (int c = 0; c < model->cable_count; c++) {
                 const cs_cable_state *cs = &s->cables[c];
@@ -185,6 +213,7 @@ static void gather(const cs_state *s, const cs_solver *w, int n, double *x) {
         if (u->kind == U_TILT) x[k] = s->posts[u->a].tilt[u->b];
         if (u->kind == U_NODE) x[k] = s->cables[u->a].m[u->b];
         if (u->kind == U_CRUSH) x[k] = s->crush;
+        if (u->kind == U_HEIGHT) x[k] = s->cables[u->a].corner_z[u->b];
     }
 }
 
@@ -195,6 +224,7 @@ static void scatter(const cs_model *model, cs_state *s, const cs_solver *w, int 
         if (u->kind == U_TILT) s->posts[u->a].tilt[u->b] = x[k];
         if (u->kind == U_NODE) s->cables[u->a].m[u->b] = x[k];
         if (u->kind == U_CRUSH) s->crush = x[k];
+        if (u->kind == U_HEIGHT) s->cables[u->a].corner_z[u->b] = x[k];
     }
     cs_contact_place_corners(model, s, s->crush);
     cs_post_place_captured(model, s, s->crush, NULL, NULL);
@@ -231,10 +261,27 @@ static double node_residual(const cs_model *model, const cs_state *s, int c, int
     return (lambda - proj + CS_STICK_EPS * cstiff * dm) / cm->rope.fu;
 }
 
+/* The contact of corner k on the face: Coulomb friction along the vertical face, as for a support
+ * (lambda = the spans' pull up the face, b = mu times their pull into it, dz from the last step). */
+static double height_residual(const cs_model *model, const cs_state *s, int c, int k) {
+    const cs_cable_model *cm = &model->cables[c];
+    const cs_cable_state *cs = &s->cables[c];
+    int i = corner_node(cs, k);
+    double fz, fn;
+    cs_contact_face_force(model, s, c, i, &fz, &fn);
+    double b = model->vehicle.def.face_friction * fn;
+    double cstiff = cm->rope.ea / (cs_span_length(cs, i - 1) + cs_span_length(cs, i) + 1e-9);
+    double dz = cs->corner_z[k] - cs->corner_z_commit[k];
+    double proj = smooth_clamp(fz + cstiff * dz, b, 1e-4 * cm->rope.fu);
+    return (fz - proj + CS_STICK_EPS * cstiff * dz) / cm->rope.fu;
+}
+
 static void residual(const cs_model *model, cs_state *s, const cs_solver *w, int n, double *r) {
     for (int k = 0; k < n; k++) {
         const slot *u = &w->slots[k];
-        if (u->kind == U_NODE) {
+        if (u->kind == U_HEIGHT) {
+            r[k] = height_residual(model, s, u->a, u->b);
+        } else if (u->kind == U_NODE) {
             r[k] = node_residual(model, s, u->a, u->b);
         } else if (u->kind == U_TILT && u->b == 0) {
             double q[2];
@@ -258,7 +305,7 @@ static double norm_inf(const double *r, int n) {
 }
 
 static double fd_step(const slot *u, double x) {
-    if (u->kind == U_NODE) return 1e-8 * fmax(1.0, fabs(x));
+    if (u->kind == U_NODE || u->kind == U_HEIGHT) return 1e-8 * fmax(1.0, fabs(x));
     return 1e-8;
 }
 
@@ -342,7 +389,7 @@ static double max_step(const cs_model *model, const cs_state *s, const cs_solver
     for (int k = 0; k < n; k++) {
         const slot *u = &w->slots[k];
         if (u->kind == U_TILT && fabs(dx[k]) * t > 0.1) t = 0.1 / fabs(dx[k]);
-        if (u->kind == U_CRUSH && fabs(dx[k]) * t > 0.05) t = 0.05 / fabs(dx[k]);
+        if ((u->kind == U_CRUSH || u->kind == U_HEIGHT) && fabs(dx[k]) * t > 0.05) t = 0.05 / fabs(dx[k]);
     }
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];

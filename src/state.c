@@ -24,9 +24,11 @@ cs_state *cs_state_create(const cs_model *model, cs_error *err) {
         cs->m = calloc((size_t)nn, sizeof *cs->m);
         cs->m_commit = calloc((size_t)nn, sizeof *cs->m_commit);
         cs->ep = calloc((size_t)nn, sizeof *cs->ep);
+        cs->ep_mix = calloc((size_t)nn, sizeof *cs->ep_mix);
         cs->tension = calloc((size_t)nn, sizeof *cs->tension);
         cs->pos = calloc((size_t)nn * 3, sizeof *cs->pos);
-        if (!cs->node || !cs->where || !cs->m || !cs->m_commit || !cs->ep || !cs->tension || !cs->pos)
+        if (!cs->node || !cs->where || !cs->m || !cs->m_commit || !cs->ep || !cs->ep_mix || !cs->tension ||
+            !cs->pos)
             goto oom;
     }
     if (cs_solver_init(model, &s->solver) != 0) goto oom;
@@ -43,7 +45,8 @@ void cs_state_free(cs_state *s) {
     if (s->cables) {
         for (int c = 0; c < s->cable_count_alloc; c++) {
             cs_cable_state *cs = &s->cables[c];
-            free(cs->node), free(cs->where), free(cs->m), free(cs->m_commit), free(cs->ep), free(cs->tension);
+            free(cs->node), free(cs->where), free(cs->m), free(cs->m_commit), free(cs->ep), free(cs->ep_mix),
+                free(cs->tension);
             free(cs->pos);
         }
     }
@@ -79,7 +82,7 @@ static void reset_cable(const cs_model *model, int c, cs_cable_state *cs) {
     cs_cable_update_tensions(cm, cs);
     cs->max_tension_seen = cm->pretension;
     cs->max_strain = cm->pretension / cm->rope.ea;
-    cs->corner_z[0] = cs->corner_z[1] = 0.0;
+    cs->corner_z[0] = cs->corner_z[1] = cs->corner_z_commit[0] = cs->corner_z_commit[1] = 0.0;
 }
 
 void cs_state_reset(const cs_model *model, cs_state *s) {

@@ -21,6 +21,7 @@ static void resolve_failures(const cs_model *model, cs_state *s) {
             any |= cs_post_check_failure(model, s, p);
         any |= cs_anchor_check(model, s);
         any |= cs_post_capture(model, s);
+        any |= cs_contact_check_slip(model, s);
         if (!any) break;
         changed = 1;
         cs_contact_drop_failed(model, s);

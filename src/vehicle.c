@@ -75,8 +75,8 @@ static void tyre_force(const cs_model *model, const cs_state *s, int w, double *
     double ff = -vm->def.rolling_resistance * n * vf / sqrt(vf * vf + CS_TYRE_VREG * CS_TYRE_VREG);
     double fs = -vm->def.tyre_friction * n * vs / sqrt(vs * vs + CS_TYRE_VREG * CS_TYRE_VREG);
     v3_set(f, ff * fwd[0] + fs * side[0], ff * fwd[1] + fs * side[1], n);
-    double damp = vm->tyre_c[w] * v[2];
-    *power += -(ff * vf + fs * vs) + (n < vm->tyre_k[w] * comp ? damp * v[2] : 0.0);
+    /* friction, and the damper's c v_z^2 whether the tyre is compressing or extending (n > 0 here) */
+    *power += -(ff * vf + fs * vs) + vm->tyre_c[w] * v[2] * v[2];
 }
 
 void cs_vehicle_integrate(const cs_model *model, cs_state *s) {
