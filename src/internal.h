@@ -38,6 +38,7 @@ typedef struct cs_post_model {
     double pullout_cap;    /* N */
     double rot_limit;      /* rad */
     double load_height;    /* mean cable height on the post, m */
+    double pivot;       /* depth of the point it turns about: 2/3 D if the soil yields, else 0, m */
     int clamped;
     cs_footing_def footing;
 } cs_post_model;

@@ -257,12 +257,19 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
         pm->x = d->x;
         pm->height = d->height;
         pm->load_height = mean_z;
-        pm->k_rot = 3.0 * d->section.modulus * d->section.inertia / mean_z; /* cantilever, Eq. 10 */
         pm->mp = d->section.plastic_modulus * d->section.yield_stress;
         pm->footing = d->footing;
         pm->footing_moment = cs_footing_capacity(&d->footing, mean_z) * mean_z;
         pm->soil_yields = pm->footing_moment < pm->mp;
-        pm->moment_cap = pm->soil_yields ? pm->footing_moment : pm->mp;
+        /* a post whose footing yields turns about a point 2/3 of the embedment below grade (the paper,
+         * "Kinetic energy dissipation due to post pullout"), resisting P(h) at its lever h + 2D/3 */
+        pm->pivot = pm->soil_yields ? 2.0 * d->footing.depth / 3.0 : 0.0;
+        double lever = mean_z + pm->pivot;
+        pm->moment_cap = pm->soil_yields ? cs_footing_capacity(&d->footing, mean_z) * lever : pm->mp;
+        /* the cantilever of Eqs. 10-11 seen at the load height: R h^3 / 3EI there, as a rotation about
+         * the pivot (lever h + pivot) */
+        pm->k_rot =
+            3.0 * d->section.modulus * d->section.inertia * lever * lever / (mean_z * mean_z * mean_z);
         pm->shear_cap = 0.6 * d->section.web_area * d->section.yield_stress;
         pm->pullout_cap = d->footing.pullout_capacity;
         pm->rot_limit = pm->soil_yields ? d->footing.rotation_limit : d->rotation_limit;

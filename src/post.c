@@ -27,10 +27,11 @@ static void sinc_terms(double t, double *s, double *g) {
     }
 }
 
+/* The point of the post at height z (when upright): pivot + (z + pivot depth) a(alpha). */
 void cs_post_attachment(const cs_model *model, int p, const double *tilt, double z, double *out) {
-    double t = hypot(tilt[0], tilt[1]), s, g;
+    double t = hypot(tilt[0], tilt[1]), s, g, dp = model->posts[p].pivot, l = z + dp;
     sinc_terms(t, &s, &g);
-    v3_set(out, model->posts[p].x + z * tilt[0] * s, z * tilt[1] * s, z * cos(t));
+    v3_set(out, model->posts[p].x + l * tilt[0] * s, l * tilt[1] * s, -dp + l * cos(t));
 }
 
 /* Jacobian of the post axis a(alpha), 3 x 2, row-major. */
@@ -70,8 +71,9 @@ static void post_residual(const cs_model *model, cs_state *s, int p, const doubl
         cs->tension[i] = cs_span_tension(cm, cs, i);
         double f[3];
         cs_node_force(cs, i, f);
-        q[0] += cm->z * (j[0] * f[0] + j[2] * f[1] + j[4] * f[2]);
-        q[1] += cm->z * (j[1] * f[0] + j[3] * f[1] + j[5] * f[2]);
+        double l = cm->z + model->posts[p].pivot;
+        q[0] += l * (j[0] * f[0] + j[2] * f[1] + j[4] * f[2]);
+        q[1] += l * (j[1] * f[0] + j[3] * f[1] + j[5] * f[2]);
         if (force) v3_add(force, force, f);
     }
     double res[2];
@@ -88,10 +90,10 @@ void cs_post_residual_now(const cs_model *model, const cs_state *s, int p, doubl
         const cs_cable_state *cs = &s->cables[c];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
         if (i < 0) continue;
-        double f[3], z = model->cables[c].z;
+        double f[3], l = model->cables[c].z + model->posts[p].pivot;
         cs_node_force(cs, i, f);
-        q[0] += z * (j[0] * f[0] + j[2] * f[1] + j[4] * f[2]);
-        q[1] += z * (j[1] * f[0] + j[3] * f[1] + j[5] * f[2]);
+        q[0] += l * (j[0] * f[0] + j[2] * f[1] + j[4] * f[2]);
+        q[1] += l * (j[1] * f[0] + j[3] * f[1] + j[5] * f[2]);
     }
     double res[2];
     cs_post_resistance(&model->posts[p], ps, ps->tilt, res);
@@ -211,9 +213,11 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     post_residual(model, s, p, ps->tilt, m_entry, r, f);
     /* base shear from the post's own moment over the load height (what equilibrium allows), so a
      * step the solver left short of equilibrium cannot report a shear it never had */
-    ps->shear = hypot(ps->moment[0], ps->moment[1]) / pm->load_height;
-    cs_post_attachment(model, p, ps->tilt, 1.0, axis);
-    axis[0] -= pm->x;
+    ps->shear = hypot(ps->moment[0], ps->moment[1]) / (pm->load_height + pm->pivot);
+    double a0[3];
+    cs_post_attachment(model, p, ps->tilt, 1.0, axis); /* the unit axis: two points 1 m apart */
+    cs_post_attachment(model, p, ps->tilt, 0.0, a0);
+    v3_sub(axis, axis, a0);
     ps->axial = v3_dot(f, axis);
 }
 
@@ -252,8 +256,8 @@ double cs_post_stored_energy(const cs_model *model, const cs_state *s, int p) {
  * A standing post whose base the face's bottom edge reaches (within its width plus a margin) is
  * struck by the vehicle: it leaves the cable paths and is pushed over at the face's bottom edge,
  * height zb. With the face a distance d past the post's base (along the vehicle's heading f), the post
- * leans by theta = asin(d / zb) toward f, resisting with its moment M (elastic-plastic, as above).
- * The push on the vehicle is M / (zb cos theta) against f, so that push x dd = M dtheta: the work
+ * leans by theta = asin(d / (zb + pivot)) toward f, resisting with its moment M (elastic-plastic, as
+ * above). The push on the vehicle is M / ((zb + pivot) cos theta), so that push x dd = M dtheta: the work
  * the vehicle does is exactly what the post stores and dissipates. */
 #define CS_CAPTURE_MARGIN 0.1 /* m beyond each face corner that still strikes a post */
 
@@ -284,7 +288,7 @@ double cs_post_place_captured(const cs_model *model, cs_state *s, double crush, 
         double base[3] = {pm->x, 0.0, 0.0}, rel[3];
         v3_sub(rel, o, base);
         double d = v3_dot(rel, f);
-        double sn = d / zb;
+        double lever = zb + pm->pivot, sn = d / lever;
         sn = sn < 0.0 ? 0.0 : (sn > 0.999 ? 0.999 : sn);
         double th = asin(sn);
         ps->tilt[0] = th * f[0], ps->tilt[1] = th * f[1];
@@ -296,7 +300,7 @@ double cs_post_place_captured(const cs_model *model, cs_state *s, double crush, 
             ps->push = 0.0;
             continue;
         }
-        ps->push = m / (zb * cos(th));
+        ps->push = m / (lever * cos(th));
         total += ps->push;
         if (force) {
             double pt[3], fv[3], r[3], t[3];
