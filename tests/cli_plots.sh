@@ -1,15 +1,7 @@
 #!/usr/bin/env bash
 # `cablesim run FILE --plots`: every figure as PNG and SVG under DIR/plots, committed with the other outputs;
 # without --plots no plots directory appears.
-set -u
-cs=${1:?usage: bash tests/cli_plots.sh path/to/cablesim}
-pass=0
-fail=0
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-ok() { pass=$((pass + 1)); }
-bad() { echo "FAIL: $*"; fail=$((fail + 1)); }
-check() { if eval "$2"; then ok; else bad "$1"; fi; }
+source "$(dirname "$0")/lib.sh"
 
 check "--help names --plots" '"$cs" --help | grep -q -- "--plots"'
 
@@ -30,5 +22,4 @@ for name in deceleration speed penetration cables posts energy snapshots; do
 done
 check "no temporaries left" '[ -z "$(find "$out" -name "*.tmp")" ]'
 
-echo "$pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+finish

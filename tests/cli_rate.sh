@@ -1,9 +1,6 @@
 #!/usr/bin/env bash
 # cablesim rate: the standard's test condition against a model's barrier; usage errors exit 2.
-set -u
-cs="$1"
-fail=0
-check() { if eval "$2"; then echo "ok: $1"; else echo "FAIL: $1"; fail=1; fi; }
+source "$(dirname "$0")/lib.sh"
 out=$("$cs" rate examples/aps3.yaml --standard astm-f2656 --class M30 --set 'scenario.t_end=0.05 s' 2>&1)
 rc=$?
 check "rate runs (exit 0)" '[ $rc -eq 0 ]'
@@ -15,6 +12,6 @@ check "unknown standard exits 2" '[ $? -eq 2 ]'
 check "unknown class exits 2" '[ $? -eq 2 ]'
 "$cs" rate --standard astm-f2656 >/dev/null 2>&1
 check "no model file exits 2" '[ $? -eq 2 ]'
-out=$("$cs" run examples/aps3.yaml -o "$(mktemp -d)" --set 'scenario.t_end=0.05 s' 2>&1)
+out=$("$cs" run examples/aps3.yaml -o "$tmp/run" --set 'scenario.t_end=0.05 s' 2>&1)
 check "run prints the rating of its standard vehicle" 'grep -q "rating (as run)      ASTM F2656 M40/P[1-4]; SD-STD-02.01 " <<<"$out"'
-[ $fail -eq 0 ] && echo "7 passed, 0 failed" || { echo "failures above"; exit 1; }
+finish

@@ -1,15 +1,7 @@
 #!/usr/bin/env bash
 # The command end to end: help, version, list, check, a short run of examples/aps3.yaml and its outputs,
 # --set on the command line, and that a refused model writes nothing.
-set -u
-cs=${1:?usage: bash tests/cli_run.sh path/to/cablesim}
-pass=0
-fail=0
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-ok() { pass=$((pass + 1)); }
-bad() { echo "FAIL: $*"; fail=$((fail + 1)); }
-check() { if eval "$2"; then ok; else bad "$1"; fi; }
+source "$(dirname "$0")/lib.sh"
 
 check "--help" '"$cs" --help | grep -q "usage: cablesim run FILE"'
 check "--version" '"$cs" --version | grep -q "^cablesim [0-9]"'
@@ -49,5 +41,4 @@ check "a refused run leaves earlier outputs alone" 'cmp -s "$tmp/before.json" "$
 "$cs" run tests/bad/zero_spacing.yaml -o "$tmp/never" >/dev/null 2>&1
 check "a bad model writes nothing" '[ $? -eq 2 ] && [ ! -e "$tmp/never" ]'
 
-echo "$pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+finish

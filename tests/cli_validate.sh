@@ -1,11 +1,8 @@
 #!/usr/bin/env bash
 # cablesim validate: the fast parts of the suite (verification, bogie tests) write a report whose
 # numbers are the engine's, and the files appear whole (no temporaries left).
-set -u
-cs="$1"
-fail=0
-check() { if eval "$2"; then echo "ok: $1"; else echo "FAIL: $1"; fail=1; fi; }
-dir=$(mktemp -d)
+source "$(dirname "$0")/lib.sh"
+dir="$tmp"
 "$cs" validate -o "$dir" --only verification,bogie >/dev/null 2>&1
 check "validate exits 0" '[ $? -eq 0 ]'
 md="$dir/validation.md"
@@ -17,5 +14,4 @@ check "no temporaries left" '[ -z "$(ls "$dir" | grep tmp)" ]'
 check "no NaN or Inf in the csv" '! grep -qiE "nan|inf" "$dir/validation.csv"'
 "$cs" validate --bogus >/dev/null 2>&1
 check "unknown option exits 2" '[ $? -eq 2 ]'
-rm -rf "$dir"
-[ $fail -eq 0 ] && echo "8 passed, 0 failed" || { echo "failures above"; exit 1; }
+finish

@@ -86,69 +86,72 @@ static void shear_failure_onset(void **state) {
     world_free(w);
 }
 
-/* A barrier of one post and no cable (a bogie test, a bollard): the vehicle's face strikes the post
- * and pushes it over. Whichever yields (here the hinge: Mp < Eq. 21 at the strike height) takes the
- * capacity times the plastic rotation, M_cap (theta_fail - M_cap / k), and the vehicle leaves once
- * the post fails. */
+/* A barrier of this one post and no cable (a bogie test, a bollard), struck head-on at 5 m/s by the
+ * fixture's truck and run to the end: the post is pushed over until it fails. */
+static cs_model *strike_one_post(cs_post_def *post, cs_state **state, double *strike_height) {
+    fixture fx;
+    fixture_aps3(&fx);
+    post->x = 0.0;
+    fx.barrier.cable_count = 0;
+    fx.barrier.post_count = 1;
+    fx.barrier.posts = post;
+    fx.barrier.start_anchor.x = -10.0, fx.barrier.end_anchor.x = 10.0;
+    fx.scenario.impact_x = 0.0;
+    fx.scenario.speed = 5.0;
+    *strike_height = fx.vehicle.face_bottom;
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    assert_non_null(m);
+    *state = cs_state_create(m, &err);
+    assert_int_equal(cs_run(m, *state, NULL, NULL, &err), CS_OK);
+    assert_int_equal((*state)->posts[0].status, CS_POST_FAILED_ROTATION);
+    assert_int_equal((*state)->outcome, CS_BREAKTHROUGH);
+    return m;
+}
+
+/* Whichever yields takes the capacity times the plastic rotation, M_cap (theta_fail - M_cap / k). */
+static void check_post_work(const cs_model *m, const cs_state *s) {
+    const cs_post_model *pm = &m->posts[0];
+    double theta = hypot(s->posts[0].tilt[0], s->posts[0].tilt[1]);
+    CHECK_REL(s->e_soil + s->e_post_plastic, pm->moment_cap * (theta - pm->moment_cap / pm->k_rot), 1e-6);
+    CHECK_ABS(theta, pm->rot_limit, 0.02); /* reached within a step */
+}
+
+/* An APS3 line post: it hinges (Mp < Eq. 21 at the strike height). */
 static void struck_post_absorbs_capacity_times_rotation(void **state) {
     (void)state;
     fixture fx;
     fixture_aps3(&fx);
     cs_post_def post = fx.posts[0];
-    post.x = 0.0;
-    fx.barrier.cable_count = 0;
-    fx.barrier.post_count = 1;
-    fx.barrier.posts = &post;
-    fx.barrier.start_anchor.x = -10.0, fx.barrier.end_anchor.x = 10.0;
-    fx.scenario.impact_x = 0.0;
-    fx.scenario.speed = 5.0;
-    cs_error err;
-    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
-    assert_non_null(m);
-    cs_state *s = cs_state_create(m, &err);
-    assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
-    const cs_post_model *pm = &m->posts[0];
-    assert_int_equal(s->posts[0].status, CS_POST_FAILED_ROTATION);
-    assert_int_equal(s->outcome, CS_BREAKTHROUGH);
-    double theta = hypot(s->posts[0].tilt[0], s->posts[0].tilt[1]);
-    CHECK_REL(s->e_soil + s->e_post_plastic, pm->moment_cap * (theta - pm->moment_cap / pm->k_rot), 1e-6);
-    CHECK_ABS(theta, pm->rot_limit, 0.02); /* reached within a step */
+    cs_state *s;
+    double h;
+    cs_model *m = strike_one_post(&post, &s, &h);
+    assert_false(m->posts[0].soil_yields);
+    check_post_work(m, s);
     cs_state_free(s);
     cs_model_free(m);
 }
 
-/* The same with a post whose footing is the weaker: a W6x16-like post driven 1 m into soil (Eq. 21 with
- * the 4-in flange as B). It turns about a point 2/3 D below grade, so its capacity is P(h) (h + 2D/3)
- * with P from Eq. 21 at the strike height h, and the soil takes M_cap (theta_fail - M_cap / k). */
+/* A W6x16-like post driven 1 m into soil (Eq. 21 with the 4-in flange as B): the footing is the
+ * weaker, so it turns about a point 2/3 D below grade with capacity P(h) (h + 2D/3), P from Eq. 21 at
+ * the strike height h, and all the work is the soil's. */
 static void struck_post_in_soil_turns_about_two_thirds_depth(void **state) {
     (void)state;
-    fixture fx;
-    fixture_aps3(&fx);
     cs_post_def post = cs_default_post_def();
     post.height = 1.0;
     post.section = fixture_hss();
     post.section.plastic_modulus = 11.7 * IN * IN * IN; /* W6x16 */
     post.section.inertia = 32.1 * pow(IN, 4);
     post.footing = fixture_footing(4.03 / 12.0, 1.016 / FT, 20.0);
-    fx.barrier.cable_count = 0;
-    fx.barrier.post_count = 1;
-    fx.barrier.posts = &post;
-    fx.barrier.start_anchor.x = -10.0, fx.barrier.end_anchor.x = 10.0;
-    fx.scenario.impact_x = 0.0;
-    fx.scenario.speed = 5.0;
-    cs_error err;
-    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
-    assert_non_null(m);
+    cs_state *s;
+    double h;
+    cs_model *m = strike_one_post(&post, &s, &h);
     const cs_post_model *pm = &m->posts[0];
     assert_true(pm->soil_yields);
-    double h = fx.vehicle.face_bottom, d = 1.016, s1 = 8000 * PSF, b = 4.03 * IN;
+    double d = 1.016, s1 = 8000 * PSF, b = 4.03 * IN;
     double p = s1 * b * d * d / (2.37 * d + 2.64 * h); /* Eq. 21 */
     CHECK_REL(pm->moment_cap, p * (h + 2.0 * d / 3.0), 1e-12);
-    cs_state *s = cs_state_create(m, &err);
-    assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
-    assert_int_equal(s->posts[0].status, CS_POST_FAILED_ROTATION);
-    double theta = hypot(s->posts[0].tilt[0], s->posts[0].tilt[1]);
-    CHECK_REL(s->e_soil, pm->moment_cap * (theta - pm->moment_cap / pm->k_rot), 1e-6);
+    check_post_work(m, s);
     assert_true(s->e_post_plastic == 0.0);
     cs_state_free(s);
     cs_model_free(m);
