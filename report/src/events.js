@@ -68,5 +68,10 @@ export function timeline(data) {
     const distinct = [...new Set(r.values.map((v) => v.toPrecision(4)))];
     r.value = k ? (distinct.length === 1 ? k.value(r.values[0]) : r.values.map((v) => k.value(v)).join('; ')) : '';
   }
+  // a run that ends at its time limit has no end event: say so
+  if (data.summary.outcome === 'time_limit') {
+    const speed = data.series.speed[data.series.speed.length - 1];
+    rows.push({ t: data.summary.t_end, type: 'time_limit', group: 'end', kind: 'vehicle', elements: [], text: `The simulated time ends${data.summary.first_contact === null ? ': the vehicle never reached the barrier' : ''}`, value: `speed then ${pair('speed', speed)}` });
+  }
   return rows;
 }

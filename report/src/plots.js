@@ -43,10 +43,21 @@ function drawMarkers(u, markers) {
   ctx.beginPath();
   ctx.rect(u.bbox.left, u.bbox.top, u.bbox.width, u.bbox.height);
   ctx.clip();
+  const placed = []; // label boxes drawn so far: a new one moves down until it overlaps none
   for (const m of markers) {
     if (!Number.isFinite(m.t) || !Number.isFinite(m.v)) continue;
     const x = u.valToPos(m.t, 'x', true);
     const y = u.valToPos(m.v, 'y', true);
+    if (m.vline) {
+      ctx.strokeStyle = m.color;
+      ctx.lineWidth = 1.2 * devicePixelRatio;
+      ctx.setLineDash([4 * devicePixelRatio, 4 * devicePixelRatio]);
+      ctx.beginPath();
+      ctx.moveTo(x, u.bbox.top);
+      ctx.lineTo(x, u.bbox.top + u.bbox.height);
+      ctx.stroke();
+      ctx.setLineDash([]);
+    }
     ctx.strokeStyle = m.color;
     ctx.fillStyle = m.color;
     ctx.lineWidth = 2.5 * devicePixelRatio;
@@ -79,8 +90,15 @@ function drawMarkers(u, markers) {
       ctx.fillStyle = '#222';
       const w = ctx.measureText(m.label).width;
       const right = x + 10 * devicePixelRatio + w < u.bbox.left + u.bbox.width;
+      const below = y - 22 * devicePixelRatio < u.bbox.top;
+      const lx = x + (right ? 1 : -1) * 10 * devicePixelRatio;
+      const x0 = right ? lx : lx - w;
+      const h = 15 * devicePixelRatio;
+      let ly = y + (below ? 20 : -8) * devicePixelRatio;
+      for (let k = 0; k < 6 && placed.some((b) => x0 < b[0] + b[2] && b[0] < x0 + w && ly - h < b[1] && b[1] - h < ly); k++) ly += h;
+      placed.push([x0, ly, w]);
       ctx.textAlign = right ? 'left' : 'right';
-      ctx.fillText(m.label, x + (right ? 1 : -1) * 10 * devicePixelRatio, y - 8 * devicePixelRatio);
+      ctx.fillText(m.label, lx, ly);
     }
   }
   ctx.restore();
@@ -167,7 +185,7 @@ function specs(data) {
     const markers = [];
     for (const e of ev) {
       if (e[2] !== 'cable' || !S.tension[e[3]]) continue;
-      if (e[1] === 'cable_break') markers.push({ t: e[0], v: e[4] / 1e3, color: '#d62728', shape: 'cross', label: `cable ${e[3]} breaks` });
+      if (e[1] === 'cable_break') markers.push({ t: e[0], v: e[4] / 1e3, color: '#d62728', shape: 'cross', label: `cable ${e[3]} breaks`, vline: true });
       else if (e[1] === 'override' || e[1] === 'underride')
         markers.push({ t: e[0], v: valueAt(e[0], t, tension(e[3])), color: PALETTE[e[3] % PALETTE.length], shape: e[1] === 'override' ? 'triangle' : 'diamond', label: `${e[1] === 'override' ? 'rides over' : 'runs under'} cable ${e[3]}` });
     }
@@ -270,7 +288,7 @@ function specs(data) {
       key: 'energy',
       wide: true,
       title: 'Where the energy went',
-      caption: `The vehicle’s kinetic energy at the start (dashed) is moved, step by step, into the barrier and the vehicle: each band is one term of the ledger, stacked from what is gone for good (bottom) to what still moves (top). If the physics is consistent the top of the stack stays on the dashed line; here the error at the end is ${fmt(100 * last, 2)} % of it.`,
+      caption: `The vehicle’s kinetic energy at the start (dashed) is moved, step by step, into the barrier and the vehicle: each band is one term of the ledger, stacked from what is gone for good (bottom) to what still moves (top). If the physics is consistent the top of the stack stays on the dashed line; here the error at the end is ${(100 * last).toFixed(2)} % of it.`,
       data: [t, ...stacked, ke],
       series: [...series, line('initial kinetic energy (kJ)', '#1a1a1a', 2, { dash: [8, 5] })],
       bands,

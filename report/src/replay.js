@@ -177,6 +177,7 @@ export function createReplay(host, data, onFrame) {
     top: () => [new Vector3(ix, 1.5, 0), new Vector3(ix, 1.0, 34), 38],
     side: () => [new Vector3(ix, 0.5, 0.8), new Vector3(ix + 40, 0.5, 6), 18],
     driver: () => [new Vector3(ix, 3, 1.0), new Vector3(ix - 2.5, -12, 3.2), 45],
+    front: () => [new Vector3(ix, 0, 0.8), new Vector3(ix + 7, 13, 4.5), 40],
   };
   function setView(name) {
     const [target, position, fov] = views[name]();

@@ -29,6 +29,11 @@ export function story(data) {
   const angle = (sc.angle * 180) / Math.PI;
   const failed = s.posts_failed_left + s.posts_failed_right;
   const parts = [];
+  if (s.first_contact === null)
+    return (
+      `A ${pair('mass', data.vehicle.mass)} vehicle drove at ${pair('speed', sc.speed)} toward the ${data.name} barrier ` +
+      `(${cables} cable${cables === 1 ? '' : 's'} on ${posts} posts) but had not reached it when the simulation ended at t = ${seconds(s.t_end)}: nothing was loaded and nothing failed.`
+    );
   parts.push(
     `A ${pair('mass', data.vehicle.mass)} vehicle struck the ${data.name} barrier (${cables} cable${cables === 1 ? '' : 's'} on ${posts} posts) ` +
       `${Math.abs(angle - 90) < 0.5 ? 'head-on' : `at ${fmt(angle, 0)}° to the barrier line`} at ${pair('speed', sc.speed)}, ` +
@@ -65,7 +70,8 @@ export function cards(data) {
   const posts = data.barrier.posts.length;
   const cables = data.barrier.cables.length;
   const [penSI, penUS] = both.length(s.max_penetration);
-  const [exitSI, exitUS] = s.exit_speed !== null ? both.speed(s.exit_speed) : ['–', s.outcome === 'stopped' ? 'the vehicle stopped' : 'the vehicle did not get through'];
+  const [exitSI, exitUS] = s.exit_speed !== null ? both.speed(s.exit_speed) : ['–', s.outcome === 'stopped' ? 'the vehicle stopped' : 'not through'];
+  const exitNote = s.exit_speed !== null ? 'speed as it got through' : s.outcome === 'stopped' ? 'it did not get through' : 'by the end of the run';
   const [keSI, keUS] = both.energy(s.initial_kinetic_energy);
   return el(
     'div',
@@ -73,9 +79,9 @@ export function cards(data) {
     card('Outcome', o.word, s.outcome === 'breakthrough' ? `at t = ${seconds(s.t_end)}` : s.outcome === 'stopped' ? `at t = ${seconds(s.stop_time)}` : `t = ${seconds(s.t_end)}`, `run of ${seconds(s.t_end)} simulated`, o.cls),
     card('Max 50-ms deceleration', `${fmt(s.max_decel_50ms_g, 2)} g`, `at t = ${seconds(s.t_max_decel)}`, 'average over the worst 50 ms'),
     card('Penetration', penSI, penUS, 'front face past the cable line'),
-    card('Exit speed', exitSI, exitUS, s.exit_speed !== null ? 'speed as it got through' : 'while the run lasted'),
+    card('Exit speed', exitSI, exitUS, exitNote),
     card('Posts failed', `${s.posts_failed_left + s.posts_failed_right} of ${posts}`, `${s.posts_failed_left} left, ${s.posts_failed_right} right`, `cables broken: ${s.cables_broken} of ${cables}`),
-    card('Energy balance', `${fmt(100 * s.energy_balance_error, 2)} %`, `of ${keSI} (${keUS})`, 'ledger error, largest over the run', Math.abs(s.energy_balance_error) > 0.05 ? 'warn' : ''),
+    card('Energy balance', `${(100 * s.energy_balance_error).toFixed(2)} %`, `of ${keSI} (${keUS})`, 'ledger error, largest over the run', Math.abs(s.energy_balance_error) > 0.05 ? 'warn' : ''),
   );
 }
 
@@ -99,7 +105,7 @@ export function summaryTable(data) {
     ['Cables broken', `${s.cables_broken} of ${data.barrier.cables.length}`, null],
     ['Exit speed', ...(s.exit_speed === null ? ['none', null] : both.speed(s.exit_speed))],
     ['Stop time', s.stop_time === null ? 'did not stop' : seconds(s.stop_time), null],
-    ['Energy balance error', `${fmt(100 * s.energy_balance_error, 3)} %`, 'of the initial kinetic energy'],
+    ['Energy balance error', `${(100 * s.energy_balance_error).toFixed(3)} %`, 'of the initial kinetic energy'],
     ['Solver warnings', `${s.solver_warnings} steps`, s.solver_warnings ? `steps whose barrier equilibrium stopped short of its tolerance (largest relative residual ${fmt(s.max_solver_residual, 2)})` : 'every step reached equilibrium'],
     ['Time step / recording interval', `${fmt(sc.dt * 1e3, 2)} ms / ${fmt(sc.output_interval * 1e3, 2)} ms`, null],
   ];

