@@ -236,6 +236,7 @@ int main(int argc, char **argv) {
     }
     if (strcmp(cmd, "schema") == 0) return cs_schema_markdown(stdout) == 0 ? 0 : EXIT_RUN;
     if (strcmp(cmd, "sweep") == 0) return cs_sweep_command(argc, argv);
+    if (strcmp(cmd, "check") == 0 && cs_sweep_check_wanted(argc, argv)) return cs_sweep_check_command(argc, argv);
     if (strcmp(cmd, "rate") == 0) return cs_command_rate(argc, argv);
     if (strcmp(cmd, "validate") == 0) return cs_command_validate(argc, argv);
     int is_run = strcmp(cmd, "run") == 0, is_check = strcmp(cmd, "check") == 0;

@@ -240,6 +240,44 @@ static int thread_count(int asked, int local_ranks) {
 #endif
 }
 
+/* The file argument of `cablesim check FILE [--set PATH=VALUE]...`. */
+static const char *check_file(int argc, char **argv) {
+    for (int i = 2; i < argc; i++) {
+        if (argv[i][0] != '-') return argv[i];
+        if (strchr(argv[i], '=') == NULL && i + 1 < argc) i++; /* an option's value */
+    }
+    return NULL;
+}
+
+int cs_sweep_check_wanted(int argc, char **argv) {
+    const char *f = check_file(argc, argv);
+    return f && cs_sweep_is_spec(f);
+}
+
+int cs_sweep_check_command(int argc, char **argv) {
+    sweep_opts o;
+    memset(&o, 0, sizeof o);
+    int rc = parse_opts(argc, argv, &o, 0);
+    if (rc != 0) return rc < 0 ? 0 : rc;
+    cs_sweep_spec *spec = read_spec(&o, 0);
+    if (!spec) return EXIT_RUN;
+    long n = 0;
+    double *x = spec->error_count ? NULL : cs_sweep_samples(spec, &n);
+    if (!spec->error_count && !x) cs_sweep_error(spec, 0, 0, "out of memory for %ld runs", spec->runs);
+    if (!spec->error_count) cs_sweep_check(spec, x);
+    if (spec->error_count) {
+        print_errors(spec);
+        rc = EXIT_BAD;
+    } else {
+        static const char *const methods[] = {"grid", "Monte Carlo", "Latin hypercube"};
+        printf("%s: a valid sweep spec: %s of %ld runs over %d value%s of %s\n", spec->file,
+               methods[spec->method], n, spec->var_count, spec->var_count == 1 ? "" : "s", spec->model);
+    }
+    free(x);
+    cs_sweep_spec_free(spec);
+    return rc;
+}
+
 int cs_sweep_command(int argc, char **argv) {
     int rank = 0, size = 1, local_ranks = 1;
 #ifdef CS_MPI
@@ -308,18 +346,26 @@ int cs_sweep_command(int argc, char **argv) {
     double start = now();
     int k = spec->var_count;
 #ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+#pragma omp parallel num_threads(threads)
 #endif
-    for (long m = 0; m < local_n; m++) {
-        long i = rank + m * size;
-        cs_sweep_run(spec, &x[i * k], &mine[m]);
+    {
+        char why[256];
+        cs_loader *loader = cs_loader_create(NULL, why, sizeof why); /* one per thread (NULL: one per run) */
+#ifdef _OPENMP
+#pragma omp for schedule(dynamic, 1)
+#endif
+        for (long m = 0; m < local_n; m++) {
+            long i = rank + m * size;
+            cs_sweep_run(spec, &x[i * k], loader, &mine[m]);
 #ifdef _OPENMP
 #pragma omp critical(cs_sweep_progress)
 #endif
-        {
-            p.done++;
-            progress_show(&p, 0);
+            {
+                p.done++;
+                progress_show(&p, 0);
+            }
         }
+        cs_loader_free(loader);
     }
     progress_show(&p, 1);
 #ifdef CS_MPI

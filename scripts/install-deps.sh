@@ -5,6 +5,8 @@ set -euo pipefail
 # llvm-symbolizer, so their reports name functions and lines.
 pkgs=(build-essential cmake pkg-config clang libclang-rt-14-dev llvm-14 libcyaml-dev libudunits2-dev libcmocka-dev
   libcairo2-dev)
+# libopenmpi-dev + openmpi-bin: cablesim-mpi and mpirun (sweeps shared among processes; tests/sweep_mpi.sh).
+pkgs+=(libopenmpi-dev openmpi-bin)
 # report.html (report/): node and npm build its page (Debian's only where none is installed: a newer one
 # may be); Debian's chromium and chromium-driver run its browser test.
 pkgs+=(chromium chromium-driver)

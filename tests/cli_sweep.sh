@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # cablesim sweep end to end: the same runs.csv (byte for byte) and summaries on 1 and 2 threads, a grid,
 # a Monte Carlo, a Latin hypercube, the outputs' shape, plain progress lines when not on a terminal,
-# and every spec in tests/sweep/bad/ refused with status 2 and exactly the problems its "# expect:
+# `cablesim check` of a spec, and every spec in tests/sweep/bad/ refused with status 2 and exactly the problems its "# expect:
 # LINE:COL: text" lines name. The runs are 10 ms long so the suite stays fast.
 set -u
 cs=${1:?usage: bash tests/cli_sweep.sh path/to/cablesim}
@@ -47,6 +47,11 @@ check "grid: a text input has no Spearman" 'grep -q "\"vehicle\":null" "$tmp/gri
 "$cs" sweep tests/sweep/mc.yaml -o "$tmp/mc-seed" --runs 3 --seed 99 --t-end "5 ms" --quiet >/dev/null 2>&1
 check "--runs --seed --t-end" '[ "$(wc -l <"$tmp/mc-seed/runs.csv")" -eq 4 ] && ! cmp -s <(head -2 "$tmp/mc-seed/runs.csv") <(head -2 "$tmp/mc-1/runs.csv") && grep -q "scenario.t_end=5 ms" "$tmp/mc-seed/summary.json"'
 check "--runs on a grid is refused" '! "$cs" sweep tests/sweep/grid.yaml -o "$tmp/x" --runs 3 >/dev/null 2>&1'
+
+# `cablesim check` knows a spec from a model, and checks the spec's model with its values
+check "check a spec" '"$cs" check tests/sweep/lhs.yaml | grep -q "tests/sweep/lhs.yaml: a valid sweep spec: Latin hypercube of 4 runs over 3 values"'
+check "check the example spec" '"$cs" check examples/aps3-uncertain.yaml >/dev/null'
+check "check a bad spec" '"$cs" check tests/sweep/bad/bad_level.yaml 2>&1 | grep -q "^tests/sweep/bad/bad_level.yaml:6:42: "'
 
 files=0
 for f in tests/sweep/bad/*.yaml; do

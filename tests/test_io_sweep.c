@@ -34,6 +34,10 @@ static void test_wilson(void **state) {
     /* 20 of 20: [1 - 0.1611252, 1] */
     w = cs_wilson(20, 20, Z95);
     assert_true(fabs(w.lo - 0.8388748419471806) < 1e-12 && w.hi == 1.0);
+    w = cs_wilson(0, 64, Z95); /* 2 z^2/4n^2 ... = 0.0566241; the ends exact, no 3e-18 of rounding */
+    assert_true(w.lo == 0.0 && fabs(w.hi - 0.05662405979280534) < 1e-12);
+    w = cs_wilson(64, 64, Z95);
+    assert_true(w.hi == 1.0 && fabs(w.lo - 0.9433759402071946) < 1e-12);
     w = cs_wilson(0, 0, Z95);
     assert_true(isnan(w.p));
 }

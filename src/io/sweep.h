@@ -12,6 +12,7 @@
 #include <stdio.h>
 
 #include "cablesim/cablesim.h"
+#include "loader.h"
 #include "units.h"
 
 typedef enum cs_sweep_method {
@@ -72,6 +73,8 @@ typedef struct cs_sweep_spec {
  * the values' units. */
 cs_sweep_spec *cs_sweep_spec_read(const char *path, cs_units *units);
 void cs_sweep_spec_free(cs_sweep_spec *spec);
+/* Is the file a sweep spec (a YAML mapping with a top-level `vary`) rather than a model? */
+int cs_sweep_is_spec(const char *path);
 /* Record an error at a place of the spec (line 0: no place). */
 void cs_sweep_error(cs_sweep_spec *spec, int line, int col, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
@@ -115,9 +118,9 @@ typedef struct cs_sweep_result {
     char error[256]; /* status != OK: why */
 } cs_sweep_result;
 
-/* One run with inputs xrow (var_count values): a loader of its own, the engine, the rating. Safe to
- * call from several threads at once. */
-void cs_sweep_run(const cs_sweep_spec *spec, const double *xrow, cs_sweep_result *r);
+/* One run with inputs xrow (var_count values): load (on loader, reset first; NULL: a loader of its
+ * own), build, run, rate. Safe to call from several threads at once, each with its own loader. */
+void cs_sweep_run(const cs_sweep_spec *spec, const double *xrow, cs_loader *loader, cs_sweep_result *r);
 /* Check the model with the inputs of run 0 (x: its row), and each grid level with the rest of run 0;
  * the loader's problems with a value go into the spec's errors at the place of that value. 0 if none. */
 int cs_sweep_check(cs_sweep_spec *spec, const double *x);

@@ -1,5 +1,6 @@
-/* One run of a sweep, and the check of a spec against its model before any run. Each run has a loader
- * of its own (the loader serialises its calls into udunits2), so runs may go in parallel threads. */
+/* One run of a sweep, and the check of a spec against its model before any run. Each thread has a
+ * loader of its own, reset between runs (the loader serialises its calls into udunits2), so runs may go
+ * in parallel threads. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -24,11 +25,12 @@ static int load_run(cs_loader *l, const cs_sweep_spec *s, const double *xrow, in
     return cs_loader_load(l, s->model, in);
 }
 
-void cs_sweep_run(const cs_sweep_spec *s, const double *xrow, cs_sweep_result *r) {
+void cs_sweep_run(const cs_sweep_spec *s, const double *xrow, cs_loader *loader, cs_sweep_result *r) {
     memset(r, 0, sizeof *r);
     snprintf(r->rating, sizeof r->rating, "none");
     char why[256];
-    cs_loader *l = cs_loader_create(NULL, why, sizeof why);
+    cs_loader *l = loader ? loader : cs_loader_create(NULL, why, sizeof why);
+    if (loader) cs_loader_reset(loader);
     if (!l) {
         r->status = CS_RUN_BAD_MODEL;
         snprintf(r->error, sizeof r->error, "%s", why);
@@ -40,12 +42,12 @@ void cs_sweep_run(const cs_sweep_spec *s, const double *xrow, cs_sweep_result *r
         r->status = CS_RUN_BAD_MODEL;
         snprintf(r->error, sizeof r->error, "%s",
                  cs_loader_error_count(l) ? cs_loader_error(l, 0) : "bad model");
-        cs_loader_free(l);
+        if (!loader) cs_loader_free(l);
         return;
     }
     cs_vehicle_def vehicle = in.vehicle;
     double speed = in.scenario.speed;
-    cs_loader_free(l);
+    if (!loader) cs_loader_free(l);
     cs_error err = {0};
     cs_state *state = cs_state_create(m, &err);
     if (!state) {

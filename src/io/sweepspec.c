@@ -207,6 +207,48 @@ static ynode *read_tree(cs_sweep_spec *s, const char *path) {
     return root;
 }
 
+int cs_sweep_is_spec(const char *path) {
+    FILE *f = fopen(path, "rb");
+    if (!f) return 0;
+    yaml_parser_t parser;
+    yaml_parser_initialize(&parser);
+    yaml_parser_set_input_file(&parser, f);
+    int depth = 0, want_key = 0, found = 0, done = 0;
+    while (!done && !found) {
+        yaml_event_t ev;
+        if (!yaml_parser_parse(&parser, &ev)) break;
+        switch (ev.type) {
+        case YAML_STREAM_END_EVENT:
+            done = 1;
+            break;
+        case YAML_MAPPING_START_EVENT:
+        case YAML_SEQUENCE_START_EVENT:
+            if (depth == 0) want_key = 1; /* the top mapping: its first node is a key */
+            done = depth == 0 && ev.type == YAML_SEQUENCE_START_EVENT;
+            depth++;
+            break;
+        case YAML_MAPPING_END_EVENT:
+        case YAML_SEQUENCE_END_EVENT:
+            depth--;
+            if (depth == 1) want_key = 1;
+            break;
+        case YAML_SCALAR_EVENT:
+        case YAML_ALIAS_EVENT:
+            if (depth == 1 && want_key)
+                found =
+                    ev.type == YAML_SCALAR_EVENT && strcmp((const char *)ev.data.scalar.value, "vary") == 0;
+            if (depth == 1) want_key = !want_key;
+            break;
+        default:
+            break;
+        }
+        yaml_event_delete(&ev);
+    }
+    yaml_parser_delete(&parser);
+    fclose(f);
+    return found;
+}
+
 /* ---- the libcyaml schema of this file ---- */
 
 static const char *const top_keys[] = {"model", "method", "runs", "seed", "vehicle_class", "set", "vary"};

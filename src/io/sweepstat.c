@@ -176,8 +176,8 @@ cs_interval cs_wilson(long k, long n, double z) {
     double centre = (p + z2 / (2 * nn)) / (1 + z2 / nn);
     double half = z / (1 + z2 / nn) * sqrt(p * (1 - p) / nn + z2 / (4 * nn * nn));
     r.p = p;
-    r.lo = fmax(0.0, centre - half);
-    r.hi = fmin(1.0, centre + half);
+    r.lo = k == 0 ? 0.0 : fmax(0.0, centre - half); /* exact at the ends (no rounding residue) */
+    r.hi = k == n ? 1.0 : fmin(1.0, centre + half);
     return r;
 }
 

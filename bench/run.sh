@@ -1,0 +1,122 @@
+#!/usr/bin/env bash
+# The benchmarks of docs/performance.md (make bench; not part of make test):
+#   1. one APS3 run: engine time (cs_run alone, best of BENCH_REPEAT), steps per second, peak memory;
+#   2. a Monte Carlo (examples/aps3-uncertain.yaml, BENCH_N runs) on 1 and 2 threads and on 2 MPI ranks;
+#   3. cost against barrier length: generated models of 10 to 1,000 posts (bench/gen_posts.sh), each run
+#      to BENCH_POSTS_T_END;
+#   4. peak memory of the command (/usr/bin/time -v) for a run and for the sweep.
+# Settings (environment): BUILD (build), BENCH_N (16), BENCH_T_END (empty: the model's own, 3 s, or until
+# the truck stops or breaks through), BENCH_POSTS ("10 30 100 300 1000"), BENCH_POSTS_T_END (20 ms),
+# BENCH_REPEAT (3), BENCH_POSTS_REPEAT (1). Writes results/bench/bench.md and prints it.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD=${BUILD:-build}
+N=${BENCH_N:-16}
+T_END=${BENCH_T_END:-}
+POSTS=${BENCH_POSTS:-10 30 100 300 1000}
+POSTS_T_END=${BENCH_POSTS_T_END:-20 ms}
+POSTS_REPEAT=${BENCH_POSTS_REPEAT:-1}
+REPEAT=${BENCH_REPEAT:-3}
+out=results/bench
+mkdir -p "$out"
+md="$out/bench.md"
+cs="$BUILD/cablesim"
+csmpi="$BUILD/cablesim-mpi"
+engine="$BUILD/bench_engine"
+for b in "$cs" "$engine"; do
+    [ -x "$b" ] || { echo "bench: $b is missing (make build first)"; exit 1; }
+done
+have_time=0
+[ -x /usr/bin/time ] && have_time=1
+t_end_args=()
+[ -n "$T_END" ] && t_end_args=(--t-end "$T_END")
+
+field() { grep -o "$1=[^ ]*" <<<"$2" | head -1 | cut -d= -f2; }
+peak_kb() { # peak resident memory of a command, from /usr/bin/time -v
+    if [ "$have_time" -eq 1 ]; then
+        /usr/bin/time -v "$@" 2>&1 >/dev/null | awk -F: '/Maximum resident set size/ { gsub(/ /, "", $2); print $2 }'
+    else
+        echo "n/a"
+    fi
+}
+
+{
+    echo "# cablesim benchmarks"
+    echo
+    echo "$(date -u +%Y-%m-%d), load average before: $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')),"
+    echo "build \`$BUILD\` ($(grep -m1 CMAKE_BUILD_TYPE "$BUILD/CMakeCache.txt" | cut -d= -f2)), $(gcc --version | head -1)."
+    echo
+} >"$md"
+
+echo "bench: one APS3 run (best of $REPEAT)..."
+one=$("$engine" examples/aps3.yaml --repeat "$REPEAT" "${t_end_args[@]}")
+rss_run=$(peak_kb "$cs" run examples/aps3.yaml -o "$out/aps3" "${t_end_args[@]}")
+{
+    echo "## One APS3 run"
+    echo
+    echo "\`$engine examples/aps3.yaml --repeat $REPEAT ${t_end_args[*]}\`"
+    echo
+    echo "| engine time (best) | median | CPU time (best) | simulated | steps | steps/s | per step | outcome | load | peak memory (engine / \`cablesim run\`) |"
+    echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+    echo "| $(field engine_ms_best "$one") ms | $(field engine_ms_median "$one") ms | $(field cpu_ms_best "$one") ms | $(field t_reached_s "$one") s | $(field steps "$one") | $(field steps_per_s "$one") | $(field us_per_step "$one") us | $(field outcome "$one") | $(field load_ms "$one") ms | $(field peak_rss_kb "$one") kB / $rss_run kB |"
+    echo
+} >>"$md"
+
+echo "bench: Monte Carlo of $N runs..."
+mc_line() { # label, command...
+    local label=$1
+    shift
+    local timed=()
+    [ "$have_time" -eq 1 ] && timed=(/usr/bin/time -f "%U %S %M" -o "$out/time.txt")
+    echo "n/a n/a n/a" >"$out/time.txt"
+    "${timed[@]}" "$@" >"$out/mc.log" 2>/dev/null || { echo "| $label | failed | | | | |"; return; }
+    local log wall rate u s m
+    log=$(grep '^sweep: ' "$out/mc.log")
+    wall=$(sed -E 's/.* in ([0-9.]+) s .*/\1/' <<<"$log")
+    rate=$(sed -E 's/.*\(([0-9.]+) runs\/s\).*/\1/' <<<"$log")
+    read -r u s m <"$out/time.txt"
+    echo "| $label | $wall s | $rate | $(awk -v u="$u" -v s="$s" 'BEGIN { printf "%.1f", u + s }') s | $m kB | $(awk -v w="$wall" -v n="$N" 'BEGIN { printf "%.0f", w / n * 10000 }') s |"
+}
+spec=examples/aps3-uncertain.yaml
+sweep_args=(sweep "$spec" --runs "$N" --quiet "${t_end_args[@]}")
+{
+    echo "## Monte Carlo: $N runs of examples/aps3-uncertain.yaml${T_END:+ to $T_END}"
+    echo
+    echo "| how | wall time | runs/s | CPU time (user + sys) | peak memory | 10,000 runs at this rate |"
+    echo "| --- | --- | --- | --- | --- | --- |"
+    mc_line "1 thread (\`$cs ${sweep_args[*]} -o $out/mc1 --threads 1\`)" "$cs" "${sweep_args[@]}" -o "$out/mc1" --threads 1
+    mc_line "2 threads (\`... --threads 2\`)" "$cs" "${sweep_args[@]}" -o "$out/mc2" --threads 2
+    if [ -x "$csmpi" ] && command -v mpirun >/dev/null; then
+        flags=(--oversubscribe)
+        [ "$(id -u)" -eq 0 ] && flags+=(--allow-run-as-root)
+        mc_line "2 MPI ranks x 1 thread (\`mpirun -n 2 $csmpi ... --threads 1\`)" mpirun "${flags[@]}" -n 2 "$csmpi" \
+            "${sweep_args[@]}" -o "$out/mpi2" --threads 1
+    else
+        echo "| 2 MPI ranks | not run: no cablesim-mpi or mpirun | | | | |"
+    fi
+    same="identical"
+    for d in mc2 mpi2; do
+        [ -f "$out/$d/runs.csv" ] && ! cmp -s "$out/mc1/runs.csv" "$out/$d/runs.csv" && same="DIFFERENT ($d)"
+    done
+    echo
+    echo "runs.csv of the three: $same."
+    echo
+} >>"$md"
+
+echo "bench: cost against barrier length..."
+{
+    echo "## Cost against barrier length (to $POSTS_T_END)"
+    echo
+    echo "Generated models (\`bash bench/gen_posts.sh N\`: APS3's line posts at 8 ft, truck at the middle),"
+    echo "\`$engine posts-N.yaml --repeat $POSTS_REPEAT --t-end \"$POSTS_T_END\"\`."
+    echo
+    echo "| posts | engine time (best) | CPU time (best) | steps | per step | per post and step | outcome | load | peak memory |"
+    echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+    for n in $POSTS; do
+        bash bench/gen_posts.sh "$n" >"$out/posts-$n.yaml"
+        r=$("$engine" "$out/posts-$n.yaml" --repeat "$POSTS_REPEAT" --t-end "$POSTS_T_END")
+        echo "| $n | $(field engine_ms_best "$r") ms | $(field cpu_ms_best "$r") ms | $(field steps "$r") | $(field us_per_step "$r") us | $(field ns_per_post_step "$r") ns | $(field outcome "$r") | $(field load_ms "$r") ms | $(field peak_rss_kb "$r") kB |"
+    done
+    echo
+} >>"$md"
+cat "$md"
