@@ -147,7 +147,11 @@ static void check_shape(cs_loader *l, int file, skips *sk) {
         shape s;
         walk(e->path, &s);
         char want[200];
-        if (s.bad_key[0]) {
+        if (e->odd_key) { /* its path would not name it: "speed.x" reads as speed, then x */
+            cs_err_at(l, file, e->key_line, e->key_col,
+                      "%s: a key must be a plain word (expected 1 to 63 characters, no '.', '[' or ']')",
+                      e->path);
+        } else if (s.bad_key[0]) {
             const char *dot = strrchr(e->path, '.');
             size_t plen = dot ? (size_t)(dot - e->path) : 0;
             shape parent;

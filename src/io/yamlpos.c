@@ -22,9 +22,15 @@ typedef struct frame {
 static int add(cs_yposmap *map, char *path, cs_ykind kind, yaml_mark_t at, yaml_mark_t key_at) {
     if (cs_grow(&map->items, &map->capacity, map->count, sizeof *map->items) != 0) return -1;
     int duplicate = cs_yposmap_find(map, path) != NULL;
-    map->items[map->count++] = (cs_ypos){
-        path,      kind, (int)at.line + 1, (int)at.column + 1, (int)key_at.line + 1, (int)key_at.column + 1,
-        duplicate, 0};
+    map->items[map->count++] = (cs_ypos){path,
+                                         kind,
+                                         (int)at.line + 1,
+                                         (int)at.column + 1,
+                                         (int)key_at.line + 1,
+                                         (int)key_at.column + 1,
+                                         duplicate,
+                                         0,
+                                         0};
     return 0;
 }
 
@@ -67,7 +73,11 @@ static const char *node(cs_yposmap *map, frame *stack, int depth, const yaml_eve
         free(path);
         return NULL;
     }
-    if (parent && parent->kind == CS_Y_MAP) parent->want_key = 1;
+    if (parent && parent->kind == CS_Y_MAP) {
+        const char *k = parent->key;
+        map->items[map->count - 1].odd_key = !k[0] || strlen(k) >= 64 || strpbrk(k, ".[]") != NULL;
+        parent->want_key = 1;
+    }
     if (parent && parent->kind == CS_Y_SEQ) parent->index++;
     return path;
 }

@@ -14,6 +14,7 @@ typedef struct cs_ypos {
     int line, col;         /* of the value, 1-based */
     int key_line, key_col; /* of its key in the parent mapping (= line, col for sequence items) */
     int duplicate;         /* the key occurs earlier in the same mapping */
+    int odd_key;           /* its key is empty, 64 characters or longer, or holds '.', '[' or ']' */
     int bad;               /* its key or shape was reported wrong */
 } cs_ypos;
 
