@@ -237,8 +237,7 @@ static int post_rank(cs_post_status s) {
     return s == CS_POST_ELASTIC ? 0 : s == CS_POST_HINGED || s == CS_POST_SOIL ? 1 : 2;
 }
 
-/* Up to max post indices by distance from the impact point, nearest first. Returns how many. */
-static int nearest_posts(const cs_model_input *in, int *idx, int max) {
+int cs_nearest_posts(const cs_model_input *in, int *idx, int max) {
     int count = 0;
     double x0 = in->scenario.impact_x;
     for (int p = 0; p < in->barrier.post_count; p++) {
@@ -262,7 +261,7 @@ static void fig_posts(cs_plot *p, const cs_figure_data *d, double *t) {
     const cs_record *r = d->rec;
     const cs_post_def *posts = d->in->barrier.posts;
     int n = r->frame_count, np = r->post_count, idx[NEAR_POSTS];
-    int count = nearest_posts(d->in, idx, np < NEAR_POSTS ? np : NEAR_POSTS);
+    int count = cs_nearest_posts(d->in, idx, np < NEAR_POSTS ? np : NEAR_POSTS);
     double *moment = t + n, *tilt = t + (size_t)(1 + NEAR_POSTS) * (size_t)n;
     /* a curve ends where its post fails: a failed post carries nothing */
     for (int k = 0; k < count; k++)

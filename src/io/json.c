@@ -6,7 +6,7 @@
 #include "schema.h"
 #include "writers.h"
 
-static void jstr(FILE *f, const char *s) {
+void cs_json_string(FILE *f, const char *s) {
     fputc('"', f);
     for (; *s; s++) {
         if (*s == '"' || *s == '\\')
@@ -22,7 +22,7 @@ static void jstr(FILE *f, const char *s) {
 static void jkey(cs_wout *w, int *first, const char *key) {
     fprintf(w->f, "%s", *first ? "" : ",");
     *first = 0;
-    jstr(w->f, key);
+    cs_json_string(w->f, key);
     fputc(':', w->f);
 }
 
@@ -47,7 +47,7 @@ static void jfields(cs_wout *w, int *first, const cs_table *t, const void *def) 
             int v;
             memcpy(&v, at, sizeof v);
             if (fd->kind == CS_F_ENUM)
-                jstr(w->f, fd->words[v]);
+                cs_json_string(w->f, fd->words[v]);
             else
                 fprintf(w->f, "%d", v);
         } else {
@@ -84,9 +84,9 @@ static void inputs(cs_wout *w, const cs_model_input *in) {
     int top = 1, b = 1, v = 1;
     fprintf(f, "{");
     jkey(w, &top, "name");
-    jstr(f, in->name);
+    cs_json_string(f, in->name);
     jkey(w, &top, "file");
-    jstr(f, in->file);
+    cs_json_string(f, in->file);
     jkey(w, &top, "barrier");
     fprintf(f, "{");
     jkey(w, &b, "cables");
@@ -131,7 +131,7 @@ int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_state *sta
     int first = 1;
     fprintf(f, "{");
     jkey(&w, &first, "outcome");
-    jstr(f, cs_outcome_name(s.outcome));
+    cs_json_string(f, cs_outcome_name(s.outcome));
     jnum(&w, &first, "t_end_s", s.t);
     jnum(&w, &first, "max_50ms_decel_g", s.max_decel_50ms_g);
     jnum(&w, &first, "t_max_50ms_decel_s", s.t_max_decel);
@@ -179,9 +179,9 @@ int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_state *sta
         fprintf(f, "%s\n{", i ? "," : "");
         jnum(&w, &ef, "t_s", e->t);
         jkey(&w, &ef, "type");
-        jstr(f, cs_event_type_name(e->type));
+        cs_json_string(f, cs_event_type_name(e->type));
         jkey(&w, &ef, "element");
-        jstr(f, element);
+        cs_json_string(f, element);
         jnum(&w, &ef, "value", e->value);
         fprintf(f, "}");
     }

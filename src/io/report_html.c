@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "figures.h"
 #include "writers.h"
 
 static const double G0 = 9.80665;
@@ -182,28 +183,12 @@ static double s_energy(const cs_record *r, const cs_model_input *in, int f, int 
     return v;
 }
 
-/* Post indices nearest the impact point, nearest first, at most max. Returns how many. */
-static int nearest_posts(const cs_model_input *in, int *idx, int max) {
-    int count = 0;
-    double x0 = in->scenario.impact_x;
-    for (int p = 0; p < in->barrier.post_count; p++) {
-        double dp = fabs(in->barrier.posts[p].x - x0);
-        int j = count < max ? count++ : max;
-        while (j > 0 && fabs(in->barrier.posts[idx[j - 1]].x - x0) > dp) {
-            if (j < max) idx[j] = idx[j - 1];
-            j--;
-        }
-        if (j < max) idx[j] = p;
-    }
-    return count;
-}
-
 enum { NEAR_POSTS = 4 };
 
 static void write_series(jw *j, const cs_model_input *in, const cs_record *r, int stride) {
     FILE *f = j->w.f;
     int first = 1, idx[NEAR_POSTS];
-    int near = nearest_posts(in, idx, r->post_count < NEAR_POSTS ? r->post_count : NEAR_POSTS);
+    int near = cs_nearest_posts(in, idx, r->post_count < NEAR_POSTS ? r->post_count : NEAR_POSTS);
     fputc('{', f);
     kint(j, &first, "stride", stride);
     static const struct {

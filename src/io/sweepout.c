@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "sweep.h"
+#include "writers.h"
 
 #define Z95 1.959963984540054
 
@@ -353,19 +354,6 @@ int cs_sweep_write_summary_md(FILE *f, const cs_sweep_spec *spec, const double *
     return 0;
 }
 
-static void jstr(FILE *f, const char *s) {
-    fputc('"', f);
-    for (; *s; s++) {
-        if (*s == '"' || *s == '\\')
-            fprintf(f, "\\%c", *s);
-        else if ((unsigned char)*s < 0x20)
-            fprintf(f, "\\u%04x", *s);
-        else
-            fputc(*s, f);
-    }
-    fputc('"', f);
-}
-
 static void jnum(FILE *f, double v) {
     if (isfinite(v))
         fprintf(f, "%.10g", v);
@@ -382,32 +370,32 @@ int cs_sweep_write_summary_json(FILE *f, const cs_sweep_spec *spec, const double
     }
     int k = spec->var_count;
     fprintf(f, "{\"spec\":");
-    jstr(f, spec->file);
+    cs_json_string(f, spec->file);
     fprintf(f, ",\"model\":");
-    jstr(f, spec->model);
+    cs_json_string(f, spec->model);
     fprintf(
         f,
         ",\"method\":\"%s\",\"seed\":%llu,\"runs\":%ld,\"ok\":%ld,\"bad_model\":%ld,\"failed\":%ld,\"set\":[",
         method_names[spec->method], (unsigned long long)spec->seed, n, s.ok, s.bad_model, s.failed);
     for (int i = 0; i < spec->set_count; i++) {
         if (i) fputc(',', f);
-        jstr(f, spec->sets[i]);
+        cs_json_string(f, spec->sets[i]);
     }
     fprintf(f, "],\"inputs\":[");
     for (int j = 0; j < k; j++) {
         fprintf(f, "%s{\"path\":", j ? "," : "");
-        jstr(f, spec->vars[j].path);
+        cs_json_string(f, spec->vars[j].path);
         fprintf(f, ",\"unit\":");
-        jstr(f, spec->vars[j].unit);
+        cs_json_string(f, spec->vars[j].unit);
         fprintf(f, ",\"varied_as\":");
-        jstr(f, spec->vars[j].desc);
+        cs_json_string(f, spec->vars[j].desc);
         fputc('}', f);
     }
     fprintf(f, "],\"probabilities\":{");
     for (int t = 0; t < s.tally_count; t++) {
         cs_interval w = cs_wilson(s.t[t].count, s.ok, Z95);
         if (t) fputc(',', f);
-        jstr(f, s.t[t].name);
+        cs_json_string(f, s.t[t].name);
         fprintf(f, ":{\"count\":%ld,\"p\":", s.t[t].count);
         jnum(f, w.p);
         fprintf(f, ",\"ci95\":[");
@@ -433,7 +421,7 @@ int cs_sweep_write_summary_json(FILE *f, const cs_sweep_spec *spec, const double
         fprintf(f, "%s\"%s\":{", q ? "," : "", response_keys[q]);
         for (int j = 0; j < k; j++) {
             if (j) fputc(',', f);
-            jstr(f, spec->vars[j].path);
+            cs_json_string(f, spec->vars[j].path);
             fputc(':', f);
             jnum(f, s.rho[j * R_COUNT + q]);
         }

@@ -16,6 +16,8 @@ typedef struct cs_wout {
 
 /* Print v with %.10g; a non-finite v is not printed and marks the output bad, naming what. */
 void cs_w_num(cs_wout *w, double v, const char *what);
+/* Print s as a JSON string literal (quotes, backslashes and control characters escaped). */
+void cs_json_string(FILE *f, const char *s);
 
 /* Each returns 0, or -1 with why filled. */
 int cs_write_timeseries(FILE *f, const cs_record *rec, char *why, size_t why_size);
