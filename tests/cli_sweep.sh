@@ -3,15 +3,7 @@
 # a Monte Carlo, a Latin hypercube, the outputs' shape, plain progress lines when not on a terminal,
 # `cablesim check` of a spec, and every spec in tests/sweep/bad/ refused with status 2 and exactly the problems its "# expect:
 # LINE:COL: text" lines name. The runs are 10 ms long so the suite stays fast.
-set -u
-cs=${1:?usage: bash tests/cli_sweep.sh path/to/cablesim}
-pass=0
-fail=0
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-ok() { pass=$((pass + 1)); }
-bad() { echo "FAIL: $*"; fail=$((fail + 1)); }
-check() { if eval "$2"; then ok; else bad "$1"; fi; }
+source "$(dirname "$0")/lib.sh"
 
 check "sweep --help" '"$cs" sweep --help | grep -q "usage: cablesim sweep SPEC.yaml"'
 "$cs" sweep >/dev/null 2>&1
@@ -57,28 +49,8 @@ files=0
 for f in tests/sweep/bad/*.yaml; do
     files=$((files + 1))
     out=$("$cs" sweep "$f" -o "$tmp/bad" 2>&1)
-    rc=$?
-    good=1
-    if [ "$rc" -ne 2 ]; then echo "FAIL $f: exit status $rc (expected 2)"; good=0; fi
-    expected=0
-    while IFS= read -r line; do
-        spec=${line#"# expect: "}
-        pos=${spec%%: *}
-        text=${spec#*: }
-        expected=$((expected + 1))
-        if ! grep -F -- "$f:$pos: " <<<"$out" | grep -qF -- "$text"; then
-            echo "FAIL $f: no problem '$text' at $pos"
-            good=0
-        fi
-    done < <(grep '^# expect: ' "$f")
-    got=$(grep -c "^$f:[0-9]*:[0-9]*: " <<<"$out")
-    if [ "$expected" -eq 0 ] || [ "$got" -ne "$expected" ]; then
-        echo "FAIL $f: $got problems reported, $expected expected"
-        good=0
-    fi
-    if [ "$good" -eq 1 ]; then ok; else fail=$((fail + 1)); echo "$out"; fi
+    expect_problems "$f" "$out" $?
 done
 check "bad specs wrote nothing" '[ ! -e "$tmp/bad" ]'
 check "at least 15 bad specs" '[ "$files" -ge 15 ]'
-echo "$pass passed, $fail failed"
-[ "$fail" -eq 0 ]
+finish

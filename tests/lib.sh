@@ -12,3 +12,29 @@ finish() {
     echo "$pass passed, $fail failed"
     [ "$fail" -eq 0 ]
 }
+
+# expect_problems FILE OUTPUT STATUS: the command refused FILE (status 2) and reported exactly the
+# problems its "# expect: LINE:COL: text" lines name, at those places; counts a pass or a failure.
+expect_problems() {
+    local f=$1 out=$2 rc=$3 good=1 expected=0 line spec pos text got
+    if [ "$rc" -ne 2 ]; then
+        echo "FAIL $f: exit status $rc (expected 2)"
+        good=0
+    fi
+    while IFS= read -r line; do
+        spec=${line#"# expect: "}
+        pos=${spec%%: *}
+        text=${spec#*: }
+        expected=$((expected + 1))
+        if ! grep -F -- "$f:$pos: " <<<"$out" | grep -qF -- "$text"; then
+            echo "FAIL $f: no problem '$text' at $pos"
+            good=0
+        fi
+    done < <(grep '^# expect: ' "$f")
+    got=$(grep -c "^$f:[0-9]*:[0-9]*: " <<<"$out")
+    if [ "$expected" -eq 0 ] || [ "$got" -ne "$expected" ]; then
+        echo "FAIL $f: $got problems reported, $expected expected"
+        good=0
+    fi
+    if [ "$good" -eq 1 ]; then pass=$((pass + 1)); else fail=$((fail + 1)); echo "$out"; fi
+}
