@@ -1,0 +1,109 @@
+/* Stress: random but valid designs and attacks, from a fixed seed, over realistic and extreme ranges
+ * (rope sizes, post spacing, cables, vehicle sizes, speeds 5-60 mph, angles 15-90 degrees, impact
+ * anywhere along the barrier including at an anchor and past its end). Every run must end without an
+ * error, with finite response parameters and an energy ledger within 2% (issue 7). CS_STRESS_RUNS in
+ * the environment sets how many (default 24, short runs); the generator is the same for any count.
+ * Known: with CS_STRESS_RUNS=200, designs 26, 69, 74, 76, 78, 99, 142, 143 and 195 end 2.4-7% off in
+ * the ledger (no crash, no NaN): an end post next to a steep anchor span snapping over within one step,
+ * solved as one increment (issue 7's note). The default subset is designs 0-23. */
+#include "check.h"
+#include "fixture.h"
+
+#include <stdlib.h>
+
+/* SplitMix64: a counter-based generator, so design k is the same whatever the run count. */
+static unsigned long long mix(unsigned long long x) {
+    x += 0x9e3779b97f4a7c15ULL;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+    return x ^ (x >> 31);
+}
+
+static double uniform(unsigned long long *s, double lo, double hi) {
+    *s = mix(*s);
+    return lo + (hi - lo) * (double)(*s >> 11) / 9007199254740992.0;
+}
+
+typedef struct design {
+    fixture fx;
+    char what[160];
+} design;
+
+static void make_design(int k, design *d) {
+    unsigned long long s = 0x5eed0000ULL + (unsigned long long)k;
+    fixture *fx = &d->fx;
+    fixture_aps3(fx);
+    int cables = 1 + (int)uniform(&s, 0.0, 2.0); /* 1 or 2 */
+    double rope_in = uniform(&s, 0.5, 1.75), spacing = uniform(&s, 4.0, 12.0) * FT;
+    int posts = 4 + (int)uniform(&s, 0.0, 20.0);
+    for (int c = 0; c < 2; c++) {
+        fx->cables[c].rope = fixture_rope(rope_in);
+        fx->cables[c].height = (c == 0 ? uniform(&s, 0.6, 0.9) : uniform(&s, 0.95, 1.3));
+        fx->cables[c].pretension = uniform(&s, 0.5, 8.0) * KIP;
+    }
+    for (int p = 0; p < posts; p++) {
+        fx->posts[p] = fx->posts[0];
+        fx->posts[p].x = spacing * (p + 1);
+    }
+    double length = spacing * (posts + 1);
+    fx->barrier.cable_count = cables;
+    fx->barrier.post_count = posts;
+    fx->barrier.start_anchor.x = 0.0;
+    fx->barrier.end_anchor.x = length;
+    /* a vehicle between a small car and a heavy truck, scaled from the 15,000-lb truck */
+    double scale = uniform(&s, 0.35, 1.6);
+    cs_vehicle_def *v = &fx->vehicle;
+    v->mass *= scale * scale * scale;
+    for (int i = 0; i < 3; i++)
+        v->inertia[i] *= pow(scale, 5);
+    v->cg_height *= scale, v->cg_to_front *= scale, v->front_width *= scale, v->face_bottom *= scale;
+    v->face_top *= scale, v->wheelbase *= scale, v->cg_to_front_axle *= scale, v->track *= scale;
+    for (int i = 0; i < v->crush_point_count; i++)
+        v->crush_deformation[i] *= scale, v->crush_force[i] *= scale * scale;
+    fx->scenario.speed = uniform(&s, 5.0, 60.0) * MPH;
+    fx->scenario.angle = uniform(&s, 15.0, 90.0) * M_PI_2_VALUE / 90.0;
+    fx->scenario.impact_x = uniform(&s, -0.1, 1.1) * length; /* past either anchor too */
+    fx->scenario.t_end = 0.15;
+    snprintf(d->what, sizeof d->what,
+             "design %d: %d cables of %.2f in, %d posts at %.1f ft, %.0f lb at %.1f mph, %.0f deg, x = %.1f "
+             "of %.1f m",
+             k, cables, rope_in, posts, spacing / FT, v->mass / LB, fx->scenario.speed / MPH,
+             fx->scenario.angle * 90.0 / M_PI_2_VALUE, fx->scenario.impact_x, length);
+}
+
+static void random_designs_run_clean(void **state) {
+    (void)state;
+    const char *env = getenv("CS_STRESS_RUNS");
+    int runs = env ? atoi(env) : 24, failures = 0;
+    for (int k = 0; k < runs; k++) {
+        design d;
+        make_design(k, &d);
+        cs_error err;
+        cs_model *m = cs_model_create(&d.fx.barrier, &d.fx.vehicle, &d.fx.scenario, &err);
+        if (!m) {
+            printf("FAIL %s: refused: %s\n", d.what, err.message);
+            failures++;
+            continue;
+        }
+        cs_state *s = cs_state_create(m, &err);
+        cs_status st = cs_run(m, s, NULL, NULL, &err);
+        cs_summary sm;
+        cs_state_summary(s, &sm);
+        int finite = isfinite(sm.max_decel_50ms_g) && isfinite(sm.max_dynamic_penetration) &&
+                     isfinite(sm.max_barrier_deflection) && isfinite(sm.energy_balance_error);
+        if (st != CS_OK || !finite || fabs(sm.energy_balance_error) > 0.02) {
+            printf("FAIL %s: %s, ledger %.4f, %s\n", d.what, st == CS_OK ? "ran" : err.message,
+                   sm.energy_balance_error, finite ? "finite" : "NOT finite");
+            failures++;
+        }
+        cs_state_free(s);
+        cs_model_free(m);
+    }
+    printf("%d random designs, %d failures\n", runs, failures);
+    assert_int_equal(failures, 0);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {cmocka_unit_test(random_designs_run_clean)};
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
