@@ -137,8 +137,8 @@ static const cs_field footing_fields[] = {
     SOIL_FIELDS,
     FT("rotation_limit", CS_Q_ANGLE, CS_POS | CS_MAX90, rotation_limit,
        "footing rotation at which the post is lost"),
-    FT("pullout_capacity", CS_Q_FORCE, CS_REQ | CS_POS, pullout_capacity,
-       "axial pull along the post that pulls it out"),
+    FT("pullout_capacity", CS_Q_FORCE, CS_REQ | CS_POS | CS_NONE_OK, pullout_capacity,
+       "axial pull along the post that pulls it out (none: never)"),
 };
 const cs_table cs_table_footing = {"footing", "A post's footing in the soil (Eq. 21 lateral capacity).",
                                    CS_T_FOOTING, footing_fields, N(footing_fields)};
