@@ -191,14 +191,12 @@ static const bogie_test bogie_tests[10] = {
 
 /* The bogie: 2,237 lb, an 8-in impact head centred 24.875 in above grade, rigid. The post: W6x16
  * (library part), strong axis, driven in soil: Eq. 21 with the flange (4.03 in) as B. */
-static int run_bogie(cs_loader *l, const bogie_test *t, result *r) {
+/* The bogie struck the post at speed mph: one W6x16 (library part) with the given footing, no cable. */
+static cs_model *bogie_model(cs_loader *l, const cs_footing_def *footing, double mph, cs_error *err) {
     cs_post_def post = cs_default_post_def();
-    if (cs_loader_part(l, CS_PART_SECTION, "W6x16", &post.section) != 0) return -1;
+    if (cs_loader_part(l, CS_PART_SECTION, "W6x16", &post.section) != 0) return NULL;
     post.height = 1.0;
-    post.footing.diameter = 4.03 * IN;
-    post.footing.depth = t->embedment_mm * 1e-3;
-    post.footing.soil_pressure = 8000.0 * 47.88025898033584;
-    post.footing.pullout_capacity = HUGE_VAL;
+    post.footing = *footing;
     cs_barrier_def b = cs_default_barrier_def();
     b.cable_count = 0, b.post_count = 1, b.posts = &post;
     b.start_anchor.x = -10.0, b.end_anchor.x = 10.0;
@@ -211,10 +209,22 @@ static int run_bogie(cs_loader *l, const bogie_test *t, result *r) {
     v.wheelbase = 2.0, v.cg_to_front_axle = 1.0, v.track = 1.5;
     v.crush_point_count = 2, v.crush_deformation[1] = 0.001, v.crush_force[1] = 1e7; /* rigid head */
     cs_scenario_def sc = cs_default_scenario_def();
-    sc.speed = t->mph * MPH, sc.impact_x = 0.0, sc.t_end = 1.0;
+    sc.speed = mph * MPH, sc.impact_x = 0.0, sc.t_end = 1.0;
+    return cs_model_create(&b, &v, &sc, err);
+}
+
+static cs_footing_def soil_footing(double b, double d) {
+    cs_footing_def f = cs_default_footing_def();
+    f.diameter = b, f.depth = d, f.soil_pressure = 8000.0 * 47.88025898033584, f.pullout_capacity = HUGE_VAL;
+    return f;
+}
+
+/* The post driven in soil: Eq. 21 with the flange (4.03 in) as B. */
+static int run_bogie(cs_loader *l, const bogie_test *t, result *r) {
+    cs_footing_def f = soil_footing(4.03 * IN, t->embedment_mm * 1e-3);
     cs_error err = {0};
     memset(r, 0, sizeof *r);
-    cs_model *m = cs_model_create(&b, &v, &sc, &err);
+    cs_model *m = bogie_model(l, &f, t->mph, &err);
     if (!m) {
         fprintf(stderr, "cablesim validate: %s: %s\n", t->name, err.message);
         return -1;
@@ -260,6 +270,7 @@ static void write_bogie(FILE *md, FILE *csv) {
 }
 
 /* ---- verification ---- */
+/* Eq. 21 as the engine evaluates it (a one-post model's footing capacity) against the paper. */
 static void write_verification(FILE *md) {
     fprintf(
         md,
@@ -268,13 +279,18 @@ static void write_verification(FILE *md) {
         "|\n|---|---|---|---|\n");
     const double bft[] = {0.75, 1.5, 3, 3, 8}, dft[] = {3, 3, 5, 6, 4},
                  p[] = {3593, 7186, 30349, 39024, 58851};
-    for (int i = 0; i < 5; i++) {
-        cs_footing_def f = cs_default_footing_def();
-        f.diameter = bft[i] * FT, f.depth = dft[i] * FT, f.soil_pressure = 8000.0 * 47.88025898033584;
-        double s1 = fmin(f.soil_pressure, f.soil_pressure_cap), h = 3 * FT;
-        double pn = s1 * f.diameter * f.depth * f.depth / (f.coeff_depth * f.depth + f.coeff_height * h);
+    char why[256];
+    cs_loader *l = cs_loader_create(NULL, why, sizeof why);
+    for (int i = 0; l && i < 5; i++) {
+        cs_footing_def f = soil_footing(bft[i] * FT, dft[i] * FT);
+        cs_error err = {0};
+        cs_model *m = bogie_model(l, &f, 20.0, &err);
+        if (!m) continue;
+        double pn = cs_model_footing_capacity(m, 0, 3 * FT);
         fprintf(md, "| %.2f ft | %.0f ft | %.0f lb | %.0f lb |\n", bft[i], dft[i], p[i], pn / (LB * 9.80665));
+        cs_model_free(m);
     }
+    cs_loader_free(l);
     fprintf(
         md,
         "\nThe engine's other closed-form checks run in `make test` (tests/test_*.c): rope law points, "

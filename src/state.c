@@ -124,10 +124,6 @@ void cs_state_reset(const cs_model *model, cs_state *s) {
     s->summary.max_cable_tension = 0.0;
 }
 
-double cs_state_time(const cs_state *s) {
-    return s->t;
-}
-
 void cs_state_summary(const cs_state *s, cs_summary *out) {
     *out = s->summary;
 }

@@ -206,7 +206,6 @@ typedef struct cs_summary {
 } cs_summary;
 
 void cs_state_summary(const cs_state *state, cs_summary *out);
-double cs_state_time(const cs_state *state);
 const char *cs_outcome_name(cs_outcome outcome);
 
 /* FNV-1a hash of the state's numbers, for determinism tests. */

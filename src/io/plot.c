@@ -415,11 +415,6 @@ void cs_plot_hline(cs_plot *p, cs_axes *a, double y, const cs_style *s, const ch
     cs_axes_legend_add(a, CS_LEGEND_LINE, s, label);
 }
 
-void cs_plot_vline(cs_plot *p, cs_axes *a, double x, const cs_style *s, const char *label) {
-    cs_plot_segment(p, a, x, a->y0, x, a->y1, s);
-    cs_axes_legend_add(a, CS_LEGEND_LINE, s, label);
-}
-
 void cs_plot_polygon(cs_plot *p, cs_axes *a, const double *x, const double *y, int n, const cs_rgb *fill,
                      const cs_style *outline) {
     cairo_t *cr = p->cr;

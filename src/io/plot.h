@@ -110,7 +110,6 @@ void cs_plot_area(cs_plot *p, cs_axes *a, const double *x, const double *lo, con
 void cs_plot_stack(cs_plot *p, cs_axes *a, const double *x, const double *y, int count, int n,
                    const cs_rgb *fills, const char *const *labels);
 void cs_plot_hline(cs_plot *p, cs_axes *a, double y, const cs_style *s, const char *label);
-void cs_plot_vline(cs_plot *p, cs_axes *a, double x, const cs_style *s, const char *label);
 /* A closed polygon: fill (NULL: none) and outline (NULL: none). */
 void cs_plot_polygon(cs_plot *p, cs_axes *a, const double *x, const double *y, int n, const cs_rgb *fill,
                      const cs_style *outline);
