@@ -153,6 +153,11 @@ double cs_barrier_solve(const cs_model *model, cs_state *s) {
     const cs_scenario_def *sc = &model->scenario;
     if (!any_engaged(model, s)) crush_solve(model, s); /* an unloaded face springs back to its set */
     double worst = cs_barrier_newton(model, s);
+    for (int round = 0; worst < 0.0 && round < 6; round++) { /* Newton stalled far off: Gauss-Seidel */
+        gauss_seidel(model, s, 3);                           /* sweeps, then Newton again from there */
+        worst = cs_barrier_newton(model, s);
+    }
+    if (worst > sc->solver_tolerance) worst = gauss_seidel(model, s, 20); /* stalled near it: polish */
     if (worst < 0.0)
         worst = gauss_seidel(model, s, sc->solver_max_sweeps); /* Newton stalled, or band too wide */
     for (int c = 0; c < model->cable_count; c++)

@@ -38,7 +38,7 @@ typedef struct cs_post_model {
     double pullout_cap;    /* N */
     double rot_limit;      /* rad */
     double load_height;    /* mean cable height on the post, m */
-    double pivot;       /* depth of the point it turns about: 2/3 D if the soil yields, else 0, m */
+    double pivot;          /* depth of the point it turns about: 2/3 D if the soil yields, else 0, m */
     int clamped;
     cs_footing_def footing;
 } cs_post_model;
@@ -104,7 +104,11 @@ typedef struct cs_solver {
     int *node_index;    /* [cable_count * max_nodes] index of a node's material unknown, -1 if none */
     int *height_index;  /* [cable_count * 2] index of a face contact height unknown, -1 if none */
     int crush_index;
-    double *x, *r, *dx, *xt, *rt, *x0;
+    double *x, *r, *dx, *xt, *rt;
+    double *last;          /* [keys] each unknown's value at the start of the last step's solve */
+    long *last_step;       /* [keys] the step that value belongs to */
+    struct slot *slots_lu; /* the unknowns of the factored Jacobian */
+    int lu_valid, lu_n, lu_kl, lu_ku;
     double *band; /* banded Jacobian / LU factors */
     size_t band_capacity;
     int *pivot;
@@ -209,6 +213,7 @@ double cs_barrier_newton(const cs_model *model, cs_state *s);
 double cs_face_normal_force_now(const cs_model *model, cs_state *s);
 int cs_solver_init(const cs_model *model, cs_solver *w);
 void cs_solver_free(cs_solver *w);
+void cs_solver_reset(const cs_model *model, cs_solver *w);
 void cs_barrier_force(const cs_model *model, cs_state *s);
 void cs_barrier_commit(const cs_model *model, cs_state *s);
 double cs_barrier_stored_energy(const cs_model *model, const cs_state *s);

@@ -58,22 +58,36 @@ int cs_solver_init(const cs_model *model, cs_solver *w) {
     size_t nc = (size_t)model->cable_count, np = (size_t)model->post_count, nn = (size_t)model->max_nodes;
     size_t n = 2 * np + nc * nn + 2 * nc + 1, per_row = 3 * (12 + 8 * nc) + 1;
     w->slots = calloc(n, sizeof *w->slots);
+    w->slots_lu = calloc(n, sizeof *w->slots_lu);
+    if (!w->slots_lu) return -1;
     w->tilt_index = calloc(np ? np : 1, sizeof *w->tilt_index);
     w->node_index = calloc(nc ? nc * nn : 1, sizeof *w->node_index);
     w->height_index = calloc(nc ? 2 * nc : 1, sizeof *w->height_index);
-    w->x = calloc(6 * n, sizeof *w->x);
+    w->x = calloc(5 * n, sizeof *w->x);
     w->band_capacity = n * per_row;
     w->band = calloc(w->band_capacity, sizeof *w->band);
     w->pivot = calloc(n, sizeof *w->pivot);
+    size_t keys = 2 * np + nc * (np + 2) + 2 * nc + 1;
+    w->last = calloc(keys, sizeof *w->last);
+    w->last_step = calloc(keys, sizeof *w->last_step);
+    if (!w->last || !w->last_step) return -1;
     if (!w->slots || !w->tilt_index || !w->node_index || !w->height_index || !w->x || !w->band || !w->pivot)
         return -1;
-    w->r = w->x + n, w->dx = w->x + 2 * n, w->xt = w->x + 3 * n, w->rt = w->x + 4 * n, w->x0 = w->x + 5 * n;
+    w->r = w->x + n, w->dx = w->x + 2 * n, w->xt = w->x + 3 * n, w->rt = w->x + 4 * n;
     return 0;
 }
 
+/* Forget the history of the predictor (a new run). */
+void cs_solver_reset(const cs_model *model, cs_solver *w) {
+    size_t np = (size_t)model->post_count, nc = (size_t)model->cable_count;
+    for (size_t k = 0; k < 2 * np + nc * (np + 2) + 2 * nc + 1; k++)
+        w->last_step[k] = -2, w->last[k] = 0.0;
+    w->lu_valid = 0;
+}
+
 void cs_solver_free(cs_solver *w) {
-    free(w->slots), free(w->tilt_index), free(w->node_index), free(w->height_index), free(w->x),
-        free(w->band), free(w->pivot);
+    free(w->slots), free(w->slots_lu), free(w->tilt_index), free(w->node_index), free(w->height_index),
+        free(w->x), free(w->band), free(w->pivot), free(w->last), free(w->last_step);
     memset(w, 0, sizeof *w);
 }
 
@@ -403,6 +417,54 @@ static double max_step(const cs_model *model, const cs_state *s, const cs_solver
     return t;
 }
 
+/* Whether the unknowns are those of the last factored Jacobian (same kinds, elements and band). */
+static int same_unknowns(cs_solver *w, int n) {
+    int same = w->lu_valid && n == w->lu_n && w->kl == w->lu_kl && w->ku == w->lu_ku;
+    for (int k = 0; same && k < n; k++)
+        same = w->slots_lu[k].kind == w->slots[k].kind && w->slots_lu[k].a == w->slots[k].a &&
+               w->slots_lu[k].b == w->slots[k].b;
+    if (!same) {
+        for (int k = 0; k < n; k++)
+            w->slots_lu[k] = w->slots[k];
+        w->lu_n = n, w->lu_kl = w->kl, w->lu_ku = w->ku;
+    }
+    return same;
+}
+
+/* ---- predictor ----
+ * The barrier moves smoothly between failures, so each unknown starts from its committed value plus
+ * the increment it took over the last step (a linear extrapolation in time). Unknowns are keyed by
+ * element (post, cable node by its support, face contact, crush), so the memory survives nodes being
+ * inserted or removed. A re-solve inside the same step (after a failure) does not extrapolate. */
+static size_t slot_key(const cs_model *model, const cs_state *s, const slot *u) {
+    size_t np = (size_t)model->post_count, nc = (size_t)model->cable_count;
+    if (u->kind == U_TILT) return 2 * (size_t)u->a + (size_t)u->b;
+    if (u->kind == U_NODE) {
+        int id = s->cables[u->a].node[u->b];
+        size_t at = id >= 0 ? (size_t)id : np + (id == CS_NODE_LEFT ? 0 : 1);
+        return 2 * np + (size_t)u->a * (np + 2) + at;
+    }
+    if (u->kind == U_HEIGHT) return 2 * np + nc * (np + 2) + 2 * (size_t)u->a + (size_t)u->b;
+    return 2 * np + nc * (np + 2) + 2 * nc;
+}
+
+/* Returns 1 if x was moved (a first solve of this step with a history to extrapolate). */
+static int predict(const cs_model *model, cs_state *s, cs_solver *w, int n, double *x) {
+    int moved = 0;
+    for (int k = 0; k < n; k++) {
+        size_t key = slot_key(model, s, &w->slots[k]);
+        w->dx[k] = 0.0;
+        if (w->last_step[key] == s->step) continue; /* a re-solve: the pose has not changed */
+        if (w->last_step[key] == s->step - 1) w->dx[k] = x[k] - w->last[key], moved |= w->dx[k] != 0.0;
+        w->last[key] = x[k], w->last_step[key] = s->step;
+    }
+    if (!moved) return 0;
+    double t = max_step(model, s, w, n, w->dx);
+    for (int k = 0; k < n; k++)
+        x[k] += t * w->dx[k];
+    return 1;
+}
+
 double cs_barrier_newton(const cs_model *model, cs_state *s) {
     cs_solver *w = &s->solver;
     int n = assemble(model, s, w);
@@ -412,13 +474,32 @@ double cs_barrier_newton(const cs_model *model, cs_state *s) {
     if ((size_t)n * (size_t)w->band_width > w->band_capacity) return -1.0; /* caller falls back */
     double *x = w->x, *r = w->r, *dx = w->dx;
     gather(s, w, n, x);
-    memcpy(w->x0, x, (size_t)n * sizeof *x);
     scatter(model, s, w, n, x);
     residual(model, s, w, n, r);
     double rn = norm_inf(r, n), tol = model->scenario.solver_tolerance;
-    for (int it = 0; it < 30 && rn > tol; it++) {
-        jacobian(model, s, w, n, x, r);
-        if (band_factor(w, n) != 0) break;
+    memcpy(w->xt, x, (size_t)n * sizeof *x);
+    if (predict(model, s, w, n, w->xt) && rn > tol) { /* keep the extrapolation if it is closer */
+        scatter(model, s, w, n, w->xt);
+        residual(model, s, w, n, w->rt);
+        double rp = norm_inf(w->rt, n);
+        if (rp < rn) {
+            memcpy(x, w->xt, (size_t)n * sizeof *x);
+            memcpy(r, w->rt, (size_t)n * sizeof *r);
+            rn = rp;
+        } else {
+            scatter(model, s, w, n, x);
+        }
+    }
+    /* Chord Newton: the factored Jacobian is kept while it still cuts the residual at least by half
+     * (within the step and across steps with the same unknowns); otherwise it is rebuilt. */
+    int fresh = 0;
+    if (!same_unknowns(w, n)) w->lu_valid = 0;
+    for (int it = 0; it < 40 && rn > tol; it++) {
+        if (!w->lu_valid) {
+            jacobian(model, s, w, n, x, r);
+            if (band_factor(w, n) != 0) break;
+            w->lu_valid = 1, fresh = 1;
+        }
         for (int k = 0; k < n; k++)
             dx[k] = -r[k];
         band_solve(w, n, dx);
@@ -426,7 +507,7 @@ double cs_barrier_newton(const cs_model *model, cs_state *s) {
         for (int k = 0; k < n; k++)
             merit += r[k] * r[k];
         int accepted = 0;
-        for (int ls = 0; ls < 30; ls++, t *= 0.5) {
+        for (int ls = 0; ls < (fresh ? 30 : 1); ls++, t *= 0.5) {
             for (int k = 0; k < n; k++)
                 w->xt[k] = x[k] + t * dx[k];
             scatter(model, s, w, n, w->xt);
@@ -434,18 +515,25 @@ double cs_barrier_newton(const cs_model *model, cs_state *s) {
             trial_merit = 0.0;
             for (int k = 0; k < n; k++)
                 trial_merit += w->rt[k] * w->rt[k];
-            if (trial_merit < (1.0 - 1e-4 * t) * merit) {
+            if (trial_merit < (fresh ? (1.0 - 1e-4 * t) : 0.25) * merit) {
                 accepted = 1;
                 break;
             }
         }
-        if (!accepted) break;
+        if (!accepted) {
+            if (!fresh) { /* a stale Jacobian: rebuild it and try again from here */
+                w->lu_valid = 0;
+                continue;
+            }
+            break;
+        }
+        fresh = 0;
         memcpy(x, w->xt, (size_t)n * sizeof *x);
         memcpy(r, w->rt, (size_t)n * sizeof *r);
         rn = norm_inf(r, n);
     }
-    if (rn > CS_NEWTON_GIVE_UP) { /* stalled far from a solution: hand the step back untouched */
-        scatter(model, s, w, n, w->x0);
+    if (rn > CS_NEWTON_GIVE_UP) { /* stalled far from a solution: Gauss-Seidel goes on from here */
+        scatter(model, s, w, n, x);
         return -1.0;
     }
     scatter(model, s, w, n, x);
