@@ -29,14 +29,20 @@ typedef struct result {
     cs_summary sm;
     double cable_break[2]; /* s, < 0 if not broken */
     double absorbed;       /* J: initial kinetic energy minus what is left */
+    int post_failure;      /* the first post failure's event type, -1 if none */
+    double post_failure_t; /* its time, s */
     double seconds;        /* wall time of the run */
 } result;
 
 static void collect(const cs_state *s, result *r) {
     cs_state_summary(s, &r->sm);
     r->cable_break[0] = r->cable_break[1] = -1.0;
+    r->post_failure = -1;
     for (int i = 0; i < cs_state_event_count(s); i++) {
         const cs_event *e = cs_state_event(s, i);
+        if (r->post_failure < 0 && (e->type == CS_EVENT_POST_ROTATION_LIMIT ||
+                                    e->type == CS_EVENT_POST_PULLOUT || e->type == CS_EVENT_POST_SHEAR))
+            r->post_failure = (int)e->type, r->post_failure_t = e->t;
         if (e->type == CS_EVENT_CABLE_BREAK && e->element < 2 && r->cable_break[e->element] < 0.0)
             r->cable_break[e->element] = e->t;
     }
@@ -189,8 +195,6 @@ static const bogie_test bogie_tests[10] = {
     {"NPGB-7", 19.71, 940, 1326.3, 16595, 1},  {"NPGB-8", 20.69, 940, 1164.1, 18314, 1},
     {"NPGB-9", 20.76, 1016, 1221.5, 21507, 0}, {"NPGB-10", 21.50, 1016, 1185.6, 23440, 0}};
 
-/* The bogie: 2,237 lb, an 8-in impact head centred 24.875 in above grade, rigid. The post: W6x16
- * (library part), strong axis, driven in soil: Eq. 21 with the flange (4.03 in) as B. */
 /* The bogie struck the post at speed mph: one W6x16 (library part) with the given footing, no cable. */
 static cs_model *bogie_model(cs_loader *l, const cs_footing_def *footing, double mph, cs_error *err) {
     cs_post_def post = cs_default_post_def();
@@ -213,13 +217,16 @@ static cs_model *bogie_model(cs_loader *l, const cs_footing_def *footing, double
     return cs_model_create(&b, &v, &sc, err);
 }
 
+/* A footing of width b and depth d in the soil of docs/assumptions.md (S1 = 8000 psf, the default
+ * dynamic factor and skin friction); no pullout capacity given: it pulls out at its skin friction's. */
 static cs_footing_def soil_footing(double b, double d) {
     cs_footing_def f = cs_default_footing_def();
-    f.diameter = b, f.depth = d, f.soil_pressure = 8000.0 * 47.88025898033584, f.pullout_capacity = HUGE_VAL;
+    f.diameter = b, f.depth = d, f.soil_pressure = 8000.0 * 47.88025898033584;
     return f;
 }
 
-/* The post driven in soil: Eq. 21 with the flange (4.03 in) as B. */
+/* The post driven in soil: Eq. 21 with the flange (4.03 in) as B, the default dynamic factor, and no
+ * pullout capacity (its skin friction). */
 static int run_bogie(cs_loader *l, const bogie_test *t, result *r) {
     cs_footing_def f = soil_footing(4.03 * IN, t->embedment_mm * 1e-3);
     cs_error err = {0};
@@ -238,24 +245,38 @@ static void write_bogie(FILE *md, FILE *csv) {
     char why[256];
     cs_loader *l = cs_loader_create(NULL, why, sizeof why);
     if (!l) return;
+    const cs_footing_def soil = cs_default_footing_def();
     fprintf(
         md,
         "## Bogie tests of W6x16 posts in soil (paper, Table 2)\n\nThe 2,237-lb bogie strikes the post at "
-        "24.875 in; the post rotates in the soil by Eq. 21 (S1 = 8000 psf, B = the 4.03-in flange) or "
-        "hinges at Mp, and fails at 45 degrees. Energy absorbed = the bogie's loss of kinetic energy.\n\n");
+        "24.875 in; the post rotates in the soil at %.3g x Eq. 21 (S1 = 8000 psf, B = the 4.03-in flange; "
+        "%.3g the soil's dynamic factor) or hinges at Mp, and fails at 45 degrees, or pulls out earlier when "
+        "the pull along the leaning post (push x sin(tilt)) reaches its skin friction q pi B D^2 / 2 "
+        "(q = %.4g kPa/m). Energy absorbed = the bogie's loss of kinetic energy.\n\n"
+        "**Calibration.** The dynamic factor and q are the model's two values fitted to these tests, "
+        "on the odd ones (NPGB-1, 3, 5, 7, 9) only: the factor by least squares on log energy, q at the "
+        "middle of the window that separates their modes; the even tests (NPGB-2, 4, 6, 8, 10) are the "
+        "check. "
+        "The mode window is narrow (q within about +-2.5%%): the lateral capacity grows nearly as fast with "
+        "D as the skin friction (docs/theory.md).\n\n",
+        soil.dynamic_factor, soil.dynamic_factor, soil.skin_friction / 1e3);
     fprintf(md,
             "| test | speed | embedment | energy measured | energy cablesim | error | deflection measured | "
             "failure measured | failure cablesim |\n|---|---|---|---|---|---|---|---|---|\n");
-    int good = 0;
+    int good = 0, good_even = 0;
     for (int i = 0; i < 10; i++) {
         const bogie_test *t = &bogie_tests[i];
         result r;
         if (run_bogie(l, t, &r) != 0) continue;
         double e = r.absorbed / FTLB, err = rel_err(e, t->energy_ftlb);
-        const char *mode = "none (post stood)";
-        if (r.sm.posts_failed_left + r.sm.posts_failed_right > 0) mode = "rotation (45 deg)";
-        int mode_ok = !t->pullout && strcmp(mode, "rotation (45 deg)") == 0;
+        const char *mode = r.post_failure == CS_EVENT_POST_PULLOUT          ? "pulled out"
+                           : r.post_failure == CS_EVENT_POST_ROTATION_LIMIT ? "rotation (45 deg)"
+                           : r.post_failure == CS_EVENT_POST_SHEAR          ? "shear"
+                                                                            : "none (post stood)";
+        int mode_ok = t->pullout ? r.post_failure == CS_EVENT_POST_PULLOUT
+                                 : r.post_failure == CS_EVENT_POST_ROTATION_LIMIT;
         good += mode_ok && fabs(err) <= 20.0;
+        good_even += mode_ok && fabs(err) <= 20.0 && i % 2 == 1; /* NPGB-2, 4, ...: the check half */
         fprintf(md, "| %s | %.2f mph | %.0f mm | %.0f ft-lb | %.0f ft-lb | %+.0f%% | %.0f mm | %s | %s |\n",
                 t->name, t->mph, t->embedment_mm, t->energy_ftlb, e, err, t->deflection_mm,
                 t->pullout ? "pulled out" : "rotation", mode);
@@ -263,9 +284,11 @@ static void write_bogie(FILE *md, FILE *csv) {
     }
     fprintf(
         md,
-        "\nTarget (issue 4): right failure mode and energy within 20%% in at least 8 of 10: %d of 10, %s. "
-        "The post-in-soil model has no pullout and no soil inertia; see docs/theory.md.\n\n",
-        good, good >= 8 ? "met" : "NOT met");
+        "\nTarget (issue 4): right failure mode and energy within 20%% in at least 8 of 10: %d of 10, %s "
+        "(%d of the 5 check tests, %d of the 5 fit tests). The model's travel to failure is the 45-degree "
+        "limit (load point ~0.86 m), short of the measured 1.05-1.37 m: the energy comes out right with a "
+        "force above the measured average; see docs/theory.md.\n\n",
+        good, good >= 8 ? "met" : "NOT met", good_even, good - good_even);
     cs_loader_free(l);
 }
 

@@ -31,7 +31,7 @@ typedef struct cs_post_model {
     double x, height;
     double k_rot;          /* elastic rotational stiffness about the base, 3 E I / h_ref, N m/rad */
     double mp;             /* plastic moment Zx Fy, N m */
-    double footing_moment; /* Eq. 21 capacity times its load height, N m */
+    double footing_moment; /* impact capacity (Eq. 21 x dynamic factor) times its load height, N m */
     double moment_cap;     /* min(mp, footing_moment) */
     int soil_yields;       /* 1 if the footing is weaker than the post */
     double shear_cap;      /* 0.6 Aw Fy, N */
@@ -175,6 +175,8 @@ void cs_node_force(const cs_cable_state *cs, int i, double *f);
 
 /* ---- posts and footings (post.c, footing.c) ---- */
 double cs_footing_capacity(const cs_footing_def *f, double load_height);
+double cs_footing_impact_capacity(const cs_footing_def *f, double load_height);
+double cs_footing_pullout_capacity(const cs_footing_def *f);
 void cs_post_attachment(const cs_model *model, int post, const double *tilt, double z, double *out);
 double cs_post_solve(const cs_model *model, cs_state *s, int post, double tol);
 void cs_post_commit(const cs_model *model, cs_state *s, int post);

@@ -86,8 +86,12 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
             return fail(err, "post %d: soil pressure must be > 0", p);
         if (!positive(f->coeff_depth) || !non_negative(f->coeff_height))
             return fail(err, "post %d: Eq. 21 coefficients must be > 0", p);
-        if (!(f->pullout_capacity > 0.0)) /* HUGE_VAL: never pulls out */
-            return fail(err, "post %d: pullout capacity must be > 0", p);
+        if (!(f->pullout_capacity >= 0.0)) /* HUGE_VAL: never pulls out; 0: skin friction */
+            return fail(err, "post %d: pullout capacity must be > 0 (or omitted: skin friction)", p);
+        if (!(f->dynamic_factor >= 1.0 && f->dynamic_factor <= 10.0))
+            return fail(err, "post %d: soil dynamic factor %.4g must be in [1, 10]", p, f->dynamic_factor);
+        if (f->pullout_capacity == 0.0 && !positive(f->skin_friction))
+            return fail(err, "post %d: a footing without a pullout capacity needs skin friction > 0", p);
         if (!(d->rotation_limit > 0.0 && d->rotation_limit < 1.5) ||
             !(f->rotation_limit > 0.0 && f->rotation_limit < 1.5))
             return fail(err, "post %d: rotation limits must be between 0 and 1.5 rad", p);
@@ -259,19 +263,20 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
         pm->load_height = mean_z;
         pm->mp = d->section.plastic_modulus * d->section.yield_stress;
         pm->footing = d->footing;
-        pm->footing_moment = cs_footing_capacity(&d->footing, mean_z) * mean_z;
+        double p_soil = cs_footing_impact_capacity(&d->footing, mean_z);
+        pm->footing_moment = p_soil * mean_z;
         pm->soil_yields = pm->footing_moment < pm->mp;
         /* a post whose footing yields turns about a point 2/3 of the embedment below grade (the paper,
          * "Kinetic energy dissipation due to post pullout"), resisting P(h) at its lever h + 2D/3 */
         pm->pivot = pm->soil_yields ? 2.0 * d->footing.depth / 3.0 : 0.0;
         double lever = mean_z + pm->pivot;
-        pm->moment_cap = pm->soil_yields ? cs_footing_capacity(&d->footing, mean_z) * lever : pm->mp;
+        pm->moment_cap = pm->soil_yields ? p_soil * lever : pm->mp;
         /* the cantilever of Eqs. 10-11 seen at the load height: R h^3 / 3EI there, as a rotation about
          * the pivot (lever h + pivot) */
         pm->k_rot =
             3.0 * d->section.modulus * d->section.inertia * lever * lever / (mean_z * mean_z * mean_z);
         pm->shear_cap = 0.6 * d->section.web_area * d->section.yield_stress;
-        pm->pullout_cap = d->footing.pullout_capacity;
+        pm->pullout_cap = cs_footing_pullout_capacity(&d->footing);
         pm->rot_limit = pm->soil_yields ? d->footing.rotation_limit : d->rotation_limit;
         pm->clamped = d->attachment == CS_ATTACH_CLAMPED;
     }

@@ -205,7 +205,10 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     }
     cs_post_resistance(pm, ps, ps->tilt, ps->moment);
     if (ps->captured) {
-        ps->shear = ps->push, ps->axial = 0.0;
+        /* the horizontal push on a post leaning by theta has the component push sin(theta) along
+         * the post, out of the ground: what pulls a short post out (its skin friction grows as D^2,
+         * its lateral capacity more slowly) */
+        ps->shear = ps->push, ps->axial = ps->push * sin(hypot(ps->tilt[0], ps->tilt[1]));
         return;
     }
     double r[2], f[3], axis[3], m_entry[CS_MAX_CABLES_PER_POST];

@@ -88,7 +88,8 @@ static void shear_failure_onset(void **state) {
 
 /* A barrier of this one post and no cable (a bogie test, a bollard), struck head-on at 5 m/s by the
  * fixture's truck and run to the end: the post is pushed over until it fails. */
-static cs_model *strike_one_post(cs_post_def *post, cs_state **state, double *strike_height) {
+static cs_model *strike_one_post_until(cs_post_def *post, cs_state **state, double *strike_height,
+                                       cs_post_status failure) {
     fixture fx;
     fixture_aps3(&fx);
     post->x = 0.0;
@@ -104,9 +105,13 @@ static cs_model *strike_one_post(cs_post_def *post, cs_state **state, double *st
     assert_non_null(m);
     *state = cs_state_create(m, &err);
     assert_int_equal(cs_run(m, *state, NULL, NULL, &err), CS_OK);
-    assert_int_equal((*state)->posts[0].status, CS_POST_FAILED_ROTATION);
+    assert_int_equal((*state)->posts[0].status, failure);
     assert_int_equal((*state)->outcome, CS_BREAKTHROUGH);
     return m;
+}
+
+static cs_model *strike_one_post(cs_post_def *post, cs_state **state, double *strike_height) {
+    return strike_one_post_until(post, state, strike_height, CS_POST_FAILED_ROTATION);
 }
 
 /* Whichever yields takes the capacity times the plastic rotation, M_cap (theta_fail - M_cap / k). */
@@ -132,27 +137,59 @@ static void struck_post_absorbs_capacity_times_rotation(void **state) {
     cs_model_free(m);
 }
 
-/* A W6x16-like post driven 1 m into soil (Eq. 21 with the 4-in flange as B): the footing is the
- * weaker, so it turns about a point 2/3 D below grade with capacity P(h) (h + 2D/3), P from Eq. 21 at
- * the strike height h, and all the work is the soil's. */
-static void struck_post_in_soil_turns_about_two_thirds_depth(void **state) {
-    (void)state;
+/* A W6x16-like post driven 1 m into soil (Eq. 21 with the 4-in flange as B). */
+static cs_post_def driven_w6x16(void) {
     cs_post_def post = cs_default_post_def();
     post.height = 1.0;
     post.section = fixture_hss();
     post.section.plastic_modulus = 11.7 * IN * IN * IN; /* W6x16 */
     post.section.inertia = 32.1 * pow(IN, 4);
     post.footing = fixture_footing(4.03 / 12.0, 1.016 / FT, 20.0);
+    return post;
+}
+
+/* The footing is the weaker, so it turns about a point 2/3 D below grade with capacity
+ * P(h) (h + 2D/3), P = f_d x Eq. 21 at the strike height h (f_d the default dynamic factor, 2.75), and
+ * all the work is the soil's. */
+static void struck_post_in_soil_turns_about_two_thirds_depth(void **state) {
+    (void)state;
+    cs_post_def post = driven_w6x16();
+    assert_true(post.footing.dynamic_factor == 2.75);
     cs_state *s;
     double h;
     cs_model *m = strike_one_post(&post, &s, &h);
     const cs_post_model *pm = &m->posts[0];
     assert_true(pm->soil_yields);
     double d = 1.016, s1 = 8000 * PSF, b = 4.03 * IN;
-    double p = s1 * b * d * d / (2.37 * d + 2.64 * h); /* Eq. 21 */
+    double p = 2.75 * s1 * b * d * d / (2.37 * d + 2.64 * h); /* f_d x Eq. 21 */
     CHECK_REL(pm->moment_cap, p * (h + 2.0 * d / 3.0), 1e-12);
     check_post_work(m, s);
     assert_true(s->e_post_plastic == 0.0);
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
+/* The same post with no pullout capacity given: it is held by its skin friction, Q = q pi B D^2 / 2.
+ * Pushed over at the face's bottom edge with M_cap / ((h + 2D/3) cos theta), the pull along it is
+ * push sin theta = P tan theta on the plateau, so it pulls out at tan theta = Q / P: q is set for
+ * theta = 30 deg. The soil's work up to then is M_cap (theta - M_cap / k). */
+static void struck_post_pulls_out_at_its_skin_friction(void **state) {
+    (void)state;
+    cs_post_def post = driven_w6x16();
+    double d = 1.016, b = 4.03 * IN, h = 24.0 * IN, theta = 30.0 * M_PI_2_VALUE / 90.0;
+    fixture fx;
+    fixture_aps3(&fx);
+    h = fx.vehicle.face_bottom;
+    double p = 2.75 * 8000 * PSF * b * d * d / (2.37 * d + 2.64 * h);
+    post.footing.pullout_capacity = 0.0; /* omitted: skin friction */
+    post.footing.skin_friction = p * tan(theta) / (M_PI_2_VALUE * b * d * d);
+    cs_state *s;
+    cs_model *m = strike_one_post_until(&post, &s, &h, CS_POST_FAILED_PULLOUT);
+    const cs_post_model *pm = &m->posts[0];
+    CHECK_REL(pm->pullout_cap, p * tan(theta), 1e-12);
+    double t = hypot(s->posts[0].tilt[0], s->posts[0].tilt[1]);
+    CHECK_ABS(t, theta, 0.01); /* reached within a step (5 m/s x 0.5 ms over a 1.2-m lever) */
+    CHECK_REL(s->e_soil, pm->moment_cap * (t - pm->moment_cap / pm->k_rot), 1e-6);
     cs_state_free(s);
     cs_model_free(m);
 }
@@ -164,6 +201,7 @@ int main(void) {
         cmocka_unit_test(shear_failure_onset),
         cmocka_unit_test(struck_post_absorbs_capacity_times_rotation),
         cmocka_unit_test(struck_post_in_soil_turns_about_two_thirds_depth),
+        cmocka_unit_test(struck_post_pulls_out_at_its_skin_friction),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -58,7 +58,10 @@ typedef struct cs_footing_def {
     double coeff_depth;       /* c_d (paper 2.37; building code 2.34) */
     double coeff_height;      /* c_h (paper 2.64; building code 2.55) */
     double rotation_limit;    /* footing rotation in soil at which the post is lost, rad */
-    double pullout_capacity;  /* axial pull along the post that pulls it out, N */
+    double pullout_capacity;  /* axial pull along the post that pulls it out, N; 0: the embedment's
+                                 skin friction (skin_friction pi B D^2 / 2) */
+    double dynamic_factor;    /* soil resistance under impact over Eq. 21's (calibrated, assumptions.md) */
+    double skin_friction;     /* shaft friction per metre of depth, Pa/m (uplift capacity, calibrated) */
 } cs_footing_def;
 
 typedef enum cs_attachment {

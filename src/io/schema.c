@@ -124,7 +124,12 @@ const cs_table cs_table_parts = {"parts",
        "S1 of Eq. 21: soil pressure above the point of rotation"),                                           \
         FT("soil_pressure_cap", CS_Q_PRESSURE, CS_POS, soil_pressure_cap, "upper limit of S1"),              \
         FT("coeff_depth", CS_Q_NUMBER, CS_POS, coeff_depth, "Eq. 21 coefficient of P D"),                    \
-        FT("coeff_height", CS_Q_NUMBER, CS_POS, coeff_height, "Eq. 21 coefficient of P H")
+        FT("coeff_height", CS_Q_NUMBER, CS_POS, coeff_height, "Eq. 21 coefficient of P H"),                  \
+        FT("dynamic_factor", CS_Q_NUMBER, CS_POS, dynamic_factor,                                            \
+           "soil resistance under impact over Eq. 21's, 1 to 10 (calibrated on the bogie tests)"),           \
+        FT("skin_friction", CS_Q_PRESSURE_GRADIENT, CS_POS, skin_friction,                                   \
+           "shaft friction per depth; a footing without a pullout capacity pulls out at pi B D^2 / 2 times " \
+           "it")
 static const cs_field soil_fields[] = {SOIL_FIELDS};
 const cs_table cs_table_soil = {"soil",
                                 "Soil of every footing of the barrier (a footing may replace any of it).",
@@ -137,8 +142,8 @@ static const cs_field footing_fields[] = {
     SOIL_FIELDS,
     FT("rotation_limit", CS_Q_ANGLE, CS_POS | CS_MAX90, rotation_limit,
        "footing rotation at which the post is lost"),
-    FT("pullout_capacity", CS_Q_FORCE, CS_REQ | CS_POS | CS_NONE_OK, pullout_capacity,
-       "axial pull along the post that pulls it out (none: never)"),
+    FT("pullout_capacity", CS_Q_FORCE, CS_POS | CS_NONE_OK, pullout_capacity,
+       "axial pull along the post that pulls it out (none: never; omitted: the skin friction's)"),
 };
 const cs_table cs_table_footing = {"footing", "A post's footing in the soil (Eq. 21 lateral capacity).",
                                    CS_T_FOOTING, footing_fields, N(footing_fields)};

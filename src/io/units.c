@@ -30,6 +30,7 @@ static const cs_quantity_info quantities[CS_Q_COUNT] = {
     [CS_Q_PRESSURE] = {"pressure", "Pa", "Pa", "8000 psf"},
     [CS_Q_ANGLE] = {"angle", "rad", "rad", "45 deg"},
     [CS_Q_ENERGY] = {"energy", "J", "J", "1000 ft*lbf"},
+    [CS_Q_PRESSURE_GRADIENT] = {"pressure per depth", "Pa/m", "Pa/m", "1000 psf/ft"},
 };
 
 /* Units the field writes that the udunits2 database lacks or reads otherwise ("mph" would be

@@ -23,6 +23,7 @@ typedef enum cs_quantity {
     CS_Q_PRESSURE,
     CS_Q_ANGLE,
     CS_Q_ENERGY,
+    CS_Q_PRESSURE_GRADIENT, /* Pa/m: a pressure growing with depth */
     CS_Q_COUNT
 } cs_quantity;
 
