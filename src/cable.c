@@ -32,6 +32,25 @@ double cs_rope_tension(const cs_rope *r, double e, double ep) {
     return trial < b ? trial : b;
 }
 
+/* Strength efficiency of a wire rope bent over a pin or sheave of diameter D (d the rope's): the
+ * fraction of its straight-pull breaking strength it holds there. The Wire Rope Technical Board's
+ * "efficiency of wire ropes over stationary sheaves or pins" (Wire Rope Users Manual, Fig. 38, as
+ * tabulated by rigging suppliers): 50% at D/d = 1 rising to 95% at D/d = 40; linear in log(D/d) between
+ * the points, held at the end values outside them. No bend (D/d infinite) keeps the full strength. */
+double cs_rope_bend_efficiency(double d_ratio) {
+    static const double ratio[] = {1, 2, 4, 6, 8, 10, 15, 20, 30, 40};
+    static const double eff[] = {0.50, 0.65, 0.75, 0.79, 0.83, 0.86, 0.89, 0.91, 0.93, 0.95};
+    enum { n = (int)(sizeof ratio / sizeof ratio[0]) };
+    if (!(d_ratio < HUGE_VAL)) return 1.0;
+    if (!(d_ratio > ratio[0])) return eff[0];
+    if (d_ratio >= ratio[n - 1]) return eff[n - 1];
+    int i = 1;
+    while (ratio[i] < d_ratio)
+        i++;
+    double f = log(d_ratio / ratio[i - 1]) / log(ratio[i] / ratio[i - 1]);
+    return eff[i - 1] + f * (eff[i] - eff[i - 1]);
+}
+
 /* Recoverable energy of a span of unstretched length s under tension T (unloading slope EA). */
 double cs_rope_elastic_energy(const cs_rope *r, double t, double s) {
     return 0.5 * t * t / r->ea * s;
@@ -212,7 +231,7 @@ void cs_cable_commit(const cs_model *model, int c, cs_state *s) {
     cs_cable_state *cs = &s->cables[c];
     if (cs->status != CS_CABLE_INTACT) return;
     const cs_rope *r = &cm->rope;
-    double worst = 0.0, tmax = 0.0;
+    double worst = 0.0, tmax = 0.0, corner = 0.0;
     for (int i = 0; i + 1 < cs->node_count; i++) /* carry the plastic strain with the rope that slid */
         cs->ep_mix[i] = span_plastic(cs, i, cs->m[i], cs->m[i + 1]);
     memcpy(cs->ep, cs->ep_mix, (size_t)(cs->node_count - 1) * sizeof *cs->ep);
@@ -228,6 +247,10 @@ void cs_cable_commit(const cs_model *model, int c, cs_state *s) {
         }
         if (e > worst) worst = e;
         if (t > tmax) tmax = t;
+        /* a span that ends on a face corner loads the rope where it bends over the corner */
+        if (cs->node[i] == CS_NODE_LEFT || cs->node[i] == CS_NODE_RIGHT || cs->node[i + 1] == CS_NODE_LEFT ||
+            cs->node[i + 1] == CS_NODE_RIGHT)
+            corner = fmax(corner, t / cm->corner_strength);
     }
     for (int i = 1; i + 1 < cs->node_count; i++) {
         double slide = cs->m[i] - cs->m_commit[i];
@@ -239,12 +262,15 @@ void cs_cable_commit(const cs_model *model, int c, cs_state *s) {
     memcpy(cs->m_commit, cs->m, (size_t)cs->node_count * sizeof *cs->m);
     if (tmax > cs->max_tension_seen) cs->max_tension_seen = tmax;
     cs->max_strain = worst;
+    cs->corner_load = corner;
 }
 
-/* A span strained to the breaking strain breaks the cable; from then on it carries nothing. */
+/* A span strained to the breaking strain breaks the cable, and so does a tension at a face corner that
+ * reaches the rope's strength bent over that corner; from then on it carries nothing. */
 int cs_cable_check_break(const cs_model *model, int c, cs_state *s) {
     cs_cable_state *cs = &s->cables[c];
-    if (cs->status != CS_CABLE_INTACT || cs->max_strain < model->cables[c].rope.e_break) return 0;
+    if (cs->status != CS_CABLE_INTACT) return 0;
+    if (cs->max_strain < model->cables[c].rope.e_break && cs->corner_load < 1.0) return 0;
     double tmax = 0.0;
     for (int i = 0; i + 1 < cs->node_count; i++)
         tmax = fmax(tmax, cs->tension[i]);

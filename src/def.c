@@ -86,6 +86,8 @@ cs_vehicle_def cs_default_vehicle_def(void) {
     d.rolling_resistance = 0.01;
     d.tyre_friction = 0.7;
     d.face_friction = 0.3;
+    d.face_corner_radius =
+        2.0 * 0.0254; /* 2 in: the bumper / frame ends the ropes bend over, assumptions.md */
     d.crush_unload_stiffness = 2.0e7;
     return d;
 }

@@ -20,10 +20,14 @@ typedef struct cs_rope {
     double e_break; /* breaking strain */
 } cs_rope;
 
+/* Strength efficiency of a wire rope bent over a radius: D/d = bend diameter / rope diameter. */
+double cs_rope_bend_efficiency(double d_ratio);
+
 typedef struct cs_cable_model {
     double z;          /* height at the posts, m */
     double pretension; /* N */
     double mu_post;
+    double corner_strength; /* tension that breaks the rope where it bends over a face corner, N */
     cs_rope rope;
 } cs_cable_model;
 
@@ -83,7 +87,8 @@ typedef struct cs_cable_state {
     double corner_z[2];        /* body-frame z of the contact on the face (left, right), m */
     double corner_z_commit[2]; /* the same at the end of the previous step */
     double max_tension_seen;
-    double max_strain; /* largest span strain at the last commit */
+    double max_strain;  /* largest span strain at the last commit */
+    double corner_load; /* largest tension at a face corner over its corner strength, last commit */
 } cs_cable_state;
 
 typedef struct cs_post_state {

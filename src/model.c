@@ -33,6 +33,7 @@ static int check_rope(const cs_rope_def *r, int c, cs_error *err) {
     if (!positive(r->area)) return fail(err, "cable %d: rope area must be > 0", c);
     if (!positive(r->modulus)) return fail(err, "cable %d: rope modulus must be > 0", c);
     if (!positive(r->nominal_strength)) return fail(err, "cable %d: rope nominal strength must be > 0", c);
+    if (!non_negative(r->diameter)) return fail(err, "cable %d: rope diameter must be >= 0", c);
     if (!(r->elastic_limit_ratio > 0.0 && r->elastic_limit_ratio <= 1.0))
         return fail(err, "cable %d: elastic limit ratio must be in (0, 1]", c);
     if (!(r->secondary_modulus_ratio > 0.0 && r->secondary_modulus_ratio <= 1.0))
@@ -130,6 +131,7 @@ static int check_vehicle(const cs_vehicle_def *v, cs_error *err) {
         !non_negative(v->rolling_resistance) || !non_negative(v->tyre_friction) ||
         !non_negative(v->face_friction))
         return fail(err, "vehicle: tyre and friction parameters must be >= 0 (static deflection > 0)");
+    if (!non_negative(v->face_corner_radius)) return fail(err, "vehicle: face corner radius must be >= 0");
     if (v->crush_point_count < 2 || v->crush_point_count > CS_MAX_CRUSH_POINTS)
         return fail(err, "vehicle: crush curve needs 2 to %d points", CS_MAX_CRUSH_POINTS);
     if (v->crush_deformation[0] != 0.0 || v->crush_force[0] != 0.0)
@@ -248,6 +250,9 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
         cm->pretension = d->pretension;
         cm->mu_post = d->post_friction;
         derive_rope(&d->rope, &cm->rope);
+        /* bent over the face's corners (bend diameter D = 2 R) the rope holds only a fraction of Fu */
+        double dr = d->rope.diameter > 0.0 ? 2.0 * vehicle->face_corner_radius / d->rope.diameter : HUGE_VAL;
+        cm->corner_strength = cs_rope_bend_efficiency(dr) * cm->rope.fu;
     }
     /* the load height of every post: its cables' mean height, or for a barrier of posts alone
      * (bollards, a bogie test) the height where the vehicle's face strikes them */

@@ -82,6 +82,7 @@ static void reset_cable(const cs_model *model, int c, cs_cable_state *cs) {
     cs_cable_update_tensions(cm, cs);
     cs->max_tension_seen = cm->pretension;
     cs->max_strain = cm->pretension / cm->rope.ea;
+    cs->corner_load = 0.0;
     cs->corner_z[0] = cs->corner_z[1] = cs->corner_z_commit[0] = cs->corner_z_commit[1] = 0.0;
 }
 

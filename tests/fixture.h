@@ -30,6 +30,7 @@ static inline cs_rope_def fixture_rope(double diameter_in) {
     r.area = 0.471 * diameter_in * diameter_in * IN * IN;
     r.nominal_strength = 91.4 * diameter_in * diameter_in * KIP;
     r.modulus = 20000.0 * KSI;
+    r.diameter = diameter_in * IN;
     return r;
 }
 

@@ -1,5 +1,5 @@
 /* Cable: the rope law's points, the capstan ratio across a frictional support, frictionless tension
- * redistribution by sliding, and breaking. */
+ * redistribution by sliding, breaking, and the strength of a rope bent over the face's corners. */
 #include "check.h"
 #include "fixture.h"
 #include "internal.h"
@@ -95,12 +95,63 @@ static void breaking_strain_breaks_the_cable(void **state) {
     world_free(w);
 }
 
+/* The bending efficiency is the Wire Rope Users Manual's table (Fig. 38): its points exactly, linear in
+ * log(D/d) between them, held at the ends, and no loss without a bend. */
+static void bend_efficiency_follows_the_table(void **state) {
+    (void)state;
+    CHECK_ABS(cs_rope_bend_efficiency(1.0), 0.50, 1e-15); /* a pin of the rope's own diameter: 50% */
+    CHECK_ABS(cs_rope_bend_efficiency(4.0), 0.75, 1e-15);
+    CHECK_ABS(cs_rope_bend_efficiency(10.0), 0.86, 1e-15);
+    CHECK_ABS(cs_rope_bend_efficiency(40.0), 0.95, 1e-15);      /* "even at D/d = 40 ... up to 5%" */
+    CHECK_ABS(cs_rope_bend_efficiency(sqrt(8.0)), 0.70, 1e-12); /* log-midpoint of 2 (65%) and 4 (75%) */
+    CHECK_ABS(cs_rope_bend_efficiency(0.3), 0.50, 0.0);         /* below the table: its first point */
+    CHECK_ABS(cs_rope_bend_efficiency(400.0), 0.95, 0.0);       /* above it: its last */
+    CHECK_ABS(cs_rope_bend_efficiency(HUGE_VAL), 1.0, 0.0);     /* straight pull */
+    double prev = 0.0;
+    for (double r = 0.5; r < 60.0; r *= 1.01) { /* never decreases with a gentler bend */
+        double e = cs_rope_bend_efficiency(r);
+        assert_true(e >= prev);
+        prev = e;
+    }
+}
+
+/* A rope bent over a face corner breaks when the tension there reaches efficiency(2 R / d) Fu; the same
+ * tension over a post (straight-pull strength) holds. 1.75-in rope, 2-in corner radius: D/d = 2.286,
+ * efficiency 0.65 + 0.10 log(2.286 / 2) / log 2 = 0.6693. */
+static void corner_bend_breaks_below_fu(void **state) {
+    (void)state;
+    world *w = make_world(0.15);
+    const cs_cable_model *cm = &w->model->cables[0];
+    const cs_rope *r = &cm->rope;
+    double eta = 0.65 + 0.10 * log((2.0 * 2.0 / 1.75) / 2.0) / log(2.0);
+    CHECK_REL(cm->corner_strength, eta * r->fu, 1e-12);
+    double a[3] = {0, 0, 1}, b[3] = {3, 1, 1}, c[3] = {10, 0, 1};
+    for (int k = 0; k < 3; k++) {
+        double t = (k == 0 ? 0.99 : 1.01) * eta * r->fu; /* on the secondary slope: eta > 0.6 */
+        double e = r->e1 + (t - r->t1) / r->k2;
+        cs_cable_state *cs = lay_cable(w->state, a, b, c, e, 0.002);
+        if (k < 2) cs->node[1] = CS_NODE_LEFT, cs->where[0] = -1; /* k = 2: the middle node is a post */
+        cs_cable_commit(w->model, 0, w->state);
+        CHECK_REL(cs->tension[0], t, 1e-9);
+        assert_int_equal(cs_cable_check_break(w->model, 0, w->state), k == 1);
+        if (k == 1) {
+            const cs_event *ev = cs_state_event(w->state, cs_state_event_count(w->state) - 1);
+            assert_int_equal(ev->type, CS_EVENT_CABLE_BREAK);
+            CHECK_REL(ev->value, t, 1e-9);
+            cs->status = CS_CABLE_INTACT;
+        }
+    }
+    world_free(w);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(rope_law_points),
         cmocka_unit_test(capstan_ratio_on_frictional_support),
         cmocka_unit_test(frictionless_sliding_equalises_tension),
         cmocka_unit_test(breaking_strain_breaks_the_cable),
+        cmocka_unit_test(bend_efficiency_follows_the_table),
+        cmocka_unit_test(corner_bend_breaks_below_fu),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

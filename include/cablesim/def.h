@@ -29,6 +29,8 @@ typedef struct cs_rope_def {
     double secondary_modulus_ratio; /* r_2: second slope as a fraction of E (paper: 0.6) */
     double breaking_strain;         /* total strain at which the rope breaks (paper: 0.03) */
     double mass_per_length;         /* kg/m, reported only (the cable is quasi-static) */
+    double diameter;                /* nominal diameter d, m; sets the strength where the rope bends over
+                                       the vehicle's face corners (0: unknown, no bending loss) */
 } cs_rope_def;
 
 typedef struct cs_cable_def {
@@ -114,6 +116,7 @@ typedef struct cs_vehicle_def {
     double rolling_resistance;     /* coefficient of rolling resistance (free-rolling, unbraked) */
     double tyre_friction;          /* lateral (side-slip) friction coefficient */
     double face_friction;          /* mu between cable and front face */
+    double face_corner_radius;     /* radius of the face's vertical corners where cables wrap, m */
     int crush_point_count;         /* points of the loading curve, deformation increasing, first (0,0) */
     double crush_deformation[CS_MAX_CRUSH_POINTS]; /* m */
     double crush_force[CS_MAX_CRUSH_POINTS];       /* N */

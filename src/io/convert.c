@@ -252,6 +252,7 @@ int cs_convert_rope(cs_loader *l, const cs_node *rope, cs_rope_def *out, double 
         out->mass_per_length *= r;
     }
     fields(l, rope, out, !from);
+    if (has_d == 1) out->diameter = d; /* the strength bent over the face corners needs it */
     if (diameter) *diameter = has_d == 1 ? d : d0;
     return l->error_count - before;
 }

@@ -60,6 +60,9 @@ static const cs_field vehicle_fields[] = {
     V("rolling_resistance", CS_Q_NUMBER, CS_NONNEG, rolling_resistance, "rolling resistance coefficient"),
     V("tyre_friction", CS_Q_NUMBER, CS_NONNEG, tyre_friction, "tyre side (lateral) friction coefficient"),
     V("face_friction", CS_Q_NUMBER, CS_NONNEG, face_friction, "friction between cable and front face"),
+    V("face_corner_radius", CS_Q_LENGTH, CS_NONNEG, face_corner_radius,
+      "radius of the front face's vertical corners, where the cables bend: a rope bent to D/d = 2 R / d "
+      "holds only part of its strength there"),
     LIST("crush_deformation", CS_Q_LENGTH, CS_REQ | CS_NONNEG,
          "crush curve: deformations, increasing, first 0 (at most 16 points)"),
     LIST("crush_force", CS_Q_FORCE, CS_NONNEG, "crush curve: forces at those deformations, first 0"),
@@ -82,7 +85,9 @@ static const cs_field rope_fields[] = {
     TEXT("scale_from", 0,
          "start from the named rope and scale area, strength and mass per length by "
          "(diameter / its diameter)^2; fields given here replace the result"),
-    QTY_ONLY("diameter", CS_Q_LENGTH, CS_POS, "nominal diameter (needed by scale_from)"),
+    QTY_ONLY("diameter", CS_Q_LENGTH, CS_POS,
+             "nominal diameter d (needed by scale_from); sets the strength bent over the face corners "
+             "(not given: no bending loss)"),
     R("area", CS_Q_AREA, CS_REQ | CS_POS, area, "metallic area A"),
     R("modulus", CS_Q_PRESSURE, CS_REQ | CS_POS, modulus, "apparent modulus of elasticity E"),
     R("nominal_strength", CS_Q_FORCE, CS_REQ | CS_POS, nominal_strength, "nominal (breaking) strength Fu"),
