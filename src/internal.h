@@ -127,7 +127,8 @@ struct cs_state {
     int frozen;
 
     /* vehicle */
-    double pos[3], vel[3], quat[4], omega[3]; /* omega in the body frame */
+    double pos[3], vel[3], quat[4], omega[3];     /* omega in the body frame */
+    double step_start_pos[3], step_start_quat[4]; /* the pose the step started from */
     double acc[3];
     double force[3], moment[3]; /* barrier resultant on the vehicle (world, about the CG) */
     double crush, crush_max;    /* face set-back now and the largest reached, m */
@@ -221,6 +222,7 @@ double cs_face_normal_force_now(const cs_model *model, cs_state *s);
 int cs_solver_init(const cs_model *model, cs_solver *w);
 void cs_solver_free(cs_solver *w);
 void cs_solver_reset(const cs_model *model, cs_solver *w);
+void cs_solver_restart(const cs_model *model, cs_state *s);
 void cs_barrier_force(const cs_model *model, cs_state *s);
 void cs_barrier_commit(const cs_model *model, cs_state *s);
 double cs_barrier_stored_energy(const cs_model *model, const cs_state *s);

@@ -465,10 +465,24 @@ static int predict(const cs_model *model, cs_state *s, cs_solver *w, int n, doub
     return 1;
 }
 
+/* Put every unknown back to its value at the start of this step's first solve (the predictor's memory;
+ * an unknown that appeared since keeps its value). */
+void cs_solver_restart(const cs_model *model, cs_state *s) {
+    cs_solver *w = &s->solver;
+    int n = assemble(model, s, w);
+    if (n <= 0) return;
+    gather(s, w, n, w->x);
+    for (int k = 0; k < n; k++) {
+        size_t key = slot_key(model, s, &w->slots[k]);
+        if (w->last_step[key] == s->step) w->x[k] = w->last[key];
+    }
+    scatter(model, s, w, n, w->x);
+}
+
 double cs_barrier_newton(const cs_model *model, cs_state *s) {
     cs_solver *w = &s->solver;
     int n = assemble(model, s, w);
-    if (n == 0) return 0.0;
+    if (n <= 0) return 0.0;
     bandwidth(model, s, w, n, &w->kl, &w->ku);
     w->band_width = 2 * w->kl + w->ku + 1;
     if ((size_t)n * (size_t)w->band_width > w->band_capacity) return -1.0; /* caller falls back */

@@ -4,6 +4,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 /* Breaks, post failures and anchor pullouts found after a commit change the barrier's topology with
  * no work done on it: re-solve at the same vehicle pose until nothing more fails, and book the stored
@@ -80,6 +81,8 @@ static cs_status check_numbers(const cs_model *model, cs_state *s, cs_error *err
 cs_status cs_step(const cs_model *model, cs_state *s, cs_error *err) {
     if (err) err->status = CS_OK, err->message[0] = '\0';
     if (s->frozen || s->outcome != CS_RUNNING) return CS_OK;
+    v3_copy(s->step_start_pos, s->pos);
+    memcpy(s->step_start_quat, s->quat, sizeof s->quat);
     cs_vehicle_integrate(model, s); /* 1. the vehicle moves under last step's forces */
     s->t += model->scenario.dt;
     s->step++;

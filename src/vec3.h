@@ -74,6 +74,16 @@ static inline void quat_integrate(double *q, const double *w, double dt) {
         q[i] = r[i] / n;
 }
 /* Quaternion of a rotation by yaw about world z. */
+/* Normalised linear blend of two unit quaternions, a + f (b - a) (on b's side of a), for small turns. */
+static inline void quat_nlerp(double *r, const double *a, const double *b, double f) {
+    double d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3], sg = d < 0.0 ? -1.0 : 1.0, n = 0.0;
+    for (int i = 0; i < 4; i++)
+        r[i] = a[i] + f * (sg * b[i] - a[i]), n += r[i] * r[i];
+    n = sqrt(n);
+    for (int i = 0; i < 4; i++)
+        r[i] /= n;
+}
+
 static inline void quat_from_yaw(double *q, double yaw) {
     q[0] = cos(0.5 * yaw), q[1] = 0.0, q[2] = 0.0, q[3] = sin(0.5 * yaw);
 }

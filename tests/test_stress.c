@@ -73,9 +73,9 @@ static void make_design(int k, design *d) {
 
 static void random_designs_run_clean(void **state) {
     (void)state;
-    const char *env = getenv("CS_STRESS_RUNS");
-    int runs = env ? atoi(env) : 24, failures = 0;
-    for (int k = 0; k < runs; k++) {
+    const char *env = getenv("CS_STRESS_RUNS"), *from_env = getenv("CS_STRESS_FROM");
+    int runs = env ? atoi(env) : 24, from = from_env ? atoi(from_env) : 0, failures = 0;
+    for (int k = from; k < from + runs; k++) {
         design d;
         make_design(k, &d);
         cs_error err;
