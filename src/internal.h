@@ -110,6 +110,7 @@ typedef struct cs_solver {
     int *height_index;  /* [cable_count * 2] index of a face contact height unknown, -1 if none */
     int crush_index;
     double *x, *r, *dx, *xt, *rt;
+    size_t key_count;      /* unknowns the predictor remembers, keyed by element (slot_key) */
     double *last;          /* [keys] each unknown's value at the start of the last step's solve */
     long *last_step;       /* [keys] the step that value belongs to */
     struct slot *slots_lu; /* the unknowns of the factored Jacobian */
@@ -221,7 +222,7 @@ double cs_barrier_newton(const cs_model *model, cs_state *s);
 double cs_face_normal_force_now(const cs_model *model, cs_state *s);
 int cs_solver_init(const cs_model *model, cs_solver *w);
 void cs_solver_free(cs_solver *w);
-void cs_solver_reset(const cs_model *model, cs_solver *w);
+void cs_solver_reset(cs_solver *w);
 void cs_solver_restart(const cs_model *model, cs_state *s);
 void cs_barrier_force(const cs_model *model, cs_state *s);
 void cs_barrier_commit(const cs_model *model, cs_state *s);

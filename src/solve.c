@@ -59,7 +59,6 @@ int cs_solver_init(const cs_model *model, cs_solver *w) {
     size_t n = 2 * np + nc * nn + 2 * nc + 1, per_row = 3 * (12 + 8 * nc) + 1;
     w->slots = calloc(n, sizeof *w->slots);
     w->slots_lu = calloc(n, sizeof *w->slots_lu);
-    if (!w->slots_lu) return -1;
     w->tilt_index = calloc(np ? np : 1, sizeof *w->tilt_index);
     w->node_index = calloc(nc ? nc * nn : 1, sizeof *w->node_index);
     w->height_index = calloc(nc ? 2 * nc : 1, sizeof *w->height_index);
@@ -67,20 +66,19 @@ int cs_solver_init(const cs_model *model, cs_solver *w) {
     w->band_capacity = n * per_row;
     w->band = calloc(w->band_capacity, sizeof *w->band);
     w->pivot = calloc(n, sizeof *w->pivot);
-    size_t keys = 2 * np + nc * (np + 2) + 2 * nc + 1;
-    w->last = calloc(keys, sizeof *w->last);
-    w->last_step = calloc(keys, sizeof *w->last_step);
-    if (!w->last || !w->last_step) return -1;
-    if (!w->slots || !w->tilt_index || !w->node_index || !w->height_index || !w->x || !w->band || !w->pivot)
+    w->key_count = 2 * np + nc * (np + 2) + 2 * nc + 1; /* see slot_key */
+    w->last = calloc(w->key_count, sizeof *w->last);
+    w->last_step = calloc(w->key_count, sizeof *w->last_step);
+    if (!w->slots || !w->slots_lu || !w->last || !w->last_step || !w->tilt_index || !w->node_index ||
+        !w->height_index || !w->x || !w->band || !w->pivot)
         return -1;
     w->r = w->x + n, w->dx = w->x + 2 * n, w->xt = w->x + 3 * n, w->rt = w->x + 4 * n;
     return 0;
 }
 
 /* Forget the history of the predictor (a new run). */
-void cs_solver_reset(const cs_model *model, cs_solver *w) {
-    size_t np = (size_t)model->post_count, nc = (size_t)model->cable_count;
-    for (size_t k = 0; k < 2 * np + nc * (np + 2) + 2 * nc + 1; k++)
+void cs_solver_reset(cs_solver *w) {
+    for (size_t k = 0; k < w->key_count; k++)
         w->last_step[k] = -2, w->last[k] = 0.0;
     w->lu_valid = 0;
 }
