@@ -7,8 +7,12 @@
  * - verification against closed forms (Eq. 21 against the paper's Table 4);
  * - time-step convergence of the crash tests (0.5, 0.25, 0.1, 0.05 ms);
  * - sensitivity to what the paper does not give: the range of each response over each input's range.
- * Every case uses the one parameter set of the model files and docs/assumptions.md. */
+ * Every case uses the one parameter set of the model files and docs/assumptions.md.
+ * Every simulation is first queued as a job (plan), the jobs then run on OpenMP threads, the costliest
+ * first (run_all), and only then is the report written from the stored results: the same report for any
+ * thread count. */
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -31,8 +35,33 @@ typedef struct result {
     double absorbed;       /* J: initial kinetic energy minus what is left */
     int post_failure;      /* the first post failure's event type, -1 if none */
     double post_failure_t; /* its time, s */
-    double seconds;        /* wall time of the run */
 } result;
+
+enum { CRASH = 3, BOGIE = 10, REFINE = 2, VALUES = 4, INPUTS = 5 };
+enum { MAX_JOBS = CRASH + BOGIE + CRASH * REFINE * VALUES + CRASH * INPUTS * 2 };
+
+/* One simulation: its model (NULL: not built, the reason printed), the order's cost estimate, the result. */
+typedef struct job {
+    cs_model *model;
+    double cost;
+    result r;
+} job;
+
+/* The jobs, and the job each part of the report reads (-1: none). */
+typedef struct suite {
+    cs_loader *loader;
+    const char *examples;
+    int count;
+    job jobs[MAX_JOBS];
+    int base[CRASH];                   /* each crash test as its file stands */
+    int bogie[BOGIE];                  /* each of bogie_tests */
+    int refine[REFINE][CRASH][VALUES]; /* refinements[t], crash test k, its values[d] */
+    int sensitivity[CRASH][INPUTS][2]; /* crash test k, inputs[i] at its low and high end */
+    int base_loaded[CRASH];            /* base_scenario[k]: the scenario crash test k's file loads to */
+    cs_scenario_def base_scenario[CRASH];
+} suite;
+
+static const char *const crash_names[CRASH] = {"aps1", "aps3", "aps4"};
 
 static void collect(const cs_state *s, result *r) {
     cs_state_summary(s, &r->sm);
@@ -51,41 +80,64 @@ static void collect(const cs_state *s, result *r) {
     r->absorbed = en.initial_kinetic - en.vehicle_kinetic;
 }
 
-static int run_model(const cs_model *m, result *r) {
+/* Run a job on its own state, then free its model. */
+static void run_job(job *j) {
     cs_error err = {0};
-    clock_t c0 = clock();
-    cs_state *s = cs_state_create(m, &err);
-    r->ok = s && cs_run(m, s, NULL, NULL, &err) == CS_OK;
-    if (r->ok)
-        collect(s, r);
-    else
+    cs_state *s = j->model ? cs_state_create(j->model, &err) : NULL;
+    j->r.ok = s && cs_run(j->model, s, NULL, NULL, &err) == CS_OK;
+    if (j->r.ok)
+        collect(s, &j->r);
+    else if (j->model)
         fprintf(stderr, "cablesim validate: a run failed: %s\n", err.message);
     cs_state_free(s);
-    r->seconds = (double)(clock() - c0) / CLOCKS_PER_SEC;
-    return r->ok ? 0 : -1;
+    cs_model_free(j->model);
+    j->model = NULL;
 }
 
-/* Load a model file with overrides ("PATH=VALUE", NULL-terminated) and run it. */
-static int run_file(const char *path, const char *const *sets, result *r) {
-    char why[256];
-    memset(r, 0, sizeof *r);
-    cs_loader *l = cs_loader_create(NULL, why, sizeof why);
-    if (!l) {
-        fprintf(stderr, "cablesim validate: %s\n", why);
-        return -1;
+/* Run every job, the costliest first (dynamic: one job at a time per thread). Each result depends only on
+ * its model, so neither the order nor the thread count changes it. */
+static void run_all(suite *s) {
+    int order[MAX_JOBS];
+    for (int i = 0; i < s->count; i++) { /* insertion sort, stable: ties stay in queue order */
+        int j = i;
+        for (; j > 0 && s->jobs[order[j - 1]].cost < s->jobs[i].cost; j--)
+            order[j] = order[j - 1];
+        order[j] = i;
     }
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 1)
+#endif
+    for (int i = 0; i < s->count; i++)
+        run_job(&s->jobs[order[i]]);
+}
+
+/* Queue a run of m (NULL: not built); its cost: its steps to t_end times its posts. */
+static int add_job(suite *s, cs_model *m) {
+    job *j = &s->jobs[s->count];
+    memset(j, 0, sizeof *j);
+    j->model = m;
+    if (m) {
+        const cs_scenario_def *sc = cs_model_scenario(m);
+        j->cost = sc->t_end / sc->dt * cs_model_post_count(m);
+    }
+    return s->count++;
+}
+
+/* Load crash test k with overrides ("PATH=VALUE", NULL-terminated). Returns 0, or -1 (errors kept). */
+static int load_crash(suite *s, int k, const char *const *sets, cs_model_input *in) {
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s.yaml", s->examples, crash_names[k]);
+    cs_loader_reset(s->loader);
     for (int i = 0; sets && sets[i]; i++)
-        cs_loader_set(l, sets[i]);
-    cs_model_input in;
-    cs_model *m = NULL;
-    int rc = -1;
-    if (cs_loader_load(l, path, &in) == 0 && (m = cs_loader_build(l, &in)) != NULL)
-        rc = run_model(m, r);
-    else
-        cs_loader_print_errors(l, stderr);
-    cs_model_free(m);
-    cs_loader_free(l);
-    return rc;
+        cs_loader_set(s->loader, sets[i]);
+    return cs_loader_load(s->loader, path, in);
+}
+
+/* Queue a run of what load_crash returned rc and in for; the loader's errors printed if not built. */
+static int add_loaded(suite *s, int rc, const cs_model_input *in) {
+    cs_model *m = rc == 0 ? cs_loader_build(s->loader, in) : NULL;
+    if (!m) cs_loader_print_errors(s->loader, stderr);
+    return add_job(s, m);
 }
 
 /* One CSV row: suite, case, variant, then the run's numbers; what does not apply is left empty. */
@@ -118,19 +170,15 @@ static double rel_err(double model, double test) {
 }
 
 /* ---- crash tests ---- */
-static const char *const crash_names[3] = {"aps1", "aps3", "aps4"};
 
-static void write_crash(FILE *md, FILE *csv, const char *examples, result *base) {
-    char path[1024], a[32], b[32];
+static void write_crash(FILE *md, FILE *csv, const suite *s) {
+    char a[32], b[32];
     fprintf(md,
             "## Crash tests\n\nThe three designs of `examples/aps*.yaml`, 15,000-lb truck at 40 mph head-on "
             "(assumed: docs/assumptions.md).\n\n");
-    for (int k = 0; k < 3; k++) {
-        snprintf(path, sizeof path, "%s/%s.yaml", examples, crash_names[k]);
-        run_file(path, NULL, &base[k]);
-        csv_row(csv, "crash", crash_names[k], "baseline", &base[k]);
-    }
-    const result *r = &base[0];
+    for (int k = 0; k < CRASH; k++)
+        csv_row(csv, "crash", crash_names[k], "baseline", &s->jobs[s->base[k]].r);
+    const result *r = &s->jobs[s->base[0]].r;
     fprintf(md, "### APS1 against the crash test and the paper's simulation (paper, Table 3)\n\n");
     fprintf(md, "| response | crash test | paper's simulation | cablesim | cablesim vs test "
                 "|\n|---|---|---|---|---|\n");
@@ -162,7 +210,7 @@ static void write_crash(FILE *md, FILE *csv, const char *examples, result *base)
     fprintf(md, "### APS3 and APS4: blind predictions (the measured results are withheld)\n\n");
     fprintf(md,
             "| response | APS3 cablesim | APS3 test | APS4 cablesim | APS4 test |\n|---|---|---|---|---|\n");
-    const result *p3 = &base[1], *p4 = &base[2];
+    const result *p3 = &s->jobs[s->base[1]].r, *p4 = &s->jobs[s->base[2]].r;
     fprintf(md, "| outcome | %s at %.3f s | withheld | %s at %.3f s | withheld |\n",
             cs_outcome_name(p3->sm.outcome), p3->sm.t, cs_outcome_name(p4->sm.outcome), p4->sm.t);
     fprintf(md, "| max 50-ms average deceleration | %.3f g | withheld | %.3f g | withheld |\n",
@@ -188,7 +236,7 @@ typedef struct bogie_test {
 } bogie_test;
 
 /* The paper's Table 2 (MwRSF tests of W6x16 posts in AASHTO M147-65 Grade B soil). */
-static const bogie_test bogie_tests[10] = {
+static const bogie_test bogie_tests[BOGIE] = {
     {"NPGB-1", 20.00, 1092, 1045.3, 21994, 0}, {"NPGB-2", 21.00, 1016, 1152.9, 21500, 0},
     {"NPGB-3", 20.00, 1092, 1241.7, 20984, 0}, {"NPGB-4", 20.00, 1016, 1092.3, 21493, 0},
     {"NPGB-5", 20.00, 940, 1365.0, 20187, 1},  {"NPGB-6", 20.49, 864, 1340.1, 17849, 1},
@@ -198,6 +246,7 @@ static const bogie_test bogie_tests[10] = {
 /* The bogie struck the post at speed mph: one W6x16 (library part) with the given footing, no cable. */
 static cs_model *bogie_model(cs_loader *l, const cs_footing_def *footing, double mph, cs_error *err) {
     cs_post_def post = cs_default_post_def();
+    cs_loader_reset(l); /* the library's W6x16, not a loaded model file's */
     if (cs_loader_part(l, CS_PART_SECTION, "W6x16", &post.section) != 0) return NULL;
     post.height = 1.0;
     post.footing = *footing;
@@ -227,24 +276,15 @@ static cs_footing_def soil_footing(double b, double d) {
 
 /* The post driven in soil: Eq. 21 with the flange (4.03 in) as B, the default dynamic factor, and no
  * pullout capacity (its skin friction). */
-static int run_bogie(cs_loader *l, const bogie_test *t, result *r) {
+static int add_bogie(suite *s, const bogie_test *t) {
     cs_footing_def f = soil_footing(4.03 * IN, t->embedment_mm * 1e-3);
     cs_error err = {0};
-    memset(r, 0, sizeof *r);
-    cs_model *m = bogie_model(l, &f, t->mph, &err);
-    if (!m) {
-        fprintf(stderr, "cablesim validate: %s: %s\n", t->name, err.message);
-        return -1;
-    }
-    int rc = run_model(m, r);
-    cs_model_free(m);
-    return rc;
+    cs_model *m = bogie_model(s->loader, &f, t->mph, &err);
+    if (!m) fprintf(stderr, "cablesim validate: %s: %s\n", t->name, err.message);
+    return add_job(s, m);
 }
 
-static void write_bogie(FILE *md, FILE *csv) {
-    char why[256];
-    cs_loader *l = cs_loader_create(NULL, why, sizeof why);
-    if (!l) return;
+static void write_bogie(FILE *md, FILE *csv, const suite *s) {
     const cs_footing_def soil = cs_default_footing_def();
     fprintf(
         md,
@@ -264,23 +304,23 @@ static void write_bogie(FILE *md, FILE *csv) {
             "| test | speed | embedment | energy measured | energy cablesim | error | deflection measured | "
             "failure measured | failure cablesim |\n|---|---|---|---|---|---|---|---|---|\n");
     int good = 0, good_even = 0;
-    for (int i = 0; i < 10; i++) {
+    for (int i = 0; i < BOGIE; i++) {
         const bogie_test *t = &bogie_tests[i];
-        result r;
-        if (run_bogie(l, t, &r) != 0) continue;
-        double e = r.absorbed / FTLB, err = rel_err(e, t->energy_ftlb);
-        const char *mode = r.post_failure == CS_EVENT_POST_PULLOUT          ? "pulled out"
-                           : r.post_failure == CS_EVENT_POST_ROTATION_LIMIT ? "rotation (45 deg)"
-                           : r.post_failure == CS_EVENT_POST_SHEAR          ? "shear"
-                                                                            : "none (post stood)";
-        int mode_ok = t->pullout ? r.post_failure == CS_EVENT_POST_PULLOUT
-                                 : r.post_failure == CS_EVENT_POST_ROTATION_LIMIT;
+        const result *r = &s->jobs[s->bogie[i]].r;
+        if (!r->ok) continue;
+        double e = r->absorbed / FTLB, err = rel_err(e, t->energy_ftlb);
+        const char *mode = r->post_failure == CS_EVENT_POST_PULLOUT          ? "pulled out"
+                           : r->post_failure == CS_EVENT_POST_ROTATION_LIMIT ? "rotation (45 deg)"
+                           : r->post_failure == CS_EVENT_POST_SHEAR          ? "shear"
+                                                                             : "none (post stood)";
+        int mode_ok = t->pullout ? r->post_failure == CS_EVENT_POST_PULLOUT
+                                 : r->post_failure == CS_EVENT_POST_ROTATION_LIMIT;
         good += mode_ok && fabs(err) <= 20.0;
         good_even += mode_ok && fabs(err) <= 20.0 && i % 2 == 1; /* NPGB-2, 4, ...: the check half */
         fprintf(md, "| %s | %.2f mph | %.0f mm | %.0f ft-lb | %.0f ft-lb | %+.0f%% | %.0f mm | %s | %s |\n",
                 t->name, t->mph, t->embedment_mm, t->energy_ftlb, e, err, t->deflection_mm,
                 t->pullout ? "pulled out" : "rotation", mode);
-        csv_row(csv, "bogie", t->name, "baseline", &r);
+        csv_row(csv, "bogie", t->name, "baseline", r);
     }
     fprintf(
         md,
@@ -289,12 +329,11 @@ static void write_bogie(FILE *md, FILE *csv) {
         "limit (load point ~0.86 m), short of the measured 1.05-1.37 m: the energy comes out right with a "
         "force above the measured average; see docs/theory.md.\n\n",
         good, good >= 8 ? "met" : "NOT met", good_even, good - good_even);
-    cs_loader_free(l);
 }
 
 /* ---- verification ---- */
 /* Eq. 21 as the engine evaluates it (a one-post model's footing capacity) against the paper. */
-static void write_verification(FILE *md) {
+static void write_verification(FILE *md, cs_loader *l) {
     fprintf(
         md,
         "## Verification against closed forms\n\nEq. 21 as the engine evaluates it (S1 = 8000 psf, H = 3 ft) "
@@ -302,9 +341,7 @@ static void write_verification(FILE *md) {
         "|\n|---|---|---|---|\n");
     const double bft[] = {0.75, 1.5, 3, 3, 8}, dft[] = {3, 3, 5, 6, 4},
                  p[] = {3593, 7186, 30349, 39024, 58851};
-    char why[256];
-    cs_loader *l = cs_loader_create(NULL, why, sizeof why);
-    for (int i = 0; l && i < 5; i++) {
+    for (int i = 0; i < 5; i++) {
         cs_footing_def f = soil_footing(bft[i] * FT, dft[i] * FT);
         cs_error err = {0};
         cs_model *m = bogie_model(l, &f, 20.0, &err);
@@ -313,7 +350,6 @@ static void write_verification(FILE *md) {
         fprintf(md, "| %.2f ft | %.0f ft | %.0f lb | %.0f lb |\n", bft[i], dft[i], p[i], pn / (LB * 9.80665));
         cs_model_free(m);
     }
-    cs_loader_free(l);
     fprintf(
         md,
         "\nThe engine's other closed-form checks run in `make test` (tests/test_*.c): rope law points, "
@@ -324,96 +360,144 @@ static void write_verification(FILE *md) {
 }
 
 /* ---- convergence and sensitivity ---- */
-/* One table per refinement: each crash test run at every value of one scenario setting, and the change
- * of the max 50-ms deceleration and the penetration from the first value to the last. */
-static void refinement_table(FILE *md, FILE *csv, const char *examples, const char *setting,
-                             const char *label, const char *const *values, int count) {
+/* A refinement: each crash test run at every value of one scenario setting (field: its offset in
+ * cs_scenario_def, a double). */
+static const struct {
+    const char *setting, *label;
+    size_t field;
+    int count;
+    const char *values[VALUES];
+} refinements[REFINE] = {
+    {"dt", "dt", offsetof(cs_scenario_def, dt), 4, {"0.5 ms", "0.25 ms", "0.1 ms", "0.05 ms"}},
+    {"solver_tolerance",
+     "solver tolerance",
+     offsetof(cs_scenario_def, solver_tolerance),
+     3,
+     {"1e-4", "1e-5", "1e-6"}},
+};
+
+static double scenario_value(const cs_scenario_def *sc, size_t field) {
+    return *(const double *)((const char *)sc + field);
+}
+
+/* Queue refinement t of crash test k at every value; a value the file's scenario already has (compared
+ * as loaded) reads the baseline job instead of running it again. */
+static void add_refinement(suite *s, int t, int k) {
+    for (int d = 0; d < refinements[t].count; d++) {
+        char set[96];
+        snprintf(set, sizeof set, "scenario.%s=%s", refinements[t].setting, refinements[t].values[d]);
+        const char *sets[] = {set, NULL};
+        cs_model_input in;
+        int rc = load_crash(s, k, sets, &in);
+        size_t f = refinements[t].field;
+        int same = rc == 0 && s->base_loaded[k] &&
+                   scenario_value(&in.scenario, f) == scenario_value(&s->base_scenario[k], f);
+        if (same && s->base[k] < 0) s->base[k] = add_loaded(s, rc, &in);
+        s->refine[t][k][d] = same ? s->base[k] : add_loaded(s, rc, &in);
+    }
+}
+
+/* One table per refinement, and the change of the max 50-ms deceleration and the penetration from the
+ * first value to the last. A run that failed has no row. */
+static void refinement_table(FILE *md, FILE *csv, const suite *s, int t) {
+    const char *const *values = refinements[t].values;
+    int count = refinements[t].count;
     fprintf(md,
             "| test | %s | outcome | max 50-ms decel | penetration | exit speed | ledger error |\n"
             "|---|---|---|---|---|---|---|\n",
-            label);
-    for (int k = 0; k < 3; k++) {
+            refinements[t].label);
+    for (int k = 0; k < CRASH; k++) {
         double first[2] = {0, 0}, last[2] = {0, 0};
         for (int d = 0; d < count; d++) {
-            char path[1024], set[96];
-            snprintf(path, sizeof path, "%s/%s.yaml", examples, crash_names[k]);
-            snprintf(set, sizeof set, "scenario.%s=%s", setting, values[d]);
-            const char *sets[] = {set, NULL};
-            result r;
-            if (run_file(path, sets, &r) != 0) continue;
+            const result *r = &s->jobs[s->refine[t][k][d]].r;
+            if (!r->ok) continue;
             char exit[32] = "-";
-            if (r.sm.outcome == CS_BREAKTHROUGH) snprintf(exit, sizeof exit, "%.2f m/s", r.sm.exit_speed);
+            if (r->sm.outcome == CS_BREAKTHROUGH) snprintf(exit, sizeof exit, "%.2f m/s", r->sm.exit_speed);
             fprintf(md, "| %s | %s | %s | %.3f g | %.3f m | %s | %.2f%% |\n", crash_names[k], values[d],
-                    cs_outcome_name(r.sm.outcome), r.sm.max_decel_50ms_g, r.sm.max_dynamic_penetration, exit,
-                    100.0 * r.sm.energy_balance_error);
-            double v[2] = {r.sm.max_decel_50ms_g, r.sm.max_dynamic_penetration};
+                    cs_outcome_name(r->sm.outcome), r->sm.max_decel_50ms_g, r->sm.max_dynamic_penetration,
+                    exit, 100.0 * r->sm.energy_balance_error);
+            double v[2] = {r->sm.max_decel_50ms_g, r->sm.max_dynamic_penetration};
             if (d == 0) memcpy(first, v, sizeof v);
             memcpy(last, v, sizeof v);
             char variant[64];
-            snprintf(variant, sizeof variant, "%s %s", setting, values[d]);
-            csv_row(csv, "convergence", crash_names[k], variant, &r);
+            snprintf(variant, sizeof variant, "%s %s", refinements[t].setting, values[d]);
+            csv_row(csv, "convergence", crash_names[k], variant, r);
         }
         fprintf(md, "| %s | %s -> %s | change | %+.1f%% | %+.1f%% | | |\n", crash_names[k], values[0],
                 values[count - 1], rel_err(first[0], last[0]), rel_err(first[1], last[1]));
     }
 }
 
-static void write_convergence(FILE *md, FILE *csv, const char *examples) {
-    static const char *const dts[] = {"0.5 ms", "0.25 ms", "0.1 ms", "0.05 ms"};
-    static const char *const tols[] = {"1e-4", "1e-5", "1e-6"};
+static void write_convergence(FILE *md, FILE *csv, const suite *s) {
     fprintf(md, "## Time-step convergence\n\n");
-    refinement_table(md, csv, examples, "dt", "dt", dts, 4);
+    refinement_table(md, csv, s, 0);
     fprintf(md, "\nTarget (issue 4): changes under 2%%.\n\n## Solver-tolerance convergence\n\n"
                 "The barrier solve stops when every relative residual is below solver_tolerance (default "
                 "1e-4). A result that changes when the tolerance is tightened depends on the solver, not "
                 "only on the model: read it as uncertain.\n\n");
-    refinement_table(md, csv, examples, "solver_tolerance", "solver tolerance", tols, 3);
+    refinement_table(md, csv, s, 1);
     fprintf(md, "\n");
 }
 
-static void write_sensitivity(FILE *md, FILE *csv, const char *examples) {
-    static const struct {
-        const char *what, *lo, *hi;
-    } inputs[] = {
-        {"impact speed 38-42 mph", "scenario.speed=38 mph", "scenario.speed=42 mph"},
-        {"soil S1 6000-8000 psf", "barrier.soil.soil_pressure=6000 psf", NULL},
-        {"line-post yield stress -10%/+10%", "barrier.posts[0].yield_stress=45 ksi",
-         "barrier.posts[0].yield_stress=55 ksi"},
-        {"cable-post friction 0.10-0.20", "barrier.cables[0].post_friction=0.1",
-         "barrier.cables[0].post_friction=0.2"},
-        {"pretension 2-8 kip", "barrier.cables[0].pretension=2 kip", "barrier.cables[0].pretension=8 kip"},
-    };
+static const struct {
+    const char *what, *lo, *hi;
+} inputs[INPUTS] = {
+    {"impact speed 38-42 mph", "scenario.speed=38 mph", "scenario.speed=42 mph"},
+    {"soil S1 6000-8000 psf", "barrier.soil.soil_pressure=6000 psf", NULL},
+    {"line-post yield stress -10%/+10%", "barrier.posts[0].yield_stress=45 ksi",
+     "barrier.posts[0].yield_stress=55 ksi"},
+    {"cable-post friction 0.10-0.20", "barrier.cables[0].post_friction=0.1",
+     "barrier.cables[0].post_friction=0.2"},
+    {"pretension 2-8 kip", "barrier.cables[0].pretension=2 kip", "barrier.cables[0].pretension=8 kip"},
+};
+
+static const char *input_set(int i, int side) {
+    return side ? inputs[i].hi : inputs[i].lo;
+}
+
+/* Queue crash test k at each end of each input's range. */
+static void add_sensitivity(suite *s, int k) {
+    for (int i = 0; i < INPUTS; i++) {
+        for (int side = 0; side < 2; side++) {
+            const char *set = input_set(i, side);
+            s->sensitivity[k][i][side] = -1;
+            if (!set) continue;
+            char other[128];
+            const char *sets[3] = {set, NULL, NULL};
+            if (strstr(set, "cables[0]")) { /* the same value on the second cable */
+                snprintf(other, sizeof other, "%s", set);
+                other[strstr(set, "cables[0]") - set + 7] = '1';
+                sets[1] = other;
+            }
+            cs_model_input in;
+            int rc = load_crash(s, k, sets, &in);
+            s->sensitivity[k][i][side] = add_loaded(s, rc, &in);
+        }
+    }
+}
+
+static void write_sensitivity(FILE *md, FILE *csv, const suite *s) {
     fprintf(
         md,
         "## Sensitivity to what the paper does not give\n\nEach input moved alone over its range (the other "
         "cable follows where a cable value is moved); the band of each response.\n\n| test | input | "
         "outcomes | "
         "max 50-ms decel | penetration |\n|---|---|---|---|---|\n");
-    for (int k = 0; k < 3; k++) {
-        char path[1024];
-        snprintf(path, sizeof path, "%s/%s.yaml", examples, crash_names[k]);
-        for (size_t i = 0; i < sizeof inputs / sizeof inputs[0]; i++) {
+    for (int k = 0; k < CRASH; k++) {
+        for (int i = 0; i < INPUTS; i++) {
             double dmin = HUGE_VAL, dmax = -HUGE_VAL, pmin = HUGE_VAL, pmax = -HUGE_VAL;
             char outcomes[96] = "";
             for (int side = 0; side < 2; side++) {
-                const char *set = side ? inputs[i].hi : inputs[i].lo;
-                if (!set) continue;
-                char other[128];
-                const char *sets[3] = {set, NULL, NULL};
-                if (strstr(set, "cables[0]")) { /* the same value on the second cable */
-                    snprintf(other, sizeof other, "%s", set);
-                    other[strstr(set, "cables[0]") - set + 7] = '1';
-                    sets[1] = other;
-                }
-                result r;
-                if (run_file(path, sets, &r) != 0) continue;
-                dmin = fmin(dmin, r.sm.max_decel_50ms_g), dmax = fmax(dmax, r.sm.max_decel_50ms_g);
-                pmin = fmin(pmin, r.sm.max_dynamic_penetration),
-                pmax = fmax(pmax, r.sm.max_dynamic_penetration);
+                int j = s->sensitivity[k][i][side];
+                if (j < 0 || !s->jobs[j].r.ok) continue;
+                const result *r = &s->jobs[j].r;
+                dmin = fmin(dmin, r->sm.max_decel_50ms_g), dmax = fmax(dmax, r->sm.max_decel_50ms_g);
+                pmin = fmin(pmin, r->sm.max_dynamic_penetration),
+                pmax = fmax(pmax, r->sm.max_dynamic_penetration);
                 size_t n = strlen(outcomes);
                 snprintf(outcomes + n, sizeof outcomes - n, "%s%s", n ? ", " : "",
-                         cs_outcome_name(r.sm.outcome));
-                csv_row(csv, "sensitivity", crash_names[k], set, &r);
+                         cs_outcome_name(r->sm.outcome));
+                csv_row(csv, "sensitivity", crash_names[k], input_set(i, side), r);
             }
             fprintf(md, "| %s | %s | %s | %.2f-%.2f g | %.2f-%.2f m |\n", crash_names[k], inputs[i].what,
                     outcomes, dmin, dmax, pmin, pmax);
@@ -424,6 +508,25 @@ static void write_sensitivity(FILE *md, FILE *csv, const char *examples) {
 
 static int wanted(const char *only, const char *part) {
     return !only || strstr(only, part) != NULL;
+}
+
+/* Queue every run the wanted parts read, in the report's order. */
+static void plan(suite *s, const char *only) {
+    int crash = wanted(only, "crash"), convergence = wanted(only, "convergence");
+    for (int k = 0; k < CRASH; k++) {
+        cs_model_input in;
+        int rc = crash || convergence ? load_crash(s, k, NULL, &in) : -1;
+        s->base_loaded[k] = rc == 0;
+        if (rc == 0) s->base_scenario[k] = in.scenario;
+        s->base[k] = crash ? add_loaded(s, rc, &in) : -1;
+    }
+    for (int i = 0; i < BOGIE && wanted(only, "bogie"); i++)
+        s->bogie[i] = add_bogie(s, &bogie_tests[i]);
+    for (int t = 0; t < REFINE && convergence; t++)
+        for (int k = 0; k < CRASH; k++)
+            add_refinement(s, t, k);
+    for (int k = 0; k < CRASH && wanted(only, "sensitivity"); k++)
+        add_sensitivity(s, k);
 }
 
 int cs_command_validate(int argc, char **argv) {
@@ -458,7 +561,19 @@ int cs_command_validate(int argc, char **argv) {
         if (csv) fclose(csv), remove(csvt);
         return 1;
     }
+    char why[256];
+    suite *s = calloc(1, sizeof *s);
+    if (!s || !(s->loader = cs_loader_create(NULL, why, sizeof why))) {
+        fprintf(stderr, "cablesim validate: %s\n", s ? why : "out of memory");
+        free(s);
+        fclose(md), remove(mdt);
+        fclose(csv), remove(csvt);
+        return 1;
+    }
+    s->examples = examples;
     time_t t0 = time(NULL);
+    plan(s, only);
+    run_all(s);
     fprintf(md, "# cablesim validation\n\nOne parameter set for every case (docs/assumptions.md); nothing is "
                 "tuned to "
                 "a test. Written by `cablesim validate`.\n\n");
@@ -467,12 +582,13 @@ int cs_command_validate(int argc, char **argv) {
         "suite,case,variant,ok,outcome,max_50ms_decel_g,max_dynamic_penetration_m,exit_speed_mps,stop_time_s,"
         "cable1_break_s,cable2_break_s,posts_failed_left,posts_failed_right,energy_balance_error,"
         "energy_absorbed_j\n");
-    result base[3];
-    if (wanted(only, "crash")) write_crash(md, csv, examples, base);
-    if (wanted(only, "bogie")) write_bogie(md, csv);
-    if (wanted(only, "verification")) write_verification(md);
-    if (wanted(only, "convergence")) write_convergence(md, csv, examples);
-    if (wanted(only, "sensitivity")) write_sensitivity(md, csv, examples);
+    if (wanted(only, "crash")) write_crash(md, csv, s);
+    if (wanted(only, "bogie")) write_bogie(md, csv, s);
+    if (wanted(only, "verification")) write_verification(md, s->loader);
+    if (wanted(only, "convergence")) write_convergence(md, csv, s);
+    if (wanted(only, "sensitivity")) write_sensitivity(md, csv, s);
+    cs_loader_free(s->loader);
+    free(s);
     fprintf(md, "Run time: %.0f s.\n", difftime(time(NULL), t0));
     int bad = ferror(md) || ferror(csv);
     bad |= fclose(md) != 0;
