@@ -55,7 +55,8 @@ static double face_normal_force(const cs_model *model, cs_state *s, double crush
     return n;
 }
 
-static int any_engaged(const cs_model *model, const cs_state *s) {
+/* Whether anything pushes on the face: an intact cable wrapped on it or a standing captured post. */
+int cs_face_loaded(const cs_model *model, const cs_state *s) {
     for (int c = 0; c < model->cable_count; c++)
         if (s->cables[c].engaged && s->cables[c].status == CS_CABLE_INTACT) return 1;
     for (int p = 0; p < model->post_count; p++)
@@ -70,7 +71,7 @@ static double crush_solve(const cs_model *model, cs_state *s) {
     const cs_vehicle_def *v = &model->vehicle.def;
     double lo = cs_crush_permanent(v, s->crush_max);
     double scale = v->crush_force[v->crush_point_count - 1];
-    if (!any_engaged(model, s)) {
+    if (!cs_face_loaded(model, s)) {
         s->crush = lo;
         s->face_force = 0.0;
         return 0.0;
@@ -153,7 +154,7 @@ static double gauss_seidel(const cs_model *model, cs_state *s, int sweeps) {
 /* The solve at the vehicle's pose as it stands: Newton, with Gauss-Seidel where Newton stalls. */
 static double solve_at_pose(const cs_model *model, cs_state *s) {
     const cs_scenario_def *sc = &model->scenario;
-    if (!any_engaged(model, s)) crush_solve(model, s); /* an unloaded face springs back to its set */
+    if (!cs_face_loaded(model, s)) crush_solve(model, s); /* an unloaded face springs back to its set */
     double worst = cs_barrier_newton(model, s);
     for (int round = 0; worst < 0.0 && round < 6; round++) { /* Newton stalled far off: Gauss-Seidel */
         gauss_seidel(model, s, 3);                           /* sweeps, then Newton again from there */
@@ -198,7 +199,7 @@ double cs_barrier_solve(const cs_model *model, cs_state *s) {
     if (worst > CS_CONTINUATION_TRIGGER && s->step > 0) worst = solve_by_continuation(model, s);
     for (int c = 0; c < model->cable_count; c++)
         cs_cable_update_tensions(&model->cables[c], &s->cables[c]);
-    s->face_force = any_engaged(model, s) ? cs_face_normal_force_now(model, s) : 0.0;
+    s->face_force = cs_face_loaded(model, s) ? cs_face_normal_force_now(model, s) : 0.0;
     s->solver_residual = worst;
     if (worst > sc->solver_tolerance) {
         s->summary.solver_warnings++;

@@ -220,6 +220,7 @@ int cs_contact_check_slip(const cs_model *model, cs_state *s);
 double cs_barrier_solve(const cs_model *model, cs_state *s);
 double cs_barrier_newton(const cs_model *model, cs_state *s);
 double cs_face_normal_force_now(const cs_model *model, cs_state *s);
+int cs_face_loaded(const cs_model *model, const cs_state *s);
 int cs_solver_init(const cs_model *model, cs_solver *w);
 void cs_solver_free(cs_solver *w);
 void cs_solver_reset(cs_solver *w);

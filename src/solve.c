@@ -105,14 +105,6 @@ static int post_on_path(const cs_model *model, const cs_state *s, int p) {
     return 0;
 }
 
-static int has_face_load(const cs_model *model, const cs_state *s) {
-    for (int c = 0; c < model->cable_count; c++)
-        if (s->cables[c].engaged && s->cables[c].status == CS_CABLE_INTACT) return 1;
-    for (int p = 0; p < model->post_count; p++)
-        if (s->posts[p].captured && cs_post_standing(&s->posts[p])) return 1;
-    return 0;
-}
-
 /* Fill the unknown list (kind, a, b) sorted along x; returns the count. */
 static int assemble(const cs_model *model, cs_state *s, cs_solver *w) {
     slot *sl = w->slots;
@@ -131,7 +123,7 @@ static int assemble(const cs_model *model, cs_state *s, cs_solver *w) {
                 sl[n++] = (slot){cs->pos[3 * i], U_HEIGHT, c, cs->node[i] == CS_NODE_LEFT ? 0 : 1};
         }
     }
-    if (has_face_load(model, s)) sl[n++] = (slot){s->pos[0], U_CRUSH, 0, 0};
+    if (cs_face_loaded(model, s)) sl[n++] = (slot){s->pos[0], U_CRUSH, 0, 0};
     qsort(sl, (size_t)n, sizeof *sl, cmp_slot);
     /* index maps: tilt of post p, node i of cable c, crush */
     for (int p = 0; p < model->post_count; p++)

@@ -274,11 +274,16 @@ static void free_summary(summary *s) {
     free(s->t);
 }
 
-static void md_num(FILE *f, double v) {
+/* A number in the format, or `missing` where it is not finite (no NaN reaches a file). */
+static void put_num(FILE *f, double v, const char *format, const char *missing) {
     if (isfinite(v))
-        fprintf(f, "%.4g", v);
+        fprintf(f, format, v);
     else
-        fprintf(f, "n/a");
+        fputs(missing, f);
+}
+
+static void md_num(FILE *f, double v) {
+    put_num(f, v, "%.4g", "n/a");
 }
 
 int cs_sweep_write_summary_md(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
@@ -355,10 +360,7 @@ int cs_sweep_write_summary_md(FILE *f, const cs_sweep_spec *spec, const double *
 }
 
 static void jnum(FILE *f, double v) {
-    if (isfinite(v))
-        fprintf(f, "%.10g", v);
-    else
-        fprintf(f, "null");
+    put_num(f, v, "%.10g", "null");
 }
 
 int cs_sweep_write_summary_json(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
