@@ -160,7 +160,15 @@ static double solve_at_pose(const cs_model *model, cs_state *s) {
         gauss_seidel(model, s, 3);                           /* sweeps, then Newton again from there */
         worst = cs_barrier_newton(model, s);
     }
-    if (worst > sc->solver_tolerance) worst = gauss_seidel(model, s, 20); /* stalled near it: polish */
+    if (worst > sc->solver_tolerance) { /* stalled near it: polish, and keep whichever is closer */
+        cs_solver_keep(model, s);
+        gauss_seidel(model, s, 20);
+        double polished = cs_barrier_newton(model, s);
+        if (polished >= 0.0 && polished < worst)
+            worst = polished;
+        else
+            cs_solver_go_back(model, s);
+    }
     if (worst < 0.0)
         worst = gauss_seidel(model, s, sc->solver_max_sweeps); /* Newton stalled, or band too wide */
     return worst;

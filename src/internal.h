@@ -110,6 +110,9 @@ typedef struct cs_solver {
     int *height_index;  /* [cable_count * 2] index of a face contact height unknown, -1 if none */
     int crush_index;
     double *x, *r, *dx, *xt, *rt;
+    double *kept;            /* unknowns saved by cs_solver_keep */
+    struct slot *slots_kept; /* and their slots */
+    int kept_n;
     size_t key_count;      /* unknowns the predictor remembers, keyed by element (slot_key) */
     double *last;          /* [keys] each unknown's value at the start of the last step's solve */
     long *last_step;       /* [keys] the step that value belongs to */
@@ -225,6 +228,9 @@ int cs_solver_init(const cs_model *model, cs_solver *w);
 void cs_solver_free(cs_solver *w);
 void cs_solver_reset(cs_solver *w);
 void cs_solver_restart(const cs_model *model, cs_state *s);
+double cs_barrier_residual(const cs_model *model, cs_state *s);
+void cs_solver_keep(const cs_model *model, cs_state *s);
+void cs_solver_go_back(const cs_model *model, cs_state *s);
 void cs_barrier_force(const cs_model *model, cs_state *s);
 void cs_barrier_commit(const cs_model *model, cs_state *s);
 double cs_barrier_stored_energy(const cs_model *model, const cs_state *s);

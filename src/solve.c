@@ -59,20 +59,21 @@ int cs_solver_init(const cs_model *model, cs_solver *w) {
     size_t n = 2 * np + nc * nn + 2 * nc + 1, per_row = 3 * (12 + 8 * nc) + 1;
     w->slots = calloc(n, sizeof *w->slots);
     w->slots_lu = calloc(n, sizeof *w->slots_lu);
+    w->slots_kept = calloc(n, sizeof *w->slots_kept);
     w->tilt_index = calloc(np ? np : 1, sizeof *w->tilt_index);
     w->node_index = calloc(nc ? nc * nn : 1, sizeof *w->node_index);
     w->height_index = calloc(nc ? 2 * nc : 1, sizeof *w->height_index);
-    w->x = calloc(5 * n, sizeof *w->x);
+    w->x = calloc(6 * n, sizeof *w->x);
     w->band_capacity = n * per_row;
     w->band = calloc(w->band_capacity, sizeof *w->band);
     w->pivot = calloc(n, sizeof *w->pivot);
     w->key_count = 2 * np + nc * (np + 2) + 2 * nc + 1; /* see slot_key */
     w->last = calloc(w->key_count, sizeof *w->last);
     w->last_step = calloc(w->key_count, sizeof *w->last_step);
-    if (!w->slots || !w->slots_lu || !w->last || !w->last_step || !w->tilt_index || !w->node_index ||
-        !w->height_index || !w->x || !w->band || !w->pivot)
+    if (!w->slots || !w->slots_lu || !w->slots_kept || !w->last || !w->last_step || !w->tilt_index ||
+        !w->node_index || !w->height_index || !w->x || !w->band || !w->pivot)
         return -1;
-    w->r = w->x + n, w->dx = w->x + 2 * n, w->xt = w->x + 3 * n, w->rt = w->x + 4 * n;
+    w->r = w->x + n, w->dx = w->x + 2 * n, w->xt = w->x + 3 * n, w->rt = w->x + 4 * n, w->kept = w->x + 5 * n;
     return 0;
 }
 
@@ -84,8 +85,8 @@ void cs_solver_reset(cs_solver *w) {
 }
 
 void cs_solver_free(cs_solver *w) {
-    free(w->slots), free(w->slots_lu), free(w->tilt_index), free(w->node_index), free(w->height_index),
-        free(w->x), free(w->band), free(w->pivot), free(w->last), free(w->last_step);
+    free(w->slots), free(w->slots_lu), free(w->slots_kept), free(w->tilt_index), free(w->node_index),
+        free(w->height_index), free(w->x), free(w->band), free(w->pivot), free(w->last), free(w->last_step);
     memset(w, 0, sizeof *w);
 }
 
@@ -467,6 +468,32 @@ void cs_solver_restart(const cs_model *model, cs_state *s) {
         if (w->last_step[key] == s->step) w->x[k] = w->last[key];
     }
     scatter(model, s, w, n, w->x);
+}
+
+/* Newton's measure of how far the state as it stands is from equilibrium (the largest scaled residual). */
+double cs_barrier_residual(const cs_model *model, cs_state *s) {
+    cs_solver *w = &s->solver;
+    int n = assemble(model, s, w);
+    if (n <= 0) return 0.0;
+    gather(s, w, n, w->x);
+    scatter(model, s, w, n, w->x);
+    residual(model, s, w, n, w->r);
+    return norm_inf(w->r, n);
+}
+
+/* Remember the unknowns as they stand (with their slots: the order along x can change), to go back to
+ * them if a later attempt ends further off. */
+void cs_solver_keep(const cs_model *model, cs_state *s) {
+    cs_solver *w = &s->solver;
+    w->kept_n = assemble(model, s, w);
+    gather(s, w, w->kept_n, w->kept);
+    memcpy(w->slots_kept, w->slots, (size_t)w->kept_n * sizeof *w->slots);
+}
+
+void cs_solver_go_back(const cs_model *model, cs_state *s) {
+    cs_solver *w = &s->solver;
+    memcpy(w->slots, w->slots_kept, (size_t)w->kept_n * sizeof *w->slots);
+    scatter(model, s, w, w->kept_n, w->kept);
 }
 
 double cs_barrier_newton(const cs_model *model, cs_state *s) {
