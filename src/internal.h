@@ -228,7 +228,6 @@ int cs_solver_init(const cs_model *model, cs_solver *w);
 void cs_solver_free(cs_solver *w);
 void cs_solver_reset(cs_solver *w);
 void cs_solver_restart(const cs_model *model, cs_state *s);
-double cs_barrier_residual(const cs_model *model, cs_state *s);
 void cs_solver_keep(const cs_model *model, cs_state *s);
 void cs_solver_go_back(const cs_model *model, cs_state *s);
 void cs_barrier_force(const cs_model *model, cs_state *s);

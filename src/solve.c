@@ -470,17 +470,6 @@ void cs_solver_restart(const cs_model *model, cs_state *s) {
     scatter(model, s, w, n, w->x);
 }
 
-/* Newton's measure of how far the state as it stands is from equilibrium (the largest scaled residual). */
-double cs_barrier_residual(const cs_model *model, cs_state *s) {
-    cs_solver *w = &s->solver;
-    int n = assemble(model, s, w);
-    if (n <= 0) return 0.0;
-    gather(s, w, n, w->x);
-    scatter(model, s, w, n, w->x);
-    residual(model, s, w, n, w->r);
-    return norm_inf(w->r, n);
-}
-
 /* Remember the unknowns as they stand (with their slots: the order along x can change), to go back to
  * them if a later attempt ends further off. */
 void cs_solver_keep(const cs_model *model, cs_state *s) {
