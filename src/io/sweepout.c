@@ -286,18 +286,32 @@ static void md_num(FILE *f, double v) {
     put_num(f, v, "%.4g", "n/a");
 }
 
-int cs_sweep_write_summary_md(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
-                              long n, char *why, size_t why_size) {
+/* The summary's body in one format, from the computed summary. */
+typedef void (*summary_writer)(FILE *f, const cs_sweep_spec *spec, long n, const summary *s);
+
+/* Compute the summary, write it with `body`, and report a failure to allocate or to write. */
+static int write_summary(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
+                         long n, char *why, size_t why_size, summary_writer body) {
     summary s;
     if (make_summary(&s, spec, x, r, n) != 0) {
         snprintf(why, why_size, "out of memory");
         return -1;
     }
+    body(f, spec, n, &s);
+    free_summary(&s);
+    if (ferror(f)) {
+        snprintf(why, why_size, "write error");
+        return -1;
+    }
+    return 0;
+}
+
+static void summary_md(FILE *f, const cs_sweep_spec *spec, long n, const summary *s) {
     int k = spec->var_count;
     fprintf(f, "# Sweep %s\n\n", spec->file);
     fprintf(f, "Model `%s`, method %s, %ld runs", spec->model, method_names[spec->method], n);
     if (spec->method != CS_SWEEP_GRID) fprintf(f, ", seed %llu", (unsigned long long)spec->seed);
-    fprintf(f, ": %ld ran to the end, %ld bad models, %ld failed.\n\n", s.ok, s.bad_model, s.failed);
+    fprintf(f, ": %ld ran to the end, %ld bad models, %ld failed.\n\n", s->ok, s->bad_model, s->failed);
     for (int i = 0; i < spec->set_count; i++)
         fprintf(f, "%s`%s`%s", i ? ", " : "Fixed for every run: ", spec->sets[i],
                 i + 1 == spec->set_count ? ".\n\n" : "");
@@ -308,11 +322,11 @@ int cs_sweep_write_summary_md(FILE *f, const cs_sweep_spec *spec, const double *
     fprintf(f,
             "\n## Outcomes\n\nProbabilities over the %ld runs that ran to the end, with 95%% Wilson score "
             "intervals.\n\n| outcome | runs | probability | 95%% interval |\n| --- | --- | --- | --- |\n",
-            s.ok);
-    for (int t = 0; t < s.tally_count; t++) {
-        cs_interval w = cs_wilson(s.t[t].count, s.ok, Z95);
-        fprintf(f, "| %s%s | %ld | ", strncmp(s.t[t].name, "rating ", 7) == 0 ? "ASTM F2656 rating " : "",
-                s.t[t].label, s.t[t].count);
+            s->ok);
+    for (int t = 0; t < s->tally_count; t++) {
+        cs_interval w = cs_wilson(s->t[t].count, s->ok, Z95);
+        fprintf(f, "| %s%s | %ld | ", strncmp(s->t[t].name, "rating ", 7) == 0 ? "ASTM F2656 rating " : "",
+                s->t[t].label, s->t[t].count);
         md_num(f, w.p);
         fprintf(f, " | ");
         md_num(f, w.lo);
@@ -323,7 +337,7 @@ int cs_sweep_write_summary_md(FILE *f, const cs_sweep_spec *spec, const double *
     fprintf(f, "\n## Responses\n\n| response | mean | sd | min | 5%% | median | 95%% | max |\n"
                "| --- | --- | --- | --- | --- | --- | --- | --- |\n");
     for (int q = 0; q < R_COUNT; q++) {
-        const stats *st = &s.resp[q];
+        const stats *st = &s->resp[q];
         const double v[] = {st->mean, st->sd, st->min, st->p05, st->p50, st->p95, st->max};
         fprintf(f, "| %s |", response_labels[q]);
         for (int c = 0; c < 7; c++)
@@ -341,7 +355,7 @@ int cs_sweep_write_summary_md(FILE *f, const cs_sweep_spec *spec, const double *
     for (int j = 0; j < k; j++) {
         fprintf(f, "| `%s` |", spec->vars[j].path);
         for (int q = 0; q < R_COUNT; q++) {
-            double rho = s.rho[j * R_COUNT + q];
+            double rho = s->rho[j * R_COUNT + q];
             fputc(' ', f);
             if (isfinite(rho))
                 fprintf(f, "%+.2f", rho);
@@ -351,25 +365,18 @@ int cs_sweep_write_summary_md(FILE *f, const cs_sweep_spec *spec, const double *
         }
         fputc('\n', f);
     }
-    free_summary(&s);
-    if (ferror(f)) {
-        snprintf(why, why_size, "write error");
-        return -1;
-    }
-    return 0;
+}
+
+int cs_sweep_write_summary_md(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
+                              long n, char *why, size_t why_size) {
+    return write_summary(f, spec, x, r, n, why, why_size, summary_md);
 }
 
 static void jnum(FILE *f, double v) {
     put_num(f, v, "%.10g", "null");
 }
 
-int cs_sweep_write_summary_json(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
-                                long n, char *why, size_t why_size) {
-    summary s;
-    if (make_summary(&s, spec, x, r, n) != 0) {
-        snprintf(why, why_size, "out of memory");
-        return -1;
-    }
+static void summary_json(FILE *f, const cs_sweep_spec *spec, long n, const summary *s) {
     int k = spec->var_count;
     fprintf(f, "{\"spec\":");
     cs_json_string(f, spec->file);
@@ -378,7 +385,7 @@ int cs_sweep_write_summary_json(FILE *f, const cs_sweep_spec *spec, const double
     fprintf(
         f,
         ",\"method\":\"%s\",\"seed\":%llu,\"runs\":%ld,\"ok\":%ld,\"bad_model\":%ld,\"failed\":%ld,\"set\":[",
-        method_names[spec->method], (unsigned long long)spec->seed, n, s.ok, s.bad_model, s.failed);
+        method_names[spec->method], (unsigned long long)spec->seed, n, s->ok, s->bad_model, s->failed);
     for (int i = 0; i < spec->set_count; i++) {
         if (i) fputc(',', f);
         cs_json_string(f, spec->sets[i]);
@@ -394,11 +401,11 @@ int cs_sweep_write_summary_json(FILE *f, const cs_sweep_spec *spec, const double
         fputc('}', f);
     }
     fprintf(f, "],\"probabilities\":{");
-    for (int t = 0; t < s.tally_count; t++) {
-        cs_interval w = cs_wilson(s.t[t].count, s.ok, Z95);
+    for (int t = 0; t < s->tally_count; t++) {
+        cs_interval w = cs_wilson(s->t[t].count, s->ok, Z95);
         if (t) fputc(',', f);
-        cs_json_string(f, s.t[t].name);
-        fprintf(f, ":{\"count\":%ld,\"p\":", s.t[t].count);
+        cs_json_string(f, s->t[t].name);
+        fprintf(f, ":{\"count\":%ld,\"p\":", s->t[t].count);
         jnum(f, w.p);
         fprintf(f, ",\"ci95\":[");
         jnum(f, w.lo);
@@ -409,7 +416,7 @@ int cs_sweep_write_summary_json(FILE *f, const cs_sweep_spec *spec, const double
     fprintf(f, "},\"responses\":{");
     static const char *const stat_names[] = {"mean", "sd", "min", "p05", "median", "p95", "max"};
     for (int q = 0; q < R_COUNT; q++) {
-        const stats *st = &s.resp[q];
+        const stats *st = &s->resp[q];
         const double v[] = {st->mean, st->sd, st->min, st->p05, st->p50, st->p95, st->max};
         fprintf(f, "%s\"%s\":{", q ? "," : "", response_keys[q]);
         for (int c = 0; c < 7; c++) {
@@ -425,15 +432,14 @@ int cs_sweep_write_summary_json(FILE *f, const cs_sweep_spec *spec, const double
             if (j) fputc(',', f);
             cs_json_string(f, spec->vars[j].path);
             fputc(':', f);
-            jnum(f, s.rho[j * R_COUNT + q]);
+            jnum(f, s->rho[j * R_COUNT + q]);
         }
         fputc('}', f);
     }
     fprintf(f, "}}\n");
-    free_summary(&s);
-    if (ferror(f)) {
-        snprintf(why, why_size, "write error");
-        return -1;
-    }
-    return 0;
+}
+
+int cs_sweep_write_summary_json(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
+                                long n, char *why, size_t why_size) {
+    return write_summary(f, spec, x, r, n, why, why_size, summary_json);
 }
