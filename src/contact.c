@@ -78,7 +78,8 @@ void cs_contact_face_force(const cs_model *model, const cs_state *s, int c, int 
     (void)model;
 }
 
-/* dir * F_z - mu F_n with the contact of corner k at body height z (the rope in the spans held). */
+/* dir * F_z - mu F_n - the friction floor with the contact of corner k at body height z (the rope in
+ * the spans held). */
 static double height_excess(const cs_model *model, cs_state *s, int c, int i, int k, double z, int dir) {
     cs_cable_state *cs = &s->cables[c];
     const cs_cable_model *cm = &model->cables[c];
@@ -88,7 +89,7 @@ static double height_excess(const cs_model *model, cs_state *s, int c, int i, in
     cs->tension[i] = cs_span_tension(cm, cs, i);
     double fz, fn;
     cs_contact_face_force(model, s, c, i, &fz, &fn);
-    return dir * fz - model->vehicle.def.face_friction * fn;
+    return dir * fz - model->vehicle.def.face_friction * fn - CS_FRICTION_FLOOR * cm->rope.fu;
 }
 
 /* Local solve of a contact's height (Coulomb friction on the vertical face, measured from where it was
@@ -104,7 +105,7 @@ double cs_contact_solve_height(const cs_model *model, cs_state *s, int c, int i,
         double fz, fn;
         height_excess(model, s, c, i, k, cs->corner_z[k], 1);
         cs_contact_face_force(model, s, c, i, &fz, &fn);
-        double b = model->vehicle.def.face_friction * fn, dz = cs->corner_z[k] - z0;
+        double b = model->vehicle.def.face_friction * fn + CS_FRICTION_FLOOR * fu, dz = cs->corner_z[k] - z0;
         entry =
             (fabs(fz) > b || (dz != 0.0 && fabs(fabs(fz) - b) > tol * fu)) ? fabs(fabs(fz) - b) / fu : 0.0;
     }

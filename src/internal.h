@@ -20,6 +20,12 @@ typedef struct cs_rope {
     double e_break; /* breaking strain */
 } cs_rope;
 
+/* The width, as a fraction of the rope's strength Fu, over which the solver rounds the stick/slip switch
+ * of supports and face contacts; also the least force friction holds on the face before a contact
+ * slides, however small the rope's pull (docs/assumptions.md). Without that floor a contact of a slack
+ * rope has no friction and drifts, within the solver's tolerance, a little every step. */
+#define CS_FRICTION_FLOOR 1e-4
+
 /* Strength efficiency of a wire rope bent over a radius: D/d = bend diameter / rope diameter. */
 double cs_rope_bend_efficiency(double d_ratio);
 
@@ -133,7 +139,8 @@ struct cs_state {
     /* vehicle */
     double pos[3], vel[3], quat[4], omega[3];     /* omega in the body frame */
     double step_start_pos[3], step_start_quat[4]; /* the pose the step started from */
-    double acc[3];
+    double acc[3], ang_acc[3]; /* linear (world) and angular (body) accelerations at the pose */
+    double tyre_power;         /* power the tyres dissipate at the pose, W */
     double force[3], moment[3]; /* barrier resultant on the vehicle (world, about the CG) */
     double crush, crush_max;    /* face set-back now and the largest reached, m */
     double crush_committed, crush_force_committed;
@@ -204,6 +211,7 @@ void cs_vehicle_body_to_world(const cs_state *s, const double *body, double *wor
 void cs_vehicle_face_point(const cs_model *model, const cs_state *s, double crush, double y_body,
                            double z_body, double *world);
 void cs_vehicle_integrate(const cs_model *model, cs_state *s);
+void cs_vehicle_finish(const cs_model *model, cs_state *s);
 double cs_crush_force(const cs_vehicle_def *v, double crush, double crush_max);
 double cs_crush_curve(const cs_vehicle_def *v, double crush);
 double cs_crush_permanent(const cs_vehicle_def *v, double crush_max);

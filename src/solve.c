@@ -9,9 +9,12 @@
  *           |T_L - T_R| <= b is T_high <= exp(mu theta) T_low; the projection makes the node stick
  *           (dm = 0) inside the band and slide (lambda = +-b) outside it, as Coulomb friction.
  *           eps keeps a node between two slack spans sticking instead of undetermined.
+ *   height: the same for a contact on the face, lambda = the pull up the face, b = mu F_n + w: the
+ *           floor w holds the contact of a slack rope where it is (with b = 0 only the eps term
+ *           would, and any dz with eps c |dz| below the tolerance, up to ~0.4 m, would pass).
  *   crush:  N(crush) - C(crush)                                             (barrier.c)
- * The clamp's corners are rounded over 1e-4 Fu (softplus) so that Newton sees a smooth switch between
- * sticking and sliding (docs/assumptions.md).
+ * The clamp's corners are rounded over w = CS_FRICTION_FLOOR Fu (softplus) so that Newton sees a smooth
+ * switch between sticking and sliding (docs/assumptions.md).
  * Unknowns are ordered along the barrier, so the Jacobian is banded: finite differences perturb
  * columns 2w + 1 apart together, and a banded LU with partial pivoting solves each Newton step. Cost
  * is linear in the number of posts; the solution does not depend on any sweep order, so a symmetric
@@ -262,7 +265,7 @@ static double node_residual(const cs_model *model, const cs_state *s, int c, int
     double lambda = tl - tr, b = tanh(0.5 * mu_theta) * (tl + tr);
     double cstiff = cm->rope.ea / (cs_span_length(cs, i - 1) + cs_span_length(cs, i) + 1e-9);
     double dm = cs->m[i] - cs->m_commit[i], y = lambda + cstiff * dm;
-    double proj = smooth_clamp(y, b, 1e-4 * cm->rope.fu);
+    double proj = smooth_clamp(y, b, CS_FRICTION_FLOOR * cm->rope.fu);
     return (lambda - proj + CS_STICK_EPS * cstiff * dm) / cm->rope.fu;
 }
 
@@ -277,7 +280,7 @@ static double height_residual(const cs_model *model, const cs_state *s, int c, i
     double b = model->vehicle.def.face_friction * fn;
     double cstiff = cm->rope.ea / (cs_span_length(cs, i - 1) + cs_span_length(cs, i) + 1e-9);
     double dz = cs->corner_z[k] - cs->corner_z_commit[k];
-    double proj = smooth_clamp(fz + cstiff * dz, b, 1e-4 * cm->rope.fu);
+    double w = CS_FRICTION_FLOOR * cm->rope.fu, proj = smooth_clamp(fz + cstiff * dz, b + w, w);
     return (fz - proj + CS_STICK_EPS * cstiff * dz) / cm->rope.fu;
 }
 

@@ -96,6 +96,8 @@ void cs_state_reset(const cs_model *model, cs_state *s) {
     quat_from_yaw(s->quat, model->start_yaw);
     v3_set(s->omega, 0.0, 0.0, 0.0);
     v3_set(s->acc, 0.0, 0.0, 0.0);
+    v3_set(s->ang_acc, 0.0, 0.0, 0.0);
+    s->tyre_power = 0.0;
     v3_set(s->force, 0.0, 0.0, 0.0);
     v3_set(s->moment, 0.0, 0.0, 0.0);
     s->crush = s->crush_max = s->crush_committed = s->crush_force_committed = s->face_force = 0.0;

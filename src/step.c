@@ -83,7 +83,7 @@ cs_status cs_step(const cs_model *model, cs_state *s, cs_error *err) {
     if (s->frozen || s->outcome != CS_RUNNING) return CS_OK;
     v3_copy(s->step_start_pos, s->pos);
     memcpy(s->step_start_quat, s->quat, sizeof s->quat);
-    cs_vehicle_integrate(model, s); /* 1. the vehicle moves under last step's forces */
+    cs_vehicle_integrate(model, s); /* 1. the vehicle moves: half a kick and a drift */
     s->t += model->scenario.dt;
     s->step++;
     cs_contact_update(model, s);  /* 2. cables wrap onto or leave the face, */
@@ -91,7 +91,8 @@ cs_status cs_step(const cs_model *model, cs_state *s, cs_error *err) {
     cs_barrier_solve(model, s);   /* 3. posts, sliding and crush in equilibrium */
     cs_barrier_commit(model, s);  /* 4. plastic flow, friction and crush work */
     resolve_failures(model, s);   /* 5. breaks, post and anchor failures */
-    cs_barrier_force(model, s);   /* 6. the barrier's push for the next step */
+    cs_barrier_force(model, s);   /* 6. the barrier's push, */
+    cs_vehicle_finish(model, s);  /*    the second half kick */
     cs_energy_update(model, s);   /* 7. the ledger */
     cs_response_update(model, s); /* 8. response parameters, end of the run */
     return check_numbers(model, s, err);

@@ -3,9 +3,11 @@
  * Forces: gravity; each tyre a vertical spring-damper at its contact point (stiffness from the static
  * axle load and a static deflection), with rolling resistance along the wheel's heading and regularised
  * Coulomb friction across it, F = -mu N v / sqrt(v^2 + v_reg^2); the barrier's resultant force and
- * moment from the last quasi-static solve. Integration is semi-implicit Euler: v += a dt, x += v dt,
- * and Euler's equations in the body frame, I dw/dt = tau - w x I w, with the quaternion advanced by
- * the exponential map.
+ * moment from the quasi-static solve at the pose. Integration is velocity Verlet (kick-drift-kick,
+ * second order in dt): v += a dt / 2 with the forces at the step's start, x += v dt, the barrier
+ * solved at the new pose, v += a dt / 2 with the forces there; the same for Euler's equations in the
+ * body frame, I dw/dt = tau - w x I w, with the quaternion advanced by the exponential map. The tyre
+ * forces depend on velocity too: they are taken with the half-step velocity.
  *
  * Crush: the front face sits cg_to_front - crush ahead of the CG. Loading follows the force-deformation
  * curve (extrapolated with its last slope); below the largest crush reached the face unloads elastically
@@ -79,9 +81,11 @@ static void tyre_force(const cs_model *model, const cs_state *s, int w, double *
     *power += -(ff * vf + fs * vs) + vm->tyre_c[w] * v[2] * v[2];
 }
 
-void cs_vehicle_integrate(const cs_model *model, cs_state *s) {
+/* Linear and angular (body frame) accelerations at the pose and velocities as they stand, with the
+ * barrier's last resultant; and the power the tyres dissipate. */
+static void accelerations(const cs_model *model, cs_state *s) {
     const cs_vehicle_model *vm = &model->vehicle;
-    double dt = model->scenario.dt, m = vm->def.mass;
+    double m = vm->def.mass;
     double f[3], mo[3], power = 0.0;
     v3_set(f, s->force[0], s->force[1], s->force[2] - m * model->scenario.gravity);
     v3_copy(mo, s->moment);
@@ -93,20 +97,38 @@ void cs_vehicle_integrate(const cs_model *model, cs_state *s) {
         v3_cross(t, r, fw);
         v3_add(mo, mo, t);
     }
-    s->e_friction += power * dt;
-
+    s->tyre_power = power;
     v3_scale(s->acc, f, 1.0 / m);
-    v3_addto(s->vel, s->acc, dt);
-    v3_addto(s->pos, s->vel, dt);
-
     double tb[3], iw[3], gyro[3];
     quat_unrotate(tb, s->quat, mo);
     for (int i = 0; i < 3; i++)
         iw[i] = vm->def.inertia[i] * s->omega[i];
     v3_cross(gyro, s->omega, iw);
     for (int i = 0; i < 3; i++)
-        s->omega[i] += dt * vm->inv_inertia[i] * (tb[i] - gyro[i]);
+        s->ang_acc[i] = vm->inv_inertia[i] * (tb[i] - gyro[i]);
+}
+
+/* Half a step's kick: velocities by the accelerations, and the tyres' dissipation over that half. */
+static void kick(const cs_model *model, cs_state *s) {
+    double h = 0.5 * model->scenario.dt;
+    v3_addto(s->vel, s->acc, h);
+    v3_addto(s->omega, s->ang_acc, h);
+    s->e_friction += s->tyre_power * h;
+}
+
+/* Start of a step: kick with the forces at the step's start, then drift to the new pose. */
+void cs_vehicle_integrate(const cs_model *model, cs_state *s) {
+    double dt = model->scenario.dt;
+    if (s->step == 0) accelerations(model, s); /* the first step: no forces from a last one yet */
+    kick(model, s);
+    v3_addto(s->pos, s->vel, dt);
     quat_integrate(s->quat, s->omega, dt);
+}
+
+/* End of a step: kick with the forces at the new pose (the barrier's solved there). */
+void cs_vehicle_finish(const cs_model *model, cs_state *s) {
+    accelerations(model, s);
+    kick(model, s);
 }
 
 double cs_vehicle_kinetic_energy(const cs_model *model, const cs_state *s) {
