@@ -139,8 +139,8 @@ struct cs_state {
     /* vehicle */
     double pos[3], vel[3], quat[4], omega[3];     /* omega in the body frame */
     double step_start_pos[3], step_start_quat[4]; /* the pose the step started from */
-    double acc[3], ang_acc[3]; /* linear (world) and angular (body) accelerations at the pose */
-    double tyre_power;         /* power the tyres dissipate at the pose, W */
+    double acc[3], ang_acc[3];  /* linear (world) and angular (body) accelerations at the pose */
+    double tyre_power;          /* power the tyres dissipate at the pose, W */
     double force[3], moment[3]; /* barrier resultant on the vehicle (world, about the CG) */
     double crush, crush_max;    /* face set-back now and the largest reached, m */
     double crush_committed, crush_force_committed;
