@@ -114,8 +114,12 @@ echo "bench: cost against barrier length..."
     echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
     for n in $POSTS; do
         bash bench/gen_posts.sh "$n" >"$out/posts-$n.yaml"
-        r=$("$engine" "$out/posts-$n.yaml" --repeat "$POSTS_REPEAT" --t-end "$POSTS_T_END")
-        echo "| $n | $(field engine_ms_best "$r") ms | $(field cpu_ms_best "$r") ms | $(field steps "$r") | $(field us_per_step "$r") us | $(field ns_per_post_step "$r") ns | $(field outcome "$r") | $(field load_ms "$r") ms | $(field peak_rss_kb "$r") kB |"
+        # a run the engine stops (numerical guard) is a result too: its row says so, and the rest go on
+        if r=$("$engine" "$out/posts-$n.yaml" --repeat "$POSTS_REPEAT" --t-end "$POSTS_T_END" 2>"$out/posts-$n.err"); then
+            echo "| $n | $(field engine_ms_best "$r") ms | $(field cpu_ms_best "$r") ms | $(field steps "$r") | $(field us_per_step "$r") us | $(field ns_per_post_step "$r") ns | $(field outcome "$r") | $(field load_ms "$r") ms | $(field peak_rss_kb "$r") kB |"
+        else
+            echo "| $n | failed | | | | | $(tr '\n|' '  ' <"$out/posts-$n.err") | | |"
+        fi
     done
     echo
 } >>"$md"
