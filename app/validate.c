@@ -409,7 +409,6 @@ static double refinement_table(FILE *md, FILE *csv, const suite *s, int t) {
             "|---|---|---|---|---|---|---|\n",
             refinements[t].label);
     for (int k = 0; k < CRASH; k++) {
-        double first[2] = {0, 0}, last[2] = {0, 0};
         for (int d = 0; d < count; d++) {
             const result *r = &s->jobs[s->refine[t][k][d]].r;
             if (!r->ok) continue;
@@ -418,9 +417,6 @@ static double refinement_table(FILE *md, FILE *csv, const suite *s, int t) {
             fprintf(md, "| %s | %s | %s | %.3f g | %.3f m | %s | %.2f%% |\n", crash_names[k], values[d],
                     cs_outcome_name(r->sm.outcome), r->sm.max_decel_50ms_g, r->sm.max_dynamic_penetration,
                     exit, 100.0 * r->sm.energy_balance_error);
-            double v[2] = {r->sm.max_decel_50ms_g, r->sm.max_dynamic_penetration};
-            if (d == 0) memcpy(first, v, sizeof v);
-            memcpy(last, v, sizeof v);
             char variant[64];
             snprintf(variant, sizeof variant, "%s %s", refinements[t].setting, values[d]);
             csv_row(csv, "convergence", crash_names[k], variant, r);
@@ -430,9 +426,11 @@ static double refinement_table(FILE *md, FILE *csv, const suite *s, int t) {
             worst = HUGE_VAL;
             continue;
         }
+        double decel = rel_err(a->sm.max_decel_50ms_g, b->sm.max_decel_50ms_g),
+               pen = rel_err(a->sm.max_dynamic_penetration, b->sm.max_dynamic_penetration);
         fprintf(md, "| %s | %s -> %s | change | %+.1f%% | %+.1f%% | | |\n", crash_names[k], values[0],
-                values[count - 1], rel_err(first[0], last[0]), rel_err(first[1], last[1]));
-        worst = fmax(worst, fmax(fabs(rel_err(first[0], last[0])), fabs(rel_err(first[1], last[1]))));
+                values[count - 1], decel, pen);
+        worst = fmax(worst, fmax(fabs(decel), fabs(pen)));
     }
     return worst;
 }
