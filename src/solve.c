@@ -11,7 +11,7 @@
  *           eps keeps a node between two slack spans sticking instead of undetermined.
  *   height: the same for a contact on the face, lambda = the pull up the face, b = mu F_n + w: the
  *           floor w holds the contact of a slack rope where it is (with b = 0 only the eps term
- *           would, and any dz with eps c |dz| below the tolerance, up to ~0.4 m, would pass).
+ *           would, and any dz with eps c |dz| below the tolerance, up to ~0.4 m at 1e-4, would pass).
  *   crush:  N(crush) - C(crush)                                             (barrier.c)
  * The clamp's corners are rounded over w = CS_FRICTION_FLOOR Fu (softplus) so that Newton sees a smooth
  * switch between sticking and sliding (docs/assumptions.md).
