@@ -60,9 +60,60 @@ double cs_span_length(const cs_cable_state *cs, int i) {
     return v3_dist(cs->pos + 3 * i, cs->pos + 3 * (i + 1));
 }
 
-static double span_tension_at(const cs_rope *r, double length, double material, double ep) {
-    if (material <= 1e-12) return r->fu; /* no rope left in the span: as taut as the rope gets */
-    return cs_rope_tension(r, length / material - 1.0, ep);
+/* Sag term of span i, w_n^2 l^3 = w^2 h^2 l: its weight across the chord (w_n = w h / l, h the chord's
+ * length in plan) over its chord length l cubed. */
+static double span_sag(const cs_rope *r, const cs_cable_state *cs, int i) {
+    const double *a = cs->pos + 3 * i, *b = cs->pos + 3 * (i + 1);
+    double dx = b[0] - a[0], dy = b[1] - a[1], dz = b[2] - a[2], h2 = dx * dx + dy * dy;
+    return r->w * r->w * h2 * sqrt(h2 + dz * dz);
+}
+
+/* Tension of a span with `material` of rope (plastic strain ep) over a chord of `length`, hanging by its
+ * own weight (sag term q = w_n^2 l^3). A shallow parabola of tension T is longer than its chord by
+ * q / (24 T^2), so elastically s (1 + ep + T/EA) = l + q / (24 T^2), i.e. T^3 - a T^2 - c = 0 with
+ * a = EA (l/s - 1 - ep) and c = EA q / (24 s): one positive root, smooth in l and s (no slack kink; a
+ * weightless rope, q = 0, has T = max(a, 0)). Newton from above the root converges monotonically (g
+ * is increasing and convex there). The backbone caps T at the arc's strain. *arc gets the arc's strain
+ * and *yields whether the backbone capped T (the rope yields). */
+static double span_tension_sag(const cs_rope *r, double length, double material, double ep, double q,
+                               double *arc, int *yields) {
+    *yields = 0;
+    if (material <= 1e-12) { /* no rope left in the span: as taut as the rope gets */
+        *arc = r->e_break * 2.0;
+        return r->fu;
+    }
+    double e = length / material - 1.0;
+    if (q <= 0.0) {
+        double t = cs_rope_tension(r, e, ep);
+        *yields = t > 0.0 && r->ea * (e - ep) > t;
+        *arc = e;
+        return t;
+    }
+    double a = r->ea * (e - ep), c = r->ea * q / (24.0 * material);
+    /* bounds above the root: T^2 (T - a) = c gives T - a < c / a^2 and < c^(1/3) for a > 0, and
+     * T < c^(1/3) and < (c / -a)^(1/2) for a < 0 */
+    double t = cbrt(c);
+    if (a > 0.0) t = a + fmin(t, c / (a * a));
+    if (a < 0.0) t = fmin(t, sqrt(-c / a));
+    for (int it = 0; it < 100; it++) {
+        double dt = (t * t * (t - a) - c) / (t * (3.0 * t - 2.0 * a));
+        t -= dt;
+        if (dt <= 1e-15 * t) break;
+    }
+    *arc = ep + t / r->ea;
+    double b = rope_backbone(r, *arc);
+    if (t > b) {
+        t = b;
+        *arc = e + c / (r->ea * t * t);
+        *yields = 1;
+    }
+    return t;
+}
+
+static double span_tension_at(const cs_rope *r, double length, double material, double ep, double q) {
+    double arc;
+    int yields;
+    return span_tension_sag(r, length, material, ep, q, &arc, &yields);
 }
 
 /* Plastic strain of span i with its ends at material coordinates lo and hi: the rope it kept since the
@@ -81,7 +132,7 @@ static double span_plastic(const cs_cable_state *cs, int i, double lo, double hi
 
 double cs_span_tension(const cs_cable_model *cm, const cs_cable_state *cs, int i) {
     return span_tension_at(&cm->rope, cs_span_length(cs, i), cs->m[i + 1] - cs->m[i],
-                           span_plastic(cs, i, cs->m[i], cs->m[i + 1]));
+                           span_plastic(cs, i, cs->m[i], cs->m[i + 1]), span_sag(&cm->rope, cs, i));
 }
 
 void cs_cable_update_tensions(const cs_cable_model *cm, cs_cable_state *cs) {
@@ -111,9 +162,10 @@ double cs_cable_slide_node(const cs_model *model, const cs_cable_model *cm, cs_c
     if (id >= 0 && model->posts[id].clamped) return 0.0;
     const cs_rope *r = &cm->rope;
     double ll = cs_span_length(cs, i - 1), lr = cs_span_length(cs, i);
+    double ql = span_sag(r, cs, i - 1), qr = span_sag(r, cs, i);
     double m0 = cs->m[i - 1], m2 = cs->m[i + 1], m = cs->m[i];
-    double tl = span_tension_at(r, ll, m - m0, span_plastic(cs, i - 1, m0, m));
-    double tr = span_tension_at(r, lr, m2 - m, span_plastic(cs, i, m, m2));
+    double tl = span_tension_at(r, ll, m - m0, span_plastic(cs, i - 1, m0, m), ql);
+    double tr = span_tension_at(r, lr, m2 - m, span_plastic(cs, i, m, m2), qr);
     double ratio = cs_node_friction_ratio(model, cm, cs, i);
     /* dir = +1: left side too taut, rope slides into the left span (m grows). */
     int dir;
@@ -131,10 +183,10 @@ double cs_cable_slide_node(const cs_model *model, const cs_cable_model *cm, cs_c
     double a = m, b = dir > 0 ? m2 - eps : m0 + eps;
     /* h(x) > 0 at a, < 0 at b */
 #define CS_H(x)                                                                                              \
-    (dir > 0 ? span_tension_at(r, ll, (x)-m0, span_plastic(cs, i - 1, m0, (x))) -                            \
-                   ratio * span_tension_at(r, lr, m2 - (x), span_plastic(cs, i, (x), m2))                    \
-             : span_tension_at(r, lr, m2 - (x), span_plastic(cs, i, (x), m2)) -                              \
-                   ratio * span_tension_at(r, ll, (x)-m0, span_plastic(cs, i - 1, m0, (x))))
+    (dir > 0 ? span_tension_at(r, ll, (x)-m0, span_plastic(cs, i - 1, m0, (x)), ql) -                        \
+                   ratio * span_tension_at(r, lr, m2 - (x), span_plastic(cs, i, (x), m2), qr)                \
+             : span_tension_at(r, lr, m2 - (x), span_plastic(cs, i, (x), m2), qr) -                          \
+                   ratio * span_tension_at(r, ll, (x)-m0, span_plastic(cs, i - 1, m0, (x)), ql))
     double ha = viol, hb = CS_H(b), x = a;
     if (hb >= 0.0) {
         cs->m[i] = b; /* cannot be met inside the bracket: slide to its end */
@@ -219,8 +271,11 @@ void cs_node_force(const cs_cable_state *cs, int i, double *f) {
 double cs_cable_stored_energy(const cs_cable_model *cm, const cs_cable_state *cs) {
     if (cs->status != CS_CABLE_INTACT) return 0.0;
     double e = 0.0;
-    for (int i = 0; i + 1 < cs->node_count; i++)
-        e += cs_rope_elastic_energy(&cm->rope, cs->tension[i], cs->m[i + 1] - cs->m[i]);
+    for (int i = 0; i + 1 < cs->node_count; i++) {
+        double t = cs->tension[i];
+        e += cs_rope_elastic_energy(&cm->rope, t, cs->m[i + 1] - cs->m[i]);
+        if (t > 0.0) e -= span_sag(&cm->rope, cs, i) / (12.0 * t); /* the sag's weight below the chord */
+    }
     return e;
 }
 
@@ -236,11 +291,11 @@ void cs_cable_commit(const cs_model *model, int c, cs_state *s) {
         cs->ep_mix[i] = span_plastic(cs, i, cs->m[i], cs->m[i + 1]);
     memcpy(cs->ep, cs->ep_mix, (size_t)(cs->node_count - 1) * sizeof *cs->ep);
     for (int i = 0; i + 1 < cs->node_count; i++) {
-        double sm = cs->m[i + 1] - cs->m[i];
-        double e = sm > 1e-12 ? cs_span_length(cs, i) / sm - 1.0 : r->e_break * 2.0;
-        double t = cs_rope_tension(r, e, cs->ep[i]);
+        double sm = cs->m[i + 1] - cs->m[i], e;
+        int yields;
+        double t = span_tension_sag(r, cs_span_length(cs, i), sm, cs->ep[i], span_sag(r, cs, i), &e, &yields);
         cs->tension[i] = t;
-        if (t > 0.0 && r->ea * (e - cs->ep[i]) > t) {
+        if (yields && sm > 1e-12) {
             double ep = e - t / r->ea;
             s->e_cable_plastic += t * (ep - cs->ep[i]) * sm;
             cs->ep[i] = ep;

@@ -18,6 +18,7 @@ typedef struct cs_rope {
     double k2;      /* second slope, N per unit strain */
     double e2;      /* strain at Fu */
     double e_break; /* breaking strain */
+    double w;       /* weight per length, N/m (the span's sag) */
 } cs_rope;
 
 /* The width, as a fraction of the rope's strength Fu, over which the solver rounds the stick/slip switch

@@ -175,7 +175,7 @@ static int check_scenario(const cs_scenario_def *s, cs_error *err) {
     return 0;
 }
 
-static void derive_rope(const cs_rope_def *d, cs_rope *r) {
+static void derive_rope(const cs_rope_def *d, double g, cs_rope *r) {
     r->ea = d->modulus * d->area;
     r->fu = d->nominal_strength;
     r->t1 = d->elastic_limit_ratio * r->fu;
@@ -183,6 +183,7 @@ static void derive_rope(const cs_rope_def *d, cs_rope *r) {
     r->k2 = d->secondary_modulus_ratio * r->ea;
     r->e2 = r->e1 + (r->fu - r->t1) / r->k2;
     r->e_break = d->breaking_strain;
+    r->w = d->mass_per_length * g;
 }
 
 static void derive_vehicle(const cs_vehicle_def *v, double g, cs_vehicle_model *vm) {
@@ -249,7 +250,7 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
         cm->z = d->height;
         cm->pretension = d->pretension;
         cm->mu_post = d->post_friction;
-        derive_rope(&d->rope, &cm->rope);
+        derive_rope(&d->rope, scenario->gravity, &cm->rope);
         /* bent over the face's corners (bend diameter D = 2 R) the rope holds only a fraction of Fu */
         double dr = d->rope.diameter > 0.0 ? 2.0 * vehicle->face_corner_radius / d->rope.diameter : HUGE_VAL;
         cm->corner_strength = cs_rope_bend_efficiency(dr) * cm->rope.fu;

@@ -4,11 +4,13 @@
  * support node the rope can slide through (posts that do not clamp, face corners), and the crush.
  * Residuals (each scaled by its element's capacity):
  *   post:   Q_cables(alpha) - Q_resist(alpha)                              (post.c)
- *   node:   lambda - proj_[-b, b](lambda + c dm) + eps c dm,                (capstan, Eq. 3)
+ *   node:   lambda - proj_[-b, b](lambda + c dm) - eps c dm,                (capstan, Eq. 3)
  *           lambda = T_L - T_R, b = tanh(mu theta / 2) (T_L + T_R), dm = m - m_commit, c = EA / l.
  *           |T_L - T_R| <= b is T_high <= exp(mu theta) T_low; the projection makes the node stick
  *           (dm = 0) inside the band and slide (lambda = +-b) outside it, as Coulomb friction.
- *           eps keeps a node between two slack spans sticking instead of undetermined.
+ *           eps keeps a node between two slack spans sticking instead of undetermined; in a slide
+ *           it adds eps c dm to the friction (with + it would take it off: a negative stiffness that
+ *           a sagging rope's few kN/m cannot carry, and the rope shuttles from step to step).
  *   height: the same for a contact on the face, lambda = the pull up the face, b = mu F_n + w: the
  *           floor w holds the contact of a slack rope where it is (with b = 0 only the eps term
  *           would, and any dz with eps c |dz| below the tolerance, up to ~0.4 m at 1e-4, would pass).
@@ -266,7 +268,7 @@ static double node_residual(const cs_model *model, const cs_state *s, int c, int
     double cstiff = cm->rope.ea / (cs_span_length(cs, i - 1) + cs_span_length(cs, i) + 1e-9);
     double dm = cs->m[i] - cs->m_commit[i], y = lambda + cstiff * dm;
     double proj = smooth_clamp(y, b, CS_FRICTION_FLOOR * cm->rope.fu);
-    return (lambda - proj + CS_STICK_EPS * cstiff * dm) / cm->rope.fu;
+    return (lambda - proj - CS_STICK_EPS * cstiff * dm) / cm->rope.fu;
 }
 
 /* The contact of corner k on the face: Coulomb friction along the vertical face, as for a support
@@ -281,7 +283,7 @@ static double height_residual(const cs_model *model, const cs_state *s, int c, i
     double cstiff = cm->rope.ea / (cs_span_length(cs, i - 1) + cs_span_length(cs, i) + 1e-9);
     double dz = cs->corner_z[k] - cs->corner_z_commit[k];
     double w = CS_FRICTION_FLOOR * cm->rope.fu, proj = smooth_clamp(fz + cstiff * dz, b + w, w);
-    return (fz - proj + CS_STICK_EPS * cstiff * dz) / cm->rope.fu;
+    return (fz - proj - CS_STICK_EPS * cstiff * dz) / cm->rope.fu;
 }
 
 static void residual(const cs_model *model, cs_state *s, const cs_solver *w, int n, double *r) {

@@ -31,6 +31,7 @@ static inline cs_rope_def fixture_rope(double diameter_in) {
     r.nominal_strength = 91.4 * diameter_in * diameter_in * KIP;
     r.modulus = 20000.0 * KSI;
     r.diameter = diameter_in * IN;
+    r.mass_per_length = 1.67 * diameter_in * diameter_in * LB / FT; /* 1.67 lb/ft at 1 in */
     return r;
 }
 

@@ -5,16 +5,23 @@
 #include "internal.h"
 #include "lay.h"
 
-static world *make_world(double mu) {
+/* The paper's closed forms (Eqs. 1-6) are for a weightless rope: the cable of these worlds weighs
+ * `weighs` times its A603 weight (0 or 1). */
+static world *make_world_weighing(double mu, double weighs) {
     static world w;
     fixture_aps3(&w.fx);
     w.fx.cables[0].post_friction = mu;
+    w.fx.cables[0].rope.mass_per_length *= weighs;
     cs_error err;
     w.model = cs_model_create(&w.fx.barrier, &w.fx.vehicle, &w.fx.scenario, &err);
     assert_non_null(w.model);
     w.state = cs_state_create(w.model, &err);
     assert_non_null(w.state);
     return &w;
+}
+
+static world *make_world(double mu) {
+    return make_world_weighing(mu, 0.0);
 }
 
 static void rope_law_points(void **state) {
@@ -68,6 +75,52 @@ static void frictionless_sliding_equalises_tension(void **state) {
         cm->rope.ea * (10.0 / total - 1.0); /* one tension: EA (L / S - 1), Eqs. 1-6 with mu = 0 */
     CHECK_REL(cs_span_tension(cm, cs, 0), expect, 1e-8);
     CHECK_REL(cs_span_tension(cm, cs, 1), expect, 1e-8);
+    world_free(w);
+}
+
+/* Length of a catenary of horizontal tension h and weight w per length between level supports l apart. */
+static double catenary_length(double h, double w, double l) {
+    return 2.0 * h / w * sinh(w * l / (2.0 * h));
+}
+
+/* The horizontal tension at which a rope of s unstretched (axial stiffness ea) hangs as a catenary
+ * between level supports l apart: its arc, stretched by h / ea, is the catenary's length (bisection). */
+static double catenary_tension(double s, double ea, double w, double l) {
+    double lo = 1e-3, hi = 1e9;
+    for (int it = 0; it < 200; it++) {
+        double h = sqrt(lo * hi);
+        if (catenary_length(h, w, l) > s * (1.0 + h / ea))
+            lo = h; /* too little tension: the catenary is longer than the rope */
+        else
+            hi = h;
+    }
+    return sqrt(lo * hi);
+}
+
+/* A rope hangs by its own weight: between level supports each span holds the tension of the catenary
+ * its rope makes, slack or taut. The span law uses the parabola, which is off by about (w l / T)^2 / 80
+ * of the tension: 3e-4 for the slackest span here (1.7 kN), so 1e-3 slack spans; a taut span's weight
+ * moves its tension by about EA w^2 l^2 / (24 T^2) (11 N in 256 kN), which the 1e-6 check resolves. */
+static void sagging_span_hangs_as_a_catenary(void **state) {
+    (void)state;
+    world *w = make_world_weighing(0.15, 1.0);
+    const cs_cable_model *cm = &w->model->cables[0];
+    double weight = w->fx.cables[0].rope.mass_per_length * w->fx.scenario.gravity;
+    CHECK_REL(cm->rope.w, weight, 1e-12);
+    double a[3] = {0, 0, 1}, b[3] = {5, 0, 1}, c[3] = {10, 0, 1};
+    const double strain[3][2] = {{-0.002, -0.0005}, {0.002, 0.0}, {0.0, 0.0}};
+    const double tol[3][2] = {{1e-3, 1e-3}, {1e-6, 1e-3}, {1e-3, 1e-3}};
+    for (int k = 0; k < 3; k++) {
+        cs_cable_state *cs = lay_cable(w->state, a, b, c, strain[k][0], strain[k][1]);
+        for (int i = 0; i < 2; i++) {
+            double s = cs->m[i + 1] - cs->m[i];
+            double h = catenary_tension(s, cm->rope.ea, weight, 5.0);
+            CHECK_REL(cs_span_tension(cm, cs, i), h, tol[k][i]);
+        }
+    }
+    /* a span laid exactly to its chord sags by l^2 w / (8 T) with T = (EA w^2 l^2 / 24)^(1/3) */
+    cs_cable_state *cs = lay_cable(w->state, a, b, c, 0.0, 0.0);
+    CHECK_REL(cs_span_tension(cm, cs, 0), cbrt(cm->rope.ea * weight * weight * 25.0 / 24.0), 1e-9);
     world_free(w);
 }
 
@@ -149,6 +202,7 @@ int main(void) {
         cmocka_unit_test(rope_law_points),
         cmocka_unit_test(capstan_ratio_on_frictional_support),
         cmocka_unit_test(frictionless_sliding_equalises_tension),
+        cmocka_unit_test(sagging_span_hangs_as_a_catenary),
         cmocka_unit_test(breaking_strain_breaks_the_cable),
         cmocka_unit_test(bend_efficiency_follows_the_table),
         cmocka_unit_test(corner_bend_breaks_below_fu),

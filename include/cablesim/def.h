@@ -28,7 +28,7 @@ typedef struct cs_rope_def {
     double elastic_limit_ratio;     /* r_el: end of the first slope as a fraction of Fu (paper: 0.6) */
     double secondary_modulus_ratio; /* r_2: second slope as a fraction of E (paper: 0.6) */
     double breaking_strain;         /* total strain at which the rope breaks (paper: 0.03) */
-    double mass_per_length;         /* kg/m, reported only (the cable is quasi-static) */
+    double mass_per_length;         /* kg/m: the spans sag under their own weight */
     double diameter;                /* nominal diameter d, m; sets the strength where the rope bends over
                                        the vehicle's face corners (0: unknown, no bending loss) */
 } cs_rope_def;

@@ -96,7 +96,8 @@ static const cs_field rope_fields[] = {
     R("secondary_modulus_ratio", CS_Q_NUMBER, CS_POS | CS_MAX1, secondary_modulus_ratio,
       "second slope as a fraction of E"),
     R("breaking_strain", CS_Q_NUMBER, CS_POS, breaking_strain, "total strain at which the rope breaks"),
-    R("mass_per_length", CS_Q_MASS_PER_LENGTH, CS_NONNEG, mass_per_length, "weight per length (reported)"),
+    R("mass_per_length", CS_Q_MASS_PER_LENGTH, CS_NONNEG, mass_per_length,
+      "mass per length: the spans sag under their own weight (0: weightless rope)"),
 };
 const cs_table cs_table_rope = {"rope", "A wire rope: the paper's tension-strain law.", CS_T_ROPE,
                                 rope_fields, N(rope_fields)};
