@@ -178,8 +178,10 @@ const char *cs_loader_error(cs_loader *l, int i) {
 }
 
 void cs_loader_print_errors(cs_loader *l, FILE *out) {
-    for (int i = 0; i < l->error_count; i++)
-        fprintf(out, "%s\n", cs_loader_error(l, i));
+    for (int i = 0; i < l->error_count; i++) {
+        const char *e = cs_loader_error(l, i);
+        if (e) fprintf(out, "%s\n", e);
+    }
 }
 
 /* ---- references ---- */
