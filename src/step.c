@@ -6,9 +6,10 @@
 #include <stdio.h>
 #include <string.h>
 
-/* Breaks, post failures and anchor pullouts found after a commit change the barrier's topology with
- * no work done on it: re-solve at the same vehicle pose until nothing more fails, and book the stored
- * energy that vanished (massless cable snapping, posts letting go) as released. */
+/* Breaks, post failures, anchor pullouts and posts struck by the face, found after a commit, change the
+ * barrier's topology with no work done on it: re-solve at the same vehicle pose until nothing more
+ * changes, and book the stored energy that vanished (massless cable snapping, posts letting go, a
+ * struck post leaving the ropes' paths) as released. */
 static void resolve_failures(const cs_model *model, cs_state *s) {
     /* what is released is the whole drop across the failures; a cable slipping off the face inside
      * the loop books its own share too (contact.c), so restart from the total before the loop */
@@ -86,11 +87,10 @@ cs_status cs_step(const cs_model *model, cs_state *s, cs_error *err) {
     cs_vehicle_integrate(model, s); /* 1. the vehicle moves: half a kick and a drift */
     s->t += model->scenario.dt;
     s->step++;
-    cs_contact_update(model, s);  /* 2. cables wrap onto or leave the face, */
-    cs_post_capture(model, s);    /*    posts it reaches are struck */
+    cs_contact_update(model, s);  /* 2. cables wrap onto or leave the face */
     cs_barrier_solve(model, s);   /* 3. posts, sliding and crush in equilibrium */
     cs_barrier_commit(model, s);  /* 4. plastic flow, friction and crush work */
-    resolve_failures(model, s);   /* 5. breaks, post and anchor failures */
+    resolve_failures(model, s);   /* 5. breaks, failures, posts struck by the face */
     cs_barrier_force(model, s);   /* 6. the barrier's push, */
     cs_vehicle_finish(model, s);  /*    the second half kick */
     cs_energy_update(model, s);   /* 7. the ledger */

@@ -3,9 +3,9 @@
  * anywhere along the barrier including at an anchor and past its end). Every run must end without an
  * error, with finite response parameters and an energy ledger within 2% (issue 7). CS_STRESS_RUNS in
  * the environment sets how many (default 24, short runs) and CS_STRESS_FROM the first design; the
- * generator gives design k the same whatever the run count. Known: of designs 0-199, 76, 78, 99, 105,
- * 142 and 195 end 2.1-3.2% off in the ledger (no crash, no NaN; docs/robustness.md). The default subset
- * is designs 0-23. */
+ * generator gives design k the same whatever the run count. Known: of designs 0-199, 76, 78, 99 and
+ * 105 end 2.6-3.1% off in the ledger (no crash, no NaN; docs/robustness.md). The default subset is
+ * designs 0-23, plus the designs kept as regressions. */
 #include "check.h"
 #include "fixture.h"
 
@@ -71,39 +71,56 @@ static void make_design(int k, design *d) {
              fx->scenario.angle * 90.0 / M_PI_2_VALUE, fx->scenario.impact_x, length);
 }
 
+/* Runs design k; returns 1 (and says why) if it errs, leaves a non-finite response or a ledger off by
+ * more than 2%. */
+static int design_fails(int k) {
+    design d;
+    make_design(k, &d);
+    cs_error err;
+    cs_model *m = cs_model_create(&d.fx.barrier, &d.fx.vehicle, &d.fx.scenario, &err);
+    if (!m) {
+        printf("FAIL %s: refused: %s\n", d.what, err.message);
+        return 1;
+    }
+    cs_state *s = cs_state_create(m, &err);
+    cs_status st = cs_run(m, s, NULL, NULL, &err);
+    cs_summary sm;
+    cs_state_summary(s, &sm);
+    int finite = isfinite(sm.max_decel_50ms_g) && isfinite(sm.max_dynamic_penetration) &&
+                 isfinite(sm.max_barrier_deflection) && isfinite(sm.energy_balance_error);
+    int fails = st != CS_OK || !finite || fabs(sm.energy_balance_error) > 0.02;
+    if (fails)
+        printf("FAIL %s: %s, ledger %.4f, %s\n", d.what, st == CS_OK ? "ran" : err.message,
+               sm.energy_balance_error, finite ? "finite" : "NOT finite");
+    cs_state_free(s);
+    cs_model_free(m);
+    return fails;
+}
+
 static void random_designs_run_clean(void **state) {
     (void)state;
     const char *env = getenv("CS_STRESS_RUNS"), *from_env = getenv("CS_STRESS_FROM");
     int runs = env ? atoi(env) : 24, from = from_env ? atoi(from_env) : 0, failures = 0;
-    for (int k = from; k < from + runs; k++) {
-        design d;
-        make_design(k, &d);
-        cs_error err;
-        cs_model *m = cs_model_create(&d.fx.barrier, &d.fx.vehicle, &d.fx.scenario, &err);
-        if (!m) {
-            printf("FAIL %s: refused: %s\n", d.what, err.message);
-            failures++;
-            continue;
-        }
-        cs_state *s = cs_state_create(m, &err);
-        cs_status st = cs_run(m, s, NULL, NULL, &err);
-        cs_summary sm;
-        cs_state_summary(s, &sm);
-        int finite = isfinite(sm.max_decel_50ms_g) && isfinite(sm.max_dynamic_penetration) &&
-                     isfinite(sm.max_barrier_deflection) && isfinite(sm.energy_balance_error);
-        if (st != CS_OK || !finite || fabs(sm.energy_balance_error) > 0.02) {
-            printf("FAIL %s: %s, ledger %.4f, %s\n", d.what, st == CS_OK ? "ran" : err.message,
-                   sm.energy_balance_error, finite ? "finite" : "NOT finite");
-            failures++;
-        }
-        cs_state_free(s);
-        cs_model_free(m);
-    }
+    for (int k = from; k < from + runs; k++)
+        failures += design_fails(k);
     printf("%d random designs, %d failures\n", runs, failures);
     assert_int_equal(failures, 0);
 }
 
+/* Designs whose ledger once missed 2% and now balances, kept as regressions: 142 and 195, where a
+ * struck post leaves the ropes' paths and the stored energy it releases went unbooked until session 8
+ * (docs/theory.md, "A step", 5). */
+static void kept_designs_balance(void **state) {
+    (void)state;
+    const int kept[] = {142, 195};
+    int failures = 0;
+    for (size_t i = 0; i < sizeof kept / sizeof *kept; i++)
+        failures += design_fails(kept[i]);
+    assert_int_equal(failures, 0);
+}
+
 int main(void) {
-    const struct CMUnitTest tests[] = {cmocka_unit_test(random_designs_run_clean)};
+    const struct CMUnitTest tests[] = {cmocka_unit_test(random_designs_run_clean),
+                                       cmocka_unit_test(kept_designs_balance)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
