@@ -135,6 +135,14 @@ double cs_span_tension(const cs_cable_model *cm, const cs_cable_state *cs, int i
                            span_plastic(cs, i, cs->m[i], cs->m[i + 1]), span_sag(&cm->rope, cs, i));
 }
 
+/* Rope (no plastic set) that span i holds at tension t: the inverse of the span law,
+ * s (1 + t/EA) = l + q / (24 t^2); weightless or without tension, l / (1 + t/EA). */
+double cs_span_material_at(const cs_cable_model *cm, const cs_cable_state *cs, int i, double t) {
+    double l = cs_span_length(cs, i), q = span_sag(&cm->rope, cs, i);
+    if (t > 0.0) l += q / (24.0 * t * t);
+    return l / (1.0 + t / cm->rope.ea);
+}
+
 void cs_cable_update_tensions(const cs_cable_model *cm, cs_cable_state *cs) {
     for (int i = 0; i + 1 < cs->node_count; i++)
         cs->tension[i] = cs->status == CS_CABLE_INTACT ? cs_span_tension(cm, cs, i) : 0.0;

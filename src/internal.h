@@ -179,6 +179,7 @@ double cs_rope_elastic_energy(const cs_rope *rope, double tension, double materi
 /* ---- cable paths (cable.c) ---- */
 double cs_span_length(const cs_cable_state *cs, int span);
 double cs_span_tension(const cs_cable_model *cm, const cs_cable_state *cs, int span);
+double cs_span_material_at(const cs_cable_model *cm, const cs_cable_state *cs, int span, double t);
 void cs_cable_update_tensions(const cs_cable_model *cm, cs_cable_state *cs);
 double cs_cable_slide_node(const cs_model *model, const cs_cable_model *cm, cs_cable_state *cs, int i,
                            double tol);

@@ -72,10 +72,9 @@ static void reset_cable(const cs_model *model, int c, cs_cable_state *cs) {
     int last = cs->node_count - 1;
     cs->node[last] = CS_NODE_END;
     v3_set(cs->pos + 3 * last, model->anchors[1].x, 0.0, model->anchors[1].z);
-    double stretch = 1.0 + cm->pretension / cm->rope.ea;
     cs->m[0] = 0.0;
-    for (int i = 0; i < last; i++) {
-        cs->m[i + 1] = cs->m[i] + cs_span_length(cs, i) / stretch;
+    for (int i = 0; i < last; i++) { /* every span at the pretension, its sag included */
+        cs->m[i + 1] = cs->m[i] + cs_span_material_at(cm, cs, i, cm->pretension);
         cs->ep[i] = 0.0;
     }
     memcpy(cs->m_commit, cs->m, (size_t)cs->node_count * sizeof *cs->m);
