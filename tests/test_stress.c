@@ -4,7 +4,7 @@
  * error, with finite response parameters and an energy ledger within 2% (issue 7). CS_STRESS_RUNS in
  * the environment sets how many (default 24, short runs) and CS_STRESS_FROM the first design; the
  * generator gives design k the same whatever the run count. Known: of designs 0-199, 76, 78, 99 and
- * 105 end 2.6-3.1% off in the ledger (no crash, no NaN; docs/robustness.md). The default subset is
+ * 105 end 2.2-2.7% off in the ledger (no crash, no NaN; docs/robustness.md). The default subset is
  * designs 0-23, plus the designs kept as regressions. */
 #include "check.h"
 #include "fixture.h"
