@@ -60,12 +60,12 @@ double cs_span_length(const cs_cable_state *cs, int i) {
     return v3_dist(cs->pos + 3 * i, cs->pos + 3 * (i + 1));
 }
 
-/* Sag term of span i, w_n^2 l^3 = w^2 h^2 l: its weight across the chord (w_n = w h / l, h the chord's
- * length in plan) over its chord length l cubed. */
-static double span_sag(const cs_rope *r, const cs_cable_state *cs, int i) {
+/* Sag term of span i of chord length l, w_n^2 l^3 = w^2 h^2 l: its weight across the chord (w_n = w h / l,
+ * h the chord's length in plan) over its chord length cubed. */
+static double span_sag(const cs_rope *r, const cs_cable_state *cs, int i, double l) {
     const double *a = cs->pos + 3 * i, *b = cs->pos + 3 * (i + 1);
-    double dx = b[0] - a[0], dy = b[1] - a[1], dz = b[2] - a[2], h2 = dx * dx + dy * dy;
-    return r->w * r->w * h2 * sqrt(h2 + dz * dz);
+    double dx = b[0] - a[0], dy = b[1] - a[1];
+    return r->w * r->w * (dx * dx + dy * dy) * l;
 }
 
 /* Tension of a span with `material` of rope (plastic strain ep) over a chord of `length`, hanging by its
@@ -131,14 +131,15 @@ static double span_plastic(const cs_cable_state *cs, int i, double lo, double hi
 }
 
 double cs_span_tension(const cs_cable_model *cm, const cs_cable_state *cs, int i) {
-    return span_tension_at(&cm->rope, cs_span_length(cs, i), cs->m[i + 1] - cs->m[i],
-                           span_plastic(cs, i, cs->m[i], cs->m[i + 1]), span_sag(&cm->rope, cs, i));
+    double l = cs_span_length(cs, i);
+    return span_tension_at(&cm->rope, l, cs->m[i + 1] - cs->m[i], span_plastic(cs, i, cs->m[i], cs->m[i + 1]),
+                           span_sag(&cm->rope, cs, i, l));
 }
 
 /* Rope (no plastic set) that span i holds at tension t: the inverse of the span law,
  * s (1 + t/EA) = l + q / (24 t^2); weightless or without tension, l / (1 + t/EA). */
 double cs_span_material_at(const cs_cable_model *cm, const cs_cable_state *cs, int i, double t) {
-    double l = cs_span_length(cs, i), q = span_sag(&cm->rope, cs, i);
+    double l = cs_span_length(cs, i), q = span_sag(&cm->rope, cs, i, l);
     if (t > 0.0) l += q / (24.0 * t * t);
     return l / (1.0 + t / cm->rope.ea);
 }
@@ -170,7 +171,7 @@ double cs_cable_slide_node(const cs_model *model, const cs_cable_model *cm, cs_c
     if (id >= 0 && model->posts[id].clamped) return 0.0;
     const cs_rope *r = &cm->rope;
     double ll = cs_span_length(cs, i - 1), lr = cs_span_length(cs, i);
-    double ql = span_sag(r, cs, i - 1), qr = span_sag(r, cs, i);
+    double ql = span_sag(r, cs, i - 1, ll), qr = span_sag(r, cs, i, lr);
     double m0 = cs->m[i - 1], m2 = cs->m[i + 1], m = cs->m[i];
     double tl = span_tension_at(r, ll, m - m0, span_plastic(cs, i - 1, m0, m), ql);
     double tr = span_tension_at(r, lr, m2 - m, span_plastic(cs, i, m, m2), qr);
@@ -282,7 +283,8 @@ double cs_cable_stored_energy(const cs_cable_model *cm, const cs_cable_state *cs
     for (int i = 0; i + 1 < cs->node_count; i++) {
         double t = cs->tension[i];
         e += cs_rope_elastic_energy(&cm->rope, t, cs->m[i + 1] - cs->m[i]);
-        if (t > 0.0) e -= span_sag(&cm->rope, cs, i) / (12.0 * t); /* the sag's weight below the chord */
+        if (t > 0.0) /* the sag's weight below the chord */
+            e -= span_sag(&cm->rope, cs, i, cs_span_length(cs, i)) / (12.0 * t);
     }
     return e;
 }
@@ -301,7 +303,8 @@ void cs_cable_commit(const cs_model *model, int c, cs_state *s) {
     for (int i = 0; i + 1 < cs->node_count; i++) {
         double sm = cs->m[i + 1] - cs->m[i], e;
         int yields;
-        double t = span_tension_sag(r, cs_span_length(cs, i), sm, cs->ep[i], span_sag(r, cs, i), &e, &yields);
+        double l = cs_span_length(cs, i);
+        double t = span_tension_sag(r, l, sm, cs->ep[i], span_sag(r, cs, i, l), &e, &yields);
         cs->tension[i] = t;
         if (yields && sm > 1e-12) {
             double ep = e - t / r->ea;
