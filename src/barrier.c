@@ -174,45 +174,11 @@ static double solve_at_pose(const cs_model *model, cs_state *s) {
     return worst;
 }
 
-/* Continuation: where the solve at the step's end pose fails (a post snapping over, a rope sliding far
- * within one step), start again from the step's start and walk the vehicle's pose there in
- * CS_CONTINUATION_PIECES pieces, each solve starting from the last one's answer. Nothing is committed
- * in between: the end state solves the same equations, reached along the path the barrier takes. */
-#define CS_CONTINUATION_TRIGGER 1e-2
-#define CS_CONTINUATION_PIECES 8
-
-static double solve_by_continuation(const cs_model *model, cs_state *s) {
-    double pos[3], quat[4], worst = 0.0;
-    v3_copy(pos, s->pos);
-    memcpy(quat, s->quat, sizeof quat);
-    cs_solver_restart(model, s);
-    for (int j = 1; j <= CS_CONTINUATION_PIECES; j++) {
-        double f = (double)j / CS_CONTINUATION_PIECES;
-        if (j < CS_CONTINUATION_PIECES) {
-            for (int i = 0; i < 3; i++)
-                s->pos[i] = s->step_start_pos[i] + f * (pos[i] - s->step_start_pos[i]);
-            quat_nlerp(s->quat, s->step_start_quat, quat, f);
-        } else {
-            v3_copy(s->pos, pos);
-            memcpy(s->quat, quat, sizeof quat);
-        }
-        worst = solve_at_pose(model, s);
-    }
-    return worst;
-}
-
 double cs_barrier_solve(const cs_model *model, cs_state *s) {
-    const cs_scenario_def *sc = &model->scenario;
     double worst = solve_at_pose(model, s);
-    if (worst > CS_CONTINUATION_TRIGGER && s->step > 0) worst = solve_by_continuation(model, s);
     for (int c = 0; c < model->cable_count; c++)
         cs_cable_update_tensions(&model->cables[c], &s->cables[c]);
     s->face_force = cs_face_loaded(model, s) ? cs_face_normal_force_now(model, s) : 0.0;
-    s->solver_residual = worst;
-    if (worst > sc->solver_tolerance) {
-        s->summary.solver_warnings++;
-        if (worst > s->summary.max_solver_residual) s->summary.max_solver_residual = worst;
-    }
     return worst;
 }
 

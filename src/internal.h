@@ -164,13 +164,16 @@ struct cs_state {
     int ring_fill;
     double decel_50ms_g;
     cs_summary summary;
-    double solver_residual;
+    double solver_residual; /* largest residual of the solves the step committed */
 
     cs_event *events;
     int event_count;
 
     cs_solver solver;
+    struct cs_state *step_start; /* the barrier as the step's stages 2-5 found it (step.c) */
 };
+
+void cs_state_copy_barrier(const cs_model *model, cs_state *dst, const cs_state *src);
 
 /* ---- rope law (cable.c) ---- */
 double cs_rope_tension(const cs_rope *rope, double strain, double plastic_strain);
@@ -237,7 +240,6 @@ int cs_face_loaded(const cs_model *model, const cs_state *s);
 int cs_solver_init(const cs_model *model, cs_solver *w);
 void cs_solver_free(cs_solver *w);
 void cs_solver_reset(cs_solver *w);
-void cs_solver_restart(const cs_model *model, cs_state *s);
 void cs_solver_keep(const cs_model *model, cs_state *s);
 void cs_solver_go_back(const cs_model *model, cs_state *s);
 void cs_barrier_force(const cs_model *model, cs_state *s);

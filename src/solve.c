@@ -461,20 +461,6 @@ static int predict(const cs_model *model, cs_state *s, cs_solver *w, int n, doub
     return 1;
 }
 
-/* Put every unknown back to its value at the start of this step's first solve (the predictor's memory;
- * an unknown that appeared since keeps its value). */
-void cs_solver_restart(const cs_model *model, cs_state *s) {
-    cs_solver *w = &s->solver;
-    int n = assemble(model, s, w);
-    if (n <= 0) return;
-    gather(s, w, n, w->x);
-    for (int k = 0; k < n; k++) {
-        size_t key = slot_key(model, s, &w->slots[k]);
-        if (w->last_step[key] == s->step) w->x[k] = w->last[key];
-    }
-    scatter(model, s, w, n, w->x);
-}
-
 /* Remember the unknowns as they stand (with their slots: the order along x can change), to go back to
  * them if a later attempt ends further off. */
 void cs_solver_keep(const cs_model *model, cs_state *s) {

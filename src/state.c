@@ -7,15 +7,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-cs_state *cs_state_create(const cs_model *model, cs_error *err) {
-    cs_state *s = calloc(1, sizeof *s);
+/* The state's own memory, without the step-start copy: cables, posts, events, the speed ring and the
+ * solver's workspace (the copy needs only the cables and posts). Returns 0, or -1 out of memory. */
+static int allocate(const cs_model *model, cs_state *s, int with_workspace) {
     int nc = model->cable_count, np = model->post_count, nn = model->max_nodes;
-    if (!s) goto oom;
     s->cables = calloc((size_t)(nc ? nc : 1), sizeof *s->cables);
     s->posts = calloc((size_t)(np ? np : 1), sizeof *s->posts);
-    s->events = calloc((size_t)model->event_capacity, sizeof *s->events);
-    s->speed_ring = calloc((size_t)model->window_steps + 1, sizeof *s->speed_ring);
-    if (!s->cables || !s->posts || !s->events || !s->speed_ring) goto oom;
+    if (!s->cables || !s->posts) return -1;
     s->cable_count_alloc = nc;
     for (int c = 0; c < nc; c++) {
         cs_cable_state *cs = &s->cables[c];
@@ -29,15 +27,25 @@ cs_state *cs_state_create(const cs_model *model, cs_error *err) {
         cs->pos = calloc((size_t)nn * 3, sizeof *cs->pos);
         if (!cs->node || !cs->where || !cs->m || !cs->m_commit || !cs->ep || !cs->ep_mix || !cs->tension ||
             !cs->pos)
-            goto oom;
+            return -1;
     }
-    if (cs_solver_init(model, &s->solver) != 0) goto oom;
+    if (!with_workspace) return 0;
+    s->events = calloc((size_t)model->event_capacity, sizeof *s->events);
+    s->speed_ring = calloc((size_t)model->window_steps + 1, sizeof *s->speed_ring);
+    s->step_start = calloc(1, sizeof *s->step_start);
+    if (!s->events || !s->speed_ring || !s->step_start || allocate(model, s->step_start, 0) != 0) return -1;
+    return cs_solver_init(model, &s->solver);
+}
+
+cs_state *cs_state_create(const cs_model *model, cs_error *err) {
+    cs_state *s = calloc(1, sizeof *s);
+    if (!s || allocate(model, s, 1) != 0) {
+        cs_state_free(s);
+        if (err) err->status = CS_ERR_MEMORY, strcpy(err->message, "out of memory allocating the state");
+        return NULL;
+    }
     cs_state_reset(model, s);
     return s;
-oom:
-    cs_state_free(s);
-    if (err) err->status = CS_ERR_MEMORY, strcpy(err->message, "out of memory allocating the state");
-    return NULL;
 }
 
 void cs_state_free(cs_state *s) {
@@ -51,8 +59,36 @@ void cs_state_free(cs_state *s) {
         }
     }
     cs_solver_free(&s->solver);
+    cs_state_free(s->step_start);
     free(s->cables), free(s->posts), free(s->events), free(s->speed_ring);
     free(s);
+}
+
+/* Everything but the memory that is the state's own (arrays, events, workspace, the step-start copy),
+ * with the cables' paths and the posts copied into dst's arrays. Events are appended only, so the ones
+ * src holds are already in place when dst is the state and src its step-start copy. */
+void cs_state_copy_barrier(const cs_model *model, cs_state *dst, const cs_state *src) {
+    cs_state keep = *dst;
+    *dst = *src;
+    dst->cables = keep.cables, dst->posts = keep.posts, dst->events = keep.events;
+    dst->speed_ring = keep.speed_ring, dst->step_start = keep.step_start, dst->solver = keep.solver;
+    dst->cable_count_alloc = keep.cable_count_alloc;
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *d = &dst->cables[c], k = *d;
+        const cs_cable_state *o = &src->cables[c];
+        size_t n = (size_t)o->node_count;
+        *d = *o;
+        d->node = k.node, d->where = k.where, d->m = k.m, d->m_commit = k.m_commit, d->ep = k.ep;
+        d->ep_mix = k.ep_mix, d->tension = k.tension, d->pos = k.pos;
+        memcpy(d->node, o->node, n * sizeof *d->node);
+        memcpy(d->where, o->where, (size_t)model->post_count * sizeof *d->where);
+        memcpy(d->m, o->m, n * sizeof *d->m);
+        memcpy(d->m_commit, o->m_commit, n * sizeof *d->m_commit);
+        memcpy(d->ep, o->ep, (n - 1) * sizeof *d->ep);
+        memcpy(d->tension, o->tension, (n - 1) * sizeof *d->tension);
+        memcpy(d->pos, o->pos, 3 * n * sizeof *d->pos);
+    }
+    memcpy(dst->posts, src->posts, (size_t)model->post_count * sizeof *dst->posts);
 }
 
 /* A cable at t = 0: start anchor, every post, end anchor, straight at its height, rope laid in with

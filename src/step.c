@@ -10,11 +10,12 @@
  * barrier's topology with no work done on it: re-solve at the same vehicle pose until nothing more
  * changes, and book the stored energy that vanished (massless cable snapping, posts letting go, a
  * struck post leaving the ropes' paths) as released. */
-static void resolve_failures(const cs_model *model, cs_state *s) {
+static double resolve_failures(const cs_model *model, cs_state *s) {
     /* what is released is the whole drop across the failures; a cable slipping off the face inside
      * the loop books its own share too (contact.c), so restart from the total before the loop */
     double before = cs_barrier_stored_energy(model, s), released = s->e_released;
     int changed = 0;
+    double worst = 0.0;
     for (int round = 0; round <= model->cable_count + model->post_count + 2; round++) {
         int any = 0;
         for (int c = 0; c < model->cable_count; c++)
@@ -28,10 +29,108 @@ static void resolve_failures(const cs_model *model, cs_state *s) {
         changed = 1;
         cs_contact_drop_failed(model, s);
         cs_contact_update(model, s);
-        cs_barrier_solve(model, s);
+        worst = fmax(worst, cs_barrier_solve(model, s));
         cs_barrier_commit(model, s);
     }
     if (changed) s->e_released = released + before - cs_barrier_stored_energy(model, s);
+    return worst;
+}
+
+/* Stages 2-5 at the vehicle's pose as it stands, and the barrier's push there. A solve that ends
+ * further than CS_PATH_TRIGGER from equilibrium is not committed unless told to (its slides and
+ * plastic flow would be booked from a state that is not one). Returns 1 if it committed, with the
+ * largest residual of the solves it committed kept in s->solver_residual. */
+#define CS_PATH_TRIGGER 1e-2
+
+static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway) {
+    cs_contact_update(model, s);               /* 2. cables wrap onto or leave the face */
+    double worst = cs_barrier_solve(model, s); /* 3. posts, sliding and crush in equilibrium */
+    if (worst > CS_PATH_TRIGGER && !commit_anyway) return 0;
+    cs_barrier_commit(model, s);                     /* 4. plastic flow, friction and crush work */
+    worst = fmax(worst, resolve_failures(model, s)); /* 5. breaks, failures, posts struck by the face */
+    s->solver_residual = fmax(s->solver_residual, worst);
+    cs_barrier_force(model, s);
+    return 1;
+}
+
+/* The barrier's side of the ledger: what it stores, has dissipated and has released. */
+static double barrier_energy(const cs_model *model, const cs_state *s) {
+    return cs_barrier_stored_energy(model, s) + s->e_released;
+}
+
+/* A pose of the vehicle and the barrier's force and moment on it there. */
+typedef struct loaded_pose {
+    double pos[3], quat[4], force[3], moment[3];
+} loaded_pose;
+
+static loaded_pose pose_of(const cs_state *s) {
+    loaded_pose p;
+    v3_copy(p.pos, s->pos), v3_copy(p.force, s->force), v3_copy(p.moment, s->moment);
+    memcpy(p.quat, s->quat, sizeof p.quat);
+    return p;
+}
+
+/* The work the vehicle does on the barrier from pose a to pose b: the trapezoid rule on the barrier's
+ * force and moment, the rule by which the vehicle's own energy changes over a step. */
+static double work_on_barrier(const loaded_pose *a, const loaded_pose *b) {
+    double dx[3], turn[3], w = 0.0;
+    v3_sub(dx, b->pos, a->pos);
+    quat_turn(turn, a->quat, b->quat);
+    for (int i = 0; i < 3; i++)
+        w -= 0.5 * ((a->force[i] + b->force[i]) * dx[i] + (a->moment[i] + b->moment[i]) * turn[i]);
+    return w;
+}
+
+/* How much less the barrier took in since (from, e0) than the work the vehicle did on it; a gap above
+ * `snap` is booked as released. */
+static double book_gap(const cs_model *model, cs_state *s, const loaded_pose *from, double e0, double snap) {
+    loaded_pose to = pose_of(s);
+    double gap = work_on_barrier(from, &to) - (barrier_energy(model, s) - e0);
+    if (gap > snap) s->e_released += gap;
+    return gap;
+}
+
+/* Following the path. The barrier is massless, so its state is a function of the vehicle's pose
+ * only while the equilibrium it is on goes on existing; the ledger tells when it stopped: over a step,
+ * the barrier's energy (stored, dissipated, released) must change by the work the vehicle did on it.
+ * - It changed by less (by more than CS_PATH_GAP of the energy scale): the barrier jumped to a lower
+ *   equilibrium within the step, a post snapping over or a rope running over its supports. Real posts
+ *   and ropes spend the difference in motion the model does not have; it is booked as released, as
+ *   a failure's is.
+ * - It changed by more, or the solve at the end pose failed: what the end state booked is not what
+ *   the barrier did on the way. The step goes back to its start and walks the pose to its end in
+ *   CS_PATH_PIECES pieces, committing each whose solve converged, with the same rule for each piece.
+ * docs/theory.md, "A step". */
+#define CS_PATH_GAP 1e-3
+#define CS_PATH_PIECES 8
+
+static void follow_path(const cs_model *model, cs_state *s) {
+    cs_state *start = s->step_start;
+    loaded_pose end = pose_of(s), from = end; /* the force and moment are still the start's */
+    v3_copy(from.pos, s->step_start_pos);
+    memcpy(from.quat, s->step_start_quat, sizeof from.quat);
+    double scale = cs_energy_scale(model, s), e0 = barrier_energy(model, s);
+    s->solver_residual = 0.0;
+    cs_state_copy_barrier(model, start, s);
+    if (follow_pose(model, s, 0) &&
+        book_gap(model, s, &from, e0, CS_PATH_GAP * scale) >= -CS_PATH_GAP * scale)
+        return;
+    cs_state_copy_barrier(model, s, start);
+    const loaded_pose begin = from;
+    for (int j = 1; j <= CS_PATH_PIECES; j++) {
+        if (j < CS_PATH_PIECES) {
+            double f = (double)j / CS_PATH_PIECES;
+            for (int i = 0; i < 3; i++)
+                s->pos[i] = begin.pos[i] + f * (end.pos[i] - begin.pos[i]);
+            quat_nlerp(s->quat, begin.quat, end.quat, f);
+        } else {
+            v3_copy(s->pos, end.pos);
+            memcpy(s->quat, end.quat, sizeof end.quat);
+        }
+        if (!follow_pose(model, s, j == CS_PATH_PIECES)) continue;
+        book_gap(model, s, &from, e0, CS_PATH_GAP / CS_PATH_PIECES * scale);
+        from = pose_of(s), e0 = barrier_energy(model, s);
+    }
 }
 
 static cs_status unstable(const cs_model *model, cs_state *s, cs_error *err, const char *what, int element) {
@@ -49,6 +148,14 @@ static cs_status unstable(const cs_model *model, cs_state *s, cs_error *err, con
                  s->t, name, model->scenario.dt * 1e3);
     }
     return CS_ERR_UNSTABLE;
+}
+
+/* A step whose committed solves ended further from equilibrium than the tolerance is a warning. */
+static void count_warning(const cs_model *model, cs_state *s) {
+    if (s->solver_residual <= model->scenario.solver_tolerance) return;
+    s->summary.solver_warnings++;
+    if (s->solver_residual > s->summary.max_solver_residual)
+        s->summary.max_solver_residual = s->solver_residual;
 }
 
 /* Guards: no NaN or Inf anywhere, and no energy created. */
@@ -87,11 +194,8 @@ cs_status cs_step(const cs_model *model, cs_state *s, cs_error *err) {
     cs_vehicle_integrate(model, s); /* 1. the vehicle moves: half a kick and a drift */
     s->t += model->scenario.dt;
     s->step++;
-    cs_contact_update(model, s);  /* 2. cables wrap onto or leave the face */
-    cs_barrier_solve(model, s);   /* 3. posts, sliding and crush in equilibrium */
-    cs_barrier_commit(model, s);  /* 4. plastic flow, friction and crush work */
-    resolve_failures(model, s);   /* 5. breaks, failures, posts struck by the face */
-    cs_barrier_force(model, s);   /* 6. the barrier's push, */
+    follow_path(model, s); /* 2-5. the barrier follows the pose, and 6. pushes back */
+    count_warning(model, s);
     cs_vehicle_finish(model, s);  /*    the second half kick */
     cs_energy_update(model, s);   /* 7. the ledger */
     cs_response_update(model, s); /* 8. response parameters, end of the run */

@@ -73,7 +73,6 @@ static inline void quat_integrate(double *q, const double *w, double dt) {
     for (int i = 0; i < 4; i++)
         q[i] = r[i] / n;
 }
-/* Quaternion of a rotation by yaw about world z. */
 /* Normalised linear blend of two unit quaternions, a + f (b - a) (on b's side of a), for small turns. */
 static inline void quat_nlerp(double *r, const double *a, const double *b, double f) {
     double d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3], sg = d < 0.0 ? -1.0 : 1.0, n = 0.0;
@@ -84,6 +83,16 @@ static inline void quat_nlerp(double *r, const double *a, const double *b, doubl
         r[i] /= n;
 }
 
+/* World rotation vector that turns a into b (b = exp(r / 2) * a), the shorter way round. */
+static inline void quat_turn(double *r, const double *a, const double *b) {
+    double w = b[0] * a[0] + b[1] * a[1] + b[2] * a[2] + b[3] * a[3], v[3];
+    v[0] = a[0] * b[1] - b[0] * a[1] - (b[2] * a[3] - b[3] * a[2]);
+    v[1] = a[0] * b[2] - b[0] * a[2] - (b[3] * a[1] - b[1] * a[3]);
+    v[2] = a[0] * b[3] - b[0] * a[3] - (b[1] * a[2] - b[2] * a[1]);
+    double sg = w < 0.0 ? -1.0 : 1.0, n = v3_norm(v), f = n < 1e-12 ? 2.0 : 2.0 * atan2(n, sg * w) / n;
+    v3_scale(r, v, sg * f);
+}
+/* Quaternion of a rotation by yaw about world z. */
 static inline void quat_from_yaw(double *q, double yaw) {
     q[0] = cos(0.5 * yaw), q[1] = 0.0, q[2] = 0.0, q[3] = sin(0.5 * yaw);
 }

@@ -1,6 +1,7 @@
 /* Vehicle: free rolling (speed kept, or lost at mu_r g), settling on the tyres after a drop (static
  * equilibrium at the design ride height), an undamped bounce against its closed form (second order in
- * dt), and a centred head-on impact that makes no yaw. */
+ * dt), a centred head-on impact that makes no yaw, and the turn between two poses (the rotation
+ * vector the step's work on the barrier is taken over). */
 #include "check.h"
 #include "fixture.h"
 #include "internal.h"
@@ -121,12 +122,37 @@ static void centred_head_on_impact_makes_no_yaw(void **state) {
     cs_model_free(m);
 }
 
+/* A body turned by w dt in its own frame has turned by R(a) w dt in the world's: quat_turn gives that
+ * vector back, for a large turn, a tiny one, and either sign of the quaternion. */
+static void turn_between_poses_is_the_rotation_vector(void **state) {
+    (void)state;
+    double a[4], w[3] = {0.4, -1.1, 0.6}, tiny[3] = {3e-10, 1e-10, -2e-10};
+    quat_from_yaw(a, 0.7);
+    quat_integrate(a, (double[3]){0.2, 0.3, -0.1}, 1.0); /* a general attitude */
+    for (int k = 0; k < 2; k++) {
+        const double *wb = k ? tiny : w;
+        double b[4], want[3], got[3];
+        memcpy(b, a, sizeof b);
+        quat_integrate(b, wb, 1.0);
+        quat_rotate(want, a, wb);
+        quat_turn(got, a, b);
+        for (int i = 0; i < 3; i++)
+            CHECK_ABS(got[i], want[i], 1e-14 + 1e-12 * v3_norm(want));
+        for (int i = 0; i < 4; i++)
+            b[i] = -b[i];
+        quat_turn(got, a, b);
+        for (int i = 0; i < 3; i++)
+            CHECK_ABS(got[i], want[i], 1e-14 + 1e-12 * v3_norm(want));
+    }
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(rolling_freely_keeps_its_speed),
         cmocka_unit_test(dropped_vehicle_settles_on_its_tyres),
         cmocka_unit_test(undamped_bounce_converges_at_second_order),
         cmocka_unit_test(centred_head_on_impact_makes_no_yaw),
+        cmocka_unit_test(turn_between_poses_is_the_rotation_vector),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
