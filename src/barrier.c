@@ -116,11 +116,15 @@ static double crush_solve(const cs_model *model, cs_state *s) {
     return entry;
 }
 
-/* Gauss-Seidel over the local problems, up to `sweeps` sweeps. */
+/* Gauss-Seidel over the local problems, up to `sweeps` sweeps, or until CS_GS_STALL sweeps in a row
+ * have not brought the residual below 0.9 of the best yet (a stalled sweep is pure cost: of APS3's two
+ * 300-sweep fallbacks one had its best residual, 1.49e-2, at sweep 25 and ended at 1.88e-2). */
+#define CS_GS_STALL 50
+
 static double gauss_seidel(const cs_model *model, cs_state *s, int sweeps) {
     const cs_scenario_def *sc = &model->scenario;
-    double worst = 0.0;
-    for (int sweep = 0; sweep < sweeps; sweep++) {
+    double worst = 0.0, best = HUGE_VAL;
+    for (int sweep = 0, last_gain = 0; sweep < sweeps && sweep - last_gain <= CS_GS_STALL; sweep++) {
         worst = 0.0;
         for (int k = 0; k < model->post_count; k++) {
             int p = (sweep % 2 == 0) ? k : model->post_count - 1 - k; /* alternate direction */
@@ -147,6 +151,7 @@ static double gauss_seidel(const cs_model *model, cs_state *s, int sweeps) {
         }
         worst = fmax(worst, crush_solve(model, s));
         if (worst <= sc->solver_tolerance) break;
+        if (worst < 0.9 * best) best = worst, last_gain = sweep;
     }
     return worst;
 }

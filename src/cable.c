@@ -92,13 +92,20 @@ static double span_tension_sag(const cs_rope *r, double length, double material,
     double a = r->ea * (e - ep), c = r->ea * q / (24.0 * material);
     /* bounds above the root: T^2 (T - a) = c gives T - a < c / a^2 and < c^(1/3) for a > 0, and
      * T < c^(1/3) and < (c / -a)^(1/2) for a < 0 */
-    double t = cbrt(c);
-    if (a > 0.0) t = a + fmin(t, c / (a * a));
-    if (a < 0.0) t = fmin(t, sqrt(-c / a));
+    double t;
+    if (a > 0.0 && c < a * a * a) { /* a taut span: c / a^2 is the lower bound, no cube root needed */
+        t = a + c / (a * a);
+    } else {
+        t = cbrt(c);
+        if (a > 0.0) t = a + fmin(t, c / (a * a));
+        if (a < 0.0) t = fmin(t, sqrt(-c / a));
+    }
+    /* Newton's error after a step of relative size d is about 2 d^2 here (g''/2g' = 1/T for a slack
+     * span, 2/T for a taut one), so a step below 1e-8 T leaves the root to round-off */
     for (int it = 0; it < 100; it++) {
         double dt = (t * t * (t - a) - c) / (t * (3.0 * t - 2.0 * a));
         t -= dt;
-        if (dt <= 1e-15 * t) break;
+        if (dt <= 1e-8 * t) break;
     }
     *arc = ep + t / r->ea;
     double b = rope_backbone(r, *arc);

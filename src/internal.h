@@ -173,7 +173,7 @@ struct cs_state {
     struct cs_state *step_start; /* the barrier as the step's stages 2-5 found it (step.c) */
 };
 
-void cs_state_copy_barrier(const cs_model *model, cs_state *dst, const cs_state *src);
+void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src);
 
 /* ---- rope law (cable.c) ---- */
 double cs_rope_tension(const cs_rope *rope, double strain, double plastic_strain);

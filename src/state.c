@@ -64,10 +64,10 @@ void cs_state_free(cs_state *s) {
     free(s);
 }
 
-/* Everything but the memory that is the state's own (arrays, events, workspace, the step-start copy),
+/* A copy of src in dst: everything but the memory that is dst's own (arrays, events, workspace, copy),
  * with the cables' paths and the posts copied into dst's arrays. Events are appended only, so the ones
  * src holds are already in place when dst is the state and src its step-start copy. */
-void cs_state_copy_barrier(const cs_model *model, cs_state *dst, const cs_state *src) {
+void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src) {
     cs_state keep = *dst;
     *dst = *src;
     dst->cables = keep.cables, dst->posts = keep.posts, dst->events = keep.events;

@@ -111,11 +111,11 @@ static void follow_path(const cs_model *model, cs_state *s) {
     memcpy(from.quat, s->step_start_quat, sizeof from.quat);
     double scale = cs_energy_scale(model, s), e0 = barrier_energy(model, s);
     s->solver_residual = 0.0;
-    cs_state_copy_barrier(model, start, s);
+    cs_state_copy(model, start, s);
     if (follow_pose(model, s, 0) &&
         book_gap(model, s, &from, e0, CS_PATH_GAP * scale) >= -CS_PATH_GAP * scale)
         return;
-    cs_state_copy_barrier(model, s, start);
+    cs_state_copy(model, s, start);
     const loaded_pose begin = from;
     for (int j = 1; j <= CS_PATH_PIECES; j++) {
         if (j < CS_PATH_PIECES) {
