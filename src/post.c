@@ -274,7 +274,7 @@ static void face_frame(const cs_model *model, const cs_state *s, double crush, d
     double n = v3_norm(x);
     v3_scale(f, x, n > 0.0 ? 1.0 / n : 0.0);
     quat_rotate(left, s->quat, by);
-    *zb = origin[2] > 0.05 ? origin[2] : 0.05;
+    if (zb) *zb = origin[2] > 0.05 ? origin[2] : 0.05;
 }
 
 /* Place every captured post for a trial crush; returns the push's component along the vehicle's
@@ -282,19 +282,29 @@ static void face_frame(const cs_model *model, const cs_state *s, double crush, d
  * adds the pushes to the barrier's resultant on the vehicle. */
 double cs_post_place_captured(const cs_model *model, cs_state *s, double crush, double *force,
                               double *moment) {
-    double o[3], f[3], left[3], zb, total = 0.0;
-    face_frame(model, s, crush, o, f, left, &zb);
+    double o[3], f[3], left[3], total = 0.0;
+    face_frame(model, s, crush, o, f, left, NULL);
     for (int p = 0; p < model->post_count; p++) {
         cs_post_state *ps = &s->posts[p];
         if (!ps->captured || !cs_post_standing(ps)) continue;
         const cs_post_model *pm = &model->posts[p];
-        double base[3] = {pm->x, 0.0, 0.0}, rel[3];
-        v3_sub(rel, o, base);
+        /* the point of the face's bottom edge in line with the post: the vehicle pushes there, and its
+         * height, not the edge's middle's, is what the post leans to (they differ as the truck rolls) */
+        double base[3] = {pm->x, 0.0, 0.0}, rel[3], pt[3];
+        v3_sub(rel, base, o);
+        cs_vehicle_face_point(model, s, crush, v3_dot(rel, left),
+                              model->vehicle.def.face_bottom - model->vehicle.def.cg_height, pt);
+        double zb = pt[2] > 0.05 ? pt[2] : 0.05;
+        v3_sub(rel, pt, base);
         double d = v3_dot(rel, f);
         double lever = zb + pm->pivot, sn = d / lever;
         sn = sn < 0.0 ? 0.0 : (sn > 0.999 ? 0.999 : sn);
-        double th = asin(sn);
-        ps->tilt[0] = th * f[0], ps->tilt[1] = th * f[1];
+        /* the face pushes the post along its heading; across it the post keeps its permanent set (it
+         * springs back there elastically once the cables have left it), so capture turns no tilt */
+        double th = asin(sn), hn = hypot(f[0], f[1]);
+        double h[2] = {f[0] / hn, f[1] / hn}, along = ps->plastic[0] * h[0] + ps->plastic[1] * h[1];
+        ps->tilt[0] = ps->plastic[0] - along * h[0] + th * f[0];
+        ps->tilt[1] = ps->plastic[1] - along * h[1] + th * f[1];
         double q[2];
         cs_post_resistance(pm, ps, ps->tilt, q);
         double m = q[0] * f[0] + q[1] * f[1];
@@ -306,11 +316,14 @@ double cs_post_place_captured(const cs_model *model, cs_state *s, double crush, 
         ps->push = m / (lever * cos(th));
         total += ps->push;
         if (force) {
-            double pt[3], fv[3], r[3], t[3];
-            v3_copy(pt, base);
-            v3_addto(pt, f, d);
-            pt[2] = zb;
+            /* the post's tilt follows sin(theta) = d / (zb + pivot), so the face does work on it by
+             * coming down as well as by pushing on: M dtheta = push dd - lift dzb with
+             * lift = M tan(theta) / (zb + pivot), the post holding the face up (none where the tilt
+             * no longer follows: zb at its floor, or the tilt at its cap) */
+            double lift = pt[2] > 0.05 && sn < 0.999 ? m * tan(th) / lever : 0.0;
+            double fv[3], r[3], t[3];
             v3_scale(fv, f, -ps->push);
+            fv[2] += lift;
             v3_add(force, force, fv);
             v3_sub(r, pt, s->pos);
             v3_cross(t, r, fv);
