@@ -11,6 +11,7 @@
 #include "vec3.h"
 
 #include <math.h>
+#include <string.h>
 
 int cs_post_standing(const cs_post_state *ps) {
     return ps->status == CS_POST_ELASTIC || ps->status == CS_POST_HINGED || ps->status == CS_POST_SOIL;
@@ -260,74 +261,103 @@ double cs_post_stored_energy(const cs_model *model, const cs_state *s, int p) {
  * struck by the vehicle: it leaves the cable paths and is pushed over at the face's bottom edge,
  * height zb. With the face a distance d past the post's base (along the vehicle's heading f), the post
  * leans by theta = asin(d / (zb + pivot)) toward f, resisting with its moment M (elastic-plastic, as
- * above). The push on the vehicle is M / ((zb + pivot) cos theta), so that push x dd = M dtheta: the work
- * the vehicle does is exactly what the post stores and dissipates. */
+ * above). Its resistance acts on the vehicle as the gradient of the work Q . dtilt with respect to the
+ * vehicle's pose, so the work the vehicle does is exactly what the post stores and dissipates; along
+ * the heading that is the push M / ((zb + pivot) cos theta) (push x dd = M dtheta), which also loads
+ * the crush. */
 #define CS_CAPTURE_MARGIN 0.1 /* m beyond each face corner that still strikes a post */
 
-static void face_frame(const cs_model *model, const cs_state *s, double crush, double *origin, double *f,
-                       double *left, double *zb) {
+/* The face at a vehicle pose (pos, quat): the middle of its bottom edge, the heading f (horizontal,
+ * unit), the body's left axis, and the edge's height (at least 5 cm). */
+static void face_frame(const cs_model *model, const double *pos, const double *quat, double crush,
+                       double *origin, double *f, double *left, double *zb) {
     const cs_vehicle_def *v = &model->vehicle.def;
     double x[3], bx[3] = {1.0, 0.0, 0.0}, by[3] = {0.0, 1.0, 0.0};
-    cs_vehicle_face_point(model, s, crush, 0.0, v->face_bottom - v->cg_height, origin);
-    quat_rotate(x, s->quat, bx);
+    double mid[3] = {v->cg_to_front - crush, 0.0, v->face_bottom - v->cg_height};
+    quat_rotate(origin, quat, mid);
+    v3_add(origin, origin, pos);
+    quat_rotate(x, quat, bx);
     x[2] = 0.0;
     double n = v3_norm(x);
     v3_scale(f, x, n > 0.0 ? 1.0 / n : 0.0);
-    quat_rotate(left, s->quat, by);
-    if (zb) *zb = origin[2] > 0.05 ? origin[2] : 0.05;
+    quat_rotate(left, quat, by);
+    *zb = origin[2] > 0.05 ? origin[2] : 0.05;
+}
+
+/* Where a captured post leans with the vehicle at a pose: the point of the face's bottom edge in line
+ * with the post (it pushes there), its height z_b and its distance d past the base along the heading,
+ * sin(theta) = d / (z_b + pivot), and the tilt: theta along the heading, the permanent set across it
+ * (the face pushes along its heading only, so it turns no tilt across). Returns theta. */
+static double captured_lean(const cs_model *model, const cs_post_state *ps, int p, const double *pos,
+                            const double *quat, double crush, double *pt, double *tilt) {
+    const cs_vehicle_def *v = &model->vehicle.def;
+    const cs_post_model *pm = &model->posts[p];
+    double o[3], f[3], left[3], zb, base[3] = {pm->x, 0.0, 0.0}, rel[3];
+    face_frame(model, pos, quat, crush, o, f, left, &zb);
+    v3_sub(rel, base, o);
+    double edge[3] = {v->cg_to_front - crush, v3_dot(rel, left), v->face_bottom - v->cg_height};
+    quat_rotate(pt, quat, edge);
+    v3_add(pt, pt, pos);
+    zb = pt[2] > 0.05 ? pt[2] : 0.05;
+    v3_sub(rel, pt, base);
+    double d = v3_dot(rel, f), sn = d / (zb + pm->pivot);
+    sn = sn < 0.0 ? 0.0 : (sn > 0.999 ? 0.999 : sn);
+    double th = asin(sn), along = ps->plastic[0] * f[0] + ps->plastic[1] * f[1];
+    tilt[0] = ps->plastic[0] + (th - along) * f[0];
+    tilt[1] = ps->plastic[1] + (th - along) * f[1];
+    return d > 0.0 ? th : -1.0;
 }
 
 /* Place every captured post for a trial crush; returns the push's component along the vehicle's
  * heading (the captured posts' share of the face's normal force). With force/moment given, also
- * adds the pushes to the barrier's resultant on the vehicle. */
+ * adds the posts' resistance to the barrier's resultant on the vehicle: the gradient of the work
+ * Q . dtilt with respect to the vehicle's pose (central differences, 1e-6 m and 1e-6 rad), so that
+ * the vehicle's work is exactly what the posts store and dissipate however the face moves (pushing
+ * on, coming down, rolling, sliding along its edge). */
 double cs_post_place_captured(const cs_model *model, cs_state *s, double crush, double *force,
                               double *moment) {
-    double o[3], f[3], left[3], total = 0.0;
-    face_frame(model, s, crush, o, f, left, NULL);
+    double total = 0.0;
     for (int p = 0; p < model->post_count; p++) {
         cs_post_state *ps = &s->posts[p];
         if (!ps->captured || !cs_post_standing(ps)) continue;
         const cs_post_model *pm = &model->posts[p];
-        /* the point of the face's bottom edge in line with the post: the vehicle pushes there, and its
-         * height, not the edge's middle's, is what the post leans to (they differ as the truck rolls) */
-        double base[3] = {pm->x, 0.0, 0.0}, rel[3], pt[3];
-        v3_sub(rel, base, o);
-        cs_vehicle_face_point(model, s, crush, v3_dot(rel, left),
-                              model->vehicle.def.face_bottom - model->vehicle.def.cg_height, pt);
-        double zb = pt[2] > 0.05 ? pt[2] : 0.05;
-        v3_sub(rel, pt, base);
-        double d = v3_dot(rel, f);
-        double lever = zb + pm->pivot, sn = d / lever;
-        sn = sn < 0.0 ? 0.0 : (sn > 0.999 ? 0.999 : sn);
-        /* the face pushes the post along its heading; across it the post keeps its permanent set (it
-         * springs back there elastically once the cables have left it), so capture turns no tilt */
-        double th = asin(sn), hn = hypot(f[0], f[1]);
-        double h[2] = {f[0] / hn, f[1] / hn}, along = ps->plastic[0] * h[0] + ps->plastic[1] * h[1];
-        ps->tilt[0] = ps->plastic[0] - along * h[0] + th * f[0];
-        ps->tilt[1] = ps->plastic[1] - along * h[1] + th * f[1];
-        double q[2];
+        double pt[3], q[2];
+        double th = captured_lean(model, ps, p, s->pos, s->quat, crush, pt, ps->tilt);
         cs_post_resistance(pm, ps, ps->tilt, q);
+        double f[3], left[3], o[3], zb;
+        face_frame(model, s->pos, s->quat, crush, o, f, left, &zb);
         double m = q[0] * f[0] + q[1] * f[1];
-        if (m < 0.0 || d <= 0.0) { /* the face has backed off: the post stands at its set, free */
+        if (m < 0.0 || th < 0.0) { /* the face has backed off: the post stands at its set, free */
             ps->tilt[0] = ps->plastic[0], ps->tilt[1] = ps->plastic[1];
             ps->push = 0.0;
             continue;
         }
-        ps->push = m / (lever * cos(th));
+        ps->push = m / ((fmax(pt[2], 0.05) + pm->pivot) * cos(th));
         total += ps->push;
-        if (force) {
-            /* the post's tilt follows sin(theta) = d / (zb + pivot), so the face does work on it by
-             * coming down as well as by pushing on: M dtheta = push dd - lift dzb with
-             * lift = M tan(theta) / (zb + pivot), the post holding the face up (none where the tilt
-             * no longer follows: zb at its floor, or the tilt at its cap) */
-            double lift = pt[2] > 0.05 && sn < 0.999 ? m * tan(th) / lever : 0.0;
-            double fv[3], r[3], t[3];
-            v3_scale(fv, f, -ps->push);
-            fv[2] += lift;
-            v3_add(force, force, fv);
-            v3_sub(r, pt, s->pos);
-            v3_cross(t, r, fv);
-            v3_add(moment, moment, t);
+        if (!force) continue;
+        const double h = 1e-6;
+        for (int k = 0; k < 6; k++) {
+            double tp[2], tm[2], pp[3], qp[4], qm[4], pos[3], turn[3] = {0.0, 0.0, 0.0}, w[3];
+            memcpy(qp, s->quat, sizeof qp), memcpy(qm, s->quat, sizeof qm);
+            v3_copy(pos, s->pos);
+            if (k < 3) {
+                pos[k] += h;
+                captured_lean(model, ps, p, pos, s->quat, crush, pp, tp);
+                pos[k] -= 2.0 * h;
+                captured_lean(model, ps, p, pos, s->quat, crush, pp, tm);
+            } else { /* a turn about world axis k - 3, applied in the body frame */
+                turn[k - 3] = 1.0;
+                quat_unrotate(w, s->quat, turn);
+                quat_integrate(qp, w, h);
+                quat_integrate(qm, w, -h);
+                captured_lean(model, ps, p, pos, qp, crush, pp, tp);
+                captured_lean(model, ps, p, pos, qm, crush, pp, tm);
+            }
+            double g = -(q[0] * (tp[0] - tm[0]) + q[1] * (tp[1] - tm[1])) / (2.0 * h);
+            if (k < 3)
+                force[k] += g;
+            else
+                moment[k - 3] += g;
         }
     }
     return total;
@@ -337,7 +367,7 @@ double cs_post_place_captured(const cs_model *model, cs_state *s, double crush, 
 int cs_post_capture(const cs_model *model, cs_state *s) {
     const cs_vehicle_def *v = &model->vehicle.def;
     double o[3], f[3], left[3], zb;
-    face_frame(model, s, s->crush, o, f, left, &zb);
+    face_frame(model, s->pos, s->quat, s->crush, o, f, left, &zb);
     int any = 0;
     for (int p = 0; p < model->post_count; p++) {
         cs_post_state *ps = &s->posts[p];
