@@ -5,6 +5,7 @@
 #include "fixture.h"
 #include "internal.h"
 #include "lay.h"
+#include "vec3.h"
 
 static world *make_world(double web_area) {
     static world w;
@@ -194,6 +195,52 @@ static void struck_post_pulls_out_at_its_skin_friction(void **state) {
     cs_model_free(m);
 }
 
+/* Work in, energy out: once struck, a post takes exactly the work the face does on it, whatever the
+ * face does. The truck's pose is then driven along a path that pushes on (1 mm a step), sinks (0.3 mm),
+ * rolls and yaws (0.5 mrad each); the work of the post's force and moment on the truck (trapezoid
+ * rule) must equal the post's stored energy plus its plastic work within 1e-3. With the push taken as
+ * horizontal along the heading (until session 9), sinking and rolling turned the post for nothing. */
+static void struck_post_takes_the_work_the_face_does(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    cs_post_def post = fx.posts[0];
+    post.x = 0.0;
+    fx.barrier.cable_count = 0;
+    fx.barrier.post_count = 1;
+    fx.barrier.posts = &post;
+    fx.barrier.start_anchor.x = -10.0, fx.barrier.end_anchor.x = 10.0;
+    fx.scenario.impact_x = 0.0;
+    fx.scenario.speed = 5.0;
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    assert_non_null(m);
+    cs_state *s = cs_state_create(m, &err);
+    while (!s->posts[0].captured)
+        assert_int_equal(cs_step(m, s, &err), CS_OK);
+    double f0[3] = {0.0, 0.0, 0.0}, m0[3] = {0.0, 0.0, 0.0}, work = 0.0;
+    cs_post_place_captured(m, s, s->crush, f0, m0);
+    double e0 = cs_post_stored_energy(m, s, 0) + s->e_post_plastic + s->e_soil, ahead[3];
+    quat_rotate(ahead, s->quat, (double[3]){1.0, 0.0, 0.0});
+    for (int k = 0; k < 200; k++) {
+        double dx[3] = {1e-3 * ahead[0], 1e-3 * ahead[1], -3e-4}, turn[3] = {5e-4, 0.0, 5e-4}, w[3];
+        v3_add(s->pos, s->pos, dx);
+        quat_unrotate(w, s->quat, turn);
+        quat_integrate(s->quat, w, 1.0);
+        double f1[3] = {0.0, 0.0, 0.0}, m1[3] = {0.0, 0.0, 0.0};
+        cs_post_place_captured(m, s, s->crush, f1, m1);
+        cs_post_commit(m, s, 0);
+        for (int i = 0; i < 3; i++)
+            work -= 0.5 * ((f0[i] + f1[i]) * dx[i] + (m0[i] + m1[i]) * turn[i]);
+        v3_copy(f0, f1), v3_copy(m0, m1);
+    }
+    double taken = cs_post_stored_energy(m, s, 0) + s->e_post_plastic + s->e_soil - e0;
+    assert_true(s->e_post_plastic + s->e_soil > 0.0);
+    CHECK_REL(taken, work, 1e-3);
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(cantilever_deflection),
@@ -202,6 +249,7 @@ int main(void) {
         cmocka_unit_test(struck_post_absorbs_capacity_times_rotation),
         cmocka_unit_test(struck_post_in_soil_turns_about_two_thirds_depth),
         cmocka_unit_test(struck_post_pulls_out_at_its_skin_friction),
+        cmocka_unit_test(struck_post_takes_the_work_the_face_does),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
