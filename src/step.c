@@ -5,7 +5,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <stdlib.h>
 
 /* Breaks, post failures, anchor pullouts and posts struck by the face, found after a commit, change the
  * barrier's topology with no work done on it: re-solve at the same vehicle pose until nothing more
@@ -87,7 +86,6 @@ static double work_on_barrier(const loaded_pose *a, const loaded_pose *b) {
 static double book_gap(const cs_model *model, cs_state *s, const loaded_pose *from, double e0, double snap) {
     loaded_pose to = pose_of(s);
     double gap = work_on_barrier(from, &to) - (barrier_energy(model, s) - e0);
-    if (getenv("DBGP")) fprintf(stderr, "GAP t %.4f %+.3e W %.3f dE %.3f%s\n", s->t, gap / cs_energy_scale(model, s), work_on_barrier(from, &to), barrier_energy(model, s) - e0, gap > snap ? " BOOKED" : "");
     if (gap > snap) s->e_released += gap;
     return gap;
 }
