@@ -138,8 +138,7 @@ struct cs_state {
     int frozen;
 
     /* vehicle */
-    double pos[3], vel[3], quat[4], omega[3];     /* omega in the body frame */
-    double step_start_pos[3], step_start_quat[4]; /* the pose the step started from */
+    double pos[3], vel[3], quat[4], omega[3]; /* omega in the body frame */
     double acc[3], ang_acc[3];  /* linear (world) and angular (body) accelerations at the pose */
     double tyre_power;          /* power the tyres dissipate at the pose, W */
     double force[3], moment[3]; /* barrier resultant on the vehicle (world, about the CG) */
@@ -215,8 +214,9 @@ int cs_post_capture(const cs_model *model, cs_state *s);
 void cs_vehicle_body_to_world(const cs_state *s, const double *body, double *world);
 void cs_vehicle_face_point(const cs_model *model, const cs_state *s, double crush, double y_body,
                            double z_body, double *world);
-void cs_vehicle_integrate(const cs_model *model, cs_state *s);
-void cs_vehicle_finish(const cs_model *model, cs_state *s);
+void cs_vehicle_start(const cs_model *model, cs_state *s); /* accelerations at t = 0 */
+void cs_vehicle_integrate(cs_state *s, double h);
+void cs_vehicle_finish(const cs_model *model, cs_state *s, double h);
 double cs_crush_force(const cs_vehicle_def *v, double crush, double crush_max);
 double cs_crush_curve(const cs_vehicle_def *v, double crush);
 double cs_crush_permanent(const cs_vehicle_def *v, double crush_max);

@@ -152,6 +152,7 @@ void cs_state_reset(const cs_model *model, cs_state *s) {
     s->summary.stop_time = -1.0;
     s->summary.exit_speed = -1.0;
 
+    cs_vehicle_start(model, s);
     s->e_initial_potential_ref = cs_vehicle_potential_energy(model, s);
     s->e_initial_kinetic = cs_vehicle_kinetic_energy(model, s);
     s->e_initial_total = 0.0;

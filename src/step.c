@@ -36,10 +36,10 @@ static double resolve_failures(const cs_model *model, cs_state *s) {
     return worst;
 }
 
-/* Stages 2-5 at the vehicle's pose as it stands, and the barrier's push there. A solve that ends
- * further than CS_PATH_TRIGGER from equilibrium is not committed unless told to (its slides and
- * plastic flow would be booked from a state that is not one). Returns 1 if it committed, with the
- * largest residual of the solves it committed kept in s->solver_residual. */
+/* Stages 2-5 at the vehicle's pose as it stands. A solve that ends further than CS_PATH_TRIGGER from
+ * equilibrium is not committed unless told to (its slides and plastic flow would be booked from a state
+ * that is not one). Returns 1 if it committed, with the largest residual of the solves it committed
+ * kept in s->solver_residual. */
 #define CS_PATH_TRIGGER 1e-2
 
 static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway) {
@@ -49,7 +49,6 @@ static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway) {
     cs_barrier_commit(model, s);                     /* 4. plastic flow, friction and crush work */
     worst = fmax(worst, resolve_failures(model, s)); /* 5. breaks, failures, posts struck by the face */
     s->solver_residual = fmax(s->solver_residual, worst);
-    cs_barrier_force(model, s);
     return 1;
 }
 
@@ -81,11 +80,24 @@ static double work_on_barrier(const loaded_pose *a, const loaded_pose *b) {
     return w;
 }
 
-/* How much less the barrier took in since (from, e0) than the work the vehicle did on it; a gap above
- * `snap` is booked as released. */
-static double book_gap(const cs_model *model, cs_state *s, const loaded_pose *from, double e0, double snap) {
+/* Stages 1-6 over a time h: the vehicle drifts, the barrier follows its pose (committed if its solve
+ * converged, or if told to), pushes back, and the vehicle takes the second kick. Adds the vehicle's
+ * work on the barrier to *work; returns 1 if the barrier was committed. */
+static int advance(const cs_model *model, cs_state *s, double h, int commit_anyway, double *work) {
+    loaded_pose from = pose_of(s);
+    cs_vehicle_integrate(s, h); /* 1. half a kick and a drift */
+    int committed = follow_pose(model, s, commit_anyway);
+    cs_barrier_force(model, s); /* 6. the barrier's push, */
     loaded_pose to = pose_of(s);
-    double gap = work_on_barrier(from, &to) - (barrier_energy(model, s) - e0);
+    *work += work_on_barrier(&from, &to);
+    cs_vehicle_finish(model, s, h); /* the second half kick */
+    return committed;
+}
+
+/* What the barrier took in less than the work done on it since it held e0; a gap above `snap` is
+ * booked as released. */
+static double book_gap(const cs_model *model, cs_state *s, double work, double e0, double snap) {
+    double gap = work - (barrier_energy(model, s) - e0);
     if (gap > snap) s->e_released += gap;
     return gap;
 }
@@ -97,39 +109,28 @@ static double book_gap(const cs_model *model, cs_state *s, const loaded_pose *fr
  *   equilibrium within the step, a post snapping over or a rope running over its supports. Real posts
  *   and ropes spend the difference in motion the model does not have; it is booked as released, as
  *   a failure's is.
- * - It changed by more, or the solve at the end pose failed: what the end state booked is not what
- *   the barrier did on the way. The step goes back to its start and walks the pose to its end in
- *   CS_PATH_PIECES pieces, committing each whose solve converged, with the same rule for each piece.
+ * - It changed by more, or the solve at the end pose failed: the barrier's force peaked within the
+ *   step, or what the end state booked is not what the barrier did on the way. The step goes back to
+ *   its start and is taken again as CS_PATH_PIECES steps, vehicle and barrier, each committed if its
+ *   solve converged (the last always), with the same rule for each stretch between commits.
  * docs/theory.md, "A step". */
 #define CS_PATH_GAP 1e-3
 #define CS_PATH_PIECES 8
 
 static void follow_path(const cs_model *model, cs_state *s) {
-    cs_state *start = s->step_start;
-    loaded_pose end = pose_of(s), from = end; /* the force and moment are still the start's */
-    v3_copy(from.pos, s->step_start_pos);
-    memcpy(from.quat, s->step_start_quat, sizeof from.quat);
-    double scale = cs_energy_scale(model, s), e0 = barrier_energy(model, s);
+    double dt = model->scenario.dt, scale = cs_energy_scale(model, s), e0 = barrier_energy(model, s);
+    double work = 0.0;
     s->solver_residual = 0.0;
-    cs_state_copy(model, start, s);
-    if (follow_pose(model, s, 0) &&
-        book_gap(model, s, &from, e0, CS_PATH_GAP * scale) >= -CS_PATH_GAP * scale)
+    cs_state_copy(model, s->step_start, s);
+    if (advance(model, s, dt, 0, &work) &&
+        book_gap(model, s, work, e0, CS_PATH_GAP * scale) >= -CS_PATH_GAP * scale)
         return;
-    cs_state_copy(model, s, start);
-    const loaded_pose begin = from;
+    cs_state_copy(model, s, s->step_start);
+    work = 0.0;
     for (int j = 1; j <= CS_PATH_PIECES; j++) {
-        if (j < CS_PATH_PIECES) {
-            double f = (double)j / CS_PATH_PIECES;
-            for (int i = 0; i < 3; i++)
-                s->pos[i] = begin.pos[i] + f * (end.pos[i] - begin.pos[i]);
-            quat_nlerp(s->quat, begin.quat, end.quat, f);
-        } else {
-            v3_copy(s->pos, end.pos);
-            memcpy(s->quat, end.quat, sizeof end.quat);
-        }
-        if (!follow_pose(model, s, j == CS_PATH_PIECES)) continue;
-        book_gap(model, s, &from, e0, CS_PATH_GAP / CS_PATH_PIECES * scale);
-        from = pose_of(s), e0 = barrier_energy(model, s);
+        if (!advance(model, s, dt / CS_PATH_PIECES, j == CS_PATH_PIECES, &work)) continue;
+        book_gap(model, s, work, e0, CS_PATH_GAP / CS_PATH_PIECES * scale);
+        work = 0.0, e0 = barrier_energy(model, s);
     }
 }
 
@@ -189,14 +190,10 @@ static cs_status check_numbers(const cs_model *model, cs_state *s, cs_error *err
 cs_status cs_step(const cs_model *model, cs_state *s, cs_error *err) {
     if (err) err->status = CS_OK, err->message[0] = '\0';
     if (s->frozen || s->outcome != CS_RUNNING) return CS_OK;
-    v3_copy(s->step_start_pos, s->pos);
-    memcpy(s->step_start_quat, s->quat, sizeof s->quat);
-    cs_vehicle_integrate(model, s); /* 1. the vehicle moves: half a kick and a drift */
     s->t += model->scenario.dt;
     s->step++;
-    follow_path(model, s); /* 2-5. the barrier follows the pose, and 6. pushes back */
+    follow_path(model, s); /* 1-6. the vehicle moves, the barrier follows and pushes back */
     count_warning(model, s);
-    cs_vehicle_finish(model, s);  /*    the second half kick */
     cs_energy_update(model, s);   /* 7. the ledger */
     cs_response_update(model, s); /* 8. response parameters, end of the run */
     return check_numbers(model, s, err);

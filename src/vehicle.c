@@ -108,27 +108,29 @@ static void accelerations(const cs_model *model, cs_state *s) {
         s->ang_acc[i] = vm->inv_inertia[i] * (tb[i] - gyro[i]);
 }
 
-/* Half a step's kick: velocities by the accelerations, and the tyres' dissipation over that half. */
-static void kick(const cs_model *model, cs_state *s) {
-    double h = 0.5 * model->scenario.dt;
-    v3_addto(s->vel, s->acc, h);
-    v3_addto(s->omega, s->ang_acc, h);
-    s->e_friction += s->tyre_power * h;
+/* Half a step's kick (h the step): velocities by the accelerations, and the tyres' dissipation over
+ * that half. */
+static void kick(cs_state *s, double h) {
+    v3_addto(s->vel, s->acc, 0.5 * h);
+    v3_addto(s->omega, s->ang_acc, 0.5 * h);
+    s->e_friction += s->tyre_power * 0.5 * h;
 }
 
-/* Start of a step: kick with the forces at the step's start, then drift to the new pose. */
-void cs_vehicle_integrate(const cs_model *model, cs_state *s) {
-    double dt = model->scenario.dt;
-    if (s->step == 0) accelerations(model, s); /* the first step: no forces from a last one yet */
-    kick(model, s);
-    v3_addto(s->pos, s->vel, dt);
-    quat_integrate(s->quat, s->omega, dt);
-}
-
-/* End of a step: kick with the forces at the new pose (the barrier's solved there). */
-void cs_vehicle_finish(const cs_model *model, cs_state *s) {
+void cs_vehicle_start(const cs_model *model, cs_state *s) {
     accelerations(model, s);
-    kick(model, s);
+}
+
+/* Start of a step of h: kick with the forces at the step's start, then drift to the new pose. */
+void cs_vehicle_integrate(cs_state *s, double h) {
+    kick(s, h);
+    v3_addto(s->pos, s->vel, h);
+    quat_integrate(s->quat, s->omega, h);
+}
+
+/* End of a step of h: the forces at the new pose (the barrier's resultant included), the second kick. */
+void cs_vehicle_finish(const cs_model *model, cs_state *s, double h) {
+    accelerations(model, s);
+    kick(s, h);
 }
 
 double cs_vehicle_kinetic_energy(const cs_model *model, const cs_state *s) {

@@ -57,6 +57,7 @@ static void dropped_vehicle_settles_on_its_tyres(void **state) {
     cs_model *m = model_for(&fx);
     cs_state *s = cs_state_create(m, NULL);
     s->pos[2] += 0.3; /* dropped from 0.3 m above its ride height: the ledger starts from there */
+    cs_vehicle_start(m, s);
     cs_energy_update(m, s);
     s->e_initial_total = cs_energy_total(&s->energy);
     run_until(m, s, 6.0);
@@ -82,6 +83,7 @@ static double bounce_error(double dt) {
     cs_state *s = cs_state_create(m, NULL);
     double delta = fx.vehicle.tyre_static_deflection, a = 0.5 * delta, w = sqrt(fx.scenario.gravity / delta);
     s->pos[2] += a; /* the tyres stay in contact (a < delta) */
+    cs_vehicle_start(m, s);
     run_until(m, s, 1.0);
     double z = fx.vehicle.cg_height + a * cos(w * s->t), v = -a * w * sin(w * s->t);
     double err = fabs(s->pos[2] - z) / a + fabs(s->vel[2] - v) / (a * w);
