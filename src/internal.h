@@ -106,6 +106,7 @@ typedef struct cs_post_state {
     double shear, axial; /* N */
     int yielded;         /* hinge or soil event already reported */
     int captured;        /* struck by the face: pushed over by it, off the cable paths */
+    double lever;        /* from the pivot to where the face struck it, along the post, m */
     double push;         /* force of the face on a captured post, N */
 } cs_post_state;
 

@@ -284,23 +284,30 @@ static void face_frame(const cs_model *model, const double *pos, const double *q
     *zb = origin[2] > 0.05 ? origin[2] : 0.05;
 }
 
-/* Where a captured post leans with the vehicle at a pose: the point of the face's bottom edge in line
- * with the post (it pushes there), its height z_b and its distance d past the base along the heading,
- * sin(theta) = d / (z_b + pivot), and the tilt: theta along the heading, the permanent set across it
- * (the face pushes along its heading only, so it turns no tilt across). Returns theta. */
-static double captured_lean(const cs_model *model, const cs_post_state *ps, int p, const double *pos,
-                            const double *quat, double crush, double *pt, double *tilt) {
+/* The point of the face's bottom edge in line with post p, with the vehicle at a pose: where the face
+ * strikes and pushes it; and the heading f. */
+static void edge_point(const cs_model *model, int p, const double *pos, const double *quat, double crush,
+                       double *pt, double *f) {
     const cs_vehicle_def *v = &model->vehicle.def;
-    const cs_post_model *pm = &model->posts[p];
-    double o[3], f[3], left[3], zb, base[3] = {pm->x, 0.0, 0.0}, rel[3];
+    double o[3], left[3], zb, base[3] = {model->posts[p].x, 0.0, 0.0}, rel[3];
     face_frame(model, pos, quat, crush, o, f, left, &zb);
     v3_sub(rel, base, o);
     double edge[3] = {v->cg_to_front - crush, v3_dot(rel, left), v->face_bottom - v->cg_height};
     quat_rotate(pt, quat, edge);
     v3_add(pt, pt, pos);
-    zb = pt[2] > 0.05 ? pt[2] : 0.05;
+}
+
+/* Where a captured post leans with the vehicle at a pose: the face's edge point in line with it is a
+ * distance d past the base along the heading, and the post turns about its pivot through the point it
+ * was struck at, ps->lever along it: sin(theta) = d / lever. The tilt is theta along the heading and
+ * the permanent set across it (the face pushes along its heading only, so it turns no tilt across).
+ * Returns theta, or -1 if the face is short of the base. */
+static double captured_lean(const cs_model *model, const cs_post_state *ps, int p, const double *pos,
+                            const double *quat, double crush, double *tilt) {
+    double f[3], pt[3], rel[3], base[3] = {model->posts[p].x, 0.0, 0.0};
+    edge_point(model, p, pos, quat, crush, pt, f);
     v3_sub(rel, pt, base);
-    double d = v3_dot(rel, f), sn = d / (zb + pm->pivot);
+    double d = v3_dot(rel, f), sn = d / ps->lever;
     sn = sn < 0.0 ? 0.0 : (sn > 0.999 ? 0.999 : sn);
     double th = asin(sn), along = ps->plastic[0] * f[0] + ps->plastic[1] * f[1];
     tilt[0] = ps->plastic[0] + (th - along) * f[0];
@@ -321,8 +328,8 @@ double cs_post_place_captured(const cs_model *model, cs_state *s, double crush, 
         cs_post_state *ps = &s->posts[p];
         if (!ps->captured || !cs_post_standing(ps)) continue;
         const cs_post_model *pm = &model->posts[p];
-        double pt[3], q[2];
-        double th = captured_lean(model, ps, p, s->pos, s->quat, crush, pt, ps->tilt);
+        double q[2];
+        double th = captured_lean(model, ps, p, s->pos, s->quat, crush, ps->tilt);
         cs_post_resistance(pm, ps, ps->tilt, q);
         double f[3], left[3], o[3], zb;
         face_frame(model, s->pos, s->quat, crush, o, f, left, &zb);
@@ -332,26 +339,26 @@ double cs_post_place_captured(const cs_model *model, cs_state *s, double crush, 
             ps->push = 0.0;
             continue;
         }
-        ps->push = m / ((fmax(pt[2], 0.05) + pm->pivot) * cos(th));
+        ps->push = m / (ps->lever * cos(th));
         total += ps->push;
         if (!force) continue;
         const double h = 1e-6;
         for (int k = 0; k < 6; k++) {
-            double tp[2], tm[2], pp[3], qp[4], qm[4], pos[3], turn[3] = {0.0, 0.0, 0.0}, w[3];
+            double tp[2], tm[2], qp[4], qm[4], pos[3], turn[3] = {0.0, 0.0, 0.0}, w[3];
             memcpy(qp, s->quat, sizeof qp), memcpy(qm, s->quat, sizeof qm);
             v3_copy(pos, s->pos);
             if (k < 3) {
                 pos[k] += h;
-                captured_lean(model, ps, p, pos, s->quat, crush, pp, tp);
+                captured_lean(model, ps, p, pos, s->quat, crush, tp);
                 pos[k] -= 2.0 * h;
-                captured_lean(model, ps, p, pos, s->quat, crush, pp, tm);
+                captured_lean(model, ps, p, pos, s->quat, crush, tm);
             } else { /* a turn about world axis k - 3, applied in the body frame */
                 turn[k - 3] = 1.0;
                 quat_unrotate(w, s->quat, turn);
                 quat_integrate(qp, w, h);
                 quat_integrate(qm, w, -h);
-                captured_lean(model, ps, p, pos, qp, crush, pp, tp);
-                captured_lean(model, ps, p, pos, qm, crush, pp, tm);
+                captured_lean(model, ps, p, pos, qp, crush, tp);
+                captured_lean(model, ps, p, pos, qm, crush, tm);
             }
             double g = -(q[0] * (tp[0] - tm[0]) + q[1] * (tp[1] - tm[1])) / (2.0 * h);
             if (k < 3)
@@ -378,6 +385,9 @@ int cs_post_capture(const cs_model *model, cs_state *s) {
         double d = v3_dot(rel, f), lat = v3_dot(rel, left);
         if (d < 0.0 || fabs(lat) > 0.5 * v->front_width + CS_CAPTURE_MARGIN || d > zb) continue;
         ps->captured = 1;
+        double pt[3], heading[3];
+        edge_point(model, p, s->pos, s->quat, s->crush, pt, heading);
+        ps->lever = (pt[2] > 0.05 ? pt[2] : 0.05) + model->posts[p].pivot;
         if (!s->contact_started) {
             s->contact_started = 1;
             s->summary.first_contact_time = s->t;
