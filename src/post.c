@@ -259,11 +259,11 @@ double cs_post_stored_energy(const cs_model *model, const cs_state *s, int p) {
 /* ---- posts struck by the face ----
  * A standing post whose base the face's bottom edge reaches (within its width plus a margin) is
  * struck by the vehicle: it leaves the cable paths and is pushed over at the face's bottom edge,
- * height zb. With the face a distance d past the post's base (along the vehicle's heading f), the post
- * leans by theta = asin(d / (zb + pivot)) toward f, resisting with its moment M (elastic-plastic, as
- * above). Its resistance acts on the vehicle as the gradient of the work Q . dtilt with respect to the
- * vehicle's pose, so the work the vehicle does is exactly what the post stores and dissipates; along
- * the heading that is the push M / ((zb + pivot) cos theta) (push x dd = M dtheta), which also loads
+ * height zb at the strike. With the face a distance d past the post's base (along the vehicle's heading
+ * f), the post leans by theta = asin(d / (zb + pivot)) toward f, resisting with its moment M
+ * (elastic-plastic, as above). Its resistance acts on the vehicle as the gradient of the work Q . dtilt with
+ * respect to the vehicle's pose, so the work the vehicle does is exactly what the post stores and dissipates;
+ * along the heading that is the push M / ((zb + pivot) cos theta) (push x dd = M dtheta), which also loads
  * the crush. */
 #define CS_CAPTURE_MARGIN 0.1 /* m beyond each face corner that still strikes a post */
 
@@ -301,10 +301,10 @@ static void edge_point(const cs_model *model, int p, const double *pos, const do
  * distance d past the base along the heading, and the post turns about its pivot through the point it
  * was struck at, ps->lever along it: sin(theta) = d / lever. The tilt is theta along the heading and
  * the permanent set across it (the face pushes along its heading only, so it turns no tilt across).
- * Returns theta, or -1 if the face is short of the base. */
+ * Returns theta, or -1 if the face is short of the base; f gets the heading. */
 static double captured_lean(const cs_model *model, const cs_post_state *ps, int p, const double *pos,
-                            const double *quat, double crush, double *tilt) {
-    double f[3], pt[3], rel[3], base[3] = {model->posts[p].x, 0.0, 0.0};
+                            const double *quat, double crush, double *tilt, double *f) {
+    double pt[3], rel[3], base[3] = {model->posts[p].x, 0.0, 0.0};
     edge_point(model, p, pos, quat, crush, pt, f);
     v3_sub(rel, pt, base);
     double d = v3_dot(rel, f), sn = d / ps->lever;
@@ -328,11 +328,9 @@ double cs_post_place_captured(const cs_model *model, cs_state *s, double crush, 
         cs_post_state *ps = &s->posts[p];
         if (!ps->captured || !cs_post_standing(ps)) continue;
         const cs_post_model *pm = &model->posts[p];
-        double q[2];
-        double th = captured_lean(model, ps, p, s->pos, s->quat, crush, ps->tilt);
+        double q[2], f[3];
+        double th = captured_lean(model, ps, p, s->pos, s->quat, crush, ps->tilt, f);
         cs_post_resistance(pm, ps, ps->tilt, q);
-        double f[3], left[3], o[3], zb;
-        face_frame(model, s->pos, s->quat, crush, o, f, left, &zb);
         double m = q[0] * f[0] + q[1] * f[1];
         if (m < 0.0 || th < 0.0) { /* the face has backed off: the post stands at its set, free */
             ps->tilt[0] = ps->plastic[0], ps->tilt[1] = ps->plastic[1];
@@ -344,21 +342,21 @@ double cs_post_place_captured(const cs_model *model, cs_state *s, double crush, 
         if (!force) continue;
         const double h = 1e-6;
         for (int k = 0; k < 6; k++) {
-            double tp[2], tm[2], qp[4], qm[4], pos[3], turn[3] = {0.0, 0.0, 0.0}, w[3];
+            double tp[2], tm[2], qp[4], qm[4], pos[3], turn[3] = {0.0, 0.0, 0.0}, w[3], fk[3];
             memcpy(qp, s->quat, sizeof qp), memcpy(qm, s->quat, sizeof qm);
             v3_copy(pos, s->pos);
             if (k < 3) {
                 pos[k] += h;
-                captured_lean(model, ps, p, pos, s->quat, crush, tp);
+                captured_lean(model, ps, p, pos, s->quat, crush, tp, fk);
                 pos[k] -= 2.0 * h;
-                captured_lean(model, ps, p, pos, s->quat, crush, tm);
+                captured_lean(model, ps, p, pos, s->quat, crush, tm, fk);
             } else { /* a turn about world axis k - 3, applied in the body frame */
                 turn[k - 3] = 1.0;
                 quat_unrotate(w, s->quat, turn);
                 quat_integrate(qp, w, h);
                 quat_integrate(qm, w, -h);
-                captured_lean(model, ps, p, pos, qp, crush, tp);
-                captured_lean(model, ps, p, pos, qm, crush, tm);
+                captured_lean(model, ps, p, pos, qp, crush, tp, fk);
+                captured_lean(model, ps, p, pos, qm, crush, tm, fk);
             }
             double g = -(q[0] * (tp[0] - tm[0]) + q[1] * (tp[1] - tm[1])) / (2.0 * h);
             if (k < 3)

@@ -89,8 +89,8 @@ static void shear_failure_onset(void **state) {
 
 /* A barrier of this one post and no cable (a bogie test, a bollard), struck head-on at 5 m/s by the
  * fixture's truck and run to the end: the post is pushed over until it fails. */
-static cs_model *strike_one_post_until(cs_post_def *post, cs_state **state, double *strike_height,
-                                       cs_post_status failure) {
+/* The model of that strike: the post alone at x = 0, the truck head-on at 5 m/s. */
+static cs_model *one_post_model(cs_post_def *post, double *strike_height) {
     fixture fx;
     fixture_aps3(&fx);
     post->x = 0.0;
@@ -100,10 +100,17 @@ static cs_model *strike_one_post_until(cs_post_def *post, cs_state **state, doub
     fx.barrier.start_anchor.x = -10.0, fx.barrier.end_anchor.x = 10.0;
     fx.scenario.impact_x = 0.0;
     fx.scenario.speed = 5.0;
-    *strike_height = fx.vehicle.face_bottom;
+    if (strike_height) *strike_height = fx.vehicle.face_bottom;
     cs_error err;
     cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
     assert_non_null(m);
+    return m;
+}
+
+static cs_model *strike_one_post_until(cs_post_def *post, cs_state **state, double *strike_height,
+                                       cs_post_status failure) {
+    cs_model *m = one_post_model(post, strike_height);
+    cs_error err;
     *state = cs_state_create(m, &err);
     assert_int_equal(cs_run(m, *state, NULL, NULL, &err), CS_OK);
     assert_int_equal((*state)->posts[0].status, failure);
@@ -206,16 +213,8 @@ static void struck_post_takes_the_work_the_face_does(void **state) {
     fixture fx;
     fixture_aps3(&fx);
     cs_post_def post = fx.posts[0];
-    post.x = 0.0;
-    fx.barrier.cable_count = 0;
-    fx.barrier.post_count = 1;
-    fx.barrier.posts = &post;
-    fx.barrier.start_anchor.x = -10.0, fx.barrier.end_anchor.x = 10.0;
-    fx.scenario.impact_x = 0.0;
-    fx.scenario.speed = 5.0;
+    cs_model *m = one_post_model(&post, NULL);
     cs_error err;
-    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
-    assert_non_null(m);
     cs_state *s = cs_state_create(m, &err);
     while (!s->posts[0].captured)
         assert_int_equal(cs_step(m, s, &err), CS_OK);
