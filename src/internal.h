@@ -170,7 +170,7 @@ struct cs_state {
     int event_count;
 
     cs_solver solver;
-    struct cs_state *step_start; /* the barrier as the step's stages 2-5 found it (step.c) */
+    struct cs_state *step_start; /* the state at the step's start, to take it again (step.c) */
 };
 
 void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src);

@@ -7,8 +7,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The state's own memory, without the step-start copy: cables, posts, events, the speed ring and the
- * solver's workspace (the copy needs only the cables and posts). Returns 0, or -1 out of memory. */
+/* The state's memory: cables and posts; with_workspace, also events, the speed ring, the solver's
+ * workspace and the step-start copy (which needs only cables and posts). Returns 0, or -1 out of
+ * memory. */
 static int allocate(const cs_model *model, cs_state *s, int with_workspace) {
     int nc = model->cable_count, np = model->post_count, nn = model->max_nodes;
     s->cables = calloc((size_t)(nc ? nc : 1), sizeof *s->cables);

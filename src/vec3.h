@@ -73,16 +73,6 @@ static inline void quat_integrate(double *q, const double *w, double dt) {
     for (int i = 0; i < 4; i++)
         q[i] = r[i] / n;
 }
-/* Normalised linear blend of two unit quaternions, a + f (b - a) (on b's side of a), for small turns. */
-static inline void quat_nlerp(double *r, const double *a, const double *b, double f) {
-    double d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3], sg = d < 0.0 ? -1.0 : 1.0, n = 0.0;
-    for (int i = 0; i < 4; i++)
-        r[i] = a[i] + f * (sg * b[i] - a[i]), n += r[i] * r[i];
-    n = sqrt(n);
-    for (int i = 0; i < 4; i++)
-        r[i] /= n;
-}
-
 /* World rotation vector that turns a into b (b = exp(r / 2) * a), the shorter way round. */
 static inline void quat_turn(double *r, const double *a, const double *b) {
     double w = b[0] * a[0] + b[1] * a[1] + b[2] * a[2] + b[3] * a[3], v[3];
