@@ -39,12 +39,8 @@ static double left_of(const double *a, const double *b, const double *p) {
     return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
 }
 
-/* Height of the straight line between the nearest non-corner nodes around index i at abscissa x. */
-static double natural_height(const cs_cable_state *cs, int lo, int hi, double x) {
-    while (lo > 0 && is_corner(cs->node[lo]))
-        lo--;
-    while (hi < cs->node_count - 1 && is_corner(cs->node[hi]))
-        hi++;
+/* Height of the rope's straight span between nodes lo and hi at abscissa x. */
+static double span_height(const cs_cable_state *cs, int lo, int hi, double x) {
     const double *a = cs->pos + 3 * lo, *b = cs->pos + 3 * hi;
     double f = (b[0] - a[0]) != 0.0 ? (x - a[0]) / (b[0] - a[0]) : 0.5;
     f = f < 0.0 ? 0.0 : (f > 1.0 ? 1.0 : f);
@@ -151,31 +147,39 @@ void cs_contact_place_corners(const cs_model *model, cs_state *s, double crush) 
 static void update_cable(const cs_model *model, cs_state *s, int c) {
     cs_cable_state *cs = &s->cables[c];
     cs_contact_place_corners(model, s, s->crush);
-    /* release corners that no longer push the path */
+    /* release corners the rope no longer pulls into the face (its pull along the body's x, the face's
+     * normal, is not backwards): tested in 3D, as a rope on a pitched face slides down it below the
+     * line it runs on in plan while it still bears on the face */
     for (int i = cs->node_count - 2; i >= 1; i--) {
         if (!is_corner(cs->node[i])) continue;
-        if (left_of(cs->pos + 3 * (i - 1), cs->pos + 3 * (i + 1), cs->pos + 3 * i) <= 0.0)
-            cs_cable_remove_node(cs, i);
+        double f[3], fb[3];
+        cs_node_force(cs, i, f);
+        quat_unrotate(fb, s->quat, f);
+        if (fb[0] >= 0.0) cs_cable_remove_node(cs, i);
     }
     /* engage corners that have crossed the path */
     for (int k = 0; k < 2; k++) {
         if (find_node(cs, corner_id[k]) >= 0) continue;
-        double lo, hi, p[3];
+        double lo, hi, p[3], zn = 0.0, bz = 0.0;
         face_heights(model, s, k, &lo, &hi);
-        cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), 0.0, p);
         int j = 1;
-        while (j < cs->node_count - 1 && cs->pos[3 * j] <= p[0])
-            j++;
+        /* the corner at the rope's own height: where the rope would touch it (a pitched or rolled face
+         * is not where it is at the CG's height); the rope's height there found by two passes */
+        for (int pass = 0; pass < 2; pass++) {
+            cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), bz, p);
+            for (j = 1; j < cs->node_count - 1 && cs->pos[3 * j] <= p[0];)
+                j++;
+            zn = span_height(cs, j - 1, j, p[0]);
+            bz = body_z_for(model, s, k, zn);
+        }
         if (p[0] <= cs->pos[0] || p[0] >= cs->pos[3 * (cs->node_count - 1)])
             continue; /* beyond the anchors */
-        double zn = natural_height(cs, j - 1, j, p[0]);
-        p[2] = zn;
         if (left_of(cs->pos + 3 * (j - 1), cs->pos + 3 * j, p) <= 0.0) continue;
         if (zn < lo || zn > hi) {
             slip(model, s, c, zn < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
             return;
         }
-        cs->corner_z[k] = cs->corner_z_commit[k] = body_z_for(model, s, k, zn);
+        cs->corner_z[k] = cs->corner_z_commit[k] = bz;
         cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), cs->corner_z[k], p);
         cs_cable_insert_node(cs, j, corner_id[k], p);
     }

@@ -33,7 +33,7 @@ void cs_energy_update(const cs_model *model, cs_state *s) {
     e->post_plastic = s->e_post_plastic;
     e->soil = s->e_soil;
     e->crush = s->e_crush;
-    e->friction = s->e_friction;
+    e->friction = s->e_friction + s->e_tyre;
     e->released = s->e_released;
     e->initial_total = s->e_initial_total;
     e->initial_kinetic = s->e_initial_kinetic;

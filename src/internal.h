@@ -8,6 +8,7 @@
 
 /* Node ids on a cable's path: posts are 0..post_count-1, the rest are negative. */
 enum { CS_MAX_CABLES_PER_POST = 64 }; /* = the model's cable limit */
+enum { CS_PATH_LEVELS = 2 };          /* how many times a step may be cut into pieces (step.c) */
 enum { CS_NODE_START = -1, CS_NODE_END = -2, CS_NODE_LEFT = -3, CS_NODE_RIGHT = -4 };
 
 typedef struct cs_rope {
@@ -153,8 +154,8 @@ struct cs_state {
     cs_post_state *posts;
     int anchor_failed[2];
 
-    /* energy accumulators, J */
-    double e_cable_plastic, e_post_plastic, e_soil, e_crush, e_friction, e_released;
+    /* energy accumulators, J: the barrier's (friction: over supports and on the face) and the tyres' */
+    double e_cable_plastic, e_post_plastic, e_soil, e_crush, e_friction, e_released, e_tyre;
     double e_initial_total, e_initial_kinetic;
     double e_initial_potential_ref; /* CG height at t = 0 */
     cs_energy energy;
@@ -170,7 +171,8 @@ struct cs_state {
     int event_count;
 
     cs_solver solver;
-    struct cs_state *step_start; /* the state at the step's start, to take it again (step.c) */
+    /* the state at the start of the stretch followed at each level, to take it again (step.c) */
+    struct cs_state *step_start[CS_PATH_LEVELS];
 };
 
 void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src);

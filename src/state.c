@@ -33,8 +33,11 @@ static int allocate(const cs_model *model, cs_state *s, int with_workspace) {
     if (!with_workspace) return 0;
     s->events = calloc((size_t)model->event_capacity, sizeof *s->events);
     s->speed_ring = calloc((size_t)model->window_steps + 1, sizeof *s->speed_ring);
-    s->step_start = calloc(1, sizeof *s->step_start);
-    if (!s->events || !s->speed_ring || !s->step_start || allocate(model, s->step_start, 0) != 0) return -1;
+    if (!s->events || !s->speed_ring) return -1;
+    for (int k = 0; k < CS_PATH_LEVELS; k++) {
+        s->step_start[k] = calloc(1, sizeof *s->step_start[k]);
+        if (!s->step_start[k] || allocate(model, s->step_start[k], 0) != 0) return -1;
+    }
     return cs_solver_init(model, &s->solver);
 }
 
@@ -60,7 +63,8 @@ void cs_state_free(cs_state *s) {
         }
     }
     cs_solver_free(&s->solver);
-    cs_state_free(s->step_start);
+    for (int k = 0; k < CS_PATH_LEVELS; k++)
+        cs_state_free(s->step_start[k]);
     free(s->cables), free(s->posts), free(s->events), free(s->speed_ring);
     free(s);
 }
@@ -72,7 +76,8 @@ void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src) {
     cs_state keep = *dst;
     *dst = *src;
     dst->cables = keep.cables, dst->posts = keep.posts, dst->events = keep.events;
-    dst->speed_ring = keep.speed_ring, dst->step_start = keep.step_start, dst->solver = keep.solver;
+    dst->speed_ring = keep.speed_ring, dst->solver = keep.solver;
+    memcpy(dst->step_start, keep.step_start, sizeof dst->step_start);
     dst->cable_count_alloc = keep.cable_count_alloc;
     for (int c = 0; c < model->cable_count; c++) {
         cs_cable_state *d = &dst->cables[c], k = *d;
@@ -143,7 +148,8 @@ void cs_state_reset(const cs_model *model, cs_state *s) {
     memset(s->posts, 0, (size_t)model->post_count * sizeof *s->posts);
     cs_solver_reset(&s->solver);
     s->anchor_failed[0] = s->anchor_failed[1] = 0;
-    s->e_cable_plastic = s->e_post_plastic = s->e_soil = s->e_crush = s->e_friction = s->e_released = 0.0;
+    s->e_cable_plastic = s->e_post_plastic = s->e_soil = s->e_crush = s->e_friction = s->e_released =
+        s->e_tyre = 0.0;
     s->event_count = 0;
     s->ring_fill = 0;
     s->decel_50ms_g = 0.0;

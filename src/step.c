@@ -110,28 +110,38 @@ static double book_gap(const cs_model *model, cs_state *s, double work, double e
  *   and ropes spend the difference in motion the model does not have; it is booked as released, as
  *   a failure's is.
  * - It changed by more, or the solve at the end pose failed: the barrier's force peaked within the
- *   step, or what the end state booked is not what the barrier did on the way. The step goes back to
- *   its start and is taken again as CS_PATH_PIECES steps, vehicle and barrier, each committed if its
- *   solve converged (the last always), with the same rule for each stretch between commits.
- * docs/theory.md, "A step". */
+ *   step, or what the end state booked is not what the barrier did on the way (a post folding over
+ *   onto a branch the path never reached). The step goes back to its start and is taken again as
+ *   CS_PATH_PIECES steps, vehicle and barrier, each followed by the same rule; a piece that fails at
+ *   the last of CS_PATH_LEVELS levels is taken as CS_PATH_PIECES steps again, each committed if its
+ *   solve converged (the last always), with the gap rule for each stretch between commits.
+ * The gap allowed scales with the stretch's length. docs/theory.md, "A step". */
 #define CS_PATH_GAP 1e-3
 #define CS_PATH_PIECES 8
 
-static void follow_path(const cs_model *model, cs_state *s) {
-    double dt = model->scenario.dt, scale = cs_energy_scale(model, s), e0 = barrier_energy(model, s);
-    double work = 0.0;
-    s->solver_residual = 0.0;
-    cs_state_copy(model, s->step_start, s);
-    if (advance(model, s, dt, 0, &work) &&
-        book_gap(model, s, work, e0, CS_PATH_GAP * scale) >= -CS_PATH_GAP * scale)
+/* Follows the path over a stretch h long that is cut `level` times already. */
+static void follow_stretch(const cs_model *model, cs_state *s, double h, int level, double scale) {
+    double e0 = barrier_energy(model, s), work = 0.0, snap = CS_PATH_GAP * scale * h / model->scenario.dt;
+    cs_state *start = s->step_start[level];
+    cs_state_copy(model, start, s);
+    if (advance(model, s, h, 0, &work) && book_gap(model, s, work, e0, snap) >= -snap) return;
+    cs_state_copy(model, s, start);
+    if (level + 1 < CS_PATH_LEVELS) {
+        for (int j = 0; j < CS_PATH_PIECES; j++)
+            follow_stretch(model, s, h / CS_PATH_PIECES, level + 1, scale);
         return;
-    cs_state_copy(model, s, s->step_start);
+    }
     work = 0.0;
     for (int j = 1; j <= CS_PATH_PIECES; j++) {
-        if (!advance(model, s, dt / CS_PATH_PIECES, j == CS_PATH_PIECES, &work)) continue;
-        book_gap(model, s, work, e0, CS_PATH_GAP / CS_PATH_PIECES * scale);
+        if (!advance(model, s, h / CS_PATH_PIECES, j == CS_PATH_PIECES, &work)) continue;
+        book_gap(model, s, work, e0, snap / CS_PATH_PIECES);
         work = 0.0, e0 = barrier_energy(model, s);
     }
+}
+
+static void follow_path(const cs_model *model, cs_state *s) {
+    s->solver_residual = 0.0;
+    follow_stretch(model, s, model->scenario.dt, 0, cs_energy_scale(model, s));
 }
 
 static cs_status unstable(const cs_model *model, cs_state *s, cs_error *err, const char *what, int element) {

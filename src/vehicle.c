@@ -113,7 +113,7 @@ static void accelerations(const cs_model *model, cs_state *s) {
 static void kick(cs_state *s, double h) {
     v3_addto(s->vel, s->acc, 0.5 * h);
     v3_addto(s->omega, s->ang_acc, 0.5 * h);
-    s->e_friction += s->tyre_power * 0.5 * h;
+    s->e_tyre += s->tyre_power * 0.5 * h;
 }
 
 void cs_vehicle_start(const cs_model *model, cs_state *s) {
