@@ -314,9 +314,18 @@ static double norm_inf(const double *r, int n) {
     return m;
 }
 
-static double fd_step(const slot *u, double x) {
-    if (u->kind == U_NODE || u->kind == U_HEIGHT) return 1e-8 * fmax(1.0, fabs(x));
-    return 1e-8;
+/* Finite-difference step of unknown u: 1e-8 for a tilt (rad) or the crush (m); for a node or a contact
+ * height, a thousandth of the length over which its stick/slip switch is rounded (the friction floor
+ * over the rope's stiffness there, w / c), so that the quotient takes the switch's slope instead of
+ * straddling it. Until session 10 it was 1e-8 of m: 7 um at 700 m along a 300-post barrier, twice that
+ * length, and Newton stalled there with a Jacobian averaged across the switch (docs/performance.md). */
+static double fd_step(const cs_model *model, const cs_state *s, const slot *u) {
+    if (u->kind != U_NODE && u->kind != U_HEIGHT) return 1e-8;
+    const cs_cable_state *cs = &s->cables[u->a];
+    const cs_rope *r = &model->cables[u->a].rope;
+    int i = u->kind == U_NODE ? u->b : corner_node(cs, u->b);
+    double l = cs_span_length(cs, i - 1) + cs_span_length(cs, i) + 1e-9;
+    return 1e-3 * CS_FRICTION_FLOOR * r->fu * l / r->ea;
 }
 
 /* ---- banded LU with partial pivoting: row i keeps columns i-kl .. i+ku+kl ---- */
@@ -379,7 +388,7 @@ static void jacobian(const cs_model *model, cs_state *s, cs_solver *w, int n, co
     for (int g = 0; g < stride && g < n; g++) {
         memcpy(w->xt, x, (size_t)n * sizeof *x);
         for (int j = g; j < n; j += stride)
-            w->xt[j] += fd_step(&w->slots[j], x[j]);
+            w->xt[j] += fd_step(model, s, &w->slots[j]);
         scatter(model, s, w, n, w->xt);
         residual(model, s, w, n, w->rt);
         for (int j = g; j < n; j += stride) {
