@@ -4,15 +4,16 @@
  * crossed wraps the face: each corner that lies on the protected side of the path (to the left of the
  * path directed from the start anchor to the end anchor) becomes a support of the cable, with capstan
  * friction (cable.c). Between the vehicle and the nearest standing posts the cable stays straight.
- * A corner that no longer pushes the path (the cable runs straight past it) is released.
+ * Both tests are in 3D: a corner is tested where the rope runs at its abscissa (a pitched face is not
+ * where it is at the CG's height), and released when the rope no longer pulls it into the face.
  *
- * Heights: a cable engages at its natural height (the straight line between its neighbouring
- * supports); below the face's bottom edge at first contact the vehicle rides over it (override), above
- * the top edge it runs under it (underride). Once engaged, the contact's height on the face is an
- * unknown of the barrier solve with Coulomb friction on the vertical face: it sticks while the spans'
- * pull along the face is at most mu times their pull into it, else it slides with the pull (solve.c,
- * cs_contact_solve_height). A contact that slides past an edge slips off the same way. Either way the
- * cable leaves the contact for good. */
+ * Heights: a cable engages at its height on the span it runs on (the straight line between its
+ * neighbouring supports); below the face's bottom edge at first contact the vehicle rides over it
+ * (override), above the top edge it runs under it (underride). Once engaged, the contact's height on the
+ * face is an unknown of the barrier solve with Coulomb friction on the vertical face: it sticks while the
+ * spans' pull along the face is at most mu times their pull into it, else it slides with the pull
+ * (solve.c, cs_contact_solve_height). A contact that slides past an edge slips off the same way. Either
+ * way the cable leaves the contact for good. */
 #include "internal.h"
 #include "vec3.h"
 

@@ -317,8 +317,8 @@ static double norm_inf(const double *r, int n) {
 /* Finite-difference step of unknown u: 1e-8 for a tilt (rad) or the crush (m); for a node or a contact
  * height, a thousandth of the length over which its stick/slip switch is rounded (the friction floor
  * over the rope's stiffness there, w / c), so that the quotient takes the switch's slope instead of
- * straddling it. Until session 10 it was 1e-8 of m: 7 um at 700 m along a 300-post barrier, twice that
- * length, and Newton stalled there with a Jacobian averaged across the switch (docs/performance.md). */
+ * straddling it. Until session 10 it was 1e-8 of m: 7 um at 700 m along a 300-post barrier, wider than
+ * the switch, and Newton stalled there with a Jacobian averaged across it (docs/performance.md). */
 static double fd_step(const cs_model *model, const cs_state *s, const slot *u) {
     if (u->kind != U_NODE && u->kind != U_HEIGHT) return 1e-8;
     const cs_cable_state *cs = &s->cables[u->a];
