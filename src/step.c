@@ -113,8 +113,9 @@ static double book_gap(const cs_model *model, cs_state *s, double work, double e
  *   step, or what the end state booked is not what the barrier did on the way (a post folding over
  *   onto a branch the path never reached). The step goes back to its start and is taken again as
  *   CS_PATH_PIECES steps, vehicle and barrier, each followed by the same rule; a piece that fails at
- *   the last of CS_PATH_LEVELS levels is taken as CS_PATH_PIECES steps again, each committed if its
- *   solve converged (the last always), with the gap rule for each stretch between commits.
+ *   the last of CS_PATH_LEVELS levels is taken as CS_PATH_PIECES steps again and cut no further: each
+ *   committed if its solve converged (the last always), the gap of each stretch between commits
+ *   booked as it falls (a snap as released, a negative gap left in the ledger).
  * The gap allowed scales with the stretch's length. docs/theory.md, "A step". */
 #define CS_PATH_GAP 1e-3
 #define CS_PATH_PIECES 8
