@@ -109,8 +109,49 @@ static void entry_material(const cs_model *model, const cs_state *s, int p, doub
     }
 }
 
-/* Newton on the post's tilt with a finite-difference Jacobian and backtracking. Returns the relative
- * residual found on entry. */
+/* A post whose own solve stalls far from balance has no equilibrium near its tilt, the ropes sliding
+ * through it: a post on its plateau under the ropes' downward pull (P-delta) past the point where
+ * tilting further adds more moment than it takes. A real post swings the way the unbalanced moment
+ * turns it until the moment balances again. Follow that: steps of CS_FALL_STEP along the residual
+ * (re-aimed at each step) until it turns back, then bisect the last step to where it vanishes; no
+ * further than the rotation limit, where a post still unbalanced fails at the next check. The energy
+ * the ropes give up on the way beyond what the post and friction take is what the step's ledger
+ * books as released (step.c). */
+#define CS_FALL_STEP 0.01  /* rad */
+#define CS_FALL_STALL 1e-2 /* residual, of the capacity, that counts as no equilibrium near */
+
+static double fall(const cs_model *model, cs_state *s, int p, const double *m_entry, double *al, double *r) {
+    const cs_post_model *pm = &model->posts[p];
+    double rn = hypot(r[0], r[1]), t[2], rt[2];
+    for (int k = 0; k * CS_FALL_STEP < pm->rot_limit + CS_FALL_STEP && hypot(al[0], al[1]) < pm->rot_limit;
+         k++) {
+        double d[2] = {r[0] / rn, r[1] / rn};
+        t[0] = al[0] + CS_FALL_STEP * d[0], t[1] = al[1] + CS_FALL_STEP * d[1];
+        post_residual(model, s, p, t, m_entry, rt, NULL);
+        if (rt[0] * d[0] + rt[1] * d[1] > 0.0) { /* still pushed on */
+            al[0] = t[0], al[1] = t[1], r[0] = rt[0], r[1] = rt[1], rn = hypot(r[0], r[1]);
+            continue;
+        }
+        double lo = 0.0, hi = CS_FALL_STEP, a0[2] = {al[0], al[1]};
+        for (int b = 0; b < 40; b++) { /* the moment along d changes sign between lo and hi */
+            double f = 0.5 * (lo + hi);
+            t[0] = a0[0] + f * d[0], t[1] = a0[1] + f * d[1];
+            post_residual(model, s, p, t, m_entry, rt, NULL);
+            if (rt[0] * d[0] + rt[1] * d[1] > 0.0)
+                lo = f;
+            else
+                hi = f;
+        }
+        al[0] = a0[0] + hi * d[0], al[1] = a0[1] + hi * d[1];
+        break;
+    }
+    post_residual(model, s, p, al, m_entry, r, NULL);
+    return hypot(r[0], r[1]) / pm->moment_cap;
+}
+
+/* Newton on the post's tilt with a finite-difference Jacobian and backtracking; where it stalls far
+ * from balance, the post falls to the next equilibrium (fall). Returns the relative residual found on
+ * entry. */
 double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol) {
     cs_post_state *ps = &s->posts[p];
     if (!cs_post_standing(ps) || ps->captured) return 0.0;
@@ -177,7 +218,10 @@ double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol) {
         if (!(rtn < rn)) break;
         al[0] = trial[0], al[1] = trial[1], r[0] = rt[0], r[1] = rt[1], rn = rtn;
     }
-    post_residual(model, s, p, al, m_entry, r, NULL); /* leave the nodes at the accepted tilt */
+    if (rn > CS_FALL_STALL)
+        fall(model, s, p, m_entry, al, r);
+    else
+        post_residual(model, s, p, al, m_entry, r, NULL); /* leave the nodes at the accepted tilt */
     return entry;
 }
 
