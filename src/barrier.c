@@ -118,17 +118,18 @@ static double crush_solve(const cs_model *model, cs_state *s) {
 
 /* Gauss-Seidel over the local problems, up to `sweeps` sweeps, or until CS_GS_STALL sweeps in a row
  * have not brought the residual below 0.9 of the best yet (a stalled sweep is pure cost: of APS3's two
- * 300-sweep fallbacks one had its best residual, 1.49e-2, at sweep 25 and ended at 1.88e-2). */
+ * 300-sweep fallbacks one had its best residual, 1.49e-2, at sweep 25 and ended at 1.88e-2). With
+ * may_fall, a post with no equilibrium near falls to the next one (post.c). */
 #define CS_GS_STALL 50
 
-static double gauss_seidel(const cs_model *model, cs_state *s, int sweeps) {
+static double gauss_seidel(const cs_model *model, cs_state *s, int sweeps, int may_fall) {
     const cs_scenario_def *sc = &model->scenario;
     double worst = 0.0, best = HUGE_VAL;
     for (int sweep = 0, last_gain = 0; sweep < sweeps && sweep - last_gain <= CS_GS_STALL; sweep++) {
         worst = 0.0;
         for (int k = 0; k < model->post_count; k++) {
             int p = (sweep % 2 == 0) ? k : model->post_count - 1 - k; /* alternate direction */
-            worst = fmax(worst, cs_post_solve(model, s, p, sc->solver_tolerance));
+            worst = fmax(worst, cs_post_solve(model, s, p, sc->solver_tolerance, may_fall));
         }
         for (int c = 0; c < model->cable_count; c++) {
             cs_cable_state *cs = &s->cables[c];
@@ -156,18 +157,35 @@ static double gauss_seidel(const cs_model *model, cs_state *s, int sweeps) {
     return worst;
 }
 
-/* The solve at the vehicle's pose as it stands: Newton, with Gauss-Seidel where Newton stalls. */
+/* Newton from the state as it stands, with rounds of Gauss-Seidel sweeps where it stalls far off;
+ * -1 if it still stalls. */
+static double newton_or_sweeps(const cs_model *model, cs_state *s, int may_fall) {
+    double worst = cs_barrier_newton(model, s);
+    for (int round = 0; worst < 0.0 && round < 6; round++) {
+        gauss_seidel(model, s, 3, may_fall); /* sweeps, then Newton again from there */
+        worst = cs_barrier_newton(model, s);
+    }
+    return worst;
+}
+
+/* The solve at the vehicle's pose as it stands: Newton, with Gauss-Seidel where Newton stalls. A solve
+ * that still ends above CS_FALL_TRIGGER is taken again with sweeps that let a post with no equilibrium
+ * near fall to the next one (post.c). That is kept if it converges and, committed, the barrier would
+ * hold no more energy (stored and dissipated) than at its last commit: a fall gives energy up, and a
+ * "fall" that would book more is a branch the path cannot reach (designs 1648 and 5498 converged onto
+ * states whose commit booked 11 kJ and 0.8 MJ more than the ropes gave up). Only on a failed
+ * solve: a post whose local solve stalls inside an ordinary sweep is usually waiting for its
+ * neighbours, not falling. */
+#define CS_FALL_TRIGGER 1e-2
+#define CS_FALL_SLACK 1e-3 /* of the energy scale, as step.c's CS_PATH_GAP: a piece's work, round-off */
+
 static double solve_at_pose(const cs_model *model, cs_state *s) {
     const cs_scenario_def *sc = &model->scenario;
     if (!cs_face_loaded(model, s)) crush_solve(model, s); /* an unloaded face springs back to its set */
-    double worst = cs_barrier_newton(model, s);
-    for (int round = 0; worst < 0.0 && round < 6; round++) { /* Newton stalled far off: Gauss-Seidel */
-        gauss_seidel(model, s, 3);                           /* sweeps, then Newton again from there */
-        worst = cs_barrier_newton(model, s);
-    }
+    double worst = newton_or_sweeps(model, s, 0);
     if (worst > sc->solver_tolerance) { /* stalled near it: polish, and keep whichever is closer */
         cs_solver_keep(model, s);
-        gauss_seidel(model, s, 20);
+        gauss_seidel(model, s, 20, 0);
         double polished = cs_barrier_newton(model, s);
         if (polished >= 0.0 && polished < worst)
             worst = polished;
@@ -175,7 +193,18 @@ static double solve_at_pose(const cs_model *model, cs_state *s) {
             cs_solver_go_back(model, s);
     }
     if (worst < 0.0)
-        worst = gauss_seidel(model, s, sc->solver_max_sweeps); /* Newton stalled, or band too wide */
+        worst = gauss_seidel(model, s, sc->solver_max_sweeps, 0); /* Newton stalled, or band too wide */
+    if (worst > CS_FALL_TRIGGER) {
+        cs_solver_keep(model, s);
+        gauss_seidel(model, s, 3, 1);
+        double fallen = newton_or_sweeps(model, s, 1);
+        if (fallen < 0.0) fallen = gauss_seidel(model, s, sc->solver_max_sweeps, 1);
+        double slack = CS_FALL_SLACK * cs_energy_scale(model, s);
+        if (fallen <= CS_FALL_TRIGGER && cs_barrier_trial_energy(model, s) <= s->stored_committed + slack)
+            worst = fallen;
+        else
+            cs_solver_go_back(model, s);
+    }
     return worst;
 }
 
@@ -219,6 +248,17 @@ void cs_barrier_commit(const cs_model *model, cs_state *s) {
     if (s->crush > s->crush_max) s->crush_max = s->crush;
     s->crush_committed = s->crush;
     s->crush_force_committed = f;
+    s->stored_committed = cs_barrier_stored_energy(model, s);
+}
+
+/* The stored and dissipated energy the barrier would hold if committed as it stands (found on a trial
+ * copy, which records no events). */
+double cs_barrier_trial_energy(const cs_model *model, const cs_state *s) {
+    cs_state *t = s->trial;
+    cs_state_copy(model, t, s);
+    t->event_count = model->event_capacity;
+    cs_barrier_commit(model, t);
+    return cs_barrier_stored_energy(model, t);
 }
 
 /* Stored plus dissipated energy of the barrier side; a sudden failure changes it with no work done. */

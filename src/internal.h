@@ -165,7 +165,8 @@ struct cs_state {
     int ring_fill;
     double decel_50ms_g;
     cs_summary summary;
-    double solver_residual; /* largest residual of the solves the step committed */
+    double solver_residual;  /* largest residual of the solves the step committed */
+    double stored_committed; /* cs_barrier_stored_energy at the last commit, J */
 
     cs_event *events;
     int event_count;
@@ -173,9 +174,11 @@ struct cs_state {
     cs_solver solver;
     /* the state at the start of the stretch followed at each level, to take it again (step.c) */
     struct cs_state *step_start[CS_PATH_LEVELS];
+    struct cs_state *trial; /* scratch for a trial commit (barrier.c) */
 };
 
 void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src);
+void cs_state_restore_barrier(const cs_model *model, cs_state *s, const cs_state *from);
 
 /* ---- rope law (cable.c) ---- */
 double cs_rope_tension(const cs_rope *rope, double strain, double plastic_strain);
@@ -202,7 +205,7 @@ double cs_footing_capacity(const cs_footing_def *f, double load_height);
 double cs_footing_impact_capacity(const cs_footing_def *f, double load_height);
 double cs_footing_pullout_capacity(const cs_footing_def *f);
 void cs_post_attachment(const cs_model *model, int post, const double *tilt, double z, double *out);
-double cs_post_solve(const cs_model *model, cs_state *s, int post, double tol);
+double cs_post_solve(const cs_model *model, cs_state *s, int post, double tol, int may_fall);
 void cs_post_commit(const cs_model *model, cs_state *s, int post);
 double cs_post_stored_energy(const cs_model *model, const cs_state *s, int post);
 int cs_post_standing(const cs_post_state *ps);
@@ -247,6 +250,7 @@ void cs_solver_keep(const cs_model *model, cs_state *s);
 void cs_solver_go_back(const cs_model *model, cs_state *s);
 void cs_barrier_force(const cs_model *model, cs_state *s);
 void cs_barrier_commit(const cs_model *model, cs_state *s);
+double cs_barrier_trial_energy(const cs_model *model, const cs_state *s);
 double cs_barrier_stored_energy(const cs_model *model, const cs_state *s);
 
 /* ---- anchors (anchor.c) ---- */

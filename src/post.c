@@ -150,9 +150,9 @@ static double fall(const cs_model *model, cs_state *s, int p, const double *m_en
 }
 
 /* Newton on the post's tilt with a finite-difference Jacobian and backtracking; where it stalls far
- * from balance, the post falls to the next equilibrium (fall). Returns the relative residual found on
- * entry. */
-double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol) {
+ * from balance and may_fall, the post falls to the next equilibrium (fall). Returns the relative
+ * residual found on entry. */
+double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol, int may_fall) {
     cs_post_state *ps = &s->posts[p];
     if (!cs_post_standing(ps) || ps->captured) return 0.0;
     const cs_post_model *pm = &model->posts[p];
@@ -218,7 +218,7 @@ double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol) {
         if (!(rtn < rn)) break;
         al[0] = trial[0], al[1] = trial[1], r[0] = rt[0], r[1] = rt[1], rn = rtn;
     }
-    if (rn > CS_FALL_STALL)
+    if (may_fall && rn > CS_FALL_STALL)
         fall(model, s, p, m_entry, al, r);
     else
         post_residual(model, s, p, al, m_entry, r, NULL); /* leave the nodes at the accepted tilt */

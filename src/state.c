@@ -38,6 +38,8 @@ static int allocate(const cs_model *model, cs_state *s, int with_workspace) {
         s->step_start[k] = calloc(1, sizeof *s->step_start[k]);
         if (!s->step_start[k] || allocate(model, s->step_start[k], 0) != 0) return -1;
     }
+    s->trial = calloc(1, sizeof *s->trial);
+    if (!s->trial || allocate(model, s->trial, 0) != 0) return -1;
     return cs_solver_init(model, &s->solver);
 }
 
@@ -65,6 +67,7 @@ void cs_state_free(cs_state *s) {
     cs_solver_free(&s->solver);
     for (int k = 0; k < CS_PATH_LEVELS; k++)
         cs_state_free(s->step_start[k]);
+    cs_state_free(s->trial);
     free(s->cables), free(s->posts), free(s->events), free(s->speed_ring);
     free(s);
 }
@@ -78,6 +81,7 @@ void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src) {
     dst->cables = keep.cables, dst->posts = keep.posts, dst->events = keep.events;
     dst->speed_ring = keep.speed_ring, dst->solver = keep.solver;
     memcpy(dst->step_start, keep.step_start, sizeof dst->step_start);
+    dst->trial = keep.trial;
     dst->cable_count_alloc = keep.cable_count_alloc;
     for (int c = 0; c < model->cable_count; c++) {
         cs_cable_state *d = &dst->cables[c], k = *d;
@@ -95,6 +99,20 @@ void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src) {
         memcpy(d->pos, o->pos, 3 * n * sizeof *d->pos);
     }
     memcpy(dst->posts, src->posts, (size_t)model->post_count * sizeof *dst->posts);
+}
+
+/* The barrier of `from` back into s (cables, posts, crush, ledger sums, events), s's vehicle kept. */
+void cs_state_restore_barrier(const cs_model *model, cs_state *s, const cs_state *from) {
+    double pos[3], vel[3], quat[4], omega[3], acc[3], ang_acc[3];
+    double tyre_power = s->tyre_power, e_tyre = s->e_tyre;
+    v3_copy(pos, s->pos), v3_copy(vel, s->vel), v3_copy(omega, s->omega);
+    v3_copy(acc, s->acc), v3_copy(ang_acc, s->ang_acc);
+    memcpy(quat, s->quat, sizeof quat);
+    cs_state_copy(model, s, from);
+    v3_copy(s->pos, pos), v3_copy(s->vel, vel), v3_copy(s->omega, omega);
+    v3_copy(s->acc, acc), v3_copy(s->ang_acc, ang_acc);
+    memcpy(s->quat, quat, sizeof quat);
+    s->tyre_power = tyre_power, s->e_tyre = e_tyre;
 }
 
 /* A cable at t = 0: start anchor, every post, end anchor, straight at its height, rope laid in with
@@ -169,6 +187,7 @@ void cs_state_reset(const cs_model *model, cs_state *s) {
     s->summary.energy_balance_error = 0.0;
     s->summary.initial_kinetic_energy = s->e_initial_kinetic;
     s->summary.max_cable_tension = 0.0;
+    s->stored_committed = cs_barrier_stored_energy(model, s);
 }
 
 void cs_state_summary(const cs_state *s, cs_summary *out) {

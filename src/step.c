@@ -36,22 +36,6 @@ static double resolve_failures(const cs_model *model, cs_state *s) {
     return worst;
 }
 
-/* Stages 2-5 at the vehicle's pose as it stands. A solve that ends further than CS_PATH_TRIGGER from
- * equilibrium is not committed unless told to (its slides and plastic flow would be booked from a state
- * that is not one). Returns 1 if it committed, with the largest residual of the solves it committed
- * kept in s->solver_residual. */
-#define CS_PATH_TRIGGER 1e-2
-
-static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway) {
-    cs_contact_update(model, s);               /* 2. cables wrap onto or leave the face */
-    double worst = cs_barrier_solve(model, s); /* 3. posts, sliding and crush in equilibrium */
-    if (worst > CS_PATH_TRIGGER && !commit_anyway) return 0;
-    cs_barrier_commit(model, s);                     /* 4. plastic flow, friction and crush work */
-    worst = fmax(worst, resolve_failures(model, s)); /* 5. breaks, failures, posts struck by the face */
-    s->solver_residual = fmax(s->solver_residual, worst);
-    return 1;
-}
-
 /* The barrier's side of the ledger: what it stores, has dissipated and has released. */
 static double barrier_energy(const cs_model *model, const cs_state *s) {
     return cs_barrier_stored_energy(model, s) + s->e_released;
@@ -80,13 +64,41 @@ static double work_on_barrier(const loaded_pose *a, const loaded_pose *b) {
     return w;
 }
 
+/* Stages 2-5 at the vehicle's pose as it stands. A solve that ends further than CS_PATH_TRIGGER from
+ * equilibrium is not committed unless told to (its slides and plastic flow would be booked from a state
+ * that is not one). Nor at all, and -1 returned, if (with `allowed` given) it also ends where a commit
+ * would leave the barrier holding (stored and dissipated) more than `allowed` plus the work done on it
+ * from `from`: an iterate the path does not reach, which the next solve must not start from. Returns 1
+ * if it committed, with the largest residual of the solves it committed kept in s->solver_residual. */
+#define CS_PATH_TRIGGER 1e-2
+
+static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, double allowed,
+                       const loaded_pose *from) {
+    cs_contact_update(model, s);                         /* 2. cables wrap onto or leave the face */
+    double worst = cs_barrier_solve(model, s);           /* 3. posts, sliding and crush in equilibrium */
+    if (worst > CS_PATH_TRIGGER && allowed < HUGE_VAL) { /* with the work done on it over this piece */
+        cs_barrier_force(model, s);
+        loaded_pose to = pose_of(s);
+        if (cs_barrier_trial_energy(model, s) > allowed + work_on_barrier(from, &to)) return -1;
+    }
+    if (worst > CS_PATH_TRIGGER && !commit_anyway) return 0;
+    cs_barrier_commit(model, s);                     /* 4. plastic flow, friction and crush work */
+    worst = fmax(worst, resolve_failures(model, s)); /* 5. breaks, failures, posts struck by the face */
+    s->solver_residual = fmax(s->solver_residual, worst);
+    return 1;
+}
+
 /* Stages 1-6 over a time h: the vehicle drifts, the barrier follows its pose (committed if its solve
  * converged, or if told to), pushes back, and the vehicle takes the second kick. Adds the vehicle's
- * work on the barrier to *work; returns 1 if the barrier was committed. */
-static int advance(const cs_model *model, cs_state *s, double h, int commit_anyway, double *work) {
+ * work on the barrier to *work; returns 1 if the barrier was committed. A failed solve that would hold
+ * more than `allowed` puts the barrier back to `last` (its last commit) before it pushes; the vehicle
+ * goes on. */
+static int advance(const cs_model *model, cs_state *s, double h, int commit_anyway, double allowed,
+                   const cs_state *last, double *work) {
     loaded_pose from = pose_of(s);
     cs_vehicle_integrate(s, h); /* 1. half a kick and a drift */
-    int committed = follow_pose(model, s, commit_anyway);
+    int committed = follow_pose(model, s, commit_anyway, allowed, &from);
+    if (committed < 0) cs_state_restore_barrier(model, s, last), committed = 0;
     cs_barrier_force(model, s); /* 6. the barrier's push, */
     loaded_pose to = pose_of(s);
     *work += work_on_barrier(&from, &to);
@@ -115,7 +127,10 @@ static double book_gap(const cs_model *model, cs_state *s, double work, double e
  *   CS_PATH_PIECES steps, vehicle and barrier, each followed by the same rule; a piece that fails at
  *   the last of CS_PATH_LEVELS levels is taken as CS_PATH_PIECES steps again and cut no further: each
  *   committed if its solve converged (the last always), the gap of each stretch between commits
- *   booked as it falls (a snap as released, a negative gap left in the ledger).
+ *   booked as it falls (a snap as released, a negative gap left in the ledger). There, a piece whose
+ *   solve failed where a commit would make more than CS_PATH_GAP of the scale (hold more than the last
+ *   commit plus the work since) is not committed, the last neither: the barrier goes back to its last
+ *   commit.
  * The gap allowed scales with the stretch's length. docs/theory.md, "A step". */
 #define CS_PATH_GAP 1e-3
 #define CS_PATH_PIECES 8
@@ -125,7 +140,7 @@ static void follow_stretch(const cs_model *model, cs_state *s, double h, int lev
     double e0 = barrier_energy(model, s), work = 0.0, snap = CS_PATH_GAP * scale * h / model->scenario.dt;
     cs_state *start = s->step_start[level];
     cs_state_copy(model, start, s);
-    if (advance(model, s, h, 0, &work) && book_gap(model, s, work, e0, snap) >= -snap) return;
+    if (advance(model, s, h, 0, HUGE_VAL, NULL, &work) && book_gap(model, s, work, e0, snap) >= -snap) return;
     cs_state_copy(model, s, start);
     if (level + 1 < CS_PATH_LEVELS) {
         for (int j = 0; j < CS_PATH_PIECES; j++)
@@ -133,10 +148,12 @@ static void follow_stretch(const cs_model *model, cs_state *s, double h, int lev
         return;
     }
     work = 0.0;
-    for (int j = 1; j <= CS_PATH_PIECES; j++) {
-        if (!advance(model, s, h / CS_PATH_PIECES, j == CS_PATH_PIECES, &work)) continue;
+    for (int j = 1; j <= CS_PATH_PIECES; j++) { /* start holds the barrier as last committed */
+        double allowed = s->stored_committed + work + CS_PATH_GAP * scale;
+        if (!advance(model, s, h / CS_PATH_PIECES, j == CS_PATH_PIECES, allowed, start, &work)) continue;
         book_gap(model, s, work, e0, snap / CS_PATH_PIECES);
         work = 0.0, e0 = barrier_energy(model, s);
+        cs_state_copy(model, start, s);
     }
 }
 
