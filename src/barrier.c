@@ -248,7 +248,6 @@ void cs_barrier_commit(const cs_model *model, cs_state *s) {
     if (s->crush > s->crush_max) s->crush_max = s->crush;
     s->crush_committed = s->crush;
     s->crush_force_committed = f;
-    s->stored_committed = cs_barrier_stored_energy(model, s);
 }
 
 /* The stored and dissipated energy the barrier would hold if committed as it stands (found on a trial

@@ -166,7 +166,7 @@ struct cs_state {
     double decel_50ms_g;
     cs_summary summary;
     double solver_residual;  /* largest residual of the solves the step committed */
-    double stored_committed; /* cs_barrier_stored_energy at the last commit, J */
+    double stored_committed; /* cs_barrier_stored_energy at the last commit, J (set by step.c) */
 
     cs_event *events;
     int event_count;

@@ -138,6 +138,7 @@ static double book_gap(const cs_model *model, cs_state *s, double work, double e
 /* Follows the path over a stretch h long that is cut `level` times already. */
 static void follow_stretch(const cs_model *model, cs_state *s, double h, int level, double scale) {
     double e0 = barrier_energy(model, s), work = 0.0, snap = CS_PATH_GAP * scale * h / model->scenario.dt;
+    s->stored_committed = e0 - s->e_released; /* a stretch starts from a commit */
     cs_state *start = s->step_start[level];
     cs_state_copy(model, start, s);
     if (advance(model, s, h, 0, HUGE_VAL, NULL, &work) && book_gap(model, s, work, e0, snap) >= -snap) return;
@@ -153,6 +154,7 @@ static void follow_stretch(const cs_model *model, cs_state *s, double h, int lev
         if (!advance(model, s, h / CS_PATH_PIECES, j == CS_PATH_PIECES, allowed, start, &work)) continue;
         book_gap(model, s, work, e0, snap / CS_PATH_PIECES);
         work = 0.0, e0 = barrier_energy(model, s);
+        s->stored_committed = e0 - s->e_released;
         cs_state_copy(model, start, s);
     }
 }
