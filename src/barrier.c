@@ -172,10 +172,10 @@ static double newton_or_sweeps(const cs_model *model, cs_state *s, int may_fall)
  * that still ends above CS_FALL_TRIGGER is taken again with sweeps that let a post with no equilibrium
  * near fall to the next one (post.c). That is kept if it converges and, committed, the barrier would
  * hold no more energy (stored and dissipated) than at its last commit: a fall gives energy up, and a
- * "fall" that would book more is a branch the path cannot reach (designs 1648 and 5498 converged onto
- * states whose commit booked 11 kJ and 0.8 MJ more than the ropes gave up). Only on a failed
- * solve: a post whose local solve stalls inside an ordinary sweep is usually waiting for its
- * neighbours, not falling. */
+ * "fall" that would book more is a branch the path cannot reach (design 5498 fell onto a state whose
+ * commit booked 11 kJ more than the ropes gave up). Only on a failed solve: a post whose local solve
+ * stalls inside an ordinary sweep is usually waiting for its neighbours, not falling (falls there led
+ * design 1648 onto the rope at its strength). */
 #define CS_FALL_TRIGGER 1e-2
 #define CS_FALL_SLACK 1e-3 /* of the energy scale, as step.c's CS_PATH_GAP: a piece's work, round-off */
 

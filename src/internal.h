@@ -166,7 +166,8 @@ struct cs_state {
     double decel_50ms_g;
     cs_summary summary;
     double solver_residual;  /* largest residual of the solves the step committed */
-    double stored_committed; /* cs_barrier_stored_energy at the last commit, J (set by step.c) */
+    double stored_committed; /* cs_barrier_stored_energy where the path stretch being followed started
+                              * or last committed at the last level, J (set by step.c) */
 
     cs_event *events;
     int event_count;

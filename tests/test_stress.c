@@ -121,7 +121,7 @@ static void random_designs_run_clean(void **state) {
  * (docs/theory.md, "A step", two levels); 2004, 2346, 5438 and 6270, where an end post on its plateau,
  * bent over by the ropes' pull down to the anchor, had no equilibrium near its tilt and every solve
  * stalled (+14%, +15%, +4.3%, +8.4%) until such a post was let fall to the next one (docs/theory.md,
- * "Posts", falling); 5498, which a fall kept because it stored less than the failed solve took onto a
+ * "Posts", falling); 5498, where a fall kept because it stored less than the failed solve led to a
  * state whose commit booked 11 kJ more than the ropes gave up (+3.1%), and 1648, where 64ths starting
  * from a failed one converged onto the rope at its strength and the last was committed (the energy
  * guard's error at +262%), on the way there (docs/theory.md, "A step", no wild iterate). */
