@@ -212,7 +212,9 @@ double cs_cable_slide_node(const cs_model *model, const cs_cable_model *cm, cs_c
     for (int it = 0; it < 100; it++) {
         x = (a * hb - b * ha) / (hb - ha);
         double hx = CS_H(x);
-        if (fabs(hx) <= 1e-4 * tol * r->fu || fabs(b - a) <= 1e-15 * (m2 - m0)) break;
+        /* x == a or b: the bracket is down to adjacent doubles, where a rope span a few mm long (a node
+         * next to a face corner) still jumps by more than the tolerance; nothing lies between */
+        if (fabs(hx) <= 1e-4 * tol * r->fu || fabs(b - a) <= 1e-15 * (m2 - m0) || x == a || x == b) break;
         if (hx > 0.0) {
             a = x, ha = hx;
             if (side == 1) hb *= 0.5;
