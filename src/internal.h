@@ -131,6 +131,7 @@ typedef struct cs_solver {
     size_t band_capacity;
     int *pivot;
     int kl, ku, band_width;
+    int *rows, *row_column; /* rows a group of the Jacobian moves, and the column that moves each */
 } cs_solver;
 
 struct cs_state {

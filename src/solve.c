@@ -72,11 +72,13 @@ int cs_solver_init(const cs_model *model, cs_solver *w) {
     w->band_capacity = n * per_row;
     w->band = calloc(w->band_capacity, sizeof *w->band);
     w->pivot = calloc(n, sizeof *w->pivot);
+    w->rows = calloc(n, sizeof *w->rows);
+    w->row_column = calloc(n, sizeof *w->row_column);
     w->key_count = 2 * np + nc * (np + 2) + 2 * nc + 1; /* see slot_key */
     w->last = calloc(w->key_count, sizeof *w->last);
     w->last_step = calloc(w->key_count, sizeof *w->last_step);
     if (!w->slots || !w->slots_lu || !w->slots_kept || !w->last || !w->last_step || !w->tilt_index ||
-        !w->node_index || !w->height_index || !w->x || !w->band || !w->pivot)
+        !w->node_index || !w->height_index || !w->x || !w->band || !w->pivot || !w->rows || !w->row_column)
         return -1;
     w->r = w->x + n, w->dx = w->x + 2 * n, w->xt = w->x + 3 * n, w->rt = w->x + 4 * n, w->kept = w->x + 5 * n;
     return 0;
@@ -91,7 +93,8 @@ void cs_solver_reset(cs_solver *w) {
 
 void cs_solver_free(cs_solver *w) {
     free(w->slots), free(w->slots_lu), free(w->slots_kept), free(w->tilt_index), free(w->node_index),
-        free(w->height_index), free(w->x), free(w->band), free(w->pivot), free(w->last), free(w->last_step);
+        free(w->height_index), free(w->x), free(w->band), free(w->pivot), free(w->last), free(w->last_step),
+        free(w->rows), free(w->row_column);
     memset(w, 0, sizeof *w);
 }
 
@@ -286,25 +289,28 @@ static double height_residual(const cs_model *model, const cs_state *s, int c, i
     return (fz - proj - CS_STICK_EPS * cstiff * dz) / cm->rope.fu;
 }
 
-static void residual(const cs_model *model, cs_state *s, const cs_solver *w, int n, double *r) {
-    for (int k = 0; k < n; k++) {
-        const slot *u = &w->slots[k];
-        if (u->kind == U_HEIGHT) {
-            r[k] = height_residual(model, s, u->a, u->b);
-        } else if (u->kind == U_NODE) {
-            r[k] = node_residual(model, s, u->a, u->b);
-        } else if (u->kind == U_TILT && u->b == 0) {
-            double q[2];
-            cs_post_residual_now(model, s, u->a, q);
-            double scale = model->posts[u->a].moment_cap;
-            r[k] = q[0] / scale, r[k + 1] = q[1] / scale;
-        } else if (u->kind == U_CRUSH) {
-            const cs_vehicle_def *v = &model->vehicle.def;
-            double nf = cs_face_normal_force_now(model, s);
-            r[k] =
-                (nf - cs_crush_force(v, s->crush, s->crush_max)) / v->crush_force[v->crush_point_count - 1];
-        }
+/* Residual row k; a post's two rows come together, from its first. */
+static void residual_row(const cs_model *model, cs_state *s, const cs_solver *w, int k, double *r) {
+    const slot *u = &w->slots[k];
+    if (u->kind == U_HEIGHT) {
+        r[k] = height_residual(model, s, u->a, u->b);
+    } else if (u->kind == U_NODE) {
+        r[k] = node_residual(model, s, u->a, u->b);
+    } else if (u->kind == U_TILT && u->b == 0) {
+        double q[2];
+        cs_post_residual_now(model, s, u->a, q);
+        double scale = model->posts[u->a].moment_cap;
+        r[k] = q[0] / scale, r[k + 1] = q[1] / scale;
+    } else if (u->kind == U_CRUSH) {
+        const cs_vehicle_def *v = &model->vehicle.def;
+        double nf = cs_face_normal_force_now(model, s);
+        r[k] = (nf - cs_crush_force(v, s->crush, s->crush_max)) / v->crush_force[v->crush_point_count - 1];
     }
+}
+
+static void residual(const cs_model *model, cs_state *s, const cs_solver *w, int n, double *r) {
+    for (int k = 0; k < n; k++)
+        residual_row(model, s, w, k, r);
 }
 
 static double norm_inf(const double *r, int n) {
@@ -380,23 +386,113 @@ static void band_solve(const cs_solver *w, int n, double *b) {
     }
 }
 
-/* Finite-difference Jacobian, columns 2 w + 1 apart perturbed together. */
+/* ---- finite-difference Jacobian ----
+ * Columns kl + ku + 1 apart share no row, so they are perturbed together. A column moves few nodes:
+ * a post's tilt its cables' nodes at the post, a node's material the spans either side of it, a
+ * contact height its corner; only the rows that see those nodes change (the nodes next to them, the
+ * posts and contacts there, the crush through a face corner). A group is found from those rows alone,
+ * with the state as scatter would leave it: the same numbers as a full residual, from a fraction of
+ * its rows and spans. The crush moves every corner and captured post: its group takes the full
+ * residual. */
+
+/* Set unknown j to v and bring the node positions and span tensions it moves in line; lists the
+ * nodes it moves in nodes (cable, index) and returns how many. */
+static int move_unknown(const cs_model *model, cs_state *s, const cs_solver *w, int j, double v, int *nodes) {
+    const slot *u = &w->slots[j];
+    int count = 0;
+    if (u->kind == U_TILT) {
+        s->posts[u->a].tilt[u->b] = v;
+        for (int c = 0; c < model->cable_count; c++) {
+            cs_cable_state *cs = &s->cables[c];
+            if (cs->status != CS_CABLE_INTACT || cs->where[u->a] <= 0) continue;
+            int i = cs->where[u->a];
+            cs_post_attachment(model, u->a, s->posts[u->a].tilt, model->cables[c].z, cs->pos + 3 * i);
+            nodes[2 * count] = c, nodes[2 * count + 1] = i, count++;
+        }
+    } else if (u->kind == U_NODE) {
+        s->cables[u->a].m[u->b] = v;
+        nodes[0] = u->a, nodes[1] = u->b, count = 1;
+    } else if (u->kind == U_HEIGHT) {
+        s->cables[u->a].corner_z[u->b] = v;
+        cs_contact_place_corners(model, s, s->crush);
+        nodes[0] = u->a, nodes[1] = corner_node(&s->cables[u->a], u->b), count = 1;
+    }
+    for (int k = 0; k < count; k++) {
+        const cs_cable_model *cm = &model->cables[nodes[2 * k]];
+        cs_cable_state *cs = &s->cables[nodes[2 * k]];
+        int i = nodes[2 * k + 1];
+        cs->tension[i - 1] = cs_span_tension(cm, cs, i - 1);
+        cs->tension[i] = cs_span_tension(cm, cs, i);
+    }
+    return count;
+}
+
+/* Add to w->rows (count so far in *count) the rows that see node i of cable c, owned by column j. */
+static void rows_near(const cs_model *model, const cs_state *s, cs_solver *w, int c, int i, int j,
+                      int *count) {
+    const cs_cable_state *cs = &s->cables[c];
+    for (int q = i - 1; q <= i + 1; q++) {
+        if (q < 1 || q + 1 >= cs->node_count) continue;
+        int id = cs->node[q], row[4] = {w->node_index[c * model->max_nodes + q], -1, -1, -1};
+        if (id >= 0) row[1] = w->tilt_index[id];
+        if (is_corner(id))
+            row[2] = w->height_index[2 * c + (id == CS_NODE_LEFT ? 0 : 1)], row[3] = w->crush_index;
+        for (int k = 0; k < 4; k++)
+            if (row[k] >= 0 && w->row_column[row[k]] != j)
+                w->row_column[row[k]] = j, w->rows[(*count)++] = row[k];
+    }
+}
+
+/* Column j's entry in row i, if i lies in its band. */
+static void put_entry(cs_solver *w, int n, int i, int j, double value) {
+    if (i >= 0 && i < n && i >= j - w->ku && i <= j + w->kl) BAND(w, i, j) = value;
+}
+
+/* The FD Jacobian at x, r its residual. Steps are sized from the state as it stands (fd_step). */
 static void jacobian(const cs_model *model, cs_state *s, cs_solver *w, int n, const double *x,
                      const double *r) {
-    int kl = w->kl, ku = w->ku, stride = kl + ku + 1;
+    int kl = w->kl, ku = w->ku, stride = kl + ku + 1, nodes[2 * CS_MAX_CABLES_PER_POST];
     memset(w->band, 0, (size_t)n * (size_t)w->band_width * sizeof *w->band);
+    for (int k = 0; k < n; k++)
+        w->row_column[k] = -1;
+    memcpy(w->xt, x, (size_t)n * sizeof *x);
+    for (int j = 0; j < n; j += stride) /* the first group's steps, from the state on entry */
+        w->xt[j] += fd_step(model, s, &w->slots[j]);
+    scatter(model, s, w, n, x);
     for (int g = 0; g < stride && g < n; g++) {
-        memcpy(w->xt, x, (size_t)n * sizeof *x);
-        for (int j = g; j < n; j += stride)
-            w->xt[j] += fd_step(model, s, &w->slots[j]);
-        scatter(model, s, w, n, w->xt);
-        residual(model, s, w, n, w->rt);
-        for (int j = g; j < n; j += stride) {
-            double h = w->xt[j] - x[j];
-            int i0 = j - ku > 0 ? j - ku : 0, i1 = j + kl < n - 1 ? j + kl : n - 1;
-            for (int i = i0; i <= i1; i++)
-                BAND(w, i, j) = (w->rt[i] - r[i]) / h;
+        int full = w->crush_index >= 0 && w->crush_index % stride == g, count = 0;
+        if (full) {
+            scatter(model, s, w, n, w->xt);
+            residual(model, s, w, n, w->rt);
+            for (int j = g; j < n; j += stride)
+                for (int i = j - ku; i <= j + kl; i++)
+                    put_entry(w, n, i, j, (w->rt[i] - r[i]) / (w->xt[j] - x[j]));
+        } else {
+            for (int j = g; j < n; j += stride) {
+                int moved = move_unknown(model, s, w, j, w->xt[j], nodes);
+                for (int k = 0; k < moved; k++)
+                    rows_near(model, s, w, nodes[2 * k], nodes[2 * k + 1], j, &count);
+            }
+            for (int k = 0; k < count; k++) {
+                int i = w->rows[k], j = w->row_column[i];
+                int first = w->slots[i].kind == U_TILT ? i - w->slots[i].b : i; /* a post's rows: both */
+                residual_row(model, s, w, first, w->rt);
+                for (int q = first; q <= (w->slots[i].kind == U_TILT ? first + 1 : first); q++)
+                    put_entry(w, n, q, j, (w->rt[q] - r[q]) / (w->xt[j] - x[j]));
+            }
         }
+        /* the next group's steps, from this group's state (as a full scatter of it would leave it) */
+        for (int j = g + 1; j < n && g + 1 < stride; j += stride)
+            w->xt[j] = x[j] + fd_step(model, s, &w->slots[j]);
+        if (g + 1 == stride || g + 1 == n) break; /* the last group's state stays, as scatter leaves it */
+        if (full) {
+            scatter(model, s, w, n, x);
+        } else {
+            for (int j = g; j < n; j += stride)
+                move_unknown(model, s, w, j, x[j], nodes);
+        }
+        for (int j = g; j < n; j += stride)
+            w->xt[j] = x[j];
     }
 }
 
