@@ -427,8 +427,9 @@ static int move_unknown(const cs_model *model, cs_state *s, const cs_solver *w, 
     return count;
 }
 
-/* Add to w->rows (count so far in *count) the rows that see node i of cable c, owned by column j. */
-static void rows_near(const cs_model *model, const cs_state *s, cs_solver *w, int c, int i, int j,
+/* Add to w->rows (count so far in *count) the rows that see node i of cable c, owned by column j; a
+ * row already listed for this group (a column j' with j' = j mod stride) is not listed again. */
+static void rows_near(const cs_model *model, const cs_state *s, cs_solver *w, int c, int i, int j, int stride,
                       int *count) {
     const cs_cable_state *cs = &s->cables[c];
     for (int q = i - 1; q <= i + 1; q++) {
@@ -437,9 +438,11 @@ static void rows_near(const cs_model *model, const cs_state *s, cs_solver *w, in
         if (id >= 0) row[1] = w->tilt_index[id];
         if (is_corner(id))
             row[2] = w->height_index[2 * c + (id == CS_NODE_LEFT ? 0 : 1)], row[3] = w->crush_index;
-        for (int k = 0; k < 4; k++)
-            if (row[k] >= 0 && w->row_column[row[k]] != j)
+        for (int k = 0; k < 4; k++) {
+            int owner = row[k] >= 0 ? w->row_column[row[k]] : -1;
+            if (row[k] >= 0 && (owner < 0 || owner % stride != j % stride))
                 w->row_column[row[k]] = j, w->rows[(*count)++] = row[k];
+        }
     }
 }
 
@@ -448,7 +451,9 @@ static void put_entry(cs_solver *w, int n, int i, int j, double value) {
     if (i >= 0 && i < n && i >= j - w->ku && i <= j + w->kl) BAND(w, i, j) = value;
 }
 
-/* The FD Jacobian at x, r its residual. Steps are sized from the state as it stands (fd_step). */
+/* The FD Jacobian at x, r its residual. Each group's steps (fd_step) are sized from the state the group
+ * before left, the first group's from the state on entry, as when every group took the full residual:
+ * the numbers stay those. */
 static void jacobian(const cs_model *model, cs_state *s, cs_solver *w, int n, const double *x,
                      const double *r) {
     int kl = w->kl, ku = w->ku, stride = kl + ku + 1, nodes[2 * CS_MAX_CABLES_PER_POST];
@@ -471,13 +476,12 @@ static void jacobian(const cs_model *model, cs_state *s, cs_solver *w, int n, co
             for (int j = g; j < n; j += stride) {
                 int moved = move_unknown(model, s, w, j, w->xt[j], nodes);
                 for (int k = 0; k < moved; k++)
-                    rows_near(model, s, w, nodes[2 * k], nodes[2 * k + 1], j, &count);
+                    rows_near(model, s, w, nodes[2 * k], nodes[2 * k + 1], j, stride, &count);
             }
-            for (int k = 0; k < count; k++) {
-                int i = w->rows[k], j = w->row_column[i];
-                int first = w->slots[i].kind == U_TILT ? i - w->slots[i].b : i; /* a post's rows: both */
-                residual_row(model, s, w, first, w->rt);
-                for (int q = first; q <= (w->slots[i].kind == U_TILT ? first + 1 : first); q++)
+            for (int k = 0; k < count; k++) { /* a post is listed by its first row and has two */
+                int i = w->rows[k], j = w->row_column[i], last = w->slots[i].kind == U_TILT ? i + 1 : i;
+                residual_row(model, s, w, i, w->rt);
+                for (int q = i; q <= last; q++)
                     put_entry(w, n, q, j, (w->rt[q] - r[q]) / (w->xt[j] - x[j]));
             }
         }
