@@ -21,7 +21,8 @@ static const char usage[] =
     "usage: cablesim run FILE [-o DIR] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
     "                [--report]\n"
     "       cablesim check FILE [--set PATH=VALUE]...\n"
-    "       cablesim sweep SPEC.yaml [-o DIR] [--threads N]   a study: grids, Monte Carlo (see sweep --help)\n"
+    "       cablesim sweep SPEC.yaml [-o DIR] [--threads N]   a study: grids, Monte Carlo (see sweep "
+    "--help)\n"
     "       cablesim rate FILE --standard sd-std-02.01|sd-std-02.01a|astm-f2656 [--class M50|K8]\n"
     "       cablesim validate [-o DIR]   the validation suite: DIR/validation.md and .csv\n"
     "       cablesim list      the named parts of the library (data/*.yaml)\n"
@@ -211,9 +212,11 @@ static int list(cs_loader *l) {
                        d.rope.area * 1e6, d.rope.area / 0.00064516, d.rope.nominal_strength / 1e3,
                        d.rope.nominal_strength / 4448.2216152605, docs[i]);
             else
-                printf("  %-14s Zx %.3f in3, Ix %.3f in4, Aw %.3f in2, Fy %.0f ksi  %s\n", names[i],
-                       d.section.plastic_modulus / 1.6387064e-05, d.section.inertia / 4.162314256e-07,
-                       d.section.web_area / 0.00064516, d.section.yield_stress / 6894757.29316836, docs[i]);
+                printf("  %-14s Zx %.3f in3, Ix %.3f in4, Aw %.3f in2, Fy %.0f ksi, %.2f lb/ft  %s\n",
+                       names[i], d.section.plastic_modulus / 1.6387064e-05,
+                       d.section.inertia / 4.162314256e-07, d.section.web_area / 0.00064516,
+                       d.section.yield_stress / 6894757.29316836,
+                       d.section.mass_per_length / 1.4881639435695537, docs[i]);
         }
     }
     if (cs_loader_error_count(l)) {
@@ -236,7 +239,8 @@ int main(int argc, char **argv) {
     }
     if (strcmp(cmd, "schema") == 0) return cs_schema_markdown(stdout) == 0 ? 0 : EXIT_RUN;
     if (strcmp(cmd, "sweep") == 0) return cs_sweep_command(argc, argv);
-    if (strcmp(cmd, "check") == 0 && cs_sweep_check_wanted(argc, argv)) return cs_sweep_check_command(argc, argv);
+    if (strcmp(cmd, "check") == 0 && cs_sweep_check_wanted(argc, argv))
+        return cs_sweep_check_command(argc, argv);
     if (strcmp(cmd, "rate") == 0) return cs_command_rate(argc, argv);
     if (strcmp(cmd, "validate") == 0) return cs_command_validate(argc, argv);
     int is_run = strcmp(cmd, "run") == 0, is_check = strcmp(cmd, "check") == 0;

@@ -16,7 +16,8 @@ double cs_energy_scale(const cs_model *model, const cs_state *s) {
 
 double cs_energy_total(const cs_energy *e) {
     return e->vehicle_kinetic + e->vehicle_potential + e->cable_elastic + e->cable_plastic + e->post_elastic +
-           e->post_plastic + e->soil + e->crush + e->friction + e->released;
+           e->post_kinetic + e->post_plastic + e->post_damping + e->soil + e->crush + e->friction +
+           e->released;
 }
 
 void cs_energy_update(const cs_model *model, cs_state *s) {
@@ -26,11 +27,15 @@ void cs_energy_update(const cs_model *model, cs_state *s) {
     e->cable_elastic = 0.0;
     for (int c = 0; c < model->cable_count; c++)
         e->cable_elastic += cs_cable_stored_energy(&model->cables[c], &s->cables[c]);
-    e->post_elastic = 0.0;
-    for (int p = 0; p < model->post_count; p++)
-        e->post_elastic += cs_post_stored_energy(model, s, p);
+    e->post_elastic = e->post_kinetic = 0.0;
+    for (int p = 0; p < model->post_count; p++) {
+        double k = cs_post_kinetic_energy(model, s, p);
+        e->post_elastic += cs_post_stored_energy(model, s, p) - k;
+        e->post_kinetic += k;
+    }
     e->cable_plastic = s->e_cable_plastic;
     e->post_plastic = s->e_post_plastic;
+    e->post_damping = s->e_post_damping;
     e->soil = s->e_soil;
     e->crush = s->e_crush;
     e->friction = s->e_friction + s->e_tyre;

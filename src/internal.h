@@ -52,6 +52,7 @@ typedef struct cs_post_model {
     double load_height;    /* mean cable height on the post, m */
     double pivot;          /* depth of the point it turns about: 2/3 D if the soil yields, else 0, m */
     int clamped;
+    double inertia; /* rotational inertia of the post about its pivot, kg m^2 (0: massless) */
     cs_footing_def footing;
 } cs_post_model;
 
@@ -101,14 +102,16 @@ typedef struct cs_cable_state {
 
 typedef struct cs_post_state {
     cs_post_status status;
-    double tilt[2];      /* rotation vector: direction and angle the top moves, rad */
-    double plastic[2];   /* plastic part of the rotation (committed), rad */
-    double moment[2];    /* resisting generalised moment, N m */
-    double shear, axial; /* N */
-    int yielded;         /* hinge or soil event already reported */
-    int captured;        /* struck by the face: pushed over by it, off the cable paths */
-    double lever;        /* from the pivot to where the face struck it, along the post, m */
-    double push;         /* force of the face on a captured post, N */
+    double tilt[2];        /* rotation vector: direction and angle the top moves, rad */
+    double plastic[2];     /* plastic part of the rotation (committed), rad */
+    double moment[2];      /* resisting generalised moment, N m */
+    double shear, axial;   /* N */
+    int yielded;           /* hinge or soil event already reported */
+    int captured;          /* struck by the face: pushed over by it, off the cable paths */
+    double lever;          /* from the pivot to where the face struck it, along the post, m */
+    double push;           /* force of the face on a captured post, N */
+    double tilt_commit[2]; /* tilt at the last commit, rad */
+    double rate[2];        /* rate of tilt at the last commit, rad/s */
 } cs_post_state;
 
 /* Workspace of the Newton solve of the barrier (solve.c), sized at state creation. */
@@ -136,6 +139,7 @@ typedef struct cs_solver {
 
 struct cs_state {
     double t;
+    double h; /* time since the barrier was last committed: the posts' swing over it (post.c), s */
     long step;
     cs_outcome outcome;
     int frozen;
@@ -156,7 +160,7 @@ struct cs_state {
     int anchor_failed[2];
 
     /* energy accumulators, J: the barrier's (friction: over supports and on the face) and the tyres' */
-    double e_cable_plastic, e_post_plastic, e_soil, e_crush, e_friction, e_released, e_tyre;
+    double e_cable_plastic, e_post_plastic, e_post_damping, e_soil, e_crush, e_friction, e_released, e_tyre;
     double e_initial_total, e_initial_kinetic;
     double e_initial_potential_ref; /* CG height at t = 0 */
     cs_energy energy;
@@ -210,6 +214,8 @@ void cs_post_attachment(const cs_model *model, int post, const double *tilt, dou
 double cs_post_solve(const cs_model *model, cs_state *s, int post, double tol, int may_fall);
 void cs_post_commit(const cs_model *model, cs_state *s, int post);
 double cs_post_stored_energy(const cs_model *model, const cs_state *s, int post);
+double cs_post_kinetic_energy(const cs_model *model, const cs_state *s, int post);
+int cs_post_held(const cs_model *model, const cs_state *s, int post);
 int cs_post_standing(const cs_post_state *ps);
 int cs_post_check_failure(const cs_model *model, cs_state *s, int post);
 void cs_post_residual_now(const cs_model *model, const cs_state *s, int post, double *r);

@@ -80,6 +80,8 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
         if (!positive(s->plastic_modulus) || !positive(s->inertia) || !positive(s->web_area) ||
             !positive(s->yield_stress) || !positive(s->modulus))
             return fail(err, "post %d: section properties (Zx, Ix, Aw, Fy, E) must all be > 0", p);
+        if (!non_negative(s->mass_per_length))
+            return fail(err, "post %d: section mass per length must be >= 0", p);
         const cs_footing_def *f = &d->footing;
         if (!positive(f->diameter) || !positive(f->depth))
             return fail(err, "post %d: footing diameter and depth must be > 0", p);
@@ -225,6 +227,14 @@ static double critical_step(const cs_model *m, const cs_barrier_def *b) {
     return 2.0 * sqrt(mass / k);
 }
 
+/* Rotational inertia of a post's steel about its pivot: from its top down to grade if it hinges there
+ * (pivot 0), the whole post down to the bottom of its embedment, turning with its footing, if the soil
+ * yields. The footing's and the rails' mass are left out (docs/assumptions.md). */
+static double post_inertia(const cs_post_def *d, double pivot) {
+    double above = d->height + pivot, below = pivot > 0.0 ? d->footing.depth - pivot : 0.0;
+    return d->section.mass_per_length * (above * above * above + below * below * below) / 3.0;
+}
+
 cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *vehicle,
                           const cs_scenario_def *scenario, cs_error *err) {
     if (err) err->status = CS_OK, err->message[0] = '\0';
@@ -285,6 +295,7 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
         pm->pullout_cap = cs_footing_pullout_capacity(&d->footing);
         pm->rot_limit = pm->soil_yields ? d->footing.rotation_limit : d->rotation_limit;
         pm->clamped = d->attachment == CS_ATTACH_CLAMPED;
+        pm->inertia = post_inertia(d, pm->pivot);
     }
     m->anchors[0] = barrier->start_anchor;
     m->anchors[1] = barrier->end_anchor;

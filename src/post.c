@@ -17,6 +17,12 @@ int cs_post_standing(const cs_post_state *ps) {
     return ps->status == CS_POST_ELASTIC || ps->status == CS_POST_HINGED || ps->status == CS_POST_SOIL;
 }
 
+/* A post with mass cannot move in no time: a re-solve at the instant of a commit (after a failure)
+ * holds it where it is. */
+int cs_post_held(const cs_model *model, const cs_state *s, int p) {
+    return model->posts[p].inertia > 0.0 && s->h <= 0.0;
+}
+
 /* sin(t)/t and its derivative over t, with series near 0. */
 static void sinc_terms(double t, double *s, double *g) {
     if (t < 1e-4) {
@@ -51,6 +57,37 @@ void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const 
     q[0] = tr[0] * f, q[1] = tr[1] * f;
 }
 
+/* The swing: a post of inertia J about its pivot (model.c) goes, over the time h since the last
+ * commit, by backward Euler,
+ *   J (alpha - alpha_c - h w_c) / h^2 = Q_cables - Q_resist,   w = (alpha - alpha_c) / h,
+ * so its residual carries the inertial moment. J / h^2 (about 1e8 N m/rad for 20 kg m^2 at 0.5 ms)
+ * dwarfs the slope of the cables' pull that makes a post on its plateau fold (its P-delta), so the
+ * residual stays monotone in the tilt and the post swings through where the massless one had no
+ * equilibrium near. Backward Euler takes J |w - w_c|^2 / 2 out of the swing at each commit: booked as
+ * post damping, which keeps the ledger exact (docs/theory.md, "Posts with mass"). */
+static void subtract_inertia(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double h,
+                             double *r) {
+    if (pm->inertia <= 0.0 || h <= 0.0) return;
+    double k = pm->inertia / (h * h);
+    r[0] -= k * (tilt[0] - ps->tilt_commit[0] - h * ps->rate[0]);
+    r[1] -= k * (tilt[1] - ps->tilt_commit[1] - h * ps->rate[1]);
+}
+
+/* At a commit: the rate the swing ended with, and the damping of its change. A captured post is
+ * moved by the face (no swing of its own). */
+static void commit_swing(const cs_post_model *pm, cs_post_state *ps, cs_state *s) {
+    double w[2] = {0.0, 0.0};
+    if (ps->captured || pm->inertia <= 0.0) {
+        ps->rate[0] = ps->rate[1] = 0.0;
+    } else if (s->h > 0.0) {
+        w[0] = (ps->tilt[0] - ps->tilt_commit[0]) / s->h, w[1] = (ps->tilt[1] - ps->tilt_commit[1]) / s->h;
+        double d0 = w[0] - ps->rate[0], d1 = w[1] - ps->rate[1];
+        s->e_post_damping += 0.5 * pm->inertia * (d0 * d0 + d1 * d1);
+        ps->rate[0] = w[0], ps->rate[1] = w[1];
+    }
+    ps->tilt_commit[0] = ps->tilt[0], ps->tilt_commit[1] = ps->tilt[1];
+}
+
 /* Place the post's cable nodes for a tilt, let the rope slide through the post's own holes (from the
  * material it had on entry, so the residual is a function of the tilt alone), and return the residual
  * r = Q_cables - Q_resist. Also gives the resultant cable force on the post (for shear and pullout).
@@ -80,6 +117,7 @@ static void post_residual(const cs_model *model, cs_state *s, int p, const doubl
     double res[2];
     cs_post_resistance(&model->posts[p], &s->posts[p], tilt, res);
     r[0] = q[0] - res[0], r[1] = q[1] - res[1];
+    subtract_inertia(&model->posts[p], &s->posts[p], tilt, s->h, r);
 }
 
 /* Residual at the state as it stands (nodes placed, tensions current): cables minus resistance. */
@@ -99,6 +137,7 @@ void cs_post_residual_now(const cs_model *model, const cs_state *s, int p, doubl
     double res[2];
     cs_post_resistance(&model->posts[p], ps, ps->tilt, res);
     r[0] = q[0] - res[0], r[1] = q[1] - res[1];
+    subtract_inertia(&model->posts[p], ps, ps->tilt, s->h, r);
 }
 
 static void entry_material(const cs_model *model, const cs_state *s, int p, double *m_entry) {
@@ -154,7 +193,7 @@ static double fall(const cs_model *model, cs_state *s, int p, const double *m_en
  * residual found on entry. */
 double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol, int may_fall) {
     cs_post_state *ps = &s->posts[p];
-    if (!cs_post_standing(ps) || ps->captured) return 0.0;
+    if (!cs_post_standing(ps) || ps->captured || cs_post_held(model, s, p)) return 0.0;
     const cs_post_model *pm = &model->posts[p];
     double scale = pm->moment_cap, r[2], m_entry[CS_MAX_CABLES_PER_POST];
     double *al = ps->tilt;
@@ -230,6 +269,7 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     cs_post_state *ps = &s->posts[p];
     if (!cs_post_standing(ps)) return;
     const cs_post_model *pm = &model->posts[p];
+    commit_swing(pm, ps, s);
     double tr[2] = {pm->k_rot * (ps->tilt[0] - ps->plastic[0]), pm->k_rot * (ps->tilt[1] - ps->plastic[1])};
     double n = hypot(tr[0], tr[1]), q = pm->moment_cap;
     if (n > q) { /* radial return to the capacity */
@@ -292,12 +332,19 @@ int cs_post_check_failure(const cs_model *model, cs_state *s, int p) {
     return 1;
 }
 
+double cs_post_kinetic_energy(const cs_model *model, const cs_state *s, int p) {
+    const cs_post_state *ps = &s->posts[p];
+    if (!cs_post_standing(ps)) return 0.0;
+    return 0.5 * model->posts[p].inertia * (ps->rate[0] * ps->rate[0] + ps->rate[1] * ps->rate[1]);
+}
+
+/* Elastic energy of the post (its spring) and the kinetic energy of its swing. */
 double cs_post_stored_energy(const cs_model *model, const cs_state *s, int p) {
     const cs_post_state *ps = &s->posts[p];
     if (!cs_post_standing(ps)) return 0.0;
     double q[2];
     cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
-    return 0.5 * (q[0] * q[0] + q[1] * q[1]) / model->posts[p].k_rot;
+    return 0.5 * (q[0] * q[0] + q[1] * q[1]) / model->posts[p].k_rot + cs_post_kinetic_energy(model, s, p);
 }
 
 /* ---- posts struck by the face ----

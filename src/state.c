@@ -166,7 +166,7 @@ void cs_state_reset(const cs_model *model, cs_state *s) {
     memset(s->posts, 0, (size_t)model->post_count * sizeof *s->posts);
     cs_solver_reset(&s->solver);
     s->anchor_failed[0] = s->anchor_failed[1] = 0;
-    s->e_cable_plastic = s->e_post_plastic = s->e_soil = s->e_crush = s->e_friction = s->e_released =
+    s->e_cable_plastic = s->e_post_plastic = s->e_post_damping = s->e_soil = s->e_crush = s->e_friction = s->e_released =
         s->e_tyre = 0.0;
     s->event_count = 0;
     s->ring_fill = 0;

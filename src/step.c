@@ -96,9 +96,14 @@ static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, do
 static int advance(const cs_model *model, cs_state *s, double h, int commit_anyway, double allowed,
                    const cs_state *last, double *work) {
     loaded_pose from = pose_of(s);
+    s->h += h;                  /* the posts swing over the time since the last commit */
     cs_vehicle_integrate(s, h); /* 1. half a kick and a drift */
     int committed = follow_pose(model, s, commit_anyway, allowed, &from);
-    if (committed < 0) cs_state_restore_barrier(model, s, last), committed = 0;
+    if (committed < 0) { /* the barrier as last committed, the time since then kept */
+        double since = s->h;
+        cs_state_restore_barrier(model, s, last), committed = 0;
+        s->h = since;
+    }
     cs_barrier_force(model, s); /* 6. the barrier's push, */
     loaded_pose to = pose_of(s);
     *work += work_on_barrier(&from, &to);

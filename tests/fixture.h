@@ -15,6 +15,7 @@
 #define PSF 47.88025898033584
 #define MPH 0.44704
 #define LB 0.45359237
+#define STEEL_DENSITY 7850.0 /* kg/m^3 */
 
 typedef struct fixture {
     cs_cable_def cables[2];
@@ -44,6 +45,7 @@ static inline cs_section_def fixture_ibeam(void) {
     s.web_area = d * tw * IN * IN;
     s.yield_stress = 50 * KSI;
     s.modulus = 29000 * KSI;
+    s.mass_per_length = (2 * b * tf + h * tw) * IN * IN * STEEL_DENSITY;
     return s;
 }
 
@@ -55,6 +57,7 @@ static inline cs_section_def fixture_hss(void) {
     s.web_area = 2 * b * t * IN * IN;
     s.yield_stress = 46 * KSI;
     s.modulus = 29000 * KSI;
+    s.mass_per_length = (b * b - bi * bi) * IN * IN * STEEL_DENSITY;
     return s;
 }
 

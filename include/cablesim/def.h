@@ -47,6 +47,7 @@ typedef struct cs_section_def {
     double web_area;        /* Aw for shear, m^2 */
     double yield_stress;    /* Fy, Pa */
     double modulus;         /* E, Pa */
+    double mass_per_length; /* kg/m: the post's swing (0: a massless post, the paper's) */
 } cs_section_def;
 
 /* Footing (or the post itself driven in soil) and the soil around it: lateral capacity by Eq. 21,

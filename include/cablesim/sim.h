@@ -171,7 +171,9 @@ typedef struct cs_energy {
     double cable_elastic;
     double cable_plastic;
     double post_elastic;
+    double post_kinetic; /* the posts' swing */
     double post_plastic;
+    double post_damping; /* of the posts' swing by its implicit integration (docs/theory.md) */
     double soil;
     double crush;
     double friction; /* tyres, cable sliding over supports */

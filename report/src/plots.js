@@ -254,11 +254,13 @@ function specs(data) {
     const terms = [
       ['crush', 'crush of the vehicle', '#cc3333'],
       ['post_plastic', 'post plastic (hinges)', '#338c40'],
+      ['post_damping', 'post swing damping', '#66a673'],
       ['soil', 'soil (footings rotating)', '#8c6138'],
       ['cable_plastic', 'cable plastic', '#e6801a'],
       ['friction', 'friction (tyres, rope sliding)', '#8c66bf'],
       ['released', 'released at failures', '#d980b3'],
       ['post_elastic', 'post elastic', '#8ccc80'],
+      ['post_kinetic', 'post kinetic (swing)', '#b3e09e'],
       ['cable_elastic', 'cable elastic', '#fac766'],
       ['vehicle_potential', 'vehicle potential', '#b3b3b3'],
       ['vehicle_kinetic', 'vehicle kinetic', '#5999e6'],

@@ -14,15 +14,17 @@ void cs_w_num(cs_wout *w, double v, const char *what) {
     fprintf(w->f, "%.10g", v);
 }
 
-
 static const char *const energy_names[] = {
-    "ke_j",   "pe_j",    "cable_elastic_j", "cable_plastic_j", "post_elastic_j",      "post_plastic_j",
-    "soil_j", "crush_j", "friction_j",      "released_j",      "energy_balance_error"};
+    "ke_j",           "pe_j",           "cable_elastic_j",     "cable_plastic_j", "post_elastic_j",
+    "post_kinetic_j", "post_plastic_j", "post_damping_j",      "soil_j",          "crush_j",
+    "friction_j",     "released_j",     "energy_balance_error"};
+enum { ENERGY_TERMS = sizeof energy_names / sizeof energy_names[0] };
 
-static void energy_values(const cs_energy *e, double v[11]) {
-    const double all[11] = {e->vehicle_kinetic, e->vehicle_potential, e->cable_elastic, e->cable_plastic,
-                            e->post_elastic,    e->post_plastic,      e->soil,          e->crush,
-                            e->friction,        e->released,          e->balance_error};
+static void energy_values(const cs_energy *e, double v[ENERGY_TERMS]) {
+    const double all[ENERGY_TERMS] = {
+        e->vehicle_kinetic, e->vehicle_potential, e->cable_elastic, e->cable_plastic, e->post_elastic,
+        e->post_kinetic,    e->post_plastic,      e->post_damping,  e->soil,          e->crush,
+        e->friction,        e->released,          e->balance_error};
     memcpy(v, all, sizeof all);
 }
 
@@ -76,10 +78,10 @@ int cs_write_timeseries(FILE *f, const cs_record *rec, char *why, size_t why_siz
             fprintf(f, ",%s,", cs_post_status_name(pv->status));
             cs_w_num(&w, pv->tilt, what);
         }
-        double e[11];
+        double e[ENERGY_TERMS];
         energy_values(&rec->energy[i], e);
         snprintf(what, sizeof what, "the energy ledger at t = %g s", v->t);
-        for (int k = 0; k < 11; k++) {
+        for (int k = 0; k < ENERGY_TERMS; k++) {
             fputc(',', f);
             cs_w_num(&w, e[k], what);
         }

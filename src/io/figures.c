@@ -345,11 +345,13 @@ static const struct {
     /* bottom to top: what is gone for good, what is stored, what still moves */
     {"crush of the vehicle", offsetof(cs_energy, crush), {0.80, 0.20, 0.20}},
     {"post plastic (hinges)", offsetof(cs_energy, post_plastic), {0.20, 0.55, 0.25}},
+    {"post swing damping", offsetof(cs_energy, post_damping), {0.40, 0.65, 0.45}},
     {"soil (footings rotating)", offsetof(cs_energy, soil), {0.55, 0.38, 0.22}},
     {"cable plastic", offsetof(cs_energy, cable_plastic), {0.90, 0.50, 0.10}},
     {"friction (tyres, rope sliding)", offsetof(cs_energy, friction), {0.55, 0.40, 0.75}},
     {"released at failures", offsetof(cs_energy, released), {0.85, 0.50, 0.70}},
     {"post elastic", offsetof(cs_energy, post_elastic), {0.55, 0.80, 0.50}},
+    {"post kinetic (swing)", offsetof(cs_energy, post_kinetic), {0.70, 0.88, 0.62}},
     {"cable elastic", offsetof(cs_energy, cable_elastic), {0.98, 0.78, 0.40}},
     {"vehicle potential", offsetof(cs_energy, vehicle_potential), {0.70, 0.70, 0.70}},
     {"vehicle kinetic", offsetof(cs_energy, vehicle_kinetic), {0.35, 0.60, 0.90}},

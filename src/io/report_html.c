@@ -164,11 +164,13 @@ static const struct {
 } ledger[] = {
     {"crush", offsetof(cs_energy, crush)},
     {"post_plastic", offsetof(cs_energy, post_plastic)},
+    {"post_damping", offsetof(cs_energy, post_damping)},
     {"soil", offsetof(cs_energy, soil)},
     {"cable_plastic", offsetof(cs_energy, cable_plastic)},
     {"friction", offsetof(cs_energy, friction)},
     {"released", offsetof(cs_energy, released)},
     {"post_elastic", offsetof(cs_energy, post_elastic)},
+    {"post_kinetic", offsetof(cs_energy, post_kinetic)},
     {"cable_elastic", offsetof(cs_energy, cable_elastic)},
     {"vehicle_potential", offsetof(cs_energy, vehicle_potential)},
     {"vehicle_kinetic", offsetof(cs_energy, vehicle_kinetic)},

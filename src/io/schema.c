@@ -110,6 +110,8 @@ static const cs_field section_fields[] = {
     S("web_area", CS_Q_AREA, CS_REQ | CS_POS, web_area, "shear area Aw"),
     S("yield_stress", CS_Q_PRESSURE, CS_POS, yield_stress, "yield stress Fy"),
     S("modulus", CS_Q_PRESSURE, CS_POS, modulus, "Young's modulus E"),
+    S("mass_per_length", CS_Q_MASS_PER_LENGTH, CS_NONNEG, mass_per_length,
+      "mass per length: the post swings with it (0: a massless post)"),
 };
 const cs_table cs_table_section = {"section", "A steel post section (strong axis).", CS_T_SECTION,
                                    section_fields, N(section_fields)};
