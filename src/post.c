@@ -67,7 +67,7 @@ void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const 
  * post damping, which keeps the ledger exact (docs/theory.md, "Posts with mass"). */
 static void subtract_inertia(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double h,
                              double *r) {
-    if (pm->inertia <= 0.0 || h <= 0.0) return;
+    if (pm->inertia <= 0.0 || h <= 0.0 || !(h < HUGE_VAL)) return; /* massless, held, or at rest */
     double k = pm->inertia / (h * h);
     r[0] -= k * (tilt[0] - ps->tilt_commit[0] - h * ps->rate[0]);
     r[1] -= k * (tilt[1] - ps->tilt_commit[1] - h * ps->rate[1]);
