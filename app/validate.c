@@ -37,7 +37,7 @@ typedef struct result {
     double post_failure_t; /* its time, s */
 } result;
 
-enum { CRASH = 3, BOGIE = 10, REFINE = 2, VALUES = 4, INPUTS = 5 };
+enum { CRASH = 3, BOGIE = 10, REFINE = 2, VALUES = 4, INPUTS = 6 };
 enum { MAX_JOBS = CRASH + BOGIE + CRASH * REFINE * VALUES + CRASH * INPUTS * 2 };
 
 /* One simulation: its model (NULL: not built, the reason printed), the order's cost estimate, the result. */
@@ -467,6 +467,8 @@ static const struct {
     {"cable-post friction 0.10-0.20", "barrier.cables[0].post_friction=0.1",
      "barrier.cables[0].post_friction=0.2"},
     {"pretension 2-8 kip", "barrier.cables[0].pretension=2 kip", "barrier.cables[0].pretension=8 kip"},
+    {"line-post mass 0-15 lb/ft (massless; with the rails' share)",
+     "barrier.posts[0].mass_per_length=0 lb/ft", "barrier.posts[0].mass_per_length=15 lb/ft"},
 };
 
 static const char *input_set(int i, int side) {

@@ -185,6 +185,8 @@ static const cs_field posts_fields[] = {
     TEXT("section", CS_REQ, "name of a section part"),
     P("yield_stress", CS_Q_PRESSURE, CS_POS, section.yield_stress, "replaces the section's Fy"),
     P("modulus", CS_Q_PRESSURE, CS_POS, section.modulus, "replaces the section's E"),
+    P("mass_per_length", CS_Q_MASS_PER_LENGTH, CS_NONNEG, section.mass_per_length,
+      "replaces the section's mass per length (a filled tube: steel and fill)"),
     SUB("footing", CS_F_MAP, CS_REQ, (long)offsetof(cs_post_def, footing), cs_table_footing, "the footing"),
     {"attachment", CS_F_ENUM, CS_Q_NUMBER, 0, (long)offsetof(cs_post_def, attachment), NULL, attachment_words,
      "how the cables hold to the post: through (threaded, sliding with friction) or clamped"},
