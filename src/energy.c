@@ -29,9 +29,8 @@ void cs_energy_update(const cs_model *model, cs_state *s) {
         e->cable_elastic += cs_cable_stored_energy(&model->cables[c], &s->cables[c]);
     e->post_elastic = e->post_kinetic = 0.0;
     for (int p = 0; p < model->post_count; p++) {
-        double k = cs_post_kinetic_energy(model, s, p);
-        e->post_elastic += cs_post_stored_energy(model, s, p) - k;
-        e->post_kinetic += k;
+        e->post_elastic += cs_post_elastic_energy(model, s, p);
+        e->post_kinetic += cs_post_kinetic_energy(model, s, p);
     }
     e->cable_plastic = s->e_cable_plastic;
     e->post_plastic = s->e_post_plastic;

@@ -213,7 +213,9 @@ double cs_footing_pullout_capacity(const cs_footing_def *f);
 void cs_post_attachment(const cs_model *model, int post, const double *tilt, double z, double *out);
 double cs_post_solve(const cs_model *model, cs_state *s, int post, double tol, int may_fall);
 void cs_post_commit(const cs_model *model, cs_state *s, int post);
+/* Elastic plus kinetic. */
 double cs_post_stored_energy(const cs_model *model, const cs_state *s, int post);
+double cs_post_elastic_energy(const cs_model *model, const cs_state *s, int post);
 double cs_post_kinetic_energy(const cs_model *model, const cs_state *s, int post);
 int cs_post_held(const cs_model *model, const cs_state *s, int post);
 int cs_post_standing(const cs_post_state *ps);

@@ -63,8 +63,9 @@ void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const 
  * so its residual carries the inertial moment. J / h^2 (about 1e8 N m/rad for 20 kg m^2 at 0.5 ms)
  * dwarfs the slope of the cables' pull that makes a post on its plateau fold (its P-delta), so the
  * residual stays monotone in the tilt and the post swings through where the massless one had no
- * equilibrium near. Backward Euler takes J |w - w_c|^2 / 2 out of the swing at each commit: booked as
- * post damping, which keeps the ledger exact (docs/theory.md, "Posts with mass"). */
+ * equilibrium near. Backward Euler takes J |w - w_c|^2 / 2 out of the swing at each commit, booked as
+ * post damping; its end-point rule's share in the forces that swing the post (k |d alpha|^2 / 2 for a
+ * spring) is left in the balance error (docs/theory.md, "Posts with mass"). */
 static void subtract_inertia(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double h,
                              double *r) {
     if (pm->inertia <= 0.0 || h <= 0.0 || !(h < HUGE_VAL)) return; /* massless, held, or at rest */
@@ -76,14 +77,13 @@ static void subtract_inertia(const cs_post_model *pm, const cs_post_state *ps, c
 /* At a commit: the rate the swing ended with, and the damping of its change. A captured post is
  * moved by the face (no swing of its own). */
 static void commit_swing(const cs_post_model *pm, cs_post_state *ps, cs_state *s) {
-    double w[2] = {0.0, 0.0};
     if (ps->captured || pm->inertia <= 0.0) {
         ps->rate[0] = ps->rate[1] = 0.0;
-    } else if (s->h > 0.0) {
-        w[0] = (ps->tilt[0] - ps->tilt_commit[0]) / s->h, w[1] = (ps->tilt[1] - ps->tilt_commit[1]) / s->h;
-        double d0 = w[0] - ps->rate[0], d1 = w[1] - ps->rate[1];
+    } else if (s->h > 0.0) { /* (h infinite, at rest: the rate is 0) */
+        double w0 = (ps->tilt[0] - ps->tilt_commit[0]) / s->h, w1 = (ps->tilt[1] - ps->tilt_commit[1]) / s->h;
+        double d0 = w0 - ps->rate[0], d1 = w1 - ps->rate[1];
         s->e_post_damping += 0.5 * pm->inertia * (d0 * d0 + d1 * d1);
-        ps->rate[0] = w[0], ps->rate[1] = w[1];
+        ps->rate[0] = w0, ps->rate[1] = w1;
     }
     ps->tilt_commit[0] = ps->tilt[0], ps->tilt_commit[1] = ps->tilt[1];
 }
@@ -332,19 +332,24 @@ int cs_post_check_failure(const cs_model *model, cs_state *s, int p) {
     return 1;
 }
 
+/* The elastic energy of the post's spring. */
+double cs_post_elastic_energy(const cs_model *model, const cs_state *s, int p) {
+    const cs_post_state *ps = &s->posts[p];
+    if (!cs_post_standing(ps)) return 0.0;
+    double q[2];
+    cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
+    return 0.5 * (q[0] * q[0] + q[1] * q[1]) / model->posts[p].k_rot;
+}
+
+/* The kinetic energy of its swing, at the rate of the last commit. */
 double cs_post_kinetic_energy(const cs_model *model, const cs_state *s, int p) {
     const cs_post_state *ps = &s->posts[p];
     if (!cs_post_standing(ps)) return 0.0;
     return 0.5 * model->posts[p].inertia * (ps->rate[0] * ps->rate[0] + ps->rate[1] * ps->rate[1]);
 }
 
-/* Elastic energy of the post (its spring) and the kinetic energy of its swing. */
 double cs_post_stored_energy(const cs_model *model, const cs_state *s, int p) {
-    const cs_post_state *ps = &s->posts[p];
-    if (!cs_post_standing(ps)) return 0.0;
-    double q[2];
-    cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
-    return 0.5 * (q[0] * q[0] + q[1] * q[1]) / model->posts[p].k_rot + cs_post_kinetic_energy(model, s, p);
+    return cs_post_elastic_energy(model, s, p) + cs_post_kinetic_energy(model, s, p);
 }
 
 /* ---- posts struck by the face ----
