@@ -144,6 +144,9 @@ double cs_spearman(const double *x, const double *y, long n);
 
 /* ---- outputs ---- */
 
+/* "grid", "monte_carlo" or "latin_hypercube", as the spec writes it. */
+const char *cs_sweep_method_name(cs_sweep_method method);
+
 /* The columns of the table of runs after `run` and the inputs: runs.csv's, and runs.nc's variables. */
 typedef enum cs_column_kind { CS_COLUMN_TEXT = 0, CS_COLUMN_REAL, CS_COLUMN_COUNT } cs_column_kind;
 
@@ -170,6 +173,10 @@ const char *cs_sweep_column_text(const cs_sweep_column *c, const cs_sweep_result
 /* runs.csv: one row per run in run order. Returns 0, or -1 with why filled. */
 int cs_sweep_write_runs(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r, long n,
                         char *why, size_t why_size);
+/* runs.nc: the same table as netCDF (CF-1.8; 64-bit offset, the same bytes for the same results), at path
+ * (a temporary: a failure leaves it to be removed). Returns 0, or -1 with why filled (nc_strerror's). */
+int cs_sweep_write_netcdf(const char *path, const cs_sweep_spec *spec, const double *x,
+                          const cs_sweep_result *r, long n, char *why, size_t why_size);
 /* summary.md and summary.json: outcome probabilities with 95% Wilson intervals, response statistics,
  * Spearman correlation of each numeric input with each response. */
 int cs_sweep_write_summary_md(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,

@@ -11,6 +11,10 @@
 
 static const char *const method_names[] = {"grid", "monte_carlo", "latin_hypercube"};
 
+const char *cs_sweep_method_name(cs_sweep_method method) {
+    return method_names[method];
+}
+
 /* ---- the responses ---- */
 
 enum { R_DECEL, R_PEN, R_DEFL, R_TENSION, R_POSTS, R_CABLES, R_COUNT };
