@@ -59,6 +59,7 @@ typedef struct cs_sweep_spec {
     long runs;
     uint64_t seed;
     char vehicle_class[8]; /* ASTM F2656 class; "" = the class nearest the vehicle's mass */
+    int netcdf;            /* also write runs.nc (netcdf: true; or --netcdf) */
     int set_count;
     char **sets; /* "PATH=VALUE" applied to every run, in order */
     int *set_line, *set_col;
