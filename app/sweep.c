@@ -1,8 +1,8 @@
 /* cablesim sweep: read the spec, make every run's inputs (the same on every rank), share the runs
  * among MPI ranks (run i on rank i mod size) and, within a rank, among OpenMP threads (dynamic, one run
- * at a time), gather the results on rank 0 and write runs.csv, summary.md and summary.json there. The
- * inputs depend only on the seed and the run index, and each run on nothing else, so the outputs are the
- * same for any thread or rank count. */
+ * at a time), gather the results on rank 0 and write runs.csv, summary.md and summary.json there (and
+ * runs.nc when asked). The inputs depend only on the seed and the run index, and each run on nothing
+ * else, so the outputs are the same for any thread or rank count. */
 #define _POSIX_C_SOURCE 200809L
 #include <limits.h>
 #include <stdio.h>
@@ -26,12 +26,13 @@ enum { EXIT_RUN = 1, EXIT_BAD = 2 };
 
 static const char sweep_usage[] =
     "usage: cablesim sweep SPEC.yaml [-o DIR] [--threads N] [--runs N] [--seed S] [--set PATH=VALUE]...\n"
-    "                      [--t-end T] [--dt T] [--quiet]\n"
+    "                      [--t-end T] [--dt T] [--netcdf] [--quiet]\n"
     "Runs the study of SPEC (a base model, the values to vary: grids, or Monte Carlo / Latin hypercube\n"
     "samples) and writes DIR/runs.csv, DIR/summary.md and DIR/summary.json (default DIR: results/<spec\n"
     "name>). --threads: OpenMP threads per process (default: OMP_NUM_THREADS or the cores, shared among\n"
     "the ranks of a machine). Under MPI (mpirun -n R cablesim-mpi sweep ...) the runs are shared among\n"
-    "the R ranks. --runs and --seed replace the spec's; --set, --t-end and --dt apply to every run.\n";
+    "the R ranks. --runs and --seed replace the spec's; --set, --t-end and --dt apply to every run.\n"
+    "--netcdf (or `netcdf: true` in SPEC) also writes DIR/runs.nc: runs.csv's table as netCDF (CF-1.8).\n";
 
 static double now(void) {
     struct timespec t;
@@ -86,7 +87,7 @@ static void progress_show(progress *p, int final) {
 
 typedef struct sweep_opts {
     const char *spec, *out_dir;
-    int threads, quiet;
+    int threads, quiet, netcdf;
     long runs;
     const char *seed;
     const char *sets[256];
@@ -105,6 +106,10 @@ static int parse_opts(int argc, char **argv, sweep_opts *o, int rank) {
         const char *a = argv[i];
         if (strcmp(a, "--quiet") == 0) {
             o->quiet = 1;
+            continue;
+        }
+        if (strcmp(a, "--netcdf") == 0) {
+            o->netcdf = 1;
             continue;
         }
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
@@ -182,6 +187,13 @@ static int write_all(const char *dir, const cs_sweep_spec *spec, const double *x
             rc = -1;
         }
     }
+    if (rc == 0 && spec->netcdf) {
+        char path[1200], nc_why[200];
+        rc = cs_out_begin_path(&out, "runs.nc", path, sizeof path, why, sizeof why);
+        if (rc == 0 && (rc = cs_sweep_write_netcdf(path, spec, x, r, n, nc_why, sizeof nc_why)) != 0)
+            snprintf(why, sizeof why, "%.280s/runs.nc: %s", dir, nc_why);
+        if (rc == 0) rc = cs_out_end_path(&out, why, sizeof why);
+    }
     if (rc == 0) rc = cs_out_commit(&out, why, sizeof why);
     if (rc != 0) {
         cs_out_abort(&out);
@@ -206,6 +218,7 @@ static cs_sweep_spec *read_spec(const sweep_opts *o, int rank) {
     }
     for (int i = 0; i < o->set_count; i++)
         cs_sweep_spec_add_set(spec, o->sets[i]);
+    spec->netcdf |= o->netcdf;
     if (o->runs > 0 && spec->method == CS_SWEEP_GRID)
         cs_sweep_error(spec, 0, 0, "--runs: a grid's runs are every combination of its levels");
     else if (o->runs > 0)
@@ -415,7 +428,7 @@ int cs_sweep_command(int argc, char **argv) {
                    "the end\n",
                    n, wall, wall > 0 ? (double)n / wall : 0, size, size == 1 ? "" : "s", threads,
                    threads == 1 ? "" : "s", bad);
-            printf("outputs: %s/{runs.csv,summary.md,summary.json}\n", dir);
+            printf("outputs: %s/{runs.csv,summary.md,summary.json%s}\n", dir, spec->netcdf ? ",runs.nc" : "");
         }
     }
     free(mine);

@@ -7,6 +7,8 @@ pkgs=(build-essential cmake pkg-config clang libclang-rt-14-dev llvm-14 libcyaml
   libcairo2-dev)
 # libopenmpi-dev + openmpi-bin: cablesim-mpi and mpirun (sweeps shared among processes; tests/sweep_mpi.sh).
 pkgs+=(libopenmpi-dev openmpi-bin)
+# libnetcdf-dev: the sweep's runs.nc (netCDF C library); netcdf-bin: ncdump, which its shell test reads it with.
+pkgs+=(libnetcdf-dev netcdf-bin)
 # report.html (report/): node and npm build its page (Debian's only where none is installed: a newer one
 # may be); Debian's chromium and chromium-driver run its browser test.
 pkgs+=(chromium chromium-driver)

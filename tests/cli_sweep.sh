@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # cablesim sweep end to end: the same runs.csv (byte for byte) and summaries on 1 and 2 threads, a grid,
-# a Monte Carlo, a Latin hypercube, the outputs' shape, plain progress lines when not on a terminal,
-# `cablesim check` of a spec, and every spec in tests/sweep/bad/ refused with status 2 and exactly the problems its "# expect:
-# LINE:COL: text" lines name. The runs are 10 ms long so the suite stays fast.
+# a Monte Carlo, a Latin hypercube, the outputs' shape, runs.nc (--netcdf or `netcdf: true`: the same bytes
+# on 1 and 2 threads, runs.csv's runs and numbers read back by ncdump, nothing written when it cannot be
+# written), plain progress lines when not on a terminal, `cablesim check` of a spec, and every spec in
+# tests/sweep/bad/ refused with status 2 and exactly the problems its "# expect: LINE:COL: text" lines
+# name. The runs are 10 ms long so the suite stays fast.
 source "$(dirname "$0")/lib.sh"
 
 check "sweep --help" '"$cs" sweep --help | grep -q "usage: cablesim sweep SPEC.yaml"'
@@ -34,6 +36,27 @@ check "summary.md: outcome table" 'grep -q "^| penetration > 1 m (or breakthroug
 check "grid: 3 x 2 runs, last variable fastest" '[ "$(cut -d, -f3 "$tmp/grid-1/runs.csv" | tail -n +2 | tr "\n" " ")" = "SD-STD-02.01 PU SD-STD-02.01 PU SD-STD-02.01 PU " ]'
 check "grid: the PU run is rated as a PU" 'grep -q ",PU,time_limit,PU40/P1," "$tmp/grid-1/runs.csv"'
 check "grid: a text input has no Spearman" 'grep -q "\"vehicle\":null" "$tmp/grid-1/summary.json"'
+
+# runs.nc: one variable of it, a value a line, at full precision
+nc_column() { ncdump -p 9,17 -v "$2" "$1" | sed -n "/^ $2 = /,/;/p" | sed "s/^ $2 = //; s/;//" | tr ',' '\n' | tr -d ' ' | grep -v '^$'; }
+for t in 1 2; do
+    "$cs" sweep tests/sweep/lhs.yaml -o "$tmp/nc-$t" --threads "$t" --netcdf --quiet >"$tmp/nc-$t.out" 2>&1
+    check "lhs --netcdf on $t threads exits 0" '[ $? -eq 0 ] || { cat "$tmp/nc-$t.out"; false; }'
+done
+nc="$tmp/nc-1/runs.nc"
+check "runs.nc the same on 1 and 2 threads" 'cmp "$tmp/nc-1/runs.nc" "$tmp/nc-2/runs.nc"'
+check "runs.csv the same with --netcdf" 'cmp "$tmp/nc-1/runs.csv" "$runs"'
+check "runs.nc: as many runs as runs.csv" '[ "$(ncdump -h "$nc" | grep -oE "^\s*run = [0-9]+" | grep -oE "[0-9]+")" -eq "$(($(wc -l <"$runs") - 1))" ]'
+check "runs.nc: runs.csv's speeds, within 38-42 mph" 'paste -d, <(nc_column "$nc" scenario_speed) <(cut -d, -f4 "$runs" | tail -n +2) | awk -F, "\$1 < 38 * 0.44704 || \$1 > 42 * 0.44704 || \$1 != \$2 { bad = 1 } END { exit bad || NR != 4 }"'
+check "runs.nc: runs.csv's penetrations in full (the CSV's 10 digits)" 'paste -d, <(nc_column "$nc" max_dynamic_penetration) <(cut -d, -f10 "$runs" | tail -n +2) | awk -F, "!(\$1 > 0.05) || (\$1 - \$2) ^ 2 > (5e-10 * \$2) ^ 2 { bad = 1 } END { exit bad || NR != 4 }"'
+check "runs.nc: units and CF" 'ncdump -h "$nc" | grep -q "scenario_speed:units = \"m/s\"" && ncdump -h "$nc" | grep -q ":Conventions = \"CF-1.8\""'
+sed "s|^model: .*|model: $PWD/examples/aps3.yaml|; s|^seed: 7|&\nnetcdf: true|" tests/sweep/lhs.yaml >"$tmp/lhs-nc.yaml"
+"$cs" sweep "$tmp/lhs-nc.yaml" -o "$tmp/nc-spec" --quiet >/dev/null 2>&1
+check "netcdf: true in the spec writes runs.nc, the same runs" '[ "$(nc_column "$tmp/nc-spec/runs.nc" scenario_speed | tr "\n" " ")" = "$(nc_column "$nc" scenario_speed | tr "\n" " ")" ]'
+check "no runs.nc unless asked" '[ ! -e "$tmp/lhs-1/runs.nc" ]'
+mkdir -p "$tmp/nc-fail/runs.nc.tmp"
+out=$("$cs" sweep tests/sweep/lhs.yaml -o "$tmp/nc-fail" --netcdf --quiet 2>&1)
+check "a runs.nc that cannot be written: status 1, why, nothing written" '[ $? -eq 1 ] && grep -q "nothing written: .*/runs.nc: creating the file: Is a directory" <<<"$out" && [ "$(ls -A "$tmp/nc-fail")" = runs.nc.tmp ]'
 
 # --runs, --seed and --t-end from the command line; a different seed gives other inputs
 "$cs" sweep tests/sweep/mc.yaml -o "$tmp/mc-seed" --runs 3 --seed 99 --t-end "5 ms" --quiet >/dev/null 2>&1

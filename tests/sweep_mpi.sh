@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# cablesim-mpi sweep: the same runs.csv and summaries, byte for byte, on 1, 2 and 3 MPI ranks (3 splits 4
-# runs unevenly) and with 2 threads on each of 2 ranks. Exit 77 (skipped) only when MPI or mpirun is absent.
+# cablesim-mpi sweep: the same runs.csv, runs.nc and summaries, byte for byte, on 1, 2 and 3 MPI ranks (3
+# splits 4 runs unevenly) and with 2 threads on each of 2 ranks. Exit 77 (skipped) only when MPI or mpirun
+# is absent.
 set -u
 cs=${1:-}
 if [ -z "$cs" ]; then
@@ -21,7 +22,7 @@ for spec in lhs grid; do
     for case in "1 1" "2 1" "3 1" "2 2"; do
         set -- $case
         out="$tmp/$spec-$1-$2"
-        if ! mpirun "${flags[@]}" -n "$1" "$cs" sweep "tests/sweep/$spec.yaml" -o "$out" --threads "$2" \
+        if ! mpirun "${flags[@]}" -n "$1" "$cs" sweep "tests/sweep/$spec.yaml" -o "$out" --threads "$2" --netcdf \
             >"$out.log" 2>&1; then
             echo "FAIL: $spec on $1 ranks x $2 threads"
             cat "$out.log"
@@ -30,7 +31,7 @@ for spec in lhs grid; do
         fi
         grep -q "on $1 rank" "$out.log" || { echo "FAIL: $spec did not run on $1 ranks"; cat "$out.log"; fail=$((fail + 1)); }
         if [ "$1 $2" != "1 1" ]; then
-            for f in runs.csv summary.md summary.json; do
+            for f in runs.csv runs.nc summary.md summary.json; do
                 if cmp "$tmp/$spec-1-1/$f" "$out/$f"; then
                     pass=$((pass + 1))
                 else

@@ -30,27 +30,45 @@ int cs_out_open(cs_outdir *out, const char *dir, char *why, size_t why_size) {
     return 0;
 }
 
-FILE *cs_out_begin(cs_outdir *out, const char *name, char *why, size_t why_size) {
+int cs_out_begin_path(cs_outdir *out, const char *name, char *path, size_t path_size, char *why,
+                      size_t why_size) {
     if (out->count == CS_OUT_MAX_FILES) {
         snprintf(why, why_size, "too many output files");
-        return NULL;
+        return -1;
     }
     snprintf(out->names[out->count], sizeof out->names[0], "%s", name);
+    path_of(out, out->count++, 1, path, path_size);
+    return 0;
+}
+
+FILE *cs_out_begin(cs_outdir *out, const char *name, char *why, size_t why_size) {
     char path[1200];
-    path_of(out, out->count++, 1, path, sizeof path);
+    if (cs_out_begin_path(out, name, path, sizeof path, why, why_size) != 0) return NULL;
     FILE *f = fopen(path, "w");
     if (!f) snprintf(why, why_size, "%s: %s", path, strerror(errno));
     return f;
+}
+
+static int end_failed(const cs_outdir *out, int err, char *why, size_t why_size) {
+    snprintf(why, why_size, "%s/%s: %s", out->dir, out->names[out->count - 1], strerror(err));
+    return -1;
 }
 
 int cs_out_end(cs_outdir *out, FILE *f, char *why, size_t why_size) {
     int bad = fflush(f) != 0 || ferror(f) || fsync(fileno(f)) != 0;
     int err = errno;
     bad |= fclose(f) != 0;
-    if (bad)
-        snprintf(why, why_size, "%s/%s: %s", out->dir, out->names[out->count - 1],
-                 strerror(err ? err : errno));
-    return bad ? -1 : 0;
+    return bad ? end_failed(out, err ? err : errno, why, why_size) : 0;
+}
+
+int cs_out_end_path(cs_outdir *out, char *why, size_t why_size) {
+    char path[1200];
+    path_of(out, out->count - 1, 1, path, sizeof path);
+    int fd = open(path, O_RDONLY);
+    if (fd < 0) return end_failed(out, errno, why, why_size);
+    int bad = fsync(fd) != 0, err = errno;
+    close(fd);
+    return bad ? end_failed(out, err, why, why_size) : 0;
 }
 
 int cs_out_commit(cs_outdir *out, char *why, size_t why_size) {

@@ -19,6 +19,11 @@ int cs_out_open(cs_outdir *out, const char *dir, char *why, size_t why_size);
 FILE *cs_out_begin(cs_outdir *out, const char *name, char *why, size_t why_size);
 /* Flush, fsync and close a file from cs_out_begin. Returns 0, or -1 with why filled. */
 int cs_out_end(cs_outdir *out, FILE *f, char *why, size_t why_size);
+/* The same for a writer that opens its file by name (netCDF): DIR/name.tmp into path, and, once the writer
+ * has closed it, cs_out_end_path fsyncs it. Each returns 0, or -1 with why filled. */
+int cs_out_begin_path(cs_outdir *out, const char *name, char *path, size_t path_size, char *why,
+                      size_t why_size);
+int cs_out_end_path(cs_outdir *out, char *why, size_t why_size);
 /* Rename every temporary to its name. Returns 0, or -1 with why filled. */
 int cs_out_commit(cs_outdir *out, char *why, size_t why_size);
 void cs_out_abort(cs_outdir *out);

@@ -11,6 +11,10 @@
 
 static const char *const method_names[] = {"grid", "monte_carlo", "latin_hypercube"};
 
+const char *cs_sweep_method_name(cs_sweep_method method) {
+    return method_names[method];
+}
+
 /* ---- the responses ---- */
 
 enum { R_DECEL, R_PEN, R_DEFL, R_TENSION, R_POSTS, R_CABLES, R_COUNT };
@@ -45,9 +49,153 @@ static double response(const cs_sweep_result *r, int k) {
     }
 }
 
+/* ---- the columns of the table of runs ---- */
+
+/* What a column reads from a result: the summary's values in runs.csv's order, the error, then one
+ * count per event type (C_EVENTS + type). */
+enum {
+    C_OUTCOME,
+    C_RATING,
+    C_T,
+    C_DECEL,
+    C_T_DECEL,
+    C_PEN,
+    C_DEFL,
+    C_STOP,
+    C_EXIT,
+    C_CONTACT,
+    C_POSTS_LEFT,
+    C_POSTS_RIGHT,
+    C_CABLES,
+    C_TENSION,
+    C_KE,
+    C_ENERGY,
+    C_WARNINGS,
+    C_RESIDUAL,
+    C_X,
+    C_Y,
+    C_Z,
+    C_ERROR,
+    C_EVENTS
+};
+
+/* Each column but the event counts and the error, at its `what`. */
+static const cs_sweep_column summary_columns[C_ERROR] = {
+    [C_OUTCOME] = {"outcome", NULL, NULL,
+                   "outcome: stopped, breakthrough, time_limit; bad_model or failed (see error)",
+                   CS_COLUMN_TEXT, C_OUTCOME},
+    [C_RATING] = {"astm_f2656", NULL, NULL, "ASTM F2656 rating", CS_COLUMN_TEXT, C_RATING},
+    [C_T] = {"time_reached", "s", NULL, "time reached", CS_COLUMN_REAL, C_T},
+    [C_DECEL] = {"max_50ms_decel", "g", "standard_free_fall", "max 50-ms average deceleration",
+                 CS_COLUMN_REAL, C_DECEL},
+    [C_T_DECEL] = {"t_max_50ms_decel", "s", NULL, "time of the max 50-ms deceleration", CS_COLUMN_REAL,
+                   C_T_DECEL},
+    [C_PEN] = {"max_dynamic_penetration", "m", NULL, "max dynamic penetration past the attack face",
+               CS_COLUMN_REAL, C_PEN},
+    [C_DEFL] = {"max_barrier_deflection", "m", NULL, "max barrier deflection", CS_COLUMN_REAL, C_DEFL},
+    [C_STOP] = {"stop_time", "s", NULL, "stop time (a run that stopped)", CS_COLUMN_REAL, C_STOP},
+    [C_EXIT] = {"exit_speed", "m/s", NULL, "exit speed (a run that broke through)", CS_COLUMN_REAL, C_EXIT},
+    [C_CONTACT] = {"first_contact_time", "s", NULL, "time of first contact", CS_COLUMN_REAL, C_CONTACT},
+    [C_POSTS_LEFT] = {"posts_failed_left", NULL, NULL, "posts failed left of the impact point (lower x)",
+                      CS_COLUMN_COUNT, C_POSTS_LEFT},
+    [C_POSTS_RIGHT] = {"posts_failed_right", NULL, NULL, "posts failed right of the impact point (higher x)",
+                       CS_COLUMN_COUNT, C_POSTS_RIGHT},
+    [C_CABLES] = {"cables_broken", NULL, NULL, "cables broken", CS_COLUMN_COUNT, C_CABLES},
+    [C_TENSION] = {"max_cable_tension", "N", NULL, "max cable tension", CS_COLUMN_REAL, C_TENSION},
+    [C_KE] = {"initial_kinetic_energy", "J", NULL, "initial kinetic energy", CS_COLUMN_REAL, C_KE},
+    [C_ENERGY] = {"energy_balance_error", "1", NULL, "largest energy balance error over the run (fraction)",
+                  CS_COLUMN_REAL, C_ENERGY},
+    [C_WARNINGS] = {"solver_warnings", NULL, NULL, "steps whose barrier solve hit its sweep cap",
+                    CS_COLUMN_COUNT, C_WARNINGS},
+    [C_RESIDUAL] = {"max_solver_residual", "1", NULL, "largest relative residual such a step left",
+                    CS_COLUMN_REAL, C_RESIDUAL},
+    [C_X] = {"final_x", "m", NULL, "final x of the vehicle's centre of gravity", CS_COLUMN_REAL, C_X},
+    [C_Y] = {"final_y", "m", NULL, "final y of the vehicle's centre of gravity", CS_COLUMN_REAL, C_Y},
+    [C_Z] = {"final_z", "m", NULL, "final z of the vehicle's centre of gravity", CS_COLUMN_REAL, C_Z},
+};
+
 /* failure events: every event type but the two that end a run */
 static int is_failure_event(int t) {
     return t != CS_EVENT_STOPPED && t != CS_EVENT_BREAKTHROUGH;
+}
+
+int cs_sweep_columns(cs_sweep_column *cols) {
+    int n = 0;
+    for (int c = 0; c < C_ERROR; c++)
+        cols[n++] = summary_columns[c];
+    for (int t = 0; t < CS_EVENT_TYPE_COUNT; t++) {
+        if (!is_failure_event(t)) continue;
+        const char *name = cs_event_type_name((cs_event_type)t);
+        cs_sweep_column *e = &cols[n++];
+        *e = (cs_sweep_column){.kind = CS_COLUMN_COUNT, .what = C_EVENTS + t};
+        snprintf(e->name, sizeof e->name, "events_%s", name);
+        snprintf(e->long_name, sizeof e->long_name, "number of %s events", name);
+    }
+    cols[n++] =
+        (cs_sweep_column){"error", NULL, NULL, "why the run did not run to the end", CS_COLUMN_TEXT, C_ERROR};
+    return n;
+}
+
+double cs_sweep_column_number(const cs_sweep_column *c, const cs_sweep_result *r) {
+    const cs_summary *m = &r->summary;
+    if (r->status != CS_RUN_OK) return NAN;
+    if (c->what >= C_EVENTS) return r->event_counts[c->what - C_EVENTS];
+    switch (c->what) {
+    case C_T:
+        return m->t;
+    case C_DECEL:
+        return m->max_decel_50ms_g;
+    case C_T_DECEL:
+        return m->t_max_decel;
+    case C_PEN:
+        return m->max_dynamic_penetration;
+    case C_DEFL:
+        return m->max_barrier_deflection;
+    case C_STOP:
+        return m->outcome == CS_STOPPED ? m->stop_time : NAN;
+    case C_EXIT:
+        return m->outcome == CS_BREAKTHROUGH ? m->exit_speed : NAN;
+    case C_CONTACT:
+        return m->first_contact_time >= 0 ? m->first_contact_time : NAN;
+    case C_POSTS_LEFT:
+        return m->posts_failed_left;
+    case C_POSTS_RIGHT:
+        return m->posts_failed_right;
+    case C_CABLES:
+        return m->cables_broken;
+    case C_TENSION:
+        return m->max_cable_tension;
+    case C_KE:
+        return m->initial_kinetic_energy;
+    case C_ENERGY:
+        return m->energy_balance_error;
+    case C_WARNINGS:
+        return m->solver_warnings;
+    case C_RESIDUAL:
+        return m->max_solver_residual;
+    case C_X:
+    case C_Y:
+    case C_Z:
+        return m->final_position[c->what - C_X];
+    default:
+        return NAN;
+    }
+}
+
+const char *cs_sweep_column_text(const cs_sweep_column *c, const cs_sweep_result *r) {
+    int ok = r->status == CS_RUN_OK;
+    switch (c->what) {
+    case C_OUTCOME:
+        return ok                              ? cs_outcome_name(r->summary.outcome)
+               : r->status == CS_RUN_BAD_MODEL ? "bad_model"
+                                               : "failed";
+    case C_RATING:
+        return ok ? r->rating : "";
+    case C_ERROR:
+        return ok ? "" : r->error;
+    default:
+        return "";
+    }
 }
 
 /* ---- runs.csv ---- */
@@ -72,6 +220,8 @@ static void csv_num(FILE *f, double v) {
 int cs_sweep_write_runs(FILE *f, const cs_sweep_spec *s, const double *x, const cs_sweep_result *r, long n,
                         char *why, size_t why_size) {
     int k = s->var_count;
+    cs_sweep_column cols[CS_SWEEP_MAX_COLUMNS];
+    int nc = cs_sweep_columns(cols);
     fprintf(f, "run");
     for (int j = 0; j < k; j++) {
         char head[600];
@@ -81,18 +231,11 @@ int cs_sweep_write_runs(FILE *f, const cs_sweep_spec *s, const double *x, const 
         fputc(',', f);
         csv_text(f, head);
     }
-    fprintf(f,
-            ",outcome,astm_f2656,time_reached [s],max_50ms_decel [g],t_max_50ms_decel [s],"
-            "max_dynamic_penetration [m],max_barrier_deflection [m],stop_time [s],exit_speed [m/s],"
-            "first_contact_time [s],posts_failed_left,posts_failed_right,cables_broken,max_cable_tension [N],"
-            "initial_kinetic_energy [J],energy_balance_error [1],solver_warnings,max_solver_residual [1],"
-            "final_x [m],final_y [m],final_z [m]");
-    for (int t = 0; t < CS_EVENT_TYPE_COUNT; t++)
-        if (is_failure_event(t)) fprintf(f, ",events_%s", cs_event_type_name((cs_event_type)t));
-    fprintf(f, ",error\n");
+    for (int c = 0; c < nc; c++)
+        fprintf(f, ",%s%s%s%s", cols[c].name, cols[c].unit ? " [" : "", cols[c].unit ? cols[c].unit : "",
+                cols[c].unit ? "]" : "");
+    fputc('\n', f);
     for (long i = 0; i < n; i++) {
-        const cs_sweep_result *ri = &r[i];
-        const cs_summary *m = &ri->summary;
         fprintf(f, "%ld", i);
         for (int j = 0; j < k; j++) {
             char value[256];
@@ -100,40 +243,14 @@ int cs_sweep_write_runs(FILE *f, const cs_sweep_spec *s, const double *x, const 
             fputc(',', f);
             csv_text(f, value);
         }
-        if (ri->status != CS_RUN_OK) {
-            fprintf(f, ",%s,", ri->status == CS_RUN_BAD_MODEL ? "bad_model" : "failed");
-            for (int c = 0; c < 19; c++)
-                fputc(',', f);
-            for (int t = 0; t < CS_EVENT_TYPE_COUNT; t++)
-                if (is_failure_event(t)) fputc(',', f);
+        for (int c = 0; c < nc; c++) {
             fputc(',', f);
-            csv_text(f, ri->error);
-            fputc('\n', f);
-            continue;
+            if (cols[c].kind == CS_COLUMN_TEXT)
+                csv_text(f, cs_sweep_column_text(&cols[c], &r[i]));
+            else
+                csv_num(f, cs_sweep_column_number(&cols[c], &r[i]));
         }
-        fprintf(f, ",%s,", cs_outcome_name(m->outcome));
-        csv_text(f, ri->rating);
-        const double a[] = {m->t,
-                            m->max_decel_50ms_g,
-                            m->t_max_decel,
-                            m->max_dynamic_penetration,
-                            m->max_barrier_deflection,
-                            m->outcome == CS_STOPPED ? m->stop_time : NAN,
-                            m->outcome == CS_BREAKTHROUGH ? m->exit_speed : NAN,
-                            m->first_contact_time >= 0 ? m->first_contact_time : NAN};
-        for (size_t c = 0; c < sizeof a / sizeof a[0]; c++)
-            fputc(',', f), csv_num(f, a[c]);
-        fprintf(f, ",%d,%d,%d", m->posts_failed_left, m->posts_failed_right, m->cables_broken);
-        const double b[] = {m->max_cable_tension, m->initial_kinetic_energy, m->energy_balance_error};
-        for (size_t c = 0; c < sizeof b / sizeof b[0]; c++)
-            fputc(',', f), csv_num(f, b[c]);
-        fprintf(f, ",%d,", m->solver_warnings);
-        csv_num(f, m->max_solver_residual);
-        for (int c = 0; c < 3; c++)
-            fputc(',', f), csv_num(f, m->final_position[c]);
-        for (int t = 0; t < CS_EVENT_TYPE_COUNT; t++)
-            if (is_failure_event(t)) fprintf(f, ",%d", ri->event_counts[t]);
-        fprintf(f, ",\n");
+        fputc('\n', f);
     }
     if (ferror(f)) {
         snprintf(why, why_size, "write error");

@@ -251,8 +251,9 @@ int cs_sweep_is_spec(const char *path) {
 
 /* ---- the libcyaml schema of this file ---- */
 
-static const char *const top_keys[] = {"model", "method", "runs", "seed", "vehicle_class", "set", "vary"};
-enum { TOP_MODEL, TOP_METHOD, TOP_RUNS, TOP_SEED, TOP_CLASS, TOP_SET, TOP_VARY, TOP_COUNT };
+static const char *const top_keys[] = {"model",         "method", "runs", "seed",
+                                       "vehicle_class", "netcdf", "set",  "vary"};
+enum { TOP_MODEL, TOP_METHOD, TOP_RUNS, TOP_SEED, TOP_CLASS, TOP_NETCDF, TOP_SET, TOP_VARY, TOP_COUNT };
 static const char *const param_keys[] = {"dist", "mean", "sd", "min", "max", "from", "to", "step", "count"};
 enum { P_DIST, P_MEAN, P_SD, P_MIN, P_MAX, P_FROM, P_TO, P_STEP, P_COUNT, P_N };
 
@@ -413,10 +414,10 @@ static void check_shapes(cs_sweep_spec *s, const ynode *root) {
         while (k < TOP_COUNT && strcmp(n->key, top_keys[k]) != 0)
             k++;
         if (k == TOP_COUNT) {
-            cs_sweep_error(
-                s, n->key_line, n->key_col,
-                "unknown key '%s' (expected one of: model, method, runs, seed, vehicle_class, set, vary)",
-                n->key);
+            cs_sweep_error(s, n->key_line, n->key_col,
+                           "unknown key '%s' (expected one of: model, method, runs, seed, vehicle_class, "
+                           "netcdf, set, vary)",
+                           n->key);
         } else if (k < TOP_SET && n->kind != CS_Y_SCALAR) {
             cs_sweep_error(s, n->line, n->col, "%s is %s (expected a single value)", n->key,
                            shape_name(n->kind));
@@ -792,6 +793,13 @@ static void read_scalars(cs_sweep_spec *s, const ynode *root, const ytop *d) {
                            d->scalar[TOP_CLASS]);
         else
             snprintf(s->vehicle_class, sizeof s->vehicle_class, "%s", class_names[k]);
+    }
+    n = yget(root, "netcdf");
+    if (n && d->scalar[TOP_NETCDF]) {
+        const char *t = d->scalar[TOP_NETCDF];
+        s->netcdf = strcmp(t, "true") == 0;
+        if (!s->netcdf && strcmp(t, "false") != 0)
+            cs_sweep_error(s, n->line, n->col, "netcdf: '%s' (expected true or false)", t);
     }
 }
 

@@ -1,0 +1,272 @@
+/* A sweep's table of runs from fabricated results (a run that stopped, one that broke through, one that
+ * failed, over a numeric and a text input): runs.csv to the byte, and runs.nc read back through the
+ * netCDF C API: every value exact, units, fill values where a run has none, the same bytes twice. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+#include <netcdf.h>
+#include <unistd.h>
+
+#include "sweep.h"
+
+enum { RUNS = 3 };
+
+typedef struct fixture {
+    cs_sweep_spec *spec;
+    double *x;
+    cs_sweep_result r[RUNS];
+} fixture;
+
+/* tests/sweep/grid.yaml's first three runs (pretension 4, 4, 5 kip; SD-STD-02.01, PU, SD-STD-02.01) with
+ * results made up to the last digit; run 2 failed, and its summary's numbers must not show. */
+static int setup(void **state) {
+    fixture *f = calloc(1, sizeof *f);
+    char why[256];
+    cs_units *u = cs_units_create(why, sizeof why);
+    if (!f || !u) return -1;
+    f->spec = cs_sweep_spec_read("tests/sweep/grid.yaml", u);
+    cs_units_free(u);
+    long n;
+    if (!f->spec || f->spec->error_count || !(f->x = cs_sweep_samples(f->spec, &n))) return -1;
+    cs_sweep_result *r = f->r;
+    r[0].summary = (cs_summary){.outcome = CS_STOPPED,
+                                .t = 0.5,
+                                .max_decel_50ms_g = 3.25,
+                                .t_max_decel = 0.125,
+                                .max_dynamic_penetration = 1.2345678901234567,
+                                .max_barrier_deflection = 2.25,
+                                .stop_time = 0.4375,
+                                .exit_speed = 7,
+                                .first_contact_time = 0.003,
+                                .posts_failed_left = 2,
+                                .posts_failed_right = 3,
+                                .initial_kinetic_energy = 1087776.7091234,
+                                .energy_balance_error = -4.2595107761234e-05,
+                                .max_cable_tension = 38621.246851234,
+                                .final_position = {20.5, -3.25, 1},
+                                .solver_warnings = 1,
+                                .max_solver_residual = 0.0023941431861234};
+    r[0].event_counts[CS_EVENT_POST_HINGE] = 2;
+    snprintf(r[0].rating, sizeof r[0].rating, "M40/P2");
+    /* run 1 as run 0 but broken through, before any contact was recorded */
+    cs_summary *b = &r[1].summary;
+    *b = r[0].summary;
+    b->outcome = CS_BREAKTHROUGH, b->exit_speed = 13.75, b->first_contact_time = -1;
+    b->max_decel_50ms_g = 2.875, b->max_dynamic_penetration = 4.03125, b->max_cable_tension = 1.5e6;
+    b->energy_balance_error = 0, b->posts_failed_left = 0, b->cables_broken = 2;
+    r[1].event_counts[CS_EVENT_CABLE_BREAK] = 2;
+    r[1].event_counts[CS_EVENT_UNDERRIDE] = 1;
+    snprintf(r[1].rating, sizeof r[1].rating, "PU40/P4");
+    r[2].status = CS_RUN_FAILED;
+    r[2].summary = r[0].summary;
+    r[2].event_counts[CS_EVENT_CABLE_BREAK] = 5;
+    snprintf(r[2].rating, sizeof r[2].rating, "none");
+    snprintf(r[2].error, sizeof r[2].error, "the solve \"diverged\", at 0.1 s");
+    *state = f;
+    return 0;
+}
+
+static int teardown(void **state) {
+    fixture *f = *state;
+    free(f->x);
+    cs_sweep_spec_free(f->spec);
+    free(f);
+    return 0;
+}
+
+static void test_runs_csv(void **state) {
+    fixture *f = *state;
+    char *text = NULL, why[256];
+    size_t size = 0;
+    FILE *out = open_memstream(&text, &size);
+    assert_non_null(out);
+    assert_int_equal(cs_sweep_write_runs(out, f->spec, f->x, f->r, RUNS, why, sizeof why), 0);
+    fclose(out);
+    const char *want =
+        "run,barrier.cables[0].pretension [N],vehicle,outcome,astm_f2656,time_reached [s],max_50ms_decel [g],"
+        "t_max_50ms_decel [s],max_dynamic_penetration [m],max_barrier_deflection [m],stop_time [s],"
+        "exit_speed [m/s],first_contact_time [s],posts_failed_left,posts_failed_right,cables_broken,"
+        "max_cable_tension [N],initial_kinetic_energy [J],energy_balance_error [1],solver_warnings,"
+        "max_solver_residual [1],final_x [m],final_y [m],final_z [m],events_cable_break,events_post_hinge,"
+        "events_post_rotation_limit,events_post_shear,events_post_pullout,events_footing_rotation,"
+        "events_anchor_pullout,events_override,events_underride,error\n"
+        "0,17792.886461,SD-STD-02.01,stopped,M40/P2,0.5,3.25,0.125,1.23456789,2.25,0.4375,,0.003,2,3,0,"
+        "38621.24685,1087776.709,-4.259510776e-05,1,0.002394143186,20.5,-3.25,1,0,2,0,0,0,0,0,0,0,\n"
+        "1,17792.886461,PU,breakthrough,PU40/P4,0.5,2.875,0.125,4.03125,2.25,,13.75,,0,3,2,1500000,"
+        "1087776.709,0,1,0.002394143186,20.5,-3.25,1,2,0,0,0,0,0,0,0,1,\n"
+        "2,22241.1080763,SD-STD-02.01,failed,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"the solve \"\"diverged\"\", at "
+        "0.1 s\"\n";
+    assert_string_equal(text, want);
+    free(text);
+}
+
+/* A text attribute of a variable (NC_GLOBAL: of the file). */
+static const char *att(int id, int varid, const char *name) {
+    static char text[512];
+    size_t len = 0;
+    assert_int_equal(nc_inq_attlen(id, varid, name, &len), NC_NOERR);
+    assert_true(len < sizeof text);
+    assert_int_equal(nc_get_att_text(id, varid, name, text), NC_NOERR);
+    text[len] = '\0';
+    return text;
+}
+
+/* A whole file's bytes. */
+static char *slurp(const char *path, size_t *size) {
+    FILE *f = fopen(path, "rb");
+    assert_non_null(f);
+    fseek(f, 0, SEEK_END);
+    *size = (size_t)ftell(f);
+    rewind(f);
+    char *data = malloc(*size + 1);
+    assert_non_null(data);
+    assert_int_equal(fread(data, 1, *size, f), *size);
+    fclose(f);
+    return data;
+}
+
+static int var(int id, const char *name) {
+    int varid = -1;
+    assert_int_equal(nc_inq_varid(id, name, &varid), NC_NOERR);
+    return varid;
+}
+
+/* A double variable's three values, as stored. */
+static void doubles(int id, const char *name, double *v) {
+    assert_int_equal(nc_get_var_double(id, var(id, name), v), NC_NOERR);
+}
+
+/* Run i's text in a char variable of width chars (NUL-padded). */
+static void assert_text(int id, const char *name, size_t width, const char *const want[RUNS]) {
+    char got[RUNS][64] = {{0}};
+    int varid = var(id, name), dims[2];
+    size_t len;
+    assert_int_equal(nc_inq_vardimid(id, varid, dims), NC_NOERR);
+    assert_int_equal(nc_inq_dimlen(id, dims[1], &len), NC_NOERR);
+    assert_int_equal(len, width);
+    for (size_t i = 0; i < RUNS; i++)
+        assert_int_equal(nc_get_vara_text(id, varid, (size_t[]){i, 0}, (size_t[]){1, width}, got[i]),
+                         NC_NOERR);
+    for (int i = 0; i < RUNS; i++)
+        assert_string_equal(got[i], want[i]);
+}
+
+static void test_runs_netcdf(void **state) {
+    fixture *f = *state;
+    char dir[] = "/tmp/cs-runs-nc-XXXXXX", path[64], again[64], why[256];
+    assert_non_null(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/runs.nc", dir);
+    snprintf(again, sizeof again, "%s/again.nc", dir);
+    assert_int_equal(cs_sweep_write_netcdf(path, f->spec, f->x, f->r, RUNS, why, sizeof why), 0);
+    int id, format, dim;
+    size_t len;
+    assert_int_equal(nc_open(path, NC_NOWRITE, &id), NC_NOERR);
+    assert_int_equal(nc_inq_format(id, &format), NC_NOERR);
+    assert_int_equal(format, NC_FORMAT_64BIT_OFFSET);
+    assert_int_equal(nc_inq_dimid(id, "run", &dim), NC_NOERR);
+    assert_int_equal(nc_inq_dimlen(id, dim, &len), NC_NOERR);
+    assert_int_equal(len, RUNS);
+    /* the file's attributes */
+    assert_string_equal(att(id, NC_GLOBAL, "Conventions"), "CF-1.8");
+    assert_string_equal(att(id, NC_GLOBAL, "source"), "cablesim " CS_VERSION_STRING);
+    assert_string_equal(att(id, NC_GLOBAL, "spec"), "tests/sweep/grid.yaml");
+    assert_string_equal(att(id, NC_GLOBAL, "method"), "grid");
+    assert_string_equal(att(id, NC_GLOBAL, "seed"), "1");
+    assert_string_equal(att(id, NC_GLOBAL, "title"),
+                        "cablesim sweep tests/sweep/grid.yaml: one record per run");
+    int runs = 0, index[RUNS];
+    assert_int_equal(nc_get_att_int(id, NC_GLOBAL, "runs", &runs), NC_NOERR);
+    assert_int_equal(runs, RUNS);
+    assert_int_equal(nc_get_var_int(id, var(id, "run"), index), NC_NOERR);
+    assert_true(index[0] == 0 && index[1] == 1 && index[2] == 2);
+    /* the inputs: 4, 4 and 5 kip in N as runs.csv writes them (%.12g), the vehicles' names */
+    double v[RUNS];
+    doubles(id, "barrier_cables_0_pretension", v);
+    assert_true(v[0] == 17792.886461 && v[1] == 17792.886461 && v[2] == 22241.1080763);
+    assert_string_equal(att(id, var(id, "barrier_cables_0_pretension"), "long_name"),
+                        "barrier.cables[0].pretension");
+    assert_string_equal(att(id, var(id, "barrier_cables_0_pretension"), "units"), "N");
+    assert_text(id, "vehicle", 12, (const char *const[]){"SD-STD-02.01", "PU", "SD-STD-02.01"});
+    /* text results; the failed run's rating is empty, its error whole */
+    assert_text(id, "outcome", 12, (const char *const[]){"stopped", "breakthrough", "failed"});
+    assert_text(id, "astm_f2656", 7, (const char *const[]){"M40/P2", "PU40/P4", ""});
+    assert_text(id, "error", 30, (const char *const[]){"", "", "the solve \"diverged\", at 0.1 s"});
+    /* numbers in full (runs.csv rounds to 10 digits), and the fill value where a run has none */
+    double fill;
+    assert_int_equal(nc_get_att_double(id, var(id, "max_dynamic_penetration"), "_FillValue", &fill),
+                     NC_NOERR);
+    assert_true(fill == NC_FILL_DOUBLE);
+    doubles(id, "max_dynamic_penetration", v);
+    assert_true(v[0] == 1.2345678901234567 && v[1] == 4.03125 && v[2] == NC_FILL_DOUBLE);
+    assert_string_equal(att(id, var(id, "max_dynamic_penetration"), "units"), "m");
+    assert_string_equal(att(id, var(id, "max_dynamic_penetration"), "long_name"),
+                        "max dynamic penetration past the attack face");
+    doubles(id, "energy_balance_error", v);
+    assert_true(v[0] == -4.2595107761234e-05 && v[1] == 0 && v[2] == NC_FILL_DOUBLE);
+    doubles(id, "stop_time", v);
+    assert_true(v[0] == 0.4375 && v[1] == NC_FILL_DOUBLE && v[2] == NC_FILL_DOUBLE);
+    doubles(id, "exit_speed", v);
+    assert_true(v[0] == NC_FILL_DOUBLE && v[1] == 13.75 && v[2] == NC_FILL_DOUBLE);
+    assert_string_equal(att(id, var(id, "exit_speed"), "units"), "m/s");
+    doubles(id, "first_contact_time", v);
+    assert_true(v[0] == 0.003 && v[1] == NC_FILL_DOUBLE && v[2] == NC_FILL_DOUBLE);
+    doubles(id, "max_50ms_decel", v);
+    assert_true(v[0] == 3.25 && v[1] == 2.875 && v[2] == NC_FILL_DOUBLE);
+    assert_string_equal(att(id, var(id, "max_50ms_decel"), "units"), "standard_free_fall"); /* g: gram */
+    doubles(id, "max_cable_tension", v);
+    assert_true(v[0] == 38621.246851234 && v[1] == 1.5e6 && v[2] == NC_FILL_DOUBLE);
+    assert_string_equal(att(id, var(id, "max_cable_tension"), "units"), "N");
+    /* counts as ints; the failed run's 5 cable breaks do not show */
+    int n[RUNS], int_fill;
+    assert_int_equal(nc_get_att_int(id, var(id, "posts_failed_left"), "_FillValue", &int_fill), NC_NOERR);
+    assert_int_equal(int_fill, NC_FILL_INT);
+    assert_int_equal(nc_get_var_int(id, var(id, "posts_failed_left"), n), NC_NOERR);
+    assert_true(n[0] == 2 && n[1] == 0 && n[2] == NC_FILL_INT);
+    assert_string_equal(att(id, var(id, "posts_failed_left"), "units"), "1");
+    assert_int_equal(nc_get_var_int(id, var(id, "events_cable_break"), n), NC_NOERR);
+    assert_true(n[0] == 0 && n[1] == 2 && n[2] == NC_FILL_INT);
+    assert_int_equal(nc_get_var_int(id, var(id, "events_underride"), n), NC_NOERR);
+    assert_true(n[0] == 0 && n[1] == 1 && n[2] == NC_FILL_INT);
+    /* every column of runs.csv is a variable with its long name, and its unit where it is a number */
+    cs_sweep_column cols[CS_SWEEP_MAX_COLUMNS];
+    int count = cs_sweep_columns(cols), nvars;
+    for (int c = 0; c < count; c++) {
+        int varid = var(id, cols[c].name);
+        assert_string_equal(att(id, varid, "long_name"), cols[c].long_name);
+        if (cols[c].kind == CS_COLUMN_TEXT) continue;
+        const char *units = cols[c].cf_units ? cols[c].cf_units : cols[c].unit ? cols[c].unit : "1";
+        assert_string_equal(att(id, varid, "units"), units);
+    }
+    assert_int_equal(nc_inq_nvars(id, &nvars), NC_NOERR);
+    assert_int_equal(nvars, 1 + 2 + count); /* run, the inputs, the columns */
+    assert_int_equal(nc_close(id), NC_NOERR);
+
+    /* the same results, the same bytes */
+    assert_int_equal(cs_sweep_write_netcdf(again, f->spec, f->x, f->r, RUNS, why, sizeof why), 0);
+    size_t na, nb;
+    char *a = slurp(path, &na), *b = slurp(again, &nb);
+    assert_true(na > 0 && na == nb);
+    assert_memory_equal(a, b, na);
+    free(a), free(b);
+    unlink(path), unlink(again), rmdir(dir);
+
+    /* a file that cannot be created: nc_strerror's words */
+    assert_int_equal(
+        cs_sweep_write_netcdf("/nonexistent/runs.nc", f->spec, f->x, f->r, RUNS, why, sizeof why), -1);
+    assert_string_equal(why, "creating the file: No such file or directory");
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_runs_csv),
+        cmocka_unit_test(test_runs_netcdf),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}
