@@ -155,7 +155,7 @@ static void follow_stretch(const cs_model *model, cs_state *s, double h, int lev
     }
     work = 0.0;
     for (int j = 1; j <= CS_PATH_PIECES; j++) { /* start holds the barrier as last committed */
-        double allowed = s->stored_committed + work + CS_PATH_GAP * scale;
+        double allowed = s->stored_committed + work + CS_PATH_GAP * scale * h / model->scenario.dt;
         if (!advance(model, s, h / CS_PATH_PIECES, j == CS_PATH_PIECES, allowed, start, &work)) continue;
         book_gap(model, s, work, e0, snap / CS_PATH_PIECES);
         work = 0.0, e0 = barrier_energy(model, s);

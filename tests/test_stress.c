@@ -124,11 +124,14 @@ static void random_designs_run_clean(void **state) {
  * "Posts", falling); 5498, where a fall kept because it stored less than the failed solve led to a
  * state whose commit booked 11 kJ more than the ropes gave up (+3.1%), and 1648, where 64ths starting
  * from a failed one converged onto the rope at its strength and the last was committed (the energy
- * guard's error at +262%), on the way there (docs/theory.md, "A step", no wild iterate). */
+ * guard's error at +262%), on the way there (docs/theory.md, "A step", no wild iterate); 7332, a
+ * small car whose face corner reached the end anchor, a 2-cm span between them, where 64ths whose
+ * solves failed each made up to 1e-3 of the energy scale (+2.9% over five steps) until that allowance
+ * was scaled to the piece's length (docs/theory.md, "A step", no wild iterate). */
 static void kept_designs_balance(void **state) {
     (void)state;
-    const int kept[] = {76,   78,   99,   105,  142,  195,  583,  1648, 1804, 2004,
-                        2346, 3057, 4765, 5438, 5498, 6270, 6305, 7839, 7855, 9637};
+    const int kept[] = {76,   78,   99,   105,  142,  195,  583,  1648, 1804, 2004, 2346,
+                        3057, 4765, 5438, 5498, 6270, 6305, 7332, 7839, 7855, 9637};
     int failures = 0;
     for (size_t i = 0; i < sizeof kept / sizeof *kept; i++)
         failures += design_fails(kept[i]);
