@@ -119,9 +119,9 @@ static double book_gap(const cs_model *model, cs_state *s, double work, double e
     return gap;
 }
 
-/* Following the path. The barrier is massless, so its state is a function of the vehicle's pose
- * only while the equilibrium it is on goes on existing; the ledger tells when it stopped: over a step,
- * the barrier's energy (stored, dissipated, released) must change by the work the vehicle did on it.
+/* Following the path. The barrier (but for its posts' swing) is massless, so its state is a function of the
+ * vehicle's pose only while the equilibrium it is on goes on existing; the ledger tells when it stopped: over
+ * a step, the barrier's energy (stored, dissipated, released) must change by the work the vehicle did on it.
  * - It changed by less (by more than CS_PATH_GAP of the energy scale): the barrier jumped to a lower
  *   equilibrium within the step, a post snapping over or a rope running over its supports. Real posts
  *   and ropes spend the difference in motion the model does not have; it is booked as released, as
@@ -133,8 +133,8 @@ static double book_gap(const cs_model *model, cs_state *s, double work, double e
  *   the last of CS_PATH_LEVELS levels is taken as CS_PATH_PIECES steps again and cut no further: each
  *   committed if its solve converged (the last always), the gap of each stretch between commits
  *   booked as it falls (a snap as released, a negative gap left in the ledger). There, a piece whose
- *   solve failed where a commit would make more than CS_PATH_GAP of the scale (hold more than the last
- *   commit plus the work since) is not committed, the last neither: the barrier goes back to its last
+ *   solve failed where a commit would make more than CS_PATH_GAP of the scale per step (hold more than the
+ * last commit plus the work since) is not committed, the last neither: the barrier goes back to its last
  *   commit.
  * The gap allowed scales with the stretch's length. docs/theory.md, "A step". */
 #define CS_PATH_GAP 1e-3
