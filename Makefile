@@ -58,7 +58,7 @@ fuzz: fuzz-build
 	  -timeout=10 -print_final_stats=1 -dict=fuzz/loader.dict -artifact_prefix=$(FUZZ_BUILD)/artifacts/ \
 	  $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/seeds $(wildcard tests/fuzz-regressions)
 
-# Benchmarks (bench/run.sh, docs/performance.md; not part of test). Settings: BENCH_N (Monte Carlo runs, 16),
+# Benchmarks (bench/run.sh, docs/performance.md; not part of test). Settings: BENCH_N (Monte Carlo runs, 1000),
 # BENCH_T_END (end time of the APS3 runs; empty: the model's), BENCH_POSTS, BENCH_POSTS_T_END, BENCH_REPEAT.
 bench: build
 	BUILD=$(BUILD) bash bench/run.sh

@@ -5,13 +5,13 @@
 #   3. cost against barrier length: generated models of 10 to 1,000 posts (bench/gen_posts.sh), each run
 #      to BENCH_POSTS_T_END;
 #   4. peak memory of the command (/usr/bin/time -v) for a run and for the sweep.
-# Settings (environment): BUILD (build), BENCH_N (16), BENCH_T_END (empty: the model's own, 3 s, or until
+# Settings (environment): BUILD (build), BENCH_N (1000, the issue's Monte Carlo), BENCH_T_END (empty: the model's own, 3 s, or until
 # the truck stops or breaks through), BENCH_POSTS ("10 30 100 300 1000"), BENCH_POSTS_T_END (20 ms),
 # BENCH_REPEAT (3), BENCH_POSTS_REPEAT (1). Writes results/bench/bench.md and prints it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${BUILD:-build}
-N=${BENCH_N:-16}
+N=${BENCH_N:-1000}
 T_END=${BENCH_T_END:-}
 POSTS=${BENCH_POSTS:-10 30 100 300 1000}
 POSTS_T_END=${BENCH_POSTS_T_END:-20 ms}

@@ -212,6 +212,7 @@ double cs_footing_impact_capacity(const cs_footing_def *f, double load_height);
 double cs_footing_pullout_capacity(const cs_footing_def *f);
 void cs_post_attachment(const cs_model *model, int post, const double *tilt, double z, double *out);
 double cs_post_solve(const cs_model *model, cs_state *s, int post, double tol, int may_fall);
+double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int post);
 void cs_post_commit(const cs_model *model, cs_state *s, int post);
 /* Elastic plus kinetic. */
 double cs_post_stored_energy(const cs_model *model, const cs_state *s, int post);

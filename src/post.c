@@ -66,9 +66,13 @@ void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const 
  * equilibrium near. Backward Euler takes J |w - w_c|^2 / 2 out of the swing at each commit, booked as
  * post damping; its end-point rule's share in the forces that swing the post (k |d alpha|^2 / 2 for a
  * spring) is left in the balance error (docs/theory.md, "Posts with mass"). */
+static int swings(const cs_post_model *pm, double h) {
+    return pm->inertia > 0.0 && h > 0.0 && h < HUGE_VAL; /* not massless, held, or at rest */
+}
+
 static void subtract_inertia(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double h,
                              double *r) {
-    if (pm->inertia <= 0.0 || h <= 0.0 || !(h < HUGE_VAL)) return; /* massless, held, or at rest */
+    if (!swings(pm, h)) return;
     double k = pm->inertia / (h * h);
     r[0] -= k * (tilt[0] - ps->tilt_commit[0] - h * ps->rate[0]);
     r[1] -= k * (tilt[1] - ps->tilt_commit[1] - h * ps->rate[1]);
@@ -140,12 +144,52 @@ void cs_post_residual_now(const cs_model *model, const cs_state *s, int p, doubl
     subtract_inertia(&model->posts[p], ps, ps->tilt, s->h, r);
 }
 
+/* The post's cable nodes where a tilt puts them. */
+static void place_nodes(const cs_model *model, cs_state *s, int p, const double *tilt) {
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
+        if (i > 0) cs_post_attachment(model, p, tilt, model->cables[c].z, cs->pos + 3 * i);
+    }
+}
+
 static void entry_material(const cs_model *model, const cs_state *s, int p, double *m_entry) {
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
         m_entry[c] = i >= 0 ? cs->m[i] : 0.0;
     }
+}
+
+/* The tilt at which post p balances the cables' tensions as they stand (held, not following the spans'
+ * stretch), at rest: Newton with a finite-difference Jacobian, the nodes placed at each tilt. Returns the
+ * relative residual found on entry. For the barrier as installed (state.c). */
+double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int p) {
+    cs_post_state *ps = &s->posts[p];
+    const cs_post_model *pm = &model->posts[p];
+    if (!cs_post_standing(ps) || ps->captured) return 0.0;
+    double r[2], entry = -1.0;
+    for (int it = 0; it < 20; it++) {
+        place_nodes(model, s, p, ps->tilt);
+        cs_post_residual_now(model, s, p, r);
+        double rn = hypot(r[0], r[1]) / pm->moment_cap;
+        if (entry < 0.0) entry = rn;
+        if (rn <= 1e-14) break;
+        double jac[4], h = 1e-7, a0[2] = {ps->tilt[0], ps->tilt[1]}, rp[2];
+        for (int k = 0; k < 2; k++) {
+            ps->tilt[k] = a0[k] + h;
+            place_nodes(model, s, p, ps->tilt);
+            cs_post_residual_now(model, s, p, rp);
+            jac[k] = (rp[0] - r[0]) / h, jac[2 + k] = (rp[1] - r[1]) / h;
+            ps->tilt[k] = a0[k];
+        }
+        double det = jac[0] * jac[3] - jac[1] * jac[2];
+        if (!(fabs(det) > 0.0)) break;
+        ps->tilt[0] = a0[0] - (jac[3] * r[0] - jac[1] * r[1]) / det;
+        ps->tilt[1] = a0[1] - (-jac[2] * r[0] + jac[0] * r[1]) / det;
+    }
+    place_nodes(model, s, p, ps->tilt);
+    return entry;
 }
 
 /* A post whose own solve stalls far from balance has no equilibrium near its tilt, the ropes sliding
@@ -202,13 +246,14 @@ double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol, int 
     double entry = hypot(r[0], r[1]) / scale;
     double rn = entry;
     for (int it = 0; it < 30 && rn > 1e-3 * tol; it++) {
-        /* On the plastic plateau the radial slope of the resistance is zero, so Newton cannot see
-         * that a post the cables pull less than its capacity must come back. Along the radial line
-         * from the elastic boundary to here the residual changes sign once: if it is still positive
-         * at the boundary the root lies between (bisect); if not, the post unloads into the
-         * elastic range (restart there). */
+        /* On the plastic plateau the radial slope of a massless post's resistance is zero, so Newton
+         * cannot see that a post the cables pull less than its capacity must come back. Along the
+         * radial line from the elastic boundary to here the residual changes sign once: if it is still
+         * positive at the boundary the root lies between (bisect); if not, the post unloads into the
+         * elastic range (restart there). A swinging post's residual has the inertial slope J / h^2
+         * there, which Newton sees. */
         double tr[2] = {al[0] - ps->plastic[0], al[1] - ps->plastic[1]}, tn = hypot(tr[0], tr[1]);
-        if (pm->k_rot * tn > pm->moment_cap && (r[0] * tr[0] + r[1] * tr[1]) < 0.0) {
+        if (!swings(pm, s->h) && pm->k_rot * tn > pm->moment_cap && (r[0] * tr[0] + r[1] * tr[1]) < 0.0) {
             double lo = 0.999 * pm->moment_cap / (pm->k_rot * tn), hi = 1.0, rb[2];
             double b[2] = {ps->plastic[0] + lo * tr[0], ps->plastic[1] + lo * tr[1]};
             post_residual(model, s, p, b, m_entry, rb, NULL);
