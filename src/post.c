@@ -162,8 +162,10 @@ static void entry_material(const cs_model *model, const cs_state *s, int p, doub
 }
 
 /* The tilt at which post p balances the cables' tensions as they stand (held, not following the spans'
- * stretch), at rest: Newton with a finite-difference Jacobian, the nodes placed at each tilt. Returns the
- * relative residual found on entry. For the barrier as installed (state.c). */
+ * stretch), at rest: Newton with a finite-difference Jacobian, the nodes placed at each tilt; no further
+ * than its elastic limit (a post those tensions would bend past it is left there, and the barrier's
+ * solve finds what it then does). Returns the relative residual found on entry. For the barrier as
+ * installed (state.c). */
 double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int p) {
     cs_post_state *ps = &s->posts[p];
     const cs_post_model *pm = &model->posts[p];
@@ -187,6 +189,13 @@ double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int p) {
         if (!(fabs(det) > 0.0)) break;
         ps->tilt[0] = a0[0] - (jac[3] * r[0] - jac[1] * r[1]) / det;
         ps->tilt[1] = a0[1] - (-jac[2] * r[0] + jac[0] * r[1]) / det;
+        double e[2] = {ps->tilt[0] - ps->plastic[0], ps->tilt[1] - ps->plastic[1]}, en = hypot(e[0], e[1]);
+        double limit = 0.999 * pm->moment_cap / pm->k_rot;
+        if (en > limit) {
+            ps->tilt[0] = ps->plastic[0] + e[0] * limit / en,
+            ps->tilt[1] = ps->plastic[1] + e[1] * limit / en;
+            break;
+        }
     }
     place_nodes(model, s, p, ps->tilt);
     return entry;

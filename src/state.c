@@ -157,7 +157,11 @@ static void reset_cable(const cs_model *model, int c, cs_cable_state *cs) {
  * spans' chords (Gauss-Seidel over the posts, at most CS_SETTLE_SWEEPS sweeps to 1e-12 of a post's
  * capacity), the rope laid in at the pretension on that path, and the barrier solved and committed
  * there at rest (h infinite: posts with mass settle as massless ones). Each post sits in balance and
- * every support sticks with equal tensions, so the solve finds the laid-in state. Laying the rope in on
+ * every support sticks with equal tensions, so the solve finds the laid-in state. A post that the
+ * pretension would bend past its elastic limit (a weak end post under a heavy pretension) leans no
+ * further than that limit here; the solve then lets it yield and the rope slide over it, as a propped
+ * post let go would (leaning it to the balance instead folded such posts by up to 0.73 rad before the
+ * vehicle came, stress designs 803 and 2250). Laying the rope in on
  * the straight path and letting the posts settle instead leaves the spans next to an end post 4-5% off
  * the pretension (it leans toward the barrier, the rope slides over it at the capstan limit), and
  * re-laying it there and settling again creeps toward the balance by about 1/60 a round (the rope is
