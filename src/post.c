@@ -350,9 +350,15 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
         ps->shear = ps->push, ps->axial = ps->push * sin(hypot(ps->tilt[0], ps->tilt[1]));
         return;
     }
-    double r[2], f[3], axis[3], m_entry[CS_MAX_CABLES_PER_POST];
-    entry_material(model, s, p, m_entry);
-    post_residual(model, s, p, ps->tilt, m_entry, r, f);
+    double f[3] = {0.0, 0.0, 0.0}, axis[3];
+    for (int c = 0; c < model->cable_count; c++) { /* the cables' pull on it, as solved */
+        const cs_cable_state *cs = &s->cables[c];
+        int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
+        if (i <= 0) continue;
+        double fc[3];
+        cs_node_force(cs, i, fc);
+        v3_add(f, f, fc);
+    }
     /* base shear from the post's own moment over the load height (what equilibrium allows), so a
      * step the solver left short of equilibrium cannot report a shear it never had */
     ps->shear = hypot(ps->moment[0], ps->moment[1]) / (pm->load_height + pm->pivot);

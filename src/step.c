@@ -66,17 +66,18 @@ static double work_on_barrier(const loaded_pose *a, const loaded_pose *b) {
 
 /* Stages 2-5 at the vehicle's pose as it stands. A solve that ends further than CS_PATH_TRIGGER from
  * equilibrium is not committed unless told to (its slides and plastic flow would be booked from a state
- * that is not one). Nor at all, and -1 returned, if (with `allowed` given) it also ends where a commit
- * would leave the barrier holding (stored and dissipated) more than `allowed` plus the work done on it
- * from `from`: an iterate the path does not reach, which the next solve must not start from. Returns 1
- * if it committed, with the largest residual of the solves it committed kept in s->solver_residual. */
+ * that is not one). Nor at all, and -1 returned, if (with `allowed` given) it ends above the solver
+ * tolerance where a commit would leave the barrier holding (stored and dissipated) more than `allowed`
+ * plus the work done on it from `from`: an iterate the path does not reach, which the next solve must
+ * not start from. A solve that met the tolerance is an equilibrium, and is committed. Returns 1 if it
+ * committed, with the largest residual of the solves it committed kept in s->solver_residual. */
 #define CS_PATH_TRIGGER 1e-2
 
 static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, double allowed,
                        const loaded_pose *from) {
-    cs_contact_update(model, s);                         /* 2. cables wrap onto or leave the face */
-    double worst = cs_barrier_solve(model, s);           /* 3. posts, sliding and crush in equilibrium */
-    if (worst > CS_PATH_TRIGGER && allowed < HUGE_VAL) { /* with the work done on it over this piece */
+    cs_contact_update(model, s);               /* 2. cables wrap onto or leave the face */
+    double worst = cs_barrier_solve(model, s); /* 3. posts, sliding and crush in equilibrium */
+    if (worst > model->scenario.solver_tolerance && allowed < HUGE_VAL) { /* the work done on it here */
         cs_barrier_force(model, s);
         loaded_pose to = pose_of(s);
         if (cs_barrier_trial_energy(model, s) > allowed + work_on_barrier(from, &to)) return -1;
