@@ -3,8 +3,9 @@
  *   - every support satisfies the capstan condition, sticking or sliding (cable.c),
  *   - the face's crush balances the cables' push on it (the paper's crush correction),
  * by Gauss-Seidel over these local problems, each solved exactly with its neighbours held, until the
- * largest relative residual found in a sweep is below the solver tolerance. The cables and posts are
- * massless (the paper's assumption): wave travel along a 50-m barrier takes ~20 ms. */
+ * largest relative residual found in a sweep is below the solver tolerance. The cables are massless
+ * (the paper's assumption): wave travel along a 50-m barrier takes ~20 ms. A post's equilibrium
+ * includes the inertial moment of its swing (post.c). */
 #include "internal.h"
 #include "vec3.h"
 

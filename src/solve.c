@@ -3,7 +3,7 @@
  * Unknowns: the tilt (2) of every standing post on a cable path, the material coordinate m of every
  * support node the rope can slide through (posts that do not clamp, face corners), and the crush.
  * Residuals (each scaled by its element's capacity):
- *   post:   Q_cables(alpha) - Q_resist(alpha)                              (post.c)
+ *   post:   Q_cables(alpha) - Q_resist(alpha) - J (alpha - alpha_c - h w_c) / h^2 (swing; post.c)
  *   node:   lambda - proj_[-b, b](lambda + c dm) - eps c dm,                (capstan, Eq. 3)
  *           lambda = T_L - T_R, b = tanh(mu theta / 2) (T_L + T_R), dm = m - m_commit, c = EA / l.
  *           |T_L - T_R| <= b is T_high <= exp(mu theta) T_low; the projection makes the node stick
