@@ -156,9 +156,10 @@ void cs_cable_update_tensions(const cs_cable_model *cm, cs_cable_state *cs) {
         cs->tension[i] = cs->status == CS_CABLE_INTACT ? cs_span_tension(cm, cs, i) : 0.0;
 }
 
-/* Capstan ratio R = exp(mu theta) at interior node i; theta is the turning angle of the path. */
-double cs_node_friction_ratio(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs,
-                              int i) {
+/* The capstan exponent mu theta at interior node i, theta the turning angle of the path; the ratio R is
+ * exp(mu theta). */
+double cs_node_capstan_exponent(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs,
+                                int i) {
     double a[3], b[3];
     v3_sub(a, cs->pos + 3 * i, cs->pos + 3 * (i - 1));
     v3_sub(b, cs->pos + 3 * (i + 1), cs->pos + 3 * i);
@@ -167,7 +168,12 @@ double cs_node_friction_ratio(const cs_model *model, const cs_cable_model *cm, c
     double theta = atan2(v3_norm(x), v3_dot(a, b)); /* turning angle, accurate near 0 and pi */
     int id = cs->node[i];
     double mu = id >= 0 ? cm->mu_post : model->vehicle.def.face_friction;
-    return exp(mu * theta);
+    return mu * theta;
+}
+
+double cs_node_friction_ratio(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs,
+                              int i) {
+    return exp(cs_node_capstan_exponent(model, cm, cs, i));
 }
 
 /* Solve node i's sliding condition exactly (regula falsi, Illinois variant) with its neighbours'

@@ -197,6 +197,9 @@ double cs_span_material_at(const cs_cable_model *cm, const cs_cable_state *cs, i
 void cs_cable_update_tensions(const cs_cable_model *cm, cs_cable_state *cs);
 double cs_cable_slide_node(const cs_model *model, const cs_cable_model *cm, cs_cable_state *cs, int i,
                            double tol);
+/* mu theta at interior node i, theta the path's turning angle there; the ratio is its exponential. */
+double cs_node_capstan_exponent(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs,
+                                int i);
 double cs_node_friction_ratio(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs,
                               int i);
 void cs_cable_insert_node(cs_cable_state *cs, int at, int id, const double *p);

@@ -266,7 +266,7 @@ static double node_residual(const cs_model *model, const cs_state *s, int c, int
     const cs_cable_model *cm = &model->cables[c];
     const cs_cable_state *cs = &s->cables[c];
     double tl = cs->tension[i - 1], tr = cs->tension[i];
-    double mu_theta = log(cs_node_friction_ratio(model, cm, cs, i));
+    double mu_theta = cs_node_capstan_exponent(model, cm, cs, i);
     double lambda = tl - tr, b = tanh(0.5 * mu_theta) * (tl + tr);
     double cstiff = cm->rope.ea / (cs_span_length(cs, i - 1) + cs_span_length(cs, i) + 1e-9);
     double dm = cs->m[i] - cs->m_commit[i], y = lambda + cstiff * dm;
