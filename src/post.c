@@ -94,13 +94,12 @@ static void commit_swing(const cs_post_model *pm, cs_post_state *ps, cs_state *s
 
 /* Place the post's cable nodes for a tilt, let the rope slide through the post's own holes (from the
  * material it had on entry, so the residual is a function of the tilt alone), and return the residual
- * r = Q_cables - Q_resist. Also gives the resultant cable force on the post (for shear and pullout).
- * Sliding inside this block matters: held rope would make the post look as stiff as the cable. */
+ * r = Q_cables - Q_resist (less the swing's inertial moment). Sliding inside this block matters: held
+ * rope would make the post look as stiff as the cable. */
 static void post_residual(const cs_model *model, cs_state *s, int p, const double *tilt,
-                          const double *m_entry, double *r, double *force) {
+                          const double *m_entry, double *r) {
     double j[6], q[2] = {0.0, 0.0};
     axis_jacobian(tilt, j);
-    if (force) v3_set(force, 0.0, 0.0, 0.0);
     for (int c = 0; c < model->cable_count; c++) {
         cs_cable_state *cs = &s->cables[c];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
@@ -116,7 +115,6 @@ static void post_residual(const cs_model *model, cs_state *s, int p, const doubl
         double l = cm->z + model->posts[p].pivot;
         q[0] += l * (j[0] * f[0] + j[2] * f[1] + j[4] * f[2]);
         q[1] += l * (j[1] * f[0] + j[3] * f[1] + j[5] * f[2]);
-        if (force) v3_add(force, force, f);
     }
     double res[2];
     cs_post_resistance(&model->posts[p], &s->posts[p], tilt, res);
@@ -219,7 +217,7 @@ static double fall(const cs_model *model, cs_state *s, int p, const double *m_en
          k++) {
         double d[2] = {r[0] / rn, r[1] / rn};
         t[0] = al[0] + CS_FALL_STEP * d[0], t[1] = al[1] + CS_FALL_STEP * d[1];
-        post_residual(model, s, p, t, m_entry, rt, NULL);
+        post_residual(model, s, p, t, m_entry, rt);
         if (rt[0] * d[0] + rt[1] * d[1] > 0.0) { /* still pushed on */
             al[0] = t[0], al[1] = t[1], r[0] = rt[0], r[1] = rt[1], rn = hypot(r[0], r[1]);
             continue;
@@ -228,7 +226,7 @@ static double fall(const cs_model *model, cs_state *s, int p, const double *m_en
         for (int b = 0; b < 40; b++) { /* the moment along d changes sign between lo and hi */
             double f = 0.5 * (lo + hi);
             t[0] = a0[0] + f * d[0], t[1] = a0[1] + f * d[1];
-            post_residual(model, s, p, t, m_entry, rt, NULL);
+            post_residual(model, s, p, t, m_entry, rt);
             if (rt[0] * d[0] + rt[1] * d[1] > 0.0)
                 lo = f;
             else
@@ -237,7 +235,7 @@ static double fall(const cs_model *model, cs_state *s, int p, const double *m_en
         al[0] = a0[0] + hi * d[0], al[1] = a0[1] + hi * d[1];
         break;
     }
-    post_residual(model, s, p, al, m_entry, r, NULL);
+    post_residual(model, s, p, al, m_entry, r);
     return hypot(r[0], r[1]) / pm->moment_cap;
 }
 
@@ -251,7 +249,7 @@ double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol, int 
     double scale = pm->moment_cap, r[2], m_entry[CS_MAX_CABLES_PER_POST];
     double *al = ps->tilt;
     entry_material(model, s, p, m_entry);
-    post_residual(model, s, p, al, m_entry, r, NULL);
+    post_residual(model, s, p, al, m_entry, r);
     double entry = hypot(r[0], r[1]) / scale;
     double rn = entry;
     for (int it = 0; it < 30 && rn > 1e-3 * tol; it++) {
@@ -265,13 +263,13 @@ double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol, int 
         if (!swings(pm, s->h) && pm->k_rot * tn > pm->moment_cap && (r[0] * tr[0] + r[1] * tr[1]) < 0.0) {
             double lo = 0.999 * pm->moment_cap / (pm->k_rot * tn), hi = 1.0, rb[2];
             double b[2] = {ps->plastic[0] + lo * tr[0], ps->plastic[1] + lo * tr[1]};
-            post_residual(model, s, p, b, m_entry, rb, NULL);
+            post_residual(model, s, p, b, m_entry, rb);
             double f = lo;
             if (rb[0] * tr[0] + rb[1] * tr[1] > 0.0) {
                 for (int k = 0; k < 40; k++) {
                     f = 0.5 * (lo + hi);
                     b[0] = ps->plastic[0] + f * tr[0], b[1] = ps->plastic[1] + f * tr[1];
-                    post_residual(model, s, p, b, m_entry, rb, NULL);
+                    post_residual(model, s, p, b, m_entry, rb);
                     if (rb[0] * tr[0] + rb[1] * tr[1] > 0.0)
                         lo = f;
                     else
@@ -279,7 +277,7 @@ double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol, int 
                 }
             }
             al[0] = ps->plastic[0] + f * tr[0], al[1] = ps->plastic[1] + f * tr[1];
-            post_residual(model, s, p, al, m_entry, r, NULL);
+            post_residual(model, s, p, al, m_entry, r);
             rn = hypot(r[0], r[1]) / scale;
             continue;
         }
@@ -287,7 +285,7 @@ double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol, int 
         for (int k = 0; k < 2; k++) {
             double a2[2] = {al[0], al[1]};
             a2[k] += h;
-            post_residual(model, s, p, a2, m_entry, rp, NULL);
+            post_residual(model, s, p, a2, m_entry, rp);
             jac[k] = (rp[0] - r[0]) / h; /* column k: d r / d alpha_k */
             jac[2 + k] = (rp[1] - r[1]) / h;
         }
@@ -304,7 +302,7 @@ double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol, int 
         double step = 1.0, trial[2], rt[2], rtn = rn;
         for (int ls = 0; ls < 12; ls++, step *= 0.5) {
             trial[0] = al[0] + step * d[0], trial[1] = al[1] + step * d[1];
-            post_residual(model, s, p, trial, m_entry, rt, NULL);
+            post_residual(model, s, p, trial, m_entry, rt);
             rtn = hypot(rt[0], rt[1]) / scale;
             if (rtn < rn) break;
         }
@@ -314,7 +312,7 @@ double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol, int 
     if (may_fall && rn > CS_FALL_STALL)
         fall(model, s, p, m_entry, al, r);
     else
-        post_residual(model, s, p, al, m_entry, r, NULL); /* leave the nodes at the accepted tilt */
+        post_residual(model, s, p, al, m_entry, r); /* leave the nodes at the accepted tilt */
     return entry;
 }
 
