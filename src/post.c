@@ -92,41 +92,11 @@ static void commit_swing(const cs_post_model *pm, cs_post_state *ps, cs_state *s
     ps->tilt_commit[0] = ps->tilt[0], ps->tilt_commit[1] = ps->tilt[1];
 }
 
-/* Place the post's cable nodes for a tilt, let the rope slide through the post's own holes (from the
- * material it had on entry, so the residual is a function of the tilt alone), and return the residual
- * r = Q_cables - Q_resist (less the swing's inertial moment). Sliding inside this block matters: held
- * rope would make the post look as stiff as the cable. */
-static void post_residual(const cs_model *model, cs_state *s, int p, const double *tilt,
-                          const double *m_entry, double *r) {
+/* Residual of post p at a tilt, its cable nodes placed there and their tensions current:
+ * r = Q_cables - Q_resist, less the swing's inertial moment. */
+static void residual_at(const cs_model *model, const cs_state *s, int p, const double *tilt, double *r) {
     double j[6], q[2] = {0.0, 0.0};
     axis_jacobian(tilt, j);
-    for (int c = 0; c < model->cable_count; c++) {
-        cs_cable_state *cs = &s->cables[c];
-        int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
-        if (i < 0) continue;
-        const cs_cable_model *cm = &model->cables[c];
-        cs_post_attachment(model, p, tilt, cm->z, cs->pos + 3 * i);
-        cs->m[i] = m_entry[c];
-        cs_cable_slide_node(model, cm, cs, i, model->scenario.solver_tolerance);
-        cs->tension[i - 1] = cs_span_tension(cm, cs, i - 1);
-        cs->tension[i] = cs_span_tension(cm, cs, i);
-        double f[3];
-        cs_node_force(cs, i, f);
-        double l = cm->z + model->posts[p].pivot;
-        q[0] += l * (j[0] * f[0] + j[2] * f[1] + j[4] * f[2]);
-        q[1] += l * (j[1] * f[0] + j[3] * f[1] + j[5] * f[2]);
-    }
-    double res[2];
-    cs_post_resistance(&model->posts[p], &s->posts[p], tilt, res);
-    r[0] = q[0] - res[0], r[1] = q[1] - res[1];
-    subtract_inertia(&model->posts[p], &s->posts[p], tilt, s->h, r);
-}
-
-/* Residual at the state as it stands (nodes placed, tensions current): cables minus resistance. */
-void cs_post_residual_now(const cs_model *model, const cs_state *s, int p, double *r) {
-    const cs_post_state *ps = &s->posts[p];
-    double j[6], q[2] = {0.0, 0.0};
-    axis_jacobian(ps->tilt, j);
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
@@ -137,9 +107,33 @@ void cs_post_residual_now(const cs_model *model, const cs_state *s, int p, doubl
         q[1] += l * (j[1] * f[0] + j[3] * f[1] + j[5] * f[2]);
     }
     double res[2];
-    cs_post_resistance(&model->posts[p], ps, ps->tilt, res);
+    cs_post_resistance(&model->posts[p], &s->posts[p], tilt, res);
     r[0] = q[0] - res[0], r[1] = q[1] - res[1];
-    subtract_inertia(&model->posts[p], ps, ps->tilt, s->h, r);
+    subtract_inertia(&model->posts[p], &s->posts[p], tilt, s->h, r);
+}
+
+/* Place the post's cable nodes for a tilt, let the rope slide through the post's own holes (from the
+ * material it had on entry, so the residual is a function of the tilt alone), and return the residual
+ * there. Sliding inside this block matters: held rope would make the post look as stiff as the cable. */
+static void post_residual(const cs_model *model, cs_state *s, int p, const double *tilt,
+                          const double *m_entry, double *r) {
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
+        if (i < 0) continue;
+        const cs_cable_model *cm = &model->cables[c];
+        cs_post_attachment(model, p, tilt, cm->z, cs->pos + 3 * i);
+        cs->m[i] = m_entry[c];
+        cs_cable_slide_node(model, cm, cs, i, model->scenario.solver_tolerance);
+        cs->tension[i - 1] = cs_span_tension(cm, cs, i - 1);
+        cs->tension[i] = cs_span_tension(cm, cs, i);
+    }
+    residual_at(model, s, p, tilt, r);
+}
+
+/* Residual at the state as it stands (nodes placed, tensions current). */
+void cs_post_residual_now(const cs_model *model, const cs_state *s, int p, double *r) {
+    residual_at(model, s, p, s->posts[p].tilt, r);
 }
 
 /* The post's cable nodes where a tilt puts them. */

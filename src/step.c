@@ -120,9 +120,10 @@ static double book_gap(const cs_model *model, cs_state *s, double work, double e
     return gap;
 }
 
-/* Following the path. The barrier (but for its posts' swing) is massless, so its state is a function of the
- * vehicle's pose only while the equilibrium it is on goes on existing; the ledger tells when it stopped: over
- * a step, the barrier's energy (stored, dissipated, released) must change by the work the vehicle did on it.
+/* Following the path. The barrier is massless but for its posts' swing, so its state is a function of the
+ * vehicle's pose (and the posts' last rates) only while the equilibrium it is on goes on existing; the ledger
+ * tells when it stopped: over a step, the barrier's energy (stored, dissipated, released) must change by the
+ * work the vehicle did on it.
  * - It changed by less (by more than CS_PATH_GAP of the energy scale): the barrier jumped to a lower
  *   equilibrium within the step, a post snapping over or a rope running over its supports. Real posts
  *   and ropes spend the difference in motion the model does not have; it is booked as released, as
