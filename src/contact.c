@@ -71,7 +71,7 @@ void cs_contact_face_force(const cs_model *model, const cs_state *s, int c, int 
     cs_node_force(&s->cables[c], i, f);
     quat_unrotate(fb, s->quat, f);
     *fz = fb[2];
-    *fn = hypot(fb[0], fb[1]);
+    *fn = v2_norm(fb[0], fb[1]);
     (void)model;
 }
 

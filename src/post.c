@@ -36,14 +36,14 @@ static void sinc_terms(double t, double *s, double *g) {
 
 /* The point of the post at height z (when upright): pivot + (z + pivot depth) a(alpha). */
 void cs_post_attachment(const cs_model *model, int p, const double *tilt, double z, double *out) {
-    double t = hypot(tilt[0], tilt[1]), s, g, dp = model->posts[p].pivot, l = z + dp;
+    double t = v2_norm(tilt[0], tilt[1]), s, g, dp = model->posts[p].pivot, l = z + dp;
     sinc_terms(t, &s, &g);
     v3_set(out, model->posts[p].x + l * tilt[0] * s, l * tilt[1] * s, -dp + l * cos(t));
 }
 
 /* Jacobian of the post axis a(alpha), 3 x 2, row-major. */
 static void axis_jacobian(const double *al, double *j) {
-    double t = hypot(al[0], al[1]), s, g;
+    double t = v2_norm(al[0], al[1]), s, g;
     sinc_terms(t, &s, &g);
     j[0] = s + al[0] * al[0] * g, j[1] = al[0] * al[1] * g;
     j[2] = al[0] * al[1] * g, j[3] = s + al[1] * al[1] * g;
@@ -52,7 +52,7 @@ static void axis_jacobian(const double *al, double *j) {
 
 void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double *q) {
     double tr[2] = {pm->k_rot * (tilt[0] - ps->plastic[0]), pm->k_rot * (tilt[1] - ps->plastic[1])};
-    double n = hypot(tr[0], tr[1]);
+    double n = v2_norm(tr[0], tr[1]);
     double f = n > pm->moment_cap ? pm->moment_cap / n : 1.0;
     q[0] = tr[0] * f, q[1] = tr[1] * f;
 }
@@ -166,7 +166,7 @@ double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int p) {
     for (int it = 0; it < 20; it++) {
         place_nodes(model, s, p, ps->tilt);
         cs_post_residual_now(model, s, p, r);
-        double rn = hypot(r[0], r[1]) / pm->moment_cap;
+        double rn = v2_norm(r[0], r[1]) / pm->moment_cap;
         if (entry < 0.0) entry = rn;
         if (rn <= 1e-14) break;
         double jac[4], h = 1e-7, a0[2] = {ps->tilt[0], ps->tilt[1]}, rp[2];
@@ -181,7 +181,7 @@ double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int p) {
         if (!(fabs(det) > 0.0)) break;
         ps->tilt[0] = a0[0] - (jac[3] * r[0] - jac[1] * r[1]) / det;
         ps->tilt[1] = a0[1] - (-jac[2] * r[0] + jac[0] * r[1]) / det;
-        double e[2] = {ps->tilt[0] - ps->plastic[0], ps->tilt[1] - ps->plastic[1]}, en = hypot(e[0], e[1]);
+        double e[2] = {ps->tilt[0] - ps->plastic[0], ps->tilt[1] - ps->plastic[1]}, en = v2_norm(e[0], e[1]);
         double limit = 0.999 * pm->moment_cap / pm->k_rot;
         if (en > limit) {
             ps->tilt[0] = ps->plastic[0] + e[0] * limit / en,
@@ -206,14 +206,14 @@ double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int p) {
 
 static double fall(const cs_model *model, cs_state *s, int p, const double *m_entry, double *al, double *r) {
     const cs_post_model *pm = &model->posts[p];
-    double rn = hypot(r[0], r[1]), t[2], rt[2];
-    for (int k = 0; k * CS_FALL_STEP < pm->rot_limit + CS_FALL_STEP && hypot(al[0], al[1]) < pm->rot_limit;
+    double rn = v2_norm(r[0], r[1]), t[2], rt[2];
+    for (int k = 0; k * CS_FALL_STEP < pm->rot_limit + CS_FALL_STEP && v2_norm(al[0], al[1]) < pm->rot_limit;
          k++) {
         double d[2] = {r[0] / rn, r[1] / rn};
         t[0] = al[0] + CS_FALL_STEP * d[0], t[1] = al[1] + CS_FALL_STEP * d[1];
         post_residual(model, s, p, t, m_entry, rt);
         if (rt[0] * d[0] + rt[1] * d[1] > 0.0) { /* still pushed on */
-            al[0] = t[0], al[1] = t[1], r[0] = rt[0], r[1] = rt[1], rn = hypot(r[0], r[1]);
+            al[0] = t[0], al[1] = t[1], r[0] = rt[0], r[1] = rt[1], rn = v2_norm(r[0], r[1]);
             continue;
         }
         double lo = 0.0, hi = CS_FALL_STEP, a0[2] = {al[0], al[1]};
@@ -230,7 +230,7 @@ static double fall(const cs_model *model, cs_state *s, int p, const double *m_en
         break;
     }
     post_residual(model, s, p, al, m_entry, r);
-    return hypot(r[0], r[1]) / pm->moment_cap;
+    return v2_norm(r[0], r[1]) / pm->moment_cap;
 }
 
 /* Newton on the post's tilt with a finite-difference Jacobian and backtracking; where it stalls far
@@ -244,7 +244,7 @@ double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol, int 
     double *al = ps->tilt;
     entry_material(model, s, p, m_entry);
     post_residual(model, s, p, al, m_entry, r);
-    double entry = hypot(r[0], r[1]) / scale;
+    double entry = v2_norm(r[0], r[1]) / scale;
     double rn = entry;
     for (int it = 0; it < 30 && rn > 1e-3 * tol; it++) {
         /* On the plastic plateau the radial slope of a massless post's resistance is zero, so Newton
@@ -253,7 +253,7 @@ double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol, int 
          * positive at the boundary the root lies between (bisect); if not, the post unloads into the
          * elastic range (restart there). A swinging post's residual has the inertial slope J / h^2
          * there, which Newton sees. */
-        double tr[2] = {al[0] - ps->plastic[0], al[1] - ps->plastic[1]}, tn = hypot(tr[0], tr[1]);
+        double tr[2] = {al[0] - ps->plastic[0], al[1] - ps->plastic[1]}, tn = v2_norm(tr[0], tr[1]);
         if (!swings(pm, s->h) && pm->k_rot * tn > pm->moment_cap && (r[0] * tr[0] + r[1] * tr[1]) < 0.0) {
             double lo = 0.999 * pm->moment_cap / (pm->k_rot * tn), hi = 1.0, rb[2];
             double b[2] = {ps->plastic[0] + lo * tr[0], ps->plastic[1] + lo * tr[1]};
@@ -272,7 +272,7 @@ double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol, int 
             }
             al[0] = ps->plastic[0] + f * tr[0], al[1] = ps->plastic[1] + f * tr[1];
             post_residual(model, s, p, al, m_entry, r);
-            rn = hypot(r[0], r[1]) / scale;
+            rn = v2_norm(r[0], r[1]) / scale;
             continue;
         }
         double h = 1e-7, jac[4], rp[2];
@@ -291,13 +291,13 @@ double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol, int 
         } else {
             d[0] = r[0] / pm->k_rot, d[1] = r[1] / pm->k_rot; /* J ~ -k in the elastic range */
         }
-        double dn = hypot(d[0], d[1]);
+        double dn = v2_norm(d[0], d[1]);
         if (dn > 0.05) d[0] *= 0.05 / dn, d[1] *= 0.05 / dn;
         double step = 1.0, trial[2], rt[2], rtn = rn;
         for (int ls = 0; ls < 12; ls++, step *= 0.5) {
             trial[0] = al[0] + step * d[0], trial[1] = al[1] + step * d[1];
             post_residual(model, s, p, trial, m_entry, rt);
-            rtn = hypot(rt[0], rt[1]) / scale;
+            rtn = v2_norm(rt[0], rt[1]) / scale;
             if (rtn < rn) break;
         }
         if (!(rtn < rn)) break;
@@ -317,11 +317,11 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     const cs_post_model *pm = &model->posts[p];
     commit_swing(pm, ps, s);
     double tr[2] = {pm->k_rot * (ps->tilt[0] - ps->plastic[0]), pm->k_rot * (ps->tilt[1] - ps->plastic[1])};
-    double n = hypot(tr[0], tr[1]), q = pm->moment_cap;
+    double n = v2_norm(tr[0], tr[1]), q = pm->moment_cap;
     if (n > q) { /* radial return to the capacity */
         double u[2] = {tr[0] / n, tr[1] / n};
         double np[2] = {ps->tilt[0] - q / pm->k_rot * u[0], ps->tilt[1] - q / pm->k_rot * u[1]};
-        double w = q * hypot(np[0] - ps->plastic[0], np[1] - ps->plastic[1]);
+        double w = q * v2_norm(np[0] - ps->plastic[0], np[1] - ps->plastic[1]);
         if (pm->soil_yields)
             s->e_soil += w;
         else
@@ -339,7 +339,7 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
         /* the horizontal push on a post leaning by theta has the component push sin(theta) along
          * the post, out of the ground: what pulls a short post out (its skin friction grows as D^2,
          * its lateral capacity more slowly) */
-        ps->shear = ps->push, ps->axial = ps->push * sin(hypot(ps->tilt[0], ps->tilt[1]));
+        ps->shear = ps->push, ps->axial = ps->push * sin(v2_norm(ps->tilt[0], ps->tilt[1]));
         return;
     }
     double f[3] = {0.0, 0.0, 0.0}, axis[3];
@@ -353,7 +353,7 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     }
     /* base shear from the post's own moment over the load height (what equilibrium allows), so a
      * step the solver left short of equilibrium cannot report a shear it never had */
-    ps->shear = hypot(ps->moment[0], ps->moment[1]) / (pm->load_height + pm->pivot);
+    ps->shear = v2_norm(ps->moment[0], ps->moment[1]) / (pm->load_height + pm->pivot);
     double a0[3];
     cs_post_attachment(model, p, ps->tilt, 1.0, axis); /* the unit axis: two points 1 m apart */
     cs_post_attachment(model, p, ps->tilt, 0.0, a0);
@@ -366,7 +366,7 @@ int cs_post_check_failure(const cs_model *model, cs_state *s, int p) {
     cs_post_state *ps = &s->posts[p];
     if (!cs_post_standing(ps)) return 0;
     const cs_post_model *pm = &model->posts[p];
-    double tilt = hypot(ps->tilt[0], ps->tilt[1]);
+    double tilt = v2_norm(ps->tilt[0], ps->tilt[1]);
     cs_post_status st;
     cs_event_type ev;
     double value;

@@ -256,6 +256,7 @@ static void scatter(const cs_model *model, cs_state *s, const cs_solver *w, int 
 /* clamp(y, -b, b) with its corners rounded over a width w (softplus), so Newton sees a smooth switch
  * between sticking and sliding; it departs from the exact clamp by at most w ln 2. */
 static double softplus(double x) {
+    if (x < -40.0) return 0.0; /* below exp(-40) = 4e-18 of the width: round-off beside y */
     return x > 30.0 ? x : log1p(exp(x));
 }
 static double smooth_clamp(double y, double b, double w) {

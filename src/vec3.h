@@ -32,6 +32,11 @@ static inline double v3_dot(const double *a, const double *b) {
 static inline double v3_norm(const double *a) {
     return sqrt(v3_dot(a, a));
 }
+/* Length of a plane vector; sqrt of the sum (the engine's tilts and moments are far from overflow, and
+ * hypot's care cost APS3 4% of its time). */
+static inline double v2_norm(double x, double y) {
+    return sqrt(x * x + y * y);
+}
 static inline void v3_cross(double *r, const double *a, const double *b) {
     double x = a[1] * b[2] - a[2] * b[1], y = a[2] * b[0] - a[0] * b[2], z = a[0] * b[1] - a[1] * b[0];
     r[0] = x, r[1] = y, r[2] = z;
