@@ -143,6 +143,61 @@ double cs_span_tension(const cs_cable_model *cm, const cs_cable_state *cs, int i
                            span_sag(&cm->rope, cs, i, l));
 }
 
+/* Slope of the backbone at strain e (0 on the plastic plateau). */
+static double backbone_slope(const cs_rope *r, double e) {
+    return e <= r->e1 ? r->ea : (e <= r->e2 ? r->k2 : 0.0);
+}
+
+/* Partial derivatives of span_tension_sag's T (at its root t) with respect to the chord `length`, the
+ * `material`, the plastic strain ep and the sag term q. Off the backbone, implicit differentiation of
+ * g = T^3 - a T^2 - c = 0 gives dT = (T^2 da + dc) / (3 T^2 - 2 a T); capped by it, T = B(arc) with
+ * arc = e + c / (EA T^2), so dT (1 + 2 B' c / (EA T^3)) = B' (de + dc / (EA T^2)). */
+static void span_tension_partials(const cs_rope *r, double length, double material, double ep, double q,
+                                  double t, int yields, double *d) {
+    d[0] = d[1] = d[2] = d[3] = 0.0; /* d/dlength, d/dmaterial, d/dep, d/dq */
+    if (material <= 1e-12 || t <= 0.0) return;
+    double s = material, e = length / s - 1.0, de_dl = 1.0 / s, de_ds = -length / (s * s);
+    double c = r->ea * q / (24.0 * s), dc_ds = -c / s, dc_dq = r->ea / (24.0 * s);
+    if (yields) {
+        double arc = e + (q > 0.0 ? c / (r->ea * t * t) : 0.0), slope = backbone_slope(r, arc);
+        double k = slope / (1.0 + 2.0 * slope * c / (r->ea * t * t * t)), ct = 1.0 / (r->ea * t * t);
+        d[0] = k * de_dl, d[1] = k * (de_ds + ct * dc_ds), d[3] = k * ct * dc_dq;
+        return;
+    }
+    if (q <= 0.0) {
+        d[0] = r->ea * de_dl, d[1] = r->ea * de_ds, d[2] = -r->ea;
+        return;
+    }
+    double a = r->ea * (e - ep), den = t * (3.0 * t - 2.0 * a), t2 = t * t;
+    d[0] = t2 * r->ea * de_dl / den;
+    d[1] = (t2 * r->ea * de_ds + dc_ds) / den;
+    d[2] = -t2 * r->ea / den;
+    d[3] = dc_dq / den;
+}
+
+/* Tension of span i and its gradient (cs_span_grad). The plastic strain that slides in with the rope
+ * (span_plastic) enters by a difference quotient over a nanometre. */
+void cs_span_tension_grad(const cs_cable_model *cm, const cs_cable_state *cs, int i, cs_span_grad *g) {
+    const cs_rope *r = &cm->rope;
+    const double *a = cs->pos + 3 * i, *b = cs->pos + 3 * (i + 1);
+    double dv[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, l = v3_norm(dv), lo = cs->m[i], hi = cs->m[i + 1];
+    double q = span_sag(r, cs, i, l), ep = span_plastic(cs, i, lo, hi), arc, d[4];
+    int yields;
+    g->t = span_tension_sag(r, l, hi - lo, ep, q, &arc, &yields);
+    g->l = l;
+    span_tension_partials(r, l, hi - lo, ep, q, g->t, yields, d);
+    /* q = w^2 (dx^2 + dy^2) l */
+    double w2 = r->w * r->w, h2 = dv[0] * dv[0] + dv[1] * dv[1], inv = l > 1e-12 ? 1.0 / l : 0.0;
+    for (int k = 0; k < 3; k++) {
+        g->u[k] = dv[k] * inv;
+        g->dt_dd[k] = d[0] * g->u[k] + d[3] * w2 * ((k < 2 ? 2.0 * dv[k] * l : 0.0) + h2 * g->u[k]);
+    }
+    double step = 1e-9, dep_lo = (span_plastic(cs, i, lo + step, hi) - ep) / step,
+           dep_hi = (span_plastic(cs, i, lo, hi + step) - ep) / step;
+    g->dt_dm[0] = -d[1] + d[2] * dep_lo;
+    g->dt_dm[1] = d[1] + d[2] * dep_hi;
+}
+
 /* Rope (no plastic set) that span i holds at tension t: the inverse of the span law,
  * s (1 + t/EA) = l + q / (24 t^2); weightless or without tension, l / (1 + t/EA). */
 double cs_span_material_at(const cs_cable_model *cm, const cs_cable_state *cs, int i, double t) {

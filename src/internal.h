@@ -130,11 +130,12 @@ typedef struct cs_solver {
     long *last_step;       /* [keys] the step that value belongs to */
     struct slot *slots_lu; /* the unknowns of the factored Jacobian */
     int lu_valid, lu_n, lu_kl, lu_ku;
-    double *band; /* banded Jacobian / LU factors */
+    double *band;               /* banded Jacobian / LU factors */
+    struct cs_span_grad *spans; /* [cable_count * max_nodes] each span's tension gradient (Jacobian) */
+    double *axes;               /* [post_count * 18] each post axis' Jacobian and its tilt derivatives */
     size_t band_capacity;
     int *pivot;
     int kl, ku, band_width;
-    int *rows, *row_column; /* rows a group of the Jacobian moves, and the column that moves each */
 } cs_solver;
 
 struct cs_state {
@@ -193,6 +194,12 @@ double cs_rope_elastic_energy(const cs_rope *rope, double tension, double materi
 /* ---- cable paths (cable.c) ---- */
 double cs_span_length(const cs_cable_state *cs, int span);
 double cs_span_tension(const cs_cable_model *cm, const cs_cable_state *cs, int span);
+/* A span's tension with its gradient, for the solver's Jacobian: along the chord d = p_{i+1} - p_i and
+ * with the material coordinates of its ends (m_i, m_{i+1}); its length and unit chord. */
+typedef struct cs_span_grad {
+    double t, l, u[3], dt_dd[3], dt_dm[2];
+} cs_span_grad;
+void cs_span_tension_grad(const cs_cable_model *cm, const cs_cable_state *cs, int span, cs_span_grad *g);
 double cs_span_material_at(const cs_cable_model *cm, const cs_cable_state *cs, int span, double t);
 void cs_cable_update_tensions(const cs_cable_model *cm, cs_cable_state *cs);
 double cs_cable_slide_node(const cs_model *model, const cs_cable_model *cm, cs_cable_state *cs, int i,
@@ -226,6 +233,10 @@ int cs_post_standing(const cs_post_state *ps);
 int cs_post_check_failure(const cs_model *model, cs_state *s, int post);
 void cs_post_residual_now(const cs_model *model, const cs_state *s, int post, double *r);
 void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double *q);
+/* For the solver's Jacobian: the post axis' Jacobian and its tilt derivatives, and the slope of
+ * -(resistance + inertial moment) at the post's tilt. */
+void cs_post_axis_jacobian(const double *tilt, double *j, double *dj);
+void cs_post_resistance_slope(const cs_model *model, const cs_state *s, int p, double *k);
 double cs_post_place_captured(const cs_model *model, cs_state *s, double crush, double *force,
                               double *moment);
 int cs_post_capture(const cs_model *model, cs_state *s);
@@ -255,6 +266,11 @@ int cs_contact_check_slip(const cs_model *model, cs_state *s);
 /* ---- barrier solve (barrier.c) ---- */
 double cs_barrier_solve(const cs_model *model, cs_state *s);
 double cs_barrier_newton(const cs_model *model, cs_state *s);
+/* For tests (tests/test_solve.c): the solve's unknowns, residual and Jacobian (dense, row-major) at the
+ * state as it stands, and its residual at other values of the same unknowns. */
+int cs_solver_linearize(const cs_model *model, cs_state *s, int cap, int *kind, double *x, double *r,
+                        double *jac);
+void cs_solver_residual(const cs_model *model, cs_state *s, int n, const double *x, double *r);
 double cs_face_normal_force_now(const cs_model *model, cs_state *s);
 int cs_face_loaded(const cs_model *model, const cs_state *s);
 int cs_solver_init(const cs_model *model, cs_solver *w);

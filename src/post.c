@@ -57,6 +57,19 @@ void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const 
     q[0] = tr[0] * f, q[1] = tr[1] * f;
 }
 
+/* The axis Jacobian j (3 x 2, as axis_jacobian) at a tilt and its derivatives along the two tilts (dj,
+ * 2 x 6), by difference quotients over 1e-7 rad: the solver's linearisation of a post's moment. */
+void cs_post_axis_jacobian(const double *tilt, double *j, double *dj) {
+    axis_jacobian(tilt, j);
+    for (int k = 0; k < 2; k++) {
+        double al[2] = {tilt[0], tilt[1]}, jt[6];
+        al[k] += 1e-7;
+        axis_jacobian(al, jt);
+        for (int e = 0; e < 6; e++)
+            dj[6 * k + e] = (jt[e] - j[e]) / 1e-7;
+    }
+}
+
 /* The swing: a post of inertia J about its pivot (model.c) goes, over the time h since the last
  * commit, by backward Euler,
  *   J (alpha - alpha_c - h w_c) / h^2 = Q_cables - Q_resist,   w = (alpha - alpha_c) / h,
@@ -90,6 +103,22 @@ static void commit_swing(const cs_post_model *pm, cs_post_state *ps, cs_state *s
         ps->rate[0] = w0, ps->rate[1] = w1;
     }
     ps->tilt_commit[0] = ps->tilt[0], ps->tilt_commit[1] = ps->tilt[1];
+}
+
+/* Derivative of -(Q_resist + the inertial moment) of post p at its tilt, 2 x 2 row-major: the elastic
+ * stiffness, or on the cap the radial projection's (its moment turns with the tilt, its size held). */
+void cs_post_resistance_slope(const cs_model *model, const cs_state *s, int p, double *k) {
+    const cs_post_model *pm = &model->posts[p];
+    const cs_post_state *ps = &s->posts[p];
+    double tr[2] = {pm->k_rot * (ps->tilt[0] - ps->plastic[0]), pm->k_rot * (ps->tilt[1] - ps->plastic[1])};
+    double n = v2_norm(tr[0], tr[1]);
+    if (n > pm->moment_cap) {
+        double f = pm->moment_cap * pm->k_rot / n, u[2] = {tr[0] / n, tr[1] / n};
+        k[0] = -f * (1.0 - u[0] * u[0]), k[1] = f * u[0] * u[1], k[2] = k[1], k[3] = -f * (1.0 - u[1] * u[1]);
+    } else {
+        k[0] = k[3] = -pm->k_rot, k[1] = k[2] = 0.0;
+    }
+    if (swings(pm, s->h)) k[0] -= pm->inertia / (s->h * s->h), k[3] -= pm->inertia / (s->h * s->h);
 }
 
 /* Residual of post p at a tilt, its cable nodes placed there and their tensions current:

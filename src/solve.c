@@ -17,9 +17,9 @@
  *   crush:  N(crush) - C(crush)                                             (barrier.c)
  * The clamp's corners are rounded over w = CS_FRICTION_FLOOR Fu (softplus) so that Newton sees a smooth
  * switch between sticking and sliding (docs/assumptions.md).
- * Unknowns are ordered along the barrier, so the Jacobian is banded: finite differences perturb
- * columns 2w + 1 apart together, and a banded LU with partial pivoting solves each Newton step. Cost
- * is linear in the number of posts; the solution does not depend on any sweep order, so a symmetric
+ * Unknowns are ordered along the barrier, so the Jacobian is banded: it is formed from the spans'
+ * tension gradients (the crush's column by a difference quotient), and a banded LU with partial
+ * pivoting solves each Newton step. Cost is linear in the number of posts; the solution does not depend on any sweep order, so a symmetric
  * impact stays symmetric. */
 #include "internal.h"
 #include "vec3.h"
@@ -71,14 +71,14 @@ int cs_solver_init(const cs_model *model, cs_solver *w) {
     w->x = calloc(6 * n, sizeof *w->x);
     w->band_capacity = n * per_row;
     w->band = calloc(w->band_capacity, sizeof *w->band);
+    w->spans = calloc(nc * nn + 1, sizeof *w->spans);
+    w->axes = calloc(18 * np + 1, sizeof *w->axes);
     w->pivot = calloc(n, sizeof *w->pivot);
-    w->rows = calloc(n, sizeof *w->rows);
-    w->row_column = calloc(n, sizeof *w->row_column);
     w->key_count = 2 * np + nc * (np + 2) + 2 * nc + 1; /* see slot_key */
     w->last = calloc(w->key_count, sizeof *w->last);
     w->last_step = calloc(w->key_count, sizeof *w->last_step);
     if (!w->slots || !w->slots_lu || !w->slots_kept || !w->last || !w->last_step || !w->tilt_index ||
-        !w->node_index || !w->height_index || !w->x || !w->band || !w->pivot || !w->rows || !w->row_column)
+        !w->node_index || !w->height_index || !w->x || !w->band || !w->pivot || !w->spans || !w->axes)
         return -1;
     w->r = w->x + n, w->dx = w->x + 2 * n, w->xt = w->x + 3 * n, w->rt = w->x + 4 * n, w->kept = w->x + 5 * n;
     return 0;
@@ -94,7 +94,7 @@ void cs_solver_reset(cs_solver *w) {
 void cs_solver_free(cs_solver *w) {
     free(w->slots), free(w->slots_lu), free(w->slots_kept), free(w->tilt_index), free(w->node_index),
         free(w->height_index), free(w->x), free(w->band), free(w->pivot), free(w->last), free(w->last_step),
-        free(w->rows), free(w->row_column);
+        free(w->spans), free(w->axes);
     memset(w, 0, sizeof *w);
 }
 
@@ -321,20 +321,6 @@ static double norm_inf(const double *r, int n) {
     return m;
 }
 
-/* Finite-difference step of unknown u: 1e-8 for a tilt (rad) or the crush (m); for a node or a contact
- * height, a thousandth of the length over which its stick/slip switch is rounded (the friction floor
- * over the rope's stiffness there, w / c), so that the quotient takes the switch's slope instead of
- * straddling it. Until session 10 it was 1e-8 of m: 7 um at 700 m along a 300-post barrier, wider than
- * the switch, and Newton stalled there with a Jacobian averaged across it (docs/performance.md). */
-static double fd_step(const cs_model *model, const cs_state *s, const slot *u) {
-    if (u->kind != U_NODE && u->kind != U_HEIGHT) return 1e-8;
-    const cs_cable_state *cs = &s->cables[u->a];
-    const cs_rope *r = &model->cables[u->a].rope;
-    int i = u->kind == U_NODE ? u->b : corner_node(cs, u->b);
-    double l = cs_span_length(cs, i - 1) + cs_span_length(cs, i) + 1e-9;
-    return 1e-3 * CS_FRICTION_FLOOR * r->fu * l / r->ea;
-}
-
 /* ---- banded LU with partial pivoting: row i keeps columns i-kl .. i+ku+kl ---- */
 #define BAND(w, i, j) ((w)->band[(size_t)(i) * (size_t)(w)->band_width + (size_t)((j) - (i) + (w)->kl)])
 
@@ -387,118 +373,259 @@ static void band_solve(const cs_solver *w, int n, double *b) {
     }
 }
 
-/* ---- finite-difference Jacobian ----
- * Columns kl + ku + 1 apart share no row, so they are perturbed together. A column moves few nodes:
- * a post's tilt its cables' nodes at the post, a node's material the spans either side of it, a
- * contact height its corner; only the rows that see those nodes change (the nodes next to them, the
- * posts and contacts there, the crush through a face corner). A group is found from those rows alone,
- * with the state as scatter would leave it: the same numbers as a full residual, from a fraction of
- * its rows and spans. The crush moves every corner and captured post: its group takes the full
- * residual. */
+/* ---- the Jacobian ----
+ * Every row is a function of a few cable nodes: their positions (moved by a post's tilt, a contact's
+ * height or the crush) and their material coordinates. Each row's gradient with respect to those is
+ * formed from the spans' tension gradients (cable.c) and chained to the columns that move them. The crush
+ * moves every corner and captured post at once: its column alone is a difference quotient of the full
+ * residual (a step of 1e-8 m). Until session 14 every column was a difference quotient (35% of APS3's
+ * time). */
 
-/* Set unknown j to v and bring the node positions and span tensions it moves in line; lists the
- * nodes it moves in nodes (cable, index) and returns how many. */
-static int move_unknown(const cs_model *model, cs_state *s, const cs_solver *w, int j, double v, int *nodes) {
-    const slot *u = &w->slots[j];
-    int count = 0;
-    if (u->kind == U_TILT) {
-        s->posts[u->a].tilt[u->b] = v;
-        for (int c = 0; c < model->cable_count; c++) {
-            cs_cable_state *cs = &s->cables[c];
-            if (cs->status != CS_CABLE_INTACT || cs->where[u->a] <= 0) continue;
-            int i = cs->where[u->a];
-            cs_post_attachment(model, u->a, s->posts[u->a].tilt, model->cables[c].z, cs->pos + 3 * i);
-            nodes[2 * count] = c, nodes[2 * count + 1] = i, count++;
-        }
-    } else if (u->kind == U_NODE) {
-        s->cables[u->a].m[u->b] = v;
-        nodes[0] = u->a, nodes[1] = u->b, count = 1;
-    } else if (u->kind == U_HEIGHT) {
-        s->cables[u->a].corner_z[u->b] = v;
-        cs_contact_place_corners(model, s, s->crush);
-        nodes[0] = u->a, nodes[1] = corner_node(&s->cables[u->a], u->b), count = 1;
-    }
-    for (int k = 0; k < count; k++) {
-        const cs_cable_model *cm = &model->cables[nodes[2 * k]];
-        cs_cable_state *cs = &s->cables[nodes[2 * k]];
-        int i = nodes[2 * k + 1];
-        cs->tension[i - 1] = cs_span_tension(cm, cs, i - 1);
-        cs->tension[i] = cs_span_tension(cm, cs, i);
-    }
-    return count;
-}
+/* A column of the Jacobian and a 3-vector: how a node's position moves along it. */
+typedef struct dep {
+    int col;
+    double v[3];
+} dep;
 
-/* Add to w->rows (count so far in *count) the rows that see node i of cable c, owned by column j; a
- * row already listed for this group (a column j' with j' = j mod stride) is not listed again. */
-static void rows_near(const cs_model *model, const cs_state *s, cs_solver *w, int c, int i, int j, int stride,
-                      int *count) {
+/* The columns that move node j of cable c other than the crush (a post's two tilts: the attachment's
+ * arm times the axis' Jacobian; a contact's height: the body's z axis). */
+static int position_columns(const cs_model *model, const cs_state *s, const cs_solver *w, int c, int j,
+                            dep *out) {
     const cs_cable_state *cs = &s->cables[c];
-    for (int q = i - 1; q <= i + 1; q++) {
-        if (q < 1 || q + 1 >= cs->node_count) continue;
-        int id = cs->node[q], row[4] = {w->node_index[c * model->max_nodes + q], -1, -1, -1};
-        if (id >= 0) row[1] = w->tilt_index[id];
-        if (is_corner(id))
-            row[2] = w->height_index[2 * c + (id == CS_NODE_LEFT ? 0 : 1)], row[3] = w->crush_index;
-        for (int k = 0; k < 4; k++) {
-            int owner = row[k] >= 0 ? w->row_column[row[k]] : -1;
-            if (row[k] >= 0 && (owner < 0 || owner % stride != j % stride))
-                w->row_column[row[k]] = j, w->rows[(*count)++] = row[k];
+    int id = cs->node[j];
+    if (id >= 0 && w->tilt_index[id] >= 0) {
+        const double *ja = w->axes + 18 * id;
+        double l = model->cables[c].z + model->posts[id].pivot;
+        for (int k = 0; k < 2; k++)
+            out[k] = (dep){w->tilt_index[id] + k, {l * ja[k], l * ja[2 + k], l * ja[4 + k]}};
+        return 2;
+    }
+    if (is_corner(id)) {
+        int h = w->height_index[2 * c + (id == CS_NODE_LEFT ? 0 : 1)];
+        if (h < 0) return 0;
+        double ez[3] = {0.0, 0.0, 1.0};
+        out[0].col = h;
+        quat_rotate(out[0].v, s->quat, ez);
+        return 1;
+    }
+    return 0;
+}
+
+static void add_entry(cs_solver *w, int n, int i, int j, double value) {
+    if (i >= 0 && i < n && j >= 0 && i >= j - w->ku && i <= j + w->kl) BAND(w, i, j) += value;
+}
+
+/* Row `row`'s gradient with respect to nodes i-1, i, i+1 of cable c (positions gp, materials gm), chained
+ * to the columns. */
+static void add_node_gradient(const cs_model *model, const cs_state *s, cs_solver *w, int n, int row, int c,
+                              int i, double gp[3][3], const double *gm) {
+    for (int k = 0; k < 3; k++) {
+        int j = i - 1 + k;
+        dep d[2];
+        int count = position_columns(model, s, w, c, j, d);
+        for (int q = 0; q < count; q++)
+            add_entry(w, n, row, d[q].col, v3_dot(gp[k], d[q].v));
+        int m = w->node_index[c * model->max_nodes + j];
+        if (m >= 0) add_entry(w, n, row, m, gm[k]);
+    }
+}
+
+/* The two spans at node i of cable c, from the Jacobian's cache. */
+static const cs_span_grad *spans_at(const cs_model *model, const cs_solver *w, int c, int i) {
+    return w->spans + c * model->max_nodes + i - 1;
+}
+
+/* Gradient of rho . f_i, f_i = T_R u_R - T_L u_L the spans' pull on node i, for a fixed 3-vector rho:
+ * d(T u)/dd = u dT/dd^T + T (I - u u^T) / l, and d_L = p_i - p_{i-1}, d_R = p_{i+1} - p_i. Adds to gp
+ * and gm (nodes i-1, i, i+1). */
+static void force_gradient(const cs_span_grad *sp, const double *rho, double gp[3][3], double *gm) {
+    for (int k = 0; k < 2; k++) {
+        const cs_span_grad *a = &sp[k];
+        double sign = k == 0 ? -1.0 : 1.0, ur = v3_dot(a->u, rho), g[3];
+        for (int e = 0; e < 3; e++)
+            g[e] = sign * (a->dt_dd[e] * ur + (a->l > 1e-12 ? a->t * (rho[e] - a->u[e] * ur) / a->l : 0.0));
+        v3_addto(gp[k + 1], g, 1.0); /* the span's far end: node i-1 + k + 1 */
+        v3_addto(gp[k], g, -1.0);
+        gm[k] += sign * ur * a->dt_dm[0];
+        gm[k + 1] += sign * ur * a->dt_dm[1];
+    }
+}
+
+/* Derivatives of smooth_clamp(y, b, w) with respect to y and b. */
+static double sigmoid(double x) {
+    return x < -40.0 ? 0.0 : 1.0 / (1.0 + exp(-x));
+}
+static void smooth_clamp_slopes(double y, double b, double w, double *dy, double *db) {
+    double s1 = sigmoid((y - b) / w), s2 = sigmoid((-y - b) / w);
+    *dy = 1.0 - s1 - s2, *db = s1 - s2;
+}
+
+/* The gradient of the turning angle theta at node i (nodes i-1, i, i+1); 0 where the rope runs
+ * straight (theta's kink). */
+static void angle_gradient(const cs_span_grad *sp, double coef, double gp[3][3]) {
+    const double *a = sp[0].u, *b = sp[1].u;
+    double x[3], cth = v3_dot(a, b);
+    v3_cross(x, a, b);
+    double sth = v3_norm(x);
+    if (sth < 1e-12 || sp[0].l <= 1e-12 || sp[1].l <= 1e-12) return;
+    for (int e = 0; e < 3; e++) {
+        double da = -(b[e] - cth * a[e]) / (sp[0].l * sth), db = -(a[e] - cth * b[e]) / (sp[1].l * sth);
+        gp[0][e] -= coef * da, gp[1][e] += coef * (da - db), gp[2][e] += coef * db;
+    }
+}
+
+/* Gradient of span lengths l_L + l_R (for the rope's stiffness c = EA / (l_L + l_R)). */
+static void length_gradient(const cs_span_grad *sp, double coef, double gp[3][3]) {
+    for (int k = 0; k < 2; k++) {
+        v3_addto(gp[k + 1], sp[k].u, coef);
+        v3_addto(gp[k], sp[k].u, -coef);
+    }
+}
+
+static void node_row(const cs_model *model, const cs_state *s, cs_solver *w, int n, int row, int c, int i) {
+    const cs_cable_model *cm = &model->cables[c];
+    const cs_cable_state *cs = &s->cables[c];
+    const cs_span_grad *sp = spans_at(model, w, c, i);
+    double gp[3][3] = {{0}}, gm[3] = {0};
+    int id = cs->node[i];
+    double mu = id >= 0 ? cm->mu_post : model->vehicle.def.face_friction, tl = sp[0].t, tr = sp[1].t;
+    double th = tanh(0.5 * cs_node_capstan_exponent(model, cm, cs, i)), lam = tl - tr, b = th * (tl + tr);
+    double len = sp[0].l + sp[1].l + 1e-9, cstiff = cm->rope.ea / len, dm = cs->m[i] - cs->m_commit[i];
+    double py, pb, fu = cm->rope.fu;
+    smooth_clamp_slopes(lam + cstiff * dm, b, CS_FRICTION_FLOOR * fu, &py, &pb);
+    /* r Fu = lambda - proj(y, b) - eps c dm: its slopes on T_L, T_R, theta, c and dm */
+    double on_tl = (1.0 - py) - pb * th, on_tr = -(1.0 - py) - pb * th;
+    double on_theta = -pb * (1.0 - th * th) * 0.5 * mu * (tl + tr), on_c = -(py + CS_STICK_EPS) * dm;
+    for (int k = 0; k < 2; k++) {
+        double on_t = k == 0 ? on_tl : on_tr;
+        v3_addto(gp[k + 1], sp[k].dt_dd, on_t);
+        v3_addto(gp[k], sp[k].dt_dd, -on_t);
+        gm[k] += on_t * sp[k].dt_dm[0], gm[k + 1] += on_t * sp[k].dt_dm[1];
+    }
+    angle_gradient(sp, on_theta, gp);
+    length_gradient(sp, on_c * -cm->rope.ea / (len * len), gp);
+    gm[1] += -(py + CS_STICK_EPS) * cstiff;
+    for (int k = 0; k < 3; k++) {
+        v3_scale(gp[k], gp[k], 1.0 / fu);
+        gm[k] /= fu;
+    }
+    add_node_gradient(model, s, w, n, row, c, i, gp, gm);
+}
+
+/* The body's axes in the world. */
+static void body_axes(const cs_state *s, double ax[3][3]) {
+    for (int k = 0; k < 3; k++) {
+        double e[3] = {k == 0, k == 1, k == 2};
+        quat_rotate(ax[k], s->quat, e);
+    }
+}
+
+/* A face contact's row (height_residual): r Fu = fz - proj(fz + c dz, mu fn + w, w) - eps c dz. */
+static void height_row(const cs_model *model, const cs_state *s, cs_solver *w, int n, int row, int c, int k) {
+    const cs_cable_model *cm = &model->cables[c];
+    const cs_cable_state *cs = &s->cables[c];
+    int i = corner_node(cs, k);
+    const cs_span_grad *sp = spans_at(model, w, c, i);
+    double ax[3][3], f[3], fb[3], mu = model->vehicle.def.face_friction, fu = cm->rope.fu;
+    body_axes(s, ax);
+    cs_node_force(cs, i, f);
+    for (int e = 0; e < 3; e++)
+        fb[e] = v3_dot(ax[e], f);
+    double fn = v2_norm(fb[0], fb[1]), wf = CS_FRICTION_FLOOR * fu;
+    double len = sp[0].l + sp[1].l + 1e-9, cstiff = cm->rope.ea / len,
+           dz = cs->corner_z[k] - cs->corner_z_commit[k];
+    double py, pb;
+    smooth_clamp_slopes(fb[2] + cstiff * dz, mu * fn + wf, wf, &py, &pb);
+    double rho[3], gp[3][3] = {{0}}, gm[3] = {0};
+    for (int e = 0; e < 3; e++) {
+        rho[e] = (1.0 - py) * ax[2][e];
+        if (fn > 0.0) rho[e] -= pb * mu * (fb[0] * ax[0][e] + fb[1] * ax[1][e]) / fn;
+        rho[e] /= fu;
+    }
+    force_gradient(sp, rho, gp, gm);
+    length_gradient(sp, -(py + CS_STICK_EPS) * dz * -cm->rope.ea / (len * len) / fu, gp);
+    add_node_gradient(model, s, w, n, row, c, i, gp, gm);
+    add_entry(w, n, row, row, -(py + CS_STICK_EPS) * cstiff / fu); /* dz: the row's own unknown */
+}
+
+/* A post's two rows: Q = sum over its cables of l_c J(alpha)^T f_c, less resistance and inertia. */
+static void post_rows(const cs_model *model, const cs_state *s, cs_solver *w, int n, int row, int p) {
+    const double *ja = w->axes + 18 * p, *dj = ja + 6;
+    double kr[4], cap = model->posts[p].moment_cap;
+    cs_post_resistance_slope(model, s, p, kr);
+    for (int a = 0; a < 2; a++)
+        for (int b = 0; b < 2; b++)
+            add_entry(w, n, row + a, row + b, kr[2 * a + b] / cap);
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
+        if (i < 0) continue;
+        const cs_span_grad *sp = spans_at(model, w, c, i);
+        double l = model->cables[c].z + model->posts[p].pivot, f[3];
+        cs_node_force(cs, i, f);
+        for (int a = 0; a < 2; a++) {
+            double rho[3] = {l * ja[a] / cap, l * ja[2 + a] / cap, l * ja[4 + a] / cap};
+            double gp[3][3] = {{0}}, gm[3] = {0};
+            force_gradient(sp, rho, gp, gm);
+            add_node_gradient(model, s, w, n, row + a, c, i, gp, gm);
+            for (int b = 0; b < 2; b++) /* the axis turning under the pull */
+                add_entry(w, n, row + a, row + b,
+                          l * (dj[6 * b + a] * f[0] + dj[6 * b + 2 + a] * f[1] + dj[6 * b + 4 + a] * f[2]) /
+                              cap);
         }
     }
 }
 
-/* Column j's entry in row i, if i lies in its band. */
-static void put_entry(cs_solver *w, int n, int i, int j, double value) {
-    if (i >= 0 && i < n && i >= j - w->ku && i <= j + w->kl) BAND(w, i, j) = value;
+/* The crush row's dependence on everything but the crush: N = -sum of the corners' pulls along the
+ * face's normal (the captured posts' pushes move with the crush alone). */
+static void crush_row(const cs_model *model, const cs_state *s, cs_solver *w, int n, int row) {
+    const cs_vehicle_def *v = &model->vehicle.def;
+    double ax[3][3], scale = v->crush_force[v->crush_point_count - 1];
+    body_axes(s, ax);
+    double rho[3] = {-ax[0][0] / scale, -ax[0][1] / scale, -ax[0][2] / scale};
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        if (!cs->engaged || cs->status != CS_CABLE_INTACT) continue;
+        for (int i = 1; i + 1 < cs->node_count; i++) {
+            if (!is_corner(cs->node[i])) continue;
+            const cs_span_grad *sp = spans_at(model, w, c, i);
+            double gp[3][3] = {{0}}, gm[3] = {0};
+            force_gradient(sp, rho, gp, gm);
+            add_node_gradient(model, s, w, n, row, c, i, gp, gm);
+        }
+    }
 }
 
-/* The FD Jacobian at x, r its residual. Each group's steps (fd_step) are sized from the state the group
- * before left, the first group's from the state on entry, as when every group took the full residual:
- * the numbers stay those. */
+/* The Jacobian at x, r its residual; leaves the state as scatter(x) does. */
 static void jacobian(const cs_model *model, cs_state *s, cs_solver *w, int n, const double *x,
                      const double *r) {
-    int kl = w->kl, ku = w->ku, stride = kl + ku + 1, nodes[2 * CS_MAX_CABLES_PER_POST];
     memset(w->band, 0, (size_t)n * (size_t)w->band_width * sizeof *w->band);
-    for (int k = 0; k < n; k++)
-        w->row_column[k] = -1;
-    memcpy(w->xt, x, (size_t)n * sizeof *x);
-    for (int j = 0; j < n; j += stride) /* the first group's steps, from the state on entry */
-        w->xt[j] += fd_step(model, s, &w->slots[j]);
     scatter(model, s, w, n, x);
-    for (int g = 0; g < stride && g < n; g++) {
-        int full = w->crush_index >= 0 && w->crush_index % stride == g, count = 0;
-        if (full) {
-            scatter(model, s, w, n, w->xt);
-            residual(model, s, w, n, w->rt);
-            for (int j = g; j < n; j += stride)
-                for (int i = j - ku; i <= j + kl; i++)
-                    put_entry(w, n, i, j, (w->rt[i] - r[i]) / (w->xt[j] - x[j]));
-        } else {
-            for (int j = g; j < n; j += stride) {
-                int moved = move_unknown(model, s, w, j, w->xt[j], nodes);
-                for (int k = 0; k < moved; k++)
-                    rows_near(model, s, w, nodes[2 * k], nodes[2 * k + 1], j, stride, &count);
-            }
-            for (int k = 0; k < count; k++) { /* a post is listed by its first row and has two */
-                int i = w->rows[k], j = w->row_column[i], last = w->slots[i].kind == U_TILT ? i + 1 : i;
-                residual_row(model, s, w, i, w->rt);
-                for (int q = i; q <= last; q++)
-                    put_entry(w, n, q, j, (w->rt[q] - r[q]) / (w->xt[j] - x[j]));
-            }
-        }
-        /* the next group's steps, from this group's state (as a full scatter of it would leave it) */
-        for (int j = g + 1; j < n && g + 1 < stride; j += stride)
-            w->xt[j] = x[j] + fd_step(model, s, &w->slots[j]);
-        if (g + 1 == stride || g + 1 == n) break; /* the last group's state stays, as scatter leaves it */
-        if (full) {
-            scatter(model, s, w, n, x);
-        } else {
-            for (int j = g; j < n; j += stride)
-                move_unknown(model, s, w, j, x[j], nodes);
-        }
-        for (int j = g; j < n; j += stride)
-            w->xt[j] = x[j];
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        if (cs->status == CS_CABLE_INTACT)
+            for (int i = 0; i + 1 < cs->node_count; i++)
+                cs_span_tension_grad(&model->cables[c], cs, i, w->spans + c * model->max_nodes + i);
     }
+    for (int p = 0; p < model->post_count; p++)
+        if (w->tilt_index[p] >= 0)
+            cs_post_axis_jacobian(s->posts[p].tilt, w->axes + 18 * p, w->axes + 18 * p + 6);
+    for (int k = 0; k < n; k++) {
+        const slot *u = &w->slots[k];
+        if (u->kind == U_NODE) node_row(model, s, w, n, k, u->a, u->b);
+        if (u->kind == U_HEIGHT) height_row(model, s, w, n, k, u->a, u->b);
+        if (u->kind == U_TILT && u->b == 0) post_rows(model, s, w, n, k, u->a);
+        if (u->kind == U_CRUSH) crush_row(model, s, w, n, k);
+    }
+    int j = w->crush_index;
+    if (j < 0) return;
+    memcpy(w->xt, x, (size_t)n * sizeof *x);
+    w->xt[j] += 1e-8;
+    scatter(model, s, w, n, w->xt);
+    residual(model, s, w, n, w->rt);
+    for (int i = j - w->ku; i <= j + w->kl; i++)
+        if (i >= 0 && i < n) BAND(w, i, j) = (w->rt[i] - r[i]) / 1e-8;
+    scatter(model, s, w, n, x);
 }
 
 /* Largest fraction of a Newton step that keeps every span's rope at least half of what it has, turns
@@ -584,6 +711,34 @@ void cs_solver_go_back(const cs_model *model, cs_state *s) {
     cs_solver *w = &s->solver;
     memcpy(w->slots, w->slots_kept, (size_t)w->kept_n * sizeof *w->slots);
     scatter(model, s, w, w->kept_n, w->kept);
+}
+
+/* The solve's linearisation at the state as it stands, for tests: the unknowns (their count returned,
+ * -1 if more than cap or the band does not fit), their kinds (0 tilt, 1 rope at a support, 2 crush,
+ * 3 contact height) and values x, the residual r and the Jacobian, dense and row-major. */
+int cs_solver_linearize(const cs_model *model, cs_state *s, int cap, int *kind, double *x, double *r,
+                        double *jac) {
+    cs_solver *w = &s->solver;
+    int n = assemble(model, s, w);
+    bandwidth(model, s, w, n, &w->kl, &w->ku);
+    w->band_width = 2 * w->kl + w->ku + 1;
+    if (n > cap || (size_t)n * (size_t)w->band_width > w->band_capacity) return -1;
+    gather(s, w, n, x);
+    for (int k = 0; k < n; k++)
+        kind[k] = w->slots[k].kind;
+    cs_solver_residual(model, s, n, x, r);
+    jacobian(model, s, w, n, x, r);
+    w->lu_valid = 0; /* the band now holds this Jacobian, not the factors */
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < n; j++)
+            jac[i * n + j] = i >= j - w->ku && i <= j + w->kl ? BAND(w, i, j) : 0.0;
+    return n;
+}
+
+/* The residual at x, for the n unknowns of the last cs_solver_linearize. */
+void cs_solver_residual(const cs_model *model, cs_state *s, int n, const double *x, double *r) {
+    scatter(model, s, &s->solver, n, x);
+    residual(model, s, &s->solver, n, r);
 }
 
 double cs_barrier_newton(const cs_model *model, cs_state *s) {
