@@ -596,11 +596,28 @@ static void crush_row(const cs_model *model, const cs_state *s, cs_solver *w, in
     }
 }
 
-/* The Jacobian at x, r its residual; leaves the state as scatter(x) does. */
+/* Set the crush and bring what it moves in line: the face's corners and the spans at them, and the
+ * captured posts (scatter's work for the crush alone). */
+static void move_crush(const cs_model *model, cs_state *s, double crush) {
+    s->crush = crush;
+    cs_contact_place_corners(model, s, crush);
+    cs_post_place_captured(model, s, crush, NULL, NULL);
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        if (cs->status != CS_CABLE_INTACT) continue;
+        for (int i = 1; i + 1 < cs->node_count; i++)
+            if (is_corner(cs->node[i])) {
+                cs->tension[i - 1] = cs_span_tension(&model->cables[c], cs, i - 1);
+                cs->tension[i] = cs_span_tension(&model->cables[c], cs, i);
+            }
+    }
+}
+
+/* The Jacobian at x, r its residual, with the state at x (at_x) or put there. */
 static void jacobian(const cs_model *model, cs_state *s, cs_solver *w, int n, const double *x,
-                     const double *r) {
+                     const double *r, int at_x) {
     memset(w->band, 0, (size_t)n * (size_t)w->band_width * sizeof *w->band);
-    scatter(model, s, w, n, x);
+    if (!at_x) scatter(model, s, w, n, x);
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
         if (cs->status == CS_CABLE_INTACT)
@@ -619,13 +636,15 @@ static void jacobian(const cs_model *model, cs_state *s, cs_solver *w, int n, co
     }
     int j = w->crush_index;
     if (j < 0) return;
-    memcpy(w->xt, x, (size_t)n * sizeof *x);
-    w->xt[j] += 1e-8;
-    scatter(model, s, w, n, w->xt);
-    residual(model, s, w, n, w->rt);
-    for (int i = j - w->ku; i <= j + w->kl; i++)
-        if (i >= 0 && i < n) BAND(w, i, j) = (w->rt[i] - r[i]) / 1e-8;
-    scatter(model, s, w, n, x);
+    /* the crush's column: the rows in its band (a post's two rows come together, from its first) */
+    int lo = j - w->ku > 0 ? j - w->ku : 0, hi = j + w->kl < n - 1 ? j + w->kl : n - 1;
+    if (w->slots[lo].kind == U_TILT && w->slots[lo].b == 1) lo--;
+    move_crush(model, s, x[j] + 1e-8);
+    for (int i = lo; i <= hi; i++)
+        residual_row(model, s, w, i, w->rt);
+    for (int i = j - w->ku; i <= hi; i++)
+        if (i >= 0) BAND(w, i, j) = (w->rt[i] - r[i]) / 1e-8;
+    move_crush(model, s, x[j]);
 }
 
 /* Largest fraction of a Newton step that keeps every span's rope at least half of what it has, turns
@@ -727,7 +746,7 @@ int cs_solver_linearize(const cs_model *model, cs_state *s, int cap, int *kind, 
     for (int k = 0; k < n; k++)
         kind[k] = w->slots[k].kind;
     cs_solver_residual(model, s, n, x, r);
-    jacobian(model, s, w, n, x, r);
+    jacobian(model, s, w, n, x, r, 1);
     w->lu_valid = 0; /* the band now holds this Jacobian, not the factors */
     for (int i = 0; i < n; i++)
         for (int j = 0; j < n; j++)
@@ -768,11 +787,11 @@ double cs_barrier_newton(const cs_model *model, cs_state *s) {
     }
     /* Chord Newton: the factored Jacobian is kept while it still cuts the residual at least by half
      * (within the step and across steps with the same unknowns); otherwise it is rebuilt. */
-    int fresh = 0;
+    int fresh = 0, at_x = 1; /* at_x: the state is at x (not at a rejected trial) */
     if (!same_unknowns(w, n)) w->lu_valid = 0;
     for (int it = 0; it < 40 && rn > tol; it++) {
         if (!w->lu_valid) {
-            jacobian(model, s, w, n, x, r);
+            jacobian(model, s, w, n, x, r, at_x);
             if (band_factor(w, n) != 0) break;
             w->lu_valid = 1, fresh = 1;
         }
@@ -788,6 +807,7 @@ double cs_barrier_newton(const cs_model *model, cs_state *s) {
                 w->xt[k] = x[k] + t * dx[k];
             scatter(model, s, w, n, w->xt);
             residual(model, s, w, n, w->rt);
+            at_x = 0;
             trial_merit = 0.0;
             for (int k = 0; k < n; k++)
                 trial_merit += w->rt[k] * w->rt[k];
@@ -803,15 +823,11 @@ double cs_barrier_newton(const cs_model *model, cs_state *s) {
             }
             break;
         }
-        fresh = 0;
+        fresh = 0, at_x = 1;
         memcpy(x, w->xt, (size_t)n * sizeof *x);
         memcpy(r, w->rt, (size_t)n * sizeof *r);
         rn = norm_inf(r, n);
     }
-    if (rn > CS_NEWTON_GIVE_UP) { /* stalled far from a solution: Gauss-Seidel goes on from here */
-        scatter(model, s, w, n, x);
-        return -1.0;
-    }
-    scatter(model, s, w, n, x);
-    return rn;
+    if (!at_x) scatter(model, s, w, n, x);
+    return rn > CS_NEWTON_GIVE_UP ? -1.0 : rn; /* stalled far off: Gauss-Seidel goes on from here */
 }
