@@ -19,8 +19,8 @@
  * switch between sticking and sliding (docs/assumptions.md).
  * Unknowns are ordered along the barrier, so the Jacobian is banded: it is formed from the spans'
  * tension gradients (the crush's column by a difference quotient), and a banded LU with partial
- * pivoting solves each Newton step. Cost is linear in the number of posts; the solution does not depend on any sweep order, so a symmetric
- * impact stays symmetric. */
+ * pivoting solves each Newton step. Cost is linear in the number of posts; the solution does not
+ * depend on any sweep order, so a symmetric impact stays symmetric. */
 #include "internal.h"
 #include "vec3.h"
 
@@ -98,12 +98,23 @@ void cs_solver_free(cs_solver *w) {
     memset(w, 0, sizeof *w);
 }
 
-static int cmp_slot(const void *pa, const void *pb) {
-    const slot *a = pa, *b = pb;
-    if (a->x != b->x) return a->x < b->x ? -1 : 1;
-    if (a->kind != b->kind) return a->kind - b->kind;
-    if (a->a != b->a) return a->a - b->a;
-    return a->b - b->b;
+static int slot_before(const slot *a, const slot *b) {
+    if (a->x != b->x) return a->x < b->x;
+    if (a->kind != b->kind) return a->kind < b->kind;
+    if (a->a != b->a) return a->a < b->a;
+    return a->b < b->b;
+}
+
+/* Insertion sort: the list is built as a few runs already in order along x (the posts, each cable's
+ * nodes), so this costs a few comparisons a slot, less than qsort's calls through a pointer. */
+static void sort_slots(slot *sl, int n) {
+    for (int k = 1; k < n; k++) {
+        slot u = sl[k];
+        int j = k;
+        for (; j > 0 && slot_before(&u, &sl[j - 1]); j--)
+            sl[j] = sl[j - 1];
+        sl[j] = u;
+    }
 }
 
 static int post_on_path(const cs_model *model, const cs_state *s, int p) {
@@ -133,7 +144,7 @@ static int assemble(const cs_model *model, cs_state *s, cs_solver *w) {
         }
     }
     if (cs_face_loaded(model, s)) sl[n++] = (slot){s->pos[0], U_CRUSH, 0, 0};
-    qsort(sl, (size_t)n, sizeof *sl, cmp_slot);
+    sort_slots(sl, n);
     /* index maps: tilt of post p, node i of cable c, crush */
     for (int p = 0; p < model->post_count; p++)
         w->tilt_index[p] = -1;
