@@ -698,7 +698,9 @@ static int same_unknowns(cs_solver *w, int n) {
  * The barrier moves smoothly between failures, so each unknown starts from its committed value plus
  * the increment it took over the last step (a linear extrapolation in time). Unknowns are keyed by
  * element (post, cable node by its support, face contact, crush), so the memory survives nodes being
- * inserted or removed. A re-solve inside the same step (after a failure) does not extrapolate. */
+ * inserted or removed. A re-solve inside the same step (after a failure) does not extrapolate. The
+ * extrapolation is taken as it is: it was closer than the committed state in 509 of APS3's 512 solves,
+ * and comparing the two cost a residual a solve (5% of the run). */
 static size_t slot_key(const cs_model *model, const cs_state *s, const slot *u) {
     size_t np = (size_t)model->post_count, nc = (size_t)model->cable_count;
     if (u->kind == U_TILT) return 2 * (size_t)u->a + (size_t)u->b;
@@ -711,8 +713,7 @@ static size_t slot_key(const cs_model *model, const cs_state *s, const slot *u) 
     return 2 * np + nc * (np + 2) + 2 * nc;
 }
 
-/* Returns 1 if x was moved (a first solve of this step with a history to extrapolate). */
-static int predict(const cs_model *model, cs_state *s, cs_solver *w, int n, double *x) {
+static void predict(const cs_model *model, cs_state *s, cs_solver *w, int n, double *x) {
     int moved = 0;
     for (int k = 0; k < n; k++) {
         size_t key = slot_key(model, s, &w->slots[k]);
@@ -721,11 +722,10 @@ static int predict(const cs_model *model, cs_state *s, cs_solver *w, int n, doub
         if (w->last_step[key] == s->step - 1) w->dx[k] = x[k] - w->last[key], moved |= w->dx[k] != 0.0;
         w->last[key] = x[k], w->last_step[key] = s->step;
     }
-    if (!moved) return 0;
+    if (!moved) return;
     double t = max_step(model, s, w, n, w->dx);
     for (int k = 0; k < n; k++)
         x[k] += t * w->dx[k];
-    return 1;
 }
 
 /* Remember the unknowns as they stand (with their slots: the order along x can change), to go back to
@@ -780,22 +780,10 @@ double cs_barrier_newton(const cs_model *model, cs_state *s) {
     if ((size_t)n * (size_t)w->band_width > w->band_capacity) return -1.0; /* caller falls back */
     double *x = w->x, *r = w->r, *dx = w->dx;
     gather(s, w, n, x);
+    predict(model, s, w, n, x);
     scatter(model, s, w, n, x);
     residual(model, s, w, n, r);
     double rn = norm_inf(r, n), tol = model->scenario.solver_tolerance;
-    memcpy(w->xt, x, (size_t)n * sizeof *x);
-    if (predict(model, s, w, n, w->xt) && rn > tol) { /* keep the extrapolation if it is closer */
-        scatter(model, s, w, n, w->xt);
-        residual(model, s, w, n, w->rt);
-        double rp = norm_inf(w->rt, n);
-        if (rp < rn) {
-            memcpy(x, w->xt, (size_t)n * sizeof *x);
-            memcpy(r, w->rt, (size_t)n * sizeof *r);
-            rn = rp;
-        } else {
-            scatter(model, s, w, n, x);
-        }
-    }
     /* Chord Newton: the factored Jacobian is kept while it still cuts the residual at least by half
      * (within the step and across steps with the same unknowns); otherwise it is rebuilt. */
     int fresh = 0, at_x = 1; /* at_x: the state is at x (not at a rejected trial) */
