@@ -122,8 +122,9 @@ typedef struct cs_solver {
     int *height_index;  /* [cable_count * 2] index of a face contact height unknown, -1 if none */
     int crush_index;
     double *x, *r, *dx, *xt, *rt;
-    double *kept;            /* unknowns saved by cs_solver_keep */
-    struct slot *slots_kept; /* and their slots */
+    double *kept;              /* unknowns saved by cs_solver_keep */
+    struct slot *slots_kept;   /* and their slots */
+    struct slot *slots_sorted; /* scratch of the sort along x */
     int kept_n;
     size_t key_count;      /* unknowns the predictor remembers, keyed by element (slot_key) */
     double *last;          /* [keys] each unknown's value at the start of the last step's solve */

@@ -65,6 +65,7 @@ int cs_solver_init(const cs_model *model, cs_solver *w) {
     w->slots = calloc(n, sizeof *w->slots);
     w->slots_lu = calloc(n, sizeof *w->slots_lu);
     w->slots_kept = calloc(n, sizeof *w->slots_kept);
+    w->slots_sorted = calloc(n, sizeof *w->slots_sorted);
     w->tilt_index = calloc(np ? np : 1, sizeof *w->tilt_index);
     w->node_index = calloc(nc ? nc * nn : 1, sizeof *w->node_index);
     w->height_index = calloc(nc ? 2 * nc : 1, sizeof *w->height_index);
@@ -77,8 +78,9 @@ int cs_solver_init(const cs_model *model, cs_solver *w) {
     w->key_count = 2 * np + nc * (np + 2) + 2 * nc + 1; /* see slot_key */
     w->last = calloc(w->key_count, sizeof *w->last);
     w->last_step = calloc(w->key_count, sizeof *w->last_step);
-    if (!w->slots || !w->slots_lu || !w->slots_kept || !w->last || !w->last_step || !w->tilt_index ||
-        !w->node_index || !w->height_index || !w->x || !w->band || !w->pivot || !w->spans || !w->axes)
+    if (!w->slots || !w->slots_lu || !w->slots_kept || !w->slots_sorted || !w->last || !w->last_step ||
+        !w->tilt_index || !w->node_index || !w->height_index || !w->x || !w->band || !w->pivot || !w->spans ||
+        !w->axes)
         return -1;
     w->r = w->x + n, w->dx = w->x + 2 * n, w->xt = w->x + 3 * n, w->rt = w->x + 4 * n, w->kept = w->x + 5 * n;
     return 0;
@@ -92,9 +94,9 @@ void cs_solver_reset(cs_solver *w) {
 }
 
 void cs_solver_free(cs_solver *w) {
-    free(w->slots), free(w->slots_lu), free(w->slots_kept), free(w->tilt_index), free(w->node_index),
-        free(w->height_index), free(w->x), free(w->band), free(w->pivot), free(w->last), free(w->last_step),
-        free(w->spans), free(w->axes);
+    free(w->slots), free(w->slots_lu), free(w->slots_kept), free(w->slots_sorted), free(w->tilt_index),
+        free(w->node_index), free(w->height_index), free(w->x), free(w->band), free(w->pivot), free(w->last),
+        free(w->last_step), free(w->spans), free(w->axes);
     memset(w, 0, sizeof *w);
 }
 
@@ -105,15 +107,31 @@ static int slot_before(const slot *a, const slot *b) {
     return a->b < b->b;
 }
 
-/* Insertion sort: the list is built as a few runs already in order along x (the posts, each cable's
- * nodes), so this costs a few comparisons a slot, less than qsort's calls through a pointer. */
-static void sort_slots(slot *sl, int n) {
-    for (int k = 1; k < n; k++) {
-        slot u = sl[k];
-        int j = k;
-        for (; j > 0 && slot_before(&u, &sl[j - 1]); j--)
-            sl[j] = sl[j - 1];
-        sl[j] = u;
+/* End of the run in order that starts at lo. */
+static int run_end(const slot *sl, int lo, int n) {
+    while (lo + 1 < n && !slot_before(&sl[lo + 1], &sl[lo]))
+        lo++;
+    return lo + 1;
+}
+
+/* Natural merge sort: the list is built as a few runs already in order along x (the posts, each
+ * cable's nodes), which passes of pairwise merges join in O(n log runs), with no calls through a
+ * pointer as qsort's. The order is total, so the result is qsort's. */
+static void sort_slots(slot *sl, slot *tmp, int n) {
+    for (;;) {
+        int lo = 0, runs = 0;
+        while (lo < n) {
+            int mid = run_end(sl, lo, n), hi = mid < n ? run_end(sl, mid, n) : n, i = lo, j = mid, k = lo;
+            while (i < mid && j < hi)
+                tmp[k++] = slot_before(&sl[j], &sl[i]) ? sl[j++] : sl[i++];
+            while (i < mid)
+                tmp[k++] = sl[i++];
+            while (j < hi)
+                tmp[k++] = sl[j++];
+            lo = hi, runs++;
+        }
+        memcpy(sl, tmp, (size_t)n * sizeof *sl);
+        if (runs <= 1) return;
     }
 }
 
@@ -144,7 +162,7 @@ static int assemble(const cs_model *model, cs_state *s, cs_solver *w) {
         }
     }
     if (cs_face_loaded(model, s)) sl[n++] = (slot){s->pos[0], U_CRUSH, 0, 0};
-    sort_slots(sl, n);
+    sort_slots(sl, w->slots_sorted, n);
     /* index maps: tilt of post p, node i of cable c, crush */
     for (int p = 0; p < model->post_count; p++)
         w->tilt_index[p] = -1;
