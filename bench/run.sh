@@ -4,10 +4,13 @@
 #   2. a Monte Carlo (examples/aps3-uncertain.yaml, BENCH_N runs) on 1 and 2 threads and on 2 MPI ranks;
 #   3. cost against barrier length: generated models of 10 to 1,000 posts (bench/gen_posts.sh), each run
 #      to BENCH_POSTS_T_END;
-#   4. peak memory of the command (/usr/bin/time -v) for a run and for the sweep.
+#   4. peak memory of the command (/usr/bin/time -v) for a run and for the sweep;
+#   5. instructions of the engine (cs_run) for APS1, APS3, APS4 and the 1,000-post model, counted by
+#      valgrind's callgrind: unlike wall times on a shared machine they do not move with the load, so a
+#      change of cost shows between two benches (skipped without valgrind, or with BENCH_ICOUNT=0).
 # Settings (environment): BUILD (build), BENCH_N (1000, the issue's Monte Carlo), BENCH_T_END (empty: the model's own, 3 s, or until
 # the truck stops or breaks through), BENCH_POSTS ("10 30 100 300 1000"), BENCH_POSTS_T_END (20 ms),
-# BENCH_REPEAT (3), BENCH_POSTS_REPEAT (1). Writes results/bench/bench.md and prints it.
+# BENCH_REPEAT (3), BENCH_POSTS_REPEAT (1), BENCH_ICOUNT (1). Writes results/bench/bench.md and prints it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${BUILD:-build}
@@ -17,6 +20,7 @@ POSTS=${BENCH_POSTS:-10 30 100 300 1000}
 POSTS_T_END=${BENCH_POSTS_T_END:-20 ms}
 POSTS_REPEAT=${BENCH_POSTS_REPEAT:-1}
 REPEAT=${BENCH_REPEAT:-3}
+ICOUNT=${BENCH_ICOUNT:-1}
 out=results/bench
 mkdir -p "$out"
 md="$out/bench.md"
@@ -123,4 +127,34 @@ echo "bench: cost against barrier length..."
     done
     echo
 } >>"$md"
+
+icount() { # model, extra bench_engine arguments...: millions of instructions in cs_run
+    local model=$1
+    shift
+    valgrind --tool=callgrind --callgrind-out-file=/dev/null --toggle-collect=cs_run "$engine" "$model" \
+        --repeat 1 "$@" 2>&1 >/dev/null | awk '/Collected/ { printf "%.1f", $4 / 1e6 }'
+}
+if [ "$ICOUNT" != 0 ] && command -v valgrind >/dev/null; then
+    echo "bench: instructions (callgrind)..."
+    big=$(for n in $POSTS; do echo "$n"; done | sort -n | tail -1)
+    declare -A count
+    for m in aps1 aps3 aps4; do
+        icount "examples/$m.yaml" >"$out/icount-$m.txt" &
+    done
+    icount "$out/posts-$big.yaml" --t-end "$POSTS_T_END" >"$out/icount-posts.txt" &
+    wait
+    for m in aps1 aps3 aps4 posts; do count[$m]=$(cat "$out/icount-$m.txt"); done
+    {
+        echo "## Instructions of the engine"
+        echo
+        echo "\`valgrind --tool=callgrind --toggle-collect=cs_run $engine MODEL --repeat 1\`, millions of"
+        echo "instructions: the same at any load for the same build (they can differ between CPUs only where"
+        echo "the C library picks its math routines by the CPU's features)."
+        echo
+        echo "| APS1 | APS3 | APS4 | $big posts to $POSTS_T_END |"
+        echo "| --- | --- | --- | --- |"
+        echo "| ${count[aps1]} M | ${count[aps3]} M | ${count[aps4]} M | ${count[posts]} M |"
+        echo
+    } >>"$md"
+fi
 cat "$md"
