@@ -10,7 +10,7 @@
 #      change of cost shows between two benches (skipped without valgrind, or with BENCH_ICOUNT=0).
 # Settings (environment): BUILD (build), BENCH_N (1000, the issue's Monte Carlo), BENCH_T_END (empty: the model's own, 3 s, or until
 # the truck stops or breaks through), BENCH_POSTS ("10 30 100 300 1000"), BENCH_POSTS_T_END (20 ms),
-# BENCH_REPEAT (3), BENCH_POSTS_REPEAT (1), BENCH_ICOUNT (1). Writes results/bench/bench.md and prints it.
+# BENCH_REPEAT (10), BENCH_POSTS_REPEAT (3), BENCH_ICOUNT (1). Writes results/bench/bench.md and prints it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${BUILD:-build}
@@ -18,8 +18,8 @@ N=${BENCH_N:-1000}
 T_END=${BENCH_T_END:-}
 POSTS=${BENCH_POSTS:-10 30 100 300 1000}
 POSTS_T_END=${BENCH_POSTS_T_END:-20 ms}
-POSTS_REPEAT=${BENCH_POSTS_REPEAT:-1}
-REPEAT=${BENCH_REPEAT:-3}
+POSTS_REPEAT=${BENCH_POSTS_REPEAT:-3}
+REPEAT=${BENCH_REPEAT:-10}
 ICOUNT=${BENCH_ICOUNT:-1}
 out=results/bench
 mkdir -p "$out"
