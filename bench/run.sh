@@ -132,7 +132,7 @@ icount() { # model, extra bench_engine arguments...: millions of instructions in
     local model=$1
     shift
     valgrind --tool=callgrind --callgrind-out-file=/dev/null --toggle-collect=cs_run "$engine" "$model" \
-        --repeat 1 "$@" 2>&1 >/dev/null | awk '/Collected/ { printf "%.1f", $4 / 1e6 }'
+        --repeat 1 "$@" 2>&1 >/dev/null | awk '/Collected/ { printf "%.1f M", $4 / 1e6 }'
 }
 if [ "$ICOUNT" != 0 ] && command -v valgrind >/dev/null; then
     echo "bench: instructions (callgrind)..."
@@ -143,17 +143,20 @@ if [ "$ICOUNT" != 0 ] && command -v valgrind >/dev/null; then
     done
     icount "$out/posts-$big.yaml" --t-end "$POSTS_T_END" >"$out/icount-posts.txt" &
     wait
-    for m in aps1 aps3 aps4 posts; do count[$m]=$(cat "$out/icount-$m.txt"); done
+    for m in aps1 aps3 aps4 posts; do # a run valgrind could not count says so instead of a blank
+        count[$m]=$(cat "$out/icount-$m.txt")
+        [ -n "${count[$m]}" ] || count[$m]="n/a"
+    done
     {
         echo "## Instructions of the engine"
         echo
-        echo "\`valgrind --tool=callgrind --toggle-collect=cs_run $engine MODEL --repeat 1\`, millions of"
+        echo "\`valgrind --tool=callgrind --toggle-collect=cs_run $engine MODEL --repeat 1\`, millions (M) of"
         echo "instructions: the same at any load for the same build (they can differ between CPUs only where"
         echo "the C library picks its math routines by the CPU's features)."
         echo
         echo "| APS1 | APS3 | APS4 | $big posts to $POSTS_T_END |"
         echo "| --- | --- | --- | --- |"
-        echo "| ${count[aps1]} M | ${count[aps3]} M | ${count[aps4]} M | ${count[posts]} M |"
+        echo "| ${count[aps1]} | ${count[aps3]} | ${count[aps4]} | ${count[posts]} |"
         echo
     } >>"$md"
 fi
