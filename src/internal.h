@@ -122,6 +122,8 @@ typedef struct cs_solver {
     int *height_index;  /* [cable_count * 2] index of a face contact height unknown, -1 if none */
     int crush_index;
     double *x, *r, *dx, *xt, *rt;
+    double *updates; /* [2 CS_BROYDEN_MAX n] the Broyden updates since the last factored Jacobian: s, u */
+    int update_count;
     double *kept;              /* unknowns saved by cs_solver_keep */
     struct slot *slots_kept;   /* and their slots */
     struct slot *slots_sorted; /* scratch of the sort along x */

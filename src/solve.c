@@ -19,7 +19,8 @@
  * switch between sticking and sliding (docs/assumptions.md).
  * Unknowns are ordered along the barrier, so the Jacobian is banded: it is formed from the spans'
  * tension gradients (the crush's column by a difference quotient), and a banded LU with partial
- * pivoting solves each Newton step. Cost is linear in the number of posts; the solution does not
+ * pivoting solves each Newton step; between rebuilds, Broyden's updates keep the factored Jacobian in
+ * step with the residual. Cost is linear in the number of posts; the solution does not
  * depend on any sweep order, so a symmetric impact stays symmetric. */
 #include "internal.h"
 #include "vec3.h"
@@ -30,6 +31,7 @@
 
 #define CS_STICK_EPS 1e-4
 #define CS_NEWTON_GIVE_UP 1e-2 /* residual above which the step goes to Gauss-Seidel instead */
+#define CS_BROYDEN_MAX 32      /* rank-one updates kept on one factored Jacobian */
 
 enum { U_TILT = 0, U_NODE = 1, U_CRUSH = 2, U_HEIGHT = 3 };
 
@@ -70,6 +72,7 @@ int cs_solver_init(const cs_model *model, cs_solver *w) {
     w->node_index = calloc(nc ? nc * nn : 1, sizeof *w->node_index);
     w->height_index = calloc(nc ? 2 * nc : 1, sizeof *w->height_index);
     w->x = calloc(6 * n, sizeof *w->x);
+    w->updates = calloc(2 * CS_BROYDEN_MAX * n, sizeof *w->updates);
     w->band_capacity = n * per_row;
     w->band = calloc(w->band_capacity, sizeof *w->band);
     w->spans = calloc(nc * nn + 1, sizeof *w->spans);
@@ -79,8 +82,8 @@ int cs_solver_init(const cs_model *model, cs_solver *w) {
     w->last = calloc(w->key_count, sizeof *w->last);
     w->last_step = calloc(w->key_count, sizeof *w->last_step);
     if (!w->slots || !w->slots_lu || !w->slots_kept || !w->slots_sorted || !w->last || !w->last_step ||
-        !w->tilt_index || !w->node_index || !w->height_index || !w->x || !w->band || !w->pivot || !w->spans ||
-        !w->axes)
+        !w->tilt_index || !w->node_index || !w->height_index || !w->x || !w->updates || !w->band ||
+        !w->pivot || !w->spans || !w->axes)
         return -1;
     w->r = w->x + n, w->dx = w->x + 2 * n, w->xt = w->x + 3 * n, w->rt = w->x + 4 * n, w->kept = w->x + 5 * n;
     return 0;
@@ -95,8 +98,8 @@ void cs_solver_reset(cs_solver *w) {
 
 void cs_solver_free(cs_solver *w) {
     free(w->slots), free(w->slots_lu), free(w->slots_kept), free(w->slots_sorted), free(w->tilt_index),
-        free(w->node_index), free(w->height_index), free(w->x), free(w->band), free(w->pivot), free(w->last),
-        free(w->last_step), free(w->spans), free(w->axes);
+        free(w->node_index), free(w->height_index), free(w->x), free(w->updates), free(w->band),
+        free(w->pivot), free(w->last), free(w->last_step), free(w->spans), free(w->axes);
     memset(w, 0, sizeof *w);
 }
 
@@ -712,6 +715,59 @@ static int same_unknowns(cs_solver *w, int n) {
     return same;
 }
 
+/* ---- Broyden's updates ----
+ * Between rebuilds the Jacobian B is the factored one, B0, plus rank-one updates (Broyden's "good"
+ * method) that make it agree with what the steps taken since found: after a step s from residual r to
+ * r', B' s = r' - r. In inverse form (Sherman-Morrison), B'^-1 = (I + u s^T) B^-1 with
+ * u = (s - v) / (s . v), v = B^-1 (r' - r); the pairs (s, u) are stored and applied oldest first.
+ * Kept across steps, they follow the Jacobian's slow drift as the truck moves on (APS3: a chord step
+ * from a Jacobian ten steps old cut the residual by 0.3-0.5 an iteration, with the updates by 0.01-0.1).
+ * Only full steps update it: a step cut short by the line search has crossed a kink, and its secant
+ * misleads the steps after it (keeping them there cost APS3 6% more), so the updates are dropped
+ * there, and when CS_BROYDEN_MAX are stored. */
+static void apply_updates(const cs_solver *w, int n, double *v) {
+    for (int j = 0; j < w->update_count; j++) {
+        const double *sj = w->updates + (size_t)(2 * j) * (size_t)n, *uj = sj + n;
+        double d = 0.0;
+        for (int k = 0; k < n; k++)
+            d += sj[k] * v[k];
+        for (int k = 0; k < n; k++)
+            v[k] += d * uj[k];
+    }
+}
+
+/* dx = -B^-1 r. */
+static void quasi_newton_solve(const cs_solver *w, int n, const double *r, double *dx) {
+    for (int k = 0; k < n; k++)
+        dx[k] = -r[k];
+    band_solve(w, n, dx);
+    apply_updates(w, n, dx);
+}
+
+/* After the step t dx (dx = -B^-1 r) that took the residual to r: update B and put the next step,
+ * -B'^-1 r, into dx. B^-1 r and dx give v = B^-1 (r - r_before) without another solve. */
+static void broyden_update(cs_solver *w, int n, double t, double *dx, const double *r) {
+    if (t != 1.0 || w->update_count == CS_BROYDEN_MAX) {
+        w->update_count = 0;
+        quasi_newton_solve(w, n, r, dx);
+        return;
+    }
+    double *sj = w->updates + (size_t)(2 * w->update_count) * (size_t)n, *uj = sj + n, sv = 0.0, sz = 0.0;
+    memcpy(sj, dx, (size_t)n * sizeof *dx);
+    quasi_newton_solve(w, n, r, dx); /* dx = -B^-1 r, so v = s - dx */
+    for (int k = 0; k < n; k++) {
+        uj[k] = sj[k] - dx[k]; /* v */
+        sv += sj[k] * uj[k];
+        sz -= sj[k] * dx[k];
+    }
+    if (!(fabs(sv) > 0.0)) return;
+    for (int k = 0; k < n; k++) {
+        uj[k] = (sj[k] - uj[k]) / sv;
+        dx[k] -= sz * uj[k]; /* -(I + u s^T) B^-1 r */
+    }
+    w->update_count++;
+}
+
 /* ---- predictor ----
  * The barrier moves smoothly between failures, so each unknown starts from its committed value plus
  * the increment it took over the last step (a linear extrapolation in time). Unknowns are keyed by
@@ -802,19 +858,19 @@ double cs_barrier_newton(const cs_model *model, cs_state *s) {
     scatter(model, s, w, n, x);
     residual(model, s, w, n, r);
     double rn = norm_inf(r, n), tol = model->scenario.solver_tolerance;
-    /* Chord Newton: the factored Jacobian is kept while it still cuts the residual at least by half
-     * (within the step and across steps with the same unknowns); otherwise it is rebuilt. */
-    int fresh = 0, at_x = 1; /* at_x: the state is at x (not at a rejected trial) */
+    /* Quasi-Newton: the factored Jacobian and Broyden's updates of it are kept while their step still
+     * cuts the residual at least by half (within the step and across steps with the same unknowns);
+     * otherwise the Jacobian is rebuilt. */
+    int fresh = 0, at_x = 1, have_dx = 0; /* at_x: the state is at x (not at a rejected trial) */
     if (!same_unknowns(w, n)) w->lu_valid = 0;
     for (int it = 0; it < 40 && rn > tol; it++) {
         if (!w->lu_valid) {
             jacobian(model, s, w, n, x, r, at_x);
             if (band_factor(w, n) != 0) break;
-            w->lu_valid = 1, fresh = 1;
+            w->lu_valid = 1, fresh = 1, w->update_count = 0, have_dx = 0;
         }
-        for (int k = 0; k < n; k++)
-            dx[k] = -r[k];
-        band_solve(w, n, dx);
+        if (!have_dx) quasi_newton_solve(w, n, r, dx);
+        have_dx = 0;
         double t = max_step(model, s, w, n, dx), merit = 0.0, trial_merit = 0.0;
         for (int k = 0; k < n; k++)
             merit += r[k] * r[k];
@@ -844,6 +900,7 @@ double cs_barrier_newton(const cs_model *model, cs_state *s) {
         memcpy(x, w->xt, (size_t)n * sizeof *x);
         memcpy(r, w->rt, (size_t)n * sizeof *r);
         rn = norm_inf(r, n);
+        if (rn > tol) broyden_update(w, n, t, dx, r), have_dx = 1;
     }
     if (!at_x) scatter(model, s, w, n, x);
     return rn > CS_NEWTON_GIVE_UP ? -1.0 : rn; /* stalled far off: Gauss-Seidel goes on from here */
