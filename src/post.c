@@ -6,7 +6,8 @@
  * M_cap, then rotation at constant moment (the plastic hinge of Eqs. 13-20, or the footing rotating
  * in the soil past Eq. 21). k = 3 E I / h is the cantilever of Eqs. 10-11 seen at the load height h.
  * M_cap = min(Zx Fy, P(h) h): whichever of post and footing is weaker yields, and its work goes to
- * post plastic or soil. The post is massless: each step its tilt is solved so that Q = resistance. */
+ * post plastic or soil. Each step the tilt is solved so that Q = resistance, plus the inertial moment of
+ * a post with mass (its swing, below); a massless post is in balance at once. */
 #include "internal.h"
 #include "vec3.h"
 
