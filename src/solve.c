@@ -722,10 +722,10 @@ static int same_unknowns(cs_solver *w, int n) {
  * v = B^-1 (r' - r); the pairs (s, u) are stored and applied oldest first. An update serves the one step
  * after the step it came from (CS_BROYDEN_MAX 1), the next solve's first step if that is where it falls,
  * and is then dropped: so chord steps alternate with steps corrected by the last one's secant. Only a
- * full step with s . v > 0 gives one (a step cut short by the line search has crossed a kink, and one
- * with s . v <= 0 found the residual turning against the model). Measured (instructions, against chord
- * steps alone): APS1 -9%, APS4 -11%, APS3 +0.4%, 300 posts -1%, 1,000 posts -10%. Keeping up to 32
- * updates cut APS3 by 7% more but cost 300 posts 50% more: there the steps they shaped were rejected
+ * full step with s . v > 0 gives one (a step cut short by the line search has most likely crossed a
+ * kink, and one with s . v <= 0 found the residual turning against the model). Measured (instructions,
+ * against chord steps alone): APS1 -9%, APS4 -11%, APS3 +0.4%, 300 posts -1%, 1,000 posts -10%. Keeping up to
+ * 32 updates cut APS3 by 7% more but cost 300 posts 50% more: there the steps they shaped were rejected
  * (residual not halved) and the Jacobian rebuilt twice a step where chord steps alone needed none. */
 static void apply_updates(const cs_solver *w, int n, double *v) {
     for (int j = 0; j < w->update_count; j++) {
