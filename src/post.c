@@ -42,13 +42,17 @@ void cs_post_attachment(const cs_model *model, int p, const double *tilt, double
     v3_set(out, model->posts[p].x + l * tilt[0] * s, l * tilt[1] * s, -dp + l * cos(t));
 }
 
-/* Jacobian of the post axis a(alpha), 3 x 2, row-major. */
-static void axis_jacobian(const double *al, double *j) {
-    double t = v2_norm(al[0], al[1]), s, g;
-    sinc_terms(t, &s, &g);
+/* Jacobian of the post axis a(alpha), 3 x 2, row-major, from sinc_terms' s and g at |alpha|. */
+static void axis_jacobian_from(const double *al, double s, double g, double *j) {
     j[0] = s + al[0] * al[0] * g, j[1] = al[0] * al[1] * g;
     j[2] = al[0] * al[1] * g, j[3] = s + al[1] * al[1] * g;
     j[4] = -s * al[0], j[5] = -s * al[1];
+}
+
+static void axis_jacobian(const double *al, double *j) {
+    double s, g;
+    sinc_terms(v2_norm(al[0], al[1]), &s, &g);
+    axis_jacobian_from(al, s, g, j);
 }
 
 void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double *q) {
@@ -61,15 +65,13 @@ void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const 
 /* The axis Jacobian j (3 x 2, as axis_jacobian) at a tilt and its derivatives along the two tilts,
  * dj[6 m + e] = d j[e] / d alpha_m (2 x 6): the solver's linearisation of a post's moment. With
  * s = sin t / t, g = s'(t) / t and q = g'(t) / t, d s / d alpha_m = g alpha_m and d g / d alpha_m =
- * q alpha_m; q's closed form loses its digits to cancellation near 0, so below t = 0.05 its series
- * 1/15 - t^2/210 + t^4/7560 (next term t^6/498960: below 1e-16 there). Until session 16, difference
- * quotients over 1e-7 rad (2.4% of APS3's instructions). */
+ * q alpha_m, where q = -(3 g + s) / t^2; that loses digits to cancellation near 0 (3 g + s -> 0), so
+ * below t = 0.05 its series 1/15 - t^2/210 + t^4/7560 (next term t^6/498960: below 1e-16 there). */
 void cs_post_axis_jacobian(const double *tilt, double *j, double *dj) {
     double t = v2_norm(tilt[0], tilt[1]), s, g, t2 = t * t;
     sinc_terms(t, &s, &g);
-    double q = t < 0.05 ? 1.0 / 15.0 - t2 / 210.0 + t2 * t2 / 7560.0
-                        : (3.0 * (sin(t) - t * cos(t)) - t2 * sin(t)) / (t2 * t2 * t);
-    axis_jacobian(tilt, j);
+    double q = t < 0.05 ? 1.0 / 15.0 - t2 / 210.0 + t2 * t2 / 7560.0 : -(3.0 * g + s) / t2;
+    axis_jacobian_from(tilt, s, g, j);
     for (int m = 0; m < 2; m++) {
         double a = tilt[m], *d = dj + 6 * m;
         d[0] = g * a + (m == 0 ? 2.0 * tilt[0] * g : 0.0) + tilt[0] * tilt[0] * q * a;
