@@ -12,6 +12,21 @@ check "the bogie target is judged" 'grep -qE "at least 8 of 10: [0-9]+ of 10, (m
 check "csv has a header and ten bogie rows" '[ "$(grep -c "^bogie," "$dir/validation.csv")" -eq 10 ]'
 check "no temporaries left" '[ -z "$(ls "$dir" | grep tmp)" ]'
 check "no NaN or Inf in the csv" '! grep -qiE "nan|inf" "$dir/validation.csv"'
+# The sensitivity part: one row per test and input, the joint sample's runs in the csv, APS1 judged
+# against the joint band, and the truck faster out of every test when it comes in faster (42 vs 38 mph:
+# the barrier takes less than the extra kinetic energy).
+"$cs" validate -o "$dir/sens" --only sensitivity >/dev/null 2>&1
+check "validate --only sensitivity exits 0" '[ $? -eq 0 ]'
+md="$dir/sens/validation.md"
+check "18 one-at-a-time rows" '[ "$(grep -cE "^\| aps[134] \| [a-z]" "$md")" -eq 18 ]'
+check "96 joint runs in the csv, all run" '[ "$(grep -c "^joint,aps[134],.*\",1," "$dir/sens/validation.csv")" -eq 96 ]'
+check "APS1 judged against its joint band" 'grep -qE "deceleration 1.485 g (inside|OUTSIDE), exit speed 31.2 mph (inside|OUTSIDE)" "$md"'
+for t in aps1 aps3 aps4; do
+    slow=$(grep "^sensitivity,$t,\"scenario.speed=38 mph\"" "$dir/sens/validation.csv" | cut -d, -f8)
+    fast=$(grep "^sensitivity,$t,\"scenario.speed=42 mph\"" "$dir/sens/validation.csv" | cut -d, -f8)
+    check "$t exits faster at 42 than at 38 mph ($fast vs $slow m/s)" 'awk -v a="$fast" -v b="$slow" "BEGIN { exit !(a > b && b > 0) }"'
+done
+check "no NaN or Inf in the sensitivity csv" '! grep -qiE "nan|inf" "$dir/sens/validation.csv"'
 "$cs" validate --bogus >/dev/null 2>&1
 check "unknown option exits 2" '[ $? -eq 2 ]'
 finish
