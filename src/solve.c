@@ -13,7 +13,8 @@
  *           a sagging rope's few kN/m cannot carry, and the rope shuttles from step to step).
  *   height: the same for a contact on the face, lambda = the pull up the face, b = mu F_n + w: the
  *           floor w holds the contact of a slack rope where it is (with b = 0 only the eps term
- *           would, and any dz with eps c |dz| below the tolerance, up to ~0.4 m at 1e-4, would pass).
+ *           would, and any dz with eps c |dz| below the tolerance, up to ~0.4 m at a tolerance of
+ *           1e-4, would pass).
  *   crush:  N(crush) - C(crush)                                             (barrier.c)
  * The clamp's corners are rounded over w = CS_FRICTION_FLOOR Fu (softplus) so that Newton sees a smooth
  * switch between sticking and sliding (docs/assumptions.md).
