@@ -226,6 +226,8 @@ double cs_footing_capacity(const cs_footing_def *f, double load_height);
 double cs_footing_impact_capacity(const cs_footing_def *f, double load_height);
 double cs_footing_pullout_capacity(const cs_footing_def *f);
 void cs_post_attachment(const cs_model *model, int post, const double *tilt, double z, double *out);
+/* Each intact cable's node at post p where a tilt puts it (one sine and cosine for all). */
+void cs_post_place_nodes(const cs_model *model, cs_state *s, int post, const double *tilt);
 double cs_post_solve(const cs_model *model, cs_state *s, int post, double tol, int may_fall);
 double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int post);
 void cs_post_commit(const cs_model *model, cs_state *s, int post);

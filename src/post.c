@@ -24,22 +24,43 @@ int cs_post_held(const cs_model *model, const cs_state *s, int p) {
     return model->posts[p].inertia > 0.0 && s->h <= 0.0;
 }
 
-/* sin(t)/t and its derivative over t, with series near 0. */
-static void sinc_terms(double t, double *s, double *g) {
+/* sin(t)/t, its derivative over t, and cos t, with series near 0 (their next terms below 1e-16). */
+static void sinc_terms(double t, double *s, double *g, double *c) {
     if (t < 1e-4) {
         *s = 1.0 - t * t / 6.0;
         *g = -1.0 / 3.0 + t * t / 30.0;
+        *c = 1.0 - 0.5 * t * t;
     } else {
-        *s = sin(t) / t;
-        *g = (t * cos(t) - sin(t)) / (t * t * t);
+        double sn = sin(t);
+        *c = cos(t);
+        *s = sn / t;
+        *g = (t * *c - sn) / (t * t * t);
     }
 }
 
-/* The point of the post at height z (when upright): pivot + (z + pivot depth) a(alpha). */
+/* The point at height z (when upright) of post p at tilt alpha, s and c from sinc_terms at |alpha|:
+ * pivot + (z + pivot depth) a(alpha). */
+static void attachment_from(const cs_model *model, int p, const double *tilt, double s, double c, double z,
+                            double *out) {
+    double dp = model->posts[p].pivot, l = z + dp;
+    v3_set(out, model->posts[p].x + l * tilt[0] * s, l * tilt[1] * s, -dp + l * c);
+}
+
 void cs_post_attachment(const cs_model *model, int p, const double *tilt, double z, double *out) {
-    double t = v2_norm(tilt[0], tilt[1]), s, g, dp = model->posts[p].pivot, l = z + dp;
-    sinc_terms(t, &s, &g);
-    v3_set(out, model->posts[p].x + l * tilt[0] * s, l * tilt[1] * s, -dp + l * cos(t));
+    double s, g, c;
+    sinc_terms(v2_norm(tilt[0], tilt[1]), &s, &g, &c);
+    attachment_from(model, p, tilt, s, c, z, out);
+}
+
+/* Post p's cable nodes where a tilt puts them. */
+void cs_post_place_nodes(const cs_model *model, cs_state *s, int p, const double *tilt) {
+    double sn, g, c;
+    sinc_terms(v2_norm(tilt[0], tilt[1]), &sn, &g, &c);
+    for (int k = 0; k < model->cable_count; k++) {
+        cs_cable_state *cs = &s->cables[k];
+        int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
+        if (i > 0) attachment_from(model, p, tilt, sn, c, model->cables[k].z, cs->pos + 3 * i);
+    }
 }
 
 /* Jacobian of the post axis a(alpha), 3 x 2, row-major, from sinc_terms' s and g at |alpha|. */
@@ -50,8 +71,8 @@ static void axis_jacobian_from(const double *al, double s, double g, double *j) 
 }
 
 static void axis_jacobian(const double *al, double *j) {
-    double s, g;
-    sinc_terms(v2_norm(al[0], al[1]), &s, &g);
+    double s, g, c;
+    sinc_terms(v2_norm(al[0], al[1]), &s, &g, &c);
     axis_jacobian_from(al, s, g, j);
 }
 
@@ -68,8 +89,8 @@ void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const 
  * q alpha_m, where q = -(3 g + s) / t^2; that loses digits to cancellation near 0 (3 g + s -> 0), so
  * below t = 0.05 its series 1/15 - t^2/210 + t^4/7560 (next term t^6/498960: below 1e-16 there). */
 void cs_post_axis_jacobian(const double *tilt, double *j, double *dj) {
-    double t = v2_norm(tilt[0], tilt[1]), s, g, t2 = t * t;
-    sinc_terms(t, &s, &g);
+    double t = v2_norm(tilt[0], tilt[1]), s, g, c, t2 = t * t;
+    sinc_terms(t, &s, &g, &c);
     double q = t < 0.05 ? 1.0 / 15.0 - t2 / 210.0 + t2 * t2 / 7560.0 : -(3.0 * g + s) / t2;
     axis_jacobian_from(tilt, s, g, j);
     for (int m = 0; m < 2; m++) {
@@ -178,14 +199,6 @@ void cs_post_residual_now(const cs_model *model, const cs_state *s, int p, doubl
     residual_at(model, s, p, s->posts[p].tilt, r);
 }
 
-/* The post's cable nodes where a tilt puts them. */
-static void place_nodes(const cs_model *model, cs_state *s, int p, const double *tilt) {
-    for (int c = 0; c < model->cable_count; c++) {
-        cs_cable_state *cs = &s->cables[c];
-        int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
-        if (i > 0) cs_post_attachment(model, p, tilt, model->cables[c].z, cs->pos + 3 * i);
-    }
-}
 
 static void entry_material(const cs_model *model, const cs_state *s, int p, double *m_entry) {
     for (int c = 0; c < model->cable_count; c++) {
@@ -206,7 +219,7 @@ double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int p) {
     if (!cs_post_standing(ps) || ps->captured) return 0.0;
     double r[2], entry = -1.0;
     for (int it = 0; it < 20; it++) {
-        place_nodes(model, s, p, ps->tilt);
+        cs_post_place_nodes(model, s, p, ps->tilt);
         cs_post_residual_now(model, s, p, r);
         double rn = v2_norm(r[0], r[1]) / pm->moment_cap;
         if (entry < 0.0) entry = rn;
@@ -214,7 +227,7 @@ double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int p) {
         double jac[4], h = 1e-7, a0[2] = {ps->tilt[0], ps->tilt[1]}, rp[2];
         for (int k = 0; k < 2; k++) {
             ps->tilt[k] = a0[k] + h;
-            place_nodes(model, s, p, ps->tilt);
+            cs_post_place_nodes(model, s, p, ps->tilt);
             cs_post_residual_now(model, s, p, rp);
             jac[k] = (rp[0] - r[0]) / h, jac[2 + k] = (rp[1] - r[1]) / h;
             ps->tilt[k] = a0[k];
@@ -231,7 +244,7 @@ double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int p) {
             break;
         }
     }
-    place_nodes(model, s, p, ps->tilt);
+    cs_post_place_nodes(model, s, p, ps->tilt);
     return entry;
 }
 

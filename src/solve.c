@@ -274,15 +274,10 @@ static void scatter(const cs_model *model, cs_state *s, const cs_solver *w, int 
     }
     cs_contact_place_corners(model, s, s->crush);
     cs_post_place_captured(model, s, s->crush, NULL, NULL);
-    for (int c = 0; c < model->cable_count; c++) {
-        cs_cable_state *cs = &s->cables[c];
-        if (cs->status != CS_CABLE_INTACT) continue;
-        for (int i = 1; i + 1 < cs->node_count; i++)
-            if (cs->node[i] >= 0)
-                cs_post_attachment(model, cs->node[i], s->posts[cs->node[i]].tilt, model->cables[c].z,
-                                   cs->pos + 3 * i);
-        cs_cable_update_tensions(&model->cables[c], cs);
-    }
+    for (int p = 0; p < model->post_count; p++)
+        cs_post_place_nodes(model, s, p, s->posts[p].tilt);
+    for (int c = 0; c < model->cable_count; c++)
+        if (s->cables[c].status == CS_CABLE_INTACT) cs_cable_update_tensions(&model->cables[c], &s->cables[c]);
 }
 
 /* ---- residuals ---- */
