@@ -19,7 +19,7 @@ static void face_axis(const cs_state *s, double *x) {
 
 /* Normal force on the face at the state as it stands: the cables through the corners plus the
  * pushes of captured posts, along the vehicle's heading. */
-double cs_face_normal_force_now(const cs_model *model, cs_state *s) {
+double cs_face_normal_force_now(const cs_model *model, cs_state *s, const double *chords) {
     double ax[3], f[3] = {0.0, 0.0, 0.0}, mo[3] = {0.0, 0.0, 0.0};
     face_axis(s, ax);
     double n = cs_post_place_captured(model, s, s->crush, f, mo) > 0.0 ? -v3_dot(f, ax) : 0.0;
@@ -29,7 +29,7 @@ double cs_face_normal_force_now(const cs_model *model, cs_state *s) {
         for (int i = 1; i + 1 < cs->node_count; i++) {
             if (cs->node[i] != CS_NODE_LEFT && cs->node[i] != CS_NODE_RIGHT) continue;
             double fc[3];
-            cs_node_force(cs, i, fc);
+            cs_node_force(cs, i, chords ? chords + 4 * (size_t)c * (size_t)model->max_nodes : NULL, fc);
             n -= v3_dot(fc, ax);
         }
     }
@@ -51,7 +51,7 @@ static double face_normal_force(const cs_model *model, cs_state *s, double crush
     }
     double saved = s->crush;
     s->crush = crush;
-    double n = cs_face_normal_force_now(model, s);
+    double n = cs_face_normal_force_now(model, s, NULL);
     s->crush = saved;
     return n;
 }
@@ -218,8 +218,8 @@ static double solve_at_pose(const cs_model *model, cs_state *s) {
 double cs_barrier_solve(const cs_model *model, cs_state *s) {
     double worst = solve_at_pose(model, s);
     for (int c = 0; c < model->cable_count; c++)
-        cs_cable_update_tensions(&model->cables[c], &s->cables[c]);
-    s->face_force = cs_face_loaded(model, s) ? cs_face_normal_force_now(model, s) : 0.0;
+        cs_cable_update_tensions(&model->cables[c], &s->cables[c], NULL);
+    s->face_force = cs_face_loaded(model, s) ? cs_face_normal_force_now(model, s, NULL) : 0.0;
     return worst;
 }
 
@@ -234,7 +234,7 @@ void cs_barrier_force(const cs_model *model, cs_state *s) {
         for (int i = 1; i + 1 < cs->node_count; i++) {
             if (cs->node[i] != CS_NODE_LEFT && cs->node[i] != CS_NODE_RIGHT) continue;
             double f[3], r[3], t[3];
-            cs_node_force(cs, i, f);
+            cs_node_force(cs, i, NULL, f);
             v3_add(s->force, s->force, f);
             v3_sub(r, cs->pos + 3 * i, s->pos);
             v3_cross(t, r, f);

@@ -60,12 +60,15 @@ double cs_span_length(const cs_cable_state *cs, int i) {
     return v3_dist(cs->pos + 3 * i, cs->pos + 3 * (i + 1));
 }
 
-/* Sag term of span i of chord length l, w_n^2 l^3 = w^2 h^2 l: its weight across the chord (w_n = w h / l,
- * h the chord's length in plan) over its chord length cubed. */
-static double span_sag(const cs_rope *r, const cs_cable_state *cs, int i, double l) {
-    const double *a = cs->pos + 3 * i, *b = cs->pos + 3 * (i + 1);
-    double dx = b[0] - a[0], dy = b[1] - a[1];
-    return r->w * r->w * (dx * dx + dy * dy) * l;
+void cs_span_chord(const cs_cable_state *cs, int i, double *d) {
+    v3_sub(d, cs->pos + 3 * (i + 1), cs->pos + 3 * i);
+    d[3] = v3_norm(d);
+}
+
+/* Sag term of a span with chord d (cs_span_chord), w_n^2 l^3 = w^2 h^2 l: its weight across the chord
+ * (w_n = w h / l, h the chord's length in plan) over its chord length cubed. */
+static double span_sag(const cs_rope *r, const double *d) {
+    return r->w * r->w * (d[0] * d[0] + d[1] * d[1]) * d[3];
 }
 
 /* Tension of a span with `material` of rope (plastic strain ep) over a chord of `length`, hanging by its
@@ -123,24 +126,34 @@ static double span_tension_at(const cs_rope *r, double length, double material, 
     return span_tension_sag(r, length, material, ep, q, &arc, &yields);
 }
 
+/* fmin(fmax(0, x), hi) without libm's calls (the same for hi >= 0). */
+static double clamp_to(double x, double hi) {
+    return x > 0.0 ? (x < hi ? x : hi) : 0.0;
+}
+
 /* Plastic strain of span i with its ends at material coordinates lo and hi: the rope it kept since the
  * last commit at its own plastic strain, plus the rope that slid in across either end at the plastic
  * strain of the span it came from (the permanent stretch travels with the rope; first-order upwind). */
 static double span_plastic(const cs_cable_state *cs, int i, double lo, double hi) {
     double s = hi - lo;
     if (s <= 1e-12) return cs->ep[i];
-    double gl = i > 0 ? fmin(fmax(0.0, cs->m_commit[i] - lo), s) : 0.0;
-    double gr = i + 2 < cs->node_count ? fmin(fmax(0.0, hi - cs->m_commit[i + 1]), s - gl) : 0.0;
+    double gl = i > 0 ? clamp_to(cs->m_commit[i] - lo, s) : 0.0;
+    double gr = i + 2 < cs->node_count ? clamp_to(hi - cs->m_commit[i + 1], s - gl) : 0.0;
     double e = cs->ep[i] * (s - gl - gr);
     if (gl > 0.0) e += cs->ep[i - 1] * gl;
     if (gr > 0.0) e += cs->ep[i + 1] * gr;
     return e / s;
 }
 
+double cs_span_tension_chord(const cs_cable_model *cm, const cs_cable_state *cs, int i, double *d) {
+    cs_span_chord(cs, i, d);
+    return span_tension_at(&cm->rope, d[3], cs->m[i + 1] - cs->m[i],
+                           span_plastic(cs, i, cs->m[i], cs->m[i + 1]), span_sag(&cm->rope, d));
+}
+
 double cs_span_tension(const cs_cable_model *cm, const cs_cable_state *cs, int i) {
-    double l = cs_span_length(cs, i);
-    return span_tension_at(&cm->rope, l, cs->m[i + 1] - cs->m[i], span_plastic(cs, i, cs->m[i], cs->m[i + 1]),
-                           span_sag(&cm->rope, cs, i, l));
+    double d[4];
+    return cs_span_tension_chord(cm, cs, i, d);
 }
 
 /* Slope of the backbone at strain e (0 on the plastic plateau). */
@@ -175,13 +188,13 @@ static void span_tension_partials(const cs_rope *r, double length, double materi
     d[3] = dc_dq / den;
 }
 
-/* Tension of span i and its gradient (cs_span_grad). The plastic strain that slides in with the rope
- * (span_plastic) enters by a difference quotient over a nanometre. */
-void cs_span_tension_grad(const cs_cable_model *cm, const cs_cable_state *cs, int i, cs_span_grad *g) {
+/* Tension of span i with chord dv (cs_span_chord) and its gradient (cs_span_grad). The plastic strain that
+ * slides in with the rope (span_plastic) enters by a difference quotient over a nanometre. */
+void cs_span_tension_grad(const cs_cable_model *cm, const cs_cable_state *cs, int i, const double *dv,
+                          cs_span_grad *g) {
     const cs_rope *r = &cm->rope;
-    const double *a = cs->pos + 3 * i, *b = cs->pos + 3 * (i + 1);
-    double dv[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, l = v3_norm(dv), lo = cs->m[i], hi = cs->m[i + 1];
-    double q = span_sag(r, cs, i, l), ep = span_plastic(cs, i, lo, hi), arc, d[4];
+    double lo = cs->m[i], hi = cs->m[i + 1];
+    double l = dv[3], q = span_sag(r, dv), ep = span_plastic(cs, i, lo, hi), arc, d[4];
     int yields;
     g->t = span_tension_sag(r, l, hi - lo, ep, q, &arc, &yields);
     g->l = l;
@@ -201,23 +214,30 @@ void cs_span_tension_grad(const cs_cable_model *cm, const cs_cable_state *cs, in
 /* Rope (no plastic set) that span i holds at tension t: the inverse of the span law,
  * s (1 + t/EA) = l + q / (24 t^2); weightless or without tension, l / (1 + t/EA). */
 double cs_span_material_at(const cs_cable_model *cm, const cs_cable_state *cs, int i, double t) {
-    double l = cs_span_length(cs, i), q = span_sag(&cm->rope, cs, i, l);
+    double d[4];
+    cs_span_chord(cs, i, d);
+    double l = d[3], q = span_sag(&cm->rope, d);
     if (t > 0.0) l += q / (24.0 * t * t);
     return l / (1.0 + t / cm->rope.ea);
 }
 
-void cs_cable_update_tensions(const cs_cable_model *cm, cs_cable_state *cs) {
-    for (int i = 0; i + 1 < cs->node_count; i++)
-        cs->tension[i] = cs->status == CS_CABLE_INTACT ? cs_span_tension(cm, cs, i) : 0.0;
+void cs_cable_update_tensions(const cs_cable_model *cm, cs_cable_state *cs, double *chords) {
+    for (int i = 0; i + 1 < cs->node_count; i++) {
+        double own[4], *d = chords ? chords + 4 * i : own;
+        cs->tension[i] = cs->status == CS_CABLE_INTACT ? cs_span_tension_chord(cm, cs, i, d) : 0.0;
+    }
 }
 
 /* The capstan exponent mu theta at interior node i, theta the turning angle of the path; the ratio R is
  * exp(mu theta). */
 double cs_node_capstan_exponent(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs,
-                                int i) {
-    double a[3], b[3];
-    v3_sub(a, cs->pos + 3 * i, cs->pos + 3 * (i - 1));
-    v3_sub(b, cs->pos + 3 * (i + 1), cs->pos + 3 * i);
+                                int i, const double *chords) {
+    double own[8];
+    if (!chords) {
+        v3_sub(own, cs->pos + 3 * i, cs->pos + 3 * (i - 1));
+        v3_sub(own + 4, cs->pos + 3 * (i + 1), cs->pos + 3 * i);
+    }
+    const double *a = chords ? chords + 4 * (i - 1) : own, *b = a + 4;
     double x[3];
     v3_cross(x, a, b);
     double theta = atan2(v3_norm(x), v3_dot(a, b)); /* turning angle, accurate near 0 and pi */
@@ -228,7 +248,7 @@ double cs_node_capstan_exponent(const cs_model *model, const cs_cable_model *cm,
 
 double cs_node_friction_ratio(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs,
                               int i) {
-    return exp(cs_node_capstan_exponent(model, cm, cs, i));
+    return exp(cs_node_capstan_exponent(model, cm, cs, i, NULL));
 }
 
 /* Solve node i's sliding condition exactly (regula falsi, Illinois variant) with its neighbours'
@@ -238,8 +258,9 @@ double cs_cable_slide_node(const cs_model *model, const cs_cable_model *cm, cs_c
     int id = cs->node[i];
     if (id >= 0 && model->posts[id].clamped) return 0.0;
     const cs_rope *r = &cm->rope;
-    double ll = cs_span_length(cs, i - 1), lr = cs_span_length(cs, i);
-    double ql = span_sag(r, cs, i - 1, ll), qr = span_sag(r, cs, i, lr);
+    double dl[4], dr[4];
+    cs_span_chord(cs, i - 1, dl), cs_span_chord(cs, i, dr);
+    double ll = dl[3], lr = dr[3], ql = span_sag(r, dl), qr = span_sag(r, dr);
     double m0 = cs->m[i - 1], m2 = cs->m[i + 1], m = cs->m[i];
     double tl = span_tension_at(r, ll, m - m0, span_plastic(cs, i - 1, m0, m), ql);
     double tr = span_tension_at(r, lr, m2 - m, span_plastic(cs, i, m, m2), qr);
@@ -335,15 +356,13 @@ void cs_cable_remove_node(cs_cable_state *cs, int at) {
 }
 
 /* Force the cable's two spans put on node i (toward its neighbours), N. */
-void cs_node_force(const cs_cable_state *cs, int i, double *f) {
+void cs_node_force(const cs_cable_state *cs, int i, const double *chords, double *f) {
     v3_set(f, 0.0, 0.0, 0.0);
-    for (int k = -1; k <= 1; k += 2) {
-        int j = i + k, span = k < 0 ? i - 1 : i;
-        if (j < 0 || j >= cs->node_count) continue;
-        double d[3];
-        v3_sub(d, cs->pos + 3 * j, cs->pos + 3 * i);
-        double n = v3_norm(d);
-        if (n > 1e-12) v3_addto(f, d, cs->tension[span] / n);
+    for (int span = i - 1; span <= i; span++) {
+        if (span < 0 || span + 1 >= cs->node_count) continue;
+        double own[4];
+        const double *d = chords ? chords + 4 * span : (cs_span_chord(cs, span, own), own);
+        if (d[3] > 1e-12) v3_addto(f, d, (span < i ? -cs->tension[span] : cs->tension[span]) / d[3]);
     }
 }
 
@@ -353,8 +372,11 @@ double cs_cable_stored_energy(const cs_cable_model *cm, const cs_cable_state *cs
     for (int i = 0; i + 1 < cs->node_count; i++) {
         double t = cs->tension[i];
         e += cs_rope_elastic_energy(&cm->rope, t, cs->m[i + 1] - cs->m[i]);
-        if (t > 0.0) /* the sag's weight below the chord */
-            e -= span_sag(&cm->rope, cs, i, cs_span_length(cs, i)) / (12.0 * t);
+        if (t > 0.0) { /* the sag's weight below the chord */
+            double d[4];
+            cs_span_chord(cs, i, d);
+            e -= span_sag(&cm->rope, d) / (12.0 * t);
+        }
     }
     return e;
 }
@@ -373,8 +395,9 @@ void cs_cable_commit(const cs_model *model, int c, cs_state *s) {
     for (int i = 0; i + 1 < cs->node_count; i++) {
         double sm = cs->m[i + 1] - cs->m[i], e;
         int yields;
-        double l = cs_span_length(cs, i);
-        double t = span_tension_sag(r, l, sm, cs->ep[i], span_sag(r, cs, i, l), &e, &yields);
+        double d[4];
+        cs_span_chord(cs, i, d);
+        double t = span_tension_sag(r, d[3], sm, cs->ep[i], span_sag(r, d), &e, &yields);
         cs->tension[i] = t;
         if (yields && sm > 1e-12) {
             double ep = e - t / r->ea;

@@ -66,9 +66,10 @@ static double body_z_for(const cs_model *model, const cs_state *s, int k, double
 }
 
 /* The cable's pull on contact node i in the vehicle frame: up the face (fz) and normal to it (fn). */
-void cs_contact_face_force(const cs_model *model, const cs_state *s, int c, int i, double *fz, double *fn) {
+void cs_contact_face_force(const cs_model *model, const cs_state *s, int c, int i, const double *chords,
+                           double *fz, double *fn) {
     double f[3], fb[3];
-    cs_node_force(&s->cables[c], i, f);
+    cs_node_force(&s->cables[c], i, chords, f);
     quat_unrotate(fb, s->quat, f);
     *fz = fb[2];
     *fn = v2_norm(fb[0], fb[1]);
@@ -85,7 +86,7 @@ static double height_excess(const cs_model *model, cs_state *s, int c, int i, in
     cs->tension[i - 1] = cs_span_tension(cm, cs, i - 1);
     cs->tension[i] = cs_span_tension(cm, cs, i);
     double fz, fn;
-    cs_contact_face_force(model, s, c, i, &fz, &fn);
+    cs_contact_face_force(model, s, c, i, NULL, &fz, &fn);
     return dir * fz - model->vehicle.def.face_friction * fn - CS_FRICTION_FLOOR * cm->rope.fu;
 }
 
@@ -101,7 +102,7 @@ double cs_contact_solve_height(const cs_model *model, cs_state *s, int c, int i,
     {
         double fz, fn;
         height_excess(model, s, c, i, k, cs->corner_z[k], 1);
-        cs_contact_face_force(model, s, c, i, &fz, &fn);
+        cs_contact_face_force(model, s, c, i, NULL, &fz, &fn);
         double b = model->vehicle.def.face_friction * fn + CS_FRICTION_FLOOR * fu, dz = cs->corner_z[k] - z0;
         entry =
             (fabs(fz) > b || (dz != 0.0 && fabs(fabs(fz) - b) > tol * fu)) ? fabs(fabs(fz) - b) / fu : 0.0;
@@ -154,7 +155,7 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
     for (int i = cs->node_count - 2; i >= 1; i--) {
         if (!is_corner(cs->node[i])) continue;
         double f[3], fb[3];
-        cs_node_force(cs, i, f);
+        cs_node_force(cs, i, NULL, f);
         quat_unrotate(fb, s->quat, f);
         if (fb[0] >= 0.0) cs_cable_remove_node(cs, i);
     }
@@ -206,7 +207,7 @@ void cs_contact_commit(const cs_model *model, cs_state *s) {
             if (!is_corner(cs->node[i])) continue;
             int k = cs->node[i] == CS_NODE_LEFT ? 0 : 1;
             double fz, fn;
-            cs_contact_face_force(model, s, c, i, &fz, &fn);
+            cs_contact_face_force(model, s, c, i, NULL, &fz, &fn);
             s->e_friction += fabs(cs->corner_z[k] - cs->corner_z_commit[k]) * fabs(fz);
             cs->corner_z_commit[k] = cs->corner_z[k];
         }

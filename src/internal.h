@@ -137,7 +137,9 @@ typedef struct cs_solver {
     int lu_valid, lu_n, lu_kl, lu_ku;
     double *band;               /* banded Jacobian / LU factors */
     struct cs_span_grad *spans; /* [cable_count * max_nodes] each span's tension gradient (Jacobian) */
-    double *axes;               /* [post_count * 18] each post axis' Jacobian and its tilt derivatives */
+    double *chords; /* [4 cable_count max_nodes] each span's chord at the last placement (cs_span_chord) */
+    double *axes;   /* [post_count * 18] each post axis' Jacobian (at the last placement) and its tilt
+                     * derivatives (the Jacobian's) */
     size_t band_capacity;
     int *pivot;
     int kl, ku, band_width;
@@ -198,20 +200,28 @@ double cs_rope_elastic_energy(const cs_rope *rope, double tension, double materi
 
 /* ---- cable paths (cable.c) ---- */
 double cs_span_length(const cs_cable_state *cs, int span);
+/* A span's chord d = p_{span+1} - p_span and its length in d[3]. The functions below that take `chords`
+ * (a cable's, 4 doubles a span as here; the solver keeps them from its last placement) form them from
+ * the node positions where it is NULL. */
+void cs_span_chord(const cs_cable_state *cs, int span, double *d);
 double cs_span_tension(const cs_cable_model *cm, const cs_cable_state *cs, int span);
+/* The same, with the span's chord put into d. */
+double cs_span_tension_chord(const cs_cable_model *cm, const cs_cable_state *cs, int span, double *d);
 /* A span's tension with its gradient, for the solver's Jacobian: along the chord d = p_{i+1} - p_i and
  * with the material coordinates of its ends (m_i, m_{i+1}); its length and unit chord. */
 typedef struct cs_span_grad {
     double t, l, u[3], dt_dd[3], dt_dm[2];
 } cs_span_grad;
-void cs_span_tension_grad(const cs_cable_model *cm, const cs_cable_state *cs, int span, cs_span_grad *g);
+void cs_span_tension_grad(const cs_cable_model *cm, const cs_cable_state *cs, int span, const double *chord,
+                          cs_span_grad *g);
 double cs_span_material_at(const cs_cable_model *cm, const cs_cable_state *cs, int span, double t);
-void cs_cable_update_tensions(const cs_cable_model *cm, cs_cable_state *cs);
+/* Every span's tension, and its chord into chords if not NULL. */
+void cs_cable_update_tensions(const cs_cable_model *cm, cs_cable_state *cs, double *chords);
 double cs_cable_slide_node(const cs_model *model, const cs_cable_model *cm, cs_cable_state *cs, int i,
                            double tol);
 /* mu theta at interior node i, theta the path's turning angle there; the ratio is its exponential. */
 double cs_node_capstan_exponent(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs,
-                                int i);
+                                int i, const double *chords);
 double cs_node_friction_ratio(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs,
                               int i);
 void cs_cable_insert_node(cs_cable_state *cs, int at, int id, const double *p);
@@ -219,15 +229,16 @@ void cs_cable_remove_node(cs_cable_state *cs, int at);
 void cs_cable_commit(const cs_model *model, int c, cs_state *s);
 int cs_cable_check_break(const cs_model *model, int c, cs_state *s);
 double cs_cable_stored_energy(const cs_cable_model *cm, const cs_cable_state *cs);
-void cs_node_force(const cs_cable_state *cs, int i, double *f);
+void cs_node_force(const cs_cable_state *cs, int i, const double *chords, double *f);
 
 /* ---- posts and footings (post.c, footing.c) ---- */
 double cs_footing_capacity(const cs_footing_def *f, double load_height);
 double cs_footing_impact_capacity(const cs_footing_def *f, double load_height);
 double cs_footing_pullout_capacity(const cs_footing_def *f);
 void cs_post_attachment(const cs_model *model, int post, const double *tilt, double z, double *out);
-/* Each intact cable's node at post p where a tilt puts it (one sine and cosine for all). */
-void cs_post_place_nodes(const cs_model *model, cs_state *s, int post, const double *tilt);
+/* Each intact cable's node at post p where a tilt puts it (one sine and cosine for all), and the post
+ * axis' Jacobian there (as cs_post_axis_jacobian's j) into axis if not NULL. */
+void cs_post_place_nodes(const cs_model *model, cs_state *s, int post, const double *tilt, double *axis);
 double cs_post_solve(const cs_model *model, cs_state *s, int post, double tol, int may_fall);
 double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int post);
 void cs_post_commit(const cs_model *model, cs_state *s, int post);
@@ -238,7 +249,10 @@ double cs_post_kinetic_energy(const cs_model *model, const cs_state *s, int post
 int cs_post_held(const cs_model *model, const cs_state *s, int post);
 int cs_post_standing(const cs_post_state *ps);
 int cs_post_check_failure(const cs_model *model, cs_state *s, int post);
-void cs_post_residual_now(const cs_model *model, const cs_state *s, int post, double *r);
+/* chords: every cable's (max_nodes spans each), axis: the axis' Jacobian at the post's tilt; NULL forms
+ * them. */
+void cs_post_residual_now(const cs_model *model, const cs_state *s, int post, const double *chords,
+                          const double *axis, double *r);
 void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double *q);
 /* For the solver's Jacobian: the post axis' Jacobian and its tilt derivatives, and the slope of
  * -(resistance + inertial moment) at the post's tilt. */
@@ -265,7 +279,8 @@ double cs_vehicle_potential_energy(const cs_model *model, const cs_state *s);
 void cs_contact_update(const cs_model *model, cs_state *s);
 void cs_contact_place_corners(const cs_model *model, cs_state *s, double crush);
 void cs_contact_drop_failed(const cs_model *model, cs_state *s);
-void cs_contact_face_force(const cs_model *model, const cs_state *s, int c, int i, double *fz, double *fn);
+void cs_contact_face_force(const cs_model *model, const cs_state *s, int c, int i, const double *chords,
+                           double *fz, double *fn);
 double cs_contact_solve_height(const cs_model *model, cs_state *s, int c, int i, int k, double tol);
 void cs_contact_commit(const cs_model *model, cs_state *s);
 int cs_contact_check_slip(const cs_model *model, cs_state *s);
@@ -278,7 +293,8 @@ double cs_barrier_newton(const cs_model *model, cs_state *s);
 int cs_solver_linearize(const cs_model *model, cs_state *s, int cap, int *kind, double *x, double *r,
                         double *jac);
 void cs_solver_residual(const cs_model *model, cs_state *s, int n, const double *x, double *r);
-double cs_face_normal_force_now(const cs_model *model, cs_state *s);
+/* chords: every cable's (max_nodes spans each), or NULL. */
+double cs_face_normal_force_now(const cs_model *model, cs_state *s, const double *chords);
 int cs_face_loaded(const cs_model *model, const cs_state *s);
 int cs_solver_init(const cs_model *model, cs_solver *w);
 void cs_solver_free(cs_solver *w);

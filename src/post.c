@@ -52,22 +52,23 @@ void cs_post_attachment(const cs_model *model, int p, const double *tilt, double
     attachment_from(model, p, tilt, s, c, z, out);
 }
 
-/* Post p's cable nodes where a tilt puts them. */
-void cs_post_place_nodes(const cs_model *model, cs_state *s, int p, const double *tilt) {
-    double sn, g, c;
-    sinc_terms(v2_norm(tilt[0], tilt[1]), &sn, &g, &c);
-    for (int k = 0; k < model->cable_count; k++) {
-        cs_cable_state *cs = &s->cables[k];
-        int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
-        if (i > 0) attachment_from(model, p, tilt, sn, c, model->cables[k].z, cs->pos + 3 * i);
-    }
-}
-
 /* Jacobian of the post axis a(alpha), 3 x 2, row-major, from sinc_terms' s and g at |alpha|. */
 static void axis_jacobian_from(const double *al, double s, double g, double *j) {
     j[0] = s + al[0] * al[0] * g, j[1] = al[0] * al[1] * g;
     j[2] = al[0] * al[1] * g, j[3] = s + al[1] * al[1] * g;
     j[4] = -s * al[0], j[5] = -s * al[1];
+}
+
+/* Post p's cable nodes where a tilt puts them, and its axis' Jacobian into axis if not NULL. */
+void cs_post_place_nodes(const cs_model *model, cs_state *s, int p, const double *tilt, double *axis) {
+    double sn, g, c;
+    sinc_terms(v2_norm(tilt[0], tilt[1]), &sn, &g, &c);
+    if (axis) axis_jacobian_from(tilt, sn, g, axis);
+    for (int k = 0; k < model->cable_count; k++) {
+        cs_cable_state *cs = &s->cables[k];
+        int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
+        if (i > 0) attachment_from(model, p, tilt, sn, c, model->cables[k].z, cs->pos + 3 * i);
+    }
 }
 
 static void axis_jacobian(const double *al, double *j) {
@@ -157,15 +158,17 @@ void cs_post_resistance_slope(const cs_model *model, const cs_state *s, int p, d
 
 /* Residual of post p at a tilt, its cable nodes placed there and their tensions current:
  * r = Q_cables - Q_resist, less the swing's inertial moment. */
-static void residual_at(const cs_model *model, const cs_state *s, int p, const double *tilt, double *r) {
-    double j[6], q[2] = {0.0, 0.0};
-    axis_jacobian(tilt, j);
+static void residual_at(const cs_model *model, const cs_state *s, int p, const double *tilt,
+                        const double *chords, const double *axis, double *r) {
+    double own[6], q[2] = {0.0, 0.0};
+    if (!axis) axis_jacobian(tilt, own);
+    const double *j = axis ? axis : own;
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
         if (i < 0) continue;
         double f[3], l = model->cables[c].z + model->posts[p].pivot;
-        cs_node_force(cs, i, f);
+        cs_node_force(cs, i, chords ? chords + 4 * (size_t)c * (size_t)model->max_nodes : NULL, f);
         q[0] += l * (j[0] * f[0] + j[2] * f[1] + j[4] * f[2]);
         q[1] += l * (j[1] * f[0] + j[3] * f[1] + j[5] * f[2]);
     }
@@ -191,14 +194,14 @@ static void post_residual(const cs_model *model, cs_state *s, int p, const doubl
         cs->tension[i - 1] = cs_span_tension(cm, cs, i - 1);
         cs->tension[i] = cs_span_tension(cm, cs, i);
     }
-    residual_at(model, s, p, tilt, r);
+    residual_at(model, s, p, tilt, NULL, NULL, r);
 }
 
 /* Residual at the state as it stands (nodes placed, tensions current). */
-void cs_post_residual_now(const cs_model *model, const cs_state *s, int p, double *r) {
-    residual_at(model, s, p, s->posts[p].tilt, r);
+void cs_post_residual_now(const cs_model *model, const cs_state *s, int p, const double *chords,
+                          const double *axis, double *r) {
+    residual_at(model, s, p, s->posts[p].tilt, chords, axis, r);
 }
-
 
 static void entry_material(const cs_model *model, const cs_state *s, int p, double *m_entry) {
     for (int c = 0; c < model->cable_count; c++) {
@@ -219,16 +222,16 @@ double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int p) {
     if (!cs_post_standing(ps) || ps->captured) return 0.0;
     double r[2], entry = -1.0;
     for (int it = 0; it < 20; it++) {
-        cs_post_place_nodes(model, s, p, ps->tilt);
-        cs_post_residual_now(model, s, p, r);
+        cs_post_place_nodes(model, s, p, ps->tilt, NULL);
+        cs_post_residual_now(model, s, p, NULL, NULL, r);
         double rn = v2_norm(r[0], r[1]) / pm->moment_cap;
         if (entry < 0.0) entry = rn;
         if (rn <= 1e-14) break;
         double jac[4], h = 1e-7, a0[2] = {ps->tilt[0], ps->tilt[1]}, rp[2];
         for (int k = 0; k < 2; k++) {
             ps->tilt[k] = a0[k] + h;
-            cs_post_place_nodes(model, s, p, ps->tilt);
-            cs_post_residual_now(model, s, p, rp);
+            cs_post_place_nodes(model, s, p, ps->tilt, NULL);
+            cs_post_residual_now(model, s, p, NULL, NULL, rp);
             jac[k] = (rp[0] - r[0]) / h, jac[2 + k] = (rp[1] - r[1]) / h;
             ps->tilt[k] = a0[k];
         }
@@ -244,7 +247,7 @@ double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int p) {
             break;
         }
     }
-    cs_post_place_nodes(model, s, p, ps->tilt);
+    cs_post_place_nodes(model, s, p, ps->tilt, NULL);
     return entry;
 }
 
@@ -403,7 +406,7 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
         if (i <= 0) continue;
         double fc[3];
-        cs_node_force(cs, i, fc);
+        cs_node_force(cs, i, NULL, fc);
         v3_add(f, f, fc);
     }
     /* base shear from the post's own moment over the load height (what equilibrium allows), so a

@@ -27,6 +27,7 @@
 #include "vec3.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -77,6 +78,7 @@ int cs_solver_init(const cs_model *model, cs_solver *w) {
     w->band_capacity = n * per_row;
     w->band = calloc(w->band_capacity, sizeof *w->band);
     w->spans = calloc(nc * nn + 1, sizeof *w->spans);
+    w->chords = calloc(4 * nc * nn + 1, sizeof *w->chords);
     w->axes = calloc(18 * np + 1, sizeof *w->axes);
     w->pivot = calloc(n, sizeof *w->pivot);
     w->key_count = 2 * np + nc * (np + 2) + 2 * nc + 1; /* see slot_key */
@@ -84,7 +86,7 @@ int cs_solver_init(const cs_model *model, cs_solver *w) {
     w->last_step = calloc(w->key_count, sizeof *w->last_step);
     if (!w->slots || !w->slots_lu || !w->slots_kept || !w->slots_sorted || !w->last || !w->last_step ||
         !w->tilt_index || !w->node_index || !w->height_index || !w->x || !w->updates || !w->band ||
-        !w->pivot || !w->spans || !w->axes)
+        !w->pivot || !w->spans || !w->chords || !w->axes)
         return -1;
     w->r = w->x + n, w->dx = w->x + 2 * n, w->xt = w->x + 3 * n, w->rt = w->x + 4 * n, w->kept = w->x + 5 * n;
     return 0;
@@ -100,7 +102,7 @@ void cs_solver_reset(cs_solver *w) {
 void cs_solver_free(cs_solver *w) {
     free(w->slots), free(w->slots_lu), free(w->slots_kept), free(w->slots_sorted), free(w->tilt_index),
         free(w->node_index), free(w->height_index), free(w->x), free(w->updates), free(w->band),
-        free(w->pivot), free(w->last), free(w->last_step), free(w->spans), free(w->axes);
+        free(w->pivot), free(w->last), free(w->last_step), free(w->spans), free(w->chords), free(w->axes);
     memset(w, 0, sizeof *w);
 }
 
@@ -263,7 +265,12 @@ static void gather(const cs_state *s, const cs_solver *w, int n, double *x) {
     }
 }
 
-/* Put x into the state and bring every node position and span tension in line with it. */
+/* Cable c's span chords from the last placement. */
+static double *chords_of(const cs_model *model, const cs_solver *w, int c) {
+    return w->chords + 4 * (size_t)c * (size_t)model->max_nodes;
+}
+
+/* Put x into the state and bring every node position, span chord and tension in line with it. */
 static void scatter(const cs_model *model, cs_state *s, const cs_solver *w, int n, const double *x) {
     for (int k = 0; k < n; k++) {
         const slot *u = &w->slots[k];
@@ -275,9 +282,10 @@ static void scatter(const cs_model *model, cs_state *s, const cs_solver *w, int 
     cs_contact_place_corners(model, s, s->crush);
     cs_post_place_captured(model, s, s->crush, NULL, NULL);
     for (int p = 0; p < model->post_count; p++)
-        cs_post_place_nodes(model, s, p, s->posts[p].tilt);
+        cs_post_place_nodes(model, s, p, s->posts[p].tilt, w->tilt_index[p] >= 0 ? w->axes + 18 * p : NULL);
     for (int c = 0; c < model->cable_count; c++)
-        if (s->cables[c].status == CS_CABLE_INTACT) cs_cable_update_tensions(&model->cables[c], &s->cables[c]);
+        if (s->cables[c].status == CS_CABLE_INTACT)
+            cs_cable_update_tensions(&model->cables[c], &s->cables[c], chords_of(model, w, c));
 }
 
 /* ---- residuals ---- */
@@ -291,13 +299,14 @@ static double smooth_clamp(double y, double b, double w) {
     return y - w * softplus((y - b) / w) + w * softplus((-y - b) / w);
 }
 
-static double node_residual(const cs_model *model, const cs_state *s, int c, int i) {
+static double node_residual(const cs_model *model, const cs_state *s, const cs_solver *w, int c, int i) {
     const cs_cable_model *cm = &model->cables[c];
     const cs_cable_state *cs = &s->cables[c];
+    const double *ch = chords_of(model, w, c);
     double tl = cs->tension[i - 1], tr = cs->tension[i];
-    double mu_theta = cs_node_capstan_exponent(model, cm, cs, i);
+    double mu_theta = cs_node_capstan_exponent(model, cm, cs, i, ch);
     double lambda = tl - tr, b = tanh(0.5 * mu_theta) * (tl + tr);
-    double cstiff = cm->rope.ea / (cs_span_length(cs, i - 1) + cs_span_length(cs, i) + 1e-9);
+    double cstiff = cm->rope.ea / (ch[4 * (i - 1) + 3] + ch[4 * i + 3] + 1e-9); /* the spans' lengths */
     double dm = cs->m[i] - cs->m_commit[i], y = lambda + cstiff * dm;
     double proj = smooth_clamp(y, b, CS_FRICTION_FLOOR * cm->rope.fu);
     return (lambda - proj - CS_STICK_EPS * cstiff * dm) / cm->rope.fu;
@@ -305,16 +314,17 @@ static double node_residual(const cs_model *model, const cs_state *s, int c, int
 
 /* The contact of corner k on the face: Coulomb friction along the vertical face, as for a support
  * (lambda = the spans' pull up the face, b = mu times their pull into it, dz from the last step). */
-static double height_residual(const cs_model *model, const cs_state *s, int c, int k) {
+static double height_residual(const cs_model *model, const cs_state *s, const cs_solver *w, int c, int k) {
     const cs_cable_model *cm = &model->cables[c];
     const cs_cable_state *cs = &s->cables[c];
+    const double *ch = chords_of(model, w, c);
     int i = corner_node(cs, k);
     double fz, fn;
-    cs_contact_face_force(model, s, c, i, &fz, &fn);
+    cs_contact_face_force(model, s, c, i, ch, &fz, &fn);
     double b = model->vehicle.def.face_friction * fn;
-    double cstiff = cm->rope.ea / (cs_span_length(cs, i - 1) + cs_span_length(cs, i) + 1e-9);
+    double cstiff = cm->rope.ea / (ch[4 * (i - 1) + 3] + ch[4 * i + 3] + 1e-9);
     double dz = cs->corner_z[k] - cs->corner_z_commit[k];
-    double w = CS_FRICTION_FLOOR * cm->rope.fu, proj = smooth_clamp(fz + cstiff * dz, b + w, w);
+    double wf = CS_FRICTION_FLOOR * cm->rope.fu, proj = smooth_clamp(fz + cstiff * dz, b + wf, wf);
     return (fz - proj - CS_STICK_EPS * cstiff * dz) / cm->rope.fu;
 }
 
@@ -322,17 +332,17 @@ static double height_residual(const cs_model *model, const cs_state *s, int c, i
 static void residual_row(const cs_model *model, cs_state *s, const cs_solver *w, int k, double *r) {
     const slot *u = &w->slots[k];
     if (u->kind == U_HEIGHT) {
-        r[k] = height_residual(model, s, u->a, u->b);
+        r[k] = height_residual(model, s, w, u->a, u->b);
     } else if (u->kind == U_NODE) {
-        r[k] = node_residual(model, s, u->a, u->b);
+        r[k] = node_residual(model, s, w, u->a, u->b);
     } else if (u->kind == U_TILT && u->b == 0) {
         double q[2];
-        cs_post_residual_now(model, s, u->a, q);
+        cs_post_residual_now(model, s, u->a, w->chords, w->axes + 18 * u->a, q);
         double scale = model->posts[u->a].moment_cap;
         r[k] = q[0] / scale, r[k + 1] = q[1] / scale;
     } else if (u->kind == U_CRUSH) {
         const cs_vehicle_def *v = &model->vehicle.def;
-        double nf = cs_face_normal_force_now(model, s);
+        double nf = cs_face_normal_force_now(model, s, w->chords);
         r[k] = (nf - cs_crush_force(v, s->crush, s->crush_max)) / v->crush_force[v->crush_point_count - 1];
     }
 }
@@ -345,35 +355,38 @@ static void residual(const cs_model *model, cs_state *s, const cs_solver *w, int
 static double norm_inf(const double *r, int n) {
     double m = 0.0;
     for (int k = 0; k < n; k++)
-        m = fmax(m, fabs(r[k]));
+        m = fabs(r[k]) > m ? fabs(r[k]) : m; /* fmax without its call: a NaN is skipped as by fmax */
     return m;
 }
 
 /* ---- banded LU with partial pivoting: row i keeps columns i-kl .. i+ku+kl ---- */
 #define BAND(w, i, j) ((w)->band[(size_t)(i) * (size_t)(w)->band_width + (size_t)((j) - (i) + (w)->kl)])
 
+/* The loops walk from the diagonal entry d = &BAND(w, k, k): along row k by d[j - k], down column k by
+ * steps of band_width - 1 (one index per entry rather than BAND's). */
 static int band_factor(cs_solver *w, int n) {
     int kl = w->kl, ku = w->ku;
+    ptrdiff_t down = w->band_width - 1;
     for (int k = 0; k < n; k++) {
         int last = k + kl < n - 1 ? k + kl : n - 1, p = k;
-        double best = fabs(BAND(w, k, k));
+        double *d = &BAND(w, k, k), best = fabs(d[0]);
         for (int i = k + 1; i <= last; i++)
-            if (fabs(BAND(w, i, k)) > best) best = fabs(BAND(w, i, k)), p = i;
+            if (fabs(d[(i - k) * down]) > best) best = fabs(d[(i - k) * down]), p = i;
         w->pivot[k] = p;
         if (best == 0.0) return -1;
-        int jend = k + ku + kl < n - 1 ? k + ku + kl : n - 1;
+        int width = (k + ku + kl < n - 1 ? k + ku + kl : n - 1) - k; /* row k's entries right of d */
         if (p != k)
-            for (int j = k; j <= jend; j++) {
-                double t = BAND(w, k, j);
-                BAND(w, k, j) = BAND(w, p, j);
-                BAND(w, p, j) = t;
+            for (double *dp = d + (p - k) * down, *e = d; e <= d + width; e++, dp++) {
+                double t = *e;
+                *e = *dp;
+                *dp = t;
             }
         for (int i = k + 1; i <= last; i++) {
-            double f = BAND(w, i, k) / BAND(w, k, k);
-            BAND(w, i, k) = f;
+            double *di = d + (i - k) * down, f = di[0] / d[0];
+            di[0] = f;
             if (f != 0.0)
-                for (int j = k + 1; j <= jend; j++)
-                    BAND(w, i, j) -= f * BAND(w, k, j);
+                for (int j = 1; j <= width; j++)
+                    di[j] -= f * d[j];
         }
     }
     return 0;
@@ -381,6 +394,7 @@ static int band_factor(cs_solver *w, int n) {
 
 static void band_solve(const cs_solver *w, int n, double *b) {
     int kl = w->kl, ku = w->ku;
+    ptrdiff_t down = w->band_width - 1;
     for (int k = 0; k < n; k++) {
         int p = w->pivot[k];
         if (p != k) {
@@ -389,15 +403,18 @@ static void band_solve(const cs_solver *w, int n, double *b) {
             b[p] = t;
         }
         int last = k + kl < n - 1 ? k + kl : n - 1;
+        const double *l = &BAND(w, k, k);
+        double bk = b[k];
         for (int i = k + 1; i <= last; i++)
-            b[i] -= BAND(w, i, k) * b[k];
+            b[i] -= *(l += down) * bk;
     }
     for (int k = n - 1; k >= 0; k--) {
-        int jend = k + ku + kl < n - 1 ? k + ku + kl : n - 1;
+        int width = (k + ku + kl < n - 1 ? k + ku + kl : n - 1) - k;
+        const double *d = &BAND(w, k, k), *bk = b + k;
         double sum = b[k];
-        for (int j = k + 1; j <= jend; j++)
-            sum -= BAND(w, k, j) * b[j];
-        b[k] = sum / BAND(w, k, k);
+        for (int j = 1; j <= width; j++)
+            sum -= d[j] * bk[j];
+        b[k] = sum / d[0];
     }
 }
 
@@ -517,7 +534,8 @@ static void node_row(const cs_model *model, const cs_state *s, cs_solver *w, int
     double gp[3][3] = {{0}}, gm[3] = {0};
     int id = cs->node[i];
     double mu = id >= 0 ? cm->mu_post : model->vehicle.def.face_friction, tl = sp[0].t, tr = sp[1].t;
-    double th = tanh(0.5 * cs_node_capstan_exponent(model, cm, cs, i)), lam = tl - tr, b = th * (tl + tr);
+    double th = tanh(0.5 * cs_node_capstan_exponent(model, cm, cs, i, chords_of(model, w, c))), lam = tl - tr,
+           b = th * (tl + tr);
     double len = sp[0].l + sp[1].l + 1e-9, cstiff = cm->rope.ea / len, dm = cs->m[i] - cs->m_commit[i];
     double py, pb, fu = cm->rope.fu;
     smooth_clamp_slopes(lam + cstiff * dm, b, CS_FRICTION_FLOOR * fu, &py, &pb);
@@ -556,7 +574,7 @@ static void height_row(const cs_model *model, const cs_state *s, cs_solver *w, i
     const cs_span_grad *sp = spans_at(model, w, c, i);
     double ax[3][3], f[3], fb[3], mu = model->vehicle.def.face_friction, fu = cm->rope.fu;
     body_axes(s, ax);
-    cs_node_force(cs, i, f);
+    cs_node_force(cs, i, chords_of(model, w, c), f);
     for (int e = 0; e < 3; e++)
         fb[e] = v3_dot(ax[e], f);
     double fn = v2_norm(fb[0], fb[1]), wf = CS_FRICTION_FLOOR * fu;
@@ -590,7 +608,7 @@ static void post_rows(const cs_model *model, const cs_state *s, cs_solver *w, in
         if (i < 0) continue;
         const cs_span_grad *sp = spans_at(model, w, c, i);
         double l = model->cables[c].z + model->posts[p].pivot, f[3];
-        cs_node_force(cs, i, f);
+        cs_node_force(cs, i, chords_of(model, w, c), f);
         for (int a = 0; a < 2; a++) {
             double rho[3] = {l * ja[a] / cap, l * ja[2 + a] / cap, l * ja[4 + a] / cap};
             double gp[3][3] = {{0}}, gm[3] = {0};
@@ -626,7 +644,7 @@ static void crush_row(const cs_model *model, const cs_state *s, cs_solver *w, in
 
 /* Set the crush and bring what it moves in line: the face's corners and the spans at them, and the
  * captured posts (scatter's work for the crush alone). */
-static void move_crush(const cs_model *model, cs_state *s, double crush) {
+static void move_crush(const cs_model *model, cs_state *s, const cs_solver *w, double crush) {
     s->crush = crush;
     cs_contact_place_corners(model, s, crush);
     cs_post_place_captured(model, s, crush, NULL, NULL);
@@ -635,8 +653,9 @@ static void move_crush(const cs_model *model, cs_state *s, double crush) {
         if (cs->status != CS_CABLE_INTACT) continue;
         for (int i = 1; i + 1 < cs->node_count; i++)
             if (is_corner(cs->node[i])) {
-                cs->tension[i - 1] = cs_span_tension(&model->cables[c], cs, i - 1);
-                cs->tension[i] = cs_span_tension(&model->cables[c], cs, i);
+                double *ch = chords_of(model, w, c);
+                cs->tension[i - 1] = cs_span_tension_chord(&model->cables[c], cs, i - 1, ch + 4 * (i - 1));
+                cs->tension[i] = cs_span_tension_chord(&model->cables[c], cs, i, ch + 4 * i);
             }
     }
 }
@@ -650,7 +669,8 @@ static void jacobian(const cs_model *model, cs_state *s, cs_solver *w, int n, co
         const cs_cable_state *cs = &s->cables[c];
         if (cs->status == CS_CABLE_INTACT)
             for (int i = 0; i + 1 < cs->node_count; i++)
-                cs_span_tension_grad(&model->cables[c], cs, i, w->spans + c * model->max_nodes + i);
+                cs_span_tension_grad(&model->cables[c], cs, i, chords_of(model, w, c) + 4 * i,
+                                     w->spans + c * model->max_nodes + i);
     }
     for (int p = 0; p < model->post_count; p++)
         if (w->tilt_index[p] >= 0)
@@ -667,12 +687,12 @@ static void jacobian(const cs_model *model, cs_state *s, cs_solver *w, int n, co
     /* the crush's column: the rows in its band (a post's two rows come together, from its first) */
     int lo = j - w->ku > 0 ? j - w->ku : 0, hi = j + w->kl < n - 1 ? j + w->kl : n - 1;
     if (w->slots[lo].kind == U_TILT && w->slots[lo].b == 1) lo--;
-    move_crush(model, s, x[j] + 1e-8);
+    move_crush(model, s, w, x[j] + 1e-8);
     for (int i = lo; i <= hi; i++)
         residual_row(model, s, w, i, w->rt);
     for (int i = j - w->ku; i <= hi; i++)
         if (i >= 0) BAND(w, i, j) = (w->rt[i] - r[i]) / 1e-8;
-    move_crush(model, s, x[j]);
+    move_crush(model, s, w, x[j]);
 }
 
 /* Largest fraction of a Newton step that keeps every span's rope at least half of what it has, turns

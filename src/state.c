@@ -125,7 +125,7 @@ static void lay_in_pretension(const cs_model *model, int c, cs_cable_state *cs) 
         cs->ep[i] = 0.0;
     }
     memcpy(cs->m_commit, cs->m, (size_t)cs->node_count * sizeof *cs->m);
-    cs_cable_update_tensions(cm, cs);
+    cs_cable_update_tensions(cm, cs, NULL);
 }
 
 /* A cable at t = 0: start anchor, every post, end anchor, straight at its height, rope laid in with
