@@ -287,6 +287,11 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
         pm->pivot = pm->soil_yields ? 2.0 * d->footing.depth / 3.0 : 0.0;
         double lever = mean_z + pm->pivot;
         pm->moment_cap = pm->soil_yields ? p_soil * lever : pm->mp;
+        /* the solve holds a post's balance to the tolerance of this moment: its strongest rope's
+         * strength at that rope's lever, the ropes' own force unit (a post without ropes: its capacity) */
+        pm->moment_scale = pm->moment_cap;
+        for (int c = 0; c < m->cable_count; c++)
+            pm->moment_scale = fmax(pm->moment_scale, m->cables[c].rope.fu * (m->cables[c].z + pm->pivot));
         /* the cantilever of Eqs. 10-11 seen at the load height: R h^3 / 3EI there, as a rotation about
          * the pivot (lever h + pivot) */
         pm->k_rot =

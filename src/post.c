@@ -224,7 +224,7 @@ double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int p) {
     for (int it = 0; it < 20; it++) {
         cs_post_place_nodes(model, s, p, ps->tilt, NULL);
         cs_post_residual_now(model, s, p, NULL, NULL, r);
-        double rn = v2_norm(r[0], r[1]) / pm->moment_cap;
+        double rn = v2_norm(r[0], r[1]) / pm->moment_scale;
         if (entry < 0.0) entry = rn;
         if (rn <= 1e-14) break;
         double jac[4], h = 1e-7, a0[2] = {ps->tilt[0], ps->tilt[1]}, rp[2];
@@ -288,7 +288,7 @@ static double fall(const cs_model *model, cs_state *s, int p, const double *m_en
         break;
     }
     post_residual(model, s, p, al, m_entry, r);
-    return v2_norm(r[0], r[1]) / pm->moment_cap;
+    return v2_norm(r[0], r[1]) / pm->moment_scale;
 }
 
 /* Newton on the post's tilt with a finite-difference Jacobian and backtracking; where it stalls far
@@ -298,7 +298,7 @@ double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol, int 
     cs_post_state *ps = &s->posts[p];
     if (!cs_post_standing(ps) || ps->captured || cs_post_held(model, s, p)) return 0.0;
     const cs_post_model *pm = &model->posts[p];
-    double scale = pm->moment_cap, r[2], m_entry[CS_MAX_CABLES_PER_POST];
+    double scale = pm->moment_scale, r[2], m_entry[CS_MAX_CABLES_PER_POST];
     double *al = ps->tilt;
     entry_material(model, s, p, m_entry);
     post_residual(model, s, p, al, m_entry, r);

@@ -2,7 +2,8 @@
  *
  * Unknowns: the tilt (2) of every standing post on a cable path, the material coordinate m of every
  * support node the rope can slide through (posts that do not clamp, face corners), and the crush.
- * Residuals (each scaled by its element's capacity):
+ * Residuals (each scaled by its unit: Fu for nodes and contacts; for a post, its strongest rope's Fu at
+ * that rope's lever, so that one tolerance is one force everywhere; the crush curve's top):
  *   post:   Q_cables(alpha) - Q_resist(alpha) - J (alpha - alpha_c - h w_c) / h^2 (swing; post.c)
  *   node:   lambda - proj_[-b, b](lambda + c dm) - eps c dm,                (capstan, Eq. 3)
  *           lambda = T_L - T_R, b = tanh(mu theta / 2) (T_L + T_R), dm = m - m_commit, c = EA / l.
@@ -338,7 +339,7 @@ static void residual_row(const cs_model *model, cs_state *s, const cs_solver *w,
     } else if (u->kind == U_TILT && u->b == 0) {
         double q[2];
         cs_post_residual_now(model, s, u->a, w->chords, w->axes + 18 * u->a, q);
-        double scale = model->posts[u->a].moment_cap;
+        double scale = model->posts[u->a].moment_scale;
         r[k] = q[0] / scale, r[k + 1] = q[1] / scale;
     } else if (u->kind == U_CRUSH) {
         const cs_vehicle_def *v = &model->vehicle.def;
@@ -597,11 +598,11 @@ static void height_row(const cs_model *model, const cs_state *s, cs_solver *w, i
 /* A post's two rows: Q = sum over its cables of l_c J(alpha)^T f_c, less resistance and inertia. */
 static void post_rows(const cs_model *model, const cs_state *s, cs_solver *w, int n, int row, int p) {
     const double *ja = w->axes + 18 * p, *dj = ja + 6;
-    double kr[4], cap = model->posts[p].moment_cap;
+    double kr[4], unit = model->posts[p].moment_scale; /* as residual_row */
     cs_post_resistance_slope(model, s, p, kr);
     for (int a = 0; a < 2; a++)
         for (int b = 0; b < 2; b++)
-            add_entry(w, n, row + a, row + b, kr[2 * a + b] / cap);
+            add_entry(w, n, row + a, row + b, kr[2 * a + b] / unit);
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
@@ -610,14 +611,14 @@ static void post_rows(const cs_model *model, const cs_state *s, cs_solver *w, in
         double l = model->cables[c].z + model->posts[p].pivot, f[3];
         cs_node_force(cs, i, chords_of(model, w, c), f);
         for (int a = 0; a < 2; a++) {
-            double rho[3] = {l * ja[a] / cap, l * ja[2 + a] / cap, l * ja[4 + a] / cap};
+            double rho[3] = {l * ja[a] / unit, l * ja[2 + a] / unit, l * ja[4 + a] / unit};
             double gp[3][3] = {{0}}, gm[3] = {0};
             force_gradient(sp, rho, gp, gm);
             add_node_gradient(model, s, w, n, row + a, c, i, gp, gm);
             for (int b = 0; b < 2; b++) /* the axis turning under the pull */
                 add_entry(w, n, row + a, row + b,
                           l * (dj[6 * b + a] * f[0] + dj[6 * b + 2 + a] * f[1] + dj[6 * b + 4 + a] * f[2]) /
-                              cap);
+                              unit);
         }
     }
 }
