@@ -136,6 +136,9 @@ typedef struct cs_solver {
     long *last_step;       /* [keys] the step that value belongs to */
     struct slot *slots_lu; /* the unknowns of the factored Jacobian */
     int lu_valid, lu_n, lu_kl, lu_ku;
+    struct slot *slots_bw; /* the unknowns the band's width was last found for (solve.c, band_shape) */
+    int *nodes_bw; /* [cable_count (max_nodes + 1)] and each cable's node count (-1: not intact), ids */
+    int bw_valid, bw_n;
     double *band;               /* banded Jacobian / LU factors */
     struct cs_span_grad *spans; /* [cable_count * max_nodes] each span's tension gradient (Jacobian) */
     double *chords; /* [4 cable_count max_nodes] each span's chord at the last placement (cs_span_chord) */

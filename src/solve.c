@@ -71,6 +71,8 @@ int cs_solver_init(const cs_model *model, cs_solver *w) {
     w->slots_lu = calloc(n, sizeof *w->slots_lu);
     w->slots_kept = calloc(n, sizeof *w->slots_kept);
     w->slots_sorted = calloc(n, sizeof *w->slots_sorted);
+    w->slots_bw = calloc(n, sizeof *w->slots_bw);
+    w->nodes_bw = calloc(nc * (nn + 1) + 1, sizeof *w->nodes_bw);
     w->tilt_index = calloc(np ? np : 1, sizeof *w->tilt_index);
     w->node_index = calloc(nc ? nc * nn : 1, sizeof *w->node_index);
     w->height_index = calloc(nc ? 2 * nc : 1, sizeof *w->height_index);
@@ -85,9 +87,9 @@ int cs_solver_init(const cs_model *model, cs_solver *w) {
     w->key_count = 2 * np + nc * (np + 2) + 2 * nc + 1; /* see slot_key */
     w->last = calloc(w->key_count, sizeof *w->last);
     w->last_step = calloc(w->key_count, sizeof *w->last_step);
-    if (!w->slots || !w->slots_lu || !w->slots_kept || !w->slots_sorted || !w->last || !w->last_step ||
-        !w->tilt_index || !w->node_index || !w->height_index || !w->x || !w->updates || !w->band ||
-        !w->pivot || !w->spans || !w->chords || !w->axes)
+    if (!w->slots || !w->slots_lu || !w->slots_kept || !w->slots_sorted || !w->slots_bw || !w->nodes_bw ||
+        !w->last || !w->last_step || !w->tilt_index || !w->node_index || !w->height_index || !w->x ||
+        !w->updates || !w->band || !w->pivot || !w->spans || !w->chords || !w->axes)
         return -1;
     w->r = w->x + n, w->dx = w->x + 2 * n, w->xt = w->x + 3 * n, w->rt = w->x + 4 * n, w->kept = w->x + 5 * n;
     return 0;
@@ -97,13 +99,14 @@ int cs_solver_init(const cs_model *model, cs_solver *w) {
 void cs_solver_reset(cs_solver *w) {
     for (size_t k = 0; k < w->key_count; k++)
         w->last_step[k] = -2, w->last[k] = 0.0;
-    w->lu_valid = 0;
+    w->lu_valid = 0, w->bw_valid = 0;
 }
 
 void cs_solver_free(cs_solver *w) {
-    free(w->slots), free(w->slots_lu), free(w->slots_kept), free(w->slots_sorted), free(w->tilt_index),
-        free(w->node_index), free(w->height_index), free(w->x), free(w->updates), free(w->band),
-        free(w->pivot), free(w->last), free(w->last_step), free(w->spans), free(w->chords), free(w->axes);
+    free(w->slots), free(w->slots_lu), free(w->slots_kept), free(w->slots_sorted), free(w->slots_bw),
+        free(w->nodes_bw), free(w->tilt_index), free(w->node_index), free(w->height_index), free(w->x),
+        free(w->updates), free(w->band), free(w->pivot), free(w->last), free(w->last_step), free(w->spans),
+        free(w->chords), free(w->axes);
     memset(w, 0, sizeof *w);
 }
 
@@ -253,6 +256,35 @@ static void bandwidth(const cs_model *model, cs_state *s, cs_solver *w, int n, i
         if (k - lo > *kl) *kl = k - lo; /* row k depends on column lo: below the diagonal */
         if (hi - k > *ku) *ku = hi - k;
     }
+}
+
+static int same_slot(const slot *a, const slot *b) {
+    return a->kind == b->kind && a->a == b->a && a->b == b->b;
+}
+
+/* The Jacobian's lower and upper bandwidth into w->kl, w->ku. They depend on the unknowns in their order
+ * and on every cable's nodes alone; while those are what they were at the last call (most solves),
+ * the last answer stands. */
+static void band_shape(const cs_model *model, cs_state *s, cs_solver *w, int n) {
+    int same = w->bw_valid && n == w->bw_n, stride = model->max_nodes + 1;
+    for (int k = 0; same && k < n; k++)
+        same = same_slot(&w->slots_bw[k], &w->slots[k]);
+    for (int c = 0; same && c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        const int *rec = w->nodes_bw + c * stride;
+        int count = cs->status == CS_CABLE_INTACT ? cs->node_count : -1;
+        same = rec[0] == count && (count < 0 || memcmp(rec + 1, cs->node, (size_t)count * sizeof *rec) == 0);
+    }
+    if (same) return;
+    bandwidth(model, s, w, n, &w->kl, &w->ku);
+    memcpy(w->slots_bw, w->slots, (size_t)n * sizeof *w->slots);
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        int *rec = w->nodes_bw + c * stride;
+        rec[0] = cs->status == CS_CABLE_INTACT ? cs->node_count : -1;
+        if (rec[0] > 0) memcpy(rec + 1, cs->node, (size_t)rec[0] * sizeof *rec);
+    }
+    w->bw_n = n, w->bw_valid = 1;
 }
 
 /* ---- state <-> vector ---- */
@@ -722,8 +754,7 @@ static double max_step(const cs_model *model, const cs_state *s, const cs_solver
 static int same_unknowns(cs_solver *w, int n) {
     int same = w->lu_valid && n == w->lu_n && w->kl == w->lu_kl && w->ku == w->lu_ku;
     for (int k = 0; same && k < n; k++)
-        same = w->slots_lu[k].kind == w->slots[k].kind && w->slots_lu[k].a == w->slots[k].a &&
-               w->slots_lu[k].b == w->slots[k].b;
+        same = same_slot(&w->slots_lu[k], &w->slots[k]);
     if (!same) {
         for (int k = 0; k < n; k++)
             w->slots_lu[k] = w->slots[k];
@@ -843,7 +874,7 @@ int cs_solver_linearize(const cs_model *model, cs_state *s, int cap, int *kind, 
                         double *jac) {
     cs_solver *w = &s->solver;
     int n = assemble(model, s, w);
-    bandwidth(model, s, w, n, &w->kl, &w->ku);
+    band_shape(model, s, w, n);
     w->band_width = 2 * w->kl + w->ku + 1;
     if (n > cap || (size_t)n * (size_t)w->band_width > w->band_capacity) return -1;
     gather(s, w, n, x);
@@ -868,7 +899,7 @@ double cs_barrier_newton(const cs_model *model, cs_state *s) {
     cs_solver *w = &s->solver;
     int n = assemble(model, s, w);
     if (n <= 0) return 0.0;
-    bandwidth(model, s, w, n, &w->kl, &w->ku);
+    band_shape(model, s, w, n);
     w->band_width = 2 * w->kl + w->ku + 1;
     if ((size_t)n * (size_t)w->band_width > w->band_capacity) return -1.0; /* caller falls back */
     double *x = w->x, *r = w->r, *dx = w->dx;
