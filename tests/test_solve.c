@@ -10,9 +10,10 @@
 
 enum { CAP = 256 };
 
-/* Central difference steps: 1e-7 rad of tilt; 1e-9 m of rope or contact height (a thousandth of the
- * width over which a support's stick/slip switch is rounded, ~5 um here); 1e-7 m of crush (its row's
- * entries are checked; its column is the solver's own difference quotient). */
+/* Central difference steps: 1e-7 rad of tilt; 1e-9 m of rope or contact height (far inside the width
+ * over which a support's stick/slip switch is rounded, ~50 um here); 1e-7 m of crush (its row's entries
+ * are checked; its column is the solver's own difference quotient). An entry the band left out (a
+ * bandwidth kept from another structure, solve.c band_shape) would show here as a difference. */
 static double step_of(int kind) {
     return kind == 1 || kind == 3 ? 1e-9 : 1e-7;
 }
@@ -63,10 +64,11 @@ static jac_check check_jacobian(const cs_model *m, cs_state *s) {
 
 /* At the install (no contact), then every 40 steps through the crash until the ropes break: every
  * entry within 1e-4 of its row's largest. Measured: 1e-7 to 2e-6 of a row (the quotients' round-off),
- * 2.7e-5 at step 400, where the plastic strain that slides in with the rope switches side at a sticking
- * support (a kink the solver's one-sided quotient and this central one straddle differently). Leaving
- * out the turning angle's gradient makes 1.2e-4; terms under ~1e-6 of a row (the axis' own turning,
- * the rope stiffness' change with the spans' length) are below what this resolves. */
+ * 1.9e-5 at step 400 (2.7e-5 before session 17's 1e-3 Fu rounding), where the plastic strain that slides in
+ * with the rope switches side at a sticking support (a kink the solver's one-sided quotient and this central
+ * one straddle differently). Leaving out the turning angle's gradient makes 1.2e-4; terms under ~1e-6 of a
+ * row (the axis' own turning, the rope stiffness' change with the spans' length) are below what this
+ * resolves. */
 static void jacobian_is_the_derivative_of_the_residual(void **state) {
     (void)state;
     fixture fx;
