@@ -37,8 +37,23 @@ static double face_penetration(const cs_model *model, const cs_state *s) {
     return best;
 }
 
+/* A run that ends before its first window is full has no 50-ms average from the ring: its one window
+ * starts with the run and holds the last speed from the end on (the vehicle has stopped, or goes on
+ * unhindered). Until session 17 such a run reported 0 g. */
+static void close_decel_window(const cs_model *model, cs_state *s) {
+    int n = model->window_steps + 1;
+    if (s->ring_fill == 0 || s->ring_fill >= n) return;
+    double first = s->speed_ring[(s->step + 1 - s->ring_fill) % n], last = s->speed_ring[s->step % n];
+    double w = model->window_steps * model->scenario.dt, g = (first - last) / w / CS_STANDARD_GRAVITY;
+    if (g > s->summary.max_decel_50ms_g) {
+        s->summary.max_decel_50ms_g = g;
+        s->summary.t_max_decel = s->t - (s->ring_fill - 1) * model->scenario.dt + w; /* the window's end */
+    }
+}
+
 static void end_run(const cs_model *model, cs_state *s, cs_outcome outcome, double value) {
     s->outcome = outcome;
+    close_decel_window(model, s);
     if (outcome == CS_STOPPED) {
         s->summary.stop_time = s->t;
         cs_event_add(model, s, CS_EVENT_STOPPED, CS_ELEMENT_VEHICLE, 0, value);

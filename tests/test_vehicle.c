@@ -47,6 +47,34 @@ static void rolling_freely_keeps_its_speed(void **state) {
     cs_model_free(m);
 }
 
+/* The 50-ms average deceleration of a run that ends before its first window is full: the window from
+ * the run's start with the last speed held, (v_first - v_end) / 50 ms; here v(t) = v0 - mu_r g t over the
+ * 30 ms between the first and last recorded speeds (0.6 mu_r g). A run long enough gives mu_r g itself.
+ * Until session 17 the short run reported 0 g. */
+static void short_run_has_its_window_average(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    fx.scenario.impact_x = 1000.0;
+    fx.vehicle.rolling_resistance = 0.01;
+    const double g_std = 9.80665, mu_g = 0.01 * fx.scenario.gravity;
+    for (int k = 0; k < 2; k++) {
+        fx.scenario.t_end = k == 0 ? 0.0305 : 0.2;
+        cs_model *m = model_for(&fx);
+        cs_state *s = cs_state_create(m, NULL);
+        run_until(m, s, 1.0);
+        cs_summary sm;
+        cs_state_summary(s, &sm);
+        assert_int_equal(sm.outcome, CS_TIME_LIMIT);
+        double span = k == 0 ? sm.t - fx.scenario.dt : 0.05; /* the first speed is the first step's */
+        printf("t_end %.4f s: max 50-ms average %.6f g at %.4f s\n", fx.scenario.t_end, sm.max_decel_50ms_g,
+               sm.t_max_decel);
+        CHECK_REL(sm.max_decel_50ms_g, mu_g * span / 0.05 / g_std, 1e-3);
+        cs_state_free(s);
+        cs_model_free(m);
+    }
+}
+
 static void dropped_vehicle_settles_on_its_tyres(void **state) {
     (void)state;
     fixture fx;
@@ -151,6 +179,7 @@ static void turn_between_poses_is_the_rotation_vector(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(rolling_freely_keeps_its_speed),
+        cmocka_unit_test(short_run_has_its_window_average),
         cmocka_unit_test(dropped_vehicle_settles_on_its_tyres),
         cmocka_unit_test(undamped_bounce_converges_at_second_order),
         cmocka_unit_test(centred_head_on_impact_makes_no_yaw),
