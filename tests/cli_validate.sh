@@ -12,6 +12,13 @@ check "the bogie target is judged" 'grep -qE "at least 8 of 10: [0-9]+ of 10, (m
 check "csv has a header and ten bogie rows" '[ "$(grep -c "^bogie," "$dir/validation.csv")" -eq 10 ]'
 check "no temporaries left" '[ -z "$(ls "$dir" | grep tmp)" ]'
 check "no NaN or Inf in the csv" '! grep -qiE "nan|inf" "$dir/validation.csv"'
+# The crash part: APS1's targets judged, and the bound its measured values put on any model that ends at
+# the last rope's break (closed form: 3 x 0.05 s x 1.485 g = 2.18 m/s; 40 mph - that = 35.1 mph).
+"$cs" validate -o "$dir/crash" --only crash >/dev/null 2>&1
+check "validate --only crash exits 0" '[ $? -eq 0 ]'
+check "APS1 targets judged" 'grep -qE "deceleration (met|NOT met), exit speed (met|NOT met), break times (met|NOT met)" "$dir/crash/validation.md"'
+check "APS1 bound from the test's numbers" 'grep -q "at most 2.18 m/s .* at least 35.1 mph from 40 mph (33.1-37.1 mph from 38-42 mph), .* at least 41% .* (26-51% over" "$dir/crash/validation.md"'
+
 # The sensitivity part: one row per test and input, the joint sample's runs in the csv, APS1 judged
 # against the joint band, and the truck faster out of every test when it comes in faster (42 vs 38 mph:
 # the barrier takes less than the extra kinetic energy).
