@@ -237,6 +237,33 @@ static void test_references(void **state) {
     cs_loader_free(l);
 }
 
+/* One loader reused for loads with other overrides (a sweep's runs) gives what a fresh loader gives,
+ * also for a model split over files; a load with errors leaves it to a full reset, and the next load
+ * works. */
+static void test_reuse(void **state) {
+    (void)state;
+    cs_model_input in;
+    cs_loader *l = new_loader();
+    static const char *const file = CS_SOURCE_DIR "/tests/good/split.yaml";
+    for (int round = 0; round < 4; round++) {
+        cs_loader_reuse(l);
+        if (round == 1) cs_loader_set(l, "barrier.cables[0].rope=thin");
+        if (round == 2) cs_loader_set(l, "scenario.colour=red");
+        if (round == 3) cs_loader_set(l, "scenario.speed=35 mph");
+        int rc = cs_loader_load(l, file, &in);
+        assert_int_equal(rc, round == 2 ? -1 : 0);
+        if (round == 2) continue;
+        assert_int_equal(in.barrier.post_count, 7);
+        close_to(in.vehicle.mass, 16000 * LB);
+        close_to(in.scenario.speed, (round == 3 ? 35 : 30) * 0.44704);
+        close_to(in.barrier.cables[0].rope.area, (round == 1 ? 0.471 * 0.25 : 0.471) * IN * IN);
+        cs_model *m = cs_loader_build(l, &in);
+        assert_non_null(m);
+        cs_model_free(m);
+    }
+    cs_loader_free(l);
+}
+
 static void test_every_problem_reported(void **state) {
     (void)state;
     static const char *const want[] = {
@@ -283,6 +310,7 @@ int main(void) {
         cmocka_unit_test(test_set),
         cmocka_unit_test(test_set_errors),
         cmocka_unit_test(test_references),
+        cmocka_unit_test(test_reuse),
         cmocka_unit_test(test_every_problem_reported),
         cmocka_unit_test(test_two_threads),
     };

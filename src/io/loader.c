@@ -73,6 +73,26 @@ void cs_loader_reset(cs_loader *l) {
     memcpy(l->data_dir, data_dir, sizeof data_dir);
 }
 
+void cs_loader_reuse(cs_loader *l) {
+    if (l->error_count) {
+        cs_loader_reset(l);
+        return;
+    }
+    for (int i = 0; i < l->set_count; i++) {
+        free(l->sets[i].path);
+        free(l->sets[i].value);
+    }
+    l->set_count = 0;
+    while (l->arena != l->files_end) { /* the files' nodes are older; nothing of theirs points later */
+        struct cs_chunk *next = l->arena->next;
+        free(l->arena);
+        l->arena = next;
+    }
+    l->depth = 0;
+    l->post_origin = l->cable_origin = NULL;
+    l->vehicle_node = l->scenario_node = l->anchors_node = NULL;
+}
+
 void cs_loader_free(cs_loader *l) {
     if (!l) return;
     cs_loader_reset(l);

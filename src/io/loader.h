@@ -35,6 +35,10 @@ int cs_loader_load_buffer(cs_loader *loader, const char *name, const char *data,
 /* Forget every loaded file, override and error, keeping the unit database: ready for a new model.
  * Whatever an earlier load returned becomes invalid. */
 void cs_loader_reset(cs_loader *loader);
+/* Forget the last load's overrides, errors and what it resolved and returned, keeping the files it
+ * read (parsed once) and the parts library, for another load of the same model with other overrides
+ * (a sweep's runs). After a load with errors it is cs_loader_reset. */
+void cs_loader_reuse(cs_loader *loader);
 /* Build the engine model from a loaded input; on failure the engine's message is recorded at the
  * location of the element it names. */
 cs_model *cs_loader_build(cs_loader *loader, const cs_model_input *in);

@@ -44,6 +44,7 @@ struct cs_loader {
     char data_dir[1024];
     cs_units *units;
     struct cs_chunk *arena;
+    struct cs_chunk *files_end; /* the newest allocation of a file read: cs_loader_reuse keeps up to it */
     cs_lfile *files;
     int file_count, file_capacity;
     int library_state; /* 0 not read, 1 read, -1 failed */

@@ -1,6 +1,6 @@
 /* One run of a sweep, and the check of a spec against its model before any run. Each thread has a
- * loader of its own, reset between runs (the loader serialises its calls into udunits2), so runs may go
- * in parallel threads. */
+ * loader of its own (the loader serialises its calls into udunits2), so runs may go in parallel threads;
+ * between runs it keeps the files it has parsed and drops the rest (cs_loader_reuse). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -30,7 +30,7 @@ void cs_sweep_run(const cs_sweep_spec *s, const double *xrow, cs_loader *loader,
     snprintf(r->rating, sizeof r->rating, "none");
     char why[256];
     cs_loader *l = loader ? loader : cs_loader_create(NULL, why, sizeof why);
-    if (loader) cs_loader_reset(loader);
+    if (loader) cs_loader_reuse(loader); /* the model file and the library are parsed once per loader */
     if (!l) {
         r->status = CS_RUN_BAD_MODEL;
         snprintf(r->error, sizeof r->error, "%s", why);

@@ -380,6 +380,7 @@ static int add_file(cs_loader *l, const char *name, const char *real, const char
     lf->loading = 1;
     int rc = read_file(l, f);
     l->files[f].loading = 0;
+    l->files_end = l->arena;
     if (rc != 0) l->files[f].root = NULL;
     return rc == 0 ? f : -1;
 }
