@@ -304,14 +304,10 @@ static void test_two_threads(void **state) {
 
 int main(void) {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_aps3),
-        cmocka_unit_test(test_aps1_aps4_layouts),
-        cmocka_unit_test(test_library_parts),
-        cmocka_unit_test(test_set),
-        cmocka_unit_test(test_set_errors),
-        cmocka_unit_test(test_references),
-        cmocka_unit_test(test_reuse),
-        cmocka_unit_test(test_every_problem_reported),
+        cmocka_unit_test(test_aps3),          cmocka_unit_test(test_aps1_aps4_layouts),
+        cmocka_unit_test(test_library_parts), cmocka_unit_test(test_set),
+        cmocka_unit_test(test_set_errors),    cmocka_unit_test(test_references),
+        cmocka_unit_test(test_reuse),         cmocka_unit_test(test_every_problem_reported),
         cmocka_unit_test(test_two_threads),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
