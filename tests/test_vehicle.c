@@ -18,6 +18,12 @@ static cs_model *model_for(fixture *fx) {
     return m;
 }
 
+/* APS3's truck aimed far past the end anchor: it never touches a cable. */
+static void open_road(fixture *fx) {
+    fixture_aps3(fx);
+    fx->scenario.impact_x = 1000.0;
+}
+
 static void run_until(const cs_model *m, cs_state *s, double t) {
     cs_error err;
     while (s->t < t - 1e-12 && s->outcome == CS_RUNNING)
@@ -27,8 +33,7 @@ static void run_until(const cs_model *m, cs_state *s, double t) {
 static void rolling_freely_keeps_its_speed(void **state) {
     (void)state;
     fixture fx;
-    fixture_aps3(&fx);
-    fx.scenario.impact_x = 1000.0; /* far past the end anchor: never touches a cable */
+    open_road(&fx);
     fx.vehicle.rolling_resistance = 0.0;
     cs_model *m = model_for(&fx);
     cs_state *s = cs_state_create(m, NULL);
@@ -54,8 +59,7 @@ static void rolling_freely_keeps_its_speed(void **state) {
 static void short_run_has_its_window_average(void **state) {
     (void)state;
     fixture fx;
-    fixture_aps3(&fx);
-    fx.scenario.impact_x = 1000.0;
+    open_road(&fx);
     fx.vehicle.rolling_resistance = 0.01;
     const double g_std = 9.80665, mu_g = 0.01 * fx.scenario.gravity;
     for (int k = 0; k < 2; k++) {
@@ -78,8 +82,7 @@ static void short_run_has_its_window_average(void **state) {
 static void dropped_vehicle_settles_on_its_tyres(void **state) {
     (void)state;
     fixture fx;
-    fixture_aps3(&fx);
-    fx.scenario.impact_x = 1000.0;
+    open_road(&fx);
     fx.scenario.speed = 0.0;
     fx.scenario.t_end = 10.0;
     cs_model *m = model_for(&fx);
@@ -101,8 +104,7 @@ static void dropped_vehicle_settles_on_its_tyres(void **state) {
  * order; semi-implicit Euler's velocity error would only halve). */
 static double bounce_error(double dt) {
     fixture fx;
-    fixture_aps3(&fx);
-    fx.scenario.impact_x = 1000.0;
+    open_road(&fx);
     fx.scenario.speed = 0.0;
     fx.scenario.t_end = 10.0;
     fx.scenario.dt = dt;

@@ -48,6 +48,24 @@ cs_loader *cs_loader_create(const char *data_dir, char *why, size_t why_size) {
     return l;
 }
 
+/* Free the overrides' texts (the array stays for the next ones). */
+static void drop_sets(cs_loader *l) {
+    for (int i = 0; i < l->set_count; i++) {
+        free(l->sets[i].path);
+        free(l->sets[i].value);
+    }
+    l->set_count = 0;
+}
+
+/* Free the arena's allocations newer than keep (NULL: all). */
+static void drop_arena_to(cs_loader *l, struct cs_chunk *keep) {
+    while (l->arena != keep) {
+        struct cs_chunk *next = l->arena->next;
+        free(l->arena);
+        l->arena = next;
+    }
+}
+
 void cs_loader_reset(cs_loader *l) {
     for (int i = 0; i < l->file_count; i++)
         cs_yposmap_free(&l->files[i].map);
@@ -55,16 +73,9 @@ void cs_loader_reset(cs_loader *l) {
     for (int i = 0; i < l->error_count; i++)
         free(l->errors[i].text);
     free(l->errors);
-    for (int i = 0; i < l->set_count; i++) {
-        free(l->sets[i].path);
-        free(l->sets[i].value);
-    }
+    drop_sets(l);
     free(l->sets);
-    while (l->arena) {
-        struct cs_chunk *next = l->arena->next;
-        free(l->arena);
-        l->arena = next;
-    }
+    drop_arena_to(l, NULL);
     cs_units *units = l->units;
     char data_dir[sizeof l->data_dir];
     memcpy(data_dir, l->data_dir, sizeof data_dir);
@@ -78,16 +89,8 @@ void cs_loader_reuse(cs_loader *l) {
         cs_loader_reset(l);
         return;
     }
-    for (int i = 0; i < l->set_count; i++) {
-        free(l->sets[i].path);
-        free(l->sets[i].value);
-    }
-    l->set_count = 0;
-    while (l->arena != l->files_end) { /* the files' nodes are older; nothing of theirs points later */
-        struct cs_chunk *next = l->arena->next;
-        free(l->arena);
-        l->arena = next;
-    }
+    drop_sets(l);
+    drop_arena_to(l, l->files_end); /* the files' nodes are older; nothing of theirs points later */
     l->depth = 0;
     l->post_origin = l->cable_origin = NULL;
     l->vehicle_node = l->scenario_node = l->anchors_node = NULL;
