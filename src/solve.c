@@ -17,7 +17,7 @@
  *           would, and any dz with eps c |dz| below the tolerance, up to ~0.4 m at a tolerance of
  *           1e-4, would pass).
  *   crush:  N(crush) - C(crush)                                             (barrier.c)
- * The clamp's corners are rounded over w = CS_FRICTION_FLOOR Fu (softplus) so that Newton sees a smooth
+ * The clamp's corners are rounded over w = CS_FRICTION_FLOOR Fu (parabolas) so that Newton sees a smooth
  * switch between sticking and sliding (docs/assumptions.md).
  * Unknowns are ordered along the barrier, so the Jacobian is banded: it is formed from the spans'
  * tension gradients (the crush's column by a difference quotient), and a banded LU with partial
@@ -322,14 +322,19 @@ static void scatter(const cs_model *model, cs_state *s, const cs_solver *w, int 
 }
 
 /* ---- residuals ---- */
-/* clamp(y, -b, b) with its corners rounded over a width w (softplus), so Newton sees a smooth switch
- * between sticking and sliding; it departs from the exact clamp by at most w ln 2. */
-static double softplus(double x) {
-    if (x < -40.0) return 0.0; /* below exp(-40) = 4e-18 of the width: round-off beside y */
-    return x > 30.0 ? x : log1p(exp(x));
+/* clamp(y, -b, b) with its corners rounded over a width w, so Newton sees a smooth switch between
+ * sticking and sliding. Each corner is the ramp max(x, 0) (x in units of w) with a parabola over
+ * |x| < h: C1, exact outside the band (a support well inside its friction band sticks exactly), at
+ * most h/4 = w ln 2 off at the corner (h = 4 ln 2, as far off as softplus log(1 + e^x), used until
+ * session 18, whose exp and log1p were 8% of a run's instructions). */
+#define RAMP_H 2.772588722239781 /* 4 ln 2 */
+static double ramp(double x) {
+    if (x <= -RAMP_H) return 0.0;
+    if (x >= RAMP_H) return x;
+    return (x + RAMP_H) * (x + RAMP_H) / (4.0 * RAMP_H);
 }
 static double smooth_clamp(double y, double b, double w) {
-    return y - w * softplus((y - b) / w) + w * softplus((-y - b) / w);
+    return y - w * ramp((y - b) / w) + w * ramp((-y - b) / w);
 }
 
 static double node_residual(const cs_model *model, const cs_state *s, const cs_solver *w, int c, int i) {
@@ -530,11 +535,12 @@ static void force_gradient(const cs_span_grad *sp, const double *rho, double gp[
 }
 
 /* Derivatives of smooth_clamp(y, b, w) with respect to y and b. */
-static double sigmoid(double x) {
-    return x < -40.0 ? 0.0 : 1.0 / (1.0 + exp(-x));
+static double ramp_slope(double x) {
+    if (x <= -RAMP_H) return 0.0;
+    return x >= RAMP_H ? 1.0 : (x + RAMP_H) / (2.0 * RAMP_H);
 }
 static void smooth_clamp_slopes(double y, double b, double w, double *dy, double *db) {
-    double s1 = sigmoid((y - b) / w), s2 = sigmoid((-y - b) / w);
+    double s1 = ramp_slope((y - b) / w), s2 = ramp_slope((-y - b) / w);
     *dy = 1.0 - s1 - s2, *db = s1 - s2;
 }
 
