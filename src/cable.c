@@ -260,6 +260,22 @@ double cs_node_capstan_exponent(const cs_model *model, const cs_cable_model *cm,
     return mu * theta;
 }
 
+/* tanh(mu theta / 2) at interior node i: the friction band's half-width over T_L + T_R, since
+ * T_high <= exp(mu theta) T_low is |T_L - T_R| <= tanh(mu theta / 2) (T_L + T_R). Below z = mu theta / 2
+ * = 0.05 (most supports) tanh's series to z^13 is exact to round-off (the next term is under 1e-18 of
+ * z) and cheaper than libm's tanh. */
+double cs_node_band_fraction(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs, int i,
+                             const double *chords) {
+    double z = 0.5 * cs_node_capstan_exponent(model, cm, cs, i, chords);
+    if (!(z < 0.05)) return tanh(z);
+    static const double coef[] = {1.0,         -1.0 / 3,         2.0 / 15,         -17.0 / 315,
+                                  62.0 / 2835, -1382.0 / 155925, 21844.0 / 6081075};
+    double z2 = z * z, sum = 0.0;
+    for (int k = 6; k >= 0; k--)
+        sum = coef[k] + z2 * sum;
+    return z * sum;
+}
+
 double cs_node_friction_ratio(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs,
                               int i) {
     return exp(cs_node_capstan_exponent(model, cm, cs, i, NULL));

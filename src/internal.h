@@ -226,6 +226,9 @@ double cs_cable_slide_node(const cs_model *model, const cs_cable_model *cm, cs_c
 /* mu theta at interior node i, theta the path's turning angle there; the ratio is its exponential. */
 double cs_node_capstan_exponent(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs,
                                 int i, const double *chords);
+/* tanh(mu theta / 2) at interior node i: the friction band's half-width over T_L + T_R. */
+double cs_node_band_fraction(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs, int i,
+                             const double *chords);
 double cs_node_friction_ratio(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs,
                               int i);
 void cs_cable_insert_node(cs_cable_state *cs, int at, int id, const double *p);

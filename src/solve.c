@@ -342,8 +342,7 @@ static double node_residual(const cs_model *model, const cs_state *s, const cs_s
     const cs_cable_state *cs = &s->cables[c];
     const double *ch = chords_of(model, w, c);
     double tl = cs->tension[i - 1], tr = cs->tension[i];
-    double mu_theta = cs_node_capstan_exponent(model, cm, cs, i, ch);
-    double lambda = tl - tr, b = tanh(0.5 * mu_theta) * (tl + tr);
+    double lambda = tl - tr, b = cs_node_band_fraction(model, cm, cs, i, ch) * (tl + tr);
     double cstiff = cm->rope.ea / (ch[4 * (i - 1) + 3] + ch[4 * i + 3] + 1e-9); /* the spans' lengths */
     double dm = cs->m[i] - cs->m_commit[i], y = lambda + cstiff * dm;
     double proj = smooth_clamp(y, b, CS_FRICTION_FLOOR * cm->rope.fu);
@@ -573,7 +572,7 @@ static void node_row(const cs_model *model, const cs_state *s, cs_solver *w, int
     double gp[3][3] = {{0}}, gm[3] = {0};
     int id = cs->node[i];
     double mu = id >= 0 ? cm->mu_post : model->vehicle.def.face_friction, tl = sp[0].t, tr = sp[1].t;
-    double th = tanh(0.5 * cs_node_capstan_exponent(model, cm, cs, i, chords_of(model, w, c))), lam = tl - tr,
+    double th = cs_node_band_fraction(model, cm, cs, i, chords_of(model, w, c)), lam = tl - tr,
            b = th * (tl + tr);
     double len = sp[0].l + sp[1].l + 1e-9, cstiff = cm->rope.ea / len, dm = cs->m[i] - cs->m_commit[i];
     double py, pb, fu = cm->rope.fu;

@@ -63,17 +63,21 @@ static void capstan_ratio_on_frictional_support(void **state) {
     world_free(w);
 }
 
-/* The turning angle takes a series below tan theta = 0.1 and libm's atan2 above: on either side and at
- * the switch the ratio is exp(mu theta) to round-off, theta set by the geometry. */
-static void capstan_ratio_at_small_and_large_turns(void **state) {
+/* The turning angle takes a series below tan theta = 0.1 and libm's atan2 above, and the band fraction
+ * tanh(mu theta / 2) a series below mu theta / 2 = 0.05 (theta = 0.667 at mu = 0.15): on either side and
+ * at the switches the ratio is exp(mu theta) and the fraction tanh(mu theta / 2) to round-off, theta set
+ * by the geometry. */
+static void capstan_band_at_small_and_large_turns(void **state) {
     (void)state;
     world *w = make_world(0.15);
     const cs_cable_model *cm = &w->model->cables[0];
-    static const double turns[] = {1e-7, 1e-3, 0.03, 0.0996, 0.0997, 0.1, 0.5, 2.0, 3.1};
+    static const double turns[] = {1e-7, 1e-3, 0.03, 0.0996, 0.0997, 0.1, 0.5, 0.666, 0.667, 0.7, 2.0, 3.1};
     for (size_t k = 0; k < sizeof turns / sizeof turns[0]; k++) {
         double th = turns[k], a[3] = {0, 0, 1}, b[3] = {2, 0, 1}, c[3] = {2 + 3 * cos(th), 3 * sin(th), 1};
         lay_cable(w->state, a, b, c, 0.002, 0.002);
         CHECK_REL(cs_node_friction_ratio(w->model, cm, &w->state->cables[0], 1), exp(0.15 * th), 1e-14);
+        CHECK_REL(cs_node_band_fraction(w->model, cm, &w->state->cables[0], 1, NULL), tanh(0.075 * th),
+                  1e-14);
     }
     world_free(w);
 }
@@ -221,7 +225,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(rope_law_points),
         cmocka_unit_test(capstan_ratio_on_frictional_support),
-        cmocka_unit_test(capstan_ratio_at_small_and_large_turns),
+        cmocka_unit_test(capstan_band_at_small_and_large_turns),
         cmocka_unit_test(frictionless_sliding_equalises_tension),
         cmocka_unit_test(sagging_span_hangs_as_a_catenary),
         cmocka_unit_test(breaking_strain_breaks_the_cable),
