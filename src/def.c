@@ -101,7 +101,7 @@ cs_scenario_def cs_default_scenario_def(void) {
     d.t_end = 3.0;
     d.output_interval = 1e-3;
     d.crush_tolerance = 0.05;
-    d.solver_tolerance = 1e-5;
+    d.solver_tolerance = 1e-4;
     d.solver_max_sweeps = 300;
     d.stop_speed = 0.05;
     d.gravity = 9.80665;
