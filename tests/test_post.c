@@ -315,11 +315,31 @@ static void axis_jacobian_derivatives(void **state) {
         CHECK_ABS(djb[e], dja[e], 1e-13);
 }
 
+/* The axis' Jacobian below t = 0.1 comes from series (sinc_terms), above from sin and cos: either side
+ * and at the switch it matches the closed forms, s = sin t / t and g = (t cos t - sin t) / t^3, taken in
+ * long double (a coefficient of the series off by 1e-4 leaves 1e-10 at t = 0.1). */
+static void axis_jacobian_at_the_series_edge(void **state) {
+    (void)state;
+    const double ts[] = {0.01, 0.05, 0.0999999, 0.1, 0.1000001, 0.5, 1.2};
+    for (size_t i = 0; i < sizeof ts / sizeof ts[0]; i++) {
+        long double t = ts[i], s = sinl(t) / t, g = (t * cosl(t) - sinl(t)) / (t * t * t);
+        double tilt[2] = {0.6 * ts[i], 0.8 * ts[i]}, j[6], dj[12];
+        cs_post_axis_jacobian(tilt, j, dj);
+        long double a0 = tilt[0], a1 = tilt[1];
+        CHECK_ABS(j[0], (double)(s + a0 * a0 * g), 1e-15);
+        CHECK_REL(j[1], (double)(a0 * a1 * g), 1e-12);
+        CHECK_ABS(j[3], (double)(s + a1 * a1 * g), 1e-15);
+        CHECK_ABS(j[4], (double)(-s * a0), 1e-15);
+        CHECK_ABS(j[5], (double)(-s * a1), 1e-15);
+    }
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(cantilever_deflection),
         cmocka_unit_test(free_swing),
         cmocka_unit_test(axis_jacobian_derivatives),
+        cmocka_unit_test(axis_jacobian_at_the_series_edge),
         cmocka_unit_test(plastic_hinge_at_mp),
         cmocka_unit_test(shear_failure_onset),
         cmocka_unit_test(struck_post_absorbs_capacity_times_rotation),
