@@ -98,10 +98,10 @@ static double span_tension_sag(const cs_rope *r, double length, double material,
     double t;
     if (a > 0.0 && c < a * a * a) { /* a taut span: c / a^2 is the lower bound, no cube root needed */
         t = a + c / (a * a);
-    } else {
-        t = cbrt(c);
-        if (a > 0.0) t = a + fmin(t, c / (a * a));
-        if (a < 0.0) t = fmin(t, sqrt(-c / a));
+    } else if (a < 0.0 && c < -a * a * a) { /* a slack span: (c / -a)^(1/2) is the lower bound, likewise */
+        t = sqrt(-c / a);
+    } else { /* c^(1/3) is the lower bound (a > 0: T - a; a <= 0: T) */
+        t = a > 0.0 ? a + cbrt(c) : cbrt(c);
     }
     /* Newton's error after a step of relative size d is about 2 d^2 here (g''/2g' = 1/T for a slack
      * span, 2/T for a taut one), so a step below 1e-8 T leaves the root to round-off */
