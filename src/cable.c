@@ -71,13 +71,59 @@ static double span_sag(const cs_rope *r, const double *d) {
     return r->w * r->w * (d[0] * d[0] + d[1] * d[1]) * d[3];
 }
 
+static double horner(const double *coef, int n, double x) {
+    double sum = 0.0;
+    for (int k = n - 1; k >= 0; k--)
+        sum = coef[k] + x * sum;
+    return sum;
+}
+
+/* The positive root T of g(T) = T^2 (T - a) - c (c > 0), a span's tension with its sag (below). Newton
+ * from above the root converges monotonically (g is increasing and convex there); its error after a
+ * step of relative size d is about 2 d^2 (g''/2g' = 1/T for a slack span, 2/T for a taut one), so a step
+ * below 1e-8 T leaves the root to round-off. The start, above the root:
+ * - a taut span (k = c / a^3 < 0.05): T = a (1 + d), d (1 + d)^2 = k, whose series (Lagrange inversion)
+ *   k - 2k^2 + 7k^3 - 30k^4 + 143k^5 - 728k^6 + 3876k^7 is above d by less than 21318 k^8: the root to
+ *   round-off below k = 1e-3 (most taut spans), one Newton step above;
+ * - a slack span (v = (c / -a^3)^(1/2) < 0.1): T = -a u, u^2 (1 + u) = v^2, whose series in v (to v^9,
+ *   coefficients 1, -1/2, 5/8, -1, 231/128, -7/2, 7293/1024, -15, 1062347/32768) is above u by less
+ *   than 71.5 v^10: the root to round-off below v = 0.01, one Newton step above;
+ * - otherwise the least of the bounds T^2 (T - a) = c gives: T - a < c / a^2 and < c^(1/3) for a > 0,
+ *   T < c^(1/3) and < (c / -a)^(1/2) for a < 0. */
+static double sag_root(double a, double c) {
+    static const double taut[] = {1.0, -2.0, 7.0, -30.0, 143.0, -728.0, 3876.0};
+    static const double slack[] = {
+        1.0, -0.5, 0.625, -1.0, 231.0 / 128, -3.5, 7293.0 / 1024, -15.0, 1062347.0 / 32768};
+    double t, a3 = a * a * a;
+    if (a > 0.0 && c < 0.05 * a3) {
+        double k = c / a3;
+        t = a * (1.0 + k * horner(taut, 7, k));
+        if (k < 1e-3) return t;
+    } else if (a < 0.0 && c < -0.01 * a3) {
+        double v = sqrt(c / -a3);
+        t = -a * v * horner(slack, 9, v);
+        if (v < 0.01) return t;
+    } else if (a > 0.0 && c < a3) {
+        t = a + c / (a * a);
+    } else if (a < 0.0 && c < -a3) {
+        t = sqrt(-c / a);
+    } else {
+        t = a > 0.0 ? a + cbrt(c) : cbrt(c);
+    }
+    for (int it = 0; it < 100; it++) {
+        double dt = (t * t * (t - a) - c) / (t * (3.0 * t - 2.0 * a));
+        t -= dt;
+        if (dt <= 1e-8 * t) break;
+    }
+    return t;
+}
+
 /* Tension of a span with `material` of rope (plastic strain ep) over a chord of `length`, hanging by its
  * own weight (sag term q = w_n^2 l^3). A shallow parabola of tension T is longer than its chord by
  * q / (24 T^2), so elastically s (1 + ep + T/EA) = l + q / (24 T^2), i.e. T^3 - a T^2 - c = 0 with
  * a = EA (l/s - 1 - ep) and c = EA q / (24 s): one positive root, smooth in l and s (no slack kink; a
- * weightless rope, q = 0, has T = max(a, 0)). Newton from above the root converges monotonically (g
- * is increasing and convex there). The backbone caps T at the arc's strain. *arc gets the arc's strain
- * and *yields whether the backbone capped T (the rope yields). */
+ * weightless rope, q = 0, has T = max(a, 0)), found by sag_root. The backbone caps T at the arc's strain.
+ * *arc gets the arc's strain and *yields whether the backbone capped T (the rope yields). */
 static double span_tension_sag(const cs_rope *r, double length, double material, double ep, double q,
                                double *arc, int *yields) {
     *yields = 0;
@@ -92,24 +138,7 @@ static double span_tension_sag(const cs_rope *r, double length, double material,
         *arc = e;
         return t;
     }
-    double a = r->ea * (e - ep), c = r->ea * q / (24.0 * material);
-    /* bounds above the root: T^2 (T - a) = c gives T - a < c / a^2 and < c^(1/3) for a > 0, and
-     * T < c^(1/3) and < (c / -a)^(1/2) for a < 0 */
-    double t;
-    if (a > 0.0 && c < a * a * a) { /* a taut span: c / a^2 is the lower bound, no cube root needed */
-        t = a + c / (a * a);
-    } else if (a < 0.0 && c < -a * a * a) { /* a slack span: (c / -a)^(1/2) is the lower bound, likewise */
-        t = sqrt(-c / a);
-    } else { /* c^(1/3) is the lower bound (a > 0: T - a; a <= 0: T) */
-        t = a > 0.0 ? a + cbrt(c) : cbrt(c);
-    }
-    /* Newton's error after a step of relative size d is about 2 d^2 here (g''/2g' = 1/T for a slack
-     * span, 2/T for a taut one), so a step below 1e-8 T leaves the root to round-off */
-    for (int it = 0; it < 100; it++) {
-        double dt = (t * t * (t - a) - c) / (t * (3.0 * t - 2.0 * a));
-        t -= dt;
-        if (dt <= 1e-8 * t) break;
-    }
+    double a = r->ea * (e - ep), c = r->ea * q / (24.0 * material), t = sag_root(a, c);
     *arc = ep + t / r->ea;
     double b = rope_backbone(r, *arc);
     if (t > b) {

@@ -148,6 +148,27 @@ static void sagging_span_hangs_as_a_catenary(void **state) {
     world_free(w);
 }
 
+/* A sagging span's tension is the root of T^2 (T - a) = c (a = EA e, c = EA q / 24 s): from a taut
+ * span's series, a slack span's series, their Newton steps and the bounds (strains from 3e-3 to -1e-2
+ * over a 5-m span take every branch of sag_root), the root is met to round-off. */
+static void sag_tension_solves_its_cubic(void **state) {
+    (void)state;
+    world *w = make_world_weighing(0.15, 1.0);
+    const cs_cable_model *cm = &w->model->cables[0];
+    double a[3] = {0, 0, 1}, b[3] = {5, 0, 1}, c[3] = {10, 0, 1};
+    const double strains[] = {3e-3,  1e-3,  4e-4,  3.5e-4, 2e-4,  1e-4,  2e-5, 0.0,
+                              -2e-5, -1e-4, -2e-4, -5e-4,  -1e-3, -2e-3, -1e-2};
+    for (size_t k = 0; k < sizeof strains / sizeof strains[0]; k++) {
+        cs_cable_state *cs = lay_cable(w->state, a, b, c, strains[k], 0.0);
+        double s = cs->m[1] - cs->m[0], e = 5.0 / s - 1.0, ea = cm->rope.ea;
+        double lin = ea * e, cub = ea * cm->rope.w * cm->rope.w * 125.0 / (24.0 * s);
+        double t = cs_span_tension(cm, cs, 0);
+        assert_true(t > 0.0 && t < cm->rope.t1); /* on the elastic slope */
+        CHECK_ABS((t * t * (t - lin) - cub) / (t * t * (t + fabs(lin)) + cub), 0.0, 1e-14);
+    }
+    world_free(w);
+}
+
 static void breaking_strain_breaks_the_cable(void **state) {
     (void)state;
     world *w = make_world(0.15);
@@ -228,6 +249,7 @@ int main(void) {
         cmocka_unit_test(capstan_band_at_small_and_large_turns),
         cmocka_unit_test(frictionless_sliding_equalises_tension),
         cmocka_unit_test(sagging_span_hangs_as_a_catenary),
+        cmocka_unit_test(sag_tension_solves_its_cubic),
         cmocka_unit_test(breaking_strain_breaks_the_cable),
         cmocka_unit_test(bend_efficiency_follows_the_table),
         cmocka_unit_test(corner_bend_breaks_below_fu),
