@@ -71,6 +71,10 @@ static void axis_jacobian_from(const double *al, double s, double g, double *j) 
 
 /* Post p's cable nodes where a tilt puts them, and its axis' Jacobian into axis if not NULL. */
 void cs_post_place_nodes(const cs_model *model, cs_state *s, int p, const double *tilt, double *axis) {
+    int on_path = 0;
+    for (int k = 0; k < model->cable_count; k++)
+        on_path |= s->cables[k].status == CS_CABLE_INTACT && s->cables[k].where[p] > 0;
+    if (!on_path && !axis) return; /* a post the ropes have left: nothing to place */
     double sn, g, c;
     sinc_terms(v2_norm(tilt[0], tilt[1]), &sn, &g, &c);
     if (axis) axis_jacobian_from(tilt, sn, g, axis);
