@@ -123,36 +123,41 @@ static double sag_root(double a, double c) {
  * q / (24 T^2), so elastically s (1 + ep + T/EA) = l + q / (24 T^2), i.e. T^3 - a T^2 - c = 0 with
  * a = EA (l/s - 1 - ep) and c = EA q / (24 s): one positive root, smooth in l and s (no slack kink; a
  * weightless rope, q = 0, has T = max(a, 0)), found by sag_root. The backbone caps T at the arc's strain.
- * *arc gets the arc's strain and *yields whether the backbone capped T (the rope yields). */
+ * *arc (unless NULL) gets the arc's strain and *yields whether the backbone capped T (the rope yields). */
 static double span_tension_sag(const cs_rope *r, double length, double material, double ep, double q,
                                double *arc, int *yields) {
     *yields = 0;
     if (material <= 1e-12) { /* no rope left in the span: as taut as the rope gets */
-        *arc = r->e_break * 2.0;
+        if (arc) *arc = r->e_break * 2.0;
         return r->fu;
     }
     double e = length / material - 1.0;
     if (q <= 0.0) {
         double t = cs_rope_tension(r, e, ep);
         *yields = t > 0.0 && r->ea * (e - ep) > t;
-        *arc = e;
+        if (arc) *arc = e;
         return t;
     }
     double a = r->ea * (e - ep), c = r->ea * q / (24.0 * material), t = sag_root(a, c);
-    *arc = ep + t / r->ea;
-    double b = rope_backbone(r, *arc);
+    if (t <= r->t1 && ep >= 0.0) { /* below T1 no point of the backbone ahead of ep is lower: no cap (an
+                                    * ulp of round-off in EA (t / EA) had capped, "yielding", before) */
+        if (arc) *arc = ep + t / r->ea;
+        return t;
+    }
+    double b = rope_backbone(r, ep + t / r->ea);
     if (t > b) {
         t = b;
-        *arc = e + c / (r->ea * t * t);
+        if (arc) *arc = e + c / (r->ea * t * t);
         *yields = 1;
+    } else if (arc) {
+        *arc = ep + t / r->ea;
     }
     return t;
 }
 
 static double span_tension_at(const cs_rope *r, double length, double material, double ep, double q) {
-    double arc;
     int yields;
-    return span_tension_sag(r, length, material, ep, q, &arc, &yields);
+    return span_tension_sag(r, length, material, ep, q, NULL, &yields);
 }
 
 /* fmin(fmax(0, x), hi) without libm's calls (the same for hi >= 0). */
