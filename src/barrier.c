@@ -69,6 +69,7 @@ int cs_face_loaded(const cs_model *model, const cs_state *s) {
  * stopping when the force changes by less than the crush tolerance; the sweep loop repeats it until
  * the barrier as a whole converges. Returns the relative residual found on entry. */
 static double crush_solve(const cs_model *model, cs_state *s) {
+    s->solver.settled = 0;
     const cs_vehicle_def *v = &model->vehicle.def;
     double lo = cs_crush_permanent(v, s->crush_max);
     double scale = v->crush_force[v->crush_point_count - 1];
@@ -124,6 +125,7 @@ static double crush_solve(const cs_model *model, cs_state *s) {
 #define CS_GS_STALL 50
 
 static double gauss_seidel(const cs_model *model, cs_state *s, int sweeps, int may_fall) {
+    s->solver.settled = 0;
     const cs_scenario_def *sc = &model->scenario;
     double worst = 0.0, best = HUGE_VAL;
     for (int sweep = 0, last_gain = 0; sweep < sweeps && sweep - last_gain <= CS_GS_STALL; sweep++) {
@@ -217,8 +219,9 @@ static double solve_at_pose(const cs_model *model, cs_state *s) {
 
 double cs_barrier_solve(const cs_model *model, cs_state *s) {
     double worst = solve_at_pose(model, s);
-    for (int c = 0; c < model->cable_count; c++)
-        cs_cable_update_tensions(&model->cables[c], &s->cables[c], NULL);
+    for (int c = 0; c < model->cable_count; c++) /* after Newton only a broken cable's are not found */
+        if (!s->solver.settled || s->cables[c].status != CS_CABLE_INTACT)
+            cs_cable_update_tensions(&model->cables[c], &s->cables[c], NULL);
     s->face_force = cs_face_loaded(model, s) ? cs_face_normal_force_now(model, s, NULL) : 0.0;
     return worst;
 }

@@ -147,6 +147,8 @@ typedef struct cs_solver {
     size_t band_capacity;
     int *pivot;
     int kl, ku, band_width;
+    int settled; /* the last solve step was Newton's, which ended with every node placed and every intact
+                  * span's tension found at its unknowns (cleared by the sweeps and anything else) */
 } cs_solver;
 
 struct cs_state {

@@ -877,6 +877,7 @@ void cs_solver_keep(const cs_model *model, cs_state *s) {
 
 void cs_solver_go_back(const cs_model *model, cs_state *s) {
     cs_solver *w = &s->solver;
+    w->settled = 0;
     memcpy(w->slots, w->slots_kept, (size_t)w->kept_n * sizeof *w->slots);
     scatter(model, s, w, w->kept_n, w->kept);
 }
@@ -911,6 +912,7 @@ void cs_solver_residual(const cs_model *model, cs_state *s, int n, const double 
 
 double cs_barrier_newton(const cs_model *model, cs_state *s) {
     cs_solver *w = &s->solver;
+    w->settled = 0;
     int n = assemble(model, s, w);
     if (n <= 0) return 0.0;
     band_shape(model, s, w, n);
@@ -967,5 +969,6 @@ double cs_barrier_newton(const cs_model *model, cs_state *s) {
         if (rn > tol) broyden_update(w, n, t, dx, r), have_dx = 1;
     }
     if (!at_x) scatter(model, s, w, n, x);
+    w->settled = 1;
     return rn > CS_NEWTON_GIVE_UP ? -1.0 : rn; /* stalled far off: Gauss-Seidel goes on from here */
 }
