@@ -334,7 +334,8 @@ static double ramp(double x) {
     return (x + RAMP_H) * (x + RAMP_H) / (4.0 * RAMP_H);
 }
 static double smooth_clamp(double y, double b, double w) {
-    return y - w * ramp((y - b) / w) + w * ramp((-y - b) / w);
+    double iw = 1.0 / w; /* not on the chain from y: the division runs beside it */
+    return y - w * ramp((y - b) * iw) + w * ramp((-y - b) * iw);
 }
 
 static double node_residual(const cs_model *model, const cs_state *s, const cs_solver *w, int c, int i) {
@@ -346,7 +347,7 @@ static double node_residual(const cs_model *model, const cs_state *s, const cs_s
     double cstiff = cm->rope.ea / (ch[4 * (i - 1) + 3] + ch[4 * i + 3] + 1e-9); /* the spans' lengths */
     double dm = cs->m[i] - cs->m_commit[i], y = lambda + cstiff * dm;
     double proj = smooth_clamp(y, b, CS_FRICTION_FLOOR * cm->rope.fu);
-    return (lambda - proj - CS_STICK_EPS * cstiff * dm) / cm->rope.fu;
+    return (lambda - proj - CS_STICK_EPS * cstiff * dm) * (1.0 / cm->rope.fu);
 }
 
 /* The contact of corner k on the face: Coulomb friction along the vertical face, as for a support
@@ -362,7 +363,7 @@ static double height_residual(const cs_model *model, const cs_state *s, const cs
     double cstiff = cm->rope.ea / (ch[4 * (i - 1) + 3] + ch[4 * i + 3] + 1e-9);
     double dz = cs->corner_z[k] - cs->corner_z_commit[k];
     double wf = CS_FRICTION_FLOOR * cm->rope.fu, proj = smooth_clamp(fz + cstiff * dz, b + wf, wf);
-    return (fz - proj - CS_STICK_EPS * cstiff * dz) / cm->rope.fu;
+    return (fz - proj - CS_STICK_EPS * cstiff * dz) * (1.0 / cm->rope.fu);
 }
 
 /* Residual row k; a post's two rows come together, from its first. */
@@ -376,7 +377,8 @@ static void residual_row(const cs_model *model, cs_state *s, const cs_solver *w,
         double q[2];
         cs_post_residual_now(model, s, u->a, w->chords, w->axes + 18 * u->a, q);
         double scale = model->posts[u->a].moment_scale;
-        r[k] = q[0] / scale, r[k + 1] = q[1] / scale;
+        double inv = 1.0 / scale;
+        r[k] = q[0] * inv, r[k + 1] = q[1] * inv;
     } else if (u->kind == U_CRUSH) {
         const cs_vehicle_def *v = &model->vehicle.def;
         double nf = cs_face_normal_force_now(model, s, w->chords);
