@@ -426,10 +426,9 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     /* base shear from the post's own moment over the load height (what equilibrium allows), so a
      * step the solver left short of equilibrium cannot report a shear it never had */
     ps->shear = v2_norm(ps->moment[0], ps->moment[1]) / (pm->load_height + pm->pivot);
-    double a0[3];
-    cs_post_attachment(model, p, ps->tilt, 1.0, axis); /* the unit axis: two points 1 m apart */
-    cs_post_attachment(model, p, ps->tilt, 0.0, a0);
-    v3_sub(axis, axis, a0);
+    double sn, g, c;
+    sinc_terms(v2_norm(ps->tilt[0], ps->tilt[1]), &sn, &g, &c);
+    v3_set(axis, ps->tilt[0] * sn, ps->tilt[1] * sn, c); /* the unit axis a(alpha) */
     ps->axial = v3_dot(f, axis);
 }
 
