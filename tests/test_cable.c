@@ -63,15 +63,16 @@ static void capstan_ratio_on_frictional_support(void **state) {
     world_free(w);
 }
 
-/* The turning angle takes a series below tan theta = 0.1 and libm's atan2 above, and the band fraction
- * tanh(mu theta / 2) a series below mu theta / 2 = 0.05 (theta = 0.667 at mu = 0.15): on either side and
- * at the switches the ratio is exp(mu theta) and the fraction tanh(mu theta / 2) to round-off, theta set
- * by the geometry. */
+/* The turning angle takes a series below tan theta = 0.1 (shorter below 0.01) and libm's atan2 above, and
+ * the band fraction tanh(mu theta / 2) a series below mu theta / 2 = 0.05 (shorter below 0.01; theta =
+ * 0.133 and 0.667 at mu = 0.15): on either side of each switch the ratio is exp(mu theta) and the
+ * fraction tanh(mu theta / 2) to round-off, theta set by the geometry. */
 static void capstan_band_at_small_and_large_turns(void **state) {
     (void)state;
     world *w = make_world(0.15);
     const cs_cable_model *cm = &w->model->cables[0];
-    static const double turns[] = {1e-7, 1e-3, 0.03, 0.0996, 0.0997, 0.1, 0.5, 0.666, 0.667, 0.7, 2.0, 3.1};
+    static const double turns[] = {1e-7,  1e-3,  0.00999, 0.01001, 0.03,  0.0996, 0.0997, 0.1,
+                                   0.133, 0.134, 0.5,     0.666,   0.667, 0.7,    2.0,    3.1};
     for (size_t k = 0; k < sizeof turns / sizeof turns[0]; k++) {
         double th = turns[k], a[3] = {0, 0, 1}, b[3] = {2, 0, 1}, c[3] = {2 + 3 * cos(th), 3 * sin(th), 1};
         lay_cable(w->state, a, b, c, 0.002, 0.002);
