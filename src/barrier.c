@@ -219,7 +219,7 @@ static double solve_at_pose(const cs_model *model, cs_state *s) {
 
 double cs_barrier_solve(const cs_model *model, cs_state *s) {
     double worst = solve_at_pose(model, s);
-    for (int c = 0; c < model->cable_count; c++) /* after Newton only a broken cable's are not found */
+    for (int c = 0; c < model->cable_count; c++) /* after Newton, only a broken cable's still to zero */
         if (!s->solver.settled || s->cables[c].status != CS_CABLE_INTACT)
             cs_cable_update_tensions(&model->cables[c], &s->cables[c], NULL);
     s->face_force = cs_face_loaded(model, s) ? cs_face_normal_force_now(model, s, NULL) : 0.0;

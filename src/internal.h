@@ -147,8 +147,9 @@ typedef struct cs_solver {
     size_t band_capacity;
     int *pivot;
     int kl, ku, band_width;
-    int settled; /* the last solve step was Newton's, which ended with every node placed and every intact
-                  * span's tension found at its unknowns (cleared by the sweeps and anything else) */
+    int settled; /* the barrier solve's last stage was Newton's, which ended with every node placed and
+                  * every intact span's tension found at its unknowns; cleared when a Newton solve starts
+                  * and by the Gauss-Seidel sweeps, the crush's own solve and cs_solver_go_back */
 } cs_solver;
 
 struct cs_state {

@@ -25,7 +25,7 @@ int cs_post_held(const cs_model *model, const cs_state *s, int p) {
 }
 
 /* sin(t)/t, its derivative over t and cos t. Below t = 0.1 (a post that has not failed) by their series
- * to t^12, whose next terms are below 1e-25: exact to round-off, cheaper than sin and cos, and more
+ * to t^12, whose next terms are at most 1.2e-25: exact to round-off, cheaper than sin and cos, and more
  * accurate for the derivative, whose closed form (t cos t - sin t) / t^3 loses digits to cancellation
  * (1e-9 of it at t = 1e-3). */
 static void sinc_terms(double t, double *s, double *g, double *c) {

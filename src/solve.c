@@ -429,7 +429,7 @@ static int band_factor(cs_solver *w, int n) {
                 for (int j = 1; j <= width; j++)
                     di[j] -= f * d[j];
         }
-        d[0] = inv; /* the solve multiplies by it: a division there waited on every row before */
+        d[0] = inv; /* the solve multiplies by it instead of dividing on each row's path */
     }
     return 0;
 }
@@ -453,8 +453,7 @@ static void band_solve(const cs_solver *w, int n, double *b) {
     for (int k = n - 1; k >= 0; k--) {
         int width = (k + ku + kl < n - 1 ? k + ku + kl : n - 1) - k;
         const double *d = &BAND(w, k, k), *bk = b + k;
-        /* four partial sums: one sum's chain of additions, each waiting for the last, was a tenth
-         * of a run's time */
+        /* four partial sums, so that the additions do not wait on one another one by one */
         double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
         int j = 1;
         for (; j + 3 <= width; j += 4)
