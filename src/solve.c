@@ -549,7 +549,8 @@ static double ramp_slope(double x) {
     return x >= RAMP_H ? 1.0 : (x + RAMP_H) / (2.0 * RAMP_H);
 }
 static void smooth_clamp_slopes(double y, double b, double w, double *dy, double *db) {
-    double s1 = ramp_slope((y - b) / w), s2 = ramp_slope((-y - b) / w);
+    double iw = 1.0 / w; /* as smooth_clamp, so both see the same x */
+    double s1 = ramp_slope((y - b) * iw), s2 = ramp_slope((-y - b) * iw);
     *dy = 1.0 - s1 - s2, *db = s1 - s2;
 }
 
