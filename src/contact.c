@@ -12,9 +12,9 @@
  * (override), above the top edge it runs under it (underride). Once engaged, the contact's height on the
  * face is an unknown of the barrier solve with Coulomb friction on the vertical face: it sticks while the
  * spans' pull along the face is at most mu times their pull into it, else it slides with the pull
- * (solve.c, cs_contact_solve_height). A contact that slides past an edge slips off the same way. Either
+ * (its row below). A contact that slides past an edge slips off the same way. Either
  * way the cable leaves the contact for good. */
-#include "internal.h"
+#include "rows.h"
 #include "vec3.h"
 
 #include <math.h>
@@ -27,12 +27,6 @@ static double corner_y(const cs_model *model, int k) {
 
 static int is_corner(int id) {
     return id == CS_NODE_LEFT || id == CS_NODE_RIGHT;
-}
-
-static int find_node(const cs_cable_state *cs, int id) {
-    for (int i = 0; i < cs->node_count; i++)
-        if (cs->node[i] == id) return i;
-    return -1;
 }
 
 /* > 0 if p lies to the left of the directed line a -> b in plan. */
@@ -76,54 +70,6 @@ void cs_contact_face_force(const cs_model *model, const cs_state *s, int c, int 
     (void)model;
 }
 
-/* dir * F_z - mu F_n - the friction floor with the contact of corner k at body height z (the rope in
- * the spans held). */
-static double height_excess(const cs_model *model, cs_state *s, int c, int i, int k, double z, int dir) {
-    cs_cable_state *cs = &s->cables[c];
-    const cs_cable_model *cm = &model->cables[c];
-    cs->corner_z[k] = z;
-    cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), z, cs->pos + 3 * i);
-    cs->tension[i - 1] = cs_span_tension(cm, cs, i - 1);
-    cs->tension[i] = cs_span_tension(cm, cs, i);
-    double fz, fn;
-    cs_contact_face_force(model, s, c, i, NULL, &fz, &fn);
-    return dir * fz - model->vehicle.def.face_friction * fn - CS_FRICTION_FLOOR * cm->rope.fu;
-}
-
-/* Local solve of a contact's height (Coulomb friction on the vertical face, measured from where it was
- * at the end of the last step): it sticks while |F_z| <= mu F_n, else slides with the pull until
- * |F_z| = mu F_n (bisection over up to 2 m). Returns the relative violation found on entry. */
-double cs_contact_solve_height(const cs_model *model, cs_state *s, int c, int i, int k, double tol) {
-    cs_cable_state *cs = &s->cables[c];
-    double z0 = cs->corner_z_commit[k], fu = model->cables[c].rope.fu;
-    double up = height_excess(model, s, c, i, k, z0, 1), down = height_excess(model, s, c, i, k, z0, -1);
-    int dir = up > 0.0 ? 1 : (down > 0.0 ? -1 : 0);
-    double entry = 0.0;
-    {
-        double fz, fn;
-        height_excess(model, s, c, i, k, cs->corner_z[k], 1);
-        cs_contact_face_force(model, s, c, i, NULL, &fz, &fn);
-        double b = model->vehicle.def.face_friction * fn + CS_FRICTION_FLOOR * fu, dz = cs->corner_z[k] - z0;
-        entry =
-            (fabs(fz) > b || (dz != 0.0 && fabs(fabs(fz) - b) > tol * fu)) ? fabs(fabs(fz) - b) / fu : 0.0;
-    }
-    if (dir == 0) {
-        height_excess(model, s, c, i, k, z0, 1);
-        return entry;
-    }
-    double a = z0, b = z0 + 2.0 * dir;
-    if (height_excess(model, s, c, i, k, b, dir) > 0.0) return entry; /* pulled off the face */
-    for (int it = 0; it < 60; it++) {
-        double m = 0.5 * (a + b);
-        if (height_excess(model, s, c, i, k, m, dir) > 0.0)
-            a = m;
-        else
-            b = m;
-    }
-    height_excess(model, s, c, i, k, b, dir);
-    return entry;
-}
-
 static void slip(const cs_model *model, cs_state *s, int c, cs_event_type why) {
     cs_cable_state *cs = &s->cables[c];
     s->e_released += cs_cable_stored_energy(&model->cables[c], cs);
@@ -132,6 +78,12 @@ static void slip(const cs_model *model, cs_state *s, int c, cs_event_type why) {
     cs->status = CS_CABLE_SLIPPED;
     cs->engaged = 0;
     cs_event_add(model, s, why, CS_ELEMENT_CABLE, c, s->t);
+}
+
+void cs_contact_place_one(const cs_model *model, cs_state *s, int c, int i, int k, double z) {
+    cs_cable_state *cs = &s->cables[c];
+    cs->corner_z[k] = z;
+    cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), z, cs->pos + 3 * i);
 }
 
 void cs_contact_place_corners(const cs_model *model, cs_state *s, double crush) {
@@ -161,7 +113,7 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
     }
     /* engage corners that have crossed the path */
     for (int k = 0; k < 2; k++) {
-        if (find_node(cs, corner_id[k]) >= 0) continue;
+        if (cs_cable_find_node(cs, corner_id[k]) >= 0) continue;
         double lo, hi, p[3], zn = 0.0, bz = 0.0;
         face_heights(model, s, k, &lo, &hi);
         int j = 1;
@@ -185,7 +137,7 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
         cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), cs->corner_z[k], p);
         cs_cable_insert_node(cs, j, corner_id[k], p);
     }
-    cs->engaged = find_node(cs, CS_NODE_LEFT) >= 0 || find_node(cs, CS_NODE_RIGHT) >= 0;
+    cs->engaged = cs_cable_find_node(cs, CS_NODE_LEFT) >= 0 || cs_cable_find_node(cs, CS_NODE_RIGHT) >= 0;
     if (cs->engaged && !s->contact_started) {
         s->contact_started = 1;
         s->summary.first_contact_time = s->t;
@@ -249,3 +201,145 @@ void cs_contact_drop_failed(const cs_model *model, cs_state *s) {
             if (cs->node[i] >= 0 && !cs_post_standing(&s->posts[cs->node[i]])) cs_cable_remove_node(cs, i);
     }
 }
+
+/* The body's axes in the world. */
+static void body_axes(const cs_state *s, double ax[3][3]) {
+    for (int k = 0; k < 3; k++) {
+        double e[3] = {k == 0, k == 1, k == 2};
+        quat_rotate(ax[k], s->quat, e);
+    }
+}
+
+/* ---- the face: what pushes on it, and its rows of the barrier solve ----
+ * Unknowns: each engaged contact's height on the face (Coulomb friction along the vertical face, as for a
+ * support: lambda = the spans' pull up the face, b = mu times their pull into it plus the floor w, dz from
+ * the last step; the floor holds the contact of a slack rope where it is), and the crush, whose row
+ * balances the face's normal force N against the crush curve C: N(crush) - C(crush) = 0 (the paper's
+ * crush correction). */
+
+/* Whether anything pushes on the face: an intact cable wrapped on it or a standing captured post. */
+int cs_face_loaded(const cs_model *model, const cs_state *s) {
+    for (int c = 0; c < model->cable_count; c++)
+        if (s->cables[c].engaged && s->cables[c].status == CS_CABLE_INTACT) return 1;
+    for (int p = 0; p < model->post_count; p++)
+        if (s->posts[p].captured && cs_post_standing(&s->posts[p])) return 1;
+    return 0;
+}
+
+/* Normal force on the face at the state as placed: the cables through the corners plus the pushes of
+ * captured posts, along the vehicle's heading. chords: every cable's (max_nodes spans each), or NULL. */
+double cs_face_normal_force(const cs_model *model, const cs_state *s, const double *chords) {
+    double ax[3][3], f[3] = {0.0, 0.0, 0.0}, mo[3] = {0.0, 0.0, 0.0}, pushed = 0.0;
+    body_axes(s, ax);
+    for (int p = 0; p < model->post_count; p++)
+        if (s->posts[p].captured && cs_post_standing(&s->posts[p])) pushed += s->posts[p].push;
+    double n = 0.0;
+    if (pushed > 0.0) {
+        cs_post_captured_force(model, s, s->crush, f, mo);
+        n = -v3_dot(f, ax[0]);
+    }
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        if (!cs->engaged || cs->status != CS_CABLE_INTACT) continue;
+        for (int i = 1; i + 1 < cs->node_count; i++) {
+            if (!is_corner(cs->node[i])) continue;
+            double fc[3];
+            cs_node_force(cs, i, chords ? chords + 4 * (size_t)c * (size_t)model->max_nodes : NULL, fc);
+            n -= v3_dot(fc, ax[0]);
+        }
+    }
+    return n;
+}
+
+/* The contact of corner k on the face: Coulomb friction along the vertical face, as for a support
+ * (lambda = the spans' pull up the face, b = mu times their pull into it, dz from the last step). */
+static double height_residual(const cs_model *model, const cs_state *s, const cs_rows *rows, int c, int k) {
+    const cs_cable_model *cm = &model->cables[c];
+    const cs_cable_state *cs = &s->cables[c];
+    const double *ch = cs_rows_chords(model, rows, c);
+    int i = cs_cable_find_node(cs, corner_id[k]);
+    double fz, fn;
+    cs_contact_face_force(model, s, c, i, ch, &fz, &fn);
+    double b = model->vehicle.def.face_friction * fn;
+    double cstiff = cm->rope.ea / (ch[4 * (i - 1) + 3] + ch[4 * i + 3] + 1e-9);
+    double dz = cs->corner_z[k] - cs->corner_z_commit[k];
+    double wf = CS_FRICTION_FLOOR * cm->rope.fu, proj = cs_smooth_clamp(fz + cstiff * dz, b + wf, wf);
+    return (fz - proj - CS_STICK_EPS * cstiff * dz) * (1.0 / cm->rope.fu);
+}
+
+/* A face contact's row (height_residual): r Fu = fz - proj(fz + c dz, mu fn + w, w) - eps c dz. */
+static void height_jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row, int c,
+                            int k) {
+    const cs_cable_model *cm = &model->cables[c];
+    const cs_cable_state *cs = &s->cables[c];
+    int i = cs_cable_find_node(cs, corner_id[k]);
+    const cs_span_grad *sp = cs_rows_spans(model, rows, c, i);
+    double ax[3][3], f[3], fb[3], mu = model->vehicle.def.face_friction, fu = cm->rope.fu;
+    body_axes(s, ax);
+    cs_node_force(cs, i, cs_rows_chords(model, rows, c), f);
+    for (int e = 0; e < 3; e++)
+        fb[e] = v3_dot(ax[e], f);
+    double fn = v2_norm(fb[0], fb[1]), wf = CS_FRICTION_FLOOR * fu;
+    double len = sp[0].l + sp[1].l + 1e-9, cstiff = cm->rope.ea / len,
+           dz = cs->corner_z[k] - cs->corner_z_commit[k];
+    double py, pb;
+    cs_smooth_clamp_slopes(fb[2] + cstiff * dz, mu * fn + wf, wf, &py, &pb);
+    double rho[3], gp[3][3] = {{0}}, gm[3] = {0};
+    for (int e = 0; e < 3; e++) {
+        rho[e] = (1.0 - py) * ax[2][e];
+        if (fn > 0.0) rho[e] -= pb * mu * (fb[0] * ax[0][e] + fb[1] * ax[1][e]) / fn;
+        rho[e] /= fu;
+    }
+    cs_rows_force_gradient(sp, rho, gp, gm);
+    cs_rows_length_gradient(sp, -(py + CS_STICK_EPS) * dz * -cm->rope.ea / (len * len) / fu, gp);
+    cs_rows_add_node_gradient(model, s, rows, row, c, i, gp, gm);
+    cs_rows_add(rows, row, row, -(py + CS_STICK_EPS) * cstiff / fu); /* dz: the row's own unknown */
+}
+
+/* The crush row's dependence on everything but the crush: N = -sum of the corners' pulls along the
+ * face's normal (the captured posts' pushes move with the crush alone). */
+static void crush_jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row) {
+    const cs_vehicle_def *v = &model->vehicle.def;
+    double ax[3][3], scale = v->crush_force[v->crush_point_count - 1];
+    body_axes(s, ax);
+    double rho[3] = {-ax[0][0] / scale, -ax[0][1] / scale, -ax[0][2] / scale};
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        if (!cs->engaged || cs->status != CS_CABLE_INTACT) continue;
+        for (int i = 1; i + 1 < cs->node_count; i++) {
+            if (!is_corner(cs->node[i])) continue;
+            const cs_span_grad *sp = cs_rows_spans(model, rows, c, i);
+            double gp[3][3] = {{0}}, gm[3] = {0};
+            cs_rows_force_gradient(sp, rho, gp, gm);
+            cs_rows_add_node_gradient(model, s, rows, row, c, i, gp, gm);
+        }
+    }
+}
+
+static void height_rows_residual(const cs_model *model, const cs_state *s, const cs_rows *rows,
+                                 const cs_slot *u, double *r) {
+    r[0] = height_residual(model, s, rows, u->a, u->b);
+}
+
+static void height_rows_jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row,
+                                 const cs_slot *u) {
+    height_jacobian(model, s, rows, row, u->a, u->b);
+}
+
+const cs_row_kind cs_height_rows = {1, height_rows_residual, height_rows_jacobian};
+
+static void crush_residual(const cs_model *model, const cs_state *s, const cs_rows *rows, const cs_slot *u,
+                           double *r) {
+    (void)u;
+    const cs_vehicle_def *v = &model->vehicle.def;
+    double nf = cs_face_normal_force(model, s, rows->chords);
+    r[0] = (nf - cs_crush_force(v, s->crush, s->crush_max)) / v->crush_force[v->crush_point_count - 1];
+}
+
+static void crush_rows_jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row,
+                                const cs_slot *u) {
+    (void)u;
+    crush_jacobian(model, s, rows, row);
+}
+
+const cs_row_kind cs_crush_rows = {1, crush_residual, crush_rows_jacobian};

@@ -1,6 +1,7 @@
 /* Engine internals shared by the physics files: the model (derived, immutable) and the state.
- * One file per physics area works on these: vehicle.c, cable.c, post.c, footing.c, anchor.c,
- * contact.c, barrier.c (the quasi-static solve that couples them), step.c, energy.c, events.c. */
+ * One file per physics area works on these: vehicle.c, rope.c, cable.c, support.c, post.c, footing.c,
+ * anchor.c, contact.c; barrier.c and system.c (the quasi-static solve that couples them, with rows.h,
+ * newton.c and band.c below it and relax.c its fallback), step.c, energy.c, events.c. */
 #ifndef CS_INTERNAL_H
 #define CS_INTERNAL_H
 
@@ -117,40 +118,7 @@ typedef struct cs_post_state {
     double rate[2];        /* rate of tilt at the last commit, rad/s */
 } cs_post_state;
 
-/* Workspace of the Newton solve of the barrier (solve.c), sized at state creation. */
-typedef struct cs_solver {
-    struct slot *slots; /* unknowns in barrier order */
-    int *tilt_index;    /* [post_count] index of a post's first tilt unknown, -1 if none */
-    int *node_index;    /* [cable_count * max_nodes] index of a node's material unknown, -1 if none */
-    int *height_index;  /* [cable_count * 2] index of a face contact height unknown, -1 if none */
-    int crush_index;
-    double *x, *r, *dx, *xt, *rt;
-    double *updates; /* [2 CS_BROYDEN_MAX n] the Broyden updates since the last factored Jacobian: s, u */
-    int update_count;
-    double *kept;              /* unknowns saved by cs_solver_keep */
-    struct slot *slots_kept;   /* and their slots */
-    struct slot *slots_sorted; /* scratch of the sort along x */
-    int kept_n;
-    size_t key_count;      /* unknowns the predictor remembers, keyed by element (slot_key) */
-    double *last;          /* [keys] each unknown's value at the start of the last step's solve */
-    long *last_step;       /* [keys] the step that value belongs to */
-    struct slot *slots_lu; /* the unknowns of the factored Jacobian */
-    int lu_valid, lu_n, lu_kl, lu_ku;
-    struct slot *slots_bw; /* the unknowns the band's width was last found for (solve.c, band_shape) */
-    int *nodes_bw; /* [cable_count (max_nodes + 1)] and each cable's node count (-1: not intact), ids */
-    int bw_valid, bw_n;
-    double *band;               /* banded Jacobian / LU factors */
-    struct cs_span_grad *spans; /* [cable_count * max_nodes] each span's tension gradient (Jacobian) */
-    double *chords; /* [4 cable_count max_nodes] each span's chord at the last placement (cs_span_chord) */
-    double *axes;   /* [post_count * 18] each post axis' Jacobian (at the last placement) and its tilt
-                     * derivatives (the Jacobian's) */
-    size_t band_capacity;
-    int *pivot;
-    int kl, ku, band_width;
-    int settled; /* the barrier solve's last stage was Newton's, which ended with every node placed and
-                  * every intact span's tension found at its unknowns; cleared when a Newton solve starts
-                  * and by the Gauss-Seidel sweeps, the crush's own solve and cs_solver_go_back */
-} cs_solver;
+typedef struct cs_work cs_work; /* work.h */
 
 struct cs_state {
     double t;
@@ -185,17 +153,11 @@ struct cs_state {
     int ring_fill;
     double decel_50ms_g;
     cs_summary summary;
-    double solver_residual;  /* largest residual of the solves the step committed */
-    double stored_committed; /* cs_barrier_stored_energy where the path stretch being followed started
-                              * or last committed at the last level, J (set by step.c) */
 
     cs_event *events;
     int event_count;
 
-    cs_solver solver;
-    /* the state at the start of the stretch followed at each level, to take it again (step.c) */
-    struct cs_state *step_start[CS_PATH_LEVELS];
-    struct cs_state *trial; /* scratch for a trial commit (barrier.c) */
+    cs_work *work; /* the step's workspace (work.h); NULL in a copy that only holds a state */
 };
 
 void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src);
@@ -222,18 +184,31 @@ typedef struct cs_span_grad {
 void cs_span_tension_grad(const cs_cable_model *cm, const cs_cable_state *cs, int span, const double *chord,
                           cs_span_grad *g);
 double cs_span_material_at(const cs_cable_model *cm, const cs_cable_state *cs, int span, double t);
+/* The rope law of a span (rope.c): its tension with `material` of rope at plastic strain ep over a chord of
+ * `length`, sagging (sag term q = cs_span_sag); *arc (unless NULL) gets the arc's strain and *yields
+ * whether the backbone capped the tension. */
+double cs_span_tension_law(const cs_rope *rope, double length, double material, double ep, double q,
+                           double *arc, int *yields);
+double cs_span_tension_at(const cs_rope *rope, double length, double material, double ep, double q);
+double cs_span_sag(const cs_rope *rope, const double *chord);
+/* Plastic strain of span i with its ends at material coordinates lo and hi (the rope that slid in brings
+ * its own). */
+double cs_span_plastic(const cs_cable_state *cs, int span, double lo, double hi);
 /* Every span's tension, and its chord into chords if not NULL. */
 void cs_cable_update_tensions(const cs_cable_model *cm, cs_cable_state *cs, double *chords);
-double cs_cable_slide_node(const cs_model *model, const cs_cable_model *cm, cs_cable_state *cs, int i,
-                           double tol);
+/* Span i's tension from its ends as they stand (the chord into chord unless NULL): the one place, with
+ * cs_cable_update_tensions, that sets a span's tension. */
+void cs_cable_update_span(const cs_cable_model *cm, cs_cable_state *cs, int span, double *chord);
+/* Every span at tension t whatever its stretch (the rope as an installer pulls it, before it is laid in). */
+void cs_cable_hold_tension(cs_cable_state *cs, double t);
+/* Index of node id on the cable's path, -1 if it is not on it. */
+int cs_cable_find_node(const cs_cable_state *cs, int id);
 /* mu theta at interior node i, theta the path's turning angle there; the ratio is its exponential. */
 double cs_node_capstan_exponent(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs,
                                 int i, const double *chords);
 /* tanh(mu theta / 2) at interior node i: the friction band's half-width over T_L + T_R. */
 double cs_node_band_fraction(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs, int i,
                              const double *chords);
-double cs_node_friction_ratio(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs,
-                              int i);
 void cs_cable_insert_node(cs_cable_state *cs, int at, int id, const double *p);
 void cs_cable_remove_node(cs_cable_state *cs, int at);
 void cs_cable_commit(const cs_model *model, int c, cs_state *s);
@@ -249,7 +224,6 @@ void cs_post_attachment(const cs_model *model, int post, const double *tilt, dou
 /* Each intact cable's node at post p where a tilt puts it (one sine and cosine for all), and the post
  * axis' Jacobian there (as cs_post_axis_jacobian's j) into axis if not NULL. */
 void cs_post_place_nodes(const cs_model *model, cs_state *s, int post, const double *tilt, double *axis);
-double cs_post_solve(const cs_model *model, cs_state *s, int post, double tol, int may_fall);
 double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int post);
 void cs_post_commit(const cs_model *model, cs_state *s, int post);
 /* Elastic plus kinetic. */
@@ -263,13 +237,21 @@ int cs_post_check_failure(const cs_model *model, cs_state *s, int post);
  * them. */
 void cs_post_residual_now(const cs_model *model, const cs_state *s, int post, const double *chords,
                           const double *axis, double *r);
+/* The same at another tilt, with the post's cable nodes placed there. */
+void cs_post_residual_at(const cs_model *model, const cs_state *s, int post, const double *tilt,
+                         const double *chords, const double *axis, double *r);
+/* Whether a post of this model swings over a time h since the last commit (it has mass, h in (0, inf)). */
+int cs_post_swings(const cs_post_model *pm, double h);
 void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double *q);
 /* For the solver's Jacobian: the post axis' Jacobian and its tilt derivatives, and the slope of
  * -(resistance + inertial moment) at the post's tilt. */
 void cs_post_axis_jacobian(const double *tilt, double *j, double *dj);
 void cs_post_resistance_slope(const cs_model *model, const cs_state *s, int p, double *k);
-double cs_post_place_captured(const cs_model *model, cs_state *s, double crush, double *force,
-                              double *moment);
+/* Posts struck by the face: placed for a crush (the sum of their pushes returned), and their resistance
+ * on the vehicle as placed, added to force and moment. */
+double cs_post_place_captured(const cs_model *model, cs_state *s, double crush);
+void cs_post_captured_force(const cs_model *model, const cs_state *s, double crush, double *force,
+                            double *moment);
 int cs_post_capture(const cs_model *model, cs_state *s);
 
 /* ---- vehicle (vehicle.c) ---- */
@@ -291,30 +273,35 @@ void cs_contact_place_corners(const cs_model *model, cs_state *s, double crush);
 void cs_contact_drop_failed(const cs_model *model, cs_state *s);
 void cs_contact_face_force(const cs_model *model, const cs_state *s, int c, int i, const double *chords,
                            double *fz, double *fn);
-double cs_contact_solve_height(const cs_model *model, cs_state *s, int c, int i, int k, double tol);
+/* Put the contact of corner k (node i of cable c) at body height z on the face. */
+void cs_contact_place_one(const cs_model *model, cs_state *s, int c, int i, int k, double z);
+/* Whether anything pushes on the face, and its normal force at the state as placed (chords: every
+ * cable's, max_nodes spans each, or NULL). */
+int cs_face_loaded(const cs_model *model, const cs_state *s);
+double cs_face_normal_force(const cs_model *model, const cs_state *s, const double *chords);
 void cs_contact_commit(const cs_model *model, cs_state *s);
 int cs_contact_check_slip(const cs_model *model, cs_state *s);
 
-/* ---- barrier solve (barrier.c) ---- */
+/* ---- barrier solve (barrier.c), and its fallback (relax.c) ---- */
 double cs_barrier_solve(const cs_model *model, cs_state *s);
-double cs_barrier_newton(const cs_model *model, cs_state *s);
-/* For tests (tests/test_solve.c): the solve's unknowns, residual and Jacobian (dense, row-major) at the
- * state as it stands, and its residual at other values of the same unknowns. */
-int cs_solver_linearize(const cs_model *model, cs_state *s, int cap, int *kind, double *x, double *r,
-                        double *jac);
-void cs_solver_residual(const cs_model *model, cs_state *s, int n, const double *x, double *r);
-/* chords: every cable's (max_nodes spans each), or NULL. */
-double cs_face_normal_force_now(const cs_model *model, cs_state *s, const double *chords);
-int cs_face_loaded(const cs_model *model, const cs_state *s);
-int cs_solver_init(const cs_model *model, cs_solver *w);
-void cs_solver_free(cs_solver *w);
-void cs_solver_reset(cs_solver *w);
-void cs_solver_keep(const cs_model *model, cs_state *s);
-void cs_solver_go_back(const cs_model *model, cs_state *s);
 void cs_barrier_force(const cs_model *model, cs_state *s);
 void cs_barrier_commit(const cs_model *model, cs_state *s);
-double cs_barrier_trial_energy(const cs_model *model, const cs_state *s);
+/* The stored and dissipated energy the barrier would hold if committed as it stands (on a trial copy in
+ * the workspace). */
+double cs_barrier_trial_energy(const cs_model *model, const cs_state *s, cs_work *work);
 double cs_barrier_stored_energy(const cs_model *model, const cs_state *s);
+/* Gauss-Seidel sweeps of the elements' local problems (may_fall: a post with no equilibrium near falls
+ * to the next one); the largest relative residual of the last sweep. */
+double cs_relax(const cs_model *model, cs_state *s, int sweeps, int may_fall);
+/* The fallback's local solve of support i of a cable: the rope slides until the capstan condition holds
+ * with its neighbours held; the relative violation found on entry. */
+double cs_relax_slide_node(const cs_model *model, const cs_cable_model *cm, cs_cable_state *cs, int i,
+                           double tol);
+/* The fallback's local solve of post p's tilt (its cables sliding through it) with its neighbours held;
+ * the relative residual found on entry. */
+double cs_relax_post(const cs_model *model, cs_state *s, int p, double tol, int may_fall);
+/* The crush alone in balance with the face's load (the paper's crush correction); the residual on entry. */
+double cs_relax_crush(const cs_model *model, cs_state *s);
 
 /* ---- anchors (anchor.c) ---- */
 int cs_anchor_check(const cs_model *model, cs_state *s);

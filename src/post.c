@@ -8,7 +8,7 @@
  * M_cap = min(Zx Fy, P(h) h): whichever of post and footing is weaker yields, and its work goes to
  * post plastic or soil. Each step the tilt is solved so that Q = resistance, plus the inertial moment of
  * a post with mass (its swing, below); a massless post is in balance at once. */
-#include "internal.h"
+#include "rows.h"
 #include "vec3.h"
 
 #include <math.h>
@@ -128,13 +128,13 @@ void cs_post_axis_jacobian(const double *tilt, double *j, double *dj) {
  * equilibrium near. Backward Euler takes J |w - w_c|^2 / 2 out of the swing at each commit, booked as
  * post damping; its end-point rule's share in the forces that swing the post (k |d alpha|^2 / 2 for a
  * spring) is left in the balance error (docs/theory.md, "Posts with mass"). */
-static int swings(const cs_post_model *pm, double h) {
+int cs_post_swings(const cs_post_model *pm, double h) {
     return pm->inertia > 0.0 && h > 0.0 && h < HUGE_VAL; /* not massless, held, or at rest */
 }
 
 static void subtract_inertia(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double h,
                              double *r) {
-    if (!swings(pm, h)) return;
+    if (!cs_post_swings(pm, h)) return;
     double k = pm->inertia / (h * h);
     r[0] -= k * (tilt[0] - ps->tilt_commit[0] - h * ps->rate[0]);
     r[1] -= k * (tilt[1] - ps->tilt_commit[1] - h * ps->rate[1]);
@@ -167,13 +167,13 @@ void cs_post_resistance_slope(const cs_model *model, const cs_state *s, int p, d
     } else {
         k[0] = k[3] = -pm->k_rot, k[1] = k[2] = 0.0;
     }
-    if (swings(pm, s->h)) k[0] -= pm->inertia / (s->h * s->h), k[3] -= pm->inertia / (s->h * s->h);
+    if (cs_post_swings(pm, s->h)) k[0] -= pm->inertia / (s->h * s->h), k[3] -= pm->inertia / (s->h * s->h);
 }
 
 /* Residual of post p at a tilt, its cable nodes placed there and their tensions current:
  * r = Q_cables - Q_resist, less the swing's inertial moment. */
-static void residual_at(const cs_model *model, const cs_state *s, int p, const double *tilt,
-                        const double *chords, const double *axis, double *r) {
+void cs_post_residual_at(const cs_model *model, const cs_state *s, int p, const double *tilt,
+                         const double *chords, const double *axis, double *r) {
     double own[6], q[2] = {0.0, 0.0};
     if (!axis) axis_jacobian(tilt, own);
     const double *j = axis ? axis : own;
@@ -192,37 +192,10 @@ static void residual_at(const cs_model *model, const cs_state *s, int p, const d
     subtract_inertia(&model->posts[p], &s->posts[p], tilt, s->h, r);
 }
 
-/* Place the post's cable nodes for a tilt, let the rope slide through the post's own holes (from the
- * material it had on entry, so the residual is a function of the tilt alone), and return the residual
- * there. Sliding inside this block matters: held rope would make the post look as stiff as the cable. */
-static void post_residual(const cs_model *model, cs_state *s, int p, const double *tilt,
-                          const double *m_entry, double *r) {
-    for (int c = 0; c < model->cable_count; c++) {
-        cs_cable_state *cs = &s->cables[c];
-        int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
-        if (i < 0) continue;
-        const cs_cable_model *cm = &model->cables[c];
-        cs_post_attachment(model, p, tilt, cm->z, cs->pos + 3 * i);
-        cs->m[i] = m_entry[c];
-        cs_cable_slide_node(model, cm, cs, i, model->scenario.solver_tolerance);
-        cs->tension[i - 1] = cs_span_tension(cm, cs, i - 1);
-        cs->tension[i] = cs_span_tension(cm, cs, i);
-    }
-    residual_at(model, s, p, tilt, NULL, NULL, r);
-}
-
 /* Residual at the state as it stands (nodes placed, tensions current). */
 void cs_post_residual_now(const cs_model *model, const cs_state *s, int p, const double *chords,
                           const double *axis, double *r) {
-    residual_at(model, s, p, s->posts[p].tilt, chords, axis, r);
-}
-
-static void entry_material(const cs_model *model, const cs_state *s, int p, double *m_entry) {
-    for (int c = 0; c < model->cable_count; c++) {
-        const cs_cable_state *cs = &s->cables[c];
-        int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
-        m_entry[c] = i >= 0 ? cs->m[i] : 0.0;
-    }
+    cs_post_residual_at(model, s, p, s->posts[p].tilt, chords, axis, r);
 }
 
 /* The tilt at which post p balances the cables' tensions as they stand (held, not following the spans'
@@ -275,112 +248,6 @@ double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int p) {
  * books as released (step.c). */
 #define CS_FALL_STEP 0.01  /* rad */
 #define CS_FALL_STALL 1e-2 /* residual, of the capacity, that counts as no equilibrium near */
-
-static double fall(const cs_model *model, cs_state *s, int p, const double *m_entry, double *al, double *r) {
-    const cs_post_model *pm = &model->posts[p];
-    double rn = v2_norm(r[0], r[1]), t[2], rt[2];
-    for (int k = 0; k * CS_FALL_STEP < pm->rot_limit + CS_FALL_STEP && v2_norm(al[0], al[1]) < pm->rot_limit;
-         k++) {
-        double d[2] = {r[0] / rn, r[1] / rn};
-        t[0] = al[0] + CS_FALL_STEP * d[0], t[1] = al[1] + CS_FALL_STEP * d[1];
-        post_residual(model, s, p, t, m_entry, rt);
-        if (rt[0] * d[0] + rt[1] * d[1] > 0.0) { /* still pushed on */
-            al[0] = t[0], al[1] = t[1], r[0] = rt[0], r[1] = rt[1], rn = v2_norm(r[0], r[1]);
-            continue;
-        }
-        double lo = 0.0, hi = CS_FALL_STEP, a0[2] = {al[0], al[1]};
-        for (int b = 0; b < 40; b++) { /* the moment along d changes sign between lo and hi */
-            double f = 0.5 * (lo + hi);
-            t[0] = a0[0] + f * d[0], t[1] = a0[1] + f * d[1];
-            post_residual(model, s, p, t, m_entry, rt);
-            if (rt[0] * d[0] + rt[1] * d[1] > 0.0)
-                lo = f;
-            else
-                hi = f;
-        }
-        al[0] = a0[0] + hi * d[0], al[1] = a0[1] + hi * d[1];
-        break;
-    }
-    post_residual(model, s, p, al, m_entry, r);
-    return v2_norm(r[0], r[1]) / pm->moment_scale;
-}
-
-/* Newton on the post's tilt with a finite-difference Jacobian and backtracking; where it stalls far
- * from balance and may_fall, the post falls to the next equilibrium (fall). Returns the relative
- * residual found on entry. */
-double cs_post_solve(const cs_model *model, cs_state *s, int p, double tol, int may_fall) {
-    cs_post_state *ps = &s->posts[p];
-    if (!cs_post_standing(ps) || ps->captured || cs_post_held(model, s, p)) return 0.0;
-    const cs_post_model *pm = &model->posts[p];
-    double scale = pm->moment_scale, r[2], m_entry[CS_MAX_CABLES_PER_POST];
-    double *al = ps->tilt;
-    entry_material(model, s, p, m_entry);
-    post_residual(model, s, p, al, m_entry, r);
-    double entry = v2_norm(r[0], r[1]) / scale;
-    double rn = entry;
-    for (int it = 0; it < 30 && rn > 1e-3 * tol; it++) {
-        /* On the plastic plateau the radial slope of a massless post's resistance is zero, so Newton
-         * cannot see that a post the cables pull less than its capacity must come back. Along the
-         * radial line from the elastic boundary to here the residual changes sign once: if it is still
-         * positive at the boundary the root lies between (bisect); if not, the post unloads into the
-         * elastic range (restart there). A swinging post's residual has the inertial slope J / h^2
-         * there, which Newton sees. */
-        double tr[2] = {al[0] - ps->plastic[0], al[1] - ps->plastic[1]}, tn = v2_norm(tr[0], tr[1]);
-        if (!swings(pm, s->h) && pm->k_rot * tn > pm->moment_cap && (r[0] * tr[0] + r[1] * tr[1]) < 0.0) {
-            double lo = 0.999 * pm->moment_cap / (pm->k_rot * tn), hi = 1.0, rb[2];
-            double b[2] = {ps->plastic[0] + lo * tr[0], ps->plastic[1] + lo * tr[1]};
-            post_residual(model, s, p, b, m_entry, rb);
-            double f = lo;
-            if (rb[0] * tr[0] + rb[1] * tr[1] > 0.0) {
-                for (int k = 0; k < 40; k++) {
-                    f = 0.5 * (lo + hi);
-                    b[0] = ps->plastic[0] + f * tr[0], b[1] = ps->plastic[1] + f * tr[1];
-                    post_residual(model, s, p, b, m_entry, rb);
-                    if (rb[0] * tr[0] + rb[1] * tr[1] > 0.0)
-                        lo = f;
-                    else
-                        hi = f;
-                }
-            }
-            al[0] = ps->plastic[0] + f * tr[0], al[1] = ps->plastic[1] + f * tr[1];
-            post_residual(model, s, p, al, m_entry, r);
-            rn = v2_norm(r[0], r[1]) / scale;
-            continue;
-        }
-        double h = 1e-7, jac[4], rp[2];
-        for (int k = 0; k < 2; k++) {
-            double a2[2] = {al[0], al[1]};
-            a2[k] += h;
-            post_residual(model, s, p, a2, m_entry, rp);
-            jac[k] = (rp[0] - r[0]) / h; /* column k: d r / d alpha_k */
-            jac[2 + k] = (rp[1] - r[1]) / h;
-        }
-        double det = jac[0] * jac[3] - jac[1] * jac[2];
-        double d[2];
-        if (fabs(det) > 1e-300) {
-            d[0] = -(jac[3] * r[0] - jac[1] * r[1]) / det;
-            d[1] = -(-jac[2] * r[0] + jac[0] * r[1]) / det;
-        } else {
-            d[0] = r[0] / pm->k_rot, d[1] = r[1] / pm->k_rot; /* J ~ -k in the elastic range */
-        }
-        double dn = v2_norm(d[0], d[1]);
-        if (dn > 0.05) d[0] *= 0.05 / dn, d[1] *= 0.05 / dn;
-        double step = 1.0, trial[2], rt[2], rtn = rn;
-        for (int ls = 0; ls < 12; ls++, step *= 0.5) {
-            trial[0] = al[0] + step * d[0], trial[1] = al[1] + step * d[1];
-            post_residual(model, s, p, trial, m_entry, rt);
-            rtn = v2_norm(rt[0], rt[1]) / scale;
-            if (rtn < rn) break;
-        }
-        if (!(rtn < rn)) break;
-        al[0] = trial[0], al[1] = trial[1], r[0] = rt[0], r[1] = rt[1], rn = rtn;
-    }
-    if (may_fall && rn > CS_FALL_STALL)
-        fall(model, s, p, m_entry, al, r);
-    else
-        post_residual(model, s, p, al, m_entry, r); /* leave the nodes at the accepted tilt */
-    return entry;
-}
 
 /* End of step: plastic rotation (radial return) and its work, base shear and axial pull. */
 void cs_post_commit(const cs_model *model, cs_state *s, int p) {
@@ -534,22 +401,16 @@ static double captured_lean(const cs_model *model, const cs_post_state *ps, int 
     return d > 0.0 ? th : -1.0;
 }
 
-/* Place every captured post for a trial crush; returns the push's component along the vehicle's
- * heading (the captured posts' share of the face's normal force). With force/moment given, also
- * adds the posts' resistance to the barrier's resultant on the vehicle: the gradient of the work
- * Q . dtilt with respect to the vehicle's pose (central differences, 1e-6 m and 1e-6 rad), so that
- * the vehicle's work is exactly what the posts store and dissipate however the face moves (pushing
- * on, coming down, rolling, sliding along its edge). */
-double cs_post_place_captured(const cs_model *model, cs_state *s, double crush, double *force,
-                              double *moment) {
+/* Place every captured post for a crush; returns the sum of their pushes along the vehicle's heading
+ * (the captured posts' share of the face's normal force). */
+double cs_post_place_captured(const cs_model *model, cs_state *s, double crush) {
     double total = 0.0;
     for (int p = 0; p < model->post_count; p++) {
         cs_post_state *ps = &s->posts[p];
         if (!ps->captured || !cs_post_standing(ps)) continue;
-        const cs_post_model *pm = &model->posts[p];
         double q[2], f[3];
         double th = captured_lean(model, ps, p, s->pos, s->quat, crush, ps->tilt, f);
-        cs_post_resistance(pm, ps, ps->tilt, q);
+        cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
         double m = q[0] * f[0] + q[1] * f[1];
         if (m < 0.0 || th < 0.0) { /* the face has backed off: the post stands at its set, free */
             ps->tilt[0] = ps->plastic[0], ps->tilt[1] = ps->plastic[1];
@@ -558,7 +419,21 @@ double cs_post_place_captured(const cs_model *model, cs_state *s, double crush, 
         }
         ps->push = m / (ps->lever * cos(th));
         total += ps->push;
-        if (!force) continue;
+    }
+    return total;
+}
+
+/* The captured posts' resistance (as placed for this crush) on the vehicle, added to force and moment:
+ * the gradient of the work Q . dtilt with respect to the vehicle's pose (central differences, 1e-6 m
+ * and 1e-6 rad), so that the vehicle's work is exactly what the posts store and dissipate however the
+ * face moves (pushing on, coming down, rolling, sliding along its edge). */
+void cs_post_captured_force(const cs_model *model, const cs_state *s, double crush, double *force,
+                            double *moment) {
+    for (int p = 0; p < model->post_count; p++) {
+        const cs_post_state *ps = &s->posts[p];
+        if (!ps->captured || !cs_post_standing(ps) || !(ps->push > 0.0)) continue;
+        double q[2];
+        cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
         const double h = 1e-6;
         for (int k = 0; k < 6; k++) {
             double tp[2], tm[2], qp[4], qm[4], pos[3], turn[3] = {0.0, 0.0, 0.0}, w[3], fk[3];
@@ -584,7 +459,6 @@ double cs_post_place_captured(const cs_model *model, cs_state *s, double crush, 
                 moment[k - 3] += g;
         }
     }
-    return total;
 }
 
 /* Capture the standing posts the face has reached. Returns 1 if any was captured. */
@@ -617,3 +491,47 @@ int cs_post_capture(const cs_model *model, cs_state *s) {
     }
     return any;
 }
+
+/* ---- the post's rows of the barrier solve ----
+ * Unknowns: the tilt alpha (2). Rows: Q_cables(alpha) - Q_resist(alpha) - J (alpha - alpha_c - h w_c) / h^2,
+ * in units of the post's moment_scale (its strongest rope's strength at that rope's lever, model.c), so
+ * that one tolerance is one force everywhere. */
+static void residual(const cs_model *model, const cs_state *s, const cs_rows *rows, const cs_slot *u,
+                     double *r) {
+    double q[2];
+    cs_post_residual_now(model, s, u->a, rows->chords, rows->axes + 18 * u->a, q);
+    double inv = 1.0 / model->posts[u->a].moment_scale;
+    r[0] = q[0] * inv, r[1] = q[1] * inv;
+}
+
+/* A post's two rows: Q = sum over its cables of l_c J(alpha)^T f_c, less resistance and inertia. */
+static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row,
+                     const cs_slot *u) {
+    int p = u->a;
+    const double *ja = rows->axes + 18 * p, *dj = ja + 6;
+    double kr[4], unit = model->posts[p].moment_scale; /* as residual */
+    cs_post_resistance_slope(model, s, p, kr);
+    for (int a = 0; a < 2; a++)
+        for (int b = 0; b < 2; b++)
+            cs_rows_add(rows, row + a, row + b, kr[2 * a + b] / unit);
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
+        if (i < 0) continue;
+        const cs_span_grad *sp = cs_rows_spans(model, rows, c, i);
+        double l = model->cables[c].z + model->posts[p].pivot, f[3];
+        cs_node_force(cs, i, cs_rows_chords(model, rows, c), f);
+        for (int a = 0; a < 2; a++) {
+            double rho[3] = {l * ja[a] / unit, l * ja[2 + a] / unit, l * ja[4 + a] / unit};
+            double gp[3][3] = {{0}}, gm[3] = {0};
+            cs_rows_force_gradient(sp, rho, gp, gm);
+            cs_rows_add_node_gradient(model, s, rows, row + a, c, i, gp, gm);
+            for (int b = 0; b < 2; b++) /* the axis turning under the pull */
+                cs_rows_add(rows, row + a, row + b,
+                            l * (dj[6 * b + a] * f[0] + dj[6 * b + 2 + a] * f[1] + dj[6 * b + 4 + a] * f[2]) /
+                                unit);
+        }
+    }
+}
+
+const cs_row_kind cs_post_rows = {2, residual, jacobian};

@@ -1,15 +1,15 @@
-/* The state: allocated once per model (the step never allocates), reset to t = 0, and read through
+/* The state: allocated once per model with its workspace (the step never allocates), copied, and read through
  * views. */
 #include "internal.h"
 #include "vec3.h"
+#include "work.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-/* The state's memory: cables and posts; with_workspace, also events, the speed ring, the solver's
- * workspace and the step-start copy (which needs only cables and posts). Returns 0, or -1 out of
- * memory. */
+/* The state's memory: cables and posts; with_workspace, also events, the speed ring and the workspace
+ * (whose step-start and trial copies need only cables and posts). Returns 0, or -1 out of memory. */
 static int allocate(const cs_model *model, cs_state *s, int with_workspace) {
     int nc = model->cable_count, np = model->post_count, nn = model->max_nodes;
     s->cables = calloc((size_t)(nc ? nc : 1), sizeof *s->cables);
@@ -33,14 +33,16 @@ static int allocate(const cs_model *model, cs_state *s, int with_workspace) {
     if (!with_workspace) return 0;
     s->events = calloc((size_t)model->event_capacity, sizeof *s->events);
     s->speed_ring = calloc((size_t)model->window_steps + 1, sizeof *s->speed_ring);
-    if (!s->events || !s->speed_ring) return -1;
+    s->work = calloc(1, sizeof *s->work);
+    if (!s->events || !s->speed_ring || !s->work) return -1;
+    cs_work *w = s->work;
     for (int k = 0; k < CS_PATH_LEVELS; k++) {
-        s->step_start[k] = calloc(1, sizeof *s->step_start[k]);
-        if (!s->step_start[k] || allocate(model, s->step_start[k], 0) != 0) return -1;
+        w->step_start[k] = calloc(1, sizeof *w->step_start[k]);
+        if (!w->step_start[k] || allocate(model, w->step_start[k], 0) != 0) return -1;
     }
-    s->trial = calloc(1, sizeof *s->trial);
-    if (!s->trial || allocate(model, s->trial, 0) != 0) return -1;
-    return cs_solver_init(model, &s->solver);
+    w->trial = calloc(1, sizeof *w->trial);
+    if (!w->trial || allocate(model, w->trial, 0) != 0) return -1;
+    return cs_system_init(model, &w->sys);
 }
 
 cs_state *cs_state_create(const cs_model *model, cs_error *err) {
@@ -64,24 +66,25 @@ void cs_state_free(cs_state *s) {
             free(cs->pos);
         }
     }
-    cs_solver_free(&s->solver);
-    for (int k = 0; k < CS_PATH_LEVELS; k++)
-        cs_state_free(s->step_start[k]);
-    cs_state_free(s->trial);
+    if (s->work) {
+        cs_system_free(&s->work->sys);
+        for (int k = 0; k < CS_PATH_LEVELS; k++)
+            cs_state_free(s->work->step_start[k]);
+        cs_state_free(s->work->trial);
+        free(s->work);
+    }
     free(s->cables), free(s->posts), free(s->events), free(s->speed_ring);
     free(s);
 }
 
-/* A copy of src in dst: everything but the memory that is dst's own (arrays, events, workspace, copy),
+/* A copy of src in dst: everything but the memory that is dst's own (arrays, events, workspace),
  * with the cables' paths and the posts copied into dst's arrays. Events are appended only, so the ones
  * src holds are already in place when dst is the state and src its step-start copy. */
 void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src) {
     cs_state keep = *dst;
     *dst = *src;
     dst->cables = keep.cables, dst->posts = keep.posts, dst->events = keep.events;
-    dst->speed_ring = keep.speed_ring, dst->solver = keep.solver;
-    memcpy(dst->step_start, keep.step_start, sizeof dst->step_start);
-    dst->trial = keep.trial;
+    dst->speed_ring = keep.speed_ring, dst->work = keep.work;
     dst->cable_count_alloc = keep.cable_count_alloc;
     for (int c = 0; c < model->cable_count; c++) {
         cs_cable_state *d = &dst->cables[c], k = *d;
@@ -113,126 +116,6 @@ void cs_state_restore_barrier(const cs_model *model, cs_state *s, const cs_state
     v3_copy(s->acc, acc), v3_copy(s->ang_acc, ang_acc);
     memcpy(s->quat, quat, sizeof quat);
     s->tyre_power = tyre_power, s->e_tyre = e_tyre;
-}
-
-/* Rope laid in along the cable's path as it stands, every span at the pretension, its sag included
- * (s = l / (1 + T0 / EA) for a weightless rope). */
-static void lay_in_pretension(const cs_model *model, int c, cs_cable_state *cs) {
-    const cs_cable_model *cm = &model->cables[c];
-    cs->m[0] = 0.0;
-    for (int i = 0; i + 1 < cs->node_count; i++) {
-        cs->m[i + 1] = cs->m[i] + cs_span_material_at(cm, cs, i, cm->pretension);
-        cs->ep[i] = 0.0;
-    }
-    memcpy(cs->m_commit, cs->m, (size_t)cs->node_count * sizeof *cs->m);
-    cs_cable_update_tensions(cm, cs, NULL);
-}
-
-/* A cable at t = 0: start anchor, every post, end anchor, straight at its height, rope laid in with
- * the pretension. */
-static void reset_cable(const cs_model *model, int c, cs_cable_state *cs) {
-    const cs_cable_model *cm = &model->cables[c];
-    cs->status = CS_CABLE_INTACT;
-    cs->engaged = 0;
-    cs->node_count = model->post_count + 2;
-    cs->node[0] = CS_NODE_START;
-    v3_set(cs->pos, model->anchors[0].x, 0.0, model->anchors[0].z);
-    for (int p = 0; p < model->post_count; p++) {
-        cs->node[p + 1] = p;
-        cs->where[p] = p + 1;
-        v3_set(cs->pos + 3 * (p + 1), model->posts[p].x, 0.0, cm->z);
-    }
-    int last = cs->node_count - 1;
-    cs->node[last] = CS_NODE_END;
-    v3_set(cs->pos + 3 * last, model->anchors[1].x, 0.0, model->anchors[1].z);
-    lay_in_pretension(model, c, cs);
-    cs->max_tension_seen = cm->pretension;
-    cs->max_strain = cm->pretension / cm->rope.ea;
-    cs->corner_load = 0.0;
-    cs->corner_z[0] = cs->corner_z[1] = cs->corner_z_commit[0] = cs->corner_z_commit[1] = 0.0;
-}
-
-/* The barrier as installed, before the vehicle reaches it, as an installer tensions a rope on standing
- * posts: every span at the pretension, each post leaning until it balances those tensions along its
- * spans' chords (Gauss-Seidel over the posts, at most CS_SETTLE_SWEEPS sweeps to 1e-12 of a post's
- * capacity), the rope laid in at the pretension on that path, and the barrier solved and committed
- * there at rest (h infinite: posts with mass settle as massless ones). Each post sits in balance and
- * every support sticks with equal tensions, so the solve finds the laid-in state. A post that the
- * pretension would bend past its elastic limit (a weak end post under a heavy pretension) leans no
- * further than that limit here; the solve then lets it yield and the rope slide over it, as a propped
- * post let go would (leaning it to the balance instead folded such posts by up to 0.73 rad before the
- * vehicle came, stress designs 803 and 2250). Laying the rope in on
- * the straight path and letting the posts settle instead leaves the spans next to an end post 4-5% off
- * the pretension (it leans toward the barrier, the rope slides over it at the capstan limit), and
- * re-laying it there and settling again creeps toward the balance by about 1/60 a round (the rope is
- * about 60 times stiffer than the post). What settling dissipates belongs to the installation. */
-#define CS_SETTLE_SWEEPS 50
-
-static void settle_barrier(const cs_model *model, cs_state *s) {
-    cs_contact_update(model, s);
-    for (int c = 0; c < model->cable_count; c++) {
-        cs_cable_state *cs = &s->cables[c];
-        for (int i = 0; i + 1 < cs->node_count; i++)
-            cs->tension[i] = model->cables[c].pretension;
-    }
-    s->h = HUGE_VAL;
-    for (int sweep = 0; sweep < CS_SETTLE_SWEEPS; sweep++) {
-        double worst = 0.0;
-        for (int p = 0; p < model->post_count; p++)
-            worst = fmax(worst, cs_post_balance_at_tensions(model, s, p));
-        if (worst <= 1e-12) break;
-    }
-    for (int c = 0; c < model->cable_count; c++)
-        lay_in_pretension(model, c, &s->cables[c]);
-    cs_barrier_solve(model, s);
-    cs_barrier_commit(model, s);
-    s->e_cable_plastic = s->e_post_plastic = s->e_post_damping = s->e_soil = s->e_crush = s->e_friction = 0.0;
-}
-
-void cs_state_reset(const cs_model *model, cs_state *s) {
-    s->t = 0.0;
-    s->step = 0;
-    s->outcome = CS_RUNNING;
-    s->frozen = 0;
-    v3_copy(s->pos, model->start_pos);
-    v3_scale(s->vel, model->dir, model->scenario.speed);
-    quat_from_yaw(s->quat, model->start_yaw);
-    v3_set(s->omega, 0.0, 0.0, 0.0);
-    v3_set(s->acc, 0.0, 0.0, 0.0);
-    v3_set(s->ang_acc, 0.0, 0.0, 0.0);
-    s->tyre_power = 0.0;
-    v3_set(s->force, 0.0, 0.0, 0.0);
-    v3_set(s->moment, 0.0, 0.0, 0.0);
-    s->crush = s->crush_max = s->crush_committed = s->crush_force_committed = s->face_force = 0.0;
-    s->contact_started = 0;
-    for (int c = 0; c < model->cable_count; c++)
-        reset_cable(model, c, &s->cables[c]);
-    memset(s->posts, 0, (size_t)model->post_count * sizeof *s->posts);
-    cs_solver_reset(&s->solver);
-    s->anchor_failed[0] = s->anchor_failed[1] = 0;
-    s->e_cable_plastic = s->e_post_plastic = s->e_post_damping = s->e_soil = s->e_crush = s->e_friction =
-        s->e_released = s->e_tyre = 0.0;
-    s->event_count = 0;
-    s->ring_fill = 0;
-    s->decel_50ms_g = 0.0;
-    s->solver_residual = 0.0;
-    memset(&s->summary, 0, sizeof s->summary);
-    s->summary.first_contact_time = -1.0;
-    s->summary.stop_time = -1.0;
-    s->summary.exit_speed = -1.0;
-
-    cs_vehicle_start(model, s);
-    settle_barrier(model, s);
-    s->e_initial_potential_ref = cs_vehicle_potential_energy(model, s);
-    s->e_initial_kinetic = cs_vehicle_kinetic_energy(model, s);
-    s->e_initial_total = 0.0;
-    cs_energy_update(model, s);
-    s->e_initial_total = cs_energy_total(&s->energy);
-    cs_energy_update(model, s);
-    s->summary.energy_balance_error = 0.0;
-    s->summary.initial_kinetic_energy = s->e_initial_kinetic;
-    s->summary.max_cable_tension = 0.0;
-    s->stored_committed = cs_barrier_stored_energy(model, s);
 }
 
 void cs_state_summary(const cs_state *s, cs_summary *out) {
