@@ -77,14 +77,9 @@ void cs_band_solve(const cs_band *b, double *x) {
     for (int k = n - 1; k >= 0; k--) {
         int width = (k + ku + kl < n - 1 ? k + ku + kl : n - 1) - k;
         const double *d = b->a + (size_t)k * (size_t)b->width + (size_t)kl;
-        const double *xk = x + k;
-        double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-        int j = 1;
-        for (; j + 3 <= width; j += 4)
-            s0 += d[j] * xk[j], s1 += d[j + 1] * xk[j + 1], s2 += d[j + 2] * xk[j + 2],
-                s3 += d[j + 3] * xk[j + 3];
-        for (; j <= width; j++)
-            s0 += d[j] * xk[j];
-        x[k] = (x[k] - ((s0 + s1) + (s2 + s3))) * d[0];
+        double sum = 0.0;
+        for (int j = 1; j <= width; j++)
+            sum += d[j] * x[k + j];
+        x[k] = (x[k] - sum) * d[0];
     }
 }

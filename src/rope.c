@@ -66,45 +66,18 @@ double cs_span_sag(const cs_rope *r, const double *d) {
     return r->w * r->w * (d[0] * d[0] + d[1] * d[1]) * d[3];
 }
 
-static double horner(const double *coef, int n, double x) {
-    double sum = 0.0;
-    for (int k = n - 1; k >= 0; k--)
-        sum = coef[k] + x * sum;
-    return sum;
-}
-
 /* The positive root T of g(T) = T^2 (T - a) - c (c > 0), a span's tension with its sag (below). Newton
  * from above the root converges monotonically (g is increasing and convex there); its error after a
  * step of relative size d is about 2 d^2 (g''/2g' = 1/T for a slack span, 2/T for a taut one), so a step
- * below 1e-8 T leaves the root to round-off. The start, above the root:
- * - a taut span (k = c / a^3 < 0.05): T = a (1 + d), d (1 + d)^2 = k, whose series (Lagrange inversion)
- *   k - 2k^2 + 7k^3 - 30k^4 + 143k^5 - 728k^6 + 3876k^7 is above d by less than 21318 k^8: the root to
- *   round-off below k = 1e-3 (most taut spans), one Newton step above;
- * - a slack span (v = (c / -a^3)^(1/2) < 0.1): T = -a u, u^2 (1 + u) = v^2, whose series in v (to v^9,
- *   coefficients 1, -1/2, 5/8, -1, 231/128, -7/2, 7293/1024, -15, 1062347/32768) is above u by less
- *   than 71.5 v^10: the root to round-off below v = 0.01, one Newton step above;
- * - otherwise the least of the bounds T^2 (T - a) = c gives: T - a < c / a^2 and < c^(1/3) for a > 0,
- *   T < c^(1/3) and < (c / -a)^(1/2) for a < 0. */
+ * below 1e-8 T leaves the root to round-off. It starts from the least of the bounds that T^2 (T - a) = c
+ * gives: T - a < c / a^2 and < c^(1/3) for a > 0 (a taut span: one or two steps), T < c^(1/3) and
+ * < (c / -a)^(1/2) for a < 0. */
 static double sag_root(double a, double c) {
-    static const double taut[] = {1.0, -2.0, 7.0, -30.0, 143.0, -728.0, 3876.0};
-    static const double slack[] = {
-        1.0, -0.5, 0.625, -1.0, 231.0 / 128, -3.5, 7293.0 / 1024, -15.0, 1062347.0 / 32768};
-    double t, a3 = a * a * a;
-    if (a > 0.0 && c < 0.05 * a3) {
-        double k = c / a3;
-        t = a * (1.0 + k * horner(taut, 7, k));
-        if (k < 1e-3) return t;
-    } else if (a < 0.0 && c < -0.01 * a3) {
-        double v = sqrt(c / -a3);
-        t = -a * v * horner(slack, 9, v);
-        if (v < 0.01) return t;
-    } else if (a > 0.0 && c < a3) {
-        t = a + c / (a * a);
-    } else if (a < 0.0 && c < -a3) {
-        t = sqrt(-c / a);
-    } else {
-        t = a > 0.0 ? a + cbrt(c) : cbrt(c);
-    }
+    double t;
+    if (a > 0.0)
+        t = a + (c < a * a * a ? c / (a * a) : cbrt(c));
+    else
+        t = a < 0.0 && c < -a * a * a ? sqrt(-c / a) : cbrt(c);
     for (int it = 0; it < 100; it++) {
         double dt = (t * t * (t - a) - c) / (t * (3.0 * t - 2.0 * a));
         t -= dt;

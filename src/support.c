@@ -16,20 +16,6 @@
 
 #include <math.h>
 
-/* The angle atan2(sin, cos) between two directions, accurate near 0 and pi. Most supports turn the
- * rope by a few degrees (in APS3 two thirds of the evaluations have tan theta < 0.1); there the series
- * of atan to t^21 is exact to round-off (the next term is under 1e-22 of theta; below t = 0.01 to t^9)
- * and cheaper than libm's atan2. */
-static double turning_angle(double sin_part, double cos_part) {
-    if (!(cos_part > 0.0 && sin_part < 0.1 * cos_part)) return atan2(sin_part, cos_part);
-    static const double inv_odd[] = {1.0,      1.0 / 3,  1.0 / 5,  1.0 / 7,  1.0 / 9, 1.0 / 11,
-                                     1.0 / 13, 1.0 / 15, 1.0 / 17, 1.0 / 19, 1.0 / 21};
-    double t = sin_part / cos_part, t2 = t * t, sum = 0.0;
-    for (int k = t < 0.01 ? 4 : 10; k >= 0; k--) /* below 0.01 the terms past t^9 are under 1e-21 of t */
-        sum = inv_odd[k] - t2 * sum;
-    return t * sum;
-}
-
 /* The capstan exponent mu theta at interior node i, theta the turning angle of the path; the ratio R is
  * exp(mu theta). */
 double cs_node_capstan_exponent(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs,
@@ -42,26 +28,17 @@ double cs_node_capstan_exponent(const cs_model *model, const cs_cable_model *cm,
     const double *a = chords ? chords + 4 * (i - 1) : own, *b = a + 4;
     double x[3];
     v3_cross(x, a, b);
-    double theta = turning_angle(v3_norm(x), v3_dot(a, b));
+    double theta = atan2(v3_norm(x), v3_dot(a, b));
     int id = cs->node[i];
     double mu = id >= 0 ? cm->mu_post : model->vehicle.def.face_friction;
     return mu * theta;
 }
 
 /* tanh(mu theta / 2) at interior node i: the friction band's half-width over T_L + T_R, since
- * T_high <= exp(mu theta) T_low is |T_L - T_R| <= tanh(mu theta / 2) (T_L + T_R). Below z = mu theta / 2
- * = 0.05 (most supports) tanh's series to z^13 is exact to round-off (the next term is under 1e-18 of
- * z; below z = 0.01 to z^7) and cheaper than libm's tanh. */
+ * T_high <= exp(mu theta) T_low is |T_L - T_R| <= tanh(mu theta / 2) (T_L + T_R). */
 double cs_node_band_fraction(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs, int i,
                              const double *chords) {
-    double z = 0.5 * cs_node_capstan_exponent(model, cm, cs, i, chords);
-    if (!(z < 0.05)) return tanh(z);
-    static const double coef[] = {1.0,         -1.0 / 3,         2.0 / 15,         -17.0 / 315,
-                                  62.0 / 2835, -1382.0 / 155925, 21844.0 / 6081075};
-    double z2 = z * z, sum = 0.0;
-    for (int k = z < 0.01 ? 3 : 6; k >= 0; k--) /* below 0.01 the terms past z^7 are under 3e-18 of z */
-        sum = coef[k] + z2 * sum;
-    return z * sum;
+    return tanh(0.5 * cs_node_capstan_exponent(model, cm, cs, i, chords));
 }
 
 static double support_residual(const cs_model *model, const cs_state *s, const cs_rows *rows, int c, int i) {

@@ -44,7 +44,6 @@ int cs_system_init(const cs_model *model, cs_system *sys) {
     rw->spans = calloc(nc * nn + 1, sizeof *rw->spans);
     rw->chords = calloc(4 * nc * nn + 1, sizeof *rw->chords);
     rw->axes = calloc(18 * np + 1, sizeof *rw->axes);
-    sys->slots_sorted = calloc(n, sizeof *sys->slots_sorted);
     sys->slots_kept = calloc(n, sizeof *sys->slots_kept);
     sys->kept = calloc(n, sizeof *sys->kept);
     sys->slots_lu = calloc(n, sizeof *sys->slots_lu);
@@ -55,8 +54,8 @@ int cs_system_init(const cs_model *model, cs_system *sys) {
     sys->last = calloc(sys->key_count, sizeof *sys->last);
     sys->last_step = calloc(sys->key_count, sizeof *sys->last_step);
     if (!rw->slots || !rw->tilt_index || !rw->node_index || !rw->height_index || !rw->spans || !rw->chords ||
-        !rw->axes || !sys->slots_sorted || !sys->slots_kept || !sys->kept || !sys->slots_lu ||
-        !sys->slots_bw || !sys->nodes_bw || !sys->scratch || !sys->last || !sys->last_step)
+        !rw->axes || !sys->slots_kept || !sys->kept || !sys->slots_lu || !sys->slots_bw || !sys->nodes_bw ||
+        !sys->scratch || !sys->last || !sys->last_step)
         return -1;
     if (cs_newton_init(&sys->newton, (int)n, n * per_row) != 0) return -1;
     rw->jac = &sys->newton.band;
@@ -67,8 +66,8 @@ void cs_system_free(cs_system *sys) {
     cs_rows *rw = &sys->rows;
     free(rw->slots), free(rw->tilt_index), free(rw->node_index), free(rw->height_index), free(rw->spans),
         free(rw->chords), free(rw->axes);
-    free(sys->slots_sorted), free(sys->slots_kept), free(sys->kept), free(sys->slots_lu), free(sys->slots_bw),
-        free(sys->nodes_bw), free(sys->scratch), free(sys->last), free(sys->last_step);
+    free(sys->slots_kept), free(sys->kept), free(sys->slots_lu), free(sys->slots_bw), free(sys->nodes_bw),
+        free(sys->scratch), free(sys->last), free(sys->last_step);
     cs_newton_free(&sys->newton);
     memset(sys, 0, sizeof *sys);
 }
@@ -81,39 +80,13 @@ void cs_system_reset(cs_system *sys) {
 }
 
 /* ---- the unknowns in barrier order ---- */
-static int slot_before(const cs_slot *a, const cs_slot *b) {
-    if (a->x != b->x) return a->x < b->x;
-    if (a->kind != b->kind) return a->kind < b->kind;
-    if (a->a != b->a) return a->a < b->a;
-    return a->b < b->b;
-}
-
-/* End of the run in order that starts at lo. */
-static int run_end(const cs_slot *sl, int lo, int n) {
-    while (lo + 1 < n && !slot_before(&sl[lo + 1], &sl[lo]))
-        lo++;
-    return lo + 1;
-}
-
-/* Natural merge sort: the list is built as a few runs already in order along x (the posts, each
- * cable's nodes), which passes of pairwise merges join in O(n log runs), with no calls through a
- * pointer as qsort's. The order is total, so the result is qsort's. */
-static void sort_slots(cs_slot *sl, cs_slot *tmp, int n) {
-    for (;;) {
-        int lo = 0, runs = 0;
-        while (lo < n) {
-            int mid = run_end(sl, lo, n), hi = mid < n ? run_end(sl, mid, n) : n, i = lo, j = mid, k = lo;
-            while (i < mid && j < hi)
-                tmp[k++] = slot_before(&sl[j], &sl[i]) ? sl[j++] : sl[i++];
-            while (i < mid)
-                tmp[k++] = sl[i++];
-            while (j < hi)
-                tmp[k++] = sl[j++];
-            lo = hi, runs++;
-        }
-        memcpy(sl, tmp, (size_t)n * sizeof *sl);
-        if (runs <= 1) return;
-    }
+/* The order of the unknowns: along the barrier, then by kind, element and component (a total order). */
+static int slot_order(const void *pa, const void *pb) {
+    const cs_slot *a = pa, *b = pb;
+    if (a->x != b->x) return a->x < b->x ? -1 : 1;
+    if (a->kind != b->kind) return a->kind < b->kind ? -1 : 1;
+    if (a->a != b->a) return a->a < b->a ? -1 : 1;
+    return (a->b > b->b) - (a->b < b->b);
 }
 
 static int post_on_path(const cs_model *model, const cs_state *s, int p) {
@@ -144,7 +117,7 @@ static int assemble(const cs_model *model, const cs_state *s, cs_system *sys) {
         }
     }
     if (cs_face_loaded(model, s)) sl[n++] = (cs_slot){s->pos[0], CS_U_CRUSH, 0, 0};
-    sort_slots(sl, sys->slots_sorted, n);
+    qsort(sl, (size_t)n, sizeof *sl, slot_order);
     /* index maps: tilt of post p, node i of cable c, crush */
     for (int p = 0; p < model->post_count; p++)
         w->tilt_index[p] = -1;

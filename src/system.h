@@ -9,7 +9,6 @@
 
 typedef struct cs_system {
     cs_rows rows;          /* the unknowns, their columns, the placement's chords, axes and spans */
-    cs_slot *slots_sorted; /* scratch of the sort along x */
     cs_slot *slots_kept;   /* the unknowns saved by cs_system_keep */
     double *kept;          /* and their values */
     int kept_n;

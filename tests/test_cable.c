@@ -73,10 +73,9 @@ static void capstan_ratio_on_frictional_support(void **state) {
     world_free(w);
 }
 
-/* The turning angle takes a series below tan theta = 0.1 (shorter below 0.01) and libm's atan2 above, and
- * the band fraction tanh(mu theta / 2) a series below mu theta / 2 = 0.05 (shorter below 0.01; theta =
- * 0.133 and 0.667 at mu = 0.15): on either side of each switch the ratio is exp(mu theta) and the
- * fraction tanh(mu theta / 2) to round-off, theta set by the geometry. */
+/* From the geometry alone, at turns from 1e-7 rad to nearly pi, the capstan ratio is exp(mu theta) and
+ * the friction band's fraction tanh(mu theta / 2) to round-off (the turning angle is accurate near 0
+ * and near pi). */
 static void capstan_band_at_small_and_large_turns(void **state) {
     (void)state;
     world *w = make_world(0.15);
@@ -160,9 +159,9 @@ static void sagging_span_hangs_as_a_catenary(void **state) {
     world_free(w);
 }
 
-/* A sagging span's tension is the root of T^2 (T - a) = c (a = EA e, c = EA q / 24 s): from a taut
- * span's series, a slack span's series, their Newton steps and the bounds (strains from 3e-3 to -1e-2
- * over a 5-m span take every branch of sag_root), the root is met to round-off. */
+/* A sagging span's tension is the root of T^2 (T - a) = c (a = EA e, c = EA q / 24 s): from each of its
+ * starts (strains from 3e-3 to -1e-2 over a 5-m span start from every bound), the root is met to
+ * round-off. */
 static void sag_tension_solves_its_cubic(void **state) {
     (void)state;
     world *w = make_world_weighing(0.15, 1.0);
