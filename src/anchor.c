@@ -1,23 +1,233 @@
-/* End anchors: every cable is tied to the start anchor at one end and the end anchor at the other.
- * An anchor pulls out when the sum of the tensions of the spans tied to it reaches its capacity;
- * the cables it held are then released (they carry nothing more). */
-#include "internal.h"
+/* Anchors: the footings (dead-men) the ropes' ends are tied to, as bodies in the soil.
+ *
+ * An anchor moves horizontally by u (2 components); each rope's end rides on it at (x + u_x, u_y, z), so
+ * ropes that share an anchor keep their own ends. The soil resists with an elastic-plastic spring like a
+ * post's: k (u - u_p) up to the footing's capacity P (Eq. 21 at the height the ropes pull it, H = z, times
+ * the soil's dynamic factor for the footing's width: footing.c), then the footing slides through the soil
+ * at P, doing plastic work booked as soil. k reaches P over 2% of the footing's depth, the movement that
+ * mobilises a medium-dense sand's passive resistance (Clough and Duncan 1991: 1% dense, 4% loose). The
+ * footing and what moves with it have mass M, integrated by backward Euler as a post's swing (post.c),
+ * so that its residual
+ *   r = F_ropes - R(u) - M (u - u_c - h v_c) / h^2
+ * stays monotone where its resistance is flat. It pulls out, releasing every rope tied to it, when it has
+ * travelled as far as its geometry allows: a footing that turns about the pivot 2/3 of its depth down
+ * (Eq. 21's failure mode) moves its top by (2/3) D sin(theta) at its rotation limit theta; or when the
+ * ropes' uplift reaches its pullout capacity (its weight plus its skin friction unless given). A rigid
+ * anchor (no footing) never moves. The anchor's rows of the barrier solve are given here (rows.h). */
+#include "rows.h"
+#include "vec3.h"
 
-int cs_anchor_check(const cs_model *model, cs_state *s) {
-    int failed = 0;
-    for (int k = 0; k < 2; k++) {
-        if (s->anchor_failed[k]) continue;
-        double pull = 0.0;
+#include <math.h>
+
+#define CS_PI 3.14159265358979323846
+#define CS_ANCHOR_YIELD_STRAIN 0.02 /* movement to mobilise the passive resistance, over the depth */
+
+void cs_anchor_derive(const cs_anchor_def *d, double gravity, cs_anchor_model *am) {
+    const cs_footing_def *f = &d->footing;
+    am->x = d->x, am->z = d->z;
+    am->rigid = !(f->diameter > 0.0);
+    if (am->rigid) return;
+    double b = f->diameter, len = d->length > 0.0 ? d->length : 0.0;
+    double volume = len > 0.0 ? b * len * f->depth : 0.25 * CS_PI * b * b * f->depth;
+    am->mass = d->mass > 0.0 ? d->mass : CS_CONCRETE_DENSITY * volume;
+    am->capacity = cs_footing_impact_capacity(f, d->z);
+    am->stiffness = am->capacity / (CS_ANCHOR_YIELD_STRAIN * f->depth);
+    am->travel_limit = 2.0 * f->depth / 3.0 * sin(f->rotation_limit);
+    double perimeter_skin = len > 0.0 ? 2.0 * (b + len) / (CS_PI * b) : 1.0; /* a block's perimeter */
+    am->uplift_capacity = d->pullout_capacity > 0.0
+                              ? d->pullout_capacity
+                              : am->mass * gravity + perimeter_skin * cs_footing_pullout_capacity(f);
+}
+
+int cs_anchor_active(const cs_model *model, const cs_state *s, int a) {
+    if (model->anchors[a].rigid || s->anchors[a].failed || !(s->h > 0.0)) return 0;
+    for (int c = 0; c < model->cable_count; c++)
+        if (s->cables[c].status == CS_CABLE_INTACT) return 1;
+    return 0;
+}
+
+static int end_node(const cs_cable_state *cs, int a) {
+    return a == 0 ? 0 : cs->node_count - 1;
+}
+
+void cs_anchor_place_nodes(const cs_model *model, cs_state *s, int a) {
+    const cs_anchor_model *am = &model->anchors[a];
+    const double *u = s->anchors[a].u;
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        if (cs->status != CS_CABLE_INTACT) continue;
+        v3_set(cs->pos + 3 * end_node(cs, a), am->x + u[0], u[1], am->z);
+    }
+}
+
+/* The barrier as installed: each anchor deflected elastically by the ropes' pull as they stand (the
+ * pretension along each end span), no further than its elastic limit; the ropes are then laid in on it
+ * (step.c), as an installer tensions them against the anchors already loaded. */
+void cs_anchor_settle(const cs_model *model, cs_state *s) {
+    for (int a = 0; a < 2; a++) {
+        const cs_anchor_model *am = &model->anchors[a];
+        if (am->rigid) continue;
+        double f[3] = {0.0, 0.0, 0.0};
         for (int c = 0; c < model->cable_count; c++) {
             const cs_cable_state *cs = &s->cables[c];
             if (cs->status != CS_CABLE_INTACT) continue;
-            pull += cs->tension[k == 0 ? 0 : cs->node_count - 2];
+            double fc[3];
+            cs_node_force(cs, end_node(cs, a), NULL, fc);
+            v3_add(f, f, fc);
         }
-        if (pull >= model->anchors[k].pullout_capacity) {
-            s->anchor_failed[k] = 1;
-            cs_event_add(model, s, CS_EVENT_ANCHOR_PULLOUT, CS_ELEMENT_ANCHOR, k, pull);
-            failed = 1;
+        double n = v2_norm(f[0], f[1]), cap = 0.999 * am->capacity, scale = n > cap ? cap / n : 1.0;
+        s->anchors[a].u[0] = s->anchors[a].u_commit[0] = scale * f[0] / am->stiffness;
+        s->anchors[a].u[1] = s->anchors[a].u_commit[1] = scale * f[1] / am->stiffness;
+        cs_anchor_place_nodes(model, s, a);
+    }
+}
+
+/* The soil's resistance at displacement u: k (u - u_p), capped radially at P. */
+static void resistance(const cs_anchor_model *am, const cs_anchor_state *as, const double *u, double *q) {
+    double tr[2] = {am->stiffness * (u[0] - as->plastic[0]), am->stiffness * (u[1] - as->plastic[1])};
+    double n = v2_norm(tr[0], tr[1]), f = n > am->capacity ? am->capacity / n : 1.0;
+    q[0] = tr[0] * f, q[1] = tr[1] * f;
+}
+
+/* The ropes' pull on the anchor (every intact rope's end span), N; chords as in cs_node_force. */
+static void ropes_pull(const cs_model *model, const cs_state *s, int a, const double *chords, double *f) {
+    v3_set(f, 0.0, 0.0, 0.0);
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        if (cs->status != CS_CABLE_INTACT) continue;
+        double fc[3];
+        cs_node_force(cs, end_node(cs, a), chords ? chords + 4 * (size_t)c * (size_t)model->max_nodes : NULL,
+                      fc);
+        v3_add(f, f, fc);
+    }
+}
+
+void cs_anchor_residual(const cs_model *model, const cs_state *s, int a, const double *chords, double *r) {
+    const cs_anchor_model *am = &model->anchors[a];
+    const cs_anchor_state *as = &s->anchors[a];
+    double f[3], q[2];
+    ropes_pull(model, s, a, chords, f);
+    resistance(am, as, as->u, q);
+    r[0] = f[0] - q[0], r[1] = f[1] - q[1];
+    if (s->h > 0.0 && s->h < HUGE_VAL) {
+        double k = am->mass / (s->h * s->h);
+        r[0] -= k * (as->u[0] - as->u_commit[0] - s->h * as->rate[0]);
+        r[1] -= k * (as->u[1] - as->u_commit[1] - s->h * as->rate[1]);
+    }
+}
+
+/* The residual's unit: the strongest rope's strength, as a support's. */
+static double unit_of(const cs_model *model) {
+    double u = 0.0;
+    for (int c = 0; c < model->cable_count; c++)
+        u = fmax(u, model->cables[c].rope.fu);
+    return u > 0.0 ? u : 1.0;
+}
+
+static void residual(const cs_model *model, const cs_state *s, const cs_rows *rows, const cs_slot *u,
+                     double *r) {
+    cs_anchor_residual(model, s, u->a, rows->chords, r);
+    double inv = 1.0 / unit_of(model);
+    r[0] *= inv, r[1] *= inv;
+}
+
+/* Rows a, a+1: the ropes' pull through their end spans (chained to the nodes), less the resistance's slope
+ * (k, or on the cap its radial projection's) and the inertial M / h^2 on the anchor's own columns. */
+static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row,
+                     const cs_slot *u) {
+    int a = u->a;
+    const cs_anchor_model *am = &model->anchors[a];
+    const cs_anchor_state *as = &s->anchors[a];
+    double unit = unit_of(model), k[4];
+    double tr[2] = {am->stiffness * (as->u[0] - as->plastic[0]), am->stiffness * (as->u[1] - as->plastic[1])};
+    double n = v2_norm(tr[0], tr[1]);
+    if (n > am->capacity) {
+        double g = am->capacity * am->stiffness / n, e[2] = {tr[0] / n, tr[1] / n};
+        k[0] = -g * (1.0 - e[0] * e[0]), k[1] = g * e[0] * e[1], k[2] = k[1], k[3] = -g * (1.0 - e[1] * e[1]);
+    } else {
+        k[0] = k[3] = -am->stiffness, k[1] = k[2] = 0.0;
+    }
+    double inertia = am->mass / (s->h * s->h);
+    k[0] -= inertia, k[3] -= inertia;
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2; j++)
+            cs_rows_add(rows, row + i, row + j, k[2 * i + j] / unit);
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        if (cs->status != CS_CABLE_INTACT) continue;
+        int i = end_node(cs, a);
+        const cs_span_grad *sp = rows->spans + (size_t)c * (size_t)model->max_nodes + (a == 0 ? 0 : i - 1);
+        for (int e = 0; e < 2; e++) {
+            double rho[3] = {e == 0 ? 1.0 / unit : 0.0, e == 1 ? 1.0 / unit : 0.0, 0.0};
+            double gp[3][3] = {{0}}, gm[3] = {0};
+            cs_rows_end_force_gradient(sp, a == 0, rho, gp, gm);
+            cs_rows_add_node_gradient(model, s, rows, row + e, c, i, gp, gm);
         }
     }
+}
+
+const cs_row_kind cs_anchor_rows = {2, residual, jacobian};
+
+/* End of step: the slide's rate and its implicit integration's damping, the plastic slide (radial
+ * return) and its work, the resistance, and the ropes' uplift. */
+void cs_anchor_commit(const cs_model *model, cs_state *s) {
+    for (int a = 0; a < 2; a++) {
+        const cs_anchor_model *am = &model->anchors[a];
+        cs_anchor_state *as = &s->anchors[a];
+        if (am->rigid || as->failed) continue;
+        if (s->h > 0.0 && s->h < HUGE_VAL) {
+            double w0 = (as->u[0] - as->u_commit[0]) / s->h, w1 = (as->u[1] - as->u_commit[1]) / s->h;
+            double d0 = w0 - as->rate[0], d1 = w1 - as->rate[1];
+            s->e_post_damping += 0.5 * am->mass * (d0 * d0 + d1 * d1);
+            as->rate[0] = w0, as->rate[1] = w1;
+        } else {
+            as->rate[0] = as->rate[1] = 0.0;
+        }
+        as->u_commit[0] = as->u[0], as->u_commit[1] = as->u[1];
+        double tr[2] = {am->stiffness * (as->u[0] - as->plastic[0]),
+                        am->stiffness * (as->u[1] - as->plastic[1])};
+        double n = v2_norm(tr[0], tr[1]);
+        if (n > am->capacity) {
+            double e[2] = {tr[0] / n, tr[1] / n}, slide = (n - am->capacity) / am->stiffness;
+            s->e_soil += am->capacity * slide;
+            as->plastic[0] += slide * e[0], as->plastic[1] += slide * e[1];
+            if (!as->yielded) {
+                as->yielded = 1;
+                cs_event_add(model, s, CS_EVENT_ANCHOR_YIELD, CS_ELEMENT_ANCHOR, a, am->capacity);
+            }
+        }
+        resistance(am, as, as->u, as->force);
+        double f[3];
+        ropes_pull(model, s, a, NULL, f);
+        as->uplift = f[2] > 0.0 ? f[2] : 0.0;
+    }
+}
+
+/* An anchor that has travelled its limit or is lifted past its pullout capacity pulls out; every rope
+ * tied to it is released (contact.c). Returns 1 if one did. */
+int cs_anchor_check(const cs_model *model, cs_state *s) {
+    int failed = 0;
+    for (int a = 0; a < 2; a++) {
+        const cs_anchor_model *am = &model->anchors[a];
+        cs_anchor_state *as = &s->anchors[a];
+        if (am->rigid || as->failed) continue;
+        double travel = v2_norm(as->u[0], as->u[1]);
+        if (travel < am->travel_limit && as->uplift < am->uplift_capacity) continue;
+        as->failed = 1;
+        cs_event_add(model, s, CS_EVENT_ANCHOR_PULLOUT, CS_ELEMENT_ANCHOR, a,
+                     travel >= am->travel_limit ? v2_norm(as->force[0], as->force[1]) : as->uplift);
+        failed = 1;
+    }
     return failed;
+}
+
+double cs_anchor_stored_energy(const cs_model *model, const cs_state *s, int a, double *kinetic) {
+    const cs_anchor_model *am = &model->anchors[a];
+    const cs_anchor_state *as = &s->anchors[a];
+    *kinetic = 0.0;
+    if (am->rigid || as->failed) return 0.0;
+    double q[2];
+    resistance(am, as, as->u, q);
+    *kinetic = 0.5 * am->mass * (as->rate[0] * as->rate[0] + as->rate[1] * as->rate[1]);
+    return 0.5 * (q[0] * q[0] + q[1] * q[1]) / am->stiffness;
 }

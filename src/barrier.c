@@ -110,6 +110,7 @@ void cs_barrier_commit(const cs_model *model, cs_state *s) {
         cs_cable_commit(model, c, s);
     for (int p = 0; p < model->post_count; p++)
         cs_post_commit(model, s, p);
+    cs_anchor_commit(model, s);
     s->h = 0.0; /* the posts' swing starts again from here */
     const cs_vehicle_def *v = &model->vehicle.def;
     double f = cs_crush_force(v, s->crush, s->crush_max);
@@ -137,5 +138,9 @@ double cs_barrier_stored_energy(const cs_model *model, const cs_state *s) {
         e += cs_cable_stored_energy(&model->cables[c], &s->cables[c]);
     for (int p = 0; p < model->post_count; p++)
         e += cs_post_stored_energy(model, s, p);
+    for (int a = 0; a < 2; a++) {
+        double kinetic;
+        e += cs_anchor_stored_energy(model, s, a, &kinetic) + kinetic;
+    }
     return e;
 }

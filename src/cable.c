@@ -110,7 +110,7 @@ void cs_cable_commit(const cs_model *model, int c, cs_state *s) {
     cs_cable_state *cs = &s->cables[c];
     if (cs->status != CS_CABLE_INTACT) return;
     const cs_rope *r = &cm->rope;
-    double worst = 0.0, tmax = 0.0, corner = 0.0;
+    double worst = 0.0, tmax = 0.0, end = 0.0;
     for (int i = 0; i + 1 < cs->node_count; i++) /* carry the plastic strain with the rope that slid */
         cs->ep_mix[i] = cs_span_plastic(cs, i, cs->m[i], cs->m[i + 1]);
     memcpy(cs->ep, cs->ep_mix, (size_t)(cs->node_count - 1) * sizeof *cs->ep);
@@ -128,10 +128,7 @@ void cs_cable_commit(const cs_model *model, int c, cs_state *s) {
         }
         if (e > worst) worst = e;
         if (t > tmax) tmax = t;
-        /* a span that ends on a face corner loads the rope where it bends over the corner */
-        if (cs->node[i] == CS_NODE_LEFT || cs->node[i] == CS_NODE_RIGHT || cs->node[i + 1] == CS_NODE_LEFT ||
-            cs->node[i + 1] == CS_NODE_RIGHT)
-            corner = fmax(corner, t / cm->corner_strength);
+        if (i == 0 || i + 2 == cs->node_count) end = fmax(end, t); /* a span that ends at a termination */
     }
     for (int i = 1; i + 1 < cs->node_count; i++) {
         double slide = cs->m[i] - cs->m_commit[i];
@@ -143,20 +140,29 @@ void cs_cable_commit(const cs_model *model, int c, cs_state *s) {
     memcpy(cs->m_commit, cs->m, (size_t)cs->node_count * sizeof *cs->m);
     if (tmax > cs->max_tension_seen) cs->max_tension_seen = tmax;
     cs->max_strain = worst;
-    cs->corner_load = corner;
+    cs->end_load = end / cm->termination_strength;
 }
 
-/* A span strained to the breaking strain breaks the cable, and so does a tension at a face corner that
- * reaches the rope's strength bent over that corner; from then on it carries nothing. */
+/* A span strained to the breaking strain breaks the cable (cable_break), and an end span whose tension
+ * exceeds its fitting's strength breaks it at the fitting (termination_break); from then on it carries
+ * nothing. */
 int cs_cable_check_break(const cs_model *model, int c, cs_state *s) {
     cs_cable_state *cs = &s->cables[c];
     if (cs->status != CS_CABLE_INTACT) return 0;
-    if (cs->max_strain < model->cables[c].rope.e_break && cs->corner_load < 1.0) return 0;
+    int strained = cs->max_strain >= model->cables[c].rope.e_break;
+    if (!strained && cs->end_load <= 1.0) return 0;
     double tmax = 0.0;
     for (int i = 0; i + 1 < cs->node_count; i++)
         tmax = fmax(tmax, cs->tension[i]);
-    cs->status = CS_CABLE_BROKEN;
-    cs->engaged = 0;
-    cs_event_add(model, s, CS_EVENT_CABLE_BREAK, CS_ELEMENT_CABLE, c, tmax);
+    cs_cable_release(cs, CS_CABLE_BROKEN);
+    cs_event_add(model, s, strained ? CS_EVENT_CABLE_BREAK : CS_EVENT_TERMINATION_BREAK, CS_ELEMENT_CABLE, c,
+                 tmax);
     return 1;
+}
+
+void cs_cable_release(cs_cable_state *cs, cs_cable_status status) {
+    cs->status = status;
+    cs->engaged = 0;
+    for (int i = 0; i + 1 < cs->node_count; i++)
+        cs->tension[i] = 0.0;
 }

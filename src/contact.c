@@ -75,8 +75,7 @@ static void slip(const cs_model *model, cs_state *s, int c, cs_event_type why) {
     s->e_released += cs_cable_stored_energy(&model->cables[c], cs);
     for (int i = cs->node_count - 2; i >= 1; i--)
         if (is_corner(cs->node[i])) cs_cable_remove_node(cs, i);
-    cs->status = CS_CABLE_SLIPPED;
-    cs->engaged = 0;
+    cs_cable_release(cs, CS_CABLE_SLIPPED);
     cs_event_add(model, s, why, CS_ELEMENT_CABLE, c, s->t);
 }
 
@@ -192,9 +191,8 @@ void cs_contact_drop_failed(const cs_model *model, cs_state *s) {
     for (int c = 0; c < model->cable_count; c++) {
         cs_cable_state *cs = &s->cables[c];
         if (cs->status != CS_CABLE_INTACT) continue;
-        if (s->anchor_failed[0] || s->anchor_failed[1]) {
-            cs->status = CS_CABLE_RELEASED;
-            cs->engaged = 0;
+        if (s->anchors[0].failed || s->anchors[1].failed) {
+            cs_cable_release(cs, CS_CABLE_RELEASED);
             continue;
         }
         for (int i = cs->node_count - 2; i >= 1; i--)

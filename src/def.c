@@ -29,7 +29,8 @@ cs_rope_def cs_default_rope_def(void) {
 cs_cable_def cs_default_cable_def(void) {
     cs_cable_def d;
     memset(&d, 0, sizeof d);
-    d.post_friction = 0.15; /* steel rope in a steel hole, docs/assumptions.md */
+    d.post_friction = 0.15;          /* steel rope in a steel hole, docs/assumptions.md */
+    d.termination_efficiency = 0.90; /* wire rope clips on rope of 1 in or more (Crosby): assumptions.md */
     d.rope = cs_default_rope_def();
     return d;
 }
@@ -49,6 +50,7 @@ cs_footing_def cs_default_footing_def(void) {
     d.coeff_height = 2.64;
     d.rotation_limit = CS_PI / 4.0;
     d.dynamic_factor = CS_SOIL_DYNAMIC_FACTOR; /* calibrated on the bogie tests: docs/assumptions.md */
+    d.friction_angle = 42.0 * CS_PI / 180.0;   /* compacted crushed-stone base (AASHTO M147 B): 40-45 deg */
     d.skin_friction = CS_SOIL_SKIN_FRICTION;   /* same */
     return d;
 }
@@ -66,7 +68,7 @@ cs_post_def cs_default_post_def(void) {
 cs_anchor_def cs_default_anchor_def(void) {
     cs_anchor_def d;
     memset(&d, 0, sizeof d);
-    d.pullout_capacity = HUGE_VAL; /* rigid unless a capacity is given */
+    d.footing = cs_default_footing_def(); /* diameter 0: rigid unless a footing is given */
     return d;
 }
 

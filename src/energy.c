@@ -16,8 +16,8 @@ double cs_energy_scale(const cs_model *model, const cs_state *s) {
 
 double cs_energy_total(const cs_energy *e) {
     return e->vehicle_kinetic + e->vehicle_potential + e->cable_elastic + e->cable_plastic + e->post_elastic +
-           e->post_kinetic + e->post_plastic + e->post_damping + e->soil + e->crush + e->friction +
-           e->released;
+           e->post_kinetic + e->post_plastic + e->post_damping + e->anchor_elastic + e->anchor_kinetic +
+           e->soil + e->crush + e->friction + e->released;
 }
 
 void cs_energy_update(const cs_model *model, cs_state *s) {
@@ -31,6 +31,12 @@ void cs_energy_update(const cs_model *model, cs_state *s) {
     for (int p = 0; p < model->post_count; p++) {
         e->post_elastic += cs_post_elastic_energy(model, s, p);
         e->post_kinetic += cs_post_kinetic_energy(model, s, p);
+    }
+    e->anchor_elastic = e->anchor_kinetic = 0.0;
+    for (int a = 0; a < 2; a++) {
+        double kinetic;
+        e->anchor_elastic += cs_anchor_stored_energy(model, s, a, &kinetic);
+        e->anchor_kinetic += kinetic;
     }
     e->cable_plastic = s->e_cable_plastic;
     e->post_plastic = s->e_post_plastic;

@@ -2,8 +2,9 @@
 #include "internal.h"
 
 static const char *const event_names[CS_EVENT_TYPE_COUNT] = {
-    "cable_break",    "post_hinge", "post_rotation_limit", "post_shear", "post_pullout", "footing_rotation",
-    "anchor_pullout", "override",   "underride",           "stopped",    "breakthrough"};
+    "cable_break",  "termination_break", "post_hinge",     "post_rotation_limit", "post_shear",
+    "post_pullout", "footing_rotation",  "anchor_pullout", "anchor_yield",        "override",
+    "underride",    "stopped",           "breakthrough"};
 
 const char *cs_event_type_name(cs_event_type type) {
     return (type >= 0 && type < CS_EVENT_TYPE_COUNT) ? event_names[type] : "unknown";

@@ -31,14 +31,11 @@ typedef struct cs_rope {
  * spans. 1e-4 until session 17: the sharper switch cost 14-36% more Newton work for changes of 0.5%. */
 #define CS_FRICTION_FLOOR 1e-3
 
-/* Strength efficiency of a wire rope bent over a radius: D/d = bend diameter / rope diameter. */
-double cs_rope_bend_efficiency(double d_ratio);
-
 typedef struct cs_cable_model {
     double z;          /* height at the posts, m */
     double pretension; /* N */
     double mu_post;
-    double corner_strength; /* tension that breaks the rope where it bends over a face corner, N */
+    double termination_strength; /* tension at which an end fitting lets go, N */
     cs_rope rope;
 } cs_cable_model;
 
@@ -60,6 +57,17 @@ typedef struct cs_post_model {
     cs_footing_def footing;
 } cs_post_model;
 
+/* An anchor as derived from its definition (anchor.c). */
+typedef struct cs_anchor_model {
+    double x, z;
+    int rigid;              /* no footing: it never moves */
+    double capacity;        /* horizontal resistance of its footing at the ropes' height, N */
+    double stiffness;       /* N/m, up to the capacity */
+    double mass;            /* kg */
+    double travel_limit;    /* m, after which it pulls out */
+    double uplift_capacity; /* N */
+} cs_anchor_model;
+
 typedef struct cs_vehicle_model {
     cs_vehicle_def def;
     double wheel[4][3]; /* body-frame tyre contact points at rest (FL, FR, RL, RR) */
@@ -72,7 +80,7 @@ struct cs_model {
     int cable_count, post_count, max_nodes;
     cs_cable_model *cables;
     cs_post_model *posts;
-    cs_anchor_def anchors[2];
+    cs_anchor_model anchors[2];
     cs_vehicle_model vehicle;
     cs_scenario_def scenario;
     double dir[3];       /* initial travel direction, unit */
@@ -100,8 +108,8 @@ typedef struct cs_cable_state {
     double corner_z[2];        /* body-frame z of the contact on the face (left, right), m */
     double corner_z_commit[2]; /* the same at the end of the previous step */
     double max_tension_seen;
-    double max_strain;  /* largest span strain at the last commit */
-    double corner_load; /* largest tension at a face corner over its corner strength, last commit */
+    double max_strain; /* largest span strain at the last commit */
+    double end_load;   /* larger end span's tension over its termination's strength, last commit */
 } cs_cable_state;
 
 typedef struct cs_post_state {
@@ -140,7 +148,15 @@ struct cs_state {
     int cable_count_alloc;
     cs_cable_state *cables;
     cs_post_state *posts;
-    int anchor_failed[2];
+    struct cs_anchor_state {
+        int failed, yielded;
+        double u[2];        /* horizontal displacement, m */
+        double plastic[2];  /* its plastic part (committed), m */
+        double u_commit[2]; /* at the last commit, m */
+        double rate[2];     /* its rate at the last commit, m/s */
+        double force[2];    /* the soil's resistance at the last commit, N */
+        double uplift;      /* the ropes' upward pull at the last commit, N */
+    } anchors[2];
 
     /* energy accumulators, J: the barrier's (friction: over supports and on the face) and the tyres' */
     double e_cable_plastic, e_post_plastic, e_post_damping, e_soil, e_crush, e_friction, e_released, e_tyre;
@@ -213,12 +229,18 @@ void cs_cable_insert_node(cs_cable_state *cs, int at, int id, const double *p);
 void cs_cable_remove_node(cs_cable_state *cs, int at);
 void cs_cable_commit(const cs_model *model, int c, cs_state *s);
 int cs_cable_check_break(const cs_model *model, int c, cs_state *s);
+/* The cable carries nothing from now on (broken, released by its anchor, slipped off the face). */
+void cs_cable_release(cs_cable_state *cs, cs_cable_status status);
 double cs_cable_stored_energy(const cs_cable_model *cm, const cs_cable_state *cs);
 void cs_node_force(const cs_cable_state *cs, int i, const double *chords, double *f);
 
 /* ---- posts and footings (post.c, footing.c) ---- */
 double cs_footing_capacity(const cs_footing_def *f, double load_height);
 double cs_footing_impact_capacity(const cs_footing_def *f, double load_height);
+/* The passive wedge's three-dimensional factor R(b/D) of a member of width b and depth D (footing.c), and
+ * the dynamic factor of a footing: f_d R(B/D) / R of the bogie tests' post. */
+double cs_footing_wedge_factor(double friction_angle, double width, double depth);
+double cs_footing_dynamic_factor(const cs_footing_def *f);
 double cs_footing_pullout_capacity(const cs_footing_def *f);
 void cs_post_attachment(const cs_model *model, int post, const double *tilt, double z, double *out);
 /* Each intact cable's node at post p where a tilt puts it (one sine and cosine for all), and the post
@@ -304,7 +326,21 @@ double cs_relax_post(const cs_model *model, cs_state *s, int p, double tol, int 
 double cs_relax_crush(const cs_model *model, cs_state *s);
 
 /* ---- anchors (anchor.c) ---- */
+typedef struct cs_anchor_state cs_anchor_state;
+void cs_anchor_derive(const cs_anchor_def *d, double gravity, cs_anchor_model *am);
+/* Whether anchor a is an unknown of the barrier solve now (it has a footing, holds, and can move). */
+int cs_anchor_active(const cs_model *model, const cs_state *s, int a);
+/* Every intact rope's end on anchor a where its displacement puts it. */
+void cs_anchor_place_nodes(const cs_model *model, cs_state *s, int a);
+/* The barrier as installed: each anchor deflected elastically by the ropes' held tensions. */
+void cs_anchor_settle(const cs_model *model, cs_state *s);
+/* r = the ropes' horizontal pull - the soil's resistance - the inertial force, N (chords as cs_node_force).
+ */
+void cs_anchor_residual(const cs_model *model, const cs_state *s, int a, const double *chords, double *r);
+void cs_anchor_commit(const cs_model *model, cs_state *s);
 int cs_anchor_check(const cs_model *model, cs_state *s);
+/* The elastic energy of anchor a's soil spring; its kinetic energy into *kinetic. */
+double cs_anchor_stored_energy(const cs_model *model, const cs_state *s, int a, double *kinetic);
 
 /* ---- energy, events, response ---- */
 void cs_energy_update(const cs_model *model, cs_state *s);

@@ -62,7 +62,29 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
     for (int k = 0; k < 2; k++) {
         const cs_anchor_def *a = k ? &b->end_anchor : &b->start_anchor;
         if (!non_negative(a->z)) return fail(err, "anchor %d: height must be >= 0", k);
-        if (!(a->pullout_capacity > 0.0)) return fail(err, "anchor %d: pullout capacity must be > 0", k);
+        if (!(a->pullout_capacity >= 0.0))
+            return fail(err, "anchor %d: pullout capacity must be >= 0 (0: its weight and skin friction)", k);
+        if (!non_negative(a->length) || !non_negative(a->mass))
+            return fail(err, "anchor %d: length and mass must be >= 0", k);
+        const cs_footing_def *f = &a->footing;
+        if (!non_negative(f->diameter)) return fail(err, "anchor %d: footing diameter must be >= 0", k);
+        if (f->diameter > 0.0) {
+            if (!positive(f->depth)) return fail(err, "anchor %d: footing depth must be > 0", k);
+            if (!positive(f->soil_pressure) || !positive(f->soil_pressure_cap))
+                return fail(err, "anchor %d: soil pressure must be > 0", k);
+            if (!positive(f->coeff_depth) || !non_negative(f->coeff_height))
+                return fail(err, "anchor %d: Eq. 21 coefficients must be > 0", k);
+            if (!(f->dynamic_factor >= 1.0 && f->dynamic_factor <= 10.0))
+                return fail(err, "anchor %d: soil dynamic factor %.4g must be in [1, 10]", k,
+                            f->dynamic_factor);
+            if (!(f->friction_angle > 0.0 && f->friction_angle < 1.2))
+                return fail(err, "anchor %d: soil friction angle must be between 0 and 69 degrees", k);
+            if (!(f->rotation_limit > 0.0 && f->rotation_limit < 1.5))
+                return fail(err, "anchor %d: footing rotation limit must be between 0 and 1.5 rad", k);
+            if (a->pullout_capacity == 0.0 && !positive(f->skin_friction))
+                return fail(err, "anchor %d: an anchor without a pullout capacity needs skin friction > 0",
+                            k);
+        }
     }
     for (int p = 0; p < b->post_count; p++) {
         const cs_post_def *d = &b->posts[p];
@@ -93,6 +115,8 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
             return fail(err, "post %d: pullout capacity must be > 0 (or omitted: skin friction)", p);
         if (!(f->dynamic_factor >= 1.0 && f->dynamic_factor <= 10.0))
             return fail(err, "post %d: soil dynamic factor %.4g must be in [1, 10]", p, f->dynamic_factor);
+        if (!(f->friction_angle > 0.0 && f->friction_angle < 1.2))
+            return fail(err, "post %d: soil friction angle must be between 0 and 69 degrees", p);
         if (f->pullout_capacity == 0.0 && !positive(f->skin_friction))
             return fail(err, "post %d: a footing without a pullout capacity needs skin friction > 0", p);
         if (!(d->rotation_limit > 0.0 && d->rotation_limit < 1.5) ||
@@ -109,6 +133,8 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
         if (!non_negative(d->pretension)) return fail(err, "cable %d: pretension must be >= 0", c);
         if (!non_negative(d->post_friction) || d->post_friction > 2.0)
             return fail(err, "cable %d: post friction must be in [0, 2]", c);
+        if (!(d->termination_efficiency > 0.0 && d->termination_efficiency <= 1.0))
+            return fail(err, "cable %d: termination efficiency must be in (0, 1]", c);
         if (check_rope(&d->rope, c, err)) return 1;
         if (d->pretension >= d->rope.elastic_limit_ratio * d->rope.nominal_strength)
             return fail(err, "cable %d: pretension exceeds the rope's elastic limit", c);
@@ -133,7 +159,6 @@ static int check_vehicle(const cs_vehicle_def *v, cs_error *err) {
         !non_negative(v->rolling_resistance) || !non_negative(v->tyre_friction) ||
         !non_negative(v->face_friction))
         return fail(err, "vehicle: tyre and friction parameters must be >= 0 (static deflection > 0)");
-    if (!non_negative(v->face_corner_radius)) return fail(err, "vehicle: face corner radius must be >= 0");
     if (v->crush_point_count < 2 || v->crush_point_count > CS_MAX_CRUSH_POINTS)
         return fail(err, "vehicle: crush curve needs 2 to %d points", CS_MAX_CRUSH_POINTS);
     if (v->crush_deformation[0] != 0.0 || v->crush_force[0] != 0.0)
@@ -261,9 +286,7 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
         cm->pretension = d->pretension;
         cm->mu_post = d->post_friction;
         derive_rope(&d->rope, scenario->gravity, &cm->rope);
-        /* bent over the face's corners (bend diameter D = 2 R) the rope holds only a fraction of Fu */
-        double dr = d->rope.diameter > 0.0 ? 2.0 * vehicle->face_corner_radius / d->rope.diameter : HUGE_VAL;
-        cm->corner_strength = cs_rope_bend_efficiency(dr) * cm->rope.fu;
+        cm->termination_strength = d->termination_efficiency * cm->rope.fu;
     }
     /* the load height of every post: its cables' mean height, or for a barrier of posts alone
      * (bollards, a bogie test) the height where the vehicle's face strikes them */
@@ -302,8 +325,8 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
         pm->clamped = d->attachment == CS_ATTACH_CLAMPED;
         pm->inertia = post_inertia(d, pm->pivot);
     }
-    m->anchors[0] = barrier->start_anchor;
-    m->anchors[1] = barrier->end_anchor;
+    cs_anchor_derive(&barrier->start_anchor, scenario->gravity, &m->anchors[0]);
+    cs_anchor_derive(&barrier->end_anchor, scenario->gravity, &m->anchors[1]);
     m->scenario = *scenario;
     derive_vehicle(vehicle, scenario->gravity, &m->vehicle);
 

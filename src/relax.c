@@ -262,6 +262,52 @@ double cs_relax_post(const cs_model *model, cs_state *s, int p, double tol, int 
     return entry;
 }
 
+/* ---- an anchor's displacement, its ropes' end spans following ---- */
+static void anchor_residual(const cs_model *model, cs_state *s, int a, const double *u, double *r) {
+    s->anchors[a].u[0] = u[0], s->anchors[a].u[1] = u[1];
+    cs_anchor_place_nodes(model, s, a);
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        if (cs->status == CS_CABLE_INTACT)
+            cs_cable_update_span(&model->cables[c], cs, a == 0 ? 0 : cs->node_count - 2, NULL);
+    }
+    cs_anchor_residual(model, s, a, NULL, r);
+}
+
+/* Newton on the anchor's two components with a difference-quotient Jacobian and backtracking. Returns
+ * the relative residual found on entry (of the strongest rope's Fu). */
+static double solve_anchor(const cs_model *model, cs_state *s, int a, double tol) {
+    if (!cs_anchor_active(model, s, a)) return 0.0;
+    double unit = 0.0, u[2] = {s->anchors[a].u[0], s->anchors[a].u[1]}, r[2];
+    for (int c = 0; c < model->cable_count; c++)
+        unit = fmax(unit, model->cables[c].rope.fu);
+    anchor_residual(model, s, a, u, r);
+    double entry = v2_norm(r[0], r[1]) / unit, rn = entry;
+    for (int it = 0; it < 30 && rn > 1e-3 * tol; it++) {
+        double h = 1e-7, jac[4], rp[2];
+        for (int k = 0; k < 2; k++) {
+            double up[2] = {u[0], u[1]};
+            up[k] += h;
+            anchor_residual(model, s, a, up, rp);
+            jac[k] = (rp[0] - r[0]) / h, jac[2 + k] = (rp[1] - r[1]) / h;
+        }
+        double det = jac[0] * jac[3] - jac[1] * jac[2];
+        if (!(fabs(det) > 0.0)) break;
+        double d[2] = {-(jac[3] * r[0] - jac[1] * r[1]) / det, -(-jac[2] * r[0] + jac[0] * r[1]) / det};
+        double dn = v2_norm(d[0], d[1]), step = dn > 0.05 ? 0.05 / dn : 1.0, t[2], rt[2], rtn = rn;
+        for (int ls = 0; ls < 12; ls++, step *= 0.5) {
+            t[0] = u[0] + step * d[0], t[1] = u[1] + step * d[1];
+            anchor_residual(model, s, a, t, rt);
+            rtn = v2_norm(rt[0], rt[1]) / unit;
+            if (rtn < rn) break;
+        }
+        if (!(rtn < rn)) break;
+        u[0] = t[0], u[1] = t[1], r[0] = rt[0], r[1] = rt[1], rn = rtn;
+    }
+    anchor_residual(model, s, a, u, r); /* leave the ends at the accepted displacement */
+    return entry;
+}
+
 /* Normal force for a trial crush, with the corner nodes moved there. */
 static double face_normal_force(const cs_model *model, cs_state *s, double crush) {
     cs_contact_place_corners(model, s, crush);
@@ -359,6 +405,8 @@ double cs_relax(const cs_model *model, cs_state *s, int sweeps, int may_fall) {
                 worst = fmax(worst, cs_relax_slide_node(model, cm, cs, i, sc->solver_tolerance));
             }
         }
+        for (int a = 0; a < 2; a++)
+            worst = fmax(worst, solve_anchor(model, s, a, sc->solver_tolerance));
         for (int c = 0; c < model->cable_count; c++) { /* contact heights on the face */
             cs_cable_state *cs = &s->cables[c];
             if (cs->status != CS_CABLE_INTACT || !cs->engaged) continue;

@@ -27,25 +27,6 @@ double cs_rope_tension(const cs_rope *r, double e, double ep) {
     return trial < b ? trial : b;
 }
 
-/* Strength efficiency of a wire rope bent over a pin or sheave of diameter D (d the rope's): the
- * fraction of its straight-pull breaking strength it holds there. The Wire Rope Technical Board's
- * "efficiency of wire ropes over stationary sheaves or pins" (Wire Rope Users Manual, Fig. 38, as
- * tabulated by rigging suppliers): 50% at D/d = 1 rising to 95% at D/d = 40; linear in log(D/d) between
- * the points, held at the end values outside them. No bend (D/d infinite) keeps the full strength. */
-double cs_rope_bend_efficiency(double d_ratio) {
-    static const double ratio[] = {1, 2, 4, 6, 8, 10, 15, 20, 30, 40};
-    static const double eff[] = {0.50, 0.65, 0.75, 0.79, 0.83, 0.86, 0.89, 0.91, 0.93, 0.95};
-    enum { n = (int)(sizeof ratio / sizeof ratio[0]) };
-    if (!(d_ratio < HUGE_VAL)) return 1.0;
-    if (!(d_ratio > ratio[0])) return eff[0];
-    if (d_ratio >= ratio[n - 1]) return eff[n - 1];
-    int i = 1;
-    while (ratio[i] < d_ratio)
-        i++;
-    double f = log(d_ratio / ratio[i - 1]) / log(ratio[i] / ratio[i - 1]);
-    return eff[i - 1] + f * (eff[i] - eff[i - 1]);
-}
-
 /* Recoverable energy of a span of unstretched length s under tension T (unloading slope EA). */
 double cs_rope_elastic_energy(const cs_rope *r, double t, double s) {
     return 0.5 * t * t / r->ea * s;

@@ -30,6 +30,12 @@ static int position_columns(const cs_model *model, const cs_state *s, const cs_r
             out[k] = (dep){rows->tilt_index[id] + k, {l * ja[k], l * ja[2 + k], l * ja[4 + k]}};
         return 2;
     }
+    if (id == CS_NODE_START || id == CS_NODE_END) {
+        int a = rows->anchor_index[id == CS_NODE_START ? 0 : 1];
+        if (a < 0) return 0;
+        out[0] = (dep){a, {1.0, 0.0, 0.0}}, out[1] = (dep){a + 1, {0.0, 1.0, 0.0}};
+        return 2;
+    }
     if (is_corner(id)) {
         int h = rows->height_index[2 * c + (id == CS_NODE_LEFT ? 0 : 1)];
         if (h < 0) return 0;
@@ -45,6 +51,7 @@ void cs_rows_add_node_gradient(const cs_model *model, const cs_state *s, const c
                                int i, double gp[3][3], const double *gm) {
     for (int k = 0; k < 3; k++) {
         int j = i - 1 + k;
+        if (j < 0 || j >= s->cables[c].node_count) continue;
         dep d[2];
         int count = position_columns(model, s, rows, c, j, d);
         for (int q = 0; q < count; q++)
@@ -66,6 +73,20 @@ void cs_rows_force_gradient(const cs_span_grad *sp, const double *rho, double gp
         gm[k] += sign * ur * a->dt_dm[0];
         gm[k + 1] += sign * ur * a->dt_dm[1];
     }
+}
+
+void cs_rows_end_force_gradient(const cs_span_grad *sp, int at_start, const double *rho, double gp[3][3],
+                                double *gm) {
+    double sign = at_start ? 1.0 : -1.0, ur = v3_dot(sp->u, rho), g[3];
+    for (int e = 0; e < 3; e++)
+        g[e] = sign * (sp->dt_dd[e] * ur + (sp->l > 1e-12 ? sp->t * (rho[e] - sp->u[e] * ur) / sp->l : 0.0));
+    /* the span runs from its first node to its second: start (node 0 = gp[1], node 1 = gp[2]), end
+     * (node n-2 = gp[0], node n-1 = gp[1]) */
+    int first = at_start ? 1 : 0;
+    v3_addto(gp[first + 1], g, 1.0);
+    v3_addto(gp[first], g, -1.0);
+    gm[first] += sign * ur * sp->dt_dm[0];
+    gm[first + 1] += sign * ur * sp->dt_dm[1];
 }
 
 void cs_rows_length_gradient(const cs_span_grad *sp, double coef, double gp[3][3]) {

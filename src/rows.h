@@ -17,6 +17,7 @@ typedef enum cs_unknown_kind {
     CS_U_NODE = 1,   /* the material coordinate of node b of cable a where the rope slides */
     CS_U_CRUSH = 2,  /* the crush of the vehicle's face */
     CS_U_HEIGHT = 3, /* the height on the face of cable a's contact at corner b (0 left, 1 right) */
+    CS_U_ANCHOR = 4, /* anchor a's horizontal displacement (2 slots: b = 0, 1) */
     CS_U_KIND_COUNT
 } cs_unknown_kind;
 
@@ -34,6 +35,7 @@ typedef struct cs_rows {
     int *node_index;     /* [cable_count * max_nodes] a node's material column, -1 if none */
     int *height_index;   /* [cable_count * 2] a contact's height column, -1 if none */
     int crush_index;     /* -1 if none */
+    int anchor_index[2]; /* an anchor's first column, -1 if none */
     double *chords;      /* [4 cable_count max_nodes] each span's chord and length at the placement */
     double *axes;        /* [18 post_count] each post axis' Jacobian and its tilt derivatives */
     cs_span_grad *spans; /* [cable_count * max_nodes] each span's tension and gradient */
@@ -54,6 +56,7 @@ extern const cs_row_kind cs_post_rows;    /* post.c */
 extern const cs_row_kind cs_support_rows; /* support.c */
 extern const cs_row_kind cs_height_rows;  /* contact.c */
 extern const cs_row_kind cs_crush_rows;   /* contact.c */
+extern const cs_row_kind cs_anchor_rows;  /* anchor.c */
 
 static inline const double *cs_rows_chords(const cs_model *model, const cs_rows *rows, int c) {
     return rows->chords + 4 * (size_t)c * (size_t)model->max_nodes;
@@ -71,6 +74,10 @@ void cs_rows_add_node_gradient(const cs_model *model, const cs_state *s, const c
                                int i, double gp[3][3], const double *gm);
 /* Gradient of rho . f_i, f_i the two spans' pull on node i, for a fixed 3-vector rho; adds to gp, gm. */
 void cs_rows_force_gradient(const cs_span_grad *sp, const double *rho, double gp[3][3], double *gm);
+/* The same for the pull of its one span on a rope's end node (at_start: node 0, span 0; else the last
+ * node and span); gp[1] is the end node's, gp[2] (start) or gp[0] (end) its neighbour's. */
+void cs_rows_end_force_gradient(const cs_span_grad *sp, int at_start, const double *rho, double gp[3][3],
+                                double *gm);
 /* Gradient of the span lengths l_L + l_R at node i, times coef; adds to gp. */
 void cs_rows_length_gradient(const cs_span_grad *sp, double coef, double gp[3][3]);
 /* Gradient of the turning angle at node i, times coef; adds to gp (0 where the rope runs straight). */

@@ -218,6 +218,17 @@ int cs_state_cable_path(const cs_model *model, const cs_state *s, int c, double 
     return n;
 }
 
+void cs_state_anchor(const cs_model *model, const cs_state *s, int a, cs_anchor_view *out) {
+    const cs_anchor_model *am = &model->anchors[a];
+    const cs_anchor_state *as = &s->anchors[a];
+    memset(out, 0, sizeof *out);
+    out->rigid = am->rigid, out->yielded = as->yielded, out->failed = as->failed;
+    for (int k = 0; k < 2; k++)
+        out->displacement[k] = as->u[k], out->force[k] = as->force[k];
+    out->capacity = am->capacity, out->travel_limit = am->travel_limit;
+    out->uplift = as->uplift, out->uplift_capacity = am->uplift_capacity;
+}
+
 void cs_state_post(const cs_model *model, const cs_state *s, int p, cs_post_view *out) {
     const cs_post_state *ps = &s->posts[p];
     const cs_post_model *pm = &model->posts[p];
@@ -257,6 +268,10 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
     for (int p = 0; p < model->post_count; p++) {
         hash_bytes(&h, s->posts[p].tilt, sizeof s->posts[p].tilt);
         hash_bytes(&h, s->posts[p].plastic, sizeof s->posts[p].plastic);
+    }
+    for (int a = 0; a < 2; a++) {
+        hash_bytes(&h, s->anchors[a].u, sizeof s->anchors[a].u);
+        hash_bytes(&h, s->anchors[a].plastic, sizeof s->anchors[a].plastic);
     }
     hash_bytes(&h, &s->energy, sizeof s->energy);
     return h;

@@ -41,7 +41,7 @@ static void reset_cable(const cs_model *model, int c, cs_cable_state *cs) {
     lay_in_pretension(model, c, cs);
     cs->max_tension_seen = cm->pretension;
     cs->max_strain = cm->pretension / cm->rope.ea;
-    cs->corner_load = 0.0;
+    cs->end_load = 0.0;
     cs->corner_z[0] = cs->corner_z[1] = cs->corner_z_commit[0] = cs->corner_z_commit[1] = 0.0;
 }
 
@@ -72,6 +72,7 @@ static void settle_barrier(const cs_model *model, cs_state *s) {
             worst = fmax(worst, cs_post_balance_at_tensions(model, s, p));
         if (worst <= 1e-12) break;
     }
+    cs_anchor_settle(model, s);
     for (int c = 0; c < model->cable_count; c++)
         lay_in_pretension(model, c, &s->cables[c]);
     cs_barrier_solve(model, s);
@@ -100,7 +101,7 @@ void cs_state_reset(const cs_model *model, cs_state *s) {
     memset(s->posts, 0, (size_t)model->post_count * sizeof *s->posts);
     cs_system_reset(&s->work->sys);
     memset(&s->work->count, 0, sizeof s->work->count);
-    s->anchor_failed[0] = s->anchor_failed[1] = 0;
+    memset(s->anchors, 0, sizeof s->anchors);
     s->e_cable_plastic = s->e_post_plastic = s->e_post_damping = s->e_soil = s->e_crush = s->e_friction =
         s->e_released = s->e_tyre = 0.0;
     s->event_count = 0;

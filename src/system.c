@@ -22,7 +22,7 @@ static int is_corner(int id) {
 }
 
 static const cs_row_kind *const kinds[CS_U_KIND_COUNT] = {&cs_post_rows, &cs_support_rows, &cs_crush_rows,
-                                                          &cs_height_rows};
+                                                          &cs_height_rows, &cs_anchor_rows};
 
 static int node_slides(const cs_model *model, const cs_cable_state *cs, int i) {
     int id = cs->node[i];
@@ -35,7 +35,7 @@ static int node_slides(const cs_model *model, const cs_cable_state *cs, int i) {
 int cs_system_init(const cs_model *model, cs_system *sys) {
     memset(sys, 0, sizeof *sys);
     size_t nc = (size_t)model->cable_count, np = (size_t)model->post_count, nn = (size_t)model->max_nodes;
-    size_t n = 2 * np + nc * nn + 2 * nc + 1, per_row = 3 * (12 + 8 * nc) + 1;
+    size_t n = 2 * np + nc * nn + 2 * nc + 5, per_row = 3 * (12 + 8 * nc) + 1;
     cs_rows *rw = &sys->rows;
     rw->slots = calloc(n, sizeof *rw->slots);
     rw->tilt_index = calloc(np ? np : 1, sizeof *rw->tilt_index);
@@ -50,7 +50,7 @@ int cs_system_init(const cs_model *model, cs_system *sys) {
     sys->slots_bw = calloc(n, sizeof *sys->slots_bw);
     sys->nodes_bw = calloc(nc * (nn + 1) + 1, sizeof *sys->nodes_bw);
     sys->scratch = calloc(n, sizeof *sys->scratch);
-    sys->key_count = 2 * np + nc * (np + 2) + 2 * nc + 1; /* see slot_key */
+    sys->key_count = 2 * np + nc * (np + 2) + 2 * nc + 5; /* see slot_key */
     sys->last = calloc(sys->key_count, sizeof *sys->last);
     sys->last_step = calloc(sys->key_count, sizeof *sys->last_step);
     if (!rw->slots || !rw->tilt_index || !rw->node_index || !rw->height_index || !rw->spans || !rw->chords ||
@@ -117,6 +117,11 @@ static int assemble(const cs_model *model, const cs_state *s, cs_system *sys) {
         }
     }
     if (cs_face_loaded(model, s)) sl[n++] = (cs_slot){s->pos[0], CS_U_CRUSH, 0, 0};
+    for (int a = 0; a < 2; a++)
+        if (cs_anchor_active(model, s, a)) {
+            sl[n++] = (cs_slot){model->anchors[a].x, CS_U_ANCHOR, a, 0};
+            sl[n++] = (cs_slot){model->anchors[a].x, CS_U_ANCHOR, a, 1};
+        }
     qsort(sl, (size_t)n, sizeof *sl, slot_order);
     /* index maps: tilt of post p, node i of cable c, crush */
     for (int p = 0; p < model->post_count; p++)
@@ -127,11 +132,13 @@ static int assemble(const cs_model *model, const cs_state *s, cs_system *sys) {
     w->crush_index = -1;
     for (int i = 0; i < 2 * model->cable_count; i++)
         w->height_index[i] = -1;
+    w->anchor_index[0] = w->anchor_index[1] = -1;
     for (int k = 0; k < n; k++) {
         if (sl[k].kind == CS_U_HEIGHT) w->height_index[2 * sl[k].a + sl[k].b] = k;
         if (sl[k].kind == CS_U_TILT && sl[k].b == 0) w->tilt_index[sl[k].a] = k;
         if (sl[k].kind == CS_U_NODE) w->node_index[sl[k].a * model->max_nodes + sl[k].b] = k;
         if (sl[k].kind == CS_U_CRUSH) w->crush_index = k;
+        if (sl[k].kind == CS_U_ANCHOR && sl[k].b == 0) w->anchor_index[sl[k].a] = k;
     }
     w->n = n;
     return n;
@@ -151,8 +158,10 @@ static void position_deps(const cs_rows *w, const cs_cable_state *cs, int c, int
         widen(w->height_index[2 * c + (id == CS_NODE_LEFT ? 0 : 1)], lo, hi);
         k = w->crush_index;
     }
+    int anchor = id == CS_NODE_START || id == CS_NODE_END;
+    if (anchor) k = w->anchor_index[id == CS_NODE_START ? 0 : 1];
     if (k < 0) return;
-    int k2 = (id >= 0) ? k + 1 : k;
+    int k2 = (id >= 0 || anchor) ? k + 1 : k; /* a post's and an anchor's two columns */
     if (k < *lo) *lo = k;
     if (k2 > *hi) *hi = k2;
 }
@@ -188,6 +197,14 @@ static void bandwidth(const cs_model *model, const cs_state *s, const cs_rows *w
                 const cs_cable_state *cs = &s->cables[c];
                 if (cs->status == CS_CABLE_INTACT && cs->where[u->a] > 0)
                     neighbourhood(model, w, cs, c, cs->where[u->a], &lo, &hi);
+            }
+            hi = hi > k + 1 ? hi : k + 1;
+            lo = lo < k - 1 ? lo : k - 1;
+        } else if (u->kind == CS_U_ANCHOR) {
+            for (int c = 0; c < model->cable_count; c++) {
+                const cs_cable_state *cs = &s->cables[c];
+                if (cs->status == CS_CABLE_INTACT)
+                    neighbourhood(model, w, cs, c, u->a == 0 ? 0 : cs->node_count - 1, &lo, &hi);
             }
             hi = hi > k + 1 ? hi : k + 1;
             lo = lo < k - 1 ? lo : k - 1;
@@ -243,6 +260,7 @@ static void gather(const cs_state *s, const cs_rows *w, int n, double *x) {
         if (u->kind == CS_U_NODE) x[k] = s->cables[u->a].m[u->b];
         if (u->kind == CS_U_CRUSH) x[k] = s->crush;
         if (u->kind == CS_U_HEIGHT) x[k] = s->cables[u->a].corner_z[u->b];
+        if (u->kind == CS_U_ANCHOR) x[k] = s->anchors[u->a].u[u->b];
     }
 }
 
@@ -254,7 +272,10 @@ static void scatter(const cs_model *model, cs_state *s, const cs_rows *w, int n,
         if (u->kind == CS_U_NODE) s->cables[u->a].m[u->b] = x[k];
         if (u->kind == CS_U_CRUSH) s->crush = x[k];
         if (u->kind == CS_U_HEIGHT) s->cables[u->a].corner_z[u->b] = x[k];
+        if (u->kind == CS_U_ANCHOR) s->anchors[u->a].u[u->b] = x[k];
     }
+    for (int a = 0; a < 2; a++)
+        if (w->anchor_index[a] >= 0) cs_anchor_place_nodes(model, s, a);
     cs_contact_place_corners(model, s, s->crush);
     cs_post_place_captured(model, s, s->crush);
     for (int p = 0; p < model->post_count; p++)
@@ -331,13 +352,14 @@ static void jacobian_at(const cs_model *model, cs_state *s, cs_system *sys, cons
 }
 
 /* Largest fraction of a Newton step that keeps every span's rope at least half of what it has, turns
- * no post by more than 0.1 rad and moves the crush or a contact by at most 5 cm. */
+ * no post by more than 0.1 rad and moves the crush, a contact or an anchor by at most 5 cm. */
 static double max_step(const cs_model *model, const cs_state *s, const cs_rows *w, const double *dx) {
     double t = 1.0;
     for (int k = 0; k < w->n; k++) {
         const cs_slot *u = &w->slots[k];
         if (u->kind == CS_U_TILT && fabs(dx[k]) * t > 0.1) t = 0.1 / fabs(dx[k]);
-        if ((u->kind == CS_U_CRUSH || u->kind == CS_U_HEIGHT) && fabs(dx[k]) * t > 0.05)
+        if ((u->kind == CS_U_CRUSH || u->kind == CS_U_HEIGHT || u->kind == CS_U_ANCHOR) &&
+            fabs(dx[k]) * t > 0.05)
             t = 0.05 / fabs(dx[k]);
     }
     for (int c = 0; c < model->cable_count; c++) {
@@ -380,6 +402,7 @@ static size_t slot_key(const cs_model *model, const cs_state *s, const cs_slot *
         return 2 * np + (size_t)u->a * (np + 2) + at;
     }
     if (u->kind == CS_U_HEIGHT) return 2 * np + nc * (np + 2) + 2 * (size_t)u->a + (size_t)u->b;
+    if (u->kind == CS_U_ANCHOR) return 2 * np + nc * (np + 2) + 2 * nc + 1 + 2 * (size_t)u->a + (size_t)u->b;
     return 2 * np + nc * (np + 2) + 2 * nc;
 }
 

@@ -97,9 +97,9 @@ static inline cs_vehicle_def fixture_truck(void) {
     return v;
 }
 
-/* APS3: 136 ft, dead-men at both ends, posts every 8 ft from 8 to 128 ft, intermediate anchor posts
- * (HSS in 3 x 5 ft footings) at 56 and 80 ft, line posts in 9-in x 3-ft footings, two 1.75-in
- * cables at 2.83 and 4 ft, impact 40 mph head-on at mid-barrier (68 ft). */
+/* APS3: 136 ft, dead-men (3 x 5 ft concrete shafts, the ropes tied at grade) at both ends, posts every 8 ft
+ * from 8 to 128 ft, intermediate anchor posts (HSS in 3 x 5 ft footings) at 56 and 80 ft, line posts in 9-in
+ * x 3-ft footings, two 1.75-in cables at 2.83 and 4 ft, impact 40 mph head-on at mid-barrier (68 ft). */
 static inline void fixture_aps3(fixture *fx) {
     for (int c = 0; c < 2; c++) {
         cs_cable_def *cd = &fx->cables[c];
@@ -125,6 +125,7 @@ static inline void fixture_aps3(fixture *fx) {
     fx->barrier.posts = fx->posts;
     fx->barrier.start_anchor.x = 0.0;
     fx->barrier.end_anchor.x = 136.0 * FT;
+    fx->barrier.start_anchor.footing = fx->barrier.end_anchor.footing = fixture_footing(3.0, 5.0, 0.0);
     fx->vehicle = fixture_truck();
     fx->scenario = cs_default_scenario_def();
     fx->scenario.speed = 40 * MPH;

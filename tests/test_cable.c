@@ -1,5 +1,5 @@
 /* Cable: the rope law's points, the capstan ratio across a frictional support, frictionless tension
- * redistribution by sliding, breaking, and the strength of a rope bent over the face's corners. */
+ * redistribution by sliding, breaking at the breaking strain and at an end fitting. */
 #include "check.h"
 #include "fixture.h"
 #include "internal.h"
@@ -7,10 +7,11 @@
 
 /* The paper's closed forms (Eqs. 1-6) are for a weightless rope: the cable of these worlds weighs
  * `weighs` times its A603 weight (0 or 1). */
-static world *make_world_weighing(double mu, double weighs) {
+static world *make_world_ended(double mu, double weighs, double termination) {
     static world w;
     fixture_aps3(&w.fx);
     w.fx.cables[0].post_friction = mu;
+    w.fx.cables[0].termination_efficiency = termination;
     w.fx.cables[0].rope.mass_per_length *= weighs;
     cs_error err;
     w.model = cs_model_create(&w.fx.barrier, &w.fx.vehicle, &w.fx.scenario, &err);
@@ -18,6 +19,10 @@ static world *make_world_weighing(double mu, double weighs) {
     w.state = cs_state_create(w.model, &err);
     assert_non_null(w.state);
     return &w;
+}
+
+static world *make_world_weighing(double mu, double weighs) {
+    return make_world_ended(mu, weighs, 0.90);
 }
 
 static world *make_world(double mu) {
@@ -180,9 +185,11 @@ static void sag_tension_solves_its_cubic(void **state) {
     world_free(w);
 }
 
+/* With fittings as strong as the rope (a poured socket, 100%), the rope breaks where it is strained to
+ * its breaking strain. */
 static void breaking_strain_breaks_the_cable(void **state) {
     (void)state;
-    world *w = make_world(0.15);
+    world *w = make_world_ended(0.15, 0.0, 1.0);
     double a[3] = {0, 0, 1}, b[3] = {3, 0, 1}, c[3] = {10, 0, 1};
     lay_cable(w->state, a, b, c, 0.029, 0.010);
     cs_cable_commit(w->model, 0, w->state);
@@ -204,50 +211,41 @@ static void breaking_strain_breaks_the_cable(void **state) {
     world_free(w);
 }
 
-/* The bending efficiency is the Wire Rope Users Manual's table (Fig. 38): its points exactly, linear in
- * log(D/d) between them, held at the ends, and no loss without a bend. */
-static void bend_efficiency_follows_the_table(void **state) {
-    (void)state;
-    CHECK_ABS(cs_rope_bend_efficiency(1.0), 0.50, 1e-15); /* a pin of the rope's own diameter: 50% */
-    CHECK_ABS(cs_rope_bend_efficiency(4.0), 0.75, 1e-15);
-    CHECK_ABS(cs_rope_bend_efficiency(10.0), 0.86, 1e-15);
-    CHECK_ABS(cs_rope_bend_efficiency(40.0), 0.95, 1e-15);      /* "even at D/d = 40 ... up to 5%" */
-    CHECK_ABS(cs_rope_bend_efficiency(sqrt(8.0)), 0.70, 1e-12); /* log-midpoint of 2 (65%) and 4 (75%) */
-    CHECK_ABS(cs_rope_bend_efficiency(0.3), 0.50, 0.0);         /* below the table: its first point */
-    CHECK_ABS(cs_rope_bend_efficiency(400.0), 0.95, 0.0);       /* above it: its last */
-    CHECK_ABS(cs_rope_bend_efficiency(HUGE_VAL), 1.0, 0.0);     /* straight pull */
-    double prev = 0.0;
-    for (double r = 0.5; r < 60.0; r *= 1.01) { /* never decreases with a gentler bend */
-        double e = cs_rope_bend_efficiency(r);
-        assert_true(e >= prev);
-        prev = e;
-    }
-}
-
-/* A rope bent over a face corner breaks when the tension there reaches efficiency(2 R / d) Fu; the same
- * tension over a post (straight-pull strength) holds. 1.75-in rope, 2-in corner radius: D/d = 2.286,
- * efficiency 0.65 + 0.10 log(2.286 / 2) / log 2 = 0.6693. */
-static void corner_bend_breaks_below_fu(void **state) {
+/* An end span (tied to an anchor) breaks the rope at its fitting when its tension reaches the fitting's
+ * efficiency times Fu (0.90: wire rope clips on rope of 1 in or more); an inner span at the same tension
+ * holds (a 4-node path: anchor, post, post, anchor). Tensions on the secondary slope: 0.9 Fu > 0.6 Fu. */
+static void termination_breaks_at_its_efficiency(void **state) {
     (void)state;
     world *w = make_world(0.15);
     const cs_cable_model *cm = &w->model->cables[0];
     const cs_rope *r = &cm->rope;
-    double eta = 0.65 + 0.10 * log((2.0 * 2.0 / 1.75) / 2.0) / log(2.0);
-    CHECK_REL(cm->corner_strength, eta * r->fu, 1e-12);
-    double a[3] = {0, 0, 1}, b[3] = {3, 1, 1}, c[3] = {10, 0, 1};
+    CHECK_REL(cm->termination_strength, 0.90 * r->fu, 1e-15);
+    double lo = 0.0021; /* a low strain for the spans not under test */
     for (int k = 0; k < 3; k++) {
-        double t = (k == 0 ? 0.99 : 1.01) * eta * r->fu; /* on the secondary slope: eta > 0.6 */
-        double e = r->e1 + (t - r->t1) / r->k2;
-        cs_cable_state *cs = lay_cable(w->state, a, b, c, e, 0.002);
-        if (k < 2) cs->node[1] = CS_NODE_LEFT, cs->where[0] = -1; /* k = 2: the middle node is a post */
+        double t = (k == 0 ? 0.99 : 1.01) * 0.90 * r->fu, e = r->e1 + (t - r->t1) / r->k2;
+        cs_cable_state *cs = &w->state->cables[0];
+        double p[4][3] = {{0, 0, 1}, {3, 0, 1}, {6, 0, 1}, {9, 0, 1}}, strain[3] = {e, lo, lo};
+        if (k == 2) strain[0] = lo, strain[1] = e; /* the inner span at 1.01 x 0.9 Fu */
+        cs->status = CS_CABLE_INTACT, cs->node_count = 4;
+        cs->node[0] = CS_NODE_START, cs->node[1] = 0, cs->node[2] = 1, cs->node[3] = CS_NODE_END;
+        cs->where[0] = 1, cs->where[1] = 2;
+        cs->m[0] = 0.0;
+        for (int i = 0; i < 4; i++)
+            for (int j = 0; j < 3; j++)
+                cs->pos[3 * i + j] = p[i][j];
+        for (int i = 0; i < 3; i++)
+            cs->m[i + 1] = cs->m[i] + 3.0 / (1.0 + strain[i]), cs->ep[i] = 0.0;
+        for (int i = 0; i < 4; i++)
+            cs->m_commit[i] = cs->m[i];
         cs_cable_commit(w->model, 0, w->state);
-        CHECK_REL(cs->tension[0], t, 1e-9);
+        CHECK_REL(cs->tension[k == 2 ? 1 : 0], t, 1e-9);
         assert_int_equal(cs_cable_check_break(w->model, 0, w->state), k == 1);
         if (k == 1) {
             const cs_event *ev = cs_state_event(w->state, cs_state_event_count(w->state) - 1);
-            assert_int_equal(ev->type, CS_EVENT_CABLE_BREAK);
+            assert_int_equal(ev->type, CS_EVENT_TERMINATION_BREAK);
             CHECK_REL(ev->value, t, 1e-9);
-            cs->status = CS_CABLE_INTACT;
+            assert_int_equal(cs->status, CS_CABLE_BROKEN);
+            CHECK_ABS(cs->tension[0], 0.0, 0.0); /* a broken rope carries nothing */
         }
     }
     world_free(w);
@@ -262,8 +260,7 @@ int main(void) {
         cmocka_unit_test(sagging_span_hangs_as_a_catenary),
         cmocka_unit_test(sag_tension_solves_its_cubic),
         cmocka_unit_test(breaking_strain_breaks_the_cable),
-        cmocka_unit_test(bend_efficiency_follows_the_table),
-        cmocka_unit_test(corner_bend_breaks_below_fu),
+        cmocka_unit_test(termination_breaks_at_its_efficiency),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

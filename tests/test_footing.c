@@ -1,4 +1,5 @@
-/* Eq. 21 footing capacity against the P column of the paper's Table 4 (S1 = 8000 psf, H = 3 ft). */
+/* Footings: Eq. 21 against the P column of the paper's Table 4 (S1 = 8000 psf, H = 3 ft), the cap, the
+ * dynamic factor scaled by the passive wedge's width effect, and the uplift capacity. */
 #include "check.h"
 #include "fixture.h"
 #include "internal.h"
@@ -21,14 +22,32 @@ static void soil_pressure_is_capped(void **state) {
     CHECK_REL(cs_footing_capacity(&g, 1.0), cs_footing_capacity(&f, 1.0), 1e-12);
 }
 
-/* Under impact the soil resists f_d times Eq. 21 (f_d = 2.75 by default, assumptions.md). */
-static void impact_capacity_is_dynamic_factor_times_eq21(void **state) {
+/* Under impact the soil resists f_d R(b/D) / R(b_ref/D_ref) times Eq. 21, R the passive wedge's
+ * three-dimensional factor of a block at grade (Ovesen, Brinch Hansen), f_d = 2.75 for the bogie tests'
+ * post (4.03 in, 40 in). Worked by hand at phi = 42 deg: Kp = tan^2(66 deg) = 5.04468, Ka = tan^2(24
+ * deg) = 0.198229, (Kp - Ka)^0.67 = 2.87895; R = 1 + 2.87895 x 1.6 / (1 + 5 b / D): 4.06322 for the bogie
+ * post (b/D = 0.10075), 2.15158 for a 3 x 5 ft footing (b/D = 0.6), 1.41876 for an 8-ft wide, 4-ft deep
+ * block (b/D = 2). So the bogie post keeps 2.75, the 3 x 5 ft footing 1.4562 and the block 0.9602 of
+ * Eq. 21. */
+static void impact_capacity_scales_with_the_wedge(void **state) {
     (void)state;
-    cs_footing_def f = fixture_footing(0.75, 3.0, 20.0);
+    cs_footing_def f = fixture_footing(4.03 / 12.0, 40.0 / 12.0, 20.0);
     CHECK_REL(f.dynamic_factor, 2.75, 1e-15);
-    CHECK_REL(cs_footing_impact_capacity(&f, 3.0 * FT), 2.75 * 3593 * KIP / 1000.0, 1.0 / 3593);
-    f.dynamic_factor = 1.0;
-    CHECK_REL(cs_footing_impact_capacity(&f, 1.0), cs_footing_capacity(&f, 1.0), 1e-15);
+    CHECK_REL(f.friction_angle, 42.0 * M_PI_2_VALUE / 90.0, 1e-15);
+    CHECK_REL(cs_footing_wedge_factor(f.friction_angle, 4.03 * IN, 40.0 * IN), 4.063222, 1e-6);
+    CHECK_REL(cs_footing_dynamic_factor(&f), 2.75, 1e-12);
+    const double b_ft[] = {3.0, 8.0}, d_ft[] = {5.0, 4.0}, r[] = {2.151580, 1.418756};
+    for (int i = 0; i < 2; i++) {
+        cs_footing_def g = fixture_footing(b_ft[i], d_ft[i], 20.0);
+        CHECK_REL(cs_footing_wedge_factor(g.friction_angle, g.diameter, g.depth), r[i], 1e-6);
+        CHECK_REL(cs_footing_impact_capacity(&g, 0.0), 2.75 * r[i] / 4.063222 * cs_footing_capacity(&g, 0.0),
+                  5e-6);
+    }
+    /* Eq. 21 at the rope's height H = 0: S1 B D / 2.37; the 3 x 5 ft dead-man holds 50,633 lb statically */
+    cs_footing_def g = fixture_footing(3.0, 5.0, 20.0);
+    CHECK_REL(cs_footing_capacity(&g, 0.0) / (KIP / 1000.0), 8000.0 * 3.0 * 25.0 / (2.37 * 5.0), 1e-12);
+    g.dynamic_factor = 1.0, g.diameter = 4.03 * IN, g.depth = 40.0 * IN;
+    CHECK_REL(cs_footing_impact_capacity(&g, 1.0), cs_footing_capacity(&g, 1.0), 1e-12);
 }
 
 /* Uplift: a given capacity is used as given; omitted (0), the skin friction q z on the perimeter
@@ -46,7 +65,7 @@ static void pullout_capacity_given_or_from_skin_friction(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(table4_capacities),
                                        cmocka_unit_test(soil_pressure_is_capped),
-                                       cmocka_unit_test(impact_capacity_is_dynamic_factor_times_eq21),
+                                       cmocka_unit_test(impact_capacity_scales_with_the_wedge),
                                        cmocka_unit_test(pullout_capacity_given_or_from_skin_friction)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

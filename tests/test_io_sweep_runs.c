@@ -94,14 +94,15 @@ static void test_runs_csv(void **state) {
         "t_max_50ms_decel [s],max_dynamic_penetration [m],max_barrier_deflection [m],stop_time [s],"
         "exit_speed [m/s],first_contact_time [s],posts_failed_left,posts_failed_right,cables_broken,"
         "max_cable_tension [N],initial_kinetic_energy [J],energy_balance_error [1],solver_warnings,"
-        "max_solver_residual [1],final_x [m],final_y [m],final_z [m],events_cable_break,events_post_hinge,"
-        "events_post_rotation_limit,events_post_shear,events_post_pullout,events_footing_rotation,"
-        "events_anchor_pullout,events_override,events_underride,error\n"
+        "max_solver_residual [1],final_x [m],final_y [m],final_z [m],events_cable_break,"
+        "events_termination_break,events_post_hinge,events_post_rotation_limit,events_post_shear,"
+        "events_post_pullout,events_footing_rotation,events_anchor_pullout,events_anchor_yield,events_override,"
+        "events_underride,error\n"
         "0,17792.886461,SD-STD-02.01,stopped,M40/P2,0.5,3.25,0.125,1.23456789,2.25,0.4375,,0.003,2,3,0,"
-        "38621.24685,1087776.709,-4.259510776e-05,1,0.002394143186,20.5,-3.25,1,0,2,0,0,0,0,0,0,0,\n"
+        "38621.24685,1087776.709,-4.259510776e-05,1,0.002394143186,20.5,-3.25,1,0,0,2,0,0,0,0,0,0,0,0,\n"
         "1,17792.886461,PU,breakthrough,PU40/P4,0.5,2.875,0.125,4.03125,2.25,,13.75,,0,3,2,1500000,"
-        "1087776.709,0,1,0.002394143186,20.5,-3.25,1,2,0,0,0,0,0,0,0,1,\n"
-        "2,22241.1080763,SD-STD-02.01,failed,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"the solve \"\"diverged\"\", at "
+        "1087776.709,0,1,0.002394143186,20.5,-3.25,1,2,0,0,0,0,0,0,0,0,0,1,\n"
+        "2,22241.1080763,SD-STD-02.01,failed,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"the solve \"\"diverged\"\", at "
         "0.1 s\"\n";
     assert_string_equal(text, want);
     free(text);

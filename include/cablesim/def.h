@@ -29,14 +29,16 @@ typedef struct cs_rope_def {
     double secondary_modulus_ratio; /* r_2: second slope as a fraction of E (paper: 0.6) */
     double breaking_strain;         /* total strain at which the rope breaks (paper: 0.03) */
     double mass_per_length;         /* kg/m: the spans sag under their own weight */
-    double diameter;                /* nominal diameter d, m; sets the strength where the rope bends over
-                                       the vehicle's face corners (0: unknown, no bending loss) */
+    double diameter;                /* nominal diameter d, m (0: unknown) */
 } cs_rope_def;
 
 typedef struct cs_cable_def {
-    double height;        /* z of the cable at the posts, m */
-    double pretension;    /* installed tension, N */
-    double post_friction; /* mu between cable and post (capstan at a threaded post) */
+    double height;                 /* z of the cable at the posts, m */
+    double pretension;             /* installed tension, N */
+    double post_friction;          /* mu between cable and post (capstan at a threaded post) */
+    double termination_efficiency; /* strength of each end's fitting over the rope's Fu (published
+                                      efficiencies: docs/assumptions.md); the rope breaks at its end when
+                                      the end span's tension reaches it */
     cs_rope_def rope;
 } cs_cable_def;
 
@@ -63,7 +65,10 @@ typedef struct cs_footing_def {
     double rotation_limit;    /* footing rotation in soil at which the post is lost, rad */
     double pullout_capacity;  /* axial pull along the post that pulls it out, N; 0: the embedment's
                                  skin friction (skin_friction pi B D^2 / 2) */
-    double dynamic_factor;    /* soil resistance under impact over Eq. 21's (calibrated, assumptions.md) */
+    double dynamic_factor;    /* soil resistance under impact over Eq. 21's for a member of the bogie tests'
+                                 post's proportions (calibrated, assumptions.md); scaled to a member's own
+                                 width and depth by the passive wedge's width effect (footing.c) */
+    double friction_angle;    /* the soil's angle of internal friction, rad (the wedge's width effect) */
     double skin_friction;     /* shaft friction per metre of depth, Pa/m (uplift capacity, calibrated) */
 } cs_footing_def;
 
@@ -81,13 +86,24 @@ typedef struct cs_post_def {
     double rotation_limit; /* post rotation from vertical at which it fails (paper: 45 deg), rad */
 } cs_post_def;
 
-/* A cable end anchor (dead-man). Cable c is tied to the start anchor at one end and the end anchor at
- * the other. The anchor pulls out when the sum of the tied cables' tensions reaches its capacity. */
+/* A cable end anchor: a footing (dead-man) in the soil. Every cable is tied to the start anchor at one
+ * end and the end anchor at the other, each rope by its own end at height z. The footing resists the
+ * ropes' horizontal pull by Eq. 21 at that height (times the soil's dynamic factor for its width, as a
+ * post's footing), moves through the soil past it doing the soil's work, and pulls out, releasing the
+ * ropes, when it has travelled as far as its geometry allows (turned to its footing's rotation limit
+ * about the pivot 2/3 of its depth down) or when the ropes lift it with more than its pullout capacity.
+ * A footing of zero diameter is rigid: it never moves or pulls out (a rock anchor, a test's fixed end). */
 typedef struct cs_anchor_def {
     double x;                /* m */
     double z;                /* height where the cables are tied, m */
-    double pullout_capacity; /* N */
+    double pullout_capacity; /* uplift that pulls it out, N; 0: its weight plus its skin friction
+                              * (footing.skin_friction); HUGE_VAL: never */
+    double length;           /* plan size across the pull, m (0: a round shaft of the footing's diameter) */
+    double mass;             /* kg, what moves with it (0: its concrete, CS_CONCRETE_DENSITY) */
+    cs_footing_def footing;  /* its width facing the pull (diameter), depth and soil; diameter 0: rigid */
 } cs_anchor_def;
+
+#define CS_CONCRETE_DENSITY 2300.0 /* kg/m^3, plain concrete */
 
 typedef struct cs_barrier_def {
     int cable_count;

@@ -66,14 +66,16 @@ cs_status cs_run(const cs_model *model, cs_state *state, cs_output_fn on_output,
 /* ---- events ---- */
 typedef enum cs_event_type {
     CS_EVENT_CABLE_BREAK = 0,
+    CS_EVENT_TERMINATION_BREAK, /* a rope's end fitting lets go at its strength */
     CS_EVENT_POST_HINGE,
     CS_EVENT_POST_ROTATION_LIMIT,
     CS_EVENT_POST_SHEAR,
     CS_EVENT_POST_PULLOUT,
     CS_EVENT_FOOTING_ROTATION,
     CS_EVENT_ANCHOR_PULLOUT,
-    CS_EVENT_OVERRIDE,  /* the vehicle rides over a cable (cable below the front face) */
-    CS_EVENT_UNDERRIDE, /* the vehicle runs under a cable (cable above the front face) */
+    CS_EVENT_ANCHOR_YIELD, /* an anchor's footing starts to move through the soil */
+    CS_EVENT_OVERRIDE,     /* the vehicle rides over a cable (cable below the front face) */
+    CS_EVENT_UNDERRIDE,    /* the vehicle runs under a cable (cable above the front face) */
     CS_EVENT_STOPPED,
     CS_EVENT_BREAKTHROUGH,
     CS_EVENT_TYPE_COUNT
@@ -162,6 +164,20 @@ typedef struct cs_post_view {
 void cs_state_post(const cs_model *model, const cs_state *state, int post, cs_post_view *out);
 const char *cs_post_status_name(cs_post_status status);
 
+typedef struct cs_anchor_view {
+    int rigid;              /* no footing: it does not move */
+    int yielded, failed;    /* moving through the soil; pulled out */
+    double displacement[2]; /* horizontal, m */
+    double force[2];        /* the soil's resistance, N */
+    double capacity;        /* its footing's horizontal capacity, N */
+    double travel_limit;    /* m */
+    double uplift;          /* the ropes' upward pull, N */
+    double uplift_capacity; /* N */
+} cs_anchor_view;
+
+/* anchor: 0 the start (low x), 1 the end. */
+void cs_state_anchor(const cs_model *model, const cs_state *state, int anchor, cs_anchor_view *out);
+
 /* Energy ledger, J. Every term is a state function or an accumulated dissipation computed on its own;
  * balance_error = (sum now - sum at t = 0) / initial kinetic energy (for a vehicle starting at rest:
  * / m g h_cg). */
@@ -173,8 +189,10 @@ typedef struct cs_energy {
     double post_elastic;
     double post_kinetic; /* the posts' swing */
     double post_plastic;
-    double post_damping; /* of the posts' swing by its implicit integration (docs/theory.md) */
-    double soil;
+    double post_damping;   /* of the posts' swing and the anchors' slide by their implicit integration */
+    double anchor_elastic; /* the soil's elastic spring at the anchors */
+    double anchor_kinetic; /* the anchors' slide */
+    double soil;           /* plastic work of footings and anchors moving through the soil */
     double crush;
     double friction; /* tyres, cable sliding over supports */
     double released; /* stored energy lost at sudden failures (massless cable and posts) */

@@ -1,0 +1,125 @@
+/* Anchors as footings in the soil (src/anchor.c): what they hold, how they slide, when they pull out. */
+#include "check.h"
+#include "fixture.h"
+#include "internal.h"
+
+/* APS3's dead-man, a 3-ft diameter, 5-ft deep concrete shaft, at both ends. */
+static void dead_men(fixture *fx, double b_ft, double d_ft) {
+    for (int k = 0; k < 2; k++) {
+        cs_anchor_def *a = k ? &fx->barrier.end_anchor : &fx->barrier.start_anchor;
+        a->footing = fixture_footing(b_ft, d_ft, 0.0);
+    }
+}
+
+/* What the model derives from the footing, by hand: Eq. 21 at the ropes' height (H = 0, grade) is
+ * S1 B D / 2.37 = 8000 x 3 x 5 / 2.37 = 50,633 lb; times the dynamic factor for its width, 2.75 x
+ * 2.151580 / 4.063222 = 1.456195 (test_footing.c), 73,733 lb = 327.98 kN. It reaches that over 2% of its
+ * depth (30.48 mm), weighs 2300 kg/m^3 x pi/4 x 0.9144^2 x 1.524 m^3 = 2,301.7 kg, travels (2/3) D
+ * sin(45 deg) = 0.71842 m before it pulls out, and is lifted out by its weight plus its skin friction
+ * (182 kPa/m x pi x 0.9144 x 1.524^2 / 2 = 607.0 kN). */
+static void anchor_from_its_footing(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    dead_men(&fx, 3.0, 5.0);
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    const cs_anchor_model *am = &m->anchors[0];
+    double p = 8000.0 * 3.0 * 5.0 / 2.37 * 2.75 * 2.151580 / 4.063222 * (KIP / 1000.0);
+    CHECK_REL(am->capacity, p, 1e-6);
+    CHECK_REL(am->stiffness, p / (0.02 * 5.0 * FT), 1e-6);
+    double mass = 2300.0 * 0.25 * M_PI_2_VALUE * 2.0 * pow(3.0 * FT, 2) * 5.0 * FT;
+    CHECK_REL(am->mass, mass, 1e-12);
+    CHECK_REL(am->travel_limit, 2.0 / 3.0 * 5.0 * FT * sqrt(0.5), 1e-12);
+    double skin = 182.0e3 * 2.0 * M_PI_2_VALUE * 3.0 * FT * pow(5.0 * FT, 2) / 2.0;
+    CHECK_REL(am->uplift_capacity, mass * fx.scenario.gravity + skin, 1e-12);
+    assert_false(am->rigid);
+    assert_true(m->anchors[1].capacity == am->capacity);
+    cs_model_free(m);
+}
+
+/* A rope pretensioned well beyond what its anchors hold pulls them in at installation until it holds just
+ * their capacity P. The installer tensions it against anchors already loaded: each deflects to its elastic
+ * limit u_e = 0.999 P / k, L1 = L0 - 2 u_e apart, and a weightless rope laid in with s = L1 / (1 + T0 / EA)
+ * holds P when they are s (1 + P / EA) apart, so each ends (L0 - s (1 + P/EA)) / 2 from where it was, its
+ * plastic part that less the elastic P / k. */
+static void pretension_beyond_the_anchor_pulls_it_in(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    dead_men(&fx, 1.0, 3.0); /* a small footing: P = 2.75 R(1/3) / R_ref x 8000 x 3 / 2.37 lb */
+    fx.barrier.cable_count = 1, fx.barrier.post_count = 0;
+    fx.cables[0].rope.mass_per_length = 0.0;
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    double p = m->anchors[0].capacity, k = m->anchors[0].stiffness, ea = m->cables[0].rope.ea,
+           l0 = 136.0 * FT;
+    fx.cables[0].pretension = 4.0 * p;
+    cs_model_free(m);
+    m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    cs_state *s = cs_state_create(m, &err);
+    assert_non_null(s);
+    double l1 = l0 - 2.0 * 0.999 * p / k, sr = l1 / (1.0 + 4.0 * p / ea),
+           move = 0.5 * (l0 - sr * (1.0 + p / ea));
+    CHECK_REL(s->cables[0].tension[0], p, 1e-3); /* the solve's tolerance: 1e-4 Fu = 125 N of 86 kN */
+    CHECK_REL(s->anchors[0].u[0], move, 1e-3);
+    CHECK_REL(s->anchors[1].u[0], -move, 1e-3);
+    CHECK_REL(s->anchors[0].plastic[0], move - p / k, 2e-3);
+    assert_true(s->anchors[0].yielded);
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
+/* The truck of APS3 pulls its dead-men through the soil: they yield, slide at their capacity P, and pull
+ * out when they have travelled (2/3) D sin(45 deg). The soil's work is P times the plastic slide of each
+ * (radial return at a constant P: P |du_p| a step, its direction nearly constant), and the ledger closes
+ * within 1%. */
+static void truck_pulls_the_dead_men_out(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    dead_men(&fx, 3.0, 5.0);
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    cs_state *s = cs_state_create(m, &err);
+    assert_non_null(s);
+    int yielded = 0, pulled = 0;
+    double slide[2] = {0.0, 0.0};
+    while (s->outcome == CS_RUNNING) {
+        assert_int_equal(cs_step(m, s, &err), CS_OK);
+        for (int a = 0; a < 2; a++)
+            if (!s->anchors[a].failed)
+                slide[a] = sqrt(pow(s->anchors[a].plastic[0], 2) + pow(s->anchors[a].plastic[1], 2));
+    }
+    for (int k = 0; k < cs_state_event_count(s); k++) {
+        const cs_event *e = cs_state_event(s, k);
+        yielded += e->type == CS_EVENT_ANCHOR_YIELD;
+        pulled += e->type == CS_EVENT_ANCHOR_PULLOUT;
+    }
+    cs_summary sm;
+    cs_state_summary(s, &sm);
+    printf(
+        "soil %.1f kJ, P (slide 0 + slide 1) %.1f kJ, slides %.4f %.4f m (limit %.4f), %s, ledger %.3g%%\n",
+        s->e_soil / 1e3, m->anchors[0].capacity * (slide[0] + slide[1]) / 1e3, slide[0], slide[1],
+        m->anchors[0].travel_limit, cs_outcome_name(sm.outcome), 100.0 * sm.energy_balance_error);
+    assert_int_equal(yielded, 2);
+    assert_int_equal(pulled, 2);
+    for (int a = 0; a < 2; a++) /* pulled out within one step's slide past the limit */
+        assert_true(slide[a] + m->anchors[a].capacity / m->anchors[a].stiffness >
+                    0.98 * m->anchors[a].travel_limit);
+    CHECK_REL(s->e_soil, m->anchors[0].capacity * (slide[0] + slide[1]), 0.02);
+    assert_true(fabs(sm.energy_balance_error) < 0.01);
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {cmocka_unit_test(anchor_from_its_footing),
+                                       cmocka_unit_test(pretension_beyond_the_anchor_pulls_it_in),
+                                       cmocka_unit_test(truck_pulls_the_dead_men_out)};
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
