@@ -64,7 +64,7 @@ bench: build
 	BUILD=$(BUILD) bash bench/run.sh
 
 format:
-	clang-format -i include/cablesim/*.h src/*.c src/*.h src/io/*.c src/io/*.h app/*.c tests/*.c tests/*.h examples/*.c fuzz/*.c 2>/dev/null || true
+	clang-format -i include/cablesim/*.h src/*.c src/*.h src/io/*/*.c src/io/*/*.h app/*.c tests/*.c tests/*.h examples/*.c fuzz/*.c 2>/dev/null || true
 
 clean:
 	rm -rf $(BUILD) build-asan $(FUZZ_BUILD)

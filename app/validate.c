@@ -21,8 +21,8 @@
 #include <time.h>
 
 #include "commands.h"
-#include "loader.h"
-#include "sweep.h"
+#include "load/loader.h"
+#include "study/sweep.h"
 
 #define MPH 0.44704
 #define FT 0.3048

@@ -15,7 +15,8 @@
 
 #include "grow.h"
 #include "loader_int.h"
-#include "sweep.h"
+#include "study/sweep.h"
+#include "sweepspec.h"
 
 /* ---- errors ---- */
 
