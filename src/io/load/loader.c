@@ -68,7 +68,7 @@ static void drop_arena_to(cs_loader *l, struct cs_chunk *keep) {
 
 void cs_loader_reset(cs_loader *l) {
     for (int i = 0; i < l->file_count; i++)
-        cs_yposmap_free(&l->files[i].map);
+        cs_ytree_free(&l->files[i].tree);
     free(l->files);
     for (int i = 0; i < l->error_count; i++)
         free(l->errors[i].text);
@@ -140,7 +140,7 @@ void cs_err_node(cs_loader *l, const cs_node *at, int at_key, const char *fmt, .
     va_end(ap);
     int line = 1, col = 1;
     if (at->source >= 0) {
-        const cs_ypos *p = cs_yposmap_find(&l->files[at->source].map, at->path);
+        const cs_ynode *p = at->at;
         if (p) {
             line = at_key ? p->key_line : p->line;
             col = at_key ? p->key_col : p->col;

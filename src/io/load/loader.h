@@ -1,5 +1,5 @@
-/* Model files: read (YAML via libcyaml, units via udunits2), resolve parts and file references, apply
- * --set overrides, check, and fill the engine's definition structs. Every problem is collected as
+/* Model files: read (YAML through yamltree.h, units via udunits2), resolve parts and file references,
+ * apply --set overrides, check, and fill the engine's definition structs. Every problem is collected as
  * "file:line:column: what is wrong (what was expected)". A loader holds all its own state. */
 #ifndef CS_LOADER_H
 #define CS_LOADER_H

@@ -7,7 +7,7 @@
 #include "loader.h"
 #include "schema.h"
 #include "units.h"
-#include "yamlpos.h"
+#include "yamltree.h"
 
 /* A value of a model: a scalar, a mapping of a schema table, or a sequence. */
 typedef struct cs_node {
@@ -16,8 +16,9 @@ typedef struct cs_node {
     const char *text;       /* CS_Y_SCALAR */
     struct cs_node **items; /* CS_Y_MAP: [table->count] (NULL: absent); CS_Y_SEQ: [count] */
     int count;
-    int source;       /* file index, or -1 - k for the k-th --set */
-    const char *path; /* document path in that source */
+    int source;         /* file index, or -1 - k for the k-th --set */
+    const char *path;   /* document path in that source */
+    const cs_ynode *at; /* where it is written in that file (NULL: not in a file) */
 } cs_node;
 
 typedef struct cs_lfile {
@@ -25,9 +26,9 @@ typedef struct cs_lfile {
     char *real;       /* canonical path, to find it again */
     const char *data; /* its contents, when loaded from memory (NULL: read real) */
     size_t size;
-    cs_yposmap map; /* where its nodes are */
-    cs_node *root;  /* NULL if it failed to load */
-    int loading;    /* being loaded (a reference cycle if met again) */
+    cs_ytree tree; /* its YAML, each value with its place */
+    cs_node *root; /* NULL if it failed to load */
+    int loading;   /* being loaded (a reference cycle if met again) */
 } cs_lfile;
 
 typedef struct cs_lerror {

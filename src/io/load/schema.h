@@ -1,5 +1,5 @@
 /* The model-file schema: one table per YAML mapping, each field with its kind, quantity, checks, the
- * definition-struct member it fills and its documentation. The loader, the libcyaml schema, the
+ * definition-struct member it fills and its documentation. The loader's shape check, its nodes, the
  * --set paths, the JSON echo of the inputs and docs/file-format.md all come from these tables. */
 #ifndef CS_SCHEMA_H
 #define CS_SCHEMA_H

@@ -1,8 +1,6 @@
-/* The sweep spec: a YAML file read like the model files. libyaml's events give every node's place
- * (and the keys of `set` and `vary`, which are model paths); libcyaml loads the values through a schema
- * built for this file from those keys; the values are then checked, each error at its line:column. */
+/* The sweep spec: a YAML file read through the loader's YAML tree (yamltree.h), like the model files.
+ * The keys of `set` and `vary` are model paths; every value is checked, each error at its line:column. */
 #define _POSIX_C_SOURCE 200809L
-#include <cyaml/cyaml.h>
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -11,7 +9,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-#include <yaml.h>
 
 #include "grow.h"
 #include "loader_int.h"
@@ -60,197 +57,9 @@ void cs_sweep_error(cs_sweep_spec *s, int line, int col, const char *fmt, ...) {
     va_end(ap);
 }
 
-/* ---- the node tree of the file, from libyaml's events ---- */
+/* ---- the file's tree ---- */
 
-typedef struct ynode {
-    cs_ykind kind;
-    int line, col, key_line, key_col;
-    char *key;  /* in a mapping: the key it is the value of */
-    char *text; /* scalar */
-    struct ynode **kids;
-    int count, capacity;
-} ynode;
-
-static void ynode_free(ynode *n) {
-    if (!n) return;
-    for (int i = 0; i < n->count; i++)
-        ynode_free(n->kids[i]);
-    free(n->kids);
-    free(n->key);
-    free(n->text);
-    free(n);
-}
-
-static const ynode *yget(const ynode *map, const char *key) {
-    if (!map || map->kind != CS_Y_MAP) return NULL;
-    for (int i = 0; i < map->count; i++)
-        if (strcmp(map->kids[i]->key, key) == 0) return map->kids[i];
-    return NULL;
-}
-
-enum { MAX_DEPTH = 32 };
-
-/* Read the file into a tree. NULL with an error recorded on a syntax error or an unreadable file. */
-static ynode *read_tree(cs_sweep_spec *s, const char *path) {
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        cs_sweep_error(s, 0, 0, "%s: cannot open the file: %s (expected a readable sweep spec)", path,
-                       strerror(errno));
-        return NULL;
-    }
-    yaml_parser_t parser;
-    yaml_parser_initialize(&parser);
-    yaml_parser_set_input_file(&parser, f);
-    ynode *stack[MAX_DEPTH], *root = NULL;
-    int depth = 0, done = 0, failed = 0, docs = 0;
-    char *pending_key = NULL;
-    yaml_mark_t key_mark = {0, 0, 0};
-    while (!done && !failed) {
-        yaml_event_t ev;
-        if (!yaml_parser_parse(&parser, &ev)) {
-            cs_sweep_error(s, (int)parser.problem_mark.line + 1, (int)parser.problem_mark.column + 1,
-                           "YAML syntax: %s%s%s", parser.problem ? parser.problem : "error",
-                           parser.context ? " " : "", parser.context ? parser.context : "");
-            failed = 1;
-            break;
-        }
-        int line = (int)ev.start_mark.line + 1, col = (int)ev.start_mark.column + 1;
-        ynode *parent = depth > 0 ? stack[depth - 1] : NULL;
-        cs_ykind kind = CS_Y_SCALAR;
-        int is_node = 0;
-        switch (ev.type) {
-        case YAML_STREAM_END_EVENT:
-            done = 1;
-            break;
-        case YAML_DOCUMENT_START_EVENT:
-            if (++docs > 1) {
-                cs_sweep_error(s, line, col, "only one YAML document per file");
-                failed = 1;
-            }
-            break;
-        case YAML_SCALAR_EVENT:
-            is_node = 1;
-            break;
-        case YAML_ALIAS_EVENT:
-            is_node = 1, kind = CS_Y_ALIAS;
-            break;
-        case YAML_MAPPING_START_EVENT:
-            is_node = 1, kind = CS_Y_MAP;
-            break;
-        case YAML_SEQUENCE_START_EVENT:
-            is_node = 1, kind = CS_Y_SEQ;
-            break;
-        case YAML_MAPPING_END_EVENT:
-        case YAML_SEQUENCE_END_EVENT:
-            depth--;
-            break;
-        default:
-            break;
-        }
-        if (is_node && parent && parent->kind == CS_Y_MAP && !pending_key) {
-            if (ev.type != YAML_SCALAR_EVENT) {
-                cs_sweep_error(s, line, col, "a mapping key must be a plain word");
-                failed = 1;
-            } else if (!(pending_key = strdup((const char *)ev.data.scalar.value))) {
-                failed = 1;
-            }
-            key_mark = ev.start_mark;
-            is_node = 0;
-        }
-        if (is_node) {
-            ynode *n = calloc(1, sizeof *n);
-            if (!n || (kind == CS_Y_SCALAR && !(n->text = strdup((const char *)ev.data.scalar.value)))) {
-                free(n);
-                failed = 1;
-            } else {
-                n->kind = kind;
-                n->line = n->key_line = line;
-                n->col = n->key_col = col;
-                if (parent && parent->kind == CS_Y_MAP) {
-                    n->key = pending_key;
-                    pending_key = NULL;
-                    n->key_line = (int)key_mark.line + 1;
-                    n->key_col = (int)key_mark.column + 1;
-                    const ynode *before = yget(parent, n->key);
-                    if (before)
-                        cs_sweep_error(s, n->key_line, n->key_col, "%s: given twice (first at %d:%d)", n->key,
-                                       before->key_line, before->key_col);
-                }
-                if (!parent) {
-                    root = n;
-                } else if (cs_grow(&parent->kids, &parent->capacity, parent->count, sizeof *parent->kids) !=
-                           0) {
-                    ynode_free(n);
-                    failed = 1;
-                    n = NULL;
-                } else {
-                    parent->kids[parent->count++] = n;
-                }
-                if (n && (kind == CS_Y_MAP || kind == CS_Y_SEQ)) {
-                    if (depth == MAX_DEPTH) {
-                        cs_sweep_error(s, line, col, "nested too deeply");
-                        failed = 1;
-                    } else {
-                        stack[depth++] = n;
-                    }
-                }
-            }
-        }
-        yaml_event_delete(&ev);
-    }
-    free(pending_key);
-    yaml_parser_delete(&parser);
-    fclose(f);
-    if (failed) {
-        ynode_free(root);
-        return NULL;
-    }
-    return root;
-}
-
-int cs_sweep_is_spec(const char *path) {
-    FILE *f = fopen(path, "rb");
-    if (!f) return 0;
-    yaml_parser_t parser;
-    yaml_parser_initialize(&parser);
-    yaml_parser_set_input_file(&parser, f);
-    int depth = 0, want_key = 0, found = 0, done = 0;
-    while (!done && !found) {
-        yaml_event_t ev;
-        if (!yaml_parser_parse(&parser, &ev)) break;
-        switch (ev.type) {
-        case YAML_STREAM_END_EVENT:
-            done = 1;
-            break;
-        case YAML_MAPPING_START_EVENT:
-        case YAML_SEQUENCE_START_EVENT:
-            if (depth == 0) want_key = 1; /* the top mapping: its first node is a key */
-            done = depth == 0 && ev.type == YAML_SEQUENCE_START_EVENT;
-            depth++;
-            break;
-        case YAML_MAPPING_END_EVENT:
-        case YAML_SEQUENCE_END_EVENT:
-            depth--;
-            if (depth == 1) want_key = 1;
-            break;
-        case YAML_SCALAR_EVENT:
-        case YAML_ALIAS_EVENT:
-            if (depth == 1 && want_key)
-                found =
-                    ev.type == YAML_SCALAR_EVENT && strcmp((const char *)ev.data.scalar.value, "vary") == 0;
-            if (depth == 1) want_key = !want_key;
-            break;
-        default:
-            break;
-        }
-        yaml_event_delete(&ev);
-    }
-    yaml_parser_delete(&parser);
-    fclose(f);
-    return found;
-}
-
-/* ---- the libcyaml schema of this file ---- */
+enum { MAX_DEPTH = 32 }; /* how deep a spec's collections may nest: far more than a spec's own */
 
 static const char *const top_keys[] = {"model",         "method", "runs", "seed",
                                        "vehicle_class", "netcdf", "set",  "vary"};
@@ -258,32 +67,19 @@ enum { TOP_MODEL, TOP_METHOD, TOP_RUNS, TOP_SEED, TOP_CLASS, TOP_NETCDF, TOP_SET
 static const char *const param_keys[] = {"dist", "mean", "sd", "min", "max", "from", "to", "step", "count"};
 enum { P_DIST, P_MEAN, P_SD, P_MIN, P_MAX, P_FROM, P_TO, P_STEP, P_COUNT, P_N };
 
-/* libcyaml's data: the top mapping, each vary entry, each entry's parameters. */
-typedef struct yentry {
-    char **params; /* [P_N] strings (a mapping entry) */
-    char **list;   /* a list entry */
-    uint64_t list_count;
-} yentry;
+/* A scalar's text; NULL for a node that is absent or not a scalar. */
+static const char *text(const cs_ynode *n) {
+    return n && n->kind == CS_Y_SCALAR ? n->text : NULL;
+}
 
-typedef struct ytop {
-    char *scalar[TOP_SET];
-    char **set;   /* one string per key of `set` */
-    yentry *vary; /* one per key of `vary` */
-} ytop;
-
-static const cyaml_schema_value_t string_value = {.type = CYAML_STRING,
-                                                  .flags = CYAML_FLAG_POINTER,
-                                                  .data_size = sizeof(char),
-                                                  .string = {0, CYAML_UNLIMITED}};
-
-static int scalar_map(const ynode *n) {
+static int scalar_map(const cs_ynode *n) {
     if (!n || n->kind != CS_Y_MAP) return 0;
     for (int i = 0; i < n->count; i++)
         if (n->kids[i]->kind != CS_Y_SCALAR) return 0;
     return 1;
 }
 
-static int scalar_seq(const ynode *n) {
+static int scalar_seq(const cs_ynode *n) {
     if (!n || n->kind != CS_Y_SEQ) return 0;
     for (int i = 0; i < n->count; i++)
         if (n->kids[i]->kind != CS_Y_SCALAR) return 0;
@@ -296,121 +92,57 @@ static int known_param(const char *key) {
     return -1;
 }
 
-/* Schema memory: every allocation kept in one list, freed together. */
-typedef struct smem {
-    void **blocks;
-    int count, capacity;
-} smem;
-
-static void *salloc(smem *m, size_t size) {
-    if (cs_grow(&m->blocks, &m->capacity, m->count, sizeof *m->blocks) != 0) return NULL;
-    void *p = calloc(1, size ? size : 1);
-    if (p) m->blocks[m->count++] = p;
-    return p;
+int cs_sweep_is_spec(const char *path) {
+    cs_ytree tree;
+    cs_ytree_read(&tree, path, NULL, 0, MAX_DEPTH); /* what was read before an error counts */
+    int found = tree.count > 0 && cs_ynode_get(&tree.items[0], "vary") != NULL;
+    cs_ytree_free(&tree);
+    return found;
 }
 
-static cyaml_schema_field_t ignore_field(const char *key) {
-    return (cyaml_schema_field_t){.key = key, .value = {.type = CYAML_IGNORE, .flags = CYAML_FLAG_OPTIONAL}};
+/* The value given earlier at the key of a mapping's value n, if there is one. */
+static const cs_ynode *repeated(const cs_ynode *map, const cs_ynode *n) {
+    const cs_ynode *first = n->key ? cs_ynode_get(map, n->key) : NULL;
+    return first != n ? first : NULL;
 }
 
-static cyaml_schema_field_t string_field(const char *key, size_t offset) {
-    cyaml_schema_field_t f = {.key = key, .data_offset = (uint32_t)offset, .value = string_value};
-    f.value.flags = CYAML_FLAG_POINTER | CYAML_FLAG_OPTIONAL;
-    return f;
+/* Is the first value at a key of the spec's mapping one the spec reads (its shape right)? */
+static int top_read(const cs_ynode *n) {
+    if (!n) return 0;
+    int k = 0;
+    while (k < TOP_COUNT && strcmp(n->key, top_keys[k]) != 0)
+        k++;
+    if (k < TOP_SET) return n->kind == CS_Y_SCALAR;
+    if (k == TOP_SET) return scalar_map(n) && n->count > 0;
+    return k == TOP_VARY && n->kind == CS_Y_MAP && n->count > 0;
 }
 
-/* The schema of the top mapping; tree shapes that do not fit are ignored (reported by check_shapes). */
-static int build_schema(smem *m, const ynode *root, cyaml_schema_value_t *top) {
-    cyaml_schema_field_t *fields = salloc(m, (TOP_COUNT + 1) * sizeof *fields);
-    if (!fields) return -1;
-    for (int k = 0; k < TOP_SET; k++) {
-        const ynode *n = yget(root, top_keys[k]);
-        fields[k] = n && n->kind == CS_Y_SCALAR
-                        ? string_field(top_keys[k], offsetof(ytop, scalar) + k * sizeof(char *))
-                        : ignore_field(top_keys[k]);
-    }
-    const ynode *set = yget(root, "set");
-    if (scalar_map(set) && set->count > 0) {
-        cyaml_schema_field_t *sf = salloc(m, (size_t)(set->count + 1) * sizeof *sf);
-        if (!sf) return -1;
-        for (int i = 0; i < set->count; i++)
-            sf[i] = string_field(set->kids[i]->key, (size_t)i * sizeof(char *));
-        fields[TOP_SET] =
-            (cyaml_schema_field_t){.key = "set",
-                                   .data_offset = offsetof(ytop, set),
-                                   .value = {.type = CYAML_MAPPING,
-                                             .flags = CYAML_FLAG_POINTER | CYAML_FLAG_OPTIONAL,
-                                             .data_size = (uint32_t)((size_t)set->count * sizeof(char *)),
-                                             .mapping = {sf}}};
-    } else {
-        fields[TOP_SET] = ignore_field("set");
-    }
-    const ynode *vary = yget(root, "vary");
-    if (vary && vary->kind == CS_Y_MAP && vary->count > 0) {
-        cyaml_schema_field_t *vf = salloc(m, (size_t)(vary->count + 1) * sizeof *vf);
-        if (!vf) return -1;
-        for (int i = 0; i < vary->count; i++) {
-            const ynode *e = vary->kids[i];
-            size_t base = (size_t)i * sizeof(yentry);
-            if (scalar_seq(e)) {
-                cyaml_schema_value_t *item = salloc(m, sizeof *item);
-                if (!item) return -1;
-                *item = string_value;
-                vf[i] =
-                    (cyaml_schema_field_t){.key = e->key,
-                                           .data_offset = (uint32_t)(base + offsetof(yentry, list)),
-                                           .count_offset = (uint32_t)(base + offsetof(yentry, list_count)),
-                                           .count_size = sizeof(uint64_t),
-                                           .value = {.type = CYAML_SEQUENCE,
-                                                     .flags = CYAML_FLAG_POINTER | CYAML_FLAG_OPTIONAL,
-                                                     .data_size = sizeof(char *),
-                                                     .sequence = {item, 0, CYAML_UNLIMITED}}};
-            } else if (e->kind == CS_Y_MAP) {
-                cyaml_schema_field_t *pf = salloc(m, (P_N + 1) * sizeof *pf);
-                if (!pf) return -1;
-                for (int p = 0; p < P_N; p++) {
-                    const ynode *pv = yget(e, param_keys[p]);
-                    pf[p] = pv && pv->kind == CS_Y_SCALAR
-                                ? string_field(param_keys[p], (size_t)p * sizeof(char *))
-                                : ignore_field(param_keys[p]);
-                }
-                vf[i] = (cyaml_schema_field_t){.key = e->key,
-                                               .data_offset = (uint32_t)(base + offsetof(yentry, params)),
-                                               .value = {.type = CYAML_MAPPING,
-                                                         .flags = CYAML_FLAG_POINTER | CYAML_FLAG_OPTIONAL,
-                                                         .data_size = P_N * sizeof(char *),
-                                                         .mapping = {pf}}};
-            } else {
-                vf[i] = ignore_field(e->key);
-            }
+/* A key given twice where its value is read (one of the spec's own values, an entry of `set` or `vary`, a
+ * parameter of a `vary` entry) leaves unclear which value is meant: the spec is then read no further than
+ * its shapes. Keys repeated where nothing is read (an unknown key, a value whose shape was refused) only
+ * have their messages. */
+static int given_twice(const cs_ynode *root) {
+    for (int i = 0; i < root->count; i++)
+        if (top_read(repeated(root, root->kids[i]))) return 1;
+    const cs_ynode *set = cs_ynode_get(root, "set"), *vary = cs_ynode_get(root, "vary");
+    for (int i = 0; top_read(set) && i < set->count; i++)
+        if (repeated(set, set->kids[i])) return 1;
+    for (int i = 0; top_read(vary) && i < vary->count; i++) {
+        const cs_ynode *e = vary->kids[i], *first = repeated(vary, e);
+        if (first && (scalar_seq(first) || first->kind == CS_Y_MAP)) return 1;
+        for (int q = 0; !first && e->kind == CS_Y_MAP && q < e->count; q++) {
+            const cs_ynode *p = repeated(e, e->kids[q]);
+            if (p && known_param(p->key) >= 0 && p->kind == CS_Y_SCALAR) return 1;
         }
-        fields[TOP_VARY] =
-            (cyaml_schema_field_t){.key = "vary",
-                                   .data_offset = offsetof(ytop, vary),
-                                   .value = {.type = CYAML_MAPPING,
-                                             .flags = CYAML_FLAG_POINTER | CYAML_FLAG_OPTIONAL,
-                                             .data_size = (uint32_t)((size_t)vary->count * sizeof(yentry)),
-                                             .mapping = {vf}}};
-    } else {
-        fields[TOP_VARY] = ignore_field("vary");
     }
-    *top = (cyaml_schema_value_t){
-        .type = CYAML_MAPPING, .flags = CYAML_FLAG_POINTER, .data_size = sizeof(ytop), .mapping = {fields}};
     return 0;
 }
 
 /* ---- shapes ---- */
 
-static const char *shape_name(cs_ykind k) {
-    return k == CS_Y_SCALAR ? "a single value"
-           : k == CS_Y_MAP  ? "a mapping"
-           : k == CS_Y_SEQ  ? "a list"
-                            : "an alias";
-}
-
-static void check_shapes(cs_sweep_spec *s, const ynode *root) {
+static void check_shapes(cs_sweep_spec *s, const cs_ynode *root) {
     for (int i = 0; i < root->count; i++) {
-        const ynode *n = root->kids[i];
+        const cs_ynode *n = root->kids[i];
         int k = 0;
         while (k < TOP_COUNT && strcmp(n->key, top_keys[k]) != 0)
             k++;
@@ -421,29 +153,29 @@ static void check_shapes(cs_sweep_spec *s, const ynode *root) {
                            n->key);
         } else if (k < TOP_SET && n->kind != CS_Y_SCALAR) {
             cs_sweep_error(s, n->line, n->col, "%s is %s (expected a single value)", n->key,
-                           shape_name(n->kind));
+                           cs_ykind_name(n->kind));
         } else if (k >= TOP_SET && n->kind != CS_Y_MAP) {
             cs_sweep_error(s, n->line, n->col, "%s is %s (expected a mapping of model paths, e.g. %s)",
-                           n->key, shape_name(n->kind),
+                           n->key, cs_ykind_name(n->kind),
                            k == TOP_SET ? "scenario.t_end: 0.5 s" : "scenario.speed: [35 mph, 40 mph]");
         } else if (k == TOP_SET) {
             for (int j = 0; j < n->count; j++)
                 if (n->kids[j]->kind != CS_Y_SCALAR)
                     cs_sweep_error(s, n->kids[j]->line, n->kids[j]->col,
                                    "set: %s is %s (expected a single value, as --set)", n->kids[j]->key,
-                                   shape_name(n->kids[j]->kind));
+                                   cs_ykind_name(n->kids[j]->kind));
         } else if (k == TOP_VARY) {
             for (int j = 0; j < n->count; j++) {
-                const ynode *e = n->kids[j];
+                const cs_ynode *e = n->kids[j];
                 if (e->kind == CS_Y_SEQ) {
                     for (int q = 0; q < e->count; q++)
                         if (e->kids[q]->kind != CS_Y_SCALAR)
                             cs_sweep_error(s, e->kids[q]->line, e->kids[q]->col,
                                            "vary: %s: a level is %s (expected a single value)", e->key,
-                                           shape_name(e->kids[q]->kind));
+                                           cs_ykind_name(e->kids[q]->kind));
                 } else if (e->kind == CS_Y_MAP) {
                     for (int q = 0; q < e->count; q++) {
-                        const ynode *p = e->kids[q];
+                        const cs_ynode *p = e->kids[q];
                         if (known_param(p->key) < 0)
                             cs_sweep_error(
                                 s, p->key_line, p->key_col,
@@ -452,13 +184,13 @@ static void check_shapes(cs_sweep_spec *s, const ynode *root) {
                                 e->key, p->key);
                         else if (p->kind != CS_Y_SCALAR)
                             cs_sweep_error(s, p->line, p->col, "vary: %s: %s is %s (expected a single value)",
-                                           e->key, p->key, shape_name(p->kind));
+                                           e->key, p->key, cs_ykind_name(p->kind));
                     }
                 } else {
                     cs_sweep_error(
                         s, e->line, e->col,
                         "vary: %s is %s (expected a list of values, {from, to, step} or {dist: ...})", e->key,
-                        shape_name(e->kind));
+                        cs_ykind_name(e->kind));
                 }
             }
         }
@@ -544,16 +276,12 @@ static int read_value(cs_sweep_spec *s, cs_units *u, const cs_sweep_var *v, cons
 
 static int add_level(cs_sweep_var *v, double x, const char *text, int line, int col) {
     int n = v->level_count;
-    double *lv = realloc(v->levels, (size_t)(n + 1) * sizeof *lv);
-    if (lv) v->levels = lv;
-    char **tx = realloc(v->texts, (size_t)(n + 1) * sizeof *tx);
-    if (tx) v->texts = tx;
-    int *ll = realloc(v->level_line, (size_t)(n + 1) * sizeof *ll);
-    if (ll) v->level_line = ll;
-    int *lc = realloc(v->level_col, (size_t)(n + 1) * sizeof *lc);
-    if (lc) v->level_col = lc;
-    if (!lv || !tx || !ll || !lc || !(tx[n] = strdup(text))) return -1;
-    lv[n] = x, ll[n] = line, lc[n] = col;
+    if (cs_grow_one(&v->levels, n, sizeof *v->levels) != 0 ||
+        cs_grow_one(&v->texts, n, sizeof *v->texts) != 0 ||
+        cs_grow_one(&v->level_line, n, sizeof *v->level_line) != 0 ||
+        cs_grow_one(&v->level_col, n, sizeof *v->level_col) != 0 || !(v->texts[n] = strdup(text)))
+        return -1;
+    v->levels[n] = x, v->level_line[n] = line, v->level_col[n] = col;
     v->level_count++;
     return 0;
 }
@@ -561,26 +289,26 @@ static int add_level(cs_sweep_var *v, double x, const char *text, int line, int 
 enum { MAX_LEVELS = 100000 };
 
 /* A grid entry: a list of values, or {from, to, step | count}. */
-static void read_grid(cs_sweep_spec *s, cs_units *u, cs_sweep_var *v, const ynode *e, const yentry *d) {
+static void read_grid(cs_sweep_spec *s, cs_units *u, cs_sweep_var *v, const cs_ynode *e) {
     if (e->kind == CS_Y_SEQ) {
         size_t used = (size_t)snprintf(v->desc, sizeof v->desc, "levels:");
-        for (uint64_t k = 0; k < d->list_count && used < sizeof v->desc; k++)
-            used +=
-                (size_t)snprintf(v->desc + used, sizeof v->desc - used, "%s %s", k ? "," : "", d->list[k]);
-        if (d->list_count == 0)
+        for (int k = 0; k < e->count && used < sizeof v->desc; k++)
+            used += (size_t)snprintf(v->desc + used, sizeof v->desc - used, "%s %s", k ? "," : "",
+                                     e->kids[k]->text);
+        if (e->count == 0)
             cs_sweep_error(s, e->line, e->col, "vary: %s: no values (expected a list of values)", v->path);
-        for (uint64_t k = 0; k < d->list_count && (int)k < e->count; k++) {
-            const ynode *it = e->kids[k];
+        for (int k = 0; k < e->count; k++) {
+            const cs_ynode *it = e->kids[k];
             double x = 0;
-            if (v->numeric && read_value(s, u, v, d->list[k], it->line, it->col, "value", &x) != 0) continue;
-            if (add_level(v, x, d->list[k], it->line, it->col) != 0) return;
+            if (v->numeric && read_value(s, u, v, it->text, it->line, it->col, "value", &x) != 0) continue;
+            if (add_level(v, x, it->text, it->line, it->col) != 0) return;
         }
         return;
     }
-    const ynode *from = yget(e, "from"), *to = yget(e, "to"), *step = yget(e, "step"),
-                *count = yget(e, "count");
+    const cs_ynode *from = cs_ynode_get(e, "from"), *to = cs_ynode_get(e, "to"),
+                   *step = cs_ynode_get(e, "step"), *count = cs_ynode_get(e, "count");
     for (int p = P_DIST; p <= P_MAX; p++) {
-        const ynode *bad = yget(e, param_keys[p]);
+        const cs_ynode *bad = cs_ynode_get(e, param_keys[p]);
         if (bad)
             cs_sweep_error(s, bad->key_line, bad->key_col, "vary: %s: '%s' does not go with from/to", v->path,
                            bad->key);
@@ -596,10 +324,10 @@ static void read_grid(cs_sweep_spec *s, cs_units *u, cs_sweep_var *v, const ynod
     }
     double a, b, h = 0;
     long n = 0;
-    int ok = read_value(s, u, v, d->params[P_FROM], from->line, from->col, "from", &a) == 0;
-    ok &= read_value(s, u, v, d->params[P_TO], to->line, to->col, "to", &b) == 0;
+    int ok = read_value(s, u, v, text(from), from->line, from->col, "from", &a) == 0;
+    ok &= read_value(s, u, v, text(to), to->line, to->col, "to", &b) == 0;
     if (step) {
-        ok &= read_value(s, u, v, d->params[P_STEP], step->line, step->col, "step", &h) == 0;
+        ok &= read_value(s, u, v, text(step), step->line, step->col, "step", &h) == 0;
         if (ok && !(h > 0)) {
             cs_sweep_error(s, step->line, step->col, "vary: %s: step must be above zero", v->path);
             ok = 0;
@@ -619,15 +347,15 @@ static void read_grid(cs_sweep_spec *s, cs_units *u, cs_sweep_var *v, const ynod
         }
     } else {
         char *end;
-        n = strtol(d->params[P_COUNT], &end, 10);
+        n = strtol(text(count), &end, 10);
         if (*end || n < 1 || n > MAX_LEVELS) {
             cs_sweep_error(s, count->line, count->col, "vary: %s: count must be a whole number from 1 to %d",
                            v->path, MAX_LEVELS);
             ok = 0;
         }
     }
-    snprintf(v->desc, sizeof v->desc, "from %s to %s, %s %s", d->params[P_FROM], d->params[P_TO],
-             step ? "step" : "count", d->params[step ? P_STEP : P_COUNT]);
+    snprintf(v->desc, sizeof v->desc, "from %s to %s, %s %s", text(from), text(to), step ? "step" : "count",
+             text(step ? step : count));
     for (long k = 0; ok && k < n; k++) {
         double x = step ? a + (double)k * h : n == 1 ? a : a + (b - a) * (double)k / (double)(n - 1);
         if (v->integer) x = round(x);
@@ -638,10 +366,10 @@ static void read_grid(cs_sweep_spec *s, cs_units *u, cs_sweep_var *v, const ynod
 }
 
 /* A distribution entry {dist, mean, sd, min, max}. */
-static void read_dist(cs_sweep_spec *s, cs_units *u, cs_sweep_var *v, const ynode *e, const yentry *d) {
-    const ynode *dn = yget(e, "dist");
+static void read_dist(cs_sweep_spec *s, cs_units *u, cs_sweep_var *v, const cs_ynode *e) {
+    const cs_ynode *dn = cs_ynode_get(e, "dist");
     for (int p = P_FROM; p < P_N; p++) {
-        const ynode *bad = yget(e, param_keys[p]);
+        const cs_ynode *bad = cs_ynode_get(e, param_keys[p]);
         if (bad)
             cs_sweep_error(s, bad->key_line, bad->key_col, "vary: %s: '%s' does not go with dist", v->path,
                            bad->key);
@@ -651,7 +379,7 @@ static void read_dist(cs_sweep_spec *s, cs_units *u, cs_sweep_var *v, const ynod
                        v->integer ? "a whole number" : "text");
         return;
     }
-    const char *name = d->params[P_DIST];
+    const char *name = text(dn);
     int truncated = strcmp(name, "truncated_normal") == 0;
     cs_dist *t = &v->dist;
     if (strcmp(name, "uniform") == 0)
@@ -671,13 +399,13 @@ static void read_dist(cs_sweep_spec *s, cs_units *u, cs_sweep_var *v, const ynod
     int given[P_N] = {0}, ok = 1;
     size_t used = (size_t)snprintf(v->desc, sizeof v->desc, "%s", name);
     for (int p = P_MEAN; p <= P_MAX; p++) {
-        const ynode *pn = yget(e, param_keys[p]);
+        const cs_ynode *pn = cs_ynode_get(e, param_keys[p]);
         if (!pn) continue;
         if (used < sizeof v->desc)
             used += (size_t)snprintf(v->desc + used, sizeof v->desc - used, "%s %s %s",
-                                     used > strlen(name) ? "," : ":", param_keys[p], d->params[p]);
+                                     used > strlen(name) ? "," : ":", param_keys[p], pn->text);
         given[p] = 1;
-        if (read_value(s, u, v, d->params[p], pn->line, pn->col, param_keys[p], &val[p]) != 0) ok = 0;
+        if (read_value(s, u, v, pn->text, pn->line, pn->col, param_keys[p], &val[p]) != 0) ok = 0;
     }
     static const char *const needs[] = {"min and max", "mean and sd", "mean and sd"};
     int need_ab = t->kind == CS_DIST_UNIFORM ? given[P_MIN] && given[P_MAX] : given[P_MEAN] && given[P_SD];
@@ -686,7 +414,7 @@ static void read_dist(cs_sweep_spec *s, cs_units *u, cs_sweep_var *v, const ynod
         return;
     }
     if (t->kind == CS_DIST_UNIFORM && (given[P_MEAN] || given[P_SD])) {
-        const ynode *bad = yget(e, given[P_MEAN] ? "mean" : "sd");
+        const cs_ynode *bad = cs_ynode_get(e, given[P_MEAN] ? "mean" : "sd");
         cs_sweep_error(s, bad->key_line, bad->key_col, "vary: %s: dist uniform takes min and max only",
                        v->path);
         return;
@@ -699,18 +427,18 @@ static void read_dist(cs_sweep_spec *s, cs_units *u, cs_sweep_var *v, const ynod
     if (!ok) return;
     t->lo = given[P_MIN] ? val[P_MIN] : -HUGE_VAL;
     t->hi = given[P_MAX] ? val[P_MAX] : HUGE_VAL;
-    const ynode *at = yget(e, given[P_MAX] ? "max" : "dist");
+    const cs_ynode *at = cs_ynode_get(e, given[P_MAX] ? "max" : "dist");
     if (t->kind == CS_DIST_UNIFORM) {
         t->a = val[P_MIN], t->b = val[P_MAX];
     } else if (!(val[P_SD] > 0)) {
-        at = yget(e, "sd");
+        at = cs_ynode_get(e, "sd");
         cs_sweep_error(s, at->line, at->col, "vary: %s: sd must be above zero", v->path);
         return;
     } else if (t->kind == CS_DIST_NORMAL) {
         t->a = val[P_MEAN], t->b = val[P_SD];
     } else {
         if (!(val[P_MEAN] > 0)) {
-            at = yget(e, "mean");
+            at = cs_ynode_get(e, "mean");
             cs_sweep_error(s, at->line, at->col, "vary: %s: a lognormal mean must be above zero", v->path);
             return;
         }
@@ -731,12 +459,12 @@ static void read_dist(cs_sweep_spec *s, cs_units *u, cs_sweep_var *v, const ynod
 
 static const char *const class_names[] = {"C", "PU", "M", "H"};
 
-static void read_scalars(cs_sweep_spec *s, const ynode *root, const ytop *d) {
-    const ynode *n;
-    if (!(n = yget(root, "model")))
+static void read_scalars(cs_sweep_spec *s, const cs_ynode *root) {
+    const cs_ynode *n;
+    if (!(n = cs_ynode_get(root, "model")))
         cs_sweep_error(s, root->line, root->col, "no model (expected model: FILE, the base model file)");
-    else if (d->scalar[TOP_MODEL]) {
-        const char *m = d->scalar[TOP_MODEL];
+    else if (text(n)) {
+        const char *m = text(n);
         const char *slash = strrchr(s->file, '/');
         size_t dir = m[0] == '/' || !slash ? 0 : (size_t)(slash - s->file) + 1;
         size_t len = dir + strlen(m) + 1;
@@ -749,55 +477,54 @@ static void read_scalars(cs_sweep_spec *s, const ynode *root, const ytop *d) {
                            m);
     }
     static const char *const methods[] = {"grid", "monte_carlo", "latin_hypercube"};
-    if (!(n = yget(root, "method"))) {
+    if (!(n = cs_ynode_get(root, "method"))) {
         cs_sweep_error(s, root->line, root->col,
                        "no method (expected method: grid, monte_carlo or latin_hypercube)");
-    } else if (d->scalar[TOP_METHOD]) {
+    } else if (text(n)) {
         int k = 0;
-        while (k < 3 && strcmp(d->scalar[TOP_METHOD], methods[k]) != 0)
+        while (k < 3 && strcmp(text(n), methods[k]) != 0)
             k++;
         if (k == 3)
             cs_sweep_error(s, n->line, n->col,
-                           "method: unknown '%s' (expected grid, monte_carlo or latin_hypercube)",
-                           d->scalar[TOP_METHOD]);
+                           "method: unknown '%s' (expected grid, monte_carlo or latin_hypercube)", text(n));
         s->method = k == 3 ? CS_SWEEP_GRID : (cs_sweep_method)k;
     }
-    n = yget(root, "runs");
-    if (n && d->scalar[TOP_RUNS]) {
+    n = cs_ynode_get(root, "runs");
+    if (text(n)) {
         char *end;
         errno = 0;
-        long r = strtol(d->scalar[TOP_RUNS], &end, 10);
+        long r = strtol(text(n), &end, 10);
         if (*end || errno || r < 1 || r > CS_SWEEP_MAX_RUNS)
-            cs_sweep_error(s, n->line, n->col, "runs: '%s' (expected a whole number from 1 to %d)",
-                           d->scalar[TOP_RUNS], CS_SWEEP_MAX_RUNS);
+            cs_sweep_error(s, n->line, n->col, "runs: '%s' (expected a whole number from 1 to %d)", text(n),
+                           CS_SWEEP_MAX_RUNS);
         s->runs = r;
     }
-    n = yget(root, "seed");
+    n = cs_ynode_get(root, "seed");
     s->seed = 1;
-    if (n && d->scalar[TOP_SEED]) {
+    if (text(n)) {
         char *end;
         errno = 0;
-        const char *t = d->scalar[TOP_SEED];
+        const char *t = text(n);
         unsigned long long v = strtoull(t, &end, 10);
         if (*end || errno || end == t || t[0] == '-')
             cs_sweep_error(s, n->line, n->col, "seed: '%s' (expected a whole number from 0 to 2^64 - 1)", t);
         s->seed = (uint64_t)v;
     }
-    n = yget(root, "vehicle_class");
-    if (n && d->scalar[TOP_CLASS]) {
+    n = cs_ynode_get(root, "vehicle_class");
+    if (text(n)) {
         int k = 0;
-        while (k < 4 && strcmp(d->scalar[TOP_CLASS], class_names[k]) != 0)
+        while (k < 4 && strcmp(text(n), class_names[k]) != 0)
             k++;
         if (k == 4)
             cs_sweep_error(s, n->line, n->col,
                            "vehicle_class: unknown '%s' (expected an ASTM F2656 class: C, PU, M or H)",
-                           d->scalar[TOP_CLASS]);
+                           text(n));
         else
             snprintf(s->vehicle_class, sizeof s->vehicle_class, "%s", class_names[k]);
     }
-    n = yget(root, "netcdf");
-    if (n && d->scalar[TOP_NETCDF]) {
-        const char *t = d->scalar[TOP_NETCDF];
+    n = cs_ynode_get(root, "netcdf");
+    if (text(n)) {
+        const char *t = text(n);
         s->netcdf = strcmp(t, "true") == 0;
         if (!s->netcdf && strcmp(t, "false") != 0)
             cs_sweep_error(s, n->line, n->col, "netcdf: '%s' (expected true or false)", t);
@@ -806,16 +533,13 @@ static void read_scalars(cs_sweep_spec *s, const ynode *root, const ytop *d) {
 
 static int push_set(cs_sweep_spec *s, const char *path, const char *value, int line, int col) {
     int n = s->set_count;
-    char **sets = realloc(s->sets, (size_t)(n + 1) * sizeof *sets);
-    if (sets) s->sets = sets;
-    int *sl = realloc(s->set_line, (size_t)(n + 1) * sizeof *sl);
-    if (sl) s->set_line = sl;
-    int *sc = realloc(s->set_col, (size_t)(n + 1) * sizeof *sc);
-    if (sc) s->set_col = sc;
     size_t len = strlen(path) + strlen(value) + 2;
-    if (!sets || !sl || !sc || !(sets[n] = malloc(len))) return -1;
-    snprintf(sets[n], len, "%s=%s", path, value);
-    sl[n] = line, sc[n] = col;
+    if (cs_grow_one(&s->sets, n, sizeof *s->sets) != 0 ||
+        cs_grow_one(&s->set_line, n, sizeof *s->set_line) != 0 ||
+        cs_grow_one(&s->set_col, n, sizeof *s->set_col) != 0 || !(s->sets[n] = malloc(len)))
+        return -1;
+    snprintf(s->sets[n], len, "%s=%s", path, value);
+    s->set_line[n] = line, s->set_col[n] = col;
     s->set_count++;
     return 0;
 }
@@ -831,8 +555,8 @@ int cs_sweep_spec_add_set(cs_sweep_spec *s, const char *assignment) {
     return push_set(s, path, eq + 1, 0, 0);
 }
 
-static void read_vary(cs_sweep_spec *s, cs_units *u, const ynode *root, const ytop *d) {
-    const ynode *vary = yget(root, "vary");
+static void read_vary(cs_sweep_spec *s, cs_units *u, const cs_ynode *root) {
+    const cs_ynode *vary = cs_ynode_get(root, "vary");
     if (!vary) {
         cs_sweep_error(s, root->line, root->col,
                        "no vary (expected vary: a mapping of model paths to values)");
@@ -846,8 +570,7 @@ static void read_vary(cs_sweep_spec *s, cs_units *u, const ynode *root, const yt
     }
     if (!(s->vars = calloc((size_t)vary->count, sizeof *s->vars))) return;
     for (int i = 0; i < vary->count; i++) {
-        const ynode *e = vary->kids[i];
-        const yentry *de = d->vary ? &d->vary[i] : NULL;
+        const cs_ynode *e = vary->kids[i];
         cs_sweep_var *v = &s->vars[s->var_count++];
         v->line = e->key_line, v->col = e->key_col;
         if (!(v->path = strdup(e->key))) return;
@@ -856,8 +579,8 @@ static void read_vary(cs_sweep_spec *s, cs_units *u, const ynode *root, const yt
             cs_sweep_error(s, e->key_line, e->key_col, "vary: %s: %s", v->path, why);
             continue;
         }
-        if (!de || (!de->list && !de->params) || (e->kind == CS_Y_MAP && !scalar_map(e))) continue;
-        const ynode *dn = yget(e, "dist");
+        if (!scalar_seq(e) && !scalar_map(e)) continue; /* its shape was reported */
+        const cs_ynode *dn = cs_ynode_get(e, "dist");
         if (dn && s->method == CS_SWEEP_GRID) {
             cs_sweep_error(s, dn->key_line, dn->key_col,
                            "vary: %s: a distribution needs method monte_carlo or "
@@ -869,15 +592,15 @@ static void read_vary(cs_sweep_spec *s, cs_units *u, const ynode *root, const yt
                            e->kind == CS_Y_SEQ ? "a list of values" : "a range",
                            s->method == CS_SWEEP_MONTE_CARLO ? "monte_carlo" : "latin_hypercube");
         } else if (dn) {
-            read_dist(s, u, v, e, de);
+            read_dist(s, u, v, e);
         } else {
-            read_grid(s, u, v, e, de);
+            read_grid(s, u, v, e);
         }
     }
 }
 
-static void check_runs(cs_sweep_spec *s, const ynode *root) {
-    const ynode *runs = yget(root, "runs");
+static void check_runs(cs_sweep_spec *s, const cs_ynode *root) {
+    const cs_ynode *runs = cs_ynode_get(root, "runs");
     if (s->method == CS_SWEEP_GRID) {
         if (runs)
             cs_sweep_error(s, runs->key_line, runs->key_col,
@@ -886,7 +609,7 @@ static void check_runs(cs_sweep_spec *s, const ynode *root) {
         for (int i = 0; i < s->var_count; i++)
             n *= s->vars[i].level_count > 0 ? s->vars[i].level_count : 1;
         if (n > CS_SWEEP_MAX_RUNS) {
-            const ynode *vary = yget(root, "vary");
+            const cs_ynode *vary = cs_ynode_get(root, "vary");
             cs_sweep_error(s, vary->line, vary->col, "vary: the grid has %.0f runs (expected at most %d)", n,
                            CS_SWEEP_MAX_RUNS);
         }
@@ -897,12 +620,6 @@ static void check_runs(cs_sweep_spec *s, const ynode *root) {
     }
 }
 
-static void cyaml_log_capture(cyaml_log_t level, void *ctx, const char *fmt, va_list args) {
-    char *buf = ctx;
-    size_t n = strlen(buf);
-    if (level >= CYAML_LOG_ERROR && n < 255) vsnprintf(buf + n, 256 - n, fmt, args);
-}
-
 cs_sweep_spec *cs_sweep_spec_read(const char *path, cs_units *units) {
     cs_sweep_spec *s = calloc(1, sizeof *s);
     if (!s || !(s->file = strdup(path))) {
@@ -910,56 +627,40 @@ cs_sweep_spec *cs_sweep_spec_read(const char *path, cs_units *units) {
         return NULL;
     }
     s->seed = 1;
-    ynode *root = read_tree(s, path);
-    if (!root) {
-        if (s->error_count == 0)
-            cs_sweep_error(s, 1, 1, "the file is empty (expected a mapping: model, method, vary...)");
-        return s;
+    cs_ytree tree;
+    int rc = cs_ytree_read(&tree, path, NULL, 0, MAX_DEPTH);
+    for (int i = 1; i < tree.count; i++) {
+        const cs_ynode *n = &tree.items[i], *first = repeated(&tree.items[n->parent], n);
+        if (first)
+            cs_sweep_error(s, n->key_line, n->key_col, "%s: given twice (first at %d:%d)", n->key,
+                           first->key_line, first->key_col);
     }
-    if (root->kind != CS_Y_MAP) {
+    const cs_ynode *root = tree.count > 0 ? &tree.items[0] : NULL;
+    if (rc != 0 && tree.open_errno)
+        cs_sweep_error(s, 0, 0, "%s: cannot open the file: %s (expected a readable sweep spec)", path,
+                       strerror(tree.open_errno));
+    else if (rc != 0)
+        cs_sweep_error(s, tree.error_line, tree.error_col, "%s", tree.error);
+    else if (!root)
+        cs_sweep_error(s, 1, 1, "the file is empty (expected a mapping: model, method, vary...)");
+    else if (root->kind != CS_Y_MAP)
         cs_sweep_error(s, root->line, root->col,
                        "the document is %s (expected a mapping: model, method, vary...)",
-                       shape_name(root->kind));
-        ynode_free(root);
-        return s;
-    }
-    check_shapes(s, root);
-    smem mem = {0};
-    cyaml_schema_value_t top;
-    ytop *data = NULL;
-    char log[256] = "";
-    cyaml_config_t config = {.log_fn = cyaml_log_capture,
-                             .log_ctx = log,
-                             .mem_fn = cyaml_mem,
-                             .log_level = CYAML_LOG_ERROR,
-                             .flags = CYAML_CFG_IGNORE_UNKNOWN_KEYS};
-    if (build_schema(&mem, root, &top) != 0) {
-        cs_sweep_error(s, 0, 0, "%s: out of memory", path);
-    } else {
-        cyaml_err_t rc = cyaml_load_file(path, &config, &top, (cyaml_data_t **)&data, NULL);
-        if (rc != CYAML_OK && s->error_count > 0) { /* the shapes already reported say why */
-            data = NULL;
-        } else if (rc != CYAML_OK) {
-            log[strcspn(log, "\n")] = '\0';
-            cs_sweep_error(s, 1, 1, "cannot load the file: %s (%s)", cyaml_strerror(rc), log);
-            data = NULL;
+                       cs_ykind_name(root->kind));
+    if (rc == 0 && root && root->kind == CS_Y_MAP) {
+        check_shapes(s, root);
+        if (!given_twice(root)) {
+            read_scalars(s, root);
+            const cs_ynode *set = cs_ynode_get(root, "set");
+            for (int i = 0; top_read(set) && i < set->count; i++)
+                if (push_set(s, set->kids[i]->key, set->kids[i]->text, set->kids[i]->key_line,
+                             set->kids[i]->key_col) != 0)
+                    break;
+            read_vary(s, units, root);
+            check_runs(s, root);
         }
     }
-    if (data) {
-        read_scalars(s, root, data);
-        const ynode *set = yget(root, "set");
-        for (int i = 0; data->set && i < set->count; i++)
-            if (data->set[i] && push_set(s, set->kids[i]->key, data->set[i], set->kids[i]->key_line,
-                                         set->kids[i]->key_col) != 0)
-                break;
-        read_vary(s, units, root, data);
-        check_runs(s, root);
-        cyaml_free(&config, &top, data, 0);
-    }
-    for (int i = 0; i < mem.count; i++)
-        free(mem.blocks[i]);
-    free(mem.blocks);
-    ynode_free(root);
+    cs_ytree_free(&tree);
     return s;
 }
 

@@ -1,6 +1,6 @@
-/* The sweep spec: a YAML file read like the model files (libyaml events for places, libcyaml for
- * values): the base model, the method (full-factorial grid, Monte Carlo, Latin hypercube), the values
- * set for every run and the values varied, each with its place in the file for messages. */
+/* The sweep spec: a YAML file read through the same tree as the model files (yamltree.h): the base model,
+ * the method (full-factorial grid, Monte Carlo, Latin hypercube), the values set for every run and the
+ * values varied, each with its place in the file for messages. */
 #ifndef CS_SWEEPSPEC_H
 #define CS_SWEEPSPEC_H
 

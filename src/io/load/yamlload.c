@@ -1,9 +1,8 @@
-/* One file into a node tree: libyaml events give the places, the schema tables check the shape, and
- * libcyaml loads the values through a schema built from the same tables for this file. */
+/* One model file into the loader's nodes: the YAML tree (yamltree.h) gives every value with its place,
+ * the schema tables check each one's key and shape where it is written, and the values that fit become
+ * the nodes the rest of the loader resolves, overrides and converts. */
 #define _XOPEN_SOURCE 700
-#include <cyaml/cyaml.h>
 #include <limits.h>
-#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -11,13 +10,7 @@
 #include "grow.h"
 #include "loader_int.h"
 
-/* libcyaml stores each mapping as slots: [2i] the value (string, mapping or array), [2i+1] the
- * sequence count, or the name when a part field is given as a name. */
-typedef union slot {
-    void *p;
-    char *s;
-    uint64_t n;
-} slot;
+enum { MAX_DEPTH = 64 }; /* how deep a model file's collections may nest: far more than the schema's */
 
 int cs_path_next(const char **p, char *key, size_t key_size, long *index) {
     const char *s = *p;
@@ -85,16 +78,8 @@ static void walk(const char *path, shape *out) {
     if (rc < 0) out->known = 0;
 }
 
-static const char *kind_name(cs_ykind k) {
-    return k == CS_Y_SCALAR ? "a single value"
-           : k == CS_Y_MAP  ? "a mapping"
-           : k == CS_Y_SEQ  ? "a list"
-                            : "an alias";
-}
-
-/* Does a node of kind k fit where s says? */
+/* Does a value of kind k fit where s says? */
 static int fits(const shape *s, cs_ykind k) {
-    if (k == CS_Y_ALIAS) return 1;
     if (!s->field) return k == CS_Y_MAP;
     cs_fkind f = s->field->kind;
     if (s->item) return f == CS_F_SEQ ? k == CS_Y_MAP : k == CS_Y_SCALAR;
@@ -119,16 +104,40 @@ static void expected_shape(const shape *s, char *buf, size_t size) {
         cs_field_hint(s->field, buf, size);
 }
 
-/* Schema paths libcyaml must skip in this file (their shape is wrong, already reported). */
+/* Report a value at path (written at e) that does not fit where s says: an alias whose anchor was not
+ * given before it, or a value of the wrong shape (an alias's: its anchor's). Returns 1 if reported. */
+static int misfit(cs_loader *l, int file, const cs_ynode *e, const shape *s, const char *path) {
+    const cs_ynode *v = cs_ynode_value(e);
+    char want[200];
+    if (!v) {
+        cs_err_at(l, file, e->line, e->col,
+                  "%s: no anchor '%s' before this alias (expected &%s on a value above)",
+                  path[0] ? path : "the document", e->text, e->text);
+        return 1;
+    }
+    if (fits(s, v->kind)) return 0;
+    expected_shape(s, want, sizeof want);
+    cs_err_at(l, file, e->line, e->col, "%s is %s (expected %s)", path[0] ? path : "the document",
+              cs_ykind_name(v->kind), want);
+    return 1;
+}
+
+/* Schema paths whose values are left out of this file's nodes (their shape is wrong, already reported). */
 typedef struct skips {
-    char (*path)[256];
-    int count;
+    char **path;
+    int count, capacity;
 } skips;
 
 static int skipped(const skips *sk, const char *skey) {
     for (int i = 0; i < sk->count; i++)
         if (strcmp(sk->path[i], skey) == 0) return 1;
     return 0;
+}
+
+static void skip(cs_loader *l, skips *sk, const char *skey) {
+    if (cs_grow(&sk->path, &sk->capacity, sk->count, sizeof *sk->path) == 0 &&
+        (sk->path[sk->count] = cs_arena_strdup(l, skey)))
+        sk->count++;
 }
 
 static void table_keys(const cs_table *t, char *buf, size_t size) {
@@ -140,9 +149,9 @@ static void table_keys(const cs_table *t, char *buf, size_t size) {
 
 /* Check every node's key and shape; report each problem at its place. */
 static void check_shape(cs_loader *l, int file, skips *sk) {
-    cs_yposmap *map = &l->files[file].map;
-    for (int i = 0; i < map->count; i++) {
-        cs_ypos *e = &map->items[i];
+    cs_ytree *tree = &l->files[file].tree;
+    for (int i = 0; i < tree->count; i++) {
+        cs_ynode *e = &tree->items[i];
         int before = l->error_count;
         shape s;
         walk(e->path, &s);
@@ -162,16 +171,13 @@ static void check_shape(cs_loader *l, int file, skips *sk) {
             table_keys(t, want, sizeof want);
             cs_err_at(l, file, e->key_line, e->key_col, "%s%sunknown key '%s' (expected one of: %s)", ppath,
                       plen ? ": " : "", s.bad_key, want);
-        } else if (s.known && !fits(&s, e->kind)) {
-            expected_shape(&s, want, sizeof want);
-            cs_err_at(l, file, e->line, e->col, "%s is %s (expected %s)",
-                      e->path[0] ? e->path : "the document", kind_name(e->kind), want);
-            if (sk->count < 64) snprintf(sk->path[sk->count++], 256, "%s", s.skey);
+        } else if (s.known && misfit(l, file, e, &s, e->path)) {
+            skip(l, sk, s.skey);
         } else if (s.known && e->duplicate) {
-            const cs_ypos *first = cs_yposmap_find(map, e->path);
+            const cs_ynode *first = cs_ytree_find(tree, e->path);
             cs_err_at(l, file, e->key_line, e->key_col, "%s: given twice (first at %d:%d)", e->path,
                       first->key_line, first->key_col);
-            if (sk->count < 64) snprintf(sk->path[sk->count++], 256, "%s", s.skey);
+            skip(l, sk, s.skey);
         }
         e->bad = l->error_count > before;
     }
@@ -179,191 +185,93 @@ static void check_shape(cs_loader *l, int file, skips *sk) {
 
 int cs_damaged(const cs_loader *l, const cs_node *n) {
     if (n->source < 0) return 0;
-    const cs_yposmap *map = &l->files[n->source].map;
+    const cs_ytree *tree = &l->files[n->source].tree;
     size_t len = strlen(n->path);
-    for (int i = 0; i < map->count; i++)
-        if (map->items[i].bad && strncmp(map->items[i].path, n->path, len) == 0) return 1;
+    for (int i = 0; i < tree->count; i++)
+        if (tree->items[i].bad && strncmp(tree->items[i].path, n->path, len) == 0) return 1;
     return 0;
 }
 
-/* ---- the libcyaml schema of a file ---- */
+/* ---- the tree's values into nodes ---- */
 
-static const cyaml_schema_value_t string_value = {.type = CYAML_STRING,
-                                                  .flags = CYAML_FLAG_POINTER,
-                                                  .data_size = sizeof(char),
-                                                  .string = {0, CYAML_UNLIMITED}};
+typedef struct build {
+    cs_loader *l;
+    int file;
+    const skips *sk;
+} build;
 
-static cyaml_schema_field_t *build_fields(cs_loader *l, int file, const cs_table *t, const char *skey,
-                                          const skips *sk);
+static int fill(const build *b, cs_node *n, const cs_ynode *y, const cs_field *f, const char *skey);
 
-static int build_mapping(cs_loader *l, int file, const cs_table *t, const char *skey, const skips *sk,
-                         cyaml_schema_value_t *v, cyaml_flag_e flags) {
-    cyaml_schema_field_t *fields = build_fields(l, file, t, skey, sk);
-    if (!fields) return -1;
-    *v = (cyaml_schema_value_t){.type = CYAML_MAPPING,
-                                .flags = flags,
-                                .data_size = (uint32_t)(2 * (size_t)t->count * sizeof(slot)),
-                                .mapping = {fields}};
-    return 0;
-}
-
-static cyaml_schema_field_t *build_fields(cs_loader *l, int file, const cs_table *t, const char *skey,
-                                          const skips *sk) {
-    cyaml_schema_field_t *fields = cs_arena_alloc(l, (size_t)(t->count + 1) * sizeof *fields);
-    if (!fields) return NULL;
-    for (int i = 0; i < t->count; i++) {
-        const cs_field *f = &t->fields[i];
-        cyaml_schema_field_t *o = &fields[i];
-        char sub[256];
-        snprintf(sub, sizeof sub, "%s%s%s", skey, skey[0] ? "." : "", f->key);
-        o->key = f->key;
-        o->data_offset = (uint32_t)(2 * (size_t)i * sizeof(slot));
-        o->count_offset = (uint32_t)((2 * (size_t)i + 1) * sizeof(slot));
-        o->count_size = sizeof(uint64_t);
-        cyaml_flag_e opt = CYAML_FLAG_OPTIONAL | CYAML_FLAG_POINTER;
-        cs_ykind part_kind = CS_Y_MAP;
-        if (f->kind == CS_F_PART) {
-            const cs_ypos *at = cs_yposmap_find(&l->files[file].map, sub);
-            if (at) part_kind = at->kind;
-        }
-        if (skipped(sk, sub)) {
-            o->value = (cyaml_schema_value_t){.type = CYAML_IGNORE, .flags = CYAML_FLAG_OPTIONAL};
-        } else if (scalar_kind(f->kind) || (f->kind == CS_F_PART && part_kind == CS_Y_SCALAR)) {
-            o->value = string_value;
-            o->value.flags = opt;
-            if (f->kind == CS_F_PART) o->data_offset = o->count_offset;
-        } else if (f->kind == CS_F_LIST || f->kind == CS_F_SEQ) {
-            cyaml_schema_value_t *entry = cs_arena_alloc(l, sizeof *entry);
-            if (!entry) return NULL;
-            if (f->kind == CS_F_LIST)
-                *entry = string_value;
-            else if (build_mapping(l, file, f->sub, sub, sk, entry, CYAML_FLAG_DEFAULT) != 0)
-                return NULL;
-            o->value = (cyaml_schema_value_t){.type = CYAML_SEQUENCE,
-                                              .flags = opt,
-                                              .data_size = entry->data_size,
-                                              .sequence = {entry, 0, CYAML_UNLIMITED}};
-            if (f->kind == CS_F_LIST) o->value.data_size = sizeof(char *);
-        } else if (build_mapping(l, file, f->sub, sub, sk, &o->value, opt) != 0) {
-            return NULL;
-        }
-    }
-    return fields;
-}
-
-/* ---- slots to nodes ---- */
-
-static cs_node *new_node(cs_loader *l, cs_ykind kind, int file, const char *parent, const char *key,
-                         long index) {
-    cs_node *n = cs_arena_alloc(l, sizeof *n);
+/* The node of the value written at y (an alias: its anchor's value) for field f (an entry of its list if
+ * item; f NULL: the whole file), at parent.key or parent[index] (key NULL); skey is f's schema path.
+ * Returns 0, 1 when the value is left out (*n stays NULL), or -1 when memory is short. Only an alias's
+ * anchor can hold a value of the wrong shape here (elsewhere check_shape reported and skipped it): it is
+ * reported at its place and left out. */
+static int value(const build *b, cs_node **n, const cs_ynode *y, const cs_field *f, int item,
+                 const char *parent, const char *key, long index, const char *skey) {
     char path[512];
     if (key)
         snprintf(path, sizeof path, "%s%s%s", parent, parent[0] ? "." : "", key);
     else
         snprintf(path, sizeof path, "%s[%ld]", parent, index);
-    if (!n || !(n->path = cs_arena_strdup(l, path))) return NULL;
-    n->kind = kind;
-    n->source = file;
-    return n;
+    shape s = {.field = f, .item = item};
+    if (misfit(b->l, b->file, y, &s, path)) return 1;
+    const cs_ynode *v = cs_ynode_value(y);
+    cs_node *m = cs_arena_alloc(b->l, sizeof *m);
+    if (!m || !(m->path = cs_arena_strdup(b->l, path))) return -1;
+    m->kind = v->kind;
+    m->source = b->file;
+    m->at = y;
+    int rc = v->kind == CS_Y_SCALAR ? ((m->text = cs_arena_strdup(b->l, v->text)) ? 0 : -1)
+                                    : fill(b, m, v, f, skey);
+    if (rc == 0) *n = m;
+    return rc;
 }
 
-static cs_node *scalar_node(cs_loader *l, const char *text, int file, const char *parent, const char *key,
-                            long index) {
-    cs_node *n = new_node(l, CS_Y_SCALAR, file, parent, key, index);
-    if (n && !(n->text = cs_arena_strdup(l, text))) return NULL;
-    return n;
-}
-
-static int fill_map(cs_loader *l, cs_node *n, const cs_table *t, const slot *s);
-
-static cs_node *map_node(cs_loader *l, const cs_table *t, const slot *s, int file, const char *parent,
-                         const char *key, long index) {
-    cs_node *n = new_node(l, CS_Y_MAP, file, parent, key, index);
-    if (!n) return NULL;
+/* The entries of a list node, or the fields of a mapping node (of field f's table; f NULL: the model's).
+ * A list with an entry left out is left out whole (1). */
+static int fill(const build *b, cs_node *n, const cs_ynode *y, const cs_field *f, const char *skey) {
+    int seq = n->kind == CS_Y_SEQ;
+    const cs_table *t = seq ? NULL : f ? f->sub : &cs_table_model;
     n->table = t;
-    n->count = t->count;
-    n->items = cs_arena_alloc(l, (size_t)t->count * sizeof *n->items);
-    return n->items && fill_map(l, n, t, s) == 0 ? n : NULL;
-}
-
-static int fill_map(cs_loader *l, cs_node *n, const cs_table *t, const slot *s) {
-    for (int i = 0; i < t->count; i++) {
-        const cs_field *f = &t->fields[i];
-        const slot *v = &s[2 * i], *c = &s[2 * i + 1];
-        cs_node *item = NULL;
-        if (f->kind == CS_F_PART && c->s) {
-            item = scalar_node(l, c->s, n->source, n->path, f->key, 0);
-        } else if (!v->p) {
-            continue;
-        } else if (scalar_kind(f->kind)) {
-            item = scalar_node(l, v->s, n->source, n->path, f->key, 0);
-        } else if (f->kind == CS_F_MAP || f->kind == CS_F_PART) {
-            item = map_node(l, f->sub, v->p, n->source, n->path, f->key, 0);
+    n->count = seq ? y->count : t->count;
+    if (!(n->items = cs_arena_alloc(b->l, ((size_t)n->count + 1) * sizeof *n->items))) return -1;
+    for (int i = 0; i < n->count; i++) {
+        int rc = 0;
+        if (seq) {
+            rc = value(b, &n->items[i], y->kids[i], f, 1, n->path, NULL, i, skey);
         } else {
-            if (c->n > INT_MAX || !(item = new_node(l, CS_Y_SEQ, n->source, n->path, f->key, 0))) return -1;
-            item->count = (int)c->n;
-            item->items = cs_arena_alloc(l, (c->n + 1) * sizeof *item->items);
-            if (!item->items) return -1;
-            for (int k = 0; k < item->count; k++) {
-                item->items[k] =
-                    f->kind == CS_F_LIST
-                        ? scalar_node(l, ((char **)v->p)[k], n->source, item->path, NULL, k)
-                        : map_node(l, f->sub, (const slot *)v->p + 2 * (size_t)k * (size_t)f->sub->count,
-                                   n->source, item->path, NULL, k);
-                if (!item->items[k]) return -1;
-            }
+            const cs_field *g = &t->fields[i];
+            char sub[256];
+            snprintf(sub, sizeof sub, "%s%s%s", skey, skey[0] ? "." : "", g->key);
+            const cs_ynode *kid = cs_ynode_get(y, g->key);
+            if (kid && !skipped(b->sk, sub)) rc = value(b, &n->items[i], kid, g, 0, n->path, g->key, 0, sub);
         }
-        if (!item) return -1;
-        n->items[i] = item;
+        if (rc < 0 || (rc > 0 && seq)) return rc;
     }
     return 0;
 }
 
-static void cyaml_log_capture(cyaml_log_t level, void *ctx, const char *fmt, va_list args) {
-    char *buf = ctx;
-    size_t n = strlen(buf);
-    if (level >= CYAML_LOG_ERROR && n < 255) vsnprintf(buf + n, 256 - n, fmt, args);
-}
-
 static int read_file(cs_loader *l, int file) {
     cs_lfile *lf = &l->files[file];
-    if ((lf->data ? cs_yposmap_read_data(&lf->map, lf->data, lf->size)
-                  : cs_yposmap_read(&lf->map, lf->real)) != 0) {
-        cs_err_at(l, file, lf->map.error_line, lf->map.error_col, "%s", lf->map.error);
+    if (cs_ytree_read(&lf->tree, lf->real, lf->data, lf->size, MAX_DEPTH) != 0) {
+        cs_err_at(l, file, lf->tree.error_line, lf->tree.error_col, "%s", lf->tree.error);
         return -1;
     }
-    if (lf->map.count == 0) {
+    if (lf->tree.count == 0) {
         cs_err_at(l, file, 1, 1,
                   "the file is empty (expected a mapping of parts, barrier, vehicle, scenario)");
         return -1;
     }
-    int before = l->error_count;
-    skips sk = {cs_arena_alloc(l, 64 * sizeof *sk.path), 0};
-    if (!sk.path) return -1;
+    skips sk = {0};
     check_shape(l, file, &sk);
-    if (lf->map.items[0].kind != CS_Y_MAP) return -1;
-    cyaml_schema_value_t top;
-    if (build_mapping(l, file, &cs_table_model, "", &sk, &top, CYAML_FLAG_POINTER) != 0) return -1;
-    char log[256] = "";
-    cyaml_config_t config = {.log_fn = cyaml_log_capture,
-                             .log_ctx = log,
-                             .mem_fn = cyaml_mem,
-                             .log_level = CYAML_LOG_ERROR,
-                             .flags = CYAML_CFG_IGNORE_UNKNOWN_KEYS};
-    slot *data = NULL;
-    cyaml_err_t rc = lf->data ? cyaml_load_data((const uint8_t *)lf->data, lf->size, &config, &top,
-                                                (cyaml_data_t **)&data, NULL)
-                              : cyaml_load_file(lf->real, &config, &top, (cyaml_data_t **)&data, NULL);
-    if (rc != CYAML_OK) {
-        if (l->error_count == before) {
-            log[strcspn(log, "\n")] = '\0';
-            cs_err_at(l, file, 1, 1, "cannot load the file: %s (%s)", cyaml_strerror(rc), log);
-        }
-        return -1;
-    }
-    lf->root = map_node(l, &cs_table_model, data, file, "", "", 0);
-    cyaml_free(&config, &top, data, 0);
-    return lf->root ? 0 : -1; /* shape errors are recorded; the rest is still checked */
+    cs_node *root = NULL;
+    build b = {l, file, &sk};
+    int rc =
+        lf->tree.items[0].kind == CS_Y_MAP ? value(&b, &root, &lf->tree.items[0], NULL, 0, "", "", 0, "") : 1;
+    free(sk.path);
+    lf->root = root;
+    return rc == 0 ? 0 : -1; /* shape errors are recorded; the rest is still checked */
 }
 
 /* A new entry of the file table, read. Returns its index, or -1. */
