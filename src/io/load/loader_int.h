@@ -79,8 +79,6 @@ int cs_data_load(cs_loader *l, const char *name, const char *data, size_t size);
 int cs_damaged(const cs_loader *l, const cs_node *n);
 /* The field of a mapping node by key (NULL if absent). */
 const cs_node *cs_node_get(const cs_node *map, const char *key);
-/* Split the next component off a path: 1 key, 2 [index], 0 end, -1 malformed. */
-int cs_path_next(const char **p, char *key, size_t key_size, long *index);
 
 /* Resolve references of a file's model (vehicle/barrier/scenario) into a fresh root. */
 cs_node *cs_resolve_model(cs_loader *l, int file);

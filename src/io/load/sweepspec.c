@@ -201,39 +201,21 @@ static void check_shapes(cs_sweep_spec *s, const cs_ynode *root) {
 
 /* Walk the schema along a --set path to one value. 0 with v's kind filled, or -1 with why filled. */
 static int path_field(const char *path, cs_sweep_var *v, char *why, size_t why_size) {
-    const cs_table *t = &cs_table_model;
-    const cs_field *f = NULL;
-    int item = 0, rc;
-    char key[64];
-    long index;
-    const char *p = path;
-    while ((rc = cs_path_next(&p, key, sizeof key, &index)) > 0) {
-        if (rc == 1) {
-            int i = t && (!f || item || f->kind != CS_F_SEQ) ? cs_table_find(t, key) : -1;
-            if (i < 0) {
-                if (t && f && f->kind == CS_F_SEQ && !item)
-                    snprintf(why, why_size, "'%s' needs an index before '%s' (e.g. %s[0].%s)", f->key, key,
-                             f->key, key);
-                else
-                    snprintf(why, why_size, "unknown key '%s'%s%s (expected a model path, as --set)", key,
-                             t ? " in " : "", t ? t->name : "");
-                return -1;
-            }
-            f = &t->fields[i];
-            t = f->sub;
-            item = 0;
-        } else {
-            if (!f || item || (f->kind != CS_F_SEQ && f->kind != CS_F_LIST)) {
-                snprintf(why, why_size, "no list before [%ld] (expected a model path, as --set)", index);
-                return -1;
-            }
-            item = 1;
-        }
-    }
-    if (rc < 0 || !f) {
+    cs_schema_place at;
+    cs_schema_walk(path, &at);
+    const cs_field *f = at.field;
+    if (at.fault == CS_PATH_NEEDS_INDEX)
+        snprintf(why, why_size, "'%s' needs an index before '%s' (e.g. %s[0].%s)", f->key, at.key, f->key,
+                 at.key);
+    else if (at.fault == CS_PATH_UNKNOWN_KEY)
+        snprintf(why, why_size, "unknown key '%s'%s%s (expected a model path, as --set)", at.key,
+                 at.table ? " in " : "", at.table ? at.table->name : "");
+    else if (at.fault == CS_PATH_NO_LIST)
+        snprintf(why, why_size, "no list before [%ld] (expected a model path, as --set)", at.index);
+    else if (at.fault == CS_PATH_MALFORMED || !f)
         snprintf(why, why_size, "malformed path (expected keys and [index], e.g. barrier.cables[0].height)");
-        return -1;
-    }
+    if (at.fault != CS_PATH_OK || !f) return -1;
+    int item = at.item;
     int one = f->kind == CS_F_QTY || f->kind == CS_F_INT || f->kind == CS_F_TEXT || f->kind == CS_F_ENUM ||
               f->kind == CS_F_PART || (f->kind == CS_F_LIST && item);
     if (!one) {

@@ -12,74 +12,12 @@
 
 enum { MAX_DEPTH = 64 }; /* how deep a model file's collections may nest: far more than the schema's */
 
-int cs_path_next(const char **p, char *key, size_t key_size, long *index) {
-    const char *s = *p;
-    if (*s == '\0') return 0;
-    if (*s == '[') {
-        char *end;
-        long i = strtol(s + 1, &end, 10);
-        if (end == s + 1 || *end != ']' || i < 0) return -1;
-        *index = i;
-        *p = end + 1;
-        if (**p == '.') ++*p;
-        return 2;
-    }
-    size_t n = strcspn(s, ".[");
-    if (n == 0 || n >= key_size) return -1;
-    memcpy(key, s, n);
-    key[n] = '\0';
-    *p = s + n + (s[n] == '.');
-    return 1;
-}
-
 static int scalar_kind(cs_fkind k) {
     return k == CS_F_QTY || k == CS_F_INT || k == CS_F_TEXT || k == CS_F_ENUM;
 }
 
-/* The schema path ("barrier.cables.height") of a document path; NULL table/field if unknown. */
-typedef struct shape {
-    const cs_field *field; /* the field the node is the value of (NULL: root) */
-    int item;              /* the node is an entry of the field's list */
-    int known;             /* the path walks the schema */
-    char skey[256];        /* schema path */
-    char bad_key[64];      /* the last component is an unknown key */
-} shape;
-
-static void walk(const char *path, shape *out) {
-    memset(out, 0, sizeof *out);
-    const cs_table *t = &cs_table_model;
-    char key[64];
-    long index;
-    int rc;
-    out->known = 1;
-    while ((rc = cs_path_next(&path, key, sizeof key, &index)) > 0) {
-        if (rc == 1) {
-            int i = t ? cs_table_find(t, key) : -1;
-            if (out->item == 0 && out->field && out->field->kind == CS_F_SEQ)
-                i = -1, t = NULL; /* under a bad list */
-            if (i < 0) {
-                out->known = 0;
-                if (*path == '\0' && t) snprintf(out->bad_key, sizeof out->bad_key, "%s", key);
-                return;
-            }
-            out->field = &t->fields[i];
-            out->item = 0;
-            t = out->field->sub;
-            size_t n = strlen(out->skey);
-            snprintf(out->skey + n, sizeof out->skey - n, "%s%s", n ? "." : "", key);
-        } else {
-            if (!out->field || out->item || (out->field->kind != CS_F_SEQ && out->field->kind != CS_F_LIST)) {
-                out->known = 0;
-                return;
-            }
-            out->item = 1;
-        }
-    }
-    if (rc < 0) out->known = 0;
-}
-
 /* Does a value of kind k fit where s says? */
-static int fits(const shape *s, cs_ykind k) {
+static int fits(const cs_schema_place *s, cs_ykind k) {
     if (!s->field) return k == CS_Y_MAP;
     cs_fkind f = s->field->kind;
     if (s->item) return f == CS_F_SEQ ? k == CS_Y_MAP : k == CS_Y_SCALAR;
@@ -89,7 +27,7 @@ static int fits(const shape *s, cs_ykind k) {
     return k == CS_Y_MAP;
 }
 
-static void expected_shape(const shape *s, char *buf, size_t size) {
+static void expected_shape(const cs_schema_place *s, char *buf, size_t size) {
     if (!s->field)
         snprintf(buf, size, "a mapping of name, parts, barrier, vehicle, scenario");
     else if (s->item && s->field->kind == CS_F_SEQ)
@@ -106,7 +44,7 @@ static void expected_shape(const shape *s, char *buf, size_t size) {
 
 /* Report a value at path (written at e) that does not fit where s says: an alias whose anchor was not
  * given before it, or a value of the wrong shape (an alias's: its anchor's). Returns 1 if reported. */
-static int misfit(cs_loader *l, int file, const cs_ynode *e, const shape *s, const char *path) {
+static int misfit(cs_loader *l, int file, const cs_ynode *e, const cs_schema_place *s, const char *path) {
     const cs_ynode *v = cs_ynode_value(e);
     char want[200];
     if (!v) {
@@ -153,27 +91,23 @@ static void check_shape(cs_loader *l, int file, skips *sk) {
     for (int i = 0; i < tree->count; i++) {
         cs_ynode *e = &tree->items[i];
         int before = l->error_count;
-        shape s;
-        walk(e->path, &s);
-        char want[200];
+        cs_schema_place s;
+        cs_schema_walk(e->path, &s);
+        int known = s.fault == CS_PATH_OK;
         if (e->odd_key) { /* its path would not name it: "speed.x" reads as speed, then x */
             cs_err_at(l, file, e->key_line, e->key_col,
                       "%s: a key must be a plain word (expected 1 to 63 characters, no '.', '[' or ']')",
                       e->path);
-        } else if (s.bad_key[0]) {
+        } else if (s.fault == CS_PATH_UNKNOWN_KEY && s.last && s.table) {
             const char *dot = strrchr(e->path, '.');
-            size_t plen = dot ? (size_t)(dot - e->path) : 0;
-            shape parent;
-            char ppath[256];
-            snprintf(ppath, sizeof ppath, "%.*s", (int)plen, e->path);
-            walk(ppath, &parent);
-            const cs_table *t = parent.field ? parent.field->sub : &cs_table_model;
-            table_keys(t, want, sizeof want);
-            cs_err_at(l, file, e->key_line, e->key_col, "%s%sunknown key '%s' (expected one of: %s)", ppath,
-                      plen ? ": " : "", s.bad_key, want);
-        } else if (s.known && misfit(l, file, e, &s, e->path)) {
+            int plen = dot ? (int)(dot - e->path) : 0;
+            char want[200];
+            table_keys(s.table, want, sizeof want);
+            cs_err_at(l, file, e->key_line, e->key_col, "%.*s%sunknown key '%s' (expected one of: %s)", plen,
+                      e->path, plen ? ": " : "", s.key, want);
+        } else if (known && misfit(l, file, e, &s, e->path)) {
             skip(l, sk, s.skey);
-        } else if (s.known && e->duplicate) {
+        } else if (known && e->duplicate) {
             const cs_ynode *first = cs_ytree_find(tree, e->path);
             cs_err_at(l, file, e->key_line, e->key_col, "%s: given twice (first at %d:%d)", e->path,
                       first->key_line, first->key_col);
@@ -214,7 +148,7 @@ static int value(const build *b, cs_node **n, const cs_ynode *y, const cs_field 
         snprintf(path, sizeof path, "%s%s%s", parent, parent[0] ? "." : "", key);
     else
         snprintf(path, sizeof path, "%s[%ld]", parent, index);
-    shape s = {.field = f, .item = item};
+    cs_schema_place s = {.field = f, .item = item};
     if (misfit(b->l, b->file, y, &s, path)) return 1;
     const cs_ynode *v = cs_ynode_value(y);
     cs_node *m = cs_arena_alloc(b->l, sizeof *m);
