@@ -48,6 +48,10 @@ cs_loader *cs_loader_create(const char *data_dir, char *why, size_t why_size) {
     return l;
 }
 
+const char *cs_loader_data_dir(const cs_loader *l) {
+    return l->data_dir;
+}
+
 /* Free the overrides' texts (the array stays for the next ones). */
 static void drop_sets(cs_loader *l) {
     for (int i = 0; i < l->set_count; i++) {

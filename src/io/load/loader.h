@@ -24,6 +24,9 @@ typedef struct cs_model_input {
 cs_loader *cs_loader_create(const char *data_dir, char *why, size_t why_size);
 void cs_loader_free(cs_loader *loader);
 
+/* The folder of the parts library (data_dir as resolved by cs_loader_create); data/validation/ is in it. */
+const char *cs_loader_data_dir(const cs_loader *loader);
+
 /* Queue an override "PATH=VALUE" for the next load. Returns 0, or -1 (error recorded). */
 int cs_loader_set(cs_loader *loader, const char *assignment);
 /* Load, resolve, override and check a model. Returns 0, or -1 with the errors recorded. */
