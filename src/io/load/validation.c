@@ -136,7 +136,8 @@ static int read_aps1(const char *dir, cs_validation_data *out, char *why, size_t
         if (s < 0)
             return close_csv(&c, fault(&c, c.cell_col[c.want[1]], "unknown source '%s' (expected %s or %s)",
                                        text(&c, 1), sources[0], sources[1]));
-        if (seen[s]++) return close_csv(&c, fault(&c, 1, "APS1, %s given twice", sources[s]));
+        if (seen[s]++)
+            return close_csv(&c, fault(&c, 1, "APS1, %s: given twice (expected one row)", sources[s]));
         double v[4];
         if (numbers(&c, 2, 6, v) != 0) return close_csv(&c, -1);
         *values[s] = (cs_crash_values){v[0], v[1], {v[2], v[3]}};

@@ -176,7 +176,8 @@ static void read_events(reader *r, yaml_parser_t *parser) {
 /* Link every node to its parent's list and every alias to its anchor's node. */
 static int link(reader *r) {
     cs_ytree *t = r->tree;
-    if (t->count > 1 && !(t->kid_store = calloc((size_t)t->count - 1, sizeof *t->kid_store))) return -1;
+    if (t->count == 0) return 0;
+    if (!(t->kid_store = calloc((size_t)t->count, sizeof *t->kid_store))) return -1; /* all but the root */
     for (int i = 1; i < t->count; i++)
         t->items[t->items[i].parent].count++;
     cs_ynode **next = t->kid_store;
