@@ -699,6 +699,28 @@ static void plan(suite *s, const char *only) {
         add_sensitivity(s, k);
 }
 
+static void suite_free(suite *s) {
+    cs_loader_free(s->loader);
+    free(s);
+}
+
+/* A suite with its loader and the values it compares with (data/validation/, beside the loader's parts
+ * library). NULL, the reason printed, if either cannot be had. */
+static suite *suite_create(void) {
+    char why[1600], data_dir[1100];
+    suite *s = calloc(1, sizeof *s);
+    if (!s || !(s->loader = cs_loader_create(NULL, why, sizeof why))) {
+        fprintf(stderr, "cablesim validate: %s\n", s ? why : "out of memory");
+        free(s);
+        return NULL;
+    }
+    snprintf(data_dir, sizeof data_dir, "%s/validation", cs_loader_data_dir(s->loader));
+    if (cs_validation_read(data_dir, &s->data, why, sizeof why) == 0) return s;
+    fprintf(stderr, "cablesim validate: %s\n", why);
+    suite_free(s);
+    return NULL;
+}
+
 int cs_command_validate(int argc, char **argv) {
     const char *dir = "results/validation", *examples = "examples", *only = NULL;
     for (int i = 2; i < argc; i++) {
@@ -713,28 +735,14 @@ int cs_command_validate(int argc, char **argv) {
         }
         *slot = argv[++i];
     }
-    /* the loader, and the values to compare with from data/validation/ beside its parts library */
-    char why[1600], data_dir[1100];
-    suite *s = calloc(1, sizeof *s);
-    if (!s || !(s->loader = cs_loader_create(NULL, why, sizeof why))) {
-        fprintf(stderr, "cablesim validate: %s\n", s ? why : "out of memory");
-        free(s);
-        return 1;
-    }
-    snprintf(data_dir, sizeof data_dir, "%s/validation", cs_loader_data_dir(s->loader));
-    if (cs_validation_read(data_dir, &s->data, why, sizeof why) != 0) {
-        fprintf(stderr, "cablesim validate: %s\n", why);
-        cs_loader_free(s->loader);
-        free(s);
-        return 1;
-    }
+    suite *s = suite_create();
+    if (!s) return 1;
     char mdp[1024], csvp[1024], mdt[1040], csvt[1040];
     struct stat st;
     mkdir("results", 0777);
     if (mkdir(dir, 0777) != 0 && !(stat(dir, &st) == 0 && S_ISDIR(st.st_mode))) {
         fprintf(stderr, "cablesim validate: cannot create %s\n", dir);
-        cs_loader_free(s->loader);
-        free(s);
+        suite_free(s);
         return 1;
     }
     snprintf(mdp, sizeof mdp, "%s/validation.md", dir);
@@ -746,8 +754,7 @@ int cs_command_validate(int argc, char **argv) {
         fprintf(stderr, "cablesim validate: cannot write in %s\n", dir);
         if (md) fclose(md), remove(mdt);
         if (csv) fclose(csv), remove(csvt);
-        cs_loader_free(s->loader);
-        free(s);
+        suite_free(s);
         return 1;
     }
     s->examples = examples;
@@ -767,8 +774,7 @@ int cs_command_validate(int argc, char **argv) {
     if (wanted(only, "verification")) write_verification(md, s->loader, &s->data);
     if (wanted(only, "convergence")) write_convergence(md, csv, s);
     if (wanted(only, "sensitivity")) write_sensitivity(md, csv, s);
-    cs_loader_free(s->loader);
-    free(s);
+    suite_free(s);
     fprintf(md, "Run time: %.0f s.\n", difftime(time(NULL), t0));
     int bad = ferror(md) || ferror(csv);
     bad |= fclose(md) != 0;
