@@ -44,7 +44,7 @@ fuzz-build: deps
 	clang -std=c17 -Wall -Wextra -Wpedantic -Werror -O1 -g -fno-omit-frame-pointer -fno-sanitize-recover=all \
 	  -fsanitize=fuzzer,address,undefined -Iinclude -Isrc/io -DCS_SOURCE_DIR='"$(CURDIR)"' \
 	  fuzz/fuzz_loader.c $(FUZZ_BUILD)/libcablesim_io.a $(FUZZ_BUILD)/libcablesim.a \
-	  $$(pkg-config --libs libcyaml) -ludunits2 -lm -o $(FUZZ_BUILD)/fuzz_loader
+	  $$(pkg-config --libs yaml-0.1) -ludunits2 -lm -o $(FUZZ_BUILD)/fuzz_loader
 
 fuzz: fuzz-build
 	rm -rf $(FUZZ_BUILD)/seeds
@@ -64,7 +64,7 @@ bench: build
 	BUILD=$(BUILD) bash bench/run.sh
 
 format:
-	clang-format -i include/cablesim/*.h src/*.c src/*.h src/io/*.c src/io/*.h app/*.c tests/*.c tests/*.h examples/*.c fuzz/*.c 2>/dev/null || true
+	clang-format -i include/cablesim/*.h src/*.c src/*.h src/io/*/*.c src/io/*/*.h app/*.c tests/*.c tests/*.h examples/*.c fuzz/*.c 2>/dev/null || true
 
 clean:
 	rm -rf $(BUILD) build-asan $(FUZZ_BUILD)

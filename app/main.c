@@ -6,14 +6,14 @@
 
 #include "cablesim/cablesim.h"
 #include "commands.h"
-#include "figures.h"
-#include "loader.h"
-#include "outfile.h"
-#include "record.h"
-#include "report_html.h"
-#include "schema.h"
+#include "load/loader.h"
+#include "load/schema.h"
+#include "out/figures.h"
+#include "out/outfile.h"
+#include "out/record.h"
+#include "out/report_html.h"
+#include "out/writers.h"
 #include "sweepcmd.h"
-#include "writers.h"
 
 enum { EXIT_RUN = 1, EXIT_BAD = 2 };
 

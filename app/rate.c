@@ -1,14 +1,14 @@
 /* `cablesim rate`: run a standard's test condition (its vehicle and speed, head-on, at the model's
  * impact point) against the barrier of a model file and print the rating, as the standard measures
- * penetration (src/io/rating.c, docs/ratings.md). Without --class it starts from the highest class
+ * penetration (src/io/study/rating.c, docs/ratings.md). Without --class it starts from the highest class
  * and stops at the first the barrier passes (vehicle stopped and rated). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "commands.h"
-#include "loader.h"
-#include "rating.h"
+#include "load/loader.h"
+#include "study/rating.h"
 
 #define MPH 0.44704
 #define CS_PI 3.14159265358979323846

@@ -18,8 +18,9 @@
 #include <mpi.h>
 #endif
 
-#include "outfile.h"
-#include "sweep.h"
+#include "out/outfile.h"
+#include "out/sweepout.h"
+#include "study/sweep.h"
 #include "sweepcmd.h"
 
 enum { EXIT_RUN = 1, EXIT_BAD = 2 };

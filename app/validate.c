@@ -8,7 +8,9 @@
  * - time-step convergence of the crash tests (0.5, 0.25, 0.1, 0.05 ms);
  * - sensitivity to what the paper does not give: the band of each response over each input's range alone
  *   and over all of them at once (a Latin hypercube), APS1's measured values against the latter.
- * Every case uses the one parameter set of the model files and docs/assumptions.md.
+ * Every case uses the one parameter set of the model files and docs/assumptions.md. The measured and
+ * published values it compares with are read from data/validation/ (load/validation.h), each file with
+ * its source.
  * Every simulation is first queued as a job (plan), the jobs then run on OpenMP threads, the costliest
  * first (run_all), and only then is the report written from the stored results: the same report for any
  * thread count. */
@@ -21,8 +23,9 @@
 #include <time.h>
 
 #include "commands.h"
-#include "loader.h"
-#include "sweep.h"
+#include "load/loader.h"
+#include "load/validation.h"
+#include "study/sweep.h"
 
 #define MPH 0.44704
 #define FT 0.3048
@@ -39,7 +42,7 @@ typedef struct result {
     double post_failure_t; /* its time, s */
 } result;
 
-enum { CRASH = 3, BOGIE = 10, REFINE = 2, VALUES = 4, INPUTS = 6, JOINT = 32, JOINT_SEED = 2656 };
+enum { CRASH = 3, BOGIE = CS_BOGIE_TESTS, REFINE = 2, VALUES = 4, INPUTS = 6, JOINT = 32, JOINT_SEED = 2656 };
 enum { MAX_JOBS = CRASH + BOGIE + CRASH * REFINE * VALUES + CRASH * INPUTS * 2 + CRASH * JOINT };
 
 /* One simulation: its model (NULL: not built, the reason printed), the order's cost estimate, the result. */
@@ -52,11 +55,12 @@ typedef struct job {
 /* The jobs, and the job each part of the report reads (-1: none). */
 typedef struct suite {
     cs_loader *loader;
+    cs_validation_data data; /* what the runs are compared with */
     const char *examples;
     int count;
     job jobs[MAX_JOBS];
     int base[CRASH];                      /* each crash test as its file stands */
-    int bogie[BOGIE];                     /* each of bogie_tests */
+    int bogie[BOGIE];                     /* each of data.bogie */
     int refine[REFINE][CRASH][VALUES];    /* refinements[t], crash test k, its values[d] */
     int sensitivity[CRASH][INPUTS][2];    /* crash test k, inputs[i] at its low and high end */
     int joint[CRASH][JOINT];              /* crash test k, every input at once (Latin hypercube) */
@@ -175,19 +179,11 @@ static double rel_err(double model, double test) {
 
 /* ---- crash tests ---- */
 
-/* APS1 as measured in the crash test and as the paper simulated it (the paper's Table 3). */
-typedef struct aps1_values {
-    double decel_g, exit_mph, brk[2]; /* max 50-ms average deceleration; exit speed; cable breaks, s */
-} aps1_values;
-static const aps1_values aps1_test = {1.485, 31.2, {0.088, 0.123}},
-                         aps1_paper = {1.247, 29.4, {0.255, 0.295}};
-
 /* What APS1's measured values allow by themselves: with no 50-ms average above the measured maximum, the
  * truck lost at most 3 windows' worth of speed in the 0.15 s that cover its second rope's break, so at
  * least the rest of its loss down to the exit speed came after both ropes had broken. Per unit mass, over
  * the impact speeds of the sensitivity study (38-42 mph). */
-static void write_aps1_bound(FILE *md) {
-    const aps1_values *t = &aps1_test;
+static void write_aps1_bound(FILE *md, const cs_crash_values *t) {
     const double g = 9.80665, lost_by_break = 3 * 0.05 * t->decel_g * g, v_exit = t->exit_mph * MPH,
                  mph[3] = {38, 40, 42};
     double after[3], share[3];
@@ -217,7 +213,7 @@ static void write_crash(FILE *md, FILE *csv, const suite *s) {
     for (int k = 0; k < CRASH; k++)
         csv_row(csv, "crash", crash_names[k], "baseline", &s->jobs[s->base[k]].r);
     const result *r = &s->jobs[s->base[0]].r;
-    const aps1_values *t = &aps1_test, *p = &aps1_paper;
+    const cs_crash_values *t = &s->data.aps1_test, *p = &s->data.aps1_paper;
     fprintf(md, "### APS1 against the crash test and the paper's simulation (paper, Table 3)\n\n");
     fprintf(md, "| response | crash test | paper's simulation | cablesim | cablesim vs test "
                 "|\n|---|---|---|---|---|\n");
@@ -244,7 +240,7 @@ static void write_crash(FILE *md, FILE *csv, const suite *s) {
             "\nTargets (issue 4): exit speed and deceleration within 15%%, both break times within 50 ms: "
             "deceleration %s, exit speed %s, break times %s.\n\n",
             dec_ok ? "met" : "NOT met", exit_ok ? "met" : "NOT met", brk_ok ? "met" : "NOT met");
-    write_aps1_bound(md);
+    write_aps1_bound(md, t);
     fprintf(md, "### APS3 and APS4: blind predictions (the measured results are withheld)\n\n");
     fprintf(md,
             "| response | APS3 cablesim | APS3 test | APS4 cablesim | APS4 test |\n|---|---|---|---|---|\n");
@@ -266,20 +262,7 @@ static void write_crash(FILE *md, FILE *csv, const suite *s) {
             p4->sm.posts_failed_right);
 }
 
-/* ---- bogie tests ---- */
-typedef struct bogie_test {
-    const char *name;
-    double mph, embedment_mm, deflection_mm, energy_ftlb;
-    int pullout; /* 1: pulled out of the ground; 0: rotated in the soil */
-} bogie_test;
-
-/* The paper's Table 2 (MwRSF tests of W6x16 posts in AASHTO M147-65 Grade B soil). */
-static const bogie_test bogie_tests[BOGIE] = {
-    {"NPGB-1", 20.00, 1092, 1045.3, 21994, 0}, {"NPGB-2", 21.00, 1016, 1152.9, 21500, 0},
-    {"NPGB-3", 20.00, 1092, 1241.7, 20984, 0}, {"NPGB-4", 20.00, 1016, 1092.3, 21493, 0},
-    {"NPGB-5", 20.00, 940, 1365.0, 20187, 1},  {"NPGB-6", 20.49, 864, 1340.1, 17849, 1},
-    {"NPGB-7", 19.71, 940, 1326.3, 16595, 1},  {"NPGB-8", 20.69, 940, 1164.1, 18314, 1},
-    {"NPGB-9", 20.76, 1016, 1221.5, 21507, 0}, {"NPGB-10", 21.50, 1016, 1185.6, 23440, 0}};
+/* ---- bogie tests (the paper's Table 2: data/validation/post-bogie-tests.csv) ---- */
 
 /* The bogie struck the post at speed mph: one W6x16 (library part) with the given footing, no cable. */
 static cs_model *bogie_model(cs_loader *l, const cs_footing_def *footing, double mph, cs_error *err) {
@@ -314,7 +297,7 @@ static cs_footing_def soil_footing(double b, double d) {
 
 /* The post driven in soil: Eq. 21 with the flange (4.03 in) as B, the default dynamic factor, and no
  * pullout capacity (its skin friction). */
-static int add_bogie(suite *s, const bogie_test *t) {
+static int add_bogie(suite *s, const cs_bogie_test *t) {
     cs_footing_def f = soil_footing(4.03 * IN, t->embedment_mm * 1e-3);
     cs_error err = {0};
     cs_model *m = bogie_model(s->loader, &f, t->mph, &err);
@@ -343,7 +326,7 @@ static void write_bogie(FILE *md, FILE *csv, const suite *s) {
             "failure measured | failure cablesim |\n|---|---|---|---|---|---|---|---|---|\n");
     int good = 0, good_even = 0;
     for (int i = 0; i < BOGIE; i++) {
-        const bogie_test *t = &bogie_tests[i];
+        const cs_bogie_test *t = &s->data.bogie[i];
         const result *r = &s->jobs[s->bogie[i]].r;
         if (!r->ok) continue;
         double e = r->absorbed / FTLB, err = rel_err(e, t->energy_ftlb);
@@ -370,22 +353,23 @@ static void write_bogie(FILE *md, FILE *csv, const suite *s) {
 }
 
 /* ---- verification ---- */
-/* Eq. 21 as the engine evaluates it (a one-post model's footing capacity) against the paper. */
-static void write_verification(FILE *md, cs_loader *l) {
+/* Eq. 21 as the engine evaluates it (a one-post model's footing capacity) against the paper
+ * (data/validation/eq21-table4.csv). */
+static void write_verification(FILE *md, cs_loader *l, const cs_validation_data *data) {
     fprintf(
         md,
         "## Verification against closed forms\n\nEq. 21 as the engine evaluates it (S1 = 8000 psf, H = 3 ft) "
         "against the P column of the paper's Table 4:\n\n| B | D | P paper | P cablesim "
         "|\n|---|---|---|---|\n");
-    const double bft[] = {0.75, 1.5, 3, 3, 8}, dft[] = {3, 3, 5, 6, 4},
-                 p[] = {3593, 7186, 30349, 39024, 58851};
-    for (int i = 0; i < 5; i++) {
-        cs_footing_def f = soil_footing(bft[i] * FT, dft[i] * FT);
+    for (int i = 0; i < data->eq21_count; i++) {
+        const cs_eq21_point *e = &data->eq21[i];
+        cs_footing_def f = soil_footing(e->width_ft * FT, e->depth_ft * FT);
         cs_error err = {0};
         cs_model *m = bogie_model(l, &f, 20.0, &err);
         if (!m) continue;
         double pn = cs_model_footing_capacity(m, 0, 3 * FT);
-        fprintf(md, "| %.2f ft | %.0f ft | %.0f lb | %.0f lb |\n", bft[i], dft[i], p[i], pn / (LB * 9.80665));
+        fprintf(md, "| %.2f ft | %.0f ft | %.0f lb | %.0f lb |\n", e->width_ft, e->depth_ft, e->p_lb,
+                pn / (LB * 9.80665));
         cs_model_free(m);
     }
     fprintf(
@@ -628,6 +612,7 @@ static const char *inside(const band *b, double scale, double v) {
 }
 
 static void write_sensitivity(FILE *md, FILE *csv, const suite *s) {
+    const cs_crash_values *t = &s->data.aps1_test;
     char variant[512];
     fprintf(md,
             "## Sensitivity to what the paper does not give\n\nEach input moved alone to either end of its "
@@ -685,10 +670,9 @@ static void write_sensitivity(FILE *md, FILE *csv, const suite *s) {
             "cable 1 broke at %.3f s %s, cable 2 at %.3f s %s. A measured value well outside the sampled "
             "band is a miss that these inputs, within their ranges, do not explain: it lies in the model "
             "(docs/theory.md, \"The end posts fold\").\n\n",
-            aps1_test.decel_g, inside(&aps1.decel, 1.0, aps1_test.decel_g), aps1_test.exit_mph,
-            inside(&aps1.exit, MPH, aps1_test.exit_mph), aps1_test.brk[0],
-            inside(&aps1.brk[0], 1.0, aps1_test.brk[0]), aps1_test.brk[1],
-            inside(&aps1.brk[1], 1.0, aps1_test.brk[1]));
+            t->decel_g, inside(&aps1.decel, 1.0, t->decel_g), t->exit_mph,
+            inside(&aps1.exit, MPH, t->exit_mph), t->brk[0], inside(&aps1.brk[0], 1.0, t->brk[0]), t->brk[1],
+            inside(&aps1.brk[1], 1.0, t->brk[1]));
 }
 
 static int wanted(const char *only, const char *part) {
@@ -707,12 +691,34 @@ static void plan(suite *s, const char *only) {
         s->base[k] = crash || sensitivity ? add_loaded(s, rc, &in) : -1;
     }
     for (int i = 0; i < BOGIE && wanted(only, "bogie"); i++)
-        s->bogie[i] = add_bogie(s, &bogie_tests[i]);
+        s->bogie[i] = add_bogie(s, &s->data.bogie[i]);
     for (int t = 0; t < REFINE && convergence; t++)
         for (int k = 0; k < CRASH; k++)
             add_refinement(s, t, k);
     for (int k = 0; k < CRASH && sensitivity; k++)
         add_sensitivity(s, k);
+}
+
+static void suite_free(suite *s) {
+    cs_loader_free(s->loader);
+    free(s);
+}
+
+/* A suite with its loader and the values it compares with (data/validation/, beside the loader's parts
+ * library). NULL, the reason printed, if either cannot be had. */
+static suite *suite_create(void) {
+    char why[1600], data_dir[1100];
+    suite *s = calloc(1, sizeof *s);
+    if (!s || !(s->loader = cs_loader_create(NULL, why, sizeof why))) {
+        fprintf(stderr, "cablesim validate: %s\n", s ? why : "out of memory");
+        free(s);
+        return NULL;
+    }
+    snprintf(data_dir, sizeof data_dir, "%s/validation", cs_loader_data_dir(s->loader));
+    if (cs_validation_read(data_dir, &s->data, why, sizeof why) == 0) return s;
+    fprintf(stderr, "cablesim validate: %s\n", why);
+    suite_free(s);
+    return NULL;
 }
 
 int cs_command_validate(int argc, char **argv) {
@@ -729,11 +735,14 @@ int cs_command_validate(int argc, char **argv) {
         }
         *slot = argv[++i];
     }
+    suite *s = suite_create();
+    if (!s) return 1;
     char mdp[1024], csvp[1024], mdt[1040], csvt[1040];
     struct stat st;
     mkdir("results", 0777);
     if (mkdir(dir, 0777) != 0 && !(stat(dir, &st) == 0 && S_ISDIR(st.st_mode))) {
         fprintf(stderr, "cablesim validate: cannot create %s\n", dir);
+        suite_free(s);
         return 1;
     }
     snprintf(mdp, sizeof mdp, "%s/validation.md", dir);
@@ -745,15 +754,7 @@ int cs_command_validate(int argc, char **argv) {
         fprintf(stderr, "cablesim validate: cannot write in %s\n", dir);
         if (md) fclose(md), remove(mdt);
         if (csv) fclose(csv), remove(csvt);
-        return 1;
-    }
-    char why[256];
-    suite *s = calloc(1, sizeof *s);
-    if (!s || !(s->loader = cs_loader_create(NULL, why, sizeof why))) {
-        fprintf(stderr, "cablesim validate: %s\n", s ? why : "out of memory");
-        free(s);
-        fclose(md), remove(mdt);
-        fclose(csv), remove(csvt);
+        suite_free(s);
         return 1;
     }
     s->examples = examples;
@@ -770,11 +771,10 @@ int cs_command_validate(int argc, char **argv) {
         "energy_absorbed_j\n");
     if (wanted(only, "crash")) write_crash(md, csv, s);
     if (wanted(only, "bogie")) write_bogie(md, csv, s);
-    if (wanted(only, "verification")) write_verification(md, s->loader);
+    if (wanted(only, "verification")) write_verification(md, s->loader, &s->data);
     if (wanted(only, "convergence")) write_convergence(md, csv, s);
     if (wanted(only, "sensitivity")) write_sensitivity(md, csv, s);
-    cs_loader_free(s->loader);
-    free(s);
+    suite_free(s);
     fprintf(md, "Run time: %.0f s.\n", difftime(time(NULL), t0));
     int bad = ferror(md) || ferror(csv);
     bad |= fclose(md) != 0;

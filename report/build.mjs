@@ -1,6 +1,6 @@
 // Build the page of report.html: bundle src/main.js (three, uPlot and the report's own code) with
 // esbuild into one script, inline it into src/index.html, and write the page as a C source that the
-// cablesim command compiles in (cs_report_page, see src/io/report_html.h).
+// cablesim command compiles in (cs_report_page, see src/io/out/report_html.h).
 //
 //   node report/build.mjs NODE_MODULES OUT_DIR
 //

@@ -3,7 +3,7 @@
 set -euo pipefail
 # clang + libclang-rt-14-dev: the sanitizer and libFuzzer runtimes (make sanitize, make fuzz); llvm-14:
 # llvm-symbolizer, so their reports name functions and lines.
-pkgs=(build-essential cmake pkg-config clang libclang-rt-14-dev llvm-14 libcyaml-dev libudunits2-dev libcmocka-dev
+pkgs=(build-essential cmake pkg-config clang libclang-rt-14-dev llvm-14 libyaml-dev libudunits2-dev libcmocka-dev
   libcairo2-dev)
 # libopenmpi-dev + openmpi-bin: cablesim-mpi and mpirun (sweeps shared among processes; tests/sweep_mpi.sh).
 pkgs+=(libopenmpi-dev openmpi-bin)

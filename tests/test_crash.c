@@ -55,10 +55,10 @@ static void refining_the_time_step_changes_little(void **state) {
 
 /* APS3's line posts and ropes over 300 posts (2.4 km of rope), the truck at the middle, for 20 ms. The
  * far nodes' material coordinates reach 730 m; the barrier solve must still converge there, which
- * takes a Jacobian that resolves their stick/slip switch. With a difference step relative to m (until
- * session 10), 17 of these 40 steps ended above the solver tolerance (22 in `make bench`'s 300-post
- * model); with a step sized to the switch, 1 did (session 10) and none by session 13; with the Jacobian
- * formed from the tension gradients (session 14), none does. Allowed: 2 steps. */
+ * takes a Jacobian that resolves their stick/slip switch. With a difference step relative to m, 17 of
+ * these 40 steps ended above the solver tolerance (22 in `make bench`'s 300-post model); with a step
+ * sized to the switch, 1 did; with the Jacobian formed from the tension gradients, as now, none does.
+ * Allowed: 2 steps. */
 static void long_barrier_solves_converge(void **state) {
     (void)state;
     enum { N = 300 };

@@ -1,5 +1,5 @@
 /* The loader: the examples and every library part load with the documented values; --set, file and
- * part references; every problem reported with its place; two loaders in two threads. */
+ * part references; YAML aliases; every problem reported with its place; two loaders in two threads. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <pthread.h>
@@ -11,7 +11,7 @@
 
 #include <cmocka.h>
 
-#include "loader.h"
+#include "load/loader.h"
 
 static const double PI = 3.14159265358979323846, FT = 0.3048, IN = 0.0254, LB = 0.45359237,
                     LBF = 0.45359237 * 9.80665;
@@ -237,6 +237,33 @@ static void test_references(void **state) {
     cs_loader_free(l);
 }
 
+/* YAML aliases stand for their anchors' values: tests/good/anchors.yaml, base.yaml written with them,
+ * loads to the same definitions, and a --set through an aliased value changes that place only. */
+static void test_aliases(void **state) {
+    (void)state;
+    cs_model_input in, base;
+    cs_loader *l = load(CS_SOURCE_DIR "/tests/good/anchors.yaml", &in, NULL);
+    cs_loader *b = load(CS_SOURCE_DIR "/tests/good/base.yaml", &base, NULL);
+    assert_int_equal(in.barrier.cable_count, base.barrier.cable_count);
+    for (int i = 0; i < in.barrier.cable_count; i++) {
+        close_to(in.barrier.cables[i].pretension, base.barrier.cables[i].pretension);
+        close_to(in.barrier.cables[i].height, base.barrier.cables[i].height);
+    }
+    assert_int_equal(in.barrier.post_count, base.barrier.post_count);
+    for (int i = 0; i < in.barrier.post_count; i++) {
+        close_to(in.barrier.posts[i].x, base.barrier.posts[i].x);
+        close_to(in.barrier.posts[i].height, base.barrier.posts[i].height);
+        close_to(in.barrier.posts[i].footing.depth, base.barrier.posts[i].footing.depth);
+    }
+    cs_loader_free(l);
+    cs_loader_free(b);
+    static const char *const sets[] = {"barrier.cables[1].pretension=8 kip", NULL};
+    l = load(CS_SOURCE_DIR "/tests/good/anchors.yaml", &in, sets);
+    close_to(in.barrier.cables[0].pretension, 5000 * LBF);
+    close_to(in.barrier.cables[1].pretension, 8000 * LBF);
+    cs_loader_free(l);
+}
+
 /* One loader reused for loads with other overrides (a sweep's runs) gives what a fresh loader gives,
  * also for a model split over files; a load with errors leaves it to a full reset, and the next load
  * works. */
@@ -308,7 +335,7 @@ int main(void) {
         cmocka_unit_test(test_library_parts), cmocka_unit_test(test_set),
         cmocka_unit_test(test_set_errors),    cmocka_unit_test(test_references),
         cmocka_unit_test(test_reuse),         cmocka_unit_test(test_every_problem_reported),
-        cmocka_unit_test(test_two_threads),
+        cmocka_unit_test(test_two_threads),   cmocka_unit_test(test_aliases),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

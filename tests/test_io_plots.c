@@ -14,8 +14,8 @@
 
 #include <cmocka.h>
 
-#include "figures.h"
-#include "plot.h"
+#include "out/figures.h"
+#include "out/plot.h"
 
 enum { FRAMES = 300, CABLES = 2, POSTS = 6 };
 static const double PI = 3.14159265358979323846, G0 = 9.80665;

@@ -1,7 +1,7 @@
 /* Ratings: every penetration boundary (1, 6, 7, 15, 30 m) and speed window edge, and the reference
  * point each standard measures from (data/standards.md). */
 #include "check.h"
-#include "rating.h"
+#include "study/rating.h"
 
 #define MPH 0.44704
 

@@ -1,4 +1,4 @@
-/* report.html's writer (src/io/report_html.c) on a short real run: the markers of a page are filled,
+/* report.html's writer (src/io/out/report_html.c) on a short real run: the markers of a page are filled,
  * the title is HTML-escaped and the data cannot close its <script>, the data has every part the page
  * reads, a page without its data marker is refused, and a long record is subsampled to the budget. The
  * page itself is tested in a browser (report/test/browser.mjs). */
@@ -12,9 +12,9 @@
 
 #include <cmocka.h>
 
-#include "loader.h"
-#include "record.h"
-#include "report_html.h"
+#include "load/loader.h"
+#include "out/record.h"
+#include "out/report_html.h"
 
 typedef struct run {
     cs_loader *loader;

@@ -11,7 +11,7 @@
 
 #include <cmocka.h>
 
-#include "sweep.h"
+#include "study/sweep.h"
 
 #define Z95 1.959963984540054
 

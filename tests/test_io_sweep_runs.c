@@ -14,7 +14,8 @@
 #include <netcdf.h>
 #include <unistd.h>
 
-#include "sweep.h"
+#include "out/sweepout.h"
+#include "study/sweep.h"
 
 enum { RUNS = 3 };
 

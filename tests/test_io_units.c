@@ -10,7 +10,7 @@
 
 #include <cmocka.h>
 
-#include "units.h"
+#include "load/units.h"
 
 static double read_ok(cs_units *u, const char *text, cs_quantity q) {
     double v = NAN;

@@ -210,9 +210,9 @@ static void struck_post_pulls_out_at_its_skin_friction(void **state) {
 /* Work in, energy out: once struck, a post takes exactly the work the face does on it, whatever the
  * face does. The truck's pose is then driven along a path that pushes on (1 mm a step), sinks (0.3 mm),
  * rolls and yaws (0.5 mrad each); the work of the post's force and moment on the truck (trapezoid
- * rule) must equal the post's stored energy plus its plastic work within 1e-3. With the lean following
- * the face's current height and the push horizontal along the heading (until session 9), sinking and
- * rolling turned the post for nothing (2,936 J taken for 3,712 J of work). */
+ * rule) must equal the post's stored energy plus its plastic work within 1e-3. A lean that followed
+ * the face's current height, with the push horizontal along the heading, would let sinking and rolling
+ * turn the post for nothing (2,936 J taken for 3,712 J of work). */
 static void struck_post_takes_the_work_the_face_does(void **state) {
     (void)state;
     fixture fx;

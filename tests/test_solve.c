@@ -92,7 +92,7 @@ static jac_check check_jacobian(const cs_model *m, cs_state *s) {
 
 /* At the install (no contact), then every 40 steps through the crash until the ropes break: every
  * entry within 1e-4 of its row's largest. Measured: 1e-7 to 2e-6 of a row (the quotients' round-off),
- * 1.9e-5 at step 400 (2.7e-5 before session 17's 1e-3 Fu rounding), where the plastic strain that slides in
+ * 1.9e-5 at step 400, where the plastic strain that slides in
  * with the rope switches side at a sticking support (a kink the solver's one-sided quotient and this central
  * one straddle differently). Leaving out the turning angle's gradient makes 1.2e-4; terms under ~1e-6 of a
  * row (the axis' own turning, the rope stiffness' change with the spans' length) are below what this

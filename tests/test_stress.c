@@ -107,9 +107,9 @@ static void random_designs_run_clean(void **state) {
 }
 
 /* Designs whose ledger once missed 2% and now balances, kept as regressions: 142 and 195, where a
- * struck post leaves the ropes' paths and the stored energy it releases went unbooked until session 8
+ * struck post leaves the ropes' paths and the stored energy it releases once went unbooked
  * (docs/theory.md, "A step", 5); 76, 78 and 105, where the barrier snaps to a lower equilibrium within
- * one step (-2.7% each until session 9), and 99, where a step's end state booked more friction and
+ * one step (once -2.7% each), and 99, where a step's end state booked more friction and
  * plastic work than the barrier was given (+2.2%) (docs/theory.md, "A step", following the path);
  * 583, 4765 and 7855, small cars under the ropes pushing a post whose push did less work than the post
  * took (+10%, +24%, and the energy guard's error) until the push became the gradient of the post's work

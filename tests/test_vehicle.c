@@ -55,7 +55,7 @@ static void rolling_freely_keeps_its_speed(void **state) {
 /* The 50-ms average deceleration of a run that ends before its first window is full: the window from
  * the run's start with the last speed held, (v_first - v_end) / 50 ms; here v(t) = v0 - mu_r g t over the
  * 30 ms between the first and last recorded speeds (0.6 mu_r g). A run long enough gives mu_r g itself.
- * Until session 17 the short run reported 0 g. */
+ * Without that window the short run would report 0 g. */
 static void short_run_has_its_window_average(void **state) {
     (void)state;
     fixture fx;

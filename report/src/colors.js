@@ -1,4 +1,4 @@
-// The tension colour map of the PNG figures (cs_plot_colormap in src/io/plot.c): blue, cyan, green,
+// The tension colour map of the PNG figures (cs_plot_colormap in src/io/out/plot.c): blue, cyan, green,
 // orange, red for 0 to 1.
 const STOPS = [
   [0.23, 0.3, 0.75],

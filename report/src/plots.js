@@ -4,7 +4,7 @@ import uPlot from 'uplot';
 import { el } from './summary.js';
 import { G0, MPH, FT, KIP, KIP_FT, fmt } from './units.js';
 
-// The palette of the PNG figures (src/io/plot.c), so that cable k has the same colour everywhere.
+// The palette of the PNG figures (src/io/out/plot.c), so that cable k has the same colour everywhere.
 export const PALETTE = ['#1f78b5', '#e6730d', '#2b992b', '#cc2629', '#8c5cbd', '#8c5749', '#d966b8', '#737373', '#b3b31a', '#17b3c7'];
 
 function niceStep(span, count) {

@@ -43,7 +43,7 @@ export function postState(status) {
   return status === 0 ? 'elastic' : status <= 2 ? 'yielding' : 'failed';
 }
 
-// The schematic body as in the PNG snapshots (src/io/figures.c): front face (crushed), rear, half
+// The schematic body as in the PNG snapshots (src/io/out/figures.c): front face (crushed), rear, half
 // width, face bottom and top, axles, wheels; body frame x forward, z up from the CG. The model has no
 // overall length: the rear overhang is taken equal to the front one.
 function body(v, crush) {

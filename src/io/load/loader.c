@@ -48,6 +48,10 @@ cs_loader *cs_loader_create(const char *data_dir, char *why, size_t why_size) {
     return l;
 }
 
+const char *cs_loader_data_dir(const cs_loader *l) {
+    return l->data_dir;
+}
+
 /* Free the overrides' texts (the array stays for the next ones). */
 static void drop_sets(cs_loader *l) {
     for (int i = 0; i < l->set_count; i++) {
@@ -68,7 +72,7 @@ static void drop_arena_to(cs_loader *l, struct cs_chunk *keep) {
 
 void cs_loader_reset(cs_loader *l) {
     for (int i = 0; i < l->file_count; i++)
-        cs_yposmap_free(&l->files[i].map);
+        cs_ytree_free(&l->files[i].tree);
     free(l->files);
     for (int i = 0; i < l->error_count; i++)
         free(l->errors[i].text);
@@ -140,7 +144,7 @@ void cs_err_node(cs_loader *l, const cs_node *at, int at_key, const char *fmt, .
     va_end(ap);
     int line = 1, col = 1;
     if (at->source >= 0) {
-        const cs_ypos *p = cs_yposmap_find(&l->files[at->source].map, at->path);
+        const cs_ynode *p = at->at;
         if (p) {
             line = at_key ? p->key_line : p->line;
             col = at_key ? p->key_col : p->col;

@@ -1,5 +1,5 @@
-/* Model files: read (YAML via libcyaml, units via udunits2), resolve parts and file references, apply
- * --set overrides, check, and fill the engine's definition structs. Every problem is collected as
+/* Model files: read (YAML through yamltree.h, units via udunits2), resolve parts and file references,
+ * apply --set overrides, check, and fill the engine's definition structs. Every problem is collected as
  * "file:line:column: what is wrong (what was expected)". A loader holds all its own state. */
 #ifndef CS_LOADER_H
 #define CS_LOADER_H
@@ -23,6 +23,9 @@ typedef struct cs_model_input {
  * unit database cannot be loaded (why filled). */
 cs_loader *cs_loader_create(const char *data_dir, char *why, size_t why_size);
 void cs_loader_free(cs_loader *loader);
+
+/* The folder of the parts library (data_dir as resolved by cs_loader_create); data/validation/ is in it. */
+const char *cs_loader_data_dir(const cs_loader *loader);
 
 /* Queue an override "PATH=VALUE" for the next load. Returns 0, or -1 (error recorded). */
 int cs_loader_set(cs_loader *loader, const char *assignment);

@@ -5,7 +5,7 @@
 
 #include <stdio.h>
 
-#include "loader.h"
+#include "load/loader.h"
 #include "record.h"
 
 typedef struct cs_wout {

@@ -77,7 +77,7 @@ static int get_list(cs_loader *l, const cs_node *map, const char *key, double *o
 static int given_but_bad(const cs_loader *l, const cs_node *map, const char *key) {
     char path[600];
     snprintf(path, sizeof path, "%s%s%s", map->path, map->path[0] ? "." : "", key);
-    return map->source >= 0 && cs_yposmap_find(&l->files[map->source].map, path) != NULL;
+    return map->source >= 0 && cs_ytree_find(&l->files[map->source].tree, path) != NULL;
 }
 
 static void check_required(cs_loader *l, const cs_node *map) {

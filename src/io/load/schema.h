@@ -1,9 +1,10 @@
 /* The model-file schema: one table per YAML mapping, each field with its kind, quantity, checks, the
- * definition-struct member it fills and its documentation. The loader, the libcyaml schema, the
+ * definition-struct member it fills and its documentation. The loader's shape check, its nodes, the
  * --set paths, the JSON echo of the inputs and docs/file-format.md all come from these tables. */
 #ifndef CS_SCHEMA_H
 #define CS_SCHEMA_H
 
+#include <stddef.h>
 #include <stdio.h>
 
 #include "cablesim/def.h"
@@ -83,6 +84,34 @@ extern const cs_table cs_table_model, cs_table_parts, cs_table_vehicle, cs_table
 
 /* The index of key in t, or -1. */
 int cs_table_find(const cs_table *t, const char *key);
+
+/* ---- model paths ("barrier.cables[0].height"): of --set, of sweep specs, of a file's values ---- */
+
+/* Split the next component off a path: 1 key, 2 [index], 0 end, -1 malformed. */
+int cs_path_next(const char **p, char *key, size_t key_size, long *index);
+
+typedef enum cs_path_fault {
+    CS_PATH_OK = 0,      /* every component walks the schema */
+    CS_PATH_UNKNOWN_KEY, /* a key not in its table (or after a single value: no table) */
+    CS_PATH_NEEDS_INDEX, /* a key right after a list of mappings, with no [index] between */
+    CS_PATH_NO_LIST,     /* an [index] after what is not a list */
+    CS_PATH_MALFORMED    /* not keys and [index] */
+} cs_path_fault;
+
+/* Where a path leads in the schema, as far as it walks it. */
+typedef struct cs_schema_place {
+    const cs_field *field; /* the field whose value the path names (NULL: the whole model) */
+    int item;              /* an entry of that field's list */
+    char skey[256];        /* the schema path: "barrier.cables.height" */
+    cs_path_fault fault;
+    int last;              /* the fault is at the path's last component */
+    const cs_table *table; /* CS_PATH_UNKNOWN_KEY: the table without the key (NULL: none) */
+    char key[64];          /* CS_PATH_UNKNOWN_KEY, CS_PATH_NEEDS_INDEX: that key */
+    long index;            /* CS_PATH_NO_LIST: that index */
+} cs_schema_place;
+
+/* Walk the schema along a path. */
+void cs_schema_walk(const char *path, cs_schema_place *out);
 /* The defaults of a target struct (cs_default_*). */
 void cs_target_defaults(cs_target t, cs_any_def *out);
 /* Print the file-format reference (docs/file-format.md). Returns 0 or -1 on a write error. */

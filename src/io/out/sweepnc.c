@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "sweep.h"
+#include "sweepout.h"
 
 /* A variable of runs.nc: a varied input (in), a result column (col), or, with neither, the run index. */
 typedef struct ncvar {

@@ -7,7 +7,7 @@
 #include "loader.h"
 #include "schema.h"
 #include "units.h"
-#include "yamlpos.h"
+#include "yamltree.h"
 
 /* A value of a model: a scalar, a mapping of a schema table, or a sequence. */
 typedef struct cs_node {
@@ -16,8 +16,9 @@ typedef struct cs_node {
     const char *text;       /* CS_Y_SCALAR */
     struct cs_node **items; /* CS_Y_MAP: [table->count] (NULL: absent); CS_Y_SEQ: [count] */
     int count;
-    int source;       /* file index, or -1 - k for the k-th --set */
-    const char *path; /* document path in that source */
+    int source;         /* file index, or -1 - k for the k-th --set */
+    const char *path;   /* document path in that source */
+    const cs_ynode *at; /* where it is written in that file (NULL: not in a file) */
 } cs_node;
 
 typedef struct cs_lfile {
@@ -25,9 +26,9 @@ typedef struct cs_lfile {
     char *real;       /* canonical path, to find it again */
     const char *data; /* its contents, when loaded from memory (NULL: read real) */
     size_t size;
-    cs_yposmap map; /* where its nodes are */
-    cs_node *root;  /* NULL if it failed to load */
-    int loading;    /* being loaded (a reference cycle if met again) */
+    cs_ytree tree; /* its YAML, each value with its place */
+    cs_node *root; /* NULL if it failed to load */
+    int loading;   /* being loaded (a reference cycle if met again) */
 } cs_lfile;
 
 typedef struct cs_lerror {
@@ -78,8 +79,6 @@ int cs_data_load(cs_loader *l, const char *name, const char *data, size_t size);
 int cs_damaged(const cs_loader *l, const cs_node *n);
 /* The field of a mapping node by key (NULL if absent). */
 const cs_node *cs_node_get(const cs_node *map, const char *key);
-/* Split the next component off a path: 1 key, 2 [index], 0 end, -1 malformed. */
-int cs_path_next(const char **p, char *key, size_t key_size, long *index);
 
 /* Resolve references of a file's model (vehicle/barrier/scenario) into a fresh root. */
 cs_node *cs_resolve_model(cs_loader *l, int file);

@@ -3,7 +3,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "schema.h"
+#include "load/schema.h"
 #include "writers.h"
 
 void cs_json_string(FILE *f, const char *s) {

@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "sweep.h"
+#include "sweepout.h"
 #include "writers.h"
 
 #define Z95 1.959963984540054

@@ -2,6 +2,7 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define N(a) ((int)(sizeof(a) / sizeof((a)[0])))
@@ -265,6 +266,60 @@ int cs_table_find(const cs_table *t, const char *key) {
     for (int i = 0; i < t->count; i++)
         if (strcmp(t->fields[i].key, key) == 0) return i;
     return -1;
+}
+
+int cs_path_next(const char **p, char *key, size_t key_size, long *index) {
+    const char *s = *p;
+    if (*s == '\0') return 0;
+    if (*s == '[') {
+        char *end;
+        long i = strtol(s + 1, &end, 10);
+        if (end == s + 1 || *end != ']' || i < 0) return -1;
+        *index = i;
+        *p = end + 1;
+        if (**p == '.') ++*p;
+        return 2;
+    }
+    size_t n = strcspn(s, ".[");
+    if (n == 0 || n >= key_size) return -1;
+    memcpy(key, s, n);
+    key[n] = '\0';
+    *p = s + n + (s[n] == '.');
+    return 1;
+}
+
+void cs_schema_walk(const char *path, cs_schema_place *out) {
+    memset(out, 0, sizeof *out);
+    const cs_table *t = &cs_table_model;
+    char key[64];
+    long index;
+    int rc;
+    while ((rc = cs_path_next(&path, key, sizeof key, &index)) > 0) {
+        out->last = *path == '\0';
+        if (rc == 2) {
+            if (!out->field || out->item || (out->field->kind != CS_F_SEQ && out->field->kind != CS_F_LIST)) {
+                out->fault = CS_PATH_NO_LIST;
+                out->index = index;
+                return;
+            }
+            out->item = 1;
+            continue;
+        }
+        int under_list = out->field && !out->item && out->field->kind == CS_F_SEQ;
+        int i = t && !under_list ? cs_table_find(t, key) : -1;
+        if (i < 0) {
+            out->fault = under_list ? CS_PATH_NEEDS_INDEX : CS_PATH_UNKNOWN_KEY;
+            out->table = under_list ? NULL : t;
+            snprintf(out->key, sizeof out->key, "%s", key);
+            return;
+        }
+        out->field = &t->fields[i];
+        out->item = 0;
+        t = out->field->sub;
+        size_t n = strlen(out->skey);
+        snprintf(out->skey + n, sizeof out->skey - n, "%s%s", n ? "." : "", key);
+    }
+    if (rc < 0) out->fault = CS_PATH_MALFORMED;
 }
 
 void cs_target_defaults(cs_target t, cs_any_def *out) {

@@ -1,0 +1,673 @@
+/* The sweep spec: a YAML file read through the loader's YAML tree (yamltree.h), like the model files.
+ * The keys of `set` and `vary` are model paths; every value is checked, each error at its line:column. */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "grow.h"
+#include "loader_int.h"
+#include "study/sweep.h"
+#include "sweepspec.h"
+
+/* ---- errors ---- */
+
+/* The line and column an error names in the spec (LONG_MAX: none). */
+static void error_place(const cs_sweep_spec *s, const char *e, long *line, long *col) {
+    size_t n = strlen(s->file);
+    *line = LONG_MAX, *col = 0;
+    if (strncmp(e, s->file, n) != 0 || e[n] != ':') return;
+    char *end;
+    long l = strtol(e + n + 1, &end, 10);
+    if (*end != ':') return;
+    *line = l;
+    *col = strtol(end + 1, NULL, 10);
+}
+
+static void add_error(cs_sweep_spec *s, int line, int col, const char *fmt, va_list ap) {
+    char msg[900], text[1400];
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    if (line > 0)
+        snprintf(text, sizeof text, "%s:%d:%d: %s", s->file, line, col, msg);
+    else
+        snprintf(text, sizeof text, "%s", msg);
+    if (cs_grow(&s->errors, &s->error_capacity, s->error_count, sizeof *s->errors) != 0) return;
+    char *copy = strdup(text);
+    if (!copy) return;
+    /* keep them in the order of their places in the spec; those with none last, as they came */
+    long l, c, li, ci;
+    error_place(s, copy, &l, &c);
+    int at = s->error_count;
+    while (at > 0 && (error_place(s, s->errors[at - 1], &li, &ci), li > l || (li == l && ci > c)))
+        at--;
+    memmove(&s->errors[at + 1], &s->errors[at], (size_t)(s->error_count - at) * sizeof *s->errors);
+    s->errors[at] = copy;
+    s->error_count++;
+}
+
+void cs_sweep_error(cs_sweep_spec *s, int line, int col, const char *fmt, ...) {
+    va_list ap;
+    va_start(ap, fmt);
+    add_error(s, line, col, fmt, ap);
+    va_end(ap);
+}
+
+/* ---- the file's tree ---- */
+
+enum { MAX_DEPTH = 32 }; /* how deep a spec's collections may nest: far more than a spec's own */
+
+static const char *const top_keys[] = {"model",         "method", "runs", "seed",
+                                       "vehicle_class", "netcdf", "set",  "vary"};
+enum { TOP_MODEL, TOP_METHOD, TOP_RUNS, TOP_SEED, TOP_CLASS, TOP_NETCDF, TOP_SET, TOP_VARY, TOP_COUNT };
+static const char *const param_keys[] = {"dist", "mean", "sd", "min", "max", "from", "to", "step", "count"};
+enum { P_DIST, P_MEAN, P_SD, P_MIN, P_MAX, P_FROM, P_TO, P_STEP, P_COUNT, P_N };
+
+/* A scalar's text; NULL for a node that is absent or not a scalar. */
+static const char *text(const cs_ynode *n) {
+    return n && n->kind == CS_Y_SCALAR ? n->text : NULL;
+}
+
+static int scalar_map(const cs_ynode *n) {
+    if (!n || n->kind != CS_Y_MAP) return 0;
+    for (int i = 0; i < n->count; i++)
+        if (n->kids[i]->kind != CS_Y_SCALAR) return 0;
+    return 1;
+}
+
+static int scalar_seq(const cs_ynode *n) {
+    if (!n || n->kind != CS_Y_SEQ) return 0;
+    for (int i = 0; i < n->count; i++)
+        if (n->kids[i]->kind != CS_Y_SCALAR) return 0;
+    return 1;
+}
+
+static int known_param(const char *key) {
+    for (int p = 0; p < P_N; p++)
+        if (strcmp(key, param_keys[p]) == 0) return p;
+    return -1;
+}
+
+int cs_sweep_is_spec(const char *path) {
+    cs_ytree tree;
+    cs_ytree_read(&tree, path, NULL, 0, MAX_DEPTH); /* what was read before an error counts */
+    int found = tree.count > 0 && cs_ynode_get(&tree.items[0], "vary") != NULL;
+    cs_ytree_free(&tree);
+    return found;
+}
+
+/* The value given earlier at the key of a mapping's value n, if there is one. */
+static const cs_ynode *repeated(const cs_ynode *map, const cs_ynode *n) {
+    const cs_ynode *first = n->key ? cs_ynode_get(map, n->key) : NULL;
+    return first != n ? first : NULL;
+}
+
+/* Is the first value at a key of the spec's mapping one the spec reads (its shape right)? */
+static int top_read(const cs_ynode *n) {
+    if (!n) return 0;
+    int k = 0;
+    while (k < TOP_COUNT && strcmp(n->key, top_keys[k]) != 0)
+        k++;
+    if (k < TOP_SET) return n->kind == CS_Y_SCALAR;
+    if (k == TOP_SET) return scalar_map(n) && n->count > 0;
+    return k == TOP_VARY && n->kind == CS_Y_MAP && n->count > 0;
+}
+
+/* A key given twice where its value is read (one of the spec's own values, an entry of `set` or `vary`, a
+ * parameter of a `vary` entry) leaves unclear which value is meant: the spec is then read no further than
+ * its shapes. Keys repeated where nothing is read (an unknown key, a value whose shape was refused) only
+ * have their messages. */
+static int given_twice(const cs_ynode *root) {
+    for (int i = 0; i < root->count; i++)
+        if (top_read(repeated(root, root->kids[i]))) return 1;
+    const cs_ynode *set = cs_ynode_get(root, "set"), *vary = cs_ynode_get(root, "vary");
+    for (int i = 0; top_read(set) && i < set->count; i++)
+        if (repeated(set, set->kids[i])) return 1;
+    for (int i = 0; top_read(vary) && i < vary->count; i++) {
+        const cs_ynode *e = vary->kids[i], *first = repeated(vary, e);
+        if (first && (scalar_seq(first) || first->kind == CS_Y_MAP)) return 1;
+        for (int q = 0; !first && e->kind == CS_Y_MAP && q < e->count; q++) {
+            const cs_ynode *p = repeated(e, e->kids[q]);
+            if (p && known_param(p->key) >= 0 && p->kind == CS_Y_SCALAR) return 1;
+        }
+    }
+    return 0;
+}
+
+/* ---- shapes ---- */
+
+static void check_shapes(cs_sweep_spec *s, const cs_ynode *root) {
+    for (int i = 0; i < root->count; i++) {
+        const cs_ynode *n = root->kids[i];
+        int k = 0;
+        while (k < TOP_COUNT && strcmp(n->key, top_keys[k]) != 0)
+            k++;
+        if (k == TOP_COUNT) {
+            cs_sweep_error(s, n->key_line, n->key_col,
+                           "unknown key '%s' (expected one of: model, method, runs, seed, vehicle_class, "
+                           "netcdf, set, vary)",
+                           n->key);
+        } else if (k < TOP_SET && n->kind != CS_Y_SCALAR) {
+            cs_sweep_error(s, n->line, n->col, "%s is %s (expected a single value)", n->key,
+                           cs_ykind_name(n->kind));
+        } else if (k >= TOP_SET && n->kind != CS_Y_MAP) {
+            cs_sweep_error(s, n->line, n->col, "%s is %s (expected a mapping of model paths, e.g. %s)",
+                           n->key, cs_ykind_name(n->kind),
+                           k == TOP_SET ? "scenario.t_end: 0.5 s" : "scenario.speed: [35 mph, 40 mph]");
+        } else if (k == TOP_SET) {
+            for (int j = 0; j < n->count; j++)
+                if (n->kids[j]->kind != CS_Y_SCALAR)
+                    cs_sweep_error(s, n->kids[j]->line, n->kids[j]->col,
+                                   "set: %s is %s (expected a single value, as --set)", n->kids[j]->key,
+                                   cs_ykind_name(n->kids[j]->kind));
+        } else if (k == TOP_VARY) {
+            for (int j = 0; j < n->count; j++) {
+                const cs_ynode *e = n->kids[j];
+                if (e->kind == CS_Y_SEQ) {
+                    for (int q = 0; q < e->count; q++)
+                        if (e->kids[q]->kind != CS_Y_SCALAR)
+                            cs_sweep_error(s, e->kids[q]->line, e->kids[q]->col,
+                                           "vary: %s: a level is %s (expected a single value)", e->key,
+                                           cs_ykind_name(e->kids[q]->kind));
+                } else if (e->kind == CS_Y_MAP) {
+                    for (int q = 0; q < e->count; q++) {
+                        const cs_ynode *p = e->kids[q];
+                        if (known_param(p->key) < 0)
+                            cs_sweep_error(
+                                s, p->key_line, p->key_col,
+                                "vary: %s: unknown key '%s' (expected one of: dist, mean, sd, min, "
+                                "max; or from, to, step, count)",
+                                e->key, p->key);
+                        else if (p->kind != CS_Y_SCALAR)
+                            cs_sweep_error(s, p->line, p->col, "vary: %s: %s is %s (expected a single value)",
+                                           e->key, p->key, cs_ykind_name(p->kind));
+                    }
+                } else {
+                    cs_sweep_error(
+                        s, e->line, e->col,
+                        "vary: %s is %s (expected a list of values, {from, to, step} or {dist: ...})", e->key,
+                        cs_ykind_name(e->kind));
+                }
+            }
+        }
+    }
+}
+
+/* ---- model paths ---- */
+
+/* Walk the schema along a --set path to one value. 0 with v's kind filled, or -1 with why filled. */
+static int path_field(const char *path, cs_sweep_var *v, char *why, size_t why_size) {
+    cs_schema_place at;
+    cs_schema_walk(path, &at);
+    const cs_field *f = at.field;
+    if (at.fault == CS_PATH_NEEDS_INDEX)
+        snprintf(why, why_size, "'%s' needs an index before '%s' (e.g. %s[0].%s)", f->key, at.key, f->key,
+                 at.key);
+    else if (at.fault == CS_PATH_UNKNOWN_KEY)
+        snprintf(why, why_size, "unknown key '%s'%s%s (expected a model path, as --set)", at.key,
+                 at.table ? " in " : "", at.table ? at.table->name : "");
+    else if (at.fault == CS_PATH_NO_LIST)
+        snprintf(why, why_size, "no list before [%ld] (expected a model path, as --set)", at.index);
+    else if (at.fault == CS_PATH_MALFORMED || !f)
+        snprintf(why, why_size, "malformed path (expected keys and [index], e.g. barrier.cables[0].height)");
+    if (at.fault != CS_PATH_OK || !f) return -1;
+    int item = at.item;
+    int one = f->kind == CS_F_QTY || f->kind == CS_F_INT || f->kind == CS_F_TEXT || f->kind == CS_F_ENUM ||
+              f->kind == CS_F_PART || (f->kind == CS_F_LIST && item);
+    if (!one) {
+        snprintf(why, why_size, "'%s' is not a single value (expected a path to one value, as --set)",
+                 f->key);
+        return -1;
+    }
+    v->numeric = f->kind == CS_F_QTY || f->kind == CS_F_INT || f->kind == CS_F_LIST;
+    v->integer = f->kind == CS_F_INT;
+    v->q = f->kind == CS_F_INT ? CS_Q_NUMBER : f->q;
+    v->unit = v->numeric ? cs_quantity_get(v->q)->label : "";
+    return 0;
+}
+
+/* ---- values ---- */
+
+static int read_value(cs_sweep_spec *s, cs_units *u, const cs_sweep_var *v, const char *text, int line,
+                      int col, const char *what, double *out) {
+    char why[256];
+    if (v->integer) {
+        char *end;
+        errno = 0;
+        long n = strtol(text, &end, 10);
+        while (*end == ' ')
+            end++;
+        if (end == text || *end || errno) {
+            cs_sweep_error(s, line, col, "vary: %s: %s '%s' is not a whole number", v->path, what, text);
+            return -1;
+        }
+        *out = (double)n;
+        return 0;
+    }
+    if (cs_units_read(u, text, v->q, out, why, sizeof why) != 0) {
+        cs_sweep_error(s, line, col, "vary: %s: %s: %s (expected a %s, e.g. \"%s\")", v->path, what, why,
+                       cs_quantity_get(v->q)->name, cs_quantity_get(v->q)->example);
+        return -1;
+    }
+    return 0;
+}
+
+static int add_level(cs_sweep_var *v, double x, const char *text, int line, int col) {
+    int n = v->level_count;
+    if (cs_grow_one(&v->levels, n, sizeof *v->levels) != 0 ||
+        cs_grow_one(&v->texts, n, sizeof *v->texts) != 0 ||
+        cs_grow_one(&v->level_line, n, sizeof *v->level_line) != 0 ||
+        cs_grow_one(&v->level_col, n, sizeof *v->level_col) != 0 || !(v->texts[n] = strdup(text)))
+        return -1;
+    v->levels[n] = x, v->level_line[n] = line, v->level_col[n] = col;
+    v->level_count++;
+    return 0;
+}
+
+enum { MAX_LEVELS = 100000 };
+
+/* A grid entry: a list of values, or {from, to, step | count}. */
+static void read_grid(cs_sweep_spec *s, cs_units *u, cs_sweep_var *v, const cs_ynode *e) {
+    if (e->kind == CS_Y_SEQ) {
+        size_t used = (size_t)snprintf(v->desc, sizeof v->desc, "levels:");
+        for (int k = 0; k < e->count && used < sizeof v->desc; k++)
+            used += (size_t)snprintf(v->desc + used, sizeof v->desc - used, "%s %s", k ? "," : "",
+                                     e->kids[k]->text);
+        if (e->count == 0)
+            cs_sweep_error(s, e->line, e->col, "vary: %s: no values (expected a list of values)", v->path);
+        for (int k = 0; k < e->count; k++) {
+            const cs_ynode *it = e->kids[k];
+            double x = 0;
+            if (v->numeric && read_value(s, u, v, it->text, it->line, it->col, "value", &x) != 0) continue;
+            if (add_level(v, x, it->text, it->line, it->col) != 0) return;
+        }
+        return;
+    }
+    const cs_ynode *from = cs_ynode_get(e, "from"), *to = cs_ynode_get(e, "to"),
+                   *step = cs_ynode_get(e, "step"), *count = cs_ynode_get(e, "count");
+    for (int p = P_DIST; p <= P_MAX; p++) {
+        const cs_ynode *bad = cs_ynode_get(e, param_keys[p]);
+        if (bad)
+            cs_sweep_error(s, bad->key_line, bad->key_col, "vary: %s: '%s' does not go with from/to", v->path,
+                           bad->key);
+    }
+    if (!v->numeric) {
+        cs_sweep_error(s, e->line, e->col, "vary: %s is text (expected a list of its values)", v->path);
+        return;
+    }
+    if (!from || !to || (!step) == (!count)) {
+        cs_sweep_error(s, e->line, e->col, "vary: %s: a range needs from, to and one of step or count",
+                       v->path);
+        return;
+    }
+    double a, b, h = 0;
+    long n = 0;
+    int ok = read_value(s, u, v, text(from), from->line, from->col, "from", &a) == 0;
+    ok &= read_value(s, u, v, text(to), to->line, to->col, "to", &b) == 0;
+    if (step) {
+        ok &= read_value(s, u, v, text(step), step->line, step->col, "step", &h) == 0;
+        if (ok && !(h > 0)) {
+            cs_sweep_error(s, step->line, step->col, "vary: %s: step must be above zero", v->path);
+            ok = 0;
+        }
+        if (ok && b < a) {
+            cs_sweep_error(s, to->line, to->col, "vary: %s: to is below from (expected from <= to)", v->path);
+            ok = 0;
+        }
+        if (ok) {
+            double span = (b - a) / h;
+            if (span > MAX_LEVELS) {
+                cs_sweep_error(s, step->line, step->col, "vary: %s: more than %d levels", v->path,
+                               MAX_LEVELS);
+                ok = 0;
+            }
+            n = ok ? (long)floor(span * (1 + 1e-12) + 1e-9) + 1 : 0;
+        }
+    } else {
+        char *end;
+        n = strtol(text(count), &end, 10);
+        if (*end || n < 1 || n > MAX_LEVELS) {
+            cs_sweep_error(s, count->line, count->col, "vary: %s: count must be a whole number from 1 to %d",
+                           v->path, MAX_LEVELS);
+            ok = 0;
+        }
+    }
+    snprintf(v->desc, sizeof v->desc, "from %s to %s, %s %s", text(from), text(to), step ? "step" : "count",
+             text(step ? step : count));
+    for (long k = 0; ok && k < n; k++) {
+        double x = step ? a + (double)k * h : n == 1 ? a : a + (b - a) * (double)k / (double)(n - 1);
+        if (v->integer) x = round(x);
+        char text[64];
+        snprintf(text, sizeof text, "%.12g", x);
+        if (add_level(v, x, text, from->line, from->col) != 0) return;
+    }
+}
+
+/* A distribution entry {dist, mean, sd, min, max}. */
+static void read_dist(cs_sweep_spec *s, cs_units *u, cs_sweep_var *v, const cs_ynode *e) {
+    const cs_ynode *dn = cs_ynode_get(e, "dist");
+    for (int p = P_FROM; p < P_N; p++) {
+        const cs_ynode *bad = cs_ynode_get(e, param_keys[p]);
+        if (bad)
+            cs_sweep_error(s, bad->key_line, bad->key_col, "vary: %s: '%s' does not go with dist", v->path,
+                           bad->key);
+    }
+    if (!v->numeric || v->integer) {
+        cs_sweep_error(s, dn->line, dn->col, "vary: %s is %s (a distribution needs a quantity)", v->path,
+                       v->integer ? "a whole number" : "text");
+        return;
+    }
+    const char *name = text(dn);
+    int truncated = strcmp(name, "truncated_normal") == 0;
+    cs_dist *t = &v->dist;
+    if (strcmp(name, "uniform") == 0)
+        t->kind = CS_DIST_UNIFORM;
+    else if (strcmp(name, "normal") == 0 || truncated)
+        t->kind = CS_DIST_NORMAL;
+    else if (strcmp(name, "lognormal") == 0)
+        t->kind = CS_DIST_LOGNORMAL;
+    else {
+        cs_sweep_error(
+            s, dn->line, dn->col,
+            "vary: %s: unknown dist '%s' (expected uniform, normal, lognormal or truncated_normal)", v->path,
+            name);
+        return;
+    }
+    double val[P_N];
+    int given[P_N] = {0}, ok = 1;
+    size_t used = (size_t)snprintf(v->desc, sizeof v->desc, "%s", name);
+    for (int p = P_MEAN; p <= P_MAX; p++) {
+        const cs_ynode *pn = cs_ynode_get(e, param_keys[p]);
+        if (!pn) continue;
+        if (used < sizeof v->desc)
+            used += (size_t)snprintf(v->desc + used, sizeof v->desc - used, "%s %s %s",
+                                     used > strlen(name) ? "," : ":", param_keys[p], pn->text);
+        given[p] = 1;
+        if (read_value(s, u, v, pn->text, pn->line, pn->col, param_keys[p], &val[p]) != 0) ok = 0;
+    }
+    static const char *const needs[] = {"min and max", "mean and sd", "mean and sd"};
+    int need_ab = t->kind == CS_DIST_UNIFORM ? given[P_MIN] && given[P_MAX] : given[P_MEAN] && given[P_SD];
+    if (!need_ab) {
+        cs_sweep_error(s, dn->line, dn->col, "vary: %s: dist %s needs %s", v->path, name, needs[t->kind]);
+        return;
+    }
+    if (t->kind == CS_DIST_UNIFORM && (given[P_MEAN] || given[P_SD])) {
+        const cs_ynode *bad = cs_ynode_get(e, given[P_MEAN] ? "mean" : "sd");
+        cs_sweep_error(s, bad->key_line, bad->key_col, "vary: %s: dist uniform takes min and max only",
+                       v->path);
+        return;
+    }
+    if (truncated && !given[P_MIN] && !given[P_MAX]) {
+        cs_sweep_error(s, dn->line, dn->col, "vary: %s: dist truncated_normal needs min, max or both",
+                       v->path);
+        return;
+    }
+    if (!ok) return;
+    t->lo = given[P_MIN] ? val[P_MIN] : -HUGE_VAL;
+    t->hi = given[P_MAX] ? val[P_MAX] : HUGE_VAL;
+    const cs_ynode *at = cs_ynode_get(e, given[P_MAX] ? "max" : "dist");
+    if (t->kind == CS_DIST_UNIFORM) {
+        t->a = val[P_MIN], t->b = val[P_MAX];
+    } else if (!(val[P_SD] > 0)) {
+        at = cs_ynode_get(e, "sd");
+        cs_sweep_error(s, at->line, at->col, "vary: %s: sd must be above zero", v->path);
+        return;
+    } else if (t->kind == CS_DIST_NORMAL) {
+        t->a = val[P_MEAN], t->b = val[P_SD];
+    } else {
+        if (!(val[P_MEAN] > 0)) {
+            at = cs_ynode_get(e, "mean");
+            cs_sweep_error(s, at->line, at->col, "vary: %s: a lognormal mean must be above zero", v->path);
+            return;
+        }
+        double cv = val[P_SD] / val[P_MEAN], s2 = log1p(cv * cv);
+        t->b = sqrt(s2);
+        t->a = log(val[P_MEAN]) - 0.5 * s2;
+    }
+    if (!(t->lo < t->hi)) {
+        cs_sweep_error(s, at->line, at->col, "vary: %s: max must be above min", v->path);
+        return;
+    }
+    if (cs_dist_prepare(t) != 0)
+        cs_sweep_error(s, at->line, at->col, "vary: %s: min and max leave no probability of the distribution",
+                       v->path);
+}
+
+/* ---- the spec ---- */
+
+static const char *const class_names[] = {"C", "PU", "M", "H"};
+
+static void read_scalars(cs_sweep_spec *s, const cs_ynode *root) {
+    const cs_ynode *n;
+    if (!(n = cs_ynode_get(root, "model")))
+        cs_sweep_error(s, root->line, root->col, "no model (expected model: FILE, the base model file)");
+    else if (text(n)) {
+        const char *m = text(n);
+        const char *slash = strrchr(s->file, '/');
+        size_t dir = m[0] == '/' || !slash ? 0 : (size_t)(slash - s->file) + 1;
+        size_t len = dir + strlen(m) + 1;
+        if ((s->model = malloc(len))) snprintf(s->model, len, "%.*s%s", (int)dir, s->file, m);
+        s->model_line = n->line, s->model_col = n->col;
+        if (s->model && access(s->model, R_OK) != 0)
+            cs_sweep_error(s, n->line, n->col,
+                           "model: cannot open '%s' (expected a readable model file, relative "
+                           "to the spec's folder)",
+                           m);
+    }
+    static const char *const methods[] = {"grid", "monte_carlo", "latin_hypercube"};
+    if (!(n = cs_ynode_get(root, "method"))) {
+        cs_sweep_error(s, root->line, root->col,
+                       "no method (expected method: grid, monte_carlo or latin_hypercube)");
+    } else if (text(n)) {
+        int k = 0;
+        while (k < 3 && strcmp(text(n), methods[k]) != 0)
+            k++;
+        if (k == 3)
+            cs_sweep_error(s, n->line, n->col,
+                           "method: unknown '%s' (expected grid, monte_carlo or latin_hypercube)", text(n));
+        s->method = k == 3 ? CS_SWEEP_GRID : (cs_sweep_method)k;
+    }
+    n = cs_ynode_get(root, "runs");
+    if (text(n)) {
+        char *end;
+        errno = 0;
+        long r = strtol(text(n), &end, 10);
+        if (*end || errno || r < 1 || r > CS_SWEEP_MAX_RUNS)
+            cs_sweep_error(s, n->line, n->col, "runs: '%s' (expected a whole number from 1 to %d)", text(n),
+                           CS_SWEEP_MAX_RUNS);
+        s->runs = r;
+    }
+    n = cs_ynode_get(root, "seed");
+    s->seed = 1;
+    if (text(n)) {
+        char *end;
+        errno = 0;
+        const char *t = text(n);
+        unsigned long long v = strtoull(t, &end, 10);
+        if (*end || errno || end == t || t[0] == '-')
+            cs_sweep_error(s, n->line, n->col, "seed: '%s' (expected a whole number from 0 to 2^64 - 1)", t);
+        s->seed = (uint64_t)v;
+    }
+    n = cs_ynode_get(root, "vehicle_class");
+    if (text(n)) {
+        int k = 0;
+        while (k < 4 && strcmp(text(n), class_names[k]) != 0)
+            k++;
+        if (k == 4)
+            cs_sweep_error(s, n->line, n->col,
+                           "vehicle_class: unknown '%s' (expected an ASTM F2656 class: C, PU, M or H)",
+                           text(n));
+        else
+            snprintf(s->vehicle_class, sizeof s->vehicle_class, "%s", class_names[k]);
+    }
+    n = cs_ynode_get(root, "netcdf");
+    if (text(n)) {
+        const char *t = text(n);
+        s->netcdf = strcmp(t, "true") == 0;
+        if (!s->netcdf && strcmp(t, "false") != 0)
+            cs_sweep_error(s, n->line, n->col, "netcdf: '%s' (expected true or false)", t);
+    }
+}
+
+static int push_set(cs_sweep_spec *s, const char *path, const char *value, int line, int col) {
+    int n = s->set_count;
+    size_t len = strlen(path) + strlen(value) + 2;
+    if (cs_grow_one(&s->sets, n, sizeof *s->sets) != 0 ||
+        cs_grow_one(&s->set_line, n, sizeof *s->set_line) != 0 ||
+        cs_grow_one(&s->set_col, n, sizeof *s->set_col) != 0 || !(s->sets[n] = malloc(len)))
+        return -1;
+    snprintf(s->sets[n], len, "%s=%s", path, value);
+    s->set_line[n] = line, s->set_col[n] = col;
+    s->set_count++;
+    return 0;
+}
+
+int cs_sweep_spec_add_set(cs_sweep_spec *s, const char *assignment) {
+    const char *eq = strchr(assignment, '=');
+    if (!eq || eq == assignment) {
+        cs_sweep_error(s, 0, 0, "--set %s: expected PATH=VALUE, e.g. scenario.speed=\"35 mph\"", assignment);
+        return -1;
+    }
+    char path[512];
+    snprintf(path, sizeof path, "%.*s", (int)(eq - assignment), assignment);
+    return push_set(s, path, eq + 1, 0, 0);
+}
+
+static void read_vary(cs_sweep_spec *s, cs_units *u, const cs_ynode *root) {
+    const cs_ynode *vary = cs_ynode_get(root, "vary");
+    if (!vary) {
+        cs_sweep_error(s, root->line, root->col,
+                       "no vary (expected vary: a mapping of model paths to values)");
+        return;
+    }
+    if (vary->kind != CS_Y_MAP) return;
+    if (vary->count == 0 || vary->count > CS_SWEEP_MAX_VARS) {
+        cs_sweep_error(s, vary->line, vary->col, "vary: %d entries (expected 1 to %d)", vary->count,
+                       CS_SWEEP_MAX_VARS);
+        return;
+    }
+    if (!(s->vars = calloc((size_t)vary->count, sizeof *s->vars))) return;
+    for (int i = 0; i < vary->count; i++) {
+        const cs_ynode *e = vary->kids[i];
+        cs_sweep_var *v = &s->vars[s->var_count++];
+        v->line = e->key_line, v->col = e->key_col;
+        if (!(v->path = strdup(e->key))) return;
+        char why[300];
+        if (path_field(v->path, v, why, sizeof why) != 0) {
+            cs_sweep_error(s, e->key_line, e->key_col, "vary: %s: %s", v->path, why);
+            continue;
+        }
+        if (!scalar_seq(e) && !scalar_map(e)) continue; /* its shape was reported */
+        const cs_ynode *dn = cs_ynode_get(e, "dist");
+        if (dn && s->method == CS_SWEEP_GRID) {
+            cs_sweep_error(s, dn->key_line, dn->key_col,
+                           "vary: %s: a distribution needs method monte_carlo or "
+                           "latin_hypercube (expected a list or from/to/step with method grid)",
+                           v->path);
+        } else if (!dn && s->method != CS_SWEEP_GRID) {
+            cs_sweep_error(s, e->line, e->col,
+                           "vary: %s: %s needs method grid (expected {dist: ...} with method %s)", v->path,
+                           e->kind == CS_Y_SEQ ? "a list of values" : "a range",
+                           s->method == CS_SWEEP_MONTE_CARLO ? "monte_carlo" : "latin_hypercube");
+        } else if (dn) {
+            read_dist(s, u, v, e);
+        } else {
+            read_grid(s, u, v, e);
+        }
+    }
+}
+
+static void check_runs(cs_sweep_spec *s, const cs_ynode *root) {
+    const cs_ynode *runs = cs_ynode_get(root, "runs");
+    if (s->method == CS_SWEEP_GRID) {
+        if (runs)
+            cs_sweep_error(s, runs->key_line, runs->key_col,
+                           "runs: not used by a grid (its runs are every combination of the levels)");
+        double n = 1;
+        for (int i = 0; i < s->var_count; i++)
+            n *= s->vars[i].level_count > 0 ? s->vars[i].level_count : 1;
+        if (n > CS_SWEEP_MAX_RUNS) {
+            const cs_ynode *vary = cs_ynode_get(root, "vary");
+            cs_sweep_error(s, vary->line, vary->col, "vary: the grid has %.0f runs (expected at most %d)", n,
+                           CS_SWEEP_MAX_RUNS);
+        }
+        s->runs = (long)fmin(n, CS_SWEEP_MAX_RUNS);
+    } else if (!runs) {
+        cs_sweep_error(s, root->line, root->col, "no runs (expected runs: N for method %s)",
+                       s->method == CS_SWEEP_MONTE_CARLO ? "monte_carlo" : "latin_hypercube");
+    }
+}
+
+cs_sweep_spec *cs_sweep_spec_read(const char *path, cs_units *units) {
+    cs_sweep_spec *s = calloc(1, sizeof *s);
+    if (!s || !(s->file = strdup(path))) {
+        free(s);
+        return NULL;
+    }
+    s->seed = 1;
+    cs_ytree tree;
+    int rc = cs_ytree_read(&tree, path, NULL, 0, MAX_DEPTH);
+    for (int i = 1; i < tree.count; i++) {
+        const cs_ynode *n = &tree.items[i], *first = repeated(&tree.items[n->parent], n);
+        if (first)
+            cs_sweep_error(s, n->key_line, n->key_col, "%s: given twice (first at %d:%d)", n->key,
+                           first->key_line, first->key_col);
+    }
+    const cs_ynode *root = tree.count > 0 ? &tree.items[0] : NULL;
+    if (rc != 0 && tree.open_errno)
+        cs_sweep_error(s, 0, 0, "%s: cannot open the file: %s (expected a readable sweep spec)", path,
+                       strerror(tree.open_errno));
+    else if (rc != 0)
+        cs_sweep_error(s, tree.error_line, tree.error_col, "%s", tree.error);
+    else if (!root)
+        cs_sweep_error(s, 1, 1, "the file is empty (expected a mapping: model, method, vary...)");
+    else if (root->kind != CS_Y_MAP)
+        cs_sweep_error(s, root->line, root->col,
+                       "the document is %s (expected a mapping: model, method, vary...)",
+                       cs_ykind_name(root->kind));
+    if (rc == 0 && root && root->kind == CS_Y_MAP) {
+        check_shapes(s, root);
+        if (!given_twice(root)) {
+            read_scalars(s, root);
+            const cs_ynode *set = cs_ynode_get(root, "set");
+            for (int i = 0; top_read(set) && i < set->count; i++)
+                if (push_set(s, set->kids[i]->key, set->kids[i]->text, set->kids[i]->key_line,
+                             set->kids[i]->key_col) != 0)
+                    break;
+            read_vary(s, units, root);
+            check_runs(s, root);
+        }
+    }
+    cs_ytree_free(&tree);
+    return s;
+}
+
+void cs_sweep_spec_free(cs_sweep_spec *s) {
+    if (!s) return;
+    for (int i = 0; i < s->var_count; i++) {
+        cs_sweep_var *v = &s->vars[i];
+        for (int k = 0; k < v->level_count; k++)
+            free(v->texts[k]);
+        free(v->texts);
+        free(v->levels);
+        free(v->level_line);
+        free(v->level_col);
+        free(v->path);
+    }
+    free(s->vars);
+    for (int i = 0; i < s->set_count; i++)
+        free(s->sets[i]);
+    free(s->sets);
+    free(s->set_line);
+    free(s->set_col);
+    for (int i = 0; i < s->error_count; i++)
+        free(s->errors[i]);
+    free(s->errors);
+    free(s->model);
+    free(s->file);
+    free(s);
+}

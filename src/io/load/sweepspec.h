@@ -1,0 +1,78 @@
+/* The sweep spec: a YAML file read through the same tree as the model files (yamltree.h): the base model,
+ * the method (full-factorial grid, Monte Carlo, Latin hypercube), the values set for every run and the
+ * values varied, each with its place in the file for messages. */
+#ifndef CS_SWEEPSPEC_H
+#define CS_SWEEPSPEC_H
+
+#include <stdint.h>
+
+#include "units.h"
+
+typedef enum cs_sweep_method {
+    CS_SWEEP_GRID = 0,
+    CS_SWEEP_MONTE_CARLO,
+    CS_SWEEP_LATIN_HYPERCUBE
+} cs_sweep_method;
+
+typedef enum cs_dist_kind { CS_DIST_UNIFORM = 0, CS_DIST_NORMAL, CS_DIST_LOGNORMAL } cs_dist_kind;
+
+/* A distribution in SI, optionally truncated to [lo, hi]. */
+typedef struct cs_dist {
+    cs_dist_kind kind;
+    double a, b;       /* uniform: min, max; normal: mean, sd; lognormal: mu, sigma of ln x */
+    double lo, hi;     /* truncation (-inf / inf: none); uniform: = a, b */
+    double p_lo, p_hi; /* the untruncated CDF at lo and hi */
+} cs_dist;
+
+enum { CS_SWEEP_MAX_RUNS = 1000000, CS_SWEEP_MAX_VARS = 64 };
+
+/* One varied value of the model. */
+typedef struct cs_sweep_var {
+    char *path;       /* as --set: "barrier.soil.soil_pressure" */
+    int line, col;    /* of its key in the spec */
+    int numeric;      /* 1: a quantity or whole number, values in SI; 0: text (grids only) */
+    int integer;      /* a whole number */
+    cs_quantity q;    /* numeric: what it measures */
+    const char *unit; /* SI label ("Pa"; "1" for a pure number; "" for text) */
+    /* grid */
+    int level_count;
+    double *levels;              /* numeric levels, SI */
+    char **texts;                /* text levels */
+    int *level_line, *level_col; /* where each level is written */
+    /* Monte Carlo / Latin hypercube */
+    cs_dist dist;
+    char desc[256]; /* how it varies, as the spec says it: "normal: mean 8000 psf, sd 1000 psf" */
+} cs_sweep_var;
+
+typedef struct cs_sweep_spec {
+    char *file;  /* the spec file as given */
+    char *model; /* the base model file, relative to the spec's folder (or absolute) */
+    int model_line, model_col;
+    cs_sweep_method method;
+    long runs;
+    uint64_t seed;
+    char vehicle_class[8]; /* ASTM F2656 class; "" = the class nearest the vehicle's mass */
+    int netcdf;            /* also write runs.nc (netcdf: true; or --netcdf) */
+    int set_count;
+    char **sets; /* "PATH=VALUE" applied to every run, in order */
+    int *set_line, *set_col;
+    int var_count;
+    cs_sweep_var *vars;
+    /* errors "file:line:column: what (expected ...)" */
+    int error_count, error_capacity;
+    char **errors;
+} cs_sweep_spec;
+
+/* Read a spec. Always returns a spec (NULL only when memory is short); check error_count. units reads
+ * the values' units. */
+cs_sweep_spec *cs_sweep_spec_read(const char *path, cs_units *units);
+void cs_sweep_spec_free(cs_sweep_spec *spec);
+/* Is the file a sweep spec (a YAML mapping with a top-level `vary`) rather than a model? */
+int cs_sweep_is_spec(const char *path);
+/* Record an error at a place of the spec (line 0: no place). */
+void cs_sweep_error(cs_sweep_spec *spec, int line, int col, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+/* Add a fixed "PATH=VALUE" (from the command line) after the spec's own. 0, or -1 (error recorded). */
+int cs_sweep_spec_add_set(cs_sweep_spec *spec, const char *assignment);
+
+#endif

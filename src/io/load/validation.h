@@ -1,0 +1,41 @@
+/* The measured and published values `cablesim validate` compares its runs with, read from the CSV files
+ * of data/validation/ (beside the parts library, found the same way: the loader's data folder). Each
+ * file names its source in its '#' comment lines, then its columns in a header line, then a row a line.
+ * Every problem is "file:line:column: what is wrong (what was expected)". */
+#ifndef CS_VALIDATION_H
+#define CS_VALIDATION_H
+
+#include <stddef.h>
+
+enum { CS_BOGIE_TESTS = 10, CS_EQ21_MAX = 16 };
+
+/* One crash test's response parameters: as measured, or as a simulation gave them. */
+typedef struct cs_crash_values {
+    double decel_g;  /* max 50-ms average deceleration, g (its magnitude) */
+    double exit_mph; /* exit speed */
+    double brk[2];   /* when cable 1 and cable 2 broke, s */
+} cs_crash_values;
+
+/* A bogie test of a post in soil. */
+typedef struct cs_bogie_test {
+    char name[16];
+    double mph, embedment_mm, deflection_mm, energy_ftlb;
+    int pullout; /* 1: pulled out of the ground; 0: rotated in the soil */
+} cs_bogie_test;
+
+/* A footing's capacity by Eq. 21 as the paper gives it. */
+typedef struct cs_eq21_point {
+    double width_ft, depth_ft, p_lb;
+} cs_eq21_point;
+
+typedef struct cs_validation_data {
+    cs_crash_values aps1_test, aps1_paper; /* aps1-crash-test.csv */
+    cs_bogie_test bogie[CS_BOGIE_TESTS];   /* post-bogie-tests.csv: the paper's ten, in its order */
+    cs_eq21_point eq21[CS_EQ21_MAX];       /* eq21-table4.csv */
+    int eq21_count;
+} cs_validation_data;
+
+/* Read the files of dir (data/validation). Returns 0, or -1 with why filled. */
+int cs_validation_read(const char *dir, cs_validation_data *out, char *why, size_t why_size);
+
+#endif

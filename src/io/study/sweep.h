@@ -1,0 +1,79 @@
+/* Studies over a model's values: the runs' inputs (full-factorial grids, Monte Carlo, Latin hypercube)
+ * from a sweep spec (load/sweepspec.h), one run and its result, and the statistics of the results
+ * (Wilson intervals, Spearman rank correlation). No threads, MPI or output files here: app/sweep.c runs
+ * the runs, out/sweepout.h writes them.
+ *
+ * Every input of run i comes from (seed, i, variable) alone through a counter-based generator, so the
+ * samples do not depend on how the runs are shared among threads or ranks. */
+#ifndef CS_SWEEP_H
+#define CS_SWEEP_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "cablesim/cablesim.h"
+#include "load/loader.h"
+#include "load/sweepspec.h"
+
+/* ---- the runs' inputs ---- */
+
+/* A uniform number in (0, 1) from (seed, a, b, stream): SplitMix64's finaliser over the key. */
+double cs_sweep_u01(uint64_t seed, uint64_t a, uint64_t b, uint64_t stream);
+/* The standard normal CDF and its inverse (Acklam's rational start and one Halley step on erfc). */
+double cs_normal_cdf(double x);
+double cs_normal_quantile(double p);
+/* Fill the untruncated CDF at the bounds. Returns 0, or -1 if the bounds leave no probability. */
+int cs_dist_prepare(cs_dist *d);
+/* The value at probability u in (0, 1) of the (truncated) distribution. */
+double cs_dist_quantile(const cs_dist *d, double u);
+
+/* The inputs of every run: x[run * var_count + var], SI (text variables: the level index). Grids vary
+ * the first variable slowest. NULL if memory is short. */
+double *cs_sweep_samples(const cs_sweep_spec *spec, long *run_count);
+/* The probabilities (u in (0,1)) of a Latin hypercube of n runs and k variables: u[run * k + var]. Each
+ * variable's column holds one point in each stratum [s/n, (s+1)/n). NULL if memory is short. */
+double *cs_latin_hypercube(uint64_t seed, long n, int k);
+/* The --set value of variable v for an input x: "%.12g" SI for numbers (what runs.csv shows), the
+ * level's text for text. */
+void cs_sweep_value_text(const cs_sweep_var *v, double x, char *buf, size_t size);
+/* The same value back as used (rounded as written). */
+double cs_sweep_value_used(const cs_sweep_var *v, double x);
+
+/* ---- results ---- */
+
+typedef enum cs_run_status { CS_RUN_OK = 0, CS_RUN_BAD_MODEL, CS_RUN_FAILED } cs_run_status;
+
+/* One run's result: plain data, so ranks can send it as bytes. */
+typedef struct cs_sweep_result {
+    int status; /* cs_run_status */
+    cs_summary summary;
+    int event_counts[CS_EVENT_TYPE_COUNT];
+    char rating[24]; /* ASTM F2656 label: "M40/P1" or "none" */
+    char error[256]; /* status != OK: why */
+} cs_sweep_result;
+
+/* One run with inputs xrow (var_count values): load (on loader, reset first; NULL: a loader of its
+ * own), build, run, rate. Safe to call from several threads at once, each with its own loader. */
+void cs_sweep_run(const cs_sweep_spec *spec, const double *xrow, cs_loader *loader, cs_sweep_result *r);
+/* Check the model with the inputs of run 0 (x: its row), and each grid level with the rest of run 0;
+ * the loader's problems with a value go into the spec's errors at the place of that value. 0 if none. */
+int cs_sweep_check(cs_sweep_spec *spec, const double *x);
+
+/* ASTM F2656 class of a vehicle by its mass: C, PU, M or H, whichever test mass is nearest (ratio). */
+const char *cs_astm_class_by_mass(double mass);
+
+/* ---- statistics ---- */
+
+typedef struct cs_interval {
+    double p, lo, hi;
+} cs_interval;
+
+/* Wilson score interval of k successes in n trials at normal quantile z (1.959963984540054: 95%). */
+cs_interval cs_wilson(long k, long n, double z);
+/* Average ranks (1-based; ties share the mean rank) of n values into rank. 0, or -1 if memory is short. */
+int cs_ranks(const double *x, long n, double *rank);
+/* Spearman's rank correlation of n pairs (Pearson's r of the average ranks); NaN if either is constant
+ * or n < 2. */
+double cs_spearman(const double *x, const double *y, long n);
+
+#endif
