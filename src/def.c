@@ -30,9 +30,24 @@ cs_cable_def cs_default_cable_def(void) {
     cs_cable_def d;
     memset(&d, 0, sizeof d);
     d.post_friction = 0.15;          /* steel rope in a steel hole, docs/assumptions.md */
-    d.termination_efficiency = 0.90; /* wire rope clips on rope of 1 in or more (Crosby): assumptions.md */
+    d.termination = CS_TERMINATION_CLIPS; /* cable clamps, as APS3's: docs/assumptions.md */
     d.rope = cs_default_rope_def();
     return d;
+}
+
+/* US Army TM 5-3810-305-10 Table 4 and Crosby's G-450 instructions (shared reference data: rope-fittings.md). */
+double cs_termination_efficiency(cs_termination kind, double diameter) {
+    switch (kind) {
+    case CS_TERMINATION_CLIPS:
+        return diameter > 0.0 && diameter < 0.0254 - 1e-9 ? 0.80 : 0.90;
+    case CS_TERMINATION_SWAGED:
+        return 0.95;
+    case CS_TERMINATION_SPELTER:
+        return 1.0;
+    case CS_TERMINATION_WEDGE:
+        return 0.85;
+    }
+    return 0.80;
 }
 
 cs_section_def cs_default_section_def(void) {
@@ -88,8 +103,6 @@ cs_vehicle_def cs_default_vehicle_def(void) {
     d.rolling_resistance = 0.01;
     d.tyre_friction = 0.7;
     d.face_friction = 0.3;
-    d.face_corner_radius =
-        2.0 * 0.0254; /* 2 in: the bumper / frame ends the ropes bend over, assumptions.md */
     d.crush_unload_stiffness = 2.0e7;
     return d;
 }

@@ -133,8 +133,10 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
         if (!non_negative(d->pretension)) return fail(err, "cable %d: pretension must be >= 0", c);
         if (!non_negative(d->post_friction) || d->post_friction > 2.0)
             return fail(err, "cable %d: post friction must be in [0, 2]", c);
-        if (!(d->termination_efficiency > 0.0 && d->termination_efficiency <= 1.0))
-            return fail(err, "cable %d: termination efficiency must be in (0, 1]", c);
+        if (!(d->termination_efficiency >= 0.0 && d->termination_efficiency <= 1.0))
+            return fail(err, "cable %d: termination efficiency must be in (0, 1] (0: the fitting's own)", c);
+        if (d->termination < CS_TERMINATION_CLIPS || d->termination > CS_TERMINATION_WEDGE)
+            return fail(err, "cable %d: unknown termination", c);
         if (check_rope(&d->rope, c, err)) return 1;
         if (d->pretension >= d->rope.elastic_limit_ratio * d->rope.nominal_strength)
             return fail(err, "cable %d: pretension exceeds the rope's elastic limit", c);
@@ -286,7 +288,9 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
         cm->pretension = d->pretension;
         cm->mu_post = d->post_friction;
         derive_rope(&d->rope, scenario->gravity, &cm->rope);
-        cm->termination_strength = d->termination_efficiency * cm->rope.fu;
+        double eff = d->termination_efficiency > 0.0 ? d->termination_efficiency
+                                                     : cs_termination_efficiency(d->termination, d->rope.diameter);
+        cm->termination_strength = eff * cm->rope.fu;
     }
     /* the load height of every post: its cables' mean height, or for a barrier of posts alone
      * (bollards, a bogie test) the height where the vehicle's face strikes them */

@@ -86,12 +86,19 @@ void cs_response_update(const cs_model *model, cs_state *s) {
     for (int c = 0; c < model->cable_count; c++)
         sm->cables_broken += s->cables[c].status == CS_CABLE_BROKEN;
     sm->posts_failed_left = sm->posts_failed_right = 0;
+    for (int k = 0; k < 2; k++)
+        sm->posts_failed_rotation[k] = sm->posts_failed_shear[k] = sm->posts_failed_pullout[k] = 0;
     for (int p = 0; p < model->post_count; p++) {
+        cs_post_status st = s->posts[p].status;
         if (cs_post_standing(&s->posts[p])) continue;
-        if (model->posts[p].x < model->scenario.impact_x)
-            sm->posts_failed_left++;
-        else
+        int right = model->posts[p].x >= model->scenario.impact_x;
+        if (right)
             sm->posts_failed_right++;
+        else
+            sm->posts_failed_left++;
+        sm->posts_failed_rotation[right] += st == CS_POST_FAILED_ROTATION;
+        sm->posts_failed_shear[right] += st == CS_POST_FAILED_SHEAR;
+        sm->posts_failed_pullout[right] += st == CS_POST_FAILED_PULLOUT;
     }
     sm->t = s->t;
     v3_copy(sm->final_position, s->pos);

@@ -32,15 +32,27 @@ typedef struct cs_rope_def {
     double diameter;                /* nominal diameter d, m (0: unknown) */
 } cs_rope_def;
 
+/* How a rope's ends are made off at the anchors: each kind's published efficiency (its breaking strength
+ * over the rope's) is in cs_termination_efficiency and docs/assumptions.md. */
+typedef enum cs_termination {
+    CS_TERMINATION_CLIPS = 0, /* wire rope clips (cable clamps): 80% below 1-in rope, 90% from 1 in */
+    CS_TERMINATION_SWAGED,    /* swaged socket or sleeve: 95% */
+    CS_TERMINATION_SPELTER,   /* poured (spelter) socket: 100% */
+    CS_TERMINATION_WEDGE      /* wedge socket: 75-95%, 85% taken */
+} cs_termination;
+
 typedef struct cs_cable_def {
     double height;                 /* z of the cable at the posts, m */
     double pretension;             /* installed tension, N */
     double post_friction;          /* mu between cable and post (capstan at a threaded post) */
-    double termination_efficiency; /* strength of each end's fitting over the rope's Fu (published
-                                      efficiencies: docs/assumptions.md); the rope breaks at its end when
-                                      the end span's tension reaches it */
+    cs_termination termination;    /* the fitting at each end */
+    double termination_efficiency; /* its strength over the rope's Fu (0: the kind's published value);
+                                      the rope breaks at its end when the end span's tension exceeds it */
     cs_rope_def rope;
 } cs_cable_def;
+
+/* The published efficiency of a fitting on a rope of diameter d (m; 0 unknown: the larger rope's). */
+double cs_termination_efficiency(cs_termination kind, double diameter);
 
 /* Steel post section. */
 typedef struct cs_section_def {
@@ -133,7 +145,6 @@ typedef struct cs_vehicle_def {
     double rolling_resistance;     /* coefficient of rolling resistance (free-rolling, unbraked) */
     double tyre_friction;          /* lateral (side-slip) friction coefficient */
     double face_friction;          /* mu between cable and front face */
-    double face_corner_radius;     /* radius of the face's vertical corners where cables wrap, m */
     int crush_point_count;         /* points of the loading curve, deformation increasing, first (0,0) */
     double crush_deformation[CS_MAX_CRUSH_POINTS]; /* m */
     double crush_force[CS_MAX_CRUSH_POINTS];       /* N */

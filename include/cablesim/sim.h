@@ -216,6 +216,9 @@ typedef struct cs_summary {
     double first_contact_time;      /* s, < 0 before contact */
     int posts_failed_left;          /* x below the impact point */
     int posts_failed_right;
+    /* the same by how they failed, [0] left and [1] right: turned to their rotation limit (bent over, or
+     * their footing turned in the soil), sheared at the base, pulled out of the ground */
+    int posts_failed_rotation[2], posts_failed_shear[2], posts_failed_pullout[2];
     int cables_broken;
     double initial_kinetic_energy; /* J */
     double energy_balance_error;   /* fraction, largest |error| over the run */

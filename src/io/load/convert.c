@@ -252,7 +252,7 @@ int cs_convert_rope(cs_loader *l, const cs_node *rope, cs_rope_def *out, double 
         out->mass_per_length *= r;
     }
     fields(l, rope, out, !from);
-    if (has_d == 1) out->diameter = d; /* the strength bent over the face corners needs it */
+    if (has_d == 1) out->diameter = d; /* the efficiency of clips at its ends needs it */
     if (diameter) *diameter = has_d == 1 ? d : d0;
     return l->error_count - before;
 }
@@ -473,6 +473,8 @@ int cs_convert_model(cs_loader *l, const cs_node *root, const char *file, cs_mod
     check_required(l, barrier);
     const cs_node *cables = cs_node_get(barrier, "cables"), *anchors = cs_node_get(barrier, "anchors");
     l->anchors_node = anchors;
+    const cs_node *soil = cs_node_get(barrier, "soil");
+    if (soil) fields(l, soil, &out->barrier.start_anchor.footing, 0), fields(l, soil, &out->barrier.end_anchor.footing, 0);
     if (anchors) fields(l, anchors, &out->barrier, 1);
     if (cables && cables->count == 0) cs_err_node(l, cables, 0, "no cables (expected at least one)");
     cs_cable_def *defs = cables ? cs_arena_alloc(l, (size_t)cables->count * sizeof *defs + 1) : NULL;

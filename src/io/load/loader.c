@@ -175,9 +175,16 @@ void cs_field_hint(const cs_field *f, char *buf, size_t size) {
     case CS_F_INT:
         snprintf(buf, size, "a whole number");
         break;
-    case CS_F_ENUM:
-        snprintf(buf, size, "%s or %s", f->words[0], f->words[1]);
+    case CS_F_ENUM: {
+        size_t n = 0;
+        buf[0] = '\0';
+        for (int k = 0; f->words[k] && n < size; k++) {
+            const char *sep = k == 0 ? "" : (f->words[k + 1] ? ", " : " or ");
+            int w = snprintf(buf + n, size - n, "%s%s", sep, f->words[k]);
+            n += w > 0 ? (size_t)w : 0;
+        }
         break;
+    }
     default:
         snprintf(buf, size, "text");
         break;

@@ -19,6 +19,7 @@
     { key, kind, CS_Q_NUMBER, flags, offset, &table, NULL, doc }
 
 static const char *const attachment_words[] = {"through", "clamped", NULL};
+static const char *const termination_words[] = {"clips", "swaged", "spelter", "wedge", NULL};
 
 #define NAMED_PART(what)                                                                                     \
     TEXT("name", 0, "the part's name, by which other parts and models use it (in a parts list: required)"),  \
@@ -61,9 +62,6 @@ static const cs_field vehicle_fields[] = {
     V("rolling_resistance", CS_Q_NUMBER, CS_NONNEG, rolling_resistance, "rolling resistance coefficient"),
     V("tyre_friction", CS_Q_NUMBER, CS_NONNEG, tyre_friction, "tyre side (lateral) friction coefficient"),
     V("face_friction", CS_Q_NUMBER, CS_NONNEG, face_friction, "friction between cable and front face"),
-    V("face_corner_radius", CS_Q_LENGTH, CS_NONNEG, face_corner_radius,
-      "radius of the front face's vertical corners, where the cables bend: a rope bent to D/d = 2 R / d "
-      "holds only part of its strength there"),
     LIST("crush_deformation", CS_Q_LENGTH, CS_REQ | CS_NONNEG,
          "crush curve: deformations, increasing, first 0 (at most 16 points)"),
     LIST("crush_force", CS_Q_FORCE, CS_NONNEG, "crush curve: forces at those deformations, first 0"),
@@ -87,8 +85,7 @@ static const cs_field rope_fields[] = {
          "start from the named rope and scale area, strength and mass per length by "
          "(diameter / its diameter)^2; fields given here replace the result"),
     QTY_ONLY("diameter", CS_Q_LENGTH, CS_POS,
-             "nominal diameter d (needed by scale_from); sets the strength bent over the face corners "
-             "(not given: no bending loss)"),
+             "nominal diameter d (needed by scale_from); sets the efficiency of clips at its ends"),
     R("area", CS_Q_AREA, CS_REQ | CS_POS, area, "metallic area A"),
     R("modulus", CS_Q_PRESSURE, CS_REQ | CS_POS, modulus, "apparent modulus of elasticity E"),
     R("nominal_strength", CS_Q_FORCE, CS_REQ | CS_POS, nominal_strength, "nominal (breaking) strength Fu"),
@@ -138,7 +135,9 @@ const cs_table cs_table_parts = {"parts",
            "soil resistance under impact over Eq. 21's, 1 to 10 (calibrated on the bogie tests)"),           \
         FT("skin_friction", CS_Q_PRESSURE_GRADIENT, CS_POS, skin_friction,                                   \
            "shaft friction per depth; a footing without a pullout capacity pulls out at pi B D^2 / 2 times " \
-           "it")
+           "it"),                                                                                            \
+        FT("friction_angle", CS_Q_ANGLE, CS_POS | CS_MAX90, friction_angle,                                  \
+           "the soil's angle of friction: scales the dynamic factor to a footing's width (passive wedge)")
 static const cs_field soil_fields[] = {SOIL_FIELDS};
 const cs_table cs_table_soil = {"soil",
                                 "Soil of every footing of the barrier (a footing may replace any of it).",
@@ -163,6 +162,11 @@ static const cs_field cable_fields[] = {
     QTY("pretension", CS_Q_FORCE, CS_NONNEG, cs_cable_def, pretension, "installed tension"),
     QTY("post_friction", CS_Q_NUMBER, CS_NONNEG, cs_cable_def, post_friction,
         "friction between cable and post (capstan at a threaded post)"),
+    {"termination", CS_F_ENUM, CS_Q_NUMBER, 0, (long)offsetof(cs_cable_def, termination), NULL, termination_words,
+     "the fitting at each end: clips (cable clamps; 80% of the rope's strength below 1 in, 90% from 1 in), "
+     "swaged (95%), spelter (100%) or wedge (85%)"},
+    QTY("termination_efficiency", CS_Q_NUMBER, CS_POS | CS_MAX1, cs_cable_def, termination_efficiency,
+        "the fitting's strength over the rope's, replacing its kind's"),
     QTY("elastic_limit_ratio", CS_Q_NUMBER, CS_POS | CS_MAX1, cs_cable_def, rope.elastic_limit_ratio,
         "replaces the rope's"),
     QTY("secondary_modulus_ratio", CS_Q_NUMBER, CS_POS | CS_MAX1, cs_cable_def, rope.secondary_modulus_ratio,
@@ -201,11 +205,20 @@ const cs_table cs_table_posts = {"posts",
 static const cs_field anchor_fields[] = {
     QTY("x", CS_Q_LENGTH, CS_REQ, cs_anchor_def, x, "position along the barrier"),
     QTY("z", CS_Q_LENGTH, CS_NONNEG, cs_anchor_def, z, "height where the cables are tied"),
+    SUB("footing", CS_F_MAP, 0, (long)offsetof(cs_anchor_def, footing), cs_table_footing,
+        "the dead-man in the soil: its width facing the pull (diameter) and depth; not given: a rigid "
+        "anchor"),
+    QTY("length", CS_Q_LENGTH, CS_POS, cs_anchor_def, length,
+        "a block's plan size across its width (not given: a round shaft)"),
+    QTY("mass", CS_Q_MASS, CS_POS, cs_anchor_def, mass, "what moves with it (not given: its concrete)"),
     QTY("pullout_capacity", CS_Q_FORCE, CS_POS | CS_NONE_OK, cs_anchor_def, pullout_capacity,
-        "sum of cable tensions that pulls the anchor out (none: rigid)"),
+        "uplift that pulls it out (none: never; not given: its weight and skin friction)"),
 };
-const cs_table cs_table_anchor = {"anchor", "A cable end anchor (dead-man).", CS_T_ANCHOR, anchor_fields,
-                                  N(anchor_fields)};
+const cs_table cs_table_anchor = {"anchor",
+                                  "A cable end anchor: a footing (dead-man) in the soil that resists the ropes' "
+                                  "pull by Eq. 21 at their height, slides through the soil past it, and pulls out "
+                                  "after the travel its footing's rotation limit allows.",
+                                  CS_T_ANCHOR, anchor_fields, N(anchor_fields)};
 
 static const cs_field anchors_fields[] = {
     SUB("start", CS_F_MAP, CS_REQ, (long)offsetof(cs_barrier_def, start_anchor), cs_table_anchor,
