@@ -131,8 +131,8 @@ static int write_report_html(cs_outdir *out, const cs_model_input *in, const cs_
 #endif
 }
 
-static int write_outputs(const char *dir, const cs_model_input *in, const cs_state *state,
-                         const cs_record *rec, int plots, int report) {
+static int write_outputs(const char *dir, const cs_model_input *in, const cs_model *model,
+                         const cs_state *state, const cs_record *rec, int plots, int report) {
     char why[512] = "";
     cs_outdir out;
     int rc = cs_out_open(&out, dir, why, sizeof why);
@@ -145,7 +145,7 @@ static int write_outputs(const char *dir, const cs_model_input *in, const cs_sta
         }
         rc = k == 0   ? cs_write_timeseries(f, rec, why, sizeof why)
              : k == 1 ? cs_write_events(f, state, why, sizeof why)
-                      : cs_write_summary_json(f, in, state, why, sizeof why);
+                      : cs_write_summary_json(f, in, model, state, why, sizeof why);
         char end_why[512];
         if (cs_out_end(&out, f, end_why, sizeof end_why) != 0 && rc == 0) {
             snprintf(why, sizeof why, "%s", end_why);
@@ -178,8 +178,8 @@ static int run(const cs_model_input *in, cs_model *model, const char *dir, int p
         fprintf(stderr, "cablesim: the run failed, nothing written: %s\n", err.message);
     else if (rec.failed)
         fprintf(stderr, "cablesim: out of memory while recording, nothing written\n");
-    else if (write_outputs(dir ? dir : path, in, state, &rec, plots, report) == 0) {
-        cs_write_report(stdout, in, state);
+    else if (write_outputs(dir ? dir : path, in, model, state, &rec, plots, report) == 0) {
+        cs_write_report(stdout, in, model, state);
         cs_summary sm;
         cs_state_summary(state, &sm);
         cs_print_run_rating(stdout, &in->vehicle, in->scenario.speed, &sm);

@@ -229,6 +229,10 @@ void cs_state_anchor(const cs_model *model, const cs_state *s, int a, cs_anchor_
     out->uplift = as->uplift, out->uplift_capacity = am->uplift_capacity;
 }
 
+const char *cs_anchor_status_name(const cs_anchor_view *a) {
+    return a->rigid ? "rigid" : a->failed ? "pulled_out" : a->yielded ? "sliding" : "holding";
+}
+
 void cs_state_post(const cs_model *model, const cs_state *s, int p, cs_post_view *out) {
     const cs_post_state *ps = &s->posts[p];
     const cs_post_model *pm = &model->posts[p];

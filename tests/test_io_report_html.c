@@ -178,11 +178,12 @@ static void long_record_subsampled(void **st) {
     big.energy = malloc(N * sizeof *big.energy);
     big.cables = malloc(N * nc * sizeof *big.cables);
     big.posts = malloc(N * np * sizeof *big.posts);
+    big.anchors = malloc(N * 2 * sizeof *big.anchors);
     big.path_count = malloc(N * nc * sizeof *big.path_count);
     big.path_xyz = malloc(N * nc * nn * 3 * sizeof *big.path_xyz);
     big.path_tension = malloc(N * nc * nn * sizeof *big.path_tension);
-    assert_true(big.vehicle && big.energy && big.cables && big.posts && big.path_count && big.path_xyz &&
-                big.path_tension);
+    assert_true(big.vehicle && big.energy && big.cables && big.posts && big.anchors && big.path_count &&
+                big.path_xyz && big.path_tension);
     for (size_t i = 0; i < N; i++) {
         size_t j = i % (size_t)s->frame_count;
         big.vehicle[i] = s->vehicle[j];
@@ -190,6 +191,7 @@ static void long_record_subsampled(void **st) {
         big.energy[i] = s->energy[j];
         memcpy(big.cables + i * nc, s->cables + j * nc, nc * sizeof *big.cables);
         memcpy(big.posts + i * np, s->posts + j * np, np * sizeof *big.posts);
+        memcpy(big.anchors + i * 2, s->anchors + j * 2, 2 * sizeof *big.anchors);
         memcpy(big.path_count + i * nc, s->path_count + j * nc, nc * sizeof *big.path_count);
         memcpy(big.path_xyz + i * nc * nn * 3, s->path_xyz + j * nc * nn * 3,
                nc * nn * 3 * sizeof *big.path_xyz);

@@ -177,6 +177,8 @@ typedef struct cs_anchor_view {
 
 /* anchor: 0 the start (low x), 1 the end. */
 void cs_state_anchor(const cs_model *model, const cs_state *state, int anchor, cs_anchor_view *out);
+/* "rigid", "holding" (in the soil's elastic range), "sliding" (it has yielded), "pulled_out". */
+const char *cs_anchor_status_name(const cs_anchor_view *anchor);
 
 /* Energy ledger, J. Every term is a state function or an accumulated dissipation computed on its own;
  * balance_error = (sum now - sum at t = 0) / initial kinetic energy (for a vehicle starting at rest:

@@ -101,7 +101,7 @@ export function summaryTable(data) {
     ['Max dynamic penetration (front face)', ...both.length(s.max_penetration)],
     ['Max barrier deflection (cable)', ...both.length(s.max_deflection)],
     ['Max cable tension', ...both.force(s.max_cable_tension)],
-    ['Posts failed', `${s.posts_failed_left + s.posts_failed_right} of ${data.barrier.posts.length}`, `${s.posts_failed_left} at lower x than the impact, ${s.posts_failed_right} at higher x`],
+    ['Posts failed', `${s.posts_failed_left + s.posts_failed_right} of ${data.barrier.posts.length}`, `${s.posts_failed_left} at lower x than the impact, ${s.posts_failed_right} at higher x; ${s.posts_failed_rotation} past the rotation limit, ${s.posts_failed_shear} sheared, ${s.posts_failed_pullout} pulled out`],
     ['Cables broken', `${s.cables_broken} of ${data.barrier.cables.length}`, null],
     ['Exit speed', ...(s.exit_speed === null ? ['none', null] : both.speed(s.exit_speed))],
     ['Stop time', s.stop_time === null ? 'did not stop' : seconds(s.stop_time), null],

@@ -15,15 +15,16 @@ void cs_w_num(cs_wout *w, double v, const char *what) {
 }
 
 static const char *const energy_names[] = {
-    "ke_j",           "pe_j",           "cable_elastic_j",     "cable_plastic_j", "post_elastic_j",
-    "post_kinetic_j", "post_plastic_j", "post_damping_j",      "soil_j",          "crush_j",
-    "friction_j",     "released_j",     "energy_balance_error"};
+    "ke_j",           "pe_j",           "cable_elastic_j", "cable_plastic_j",  "post_elastic_j",
+    "post_kinetic_j", "post_plastic_j", "post_damping_j",  "anchor_elastic_j", "anchor_kinetic_j",
+    "soil_j",         "crush_j",        "friction_j",      "released_j",       "energy_balance_error"};
 enum { ENERGY_TERMS = sizeof energy_names / sizeof energy_names[0] };
 
 static void energy_values(const cs_energy *e, double v[ENERGY_TERMS]) {
     const double all[ENERGY_TERMS] = {
-        e->vehicle_kinetic, e->vehicle_potential, e->cable_elastic, e->cable_plastic, e->post_elastic,
-        e->post_kinetic,    e->post_plastic,      e->post_damping,  e->soil,          e->crush,
+        e->vehicle_kinetic, e->vehicle_potential, e->cable_elastic, e->cable_plastic,
+        e->post_elastic,    e->post_kinetic,      e->post_plastic,  e->post_damping,
+        e->anchor_elastic,  e->anchor_kinetic,    e->soil,          e->crush,
         e->friction,        e->released,          e->balance_error};
     memcpy(v, all, sizeof all);
 }
@@ -35,6 +36,8 @@ int cs_write_timeseries(FILE *f, const cs_record *rec, char *why, size_t why_siz
         fprintf(f, ",cable%d_max_tension_n,cable%d_state", c, c);
     for (int p = 0; p < rec->post_count; p++)
         fprintf(f, ",post%d_state,post%d_tilt_rad", p, p);
+    for (int a = 0; a < 2; a++)
+        fprintf(f, ",anchor%d_state,anchor%d_displacement_m,anchor%d_force_n", a, a, a);
     for (size_t k = 0; k < sizeof energy_names / sizeof energy_names[0]; k++)
         fprintf(f, ",%s", energy_names[k]);
     fputc('\n', f);
@@ -77,6 +80,14 @@ int cs_write_timeseries(FILE *f, const cs_record *rec, char *why, size_t why_siz
             snprintf(what, sizeof what, "post %d's tilt at t = %g s", p, v->t);
             fprintf(f, ",%s,", cs_post_status_name(pv->status));
             cs_w_num(&w, pv->tilt, what);
+        }
+        for (int a = 0; a < 2; a++) {
+            const cs_anchor_view *av = &rec->anchors[(size_t)i * 2 + (size_t)a];
+            snprintf(what, sizeof what, "anchor %d at t = %g s", a, v->t);
+            fprintf(f, ",%s,", cs_anchor_status_name(av));
+            cs_w_num(&w, hypot(av->displacement[0], av->displacement[1]), what);
+            fputc(',', f);
+            cs_w_num(&w, hypot(av->force[0], av->force[1]), what);
         }
         double e[ENERGY_TERMS];
         energy_values(&rec->energy[i], e);

@@ -123,8 +123,8 @@ static void inputs(cs_wout *w, const cs_model_input *in) {
     fprintf(f, "}");
 }
 
-int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_state *state, char *why,
-                          size_t why_size) {
+int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_model *model, const cs_state *state,
+                          char *why, size_t why_size) {
     cs_summary s;
     cs_state_summary(state, &s);
     cs_wout w = {f, 0, ""};
@@ -158,6 +158,31 @@ int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_state *sta
     fprintf(f, "%d", s.posts_failed_left);
     jkey(&w, &first, "posts_failed_right");
     fprintf(f, "%d", s.posts_failed_right);
+    const char *kinds[3] = {"rotation", "shear", "pullout"};
+    const int *by_kind[3] = {s.posts_failed_rotation, s.posts_failed_shear, s.posts_failed_pullout};
+    for (int k = 0; k < 3; k++) {
+        char key[48];
+        for (int side = 0; side < 2; side++) {
+            snprintf(key, sizeof key, "posts_failed_%s_%s", kinds[k], side ? "right" : "left");
+            jkey(&w, &first, key);
+            fprintf(f, "%d", by_kind[k][side]);
+        }
+    }
+    for (int a = 0; a < 2; a++) {
+        cs_anchor_view av;
+        cs_state_anchor(model, state, a, &av);
+        char key[48];
+        snprintf(key, sizeof key, "anchor_%s", a ? "end" : "start");
+        jkey(&w, &first, key);
+        int af = 1;
+        fprintf(f, "{");
+        jkey(&w, &af, "state");
+        cs_json_string(f, cs_anchor_status_name(&av));
+        jnum(&w, &af, "capacity_n", av.capacity);
+        jnum(&w, &af, "travel_limit_m", av.travel_limit);
+        jnum(&w, &af, "displacement_m", hypot(av.displacement[0], av.displacement[1]));
+        fprintf(f, "}");
+    }
     jkey(&w, &first, "cables_broken");
     fprintf(f, "%d", s.cables_broken);
     jnum(&w, &first, "max_cable_tension_n", s.max_cable_tension);

@@ -23,6 +23,7 @@ static int grow(cs_record *rec) {
     CS_GROW(energy, 1)
     CS_GROW(cables, nc)
     CS_GROW(posts, np)
+    CS_GROW(anchors, 2)
     CS_GROW(path_count, nc)
     CS_GROW(path_xyz, nc * nn * 3)
     CS_GROW(path_tension, nc * nn)
@@ -50,6 +51,8 @@ void cs_record_frame(const cs_model *model, const cs_state *state, void *user) {
     }
     for (int p = 0; p < rec->post_count; p++)
         cs_state_post(model, state, p, &rec->posts[(size_t)f * (size_t)rec->post_count + (size_t)p]);
+    for (int a = 0; a < 2; a++)
+        cs_state_anchor(model, state, a, &rec->anchors[(size_t)f * 2 + (size_t)a]);
     rec->frame_count++;
 }
 
@@ -58,6 +61,7 @@ void cs_record_free(cs_record *rec) {
     free(rec->energy);
     free(rec->cables);
     free(rec->posts);
+    free(rec->anchors);
     free(rec->path_count);
     free(rec->path_xyz);
     free(rec->path_tension);

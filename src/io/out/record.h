@@ -16,6 +16,7 @@ typedef struct cs_record {
     cs_energy *energy;        /* [frame] */
     cs_cable_view *cables;    /* [frame * cable_count + c] */
     cs_post_view *posts;      /* [frame * post_count + p] */
+    cs_anchor_view *anchors;  /* [frame * 2 + a] */
     int *path_count;          /* [frame * cable_count + c] */
     double *path_xyz;         /* [(frame * cable_count + c) * max_nodes * 3] */
     double *path_tension;     /* [(frame * cable_count + c) * max_nodes] */

@@ -5,7 +5,7 @@
 
 static const double MPH = 0.44704, FT = 0.3048, KIP = 4448.2216152605;
 
-void cs_write_report(FILE *f, const cs_model_input *in, const cs_state *state) {
+void cs_write_report(FILE *f, const cs_model_input *in, const cs_model *model, const cs_state *state) {
     cs_summary s;
     cs_state_summary(state, &s);
     const cs_scenario_def *sc = &in->scenario;
@@ -29,8 +29,21 @@ void cs_write_report(FILE *f, const cs_model_input *in, const cs_state *state) {
     fprintf(f, "  max cable tension    %.1f kN (%.1f kip)\n", s.max_cable_tension / 1e3,
             s.max_cable_tension / KIP);
     fprintf(f, "  cables broken        %d of %d\n", s.cables_broken, in->barrier.cable_count);
-    fprintf(f, "  posts failed         %d left, %d right (of %d)\n", s.posts_failed_left,
-            s.posts_failed_right, in->barrier.post_count);
+    fprintf(f,
+            "  posts failed         %d left, %d right (of %d): rotation limit %d + %d, shear %d + %d, "
+            "pullout %d + %d\n",
+            s.posts_failed_left, s.posts_failed_right, in->barrier.post_count, s.posts_failed_rotation[0],
+            s.posts_failed_rotation[1], s.posts_failed_shear[0], s.posts_failed_shear[1],
+            s.posts_failed_pullout[0], s.posts_failed_pullout[1]);
+    for (int a = 0; a < 2; a++) {
+        cs_anchor_view av;
+        cs_state_anchor(model, state, a, &av);
+        if (av.rigid) continue;
+        fprintf(f, "  %s anchor         %s, moved %.3f m of %.3f m (capacity %.1f kN, %.1f kip)\n",
+                a ? "end  " : "start", cs_anchor_status_name(&av),
+                hypot(av.displacement[0], av.displacement[1]), av.travel_limit, av.capacity / 1e3,
+                av.capacity / KIP);
+    }
     fprintf(f, "  kinetic energy       %.1f kJ (%.0f ft-kip)\n", s.initial_kinetic_energy / 1e3,
             s.initial_kinetic_energy / (KIP * FT));
     fprintf(f, "  energy balance error %.3f %%\n", 100 * s.energy_balance_error);

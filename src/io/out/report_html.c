@@ -171,6 +171,8 @@ static const struct {
     {"released", offsetof(cs_energy, released)},
     {"post_elastic", offsetof(cs_energy, post_elastic)},
     {"post_kinetic", offsetof(cs_energy, post_kinetic)},
+    {"anchor_elastic", offsetof(cs_energy, anchor_elastic)},
+    {"anchor_kinetic", offsetof(cs_energy, anchor_kinetic)},
     {"cable_elastic", offsetof(cs_energy, cable_elastic)},
     {"vehicle_potential", offsetof(cs_energy, vehicle_potential)},
     {"vehicle_kinetic", offsetof(cs_energy, vehicle_kinetic)},
@@ -347,6 +349,9 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
     kopt(&j, &sf, "first_contact", s.first_contact_time >= 0 ? s.first_contact_time : NAN);
     kint(&j, &sf, "posts_failed_left", s.posts_failed_left);
     kint(&j, &sf, "posts_failed_right", s.posts_failed_right);
+    kint(&j, &sf, "posts_failed_rotation", s.posts_failed_rotation[0] + s.posts_failed_rotation[1]);
+    kint(&j, &sf, "posts_failed_shear", s.posts_failed_shear[0] + s.posts_failed_shear[1]);
+    kint(&j, &sf, "posts_failed_pullout", s.posts_failed_pullout[0] + s.posts_failed_pullout[1]);
     kint(&j, &sf, "cables_broken", s.cables_broken);
     knum(&j, &sf, "max_cable_tension", s.max_cable_tension);
     knum(&j, &sf, "initial_kinetic_energy", s.initial_kinetic_energy);

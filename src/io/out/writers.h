@@ -22,9 +22,9 @@ void cs_json_string(FILE *f, const char *s);
 /* Each returns 0, or -1 with why filled. */
 int cs_write_timeseries(FILE *f, const cs_record *rec, char *why, size_t why_size);
 int cs_write_events(FILE *f, const cs_state *state, char *why, size_t why_size);
-int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_state *state, char *why,
-                          size_t why_size);
+int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_model *model, const cs_state *state,
+                          char *why, size_t why_size);
 /* The readable summary (SI and US units side by side). */
-void cs_write_report(FILE *f, const cs_model_input *in, const cs_state *state);
+void cs_write_report(FILE *f, const cs_model_input *in, const cs_model *model, const cs_state *state);
 
 #endif
