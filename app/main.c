@@ -193,7 +193,7 @@ static int run(const cs_model_input *in, cs_model *model, const char *dir, int p
 }
 
 static int list(cs_loader *l) {
-    static const char *const titles[] = {"Vehicles", "Wire ropes", "Post sections"};
+    static const char *const titles[] = {"Vehicles", "Wire ropes", "Post sections", "Rail sections"};
     for (int k = 0; k < CS_PART_KIND_COUNT; k++) {
         const char **names, **docs;
         int n = cs_loader_library(l, (cs_part_kind)k, &names, &docs);
@@ -211,6 +211,11 @@ static int list(cs_loader *l) {
                 printf("  %-14s A %7.1f mm2 (%.3f in2), Fu %6.1f kN (%5.1f kip)  %s\n", names[i],
                        d.rope.area * 1e6, d.rope.area / 0.00064516, d.rope.nominal_strength / 1e3,
                        d.rope.nominal_strength / 4448.2216152605, docs[i]);
+            else if (k == CS_PART_RAIL)
+                printf("  %-14s A %.3f in2, I %.3f in4, Fy %.0f ksi, %.2f lb/ft  %s\n", names[i],
+                       d.rail.area / 0.00064516, d.rail.inertia / 4.162314256e-07,
+                       d.rail.yield_stress / 6894757.29316836, d.rail.mass_per_length / 1.4881639435695537,
+                       docs[i]);
             else
                 printf("  %-14s Zx %.3f in3, Ix %.3f in4, Aw %.3f in2, Fy %.0f ksi, %.2f lb/ft  %s\n",
                        names[i], d.section.plastic_modulus / 1.6387064e-05,

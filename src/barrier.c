@@ -111,6 +111,7 @@ void cs_barrier_commit(const cs_model *model, cs_state *s) {
     for (int p = 0; p < model->post_count; p++)
         cs_post_commit(model, s, p);
     cs_anchor_commit(model, s);
+    cs_rail_commit(model, s);
     s->h = 0.0; /* the posts' swing starts again from here */
     const cs_vehicle_def *v = &model->vehicle.def;
     double f = cs_crush_force(v, s->crush, s->crush_max);
@@ -132,8 +133,8 @@ double cs_barrier_trial_energy(const cs_model *model, const cs_state *s, cs_work
 
 /* Stored plus dissipated energy of the barrier side; a sudden failure changes it with no work done. */
 double cs_barrier_stored_energy(const cs_model *model, const cs_state *s) {
-    double e =
-        s->e_cable_plastic + s->e_post_plastic + s->e_post_damping + s->e_soil + s->e_crush + s->e_friction;
+    double e = s->e_cable_plastic + s->e_post_plastic + s->e_post_damping + s->e_soil + s->e_crush +
+               s->e_friction + s->e_rail_plastic + cs_rail_stored_energy(model, s);
     for (int c = 0; c < model->cable_count; c++)
         e += cs_cable_stored_energy(&model->cables[c], &s->cables[c]);
     for (int p = 0; p < model->post_count; p++)

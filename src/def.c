@@ -29,13 +29,14 @@ cs_rope_def cs_default_rope_def(void) {
 cs_cable_def cs_default_cable_def(void) {
     cs_cable_def d;
     memset(&d, 0, sizeof d);
-    d.post_friction = 0.15;          /* steel rope in a steel hole, docs/assumptions.md */
+    d.post_friction = 0.15;               /* steel rope in a steel hole, docs/assumptions.md */
     d.termination = CS_TERMINATION_CLIPS; /* cable clamps, as APS3's: docs/assumptions.md */
     d.rope = cs_default_rope_def();
     return d;
 }
 
-/* US Army TM 5-3810-305-10 Table 4 and Crosby's G-450 instructions (shared reference data: rope-fittings.md). */
+/* US Army TM 5-3810-305-10 Table 4 and Crosby's G-450 instructions (shared reference data: rope-fittings.md).
+ */
 double cs_termination_efficiency(cs_termination kind, double diameter) {
     switch (kind) {
     case CS_TERMINATION_CLIPS:
@@ -84,6 +85,13 @@ cs_anchor_def cs_default_anchor_def(void) {
     cs_anchor_def d;
     memset(&d, 0, sizeof d);
     d.footing = cs_default_footing_def(); /* diameter 0: rigid unless a footing is given */
+    return d;
+}
+
+cs_rail_def cs_default_rail_def(void) {
+    cs_rail_def d;
+    memset(&d, 0, sizeof d);
+    d.modulus = 200e9;
     return d;
 }
 

@@ -17,7 +17,7 @@ double cs_energy_scale(const cs_model *model, const cs_state *s) {
 double cs_energy_total(const cs_energy *e) {
     return e->vehicle_kinetic + e->vehicle_potential + e->cable_elastic + e->cable_plastic + e->post_elastic +
            e->post_kinetic + e->post_plastic + e->post_damping + e->anchor_elastic + e->anchor_kinetic +
-           e->soil + e->crush + e->friction + e->released;
+           e->rail_elastic + e->rail_plastic + e->soil + e->crush + e->friction + e->released;
 }
 
 void cs_energy_update(const cs_model *model, cs_state *s) {
@@ -38,6 +38,8 @@ void cs_energy_update(const cs_model *model, cs_state *s) {
         e->anchor_elastic += cs_anchor_stored_energy(model, s, a, &kinetic);
         e->anchor_kinetic += kinetic;
     }
+    e->rail_elastic = cs_rail_stored_energy(model, s);
+    e->rail_plastic = s->e_rail_plastic;
     e->cable_plastic = s->e_cable_plastic;
     e->post_plastic = s->e_post_plastic;
     e->post_damping = s->e_post_damping;

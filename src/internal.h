@@ -57,6 +57,14 @@ typedef struct cs_post_model {
     cs_footing_def footing;
 } cs_post_model;
 
+/* A rail as derived from its definition (rail.c). */
+typedef struct cs_rail_model {
+    double z;             /* m */
+    double ea;            /* N */
+    double yield_force;   /* A Fy, N */
+    double buckling_load; /* over the spans, the shortest's Euler load pi^2 E I / L^2 capped at A Fy, N */
+} cs_rail_model;
+
 /* An anchor as derived from its definition (anchor.c). */
 typedef struct cs_anchor_model {
     double x, z;
@@ -77,7 +85,8 @@ typedef struct cs_vehicle_model {
 } cs_vehicle_model;
 
 struct cs_model {
-    int cable_count, post_count, max_nodes;
+    int cable_count, post_count, max_nodes, rail_count;
+    cs_rail_model *rails;
     cs_cable_model *cables;
     cs_post_model *posts;
     cs_anchor_model anchors[2];
@@ -158,8 +167,11 @@ struct cs_state {
         double uplift;      /* the ropes' upward pull at the last commit, N */
     } anchors[2];
 
+    double *rail_plastic; /* [rail_count * post_count] each span's plastic change of length, m (rail.c) */
+
     /* energy accumulators, J: the barrier's (friction: over supports and on the face) and the tyres' */
-    double e_cable_plastic, e_post_plastic, e_post_damping, e_soil, e_crush, e_friction, e_released, e_tyre;
+    double e_rail_plastic, e_cable_plastic, e_post_plastic, e_post_damping, e_soil, e_crush, e_friction,
+        e_released, e_tyre;
     double e_initial_total, e_initial_kinetic;
     double e_initial_potential_ref; /* CG height at t = 0 */
     cs_energy energy;
@@ -324,6 +336,16 @@ double cs_relax_slide_node(const cs_model *model, const cs_cable_model *cm, cs_c
 double cs_relax_post(const cs_model *model, cs_state *s, int p, double tol, int may_fall);
 /* The crush alone in balance with the face's load (the paper's crush correction); the residual on entry. */
 double cs_relax_crush(const cs_model *model, cs_state *s);
+
+/* ---- rails (rail.c) ---- */
+/* Add the rails' generalised moment on post p at a tilt (its neighbours where they stand; axis: the axis'
+ * Jacobian at that tilt) to q. */
+void cs_rail_moment(const cs_model *model, const cs_state *s, int p, const double *tilt, const double *axis,
+                    double *q);
+void cs_rail_commit(const cs_model *model, cs_state *s);
+double cs_rail_stored_energy(const cs_model *model, const cs_state *s);
+/* The neighbours post p is tied to by rails now (-1: none); returns whether it has any. */
+int cs_rail_ties(const cs_model *model, const cs_state *s, int p, int *left, int *right);
 
 /* ---- anchors (anchor.c) ---- */
 typedef struct cs_anchor_state cs_anchor_state;

@@ -123,6 +123,20 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
             !(f->rotation_limit > 0.0 && f->rotation_limit < 1.5))
             return fail(err, "post %d: rotation limits must be between 0 and 1.5 rad", p);
     }
+    if (b->rail_count < 0 || b->rail_count > CS_MAX_CABLES || (b->rail_count > 0 && !b->rails))
+        return fail(err, "barrier: %d rails (expected 0 to %d)", b->rail_count, CS_MAX_CABLES);
+    for (int r = 0; r < b->rail_count; r++) {
+        const cs_rail_def *d = &b->rails[r];
+        if (!positive(d->height)) return fail(err, "rail %d: height must be > 0", r);
+        if (!positive(d->area) || !positive(d->inertia) || !positive(d->yield_stress) ||
+            !positive(d->modulus))
+            return fail(err, "rail %d: area, inertia, yield stress and modulus must be > 0", r);
+        if (!non_negative(d->mass_per_length)) return fail(err, "rail %d: mass per length must be >= 0", r);
+        for (int p = 0; p < b->post_count; p++)
+            if (d->height > b->posts[p].height)
+                return fail(err, "rail %d: height %.4g m is above the top of post %d (%.4g m)", r, d->height,
+                            p, b->posts[p].height);
+    }
     for (int c = 0; c < b->cable_count; c++) {
         const cs_cable_def *d = &b->cables[c];
         if (!positive(d->height)) return fail(err, "cable %d: height must be > 0", c);
@@ -254,12 +268,21 @@ static double critical_step(const cs_model *m, const cs_barrier_def *b) {
     return 2.0 * sqrt(mass / k);
 }
 
-/* Rotational inertia of a post's steel about its pivot: from its top down to grade if it hinges there
+/* Rotational inertia of post p about its pivot: its steel from its top down to grade if it hinges there
  * (pivot 0), the whole post down to the bottom of its embedment, turning with its footing, if the soil
- * yields. The footing's and the rails' mass are left out (docs/assumptions.md). */
-static double post_inertia(const cs_post_def *d, double pivot) {
+ * yields; and half of each rail span it holds, a point mass at the rail's height. The footing's mass is
+ * left out (docs/assumptions.md). */
+static double post_inertia(const cs_barrier_def *b, int p, double pivot) {
+    const cs_post_def *d = &b->posts[p];
     double above = d->height + pivot, below = pivot > 0.0 ? d->footing.depth - pivot : 0.0;
-    return d->section.mass_per_length * (above * above * above + below * below * below) / 3.0;
+    double j = d->section.mass_per_length * (above * above * above + below * below * below) / 3.0;
+    double reach = 0.5 * ((p > 0 ? d->x - b->posts[p - 1].x : 0.0) +
+                          (p + 1 < b->post_count ? b->posts[p + 1].x - d->x : 0.0));
+    for (int r = 0; r < b->rail_count; r++) {
+        double lever = b->rails[r].height + pivot;
+        j += b->rails[r].mass_per_length * reach * lever * lever;
+    }
+    return j;
 }
 
 cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *vehicle,
@@ -277,9 +300,25 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
     m->cable_count = barrier->cable_count;
     m->post_count = barrier->post_count;
     m->max_nodes = m->post_count + 4;
+    m->rail_count = barrier->rail_count;
+    m->rails = calloc((size_t)(m->rail_count ? m->rail_count : 1), sizeof *m->rails);
     m->cables = calloc((size_t)(m->cable_count ? m->cable_count : 1), sizeof *m->cables);
     m->posts = calloc((size_t)(m->post_count ? m->post_count : 1), sizeof *m->posts);
-    if (!m->cables || !m->posts) goto oom;
+    if (!m->cables || !m->posts || !m->rails) goto oom;
+    for (int r = 0; r < m->rail_count; r++) {
+        const cs_rail_def *d = &barrier->rails[r];
+        double shortest = HUGE_VAL;
+        for (int p = 0; p + 1 < m->post_count; p++)
+            shortest = fmin(shortest, barrier->posts[p + 1].x - barrier->posts[p].x);
+        cs_rail_model *rm = &m->rails[r];
+        rm->z = d->height;
+        rm->ea = d->modulus * d->area;
+        rm->yield_force = d->area * d->yield_stress;
+        double euler = shortest < HUGE_VAL
+                           ? 9.869604401089358 * d->modulus * d->inertia / (shortest * shortest)
+                           : rm->yield_force;
+        rm->buckling_load = fmin(euler, rm->yield_force);
+    }
 
     for (int c = 0; c < m->cable_count; c++) {
         const cs_cable_def *d = &barrier->cables[c];
@@ -288,8 +327,9 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
         cm->pretension = d->pretension;
         cm->mu_post = d->post_friction;
         derive_rope(&d->rope, scenario->gravity, &cm->rope);
-        double eff = d->termination_efficiency > 0.0 ? d->termination_efficiency
-                                                     : cs_termination_efficiency(d->termination, d->rope.diameter);
+        double eff = d->termination_efficiency > 0.0
+                         ? d->termination_efficiency
+                         : cs_termination_efficiency(d->termination, d->rope.diameter);
         cm->termination_strength = eff * cm->rope.fu;
     }
     /* the load height of every post: its cables' mean height, or for a barrier of posts alone
@@ -327,7 +367,7 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
         pm->pullout_cap = cs_footing_pullout_capacity(&d->footing);
         pm->rot_limit = pm->soil_yields ? d->footing.rotation_limit : d->rotation_limit;
         pm->clamped = d->attachment == CS_ATTACH_CLAMPED;
-        pm->inertia = post_inertia(d, pm->pivot);
+        pm->inertia = post_inertia(barrier, p, pm->pivot);
     }
     cs_anchor_derive(&barrier->start_anchor, scenario->gravity, &m->anchors[0]);
     cs_anchor_derive(&barrier->end_anchor, scenario->gravity, &m->anchors[1]);
@@ -364,6 +404,7 @@ oom:
 
 void cs_model_free(cs_model *m) {
     if (!m) return;
+    free(m->rails);
     free(m->cables);
     free(m->posts);
     free(m);

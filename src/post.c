@@ -186,6 +186,7 @@ void cs_post_residual_at(const cs_model *model, const cs_state *s, int p, const 
         q[0] += l * (j[0] * f[0] + j[2] * f[1] + j[4] * f[2]);
         q[1] += l * (j[1] * f[0] + j[3] * f[1] + j[5] * f[2]);
     }
+    cs_rail_moment(model, s, p, tilt, j, q);
     double res[2];
     cs_post_resistance(&model->posts[p], &s->posts[p], tilt, res);
     r[0] = q[0] - res[0], r[1] = q[1] - res[1];
@@ -532,6 +533,7 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
                                 unit);
         }
     }
+    cs_rail_jacobian(model, s, rows, row, p, unit);
 }
 
 const cs_row_kind cs_post_rows = {2, residual, jacobian};

@@ -83,6 +83,10 @@ void cs_rows_length_gradient(const cs_span_grad *sp, double coef, double gp[3][3
 /* Gradient of the turning angle at node i, times coef; adds to gp (0 where the rope runs straight). */
 void cs_rows_angle_gradient(const cs_span_grad *sp, double coef, double gp[3][3]);
 
+/* The rails' share of post p's rows (rail.c), in its moment unit. */
+void cs_rail_jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row, int p,
+                      double unit);
+
 /* Coulomb's clamp(y, -b, b) with its corners rounded over a width w (a parabola over |x| < 4 ln 2 widths
  * at each: C1, exact outside the band, at most w ln 2 off at the corner), so that Newton sees a smooth
  * switch between sticking and sliding; and its slopes in y and b. */

@@ -16,6 +16,8 @@ static int allocate(const cs_model *model, cs_state *s, int with_workspace) {
     s->posts = calloc((size_t)(np ? np : 1), sizeof *s->posts);
     if (!s->cables || !s->posts) return -1;
     s->cable_count_alloc = nc;
+    s->rail_plastic = calloc((size_t)model->rail_count * (size_t)np + 1, sizeof *s->rail_plastic);
+    if (!s->rail_plastic) return -1;
     for (int c = 0; c < nc; c++) {
         cs_cable_state *cs = &s->cables[c];
         cs->node = calloc((size_t)nn, sizeof *cs->node);
@@ -73,7 +75,7 @@ void cs_state_free(cs_state *s) {
         cs_state_free(s->work->trial);
         free(s->work);
     }
-    free(s->cables), free(s->posts), free(s->events), free(s->speed_ring);
+    free(s->cables), free(s->posts), free(s->events), free(s->speed_ring), free(s->rail_plastic);
     free(s);
 }
 
@@ -84,7 +86,9 @@ void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src) {
     cs_state keep = *dst;
     *dst = *src;
     dst->cables = keep.cables, dst->posts = keep.posts, dst->events = keep.events;
-    dst->speed_ring = keep.speed_ring, dst->work = keep.work;
+    dst->speed_ring = keep.speed_ring, dst->work = keep.work, dst->rail_plastic = keep.rail_plastic;
+    memcpy(dst->rail_plastic, src->rail_plastic,
+           (size_t)model->rail_count * (size_t)model->post_count * sizeof *dst->rail_plastic);
     dst->cable_count_alloc = keep.cable_count_alloc;
     for (int c = 0; c < model->cable_count; c++) {
         cs_cable_state *d = &dst->cables[c], k = *d;
@@ -273,6 +277,8 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
         hash_bytes(&h, s->posts[p].tilt, sizeof s->posts[p].tilt);
         hash_bytes(&h, s->posts[p].plastic, sizeof s->posts[p].plastic);
     }
+    hash_bytes(&h, s->rail_plastic,
+               (size_t)model->rail_count * (size_t)model->post_count * sizeof *s->rail_plastic);
     for (int a = 0; a < 2; a++) {
         hash_bytes(&h, s->anchors[a].u, sizeof s->anchors[a].u);
         hash_bytes(&h, s->anchors[a].plastic, sizeof s->anchors[a].plastic);

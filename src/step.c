@@ -78,6 +78,7 @@ static void settle_barrier(const cs_model *model, cs_state *s) {
     cs_barrier_solve(model, s);
     cs_barrier_commit(model, s);
     s->e_cable_plastic = s->e_post_plastic = s->e_post_damping = s->e_soil = s->e_crush = s->e_friction = 0.0;
+    s->e_rail_plastic = 0.0;
 }
 
 void cs_state_reset(const cs_model *model, cs_state *s) {
@@ -102,6 +103,9 @@ void cs_state_reset(const cs_model *model, cs_state *s) {
     cs_system_reset(&s->work->sys);
     memset(&s->work->count, 0, sizeof s->work->count);
     memset(s->anchors, 0, sizeof s->anchors);
+    memset(s->rail_plastic, 0,
+           (size_t)model->rail_count * (size_t)model->post_count * sizeof *s->rail_plastic);
+    s->e_rail_plastic = 0.0;
     s->e_cable_plastic = s->e_post_plastic = s->e_post_damping = s->e_soil = s->e_crush = s->e_friction =
         s->e_released = s->e_tyre = 0.0;
     s->event_count = 0;

@@ -198,6 +198,12 @@ static void bandwidth(const cs_model *model, const cs_state *s, const cs_rows *w
                 if (cs->status == CS_CABLE_INTACT && cs->where[u->a] > 0)
                     neighbourhood(model, w, cs, c, cs->where[u->a], &lo, &hi);
             }
+            int left, right; /* the neighbours its rails tie it to */
+            if (cs_rail_ties(model, s, u->a, &left, &right))
+                for (int side = 0; side < 2; side++) {
+                    int o = side ? right : left, t = o >= 0 ? w->tilt_index[o] : -1;
+                    if (t >= 0) widen(t, &lo, &hi), widen(t + 1, &lo, &hi);
+                }
             hi = hi > k + 1 ? hi : k + 1;
             lo = lo < k - 1 ? lo : k - 1;
         } else if (u->kind == CS_U_ANCHOR) {

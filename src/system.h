@@ -8,9 +8,9 @@
 #include "rows.h"
 
 typedef struct cs_system {
-    cs_rows rows;          /* the unknowns, their columns, the placement's chords, axes and spans */
-    cs_slot *slots_kept;   /* the unknowns saved by cs_system_keep */
-    double *kept;          /* and their values */
+    cs_rows rows;        /* the unknowns, their columns, the placement's chords, axes and spans */
+    cs_slot *slots_kept; /* the unknowns saved by cs_system_keep */
+    double *kept;        /* and their values */
     int kept_n;
     cs_slot *slots_lu; /* the unknowns of the factored Jacobian */
     int lu_n, lu_kl, lu_ku;

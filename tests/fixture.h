@@ -20,6 +20,7 @@
 typedef struct fixture {
     cs_cable_def cables[2];
     cs_post_def posts[64];
+    cs_rail_def rails[4];
     cs_barrier_def barrier;
     cs_vehicle_def vehicle;
     cs_scenario_def scenario;
@@ -95,6 +96,24 @@ static inline cs_vehicle_def fixture_truck(void) {
     for (int i = 0; i < 6; i++)
         v.crush_deformation[i] = d[i], v.crush_force[i] = f[i] * fmax;
     return v;
+}
+
+/* The APS barriers' four rails (data/rails.yaml: open trapezoid 2.5 x 2 in, 12 gauge, Fy 50 ksi) at 1,
+ * 2.83, 4 and 7 ft. */
+static inline void fixture_rails(fixture *fx) {
+    const double z[4] = {1.0, 2.83, 4.0, 7.0};
+    for (int r = 0; r < 4; r++) {
+        cs_rail_def *d = &fx->rails[r];
+        *d = cs_default_rail_def();
+        d->height = z[r] * FT;
+        d->area = 0.693 * IN * IN;
+        d->inertia = 0.307 * IN * IN * IN * IN;
+        d->yield_stress = 50 * KSI;
+        d->modulus = 29000 * KSI;
+        d->mass_per_length = 2.36 * LB / FT;
+    }
+    fx->barrier.rails = fx->rails;
+    fx->barrier.rail_count = 4;
 }
 
 /* APS3: 136 ft, dead-men (3 x 5 ft concrete shafts, the ropes tied at grade) at both ends, posts every 8 ft

@@ -125,6 +125,7 @@ static void test_library_parts(void **state) {
                 cs_vehicle_def v;
                 cs_rope_def r;
                 cs_section_def s;
+                cs_rail_def rl;
             } d;
             if (cs_loader_part(l, (cs_part_kind)k, names[i], &d) != 0) {
                 cs_loader_print_errors(l, stderr);
@@ -133,7 +134,11 @@ static void test_library_parts(void **state) {
             assert_true(strlen(docs[i]) > 0);
         }
     }
-    assert_int_equal(total, 5 + 6 + 4);
+    assert_int_equal(total, 5 + 6 + 4 + 1);
+    cs_rail_def rail;
+    assert_int_equal(cs_loader_part(l, CS_PART_RAIL, "TRAP2.5x2x12ga", &rail), 0);
+    close_to(rail.area, 0.693 * IN * IN);
+    close_to(rail.mass_per_length, 2.36 * LB / 0.3048);
     cs_vehicle_def m;
     assert_int_equal(cs_loader_part(l, CS_PART_VEHICLE, "SD-STD-02.01", &m), 0);
     double mass = 15000 * LB, v = 39.25 * 0.44704, fmax = 0.5 * mass * v * v / 0.6;

@@ -115,9 +115,20 @@ static void jacobian_with_anchors_in_the_soil(void **state) {
     check_along_the_crash(&fx);
 }
 
+/* And with the four rails tying the posts (rail.c): their pull's slope on a post's own tilt and its
+ * neighbours'. */
+static void jacobian_with_rails(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    fixture_rails(&fx);
+    check_along_the_crash(&fx);
+}
+
 static void check_along_the_crash(fixture *fx_in) {
     fixture fx = *fx_in;
     fx.barrier.cables = fx.cables, fx.barrier.posts = fx.posts;
+    if (fx.barrier.rail_count) fx.barrier.rails = fx.rails;
     cs_error err;
     cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
     if (!m) fail_msg("%s", err.message);
@@ -175,6 +186,7 @@ static void fallback_is_reached_and_balances(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(jacobian_is_the_derivative_of_the_residual),
                                        cmocka_unit_test(jacobian_with_anchors_in_the_soil),
+                                       cmocka_unit_test(jacobian_with_rails),
                                        cmocka_unit_test(fallback_is_reached_and_balances)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -117,11 +117,26 @@ typedef struct cs_anchor_def {
 
 #define CS_CONCRETE_DENSITY 2300.0 /* kg/m^3, plain concrete */
 
+/* A horizontal rail tying neighbouring posts at one height (the APS barriers' open trapezoidal rails):
+ * between each pair of neighbouring posts an axial member, elastic (EA over the spacing), yielding at
+ * A Fy in tension and buckling at the Euler load pi^2 E I / spacing^2 in compression, then holding that
+ * force (rail.c). Half of each span's steel swings with each of its posts. */
+typedef struct cs_rail_def {
+    double height;          /* above grade, m */
+    double area;            /* A, m^2 */
+    double inertia;         /* I about its weaker axis, m^4 (the buckling load) */
+    double yield_stress;    /* Fy, Pa */
+    double modulus;         /* E, Pa */
+    double mass_per_length; /* kg/m */
+} cs_rail_def;
+
 typedef struct cs_barrier_def {
     int cable_count;
     const cs_cable_def *cables;
     int post_count;
-    const cs_post_def *posts;   /* in increasing x */
+    const cs_post_def *posts; /* in increasing x */
+    int rail_count;
+    const cs_rail_def *rails;
     cs_anchor_def start_anchor; /* at the low-x end */
     cs_anchor_def end_anchor;   /* at the high-x end */
 } cs_barrier_def;
@@ -173,6 +188,7 @@ cs_section_def cs_default_section_def(void);
 cs_footing_def cs_default_footing_def(void);
 cs_post_def cs_default_post_def(void);
 cs_anchor_def cs_default_anchor_def(void);
+cs_rail_def cs_default_rail_def(void);
 cs_barrier_def cs_default_barrier_def(void);
 cs_vehicle_def cs_default_vehicle_def(void);
 cs_scenario_def cs_default_scenario_def(void);

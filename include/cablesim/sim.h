@@ -194,6 +194,8 @@ typedef struct cs_energy {
     double post_damping;   /* of the posts' swing and the anchors' slide by their implicit integration */
     double anchor_elastic; /* the soil's elastic spring at the anchors */
     double anchor_kinetic; /* the anchors' slide */
+    double rail_elastic;   /* the rails' axial strain energy */
+    double rail_plastic;   /* the rails' yielding and buckling */
     double soil;           /* plastic work of footings and anchors moving through the soil */
     double crush;
     double friction; /* tyres, cable sliding over supports */

@@ -279,6 +279,16 @@ static void convert_cable(cs_loader *l, const cs_node *c, cs_cable_def *out) {
                     out->pretension / 1e3, r->elastic_limit_ratio * fu / 1e3);
 }
 
+/* ---- rails ---- */
+
+static void convert_rail(cs_loader *l, const cs_node *r, cs_rail_def *out) {
+    *out = cs_default_rail_def();
+    const cs_node *name = cs_node_get(r, "rail");
+    const cs_node *part = name ? cs_find_part(l, name->source, "rails", name->text, name) : NULL;
+    if (part) fields(l, part, out, 1);
+    fields(l, r, out, 1);
+}
+
 /* ---- posts ---- */
 
 typedef struct post_slot {
@@ -409,6 +419,17 @@ static int convert_posts(cs_loader *l, const cs_node *barrier, cs_barrier_def *o
 static void check_barrier(cs_loader *l, const cs_node *barrier, const cs_barrier_def *b) {
     const cs_node *cables = cs_node_get(barrier, "cables"), *anchors = cs_node_get(barrier, "anchors");
     const cs_post_def *first = &b->posts[0], *last = &b->posts[b->post_count - 1];
+    const cs_node *rails = cs_node_get(barrier, "rails");
+    for (int r = 0; r < b->rail_count; r++)
+        for (int p = 0; p < b->post_count; p++) {
+            if (b->rails[r].height <= b->posts[p].height) continue;
+            cs_err_node(
+                l, at(rails->items[r], "height"), 0,
+                "the rail (%g m) is above the top of the post at x = %g m (%g m) (expected a height up "
+                "to the posts' tops)",
+                b->rails[r].height, b->posts[p].x, b->posts[p].height);
+            break;
+        }
     for (int c = 0; c < b->cable_count; c++) {
         for (int p = 0; p < b->post_count; p++) {
             if (b->cables[c].height <= b->posts[p].height) continue;
@@ -474,7 +495,9 @@ int cs_convert_model(cs_loader *l, const cs_node *root, const char *file, cs_mod
     const cs_node *cables = cs_node_get(barrier, "cables"), *anchors = cs_node_get(barrier, "anchors");
     l->anchors_node = anchors;
     const cs_node *soil = cs_node_get(barrier, "soil");
-    if (soil) fields(l, soil, &out->barrier.start_anchor.footing, 0), fields(l, soil, &out->barrier.end_anchor.footing, 0);
+    if (soil)
+        fields(l, soil, &out->barrier.start_anchor.footing, 0),
+            fields(l, soil, &out->barrier.end_anchor.footing, 0);
     if (anchors) fields(l, anchors, &out->barrier, 1);
     if (cables && cables->count == 0) cs_err_node(l, cables, 0, "no cables (expected at least one)");
     cs_cable_def *defs = cables ? cs_arena_alloc(l, (size_t)cables->count * sizeof *defs + 1) : NULL;
@@ -485,6 +508,12 @@ int cs_convert_model(cs_loader *l, const cs_node *root, const char *file, cs_mod
     }
     out->barrier.cables = defs;
     out->barrier.cable_count = cables ? cables->count : 0;
+    const cs_node *rails = cs_node_get(barrier, "rails");
+    cs_rail_def *rail_defs = rails ? cs_arena_alloc(l, (size_t)rails->count * sizeof *rail_defs + 1) : NULL;
+    for (int r = 0; rail_defs && r < rails->count; r++)
+        convert_rail(l, rails->items[r], &rail_defs[r]);
+    out->barrier.rails = rail_defs;
+    out->barrier.rail_count = rails ? rails->count : 0;
     convert_posts(l, barrier, &out->barrier);
     if (l->error_count == barrier_before && !cs_damaged(l, barrier)) {
         check_barrier(l, barrier, &out->barrier);

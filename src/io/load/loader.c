@@ -478,7 +478,7 @@ int cs_loader_load_buffer(cs_loader *l, const char *name, const char *data, size
 
 /* ---- the library ---- */
 
-static const char *const part_lists[CS_PART_KIND_COUNT] = {"vehicles", "ropes", "sections"};
+static const char *const part_lists[CS_PART_KIND_COUNT] = {"vehicles", "ropes", "sections", "rails"};
 
 int cs_loader_library(cs_loader *l, cs_part_kind kind, const char ***names, const char ***descriptions) {
     if (cs_library_read(l) != 0) return -1;
@@ -515,7 +515,10 @@ int cs_loader_part(cs_loader *l, cs_part_kind kind, const char *name, void *def)
         errors = cs_convert_vehicle(l, part, def);
     else if (kind == CS_PART_ROPE)
         errors = cs_convert_rope(l, part, def, NULL);
-    else {
+    else if (kind == CS_PART_RAIL) {
+        *(cs_rail_def *)def = cs_default_rail_def();
+        errors = cs_convert_fields(l, part, def);
+    } else {
         *(cs_section_def *)def = cs_default_section_def();
         errors = cs_convert_fields(l, part, def);
     }

@@ -52,7 +52,13 @@ const char *cs_loader_error(cs_loader *loader, int i);
 void cs_loader_print_errors(cs_loader *loader, FILE *out);
 
 /* ---- the parts library (and a model file's own parts) ---- */
-typedef enum cs_part_kind { CS_PART_VEHICLE, CS_PART_ROPE, CS_PART_SECTION, CS_PART_KIND_COUNT } cs_part_kind;
+typedef enum cs_part_kind {
+    CS_PART_VEHICLE,
+    CS_PART_ROPE,
+    CS_PART_SECTION,
+    CS_PART_RAIL,
+    CS_PART_KIND_COUNT
+} cs_part_kind;
 
 /* Names of the library's parts of a kind, in file order. Returns the count (-1: library errors). */
 int cs_loader_library(cs_loader *loader, cs_part_kind kind, const char ***names, const char ***descriptions);

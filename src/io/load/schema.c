@@ -114,10 +114,25 @@ static const cs_field section_fields[] = {
 const cs_table cs_table_section = {"section", "A steel post section (strong axis).", CS_T_SECTION,
                                    section_fields, N(section_fields)};
 
+#define RL(key, q, flags, member, doc) QTY(key, q, flags, cs_rail_def, member, doc)
+#define RAIL_SECTION_FIELDS(req)                                                                             \
+    RL("area", CS_Q_AREA, req | CS_POS, area, "steel area A"),                                               \
+        RL("inertia", CS_Q_SECOND_MOMENT, req | CS_POS, inertia,                                             \
+           "second moment of area about its weaker axis"),                                                   \
+        RL("yield_stress", CS_Q_PRESSURE, req | CS_POS, yield_stress, "yield stress Fy"),                    \
+        RL("modulus", CS_Q_PRESSURE, CS_POS, modulus, "Young's modulus E"),                                  \
+        RL("mass_per_length", CS_Q_MASS_PER_LENGTH, CS_NONNEG, mass_per_length,                              \
+           "mass per length: half of each span swings with each of its posts")
+static const cs_field rail_part_fields[] = {NAMED_PART("rail"), RAIL_SECTION_FIELDS(CS_REQ)};
+const cs_table cs_table_rail_part = {"rail_section",
+                                     "A rail's section: the member that ties neighbouring posts.", CS_T_RAIL,
+                                     rail_part_fields, N(rail_part_fields)};
+
 static const cs_field parts_fields[] = {
     SUB("vehicles", CS_F_SEQ, 0, -1, cs_table_vehicle, "named vehicles"),
     SUB("ropes", CS_F_SEQ, 0, -1, cs_table_rope, "named wire ropes"),
     SUB("sections", CS_F_SEQ, 0, -1, cs_table_section, "named post sections"),
+    SUB("rails", CS_F_SEQ, 0, -1, cs_table_rail_part, "named rail sections"),
 };
 const cs_table cs_table_parts = {"parts",
                                  "Named parts defined in this file, used by name like the library's "
@@ -162,7 +177,8 @@ static const cs_field cable_fields[] = {
     QTY("pretension", CS_Q_FORCE, CS_NONNEG, cs_cable_def, pretension, "installed tension"),
     QTY("post_friction", CS_Q_NUMBER, CS_NONNEG, cs_cable_def, post_friction,
         "friction between cable and post (capstan at a threaded post)"),
-    {"termination", CS_F_ENUM, CS_Q_NUMBER, 0, (long)offsetof(cs_cable_def, termination), NULL, termination_words,
+    {"termination", CS_F_ENUM, CS_Q_NUMBER, 0, (long)offsetof(cs_cable_def, termination), NULL,
+     termination_words,
      "the fitting at each end: clips (cable clamps; 80% of the rope's strength below 1 in, 90% from 1 in), "
      "swaged (95%), spelter (100%) or wedge (85%)"},
     QTY("termination_efficiency", CS_Q_NUMBER, CS_POS | CS_MAX1, cs_cable_def, termination_efficiency,
@@ -214,11 +230,23 @@ static const cs_field anchor_fields[] = {
     QTY("pullout_capacity", CS_Q_FORCE, CS_POS | CS_NONE_OK, cs_anchor_def, pullout_capacity,
         "uplift that pulls it out (none: never; not given: its weight and skin friction)"),
 };
-const cs_table cs_table_anchor = {"anchor",
-                                  "A cable end anchor: a footing (dead-man) in the soil that resists the ropes' "
-                                  "pull by Eq. 21 at their height, slides through the soil past it, and pulls out "
-                                  "after the travel its footing's rotation limit allows.",
-                                  CS_T_ANCHOR, anchor_fields, N(anchor_fields)};
+static const cs_field rail_fields[] = {
+    TEXT("rail", CS_REQ, "name of a rail section part"),
+    RL("height", CS_Q_LENGTH, CS_REQ | CS_POS, height, "height above grade"),
+    RAIL_SECTION_FIELDS(0),
+};
+const cs_table cs_table_rail = {
+    "rail",
+    "A horizontal rail tying each pair of neighbouring posts at one height: an axial "
+    "member over each span, yielding in tension and buckling in compression.",
+    CS_T_RAIL, rail_fields, N(rail_fields)};
+
+const cs_table cs_table_anchor = {
+    "anchor",
+    "A cable end anchor: a footing (dead-man) in the soil that resists the ropes' "
+    "pull by Eq. 21 at their height, slides through the soil past it, and pulls out "
+    "after the travel its footing's rotation limit allows.",
+    CS_T_ANCHOR, anchor_fields, N(anchor_fields)};
 
 static const cs_field anchors_fields[] = {
     SUB("start", CS_F_MAP, CS_REQ, (long)offsetof(cs_barrier_def, start_anchor), cs_table_anchor,
@@ -234,6 +262,8 @@ static const cs_field barrier_fields[] = {
     SUB("soil", CS_F_MAP, 0, -1, cs_table_soil, "soil of every footing"),
     SUB("cables", CS_F_SEQ, CS_REQ, -1, cs_table_cable, "the cables"),
     SUB("posts", CS_F_SEQ, CS_REQ, -1, cs_table_posts, "groups of posts"),
+    SUB("rails", CS_F_SEQ, 0, -1, cs_table_rail,
+        "rails tying neighbouring posts (none: posts free of each other)"),
     SUB("anchors", CS_F_MAP, CS_REQ, 0, cs_table_anchors, "the end anchors"),
 };
 const cs_table cs_table_barrier = {"barrier",
@@ -359,6 +389,9 @@ void cs_target_defaults(cs_target t, cs_any_def *out) {
     case CS_T_ANCHOR:
         out->anchor = cs_default_anchor_def();
         break;
+    case CS_T_RAIL:
+        out->rail = cs_default_rail_def();
+        break;
     case CS_T_BARRIER:
         out->barrier = cs_default_barrier_def();
         break;
@@ -373,9 +406,10 @@ void cs_target_defaults(cs_target t, cs_any_def *out) {
 /* ---- the reference, docs/file-format.md ---- */
 
 static const cs_table *const doc_tables[] = {
-    &cs_table_model,   &cs_table_parts,   &cs_table_vehicle, &cs_table_box,      &cs_table_rope,
-    &cs_table_section, &cs_table_barrier, &cs_table_soil,    &cs_table_cable,    &cs_table_posts,
-    &cs_table_footing, &cs_table_anchors, &cs_table_anchor,  &cs_table_scenario,
+    &cs_table_model,     &cs_table_parts,   &cs_table_vehicle, &cs_table_box,
+    &cs_table_rope,      &cs_table_section, &cs_table_barrier, &cs_table_soil,
+    &cs_table_cable,     &cs_table_posts,   &cs_table_footing, &cs_table_rail,
+    &cs_table_rail_part, &cs_table_anchors, &cs_table_anchor,  &cs_table_scenario,
 };
 
 static void doc_type(FILE *out, const cs_field *f) {

@@ -40,6 +40,7 @@ typedef enum cs_target {
     CS_T_POST,
     CS_T_FOOTING,
     CS_T_ANCHOR,
+    CS_T_RAIL,
     CS_T_BARRIER,
     CS_T_SCENARIO
 } cs_target;
@@ -74,13 +75,14 @@ typedef union cs_any_def {
     cs_post_def post;
     cs_footing_def footing;
     cs_anchor_def anchor;
+    cs_rail_def rail;
     cs_barrier_def barrier;
     cs_scenario_def scenario;
 } cs_any_def;
 
 extern const cs_table cs_table_model, cs_table_parts, cs_table_vehicle, cs_table_box, cs_table_rope,
     cs_table_section, cs_table_barrier, cs_table_soil, cs_table_cable, cs_table_posts, cs_table_footing,
-    cs_table_anchors, cs_table_anchor, cs_table_scenario;
+    cs_table_anchors, cs_table_anchor, cs_table_rail_part, cs_table_rail, cs_table_scenario;
 
 /* The index of key in t, or -1. */
 int cs_table_find(const cs_table *t, const char *key);

@@ -14,18 +14,31 @@ void cs_w_num(cs_wout *w, double v, const char *what) {
     fprintf(w->f, "%.10g", v);
 }
 
-static const char *const energy_names[] = {
-    "ke_j",           "pe_j",           "cable_elastic_j", "cable_plastic_j",  "post_elastic_j",
-    "post_kinetic_j", "post_plastic_j", "post_damping_j",  "anchor_elastic_j", "anchor_kinetic_j",
-    "soil_j",         "crush_j",        "friction_j",      "released_j",       "energy_balance_error"};
+static const char *const energy_names[] = {"ke_j",
+                                           "pe_j",
+                                           "cable_elastic_j",
+                                           "cable_plastic_j",
+                                           "post_elastic_j",
+                                           "post_kinetic_j",
+                                           "post_plastic_j",
+                                           "post_damping_j",
+                                           "anchor_elastic_j",
+                                           "anchor_kinetic_j",
+                                           "rail_elastic_j",
+                                           "rail_plastic_j",
+                                           "soil_j",
+                                           "crush_j",
+                                           "friction_j",
+                                           "released_j",
+                                           "energy_balance_error"};
 enum { ENERGY_TERMS = sizeof energy_names / sizeof energy_names[0] };
 
 static void energy_values(const cs_energy *e, double v[ENERGY_TERMS]) {
     const double all[ENERGY_TERMS] = {
-        e->vehicle_kinetic, e->vehicle_potential, e->cable_elastic, e->cable_plastic,
-        e->post_elastic,    e->post_kinetic,      e->post_plastic,  e->post_damping,
-        e->anchor_elastic,  e->anchor_kinetic,    e->soil,          e->crush,
-        e->friction,        e->released,          e->balance_error};
+        e->vehicle_kinetic, e->vehicle_potential, e->cable_elastic, e->cable_plastic,  e->post_elastic,
+        e->post_kinetic,    e->post_plastic,      e->post_damping,  e->anchor_elastic, e->anchor_kinetic,
+        e->rail_elastic,    e->rail_plastic,      e->soil,          e->crush,          e->friction,
+        e->released,        e->balance_error};
     memcpy(v, all, sizeof all);
 }
 

@@ -173,6 +173,8 @@ static const struct {
     {"post_kinetic", offsetof(cs_energy, post_kinetic)},
     {"anchor_elastic", offsetof(cs_energy, anchor_elastic)},
     {"anchor_kinetic", offsetof(cs_energy, anchor_kinetic)},
+    {"rail_elastic", offsetof(cs_energy, rail_elastic)},
+    {"rail_plastic", offsetof(cs_energy, rail_plastic)},
     {"cable_elastic", offsetof(cs_energy, cable_elastic)},
     {"vehicle_potential", offsetof(cs_energy, vehicle_potential)},
     {"vehicle_kinetic", offsetof(cs_energy, vehicle_kinetic)},

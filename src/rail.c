@@ -1,0 +1,146 @@
+/* Rails: horizontal members tying neighbouring posts at one height (the APS barriers' open trapezoidal
+ * rails), where a post's failure or the truck's fold of the end posts along the barrier pulls on its
+ * neighbours.
+ *
+ * Segment k of a rail joins posts k and k+1 at the rail's height z: the points a = base_k + (z + d_k)
+ * axis(alpha_k) and b likewise. It is an axial bar of rest length L0 (the posts' spacing as built): its
+ * force N = (EA / L0) (|b - a| - L0 - delta_p), N > 0 in tension, is capped at A Fy in tension and at the
+ * Euler load pi^2 E I / L0^2 (pinned at the posts, its weak axis) in compression, where it then holds
+ * that force as it stretches or shortens further (delta_p its plastic, or buckled, change of length,
+ * radial return at each commit, the work booked as the rails' plastic work). Its pull on post k, N u (u
+ * the unit vector from a to b), and -N u on post k+1, enter their moment balances through each post's
+ * axis Jacobian: Q = (z + d) J^T F, as a cable's pull does (post.c). A segment acts while both its posts
+ * stand and neither has been struck by the face; a post's failure ends it, its stored energy released.
+ * Half of each segment's steel swings with each of its posts (model.c). */
+#include "rows.h"
+#include "vec3.h"
+
+#include <math.h>
+
+static int segment_acts(const cs_model *model, const cs_state *s, int k) {
+    if (k < 0 || k + 1 >= model->post_count) return 0;
+    const cs_post_state *a = &s->posts[k], *b = &s->posts[k + 1];
+    return cs_post_standing(a) && cs_post_standing(b) && !a->captured && !b->captured;
+}
+
+/* Segment k of rail r with its posts at tilts ta and tb: the force on post k (N u), the force N, the
+ * bar's chord length l and unit u, and whether N is on its cap. */
+typedef struct bar {
+    double f[3], n, l, u[3];
+    int capped;
+} bar;
+
+static bar bar_at(const cs_model *model, const cs_state *s, int r, int k, const double *ta,
+                  const double *tb) {
+    const cs_rail_model *rm = &model->rails[r];
+    double pa[3], pb[3], d[3];
+    cs_post_attachment(model, k, ta, rm->z, pa);
+    cs_post_attachment(model, k + 1, tb, rm->z, pb);
+    v3_sub(d, pb, pa);
+    bar b;
+    b.l = v3_norm(d);
+    v3_scale(b.u, d, b.l > 0.0 ? 1.0 / b.l : 0.0);
+    size_t at = (size_t)r * (size_t)model->post_count + (size_t)k;
+    double l0 = model->posts[k + 1].x - model->posts[k].x;
+    double trial = rm->ea / l0 * (b.l - l0 - s->rail_plastic[at]);
+    double lo = -rm->buckling_load, hi = rm->yield_force;
+    b.n = trial > hi ? hi : (trial < lo ? lo : trial);
+    b.capped = trial > hi || trial < lo;
+    v3_scale(b.f, b.u, b.n);
+    return b;
+}
+
+void cs_rail_moment(const cs_model *model, const cs_state *s, int p, const double *tilt, const double *axis,
+                    double *q) {
+    double lever_base = model->posts[p].pivot;
+    for (int r = 0; r < model->rail_count; r++) {
+        double lever = model->rails[r].z + lever_base;
+        for (int side = 0; side < 2; side++) {
+            int k = side == 0 ? p - 1 : p; /* the segment ending at p, the one starting there */
+            if (!segment_acts(model, s, k)) continue;
+            bar b = side == 0 ? bar_at(model, s, r, k, s->posts[k].tilt, tilt)
+                              : bar_at(model, s, r, k, tilt, s->posts[k + 1].tilt);
+            double sign = side == 0 ? -1.0 : 1.0; /* the force on p: -N u at the segment's end */
+            q[0] += sign * lever * (axis[0] * b.f[0] + axis[2] * b.f[1] + axis[4] * b.f[2]);
+            q[1] += sign * lever * (axis[1] * b.f[0] + axis[3] * b.f[1] + axis[5] * b.f[2]);
+        }
+    }
+}
+
+/* Post p's rows (from `row`, its moment unit `unit`): the rails' moment's slope on its own tilt and on
+ * its neighbours'. With G = dN/dl u u^T + N (I - u u^T) / l the derivative of N u along the chord, the
+ * force on p moves by -G dP_p + G dP_o (o the other post), so with P = base + (z + d) a(alpha):
+ * dQ_p/dalpha_p = -l_p^2 J_p^T G J_p + l_p dJ_p^T F_p and dQ_p/dalpha_o = l_p l_o J_p^T G J_o. */
+void cs_rail_jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row, int p,
+                      double unit) {
+    const double *ja = rows->axes + 18 * p, *dj = ja + 6;
+    for (int r = 0; r < model->rail_count; r++) {
+        const cs_rail_model *rm = &model->rails[r];
+        double lp = rm->z + model->posts[p].pivot;
+        for (int side = 0; side < 2; side++) {
+            int k = side == 0 ? p - 1 : p, o = side == 0 ? p - 1 : p + 1;
+            if (!segment_acts(model, s, k)) continue;
+            bar b = bar_at(model, s, r, k, s->posts[k].tilt, s->posts[k + 1].tilt);
+            double sign = side == 0 ? -1.0 : 1.0, f[3] = {sign * b.f[0], sign * b.f[1], sign * b.f[2]};
+            double dn = b.capped ? 0.0 : rm->ea / (model->posts[k + 1].x - model->posts[k].x), g[3][3];
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 3; j++)
+                    g[i][j] =
+                        dn * b.u[i] * b.u[j] + (b.l > 0.0 ? b.n / b.l * ((i == j) - b.u[i] * b.u[j]) : 0.0);
+            double lo = rm->z + model->posts[o].pivot, jo[6], djo[12];
+            cs_post_axis_jacobian(s->posts[o].tilt, jo, djo);
+            int col_o = rows->tilt_index[o];
+            for (int a = 0; a < 2; a++) {
+                double gj[3]; /* G J_p e_a, the force's change with p's own tilt (less its sign) */
+                for (int i = 0; i < 3; i++)
+                    gj[i] = g[i][0] * ja[a] + g[i][1] * ja[2 + a] + g[i][2] * ja[4 + a];
+                for (int m = 0; m < 2; m++) {
+                    double jtg = ja[m] * gj[0] + ja[2 + m] * gj[1] + ja[4 + m] * gj[2];
+                    double turn = dj[6 * a + m] * f[0] + dj[6 * a + 2 + m] * f[1] + dj[6 * a + 4 + m] * f[2];
+                    cs_rows_add(rows, row + m, row + a, (-lp * lp * jtg + lp * turn) / unit);
+                }
+                if (col_o < 0) continue;
+                double go[3];
+                for (int i = 0; i < 3; i++)
+                    go[i] = g[i][0] * jo[a] + g[i][1] * jo[2 + a] + g[i][2] * jo[4 + a];
+                for (int m = 0; m < 2; m++)
+                    cs_rows_add(rows, row + m, col_o + a,
+                                lp * lo * (ja[m] * go[0] + ja[2 + m] * go[1] + ja[4 + m] * go[2]) / unit);
+            }
+        }
+    }
+}
+
+/* End of step: each acting segment's plastic (or buckled) change of length and its work. */
+void cs_rail_commit(const cs_model *model, cs_state *s) {
+    for (int r = 0; r < model->rail_count; r++) {
+        const cs_rail_model *rm = &model->rails[r];
+        for (int k = 0; k + 1 < model->post_count; k++) {
+            if (!segment_acts(model, s, k)) continue;
+            bar b = bar_at(model, s, r, k, s->posts[k].tilt, s->posts[k + 1].tilt);
+            if (!b.capped) continue;
+            size_t at = (size_t)r * (size_t)model->post_count + (size_t)k;
+            double l0 = model->posts[k + 1].x - model->posts[k].x;
+            double slip = b.l - l0 - s->rail_plastic[at] - b.n * l0 / rm->ea; /* beyond the elastic part */
+            s->rail_plastic[at] += slip;
+            s->e_rail_plastic += fabs(b.n * slip);
+        }
+    }
+}
+
+double cs_rail_stored_energy(const cs_model *model, const cs_state *s) {
+    double e = 0.0;
+    for (int r = 0; r < model->rail_count; r++)
+        for (int k = 0; k + 1 < model->post_count; k++) {
+            if (!segment_acts(model, s, k)) continue;
+            bar b = bar_at(model, s, r, k, s->posts[k].tilt, s->posts[k + 1].tilt);
+            e += 0.5 * b.n * b.n * (model->posts[k + 1].x - model->posts[k].x) / model->rails[r].ea;
+        }
+    return e;
+}
+
+int cs_rail_ties(const cs_model *model, const cs_state *s, int p, int *left, int *right) {
+    *left = model->rail_count > 0 && segment_acts(model, s, p - 1) ? p - 1 : -1;
+    *right = model->rail_count > 0 && segment_acts(model, s, p) ? p + 1 : -1;
+    return *left >= 0 || *right >= 0;
+}
