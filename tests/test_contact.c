@@ -1,0 +1,124 @@
+/* The vehicle's face against the cables (src/contact.c) and its crush (src/vehicle.c), and the events a
+ * run records (src/events.c). */
+#include "check.h"
+#include "fixture.h"
+#include "internal.h"
+#include "vec3.h"
+
+/* The crush curve: linear between its points, extrapolated with its last slope; below the largest crush
+ * reached the face unloads with crush_unload_stiffness, so its permanent set is d_max - C(d_max) / k_u. */
+static void crush_loads_on_its_curve_and_unloads_elastically(void **state) {
+    (void)state;
+    cs_vehicle_def v = fixture_truck();
+    double fmax = v.crush_force[4], k = v.crush_unload_stiffness;
+    CHECK_REL(cs_crush_curve(&v, 0.2), 0.5 * fmax, 1e-12);  /* halfway from 0.4 Fmax to 0.6 Fmax */
+    CHECK_REL(cs_crush_curve(&v, 0.75), 0.9 * fmax, 1e-12); /* halfway from 0.8 Fmax to Fmax */
+    CHECK_REL(cs_crush_curve(&v, 1.1), 3.0 * fmax + 2.0 * fmax, 1e-12); /* past the end: slope 20 Fmax/m */
+    CHECK_ABS(cs_crush_curve(&v, -0.1), 0.0, 0.0);
+    double dmax = 0.6, c = cs_crush_curve(&v, dmax);
+    CHECK_REL(cs_crush_force(&v, dmax, dmax), c, 1e-12);
+    CHECK_REL(cs_crush_force(&v, dmax - 0.01, dmax), c - 0.01 * k, 1e-12); /* unloading, slope k */
+    CHECK_REL(cs_crush_permanent(&v, dmax), dmax - c / k, 1e-12);
+    CHECK_ABS(cs_crush_force(&v, cs_crush_permanent(&v, dmax), dmax), 0.0, 1e-6 * c);
+    CHECK_REL(cs_crush_force(&v, 0.7, dmax), cs_crush_curve(&v, 0.7), 1e-12); /* loading past dmax */
+}
+
+/* A cable below the face's bottom edge (a truck whose bumper rides above it) is overridden, one above its
+ * top is run under: each slips at first contact with its event, the rest engage and hold. */
+static void cables_below_and_above_the_face_slip(void **state) {
+    (void)state;
+    for (int k = 0; k < 2; k++) {
+        fixture fx;
+        fixture_aps3(&fx);
+        fx.vehicle.face_bottom = k == 0 ? 1.0 : 0.3; /* the lower cable (0.86 m) below it, then */
+        fx.vehicle.face_top = k == 0 ? 1.6 : 1.0;    /* the upper (1.22 m) above it */
+        fx.scenario.t_end = 0.05;
+        cs_error err;
+        cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+        if (!m) fail_msg("%s", err.message);
+        cs_state *s = cs_state_create(m, &err);
+        assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
+        int slipped = k == 0 ? 0 : 1, held = 1 - slipped, seen = 0;
+        for (int i = 0; i < cs_state_event_count(s); i++) {
+            const cs_event *e = cs_state_event(s, i);
+            if (e->type != CS_EVENT_OVERRIDE && e->type != CS_EVENT_UNDERRIDE) continue;
+            assert_int_equal(e->type, k == 0 ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
+            assert_int_equal(e->element, slipped);
+            seen++;
+        }
+        assert_int_equal(seen, 1);
+        assert_int_equal(s->cables[slipped].status, CS_CABLE_SLIPPED);
+        assert_int_equal(s->cables[held].status, CS_CABLE_INTACT);
+        assert_true(s->cables[held].engaged);
+        cs_state_free(s);
+        cs_model_free(m);
+    }
+}
+
+/* Head-on and centred, each cable wraps both corners of the face; the face's normal force is what the
+ * cables pull on the corners along the heading (plus nothing else: a 1.8-m face in the middle of an
+ * 8-ft bay strikes no post), and the crush balances it on the crush curve. */
+static void cables_wrap_both_corners(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    fx.vehicle.front_width = 1.8;
+    fx.scenario.t_end = 0.02;
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    cs_state *s = cs_state_create(m, &err);
+    assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
+    double pull = 0.0, ahead[3], bx[3] = {1.0, 0.0, 0.0};
+    quat_rotate(ahead, s->quat, bx);
+    for (int c = 0; c < 2; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        assert_true(cs->engaged);
+        assert_true(cs_cable_find_node(cs, CS_NODE_LEFT) > 0 && cs_cable_find_node(cs, CS_NODE_RIGHT) > 0);
+        for (int id = CS_NODE_RIGHT; id <= CS_NODE_LEFT; id++) {
+            double f[3];
+            cs_node_force(cs, cs_cable_find_node(cs, id), NULL, f);
+            pull -= v3_dot(f, ahead);
+        }
+    }
+    for (int p = 0; p < m->post_count; p++)
+        assert_false(s->posts[p].captured);
+    CHECK_REL(s->face_force, pull, 1e-9);
+    CHECK_REL(cs_crush_force(&fx.vehicle, s->crush, s->crush_max), s->face_force, 0.05); /* crush tolerance */
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
+/* A run's events come in time order, and no element fails twice. */
+static void events_in_order_and_once(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    cs_state *s = cs_state_create(m, &err);
+    assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
+    int n = cs_state_event_count(s), failed[64] = {0}, end = 0;
+    assert_true(n > 5);
+    for (int i = 0; i < n; i++) {
+        const cs_event *e = cs_state_event(s, i);
+        if (i) assert_true(e->t >= cs_state_event(s, i - 1)->t);
+        int fails = e->type == CS_EVENT_POST_ROTATION_LIMIT || e->type == CS_EVENT_POST_SHEAR ||
+                    e->type == CS_EVENT_POST_PULLOUT;
+        if (fails) assert_int_equal(failed[e->element]++, 0);
+        end += e->type == CS_EVENT_STOPPED || e->type == CS_EVENT_BREAKTHROUGH;
+        if (e->type == CS_EVENT_STOPPED || e->type == CS_EVENT_BREAKTHROUGH) assert_int_equal(i, n - 1);
+    }
+    assert_int_equal(end, 1);
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {cmocka_unit_test(crush_loads_on_its_curve_and_unloads_elastically),
+                                       cmocka_unit_test(cables_below_and_above_the_face_slip),
+                                       cmocka_unit_test(cables_wrap_both_corners),
+                                       cmocka_unit_test(events_in_order_and_once)};
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

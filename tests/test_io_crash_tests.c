@@ -1,0 +1,128 @@
+/* The crash tests' predictions, pinned. Each example (examples/aps1.yaml, aps3.yaml, aps4.yaml) is run to
+ * its end and
+ * - the final state's hash (cs_state_hash: positions, velocities, cable paths, tilts, anchors, rails, the
+ *   ledger) must equal the value stored here, as Box2D's determinism test does: any change to what the
+ *   engine computes shows, and is reviewed by updating the value;
+ * - its outcome and main numbers must equal those in tests/predictions/crash-tests.csv within 1e-6: a
+ *   change of prediction is a visible change of that file (APS3 and APS4 stay blind: these are the
+ *   model's predictions, not test results).
+ * Rewrite both with CS_PIN_UPDATE=1 build/test_io_crash_tests (it prints what to store). */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "load/loader.h"
+
+enum { TESTS = 3 };
+static const char *const names[TESTS] = {"aps1", "aps3", "aps4"};
+/* cs_state_hash of each run's final state */
+static const unsigned long long hashes[TESTS] = {0xb44d0e9900331560ULL, 0x2ad2c88848298279ULL,
+                                                 0x11c3324821bfb001ULL};
+
+typedef struct pinned {
+    char outcome[32];
+    double decel_g, penetration_m, exit_speed_mps, t_s;
+    int cables_broken, rotation, shear, pullout;
+    char anchors[2][16];
+} pinned;
+
+static pinned run(const char *name, unsigned long long *hash) {
+    char why[256], path[512];
+    cs_loader *l = cs_loader_create(CS_SOURCE_DIR "/data", why, sizeof why);
+    if (!l) fail_msg("%s", why);
+    snprintf(path, sizeof path, CS_SOURCE_DIR "/examples/%s.yaml", name);
+    cs_model_input in;
+    cs_model *m = NULL;
+    if (cs_loader_load(l, path, &in) != 0 || !(m = cs_loader_build(l, &in))) {
+        cs_loader_print_errors(l, stderr);
+        fail_msg("%s did not load", path);
+    }
+    cs_error err;
+    cs_state *s = cs_state_create(m, &err);
+    assert_non_null(s);
+    assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
+    cs_summary sm;
+    cs_state_summary(s, &sm);
+    pinned p;
+    memset(&p, 0, sizeof p);
+    snprintf(p.outcome, sizeof p.outcome, "%s", cs_outcome_name(sm.outcome));
+    p.decel_g = sm.max_decel_50ms_g, p.penetration_m = sm.max_dynamic_penetration, p.t_s = sm.t;
+    p.exit_speed_mps = sm.outcome == CS_BREAKTHROUGH ? sm.exit_speed : 0.0;
+    p.cables_broken = sm.cables_broken;
+    p.rotation = sm.posts_failed_rotation[0] + sm.posts_failed_rotation[1];
+    p.shear = sm.posts_failed_shear[0] + sm.posts_failed_shear[1];
+    p.pullout = sm.posts_failed_pullout[0] + sm.posts_failed_pullout[1];
+    for (int a = 0; a < 2; a++) {
+        cs_anchor_view v;
+        cs_state_anchor(m, s, a, &v);
+        snprintf(p.anchors[a], sizeof p.anchors[a], "%s", cs_anchor_status_name(&v));
+    }
+    *hash = cs_state_hash(m, s);
+    cs_state_free(s);
+    cs_model_free(m);
+    cs_loader_free(l);
+    return p;
+}
+
+/* The row of tests/predictions/crash-tests.csv for a test. */
+static int stored(const char *name, pinned *p) {
+    FILE *f = fopen(CS_SOURCE_DIR "/tests/predictions/crash-tests.csv", "r");
+    if (!f) return -1;
+    char line[512], test[32];
+    int found = -1;
+    while (fgets(line, sizeof line, f)) {
+        if (line[0] == '#' || strncmp(line, "test,", 5) == 0) continue;
+        if (sscanf(line, "%31[^,],%31[^,],%lf,%lf,%lf,%lf,%d,%d,%d,%d,%15[^,],%15[^,\n]", test, p->outcome,
+                   &p->t_s, &p->decel_g, &p->penetration_m, &p->exit_speed_mps, &p->cables_broken,
+                   &p->rotation, &p->shear, &p->pullout, p->anchors[0], p->anchors[1]) == 12 &&
+            strcmp(test, name) == 0)
+            found = 0;
+        if (found == 0) break;
+    }
+    fclose(f);
+    return found;
+}
+
+static void close_to(const char *what, double got, double want) {
+    if (!(fabs(got - want) <= 1e-6 * fabs(want) + 1e-9)) fail_msg("%s: %.10g, pinned %.10g", what, got, want);
+}
+
+static void crash_tests_as_pinned(void **state) {
+    (void)state;
+    int update = getenv("CS_PIN_UPDATE") != NULL;
+    for (int k = 0; k < TESTS; k++) {
+        unsigned long long h;
+        pinned got = run(names[k], &h), want;
+        printf("%s,%s,%.10g,%.10g,%.10g,%.10g,%d,%d,%d,%d,%s,%s   hash 0x%016llxULL\n", names[k], got.outcome,
+               got.t_s, got.decel_g, got.penetration_m, got.exit_speed_mps, got.cables_broken, got.rotation,
+               got.shear, got.pullout, got.anchors[0], got.anchors[1], h);
+        if (update) continue;
+        if (stored(names[k], &want) != 0)
+            fail_msg("%s: no row in tests/predictions/crash-tests.csv", names[k]);
+        assert_string_equal(got.outcome, want.outcome);
+        close_to("time reached", got.t_s, want.t_s);
+        close_to("max 50-ms deceleration", got.decel_g, want.decel_g);
+        close_to("max penetration", got.penetration_m, want.penetration_m);
+        close_to("exit speed", got.exit_speed_mps, want.exit_speed_mps);
+        assert_int_equal(got.cables_broken, want.cables_broken);
+        assert_int_equal(got.rotation, want.rotation);
+        assert_int_equal(got.shear, want.shear);
+        assert_int_equal(got.pullout, want.pullout);
+        assert_string_equal(got.anchors[0], want.anchors[0]);
+        assert_string_equal(got.anchors[1], want.anchors[1]);
+        if (h != hashes[k])
+            fail_msg("%s: final state hash 0x%016llx, stored 0x%016llx", names[k], h, hashes[k]);
+    }
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {cmocka_unit_test(crash_tests_as_pinned)};
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
