@@ -122,9 +122,11 @@ void cs_cable_commit(const cs_model *model, int c, cs_state *s) {
         double t = cs_span_tension_law(r, d[3], sm, cs->ep[i], cs_span_sag(r, d), &e, &yields);
         cs->tension[i] = t;
         if (yields && sm > 1e-12) {
-            double ep = e - t / r->ea;
-            s->e_cable_plastic += t * (ep - cs->ep[i]) * sm;
-            cs->ep[i] = ep;
+            /* plastic flow up to the breaking strain at most: a span the step has carried past it breaks
+             * there (cs_cable_check_break), and does no plastic work beyond it */
+            double ep = fmin(e, r->e_break) - t / r->ea;
+            if (ep > cs->ep[i]) s->e_cable_plastic += t * (ep - cs->ep[i]) * sm;
+            cs->ep[i] = fmax(cs->ep[i], ep);
         }
         if (e > worst) worst = e;
         if (t > tmax) tmax = t;

@@ -49,6 +49,12 @@ static void make_design(int k, design *d) {
     fx->barrier.post_count = posts;
     fx->barrier.start_anchor.x = 0.0;
     fx->barrier.end_anchor.x = length;
+    /* dead-men from rigid (a quarter of the designs) to a small footing that lets go early */
+    double dead_man = uniform(&s, -0.5, 1.5);
+    fx->barrier.start_anchor.footing = fx->barrier.end_anchor.footing =
+        fixture_footing(dead_man > 0.0 ? 1.0 + 2.0 * dead_man : 0.0, 3.0 + 2.0 * fabs(dead_man), 0.0);
+    int rails = (int)uniform(&s, -2.0, 5.0); /* none in about half, else 1 to 4 of the APS rails */
+    if (rails > 0) fixture_rails(fx), fx->barrier.rail_count = rails;
     /* a vehicle between a small car and a heavy truck, scaled from the 15,000-lb truck */
     double scale = uniform(&s, 0.35, 1.6);
     cs_vehicle_def *v = &fx->vehicle;
@@ -63,11 +69,13 @@ static void make_design(int k, design *d) {
     fx->scenario.angle = uniform(&s, 15.0, 90.0) * M_PI_2_VALUE / 90.0;
     fx->scenario.impact_x = uniform(&s, -0.1, 1.1) * length; /* past either anchor too */
     fx->scenario.t_end = 0.15;
-    snprintf(d->what, sizeof d->what,
-             "design %d: %d cables of %.2f in, %d posts at %.1f ft, %.0f lb at %.1f mph, %.0f deg, x = %.1f "
-             "of %.1f m",
-             k, cables, rope_in, posts, spacing / FT, v->mass / LB, fx->scenario.speed / MPH,
-             fx->scenario.angle * 90.0 / M_PI_2_VALUE, fx->scenario.impact_x, length);
+    snprintf(
+        d->what, sizeof d->what,
+        "design %d: %d cables of %.2f in, %d posts at %.1f ft, %d rails, dead-men %.1f ft wide, %.0f lb at "
+        "%.1f mph, %.0f deg, x = %.1f of %.1f m",
+        k, cables, rope_in, posts, spacing / FT, fx->barrier.rail_count,
+        fx->barrier.start_anchor.footing.diameter / FT, v->mass / LB, fx->scenario.speed / MPH,
+        fx->scenario.angle * 90.0 / M_PI_2_VALUE, fx->scenario.impact_x, length);
 }
 
 /* Runs design k; returns 1 (and says why) if it errs, leaves a non-finite response or a ledger off by
