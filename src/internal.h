@@ -168,6 +168,8 @@ struct cs_state {
     } anchors[2];
 
     double *rail_plastic; /* [rail_count * post_count] each span's plastic change of length, m (rail.c) */
+    double *rail_pos;     /* [post_count * rail_count * 3] each post's rail points where it was last placed */
+    double *rail_tilt;    /* [post_count * 2] the tilt they were placed at */
 
     /* energy accumulators, J: the barrier's (friction: over supports and on the face) and the tyres' */
     double e_rail_plastic, e_cable_plastic, e_post_plastic, e_post_damping, e_soil, e_crush, e_friction,
@@ -270,10 +272,10 @@ int cs_post_check_failure(const cs_model *model, cs_state *s, int post);
 /* chords: every cable's (max_nodes spans each), axis: the axis' Jacobian at the post's tilt; NULL forms
  * them. */
 void cs_post_residual_now(const cs_model *model, const cs_state *s, int post, const double *chords,
-                          const double *axis, double *r);
+                          const double *axis, const double *rails, double *r);
 /* The same at another tilt, with the post's cable nodes placed there. */
 void cs_post_residual_at(const cs_model *model, const cs_state *s, int post, const double *tilt,
-                         const double *chords, const double *axis, double *r);
+                         const double *chords, const double *axis, const double *rails, double *r);
 /* Whether a post of this model swings over a time h since the last commit (it has mass, h in (0, inf)). */
 int cs_post_swings(const cs_post_model *pm, double h);
 void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double *q);
@@ -342,6 +344,10 @@ double cs_relax_crush(const cs_model *model, cs_state *s);
  * Jacobian at that tilt) to q. */
 void cs_rail_moment(const cs_model *model, const cs_state *s, int p, const double *tilt, const double *axis,
                     double *q);
+/* Every post's share of the same with the posts as placed (axes: 18 per post, as the solver keeps them),
+ * each span computed once: rails[4 (rail_count p + r) + 2 side + e], side 0 the span ending at p, 1 the
+ * span starting there (0 where it does not act); added in that order they make cs_rail_moment's sum. */
+void cs_rail_moments(const cs_model *model, const cs_state *s, const double *axes, double *rails);
 void cs_rail_commit(const cs_model *model, cs_state *s);
 double cs_rail_stored_energy(const cs_model *model, const cs_state *s);
 /* The neighbours post p is tied to by rails now (-1: none); returns whether it has any. */

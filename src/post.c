@@ -71,13 +71,17 @@ static void axis_jacobian_from(const double *al, double s, double g, double *j) 
 
 /* Post p's cable nodes where a tilt puts them, and its axis' Jacobian into axis if not NULL. */
 void cs_post_place_nodes(const cs_model *model, cs_state *s, int p, const double *tilt, double *axis) {
-    int on_path = 0;
+    int on_path = model->rail_count > 0;
     for (int k = 0; k < model->cable_count; k++)
         on_path |= s->cables[k].status == CS_CABLE_INTACT && s->cables[k].where[p] > 0;
-    if (!on_path && !axis) return; /* a post the ropes have left: nothing to place */
+    if (!on_path && !axis) return; /* a post the ropes have left and no rail holds: nothing to place */
     double sn, g, c;
     sinc_terms(v2_norm(tilt[0], tilt[1]), &sn, &g, &c);
     if (axis) axis_jacobian_from(tilt, sn, g, axis);
+    for (int r = 0; r < model->rail_count; r++) /* the rails' points, kept with the tilt they are at */
+        attachment_from(model, p, tilt, sn, c, model->rails[r].z,
+                        s->rail_pos + 3 * ((size_t)p * (size_t)model->rail_count + (size_t)r));
+    if (model->rail_count) s->rail_tilt[2 * p] = tilt[0], s->rail_tilt[2 * p + 1] = tilt[1];
     for (int k = 0; k < model->cable_count; k++) {
         cs_cable_state *cs = &s->cables[k];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
@@ -173,7 +177,7 @@ void cs_post_resistance_slope(const cs_model *model, const cs_state *s, int p, d
 /* Residual of post p at a tilt, its cable nodes placed there and their tensions current:
  * r = Q_cables - Q_resist, less the swing's inertial moment. */
 void cs_post_residual_at(const cs_model *model, const cs_state *s, int p, const double *tilt,
-                         const double *chords, const double *axis, double *r) {
+                         const double *chords, const double *axis, const double *rails, double *r) {
     double own[6], q[2] = {0.0, 0.0};
     if (!axis) axis_jacobian(tilt, own);
     const double *j = axis ? axis : own;
@@ -186,7 +190,11 @@ void cs_post_residual_at(const cs_model *model, const cs_state *s, int p, const 
         q[0] += l * (j[0] * f[0] + j[2] * f[1] + j[4] * f[2]);
         q[1] += l * (j[1] * f[0] + j[3] * f[1] + j[5] * f[2]);
     }
-    cs_rail_moment(model, s, p, tilt, j, q);
+    if (rails)
+        for (int k = 0; k < 2 * model->rail_count; k++) /* each rail's span ending here, then starting */
+            q[0] += rails[2 * k], q[1] += rails[2 * k + 1];
+    else
+        cs_rail_moment(model, s, p, tilt, j, q);
     double res[2];
     cs_post_resistance(&model->posts[p], &s->posts[p], tilt, res);
     r[0] = q[0] - res[0], r[1] = q[1] - res[1];
@@ -195,8 +203,8 @@ void cs_post_residual_at(const cs_model *model, const cs_state *s, int p, const 
 
 /* Residual at the state as it stands (nodes placed, tensions current). */
 void cs_post_residual_now(const cs_model *model, const cs_state *s, int p, const double *chords,
-                          const double *axis, double *r) {
-    cs_post_residual_at(model, s, p, s->posts[p].tilt, chords, axis, r);
+                          const double *axis, const double *rails, double *r) {
+    cs_post_residual_at(model, s, p, s->posts[p].tilt, chords, axis, rails, r);
 }
 
 /* The tilt at which post p balances the cables' tensions as they stand (held, not following the spans'
@@ -211,7 +219,7 @@ double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int p) {
     double r[2], entry = -1.0;
     for (int it = 0; it < 20; it++) {
         cs_post_place_nodes(model, s, p, ps->tilt, NULL);
-        cs_post_residual_now(model, s, p, NULL, NULL, r);
+        cs_post_residual_now(model, s, p, NULL, NULL, NULL, r);
         double rn = v2_norm(r[0], r[1]) / pm->moment_scale;
         if (entry < 0.0) entry = rn;
         if (rn <= 1e-14) break;
@@ -219,7 +227,7 @@ double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int p) {
         for (int k = 0; k < 2; k++) {
             ps->tilt[k] = a0[k] + h;
             cs_post_place_nodes(model, s, p, ps->tilt, NULL);
-            cs_post_residual_now(model, s, p, NULL, NULL, rp);
+            cs_post_residual_now(model, s, p, NULL, NULL, NULL, rp);
             jac[k] = (rp[0] - r[0]) / h, jac[2 + k] = (rp[1] - r[1]) / h;
             ps->tilt[k] = a0[k];
         }
@@ -500,7 +508,8 @@ int cs_post_capture(const cs_model *model, cs_state *s) {
 static void residual(const cs_model *model, const cs_state *s, const cs_rows *rows, const cs_slot *u,
                      double *r) {
     double q[2];
-    cs_post_residual_now(model, s, u->a, rows->chords, rows->axes + 18 * u->a, q);
+    cs_post_residual_now(model, s, u->a, rows->chords, rows->axes + 18 * u->a,
+                         rows->rails + 4 * (size_t)u->a * (size_t)model->rail_count, q);
     double inv = 1.0 / model->posts[u->a].moment_scale;
     r[0] = q[0] * inv, r[1] = q[1] * inv;
 }

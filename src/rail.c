@@ -16,6 +16,7 @@
 #include "vec3.h"
 
 #include <math.h>
+#include <string.h>
 
 static int segment_acts(const cs_model *model, const cs_state *s, int k) {
     if (k < 0 || k + 1 >= model->post_count) return 0;
@@ -30,12 +31,22 @@ typedef struct bar {
     int capped;
 } bar;
 
+/* Post p's point on rail r at a tilt: as placed (cs_post_place_nodes) if it is the tilt placed, else found.
+ */
+static void rail_point(const cs_model *model, const cs_state *s, int r, int p, const double *tilt,
+                       double *out) {
+    if (tilt[0] == s->rail_tilt[2 * p] && tilt[1] == s->rail_tilt[2 * p + 1])
+        v3_copy(out, s->rail_pos + 3 * ((size_t)p * (size_t)model->rail_count + (size_t)r));
+    else
+        cs_post_attachment(model, p, tilt, model->rails[r].z, out);
+}
+
 static bar bar_at(const cs_model *model, const cs_state *s, int r, int k, const double *ta,
                   const double *tb) {
     const cs_rail_model *rm = &model->rails[r];
     double pa[3], pb[3], d[3];
-    cs_post_attachment(model, k, ta, rm->z, pa);
-    cs_post_attachment(model, k + 1, tb, rm->z, pb);
+    rail_point(model, s, r, k, ta, pa);
+    rail_point(model, s, r, k + 1, tb, pb);
     v3_sub(d, pb, pa);
     bar b;
     b.l = v3_norm(d);
@@ -67,6 +78,24 @@ void cs_rail_moment(const cs_model *model, const cs_state *s, int p, const doubl
     }
 }
 
+void cs_rail_moments(const cs_model *model, const cs_state *s, const double *axes, double *rails) {
+    size_t nr = (size_t)model->rail_count;
+    memset(rails, 0, 4 * nr * (size_t)model->post_count * sizeof *rails);
+    for (int r = 0; r < model->rail_count; r++)
+        for (int k = 0; k + 1 < model->post_count; k++) {
+            if (!segment_acts(model, s, k)) continue;
+            bar b = bar_at(model, s, r, k, s->posts[k].tilt, s->posts[k + 1].tilt);
+            for (int side = 0; side < 2; side++) { /* post k + 1 at the span's end, post k at its start */
+                int p = side == 0 ? k + 1 : k;
+                const double *axis = axes + 18 * p;
+                double sign = side == 0 ? -1.0 : 1.0, lever = model->rails[r].z + model->posts[p].pivot;
+                double *m = rails + 4 * ((size_t)p * nr + (size_t)r) + 2 * (size_t)side;
+                m[0] = sign * lever * (axis[0] * b.f[0] + axis[2] * b.f[1] + axis[4] * b.f[2]);
+                m[1] = sign * lever * (axis[1] * b.f[0] + axis[3] * b.f[1] + axis[5] * b.f[2]);
+            }
+        }
+}
+
 /* Post p's rows (from `row`, its moment unit `unit`): the rails' moment's slope on its own tilt and on
  * its neighbours'. With G = dN/dl u u^T + N (I - u u^T) / l the derivative of N u along the chord, the
  * force on p moves by -G dP_p + G dP_o (o the other post), so with P = base + (z + d) a(alpha):
@@ -87,9 +116,9 @@ void cs_rail_jacobian(const cs_model *model, const cs_state *s, const cs_rows *r
                 for (int j = 0; j < 3; j++)
                     g[i][j] =
                         dn * b.u[i] * b.u[j] + (b.l > 0.0 ? b.n / b.l * ((i == j) - b.u[i] * b.u[j]) : 0.0);
-            double lo = rm->z + model->posts[o].pivot, jo[6], djo[12];
-            cs_post_axis_jacobian(s->posts[o].tilt, jo, djo);
+            double lo = rm->z + model->posts[o].pivot;
             int col_o = rows->tilt_index[o];
+            const double *jo = rows->axes + 18 * o; /* placed with the unknowns (only read if o is one) */
             for (int a = 0; a < 2; a++) {
                 double gj[3]; /* G J_p e_a, the force's change with p's own tilt (less its sign) */
                 for (int i = 0; i < 3; i++)

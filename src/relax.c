@@ -134,7 +134,7 @@ static void post_residual(const cs_model *model, cs_state *s, int p, const doubl
         cs_cable_update_span(cm, cs, i - 1, NULL);
         cs_cable_update_span(cm, cs, i, NULL);
     }
-    cs_post_residual_at(model, s, p, tilt, NULL, NULL, r);
+    cs_post_residual_at(model, s, p, tilt, NULL, NULL, NULL, r);
 }
 
 static void entry_material(const cs_model *model, const cs_state *s, int p, double *m_entry) {

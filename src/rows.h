@@ -24,6 +24,7 @@ typedef enum cs_unknown_kind {
 typedef struct cs_slot {
     double x; /* where it sits along the barrier (the order of the unknowns) */
     int kind, a, b;
+    int id; /* its place in the order the unknowns are gathered in (system.c) */
 } cs_slot;
 
 /* What the rows read besides the state: the unknowns' columns, each span's chord and tension gradient
@@ -39,6 +40,7 @@ typedef struct cs_rows {
     double *chords;      /* [4 cable_count max_nodes] each span's chord and length at the placement */
     double *axes;        /* [18 post_count] each post axis' Jacobian and its tilt derivatives */
     cs_span_grad *spans; /* [cable_count * max_nodes] each span's tension and gradient */
+    double *rails;       /* [4 post_count rail_count] the rails' moments on the posts at the placement */
     cs_band *jac;        /* the Jacobian being built */
 } cs_rows;
 

@@ -17,7 +17,9 @@ static int allocate(const cs_model *model, cs_state *s, int with_workspace) {
     if (!s->cables || !s->posts) return -1;
     s->cable_count_alloc = nc;
     s->rail_plastic = calloc((size_t)model->rail_count * (size_t)np + 1, sizeof *s->rail_plastic);
-    if (!s->rail_plastic) return -1;
+    s->rail_pos = calloc((size_t)model->rail_count * (size_t)np * 3 + 1, sizeof *s->rail_pos);
+    s->rail_tilt = calloc((size_t)np * 2 + 1, sizeof *s->rail_tilt);
+    if (!s->rail_plastic || !s->rail_pos || !s->rail_tilt) return -1;
     for (int c = 0; c < nc; c++) {
         cs_cable_state *cs = &s->cables[c];
         cs->node = calloc((size_t)nn, sizeof *cs->node);
@@ -75,7 +77,8 @@ void cs_state_free(cs_state *s) {
         cs_state_free(s->work->trial);
         free(s->work);
     }
-    free(s->cables), free(s->posts), free(s->events), free(s->speed_ring), free(s->rail_plastic);
+    free(s->cables), free(s->posts), free(s->events), free(s->speed_ring), free(s->rail_plastic),
+        free(s->rail_pos), free(s->rail_tilt);
     free(s);
 }
 
@@ -87,8 +90,11 @@ void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src) {
     *dst = *src;
     dst->cables = keep.cables, dst->posts = keep.posts, dst->events = keep.events;
     dst->speed_ring = keep.speed_ring, dst->work = keep.work, dst->rail_plastic = keep.rail_plastic;
-    memcpy(dst->rail_plastic, src->rail_plastic,
-           (size_t)model->rail_count * (size_t)model->post_count * sizeof *dst->rail_plastic);
+    dst->rail_pos = keep.rail_pos, dst->rail_tilt = keep.rail_tilt;
+    size_t nr = (size_t)model->rail_count, np = (size_t)model->post_count;
+    memcpy(dst->rail_plastic, src->rail_plastic, nr * np * sizeof *dst->rail_plastic);
+    memcpy(dst->rail_pos, src->rail_pos, nr * np * 3 * sizeof *dst->rail_pos);
+    memcpy(dst->rail_tilt, src->rail_tilt, np * 2 * sizeof *dst->rail_tilt);
     dst->cable_count_alloc = keep.cable_count_alloc;
     for (int c = 0; c < model->cable_count; c++) {
         cs_cable_state *d = &dst->cables[c], k = *d;

@@ -8,7 +8,10 @@
 #include "rows.h"
 
 typedef struct cs_system {
-    cs_rows rows;        /* the unknowns, their columns, the placement's chords, axes and spans */
+    cs_rows rows;      /* the unknowns, their columns, the placement's chords, axes and spans */
+    cs_slot *gathered; /* the unknowns in the order they are gathered in, before their sort */
+    int *order;        /* [n] the sort's order of them at the last assembly (gathered[order[k]]) */
+    int gathered_n, order_valid;
     cs_slot *slots_kept; /* the unknowns saved by cs_system_keep */
     double *kept;        /* and their values */
     int kept_n;
