@@ -502,7 +502,7 @@ static const struct {
     {"line-post yield stress 45-55 ksi", "barrier.posts[0].yield_stress", "ksi", 45.0, 55.0},
     {"cable-post friction 0.10-0.20", "barrier.cables[0].post_friction", "", 0.10, 0.20},
     {"pretension 2-8 kip", "barrier.cables[0].pretension", "kip", 2.0, 8.0},
-    {"line-post mass 0-15 lb/ft (massless; with the rails' share)", "barrier.posts[0].mass_per_length",
+    {"line-post mass 0-15 lb/ft (massless to five times its steel)", "barrier.posts[0].mass_per_length",
      "lb/ft", 0.0, 15.0},
 };
 
@@ -702,9 +702,9 @@ static const struct {
      {"barrier.rails[0].area=0.495 in2", "barrier.rails[1].area=0.495 in2", "barrier.rails[2].area=0.495 in2",
       "barrier.rails[3].area=0.495 in2", "barrier.rails[0].inertia=0.219 in4",
       "barrier.rails[1].inertia=0.219 in4", "barrier.rails[2].inertia=0.219 in4",
-      "barrier.rails[3].inertia=0.219 in4", "barrier.rails[0].mass_per_length=1.69 lb/ft",
-      "barrier.rails[1].mass_per_length=1.69 lb/ft", "barrier.rails[2].mass_per_length=1.69 lb/ft",
-      "barrier.rails[3].mass_per_length=1.69 lb/ft", NULL}},
+      "barrier.rails[3].inertia=0.219 in4", "barrier.rails[0].mass_per_length=1.68 lb/ft",
+      "barrier.rails[1].mass_per_length=1.68 lb/ft", "barrier.rails[2].mass_per_length=1.68 lb/ft",
+      "barrier.rails[3].mass_per_length=1.68 lb/ft", NULL}},
     {"the intermediate anchor posts hold the ropes (clamped)",
      "aps1 aps3 aps4",
      0,

@@ -180,7 +180,8 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
             double d0 = w0 - as->rate[0], d1 = w1 - as->rate[1];
             s->e_post_damping += 0.5 * am->mass * (d0 * d0 + d1 * d1);
             as->rate[0] = w0, as->rate[1] = w1;
-        } else {
+        } else if (s->h > 0.0) { /* h infinite: settled at rest; h = 0, a re-solve at an instant: it keeps
+                                  * the rate it had, as a post does */
             as->rate[0] = as->rate[1] = 0.0;
         }
         as->u_commit[0] = as->u[0], as->u_commit[1] = as->u[1];

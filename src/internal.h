@@ -28,7 +28,7 @@ typedef struct cs_rope {
  * slides, however small the rope's pull (docs/assumptions.md). Without that floor a contact of a slack
  * rope has no friction and drifts, within the solver's tolerance, a little every step. At a support the
  * width is a pre-sliding slip of w / c (c = EA / (l_L + l_R)): ~50 um on APS3's 1.75-in rope over 8-ft
- * spans. 1e-4 until session 17: the sharper switch cost 14-36% more Newton work for changes of 0.5%. */
+ * spans. A sharper switch (1e-4) costs 14-36% more Newton work for changes of 0.5% in the results. */
 #define CS_FRICTION_FLOOR 1e-3
 
 typedef struct cs_cable_model {

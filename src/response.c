@@ -39,7 +39,7 @@ static double face_penetration(const cs_model *model, const cs_state *s) {
 
 /* A run that ends before its first window is full has no 50-ms average from the ring: its one window
  * starts with the run and holds the last speed from the end on (the vehicle has stopped, or goes on
- * unhindered). Until session 17 such a run reported 0 g. */
+ * unhindered). */
 static void close_decel_window(const cs_model *model, cs_state *s) {
     int n = model->window_steps + 1;
     if (s->ring_fill == 0 || s->ring_fill >= n) return;
