@@ -291,7 +291,8 @@ static cs_model *bogie_model(cs_loader *l, const cs_footing_def *footing, double
     v.inertia[2] = v.mass * (3.0 * 3.0 + 1.5 * 1.5) / 12; /* a 3 x 1.5 x 1 m box */
     v.cg_height = 0.6, v.cg_to_front = 2.0, v.front_width = 8 * IN;
     v.face_bottom = 24.875 * IN - 4 * IN, v.face_top = 24.875 * IN + 4 * IN;
-    v.wheelbase = 2.0, v.cg_to_front_axle = 1.0, v.track = 1.5;
+    v.wheelbase = 2.0, v.cg_to_front_axle = 1.0, v.track = 1.5, v.cg_to_rear = 1.0;
+    v.side_bottom = v.face_bottom, v.side_top = v.face_top;
     v.crush_point_count = 2, v.crush_deformation[1] = 0.001, v.crush_force[1] = 1e7; /* rigid head */
     cs_scenario_def sc = cs_default_scenario_def();
     sc.speed = mph * MPH, sc.impact_x = 0.0, sc.t_end = 1.0;

@@ -83,7 +83,7 @@ double cs_barrier_solve(const cs_model *model, cs_state *s) {
     return worst;
 }
 
-/* Resultant force and moment (about the CG) of the cables on the vehicle, through the face corners. */
+/* Resultant force and moment (about the CG) of the cables on the vehicle, through the corners they wrap. */
 void cs_barrier_force(const cs_model *model, cs_state *s) {
     v3_set(s->force, 0.0, 0.0, 0.0);
     v3_set(s->moment, 0.0, 0.0, 0.0);
@@ -93,7 +93,7 @@ void cs_barrier_force(const cs_model *model, cs_state *s) {
         cs_cable_state *cs = &s->cables[c];
         if (!cs->engaged || cs->status != CS_CABLE_INTACT) continue;
         for (int i = 1; i + 1 < cs->node_count; i++) {
-            if (cs->node[i] != CS_NODE_LEFT && cs->node[i] != CS_NODE_RIGHT) continue;
+            if (!cs_node_is_corner(cs->node[i])) continue;
             double f[3], r[3], t[3];
             cs_node_force(cs, i, NULL, f);
             v3_add(s->force, s->force, f);

@@ -1,33 +1,28 @@
-/* Contact between the vehicle's front face and the cables.
+/* Contact between the vehicle's outline and the cables.
  *
- * In plan the face is the segment between its two corners. A cable whose straight path the face has
- * crossed wraps the face: each corner that lies on the protected side of the path (to the left of the
- * path directed from the start anchor to the end anchor) becomes a support of the cable, with capstan
- * friction (cable.c). Between the vehicle and the nearest standing posts the cable stays straight.
- * Both tests are in 3D: a corner is tested where the rope runs at its abscissa (a pitched face is not
- * where it is at the CG's height), and released when the rope no longer pulls it into the face.
+ * In plan the vehicle is a rectangle: the front face between its two front corners, the sides back to
+ * the two rear corners (vehicle.c). A cable whose straight path a corner has crossed wraps it: each corner
+ * that lies on the protected side of the path (to the left of the path directed from the start anchor to
+ * the end anchor) becomes a support of the cable, with capstan friction (cable.c), so a cable bears on
+ * the face head-on, on the front corner and along a side at an angle (straight between the front and rear
+ * corners: the side is flat), and on the rear corner as the rear swings in. Between the vehicle and the
+ * nearest standing posts the cable stays straight. Both tests are in 3D: a corner is tested where the
+ * rope runs at its abscissa (a pitched body is not where it is at the CG's height), and released when
+ * the rope no longer presses it into the outline: when its pull has a component out through the face
+ * (or the rear) or out through the side at that corner.
  *
  * Heights: a cable engages at its height on the span it runs on (the straight line between its
- * neighbouring supports); below the face's bottom edge at first contact the vehicle rides over it
- * (override), above the top edge it runs under it (underride). Once engaged, the contact's height on the
- * face is an unknown of the barrier solve with Coulomb friction on the vertical face: it sticks while the
- * spans' pull along the face is at most mu times their pull into it, else it slides with the pull
- * (its row below). A contact that slides past an edge slips off the same way. Either
- * way the cable leaves the contact for good. */
+ * neighbouring supports). At a front corner, below the face's bottom edge the vehicle rides over it
+ * (override), above the top edge it runs under it (underride). At a rear corner a cable outside the
+ * side's band passes below or above the body and does not engage. Once engaged, the contact's height at
+ * the corner is an unknown of the barrier solve with Coulomb friction on the vertical body: it sticks
+ * while the spans' pull along the body is at most mu times their pull into it, else it slides with the
+ * pull (its row below). A contact that slides past an edge slips off the vehicle for good (override or
+ * underride). */
 #include "rows.h"
 #include "vec3.h"
 
 #include <math.h>
-
-static const int corner_id[2] = {CS_NODE_LEFT, CS_NODE_RIGHT};
-
-static double corner_y(const cs_model *model, int k) {
-    return (k == 0 ? 0.5 : -0.5) * model->vehicle.def.front_width;
-}
-
-static int is_corner(int id) {
-    return id == CS_NODE_LEFT || id == CS_NODE_RIGHT;
-}
 
 /* > 0 if p lies to the left of the directed line a -> b in plan. */
 static double left_of(const double *a, const double *b, const double *p) {
@@ -42,20 +37,20 @@ static double span_height(const cs_cable_state *cs, int lo, int hi, double x) {
     return a[2] + f * (b[2] - a[2]);
 }
 
-/* World z of the face's bottom and top edges at a corner, and the body z that maps to world z. */
-static void face_heights(const cs_model *model, const cs_state *s, int k, double *bottom, double *top) {
-    const cs_vehicle_def *v = &model->vehicle.def;
-    double p[3];
-    cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), v->face_bottom - v->cg_height, p);
+/* World z of corner k's band's bottom and top edges, and the body z that maps to world z. */
+static void corner_heights(const cs_model *model, const cs_state *s, int k, double *bottom, double *top) {
+    double lo, hi, p[3];
+    cs_vehicle_corner_band(model, k, &lo, &hi);
+    cs_vehicle_corner_point(model, s, s->crush, k, lo, p);
     *bottom = p[2];
-    cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), v->face_top - v->cg_height, p);
+    cs_vehicle_corner_point(model, s, s->crush, k, hi, p);
     *top = p[2];
 }
 
 static double body_z_for(const cs_model *model, const cs_state *s, int k, double zw) {
     double p0[3], p1[3];
-    cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), 0.0, p0);
-    cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), 1.0, p1);
+    cs_vehicle_corner_point(model, s, s->crush, k, 0.0, p0);
+    cs_vehicle_corner_point(model, s, s->crush, k, 1.0, p1);
     return (zw - p0[2]) / (p1[2] - p0[2]);
 }
 
@@ -74,7 +69,7 @@ static void slip(const cs_model *model, cs_state *s, int c, cs_event_type why) {
     cs_cable_state *cs = &s->cables[c];
     s->e_released += cs_cable_stored_energy(&model->cables[c], cs);
     for (int i = cs->node_count - 2; i >= 1; i--)
-        if (is_corner(cs->node[i])) cs_cable_remove_node(cs, i);
+        if (cs_node_is_corner(cs->node[i])) cs_cable_remove_node(cs, i);
     cs_cable_release(cs, CS_CABLE_SLIPPED);
     cs_event_add(model, s, why, CS_ELEMENT_CABLE, c, s->t);
 }
@@ -82,7 +77,7 @@ static void slip(const cs_model *model, cs_state *s, int c, cs_event_type why) {
 void cs_contact_place_one(const cs_model *model, cs_state *s, int c, int i, int k, double z) {
     cs_cable_state *cs = &s->cables[c];
     cs->corner_z[k] = z;
-    cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), z, cs->pos + 3 * i);
+    cs_vehicle_corner_point(model, s, s->crush, k, z, cs->pos + 3 * i);
 }
 
 void cs_contact_place_corners(const cs_model *model, cs_state *s, double crush) {
@@ -90,36 +85,48 @@ void cs_contact_place_corners(const cs_model *model, cs_state *s, double crush) 
         cs_cable_state *cs = &s->cables[c];
         if (!cs->engaged) continue;
         for (int i = 1; i + 1 < cs->node_count; i++) {
-            int k = cs->node[i] == CS_NODE_LEFT ? 0 : (cs->node[i] == CS_NODE_RIGHT ? 1 : -1);
-            if (k >= 0)
-                cs_vehicle_face_point(model, s, crush, corner_y(model, k), cs->corner_z[k], cs->pos + 3 * i);
+            if (!cs_node_is_corner(cs->node[i])) continue;
+            int k = cs_node_corner(cs->node[i]);
+            cs_vehicle_corner_point(model, s, crush, k, cs->corner_z[k], cs->pos + 3 * i);
         }
     }
+}
+
+/* Whether the rope at node i still wraps corner k: the sum of the unit vectors along its two spans (the
+ * direction it would pull the corner with equal tensions: the geometry of the turn, whatever friction
+ * does to the tensions) has no component out through the face (the rear, for a rear corner) or out
+ * through the side at that corner. In the body frame, so a rope on a pitched face that slides down it
+ * below the line it runs on in plan still bears on it. A rope that runs straight along the face or the
+ * side turns neither in nor out there, and stays. */
+static int wraps(const cs_state *s, const cs_cable_state *cs, int i, int k) {
+    double a[3], b[3], g[3], gb[3];
+    v3_sub(a, cs->pos + 3 * (i - 1), cs->pos + 3 * i);
+    v3_sub(b, cs->pos + 3 * (i + 1), cs->pos + 3 * i);
+    double la = v3_norm(a), lb = v3_norm(b);
+    if (!(la > 0.0 && lb > 0.0)) return 1;
+    for (int e = 0; e < 3; e++)
+        g[e] = a[e] / la + b[e] / lb;
+    quat_unrotate(gb, s->quat, g);
+    double out_end = cs_corner_front(k) ? gb[0] : -gb[0], out_side = k % 2 == 0 ? gb[1] : -gb[1];
+    return out_end < 0.0 && out_side <= 1e-12;
 }
 
 static void update_cable(const cs_model *model, cs_state *s, int c) {
     cs_cable_state *cs = &s->cables[c];
     cs_contact_place_corners(model, s, s->crush);
-    /* release corners the rope no longer pulls into the face (its pull along the body's x, the face's
-     * normal, is not backwards): tested in 3D, as a rope on a pitched face slides down it below the
-     * line it runs on in plan while it still bears on the face */
-    for (int i = cs->node_count - 2; i >= 1; i--) {
-        if (!is_corner(cs->node[i])) continue;
-        double f[3], fb[3];
-        cs_node_force(cs, i, NULL, f);
-        quat_unrotate(fb, s->quat, f);
-        if (fb[0] >= 0.0) cs_cable_remove_node(cs, i);
-    }
+    for (int i = cs->node_count - 2; i >= 1; i--) /* release the corners it no longer wraps */
+        if (cs_node_is_corner(cs->node[i]) && !wraps(s, cs, i, cs_node_corner(cs->node[i])))
+            cs_cable_remove_node(cs, i);
     /* engage corners that have crossed the path */
-    for (int k = 0; k < 2; k++) {
-        if (cs_cable_find_node(cs, corner_id[k]) >= 0) continue;
+    for (int k = 0; k < CS_CORNERS; k++) {
+        if (cs_cable_find_node(cs, cs_corner_node(k)) >= 0) continue;
         double lo, hi, p[3], zn = 0.0, bz = 0.0;
-        face_heights(model, s, k, &lo, &hi);
+        corner_heights(model, s, k, &lo, &hi);
         int j = 1;
-        /* the corner at the rope's own height: where the rope would touch it (a pitched or rolled face
+        /* the corner at the rope's own height: where the rope would touch it (a pitched or rolled body
          * is not where it is at the CG's height); the rope's height there found by two passes */
         for (int pass = 0; pass < 2; pass++) {
-            cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), bz, p);
+            cs_vehicle_corner_point(model, s, s->crush, k, bz, p);
             for (j = 1; j < cs->node_count - 1 && cs->pos[3 * j] <= p[0];)
                 j++;
             zn = span_height(cs, j - 1, j, p[0]);
@@ -129,14 +136,17 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
             continue; /* beyond the anchors */
         if (left_of(cs->pos + 3 * (j - 1), cs->pos + 3 * j, p) <= 0.0) continue;
         if (zn < lo || zn > hi) {
+            if (!cs_corner_front(k)) continue; /* below or above the side */
             slip(model, s, c, zn < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
             return;
         }
         cs->corner_z[k] = cs->corner_z_commit[k] = bz;
-        cs_vehicle_face_point(model, s, s->crush, corner_y(model, k), cs->corner_z[k], p);
-        cs_cable_insert_node(cs, j, corner_id[k], p);
+        cs_vehicle_corner_point(model, s, s->crush, k, cs->corner_z[k], p);
+        cs_cable_insert_node(cs, j, cs_corner_node(k), p);
     }
-    cs->engaged = cs_cable_find_node(cs, CS_NODE_LEFT) >= 0 || cs_cable_find_node(cs, CS_NODE_RIGHT) >= 0;
+    cs->engaged = 0;
+    for (int i = 1; i + 1 < cs->node_count; i++)
+        cs->engaged |= cs_node_is_corner(cs->node[i]);
     if (cs->engaged && !s->contact_started) {
         s->contact_started = 1;
         s->summary.first_contact_time = s->t;
@@ -155,8 +165,8 @@ void cs_contact_commit(const cs_model *model, cs_state *s) {
         cs_cable_state *cs = &s->cables[c];
         if (cs->status != CS_CABLE_INTACT || !cs->engaged) continue;
         for (int i = 1; i + 1 < cs->node_count; i++) {
-            if (!is_corner(cs->node[i])) continue;
-            int k = cs->node[i] == CS_NODE_LEFT ? 0 : 1;
+            if (!cs_node_is_corner(cs->node[i])) continue;
+            int k = cs_node_corner(cs->node[i]);
             double fz, fn;
             cs_contact_face_force(model, s, c, i, NULL, &fz, &fn);
             s->e_friction += fabs(cs->corner_z[k] - cs->corner_z_commit[k]) * fabs(fz);
@@ -165,18 +175,18 @@ void cs_contact_commit(const cs_model *model, cs_state *s) {
     }
 }
 
-/* A contact that slid past the face's edge leaves it: the cable slips off (below: the vehicle rides
- * over it; above: it runs under it). Returns 1 if any did. */
+/* A contact that slid past its band's edge leaves the vehicle: the cable slips off (below: the vehicle
+ * rides over it; above: it runs under it). Returns 1 if any did. */
 int cs_contact_check_slip(const cs_model *model, cs_state *s) {
-    const cs_vehicle_def *v = &model->vehicle.def;
-    double lo = v->face_bottom - v->cg_height, hi = v->face_top - v->cg_height;
     int any = 0;
     for (int c = 0; c < model->cable_count; c++) {
         cs_cable_state *cs = &s->cables[c];
         if (cs->status != CS_CABLE_INTACT || !cs->engaged) continue;
         for (int i = 1; i + 1 < cs->node_count; i++) {
-            if (!is_corner(cs->node[i])) continue;
-            double z = cs->corner_z[cs->node[i] == CS_NODE_LEFT ? 0 : 1];
+            if (!cs_node_is_corner(cs->node[i])) continue;
+            int k = cs_node_corner(cs->node[i]);
+            double z = cs->corner_z[k], lo, hi;
+            cs_vehicle_corner_band(model, k, &lo, &hi);
             if (z >= lo && z <= hi) continue;
             slip(model, s, c, z < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
             any = 1;
@@ -224,8 +234,8 @@ int cs_face_loaded(const cs_model *model, const cs_state *s) {
     return 0;
 }
 
-/* Normal force on the face at the state as placed: the cables through the corners plus the pushes of
- * captured posts, along the vehicle's heading. chords: every cable's (max_nodes spans each), or NULL. */
+/* Normal force on the face at the state as placed: the cables through the front corners plus the pushes
+ * of captured posts, along the vehicle's heading. chords: every cable's (max_nodes spans each), or NULL. */
 double cs_face_normal_force(const cs_model *model, const cs_state *s, const double *chords) {
     double ax[3][3], f[3] = {0.0, 0.0, 0.0}, mo[3] = {0.0, 0.0, 0.0}, pushed = 0.0;
     body_axes(s, ax);
@@ -240,7 +250,7 @@ double cs_face_normal_force(const cs_model *model, const cs_state *s, const doub
         const cs_cable_state *cs = &s->cables[c];
         if (!cs->engaged || cs->status != CS_CABLE_INTACT) continue;
         for (int i = 1; i + 1 < cs->node_count; i++) {
-            if (!is_corner(cs->node[i])) continue;
+            if (!cs_node_is_corner(cs->node[i]) || !cs_corner_front(cs_node_corner(cs->node[i]))) continue;
             double fc[3];
             cs_node_force(cs, i, chords ? chords + 4 * (size_t)c * (size_t)model->max_nodes : NULL, fc);
             n -= v3_dot(fc, ax[0]);
@@ -249,13 +259,13 @@ double cs_face_normal_force(const cs_model *model, const cs_state *s, const doub
     return n;
 }
 
-/* The contact of corner k on the face: Coulomb friction along the vertical face, as for a support
- * (lambda = the spans' pull up the face, b = mu times their pull into it, dz from the last step). */
+/* The contact at corner k: Coulomb friction along the vertical body, as for a support (lambda = the
+ * spans' pull up the body, b = mu times their pull into it, dz from the last step). */
 static double height_residual(const cs_model *model, const cs_state *s, const cs_rows *rows, int c, int k) {
     const cs_cable_model *cm = &model->cables[c];
     const cs_cable_state *cs = &s->cables[c];
     const double *ch = cs_rows_chords(model, rows, c);
-    int i = cs_cable_find_node(cs, corner_id[k]);
+    int i = cs_cable_find_node(cs, cs_corner_node(k));
     double fz, fn;
     cs_contact_face_force(model, s, c, i, ch, &fz, &fn);
     double b = model->vehicle.def.face_friction * fn;
@@ -270,7 +280,7 @@ static void height_jacobian(const cs_model *model, const cs_state *s, const cs_r
                             int k) {
     const cs_cable_model *cm = &model->cables[c];
     const cs_cable_state *cs = &s->cables[c];
-    int i = cs_cable_find_node(cs, corner_id[k]);
+    int i = cs_cable_find_node(cs, cs_corner_node(k));
     const cs_span_grad *sp = cs_rows_spans(model, rows, c, i);
     double ax[3][3], f[3], fb[3], mu = model->vehicle.def.face_friction, fu = cm->rope.fu;
     body_axes(s, ax);
@@ -294,8 +304,8 @@ static void height_jacobian(const cs_model *model, const cs_state *s, const cs_r
     cs_rows_add(rows, row, row, -(py + CS_STICK_EPS) * cstiff / fu); /* dz: the row's own unknown */
 }
 
-/* The crush row's dependence on everything but the crush: N = -sum of the corners' pulls along the
- * face's normal (the captured posts' pushes move with the crush alone). */
+/* The crush row's dependence on everything but the crush: N = -sum of the front corners' pulls along
+ * the face's normal (the captured posts' pushes move with the crush alone). */
 static void crush_jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row) {
     const cs_vehicle_def *v = &model->vehicle.def;
     double ax[3][3], scale = v->crush_force[v->crush_point_count - 1];
@@ -305,7 +315,7 @@ static void crush_jacobian(const cs_model *model, const cs_state *s, const cs_ro
         const cs_cable_state *cs = &s->cables[c];
         if (!cs->engaged || cs->status != CS_CABLE_INTACT) continue;
         for (int i = 1; i + 1 < cs->node_count; i++) {
-            if (!is_corner(cs->node[i])) continue;
+            if (!cs_node_is_corner(cs->node[i]) || !cs_corner_front(cs_node_corner(cs->node[i]))) continue;
             const cs_span_grad *sp = cs_rows_spans(model, rows, c, i);
             double gp[3][3] = {{0}}, gm[3] = {0};
             cs_rows_force_gradient(sp, rho, gp, gm);

@@ -10,7 +10,23 @@
 /* Node ids on a cable's path: posts are 0..post_count-1, the rest are negative. */
 enum { CS_MAX_CABLES_PER_POST = 64 }; /* = the model's cable limit */
 enum { CS_PATH_LEVELS = 2 };          /* how many times a step may be cut into pieces (step.c) */
-enum { CS_NODE_START = -1, CS_NODE_END = -2, CS_NODE_LEFT = -3, CS_NODE_RIGHT = -4 };
+enum { CS_NODE_START = -1, CS_NODE_END = -2, CS_NODE_CORNER = -3 };
+
+/* The vehicle's plan outline: four corners, k = 0 front left, 1 front right, 2 rear left, 3 rear right
+ * (the front ones on the crushable face). A cable wrapped on corner k has node id CS_NODE_CORNER - k. */
+enum { CS_CORNERS = 4 };
+static inline int cs_node_is_corner(int id) {
+    return id <= CS_NODE_CORNER && id > CS_NODE_CORNER - CS_CORNERS;
+}
+static inline int cs_node_corner(int id) {
+    return CS_NODE_CORNER - id;
+}
+static inline int cs_corner_node(int k) {
+    return CS_NODE_CORNER - k;
+}
+static inline int cs_corner_front(int k) {
+    return k < 2;
+}
 
 typedef struct cs_rope {
     double ea;      /* axial stiffness E A, N */
@@ -106,16 +122,16 @@ typedef struct cs_cable_state {
     cs_cable_status status;
     int engaged;
     int node_count;
-    int *node;                 /* [max_nodes] */
-    int *where;                /* [post_count] index of each post in node[], -1 if not on the path */
-    double *m;                 /* [max_nodes] material coordinate, m */
-    double *m_commit;          /* [max_nodes] at the end of the previous step */
-    double *ep;                /* [max_nodes - 1] plastic strain of each span (committed) */
-    double *ep_mix;            /* [max_nodes - 1] scratch of the commit */
-    double *tension;           /* [max_nodes - 1] N */
-    double *pos;               /* [max_nodes * 3] node positions, m */
-    double corner_z[2];        /* body-frame z of the contact on the face (left, right), m */
-    double corner_z_commit[2]; /* the same at the end of the previous step */
+    int *node;                          /* [max_nodes] */
+    int *where;                         /* [post_count] index of each post in node[], -1 if not on the path */
+    double *m;                          /* [max_nodes] material coordinate, m */
+    double *m_commit;                   /* [max_nodes] at the end of the previous step */
+    double *ep;                         /* [max_nodes - 1] plastic strain of each span (committed) */
+    double *ep_mix;                     /* [max_nodes - 1] scratch of the commit */
+    double *tension;                    /* [max_nodes - 1] N */
+    double *pos;                        /* [max_nodes * 3] node positions, m */
+    double corner_z[CS_CORNERS];        /* body-frame z of the contact at each corner, m */
+    double corner_z_commit[CS_CORNERS]; /* the same at the end of the previous step */
     double max_tension_seen;
     double max_strain; /* largest span strain at the last commit */
     double end_load;   /* larger end span's tension over its termination's strength, last commit */
@@ -294,6 +310,11 @@ int cs_post_capture(const cs_model *model, cs_state *s);
 void cs_vehicle_body_to_world(const cs_state *s, const double *body, double *world);
 void cs_vehicle_face_point(const cs_model *model, const cs_state *s, double crush, double y_body,
                            double z_body, double *world);
+/* Corner k of the outline (CS_CORNERS) at body height z_body, in the world (the front ones crush back),
+ * and the body-z band it meets cables over (the face's or the side's). */
+void cs_vehicle_corner_point(const cs_model *model, const cs_state *s, double crush, int k, double z_body,
+                             double *world);
+void cs_vehicle_corner_band(const cs_model *model, int k, double *lo, double *hi);
 void cs_vehicle_start(const cs_model *model, cs_state *s); /* accelerations at t = 0 */
 void cs_vehicle_integrate(cs_state *s, double h);
 void cs_vehicle_finish(const cs_model *model, cs_state *s, double h);

@@ -171,6 +171,12 @@ static int check_vehicle(const cs_vehicle_def *v, cs_error *err) {
         return fail(err, "vehicle: CG must lie between the axles");
     if (!(v->cg_to_front > v->cg_to_front_axle))
         return fail(err, "vehicle: the front face must be ahead of the front axle");
+    if (!(v->cg_to_rear >= v->wheelbase - v->cg_to_front_axle))
+        return fail(
+            err,
+            "vehicle: the rear must be behind the rear axle (CG to rear >= wheelbase - CG to front axle)");
+    if (!non_negative(v->side_bottom) || !(v->side_top > v->side_bottom))
+        return fail(err, "vehicle: side top must be above side bottom >= 0");
     if (!positive(v->tyre_static_deflection) || !non_negative(v->tyre_damping_ratio) ||
         !non_negative(v->rolling_resistance) || !non_negative(v->tyre_friction) ||
         !non_negative(v->face_friction))
@@ -299,7 +305,7 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
     if (!m) goto oom;
     m->cable_count = barrier->cable_count;
     m->post_count = barrier->post_count;
-    m->max_nodes = m->post_count + 4;
+    m->max_nodes = m->post_count + 2 + CS_CORNERS; /* posts, anchors, corners */
     m->rail_count = barrier->rail_count;
     m->rails = calloc((size_t)(m->rail_count ? m->rail_count : 1), sizeof *m->rails);
     m->cables = calloc((size_t)(m->cable_count ? m->cable_count : 1), sizeof *m->cables);

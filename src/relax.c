@@ -316,7 +316,7 @@ static double face_normal_force(const cs_model *model, cs_state *s, double crush
         if (!cs->engaged || cs->status != CS_CABLE_INTACT) continue;
         const cs_cable_model *cm = &model->cables[c];
         for (int i = 1; i + 1 < cs->node_count; i++) {
-            if (cs->node[i] != CS_NODE_LEFT && cs->node[i] != CS_NODE_RIGHT) continue;
+            if (!cs_node_is_corner(cs->node[i]) || !cs_corner_front(cs_node_corner(cs->node[i]))) continue;
             cs_cable_update_span(cm, cs, i - 1, NULL);
             cs_cable_update_span(cm, cs, i, NULL);
         }
@@ -411,8 +411,8 @@ double cs_relax(const cs_model *model, cs_state *s, int sweeps, int may_fall) {
             cs_cable_state *cs = &s->cables[c];
             if (cs->status != CS_CABLE_INTACT || !cs->engaged) continue;
             for (int i = 1; i + 1 < cs->node_count; i++)
-                if (cs->node[i] == CS_NODE_LEFT || cs->node[i] == CS_NODE_RIGHT)
-                    worst = fmax(worst, solve_height(model, s, c, i, cs->node[i] == CS_NODE_LEFT ? 0 : 1,
+                if (cs_node_is_corner(cs->node[i]))
+                    worst = fmax(worst, solve_height(model, s, c, i, cs_node_corner(cs->node[i]),
                                                      sc->solver_tolerance));
         }
         worst = fmax(worst, cs_relax_crush(model, s));

@@ -1,6 +1,6 @@
 /* Response parameters, updated every step: the 50-ms moving-average deceleration, penetration of the
- * front face past the attack face (y = 0), barrier deflection, failed posts on each side, and the end
- * of the run (stopped, broke through, time limit). */
+ * front face past the attack face (y = 0), barrier deflection and working width, failed posts on each
+ * side, and the end of the run (stopped, broke through, redirected, time limit). */
 #include "internal.h"
 #include "vec3.h"
 
@@ -51,15 +51,32 @@ static void close_decel_window(const cs_model *model, cs_state *s) {
     }
 }
 
+/* Furthest y of the outline's corners, each at the bottom and top of its band (a rolled body leans its
+ * top over). */
+static double vehicle_reach(const cs_model *model, const cs_state *s) {
+    double best = -HUGE_VAL, p[3];
+    for (int k = 0; k < CS_CORNERS; k++) {
+        double z[2];
+        cs_vehicle_corner_band(model, k, &z[0], &z[1]);
+        for (int e = 0; e < 2; e++) {
+            cs_vehicle_corner_point(model, s, s->crush, k, z[e], p);
+            if (p[1] > best) best = p[1];
+        }
+    }
+    return best;
+}
+
 static void end_run(const cs_model *model, cs_state *s, cs_outcome outcome, double value) {
     s->outcome = outcome;
     close_decel_window(model, s);
     if (outcome == CS_STOPPED) {
         s->summary.stop_time = s->t;
         cs_event_add(model, s, CS_EVENT_STOPPED, CS_ELEMENT_VEHICLE, 0, value);
-    } else if (outcome == CS_BREAKTHROUGH) {
+    } else if (cs_outcome_exits(outcome)) {
         s->summary.exit_speed = value;
-        cs_event_add(model, s, CS_EVENT_BREAKTHROUGH, CS_ELEMENT_VEHICLE, 0, value);
+        s->summary.exit_angle = atan2(-s->vel[1], fabs(s->vel[0]));
+        cs_event_add(model, s, outcome == CS_REDIRECTED ? CS_EVENT_REDIRECTED : CS_EVENT_BREAKTHROUGH,
+                     CS_ELEMENT_VEHICLE, 0, value);
     }
 }
 
@@ -69,6 +86,13 @@ void cs_response_update(const cs_model *model, cs_state *s) {
     update_decel(model, s, u);
     double pen = face_penetration(model, s);
     if (pen > sm->max_dynamic_penetration) sm->max_dynamic_penetration = pen;
+    sm->working_width = fmax(sm->working_width, vehicle_reach(model, s));
+    for (int p = 0; p < model->post_count; p++) {
+        if (!cs_post_standing(&s->posts[p])) continue;
+        double top[3];
+        cs_post_attachment(model, p, s->posts[p].tilt, model->posts[p].height, top);
+        sm->working_width = fmax(sm->working_width, top[1]);
+    }
 
     int engaged = 0, intact = 0; /* a struck post still standing holds the vehicle like a cable */
     for (int p = 0; p < model->post_count; p++)
@@ -100,6 +124,7 @@ void cs_response_update(const cs_model *model, cs_state *s) {
         sm->posts_failed_shear[right] += st == CS_POST_FAILED_SHEAR;
         sm->posts_failed_pullout[right] += st == CS_POST_FAILED_PULLOUT;
     }
+    sm->working_width = fmax(sm->working_width, sm->max_barrier_deflection);
     sm->t = s->t;
     v3_copy(sm->final_position, s->pos);
 
@@ -107,6 +132,8 @@ void cs_response_update(const cs_model *model, cs_state *s) {
         end_run(model, s, CS_STOPPED, sm->max_dynamic_penetration);
     } else if (s->contact_started && engaged == 0 && (intact == 0 || s->pos[1] > 0.0)) {
         end_run(model, s, CS_BREAKTHROUGH, v3_norm(s->vel));
+    } else if (s->contact_started && engaged == 0 && s->vel[1] < 0.0) {
+        end_run(model, s, CS_REDIRECTED, v3_norm(s->vel));
     } else if (s->t >= model->scenario.t_end - 0.5 * model->scenario.dt) {
         end_run(model, s, CS_TIME_LIMIT, 0.0);
     }

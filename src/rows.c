@@ -6,10 +6,6 @@
 
 #include <math.h>
 
-static int is_corner(int id) {
-    return id == CS_NODE_LEFT || id == CS_NODE_RIGHT;
-}
-
 /* A column of the Jacobian and a 3-vector: how a node's position moves along it. */
 typedef struct dep {
     int col;
@@ -36,8 +32,8 @@ static int position_columns(const cs_model *model, const cs_state *s, const cs_r
         out[0] = (dep){a, {1.0, 0.0, 0.0}}, out[1] = (dep){a + 1, {0.0, 1.0, 0.0}};
         return 2;
     }
-    if (is_corner(id)) {
-        int h = rows->height_index[2 * c + (id == CS_NODE_LEFT ? 0 : 1)];
+    if (cs_node_is_corner(id)) {
+        int h = rows->height_index[CS_CORNERS * c + cs_node_corner(id)];
         if (h < 0) return 0;
         double ez[3] = {0.0, 0.0, 1.0};
         out[0].col = h;

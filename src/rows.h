@@ -16,7 +16,7 @@ typedef enum cs_unknown_kind {
     CS_U_TILT = 0,   /* a post's tilt (2 slots: b = 0, 1) */
     CS_U_NODE = 1,   /* the material coordinate of node b of cable a where the rope slides */
     CS_U_CRUSH = 2,  /* the crush of the vehicle's face */
-    CS_U_HEIGHT = 3, /* the height on the face of cable a's contact at corner b (0 left, 1 right) */
+    CS_U_HEIGHT = 3, /* the height of cable a's contact at corner b of the outline (CS_CORNERS) */
     CS_U_ANCHOR = 4, /* anchor a's horizontal displacement (2 slots: b = 0, 1) */
     CS_U_KIND_COUNT
 } cs_unknown_kind;
@@ -34,7 +34,7 @@ typedef struct cs_rows {
     cs_slot *slots;
     int *tilt_index;     /* [post_count] a post's first tilt column, -1 if none */
     int *node_index;     /* [cable_count * max_nodes] a node's material column, -1 if none */
-    int *height_index;   /* [cable_count * 2] a contact's height column, -1 if none */
+    int *height_index;   /* [cable_count * CS_CORNERS] a contact's height column, -1 if none */
     int crush_index;     /* -1 if none */
     int anchor_index[2]; /* an anchor's first column, -1 if none */
     double *chords;      /* [4 cable_count max_nodes] each span's chord and length at the placement */

@@ -142,8 +142,14 @@ const char *cs_outcome_name(cs_outcome o) {
         return "breakthrough";
     case CS_TIME_LIMIT:
         return "time_limit";
+    case CS_REDIRECTED:
+        return "redirected";
     }
     return "unknown";
+}
+
+int cs_outcome_exits(cs_outcome o) {
+    return o == CS_BREAKTHROUGH || o == CS_REDIRECTED;
 }
 
 const char *cs_cable_status_name(cs_cable_status st) {
@@ -179,7 +185,6 @@ const char *cs_post_status_name(cs_post_status st) {
 }
 
 void cs_state_vehicle(const cs_model *model, const cs_state *s, cs_vehicle_view *out) {
-    const cs_vehicle_def *v = &model->vehicle.def;
     memset(out, 0, sizeof *out);
     out->t = s->t;
     v3_copy(out->position, s->pos);
@@ -193,10 +198,12 @@ void cs_state_vehicle(const cs_model *model, const cs_state *s, cs_vehicle_view 
     out->face_force = s->face_force;
     out->penetration = s->summary.max_dynamic_penetration;
     v3_copy(out->barrier_force, s->force);
-    double zmid = 0.5 * (v->face_bottom + v->face_top) - v->cg_height;
-    for (int k = 0; k < 2; k++)
-        cs_vehicle_face_point(model, s, s->crush, (k == 0 ? 0.5 : -0.5) * v->front_width, zmid,
-                              out->front_corners[k]);
+    for (int k = 0; k < CS_CORNERS; k++) {
+        double lo, hi;
+        cs_vehicle_corner_band(model, k, &lo, &hi);
+        cs_vehicle_corner_point(model, s, s->crush, k, 0.5 * (lo + hi),
+                                cs_corner_front(k) ? out->front_corners[k] : out->rear_corners[k - 2]);
+    }
 }
 
 void cs_state_cable(const cs_model *model, const cs_state *s, int c, cs_cable_view *out) {

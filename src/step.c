@@ -42,7 +42,8 @@ static void reset_cable(const cs_model *model, int c, cs_cable_state *cs) {
     cs->max_tension_seen = cm->pretension;
     cs->max_strain = cm->pretension / cm->rope.ea;
     cs->end_load = 0.0;
-    cs->corner_z[0] = cs->corner_z[1] = cs->corner_z_commit[0] = cs->corner_z_commit[1] = 0.0;
+    for (int k = 0; k < CS_CORNERS; k++)
+        cs->corner_z[k] = cs->corner_z_commit[k] = 0.0;
 }
 
 /* The barrier as installed, before the vehicle reaches it, as an installer tensions a rope on standing

@@ -17,30 +17,27 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int is_corner(int id) {
-    return id == CS_NODE_LEFT || id == CS_NODE_RIGHT;
-}
-
 static const cs_row_kind *const kinds[CS_U_KIND_COUNT] = {&cs_post_rows, &cs_support_rows, &cs_crush_rows,
                                                           &cs_height_rows, &cs_anchor_rows};
 
 static int node_slides(const cs_model *model, const cs_cable_state *cs, int i) {
     int id = cs->node[i];
-    return is_corner(id) || (id >= 0 && !model->posts[id].clamped);
+    return cs_node_is_corner(id) || (id >= 0 && !model->posts[id].clamped);
 }
 
-/* Storage for every unknown the model can have: two per post, one per rope node, two contacts per cable
- * and the crush. The band holds rows of up to 2 kl + ku + 1 entries; a post has 2 + cables unknowns, and
- * the face adds two corners per cable and the crush, so this covers neighbouring slots with room. */
+/* Storage for every unknown the model can have: two per post, one per rope node, a contact per corner
+ * and cable, the crush and the anchors'. The band holds rows of up to 2 kl + ku + 1 entries; a post has
+ * 2 + cables unknowns, and the vehicle adds its corners per cable and the crush, so this covers
+ * neighbouring slots with room. */
 int cs_system_init(const cs_model *model, cs_system *sys) {
     memset(sys, 0, sizeof *sys);
     size_t nc = (size_t)model->cable_count, np = (size_t)model->post_count, nn = (size_t)model->max_nodes;
-    size_t n = 2 * np + nc * nn + 2 * nc + 5, per_row = 3 * (12 + 8 * nc) + 1;
+    size_t n = 2 * np + nc * nn + CS_CORNERS * nc + 5, per_row = 3 * (12 + 12 * nc) + 1;
     cs_rows *rw = &sys->rows;
     rw->slots = calloc(n, sizeof *rw->slots);
     rw->tilt_index = calloc(np ? np : 1, sizeof *rw->tilt_index);
     rw->node_index = calloc(nc ? nc * nn : 1, sizeof *rw->node_index);
-    rw->height_index = calloc(nc ? 2 * nc : 1, sizeof *rw->height_index);
+    rw->height_index = calloc(nc ? CS_CORNERS * nc : 1, sizeof *rw->height_index);
     rw->spans = calloc(nc * nn + 1, sizeof *rw->spans);
     rw->chords = calloc(4 * nc * nn + 1, sizeof *rw->chords);
     rw->axes = calloc(18 * np + 1, sizeof *rw->axes);
@@ -53,7 +50,7 @@ int cs_system_init(const cs_model *model, cs_system *sys) {
     sys->slots_bw = calloc(n, sizeof *sys->slots_bw);
     sys->nodes_bw = calloc(nc * (nn + 1) + 1, sizeof *sys->nodes_bw);
     sys->scratch = calloc(n, sizeof *sys->scratch);
-    sys->key_count = 2 * np + nc * (np + 2) + 2 * nc + 5; /* see slot_key */
+    sys->key_count = 2 * np + nc * (np + CS_CORNERS) + CS_CORNERS * nc + 5; /* see slot_key */
     sys->last = calloc(sys->key_count, sizeof *sys->last);
     sys->last_step = calloc(sys->key_count, sizeof *sys->last_step);
     if (!rw->slots || !rw->tilt_index || !rw->node_index || !rw->height_index || !rw->spans || !rw->chords ||
@@ -140,8 +137,8 @@ static int assemble(const cs_model *model, const cs_state *s, cs_system *sys) {
         if (cs->status != CS_CABLE_INTACT) continue;
         for (int i = 1; i + 1 < cs->node_count; i++) {
             if (node_slides(model, cs, i)) sl[n++] = (cs_slot){cs->pos[3 * i], CS_U_NODE, c, i, 0};
-            if (is_corner(cs->node[i]))
-                sl[n++] = (cs_slot){cs->pos[3 * i], CS_U_HEIGHT, c, cs->node[i] == CS_NODE_LEFT ? 0 : 1, 0};
+            if (cs_node_is_corner(cs->node[i]))
+                sl[n++] = (cs_slot){cs->pos[3 * i], CS_U_HEIGHT, c, cs_node_corner(cs->node[i]), 0};
         }
     }
     if (cs_face_loaded(model, s)) sl[n++] = (cs_slot){s->pos[0], CS_U_CRUSH, 0, 0, 0};
@@ -164,7 +161,7 @@ static int assemble(const cs_model *model, const cs_state *s, cs_system *sys) {
         w->height_index[i] = -1;
     w->anchor_index[0] = w->anchor_index[1] = -1;
     for (int k = 0; k < n; k++) {
-        if (sl[k].kind == CS_U_HEIGHT) w->height_index[2 * sl[k].a + sl[k].b] = k;
+        if (sl[k].kind == CS_U_HEIGHT) w->height_index[CS_CORNERS * sl[k].a + sl[k].b] = k;
         if (sl[k].kind == CS_U_TILT && sl[k].b == 0) w->tilt_index[sl[k].a] = k;
         if (sl[k].kind == CS_U_NODE) w->node_index[sl[k].a * model->max_nodes + sl[k].b] = k;
         if (sl[k].kind == CS_U_CRUSH) w->crush_index = k;
@@ -184,8 +181,8 @@ static void widen(int k, int *lo, int *hi) {
 static void position_deps(const cs_rows *w, const cs_cable_state *cs, int c, int i, int *lo, int *hi) {
     int id = cs->node[i], k = -1;
     if (id >= 0 && w->tilt_index[id] >= 0) k = w->tilt_index[id];
-    if (is_corner(id)) {
-        widen(w->height_index[2 * c + (id == CS_NODE_LEFT ? 0 : 1)], lo, hi);
+    if (cs_node_is_corner(id)) {
+        widen(w->height_index[CS_CORNERS * c + cs_node_corner(id)], lo, hi);
         k = w->crush_index;
     }
     int anchor = id == CS_NODE_START || id == CS_NODE_END;
@@ -220,8 +217,7 @@ static void bandwidth(const cs_model *model, const cs_state *s, const cs_rows *w
             neighbourhood(model, w, &s->cables[u->a], u->a, u->b, &lo, &hi);
         } else if (u->kind == CS_U_HEIGHT) {
             neighbourhood(model, w, &s->cables[u->a], u->a,
-                          cs_cable_find_node(&s->cables[u->a], u->b == 0 ? CS_NODE_LEFT : CS_NODE_RIGHT), &lo,
-                          &hi);
+                          cs_cable_find_node(&s->cables[u->a], cs_corner_node(u->b)), &lo, &hi);
         } else if (u->kind == CS_U_TILT) {
             for (int c = 0; c < model->cable_count; c++) {
                 const cs_cable_state *cs = &s->cables[c];
@@ -249,7 +245,7 @@ static void bandwidth(const cs_model *model, const cs_state *s, const cs_rows *w
                 const cs_cable_state *cs = &s->cables[c];
                 if (cs->status != CS_CABLE_INTACT) continue;
                 for (int i = 1; i + 1 < cs->node_count; i++)
-                    if (is_corner(cs->node[i])) neighbourhood(model, w, cs, c, i, &lo, &hi);
+                    if (cs_node_is_corner(cs->node[i])) neighbourhood(model, w, cs, c, i, &lo, &hi);
             }
         }
         if (lo < 0) lo = 0;
@@ -345,7 +341,7 @@ static void move_crush(const cs_model *model, cs_state *s, const cs_rows *w, dou
         if (cs->status != CS_CABLE_INTACT) continue;
         double *ch = w->chords + 4 * (size_t)c * (size_t)model->max_nodes;
         for (int i = 1; i + 1 < cs->node_count; i++)
-            if (is_corner(cs->node[i])) {
+            if (cs_node_is_corner(cs->node[i]) && cs_corner_front(cs_node_corner(cs->node[i]))) {
                 cs_cable_update_span(&model->cables[c], cs, i - 1, ch + 4 * (i - 1));
                 cs_cable_update_span(&model->cables[c], cs, i, ch + 4 * i);
             }
@@ -435,12 +431,13 @@ static size_t slot_key(const cs_model *model, const cs_state *s, const cs_slot *
     if (u->kind == CS_U_TILT) return 2 * (size_t)u->a + (size_t)u->b;
     if (u->kind == CS_U_NODE) {
         int id = s->cables[u->a].node[u->b];
-        size_t at = id >= 0 ? (size_t)id : np + (id == CS_NODE_LEFT ? 0 : 1);
-        return 2 * np + (size_t)u->a * (np + 2) + at;
+        size_t at = id >= 0 ? (size_t)id : np + (size_t)cs_node_corner(id);
+        return 2 * np + (size_t)u->a * (np + CS_CORNERS) + at;
     }
-    if (u->kind == CS_U_HEIGHT) return 2 * np + nc * (np + 2) + 2 * (size_t)u->a + (size_t)u->b;
-    if (u->kind == CS_U_ANCHOR) return 2 * np + nc * (np + 2) + 2 * nc + 1 + 2 * (size_t)u->a + (size_t)u->b;
-    return 2 * np + nc * (np + 2) + 2 * nc;
+    size_t past = 2 * np + nc * (np + CS_CORNERS); /* heights, the crush, anchors */
+    if (u->kind == CS_U_HEIGHT) return past + CS_CORNERS * (size_t)u->a + (size_t)u->b;
+    if (u->kind == CS_U_ANCHOR) return past + CS_CORNERS * nc + 1 + 2 * (size_t)u->a + (size_t)u->b;
+    return past + CS_CORNERS * nc;
 }
 
 static void predict(const cs_model *model, const cs_state *s, cs_system *sys, int n, double *x) {

@@ -30,6 +30,20 @@ void cs_vehicle_face_point(const cs_model *model, const cs_state *s, double crus
     cs_vehicle_body_to_world(s, b, world);
 }
 
+void cs_vehicle_corner_point(const cs_model *model, const cs_state *s, double crush, int k, double z_body,
+                             double *world) {
+    const cs_vehicle_def *v = &model->vehicle.def;
+    double b[3] = {cs_corner_front(k) ? v->cg_to_front - crush : -v->cg_to_rear,
+                   (k % 2 == 0 ? 0.5 : -0.5) * v->front_width, z_body};
+    cs_vehicle_body_to_world(s, b, world);
+}
+
+void cs_vehicle_corner_band(const cs_model *model, int k, double *lo, double *hi) {
+    const cs_vehicle_def *v = &model->vehicle.def;
+    *lo = (cs_corner_front(k) ? v->face_bottom : v->side_bottom) - v->cg_height;
+    *hi = (cs_corner_front(k) ? v->face_top : v->side_top) - v->cg_height;
+}
+
 double cs_crush_curve(const cs_vehicle_def *v, double d) {
     int n = v->crush_point_count;
     const double *x = v->crush_deformation, *f = v->crush_force;

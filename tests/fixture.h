@@ -85,6 +85,9 @@ static inline cs_vehicle_def fixture_truck(void) {
     v.face_bottom = 0.45;
     v.face_top = 1.45;
     v.front_to_cargo_bed = 2.6;
+    v.cg_to_rear = L - v.cg_to_front;
+    v.side_bottom = 0.45;
+    v.side_top = 2.5;
     v.wheelbase = 4.6;
     v.cg_to_front_axle = 2.3;
     v.track = 1.9;

@@ -254,6 +254,7 @@ static synthetic *synthetic_new(int frames) {
     cs_vehicle_def *v = &in->vehicle;
     v->mass = 2000, v->cg_height = 0.6, v->cg_to_front = 2.0, v->front_width = 1.8, v->face_bottom = 0.3;
     v->face_top = 0.9, v->wheelbase = 2.8, v->cg_to_front_axle = 1.1, v->track = 1.5;
+    v->cg_to_rear = 2.5, v->side_bottom = 0.3, v->side_top = 1.0;
     in->scenario = cs_default_scenario_def();
     in->scenario.speed = 10, in->scenario.angle = PI / 2, in->scenario.impact_x = 20, in->scenario.dt = 5e-4;
 

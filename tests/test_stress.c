@@ -63,6 +63,7 @@ static void make_design(int k, design *d) {
         v->inertia[i] *= pow(scale, 5);
     v->cg_height *= scale, v->cg_to_front *= scale, v->front_width *= scale, v->face_bottom *= scale;
     v->face_top *= scale, v->wheelbase *= scale, v->cg_to_front_axle *= scale, v->track *= scale;
+    v->cg_to_rear *= scale, v->side_bottom *= scale, v->side_top *= scale;
     for (int i = 0; i < v->crush_point_count; i++)
         v->crush_deformation[i] *= scale, v->crush_force[i] *= scale * scale;
     fx->scenario.speed = uniform(&s, 5.0, 60.0) * MPH;

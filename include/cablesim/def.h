@@ -142,7 +142,9 @@ typedef struct cs_barrier_def {
 } cs_barrier_def;
 
 /* Vehicle: a rigid body with a crushable front face. Body frame: x forward, y left, z up, origin at
- * the centre of gravity. Heights are above grade with the vehicle at rest on its tyres. */
+ * the centre of gravity. Heights are above grade with the vehicle at rest on its tyres. In plan the body
+ * is a rectangle front_width wide from the front face to the rear: the cables bear on its four corners,
+ * the front ones between the face's bottom and top, the rear ones between the sides' bottom and top. */
 typedef struct cs_vehicle_def {
     double mass;                   /* kg */
     double inertia[3];             /* roll Ixx, pitch Iyy, yaw Izz about the CG, kg m^2 */
@@ -152,6 +154,9 @@ typedef struct cs_vehicle_def {
     double face_bottom;            /* lowest point of the front face (bumper bottom), m */
     double face_top;               /* top of the front face (hood edge), m */
     double front_to_cargo_bed;     /* front face to the front of the cargo bed, m (ratings) */
+    double cg_to_rear;             /* CG to the rear end of the body, m */
+    double side_bottom;            /* lowest point of the sides a cable bears on (sill, rocker panel), m */
+    double side_top;               /* top of the sides (bed rail, belt line), m */
     double wheelbase;              /* m */
     double cg_to_front_axle;       /* m */
     double track;                  /* m */
@@ -159,7 +164,7 @@ typedef struct cs_vehicle_def {
     double tyre_damping_ratio;     /* fraction of critical, bounce mode */
     double rolling_resistance;     /* coefficient of rolling resistance (free-rolling, unbraked) */
     double tyre_friction;          /* lateral (side-slip) friction coefficient */
-    double face_friction;          /* mu between cable and front face */
+    double face_friction;          /* mu between cable and the body (face, corners, sides) */
     int crush_point_count;         /* points of the loading curve, deformation increasing, first (0,0) */
     double crush_deformation[CS_MAX_CRUSH_POINTS]; /* m */
     double crush_force[CS_MAX_CRUSH_POINTS];       /* N */

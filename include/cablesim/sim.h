@@ -54,8 +54,12 @@ typedef enum cs_outcome {
     CS_RUNNING = 0,
     CS_STOPPED,      /* the vehicle's forward speed fell to the stop speed */
     CS_BREAKTHROUGH, /* the vehicle is past the barrier line with no cable holding it */
-    CS_TIME_LIMIT
+    CS_TIME_LIMIT,
+    CS_REDIRECTED /* the vehicle left the barrier on the traffic side, moving away from it */
 } cs_outcome;
+
+/* Whether a run that ended so has an exit speed and angle (it broke through or was redirected). */
+int cs_outcome_exits(cs_outcome outcome);
 
 typedef void (*cs_output_fn)(const cs_model *model, const cs_state *state, void *user);
 
@@ -78,6 +82,7 @@ typedef enum cs_event_type {
     CS_EVENT_UNDERRIDE,    /* the vehicle runs under a cable (cable above the front face) */
     CS_EVENT_STOPPED,
     CS_EVENT_BREAKTHROUGH,
+    CS_EVENT_REDIRECTED,
     CS_EVENT_TYPE_COUNT
 } cs_event_type;
 
@@ -116,6 +121,7 @@ typedef struct cs_vehicle_view {
     double penetration;         /* furthest point of the front face past the attack face (y), m */
     double barrier_force[3];    /* resultant force of the barrier on the vehicle, N */
     double front_corners[2][3]; /* left and right ends of the front face at mid-face height, m */
+    double rear_corners[2][3];  /* left and right rear corners at mid-side height, m */
 } cs_vehicle_view;
 
 void cs_state_vehicle(const cs_model *model, const cs_state *state, cs_vehicle_view *out);
@@ -214,11 +220,15 @@ typedef struct cs_summary {
     double max_decel_50ms_g;        /* g */
     double t_max_decel;             /* s */
     double max_dynamic_penetration; /* m, front face past the attack face */
-    double max_barrier_deflection;  /* m, largest y of any cable path point */
-    double stop_time;               /* s, valid if outcome == CS_STOPPED */
-    double exit_speed;              /* m/s, valid if outcome == CS_BREAKTHROUGH */
-    double first_contact_time;      /* s, < 0 before contact */
-    int posts_failed_left;          /* x below the impact point */
+    double max_barrier_deflection;  /* m, largest y of any cable path point (the dynamic deflection) */
+    double working_width; /* m, largest y reached by any part of the vehicle's outline, a cable or a standing
+                             post's top: the reach past the barrier's line (y = 0) */
+    double stop_time;     /* s, valid if outcome == CS_STOPPED */
+    double exit_speed;    /* m/s, valid if cs_outcome_exits(outcome) */
+    double exit_angle;    /* rad between the CG's velocity at exit and the barrier's line, positive away
+                             from the barrier (to -y); valid with exit_speed */
+    double first_contact_time; /* s, < 0 before contact */
+    int posts_failed_left;     /* x below the impact point */
     int posts_failed_right;
     /* the same by how they failed, [0] left and [1] right: turned to their rotation limit (bent over, or
      * their footing turned in the soil), sheared at the base, pulled out of the ground */

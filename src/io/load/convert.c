@@ -221,6 +221,7 @@ int cs_convert_vehicle(cs_loader *l, const cs_node *v, cs_vehicle_def *out) {
     crush_curve(l, v, out);
     if (l->error_count > before || cs_damaged(l, v)) return l->error_count - before;
     above(l, v, "face_top", out->face_top, "face_bottom", out->face_bottom, "m");
+    above(l, v, "side_top", out->side_top, "side_bottom", out->side_bottom, "m");
     above(l, v, "wheelbase", out->wheelbase, "cg_to_front_axle", out->cg_to_front_axle, "m");
     above(l, v, "cg_to_front", out->cg_to_front, "cg_to_front_axle", out->cg_to_front_axle, "m");
     return l->error_count - before;

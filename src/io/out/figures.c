@@ -116,7 +116,8 @@ static void fig_speed(cs_plot *p, const cs_figure_data *d, double *t) {
     cs_plot_line(p, &a, t, u, n, &s, "forward speed");
     for (int k = 0; k < d->event_count; k++) {
         const cs_event *e = &d->events[k];
-        if (e->type != CS_EVENT_STOPPED && e->type != CS_EVENT_BREAKTHROUGH) continue;
+        if (e->type != CS_EVENT_STOPPED && e->type != CS_EVENT_BREAKTHROUGH && e->type != CS_EVENT_REDIRECTED)
+            continue;
         int shown = 0;
         cs_style m = mark(RED, CS_MARK_DIAMOND, 14);
         mark_at(p, &a, t, u, n, e->t, &m, cs_event_type_name(e->type), &shown);

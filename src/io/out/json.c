@@ -137,6 +137,7 @@ int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_model *mod
     jnum(&w, &first, "t_max_50ms_decel_s", s.t_max_decel);
     jnum(&w, &first, "max_dynamic_penetration_m", s.max_dynamic_penetration);
     jnum(&w, &first, "max_barrier_deflection_m", s.max_barrier_deflection);
+    jnum(&w, &first, "working_width_m", s.working_width);
     jkey(&w, &first, "stopped");
     fprintf(f, s.outcome == CS_STOPPED ? "true" : "false");
     jkey(&w, &first, "stop_time_s");
@@ -145,8 +146,13 @@ int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_model *mod
     else
         fprintf(f, "null");
     jkey(&w, &first, "exit_speed_mps");
-    if (s.outcome == CS_BREAKTHROUGH)
+    if (cs_outcome_exits(s.outcome))
         cs_w_num(&w, s.exit_speed, "exit_speed_mps");
+    else
+        fprintf(f, "null");
+    jkey(&w, &first, "exit_angle_deg");
+    if (cs_outcome_exits(s.outcome))
+        cs_w_num(&w, s.exit_angle * 180.0 / 3.14159265358979323846, "exit_angle_deg");
     else
         fprintf(f, "null");
     jkey(&w, &first, "first_contact_time_s");

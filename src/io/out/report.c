@@ -15,6 +15,10 @@ void cs_write_report(FILE *f, const cs_model_input *in, const cs_model *model, c
     else if (s.outcome == CS_BREAKTHROUGH)
         fprintf(f, "the vehicle broke through, exit speed %.2f m/s (%.1f mph)\n", s.exit_speed,
                 s.exit_speed / MPH);
+    else if (s.outcome == CS_REDIRECTED)
+        fprintf(f, "the vehicle was redirected, exit speed %.2f m/s (%.1f mph, %.1f km/h) at %.1f deg\n",
+                s.exit_speed, s.exit_speed / MPH, s.exit_speed * 3.6,
+                s.exit_angle * 180 / 3.14159265358979323846);
     else
         fprintf(f, "the time limit was reached at t = %.3f s\n", s.t);
     fprintf(f,
@@ -26,6 +30,7 @@ void cs_write_report(FILE *f, const cs_model_input *in, const cs_model *model, c
             s.max_dynamic_penetration / FT);
     fprintf(f, "  max deflection       %.3f m (%.2f ft)\n", s.max_barrier_deflection,
             s.max_barrier_deflection / FT);
+    fprintf(f, "  working width        %.3f m (%.2f ft)\n", s.working_width, s.working_width / FT);
     fprintf(f, "  max cable tension    %.1f kN (%.1f kip)\n", s.max_cable_tension / 1e3,
             s.max_cable_tension / KIP);
     fprintf(f, "  cables broken        %d of %d\n", s.cables_broken, in->barrier.cable_count);

@@ -347,7 +347,8 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
     knum(&j, &sf, "max_penetration", s.max_dynamic_penetration);
     knum(&j, &sf, "max_deflection", s.max_barrier_deflection);
     kopt(&j, &sf, "stop_time", s.outcome == CS_STOPPED ? s.stop_time : NAN);
-    kopt(&j, &sf, "exit_speed", s.outcome == CS_BREAKTHROUGH ? s.exit_speed : NAN);
+    kopt(&j, &sf, "exit_speed", cs_outcome_exits(s.outcome) ? s.exit_speed : NAN);
+    kopt(&j, &sf, "exit_angle", cs_outcome_exits(s.outcome) ? s.exit_angle : NAN);
     kopt(&j, &sf, "first_contact", s.first_contact_time >= 0 ? s.first_contact_time : NAN);
     kint(&j, &sf, "posts_failed_left", s.posts_failed_left);
     kint(&j, &sf, "posts_failed_right", s.posts_failed_right);

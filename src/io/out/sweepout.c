@@ -114,9 +114,9 @@ static const cs_sweep_column summary_columns[C_ERROR] = {
     [C_Z] = {"final_z", "m", NULL, "final z of the vehicle's centre of gravity", CS_COLUMN_REAL, C_Z},
 };
 
-/* failure events: every event type but the two that end a run */
+/* failure events: every event type but those that end a run */
 static int is_failure_event(int t) {
-    return t != CS_EVENT_STOPPED && t != CS_EVENT_BREAKTHROUGH;
+    return t != CS_EVENT_STOPPED && t != CS_EVENT_BREAKTHROUGH && t != CS_EVENT_REDIRECTED;
 }
 
 int cs_sweep_columns(cs_sweep_column *cols) {
@@ -154,7 +154,7 @@ double cs_sweep_column_number(const cs_sweep_column *c, const cs_sweep_result *r
     case C_STOP:
         return m->outcome == CS_STOPPED ? m->stop_time : NAN;
     case C_EXIT:
-        return m->outcome == CS_BREAKTHROUGH ? m->exit_speed : NAN;
+        return cs_outcome_exits(m->outcome) ? m->exit_speed : NAN;
     case C_CONTACT:
         return m->first_contact_time >= 0 ? m->first_contact_time : NAN;
     case C_POSTS_LEFT:
@@ -319,10 +319,10 @@ static int make_summary(summary *s, const cs_sweep_spec *spec, const double *x, 
         else
             s->failed++;
     }
-    static const cs_outcome outcomes[] = {CS_STOPPED, CS_BREAKTHROUGH, CS_TIME_LIMIT};
-    static const char *const outcome_labels[] = {"stopped", "breakthrough",
+    static const cs_outcome outcomes[] = {CS_STOPPED, CS_BREAKTHROUGH, CS_REDIRECTED, CS_TIME_LIMIT};
+    static const char *const outcome_labels[] = {"stopped", "breakthrough", "redirected",
                                                  "time limit reached (still moving)"};
-    for (int o = 0; o < 3; o++) {
+    for (int o = 0; o < 4; o++) {
         long c = 0;
         for (long i = 0; i < s->ok; i++)
             c += r[ok[i]].summary.outcome == outcomes[o];
