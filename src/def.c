@@ -51,6 +51,22 @@ double cs_termination_efficiency(cs_termination kind, double diameter) {
     return 0.80;
 }
 
+/* docs/assumptions.md: a slot's strap and cap, taken as the vertical release of the cable-to-post
+ * attachments designed for the same purpose (about 1 kN); a 5/16-in hook bolt opening at the plastic
+ * moment of its bar (36 ksi) over the lever from the bar to the 3/4-in cable's centre (13.5 mm). */
+double cs_attachment_release_force(cs_attachment kind) {
+    switch (kind) {
+    case CS_ATTACH_SLOT:
+        return 1.0e3;
+    case CS_ATTACH_HOOK:
+        return 1.5e3;
+    case CS_ATTACH_THROUGH:
+    case CS_ATTACH_CLAMPED:
+        break;
+    }
+    return 0.0;
+}
+
 cs_section_def cs_default_section_def(void) {
     cs_section_def d;
     memset(&d, 0, sizeof d);

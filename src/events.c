@@ -4,7 +4,7 @@
 static const char *const event_names[CS_EVENT_TYPE_COUNT] = {
     "cable_break",  "termination_break", "post_hinge",     "post_rotation_limit", "post_shear",
     "post_pullout", "footing_rotation",  "anchor_pullout", "anchor_yield",        "override",
-    "underride",    "stopped",           "breakthrough",   "redirected"};
+    "underride",    "stopped",           "breakthrough",   "redirected",          "cable_release"};
 
 const char *cs_event_type_name(cs_event_type type) {
     return (type >= 0 && type < CS_EVENT_TYPE_COUNT) ? event_names[type] : "unknown";

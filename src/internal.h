@@ -69,7 +69,9 @@ typedef struct cs_post_model {
     double load_height;    /* mean cable height on the post, m */
     double pivot;          /* depth of the point it turns about: 2/3 D if the soil yields, else 0, m */
     int clamped;
-    double inertia; /* rotational inertia of the post about its pivot, kg m^2 (0: massless) */
+    cs_attachment attach;
+    double release_force; /* a slot's or hook's retainer along the post, N */
+    double inertia;       /* rotational inertia of the post about its pivot, kg m^2 (0: massless) */
     cs_footing_def footing;
 } cs_post_model;
 
@@ -305,6 +307,10 @@ double cs_post_place_captured(const cs_model *model, cs_state *s, double crush);
 void cs_post_captured_force(const cs_model *model, const cs_state *s, double crush, double *force,
                             double *moment);
 int cs_post_capture(const cs_model *model, cs_state *s);
+
+/* ---- attachments (attachment.c) ---- */
+/* Let go of the cables post p's slot or hooks no longer hold; returns 1 if any went. */
+int cs_attachment_check_release(const cs_model *model, cs_state *s, int p);
 
 /* ---- vehicle (vehicle.c) ---- */
 void cs_vehicle_body_to_world(const cs_state *s, const double *body, double *world);

@@ -122,6 +122,9 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
         if (!(d->rotation_limit > 0.0 && d->rotation_limit < 1.5) ||
             !(f->rotation_limit > 0.0 && f->rotation_limit < 1.5))
             return fail(err, "post %d: rotation limits must be between 0 and 1.5 rad", p);
+        if (d->attachment < CS_ATTACH_THROUGH || d->attachment > CS_ATTACH_HOOK)
+            return fail(err, "post %d: unknown attachment %d", p, (int)d->attachment);
+        if (!non_negative(d->release_force)) return fail(err, "post %d: release force must be >= 0", p);
     }
     if (b->rail_count < 0 || b->rail_count > CS_MAX_CABLES || (b->rail_count > 0 && !b->rails))
         return fail(err, "barrier: %d rails (expected 0 to %d)", b->rail_count, CS_MAX_CABLES);
@@ -373,6 +376,9 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
         pm->pullout_cap = cs_footing_pullout_capacity(&d->footing);
         pm->rot_limit = pm->soil_yields ? d->footing.rotation_limit : d->rotation_limit;
         pm->clamped = d->attachment == CS_ATTACH_CLAMPED;
+        pm->attach = d->attachment;
+        pm->release_force =
+            d->release_force > 0.0 ? d->release_force : cs_attachment_release_force(d->attachment);
         pm->inertia = post_inertia(barrier, p, pm->pivot);
     }
     cs_anchor_derive(&barrier->start_anchor, scenario->gravity, &m->anchors[0]);
@@ -388,13 +394,17 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
         return NULL;
     }
 
-    /* Start pose: the face centre travels along dir to (impact_x, 0); every face corner starts
+    /* Start pose: the face centre travels along dir to (impact_x, 0) (or the leading corner does, at the
+     * face centre's offset (w/2)/sin(theta) before it along the line); every face corner starts
      * start_gap short of the cable line. */
     double th = scenario->angle;
     v3_set(m->dir, cos(th), sin(th), 0.0);
     m->start_yaw = th;
     double yc = -scenario->start_gap - 0.5 * vehicle->front_width * fabs(cos(th));
-    double xc = scenario->impact_x + m->dir[0] * yc / m->dir[1];
+    double centre_x = scenario->impact_x;
+    if (scenario->impact_at_corner)
+        centre_x += (cos(th) >= 0.0 ? 0.5 : -0.5) * vehicle->front_width / sin(th);
+    double xc = centre_x + m->dir[0] * yc / m->dir[1];
     v3_set(m->start_pos, xc - m->dir[0] * vehicle->cg_to_front, yc - m->dir[1] * vehicle->cg_to_front,
            vehicle->cg_height);
     m->window_steps = (int)lround(0.05 / scenario->dt);

@@ -99,12 +99,13 @@ static void test_runs_csv(void **state) {
         "events_termination_break,events_post_hinge,events_post_rotation_limit,events_post_shear,"
         "events_post_pullout,events_footing_rotation,events_anchor_pullout,events_anchor_yield,events_"
         "override,"
-        "events_underride,error\n"
+        "events_underride,events_cable_release,error\n"
         "0,17792.886461,SD-STD-02.01,stopped,M40/P2,0.5,3.25,0.125,1.23456789,2.25,0.4375,,0.003,2,3,0,"
-        "38621.24685,1087776.709,-4.259510776e-05,1,0.002394143186,20.5,-3.25,1,0,0,2,0,0,0,0,0,0,0,0,\n"
+        "38621.24685,1087776.709,-4.259510776e-05,1,0.002394143186,20.5,-3.25,1,0,0,2,0,0,0,0,0,0,0,0,0,\n"
         "1,17792.886461,PU,breakthrough,PU40/P4,0.5,2.875,0.125,4.03125,2.25,,13.75,,0,3,2,1500000,"
-        "1087776.709,0,1,0.002394143186,20.5,-3.25,1,2,0,0,0,0,0,0,0,0,0,1,\n"
-        "2,22241.1080763,SD-STD-02.01,failed,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"the solve \"\"diverged\"\", at "
+        "1087776.709,0,1,0.002394143186,20.5,-3.25,1,2,0,0,0,0,0,0,0,0,0,1,0,\n"
+        "2,22241.1080763,SD-STD-02.01,failed,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"the solve \"\"diverged\"\", "
+        "at "
         "0.1 s\"\n";
     assert_string_equal(text, want);
     free(text);

@@ -84,10 +84,21 @@ typedef struct cs_footing_def {
     double skin_friction;     /* shaft friction per metre of depth, Pa/m (uplift capacity, calibrated) */
 } cs_footing_def;
 
+/* How the cables are held on a post. All but clamped slide along the barrier with capstan friction.
+ * Slots and hooks let a cable go (attachment.c) when its pull along the post, toward the post's top,
+ * exceeds friction on the post (the cable's post_friction times its pull across the post) plus what the
+ * retainer holds (release_force): a post bent over under the cables turns their pull up along it. */
 typedef enum cs_attachment {
-    CS_ATTACH_THROUGH = 0, /* cable threaded through the post: slides with capstan friction */
-    CS_ATTACH_CLAMPED = 1  /* cable clamped to the post: no sliding */
+    CS_ATTACH_THROUGH = 0, /* cable threaded through the post */
+    CS_ATTACH_CLAMPED = 1, /* cable clamped to the post: no sliding */
+    CS_ATTACH_SLOT = 2,    /* cables stacked in a slot open at the top (spacers, strap and cap): they ride up
+                              and out, the top one first */
+    CS_ATTACH_HOOK = 3     /* each cable in a hook bolt on the post's face: the hook opens */
 } cs_attachment;
+
+/* The documented strength of a kind's retainer along the post, N (docs/assumptions.md): 0 for kinds that
+ * never let go. */
+double cs_attachment_release_force(cs_attachment kind);
 
 typedef struct cs_post_def {
     double x;      /* position along the barrier, m */
@@ -95,6 +106,8 @@ typedef struct cs_post_def {
     cs_section_def section;
     cs_footing_def footing;
     cs_attachment attachment;
+    double release_force;  /* a slot's or hook's retainer strength along the post, N (0: the kind's
+                              documented value, cs_attachment_release_force) */
     double rotation_limit; /* post rotation from vertical at which it fails (paper: 45 deg), rad */
 } cs_post_def;
 
@@ -175,7 +188,9 @@ typedef struct cs_vehicle_def {
 typedef struct cs_scenario_def {
     double speed;            /* m/s at first contact */
     double angle;            /* between barrier line and travel direction, rad (pi/2 = head-on) */
-    double impact_x;         /* where the centre of the front face meets the cable line, m */
+    double impact_x;         /* where the centre of the front face meets the cable line, m; with
+                                impact_at_corner, where the leading front corner does */
+    int impact_at_corner;    /* 1: impact_x is the leading corner's (a test's impact point at an angle) */
     double start_gap;        /* distance from the front face to the cable line at t = 0, m */
     double dt;               /* time step, s */
     double t_end;            /* time limit, s */

@@ -83,6 +83,7 @@ typedef enum cs_event_type {
     CS_EVENT_STOPPED,
     CS_EVENT_BREAKTHROUGH,
     CS_EVENT_REDIRECTED,
+    CS_EVENT_CABLE_RELEASE, /* a slot or hook lets a cable go (element: the post; value: the pull along it) */
     CS_EVENT_TYPE_COUNT
 } cs_event_type;
 

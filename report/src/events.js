@@ -13,10 +13,12 @@ const KINDS = {
   anchor_pullout: { group: 'fail', text: (who) => `${who} pull${s(who)} out of the ground: its cables go slack`, value: (v) => `force ${pair('force', v)}` },
   cable_break: { group: 'break', text: (who) => `${who} break${s(who)}`, value: (v) => `tension ${pair('force', v)}` },
   termination_break: { group: 'break', text: (who) => `${who} break${s(who)} at an end fitting`, value: (v) => `tension ${pair('force', v)}` },
+  cable_release: { group: 'slip', text: (who) => `${who} let${s(who)} a cable go: bent over, its slot or hook no longer holds it`, value: (v) => `pull along the post ${pair('force', v)}` },
   override: { group: 'slip', text: (who) => `The vehicle rides over ${lower(who)}: it slips under the front face and stops holding the vehicle`, value: () => '' },
   underride: { group: 'slip', text: (who) => `The vehicle runs under ${lower(who)}: it slips over the front face and stops holding the vehicle`, value: () => '' },
   stopped: { group: 'end', text: () => 'The vehicle has stopped: the barrier contained it', value: (v) => `dynamic penetration ${pair('length', v)}` },
   breakthrough: { group: 'end', text: () => 'The vehicle is through the barrier: no cable holds it any more', value: (v) => `exit speed ${pair('speed', v)}` },
+  redirected: { group: 'end', text: () => 'The vehicle leaves the barrier on the traffic side: the barrier redirected it', value: (v) => `exit speed ${pair('speed', v)}` },
 };
 
 function s(who) {

@@ -18,7 +18,8 @@
 #define SUB(key, kind, flags, offset, table, doc)                                                            \
     { key, kind, CS_Q_NUMBER, flags, offset, &table, NULL, doc }
 
-static const char *const attachment_words[] = {"through", "clamped", NULL};
+static const char *const attachment_words[] = {"through", "clamped", "slot", "hook", NULL};
+static const char *const impact_at_words[] = {"centre", "corner", NULL};
 static const char *const termination_words[] = {"clips", "swaged", "spelter", "wedge", NULL};
 
 #define NAMED_PART(what)                                                                                     \
@@ -214,7 +215,11 @@ static const cs_field posts_fields[] = {
       "replaces the section's mass per length (a filled tube: steel and fill)"),
     SUB("footing", CS_F_MAP, CS_REQ, (long)offsetof(cs_post_def, footing), cs_table_footing, "the footing"),
     {"attachment", CS_F_ENUM, CS_Q_NUMBER, 0, (long)offsetof(cs_post_def, attachment), NULL, attachment_words,
-     "how the cables hold to the post: through (threaded, sliding with friction) or clamped"},
+     "how the cables hold to the post: through (threaded, sliding with friction), clamped, slot (stacked in "
+     "a "
+     "slot open at the top, let go as the post bends over) or hook (hook bolts that open)"},
+    P("release_force", CS_Q_FORCE, CS_POS, release_force,
+      "a slot's or hook's retainer strength along the post (not given: the kind's documented value)"),
     P("rotation_limit", CS_Q_ANGLE, CS_POS | CS_MAX90, rotation_limit, "post rotation at which it fails"),
 };
 const cs_table cs_table_posts = {"posts",
@@ -280,7 +285,12 @@ static const cs_field scenario_fields[] = {
     TEXT("file", 0, "take the scenario of another model file; the fields given here replace its fields"),
     SC("speed", CS_Q_SPEED, CS_REQ | CS_POS, speed, "vehicle speed at first contact"),
     SC("angle", CS_Q_ANGLE, CS_POS | CS_MAX180, angle, "between barrier line and travel (90 deg: head-on)"),
-    SC("impact_x", CS_Q_LENGTH, CS_REQ, impact_x, "where the centre of the front face meets the cable line"),
+    SC("impact_x", CS_Q_LENGTH, CS_REQ, impact_x,
+       "where the centre of the front face meets the cable line (or the leading corner: impact_at)"),
+    {"impact_at", CS_F_ENUM, CS_Q_NUMBER, 0, (long)offsetof(cs_scenario_def, impact_at_corner), NULL,
+     impact_at_words,
+     "what impact_x locates: centre (of the front face) or corner (the leading front corner, a test's impact "
+     "point at an angle)"},
     SC("start_gap", CS_Q_LENGTH, CS_NONNEG, start_gap, "front face to the cable line at t = 0"),
     SC("dt", CS_Q_TIME, CS_POS, dt, "time step"),
     SC("t_end", CS_Q_TIME, CS_POS, t_end, "time limit"),
