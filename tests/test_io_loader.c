@@ -11,6 +11,7 @@
 
 #include <cmocka.h>
 
+#include "check.h"
 #include "load/loader.h"
 
 static const double PI = 3.14159265358979323846, FT = 0.3048, IN = 0.0254, LB = 0.45359237,
@@ -134,7 +135,11 @@ static void test_library_parts(void **state) {
             assert_true(strlen(docs[i]) > 0);
         }
     }
-    assert_int_equal(total, 5 + 6 + 4 + 1);
+    assert_int_equal(total, 9 + 8 + 9 + 1);
+    cs_section_def holed;
+    assert_int_equal(cs_loader_part(l, CS_PART_SECTION, "S4x7.7-holes", &holed), 0);
+    /* Zx less the four holes' strips at their flange's centre: 3.50 - 4 (0.6875 x 0.293) (4.00 - 0.293) / 2 */
+    CHECK_REL(holed.plastic_modulus, (3.50 - 4 * 0.6875 * 0.293 * (4.00 - 0.293) / 2) * IN * IN * IN, 1e-4);
     cs_rail_def rail;
     assert_int_equal(cs_loader_part(l, CS_PART_RAIL, "TRAP2.5x2x12ga", &rail), 0);
     close_to(rail.area, 0.693 * IN * IN);
