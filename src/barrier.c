@@ -88,7 +88,7 @@ void cs_barrier_force(const cs_model *model, cs_state *s) {
     v3_set(s->force, 0.0, 0.0, 0.0);
     v3_set(s->moment, 0.0, 0.0, 0.0);
     cs_post_place_captured(model, s, s->crush);
-    cs_post_captured_force(model, s, s->crush, s->force, s->moment);
+    cs_post_captured_force(model, s, s->crush, 0, s->force, s->moment);
     for (int c = 0; c < model->cable_count; c++) {
         cs_cable_state *cs = &s->cables[c];
         if (!cs->engaged || cs->status != CS_CABLE_INTACT) continue;

@@ -225,12 +225,13 @@ static void body_axes(const cs_state *s, double ax[3][3]) {
  * balances the face's normal force N against the crush curve C: N(crush) - C(crush) = 0 (the paper's
  * crush correction). */
 
-/* Whether anything pushes on the face: an intact cable wrapped on it or a standing captured post. */
+/* Whether anything pushes on the face: an intact cable wrapped on it or a standing post it struck. */
 int cs_face_loaded(const cs_model *model, const cs_state *s) {
     for (int c = 0; c < model->cable_count; c++)
         if (s->cables[c].engaged && s->cables[c].status == CS_CABLE_INTACT) return 1;
     for (int p = 0; p < model->post_count; p++)
-        if (s->posts[p].captured && cs_post_standing(&s->posts[p])) return 1;
+        if (s->posts[p].captured && s->posts[p].pusher == CS_PUSH_FACE && cs_post_standing(&s->posts[p]))
+            return 1;
     return 0;
 }
 
@@ -240,10 +241,11 @@ double cs_face_normal_force(const cs_model *model, const cs_state *s, const doub
     double ax[3][3], f[3] = {0.0, 0.0, 0.0}, mo[3] = {0.0, 0.0, 0.0}, pushed = 0.0;
     body_axes(s, ax);
     for (int p = 0; p < model->post_count; p++)
-        if (s->posts[p].captured && cs_post_standing(&s->posts[p])) pushed += s->posts[p].push;
+        if (s->posts[p].captured && s->posts[p].pusher == CS_PUSH_FACE && cs_post_standing(&s->posts[p]))
+            pushed += s->posts[p].push;
     double n = 0.0;
     if (pushed > 0.0) {
-        cs_post_captured_force(model, s, s->crush, f, mo);
+        cs_post_captured_force(model, s, s->crush, 1, f, mo);
         n = -v3_dot(f, ax[0]);
     }
     for (int c = 0; c < model->cable_count; c++) {

@@ -15,6 +15,7 @@ enum { CS_NODE_START = -1, CS_NODE_END = -2, CS_NODE_CORNER = -3 };
 /* The vehicle's plan outline: four corners, k = 0 front left, 1 front right, 2 rear left, 3 rear right
  * (the front ones on the crushable face). A cable wrapped on corner k has node id CS_NODE_CORNER - k. */
 enum { CS_CORNERS = 4 };
+enum { CS_PUSH_FACE = 0, CS_PUSH_LEFT = 1, CS_PUSH_RIGHT = 2 }; /* the edge a struck post is pushed by */
 static inline int cs_node_is_corner(int id) {
     return id <= CS_NODE_CORNER && id > CS_NODE_CORNER - CS_CORNERS;
 }
@@ -146,8 +147,10 @@ typedef struct cs_post_state {
     double moment[2];      /* resisting generalised moment, N m */
     double shear, axial;   /* N */
     int yielded;           /* hinge or soil event already reported */
-    int captured;          /* struck by the face: pushed over by it, off the cable paths */
-    double lever;          /* from the pivot to where the face struck it, along the post, m */
+    int captured;          /* struck by the vehicle: pushed over by it, off the cable paths */
+    int pusher;            /* what pushes a captured post: CS_PUSH_FACE, _LEFT or _RIGHT (side) */
+    double lever;          /* from the pivot to where the vehicle struck it, along the post, m */
+    double reach;          /* the struck point's lean at the strike less the edge's reach there, m */
     double push;           /* force of the face on a captured post, N */
     double tilt_commit[2]; /* tilt at the last commit, rad */
     double rate[2];        /* rate of tilt at the last commit, rad/s */
@@ -301,11 +304,11 @@ void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const 
  * -(resistance + inertial moment) at the post's tilt. */
 void cs_post_axis_jacobian(const double *tilt, double *j, double *dj);
 void cs_post_resistance_slope(const cs_model *model, const cs_state *s, int p, double *k);
-/* Posts struck by the face: placed for a crush (the sum of their pushes returned), and their resistance
- * on the vehicle as placed, added to force and moment. */
+/* Posts struck by the vehicle: placed for a crush (the sum of the face's pushes returned), and their
+ * resistance on the vehicle as placed (face_only: of those the face pushes), added to force and moment. */
 double cs_post_place_captured(const cs_model *model, cs_state *s, double crush);
-void cs_post_captured_force(const cs_model *model, const cs_state *s, double crush, double *force,
-                            double *moment);
+void cs_post_captured_force(const cs_model *model, const cs_state *s, double crush, int face_only,
+                            double *force, double *moment);
 int cs_post_capture(const cs_model *model, cs_state *s);
 
 /* ---- attachments (attachment.c) ---- */

@@ -351,15 +351,18 @@ double cs_post_stored_energy(const cs_model *model, const cs_state *s, int p) {
     return cs_post_elastic_energy(model, s, p) + cs_post_kinetic_energy(model, s, p);
 }
 
-/* ---- posts struck by the face ----
+/* ---- posts struck by the vehicle ----
  * A standing post whose base the face's bottom edge reaches (within its width plus a margin) is
  * struck by the vehicle: it leaves the cable paths and is pushed over at the face's bottom edge,
  * height zb at the strike. With the face a distance d past the post's base (along the vehicle's heading
  * f), the post leans by theta = asin(d / (zb + pivot)) toward f, resisting with its moment M
- * (elastic-plastic, as above). Its resistance acts on the vehicle as the gradient of the work Q . dtilt with
- * respect to the vehicle's pose, so the work the vehicle does is exactly what the post stores and dissipates;
- * along the heading that is the push M / ((zb + pivot) cos theta) (push x dd = M dtheta), which also loads
- * the crush. */
+ * (elastic-plastic, as above). A standing post that finds itself inside the body's outline in plan at
+ * the sides' bottom (the vehicle at an angle has swept its side over it: the post let its cables go,
+ * or the rear swung in) is struck by the nearer side the same way: d is how far the side's bottom edge
+ * is past the base along the side's outward normal f. Its resistance acts on the vehicle as the
+ * gradient of the work Q . dtilt with respect to the vehicle's pose, so the work the vehicle does is
+ * exactly what the post stores and dissipates; along f that is the push M / ((zb + pivot) cos theta)
+ * (push x dd = M dtheta), which also loads the crush when the face pushes. */
 #define CS_CAPTURE_MARGIN 0.1 /* m beyond each face corner that still strikes a post */
 
 /* The face at a vehicle pose (pos, quat): the middle of its bottom edge, the heading f (horizontal,
@@ -379,35 +382,50 @@ static void face_frame(const cs_model *model, const double *pos, const double *q
     *zb = origin[2] > 0.05 ? origin[2] : 0.05;
 }
 
-/* The point of the face's bottom edge in line with post p, with the vehicle at a pose: where the face
- * strikes and pushes it; and the heading f. */
-static void edge_point(const cs_model *model, int p, const double *pos, const double *quat, double crush,
-                       double *pt, double *f) {
+/* The point of the pushing edge's bottom in line with post p, with the vehicle at a pose: where it
+ * strikes and pushes the post; and the direction f it pushes (horizontal, unit): the face's heading,
+ * or a side's outward normal. */
+static void edge_point(const cs_model *model, int p, int pusher, const double *pos, const double *quat,
+                       double crush, double *pt, double *f) {
     const cs_vehicle_def *v = &model->vehicle.def;
-    double o[3], left[3], zb, base[3] = {model->posts[p].x, 0.0, 0.0}, rel[3];
-    face_frame(model, pos, quat, crush, o, f, left, &zb);
-    v3_sub(rel, base, o);
-    double edge[3] = {v->cg_to_front - crush, v3_dot(rel, left), v->face_bottom - v->cg_height};
-    quat_rotate(pt, quat, edge);
+    double base[3] = {model->posts[p].x, 0.0, 0.0}, rel[3];
+    if (pusher == CS_PUSH_FACE) {
+        double o[3], left[3], zb;
+        face_frame(model, pos, quat, crush, o, f, left, &zb);
+        v3_sub(rel, base, o);
+        double edge[3] = {v->cg_to_front - crush, v3_dot(rel, left), v->face_bottom - v->cg_height};
+        quat_rotate(pt, quat, edge);
+    } else {
+        double side = pusher == CS_PUSH_LEFT ? 1.0 : -1.0, out[3] = {0.0, side, 0.0}, b[3];
+        quat_rotate(f, quat, out);
+        f[2] = 0.0;
+        double n = v3_norm(f);
+        v3_scale(f, f, n > 0.0 ? 1.0 / n : 0.0);
+        v3_sub(rel, base, pos);
+        quat_unrotate(b, quat, rel);
+        double edge[3] = {b[0], side * 0.5 * v->front_width, v->side_bottom - v->cg_height};
+        quat_rotate(pt, quat, edge);
+    }
     v3_add(pt, pt, pos);
 }
 
-/* Where a captured post leans with the vehicle at a pose: the face's edge point in line with it is a
- * distance d past the base along the heading, and the post turns about its pivot through the point it
- * was struck at, ps->lever along it: sin(theta) = d / lever. The tilt is theta along the heading and
- * the permanent set across it (the face pushes along its heading only, so it turns no tilt across).
- * Returns theta, or -1 if the face is short of the base; f gets the heading. */
+/* Where a captured post leans with the vehicle at a pose: the pushing edge's point in line with it is
+ * a distance d past the base along f, and the post turns about its pivot through the point it was
+ * struck at, ps->lever along it: sin(theta) = (d + reach) / lever, reach set at the strike so that the
+ * post goes on from where it stood (theta < 0: it leaned toward the edge when struck). The tilt is theta
+ * along f and the permanent set across it (the edge pushes along f only, so it turns no tilt across).
+ * Returns theta; f gets the direction. */
 static double captured_lean(const cs_model *model, const cs_post_state *ps, int p, const double *pos,
                             const double *quat, double crush, double *tilt, double *f) {
     double pt[3], rel[3], base[3] = {model->posts[p].x, 0.0, 0.0};
-    edge_point(model, p, pos, quat, crush, pt, f);
+    edge_point(model, p, ps->pusher, pos, quat, crush, pt, f);
     v3_sub(rel, pt, base);
-    double d = v3_dot(rel, f), sn = d / ps->lever;
-    sn = sn < 0.0 ? 0.0 : (sn > 0.999 ? 0.999 : sn);
+    double sn = (v3_dot(rel, f) + ps->reach) / ps->lever;
+    sn = sn < -0.999 ? -0.999 : (sn > 0.999 ? 0.999 : sn);
     double th = asin(sn), along = ps->plastic[0] * f[0] + ps->plastic[1] * f[1];
     tilt[0] = ps->plastic[0] + (th - along) * f[0];
     tilt[1] = ps->plastic[1] + (th - along) * f[1];
-    return d > 0.0 ? th : -1.0;
+    return th;
 }
 
 /* Place every captured post for a crush; returns the sum of their pushes along the vehicle's heading
@@ -421,13 +439,13 @@ double cs_post_place_captured(const cs_model *model, cs_state *s, double crush) 
         double th = captured_lean(model, ps, p, s->pos, s->quat, crush, ps->tilt, f);
         cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
         double m = q[0] * f[0] + q[1] * f[1];
-        if (m < 0.0 || th < 0.0) { /* the face has backed off: the post stands at its set, free */
+        if (m < 0.0) { /* the edge has backed off: the post stands at its set, free */
             ps->tilt[0] = ps->plastic[0], ps->tilt[1] = ps->plastic[1];
             ps->push = 0.0;
             continue;
         }
         ps->push = m / (ps->lever * cos(th));
-        total += ps->push;
+        if (ps->pusher == CS_PUSH_FACE) total += ps->push;
     }
     return total;
 }
@@ -436,11 +454,12 @@ double cs_post_place_captured(const cs_model *model, cs_state *s, double crush) 
  * the gradient of the work Q . dtilt with respect to the vehicle's pose (central differences, 1e-6 m
  * and 1e-6 rad), so that the vehicle's work is exactly what the posts store and dissipate however the
  * face moves (pushing on, coming down, rolling, sliding along its edge). */
-void cs_post_captured_force(const cs_model *model, const cs_state *s, double crush, double *force,
-                            double *moment) {
+void cs_post_captured_force(const cs_model *model, const cs_state *s, double crush, int face_only,
+                            double *force, double *moment) {
     for (int p = 0; p < model->post_count; p++) {
         const cs_post_state *ps = &s->posts[p];
         if (!ps->captured || !cs_post_standing(ps) || !(ps->push > 0.0)) continue;
+        if (face_only && ps->pusher != CS_PUSH_FACE) continue;
         double q[2];
         cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
         const double h = 1e-6;
@@ -470,7 +489,29 @@ void cs_post_captured_force(const cs_model *model, const cs_state *s, double cru
     }
 }
 
-/* Capture the standing posts the face has reached. Returns 1 if any was captured. */
+/* Post p struck by `pusher`: off the cable paths, its lever where the edge strikes it. */
+static void capture(const cs_model *model, cs_state *s, int p, int pusher) {
+    cs_post_state *ps = &s->posts[p];
+    ps->captured = 1;
+    ps->pusher = pusher;
+    double pt[3], f[3];
+    edge_point(model, p, pusher, s->pos, s->quat, s->crush, pt, f);
+    ps->lever = (pt[2] > 0.05 ? pt[2] : 0.05) + model->posts[p].pivot;
+    double rel[3], base[3] = {model->posts[p].x, 0.0, 0.0}, lean = ps->tilt[0] * f[0] + ps->tilt[1] * f[1];
+    v3_sub(rel, pt, base);
+    ps->reach = ps->lever * sin(lean) - v3_dot(rel, f);
+    if (!s->contact_started) {
+        s->contact_started = 1;
+        s->summary.first_contact_time = s->t;
+    }
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        if (cs->status == CS_CABLE_INTACT && cs->where[p] > 0) cs_cable_remove_node(cs, cs->where[p]);
+    }
+}
+
+/* Capture the standing posts the face has reached, and those a side has swept over. Returns 1 if any
+ * was captured. */
 int cs_post_capture(const cs_model *model, cs_state *s) {
     const cs_vehicle_def *v = &model->vehicle.def;
     double o[3], f[3], left[3], zb;
@@ -479,24 +520,25 @@ int cs_post_capture(const cs_model *model, cs_state *s) {
     for (int p = 0; p < model->post_count; p++) {
         cs_post_state *ps = &s->posts[p];
         if (ps->captured || !cs_post_standing(ps)) continue;
-        double top[3], rel[3];
+        double top[3], rel[3], b[3];
         cs_post_attachment(model, p, ps->tilt, zb, top);
         v3_sub(rel, o, top);
         double d = v3_dot(rel, f), lat = v3_dot(rel, left);
-        if (d < 0.0 || fabs(lat) > 0.5 * v->front_width + CS_CAPTURE_MARGIN || d > zb) continue;
-        ps->captured = 1;
-        double pt[3], heading[3];
-        edge_point(model, p, s->pos, s->quat, s->crush, pt, heading);
-        ps->lever = (pt[2] > 0.05 ? pt[2] : 0.05) + model->posts[p].pivot;
-        if (!s->contact_started) {
-            s->contact_started = 1;
-            s->summary.first_contact_time = s->t;
+        if (d >= 0.0 && fabs(lat) <= 0.5 * v->front_width + CS_CAPTURE_MARGIN && d <= zb) {
+            capture(model, s, p, CS_PUSH_FACE);
+            any = 1;
+            continue;
         }
-        for (int c = 0; c < model->cable_count; c++) {
-            cs_cable_state *cs = &s->cables[c];
-            if (cs->status == CS_CABLE_INTACT && cs->where[p] > 0) cs_cable_remove_node(cs, cs->where[p]);
+        /* the post at the sides' bottom height, in the body frame */
+        double zs = v->side_bottom - v->cg_height, lo[3] = {0.0, 0.0, zs}, wl[3];
+        quat_rotate(wl, s->quat, lo);
+        cs_post_attachment(model, p, ps->tilt, s->pos[2] + wl[2], top);
+        v3_sub(rel, top, s->pos);
+        quat_unrotate(b, s->quat, rel);
+        if (b[0] > -v->cg_to_rear && b[0] < v->cg_to_front - s->crush && fabs(b[1]) < 0.5 * v->front_width) {
+            capture(model, s, p, b[1] >= 0.0 ? CS_PUSH_LEFT : CS_PUSH_RIGHT);
+            any = 1;
         }
-        any = 1;
     }
     return any;
 }

@@ -138,7 +138,8 @@ static void test_library_parts(void **state) {
     assert_int_equal(total, 9 + 8 + 9 + 1);
     cs_section_def holed;
     assert_int_equal(cs_loader_part(l, CS_PART_SECTION, "S4x7.7-holes", &holed), 0);
-    /* Zx less the four holes' strips at their flange's centre: 3.50 - 4 (0.6875 x 0.293) (4.00 - 0.293) / 2 */
+    /* Zx less the four holes' strips at their flange's centre: 3.50 - 4 (0.6875 x 0.293) (4.00 - 0.293) / 2
+     */
     CHECK_REL(holed.plastic_modulus, (3.50 - 4 * 0.6875 * 0.293 * (4.00 - 0.293) / 2) * IN * IN * IN, 1e-4);
     cs_rail_def rail;
     assert_int_equal(cs_loader_part(l, CS_PART_RAIL, "TRAP2.5x2x12ga", &rail), 0);

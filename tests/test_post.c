@@ -226,7 +226,7 @@ static void struck_post_takes_the_work_the_face_does(void **state) {
         assert_int_equal(cs_step(m, s, &err), CS_OK);
     double f0[3] = {0.0, 0.0, 0.0}, m0[3] = {0.0, 0.0, 0.0}, work = 0.0;
     cs_post_place_captured(m, s, s->crush);
-    cs_post_captured_force(m, s, s->crush, f0, m0);
+    cs_post_captured_force(m, s, s->crush, 0, f0, m0);
     double e0 = cs_post_stored_energy(m, s, 0) + s->e_post_plastic + s->e_soil, ahead[3];
     quat_rotate(ahead, s->quat, (double[3]){1.0, 0.0, 0.0});
     for (int k = 0; k < 200; k++) {
@@ -236,7 +236,7 @@ static void struck_post_takes_the_work_the_face_does(void **state) {
         quat_integrate(s->quat, w, 1.0);
         double f1[3] = {0.0, 0.0, 0.0}, m1[3] = {0.0, 0.0, 0.0};
         cs_post_place_captured(m, s, s->crush);
-        cs_post_captured_force(m, s, s->crush, f1, m1);
+        cs_post_captured_force(m, s, s->crush, 0, f1, m1);
         cs_post_commit(m, s, 0);
         for (int i = 0; i < 3; i++)
             work -= 0.5 * ((f0[i] + f1[i]) * dx[i] + (m0[i] + m1[i]) * turn[i]);
