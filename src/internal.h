@@ -151,7 +151,8 @@ typedef struct cs_post_state {
     int pusher;            /* what pushes a captured post: CS_PUSH_FACE, _LEFT or _RIGHT (side) */
     double lever;          /* from the pivot to where the vehicle struck it, along the post, m */
     double reach;          /* the struck point's lean at the strike less the edge's reach there, m */
-    double push;           /* force of the face on a captured post, N */
+    double push;           /* force of the vehicle on a captured post, N */
+    int bearing;           /* a captured post the vehicle's edge bears on (not backed off) */
     double tilt_commit[2]; /* tilt at the last commit, rad */
     double rate[2];        /* rate of tilt at the last commit, rad/s */
 } cs_post_state;

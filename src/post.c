@@ -439,7 +439,8 @@ double cs_post_place_captured(const cs_model *model, cs_state *s, double crush) 
         double th = captured_lean(model, ps, p, s->pos, s->quat, crush, ps->tilt, f);
         cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
         double m = q[0] * f[0] + q[1] * f[1];
-        if (m < 0.0) { /* the edge has backed off: the post stands at its set, free */
+        ps->bearing = m >= 0.0;
+        if (!ps->bearing) { /* the edge has backed off: the post stands at its set, free */
             ps->tilt[0] = ps->plastic[0], ps->tilt[1] = ps->plastic[1];
             ps->push = 0.0;
             continue;
@@ -493,6 +494,7 @@ void cs_post_captured_force(const cs_model *model, const cs_state *s, double cru
 static void capture(const cs_model *model, cs_state *s, int p, int pusher) {
     cs_post_state *ps = &s->posts[p];
     ps->captured = 1;
+    ps->bearing = 1;
     ps->pusher = pusher;
     double pt[3], f[3];
     edge_point(model, p, pusher, s->pos, s->quat, s->crush, pt, f);

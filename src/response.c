@@ -94,9 +94,9 @@ void cs_response_update(const cs_model *model, cs_state *s) {
         sm->working_width = fmax(sm->working_width, top[1]);
     }
 
-    int engaged = 0, intact = 0; /* a struck post still standing and pushing holds the vehicle like a cable */
+    int engaged = 0, intact = 0; /* a struck post still standing and bearing holds the vehicle like a cable */
     for (int p = 0; p < model->post_count; p++)
-        engaged += s->posts[p].captured && cs_post_standing(&s->posts[p]) && s->posts[p].push > 0.0;
+        engaged += s->posts[p].captured && cs_post_standing(&s->posts[p]) && s->posts[p].bearing;
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
         intact += cs->status == CS_CABLE_INTACT;
