@@ -18,7 +18,7 @@
 
 #include <cmocka.h>
 
-#include "load/loader.h"
+#include "example.h"
 
 enum { TESTS = 3 };
 static const char *const names[TESTS] = {"aps1", "aps3", "aps4"};
@@ -34,16 +34,8 @@ typedef struct pinned {
 } pinned;
 
 static pinned run(const char *name, unsigned long long *hash) {
-    char why[256], path[512];
-    cs_loader *l = cs_loader_create(CS_SOURCE_DIR "/data", why, sizeof why);
-    if (!l) fail_msg("%s", why);
-    snprintf(path, sizeof path, CS_SOURCE_DIR "/examples/%s.yaml", name);
-    cs_model_input in;
-    cs_model *m = NULL;
-    if (cs_loader_load(l, path, &in) != 0 || !(m = cs_loader_build(l, &in))) {
-        cs_loader_print_errors(l, stderr);
-        fail_msg("%s did not load", path);
-    }
+    cs_loader *l;
+    cs_model *m = example_model(name, NULL, &l);
     cs_error err;
     cs_state *s = cs_state_create(m, &err);
     assert_non_null(s);

@@ -1,0 +1,27 @@
+/* Load examples/<name>.yaml (with --set style assignments, NULL-terminated, or NULL) and build its model;
+ * fails the test if it does not load. The loader is returned for freeing with the model. */
+#ifndef CS_TEST_EXAMPLE_H
+#define CS_TEST_EXAMPLE_H
+
+#include "load/loader.h"
+
+#include <stdio.h>
+
+static inline cs_model *example_model(const char *name, const char *const *sets, cs_loader **loader) {
+    char why[256], path[512];
+    cs_loader *l = cs_loader_create(CS_SOURCE_DIR "/data", why, sizeof why);
+    if (!l) fail_msg("%s", why);
+    snprintf(path, sizeof path, CS_SOURCE_DIR "/examples/%s.yaml", name);
+    for (int k = 0; sets && sets[k]; k++)
+        if (cs_loader_set(l, sets[k]) != 0) fail_msg("%s: bad assignment %s", name, sets[k]);
+    cs_model_input in;
+    cs_model *m = NULL;
+    if (cs_loader_load(l, path, &in) != 0 || !(m = cs_loader_build(l, &in))) {
+        cs_loader_print_errors(l, stderr);
+        fail_msg("%s did not load", path);
+    }
+    *loader = l;
+    return m;
+}
+
+#endif

@@ -1,0 +1,128 @@
+/* Slots and hooks let a cable go at their documented limit (attachment.c). A cable pulled sideways by
+ * F (horizontal, across the barrier) on a post leaning theta away from the pull bears on it with
+ * F cos(theta) across the post and pulls it F sin(theta) along, toward the top; it leaves when
+ *   F sin(theta) > mu F cos(theta) + R,
+ * that is past theta* = atan(mu) + asin(R cos(atan(mu)) / F). Checked by hand on a post leaning just short
+ * of and just past theta*, for the slot's and the hook's documented R; and the slot's order: a cable
+ * held above keeps the ones below in. */
+#include "check.h"
+#include "fixture.h"
+#include "internal.h"
+#include "vec3.h"
+
+/* Two cables on one post at x = 0 between rigid anchors 10 m away. */
+static cs_model *one_post(cs_attachment kind, fixture *fx) {
+    fixture_aps3(fx);
+    fx->barrier.post_count = 1;
+    fx->posts[0].x = 0.0;
+    fx->posts[0].attachment = kind;
+    fx->barrier.posts = fx->posts, fx->barrier.cables = fx->cables;
+    fx->barrier.start_anchor.x = -10.0, fx->barrier.end_anchor.x = 10.0;
+    fx->barrier.start_anchor.footing.diameter = fx->barrier.end_anchor.footing.diameter = 0.0;
+    fx->scenario.impact_x = 5.0;
+    cs_error err;
+    cs_model *m = cs_model_create(&fx->barrier, &fx->vehicle, &fx->scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    return m;
+}
+
+/* The post leaning theta toward +y; cable c's node on it, its two spans running 10 m along x and 5 m
+ * toward +y at tension t each: a pull of 2 t 5 / sqrt(125) across the barrier. Returns that pull. */
+static double lean_and_pull(const cs_model *m, cs_state *s, double theta, int c, double t) {
+    s->posts[0].tilt[0] = 0.0, s->posts[0].tilt[1] = theta;
+    cs_cable_state *cs = &s->cables[c];
+    int i = cs->where[0];
+    cs_post_attachment(m, 0, s->posts[0].tilt, m->cables[c].z, cs->pos + 3 * i);
+    for (int k = -1; k <= 1; k += 2) {
+        double *q = cs->pos + 3 * (i + k);
+        v3_set(q, cs->pos[3 * i] + 10.0 * k, cs->pos[3 * i + 1] + 5.0, cs->pos[3 * i + 2]);
+    }
+    cs->tension[i - 1] = cs->tension[i] = t;
+    return 2.0 * t * 5.0 / sqrt(125.0);
+}
+
+static double release_angle(double mu, double r, double f) {
+    double phi = atan(mu);
+    return phi + asin(r * cos(phi) / f);
+}
+
+static void lets_go_at_its_limit(cs_attachment kind, double documented) {
+    fixture fx;
+    cs_model *m = one_post(kind, &fx);
+    cs_error err;
+    cs_state *s = cs_state_create(m, &err);
+    assert_non_null(s);
+    CHECK_REL(m->posts[0].release_force, documented, 1e-12);
+    double mu = m->cables[1].mu_post, t = 10e3;
+    double f = lean_and_pull(m, s, 0.0, 1, t), th = release_angle(mu, documented, f);
+    for (int side = -1; side <= 1; side += 2) {
+        cs_state_reset(m, s);
+        lean_and_pull(m, s, th + side * 1e-3, 1, t);
+        int before = s->event_count;
+        assert_int_equal(cs_attachment_check_release(m, s, 0), side > 0);
+        assert_int_equal(s->cables[1].where[0]<0, side> 0);
+        if (side > 0) { /* the event's value: the pull along the post, F sin(theta) */
+            assert_int_equal(s->events[before].type, CS_EVENT_CABLE_RELEASE);
+            CHECK_REL(s->events[before].value, f * sin(th + 1e-3), 1e-9);
+        }
+    }
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
+static void slot_lets_go_at_its_limit(void **state) {
+    (void)state;
+    lets_go_at_its_limit(CS_ATTACH_SLOT, 1.0e3);
+}
+
+static void hook_lets_go_at_its_limit(void **state) {
+    (void)state;
+    lets_go_at_its_limit(CS_ATTACH_HOOK, 1.5e3);
+}
+
+/* The lower cable (0) pulled past its limit, the upper (1) short of its own: in a slot the upper holds
+ * the lower in; once the upper goes, the lower follows in the same check. A hook lets each go alone. */
+static void slot_lets_go_from_the_top(void **state) {
+    (void)state;
+    for (int kind = CS_ATTACH_SLOT; kind <= CS_ATTACH_HOOK; kind++) {
+        fixture fx;
+        cs_model *m = one_post((cs_attachment)kind, &fx);
+        cs_error err;
+        cs_state *s = cs_state_create(m, &err);
+        double th = 0.6;
+        lean_and_pull(m, s, th, 0, 40e3);
+        lean_and_pull(m, s, th, 1, 1.0); /* 0.9 N: short of R */
+        assert_int_equal(cs_attachment_check_release(m, s, 0), kind == CS_ATTACH_HOOK);
+        assert_int_equal(s->cables[0].where[0] < 0, kind == CS_ATTACH_HOOK);
+        assert_true(s->cables[1].where[0] > 0);
+        if (kind == CS_ATTACH_SLOT) {
+            lean_and_pull(m, s, th, 1, 40e3);
+            assert_int_equal(cs_attachment_check_release(m, s, 0), 1);
+            assert_true(s->cables[0].where[0] < 0 && s->cables[1].where[0] < 0);
+        }
+        cs_state_free(s);
+        cs_model_free(m);
+    }
+}
+
+/* Threaded and clamped cables never let go, however far the post leans. */
+static void through_and_clamped_hold(void **state) {
+    (void)state;
+    for (int kind = CS_ATTACH_THROUGH; kind <= CS_ATTACH_CLAMPED; kind++) {
+        fixture fx;
+        cs_model *m = one_post((cs_attachment)kind, &fx);
+        cs_error err;
+        cs_state *s = cs_state_create(m, &err);
+        lean_and_pull(m, s, 1.2, 1, 100e3);
+        assert_int_equal(cs_attachment_check_release(m, s, 0), 0);
+        cs_state_free(s);
+        cs_model_free(m);
+    }
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(slot_lets_go_at_its_limit), cmocka_unit_test(hook_lets_go_at_its_limit),
+        cmocka_unit_test(slot_lets_go_from_the_top), cmocka_unit_test(through_and_clamped_hold)};
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
