@@ -36,6 +36,7 @@
 #define IN 0.0254
 #define LB 0.45359237
 #define FTLB 1.3558179483314
+#define CS_PI_V 3.14159265358979323846
 
 typedef struct result {
     int ok;
@@ -43,13 +44,15 @@ typedef struct result {
     double cable_break[2]; /* s, < 0 if not broken (along the rope or at an end fitting) */
     double absorbed;       /* J: initial kinetic energy minus what is left */
     int post_failure;      /* the first post failure's event type, -1 if none */
+    int released;          /* cables let go by slots and hooks (cable_release events) */
     double post_failure_t; /* its time, s */
 } result;
 
 enum { CRASH = 3, BOGIE = CS_BOGIE_TESTS, REFINE = 2, VALUES = 4, INPUTS = 6, JOINT = 32, JOINT_SEED = 2656 };
-enum { READINGS = 6 };
+enum { READINGS = 6, ROAD = 6, ROAD_READINGS = 8 };
 enum {
-    MAX_JOBS = CRASH + BOGIE + CRASH * REFINE * VALUES + CRASH * INPUTS * 2 + CRASH * JOINT + CRASH * READINGS
+    MAX_JOBS = CRASH + BOGIE + CRASH * REFINE * VALUES + CRASH * INPUTS * 2 + CRASH * JOINT +
+               CRASH * READINGS + ROAD * (1 + ROAD_READINGS)
 };
 
 /* One simulation: its model (NULL: not built, the reason printed), the order's cost estimate, the result. */
@@ -66,26 +69,31 @@ typedef struct suite {
     const char *examples;
     int count;
     job jobs[MAX_JOBS];
-    int base[CRASH];                      /* each crash test as its file stands */
-    int bogie[BOGIE];                     /* each of data.bogie */
-    int refine[REFINE][CRASH][VALUES];    /* refinements[t], crash test k, its values[d] */
-    int sensitivity[CRASH][INPUTS][2];    /* crash test k, inputs[i] at its low and high end */
-    int joint[CRASH][JOINT];              /* crash test k, every input at once (Latin hypercube) */
-    int reading[CRASH][READINGS];         /* crash test k under readings[r] (-1: not one of its) */
-    int missed;                           /* APS1's or the bogie tests' targets were missed */
-    double joint_u[CRASH][JOINT][INPUTS]; /* each input's fraction of its range in those runs */
-    int base_loaded[CRASH];               /* base_scenario[k]: the scenario crash test k's file loads to */
+    int base[CRASH];                       /* each crash test as its file stands */
+    int bogie[BOGIE];                      /* each of data.bogie */
+    int refine[REFINE][CRASH][VALUES];     /* refinements[t], crash test k, its values[d] */
+    int sensitivity[CRASH][INPUTS][2];     /* crash test k, inputs[i] at its low and high end */
+    int joint[CRASH][JOINT];               /* crash test k, every input at once (Latin hypercube) */
+    int reading[CRASH][READINGS];          /* crash test k under readings[r] (-1: not one of its) */
+    int road[ROAD];                        /* each roadside test as its file stands */
+    int road_reading[ROAD][ROAD_READINGS]; /* roadside test k under road_readings[r] (-1: not one of its) */
+    int missed;                            /* APS1's or the bogie tests' targets were missed */
+    double joint_u[CRASH][JOINT][INPUTS];  /* each input's fraction of its range in those runs */
+    int base_loaded[CRASH];                /* base_scenario[k]: the scenario crash test k's file loads to */
     cs_scenario_def base_scenario[CRASH];
 } suite;
 
 static const char *const crash_names[CRASH] = {"aps1", "aps3", "aps4"};
+static const char *const road_names[ROAD] = {"rs1", "rs2", "rs3", "rs4", "rs5", "rs6"};
 
 static void collect(const cs_state *s, result *r) {
     cs_state_summary(s, &r->sm);
     r->cable_break[0] = r->cable_break[1] = -1.0;
     r->post_failure = -1;
+    r->released = 0;
     for (int i = 0; i < cs_state_event_count(s); i++) {
         const cs_event *e = cs_state_event(s, i);
+        r->released += e->type == CS_EVENT_CABLE_RELEASE;
         if (r->post_failure < 0 && (e->type == CS_EVENT_POST_ROTATION_LIMIT ||
                                     e->type == CS_EVENT_POST_PULLOUT || e->type == CS_EVENT_POST_SHEAR))
             r->post_failure = (int)e->type, r->post_failure_t = e->t;
@@ -141,14 +149,19 @@ static int add_job(suite *s, cs_model *m) {
     return s->count++;
 }
 
-/* Load crash test k with overrides ("PATH=VALUE", NULL-terminated). Returns 0, or -1 (errors kept). */
-static int load_crash(suite *s, int k, const char *const *sets, cs_model_input *in) {
+/* Load examples/<name>.yaml with overrides ("PATH=VALUE", NULL-terminated). Returns 0, or -1 (errors
+ * kept). */
+static int load_example(suite *s, const char *name, const char *const *sets, cs_model_input *in) {
     char path[1024];
-    snprintf(path, sizeof path, "%s/%s.yaml", s->examples, crash_names[k]);
+    snprintf(path, sizeof path, "%s/%s.yaml", s->examples, name);
     cs_loader_reset(s->loader);
     for (int i = 0; sets && sets[i]; i++)
         cs_loader_set(s->loader, sets[i]);
     return cs_loader_load(s->loader, path, in);
+}
+
+static int load_crash(suite *s, int k, const char *const *sets, cs_model_input *in) {
+    return load_example(s, crash_names[k], sets, in);
 }
 
 /* Queue a run of what load_crash returned rc and in for; the loader's errors printed if not built. */
@@ -161,18 +174,21 @@ static int add_loaded(suite *s, int rc, const cs_model_input *in) {
 /* One CSV row: suite, case, variant, then the run's numbers; what does not apply is left empty. */
 static void csv_row(FILE *csv, const char *suite, const char *name, const char *variant, const result *r) {
     char exit[32] = "", stop[32] = "", b1[32] = "", b2[32] = "";
-    if (r->ok && r->sm.outcome == CS_BREAKTHROUGH) snprintf(exit, sizeof exit, "%.6g", r->sm.exit_speed);
+    if (r->ok && cs_outcome_exits(r->sm.outcome)) snprintf(exit, sizeof exit, "%.6g", r->sm.exit_speed);
     if (r->ok && r->sm.outcome == CS_STOPPED) snprintf(stop, sizeof stop, "%.6g", r->sm.stop_time);
     if (r->ok && r->cable_break[0] >= 0.0) snprintf(b1, sizeof b1, "%.6g", r->cable_break[0]);
     if (r->ok && r->cable_break[1] >= 0.0) snprintf(b2, sizeof b2, "%.6g", r->cable_break[1]);
     if (!r->ok) {
-        fprintf(csv, "%s,%s,%s,0,failed,,,,,,,,,,\n", suite, name, variant);
+        fprintf(csv, "%s,%s,%s,0,failed,,,,,,,,,,,,,\n", suite, name, variant);
         return;
     }
-    fprintf(csv, "%s,%s,\"%s\",1,%s,%.6g,%.6g,%s,%s,%s,%s,%d,%d,%.6g,%.6g\n", suite, name, variant,
-            cs_outcome_name(r->sm.outcome), r->sm.max_decel_50ms_g, r->sm.max_dynamic_penetration, exit, stop,
-            b1, b2, r->sm.posts_failed_left, r->sm.posts_failed_right, r->sm.energy_balance_error,
-            r->absorbed);
+    char angle[32] = "";
+    if (cs_outcome_exits(r->sm.outcome))
+        snprintf(angle, sizeof angle, "%.6g", r->sm.exit_angle * 180 / CS_PI_V);
+    fprintf(csv, "%s,%s,\"%s\",1,%s,%.6g,%.6g,%s,%s,%s,%s,%d,%d,%.6g,%.6g,%.6g,%.6g,%s\n", suite, name,
+            variant, cs_outcome_name(r->sm.outcome), r->sm.max_decel_50ms_g, r->sm.max_dynamic_penetration,
+            exit, stop, b1, b2, r->sm.posts_failed_left, r->sm.posts_failed_right, r->sm.energy_balance_error,
+            r->absorbed, r->sm.max_barrier_deflection, r->sm.working_width, angle);
 }
 
 static const char *fmt_time(double t, char *buf, size_t n) {
@@ -793,6 +809,111 @@ static void write_readings(FILE *md, FILE *csv, const suite *s) {
         inside(&all[0].brk[1], 1.0, t->brk[1]));
 }
 
+/* ---- the roadside crash tests: blind predictions ---- */
+/* Readings of what the roadside design data leaves open (docs/assumptions.md), for the tests that have
+ * that part. */
+static const struct {
+    const char *what, *tests;
+    const char *sets[5]; /* overrides, NULL-terminated */
+} road_readings[ROAD_READINGS] = {
+    {"slot and hook retainers at 0.5 kN",
+     "rs1 rs2 rs3 rs4 rs5 rs6",
+     {"barrier.posts[0].release_force=0.5 kN", NULL}},
+    {"slot and hook retainers at 4 kN",
+     "rs1 rs2 rs3 rs4 rs5 rs6",
+     {"barrier.posts[0].release_force=4 kN", NULL}},
+    {"cable friction on the posts 0.3 (0.15)",
+     "rs1 rs2 rs3 rs4 rs6",
+     {"barrier.cables[0].post_friction=0.3", "barrier.cables[1].post_friction=0.3",
+      "barrier.cables[2].post_friction=0.3", NULL}},
+    {"cable friction on the posts 0.3 (0.15)",
+     "rs5",
+     {"barrier.cables[0].post_friction=0.3", "barrier.cables[1].post_friction=0.3",
+      "barrier.cables[2].post_friction=0.3", "barrier.cables[3].post_friction=0.3", NULL}},
+    {"ropes not pre-stretched as the pre-stretched high-tension rope",
+     "rs3 rs4 rs6",
+     {"barrier.cables[0].rope=3x7-0.75in-HT", "barrier.cables[1].rope=3x7-0.75in-HT",
+      "barrier.cables[2].rope=3x7-0.75in-HT", NULL}},
+    {"pretension 2.2 kN (500 lbf; 1,000 lbf taken)",
+     "rs6",
+     {"barrier.cables[0].pretension=500 lbf", "barrier.cables[1].pretension=500 lbf",
+      "barrier.cables[2].pretension=500 lbf", NULL}},
+    {"pretension 8.9 kN (2,000 lbf; 1,000 lbf taken)",
+     "rs6",
+     {"barrier.cables[0].pretension=2000 lbf", "barrier.cables[1].pretension=2000 lbf",
+      "barrier.cables[2].pretension=2000 lbf", NULL}},
+    {"impact at the middle (a third of the way in taken)", "rs3 rs4", {"scenario.impact_x=167 ft", NULL}},
+};
+
+static void add_road(suite *s, int k) {
+    char name[64];
+    snprintf(name, sizeof name, "roadside/%s", road_names[k]);
+    cs_model_input in;
+    s->road[k] = add_loaded(s, load_example(s, name, NULL, &in), &in);
+    for (int r = 0; r < ROAD_READINGS; r++) {
+        s->road_reading[k][r] = -1;
+        if (!strstr(road_readings[r].tests, road_names[k])) continue;
+        s->road_reading[k][r] = add_loaded(s, load_example(s, name, road_readings[r].sets, &in), &in);
+    }
+}
+
+/* A roadside run's row: outcome, deflection, working width, exit speed and angle, releases, posts; then
+ * `more` (further columns, each ending in "|"). */
+static void road_row(FILE *md, const char *name, const char *what, const result *r, const char *more) {
+    if (!r->ok) {
+        fprintf(md, "| %s | %s | failed | | | | | |%s\n", name, what, more);
+        return;
+    }
+    const cs_summary *m = &r->sm;
+    char exit[48] = "-";
+    if (cs_outcome_exits(m->outcome))
+        snprintf(exit, sizeof exit, "%.1f km/h at %.1f deg", m->exit_speed * 3.6,
+                 m->exit_angle * 180 / CS_PI_V);
+    fprintf(md, "| %s | %s | %s | %.2f m (%.1f ft) | %.2f m | %s | %d | %d |%s\n", name, what,
+            cs_outcome_name(m->outcome), m->max_barrier_deflection, m->max_barrier_deflection / FT,
+            m->working_width, exit, r->released, m->posts_failed_left + m->posts_failed_right, more);
+}
+
+static void write_roadside(FILE *md, FILE *csv, const suite *s) {
+    fprintf(
+        md,
+        "## Roadside crash tests: blind predictions\n\n"
+        "Six NCHRP Report 350 test 3-11 crash tests (2000-kg pickup, about 100 km/h and 25 degrees) of "
+        "roadside cable barriers, `examples/roadside/rs*.yaml`, each built from its design data "
+        "(shared/reference/data/roadside-tests.md) with the readings of docs/assumptions.md. The "
+        "measured deflections are withheld: each prediction stands beside an empty column. Deflection is "
+        "the largest lateral displacement of any cable from its line; the working width adds the "
+        "vehicle's and the posts' reach. RS6 stands 1.22 m from the break of a 1.5H:1V slope: the "
+        "model's ground is flat.\n\n"
+        "| test | reading | outcome | max dynamic deflection | working width | exit | cables let go | posts "
+        "failed | measured deflection |\n|---|---|---|---|---|---|---|---|---|\n");
+    for (int k = 0; k < ROAD; k++) {
+        if (s->road[k] < 0) continue;
+        const result *r = &s->jobs[s->road[k]].r;
+        road_row(md, road_names[k], "as the file reads the design", r, " withheld |");
+        csv_row(csv, "roadside", road_names[k], "", r);
+    }
+    fprintf(md,
+            "\nUnder each other documented reading of what the data leaves open, one at a time, and the band "
+            "of the deflection over all of them:\n\n| test | reading | outcome | max dynamic deflection | "
+            "working width | exit | cables let go | posts failed |\n|---|---|---|---|---|---|---|---|\n");
+    for (int k = 0; k < ROAD; k++) {
+        if (s->road[k] < 0) continue;
+        const result *base = &s->jobs[s->road[k]].r;
+        double lo = base->ok ? base->sm.max_barrier_deflection : HUGE_VAL, hi = base->ok ? lo : -HUGE_VAL;
+        for (int r = 0; r < ROAD_READINGS; r++) {
+            if (s->road_reading[k][r] < 0) continue;
+            const result *rr = &s->jobs[s->road_reading[k][r]].r;
+            road_row(md, road_names[k], road_readings[r].what, rr, "");
+            csv_row(csv, "roadside reading", road_names[k], road_readings[r].what, rr);
+            if (rr->ok)
+                lo = fmin(lo, rr->sm.max_barrier_deflection), hi = fmax(hi, rr->sm.max_barrier_deflection);
+        }
+        if (lo <= hi) fprintf(md, "| %s | **band** | | %.2f-%.2f m | | | | |\n", road_names[k], lo, hi);
+    }
+    fprintf(md, "\n");
+}
+
 static int wanted(const char *only, const char *part) {
     return !only || strstr(only, part) != NULL;
 }
@@ -817,6 +938,10 @@ static void plan(suite *s, const char *only) {
             add_refinement(s, t, k);
     for (int k = 0; k < CRASH && sensitivity; k++)
         add_sensitivity(s, k);
+    for (int k = 0; k < ROAD; k++)
+        s->road[k] = -1;
+    for (int k = 0; k < ROAD && wanted(only, "roadside"); k++)
+        add_road(s, k);
 }
 
 static void suite_free(suite *s) {
@@ -855,7 +980,8 @@ int cs_command_validate(int argc, char **argv) {
                                                                  : NULL;
         if (!slot || i + 1 >= argc) {
             fprintf(stderr, "usage: cablesim validate [-o DIR] [--examples DIR] [--only "
-                            "crash,readings,bogie,verification,convergence,sensitivity] [--report-only]\n");
+                            "crash,readings,roadside,bogie,verification,convergence,sensitivity] "
+                            "[--report-only]\n");
             return 2;
         }
         *slot = argv[++i];
@@ -893,9 +1019,10 @@ int cs_command_validate(int argc, char **argv) {
         csv,
         "suite,case,variant,ok,outcome,max_50ms_decel_g,max_dynamic_penetration_m,exit_speed_mps,stop_time_s,"
         "cable1_break_s,cable2_break_s,posts_failed_left,posts_failed_right,energy_balance_error,"
-        "energy_absorbed_j\n");
+        "energy_absorbed_j,max_deflection_m,working_width_m,exit_angle_deg\n");
     if (wanted(only, "crash")) write_crash(md, csv, s);
     if (wanted(only, "readings")) write_readings(md, csv, s);
+    if (wanted(only, "roadside")) write_roadside(md, csv, s);
     if (wanted(only, "bogie")) write_bogie(md, csv, s);
     if (wanted(only, "verification")) write_verification(md, s->loader, &s->data);
     if (wanted(only, "convergence")) write_convergence(md, csv, s);

@@ -32,6 +32,15 @@ check "APS1 judged against the band of its readings" 'grep -qE "band of its read
 check "APS1 targets judged" 'grep -qE "deceleration (met|NOT met), exit speed (met|NOT met), break times (met|NOT met)" "$dir/crash/validation.md"'
 check "APS1 bound from the test's numbers" 'grep -q "at most 2.18 m/s .* at least 35.1 mph from 40 mph (33.1-37.1 mph from 38-42 mph), .* at least 41% .* (26-51% over" "$dir/crash/validation.md"'
 
+# The roadside part: each of the six blind predictions beside a withheld column, its readings and the
+# band of its deflection; every run finished.
+"$cs" validate -o "$dir/road" --only roadside --report-only >/dev/null 2>&1
+check "validate --only roadside exits 0" '[ $? -eq 0 ]'
+md="$dir/road/validation.md"
+check "six predictions, measured withheld" '[ "$(grep -cE "^\| rs[1-6] \| as the file reads the design \| (redirected|breakthrough|stopped|time_limit) \| [0-9.]+ m .* withheld \|$" "$md")" -eq 6 ]'
+check "a deflection band per test" '[ "$(grep -cE "^\| rs[1-6] \| \*\*band\*\* \| \| [0-9.]+-[0-9.]+ m \|" "$md")" -eq 6 ]'
+check "no roadside run failed" '! grep -q "| failed |" "$md"'
+
 # The sensitivity part: one row per test and input, the joint sample's runs in the csv, APS1 judged
 # against the joint band, and the truck further into every barrier when it comes in faster (42 vs 38 mph):
 # if it breaks through at 38 mph, it does at 42 and exits faster; if it stops, it stops further in or
