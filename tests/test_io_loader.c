@@ -135,7 +135,7 @@ static void test_library_parts(void **state) {
             assert_true(strlen(docs[i]) > 0);
         }
     }
-    assert_int_equal(total, 9 + 8 + 9 + 1);
+    assert_int_equal(total, 11 + 8 + 9 + 1);
     cs_section_def holed;
     assert_int_equal(cs_loader_part(l, CS_PART_SECTION, "S4x7.7-holes", &holed), 0);
     /* Zx less the four holes' strips at their flange's centre: 3.50 - 4 (0.6875 x 0.293) (4.00 - 0.293) / 2

@@ -75,9 +75,40 @@ static void vehicle_classes_by_mass(void **state) {
     assert_null(cs_rating_vehicle_class(4000.0)); /* between PU and M */
 }
 
+/* The roadside tests of a level, or one by name, with their vehicles, speeds and angles; a redirected
+ * run's exit angle against 60% of the impact angle. */
+static void roadside_test_conditions(void **state) {
+    (void)state;
+    cs_roadside_test t[3];
+    assert_int_equal(cs_roadside_tests("mash", 3, NULL, t), 2);
+    assert_string_equal(t[0].name, "3-10"), assert_string_equal(t[0].vehicle, "1100C");
+    assert_string_equal(t[1].name, "3-11"), assert_string_equal(t[1].vehicle, "2270P");
+    CHECK_REL(t[1].speed, 100.0 / 3.6, 1e-12);
+    CHECK_REL(t[1].angle, 25.0 * 3.14159265358979323846 / 180.0, 1e-12);
+    assert_int_equal(cs_roadside_tests("nchrp-350", 4, NULL, t), 3);
+    assert_string_equal(t[2].name, "4-12"), assert_string_equal(t[2].vehicle, "8000S");
+    CHECK_REL(t[2].speed, 80.0 / 3.6, 1e-12);
+    assert_int_equal(cs_roadside_tests("nchrp-350", 0, "3-10", t), 1);
+    assert_string_equal(t[0].vehicle, "820C");
+    assert_int_equal(cs_roadside_tests("en-1317", 3, NULL, t), 0);
+    cs_roadside_tests("nchrp-350", 0, "3-11", t);
+    cs_summary s = {0};
+    s.outcome = CS_REDIRECTED, s.exit_speed = 18.0, s.max_barrier_deflection = 2.5, s.working_width = 2.6;
+    s.exit_angle = 0.59 * t[0].angle;
+    cs_roadside_result r = cs_roadside_read(&t[0], &s);
+    assert_true(r.contained && r.redirected && r.exit_angle_within);
+    s.exit_angle = 0.61 * t[0].angle;
+    assert_false(cs_roadside_read(&t[0], &s).exit_angle_within);
+    s.outcome = CS_BREAKTHROUGH;
+    r = cs_roadside_read(&t[0], &s);
+    assert_false(r.contained || r.redirected);
+    CHECK_REL(r.exit_speed, 18.0, 1e-12);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(penetration_boundaries),
                                        cmocka_unit_test(speed_windows), cmocka_unit_test(reference_points),
-                                       cmocka_unit_test(vehicle_classes_by_mass)};
+                                       cmocka_unit_test(vehicle_classes_by_mass),
+                                       cmocka_unit_test(roadside_test_conditions)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -5,6 +5,8 @@
 #include <string.h>
 
 #define MPH 0.44704
+#define KMH (1.0 / 3.6)
+#define DEG (3.14159265358979323846 / 180.0)
 
 cs_rating_rules cs_default_rating_rules(void) {
     cs_rating_rules r;
@@ -98,4 +100,39 @@ const char *cs_rating_vehicle_class(double mass) {
     for (int i = 0; i < 4; i++)
         if (fabs(mass - classes[i].kg) <= 0.05 * classes[i].kg) return classes[i].name;
     return NULL;
+}
+
+/* NCHRP Report 350 (1993) and MASH (2009): tests x-10 (small car), x-11 (pickup) at 100 km/h, 4-12 (single
+ * unit truck); 4-10 and 4-11 repeat 3-10 and 3-11 (docs/ratings.md). */
+static const cs_roadside_test roadside_tests[] = {
+    {"nchrp-350", "3-10", "820C", 100 * KMH, 20 * DEG}, {"nchrp-350", "3-11", "2000P", 100 * KMH, 25 * DEG},
+    {"nchrp-350", "4-10", "820C", 100 * KMH, 20 * DEG}, {"nchrp-350", "4-11", "2000P", 100 * KMH, 25 * DEG},
+    {"nchrp-350", "4-12", "8000S", 80 * KMH, 15 * DEG}, {"mash", "3-10", "1100C", 100 * KMH, 25 * DEG},
+    {"mash", "3-11", "2270P", 100 * KMH, 25 * DEG},     {"mash", "4-10", "1100C", 100 * KMH, 25 * DEG},
+    {"mash", "4-11", "2270P", 100 * KMH, 25 * DEG},     {"mash", "4-12", "10000S", 90 * KMH, 15 * DEG},
+};
+
+int cs_roadside_tests(const char *standard, int level, const char *name, cs_roadside_test *out) {
+    int n = 0;
+    for (size_t i = 0; i < sizeof roadside_tests / sizeof *roadside_tests; i++) {
+        const cs_roadside_test *t = &roadside_tests[i];
+        if (strcmp(t->standard, standard) != 0) continue;
+        int in_level =
+            level > 0 && t->name[0] == '0' + level && (level == 4 || strcmp(t->name + 1, "-12") != 0);
+        if (in_level || (name && strcmp(t->name, name) == 0)) out[n++] = *t;
+    }
+    return n;
+}
+
+cs_roadside_result cs_roadside_read(const cs_roadside_test *test, const cs_summary *summary) {
+    cs_roadside_result r;
+    memset(&r, 0, sizeof r);
+    r.redirected = summary->outcome == CS_REDIRECTED;
+    r.contained = r.redirected || summary->outcome == CS_STOPPED;
+    r.deflection = summary->max_barrier_deflection;
+    r.working_width = summary->working_width;
+    r.exit_speed = cs_outcome_exits(summary->outcome) ? summary->exit_speed : -1.0;
+    r.exit_angle = r.exit_speed >= 0.0 ? summary->exit_angle : 0.0;
+    r.exit_angle_within = r.redirected && r.exit_angle <= 0.6 * test->angle;
+    return r;
 }

@@ -51,4 +51,34 @@ int cs_rating_speed_mph(const cs_rating_rules *rules, double speed);
 const char *cs_rating_vehicle_class(double mass);
 const char *cs_rating_level(cs_standard standard, double penetration);
 
+/* ---- roadside test conditions: NCHRP Report 350 and AASHTO MASH (docs/ratings.md) ----
+ * A test's vehicle (a part of the library), speed and angle; the impact point is the model's (neither
+ * document's impact-point rule for cable barriers could be confirmed). */
+typedef struct cs_roadside_test {
+    const char *standard; /* "nchrp-350", "mash" */
+    const char *name;     /* "3-10", "3-11", "4-10", "4-11", "4-12" */
+    const char *vehicle;  /* part name */
+    double speed;         /* m/s */
+    double angle;         /* rad */
+} cs_roadside_test;
+
+/* The tests of a standard's test level (3: x-10 and x-11; 4: and 4-12), or the one named (level 0 and
+ * name), into out (at most 3); returns the count, 0 if the standard or the test is unknown. */
+int cs_roadside_tests(const char *standard, int level, const char *name, cs_roadside_test *out);
+
+/* How a run of a roadside test reads: contained and redirected (it left on the traffic side) or
+ * stopped, not broken through; the exit angle against NCHRP 350's preferred limit, 60% of the impact
+ * angle (UNCONFIRMED). */
+typedef struct cs_roadside_result {
+    int contained;         /* redirected or stopped, not through */
+    int redirected;        /* left the barrier on the traffic side */
+    double deflection;     /* dynamic deflection, m */
+    double working_width;  /* m */
+    double exit_speed;     /* m/s, < 0 if it did not leave */
+    double exit_angle;     /* rad */
+    int exit_angle_within; /* exit angle within 60% of the impact angle */
+} cs_roadside_result;
+
+cs_roadside_result cs_roadside_read(const cs_roadside_test *test, const cs_summary *summary);
+
 #endif
