@@ -49,7 +49,7 @@ fuzz-build: deps
 fuzz: fuzz-build
 	rm -rf $(FUZZ_BUILD)/seeds
 	mkdir -p $(FUZZ_BUILD)/seeds $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/artifacts
-	for f in examples/*.yaml tests/good/*.yaml tests/bad/*.yaml; do \
+	for f in examples/*.yaml examples/roadside/*.yaml tests/good/*.yaml tests/bad/*.yaml; do \
 	  cp "$$f" "$(FUZZ_BUILD)/seeds/$$(echo "$$f" | tr / -)"; done
 	for f in examples/*.yaml; do \
 	  { cat "$$f"; printf '#set scenario.speed=35 mph\n#set barrier.cables[0].pretension=8 kip\n'; \

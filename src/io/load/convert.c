@@ -305,28 +305,35 @@ static int by_x(const void *a, const void *b) {
 /* The positions of a group: one by one (x) or a run. Returns the count, -1 on errors. */
 static int positions(cs_loader *l, const cs_node *g, double *xs, int max) {
     int nx = get_list(l, g, "x", xs, max);
-    double from = 0, to = 0, spacing = 0, ex[256];
-    int gf = get_qty(l, g, "from", &from), gt = get_qty(l, g, "to", &to),
+    double from = 0, to = 0, up_to = 0, spacing = 0, ex[256];
+    int gf = get_qty(l, g, "from", &from), gt = get_qty(l, g, "to", &to), gu = get_qty(l, g, "up_to", &up_to),
         gs = get_qty(l, g, "spacing", &spacing);
     int ne = get_list(l, g, "except", ex, 256), before = l->error_count;
     const cs_node *count = cs_node_get(g, "count");
-    if (nx < 0 || gf < 0 || gt < 0 || gs < 0 || ne < 0) return -1;
+    if (nx < 0 || gf < 0 || gt < 0 || gu < 0 || gs < 0 || ne < 0) return -1;
     if (nx > 0) {
-        if (gf || gt || gs || count || ne) {
-            cs_err_node(l, g, 0, "posts given by x and as a run (expected x, or from/spacing/to or count)");
+        if (gf || gt || gu || gs || count || ne) {
+            cs_err_node(l, g, 0, "posts given by x and as a run (expected x, or from/spacing/to, up_to or count)");
             return -1;
         }
         return nx;
     }
-    if (!gf || !gs || !gt == !count) {
-        cs_err_node(l, g, 0, "%s (expected x: [...], or from, spacing and one of to or count)",
+    if (!gf || !gs || (gt != 0) + (gu != 0) + (count != NULL) != 1) {
+        cs_err_node(l, g, 0, "%s (expected x: [...], or from, spacing and one of to, up_to or count)",
                     !gf   ? "missing 'from'"
                     : !gs ? "missing 'spacing'"
-                          : "give to or count, not both");
+                          : "give one of to, up_to or count");
         return -1;
     }
     long n;
-    if (count) {
+    if (gu) { /* as many spacings as fit */
+        double steps = floor((up_to - from) / spacing + 1e-9);
+        if (steps < 0.0 || steps > 1e6) {
+            cs_err_node(l, at(g, "up_to"), 0, "%g m is before the run's first post at %g m", up_to, from);
+            return -1;
+        }
+        n = (long)steps;
+    } else if (count) {
         char *end;
         n = strtol(count->text, &end, 10); /* posts; n - 1 below, once n > 0 (LONG_MIN - 1 overflows) */
         if (end == count->text || *end || n < 1) {
