@@ -155,7 +155,7 @@ function specs(data) {
     axes: [timeAxis, { label: 'speed (m/s)' }, otherAxis('speed (mph)', 1 / MPH, 0)],
     yFromZero: true,
     markers: ev
-      .filter((e) => e[1] === 'stopped' || e[1] === 'breakthrough')
+      .filter((e) => e[1] === 'stopped' || e[1] === 'breakthrough' || e[1] === 'redirected')
       .map((e) => ({ t: e[0], v: valueAt(e[0], t, S.speed), color: '#d91a1a', shape: 'diamond', label: e[1] === 'stopped' ? `stopped at ${fmt(e[0], 3)} s` : `through at ${fmt(e[0], 3)} s, ${fmt(e[4], 1)} m/s (${fmt(e[4] / MPH, 1)} mph)` })),
   });
   // 3. penetration

@@ -44,13 +44,10 @@ export function postState(status) {
 }
 
 // The schematic body as in the PNG snapshots (src/io/out/figures.c): front face (crushed), rear, half
-// width, face bottom and top, axles, wheels; body frame x forward, z up from the CG. The model has no
-// overall length: the rear overhang is taken equal to the front one.
+// width, face bottom and top, axles, wheels; body frame x forward, z up from the CG.
 function body(v, crush) {
-  const overhang = v.cg_to_front - v.cg_to_front_axle;
   const b = { xf: v.cg_to_front - crush, axle: [v.cg_to_front_axle, v.cg_to_front_axle - v.wheelbase], hw: 0.5 * v.front_width };
-  b.xr = b.axle[1] - (overhang > 0 ? overhang : 0.1 * v.wheelbase);
-  if (!(b.xr < b.xf - 0.5)) b.xr = -v.cg_to_front;
+  b.xr = -v.cg_to_rear;
   b.zb = v.face_bottom - v.cg_height;
   b.zt = v.face_top - v.cg_height;
   b.wheelR = Math.min(0.5, Math.max(0.2, 0.9 * v.face_bottom));

@@ -17,6 +17,7 @@ export { el };
 const OUTCOME = {
   stopped: { word: 'Stopped', cls: 'good' },
   breakthrough: { word: 'Broke through', cls: 'bad' },
+  redirected: { word: 'Redirected', cls: 'good' },
   time_limit: { word: 'Time limit reached', cls: 'neutral' },
   running: { word: 'Did not finish', cls: 'neutral' },
 };
@@ -37,12 +38,17 @@ export function story(data) {
   parts.push(
     `A ${pair('mass', data.vehicle.mass)} vehicle struck the ${data.name} barrier (${cables} cable${cables === 1 ? '' : 's'} on ${posts} posts) ` +
       `${Math.abs(angle - 90) < 0.5 ? 'head-on' : `at ${fmt(angle, 0)}° to the barrier line`} at ${pair('speed', sc.speed)}, ` +
-      `centred at x = ${pair('length', sc.impact_x)} along the barrier.`,
+      `${sc.impact_at_corner ? 'its leading front corner' : 'centred'} at x = ${pair('length', sc.impact_x)} along the barrier.`,
   );
   if (s.outcome === 'stopped')
     parts.push(`The barrier stopped it at t = ${seconds(s.stop_time)}, ${pair('length', s.max_penetration)} past the cable line.`);
   else if (s.outcome === 'breakthrough')
     parts.push(`It broke through at t = ${seconds(s.t_end)}, still moving at ${pair('speed', s.exit_speed)}, after pushing ${pair('length', s.max_penetration)} past the cable line.`);
+  else if (s.outcome === 'redirected')
+    parts.push(
+      `The barrier redirected it: it left on the traffic side at t = ${seconds(s.t_end)} at ${pair('speed', s.exit_speed)}, ` +
+        `${fmt((s.exit_angle * 180) / Math.PI, 1)}° away from the barrier line, after deflecting the cables ${pair('length', s.max_deflection)} (working width ${pair('length', s.working_width)}).`,
+    );
   else parts.push(`The simulation ended at its time limit, t = ${seconds(s.t_end)}, with the vehicle still moving; the furthest it got was ${pair('length', s.max_penetration)} past the cable line.`);
   parts.push(
     `${failed} of ${posts} posts failed (${s.posts_failed_left} on the low-x side of the impact, ${s.posts_failed_right} on the high-x side) and ` +
@@ -71,12 +77,19 @@ export function cards(data) {
   const cables = data.barrier.cables.length;
   const [penSI, penUS] = both.length(s.max_penetration);
   const [exitSI, exitUS] = s.exit_speed !== null ? both.speed(s.exit_speed) : ['–', s.outcome === 'stopped' ? 'the vehicle stopped' : 'not through'];
-  const exitNote = s.exit_speed !== null ? 'speed as it got through' : s.outcome === 'stopped' ? 'it did not get through' : 'by the end of the run';
+  const exitNote =
+    s.outcome === 'redirected'
+      ? `leaving at ${fmt((s.exit_angle * 180) / Math.PI, 1)}° to the barrier`
+      : s.exit_speed !== null
+        ? 'speed as it got through'
+        : s.outcome === 'stopped'
+          ? 'it did not get through'
+          : 'by the end of the run';
   const [keSI, keUS] = both.energy(s.initial_kinetic_energy);
   return el(
     'div',
     { class: 'cards' },
-    card('Outcome', o.word, s.outcome === 'breakthrough' ? `at t = ${seconds(s.t_end)}` : s.outcome === 'stopped' ? `at t = ${seconds(s.stop_time)}` : `t = ${seconds(s.t_end)}`, `run of ${seconds(s.t_end)} simulated`, o.cls),
+    card('Outcome', o.word, s.outcome === 'breakthrough' || s.outcome === 'redirected' ? `at t = ${seconds(s.t_end)}` : s.outcome === 'stopped' ? `at t = ${seconds(s.stop_time)}` : `t = ${seconds(s.t_end)}`, `run of ${seconds(s.t_end)} simulated`, o.cls),
     card('Max 50-ms deceleration', `${fmt(s.max_decel_50ms_g, 2)} g`, `at t = ${seconds(s.t_max_decel)}`, 'average over the worst 50 ms'),
     card('Penetration', penSI, penUS, 'front face past the cable line'),
     card('Exit speed', exitSI, exitUS, exitNote),
@@ -100,10 +113,12 @@ export function summaryTable(data) {
     ['Max 50-ms deceleration', `${fmt(s.max_decel_50ms_g, 3)} g`, `at t = ${seconds(s.t_max_decel)}`],
     ['Max dynamic penetration (front face)', ...both.length(s.max_penetration)],
     ['Max barrier deflection (cable)', ...both.length(s.max_deflection)],
+    ['Working width (vehicle, cables or posts)', ...both.length(s.working_width)],
     ['Max cable tension', ...both.force(s.max_cable_tension)],
     ['Posts failed', `${s.posts_failed_left + s.posts_failed_right} of ${data.barrier.posts.length}`, `${s.posts_failed_left} at lower x than the impact, ${s.posts_failed_right} at higher x; ${s.posts_failed_rotation} past the rotation limit, ${s.posts_failed_shear} sheared, ${s.posts_failed_pullout} pulled out`],
     ['Cables broken', `${s.cables_broken} of ${data.barrier.cables.length}`, null],
     ['Exit speed', ...(s.exit_speed === null ? ['none', null] : both.speed(s.exit_speed))],
+    ['Exit angle (from the barrier line)', ...(s.exit_angle === null || s.exit_angle === undefined ? ['none', null] : both.angle(s.exit_angle))],
     ['Stop time', s.stop_time === null ? 'did not stop' : seconds(s.stop_time), null],
     ['Energy balance error', `${(100 * s.energy_balance_error).toFixed(3)} %`, 'of the initial kinetic energy'],
     ['Solver warnings', `${s.solver_warnings} steps`, s.solver_warnings ? `steps whose barrier equilibrium stopped short of its tolerance (largest relative residual ${fmt(s.max_solver_residual, 2)})` : 'every step reached equilibrium'],

@@ -418,12 +418,10 @@ typedef struct body {
 
 static body vehicle_body(const cs_vehicle_def *v, double crush) {
     body b;
-    double overhang = v->cg_to_front - v->cg_to_front_axle;
     b.xf = v->cg_to_front - crush;
     b.axle[0] = v->cg_to_front_axle;
     b.axle[1] = v->cg_to_front_axle - v->wheelbase;
-    b.xr = b.axle[1] - (overhang > 0 ? overhang : 0.1 * v->wheelbase);
-    if (!(b.xr < b.xf - 0.5)) b.xr = -v->cg_to_front;
+    b.xr = -v->cg_to_rear;
     b.hw = 0.5 * v->front_width;
     b.zb = v->face_bottom - v->cg_height;
     b.zt = v->face_top - v->cg_height;

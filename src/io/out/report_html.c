@@ -346,6 +346,7 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
     knum(&j, &sf, "t_max_decel", s.t_max_decel);
     knum(&j, &sf, "max_penetration", s.max_dynamic_penetration);
     knum(&j, &sf, "max_deflection", s.max_barrier_deflection);
+    knum(&j, &sf, "working_width", s.working_width);
     kopt(&j, &sf, "stop_time", s.outcome == CS_STOPPED ? s.stop_time : NAN);
     kopt(&j, &sf, "exit_speed", cs_outcome_exits(s.outcome) ? s.exit_speed : NAN);
     kopt(&j, &sf, "exit_angle", cs_outcome_exits(s.outcome) ? s.exit_angle : NAN);
@@ -368,6 +369,7 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
     knum(&j, &sf, "speed", sc->speed);
     knum(&j, &sf, "angle", sc->angle);
     knum(&j, &sf, "impact_x", sc->impact_x);
+    kint(&j, &sf, "impact_at_corner", sc->impact_at_corner);
     knum(&j, &sf, "dt", sc->dt);
     knum(&j, &sf, "t_end", sc->t_end);
     knum(&j, &sf, "output_interval", sc->output_interval);
@@ -379,6 +381,7 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
     knum(&j, &sf, "cg_height", v->cg_height);
     knum(&j, &sf, "cg_to_front", v->cg_to_front);
     knum(&j, &sf, "front_width", v->front_width);
+    knum(&j, &sf, "cg_to_rear", v->cg_to_rear);
     knum(&j, &sf, "face_bottom", v->face_bottom);
     knum(&j, &sf, "face_top", v->face_top);
     knum(&j, &sf, "wheelbase", v->wheelbase);
