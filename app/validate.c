@@ -245,7 +245,7 @@ static void write_crash(FILE *md, FILE *csv, suite *s) {
                 "|\n|---|---|---|---|---|\n");
     fprintf(md, "| max 50-ms average deceleration | %.3f g | %.3f g | %.3f g | %+.0f%% |\n", t->decel_g,
             p->decel_g, r->sm.max_decel_50ms_g, rel_err(r->sm.max_decel_50ms_g, t->decel_g));
-    if (r->sm.outcome == CS_BREAKTHROUGH)
+    if (cs_outcome_through(r->sm.outcome))
         fprintf(md, "| exit speed | %.1f mph | %.1f mph | %.1f mph | %+.0f%% |\n", t->exit_mph, p->exit_mph,
                 r->sm.exit_speed / MPH, rel_err(r->sm.exit_speed / MPH, t->exit_mph));
     else
@@ -258,7 +258,7 @@ static void write_crash(FILE *md, FILE *csv, suite *s) {
                     ? "no break"
                     : (snprintf(b, sizeof b, "%+.0f ms", 1e3 * (r->cable_break[c] - t->brk[c])), b));
     int dec_ok = r->ok && fabs(rel_err(r->sm.max_decel_50ms_g, t->decel_g)) <= 15.0;
-    int exit_ok = r->ok && r->sm.outcome == CS_BREAKTHROUGH &&
+    int exit_ok = r->ok && cs_outcome_through(r->sm.outcome) &&
                   fabs(rel_err(r->sm.exit_speed / MPH, t->exit_mph)) <= 15.0;
     int brk_ok = r->ok && r->cable_break[0] >= 0.0 && r->cable_break[1] >= 0.0 &&
                  fabs(r->cable_break[0] - t->brk[0]) <= 0.05 && fabs(r->cable_break[1] - t->brk[1]) <= 0.05;
@@ -280,10 +280,10 @@ static void write_crash(FILE *md, FILE *csv, suite *s) {
             p3->sm.max_dynamic_penetration, p4->sm.max_dynamic_penetration);
     fprintf(
         md, "| exit speed | %s | withheld | %s | withheld |\n",
-        p3->sm.outcome == CS_BREAKTHROUGH ? (snprintf(a, sizeof a, "%.1f mph", p3->sm.exit_speed / MPH), a)
-                                          : "-",
-        p4->sm.outcome == CS_BREAKTHROUGH ? (snprintf(b, sizeof b, "%.1f mph", p4->sm.exit_speed / MPH), b)
-                                          : "-");
+        cs_outcome_through(p3->sm.outcome) ? (snprintf(a, sizeof a, "%.1f mph", p3->sm.exit_speed / MPH), a)
+                                           : "-",
+        cs_outcome_through(p4->sm.outcome) ? (snprintf(b, sizeof b, "%.1f mph", p4->sm.exit_speed / MPH), b)
+                                           : "-");
     fprintf(md, "| posts failed left / right | %d / %d | withheld | %d / %d | withheld |\n\n",
             p3->sm.posts_failed_left, p3->sm.posts_failed_right, p4->sm.posts_failed_left,
             p4->sm.posts_failed_right);
@@ -465,7 +465,7 @@ static double refinement_table(FILE *md, FILE *csv, const suite *s, int t) {
             const result *r = &s->jobs[s->refine[t][k][d]].r;
             if (!r->ok) continue;
             char exit[32] = "-";
-            if (r->sm.outcome == CS_BREAKTHROUGH) snprintf(exit, sizeof exit, "%.2f m/s", r->sm.exit_speed);
+            if (cs_outcome_through(r->sm.outcome)) snprintf(exit, sizeof exit, "%.2f m/s", r->sm.exit_speed);
             fprintf(md, "| %s | %s | %s | %.3f g | %.3f m | %s | %.2f%% |\n", crash_names[k], values[d],
                     cs_outcome_name(r->sm.outcome), r->sm.max_decel_50ms_g, r->sm.max_dynamic_penetration,
                     exit, 100.0 * r->sm.energy_balance_error);
@@ -613,10 +613,10 @@ typedef struct bands {
 static void bands_add(bands *b, const result *r) {
     if (!r->ok) return;
     b->runs++;
-    b->through += r->sm.outcome == CS_BREAKTHROUGH;
+    b->through += cs_outcome_through(r->sm.outcome);
     band_add(&b->decel, r->sm.max_decel_50ms_g, 1);
     band_add(&b->pen, r->sm.max_dynamic_penetration, 1);
-    band_add(&b->exit, r->sm.exit_speed, r->sm.outcome == CS_BREAKTHROUGH);
+    band_add(&b->exit, r->sm.exit_speed, cs_outcome_through(r->sm.outcome));
     for (int c = 0; c < 2; c++)
         band_add(&b->brk[c], r->cable_break[c], r->cable_break[c] >= 0.0);
 }
@@ -759,7 +759,7 @@ static void reading_row(FILE *md, const char *name, const char *what, const resu
         return;
     }
     char exit[32] = "-", b[2][32];
-    if (r->sm.outcome == CS_BREAKTHROUGH) snprintf(exit, sizeof exit, "%.1f mph", r->sm.exit_speed / MPH);
+    if (cs_outcome_through(r->sm.outcome)) snprintf(exit, sizeof exit, "%.1f mph", r->sm.exit_speed / MPH);
     const cs_summary *m = &r->sm;
     fprintf(md, "| %s | %s | %s | %.2f g | %.2f m | %s | %s, %s | %d / %d / %d |\n", name, what,
             cs_outcome_name(m->outcome), m->max_decel_50ms_g, m->max_dynamic_penetration, exit,

@@ -29,12 +29,18 @@ static double left_of(const double *a, const double *b, const double *p) {
     return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
 }
 
-/* Height of the rope's straight span between nodes lo and hi at abscissa x. */
-static double span_height(const cs_cable_state *cs, int lo, int hi, double x) {
-    const double *a = cs->pos + 3 * lo, *b = cs->pos + 3 * hi;
+/* Height of the rope on span i (nodes i and i + 1) at abscissa x: its chord less its sag there. The span
+ * hangs as a shallow parabola under its weight across the chord, w h / l (h the chord's length in plan, l
+ * its length), at tension T: at fraction f along it the rope is w h l f (1 - f) / (2 T) below the chord,
+ * h / l of that straight down (the sag of cs_cable_stored_energy's term). A corner engages the rope where
+ * it hangs, so the two spans it makes hang on the same curve: no weight is lifted at the engagement. */
+static double span_height(const cs_cable_model *cm, const cs_cable_state *cs, int i, double x) {
+    const double *a = cs->pos + 3 * i, *b = cs->pos + 3 * (i + 1);
     double f = (b[0] - a[0]) != 0.0 ? (x - a[0]) / (b[0] - a[0]) : 0.5;
     f = f < 0.0 ? 0.0 : (f > 1.0 ? 1.0 : f);
-    return a[2] + f * (b[2] - a[2]);
+    double t = cs->tension[i], h2 = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
+    double sag = t > 0.0 ? cm->rope.w * h2 * f * (1.0 - f) / (2.0 * t) : 0.0;
+    return a[2] + f * (b[2] - a[2]) - sag;
 }
 
 /* World z of corner k's band's bottom and top edges, and the body z that maps to world z. */
@@ -72,6 +78,10 @@ static void slip(const cs_model *model, cs_state *s, int c, cs_event_type why) {
         if (cs_node_is_corner(cs->node[i])) cs_cable_remove_node(cs, i);
     cs_cable_release(cs, CS_CABLE_SLIPPED);
     cs_event_add(model, s, why, CS_ELEMENT_CABLE, c, s->t);
+    if (!s->contact_started) { /* the vehicle met the cable, if only to pass it */
+        s->contact_started = 1;
+        s->summary.first_contact_time = s->t;
+    }
 }
 
 void cs_contact_place_one(const cs_model *model, cs_state *s, int c, int i, int k, double z) {
@@ -129,7 +139,7 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
             cs_vehicle_corner_point(model, s, s->crush, k, bz, p);
             for (j = 1; j < cs->node_count - 1 && cs->pos[3 * j] <= p[0];)
                 j++;
-            zn = span_height(cs, j - 1, j, p[0]);
+            zn = span_height(&model->cables[c], cs, j - 1, p[0]);
             bz = body_z_for(model, s, k, zn);
         }
         if (p[0] <= cs->pos[0] || p[0] >= cs->pos[3 * (cs->node_count - 1)])

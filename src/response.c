@@ -80,6 +80,20 @@ static void end_run(const cs_model *model, cs_state *s, cs_outcome outcome, doub
     }
 }
 
+/* How the vehicle got through: over or under every cable, if every cable it left behind slipped off it
+ * (none broke or was let go by an anchor), by the way most did; else it broke through. */
+static cs_outcome through_how(const cs_model *model, const cs_state *s) {
+    int over = 0, under = 0;
+    for (int c = 0; c < model->cable_count; c++)
+        if (s->cables[c].status == CS_CABLE_BROKEN || s->cables[c].status == CS_CABLE_RELEASED)
+            return CS_BREAKTHROUGH;
+    for (int i = 0; i < s->event_count; i++) {
+        over += s->events[i].type == CS_EVENT_OVERRIDE;
+        under += s->events[i].type == CS_EVENT_UNDERRIDE;
+    }
+    return over + under == 0 ? CS_BREAKTHROUGH : over >= under ? CS_OVERRIDE : CS_UNDERRIDE;
+}
+
 void cs_response_update(const cs_model *model, cs_state *s) {
     cs_summary *sm = &s->summary;
     double u = v3_dot(s->vel, model->dir);
@@ -131,11 +145,11 @@ void cs_response_update(const cs_model *model, cs_state *s) {
     if (s->contact_started && u <= model->scenario.stop_speed) {
         end_run(model, s, CS_STOPPED, sm->max_dynamic_penetration);
     } else if (s->contact_started && engaged == 0 && (intact == 0 || s->pos[1] > 0.0)) {
-        end_run(model, s, CS_BREAKTHROUGH, v3_norm(s->vel));
+        end_run(model, s, through_how(model, s), v3_norm(s->vel));
     } else if (s->contact_started && engaged == 0 && s->vel[1] < 0.0) {
         end_run(model, s, CS_REDIRECTED, v3_norm(s->vel));
     } else if (s->t >= model->scenario.t_end - 0.5 * model->scenario.dt) {
-        end_run(model, s, CS_TIME_LIMIT, 0.0);
+        end_run(model, s, s->contact_started ? CS_TIME_LIMIT : CS_NO_CONTACT, 0.0);
     }
     sm->outcome = s->outcome;
 }

@@ -144,12 +144,22 @@ const char *cs_outcome_name(cs_outcome o) {
         return "time_limit";
     case CS_REDIRECTED:
         return "redirected";
+    case CS_OVERRIDE:
+        return "override";
+    case CS_UNDERRIDE:
+        return "underride";
+    case CS_NO_CONTACT:
+        return "no_contact";
     }
     return "unknown";
 }
 
+int cs_outcome_through(cs_outcome o) {
+    return o == CS_BREAKTHROUGH || o == CS_OVERRIDE || o == CS_UNDERRIDE;
+}
+
 int cs_outcome_exits(cs_outcome o) {
-    return o == CS_BREAKTHROUGH || o == CS_REDIRECTED;
+    return cs_outcome_through(o) || o == CS_REDIRECTED;
 }
 
 const char *cs_cable_status_name(cs_cable_status st) {

@@ -37,7 +37,7 @@ check "APS1 bound from the test's numbers" 'grep -q "at most 2.18 m/s .* at leas
 "$cs" validate -o "$dir/road" --only roadside --report-only >/dev/null 2>&1
 check "validate --only roadside exits 0" '[ $? -eq 0 ]'
 md="$dir/road/validation.md"
-check "six predictions, measured withheld" '[ "$(grep -cE "^\| rs[1-6] \| as the file reads the design \| (redirected|breakthrough|stopped|time_limit) \| [0-9.]+ m .* withheld \|$" "$md")" -eq 6 ]'
+check "six predictions, measured withheld" '[ "$(grep -cE "^\| rs[1-6] \| as the file reads the design \| (redirected|breakthrough|override|underride|stopped|time_limit) \| [0-9.]+ m .* withheld \|$" "$md")" -eq 6 ]'
 check "a deflection band per test" '[ "$(grep -cE "^\| rs[1-6] \| \*\*band\*\* \| \| [0-9.]+-[0-9.]+ m \|" "$md")" -eq 6 ]'
 check "no roadside run failed" '! grep -q "| failed |" "$md"'
 

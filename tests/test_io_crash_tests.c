@@ -23,8 +23,8 @@
 enum { TESTS = 3 };
 static const char *const names[TESTS] = {"aps1", "aps3", "aps4"};
 /* cs_state_hash of each run's final state */
-static const unsigned long long hashes[TESTS] = {0xc76e80efe5cbe7c5ULL, 0x674ae226362f6f27ULL,
-                                                 0x5ea7b2808d633d24ULL};
+static const unsigned long long hashes[TESTS] = {0x28bb94cf144eaf8aULL, 0x4cd787e37e3e4314ULL,
+                                                 0x09bc84d8aeae0cbdULL};
 
 typedef struct pinned {
     char outcome[32];
@@ -46,7 +46,7 @@ static pinned run(const char *name, unsigned long long *hash) {
     memset(&p, 0, sizeof p);
     snprintf(p.outcome, sizeof p.outcome, "%s", cs_outcome_name(sm.outcome));
     p.decel_g = sm.max_decel_50ms_g, p.penetration_m = sm.max_dynamic_penetration, p.t_s = sm.t;
-    p.exit_speed_mps = sm.outcome == CS_BREAKTHROUGH ? sm.exit_speed : 0.0;
+    p.exit_speed_mps = cs_outcome_exits(sm.outcome) ? sm.exit_speed : 0.0;
     p.cables_broken = sm.cables_broken;
     p.rotation = sm.posts_failed_rotation[0] + sm.posts_failed_rotation[1];
     p.shear = sm.posts_failed_shear[0] + sm.posts_failed_shear[1];

@@ -55,11 +55,16 @@ typedef enum cs_outcome {
     CS_STOPPED,      /* the vehicle's forward speed fell to the stop speed */
     CS_BREAKTHROUGH, /* the vehicle is past the barrier line with no cable holding it */
     CS_TIME_LIMIT,
-    CS_REDIRECTED /* the vehicle left the barrier on the traffic side, moving away from it */
+    CS_REDIRECTED, /* the vehicle left the barrier on the traffic side, moving away from it */
+    CS_OVERRIDE,   /* it rode over every cable it met (none broke) and went past the barrier line */
+    CS_UNDERRIDE,  /* it ran under every cable it met (none broke) and went past the barrier line */
+    CS_NO_CONTACT  /* it never touched the barrier before the time limit */
 } cs_outcome;
 
-/* Whether a run that ended so has an exit speed and angle (it broke through or was redirected). */
+/* Whether a run that ended so has an exit speed and angle (it got through or was redirected). */
 int cs_outcome_exits(cs_outcome outcome);
+/* Whether the vehicle got through the barrier (broke through, rode over or ran under it). */
+int cs_outcome_through(cs_outcome outcome);
 
 typedef void (*cs_output_fn)(const cs_model *model, const cs_state *state, void *user);
 

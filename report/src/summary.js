@@ -18,6 +18,9 @@ const OUTCOME = {
   stopped: { word: 'Stopped', cls: 'good' },
   breakthrough: { word: 'Broke through', cls: 'bad' },
   redirected: { word: 'Redirected', cls: 'good' },
+  override: { word: 'Rode over', cls: 'bad' },
+  underride: { word: 'Ran under', cls: 'bad' },
+  no_contact: { word: 'Never touched', cls: 'neutral' },
   time_limit: { word: 'Time limit reached', cls: 'neutral' },
   running: { word: 'Did not finish', cls: 'neutral' },
 };
@@ -42,6 +45,8 @@ export function story(data) {
   );
   if (s.outcome === 'stopped')
     parts.push(`The barrier stopped it at t = ${seconds(s.stop_time)}, ${pair('length', s.max_penetration)} past the cable line.`);
+  else if (s.outcome === 'override' || s.outcome === 'underride')
+    parts.push(`It ${s.outcome === 'override' ? 'rode over' : 'ran under'} the cables and got past the barrier line at t = ${seconds(s.t_end)}, still moving at ${pair('speed', s.exit_speed)}.`);
   else if (s.outcome === 'breakthrough')
     parts.push(`It broke through at t = ${seconds(s.t_end)}, still moving at ${pair('speed', s.exit_speed)}, after pushing ${pair('length', s.max_penetration)} past the cable line.`);
   else if (s.outcome === 'redirected')

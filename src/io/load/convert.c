@@ -313,7 +313,8 @@ static int positions(cs_loader *l, const cs_node *g, double *xs, int max) {
     if (nx < 0 || gf < 0 || gt < 0 || gu < 0 || gs < 0 || ne < 0) return -1;
     if (nx > 0) {
         if (gf || gt || gu || gs || count || ne) {
-            cs_err_node(l, g, 0, "posts given by x and as a run (expected x, or from/spacing/to, up_to or count)");
+            cs_err_node(l, g, 0,
+                        "posts given by x and as a run (expected x, or from/spacing/to, up_to or count)");
             return -1;
         }
         return nx;

@@ -204,8 +204,9 @@ static const cs_field posts_fields[] = {
     LIST("x", CS_Q_LENGTH, 0, "posts one by one: their positions along the barrier"),
     QTY_ONLY("from", CS_Q_LENGTH, 0, "a run of posts: position of the first"),
     QTY_ONLY("to", CS_Q_LENGTH, 0, "a run: position of the last (or give up_to or count)"),
-    QTY_ONLY("up_to", CS_Q_LENGTH, 0,
-             "a run: the last post at or before this position, as many spacings as fit (a study over spacing)"),
+    QTY_ONLY(
+        "up_to", CS_Q_LENGTH, 0,
+        "a run: the last post at or before this position, as many spacings as fit (a study over spacing)"),
     QTY_ONLY("spacing", CS_Q_LENGTH, CS_POS, "a run: distance between posts"),
     {"count", CS_F_INT, CS_Q_NUMBER, CS_POS, -1, NULL, NULL, "a run: number of posts (or give to or up_to)"},
     LIST("except", CS_Q_LENGTH, 0, "a run: positions left out (other groups' posts stand there)"),

@@ -12,9 +12,14 @@ void cs_write_report(FILE *f, const cs_model_input *in, const cs_model *model, c
     fprintf(f, "%s: ", in->name);
     if (s.outcome == CS_STOPPED)
         fprintf(f, "the vehicle stopped at t = %.3f s\n", s.stop_time);
-    else if (s.outcome == CS_BREAKTHROUGH)
-        fprintf(f, "the vehicle broke through, exit speed %.2f m/s (%.1f mph)\n", s.exit_speed,
-                s.exit_speed / MPH);
+    else if (cs_outcome_through(s.outcome))
+        fprintf(f, "the vehicle %s, exit speed %.2f m/s (%.1f mph)\n",
+                s.outcome == CS_OVERRIDE    ? "rode over the cables"
+                : s.outcome == CS_UNDERRIDE ? "ran under the cables"
+                                            : "broke through",
+                s.exit_speed, s.exit_speed / MPH);
+    else if (s.outcome == CS_NO_CONTACT)
+        fprintf(f, "the vehicle never touched the barrier (t = %.3f s)\n", s.t);
     else if (s.outcome == CS_REDIRECTED)
         fprintf(f, "the vehicle was redirected, exit speed %.2f m/s (%.1f mph, %.1f km/h) at %.1f deg\n",
                 s.exit_speed, s.exit_speed / MPH, s.exit_speed * 3.6,

@@ -319,10 +319,16 @@ static int make_summary(summary *s, const cs_sweep_spec *spec, const double *x, 
         else
             s->failed++;
     }
-    static const cs_outcome outcomes[] = {CS_STOPPED, CS_BREAKTHROUGH, CS_REDIRECTED, CS_TIME_LIMIT};
-    static const char *const outcome_labels[] = {"stopped", "breakthrough", "redirected",
-                                                 "time limit reached (still moving)"};
-    for (int o = 0; o < 4; o++) {
+    static const cs_outcome outcomes[] = {CS_STOPPED,    CS_BREAKTHROUGH, CS_OVERRIDE,  CS_UNDERRIDE,
+                                          CS_REDIRECTED, CS_TIME_LIMIT,   CS_NO_CONTACT};
+    static const char *const outcome_labels[] = {"stopped",
+                                                 "breakthrough",
+                                                 "rode over the cables",
+                                                 "ran under the cables",
+                                                 "redirected",
+                                                 "time limit reached (still moving)",
+                                                 "never touched the barrier"};
+    for (int o = 0; o < 7; o++) {
         long c = 0;
         for (long i = 0; i < s->ok; i++)
             c += r[ok[i]].summary.outcome == outcomes[o];
@@ -330,7 +336,7 @@ static int make_summary(summary *s, const cs_sweep_spec *spec, const double *x, 
     }
     long pen = 0;
     for (long i = 0; i < s->ok; i++)
-        pen += r[ok[i]].summary.outcome == CS_BREAKTHROUGH || r[ok[i]].summary.max_dynamic_penetration > 1.0;
+        pen += cs_outcome_through(r[ok[i]].summary.outcome) || r[ok[i]].summary.max_dynamic_penetration > 1.0;
     if (add_tally(s, "penetration_over_1m", "penetration > 1 m (or breakthrough)", pen) != 0) goto oom;
     for (int t = 0; t < CS_EVENT_TYPE_COUNT; t++) {
         if (!is_failure_event(t)) continue;

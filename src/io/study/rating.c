@@ -63,7 +63,7 @@ cs_rating cs_rate_run(cs_standard standard, const char *vehicle_class, double sp
     r.standard = standard;
     snprintf(r.vehicle_class, sizeof r.vehicle_class, "%s", vehicle_class);
     r.speed_mph = cs_rating_speed_mph(rules, speed);
-    int through = summary->outcome == CS_BREAKTHROUGH;
+    int through = cs_outcome_through(summary->outcome);
     double front = summary->max_dynamic_penetration;
     int cargo =
         standard == CS_SD_STD_02_01A ||
