@@ -24,6 +24,7 @@ static const char usage[] =
     "       cablesim sweep SPEC.yaml [-o DIR] [--threads N]   a study: grids, Monte Carlo (see sweep "
     "--help)\n"
     "       cablesim rate FILE --standard sd-std-02.01|sd-std-02.01a|astm-f2656 [--class M50|K8]\n"
+    "       cablesim rate FILE --standard nchrp-350|mash [--level 3|4 | --test 3-11]\n"
     "       cablesim validate [-o DIR]   the validation suite: DIR/validation.md and .csv\n"
     "       cablesim list      the named parts of the library (data/*.yaml)\n"
     "       cablesim schema    the model-file reference (docs/file-format.md)\n"

@@ -34,8 +34,10 @@ static int usage_error(const char *what) {
 }
 
 /* One roadside test at the model's impact point; its row printed. Returns 0, 1 if the run failed, 2 if
- * its vehicle is not in the library. contained: set to 0 if the barrier did not contain and redirect. */
-static int roadside_one(cs_loader *l, const cs_model_input *in, const cs_roadside_test *t, int *contained) {
+ * its vehicle is not in the library. contained, redirected: set to 0 if the barrier did not contain the
+ * vehicle (it got through), did not redirect it (it got through or stopped). */
+static int roadside_one(cs_loader *l, const cs_model_input *in, const cs_roadside_test *t, int *contained,
+                        int *redirected) {
     cs_vehicle_def v;
     if (cs_loader_part(l, CS_PART_VEHICLE, t->vehicle, &v) != 0) {
         cs_loader_print_errors(l, stderr);
@@ -53,7 +55,7 @@ static int roadside_one(cs_loader *l, const cs_model_input *in, const cs_roadsid
         cs_summary sm;
         cs_state_summary(s, &sm);
         cs_roadside_result r = cs_roadside_read(t, &sm);
-        char exit[64] = "no exit";
+        char exit[128] = "no exit";
         if (r.exit_speed >= 0.0)
             snprintf(exit, sizeof exit, "exit %.1f km/h (%.1f mph) at %.1f deg%s", r.exit_speed * 3.6,
                      r.exit_speed / MPH, r.exit_angle * 180 / CS_PI,
@@ -67,6 +69,7 @@ static int roadside_one(cs_loader *l, const cs_model_input *in, const cs_roadsid
             t->name, t->vehicle, t->speed * 3.6, t->angle * 180 / CS_PI, cs_outcome_name(sm.outcome),
             r.deflection, r.deflection / 0.3048, r.working_width, r.working_width / 0.3048, exit);
         if (!r.contained) *contained = 0;
+        if (!r.redirected) *redirected = 0;
     }
     cs_state_free(s);
     cs_model_free(m);
@@ -88,13 +91,14 @@ static int rate_roadside(cs_loader *l, const char *file, const char *standard, c
     }
     printf("%s against %s (impact at x = %.2f m, the %s):\n", in.name, standard, in.scenario.impact_x,
            in.scenario.impact_at_corner ? "leading front corner" : "centre of the front face");
-    int contained = 1, rc = 0;
+    int contained = 1, redirected = 1, rc = 0;
     for (int k = 0; k < n && rc == 0; k++)
-        rc = roadside_one(l, &in, &t[k], &contained);
+        rc = roadside_one(l, &in, &t[k], &contained, &redirected);
     if (rc == 0)
         printf("%s: %s\n", test ? test : (lv == 4 ? "TL-4" : "TL-3"),
-               contained ? "contained and redirected in every test"
-                         : "NOT contained and redirected in every test");
+               !contained    ? "NOT contained in every test (the vehicle got through)"
+               : !redirected ? "contained in every test, NOT redirected in every test (the vehicle stopped)"
+                             : "contained and redirected in every test");
     return rc;
 }
 

@@ -990,7 +990,7 @@ int cs_command_validate(int argc, char **argv) {
     if (!s) return 1;
     char mdp[1024], csvp[1024], mdt[1040], csvt[1040];
     struct stat st;
-    mkdir("results", 0777);
+    if (strncmp(dir, "results/", 8) == 0) mkdir("results", 0777); /* the default's parent */
     if (mkdir(dir, 0777) != 0 && !(stat(dir, &st) == 0 && S_ISDIR(st.st_mode))) {
         fprintf(stderr, "cablesim validate: cannot create %s\n", dir);
         suite_free(s);

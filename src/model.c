@@ -409,7 +409,8 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
            vehicle->cg_height);
     m->window_steps = (int)lround(0.05 / scenario->dt);
     if (m->window_steps < 1) m->window_steps = 1;
-    m->event_capacity = 4 * m->post_count + 4 * m->cable_count + 16;
+    /* each post and cable fails in a few ways, once; slots and hooks let each cable go once per post */
+    m->event_capacity = 4 * m->post_count + 4 * m->cable_count + m->post_count * m->cable_count + 16;
     return m;
 
 oom:
