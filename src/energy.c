@@ -15,9 +15,10 @@ double cs_energy_scale(const cs_model *model, const cs_state *s) {
 }
 
 double cs_energy_total(const cs_energy *e) {
-    return e->vehicle_kinetic + e->vehicle_potential + e->cable_elastic + e->cable_plastic + e->post_elastic +
-           e->post_kinetic + e->post_plastic + e->post_damping + e->anchor_elastic + e->anchor_kinetic +
-           e->rail_elastic + e->rail_plastic + e->soil + e->crush + e->friction + e->released;
+    double sum = 0.0;
+    for (int k = 0; k < CS_ENERGY_TERMS; k++)
+        sum += cs_energy_term(e, k);
+    return sum;
 }
 
 void cs_energy_update(const cs_model *model, cs_state *s) {
@@ -57,4 +58,22 @@ void cs_energy_update(const cs_model *model, cs_state *s) {
 
 void cs_state_energy(const cs_state *s, cs_energy *out) {
     *out = s->energy;
+}
+
+static const char *const term_names[CS_ENERGY_TERMS] = {
+    "ke",           "pe",           "cable_elastic",  "cable_plastic",  "post_elastic", "post_kinetic",
+    "post_plastic", "post_damping", "anchor_elastic", "anchor_kinetic", "rail_elastic", "rail_plastic",
+    "soil",         "crush",        "friction",       "released"};
+
+const char *cs_energy_term_name(int k) {
+    return k >= 0 && k < CS_ENERGY_TERMS ? term_names[k] : "?";
+}
+
+double cs_energy_term(const cs_energy *e, int k) {
+    const double all[CS_ENERGY_TERMS] = {
+        e->vehicle_kinetic, e->vehicle_potential, e->cable_elastic, e->cable_plastic,  e->post_elastic,
+        e->post_kinetic,    e->post_plastic,      e->post_damping,  e->anchor_elastic, e->anchor_kinetic,
+        e->rail_elastic,    e->rail_plastic,      e->soil,          e->crush,          e->friction,
+        e->released};
+    return k >= 0 && k < CS_ENERGY_TERMS ? all[k] : 0.0;
 }

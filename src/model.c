@@ -219,6 +219,9 @@ static int check_scenario(const cs_scenario_def *s, cs_error *err) {
         return fail(err, "scenario: crush tolerance must be in (0, 1)");
     if (!(s->solver_tolerance > 0.0 && s->solver_tolerance < 0.1))
         return fail(err, "scenario: solver tolerance must be in (0, 0.1)");
+    if (!(s->solve_budget >= 0.0 && s->solve_budget <= 1e6))
+        return fail(err, "scenario: solve budget %.4g must be between 0 (the default) and 1e6 a step",
+                    s->solve_budget);
     if (s->solver_max_sweeps < 1 || s->solver_max_sweeps > 100000)
         return fail(err, "scenario: solver sweeps must be in [1, 100000]");
     if (!non_negative(s->stop_speed)) return fail(err, "scenario: stop speed must be >= 0");
@@ -407,6 +410,8 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
     double xc = centre_x + m->dir[0] * yc / m->dir[1];
     v3_set(m->start_pos, xc - m->dir[0] * vehicle->cg_to_front, yc - m->dir[1] * vehicle->cg_to_front,
            vehicle->cg_height);
+    m->solve_budget = (scenario->solve_budget > 0.0 ? scenario->solve_budget : CS_SOLVE_BUDGET) *
+                      ceil(scenario->t_end / scenario->dt);
     m->window_steps = (int)lround(0.05 / scenario->dt);
     if (m->window_steps < 1) m->window_steps = 1;
     /* each post and cable fails in a few ways, once; slots and hooks let each cable go once per post */

@@ -150,6 +150,8 @@ const char *cs_outcome_name(cs_outcome o) {
         return "underride";
     case CS_NO_CONTACT:
         return "no_contact";
+    case CS_DID_NOT_CONVERGE:
+        return "did_not_converge";
     }
     return "unknown";
 }

@@ -325,8 +325,8 @@ static void count_warning(const cs_model *model, cs_state *s) {
         s->summary.max_solver_residual = s->work->solver_residual;
 }
 
-/* Guards: no NaN or Inf anywhere, and no energy created. */
-static cs_status check_numbers(const cs_model *model, cs_state *s, cs_error *err) {
+/* Guards: no NaN or Inf anywhere, and a ledger that closes (before: the ledger at the step's start). */
+static cs_status check_numbers(const cs_model *model, cs_state *s, const cs_energy *before, cs_error *err) {
     for (int i = 0; i < 3; i++)
         if (!isfinite(s->pos[i]) || !isfinite(s->vel[i]) || !isfinite(s->omega[i]) || !isfinite(s->force[i]))
             return unstable(model, s, err, "the vehicle", -1);
@@ -338,15 +338,22 @@ static cs_status check_numbers(const cs_model *model, cs_state *s, cs_error *err
     for (int p = 0; p < model->post_count; p++)
         if (!isfinite(s->posts[p].tilt[0]) || !isfinite(s->posts[p].tilt[1]))
             return unstable(model, s, err, "post", p);
-    if (!isfinite(s->energy.balance_error) || s->energy.balance_error > 0.25) {
+    if (!isfinite(s->energy.balance_error) || fabs(s->energy.balance_error) > CS_LEDGER_FAILURE) {
         s->frozen = 1;
-        if (err) {
+        if (err) { /* the term that moved most this step */
+            int worst = 0;
+            for (int k = 1; k < CS_ENERGY_TERMS; k++)
+                if (fabs(cs_energy_term(&s->energy, k) - cs_energy_term(before, k)) >
+                    fabs(cs_energy_term(&s->energy, worst) - cs_energy_term(before, worst)))
+                    worst = k;
             err->status = CS_ERR_UNSTABLE;
             snprintf(
                 err->message, sizeof err->message,
-                "t = %.4f s: the energy ledger grew by %.1f%% of the initial kinetic energy; reduce the time "
-                "step (now %.3g ms)",
-                s->t, 100.0 * s->energy.balance_error, model->scenario.dt * 1e3);
+                "t = %.4f s: the energy ledger is off by %+.1f%% of the initial kinetic energy (over the "
+                "%.0f%% a run may be; the term that moved most this step: %s, %+.3g kJ): the state no "
+                "longer follows the physics (docs/robustness.md)",
+                s->t, 100.0 * s->energy.balance_error, 100.0 * CS_LEDGER_FAILURE, cs_energy_term_name(worst),
+                (cs_energy_term(&s->energy, worst) - cs_energy_term(before, worst)) / 1e3);
         }
         return CS_ERR_UNSTABLE;
     }
@@ -358,11 +365,14 @@ cs_status cs_step(const cs_model *model, cs_state *s, cs_error *err) {
     if (s->frozen || s->outcome != CS_RUNNING) return CS_OK;
     s->t += model->scenario.dt;
     s->step++;
+    cs_energy before = s->energy;
     follow_path(model, s); /* 1-6. the vehicle moves, the barrier follows and pushes back */
     count_warning(model, s);
     cs_energy_update(model, s);   /* 7. the ledger */
     cs_response_update(model, s); /* 8. response parameters, end of the run */
-    return check_numbers(model, s, err);
+    if (s->outcome == CS_RUNNING && (double)s->work->count.solves > model->solve_budget)
+        cs_response_give_up(model, s); /* bounded effort: a run that cannot follow its path ends */
+    return check_numbers(model, s, &before, err);
 }
 
 cs_status cs_run(const cs_model *model, cs_state *s, cs_output_fn on_output, void *user, cs_error *err) {

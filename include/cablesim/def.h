@@ -198,6 +198,8 @@ typedef struct cs_scenario_def {
     double crush_tolerance;  /* relative change of face force that ends the crush iteration (paper: 0.05) */
     double solver_tolerance; /* relative residual of the quasi-static barrier solve */
     int solver_max_sweeps;   /* cap on Gauss-Seidel sweeps of the barrier solve in one step */
+    double solve_budget;     /* barrier solves a run may make, per step to t_end on average (0: 20); past
+                                it the run ends "did not converge" with what it has */
     double stop_speed;       /* forward speed below which the vehicle counts as stopped, m/s */
     double gravity;          /* m/s^2 */
 } cs_scenario_def;

@@ -55,10 +55,11 @@ typedef enum cs_outcome {
     CS_STOPPED,      /* the vehicle's forward speed fell to the stop speed */
     CS_BREAKTHROUGH, /* the vehicle is past the barrier line with no cable holding it */
     CS_TIME_LIMIT,
-    CS_REDIRECTED, /* the vehicle left the barrier on the traffic side, moving away from it */
-    CS_OVERRIDE,   /* it rode over every cable it met (none broke) and went past the barrier line */
-    CS_UNDERRIDE,  /* it ran under every cable it met (none broke) and went past the barrier line */
-    CS_NO_CONTACT  /* it never touched the barrier before the time limit */
+    CS_REDIRECTED,      /* the vehicle left the barrier on the traffic side, moving away from it */
+    CS_OVERRIDE,        /* it rode over every cable it met (none broke) and went past the barrier line */
+    CS_UNDERRIDE,       /* it ran under every cable it met (none broke) and went past the barrier line */
+    CS_NO_CONTACT,      /* it never touched the barrier before the time limit */
+    CS_DID_NOT_CONVERGE /* the barrier's solves took more than the run's budget (scenario.solve_budget) */
 } cs_outcome;
 
 /* Whether a run that ended so has an exit speed and angle (it got through or was redirected). */
@@ -218,6 +219,16 @@ typedef struct cs_energy {
 } cs_energy;
 
 void cs_state_energy(const cs_state *state, cs_energy *out);
+/* The ledger's terms in the order of cs_energy, vehicle_kinetic to released: a short name of each ("ke",
+ * "pe", "cable_elastic", ...) and its value, J. */
+enum { CS_ENERGY_TERMS = 16 };
+const char *cs_energy_term_name(int term);
+double cs_energy_term(const cs_energy *energy, int term);
+/* A run's ledger closes when its balance error stays within CS_LEDGER_WARNING of the initial kinetic
+ * energy (beyond it the run is flagged); one that goes past CS_LEDGER_FAILURE stops with an error naming
+ * the term that moved most in the step (docs/robustness.md). */
+#define CS_LEDGER_WARNING 0.01
+#define CS_LEDGER_FAILURE 0.05
 
 /* Response parameters, updated every step. */
 typedef struct cs_summary {

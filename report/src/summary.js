@@ -21,6 +21,7 @@ const OUTCOME = {
   override: { word: 'Rode over', cls: 'bad' },
   underride: { word: 'Ran under', cls: 'bad' },
   no_contact: { word: 'Never touched', cls: 'neutral' },
+  did_not_converge: { word: 'Did not converge', cls: 'warn' },
   time_limit: { word: 'Time limit reached', cls: 'neutral' },
   running: { word: 'Did not finish', cls: 'neutral' },
 };

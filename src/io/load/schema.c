@@ -301,6 +301,9 @@ static const cs_field scenario_fields[] = {
     SC("crush_tolerance", CS_Q_NUMBER, CS_POS, crush_tolerance,
        "relative change that ends the crush iteration"),
     SC("solver_tolerance", CS_Q_NUMBER, CS_POS, solver_tolerance, "relative residual of the barrier solve"),
+    SC("solve_budget", CS_Q_NUMBER, CS_POS, solve_budget,
+       "barrier solves a run may make, per step to t_end on average (default 20); past it the run ends "
+       "did_not_converge"),
     {"solver_max_sweeps", CS_F_INT, CS_Q_NUMBER, CS_POS, (long)offsetof(cs_scenario_def, solver_max_sweeps),
      NULL, NULL, "cap on the barrier solve's sweeps in one step"},
     SC("stop_speed", CS_Q_SPEED, CS_NONNEG, stop_speed, "forward speed below which the vehicle has stopped"),

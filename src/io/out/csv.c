@@ -14,34 +14,6 @@ void cs_w_num(cs_wout *w, double v, const char *what) {
     fprintf(w->f, "%.10g", v);
 }
 
-static const char *const energy_names[] = {"ke_j",
-                                           "pe_j",
-                                           "cable_elastic_j",
-                                           "cable_plastic_j",
-                                           "post_elastic_j",
-                                           "post_kinetic_j",
-                                           "post_plastic_j",
-                                           "post_damping_j",
-                                           "anchor_elastic_j",
-                                           "anchor_kinetic_j",
-                                           "rail_elastic_j",
-                                           "rail_plastic_j",
-                                           "soil_j",
-                                           "crush_j",
-                                           "friction_j",
-                                           "released_j",
-                                           "energy_balance_error"};
-enum { ENERGY_TERMS = sizeof energy_names / sizeof energy_names[0] };
-
-static void energy_values(const cs_energy *e, double v[ENERGY_TERMS]) {
-    const double all[ENERGY_TERMS] = {
-        e->vehicle_kinetic, e->vehicle_potential, e->cable_elastic, e->cable_plastic,  e->post_elastic,
-        e->post_kinetic,    e->post_plastic,      e->post_damping,  e->anchor_elastic, e->anchor_kinetic,
-        e->rail_elastic,    e->rail_plastic,      e->soil,          e->crush,          e->friction,
-        e->released,        e->balance_error};
-    memcpy(v, all, sizeof all);
-}
-
 int cs_write_timeseries(FILE *f, const cs_record *rec, char *why, size_t why_size) {
     fprintf(f, "t_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,ax_mps2,ay_mps2,az_mps2,roll_rad,pitch_rad,yaw_rad,"
                "forward_speed_mps,decel_50ms_g,crush_m,face_force_n,penetration_m");
@@ -51,8 +23,9 @@ int cs_write_timeseries(FILE *f, const cs_record *rec, char *why, size_t why_siz
         fprintf(f, ",post%d_state,post%d_tilt_rad", p, p);
     for (int a = 0; a < 2; a++)
         fprintf(f, ",anchor%d_state,anchor%d_displacement_m,anchor%d_force_n", a, a, a);
-    for (size_t k = 0; k < sizeof energy_names / sizeof energy_names[0]; k++)
-        fprintf(f, ",%s", energy_names[k]);
+    for (int k = 0; k < CS_ENERGY_TERMS; k++)
+        fprintf(f, ",%s_j", cs_energy_term_name(k));
+    fprintf(f, ",energy_balance_error");
     fputc('\n', f);
     cs_wout w = {f, 0, ""};
     char what[96];
@@ -102,12 +75,12 @@ int cs_write_timeseries(FILE *f, const cs_record *rec, char *why, size_t why_siz
             fputc(',', f);
             cs_w_num(&w, hypot(av->force[0], av->force[1]), what);
         }
-        double e[ENERGY_TERMS];
-        energy_values(&rec->energy[i], e);
         snprintf(what, sizeof what, "the energy ledger at t = %g s", v->t);
-        for (int k = 0; k < ENERGY_TERMS; k++) {
+        for (int k = 0; k <= CS_ENERGY_TERMS; k++) { /* the terms, then the balance error */
             fputc(',', f);
-            cs_w_num(&w, e[k], what);
+            cs_w_num(&w,
+                     k < CS_ENERGY_TERMS ? cs_energy_term(&rec->energy[i], k) : rec->energy[i].balance_error,
+                     what);
         }
         fputc('\n', f);
     }

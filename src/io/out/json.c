@@ -194,6 +194,8 @@ int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_model *mod
     jnum(&w, &first, "max_cable_tension_n", s.max_cable_tension);
     jnum(&w, &first, "initial_kinetic_energy_j", s.initial_kinetic_energy);
     jnum(&w, &first, "energy_balance_error", s.energy_balance_error);
+    jkey(&w, &first, "energy_balance_warning");
+    fputs(fabs(s.energy_balance_error) > CS_LEDGER_WARNING ? "true" : "false", f);
     jarray(&w, &first, "final_position_m", s.final_position, 3);
     jkey(&w, &first, "solver_warnings");
     fprintf(f, "%d", s.solver_warnings);

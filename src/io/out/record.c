@@ -3,16 +3,50 @@
 #include <stdlib.h>
 #include <string.h>
 
+static size_t frame_bytes(const cs_record *rec) {
+    size_t nc = (size_t)rec->cable_count, np = (size_t)rec->post_count, nn = (size_t)rec->max_nodes;
+    return sizeof(cs_vehicle_view) + sizeof(cs_energy) + nc * sizeof(cs_cable_view) +
+           np * sizeof(cs_post_view) + 2 * sizeof(cs_anchor_view) +
+           nc * (sizeof(int) + nn * 4 * sizeof(double));
+}
+
 int cs_record_init(cs_record *rec, const cs_model *model) {
     memset(rec, 0, sizeof *rec);
     rec->cable_count = cs_model_cable_count(model);
     rec->post_count = cs_model_post_count(model);
-    rec->max_nodes = rec->post_count + 4; /* two anchors, every post, two face corners */
+    rec->max_nodes = rec->post_count + 6; /* two anchors, every post, the vehicle's four corners */
+    double frames = CS_RECORD_BYTES / (double)frame_bytes(rec);
+    rec->max_frames = frames < 64.0 ? 64 : (frames > 1e8 ? 100000000 : (int)frames);
+    rec->stride = 1;
     return 0;
+}
+
+/* Frame `to` becomes a copy of frame `from`. */
+static void move_frame(cs_record *rec, int to, int from) {
+    size_t nc = (size_t)rec->cable_count, np = (size_t)rec->post_count, nn = (size_t)rec->max_nodes;
+    size_t t = (size_t)to, f = (size_t)from;
+    rec->vehicle[t] = rec->vehicle[f];
+    rec->energy[t] = rec->energy[f];
+    memmove(rec->cables + t * nc, rec->cables + f * nc, nc * sizeof *rec->cables);
+    memmove(rec->posts + t * np, rec->posts + f * np, np * sizeof *rec->posts);
+    memmove(rec->anchors + t * 2, rec->anchors + f * 2, 2 * sizeof *rec->anchors);
+    memmove(rec->path_count + t * nc, rec->path_count + f * nc, nc * sizeof *rec->path_count);
+    memmove(rec->path_xyz + t * nc * nn * 3, rec->path_xyz + f * nc * nn * 3, nc * nn * 3 * sizeof(double));
+    memmove(rec->path_tension + t * nc * nn, rec->path_tension + f * nc * nn, nc * nn * sizeof(double));
+}
+
+/* Full: keep frames 0, 2, 4, ... and record every other output from now on. */
+static void thin(cs_record *rec) {
+    int kept = 0;
+    for (int f = 0; f < rec->frame_count; f += 2)
+        move_frame(rec, kept++, f);
+    rec->frame_count = kept;
+    rec->stride *= 2;
 }
 
 static int grow(cs_record *rec) {
     int cap = rec->capacity ? 2 * rec->capacity : 256;
+    if (cap > rec->max_frames) cap = rec->max_frames;
     size_t nc = (size_t)rec->cable_count, np = (size_t)rec->post_count, nn = (size_t)rec->max_nodes;
     void *p;
 #define CS_GROW(field, count)                                                                                \
@@ -35,6 +69,11 @@ static int grow(cs_record *rec) {
 void cs_record_frame(const cs_model *model, const cs_state *state, void *user) {
     cs_record *rec = user;
     if (rec->failed) return;
+    cs_summary sm;
+    cs_state_summary(state, &sm);
+    int last = sm.outcome != CS_RUNNING;
+    if (rec->calls++ % rec->stride != 0 && !last) return;
+    if (rec->frame_count == rec->max_frames) thin(rec);
     if (rec->frame_count == rec->capacity && grow(rec) != 0) {
         rec->failed = 1;
         return;

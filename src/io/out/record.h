@@ -1,9 +1,14 @@
 /* A run's recorded frames, collected through cs_run's output callback; the input of every writer
- * (CSV, JSON, plots, report). Growing the arrays happens here, outside the engine's step. */
+ * (CSV, JSON, plots, report). Growing the arrays happens here, outside the engine's step. The record
+ * holds at most CS_RECORD_BYTES: when it is full it keeps every other frame and records every other
+ * output from then on (the last frame, the run's end, is always kept), so a long run's memory is bounded
+ * by the model, not by the run. */
 #ifndef CS_RECORD_H
 #define CS_RECORD_H
 
 #include "cablesim/cablesim.h"
+
+#define CS_RECORD_BYTES (256.0 * 1024 * 1024)
 
 typedef struct cs_record {
     int cable_count;
@@ -12,6 +17,9 @@ typedef struct cs_record {
     int frame_count;
     int capacity;
     int failed;               /* an allocation failed; frames after it were dropped */
+    int max_frames;           /* frames CS_RECORD_BYTES holds */
+    long stride;              /* outputs per frame kept (1, doubled each time the record fills) */
+    long calls;               /* outputs offered so far */
     cs_vehicle_view *vehicle; /* [frame] */
     cs_energy *energy;        /* [frame] */
     cs_cable_view *cables;    /* [frame * cable_count + c] */

@@ -20,6 +20,11 @@ void cs_write_report(FILE *f, const cs_model_input *in, const cs_model *model, c
                 s.exit_speed, s.exit_speed / MPH);
     else if (s.outcome == CS_NO_CONTACT)
         fprintf(f, "the vehicle never touched the barrier (t = %.3f s)\n", s.t);
+    else if (s.outcome == CS_DID_NOT_CONVERGE)
+        fprintf(f,
+                "the run did not converge: its barrier solves used up their budget at t = %.3f s "
+                "(scenario.solve_budget); what it reached is below\n",
+                s.t);
     else if (s.outcome == CS_REDIRECTED)
         fprintf(f, "the vehicle was redirected, exit speed %.2f m/s (%.1f mph, %.1f km/h) at %.1f deg\n",
                 s.exit_speed, s.exit_speed / MPH, s.exit_speed * 3.6,
@@ -56,7 +61,10 @@ void cs_write_report(FILE *f, const cs_model_input *in, const cs_model *model, c
     }
     fprintf(f, "  kinetic energy       %.1f kJ (%.0f ft-kip)\n", s.initial_kinetic_energy / 1e3,
             s.initial_kinetic_energy / (KIP * FT));
-    fprintf(f, "  energy balance error %.3f %%\n", 100 * s.energy_balance_error);
+    fprintf(f, "  energy balance error %.3f %%%s\n", 100 * s.energy_balance_error,
+            fabs(s.energy_balance_error) > CS_LEDGER_WARNING
+                ? " (WARNING: over 1%, the ledger does not close: docs/robustness.md)"
+                : "");
     if (s.solver_warnings)
         fprintf(f, "  solver warnings      %d steps (largest residual %.2g)\n", s.solver_warnings,
                 s.max_solver_residual);

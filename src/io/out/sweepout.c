@@ -319,16 +319,17 @@ static int make_summary(summary *s, const cs_sweep_spec *spec, const double *x, 
         else
             s->failed++;
     }
-    static const cs_outcome outcomes[] = {CS_STOPPED,    CS_BREAKTHROUGH, CS_OVERRIDE,  CS_UNDERRIDE,
-                                          CS_REDIRECTED, CS_TIME_LIMIT,   CS_NO_CONTACT};
+    static const cs_outcome outcomes[] = {CS_STOPPED,    CS_BREAKTHROUGH, CS_OVERRIDE,   CS_UNDERRIDE,
+                                          CS_REDIRECTED, CS_TIME_LIMIT,   CS_NO_CONTACT, CS_DID_NOT_CONVERGE};
     static const char *const outcome_labels[] = {"stopped",
                                                  "breakthrough",
                                                  "rode over the cables",
                                                  "ran under the cables",
                                                  "redirected",
                                                  "time limit reached (still moving)",
-                                                 "never touched the barrier"};
-    for (int o = 0; o < 7; o++) {
+                                                 "never touched the barrier",
+                                                 "did not converge (solve budget used up)"};
+    for (int o = 0; o < 8; o++) {
         long c = 0;
         for (long i = 0; i < s->ok; i++)
             c += r[ok[i]].summary.outcome == outcomes[o];
