@@ -43,6 +43,7 @@ static int setup(void **state) {
                                 .t_max_decel = 0.125,
                                 .max_dynamic_penetration = 1.2345678901234567,
                                 .max_barrier_deflection = 2.25,
+                                .working_width = 2.625,
                                 .stop_time = 0.4375,
                                 .exit_speed = 7,
                                 .first_contact_time = 0.003,
@@ -60,6 +61,7 @@ static int setup(void **state) {
     cs_summary *b = &r[1].summary;
     *b = r[0].summary;
     b->outcome = CS_BREAKTHROUGH, b->exit_speed = 13.75, b->first_contact_time = -1;
+    b->exit_angle = 0.25 * 3.14159265358979323846 / 2, b->working_width = 5.5; /* 22.5 degrees */
     b->max_decel_50ms_g = 2.875, b->max_dynamic_penetration = 4.03125, b->max_cable_tension = 1.5e6;
     b->energy_balance_error = 0, b->posts_failed_left = 0, b->cables_broken = 2;
     r[1].event_counts[CS_EVENT_CABLE_BREAK] = 2;
@@ -92,19 +94,21 @@ static void test_runs_csv(void **state) {
     fclose(out);
     const char *want =
         "run,barrier.cables[0].pretension [N],vehicle,outcome,astm_f2656,time_reached [s],max_50ms_decel [g],"
-        "t_max_50ms_decel [s],max_dynamic_penetration [m],max_barrier_deflection [m],stop_time [s],"
-        "exit_speed [m/s],first_contact_time [s],posts_failed_left,posts_failed_right,cables_broken,"
+        "t_max_50ms_decel [s],max_dynamic_penetration [m],max_barrier_deflection [m],working_width [m],"
+        "stop_time [s],exit_speed [m/s],exit_angle [deg],first_contact_time "
+        "[s],posts_failed_left,posts_failed_right,cables_broken,"
         "max_cable_tension [N],initial_kinetic_energy [J],energy_balance_error [1],solver_warnings,"
         "max_solver_residual [1],final_x [m],final_y [m],final_z [m],events_cable_break,"
         "events_termination_break,events_post_hinge,events_post_rotation_limit,events_post_shear,"
         "events_post_pullout,events_footing_rotation,events_anchor_pullout,events_anchor_yield,events_"
         "override,"
         "events_underride,events_cable_release,error\n"
-        "0,17792.886461,SD-STD-02.01,stopped,M40/P2,0.5,3.25,0.125,1.23456789,2.25,0.4375,,0.003,2,3,0,"
+        "0,17792.886461,SD-STD-02.01,stopped,M40/"
+        "P2,0.5,3.25,0.125,1.23456789,2.25,2.625,0.4375,,,0.003,2,3,0,"
         "38621.24685,1087776.709,-4.259510776e-05,1,0.002394143186,20.5,-3.25,1,0,0,2,0,0,0,0,0,0,0,0,0,\n"
-        "1,17792.886461,PU,breakthrough,PU40/P4,0.5,2.875,0.125,4.03125,2.25,,13.75,,0,3,2,1500000,"
+        "1,17792.886461,PU,breakthrough,PU40/P4,0.5,2.875,0.125,4.03125,2.25,5.5,,13.75,22.5,,0,3,2,1500000,"
         "1087776.709,0,1,0.002394143186,20.5,-3.25,1,2,0,0,0,0,0,0,0,0,0,1,0,\n"
-        "2,22241.1080763,SD-STD-02.01,failed,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"the solve \"\"diverged\"\", "
+        "2,22241.1080763,SD-STD-02.01,failed,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"the solve \"\"diverged\"\", "
         "at "
         "0.1 s\"\n";
     assert_string_equal(text, want);
@@ -219,6 +223,12 @@ static void test_runs_netcdf(void **state) {
     doubles(id, "exit_speed", v);
     assert_true(v[0] == NC_FILL_DOUBLE && v[1] == 13.75 && v[2] == NC_FILL_DOUBLE);
     assert_string_equal(att(id, var(id, "exit_speed"), "units"), "m/s");
+    doubles(id, "exit_angle", v); /* degrees, as runs.csv */
+    assert_true(v[0] == NC_FILL_DOUBLE && fabs(v[1] - 22.5) < 1e-12 && v[2] == NC_FILL_DOUBLE);
+    assert_string_equal(att(id, var(id, "exit_angle"), "units"), "degree"); /* UDUNITS' name */
+    doubles(id, "working_width", v);
+    assert_true(v[0] == 2.625 && v[1] == 5.5 && v[2] == NC_FILL_DOUBLE);
+    assert_string_equal(att(id, var(id, "working_width"), "units"), "m");
     doubles(id, "first_contact_time", v);
     assert_true(v[0] == 0.003 && v[1] == NC_FILL_DOUBLE && v[2] == NC_FILL_DOUBLE);
     doubles(id, "max_50ms_decel", v);
