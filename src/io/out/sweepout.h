@@ -34,6 +34,10 @@ double cs_sweep_column_number(const cs_sweep_column *c, const cs_sweep_result *r
 /* A run's text in a TEXT column; "" where it has none. */
 const char *cs_sweep_column_text(const cs_sweep_column *c, const cs_sweep_result *r);
 
+/* A path as a name of letters, digits and '_', every run of other characters one '_'
+ * ("barrier.posts[0].yield_stress": barrier_posts_0_yield_stress): runs.nc's names of the inputs. */
+void cs_sweep_name(const char *path, char *name, size_t size);
+
 /* runs.csv: one row per run in run order. Returns 0, or -1 with why filled. */
 int cs_sweep_write_runs(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r, long n,
                         char *why, size_t why_size);
