@@ -1,6 +1,7 @@
 /* A sweep's table of runs from fabricated results (a run that stopped, one that broke through, one that
- * failed, over a numeric and a text input): runs.csv to the byte, and runs.nc read back through the
- * netCDF C API: every value exact, units, fill values where a run has none, the same bytes twice. */
+ * failed, over a numeric and a text input): runs.csv to the byte, runs.nc read back through the netCDF C
+ * API (every value exact, units, fill values where a run has none, the same bytes twice), and the plots
+ * of `plot:` (files, captions, what they draw, a y refused). */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -10,10 +11,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <cairo.h>
 #include <cmocka.h>
 #include <netcdf.h>
 #include <unistd.h>
 
+#include "out/plot.h"
 #include "out/sweepout.h"
 #include "study/sweep.h"
 
@@ -277,10 +280,114 @@ static void test_runs_netcdf(void **state) {
     assert_string_equal(why, "creating the file: No such file or directory");
 }
 
+/* Pixels of a PNG within 3 of an 8-bit colour (cairo's RGB24 is B, G, R in memory). */
+static long pixels_of(const char *path, int r, int g, int b) {
+    cairo_surface_t *s = cairo_image_surface_create_from_png(path);
+    assert_int_equal(cairo_surface_status(s), CAIRO_STATUS_SUCCESS);
+    assert_int_equal(cairo_image_surface_get_width(s), 1200);
+    assert_int_equal(cairo_image_surface_get_height(s), 760);
+    const unsigned char *px = cairo_image_surface_get_data(s);
+    int stride = cairo_image_surface_get_stride(s);
+    long count = 0;
+    for (int y = 0; y < 760; y++)
+        for (int x = 0; x < 1200; x++) {
+            const unsigned char *p = px + (size_t)y * (size_t)stride + 4 * (size_t)x;
+            count += abs(p[2] - r) <= 3 && abs(p[1] - g) <= 3 && abs(p[0] - b) <= 3;
+        }
+    cairo_surface_destroy(s);
+    return count;
+}
+
+/* Draw plot k of the fixture's runs to path. */
+static void draw(const fixture *f, int k, const char *path) {
+    char why[256];
+    FILE *out = fopen(path, "wb");
+    assert_non_null(out);
+    if (cs_sweep_write_plot(out, f->spec, k, f->x, f->r, RUNS, why, sizeof why) != 0) fail_msg("%s", why);
+    assert_int_equal(fclose(out), 0);
+}
+
+/* The plots of the three runs against the pretension, a line per vehicle: their files, captions and
+ * summary.md's lines; the lines in their colours, the run that broke through crossed out, and the cross
+ * gone when it is said to have stopped; a y that runs.csv lacks refused at its place. */
+static void test_plots(void **state) {
+    fixture *f = *state;
+    cs_sweep_spec *s = f->spec;
+    assert_non_null(s->plots = calloc(2, sizeof *s->plots));
+    s->plot_count = 2;
+    s->plots[0] = (cs_sweep_plot){12, 5, 0, 1, strdup("max_dynamic_penetration"), 13, 8, "png"};
+    s->plots[1] = (cs_sweep_plot){15, 5, 0, 1, strdup("exit_speed"), 16, 8, "svg"};
+    assert_int_equal(cs_sweep_plots_check(s), 0);
+    char file[256], caption[1000];
+    cs_sweep_plot_file(s, 0, file, sizeof file);
+    assert_string_equal(file, "plots/max_dynamic_penetration-vs-pretension.png");
+    cs_sweep_plot_file(s, 1, file, sizeof file);
+    assert_string_equal(file, "plots/exit_speed-vs-pretension.svg");
+    cs_sweep_plot_caption(s, 0, f->r, RUNS, caption, sizeof caption);
+    assert_string_equal(caption,
+                        "max_dynamic_penetration against barrier.cables[0].pretension, a line per vehicle: "
+                        "2 of 3 runs shown, 1 broke through (marked with a cross); left out: 1 that did "
+                        "not run to the end");
+    cs_sweep_plot_caption(s, 1, f->r, RUNS, caption, sizeof caption);
+    assert_string_equal(caption,
+                        "exit_speed against barrier.cables[0].pretension, a line per vehicle: 1 of 3 runs "
+                        "shown, 1 broke through (marked with a cross); left out: 1 that did not run to "
+                        "the end, 1 with no exit_speed");
+    char *text = NULL, why[256];
+    size_t size = 0;
+    FILE *md = open_memstream(&text, &size);
+    assert_non_null(md);
+    assert_int_equal(cs_sweep_write_summary_md(md, s, f->x, f->r, RUNS, why, sizeof why), 0);
+    fclose(md);
+    assert_non_null(strstr(text,
+                           "\n## Plots\n\n- `plots/max_dynamic_penetration-vs-pretension.png`: "
+                           "max_dynamic_penetration against barrier.cables[0].pretension, a line per "
+                           "vehicle: 2 of 3 runs shown, 1 broke through (marked with a cross); left out: 1 "
+                           "that did not run to the end.\n- `plots/exit_speed-vs-pretension.svg`: "));
+    free(text);
+
+    char dir[] = "/tmp/cs-plots-XXXXXX", png[64], svg[64];
+    assert_non_null(mkdtemp(dir));
+    snprintf(png, sizeof png, "%s/plot.png", dir);
+    snprintf(svg, sizeof svg, "%s/plot.svg", dir);
+    draw(f, 0, png);
+    /* the first vehicle's line (palette 0), the second's (palette 1), the black cross of run 1 */
+    assert_true(pixels_of(png, 31, 120, 181) > 50);
+    assert_true(pixels_of(png, 230, 115, 13) > 30);
+    assert_true(pixels_of(png, 26, 26, 26) > 30);
+    f->r[1].summary.outcome = CS_STOPPED;
+    draw(f, 0, png);
+    assert_int_equal(pixels_of(png, 26, 26, 26), 0);
+    f->r[1].summary.outcome = CS_BREAKTHROUGH;
+    draw(f, 1, svg);
+    size_t n;
+    char *b = slurp(svg, &n);
+    assert_true(n > 1000 && memcmp(b, "<?xml", 5) == 0 && strstr(b, "<svg"));
+    free(b);
+    unlink(png), unlink(svg), rmdir(dir);
+
+    /* a response that runs.csv lacks, a text one: at y's place */
+    free(s->plots[1].y);
+    s->plots[1].y = strdup("max_deflection");
+    free(s->plots[0].y);
+    s->plots[0].y = strdup("outcome");
+    assert_int_equal(cs_sweep_plots_check(s), -1);
+    assert_int_equal(s->error_count, 2);
+    assert_non_null(strstr(s->errors[0],
+                           "tests/sweep/grid.yaml:13:8: plot: y: outcome is text (expected a number "
+                           "column of runs.csv"));
+    assert_non_null(strstr(s->errors[1],
+                           "tests/sweep/grid.yaml:16:8: plot: y: unknown response 'max_deflection' "
+                           "(expected a number column of runs.csv: time_reached, max_50ms_decel,"));
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_runs_csv),
         cmocka_unit_test(test_runs_netcdf),
+        cmocka_unit_test(test_plots),
     };
-    return cmocka_run_group_tests(tests, setup, teardown);
+    int rc = cmocka_run_group_tests(tests, setup, teardown);
+    cs_plot_release();
+    return rc;
 }

@@ -286,6 +286,7 @@ typedef struct stats {
 } stats;
 
 typedef struct summary {
+    const cs_sweep_result *r; /* the runs' results, for the plots' captions */
     long n, ok, bad_model, failed;
     tally *t; /* outcomes, penetration, events, ratings */
     int tally_count;
@@ -319,6 +320,7 @@ static int add_tally(summary *s, const char *name, const char *label, long count
 static int make_summary(summary *s, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
                         long n) {
     memset(s, 0, sizeof *s);
+    s->r = r;
     s->n = n;
     int k = spec->var_count;
     long *ok = malloc((size_t)(n > 0 ? n : 1) * sizeof *ok);
@@ -495,6 +497,13 @@ static void summary_md(FILE *f, const cs_sweep_spec *spec, long n, const summary
             fprintf(f, " |");
         }
         fputc('\n', f);
+    }
+    if (spec->plot_count > 0) fprintf(f, "\n## Plots\n\n");
+    for (int k = 0; k < spec->plot_count; k++) {
+        char file[256], caption[1000];
+        cs_sweep_plot_file(spec, k, file, sizeof file);
+        cs_sweep_plot_caption(spec, k, s->r, n, caption, sizeof caption);
+        fprintf(f, "- `%s`: %s.\n", file, caption);
     }
 }
 
