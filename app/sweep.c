@@ -1,8 +1,8 @@
 /* cablesim sweep: read the spec, make every run's inputs (the same on every rank), share the runs
  * among MPI ranks (run i on rank i mod size) and, within a rank, among OpenMP threads (dynamic, one run
  * at a time), gather the results on rank 0 and write runs.csv, summary.md and summary.json there (and
- * runs.nc when asked). The inputs depend only on the seed and the run index, and each run on nothing
- * else, so the outputs are the same for any thread or rank count. */
+ * runs.nc and the spec's plots when asked). The inputs depend only on the seed and the run index, and
+ * each run on nothing else, so the outputs are the same for any thread or rank count. */
 #define _POSIX_C_SOURCE 200809L
 #include <limits.h>
 #include <stdio.h>
@@ -19,6 +19,7 @@
 #endif
 
 #include "out/outfile.h"
+#include "out/plot.h"
 #include "out/sweepout.h"
 #include "study/sweep.h"
 #include "sweepcmd.h"
@@ -33,7 +34,8 @@ static const char sweep_usage[] =
     "name>). --threads: OpenMP threads per process (default: OMP_NUM_THREADS or the cores, shared among\n"
     "the ranks of a machine). Under MPI (mpirun -n R cablesim-mpi sweep ...) the runs are shared among\n"
     "the R ranks. --runs and --seed replace the spec's; --set, --t-end and --dt apply to every run.\n"
-    "--netcdf (or `netcdf: true` in SPEC) also writes DIR/runs.nc: runs.csv's table as netCDF (CF-1.8).\n";
+    "--netcdf (or `netcdf: true` in SPEC) also writes DIR/runs.nc: runs.csv's table as netCDF (CF-1.8).\n"
+    "SPEC's `plot:` draws a response against a varied value in DIR/plots/<y>-vs-<x>.png (docs/sweep.md).\n";
 
 static double now(void) {
     struct timespec t;
@@ -167,27 +169,37 @@ static int parse_opts(int argc, char **argv, sweep_opts *o, int rank) {
     return o->spec ? 0 : sweep_bad_usage(rank, "no spec file", NULL);
 }
 
+/* runs.csv, summary.md, summary.json, then the plots (files 3 on) and runs.nc, begun on out and renamed
+ * together; nothing is left if one fails. */
 static int write_all(const char *dir, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
                      long n) {
     char why[512] = "";
     cs_outdir out;
     int rc = cs_out_open(&out, dir, why, sizeof why);
     static const char *const names[] = {"runs.csv", "summary.md", "summary.json"};
-    for (int k = 0; rc == 0 && k < 3; k++) {
-        FILE *f = cs_out_begin(&out, names[k], why, sizeof why);
+    if (rc == 0 && spec->plot_count > 0) rc = cs_out_subdir(&out, "plots", why, sizeof why);
+    for (int k = 0; rc == 0 && k < 3 + spec->plot_count; k++) {
+        char name[256];
+        if (k < 3)
+            snprintf(name, sizeof name, "%s", names[k]);
+        else
+            cs_sweep_plot_file(spec, k - 3, name, sizeof name);
+        FILE *f = cs_out_begin(&out, name, why, sizeof why);
         if (!f) {
             rc = -1;
             break;
         }
         rc = k == 0   ? cs_sweep_write_runs(f, spec, x, r, n, why, sizeof why)
              : k == 1 ? cs_sweep_write_summary_md(f, spec, x, r, n, why, sizeof why)
-                      : cs_sweep_write_summary_json(f, spec, x, r, n, why, sizeof why);
+             : k == 2 ? cs_sweep_write_summary_json(f, spec, x, r, n, why, sizeof why)
+                      : cs_sweep_write_plot(f, spec, k - 3, x, r, n, why, sizeof why);
         char end_why[512];
         if (cs_out_end(&out, f, end_why, sizeof end_why) != 0 && rc == 0) {
             snprintf(why, sizeof why, "%s", end_why);
             rc = -1;
         }
     }
+    if (spec->plot_count > 0) cs_plot_release(); /* after the last plot */
     if (rc == 0 && spec->netcdf) {
         char path[1200], nc_why[200];
         rc = cs_out_begin_path(&out, "runs.nc", path, sizeof path, why, sizeof why);
@@ -217,6 +229,7 @@ static cs_sweep_spec *read_spec(const sweep_opts *o, int rank) {
         if (rank == 0) fprintf(stderr, "cablesim sweep: out of memory\n");
         return NULL;
     }
+    cs_sweep_plots_check(spec);
     for (int i = 0; i < o->set_count; i++)
         cs_sweep_spec_add_set(spec, o->sets[i]);
     spec->netcdf |= o->netcdf;
@@ -429,7 +442,13 @@ int cs_sweep_command(int argc, char **argv) {
                    "the end\n",
                    n, wall, wall > 0 ? (double)n / wall : 0, size, size == 1 ? "" : "s", threads,
                    threads == 1 ? "" : "s", bad);
-            printf("outputs: %s/{runs.csv,summary.md,summary.json%s}\n", dir, spec->netcdf ? ",runs.nc" : "");
+            printf("outputs: %s/{runs.csv,summary.md,summary.json%s", dir, spec->netcdf ? ",runs.nc" : "");
+            for (int k = 0; k < spec->plot_count; k++) {
+                char file[256];
+                cs_sweep_plot_file(spec, k, file, sizeof file);
+                printf(",%s", file);
+            }
+            printf("}\n");
         }
     }
     free(mine);

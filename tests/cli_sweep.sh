@@ -1,17 +1,19 @@
 #!/usr/bin/env bash
-# cablesim sweep end to end: the same runs.csv (byte for byte) and summaries on 1 and 2 threads, a grid,
-# a Monte Carlo, a Latin hypercube, the outputs' shape, runs.nc (--netcdf or `netcdf: true`: the same bytes
-# on 1 and 2 threads, runs.csv's runs and numbers read back by ncdump, nothing written when it cannot be
-# written), plain progress lines when not on a terminal, `cablesim check` of a spec, and every spec in
-# tests/sweep/bad/ refused with status 2 and exactly the problems its "# expect: LINE:COL: text" lines
-# name. The runs are 10 ms long so the suite stays fast.
+# cablesim sweep end to end: the same runs.csv (byte for byte), summaries and plots on 1 and 2 threads, a
+# grid, a Monte Carlo, a Latin hypercube, the outputs' shape, runs.nc (--netcdf or `netcdf: true`: the same
+# bytes on 1 and 2 threads, runs.csv's runs and numbers read back by ncdump, nothing written when it cannot
+# be written), the plots of `plot:` (a grid's lines as PNG and SVG, a Monte Carlo's points as PDF, named in
+# summary.md and on the outputs line, nothing written when one cannot be written), plain progress lines
+# when not on a terminal, `cablesim check` of a spec, and every spec in tests/sweep/bad/ refused with
+# status 2 and exactly the problems its "# expect: LINE:COL: text" lines name. The runs are 10 to 20 ms
+# long so the suite stays fast.
 source "$(dirname "$0")/lib.sh"
 
 check "sweep --help" '"$cs" sweep --help | grep -q "usage: cablesim sweep SPEC.yaml"'
 "$cs" sweep >/dev/null 2>&1
 check "sweep without a spec is status 2" '[ $? -eq 2 ]'
 
-for spec in lhs grid mc; do
+for spec in lhs grid mc plot; do
     for t in 1 2; do
         "$cs" sweep "tests/sweep/$spec.yaml" -o "$tmp/$spec-$t" --threads "$t" >"$tmp/$spec-$t.out" 2>"$tmp/$spec-$t.err"
         check "$spec on $t threads exits 0" '[ $? -eq 0 ] || { cat "$tmp/$spec-$t.err"; false; }'
@@ -36,6 +38,28 @@ check "summary.md: outcome table" 'grep -q "^| penetration > 1 m (or breakthroug
 check "grid: 3 x 2 runs, last variable fastest" '[ "$(cut -d, -f3 "$tmp/grid-1/runs.csv" | tail -n +2 | tr "\n" " ")" = "SD-STD-02.01 PU SD-STD-02.01 PU SD-STD-02.01 PU " ]'
 check "grid: the PU run is rated as a PU" 'grep -q ",PU,time_limit,PU40/P1," "$tmp/grid-1/runs.csv"'
 check "grid: a text input has no Spearman" 'grep -q "\"vehicle\":null" "$tmp/grid-1/summary.json"'
+
+# plots: tests/sweep/plot.yaml's grid draws deflection (PNG) and exit speed (SVG) against the post spacing,
+# a line per vehicle; a Monte Carlo's plot shows each run as a point (PDF)
+png="$tmp/plot-1/plots/max_barrier_deflection-vs-spacing.png"
+svg="$tmp/plot-1/plots/exit_speed-vs-spacing.svg"
+check "plot: a PNG named y-vs-x" '[ "$(head -c 8 "$png" | od -An -tx1 | tr -d " \n")" = 89504e470d0a1a0a ]'
+check "plot: the PNG is 1200 x 760 and not empty" '[ "$(head -c 24 "$png" | tail -c 8 | od -An -tx1 | tr -d " \n")" = 000004b0000002f8 ] && [ "$(stat -c %s "$png")" -gt 20000 ]'
+check "plot: format svg gives an SVG" 'head -c 200 "$svg" | grep -q "<svg" && tail -c 20 "$svg" | grep -q "</svg>"'
+check "plot: the same plots on 1 and 2 threads" 'cmp "$png" "$tmp/plot-2/plots/max_barrier_deflection-vs-spacing.png" && cmp "$svg" "$tmp/plot-2/plots/exit_speed-vs-spacing.svg"'
+check "plot: only the plots asked for" '[ "$(ls "$tmp/plot-1/plots" | tr "\n" " ")" = "exit_speed-vs-spacing.svg max_barrier_deflection-vs-spacing.png " ] && [ ! -e "$tmp/grid-1/plots" ]'
+check "plot: summary.md names each plot, what it shows and what it leaves out" 'grep -qxF -- "- \`plots/max_barrier_deflection-vs-spacing.png\`: max_barrier_deflection against barrier.posts[0].spacing, a line per vehicle: 6 of 6 runs shown, 0 broke through (marked with a cross); left out: 0 that did not run to the end." "$tmp/plot-1/summary.md" && grep -qxF -- "- \`plots/exit_speed-vs-spacing.svg\`: exit_speed against barrier.posts[0].spacing, a line per vehicle: 0 of 6 runs shown, 0 broke through (marked with a cross); left out: 0 that did not run to the end, 6 with no exit_speed." "$tmp/plot-1/summary.md"'
+check "plot: the outputs line names the plots" 'grep -qxF "outputs: $tmp/plot-1/{runs.csv,summary.md,summary.json,plots/max_barrier_deflection-vs-spacing.png,plots/exit_speed-vs-spacing.svg}" "$tmp/plot-1.out"'
+check "plot: the runs are the grid's, spacing slowest" '[ "$(cut -d, -f2,3 "$tmp/plot-1/runs.csv" | tail -n +2 | tr "\n" " ")" = "4,2270P 4,1100C 2,2270P 2,1100C 6,2270P 6,1100C " ]'
+sed "s|^model: .*|model: $PWD/examples/aps3.yaml|" tests/sweep/mc.yaml >"$tmp/mc-plot.yaml"
+printf 'plot:\n  x: scenario.impact_x\n  y: max_cable_tension\n  format: pdf\n' >>"$tmp/mc-plot.yaml"
+"$cs" sweep "$tmp/mc-plot.yaml" -o "$tmp/mc-plot" --quiet >"$tmp/mc-plot.out" 2>&1
+check "plot: a Monte Carlo's plot exits 0" '[ $? -eq 0 ] || { cat "$tmp/mc-plot.out"; false; }'
+check "plot: a Monte Carlo's runs as points, in a PDF" '[ "$(head -c 5 "$tmp/mc-plot/plots/max_cable_tension-vs-impact_x.pdf")" = "%PDF-" ] && grep -qF "max_cable_tension against scenario.impact_x, each run a point: 6 of 6 runs shown" "$tmp/mc-plot/summary.md"'
+check "plot: the runs are the same with a plot" 'cmp "$tmp/mc-plot/runs.csv" "$tmp/mc-1/runs.csv"'
+mkdir -p "$tmp/plot-fail/plots/max_barrier_deflection-vs-spacing.png.tmp"
+out=$("$cs" sweep tests/sweep/plot.yaml -o "$tmp/plot-fail" --quiet 2>&1)
+check "a plot that cannot be written: status 1, why, nothing written" '[ $? -eq 1 ] && grep -q "nothing written: .*/plots/max_barrier_deflection-vs-spacing.png.tmp: Is a directory" <<<"$out" && [ "$(ls -A "$tmp/plot-fail")" = plots ] && [ "$(ls -A "$tmp/plot-fail/plots")" = max_barrier_deflection-vs-spacing.png.tmp ]'
 
 # runs.nc: one variable of it, a value a line, at full precision
 nc_column() { ncdump -p 9,17 -v "$2" "$1" | sed -n "/^ $2 = /,/;/p" | sed "s/^ $2 = //; s/;//" | tr ',' '\n' | tr -d ' ' | grep -v '^$'; }
@@ -67,6 +91,8 @@ check "--runs on a grid is refused" '! "$cs" sweep tests/sweep/grid.yaml -o "$tm
 check "check a spec" '"$cs" check tests/sweep/lhs.yaml | grep -q "tests/sweep/lhs.yaml: a valid sweep spec: Latin hypercube of 4 runs over 3 values"'
 check "check the example spec" '"$cs" check examples/aps3-uncertain.yaml >/dev/null'
 check "check a bad spec" '"$cs" check tests/sweep/bad/bad_level.yaml 2>&1 | grep -q "^tests/sweep/bad/bad_level.yaml:6:42: "'
+check "check a spec with plots" '"$cs" check tests/sweep/plot.yaml | grep -q "a valid sweep spec: grid of 6 runs over 2 values"'
+check "check a bad plot" '"$cs" check tests/sweep/bad/plot_unknown_response.yaml 2>&1 | grep -q "^tests/sweep/bad/plot_unknown_response.yaml:9:6: plot: y: unknown response"'
 
 files=0
 for f in tests/sweep/bad/*.yaml; do

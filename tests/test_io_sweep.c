@@ -219,6 +219,45 @@ static void test_spec(void **state) {
     free(six);
     free(many);
     cs_sweep_spec_free(s);
+
+    /* plots: x and lines by their index among the varied values, y as written, png unless asked */
+    s = read("tests/sweep/plot.yaml");
+    assert_int_equal(s->error_count, 0);
+    assert_int_equal(s->plot_count, 2);
+    assert_string_equal(s->vars[s->plots[0].x].path, "barrier.posts[0].spacing");
+    assert_string_equal(s->vars[s->plots[0].lines].path, "vehicle");
+    assert_string_equal(s->plots[0].y, "max_barrier_deflection");
+    assert_string_equal(s->plots[0].format, "png");
+    assert_true(s->plots[0].line == 12 && s->plots[0].col == 5 && s->plots[0].y_line == 13 &&
+                s->plots[0].y_col == 8);
+    assert_string_equal(s->plots[1].y, "exit_speed");
+    assert_string_equal(s->plots[1].format, "svg");
+    cs_sweep_spec_free(s);
+    /* a Monte Carlo's plot has no lines */
+    s = read("tests/sweep/bad/plot_lines_in_mc.yaml");
+    assert_int_equal(s->error_count, 1);
+    assert_int_equal(s->plot_count, 1);
+    assert_int_equal(s->plots[0].lines, -1);
+    assert_string_equal(s->vars[s->plots[0].x].path, "scenario.speed");
+    cs_sweep_spec_free(s);
+}
+
+/* The level of each variable in each run of a grid: the first slowest, as cs_sweep_samples gives them. */
+static void test_grid_levels(void **state) {
+    (void)state;
+    cs_sweep_spec *s = read("tests/sweep/plot.yaml"); /* 3 spacings x 2 vehicles */
+    long n;
+    double *x = cs_sweep_samples(s, &n);
+    assert_int_equal(n, 6);
+    const int spacing[] = {0, 0, 1, 1, 2, 2}, vehicle[] = {0, 1, 0, 1, 0, 1};
+    for (long i = 0; i < n; i++) {
+        assert_int_equal(cs_sweep_grid_level(s, i, 0), spacing[i]);
+        assert_int_equal(cs_sweep_grid_level(s, i, 1), vehicle[i]);
+        assert_true(x[i * 2] == s->vars[0].levels[spacing[i]] && x[i * 2 + 1] == vehicle[i]);
+    }
+    assert_true(x[0] == 4 && x[2 * 2] == 2 && x[4 * 2] == 6); /* the levels as listed: 4, 2, 6 m */
+    free(x);
+    cs_sweep_spec_free(s);
 }
 
 static void test_spec_errors(void **state) {
@@ -254,6 +293,7 @@ int main(void) {
         cmocka_unit_test(test_normal),      cmocka_unit_test(test_latin_hypercube_strata),
         cmocka_unit_test(test_counter_rng), cmocka_unit_test(test_distributions),
         cmocka_unit_test(test_spec),        cmocka_unit_test(test_spec_errors),
+        cmocka_unit_test(test_grid_levels),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

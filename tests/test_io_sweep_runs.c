@@ -1,6 +1,7 @@
 /* A sweep's table of runs from fabricated results (a run that stopped, one that broke through, one that
- * failed, over a numeric and a text input): runs.csv to the byte, and runs.nc read back through the
- * netCDF C API: every value exact, units, fill values where a run has none, the same bytes twice. */
+ * failed, over a numeric and a text input): runs.csv to the byte, runs.nc read back through the netCDF C
+ * API (every value exact, units, fill values where a run has none, the same bytes twice), and the plots
+ * of `plot:` (files, captions, what they draw, a y refused). */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -10,10 +11,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <cairo.h>
 #include <cmocka.h>
 #include <netcdf.h>
 #include <unistd.h>
 
+#include "out/plot.h"
 #include "out/sweepout.h"
 #include "study/sweep.h"
 
@@ -43,6 +46,7 @@ static int setup(void **state) {
                                 .t_max_decel = 0.125,
                                 .max_dynamic_penetration = 1.2345678901234567,
                                 .max_barrier_deflection = 2.25,
+                                .working_width = 2.625,
                                 .stop_time = 0.4375,
                                 .exit_speed = 7,
                                 .first_contact_time = 0.003,
@@ -60,6 +64,7 @@ static int setup(void **state) {
     cs_summary *b = &r[1].summary;
     *b = r[0].summary;
     b->outcome = CS_BREAKTHROUGH, b->exit_speed = 13.75, b->first_contact_time = -1;
+    b->exit_angle = 0.25 * 3.14159265358979323846 / 2, b->working_width = 5.5; /* 22.5 degrees */
     b->max_decel_50ms_g = 2.875, b->max_dynamic_penetration = 4.03125, b->max_cable_tension = 1.5e6;
     b->energy_balance_error = 0, b->posts_failed_left = 0, b->cables_broken = 2;
     r[1].event_counts[CS_EVENT_CABLE_BREAK] = 2;
@@ -92,19 +97,21 @@ static void test_runs_csv(void **state) {
     fclose(out);
     const char *want =
         "run,barrier.cables[0].pretension [N],vehicle,outcome,astm_f2656,time_reached [s],max_50ms_decel [g],"
-        "t_max_50ms_decel [s],max_dynamic_penetration [m],max_barrier_deflection [m],stop_time [s],"
-        "exit_speed [m/s],first_contact_time [s],posts_failed_left,posts_failed_right,cables_broken,"
+        "t_max_50ms_decel [s],max_dynamic_penetration [m],max_barrier_deflection [m],working_width [m],"
+        "stop_time [s],exit_speed [m/s],exit_angle [deg],first_contact_time "
+        "[s],posts_failed_left,posts_failed_right,cables_broken,"
         "max_cable_tension [N],initial_kinetic_energy [J],energy_balance_error [1],solver_warnings,"
         "max_solver_residual [1],final_x [m],final_y [m],final_z [m],events_cable_break,"
         "events_termination_break,events_post_hinge,events_post_rotation_limit,events_post_shear,"
         "events_post_pullout,events_footing_rotation,events_anchor_pullout,events_anchor_yield,events_"
         "override,"
         "events_underride,events_cable_release,error\n"
-        "0,17792.886461,SD-STD-02.01,stopped,M40/P2,0.5,3.25,0.125,1.23456789,2.25,0.4375,,0.003,2,3,0,"
+        "0,17792.886461,SD-STD-02.01,stopped,M40/"
+        "P2,0.5,3.25,0.125,1.23456789,2.25,2.625,0.4375,,,0.003,2,3,0,"
         "38621.24685,1087776.709,-4.259510776e-05,1,0.002394143186,20.5,-3.25,1,0,0,2,0,0,0,0,0,0,0,0,0,\n"
-        "1,17792.886461,PU,breakthrough,PU40/P4,0.5,2.875,0.125,4.03125,2.25,,13.75,,0,3,2,1500000,"
+        "1,17792.886461,PU,breakthrough,PU40/P4,0.5,2.875,0.125,4.03125,2.25,5.5,,13.75,22.5,,0,3,2,1500000,"
         "1087776.709,0,1,0.002394143186,20.5,-3.25,1,2,0,0,0,0,0,0,0,0,0,1,0,\n"
-        "2,22241.1080763,SD-STD-02.01,failed,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"the solve \"\"diverged\"\", "
+        "2,22241.1080763,SD-STD-02.01,failed,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"the solve \"\"diverged\"\", "
         "at "
         "0.1 s\"\n";
     assert_string_equal(text, want);
@@ -219,6 +226,12 @@ static void test_runs_netcdf(void **state) {
     doubles(id, "exit_speed", v);
     assert_true(v[0] == NC_FILL_DOUBLE && v[1] == 13.75 && v[2] == NC_FILL_DOUBLE);
     assert_string_equal(att(id, var(id, "exit_speed"), "units"), "m/s");
+    doubles(id, "exit_angle", v); /* degrees, as runs.csv */
+    assert_true(v[0] == NC_FILL_DOUBLE && fabs(v[1] - 22.5) < 1e-12 && v[2] == NC_FILL_DOUBLE);
+    assert_string_equal(att(id, var(id, "exit_angle"), "units"), "degree"); /* UDUNITS' name */
+    doubles(id, "working_width", v);
+    assert_true(v[0] == 2.625 && v[1] == 5.5 && v[2] == NC_FILL_DOUBLE);
+    assert_string_equal(att(id, var(id, "working_width"), "units"), "m");
     doubles(id, "first_contact_time", v);
     assert_true(v[0] == 0.003 && v[1] == NC_FILL_DOUBLE && v[2] == NC_FILL_DOUBLE);
     doubles(id, "max_50ms_decel", v);
@@ -267,10 +280,114 @@ static void test_runs_netcdf(void **state) {
     assert_string_equal(why, "creating the file: No such file or directory");
 }
 
+/* Pixels of a PNG within 3 of an 8-bit colour (cairo's RGB24 is B, G, R in memory). */
+static long pixels_of(const char *path, int r, int g, int b) {
+    cairo_surface_t *s = cairo_image_surface_create_from_png(path);
+    assert_int_equal(cairo_surface_status(s), CAIRO_STATUS_SUCCESS);
+    assert_int_equal(cairo_image_surface_get_width(s), 1200);
+    assert_int_equal(cairo_image_surface_get_height(s), 760);
+    const unsigned char *px = cairo_image_surface_get_data(s);
+    int stride = cairo_image_surface_get_stride(s);
+    long count = 0;
+    for (int y = 0; y < 760; y++)
+        for (int x = 0; x < 1200; x++) {
+            const unsigned char *p = px + (size_t)y * (size_t)stride + 4 * (size_t)x;
+            count += abs(p[2] - r) <= 3 && abs(p[1] - g) <= 3 && abs(p[0] - b) <= 3;
+        }
+    cairo_surface_destroy(s);
+    return count;
+}
+
+/* Draw plot k of the fixture's runs to path. */
+static void draw(const fixture *f, int k, const char *path) {
+    char why[256];
+    FILE *out = fopen(path, "wb");
+    assert_non_null(out);
+    if (cs_sweep_write_plot(out, f->spec, k, f->x, f->r, RUNS, why, sizeof why) != 0) fail_msg("%s", why);
+    assert_int_equal(fclose(out), 0);
+}
+
+/* The plots of the three runs against the pretension, a line per vehicle: their files, captions and
+ * summary.md's lines; the lines in their colours, the run that broke through crossed out, and the cross
+ * gone when it is said to have stopped; a y that runs.csv lacks refused at its place. */
+static void test_plots(void **state) {
+    fixture *f = *state;
+    cs_sweep_spec *s = f->spec;
+    assert_non_null(s->plots = calloc(2, sizeof *s->plots));
+    s->plot_count = 2;
+    s->plots[0] = (cs_sweep_plot){12, 5, 0, 1, strdup("max_dynamic_penetration"), 13, 8, "png"};
+    s->plots[1] = (cs_sweep_plot){15, 5, 0, 1, strdup("exit_speed"), 16, 8, "svg"};
+    assert_int_equal(cs_sweep_plots_check(s), 0);
+    char file[256], caption[1000];
+    cs_sweep_plot_file(s, 0, file, sizeof file);
+    assert_string_equal(file, "plots/max_dynamic_penetration-vs-pretension.png");
+    cs_sweep_plot_file(s, 1, file, sizeof file);
+    assert_string_equal(file, "plots/exit_speed-vs-pretension.svg");
+    cs_sweep_plot_caption(s, 0, f->r, RUNS, caption, sizeof caption);
+    assert_string_equal(caption,
+                        "max_dynamic_penetration against barrier.cables[0].pretension, a line per vehicle: "
+                        "2 of 3 runs shown, 1 broke through (marked with a cross); left out: 1 that did "
+                        "not run to the end");
+    cs_sweep_plot_caption(s, 1, f->r, RUNS, caption, sizeof caption);
+    assert_string_equal(caption,
+                        "exit_speed against barrier.cables[0].pretension, a line per vehicle: 1 of 3 runs "
+                        "shown, 1 broke through (marked with a cross); left out: 1 that did not run to "
+                        "the end, 1 with no exit_speed");
+    char *text = NULL, why[256];
+    size_t size = 0;
+    FILE *md = open_memstream(&text, &size);
+    assert_non_null(md);
+    assert_int_equal(cs_sweep_write_summary_md(md, s, f->x, f->r, RUNS, why, sizeof why), 0);
+    fclose(md);
+    assert_non_null(strstr(text,
+                           "\n## Plots\n\n- `plots/max_dynamic_penetration-vs-pretension.png`: "
+                           "max_dynamic_penetration against barrier.cables[0].pretension, a line per "
+                           "vehicle: 2 of 3 runs shown, 1 broke through (marked with a cross); left out: 1 "
+                           "that did not run to the end.\n- `plots/exit_speed-vs-pretension.svg`: "));
+    free(text);
+
+    char dir[] = "/tmp/cs-plots-XXXXXX", png[64], svg[64];
+    assert_non_null(mkdtemp(dir));
+    snprintf(png, sizeof png, "%s/plot.png", dir);
+    snprintf(svg, sizeof svg, "%s/plot.svg", dir);
+    draw(f, 0, png);
+    /* the first vehicle's line (palette 0), the second's (palette 1), the black cross of run 1 */
+    assert_true(pixels_of(png, 31, 120, 181) > 50);
+    assert_true(pixels_of(png, 230, 115, 13) > 30);
+    assert_true(pixels_of(png, 26, 26, 26) > 30);
+    f->r[1].summary.outcome = CS_STOPPED;
+    draw(f, 0, png);
+    assert_int_equal(pixels_of(png, 26, 26, 26), 0);
+    f->r[1].summary.outcome = CS_BREAKTHROUGH;
+    draw(f, 1, svg);
+    size_t n;
+    char *b = slurp(svg, &n);
+    assert_true(n > 1000 && memcmp(b, "<?xml", 5) == 0 && strstr(b, "<svg"));
+    free(b);
+    unlink(png), unlink(svg), rmdir(dir);
+
+    /* a response that runs.csv lacks, a text one: at y's place */
+    free(s->plots[1].y);
+    s->plots[1].y = strdup("max_deflection");
+    free(s->plots[0].y);
+    s->plots[0].y = strdup("outcome");
+    assert_int_equal(cs_sweep_plots_check(s), -1);
+    assert_int_equal(s->error_count, 2);
+    assert_non_null(strstr(s->errors[0],
+                           "tests/sweep/grid.yaml:13:8: plot: y: outcome is text (expected a number "
+                           "column of runs.csv"));
+    assert_non_null(strstr(s->errors[1],
+                           "tests/sweep/grid.yaml:16:8: plot: y: unknown response 'max_deflection' "
+                           "(expected a number column of runs.csv: time_reached, max_50ms_decel,"));
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_runs_csv),
         cmocka_unit_test(test_runs_netcdf),
+        cmocka_unit_test(test_plots),
     };
-    return cmocka_run_group_tests(tests, setup, teardown);
+    int rc = cmocka_run_group_tests(tests, setup, teardown);
+    cs_plot_release();
+    return rc;
 }

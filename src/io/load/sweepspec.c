@@ -1,5 +1,6 @@
 /* The sweep spec: a YAML file read through the loader's YAML tree (yamltree.h), like the model files.
- * The keys of `set` and `vary` are model paths; every value is checked, each error at its line:column. */
+ * The keys of `set` and `vary` are model paths, a plot's x and lines are paths of `vary`; every value is
+ * checked, each error at its line:column. */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
 #include <limits.h>
@@ -61,11 +62,24 @@ void cs_sweep_error(cs_sweep_spec *s, int line, int col, const char *fmt, ...) {
 
 enum { MAX_DEPTH = 32 }; /* how deep a spec's collections may nest: far more than a spec's own */
 
-static const char *const top_keys[] = {"model",         "method", "runs", "seed",
-                                       "vehicle_class", "netcdf", "set",  "vary"};
-enum { TOP_MODEL, TOP_METHOD, TOP_RUNS, TOP_SEED, TOP_CLASS, TOP_NETCDF, TOP_SET, TOP_VARY, TOP_COUNT };
+static const char *const top_keys[] = {"model",  "method", "runs", "seed", "vehicle_class",
+                                       "netcdf", "set",    "vary", "plot"};
+enum {
+    TOP_MODEL,
+    TOP_METHOD,
+    TOP_RUNS,
+    TOP_SEED,
+    TOP_CLASS,
+    TOP_NETCDF,
+    TOP_SET,
+    TOP_VARY,
+    TOP_PLOT,
+    TOP_COUNT
+};
 static const char *const param_keys[] = {"dist", "mean", "sd", "min", "max", "from", "to", "step", "count"};
 enum { P_DIST, P_MEAN, P_SD, P_MIN, P_MAX, P_FROM, P_TO, P_STEP, P_COUNT, P_N };
+static const char *const plot_keys[] = {"x", "y", "lines", "format"};
+enum { PLOT_KEYS = 4 };
 
 /* A scalar's text; NULL for a node that is absent or not a scalar. */
 static const char *text(const cs_ynode *n) {
@@ -92,6 +106,21 @@ static int known_param(const char *key) {
     return -1;
 }
 
+static int known_plot_key(const char *key) {
+    for (int p = 0; p < PLOT_KEYS; p++)
+        if (strcmp(key, plot_keys[p]) == 0) return 1;
+    return 0;
+}
+
+/* `plot:` is one plot (a mapping) or a list of them: how many entries, and entry i. */
+static int plot_entry_count(const cs_ynode *plot) {
+    return !plot ? 0 : plot->kind == CS_Y_MAP ? 1 : plot->kind == CS_Y_SEQ ? plot->count : 0;
+}
+
+static const cs_ynode *plot_entry(const cs_ynode *plot, int i) {
+    return plot->kind == CS_Y_MAP ? plot : plot->kids[i];
+}
+
 int cs_sweep_is_spec(const char *path) {
     cs_ytree tree;
     cs_ytree_read(&tree, path, NULL, 0, MAX_DEPTH); /* what was read before an error counts */
@@ -114,13 +143,14 @@ static int top_read(const cs_ynode *n) {
         k++;
     if (k < TOP_SET) return n->kind == CS_Y_SCALAR;
     if (k == TOP_SET) return scalar_map(n) && n->count > 0;
+    if (k == TOP_PLOT) return n->kind == CS_Y_MAP || n->kind == CS_Y_SEQ;
     return k == TOP_VARY && n->kind == CS_Y_MAP && n->count > 0;
 }
 
 /* A key given twice where its value is read (one of the spec's own values, an entry of `set` or `vary`, a
- * parameter of a `vary` entry) leaves unclear which value is meant: the spec is then read no further than
- * its shapes. Keys repeated where nothing is read (an unknown key, a value whose shape was refused) only
- * have their messages. */
+ * parameter of a `vary` entry, a key of a plot) leaves unclear which value is meant: the spec is then read no
+ * further than its shapes. Keys repeated where nothing is read (an unknown key, a value whose shape was
+ * refused) only have their messages. */
 static int given_twice(const cs_ynode *root) {
     for (int i = 0; i < root->count; i++)
         if (top_read(repeated(root, root->kids[i]))) return 1;
@@ -135,10 +165,50 @@ static int given_twice(const cs_ynode *root) {
             if (p && known_param(p->key) >= 0 && p->kind == CS_Y_SCALAR) return 1;
         }
     }
+    const cs_ynode *plot = cs_ynode_get(root, "plot");
+    for (int i = 0; top_read(plot) && i < plot_entry_count(plot); i++) {
+        const cs_ynode *e = plot_entry(plot, i);
+        for (int q = 0; e->kind == CS_Y_MAP && q < e->count; q++) {
+            const cs_ynode *p = repeated(e, e->kids[q]);
+            if (p && known_plot_key(p->key) && p->kind == CS_Y_SCALAR) return 1;
+        }
+    }
     return 0;
 }
 
 /* ---- shapes ---- */
+
+static void check_plot_shapes(cs_sweep_spec *s, const cs_ynode *n) {
+    int count = plot_entry_count(n);
+    if (n->kind != CS_Y_MAP && n->kind != CS_Y_SEQ) {
+        cs_sweep_error(s, n->line, n->col,
+                       "plot is %s (expected a mapping {x: PATH, y: RESPONSE} or a list of them)",
+                       cs_ykind_name(n->kind));
+        return;
+    }
+    if (count == 0 || count > CS_SWEEP_MAX_PLOTS) {
+        cs_sweep_error(s, n->line, n->col, "plot: %d plots (expected 1 to %d)", count, CS_SWEEP_MAX_PLOTS);
+        return;
+    }
+    for (int i = 0; i < count; i++) {
+        const cs_ynode *e = plot_entry(n, i);
+        if (e->kind != CS_Y_MAP) {
+            cs_sweep_error(s, e->line, e->col,
+                           "plot: an entry is %s (expected a mapping {x: PATH, y: RESPONSE})",
+                           cs_ykind_name(e->kind));
+            continue;
+        }
+        for (int q = 0; q < e->count; q++) {
+            const cs_ynode *p = e->kids[q];
+            if (!known_plot_key(p->key))
+                cs_sweep_error(s, p->key_line, p->key_col,
+                               "plot: unknown key '%s' (expected one of: x, y, lines, format)", p->key);
+            else if (p->kind != CS_Y_SCALAR)
+                cs_sweep_error(s, p->line, p->col, "plot: %s is %s (expected a single value)", p->key,
+                               cs_ykind_name(p->kind));
+        }
+    }
+}
 
 static void check_shapes(cs_sweep_spec *s, const cs_ynode *root) {
     for (int i = 0; i < root->count; i++) {
@@ -149,8 +219,10 @@ static void check_shapes(cs_sweep_spec *s, const cs_ynode *root) {
         if (k == TOP_COUNT) {
             cs_sweep_error(s, n->key_line, n->key_col,
                            "unknown key '%s' (expected one of: model, method, runs, seed, vehicle_class, "
-                           "netcdf, set, vary)",
+                           "netcdf, set, vary, plot)",
                            n->key);
+        } else if (k == TOP_PLOT) {
+            check_plot_shapes(s, n);
         } else if (k < TOP_SET && n->kind != CS_Y_SCALAR) {
             cs_sweep_error(s, n->line, n->col, "%s is %s (expected a single value)", n->key,
                            cs_ykind_name(n->kind));
@@ -602,6 +674,113 @@ static void check_runs(cs_sweep_spec *s, const cs_ynode *root) {
     }
 }
 
+/* ---- plots ---- */
+
+/* The spec's varied paths, for messages: "a, b, c". */
+static void varied_paths(const cs_sweep_spec *s, char *buf, size_t size) {
+    size_t used = 0;
+    buf[0] = '\0';
+    for (int j = 0; j < s->var_count && used < size; j++)
+        used += (size_t)snprintf(buf + used, size - used, "%s%s", j ? ", " : "", s->vars[j].path);
+}
+
+/* A plot's x or lines (key): the index of the varied value it names; -1 if it names none (error
+ * recorded) or one whose path was refused. */
+static int plot_var(cs_sweep_spec *s, const cs_ynode *e, const char *key) {
+    const cs_ynode *n = cs_ynode_get(e, key);
+    char paths[400];
+    varied_paths(s, paths, sizeof paths);
+    if (!n) {
+        cs_sweep_error(s, e->line, e->col, "plot: no %s (expected %s: one of the varied paths: %s)", key, key,
+                       paths);
+        return -1;
+    }
+    for (int j = 0; j < s->var_count; j++) {
+        const cs_sweep_var *v = &s->vars[j];
+        if (strcmp(v->path, n->text) != 0) continue;
+        if (!v->unit) return -1; /* its path was reported */
+        if (!v->numeric && strcmp(key, "x") == 0) {
+            cs_sweep_error(s, n->line, n->col,
+                           "plot: x: %s is text (expected a varied value that is a number)", v->path);
+            return -1;
+        }
+        return j;
+    }
+    cs_sweep_error(s, n->line, n->col, "plot: %s: '%s' is not varied by the spec (expected one of: %s)", key,
+                   n->text, paths);
+    return -1;
+}
+
+/* A plot's lines: a varied value of a grid other than x, with few enough levels for a colour each. */
+static int plot_lines(cs_sweep_spec *s, const cs_ynode *e, int x) {
+    const cs_ynode *n = cs_ynode_get(e, "lines");
+    if (!n) return -1;
+    if (s->method != CS_SWEEP_GRID) {
+        cs_sweep_error(s, n->key_line, n->key_col,
+                       "plot: lines needs method grid (expected no lines with method %s: its runs have no "
+                       "levels, and the plot shows each run as a point)",
+                       s->method == CS_SWEEP_MONTE_CARLO ? "monte_carlo" : "latin_hypercube");
+        return -1;
+    }
+    int j = plot_var(s, e, "lines");
+    if (j >= 0 && j == x) {
+        cs_sweep_error(s, n->line, n->col, "plot: lines: %s is x already (expected another varied value)",
+                       n->text);
+        return -1;
+    }
+    if (j >= 0 && s->vars[j].level_count > CS_SWEEP_MAX_LINES) {
+        cs_sweep_error(s, n->line, n->col,
+                       "plot: lines: %s has %d levels (expected at most %d, a colour each)", n->text,
+                       s->vars[j].level_count, CS_SWEEP_MAX_LINES);
+        return -1;
+    }
+    return j;
+}
+
+static void read_plot(cs_sweep_spec *s, const cs_ynode *e, cs_sweep_plot *p) {
+    p->line = e->line, p->col = e->col;
+    snprintf(p->format, sizeof p->format, "png");
+    p->x = plot_var(s, e, "x");
+    const cs_ynode *y = cs_ynode_get(e, "y"), *format = cs_ynode_get(e, "format");
+    if (!y)
+        cs_sweep_error(s, e->line, e->col,
+                       "plot: no y (expected y: a number column of runs.csv, e.g. max_barrier_deflection)");
+    else if (!(p->y = strdup(y->text)))
+        return;
+    else
+        p->y_line = y->line, p->y_col = y->col;
+    if (format && strcmp(format->text, "png") != 0 && strcmp(format->text, "svg") != 0 &&
+        strcmp(format->text, "pdf") != 0)
+        cs_sweep_error(s, format->line, format->col, "plot: format: '%s' (expected png, svg or pdf)",
+                       format->text);
+    else if (format)
+        snprintf(p->format, sizeof p->format, "%s", format->text);
+    p->lines = plot_lines(s, e, p->x);
+    if (p->x < 0 || (p->lines < 0 && cs_ynode_get(e, "lines")) || s->method != CS_SWEEP_GRID) return;
+    /* a grid's line joins the runs that differ in x alone */
+    for (int j = 0; j < s->var_count; j++)
+        if (j != p->x && j != p->lines) {
+            cs_sweep_error(s, e->line, e->col,
+                           "plot: %s varies too (expected every varied value of a grid as x or lines; fix "
+                           "the others with set:)",
+                           s->vars[j].path);
+            return;
+        }
+}
+
+static void read_plots(cs_sweep_spec *s, const cs_ynode *root) {
+    const cs_ynode *plot = cs_ynode_get(root, "plot");
+    int count = plot_entry_count(plot);
+    if (count == 0 || count > CS_SWEEP_MAX_PLOTS) return; /* reported with the shapes */
+    if (!(s->plots = calloc((size_t)count, sizeof *s->plots))) return;
+    for (int i = 0; i < count; i++) {
+        const cs_ynode *e = plot_entry(plot, i);
+        cs_sweep_plot *p = &s->plots[s->plot_count++];
+        p->x = p->lines = -1;
+        if (scalar_map(e)) read_plot(s, e, p); /* other shapes were reported */
+    }
+}
+
 cs_sweep_spec *cs_sweep_spec_read(const char *path, cs_units *units) {
     cs_sweep_spec *s = calloc(1, sizeof *s);
     if (!s || !(s->file = strdup(path))) {
@@ -640,6 +819,7 @@ cs_sweep_spec *cs_sweep_spec_read(const char *path, cs_units *units) {
                     break;
             read_vary(s, units, root);
             check_runs(s, root);
+            read_plots(s, root);
         }
     }
     cs_ytree_free(&tree);
@@ -659,6 +839,9 @@ void cs_sweep_spec_free(cs_sweep_spec *s) {
         free(v->path);
     }
     free(s->vars);
+    for (int i = 0; i < s->plot_count; i++)
+        free(s->plots[i].y);
+    free(s->plots);
     for (int i = 0; i < s->set_count; i++)
         free(s->sets[i]);
     free(s->sets);

@@ -1,6 +1,6 @@
 /* The sweep spec: a YAML file read through the same tree as the model files (yamltree.h): the base model,
- * the method (full-factorial grid, Monte Carlo, Latin hypercube), the values set for every run and the
- * values varied, each with its place in the file for messages. */
+ * the method (full-factorial grid, Monte Carlo, Latin hypercube), the values set for every run, the
+ * values varied and the plots of the runs, each with its place in the file for messages. */
 #ifndef CS_SWEEPSPEC_H
 #define CS_SWEEPSPEC_H
 
@@ -44,6 +44,19 @@ typedef struct cs_sweep_var {
     char desc[256]; /* how it varies, as the spec says it: "normal: mean 8000 psf, sd 1000 psf" */
 } cs_sweep_var;
 
+enum { CS_SWEEP_MAX_PLOTS = 16, CS_SWEEP_MAX_LINES = 10 };
+
+/* A plot of the runs (`plot:`): a response against a varied value, one line per level of another varied
+ * value (grids), or the runs as points (Monte Carlo, Latin hypercube). */
+typedef struct cs_sweep_plot {
+    int line, col; /* of the plot's mapping */
+    int x;         /* the varied value along x (a number) */
+    int lines;     /* the varied value with a line per level (grids); -1: none */
+    char *y;       /* a number column of runs.csv ("max_barrier_deflection"); out/sweepout.h checks it */
+    int y_line, y_col;
+    char format[4]; /* "png" (the default), "svg" or "pdf" */
+} cs_sweep_plot;
+
 typedef struct cs_sweep_spec {
     char *file;  /* the spec file as given */
     char *model; /* the base model file, relative to the spec's folder (or absolute) */
@@ -58,6 +71,8 @@ typedef struct cs_sweep_spec {
     int *set_line, *set_col;
     int var_count;
     cs_sweep_var *vars;
+    int plot_count;
+    cs_sweep_plot *plots;
     /* errors "file:line:column: what (expected ...)" */
     int error_count, error_capacity;
     char **errors;

@@ -2,12 +2,10 @@
  * marked failure from the events; nothing here recomputes the physics. */
 #include "figures.h"
 
-#include <errno.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 static const double G0 = 9.80665, MPH = 0.44704, FT = 0.3048, KIP = 4448.2216152605,
                     PI = 3.14159265358979323846;
@@ -710,12 +708,8 @@ int cs_figure_write(FILE *f, cs_plot_format format, cs_figure figure, const cs_f
 
 int cs_figures_write(cs_outdir *out, const char *subdir, const cs_plot_format *formats, int format_count,
                      const cs_figure_data *d, char *why, size_t why_size) {
-    char path[1200], name[64];
-    snprintf(path, sizeof path, "%s/%s", out->dir, subdir);
-    if (mkdir(path, 0777) != 0 && errno != EEXIST) {
-        snprintf(why, why_size, "%s: %s", path, strerror(errno));
-        return -1;
-    }
+    char name[128];
+    if (cs_out_subdir(out, subdir, why, why_size) != 0) return -1;
     for (int k = 0; k < CS_FIG_COUNT; k++)
         for (int j = 0; j < format_count; j++) {
             snprintf(name, sizeof name, "%s/%s.%s", subdir, figures[k].name, cs_plot_extension(formats[j]));

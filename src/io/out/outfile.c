@@ -30,10 +30,24 @@ int cs_out_open(cs_outdir *out, const char *dir, char *why, size_t why_size) {
     return 0;
 }
 
+int cs_out_subdir(cs_outdir *out, const char *subdir, char *why, size_t why_size) {
+    char path[1200];
+    snprintf(path, sizeof path, "%s/%s", out->dir, subdir);
+    if (mkdir(path, 0777) != 0 && errno != EEXIST) {
+        snprintf(why, why_size, "%s: %s", path, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
 int cs_out_begin_path(cs_outdir *out, const char *name, char *path, size_t path_size, char *why,
                       size_t why_size) {
     if (out->count == CS_OUT_MAX_FILES) {
         snprintf(why, why_size, "too many output files");
+        return -1;
+    }
+    if (strlen(name) >= sizeof out->names[0]) {
+        snprintf(why, why_size, "%s/%s: output file name too long", out->dir, name);
         return -1;
     }
     snprintf(out->names[out->count], sizeof out->names[0], "%s", name);

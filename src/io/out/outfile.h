@@ -10,12 +10,14 @@ enum { CS_OUT_MAX_FILES = 32 }; /* the three data files and the plots */
 typedef struct cs_outdir {
     char dir[1024];
     int count;
-    char names[CS_OUT_MAX_FILES][64];
+    char names[CS_OUT_MAX_FILES][128];
 } cs_outdir;
 
 /* Create dir (and its parents). Returns 0, or -1 with why filled. */
 int cs_out_open(cs_outdir *out, const char *dir, char *why, size_t why_size);
-/* Start DIR/name.tmp. NULL with why filled on failure. */
+/* Create DIR/subdir, for files named "subdir/...". Returns 0, or -1 with why filled. */
+int cs_out_subdir(cs_outdir *out, const char *subdir, char *why, size_t why_size);
+/* Start DIR/name.tmp. NULL with why filled on failure (also a name longer than names hold). */
 FILE *cs_out_begin(cs_outdir *out, const char *name, char *why, size_t why_size);
 /* Flush, fsync and close a file from cs_out_begin. Returns 0, or -1 with why filled. */
 int cs_out_end(cs_outdir *out, FILE *f, char *why, size_t why_size);

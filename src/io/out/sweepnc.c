@@ -41,9 +41,7 @@ static void text_att(ncfile *f, int varid, const char *name, const char *value) 
         check(f, nc_put_att_text(f->id, varid, name, strlen(value), value), "writing attribute", name);
 }
 
-/* An input's netCDF name: its path with every run of other characters than letters and digits as one
- * '_' ("barrier.posts[0].yield_stress": barrier_posts_0_yield_stress). */
-static void input_name(const char *path, char *name, size_t size) {
+void cs_sweep_name(const char *path, char *name, size_t size) {
     size_t n = 0;
     for (const char *p = path; *p && n + 1 < size; p++) {
         if (isalnum((unsigned char)*p))
@@ -134,7 +132,7 @@ int cs_sweep_write_netcdf(const char *path, const cs_sweep_spec *s, const double
         ncvar *v = &vars[count++];
         *v = (ncvar){
             .in = &s->vars[j], .input = j, .kind = s->vars[j].numeric ? CS_COLUMN_REAL : CS_COLUMN_TEXT};
-        input_name(s->vars[j].path, v->name, sizeof v->name);
+        cs_sweep_name(s->vars[j].path, v->name, sizeof v->name);
     }
     for (int c = 0; c < nc; c++) {
         ncvar *v = &vars[count++];

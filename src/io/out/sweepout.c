@@ -8,6 +8,7 @@
 #include "writers.h"
 
 #define Z95 1.959963984540054
+static const double PI = 3.14159265358979323846;
 
 static const char *const method_names[] = {"grid", "monte_carlo", "latin_hypercube"};
 
@@ -61,8 +62,10 @@ enum {
     C_T_DECEL,
     C_PEN,
     C_DEFL,
+    C_WIDTH,
     C_STOP,
     C_EXIT,
+    C_EXIT_ANGLE,
     C_CONTACT,
     C_POSTS_LEFT,
     C_POSTS_RIGHT,
@@ -93,8 +96,15 @@ static const cs_sweep_column summary_columns[C_ERROR] = {
     [C_PEN] = {"max_dynamic_penetration", "m", NULL, "max dynamic penetration past the attack face",
                CS_COLUMN_REAL, C_PEN},
     [C_DEFL] = {"max_barrier_deflection", "m", NULL, "max barrier deflection", CS_COLUMN_REAL, C_DEFL},
+    [C_WIDTH] = {"working_width", "m", NULL,
+                 "working width: furthest reach past the barrier line (vehicle, cable or standing post)",
+                 CS_COLUMN_REAL, C_WIDTH},
     [C_STOP] = {"stop_time", "s", NULL, "stop time (a run that stopped)", CS_COLUMN_REAL, C_STOP},
-    [C_EXIT] = {"exit_speed", "m/s", NULL, "exit speed (a run that broke through)", CS_COLUMN_REAL, C_EXIT},
+    [C_EXIT] = {"exit_speed", "m/s", NULL, "exit speed (a run that broke through or was redirected)",
+                CS_COLUMN_REAL, C_EXIT},
+    [C_EXIT_ANGLE] = {"exit_angle", "deg", "degree",
+                      "exit angle away from the barrier line (a run that broke through or was redirected)",
+                      CS_COLUMN_REAL, C_EXIT_ANGLE},
     [C_CONTACT] = {"first_contact_time", "s", NULL, "time of first contact", CS_COLUMN_REAL, C_CONTACT},
     [C_POSTS_LEFT] = {"posts_failed_left", NULL, NULL, "posts failed left of the impact point (lower x)",
                       CS_COLUMN_COUNT, C_POSTS_LEFT},
@@ -151,10 +161,14 @@ double cs_sweep_column_number(const cs_sweep_column *c, const cs_sweep_result *r
         return m->max_dynamic_penetration;
     case C_DEFL:
         return m->max_barrier_deflection;
+    case C_WIDTH:
+        return m->working_width;
     case C_STOP:
         return m->outcome == CS_STOPPED ? m->stop_time : NAN;
     case C_EXIT:
         return cs_outcome_exits(m->outcome) ? m->exit_speed : NAN;
+    case C_EXIT_ANGLE:
+        return cs_outcome_exits(m->outcome) ? m->exit_angle * 180 / PI : NAN;
     case C_CONTACT:
         return m->first_contact_time >= 0 ? m->first_contact_time : NAN;
     case C_POSTS_LEFT:
@@ -272,6 +286,7 @@ typedef struct stats {
 } stats;
 
 typedef struct summary {
+    const cs_sweep_result *r; /* the runs' results, for the plots' captions */
     long n, ok, bad_model, failed;
     tally *t; /* outcomes, penetration, events, ratings */
     int tally_count;
@@ -305,6 +320,7 @@ static int add_tally(summary *s, const char *name, const char *label, long count
 static int make_summary(summary *s, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
                         long n) {
     memset(s, 0, sizeof *s);
+    s->r = r;
     s->n = n;
     int k = spec->var_count;
     long *ok = malloc((size_t)(n > 0 ? n : 1) * sizeof *ok);
@@ -488,6 +504,13 @@ static void summary_md(FILE *f, const cs_sweep_spec *spec, long n, const summary
             fprintf(f, " |");
         }
         fputc('\n', f);
+    }
+    if (spec->plot_count > 0) fprintf(f, "\n## Plots\n\n");
+    for (int k = 0; k < spec->plot_count; k++) {
+        char file[256], caption[1000];
+        cs_sweep_plot_file(spec, k, file, sizeof file);
+        cs_sweep_plot_caption(spec, k, s->r, n, caption, sizeof caption);
+        fprintf(f, "- `%s`: %s.\n", file, caption);
     }
 }
 

@@ -1,6 +1,6 @@
 /* A sweep's outputs: runs.csv (one row per run), runs.nc (the same table as netCDF), summary.md and
  * summary.json (outcome probabilities with 95% Wilson intervals, response statistics, Spearman rank
- * correlation of inputs and responses). */
+ * correlation of inputs and responses), and the plots the spec asks for. */
 #ifndef CS_SWEEPOUT_H
 #define CS_SWEEPOUT_H
 
@@ -34,6 +34,11 @@ double cs_sweep_column_number(const cs_sweep_column *c, const cs_sweep_result *r
 /* A run's text in a TEXT column; "" where it has none. */
 const char *cs_sweep_column_text(const cs_sweep_column *c, const cs_sweep_result *r);
 
+/* A path as a name of letters, digits and '_', every run of other characters one '_'
+ * ("barrier.posts[0].yield_stress": barrier_posts_0_yield_stress): runs.nc's names of the inputs, and the
+ * last key of a plot's x in its file's name. */
+void cs_sweep_name(const char *path, char *name, size_t size);
+
 /* runs.csv: one row per run in run order. Returns 0, or -1 with why filled. */
 int cs_sweep_write_runs(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r, long n,
                         char *why, size_t why_size);
@@ -47,5 +52,20 @@ int cs_sweep_write_summary_md(FILE *f, const cs_sweep_spec *spec, const double *
                               long n, char *why, size_t why_size);
 int cs_sweep_write_summary_json(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
                                 long n, char *why, size_t why_size);
+
+/* ---- plots (`plot:` in the spec) ---- */
+
+/* Check each plot's y (a number column of runs.csv) and that no two plots share a file; problems go into
+ * the spec's errors at their places. 0 if none. */
+int cs_sweep_plots_check(cs_sweep_spec *spec);
+/* Plot k's file in the output directory: "plots/<y>-vs-<the last key of x's path>.<format>". */
+void cs_sweep_plot_file(const cs_sweep_spec *spec, int k, char *buf, size_t size);
+/* What plot k shows, how many runs it shows and marks as broken through, and how many it leaves out
+ * (those that did not run to the end, those with no value of y), in words. */
+void cs_sweep_plot_caption(const cs_sweep_spec *spec, int k, const cs_sweep_result *r, long n, char *buf,
+                           size_t size);
+/* Draw plot k of the runs to f in its format. Returns 0, or -1 with why filled. */
+int cs_sweep_write_plot(FILE *f, const cs_sweep_spec *spec, int k, const double *x, const cs_sweep_result *r,
+                        long n, char *why, size_t why_size);
 
 #endif

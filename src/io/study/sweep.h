@@ -30,6 +30,8 @@ double cs_dist_quantile(const cs_dist *d, double u);
 /* The inputs of every run: x[run * var_count + var], SI (text variables: the level index). Grids vary
  * the first variable slowest. NULL if memory is short. */
 double *cs_sweep_samples(const cs_sweep_spec *spec, long *run_count);
+/* The level of variable var in run `run` of a grid (the first variable varies slowest). */
+int cs_sweep_grid_level(const cs_sweep_spec *spec, long run, int var);
 /* The probabilities (u in (0,1)) of a Latin hypercube of n runs and k variables: u[run * k + var]. Each
  * variable's column holds one point in each stratum [s/n, (s+1)/n). NULL if memory is short. */
 double *cs_latin_hypercube(uint64_t seed, long n, int k);

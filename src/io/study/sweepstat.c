@@ -107,6 +107,13 @@ double *cs_latin_hypercube(uint64_t seed, long n, int k) {
     return u;
 }
 
+int cs_sweep_grid_level(const cs_sweep_spec *s, long run, int var) {
+    long rest = run;
+    for (int j = s->var_count - 1; j > var; j--) /* the last variable varies fastest */
+        rest /= s->vars[j].level_count;
+    return (int)(rest % s->vars[var].level_count);
+}
+
 double *cs_sweep_samples(const cs_sweep_spec *s, long *run_count) {
     long n = s->runs;
     int k = s->var_count;
@@ -114,15 +121,12 @@ double *cs_sweep_samples(const cs_sweep_spec *s, long *run_count) {
     double *x = malloc((size_t)(n > 0 ? n : 1) * (size_t)(k > 0 ? k : 1) * sizeof *x);
     if (!x) return NULL;
     if (s->method == CS_SWEEP_GRID) {
-        for (long i = 0; i < n; i++) {
-            long rest = i;
-            for (int j = k - 1; j >= 0; j--) { /* the last variable varies fastest */
+        for (long i = 0; i < n; i++)
+            for (int j = 0; j < k; j++) {
                 const cs_sweep_var *v = &s->vars[j];
-                int level = (int)(rest % v->level_count);
-                rest /= v->level_count;
+                int level = cs_sweep_grid_level(s, i, j);
                 x[i * k + j] = v->numeric ? v->levels[level] : level;
             }
-        }
         return x;
     }
     double *u = NULL;
