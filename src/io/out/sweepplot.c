@@ -1,7 +1,7 @@
 /* The plots of a sweep (`plot:` in the spec, sweepout.h), drawn with the plotting layer (plot.h) from
  * runs.csv's own columns: a response against a varied value, a line per level of another varied value of
  * a grid joining its runs in order of x, or each run a point (Monte Carlo, Latin hypercube). A run that
- * broke through is marked with a cross; a run that did not run to the end, or has no value of the
+ * got through (broke through, rode over or ran under the cables) is marked with a cross; a run that did not run to the end, or has no value of the
  * response, is left out, and the caption counts both. */
 #include <math.h>
 #include <stdlib.h>
@@ -143,7 +143,7 @@ static void plot_counts(const cs_sweep_spec *spec, int k, const cs_sweep_result 
         else if (!isfinite(cs_sweep_column_number(&col, &r[i])))
             missing++;
         else
-            shown++, broke += r[i].summary.outcome == CS_BREAKTHROUGH;
+            shown++, broke += cs_outcome_through(r[i].summary.outcome);
     }
     int used = snprintf(buf, size,
                         "%ld of %ld runs shown, %ld broke through (marked with a cross); left out: %ld that "
@@ -252,7 +252,7 @@ static int draw_plot(cs_plot *p, const void *user, char *why, size_t why_size) {
         if (!isfinite(y)) continue;
         pt[m++] = (point){cs_sweep_value_used(vx, job->x[i * s->var_count + pl->x]) * dx.scale, y * dy.scale,
                           vl ? cs_sweep_grid_level(s, i, pl->lines) : 0,
-                          job->r[i].summary.outcome == CS_BREAKTHROUGH};
+                          cs_outcome_through(job->r[i].summary.outcome)};
     }
     qsort(pt, (size_t)m, sizeof *pt, by_line_then_x);
     cs_axes a;
