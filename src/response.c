@@ -149,10 +149,12 @@ void cs_response_update(const cs_model *model, cs_state *s) {
 
     if (s->contact_started && u <= model->scenario.stop_speed) {
         end_run(model, s, CS_STOPPED, sm->max_dynamic_penetration);
+    } else if (s->contact_started && engaged == 0 && s->vel[1] < 0.0) {
+        /* moving back to the traffic side when contact ends: redirected, even with a cable slipped under
+         * it or its CG still past the line (it straddles the cables on its way out) */
+        end_run(model, s, CS_REDIRECTED, v3_norm(s->vel));
     } else if (s->contact_started && engaged == 0 && (intact == 0 || s->pos[1] > 0.0)) {
         end_run(model, s, through_how(model, s), v3_norm(s->vel));
-    } else if (s->contact_started && engaged == 0 && s->vel[1] < 0.0) {
-        end_run(model, s, CS_REDIRECTED, v3_norm(s->vel));
     } else if (s->t >= model->scenario.t_end - 0.5 * model->scenario.dt) {
         end_run(model, s, s->contact_started ? CS_TIME_LIMIT : CS_NO_CONTACT, 0.0);
     }
