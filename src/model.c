@@ -161,13 +161,27 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
     return 0;
 }
 
+/* The range of road vehicles, with room: a 10-kg cart to a 500-t load, no dimension over 50 m. */
+#define CS_VEHICLE_MASS_MIN 10.0
+#define CS_VEHICLE_MASS_MAX 5e5
+#define CS_VEHICLE_SIZE_MAX 50.0
+
 static int check_vehicle(const cs_vehicle_def *v, cs_error *err) {
-    if (!positive(v->mass)) return fail(err, "vehicle: mass must be > 0");
+    if (!(v->mass >= CS_VEHICLE_MASS_MIN && v->mass <= CS_VEHICLE_MASS_MAX))
+        return fail(err, "vehicle: mass %.4g kg is outside %.0f kg to %.0f t, the range of road vehicles",
+                    v->mass, CS_VEHICLE_MASS_MIN, CS_VEHICLE_MASS_MAX / 1e3);
     for (int i = 0; i < 3; i++)
-        if (!positive(v->inertia[i])) return fail(err, "vehicle: inertia must be > 0");
-    if (!positive(v->cg_height) || !positive(v->cg_to_front) || !positive(v->front_width) ||
-        !positive(v->wheelbase) || !positive(v->track))
-        return fail(err, "vehicle: CG height, CG to front, front width, wheelbase and track must be > 0");
+        if (!positive(v->inertia[i]) || !isfinite(v->inertia[i]))
+            return fail(err, "vehicle: inertia must be > 0");
+    const double sizes[] = {v->cg_height, v->cg_to_front, v->front_width,
+                            v->wheelbase, v->track,       v->cg_to_rear};
+    for (size_t i = 0; i < sizeof sizes / sizeof *sizes; i++)
+        if (!(sizes[i] > 0.0 && sizes[i] <= CS_VEHICLE_SIZE_MAX))
+            return fail(
+                err,
+                "vehicle: CG height, CG to front and to rear, front width, wheelbase and track must be "
+                "above 0 and at most %.0f m (one is %.4g m)",
+                CS_VEHICLE_SIZE_MAX, sizes[i]);
     if (!non_negative(v->face_bottom) || !(v->face_top > v->face_bottom))
         return fail(err, "vehicle: face top must be above face bottom >= 0");
     if (!(v->cg_to_front_axle > 0.0 && v->cg_to_front_axle < v->wheelbase))

@@ -193,6 +193,19 @@ static void test_set(void **state) {
     cs_loader_free(l);
 }
 
+/* A moment given on its own replaces that moment of the part's inertia box; the other two stay the box's. */
+static void test_inertia_override(void **state) {
+    (void)state;
+    static const char *const sets[] = {"vehicle.yaw_inertia=50000 kg m^2", NULL};
+    cs_model_input in;
+    cs_loader *l = load(CS_SOURCE_DIR "/tests/good/base.yaml", &in, sets);
+    const double m = 15000 * LB, L = 7.5, W = 2.4, H = 2.5; /* vehicle M of data/vehicles.yaml */
+    close_to(in.vehicle.inertia[0], m * (W * W + H * H) / 12);
+    close_to(in.vehicle.inertia[1], m * (L * L + H * H) / 12);
+    close_to(in.vehicle.inertia[2], 50000);
+    cs_loader_free(l);
+}
+
 static void expect_problems(const char *file, const char *const *sets, const char *const *want) {
     cs_loader *l = new_loader();
     for (int i = 0; sets && sets[i]; i++)
@@ -230,6 +243,21 @@ static void test_set_errors(void **state) {
         "--set barrier..x=1: malformed path",
         NULL};
     expect_problems(CS_SOURCE_DIR "/tests/good/base.yaml", sets, want);
+}
+
+/* A value the engine refuses is reported at the --set that gave it, once. */
+static void test_engine_check_names_set(void **state) {
+    (void)state;
+    cs_loader *l = new_loader();
+    cs_loader_set(l, "vehicle.mass=1e300 kg");
+    cs_model_input in;
+    assert_int_equal(cs_loader_load(l, CS_SOURCE_DIR "/tests/good/base.yaml", &in), 0);
+    assert_null(cs_loader_build(l, &in));
+    assert_int_equal(cs_loader_error_count(l), 1);
+    const char *want = "--set vehicle.mass=1e300 kg: vehicle: mass 1e+300 kg is outside 10 kg to 500 t";
+    if (strncmp(cs_loader_error(l, 0), want, strlen(want)) != 0)
+        fail_msg("got '%s', expected '%s...'", cs_loader_error(l, 0), want);
+    cs_loader_free(l);
 }
 
 static void test_references(void **state) {
@@ -346,11 +374,18 @@ static void test_two_threads(void **state) {
 
 int main(void) {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_aps3),          cmocka_unit_test(test_aps1_aps4_layouts),
-        cmocka_unit_test(test_library_parts), cmocka_unit_test(test_set),
-        cmocka_unit_test(test_set_errors),    cmocka_unit_test(test_references),
-        cmocka_unit_test(test_reuse),         cmocka_unit_test(test_every_problem_reported),
-        cmocka_unit_test(test_two_threads),   cmocka_unit_test(test_aliases),
+        cmocka_unit_test(test_aps3),
+        cmocka_unit_test(test_aps1_aps4_layouts),
+        cmocka_unit_test(test_library_parts),
+        cmocka_unit_test(test_set),
+        cmocka_unit_test(test_set_errors),
+        cmocka_unit_test(test_inertia_override),
+        cmocka_unit_test(test_engine_check_names_set),
+        cmocka_unit_test(test_references),
+        cmocka_unit_test(test_reuse),
+        cmocka_unit_test(test_every_problem_reported),
+        cmocka_unit_test(test_two_threads),
+        cmocka_unit_test(test_aliases),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

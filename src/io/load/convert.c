@@ -200,17 +200,19 @@ int cs_convert_vehicle(cs_loader *l, const cs_node *v, cs_vehicle_def *out) {
     *out = cs_default_vehicle_def();
     fields(l, v, out, 1);
     const cs_node *box = cs_node_get(v, "inertia_box");
-    if (box) {
+    static const char *const keys[] = {"roll_inertia", "pitch_inertia", "yaw_inertia"};
+    if (box) { /* the box's moments, each replaced by one given on its own (a part's box, a --set) */
         double b[3];
         check_required(l, box);
         if (get_qty(l, box, "length", &b[0]) == 1 && get_qty(l, box, "width", &b[1]) == 1 &&
             get_qty(l, box, "height", &b[2]) == 1) {
-            out->inertia[0] = out->mass * (b[1] * b[1] + b[2] * b[2]) / 12;
-            out->inertia[1] = out->mass * (b[0] * b[0] + b[2] * b[2]) / 12;
-            out->inertia[2] = out->mass * (b[0] * b[0] + b[1] * b[1]) / 12;
+            double m[3] = {out->mass * (b[1] * b[1] + b[2] * b[2]) / 12,
+                           out->mass * (b[0] * b[0] + b[2] * b[2]) / 12,
+                           out->mass * (b[0] * b[0] + b[1] * b[1]) / 12};
+            for (int i = 0; i < 3; i++)
+                if (!cs_node_get(v, keys[i])) out->inertia[i] = m[i];
         }
     } else {
-        static const char *const keys[] = {"roll_inertia", "pitch_inertia", "yaw_inertia"};
         for (int i = 0; i < 3; i++)
             if (!cs_node_get(v, keys[i]))
                 cs_err_node(l, v, 0,

@@ -191,10 +191,6 @@ void cs_field_hint(const cs_field *f, char *buf, size_t size) {
     }
 }
 
-int cs_loader_error_count(const cs_loader *l) {
-    return l->error_count;
-}
-
 static int error_order(const void *a, const void *b) {
     const cs_lerror *x = a, *y = b;
     if (x->source != y->source) return x->source < y->source ? -1 : 1;
@@ -203,11 +199,29 @@ static int error_order(const void *a, const void *b) {
     return (x->seq > y->seq) - (x->seq < y->seq);
 }
 
-const char *cs_loader_error(cs_loader *l, int i) {
-    if (!l->errors_sorted) {
-        qsort(l->errors, (size_t)l->error_count, sizeof *l->errors, error_order);
-        l->errors_sorted = 1;
+/* Sort the problems by place and keep each once (a value used twice is wrong once). */
+static void sort_errors(cs_loader *l) {
+    if (l->errors_sorted) return;
+    qsort(l->errors, (size_t)l->error_count, sizeof *l->errors, error_order);
+    int kept = 0;
+    for (int k = 0; k < l->error_count; k++) {
+        if (kept > 0 && strcmp(l->errors[kept - 1].text, l->errors[k].text) == 0) {
+            free(l->errors[k].text);
+            continue;
+        }
+        l->errors[kept++] = l->errors[k];
     }
+    l->error_count = kept;
+    l->errors_sorted = 1;
+}
+
+int cs_loader_error_count(cs_loader *l) {
+    sort_errors(l);
+    return l->error_count;
+}
+
+const char *cs_loader_error(cs_loader *l, int i) {
+    sort_errors(l);
     return i >= 0 && i < l->error_count ? l->errors[i].text : NULL;
 }
 
@@ -527,28 +541,59 @@ int cs_loader_part(cs_loader *l, cs_part_kind kind, const char *name, void *def)
 
 /* ---- the engine's own check ---- */
 
-/* The node an engine message is about: "cable 1 ...", "post 3 ...", "vehicle ...", "scenario ...". */
-static const cs_node *engine_place(const cs_loader *l, const cs_model_input *in, const char *msg) {
-    static const char *const words[] = {"cable", "post", "anchor", "vehicle", "scenario"};
-    for (size_t w = 0; w < sizeof words / sizeof words[0]; w++) {
-        const char *p = strstr(msg, words[w]);
-        if (!p) continue;
-        long i = strtol(p + strlen(words[w]), NULL, 10);
-        if (w == 0 && l->cable_origin && i >= 0 && i < in->barrier.cable_count) return l->cable_origin[i];
-        if (w == 1 && l->post_origin && i >= 0 && i < in->barrier.post_count) return l->post_origin[i];
-        if (w == 2 && l->anchors_node) return l->anchors_node;
-        if (w == 3 && l->vehicle_node) return l->vehicle_node;
-        if (w == 4 && l->scenario_node) return l->scenario_node;
+/* The engine's messages start with the element they are about: "cable 1: ...", "post 3: ...", "anchor
+ * 0: ...", "vehicle: ...", "scenario: ...". Its kind (an index of words) and number, or -1. */
+static const char *const element_words[] = {"cable", "post", "anchor", "vehicle", "scenario"};
+
+static int engine_element(const char *msg, long *index) {
+    for (int w = 0; w < (int)(sizeof element_words / sizeof element_words[0]); w++) {
+        size_t n = strlen(element_words[w]);
+        if (strncmp(msg, element_words[w], n) != 0) continue;
+        *index = strtol(msg + n, NULL, 10);
+        return w;
     }
+    return -1;
+}
+
+/* The node of that element in the files. */
+static const cs_node *engine_place(const cs_loader *l, const cs_model_input *in, int w, long i) {
+    if (w == 0 && l->cable_origin && i >= 0 && i < in->barrier.cable_count) return l->cable_origin[i];
+    if (w == 1 && l->post_origin && i >= 0 && i < in->barrier.post_count) return l->post_origin[i];
+    if (w == 2) return l->anchors_node;
+    if (w == 3) return l->vehicle_node;
+    if (w == 4) return l->scenario_node;
     return NULL;
+}
+
+/* The --set that changed that element, if one did: the value the engine refuses most likely came from
+ * it, not from the file. Its index, or -1. */
+static int engine_set(const cs_loader *l, int w, long i) {
+    char prefix[64];
+    if (w == 0)
+        snprintf(prefix, sizeof prefix, "barrier.cables[%ld]", i);
+    else if (w == 1)
+        snprintf(prefix, sizeof prefix, "barrier.posts");
+    else if (w == 2)
+        snprintf(prefix, sizeof prefix, "barrier.anchors");
+    else if (w >= 3)
+        snprintf(prefix, sizeof prefix, "%s", element_words[w]);
+    else
+        return -1;
+    for (int k = l->set_count - 1; k >= 0; k--)
+        if (!l->sets[k].bad && strncmp(l->sets[k].path, prefix, strlen(prefix)) == 0) return k;
+    return -1;
 }
 
 cs_model *cs_loader_build(cs_loader *l, const cs_model_input *in) {
     cs_error err = {0};
     cs_model *m = cs_model_create(&in->barrier, &in->vehicle, &in->scenario, &err);
     if (m) return m;
-    const cs_node *place = engine_place(l, in, err.message);
-    if (place)
+    long i = -1;
+    int w = engine_element(err.message, &i), set = w >= 0 ? engine_set(l, w, i) : -1;
+    const cs_node *place = w >= 0 ? engine_place(l, in, w, i) : NULL;
+    if (set >= 0)
+        cs_err_at(l, -1 - set, 0, 0, "%s (the engine's check of the model)", err.message);
+    else if (place)
         cs_err_node(l, place, 0, "%s (the engine's check of the model)", err.message);
     else
         cs_err_at(l, 0, 1, 1, "%s (the engine's check of the model)", err.message);

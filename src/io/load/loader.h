@@ -46,7 +46,7 @@ void cs_loader_reuse(cs_loader *loader);
  * location of the element it names. */
 cs_model *cs_loader_build(cs_loader *loader, const cs_model_input *in);
 
-int cs_loader_error_count(const cs_loader *loader);
+int cs_loader_error_count(cs_loader *loader); /* each problem once */
 /* The i-th problem, sorted by file and line. */
 const char *cs_loader_error(cs_loader *loader, int i);
 void cs_loader_print_errors(cs_loader *loader, FILE *out);

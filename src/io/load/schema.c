@@ -32,11 +32,12 @@ static const cs_field box_fields[] = {
     QTY_ONLY("width", CS_Q_LENGTH, CS_REQ | CS_POS, "box width (y)"),
     QTY_ONLY("height", CS_Q_LENGTH, CS_REQ | CS_POS, "box height (z)"),
 };
-const cs_table cs_table_box = {"inertia_box",
-                               "A uniform box of the vehicle's mass whose moments of inertia "
-                               "replace roll/pitch/yaw_inertia: roll m(W^2+H^2)/12, pitch m(L^2+H^2)/12, "
-                               "yaw m(L^2+W^2)/12.",
-                               CS_T_NONE, box_fields, N(box_fields)};
+const cs_table cs_table_box = {
+    "inertia_box",
+    "A uniform box of the vehicle's mass whose moments of inertia "
+    "give each of roll/pitch/yaw_inertia not given on its own: roll m(W^2+H^2)/12, "
+    "pitch m(L^2+H^2)/12, yaw m(L^2+W^2)/12.",
+    CS_T_NONE, box_fields, N(box_fields)};
 
 #define V(key, q, flags, member, doc) QTY(key, q, flags, cs_vehicle_def, member, doc)
 static const cs_field vehicle_fields[] = {
@@ -46,7 +47,8 @@ static const cs_field vehicle_fields[] = {
     V("roll_inertia", CS_Q_INERTIA, CS_POS, inertia[0], "Ixx about the CG (or give inertia_box)"),
     V("pitch_inertia", CS_Q_INERTIA, CS_POS, inertia[1], "Iyy about the CG (or give inertia_box)"),
     V("yaw_inertia", CS_Q_INERTIA, CS_POS, inertia[2], "Izz about the CG (or give inertia_box)"),
-    SUB("inertia_box", CS_F_MAP, 0, -1, cs_table_box, "inertia of a uniform box instead of the three above"),
+    SUB("inertia_box", CS_F_MAP, 0, -1, cs_table_box,
+        "inertia of a uniform box for any of the three above not given"),
     V("cg_height", CS_Q_LENGTH, CS_REQ | CS_POS, cg_height, "CG above grade at rest"),
     V("cg_to_front", CS_Q_LENGTH, CS_REQ | CS_POS, cg_to_front, "CG to the undeformed front face"),
     V("front_width", CS_Q_LENGTH, CS_REQ | CS_POS, front_width, "width of the front face"),
