@@ -22,7 +22,7 @@ build: deps $(BUILD)/CMakeCache.txt
 demo: build
 	$(BUILD)/cablesim run examples/aps3.yaml -o $(DEMO_OUT) --plots --report
 
-# The suite, then the same suite under AddressSanitizer + UBSan, then the loader's fuzzer for FUZZ_SECONDS.
+# The suite, then the same suite under AddressSanitizer + UBSan, then each fuzzer for FUZZ_SECONDS.
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 	$(MAKE) --no-print-directory sanitize
@@ -34,29 +34,42 @@ sanitize: deps
 	ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions=$(CURDIR)/fuzz/lsan.supp \
 	  ctest --test-dir build-asan --output-on-failure -j $(JOBS)
 
-# libFuzzer on the model loader (fuzz/fuzz_loader.c): the loader built with ASan + UBSan + coverage, seeded
-# at run time from examples/, tests/good/, tests/bad/ (also each example with --set lines) and replaying
-# tests/fuzz-regressions/. The corpus grows in $(FUZZ_BUILD)/corpus; a crash lands in $(FUZZ_BUILD)/artifacts.
+# libFuzzer, each target built with ASan + UBSan + coverage and run for FUZZ_SECONDS:
+# - fuzz/fuzz_loader.c, the model loader: seeded at run time from examples/, tests/good/, tests/bad/ (also
+#   each example with --set lines), replaying tests/fuzz-regressions/;
+# - fuzz/fuzz_engine.c, the engine: random valid designs (tests/design.h) run to their end;
+# - fuzz/fuzz_sweep.c, the sweep spec: seeded from the example studies.
+# Each corpus grows in $(FUZZ_BUILD)/corpus-TARGET; a crash lands in $(FUZZ_BUILD)/artifacts.
+FUZZ_CFLAGS = -std=c17 -Wall -Wextra -Wpedantic -Werror -O1 -g -fno-omit-frame-pointer -fno-sanitize-recover=all \
+  -fsanitize=fuzzer,address,undefined -Iinclude -Isrc -Isrc/io -Itests -DCS_SOURCE_DIR='"$(CURDIR)"'
+FUZZ_LIBS = $(FUZZ_BUILD)/libcablesim_io.a $(FUZZ_BUILD)/libcablesim.a $$(pkg-config --libs yaml-0.1) -ludunits2 -lm
+FUZZ_RUN = LSAN_OPTIONS=suppressions=$(CURDIR)/fuzz/lsan.supp
+FUZZ_FLAGS = -max_total_time=$(FUZZ_SECONDS) -timeout=20 -print_final_stats=1 -artifact_prefix=$(FUZZ_BUILD)/artifacts/
+
 fuzz-build: deps
 	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCS_SANITIZE=ON -DCMAKE_C_COMPILER=clang \
 	  -DCMAKE_C_FLAGS=-fsanitize=fuzzer-no-link
 	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target cablesim_io
-	clang -std=c17 -Wall -Wextra -Wpedantic -Werror -O1 -g -fno-omit-frame-pointer -fno-sanitize-recover=all \
-	  -fsanitize=fuzzer,address,undefined -Iinclude -Isrc/io -DCS_SOURCE_DIR='"$(CURDIR)"' \
-	  fuzz/fuzz_loader.c $(FUZZ_BUILD)/libcablesim_io.a $(FUZZ_BUILD)/libcablesim.a \
-	  $$(pkg-config --libs yaml-0.1) -ludunits2 -lm -o $(FUZZ_BUILD)/fuzz_loader
+	for t in loader engine sweep; do \
+	  clang $(FUZZ_CFLAGS) fuzz/fuzz_$$t.c $(FUZZ_LIBS) -o $(FUZZ_BUILD)/fuzz_$$t || exit 1; done
 
 fuzz: fuzz-build
-	rm -rf $(FUZZ_BUILD)/seeds
-	mkdir -p $(FUZZ_BUILD)/seeds $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/artifacts
+	rm -rf $(FUZZ_BUILD)/seeds $(FUZZ_BUILD)/seeds-sweep
+	mkdir -p $(FUZZ_BUILD)/seeds $(FUZZ_BUILD)/seeds-sweep $(FUZZ_BUILD)/artifacts
+	mkdir -p $(FUZZ_BUILD)/corpus-loader $(FUZZ_BUILD)/corpus-engine $(FUZZ_BUILD)/corpus-sweep
 	for f in examples/*.yaml examples/roadside/*.yaml tests/good/*.yaml tests/bad/*.yaml; do \
 	  cp "$$f" "$(FUZZ_BUILD)/seeds/$$(echo "$$f" | tr / -)"; done
 	for f in examples/*.yaml; do \
 	  { cat "$$f"; printf '#set scenario.speed=35 mph\n#set barrier.cables[0].pretension=8 kip\n'; \
 	    printf '#set barrier.posts[0].spacing=6 ft\n#set vehicle=M\n'; } > "$(FUZZ_BUILD)/seeds/set-$${f##*/}"; done
-	LSAN_OPTIONS=suppressions=$(CURDIR)/fuzz/lsan.supp $(FUZZ_BUILD)/fuzz_loader -max_total_time=$(FUZZ_SECONDS) \
-	  -timeout=10 -print_final_stats=1 -dict=fuzz/loader.dict -artifact_prefix=$(FUZZ_BUILD)/artifacts/ \
-	  $(FUZZ_BUILD)/corpus $(FUZZ_BUILD)/seeds $(wildcard tests/fuzz-regressions)
+	cp examples/aps3-uncertain.yaml $(FUZZ_BUILD)/seeds-sweep/
+	sed 's|^model: design.yaml|model: roadside/design.yaml|' examples/roadside/spacing-study.yaml \
+	  > $(FUZZ_BUILD)/seeds-sweep/spacing-study.yaml
+	$(FUZZ_RUN) $(FUZZ_BUILD)/fuzz_loader $(FUZZ_FLAGS) -dict=fuzz/loader.dict \
+	  $(FUZZ_BUILD)/corpus-loader $(FUZZ_BUILD)/seeds $(wildcard tests/fuzz-regressions)
+	$(FUZZ_RUN) $(FUZZ_BUILD)/fuzz_engine $(FUZZ_FLAGS) $(FUZZ_BUILD)/corpus-engine
+	$(FUZZ_RUN) $(FUZZ_BUILD)/fuzz_sweep $(FUZZ_FLAGS) -dict=fuzz/loader.dict \
+	  $(FUZZ_BUILD)/corpus-sweep $(FUZZ_BUILD)/seeds-sweep
 
 # Benchmarks (bench/run.sh, docs/performance.md; not part of test). Settings: BENCH_N (Monte Carlo runs, 1000),
 # BENCH_T_END (end time of the APS3 runs; empty: the model's), BENCH_POSTS, BENCH_POSTS_T_END, BENCH_REPEAT.

@@ -6,84 +6,15 @@
  * generator gives design k the same whatever the run count. The default subset is designs 0-23, plus
  * the designs kept as regressions (docs/robustness.md). */
 #include "check.h"
-#include "fixture.h"
+#include "design.h"
 
 #include <stdlib.h>
-
-/* SplitMix64: a counter-based generator, so design k is the same whatever the run count. */
-static unsigned long long mix(unsigned long long x) {
-    x += 0x9e3779b97f4a7c15ULL;
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-    return x ^ (x >> 31);
-}
-
-static double uniform(unsigned long long *s, double lo, double hi) {
-    *s = mix(*s);
-    return lo + (hi - lo) * (double)(*s >> 11) / 9007199254740992.0;
-}
-
-typedef struct design {
-    fixture fx;
-    char what[160];
-} design;
-
-static void make_design(int k, design *d) {
-    unsigned long long s = 0x5eed0000ULL + (unsigned long long)k;
-    fixture *fx = &d->fx;
-    fixture_aps3(fx);
-    int cables = 1 + (int)uniform(&s, 0.0, 2.0); /* 1 or 2 */
-    double rope_in = uniform(&s, 0.5, 1.75), spacing = uniform(&s, 4.0, 12.0) * FT;
-    int posts = 4 + (int)uniform(&s, 0.0, 20.0);
-    for (int c = 0; c < 2; c++) {
-        fx->cables[c].rope = fixture_rope(rope_in);
-        fx->cables[c].height = (c == 0 ? uniform(&s, 0.6, 0.9) : uniform(&s, 0.95, 1.3));
-        fx->cables[c].pretension = uniform(&s, 0.5, 8.0) * KIP;
-    }
-    for (int p = 0; p < posts; p++) {
-        fx->posts[p] = fx->posts[0];
-        fx->posts[p].x = spacing * (p + 1);
-    }
-    double length = spacing * (posts + 1);
-    fx->barrier.cable_count = cables;
-    fx->barrier.post_count = posts;
-    fx->barrier.start_anchor.x = 0.0;
-    fx->barrier.end_anchor.x = length;
-    /* dead-men from rigid (a quarter of the designs) to a small footing that lets go early */
-    double dead_man = uniform(&s, -0.5, 1.5);
-    fx->barrier.start_anchor.footing = fx->barrier.end_anchor.footing =
-        fixture_footing(dead_man > 0.0 ? 1.0 + 2.0 * dead_man : 0.0, 3.0 + 2.0 * fabs(dead_man), 0.0);
-    int rails = (int)uniform(&s, -2.0, 5.0); /* none in about half, else 1 to 4 of the APS rails */
-    if (rails > 0) fixture_rails(fx), fx->barrier.rail_count = rails;
-    /* a vehicle between a small car and a heavy truck, scaled from the 15,000-lb truck */
-    double scale = uniform(&s, 0.35, 1.6);
-    cs_vehicle_def *v = &fx->vehicle;
-    v->mass *= scale * scale * scale;
-    for (int i = 0; i < 3; i++)
-        v->inertia[i] *= pow(scale, 5);
-    v->cg_height *= scale, v->cg_to_front *= scale, v->front_width *= scale, v->face_bottom *= scale;
-    v->face_top *= scale, v->wheelbase *= scale, v->cg_to_front_axle *= scale, v->track *= scale;
-    v->cg_to_rear *= scale, v->side_bottom *= scale, v->side_top *= scale;
-    for (int i = 0; i < v->crush_point_count; i++)
-        v->crush_deformation[i] *= scale, v->crush_force[i] *= scale * scale;
-    fx->scenario.speed = uniform(&s, 5.0, 60.0) * MPH;
-    fx->scenario.angle = uniform(&s, 15.0, 90.0) * M_PI_2_VALUE / 90.0;
-    fx->scenario.impact_x = uniform(&s, -0.1, 1.1) * length; /* past either anchor too */
-    fx->scenario.t_end = 0.15;
-    snprintf(
-        d->what, sizeof d->what,
-        "design %d: %d cables of %.2f in, %d posts at %.1f ft, %d rails, dead-men %.1f ft wide, %.0f lb at "
-        "%.1f mph, %.0f deg, x = %.1f of %.1f m",
-        k, cables, rope_in, posts, spacing / FT, fx->barrier.rail_count,
-        fx->barrier.start_anchor.footing.diameter / FT, v->mass / LB, fx->scenario.speed / MPH,
-        fx->scenario.angle * 90.0 / M_PI_2_VALUE, fx->scenario.impact_x, length);
-}
 
 /* Runs design k; returns 1 (and says why) if it errs, leaves a non-finite response or a ledger off by
  * more than 2%. */
 static int design_fails(int k) {
     design d;
-    make_design(k, &d);
+    design_numbered(k, &d);
     cs_error err;
     cs_model *m = cs_model_create(&d.fx.barrier, &d.fx.vehicle, &d.fx.scenario, &err);
     if (!m) {

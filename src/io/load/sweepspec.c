@@ -782,6 +782,10 @@ static void read_plots(cs_sweep_spec *s, const cs_ynode *root) {
 }
 
 cs_sweep_spec *cs_sweep_spec_read(const char *path, cs_units *units) {
+    return cs_sweep_spec_read_buffer(path, NULL, 0, units);
+}
+
+cs_sweep_spec *cs_sweep_spec_read_buffer(const char *path, const char *data, size_t size, cs_units *units) {
     cs_sweep_spec *s = calloc(1, sizeof *s);
     if (!s || !(s->file = strdup(path))) {
         free(s);
@@ -789,7 +793,7 @@ cs_sweep_spec *cs_sweep_spec_read(const char *path, cs_units *units) {
     }
     s->seed = 1;
     cs_ytree tree;
-    int rc = cs_ytree_read(&tree, path, NULL, 0, MAX_DEPTH);
+    int rc = cs_ytree_read(&tree, path, data, size, MAX_DEPTH);
     for (int i = 1; i < tree.count; i++) {
         const cs_ynode *n = &tree.items[i], *first = repeated(&tree.items[n->parent], n);
         if (first)

@@ -4,6 +4,7 @@
 #ifndef CS_SWEEPSPEC_H
 #define CS_SWEEPSPEC_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "units.h"
@@ -81,6 +82,8 @@ typedef struct cs_sweep_spec {
 /* Read a spec. Always returns a spec (NULL only when memory is short); check error_count. units reads
  * the values' units. */
 cs_sweep_spec *cs_sweep_spec_read(const char *path, cs_units *units);
+/* The same from a buffer standing for the file at path (whose folder the model is found from). */
+cs_sweep_spec *cs_sweep_spec_read_buffer(const char *path, const char *data, size_t size, cs_units *units);
 void cs_sweep_spec_free(cs_sweep_spec *spec);
 /* Is the file a sweep spec (a YAML mapping with a top-level `vary`) rather than a model? */
 int cs_sweep_is_spec(const char *path);

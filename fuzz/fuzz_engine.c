@@ -1,0 +1,45 @@
+/* libFuzzer harness of the engine: each input picks a valid design and attack (tests/design.h: two bytes
+ * a value - cables, rope size, spacing, posts, dead-men, rails, vehicle size, speed, angle, impact point
+ * - the generator after that), which is built and run to its end (0.15 s, under the run's solve budget).
+ * The engine's contract: the model builds, the run ends either cleanly or with the ledger's own error
+ * (past CS_LEDGER_FAILURE, naming the term), never another error, and every response is finite. A
+ * broken contract aborts, so libFuzzer keeps the input.
+ *
+ * Build and run: make fuzz (FUZZ_SECONDS for each target). A kept input replays with
+ * build-fuzz/fuzz_engine FILE. */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "design.h"
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+static void broken(const design *d, const char *what) {
+    fprintf(stderr, "fuzz_engine: %s: %s\n", d->what, what);
+    abort();
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
+    design d;
+    design_source src = {0x5eed0000ULL, data, size, 0};
+    design_make(-1, &src, &d);
+    cs_error err = {0};
+    cs_model *m = cs_model_create(&d.fx.barrier, &d.fx.vehicle, &d.fx.scenario, &err);
+    if (!m) broken(&d, err.message); /* every generated design is valid */
+    cs_state *s = cs_state_create(m, &err);
+    if (!s) broken(&d, err.message);
+    cs_status st = cs_run(m, s, NULL, NULL, &err);
+    if (st != CS_OK && !(st == CS_ERR_UNSTABLE && strstr(err.message, "energy ledger")))
+        broken(&d, err.message);
+    cs_summary sm;
+    cs_state_summary(s, &sm);
+    const double r[] = {sm.max_decel_50ms_g, sm.max_dynamic_penetration, sm.max_barrier_deflection,
+                        sm.energy_balance_error, sm.max_cable_tension};
+    for (size_t i = 0; i < sizeof r / sizeof *r; i++)
+        if (!isfinite(r[i])) broken(&d, "a response is not finite");
+    cs_state_free(s);
+    cs_model_free(m);
+    return 0;
+}
