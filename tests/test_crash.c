@@ -1,6 +1,6 @@
 /* A full APS3-like crash (tests/fixture.h): the energy ledger balances, every response parameter is
  * finite, two runs hash to the same final state (determinism), and the run is converged in time. And
- * a 300-post barrier whose solves converge. */
+ * a 300-post barrier whose solves converge; a run past its solve budget ends did_not_converge. */
 #include "check.h"
 #include "fixture.h"
 
@@ -90,9 +90,35 @@ static void long_barrier_solves_converge(void **state) {
     free(posts);
 }
 
+/* A run that spends its solve budget ends did_not_converge with what it has, at once: APS3 on a budget of
+ * 0.02 solves a step to t_end (120 in all) stops after about a hundred steps (it makes one or two a step),
+ * cleanly, its responses finite. */
+static void a_spent_solve_budget_ends_the_run(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    fx.scenario.solve_budget = 0.02;
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    cs_state *s = cs_state_create(m, &err);
+    assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
+    cs_summary sm;
+    cs_state_summary(s, &sm);
+    assert_int_equal(sm.outcome, CS_DID_NOT_CONVERGE);
+    double budget = 0.02 * ceil(fx.scenario.t_end / fx.scenario.dt);
+    /* past the budget at its first solve over it: under one solve a step, at most budget steps */
+    assert_true(sm.t > 0.0 && sm.t <= budget * fx.scenario.dt + 1e-12);
+    assert_true(isfinite(sm.max_decel_50ms_g) && isfinite(sm.max_dynamic_penetration) &&
+                isfinite(sm.energy_balance_error));
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(ledger_balances_and_run_is_deterministic),
                                        cmocka_unit_test(refining_the_time_step_changes_little),
-                                       cmocka_unit_test(long_barrier_solves_converge)};
+                                       cmocka_unit_test(long_barrier_solves_converge),
+                                       cmocka_unit_test(a_spent_solve_budget_ends_the_run)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
