@@ -124,9 +124,19 @@ static int wraps(const cs_state *s, const cs_cable_state *cs, int i, int k) {
 static void update_cable(const cs_model *model, cs_state *s, int c) {
     cs_cable_state *cs = &s->cables[c];
     cs_contact_place_corners(model, s, s->crush);
-    for (int i = cs->node_count - 2; i >= 1; i--) /* release the corners it no longer wraps */
-        if (cs_node_is_corner(cs->node[i]) && !wraps(s, cs, i, cs_node_corner(cs->node[i])))
-            cs_cable_remove_node(cs, i);
+    /* release the corners it no longer wraps, keeping where the rope was on each: a corner taken up again
+     * below (its turn can point out through the side and back within an update, as on a rope rising from
+     * an anchor at grade under the body) goes on from there, not from a contact set afresh, whose move
+     * back would be booked as a slide against friction that the rope never made (or a slide missed) */
+    int released[CS_CORNERS] = {0};
+    double was_m[CS_CORNERS], was_m_commit[CS_CORNERS];
+    for (int i = cs->node_count - 2; i >= 1; i--) {
+        if (!cs_node_is_corner(cs->node[i])) continue;
+        int k = cs_node_corner(cs->node[i]);
+        if (wraps(s, cs, i, k)) continue;
+        released[k] = 1, was_m[k] = cs->m[i], was_m_commit[k] = cs->m_commit[i];
+        cs_cable_remove_node(cs, i);
+    }
     /* engage corners that have crossed the path */
     for (int k = 0; k < CS_CORNERS; k++) {
         if (cs_cable_find_node(cs, cs_corner_node(k)) >= 0) continue;
@@ -150,9 +160,12 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
             slip(model, s, c, zn < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
             return;
         }
-        cs->corner_z[k] = cs->corner_z_commit[k] = bz;
+        if (!released[k]) cs->corner_z[k] = cs->corner_z_commit[k] = bz;
         cs_vehicle_corner_point(model, s, s->crush, k, cs->corner_z[k], p);
         cs_cable_insert_node(cs, j, cs_corner_node(k), p);
+        if (released[k] && was_m[k] > cs->m[j - 1] && was_m[k] < cs->m[j + 1] &&
+            was_m_commit[k] > cs->m_commit[j - 1] && was_m_commit[k] < cs->m_commit[j + 1])
+            cs->m[j] = was_m[k], cs->m_commit[j] = was_m_commit[k];
     }
     cs->engaged = 0;
     for (int i = 1; i + 1 < cs->node_count; i++)

@@ -69,11 +69,15 @@ static void random_designs_run_clean(void **state) {
  * solves failed each made up to 1e-3 of the energy scale (+2.9% over five steps) until that allowance
  * was scaled to the piece's length, and 64ths committed at residuals near 1e-3 made about 5 J each
  * (+2.6%) until every 64th that missed the solver tolerance was checked (docs/theory.md, "A step", no wild
- * iterate). */
+ * iterate); 57, 525, 767 and 932, struck beside the start anchor, where the front corner nearer the
+ * anchor was let go (the rope rising from the anchor at grade under the body turns out through the side
+ * there) and taken up again at every update, each time from a contact set afresh, so that its slides
+ * were booked from the wrong place (-3.0%, -3.6%, -4.4% and the 5% stop) until a corner taken up again
+ * went on from where the rope was on it (docs/theory.md, Contact). */
 static void kept_designs_balance(void **state) {
     (void)state;
-    const int kept[] = {76,   78,   99,   105,  142,  195,  583,  1648, 1804, 2004, 2346,
-                        3057, 4765, 5438, 5498, 6270, 6305, 7332, 7839, 7855, 9637};
+    const int kept[] = {57,   76,   78,   99,   105,  142,  195,  525,  583,  767,  932,  1648, 1804,
+                        2004, 2346, 3057, 4765, 5438, 5498, 6270, 6305, 7332, 7839, 7855, 9637};
     int failures = 0;
     for (size_t i = 0; i < sizeof kept / sizeof *kept; i++)
         failures += design_fails(kept[i]);
