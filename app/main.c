@@ -26,6 +26,7 @@ static const char usage[] =
     "       cablesim rate FILE --standard sd-std-02.01|sd-std-02.01a|astm-f2656 [--class M50|K8]\n"
     "       cablesim rate FILE --standard nchrp-350|mash [--level 3|4 | --test 3-11]\n"
     "       cablesim validate [-o DIR]   the validation suite: DIR/validation.md and .csv\n"
+    "       cablesim compare RUN... [--measured FILE.csv] [-o DIR]   runs and a measured history side by side\n"
     "       cablesim list      the named parts of the library (data/*.yaml)\n"
     "       cablesim schema    the model-file reference (docs/file-format.md)\n"
     "       cablesim --help | --version\n"
@@ -249,6 +250,7 @@ int main(int argc, char **argv) {
         return cs_sweep_check_command(argc, argv);
     if (strcmp(cmd, "rate") == 0) return cs_command_rate(argc, argv);
     if (strcmp(cmd, "validate") == 0) return cs_command_validate(argc, argv);
+    if (strcmp(cmd, "compare") == 0) return cs_command_compare(argc, argv);
     int is_run = strcmp(cmd, "run") == 0, is_check = strcmp(cmd, "check") == 0;
     if (!is_run && !is_check && strcmp(cmd, "list") != 0) return bad_usage("unknown command");
     char why[256];

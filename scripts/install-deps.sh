@@ -9,6 +9,8 @@ pkgs=(build-essential cmake pkg-config clang libclang-rt-14-dev llvm-14 libyaml-
 pkgs+=(libopenmpi-dev openmpi-bin)
 # libnetcdf-dev: the sweep's runs.nc (netCDF C library); netcdf-bin: ncdump, which its shell test reads it with.
 pkgs+=(libnetcdf-dev netcdf-bin)
+# libjson-c-dev: cablesim compare reads each run's summary.json.
+pkgs+=(libjson-c-dev)
 # report.html (report/): node and npm build its page (Debian's only where none is installed: a newer one
 # may be); Debian's chromium and chromium-driver run its browser test.
 pkgs+=(chromium chromium-driver)

@@ -1,0 +1,96 @@
+/* `cablesim compare RUN... [--measured FILE.csv] [-o DIR]`: runs (folders written by `cablesim run`)
+ * and optionally a measured history side by side: DIR/compare.csv, compare.md, compare.html and
+ * plots/compare-*.png and .svg (out/compare.h). Every input is read before anything is written; a
+ * failure leaves nothing. */
+#define _POSIX_C_SOURCE 200809L
+#include <getopt.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "commands.h"
+#include "load/runread.h"
+#include "load/units.h"
+#include "out/compare.h"
+#include "out/outfile.h"
+
+enum { MAX_RUNS = 12 };
+
+static const char usage[] =
+    "usage: cablesim compare RUN... [--measured FILE.csv] [-o DIR]\n"
+    "\n"
+    "Puts runs (folders written by cablesim run) side by side, and a measured time history if given:\n"
+    "DIR/compare.html (one page: the table and the plots), compare.csv and compare.md (the response\n"
+    "parameters, each run's difference from the reference in %), plots/compare-*.png and .svg (the\n"
+    "deceleration raw and over 50 ms, the speed, the penetration and the largest rope tension against\n"
+    "time). The reference is the measured history, else the first run. Default DIR: results/compare.\n"
+    "The measured file is a CSV file whose header names each column with its unit, \"name [unit]\" or\n"
+    "\"name (unit)\": the time first, then any of a deceleration (g, m/s^2), a speed (mph, km/h, m/s),\n"
+    "a penetration (ft, m) and a rope tension (kip, kN); its 50-ms deceleration is found from its speed\n"
+    "(or its deceleration) as a run's is. At most 12 runs.\n";
+
+static int bad(const char *fmt, const char *what) {
+    fputs("cablesim compare: ", stderr);
+    fprintf(stderr, fmt, what);
+    fprintf(stderr, "\n%s", usage);
+    return 2;
+}
+
+int cs_command_compare(int argc, char **argv) {
+    static const struct option options[] = {
+        {"measured", required_argument, NULL, 'm'}, {"help", no_argument, NULL, 'h'}, {NULL, 0, NULL, 0}};
+    const char *measured = NULL, *dir = "results/compare";
+    optind = 2;
+    opterr = 0;
+    for (int c; (c = getopt_long(argc, argv, "o:h", options, NULL)) != -1;) {
+        if (c == 'h') {
+            fputs(usage, stdout);
+            return 0;
+        }
+        if (c == 'm')
+            measured = optarg;
+        else if (c == 'o')
+            dir = optarg;
+        else if (optopt == 'o' || optopt == 'm')
+            return bad("%s lacks its value", optopt == 'o' ? "-o" : "--measured");
+        else
+            return bad("unknown option '%s'", argv[optind - 1]);
+    }
+    int runs = argc - optind;
+    if (runs < 1) return bad("%s", "no run to compare");
+    if (runs > MAX_RUNS) return bad("%s", "more than 12 runs");
+    cs_trace traces[MAX_RUNS + 1];
+    int count = 0, rc = 2;
+    char why[1024];
+    cs_units *units = NULL;
+    for (int i = optind; i < argc; i++, count++)
+        if (cs_trace_read_run(argv[i], &traces[count], why, sizeof why) != 0) {
+            fprintf(stderr, "cablesim compare: %s\n", why);
+            goto done;
+        }
+    if (measured) {
+        if (!(units = cs_units_create(why, sizeof why)) ||
+            cs_trace_read_measured(measured, units, &traces[count], why, sizeof why) != 0) {
+            fprintf(stderr, "cablesim compare: %s\n", why);
+            goto done;
+        }
+        count++;
+    }
+    cs_outdir out;
+    rc = 1;
+    if (cs_out_open(&out, dir, why, sizeof why) != 0 ||
+        cs_compare_write(&out, traces, count, measured ? count - 1 : 0, why, sizeof why) != 0 ||
+        cs_out_commit(&out, why, sizeof why) != 0) {
+        cs_out_abort(&out);
+        fprintf(stderr, "cablesim compare: nothing written: %s\n", why);
+        goto done;
+    }
+    printf("compared %d run%s%s: %s/{compare.html,compare.csv,compare.md,plots/compare-*.png,.svg}\n", runs,
+           runs == 1 ? "" : "s", measured ? " and a measured history" : "", dir);
+    rc = 0;
+done:
+    for (int k = 0; k < count; k++)
+        cs_trace_free(&traces[k]);
+    cs_units_free(units);
+    return rc;
+}

@@ -1,0 +1,391 @@
+#define _POSIX_C_SOURCE 200809L
+#include "load/runread.h"
+
+#include <errno.h>
+#include <json-c/json.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define GRAVITY 9.80665 /* m/s^2 per g */
+#define WINDOW 0.050    /* s, the 50-ms average */
+
+/* ---- a CSV file in memory ---- */
+
+typedef struct csv_file {
+    char *text;
+    size_t size;
+} csv_file;
+
+static int read_all(const char *path, csv_file *f, char *why, size_t why_size) {
+    FILE *in = fopen(path, "rb");
+    if (!in) {
+        snprintf(why, why_size, "%s: %s", path, strerror(errno));
+        return -1;
+    }
+    size_t cap = 1 << 16, n = 0;
+    char *buf = malloc(cap);
+    for (size_t got; buf && (got = fread(buf + n, 1, cap - n - 1, in)) > 0;) {
+        n += got;
+        if (n + 1 == cap) {
+            char *more = realloc(buf, cap *= 2);
+            if (!more) free(buf);
+            buf = more;
+        }
+    }
+    int bad = ferror(in);
+    fclose(in);
+    if (!buf || bad) {
+        free(buf);
+        snprintf(why, why_size, "%s: %s", path, buf ? "read error" : "out of memory");
+        return -1;
+    }
+    buf[n] = '\0';
+    f->text = buf, f->size = n;
+    return 0;
+}
+
+/* Split the line at *p (ending at '\n' or '\0') into at most max cells, NUL-terminating each in place;
+ * *p moves to the next line. Returns the number of cells; col[] gets each cell's 1-based column. */
+static int split_line(char **p, char **cells, int *col, int max) {
+    char *s = *p, *start = s;
+    int n = 0;
+    char *end = strchr(s, '\n');
+    if (end) *end = '\0';
+    char *next = end ? end + 1 : s + strlen(s);
+    size_t len = strlen(s);
+    if (len > 0 && s[len - 1] == '\r') s[len - 1] = '\0';
+    while (n < max) {
+        cells[n] = s, col[n] = (int)(s - start) + 1;
+        n++;
+        char *comma = strchr(s, ',');
+        if (!comma) break;
+        *comma = '\0';
+        s = comma + 1;
+    }
+    *p = next;
+    return n;
+}
+
+static int column_of(char *const *names, int n, const char *name) {
+    for (int i = 0; i < n; i++)
+        if (strcmp(names[i], name) == 0) return i;
+    return -1;
+}
+
+static int alloc_trace(cs_trace *tr, size_t rows) {
+    tr->t = malloc((rows ? rows : 1) * sizeof *tr->t);
+    int ok = tr->t != NULL;
+    for (int k = 0; k < CS_TRACE_COUNT; k++) {
+        tr->y[k] = malloc((rows ? rows : 1) * sizeof *tr->y[k]);
+        ok = ok && tr->y[k];
+        for (size_t i = 0; tr->y[k] && i < rows; i++)
+            tr->y[k][i] = NAN;
+    }
+    return ok ? 0 : -1;
+}
+
+static void clear(cs_trace *tr, const char *label, int measured) {
+    memset(tr, 0, sizeof *tr);
+    snprintf(tr->label, sizeof tr->label, "%s", label);
+    tr->measured = measured;
+    tr->max_decel_50ms_g = tr->t_max_decel_50ms = tr->max_penetration = tr->final_speed = NAN;
+    tr->max_tension = tr->t_end = tr->max_deflection = tr->working_width = tr->exit_speed = NAN;
+}
+
+void cs_trace_free(cs_trace *tr) {
+    free(tr->t);
+    for (int k = 0; k < CS_TRACE_COUNT; k++)
+        free(tr->y[k]);
+    memset(tr, 0, sizeof *tr);
+}
+
+/* y at time `when` (t[0] <= when), interpolated; *j, the row at or before it, only moves forward. */
+static double value_at(const double *t, const double *y, size_t n, size_t *j, double when) {
+    while (*j + 1 < n && t[*j + 1] <= when)
+        (*j)++;
+    if (*j + 1 >= n) return y[*j];
+    return y[*j] + (when - t[*j]) / (t[*j + 1] - t[*j]) * (y[*j + 1] - y[*j]);
+}
+
+void cs_trace_average_50ms(const double *t, const double *decel, size_t n, double *avg) {
+    /* I(t), the integral of the deceleration taken as linear between rows (the trapezoid rule, and
+     * within a row's interval to t - W): avg(t) = (I(t) - I(t - W)) / W, exact for a piecewise-linear
+     * history */
+    double *in = malloc((n ? n : 1) * sizeof *in);
+    size_t j = 0;
+    for (size_t i = 0; in && i < n; i++)
+        in[i] = i == 0 ? 0.0 : in[i - 1] + 0.5 * (decel[i] + decel[i - 1]) * (t[i] - t[i - 1]);
+    for (size_t i = 0; i < n; i++) {
+        double from = t[i] - WINDOW;
+        if (!in || from < t[0] - 1e-12) {
+            avg[i] = NAN;
+            continue;
+        }
+        double d = value_at(t, decel, n, &j, from); /* the deceleration at t - W, and j its row */
+        avg[i] = (in[i] - in[j] - 0.5 * (decel[j] + d) * (from - t[j])) / WINDOW;
+    }
+    free(in);
+}
+
+/* The same from a speed history, as the engine has it: (u(t - W) - u(t)) / W. */
+static void average_from_speed(const double *t, const double *u, size_t n, double *avg) {
+    size_t j = 0;
+    for (size_t i = 0; i < n; i++)
+        avg[i] = t[i] - WINDOW >= t[0] - 1e-12 ? (value_at(t, u, n, &j, t[i] - WINDOW) - u[i]) / WINDOW : NAN;
+}
+
+/* The parameters a trace gives of itself, where its source did not give them. */
+static void derive(cs_trace *tr) {
+    if (tr->n == 0) return;
+    if (isnan(tr->t_end)) tr->t_end = tr->t[tr->n - 1];
+    if (isnan(tr->max_decel_50ms_g) && tr->have[CS_TRACE_DECEL_50MS])
+        for (size_t i = 0; i < tr->n; i++) {
+            double g = tr->y[CS_TRACE_DECEL_50MS][i] / GRAVITY;
+            if (isfinite(g) && !(g <= tr->max_decel_50ms_g))
+                tr->max_decel_50ms_g = g, tr->t_max_decel_50ms = tr->t[i];
+        }
+    if (isnan(tr->max_penetration) && tr->have[CS_TRACE_PENETRATION])
+        for (size_t i = 0; i < tr->n; i++)
+            if (isfinite(tr->y[CS_TRACE_PENETRATION][i]) &&
+                !(tr->y[CS_TRACE_PENETRATION][i] <= tr->max_penetration))
+                tr->max_penetration = tr->y[CS_TRACE_PENETRATION][i];
+    if (isnan(tr->max_tension) && tr->have[CS_TRACE_TENSION])
+        for (size_t i = 0; i < tr->n; i++)
+            if (isfinite(tr->y[CS_TRACE_TENSION][i]) && !(tr->y[CS_TRACE_TENSION][i] <= tr->max_tension))
+                tr->max_tension = tr->y[CS_TRACE_TENSION][i];
+    if (tr->have[CS_TRACE_SPEED])
+        for (size_t i = tr->n; i-- > 0;)
+            if (isfinite(tr->y[CS_TRACE_SPEED][i])) {
+                tr->final_speed = tr->y[CS_TRACE_SPEED][i];
+                break;
+            }
+}
+
+/* ---- a run's folder ---- */
+
+static double json_number(json_object *root, const char *key) {
+    json_object *v;
+    if (!json_object_object_get_ex(root, key, &v) || !v) return NAN;
+    enum json_type t = json_object_get_type(v);
+    return t == json_type_double || t == json_type_int ? json_object_get_double(v) : NAN;
+}
+
+static int read_summary(const char *dir, cs_trace *tr, char *why, size_t why_size) {
+    char path[1200];
+    snprintf(path, sizeof path, "%s/summary.json", dir);
+    FILE *probe = fopen(path, "rb");
+    if (!probe) {
+        snprintf(why, why_size, "%s: %s (expected a folder written by cablesim run)", path, strerror(errno));
+        return -1;
+    }
+    fclose(probe);
+    json_object *root = json_object_from_file(path);
+    if (!root || !json_object_is_type(root, json_type_object)) {
+        snprintf(why, why_size, "%s: not a summary of a run (%s)", path, json_util_get_last_err());
+        if (root) json_object_put(root);
+        return -1;
+    }
+    json_object *o;
+    if (json_object_object_get_ex(root, "outcome", &o) && json_object_is_type(o, json_type_string))
+        snprintf(tr->outcome, sizeof tr->outcome, "%s", json_object_get_string(o));
+    tr->max_decel_50ms_g = json_number(root, "max_50ms_decel_g");
+    tr->t_max_decel_50ms = json_number(root, "t_max_50ms_decel_s");
+    tr->max_penetration = json_number(root, "max_dynamic_penetration_m");
+    tr->max_deflection = json_number(root, "max_barrier_deflection_m");
+    tr->working_width = json_number(root, "working_width_m");
+    tr->exit_speed = json_number(root, "exit_speed_mps");
+    tr->max_tension = json_number(root, "max_cable_tension_n");
+    tr->t_end = json_number(root, "t_end_s");
+    json_object_put(root);
+    if (!tr->outcome[0]) {
+        snprintf(why, why_size, "%s: no outcome (expected a summary written by cablesim run)", path);
+        return -1;
+    }
+    return 0;
+}
+
+int cs_trace_read_run(const char *dir, cs_trace *tr, char *why, size_t why_size) {
+    clear(tr, dir, 0);
+    if (read_summary(dir, tr, why, why_size) != 0) return -1;
+    char path[1200];
+    snprintf(path, sizeof path, "%s/timeseries.csv", dir);
+    csv_file f;
+    if (read_all(path, &f, why, why_size) != 0) return -1;
+    size_t rows = 0;
+    for (size_t i = 0; i < f.size; i++)
+        rows += f.text[i] == '\n';
+    enum { MAX_COLS = 4096 };
+    char **cells = malloc(MAX_COLS * sizeof *cells), **head = malloc(MAX_COLS * sizeof *head);
+    int *col = malloc(MAX_COLS * sizeof *col), rc = -1;
+    char *p = f.text;
+    if (!cells || !head || !col || alloc_trace(tr, rows) != 0) {
+        snprintf(why, why_size, "%s: out of memory", path);
+        goto done;
+    }
+    int nh = split_line(&p, head, col, MAX_COLS);
+    int it = column_of(head, nh, "t_s"), ivx = column_of(head, nh, "vx_mps"),
+        ivy = column_of(head, nh, "vy_mps");
+    int iax = column_of(head, nh, "ax_mps2"), iay = column_of(head, nh, "ay_mps2");
+    int isp = column_of(head, nh, "forward_speed_mps"), id50 = column_of(head, nh, "decel_50ms_g");
+    int ipen = column_of(head, nh, "penetration_m");
+    if (it < 0 || ivx < 0 || ivy < 0 || iax < 0 || iay < 0 || isp < 0 || id50 < 0 || ipen < 0) {
+        snprintf(why, why_size, "%s:1:1: not a run's time history (expected t_s, vx_mps, ... penetration_m)",
+                 path);
+        goto done;
+    }
+    double u0[2] = {0.0, 0.0};
+    for (size_t line = 2; *p; line++) {
+        int nc = split_line(&p, cells, col, MAX_COLS);
+        if (nc == 1 && cells[0][0] == '\0') continue;
+        if (nc != nh) {
+            snprintf(why, why_size, "%s:%zu:1: %d cells, the header has %d", path, line, nc, nh);
+            goto done;
+        }
+        size_t i = tr->n++;
+        tr->t[i] = strtod(cells[it], NULL);
+        double vx = strtod(cells[ivx], NULL), vy = strtod(cells[ivy], NULL), v = hypot(vx, vy);
+        if (i == 0 && v > 0.0) u0[0] = vx / v, u0[1] = vy / v; /* the initial heading */
+        tr->y[CS_TRACE_DECEL][i] = -(strtod(cells[iax], NULL) * u0[0] + strtod(cells[iay], NULL) * u0[1]);
+        tr->y[CS_TRACE_DECEL_50MS][i] = strtod(cells[id50], NULL) * GRAVITY;
+        tr->y[CS_TRACE_SPEED][i] = strtod(cells[isp], NULL);
+        tr->y[CS_TRACE_PENETRATION][i] = strtod(cells[ipen], NULL);
+        double tmax = NAN;
+        for (int k = 0; k < nh; k++) /* the tautest rope at this time */
+            if (strncmp(head[k], "cable", 5) == 0 && strstr(head[k], "_max_tension_n")) {
+                double x = strtod(cells[k], NULL);
+                if (!(x <= tmax)) tmax = x;
+            }
+        tr->y[CS_TRACE_TENSION][i] = tmax;
+    }
+    for (int k = 0; k < CS_TRACE_COUNT; k++)
+        tr->have[k] = 1;
+    derive(tr);
+    rc = 0;
+done:
+    free(cells), free(head), free(col), free(f.text);
+    if (rc != 0) cs_trace_free(tr);
+    return rc;
+}
+
+/* ---- a measured history ---- */
+
+/* The unit of a header cell "name [unit]" or "name (unit)" into unit; the name's length, or -1. */
+static int header_unit(const char *cell, char *unit, size_t size) {
+    const char *open = strrchr(cell, '['), *close = strrchr(cell, ']');
+    if (!open || !close || close < open) open = strrchr(cell, '('), close = strrchr(cell, ')');
+    if (!open || !close || close < open + 1) return -1;
+    snprintf(unit, size, "%.*s", (int)(close - open - 1), open + 1);
+    return (int)(open - cell);
+}
+
+int cs_trace_read_measured(const char *path, cs_units *units, cs_trace *tr, char *why, size_t why_size) {
+    clear(tr, path, 1);
+    csv_file f;
+    if (read_all(path, &f, why, why_size) != 0) return -1;
+    size_t rows = 0;
+    for (size_t i = 0; i < f.size; i++)
+        rows += f.text[i] == '\n';
+    enum { MAX_COLS = 16 };
+    char *head[MAX_COLS], *cells[MAX_COLS], *p = f.text, unit[64], text[96];
+    int hcol[MAX_COLS], col[MAX_COLS], rc = -1, target[MAX_COLS];
+    double factor[MAX_COLS];
+    if (alloc_trace(tr, rows + 1) != 0) {
+        snprintf(why, why_size, "%s: out of memory", path);
+        goto done;
+    }
+    int nh = split_line(&p, head, hcol, MAX_COLS);
+    if (nh < 2) {
+        snprintf(why, why_size,
+                 "%s:1:1: a header of a time column and at least one more (expected e.g. "
+                 "\"time [s],deceleration [g]\")",
+                 path);
+        goto done;
+    }
+    static const cs_quantity kinds[] = {CS_Q_ACCELERATION, CS_Q_SPEED, CS_Q_LENGTH, CS_Q_FORCE};
+    static const int traces[] = {CS_TRACE_DECEL, CS_TRACE_SPEED, CS_TRACE_PENETRATION, CS_TRACE_TENSION};
+    for (int j = 0; j < nh; j++) {
+        char unit_why[256];
+        if (header_unit(head[j], unit, sizeof unit) < 0) {
+            snprintf(why, why_size, "%s:1:%d: '%s' has no unit (expected \"name [unit]\" or \"name (unit)\")",
+                     path, hcol[j], head[j]);
+            goto done;
+        }
+        snprintf(text, sizeof text, "1 %s", unit);
+        target[j] = -1;
+        if (j == 0) {
+            if (cs_units_read(units, text, CS_Q_TIME, &factor[0], unit_why, sizeof unit_why) != 0) {
+                snprintf(why, why_size, "%s:1:%d: the first column is the time: %s", path, hcol[0], unit_why);
+                goto done;
+            }
+            continue;
+        }
+        for (size_t k = 0; k < sizeof kinds / sizeof kinds[0] && target[j] < 0; k++)
+            if (cs_units_read(units, text, kinds[k], &factor[j], unit_why, sizeof unit_why) == 0)
+                target[j] = traces[k];
+        if (target[j] < 0) {
+            snprintf(why, why_size,
+                     "%s:1:%d: '%s' is not a unit of acceleration, speed, length or force (expected a "
+                     "deceleration, speed, penetration or rope tension)",
+                     path, hcol[j], unit);
+            goto done;
+        }
+        for (int i = 1; i < j; i++)
+            if (target[i] == target[j]) {
+                snprintf(why, why_size, "%s:1:%d: a second column of the same quantity as column %d", path,
+                         hcol[j], hcol[i]);
+                goto done;
+            }
+        tr->have[target[j]] = 1;
+    }
+    for (size_t line = 2; *p; line++) {
+        int nc = split_line(&p, cells, col, MAX_COLS);
+        if (nc == 1 && cells[0][0] == '\0') continue;
+        if (nc != nh) {
+            snprintf(why, why_size, "%s:%zu:1: %d cells, the header has %d", path, line, nc, nh);
+            goto done;
+        }
+        size_t i = tr->n;
+        for (int j = 0; j < nh; j++) {
+            char *end;
+            double x = strtod(cells[j], &end);
+            while (*end == ' ')
+                end++;
+            int blank = cells[j][strspn(cells[j], " ")] == '\0';
+            if ((*end != '\0' || !isfinite(x)) && !(blank && j > 0)) {
+                snprintf(why, why_size, "%s:%zu:%d: '%s' is not a number", path, line, col[j], cells[j]);
+                goto done;
+            }
+            if (j == 0)
+                tr->t[i] = x * factor[0];
+            else
+                tr->y[target[j]][i] = blank ? NAN : x * factor[j];
+        }
+        if (i > 0 && !(tr->t[i] > tr->t[i - 1])) {
+            snprintf(why, why_size,
+                     "%s:%zu:%d: the time goes back or stands (expected it to grow row by row)", path, line,
+                     col[0]);
+            goto done;
+        }
+        tr->n++;
+    }
+    if (tr->n < 2) {
+        snprintf(why, why_size, "%s:2:1: fewer than two rows of data", path);
+        goto done;
+    }
+    /* the 50-ms average as the engine takes it: from the speed if given, else from the deceleration */
+    if (tr->have[CS_TRACE_SPEED]) {
+        average_from_speed(tr->t, tr->y[CS_TRACE_SPEED], tr->n, tr->y[CS_TRACE_DECEL_50MS]);
+        tr->have[CS_TRACE_DECEL_50MS] = 1;
+    } else if (tr->have[CS_TRACE_DECEL]) {
+        cs_trace_average_50ms(tr->t, tr->y[CS_TRACE_DECEL], tr->n, tr->y[CS_TRACE_DECEL_50MS]);
+        tr->have[CS_TRACE_DECEL_50MS] = 1;
+    }
+    derive(tr);
+    rc = 0;
+done:
+    free(f.text);
+    if (rc != 0) cs_trace_free(tr);
+    return rc;
+}

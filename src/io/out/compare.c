@@ -1,0 +1,275 @@
+#define _POSIX_C_SOURCE 200809L
+#include "out/compare.h"
+
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "out/plot.h"
+
+/* ---- the plots ---- */
+
+typedef struct figure {
+    const char *name, *title, *ylabel, *y2label;
+    int trace;
+    double scale, y2_scale; /* y shown = SI value / scale; the right axis shows that times y2_scale */
+} figure;
+
+static const figure figures[] = {
+    {"compare-deceleration", "deceleration along the initial heading", "deceleration (g)", NULL,
+     CS_TRACE_DECEL, 9.80665, 0},
+    {"compare-deceleration-50ms", "50-ms average deceleration", "deceleration (g)", NULL, CS_TRACE_DECEL_50MS,
+     9.80665, 0},
+    {"compare-speed", "speed along the initial heading", "speed (m/s)", "speed (mph)", CS_TRACE_SPEED, 1.0,
+     1.0 / 0.44704},
+    {"compare-penetration", "penetration past the cable line", "penetration (m)", "penetration (ft)",
+     CS_TRACE_PENETRATION, 1.0, 1.0 / 0.3048},
+    {"compare-tension", "largest rope tension", "tension (kN)", "tension (kip)", CS_TRACE_TENSION, 1e3,
+     1e3 / 4448.2216152605},
+};
+enum { FIGURES = sizeof figures / sizeof figures[0], WIDTH = 960, HEIGHT = 520 };
+
+typedef struct plot_job {
+    const figure *fig;
+    const cs_trace *traces;
+    int count, reference;
+} plot_job;
+
+static int draw(cs_plot *p, const void *user, char *why, size_t why_size) {
+    const plot_job *job = user;
+    const figure *f = job->fig;
+    cs_axes a;
+    cs_axes_init(&a, f->title, "time (s)", f->ylabel);
+    a.y2label = f->y2label;
+    a.y2_scale = f->y2_scale;
+    size_t most = 0;
+    for (int k = 0; k < job->count; k++)
+        if (job->traces[k].n > most) most = job->traces[k].n;
+    double *y = malloc((most ? most : 1) * sizeof *y);
+    if (!y) {
+        snprintf(why, why_size, "out of memory");
+        return -1;
+    }
+    for (int pass = 0; pass < 2; pass++) { /* fit every trace, lay the axes out, then draw them */
+        for (int k = 0; k < job->count; k++) {
+            const cs_trace *tr = &job->traces[k];
+            if (!tr->have[f->trace]) continue;
+            for (size_t i = 0; i < tr->n; i++)
+                y[i] = tr->y[f->trace][i] / f->scale;
+            if (pass == 0) {
+                cs_axes_fit(&a, tr->t, y, (int)tr->n);
+                continue;
+            }
+            cs_style s = {tr->measured ? (cs_rgb){0.1, 0.1, 0.1} : cs_plot_palette(k),
+                          tr->measured ? 2.0 : 1.6, tr->measured ? CS_DASHED : CS_SOLID, CS_MARK_NONE, 0};
+            char label[CS_LABEL_SIZE];
+            snprintf(label, sizeof label, "%s%s", tr->label, tr->measured ? " (measured)" : "");
+            cs_plot_line(p, &a, tr->t, y, (int)tr->n, &s, label);
+        }
+        if (pass == 0) {
+            cs_axes_fit_point(&a, NAN, 0.0);
+            cs_axes_layout(p, &a, (cs_box){8, 8, p->width - 16, p->height - 16});
+        }
+    }
+    cs_plot_legend(p, &a, CS_LEGEND_TOP_RIGHT);
+    free(y);
+    return 0;
+}
+
+/* ---- the table ---- */
+
+typedef struct param {
+    const char *name, *unit, *us_unit;
+    double us_scale; /* the US value is SI / us_scale (0: none) */
+    size_t offset;   /* of the double in cs_trace */
+} param;
+
+#define P(name, unit, us, scale, member)                                                                     \
+    { name, unit, us, scale, offsetof(cs_trace, member) }
+static const param params[] = {
+    P("max 50-ms deceleration", "g", NULL, 0, max_decel_50ms_g),
+    P("time of the max 50-ms deceleration", "s", NULL, 0, t_max_decel_50ms),
+    P("max dynamic penetration", "m", "ft", 0.3048, max_penetration),
+    P("max barrier deflection", "m", "ft", 0.3048, max_deflection),
+    P("working width", "m", "ft", 0.3048, working_width),
+    P("speed at the end", "m/s", "mph", 0.44704, final_speed),
+    P("exit speed", "m/s", "mph", 0.44704, exit_speed),
+    P("max rope tension", "N", "kip", 4448.2216152605, max_tension),
+    P("end of the record", "s", NULL, 0, t_end),
+};
+enum { PARAMS = sizeof params / sizeof params[0] };
+
+static double value(const cs_trace *tr, int k) {
+    return *(const double *)((const char *)tr + params[k].offset);
+}
+
+/* The difference from the reference in per cent, NAN where either is not given or the reference is 0. */
+static double difference(const cs_trace *tr, const cs_trace *ref, int k) {
+    double x = value(tr, k), r = value(ref, k);
+    return isfinite(x) && isfinite(r) && r != 0.0 ? 100.0 * (x - r) / fabs(r) : NAN;
+}
+
+static void csv_text(FILE *f, const char *s) {
+    fputc('"', f);
+    for (; *s; s++) {
+        if (*s == '"') fputc('"', f);
+        fputc(*s, f);
+    }
+    fputc('"', f);
+}
+
+static void write_csv(FILE *f, const cs_trace *tr, int count, int reference) {
+    fputs("parameter,unit", f);
+    for (int j = 0; j < count; j++)
+        fputc(',', f), csv_text(f, tr[j].label);
+    for (int j = 0; j < count; j++)
+        if (j != reference) {
+            char head[400];
+            snprintf(head, sizeof head, "%s against %s [%%]", tr[j].label, tr[reference].label);
+            fputc(',', f), csv_text(f, head);
+        }
+    fputs("\noutcome,", f);
+    for (int j = 0; j < count; j++)
+        fprintf(f, ",%s", tr[j].measured ? "" : tr[j].outcome);
+    for (int j = 0; j < count; j++)
+        if (j != reference) fputc(',', f);
+    fputc('\n', f);
+    for (int k = 0; k < PARAMS; k++) {
+        fprintf(f, "%s,%s", params[k].name, params[k].unit);
+        for (int j = 0; j < count; j++)
+            isfinite(value(&tr[j], k)) ? fprintf(f, ",%.10g", value(&tr[j], k)) : fputs(",", f);
+        for (int j = 0; j < count; j++) {
+            if (j == reference) continue;
+            double d = difference(&tr[j], &tr[reference], k);
+            isfinite(d) ? fprintf(f, ",%.4g", d) : fputs(",", f);
+        }
+        fputc('\n', f);
+    }
+}
+
+/* One cell of the readable table: "4.12 m (13.5 ft)", then "+3.1%" against the reference. */
+static void cell(char *buf, size_t size, const cs_trace *tr, const cs_trace *ref, int k, int is_ref) {
+    double x = value(tr, k), d = difference(tr, ref, k);
+    if (!isfinite(x)) {
+        snprintf(buf, size, "-");
+        return;
+    }
+    int n = params[k].us_scale > 0.0 ? snprintf(buf, size, "%.3f %s (%.2f %s)", x, params[k].unit,
+                                                x / params[k].us_scale, params[k].us_unit)
+                                     : snprintf(buf, size, "%.3f %s", x, params[k].unit);
+    if (strcmp(params[k].unit, "N") == 0) /* tensions in kN */
+        n = snprintf(buf, size, "%.1f kN (%.1f kip)", x / 1e3, x / params[k].us_scale);
+    if (!is_ref && isfinite(d) && n > 0 && (size_t)n < size)
+        snprintf(buf + n, size - (size_t)n, ", %+.1f%%", d);
+}
+
+static void html_text(FILE *f, const char *s) {
+    for (; *s; s++)
+        if (*s == '<')
+            fputs("&lt;", f);
+        else if (*s == '>')
+            fputs("&gt;", f);
+        else if (*s == '&')
+            fputs("&amp;", f);
+        else
+            fputc(*s, f);
+}
+
+/* The table as Markdown (html 0) or as an HTML table (html 1). */
+static void write_table(FILE *f, const cs_trace *tr, int count, int reference, int html) {
+    char buf[160];
+    const char *row = html ? "<tr>" : "|", *sep = html ? "" : " |", *end = html ? "</tr>\n" : "\n";
+    fputs(row, f);
+    fputs(html ? "<th>parameter</th>" : " parameter |", f);
+    for (int j = 0; j < count; j++) {
+        fputs(html ? "<th>" : " ", f);
+        html ? html_text(f, tr[j].label) : (void)fputs(tr[j].label, f);
+        fprintf(f, "%s%s%s", tr[j].measured ? " (measured)" : "", j == reference ? " (reference)" : "",
+                html ? "</th>" : sep);
+    }
+    fputs(end, f);
+    if (!html) {
+        fputs("| ---", f);
+        for (int j = 0; j < count; j++)
+            fputs(" | ---", f);
+        fputs(" |\n", f);
+    }
+    fputs(row, f);
+    fputs(html ? "<td>outcome</td>" : " outcome |", f);
+    for (int j = 0; j < count; j++)
+        fprintf(f, "%s%s%s", html ? "<td>" : " ", tr[j].measured ? "-" : tr[j].outcome, html ? "</td>" : sep);
+    fputs(end, f);
+    for (int k = 0; k < PARAMS; k++) {
+        fprintf(f, "%s%s%s%s", row, html ? "<td>" : " ", params[k].name, html ? "</td>" : sep);
+        for (int j = 0; j < count; j++) {
+            cell(buf, sizeof buf, &tr[j], &tr[reference], k, j == reference);
+            fprintf(f, "%s%s%s", html ? "<td>" : " ", buf, html ? "</td>" : sep);
+        }
+        fputs(end, f);
+    }
+}
+
+/* ---- the files ---- */
+
+static int finish(cs_outdir *out, FILE *f, int rc, char *why, size_t why_size) {
+    char end_why[512];
+    if (cs_out_end(out, f, end_why, sizeof end_why) != 0 && rc == 0) {
+        snprintf(why, why_size, "%s", end_why);
+        rc = -1;
+    }
+    return rc;
+}
+
+int cs_compare_write(cs_outdir *out, const cs_trace *traces, int count, int reference, char *why,
+                     size_t why_size) {
+    FILE *f = cs_out_begin(out, "compare.csv", why, why_size);
+    if (!f) return -1;
+    write_csv(f, traces, count, reference);
+    if (finish(out, f, 0, why, why_size) != 0) return -1;
+    if (!(f = cs_out_begin(out, "compare.md", why, why_size))) return -1;
+    fprintf(f, "# Comparison\n\nDifferences are against %s%s.\n\n", traces[reference].label,
+            traces[reference].measured ? " (measured)" : "");
+    write_table(f, traces, count, reference, 0);
+    if (finish(out, f, 0, why, why_size) != 0) return -1;
+    if (cs_out_subdir(out, "plots", why, why_size) != 0) return -1;
+    static const cs_plot_format formats[] = {CS_PLOT_PNG, CS_PLOT_SVG};
+    for (int k = 0; k < FIGURES; k++)
+        for (int j = 0; j < 2; j++) {
+            char name[128];
+            snprintf(name, sizeof name, "plots/%s.%s", figures[k].name, cs_plot_extension(formats[j]));
+            if (!(f = cs_out_begin(out, name, why, why_size))) return -1;
+            plot_job job = {&figures[k], traces, count, reference};
+            int rc = cs_plot_write(f, formats[j], WIDTH, HEIGHT, draw, &job, why, why_size);
+            if (finish(out, f, rc, why, why_size) != 0) return -1;
+        }
+    /* the page: the table and each plot's SVG inline, so it opens from disk alone */
+    if (!(f = cs_out_begin(out, "compare.html", why, why_size))) return -1;
+    fputs("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>cablesim: "
+          "comparison</title>\n"
+          "<style>body{font-family:sans-serif;margin:1.5em;max-width:1000px}table{border-collapse:collapse}"
+          "td,th{border:1px solid #bbb;padding:3px 8px;text-align:left}svg{max-width:100%;height:auto}"
+          "</style></head><body>\n<h1>Comparison</h1>\n<p>Differences are against ",
+          f);
+    html_text(f, traces[reference].label);
+    fprintf(f, "%s.</p>\n<table>\n", traces[reference].measured ? " (measured)" : "");
+    write_table(f, traces, count, reference, 1);
+    fputs("</table>\n", f);
+    int rc = 0;
+    for (int k = 0; k < FIGURES && rc == 0; k++) {
+        fprintf(f, "<h2>%s</h2>\n", figures[k].title);
+        char *svg = NULL;
+        size_t svg_size = 0;
+        FILE *mem = open_memstream(&svg, &svg_size);
+        plot_job job = {&figures[k], traces, count, reference};
+        rc = mem ? cs_plot_write(mem, CS_PLOT_SVG, WIDTH, HEIGHT, draw, &job, why, why_size) : -1;
+        if (mem) fclose(mem);
+        if (!mem) snprintf(why, why_size, "out of memory");
+        const char *start = svg ? strstr(svg, "<svg") : NULL; /* without the XML declaration */
+        if (rc == 0 && start) fputs(start, f);
+        free(svg);
+    }
+    fputs("</body></html>\n", f);
+    return finish(out, f, rc, why, why_size);
+}

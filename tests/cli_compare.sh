@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# cablesim compare: two runs and a measured history made from the first (time in ms, speed in mph,
+# penetration in ft): the measured history's 50-ms deceleration, found from its speed by the engine's
+# rule, equals the run's to 0.1% and every difference of that run from it is under 0.1%; the slower run
+# differs; the page holds the table and five plots; bad input exits 2 naming the place, and writes nothing.
+source "$(dirname "$0")/lib.sh"
+"$cs" run examples/aps3.yaml -o "$tmp/a" >/dev/null 2>&1
+"$cs" run examples/aps3.yaml -o "$tmp/b" --set 'scenario.speed=35 mph' >/dev/null 2>&1
+awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; print "time [ms],speed [mph],penetration (ft)"; next }
+         { printf "%.6f,%.9f,%.9f\n", $c["t_s"] * 1000, $c["forward_speed_mps"] / 0.44704, $c["penetration_m"] / 0.3048 }' \
+    "$tmp/a/timeseries.csv" >"$tmp/measured.csv"
+out=$("$cs" compare "$tmp/a" "$tmp/b" --measured "$tmp/measured.csv" -o "$tmp/cmp" 2>&1)
+check "compare runs (exit 0)" '[ $? -eq 0 ]'
+csv="$tmp/cmp/compare.csv"
+# column 3: run a, 4: run b, 5: measured, 6 and 7: a and b against the measured history in %
+value() { awk -F, -v p="$1" -v c="$2" '$1 == p { print $c }' "$csv"; }
+check "the measured 50-ms deceleration is the run's (0.1%)" \
+    'awk -v a="$(value "max 50-ms deceleration" 3)" -v m="$(value "max 50-ms deceleration" 5)" "BEGIN { exit !(a > 1 && (a - m) / a < 1e-3 && (m - a) / a < 1e-3) }"'
+for p in "max 50-ms deceleration" "max dynamic penetration" "speed at the end"; do
+    check "run a against the measured history: $p under 0.1%" \
+        'awk -v d="$(value "$p" 6)" "BEGIN { exit !(d != \"\" && d < 0.1 && d > -0.1) }"'
+done
+check "run b (35 mph) differs in its 50-ms deceleration by over 5%" \
+    'awk -v d="$(value "max 50-ms deceleration" 7)" "BEGIN { exit !(d < -5) }"'
+check "outcomes in the table" 'grep -q "^outcome,,breakthrough,breakthrough," "$csv"'
+check "the page has the table and five plots" \
+    '[ "$(grep -o "<svg" "$tmp/cmp/compare.html" | wc -l)" -eq 5 ] && grep -q "<table>" "$tmp/cmp/compare.html"'
+check "five PNG and five SVG plots" '[ "$(ls "$tmp/cmp/plots" | grep -c "^compare-.*\.png$")" -eq 5 ] && [ "$(ls "$tmp/cmp/plots" | grep -c "^compare-.*\.svg$")" -eq 5 ]'
+# bad input
+printf 'time [s],speed [kg]\n0,1\n0.001,1\n' >"$tmp/badunit.csv"
+out=$("$cs" compare "$tmp/a" --measured "$tmp/badunit.csv" -o "$tmp/bad1" 2>&1)
+rc=$?
+check "a unit of no compared quantity exits 2 at line 1, column 10" \
+    '[ $rc -eq 2 ] && grep -q "badunit.csv:1:10: .kg. is not a unit of acceleration, speed, length or force" <<<"$out" && [ ! -e "$tmp/bad1" ]'
+printf 'time [s],speed [mph]\n0,40\n0.002,x\n' >"$tmp/badcell.csv"
+out=$("$cs" compare "$tmp/a" --measured "$tmp/badcell.csv" -o "$tmp/bad2" 2>&1)
+check "a cell that is not a number exits 2 at its place" '[ $? -eq 2 ] && grep -q "badcell.csv:3:7: .x. is not a number" <<<"$out"'
+printf 'time [s],speed [mph]\n0,40\n0,39\n' >"$tmp/back.csv"
+out=$("$cs" compare "$tmp/a" --measured "$tmp/back.csv" -o "$tmp/bad3" 2>&1)
+check "time that does not grow exits 2" '[ $? -eq 2 ] && grep -q "back.csv:3:1: the time goes back or stands" <<<"$out"'
+out=$("$cs" compare "$tmp/nothing" -o "$tmp/bad4" 2>&1)
+check "a missing run folder exits 2 with the system's reason" '[ $? -eq 2 ] && grep -q "nothing/summary.json: No such file or directory" <<<"$out"'
+out=$("$cs" compare "$tmp/a" --frobnicate 2>&1)
+check "an unknown option is named (exit 2)" '[ $? -eq 2 ] && grep -q "unknown option .--frobnicate." <<<"$out"'
+"$cs" compare --help >/dev/null 2>&1
+check "--help exits 0" '[ $? -eq 0 ]'
+finish

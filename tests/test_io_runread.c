@@ -1,0 +1,72 @@
+/* Results read back for comparison (load/runread.h): the 50-ms average of a deceleration history against
+ * its closed forms (a constant, a ramp, on an uneven time grid), and a measured file's units, read in SI. */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include <cmocka.h>
+
+#include "load/runread.h"
+
+/* avg(t) = (1/W) integral over [t - W, t]: a for a constant a, k (t - W/2) for a ramp k t; exact for the
+ * integral of a piecewise-linear history, whatever the grid. NAN before the first full window. */
+static void average_50ms_closed_forms(void **state) {
+    (void)state;
+    enum { N = 400 };
+    double t[N], a[N], r[N], avg[N];
+    for (int i = 0; i < N; i++) {
+        t[i] = 0.0005 * i + 0.0002 * (i % 3); /* uneven, increasing */
+        a[i] = 30.0, r[i] = 200.0 * t[i];
+    }
+    cs_trace_average_50ms(t, a, N, avg);
+    for (int i = 0; i < N; i++) {
+        if (t[i] < t[0] + 0.05 - 1e-12)
+            assert_true(isnan(avg[i]));
+        else if (fabs(avg[i] - 30.0) > 1e-9)
+            fail_msg("constant: t = %g s: %.12g, want 30", t[i], avg[i]);
+    }
+    cs_trace_average_50ms(t, r, N, avg);
+    for (int i = 0; i < N; i++)
+        if (t[i] >= t[0] + 0.05 && fabs(avg[i] - 200.0 * (t[i] - 0.025)) > 1e-9)
+            fail_msg("ramp: t = %g s: %.12g, want %.12g", t[i], avg[i], 200.0 * (t[i] - 0.025));
+}
+
+/* A measured file in ms, mph and ft: read in s, m/s and m; its 50-ms deceleration from its speed, a speed
+ * falling at 0.5 g giving 0.5 g after the first 50 ms. */
+static void measured_units_and_average(void **state) {
+    (void)state;
+    char path[] = "/tmp/cablesim-runread-XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    FILE *f = fdopen(fd, "w");
+    fputs("time [ms],speed [mph],penetration (ft)\n", f);
+    const double g = 9.80665, mph = 0.44704, ft = 0.3048;
+    for (int i = 0; i <= 200; i++) {
+        double ts = 0.001 * i;
+        fprintf(f, "%.6f,%.12f,%.12f\n", ts * 1e3, (20.0 - 0.5 * g * ts) / mph, 0.1 * i / ft);
+    }
+    fclose(f);
+    char why[512];
+    cs_units *u = cs_units_create(why, sizeof why);
+    assert_non_null(u);
+    cs_trace tr;
+    if (cs_trace_read_measured(path, u, &tr, why, sizeof why) != 0) fail_msg("%s", why);
+    assert_int_equal(tr.n, 201);
+    assert_true(fabs(tr.t[200] - 0.2) < 1e-12 && fabs(tr.y[CS_TRACE_SPEED][0] - 20.0) < 1e-9);
+    assert_true(fabs(tr.max_penetration - 20.0) < 1e-9);
+    assert_true(fabs(tr.max_decel_50ms_g - 0.5) < 1e-9);
+    assert_true(isnan(tr.y[CS_TRACE_DECEL_50MS][10]) && !tr.have[CS_TRACE_TENSION]);
+    cs_trace_free(&tr);
+    cs_units_free(u);
+    remove(path);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {cmocka_unit_test(average_50ms_closed_forms),
+                                       cmocka_unit_test(measured_units_and_average)};
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
