@@ -20,6 +20,7 @@
 
 #include "out/outfile.h"
 #include "out/plot.h"
+#include "out/studyreport.h"
 #include "out/sweepout.h"
 #include "study/sweep.h"
 #include "sweepcmd.h"
@@ -169,37 +170,45 @@ static int parse_opts(int argc, char **argv, sweep_opts *o, int rank) {
     return o->spec ? 0 : sweep_bad_usage(rank, "no spec file", NULL);
 }
 
-/* runs.csv, summary.md, summary.json, then the plots (files 3 on) and runs.nc, begun on out and renamed
- * together; nothing is left if one fails. */
+/* runs.csv, summary.md, summary.json, then the spec's plots (files 3 on), the study's own figures and
+ * report.html, and runs.nc, begun on out and renamed together; nothing is left if one fails. */
 static int write_all(const char *dir, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
                      long n) {
     char why[512] = "";
     cs_outdir out;
     int rc = cs_out_open(&out, dir, why, sizeof why);
     static const char *const names[] = {"runs.csv", "summary.md", "summary.json"};
-    if (rc == 0 && spec->plot_count > 0) rc = cs_out_subdir(&out, "plots", why, sizeof why);
-    for (int k = 0; rc == 0 && k < 3 + spec->plot_count; k++) {
+    if (rc == 0) rc = cs_out_subdir(&out, "plots", why, sizeof why);
+    int files = 3 + spec->plot_count, study = files; /* then the study's figures, then its page */
+    for (int k = 0; rc == 0 && k < study + CS_STUDY_FIGURES + 1; k++) {
         char name[256];
         if (k < 3)
             snprintf(name, sizeof name, "%s", names[k]);
-        else
+        else if (k < study)
             cs_sweep_plot_file(spec, k - 3, name, sizeof name);
+        else if (k < study + CS_STUDY_FIGURES)
+            cs_study_figure_file(k - study, name, sizeof name);
+        else
+            snprintf(name, sizeof name, "report.html");
         FILE *f = cs_out_begin(&out, name, why, sizeof why);
         if (!f) {
             rc = -1;
             break;
         }
-        rc = k == 0   ? cs_sweep_write_runs(f, spec, x, r, n, why, sizeof why)
-             : k == 1 ? cs_sweep_write_summary_md(f, spec, x, r, n, why, sizeof why)
-             : k == 2 ? cs_sweep_write_summary_json(f, spec, x, r, n, why, sizeof why)
-                      : cs_sweep_write_plot(f, spec, k - 3, x, r, n, why, sizeof why);
+        rc = k == 0      ? cs_sweep_write_runs(f, spec, x, r, n, why, sizeof why)
+             : k == 1    ? cs_sweep_write_summary_md(f, spec, x, r, n, why, sizeof why)
+             : k == 2    ? cs_sweep_write_summary_json(f, spec, x, r, n, why, sizeof why)
+             : k < study ? cs_sweep_write_plot(f, spec, k - 3, x, r, n, why, sizeof why)
+             : k < study + CS_STUDY_FIGURES
+                 ? cs_study_write_figure(f, CS_PLOT_PNG, k - study, spec, x, r, n, why, sizeof why)
+                 : cs_study_write_page(f, spec, x, r, n, why, sizeof why);
         char end_why[512];
         if (cs_out_end(&out, f, end_why, sizeof end_why) != 0 && rc == 0) {
             snprintf(why, sizeof why, "%s", end_why);
             rc = -1;
         }
     }
-    if (spec->plot_count > 0) cs_plot_release(); /* after the last plot */
+    cs_plot_release(); /* after the last plot */
     if (rc == 0 && spec->netcdf) {
         char path[1200], nc_why[200];
         rc = cs_out_begin_path(&out, "runs.nc", path, sizeof path, why, sizeof why);
@@ -442,7 +451,8 @@ int cs_sweep_command(int argc, char **argv) {
                    "the end\n",
                    n, wall, wall > 0 ? (double)n / wall : 0, size, size == 1 ? "" : "s", threads,
                    threads == 1 ? "" : "s", bad);
-            printf("outputs: %s/{runs.csv,summary.md,summary.json%s", dir, spec->netcdf ? ",runs.nc" : "");
+            printf("outputs: %s/{runs.csv,summary.md,summary.json,report.html,plots/study-*.png%s", dir,
+                   spec->netcdf ? ",runs.nc" : "");
             for (int k = 0; k < spec->plot_count; k++) {
                 char file[256];
                 cs_sweep_plot_file(spec, k, file, sizeof file);

@@ -47,9 +47,16 @@ check "plot: a PNG named y-vs-x" '[ "$(head -c 8 "$png" | od -An -tx1 | tr -d " 
 check "plot: the PNG is 1200 x 760 and not empty" '[ "$(head -c 24 "$png" | tail -c 8 | od -An -tx1 | tr -d " \n")" = 000004b0000002f8 ] && [ "$(stat -c %s "$png")" -gt 20000 ]'
 check "plot: format svg gives an SVG" 'head -c 200 "$svg" | grep -q "<svg" && tail -c 20 "$svg" | grep -q "</svg>"'
 check "plot: the same plots on 1 and 2 threads" 'cmp "$png" "$tmp/plot-2/plots/max_barrier_deflection-vs-spacing.png" && cmp "$svg" "$tmp/plot-2/plots/exit_speed-vs-spacing.svg"'
-check "plot: only the plots asked for" '[ "$(ls "$tmp/plot-1/plots" | tr "\n" " ")" = "exit_speed-vs-spacing.svg max_barrier_deflection-vs-spacing.png " ] && [ ! -e "$tmp/grid-1/plots" ]'
+check "plot: the plots asked for, and the study's own" '[ "$(ls "$tmp/plot-1/plots" | grep -v "^study-" | tr "\n" " ")" = "exit_speed-vs-spacing.svg max_barrier_deflection-vs-spacing.png " ] && [ "$(ls "$tmp/grid-1/plots" | grep -vc "^study-")" -eq 0 ]'
+# the study's own figures and page: the outcomes, and a histogram, a tornado chart and a scatter of each of
+# six responses; report.html holds them all and its outcome table agrees with runs.csv
+check "study: 19 PNG figures" '[ "$(ls "$tmp/lhs-1/plots" | grep -c "^study-.*\.png$")" -eq 19 ]'
+check "study: report.html has the 19 figures inline" '[ "$(grep -o "<svg" "$tmp/lhs-1/report.html" | wc -l)" -eq 19 ]'
+stopped=$(awk -F, 'NR > 1 && $5 == "stopped"' "$runs" | wc -l)
+check "study: report.html counts the stopped runs as runs.csv does" 'grep -q "<tr><td>stopped</td><td>$stopped</td>" "$tmp/lhs-1/report.html"'
+check "study: the same figures on 1 and 2 threads" 'cmp "$tmp/lhs-1/plots/study-outcomes.png" "$tmp/lhs-2/plots/study-outcomes.png" && cmp "$tmp/lhs-1/report.html" "$tmp/lhs-2/report.html"'
 check "plot: summary.md names each plot, what it shows and what it leaves out" 'grep -qxF -- "- \`plots/max_barrier_deflection-vs-spacing.png\`: max_barrier_deflection against barrier.posts[0].spacing, a line per vehicle: 6 of 6 runs shown, 0 broke through (marked with a cross); left out: 0 that did not run to the end." "$tmp/plot-1/summary.md" && grep -qxF -- "- \`plots/exit_speed-vs-spacing.svg\`: exit_speed against barrier.posts[0].spacing, a line per vehicle: 0 of 6 runs shown, 0 broke through (marked with a cross); left out: 0 that did not run to the end, 6 with no exit_speed." "$tmp/plot-1/summary.md"'
-check "plot: the outputs line names the plots" 'grep -qxF "outputs: $tmp/plot-1/{runs.csv,summary.md,summary.json,plots/max_barrier_deflection-vs-spacing.png,plots/exit_speed-vs-spacing.svg}" "$tmp/plot-1.out"'
+check "plot: the outputs line names the plots" 'grep -qxF "outputs: $tmp/plot-1/{runs.csv,summary.md,summary.json,report.html,plots/study-*.png,plots/max_barrier_deflection-vs-spacing.png,plots/exit_speed-vs-spacing.svg}" "$tmp/plot-1.out"'
 check "plot: the runs are the grid's, spacing slowest" '[ "$(cut -d, -f2,3 "$tmp/plot-1/runs.csv" | tail -n +2 | tr "\n" " ")" = "4,2270P 4,1100C 2,2270P 2,1100C 6,2270P 6,1100C " ]'
 sed "s|^model: .*|model: $PWD/examples/aps3.yaml|" tests/sweep/mc.yaml >"$tmp/mc-plot.yaml"
 printf 'plot:\n  x: scenario.impact_x\n  y: max_cable_tension\n  format: pdf\n' >>"$tmp/mc-plot.yaml"

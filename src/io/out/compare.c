@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "out/html.h"
 #include "out/plot.h"
 
 /* ---- the plots ---- */
@@ -165,18 +166,6 @@ static void cell(char *buf, size_t size, const cs_trace *tr, const cs_trace *ref
         snprintf(buf + n, size - (size_t)n, ", %+.1f%%", d);
 }
 
-static void html_text(FILE *f, const char *s) {
-    for (; *s; s++)
-        if (*s == '<')
-            fputs("&lt;", f);
-        else if (*s == '>')
-            fputs("&gt;", f);
-        else if (*s == '&')
-            fputs("&amp;", f);
-        else
-            fputc(*s, f);
-}
-
 /* The table as Markdown (html 0) or as an HTML table (html 1). */
 static void write_table(FILE *f, const cs_trace *tr, int count, int reference, int html) {
     char buf[160];
@@ -185,7 +174,7 @@ static void write_table(FILE *f, const cs_trace *tr, int count, int reference, i
     fputs(html ? "<th>parameter</th>" : " parameter |", f);
     for (int j = 0; j < count; j++) {
         fputs(html ? "<th>" : " ", f);
-        html ? html_text(f, tr[j].label) : (void)fputs(tr[j].label, f);
+        html ? cs_html_text(f, tr[j].label) : (void)fputs(tr[j].label, f);
         fprintf(f, "%s%s%s", tr[j].measured ? " (measured)" : "", j == reference ? " (reference)" : "",
                 html ? "</th>" : sep);
     }
@@ -252,23 +241,17 @@ int cs_compare_write(cs_outdir *out, const cs_trace *traces, int count, int refe
           "td,th{border:1px solid #bbb;padding:3px 8px;text-align:left}svg{max-width:100%;height:auto}"
           "</style></head><body>\n<h1>Comparison</h1>\n<p>Differences are against ",
           f);
-    html_text(f, traces[reference].label);
+    cs_html_text(f, traces[reference].label);
     fprintf(f, "%s.</p>\n<table>\n", traces[reference].measured ? " (measured)" : "");
     write_table(f, traces, count, reference, 1);
     fputs("</table>\n", f);
     int rc = 0;
     for (int k = 0; k < FIGURES && rc == 0; k++) {
         fprintf(f, "<h2>%s</h2>\n", figures[k].title);
-        char *svg = NULL;
-        size_t svg_size = 0;
-        FILE *mem = open_memstream(&svg, &svg_size);
+        char id[16];
+        snprintf(id, sizeof id, "f%d", k);
         plot_job job = {&figures[k], traces, count, reference};
-        rc = mem ? cs_plot_write(mem, CS_PLOT_SVG, WIDTH, HEIGHT, draw, &job, why, why_size) : -1;
-        if (mem) fclose(mem);
-        if (!mem) snprintf(why, why_size, "out of memory");
-        const char *start = svg ? strstr(svg, "<svg") : NULL; /* without the XML declaration */
-        if (rc == 0 && start) fputs(start, f);
-        free(svg);
+        rc = cs_html_figure(f, id, WIDTH, HEIGHT, draw, &job, why, why_size);
     }
     fputs("</body></html>\n", f);
     return finish(out, f, rc, why, why_size);

@@ -33,7 +33,10 @@ int cs_out_open(cs_outdir *out, const char *dir, char *why, size_t why_size) {
 int cs_out_subdir(cs_outdir *out, const char *subdir, char *why, size_t why_size) {
     char path[1200];
     snprintf(path, sizeof path, "%s/%s", out->dir, subdir);
-    if (mkdir(path, 0777) != 0 && errno != EEXIST) {
+    if (mkdir(path, 0777) == 0) {
+        if (out->created_count < 4 && strlen(subdir) < sizeof out->created[0])
+            snprintf(out->created[out->created_count++], sizeof out->created[0], "%s", subdir);
+    } else if (errno != EEXIST) {
         snprintf(why, why_size, "%s: %s", path, strerror(errno));
         return -1;
     }
@@ -109,5 +112,9 @@ void cs_out_abort(cs_outdir *out) {
         path_of(out, i, 1, tmp, sizeof tmp);
         unlink(tmp);
     }
-    out->count = 0;
+    for (int i = out->created_count; i-- > 0;) { /* a folder it made, if nothing else is in it */
+        snprintf(tmp, sizeof tmp, "%s/%s", out->dir, out->created[i]);
+        rmdir(tmp);
+    }
+    out->count = out->created_count = 0;
 }

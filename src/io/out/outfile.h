@@ -5,17 +5,20 @@
 
 #include <stdio.h>
 
-enum { CS_OUT_MAX_FILES = 32 }; /* the three data files and the plots */
+enum { CS_OUT_MAX_FILES = 64 }; /* the data files, the plots and the pages */
 
 typedef struct cs_outdir {
     char dir[1024];
     int count;
     char names[CS_OUT_MAX_FILES][128];
+    int created_count; /* the subdirectories cs_out_subdir made, which an abort removes again */
+    char created[4][64];
 } cs_outdir;
 
 /* Create dir (and its parents). Returns 0, or -1 with why filled. */
 int cs_out_open(cs_outdir *out, const char *dir, char *why, size_t why_size);
-/* Create DIR/subdir, for files named "subdir/...". Returns 0, or -1 with why filled. */
+/* Create DIR/subdir, for files named "subdir/...": removed by cs_out_abort if it made it. Returns 0, or -1
+ * with why filled. */
 int cs_out_subdir(cs_outdir *out, const char *subdir, char *why, size_t why_size);
 /* Start DIR/name.tmp. NULL with why filled on failure (also a name longer than names hold). */
 FILE *cs_out_begin(cs_outdir *out, const char *name, char *why, size_t why_size);

@@ -1,6 +1,8 @@
 /* report.html (report_html.h): the run's data as one JSON object inside the page built from report/. */
 #include "report_html.h"
 
+#include "out/html.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -461,21 +463,6 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
     return 0;
 }
 
-static void html_text(FILE *f, const char *s) {
-    for (; s && *s; s++) {
-        if (*s == '&')
-            fputs("&amp;", f);
-        else if (*s == '<')
-            fputs("&lt;", f);
-        else if (*s == '>')
-            fputs("&gt;", f);
-        else if (*s == '"')
-            fputs("&quot;", f);
-        else
-            fputc(*s, f);
-    }
-}
-
 int cs_write_report_html(FILE *f, const unsigned char *page, size_t size, const cs_model_input *in,
                          const cs_state *state, const cs_record *rec, char *why, size_t why_size) {
     static const char title[] = "@CS_TITLE@", data[] = "@CS_DATA@";
@@ -491,7 +478,7 @@ int cs_write_report_html(FILE *f, const unsigned char *page, size_t size, const 
         }
         fwrite(page + from, 1, i - from, f);
         if (is_title) {
-            html_text(f, in->name);
+            cs_html_text(f, in->name);
             i += nt;
         } else {
             if (cs_write_report_json(f, in, state, rec, why, why_size) != 0) return -1;

@@ -299,7 +299,11 @@ static int cmp_double(const void *a, const void *b) {
     return x < y ? -1 : x > y;
 }
 
-static double quantile(const double *sorted, long n, double p) {
+void cs_sweep_sort(double *v, long n) {
+    qsort(v, (size_t)n, sizeof *v, cmp_double);
+}
+
+double cs_sweep_quantile(const double *sorted, long n, double p) {
     double h = (double)(n - 1) * p;
     long lo = (long)floor(h);
     if (lo >= n - 1) return sorted[n - 1];
@@ -388,10 +392,10 @@ static int make_summary(summary *s, const cs_sweep_spec *spec, const double *x, 
             for (long i = 0; i < s->ok; i++)
                 ss += (a[i] - st->mean) * (a[i] - st->mean);
             st->sd = s->ok > 1 ? sqrt(ss / (double)(s->ok - 1)) : NAN;
-            qsort(a, (size_t)s->ok, sizeof *a, cmp_double);
+            cs_sweep_sort(a, s->ok);
             st->min = a[0], st->max = a[s->ok - 1];
-            st->p05 = quantile(a, s->ok, 0.05), st->p50 = quantile(a, s->ok, 0.5),
-            st->p95 = quantile(a, s->ok, 0.95);
+            st->p05 = cs_sweep_quantile(a, s->ok, 0.05), st->p50 = cs_sweep_quantile(a, s->ok, 0.5),
+            st->p95 = cs_sweep_quantile(a, s->ok, 0.95);
         }
         for (int j = 0; j < k; j++) {
             for (long i = 0; i < s->ok; i++) {

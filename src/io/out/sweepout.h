@@ -39,6 +39,11 @@ const char *cs_sweep_column_text(const cs_sweep_column *c, const cs_sweep_result
  * last key of a plot's x in its file's name. */
 void cs_sweep_name(const char *path, char *name, size_t size);
 
+/* Sort n values ascending (no NaN among them). */
+void cs_sweep_sort(double *v, long n);
+/* The p-quantile of n sorted values, linear between order statistics (the statistics of summary.md). */
+double cs_sweep_quantile(const double *sorted, long n, double p);
+
 /* runs.csv: one row per run in run order. Returns 0, or -1 with why filled. */
 int cs_sweep_write_runs(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r, long n,
                         char *why, size_t why_size);

@@ -1,0 +1,57 @@
+#define _POSIX_C_SOURCE 200809L
+#include "out/html.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+void cs_html_text(FILE *f, const char *s) {
+    for (; s && *s; s++) {
+        if (*s == '&')
+            fputs("&amp;", f);
+        else if (*s == '<')
+            fputs("&lt;", f);
+        else if (*s == '>')
+            fputs("&gt;", f);
+        else if (*s == '"')
+            fputs("&quot;", f);
+        else
+            fputc(*s, f);
+    }
+}
+
+int cs_html_figure(FILE *f, const char *id, double width, double height, cs_plot_draw_fn draw,
+                   const void *user, char *why, size_t why_size) {
+    char *svg = NULL;
+    size_t size = 0;
+    FILE *mem = open_memstream(&svg, &size);
+    if (!mem) {
+        snprintf(why, why_size, "out of memory for a page's figure");
+        return -1;
+    }
+    int rc = cs_plot_write(mem, CS_PLOT_SVG, width, height, draw, user, why, why_size);
+    fclose(mem);
+    const char *p = svg ? strstr(svg, "<svg") : NULL; /* without the XML declaration */
+    if (rc == 0 && !p) {
+        snprintf(why, why_size, "a figure without <svg>");
+        rc = -1;
+    }
+    /* every reference to an id is id="X", href="#X" or url(#X): each X becomes <id>-X */
+    static const char *const refs[] = {"id=\"", "href=\"#", "url(#"};
+    while (rc == 0 && *p) {
+        const char *next = NULL;
+        size_t len = 0;
+        for (int k = 0; k < 3; k++) {
+            const char *q = strstr(p, refs[k]);
+            if (q && (!next || q < next)) next = q, len = strlen(refs[k]);
+        }
+        if (!next) {
+            fputs(p, f);
+            break;
+        }
+        fwrite(p, 1, (size_t)(next - p) + len, f);
+        fprintf(f, "%s-", id);
+        p = next + len;
+    }
+    free(svg);
+    return rc;
+}
