@@ -127,9 +127,9 @@ static void data_complete(void **st) {
     assert_true(json[0] == '{' && json[strlen(json) - 1] == '}');
     static const char *const keys[] = {"\"summary\":",
                                        "\"outcome\":",
-                                       "\"max_decel_50ms_g\":",
-                                       "\"max_penetration\":",
-                                       "\"exit_speed\":",
+                                       "\"max_50ms_decel_g\":",
+                                       "\"max_dynamic_penetration_m\":",
+                                       "\"exit_speed_mps\":",
                                        "\"posts_failed_left\":",
                                        "\"energy_balance_error\":",
                                        "\"scenario\":",

@@ -230,33 +230,36 @@ double cs_energy_term(const cs_energy *energy, int term);
 #define CS_LEDGER_WARNING 0.01
 #define CS_LEDGER_FAILURE 0.05
 
-/* Response parameters, updated every step. */
+/* Response parameters, updated every step. Each field is named as its key in summary.json, its unit
+ * in the name's last part (_s, _m, _g, _mps, _deg, _n, _j). */
 typedef struct cs_summary {
     cs_outcome outcome;
-    double t;                       /* time reached, s */
-    double max_decel_50ms_g;        /* g */
-    double t_max_decel;             /* s */
-    double max_dynamic_penetration; /* m, front face past the attack face */
-    double max_barrier_deflection;  /* m, largest y of any cable path point (the dynamic deflection) */
-    double working_width; /* m, largest y reached by any part of the vehicle's outline, a cable or a standing
-                             post's top: the reach past the barrier's line (y = 0) */
-    double stop_time;     /* s, valid if outcome == CS_STOPPED */
-    double exit_speed;    /* m/s, valid if cs_outcome_exits(outcome) */
-    double exit_angle;    /* rad between the CG's velocity at exit and the barrier's line, positive away
-                             from the barrier (to -y); valid with exit_speed */
-    double first_contact_time; /* s, < 0 before contact */
-    int posts_failed_left;     /* x below the impact point */
+    double t_end_s;                   /* time reached, s */
+    double max_50ms_decel_g;          /* largest 50-ms average deceleration along travel, g */
+    double t_max_50ms_decel_s;        /* the end of that 50-ms window, s */
+    double max_dynamic_penetration_m; /* front face past the attack face, m */
+    double max_barrier_deflection_m;  /* largest y of any cable path point (the dynamic deflection), m */
+    double working_width_m; /* largest y reached by any part of the vehicle's outline, a cable or a standing
+                               post's top: the reach past the barrier's line (y = 0), m */
+    double stop_time_s;     /* valid if outcome == CS_STOPPED, s */
+    double exit_speed_mps;  /* valid if cs_outcome_exits(outcome), m/s */
+    double exit_angle_deg;  /* between the CG's velocity at exit and the barrier's line, positive away from
+                               the barrier (to -y), degrees; valid with exit_speed_mps */
+    double first_contact_time_s; /* < 0 before contact, s */
+    int posts_failed_left;       /* x below the impact point */
     int posts_failed_right;
-    /* the same by how they failed, [0] left and [1] right: turned to their rotation limit (bent over, or
-     * their footing turned in the soil), sheared at the base, pulled out of the ground */
-    int posts_failed_rotation[2], posts_failed_shear[2], posts_failed_pullout[2];
+    /* the same by how they failed: turned to their rotation limit (bent over, or their footing turned in
+     * the soil), sheared at the base, pulled out of the ground */
+    int posts_failed_rotation_left, posts_failed_rotation_right;
+    int posts_failed_shear_left, posts_failed_shear_right;
+    int posts_failed_pullout_left, posts_failed_pullout_right;
     int cables_broken;
-    double initial_kinetic_energy; /* J */
-    double energy_balance_error;   /* fraction, largest |error| over the run */
-    double max_cable_tension;      /* N over the run */
-    double final_position[3];      /* CG, m */
-    int solver_warnings;           /* steps whose barrier solve hit its sweep cap */
-    double max_solver_residual;    /* largest relative residual left by such a step */
+    double initial_kinetic_energy_j; /* J */
+    double energy_balance_error;     /* fraction, largest |error| over the run */
+    double max_cable_tension_n;      /* over the run, N */
+    double final_position_m[3];      /* CG, m */
+    int solver_warnings;             /* steps whose barrier solve hit its sweep cap */
+    double max_solver_residual;      /* largest relative residual left by such a step */
 } cs_summary;
 
 void cs_state_summary(const cs_state *state, cs_summary *out);
