@@ -26,7 +26,8 @@ static const char usage[] =
     "       cablesim rate FILE --standard sd-std-02.01|sd-std-02.01a|astm-f2656 [--class M50|K8]\n"
     "       cablesim rate FILE --standard nchrp-350|mash [--level 3|4 | --test 3-11]\n"
     "       cablesim validate [-o DIR]   the validation suite: DIR/validation.md and .csv\n"
-    "       cablesim list      the named parts of the library (data/*.yaml)\n"
+    "       cablesim list      the named parts of the library and its folder ($CABLESIM_DATA, else\n"
+    "                          PREFIX/share/cablesim of an installed cablesim, else the source's data/)\n"
     "       cablesim schema    the model-file reference (docs/file-format.md)\n"
     "       cablesim --help | --version\n"
     "\n"
@@ -195,6 +196,7 @@ static int run(const cs_model_input *in, cs_model *model, const char *dir, int p
 
 static int list(cs_loader *l) {
     static const char *const titles[] = {"Vehicles", "Wire ropes", "Post sections", "Rail sections"};
+    if (cs_loader_data_dir(l)[0]) printf("Parts library: %s\n\n", cs_loader_data_dir(l));
     for (int k = 0; k < CS_PART_KIND_COUNT; k++) {
         const char **names, **docs;
         int n = cs_loader_library(l, (cs_part_kind)k, &names, &docs);

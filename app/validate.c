@@ -961,6 +961,12 @@ static suite *suite_create(void) {
         free(s);
         return NULL;
     }
+    if (!cs_loader_data_dir(s->loader)[0]) {
+        fprintf(stderr, "cablesim validate: cannot find the parts library and its validation/ (set "
+                        "CABLESIM_DATA to its folder)\n");
+        suite_free(s);
+        return NULL;
+    }
     snprintf(data_dir, sizeof data_dir, "%s/validation", cs_loader_data_dir(s->loader));
     if (cs_validation_read(data_dir, &s->data, why, sizeof why) == 0) return s;
     fprintf(stderr, "cablesim validate: %s\n", why);
@@ -969,7 +975,7 @@ static suite *suite_create(void) {
 }
 
 int cs_command_validate(int argc, char **argv) {
-    const char *dir = "results/validation", *examples = "examples", *only = NULL;
+    const char *dir = "results/validation", *examples = NULL, *only = NULL;
     int report_only = 0;
     for (int i = 2; i < argc; i++) {
         if (strcmp(argv[i], "--report-only") == 0) {
@@ -1010,7 +1016,13 @@ int cs_command_validate(int argc, char **argv) {
         suite_free(s);
         return 1;
     }
-    s->examples = examples;
+    /* The examples: --examples, else those installed with the parts library, else ./examples (a source
+     * checkout). */
+    char installed[1100];
+    snprintf(installed, sizeof installed, "%s/examples", cs_loader_data_dir(s->loader));
+    s->examples = examples                                           ? examples
+                  : stat(installed, &st) == 0 && S_ISDIR(st.st_mode) ? installed
+                                                                     : "examples";
     time_t t0 = time(NULL);
     plan(s, only);
     run_all(s);

@@ -10,6 +10,13 @@ check "unknown command is status 2" '[ $? -eq 2 ]'
 "$cs" run >/dev/null 2>&1
 check "run without a file is status 2" '[ $? -eq 2 ]'
 check "list names the parts" '"$cs" list | grep -q "^  M " && "$cs" list | grep -q "A603-1.75in" && "$cs" list | grep -q "HSS4x4x1/8"'
+check "list names its folder: the source tree's data/ for a program of the build tree" \
+    '"$cs" list | head -1 | grep -qx "Parts library: $PWD/data"'
+mkdir "$tmp/parts" && cp data/*.yaml "$tmp/parts/" && sed -i 's/^    - name: H$/    - name: H-renamed/' "$tmp/parts/vehicles.yaml"
+check "CABLESIM_DATA moves the parts library" \
+    'CABLESIM_DATA="$tmp/parts" "$cs" list | grep -q "^  H-renamed " && CABLESIM_DATA="$tmp/parts" "$cs" list | head -1 | grep -qx "Parts library: $tmp/parts"'
+CABLESIM_DATA="$tmp/none" "$cs" list >/dev/null 2>"$tmp/stderr"
+check "a CABLESIM_DATA that is no folder: status 2, named" '[ $? -eq 2 ] && grep -q "^$tmp/none: cannot read the parts library (CABLESIM_DATA; " "$tmp/stderr"'
 for f in examples/*.yaml; do
     check "check $f" '"$cs" check "$f" >/dev/null'
 done
