@@ -6,7 +6,7 @@ DEMO_OUT ?= results/aps3
 FUZZ_SECONDS ?= 60
 FUZZ_BUILD ?= build-fuzz
 
-.PHONY: all deps build demo test sanitize fuzz fuzz-build bench format clean
+.PHONY: all deps build demo test sanitize fuzz fuzz-build bench docs format clean
 
 all: build
 
@@ -40,10 +40,10 @@ sanitize: deps
 fuzz-build: deps
 	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCS_SANITIZE=ON -DCMAKE_C_COMPILER=clang \
 	  -DCMAKE_C_FLAGS=-fsanitize=fuzzer-no-link
-	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target cablesim_io
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target cablesim_static
 	clang -std=c17 -Wall -Wextra -Wpedantic -Werror -O1 -g -fno-omit-frame-pointer -fno-sanitize-recover=all \
 	  -fsanitize=fuzzer,address,undefined -Iinclude -Isrc/io -DCS_SOURCE_DIR='"$(CURDIR)"' \
-	  fuzz/fuzz_loader.c $(FUZZ_BUILD)/libcablesim_io.a $(FUZZ_BUILD)/libcablesim.a \
+	  fuzz/fuzz_loader.c $(FUZZ_BUILD)/libcablesim.a \
 	  $$(pkg-config --libs yaml-0.1) -ludunits2 -lm -o $(FUZZ_BUILD)/fuzz_loader
 
 fuzz: fuzz-build
@@ -63,8 +63,12 @@ fuzz: fuzz-build
 bench: build
 	BUILD=$(BUILD) bash bench/run.sh
 
+# The API reference from the public headers (Doxygen): $(BUILD)/docs/html/index.html.
+docs: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) --target docs
+
 format:
-	clang-format -i include/cablesim/*.h src/*.c src/*.h src/io/*/*.c src/io/*/*.h app/*.c tests/*.c tests/*.h examples/*.c fuzz/*.c 2>/dev/null || true
+	clang-format -i include/cablesim/*.h src/*.c src/*.h src/io/*/*.c src/io/*/*.h app/*.c tests/*.c tests/*.h examples/*.c examples/*/*.c fuzz/*.c 2>/dev/null || true
 
 clean:
 	rm -rf $(BUILD) build-asan $(FUZZ_BUILD)

@@ -10,8 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cablesim/loader.h"
 #include "commands.h"
-#include "load/loader.h"
 #include "study/rating.h"
 
 #define MPH 0.44704

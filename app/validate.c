@@ -26,8 +26,8 @@
 #include <sys/stat.h>
 #include <time.h>
 
+#include "cablesim/loader.h"
 #include "commands.h"
-#include "load/loader.h"
 #include "load/validation.h"
 #include "study/sweep.h"
 

@@ -11,7 +11,7 @@
 #include <sys/resource.h>
 #include <time.h>
 
-#include "load/loader.h"
+#include "cablesim/loader.h"
 
 static double now(void) {
     struct timespec t;

@@ -9,6 +9,9 @@ pkgs=(build-essential cmake pkg-config clang libclang-rt-14-dev llvm-14 libyaml-
 pkgs+=(libopenmpi-dev openmpi-bin)
 # libnetcdf-dev: the sweep's runs.nc (netCDF C library); netcdf-bin: ncdump, which its shell test reads it with.
 pkgs+=(libnetcdf-dev netcdf-bin)
+# doxygen: the API reference (make docs) and its test (tests/api_docs.sh); help2man: the command's manual
+# page, made from its --help at build time; dpkg-dev: dpkg-shlibdeps, the .deb's dependencies (make package).
+pkgs+=(doxygen help2man dpkg-dev)
 # report.html (report/): node and npm build its page (Debian's only where none is installed: a newer one
 # may be); Debian's chromium and chromium-driver run its browser test.
 pkgs+=(chromium chromium-driver)

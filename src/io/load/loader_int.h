@@ -5,7 +5,7 @@
 #include <limits.h>
 #include <stdarg.h>
 
-#include "loader.h"
+#include "cablesim/loader.h"
 #include "schema.h"
 #include "units.h"
 #include "yamltree.h"

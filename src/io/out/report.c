@@ -5,7 +5,7 @@
 
 static const double MPH = 0.44704, FT = 0.3048, KIP = 4448.2216152605;
 
-void cs_write_report(FILE *f, const cs_model_input *in, const cs_model *model, const cs_state *state) {
+void cs_write_summary_text(FILE *f, const cs_model_input *in, const cs_model *model, const cs_state *state) {
     cs_summary s;
     cs_state_summary(state, &s);
     const cs_scenario_def *sc = &in->scenario;

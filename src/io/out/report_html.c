@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cablesim/cablesim.h"
 #include "figures.h"
 #include "writers.h"
 

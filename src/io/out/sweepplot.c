@@ -1,8 +1,8 @@
 /* The plots of a sweep (`plot:` in the spec, sweepout.h), drawn with the plotting layer (plot.h) from
  * runs.csv's own columns: a response against a varied value, a line per level of another varied value of
  * a grid joining its runs in order of x, or each run a point (Monte Carlo, Latin hypercube). A run that
- * got through (broke through, rode over or ran under the cables) is marked with a cross; a run that did not run to the end, or has no value of the
- * response, is left out, and the caption counts both. */
+ * got through (broke through, rode over or ran under the cables) is marked with a cross; a run that did not
+ * run to the end, or has no value of the response, is left out, and the caption counts both. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
