@@ -6,7 +6,7 @@ DEMO_OUT ?= results/aps3
 FUZZ_SECONDS ?= 60
 FUZZ_BUILD ?= build-fuzz
 
-.PHONY: all deps build demo test sanitize fuzz fuzz-build bench docs format clean
+.PHONY: all deps build demo test sanitize fuzz fuzz-build bench docs package format clean
 
 all: build
 
@@ -62,6 +62,10 @@ fuzz: fuzz-build
 # BENCH_T_END (end time of the APS3 runs; empty: the model's), BENCH_POSTS, BENCH_POSTS_T_END, BENCH_REPEAT.
 bench: build
 	BUILD=$(BUILD) bash bench/run.sh
+
+# The Debian package (CPack): $(BUILD)/cablesim_VERSION_ARCH.deb, for `apt install ./$(BUILD)/cablesim_*.deb`.
+package: build
+	cd $(BUILD) && cpack -G DEB
 
 # The API reference from the public headers (Doxygen): $(BUILD)/docs/html/index.html.
 docs: deps $(BUILD)/CMakeCache.txt
