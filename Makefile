@@ -6,7 +6,7 @@ DEMO_OUT ?= results/aps3
 FUZZ_SECONDS ?= 60
 FUZZ_BUILD ?= build-fuzz
 
-.PHONY: all deps build demo test sanitize fuzz fuzz-build bench format clean
+.PHONY: all deps build demo test sanitize fuzz fuzz-build bench docs package format clean
 
 all: build
 
@@ -42,14 +42,14 @@ sanitize: deps
 # Each corpus grows in $(FUZZ_BUILD)/corpus-TARGET; a crash lands in $(FUZZ_BUILD)/artifacts.
 FUZZ_CFLAGS = -std=c17 -Wall -Wextra -Wpedantic -Werror -O1 -g -fno-omit-frame-pointer -fno-sanitize-recover=all \
   -fsanitize=fuzzer,address,undefined -Iinclude -Isrc -Isrc/io -Itests -DCS_SOURCE_DIR='"$(CURDIR)"'
-FUZZ_LIBS = $(FUZZ_BUILD)/libcablesim_io.a $(FUZZ_BUILD)/libcablesim.a $$(pkg-config --libs yaml-0.1) -ludunits2 -lm
+FUZZ_LIBS = $(FUZZ_BUILD)/libcablesim.a $$(pkg-config --libs yaml-0.1 cairo netcdf json-c) -ludunits2 -lm
 FUZZ_RUN = LSAN_OPTIONS=suppressions=$(CURDIR)/fuzz/lsan.supp
 FUZZ_FLAGS = -max_total_time=$(FUZZ_SECONDS) -timeout=20 -print_final_stats=1 -artifact_prefix=$(FUZZ_BUILD)/artifacts/
 
 fuzz-build: deps
 	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCS_SANITIZE=ON -DCMAKE_C_COMPILER=clang \
 	  -DCMAKE_C_FLAGS=-fsanitize=fuzzer-no-link
-	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target cablesim_io
+	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target cablesim_static
 	for t in loader engine sweep; do \
 	  clang $(FUZZ_CFLAGS) fuzz/fuzz_$$t.c $(FUZZ_LIBS) -o $(FUZZ_BUILD)/fuzz_$$t || exit 1; done
 
@@ -76,8 +76,16 @@ fuzz: fuzz-build
 bench: build
 	BUILD=$(BUILD) bash bench/run.sh
 
+# The Debian package (CPack): $(BUILD)/cablesim_VERSION_ARCH.deb, for `apt install ./$(BUILD)/cablesim_*.deb`.
+package: build
+	cd $(BUILD) && cpack -G DEB
+
+# The API reference from the public headers (Doxygen): $(BUILD)/docs/html/index.html.
+docs: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) --target docs
+
 format:
-	clang-format -i include/cablesim/*.h src/*.c src/*.h src/io/*/*.c src/io/*/*.h app/*.c tests/*.c tests/*.h examples/*.c fuzz/*.c 2>/dev/null || true
+	clang-format -i include/cablesim/*.h src/*.c src/*.h src/io/*/*.c src/io/*/*.h app/*.c tests/*.c tests/*.h examples/*.c examples/*/*.c fuzz/*.c 2>/dev/null || true
 
 clean:
 	rm -rf $(BUILD) build-asan $(FUZZ_BUILD)

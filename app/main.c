@@ -5,8 +5,8 @@
 #include <string.h>
 
 #include "cablesim/cablesim.h"
+#include "cablesim/loader.h"
 #include "commands.h"
-#include "load/loader.h"
 #include "load/schema.h"
 #include "out/figures.h"
 #include "out/outfile.h"
@@ -18,25 +18,35 @@
 enum { EXIT_RUN = 1, EXIT_BAD = 2 };
 
 static const char usage[] =
-    "usage: cablesim run FILE [-o DIR] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
-    "                [--report]\n"
-    "       cablesim check FILE [--set PATH=VALUE]...\n"
-    "       cablesim sweep SPEC.yaml [-o DIR] [--threads N]   a study: grids, Monte Carlo (see sweep "
-    "--help)\n"
-    "       cablesim rate FILE --standard sd-std-02.01|sd-std-02.01a|astm-f2656 [--class M50|K8]\n"
-    "       cablesim rate FILE --standard nchrp-350|mash [--level 3|4 | --test 3-11]\n"
-    "       cablesim validate [-o DIR]   the validation suite: DIR/validation.md and .csv\n"
-    "       cablesim compare RUN... [--measured FILE.csv] [-o DIR]   runs and a measured history side by side\n"
-    "       cablesim list      the named parts of the library (data/*.yaml)\n"
-    "       cablesim schema    the model-file reference (docs/file-format.md)\n"
-    "       cablesim --help | --version\n"
+    "Usage: cablesim run FILE [-o DIR] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots] [--report]\n"
+    "  or:  cablesim check FILE [--set PATH=VALUE]...\n"
+    "  or:  cablesim sweep SPEC.yaml [-o DIR] [--threads N]\n"
+    "  or:  cablesim rate FILE --standard sd-std-02.01|sd-std-02.01a|astm-f2656 [--class M50|K8]\n"
+    "  or:  cablesim rate FILE --standard nchrp-350|mash [--level 3|4 | --test 3-11]\n"
+    "  or:  cablesim validate [-o DIR]\n"
+    "  or:  cablesim compare RUN... [--measured FILE.csv] [-o DIR]\n"
+    "  or:  cablesim list | schema | --help | --version\n"
+    "Simulate a vehicle crashing into a cable barrier and its progressive failure.\n"
     "\n"
-    "run writes DIR/timeseries.csv, DIR/events.csv and DIR/summary.json (default DIR: results/<model name>)\n"
-    "and prints a summary; --plots also draws the run's figures as DIR/plots/*.png and *.svg; --report\n"
-    "writes DIR/report.html, one page that opens from disk: summary, failure timeline, plots, 3D replay.\n"
+    "Commands:\n"
+    "  run       run a model: DIR/timeseries.csv, DIR/events.csv and DIR/summary.json (default DIR:\n"
+    "            results/<model name>) and a summary printed; --plots also draws the run's figures as\n"
+    "            DIR/plots/*.png and *.svg; --report writes DIR/report.html, one page that opens from disk:\n"
+    "            summary, failure timeline, plots, 3D replay\n"
+    "  check     check a model (or a sweep spec) only: every problem as file:line:column\n"
+    "  sweep     a study: grids, Monte Carlo, Latin hypercube (cablesim sweep --help)\n"
+    "  rate      the highest class of ASTM F2656 or SD-STD-02.01 a design passes, or the NCHRP 350 or\n"
+    "            MASH tests of a level\n"
+    "  validate  the validation suite: DIR/validation.md and .csv\n"
+    "  compare   runs (folders of cablesim run) and a measured history side by side: a table and plots\n"
+    "  list      the named parts of the library and the folder they are read from\n"
+    "  schema    the model-file reference (docs/file-format.md)\n"
+    "\n"
     "Values take units: --dt \"0.2 ms\", --set scenario.speed=\"35 mph\",\n"
-    "--set barrier.cables[0].pretension=\"8 kip\". Exit status: 0 done, 1 the run failed, 2 bad model or "
-    "usage.\n";
+    "--set barrier.cables[0].pretension=\"8 kip\".\n"
+    "The parts library is the folder named by CABLESIM_DATA, else PREFIX/share/cablesim of an installed\n"
+    "cablesim, else the source tree's data/.\n"
+    "Exit status: 0 done, 1 the run failed, 2 bad model or usage.\n";
 
 typedef struct options {
     const char *command, *file, *out_dir;
@@ -87,38 +97,28 @@ static int parse(int argc, char **argv, options *o, cs_loader *l) {
     return o->file ? 0 : bad_usage("no model file");
 }
 
-/* DIR/plots/<figure>.png and .svg, begun on out. */
-static int write_plots(cs_outdir *out, const cs_model_input *in, const cs_state *state, const cs_record *rec,
-                       char *why, size_t why_size) {
-    int n = cs_state_event_count(state);
-    cs_event *events = malloc((size_t)(n > 0 ? n : 1) * sizeof *events);
-    if (!events) {
-        snprintf(why, why_size, "out of memory");
-        return -1;
-    }
-    for (int i = 0; i < n; i++)
-        events[i] = *cs_state_event(state, i);
-    static const cs_plot_format formats[] = {CS_PLOT_PNG, CS_PLOT_SVG};
-    cs_figure_data d = {in, rec, events, n};
-    int rc = cs_figures_write(out, "plots", formats, 2, &d, why, why_size);
-    cs_plot_release();
-    free(events);
-    return rc;
-}
-
 #ifdef CS_HAVE_REPORT
 enum { HAVE_REPORT = 1 };
 #else
 enum { HAVE_REPORT = 0 };
 #endif
 
-/* DIR/report.html, begun on out. A build that lacked node and npm has no page: a warning, no file. */
-static int write_report_html(cs_outdir *out, const cs_model_input *in, const cs_state *state,
-                             const cs_record *rec, char *why, size_t why_size) {
+/* What report.html is written from. */
+typedef struct report_args {
+    const cs_model_input *in;
+    const cs_state *state;
+    const cs_record *rec;
+} report_args;
+
+/* DIR/report.html, begun on out (a cs_more_outputs). A build that lacked node and npm has no page: a
+ * warning, no file. */
+static int write_report_html(cs_outdir *out, void *user, char *why, size_t why_size) {
+    const report_args *a = user;
 #ifdef CS_HAVE_REPORT
     FILE *f = cs_out_begin(out, "report.html", why, why_size);
     if (!f) return -1;
-    int rc = cs_write_report_html(f, cs_report_page, cs_report_page_size, in, state, rec, why, why_size);
+    int rc =
+        cs_write_report_html(f, cs_report_page, cs_report_page_size, a->in, a->state, a->rec, why, why_size);
     char end_why[512];
     if (cs_out_end(out, f, end_why, sizeof end_why) != 0 && rc == 0) {
         snprintf(why, why_size, "%s", end_why);
@@ -126,7 +126,7 @@ static int write_report_html(cs_outdir *out, const cs_model_input *in, const cs_
     }
     return rc;
 #else
-    (void)out, (void)in, (void)state, (void)rec, (void)why, (void)why_size;
+    (void)out, (void)a, (void)why, (void)why_size;
     fprintf(stderr, "cablesim: warning: no report.html: this cablesim was built without node and npm "
                     "(install them with scripts/install-deps.sh and build again)\n");
     return 0;
@@ -136,31 +136,10 @@ static int write_report_html(cs_outdir *out, const cs_model_input *in, const cs_
 static int write_outputs(const char *dir, const cs_model_input *in, const cs_model *model,
                          const cs_state *state, const cs_record *rec, int plots, int report) {
     char why[512] = "";
-    cs_outdir out;
-    int rc = cs_out_open(&out, dir, why, sizeof why);
-    static const char *const names[] = {"timeseries.csv", "events.csv", "summary.json"};
-    for (int k = 0; rc == 0 && k < 3; k++) {
-        FILE *f = cs_out_begin(&out, names[k], why, sizeof why);
-        if (!f) {
-            rc = -1;
-            break;
-        }
-        rc = k == 0   ? cs_write_timeseries(f, rec, why, sizeof why)
-             : k == 1 ? cs_write_events(f, state, why, sizeof why)
-                      : cs_write_summary_json(f, in, model, state, why, sizeof why);
-        char end_why[512];
-        if (cs_out_end(&out, f, end_why, sizeof end_why) != 0 && rc == 0) {
-            snprintf(why, sizeof why, "%s", end_why);
-            rc = -1;
-        }
-    }
-    if (rc == 0 && plots) rc = write_plots(&out, in, state, rec, why, sizeof why);
-    if (rc == 0 && report) rc = write_report_html(&out, in, state, rec, why, sizeof why);
-    if (rc == 0) rc = cs_out_commit(&out, why, sizeof why);
-    if (rc != 0) {
-        cs_out_abort(&out);
-        fprintf(stderr, "cablesim: nothing written: %s\n", why);
-    }
+    report_args args = {in, state, rec};
+    int rc = cs_write_outputs_with(dir, in, model, state, rec, plots ? CS_OUTPUT_PLOTS : 0,
+                                   report ? write_report_html : NULL, &args, why, sizeof why);
+    if (rc != 0) fprintf(stderr, "cablesim: nothing written: %s\n", why);
     return rc;
 }
 
@@ -181,7 +160,7 @@ static int run(const cs_model_input *in, cs_model *model, const char *dir, int p
     else if (rec.failed)
         fprintf(stderr, "cablesim: out of memory while recording, nothing written\n");
     else if (write_outputs(dir ? dir : path, in, model, state, &rec, plots, report) == 0) {
-        cs_write_report(stdout, in, model, state);
+        cs_write_summary_text(stdout, in, model, state);
         cs_summary sm;
         cs_state_summary(state, &sm);
         cs_print_run_rating(stdout, &in->vehicle, in->scenario.speed, &sm);
@@ -189,13 +168,14 @@ static int run(const cs_model_input *in, cs_model *model, const char *dir, int p
                plots ? ",plots/*.png,plots/*.svg" : "", report && HAVE_REPORT ? ",report.html" : "");
         rc = 0;
     }
-    cs_record_free(&rec);
+    cs_record_release(&rec);
     cs_state_free(state);
     return rc;
 }
 
 static int list(cs_loader *l) {
     static const char *const titles[] = {"Vehicles", "Wire ropes", "Post sections", "Rail sections"};
+    if (cs_loader_data_dir(l)[0]) printf("Parts library: %s\n\n", cs_loader_data_dir(l));
     for (int k = 0; k < CS_PART_KIND_COUNT; k++) {
         const char **names, **docs;
         int n = cs_loader_library(l, (cs_part_kind)k, &names, &docs);

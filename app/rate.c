@@ -10,8 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cablesim/loader.h"
 #include "commands.h"
-#include "load/loader.h"
 #include "study/rating.h"
 
 #define MPH 0.44704
@@ -56,9 +56,9 @@ static int roadside_one(cs_loader *l, const cs_model_input *in, const cs_roadsid
         cs_state_summary(s, &sm);
         cs_roadside_result r = cs_roadside_read(t, &sm);
         char exit[128] = "no exit";
-        if (r.exit_speed >= 0.0)
-            snprintf(exit, sizeof exit, "exit %.1f km/h (%.1f mph) at %.1f deg%s", r.exit_speed * 3.6,
-                     r.exit_speed / MPH, r.exit_angle * 180 / CS_PI,
+        if (r.exit_speed_mps >= 0.0)
+            snprintf(exit, sizeof exit, "exit %.1f km/h (%.1f mph) at %.1f deg%s", r.exit_speed_mps * 3.6,
+                     r.exit_speed_mps / MPH, r.exit_angle_deg,
                      r.redirected && strcmp(t->standard, "nchrp-350") == 0
                          ? (r.exit_angle_within ? " (under 60% of the impact angle)"
                                                 : " (60% of the impact angle or more)")
@@ -67,7 +67,7 @@ static int roadside_one(cs_loader *l, const cs_model_input *in, const cs_roadsid
             "  %-4s %-6s %3.0f km/h %2.0f deg  %-12s deflection %.2f m (%.1f ft)  working width %.2f m (%.1f "
             "ft)  %s\n",
             t->name, t->vehicle, t->speed * 3.6, t->angle * 180 / CS_PI, cs_outcome_name(sm.outcome),
-            r.deflection, r.deflection / 0.3048, r.working_width, r.working_width / 0.3048, exit);
+            r.deflection, r.deflection / 0.3048, r.working_width_m, r.working_width_m / 0.3048, exit);
         if (!r.contained) *contained = 0;
         if (!r.redirected) *redirected = 0;
     }

@@ -26,8 +26,8 @@
 #include <sys/stat.h>
 #include <time.h>
 
+#include "cablesim/loader.h"
 #include "commands.h"
-#include "load/loader.h"
 #include "load/validation.h"
 #include "study/sweep.h"
 
@@ -174,8 +174,8 @@ static int add_loaded(suite *s, int rc, const cs_model_input *in) {
 /* One CSV row: suite, case, variant, then the run's numbers; what does not apply is left empty. */
 static void csv_row(FILE *csv, const char *suite, const char *name, const char *variant, const result *r) {
     char exit[32] = "", stop[32] = "", b1[32] = "", b2[32] = "";
-    if (r->ok && cs_outcome_exits(r->sm.outcome)) snprintf(exit, sizeof exit, "%.6g", r->sm.exit_speed);
-    if (r->ok && r->sm.outcome == CS_STOPPED) snprintf(stop, sizeof stop, "%.6g", r->sm.stop_time);
+    if (r->ok && cs_outcome_exits(r->sm.outcome)) snprintf(exit, sizeof exit, "%.6g", r->sm.exit_speed_mps);
+    if (r->ok && r->sm.outcome == CS_STOPPED) snprintf(stop, sizeof stop, "%.6g", r->sm.stop_time_s);
     if (r->ok && r->cable_break[0] >= 0.0) snprintf(b1, sizeof b1, "%.6g", r->cable_break[0]);
     if (r->ok && r->cable_break[1] >= 0.0) snprintf(b2, sizeof b2, "%.6g", r->cable_break[1]);
     if (!r->ok) {
@@ -183,12 +183,11 @@ static void csv_row(FILE *csv, const char *suite, const char *name, const char *
         return;
     }
     char angle[32] = "";
-    if (cs_outcome_exits(r->sm.outcome))
-        snprintf(angle, sizeof angle, "%.6g", r->sm.exit_angle * 180 / CS_PI_V);
+    if (cs_outcome_exits(r->sm.outcome)) snprintf(angle, sizeof angle, "%.6g", r->sm.exit_angle_deg);
     fprintf(csv, "%s,%s,\"%s\",1,%s,%.6g,%.6g,%s,%s,%s,%s,%d,%d,%.6g,%.6g,%.6g,%.6g,%s\n", suite, name,
-            variant, cs_outcome_name(r->sm.outcome), r->sm.max_decel_50ms_g, r->sm.max_dynamic_penetration,
+            variant, cs_outcome_name(r->sm.outcome), r->sm.max_50ms_decel_g, r->sm.max_dynamic_penetration_m,
             exit, stop, b1, b2, r->sm.posts_failed_left, r->sm.posts_failed_right, r->sm.energy_balance_error,
-            r->absorbed, r->sm.max_barrier_deflection, r->sm.working_width, angle);
+            r->absorbed, r->sm.max_barrier_deflection_m, r->sm.working_width_m, angle);
 }
 
 static const char *fmt_time(double t, char *buf, size_t n) {
@@ -244,22 +243,22 @@ static void write_crash(FILE *md, FILE *csv, suite *s) {
     fprintf(md, "| response | crash test | paper's simulation | cablesim | cablesim vs test "
                 "|\n|---|---|---|---|---|\n");
     fprintf(md, "| max 50-ms average deceleration | %.3f g | %.3f g | %.3f g | %+.0f%% |\n", t->decel_g,
-            p->decel_g, r->sm.max_decel_50ms_g, rel_err(r->sm.max_decel_50ms_g, t->decel_g));
+            p->decel_g, r->sm.max_50ms_decel_g, rel_err(r->sm.max_50ms_decel_g, t->decel_g));
     if (cs_outcome_through(r->sm.outcome))
         fprintf(md, "| exit speed | %.1f mph | %.1f mph | %.1f mph | %+.0f%% |\n", t->exit_mph, p->exit_mph,
-                r->sm.exit_speed / MPH, rel_err(r->sm.exit_speed / MPH, t->exit_mph));
+                r->sm.exit_speed_mps / MPH, rel_err(r->sm.exit_speed_mps / MPH, t->exit_mph));
     else
         fprintf(md, "| exit speed | %.1f mph | %.1f mph | none: %s at %.3f s | the truck is not through |\n",
-                t->exit_mph, p->exit_mph, cs_outcome_name(r->sm.outcome), r->sm.t);
+                t->exit_mph, p->exit_mph, cs_outcome_name(r->sm.outcome), r->sm.t_end_s);
     for (int c = 0; c < 2; c++)
         fprintf(md, "| time when cable %d broke | %.3f s | %.3f s | %s | %s |\n", c + 1, t->brk[c], p->brk[c],
                 fmt_time(r->cable_break[c], a, sizeof a),
                 r->cable_break[c] < 0.0
                     ? "no break"
                     : (snprintf(b, sizeof b, "%+.0f ms", 1e3 * (r->cable_break[c] - t->brk[c])), b));
-    int dec_ok = r->ok && fabs(rel_err(r->sm.max_decel_50ms_g, t->decel_g)) <= 15.0;
+    int dec_ok = r->ok && fabs(rel_err(r->sm.max_50ms_decel_g, t->decel_g)) <= 15.0;
     int exit_ok = r->ok && cs_outcome_through(r->sm.outcome) &&
-                  fabs(rel_err(r->sm.exit_speed / MPH, t->exit_mph)) <= 15.0;
+                  fabs(rel_err(r->sm.exit_speed_mps / MPH, t->exit_mph)) <= 15.0;
     int brk_ok = r->ok && r->cable_break[0] >= 0.0 && r->cable_break[1] >= 0.0 &&
                  fabs(r->cable_break[0] - t->brk[0]) <= 0.05 && fabs(r->cable_break[1] - t->brk[1]) <= 0.05;
     fprintf(md,
@@ -273,17 +272,18 @@ static void write_crash(FILE *md, FILE *csv, suite *s) {
             "| response | APS3 cablesim | APS3 test | APS4 cablesim | APS4 test |\n|---|---|---|---|---|\n");
     const result *p3 = &s->jobs[s->base[1]].r, *p4 = &s->jobs[s->base[2]].r;
     fprintf(md, "| outcome | %s at %.3f s | withheld | %s at %.3f s | withheld |\n",
-            cs_outcome_name(p3->sm.outcome), p3->sm.t, cs_outcome_name(p4->sm.outcome), p4->sm.t);
+            cs_outcome_name(p3->sm.outcome), p3->sm.t_end_s, cs_outcome_name(p4->sm.outcome), p4->sm.t_end_s);
     fprintf(md, "| max 50-ms average deceleration | %.3f g | withheld | %.3f g | withheld |\n",
-            p3->sm.max_decel_50ms_g, p4->sm.max_decel_50ms_g);
+            p3->sm.max_50ms_decel_g, p4->sm.max_50ms_decel_g);
     fprintf(md, "| max dynamic penetration | %.2f m | withheld | %.2f m | withheld |\n",
-            p3->sm.max_dynamic_penetration, p4->sm.max_dynamic_penetration);
-    fprintf(
-        md, "| exit speed | %s | withheld | %s | withheld |\n",
-        cs_outcome_through(p3->sm.outcome) ? (snprintf(a, sizeof a, "%.1f mph", p3->sm.exit_speed / MPH), a)
-                                           : "-",
-        cs_outcome_through(p4->sm.outcome) ? (snprintf(b, sizeof b, "%.1f mph", p4->sm.exit_speed / MPH), b)
-                                           : "-");
+            p3->sm.max_dynamic_penetration_m, p4->sm.max_dynamic_penetration_m);
+    fprintf(md, "| exit speed | %s | withheld | %s | withheld |\n",
+            cs_outcome_through(p3->sm.outcome)
+                ? (snprintf(a, sizeof a, "%.1f mph", p3->sm.exit_speed_mps / MPH), a)
+                : "-",
+            cs_outcome_through(p4->sm.outcome)
+                ? (snprintf(b, sizeof b, "%.1f mph", p4->sm.exit_speed_mps / MPH), b)
+                : "-");
     fprintf(md, "| posts failed left / right | %d / %d | withheld | %d / %d | withheld |\n\n",
             p3->sm.posts_failed_left, p3->sm.posts_failed_right, p4->sm.posts_failed_left,
             p4->sm.posts_failed_right);
@@ -465,9 +465,10 @@ static double refinement_table(FILE *md, FILE *csv, const suite *s, int t) {
             const result *r = &s->jobs[s->refine[t][k][d]].r;
             if (!r->ok) continue;
             char exit[32] = "-";
-            if (cs_outcome_through(r->sm.outcome)) snprintf(exit, sizeof exit, "%.2f m/s", r->sm.exit_speed);
+            if (cs_outcome_through(r->sm.outcome))
+                snprintf(exit, sizeof exit, "%.2f m/s", r->sm.exit_speed_mps);
             fprintf(md, "| %s | %s | %s | %.3f g | %.3f m | %s | %.2f%% |\n", crash_names[k], values[d],
-                    cs_outcome_name(r->sm.outcome), r->sm.max_decel_50ms_g, r->sm.max_dynamic_penetration,
+                    cs_outcome_name(r->sm.outcome), r->sm.max_50ms_decel_g, r->sm.max_dynamic_penetration_m,
                     exit, 100.0 * r->sm.energy_balance_error);
             char variant[64];
             snprintf(variant, sizeof variant, "%s %s", refinements[t].setting, values[d]);
@@ -478,8 +479,8 @@ static double refinement_table(FILE *md, FILE *csv, const suite *s, int t) {
             worst = HUGE_VAL;
             continue;
         }
-        double decel = rel_err(a->sm.max_decel_50ms_g, b->sm.max_decel_50ms_g),
-               pen = rel_err(a->sm.max_dynamic_penetration, b->sm.max_dynamic_penetration);
+        double decel = rel_err(a->sm.max_50ms_decel_g, b->sm.max_50ms_decel_g),
+               pen = rel_err(a->sm.max_dynamic_penetration_m, b->sm.max_dynamic_penetration_m);
         fprintf(md, "| %s | %s -> %s | change | %+.1f%% | %+.1f%% | | |\n", crash_names[k], values[0],
                 values[count - 1], decel, pen);
         worst = fmax(worst, fmax(fabs(decel), fabs(pen)));
@@ -614,9 +615,9 @@ static void bands_add(bands *b, const result *r) {
     if (!r->ok) return;
     b->runs++;
     b->through += cs_outcome_through(r->sm.outcome);
-    band_add(&b->decel, r->sm.max_decel_50ms_g, 1);
-    band_add(&b->pen, r->sm.max_dynamic_penetration, 1);
-    band_add(&b->exit, r->sm.exit_speed, cs_outcome_through(r->sm.outcome));
+    band_add(&b->decel, r->sm.max_50ms_decel_g, 1);
+    band_add(&b->pen, r->sm.max_dynamic_penetration_m, 1);
+    band_add(&b->exit, r->sm.exit_speed_mps, cs_outcome_through(r->sm.outcome));
     for (int c = 0; c < 2; c++)
         band_add(&b->brk[c], r->cable_break[c], r->cable_break[c] >= 0.0);
 }
@@ -759,14 +760,15 @@ static void reading_row(FILE *md, const char *name, const char *what, const resu
         return;
     }
     char exit[32] = "-", b[2][32];
-    if (cs_outcome_through(r->sm.outcome)) snprintf(exit, sizeof exit, "%.1f mph", r->sm.exit_speed / MPH);
+    if (cs_outcome_through(r->sm.outcome))
+        snprintf(exit, sizeof exit, "%.1f mph", r->sm.exit_speed_mps / MPH);
     const cs_summary *m = &r->sm;
     fprintf(md, "| %s | %s | %s | %.2f g | %.2f m | %s | %s, %s | %d / %d / %d |\n", name, what,
-            cs_outcome_name(m->outcome), m->max_decel_50ms_g, m->max_dynamic_penetration, exit,
+            cs_outcome_name(m->outcome), m->max_50ms_decel_g, m->max_dynamic_penetration_m, exit,
             fmt_time(r->cable_break[0], b[0], sizeof b[0]), fmt_time(r->cable_break[1], b[1], sizeof b[1]),
-            m->posts_failed_rotation[0] + m->posts_failed_rotation[1],
-            m->posts_failed_shear[0] + m->posts_failed_shear[1],
-            m->posts_failed_pullout[0] + m->posts_failed_pullout[1]);
+            m->posts_failed_rotation_left + m->posts_failed_rotation_right,
+            m->posts_failed_shear_left + m->posts_failed_shear_right,
+            m->posts_failed_pullout_left + m->posts_failed_pullout_right);
 }
 
 static void write_readings(FILE *md, FILE *csv, const suite *s) {
@@ -867,11 +869,10 @@ static void road_row(FILE *md, const char *name, const char *what, const result 
     const cs_summary *m = &r->sm;
     char exit[48] = "-";
     if (cs_outcome_exits(m->outcome))
-        snprintf(exit, sizeof exit, "%.1f km/h at %.1f deg", m->exit_speed * 3.6,
-                 m->exit_angle * 180 / CS_PI_V);
+        snprintf(exit, sizeof exit, "%.1f km/h at %.1f deg", m->exit_speed_mps * 3.6, m->exit_angle_deg);
     fprintf(md, "| %s | %s | %s | %.2f m (%.1f ft) | %.2f m | %s | %d | %d |%s\n", name, what,
-            cs_outcome_name(m->outcome), m->max_barrier_deflection, m->max_barrier_deflection / FT,
-            m->working_width, exit, r->released, m->posts_failed_left + m->posts_failed_right, more);
+            cs_outcome_name(m->outcome), m->max_barrier_deflection_m, m->max_barrier_deflection_m / FT,
+            m->working_width_m, exit, r->released, m->posts_failed_left + m->posts_failed_right, more);
 }
 
 static void write_roadside(FILE *md, FILE *csv, const suite *s) {
@@ -900,14 +901,15 @@ static void write_roadside(FILE *md, FILE *csv, const suite *s) {
     for (int k = 0; k < ROAD; k++) {
         if (s->road[k] < 0) continue;
         const result *base = &s->jobs[s->road[k]].r;
-        double lo = base->ok ? base->sm.max_barrier_deflection : HUGE_VAL, hi = base->ok ? lo : -HUGE_VAL;
+        double lo = base->ok ? base->sm.max_barrier_deflection_m : HUGE_VAL, hi = base->ok ? lo : -HUGE_VAL;
         for (int r = 0; r < ROAD_READINGS; r++) {
             if (s->road_reading[k][r] < 0) continue;
             const result *rr = &s->jobs[s->road_reading[k][r]].r;
             road_row(md, road_names[k], road_readings[r].what, rr, "");
             csv_row(csv, "roadside reading", road_names[k], road_readings[r].what, rr);
             if (rr->ok)
-                lo = fmin(lo, rr->sm.max_barrier_deflection), hi = fmax(hi, rr->sm.max_barrier_deflection);
+                lo = fmin(lo, rr->sm.max_barrier_deflection_m),
+                hi = fmax(hi, rr->sm.max_barrier_deflection_m);
         }
         if (lo <= hi) fprintf(md, "| %s | **band** | | %.2f-%.2f m | | | | |\n", road_names[k], lo, hi);
     }
@@ -959,6 +961,12 @@ static suite *suite_create(void) {
         free(s);
         return NULL;
     }
+    if (!cs_loader_data_dir(s->loader)[0]) {
+        fprintf(stderr, "cablesim validate: cannot find the parts library and its validation/ (set "
+                        "CABLESIM_DATA to its folder)\n");
+        suite_free(s);
+        return NULL;
+    }
     snprintf(data_dir, sizeof data_dir, "%s/validation", cs_loader_data_dir(s->loader));
     if (cs_validation_read(data_dir, &s->data, why, sizeof why) == 0) return s;
     fprintf(stderr, "cablesim validate: %s\n", why);
@@ -967,7 +975,7 @@ static suite *suite_create(void) {
 }
 
 int cs_command_validate(int argc, char **argv) {
-    const char *dir = "results/validation", *examples = "examples", *only = NULL;
+    const char *dir = "results/validation", *examples = NULL, *only = NULL;
     int report_only = 0;
     for (int i = 2; i < argc; i++) {
         if (strcmp(argv[i], "--report-only") == 0) {
@@ -1008,7 +1016,13 @@ int cs_command_validate(int argc, char **argv) {
         suite_free(s);
         return 1;
     }
-    s->examples = examples;
+    /* The examples: --examples, else those installed with the parts library, else ./examples (a source
+     * checkout). */
+    char installed[1100];
+    snprintf(installed, sizeof installed, "%s/examples", cs_loader_data_dir(s->loader));
+    s->examples = examples                                           ? examples
+                  : stat(installed, &st) == 0 && S_ISDIR(st.st_mode) ? installed
+                                                                     : "examples";
     time_t t0 = time(NULL);
     plan(s, only);
     run_all(s);

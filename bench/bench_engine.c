@@ -11,7 +11,7 @@
 #include <sys/resource.h>
 #include <time.h>
 
-#include "load/loader.h"
+#include "cablesim/loader.h"
 
 static double now(void) {
     struct timespec t;
@@ -89,15 +89,15 @@ int main(int argc, char **argv) {
     qsort(times, (size_t)repeat, sizeof *times, by_value);
     qsort(cpus, (size_t)repeat, sizeof *cpus, by_value);
     double best = times[0], median = times[repeat / 2];
-    double steps = sum.t / dt;
+    double steps = sum.t_end_s / dt;
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
     printf("model=%s posts=%d cables=%d repeat=%d load_ms=%.2f engine_ms_best=%.2f engine_ms_median=%.2f "
            "cpu_ms_best=%.2f "
            "t_reached_s=%.4f steps=%.0f steps_per_s=%.0f us_per_step=%.2f ns_per_post_step=%.1f outcome=%s "
            "solver_warnings=%d peak_rss_kb=%ld\n",
-           argv[1], posts, cables, repeat, 1e3 * load, 1e3 * best, 1e3 * median, 1e3 * cpus[0], sum.t, steps,
-           steps / best, 1e6 * best / steps, 1e9 * best / steps / (posts > 0 ? posts : 1),
+           argv[1], posts, cables, repeat, 1e3 * load, 1e3 * best, 1e3 * median, 1e3 * cpus[0], sum.t_end_s,
+           steps, steps / best, 1e6 * best / steps, 1e9 * best / steps / (posts > 0 ? posts : 1),
            cs_outcome_name(sum.outcome), sum.solver_warnings, ru.ru_maxrss);
     free(times);
     free(cpus);

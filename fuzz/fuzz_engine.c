@@ -35,8 +35,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         broken(&d, err.message);
     cs_summary sm;
     cs_state_summary(s, &sm);
-    const double r[] = {sm.max_decel_50ms_g, sm.max_dynamic_penetration, sm.max_barrier_deflection,
-                        sm.energy_balance_error, sm.max_cable_tension};
+    const double r[] = {sm.max_50ms_decel_g, sm.max_dynamic_penetration_m, sm.max_barrier_deflection_m,
+                        sm.energy_balance_error, sm.max_cable_tension_n};
     for (size_t i = 0; i < sizeof r / sizeof *r; i++)
         if (!isfinite(r[i])) broken(&d, "a response is not finite");
     cs_state_free(s);

@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "load/loader.h"
+#include "cablesim/loader.h"
 
 #ifndef CS_SOURCE_DIR
 #define CS_SOURCE_DIR "."

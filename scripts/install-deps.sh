@@ -11,6 +11,9 @@ pkgs+=(libopenmpi-dev openmpi-bin)
 pkgs+=(libnetcdf-dev netcdf-bin)
 # libjson-c-dev: cablesim compare reads each run's summary.json.
 pkgs+=(libjson-c-dev)
+# doxygen: the API reference (make docs) and its test (tests/api_docs.sh); help2man: the command's manual
+# page, made from its --help at build time; dpkg-dev: dpkg-shlibdeps, the .deb's dependencies (make package).
+pkgs+=(doxygen help2man dpkg-dev)
 # report.html (report/): node and npm build its page (Debian's only where none is installed: a newer one
 # may be); Debian's chromium and chromium-driver run its browser test.
 pkgs+=(chromium chromium-driver)

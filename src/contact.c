@@ -80,7 +80,7 @@ static void slip(const cs_model *model, cs_state *s, int c, cs_event_type why) {
     cs_event_add(model, s, why, CS_ELEMENT_CABLE, c, s->t);
     if (!s->contact_started) { /* the vehicle met the cable, if only to pass it */
         s->contact_started = 1;
-        s->summary.first_contact_time = s->t;
+        s->summary.first_contact_time_s = s->t;
     }
 }
 
@@ -172,7 +172,7 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
         cs->engaged |= cs_node_is_corner(cs->node[i]);
     if (cs->engaged && !s->contact_started) {
         s->contact_started = 1;
-        s->summary.first_contact_time = s->t;
+        s->summary.first_contact_time_s = s->t;
     }
 }
 

@@ -504,7 +504,7 @@ static void capture(const cs_model *model, cs_state *s, int p, int pusher) {
     ps->reach = ps->lever * sin(lean) - v3_dot(rel, f);
     if (!s->contact_started) {
         s->contact_started = 1;
-        s->summary.first_contact_time = s->t;
+        s->summary.first_contact_time_s = s->t;
     }
     for (int c = 0; c < model->cable_count; c++) {
         cs_cable_state *cs = &s->cables[c];

@@ -18,9 +18,9 @@ static void update_decel(const cs_model *model, cs_state *s, double u) {
     double old = s->speed_ring[(s->step + 1) % n];
     double w = model->window_steps * model->scenario.dt;
     s->decel_50ms_g = (old - u) / w / CS_STANDARD_GRAVITY;
-    if (s->decel_50ms_g > s->summary.max_decel_50ms_g) {
-        s->summary.max_decel_50ms_g = s->decel_50ms_g;
-        s->summary.t_max_decel = s->t;
+    if (s->decel_50ms_g > s->summary.max_50ms_decel_g) {
+        s->summary.max_50ms_decel_g = s->decel_50ms_g;
+        s->summary.t_max_50ms_decel_s = s->t;
     }
 }
 
@@ -45,9 +45,10 @@ static void close_decel_window(const cs_model *model, cs_state *s) {
     if (s->ring_fill == 0 || s->ring_fill >= n) return;
     double first = s->speed_ring[(s->step + 1 - s->ring_fill) % n], last = s->speed_ring[s->step % n];
     double w = model->window_steps * model->scenario.dt, g = (first - last) / w / CS_STANDARD_GRAVITY;
-    if (g > s->summary.max_decel_50ms_g) {
-        s->summary.max_decel_50ms_g = g;
-        s->summary.t_max_decel = s->t - (s->ring_fill - 1) * model->scenario.dt + w; /* the window's end */
+    if (g > s->summary.max_50ms_decel_g) {
+        s->summary.max_50ms_decel_g = g;
+        s->summary.t_max_50ms_decel_s =
+            s->t - (s->ring_fill - 1) * model->scenario.dt + w; /* the window's end */
     }
 }
 
@@ -70,11 +71,11 @@ static void end_run(const cs_model *model, cs_state *s, cs_outcome outcome, doub
     s->outcome = outcome;
     close_decel_window(model, s);
     if (outcome == CS_STOPPED) {
-        s->summary.stop_time = s->t;
+        s->summary.stop_time_s = s->t;
         cs_event_add(model, s, CS_EVENT_STOPPED, CS_ELEMENT_VEHICLE, 0, value);
     } else if (cs_outcome_exits(outcome)) {
-        s->summary.exit_speed = value;
-        s->summary.exit_angle = atan2(-s->vel[1], fabs(s->vel[0]));
+        s->summary.exit_speed_mps = value;
+        s->summary.exit_angle_deg = atan2(-s->vel[1], fabs(s->vel[0])) * 180.0 / 3.14159265358979323846;
         cs_event_add(model, s, outcome == CS_REDIRECTED ? CS_EVENT_REDIRECTED : CS_EVENT_BREAKTHROUGH,
                      CS_ELEMENT_VEHICLE, 0, value);
     }
@@ -104,13 +105,13 @@ void cs_response_update(const cs_model *model, cs_state *s) {
     double u = v3_dot(s->vel, model->dir);
     update_decel(model, s, u);
     double pen = face_penetration(model, s);
-    if (pen > sm->max_dynamic_penetration) sm->max_dynamic_penetration = pen;
-    sm->working_width = fmax(sm->working_width, vehicle_reach(model, s));
+    if (pen > sm->max_dynamic_penetration_m) sm->max_dynamic_penetration_m = pen;
+    sm->working_width_m = fmax(sm->working_width_m, vehicle_reach(model, s));
     for (int p = 0; p < model->post_count; p++) {
         if (!cs_post_standing(&s->posts[p])) continue;
         double top[3];
         cs_post_attachment(model, p, s->posts[p].tilt, model->posts[p].height, top);
-        sm->working_width = fmax(sm->working_width, top[1]);
+        sm->working_width_m = fmax(sm->working_width_m, top[1]);
     }
 
     int engaged = 0, intact = 0; /* a struck post still standing and bearing holds the vehicle like a cable */
@@ -120,17 +121,18 @@ void cs_response_update(const cs_model *model, cs_state *s) {
         const cs_cable_state *cs = &s->cables[c];
         intact += cs->status == CS_CABLE_INTACT;
         engaged += cs->status == CS_CABLE_INTACT && cs->engaged;
-        if (cs->max_tension_seen > sm->max_cable_tension) sm->max_cable_tension = cs->max_tension_seen;
+        if (cs->max_tension_seen > sm->max_cable_tension_n) sm->max_cable_tension_n = cs->max_tension_seen;
         for (int i = 0; cs->status == CS_CABLE_INTACT && i < cs->node_count; i++)
-            if (cs->pos[3 * i + 1] > sm->max_barrier_deflection)
-                sm->max_barrier_deflection = cs->pos[3 * i + 1];
+            if (cs->pos[3 * i + 1] > sm->max_barrier_deflection_m)
+                sm->max_barrier_deflection_m = cs->pos[3 * i + 1];
     }
     sm->cables_broken = 0;
     for (int c = 0; c < model->cable_count; c++)
         sm->cables_broken += s->cables[c].status == CS_CABLE_BROKEN;
     sm->posts_failed_left = sm->posts_failed_right = 0;
-    for (int k = 0; k < 2; k++)
-        sm->posts_failed_rotation[k] = sm->posts_failed_shear[k] = sm->posts_failed_pullout[k] = 0;
+    sm->posts_failed_rotation_left = sm->posts_failed_rotation_right = 0;
+    sm->posts_failed_shear_left = sm->posts_failed_shear_right = 0;
+    sm->posts_failed_pullout_left = sm->posts_failed_pullout_right = 0;
     for (int p = 0; p < model->post_count; p++) {
         cs_post_status st = s->posts[p].status;
         if (cs_post_standing(&s->posts[p])) continue;
@@ -139,16 +141,18 @@ void cs_response_update(const cs_model *model, cs_state *s) {
             sm->posts_failed_right++;
         else
             sm->posts_failed_left++;
-        sm->posts_failed_rotation[right] += st == CS_POST_FAILED_ROTATION;
-        sm->posts_failed_shear[right] += st == CS_POST_FAILED_SHEAR;
-        sm->posts_failed_pullout[right] += st == CS_POST_FAILED_PULLOUT;
+        *(right ? &sm->posts_failed_rotation_right : &sm->posts_failed_rotation_left) +=
+            st == CS_POST_FAILED_ROTATION;
+        *(right ? &sm->posts_failed_shear_right : &sm->posts_failed_shear_left) += st == CS_POST_FAILED_SHEAR;
+        *(right ? &sm->posts_failed_pullout_right : &sm->posts_failed_pullout_left) +=
+            st == CS_POST_FAILED_PULLOUT;
     }
-    sm->working_width = fmax(sm->working_width, sm->max_barrier_deflection);
-    sm->t = s->t;
-    v3_copy(sm->final_position, s->pos);
+    sm->working_width_m = fmax(sm->working_width_m, sm->max_barrier_deflection_m);
+    sm->t_end_s = s->t;
+    v3_copy(sm->final_position_m, s->pos);
 
     if (s->contact_started && u <= model->scenario.stop_speed) {
-        end_run(model, s, CS_STOPPED, sm->max_dynamic_penetration);
+        end_run(model, s, CS_STOPPED, sm->max_dynamic_penetration_m);
     } else if (s->contact_started && engaged == 0 && s->vel[1] < 0.0) {
         /* moving back to the traffic side when contact ends: redirected, even with a cable slipped under
          * it or its CG still past the line (it straddles the cables on its way out) */

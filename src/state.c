@@ -208,7 +208,7 @@ void cs_state_vehicle(const cs_model *model, const cs_state *s, cs_vehicle_view 
     out->decel_50ms_g = s->decel_50ms_g;
     out->crush = s->crush;
     out->face_force = s->face_force;
-    out->penetration = s->summary.max_dynamic_penetration;
+    out->penetration = s->summary.max_dynamic_penetration_m;
     v3_copy(out->barrier_force, s->force);
     for (int k = 0; k < CS_CORNERS; k++) {
         double lo, hi;

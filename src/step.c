@@ -116,9 +116,9 @@ void cs_state_reset(const cs_model *model, cs_state *s) {
     s->decel_50ms_g = 0.0;
     s->work->solver_residual = 0.0;
     memset(&s->summary, 0, sizeof s->summary);
-    s->summary.first_contact_time = -1.0;
-    s->summary.stop_time = -1.0;
-    s->summary.exit_speed = -1.0;
+    s->summary.first_contact_time_s = -1.0;
+    s->summary.stop_time_s = -1.0;
+    s->summary.exit_speed_mps = -1.0;
 
     cs_vehicle_start(model, s);
     settle_barrier(model, s);
@@ -129,8 +129,8 @@ void cs_state_reset(const cs_model *model, cs_state *s) {
     s->e_initial_total = cs_energy_total(&s->energy);
     cs_energy_update(model, s);
     s->summary.energy_balance_error = 0.0;
-    s->summary.initial_kinetic_energy = s->e_initial_kinetic;
-    s->summary.max_cable_tension = 0.0;
+    s->summary.initial_kinetic_energy_j = s->e_initial_kinetic;
+    s->summary.max_cable_tension_n = 0.0;
     s->work->stored_committed = cs_barrier_stored_energy(model, s);
 }
 

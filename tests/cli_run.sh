@@ -3,13 +3,21 @@
 # --set on the command line, that a refused model writes nothing, and that a run repeats byte for byte.
 source "$(dirname "$0")/lib.sh"
 
-check "--help" '"$cs" --help | grep -q "usage: cablesim run FILE"'
+check "--help" '"$cs" --help | grep -q "^Usage: cablesim run FILE"'
 check "--version" '"$cs" --version | grep -q "^cablesim [0-9]"'
 "$cs" frobnicate >/dev/null 2>&1
 check "unknown command is status 2" '[ $? -eq 2 ]'
 "$cs" run >/dev/null 2>&1
 check "run without a file is status 2" '[ $? -eq 2 ]'
-check "list names the parts" '"$cs" list | grep -q "^  M " && "$cs" list | grep -q "A603-1.75in" && "$cs" list | grep -q "HSS4x4x1/8"'
+check "list exits 0 and names the parts" \
+    '"$cs" list >"$tmp/list" && grep -q "^  M " "$tmp/list" && grep -q "A603-1.75in" "$tmp/list" && grep -q "HSS4x4x1/8" "$tmp/list"'
+check "list names its folder: the source tree's data/ for a program of the build tree" \
+    '"$cs" list | head -1 | grep -qx "Parts library: $PWD/data"'
+mkdir "$tmp/parts" && cp data/*.yaml "$tmp/parts/" && sed -i 's/^    - name: H$/    - name: H-renamed/' "$tmp/parts/vehicles.yaml"
+check "CABLESIM_DATA moves the parts library" \
+    'CABLESIM_DATA="$tmp/parts" "$cs" list | grep -q "^  H-renamed " && CABLESIM_DATA="$tmp/parts" "$cs" list | head -1 | grep -qx "Parts library: $tmp/parts"'
+CABLESIM_DATA="$tmp/none" "$cs" list >/dev/null 2>"$tmp/stderr"
+check "a CABLESIM_DATA that is no folder: status 2, named" '[ $? -eq 2 ] && grep -q "^$tmp/none: cannot read the parts library (CABLESIM_DATA; " "$tmp/stderr"'
 for f in examples/*.yaml; do
     check "check $f" '"$cs" check "$f" >/dev/null'
 done
@@ -29,6 +37,13 @@ check "events header" 'head -1 "$out/events.csv" | grep -q "^t_s,type,element_ki
 for key in max_50ms_decel_g max_dynamic_penetration_m max_barrier_deflection_m stopped stop_time_s exit_speed_mps \
     posts_failed_left posts_failed_right initial_kinetic_energy_j energy_balance_error events inputs; do
     check "summary.json has $key" 'grep -q "\"$key\":" "$out/summary.json"'
+done
+# Every field of the C summary (cs_summary in include/cablesim/sim.h) is a key of summary.json by the same name.
+fields=$(sed -n '/^typedef struct cs_summary {/,/^} cs_summary;/p' include/cablesim/sim.h | perl -0pe 's{/\*.*?\*/}{}gs' |
+    grep -v cs_summary | grep -oE '[a-z_0-9]+(\[[0-9]+\])?[,;]' | tr -d ',;' | sed 's/\[.*//')
+check "the fields of cs_summary were read" '[ "$(wc -w <<<"$fields")" -ge 26 ]'
+for key in $fields; do
+    check "summary.json has cs_summary's $key" 'grep -q "\"$key\":" "$out/summary.json"'
 done
 check "--set reached the run" 'grep -q "\"speed\":15.6464" "$out/summary.json"'
 check "no NaN or infinity in outputs" '! grep -qiE "(^|[,:[])-?(nan|inf)" "$out/timeseries.csv" "$out/summary.json" "$out/events.csv"'

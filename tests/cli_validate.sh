@@ -64,13 +64,13 @@ check "no NaN or Inf in the sensitivity csv" '! grep -qiE "nan|inf" "$dir/sens/v
 check "unknown option exits 2" '[ $? -eq 2 ]'
 
 # The values compared with are read at run time from data/validation/ beside the parts library
-# (CABLESIM_DATA_DIR moves both); a file that cannot be read is named with its place, and nothing is written.
+# (CABLESIM_DATA moves both); a file that cannot be read is named with its place, and nothing is written.
 cp -r data "$tmp/data"
 sed -i 's/^3,6,39024$/3,6,39025/' "$tmp/data/validation/eq21-table4.csv"
-CABLESIM_DATA_DIR="$tmp/data" "$cs" validate -o "$tmp/moved" --only verification >/dev/null 2>&1
+CABLESIM_DATA="$tmp/data" "$cs" validate -o "$tmp/moved" --only verification >/dev/null 2>&1
 check "Table 4 comes from data/validation/eq21-table4.csv" 'grep -q "| 3.00 ft | 6 ft | 39025 lb | 39024 lb |" "$tmp/moved/validation.md"'
 sed -i 's/^NPGB-3,20.00,/NPGB-3,2O.00,/' "$tmp/data/validation/post-bogie-tests.csv"
-out=$(CABLESIM_DATA_DIR="$tmp/data" "$cs" validate -o "$tmp/broken" --only bogie 2>&1)
+out=$(CABLESIM_DATA="$tmp/data" "$cs" validate -o "$tmp/broken" --only bogie 2>&1)
 check "a bad value in a data file: status 1, its place, nothing written" '[ $? -eq 1 ] && grep -q "post-bogie-tests.csv:8:8: .2O.00. is not a number" <<<"$out" && [ ! -e "$tmp/broken" ]'
 check "APS3 and APS4 are shown as withheld" 'grep -q "| outcome | .* | withheld | .* | withheld |" "$dir/crash/validation.md"'
 finish

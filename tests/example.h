@@ -3,7 +3,7 @@
 #ifndef CS_TEST_EXAMPLE_H
 #define CS_TEST_EXAMPLE_H
 
-#include "load/loader.h"
+#include "cablesim/loader.h"
 
 #include <stdio.h>
 

@@ -12,7 +12,7 @@
 
 #include <cmocka.h>
 
-#include "load/loader.h"
+#include "cablesim/loader.h"
 
 static const double MPH = 0.44704;
 

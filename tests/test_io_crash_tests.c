@@ -45,12 +45,12 @@ static pinned run(const char *name, unsigned long long *hash) {
     pinned p;
     memset(&p, 0, sizeof p);
     snprintf(p.outcome, sizeof p.outcome, "%s", cs_outcome_name(sm.outcome));
-    p.decel_g = sm.max_decel_50ms_g, p.penetration_m = sm.max_dynamic_penetration, p.t_s = sm.t;
-    p.exit_speed_mps = cs_outcome_exits(sm.outcome) ? sm.exit_speed : 0.0;
+    p.decel_g = sm.max_50ms_decel_g, p.penetration_m = sm.max_dynamic_penetration_m, p.t_s = sm.t_end_s;
+    p.exit_speed_mps = cs_outcome_exits(sm.outcome) ? sm.exit_speed_mps : 0.0;
     p.cables_broken = sm.cables_broken;
-    p.rotation = sm.posts_failed_rotation[0] + sm.posts_failed_rotation[1];
-    p.shear = sm.posts_failed_shear[0] + sm.posts_failed_shear[1];
-    p.pullout = sm.posts_failed_pullout[0] + sm.posts_failed_pullout[1];
+    p.rotation = sm.posts_failed_rotation_left + sm.posts_failed_rotation_right;
+    p.shear = sm.posts_failed_shear_left + sm.posts_failed_shear_right;
+    p.pullout = sm.posts_failed_pullout_left + sm.posts_failed_pullout_right;
     for (int a = 0; a < 2; a++) {
         cs_anchor_view v;
         cs_state_anchor(m, s, a, &v);

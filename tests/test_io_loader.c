@@ -11,8 +11,8 @@
 
 #include <cmocka.h>
 
+#include "cablesim/loader.h"
 #include "check.h"
-#include "load/loader.h"
 
 static const double PI = 3.14159265358979323846, FT = 0.3048, IN = 0.0254, LB = 0.45359237,
                     LBF = 0.45359237 * 9.80665;

@@ -338,7 +338,7 @@ static synthetic *synthetic_new(int frames) {
 
 static void synthetic_free(synthetic *s, const char *const *names, int count) {
     tmp_remove(&s->dir, names, count);
-    cs_record_free(&s->rec);
+    cs_record_release(&s->rec);
     free(s);
 }
 

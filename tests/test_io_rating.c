@@ -9,7 +9,7 @@ static cs_summary stopped_at(double front) {
     cs_summary s;
     memset(&s, 0, sizeof s);
     s.outcome = CS_STOPPED;
-    s.max_dynamic_penetration = front;
+    s.max_dynamic_penetration_m = front;
     return s;
 }
 
@@ -93,16 +93,17 @@ static void roadside_test_conditions(void **state) {
     assert_int_equal(cs_roadside_tests("en-1317", 3, NULL, t), 0);
     cs_roadside_tests("nchrp-350", 0, "3-11", t);
     cs_summary s = {0};
-    s.outcome = CS_REDIRECTED, s.exit_speed = 18.0, s.max_barrier_deflection = 2.5, s.working_width = 2.6;
-    s.exit_angle = 0.59 * t[0].angle;
+    s.outcome = CS_REDIRECTED, s.exit_speed_mps = 18.0, s.max_barrier_deflection_m = 2.5,
+    s.working_width_m = 2.6;
+    s.exit_angle_deg = 0.59 * t[0].angle * 180 / 3.14159265358979323846;
     cs_roadside_result r = cs_roadside_read(&t[0], &s);
     assert_true(r.contained && r.redirected && r.exit_angle_within);
-    s.exit_angle = 0.61 * t[0].angle;
+    s.exit_angle_deg = 0.61 * t[0].angle * 180 / 3.14159265358979323846;
     assert_false(cs_roadside_read(&t[0], &s).exit_angle_within);
     s.outcome = CS_BREAKTHROUGH;
     r = cs_roadside_read(&t[0], &s);
     assert_false(r.contained || r.redirected);
-    CHECK_REL(r.exit_speed, 18.0, 1e-12);
+    CHECK_REL(r.exit_speed_mps, 18.0, 1e-12);
 }
 
 int main(void) {

@@ -2,7 +2,12 @@
  * output from then on, and it always ends with the run's last state. A truck on the open road for 0.5 s,
  * an output every 0.5-ms step (outputs 0 to 1000), into a record of at most 100 frames: full at outputs
  * 100, 200, 400 and 800, it ends recording every 16th and holds the outputs 0, 16, ..., 992 (8 ms
- * apart) and the run's last, 1000. */
+ * apart) and the run's last, 1000. The public way (cablesim/output.h) reads the same frames, refuses what
+ * is out of range, and writes the run's files into a folder, all or none. */
+#include <stdlib.h>
+#include <sys/stat.h>
+
+#include "cablesim/cablesim.h"
 #include "check.h"
 #include "fixture.h"
 #include "out/record.h"
@@ -30,12 +35,82 @@ static void record_thins_and_keeps_the_end(void **state) {
     for (int f = 0; f + 1 < rec.frame_count; f++)
         CHECK_ABS(rec.vehicle[f].t, 16 * f * fx.scenario.dt, 1e-9);
     CHECK_ABS(rec.vehicle[rec.frame_count - 1].t, 0.5, 1e-9);
-    cs_record_free(&rec);
+    cs_record_release(&rec);
     cs_state_free(s);
     cs_model_free(m);
 }
 
+static int exists(const char *dir, const char *name) {
+    char path[1024];
+    struct stat st;
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    return stat(path, &st) == 0 && st.st_size > 0;
+}
+
+static void public_record_and_outputs(void **state) {
+    (void)state;
+    char why[512];
+    cs_loader *l = cs_loader_create(CS_SOURCE_DIR "/data", why, sizeof why);
+    if (!l) fail_msg("%s", why);
+    assert_int_equal(cs_loader_set(l, "scenario.t_end=60 ms"), 0);
+    cs_model_input in;
+    cs_model *m = NULL;
+    if (cs_loader_load(l, CS_SOURCE_DIR "/examples/aps3.yaml", &in) != 0 || !(m = cs_loader_build(l, &in))) {
+        cs_loader_print_errors(l, stderr);
+        fail_msg("examples/aps3.yaml did not load");
+    }
+    cs_error err;
+    cs_state *s = cs_state_create(m, &err);
+    cs_record *rec = cs_record_create(m, &err);
+    assert_non_null(s), assert_non_null(rec);
+    assert_int_equal(cs_run(m, s, cs_record_frame, rec, &err), CS_OK);
+    assert_true(cs_record_ok(rec));
+    int n = cs_record_frame_count(rec);
+    assert_int_equal(n, 61); /* t = 0, every 1 ms to 60 ms */
+    cs_vehicle_view now;
+    cs_state_vehicle(m, s, &now);
+    const cs_vehicle_view *last = cs_record_vehicle(rec, n - 1);
+    assert_non_null(last);
+    CHECK_ABS(last->t, 0.06, 1e-9);
+    assert_memory_equal(last, &now, sizeof now); /* the last frame is the state at the end */
+    CHECK_ABS(cs_record_vehicle(rec, 0)->t, 0.0, 0.0);
+    assert_null(cs_record_vehicle(rec, n)), assert_null(cs_record_vehicle(rec, -1));
+    assert_non_null(cs_record_energy(rec, 0));
+    assert_non_null(cs_record_cable(rec, 0, 1)), assert_null(cs_record_cable(rec, 0, 2));
+    assert_non_null(cs_record_post(rec, n - 1, cs_model_post_count(m) - 1));
+    assert_null(cs_record_post(rec, 0, cs_model_post_count(m)));
+    assert_non_null(cs_record_anchor(rec, 0, 1)), assert_null(cs_record_anchor(rec, 0, 2));
+    const double *xyz, *tension;
+    int points = cs_record_cable_path(rec, 0, 0, &xyz, &tension);
+    assert_int_equal(points, cs_record_cable(rec, 0, 0)->node_count);
+    assert_true(points >= 2);
+    CHECK_ABS(xyz[0], in.barrier.start_anchor.x, 0.01); /* at t = 0 a path starts at the start anchor (the
+                                                          pretension pulls it in a few mm) */
+    CHECK_ABS(xyz[3 * (points - 1)], in.barrier.end_anchor.x, 0.01); /* and ends at the end anchor */
+    assert_int_equal(cs_record_cable_path(rec, n, 0, &xyz, &tension), -1);
+
+    char dir[] = "/tmp/cs-outputs-XXXXXX";
+    assert_non_null(mkdtemp(dir));
+    char out[64];
+    snprintf(out, sizeof out, "%s/run", dir);
+    assert_int_equal(cs_write_outputs(out, &in, m, s, rec, 0, why, sizeof why), 0);
+    assert_true(exists(out, "timeseries.csv") && exists(out, "events.csv") && exists(out, "summary.json"));
+    assert_false(exists(out, "plots"));
+    char blocked[80];
+    snprintf(blocked, sizeof blocked, "%s/summary.json/run", out); /* a folder under a file: refused */
+    assert_int_equal(cs_write_outputs(blocked, &in, m, s, rec, 0, why, sizeof why), -1);
+    assert_true(strlen(why) > 0);
+    char cmd[128];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    assert_int_equal(system(cmd), 0);
+    cs_record_free(rec);
+    cs_state_free(s);
+    cs_model_free(m);
+    cs_loader_free(l);
+}
+
 int main(void) {
-    const struct CMUnitTest tests[] = {cmocka_unit_test(record_thins_and_keeps_the_end)};
+    const struct CMUnitTest tests[] = {cmocka_unit_test(record_thins_and_keeps_the_end),
+                                       cmocka_unit_test(public_record_and_outputs)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -12,7 +12,7 @@
 
 #include <cmocka.h>
 
-#include "load/loader.h"
+#include "cablesim/loader.h"
 #include "out/record.h"
 #include "out/report_html.h"
 
@@ -49,7 +49,7 @@ static int setup(void **st) {
 
 static int teardown(void **st) {
     run *r = *st;
-    cs_record_free(&r->rec);
+    cs_record_release(&r->rec);
     cs_state_free(r->state);
     cs_model_free(r->model);
     cs_loader_free(r->loader);
@@ -127,9 +127,9 @@ static void data_complete(void **st) {
     assert_true(json[0] == '{' && json[strlen(json) - 1] == '}');
     static const char *const keys[] = {"\"summary\":",
                                        "\"outcome\":",
-                                       "\"max_decel_50ms_g\":",
-                                       "\"max_penetration\":",
-                                       "\"exit_speed\":",
+                                       "\"max_50ms_decel_g\":",
+                                       "\"max_dynamic_penetration_m\":",
+                                       "\"exit_speed_mps\":",
                                        "\"posts_failed_left\":",
                                        "\"energy_balance_error\":",
                                        "\"scenario\":",
@@ -210,7 +210,7 @@ static void long_record_subsampled(void **st) {
     assert_non_null(strstr(json, ",9]"));
     assert_non_null(strstr(json, "\n[9,["));
     free(json);
-    cs_record_free(&big);
+    cs_record_release(&big);
 }
 
 int main(void) {

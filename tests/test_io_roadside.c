@@ -47,9 +47,9 @@ static pinned run(const char *name, const char *const *sets, unsigned long long 
     pinned p;
     memset(&p, 0, sizeof p);
     snprintf(p.outcome, sizeof p.outcome, "%s", cs_outcome_name(sm.outcome));
-    p.t_s = sm.t, p.deflection_m = sm.max_barrier_deflection, p.working_width_m = sm.working_width;
+    p.t_s = sm.t_end_s, p.deflection_m = sm.max_barrier_deflection_m, p.working_width_m = sm.working_width_m;
     if (cs_outcome_exits(sm.outcome))
-        p.exit_speed_mps = sm.exit_speed, p.exit_angle_deg = sm.exit_angle * 180 / 3.14159265358979323846;
+        p.exit_speed_mps = sm.exit_speed_mps, p.exit_angle_deg = sm.exit_angle_deg;
     for (int i = 0; i < cs_state_event_count(s); i++)
         p.released += cs_state_event(s, i)->type == CS_EVENT_CABLE_RELEASE;
     p.posts_failed = sm.posts_failed_left + sm.posts_failed_right;

@@ -41,21 +41,21 @@ static int setup(void **state) {
     if (!f->spec || f->spec->error_count || !(f->x = cs_sweep_samples(f->spec, &n))) return -1;
     cs_sweep_result *r = f->r;
     r[0].summary = (cs_summary){.outcome = CS_STOPPED,
-                                .t = 0.5,
-                                .max_decel_50ms_g = 3.25,
-                                .t_max_decel = 0.125,
-                                .max_dynamic_penetration = 1.2345678901234567,
-                                .max_barrier_deflection = 2.25,
-                                .working_width = 2.625,
-                                .stop_time = 0.4375,
-                                .exit_speed = 7,
-                                .first_contact_time = 0.003,
+                                .t_end_s = 0.5,
+                                .max_50ms_decel_g = 3.25,
+                                .t_max_50ms_decel_s = 0.125,
+                                .max_dynamic_penetration_m = 1.2345678901234567,
+                                .max_barrier_deflection_m = 2.25,
+                                .working_width_m = 2.625,
+                                .stop_time_s = 0.4375,
+                                .exit_speed_mps = 7,
+                                .first_contact_time_s = 0.003,
                                 .posts_failed_left = 2,
                                 .posts_failed_right = 3,
-                                .initial_kinetic_energy = 1087776.7091234,
+                                .initial_kinetic_energy_j = 1087776.7091234,
                                 .energy_balance_error = -4.2595107761234e-05,
-                                .max_cable_tension = 38621.246851234,
-                                .final_position = {20.5, -3.25, 1},
+                                .max_cable_tension_n = 38621.246851234,
+                                .final_position_m = {20.5, -3.25, 1},
                                 .solver_warnings = 1,
                                 .max_solver_residual = 0.0023941431861234};
     r[0].event_counts[CS_EVENT_POST_HINGE] = 2;
@@ -63,9 +63,9 @@ static int setup(void **state) {
     /* run 1 as run 0 but broken through, before any contact was recorded */
     cs_summary *b = &r[1].summary;
     *b = r[0].summary;
-    b->outcome = CS_BREAKTHROUGH, b->exit_speed = 13.75, b->first_contact_time = -1;
-    b->exit_angle = 0.25 * 3.14159265358979323846 / 2, b->working_width = 5.5; /* 22.5 degrees */
-    b->max_decel_50ms_g = 2.875, b->max_dynamic_penetration = 4.03125, b->max_cable_tension = 1.5e6;
+    b->outcome = CS_BREAKTHROUGH, b->exit_speed_mps = 13.75, b->first_contact_time_s = -1;
+    b->exit_angle_deg = 22.5, b->working_width_m = 5.5;
+    b->max_50ms_decel_g = 2.875, b->max_dynamic_penetration_m = 4.03125, b->max_cable_tension_n = 1.5e6;
     b->energy_balance_error = 0, b->posts_failed_left = 0, b->cables_broken = 2;
     r[1].event_counts[CS_EVENT_CABLE_BREAK] = 2;
     r[1].event_counts[CS_EVENT_UNDERRIDE] = 1;

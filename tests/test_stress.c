@@ -25,8 +25,8 @@ static int design_fails(int k) {
     cs_status st = cs_run(m, s, NULL, NULL, &err);
     cs_summary sm;
     cs_state_summary(s, &sm);
-    int finite = isfinite(sm.max_decel_50ms_g) && isfinite(sm.max_dynamic_penetration) &&
-                 isfinite(sm.max_barrier_deflection) && isfinite(sm.energy_balance_error);
+    int finite = isfinite(sm.max_50ms_decel_g) && isfinite(sm.max_dynamic_penetration_m) &&
+                 isfinite(sm.max_barrier_deflection_m) && isfinite(sm.energy_balance_error);
     int fails = st != CS_OK || !finite || fabs(sm.energy_balance_error) > 0.02;
     if (fails)
         printf("FAIL %s: %s, ledger %.4f, %s\n", d.what, st == CS_OK ? "ran" : err.message,

@@ -1,10 +1,28 @@
-/* cablesim: progressive-failure simulation of perimeter-security cable barriers. Umbrella header. */
+/** @file
+ * cablesim: progressive-failure simulation of cable barriers struck by a vehicle. The umbrella header:
+ * the engine's definitions (def.h) and its model, state, step and run (sim.h), model files (loader.h),
+ * and a run's time histories and output files (output.h). Link with libcablesim (pkg-config cablesim, or
+ * CMake's find_package(cablesim) and the target cablesim::cablesim). */
 #ifndef CABLESIM_H
 #define CABLESIM_H
 
+/** The version of these headers, MAJOR.MINOR.PATCH (CMakeLists.txt takes the project's version from it). */
 #define CS_VERSION_STRING "0.1.0"
 
 #include "cablesim/def.h"
+#include "cablesim/loader.h"
+#include "cablesim/output.h"
 #include "cablesim/sim.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** The version of the library linked, MAJOR.MINOR.PATCH: CS_VERSION_STRING of the headers it was built
+ * with. */
+CS_API const char *cs_version(void);
+
+#ifdef __cplusplus
+}
+#endif
 #endif

@@ -1,4 +1,5 @@
-/* Definition structs: plain data a caller fills (or a loader fills) and hands to cs_model_create().
+/** @file
+ * Definition structs: plain data a caller fills (or a loader fills) and hands to cs_model_create().
  * Every quantity is SI (m, kg, s, N, Pa, J, rad). Each struct has a cs_default_*() that returns the
  * documented defaults (docs/assumptions.md); fields that are design data default to 0 and must be set.
  *
@@ -9,109 +10,119 @@
 
 #include <stddef.h>
 
+/** Marks a function of the library's interface: exported from libcablesim.so, which hides the rest. */
+#if defined(__GNUC__)
+#define CS_API __attribute__((visibility("default")))
+#else
+#define CS_API
+#endif
+
 #ifdef __cplusplus
 extern "C" {
 #endif
 
+/** The most points a vehicle's crush curve has. */
 enum { CS_MAX_CRUSH_POINTS = 16 };
 
-/* Wire rope material: the idealised law of the paper (Fig. 3). Tension T against strain e:
+/** Wire rope material: the idealised law of the paper (Fig. 3). Tension T against strain e:
  *   T = EA e                      up to T = r_el * Fu            (elastic, slope EA)
  *   T = r_el Fu + r_2 EA (e - e1) up to T = Fu                   (secondary slope r_2 * EA)
  *   T = Fu                        up to e = breaking_strain      (plastic)
  *   broken                        beyond.
  * Unloading is elastic with slope EA; the plastic stretch stays. */
 typedef struct cs_rope_def {
-    double area;                    /* metallic area A, m^2 */
-    double modulus;                 /* apparent modulus E, Pa */
-    double nominal_strength;        /* Fu, N */
-    double elastic_limit_ratio;     /* r_el: end of the first slope as a fraction of Fu (paper: 0.6) */
-    double secondary_modulus_ratio; /* r_2: second slope as a fraction of E (paper: 0.6) */
-    double breaking_strain;         /* total strain at which the rope breaks (paper: 0.03) */
-    double mass_per_length;         /* kg/m: the spans sag under their own weight */
-    double diameter;                /* nominal diameter d, m (0: unknown) */
+    double area;                    /**< metallic area A, m^2 */
+    double modulus;                 /**< apparent modulus E, Pa */
+    double nominal_strength;        /**< Fu, N */
+    double elastic_limit_ratio;     /**< r_el: end of the first slope as a fraction of Fu (paper: 0.6) */
+    double secondary_modulus_ratio; /**< r_2: second slope as a fraction of E (paper: 0.6) */
+    double breaking_strain;         /**< total strain at which the rope breaks (paper: 0.03) */
+    double mass_per_length;         /**< kg/m: the spans sag under their own weight */
+    double diameter;                /**< nominal diameter d, m (0: unknown) */
 } cs_rope_def;
 
-/* How a rope's ends are made off at the anchors: each kind's published efficiency (its breaking strength
+/** How a rope's ends are made off at the anchors: each kind's published efficiency (its breaking strength
  * over the rope's) is in cs_termination_efficiency and docs/assumptions.md. */
 typedef enum cs_termination {
-    CS_TERMINATION_CLIPS = 0, /* wire rope clips (cable clamps): 80% below 1-in rope, 90% from 1 in */
-    CS_TERMINATION_SWAGED,    /* swaged socket or sleeve: 95% */
-    CS_TERMINATION_SPELTER,   /* poured (spelter) socket: 100% */
-    CS_TERMINATION_WEDGE      /* wedge socket: 75-95%, 85% taken */
+    CS_TERMINATION_CLIPS = 0, /**< wire rope clips (cable clamps): 80% below 1-in rope, 90% from 1 in */
+    CS_TERMINATION_SWAGED,    /**< swaged socket or sleeve: 95% */
+    CS_TERMINATION_SPELTER,   /**< poured (spelter) socket: 100% */
+    CS_TERMINATION_WEDGE      /**< wedge socket: 75-95%, 85% taken */
 } cs_termination;
 
+/** A cable: a wire rope at a height along the posts, tied to both anchors. */
 typedef struct cs_cable_def {
-    double height;                 /* z of the cable at the posts, m */
-    double pretension;             /* installed tension, N */
-    double post_friction;          /* mu between cable and post (capstan at a threaded post) */
-    cs_termination termination;    /* the fitting at each end */
-    double termination_efficiency; /* its strength over the rope's Fu (0: the kind's published value);
+    double height;                 /**< z of the cable at the posts, m */
+    double pretension;             /**< installed tension, N */
+    double post_friction;          /**< mu between cable and post (capstan at a threaded post) */
+    cs_termination termination;    /**< the fitting at each end */
+    double termination_efficiency; /**< its strength over the rope's Fu (0: the kind's published value);
                                       the rope breaks at its end when the end span's tension exceeds it */
-    cs_rope_def rope;
+    cs_rope_def rope;              /**< its rope */
 } cs_cable_def;
 
-/* The published efficiency of a fitting on a rope of diameter d (m; 0 unknown: the larger rope's). */
-double cs_termination_efficiency(cs_termination kind, double diameter);
+/** The published efficiency of a fitting on a rope of diameter d (m; 0 unknown: the larger rope's). */
+CS_API double cs_termination_efficiency(cs_termination kind, double diameter);
 
-/* Steel post section. */
+/** Steel post section. */
 typedef struct cs_section_def {
-    double plastic_modulus; /* Zx, m^3 */
-    double inertia;         /* Ix, m^4 */
-    double web_area;        /* Aw for shear, m^2 */
-    double yield_stress;    /* Fy, Pa */
-    double modulus;         /* E, Pa */
-    double mass_per_length; /* kg/m: the post's swing (0: a massless post, the paper's) */
+    double plastic_modulus; /**< Zx, m^3 */
+    double inertia;         /**< Ix, m^4 */
+    double web_area;        /**< Aw for shear, m^2 */
+    double yield_stress;    /**< Fy, Pa */
+    double modulus;         /**< E, Pa */
+    double mass_per_length; /**< kg/m: the post's swing (0: a massless post, the paper's) */
 } cs_section_def;
 
-/* Footing (or the post itself driven in soil) and the soil around it: lateral capacity by Eq. 21,
+/** Footing (or the post itself driven in soil) and the soil around it: lateral capacity by Eq. 21,
  *   S1 B D^2 - c_d P D - c_h P H = 0  =>  P = S1 B D^2 / (c_d D + c_h H),
  * evaluated in the paper's units (psf, ft, lb) and converted; see footing.c. */
 typedef struct cs_footing_def {
-    double diameter;          /* B, m (width facing the soil) */
-    double depth;             /* D, embedment, m */
-    double soil_pressure;     /* S1, average soil pressure above the point of rotation, Pa */
-    double soil_pressure_cap; /* the paper caps S1 at 8000 psf, Pa */
-    double coeff_depth;       /* c_d (paper 2.37; building code 2.34) */
-    double coeff_height;      /* c_h (paper 2.64; building code 2.55) */
-    double rotation_limit;    /* footing rotation in soil at which the post is lost, rad */
-    double pullout_capacity;  /* axial pull along the post that pulls it out, N; 0: the embedment's
+    double diameter;          /**< B, m (width facing the soil) */
+    double depth;             /**< D, embedment, m */
+    double soil_pressure;     /**< S1, average soil pressure above the point of rotation, Pa */
+    double soil_pressure_cap; /**< the paper caps S1 at 8000 psf, Pa */
+    double coeff_depth;       /**< c_d (paper 2.37; building code 2.34) */
+    double coeff_height;      /**< c_h (paper 2.64; building code 2.55) */
+    double rotation_limit;    /**< footing rotation in soil at which the post is lost, rad */
+    double pullout_capacity;  /**< axial pull along the post that pulls it out, N; 0: the embedment's
                                  skin friction (skin_friction pi B D^2 / 2) */
-    double dynamic_factor;    /* soil resistance under impact over Eq. 21's for a member of the bogie tests'
+    double dynamic_factor;    /**< soil resistance under impact over Eq. 21's for a member of the bogie tests'
                                  post's proportions (calibrated, assumptions.md); scaled to a member's own
                                  width and depth by the passive wedge's width effect (footing.c) */
-    double friction_angle;    /* the soil's angle of internal friction, rad (the wedge's width effect) */
-    double skin_friction;     /* shaft friction per metre of depth, Pa/m (uplift capacity, calibrated) */
+    double friction_angle;    /**< the soil's angle of internal friction, rad (the wedge's width effect) */
+    double skin_friction;     /**< shaft friction per metre of depth, Pa/m (uplift capacity, calibrated) */
 } cs_footing_def;
 
-/* How the cables are held on a post. All but clamped slide along the barrier with capstan friction.
+/** How the cables are held on a post. All but clamped slide along the barrier with capstan friction.
  * Slots and hooks let a cable go (attachment.c) when its pull along the post, toward the post's top,
  * exceeds friction on the post (the cable's post_friction times its pull across the post) plus what the
  * retainer holds (release_force): a post bent over under the cables turns their pull up along it. */
 typedef enum cs_attachment {
-    CS_ATTACH_THROUGH = 0, /* cable threaded through the post */
-    CS_ATTACH_CLAMPED = 1, /* cable clamped to the post: no sliding */
-    CS_ATTACH_SLOT = 2,    /* cables stacked in a slot open at the top (spacers, strap and cap): they ride up
-                              and out, the top one first */
-    CS_ATTACH_HOOK = 3     /* each cable in a hook bolt on the post's face: the hook opens */
+    CS_ATTACH_THROUGH = 0, /**< cable threaded through the post */
+    CS_ATTACH_CLAMPED = 1, /**< cable clamped to the post: no sliding */
+    CS_ATTACH_SLOT = 2, /**< cables stacked in a slot open at the top (spacers, strap and cap): they ride up
+                           and out, the top one first */
+    CS_ATTACH_HOOK = 3  /**< each cable in a hook bolt on the post's face: the hook opens */
 } cs_attachment;
 
-/* The documented strength of a kind's retainer along the post, N (docs/assumptions.md): 0 for kinds that
+/** The documented strength of a kind's retainer along the post, N (docs/assumptions.md): 0 for kinds that
  * never let go. */
-double cs_attachment_release_force(cs_attachment kind);
+CS_API double cs_attachment_release_force(cs_attachment kind);
 
+/** A post: its steel section, its footing in the soil and how it holds the cables. */
 typedef struct cs_post_def {
-    double x;      /* position along the barrier, m */
-    double height; /* top of the post above grade, m */
-    cs_section_def section;
-    cs_footing_def footing;
-    cs_attachment attachment;
-    double release_force;  /* a slot's or hook's retainer strength along the post, N (0: the kind's
-                              documented value, cs_attachment_release_force) */
-    double rotation_limit; /* post rotation from vertical at which it fails (paper: 45 deg), rad */
+    double x;                 /**< position along the barrier, m */
+    double height;            /**< top of the post above grade, m */
+    cs_section_def section;   /**< its steel */
+    cs_footing_def footing;   /**< its footing (or itself driven) in the soil */
+    cs_attachment attachment; /**< how it holds the cables */
+    double release_force;     /**< a slot's or hook's retainer strength along the post, N (0: the kind's
+                                 documented value, cs_attachment_release_force) */
+    double rotation_limit;    /**< post rotation from vertical at which it fails (paper: 45 deg), rad */
 } cs_post_def;
 
-/* A cable end anchor: a footing (dead-man) in the soil. Every cable is tied to the start anchor at one
+/** A cable end anchor: a footing (dead-man) in the soil. Every cable is tied to the start anchor at one
  * end and the end anchor at the other, each rope by its own end at height z. The footing resists the
  * ropes' horizontal pull by Eq. 21 at that height (times the soil's dynamic factor for its width, as a
  * post's footing), moves through the soil past it doing the soil's work, and pulls out, releasing the
@@ -119,101 +130,116 @@ typedef struct cs_post_def {
  * about the pivot 2/3 of its depth down) or when the ropes lift it with more than its pullout capacity.
  * A footing of zero diameter is rigid: it never moves or pulls out (a rock anchor, a test's fixed end). */
 typedef struct cs_anchor_def {
-    double x;                /* m */
-    double z;                /* height where the cables are tied, m */
-    double pullout_capacity; /* uplift that pulls it out, N; 0: its weight plus its skin friction
+    double x;                /**< m */
+    double z;                /**< height where the cables are tied, m */
+    double pullout_capacity; /**< uplift that pulls it out, N; 0: its weight plus its skin friction
                               * (footing.skin_friction); HUGE_VAL: never */
-    double length;           /* plan size across the pull, m (0: a round shaft of the footing's diameter) */
-    double mass;             /* kg, what moves with it (0: its concrete, CS_CONCRETE_DENSITY) */
-    cs_footing_def footing;  /* its width facing the pull (diameter), depth and soil; diameter 0: rigid */
+    double length;           /**< plan size across the pull, m (0: a round shaft of the footing's diameter) */
+    double mass;             /**< kg, what moves with it (0: its concrete, CS_CONCRETE_DENSITY) */
+    cs_footing_def footing;  /**< its width facing the pull (diameter), depth and soil; diameter 0: rigid */
 } cs_anchor_def;
 
-#define CS_CONCRETE_DENSITY 2300.0 /* kg/m^3, plain concrete */
+#define CS_CONCRETE_DENSITY 2300.0 /**< kg/m^3, plain concrete */
 
-/* A horizontal rail tying neighbouring posts at one height (the APS barriers' open trapezoidal rails):
+/** A horizontal rail tying neighbouring posts at one height (the APS barriers' open trapezoidal rails):
  * between each pair of neighbouring posts an axial member, elastic (EA over the spacing), yielding at
  * A Fy in tension and buckling at the Euler load pi^2 E I / spacing^2 in compression, then holding that
  * force (rail.c). Half of each span's steel swings with each of its posts. */
 typedef struct cs_rail_def {
-    double height;          /* above grade, m */
-    double area;            /* A, m^2 */
-    double inertia;         /* I about its weaker axis, m^4 (the buckling load) */
-    double yield_stress;    /* Fy, Pa */
-    double modulus;         /* E, Pa */
-    double mass_per_length; /* kg/m */
+    double height;          /**< above grade, m */
+    double area;            /**< A, m^2 */
+    double inertia;         /**< I about its weaker axis, m^4 (the buckling load) */
+    double yield_stress;    /**< Fy, Pa */
+    double modulus;         /**< E, Pa */
+    double mass_per_length; /**< kg/m */
 } cs_rail_def;
 
+/** A barrier: cables, posts, rails and the two anchors. The arrays belong to the caller. */
 typedef struct cs_barrier_def {
-    int cable_count;
-    const cs_cable_def *cables;
-    int post_count;
-    const cs_post_def *posts; /* in increasing x */
-    int rail_count;
-    const cs_rail_def *rails;
-    cs_anchor_def start_anchor; /* at the low-x end */
-    cs_anchor_def end_anchor;   /* at the high-x end */
+    int cable_count;            /**< the number of cables */
+    const cs_cable_def *cables; /**< [cable_count] */
+    int post_count;             /**< the number of posts */
+    const cs_post_def *posts;   /**< [post_count], in increasing x */
+    int rail_count;             /**< the number of rails (0: none) */
+    const cs_rail_def *rails;   /**< [rail_count] */
+    cs_anchor_def start_anchor; /**< at the low-x end */
+    cs_anchor_def end_anchor;   /**< at the high-x end */
 } cs_barrier_def;
 
-/* Vehicle: a rigid body with a crushable front face. Body frame: x forward, y left, z up, origin at
+/** Vehicle: a rigid body with a crushable front face. Body frame: x forward, y left, z up, origin at
  * the centre of gravity. Heights are above grade with the vehicle at rest on its tyres. In plan the body
  * is a rectangle front_width wide from the front face to the rear: the cables bear on its four corners,
  * the front ones between the face's bottom and top, the rear ones between the sides' bottom and top. */
 typedef struct cs_vehicle_def {
-    double mass;                   /* kg */
-    double inertia[3];             /* roll Ixx, pitch Iyy, yaw Izz about the CG, kg m^2 */
-    double cg_height;              /* m */
-    double cg_to_front;            /* CG to the undeformed front face, m */
-    double front_width;            /* width of the front face, m */
-    double face_bottom;            /* lowest point of the front face (bumper bottom), m */
-    double face_top;               /* top of the front face (hood edge), m */
-    double front_to_cargo_bed;     /* front face to the front of the cargo bed, m (ratings) */
-    double cg_to_rear;             /* CG to the rear end of the body, m */
-    double side_bottom;            /* lowest point of the sides a cable bears on (sill, rocker panel), m */
-    double side_top;               /* top of the sides (bed rail, belt line), m */
-    double wheelbase;              /* m */
-    double cg_to_front_axle;       /* m */
-    double track;                  /* m */
-    double tyre_static_deflection; /* m: sets the tyre stiffness from the static axle loads */
-    double tyre_damping_ratio;     /* fraction of critical, bounce mode */
-    double rolling_resistance;     /* coefficient of rolling resistance (free-rolling, unbraked) */
-    double tyre_friction;          /* lateral (side-slip) friction coefficient */
-    double face_friction;          /* mu between cable and the body (face, corners, sides) */
-    int crush_point_count;         /* points of the loading curve, deformation increasing, first (0,0) */
-    double crush_deformation[CS_MAX_CRUSH_POINTS]; /* m */
-    double crush_force[CS_MAX_CRUSH_POINTS];       /* N */
-    double crush_unload_stiffness;                 /* N/m; crush is permanent beyond elastic recovery */
+    double mass;                   /**< kg */
+    double inertia[3];             /**< roll Ixx, pitch Iyy, yaw Izz about the CG, kg m^2 */
+    double cg_height;              /**< m */
+    double cg_to_front;            /**< CG to the undeformed front face, m */
+    double front_width;            /**< width of the front face, m */
+    double face_bottom;            /**< lowest point of the front face (bumper bottom), m */
+    double face_top;               /**< top of the front face (hood edge), m */
+    double front_to_cargo_bed;     /**< front face to the front of the cargo bed, m (ratings) */
+    double cg_to_rear;             /**< CG to the rear end of the body, m */
+    double side_bottom;            /**< lowest point of the sides a cable bears on (sill, rocker panel), m */
+    double side_top;               /**< top of the sides (bed rail, belt line), m */
+    double wheelbase;              /**< m */
+    double cg_to_front_axle;       /**< m */
+    double track;                  /**< m */
+    double tyre_static_deflection; /**< m: sets the tyre stiffness from the static axle loads */
+    double tyre_damping_ratio;     /**< fraction of critical, bounce mode */
+    double rolling_resistance;     /**< coefficient of rolling resistance (free-rolling, unbraked) */
+    double tyre_friction;          /**< lateral (side-slip) friction coefficient */
+    double face_friction;          /**< mu between cable and the body (face, corners, sides) */
+    int crush_point_count;         /**< points of the loading curve, deformation increasing, first (0,0) */
+    double crush_deformation[CS_MAX_CRUSH_POINTS]; /**< m */
+    double crush_force[CS_MAX_CRUSH_POINTS];       /**< N */
+    double crush_unload_stiffness;                 /**< N/m; crush is permanent beyond elastic recovery */
 } cs_vehicle_def;
 
-/* The attack and how to integrate it. */
+/** The attack and how to integrate it. */
 typedef struct cs_scenario_def {
-    double speed;            /* m/s at first contact */
-    double angle;            /* between barrier line and travel direction, rad (pi/2 = head-on) */
-    double impact_x;         /* where the centre of the front face meets the cable line, m; with
+    double speed;            /**< m/s at first contact */
+    double angle;            /**< between barrier line and travel direction, rad (pi/2 = head-on) */
+    double impact_x;         /**< where the centre of the front face meets the cable line, m; with
                                 impact_at_corner, where the leading front corner does */
-    int impact_at_corner;    /* 1: impact_x is the leading corner's (a test's impact point at an angle) */
-    double start_gap;        /* distance from the front face to the cable line at t = 0, m */
-    double dt;               /* time step, s */
-    double t_end;            /* time limit, s */
-    double output_interval;  /* recording interval, s (0: every step) */
-    double crush_tolerance;  /* relative change of face force that ends the crush iteration (paper: 0.05) */
-    double solver_tolerance; /* relative residual of the quasi-static barrier solve */
-    int solver_max_sweeps;   /* cap on Gauss-Seidel sweeps of the barrier solve in one step */
-    double solve_budget;     /* barrier solves a run may make, per step to t_end on average (0: 20); past
+    int impact_at_corner;    /**< 1: impact_x is the leading corner's (a test's impact point at an angle) */
+    double start_gap;        /**< distance from the front face to the cable line at t = 0, m */
+    double dt;               /**< time step, s */
+    double t_end;            /**< time limit, s */
+    double output_interval;  /**< recording interval, s (0: every step) */
+    double crush_tolerance;  /**< relative change of face force that ends the crush iteration (paper: 0.05) */
+    double solver_tolerance; /**< relative residual of the quasi-static barrier solve */
+    int solver_max_sweeps;   /**< cap on Gauss-Seidel sweeps of the barrier solve in one step */
+    double solve_budget;     /**< barrier solves a run may make, per step to t_end on average (0: 20); past
                                 it the run ends "did not converge" with what it has */
-    double stop_speed;       /* forward speed below which the vehicle counts as stopped, m/s */
-    double gravity;          /* m/s^2 */
+    double stop_speed;       /**< forward speed below which the vehicle counts as stopped, m/s */
+    double gravity;          /**< m/s^2 */
 } cs_scenario_def;
 
-cs_rope_def cs_default_rope_def(void);
-cs_cable_def cs_default_cable_def(void);
-cs_section_def cs_default_section_def(void);
-cs_footing_def cs_default_footing_def(void);
-cs_post_def cs_default_post_def(void);
-cs_anchor_def cs_default_anchor_def(void);
-cs_rail_def cs_default_rail_def(void);
-cs_barrier_def cs_default_barrier_def(void);
-cs_vehicle_def cs_default_vehicle_def(void);
-cs_scenario_def cs_default_scenario_def(void);
+/** A rope with the paper's law (Fig. 3) and no size: area, modulus and strength are design data. */
+CS_API cs_rope_def cs_default_rope_def(void);
+/** A cable with the documented defaults (friction, clips) and cs_default_rope_def's rope. */
+CS_API cs_cable_def cs_default_cable_def(void);
+/** A section with steel's modulus and no size. */
+CS_API cs_section_def cs_default_section_def(void);
+/** A footing with Eq. 21's coefficients, the 8000-psf cap on the soil pressure, the calibrated soil factors
+ * and a 45-degree rotation limit (docs/assumptions.md); its size and soil pressure are design data. */
+CS_API cs_footing_def cs_default_footing_def(void);
+/** A post threaded by the cables with the paper's 45-degree rotation limit, its section and footing the
+ * defaults. */
+CS_API cs_post_def cs_default_post_def(void);
+/** An anchor with cs_default_footing_def's footing, of diameter 0: rigid until its footing is given. */
+CS_API cs_anchor_def cs_default_anchor_def(void);
+/** A rail with steel's modulus and no size. */
+CS_API cs_rail_def cs_default_rail_def(void);
+/** An empty barrier: no cables, posts or rails, default anchors. */
+CS_API cs_barrier_def cs_default_barrier_def(void);
+/** A vehicle with the documented tyre, friction and crush-unloading defaults; its mass, sizes and crush
+ * curve are design data. */
+CS_API cs_vehicle_def cs_default_vehicle_def(void);
+/** A head-on attack from 0.05 m before the cables with a 0.5-ms step to 3 s, outputs every 1 ms, the
+ * documented tolerances and standard gravity; its speed and impact point are design data. */
+CS_API cs_scenario_def cs_default_scenario_def(void);
 
 #ifdef __cplusplus
 }

@@ -52,8 +52,8 @@ export const GROUP_COLORS = { yield: '#9933bf', fail: '#1a1a1a', break: '#d62728
 // Rows: {t, type, group, text, value, elements, kind}. The first contact comes first.
 export function timeline(data) {
   const rows = [];
-  if (data.summary.first_contact !== null) {
-    rows.push({ t: data.summary.first_contact, type: 'contact', group: 'contact', kind: 'vehicle', elements: [], text: 'First contact: the front face reaches the cables', value: '' });
+  if (data.summary.first_contact_time_s !== null) {
+    rows.push({ t: data.summary.first_contact_time_s, type: 'contact', group: 'contact', kind: 'vehicle', elements: [], text: 'First contact: the front face reaches the cables', value: '' });
   }
   for (const [t, type, kind, element, value] of data.events) {
     const last = rows[rows.length - 1];
@@ -75,7 +75,7 @@ export function timeline(data) {
   // a run that ends at its time limit has no end event: say so
   if (data.summary.outcome === 'time_limit') {
     const speed = data.series.speed[data.series.speed.length - 1];
-    rows.push({ t: data.summary.t_end, type: 'time_limit', group: 'end', kind: 'vehicle', elements: [], text: `The simulated time ends${data.summary.first_contact === null ? ': the vehicle never reached the barrier' : ''}`, value: `speed then ${pair('speed', speed)}` });
+    rows.push({ t: data.summary.t_end_s, type: 'time_limit', group: 'end', kind: 'vehicle', elements: [], text: `The simulated time ends${data.summary.first_contact_time_s === null ? ': the vehicle never reached the barrier' : ''}`, value: `speed then ${pair('speed', speed)}` });
   }
   return rows;
 }

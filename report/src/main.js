@@ -49,7 +49,7 @@ function main() {
   const frameT = data.frames.map((f) => f[0]);
   const tEnd = frameT[frameT.length - 1] || 0;
 
-  $('meta').textContent = `cablesim ${data.version} · model file ${data.file} · ${seconds(data.summary.t_end)} simulated with a ${fmt(data.scenario.dt * 1e3, 2)}-ms time step`;
+  $('meta').textContent = `cablesim ${data.version} · model file ${data.file} · ${seconds(data.summary.t_end_s)} simulated with a ${fmt(data.scenario.dt * 1e3, 2)}-ms time step`;
   $('story').textContent = story(data);
   $('cards').append(cards(data));
   $('table').append(summaryTable(data));

@@ -34,10 +34,10 @@ export function story(data) {
   const angle = (sc.angle * 180) / Math.PI;
   const failed = s.posts_failed_left + s.posts_failed_right;
   const parts = [];
-  if (s.first_contact === null)
+  if (s.first_contact_time_s === null)
     return (
       `A ${pair('mass', data.vehicle.mass)} vehicle drove at ${pair('speed', sc.speed)} toward the ${data.name} barrier ` +
-      `(${cables} cable${cables === 1 ? '' : 's'} on ${posts} posts) but had not reached it when the simulation ended at t = ${seconds(s.t_end)}: nothing was loaded and nothing failed.`
+      `(${cables} cable${cables === 1 ? '' : 's'} on ${posts} posts) but had not reached it when the simulation ended at t = ${seconds(s.t_end_s)}: nothing was loaded and nothing failed.`
     );
   parts.push(
     `A ${pair('mass', data.vehicle.mass)} vehicle struck the ${data.name} barrier (${cables} cable${cables === 1 ? '' : 's'} on ${posts} posts) ` +
@@ -45,21 +45,21 @@ export function story(data) {
       `${sc.impact_at_corner ? 'its leading front corner' : 'centred'} at x = ${pair('length', sc.impact_x)} along the barrier.`,
   );
   if (s.outcome === 'stopped')
-    parts.push(`The barrier stopped it at t = ${seconds(s.stop_time)}, ${pair('length', s.max_penetration)} past the cable line.`);
+    parts.push(`The barrier stopped it at t = ${seconds(s.stop_time_s)}, ${pair('length', s.max_dynamic_penetration_m)} past the cable line.`);
   else if (s.outcome === 'override' || s.outcome === 'underride')
-    parts.push(`It ${s.outcome === 'override' ? 'rode over' : 'ran under'} the cables and got past the barrier line at t = ${seconds(s.t_end)}, still moving at ${pair('speed', s.exit_speed)}.`);
+    parts.push(`It ${s.outcome === 'override' ? 'rode over' : 'ran under'} the cables and got past the barrier line at t = ${seconds(s.t_end_s)}, still moving at ${pair('speed', s.exit_speed_mps)}.`);
   else if (s.outcome === 'breakthrough')
-    parts.push(`It broke through at t = ${seconds(s.t_end)}, still moving at ${pair('speed', s.exit_speed)}, after pushing ${pair('length', s.max_penetration)} past the cable line.`);
+    parts.push(`It broke through at t = ${seconds(s.t_end_s)}, still moving at ${pair('speed', s.exit_speed_mps)}, after pushing ${pair('length', s.max_dynamic_penetration_m)} past the cable line.`);
   else if (s.outcome === 'redirected')
     parts.push(
-      `The barrier redirected it: it left on the traffic side at t = ${seconds(s.t_end)} at ${pair('speed', s.exit_speed)}, ` +
-        `${fmt((s.exit_angle * 180) / Math.PI, 1)}° away from the barrier line, after deflecting the cables ${pair('length', s.max_deflection)} (working width ${pair('length', s.working_width)}).`,
+      `The barrier redirected it: it left on the traffic side at t = ${seconds(s.t_end_s)} at ${pair('speed', s.exit_speed_mps)}, ` +
+        `${fmt(s.exit_angle_deg, 1)}° away from the barrier line, after deflecting the cables ${pair('length', s.max_barrier_deflection_m)} (working width ${pair('length', s.working_width_m)}).`,
     );
-  else parts.push(`The simulation ended at its time limit, t = ${seconds(s.t_end)}, with the vehicle still moving; the furthest it got was ${pair('length', s.max_penetration)} past the cable line.`);
+  else parts.push(`The simulation ended at its time limit, t = ${seconds(s.t_end_s)}, with the vehicle still moving; the furthest it got was ${pair('length', s.max_dynamic_penetration_m)} past the cable line.`);
   parts.push(
     `${failed} of ${posts} posts failed (${s.posts_failed_left} on the low-x side of the impact, ${s.posts_failed_right} on the high-x side) and ` +
       `${s.cables_broken === 0 ? 'no cable broke' : `${s.cables_broken} of ${cables} cables broke`}. ` +
-      `The largest 50-ms average deceleration was ${fmt(s.max_decel_50ms_g, 2)} g at t = ${seconds(s.t_max_decel)}.`,
+      `The largest 50-ms average deceleration was ${fmt(s.max_50ms_decel_g, 2)} g at t = ${seconds(s.t_max_50ms_decel_s)}.`,
   );
   for (const [type, what] of [
     ['override', 'slipped under the front bumper: the vehicle rode over'],
@@ -81,22 +81,22 @@ export function cards(data) {
   const o = OUTCOME[s.outcome] || OUTCOME.running;
   const posts = data.barrier.posts.length;
   const cables = data.barrier.cables.length;
-  const [penSI, penUS] = both.length(s.max_penetration);
-  const [exitSI, exitUS] = s.exit_speed !== null ? both.speed(s.exit_speed) : ['–', s.outcome === 'stopped' ? 'the vehicle stopped' : 'not through'];
+  const [penSI, penUS] = both.length(s.max_dynamic_penetration_m);
+  const [exitSI, exitUS] = s.exit_speed_mps !== null ? both.speed(s.exit_speed_mps) : ['–', s.outcome === 'stopped' ? 'the vehicle stopped' : 'not through'];
   const exitNote =
     s.outcome === 'redirected'
-      ? `leaving at ${fmt((s.exit_angle * 180) / Math.PI, 1)}° to the barrier`
-      : s.exit_speed !== null
+      ? `leaving at ${fmt(s.exit_angle_deg, 1)}° to the barrier`
+      : s.exit_speed_mps !== null
         ? 'speed as it got through'
         : s.outcome === 'stopped'
           ? 'it did not get through'
           : 'by the end of the run';
-  const [keSI, keUS] = both.energy(s.initial_kinetic_energy);
+  const [keSI, keUS] = both.energy(s.initial_kinetic_energy_j);
   return el(
     'div',
     { class: 'cards' },
-    card('Outcome', o.word, s.outcome === 'breakthrough' || s.outcome === 'redirected' ? `at t = ${seconds(s.t_end)}` : s.outcome === 'stopped' ? `at t = ${seconds(s.stop_time)}` : `t = ${seconds(s.t_end)}`, `run of ${seconds(s.t_end)} simulated`, o.cls),
-    card('Max 50-ms deceleration', `${fmt(s.max_decel_50ms_g, 2)} g`, `at t = ${seconds(s.t_max_decel)}`, 'average over the worst 50 ms'),
+    card('Outcome', o.word, s.outcome === 'breakthrough' || s.outcome === 'redirected' ? `at t = ${seconds(s.t_end_s)}` : s.outcome === 'stopped' ? `at t = ${seconds(s.stop_time_s)}` : `t = ${seconds(s.t_end_s)}`, `run of ${seconds(s.t_end_s)} simulated`, o.cls),
+    card('Max 50-ms deceleration', `${fmt(s.max_50ms_decel_g, 2)} g`, `at t = ${seconds(s.t_max_50ms_decel_s)}`, 'average over the worst 50 ms'),
     card('Penetration', penSI, penUS, 'front face past the cable line'),
     card('Exit speed', exitSI, exitUS, exitNote),
     card('Posts failed', `${s.posts_failed_left + s.posts_failed_right} of ${posts}`, `${s.posts_failed_left} left, ${s.posts_failed_right} right`, `cables broken: ${s.cables_broken} of ${cables}`),
@@ -108,24 +108,24 @@ export function summaryTable(data) {
   const s = data.summary;
   const sc = data.scenario;
   const rows = [
-    ['Outcome', (OUTCOME[s.outcome] || OUTCOME.running).word, `at t = ${seconds(s.t_end)}`],
+    ['Outcome', (OUTCOME[s.outcome] || OUTCOME.running).word, `at t = ${seconds(s.t_end_s)}`],
     ['Model', data.name, data.file],
     ['Vehicle mass', ...both.mass(data.vehicle.mass)],
     ['Impact speed', ...both.speed(sc.speed)],
     ['Impact angle (90° = head-on)', ...both.angle(sc.angle)],
     ['Impact point along the barrier', ...both.length(sc.impact_x)],
-    ['Initial kinetic energy', ...both.energy(s.initial_kinetic_energy)],
-    ['First contact', s.first_contact === null ? 'none' : seconds(s.first_contact), null],
-    ['Max 50-ms deceleration', `${fmt(s.max_decel_50ms_g, 3)} g`, `at t = ${seconds(s.t_max_decel)}`],
-    ['Max dynamic penetration (front face)', ...both.length(s.max_penetration)],
-    ['Max barrier deflection (cable)', ...both.length(s.max_deflection)],
-    ['Working width (vehicle, cables or posts)', ...both.length(s.working_width)],
-    ['Max cable tension', ...both.force(s.max_cable_tension)],
-    ['Posts failed', `${s.posts_failed_left + s.posts_failed_right} of ${data.barrier.posts.length}`, `${s.posts_failed_left} at lower x than the impact, ${s.posts_failed_right} at higher x; ${s.posts_failed_rotation} past the rotation limit, ${s.posts_failed_shear} sheared, ${s.posts_failed_pullout} pulled out`],
+    ['Initial kinetic energy', ...both.energy(s.initial_kinetic_energy_j)],
+    ['First contact', s.first_contact_time_s === null ? 'none' : seconds(s.first_contact_time_s), null],
+    ['Max 50-ms deceleration', `${fmt(s.max_50ms_decel_g, 3)} g`, `at t = ${seconds(s.t_max_50ms_decel_s)}`],
+    ['Max dynamic penetration (front face)', ...both.length(s.max_dynamic_penetration_m)],
+    ['Max barrier deflection (cable)', ...both.length(s.max_barrier_deflection_m)],
+    ['Working width (vehicle, cables or posts)', ...both.length(s.working_width_m)],
+    ['Max cable tension', ...both.force(s.max_cable_tension_n)],
+    ['Posts failed', `${s.posts_failed_left + s.posts_failed_right} of ${data.barrier.posts.length}`, `${s.posts_failed_left} at lower x than the impact, ${s.posts_failed_right} at higher x; ${s.posts_failed_rotation_left + s.posts_failed_rotation_right} past the rotation limit, ${s.posts_failed_shear_left + s.posts_failed_shear_right} sheared, ${s.posts_failed_pullout_left + s.posts_failed_pullout_right} pulled out`],
     ['Cables broken', `${s.cables_broken} of ${data.barrier.cables.length}`, null],
-    ['Exit speed', ...(s.exit_speed === null ? ['none', null] : both.speed(s.exit_speed))],
-    ['Exit angle (from the barrier line)', ...(s.exit_angle === null || s.exit_angle === undefined ? ['none', null] : both.angle(s.exit_angle))],
-    ['Stop time', s.stop_time === null ? 'did not stop' : seconds(s.stop_time), null],
+    ['Exit speed', ...(s.exit_speed_mps === null ? ['none', null] : both.speed(s.exit_speed_mps))],
+    ['Exit angle (from the barrier line)', ...(s.exit_angle_deg === null ? ['none', null] : both.angle((s.exit_angle_deg * Math.PI) / 180))],
+    ['Stop time', s.stop_time_s === null ? 'did not stop' : seconds(s.stop_time_s), null],
     ['Energy balance error', `${(100 * s.energy_balance_error).toFixed(3)} %`, 'of the initial kinetic energy'],
     ['Solver warnings', `${s.solver_warnings} steps`, s.solver_warnings ? `steps whose barrier equilibrium stopped short of its tolerance (largest relative residual ${fmt(s.max_solver_residual, 2)})` : 'every step reached equilibrium'],
     ['Time step / recording interval', `${fmt(sc.dt * 1e3, 2)} ms / ${fmt(sc.output_interval * 1e3, 2)} ms`, null],

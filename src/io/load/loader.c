@@ -10,10 +10,6 @@
 #include "grow.h"
 #include "loader_int.h"
 
-#ifndef CS_DATA_DIR
-#define CS_DATA_DIR "data"
-#endif
-
 enum { MAX_DEPTH = 16 };
 
 struct cs_chunk {
@@ -39,8 +35,10 @@ char *cs_arena_strdup(cs_loader *l, const char *s) {
 cs_loader *cs_loader_create(const char *data_dir, char *why, size_t why_size) {
     cs_loader *l = calloc(1, sizeof *l);
     if (!l) return NULL;
-    const char *env = getenv("CABLESIM_DATA_DIR");
-    snprintf(l->data_dir, sizeof l->data_dir, "%s", data_dir ? data_dir : env && *env ? env : CS_DATA_DIR);
+    if (data_dir)
+        snprintf(l->data_dir, sizeof l->data_dir, "%s", data_dir);
+    else
+        cs_data_dir_find(l->data_dir, sizeof l->data_dir, l->data_note, sizeof l->data_note);
     if (!(l->units = cs_units_create(why, why_size))) {
         free(l);
         return NULL;
@@ -81,11 +79,13 @@ void cs_loader_reset(cs_loader *l) {
     free(l->sets);
     drop_arena_to(l, NULL);
     cs_units *units = l->units;
-    char data_dir[sizeof l->data_dir];
+    char data_dir[sizeof l->data_dir], data_note[sizeof l->data_note];
     memcpy(data_dir, l->data_dir, sizeof data_dir);
+    memcpy(data_note, l->data_note, sizeof data_note);
     memset(l, 0, sizeof *l);
     l->units = units;
     memcpy(l->data_dir, data_dir, sizeof data_dir);
+    memcpy(l->data_note, data_note, sizeof data_note);
 }
 
 void cs_loader_reuse(cs_loader *l) {
@@ -202,7 +202,8 @@ static int error_order(const void *a, const void *b) {
 /* Sort the problems by place and keep each once (a value used twice is wrong once). */
 static void sort_errors(cs_loader *l) {
     if (l->errors_sorted) return;
-    if (l->error_count > 1) qsort(l->errors, (size_t)l->error_count, sizeof *l->errors, error_order);
+    if (l->error_count > 1) /* none: errors may be NULL, which qsort must not be given */
+        qsort(l->errors, (size_t)l->error_count, sizeof *l->errors, error_order);
     int kept = 0;
     for (int k = 0; k < l->error_count; k++) {
         if (kept > 0 && strcmp(l->errors[kept - 1].text, l->errors[k].text) == 0) {
@@ -258,10 +259,16 @@ static const cs_node *merge(cs_loader *l, const cs_node *local, const cs_node *b
 int cs_library_read(cs_loader *l) {
     if (l->library_state) return l->library_state > 0 ? 0 : -1;
     l->library_state = -1;
-    DIR *d = opendir(l->data_dir);
+    DIR *d = l->data_dir[0] ? opendir(l->data_dir) : NULL;
+    if (!l->data_dir[0]) {
+        cs_err_at(l, INT_MIN, 0, 0,
+                  "cannot find the parts library: %s (set CABLESIM_DATA to the folder of its YAML files)",
+                  l->data_note);
+        return -1;
+    }
     if (!d) {
-        cs_err_at(l, INT_MIN, 0, 0, "%s: cannot read the parts library (expected a folder of YAML files)",
-                  l->data_dir);
+        cs_err_at(l, INT_MIN, 0, 0, "%s: cannot read the parts library (%s%sexpected a folder of YAML files)",
+                  l->data_dir, l->data_note, l->data_note[0] ? "; " : "");
         return -1;
     }
     char names[64][PATH_MAX];

@@ -2,9 +2,10 @@
 #ifndef CS_LOADER_INT_H
 #define CS_LOADER_INT_H
 
+#include <limits.h>
 #include <stdarg.h>
 
-#include "loader.h"
+#include "cablesim/loader.h"
 #include "schema.h"
 #include "units.h"
 #include "yamltree.h"
@@ -43,6 +44,7 @@ typedef struct cs_lset {
 
 struct cs_loader {
     char data_dir[1024];
+    char data_note[PATH_MAX + 64]; /* where data_dir came from (cs_data_dir_find), or why none was found */
     cs_units *units;
     struct cs_chunk *arena;
     struct cs_chunk *files_end; /* the newest allocation of a file read: cs_loader_reuse keeps up to it */
@@ -86,6 +88,10 @@ cs_node *cs_resolve_model(cs_loader *l, int file);
 const cs_node *cs_find_part(cs_loader *l, int source, const char *list, const char *name,
                             const cs_node *from);
 int cs_library_read(cs_loader *l);
+/* The parts library's folder by the lookup order of datadir.c into dir, and in note where it came from
+ * ("CABLESIM_DATA", "installed beside PATH", "the build tree's"). Returns 0, or -1 (dir empty) with note
+ * saying where it looked. */
+int cs_data_dir_find(char *dir, size_t size, char *note, size_t note_size);
 
 /* Convert checked values into definition structs. Each returns the errors it recorded. */
 int cs_convert_fields(cs_loader *l, const cs_node *map, void *target);

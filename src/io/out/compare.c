@@ -66,7 +66,7 @@ static int draw(cs_plot *p, const void *user, char *why, size_t why_size) {
             cs_style s = {tr->measured ? (cs_rgb){0.1, 0.1, 0.1} : cs_plot_palette(k),
                           tr->measured ? 2.0 : 1.6, tr->measured ? CS_DASHED : CS_SOLID, CS_MARK_NONE, 0};
             char label[CS_LABEL_SIZE];
-            snprintf(label, sizeof label, "%s%s", tr->label, tr->measured ? " (measured)" : "");
+            snprintf(label, sizeof label, "%.80s%s", tr->label, tr->measured ? " (measured)" : "");
             cs_plot_line(p, &a, tr->t, y, (int)tr->n, &s, label);
         }
         if (pass == 0) {

@@ -4,7 +4,7 @@
 #ifndef CS_FIGURES_H
 #define CS_FIGURES_H
 
-#include "load/loader.h"
+#include "cablesim/loader.h"
 #include "outfile.h"
 #include "plot.h"
 #include "record.h"

@@ -132,47 +132,47 @@ int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_model *mod
     fprintf(f, "{");
     jkey(&w, &first, "outcome");
     cs_json_string(f, cs_outcome_name(s.outcome));
-    jnum(&w, &first, "t_end_s", s.t);
-    jnum(&w, &first, "max_50ms_decel_g", s.max_decel_50ms_g);
-    jnum(&w, &first, "t_max_50ms_decel_s", s.t_max_decel);
-    jnum(&w, &first, "max_dynamic_penetration_m", s.max_dynamic_penetration);
-    jnum(&w, &first, "max_barrier_deflection_m", s.max_barrier_deflection);
-    jnum(&w, &first, "working_width_m", s.working_width);
+    jnum(&w, &first, "t_end_s", s.t_end_s);
+    jnum(&w, &first, "max_50ms_decel_g", s.max_50ms_decel_g);
+    jnum(&w, &first, "t_max_50ms_decel_s", s.t_max_50ms_decel_s);
+    jnum(&w, &first, "max_dynamic_penetration_m", s.max_dynamic_penetration_m);
+    jnum(&w, &first, "max_barrier_deflection_m", s.max_barrier_deflection_m);
+    jnum(&w, &first, "working_width_m", s.working_width_m);
     jkey(&w, &first, "stopped");
     fprintf(f, s.outcome == CS_STOPPED ? "true" : "false");
     jkey(&w, &first, "stop_time_s");
     if (s.outcome == CS_STOPPED)
-        cs_w_num(&w, s.stop_time, "stop_time_s");
+        cs_w_num(&w, s.stop_time_s, "stop_time_s");
     else
         fprintf(f, "null");
     jkey(&w, &first, "exit_speed_mps");
     if (cs_outcome_exits(s.outcome))
-        cs_w_num(&w, s.exit_speed, "exit_speed_mps");
+        cs_w_num(&w, s.exit_speed_mps, "exit_speed_mps");
     else
         fprintf(f, "null");
     jkey(&w, &first, "exit_angle_deg");
     if (cs_outcome_exits(s.outcome))
-        cs_w_num(&w, s.exit_angle * 180.0 / 3.14159265358979323846, "exit_angle_deg");
+        cs_w_num(&w, s.exit_angle_deg, "exit_angle_deg");
     else
         fprintf(f, "null");
     jkey(&w, &first, "first_contact_time_s");
-    if (s.first_contact_time >= 0)
-        cs_w_num(&w, s.first_contact_time, "first_contact_time_s");
+    if (s.first_contact_time_s >= 0)
+        cs_w_num(&w, s.first_contact_time_s, "first_contact_time_s");
     else
         fprintf(f, "null");
     jkey(&w, &first, "posts_failed_left");
     fprintf(f, "%d", s.posts_failed_left);
     jkey(&w, &first, "posts_failed_right");
     fprintf(f, "%d", s.posts_failed_right);
-    const char *kinds[3] = {"rotation", "shear", "pullout"};
-    const int *by_kind[3] = {s.posts_failed_rotation, s.posts_failed_shear, s.posts_failed_pullout};
-    for (int k = 0; k < 3; k++) {
-        char key[48];
-        for (int side = 0; side < 2; side++) {
-            snprintf(key, sizeof key, "posts_failed_%s_%s", kinds[k], side ? "right" : "left");
-            jkey(&w, &first, key);
-            fprintf(f, "%d", by_kind[k][side]);
-        }
+    const char *const by_kind[6] = {"posts_failed_rotation_left", "posts_failed_rotation_right",
+                                    "posts_failed_shear_left",    "posts_failed_shear_right",
+                                    "posts_failed_pullout_left",  "posts_failed_pullout_right"};
+    const int counts[6] = {s.posts_failed_rotation_left, s.posts_failed_rotation_right,
+                           s.posts_failed_shear_left,    s.posts_failed_shear_right,
+                           s.posts_failed_pullout_left,  s.posts_failed_pullout_right};
+    for (int k = 0; k < 6; k++) {
+        jkey(&w, &first, by_kind[k]);
+        fprintf(f, "%d", counts[k]);
     }
     for (int a = 0; a < 2; a++) {
         cs_anchor_view av;
@@ -191,14 +191,15 @@ int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_model *mod
     }
     jkey(&w, &first, "cables_broken");
     fprintf(f, "%d", s.cables_broken);
-    jnum(&w, &first, "max_cable_tension_n", s.max_cable_tension);
-    jnum(&w, &first, "initial_kinetic_energy_j", s.initial_kinetic_energy);
+    jnum(&w, &first, "max_cable_tension_n", s.max_cable_tension_n);
+    jnum(&w, &first, "initial_kinetic_energy_j", s.initial_kinetic_energy_j);
     jnum(&w, &first, "energy_balance_error", s.energy_balance_error);
     jkey(&w, &first, "energy_balance_warning");
     fputs(fabs(s.energy_balance_error) > CS_LEDGER_WARNING ? "true" : "false", f);
-    jarray(&w, &first, "final_position_m", s.final_position, 3);
+    jarray(&w, &first, "final_position_m", s.final_position_m, 3);
     jkey(&w, &first, "solver_warnings");
     fprintf(f, "%d", s.solver_warnings);
+    jnum(&w, &first, "max_solver_residual", s.max_solver_residual);
     jkey(&w, &first, "events");
     fprintf(f, "[");
     for (int i = 0; i < cs_state_event_count(state); i++) {

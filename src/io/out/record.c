@@ -1,5 +1,6 @@
 #include "record.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -95,7 +96,7 @@ void cs_record_frame(const cs_model *model, const cs_state *state, void *user) {
     rec->frame_count++;
 }
 
-void cs_record_free(cs_record *rec) {
+void cs_record_release(cs_record *rec) {
     free(rec->vehicle);
     free(rec->energy);
     free(rec->cables);
@@ -105,4 +106,67 @@ void cs_record_free(cs_record *rec) {
     free(rec->path_xyz);
     free(rec->path_tension);
     memset(rec, 0, sizeof *rec);
+}
+
+cs_record *cs_record_create(const cs_model *model, cs_error *err) {
+    cs_record *rec = malloc(sizeof *rec);
+    if (!rec || cs_record_init(rec, model) != 0) {
+        free(rec);
+        if (err) {
+            err->status = CS_ERR_MEMORY;
+            snprintf(err->message, sizeof err->message, "out of memory for the record");
+        }
+        return NULL;
+    }
+    return rec;
+}
+
+void cs_record_free(cs_record *rec) {
+    if (!rec) return;
+    cs_record_release(rec);
+    free(rec);
+}
+
+int cs_record_ok(const cs_record *rec) {
+    return !rec->failed;
+}
+
+int cs_record_frame_count(const cs_record *rec) {
+    return rec->frame_count;
+}
+
+static int in_frame(const cs_record *rec, int frame) {
+    return frame >= 0 && frame < rec->frame_count;
+}
+
+const cs_vehicle_view *cs_record_vehicle(const cs_record *rec, int frame) {
+    return in_frame(rec, frame) ? &rec->vehicle[frame] : NULL;
+}
+
+const cs_energy *cs_record_energy(const cs_record *rec, int frame) {
+    return in_frame(rec, frame) ? &rec->energy[frame] : NULL;
+}
+
+const cs_cable_view *cs_record_cable(const cs_record *rec, int frame, int cable) {
+    if (!in_frame(rec, frame) || cable < 0 || cable >= rec->cable_count) return NULL;
+    return &rec->cables[(size_t)frame * (size_t)rec->cable_count + (size_t)cable];
+}
+
+const cs_post_view *cs_record_post(const cs_record *rec, int frame, int post) {
+    if (!in_frame(rec, frame) || post < 0 || post >= rec->post_count) return NULL;
+    return &rec->posts[(size_t)frame * (size_t)rec->post_count + (size_t)post];
+}
+
+const cs_anchor_view *cs_record_anchor(const cs_record *rec, int frame, int anchor) {
+    if (!in_frame(rec, frame) || anchor < 0 || anchor > 1) return NULL;
+    return &rec->anchors[(size_t)frame * 2 + (size_t)anchor];
+}
+
+int cs_record_cable_path(const cs_record *rec, int frame, int cable, const double **xyz,
+                         const double **tension) {
+    if (!in_frame(rec, frame) || cable < 0 || cable >= rec->cable_count) return -1;
+    size_t k = (size_t)frame * (size_t)rec->cable_count + (size_t)cable;
+    if (xyz) *xyz = rec->path_xyz + k * (size_t)rec->max_nodes * 3;
+    if (tension) *tension = rec->path_tension + k * (size_t)rec->max_nodes;
+    return rec->path_count[k];
 }

@@ -1,16 +1,16 @@
-/* A run's recorded frames, collected through cs_run's output callback; the input of every writer
- * (CSV, JSON, plots, report). Growing the arrays happens here, outside the engine's step. The record
- * holds at most CS_RECORD_BYTES: when it is full it keeps every other frame and records every other
- * output from then on (the last frame, the run's end, is always kept), so a long run's memory is bounded
- * by the model, not by the run. */
+/* A run's recorded frames (cablesim/output.h's cs_record), collected through cs_run's output callback;
+ * the input of every writer (CSV, JSON, plots, report). Growing the arrays happens here, outside the
+ * engine's step. The record holds at most CS_RECORD_BYTES: when it is full it keeps every other frame and
+ * records every other output from then on (the last frame, the run's end, is always kept), so a long
+ * run's memory is bounded by the model, not by the run. */
 #ifndef CS_RECORD_H
 #define CS_RECORD_H
 
-#include "cablesim/cablesim.h"
+#include "cablesim/output.h"
 
 #define CS_RECORD_BYTES (256.0 * 1024 * 1024)
 
-typedef struct cs_record {
+struct cs_record {
     int cable_count;
     int post_count;
     int max_nodes; /* path points kept per cable and frame */
@@ -28,12 +28,12 @@ typedef struct cs_record {
     int *path_count;          /* [frame * cable_count + c] */
     double *path_xyz;         /* [(frame * cable_count + c) * max_nodes * 3] */
     double *path_tension;     /* [(frame * cable_count + c) * max_nodes] */
-} cs_record;
+};
 
-/* Prepare an empty record for the model. Returns 0, or -1 if memory is short. */
+/* Prepare an empty record held by the caller (cs_record_create allocates one). Returns 0, or -1 if memory
+ * is short. */
 int cs_record_init(cs_record *rec, const cs_model *model);
-/* cs_output_fn: append the state as one frame (user is the cs_record). */
-void cs_record_frame(const cs_model *model, const cs_state *state, void *user);
-void cs_record_free(cs_record *rec);
+/* Free the frames of a record from cs_record_init, leaving it empty. */
+void cs_record_release(cs_record *rec);
 
 #endif

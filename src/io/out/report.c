@@ -5,51 +5,50 @@
 
 static const double MPH = 0.44704, FT = 0.3048, KIP = 4448.2216152605;
 
-void cs_write_report(FILE *f, const cs_model_input *in, const cs_model *model, const cs_state *state) {
+void cs_write_summary_text(FILE *f, const cs_model_input *in, const cs_model *model, const cs_state *state) {
     cs_summary s;
     cs_state_summary(state, &s);
     const cs_scenario_def *sc = &in->scenario;
     fprintf(f, "%s: ", in->name);
     if (s.outcome == CS_STOPPED)
-        fprintf(f, "the vehicle stopped at t = %.3f s\n", s.stop_time);
+        fprintf(f, "the vehicle stopped at t = %.3f s\n", s.stop_time_s);
     else if (cs_outcome_through(s.outcome))
         fprintf(f, "the vehicle %s, exit speed %.2f m/s (%.1f mph)\n",
                 s.outcome == CS_OVERRIDE    ? "rode over the cables"
                 : s.outcome == CS_UNDERRIDE ? "ran under the cables"
                                             : "broke through",
-                s.exit_speed, s.exit_speed / MPH);
+                s.exit_speed_mps, s.exit_speed_mps / MPH);
     else if (s.outcome == CS_NO_CONTACT)
-        fprintf(f, "the vehicle never touched the barrier (t = %.3f s)\n", s.t);
+        fprintf(f, "the vehicle never touched the barrier (t = %.3f s)\n", s.t_end_s);
     else if (s.outcome == CS_DID_NOT_CONVERGE)
         fprintf(f,
                 "the run did not converge: its barrier solves used up their budget at t = %.3f s "
                 "(scenario.solve_budget); what it reached is below\n",
-                s.t);
+                s.t_end_s);
     else if (s.outcome == CS_REDIRECTED)
         fprintf(f, "the vehicle was redirected, exit speed %.2f m/s (%.1f mph, %.1f km/h) at %.1f deg\n",
-                s.exit_speed, s.exit_speed / MPH, s.exit_speed * 3.6,
-                s.exit_angle * 180 / 3.14159265358979323846);
+                s.exit_speed_mps, s.exit_speed_mps / MPH, s.exit_speed_mps * 3.6, s.exit_angle_deg);
     else
-        fprintf(f, "the time limit was reached at t = %.3f s\n", s.t);
+        fprintf(f, "the time limit was reached at t = %.3f s\n", s.t_end_s);
     fprintf(f,
             "  impact               %.2f m/s (%.1f mph), %.1f deg, x = %.2f m (%.2f ft), %.0f kg (%.0f lb)\n",
             sc->speed, sc->speed / MPH, sc->angle * 180 / 3.14159265358979323846, sc->impact_x,
             sc->impact_x / FT, in->vehicle.mass, in->vehicle.mass / 0.45359237);
-    fprintf(f, "  max 50-ms deceleration %.3f g at t = %.3f s\n", s.max_decel_50ms_g, s.t_max_decel);
-    fprintf(f, "  max penetration      %.3f m (%.2f ft)\n", s.max_dynamic_penetration,
-            s.max_dynamic_penetration / FT);
-    fprintf(f, "  max deflection       %.3f m (%.2f ft)\n", s.max_barrier_deflection,
-            s.max_barrier_deflection / FT);
-    fprintf(f, "  working width        %.3f m (%.2f ft)\n", s.working_width, s.working_width / FT);
-    fprintf(f, "  max cable tension    %.1f kN (%.1f kip)\n", s.max_cable_tension / 1e3,
-            s.max_cable_tension / KIP);
+    fprintf(f, "  max 50-ms deceleration %.3f g at t = %.3f s\n", s.max_50ms_decel_g, s.t_max_50ms_decel_s);
+    fprintf(f, "  max penetration      %.3f m (%.2f ft)\n", s.max_dynamic_penetration_m,
+            s.max_dynamic_penetration_m / FT);
+    fprintf(f, "  max deflection       %.3f m (%.2f ft)\n", s.max_barrier_deflection_m,
+            s.max_barrier_deflection_m / FT);
+    fprintf(f, "  working width        %.3f m (%.2f ft)\n", s.working_width_m, s.working_width_m / FT);
+    fprintf(f, "  max cable tension    %.1f kN (%.1f kip)\n", s.max_cable_tension_n / 1e3,
+            s.max_cable_tension_n / KIP);
     fprintf(f, "  cables broken        %d of %d\n", s.cables_broken, in->barrier.cable_count);
     fprintf(f,
             "  posts failed         %d left, %d right (of %d): rotation limit %d + %d, shear %d + %d, "
             "pullout %d + %d\n",
-            s.posts_failed_left, s.posts_failed_right, in->barrier.post_count, s.posts_failed_rotation[0],
-            s.posts_failed_rotation[1], s.posts_failed_shear[0], s.posts_failed_shear[1],
-            s.posts_failed_pullout[0], s.posts_failed_pullout[1]);
+            s.posts_failed_left, s.posts_failed_right, in->barrier.post_count, s.posts_failed_rotation_left,
+            s.posts_failed_rotation_right, s.posts_failed_shear_left, s.posts_failed_shear_right,
+            s.posts_failed_pullout_left, s.posts_failed_pullout_right);
     for (int a = 0; a < 2; a++) {
         cs_anchor_view av;
         cs_state_anchor(model, state, a, &av);
@@ -59,8 +58,8 @@ void cs_write_report(FILE *f, const cs_model_input *in, const cs_model *model, c
                 hypot(av.displacement[0], av.displacement[1]), av.travel_limit, av.capacity / 1e3,
                 av.capacity / KIP);
     }
-    fprintf(f, "  kinetic energy       %.1f kJ (%.0f ft-kip)\n", s.initial_kinetic_energy / 1e3,
-            s.initial_kinetic_energy / (KIP * FT));
+    fprintf(f, "  kinetic energy       %.1f kJ (%.0f ft-kip)\n", s.initial_kinetic_energy_j / 1e3,
+            s.initial_kinetic_energy_j / (KIP * FT));
     fprintf(f, "  energy balance error %.3f %%%s\n", 100 * s.energy_balance_error,
             fabs(s.energy_balance_error) > CS_LEDGER_WARNING
                 ? " (WARNING: over 1%, the ledger does not close: docs/robustness.md)"

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cablesim/cablesim.h"
 #include "figures.h"
 #include "writers.h"
 
@@ -343,24 +344,27 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
     key(&j, &first, "summary");
     fputc('{', f);
     kstr(&j, &sf, "outcome", cs_outcome_name(s.outcome));
-    knum(&j, &sf, "t_end", s.t);
-    knum(&j, &sf, "max_decel_50ms_g", s.max_decel_50ms_g);
-    knum(&j, &sf, "t_max_decel", s.t_max_decel);
-    knum(&j, &sf, "max_penetration", s.max_dynamic_penetration);
-    knum(&j, &sf, "max_deflection", s.max_barrier_deflection);
-    knum(&j, &sf, "working_width", s.working_width);
-    kopt(&j, &sf, "stop_time", s.outcome == CS_STOPPED ? s.stop_time : NAN);
-    kopt(&j, &sf, "exit_speed", cs_outcome_exits(s.outcome) ? s.exit_speed : NAN);
-    kopt(&j, &sf, "exit_angle", cs_outcome_exits(s.outcome) ? s.exit_angle : NAN);
-    kopt(&j, &sf, "first_contact", s.first_contact_time >= 0 ? s.first_contact_time : NAN);
+    knum(&j, &sf, "t_end_s", s.t_end_s);
+    knum(&j, &sf, "max_50ms_decel_g", s.max_50ms_decel_g);
+    knum(&j, &sf, "t_max_50ms_decel_s", s.t_max_50ms_decel_s);
+    knum(&j, &sf, "max_dynamic_penetration_m", s.max_dynamic_penetration_m);
+    knum(&j, &sf, "max_barrier_deflection_m", s.max_barrier_deflection_m);
+    knum(&j, &sf, "working_width_m", s.working_width_m);
+    kopt(&j, &sf, "stop_time_s", s.outcome == CS_STOPPED ? s.stop_time_s : NAN);
+    kopt(&j, &sf, "exit_speed_mps", cs_outcome_exits(s.outcome) ? s.exit_speed_mps : NAN);
+    kopt(&j, &sf, "exit_angle_deg", cs_outcome_exits(s.outcome) ? s.exit_angle_deg : NAN);
+    kopt(&j, &sf, "first_contact_time_s", s.first_contact_time_s >= 0 ? s.first_contact_time_s : NAN);
     kint(&j, &sf, "posts_failed_left", s.posts_failed_left);
     kint(&j, &sf, "posts_failed_right", s.posts_failed_right);
-    kint(&j, &sf, "posts_failed_rotation", s.posts_failed_rotation[0] + s.posts_failed_rotation[1]);
-    kint(&j, &sf, "posts_failed_shear", s.posts_failed_shear[0] + s.posts_failed_shear[1]);
-    kint(&j, &sf, "posts_failed_pullout", s.posts_failed_pullout[0] + s.posts_failed_pullout[1]);
+    kint(&j, &sf, "posts_failed_rotation_left", s.posts_failed_rotation_left);
+    kint(&j, &sf, "posts_failed_rotation_right", s.posts_failed_rotation_right);
+    kint(&j, &sf, "posts_failed_shear_left", s.posts_failed_shear_left);
+    kint(&j, &sf, "posts_failed_shear_right", s.posts_failed_shear_right);
+    kint(&j, &sf, "posts_failed_pullout_left", s.posts_failed_pullout_left);
+    kint(&j, &sf, "posts_failed_pullout_right", s.posts_failed_pullout_right);
     kint(&j, &sf, "cables_broken", s.cables_broken);
-    knum(&j, &sf, "max_cable_tension", s.max_cable_tension);
-    knum(&j, &sf, "initial_kinetic_energy", s.initial_kinetic_energy);
+    knum(&j, &sf, "max_cable_tension_n", s.max_cable_tension_n);
+    knum(&j, &sf, "initial_kinetic_energy_j", s.initial_kinetic_energy_j);
     knum(&j, &sf, "energy_balance_error", s.energy_balance_error);
     kint(&j, &sf, "solver_warnings", s.solver_warnings);
     knum(&j, &sf, "max_solver_residual", s.max_solver_residual);

@@ -10,7 +10,7 @@
 #include <stddef.h>
 #include <stdio.h>
 
-#include "load/loader.h"
+#include "cablesim/loader.h"
 #include "record.h"
 
 /* Defined by the generated source of a build with the report (CMake: report/). */

@@ -8,7 +8,6 @@
 #include "writers.h"
 
 #define Z95 1.959963984540054
-static const double PI = 3.14159265358979323846;
 
 static const char *const method_names[] = {"grid", "monte_carlo", "latin_hypercube"};
 
@@ -36,13 +35,13 @@ static double response(const cs_sweep_result *r, int k) {
     const cs_summary *s = &r->summary;
     switch (k) {
     case R_DECEL:
-        return s->max_decel_50ms_g;
+        return s->max_50ms_decel_g;
     case R_PEN:
-        return s->max_dynamic_penetration;
+        return s->max_dynamic_penetration_m;
     case R_DEFL:
-        return s->max_barrier_deflection;
+        return s->max_barrier_deflection_m;
     case R_TENSION:
-        return s->max_cable_tension;
+        return s->max_cable_tension_n;
     case R_POSTS:
         return s->posts_failed_left + s->posts_failed_right;
     default:
@@ -152,25 +151,25 @@ double cs_sweep_column_number(const cs_sweep_column *c, const cs_sweep_result *r
     if (c->what >= C_EVENTS) return r->event_counts[c->what - C_EVENTS];
     switch (c->what) {
     case C_T:
-        return m->t;
+        return m->t_end_s;
     case C_DECEL:
-        return m->max_decel_50ms_g;
+        return m->max_50ms_decel_g;
     case C_T_DECEL:
-        return m->t_max_decel;
+        return m->t_max_50ms_decel_s;
     case C_PEN:
-        return m->max_dynamic_penetration;
+        return m->max_dynamic_penetration_m;
     case C_DEFL:
-        return m->max_barrier_deflection;
+        return m->max_barrier_deflection_m;
     case C_WIDTH:
-        return m->working_width;
+        return m->working_width_m;
     case C_STOP:
-        return m->outcome == CS_STOPPED ? m->stop_time : NAN;
+        return m->outcome == CS_STOPPED ? m->stop_time_s : NAN;
     case C_EXIT:
-        return cs_outcome_exits(m->outcome) ? m->exit_speed : NAN;
+        return cs_outcome_exits(m->outcome) ? m->exit_speed_mps : NAN;
     case C_EXIT_ANGLE:
-        return cs_outcome_exits(m->outcome) ? m->exit_angle * 180 / PI : NAN;
+        return cs_outcome_exits(m->outcome) ? m->exit_angle_deg : NAN;
     case C_CONTACT:
-        return m->first_contact_time >= 0 ? m->first_contact_time : NAN;
+        return m->first_contact_time_s >= 0 ? m->first_contact_time_s : NAN;
     case C_POSTS_LEFT:
         return m->posts_failed_left;
     case C_POSTS_RIGHT:
@@ -178,9 +177,9 @@ double cs_sweep_column_number(const cs_sweep_column *c, const cs_sweep_result *r
     case C_CABLES:
         return m->cables_broken;
     case C_TENSION:
-        return m->max_cable_tension;
+        return m->max_cable_tension_n;
     case C_KE:
-        return m->initial_kinetic_energy;
+        return m->initial_kinetic_energy_j;
     case C_ENERGY:
         return m->energy_balance_error;
     case C_WARNINGS:
@@ -190,7 +189,7 @@ double cs_sweep_column_number(const cs_sweep_column *c, const cs_sweep_result *r
     case C_X:
     case C_Y:
     case C_Z:
-        return m->final_position[c->what - C_X];
+        return m->final_position_m[c->what - C_X];
     default:
         return NAN;
     }
@@ -357,7 +356,8 @@ static int make_summary(summary *s, const cs_sweep_spec *spec, const double *x, 
     }
     long pen = 0;
     for (long i = 0; i < s->ok; i++)
-        pen += cs_outcome_through(r[ok[i]].summary.outcome) || r[ok[i]].summary.max_dynamic_penetration > 1.0;
+        pen +=
+            cs_outcome_through(r[ok[i]].summary.outcome) || r[ok[i]].summary.max_dynamic_penetration_m > 1.0;
     if (add_tally(s, "penetration_over_1m", "penetration > 1 m (or breakthrough)", pen) != 0) goto oom;
     for (int t = 0; t < CS_EVENT_TYPE_COUNT; t++) {
         if (!is_failure_event(t)) continue;

@@ -64,7 +64,7 @@ cs_rating cs_rate_run(cs_standard standard, const char *vehicle_class, double sp
     snprintf(r.vehicle_class, sizeof r.vehicle_class, "%s", vehicle_class);
     r.speed_mph = cs_rating_speed_mph(rules, speed);
     int through = cs_outcome_through(summary->outcome);
-    double front = summary->max_dynamic_penetration;
+    double front = summary->max_dynamic_penetration_m;
     int cargo =
         standard == CS_SD_STD_02_01A ||
         (standard == CS_ASTM_F2656 && (strcmp(vehicle_class, "M") == 0 || strcmp(vehicle_class, "H") == 0));
@@ -129,10 +129,11 @@ cs_roadside_result cs_roadside_read(const cs_roadside_test *test, const cs_summa
     memset(&r, 0, sizeof r);
     r.redirected = summary->outcome == CS_REDIRECTED;
     r.contained = r.redirected || summary->outcome == CS_STOPPED;
-    r.deflection = summary->max_barrier_deflection;
-    r.working_width = summary->working_width;
-    r.exit_speed = cs_outcome_exits(summary->outcome) ? summary->exit_speed : -1.0;
-    r.exit_angle = r.exit_speed >= 0.0 ? summary->exit_angle : 0.0;
-    r.exit_angle_within = r.redirected && r.exit_angle <= 0.6 * test->angle;
+    r.deflection = summary->max_barrier_deflection_m;
+    r.working_width_m = summary->working_width_m;
+    r.exit_speed_mps = cs_outcome_exits(summary->outcome) ? summary->exit_speed_mps : -1.0;
+    r.exit_angle_deg = r.exit_speed_mps >= 0.0 ? summary->exit_angle_deg : 0.0;
+    r.exit_angle_within =
+        r.redirected && r.exit_angle_deg <= 0.6 * test->angle * 180 / 3.14159265358979323846;
     return r;
 }

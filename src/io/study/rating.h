@@ -70,13 +70,13 @@ int cs_roadside_tests(const char *standard, int level, const char *name, cs_road
  * stopped, not broken through; the exit angle against NCHRP 350's preferred limit, 60% of the impact
  * angle (UNCONFIRMED). */
 typedef struct cs_roadside_result {
-    int contained;         /* redirected or stopped, not through */
-    int redirected;        /* left the barrier on the traffic side */
-    double deflection;     /* dynamic deflection, m */
-    double working_width;  /* m */
-    double exit_speed;     /* m/s, < 0 if it did not leave */
-    double exit_angle;     /* rad */
-    int exit_angle_within; /* exit angle within 60% of the impact angle */
+    int contained;          /* redirected or stopped, not through */
+    int redirected;         /* left the barrier on the traffic side */
+    double deflection;      /* dynamic deflection, m */
+    double working_width_m; /* m */
+    double exit_speed_mps;  /* m/s, < 0 if it did not leave */
+    double exit_angle_deg;  /* degrees */
+    int exit_angle_within;  /* exit angle within 60% of the impact angle */
 } cs_roadside_result;
 
 cs_roadside_result cs_roadside_read(const cs_roadside_test *test, const cs_summary *summary);

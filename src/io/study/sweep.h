@@ -12,7 +12,7 @@
 #include <stdint.h>
 
 #include "cablesim/cablesim.h"
-#include "load/loader.h"
+#include "cablesim/loader.h"
 #include "load/sweepspec.h"
 
 /* ---- the runs' inputs ---- */

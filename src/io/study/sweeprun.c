@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "load/loader.h"
+#include "cablesim/loader.h"
 #include "rating.h"
 #include "sweep.h"
 

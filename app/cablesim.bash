@@ -1,0 +1,49 @@
+# bash completion for cablesim: its commands, each command's options, the values of --standard and
+# --only, model and spec files (*.yaml) and folders. Installed as
+# share/bash-completion/completions/cablesim.
+_cablesim() {
+    local cur prev cmd
+    cur=${COMP_WORDS[COMP_CWORD]}
+    prev=${COMP_WORDS[COMP_CWORD - 1]}
+    cmd=${COMP_WORDS[1]:-}
+    if [ "$COMP_CWORD" -eq 1 ]; then
+        mapfile -t COMPREPLY < <(compgen -W "run check sweep rate validate list schema --help --version" -- "$cur")
+        return
+    fi
+    case $prev in
+    -o | --examples)
+        mapfile -t COMPREPLY < <(compgen -d -- "$cur")
+        return
+        ;;
+    --standard)
+        mapfile -t COMPREPLY < <(compgen -W "sd-std-02.01 sd-std-02.01a astm-f2656 nchrp-350 mash" -- "$cur")
+        return
+        ;;
+    --only)
+        mapfile -t COMPREPLY < <(compgen -W "crash readings roadside bogie verification convergence sensitivity" -- "$cur")
+        return
+        ;;
+    --level)
+        mapfile -t COMPREPLY < <(compgen -W "3 4" -- "$cur")
+        return
+        ;;
+    --set | --dt | --t-end | --threads | --runs | --seed | --class | --test)
+        return
+        ;;
+    esac
+    local opts=""
+    case $cmd in
+    run) opts="-o --dt --t-end --set --plots --report" ;;
+    check) opts="--set" ;;
+    sweep) opts="-o --threads --runs --seed --set --t-end --dt --netcdf --quiet --help" ;;
+    rate) opts="--standard --class --level --test --set" ;;
+    validate) opts="-o --examples --only --report-only" ;;
+    *) return ;;
+    esac
+    if [[ $cur == -* ]]; then
+        mapfile -t COMPREPLY < <(compgen -W "$opts" -- "$cur")
+    else
+        mapfile -t COMPREPLY < <(compgen -f -X '!*.yaml' -- "$cur"; compgen -d -- "$cur")
+    fi
+}
+complete -F _cablesim cablesim

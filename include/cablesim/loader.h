@@ -1,0 +1,116 @@
+/** @file
+ * Model files: read a model (YAML, units on every value), resolve its named parts and file references,
+ * apply `--set` overrides, check it, and fill the engine's definition structs (def.h). Every problem is
+ * collected as "file:line:column: what is wrong (what was expected)". A loader holds all its own state:
+ * use one per thread. */
+#ifndef CABLESIM_LOADER_H
+#define CABLESIM_LOADER_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "cablesim/sim.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** A model file's loader (opaque): its unit database, the files it read, overrides and problems. */
+typedef struct cs_loader cs_loader;
+
+/** A loaded model: the engine's definitions of the barrier, the vehicle and the attack, in SI. The names,
+ * files and arrays behind barrier.cables, barrier.posts and barrier.rails belong to the loader: they last
+ * until its next load, cs_loader_reset, cs_loader_reuse or cs_loader_free. */
+typedef struct cs_model_input {
+    const char *name;         /**< the model's name (the default output folder is results/NAME) */
+    const char *file;         /**< the model file as given */
+    cs_barrier_def barrier;   /**< cables, posts, rails and anchors */
+    cs_vehicle_def vehicle;   /**< the vehicle */
+    cs_scenario_def scenario; /**< the attack and the integration */
+} cs_model_input;
+
+/** Create a loader.
+ * @param data_dir the folder of the parts library (the YAML files of data/), or NULL to find it: the
+ * environment variable CABLESIM_DATA, else PREFIX/share/cablesim of the installed library or command that
+ * runs, else the source tree's data/ for a program of the build tree (docs/parts.md).
+ * @param why filled with the reason on failure
+ * @param why_size its size
+ * @return the loader, or NULL if memory is short or the unit database (udunits2) cannot be loaded. */
+CS_API cs_loader *cs_loader_create(const char *data_dir, char *why, size_t why_size);
+/** Free a loader and everything it returned. NULL is allowed. */
+CS_API void cs_loader_free(cs_loader *loader);
+
+/** The folder of the parts library as cs_loader_create resolved it ("" when none was found: loading a
+ * model that names a part then reports why). Its validation/ holds the values `cablesim validate` compares
+ * with. */
+CS_API const char *cs_loader_data_dir(const cs_loader *loader);
+
+/** Queue an override for the next load, as `cablesim run --set` does.
+ * @param loader the loader
+ * @param assignment "PATH=VALUE", the path of a value in the model file with units on the value:
+ *        "scenario.speed=35 mph", "barrier.posts[0].spacing=6 ft", "vehicle=M".
+ * @return 0, or -1 when it is not PATH=VALUE (the problem is recorded). */
+CS_API int cs_loader_set(cs_loader *loader, const char *assignment);
+/** Load, resolve, override and check a model file.
+ * @param loader the loader
+ * @param path the model file
+ * @param out filled with the model on success
+ * @return 0, or -1 with every problem recorded (cs_loader_error_count, cs_loader_error). */
+CS_API int cs_loader_load(cs_loader *loader, const char *path, cs_model_input *out);
+/** The same as cs_loader_load for a model file's contents held in memory.
+ * @param loader the loader
+ * @param name stands for the file in messages; files the model refers to are found from its folder
+ * @param data the contents, needed only during the call
+ * @param size their length in bytes
+ * @param out filled with the model on success
+ * @return 0, or -1 with every problem recorded. */
+CS_API int cs_loader_load_buffer(cs_loader *loader, const char *name, const char *data, size_t size,
+                                 cs_model_input *out);
+/** Forget every loaded file, override and problem, keeping the unit database: ready for a new model.
+ * Whatever an earlier load returned becomes invalid. */
+CS_API void cs_loader_reset(cs_loader *loader);
+/** Forget the last load's overrides, problems and what it returned, keeping the files it read (parsed
+ * once) and the parts library: for another load of the same model with other overrides (a sweep's runs).
+ * After a load with problems it is cs_loader_reset. */
+CS_API void cs_loader_reuse(cs_loader *loader);
+/** Build the engine's model from a loaded input (cs_model_create). On failure the engine's message is
+ * recorded at the place in the file, or the override, of the element it names.
+ * @return the model (free it with cs_model_free), or NULL. */
+CS_API cs_model *cs_loader_build(cs_loader *loader, const cs_model_input *in);
+
+/** The number of problems recorded, each once. */
+CS_API int cs_loader_error_count(cs_loader *loader);
+/** The i-th problem, "file:line:column: what is wrong (what was expected)", sorted by file and place. */
+CS_API const char *cs_loader_error(cs_loader *loader, int i);
+/** Print every problem, one a line. */
+CS_API void cs_loader_print_errors(cs_loader *loader, FILE *out);
+
+/** The kinds of named parts in the parts library (and in a model file's own `parts:`). */
+typedef enum cs_part_kind {
+    CS_PART_VEHICLE,   /**< a cs_vehicle_def (data/vehicles.yaml) */
+    CS_PART_ROPE,      /**< a cs_rope_def (data/ropes.yaml) */
+    CS_PART_SECTION,   /**< a post's cs_section_def (data/sections.yaml) */
+    CS_PART_RAIL,      /**< a cs_rail_def (data/rails.yaml) */
+    CS_PART_KIND_COUNT /**< the number of kinds */
+} cs_part_kind;
+
+/** The names of the library's parts of a kind, in file order.
+ * @param loader the loader
+ * @param kind the kind
+ * @param names set to the names (they belong to the loader)
+ * @param descriptions set to their descriptions, in the same order
+ * @return their number, or -1 when the library cannot be read (problems recorded). */
+CS_API int cs_loader_library(cs_loader *loader, cs_part_kind kind, const char ***names,
+                             const char ***descriptions);
+/** Resolve a named part into its definition.
+ * @param loader the loader
+ * @param kind the kind
+ * @param name the part's name
+ * @param def a cs_vehicle_def, cs_rope_def, cs_section_def or cs_rail_def by kind
+ * @return 0, or -1 with the problem recorded. */
+CS_API int cs_loader_part(cs_loader *loader, cs_part_kind kind, const char *name, void *def);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,63 @@
+/* A run's output folder: the data files, the plots and whatever the caller adds, written beside their
+ * names and committed together (outfile.h), or none of them. */
+#include <stdlib.h>
+
+#include "figures.h"
+#include "plot.h"
+#include "writers.h"
+
+/* DIR/plots/<figure>.png and .svg, begun on out. */
+static int write_plots(cs_outdir *out, const cs_model_input *in, const cs_state *state, const cs_record *rec,
+                       char *why, size_t why_size) {
+    int n = cs_state_event_count(state);
+    cs_event *events = malloc((size_t)(n > 0 ? n : 1) * sizeof *events);
+    if (!events) {
+        snprintf(why, why_size, "out of memory");
+        return -1;
+    }
+    for (int i = 0; i < n; i++)
+        events[i] = *cs_state_event(state, i);
+    static const cs_plot_format formats[] = {CS_PLOT_PNG, CS_PLOT_SVG};
+    cs_figure_data d = {in, rec, events, n};
+    int rc = cs_figures_write(out, "plots", formats, 2, &d, why, why_size);
+    cs_plot_release();
+    free(events);
+    return rc;
+}
+
+int cs_write_outputs_with(const char *dir, const cs_model_input *in, const cs_model *model,
+                          const cs_state *state, const cs_record *rec, int flags, cs_more_outputs more,
+                          void *user, char *why, size_t why_size) {
+    cs_outdir out;
+    if (rec->failed) {
+        snprintf(why, why_size, "the record lost frames: memory ran short while recording");
+        return -1;
+    }
+    int rc = cs_out_open(&out, dir, why, why_size);
+    static const char *const names[] = {"timeseries.csv", "events.csv", "summary.json"};
+    for (int k = 0; rc == 0 && k < 3; k++) {
+        FILE *f = cs_out_begin(&out, names[k], why, why_size);
+        if (!f) {
+            rc = -1;
+            break;
+        }
+        rc = k == 0   ? cs_write_timeseries(f, rec, why, why_size)
+             : k == 1 ? cs_write_events(f, state, why, why_size)
+                      : cs_write_summary_json(f, in, model, state, why, why_size);
+        char end_why[512];
+        if (cs_out_end(&out, f, end_why, sizeof end_why) != 0 && rc == 0) {
+            snprintf(why, why_size, "%s", end_why);
+            rc = -1;
+        }
+    }
+    if (rc == 0 && (flags & CS_OUTPUT_PLOTS)) rc = write_plots(&out, in, state, rec, why, why_size);
+    if (rc == 0 && more) rc = more(&out, user, why, why_size);
+    if (rc == 0) rc = cs_out_commit(&out, why, why_size);
+    if (rc != 0) cs_out_abort(&out);
+    return rc;
+}
+
+int cs_write_outputs(const char *dir, const cs_model_input *in, const cs_model *model, const cs_state *state,
+                     const cs_record *rec, int flags, char *why, size_t why_size) {
+    return cs_write_outputs_with(dir, in, model, state, rec, flags, NULL, NULL, why, why_size);
+}

@@ -1,0 +1,5 @@
+#include "cablesim/cablesim.h"
+
+const char *cs_version(void) {
+    return CS_VERSION_STRING;
+}
