@@ -265,6 +265,11 @@ const char *cs_outcome_name(cs_outcome outcome);
 /* FNV-1a hash of the state's numbers, for determinism tests. */
 unsigned long long cs_state_hash(const cs_model *model, const cs_state *state);
 
+/* 64-bit FNV-1a of n bytes, continuing from h (start from CS_FNV1A64_BASIS): the hash of cs_state_hash,
+ * and of the model a run's outputs record. */
+#define CS_FNV1A64_BASIS 1469598103934665603ULL
+unsigned long long cs_fnv1a64(unsigned long long h, const void *data, size_t n);
+
 #ifdef __cplusplus
 }
 #endif

@@ -42,6 +42,11 @@ void cs_loader_reset(cs_loader *loader);
  * read (parsed once) and the parts library, for another load of the same model with other overrides
  * (a sweep's runs). After a load with errors it is cs_loader_reset. */
 void cs_loader_reuse(cs_loader *loader);
+/* 64-bit FNV-1a of a loaded model's definitions (barrier, vehicle, scenario: every value as the engine
+ * gets it, in SI), not of its name or file: two loads give the same hash exactly when they give the engine
+ * the same numbers. */
+unsigned long long cs_model_input_hash(const cs_model_input *in);
+
 /* Build the engine model from a loaded input; on failure the engine's message is recorded at the
  * location of the element it names. */
 cs_model *cs_loader_build(cs_loader *loader, const cs_model_input *in);
