@@ -7,6 +7,28 @@
 
 #include "load/loader.h"
 #include "record.h"
+#include "study/rating.h"
+
+/* What a run's outputs record beside its results: where they came from (this cablesim's version,
+ * CS_VERSION_STRING, is written with them), and the run's ratings as run. */
+typedef struct cs_run_info {
+    const char *command;          /* the command line, shell-quoted */
+    const char *const *overrides; /* --set, --dt, --t-end as given, in order: "--set PATH=VALUE" */
+    int override_count;
+    unsigned long long model_hash; /* cs_model_input_hash */
+    cs_rating ratings[2];          /* ASTM F2656, SD-STD-02.01: those whose test vehicle the run's is */
+    int rating_count;
+} cs_run_info;
+
+/* The ratings of a run as run into info (cs_rate_as_run): ASTM F2656 if its vehicle is one of that
+ * standard's, and SD-STD-02.01 too for the 15,000-lb truck. */
+void cs_run_info_rate(cs_run_info *info, const cs_model_input *in, const cs_summary *summary);
+/* The model hash as written: 16 hexadecimal digits. */
+void cs_model_hash_text(unsigned long long hash, char buf[17]);
+/* Whether a run's max dynamic penetration is what the vehicle reached (it stopped, was redirected or never
+ * touched the barrier), rather than where the run ended with the vehicle through or still going: then it
+ * is a lower bound, "beyond" it. */
+int cs_penetration_is_final(cs_outcome outcome);
 
 typedef struct cs_wout {
     FILE *f;
@@ -22,9 +44,12 @@ void cs_json_string(FILE *f, const char *s);
 /* Each returns 0, or -1 with why filled. */
 int cs_write_timeseries(FILE *f, const cs_record *rec, char *why, size_t why_size);
 int cs_write_events(FILE *f, const cs_state *state, char *why, size_t why_size);
+/* summary.json; info may be NULL (no provenance, no ratings). */
 int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_model *model, const cs_state *state,
-                          char *why, size_t why_size);
-/* The readable summary (SI and US units side by side). */
-void cs_write_report(FILE *f, const cs_model_input *in, const cs_model *model, const cs_state *state);
+                          const cs_run_info *info, char *why, size_t why_size);
+/* The readable summary (SI and US units side by side): the outcome, the model's hash, the response
+ * parameters, the ratings as run, the failure events in order and the yielding posts counted. */
+void cs_write_report(FILE *f, const cs_model_input *in, const cs_model *model, const cs_state *state,
+                     const cs_run_info *info);
 
 #endif
