@@ -18,9 +18,13 @@ for spec in lhs grid mc plot; do
         "$cs" sweep "tests/sweep/$spec.yaml" -o "$tmp/$spec-$t" --threads "$t" >"$tmp/$spec-$t.out" 2>"$tmp/$spec-$t.err"
         check "$spec on $t threads exits 0" '[ $? -eq 0 ] || { cat "$tmp/$spec-$t.err"; false; }'
     done
-    for f in runs.csv summary.md summary.json; do
-        check "$spec: $f the same on 1 and 2 threads" 'cmp "$tmp/$spec-1/$f" "$tmp/$spec-2/$f"'
-    done
+    check "$spec: runs.csv the same on 1 and 2 threads" 'cmp "$tmp/$spec-1/runs.csv" "$tmp/$spec-2/runs.csv"'
+    # the summaries record the command line (its -o and --threads differ): the same but for that line
+    check "$spec: summary.md the same on 1 and 2 threads, but for its command line" \
+        'cmp <(grep -v "^Written by cablesim " "$tmp/$spec-1/summary.md") <(grep -v "^Written by cablesim " "$tmp/$spec-2/summary.md")'
+    check "$spec: summary.json the same on 1 and 2 threads, but for its first line" \
+        'cmp <(tail -n +2 "$tmp/$spec-1/summary.json") <(tail -n +2 "$tmp/$spec-2/summary.json")'
+    check "$spec: the summaries give the command line" 'grep -qF "\"command\":\"$cs sweep tests/sweep/$spec.yaml -o $tmp/$spec-1 --threads 1\"" "$tmp/$spec-1/summary.json" && grep -qF "Written by cablesim $("$cs" --version | cut -d" " -f2): \`$cs sweep tests/sweep/$spec.yaml -o $tmp/$spec-1 --threads 1\`; the base model'"'"'s hash " "$tmp/$spec-1/summary.md"'
     check "$spec: no run failed" 'grep -q "; 0 did not run to the end" "$tmp/$spec-1.out"'
     check "$spec: progress as plain lines" 'grep -q "^sweep: [0-9]*/[0-9]* runs (100%)" "$tmp/$spec-1.err"'
 done
