@@ -202,7 +202,8 @@ static int error_order(const void *a, const void *b) {
 /* Sort the problems by place and keep each once (a value used twice is wrong once). */
 static void sort_errors(cs_loader *l) {
     if (l->errors_sorted) return;
-    qsort(l->errors, (size_t)l->error_count, sizeof *l->errors, error_order);
+    if (l->error_count > 1) /* none: errors may be NULL, which qsort must not get */
+        qsort(l->errors, (size_t)l->error_count, sizeof *l->errors, error_order);
     int kept = 0;
     for (int k = 0; k < l->error_count; k++) {
         if (kept > 0 && strcmp(l->errors[kept - 1].text, l->errors[k].text) == 0) {
