@@ -6,13 +6,12 @@
 
 #include "cablesim/cablesim.h"
 
-/* `cablesim rate FILE --standard S [--class C] [--set PATH=VALUE]...`; argv[1] is "rate". */
+/* `cablesim rate FILE --standard S [--class C] [--set PATH=VALUE]...`; argv[1] is "rate". Each returns
+ * the exit status. */
 int cs_command_rate(int argc, char **argv);
 /* `cablesim validate [-o DIR] [--examples DIR] [--only PARTS]`; argv[1] is "validate". */
 int cs_command_validate(int argc, char **argv);
 /* `cablesim compare RUN... [--measured FILE.csv] [-o DIR]`; argv[1] is "compare". */
 int cs_command_compare(int argc, char **argv);
-/* The rating line(s) `run` prints for a run of a standard test vehicle (nothing otherwise). */
-void cs_print_run_rating(FILE *out, const cs_vehicle_def *vehicle, double speed, const cs_summary *summary);
 
 #endif

@@ -6,6 +6,7 @@
 
 #include "cablesim/cablesim.h"
 #include "cablesim/loader.h"
+#include "cli.h"
 #include "commands.h"
 #include "load/schema.h"
 #include "out/figures.h"
@@ -15,13 +16,14 @@
 #include "out/writers.h"
 #include "sweepcmd.h"
 
-enum { EXIT_RUN = 1, EXIT_BAD = 2 };
+enum { EXIT_RUN = CS_EXIT_RUN, EXIT_BAD = CS_EXIT_USAGE };
 
 static const char usage[] =
     "Usage: cablesim run FILE [-o DIR] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots] [--report]\n"
-    "  or:  cablesim check FILE [--set PATH=VALUE]...\n"
-    "  or:  cablesim sweep SPEC.yaml [-o DIR] [--threads N]\n"
-    "  or:  cablesim rate FILE --standard sd-std-02.01|sd-std-02.01a|astm-f2656 [--class M50|K8]\n"
+    "  or:  cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]...\n"
+    "  or:  cablesim sweep SPEC.yaml [-o DIR] [--threads N] ...\n"
+    "  or:  cablesim sweep --resume DIR\n"
+    "  or:  cablesim rate FILE --standard astm-f2656|sd-std-02.01|sd-std-02.01a [--class M50|PU60|K8]\n"
     "  or:  cablesim rate FILE --standard nchrp-350|mash [--level 3|4 | --test 3-11]\n"
     "  or:  cablesim validate [-o DIR]\n"
     "  or:  cablesim compare RUN... [--measured FILE.csv] [-o DIR]\n"
@@ -34,13 +36,15 @@ static const char usage[] =
     "            DIR/plots/*.png and *.svg; --report writes DIR/report.html, one page that opens from disk:\n"
     "            summary, failure timeline, plots, 3D replay\n"
     "  check     check a model (or a sweep spec) only: every problem as file:line:column\n"
-    "  sweep     a study: grids, Monte Carlo, Latin hypercube (cablesim sweep --help)\n"
+    "  sweep     a study: grids, Monte Carlo, Latin hypercube (cablesim sweep --help); --resume DIR\n"
+    "            completes an interrupted one\n"
     "  rate      the highest class of ASTM F2656 or SD-STD-02.01 a design passes, or the NCHRP 350 or\n"
     "            MASH tests of a level\n"
     "  validate  the validation suite: DIR/validation.md and .csv\n"
     "  compare   runs (folders of cablesim run) and a measured history side by side: a table and plots\n"
     "  list      the named parts of the library and the folder they are read from\n"
     "  schema    the model-file reference (docs/file-format.md)\n"
+    "cablesim COMMAND --help gives the command's options.\n"
     "\n"
     "Values take units: --dt \"0.2 ms\", --set scenario.speed=\"35 mph\",\n"
     "--set barrier.cables[0].pretension=\"8 kip\".\n"
@@ -48,9 +52,38 @@ static const char usage[] =
     "cablesim, else the source tree's data/.\n"
     "Exit status: 0 done, 1 the run failed, 2 bad model or usage.\n";
 
+static const char run_usage[] =
+    "usage: cablesim run FILE [-o DIR] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots] [--report]\n"
+    "Runs the model of FILE and prints a summary: the outcome, the model's hash, the response parameters,\n"
+    "the ratings as run, the failure events. Writes DIR/timeseries.csv, DIR/events.csv and\n"
+    "DIR/summary.json (default DIR: results/<model name>); --plots also the run's figures as\n"
+    "DIR/plots/*.png and *.svg, --report DIR/report.html (one page that opens from disk: summary, failure\n"
+    "timeline, plots, 3D replay). DIR is checked before the run; the files appear together once all are\n"
+    "written, and those of an earlier run that this one does not write (plots/*.png, report.html...) are\n"
+    "removed: DIR holds one run. A failed run writes nothing.\n"
+    "  -o, --out DIR        the output folder\n"
+    "  --set PATH=VALUE     replace a value of the model: --set scenario.speed=\"35 mph\"\n"
+    "  --dt T, --t-end T    the time step and the time limit: --dt \"0.2 ms\" (scenario.dt, scenario.t_end)\n"
+    "  --plots, --report    the figures, the HTML report\n"
+    "Exit status: 0 done, 1 the run or its outputs failed, 2 a bad model or command line.\n";
+
+static const char check_usage[] =
+    "usage: cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]...\n"
+    "Checks a model file (or a sweep spec, see cablesim sweep --help) without running it: every problem as\n"
+    "FILE:LINE:COLUMN. Exit status: 0 valid, 2 problems or a bad command line.\n";
+
+static const char list_usage[] = "usage: cablesim list\n"
+                                 "Lists the named parts of the library (data/*.yaml): vehicles, wire ropes, "
+                                 "post and rail sections.\n";
+
+static const char schema_usage[] = "usage: cablesim schema\n"
+                                   "Prints the model-file reference (docs/file-format.md) from the loader's "
+                                   "schema.\n";
+
 typedef struct options {
-    const char *command, *file, *out_dir;
+    const char *file, *out_dir;
     int plots, report;
+    cs_overrides *overrides;
 } options;
 
 static int bad_usage(const char *what) {
@@ -58,43 +91,64 @@ static int bad_usage(const char *what) {
     return EXIT_BAD;
 }
 
-/* Parse the command line into o, queueing --set, --dt and --t-end on the loader. */
-static int parse(int argc, char **argv, options *o, cs_loader *l) {
-    for (int i = 2; i < argc; i++) {
-        const char *a = argv[i], *v = NULL;
-        char set[1024];
-        if (strcmp(a, "--plots") == 0) {
+/* Parse the command line of run or check into o, queueing --set, --dt and --t-end on the loader.
+ * Returns 0, a help's 0 with o->file NULL, or EXIT_BAD. */
+static int parse(int argc, char **argv, const cs_cli *cli, int is_run, options *o, cs_loader *l) {
+    enum { SET = 1000, DT, T_END, PLOTS, REPORT };
+    static const struct option run_opts[] = {
+        {"out", required_argument, NULL, 'o'}, {"set", required_argument, NULL, SET},
+        {"dt", required_argument, NULL, DT},   {"t-end", required_argument, NULL, T_END},
+        {"plots", no_argument, NULL, PLOTS},   {"report", no_argument, NULL, REPORT},
+        {"help", no_argument, NULL, 'h'},      {NULL, 0, NULL, 0}};
+    static const struct option check_opts[] = {{"set", required_argument, NULL, SET},
+                                               {"dt", required_argument, NULL, DT},
+                                               {"t-end", required_argument, NULL, T_END},
+                                               {"help", no_argument, NULL, 'h'},
+                                               {NULL, 0, NULL, 0}};
+    int v;
+    optind = 1;
+    while ((v = cs_cli_next(cli, argc, argv, is_run ? "ho:" : "h", is_run ? run_opts : check_opts)) != -1) {
+        char set[1200];
+        switch (v) {
+        case 'h':
+            o->file = NULL;
+            return cs_cli_help(cli);
+        case 'o':
+            o->out_dir = optarg;
+            break;
+        case PLOTS:
             o->plots = 1;
-            continue;
-        }
-        if (strcmp(a, "--report") == 0) {
+            break;
+        case REPORT:
             o->report = 1;
-            continue;
-        }
-        static const char *const valued[][2] = {
-            {"--set", NULL}, {"--dt", "scenario.dt"}, {"--t-end", "scenario.t_end"}, {"-o", NULL}};
-        int k = -1;
-        for (int j = 0; j < 4; j++) {
-            size_t n = strlen(valued[j][0]);
-            if (strncmp(a, valued[j][0], n) == 0 && (a[n] == '\0' || a[n] == '=')) {
-                k = j;
-                v = a[n] == '=' ? a + n + 1 : i + 1 < argc ? argv[++i] : NULL;
-            }
-        }
-        if (k < 0 && a[0] == '-') return bad_usage("unknown option");
-        if (k < 0 && o->file) return bad_usage("more than one model file");
-        if (k < 0)
-            o->file = a;
-        else if (!v)
-            return bad_usage("an option lacks its value");
-        else if (k == 3)
-            o->out_dir = v;
-        else {
-            snprintf(set, sizeof set, "%s%s%s", valued[k][1] ? valued[k][1] : "", valued[k][1] ? "=" : "", v);
+            break;
+        case SET:
+        case DT:
+        case T_END:
+            snprintf(set, sizeof set, "%s%s",
+                     v == DT      ? "scenario.dt="
+                     : v == T_END ? "scenario.t_end="
+                                  : "",
+                     optarg);
             cs_loader_set(l, set);
+            if (cs_overrides_add(o->overrides,
+                                 v == SET  ? "--set"
+                                 : v == DT ? "--dt"
+                                           : "--t-end",
+                                 optarg) != 0)
+                return EXIT_BAD;
+            break;
+        default:
+            return EXIT_BAD;
         }
     }
-    return o->file ? 0 : bad_usage("no model file");
+    int operands = argc - 1 - optind;
+    if (operands > 1)
+        return cs_cli_usage_error(cli, "more than one model file ('%s' and '%s')", argv[1 + optind],
+                                  argv[2 + optind]);
+    if (operands < 1) return cs_cli_usage_error(cli, "no model file");
+    o->file = argv[1 + optind];
+    return 0;
 }
 
 #ifdef CS_HAVE_REPORT
@@ -108,6 +162,7 @@ typedef struct report_args {
     const cs_model_input *in;
     const cs_state *state;
     const cs_record *rec;
+    const cs_run_info *info;
 } report_args;
 
 /* DIR/report.html, begun on out (a cs_more_outputs). A build that lacked node and npm has no page: a
@@ -117,8 +172,8 @@ static int write_report_html(cs_outdir *out, void *user, char *why, size_t why_s
 #ifdef CS_HAVE_REPORT
     FILE *f = cs_out_begin(out, "report.html", why, why_size);
     if (!f) return -1;
-    int rc =
-        cs_write_report_html(f, cs_report_page, cs_report_page_size, a->in, a->state, a->rec, why, why_size);
+    int rc = cs_write_report_html(f, cs_report_page, cs_report_page_size, a->in, a->state, a->rec, a->info,
+                                  why, why_size);
     char end_why[512];
     if (cs_out_end(out, f, end_why, sizeof end_why) != 0 && rc == 0) {
         snprintf(why, why_size, "%s", end_why);
@@ -133,17 +188,32 @@ static int write_report_html(cs_outdir *out, void *user, char *why, size_t why_s
 #endif
 }
 
-static int write_outputs(const char *dir, const cs_model_input *in, const cs_model *model,
-                         const cs_state *state, const cs_record *rec, int plots, int report) {
+/* Every output of the run into out (opened before the run), committed together; on a failure nothing is
+ * left (cs_out_abort). */
+static int write_outputs(cs_outdir *out, const cs_model_input *in, const cs_model *model,
+                         const cs_state *state, const cs_record *rec, const cs_run_info *info, int plots,
+                         int report) {
     char why[512] = "";
-    report_args args = {in, state, rec};
-    int rc = cs_write_outputs_with(dir, in, model, state, rec, plots ? CS_OUTPUT_PLOTS : 0,
-                                   report ? write_report_html : NULL, &args, why, sizeof why);
-    if (rc != 0) fprintf(stderr, "cablesim: nothing written: %s\n", why);
+    report_args args = {in, state, rec, info};
+    int rc = cs_write_run_files(out, in, model, state, rec, info, plots ? CS_OUTPUT_PLOTS : 0,
+                                report ? write_report_html : NULL, &args, why, sizeof why);
+    if (rc == 0) rc = cs_out_commit(out, why, sizeof why);
+    if (rc != 0) {
+        cs_out_abort(out);
+        fprintf(stderr, "cablesim: nothing written: %s\n", why);
+    }
     return rc;
 }
 
-static int run(const cs_model_input *in, cs_model *model, const char *dir, int plots, int report) {
+static int run(const cs_model_input *in, cs_model *model, const options *o, const char *command) {
+    char path[1024], why[512];
+    const char *dir = o->out_dir;
+    if (!dir) snprintf(path, sizeof path, "results/%s", in->name), dir = path;
+    cs_outdir out;
+    if (cs_out_open(&out, dir, why, sizeof why) != 0) { /* before the run, not after it */
+        fprintf(stderr, "cablesim: nothing run: %s\n", why);
+        return EXIT_RUN;
+    }
     cs_error err = {0};
     cs_record rec;
     cs_state *state = cs_state_create(model, &err);
@@ -151,22 +221,31 @@ static int run(const cs_model_input *in, cs_model *model, const char *dir, int p
     if (!state || cs_record_init(&rec, model) != 0) {
         fprintf(stderr, "cablesim: %s\n", state ? "out of memory" : err.message);
         cs_state_free(state);
+        cs_out_abort(&out);
         return EXIT_RUN;
     }
-    char path[1024];
-    if (!dir) snprintf(path, sizeof path, "results/%s", in->name);
-    if (cs_run(model, state, cs_record_frame, &rec, &err) != CS_OK)
+    cs_run_info info = {command, NULL, o->overrides->count, cs_model_input_hash(in), {{0}}, 0};
+    const char *overrides[64];
+    for (int i = 0; i < o->overrides->count; i++)
+        overrides[i] = o->overrides->text[i];
+    info.overrides = overrides;
+    if (cs_run(model, state, cs_record_frame, &rec, &err) != CS_OK) {
         fprintf(stderr, "cablesim: the run failed, nothing written: %s\n", err.message);
-    else if (rec.failed)
+        cs_out_abort(&out);
+    } else if (rec.failed) {
         fprintf(stderr, "cablesim: out of memory while recording, nothing written\n");
-    else if (write_outputs(dir ? dir : path, in, model, state, &rec, plots, report) == 0) {
-        cs_write_summary_text(stdout, in, model, state);
+        cs_out_abort(&out);
+    } else {
         cs_summary sm;
         cs_state_summary(state, &sm);
-        cs_print_run_rating(stdout, &in->vehicle, in->scenario.speed, &sm);
-        printf("  outputs              %s/{timeseries.csv,events.csv,summary.json%s%s}\n", dir ? dir : path,
-               plots ? ",plots/*.png,plots/*.svg" : "", report && HAVE_REPORT ? ",report.html" : "");
-        rc = 0;
+        cs_run_info_rate(&info, in, &sm);
+        if (write_outputs(&out, in, model, state, &rec, &info, o->plots, o->report) == 0) {
+            cs_write_summary_text_with(stdout, in, model, state, &info);
+            printf("  outputs              %s/{timeseries.csv,events.csv,summary.json%s%s}\n", dir,
+                   o->plots ? ",plots/*.png,plots/*.svg" : "",
+                   o->report && HAVE_REPORT ? ",report.html" : "");
+            rc = 0;
+        }
     }
     cs_record_release(&rec);
     cs_state_free(state);
@@ -213,6 +292,17 @@ static int list(cs_loader *l) {
     return 0;
 }
 
+/* list and schema take no arguments but --help. Returns -1 to go on, else the exit status. */
+static int no_arguments(int argc, char **argv, const cs_cli *cli) {
+    static const struct option opts[] = {{"help", no_argument, NULL, 'h'}, {NULL, 0, NULL, 0}};
+    int v;
+    optind = 1;
+    while ((v = cs_cli_next(cli, argc, argv, "h", opts)) != -1)
+        return v == 'h' ? cs_cli_help(cli) : EXIT_BAD;
+    if (argc - 1 > optind) return cs_cli_usage_error(cli, "takes no argument ('%s')", argv[1 + optind]);
+    return -1;
+}
+
 int main(int argc, char **argv) {
     if (argc < 2) return bad_usage("no command");
     const char *cmd = argv[1];
@@ -224,7 +314,13 @@ int main(int argc, char **argv) {
         printf("cablesim %s\n", CS_VERSION_STRING);
         return 0;
     }
-    if (strcmp(cmd, "schema") == 0) return cs_schema_markdown(stdout) == 0 ? 0 : EXIT_RUN;
+    static const cs_cli schema_cli = {"schema", schema_usage}, list_cli = {"list", list_usage},
+                        run_cli = {"run", run_usage}, check_cli = {"check", check_usage};
+    int rc;
+    if (strcmp(cmd, "schema") == 0) {
+        if ((rc = no_arguments(argc, argv, &schema_cli)) >= 0) return rc;
+        return cs_schema_markdown(stdout) == 0 ? 0 : EXIT_RUN;
+    }
     if (strcmp(cmd, "sweep") == 0) return cs_sweep_command(argc, argv);
     if (strcmp(cmd, "check") == 0 && cs_sweep_check_wanted(argc, argv))
         return cs_sweep_check_command(argc, argv);
@@ -232,20 +328,26 @@ int main(int argc, char **argv) {
     if (strcmp(cmd, "validate") == 0) return cs_command_validate(argc, argv);
     if (strcmp(cmd, "compare") == 0) return cs_command_compare(argc, argv);
     int is_run = strcmp(cmd, "run") == 0, is_check = strcmp(cmd, "check") == 0;
-    if (!is_run && !is_check && strcmp(cmd, "list") != 0) return bad_usage("unknown command");
+    if (!is_run && !is_check && strcmp(cmd, "list") != 0) {
+        fprintf(stderr, "cablesim: unknown command '%s'\n%s", cmd, usage);
+        return EXIT_BAD;
+    }
+    if (!is_run && !is_check && (rc = no_arguments(argc, argv, &list_cli)) >= 0) return rc;
     char why[256];
     cs_loader *l = cs_loader_create(NULL, why, sizeof why);
     if (!l) {
         fprintf(stderr, "cablesim: %s\n", why);
         return EXIT_RUN;
     }
-    int rc;
-    options o = {cmd, NULL, NULL, 0, 0};
+    static cs_overrides overrides;
+    static char command[8192];
+    cs_cli_command_line(argc, argv, command, sizeof command); /* as typed: getopt_long reorders argv */
+    options o = {NULL, NULL, 0, 0, &overrides};
     cs_model_input in;
     cs_model *model = NULL;
     if (!is_run && !is_check)
         rc = list(l);
-    else if ((rc = parse(argc, argv, &o, l)) != 0) {
+    else if ((rc = parse(argc, argv, is_run ? &run_cli : &check_cli, is_run, &o, l)) != 0 || !o.file) {
     } else if (cs_loader_load(l, o.file, &in) != 0 || !(model = cs_loader_build(l, &in))) {
         cs_loader_print_errors(l, stderr);
         fprintf(stderr, "cablesim: %s: %d problem%s, nothing run\n", o.file, cs_loader_error_count(l),
@@ -255,7 +357,7 @@ int main(int argc, char **argv) {
         printf("%s: %s is a valid model (%d cables, %d posts)\n", o.file, in.name, in.barrier.cable_count,
                in.barrier.post_count);
     } else {
-        rc = run(&in, model, o.out_dir, o.plots, o.report);
+        rc = run(&in, model, &o, command);
     }
     cs_model_free(model);
     cs_loader_free(l);

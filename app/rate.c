@@ -1,37 +1,41 @@
 /* `cablesim rate`: run a standard's test condition against the barrier of a model file.
- * - Anti-ram (sd-std-02.01, sd-std-02.01a, astm-f2656): its vehicle and speed, head-on, at the model's
- *   impact point; the rating, as the standard measures penetration (src/io/study/rating.c,
- *   docs/ratings.md). Without --class it starts from the highest class and stops at the first the
- *   barrier passes (vehicle stopped and rated).
+ * - Anti-ram (sd-std-02.01, sd-std-02.01a, astm-f2656): the model's vehicle (after --set), which must be
+ *   one the standard tests (ASTM F2656: C, PU, M, H by mass within 5%; SD-STD: the 15,000-lb truck, M), at
+ *   its class's speeds, head-on at the model's impact point; the rating, as the standard measures
+ *   penetration (src/io/study/rating.c, docs/ratings.md). Without --class it starts from the class's
+ *   highest speed and stops at the first at which the vehicle is stopped (and rated).
  * - Roadside (nchrp-350, mash): the tests of a test level (--level 3 or 4) or one (--test 3-11): vehicle,
  *   speed and angle at the model's impact point; each test's outcome, dynamic deflection, working width,
  *   exit speed and angle, and whether the barrier contained and redirected the vehicle. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cablesim/loader.h"
+#include "cli.h"
 #include "commands.h"
 #include "study/rating.h"
 
 #define MPH 0.44704
 #define CS_PI 3.14159265358979323846
 
-typedef struct trial {
-    const char *part;  /* vehicle part of the library */
-    const char *klass; /* rating class letter(s) */
-    int mph;
-} trial;
+static const char rate_usage[] =
+    "usage: cablesim rate FILE --standard astm-f2656|sd-std-02.01|sd-std-02.01a [--class CLASS]\n"
+    "                     [--set PATH=VALUE]...\n"
+    "       cablesim rate FILE --standard nchrp-350|mash [--level 3|4 | --test 3-11] [--set PATH=VALUE]...\n"
+    "Runs a standard's test conditions against the barrier of FILE, at its impact point, and reads each\n"
+    "result as the standard does (docs/ratings.md).\n"
+    "Anti-ram: the test vehicle is the model's (after --set), head-on. ASTM F2656 tests C, PU, M and H (a\n"
+    "vehicle within 5% of 1,100, 2,300, 6,800 or 29,500 kg), SD-STD-02.01 and its revision A the\n"
+    "15,000-lb truck (M); --set vehicle=PU rates the library's PU. Without --class the class's speeds run\n"
+    "from the highest and stop at the first at which the vehicle is stopped; --class runs one: C40 C50 C60\n"
+    "PU40 PU50 PU60 M30 M40 M50 H30 H40 H50 (ASTM F2656), K4 K8 K12 (SD-STD).\n"
+    "Roadside: each test's own vehicle, speed and angle: --level 3 (the default: x-10 and x-11) or 4 (and\n"
+    "4-12), or one --test (3-10, 3-11, 4-10, 4-11, 4-12).\n"
+    "Exit status: 0 done, 1 a run failed, 2 a bad model or command line.\n";
 
-static int usage_error(const char *what) {
-    fprintf(stderr,
-            "cablesim rate: %s\nusage: cablesim rate FILE --standard sd-std-02.01|sd-std-02.01a|astm-f2656 "
-            "[--class M50|K8] [--set PATH=VALUE]...\n"
-            "       cablesim rate FILE --standard nchrp-350|mash [--level 3|4 | --test 3-11] "
-            "[--set PATH=VALUE]...\n",
-            what);
-    return 2;
-}
+static const cs_cli rate_cli = {"rate", rate_usage};
 
 /* One roadside test at the model's impact point; its row printed. Returns 0, 1 if the run failed, 2 if
  * its vehicle is not in the library. contained, redirected: set to 0 if the barrier did not contain the
@@ -83,7 +87,8 @@ static int rate_roadside(cs_loader *l, const char *file, const char *standard, c
     int lv = level ? atoi(level) : (test ? 0 : 3);
     int n = cs_roadside_tests(standard, lv, test, t);
     if (n == 0 || (level && lv != 3 && lv != 4))
-        return usage_error(test ? "unknown test (3-10, 3-11, 4-10, 4-11 or 4-12)" : "level must be 3 or 4");
+        return cs_cli_usage_error(
+            &rate_cli, "%s", test ? "unknown test (3-10, 3-11, 4-10, 4-11 or 4-12)" : "--level takes 3 or 4");
     cs_model_input in;
     if (cs_loader_load(l, file, &in) != 0) {
         cs_loader_print_errors(l, stderr);
@@ -102,48 +107,107 @@ static int rate_roadside(cs_loader *l, const char *file, const char *standard, c
     return rc;
 }
 
-/* The trials of a standard, highest first; --class keeps one. Returns the count. */
-static int trials_for(cs_standard std, const char *klass, trial *t) {
-    static const int speeds[] = {50, 40, 30};
-    int n = 0;
-    for (int i = 0; i < 3; i++) {
-        trial x = {std == CS_ASTM_F2656 ? "M" : "SD-STD-02.01", "M", speeds[i]};
-        char name[16];
-        if (std == CS_ASTM_F2656)
-            snprintf(name, sizeof name, "M%d", x.mph);
-        else
-            snprintf(name, sizeof name, "K%d", x.mph == 30 ? 4 : x.mph == 40 ? 8 : 12);
-        if (!klass || strcmp(klass, name) == 0) t[n++] = x;
-    }
-    return n;
-}
-
-static int rate_one(const cs_model_input *in, const cs_vehicle_def *v, cs_standard std, const trial *t,
-                    cs_rating *out) {
+/* One anti-ram trial: the model's barrier and vehicle, head-on at mph; its row printed. 0, or 1 if the run
+ * failed. */
+static int rate_one(const cs_model_input *in, cs_standard std, const char *klass, int mph, cs_rating *out) {
     cs_scenario_def sc = in->scenario;
-    sc.speed = t->mph * MPH;
+    sc.speed = mph * MPH;
     sc.angle = 0.5 * CS_PI; /* the standards' head-on impact */
     cs_error err = {0};
-    cs_model *m = cs_model_create(&in->barrier, v, &sc, &err);
+    cs_model *m = cs_model_create(&in->barrier, &in->vehicle, &sc, &err);
     cs_state *s = m ? cs_state_create(m, &err) : NULL;
     int rc = (s && cs_run(m, s, NULL, NULL, &err) == CS_OK) ? 0 : 1;
     if (rc) {
-        fprintf(stderr, "cablesim rate: %s at %d mph: %s\n", t->klass, t->mph, err.message);
+        fprintf(stderr, "cablesim rate: %s at %d mph: %s\n", klass, mph, err.message);
     } else {
         cs_summary sm;
         cs_state_summary(s, &sm);
         cs_rating_rules rules = cs_default_rating_rules();
-        *out = cs_rate_run(std, t->klass, sc.speed, &sm, v, &rules);
+        *out = cs_rate_run(std, klass, sc.speed, &sm, &in->vehicle, &rules);
         char pen[64];
-        if (out->penetration > 1e9)
+        if (out->through)
             snprintf(pen, sizeof pen, "through the barrier");
+        else if (isnan(out->penetration))
+            snprintf(pen, sizeof pen, "not measured");
         else
             snprintf(pen, sizeof pen, "%.2f m (%.1f ft)", out->penetration, out->penetration / 0.3048);
-        printf("  %-4s %2d mph  %-12s penetration %-22s ->  %s\n", t->klass, t->mph,
-               cs_outcome_name(sm.outcome), pen, out->label);
+        printf("  %-4s %2d mph  %-12s penetration %-22s ->  %s\n", klass, mph, cs_outcome_name(sm.outcome),
+               pen, out->label);
     }
     cs_state_free(s);
     cs_model_free(m);
+    return rc;
+}
+
+/* The classes a standard tests, as --class takes them, into buf: "C40, C50, ..., H50" or "K4, K8, K12". */
+static void class_list(cs_standard std, char *buf, size_t size) {
+    static const char *const classes[] = {"C", "PU", "M", "H"};
+    size_t n = 0;
+    buf[0] = '\0';
+    for (int i = 0; i < 4; i++) {
+        int mph[3];
+        if (!cs_standard_tests_class(std, classes[i]) || !cs_rating_class_speeds(classes[i], mph)) continue;
+        for (int k = 2; k >= 0 && n < size; k--) {
+            if (std == CS_ASTM_F2656)
+                n += (size_t)snprintf(buf + n, size - n, "%s%s%d", n ? ", " : "", classes[i], mph[k]);
+            else
+                n += (size_t)snprintf(buf + n, size - n, "%sK%d", n ? ", " : "",
+                                      mph[k] == 30   ? 4
+                                      : mph[k] == 40 ? 8
+                                                     : 12);
+        }
+    }
+}
+
+/* `rate` for the anti-ram standards. */
+static int rate_antiram(cs_loader *l, const char *file, cs_standard std, const char *class_arg) {
+    char klass[8] = "", list[200];
+    int only_mph = 0;
+    class_list(std, list, sizeof list);
+    if (class_arg && cs_rating_class_parse(std, class_arg, klass, sizeof klass, &only_mph) != 0)
+        return cs_cli_usage_error(&rate_cli, "--class %s: %s has no such class (expected one of %s)",
+                                  class_arg, cs_standard_title(std), list);
+    cs_model_input in;
+    if (cs_loader_load(l, file, &in) != 0) {
+        cs_loader_print_errors(l, stderr);
+        return CS_EXIT_USAGE;
+    }
+    const char *vclass = cs_rating_vehicle_class(in.vehicle.mass);
+    if (!vclass || !cs_standard_tests_class(std, vclass)) {
+        fprintf(
+            stderr,
+            "cablesim rate: %s: the model's vehicle (%.0f kg) is not a test vehicle of %s (%s, within 5%% "
+            "of the test mass): rate it with one, e.g. --set vehicle=%s\n",
+            file, in.vehicle.mass, cs_standard_title(std),
+            std == CS_ASTM_F2656 ? "C 1,100 kg, PU 2,300 kg, M 6,800 kg or H 29,500 kg"
+                                 : "the 15,000-lb truck, M, 6,800 kg",
+            klass[0] ? klass : "M");
+        return CS_EXIT_USAGE;
+    }
+    if (klass[0] && strcmp(klass, vclass) != 0) {
+        fprintf(
+            stderr,
+            "cablesim rate: %s: --class %s is for the %s vehicle (%.0f kg), but the model's vehicle is %s "
+            "(%.0f kg): give --set vehicle=%s, or a class of %s\n",
+            file, class_arg, klass, cs_rating_class_mass(klass), vclass, in.vehicle.mass, klass, vclass);
+        return CS_EXIT_USAGE;
+    }
+    int mph[3];
+    cs_rating_class_speeds(vclass, mph);
+    printf("%s against %s (test vehicle %s, the model's %.0f kg; head-on at x = %.2f m):\n", in.name,
+           cs_standard_name(std), vclass, in.vehicle.mass, in.scenario.impact_x);
+    cs_rating best, last;
+    int found = 0, rc = 0;
+    for (int k = 0; k < 3 && rc == 0 && !found; k++) {
+        if (only_mph && mph[k] != only_mph) continue;
+        rc = rate_one(&in, std, vclass, mph[k], &last);
+        if (rc == 0 && (only_mph || (last.rated && !last.through))) best = last, found = 1;
+    }
+    if (rc == 0) {
+        char text[256];
+        cs_rating_text(found ? &best : &last, text, sizeof text);
+        printf("rating: %s\n", text);
+    }
     return rc;
 }
 
@@ -153,81 +217,57 @@ int cs_command_rate(int argc, char **argv) {
     cs_loader *l = cs_loader_create(NULL, why, sizeof why);
     if (!l) {
         fprintf(stderr, "cablesim: %s\n", why);
-        return 1;
+        return CS_EXIT_RUN;
     }
-    int rc = 0;
-    for (int i = 2; i < argc && rc == 0; i++) {
-        const char *a = argv[i];
-        const char **slot = strcmp(a, "--standard") == 0 ? &std_name
-                            : strcmp(a, "--class") == 0  ? &klass
-                            : strcmp(a, "--level") == 0  ? &level
-                            : strcmp(a, "--test") == 0   ? &test
-                                                         : NULL;
-        if (slot || strcmp(a, "--set") == 0) {
-            if (i + 1 >= argc)
-                rc = usage_error("an option lacks its value");
-            else if (slot)
-                *slot = argv[++i];
-            else
-                cs_loader_set(l, argv[++i]);
-        } else if (a[0] == '-' || file) {
-            rc = usage_error(a[0] == '-' ? "unknown option" : "more than one model file");
-        } else {
-            file = a;
-        }
+    static const struct option longopts[] = {{"standard", required_argument, NULL, 's'},
+                                             {"class", required_argument, NULL, 'c'},
+                                             {"level", required_argument, NULL, 'l'},
+                                             {"test", required_argument, NULL, 't'},
+                                             {"set", required_argument, NULL, 'S'},
+                                             {"help", no_argument, NULL, 'h'},
+                                             {NULL, 0, NULL, 0}};
+    int rc = -1, v;
+    optind = 1;
+    while (rc < 0 && (v = cs_cli_next(&rate_cli, argc, argv, "h", longopts)) != -1) {
+        if (v == 'h')
+            rc = cs_cli_help(&rate_cli);
+        else if (v == 's')
+            std_name = optarg;
+        else if (v == 'c')
+            klass = optarg;
+        else if (v == 'l')
+            level = optarg;
+        else if (v == 't')
+            test = optarg;
+        else if (v == 'S')
+            cs_loader_set(l, optarg);
+        else
+            rc = CS_EXIT_USAGE;
     }
-    cs_standard std;
-    if (rc == 0 && (!file || !std_name)) rc = usage_error(!file ? "no model file" : "no --standard");
-    if (rc == 0 && (strcmp(std_name, "nchrp-350") == 0 || strcmp(std_name, "mash") == 0)) {
-        rc = klass ? usage_error("--class is for the anti-ram standards")
-                   : rate_roadside(l, file, std_name, level, test);
-        cs_loader_free(l);
-        return rc;
-    }
-    if (rc == 0 && (level || test)) rc = usage_error("--level and --test are for nchrp-350 and mash");
-    if (rc == 0 && cs_standard_parse(std_name, &std) != 0) rc = usage_error("unknown standard");
-    trial t[3];
-    int n = rc == 0 ? trials_for(std, klass, t) : 0;
-    if (rc == 0 && n == 0)
-        rc = usage_error(std == CS_ASTM_F2656 ? "class must be M30, M40 or M50"
-                                              : "class must be K4, K8 or K12");
-    cs_model_input in;
-    cs_vehicle_def v;
-    if (rc == 0 &&
-        (cs_loader_load(l, file, &in) != 0 || cs_loader_part(l, CS_PART_VEHICLE, t[0].part, &v) != 0)) {
-        cs_loader_print_errors(l, stderr);
-        rc = 2;
-    }
-    if (rc == 0) {
-        printf("%s against %s (test vehicle %s, head-on at x = %.2f m):\n", in.name, cs_standard_name(std),
-               t[0].part, in.scenario.impact_x);
-        cs_rating best = {0};
-        int found = 0;
-        for (int k = 0; k < n && rc == 0; k++) {
-            cs_rating r;
-            rc = rate_one(&in, &v, std, &t[k], &r);
-            int passes = rc == 0 && r.rated && r.penetration < 1e9;
-            if (passes && !found) best = r, found = 1;
-            if (found && !klass) break;
-            if (klass && rc == 0) best = r, found = r.rated;
-        }
-        if (rc == 0)
-            printf("rating: %s%s\n", found ? best.label : "none",
-                   found ? "" : (klass ? " (not rated at this class)" : " (no class passed)"));
+    if (rc < 0) {
+        int operands = argc - 1 - optind;
+        file = operands > 0 ? argv[1 + optind] : NULL;
+        cs_standard std;
+        if (operands > 1)
+            rc = cs_cli_usage_error(&rate_cli, "more than one model file ('%s' and '%s')", file,
+                                    argv[2 + optind]);
+        else if (!file || !std_name)
+            rc = cs_cli_usage_error(&rate_cli, "%s", !file ? "no model file" : "no --standard");
+        else if (strcmp(std_name, "nchrp-350") == 0 || strcmp(std_name, "mash") == 0)
+            rc = klass           ? cs_cli_usage_error(&rate_cli, "--class is for the anti-ram standards")
+                 : level && test ? cs_cli_usage_error(&rate_cli, "give --level or --test, not both")
+                                 : rate_roadside(l, file, std_name, level, test);
+        else if (level || test)
+            rc = cs_cli_usage_error(&rate_cli, "--level and --test are for nchrp-350 and mash");
+        else if (cs_standard_parse(std_name, &std) != 0)
+            rc =
+                cs_cli_usage_error(&rate_cli,
+                                   "unknown standard '%s' (expected astm-f2656, sd-std-02.01, sd-std-02.01a, "
+                                   "nchrp-350 or mash)",
+                                   std_name);
+        else
+            rc = rate_antiram(l, file, std, klass);
     }
     cs_loader_free(l);
     return rc;
-}
-
-void cs_print_run_rating(FILE *out, const cs_vehicle_def *vehicle, double speed, const cs_summary *summary) {
-    const char *klass = cs_rating_vehicle_class(vehicle->mass);
-    if (!klass) return;
-    cs_rating_rules rules = cs_default_rating_rules();
-    cs_rating a = cs_rate_run(CS_ASTM_F2656, klass, speed, summary, vehicle, &rules);
-    fprintf(out, "  rating (as run)      ASTM F2656 %s", a.label);
-    if (strcmp(klass, "M") == 0) {
-        cs_rating sd = cs_rate_run(CS_SD_STD_02_01, klass, speed, summary, vehicle, &rules);
-        fprintf(out, "; SD-STD-02.01 %s", sd.label);
-    }
-    fprintf(out, "  (docs/ratings.md)\n");
 }

@@ -1,10 +1,15 @@
-/* cablesim sweep: read the spec, make every run's inputs (the same on every rank), share the runs
- * among MPI ranks (run i on rank i mod size) and, within a rank, among OpenMP threads (dynamic, one run
+/* cablesim sweep: read the spec, make every run's inputs (the same on every rank), share the runs to do
+ * among MPI ranks (the k-th on rank k mod size) and, within a rank, among OpenMP threads (dynamic, one run
  * at a time), gather the results on rank 0 and write runs.csv, summary.md and summary.json there (and
  * runs.nc and the spec's plots when asked). The inputs depend only on the seed and the run index, and
- * each run on nothing else, so the outputs are the same for any thread or rank count. */
-#define _POSIX_C_SOURCE 200809L
+ * each run on nothing else, so the outputs are the same for any thread or rank count.
+ * SIGINT or SIGTERM during the runs lets the runs under way finish and starts no other: the outputs then
+ * hold the runs done, marked partial, and `sweep --resume DIR` reads them back from runs.csv, runs the
+ * rest and writes the whole study (runs.csv the same bytes as a sweep never stopped). */
+#define _XOPEN_SOURCE 700 /* realpath */
+#include <errno.h>
 #include <limits.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,6 +23,8 @@
 #include <mpi.h>
 #endif
 
+#include "cablesim/cablesim.h"
+#include "cli.h"
 #include "out/outfile.h"
 #include "out/plot.h"
 #include "out/studyreport.h"
@@ -25,18 +32,29 @@
 #include "study/sweep.h"
 #include "sweepcmd.h"
 
-enum { EXIT_RUN = 1, EXIT_BAD = 2 };
+enum { EXIT_RUN = CS_EXIT_RUN, EXIT_BAD = CS_EXIT_USAGE };
 
 static const char sweep_usage[] =
     "usage: cablesim sweep SPEC.yaml [-o DIR] [--threads N] [--runs N] [--seed S] [--set PATH=VALUE]...\n"
     "                      [--t-end T] [--dt T] [--netcdf] [--quiet]\n"
+    "       cablesim sweep --resume DIR [--threads N] [--quiet]\n"
     "Runs the study of SPEC (a base model, the values to vary: grids, or Monte Carlo / Latin hypercube\n"
     "samples) and writes DIR/runs.csv, DIR/summary.md and DIR/summary.json (default DIR: results/<spec\n"
     "name>). --threads: OpenMP threads per process (default: OMP_NUM_THREADS or the cores, shared among\n"
     "the ranks of a machine). Under MPI (mpirun -n R cablesim-mpi sweep ...) the runs are shared among\n"
     "the R ranks. --runs and --seed replace the spec's; --set, --t-end and --dt apply to every run.\n"
     "--netcdf (or `netcdf: true` in SPEC) also writes DIR/runs.nc: runs.csv's table as netCDF (CF-1.8).\n"
-    "SPEC's `plot:` draws a response against a varied value in DIR/plots/<y>-vs-<x>.png (docs/sweep.md).\n";
+    "SPEC's `plot:` draws a response against a varied value in DIR/plots/<y>-vs-<x>.png (docs/sweep.md).\n"
+    "DIR is checked before any run; the files appear together at the end, and an earlier study's files\n"
+    "that this one does not write are removed.\n"
+    "SIGINT (Ctrl-C) or SIGTERM: the runs under way finish, no other starts, and DIR gets the runs done,\n"
+    "marked partial (summary.md, summary.json \"partial\": true; exit status 130 or 143). --resume DIR\n"
+    "reads them back from DIR/runs.csv, runs the others and writes the whole study; it refuses a DIR\n"
+    "whose study changed (spec, model, values, cablesim). CABLESIM_SWEEP_STOP_AFTER=N stops a sweep with\n"
+    "SIGINT once N runs are done (for tests).\n"
+    "Exit status: 0 done, 1 the outputs failed, 2 a bad spec or command line, 128 + the signal: partial.\n";
+
+static const cs_cli sweep_cli = {"sweep", sweep_usage};
 
 static double now(void) {
     struct timespec t;
@@ -90,96 +108,280 @@ static void progress_show(progress *p, int final) {
 /* ---- the command ---- */
 
 typedef struct sweep_opts {
-    const char *spec, *out_dir;
+    const char *spec, *out_dir, *resume;
     int threads, quiet, netcdf;
     long runs;
     const char *seed;
     const char *sets[256];
     int set_count;
+    char set_text[256][1100]; /* --t-end and --dt as sets */
 } sweep_opts;
 
 static int sweep_bad_usage(int rank, const char *what, const char *arg) {
-    if (rank == 0)
-        fprintf(stderr, "cablesim sweep: %s%s%s\n%s", what, arg ? ": " : "", arg ? arg : "", sweep_usage);
+    if (rank == 0) cs_cli_usage_error(&sweep_cli, "%s%s%s", what, arg ? ": " : "", arg ? arg : "");
     return EXIT_BAD;
 }
 
+/* The command line into o. Returns 0, -1 after --help (exit 0), or EXIT_BAD. */
 static int parse_opts(int argc, char **argv, sweep_opts *o, int rank) {
-    static char extra[2][300];
-    for (int i = 2; i < argc; i++) {
-        const char *a = argv[i];
-        if (strcmp(a, "--quiet") == 0) {
-            o->quiet = 1;
-            continue;
-        }
-        if (strcmp(a, "--netcdf") == 0) {
-            o->netcdf = 1;
-            continue;
-        }
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            if (rank == 0) fputs(sweep_usage, stdout);
-            return -1;
-        }
-        static const char *const valued[] = {"-o",    "--threads", "--runs", "--seed",
-                                             "--set", "--t-end",   "--dt"};
-        int k = -1;
-        const char *v = NULL;
-        for (int j = 0; j < 7; j++) {
-            size_t n = strlen(valued[j]);
-            if (strncmp(a, valued[j], n) == 0 && (a[n] == '\0' || a[n] == '=')) {
-                k = j;
-                v = a[n] == '=' ? a + n + 1 : i + 1 < argc ? argv[++i] : NULL;
-            }
-        }
-        if (k < 0 && a[0] == '-') return sweep_bad_usage(rank, "unknown option", a);
-        if (k < 0 && o->spec) return sweep_bad_usage(rank, "more than one spec file", a);
-        if (k < 0) {
-            o->spec = a;
-            continue;
-        }
-        if (!v) return sweep_bad_usage(rank, "an option lacks its value", a);
+    enum { THREADS = 1000, RUNS, SEED, SET, T_END, DT, NETCDF, QUIET, RESUME };
+    static const struct option longopts[] = {
+        {"out", required_argument, NULL, 'o'},   {"threads", required_argument, NULL, THREADS},
+        {"runs", required_argument, NULL, RUNS}, {"seed", required_argument, NULL, SEED},
+        {"set", required_argument, NULL, SET},   {"t-end", required_argument, NULL, T_END},
+        {"dt", required_argument, NULL, DT},     {"netcdf", no_argument, NULL, NETCDF},
+        {"quiet", no_argument, NULL, QUIET},     {"resume", required_argument, NULL, RESUME},
+        {"help", no_argument, NULL, 'h'},        {NULL, 0, NULL, 0}};
+    int v, study = 0; /* options that define the study, which --resume takes from DIR */
+    optind = 1;
+    opterr = 0;
+    while ((v = rank == 0 ? cs_cli_next(&sweep_cli, argc, argv, "ho:", longopts)
+                          : getopt_long(argc - 1, argv + 1, ":ho:", longopts, NULL)) != -1) {
         char *end;
-        switch (k) {
-        case 0:
-            o->out_dir = v;
+        switch (v) {
+        case 'h':
+            if (rank == 0) cs_cli_help(&sweep_cli);
+            return -1;
+        case 'o':
+            o->out_dir = optarg;
+            study = 1;
             break;
-        case 1:
-            o->threads = (int)strtol(v, &end, 10);
-            if (*end || o->threads < 1 || o->threads > 1024)
-                return sweep_bad_usage(rank, "--threads takes 1 to 1024", v);
+        case THREADS:
+            o->threads = (int)strtol(optarg, &end, 10);
+            if (*end || end == optarg || o->threads < 1 || o->threads > 1024)
+                return sweep_bad_usage(rank, "--threads takes 1 to 1024", optarg);
             break;
-        case 2:
-            o->runs = strtol(v, &end, 10);
-            if (*end || o->runs < 1 || o->runs > CS_SWEEP_MAX_RUNS)
-                return sweep_bad_usage(rank, "--runs takes 1 to 1000000", v);
+        case RUNS:
+            o->runs = strtol(optarg, &end, 10);
+            if (*end || end == optarg || o->runs < 1 || o->runs > CS_SWEEP_MAX_RUNS)
+                return sweep_bad_usage(rank, "--runs takes 1 to 1000000", optarg);
+            study = 1;
             break;
-        case 3:
-            o->seed = v;
+        case SEED:
+            o->seed = optarg;
+            study = 1;
+            break;
+        case SET:
+        case T_END:
+        case DT:
+            if (o->set_count == 256)
+                return sweep_bad_usage(rank, "more than 256 --set, --t-end and --dt", optarg);
+            if (v == SET) {
+                o->sets[o->set_count] = optarg;
+            } else {
+                snprintf(o->set_text[o->set_count], sizeof o->set_text[0], "scenario.%s=%s",
+                         v == T_END ? "t_end" : "dt", optarg);
+                o->sets[o->set_count] = o->set_text[o->set_count];
+            }
+            o->set_count++;
+            study = 1;
+            break;
+        case NETCDF:
+            o->netcdf = 1;
+            study = 1;
+            break;
+        case QUIET:
+            o->quiet = 1;
+            break;
+        case RESUME:
+            o->resume = optarg;
             break;
         default:
-            if (o->set_count == 256) return sweep_bad_usage(rank, "too many --set", v);
-            if (k == 4) {
-                o->sets[o->set_count++] = v;
-            } else {
-                char *buf = extra[k - 5];
-                snprintf(buf, sizeof extra[0], "scenario.%s=%s", k == 5 ? "t_end" : "dt", v);
-                o->sets[o->set_count++] = buf;
-            }
+            return EXIT_BAD;
         }
     }
-    return o->spec ? 0 : sweep_bad_usage(rank, "no spec file", NULL);
+    int operands = argc - 1 - optind;
+    if (o->resume && (operands > 0 || study))
+        return sweep_bad_usage(
+            rank,
+            "--resume DIR takes the study as DIR/summary.json records it: no SPEC, -o, --runs, "
+            "--seed, --set, --t-end, --dt or --netcdf with it",
+            operands > 0 ? argv[1 + optind] : NULL);
+    if (o->resume) return 0;
+    if (operands > 1) return sweep_bad_usage(rank, "more than one spec file", argv[2 + optind]);
+    if (operands < 1) return sweep_bad_usage(rank, "no spec file", NULL);
+    o->spec = argv[1 + optind];
+    return 0;
+}
+
+/* ---- the record --resume reads back (summary.json's "resume") ---- */
+
+static void json_text(FILE *f, const char *s) {
+    fputc('"', f);
+    for (; *s; s++) {
+        if (*s == '"' || *s == '\\')
+            fprintf(f, "\\%c", *s);
+        else if ((unsigned char)*s < 0x20)
+            fprintf(f, "\\u%04x", *s);
+        else
+            fputc(*s, f);
+    }
+    fputc('"', f);
+}
+
+/* {"spec": the spec's absolute path, "spec_as_given" and the "cwd" it was given in, "runs", "seed", "set":
+ * the command line's fixed values, "netcdf"}. */
+static char *resume_record(const sweep_opts *o, const char *as_given, const char *cwd) {
+    char real[PATH_MAX], *buf = NULL;
+    size_t size = 0;
+    FILE *f = open_memstream(&buf, &size);
+    if (!f) return NULL;
+    fputs("{\"spec\":", f);
+    json_text(f, realpath(o->spec, real) ? real : o->spec);
+    fputs(",\"spec_as_given\":", f);
+    json_text(f, as_given);
+    fputs(",\"cwd\":", f);
+    json_text(f, cwd);
+    if (o->runs > 0)
+        fprintf(f, ",\"runs\":%ld,\"seed\":", o->runs);
+    else
+        fputs(",\"runs\":null,\"seed\":", f);
+    if (o->seed)
+        json_text(f, o->seed);
+    else
+        fputs("null", f);
+    fputs(",\"set\":[", f);
+    for (int i = 0; i < o->set_count; i++) {
+        if (i) fputc(',', f);
+        json_text(f, o->sets[i]);
+    }
+    fprintf(f, "],\"netcdf\":%s}", o->netcdf ? "true" : "false");
+    fclose(f);
+    return buf;
+}
+
+/* A JSON string at *p (as json_text writes them) into out; 0, or -1. */
+static int read_text(const char **p, char *out, size_t size) {
+    const char *s = *p;
+    size_t n = 0;
+    if (*s++ != '"') return -1;
+    for (; *s && *s != '"'; s++) {
+        char c = *s;
+        if (c == '\\') {
+            c = *++s;
+            if (c == 'u') {
+                unsigned v;
+                if (sscanf(s + 1, "%4x", &v) != 1 || v >= 0x20) return -1;
+                c = (char)v;
+                s += 4;
+            } else if (c != '"' && c != '\\' && c != '/') {
+                return -1;
+            }
+        }
+        if (n + 1 >= size) return -1;
+        out[n++] = c;
+    }
+    if (*s != '"') return -1;
+    out[n] = '\0';
+    *p = s + 1;
+    return 0;
+}
+
+/* The value after "key": in text (the first), or NULL. */
+static const char *after_key(const char *text, const char *key) {
+    char k[64];
+    snprintf(k, sizeof k, "\"%s\":", key);
+    const char *p = strstr(text, k);
+    return p ? p + strlen(k) : NULL;
+}
+
+typedef struct resumed {
+    char version[64], model_hash[20], inputs_hash[20];
+    char spec_as_given[PATH_MAX], cwd[PATH_MAX]; /* the spec as the stopped sweep's command line gave it */
+    int partial;
+} resumed;
+
+/* DIR/summary.json's record of the study into o (its strings kept in static storage) and r. 0, or -1 with
+ * why filled. */
+static int read_resume(const char *dir, sweep_opts *o, resumed *r, char *why, size_t why_size) {
+    static char spec[PATH_MAX], seed[64], *text;
+    char path[1200];
+    snprintf(path, sizeof path, "%s/summary.json", dir);
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        snprintf(why, why_size, "%s: %s (expected the summary of a sweep written there)", path,
+                 strerror(errno));
+        return -1;
+    }
+    size_t size = 0, cap = 0;
+    text = NULL;
+    for (int c; (c = getc(f)) != EOF && size < (1u << 24);) {
+        if (size + 1 >= cap) {
+            char *t = realloc(text, cap = cap ? 2 * cap : 65536);
+            if (!t) break;
+            text = t;
+        }
+        text[size++] = (char)c;
+    }
+    fclose(f);
+    if (!text) {
+        snprintf(why, why_size, "%s: empty or unreadable", path);
+        return -1;
+    }
+    text[size] = '\0';
+    const char *p = after_key(text, "resume"), *q;
+    int bad = !p || *p++ != '{';
+    if (!bad && (q = after_key(p, "spec")))
+        bad = read_text(&q, spec, sizeof spec) != 0;
+    else
+        bad = 1;
+    char here[PATH_MAX];
+    if (!bad && (q = after_key(p, "spec_as_given")) &&
+        read_text(&q, r->spec_as_given, sizeof r->spec_as_given) == 0 && (q = after_key(p, "cwd")) &&
+        read_text(&q, r->cwd, sizeof r->cwd) == 0 && getcwd(here, sizeof here) && strcmp(here, r->cwd) == 0)
+        snprintf(spec, sizeof spec, "%s", r->spec_as_given); /* as it was given, where it was given */
+    if (!bad && (q = after_key(p, "runs"))) o->runs = strncmp(q, "null", 4) == 0 ? 0 : strtol(q, NULL, 10);
+    if (!bad && (q = after_key(p, "seed")) && strncmp(q, "null", 4) != 0) {
+        bad = read_text(&q, seed, sizeof seed) != 0;
+        o->seed = seed;
+    }
+    if (!bad && (q = after_key(p, "set")) && *q++ == '[') {
+        static char sets[256][1100];
+        while (!bad && *q == '"' && o->set_count < 256) {
+            bad = read_text(&q, sets[o->set_count], sizeof sets[0]) != 0;
+            o->sets[o->set_count] = sets[o->set_count];
+            o->set_count++;
+            if (*q == ',') q++;
+        }
+        bad |= *q != ']';
+    } else {
+        bad = 1;
+    }
+    if (!bad && (q = after_key(p, "netcdf"))) o->netcdf = strncmp(q, "true", 4) == 0;
+    r->partial = (q = after_key(text, "partial")) && strncmp(q, "true", 4) == 0;
+    r->version[0] = r->model_hash[0] = r->inputs_hash[0] = '\0';
+    if (!bad && (q = after_key(text, "version"))) bad = read_text(&q, r->version, sizeof r->version) != 0;
+    if (!bad && (q = after_key(text, "model_hash")) && *q == '"')
+        bad = read_text(&q, r->model_hash, sizeof r->model_hash) != 0;
+    if (!bad && (q = after_key(text, "inputs_hash")))
+        bad = read_text(&q, r->inputs_hash, sizeof r->inputs_hash);
+    free(text);
+    if (bad) {
+        snprintf(why, why_size,
+                 "%s: no record of the study to resume (written by an older cablesim, or not by "
+                 "cablesim sweep)",
+                 path);
+        return -1;
+    }
+    o->spec = spec;
+    o->out_dir = dir;
+    return 0;
 }
 
 /* runs.csv, summary.md, summary.json, then the spec's plots (files 3 on), the study's own figures and
- * report.html, and runs.nc, begun on out and renamed together; nothing is left if one fails. */
-static int write_all(const char *dir, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
-                     long n) {
+ * report.html, and runs.nc (not for a partial sweep), begun on out (opened before the runs) and renamed
+ * together; nothing is left if one fails, and an earlier study's files that this one does not write are
+ * removed. */
+static int write_all(cs_outdir *out, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
+                     long n, int partial) {
+    static const char *const owned[] = {"runs.csv",    "summary.md",  "summary.json", "runs.nc",
+                                        "report.html", "plots/*.png", "plots/*.svg",  "plots/*.pdf"};
     char why[512] = "";
-    cs_outdir out;
-    int rc = cs_out_open(&out, dir, why, sizeof why);
+    int rc = 0;
+    cs_out_own(out, owned, (int)(sizeof owned / sizeof owned[0]));
     static const char *const names[] = {"runs.csv", "summary.md", "summary.json"};
-    if (rc == 0) rc = cs_out_subdir(&out, "plots", why, sizeof why);
-    int files = 3 + spec->plot_count, study = files; /* then the study's figures, then its page */
+    if (rc == 0) rc = cs_out_subdir(out, "plots", why, sizeof why);
+    int study = 3 + spec->plot_count; /* then the study's figures, then its page */
     for (int k = 0; rc == 0 && k < study + CS_STUDY_FIGURES + 1; k++) {
         char name[256];
         if (k < 3)
@@ -190,7 +392,7 @@ static int write_all(const char *dir, const cs_sweep_spec *spec, const double *x
             cs_study_figure_file(k - study, name, sizeof name);
         else
             snprintf(name, sizeof name, "report.html");
-        FILE *f = cs_out_begin(&out, name, why, sizeof why);
+        FILE *f = cs_out_begin(out, name, why, sizeof why);
         if (!f) {
             rc = -1;
             break;
@@ -203,25 +405,49 @@ static int write_all(const char *dir, const cs_sweep_spec *spec, const double *x
                  ? cs_study_write_figure(f, CS_PLOT_PNG, k - study, spec, x, r, n, why, sizeof why)
                  : cs_study_write_page(f, spec, x, r, n, why, sizeof why);
         char end_why[512];
-        if (cs_out_end(&out, f, end_why, sizeof end_why) != 0 && rc == 0) {
+        if (cs_out_end(out, f, end_why, sizeof end_why) != 0 && rc == 0) {
             snprintf(why, sizeof why, "%s", end_why);
             rc = -1;
         }
     }
     cs_plot_release(); /* after the last plot */
-    if (rc == 0 && spec->netcdf) {
+    if (rc == 0 && spec->netcdf && !partial) {
         char path[1200], nc_why[200];
-        rc = cs_out_begin_path(&out, "runs.nc", path, sizeof path, why, sizeof why);
+        rc = cs_out_begin_path(out, "runs.nc", path, sizeof path, why, sizeof why);
         if (rc == 0 && (rc = cs_sweep_write_netcdf(path, spec, x, r, n, nc_why, sizeof nc_why)) != 0)
-            snprintf(why, sizeof why, "%.280s/runs.nc: %s", dir, nc_why);
-        if (rc == 0) rc = cs_out_end_path(&out, why, sizeof why);
+            snprintf(why, sizeof why, "%.280s/runs.nc: %s", out->dir, nc_why);
+        if (rc == 0) rc = cs_out_end_path(out, why, sizeof why);
     }
-    if (rc == 0) rc = cs_out_commit(&out, why, sizeof why);
+    if (rc == 0) rc = cs_out_commit(out, why, sizeof why);
     if (rc != 0) {
-        cs_out_abort(&out);
+        cs_out_abort(out);
         fprintf(stderr, "cablesim sweep: nothing written: %s\n", why);
     }
     return rc;
+}
+
+/* ---- stopping on a signal ---- */
+
+static volatile sig_atomic_t stop_signal = 0;
+
+/* The first SIGINT or SIGTERM asks the sweep to stop starting runs; a second one does what it does by
+ * default. */
+static void on_signal(int sig) {
+    if (stop_signal) {
+        signal(sig, SIG_DFL);
+        raise(sig); /* delivered when this handler returns */
+        return;
+    }
+    stop_signal = sig;
+}
+
+static void catch_signals(int on) {
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on ? on_signal : SIG_DFL;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
 }
 
 /* Read the spec with the command line's changes; errors printed by rank 0. */
@@ -276,11 +502,18 @@ static int thread_count(int asked, int local_ranks) {
 #endif
 }
 
-/* The file argument of `cablesim check FILE [--set PATH=VALUE]...`. */
+/* The file argument of `cablesim check FILE [--set PATH=VALUE]...`: the first word that is not an option or
+ * an option's value. */
 static const char *check_file(int argc, char **argv) {
+    static const char *const valued[] = {"-o",    "--out",   "--threads", "--runs",  "--seed",
+                                         "--set", "--t-end", "--dt",      "--resume"};
     for (int i = 2; i < argc; i++) {
         if (argv[i][0] != '-') return argv[i];
-        if (strchr(argv[i], '=') == NULL && i + 1 < argc) i++; /* an option's value */
+        for (size_t k = 0; k < sizeof valued / sizeof valued[0]; k++)
+            if (strcmp(argv[i], valued[k]) == 0) {
+                i++; /* its value */
+                break;
+            }
     }
     return NULL;
 }
@@ -314,8 +547,60 @@ int cs_sweep_check_command(int argc, char **argv) {
     return rc;
 }
 
+/* The sweep's output folder: DIR, or results/<the spec's name>. */
+static void out_dir_of(const sweep_opts *o, char *dir, size_t size) {
+    if (o->out_dir) {
+        snprintf(dir, size, "%s", o->out_dir);
+    } else {
+        const char *base = strrchr(o->spec, '/');
+        base = base ? base + 1 : o->spec;
+        snprintf(dir, size, "results/%.*s", (int)strcspn(base, "."), base);
+    }
+}
+
+/* --resume: the runs of DIR/runs.csv into all (the others left pending), after checking that the study is
+ * the one DIR holds. Returns how many were read, or -1 (why printed). */
+static long read_done(const char *dir, const cs_sweep_spec *spec, const resumed *was, const double *x,
+                      cs_sweep_result *all, long n) {
+    char hash[17], path[1200], why[600];
+    if (strcmp(was->version, CS_VERSION_STRING) != 0) {
+        fprintf(stderr,
+                "cablesim sweep: %s was written by cablesim %s, this is %s: its runs may differ from this "
+                "one's; run the study again without --resume\n",
+                dir, was->version, CS_VERSION_STRING);
+        return -1;
+    }
+    snprintf(hash, sizeof hash, "%016llx", spec->origin.model_hash);
+    if (!spec->origin.has_model_hash || strcmp(hash, was->model_hash) != 0 ||
+        strcmp((snprintf(hash, sizeof hash, "%016llx", spec->origin.inputs_hash), hash), was->inputs_hash) !=
+            0) {
+        fprintf(
+            stderr,
+            "cablesim sweep: %s: the study has changed since it was stopped (its model, %s, or its values): "
+            "run it again without --resume\n",
+            dir, spec->model);
+        return -1;
+    }
+    snprintf(path, sizeof path, "%s/runs.csv", dir);
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        fprintf(stderr, "cablesim sweep: %s: %s\n", path, strerror(errno));
+        return -1;
+    }
+    long got = cs_sweep_read_runs(f, path, spec, x, all, n, why, sizeof why);
+    fclose(f);
+    if (got < 0) fprintf(stderr, "cablesim sweep: %s\n", why);
+    return got;
+}
+
+static const char *signal_name(int sig) {
+    return sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "a signal";
+}
+
 int cs_sweep_command(int argc, char **argv) {
     int rank = 0, size = 1, local_ranks = 1;
+    char command[8192];
+    cs_cli_command_line(argc, argv, command, sizeof command); /* as typed: getopt_long reorders argv */
 #ifdef CS_MPI
     int provided;
     MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
@@ -340,7 +625,22 @@ int cs_sweep_command(int argc, char **argv) {
 #endif
     sweep_opts o;
     memset(&o, 0, sizeof o);
+    static resumed was;
+    char as_given[PATH_MAX] = "", cwd[PATH_MAX] = "";
     int rc = parse_opts(argc, argv, &o, rank);
+    if (!getcwd(cwd, sizeof cwd)) cwd[0] = '\0';
+    if (rc == 0 && !o.resume) snprintf(as_given, sizeof as_given, "%s", o.spec);
+    if (rc == 0 && o.resume) {
+        char why[1400];
+        if (read_resume(o.resume, &o, &was, why, sizeof why) != 0) {
+            if (rank == 0) fprintf(stderr, "cablesim sweep: --resume: %s\n", why);
+            rc = EXIT_BAD;
+        } else if (strcmp(was.cwd, cwd) == 0) {
+            snprintf(as_given, sizeof as_given, "%s", was.spec_as_given);
+        } else {
+            snprintf(as_given, sizeof as_given, "%s", o.spec);
+        }
+    }
     cs_sweep_spec *spec = NULL;
     double *x = NULL;
     long n = 0;
@@ -353,11 +653,66 @@ int cs_sweep_command(int argc, char **argv) {
         if (rank == 0) print_errors(spec);
         rc = EXIT_BAD;
     }
+    /* rank 0: the output folder, checked before any run; --resume: the runs done */
+    char dir[1024] = "", *record = NULL;
+    cs_outdir out;
+    int out_open = 0;
+    cs_sweep_result *all = NULL;
+    long done = 0;
+    if (rc == 0 && rank == 0) {
+        char why[600];
+        out_dir_of(&o, dir, sizeof dir);
+        spec->origin.command = command;
+        spec->origin.dir = dir;
+        spec->origin.resume = record = resume_record(&o, as_given, cwd);
+        spec->origin.has_model_hash = cs_sweep_model_hash(spec, &spec->origin.model_hash) == 0;
+        spec->origin.inputs_hash = cs_sweep_inputs_hash(spec, x, n);
+        all = calloc((size_t)(n > 0 ? n : 1), sizeof *all);
+        for (long i = 0; all && i < n; i++)
+            all[i].pending = 1;
+        if (!all || !record) {
+            fprintf(stderr, "cablesim sweep: out of memory for %ld results\n", n);
+            rc = EXIT_RUN;
+        } else if (o.resume && !was.partial) {
+            printf("sweep: %s holds the whole study (%ld runs): nothing to run\n", dir, n);
+            rc = -1;
+        } else if (o.resume && (done = read_done(dir, spec, &was, x, all, n)) < 0) {
+            rc = EXIT_BAD;
+        } else if (cs_out_open(&out, dir, why, sizeof why) != 0) {
+            fprintf(stderr, "cablesim sweep: nothing run: %s\n", why);
+            rc = EXIT_RUN;
+        } else {
+            out_open = 1;
+        }
+    }
+    /* the runs to do, the same list on every rank */
+    char *todo_mask = NULL;
+    long *todo = NULL, todo_n = 0;
 #ifdef CS_MPI
-    MPI_Bcast(&rc, 1, MPI_INT, 0, MPI_COMM_WORLD); /* rank 0 checked the model */
+    MPI_Bcast(&rc, 1, MPI_INT, 0, MPI_COMM_WORLD); /* rank 0 checked the model and the folder */
+    MPI_Bcast(&n, 1, MPI_LONG, 0, MPI_COMM_WORLD);
 #endif
+    if (rc == 0) {
+        todo_mask = malloc((size_t)(n > 0 ? n : 1));
+        todo = malloc((size_t)(n > 0 ? n : 1) * sizeof *todo);
+        if (!todo_mask || !todo) {
+            fprintf(stderr, "cablesim sweep: out of memory for %ld runs\n", n);
+#ifdef CS_MPI
+            MPI_Abort(MPI_COMM_WORLD, EXIT_RUN);
+#endif
+            rc = EXIT_RUN;
+        }
+        for (long i = 0; rc == 0 && rank == 0 && i < n; i++)
+            todo_mask[i] = (char)all[i].pending;
+#ifdef CS_MPI
+        if (rc == 0) MPI_Bcast(todo_mask, (int)n, MPI_CHAR, 0, MPI_COMM_WORLD);
+#endif
+        for (long i = 0; rc == 0 && i < n; i++)
+            if (todo_mask[i]) todo[todo_n++] = i;
+    }
     if (rc != 0) {
-        free(x);
+        if (out_open) cs_out_abort(&out);
+        free(x), free(all), free(todo), free(todo_mask), free(record);
         cs_sweep_spec_free(spec);
 #ifdef CS_MPI
         MPI_Finalize();
@@ -365,20 +720,26 @@ int cs_sweep_command(int argc, char **argv) {
         return rc < 0 ? 0 : rc;
     }
     int threads = thread_count(o.threads, local_ranks);
-    long local_n = n > rank ? (n - rank + size - 1) / size : 0;
+    long local_n = todo_n > rank ? (todo_n - rank + size - 1) / size : 0;
     cs_sweep_result *mine = calloc((size_t)(local_n > 0 ? local_n : 1), sizeof *mine);
-    cs_sweep_result *all = rank == 0 ? calloc((size_t)(n > 0 ? n : 1), sizeof *all) : NULL;
-    if (!mine || (rank == 0 && !all)) {
-        fprintf(stderr, "cablesim sweep: out of memory for %ld results\n", n);
+    if (!mine) {
+        fprintf(stderr, "cablesim sweep: out of memory for %ld results\n", todo_n);
 #ifdef CS_MPI
         MPI_Abort(MPI_COMM_WORLD, EXIT_RUN);
 #endif
         return EXIT_RUN;
     }
+    for (long m = 0; m < local_n; m++)
+        mine[m].pending = 1;
     progress p = {rank == 0 && !o.quiet, isatty(STDERR_FILENO), size, 0, local_n, now(), now()};
     if (rank == 0 && !o.quiet)
-        fprintf(stderr, "sweep: %ld runs of %s on %d rank%s x %d thread%s\n", n, spec->model, size,
-                size == 1 ? "" : "s", threads, threads == 1 ? "" : "s");
+        fprintf(stderr, "sweep: %ld runs of %s on %d rank%s x %d thread%s%s\n", todo_n, spec->model, size,
+                size == 1 ? "" : "s", threads, threads == 1 ? "" : "s",
+                o.resume ? " (the rest of a stopped study)" : "");
+    const char *stop_after_text = getenv("CABLESIM_SWEEP_STOP_AFTER");
+    long stop_after = stop_after_text ? strtol(stop_after_text, NULL, 10) : 0;
+    stop_signal = 0;
+    catch_signals(1);
     double start = now();
     int k = spec->var_count;
 #ifdef _OPENMP
@@ -391,7 +752,8 @@ int cs_sweep_command(int argc, char **argv) {
 #pragma omp for schedule(dynamic, 1)
 #endif
         for (long m = 0; m < local_n; m++) {
-            long i = rank + m * size;
+            if (stop_signal) continue; /* stopped: start no other run */
+            long i = todo[rank + m * size];
             cs_sweep_run(spec, &x[i * k], loader, &mine[m]);
 #ifdef _OPENMP
 #pragma omp critical(cs_sweep_progress)
@@ -399,19 +761,26 @@ int cs_sweep_command(int argc, char **argv) {
             {
                 p.done++;
                 progress_show(&p, 0);
+                if (stop_after > 0 && p.done == stop_after) raise(SIGINT); /* CABLESIM_SWEEP_STOP_AFTER */
             }
         }
         cs_loader_free(loader);
     }
-    progress_show(&p, 1);
+    catch_signals(0);
+    int stopped = stop_signal;
+    if (!stopped)
+        progress_show(&p, 1);
+    else if (p.on && p.tty)
+        fputc('\n', stderr);
 #ifdef CS_MPI
+    MPI_Allreduce(MPI_IN_PLACE, &stopped, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
     int *counts = NULL, *displs = NULL;
     int bytes = (int)((size_t)local_n * sizeof *mine);
     cs_sweep_result *gathered = NULL;
     if (rank == 0) {
         counts = calloc((size_t)size, sizeof *counts);
         displs = calloc((size_t)size, sizeof *displs);
-        gathered = calloc((size_t)(n > 0 ? n : 1), sizeof *gathered);
+        gathered = calloc((size_t)(todo_n > 0 ? todo_n : 1), sizeof *gathered);
         if (!counts || !displs || !gathered) MPI_Abort(MPI_COMM_WORLD, EXIT_RUN);
     }
     MPI_Gather(&bytes, 1, MPI_INT, counts, 1, MPI_INT, 0, MPI_COMM_WORLD);
@@ -423,34 +792,37 @@ int cs_sweep_command(int argc, char **argv) {
         for (int r = 0; r < size; r++) {
             const cs_sweep_result *from = (const cs_sweep_result *)((const char *)gathered + displs[r]);
             for (long m = 0; m < (long)((size_t)counts[r] / sizeof *mine); m++)
-                all[r + m * size] = from[m];
+                all[todo[r + m * size]] = from[m];
         }
     }
     free(counts), free(displs), free(gathered);
 #else
     for (long m = 0; m < local_n; m++)
-        all[m] = mine[m];
+        all[todo[m]] = mine[m];
 #endif
     double wall = now() - start;
     if (rank == 0) {
-        char dir[1024];
-        if (o.out_dir) {
-            snprintf(dir, sizeof dir, "%s", o.out_dir);
-        } else {
-            const char *base = strrchr(o.spec, '/');
-            base = base ? base + 1 : o.spec;
-            snprintf(dir, sizeof dir, "results/%.*s", (int)strcspn(base, "."), base);
+        long bad = 0, pending = 0;
+        for (long i = 0; i < n; i++) {
+            pending += all[i].pending;
+            bad += !all[i].pending && all[i].status != CS_RUN_OK;
         }
-        long bad = 0;
-        for (long i = 0; i < n; i++)
-            bad += all[i].status != CS_RUN_OK;
-        if (write_all(dir, spec, x, all, n) != 0) {
+        spec->origin.stopped_by = pending ? signal_name(stopped) : NULL;
+        if (write_all(&out, spec, x, all, n, pending > 0) != 0) {
             rc = EXIT_RUN;
+        } else if (pending) {
+            fprintf(stderr,
+                    "cablesim sweep: stopped by %s: %ld of %ld runs done, written to %s (partial); `cablesim "
+                    "sweep --resume %s` runs the other %ld\n",
+                    signal_name(stopped), n - pending, n, dir, dir, pending);
+            rc = 128 + (stopped ? stopped : SIGINT);
         } else {
             printf("sweep: %ld runs in %.3f s (%.3f runs/s) on %d rank%s x %d thread%s; %ld did not run to "
                    "the end\n",
-                   n, wall, wall > 0 ? (double)n / wall : 0, size, size == 1 ? "" : "s", threads,
+                   todo_n, wall, wall > 0 ? (double)todo_n / wall : 0, size, size == 1 ? "" : "s", threads,
                    threads == 1 ? "" : "s", bad);
+            if (o.resume)
+                printf("sweep: %ld runs read back from %s/runs.csv, %ld run now\n", done, dir, todo_n);
             printf("outputs: %s/{runs.csv,summary.md,summary.json,report.html,plots/study-*.png%s", dir,
                    spec->netcdf ? ",runs.nc" : "");
             for (int k = 0; k < spec->plot_count; k++) {
@@ -460,10 +832,13 @@ int cs_sweep_command(int argc, char **argv) {
             }
             printf("}\n");
         }
+    } else if (stopped) {
+        rc = 128 + stopped;
     }
     free(mine);
     free(all);
     free(x);
+    free(todo), free(todo_mask), free(record);
     cs_sweep_spec_free(spec);
 #ifdef CS_MPI
     MPI_Bcast(&rc, 1, MPI_INT, 0, MPI_COMM_WORLD);

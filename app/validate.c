@@ -27,8 +27,10 @@
 #include <time.h>
 
 #include "cablesim/loader.h"
+#include "cli.h"
 #include "commands.h"
 #include "load/validation.h"
+#include "out/outfile.h"
 #include "study/sweep.h"
 
 #define MPH 0.44704
@@ -974,51 +976,78 @@ static suite *suite_create(void) {
     return NULL;
 }
 
+static const char validate_usage[] =
+    "usage: cablesim validate [-o DIR] [--examples DIR] [--only PARTS] [--report-only]\n"
+    "Runs the validation suite and writes DIR/validation.md and DIR/validation.csv (default DIR:\n"
+    "results/validation): the crash tests beside their measurements (APS1) or as blind predictions (APS3,\n"
+    "APS4), each under every documented reading of its design, the roadside predictions, the bogie tests of\n"
+    "posts in soil, the closed forms, time-step convergence and sensitivity. DIR is checked before anything\n"
+    "runs; the two files appear together at the end.\n"
+    "  -o, --out DIR        the output folder\n"
+    "  --examples DIR       where the crash tests' model files are (default: examples)\n"
+    "  --only PARTS         some of crash,readings,roadside,bogie,verification,convergence,sensitivity\n"
+    "  --report-only        exit 0 even when APS1's or the bogie tests' targets are missed\n"
+    "Exit status: 0 done, 1 it could not run or write, 2 a bad command line, 3 targets missed.\n";
+
 int cs_command_validate(int argc, char **argv) {
+    static const cs_cli cli = {"validate", validate_usage};
+    static const struct option longopts[] = {
+        {"out", required_argument, NULL, 'o'},  {"examples", required_argument, NULL, 'e'},
+        {"only", required_argument, NULL, 'n'}, {"report-only", no_argument, NULL, 'r'},
+        {"help", no_argument, NULL, 'h'},       {NULL, 0, NULL, 0}};
     const char *dir = "results/validation", *examples = NULL, *only = NULL;
-    int report_only = 0;
-    for (int i = 2; i < argc; i++) {
-        if (strcmp(argv[i], "--report-only") == 0) {
+    int report_only = 0, v;
+    optind = 1;
+    while ((v = cs_cli_next(&cli, argc, argv, "ho:", longopts)) != -1) {
+        if (v == 'h') return cs_cli_help(&cli);
+        if (v == 'o')
+            dir = optarg;
+        else if (v == 'e')
+            examples = optarg;
+        else if (v == 'n')
+            only = optarg;
+        else if (v == 'r')
             report_only = 1;
-            continue;
-        }
-        const char **slot = strcmp(argv[i], "-o") == 0           ? &dir
-                            : strcmp(argv[i], "--examples") == 0 ? &examples
-                            : strcmp(argv[i], "--only") == 0     ? &only
-                                                                 : NULL;
-        if (!slot || i + 1 >= argc) {
-            fprintf(stderr, "usage: cablesim validate [-o DIR] [--examples DIR] [--only "
-                            "crash,readings,roadside,bogie,verification,convergence,sensitivity] "
-                            "[--report-only]\n");
-            return 2;
-        }
-        *slot = argv[++i];
+        else
+            return CS_EXIT_USAGE;
+    }
+    if (argc - 1 > optind) return cs_cli_usage_error(&cli, "takes no file ('%s')", argv[1 + optind]);
+    static const char *const parts[] = {"crash",        "readings",    "roadside",   "bogie",
+                                        "verification", "convergence", "sensitivity"};
+    for (const char *p = only; p && *p;) {
+        size_t n = strcspn(p, ","), k = 0;
+        while (k < sizeof parts / sizeof parts[0] && !(strlen(parts[k]) == n && strncmp(p, parts[k], n) == 0))
+            k++;
+        if (k == sizeof parts / sizeof parts[0])
+            return cs_cli_usage_error(
+                &cli,
+                "--only: unknown part '%.*s' (expected some of crash, readings, roadside, "
+                "bogie, verification, convergence, sensitivity)",
+                (int)n, p);
+        p += n + (p[n] == ',');
     }
     suite *s = suite_create();
     if (!s) return 1;
-    char mdp[1024], csvp[1024], mdt[1040], csvt[1040];
-    struct stat st;
-    if (strncmp(dir, "results/", 8) == 0) mkdir("results", 0777); /* the default's parent */
-    if (mkdir(dir, 0777) != 0 && !(stat(dir, &st) == 0 && S_ISDIR(st.st_mode))) {
-        fprintf(stderr, "cablesim validate: cannot create %s\n", dir);
+    char why[1200];
+    cs_outdir out;
+    if (cs_out_open(&out, dir, why, sizeof why) != 0) { /* before anything runs */
+        fprintf(stderr, "cablesim validate: nothing run: %s\n", why);
         suite_free(s);
         return 1;
     }
-    snprintf(mdp, sizeof mdp, "%s/validation.md", dir);
-    snprintf(csvp, sizeof csvp, "%s/validation.csv", dir);
-    snprintf(mdt, sizeof mdt, "%s.tmp", mdp);
-    snprintf(csvt, sizeof csvt, "%s.tmp", csvp);
-    FILE *md = fopen(mdt, "w+"), *csv = fopen(csvt, "w");
+    FILE *md = cs_out_begin(&out, "validation.md", why, sizeof why);
+    FILE *csv = md ? cs_out_begin(&out, "validation.csv", why, sizeof why) : NULL;
     if (!md || !csv) {
-        fprintf(stderr, "cablesim validate: cannot write in %s\n", dir);
-        if (md) fclose(md), remove(mdt);
-        if (csv) fclose(csv), remove(csvt);
+        fprintf(stderr, "cablesim validate: nothing run: %s\n", why);
+        if (md) fclose(md);
+        cs_out_abort(&out);
         suite_free(s);
         return 1;
     }
     /* The examples: --examples, else those installed with the parts library, else ./examples (a source
      * checkout). */
     char installed[1100];
+    struct stat st;
     snprintf(installed, sizeof installed, "%s/examples", cs_loader_data_dir(s->loader));
     s->examples = examples                                           ? examples
                   : stat(installed, &st) == 0 && S_ISDIR(st.st_mode) ? installed
@@ -1044,15 +1073,15 @@ int cs_command_validate(int argc, char **argv) {
     int missed = s->missed;
     suite_free(s);
     fprintf(md, "Run time: %.0f s.\n", difftime(time(NULL), t0));
-    int bad = ferror(md) || ferror(csv);
-    bad |= fclose(md) != 0;
-    bad |= fclose(csv) != 0;
-    if (bad || rename(mdt, mdp) != 0 || rename(csvt, csvp) != 0) {
-        remove(mdt), remove(csvt);
-        fprintf(stderr, "cablesim validate: writing %s failed\n", dir);
+    int bad = cs_out_end_at(&out, 0, md, why, sizeof why) != 0;
+    if (cs_out_end_at(&out, 1, csv, why, sizeof why) != 0) bad = 1;
+    if (bad || cs_out_commit(&out, why, sizeof why) != 0) {
+        cs_out_abort(&out);
+        fprintf(stderr, "cablesim validate: nothing written: %s\n", why);
         return 1;
     }
-    printf("validation written to %s and %s (%.0f s)\n", mdp, csvp, difftime(time(NULL), t0));
+    printf("validation written to %s/validation.md and %s/validation.csv (%.0f s)\n", dir, dir,
+           difftime(time(NULL), t0));
     if (missed)
         printf("cablesim validate: %s: targets missed (APS1's or the bogie tests'; see the report)\n",
                report_only ? "reported only" : "exit status 3");

@@ -277,15 +277,20 @@ void cs_state_post(const cs_model *model, const cs_state *s, int p, cs_post_view
     cs_post_attachment(model, p, ps->tilt, pm->height, out->top);
 }
 
-/* FNV-1a over the bytes of every number that evolves. */
-static void hash_bytes(unsigned long long *h, const void *data, size_t n) {
+unsigned long long cs_fnv1a64(unsigned long long h, const void *data, size_t n) {
     const unsigned char *b = data;
     for (size_t i = 0; i < n; i++)
-        *h = (*h ^ b[i]) * 1099511628211ULL;
+        h = (h ^ b[i]) * 1099511628211ULL;
+    return h;
 }
 
+static void hash_bytes(unsigned long long *h, const void *data, size_t n) {
+    *h = cs_fnv1a64(*h, data, n);
+}
+
+/* FNV-1a over the bytes of every number that evolves. */
 unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
-    unsigned long long h = 1469598103934665603ULL;
+    unsigned long long h = CS_FNV1A64_BASIS;
     hash_bytes(&h, &s->t, sizeof s->t);
     hash_bytes(&h, s->pos, sizeof s->pos);
     hash_bytes(&h, s->vel, sizeof s->vel);

@@ -59,12 +59,63 @@ check "a refused run leaves earlier outputs alone" 'cmp -s "$tmp/before.json" "$
 for k in 1 2; do
     "$cs" run examples/aps1.yaml -o "$tmp/twice$k" --t-end "300 ms" >/dev/null 2>&1
 done
-for f in timeseries.csv events.csv summary.json; do
+for f in timeseries.csv events.csv; do
     check "$f byte-identical on a second run" 'cmp -s "$tmp/twice1/$f" "$tmp/twice2/$f"'
 done
+# summary.json's first line records the command line, whose -o differs
+check "summary.json byte-identical on a second run, but for its command line" \
+    'cmp -s <(tail -n +2 "$tmp/twice1/summary.json") <(tail -n +2 "$tmp/twice2/summary.json") && ! cmp -s "$tmp/twice1/summary.json" "$tmp/twice2/summary.json"'
 check "the twice-run passed a rope or anchor failure" \
     'grep -qE "cable_break|termination_break|anchor_yield|anchor_pullout" "$tmp/twice1/events.csv"'
 "$cs" run tests/bad/zero_spacing.yaml -o "$tmp/never" >/dev/null 2>&1
 check "a bad model writes nothing" '[ $? -eq 2 ] && [ ! -e "$tmp/never" ]'
+
+# One folder, one run: a run without --plots and --report into the folder of a run with them leaves no
+# figures and no report beside its files (the files of names cablesim does not write stay), nor a
+# temporary a killed run left.
+dir="$tmp/one"
+"$cs" run examples/aps3.yaml -o "$dir" --t-end "20 ms" --plots --report >/dev/null 2>&1
+check "a run with --plots and --report writes them" '[ -s "$dir/plots/speed.png" ] && [ -s "$dir/plots/speed.svg" ] && [ -s "$dir/report.html" ]'
+echo notes >"$dir/notes.txt"
+echo mine >"$dir/plots/mine.txt"
+echo partial >"$dir/events.csv.tmp"
+"$cs" run examples/aps3.yaml -o "$dir" --t-end "10 ms" >"$tmp/one.out" 2>&1
+check "the rerun exits 0" '[ $? -eq 0 ] || { cat "$tmp/one.out"; false; }'
+check "the rerun left no figures and no report" '[ -z "$(ls "$dir/plots" | grep -E "\.(png|svg)$")" ] && [ ! -e "$dir/report.html" ]'
+check "the rerun left the files cablesim does not write" '[ "$(cat "$dir/notes.txt")" = notes ] && [ "$(cat "$dir/plots/mine.txt")" = mine ]'
+check "the rerun removed a stale temporary" '[ ! -e "$dir/events.csv.tmp" ]'
+check "the folder holds the rerun's outputs" 'grep -qF "\"overrides\":[\"--t-end 10 ms\"]" "$dir/summary.json" && [ "$(ls "$dir" | tr "\n" " ")" = "events.csv notes.txt plots summary.json timeseries.csv " ]'
+rm "$dir/plots/mine.txt"
+"$cs" run examples/aps3.yaml -o "$dir" --t-end "10 ms" >/dev/null 2>&1
+check "an emptied plots/ goes too" '[ ! -e "$dir/plots" ]'
+
+# Where a result comes from: summary.json's first line holds the version, the command line (shell-quoted),
+# the overrides as given and the model's hash, which the terminal summary gives too; the same numbers give
+# the same hash, another value another.
+json=$(head -1 "$out/summary.json")
+check "summary.json: the version" 'grep -qF "{\"cablesim\":{\"version\":\"$("$cs" --version | cut -d" " -f2)\"," <<<"$json"'
+check "summary.json: the command line, quoted" 'grep -qF "\"command\":\"$cs run examples/aps3.yaml -o $out --t-end '"'"'20 ms'"'"' --set '"'"'scenario.speed=35 mph'"'"'\"" <<<"$json"'
+check "summary.json: the overrides as given" 'grep -qF "\"overrides\":[\"--t-end 20 ms\",\"--set scenario.speed=35 mph\"]" <<<"$json"'
+hash=$(grep -oE "\"model_hash\":\"[0-9a-f]{16}\"" <<<"$json" | cut -d'"' -f4)
+check "summary.json: the model's hash" '[ ${#hash} -eq 16 ]'
+check "the terminal gives the same hash on its second line" '[ "$(sed -n 2p "$tmp/stdout")" = "  model hash           $hash (cablesim $("$cs" --version | cut -d" " -f2))" ]'
+same=$("$cs" run examples/aps3.yaml -o "$tmp/same" --t-end "0.02 s" --set scenario.speed="15.6464 m/s" 2>&1 | sed -n 2p)
+other=$("$cs" run examples/aps3.yaml -o "$tmp/other" --t-end "20 ms" --set scenario.speed="36 mph" 2>&1 | sed -n 2p)
+check "the same numbers, given otherwise: the same hash" 'grep -q " $hash " <<<"$same"'
+check "another speed: another hash" 'grep -qE " [0-9a-f]{16} " <<<"$other" && ! grep -q " $hash " <<<"$other"'
+
+# Outcomes that say what happened: APS3's truck breaks through, so its penetration is not given, only
+# how far it had got (beyond), with its exit speed; the library's PU at 50 mph stops, and its penetration
+# is given. The failure events are listed; the posts' hinges are counted, not listed.
+"$cs" run examples/aps3.yaml -o "$tmp/through" >"$tmp/through.out" 2>&1
+j="$tmp/through/summary.json"
+check "breakthrough: no penetration as such in summary.json" 'grep -q "\"outcome\":\"breakthrough\"" "$j" && grep -q "\"max_dynamic_penetration_m\":null," "$j" && grep -qE "\"penetration_beyond_m\":[0-9]" "$j" && grep -qE "\"exit_speed_mps\":[0-9]" "$j"'
+check "breakthrough: the terminal says beyond" 'grep -qE "^  penetration          beyond [0-9.]+ m \([0-9.]+ ft\): the vehicle got through$" "$tmp/through.out" && ! grep -q "max penetration" "$tmp/through.out"'
+check "breakthrough: the failure events, the breakthrough among them" 'grep -qE "^  failure events       [0-9]+, in order" "$tmp/through.out" && grep -qE "^ +[0-9.]+ s  anchor_pullout +anchor 0$" "$tmp/through.out" && grep -qE "^ +[0-9.]+ s  breakthrough$" "$tmp/through.out"'
+hinges=$(grep -c ",post_hinge," "$tmp/through/events.csv")
+check "breakthrough: the $hinges post hinges counted, not listed" '[ "$hinges" -gt 0 ] && grep -q "^  posts yielding       $hinges plastic hinges at the base" "$tmp/through.out" && ! grep -q " post_hinge " "$tmp/through.out"'
+"$cs" run examples/aps3.yaml -o "$tmp/stops" --set vehicle=PU --set "scenario.speed=50 mph" >"$tmp/stops.out" 2>&1
+j="$tmp/stops/summary.json"
+check "stopped: its penetration given" 'grep -q "\"outcome\":\"stopped\"" "$j" && grep -qE "\"max_dynamic_penetration_m\":[0-9]" "$j" && grep -q "\"penetration_beyond_m\":null," "$j" && grep -qE "^  max penetration      [0-9.]+ m" "$tmp/stops.out"'
 
 finish

@@ -1,7 +1,8 @@
 /* report.html's writer (src/io/out/report_html.c) on a short real run: the markers of a page are filled,
- * the title is HTML-escaped and the data cannot close its <script>, the data has every part the page
- * reads, a page without its data marker is refused, and a long record is subsampled to the budget. The
- * page itself is tested in a browser (report/test/browser.mjs). */
+ * the title is HTML-escaped and the data (a command line with "</script>" in it included) cannot close its
+ * <script>, the data has every part the page reads (provenance and ratings too; a run cut at its time
+ * limit has no penetration, only how far it got), a page without its data marker is refused, and a long
+ * record is subsampled to the budget. The page itself is tested in a browser (report/test/browser.mjs). */
 #define _POSIX_C_SOURCE 200809L
 #include <setjmp.h>
 #include <stdarg.h>
@@ -59,12 +60,14 @@ static int teardown(void **st) {
 
 /* The page written from template into a malloc'ed string; rc the writer's return. */
 static char *page(run *r, const cs_record *rec, const char *template, int *rc, char *why, size_t why_size) {
+    static const char *const overrides[] = {"--set scenario.t_end=40 ms"};
+    cs_run_info info = {"cablesim run 'x</script>.yaml'", overrides, 1, 0x0123456789abcdefULL, {{0}}, 0};
     char *buf = NULL;
     size_t size = 0;
     FILE *f = open_memstream(&buf, &size);
     assert_non_null(f);
     *rc = cs_write_report_html(f, (const unsigned char *)template, strlen(template), &r->in, r->state, rec,
-                               why, why_size);
+                               &info, why, why_size);
     fclose(f);
     char *out = strdup(buf); /* a copy: gcc -O3 otherwise takes buf for a pointer into this frame */
     free(buf);
@@ -125,10 +128,15 @@ static void data_complete(void **st) {
     char *json = page(r, &r->rec, "@CS_DATA@", &rc, why, sizeof why);
     if (rc != 0) fail_msg("%s", why);
     assert_true(json[0] == '{' && json[strlen(json) - 1] == '}');
-    static const char *const keys[] = {"\"summary\":",
+    static const char *const keys[] = {"\"cablesim\":{\"version\":\"" CS_VERSION_STRING "\"",
+                                       "\"overrides\":[\"--set scenario.t_end=40 ms\"]",
+                                       "\"model_hash\":\"0123456789abcdef\"",
+                                       "\"ratings\":[]",
+                                       "\"summary\":",
                                        "\"outcome\":",
                                        "\"max_50ms_decel_g\":",
-                                       "\"max_dynamic_penetration_m\":",
+                                       "\"max_dynamic_penetration_m\":null",
+                                       "\"penetration_beyond_m\":0.",
                                        "\"exit_speed_mps\":",
                                        "\"posts_failed_left\":",
                                        "\"energy_balance_error\":",

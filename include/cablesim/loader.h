@@ -73,6 +73,10 @@ CS_API void cs_loader_reset(cs_loader *loader);
  * once) and the parts library: for another load of the same model with other overrides (a sweep's runs).
  * After a load with problems it is cs_loader_reset. */
 CS_API void cs_loader_reuse(cs_loader *loader);
+/** 64-bit FNV-1a of a loaded model's definitions (barrier, vehicle, scenario: every value as the engine
+ * gets it, in SI), not of its name or file: two loads give the same hash exactly when they give the engine
+ * the same numbers. */
+CS_API unsigned long long cs_model_input_hash(const cs_model_input *in);
 /** Build the engine's model from a loaded input (cs_model_create). On failure the engine's message is
  * recorded at the place in the file, or the override, of the element it names.
  * @return the model (free it with cs_model_free), or NULL. */

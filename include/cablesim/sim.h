@@ -327,6 +327,12 @@ CS_API const char *cs_outcome_name(cs_outcome outcome);
 /** FNV-1a hash of the state's numbers, for determinism tests. */
 CS_API unsigned long long cs_state_hash(const cs_model *model, const cs_state *state);
 
+/** The offset basis of 64-bit FNV-1a, where a hash by cs_fnv1a64 starts. */
+#define CS_FNV1A64_BASIS 1469598103934665603ULL
+/** 64-bit FNV-1a of n bytes, continuing from h (start from CS_FNV1A64_BASIS): the hash of cs_state_hash,
+ * and of the model a run's outputs record (cs_model_input_hash). */
+CS_API unsigned long long cs_fnv1a64(unsigned long long h, const void *data, size_t n);
+
 #ifdef __cplusplus
 }
 #endif

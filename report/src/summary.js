@@ -26,6 +26,19 @@ const OUTCOME = {
   running: { word: 'Did not finish', cls: 'neutral' },
 };
 
+// The penetration in words: what the vehicle reached ("3.89 m (12.8 ft)"), or how far it had got when the
+// run ended with it through or still going ("beyond 5.92 m (19.4 ft)").
+export function penetrationText(s) {
+  if (s.max_dynamic_penetration_m !== null) return pair('length', s.max_dynamic_penetration_m);
+  return s.penetration_beyond_m === null || s.penetration_beyond_m === undefined ? '–' : `beyond ${pair('length', s.penetration_beyond_m)}`;
+}
+
+// The ratings as run, one line each, in the command's words ("ASTM F2656 M40/P4 (the vehicle got through)").
+export function ratingsText(data) {
+  const r = data.ratings || [];
+  return r.length ? r.map((x) => x.text).join('; ') : 'not rated: the vehicle is not a test vehicle of ASTM F2656 or SD-STD-02.01';
+}
+
 export function story(data) {
   const s = data.summary;
   const sc = data.scenario;
@@ -49,13 +62,14 @@ export function story(data) {
   else if (s.outcome === 'override' || s.outcome === 'underride')
     parts.push(`It ${s.outcome === 'override' ? 'rode over' : 'ran under'} the cables and got past the barrier line at t = ${seconds(s.t_end_s)}, still moving at ${pair('speed', s.exit_speed_mps)}.`);
   else if (s.outcome === 'breakthrough')
-    parts.push(`It broke through at t = ${seconds(s.t_end_s)}, still moving at ${pair('speed', s.exit_speed_mps)}, after pushing ${pair('length', s.max_dynamic_penetration_m)} past the cable line.`);
+    parts.push(`It broke through at t = ${seconds(s.t_end_s)}, still moving at ${pair('speed', s.exit_speed_mps)}; its front was ${pair('length', s.penetration_beyond_m)} past the cable line when the simulation ended, and going on.`);
   else if (s.outcome === 'redirected')
     parts.push(
       `The barrier redirected it: it left on the traffic side at t = ${seconds(s.t_end_s)} at ${pair('speed', s.exit_speed_mps)}, ` +
         `${fmt(s.exit_angle_deg, 1)}° away from the barrier line, after deflecting the cables ${pair('length', s.max_barrier_deflection_m)} (working width ${pair('length', s.working_width_m)}).`,
     );
-  else parts.push(`The simulation ended at its time limit, t = ${seconds(s.t_end_s)}, with the vehicle still moving; the furthest it got was ${pair('length', s.max_dynamic_penetration_m)} past the cable line.`);
+  else if (s.outcome === 'did_not_converge') parts.push(`The simulation did not converge: its barrier solves used up their budget at t = ${seconds(s.t_end_s)}, with the vehicle still moving, ${penetrationText(s)} past the cable line.`);
+  else parts.push(`The simulation ended at its time limit, t = ${seconds(s.t_end_s)}, with the vehicle still moving, ${penetrationText(s)} past the cable line.`);
   parts.push(
     `${failed} of ${posts} posts failed (${s.posts_failed_left} on the low-x side of the impact, ${s.posts_failed_right} on the high-x side) and ` +
       `${s.cables_broken === 0 ? 'no cable broke' : `${s.cables_broken} of ${cables} cables broke`}. ` +
@@ -81,7 +95,8 @@ export function cards(data) {
   const o = OUTCOME[s.outcome] || OUTCOME.running;
   const posts = data.barrier.posts.length;
   const cables = data.barrier.cables.length;
-  const [penSI, penUS] = both.length(s.max_dynamic_penetration_m);
+  const final = s.max_dynamic_penetration_m !== null;
+  const [penSI, penUS] = both.length(final ? s.max_dynamic_penetration_m : s.penetration_beyond_m);
   const [exitSI, exitUS] = s.exit_speed_mps !== null ? both.speed(s.exit_speed_mps) : ['–', s.outcome === 'stopped' ? 'the vehicle stopped' : 'not through'];
   const exitNote =
     s.outcome === 'redirected'
@@ -97,7 +112,7 @@ export function cards(data) {
     { class: 'cards' },
     card('Outcome', o.word, s.outcome === 'breakthrough' || s.outcome === 'redirected' ? `at t = ${seconds(s.t_end_s)}` : s.outcome === 'stopped' ? `at t = ${seconds(s.stop_time_s)}` : `t = ${seconds(s.t_end_s)}`, `run of ${seconds(s.t_end_s)} simulated`, o.cls),
     card('Max 50-ms deceleration', `${fmt(s.max_50ms_decel_g, 2)} g`, `at t = ${seconds(s.t_max_50ms_decel_s)}`, 'average over the worst 50 ms'),
-    card('Penetration', penSI, penUS, 'front face past the cable line'),
+    card('Penetration', final ? penSI : `beyond ${penSI}`, final ? penUS : `beyond ${penUS}`, final ? 'front face past the cable line' : s.exit_speed_mps !== null ? 'the vehicle got through' : 'still going at the end'),
     card('Exit speed', exitSI, exitUS, exitNote),
     card('Posts failed', `${s.posts_failed_left + s.posts_failed_right} of ${posts}`, `${s.posts_failed_left} left, ${s.posts_failed_right} right`, `cables broken: ${s.cables_broken} of ${cables}`),
     card('Energy balance', `${(100 * s.energy_balance_error).toFixed(2)} %`, `of ${keSI} (${keUS})`, 'ledger error, largest over the run', Math.abs(s.energy_balance_error) > 0.05 ? 'warn' : ''),
@@ -110,6 +125,8 @@ export function summaryTable(data) {
   const rows = [
     ['Outcome', (OUTCOME[s.outcome] || OUTCOME.running).word, `at t = ${seconds(s.t_end_s)}`],
     ['Model', data.name, data.file],
+    ['Model hash (FNV-1a 64 of its definitions)', data.cablesim.model_hash || '–', null],
+    ['Rating (as run)', ratingsText(data), 'docs/ratings.md'],
     ['Vehicle mass', ...both.mass(data.vehicle.mass)],
     ['Impact speed', ...both.speed(sc.speed)],
     ['Impact angle (90° = head-on)', ...both.angle(sc.angle)],
@@ -117,7 +134,7 @@ export function summaryTable(data) {
     ['Initial kinetic energy', ...both.energy(s.initial_kinetic_energy_j)],
     ['First contact', s.first_contact_time_s === null ? 'none' : seconds(s.first_contact_time_s), null],
     ['Max 50-ms deceleration', `${fmt(s.max_50ms_decel_g, 3)} g`, `at t = ${seconds(s.t_max_50ms_decel_s)}`],
-    ['Max dynamic penetration (front face)', ...both.length(s.max_dynamic_penetration_m)],
+    ['Max dynamic penetration (front face)', ...(s.max_dynamic_penetration_m !== null ? both.length(s.max_dynamic_penetration_m) : both.length(s.penetration_beyond_m).map((x) => `beyond ${x}`))],
     ['Max barrier deflection (cable)', ...both.length(s.max_barrier_deflection_m)],
     ['Working width (vehicle, cables or posts)', ...both.length(s.working_width_m)],
     ['Max cable tension', ...both.force(s.max_cable_tension_n)],

@@ -94,6 +94,16 @@ try {
   check('six summary cards', (await page.locator('.card').count()) === 6);
   const rows = await page.locator('table.timeline tbody tr').count();
   check('the timeline lists the events', rows >= Math.min(2, state.data.events) && rows <= state.data.events + 2, `${rows} rows for ${state.data.events} events`);
+  const meta = await page.textContent('header');
+  check('the header gives the version and the model hash', /cablesim \d+\.\d+\.\d+/.test(meta) && /model hash [0-9a-f]{16}\b/.test(meta), meta);
+  if (!args.report) {
+    check('the header gives the command line and its overrides', /command: .*cablesim.* run /.test(meta) && /overrides: --t-end 55 ms/.test(meta), meta);
+    // a 55-ms run ends at its time limit: no penetration as such, only how far the vehicle got
+    const pen = await page.locator('.card').nth(2).textContent();
+    check('a run still going gives its penetration as "beyond"', /^Penetrationbeyond \d/.test(pen), pen);
+  }
+  const rating = await page.textContent('#rating');
+  check('the rating as run is stated', /^Rating as run: (ASTM F2656|not rated)/.test(rating), rating);
   const table = await page.textContent('table.summary');
   check('the summary table gives SI and US units', /m\/s/.test(table) && /mph/.test(table) && /kip/.test(table) && /ft/.test(table));
 

@@ -58,6 +58,18 @@ typedef struct cs_sweep_plot {
     char format[4]; /* "png" (the default), "svg" or "pdf" */
 } cs_sweep_plot;
 
+/* Where a sweep's outputs come from, as summary.md and summary.json record it: set by the command, not
+ * read from the spec. */
+typedef struct cs_sweep_origin {
+    const char *command;            /* the command line, shell-quoted; NULL: none */
+    const char *dir;                /* the output folder (for `sweep --resume DIR`); NULL: none */
+    const char *resume;             /* how `sweep --resume` remakes the study: a JSON object; NULL: none */
+    int has_model_hash;             /* model_hash is known */
+    unsigned long long model_hash;  /* the base model with the fixed values (cs_model_input_hash) */
+    unsigned long long inputs_hash; /* 64-bit FNV-1a of every run's inputs and the fixed values */
+    const char *stopped_by;         /* a partial sweep: the signal that stopped it ("SIGINT"); NULL */
+} cs_sweep_origin;
+
 typedef struct cs_sweep_spec {
     char *file;  /* the spec file as given */
     char *model; /* the base model file, relative to the spec's folder (or absolute) */
@@ -65,7 +77,7 @@ typedef struct cs_sweep_spec {
     cs_sweep_method method;
     long runs;
     uint64_t seed;
-    char vehicle_class[8]; /* ASTM F2656 class; "" = the class nearest the vehicle's mass */
+    char vehicle_class[8]; /* ASTM F2656 class; "": the class within 5% of the vehicle's mass, if any */
     int netcdf;            /* also write runs.nc (netcdf: true; or --netcdf) */
     int set_count;
     char **sets; /* "PATH=VALUE" applied to every run, in order */
@@ -74,6 +86,7 @@ typedef struct cs_sweep_spec {
     cs_sweep_var *vars;
     int plot_count;
     cs_sweep_plot *plots;
+    cs_sweep_origin origin;
     /* errors "file:line:column: what (expected ...)" */
     int error_count, error_capacity;
     char **errors;

@@ -2,6 +2,7 @@
  * the schema tables check each one's key and shape where it is written, and the values that fit become
  * the nodes the rest of the loader resolves, overrides and converts. */
 #define _XOPEN_SOURCE 700
+#include <errno.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -189,7 +190,10 @@ static int fill(const build *b, cs_node *n, const cs_ynode *y, const cs_field *f
 static int read_file(cs_loader *l, int file) {
     cs_lfile *lf = &l->files[file];
     if (cs_ytree_read(&lf->tree, lf->real, lf->data, lf->size, MAX_DEPTH) != 0) {
-        cs_err_at(l, file, lf->tree.error_line, lf->tree.error_col, "%s", lf->tree.error);
+        if (lf->tree.open_errno) /* no place in a file it could not read */
+            cs_err_at(l, INT_MIN, 0, 0, "%s: %s (expected a readable YAML file)", lf->name, lf->tree.error);
+        else
+            cs_err_at(l, file, lf->tree.error_line, lf->tree.error_col, "%s", lf->tree.error);
         return -1;
     }
     if (lf->tree.count == 0) {
@@ -230,11 +234,13 @@ static int add_file(cs_loader *l, const char *name, const char *real, const char
 int cs_file_load(cs_loader *l, const char *path, const cs_node *from) {
     char real[PATH_MAX];
     if (!realpath(path, real)) {
+        int e = errno;
         if (from)
-            cs_err_node(l, from, 0, "cannot open '%s' (expected a readable YAML file)",
-                        from->kind == CS_Y_SCALAR ? from->text : path);
+            cs_err_node(l, from, 0, "cannot open '%s': %s (expected a readable YAML file)",
+                        from->kind == CS_Y_SCALAR ? from->text : path, strerror(e));
         else
-            cs_err_at(l, INT_MIN, 0, 0, "%s: cannot open the file (expected a readable YAML file)", path);
+            cs_err_at(l, INT_MIN, 0, 0, "%s: cannot open the file: %s (expected a readable YAML file)", path,
+                      strerror(e));
         return -1;
     }
     for (int i = 0; i < l->file_count; i++) {

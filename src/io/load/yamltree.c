@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <yaml.h>
 
 enum { MAX_DEPTH = 64 };
@@ -203,9 +204,15 @@ int cs_ytree_read(cs_ytree *tree, const char *filename, const char *data, size_t
     memset(tree, 0, sizeof *tree);
     reader r = {.tree = tree, .max_depth = max_depth < MAX_DEPTH ? max_depth : MAX_DEPTH};
     FILE *f = data ? NULL : fopen(filename, "rb");
+    struct stat st;
+    if (f && fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) { /* fopen opens a folder for reading */
+        fclose(f);
+        f = NULL;
+        errno = EISDIR;
+    }
     if (!data && !f) {
         tree->open_errno = errno;
-        snprintf(tree->error, sizeof tree->error, "cannot open the file");
+        snprintf(tree->error, sizeof tree->error, "cannot open the file: %s", strerror(errno));
         return -1;
     }
     yaml_parser_t parser;

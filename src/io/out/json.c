@@ -123,19 +123,104 @@ static void inputs(cs_wout *w, const cs_model_input *in) {
     fprintf(f, "}");
 }
 
+/* "cablesim": the version, the command line, its overrides and the model's hash. */
+static void provenance(cs_wout *w, int *first, const cs_run_info *info) {
+    FILE *f = w->f;
+    int pf = 1;
+    jkey(w, first, "cablesim");
+    fputc('{', f);
+    jkey(w, &pf, "version");
+    cs_json_string(f, CS_VERSION_STRING);
+    jkey(w, &pf, "command");
+    if (info && info->command)
+        cs_json_string(f, info->command);
+    else
+        fputs("null", f);
+    jkey(w, &pf, "overrides");
+    fputc('[', f);
+    for (int i = 0; info && i < info->override_count; i++) {
+        if (i) fputc(',', f);
+        cs_json_string(f, info->overrides[i]);
+    }
+    fputc(']', f);
+    jkey(w, &pf, "model_hash");
+    if (info) {
+        char hash[17];
+        cs_model_hash_text(info->model_hash, hash);
+        cs_json_string(f, hash);
+    } else {
+        fputs("null", f);
+    }
+    fputs("}\n", f);
+}
+
+/* "ratings": each as run, in cs_rating_text's words with its parts. */
+static void ratings(cs_wout *w, int *first, const cs_run_info *info) {
+    FILE *f = w->f;
+    jkey(w, first, "ratings");
+    fputc('[', f);
+    for (int i = 0; info && i < info->rating_count; i++) {
+        const cs_rating *r = &info->ratings[i];
+        char text[256];
+        int rf = 1;
+        cs_rating_text(r, text, sizeof text);
+        fputs(i ? ",{" : "{", f);
+        jkey(w, &rf, "standard");
+        cs_json_string(f, cs_standard_name(r->standard));
+        jkey(w, &rf, "label");
+        cs_json_string(f, r->label);
+        jkey(w, &rf, "text");
+        cs_json_string(f, text);
+        jkey(w, &rf, "rated");
+        fputs(r->rated ? "true" : "false", f);
+        jkey(w, &rf, "vehicle_class");
+        cs_json_string(f, r->vehicle_class);
+        jkey(w, &rf, "speed_mph");
+        fprintf(f, "%d", r->speed_mph);
+        jkey(w, &rf, "penetration_m");
+        if (r->tested && !r->through)
+            cs_w_num(w, r->penetration, "a rating's penetration");
+        else
+            fputs("null", f);
+        jkey(w, &rf, "measured");
+        cs_json_string(f, r->reference ? r->reference : "");
+        fputc('}', f);
+    }
+    fputc(']', f);
+}
+
 int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_model *model, const cs_state *state,
                           char *why, size_t why_size) {
+    cs_run_info info;
+    cs_run_info_of(&info, in, state);
+    return cs_write_summary_json_with(f, in, model, state, &info, why, why_size);
+}
+
+int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model *model,
+                               const cs_state *state, const cs_run_info *info, char *why, size_t why_size) {
     cs_summary s;
     cs_state_summary(state, &s);
     cs_wout w = {f, 0, ""};
     int first = 1;
     fprintf(f, "{");
+    provenance(&w, &first, info);
     jkey(&w, &first, "outcome");
     cs_json_string(f, cs_outcome_name(s.outcome));
     jnum(&w, &first, "t_end_s", s.t_end_s);
     jnum(&w, &first, "max_50ms_decel_g", s.max_50ms_decel_g);
     jnum(&w, &first, "t_max_50ms_decel_s", s.t_max_50ms_decel_s);
-    jnum(&w, &first, "max_dynamic_penetration_m", s.max_dynamic_penetration_m);
+    /* a penetration only where the vehicle stopped short of it; else how far it had got, "beyond" */
+    int final = cs_penetration_is_final(s.outcome);
+    jkey(&w, &first, "max_dynamic_penetration_m");
+    if (final)
+        cs_w_num(&w, s.max_dynamic_penetration_m, "max_dynamic_penetration_m");
+    else
+        fputs("null", f);
+    jkey(&w, &first, "penetration_beyond_m");
+    if (final)
+        fputs("null", f);
+    else
+        cs_w_num(&w, s.max_dynamic_penetration_m, "penetration_beyond_m");
     jnum(&w, &first, "max_barrier_deflection_m", s.max_barrier_deflection_m);
     jnum(&w, &first, "working_width_m", s.working_width_m);
     jkey(&w, &first, "stopped");
@@ -200,6 +285,8 @@ int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_model *mod
     jkey(&w, &first, "solver_warnings");
     fprintf(f, "%d", s.solver_warnings);
     jnum(&w, &first, "max_solver_residual", s.max_solver_residual);
+    fputc('\n', f);
+    ratings(&w, &first, info);
     jkey(&w, &first, "events");
     fprintf(f, "[");
     for (int i = 0; i < cs_state_event_count(state); i++) {

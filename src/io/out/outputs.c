@@ -25,39 +25,44 @@ static int write_plots(cs_outdir *out, const cs_model_input *in, const cs_state 
     return rc;
 }
 
-int cs_write_outputs_with(const char *dir, const cs_model_input *in, const cs_model *model,
-                          const cs_state *state, const cs_record *rec, int flags, cs_more_outputs more,
-                          void *user, char *why, size_t why_size) {
-    cs_outdir out;
+int cs_write_run_files(cs_outdir *out, const cs_model_input *in, const cs_model *model, const cs_state *state,
+                       const cs_record *rec, const cs_run_info *info, int flags, cs_more_outputs more,
+                       void *user, char *why, size_t why_size) {
+    static const char *const owned[] = {"timeseries.csv", "events.csv",  "summary.json",
+                                        "report.html",    "plots/*.png", "plots/*.svg"};
     if (rec->failed) {
         snprintf(why, why_size, "the record lost frames: memory ran short while recording");
         return -1;
     }
-    int rc = cs_out_open(&out, dir, why, why_size);
+    cs_out_own(out, owned, (int)(sizeof owned / sizeof owned[0]));
     static const char *const names[] = {"timeseries.csv", "events.csv", "summary.json"};
+    int rc = 0;
     for (int k = 0; rc == 0 && k < 3; k++) {
-        FILE *f = cs_out_begin(&out, names[k], why, why_size);
-        if (!f) {
-            rc = -1;
-            break;
-        }
+        FILE *f = cs_out_begin(out, names[k], why, why_size);
+        if (!f) return -1;
         rc = k == 0   ? cs_write_timeseries(f, rec, why, why_size)
              : k == 1 ? cs_write_events(f, state, why, why_size)
-                      : cs_write_summary_json(f, in, model, state, why, why_size);
+                      : cs_write_summary_json_with(f, in, model, state, info, why, why_size);
         char end_why[512];
-        if (cs_out_end(&out, f, end_why, sizeof end_why) != 0 && rc == 0) {
+        if (cs_out_end(out, f, end_why, sizeof end_why) != 0 && rc == 0) {
             snprintf(why, why_size, "%s", end_why);
             rc = -1;
         }
     }
-    if (rc == 0 && (flags & CS_OUTPUT_PLOTS)) rc = write_plots(&out, in, state, rec, why, why_size);
-    if (rc == 0 && more) rc = more(&out, user, why, why_size);
-    if (rc == 0) rc = cs_out_commit(&out, why, why_size);
-    if (rc != 0) cs_out_abort(&out);
+    if (rc == 0 && (flags & CS_OUTPUT_PLOTS)) rc = write_plots(out, in, state, rec, why, why_size);
+    if (rc == 0 && more) rc = more(out, user, why, why_size);
     return rc;
 }
 
 int cs_write_outputs(const char *dir, const cs_model_input *in, const cs_model *model, const cs_state *state,
                      const cs_record *rec, int flags, char *why, size_t why_size) {
-    return cs_write_outputs_with(dir, in, model, state, rec, flags, NULL, NULL, why, why_size);
+    cs_outdir out;
+    cs_run_info info;
+    cs_run_info_of(&info, in, state);
+    int rc = cs_out_open(&out, dir, why, why_size);
+    if (rc == 0)
+        rc = cs_write_run_files(&out, in, model, state, rec, &info, flags, NULL, NULL, why, why_size);
+    if (rc == 0) rc = cs_out_commit(&out, why, why_size);
+    if (rc != 0) cs_out_abort(&out);
+    return rc;
 }

@@ -5,7 +5,59 @@
 
 static const double MPH = 0.44704, FT = 0.3048, KIP = 4448.2216152605;
 
+/* Events that are the barrier or the vehicle giving way, listed one by one; the posts' yielding (a hinge
+ * at the base, a footing turning in the soil) is counted instead. */
+static int yielding(cs_event_type t) {
+    return t == CS_EVENT_POST_HINGE || t == CS_EVENT_FOOTING_ROTATION;
+}
+
+static void events(FILE *f, const cs_state *state) {
+    enum { LISTED = 30 };
+    int n = cs_state_event_count(state), failures = 0, hinges = 0, footings = 0;
+    const cs_event *first_yield = NULL;
+    for (int i = 0; i < n; i++) {
+        const cs_event *e = cs_state_event(state, i);
+        if (!yielding(e->type)) {
+            failures++;
+            continue;
+        }
+        hinges += e->type == CS_EVENT_POST_HINGE;
+        footings += e->type == CS_EVENT_FOOTING_ROTATION;
+        if (!first_yield) first_yield = e;
+    }
+    fprintf(f, "  failure events       %d, in order (every event of the run: events.csv)\n", failures);
+    for (int i = 0, listed = 0; i < n; i++) {
+        const cs_event *e = cs_state_event(state, i);
+        if (yielding(e->type)) continue;
+        if (listed++ == LISTED) {
+            fprintf(f, "    ... %d more in events.csv\n", failures - LISTED);
+            break;
+        }
+        if (e->element_kind == CS_ELEMENT_VEHICLE)
+            fprintf(f, "    %8.4f s  %s\n", e->t, cs_event_type_name(e->type));
+        else
+            fprintf(f, "    %8.4f s  %-19s %s %d\n", e->t, cs_event_type_name(e->type),
+                    cs_element_kind_name(e->element_kind), e->element);
+    }
+    if (first_yield)
+        fprintf(
+            f,
+            "  posts yielding       %d plastic hinge%s at the base, %d footing%s turning in the soil (the "
+            "first at %.4f s, post %d)\n",
+            hinges, hinges == 1 ? "" : "s", footings, footings == 1 ? "" : "s", first_yield->t,
+            first_yield->element);
+    else
+        fprintf(f, "  posts yielding       none\n");
+}
+
 void cs_write_summary_text(FILE *f, const cs_model_input *in, const cs_model *model, const cs_state *state) {
+    cs_run_info info;
+    cs_run_info_of(&info, in, state);
+    cs_write_summary_text_with(f, in, model, state, &info);
+}
+
+void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_model *model,
+                                const cs_state *state, const cs_run_info *info) {
     cs_summary s;
     cs_state_summary(state, &s);
     const cs_scenario_def *sc = &in->scenario;
@@ -30,13 +82,23 @@ void cs_write_summary_text(FILE *f, const cs_model_input *in, const cs_model *mo
                 s.exit_speed_mps, s.exit_speed_mps / MPH, s.exit_speed_mps * 3.6, s.exit_angle_deg);
     else
         fprintf(f, "the time limit was reached at t = %.3f s\n", s.t_end_s);
+    if (info) {
+        char hash[17];
+        cs_model_hash_text(info->model_hash, hash);
+        fprintf(f, "  model hash           %s (cablesim %s)\n", hash, CS_VERSION_STRING);
+    }
     fprintf(f,
             "  impact               %.2f m/s (%.1f mph), %.1f deg, x = %.2f m (%.2f ft), %.0f kg (%.0f lb)\n",
             sc->speed, sc->speed / MPH, sc->angle * 180 / 3.14159265358979323846, sc->impact_x,
             sc->impact_x / FT, in->vehicle.mass, in->vehicle.mass / 0.45359237);
     fprintf(f, "  max 50-ms deceleration %.3f g at t = %.3f s\n", s.max_50ms_decel_g, s.t_max_50ms_decel_s);
-    fprintf(f, "  max penetration      %.3f m (%.2f ft)\n", s.max_dynamic_penetration_m,
-            s.max_dynamic_penetration_m / FT);
+    double pen = s.max_dynamic_penetration_m;
+    if (cs_penetration_is_final(s.outcome))
+        fprintf(f, "  max penetration      %.3f m (%.2f ft)\n", pen, pen / FT);
+    else
+        fprintf(f, "  penetration          beyond %.3f m (%.2f ft): %s\n", pen, pen / FT,
+                cs_outcome_through(s.outcome) ? "the vehicle got through"
+                                              : "the run ended with the vehicle still going");
     fprintf(f, "  max deflection       %.3f m (%.2f ft)\n", s.max_barrier_deflection_m,
             s.max_barrier_deflection_m / FT);
     fprintf(f, "  working width        %.3f m (%.2f ft)\n", s.working_width_m, s.working_width_m / FT);
@@ -67,12 +129,10 @@ void cs_write_summary_text(FILE *f, const cs_model_input *in, const cs_model *mo
     if (s.solver_warnings)
         fprintf(f, "  solver warnings      %d steps (largest residual %.2g)\n", s.solver_warnings,
                 s.max_solver_residual);
-    int n = cs_state_event_count(state);
-    fprintf(f, "  events               %d\n", n);
-    for (int i = 0; i < n && i < 30; i++) {
-        const cs_event *e = cs_state_event(state, i);
-        fprintf(f, "    %8.4f s  %-18s %s %d\n", e->t, cs_event_type_name(e->type),
-                cs_element_kind_name(e->element_kind), e->element);
+    for (int i = 0; info && i < info->rating_count; i++) {
+        char text[256];
+        cs_rating_text(&info->ratings[i], text, sizeof text);
+        fprintf(f, "  %-20s %s\n", i ? "" : "rating (as run)", text);
     }
-    if (n > 30) fprintf(f, "    ... %d more in events.csv\n", n - 30);
+    events(f, state);
 }

@@ -327,8 +327,51 @@ static void write_frames(jw *j, const cs_record *r, int stride) {
     fputc(']', f);
 }
 
+/* "cablesim": {version, command, overrides, model_hash} and "ratings": [{standard, label, text}]. */
+static void write_info(jw *j, int *first, const cs_run_info *info) {
+    FILE *f = j->w.f;
+    int pf = 1;
+    key(j, first, "cablesim");
+    fputc('{', f);
+    kstr(j, &pf, "version", CS_VERSION_STRING);
+    key(j, &pf, "command");
+    if (info && info->command)
+        jstr(f, info->command);
+    else
+        fputs("null", f);
+    key(j, &pf, "overrides");
+    fputc('[', f);
+    for (int i = 0; info && i < info->override_count; i++) {
+        if (i) fputc(',', f);
+        jstr(f, info->overrides[i]);
+    }
+    fputc(']', f);
+    key(j, &pf, "model_hash");
+    if (info) {
+        char hash[17];
+        cs_model_hash_text(info->model_hash, hash);
+        jstr(f, hash);
+    } else {
+        fputs("null", f);
+    }
+    fputc('}', f);
+    key(j, first, "ratings");
+    fputc('[', f);
+    for (int i = 0; info && i < info->rating_count; i++) {
+        char text[256];
+        int rf = 1;
+        cs_rating_text(&info->ratings[i], text, sizeof text);
+        fputs(i ? ",{" : "{", f);
+        kstr(j, &rf, "standard", cs_standard_name(info->ratings[i].standard));
+        kstr(j, &rf, "label", info->ratings[i].label);
+        kstr(j, &rf, "text", text);
+        fputc('}', f);
+    }
+    fputc(']', f);
+}
+
 int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *state, const cs_record *r,
-                         char *why, size_t why_size) {
+                         const cs_run_info *info, char *why, size_t why_size) {
     jw j = {{f, 0, ""}, ""};
     cs_summary s;
     cs_state_summary(state, &s);
@@ -341,13 +384,18 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
     kstr(&j, &first, "name", in->name);
     kstr(&j, &first, "file", in->file);
     kstr(&j, &first, "version", CS_VERSION_STRING);
+    write_info(&j, &first, info);
     key(&j, &first, "summary");
     fputc('{', f);
     kstr(&j, &sf, "outcome", cs_outcome_name(s.outcome));
     knum(&j, &sf, "t_end_s", s.t_end_s);
     knum(&j, &sf, "max_50ms_decel_g", s.max_50ms_decel_g);
     knum(&j, &sf, "t_max_50ms_decel_s", s.t_max_50ms_decel_s);
-    knum(&j, &sf, "max_dynamic_penetration_m", s.max_dynamic_penetration_m);
+    /* the penetration the vehicle stopped at (null if it got through or was still going), else how far
+     * it had got when the run ended: beyond that */
+    int final = cs_penetration_is_final(s.outcome);
+    kopt(&j, &sf, "max_dynamic_penetration_m", final ? s.max_dynamic_penetration_m : NAN);
+    kopt(&j, &sf, "penetration_beyond_m", final ? NAN : s.max_dynamic_penetration_m);
     knum(&j, &sf, "max_barrier_deflection_m", s.max_barrier_deflection_m);
     knum(&j, &sf, "working_width_m", s.working_width_m);
     kopt(&j, &sf, "stop_time_s", s.outcome == CS_STOPPED ? s.stop_time_s : NAN);
@@ -468,7 +516,8 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
 }
 
 int cs_write_report_html(FILE *f, const unsigned char *page, size_t size, const cs_model_input *in,
-                         const cs_state *state, const cs_record *rec, char *why, size_t why_size) {
+                         const cs_state *state, const cs_record *rec, const cs_run_info *info, char *why,
+                         size_t why_size) {
     static const char title[] = "@CS_TITLE@", data[] = "@CS_DATA@";
     const size_t nt = sizeof title - 1, nd = sizeof data - 1;
     size_t i = 0, from = 0;
@@ -485,7 +534,7 @@ int cs_write_report_html(FILE *f, const unsigned char *page, size_t size, const 
             cs_html_text(f, in->name);
             i += nt;
         } else {
-            if (cs_write_report_json(f, in, state, rec, why, why_size) != 0) return -1;
+            if (cs_write_report_json(f, in, state, rec, info, why, why_size) != 0) return -1;
             data_written = 1;
             i += nd;
         }

@@ -12,6 +12,7 @@
 
 #include "cablesim/loader.h"
 #include "record.h"
+#include "writers.h"
 
 /* Defined by the generated source of a build with the report (CMake: report/). */
 extern const unsigned char cs_report_page[];
@@ -27,15 +28,17 @@ enum {
     CS_REPORT_REPLAY_MAX = 1500
 };
 
-/* The run as JSON: summary, scenario, vehicle, barrier, events, series (plots) and frames (replay). Every
+/* The run as JSON: where it came from (version, command line, overrides, model hash: info, which may be
+ * NULL), summary, ratings, scenario, vehicle, barrier, events, series (plots) and frames (replay). Every
  * '<', '>' and '&' is escaped, so the text can stand inside a <script> element. Returns 0, or -1 with
  * why filled (a non-finite number where one must be finite, a write error). */
 int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *state, const cs_record *rec,
-                         char *why, size_t why_size);
+                         const cs_run_info *info, char *why, size_t why_size);
 
 /* The page (size bytes, with the markers above) with its markers filled. Returns 0, or -1 with why
  * filled. */
 int cs_write_report_html(FILE *f, const unsigned char *page, size_t size, const cs_model_input *in,
-                         const cs_state *state, const cs_record *rec, char *why, size_t why_size);
+                         const cs_state *state, const cs_record *rec, const cs_run_info *info, char *why,
+                         size_t why_size);
 
 #endif

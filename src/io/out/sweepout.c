@@ -1,5 +1,6 @@
 /* A sweep's outputs: runs.csv (one row per run), summary.md and summary.json (outcome probabilities
  * with 95% Wilson intervals, response statistics, Spearman rank correlation of inputs and responses). */
+#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -147,7 +148,7 @@ int cs_sweep_columns(cs_sweep_column *cols) {
 
 double cs_sweep_column_number(const cs_sweep_column *c, const cs_sweep_result *r) {
     const cs_summary *m = &r->summary;
-    if (r->status != CS_RUN_OK) return NAN;
+    if (r->status != CS_RUN_OK || r->pending) return NAN;
     if (c->what >= C_EVENTS) return r->event_counts[c->what - C_EVENTS];
     switch (c->what) {
     case C_T:
@@ -197,6 +198,7 @@ double cs_sweep_column_number(const cs_sweep_column *c, const cs_sweep_result *r
 
 const char *cs_sweep_column_text(const cs_sweep_column *c, const cs_sweep_result *r) {
     int ok = r->status == CS_RUN_OK;
+    if (r->pending) return "";
     switch (c->what) {
     case C_OUTCOME:
         return ok                              ? cs_outcome_name(r->summary.outcome)
@@ -230,8 +232,8 @@ static void csv_num(FILE *f, double v) {
     if (isfinite(v)) fprintf(f, "%.10g", v);
 }
 
-int cs_sweep_write_runs(FILE *f, const cs_sweep_spec *s, const double *x, const cs_sweep_result *r, long n,
-                        char *why, size_t why_size) {
+/* runs.csv's first line. */
+static void runs_header(FILE *f, const cs_sweep_spec *s) {
     int k = s->var_count;
     cs_sweep_column cols[CS_SWEEP_MAX_COLUMNS];
     int nc = cs_sweep_columns(cols);
@@ -248,7 +250,16 @@ int cs_sweep_write_runs(FILE *f, const cs_sweep_spec *s, const double *x, const 
         fprintf(f, ",%s%s%s%s", cols[c].name, cols[c].unit ? " [" : "", cols[c].unit ? cols[c].unit : "",
                 cols[c].unit ? "]" : "");
     fputc('\n', f);
+}
+
+int cs_sweep_write_runs(FILE *f, const cs_sweep_spec *s, const double *x, const cs_sweep_result *r, long n,
+                        char *why, size_t why_size) {
+    int k = s->var_count;
+    cs_sweep_column cols[CS_SWEEP_MAX_COLUMNS];
+    int nc = cs_sweep_columns(cols);
+    runs_header(f, s);
     for (long i = 0; i < n; i++) {
+        if (r[i].pending) continue; /* a partial sweep's runs not run yet */
         fprintf(f, "%ld", i);
         for (int j = 0; j < k; j++) {
             char value[256];
@@ -285,9 +296,9 @@ typedef struct stats {
 } stats;
 
 typedef struct summary {
-    const cs_sweep_result *r; /* the runs' results, for the plots' captions */
-    long n, ok, bad_model, failed;
-    tally *t; /* outcomes, penetration, events, ratings */
+    const cs_sweep_result *r;            /* the runs' results, for the plots' captions */
+    long n, done, ok, bad_model, failed; /* done: run (a partial sweep's others are pending) */
+    tally *t;                            /* outcomes, penetration, events, ratings */
     int tally_count;
     stats resp[R_COUNT];
     double *rho; /* [var * R_COUNT + response]; NaN: not numeric or constant */
@@ -331,6 +342,8 @@ static int make_summary(summary *s, const cs_sweep_spec *spec, const double *x, 
     s->rho = malloc((size_t)(k > 0 ? k : 1) * R_COUNT * sizeof *s->rho);
     if (!ok || !a || !b || !s->rho) goto oom;
     for (long i = 0; i < n; i++) {
+        if (r[i].pending) continue;
+        s->done++;
         if (r[i].status == CS_RUN_OK)
             ok[s->ok++] = i;
         else if (r[i].status == CS_RUN_BAD_MODEL)
@@ -452,10 +465,22 @@ static int write_summary(FILE *f, const cs_sweep_spec *spec, const double *x, co
 
 static void summary_md(FILE *f, const cs_sweep_spec *spec, long n, const summary *s) {
     int k = spec->var_count;
+    const cs_sweep_origin *o = &spec->origin;
     fprintf(f, "# Sweep %s\n\n", spec->file);
+    if (s->done < n)
+        fprintf(f,
+                "**Partial**: %ld of %ld runs were run before %s stopped the sweep; the tables below are of "
+                "those. `cablesim sweep --resume %s` runs the rest and completes these files.\n\n",
+                s->done, n, o->stopped_by ? o->stopped_by : "a signal", o->dir ? o->dir : "DIR");
+    fprintf(f, "Written by cablesim %s", CS_VERSION_STRING);
+    if (o->command) fprintf(f, ": `%s`", o->command);
+    if (o->has_model_hash) fprintf(f, "; the base model's hash %016llx", o->model_hash);
+    fprintf(f, ".\n\n");
     fprintf(f, "Model `%s`, method %s, %ld runs", spec->model, method_names[spec->method], n);
     if (spec->method != CS_SWEEP_GRID) fprintf(f, ", seed %llu", (unsigned long long)spec->seed);
-    fprintf(f, ": %ld ran to the end, %ld bad models, %ld failed.\n\n", s->ok, s->bad_model, s->failed);
+    fprintf(f, ": %ld ran to the end, %ld bad models, %ld failed", s->ok, s->bad_model, s->failed);
+    if (s->done < n) fprintf(f, ", %ld not run yet", n - s->done);
+    fprintf(f, ".\n\n");
     for (int i = 0; i < spec->set_count; i++)
         fprintf(f, "%s`%s`%s", i ? ", " : "Fixed for every run: ", spec->sets[i],
                 i + 1 == spec->set_count ? ".\n\n" : "");
@@ -529,7 +554,26 @@ static void jnum(FILE *f, double v) {
 
 static void summary_json(FILE *f, const cs_sweep_spec *spec, long n, const summary *s) {
     int k = spec->var_count;
-    fprintf(f, "{\"spec\":");
+    const cs_sweep_origin *o = &spec->origin;
+    fprintf(f, "{\"cablesim\":{\"version\":");
+    cs_json_string(f, CS_VERSION_STRING);
+    fprintf(f, ",\"command\":");
+    if (o->command)
+        cs_json_string(f, o->command);
+    else
+        fputs("null", f);
+    if (o->has_model_hash)
+        fprintf(f, ",\"model_hash\":\"%016llx\"", o->model_hash);
+    else
+        fprintf(f, ",\"model_hash\":null");
+    fprintf(f, "},\n\"partial\":%s,\"runs_done\":%ld,\"stopped_by\":", s->done < n ? "true" : "false",
+            s->done);
+    if (s->done < n && o->stopped_by)
+        cs_json_string(f, o->stopped_by);
+    else
+        fputs("null", f);
+    fprintf(f, ",\"inputs_hash\":\"%016llx\",\n\"resume\":%s,\n\"spec\":", o->inputs_hash,
+            o->resume ? o->resume : "null");
     cs_json_string(f, spec->file);
     fprintf(f, ",\"model\":");
     cs_json_string(f, spec->model);
@@ -593,4 +637,202 @@ static void summary_json(FILE *f, const cs_sweep_spec *spec, long n, const summa
 int cs_sweep_write_summary_json(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
                                 long n, char *why, size_t why_size) {
     return write_summary(f, spec, x, r, n, why, why_size, summary_json);
+}
+
+/* ---- runs.csv read back (sweep --resume) ---- */
+
+/* The fields of one CSV line (quoted fields may hold commas, quotes and line breaks) into row, each
+ * NUL-terminated in turn. Returns the count, 0 at the end of the file, -1 if a line is too long. */
+static int csv_row(FILE *f, char *row, size_t size, char **field, int max) {
+    int c = getc(f), count = 0;
+    if (c == EOF) return 0;
+    size_t n = 0;
+    field[count++] = row;
+    for (int quoted = 0;; c = getc(f)) {
+        if (c == EOF && !quoted) c = '\n';
+        if (c == EOF) return -1;
+        if (quoted && c == '"') {
+            int d = getc(f);
+            if (d != '"') {
+                quoted = 0;
+                ungetc(d, f);
+                continue;
+            }
+        } else if (!quoted && c == '"') {
+            quoted = 1;
+            continue;
+        } else if (!quoted && (c == ',' || c == '\n')) {
+            if (n + 1 >= size) return -1;
+            row[n++] = '\0';
+            if (c == '\n') return count;
+            if (count == max) return -1;
+            field[count++] = row + n;
+            continue;
+        }
+        if (n + 1 >= size) return -1;
+        row[n++] = (char)c;
+    }
+}
+
+/* A column's text back into a result (cs_sweep_column_number and _text read it out). */
+static int set_column(const cs_sweep_column *c, cs_sweep_result *r, const char *text) {
+    cs_summary *m = &r->summary;
+    if (c->what == C_OUTCOME) {
+        r->status = strcmp(text, "bad_model") == 0 ? CS_RUN_BAD_MODEL
+                    : strcmp(text, "failed") == 0  ? CS_RUN_FAILED
+                                                   : CS_RUN_OK;
+        for (int o = 0; r->status == CS_RUN_OK && o < 64; o++)
+            if (strcmp(cs_outcome_name((cs_outcome)o), text) == 0) {
+                m->outcome = (cs_outcome)o;
+                return 0;
+            }
+        return r->status == CS_RUN_OK ? -1 : 0;
+    }
+    if (c->what == C_RATING || c->what == C_ERROR) {
+        char *to = c->what == C_RATING ? r->rating : r->error;
+        size_t size = c->what == C_RATING ? sizeof r->rating : sizeof r->error;
+        if (strlen(text) >= size) return -1;
+        snprintf(to, size, "%s", text);
+        return 0;
+    }
+    char *end;
+    double v = *text ? strtod(text, &end) : NAN;
+    if (*text && *end) return -1;
+    if (c->what >= C_EVENTS) {
+        r->event_counts[c->what - C_EVENTS] = isnan(v) ? 0 : (int)v;
+        return 0;
+    }
+    switch (c->what) {
+    case C_T:
+        m->t_end_s = v;
+        break;
+    case C_DECEL:
+        m->max_50ms_decel_g = v;
+        break;
+    case C_T_DECEL:
+        m->t_max_50ms_decel_s = v;
+        break;
+    case C_PEN:
+        m->max_dynamic_penetration_m = v;
+        break;
+    case C_DEFL:
+        m->max_barrier_deflection_m = v;
+        break;
+    case C_WIDTH:
+        m->working_width_m = v;
+        break;
+    case C_STOP:
+        m->stop_time_s = isnan(v) ? 0 : v;
+        break;
+    case C_EXIT:
+        m->exit_speed_mps = isnan(v) ? 0 : v;
+        break;
+    case C_EXIT_ANGLE:
+        m->exit_angle_deg = isnan(v) ? 0 : v;
+        break;
+    case C_CONTACT:
+        m->first_contact_time_s = isnan(v) ? -1 : v;
+        break;
+    case C_POSTS_LEFT:
+        m->posts_failed_left = isnan(v) ? 0 : (int)v;
+        break;
+    case C_POSTS_RIGHT:
+        m->posts_failed_right = isnan(v) ? 0 : (int)v;
+        break;
+    case C_CABLES:
+        m->cables_broken = isnan(v) ? 0 : (int)v;
+        break;
+    case C_TENSION:
+        m->max_cable_tension_n = v;
+        break;
+    case C_KE:
+        m->initial_kinetic_energy_j = v;
+        break;
+    case C_ENERGY:
+        m->energy_balance_error = v;
+        break;
+    case C_WARNINGS:
+        m->solver_warnings = isnan(v) ? 0 : (int)v;
+        break;
+    case C_RESIDUAL:
+        m->max_solver_residual = v;
+        break;
+    case C_X:
+    case C_Y:
+    case C_Z:
+        m->final_position_m[c->what - C_X] = v;
+        break;
+    default:
+        return -1;
+    }
+    return 0;
+}
+
+long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *s, const double *x,
+                        cs_sweep_result *r, long n, char *why, size_t why_size) {
+    int k = s->var_count;
+    cs_sweep_column cols[CS_SWEEP_MAX_COLUMNS];
+    int nc = cs_sweep_columns(cols), max = 1 + k + nc;
+    char *want = NULL, *line = NULL, *row = malloc(65536);
+    char **field = malloc((size_t)max * sizeof *field);
+    size_t want_size = 0, line_size = 0;
+    FILE *h = open_memstream(&want, &want_size);
+    long count = -1, last = -1;
+    if (!h || !row || !field) {
+        snprintf(why, why_size, "out of memory");
+        goto done;
+    }
+    runs_header(h, s);
+    fclose(h);
+    h = NULL;
+    if (getline(&line, &line_size, f) < 0 || strcmp(line, want) != 0) {
+        snprintf(why, why_size, "%s:1: not the header this study writes (another study's runs.csv?)", name);
+        goto done;
+    }
+    count = 0;
+    for (long at = 2;; at++) {
+        int got = csv_row(f, row, 65536, field, max);
+        if (got == 0) break;
+        char *end;
+        long i = got == max ? strtol(field[0], &end, 10) : -1;
+        if (got != max || *end || i < 0 || i >= n || i <= last) {
+            snprintf(why, why_size, "%s:%ld: %s", name, at,
+                     got != max ? "not a row of this study (its fields)" : "not the next run of this study");
+            count = -1;
+            break;
+        }
+        last = i;
+        int bad = 0;
+        for (int j = 0; j < k && !bad; j++) {
+            char value[256];
+            cs_sweep_value_text(&s->vars[j], x[i * k + j], value, sizeof value);
+            bad = strcmp(value, field[1 + j]) != 0;
+        }
+        if (bad) {
+            snprintf(why, why_size,
+                     "%s:%ld: run %ld's inputs are not this study's (the spec or its seed changed)", name, at,
+                     i);
+            count = -1;
+            break;
+        }
+        cs_sweep_result *ri = &r[i];
+        memset(ri, 0, sizeof *ri);
+        for (int c = 0; c < nc && !bad; c++)
+            bad = set_column(&cols[c], ri, field[1 + k + c]) != 0;
+        if (bad) {
+            snprintf(why, why_size, "%s:%ld: run %ld: a value this study's runs.csv does not hold", name, at,
+                     i);
+            ri->pending = 1;
+            count = -1;
+            break;
+        }
+        count++;
+    }
+    if (count >= 0 && ferror(f)) {
+        snprintf(why, why_size, "%s: %s", name, strerror(errno));
+        count = -1;
+    }
+done:
+    free(want), free(line), free(row), free(field);
+    return count;
 }

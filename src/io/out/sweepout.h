@@ -45,8 +45,15 @@ void cs_sweep_sort(double *v, long n);
 double cs_sweep_quantile(const double *sorted, long n, double p);
 
 /* runs.csv: one row per run in run order. Returns 0, or -1 with why filled. */
+/* runs.csv: one row per run in run order (a pending run has none). Returns 0, or -1 with why filled. */
 int cs_sweep_write_runs(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r, long n,
                         char *why, size_t why_size);
+/* runs.csv read back, for `sweep --resume`: each row's run into r[run] (its pending flag cleared), after
+ * checking the header and each row's inputs against spec and x (the same study). Rows must come in run
+ * order; runs with no row are left as they are. Returns the rows read, or -1 with why filled
+ * ("NAME:LINE: what"). */
+long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *spec, const double *x,
+                        cs_sweep_result *r, long n, char *why, size_t why_size);
 /* runs.nc: the same table as netCDF (CF-1.8; 64-bit offset, the same bytes for the same results), at path
  * (a temporary: a failure leaves it to be removed). Returns 0, or -1 with why filled (nc_strerror's). */
 int cs_sweep_write_netcdf(const char *path, const cs_sweep_spec *spec, const double *x,

@@ -132,13 +132,15 @@ static void plot_counts(const cs_sweep_spec *spec, int k, const cs_sweep_result 
                         size_t size) {
     const cs_sweep_plot *p = &spec->plots[k];
     cs_sweep_column col;
-    long shown = 0, broke = 0, failed = 0, missing = 0;
+    long shown = 0, broke = 0, failed = 0, missing = 0, pending = 0;
     if (!find_column(p->y, &col)) {
         snprintf(buf, size, "runs.csv has no column %s", p->y);
         return;
     }
     for (long i = 0; i < n; i++) {
-        if (r[i].status != CS_RUN_OK)
+        if (r[i].pending)
+            pending++;
+        else if (r[i].status != CS_RUN_OK)
             failed++;
         else if (!isfinite(cs_sweep_column_number(&col, &r[i])))
             missing++;
@@ -150,7 +152,9 @@ static void plot_counts(const cs_sweep_spec *spec, int k, const cs_sweep_result 
                         "did not run to the end",
                         shown, n, broke, failed);
     if (missing > 0 && used > 0 && (size_t)used < size)
-        snprintf(buf + used, size - (size_t)used, ", %ld with no %s", missing, p->y);
+        used += snprintf(buf + used, size - (size_t)used, ", %ld with no %s", missing, p->y);
+    if (pending > 0 && used > 0 && (size_t)used < size)
+        snprintf(buf + used, size - (size_t)used, ", %ld not run yet (a partial sweep)", pending);
 }
 
 void cs_sweep_plot_caption(const cs_sweep_spec *spec, int k, const cs_sweep_result *r, long n, char *buf,

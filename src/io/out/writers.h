@@ -9,6 +9,31 @@
 #include "cablesim/output.h"
 #include "outfile.h"
 #include "record.h"
+#include "study/rating.h"
+
+/* What a run's outputs record beside its results: where they came from (this cablesim's version,
+ * CS_VERSION_STRING, is written with them), and the run's ratings as run. */
+typedef struct cs_run_info {
+    const char *command;          /* the command line, shell-quoted */
+    const char *const *overrides; /* --set, --dt, --t-end as given, in order: "--set PATH=VALUE" */
+    int override_count;
+    unsigned long long model_hash; /* cs_model_input_hash */
+    cs_rating ratings[2];          /* ASTM F2656, SD-STD-02.01: those whose test vehicle the run's is */
+    int rating_count;
+} cs_run_info;
+
+/* The ratings of a run as run into info (cs_rate_as_run): ASTM F2656 if its vehicle is one of that
+ * standard's, and SD-STD-02.01 too for the 15,000-lb truck. */
+void cs_run_info_rate(cs_run_info *info, const cs_model_input *in, const cs_summary *summary);
+/* The record of a run written through the library (cs_write_outputs): no command line or overrides, its
+ * model hash and its ratings as run. */
+void cs_run_info_of(cs_run_info *info, const cs_model_input *in, const cs_state *state);
+/* The model hash as written: 16 hexadecimal digits. */
+void cs_model_hash_text(unsigned long long hash, char buf[17]);
+/* Whether a run's max dynamic penetration is what the vehicle reached (it stopped, was redirected or never
+ * touched the barrier), rather than where the run ended with the vehicle through or still going: then it
+ * is a lower bound, "beyond" it. */
+int cs_penetration_is_final(cs_outcome outcome);
 
 typedef struct cs_wout {
     FILE *f;
@@ -21,12 +46,22 @@ void cs_w_num(cs_wout *w, double v, const char *what);
 /* Print s as a JSON string literal (quotes, backslashes and control characters escaped). */
 void cs_json_string(FILE *f, const char *s);
 
-/* More files for cs_write_outputs_with to write into the folder before it commits (the command's
- * report.html): each begun on out. Returns 0, or -1 with why filled. */
+/* More files to write into a run's folder before it commits (the command's report.html): each begun on
+ * out. Returns 0, or -1 with why filled. */
 typedef int (*cs_more_outputs)(cs_outdir *out, void *user, char *why, size_t why_size);
-/* cs_write_outputs, with more (may be NULL) called after the others, its files committed with them. */
-int cs_write_outputs_with(const char *dir, const cs_model_input *in, const cs_model *model,
-                          const cs_state *state, const cs_record *rec, int flags, cs_more_outputs more,
-                          void *user, char *why, size_t why_size);
+/* A run's files into out (opened, not yet committed): timeseries.csv, events.csv, summary.json (with
+ * info), the plots with CS_OUTPUT_PLOTS, then more (may be NULL); out owns every file a run writes, so
+ * that the commit removes an earlier run's that this one does not write. Returns 0, or -1 with why
+ * filled (out then to be aborted). */
+int cs_write_run_files(cs_outdir *out, const cs_model_input *in, const cs_model *model, const cs_state *state,
+                       const cs_record *rec, const cs_run_info *info, int flags, cs_more_outputs more,
+                       void *user, char *why, size_t why_size);
+/* summary.json with info (may be NULL: no provenance, no ratings); each returns 0, or -1 with why filled. */
+int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model *model,
+                               const cs_state *state, const cs_run_info *info, char *why, size_t why_size);
+/* The readable summary (SI and US units side by side): the outcome, the model's hash, the response
+ * parameters, the ratings as run, the failure events in order and the yielding posts counted. */
+void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_model *model,
+                                const cs_state *state, const cs_run_info *info);
 
 #endif

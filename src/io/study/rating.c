@@ -10,17 +10,23 @@
 
 cs_rating_rules cs_default_rating_rules(void) {
     cs_rating_rules r;
-    const double lo[3] = {28.0, 38.0, 47.0}, hi[3] = {37.9, 46.9, HUGE_VAL};
-    for (int i = 0; i < 3; i++)
+    const double lo[4] = {28.0, 38.0, 47.0, 57.0}, hi[4] = {37.9, 46.9, 56.9, HUGE_VAL};
+    for (int i = 0; i < 4; i++)
         r.window_low[i] = lo[i] * MPH, r.window_high[i] = hi[i] * MPH;
-    r.barrier_depth = 0.1; /* 4-in posts and rails: docs/ratings.md */
+    r.barrier_depth = 0.1;         /* 4-in posts and rails: docs/ratings.md */
+    r.head_on_tolerance = 1 * DEG; /* docs/ratings.md */
     return r;
 }
 
 static const char *const standard_names[CS_STANDARD_COUNT] = {"sd-std-02.01", "sd-std-02.01a", "astm-f2656"};
+static const char *const standard_titles[CS_STANDARD_COUNT] = {"SD-STD-02.01", "SD-STD-02.01a", "ASTM F2656"};
 
 const char *cs_standard_name(cs_standard s) {
     return (s >= 0 && s < CS_STANDARD_COUNT) ? standard_names[s] : "?";
+}
+
+const char *cs_standard_title(cs_standard s) {
+    return (s >= 0 && s < CS_STANDARD_COUNT) ? standard_titles[s] : "?";
 }
 
 int cs_standard_parse(const char *name, cs_standard *out) {
@@ -32,12 +38,88 @@ int cs_standard_parse(const char *name, cs_standard *out) {
     return -1;
 }
 
+/* ASTM F2656's vehicles (-07; PU was P there): the library part, the test mass, the speed designations
+ * (C and PU: 40, 50, 60 mph, UNCONFIRMED; M and H: 30, 40, 50 mph). */
+static const struct {
+    const char *name;
+    double kg;
+    int mph[3];
+} classes[] = {{"C", 1100.0, {60, 50, 40}},
+               {"PU", 2300.0, {60, 50, 40}},
+               {"M", 6800.0, {50, 40, 30}},
+               {"H", 29500.0, {50, 40, 30}}};
+enum { CLASS_COUNT = sizeof classes / sizeof classes[0] };
+
+static int class_index(const char *vehicle_class) {
+    for (int i = 0; vehicle_class && i < CLASS_COUNT; i++)
+        if (strcmp(vehicle_class, classes[i].name) == 0) return i;
+    return -1;
+}
+
+const char *cs_rating_class_part(const char *vehicle_class) {
+    int i = class_index(vehicle_class);
+    return i < 0 ? NULL : classes[i].name;
+}
+
+double cs_rating_class_mass(const char *vehicle_class) {
+    int i = class_index(vehicle_class);
+    return i < 0 ? 0.0 : classes[i].kg;
+}
+
+int cs_rating_class_speeds(const char *vehicle_class, int mph[3]) {
+    int i = class_index(vehicle_class);
+    if (i < 0) return 0;
+    for (int k = 0; k < 3; k++)
+        mph[k] = classes[i].mph[k];
+    return 3;
+}
+
+int cs_standard_tests_class(cs_standard standard, const char *vehicle_class) {
+    if (class_index(vehicle_class) < 0) return 0;
+    return standard == CS_ASTM_F2656 || strcmp(vehicle_class, "M") == 0;
+}
+
+const char *cs_rating_vehicle_class(double mass) {
+    for (int i = 0; i < CLASS_COUNT; i++)
+        if (fabs(mass - classes[i].kg) <= 0.05 * classes[i].kg) return classes[i].name;
+    return NULL;
+}
+
+int cs_rating_class_parse(cs_standard standard, const char *name, char *vehicle_class, size_t size,
+                          int *mph) {
+    for (int i = 0; i < CLASS_COUNT; i++) {
+        if (!cs_standard_tests_class(standard, classes[i].name)) continue;
+        for (int k = 0; k < 3; k++) {
+            char want[16];
+            int v = classes[i].mph[k];
+            if (standard == CS_ASTM_F2656)
+                snprintf(want, sizeof want, "%s%d", classes[i].name, v);
+            else
+                snprintf(want, sizeof want, "K%d", v == 30 ? 4 : v == 40 ? 8 : 12);
+            if (strcmp(name, want) != 0) continue;
+            snprintf(vehicle_class, size, "%s", classes[i].name);
+            *mph = v;
+            return 0;
+        }
+    }
+    return -1;
+}
+
 /* The windows are read to the displayed 0.1 mph: 37.9 mph is still the 30 rating. */
-int cs_rating_speed_mph(const cs_rating_rules *rules, double speed) {
+int cs_rating_speed_for(const cs_rating_rules *rules, const char *vehicle_class, double speed) {
+    int i = class_index(vehicle_class ? vehicle_class : "M");
+    if (i < 0) return 0;
     double v = round(speed / MPH * 10.0) * MPH / 10.0;
-    for (int i = 2; i >= 0; i--)
-        if (v >= rules->window_low[i] - 1e-9 && v <= rules->window_high[i] + 1e-9) return 30 + 10 * i;
+    for (int k = 0; k < 3; k++) {
+        int w = (classes[i].mph[k] - 30) / 10;
+        double high = k == 0 ? HUGE_VAL : rules->window_high[w]; /* the highest designation is open */
+        if (v >= rules->window_low[w] - 1e-9 && v <= high + 1e-9) return classes[i].mph[k];
+    }
     return 0;
+}
+
+int cs_rating_speed_mph(const cs_rating_rules *rules, double speed) {
+    return cs_rating_speed_for(rules, NULL, speed);
 }
 
 /* Penetration levels; a boundary value belongs to the better level (1.00 m is L3 and P1). */
@@ -55,32 +137,84 @@ const char *cs_rating_level(cs_standard standard, double p) {
     }
 }
 
-cs_rating cs_rate_run(cs_standard standard, const char *vehicle_class, double speed,
-                      const cs_summary *summary, const cs_vehicle_def *vehicle,
-                      const cs_rating_rules *rules) {
+static cs_rating not_rated(cs_standard standard, const char *vehicle_class, const char *why) {
     cs_rating r;
     memset(&r, 0, sizeof r);
     r.standard = standard;
+    snprintf(r.vehicle_class, sizeof r.vehicle_class, "%s", vehicle_class ? vehicle_class : "");
+    r.penetration = NAN;
+    r.reference = "";
+    snprintf(r.label, sizeof r.label, "not rated");
+    snprintf(r.note, sizeof r.note, "%s", why);
+    return r;
+}
+
+/* Why a run's outcome is not a finished test, or NULL if it is one. */
+static const char *unfinished(cs_outcome o) {
+    switch (o) {
+    case CS_TIME_LIMIT:
+        return "the run ended at its time limit with the vehicle still moving";
+    case CS_NO_CONTACT:
+        return "the vehicle never touched the barrier";
+    case CS_DID_NOT_CONVERGE:
+        return "the run did not converge";
+    case CS_STOPPED:
+    case CS_REDIRECTED:
+        return NULL;
+    default:
+        return cs_outcome_through(o) ? NULL : "the run did not finish";
+    }
+}
+
+cs_rating cs_rate_run(cs_standard standard, const char *vehicle_class, double speed,
+                      const cs_summary *summary, const cs_vehicle_def *vehicle,
+                      const cs_rating_rules *rules) {
+    char why[160];
+    if (!cs_standard_tests_class(standard, vehicle_class)) {
+        snprintf(why, sizeof why, "%s has no %s test vehicle", cs_standard_title(standard),
+                 vehicle_class ? vehicle_class : "such");
+        return not_rated(standard, vehicle_class, why);
+    }
+    const char *open = unfinished(summary->outcome);
+    if (open) return not_rated(standard, vehicle_class, open);
+    cs_rating r;
+    memset(&r, 0, sizeof r);
+    r.standard = standard;
+    r.tested = 1;
     snprintf(r.vehicle_class, sizeof r.vehicle_class, "%s", vehicle_class);
-    r.speed_mph = cs_rating_speed_mph(rules, speed);
-    int through = cs_outcome_through(summary->outcome);
+    r.speed_mph = cs_rating_speed_for(rules, vehicle_class, speed);
+    r.through = cs_outcome_through(summary->outcome);
     double front = summary->max_dynamic_penetration_m;
     int cargo =
         standard == CS_SD_STD_02_01A ||
         (standard == CS_ASTM_F2656 && (strcmp(vehicle_class, "M") == 0 || strcmp(vehicle_class, "H") == 0));
     if (standard == CS_SD_STD_02_01) {
         r.reference = "vehicle front, from the attack face to where it stopped";
-        r.penetration = through ? HUGE_VAL : front;
+        r.penetration = r.through ? HUGE_VAL : front;
     } else if (cargo) {
         r.reference = "front of the cargo bed, from the barrier's protected-side face";
         r.penetration =
-            through ? HUGE_VAL : fmax(0.0, front - vehicle->front_to_cargo_bed - rules->barrier_depth);
+            r.through ? HUGE_VAL : fmax(0.0, front - vehicle->front_to_cargo_bed - rules->barrier_depth);
     } else {
         r.reference = "vehicle front, from the barrier's protected-side face";
-        r.penetration = through ? HUGE_VAL : fmax(0.0, front - rules->barrier_depth);
+        r.penetration = r.through ? HUGE_VAL : fmax(0.0, front - rules->barrier_depth);
     }
     const char *level = cs_rating_level(standard, r.penetration);
     r.rated = r.speed_mph > 0 && level != NULL;
+    if (r.speed_mph == 0) {
+        int mph[3];
+        cs_rating_class_speeds(vehicle_class, mph);
+        snprintf(r.note, sizeof r.note, "%.1f mph is below the lowest speed of its %s vehicle, %d mph",
+                 round(speed / MPH * 10.0) / 10.0, vehicle_class, mph[2]);
+    } else if (r.through) {
+        snprintf(r.note, sizeof r.note, "%s",
+                 standard == CS_ASTM_F2656 ? "the vehicle got through"
+                 : standard == CS_SD_STD_02_01
+                     ? "the vehicle got through; L1 needs it stopped within 15 m"
+                     : "the vehicle got through; the revision's one level needs it stopped within 1 m");
+    } else if (!level) {
+        snprintf(r.note, sizeof r.note, "penetration %.2f m, past the standard's last level", r.penetration);
+    }
     if (!r.rated) {
         snprintf(r.label, sizeof r.label, "none");
     } else if (standard == CS_ASTM_F2656) {
@@ -92,14 +226,27 @@ cs_rating cs_rate_run(cs_standard standard, const char *vehicle_class, double sp
     return r;
 }
 
-const char *cs_rating_vehicle_class(double mass) {
-    static const struct {
-        const char *name;
-        double kg;
-    } classes[] = {{"C", 1100.0}, {"PU", 2300.0}, {"M", 6800.0}, {"H", 29500.0}}; /* ASTM F2656-07 */
-    for (int i = 0; i < 4; i++)
-        if (fabs(mass - classes[i].kg) <= 0.05 * classes[i].kg) return classes[i].name;
-    return NULL;
+cs_rating cs_rate_as_run(cs_standard standard, const char *vehicle_class, const cs_vehicle_def *vehicle,
+                         double speed, double angle, const cs_summary *summary,
+                         const cs_rating_rules *rules) {
+    const char *cls = vehicle_class ? vehicle_class : cs_rating_vehicle_class(vehicle->mass);
+    char why[160];
+    if (!cls || !cs_standard_tests_class(standard, cls)) {
+        snprintf(why, sizeof why, "the vehicle, %.0f kg, is %s, within 5%%", vehicle->mass,
+                 standard == CS_ASTM_F2656 ? "none of its test vehicles, C, PU, M and H"
+                                           : "not its 15,000-lb truck");
+        return not_rated(standard, cls, why);
+    }
+    if (fabs(angle - 90 * DEG) > rules->head_on_tolerance) {
+        snprintf(why, sizeof why, "the impact is at %.1f deg; its test is head-on, at 90 deg", angle / DEG);
+        return not_rated(standard, cls, why);
+    }
+    return cs_rate_run(standard, cls, speed, summary, vehicle, rules);
+}
+
+void cs_rating_text(const cs_rating *r, char *buf, size_t size) {
+    snprintf(buf, size, "%s %s%s%s%s", cs_standard_title(r->standard), r->label, r->note[0] ? " (" : "",
+             r->note, r->note[0] ? ")" : "");
 }
 
 /* NCHRP Report 350 (1993) and MASH (2009): tests x-10 (small car), x-11 (pickup) at 100 km/h, 4-12 (single

@@ -15,41 +15,75 @@ typedef enum cs_standard {
 } cs_standard;
 
 typedef struct cs_rating_rules {
-    /* speed windows of the 30, 40 and 50 mph ratings, m/s (UNCONFIRMED: 28.0-37.9, 38.0-46.9, >= 47.0 mph) */
-    double window_low[3];
-    double window_high[3];
+    /* speed windows of the 30, 40, 50 and 60 mph designations, m/s (UNCONFIRMED: 28.0-37.9, 38.0-46.9,
+     * 47.0-56.9, >= 57.0 mph); a class's highest designation takes every speed above its window too */
+    double window_low[4];
+    double window_high[4];
     /* depth of the barrier from its attack face to its protected-side face, m (a cable barrier's posts
      * and rails; measured-from-the-inside rules subtract it) */
     double barrier_depth;
+    /* how far from head-on (90 deg) a run's impact may be and still be the standards' test, rad
+     * (UNCONFIRMED: 1 deg) */
+    double head_on_tolerance;
 } cs_rating_rules;
 
 typedef struct cs_rating {
     cs_standard standard;
-    char vehicle_class[8]; /* "M", "C", "PU", "H" (ASTM); "truck" (SD-STD) */
-    int speed_mph;         /* 30, 40, 50 (60 for C/PU); 0 if below every window */
-    double penetration;    /* m, as the standard measures it (HUGE_VAL through the barrier) */
+    char vehicle_class[8]; /* "C", "PU", "M", "H" (ASTM; SD-STD: "M", its one truck); "" if none */
+    int speed_mph;         /* the speed designation: 30, 40, 50, 60; 0 if none */
+    double penetration;    /* m, as the standard measures it (HUGE_VAL through the barrier; NAN unrated) */
     const char *reference; /* what the penetration is measured from and to */
-    char label[24];        /* "K8/L2", "M40/P1", "K12 (A)", or "none" */
-    int rated;             /* 0 if the run earns no rating */
+    char label[24]; /* "K8/L2", "M40/P1", "K12 (rev A)"; "none" (a test, no rating earned); "not rated" */
+    int rated;      /* 1 if label is a rating */
+    int tested;     /* 0 if the run is not the standard's test ("not rated": note says why) */
+    int through;    /* the vehicle got through the barrier */
+    char note[160]; /* why not rated, why none, or "the vehicle got through"; "" if nothing to add */
 } cs_rating;
 
 cs_rating_rules cs_default_rating_rules(void);
 const char *cs_standard_name(cs_standard s);               /* "sd-std-02.01", "sd-std-02.01a", "astm-f2656" */
+const char *cs_standard_title(cs_standard s);              /* "SD-STD-02.01", "SD-STD-02.01a", "ASTM F2656" */
 int cs_standard_parse(const char *name, cs_standard *out); /* 0 on success */
 
-/* The rating a run earns: its vehicle class and impact speed, and its summary's outcome and
- * penetration measured as the standard says (vehicle front, or front of the cargo bed). */
+/* The rating a run of a test vehicle of class vehicle_class earns: its impact speed, and its summary's
+ * outcome and penetration measured as the standard says (vehicle front, or front of the cargo bed). A
+ * vehicle class the standard does not test, or a run that did not end stopped, redirected or through
+ * (the time limit, no contact, not converged), is "not rated"; a speed below the class's designations
+ * or a penetration past the standard's levels earns "none". The impact is taken to be head-on. */
 cs_rating cs_rate_run(cs_standard standard, const char *vehicle_class, double speed,
                       const cs_summary *summary, const cs_vehicle_def *vehicle, const cs_rating_rules *rules);
 
-/* Pieces, for tests and for `cablesim rate`: the speed designation (mph) of an impact speed, and the
- * penetration level of a measured penetration ("L3", "P2"...; NULL if none). */
+/* The rating of a run as it was run: its vehicle's class by mass (cs_rating_vehicle_class), or
+ * vehicle_class if not NULL; "not rated" if the vehicle is none of the standard's test vehicles or the
+ * impact is not head-on (within rules->head_on_tolerance). */
+cs_rating cs_rate_as_run(cs_standard standard, const char *vehicle_class, const cs_vehicle_def *vehicle,
+                         double speed, double angle, const cs_summary *summary, const cs_rating_rules *rules);
+
+/* The one wording of a rating, for the terminal, summary.json, report.html and `rate`: the standard's
+ * title, the label, and the note in brackets ("ASTM F2656 M50/P4 (the vehicle got through)"). */
+void cs_rating_text(const cs_rating *r, char *buf, size_t size);
+
+/* Pieces, for tests and for `cablesim rate`: the speed designation (mph) of an impact speed for a class
+ * (0 if below every window the class has; NULL class: M's 30, 40 and 50), and the penetration level of a
+ * measured penetration ("L3", "P2"...; NULL if none). */
 int cs_rating_speed_mph(const cs_rating_rules *rules, double speed);
+int cs_rating_speed_for(const cs_rating_rules *rules, const char *vehicle_class, double speed);
+const char *cs_rating_level(cs_standard standard, double penetration);
 
 /* The standard test vehicle a vehicle of this mass stands for ("C", "PU", "M", "H"), within 5% of
  * the test mass; NULL if none. */
 const char *cs_rating_vehicle_class(double mass);
-const char *cs_rating_level(cs_standard standard, double penetration);
+/* The library part of a class's test vehicle ("C", "PU", "M", "H"; NULL for another class), its test mass
+ * (kg), and the speed designations of a class in mph, highest first, into mph[3]; each returns 0 / NULL
+ * for a class ASTM F2656 does not have. A standard tests a class: ASTM F2656 all four, SD-STD-02.01 and
+ * its revision A only M. */
+const char *cs_rating_class_part(const char *vehicle_class);
+double cs_rating_class_mass(const char *vehicle_class);
+int cs_rating_class_speeds(const char *vehicle_class, int mph[3]);
+int cs_standard_tests_class(cs_standard standard, const char *vehicle_class);
+/* Split a --class argument ("M50", "PU60", "K8") into the class and its speed (mph) for a standard:
+ * 0, or -1 if the standard has no such class and speed. */
+int cs_rating_class_parse(cs_standard standard, const char *name, char *vehicle_class, size_t size, int *mph);
 
 /* ---- roadside test conditions: NCHRP Report 350 and AASHTO MASH (docs/ratings.md) ----
  * A test's vehicle (a part of the library), speed and angle; the impact point is the model's (neither

@@ -47,10 +47,11 @@ typedef enum cs_run_status { CS_RUN_OK = 0, CS_RUN_BAD_MODEL, CS_RUN_FAILED } cs
 
 /* One run's result: plain data, so ranks can send it as bytes. */
 typedef struct cs_sweep_result {
-    int status; /* cs_run_status */
+    int status;  /* cs_run_status */
+    int pending; /* not run (yet): a sweep stopped by a signal; its outputs leave it out */
     cs_summary summary;
     int event_counts[CS_EVENT_TYPE_COUNT];
-    char rating[24]; /* ASTM F2656 label: "M40/P1" or "none" */
+    char rating[24]; /* ASTM F2656 label as run (cs_rate_as_run): "M40/P1", "none" or "not rated" */
     char error[256]; /* status != OK: why */
 } cs_sweep_result;
 
@@ -61,8 +62,12 @@ void cs_sweep_run(const cs_sweep_spec *spec, const double *xrow, cs_loader *load
  * the loader's problems with a value go into the spec's errors at the place of that value. 0 if none. */
 int cs_sweep_check(cs_sweep_spec *spec, const double *x);
 
-/* ASTM F2656 class of a vehicle by its mass: C, PU, M or H, whichever test mass is nearest (ratio). */
-const char *cs_astm_class_by_mass(double mass);
+/* The hash of the spec's model with its fixed values (set:, --set) and none of the varied ones
+ * (cs_model_input_hash): 0, or -1 if it cannot be loaded so. */
+int cs_sweep_model_hash(const cs_sweep_spec *spec, unsigned long long *hash);
+/* 64-bit FNV-1a of a study's runs: their count, the varied paths and every run's inputs, the fixed
+ * values and the rating's vehicle class: what runs.csv's rows depend on beside the model. */
+unsigned long long cs_sweep_inputs_hash(const cs_sweep_spec *spec, const double *x, long n);
 
 /* ---- statistics ---- */
 

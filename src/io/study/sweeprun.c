@@ -46,7 +46,7 @@ void cs_sweep_run(const cs_sweep_spec *s, const double *xrow, cs_loader *loader,
         return;
     }
     cs_vehicle_def vehicle = in.vehicle;
-    double speed = in.scenario.speed;
+    double speed = in.scenario.speed, angle = in.scenario.angle;
     if (!loader) cs_loader_free(l);
     cs_error err = {0};
     cs_state *state = cs_state_create(m, &err);
@@ -67,8 +67,8 @@ void cs_sweep_run(const cs_sweep_spec *s, const double *xrow, cs_loader *loader,
     }
     if (r->status == CS_RUN_OK) {
         cs_rating_rules rules = cs_default_rating_rules();
-        const char *cls = s->vehicle_class[0] ? s->vehicle_class : cs_astm_class_by_mass(vehicle.mass);
-        cs_rating rating = cs_rate_run(CS_ASTM_F2656, cls, speed, &r->summary, &vehicle, &rules);
+        cs_rating rating = cs_rate_as_run(CS_ASTM_F2656, s->vehicle_class[0] ? s->vehicle_class : NULL,
+                                          &vehicle, speed, angle, &r->summary, &rules);
         snprintf(r->rating, sizeof r->rating, "%s", rating.label);
     }
     cs_state_free(state);
@@ -140,4 +140,29 @@ int cs_sweep_check(cs_sweep_spec *s, const double *x) {
             check_one(s, x, j, v->numeric ? v->levels[k] : k, v->level_line[k], v->level_col[k]);
     }
     return s->error_count ? -1 : 0;
+}
+
+int cs_sweep_model_hash(const cs_sweep_spec *s, unsigned long long *hash) {
+    char why[256];
+    cs_loader *l = cs_loader_create(NULL, why, sizeof why);
+    if (!l) return -1;
+    for (int k = 0; k < s->set_count; k++)
+        cs_loader_set(l, s->sets[k]);
+    cs_model_input in;
+    int rc = cs_loader_load(l, s->model, &in);
+    if (rc == 0) *hash = cs_model_input_hash(&in);
+    cs_loader_free(l);
+    return rc == 0 ? 0 : -1;
+}
+
+unsigned long long cs_sweep_inputs_hash(const cs_sweep_spec *s, const double *x, long n) {
+    unsigned long long h = CS_FNV1A64_BASIS;
+    h = cs_fnv1a64(h, &n, sizeof n);
+    h = cs_fnv1a64(h, &s->var_count, sizeof s->var_count);
+    for (int j = 0; j < s->var_count; j++)
+        h = cs_fnv1a64(h, s->vars[j].path, strlen(s->vars[j].path) + 1);
+    h = cs_fnv1a64(h, x, (size_t)n * (size_t)s->var_count * sizeof *x);
+    for (int k = 0; k < s->set_count; k++)
+        h = cs_fnv1a64(h, s->sets[k], strlen(s->sets[k]) + 1);
+    return cs_fnv1a64(h, s->vehicle_class, strlen(s->vehicle_class) + 1);
 }

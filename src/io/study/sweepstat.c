@@ -159,18 +159,6 @@ double cs_sweep_value_used(const cs_sweep_var *v, double x) {
     return strtod(buf, NULL);
 }
 
-const char *cs_astm_class_by_mass(double mass) {
-    static const char *const names[] = {"C", "PU", "M", "H"};
-    static const double lb[] = {2430, 5070, 15000, 65000};
-    int best = 2;
-    double gap = HUGE_VAL;
-    for (int i = 0; i < 4; i++) {
-        double g = fabs(log(mass / (lb[i] * 0.45359237)));
-        if (g < gap) gap = g, best = i;
-    }
-    return names[best];
-}
-
 /* ---- statistics ---- */
 
 cs_interval cs_wilson(long k, long n, double z) {

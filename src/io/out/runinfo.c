@@ -1,0 +1,31 @@
+/* What a run's outputs say beside its results (writers.h): its ratings as run, the record of a run made
+ * through the library, the model hash's text, and whether its penetration is final. */
+#include <stdio.h>
+
+#include "writers.h"
+
+void cs_run_info_rate(cs_run_info *info, const cs_model_input *in, const cs_summary *summary) {
+    cs_rating_rules rules = cs_default_rating_rules();
+    const cs_standard standards[] = {CS_ASTM_F2656, CS_SD_STD_02_01};
+    const char *klass = cs_rating_vehicle_class(in->vehicle.mass);
+    info->rating_count = 0;
+    for (int i = 0; i < 2 && klass; i++)
+        if (cs_standard_tests_class(standards[i], klass))
+            info->ratings[info->rating_count++] = cs_rate_as_run(
+                standards[i], NULL, &in->vehicle, in->scenario.speed, in->scenario.angle, summary, &rules);
+}
+
+void cs_run_info_of(cs_run_info *info, const cs_model_input *in, const cs_state *state) {
+    *info = (cs_run_info){NULL, NULL, 0, cs_model_input_hash(in), {{0}}, 0};
+    cs_summary s;
+    cs_state_summary(state, &s);
+    cs_run_info_rate(info, in, &s);
+}
+
+void cs_model_hash_text(unsigned long long hash, char buf[17]) {
+    snprintf(buf, 17, "%016llx", hash);
+}
+
+int cs_penetration_is_final(cs_outcome outcome) {
+    return outcome == CS_STOPPED || outcome == CS_REDIRECTED || outcome == CS_NO_CONTACT;
+}

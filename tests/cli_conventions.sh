@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# The command line's conventions, for every subcommand: --help on stdout with exit 0; an unknown option
+# named, with exit 2; an option without its value named; a file that cannot be opened given with the
+# system's reason; an output folder that cannot be written refused before anything runs (a folder under a
+# regular file: ENOTDIR even for root), leaving nothing behind.
+source "$(dirname "$0")/lib.sh"
+
+check "cablesim --help" '"$cs" --help | grep -q "^Usage: cablesim run FILE"'
+for sub in run check sweep rate validate list schema; do
+    out=$("$cs" "$sub" --help 2>&1)
+    check "$sub --help: exit 0" '[ $? -eq 0 ]'
+    check "$sub --help: its usage" 'grep -q "^usage: cablesim $sub" <<<"$out"'
+    out=$("$cs" "$sub" examples/aps3.yaml --foo 2>&1)
+    check "$sub --foo: exit 2, the option named" '[ $? -eq 2 ] && grep -qxF "cablesim $sub: unknown option '"'"'--foo'"'"'" <<<"$out"'
+    out=$("$cs" "$sub" --bar=1 2>&1)
+    check "$sub --bar=1: the option named without its value" '[ $? -eq 2 ] && grep -qF "unknown option '"'"'--bar'"'"'" <<<"$out"'
+done
+out=$("$cs" frobnicate 2>&1)
+check "an unknown command named, exit 2" '[ $? -eq 2 ] && grep -qxF "cablesim: unknown command '"'"'frobnicate'"'"'" <<<"$out"'
+for sub in run check rate sweep; do
+    out=$("$cs" "$sub" examples/aps3.yaml --set 2>&1)
+    check "$sub --set without its value: named, exit 2" '[ $? -eq 2 ] && grep -qF "option '"'"'--set'"'"' needs a value" <<<"$out"'
+done
+out=$("$cs" list extra 2>&1)
+check "list takes no argument" '[ $? -eq 2 ] && grep -qF "takes no argument" <<<"$out"'
+out=$("$cs" run examples/aps3.yaml examples/aps1.yaml 2>&1)
+check "two model files: exit 2, both named" '[ $? -eq 2 ] && grep -qF "more than one model file ('"'"'examples/aps3.yaml'"'"' and '"'"'examples/aps1.yaml'"'"')" <<<"$out"'
+out=$("$cs" run examples/aps3.yaml -o "$tmp/o1" --t-end "5 ms" --plots 2>&1)
+check "options after the file, and before it" '[ $? -eq 0 ] && "$cs" run --t-end "5 ms" -o "$tmp/o2" examples/aps3.yaml >/dev/null 2>&1'
+
+# files it cannot open: the system's reason
+out=$("$cs" run "$tmp/nowhere.yaml" 2>&1)
+check "run: a missing file, its reason" '[ $? -eq 2 ] && grep -qF "$tmp/nowhere.yaml: cannot open the file: No such file or directory" <<<"$out"'
+out=$("$cs" check "$tmp" 2>&1)
+check "check: a folder, its reason" '[ $? -eq 2 ] && grep -qF "$tmp: cannot open the file: Is a directory" <<<"$out"'
+out=$("$cs" rate "$tmp/nowhere.yaml" --standard astm-f2656 2>&1)
+check "rate: a missing file, its reason" '[ $? -eq 2 ] && grep -qF "No such file or directory" <<<"$out"'
+out=$("$cs" sweep "$tmp/nowhere.yaml" 2>&1)
+check "sweep: a missing spec, its reason" '[ $? -eq 2 ] && grep -qF "$tmp/nowhere.yaml: cannot open the file: No such file or directory" <<<"$out"'
+out=$("$cs" sweep --resume "$tmp/nothing" 2>&1)
+check "sweep --resume: a folder with no sweep, its reason" '[ $? -eq 2 ] && grep -qF "$tmp/nothing/summary.json: No such file or directory" <<<"$out"'
+
+# an output folder it cannot write: refused before anything runs, nothing left
+echo "a file" >"$tmp/file"
+out=$("$cs" run examples/aps3.yaml -o "$tmp/file/sub" 2>&1)
+check "run -o FILE/sub: exit 1, why, before the run" '[ $? -eq 1 ] && grep -qxF "cablesim: nothing run: $tmp/file/sub: Not a directory" <<<"$out"'
+out=$("$cs" sweep tests/sweep/lhs.yaml -o "$tmp/file/sub" 2>&1)
+check "sweep -o FILE/sub: exit 1, why, before any run" '[ $? -eq 1 ] && grep -qxF "cablesim sweep: nothing run: $tmp/file/sub: Not a directory" <<<"$out" && ! grep -q "^sweep: [0-9]* runs" <<<"$out"'
+out=$("$cs" validate --only verification -o "$tmp/file/sub" 2>&1)
+check "validate -o FILE/sub: exit 1, why, before any run" '[ $? -eq 1 ] && grep -qxF "cablesim validate: nothing run: $tmp/file/sub: Not a directory" <<<"$out"'
+check "the file is as it was" '[ "$(cat "$tmp/file")" = "a file" ]'
+# the folders made for a run that then cannot write its files (a 1-KiB file size limit) are removed again;
+# those of a run that can are kept
+mkdir -p "$tmp/made"
+out=$(trap "" XFSZ; ulimit -f 1; "$cs" run examples/aps3.yaml -o "$tmp/made/a/b" --t-end "5 ms" 2>&1)
+check "a run that cannot write: exit 1, why, its new folders gone" '[ $? -eq 1 ] && grep -qxF "cablesim: nothing written: $tmp/made/a/b/timeseries.csv: File too large" <<<"$out" && [ -z "$(ls -A "$tmp/made")" ]'
+out=$("$cs" run examples/aps3.yaml -o "$tmp/made/a/b" --t-end "5 ms" 2>&1)
+check "a run into new folders keeps them" '[ $? -eq 0 ] && [ -s "$tmp/made/a/b/summary.json" ]'
+finish

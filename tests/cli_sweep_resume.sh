@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# A sweep stopped by a signal writes the runs it finished, marked partial, and `sweep --resume DIR` completes
+# it: runs.csv then equals, byte for byte, that of the same sweep never stopped. Stopped twice ways: by
+# CABLESIM_SWEEP_STOP_AFTER (it raises SIGINT once that many runs are done: a fixed point to stop at) and
+# by SIGTERM from this script while the runs go on. A resume refuses a folder whose study changed, and a
+# folder whose study is whole has nothing to run.
+source "$(dirname "$0")/lib.sh"
+
+# the whole study, never stopped: tests/sweep/lhs.yaml's 4 runs, with runs.nc
+"$cs" sweep tests/sweep/lhs.yaml -o "$tmp/whole" --netcdf --quiet >/dev/null 2>&1
+check "the whole sweep exits 0" '[ $? -eq 0 ]'
+
+dir="$tmp/stopped"
+CABLESIM_SWEEP_STOP_AFTER=1 "$cs" sweep tests/sweep/lhs.yaml -o "$dir" --netcdf --threads 1 >"$tmp/stop.out" 2>"$tmp/stop.err"
+check "stopped by SIGINT after 1 run: exit 130" '[ $? -eq 130 ] || { cat "$tmp/stop.err"; false; }'
+check "it says so, and how to go on" 'grep -qxF "cablesim sweep: stopped by SIGINT: 1 of 4 runs done, written to $dir (partial); \`cablesim sweep --resume $dir\` runs the other 3" "$tmp/stop.err"'
+check "runs.csv: the header and the one run done, as the whole sweep has it" '[ "$(wc -l <"$dir/runs.csv")" -eq 2 ] && cmp -s "$dir/runs.csv" <(head -2 "$tmp/whole/runs.csv")'
+check "summary.json: partial, 1 run done, by SIGINT" 'grep -q "^\"partial\":true,\"runs_done\":1,\"stopped_by\":\"SIGINT\"," "$dir/summary.json"'
+check "summary.md: a partial note first" '[ "$(sed -n 3p "$dir/summary.md")" = "**Partial**: 1 of 4 runs were run before SIGINT stopped the sweep; the tables below are of those. \`cablesim sweep --resume $dir\` runs the rest and completes these files." ]'
+check "a partial sweep writes no runs.nc" '[ ! -e "$dir/runs.nc" ]'
+"$cs" sweep --resume "$dir" --threads 2 --quiet >"$tmp/resume.out" 2>&1
+check "--resume exits 0" '[ $? -eq 0 ] || { cat "$tmp/resume.out"; false; }'
+check "--resume ran the other 3" 'grep -qxF "sweep: 1 runs read back from $dir/runs.csv, 3 run now" "$tmp/resume.out"'
+check "runs.csv: byte for byte the whole sweep's" 'cmp "$dir/runs.csv" "$tmp/whole/runs.csv"'
+check "summary.json: no longer partial" 'grep -q "^\"partial\":false,\"runs_done\":4,\"stopped_by\":null," "$dir/summary.json"'
+check "summary.md: no partial note" '! grep -q "Partial" "$dir/summary.md"'
+check "runs.nc now written (--netcdf kept)" '[ -s "$dir/runs.nc" ]'
+out=$("$cs" sweep --resume "$dir" 2>&1)
+check "--resume of a whole study: nothing to run, exit 0" '[ $? -eq 0 ] && grep -qxF "sweep: $dir holds the whole study (4 runs): nothing to run" <<<"$out"'
+
+# a study that changed is refused: another value of the model
+CABLESIM_SWEEP_STOP_AFTER=1 "$cs" sweep tests/sweep/lhs.yaml -o "$tmp/changed" --threads 1 --quiet >/dev/null 2>&1
+sed -i 's/"set":\[\]/"set":["scenario.stop_speed=0.2 m\/s"]/' "$tmp/changed/summary.json"
+out=$("$cs" sweep --resume "$tmp/changed" 2>&1)
+check "--resume of a changed study: exit 2, why" '[ $? -eq 2 ] && grep -qF "the study has changed since it was stopped" <<<"$out"'
+out=$("$cs" sweep --resume "$tmp/changed" tests/sweep/lhs.yaml 2>&1)
+check "--resume with a spec: exit 2" '[ $? -eq 2 ] && grep -qF -- "--resume DIR takes the study as DIR/summary.json records it" <<<"$out"'
+
+# SIGTERM from outside while the runs go on (24 runs of 150 ms, about 0.04 s each on one thread: the
+# signal comes 0.3 s after the sweep has started them)
+spec=(tests/sweep/mc.yaml --runs 24 --t-end "150 ms")
+"$cs" sweep "${spec[@]}" -o "$tmp/whole-mc" --quiet >/dev/null 2>&1
+"$cs" sweep "${spec[@]}" -o "$tmp/term" --threads 1 >"$tmp/term.out" 2>"$tmp/term.err" &
+pid=$!
+for _ in $(seq 100); do grep -q "^sweep: 24 runs" "$tmp/term.err" && break; sleep 0.05; done
+sleep 0.3
+kill -TERM "$pid"
+wait "$pid"
+check "SIGTERM: exit 143" '[ $? -eq 143 ] || { cat "$tmp/term.err"; false; }'
+done_runs=$(($(wc -l <"$tmp/term/runs.csv") - 1))
+check "SIGTERM: some runs done, not all ($done_runs)" '[ "$done_runs" -ge 1 ] && [ "$done_runs" -lt 24 ] && grep -q "^\"partial\":true,\"runs_done\":$done_runs,\"stopped_by\":\"SIGTERM\"," "$tmp/term/summary.json"'
+"$cs" sweep --resume "$tmp/term" --quiet >/dev/null 2>&1
+check "SIGTERM, then --resume: runs.csv byte for byte the whole sweep's" '[ $? -eq 0 ] && cmp "$tmp/term/runs.csv" "$tmp/whole-mc/runs.csv"'
+finish
