@@ -13,6 +13,7 @@
 #include "load/units.h"
 #include "out/compare.h"
 #include "out/outfile.h"
+#include "out/plot.h"
 
 enum { MAX_RUNS = 12 };
 
@@ -89,6 +90,7 @@ int cs_command_compare(int argc, char **argv) {
            runs == 1 ? "" : "s", measured ? " and a measured history" : "", dir);
     rc = 0;
 done:
+    cs_plot_release(); /* after the last plot (fontconfig's caches) */
     for (int k = 0; k < count; k++)
         cs_trace_free(&traces[k]);
     cs_units_free(units);
