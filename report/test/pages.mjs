@@ -1,0 +1,121 @@
+// The other pages cablesim writes, in a real browser (Debian's headless chromium, playwright-core):
+// compare.html (`cablesim compare` of two short runs and a synthetic "measured" trace made from the first)
+// and a study's report.html (`cablesim sweep` of tests/sweep/mc.yaml). Each opens from file:// with no
+// console error and no network request; its tables have their rows; every figure is drawn (an SVG with a
+// size on the page) and every id an SVG refers to (glyphs, clip paths) is its own and once in the page,
+// so no figure borrows another's. Screenshots go to OUT.
+//
+//   node report/test/pages.mjs --cablesim BUILD/cablesim --modules BUILD/report/node_modules --out DIR
+import { createRequire } from 'node:module';
+import { spawnSync } from 'node:child_process';
+import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { join, resolve } from 'node:path';
+import { pathToFileURL } from 'node:url';
+
+const args = {};
+for (let i = 2; i < process.argv.length; i += 2) args[process.argv[i].replace(/^--/, '')] = process.argv[i + 1];
+if (!args.modules || !args.out || !args.cablesim) {
+  console.error('usage: node report/test/pages.mjs --cablesim CABLESIM --modules NODE_MODULES --out DIR');
+  process.exit(2);
+}
+const out = resolve(args.out);
+rmSync(out, { recursive: true, force: true });
+mkdirSync(out, { recursive: true });
+const chromiumPath = process.env.CS_CHROMIUM || '/usr/bin/chromium';
+
+let passed = 0;
+let failed = 0;
+function check(what, ok, detail = '') {
+  if (ok) passed++;
+  else {
+    failed++;
+    console.log(`FAIL: ${what}${detail ? `: ${detail}` : ''}`);
+  }
+}
+function finish() {
+  console.log(`${passed} passed, ${failed} failed`);
+  process.exit(failed ? 1 : 0);
+}
+function cablesim(...argv) {
+  const r = spawnSync(args.cablesim, argv, { encoding: 'utf8' });
+  check(`cablesim ${argv.join(' ')} exits 0`, r.status === 0, `${r.status} ${r.stderr}`);
+}
+
+// the inputs: two runs, a synthetic trace from the first (time in ms, speed in mph), a small study
+cablesim('run', 'examples/aps3.yaml', '--t-end', '0.2 s', '-o', join(out, 'a'));
+cablesim('run', 'examples/aps3.yaml', '--t-end', '0.2 s', '--set', 'scenario.speed=35 mph', '-o', join(out, 'b'));
+const rows = readFileSync(join(out, 'a', 'timeseries.csv'), 'utf8').trim().split('\n');
+const head = rows[0].split(',');
+const [it, iv] = [head.indexOf('t_s'), head.indexOf('forward_speed_mps')];
+const trace = ['time [ms],speed [mph]', ...rows.slice(1).map((r) => { const c = r.split(','); return `${c[it] * 1000},${c[iv] / 0.44704}`; })];
+writeFileSync(join(out, 'measured.csv'), `${trace.join('\n')}\n`);
+cablesim('compare', join(out, 'a'), join(out, 'b'), '--measured', join(out, 'measured.csv'), '-o', join(out, 'compare'));
+cablesim('sweep', 'tests/sweep/mc.yaml', '--quiet', '-o', join(out, 'study'));
+
+const pages = [
+  { name: 'compare', file: join(out, 'compare', 'compare.html'), figures: 5, tables: [11] },
+  { name: 'study', file: join(out, 'study', 'report.html'), figures: 19, tables: [9, 7] },
+];
+if (!existsSync(chromiumPath)) {
+  check(`a browser at ${chromiumPath}`, false, 'install Debian chromium (bash scripts/install-deps.sh)');
+  finish();
+}
+const require = createRequire(join(resolve(args.modules), 'noop.js'));
+const { chromium } = require('playwright-core');
+const context = await chromium.launchPersistentContext(mkdtempSync(join(out, 'profile-')), {
+  executablePath: chromiumPath,
+  headless: true,
+  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
+  viewport: { width: 1100, height: 900 },
+  deviceScaleFactor: 1,
+});
+try {
+  for (const p of pages) {
+    check(`${p.name}: the page exists`, existsSync(p.file));
+    if (!existsSync(p.file)) continue;
+    const page = await context.newPage();
+    const errors = [];
+    const requests = [];
+    page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
+    page.on('pageerror', (e) => errors.push(`page error: ${e.message}`));
+    page.on('request', (r) => { if (!/^(file|data|blob):/.test(r.url())) requests.push(r.url()); });
+    await page.goto(pathToFileURL(p.file).href, { waitUntil: 'load' });
+    const seen = await page.evaluate(() => {
+      const svgs = [...document.querySelectorAll('svg')];
+      const drawn = svgs.filter((s) => { const b = s.getBoundingClientRect(); return b.width > 300 && b.height > 150; }).length;
+      // every reference inside an SVG (xlink:href="#id", clip-path="url(#id)") must name an element of that SVG
+      let refs = 0;
+      let foreign = 0;
+      for (const s of svgs) {
+        const own = new Set([...s.querySelectorAll('[id]')].map((e) => e.id));
+        for (const e of s.querySelectorAll('*')) {
+          for (const a of e.getAttributeNames()) {
+            const v = e.getAttribute(a);
+            const m = /^#(.+)$/.exec(v) || /url\(#([^)]+)\)/.exec(v);
+            if (!m || !/href|clip|mask|fill|filter/.test(a)) continue;
+            refs++;
+            if (!own.has(m[1])) foreign++;
+          }
+        }
+      }
+      const ids = [...document.querySelectorAll('[id]')].map((e) => e.id);
+      const repeated = ids.length - new Set(ids).size; // a reference resolves to the first of a repeated id
+      const tables = [...document.querySelectorAll('table')].map((t) => t.querySelectorAll('tr').length);
+      return { svgs: svgs.length, drawn, refs, foreign, repeated, tables };
+    });
+    check(`${p.name}: ${p.figures} figures`, seen.svgs === p.figures, `${seen.svgs}`);
+    check(`${p.name}: every figure drawn with a size`, seen.drawn === p.figures, `${seen.drawn}`);
+    check(`${p.name}: the figures refer to their glyphs and clips (${seen.refs})`, seen.refs > 0);
+    check(`${p.name}: no figure refers to another's ids`, seen.foreign === 0, `${seen.foreign} of ${seen.refs}`);
+    check(`${p.name}: every id once in the page`, seen.repeated === 0, `${seen.repeated} repeated`);
+    check(`${p.name}: its tables' rows`, JSON.stringify(seen.tables) === JSON.stringify(p.tables), JSON.stringify(seen.tables));
+    check(`${p.name}: no console errors`, errors.length === 0, errors.join(' | '));
+    check(`${p.name}: no network requests`, requests.length === 0, requests.join(' '));
+    await page.screenshot({ path: join(out, `${p.name}.png`), fullPage: true });
+    await page.close();
+  }
+} finally {
+  await context.close();
+}
+console.log(`screenshots: ${out}/{compare,study}.png`);
+finish();
