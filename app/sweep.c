@@ -8,6 +8,7 @@
  * rest and writes the whole study (runs.csv the same bytes as a sweep never stopped). */
 #define _XOPEN_SOURCE 700 /* realpath */
 #include <errno.h>
+#include <json-c/json.h>
 #include <limits.h>
 #include <signal.h>
 #include <stdio.h>
@@ -29,6 +30,7 @@
 #include "out/plot.h"
 #include "out/studyreport.h"
 #include "out/sweepout.h"
+#include "out/writers.h"
 #include "study/sweep.h"
 #include "sweepcmd.h"
 
@@ -206,19 +208,6 @@ static int parse_opts(int argc, char **argv, sweep_opts *o, int rank) {
 
 /* ---- the record --resume reads back (summary.json's "resume") ---- */
 
-static void json_text(FILE *f, const char *s) {
-    fputc('"', f);
-    for (; *s; s++) {
-        if (*s == '"' || *s == '\\')
-            fprintf(f, "\\%c", *s);
-        else if ((unsigned char)*s < 0x20)
-            fprintf(f, "\\u%04x", *s);
-        else
-            fputc(*s, f);
-    }
-    fputc('"', f);
-}
-
 /* {"spec": the spec's absolute path, "spec_as_given" and the "cwd" it was given in, "runs", "seed", "set":
  * the command line's fixed values, "netcdf"}. */
 static char *resume_record(const sweep_opts *o, const char *as_given, const char *cwd) {
@@ -227,62 +216,35 @@ static char *resume_record(const sweep_opts *o, const char *as_given, const char
     FILE *f = open_memstream(&buf, &size);
     if (!f) return NULL;
     fputs("{\"spec\":", f);
-    json_text(f, realpath(o->spec, real) ? real : o->spec);
+    cs_json_string(f, realpath(o->spec, real) ? real : o->spec);
     fputs(",\"spec_as_given\":", f);
-    json_text(f, as_given);
+    cs_json_string(f, as_given);
     fputs(",\"cwd\":", f);
-    json_text(f, cwd);
+    cs_json_string(f, cwd);
     if (o->runs > 0)
         fprintf(f, ",\"runs\":%ld,\"seed\":", o->runs);
     else
         fputs(",\"runs\":null,\"seed\":", f);
     if (o->seed)
-        json_text(f, o->seed);
+        cs_json_string(f, o->seed);
     else
         fputs("null", f);
     fputs(",\"set\":[", f);
     for (int i = 0; i < o->set_count; i++) {
         if (i) fputc(',', f);
-        json_text(f, o->sets[i]);
+        cs_json_string(f, o->sets[i]);
     }
     fprintf(f, "],\"netcdf\":%s}", o->netcdf ? "true" : "false");
     fclose(f);
     return buf;
 }
 
-/* A JSON string at *p (as json_text writes them) into out; 0, or -1. */
-static int read_text(const char **p, char *out, size_t size) {
-    const char *s = *p;
-    size_t n = 0;
-    if (*s++ != '"') return -1;
-    for (; *s && *s != '"'; s++) {
-        char c = *s;
-        if (c == '\\') {
-            c = *++s;
-            if (c == 'u') {
-                unsigned v;
-                if (sscanf(s + 1, "%4x", &v) != 1 || v >= 0x20) return -1;
-                c = (char)v;
-                s += 4;
-            } else if (c != '"' && c != '\\' && c != '/') {
-                return -1;
-            }
-        }
-        if (n + 1 >= size) return -1;
-        out[n++] = c;
-    }
-    if (*s != '"') return -1;
-    out[n] = '\0';
-    *p = s + 1;
-    return 0;
-}
-
-/* The value after "key": in text (the first), or NULL. */
-static const char *after_key(const char *text, const char *key) {
-    char k[64];
-    snprintf(k, sizeof k, "\"%s\":", key);
-    const char *p = strstr(text, k);
-    return p ? p + strlen(k) : NULL;
+/* The string at key of obj into out (NULL, or not a string: ""). 0, or -1 if it does not fit. */
+static int json_text_at(json_object *obj, const char *key, char *out, size_t size) {
+    json_object *v;
+    out[0] = '\0';
+    if (!json_object_object_get_ex(obj, key, &v) || !json_object_is_type(v, json_type_string)) return 0;
+    return snprintf(out, size, "%s", json_object_get_string(v)) < (int)size ? 0 : -1;
 }
 
 typedef struct resumed {
@@ -294,68 +256,48 @@ typedef struct resumed {
 /* DIR/summary.json's record of the study into o (its strings kept in static storage) and r. 0, or -1 with
  * why filled. */
 static int read_resume(const char *dir, sweep_opts *o, resumed *r, char *why, size_t why_size) {
-    static char spec[PATH_MAX], seed[64], *text;
+    static char spec[PATH_MAX], seed[64], sets[256][1100];
     char path[1200];
     snprintf(path, sizeof path, "%s/summary.json", dir);
-    FILE *f = fopen(path, "r");
-    if (!f) {
+    FILE *probe = fopen(path, "r");
+    if (!probe) {
         snprintf(why, why_size, "%s: %s (expected the summary of a sweep written there)", path,
                  strerror(errno));
         return -1;
     }
-    size_t size = 0, cap = 0;
-    text = NULL;
-    for (int c; (c = getc(f)) != EOF && size < (1u << 24);) {
-        if (size + 1 >= cap) {
-            char *t = realloc(text, cap = cap ? 2 * cap : 65536);
-            if (!t) break;
-            text = t;
-        }
-        text[size++] = (char)c;
-    }
-    fclose(f);
-    if (!text) {
-        snprintf(why, why_size, "%s: empty or unreadable", path);
-        return -1;
-    }
-    text[size] = '\0';
-    const char *p = after_key(text, "resume"), *q;
-    int bad = !p || *p++ != '{';
-    if (!bad && (q = after_key(p, "spec")))
-        bad = read_text(&q, spec, sizeof spec) != 0;
-    else
-        bad = 1;
+    fclose(probe);
+    json_object *root = json_object_from_file(path), *rec = NULL, *about = NULL, *v;
+    int bad = !root || !json_object_object_get_ex(root, "resume", &rec) ||
+              !json_object_is_type(rec, json_type_object) ||
+              json_text_at(rec, "spec", spec, sizeof spec) != 0 || !spec[0];
     char here[PATH_MAX];
-    if (!bad && (q = after_key(p, "spec_as_given")) &&
-        read_text(&q, r->spec_as_given, sizeof r->spec_as_given) == 0 && (q = after_key(p, "cwd")) &&
-        read_text(&q, r->cwd, sizeof r->cwd) == 0 && getcwd(here, sizeof here) && strcmp(here, r->cwd) == 0)
+    if (!bad && json_text_at(rec, "spec_as_given", r->spec_as_given, sizeof r->spec_as_given) == 0 &&
+        json_text_at(rec, "cwd", r->cwd, sizeof r->cwd) == 0 && getcwd(here, sizeof here) &&
+        strcmp(here, r->cwd) == 0)
         snprintf(spec, sizeof spec, "%s", r->spec_as_given); /* as it was given, where it was given */
-    if (!bad && (q = after_key(p, "runs"))) o->runs = strncmp(q, "null", 4) == 0 ? 0 : strtol(q, NULL, 10);
-    if (!bad && (q = after_key(p, "seed")) && strncmp(q, "null", 4) != 0) {
-        bad = read_text(&q, seed, sizeof seed) != 0;
+    if (!bad && json_object_object_get_ex(rec, "runs", &v)) o->runs = v ? json_object_get_int64(v) : 0;
+    if (!bad && json_object_object_get_ex(rec, "seed", &v) && v) {
+        bad = json_text_at(rec, "seed", seed, sizeof seed) != 0;
         o->seed = seed;
     }
-    if (!bad && (q = after_key(p, "set")) && *q++ == '[') {
-        static char sets[256][1100];
-        while (!bad && *q == '"' && o->set_count < 256) {
-            bad = read_text(&q, sets[o->set_count], sizeof sets[0]) != 0;
-            o->sets[o->set_count] = sets[o->set_count];
-            o->set_count++;
-            if (*q == ',') q++;
-        }
-        bad |= *q != ']';
-    } else {
-        bad = 1;
+    json_object *list = NULL;
+    bad = bad || !json_object_object_get_ex(rec, "set", &list) || !json_object_is_type(list, json_type_array);
+    for (size_t i = 0; !bad && i < json_object_array_length(list) && o->set_count < 256; i++) {
+        json_object *e = json_object_array_get_idx(list, i);
+        bad = !json_object_is_type(e, json_type_string) ||
+              snprintf(sets[o->set_count], sizeof sets[0], "%s", json_object_get_string(e)) >=
+                  (int)sizeof sets[0];
+        o->sets[o->set_count] = sets[o->set_count];
+        o->set_count++;
     }
-    if (!bad && (q = after_key(p, "netcdf"))) o->netcdf = strncmp(q, "true", 4) == 0;
-    r->partial = (q = after_key(text, "partial")) && strncmp(q, "true", 4) == 0;
-    r->version[0] = r->model_hash[0] = r->inputs_hash[0] = '\0';
-    if (!bad && (q = after_key(text, "version"))) bad = read_text(&q, r->version, sizeof r->version) != 0;
-    if (!bad && (q = after_key(text, "model_hash")) && *q == '"')
-        bad = read_text(&q, r->model_hash, sizeof r->model_hash) != 0;
-    if (!bad && (q = after_key(text, "inputs_hash")))
-        bad = read_text(&q, r->inputs_hash, sizeof r->inputs_hash);
-    free(text);
+    if (!bad && json_object_object_get_ex(rec, "netcdf", &v)) o->netcdf = json_object_get_boolean(v);
+    r->partial = !bad && json_object_object_get_ex(root, "partial", &v) && json_object_get_boolean(v);
+    if (!bad && json_object_object_get_ex(root, "cablesim", &about)) {
+        bad = json_text_at(about, "version", r->version, sizeof r->version) != 0 ||
+              json_text_at(about, "model_hash", r->model_hash, sizeof r->model_hash) != 0;
+    }
+    if (!bad) bad = json_text_at(root, "inputs_hash", r->inputs_hash, sizeof r->inputs_hash) != 0;
+    if (root) json_object_put(root);
     if (bad) {
         snprintf(why, why_size,
                  "%s: no record of the study to resume (written by an older cablesim, or not by "

@@ -48,7 +48,7 @@ static int study_make(study *s, const cs_sweep_spec *spec, const double *x, cons
     memset(s, 0, sizeof *s);
     long m = 0;
     for (long i = 0; i < n; i++)
-        m += r[i].status == CS_RUN_OK;
+        m += r[i].status == CS_RUN_OK && !r[i].pending;
     int k = spec->var_count;
     size_t cells = (size_t)(m > 0 ? m : 1);
     for (int q = 0; q < CS_STUDY_RESPONSES; q++)
@@ -73,7 +73,7 @@ static int study_make(study *s, const cs_sweep_spec *spec, const double *x, cons
         return -1;
     }
     for (long i = 0; i < n; i++) {
-        if (r[i].status != CS_RUN_OK) continue;
+        if (r[i].status != CS_RUN_OK || r[i].pending) continue; /* a partial sweep's runs not run yet */
         long j = s->ok++;
         for (int q = 0; q < CS_STUDY_RESPONSES; q++)
             s->y[q][j] = cs_sweep_column_number(&cols[col[q]], &r[i]) * responses[q].scale;
