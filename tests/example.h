@@ -5,7 +5,13 @@
 
 #include "cablesim/loader.h"
 
+#include <math.h>
 #include <stdio.h>
+
+/* A pinned prediction (a row of tests/predictions/, 10 digits) and this engine's: the same to 1e-6. */
+static inline void pinned_close_to(const char *what, double got, double want) {
+    if (!(fabs(got - want) <= 1e-6 * fabs(want) + 1e-9)) fail_msg("%s: %.10g, pinned %.10g", what, got, want);
+}
 
 static inline cs_model *example_model(const char *name, const char *const *sets, cs_loader **loader) {
     char why[256], path[512];

@@ -6,12 +6,10 @@
 
 #include <stdlib.h>
 
-static unsigned long long run_aps3_dt(cs_summary *out, double dt) {
-    fixture fx;
-    fixture_aps3(&fx);
-    fx.scenario.dt = dt;
+/* Run a fixture to its end (it must end without an error): its summary, and the hash of its final state. */
+static unsigned long long run_fixture(const fixture *fx, cs_summary *out) {
     cs_error err;
-    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    cs_model *m = cs_model_create(&fx->barrier, &fx->vehicle, &fx->scenario, &err);
     if (!m) fail_msg("%s", err.message);
     cs_state *s = cs_state_create(m, &err);
     assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
@@ -20,6 +18,13 @@ static unsigned long long run_aps3_dt(cs_summary *out, double dt) {
     cs_state_free(s);
     cs_model_free(m);
     return h;
+}
+
+static unsigned long long run_aps3_dt(cs_summary *out, double dt) {
+    fixture fx;
+    fixture_aps3(&fx);
+    fx.scenario.dt = dt;
+    return run_fixture(&fx, out);
 }
 
 static unsigned long long run_aps3(cs_summary *out) {
@@ -74,19 +79,12 @@ static void long_barrier_solves_converge(void **state) {
     fx.barrier.end_anchor.x = 8.0 * (N + 1) * FT;
     fx.scenario.impact_x = 0.5 * fx.barrier.end_anchor.x;
     fx.scenario.t_end = 0.02;
-    cs_error err;
-    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
-    if (!m) fail_msg("%s", err.message);
-    cs_state *s = cs_state_create(m, &err);
-    assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
     cs_summary sm;
-    cs_state_summary(s, &sm);
+    run_fixture(&fx, &sm);
     printf("300 posts, 20 ms: %d steps above the tolerance (largest residual %.2g), ledger %.4f\n",
            sm.solver_warnings, sm.max_solver_residual, sm.energy_balance_error);
     assert_true(sm.solver_warnings <= 2);
     assert_true(fabs(sm.energy_balance_error) <= 0.01);
-    cs_state_free(s);
-    cs_model_free(m);
     free(posts);
 }
 
@@ -98,21 +96,14 @@ static void a_spent_solve_budget_ends_the_run(void **state) {
     fixture fx;
     fixture_aps3(&fx);
     fx.scenario.solve_budget = 0.02;
-    cs_error err;
-    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
-    if (!m) fail_msg("%s", err.message);
-    cs_state *s = cs_state_create(m, &err);
-    assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
     cs_summary sm;
-    cs_state_summary(s, &sm);
+    run_fixture(&fx, &sm);
     assert_int_equal(sm.outcome, CS_DID_NOT_CONVERGE);
     double budget = 0.02 * ceil(fx.scenario.t_end / fx.scenario.dt);
-    /* past the budget at its first solve over it: under one solve a step, at most budget steps */
+    /* it stops at its first solve past the budget; every step makes at least one, so by step `budget` */
     assert_true(sm.t_end_s > 0.0 && sm.t_end_s <= budget * fx.scenario.dt + 1e-12);
     assert_true(isfinite(sm.max_50ms_decel_g) && isfinite(sm.max_dynamic_penetration_m) &&
                 isfinite(sm.energy_balance_error));
-    cs_state_free(s);
-    cs_model_free(m);
 }
 
 int main(void) {

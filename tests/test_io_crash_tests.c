@@ -82,10 +82,6 @@ static int stored(const char *name, pinned *p) {
     return found;
 }
 
-static void close_to(const char *what, double got, double want) {
-    if (!(fabs(got - want) <= 1e-6 * fabs(want) + 1e-9)) fail_msg("%s: %.10g, pinned %.10g", what, got, want);
-}
-
 static void crash_tests_as_pinned(void **state) {
     (void)state;
     int update = getenv("CS_PIN_UPDATE") != NULL;
@@ -99,10 +95,10 @@ static void crash_tests_as_pinned(void **state) {
         if (stored(names[k], &want) != 0)
             fail_msg("%s: no row in tests/predictions/crash-tests.csv", names[k]);
         assert_string_equal(got.outcome, want.outcome);
-        close_to("time reached", got.t_s, want.t_s);
-        close_to("max 50-ms deceleration", got.decel_g, want.decel_g);
-        close_to("max penetration", got.penetration_m, want.penetration_m);
-        close_to("exit speed", got.exit_speed_mps, want.exit_speed_mps);
+        pinned_close_to("time reached", got.t_s, want.t_s);
+        pinned_close_to("max 50-ms deceleration", got.decel_g, want.decel_g);
+        pinned_close_to("max penetration", got.penetration_m, want.penetration_m);
+        pinned_close_to("exit speed", got.exit_speed_mps, want.exit_speed_mps);
         assert_int_equal(got.cables_broken, want.cables_broken);
         assert_int_equal(got.rotation, want.rotation);
         assert_int_equal(got.shear, want.shear);

@@ -79,10 +79,6 @@ static int stored(const char *name, pinned *p) {
     return found;
 }
 
-static void close_to(const char *what, double got, double want) {
-    if (!(fabs(got - want) <= 1e-6 * fabs(want) + 1e-9)) fail_msg("%s: %.10g, pinned %.10g", what, got, want);
-}
-
 static void roadside_tests_as_pinned(void **state) {
     (void)state;
     int update = getenv("CS_PIN_UPDATE") != NULL;
@@ -98,11 +94,11 @@ static void roadside_tests_as_pinned(void **state) {
         if (update) continue;
         if (stored(names[k], &want) != 0) fail_msg("%s: no row in tests/predictions/roadside.csv", names[k]);
         assert_string_equal(got.outcome, want.outcome);
-        close_to("time reached", got.t_s, want.t_s);
-        close_to("max deflection", got.deflection_m, want.deflection_m);
-        close_to("working width", got.working_width_m, want.working_width_m);
-        close_to("exit speed", got.exit_speed_mps, want.exit_speed_mps);
-        close_to("exit angle", got.exit_angle_deg, want.exit_angle_deg);
+        pinned_close_to("time reached", got.t_s, want.t_s);
+        pinned_close_to("max deflection", got.deflection_m, want.deflection_m);
+        pinned_close_to("working width", got.working_width_m, want.working_width_m);
+        pinned_close_to("exit speed", got.exit_speed_mps, want.exit_speed_mps);
+        pinned_close_to("exit angle", got.exit_angle_deg, want.exit_angle_deg);
         assert_int_equal(got.released, want.released);
         assert_int_equal(got.posts_failed, want.posts_failed);
         if (h != hashes[k])

@@ -9,35 +9,21 @@
 //        [--model FILE] [--t-end T]   the run (default examples/aps3.yaml, 55 ms: the 50-ms average exists)
 //        [--docs-shot FILE] [--docs-at F]   also the top of the page, replay at F of the run (0.6), 1200 x 1080
 //                             (docs/report.png)
-import { createRequire } from 'node:module';
 import { spawnSync } from 'node:child_process';
-import { existsSync, mkdirSync, mkdtempSync, rmSync, statSync } from 'node:fs';
+import { existsSync, mkdirSync, rmSync, statSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 
-const args = {};
-for (let i = 2; i < process.argv.length; i += 2) args[process.argv[i].replace(/^--/, '')] = process.argv[i + 1];
+import { check, chromiumPath, finish, launch, parseArgs } from './harness.mjs';
+
+const args = parseArgs();
 if (!args.modules || !args.out || (!args.cablesim && !args.report)) {
   console.error('usage: node report/test/browser.mjs --cablesim CABLESIM --modules NODE_MODULES --out DIR [--report FILE]');
   process.exit(2);
 }
 const out = resolve(args.out);
 mkdirSync(out, { recursive: true });
-const chromiumPath = process.env.CS_CHROMIUM || '/usr/bin/chromium';
 
-let passed = 0;
-let failed = 0;
-function check(what, ok, detail = '') {
-  if (ok) passed++;
-  else {
-    failed++;
-    console.log(`FAIL: ${what}${detail ? `: ${detail}` : ''}`);
-  }
-}
-function finish() {
-  console.log(`${passed} passed, ${failed} failed`);
-  process.exit(failed ? 1 : 0);
-}
 
 let report = args.report && resolve(args.report);
 if (!report) {
@@ -59,16 +45,7 @@ if (!existsSync(chromiumPath)) {
   finish();
 }
 
-const require = createRequire(join(resolve(args.modules), 'noop.js'));
-const { chromium } = require('playwright-core');
-const profile = mkdtempSync(join(out, 'profile-'));
-const context = await chromium.launchPersistentContext(profile, {
-  executablePath: chromiumPath,
-  headless: true,
-  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-  viewport: { width: 1400, height: 1000 },
-  deviceScaleFactor: 1,
-});
+const context = await launch(args.modules, out, { width: 1400, height: 1000 });
 const page = context.pages()[0] || (await context.newPage());
 const consoleErrors = [];
 const requests = [];
@@ -187,7 +164,7 @@ try {
   check('the browser session', false, e.stack || String(e));
 } finally {
   await context.close();
-  rmSync(profile, { recursive: true, force: true });
+  rmSync(context.profile, { recursive: true, force: true });
 }
 console.log(`screenshots: ${out}/{report-top,report-full,replay-start,replay-end,section-*}.png`);
 finish();

@@ -6,14 +6,14 @@
 // so no figure borrows another's. Screenshots go to OUT.
 //
 //   node report/test/pages.mjs --cablesim BUILD/cablesim --modules BUILD/report/node_modules --out DIR
-import { createRequire } from 'node:module';
 import { spawnSync } from 'node:child_process';
-import { existsSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 
-const args = {};
-for (let i = 2; i < process.argv.length; i += 2) args[process.argv[i].replace(/^--/, '')] = process.argv[i + 1];
+import { check, chromiumPath, finish, launch, parseArgs } from './harness.mjs';
+
+const args = parseArgs();
 if (!args.modules || !args.out || !args.cablesim) {
   console.error('usage: node report/test/pages.mjs --cablesim CABLESIM --modules NODE_MODULES --out DIR');
   process.exit(2);
@@ -21,21 +21,7 @@ if (!args.modules || !args.out || !args.cablesim) {
 const out = resolve(args.out);
 rmSync(out, { recursive: true, force: true });
 mkdirSync(out, { recursive: true });
-const chromiumPath = process.env.CS_CHROMIUM || '/usr/bin/chromium';
 
-let passed = 0;
-let failed = 0;
-function check(what, ok, detail = '') {
-  if (ok) passed++;
-  else {
-    failed++;
-    console.log(`FAIL: ${what}${detail ? `: ${detail}` : ''}`);
-  }
-}
-function finish() {
-  console.log(`${passed} passed, ${failed} failed`);
-  process.exit(failed ? 1 : 0);
-}
 function cablesim(...argv) {
   const r = spawnSync(args.cablesim, argv, { encoding: 'utf8' });
   check(`cablesim ${argv.join(' ')} exits 0`, r.status === 0, `${r.status} ${r.stderr}`);
@@ -60,15 +46,7 @@ if (!existsSync(chromiumPath)) {
   check(`a browser at ${chromiumPath}`, false, 'install Debian chromium (bash scripts/install-deps.sh)');
   finish();
 }
-const require = createRequire(join(resolve(args.modules), 'noop.js'));
-const { chromium } = require('playwright-core');
-const context = await chromium.launchPersistentContext(mkdtempSync(join(out, 'profile-')), {
-  executablePath: chromiumPath,
-  headless: true,
-  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync'],
-  viewport: { width: 1100, height: 900 },
-  deviceScaleFactor: 1,
-});
+const context = await launch(args.modules, out, { width: 1100, height: 900 });
 try {
   for (const p of pages) {
     check(`${p.name}: the page exists`, existsSync(p.file));

@@ -18,7 +18,8 @@ typedef struct csv_file {
     size_t size;
 } csv_file;
 
-static int read_all(const char *path, csv_file *f, char *why, size_t why_size) {
+/* The file at path in memory, NUL-terminated, and its number of lines (newlines) into *lines. */
+static int read_all(const char *path, csv_file *f, size_t *lines, char *why, size_t why_size) {
     FILE *in = fopen(path, "rb");
     if (!in) {
         snprintf(why, why_size, "%s: %s", path, strerror(errno));
@@ -43,6 +44,9 @@ static int read_all(const char *path, csv_file *f, char *why, size_t why_size) {
     }
     buf[n] = '\0';
     f->text = buf, f->size = n;
+    *lines = 0;
+    for (size_t i = 0; i < n; i++)
+        *lines += buf[i] == '\n';
     return 0;
 }
 
@@ -212,10 +216,8 @@ int cs_trace_read_run(const char *dir, cs_trace *tr, char *why, size_t why_size)
     char path[1200];
     snprintf(path, sizeof path, "%s/timeseries.csv", dir);
     csv_file f;
-    if (read_all(path, &f, why, why_size) != 0) return -1;
-    size_t rows = 0;
-    for (size_t i = 0; i < f.size; i++)
-        rows += f.text[i] == '\n';
+    size_t rows;
+    if (read_all(path, &f, &rows, why, why_size) != 0) return -1;
     enum { MAX_COLS = 4096 };
     char **cells = malloc(MAX_COLS * sizeof *cells), **head = malloc(MAX_COLS * sizeof *head);
     int *col = malloc(MAX_COLS * sizeof *col), rc = -1;
@@ -283,10 +285,8 @@ static int header_unit(const char *cell, char *unit, size_t size) {
 int cs_trace_read_measured(const char *path, cs_units *units, cs_trace *tr, char *why, size_t why_size) {
     clear(tr, path, 1);
     csv_file f;
-    if (read_all(path, &f, why, why_size) != 0) return -1;
-    size_t rows = 0;
-    for (size_t i = 0; i < f.size; i++)
-        rows += f.text[i] == '\n';
+    size_t rows;
+    if (read_all(path, &f, &rows, why, why_size) != 0) return -1;
     enum { MAX_COLS = 16 };
     char *head[MAX_COLS], *cells[MAX_COLS], *p = f.text, unit[64], text[96];
     int hcol[MAX_COLS], col[MAX_COLS], rc = -1, target[MAX_COLS];

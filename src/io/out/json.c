@@ -123,35 +123,35 @@ static void inputs(cs_wout *w, const cs_model_input *in) {
     fprintf(f, "}");
 }
 
-/* "cablesim": the version, the command line, its overrides and the model's hash. */
-static void provenance(cs_wout *w, int *first, const cs_run_info *info) {
-    FILE *f = w->f;
-    int pf = 1;
-    jkey(w, first, "cablesim");
-    fputc('{', f);
-    jkey(w, &pf, "version");
-    cs_json_string(f, CS_VERSION_STRING);
-    jkey(w, &pf, "command");
+void cs_json_provenance(FILE *f, const cs_run_info *info, cs_json_text_fn text) {
+    fputs("{\"version\":", f);
+    text(f, CS_VERSION_STRING);
+    fputs(",\"command\":", f);
     if (info && info->command)
-        cs_json_string(f, info->command);
+        text(f, info->command);
     else
         fputs("null", f);
-    jkey(w, &pf, "overrides");
-    fputc('[', f);
+    fputs(",\"overrides\":[", f);
     for (int i = 0; info && i < info->override_count; i++) {
         if (i) fputc(',', f);
-        cs_json_string(f, info->overrides[i]);
+        text(f, info->overrides[i]);
     }
-    fputc(']', f);
-    jkey(w, &pf, "model_hash");
+    fputs("],\"model_hash\":", f);
     if (info) {
         char hash[17];
         cs_model_hash_text(info->model_hash, hash);
-        cs_json_string(f, hash);
+        text(f, hash);
     } else {
         fputs("null", f);
     }
-    fputs("}\n", f);
+    fputc('}', f);
+}
+
+/* "cablesim": where the results come from, on a line of its own. */
+static void provenance(cs_wout *w, int *first, const cs_run_info *info) {
+    jkey(w, first, "cablesim");
+    cs_json_provenance(w->f, info, cs_json_string);
+    fputc('\n', w->f);
 }
 
 /* "ratings": each as run, in cs_rating_text's words with its parts. */

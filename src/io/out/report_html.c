@@ -330,31 +330,8 @@ static void write_frames(jw *j, const cs_record *r, int stride) {
 /* "cablesim": {version, command, overrides, model_hash} and "ratings": [{standard, label, text}]. */
 static void write_info(jw *j, int *first, const cs_run_info *info) {
     FILE *f = j->w.f;
-    int pf = 1;
     key(j, first, "cablesim");
-    fputc('{', f);
-    kstr(j, &pf, "version", CS_VERSION_STRING);
-    key(j, &pf, "command");
-    if (info && info->command)
-        jstr(f, info->command);
-    else
-        fputs("null", f);
-    key(j, &pf, "overrides");
-    fputc('[', f);
-    for (int i = 0; info && i < info->override_count; i++) {
-        if (i) fputc(',', f);
-        jstr(f, info->overrides[i]);
-    }
-    fputc(']', f);
-    key(j, &pf, "model_hash");
-    if (info) {
-        char hash[17];
-        cs_model_hash_text(info->model_hash, hash);
-        jstr(f, hash);
-    } else {
-        fputs("null", f);
-    }
-    fputc('}', f);
+    cs_json_provenance(f, info, jstr);
     key(j, first, "ratings");
     fputc('[', f);
     for (int i = 0; info && i < info->rating_count; i++) {

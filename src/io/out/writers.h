@@ -45,6 +45,11 @@ typedef struct cs_wout {
 void cs_w_num(cs_wout *w, double v, const char *what);
 /* Print s as a JSON string literal (quotes, backslashes and control characters escaped). */
 void cs_json_string(FILE *f, const char *s);
+/* A JSON string writer: cs_json_string, or a page's, which also escapes <, > and &. */
+typedef void (*cs_json_text_fn)(FILE *f, const char *s);
+/* The object of "cablesim" in summary.json and report.html: {"version", "command", "overrides",
+ * "model_hash"} (info NULL: the version alone, the rest null or empty), its strings written by text. */
+void cs_json_provenance(FILE *f, const cs_run_info *info, cs_json_text_fn text);
 
 /* More files to write into a run's folder before it commits (the command's report.html): each begun on
  * out. Returns 0, or -1 with why filled. */
