@@ -134,7 +134,7 @@ double cs_barrier_trial_energy(const cs_model *model, const cs_state *s, cs_work
 /* Stored plus dissipated energy of the barrier side; a sudden failure changes it with no work done. */
 double cs_barrier_stored_energy(const cs_model *model, const cs_state *s) {
     double e = s->e_cable_plastic + s->e_post_plastic + s->e_post_damping + s->e_soil + s->e_crush +
-               s->e_friction + s->e_rail_plastic + cs_rail_stored_energy(model, s);
+               s->e_friction + s->e_rail_plastic + s->e_rail_elastic;
     for (int c = 0; c < model->cable_count; c++)
         e += cs_cable_stored_energy(&model->cables[c], &s->cables[c]);
     for (int p = 0; p < model->post_count; p++)

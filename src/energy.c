@@ -39,7 +39,7 @@ void cs_energy_update(const cs_model *model, cs_state *s) {
         e->anchor_elastic += cs_anchor_stored_energy(model, s, a, &kinetic);
         e->anchor_kinetic += kinetic;
     }
-    e->rail_elastic = cs_rail_stored_energy(model, s);
+    e->rail_elastic = s->e_rail_elastic;
     e->rail_plastic = s->e_rail_plastic;
     e->cable_plastic = s->e_cable_plastic;
     e->post_plastic = s->e_post_plastic;

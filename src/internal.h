@@ -198,6 +198,7 @@ struct cs_state {
     double *rail_plastic; /* [rail_count * post_count] each span's plastic change of length, m (rail.c) */
     double *rail_pos;     /* [post_count * rail_count * 3] each post's rail points where it was last placed */
     double *rail_tilt;    /* [post_count * 2] the tilt they were placed at */
+    double e_rail_elastic; /* the rails' elastic energy at the last commit, J (rail.c) */
 
     /* energy accumulators, J: the barrier's (friction: over supports and on the face) and the tyres' */
     double e_rail_plastic, e_cable_plastic, e_post_plastic, e_post_damping, e_soil, e_crush, e_friction,
@@ -386,7 +387,6 @@ void cs_rail_moment(const cs_model *model, const cs_state *s, int p, const doubl
  * span starting there (0 where it does not act); added in that order they make cs_rail_moment's sum. */
 void cs_rail_moments(const cs_model *model, const cs_state *s, const double *axes, double *rails);
 void cs_rail_commit(const cs_model *model, cs_state *s);
-double cs_rail_stored_energy(const cs_model *model, const cs_state *s);
 /* The neighbours post p is tied to by rails now (-1: none); returns whether it has any. */
 int cs_rail_ties(const cs_model *model, const cs_state *s, int p, int *left, int *right);
 

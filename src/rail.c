@@ -140,32 +140,26 @@ void cs_rail_jacobian(const cs_model *model, const cs_state *s, const cs_rows *r
     }
 }
 
-/* End of step: each acting segment's plastic (or buckled) change of length and its work. */
+/* End of step: each acting segment's plastic (or buckled) change of length and its work, and the elastic
+ * energy the rails hold as committed, sum N^2 L0 / (2 EA) (the return leaves N as it was, so it is taken
+ * from the same bar). The ledger reads that sum only on committed states (step.c), so it is kept here
+ * rather than found afresh from every segment at each of its four readings a step. */
 void cs_rail_commit(const cs_model *model, cs_state *s) {
+    s->e_rail_elastic = 0.0;
     for (int r = 0; r < model->rail_count; r++) {
         const cs_rail_model *rm = &model->rails[r];
         for (int k = 0; k + 1 < model->post_count; k++) {
             if (!segment_acts(model, s, k)) continue;
             bar b = bar_at(model, s, r, k, s->posts[k].tilt, s->posts[k + 1].tilt);
+            double l0 = model->posts[k + 1].x - model->posts[k].x;
+            s->e_rail_elastic += 0.5 * b.n * b.n * l0 / rm->ea;
             if (!b.capped) continue;
             size_t at = (size_t)r * (size_t)model->post_count + (size_t)k;
-            double l0 = model->posts[k + 1].x - model->posts[k].x;
             double slip = b.l - l0 - s->rail_plastic[at] - b.n * l0 / rm->ea; /* beyond the elastic part */
             s->rail_plastic[at] += slip;
             s->e_rail_plastic += fabs(b.n * slip);
         }
     }
-}
-
-double cs_rail_stored_energy(const cs_model *model, const cs_state *s) {
-    double e = 0.0;
-    for (int r = 0; r < model->rail_count; r++)
-        for (int k = 0; k + 1 < model->post_count; k++) {
-            if (!segment_acts(model, s, k)) continue;
-            bar b = bar_at(model, s, r, k, s->posts[k].tilt, s->posts[k + 1].tilt);
-            e += 0.5 * b.n * b.n * (model->posts[k + 1].x - model->posts[k].x) / model->rails[r].ea;
-        }
-    return e;
 }
 
 int cs_rail_ties(const cs_model *model, const cs_state *s, int p, int *left, int *right) {
