@@ -168,22 +168,36 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
 
 const cs_row_kind cs_anchor_rows = {2, residual, jacobian};
 
-/* End of step: the slide's rate and its implicit integration's damping, the plastic slide (radial
- * return) and its work, the resistance, and the ropes' uplift. */
+/* End of step: the slide's rate and what its implicit integration dissipates, the plastic slide (radial
+ * return) and its work, the resistance, and the ropes' uplift.
+ * Backward Euler gives M (v - v_c) = h F(u), F the net force (the ropes' pull less the soil's resistance)
+ * at the step's end, so the kinetic energy changes by F(u) du - M |v - v_c|^2 / 2, where the forces'
+ * energies (the ropes' and the soil's, state functions) change by about -(F_c + F(u)) du / 2 over the
+ * step. The step thus takes M |v - v_c|^2 / 2 + (F_c - F(u)) du / 2 out of the motion: for a spring of
+ * stiffness k, M |dv|^2 / 2 + k |du|^2 / 2. Both parts are booked (as damping), as the work of F by the
+ * trapezoid rule less the kinetic energy's change: on a dead-man tied to stiff ropes the second is as
+ * large as the first (docs/theory.md, "Anchorage in the soil"). */
 void cs_anchor_commit(const cs_model *model, cs_state *s) {
     for (int a = 0; a < 2; a++) {
         const cs_anchor_model *am = &model->anchors[a];
         cs_anchor_state *as = &s->anchors[a];
         if (am->rigid || as->failed) continue;
+        double f[3], q[2];
+        ropes_pull(model, s, a, NULL, f);
+        resistance(am, as, as->u, q);
+        double net[2] = {f[0] - q[0], f[1] - q[1]};
         if (s->h > 0.0 && s->h < HUGE_VAL) {
-            double w0 = (as->u[0] - as->u_commit[0]) / s->h, w1 = (as->u[1] - as->u_commit[1]) / s->h;
-            double d0 = w0 - as->rate[0], d1 = w1 - as->rate[1];
-            s->e_post_damping += 0.5 * am->mass * (d0 * d0 + d1 * d1);
+            double du0 = as->u[0] - as->u_commit[0], du1 = as->u[1] - as->u_commit[1];
+            double w0 = du0 / s->h, w1 = du1 / s->h;
+            double kinetic =
+                0.5 * am->mass * (w0 * w0 + w1 * w1 - as->rate[0] * as->rate[0] - as->rate[1] * as->rate[1]);
+            s->e_post_damping += 0.5 * ((as->net[0] + net[0]) * du0 + (as->net[1] + net[1]) * du1) - kinetic;
             as->rate[0] = w0, as->rate[1] = w1;
         } else if (s->h > 0.0) { /* h infinite: settled at rest; h = 0, a re-solve at an instant: it keeps
                                   * the rate it had, as a post does */
             as->rate[0] = as->rate[1] = 0.0;
         }
+        as->net[0] = net[0], as->net[1] = net[1];
         as->u_commit[0] = as->u[0], as->u_commit[1] = as->u[1];
         double tr[2] = {am->stiffness * (as->u[0] - as->plastic[0]),
                         am->stiffness * (as->u[1] - as->plastic[1])};
@@ -198,8 +212,6 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
             }
         }
         resistance(am, as, as->u, as->force);
-        double f[3];
-        ropes_pull(model, s, a, NULL, f);
         as->uplift = f[2] > 0.0 ? f[2] : 0.0;
     }
 }

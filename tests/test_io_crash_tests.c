@@ -23,8 +23,8 @@
 enum { TESTS = 3 };
 static const char *const names[TESTS] = {"aps1", "aps3", "aps4"};
 /* cs_state_hash of each run's final state */
-static const unsigned long long hashes[TESTS] = {0x28bb94cf144eaf8aULL, 0x4cd787e37e3e4314ULL,
-                                                 0x09bc84d8aeae0cbdULL};
+static const unsigned long long hashes[TESTS] = {0x2959bdcd247703c1ULL, 0xea777b57a434c191ULL,
+                                                 0x6247df41eded353aULL};
 
 typedef struct pinned {
     char outcome[32];
