@@ -137,7 +137,9 @@ void cs_cable_commit(const cs_model *model, int c, cs_state *s) {
         if (slide == 0.0) continue;
         double sl = cs->m[i] - cs->m[i - 1], sr = cs->m[i + 1] - cs->m[i];
         double stretch = 0.5 * (cs_span_length(cs, i - 1) / sl + cs_span_length(cs, i) / sr);
-        s->e_friction += fabs(slide) * fabs(cs->tension[i - 1] - cs->tension[i]) * stretch;
+        /* with its sign: the rounded stick/slip switch lets a nearly straight support carry a small
+         * difference of either sign while rope runs across it (docs/theory.md, Capstan friction) */
+        s->e_friction += slide * (cs->tension[i - 1] - cs->tension[i]) * stretch;
     }
     memcpy(cs->m_commit, cs->m, (size_t)cs->node_count * sizeof *cs->m);
     if (tmax > cs->max_tension_seen) cs->max_tension_seen = tmax;

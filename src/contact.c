@@ -196,7 +196,7 @@ void cs_contact_commit(const cs_model *model, cs_state *s) {
             int k = cs_node_corner(cs->node[i]);
             double fz, fn;
             cs_contact_face_force(model, s, c, i, NULL, &fz, &fn);
-            s->e_friction += fabs(cs->corner_z[k] - cs->corner_z_commit[k]) * fabs(fz);
+            s->e_friction += (cs->corner_z[k] - cs->corner_z_commit[k]) * fz;
             cs->corner_z_commit[k] = cs->corner_z[k];
         }
     }
