@@ -185,6 +185,8 @@ static void draw_ticks(cs_plot *p, const cs_axes *a) {
     const cs_box *b = &a->area;
     cairo_set_line_width(cr, 1);
     for (double v = first_tick(a->x0, a->xstep); v <= a->x1 + 1e-9 * a->xstep; v += a->xstep) {
+        int cat = (int)lround(v);
+        if (a->xcat && (cat < 0 || cat >= a->xcat_count)) continue;
         double x = round(cs_axes_px(a, v)) + 0.5;
         set_color(cr, GRID);
         cairo_move_to(cr, x, b->y);
@@ -195,7 +197,8 @@ static void draw_ticks(cs_plot *p, const cs_axes *a) {
         cairo_line_to(cr, x, b->y + b->h + 5);
         cairo_stroke(cr);
         tick_label(buf, sizeof buf, v, a->xstep);
-        draw_text(p, NULL, x, b->y + b->h + 8 + 0.6 * TICK_FONT, TICK_FONT, 0, 0.5, 0, 0, buf);
+        draw_text(p, NULL, x, b->y + b->h + 8 + (0.6 + (a->xcat ? 1.2 * (cat % 2) : 0)) * TICK_FONT,
+                  TICK_FONT, 0, 0.5, 0, 0, a->xcat ? a->xcat[cat] : buf);
     }
     for (double v = first_tick(a->y0, a->ystep); v <= a->y1 + 1e-9 * a->ystep; v += a->ystep) {
         double y = round(cs_axes_py(a, v)) + 0.5;
@@ -229,7 +232,7 @@ void cs_axes_layout(cs_plot *p, cs_axes *a, cs_box panel) {
     sane_range(&a->x0, &a->x1);
     sane_range(&a->y0, &a->y1);
     double top = a->title ? 2.2 * TITLE_FONT : 12,
-           bottom = 1.6 * TICK_FONT + 14 + (a->xlabel ? 1.8 * LABEL_FONT : 0);
+           bottom = (a->xcat ? 2.8 : 1.6) * TICK_FONT + 14 + (a->xlabel ? 1.8 * LABEL_FONT : 0);
     double label_left = a->ylabel ? 1.8 * LABEL_FONT : 0, label_right = a->y2label ? 1.8 * LABEL_FONT : 0;
     int xt = (int)fmax(3, panel.w / 130), yt = (int)fmax(3, panel.h / 70);
     if (a->equal) {
@@ -250,7 +253,7 @@ void cs_axes_layout(cs_plot *p, cs_axes *a, cs_box panel) {
             a->y1 += 0.03 * span;
             if (a->y0 < 0) a->y0 -= 0.03 * span;
         }
-        a->xstep = cs_plot_nice_step(a->x0, a->x1, xt);
+        a->xstep = a->xcat ? 1 : cs_plot_nice_step(a->x0, a->x1, xt);
         a->ystep = cs_plot_nice_step(a->y0, a->y1, yt);
         if (!a->fix_x)
             a->x0 = floor(a->x0 / a->xstep + 1e-9) * a->xstep,
@@ -281,8 +284,9 @@ void cs_axes_layout(cs_plot *p, cs_axes *a, cs_box panel) {
         draw_text(p, NULL, b->x + 0.5 * b->w, panel.y + 0.95 * TITLE_FONT, TITLE_FONT, 1, 0.5, 0, 0,
                   a->title);
     if (a->xlabel)
-        draw_text(p, NULL, b->x + 0.5 * b->w, b->y + b->h + 14 + 1.6 * TICK_FONT + 0.8 * LABEL_FONT,
-                  LABEL_FONT, 0, 0.5, 0, 0, a->xlabel);
+        draw_text(p, NULL, b->x + 0.5 * b->w,
+                  b->y + b->h + 14 + (a->xcat ? 2.8 : 1.6) * TICK_FONT + 0.8 * LABEL_FONT, LABEL_FONT, 0, 0.5,
+                  0, 0, a->xlabel);
     if (a->ylabel)
         draw_text(p, NULL, panel.x + 0.9 * LABEL_FONT, b->y + 0.5 * b->h, LABEL_FONT, 0, 0.5, -PI / 2, 0,
                   a->ylabel);

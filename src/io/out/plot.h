@@ -79,6 +79,8 @@ typedef struct cs_axes {
     int equal;                   /* a view: one unit is as long on x as on y */
     int fix_x, fix_y;            /* keep the range as set, do not round it out to ticks */
     double legend_width;         /* space kept on the right for an outside legend */
+    const char *const *xcat;     /* categories: x ticks at 0, 1, ... named so (on two staggered rows) */
+    int xcat_count;
     double x0, x1, y0, y1;       /* data range */
     double xstep, ystep, y2step; /* tick spacing, set by layout */
     cs_box area;                 /* plotting area, set by layout */
