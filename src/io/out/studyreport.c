@@ -299,7 +299,8 @@ int cs_study_write_page(FILE *f, const cs_sweep_spec *spec, const double *x, con
     cs_html_text(f, spec->file);
     fputs("</title>\n<style>body{font-family:sans-serif;margin:1.5em;max-width:1000px}table{border-collapse:"
           "collapse;margin:0.5em 0}td,th{border:1px solid #bbb;padding:3px 8px;text-align:right}"
-          "td:first-child,th:first-child{text-align:left}svg{max-width:100%;height:auto}"
+          "td:first-child,th:first-child,#inputs td:nth-child(-n+3),#inputs "
+          "th:nth-child(-n+3){text-align:left}svg{max-width:100%;height:auto}"
           "@media print{svg{page-break-inside:avoid}}</style></head><body>\n<h1>Study: ",
           f);
     cs_html_text(f, spec->file);
