@@ -346,6 +346,30 @@ static void write_footing(jw *j, int *first, const cs_footing_def *f, const char
     kcapacity(j, first, "pullout_capacity_n", f->pullout_capacity, pullout_rule);
 }
 
+/* A struct's doubles by name and place. */
+typedef struct field {
+    const char *key;
+    size_t offset;
+} field;
+
+static const field rope_fields[] = {{"diameter_m", offsetof(cs_rope_def, diameter)},
+                                    {"area_m2", offsetof(cs_rope_def, area)},
+                                    {"strength_n", offsetof(cs_rope_def, nominal_strength)},
+                                    {"modulus_pa", offsetof(cs_rope_def, modulus)}};
+static const field section_fields[] = {{"plastic_modulus_m3", offsetof(cs_section_def, plastic_modulus)},
+                                       {"inertia_m4", offsetof(cs_section_def, inertia)},
+                                       {"yield_stress_pa", offsetof(cs_section_def, yield_stress)},
+                                       {"modulus_pa", offsetof(cs_section_def, modulus)},
+                                       {"mass_per_length_kg_m", offsetof(cs_section_def, mass_per_length)}};
+
+static void kfields(jw *j, int *first, const void *base, const field *fields, size_t count) {
+    for (size_t k = 0; k < count; k++) {
+        double v;
+        memcpy(&v, (const char *)base + fields[k].offset, sizeof v);
+        knum(j, first, fields[k].key, v);
+    }
+}
+
 /* Two posts of one kind: all but their place alike. */
 static int same_kind(const cs_post_def *a, const cs_post_def *b) {
     const cs_section_def *s = &a->section, *t = &b->section;
@@ -370,10 +394,7 @@ static void write_design(jw *j, int *first, const cs_barrier_def *b) {
         int rf = 1;
         fputs(c ? ",{" : "{", f);
         knum(j, &rf, "height_m", cd->height);
-        knum(j, &rf, "diameter_m", cd->rope.diameter);
-        knum(j, &rf, "area_m2", cd->rope.area);
-        knum(j, &rf, "strength_n", cd->rope.nominal_strength);
-        knum(j, &rf, "modulus_pa", cd->rope.modulus);
+        kfields(j, &rf, &cd->rope, rope_fields, sizeof rope_fields / sizeof rope_fields[0]);
         knum(j, &rf, "pretension_n", cd->pretension);
         kstr(j, &rf, "termination", cs_termination_word(cd->termination));
         knum(j, &rf, "termination_efficiency",
@@ -395,11 +416,7 @@ static void write_design(jw *j, int *first, const cs_barrier_def *b) {
         fputc(']', f);
         pf = 0;
         knum(j, &pf, "height_m", pd->height);
-        knum(j, &pf, "plastic_modulus_m3", pd->section.plastic_modulus);
-        knum(j, &pf, "inertia_m4", pd->section.inertia);
-        knum(j, &pf, "yield_stress_pa", pd->section.yield_stress);
-        knum(j, &pf, "modulus_pa", pd->section.modulus);
-        knum(j, &pf, "mass_per_length_kg_m", pd->section.mass_per_length);
+        kfields(j, &pf, &pd->section, section_fields, sizeof section_fields / sizeof section_fields[0]);
         knum(j, &pf, "rotation_limit_rad", pd->rotation_limit);
         kstr(j, &pf, "attachment", cs_attachment_word(pd->attachment));
         key(j, &pf, "footing");
