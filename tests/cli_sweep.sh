@@ -59,6 +59,24 @@ check "study: report.html has the 19 figures inline" '[ "$(grep -o "<svg" "$tmp/
 stopped=$(awk -F, 'NR > 1 && $5 == "stopped"' "$runs" | wc -l)
 check "study: report.html counts the stopped runs as runs.csv does" 'grep -q "<tr><td>stopped</td><td>$stopped</td>" "$tmp/lhs-1/report.html"'
 check "study: the same figures on 1 and 2 threads" 'cmp "$tmp/lhs-1/plots/study-outcomes.png" "$tmp/lhs-2/plots/study-outcomes.png" && cmp "$tmp/lhs-1/report.html" "$tmp/lhs-2/report.html"'
+# the study's page gives the inputs in the spec's units: the soil pressure in psf (at least its 4000-psf
+# minimum), the speed in mph (38-42), the rope tension in kN
+page="$tmp/lhs-1/report.html"
+check "study: the inputs' table in the spec's units" 'grep -qE "<tr><td>barrier.soil.soil_pressure</td><td>normal: mean 8000 psf, sd 1000 psf, min 4000 psf</td><td>psf</td><td>[0-9.]+</td>" "$page" && grep -qE "<tr><td>scenario.speed</td><td>[^<]*</td><td>mph</td>" "$page"'
+check "study: the inputs' values in those units" 'grep -oE "<tr><td>(barrier.soil.soil_pressure|scenario.speed)</td><td>[^<]*</td><td>[a-z]+</td><td>[0-9.e+]+</td><td>[0-9.e+]+</td><td>[0-9.e+]+</td>" "$page" | sed -E "s/<\/?t[dr]>/ /g" | awk "\$3 == \"psf\" && (\$4 < 4000 || \$6 > 12000) { bad = 1 } \$3 == \"mph\" && (\$4 < 38 || \$6 > 42) { bad = 1 } END { exit bad || NR != 2 }"'
+check "study: the rope tension in kN" 'grep -q "<tr><td>max rope tension (kN)</td>" "$page"'
+# a run that breaks through: runs.csv gives no penetration, only how far it got, as summary.json does
+"$cs" sweep tests/sweep/through.yaml -o "$tmp/through" --quiet >"$tmp/through.out" 2>&1
+check "through: exits 0" '[ $? -eq 0 ] || { cat "$tmp/through.out"; false; }'
+col() { head -1 "$1" | tr , "\n" | grep -nxF -- "$2" | cut -d: -f1; }
+pen=$(col "$tmp/through/runs.csv" "max_dynamic_penetration [m]")
+beyond=$(col "$tmp/through/runs.csv" "penetration_beyond [m]")
+check "through: both runs broke through" '[ "$(grep -c ",breakthrough," "$tmp/through/runs.csv")" -eq 2 ]'
+check "through: no penetration, how far it got beyond" '[ "$(cut -d, -f"$pen" "$tmp/through/runs.csv" | tail -n +2 | tr "\n" " ")" = "  " ] && cut -d, -f"$beyond" "$tmp/through/runs.csv" | tail -n +2 | awk "!(\$1 > 4) { bad = 1 } END { exit bad || NR != 2 }"'
+"$cs" run examples/aps3.yaml --set "scenario.speed=40 mph" --set "barrier.cables[0].pretension=22241.1" -o "$tmp/through-run" >/dev/null 2>&1
+single=$(grep -o '"penetration_beyond_m":[0-9.e+-]*' "$tmp/through-run/summary.json" | cut -d: -f2)
+check "through: beyond as the single run's summary.json has it" 'grep -q "\"max_dynamic_penetration_m\":null" "$tmp/through-run/summary.json" && awk -F, -v s="$single" -v c="$beyond" "NR == 3 { d = \$c - s; exit !(s > 4 && d * d < 1e-12) }" "$tmp/through/runs.csv"'
+check "through: a force given in N is shown in kN" 'grep -q "<tr><td>barrier.cables\[0\].pretension</td><td>levels: 22241.1</td><td>kN</td><td>22.2411</td>" "$tmp/through/report.html"'
 check "plot: summary.md names each plot, what it shows and what it leaves out" 'grep -qxF -- "- \`plots/max_barrier_deflection-vs-spacing.png\`: max_barrier_deflection against barrier.posts[0].spacing, a line per vehicle: 6 of 6 runs shown, 0 broke through (marked with a cross); left out: 0 that did not run to the end." "$tmp/plot-1/summary.md" && grep -qxF -- "- \`plots/exit_speed-vs-spacing.svg\`: exit_speed against barrier.posts[0].spacing, a line per vehicle: 0 of 6 runs shown, 0 broke through (marked with a cross); left out: 0 that did not run to the end, 6 with no exit_speed." "$tmp/plot-1/summary.md"'
 check "plot: the outputs line names the plots" 'grep -qxF "outputs: $tmp/plot-1/{runs.csv,summary.md,summary.json,report.html,plots/study-*.png,plots/max_barrier_deflection-vs-spacing.png,plots/exit_speed-vs-spacing.svg}" "$tmp/plot-1.out"'
 check "plot: the runs are the grid's, spacing slowest" '[ "$(cut -d, -f2,3 "$tmp/plot-1/runs.csv" | tail -n +2 | tr "\n" " ")" = "4,2270P 4,1100C 2,2270P 2,1100C 6,2270P 6,1100C " ]'
@@ -83,7 +101,7 @@ check "runs.nc the same on 1 and 2 threads" 'cmp "$tmp/nc-1/runs.nc" "$tmp/nc-2/
 check "runs.csv the same with --netcdf" 'cmp "$tmp/nc-1/runs.csv" "$runs"'
 check "runs.nc: as many runs as runs.csv" '[ "$(ncdump -h "$nc" | grep -oE "^\s*run = [0-9]+" | grep -oE "[0-9]+")" -eq "$(($(wc -l <"$runs") - 1))" ]'
 check "runs.nc: runs.csv's speeds, within 38-42 mph" 'paste -d, <(nc_column "$nc" scenario_speed) <(cut -d, -f4 "$runs" | tail -n +2) | awk -F, "\$1 < 38 * 0.44704 || \$1 > 42 * 0.44704 || \$1 != \$2 { bad = 1 } END { exit bad || NR != 4 }"'
-check "runs.nc: runs.csv's penetrations in full (the CSV's 10 digits)" 'paste -d, <(nc_column "$nc" max_dynamic_penetration) <(cut -d, -f10 "$runs" | tail -n +2) | awk -F, "!(\$1 > 0.05) || (\$1 - \$2) ^ 2 > (5e-10 * \$2) ^ 2 { bad = 1 } END { exit bad || NR != 4 }"'
+check "runs.nc: runs.csv's penetrations in full (the CSV's 10 digits)" 'paste -d, <(nc_column "$nc" penetration_beyond) <(cut -d, -f11 "$runs" | tail -n +2) | awk -F, "!(\$1 > 0.05) || (\$1 - \$2) ^ 2 > (5e-10 * \$2) ^ 2 { bad = 1 } END { exit bad || NR != 4 }"'
 check "runs.nc: units and CF" 'ncdump -h "$nc" | grep -q "scenario_speed:units = \"m/s\"" && ncdump -h "$nc" | grep -q ":Conventions = \"CF-1.8\""'
 sed "s|^model: .*|model: $PWD/examples/aps3.yaml|; s|^seed: 7|&\nnetcdf: true|" tests/sweep/lhs.yaml >"$tmp/lhs-nc.yaml"
 "$cs" sweep "$tmp/lhs-nc.yaml" -o "$tmp/nc-spec" --quiet >/dev/null 2>&1

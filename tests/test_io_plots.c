@@ -1,6 +1,10 @@
-/* Plots: the plotting layer puts a known value on the expected pixel, and every figure of a synthetic
- * run comes out as a PNG of the stated size that is not blank, and as well-formed SVG and PDF; the set
- * written through an output directory is complete and leaves no temporaries. */
+/* Plots: the plotting layer puts a known value on the expected pixel and keeps a label inside its frame
+ * at every corner, and every figure of a synthetic run comes out as a PNG of the stated size that is not
+ * blank, and as well-formed SVG and PDF; traced, every text of every figure lies inside its frame (a
+ * label inside its plotting area, the rest inside the figure), the time axes end at the run's end, the
+ * top views are at true scale with the whole vehicle in them, and the posts' legend names a post that is
+ * the mirror image of another; the set written through an output directory is complete and leaves no
+ * temporaries. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <setjmp.h>
@@ -210,6 +214,55 @@ static void test_known_value_lands_on_its_pixel(void **state) {
     tmp_remove(&d, names, 3);
 }
 
+/* Every text of a traced drawing inside its frame (half a pixel of slack), none left out of the log. */
+static void check_texts_inside(const cs_plot_log *log, const char *what) {
+    if (log->text_count > CS_PLOT_LOG_TEXTS)
+        fail_msg("%s: %d texts, more than the log keeps", what, log->text_count);
+    for (int i = 0; i < log->text_count; i++) {
+        const cs_plot_logged_text *t = &log->text[i];
+        const cs_box *b = &t->box, *f = &t->frame;
+        if (b->x < f->x - 0.5 || b->y < f->y - 0.5 || b->x + b->w > f->x + f->w + 0.5 ||
+            b->y + b->h > f->y + f->h + 0.5)
+            fail_msg("%s: '%s' at x %.1f-%.1f, y %.1f-%.1f is not inside its frame x %.1f-%.1f, y %.1f-%.1f",
+                     what, t->text, b->x, b->x + b->w, b->y, b->y + b->h, f->x, f->x + f->w, f->y,
+                     f->y + f->h);
+    }
+}
+
+/* Labels at the four corners of a panel and at its middle, each offset outward. */
+static int draw_corner_labels(cs_plot *p, const void *user, char *why, size_t why_size) {
+    (void)user, (void)why, (void)why_size;
+    cs_axes a;
+    cs_axes_init(&a, "labels", "x (m)", "y (kN)");
+    cs_axes_set_x(&a, 0, 10);
+    cs_axes_set_y(&a, 0, 4);
+    cs_axes_layout(p, &a, (cs_box){0, 0, p->width, p->height});
+    const double at[][4] = {
+        {0, 0, -12, 16}, {10, 0, 12, 16}, {0, 4, -12, -16}, {10, 4, 12, -16}, {5, 2, 12, -16}};
+    for (int k = 0; k < 5; k++)
+        for (int align = 0; align <= 2; align++)
+            cs_plot_label(p, &a, at[k][0], at[k][1], at[k][2], at[k][3], 0.5 * align,
+                          "a long note: max 3.55 g at t = 0.418 s");
+    return 0;
+}
+
+static void test_labels_stay_inside_the_frame(void **state) {
+    (void)state;
+    cs_plot_log *log = calloc(1, sizeof *log);
+    assert_non_null(log);
+    char why[256] = "";
+    if (cs_plot_trace(640, 400, draw_corner_labels, NULL, log, why, sizeof why) != 0) fail_msg("%s", why);
+    assert_int_equal(log->panel_count, 1);
+    assert_int_equal(log->text_count > 15, 1);
+    int labels = 0;
+    for (int i = 0; i < log->text_count; i++)
+        labels += strncmp(log->text[i].text, "a long note", 11) == 0 &&
+                  memcmp(&log->text[i].frame, &log->panel[0].area, sizeof(cs_box)) == 0;
+    assert_int_equal(labels, 15);
+    check_texts_inside(log, "corner labels");
+    free(log);
+}
+
 /* ---- the figures of a synthetic run ---- */
 
 /* A 2000-kg car at 10 m/s head-on into two cables on six posts, decelerating at a steady 2 g: cable 0
@@ -379,6 +432,114 @@ static void test_runs_of_one_frame_and_none(void **state) {
     write_every_figure(0);
 }
 
+/* Trace figure k of s into log. */
+static void trace(synthetic *s, cs_figure k, cs_plot_log *log) {
+    char why[512] = "";
+    if (cs_figure_trace(k, &s->d, log, why, sizeof why) != 0) fail_msg("%s: %s", cs_figure_name(k), why);
+}
+
+static void test_every_text_inside_its_frame(void **state) {
+    (void)state;
+    synthetic *s = synthetic_new(FRAMES);
+    cs_plot_log *log = calloc(1, sizeof *log);
+    assert_non_null(log);
+    for (int pass = 0; pass < 2; pass++) {
+        if (pass == 1) /* the largest 50-ms average at the very end: its note must not leave the frame */
+            for (int i = 0; i < FRAMES; i++)
+                s->rec.vehicle[i].decel_50ms_g =
+                    s->rec.vehicle[i].t > 0.05 ? 1 + 10 * s->rec.vehicle[i].t : 0;
+        for (int k = 0; k < CS_FIG_COUNT; k++) {
+            trace(s, (cs_figure)k, log);
+            assert_true(log->text_count > 5);
+            check_texts_inside(log, cs_figure_name((cs_figure)k));
+        }
+    }
+    free(log);
+    synthetic_free(s, NULL, 0);
+}
+
+/* Every time axis runs from 0 to the last frame's time, not to the next round tick. */
+static void test_time_axes_end_at_the_run_end(void **state) {
+    (void)state;
+    synthetic *s = synthetic_new(FRAMES);
+    s->rec.frame_count = 287; /* the run ends at 0.286 s, between ticks */
+    cs_plot_log *log = calloc(1, sizeof *log);
+    assert_non_null(log);
+    static const cs_figure timed[] = {CS_FIG_DECELERATION, CS_FIG_SPEED, CS_FIG_PENETRATION,
+                                      CS_FIG_CABLES,       CS_FIG_POSTS, CS_FIG_ENERGY};
+    for (size_t k = 0; k < sizeof timed / sizeof timed[0]; k++) {
+        trace(s, timed[k], log);
+        assert_true(log->panel_count >= 1);
+        for (int i = 0; i < log->panel_count; i++)
+            if (fabs(log->panel[i].x0) > 1e-12 || fabs(log->panel[i].x1 - 0.286) > 1e-9)
+                fail_msg("%s: its time axis runs from %g to %g s, the run from 0 to 0.286 s",
+                         cs_figure_name(timed[k]), log->panel[i].x0, log->panel[i].x1);
+    }
+    free(log);
+    s->rec.frame_count = FRAMES;
+    synthetic_free(s, NULL, 0);
+}
+
+/* The snapshots' views are at true scale (as many metres a pixel across as up, within 1%), and each top
+ * view holds the whole vehicle at its time: the synthetic car, yawed to +y, spans x 19.1-20.9 m and
+ * from 2.5 m behind its centre of gravity to its crushed face. */
+static void test_top_views_true_scale_whole_vehicle(void **state) {
+    (void)state;
+    synthetic *s = synthetic_new(FRAMES);
+    cs_plot_log *log = calloc(1, sizeof *log);
+    assert_non_null(log);
+    trace(s, CS_FIG_SNAPSHOTS, log);
+    int views = 0, tops = 0;
+    for (int i = 0; i < log->panel_count; i++) {
+        const cs_plot_logged_panel *q = &log->panel[i];
+        if (!q->equal) continue;
+        views++;
+        double sx = q->area.w / (q->x1 - q->x0), sy = q->area.h / (q->y1 - q->y0);
+        if (fabs(sx / sy - 1) > 0.01) fail_msg("%s: %.3f px/m across, %.3f px/m up", q->title, sx, sy);
+        double t;
+        if (!strstr(q->title, "top view")) continue;
+        assert_int_equal(sscanf(q->title, "t = %lf s", &t), 1);
+        const cs_vehicle_view *v = &s->rec.vehicle[(int)lround(t * 1e3)];
+        double rear = v->position[1] - s->in.vehicle.cg_to_rear, face = v->front_corners[0][1];
+        if (q->x0 > 19.1 || q->x1 < 20.9 || q->y0 > rear || q->y1 < face)
+            fail_msg("%s shows x %.2f-%.2f m, y %.2f-%.2f m: the vehicle spans x 19.1-20.9 m, y %.2f-%.2f m",
+                     q->title, q->x0, q->x1, q->y0, q->y1, rear, face);
+        tops++;
+    }
+    assert_int_equal(views, 12);
+    assert_int_equal(tops, 6);
+    free(log);
+    synthetic_free(s, NULL, 0);
+}
+
+/* The posts nearest x = 20 are 17 and 23 m (posts 2 and 3, loaded alike), then 10 and 30 m (posts 1 and
+ * 4, alike): each second one is said to be the mirror image of the first, in both panels' legends; a post
+ * moved off its mirror place is not. */
+static void test_mirror_posts_named_in_the_legend(void **state) {
+    (void)state;
+    synthetic *s = synthetic_new(FRAMES);
+    cs_plot_log *log = calloc(1, sizeof *log);
+    assert_non_null(log);
+    for (int pass = 0; pass < 2; pass++) {
+        if (pass == 1) s->posts[4].x = 31;
+        trace(s, CS_FIG_POSTS, log);
+        int said[5] = {0}, mirrors = 0;
+        for (int i = 0; i < log->text_count; i++) {
+            int post, of;
+            if (strstr(log->text[i].text, "mirror")) mirrors++;
+            if (sscanf(log->text[i].text, "post %d at x = %*f m (%*f ft): mirror image of post %d", &post,
+                       &of) == 2)
+                said[post] += post == 3 ? of == 2 : post == 4 ? of == 1 : -100;
+        }
+        assert_int_equal(said[3], 2);
+        assert_int_equal(said[4], pass == 0 ? 2 : 0);
+        assert_int_equal(mirrors, pass == 0 ? 4 : 2);
+        check_texts_inside(log, "posts");
+    }
+    free(log);
+    synthetic_free(s, NULL, 0);
+}
+
 /* The set through an output directory: every figure as PNG and SVG under plots/, none left as .tmp. */
 static void test_figures_through_outdir(void **state) {
     (void)state;
@@ -419,6 +580,11 @@ int main(void) {
         cmocka_unit_test(test_every_figure_of_a_run),
         cmocka_unit_test(test_runs_of_one_frame_and_none),
         cmocka_unit_test(test_figures_through_outdir),
+        cmocka_unit_test(test_labels_stay_inside_the_frame),
+        cmocka_unit_test(test_every_text_inside_its_frame),
+        cmocka_unit_test(test_time_axes_end_at_the_run_end),
+        cmocka_unit_test(test_top_views_true_scale_whole_vehicle),
+        cmocka_unit_test(test_mirror_posts_named_in_the_legend),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     cs_plot_release();

@@ -1,7 +1,8 @@
 /* report.html's writer (src/io/out/report_html.c) on a short real run: the markers of a page are filled,
  * the title is HTML-escaped and the data (a command line with "</script>" in it included) cannot close its
  * <script>, the data has every part the page reads (provenance and ratings too; a run cut at its time
- * limit has no penetration, only how far it got), a page without its data marker is refused, and a long
+ * limit has no penetration, only how far it got), the design as loaded (ropes, kinds of post, their
+ * places, soil, anchors) carries the model's values, a page without its data marker is refused, and a long
  * record is subsampled to the budget. The page itself is tested in a browser (report/test/browser.mjs). */
 #define _POSIX_C_SOURCE 200809L
 #include <setjmp.h>
@@ -163,6 +164,49 @@ static void data_complete(void **st) {
     free(json);
 }
 
+/* A key's value as the data writes a number (%.6g). */
+static void has_number(const char *json, const char *key, double v) {
+    char want[96];
+    snprintf(want, sizeof want, "\"%s\":%.6g", key, v);
+    if (!strstr(json, want)) fail_msg("no %s in the design", want);
+}
+
+/* The design table's data: every rope's size and pretension, the two kinds of APS3's posts (line and
+ * intermediate anchor posts) with the posts of each, the posts' places, the soil and the anchors, each the
+ * model's own value in SI. */
+static void design_as_loaded(void **st) {
+    run *r = *st;
+    char why[256] = "";
+    int rc;
+    char *json = page(r, &r->rec, "@CS_DATA@", &rc, why, sizeof why);
+    if (rc != 0) fail_msg("%s", why);
+    const char *d = strstr(json, "\"design\":{\"ropes\":[");
+    assert_non_null(d);
+    const cs_barrier_def *b = &r->in.barrier;
+    assert_int_equal(count(d, "\"pretension_n\":"), b->cable_count);
+    for (int c = 0; c < b->cable_count; c++) {
+        has_number(d, "pretension_n", b->cables[c].pretension);
+        has_number(d, "diameter_m", b->cables[c].rope.diameter);
+        has_number(d, "strength_n", b->cables[c].rope.nominal_strength);
+    }
+    has_number(d, "pretension_n", 5 * 4448.2216152605); /* 5 kip, as examples/aps3.yaml gives it */
+    assert_non_null(strstr(d, "\"termination\":\"clips\""));
+    assert_int_equal(count(d, "{\"posts\":["), 2);
+    assert_non_null(strstr(d, "{\"posts\":[0,1,2,3,4,5,7,8,10,11,12,13,14,15],\"height_m\":"));
+    assert_non_null(strstr(d, "{\"posts\":[6,9],\"height_m\":"));
+    has_number(d, "yield_stress_pa", b->posts[0].section.yield_stress);
+    has_number(d, "yield_stress_pa", b->posts[6].section.yield_stress);
+    assert_true(b->posts[0].section.yield_stress != b->posts[6].section.yield_stress);
+    assert_int_equal(array_length(d, "\"post_x_m\":"), b->post_count);
+    has_number(d, "soil_pressure_pa", b->posts[0].footing.soil_pressure);
+    has_number(d, "soil_pressure_pa", 8000 * 47.88025898033584); /* 8000 psf */
+    assert_int_equal(count(d, "\"x_m\":"), 2);
+    has_number(d, "x_m", b->end_anchor.x);
+    assert_non_null(strstr(
+        d, "\"pullout_capacity_n\":null,\"pullout_capacity_n_rule\":\"its weight and skin friction\""));
+    free(json);
+}
+
 static void page_without_data_marker(void **st) {
     run *r = *st;
     char why[256] = "";
@@ -223,9 +267,8 @@ static void long_record_subsampled(void **st) {
 
 int main(void) {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(markers_filled),
-        cmocka_unit_test(data_complete),
-        cmocka_unit_test(page_without_data_marker),
+        cmocka_unit_test(markers_filled),         cmocka_unit_test(data_complete),
+        cmocka_unit_test(design_as_loaded),       cmocka_unit_test(page_without_data_marker),
         cmocka_unit_test(long_record_subsampled),
     };
     return cmocka_run_group_tests(tests, setup, teardown);

@@ -97,7 +97,8 @@ static void test_runs_csv(void **state) {
     fclose(out);
     const char *want =
         "run,barrier.cables[0].pretension [N],vehicle,outcome,astm_f2656,time_reached [s],max_50ms_decel [g],"
-        "t_max_50ms_decel [s],max_dynamic_penetration [m],max_barrier_deflection [m],working_width [m],"
+        "t_max_50ms_decel [s],max_dynamic_penetration [m],penetration_beyond [m],max_barrier_deflection [m],"
+        "working_width [m],"
         "stop_time [s],exit_speed [m/s],exit_angle [deg],first_contact_time "
         "[s],posts_failed_left,posts_failed_right,cables_broken,"
         "max_cable_tension [N],initial_kinetic_energy [J],energy_balance_error [1],solver_warnings,"
@@ -107,11 +108,12 @@ static void test_runs_csv(void **state) {
         "override,"
         "events_underride,events_cable_release,error\n"
         "0,17792.886461,SD-STD-02.01,stopped,M40/"
-        "P2,0.5,3.25,0.125,1.23456789,2.25,2.625,0.4375,,,0.003,2,3,0,"
+        "P2,0.5,3.25,0.125,1.23456789,,2.25,2.625,0.4375,,,0.003,2,3,0,"
         "38621.24685,1087776.709,-4.259510776e-05,1,0.002394143186,20.5,-3.25,1,0,0,2,0,0,0,0,0,0,0,0,0,\n"
-        "1,17792.886461,PU,breakthrough,PU40/P4,0.5,2.875,0.125,4.03125,2.25,5.5,,13.75,22.5,,0,3,2,1500000,"
+        "1,17792.886461,PU,breakthrough,PU40/P4,0.5,2.875,0.125,,4.03125,2.25,5.5,,13.75,22.5,,0,3,2,1500000,"
         "1087776.709,0,1,0.002394143186,20.5,-3.25,1,2,0,0,0,0,0,0,0,0,0,1,0,\n"
-        "2,22241.1080763,SD-STD-02.01,failed,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"the solve \"\"diverged\"\", "
+        "2,22241.1080763,SD-STD-02.01,failed,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"the solve "
+        "\"\"diverged\"\", "
         "at "
         "0.1 s\"\n";
     assert_string_equal(text, want);
@@ -214,11 +216,14 @@ static void test_runs_netcdf(void **state) {
     assert_int_equal(nc_get_att_double(id, var(id, "max_dynamic_penetration"), "_FillValue", &fill),
                      NC_NOERR);
     assert_true(fill == NC_FILL_DOUBLE);
+    /* the run that broke through has no penetration, only how far it got */
     doubles(id, "max_dynamic_penetration", v);
-    assert_true(v[0] == 1.2345678901234567 && v[1] == 4.03125 && v[2] == NC_FILL_DOUBLE);
+    assert_true(v[0] == 1.2345678901234567 && v[1] == NC_FILL_DOUBLE && v[2] == NC_FILL_DOUBLE);
+    doubles(id, "penetration_beyond", v);
+    assert_true(v[0] == NC_FILL_DOUBLE && v[1] == 4.03125 && v[2] == NC_FILL_DOUBLE);
     assert_string_equal(att(id, var(id, "max_dynamic_penetration"), "units"), "m");
     assert_string_equal(att(id, var(id, "max_dynamic_penetration"), "long_name"),
-                        "max dynamic penetration past the attack face");
+                        "max dynamic penetration past the attack face (a vehicle the barrier held)");
     doubles(id, "energy_balance_error", v);
     assert_true(v[0] == -4.2595107761234e-05 && v[1] == 0 && v[2] == NC_FILL_DOUBLE);
     doubles(id, "stop_time", v);
@@ -315,17 +320,17 @@ static void test_plots(void **state) {
     cs_sweep_spec *s = f->spec;
     assert_non_null(s->plots = calloc(2, sizeof *s->plots));
     s->plot_count = 2;
-    s->plots[0] = (cs_sweep_plot){12, 5, 0, 1, strdup("max_dynamic_penetration"), 13, 8, "png"};
+    s->plots[0] = (cs_sweep_plot){12, 5, 0, 1, strdup("max_barrier_deflection"), 13, 8, "png"};
     s->plots[1] = (cs_sweep_plot){15, 5, 0, 1, strdup("exit_speed"), 16, 8, "svg"};
     assert_int_equal(cs_sweep_plots_check(s), 0);
     char file[256], caption[1000];
     cs_sweep_plot_file(s, 0, file, sizeof file);
-    assert_string_equal(file, "plots/max_dynamic_penetration-vs-pretension.png");
+    assert_string_equal(file, "plots/max_barrier_deflection-vs-pretension.png");
     cs_sweep_plot_file(s, 1, file, sizeof file);
     assert_string_equal(file, "plots/exit_speed-vs-pretension.svg");
     cs_sweep_plot_caption(s, 0, f->r, RUNS, caption, sizeof caption);
     assert_string_equal(caption,
-                        "max_dynamic_penetration against barrier.cables[0].pretension, a line per vehicle: "
+                        "max_barrier_deflection against barrier.cables[0].pretension, a line per vehicle: "
                         "2 of 3 runs shown, 1 broke through (marked with a cross); left out: 1 that did "
                         "not run to the end");
     cs_sweep_plot_caption(s, 1, f->r, RUNS, caption, sizeof caption);
@@ -340,8 +345,8 @@ static void test_plots(void **state) {
     assert_int_equal(cs_sweep_write_summary_md(md, s, f->x, f->r, RUNS, why, sizeof why), 0);
     fclose(md);
     assert_non_null(strstr(text,
-                           "\n## Plots\n\n- `plots/max_dynamic_penetration-vs-pretension.png`: "
-                           "max_dynamic_penetration against barrier.cables[0].pretension, a line per "
+                           "\n## Plots\n\n- `plots/max_barrier_deflection-vs-pretension.png`: "
+                           "max_barrier_deflection against barrier.cables[0].pretension, a line per "
                            "vehicle: 2 of 3 runs shown, 1 broke through (marked with a cross); left out: 1 "
                            "that did not run to the end.\n- `plots/exit_speed-vs-pretension.svg`: "));
     free(text);

@@ -1,7 +1,7 @@
 // report.html: reads the run's JSON from the page and builds the summary, the 3D replay, the failure
 // timeline and the plots. window.csReport exposes the page's state (the browser test reads it).
 import uplotCss from 'uplot/dist/uPlot.min.css';
-import { story, cards, summaryTable, timelineTable, ratingsText, el } from './summary.js';
+import { story, cards, summaryTable, designTable, timelineTable, ratingsText, el } from './summary.js';
 import { buildPlots } from './plots.js';
 import { createReplay, POST_COLORS, BROKEN_CABLE, postState } from './replay.js';
 import { gradient } from './colors.js';
@@ -57,6 +57,11 @@ function main() {
   $('story').textContent = story(data);
   $('cards').append(cards(data));
   $('table').append(summaryTable(data));
+  try {
+    $('design').append(designTable(data));
+  } catch (e) {
+    fail('design table', e);
+  }
 
   // the replay's time drives the timeline's highlight, the plots' time line and the HUD
   let plots = null;

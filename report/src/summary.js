@@ -172,3 +172,113 @@ export function timelineTable(data, seek) {
     table: el('table', { class: 'timeline' }, el('thead', {}, el('tr', {}, el('th', {}, 'time (s)'), el('th', {}, 'what happened'), el('th', {}, 'value'))), tbody),
   };
 }
+
+// "0–5, 7, 8, 10–15" for sorted post numbers.
+function ranges(ns) {
+  const out = [];
+  for (let i = 0; i < ns.length; ) {
+    let k = i;
+    while (k + 1 < ns.length && ns[k + 1] === ns[k] + 1) k++;
+    out.push(k - i >= 2 ? `${ns[i]}–${ns[k]}` : ns.slice(i, k + 1).join(', '));
+    i = k + 1;
+  }
+  return out.join(', ');
+}
+
+// The barrier as the run loaded it (data.design, SI from the model's definitions): ropes, the kinds of
+// post (section, footing), the posts' spacing, the soil and the anchors, SI with US customary beside.
+export function designTable(data) {
+  const d = data.design;
+  const groups = [];
+  const row = (name, [si, us], id) => ({ name, si, us, id });
+  const text = (name, si, us = null) => ({ name, si, us });
+  d.ropes.forEach((r, c) => {
+    groups.push([
+      `Cable ${c}: wire rope`,
+      [
+        row('Height at the posts', both.length(r.height_m)),
+        r.diameter_m > 0 ? row('Rope size (nominal diameter)', both.diameter(r.diameter_m), `rope-${c}-diameter`) : text('Rope size (nominal diameter)', 'not given'),
+        row('Metallic area', both.area(r.area_m2)),
+        row('Breaking strength Fu', both.force(r.strength_n)),
+        row('Pretension', both.force(r.pretension_n), `rope-${c}-pretension`),
+        text('End fitting at the anchors', `${r.termination}, ${fmt(100 * r.termination_efficiency, 0)} % of Fu`),
+      ],
+    ]);
+  });
+  d.post_kinds.forEach((k, i) => {
+    const f = k.footing;
+    groups.push([
+      `Post section ${d.post_kinds.length > 1 ? `${i + 1} ` : ''}(post${k.posts.length === 1 ? '' : 's'} ${ranges(k.posts)}: ${k.posts.length})`,
+      [
+        row('Plastic section modulus Zx', both.sectionModulus(k.plastic_modulus_m3)),
+        row('Moment of inertia Ix', both.inertia(k.inertia_m4)),
+        row('Yield stress Fy', both.stress(k.yield_stress_pa), `post-kind-${i}-fy`),
+        row('Plastic moment Zx Fy', both.moment(k.plastic_modulus_m3 * k.yield_stress_pa)),
+        row('Elastic modulus E', both.stress(k.modulus_pa)),
+        row('Mass per length', both.massPerLength(k.mass_per_length_kg_m)),
+        row('Height above grade', both.length(k.height_m)),
+        text('Cables held', k.attachment),
+        text('Rotation limit', both.angle(k.rotation_limit_rad)[0]),
+        row('Footing diameter (width facing the soil)', both.length(f.diameter_m)),
+        row('Footing depth', both.length(f.depth_m)),
+        text('Footing rotation limit in the soil', both.angle(f.rotation_limit_rad)[0]),
+        f.pullout_capacity_n !== null ? row('Pullout capacity', both.force(f.pullout_capacity_n)) : text('Pullout capacity', f.pullout_capacity_n_rule),
+      ],
+    ]);
+  });
+  const x = d.post_x_m;
+  const gaps = x.slice(1).map((v, i) => v - x[i]);
+  const lo = Math.min(...gaps);
+  const hi = Math.max(...gaps);
+  const spacing = [];
+  if (x.length) spacing.push(text('Posts', `${x.length}, x = ${pair('length', x[0])} to ${pair('length', x[x.length - 1])}`));
+  if (gaps.length)
+    spacing.push(
+      hi - lo < 1e-6
+        ? row('Spacing', both.length(lo), 'spacing')
+        : { name: 'Spacing', si: `${both.length(lo)[0]} to ${both.length(hi)[0]}`, us: `${both.length(lo)[1]} to ${both.length(hi)[1]}`, id: 'spacing' },
+    );
+  groups.push(['Post spacing', spacing]);
+  const s = d.soil;
+  groups.push([
+    'Soil (Eq. 21)',
+    [
+      row('Soil pressure S1', both.pressure(s.soil_pressure_pa), 'soil-pressure'),
+      row('Cap on S1', both.pressure(s.soil_pressure_cap_pa)),
+      text('Coefficients c_d, c_h', `${fmt(s.coeff_depth, 2)}, ${fmt(s.coeff_height, 2)}`),
+      text('Dynamic factor', fmt(s.dynamic_factor, 2)),
+      text('Friction angle', both.angle(s.friction_angle_rad)[0]),
+      row('Skin friction', both.pressureGradient(s.skin_friction_pa_m)),
+    ],
+  ]);
+  d.anchors.forEach((a, k) => {
+    const rigid = a.diameter_m === 0;
+    groups.push([
+      `${k ? 'End' : 'Start'} anchor`,
+      [
+        row('Position x', both.length(a.x_m)),
+        row('Cables tied at height', both.length(a.z_m)),
+        ...(rigid
+          ? [text('Footing', 'rigid (never moves)')]
+          : [
+              row('Footing diameter', both.length(a.diameter_m)),
+              row('Footing depth', both.length(a.depth_m)),
+              row('Plan size across the pull', both.length(a.length_m)),
+              a.mass_kg !== null ? row('Mass', both.mass(a.mass_kg)) : text('Mass', 'its concrete'),
+              a.pullout_capacity_n !== null ? row('Pullout capacity', both.force(a.pullout_capacity_n)) : text('Pullout capacity', a.pullout_capacity_n_rule),
+            ]),
+      ],
+    ]);
+  });
+  const table = el('table', { class: 'design', id: 'design-table' }, el('thead', {}, el('tr', {}, el('th', {}, 'Design value'), el('th', {}, 'SI'), el('th', {}, 'US customary'))));
+  for (const [title, rows] of groups) {
+    const tbody = el('tbody', {}, el('tr', { class: 'group' }, el('th', { colspan: '3', scope: 'rowgroup' }, title)));
+    for (const r of rows) {
+      const tr = el('tr', {}, el('th', { scope: 'row' }, r.name), el('td', {}, r.si), el('td', { class: 'us' }, r.us || ''));
+      if (r.id) tr.dataset.design = r.id;
+      tbody.append(tr);
+    }
+    table.append(tbody);
+  }
+  return table;
+}

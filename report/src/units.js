@@ -5,6 +5,10 @@ export const FT = 0.3048; // m
 export const LB = 0.45359237; // kg
 export const KIP = 4448.2216152605; // N
 export const KIP_FT = KIP * FT; // N m (also ft-kip of energy, J)
+export const IN = 0.0254; // m
+export const KSI = KIP / IN ** 2; // Pa
+export const PSF = (LB * G0) / FT ** 2; // Pa (lbf/ft²)
+export const LB_FT = LB / FT; // kg/m
 
 export function fmt(v, digits = 3) {
   if (v === null || v === undefined || !Number.isFinite(v)) return '–';
@@ -33,6 +37,14 @@ export const both = {
   energy: (v) => [`${fmt(v / 1e3, 1)} kJ`, `${fmt(v / KIP_FT, 0)} ft·kip`],
   mass: (v) => [`${grouped(v)} kg`, `${grouped(v / LB)} lb`],
   angle: (v) => [`${fmt((v * 180) / Math.PI, 1)}°`, null],
+  diameter: (v) => [`${fmt(v * 1e3, fixed(v * 1e3))} mm`, `${fmt(v / IN, fixed(v / IN))} in`],
+  area: (v) => [`${fmt(v * 1e6, fixed(v * 1e6))} mm²`, `${fmt(v / IN ** 2, fixed(v / IN ** 2))} in²`],
+  sectionModulus: (v) => [`${fmt(v * 1e6, fixed(v * 1e6))} cm³`, `${fmt(v / IN ** 3, fixed(v / IN ** 3))} in³`],
+  inertia: (v) => [`${fmt(v * 1e8, fixed(v * 1e8))} cm⁴`, `${fmt(v / IN ** 4, fixed(v / IN ** 4))} in⁴`],
+  stress: (v) => [`${fmt(v / 1e6, fixed(v / 1e6))} MPa`, `${fmt(v / KSI, fixed(v / KSI))} ksi`],
+  pressure: (v) => [`${fmt(v / 1e3, fixed(v / 1e3))} kPa`, `${fmt(v / PSF, fixed(v / PSF))} psf`],
+  massPerLength: (v) => [`${fmt(v, fixed(v))} kg/m`, `${fmt(v / LB_FT, fixed(v / LB_FT))} lb/ft`],
+  pressureGradient: (v) => [`${fmt(v / 1e3, fixed(v / 1e3))} kPa/m`, `${fmt(v / (PSF / FT), fixed(v / (PSF / FT)))} psf/ft`],
 };
 
 export function pair(kind, v) {

@@ -1,8 +1,10 @@
 // report.html in a real browser: Debian's headless chromium driven by playwright-core. Runs a short real
 // simulation with --report, opens the page from file:// and checks what a reader would see: no console
 // errors and no network requests, the summary and the timeline filled, the 3D replay drawn (pixels read
-// back), scrubbing to the end moves the vehicle, playing advances, every plot has data. Screenshots go
-// to OUT (a build dir: test artifacts, never committed).
+// back), scrubbing to the end moves the vehicle, playing advances, every plot has data, the design table
+// gives the model's values in their units, and printed (print media, A4) the page drops the replay and its
+// controls, shows every timeline row and nothing wider than the page, and makes a PDF. Screenshots and the
+// PDF go to OUT (a build dir: test artifacts, never committed).
 //
 //   node report/test/browser.mjs --cablesim BUILD/cablesim --modules BUILD/report/node_modules --out DIR
 //        [--report FILE]      check this report instead of running one
@@ -10,7 +12,7 @@
 //        [--docs-shot FILE] [--docs-at F]   also the top of the page, replay at F of the run (0.6), 1200 x 1080
 //                             (docs/report.png)
 import { spawnSync } from 'node:child_process';
-import { existsSync, mkdirSync, rmSync, statSync } from 'node:fs';
+import { existsSync, mkdirSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 
@@ -146,7 +148,7 @@ try {
 
   await page.evaluate(() => window.scrollTo(0, 0));
   await page.screenshot({ path: join(out, 'report-top.png') });
-  for (const id of ['summary', 'replay-section', 'timeline-section', 'plots-section', 'numbers'])
+  for (const id of ['summary', 'replay-section', 'timeline-section', 'plots-section', 'design-section', 'numbers'])
     await page.locator(`#${id}`).screenshot({ path: join(out, `section-${id}.png`) });
   await page.screenshot({ path: join(out, 'report-full.png'), fullPage: true });
   if (args['docs-shot']) {
@@ -158,6 +160,57 @@ try {
     await page.waitForTimeout(500);
     await page.screenshot({ path: resolve(args['docs-shot']) });
   }
+  // the design table: the model's values in their own units (examples/aps3.yaml: 1.75-in ropes at 5 kip,
+  // line posts of 50-ksi steel 8 ft apart, 8000-psf soil), and the engine's in SI
+  const design = await page.evaluate(() => {
+    const cells = {};
+    for (const tr of document.querySelectorAll('#design-table tr[data-design]')) cells[tr.dataset.design] = [tr.children[1].textContent, tr.children[2].textContent];
+    return { cells, rows: document.querySelectorAll('#design-table tbody tr').length, json: JSON.parse(document.getElementById('cs-data').textContent).design };
+  });
+  check('the design table is there', design.rows > 20 && design.cells['rope-0-pretension'], `${design.rows} rows`);
+  if (design.cells['rope-0-pretension']) {
+    const num = (text, unit) => Number((text.match(new RegExp(`^([0-9.]+) ${unit}$`)) || [])[1]);
+    const ropes = design.json.ropes;
+    check('the rope pretension is the model\'s, in kN', ropes.every((r, c) => Math.abs(num(design.cells[`rope-${c}-pretension`][0], 'kN') - r.pretension_n / 1e3) < 0.05), JSON.stringify(design.cells['rope-0-pretension']));
+    if (!args.report || args.model === 'examples/aps3.yaml') {
+      const near = (id, col, unit, want, tol) => {
+        const got = num(design.cells[id][col], unit);
+        check(`design: ${id} is ${want} ${unit}`, Math.abs(got - want) <= tol, `${design.cells[id][col]}`);
+      };
+      near('rope-0-pretension', 1, 'kip', 5, 0.005);
+      near('rope-1-pretension', 1, 'kip', 5, 0.005);
+      near('rope-0-diameter', 1, 'in', 1.75, 0.005);
+      near('post-kind-0-fy', 1, 'ksi', 50, 0.05);
+      near('spacing', 1, 'ft', 8, 0.05);
+      near('soil-pressure', 1, 'psf', 8000, 0.5);
+    }
+  }
+
+  // printed: no controls or replay, every timeline row, nothing wider than an A4 page, a PDF of a few pages
+  await page.setViewportSize({ width: 720, height: 1000 });
+  await page.emulateMedia({ media: 'print' });
+  const printed = await page.evaluate(() => {
+    const shown = (sel) => getComputedStyle(document.querySelector(sel)).display !== 'none';
+    const wrap = document.querySelector('.timeline-wrap');
+    return {
+      replay: shown('#replay-section'),
+      controls: [...document.querySelectorAll('.controls')].some((c) => getComputedStyle(c).display !== 'none'),
+      design: shown('#design-section'),
+      timelineCut: wrap.scrollHeight - wrap.clientHeight,
+      wide: [...document.querySelectorAll('main *')].filter((e) => e.getBoundingClientRect().right > document.documentElement.clientWidth + 1).map((e) => e.tagName + (e.id ? `#${e.id}` : '')).slice(0, 5),
+    };
+  });
+  check('printed: no replay and no controls', !printed.replay && !printed.controls, JSON.stringify(printed));
+  check('printed: the design table shows', printed.design);
+  check('printed: every timeline row', printed.timelineCut <= 1, `${printed.timelineCut} px cut`);
+  check('printed: nothing wider than the page', printed.wide.length === 0, printed.wide.join(' '));
+  const pdf = await page.pdf({ format: 'A4', printBackground: true });
+  const pages = (pdf.toString('latin1').match(/\/Type\s*\/Page\b/g) || []).length;
+  check('printed: a PDF of a few pages', pdf.subarray(0, 5).toString() === '%PDF-' && pages >= 2 && pages <= 30, `${pdf.length} bytes, ${pages} pages`);
+  writeFileSync(join(out, 'report-print.pdf'), pdf);
+  await page.emulateMedia({ media: 'screen' });
+  await page.setViewportSize({ width: 1400, height: 1000 });
+
   check('no console errors', consoleErrors.length === 0, consoleErrors.join(' | '));
   check('no network requests', requests.length === 0, requests.join(' '));
 } catch (e) {

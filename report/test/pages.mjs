@@ -40,7 +40,7 @@ cablesim('sweep', 'tests/sweep/mc.yaml', '--quiet', '-o', join(out, 'study'));
 
 const pages = [
   { name: 'compare', file: join(out, 'compare', 'compare.html'), figures: 5, tables: [11] },
-  { name: 'study', file: join(out, 'study', 'report.html'), figures: 19, tables: [9, 7] },
+  { name: 'study', file: join(out, 'study', 'report.html'), figures: 19, tables: [3, 9, 7] },
 ];
 if (!existsSync(chromiumPath)) {
   check(`a browser at ${chromiumPath}`, false, 'install Debian chromium (bash scripts/install-deps.sh)');

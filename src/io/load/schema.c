@@ -22,6 +22,14 @@ static const char *const attachment_words[] = {"through", "clamped", "slot", "ho
 static const char *const impact_at_words[] = {"centre", "corner", NULL};
 static const char *const termination_words[] = {"clips", "swaged", "spelter", "wedge", NULL};
 
+const char *cs_attachment_word(cs_attachment kind) {
+    return kind >= CS_ATTACH_THROUGH && kind <= CS_ATTACH_HOOK ? attachment_words[kind] : "?";
+}
+
+const char *cs_termination_word(cs_termination kind) {
+    return kind >= CS_TERMINATION_CLIPS && kind <= CS_TERMINATION_WEDGE ? termination_words[kind] : "?";
+}
+
 #define NAMED_PART(what)                                                                                     \
     TEXT("name", 0, "the part's name, by which other parts and models use it (in a parts list: required)"),  \
         TEXT("description", 0, "what the part is and where its numbers come from"),                          \

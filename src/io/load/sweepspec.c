@@ -304,8 +304,33 @@ static int path_field(const char *path, cs_sweep_var *v, char *why, size_t why_s
 
 /* ---- values ---- */
 
-static int read_value(cs_sweep_spec *s, cs_units *u, const cs_sweep_var *v, const char *text, int line,
-                      int col, const char *what, double *out) {
+/* The unit after the number in text, as v's shown unit, if v has none yet: a unit udunits2 reads as a
+ * multiple of the SI one (0 of it is 0). A bare number, or any other: the SI label (a force: kN). */
+static void shown_unit(cs_units *u, cs_sweep_var *v, const char *text) {
+    if (v->shown_scale > 0) return;
+    int force = v->numeric && !v->integer && v->q == CS_Q_FORCE; /* a force in N is shown in kN */
+    snprintf(v->shown_unit, sizeof v->shown_unit, "%s", force ? "kN" : v->unit);
+    v->shown_scale = force ? 1e3 : 1;
+    char *rest, probe[64];
+    strtod(text, &rest);
+    while (*rest == ' ')
+        rest++;
+    size_t n = strlen(rest);
+    while (n > 0 && rest[n - 1] == ' ')
+        n--;
+    double one, zero;
+    char why[256];
+    if (v->integer || n == 0 || n >= sizeof v->shown_unit) return;
+    snprintf(probe, sizeof probe, "1 %.*s", (int)n, rest);
+    if (cs_units_read(u, probe, v->q, &one, why, sizeof why) != 0 || !(one > 0)) return;
+    snprintf(probe, sizeof probe, "0 %.*s", (int)n, rest);
+    if (cs_units_read(u, probe, v->q, &zero, why, sizeof why) != 0 || zero != 0) return;
+    snprintf(v->shown_unit, sizeof v->shown_unit, "%.*s", (int)n, rest);
+    v->shown_scale = one;
+}
+
+static int read_value(cs_sweep_spec *s, cs_units *u, cs_sweep_var *v, const char *text, int line, int col,
+                      const char *what, double *out) {
     char why[256];
     if (v->integer) {
         char *end;
@@ -325,6 +350,7 @@ static int read_value(cs_sweep_spec *s, cs_units *u, const cs_sweep_var *v, cons
                        cs_quantity_get(v->q)->name, cs_quantity_get(v->q)->example);
         return -1;
     }
+    shown_unit(u, v, text);
     return 0;
 }
 

@@ -43,6 +43,11 @@ typedef struct cs_sweep_var {
     /* Monte Carlo / Latin hypercube */
     cs_dist dist;
     char desc[256]; /* how it varies, as the spec says it: "normal: mean 8000 psf, sd 1000 psf" */
+    /* numeric: the unit of its first value as the spec writes it ("psf"; for a bare number or a unit
+     * with an offset the SI label, kN for a force) and how much one of it is in SI (0: none yet, a whole
+     * number: SI): the study's page shows the input in it, SI / shown_scale */
+    char shown_unit[32];
+    double shown_scale;
 } cs_sweep_var;
 
 enum { CS_SWEEP_MAX_PLOTS = 16, CS_SWEEP_MAX_LINES = 10 };

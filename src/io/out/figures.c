@@ -10,7 +10,6 @@
 static const double G0 = 9.80665, MPH = 0.44704, FT = 0.3048, KIP = 4448.2216152605,
                     PI = 3.14159265358979323846;
 static const double MARGIN = 8, SNAP_WIDTH = 1800, SNAP_HEADER = 150;
-static const double SNAP_BEHIND = 3; /* m of the vehicle behind its face that the top view shows */
 enum { SNAPS = 6, NEAR_POSTS = 4 };
 
 /* y at time tq, linear between frames. */
@@ -42,15 +41,16 @@ static const cs_rgb BLACK = {0.1, 0.1, 0.1}, GREY = {0.55, 0.55, 0.55}, RED = {0
 
 enum { TITLE_SIZE = 200 };
 
-/* Axes over the run's time, y from zero, titled "<model>: what" (d NULL: what alone) in title, which the
- * axes keep; y2label and y2_scale as in cs_axes (NULL, 0: no right axis). */
+/* Axes over the run's time, from its start to its end (not rounded out to a tick), y from zero, titled
+ * "<model>: what" (d NULL: what alone) in title, which the axes keep; y2label and y2_scale as in cs_axes
+ * (NULL, 0: no right axis). */
 static void time_axes(cs_axes *a, char *title, const cs_figure_data *d, const char *what, const char *ylabel,
                       const char *y2label, double y2_scale, const double *t, int n) {
     snprintf(title, TITLE_SIZE, "%s%s%s", d ? d->in->name : "", d ? ": " : "", what);
     cs_axes_init(a, title, "time (s)", ylabel);
     a->y2label = y2label;
     a->y2_scale = y2_scale;
-    cs_axes_fit(a, t, NULL, n);
+    if (n > 0) cs_axes_set_x(a, fmin(0, t[0]), t[n - 1]);
     cs_axes_fit_point(a, NAN, 0);
 }
 
@@ -256,6 +256,30 @@ static int is_failure(cs_event_type type) {
            type == CS_EVENT_POST_PULLOUT;
 }
 
+/* The k-th of the nearest posts idx is the mirror image of an earlier one about the impact point: as
+ * far from it on the other side, its moment and tilt the same at every frame (within 0.1% of the largest,
+ * a curve ending at the same frame). That one's index in idx, or -1. */
+static int mirror_of(const cs_figure_data *d, const int *idx, int k, const double *moment, const double *tilt,
+                     int n) {
+    const cs_post_def *posts = d->in->barrier.posts;
+    double xi = d->in->scenario.impact_x, dk = posts[idx[k]].x - xi;
+    for (int j = 0; j < k; j++) {
+        if (fabs(posts[idx[j]].x - xi + dk) > 1e-6 * fmax(1, fabs(dk)) || fabs(dk) < 1e-9) continue;
+        int same = 1;
+        for (int m = 0; m < 2 && same; m++) {
+            const double *a = (m ? tilt : moment) + (size_t)j * (size_t)n,
+                         *b = (m ? tilt : moment) + (size_t)k * (size_t)n;
+            double big = 0;
+            for (int i = 0; i < n; i++)
+                big = fmax(big, fmax(isfinite(a[i]) ? fabs(a[i]) : 0, isfinite(b[i]) ? fabs(b[i]) : 0));
+            for (int i = 0; i < n && same; i++)
+                same = isfinite(a[i]) == isfinite(b[i]) && !(fabs(a[i] - b[i]) > 1e-3 * big);
+        }
+        if (same) return j;
+    }
+    return -1;
+}
+
 static void fig_posts(cs_plot *p, const cs_figure_data *d, double *t) {
     const cs_record *r = d->rec;
     const cs_post_def *posts = d->in->barrier.posts;
@@ -279,7 +303,7 @@ static void fig_posts(cs_plot *p, const cs_figure_data *d, double *t) {
     time_axes(&am, mtitle, NULL, "base moment (a curve ends where its post fails)", "base moment (kN·m)",
               NULL, 0, t, n);
     time_axes(&at, ttitle, NULL, "tilt from vertical", "tilt (deg)", NULL, 0, t, n);
-    am.legend_width = at.legend_width = 330;
+    am.legend_width = at.legend_width = 430;
     cs_axes_fit(&am, NULL, moment, n * count);
     cs_axes_fit(&at, NULL, tilt, n * count);
     for (int k = 0; k < count && n > 0; k++) {
@@ -311,8 +335,10 @@ static void fig_posts(cs_plot *p, const cs_figure_data *d, double *t) {
     /* a wide line under a narrow one: mirror posts of a centred impact coincide and both show */
     for (int k = 0; k < count; k++) {
         cs_style s = line(cs_plot_palette(k), k % 2 ? 2.2 : 6.5);
-        snprintf(label, sizeof label, "post %d at x = %.2f m (%.1f ft)", idx[k], posts[idx[k]].x,
-                 posts[idx[k]].x / FT);
+        int len = snprintf(label, sizeof label, "post %d at x = %.2f m (%.1f ft)", idx[k], posts[idx[k]].x,
+                           posts[idx[k]].x / FT);
+        int j = mirror_of(d, idx, k, moment, tilt, n);
+        if (j >= 0) snprintf(label + len, sizeof label - (size_t)len, ": mirror image of post %d", idx[j]);
         cs_plot_line(p, &am, t, moment + (size_t)k * (size_t)n, n, &s, label);
         cs_plot_line(p, &at, t, tilt + (size_t)k * (size_t)n, n, &s, label);
     }
@@ -454,7 +480,7 @@ static void outline(const cs_vehicle_def *vd, const cs_vehicle_view *v, int side
 
 typedef struct snap_geometry {
     int frames[SNAPS], count;
-    double x0, x1, y0, y1, z0, z1; /* views' ranges, m: top x-y, side ys0-y1 by z */
+    double x0, x1, y0, y1, z0, z1; /* views' ranges, m: top x-y, side ys0-y1 by z (ys0 = y0) */
     double ys0;
     double area_h, top_w, row_h; /* layout, device units */
     double tmax;                 /* largest span tension of the run, N */
@@ -495,9 +521,10 @@ static void snap_layout(const cs_figure_data *d, snap_geometry *g) {
         int f = g->frames[s];
         double u[4], w[4];
         outline(&d->in->vehicle, &r->vehicle[f], 0, u, w);
-        for (int k = 0; k < 4; k++)
+        for (int k = 0; k < 4; k++) {
             g->ys0 = fmin(g->ys0, w[k]), g->y1 = fmax(g->y1, w[k]);
-        g->y0 = fmin(g->y0, fmin(w[0], w[1]) - SNAP_BEHIND);
+            g->x0 = fmin(g->x0, u[k] - 0.5), g->x1 = fmax(g->x1, u[k] + 0.5);
+        }
         outline(&d->in->vehicle, &r->vehicle[f], 1, u, w);
         for (int k = 0; k < 4; k++)
             g->z1 = fmax(g->z1, w[k]);
@@ -511,8 +538,9 @@ static void snap_layout(const cs_figure_data *d, snap_geometry *g) {
     }
     for (size_t i = 0; i < (size_t)n * (size_t)r->cable_count * (size_t)r->max_nodes; i++)
         g->tmax = fmax(g->tmax, r->path_tension[i]);
-    g->y0 = fmax(g->y0, g->ys0) - 0.3, g->ys0 -= 0.5, g->y1 += 0.5, g->z1 += 0.3;
-    /* rows: equal-aspect top view (x-y) and side view (y-z) side by side, as wide as the figure */
+    g->ys0 -= 0.5, g->y0 = g->ys0, g->y1 += 0.5, g->z1 += 0.3;
+    /* rows: top view (x-y) and side view (y-z) side by side, as wide as the figure, each at true scale
+     * (as many metres a pixel across as up) with the whole vehicle in it */
     const double extra_w = 104, extra_h = 110;
     double wide = (g->x1 - g->x0) / (g->y1 - g->y0) + (g->y1 - g->ys0) / (g->z1 - g->z0);
     g->area_h = fmin(300, fmax(110, (SNAP_WIDTH - 2 * MARGIN - 2 * extra_w) / wide));
@@ -694,8 +722,9 @@ static int draw_figure(cs_plot *p, const void *user, char *why, size_t why_size)
     return 0;
 }
 
-int cs_figure_write(FILE *f, cs_plot_format format, cs_figure figure, const cs_figure_data *d, char *why,
-                    size_t why_size) {
+/* Write figure to f in format, or trace it into log (f NULL). */
+static int figure_out(FILE *f, cs_plot_format format, cs_plot_log *log, cs_figure figure,
+                      const cs_figure_data *d, char *why, size_t why_size) {
     if (figure < 0 || figure >= CS_FIG_COUNT) {
         snprintf(why, why_size, "no figure %d", (int)figure);
         return -1;
@@ -703,7 +732,21 @@ int cs_figure_write(FILE *f, cs_plot_format format, cs_figure figure, const cs_f
     double w, h;
     cs_figure_size(figure, d, &w, &h);
     figure_job job = {d, figure};
-    return cs_plot_write(f, format, w, h, draw_figure, &job, why, why_size);
+    return f ? cs_plot_write(f, format, w, h, draw_figure, &job, why, why_size)
+             : cs_plot_trace(w, h, draw_figure, &job, log, why, why_size);
+}
+
+int cs_figure_write(FILE *f, cs_plot_format format, cs_figure figure, const cs_figure_data *d, char *why,
+                    size_t why_size) {
+    if (!f) {
+        snprintf(why, why_size, "no file to write %s to", cs_figure_name(figure));
+        return -1;
+    }
+    return figure_out(f, format, NULL, figure, d, why, why_size);
+}
+
+int cs_figure_trace(cs_figure figure, const cs_figure_data *d, cs_plot_log *log, char *why, size_t why_size) {
+    return figure_out(NULL, CS_PLOT_PNG, log, figure, d, why, why_size);
 }
 
 int cs_figures_write(cs_outdir *out, const char *subdir, const cs_plot_format *formats, int format_count,

@@ -38,6 +38,9 @@ void cs_figure_size(cs_figure figure, const cs_figure_data *d, double *width, do
 /* Draw one figure to f. Returns 0, or -1 with why filled. */
 int cs_figure_write(FILE *f, cs_plot_format format, cs_figure figure, const cs_figure_data *d, char *why,
                     size_t why_size);
+/* Draw one figure without writing it: log gets where its texts and panels went (cs_plot_trace). Returns
+ * 0, or -1 with why filled. */
+int cs_figure_trace(cs_figure figure, const cs_figure_data *d, cs_plot_log *log, char *why, size_t why_size);
 /* Every figure in every format, as subdir/<name>.<ext> files begun and ended on out; cs_out_commit
  * then renames them together with the run's other outputs. Creates out's DIR/subdir. Returns 0, or -1
  * with why filled. */

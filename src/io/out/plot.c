@@ -44,10 +44,35 @@ static double text_width(cairo_t *cr, const char *text, double size, int bold) {
     return e.x_advance;
 }
 
+/* The box of text's ink drawn by draw_text at (x, y) (halo: 2 px wider each way). */
+static cs_box text_box(cairo_t *cr, double x, double y, double size, int bold, double align, double angle,
+                       int halo, const char *text) {
+    cairo_text_extents_t e;
+    set_font(cr, size, bold);
+    cairo_text_extents(cr, text, &e);
+    double ox = -align * e.x_advance + e.x_bearing, oy = 0.36 * size + e.y_bearing, m = halo ? 2 : 0;
+    double c = cos(angle), s = sin(angle), lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
+    for (int k = 0; k < 4; k++) {
+        double u = ox + (k & 1 ? e.width + m : -m), v = oy + (k & 2 ? e.height + m : -m);
+        double px = x + c * u - s * v, py = y + s * u + c * v;
+        lo[0] = fmin(lo[0], px), hi[0] = fmax(hi[0], px), lo[1] = fmin(lo[1], py), hi[1] = fmax(hi[1], py);
+    }
+    return (cs_box){lo[0], lo[1], hi[0] - lo[0], hi[1] - lo[1]};
+}
+
 /* Text at (x, y) rotated by angle (rad, clockwise on the page), aligned along its own direction, its
- * vertical centre at y. halo: a white outline under the glyphs. */
-static void draw_text(cairo_t *cr, double x, double y, double size, int bold, double align, double angle,
-                      int halo, const char *text) {
+ * vertical centre at y. halo: a white outline under the glyphs. frame: what it belongs inside, for the
+ * log (NULL: the figure). */
+static void draw_text(cs_plot *p, const cs_box *frame, double x, double y, double size, int bold,
+                      double align, double angle, int halo, const char *text) {
+    cairo_t *cr = p->cr;
+    cs_plot_log *log = p->log;
+    if (log && log->text_count++ < CS_PLOT_LOG_TEXTS) {
+        cs_plot_logged_text *t = &log->text[log->text_count - 1];
+        t->box = text_box(cr, x, y, size, bold, align, angle, halo, text);
+        t->frame = frame ? *frame : (cs_box){0, 0, p->width, p->height};
+        snprintf(t->text, sizeof t->text, "%s", text);
+    }
     cairo_text_extents_t e;
     set_font(cr, size, bold);
     cairo_text_extents(cr, text, &e);
@@ -71,7 +96,7 @@ static void draw_text(cairo_t *cr, double x, double y, double size, int bold, do
 }
 
 void cs_plot_text(cs_plot *p, double x, double y, double size, int bold, double align, const char *text) {
-    draw_text(p->cr, x, y, size, bold, align, 0, 0, text);
+    draw_text(p, NULL, x, y, size, bold, align, 0, 0, text);
 }
 
 /* ---- axes ---- */
@@ -154,11 +179,14 @@ double cs_axes_py(const cs_axes *a, double y) {
     return a->area.y + (a->y1 - y) / (a->y1 - a->y0) * a->area.h;
 }
 
-static void draw_ticks(cairo_t *cr, const cs_axes *a) {
+static void draw_ticks(cs_plot *p, const cs_axes *a) {
+    cairo_t *cr = p->cr;
     char buf[32];
     const cs_box *b = &a->area;
     cairo_set_line_width(cr, 1);
     for (double v = first_tick(a->x0, a->xstep); v <= a->x1 + 1e-9 * a->xstep; v += a->xstep) {
+        int cat = (int)lround(v);
+        if (a->xcat && (cat < 0 || cat >= a->xcat_count)) continue;
         double x = round(cs_axes_px(a, v)) + 0.5;
         set_color(cr, GRID);
         cairo_move_to(cr, x, b->y);
@@ -169,7 +197,8 @@ static void draw_ticks(cairo_t *cr, const cs_axes *a) {
         cairo_line_to(cr, x, b->y + b->h + 5);
         cairo_stroke(cr);
         tick_label(buf, sizeof buf, v, a->xstep);
-        draw_text(cr, x, b->y + b->h + 8 + 0.6 * TICK_FONT, TICK_FONT, 0, 0.5, 0, 0, buf);
+        draw_text(p, NULL, x, b->y + b->h + 8 + (0.6 + (a->xcat ? 1.2 * (cat % 2) : 0)) * TICK_FONT,
+                  TICK_FONT, 0, 0.5, 0, 0, a->xcat ? a->xcat[cat] : buf);
     }
     for (double v = first_tick(a->y0, a->ystep); v <= a->y1 + 1e-9 * a->ystep; v += a->ystep) {
         double y = round(cs_axes_py(a, v)) + 0.5;
@@ -182,7 +211,7 @@ static void draw_ticks(cairo_t *cr, const cs_axes *a) {
         cairo_line_to(cr, b->x, y);
         cairo_stroke(cr);
         tick_label(buf, sizeof buf, v, a->ystep);
-        draw_text(cr, b->x - 8, y, TICK_FONT, 0, 1, 0, 0, buf);
+        draw_text(p, NULL, b->x - 8, y, TICK_FONT, 0, 1, 0, 0, buf);
     }
     if (a->y2_scale == 0) return;
     double s = a->y2_scale;
@@ -194,7 +223,7 @@ static void draw_ticks(cairo_t *cr, const cs_axes *a) {
         cairo_line_to(cr, b->x + b->w + 5, y);
         cairo_stroke(cr);
         tick_label(buf, sizeof buf, v, a->y2step);
-        draw_text(cr, b->x + b->w + 8, y, TICK_FONT, 0, 0, 0, 0, buf);
+        draw_text(p, NULL, b->x + b->w + 8, y, TICK_FONT, 0, 0, 0, 0, buf);
     }
 }
 
@@ -203,7 +232,7 @@ void cs_axes_layout(cs_plot *p, cs_axes *a, cs_box panel) {
     sane_range(&a->x0, &a->x1);
     sane_range(&a->y0, &a->y1);
     double top = a->title ? 2.2 * TITLE_FONT : 12,
-           bottom = 1.6 * TICK_FONT + 14 + (a->xlabel ? 1.8 * LABEL_FONT : 0);
+           bottom = (a->xcat ? 2.8 : 1.6) * TICK_FONT + 14 + (a->xlabel ? 1.8 * LABEL_FONT : 0);
     double label_left = a->ylabel ? 1.8 * LABEL_FONT : 0, label_right = a->y2label ? 1.8 * LABEL_FONT : 0;
     int xt = (int)fmax(3, panel.w / 130), yt = (int)fmax(3, panel.h / 70);
     if (a->equal) {
@@ -224,7 +253,7 @@ void cs_axes_layout(cs_plot *p, cs_axes *a, cs_box panel) {
             a->y1 += 0.03 * span;
             if (a->y0 < 0) a->y0 -= 0.03 * span;
         }
-        a->xstep = cs_plot_nice_step(a->x0, a->x1, xt);
+        a->xstep = a->xcat ? 1 : cs_plot_nice_step(a->x0, a->x1, xt);
         a->ystep = cs_plot_nice_step(a->y0, a->y1, yt);
         if (!a->fix_x)
             a->x0 = floor(a->x0 / a->xstep + 1e-9) * a->xstep,
@@ -246,22 +275,30 @@ void cs_axes_layout(cs_plot *p, cs_axes *a, cs_box panel) {
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_rectangle(cr, b->x, b->y, b->w, b->h);
     cairo_fill(cr);
-    draw_ticks(cr, a);
+    draw_ticks(p, a);
     set_color(cr, INK);
     cairo_set_line_width(cr, 1.2);
     cairo_rectangle(cr, round(b->x) + 0.5, round(b->y) + 0.5, round(b->w), round(b->h));
     cairo_stroke(cr);
     if (a->title)
-        draw_text(cr, b->x + 0.5 * b->w, panel.y + 0.95 * TITLE_FONT, TITLE_FONT, 1, 0.5, 0, 0, a->title);
+        draw_text(p, NULL, b->x + 0.5 * b->w, panel.y + 0.95 * TITLE_FONT, TITLE_FONT, 1, 0.5, 0, 0,
+                  a->title);
     if (a->xlabel)
-        draw_text(cr, b->x + 0.5 * b->w, b->y + b->h + 14 + 1.6 * TICK_FONT + 0.8 * LABEL_FONT, LABEL_FONT, 0,
-                  0.5, 0, 0, a->xlabel);
+        draw_text(p, NULL, b->x + 0.5 * b->w,
+                  b->y + b->h + 14 + (a->xcat ? 2.8 : 1.6) * TICK_FONT + 0.8 * LABEL_FONT, LABEL_FONT, 0, 0.5,
+                  0, 0, a->xlabel);
     if (a->ylabel)
-        draw_text(cr, panel.x + 0.9 * LABEL_FONT, b->y + 0.5 * b->h, LABEL_FONT, 0, 0.5, -PI / 2, 0,
+        draw_text(p, NULL, panel.x + 0.9 * LABEL_FONT, b->y + 0.5 * b->h, LABEL_FONT, 0, 0.5, -PI / 2, 0,
                   a->ylabel);
     if (a->y2label)
-        draw_text(cr, panel.x + panel.w - a->legend_width - 0.9 * LABEL_FONT - 8, b->y + 0.5 * b->h,
+        draw_text(p, NULL, panel.x + panel.w - a->legend_width - 0.9 * LABEL_FONT - 8, b->y + 0.5 * b->h,
                   LABEL_FONT, 0, 0.5, PI / 2, 0, a->y2label);
+    cs_plot_log *log = p->log;
+    if (log && log->panel_count++ < CS_PLOT_LOG_PANELS) {
+        cs_plot_logged_panel *q = &log->panel[log->panel_count - 1];
+        *q = (cs_plot_logged_panel){a->area, a->x0, a->x1, a->y0, a->y1, a->equal, ""};
+        snprintf(q->title, sizeof q->title, "%s", a->title ? a->title : "");
+    }
 }
 
 /* ---- drawing data ---- */
@@ -435,8 +472,22 @@ void cs_plot_polygon(cs_plot *p, cs_axes *a, const double *x, const double *y, i
 
 void cs_plot_label(cs_plot *p, cs_axes *a, double x, double y, double dx, double dy, double align,
                    const char *text) {
-    double px = cs_axes_px(a, x) + dx, py = cs_axes_py(a, y) + dy;
-    if (isfinite(px) && isfinite(py)) draw_text(p->cr, px, py, NOTE_FONT, 0, align, 0, 1, text);
+    double px = cs_axes_px(a, x), py = cs_axes_py(a, y), pad = 3;
+    if (!isfinite(px) || !isfinite(py)) return;
+    const cs_box *f = &a->area;
+    cs_box b = text_box(p->cr, px + dx, py + dy, NOTE_FONT, 0, align, 0, 1, text);
+    if (b.x + b.w > f->x + f->w - pad || b.x < f->x + pad) { /* the other side of the point, if it fits */
+        cs_box o = text_box(p->cr, px - dx, py + dy, NOTE_FONT, 0, 1 - align, 0, 1, text);
+        if (o.x >= f->x + pad && o.x + o.w <= f->x + f->w - pad) dx = -dx, align = 1 - align, b = o;
+    }
+    if (b.y < f->y + pad || b.y + b.h > f->y + f->h - pad) {
+        cs_box o = text_box(p->cr, px + dx, py - dy, NOTE_FONT, 0, align, 0, 1, text);
+        if (o.y >= f->y + pad && o.y + o.h <= f->y + f->h - pad) dy = -dy, b = o;
+    }
+    /* what still sticks out is moved in (the left and top edges win over a text too big for the area) */
+    double mx = fmin(0, f->x + f->w - pad - (b.x + b.w)), my = fmin(0, f->y + f->h - pad - (b.y + b.h));
+    mx = fmax(mx, f->x + pad - b.x), my = fmax(my, f->y + pad - b.y);
+    draw_text(p, f, px + dx + mx, py + dy + my, NOTE_FONT, 0, align, 0, 1, text);
 }
 
 void cs_plot_legend(cs_plot *p, const cs_axes *a, cs_legend_place place) {
@@ -474,7 +525,8 @@ void cs_plot_legend(cs_plot *p, const cs_axes *a, cs_legend_place place) {
             }
             draw_marker(cr, sx + 0.5 * sample, cy, e->style.marker, e->style.marker_size, e->style.color);
         }
-        draw_text(cr, sx + sample + 8, cy, LEGEND_FONT, 0, 0, 0, 0, e->label);
+        draw_text(p, place == CS_LEGEND_OUTSIDE_RIGHT ? NULL : &a->area, sx + sample + 8, cy, LEGEND_FONT, 0,
+                  0, 0, 0, e->label);
     }
 }
 
@@ -520,9 +572,10 @@ void cs_plot_colorbar(cs_plot *p, cs_box box, const char *label) {
         cairo_line_to(cr, x, box.y + box.h + 5);
         cairo_stroke(cr);
         tick_label(buf, sizeof buf, k / 4.0, 0.25);
-        draw_text(cr, x, box.y + box.h + 8 + 0.6 * TICK_FONT, TICK_FONT, 0, 0.5, 0, 0, buf);
+        draw_text(p, NULL, x, box.y + box.h + 8 + 0.6 * TICK_FONT, TICK_FONT, 0, 0.5, 0, 0, buf);
     }
-    if (label) draw_text(cr, box.x + 0.5 * box.w, box.y - 0.8 * LABEL_FONT, LABEL_FONT, 0, 0.5, 0, 0, label);
+    if (label)
+        draw_text(p, NULL, box.x + 0.5 * box.w, box.y - 0.8 * LABEL_FONT, LABEL_FONT, 0, 0.5, 0, 0, label);
 }
 
 /* ---- output ---- */
@@ -531,8 +584,9 @@ static cairo_status_t to_file(void *closure, const unsigned char *data, unsigned
     return fwrite(data, 1, length, closure) == length ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
 }
 
-int cs_plot_write(FILE *f, cs_plot_format format, double width, double height, cs_plot_draw_fn draw,
-                  const void *user, char *why, size_t why_size) {
+/* Draw on a surface of format and write it to f; f NULL: an image, written nowhere, traced into log. */
+static int plot_write(FILE *f, cs_plot_format format, double width, double height, cs_plot_draw_fn draw,
+                      const void *user, cs_plot_log *log, char *why, size_t why_size) {
     cairo_surface_t *s;
     if (format == CS_PLOT_PNG)
         s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)ceil(width), (int)ceil(height));
@@ -548,11 +602,12 @@ int cs_plot_write(FILE *f, cs_plot_format format, double width, double height, c
     cairo_t *cr = cairo_create(s);
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
-    cs_plot p = {cr, width, height};
+    if (log) memset(log, 0, sizeof *log), log->width = width, log->height = height;
+    cs_plot p = {cr, width, height, log};
     int rc = draw(&p, user, why, why_size);
     cairo_status_t st = cairo_status(cr);
     cairo_destroy(cr);
-    if (rc == 0 && st == CAIRO_STATUS_SUCCESS && format == CS_PLOT_PNG)
+    if (rc == 0 && st == CAIRO_STATUS_SUCCESS && format == CS_PLOT_PNG && f)
         st = cairo_surface_write_to_png_stream(s, to_file, f);
     cairo_surface_finish(s);
     if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_status(s);
@@ -562,6 +617,16 @@ int cs_plot_write(FILE *f, cs_plot_format format, double width, double height, c
         rc = -1;
     }
     return rc;
+}
+
+int cs_plot_write(FILE *f, cs_plot_format format, double width, double height, cs_plot_draw_fn draw,
+                  const void *user, char *why, size_t why_size) {
+    return plot_write(f, format, width, height, draw, user, NULL, why, why_size);
+}
+
+int cs_plot_trace(double width, double height, cs_plot_draw_fn draw, const void *user, cs_plot_log *log,
+                  char *why, size_t why_size) {
+    return plot_write(NULL, CS_PLOT_PNG, width, height, draw, user, log, why, why_size);
 }
 
 int cs_plot_save(const char *path, double width, double height, cs_plot_draw_fn draw, const void *user,

@@ -16,9 +16,12 @@ typedef enum cs_plot_format { CS_PLOT_UNKNOWN = -1, CS_PLOT_PNG, CS_PLOT_SVG, CS
 cs_plot_format cs_plot_format_of(const char *name);
 const char *cs_plot_extension(cs_plot_format format); /* "png", "svg", "pdf" */
 
+typedef struct cs_plot_log cs_plot_log;
+
 typedef struct cs_plot {
     cairo_t *cr;
     double width, height;
+    cs_plot_log *log; /* NULL; cs_plot_trace: what the drawing puts where */
 } cs_plot;
 
 typedef struct cs_rgb {
@@ -76,6 +79,8 @@ typedef struct cs_axes {
     int equal;                   /* a view: one unit is as long on x as on y */
     int fix_x, fix_y;            /* keep the range as set, do not round it out to ticks */
     double legend_width;         /* space kept on the right for an outside legend */
+    const char *const *xcat;     /* categories: x ticks at 0, 1, ... named so (on two staggered rows) */
+    int xcat_count;
     double x0, x1, y0, y1;       /* data range */
     double xstep, ystep, y2step; /* tick spacing, set by layout */
     cs_box area;                 /* plotting area, set by layout */
@@ -116,7 +121,9 @@ void cs_plot_polygon(cs_plot *p, cs_axes *a, const double *x, const double *y, i
 /* A line segment from (x0, y0) to (x1, y1). */
 void cs_plot_segment(cs_plot *p, cs_axes *a, double x0, double y0, double x1, double y1, const cs_style *s);
 /* Text at a data point, offset by (dx, dy) device units; align 0 left, 0.5 centre, 1 right of the point.
- * Drawn on a white halo so it stays readable over lines. */
+ * Drawn on a white halo so it stays readable over lines, and inside the plotting area: a label that
+ * would cross its right or left edge goes to the other side of the point (align mirrored, dx negated),
+ * one that would cross its top or bottom below or above it (dy negated), then it is moved in. */
 void cs_plot_label(cs_plot *p, cs_axes *a, double x, double y, double dx, double dy, double align,
                    const char *text);
 /* Add a legend entry without drawing (for things drawn piecewise). */
@@ -134,10 +141,38 @@ cs_rgb cs_plot_palette(int k);
 
 typedef int (*cs_plot_draw_fn)(cs_plot *p, const void *user, char *why, size_t why_size);
 
+/* What a drawing put where, in device units (y down): the box of every text's ink with the frame it
+ * belongs inside (a label's: its plotting area; an inside legend's: the plotting area; any other text's:
+ * the figure), and every panel's plotting area and final data ranges. For tests of the layout. */
+enum { CS_PLOT_LOG_TEXTS = 1024, CS_PLOT_LOG_PANELS = 32 };
+
+typedef struct cs_plot_logged_text {
+    cs_box box, frame;
+    char text[CS_LABEL_SIZE];
+} cs_plot_logged_text;
+
+typedef struct cs_plot_logged_panel {
+    cs_box area;
+    double x0, x1, y0, y1;
+    int equal;
+    char title[CS_LABEL_SIZE];
+} cs_plot_logged_panel;
+
+struct cs_plot_log {
+    int text_count, panel_count; /* how many were drawn: those past the arrays' sizes are not kept */
+    double width, height;        /* the figure's */
+    cs_plot_logged_text text[CS_PLOT_LOG_TEXTS];
+    cs_plot_logged_panel panel[CS_PLOT_LOG_PANELS];
+};
+
 /* Draw a width x height figure with draw and write it to f in format. Returns 0, or -1 with why filled
  * (draw's own failure, a cairo error, a write error). */
 int cs_plot_write(FILE *f, cs_plot_format format, double width, double height, cs_plot_draw_fn draw,
                   const void *user, char *why, size_t why_size);
+/* Draw a width x height figure with draw on an image (as a PNG would be drawn) and write nothing: log
+ * (zeroed first) gets where every text and panel went. Returns 0, or -1 with why filled. */
+int cs_plot_trace(double width, double height, cs_plot_draw_fn draw, const void *user, cs_plot_log *log,
+                  char *why, size_t why_size);
 /* The same to a file; the format follows path's extension. */
 int cs_plot_save(const char *path, double width, double height, cs_plot_draw_fn draw, const void *user,
                  char *why, size_t why_size);

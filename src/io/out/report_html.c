@@ -9,6 +9,7 @@
 
 #include "cablesim/cablesim.h"
 #include "figures.h"
+#include "load/schema.h"
 #include "writers.h"
 
 static const double G0 = 9.80665;
@@ -327,6 +328,135 @@ static void write_frames(jw *j, const cs_record *r, int stride) {
     fputc(']', f);
 }
 
+/* ---- the design as loaded ---- */
+
+/* A capacity that may be a rule instead of a number: key as a number where one is given, else null and
+ * key_rule what stands for it. */
+static void kcapacity(jw *j, int *first, const char *k, double v, const char *rule) {
+    char rk[64];
+    kopt(j, first, k, isfinite(v) && v > 0 ? v : NAN);
+    snprintf(rk, sizeof rk, "%s_rule", k);
+    kstr(j, first, rk, isinf(v) ? "never" : v > 0 ? "" : rule);
+}
+
+static void write_footing(jw *j, int *first, const cs_footing_def *f, const char *pullout_rule) {
+    knum(j, first, "diameter_m", f->diameter);
+    knum(j, first, "depth_m", f->depth);
+    knum(j, first, "rotation_limit_rad", f->rotation_limit);
+    kcapacity(j, first, "pullout_capacity_n", f->pullout_capacity, pullout_rule);
+}
+
+/* A struct's doubles by name and place. */
+typedef struct field {
+    const char *key;
+    size_t offset;
+} field;
+
+static const field rope_fields[] = {{"diameter_m", offsetof(cs_rope_def, diameter)},
+                                    {"area_m2", offsetof(cs_rope_def, area)},
+                                    {"strength_n", offsetof(cs_rope_def, nominal_strength)},
+                                    {"modulus_pa", offsetof(cs_rope_def, modulus)}};
+static const field section_fields[] = {{"plastic_modulus_m3", offsetof(cs_section_def, plastic_modulus)},
+                                       {"inertia_m4", offsetof(cs_section_def, inertia)},
+                                       {"yield_stress_pa", offsetof(cs_section_def, yield_stress)},
+                                       {"modulus_pa", offsetof(cs_section_def, modulus)},
+                                       {"mass_per_length_kg_m", offsetof(cs_section_def, mass_per_length)}};
+
+static void kfields(jw *j, int *first, const void *base, const field *fields, size_t count) {
+    for (size_t k = 0; k < count; k++) {
+        double v;
+        memcpy(&v, (const char *)base + fields[k].offset, sizeof v);
+        knum(j, first, fields[k].key, v);
+    }
+}
+
+/* Two posts of one kind: all but their place alike. */
+static int same_kind(const cs_post_def *a, const cs_post_def *b) {
+    const cs_section_def *s = &a->section, *t = &b->section;
+    const cs_footing_def *f = &a->footing, *g = &b->footing;
+    return a->height == b->height && a->attachment == b->attachment && a->release_force == b->release_force &&
+           a->rotation_limit == b->rotation_limit && s->plastic_modulus == t->plastic_modulus &&
+           s->inertia == t->inertia && s->web_area == t->web_area && s->yield_stress == t->yield_stress &&
+           s->modulus == t->modulus && s->mass_per_length == t->mass_per_length &&
+           f->diameter == g->diameter && f->depth == g->depth && f->rotation_limit == g->rotation_limit &&
+           f->pullout_capacity == g->pullout_capacity;
+}
+
+/* "design": the barrier's ropes, its kinds of post (section, footing, where they stand), the posts'
+ * spacing, the soil (the first post's footing's) and the anchors, in SI, as the engine gets them. */
+static void write_design(jw *j, int *first, const cs_barrier_def *b) {
+    FILE *f = j->w.f;
+    snprintf(j->what, sizeof j->what, "the design");
+    key(j, first, "design");
+    fputs("{\"ropes\":[", f);
+    for (int c = 0; c < b->cable_count; c++) {
+        const cs_cable_def *cd = &b->cables[c];
+        int rf = 1;
+        fputs(c ? ",{" : "{", f);
+        knum(j, &rf, "height_m", cd->height);
+        kfields(j, &rf, &cd->rope, rope_fields, sizeof rope_fields / sizeof rope_fields[0]);
+        knum(j, &rf, "pretension_n", cd->pretension);
+        kstr(j, &rf, "termination", cs_termination_word(cd->termination));
+        knum(j, &rf, "termination_efficiency",
+             cd->termination_efficiency > 0 ? cd->termination_efficiency
+                                            : cs_termination_efficiency(cd->termination, cd->rope.diameter));
+        fputc('}', f);
+    }
+    fputs("],\"post_kinds\":[", f);
+    int kinds = 0;
+    for (int p = 0; p < b->post_count; p++) {
+        const cs_post_def *pd = &b->posts[p];
+        int seen = 0, count = 0, pf = 1;
+        for (int q = 0; q < p && !seen; q++)
+            seen = same_kind(&b->posts[q], pd);
+        if (seen) continue;
+        fputs(kinds++ ? ",{\"posts\":[" : "{\"posts\":[", f);
+        for (int q = p; q < b->post_count; q++)
+            if (same_kind(&b->posts[q], pd)) fprintf(f, "%s%d", count++ ? "," : "", q);
+        fputc(']', f);
+        pf = 0;
+        knum(j, &pf, "height_m", pd->height);
+        kfields(j, &pf, &pd->section, section_fields, sizeof section_fields / sizeof section_fields[0]);
+        knum(j, &pf, "rotation_limit_rad", pd->rotation_limit);
+        kstr(j, &pf, "attachment", cs_attachment_word(pd->attachment));
+        key(j, &pf, "footing");
+        int ff = 1;
+        fputc('{', f);
+        write_footing(j, &ff, &pd->footing, "skin friction");
+        fputs("}}", f);
+    }
+    fputs("],\"post_x_m\":[", f);
+    for (int p = 0; p < b->post_count; p++) {
+        if (p) fputc(',', f);
+        num(j, b->posts[p].x);
+    }
+    fputs("],\"soil\":{", f);
+    const cs_footing_def *soil = b->post_count ? &b->posts[0].footing : &b->start_anchor.footing;
+    int sf = 1;
+    knum(j, &sf, "soil_pressure_pa", soil->soil_pressure);
+    knum(j, &sf, "soil_pressure_cap_pa", soil->soil_pressure_cap);
+    knum(j, &sf, "coeff_depth", soil->coeff_depth);
+    knum(j, &sf, "coeff_height", soil->coeff_height);
+    knum(j, &sf, "dynamic_factor", soil->dynamic_factor);
+    knum(j, &sf, "friction_angle_rad", soil->friction_angle);
+    knum(j, &sf, "skin_friction_pa_m", soil->skin_friction);
+    fputs("},\"anchors\":[", f);
+    for (int k = 0; k < 2; k++) {
+        const cs_anchor_def *a = k ? &b->end_anchor : &b->start_anchor;
+        int af = 1;
+        fputs(k ? ",{" : "{", f);
+        knum(j, &af, "x_m", a->x);
+        knum(j, &af, "z_m", a->z);
+        knum(j, &af, "diameter_m", a->footing.diameter);
+        knum(j, &af, "depth_m", a->footing.depth);
+        knum(j, &af, "length_m", a->length > 0 ? a->length : a->footing.diameter);
+        kopt(j, &af, "mass_kg", a->mass > 0 ? a->mass : NAN);
+        kcapacity(j, &af, "pullout_capacity_n", a->pullout_capacity, "its weight and skin friction");
+        fputc('}', f);
+    }
+    fputs("]}", f);
+}
+
 /* "cablesim": {version, command, overrides, model_hash} and "ratings": [{standard, label, text}]. */
 static void write_info(jw *j, int *first, const cs_run_info *info) {
     FILE *f = j->w.f;
@@ -451,6 +581,7 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
     fputc(',', f);
     num(&j, b->end_anchor.z);
     fputs("]]}", f);
+    write_design(&j, &first, b);
     /* events: [t, type, element kind, element, value (SI)] */
     key(&j, &first, "events");
     fputc('[', f);

@@ -96,8 +96,14 @@ static int study_make(study *s, const cs_sweep_spec *spec, const double *x, cons
     return 0;
 }
 
-static double input_at(const study *s, int v, long i) {
-    return s->in[(size_t)v * (size_t)(s->ok > 0 ? s->ok : 1) + (size_t)i];
+/* Input v of run i in the unit the spec wrote it in (cs_sweep_var's shown_unit). */
+static double input_at(const study *s, const cs_sweep_spec *spec, int v, long i) {
+    double scale = spec->vars[v].shown_scale;
+    return s->in[(size_t)v * (size_t)(s->ok > 0 ? s->ok : 1) + (size_t)i] / (scale > 0 ? scale : 1);
+}
+
+static const char *input_unit(const cs_sweep_var *v) {
+    return v->shown_scale > 0 ? v->shown_unit : v->unit;
 }
 
 /* The input most correlated with response q (largest |rho|), or -1. */
@@ -139,21 +145,24 @@ static void bar(cs_plot *p, cs_axes *a, double x0, double x1, double y0, double 
 }
 
 static void draw_outcomes(cs_plot *p, const study *s) {
-    char title[96];
+    char title[96], names[OUTCOMES][48];
+    const char *cats[OUTCOMES];
     snprintf(title, sizeof title, "outcomes of %ld runs, with 95%% Wilson intervals", s->ok);
+    for (int o = 0; o < OUTCOMES; o++) {
+        snprintf(names[o], sizeof names[o], "%s (%ld)", cs_outcome_name(outcomes[o]), s->count[o]);
+        cats[o] = names[o];
+    }
     cs_axes a;
     cs_axes_init(&a, title, NULL, "probability");
+    a.xcat = cats, a.xcat_count = OUTCOMES;
     cs_axes_set_x(&a, -0.6, OUTCOMES - 0.4);
     cs_axes_set_y(&a, 0.0, 1.05);
-    cs_axes_layout(p, &a, (cs_box){8, 8, p->width - 16, p->height - 40});
+    cs_axes_layout(p, &a, whole(p));
     cs_style whisker = {{0.1, 0.1, 0.1}, 1.4, CS_SOLID, CS_MARK_NONE, 0};
-    for (int o = 0; o < OUTCOMES; o++) {
+    for (int o = 0; o < OUTCOMES && s->ok > 0; o++) {
         cs_interval w = cs_wilson(s->count[o], s->ok, 1.959963984540054);
-        if (s->ok > 0) bar(p, &a, o - 0.35, o + 0.35, 0.0, w.p, cs_plot_palette(o));
-        if (s->ok > 0) cs_plot_segment(p, &a, o, w.lo, o, w.hi, &whisker);
-        char label[48];
-        snprintf(label, sizeof label, "%s (%ld)", cs_outcome_name(outcomes[o]), s->count[o]);
-        cs_plot_label(p, &a, o, 0.0, 0, 14 + 12 * (o % 2), 0.5, label);
+        bar(p, &a, o - 0.35, o + 0.35, 0.0, w.p, cs_plot_palette(o));
+        cs_plot_segment(p, &a, o, w.lo, o, w.hi, &whisker);
     }
 }
 
@@ -226,11 +235,11 @@ static void draw_scatter(cs_plot *p, const cs_sweep_spec *spec, const study *s, 
     else
         snprintf(title, sizeof title, "%s: no numeric input varies with it", responses[q].title);
     snprintf(xlabel, sizeof xlabel, "%s (%s)", v >= 0 ? spec->vars[v].path : "-",
-             v >= 0 ? spec->vars[v].unit : "");
+             v >= 0 ? input_unit(&spec->vars[v]) : "");
     cs_axes a;
     cs_axes_init(&a, title, xlabel, responses[q].axis);
     for (long i = 0; v >= 0 && i < s->ok; i++)
-        if (isfinite(s->y[q][i])) cs_axes_fit_point(&a, input_at(s, v, i), s->y[q][i]);
+        if (isfinite(s->y[q][i])) cs_axes_fit_point(&a, input_at(s, spec, v, i), s->y[q][i]);
     if (v < 0) cs_axes_set_x(&a, 0.0, 1.0), cs_axes_set_y(&a, 0.0, 1.0);
     cs_axes_layout(p, &a, whole(p));
     for (int o = 0; v >= 0 && o < OUTCOMES; o++) { /* one series per outcome, so the legend names them */
@@ -239,7 +248,7 @@ static void draw_scatter(cs_plot *p, const cs_sweep_spec *spec, const study *s, 
         int shown = 0;
         for (long i = 0; i < s->ok; i++) {
             if (s->outcome[i] != o || !isfinite(s->y[q][i])) continue;
-            double px = input_at(s, v, i), py = s->y[q][i];
+            double px = input_at(s, spec, v, i), py = s->y[q][i];
             cs_plot_line(p, &a, &px, &py, 1, &dot, shown ? NULL : cs_outcome_name(outcomes[o]));
             shown = 1;
         }
@@ -290,21 +299,38 @@ int cs_study_write_page(FILE *f, const cs_sweep_spec *spec, const double *x, con
     cs_html_text(f, spec->file);
     fputs("</title>\n<style>body{font-family:sans-serif;margin:1.5em;max-width:1000px}table{border-collapse:"
           "collapse;margin:0.5em 0}td,th{border:1px solid #bbb;padding:3px 8px;text-align:right}"
-          "td:first-child,th:first-child{text-align:left}svg{max-width:100%;height:auto}"
+          "td:first-child,th:first-child,#inputs td:nth-child(-n+3),#inputs "
+          "th:nth-child(-n+3){text-align:left}svg{max-width:100%;height:auto}"
           "@media print{svg{page-break-inside:avoid}}</style></head><body>\n<h1>Study: ",
           f);
     cs_html_text(f, spec->file);
     fprintf(f, "</h1>\n<p>%s of %ld runs of ", cs_sweep_method_name(spec->method), n);
     cs_html_text(f, spec->model);
-    fprintf(f, "; %ld ran to their end (the others are counted in summary.md). Varied:</p>\n<ul>\n", s.ok);
+    fprintf(f, "; %ld ran to their end (the others are counted in summary.md).</p>\n", s.ok);
+    fputs("<h2>Inputs</h2>\n<p>Each varied value as the spec gives it, and the values its runs used, in "
+          "the spec's unit.</p>\n<table id=\"inputs\"><tr><th>input</th><th>varied as</th><th>unit</th>"
+          "<th>min</th><th>median</th><th>max</th></tr>\n",
+          f);
+    double *sorted = malloc((size_t)(s.ok > 0 ? s.ok : 1) * sizeof *sorted);
     for (int v = 0; v < spec->var_count; v++) {
-        fputs("<li>", f);
-        cs_html_text(f, spec->vars[v].path);
-        fputs(": ", f);
-        cs_html_text(f, spec->vars[v].desc);
-        fputs("</li>\n", f);
+        const cs_sweep_var *var = &spec->vars[v];
+        fputs("<tr><td>", f);
+        cs_html_text(f, var->path);
+        fputs("</td><td>", f);
+        cs_html_text(f, var->desc);
+        fputs("</td><td>", f);
+        cs_html_text(f, var->numeric ? input_unit(var) : "");
+        long m = 0;
+        for (long i = 0; sorted && var->numeric && i < s.ok; i++)
+            sorted[m++] = input_at(&s, spec, v, i);
+        cs_sweep_sort(sorted, m);
+        if (m == 0)
+            fputs("</td><td>-</td><td>-</td><td>-</td></tr>\n", f);
+        else
+            fprintf(f, "</td><td>%.6g</td><td>%.6g</td><td>%.6g</td></tr>\n", sorted[0],
+                    cs_sweep_quantile(sorted, m, 0.5), sorted[m - 1]);
     }
-    fputs("</ul>\n<h2>Outcomes</h2>\n<table><tr><th>outcome</th><th>runs</th><th>probability</th>"
+    fputs("</table>\n<h2>Outcomes</h2>\n<table><tr><th>outcome</th><th>runs</th><th>probability</th>"
           "<th>95% interval</th></tr>\n",
           f);
     for (int o = 0; o < OUTCOMES; o++) {
@@ -316,7 +342,6 @@ int cs_study_write_page(FILE *f, const cs_sweep_spec *spec, const double *x, con
     fputs("</table>\n<h2>Responses</h2>\n<table><tr><th>response</th><th>runs</th><th>mean</th><th>min</th>"
           "<th>5%</th><th>median</th><th>95%</th><th>max</th></tr>\n",
           f);
-    double *sorted = malloc((size_t)(s.ok > 0 ? s.ok : 1) * sizeof *sorted);
     for (int q = 0; sorted && q < CS_STUDY_RESPONSES; q++) {
         long m = 0;
         double sum = 0.0;

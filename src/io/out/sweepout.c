@@ -61,6 +61,7 @@ enum {
     C_DECEL,
     C_T_DECEL,
     C_PEN,
+    C_BEYOND,
     C_DEFL,
     C_WIDTH,
     C_STOP,
@@ -93,8 +94,12 @@ static const cs_sweep_column summary_columns[C_ERROR] = {
                  CS_COLUMN_REAL, C_DECEL},
     [C_T_DECEL] = {"t_max_50ms_decel", "s", NULL, "time of the max 50-ms deceleration", CS_COLUMN_REAL,
                    C_T_DECEL},
-    [C_PEN] = {"max_dynamic_penetration", "m", NULL, "max dynamic penetration past the attack face",
-               CS_COLUMN_REAL, C_PEN},
+    [C_PEN] = {"max_dynamic_penetration", "m", NULL,
+               "max dynamic penetration past the attack face (a vehicle the barrier held)", CS_COLUMN_REAL,
+               C_PEN},
+    [C_BEYOND] = {"penetration_beyond", "m", NULL,
+                  "penetration beyond this: how far a vehicle not held had got when the run ended",
+                  CS_COLUMN_REAL, C_BEYOND},
     [C_DEFL] = {"max_barrier_deflection", "m", NULL, "max barrier deflection", CS_COLUMN_REAL, C_DEFL},
     [C_WIDTH] = {"working_width", "m", NULL,
                  "working width: furthest reach past the barrier line (vehicle, cable or standing post)",
@@ -158,7 +163,9 @@ double cs_sweep_column_number(const cs_sweep_column *c, const cs_sweep_result *r
     case C_T_DECEL:
         return m->t_max_50ms_decel_s;
     case C_PEN:
-        return m->max_dynamic_penetration_m;
+        return cs_penetration_is_final(m->outcome) ? m->max_dynamic_penetration_m : NAN;
+    case C_BEYOND:
+        return cs_penetration_is_final(m->outcome) ? NAN : m->max_dynamic_penetration_m;
     case C_DEFL:
         return m->max_barrier_deflection_m;
     case C_WIDTH:
@@ -713,7 +720,8 @@ static int set_column(const cs_sweep_column *c, cs_sweep_result *r, const char *
         m->t_max_50ms_decel_s = v;
         break;
     case C_PEN:
-        m->max_dynamic_penetration_m = v;
+    case C_BEYOND: /* one of the two has it */
+        if (!isnan(v)) m->max_dynamic_penetration_m = v;
         break;
     case C_DEFL:
         m->max_barrier_deflection_m = v;
