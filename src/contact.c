@@ -163,10 +163,6 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
         if (!released[k]) cs->corner_z[k] = cs->corner_z_commit[k] = bz;
         cs_vehicle_corner_point(model, s, s->crush, k, cs->corner_z[k], p);
         cs_cable_insert_node(cs, j, cs_corner_node(k), p);
-        if (!wraps(s, cs, j, k)) { /* across the path in plan, but the rope's turn there (a sagging */
-            cs_cable_remove_node(cs, j); /* span's kink) would let it go again at the next update */
-            continue;
-        }
         if (released[k] && was_m[k] > cs->m[j - 1] && was_m[k] < cs->m[j + 1] &&
             was_m_commit[k] > cs->m_commit[j - 1] && was_m_commit[k] < cs->m_commit[j + 1])
             cs->m[j] = was_m[k], cs->m_commit[j] = was_m_commit[k];
