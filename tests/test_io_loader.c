@@ -233,6 +233,8 @@ static void test_set_errors(void **state) {
                                        "scenario.speed=35 kg",
                                        "no equals sign",
                                        "barrier..x=1",
+                                       "barrier.file=other.yaml",
+                                       "vehicle.part=C",
                                        NULL};
     static const char *const want[] = {
         "--set scenario.sped=35 mph: unknown key 'sped' in scenario",
@@ -241,6 +243,8 @@ static void test_set_errors(void **state) {
         "--set scenario.speed=35 kg: 'kg' is a unit of mass, not of speed",
         "--set no equals sign: expected PATH=VALUE",
         "--set barrier..x=1: malformed path",
+        "--set barrier.file=other.yaml: 'file' is followed when the model file is read, not after",
+        "--set vehicle.part=C: 'part' is followed when the model file is read, not after",
         NULL};
     expect_problems(CS_SOURCE_DIR "/tests/good/base.yaml", sets, want);
 }

@@ -463,6 +463,13 @@ static void apply_set(cs_loader *l, cs_node **root, int k) {
             cs_err_at(l, src, 0, 0, "'%s' is not a single value (expected a path to one value)", key);
             return;
         }
+        if (last && (strcmp(key, "file") == 0 || strcmp(key, "part") == 0)) {
+            cs_err_at(l, src, 0, 0,
+                      "'%s' is followed when the model file is read, not after (expected a value of the "
+                      "model, or the file edited to name another %s)",
+                      key, key);
+            return;
+        }
         if (last) {
             *ref = set_node(l, k, CS_Y_SCALAR, NULL);
             if (*ref && f->kind == CS_F_PART) *ref = (cs_node *)resolve_top(l, *ref, f->key);

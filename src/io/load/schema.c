@@ -524,7 +524,9 @@ int cs_schema_markdown(FILE *out) {
             "Units are read by udunits2, plus `mph`, `kph`, `psf`, `ksf`, `kips`, `deg`, `lbm` and `g` "
             "(standard gravity where an acceleration is expected). A unit of the wrong kind is an error.\n\n"
             "`cablesim run FILE --set PATH=VALUE` replaces any value by its path, e.g. "
-            "`--set scenario.speed=\"35 mph\"` or `--set barrier.cables[0].pretension=\"8 kip\"`.\n\n"
+            "`--set scenario.speed=\"35 mph\"` or `--set barrier.cables[0].pretension=\"8 kip\"`. "
+            "`file` and `part` are followed when the file is read, so a `--set` of either is refused "
+            "(the top-level `vehicle=NAME` is not: it names the vehicle).\n\n"
             "## Quantities\n\n| quantity | SI unit | example |\n| --- | --- | --- |\n");
     for (int q = 0; q < CS_Q_COUNT; q++) {
         const cs_quantity_info *qi = cs_quantity_get((cs_quantity)q);
