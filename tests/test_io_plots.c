@@ -1,10 +1,10 @@
 /* Plots: the plotting layer puts a known value on the expected pixel and keeps a label inside its frame
  * at every corner, and every figure of a synthetic run comes out as a PNG of the stated size that is not
  * blank, and as well-formed SVG and PDF; traced, every text of every figure lies inside its frame (a
- * label inside its plotting area, the rest inside the figure), the time axes end at the run's end, the
- * top views are at true scale with the whole vehicle in them, and the posts' legend names a post that is
- * the mirror image of another; the set written through an output directory is complete and leaves no
- * temporaries. */
+ * label inside its plotting area, the rest inside the figure), the time axes end at the run's end (and
+ * compare's at the end of the last trace it shows), the top views are at true scale with the whole
+ * vehicle in them, and the posts' legend names a post that is the mirror image of another; the set written
+ * through an output directory is complete and leaves no temporaries. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <setjmp.h>
@@ -18,6 +18,7 @@
 
 #include <cmocka.h>
 
+#include "out/compare.h"
 #include "out/figures.h"
 #include "out/plot.h"
 
@@ -480,6 +481,61 @@ static void test_time_axes_end_at_the_run_end(void **state) {
     synthetic_free(s, NULL, 0);
 }
 
+/* A trace of t_end s at 1-ms frames from t0, a truck slowing from 17.9 m/s; with only its speed
+ * (measured) or every response (a run). */
+static cs_trace compared(const char *label, double t0, double t_end, int measured) {
+    cs_trace tr = {.measured = measured, .n = (size_t)lround((t_end - t0) / 1e-3) + 1};
+    snprintf(tr.label, sizeof tr.label, "%s", label);
+    assert_non_null(tr.t = malloc(tr.n * sizeof *tr.t));
+    for (int k = 0; k < CS_TRACE_COUNT; k++) {
+        tr.have[k] = !measured || k == CS_TRACE_SPEED;
+        if (!tr.have[k]) continue;
+        assert_non_null(tr.y[k] = malloc(tr.n * sizeof *tr.y[k]));
+    }
+    for (size_t i = 0; i < tr.n; i++) {
+        double t = t0 + 1e-3 * (double)i;
+        tr.t[i] = t;
+        for (int k = 0; k < CS_TRACE_COUNT; k++)
+            if (tr.have[k])
+                tr.y[k][i] = k == CS_TRACE_SPEED         ? 17.9 - 30 * fmax(t, 0)
+                             : k == CS_TRACE_PENETRATION ? 4 * fmax(t, 0)
+                             : k == CS_TRACE_TENSION     ? 4e5 * fmax(t, 0)
+                                                         : 30 * (t > 0);
+    }
+    return tr;
+}
+
+/* compare's plots: every time axis runs from 0, or the earliest start of the traces a plot shows, to the
+ * latest end among them, not to the next round tick; every text inside its frame. */
+static void test_compare_time_axes_end_at_the_last_end(void **state) {
+    (void)state;
+    cs_trace tr[3] = {compared("a", 0, 0.286, 0), compared("b", 0, 0.412, 0),
+                      compared("test.csv", -0.005, 0.3, 1)};
+    cs_plot_log *log = calloc(1, sizeof *log);
+    assert_non_null(log);
+    char why[512] = "";
+    /* {traces shown, start, end}: run a alone; both runs and the measured speed (the reference) */
+    static const struct {
+        int count;
+        double t0, t1;
+    } cases[] = {{1, 0, 0.286}, {3, 0, 0.412}};
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++)
+        for (int k = 0; k < CS_COMPARE_PLOTS; k++) {
+            if (cs_compare_trace(k, tr, cases[c].count, cases[c].count - 1, log, why, sizeof why) != 0)
+                fail_msg("%s", why);
+            assert_int_equal(log->panel_count, 1);
+            const cs_plot_logged_panel *q = &log->panel[0];
+            double t0 = cases[c].count == 3 && strstr(q->title, "speed") ? -0.005 : cases[c].t0;
+            if (fabs(q->x0 - t0) > 1e-12 || fabs(q->x1 - cases[c].t1) > 1e-12)
+                fail_msg("%s, %d traces: its time axis runs from %g to %g s, the traces from %g to %g s",
+                         q->title, cases[c].count, q->x0, q->x1, t0, cases[c].t1);
+            check_texts_inside(log, q->title);
+        }
+    free(log);
+    for (int i = 0; i < 3; i++)
+        cs_trace_free(&tr[i]);
+}
+
 /* The snapshots' views are at true scale (as many metres a pixel across as up, within 1%), and each top
  * view holds the whole vehicle at its time: the synthetic car, yawed to +y, spans x 19.1-20.9 m and
  * from 2.5 m behind its centre of gravity to its crushed face. */
@@ -583,6 +639,7 @@ int main(void) {
         cmocka_unit_test(test_labels_stay_inside_the_frame),
         cmocka_unit_test(test_every_text_inside_its_frame),
         cmocka_unit_test(test_time_axes_end_at_the_run_end),
+        cmocka_unit_test(test_compare_time_axes_end_at_the_last_end),
         cmocka_unit_test(test_top_views_true_scale_whole_vehicle),
         cmocka_unit_test(test_mirror_posts_named_in_the_legend),
     };

@@ -312,6 +312,64 @@ static void draw(const fixture *f, int k, const char *path) {
     assert_int_equal(fclose(out), 0);
 }
 
+/* summary.md or summary.json (write) of the fixture's runs, as a string to free. */
+typedef int (*summary_fn)(FILE *, const cs_sweep_spec *, const double *, const cs_sweep_result *, long,
+                          char *, size_t);
+static char *summary_text(const fixture *f, summary_fn write) {
+    char *text = NULL, why[256];
+    size_t size = 0;
+    FILE *out = open_memstream(&text, &size);
+    assert_non_null(out);
+    if (write(out, f->spec, f->x, f->r, RUNS, why, sizeof why) != 0) fail_msg("%s", why);
+    fclose(out);
+    return text;
+}
+
+/* The summaries' responses: the penetration over the run the barrier held (run 0, stopped) and how far
+ * the one that broke through (run 1) had got beyond, each with its count; the rope tension in kN; the
+ * exit speed of the run that left the barrier only (run 0's 7 m/s is no exit speed); run 2, failed, in
+ * none. */
+static void test_summary_responses(void **state) {
+    fixture *f = *state;
+    char *json = summary_text(f, cs_sweep_write_summary_json);
+    static const char *const want_json[] = {
+        "\"max_dynamic_penetration_m\":{\"runs\":1,\"over\":\"the runs the barrier held (stopped, redirected "
+        "or "
+        "never touched it)\",\"mean\":1.23456789,\"sd\":null,\"min\":1.23456789,\"p05\":1.23456789,"
+        "\"median\":1.23456789,\"p95\":1.23456789,\"max\":1.23456789}",
+        "\"penetration_beyond_m\":{\"runs\":1,\"over\":\"the runs it did not hold (through it, or still "
+        "going "
+        "when the run ended): how far past the attack face the vehicle had got when the run ended; its "
+        "penetration is beyond that\",\"mean\":4.03125,",
+        "\"max_cable_tension_kn\":{\"runs\":2,\"over\":\"the runs that ran to the end\",\"mean\":769.3106234,"
+        "\"sd\":1033.350826,\"min\":38.62124685,",
+        "\"exit_speed_mps\":{\"runs\":1,\"over\":\"the runs that left the barrier (broke through, rode over "
+        "or "
+        "ran under it, or were redirected)\",\"mean\":13.75,",
+        "\"max_50ms_decel_g\":{\"runs\":2,\"over\":\"the runs that ran to the end\",\"mean\":3.0625,",
+        "\"spearman\":{\"max_50ms_decel_g\":{\"barrier.cables[0].pretension\":null,\"vehicle\":null},"
+        "\"max_dynamic_penetration_m\":{",
+    };
+    for (size_t i = 0; i < sizeof want_json / sizeof want_json[0]; i++)
+        if (!strstr(json, want_json[i])) fail_msg("summary.json lacks %s:\n%s", want_json[i], json);
+    assert_null(strstr(json, "_n\""));
+    free(json);
+    char *md = summary_text(f, cs_sweep_write_summary_md);
+    static const char *const want_md[] = {
+        "; max dynamic penetration (m) only over the runs the barrier held (stopped, redirected or never "
+        "touched it); penetration beyond (m) only over the runs it did not hold",
+        ". Forces in kN.\n\n| response | runs | mean | sd | min | 5% | median | 95% | max |\n",
+        "\n| max dynamic penetration (m) | 1 | 1.235 | n/a | 1.235 | 1.235 | 1.235 | 1.235 | 1.235 |\n",
+        "\n| penetration beyond (m) | 1 | 4.031 | n/a | 4.031 |",
+        "\n| max cable tension (kN) | 2 | 769.3 | 1033 | 38.62 |",
+        "\n| exit speed (m/s) | 1 | 13.75 | n/a |",
+        "\n| input | max 50-ms deceleration (g) | max dynamic penetration (m) | penetration beyond (m) |",
+    };
+    for (size_t i = 0; i < sizeof want_md / sizeof want_md[0]; i++)
+        if (!strstr(md, want_md[i])) fail_msg("summary.md lacks %s:\n%s", want_md[i], md);
+    free(md);
+}
+
 /* The plots of the three runs against the pretension, a line per vehicle: their files, captions and
  * summary.md's lines; the lines in their colours, the run that broke through crossed out, and the cross
  * gone when it is said to have stopped; a y that runs.csv lacks refused at its place. */
@@ -338,12 +396,7 @@ static void test_plots(void **state) {
                         "exit_speed against barrier.cables[0].pretension, a line per vehicle: 1 of 3 runs "
                         "shown, 1 broke through (marked with a cross); left out: 1 that did not run to "
                         "the end, 1 with no exit_speed");
-    char *text = NULL, why[256];
-    size_t size = 0;
-    FILE *md = open_memstream(&text, &size);
-    assert_non_null(md);
-    assert_int_equal(cs_sweep_write_summary_md(md, s, f->x, f->r, RUNS, why, sizeof why), 0);
-    fclose(md);
+    char *text = summary_text(f, cs_sweep_write_summary_md);
     assert_non_null(strstr(text,
                            "\n## Plots\n\n- `plots/max_barrier_deflection-vs-pretension.png`: "
                            "max_barrier_deflection against barrier.cables[0].pretension, a line per "
@@ -390,6 +443,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_runs_csv),
         cmocka_unit_test(test_runs_netcdf),
+        cmocka_unit_test(test_summary_responses),
         cmocka_unit_test(test_plots),
     };
     int rc = cmocka_run_group_tests(tests, setup, teardown);

@@ -18,7 +18,7 @@ typedef struct figure {
     double scale, y2_scale; /* y shown = SI value / scale; the right axis shows that times y2_scale */
 } figure;
 
-static const figure figures[] = {
+static const figure figures[CS_COMPARE_PLOTS] = {
     {"compare-deceleration", "deceleration along the initial heading", "deceleration (g)", NULL,
      CS_TRACE_DECEL, 9.80665, 0},
     {"compare-deceleration-50ms", "50-ms average deceleration", "deceleration (g)", NULL, CS_TRACE_DECEL_50MS,
@@ -30,7 +30,7 @@ static const figure figures[] = {
     {"compare-tension", "largest rope tension", "tension (kN)", "tension (kip)", CS_TRACE_TENSION, 1e3,
      1e3 / 4448.2216152605},
 };
-enum { FIGURES = sizeof figures / sizeof figures[0], WIDTH = 960, HEIGHT = 520 };
+enum { WIDTH = 960, HEIGHT = 520 };
 
 typedef struct plot_job {
     const figure *fig;
@@ -53,6 +53,7 @@ static int draw(cs_plot *p, const void *user, char *why, size_t why_size) {
         snprintf(why, why_size, "out of memory");
         return -1;
     }
+    double t0 = 0.0, t1 = -HUGE_VAL;       /* the time axis: from 0 (or an earlier start) to the last end */
     for (int pass = 0; pass < 2; pass++) { /* fit every trace, lay the axes out, then draw them */
         for (int k = 0; k < job->count; k++) {
             const cs_trace *tr = &job->traces[k];
@@ -61,6 +62,7 @@ static int draw(cs_plot *p, const void *user, char *why, size_t why_size) {
                 y[i] = tr->y[f->trace][i] / f->scale;
             if (pass == 0) {
                 cs_axes_fit(&a, tr->t, y, (int)tr->n);
+                if (tr->n > 0) t0 = fmin(t0, tr->t[0]), t1 = fmax(t1, tr->t[tr->n - 1]);
                 continue;
             }
             cs_style s = {tr->measured ? (cs_rgb){0.1, 0.1, 0.1} : cs_plot_palette(k),
@@ -70,6 +72,7 @@ static int draw(cs_plot *p, const void *user, char *why, size_t why_size) {
             cs_plot_line(p, &a, tr->t, y, (int)tr->n, &s, label);
         }
         if (pass == 0) {
+            if (t1 > t0) cs_axes_set_x(&a, t0, t1);
             cs_axes_fit_point(&a, NAN, 0.0);
             cs_axes_layout(p, &a, (cs_box){8, 8, p->width - 16, p->height - 16});
         }
@@ -77,6 +80,12 @@ static int draw(cs_plot *p, const void *user, char *why, size_t why_size) {
     cs_plot_legend(p, &a, CS_LEGEND_TOP_RIGHT);
     free(y);
     return 0;
+}
+
+int cs_compare_trace(int k, const cs_trace *traces, int count, int reference, cs_plot_log *log, char *why,
+                     size_t why_size) {
+    plot_job job = {&figures[k], traces, count, reference};
+    return cs_plot_trace(WIDTH, HEIGHT, draw, &job, log, why, why_size);
 }
 
 /* ---- the table ---- */
@@ -224,7 +233,7 @@ int cs_compare_write(cs_outdir *out, const cs_trace *traces, int count, int refe
     if (finish(out, f, 0, why, why_size) != 0) return -1;
     if (cs_out_subdir(out, "plots", why, why_size) != 0) return -1;
     static const cs_plot_format formats[] = {CS_PLOT_PNG, CS_PLOT_SVG};
-    for (int k = 0; k < FIGURES; k++)
+    for (int k = 0; k < CS_COMPARE_PLOTS; k++)
         for (int j = 0; j < 2; j++) {
             char name[128];
             snprintf(name, sizeof name, "plots/%s.%s", figures[k].name, cs_plot_extension(formats[j]));
@@ -246,7 +255,7 @@ int cs_compare_write(cs_outdir *out, const cs_trace *traces, int count, int refe
     write_table(f, traces, count, reference, 1);
     fputs("</table>\n", f);
     int rc = 0;
-    for (int k = 0; k < FIGURES && rc == 0; k++) {
+    for (int k = 0; k < CS_COMPARE_PLOTS && rc == 0; k++) {
         fprintf(f, "<h2>%s</h2>\n", figures[k].title);
         char id[16];
         snprintf(id, sizeof id, "f%d", k);

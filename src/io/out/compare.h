@@ -9,7 +9,15 @@
 
 #include "load/runread.h"
 #include "out/outfile.h"
+#include "out/plot.h"
 
+enum { CS_COMPARE_PLOTS = 5 };
+
+/* Draw plot k (of CS_COMPARE_PLOTS) as a PNG would be drawn, writing nothing: log gets where every text
+ * and panel went (cs_plot_trace). Each plot's time axis runs from 0 (or the earliest start) to the
+ * latest end of the traces it shows, not rounded out to a tick. Returns 0, or -1 with why filled. */
+int cs_compare_trace(int k, const cs_trace *traces, int count, int reference, cs_plot_log *log, char *why,
+                     size_t why_size);
 /* Into out: compare.csv and compare.md (the table), plots/compare-<response>.png and .svg, and
  * compare.html (the table and the plots in one page that opens from disk). traces[reference] is the
  * reference. Returns 0, or -1 with why filled. */

@@ -16,40 +16,6 @@ const char *cs_sweep_method_name(cs_sweep_method method) {
     return method_names[method];
 }
 
-/* ---- the responses ---- */
-
-enum { R_DECEL, R_PEN, R_DEFL, R_TENSION, R_POSTS, R_CABLES, R_COUNT };
-static const char *const response_keys[R_COUNT] = {"max_50ms_decel_g",
-                                                   "max_dynamic_penetration_m",
-                                                   "max_barrier_deflection_m",
-                                                   "max_cable_tension_n",
-                                                   "posts_failed",
-                                                   "cables_broken"};
-static const char *const response_labels[R_COUNT] = {"max 50-ms deceleration (g)",
-                                                     "max dynamic penetration (m)",
-                                                     "max barrier deflection (m)",
-                                                     "max cable tension (N)",
-                                                     "posts failed",
-                                                     "cables broken"};
-
-static double response(const cs_sweep_result *r, int k) {
-    const cs_summary *s = &r->summary;
-    switch (k) {
-    case R_DECEL:
-        return s->max_50ms_decel_g;
-    case R_PEN:
-        return s->max_dynamic_penetration_m;
-    case R_DEFL:
-        return s->max_barrier_deflection_m;
-    case R_TENSION:
-        return s->max_cable_tension_n;
-    case R_POSTS:
-        return s->posts_failed_left + s->posts_failed_right;
-    default:
-        return s->cables_broken;
-    }
-}
-
 /* ---- the columns of the table of runs ---- */
 
 /* What a column reads from a result: the summary's values in runs.csv's order, the error, then one
@@ -128,6 +94,43 @@ static const cs_sweep_column summary_columns[C_ERROR] = {
     [C_Y] = {"final_y", "m", NULL, "final y of the vehicle's centre of gravity", CS_COLUMN_REAL, C_Y},
     [C_Z] = {"final_z", "m", NULL, "final z of the vehicle's centre of gravity", CS_COLUMN_REAL, C_Z},
 };
+
+/* ---- the summary's responses ---- */
+
+/* A response of summary.md and summary.json: runs.csv's column `what` (with column `plus` added, or -1),
+ * times scale (SI to the unit its key and label give), over the runs that have it (runs.csv's cell not
+ * empty). `over` names those runs where they are not every run that ran to the end. */
+typedef struct response_def {
+    int what, plus;
+    double scale;
+    const char *key;   /* summary.json's name, with its unit */
+    const char *label; /* summary.md's, with its unit */
+    const char *over;
+} response_def;
+
+enum { R_COUNT = 8 };
+static const response_def responses[R_COUNT] = {
+    {C_DECEL, -1, 1.0, "max_50ms_decel_g", "max 50-ms deceleration (g)", NULL},
+    {C_PEN, -1, 1.0, "max_dynamic_penetration_m", "max dynamic penetration (m)",
+     "the runs the barrier held (stopped, redirected or never touched it)"},
+    {C_BEYOND, -1, 1.0, "penetration_beyond_m", "penetration beyond (m)",
+     "the runs it did not hold (through it, or still going when the run ended): how far past the attack "
+     "face the vehicle had got when the run ended; its penetration is beyond that"},
+    {C_DEFL, -1, 1.0, "max_barrier_deflection_m", "max barrier deflection (m)", NULL},
+    {C_TENSION, -1, 1e-3, "max_cable_tension_kn", "max cable tension (kN)", NULL},
+    {C_EXIT, -1, 1.0, "exit_speed_mps", "exit speed (m/s)",
+     "the runs that left the barrier (broke through, rode over or ran under it, or were redirected)"},
+    {C_POSTS_LEFT, C_POSTS_RIGHT, 1.0, "posts_failed", "posts failed", NULL},
+    {C_CABLES, -1, 1.0, "cables_broken", "cables broken", NULL},
+};
+
+/* Response q of a run that ran to the end; NaN where it has none. */
+static double response(const cs_sweep_result *r, int q) {
+    const response_def *d = &responses[q];
+    double v = cs_sweep_column_number(&summary_columns[d->what], r);
+    if (d->plus >= 0) v += cs_sweep_column_number(&summary_columns[d->plus], r);
+    return v * d->scale;
+}
 
 /* failure events: every event type but those that end a run */
 static int is_failure_event(int t) {
@@ -299,6 +302,7 @@ typedef struct tally {
 } tally;
 
 typedef struct stats {
+    long runs; /* with a value */
     double mean, sd, min, p05, p50, p95, max;
 } stats;
 
@@ -325,6 +329,24 @@ double cs_sweep_quantile(const double *sorted, long n, double p) {
     long lo = (long)floor(h);
     if (lo >= n - 1) return sorted[n - 1];
     return sorted[lo] + (h - (double)lo) * (sorted[lo + 1] - sorted[lo]);
+}
+
+/* The statistics of m values (sorts them); NaN where m is too small. */
+static stats stats_of(double *a, long m) {
+    stats st = {m, NAN, NAN, NAN, NAN, NAN, NAN, NAN};
+    if (m == 0) return st;
+    double sum = 0, ss = 0;
+    for (long i = 0; i < m; i++)
+        sum += a[i];
+    st.mean = sum / (double)m;
+    for (long i = 0; i < m; i++)
+        ss += (a[i] - st.mean) * (a[i] - st.mean);
+    st.sd = m > 1 ? sqrt(ss / (double)(m - 1)) : NAN;
+    cs_sweep_sort(a, m);
+    st.min = a[0], st.max = a[m - 1];
+    st.p05 = cs_sweep_quantile(a, m, 0.05), st.p50 = cs_sweep_quantile(a, m, 0.5);
+    st.p95 = cs_sweep_quantile(a, m, 0.95);
+    return st;
 }
 
 static int add_tally(summary *s, const char *name, const char *label, long count) {
@@ -400,29 +422,16 @@ static int make_summary(summary *s, const cs_sweep_spec *spec, const double *x, 
         if (!seen && add_tally(s, name, r[ok[i]].rating, 1) != 0) goto oom;
     }
     for (int q = 0; q < R_COUNT; q++) {
+        long m = 0;
         for (long i = 0; i < s->ok; i++)
-            a[i] = response(&r[ok[i]], q);
-        stats *st = &s->resp[q];
-        *st = (stats){NAN, NAN, NAN, NAN, NAN, NAN, NAN};
-        if (s->ok > 0) {
-            double sum = 0, ss = 0;
+            if (isfinite(a[m] = response(&r[ok[i]], q))) m++;
+        s->resp[q] = stats_of(a, m);
+        for (int j = 0; j < k; j++) { /* over the runs with a value */
+            long mj = 0;
             for (long i = 0; i < s->ok; i++)
-                sum += a[i];
-            st->mean = sum / (double)s->ok;
-            for (long i = 0; i < s->ok; i++)
-                ss += (a[i] - st->mean) * (a[i] - st->mean);
-            st->sd = s->ok > 1 ? sqrt(ss / (double)(s->ok - 1)) : NAN;
-            cs_sweep_sort(a, s->ok);
-            st->min = a[0], st->max = a[s->ok - 1];
-            st->p05 = cs_sweep_quantile(a, s->ok, 0.05), st->p50 = cs_sweep_quantile(a, s->ok, 0.5),
-            st->p95 = cs_sweep_quantile(a, s->ok, 0.95);
-        }
-        for (int j = 0; j < k; j++) {
-            for (long i = 0; i < s->ok; i++) {
-                a[i] = response(&r[ok[i]], q);
-                b[i] = cs_sweep_value_used(&spec->vars[j], x[ok[i] * k + j]);
-            }
-            s->rho[j * R_COUNT + q] = spec->vars[j].numeric ? cs_spearman(b, a, s->ok) : NAN;
+                if (isfinite(a[mj] = response(&r[ok[i]], q)))
+                    b[mj++] = cs_sweep_value_used(&spec->vars[j], x[ok[i] * k + j]);
+            s->rho[j * R_COUNT + q] = spec->vars[j].numeric ? cs_spearman(b, a, mj) : NAN;
         }
     }
     free(ok), free(a), free(b);
@@ -510,20 +519,28 @@ static void summary_md(FILE *f, const cs_sweep_spec *spec, long n, const summary
         md_num(f, w.hi);
         fprintf(f, " |\n");
     }
-    fprintf(f, "\n## Responses\n\n| response | mean | sd | min | 5%% | median | 95%% | max |\n"
-               "| --- | --- | --- | --- | --- | --- | --- | --- |\n");
+    fprintf(f,
+            "\n## Responses\n\nOver the %ld runs that ran to the end, each response over those that have it "
+            "(`runs`)",
+            s->ok);
+    for (int q = 0; q < R_COUNT; q++)
+        if (responses[q].over) fprintf(f, "; %s only over %s", responses[q].label, responses[q].over);
+    fprintf(f, ". Forces in kN.\n\n| response | runs | mean | sd | min | 5%% | median | 95%% | max |\n"
+               "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n");
     for (int q = 0; q < R_COUNT; q++) {
         const stats *st = &s->resp[q];
         const double v[] = {st->mean, st->sd, st->min, st->p05, st->p50, st->p95, st->max};
-        fprintf(f, "| %s |", response_labels[q]);
+        fprintf(f, "| %s | %ld |", responses[q].label, st->runs);
         for (int c = 0; c < 7; c++)
             fputc(' ', f), md_num(f, v[c]), fprintf(f, " |");
         fputc('\n', f);
     }
-    fprintf(f, "\n## Input importance\n\nSpearman rank correlation of each input with each response (n/a: "
-               "text input, or a constant column).\n\n| input |");
+    fprintf(
+        f,
+        "\n## Input importance\n\nSpearman rank correlation of each input with each response, over the runs "
+        "that have it (n/a: a text input, a constant column, or fewer than two runs).\n\n| input |");
     for (int q = 0; q < R_COUNT; q++)
-        fprintf(f, " %s |", response_labels[q]);
+        fprintf(f, " %s |", responses[q].label);
     fprintf(f, "\n| --- |");
     for (int q = 0; q < R_COUNT; q++)
         fprintf(f, " --- |");
@@ -620,16 +637,17 @@ static void summary_json(FILE *f, const cs_sweep_spec *spec, long n, const summa
     for (int q = 0; q < R_COUNT; q++) {
         const stats *st = &s->resp[q];
         const double v[] = {st->mean, st->sd, st->min, st->p05, st->p50, st->p95, st->max};
-        fprintf(f, "%s\"%s\":{", q ? "," : "", response_keys[q]);
+        fprintf(f, "%s\"%s\":{\"runs\":%ld,\"over\":", q ? "," : "", responses[q].key, st->runs);
+        cs_json_string(f, responses[q].over ? responses[q].over : "the runs that ran to the end");
         for (int c = 0; c < 7; c++) {
-            fprintf(f, "%s\"%s\":", c ? "," : "", stat_names[c]);
+            fprintf(f, ",\"%s\":", stat_names[c]);
             jnum(f, v[c]);
         }
         fputc('}', f);
     }
     fprintf(f, "},\"spearman\":{");
     for (int q = 0; q < R_COUNT; q++) {
-        fprintf(f, "%s\"%s\":{", q ? "," : "", response_keys[q]);
+        fprintf(f, "%s\"%s\":{", q ? "," : "", responses[q].key);
         for (int j = 0; j < k; j++) {
             if (j) fputc(',', f);
             cs_json_string(f, spec->vars[j].path);

@@ -58,8 +58,10 @@ long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *spec, co
  * (a temporary: a failure leaves it to be removed). Returns 0, or -1 with why filled (nc_strerror's). */
 int cs_sweep_write_netcdf(const char *path, const cs_sweep_spec *spec, const double *x,
                           const cs_sweep_result *r, long n, char *why, size_t why_size);
-/* summary.md and summary.json: outcome probabilities with 95% Wilson intervals, response statistics,
- * Spearman correlation of each numeric input with each response. */
+/* summary.md and summary.json: outcome probabilities with 95% Wilson intervals, response statistics and
+ * the Spearman correlation of each numeric input with each response, each response over the runs that
+ * have it as runs.csv gives it (the penetration of the runs the barrier held, the penetration beyond of
+ * the others, the exit speed of the runs that left it) with their count; forces in kN. */
 int cs_sweep_write_summary_md(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
                               long n, char *why, size_t why_size);
 int cs_sweep_write_summary_json(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
