@@ -8,6 +8,7 @@
 set -euo pipefail
 out=$(mkdir -p "$1" && cd "$1" && pwd)
 emcc=${2:-emcc}
+export NODE_PATH=${NODE_PATH:+$NODE_PATH:}/usr/share/nodejs:/usr/lib/nodejs # see web/build.sh
 [ -f "$out/libyaml.a" ] && exit 0
 apt="$out/apt"
 rm -rf "$apt" "$out/src"
@@ -23,7 +24,9 @@ opts=(-o "Dir::Etc::SourceList=/dev/null" -o "Dir::Etc::SourceParts=$apt/parts" 
   -o "Dir::Cache=$apt/cache" -o "APT::Sandbox::User=root" -o "Debug::NoLocking=1" -qq)
 apt-get "${opts[@]}" update
 version=$(dpkg-query -W -f '${source:Version}' libyaml-0-2 2>/dev/null || true)
-(cd "$out/src" && apt-get "${opts[@]}" source "libyaml${version:+=$version}" >/dev/null)
+# the command's version, else the index's own (a point release the mirror has moved past)
+(cd "$out/src" && { apt-get "${opts[@]}" source "libyaml${version:+=$version}" >/dev/null 2>&1 ||
+  apt-get "${opts[@]}" source libyaml >/dev/null; })
 src=$(find "$out/src" -maxdepth 1 -mindepth 1 -type d -name 'libyaml-*' | head -1)
 [ -n "$src" ] || { echo "wasm-libyaml.sh: no libyaml source in $out/src" >&2; exit 1; }
 v=$(basename "$src" | sed 's/^libyaml-//')

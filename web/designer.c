@@ -90,12 +90,13 @@ static const char *problems(void) {
     return end(f);
 }
 
-/* Split sets ("PATH=VALUE" lines) in place into at most max lines. Returns the count. */
+/* Split sets ("PATH=VALUE" lines) in place into at most max lines. Returns the count, or -1 past max. */
 static int split(char *sets, char **line, int max) {
     int n = 0;
-    for (char *s = sets; s && *s && n < max;) {
+    for (char *s = sets; s && *s;) {
         char *nl = strchr(s, '\n');
         if (nl) *nl = '\0';
+        if (*s && n == max) return -1;
         if (*s) line[n++] = s;
         s = nl ? nl + 1 : NULL;
     }
@@ -122,6 +123,10 @@ EMSCRIPTEN_KEEPALIVE const char *cs_web_run(const char *path, const char *sets, 
     char *copy = strdup(sets), *line[64], set_text[64][1100];
     if (!copy) return fail("out of memory");
     int n = split(copy, line, 64);
+    if (n < 0) {
+        free(copy);
+        return fail("more than 64 values changed at once");
+    }
     const char *overrides[64];
     for (int i = 0; i < n; i++) {
         cs_loader_set(loader, line[i]);
@@ -230,8 +235,10 @@ EMSCRIPTEN_KEEPALIVE const char *cs_web_edit(const char *path, const char *sets)
     char *copy = strdup(sets), *line[64], why[512] = "";
     int n = copy ? split(copy, line, 64) : 0;
     size_t edited_size = 0;
-    char *edited =
-        copy ? cs_yaml_edit(text, size, (const char *const *)line, n, &edited_size, why, sizeof why) : NULL;
+    if (n < 0) snprintf(why, sizeof why, "more than 64 values changed at once");
+    char *edited = copy && n >= 0
+                       ? cs_yaml_edit(text, size, (const char *const *)line, n, &edited_size, why, sizeof why)
+                       : NULL;
     free(copy);
     free(text);
     if (!edited) return fail(why[0] ? why : "out of memory");
