@@ -106,7 +106,7 @@ function buildForm(values, parts) {
       break;
     }
   }
-  for (const g of groups.values()) form.append(g);
+  for (const name of new Set(FIELDS.map(([, group]) => group))) if (groups.has(name)) form.append(groups.get(name));
 }
 
 // The form's overrides: "PATH=VALUE" for each value changed from the file's.
@@ -188,8 +188,9 @@ function run() {
   designer.runs++;
   designer.last = { ok: r.ok, sets: s, errors: r.errors || [], summary: r.ok ? r.summary : null, ms: r.ms, pageMs };
   showErrors(r.errors || []);
+  document.querySelector('main').classList.toggle('stale', !r.ok); // the results shown are an earlier run's
   if (!r.ok) {
-    $('status').textContent = `Not run: ${r.errors.length} problem${r.errors.length === 1 ? '' : 's'} in the values (beside the fields).`;
+    $('status').textContent = `Not run: ${r.errors.length} problem${r.errors.length === 1 ? '' : 's'} in the values (beside the fields); below, the last run.`;
     return designer.last;
   }
   $('status').textContent = `Run ${designer.runs}: the crash computed in ${r.ms.toFixed(1)} ms in this page${s.length ? ` with ${s.length} value${s.length === 1 ? '' : 's'} changed` : ''}; model hash ${r.summary.cablesim.model_hash}.`;
@@ -225,6 +226,8 @@ function setupSweep() {
     $('sweep-from').value = `${+(v[0] * 0.5).toPrecision(4)} ${v[1]}`.trim();
     $('sweep-to').value = `${+(v[0] * 1.5).toPrecision(4)} ${v[1]}`.trim();
   };
+  const spacing = numeric.find((f) => f.path.endsWith('.spacing'));
+  if (spacing) fieldSel.value = spacing.path;
   fieldSel.addEventListener('change', fill);
   fill();
   let chart = null;
@@ -260,7 +263,7 @@ function setupSweep() {
         width: Math.max(300, host.clientWidth || 600),
         height: 260,
         scales: { x: { time: false } },
-        series: [{ label: `${path}${unit ? ` (${unit})` : ''}` }, { label: response[0], stroke: '#0d3f99', width: 2, points: { show: true, size: 6 } }],
+        series: [{ label: `${path}${unit ? ` (${unit})` : ''}` }, { label: response[0], stroke: '#0d3f99', width: 2, spanGaps: true, points: { show: true, size: 6 } }],
         axes: [{ label: `${path}${unit ? ` (${unit})` : ''}` }, { label: response[0] }],
       },
       [xs, ys],
