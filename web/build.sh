@@ -14,7 +14,11 @@ emar=$(dirname "$(command -v "$emcc")")/emar
 # elsewhere looks elsewhere.
 export NODE_PATH=${NODE_PATH:+$NODE_PATH:}/usr/share/nodejs:/usr/lib/nodejs
 bash "$src/scripts/wasm-libyaml.sh" "$out/libyaml" "$emcc"
-flags=(-std=c17 -Wall -Wextra -Wpedantic -Werror -O3 -fno-math-errno -fno-trapping-math -D_POSIX_C_SOURCE=200809L
+# the maths functions called, never folded or merged by the compiler: as the command built with
+# CS_MATH=musl calls them (CMakeLists.txt), so that both give the same bits
+nobuiltin=(-fno-builtin-sin -fno-builtin-cos -fno-builtin-tan -fno-builtin-asin -fno-builtin-atan2 -fno-builtin-tanh
+  -fno-builtin-cbrt -fno-builtin-exp -fno-builtin-pow -fno-builtin-hypot)
+flags=("${nobuiltin[@]}" -std=c17 -Wall -Wextra -Wpedantic -Werror -O3 -fno-math-errno -fno-trapping-math -D_POSIX_C_SOURCE=200809L
   -I"$src/include" -I"$src/src" -I"$src/src/io" -I"$out/libyaml/include" -DYAML_DECLARE_STATIC)
 io=(load/convert load/loader load/modelhash load/schema load/units load/yamlload load/yamltree
   load/yamledit out/json out/csv out/report_html out/record out/htmltext out/runinfo out/report study/rating)
