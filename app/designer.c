@@ -47,7 +47,7 @@ static void relative(const char *dir, const char *real, char *out, size_t size) 
         if (dir[i + 1] == '\0' ? real[i + 1] == '/' : dir[i + 1] == '/') common = i + 1;
     size_t k = 0;
     for (const char *p = dir + common; *p; p++) /* a "../" for each folder of dir below the common ones */
-        if (*p == '/' && k + 4 < size) memcpy(out + k, "../", 3), k += 3;
+        if (*p == '/' && p[1] && k + 4 < size) memcpy(out + k, "../", 3), k += 3;
     snprintf(out + k, size - k, "%s", real + common + (real[common] == '/'));
 }
 
