@@ -6,7 +6,7 @@ DEMO_OUT ?= results/aps3
 FUZZ_SECONDS ?= 60
 FUZZ_BUILD ?= build-fuzz
 
-.PHONY: all deps build demo test sanitize fuzz fuzz-build bench docs package format clean
+.PHONY: all deps build demo designer test sanitize fuzz fuzz-build bench docs package format clean
 
 all: build
 
@@ -21,6 +21,11 @@ build: deps $(BUILD)/CMakeCache.txt
 
 demo: build
 	$(BUILD)/cablesim run examples/aps3.yaml -o $(DEMO_OUT) --plots --report
+
+# designer.html for the APS3 example (docs/designer.md): the page that runs it in the browser. The build
+# makes its engine as WebAssembly where emscripten is installed (make deps installs it).
+designer: build
+	$(BUILD)/cablesim designer examples/aps3.yaml -o results/aps3-designer
 
 # The suite, then the same suite under AddressSanitizer + UBSan, then each fuzzer for FUZZ_SECONDS.
 test: build
@@ -47,7 +52,7 @@ FUZZ_RUN = LSAN_OPTIONS=suppressions=$(CURDIR)/fuzz/lsan.supp
 FUZZ_FLAGS = -max_total_time=$(FUZZ_SECONDS) -timeout=20 -print_final_stats=1 -artifact_prefix=$(FUZZ_BUILD)/artifacts/
 
 fuzz-build: deps
-	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCS_SANITIZE=ON -DCMAKE_C_COMPILER=clang \
+	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCS_SANITIZE=ON -DCMAKE_C_COMPILER=clang -DCS_DESIGNER=OFF \
 	  -DCMAKE_C_FLAGS=-fsanitize=fuzzer-no-link
 	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target cablesim_static
 	for t in loader engine sweep; do \

@@ -7,7 +7,7 @@ _cablesim() {
     prev=${COMP_WORDS[COMP_CWORD - 1]}
     cmd=${COMP_WORDS[1]:-}
     if [ "$COMP_CWORD" -eq 1 ]; then
-        mapfile -t COMPREPLY < <(compgen -W "run check sweep rate validate list schema --help --version" -- "$cur")
+        mapfile -t COMPREPLY < <(compgen -W "run check sweep rate validate compare designer list schema --help --version" -- "$cur")
         return
     fi
     case $prev in
@@ -38,6 +38,7 @@ _cablesim() {
     sweep) opts="-o --threads --runs --seed --set --t-end --dt --netcdf --quiet --help" ;;
     rate) opts="--standard --class --level --test --set" ;;
     validate) opts="-o --examples --only --report-only" ;;
+    designer) opts="-o --help" ;;
     *) return ;;
     esac
     if [[ $cur == -* ]]; then

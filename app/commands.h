@@ -13,5 +13,7 @@ int cs_command_rate(int argc, char **argv);
 int cs_command_validate(int argc, char **argv);
 /* `cablesim compare RUN... [--measured FILE.csv] [-o DIR]`; argv[1] is "compare". */
 int cs_command_compare(int argc, char **argv);
+/* `cablesim designer [FILE] [-o DIR]`; argv[1] is "designer". */
+int cs_command_designer(int argc, char **argv);
 
 #endif

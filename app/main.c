@@ -27,6 +27,7 @@ static const char usage[] =
     "  or:  cablesim rate FILE --standard nchrp-350|mash [--level 3|4 | --test 3-11]\n"
     "  or:  cablesim validate [-o DIR]\n"
     "  or:  cablesim compare RUN... [--measured FILE.csv] [-o DIR]\n"
+    "  or:  cablesim designer [FILE] [-o DIR]\n"
     "  or:  cablesim list | schema | --help | --version\n"
     "Simulate a vehicle crashing into a cable barrier and its progressive failure.\n"
     "\n"
@@ -42,6 +43,7 @@ static const char usage[] =
     "            MASH tests of a level\n"
     "  validate  the validation suite: DIR/validation.md and .csv\n"
     "  compare   runs (folders of cablesim run) and a measured history side by side: a table and plots\n"
+    "  designer  one page that runs the model in the browser as its values are edited: DIR/designer.html\n"
     "  list      the named parts of the library and the folder they are read from\n"
     "  schema    the model-file reference (docs/file-format.md)\n"
     "cablesim COMMAND --help gives the command's options.\n"
@@ -327,6 +329,7 @@ int main(int argc, char **argv) {
     if (strcmp(cmd, "rate") == 0) return cs_command_rate(argc, argv);
     if (strcmp(cmd, "validate") == 0) return cs_command_validate(argc, argv);
     if (strcmp(cmd, "compare") == 0) return cs_command_compare(argc, argv);
+    if (strcmp(cmd, "designer") == 0) return cs_command_designer(argc, argv);
     int is_run = strcmp(cmd, "run") == 0, is_check = strcmp(cmd, "check") == 0;
     if (!is_run && !is_check && strcmp(cmd, "list") != 0) {
         fprintf(stderr, "cablesim: unknown command '%s'\n%s", cmd, usage);

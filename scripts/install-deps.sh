@@ -18,6 +18,9 @@ pkgs+=(doxygen help2man dpkg-dev)
 # may be); Debian's chromium and chromium-driver run its browser test.
 pkgs+=(chromium chromium-driver)
 { command -v node && command -v npm; } >/dev/null 2>&1 || pkgs+=(nodejs npm)
+# emscripten: designer.html's engine as WebAssembly (web/build.sh); dpkg-dev (above) unpacks the Debian
+# source of libyaml it compiles for it (scripts/wasm-libyaml.sh, at build time).
+pkgs+=(emscripten)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")

@@ -6,7 +6,7 @@
 source "$(dirname "$0")/lib.sh"
 
 check "cablesim --help" '"$cs" --help | grep -q "^Usage: cablesim run FILE"'
-for sub in run check sweep rate validate list schema; do
+for sub in run check sweep rate validate list schema designer; do
     out=$("$cs" "$sub" --help 2>&1)
     check "$sub --help: exit 0" '[ $? -eq 0 ]'
     check "$sub --help: its usage" 'grep -q "^usage: cablesim $sub" <<<"$out"'
@@ -37,6 +37,10 @@ out=$("$cs" rate "$tmp/nowhere.yaml" --standard astm-f2656 2>&1)
 check "rate: a missing file, its reason" '[ $? -eq 2 ] && grep -qF "No such file or directory" <<<"$out"'
 out=$("$cs" sweep "$tmp/nowhere.yaml" 2>&1)
 check "sweep: a missing spec, its reason" '[ $? -eq 2 ] && grep -qF "$tmp/nowhere.yaml: cannot open the file: No such file or directory" <<<"$out"'
+out=$("$cs" designer "$tmp/nowhere.yaml" 2>&1)
+check "designer: a missing file, its reason" '[ $? -eq 2 ] && grep -qF "$tmp/nowhere.yaml: cannot open the file: No such file or directory" <<<"$out"'
+out=$("$cs" designer examples/aps3.yaml examples/aps1.yaml 2>&1)
+check "designer: two model files, exit 2" '[ $? -eq 2 ] && grep -qF "more than one model file" <<<"$out"'
 out=$("$cs" sweep --resume "$tmp/nothing" 2>&1)
 check "sweep --resume: a folder with no sweep, its reason" '[ $? -eq 2 ] && grep -qF "$tmp/nothing/summary.json: No such file or directory" <<<"$out"'
 
@@ -48,6 +52,8 @@ out=$("$cs" sweep tests/sweep/lhs.yaml -o "$tmp/file/sub" 2>&1)
 check "sweep -o FILE/sub: exit 1, why, before any run" '[ $? -eq 1 ] && grep -qxF "cablesim sweep: nothing run: $tmp/file/sub: Not a directory" <<<"$out" && ! grep -q "^sweep: [0-9]* runs" <<<"$out"'
 out=$("$cs" validate --only verification -o "$tmp/file/sub" 2>&1)
 check "validate -o FILE/sub: exit 1, why, before any run" '[ $? -eq 1 ] && grep -qxF "cablesim validate: nothing run: $tmp/file/sub: Not a directory" <<<"$out"'
+out=$("$cs" designer examples/aps3.yaml -o "$tmp/file/sub" 2>&1)
+check "designer -o FILE/sub: exit 1, nothing written" '[ $? -eq 1 ] && grep -qF "cablesim designer: nothing written: " <<<"$out"'
 check "the file is as it was" '[ "$(cat "$tmp/file")" = "a file" ]'
 # the folders made for a run that then cannot write its files (a 1-KiB file size limit) are removed again;
 # those of a run that can are kept

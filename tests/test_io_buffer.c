@@ -1,5 +1,7 @@
 /* The loader's in-memory entry point: every example, good and bad model file loads from a buffer exactly as
- * from its path (same problems, same values), --set applies to a buffer and a reset loader is as new. */
+ * from its path (same problems, same values), --set applies to a buffer and a reset loader is as new; a
+ * model file edited in place (cs_yaml_edit, the designer page's download) loads as the original with the
+ * same --set. */
 #define _POSIX_C_SOURCE 200809L
 #include <glob.h>
 #include <math.h>
@@ -13,6 +15,7 @@
 #include <cmocka.h>
 
 #include "cablesim/loader.h"
+#include "load/yamledit.h"
 
 static const double MPH = 0.44704;
 
@@ -114,10 +117,49 @@ static void test_set_and_reset(void **state) {
     cs_loader_free(l);
 }
 
+/* Values in block and flow mappings, a named part, a value that needs quotes: the edited file gives the
+ * engine the numbers its --set gives; paths the file does not hold are refused. */
+static void test_edit_as_set(void **state) {
+    (void)state;
+    size_t size, edited_size = 0;
+    char *text = slurp(CS_SOURCE_DIR "/examples/aps3.yaml", &size), why[256] = "";
+    const char *sets[] = {"barrier.posts[0].spacing=6 ft",
+                          "scenario.speed=35 mph",
+                          "vehicle=M",
+                          "barrier.posts[0].footing.depth=4 ft",
+                          "barrier.cables[1].pretension=7.5 kip",
+                          "description=a: b, [c] # d \"e\""};
+    int n = sizeof sets / sizeof sets[0];
+    char *edited = cs_yaml_edit(text, size, sets, n, &edited_size, why, sizeof why);
+    if (!edited) fail_msg("%s", why);
+    assert_non_null(strstr(edited, "footing: {diameter: 9 in, depth: 4 ft, rotation_limit"));
+    assert_non_null(strstr(edited, "# the intermediate anchor posts stand there")); /* comments kept */
+    cs_loader *a = new_loader(), *b = new_loader();
+    for (int i = 0; i < n; i++)
+        cs_loader_set(a, sets[i]);
+    cs_model_input x, y;
+    assert_int_equal(cs_loader_load_buffer(a, "aps3.yaml", text, size, &x), 0);
+    assert_int_equal(cs_loader_load_buffer(b, "aps3.yaml", edited, edited_size, &y), 0);
+    assert_true(cs_model_input_hash(&x) == cs_model_input_hash(&y));
+    assert_float_equal(y.scenario.speed, 35 * MPH, 1e-12);
+    cs_loader_free(a);
+    cs_loader_free(b);
+    free(edited);
+    const char *missing[] = {"scenario.no_such_value=1"}, *collection[] = {"barrier.soil=1"},
+               *twice[] = {"vehicle=M", "vehicle=S"};
+    assert_null(cs_yaml_edit(text, size, missing, 1, &edited_size, why, sizeof why));
+    assert_non_null(strstr(why, "scenario.no_such_value is not a single value written in the file"));
+    assert_null(cs_yaml_edit(text, size, collection, 1, &edited_size, why, sizeof why));
+    assert_null(cs_yaml_edit(text, size, twice, 2, &edited_size, why, sizeof why));
+    assert_non_null(strstr(why, "vehicle is set twice"));
+    free(text);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_every_file),
         cmocka_unit_test(test_set_and_reset),
+        cmocka_unit_test(test_edit_as_set),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -6,6 +6,8 @@
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include <cmocka.h>
@@ -115,12 +117,70 @@ static void test_two_threads(void **state) {
         close_to(sums[i], 150 * 17.8816 + 150 * 2.4384);
 }
 
+/* A table of the usual units and the examples' own, written from udunits2, converts to the same bits and
+ * words the same messages; a unit it lacks is unknown. */
+static void test_table_same_bits(void **state) {
+    cs_units *u = *state;
+    char *text = NULL, why[256] = "";
+    size_t size = 0;
+    FILE *f = open_memstream(&text, &size);
+    assert_non_null(f);
+    assert_int_equal(cs_units_write_table(u, cs_units_usual, cs_units_usual_count, f), cs_units_usual_count);
+    const char *more[] = {"kPa/m", "in", "1000 lbf/ft^2", "no-such-unit"};
+    assert_int_equal(cs_units_write_table(u, more, 4, f), 3);
+    fclose(f);
+    cs_units *t = cs_units_from_table(text, why, sizeof why);
+    if (!t) fail_msg("%s", why);
+    const struct {
+        const char *text;
+        cs_quantity q;
+    } reads[] = {{"40 mph", CS_Q_SPEED},
+                 {"8000 psf", CS_Q_PRESSURE},
+                 {"52 kip", CS_Q_FORCE},
+                 {"29000 ksi", CS_Q_PRESSURE},
+                 {"15000 lb", CS_Q_MASS},
+                 {"1.75in", CS_Q_LENGTH},
+                 {"8 ft", CS_Q_LENGTH},
+                 {"0.5 ms", CS_Q_TIME},
+                 {"45 deg", CS_Q_ANGLE},
+                 {"0.471 in2", CS_Q_AREA},
+                 {"1.67 lb/ft", CS_Q_MASS_PER_LENGTH},
+                 {"20 MN/m", CS_Q_STIFFNESS},
+                 {"2.192 in4", CS_Q_SECOND_MOMENT},
+                 {"1.287 in3", CS_Q_SECTION_MODULUS},
+                 {"1 g", CS_Q_ACCELERATION},
+                 {"177.3 kPa/m", CS_Q_PRESSURE_GRADIENT},
+                 {"60 km/h", CS_Q_SPEED},
+                 {"3 1000 lbf/ft^2", CS_Q_PRESSURE},
+                 {"0.15", CS_Q_NUMBER},
+                 {"40 kg", CS_Q_SPEED},
+                 {"1 g", CS_Q_FORCE},
+                 {"0.3 m", CS_Q_NUMBER},
+                 {"fast", CS_Q_TIME},
+                 {"1e400 m", CS_Q_LENGTH},
+                 {"2 mph", CS_Q_ANGLE},
+                 {"7 %", CS_Q_NUMBER}};
+    for (size_t i = 0; i < sizeof reads / sizeof reads[0]; i++) {
+        double a = NAN, b = NAN;
+        char wa[256] = "", wb[256] = "";
+        int ra = cs_units_read(u, reads[i].text, reads[i].q, &a, wa, sizeof wa);
+        int rb = cs_units_read(t, reads[i].text, reads[i].q, &b, wb, sizeof wb);
+        if (ra != rb || (ra == 0 && memcmp(&a, &b, sizeof a) != 0) || strcmp(wa, wb) != 0)
+            fail_msg("'%s': udunits2 %d %.17g '%s', table %d %.17g '%s'", reads[i].text, ra, a, wa, rb, b,
+                     wb);
+    }
+    expect_error(t, "3 furlong", CS_Q_LENGTH, "unknown unit 'furlong'");
+    cs_units_free(t);
+    free(text);
+    assert_null(cs_units_from_table("ft\t0.3048\n", why, sizeof why));
+    assert_non_null(strstr(why, "line 1"));
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_exact_factors),
-        cmocka_unit_test(test_bare_numbers_are_si),
-        cmocka_unit_test(test_wrong_units),
-        cmocka_unit_test(test_two_threads),
+        cmocka_unit_test(test_exact_factors),   cmocka_unit_test(test_bare_numbers_are_si),
+        cmocka_unit_test(test_wrong_units),     cmocka_unit_test(test_two_threads),
+        cmocka_unit_test(test_table_same_bits),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

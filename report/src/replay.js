@@ -271,7 +271,8 @@ export function createReplay(host, data, onFrame) {
     camera.updateProjectionMatrix();
     requestRender();
   }
-  new ResizeObserver(resize).observe(host);
+  const observer = new ResizeObserver(resize);
+  observer.observe(host);
   resize();
   setView('overview');
   showFrame(0);
@@ -285,6 +286,13 @@ export function createReplay(host, data, onFrame) {
     },
     get frame() {
       return frame;
+    },
+    // Let the WebGL context go (a page that replaces its replay: the designer's).
+    dispose() {
+      observer.disconnect();
+      renderer.dispose();
+      renderer.forceContextLoss();
+      renderer.domElement.remove();
     },
     vehiclePosition() {
       return car.position.toArray();

@@ -6,26 +6,14 @@
 // so no figure borrows another's. Screenshots go to OUT.
 //
 //   node report/test/pages.mjs --cablesim BUILD/cablesim --modules BUILD/report/node_modules --out DIR
-import { spawnSync } from 'node:child_process';
-import { existsSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
-import { join, resolve } from 'node:path';
+import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
 
-import { check, chromiumPath, finish, launch, parseArgs } from './harness.mjs';
+import { check, chromiumPath, finish, launch, pageTestArgs, runCablesim, watchedPage } from './harness.mjs';
 
-const args = parseArgs();
-if (!args.modules || !args.out || !args.cablesim) {
-  console.error('usage: node report/test/pages.mjs --cablesim CABLESIM --modules NODE_MODULES --out DIR');
-  process.exit(2);
-}
-const out = resolve(args.out);
-rmSync(out, { recursive: true, force: true });
-mkdirSync(out, { recursive: true });
-
-function cablesim(...argv) {
-  const r = spawnSync(args.cablesim, argv, { encoding: 'utf8' });
-  check(`cablesim ${argv.join(' ')} exits 0`, r.status === 0, `${r.status} ${r.stderr}`);
-}
+const { args, out } = pageTestArgs('report/test/pages.mjs');
+const cablesim = (...argv) => runCablesim(args.cablesim, ...argv);
 
 // the inputs: two runs, a synthetic trace from the first (time in ms, speed in mph), a small study
 cablesim('run', 'examples/aps3.yaml', '--t-end', '0.2 s', '-o', join(out, 'a'));
@@ -51,12 +39,7 @@ try {
   for (const p of pages) {
     check(`${p.name}: the page exists`, existsSync(p.file));
     if (!existsSync(p.file)) continue;
-    const page = await context.newPage();
-    const errors = [];
-    const requests = [];
-    page.on('console', (m) => { if (m.type() === 'error') errors.push(m.text()); });
-    page.on('pageerror', (e) => errors.push(`page error: ${e.message}`));
-    page.on('request', (r) => { if (!/^(file|data|blob):/.test(r.url())) requests.push(r.url()); });
+    const { page, errors, requests } = await watchedPage(context);
     await page.goto(pathToFileURL(p.file).href, { waitUntil: 'load' });
     const seen = await page.evaluate(() => {
       const svgs = [...document.querySelectorAll('svg')];

@@ -1,17 +1,11 @@
 #define _POSIX_C_SOURCE 200809L
-#include "units.h"
-
 #include <ctype.h>
 #include <math.h>
-#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <udunits2.h>
 
-/* udunits2 reads its XML database and parses unit strings through static parser state: every call
- * into it is serialised here. Each context still owns its own unit system. */
-static pthread_mutex_t ut_lock = PTHREAD_MUTEX_INITIALIZER;
+#include "units_int.h"
 
 static const cs_quantity_info quantities[CS_Q_COUNT] = {
     [CS_Q_NUMBER] = {"number", "1", "1", "0.15"},
@@ -35,65 +29,42 @@ static const cs_quantity_info quantities[CS_Q_COUNT] = {
 
 /* Units the field writes that the udunits2 database lacks or reads otherwise ("mph" would be
  * milli-phot-hours). "g" is gravity only where an acceleration is expected (else gram). */
-static const char *const aliases[][2] = {
+const char *const cs_unit_aliases[][2] = {
     {"mph", "mile/hour"}, {"kph", "km/hour"}, {"psf", "lbf/ft^2"}, {"ksf", "1000 lbf/ft^2"},
     {"kips", "kip"},      {"deg", "degree"},  {"lbm", "lb"},       {"gee", "9.80665 m/s^2"},
 };
+const int cs_unit_alias_count = sizeof cs_unit_aliases / sizeof cs_unit_aliases[0];
 
-struct cs_units {
-    ut_system *system;
-    ut_unit *si[CS_Q_COUNT];
+const char *const cs_units_usual[] = {
+    "m",      "mm",       "cm",     "km",  "in",   "ft",    "yd",     "mi",     "m2",    "mm2",     "cm2",
+    "in2",    "ft2",      "m3",     "mm3", "cm3",  "in3",   "m4",     "mm4",    "cm4",   "in4",     "kg",
+    "g",      "t",        "lb",     "lbm", "kg/m", "lb/ft", "lb/in",  "kg*m^2", "kg m2", "lb*ft^2", "s",
+    "ms",     "min",      "h",      "m/s", "km/h", "kph",   "mph",    "ft/s",   "m/s2",  "m/s^2",   "ft/s2",
+    "gee",    "N",        "kN",     "MN",  "lbf",  "kip",   "kips",   "N/m",    "kN/m",  "MN/m",    "lbf/in",
+    "kip/in", "lbf/ft",   "kip/ft", "Pa",  "kPa",  "MPa",   "GPa",    "psi",    "ksi",   "psf",     "ksf",
+    "rad",    "deg",      "degree", "J",   "kJ",   "MJ",    "ft*lbf", "Pa/m",   "kPa/m", "MPa/m",   "psf/ft",
+    "psi/ft", "lbf/ft^3", "kN/m3",  "%",
 };
+const int cs_units_usual_count = sizeof cs_units_usual / sizeof cs_units_usual[0];
 
 const cs_quantity_info *cs_quantity_get(cs_quantity q) {
     return &quantities[q];
 }
 
 void cs_units_free(cs_units *u) {
-    if (!u) return;
-    pthread_mutex_lock(&ut_lock);
-    for (int q = 0; q < CS_Q_COUNT; q++)
-        ut_free(u->si[q]);
-    ut_free_system(u->system);
-    pthread_mutex_unlock(&ut_lock);
-    free(u);
+    if (u) u->ops->destroy(u);
 }
 
-static int add_alias(cs_units *u, const char *symbol, const char *definition) {
-    ut_unit *unit = ut_parse(u->system, definition, UT_ASCII);
-    int ok = unit && ut_map_symbol_to_unit(symbol, UT_ASCII, unit) == UT_SUCCESS;
-    ut_free(unit);
-    return ok ? 0 : -1;
+static int convertible(cs_units *u, void *unit, cs_quantity q) {
+    double si;
+    return u->ops->convert(u, unit, q, 1.0, &si) == 0;
 }
 
-cs_units *cs_units_create(char *why, size_t why_size) {
-    cs_units *u = calloc(1, sizeof *u);
-    if (!u) {
-        snprintf(why, why_size, "out of memory");
-        return NULL;
-    }
-    pthread_mutex_lock(&ut_lock);
-    ut_set_error_message_handler(ut_ignore);
-    u->system = ut_read_xml(NULL);
-    int ok = u->system != NULL;
-    for (size_t i = 0; ok && i < sizeof aliases / sizeof aliases[0]; i++)
-        ok = add_alias(u, aliases[i][0], aliases[i][1]) == 0;
-    for (int q = 0; ok && q < CS_Q_COUNT; q++)
-        ok = (u->si[q] = ut_parse(u->system, quantities[q].si, UT_ASCII)) != NULL;
-    pthread_mutex_unlock(&ut_lock);
-    if (!ok) {
-        snprintf(why, why_size, "cannot load the udunits2 unit database (set UDUNITS2_XML_PATH)");
-        cs_units_free(u);
-        return NULL;
-    }
-    return u;
-}
-
-/* Name the kind of quantity a unit measures, for a message. Called with the lock held. */
-static const char *kind_of(const cs_units *u, const ut_unit *unit) {
+/* Name the kind of quantity a unit measures, for a message. */
+static const char *kind_of(cs_units *u, void *unit) {
     for (int q = CS_Q_LENGTH; q < CS_Q_COUNT; q++)
-        if (q != CS_Q_ANGLE && ut_are_convertible(unit, u->si[q])) return quantities[q].name;
-    return ut_are_convertible(unit, u->si[CS_Q_NUMBER]) ? "pure number" : NULL;
+        if (q != CS_Q_ANGLE && convertible(u, unit, q)) return quantities[q].name;
+    return convertible(u, unit, CS_Q_NUMBER) ? "pure number" : NULL;
 }
 
 int cs_units_read(cs_units *u, const char *text, cs_quantity q, double *si, char *why, size_t why_size) {
@@ -123,28 +94,145 @@ int cs_units_read(cs_units *u, const char *text, cs_quantity q, double *si, char
     unit_text[n] = '\0';
     const char *lookup = (q == CS_Q_ACCELERATION && strcmp(unit_text, "g") == 0) ? "gee" : unit_text;
     int rc = 0;
-    pthread_mutex_lock(&ut_lock);
-    ut_unit *unit = ut_parse(u->system, lookup, UT_ASCII);
-    cv_converter *cv = NULL;
+    void *unit = u->ops->parse(u, lookup);
     if (!unit) {
         snprintf(why, why_size, "unknown unit '%s'", unit_text);
         rc = -1;
-    } else if (!(cv = ut_get_converter(unit, u->si[q]))) {
+    } else if (u->ops->convert(u, unit, q, value, si) != 0) {
         const char *kind = kind_of(u, unit);
         if (kind)
             snprintf(why, why_size, "'%s' is a unit of %s, not of %s", unit_text, kind, quantities[q].name);
         else
             snprintf(why, why_size, "'%s' is not a unit of %s", unit_text, quantities[q].name);
         rc = -1;
-    } else {
-        *si = cv_convert_double(cv, value);
     }
-    cv_free(cv);
-    ut_free(unit);
-    pthread_mutex_unlock(&ut_lock);
+    if (unit) u->ops->release(u, unit);
     if (rc == 0 && !isfinite(*si)) {
         snprintf(why, why_size, "'%s' is out of range", text);
         rc = -1;
     }
     return rc;
+}
+
+/* A unit system from a table: each unit's factor to every quantity's SI unit (NAN: not a unit of it). */
+typedef struct table_unit {
+    char *text;
+    double factor[CS_Q_COUNT];
+} table_unit;
+
+typedef struct table_units {
+    cs_units base;
+    table_unit *units;
+    int count;
+} table_units;
+
+static void *table_parse(cs_units *u, const char *text) {
+    table_units *t = (table_units *)u;
+    for (int i = 0; i < t->count; i++)
+        if (strcmp(t->units[i].text, text) == 0) return &t->units[i];
+    return NULL;
+}
+
+static int table_convert(cs_units *u, void *unit, cs_quantity q, double value, double *si) {
+    (void)u;
+    const table_unit *tu = unit;
+    if (isnan(tu->factor[q])) return -1;
+    *si = value * tu->factor[q];
+    return 0;
+}
+
+static void table_release(cs_units *u, void *unit) {
+    (void)u, (void)unit;
+}
+
+static void table_destroy(cs_units *u) {
+    table_units *t = (table_units *)u;
+    for (int i = 0; i < t->count; i++)
+        free(t->units[i].text);
+    free(t->units);
+    free(t);
+}
+
+static const cs_units_ops table_ops = {table_parse, table_convert, table_release, table_destroy};
+
+/* One line of a table into tu: 0, or -1. */
+static int table_line(const char *line, size_t len, table_unit *tu) {
+    const char *tab = memchr(line, '\t', len);
+    if (!tab || tab == line) return -1;
+    if (!(tu->text = malloc((size_t)(tab - line) + 1))) return -1;
+    memcpy(tu->text, line, (size_t)(tab - line));
+    tu->text[tab - line] = '\0';
+    const char *p = tab + 1, *stop = line + len;
+    for (int q = 0; q < CS_Q_COUNT; q++) {
+        while (p < stop && *p == ' ')
+            p++;
+        if (p < stop && *p == '-') {
+            tu->factor[q] = NAN;
+            p++;
+            continue;
+        }
+        char *end;
+        tu->factor[q] = strtod(p, &end);
+        if (end == p || end > stop || !isfinite(tu->factor[q])) return -1;
+        p = end;
+    }
+    return p == stop ? 0 : -1;
+}
+
+cs_units *cs_units_from_table(const char *table, char *why, size_t why_size) {
+    table_units *t = calloc(1, sizeof *t);
+    int lines = 0;
+    for (const char *c = table; *c; c++)
+        lines += *c == '\n';
+    if (!t || !(t->units = calloc((size_t)lines + 1, sizeof *t->units))) {
+        free(t);
+        snprintf(why, why_size, "out of memory");
+        return NULL;
+    }
+    t->base.ops = &table_ops;
+    for (const char *line = table; *line;) {
+        const char *nl = strchr(line, '\n');
+        size_t len = nl ? (size_t)(nl - line) : strlen(line);
+        if (len > 0 && table_line(line, len, &t->units[t->count++]) != 0) {
+            snprintf(why, why_size, "unit table, line %d: not UNIT<tab>%d factors", t->count, CS_Q_COUNT);
+            cs_units_free(&t->base);
+            return NULL;
+        }
+        line += len + (nl != NULL);
+    }
+    return &t->base;
+}
+
+/* Whether value * factor is exactly what u converts value in unit to (a conversion by a factor alone). */
+static int by_factor(cs_units *u, void *unit, cs_quantity q, double factor) {
+    static const double samples[] = {0, 0.1, 0.15, 3, 7.25, 35, 1234.5, 1e-3, -2.5};
+    for (size_t i = 0; i < sizeof samples / sizeof samples[0]; i++) {
+        double si;
+        if (u->ops->convert(u, unit, q, samples[i], &si) != 0 || si != samples[i] * factor) return 0;
+    }
+    return 1;
+}
+
+int cs_units_write_table(cs_units *u, const char *const *texts, int count, FILE *f) {
+    int written = 0;
+    for (int i = 0; i < count; i++) {
+        int seen = 0;
+        for (int j = 0; j < i && !seen; j++)
+            seen = strcmp(texts[i], texts[j]) == 0;
+        void *unit = seen || strpbrk(texts[i], "\t\n") ? NULL : u->ops->parse(u, texts[i]);
+        if (!unit) continue;
+        fprintf(f, "%s\t", texts[i]);
+        for (int q = 0; q < CS_Q_COUNT; q++) {
+            double factor;
+            if (u->ops->convert(u, unit, q, 1.0, &factor) == 0 && isfinite(factor) &&
+                by_factor(u, unit, q, factor))
+                fprintf(f, " %.17g", factor);
+            else
+                fprintf(f, " -");
+        }
+        fputc('\n', f);
+        u->ops->release(u, unit);
+        written++;
+    }
+    return written;
 }

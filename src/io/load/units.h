@@ -1,9 +1,12 @@
-/* Physical quantities with units, read by udunits2. A unit system is loaded per context (no shared
- * state between two loaders), with the aliases the field uses that udunits2 lacks. */
+/* Physical quantities with units. A unit system is loaded per context (no shared state between two
+ * loaders): udunits2's database with the aliases the field uses that udunits2 lacks (cs_units_create),
+ * or a table of factors written from one (cs_units_from_table: the designer page's, which has no
+ * udunits2), which converts the units it lists to the same bits. */
 #ifndef CS_UNITS_H
 #define CS_UNITS_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 /* The kinds of quantity a model file holds; each has an SI unit and a name for messages. */
 typedef enum cs_quantity {
@@ -41,6 +44,20 @@ typedef struct cs_units cs_units;
 /* Load the udunits2 system database and the aliases. NULL with why filled on failure. */
 cs_units *cs_units_create(char *why, size_t why_size);
 void cs_units_free(cs_units *u);
+
+/* The units of every quantity a designer page's table holds beside its model's own: metric and US. */
+extern const char *const cs_units_usual[];
+extern const int cs_units_usual_count;
+
+/* The units named by texts[0..count) that u knows (each once; a text holding a tab or a newline is left
+ * out) as a table for cs_units_from_table: a line each, "TEXT<tab>" then CS_Q_COUNT factors, one for each
+ * quantity, the factor to its SI unit (%.17g: exact) or '-' where the unit is not one of that quantity
+ * or u converts it otherwise than by a factor alone. Returns the number of lines. */
+int cs_units_write_table(cs_units *u, const char *const *texts, int count, FILE *f);
+/* A unit system that knows the units of a table (cs_units_write_table's text) and converts each by its
+ * factor: the same messages as any unit system, "unknown unit" for a unit it lacks. NULL with why
+ * filled on a malformed table or no memory. */
+cs_units *cs_units_from_table(const char *table, char *why, size_t why_size);
 
 /* Read "40 mph", "1.75in", "0.15" (a bare number is SI) as quantity q, in SI. Returns 0, or -1 with
  * why filled ("'40 kg' is a mass" ...). */

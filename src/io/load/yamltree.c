@@ -72,6 +72,8 @@ static int add(cs_ytree *t, const frame *parent, cs_ykind kind, const yaml_event
     cs_ynode n = {.kind = kind, .parent = parent ? parent->node : -1};
     n.line = n.key_line = (int)ev->start_mark.line + 1;
     n.col = n.key_col = (int)ev->start_mark.column + 1;
+    n.end_line = (int)ev->end_mark.line + 1;
+    n.end_col = (int)ev->end_mark.column + 1;
     const char *text = kind == CS_Y_SCALAR  ? (const char *)ev->data.scalar.value
                        : kind == CS_Y_ALIAS ? (const char *)ev->data.alias.anchor
                                             : NULL;

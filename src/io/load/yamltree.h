@@ -17,6 +17,7 @@ typedef struct cs_ynode {
     cs_ykind kind;
     int line, col;         /* of the value, 1-based */
     int key_line, key_col; /* of its key in the parent mapping (= line, col for sequence items) */
+    int end_line, end_col; /* just past a scalar's value as written (its quotes included) */
     int duplicate;         /* a node earlier in the file has the same path (a key given twice) */
     int odd_key;           /* its key is empty, 64 characters or longer, or holds '.', '[' or ']' */
     int bad;               /* its key or shape was reported wrong (set by the reader's user) */

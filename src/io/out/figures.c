@@ -1,6 +1,7 @@
 /* The figures of a run (figures.h). Every time series comes from the recorded frames (record.h), every
  * marked failure from the events; nothing here recomputes the physics. */
 #include "figures.h"
+#include "writers.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -234,21 +235,6 @@ static void fig_cables(cs_plot *p, const cs_figure_data *d, double *t) {
 /* 0 elastic, 1 yielding (hinge or footing in the soil), 2 failed. */
 static int post_rank(cs_post_status s) {
     return s == CS_POST_ELASTIC ? 0 : s == CS_POST_HINGED || s == CS_POST_SOIL ? 1 : 2;
-}
-
-int cs_nearest_posts(const cs_model_input *in, int *idx, int max) {
-    int count = 0;
-    double x0 = in->scenario.impact_x;
-    for (int p = 0; p < in->barrier.post_count; p++) {
-        double dp = fabs(in->barrier.posts[p].x - x0);
-        int j = count < max ? count++ : max;
-        while (j > 0 && fabs(in->barrier.posts[idx[j - 1]].x - x0) > dp) {
-            if (j < max) idx[j] = idx[j - 1];
-            j--;
-        }
-        if (j < max) idx[j] = p;
-    }
-    return count;
 }
 
 static int is_failure(cs_event_type type) {

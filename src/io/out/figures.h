@@ -31,8 +31,6 @@ typedef enum cs_figure {
 /* The figure's file stem: "deceleration", "speed", "penetration", "cables", "posts", "energy",
  * "snapshots". */
 const char *cs_figure_name(cs_figure figure);
-/* Up to max post indices of the model by distance from its impact point, nearest first; the count. */
-int cs_nearest_posts(const cs_model_input *in, int *idx, int max);
 /* Its size in device units (the snapshots' height follows the geometry of the run). */
 void cs_figure_size(cs_figure figure, const cs_figure_data *d, double *width, double *height);
 /* Draw one figure to f. Returns 0, or -1 with why filled. */

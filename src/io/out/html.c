@@ -4,21 +4,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-void cs_html_text(FILE *f, const char *s) {
-    for (; s && *s; s++) {
-        if (*s == '&')
-            fputs("&amp;", f);
-        else if (*s == '<')
-            fputs("&lt;", f);
-        else if (*s == '>')
-            fputs("&gt;", f);
-        else if (*s == '"')
-            fputs("&quot;", f);
-        else
-            fputc(*s, f);
-    }
-}
-
 int cs_html_figure(FILE *f, const char *id, double width, double height, cs_plot_draw_fn draw,
                    const void *user, char *why, size_t why_size) {
     char *svg = NULL;

@@ -6,10 +6,9 @@
 
 #include <stdio.h>
 
+#include "out/htmltext.h"
 #include "out/plot.h"
 
-/* s with &, <, > and " escaped (NULL: nothing). */
-void cs_html_text(FILE *f, const char *s);
 /* A width x height figure drawn by draw, inline as SVG. Its ids (cairo's glyphs and clip paths) take the
  * prefix `id`, so that several figures in one page do not take each other's. Returns 0, or -1 with why
  * filled. */

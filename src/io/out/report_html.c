@@ -1,7 +1,7 @@
 /* report.html (report_html.h): the run's data as one JSON object inside the page built from report/. */
 #include "report_html.h"
 
-#include "out/html.h"
+#include "out/htmltext.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -19,8 +19,7 @@ typedef struct jw {
     char what[96]; /* names the value being written, for the message of a non-finite one */
 } jw;
 
-/* A JSON string; '<', '>' and '&' as \u escapes so that no "</script>" or "<!--" can appear. */
-static void jstr(FILE *f, const char *s) {
+void cs_json_page_string(FILE *f, const char *s) {
     fputc('"', f);
     for (; s && *s; s++) {
         unsigned char c = (unsigned char)*s;
@@ -77,7 +76,7 @@ static void kint(jw *j, int *first, const char *k, int v) {
 
 static void kstr(jw *j, int *first, const char *k, const char *v) {
     key(j, first, k);
-    jstr(j->w.f, v);
+    cs_json_page_string(j->w.f, v);
 }
 
 /* Frames kept: 0, stride, 2 stride, ... and always the last. */
@@ -461,7 +460,7 @@ static void write_design(jw *j, int *first, const cs_barrier_def *b) {
 static void write_info(jw *j, int *first, const cs_run_info *info) {
     FILE *f = j->w.f;
     key(j, first, "cablesim");
-    cs_json_provenance(f, info, jstr);
+    cs_json_provenance(f, info, cs_json_page_string);
     key(j, first, "ratings");
     fputc('[', f);
     for (int i = 0; info && i < info->rating_count; i++) {
@@ -591,9 +590,9 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
         snprintf(j.what, sizeof j.what, "an event's time or value");
         num(&j, e->t);
         fputc(',', f);
-        jstr(f, cs_event_type_name(e->type));
+        cs_json_page_string(f, cs_event_type_name(e->type));
         fputc(',', f);
-        jstr(f, cs_element_kind_name(e->element_kind));
+        cs_json_page_string(f, cs_element_kind_name(e->element_kind));
         fprintf(f, ",%d,", e->element);
         num(&j, e->value);
         fputc(']', f);
@@ -623,26 +622,25 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
     return 0;
 }
 
-int cs_write_report_html(FILE *f, const unsigned char *page, size_t size, const cs_model_input *in,
-                         const cs_state *state, const cs_record *rec, const cs_run_info *info, char *why,
-                         size_t why_size) {
-    static const char title[] = "@CS_TITLE@", data[] = "@CS_DATA@";
-    const size_t nt = sizeof title - 1, nd = sizeof data - 1;
+int cs_write_page(FILE *f, const unsigned char *page, size_t size, const char *title, const char *what,
+                  cs_page_data_fn data, void *user, char *why, size_t why_size) {
+    static const char title_marker[] = "@CS_TITLE@", data_marker[] = "@CS_DATA@";
+    const size_t nt = sizeof title_marker - 1, nd = sizeof data_marker - 1;
     size_t i = 0, from = 0;
     int data_written = 0;
     while (i < size) {
-        int is_title = i + nt <= size && memcmp(page + i, title, nt) == 0;
-        int is_data = i + nd <= size && memcmp(page + i, data, nd) == 0;
+        int is_title = i + nt <= size && memcmp(page + i, title_marker, nt) == 0;
+        int is_data = i + nd <= size && memcmp(page + i, data_marker, nd) == 0;
         if (!is_title && !is_data) {
             i++;
             continue;
         }
         fwrite(page + from, 1, i - from, f);
         if (is_title) {
-            cs_html_text(f, in->name);
+            cs_html_text(f, title);
             i += nt;
         } else {
-            if (cs_write_report_json(f, in, state, rec, info, why, why_size) != 0) return -1;
+            if (data(f, user, why, why_size) != 0) return -1;
             data_written = 1;
             i += nd;
         }
@@ -650,12 +648,32 @@ int cs_write_report_html(FILE *f, const unsigned char *page, size_t size, const 
     }
     fwrite(page + from, 1, size - from, f);
     if (!data_written) {
-        snprintf(why, why_size, "report.html: the page has no %s marker (a broken build of report/)", data);
+        snprintf(why, why_size, "%s: the page has no %s marker (a broken build of report/)", what,
+                 data_marker);
         return -1;
     }
     if (ferror(f)) {
-        snprintf(why, why_size, "report.html: write error");
+        snprintf(why, why_size, "%s: write error", what);
         return -1;
     }
     return 0;
+}
+
+typedef struct report_data {
+    const cs_model_input *in;
+    const cs_state *state;
+    const cs_record *rec;
+    const cs_run_info *info;
+} report_data;
+
+static int write_report_data(FILE *f, void *user, char *why, size_t why_size) {
+    const report_data *d = user;
+    return cs_write_report_json(f, d->in, d->state, d->rec, d->info, why, why_size);
+}
+
+int cs_write_report_html(FILE *f, const unsigned char *page, size_t size, const cs_model_input *in,
+                         const cs_state *state, const cs_record *rec, const cs_run_info *info, char *why,
+                         size_t why_size) {
+    report_data d = {in, state, rec, info};
+    return cs_write_page(f, page, size, in->name, "report.html", write_report_data, &d, why, why_size);
 }

@@ -35,6 +35,16 @@ enum {
 int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *state, const cs_record *rec,
                          const cs_run_info *info, char *why, size_t why_size);
 
+/* A JSON string; '<', '>' and '&' as \u escapes so that no "</script>" or "<!--" can appear. */
+void cs_json_page_string(FILE *f, const char *s);
+
+/* Writes a page's data at its @CS_DATA@ marker: 0, or -1 with why filled. */
+typedef int (*cs_page_data_fn)(FILE *f, void *user, char *why, size_t why_size);
+/* A page built from report/ (size bytes) with its markers filled: @CS_TITLE@ with title HTML-escaped,
+ * @CS_DATA@ by data(user). what names the page in messages. Returns 0, or -1 with why filled. */
+int cs_write_page(FILE *f, const unsigned char *page, size_t size, const char *title, const char *what,
+                  cs_page_data_fn data, void *user, char *why, size_t why_size);
+
 /* The page (size bytes, with the markers above) with its markers filled. Returns 0, or -1 with why
  * filled. */
 int cs_write_report_html(FILE *f, const unsigned char *page, size_t size, const cs_model_input *in,

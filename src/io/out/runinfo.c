@@ -1,5 +1,7 @@
 /* What a run's outputs say beside its results (writers.h): its ratings as run, the record of a run made
- * through the library, the model hash's text, and whether its penetration is final. */
+ * through the library, the model hash's text, whether its penetration is final, and the posts nearest the
+ * impact (which the plots and the report follow). */
+#include <math.h>
 #include <stdio.h>
 
 #include "writers.h"
@@ -28,4 +30,19 @@ void cs_model_hash_text(unsigned long long hash, char buf[17]) {
 
 int cs_penetration_is_final(cs_outcome outcome) {
     return outcome == CS_STOPPED || outcome == CS_REDIRECTED || outcome == CS_NO_CONTACT;
+}
+
+int cs_nearest_posts(const cs_model_input *in, int *idx, int max) {
+    int count = 0;
+    double x0 = in->scenario.impact_x;
+    for (int p = 0; p < in->barrier.post_count; p++) {
+        double dp = fabs(in->barrier.posts[p].x - x0);
+        int j = count < max ? count++ : max;
+        while (j > 0 && fabs(in->barrier.posts[idx[j - 1]].x - x0) > dp) {
+            if (j < max) idx[j] = idx[j - 1];
+            j--;
+        }
+        if (j < max) idx[j] = p;
+    }
+    return count;
 }

@@ -34,6 +34,8 @@ void cs_model_hash_text(unsigned long long hash, char buf[17]);
  * touched the barrier), rather than where the run ended with the vehicle through or still going: then it
  * is a lower bound, "beyond" it. */
 int cs_penetration_is_final(cs_outcome outcome);
+/* Up to max post indices of the model by distance from its impact point, nearest first; the count. */
+int cs_nearest_posts(const cs_model_input *in, int *idx, int max);
 
 typedef struct cs_wout {
     FILE *f;
