@@ -8,7 +8,6 @@
 #include <string.h>
 
 #include "cablesim/cablesim.h"
-#include "figures.h"
 #include "load/schema.h"
 #include "writers.h"
 
