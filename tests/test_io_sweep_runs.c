@@ -356,8 +356,8 @@ static void test_summary_responses(void **state) {
     free(json);
     char *md = summary_text(f, cs_sweep_write_summary_md);
     static const char *const want_md[] = {
-        "; max dynamic penetration (m) only over the runs the barrier held (stopped, redirected or never "
-        "touched it); penetration beyond (m) only over the runs it did not hold",
+        ("; max dynamic penetration (m) only over the runs the barrier held (stopped, redirected or never "
+         "touched it); penetration beyond (m) only over the runs it did not hold"),
         ". Forces in kN.\n\n| response | runs | mean | sd | min | 5% | median | 95% | max |\n",
         "\n| max dynamic penetration (m) | 1 | 1.235 | n/a | 1.235 | 1.235 | 1.235 | 1.235 | 1.235 |\n",
         "\n| penetration beyond (m) | 1 | 4.031 | n/a | 4.031 |",
