@@ -147,7 +147,7 @@ try {
   writeFileSync(join(out, 'timing.json'), `${JSON.stringify({ model: 'examples/aps3.yaml', engine, load, call }, null, 1)}\n`);
   console.log(`one APS3 run in the page (headless chromium), fastest and median of 21: the engine ${engine.fastest_ms} and ${engine.median_ms} ms; the model's load ${load.fastest_ms} and ${load.median_ms} ms; the whole call (load, run, summary) ${call.fastest_ms} and ${call.median_ms} ms`);
   // the fastest of 21: the run's own cost, least disturbed by whatever else the machine runs; the run as
-  // `make bench` times the command's (cs_run: 17.9 ms in docs/performance.md)
+  // `make bench` times the command's (cs_run; its numbers in docs/performance.md)
   check('one APS3 run in the page takes under 50 ms', engine.fastest_ms < 50, `${engine.fastest_ms} ms`);
   // a model made of files: tests/good/split.yaml takes its barrier and scenario from base.yaml beside it,
   // which the page holds too and reads from the model's folder, as the command does
