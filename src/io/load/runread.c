@@ -72,6 +72,17 @@ static int split_line(char **p, char **cells, int *col, int max) {
     return n;
 }
 
+/* The next data row at *p into cells (at most max): 1 for a row of the header's nh cells, 0 for a blank
+ * line, -1 (and why, at the row's line) for a row of another width. */
+static int next_row(char **p, char **cells, int *col, int max, int nh, const char *path, size_t line,
+                    char *why, size_t why_size) {
+    int nc = split_line(p, cells, col, max);
+    if (nc == 1 && cells[0][0] == '\0') return 0;
+    if (nc == nh) return 1;
+    snprintf(why, why_size, "%s:%zu:1: %d cells, the header has %d", path, line, nc, nh);
+    return -1;
+}
+
 static int column_of(char *const *names, int n, const char *name) {
     for (int i = 0; i < n; i++)
         if (strcmp(names[i], name) == 0) return i;
@@ -239,12 +250,9 @@ int cs_trace_read_run(const char *dir, cs_trace *tr, char *why, size_t why_size)
     }
     double u0[2] = {0.0, 0.0};
     for (size_t line = 2; *p; line++) {
-        int nc = split_line(&p, cells, col, MAX_COLS);
-        if (nc == 1 && cells[0][0] == '\0') continue;
-        if (nc != nh) {
-            snprintf(why, why_size, "%s:%zu:1: %d cells, the header has %d", path, line, nc, nh);
-            goto done;
-        }
+        int row = next_row(&p, cells, col, MAX_COLS, nh, path, line, why, why_size);
+        if (row < 0) goto done;
+        if (row == 0) continue;
         size_t i = tr->n++;
         tr->t[i] = strtod(cells[it], NULL);
         double vx = strtod(cells[ivx], NULL), vy = strtod(cells[ivy], NULL), v = hypot(vx, vy);
@@ -340,12 +348,9 @@ int cs_trace_read_measured(const char *path, cs_units *units, cs_trace *tr, char
         tr->have[target[j]] = 1;
     }
     for (size_t line = 2; *p; line++) {
-        int nc = split_line(&p, cells, col, MAX_COLS);
-        if (nc == 1 && cells[0][0] == '\0') continue;
-        if (nc != nh) {
-            snprintf(why, why_size, "%s:%zu:1: %d cells, the header has %d", path, line, nc, nh);
-            goto done;
-        }
+        int row = next_row(&p, cells, col, MAX_COLS, nh, path, line, why, why_size);
+        if (row < 0) goto done;
+        if (row == 0) continue;
         size_t i = tr->n;
         for (int j = 0; j < nh; j++) {
             char *end;
