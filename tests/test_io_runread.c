@@ -65,8 +65,29 @@ static void measured_units_and_average(void **state) {
     remove(path);
 }
 
+/* A blank line is skipped; a row of another width than the header is refused at its own line. */
+static void measured_row_of_another_width(void **state) {
+    (void)state;
+    char path[] = "/tmp/cablesim-runread-XXXXXX";
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    FILE *f = fdopen(fd, "w");
+    fputs("time [s],speed [m/s]\n0,20\n\n0.001,19.9\n0.002,19.8,7\n", f);
+    fclose(f);
+    char why[512], want[600];
+    cs_units *u = cs_units_create(why, sizeof why);
+    assert_non_null(u);
+    cs_trace tr;
+    assert_int_equal(cs_trace_read_measured(path, u, &tr, why, sizeof why), -1);
+    snprintf(want, sizeof want, "%s:5:1: 3 cells, the header has 2", path);
+    assert_string_equal(why, want);
+    cs_units_free(u);
+    remove(path);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(average_50ms_closed_forms),
-                                       cmocka_unit_test(measured_units_and_average)};
+                                       cmocka_unit_test(measured_units_and_average),
+                                       cmocka_unit_test(measured_row_of_another_width)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
