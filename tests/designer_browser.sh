@@ -3,7 +3,7 @@
 # (exit 77) in a build without the designer page: emscripten, node or npm missing (scripts/install-deps.sh
 # installs them).
 #   bash tests/designer_browser.sh CABLESIM REPORT_BUILD_DIR OUT MATH
-# (CS_DESIGNER_BUILT=1 when the page is built; MATH: the engine's maths, CMake's CS_MATH)
+# (CS_DESIGNER_BUILT=1 when the page is built; MATH: the engine's maths, musl or glibc, as CMake resolved CS_MATH)
 set -euo pipefail
 if [ "${CS_DESIGNER_BUILT:-0}" != 1 ]; then
   echo "skipped: this cablesim was built without the designer page (emscripten, node or npm not found)"

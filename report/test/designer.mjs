@@ -3,15 +3,15 @@
 // the command's: the first as the file has it, then with the post spacing and the speed changed in the
 // form. The outcome and the numbers change; against `cablesim run --set` of the same values the model
 // (every value the engine is given, its hash), the outcome and the ratings are the same, and the numbers
-// are too, to every digit of summary.json, when the command has the page's maths (CS_MATH=musl), else
-// within 2% (see compare below). The downloaded YAML runs natively to every digit of `cablesim run
-// --set`; a value in a wrong unit shows its message beside its field; a sweep runs; a model of two files
-// (tests/good/split.yaml) runs as the command runs it. One APS3 run's time in the page is measured (the
+// are too, to every digit of summary.json, when the command has the page's maths (musl's: CMake's
+// default), else within 2% (see compare below). The downloaded YAML runs natively to every digit of
+// `cablesim run --set`; a value in a wrong unit shows its message beside its field; a sweep runs; a
+// model of two files (tests/good/split.yaml) runs as the command runs it. One APS3 run's time in the page is measured (the
 // run, cs_run, by the engine's clock, and the whole call that loads, runs and sums it up: the fastest and
 // the median of 21, in OUT/timing.json) against the 50-ms target.
 //
 //   node report/test/designer.mjs --cablesim BUILD/cablesim --modules BUILD/report/node_modules --out DIR
-//                                 [--math glibc|musl]   (the command's CS_MATH)
+//                                 [--math glibc|musl]   (the command's maths, as CMake resolved CS_MATH)
 import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
@@ -31,7 +31,7 @@ function native(name, model, sets) {
 // The page's run against the command's. Always exact: the model (every value the engine is given, in SI,
 // and its hash: the page's loader and unit table are the command's), the outcome and the ratings. The
 // response numbers: to every digit of summary.json when the command's engine has the page's maths
-// (--math musl: built with CS_MATH=musl); else within TOLERANCE, since glibc's maths differ from the
+// (--math musl: the command has musl's maths); else within TOLERANCE, since glibc's maths differ from the
 // page's in the last bit and a crash carries that into the fourth digit (docs/designer.md).
 const TOLERANCE = 0.02;
 const exact = args.math === 'musl';
