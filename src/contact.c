@@ -162,7 +162,14 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
         }
         if (!released[k]) cs->corner_z[k] = cs->corner_z_commit[k] = bz;
         cs_vehicle_corner_point(model, s, s->crush, k, cs->corner_z[k], p);
+        /* The sag's weight is measured from each span's chord (cs_cable_stored_energy): a corner that
+         * takes up a hanging rope where it hangs changes nothing real, but splits a chord in two, and
+         * with it that reference, by w^2 l^3 / (16 T) for a corner at mid-span. No work is done: the
+         * difference is booked with the released energy (docs/theory.md, The vehicle's outline and
+         * contact). A corner taken up again goes on with the rope it had, and books nothing. */
+        double before = released[k] ? 0.0 : cs_cable_stored_energy(&model->cables[c], cs);
         cs_cable_insert_node(cs, j, cs_corner_node(k), p);
+        if (!released[k]) s->e_released += before - cs_cable_stored_energy(&model->cables[c], cs);
         if (released[k] && was_m[k] > cs->m[j - 1] && was_m[k] < cs->m[j + 1] &&
             was_m_commit[k] > cs->m_commit[j - 1] && was_m_commit[k] < cs->m_commit[j + 1])
             cs->m[j] = was_m[k], cs->m_commit[j] = was_m_commit[k];

@@ -161,6 +161,7 @@ typedef struct cs_post_state {
     int bearing;           /* a captured post the vehicle's edge bears on (not backed off) */
     double tilt_commit[2]; /* tilt at the last commit, rad */
     double rate[2];        /* rate of tilt at the last commit, rad/s */
+    double net[2];         /* the net generalised moment (cables, rails, less the resistance) then, N m */
 } cs_post_state;
 
 typedef struct cs_work cs_work; /* work.h */

@@ -197,7 +197,10 @@ static double work_on_barrier(const loaded_pose *a, const loaded_pose *b) {
  * that is not one). Nor at all, and -1 returned, if (with `allowed` given) it ends above the solver
  * tolerance where a commit would leave the barrier holding (stored and dissipated) more than `allowed`
  * plus the work done on it from `from`: an iterate the path does not reach, which the next solve must
- * not start from. A solve that met the tolerance is an equilibrium, and is committed. Returns 1 if it
+ * not start from. A solve that met the tolerance is an equilibrium, and is committed, unless its commit
+ * would hold more than that by CS_LEDGER_FAILURE of the energy scale, which no step of a run may make: an
+ * equilibrium on a branch the path never reached (a rope stretched to its strength with no work done on
+ * it), sent back as a failed one is. Returns 1 if it
  * committed, with the largest residual of the solves it committed kept in s->work->solver_residual. */
 #define CS_PATH_TRIGGER 1e-2
 
@@ -205,10 +208,13 @@ static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, do
                        const loaded_pose *from) {
     cs_contact_update(model, s);               /* 2. cables wrap onto or leave the face */
     double worst = cs_barrier_solve(model, s); /* 3. posts, sliding and crush in equilibrium */
-    if (worst > model->scenario.solver_tolerance && allowed < HUGE_VAL) { /* the work done on it here */
+    if (allowed < HUGE_VAL) {                  /* the work done on it here */
         cs_barrier_force(model, s);
         loaded_pose to = pose_of(s);
-        if (cs_barrier_trial_energy(model, s, s->work) > allowed + work_on_barrier(from, &to)) return -1;
+        double excess = cs_barrier_trial_energy(model, s, s->work) - allowed - work_on_barrier(from, &to);
+        double wild =
+            worst > model->scenario.solver_tolerance ? 0.0 : CS_LEDGER_FAILURE * cs_energy_scale(model, s);
+        if (excess > wild) return -1;
     }
     if (worst > CS_PATH_TRIGGER && !commit_anyway) return 0;
     cs_barrier_commit(model, s);                     /* 4. plastic flow, friction and crush work */

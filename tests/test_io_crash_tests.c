@@ -23,7 +23,7 @@
 enum { TESTS = 3 };
 static const char *const names[TESTS] = {"aps1", "aps3", "aps4"};
 /* cs_state_hash of each run's final state */
-static const unsigned long long hashes[TESTS] = {0x7b9b0578b56b3e50ULL, 0x0e0b1fd95e72ba90ULL, 0xde1a6f103e79055aULL};
+static const unsigned long long hashes[TESTS] = {0x114aedece0bb46cfULL, 0x1931b1eacadd6bbeULL, 0x829b21990e445a41ULL};
 
 typedef struct pinned {
     char outcome[32];
