@@ -148,31 +148,28 @@ static void subtract_inertia(const cs_post_model *pm, const cs_post_state *ps, c
  * generalised moment (the cables' and rails' less the resistance) at the commit, J (w - w_c) = h Q, so
  * the kinetic energy changes by Q da - J |w - w_c|^2 / 2 while the forces' energies change by about
  * -(Q_c + Q) da / 2: the swing loses J |w - w_c|^2 / 2 + (Q_c - Q) da / 2, booked as post damping (the
- * trapezoid rule's work of Q less the kinetic energy's change), as an anchor's (anchor.c). A captured
- * post is moved by the face (no swing of its own). */
+ * trapezoid rule's work of Q less the kinetic energy's change), as an anchor's (anchor.c). Q is read
+ * off that identity (the solve has balanced it, to its tolerance); at a commit with no time since the
+ * last (a failure's re-solve), where the ropes' pull can have changed with no swing, it is evaluated.
+ * A captured post is moved by the face (no swing of its own). */
 static void commit_swing(const cs_model *model, cs_state *s, int p) {
     const cs_post_model *pm = &model->posts[p];
     cs_post_state *ps = &s->posts[p];
+    double *net = ps->net;
     if (ps->captured || pm->inertia <= 0.0) {
         ps->rate[0] = ps->rate[1] = 0.0;
-        ps->net[0] = ps->net[1] = 0.0;
+        net[0] = net[1] = 0.0;
+    } else if (cs_post_swings(pm, s->h)) {
+        double da0 = ps->tilt[0] - ps->tilt_commit[0], da1 = ps->tilt[1] - ps->tilt_commit[1];
+        double w0 = da0 / s->h, w1 = da1 / s->h, q0 = pm->inertia * (w0 - ps->rate[0]) / s->h,
+               q1 = pm->inertia * (w1 - ps->rate[1]) / s->h;
+        double kinetic =
+            0.5 * pm->inertia * (w0 * w0 + w1 * w1 - ps->rate[0] * ps->rate[0] - ps->rate[1] * ps->rate[1]);
+        s->e_post_damping += 0.5 * ((net[0] + q0) * da0 + (net[1] + q1) * da1) - kinetic;
+        ps->rate[0] = w0, ps->rate[1] = w1, net[0] = q0, net[1] = q1;
     } else {
-        double net[2];
+        if (s->h > 0.0) ps->rate[0] = ps->rate[1] = 0.0; /* h infinite, at rest: the rate is 0 */
         cs_post_residual_at(model, s, p, ps->tilt, NULL, NULL, NULL, net);
-        if (cs_post_swings(pm, s->h)) {
-            double k = pm->inertia / (s->h * s->h); /* the inertial moment the residual took off */
-            net[0] += k * (ps->tilt[0] - ps->tilt_commit[0] - s->h * ps->rate[0]);
-            net[1] += k * (ps->tilt[1] - ps->tilt_commit[1] - s->h * ps->rate[1]);
-            double da0 = ps->tilt[0] - ps->tilt_commit[0], da1 = ps->tilt[1] - ps->tilt_commit[1];
-            double w0 = da0 / s->h, w1 = da1 / s->h;
-            double kinetic = 0.5 * pm->inertia *
-                             (w0 * w0 + w1 * w1 - ps->rate[0] * ps->rate[0] - ps->rate[1] * ps->rate[1]);
-            s->e_post_damping += 0.5 * ((ps->net[0] + net[0]) * da0 + (ps->net[1] + net[1]) * da1) - kinetic;
-            ps->rate[0] = w0, ps->rate[1] = w1;
-        } else if (s->h > 0.0) { /* h infinite, at rest: the rate is 0 */
-            ps->rate[0] = ps->rate[1] = 0.0;
-        }
-        ps->net[0] = net[0], ps->net[1] = net[1];
     }
     ps->tilt_commit[0] = ps->tilt[0], ps->tilt_commit[1] = ps->tilt[1];
 }
