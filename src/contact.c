@@ -166,7 +166,8 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
          * takes up a hanging rope where it hangs changes nothing real, but splits a chord in two, and
          * with it that reference, by w^2 l^3 / (16 T) for a corner at mid-span. No work is done: the
          * difference is booked with the released energy (docs/theory.md, The vehicle's outline and
-         * contact). A corner taken up again goes on with the rope it had, and books nothing. */
+         * contact at an angle, "Engaging"). A corner taken up again goes on with the rope it had, and
+         * books nothing. */
         double before = released[k] ? 0.0 : cs_cable_stored_energy(&model->cables[c], cs);
         cs_cable_insert_node(cs, j, cs_corner_node(k), p);
         if (!released[k]) s->e_released += before - cs_cable_stored_energy(&model->cables[c], cs);

@@ -200,8 +200,8 @@ static double work_on_barrier(const loaded_pose *a, const loaded_pose *b) {
  * not start from. A solve that met the tolerance is an equilibrium, and is committed, unless its commit
  * would hold more than that by CS_LEDGER_FAILURE of the energy scale, which no step of a run may make: an
  * equilibrium on a branch the path never reached (a rope stretched to its strength with no work done on
- * it), sent back as a failed one is. Returns 1 if it
- * committed, with the largest residual of the solves it committed kept in s->work->solver_residual. */
+ * it), sent back as a failed one is. Returns 1 if it committed, with the largest residual of the solves
+ * it committed kept in s->work->solver_residual. */
 #define CS_PATH_TRIGGER 1e-2
 
 static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, double allowed,
