@@ -51,7 +51,7 @@ typedef struct result {
 } result;
 
 enum { CRASH = 3, BOGIE = CS_BOGIE_TESTS, REFINE = 2, VALUES = 4, INPUTS = 6, JOINT = 32, JOINT_SEED = 2656 };
-enum { READINGS = 6, ROAD = 6, ROAD_READINGS = 8 };
+enum { READINGS = 8, ROAD = 6, ROAD_READINGS = 8 };
 enum {
     MAX_JOBS = CRASH + BOGIE + CRASH * REFINE * VALUES + CRASH * INPUTS * 2 + CRASH * JOINT +
                CRASH * READINGS + ROAD * (1 + ROAD_READINGS)
@@ -742,6 +742,16 @@ static const struct {
      "aps1 aps3 aps4",
      0,
      {"barrier.cables[0].termination=swaged", "barrier.cables[1].termination=swaged", NULL}},
+    {"the dead-men let go at 30 degrees of footing rotation instead of 45",
+     "aps1 aps3 aps4",
+     0,
+     {"barrier.anchors.start.footing.rotation_limit=30 deg",
+      "barrier.anchors.end.footing.rotation_limit=30 deg", NULL}},
+    {"the dead-men let go at 60 degrees of footing rotation instead of 45",
+     "aps1 aps3 aps4",
+     0,
+     {"barrier.anchors.start.footing.rotation_limit=60 deg",
+      "barrier.anchors.end.footing.rotation_limit=60 deg", NULL}},
 };
 
 static void add_readings(suite *s, int k) {

@@ -26,7 +26,7 @@ check "validate --report-only exits 0 whatever the targets" '[ $? -eq 0 ]'
 "$cs" validate -o "$dir/read" --only readings --report-only >/dev/null 2>&1
 check "validate --only readings exits 0" '[ $? -eq 0 ]'
 md="$dir/read/validation.md"
-check "17 rows of readings (6 + 5 + 6)" '[ "$(grep -cE "^\| aps[134] \| (as the file|no rails|rails of|the |swaged)" "$md")" -eq 17 ]'
+check "23 rows of readings (8 + 7 + 8)" '[ "$(grep -cE "^\| aps[134] \| (as the file|no rails|rails of|the |swaged)" "$md")" -eq 23 ]'
 check "a band row per test" '[ "$(grep -cE "^\| aps[134] \| [0-9]+ \| [0-9]+ \|" "$md")" -eq 3 ]'
 check "APS1 judged against the band of its readings" 'grep -qE "band of its readings: deceleration 1.485 g (inside|OUTSIDE)" "$md"'
 check "APS1 targets judged" 'grep -qE "deceleration (met|NOT met), exit speed (met|NOT met), break times (met|NOT met)" "$dir/crash/validation.md"'
