@@ -34,9 +34,10 @@ void cs_anchor_derive(const cs_anchor_def *d, double gravity, cs_anchor_model *a
     am->stiffness = am->capacity / (CS_ANCHOR_YIELD_STRAIN * f->depth);
     am->travel_limit = 2.0 * f->depth / 3.0 * sin(f->rotation_limit);
     double perimeter_skin = len > 0.0 ? 2.0 * (b + len) / (CS_PI * b) : 1.0; /* a block's perimeter */
-    am->uplift_capacity = d->pullout_capacity > 0.0
-                              ? d->pullout_capacity
-                              : am->mass * gravity + perimeter_skin * cs_footing_pullout_capacity(f);
+    /* a capacity given for the anchor, or for its footing, is design data and taken as it is */
+    double given = d->pullout_capacity > 0.0 ? d->pullout_capacity : f->pullout_capacity;
+    am->uplift_capacity =
+        given > 0.0 ? given : am->mass * gravity + perimeter_skin * cs_footing_pullout_capacity(f);
 }
 
 int cs_anchor_active(const cs_model *model, const cs_state *s, int a) {

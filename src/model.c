@@ -81,7 +81,7 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
                 return fail(err, "anchor %d: soil friction angle must be between 0 and 69 degrees", k);
             if (!(f->rotation_limit > 0.0 && f->rotation_limit < 1.5))
                 return fail(err, "anchor %d: footing rotation limit must be between 0 and 1.5 rad", k);
-            if (a->pullout_capacity == 0.0 && !positive(f->skin_friction))
+            if (a->pullout_capacity == 0.0 && f->pullout_capacity == 0.0 && !positive(f->skin_friction))
                 return fail(err, "anchor %d: an anchor without a pullout capacity needs skin friction > 0",
                             k);
         }

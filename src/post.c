@@ -5,8 +5,10 @@
  * post resists with an elastic-plastic rotational spring: k (alpha - alpha_p) up to the capacity
  * M_cap, then rotation at constant moment (the plastic hinge of Eqs. 13-20, or the footing rotating
  * in the soil past Eq. 21). k = 3 E I / h is the cantilever of Eqs. 10-11 seen at the load height h.
- * M_cap = min(Zx Fy, P(h) h): whichever of post and footing is weaker yields, and its work goes to
- * post plastic or soil. Each step the tilt is solved so that Q = resistance, plus the inertial moment of
+ * Whichever of post and footing holds the smaller pull at h yields: the post at Zx Fy about its base
+ * (M_cap = Zx Fy), or the footing at P(h), turning about a pivot 2/3 of its depth down (M_cap = P(h) (h +
+ * 2D/3) about that pivot, which may exceed Zx Fy while the base moment P h stays below it); the work goes
+ * to post plastic or soil. Each step the tilt is solved so that Q = resistance, plus the inertial moment of
  * a post with mass (its swing, below); a massless post is in balance at once. */
 #include "rows.h"
 #include "vec3.h"
@@ -129,9 +131,9 @@ void cs_post_axis_jacobian(const double *tilt, double *j, double *dj) {
  * so its residual carries the inertial moment. J / h^2 (about 1e8 N m/rad for 20 kg m^2 at 0.5 ms)
  * dwarfs the slope of the cables' pull that makes a post on its plateau fold (its P-delta), so the
  * residual stays monotone in the tilt and the post swings through where the massless one had no
- * equilibrium near. Backward Euler takes J |w - w_c|^2 / 2 out of the swing at each commit, booked as
- * post damping; its end-point rule's share in the forces that swing the post (k |d alpha|^2 / 2 for a
- * spring) is left in the balance error (docs/theory.md, "Posts with mass"). */
+ * equilibrium near. Backward Euler takes energy out of the swing at each commit, J |w - w_c|^2 / 2 and
+ * its end-point rule's share in the forces that swing the post (k |d alpha|^2 / 2 for a spring); both
+ * are booked as post damping (commit_swing below; docs/theory.md, "Posts with mass"). */
 int cs_post_swings(const cs_post_model *pm, double h) {
     return pm->inertia > 0.0 && h > 0.0 && h < HUGE_VAL; /* not massless, held, or at rest */
 }

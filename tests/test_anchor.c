@@ -37,6 +37,18 @@ static void anchor_from_its_footing(void **state) {
     assert_false(am->rigid);
     assert_true(m->anchors[1].capacity == am->capacity);
     cs_model_free(m);
+    /* a pullout capacity given for the footing, or for the anchor, is the uplift that lifts it out,
+     * with nothing added for its weight or a block's perimeter (an 8 x 6-ft block: 20 kip) */
+    for (int k = 0; k < 2; k++) {
+        fx.barrier.start_anchor.length = 6.0 * FT;
+        fx.barrier.start_anchor.footing = fixture_footing(8.0, 4.0, 0.0);
+        fx.barrier.start_anchor.footing.pullout_capacity = k ? 0.0 : 20.0 * KIP;
+        fx.barrier.start_anchor.pullout_capacity = k ? 20.0 * KIP : 0.0;
+        m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+        if (!m) fail_msg("%s", err.message);
+        CHECK_REL(m->anchors[0].uplift_capacity, 20.0 * KIP, 1e-15);
+        cs_model_free(m);
+    }
 }
 
 /* A rope pretensioned well beyond what its anchors hold pulls them in at installation until it holds just

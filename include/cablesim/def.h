@@ -76,7 +76,7 @@ typedef struct cs_section_def {
 
 /** Footing (or the post itself driven in soil) and the soil around it: lateral capacity by Eq. 21,
  *   S1 B D^2 - c_d P D - c_h P H = 0  =>  P = S1 B D^2 / (c_d D + c_h H),
- * evaluated in the paper's units (psf, ft, lb) and converted; see footing.c. */
+ * dimensionally homogeneous, so evaluated in SI as written; see footing.c. */
 typedef struct cs_footing_def {
     double diameter;          /**< B, m (width facing the soil) */
     double depth;             /**< D, embedment, m */
@@ -134,7 +134,7 @@ typedef struct cs_anchor_def {
     double z;                /**< height where the cables are tied, m */
     double pullout_capacity; /**< uplift that pulls it out, N; 0: its weight plus its skin friction
                               * (footing.skin_friction); HUGE_VAL: never */
-    double length;           /**< plan size across the pull, m (0: a round shaft of the footing's diameter) */
+    double length;           /**< plan size along the pull, m (0: a round shaft of the footing's diameter) */
     double mass;             /**< kg, what moves with it (0: its concrete, CS_CONCRETE_DENSITY) */
     cs_footing_def footing;  /**< its width facing the pull (diameter), depth and soil; diameter 0: rigid */
 } cs_anchor_def;

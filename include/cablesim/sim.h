@@ -216,7 +216,8 @@ typedef struct cs_post_view {
     double base_moment;     /**< N m */
     double base_shear;      /**< N */
     double axial_pull;      /**< N, positive pulling the post out */
-    double moment_capacity; /**< min(Mp, footing), N m */
+    double moment_capacity; /**< Mp about the base, or the footing's P (h + 2D/3) about its pivot if it is the
+                               weaker, N m */
     double top[3];          /**< the top's position, m */
 } cs_post_view;
 

@@ -247,7 +247,8 @@ static const cs_field anchor_fields[] = {
         "the dead-man in the soil: its width facing the pull (diameter) and depth; not given: a rigid "
         "anchor"),
     QTY("length", CS_Q_LENGTH, CS_POS, cs_anchor_def, length,
-        "a block's plan size across its width (not given: a round shaft)"),
+        "a block's plan size along the pull (footing.diameter is the face against it; not given: a round "
+        "shaft)"),
     QTY("mass", CS_Q_MASS, CS_POS, cs_anchor_def, mass, "what moves with it (not given: its concrete)"),
     QTY("pullout_capacity", CS_Q_FORCE, CS_POS | CS_NONE_OK, cs_anchor_def, pullout_capacity,
         "uplift that pulls it out (none: never; not given: its weight and skin friction)"),
