@@ -121,6 +121,13 @@ static int wraps(const cs_state *s, const cs_cable_state *cs, int i, int k) {
     return out_end < 0.0 && out_side <= 1e-12;
 }
 
+/* The sag term q of span i (cs_span_sag): the sag's weight below its chord is -q / (12 T). */
+static double sag_of(const cs_cable_model *cm, const cs_cable_state *cs, int i) {
+    double d[4];
+    cs_span_chord(cs, i, d);
+    return cs_span_sag(&cm->rope, d);
+}
+
 static void update_cable(const cs_model *model, cs_state *s, int c) {
     cs_cable_state *cs = &s->cables[c];
     cs_contact_place_corners(model, s, s->crush);
@@ -135,7 +142,10 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
         int k = cs_node_corner(cs->node[i]);
         if (wraps(s, cs, i, k)) continue;
         released[k] = 1, was_m[k] = cs->m[i], was_m_commit[k] = cs->m_commit[i];
+        double t = cs->tension[i - 1],
+               split = sag_of(&model->cables[c], cs, i - 1) + sag_of(&model->cables[c], cs, i);
         cs_cable_remove_node(cs, i);
+        if (t > 0.0) s->e_released += (sag_of(&model->cables[c], cs, i - 1) - split) / (12.0 * t);
     }
     /* engage corners that have crossed the path */
     for (int k = 0; k < CS_CORNERS; k++) {
@@ -166,14 +176,15 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
          * takes up a hanging rope where it hangs changes nothing real, but splits a chord in two, and
          * with it that reference, by w^2 l^3 / (16 T) for a corner at mid-span. No work is done: the
          * difference is booked with the released energy (docs/theory.md, The vehicle's outline and
-         * contact at an angle, "Engaging"). A corner taken up again goes on with the rope it had, and
-         * books nothing. */
-        double before = released[k] ? 0.0 : cs_cable_stored_energy(&model->cables[c], cs);
+         * contact at an angle, "Engaging"). The release above books the chords joined again, at the
+         * tension the joined span keeps (its tension is found at the next solve, and the ledger follows
+         * it there). A corner taken up again goes on with the rope it had. */
+        double before = cs_cable_stored_energy(&model->cables[c], cs);
         cs_cable_insert_node(cs, j, cs_corner_node(k), p);
-        if (!released[k]) s->e_released += before - cs_cable_stored_energy(&model->cables[c], cs);
         if (released[k] && was_m[k] > cs->m[j - 1] && was_m[k] < cs->m[j + 1] &&
             was_m_commit[k] > cs->m_commit[j - 1] && was_m_commit[k] < cs->m_commit[j + 1])
             cs->m[j] = was_m[k], cs->m_commit[j] = was_m_commit[k];
+        s->e_released += before - cs_cable_stored_energy(&model->cables[c], cs);
     }
     cs->engaged = 0;
     for (int i = 1; i + 1 < cs->node_count; i++)
