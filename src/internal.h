@@ -224,7 +224,7 @@ struct cs_state {
 void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src);
 void cs_state_restore_barrier(const cs_model *model, cs_state *s, const cs_state *from);
 
-/* ---- rope law (cable.c) ---- */
+/* ---- rope law (rope.c) ---- */
 double cs_rope_tension(const cs_rope *rope, double strain, double plastic_strain);
 double cs_rope_elastic_energy(const cs_rope *rope, double tension, double material);
 
@@ -257,8 +257,10 @@ double cs_span_sag(const cs_rope *rope, const double *chord);
 double cs_span_plastic(const cs_cable_state *cs, int span, double lo, double hi);
 /* Every span's tension, and its chord into chords if not NULL. */
 void cs_cable_update_tensions(const cs_cable_model *cm, cs_cable_state *cs, double *chords);
-/* Span i's tension from its ends as they stand (the chord into chord unless NULL): the one place, with
- * cs_cable_update_tensions, that sets a span's tension. */
+/* Span i's tension from its ends as they stand (the chord into chord unless NULL). With
+ * cs_cable_update_tensions it is where the solve sets a span's tension; the commit (cs_cable_commit)
+ * sets it from the same law at the committed ends, and the installer's hold (cs_cable_hold_tension)
+ * and a release (cs_cable_release) set it outright. */
 void cs_cable_update_span(const cs_cable_model *cm, cs_cable_state *cs, int span, double *chord);
 /* Every span at tension t whatever its stretch (the rope as an installer pulls it, before it is laid in). */
 void cs_cable_hold_tension(cs_cable_state *cs, double t);
