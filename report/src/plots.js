@@ -149,14 +149,14 @@ function specs(data) {
   out.push({
     key: 'speed',
     title: 'Speed of the vehicle',
-    caption: 'Speed of the centre of gravity along the initial travel direction. The slope is the deceleration; a marker shows where the vehicle stopped or broke through.',
+    caption: 'Speed of the centre of gravity along the initial travel direction. The slope is the deceleration; a marker shows where the vehicle stopped, broke through or was redirected, with the whole of its speed as it left.',
     data: [t, S.speed],
     series: [line('forward speed (m/s)', PALETTE[0], 3)],
     axes: [timeAxis, { label: 'speed (m/s)' }, otherAxis('speed (mph)', 1 / MPH, 0)],
     yFromZero: true,
     markers: ev
       .filter((e) => e[1] === 'stopped' || e[1] === 'breakthrough' || e[1] === 'redirected')
-      .map((e) => ({ t: e[0], v: valueAt(e[0], t, S.speed), color: '#d91a1a', shape: 'diamond', label: e[1] === 'stopped' ? `stopped at ${fmt(e[0], 3)} s` : `through at ${fmt(e[0], 3)} s, ${fmt(e[4], 1)} m/s (${fmt(e[4] / MPH, 1)} mph)` })),
+      .map((e) => ({ t: e[0], v: valueAt(e[0], t, S.speed), color: '#d91a1a', shape: 'diamond', label: e[1] === 'stopped' ? `stopped at ${fmt(e[0], 3)} s` : `${e[1] === 'redirected' ? 'redirected' : 'broke through'} at ${fmt(e[0], 3)} s, leaving at ${fmt(e[4], 1)} m/s (${fmt(e[4] / MPH, 1)} mph), its whole speed` })),
   });
   // 3. penetration
   out.push({

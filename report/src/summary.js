@@ -115,7 +115,7 @@ export function cards(data) {
     card('Penetration', final ? penSI : `beyond ${penSI}`, final ? penUS : `beyond ${penUS}`, final ? 'front face past the cable line' : s.exit_speed_mps !== null ? 'the vehicle got through' : 'still going at the end'),
     card('Exit speed', exitSI, exitUS, exitNote),
     card('Posts failed', `${s.posts_failed_left + s.posts_failed_right} of ${posts}`, `${s.posts_failed_left} left, ${s.posts_failed_right} right`, `cables broken: ${s.cables_broken} of ${cables}`),
-    card('Energy balance', `${(100 * s.energy_balance_error).toFixed(2)} %`, `of ${keSI} (${keUS})`, 'ledger error, largest over the run', Math.abs(s.energy_balance_error) > 0.05 ? 'warn' : ''),
+    card('Energy balance', `${(100 * s.energy_balance_error).toFixed(2)} %`, `of ${keSI} (${keUS})`, 'ledger error, largest over the run', s.energy_balance_warning ? 'warn' : ''),
   );
 }
 

@@ -123,8 +123,9 @@ static void fig_speed(cs_plot *p, const cs_figure_data *d, double *t) {
         if (e->type == CS_EVENT_STOPPED)
             snprintf(note, sizeof note, "stopped at t = %.3f s", e->t);
         else
-            snprintf(note, sizeof note, "broke through at t = %.3f s, exit %.1f m/s (%.1f mph)", e->t,
-                     e->value, e->value / MPH);
+            snprintf(note, sizeof note, "%s at t = %.3f s, leaving at %.1f m/s (%.1f mph), its whole speed",
+                     e->type == CS_EVENT_REDIRECTED ? "redirected" : "broke through", e->t, e->value,
+                     e->value / MPH);
         cs_plot_label(p, &a, e->t, value_at(t, u, n, e->t), -12, 22, 1, note);
     }
     cs_plot_legend(p, &a, CS_LEGEND_BOTTOM_LEFT);
@@ -357,13 +358,17 @@ static const struct {
     {"crush of the vehicle", offsetof(cs_energy, crush), {0.80, 0.20, 0.20}},
     {"post plastic (hinges)", offsetof(cs_energy, post_plastic), {0.20, 0.55, 0.25}},
     {"post swing damping", offsetof(cs_energy, post_damping), {0.40, 0.65, 0.45}},
-    {"soil (footings rotating)", offsetof(cs_energy, soil), {0.55, 0.38, 0.22}},
+    {"soil (footings, dead-men)", offsetof(cs_energy, soil), {0.55, 0.38, 0.22}},
     {"cable plastic", offsetof(cs_energy, cable_plastic), {0.90, 0.50, 0.10}},
+    {"rail plastic (yield, buckling)", offsetof(cs_energy, rail_plastic), {0.30, 0.32, 0.40}},
     {"friction (tyres, rope sliding)", offsetof(cs_energy, friction), {0.55, 0.40, 0.75}},
     {"released at failures", offsetof(cs_energy, released), {0.85, 0.50, 0.70}},
     {"post elastic", offsetof(cs_energy, post_elastic), {0.55, 0.80, 0.50}},
     {"post kinetic (swing)", offsetof(cs_energy, post_kinetic), {0.70, 0.88, 0.62}},
     {"cable elastic", offsetof(cs_energy, cable_elastic), {0.98, 0.78, 0.40}},
+    {"rail elastic", offsetof(cs_energy, rail_elastic), {0.62, 0.66, 0.76}},
+    {"anchor elastic (soil spring)", offsetof(cs_energy, anchor_elastic), {0.90, 0.85, 0.55}},
+    {"anchor kinetic (slide)", offsetof(cs_energy, anchor_kinetic), {0.62, 0.78, 0.85}},
     {"vehicle potential", offsetof(cs_energy, vehicle_potential), {0.70, 0.70, 0.70}},
     {"vehicle kinetic", offsetof(cs_energy, vehicle_kinetic), {0.35, 0.60, 0.90}},
 };

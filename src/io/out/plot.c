@@ -152,7 +152,9 @@ static void sane_range(double *lo, double *hi) {
 }
 
 static void tick_label(char *buf, size_t size, double v, double step) {
-    int dec = step >= 1 ? 0 : (int)ceil(-log10(step) - 1e-9);
+    int dec = 0; /* the decimals that write the step itself (0.25: two) */
+    while (dec < 6 && fabs(step * pow(10.0, dec) - round(step * pow(10.0, dec))) > 1e-9 * pow(10.0, dec))
+        dec++;
     if (fabs(v) < 1e-9 * step) v = 0;
     snprintf(buf, size, "%.*f", dec, v);
 }
