@@ -200,6 +200,14 @@ static const char *fmt_time(double t, char *buf, size_t n) {
     return buf;
 }
 
+/* The largest penetration; for a run that got through, how far it had got when the run ended: the
+ * penetration is beyond it (the summary's max_dynamic_penetration_m is null there). */
+static const char *penetration_text(const cs_summary *m, char *buf, size_t n) {
+    snprintf(buf, n, "%s%.2f m", cs_outcome_through(m->outcome) ? "beyond " : "",
+             m->max_dynamic_penetration_m);
+    return buf;
+}
+
 static double rel_err(double model, double test) {
     return 100.0 * (model - test) / fabs(test);
 }
@@ -277,8 +285,8 @@ static void write_crash(FILE *md, FILE *csv, suite *s) {
             cs_outcome_name(p3->sm.outcome), p3->sm.t_end_s, cs_outcome_name(p4->sm.outcome), p4->sm.t_end_s);
     fprintf(md, "| max 50-ms average deceleration | %.3f g | withheld | %.3f g | withheld |\n",
             p3->sm.max_50ms_decel_g, p4->sm.max_50ms_decel_g);
-    fprintf(md, "| max dynamic penetration | %.2f m | withheld | %.2f m | withheld |\n",
-            p3->sm.max_dynamic_penetration_m, p4->sm.max_dynamic_penetration_m);
+    fprintf(md, "| max dynamic penetration | %s | withheld | %s | withheld |\n",
+            penetration_text(&p3->sm, a, sizeof a), penetration_text(&p4->sm, b, sizeof b));
     fprintf(md, "| exit speed | %s | withheld | %s | withheld |\n",
             cs_outcome_through(p3->sm.outcome)
                 ? (snprintf(a, sizeof a, "%.1f mph", p3->sm.exit_speed_mps / MPH), a)
@@ -771,12 +779,12 @@ static void reading_row(FILE *md, const char *name, const char *what, const resu
         fprintf(md, "| %s | %s | failed | | | | | | |\n", name, what);
         return;
     }
-    char exit[32] = "-", b[2][32];
+    char exit[32] = "-", b[2][32], pen[32];
     if (cs_outcome_through(r->sm.outcome))
         snprintf(exit, sizeof exit, "%.1f mph", r->sm.exit_speed_mps / MPH);
     const cs_summary *m = &r->sm;
-    fprintf(md, "| %s | %s | %s | %.2f g | %.2f m | %s | %s, %s | %d / %d / %d |\n", name, what,
-            cs_outcome_name(m->outcome), m->max_50ms_decel_g, m->max_dynamic_penetration_m, exit,
+    fprintf(md, "| %s | %s | %s | %.2f g | %s | %s | %s, %s | %d / %d / %d |\n", name, what,
+            cs_outcome_name(m->outcome), m->max_50ms_decel_g, penetration_text(m, pen, sizeof pen), exit,
             fmt_time(r->cable_break[0], b[0], sizeof b[0]), fmt_time(r->cable_break[1], b[1], sizeof b[1]),
             m->posts_failed_rotation_left + m->posts_failed_rotation_right,
             m->posts_failed_shear_left + m->posts_failed_shear_right,
@@ -807,7 +815,9 @@ static void write_readings(FILE *md, FILE *csv, const suite *s) {
     }
     fprintf(
         md,
-        "\nThe band over the readings:\n\n| test | runs | broke through | max 50-ms decel | penetration | "
+        "\nThe band over the readings (the penetration of a run that got through is where it was when the "
+        "run "
+        "ended, less than the real one):\n\n| test | runs | broke through | max 50-ms decel | penetration | "
         "exit speed | cable 1 broke | cable 2 broke |\n|---|---|---|---|---|---|---|---|\n");
     for (int k = 0; k < CRASH; k++) {
         fprintf(md, "| %s | %d | %d |", crash_names[k], all[k].runs, all[k].through);

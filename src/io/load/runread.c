@@ -208,6 +208,7 @@ static int read_summary(const char *dir, cs_trace *tr, char *why, size_t why_siz
     tr->max_decel_50ms_g = json_number(root, "max_50ms_decel_g");
     tr->t_max_decel_50ms = json_number(root, "t_max_50ms_decel_s");
     tr->max_penetration = json_number(root, "max_dynamic_penetration_m");
+    tr->penetration_beyond = isnan(tr->max_penetration); /* null: the vehicle got through */
     tr->max_deflection = json_number(root, "max_barrier_deflection_m");
     tr->working_width = json_number(root, "working_width_m");
     tr->exit_speed = json_number(root, "exit_speed_mps");

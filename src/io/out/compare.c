@@ -116,7 +116,12 @@ static double value(const cs_trace *tr, int k) {
 }
 
 /* The difference from the reference in per cent, NAN where either is not given or the reference is 0. */
+static int beyond(const cs_trace *tr, int k) {
+    return tr->penetration_beyond && params[k].offset == offsetof(cs_trace, max_penetration);
+}
+
 static double difference(const cs_trace *tr, const cs_trace *ref, int k) {
+    if (beyond(tr, k) || beyond(ref, k)) return NAN; /* a lower bound is not compared */
     double x = value(tr, k), r = value(ref, k);
     return isfinite(x) && isfinite(r) && r != 0.0 ? 100.0 * (x - r) / fabs(r) : NAN;
 }
@@ -166,9 +171,10 @@ static void cell(char *buf, size_t size, const cs_trace *tr, const cs_trace *ref
         snprintf(buf, size, "-");
         return;
     }
-    int n = params[k].us_scale > 0.0 ? snprintf(buf, size, "%.3f %s (%.2f %s)", x, params[k].unit,
+    const char *at_least = beyond(tr, k) ? "beyond " : "";
+    int n = params[k].us_scale > 0.0 ? snprintf(buf, size, "%s%.3f %s (%.2f %s)", at_least, x, params[k].unit,
                                                 x / params[k].us_scale, params[k].us_unit)
-                                     : snprintf(buf, size, "%.3f %s", x, params[k].unit);
+                                     : snprintf(buf, size, "%s%.3f %s", at_least, x, params[k].unit);
     if (strcmp(params[k].unit, "N") == 0) /* tensions in kN */
         n = snprintf(buf, size, "%.1f kN (%.1f kip)", x / 1e3, x / params[k].us_scale);
     if (!is_ref && isfinite(d) && n > 0 && (size_t)n < size)
