@@ -6,8 +6,16 @@ static const char *const event_names[CS_EVENT_TYPE_COUNT] = {
     "post_pullout", "footing_rotation",  "anchor_pullout", "anchor_yield",        "override",
     "underride",    "stopped",           "breakthrough",   "redirected",          "cable_release"};
 
+/* The value each type carries (sim.h) */
+static const char *const event_units[CS_EVENT_TYPE_COUNT] = {"N", "N", "N m", "rad", "N",   "N",   "N m", "N",
+                                                             "N", "s", "s",   "m",   "m/s", "m/s", "N"};
+
 const char *cs_event_type_name(cs_event_type type) {
     return (type >= 0 && type < CS_EVENT_TYPE_COUNT) ? event_names[type] : "unknown";
+}
+
+const char *cs_event_value_unit(cs_event_type type) {
+    return (type >= 0 && type < CS_EVENT_TYPE_COUNT) ? event_units[type] : "";
 }
 
 const char *cs_element_kind_name(cs_element_kind kind) {

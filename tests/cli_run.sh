@@ -33,7 +33,11 @@ done
 check "no temporaries left" '[ -z "$(ls "$out" | grep "\.tmp$")" ]'
 check "timeseries header has units" 'head -1 "$out/timeseries.csv" | grep -q "^t_s,x_m,y_m,z_m,vx_mps,.*decel_50ms_g.*cable0_max_tension_n.*post0_state.*energy_balance_error$"'
 check "timeseries has rows" '[ "$(wc -l <"$out/timeseries.csv")" -gt 10 ]'
-check "events header" 'head -1 "$out/events.csv" | grep -q "^t_s,type,element_kind,element,value_si$"'
+check "events header" 'head -1 "$out/events.csv" | grep -q "^t_s,type,element_kind,element,value_si,value_unit$"'
+# APS3's first events: its middle posts hinge at their plastic moment, Zx Fy = 7,270.57 N m; every
+# event's value has its unit
+check "a hinge's moment in N m" 'grep -qE "^[0-9.]+,post_hinge,post,[0-9]+,7270\.57[0-9]*,N m$" "$out/events.csv"'
+check "every event has a unit" 'awk -F, "NR > 1 && \$6 == \"\" { bad = 1 } END { exit bad }" "$out/events.csv"'
 for key in max_50ms_decel_g max_dynamic_penetration_m max_barrier_deflection_m stopped stop_time_s exit_speed_mps \
     posts_failed_left posts_failed_right initial_kinetic_energy_j energy_balance_error events inputs; do
     check "summary.json has $key" 'grep -q "\"$key\":" "$out/summary.json"'

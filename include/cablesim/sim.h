@@ -141,6 +141,8 @@ typedef struct cs_event {
 
 /** An event type's name in events.csv and summary.json: "cable_break", "post_hinge", ... */
 CS_API const char *cs_event_type_name(cs_event_type type);
+/** The SI unit of an event type's value: "N", "N m", "rad", "m/s", "m" or "s". */
+CS_API const char *cs_event_value_unit(cs_event_type type);
 /** An element kind's name: "cable", "post", "anchor", "vehicle". */
 CS_API const char *cs_element_kind_name(cs_element_kind kind);
 /** The number of events so far. */

@@ -304,6 +304,8 @@ int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model
         jkey(&w, &ef, "element");
         cs_json_string(f, element);
         jnum(&w, &ef, "value", e->value);
+        jkey(&w, &ef, "unit");
+        cs_json_string(f, cs_event_value_unit(e->type));
         fprintf(f, "}");
     }
     fprintf(f, "],\n\"inputs\":");
