@@ -1,7 +1,8 @@
 /* The energy ledger. Each term is computed on its own: kinetic and potential energy from the
  * vehicle's state, elastic energy from the cables' and posts' current forces, and dissipations
  * accumulated where they happen (cable.c, post.c, vehicle.c, barrier.c, step.c). The balance error
- * compares their sum with its value at t = 0, as a fraction of the initial kinetic energy. */
+ * compares their sum with its value at t = 0, as a fraction of the energy scale (cs_energy_scale: the
+ * initial kinetic energy, or m g h for a vehicle that starts at rest). */
 #include "internal.h"
 
 #include <math.h>

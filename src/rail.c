@@ -5,9 +5,10 @@
  * Segment k of a rail joins posts k and k+1 at the rail's height z: the points a = base_k + (z + d_k)
  * axis(alpha_k) and b likewise. It is an axial bar of rest length L0 (the posts' spacing as built): its
  * force N = (EA / L0) (|b - a| - L0 - delta_p), N > 0 in tension, is capped at A Fy in tension and at the
- * Euler load pi^2 E I / L0^2 (pinned at the posts, its weak axis) in compression, where it then holds
- * that force as it stretches or shortens further (delta_p its plastic, or buckled, change of length,
- * radial return at each commit, the work booked as the rails' plastic work). Its pull on post k, N u (u
+ * Euler load pi^2 E I / L^2 (pinned at the posts, its weak axis; L the barrier's shortest spacing, model.c)
+ * in compression, where it then holds that force as it stretches or shortens further (delta_p its
+ * plastic, or buckled, change of length, radial return at each commit, the work booked as the rails'
+ * plastic work). Its pull on post k, N u (u
  * the unit vector from a to b), and -N u on post k+1, enter their moment balances through each post's
  * axis Jacobian: Q = (z + d) J^T F, as a cable's pull does (post.c). A segment acts while both its posts
  * stand and neither has been struck by the face; a post's failure ends it, its stored energy released.

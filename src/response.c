@@ -9,7 +9,8 @@
 #define CS_STANDARD_GRAVITY 9.80665 /* m/s^2 per g, whatever the scenario's gravity */
 
 /* 50-ms average of the deceleration along the initial travel direction: the change of forward speed
- * over the window, (u(t - W) - u(t)) / W, from a ring of the last window_steps + 1 speeds. */
+ * over the window, (u(t - W) - u(t)) / W, from a ring of the last window_steps + 1 speeds (the first
+ * of them the speed at t = 0, put there at reset). */
 static void update_decel(const cs_model *model, cs_state *s, double u) {
     int n = model->window_steps + 1;
     s->speed_ring[s->step % n] = u;

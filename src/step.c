@@ -112,7 +112,8 @@ void cs_state_reset(const cs_model *model, cs_state *s) {
     s->e_cable_plastic = s->e_post_plastic = s->e_post_damping = s->e_soil = s->e_crush = s->e_friction =
         s->e_released = s->e_tyre = 0.0;
     s->event_count = 0;
-    s->ring_fill = 0;
+    s->speed_ring[0] = v3_dot(s->vel, model->dir); /* the speed the run starts with, at step 0 */
+    s->ring_fill = 1;
     s->decel_50ms_g = 0.0;
     s->work->solver_residual = 0.0;
     memset(&s->summary, 0, sizeof s->summary);
