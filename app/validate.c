@@ -816,8 +816,8 @@ static void write_readings(FILE *md, FILE *csv, const suite *s) {
     fprintf(
         md,
         "\nThe band over the readings (the penetration of a run that got through is where it was when the "
-        "run "
-        "ended, less than the real one):\n\n| test | runs | broke through | max 50-ms decel | penetration | "
+        "run ended, less than the real one):\n\n| test | runs | broke through | max 50-ms decel | "
+        "penetration | "
         "exit speed | cable 1 broke | cable 2 broke |\n|---|---|---|---|---|---|---|---|\n");
     for (int k = 0; k < CRASH; k++) {
         fprintf(md, "| %s | %d | %d |", crash_names[k], all[k].runs, all[k].through);

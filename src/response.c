@@ -43,7 +43,7 @@ static double face_penetration(const cs_model *model, const cs_state *s) {
  * unhindered). */
 static void close_decel_window(const cs_model *model, cs_state *s) {
     int n = model->window_steps + 1;
-    if (s->ring_fill == 0 || s->ring_fill >= n) return;
+    if (s->ring_fill >= n) return; /* with the speed at t = 0 alone, first == last: 0 g */
     double first = s->speed_ring[(s->step + 1 - s->ring_fill) % n], last = s->speed_ring[s->step % n];
     double w = model->window_steps * model->scenario.dt, g = (first - last) / w / CS_STANDARD_GRAVITY;
     if (g > s->summary.max_50ms_decel_g) {

@@ -79,8 +79,10 @@ static void tyre_force(const cs_model *model, const cs_state *s, int w, double *
     v3_cross(v, wv, r);
     v3_add(v, v, s->vel);
     double n = vm->tyre_k[w] * comp - vm->tyre_c[w] * v[2];
-    if (n <= 0.0) { /* the damper holds the extending tyre off the ground: the spring's energy, which the */
-        *power += vm->tyre_k[w] * comp * v[2]; /* potential counts, goes to the damper at k comp v_z */
+    if (n <= 0.0) {
+        /* the damper holds the extending tyre off the ground: the spring's energy, which the potential
+         * counts, goes to the damper at k comp v_z */
+        *power += vm->tyre_k[w] * comp * v[2];
         return;
     }
     double fwd[3], body_x[3] = {1.0, 0.0, 0.0};

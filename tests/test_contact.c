@@ -114,8 +114,15 @@ static void events_in_order_and_once(void **state) {
             e->type == CS_EVENT_STOPPED || e->type == CS_EVENT_BREAKTHROUGH || e->type == CS_EVENT_REDIRECTED;
         end += ends;
         if (ends) assert_int_equal(i, n - 1);
+        if (e->type == CS_EVENT_POST_ROTATION_LIMIT) /* at or past 45 degrees, in rad */
+            assert_true(e->value >= 0.785 && e->value < 1.6);
     }
     assert_int_equal(end, 1);
+    for (int k = 0; k < CS_EVENT_TYPE_COUNT; k++) /* every type's value has its SI unit */
+        assert_true(cs_event_value_unit((cs_event_type)k)[0] != '\0');
+    assert_string_equal(cs_event_value_unit(CS_EVENT_POST_ROTATION_LIMIT), "rad");
+    assert_string_equal(cs_event_value_unit(CS_EVENT_POST_HINGE), "N m");
+    assert_string_equal(cs_event_value_unit(CS_EVENT_BREAKTHROUGH), "m/s");
     cs_state_free(s);
     cs_model_free(m);
 }

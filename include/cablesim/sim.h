@@ -265,8 +265,9 @@ typedef struct cs_energy {
     double soil;              /**< plastic work of footings and anchors moving through the soil */
     double crush;             /**< the vehicle's front crush */
     double friction;          /**< tyres, cable sliding over supports */
-    double released;          /**< stored energy lost at sudden failures (massless cable and posts), less
-                                   the sag reference a corner's take-up of a hanging rope raises */
+    double released;          /**< stored energy lost at sudden failures (massless cable and posts), and
+                                   the change of the sag's reference when a corner takes up or lets go a
+                                   hanging rope */
     double initial_total;     /**< the sum at t = 0 */
     double initial_kinetic;   /**< the vehicle's kinetic energy at t = 0 */
     double balance_error;     /**< (sum now - initial_total) over initial_kinetic */

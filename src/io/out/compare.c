@@ -115,11 +115,13 @@ static double value(const cs_trace *tr, int k) {
     return *(const double *)((const char *)tr + params[k].offset);
 }
 
-/* The difference from the reference in per cent, NAN where either is not given or the reference is 0. */
+/* Whether parameter k of tr is a lower bound: the penetration of a run that got through. */
 static int beyond(const cs_trace *tr, int k) {
     return tr->penetration_beyond && params[k].offset == offsetof(cs_trace, max_penetration);
 }
 
+/* The difference from the reference in per cent, NAN where either is not given, is a lower bound, or
+ * the reference is 0. */
 static double difference(const cs_trace *tr, const cs_trace *ref, int k) {
     if (beyond(tr, k) || beyond(ref, k)) return NAN; /* a lower bound is not compared */
     double x = value(tr, k), r = value(ref, k);

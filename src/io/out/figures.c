@@ -373,6 +373,8 @@ static const struct {
     {"vehicle kinetic", offsetof(cs_energy, vehicle_kinetic), {0.35, 0.60, 0.90}},
 };
 enum { LEDGER_TERMS = sizeof ledger / sizeof ledger[0] };
+_Static_assert((int)LEDGER_TERMS == (int)CS_ENERGY_TERMS,
+               "the energy figure stacks every term of the ledger");
 
 static double ledger_term(const cs_energy *e, int k) {
     double v;
