@@ -6,10 +6,16 @@
  * the soil's dynamic factor for the footing's width: footing.c), then the footing slides through the soil
  * at P, doing plastic work booked as soil. k reaches P over 2% of the footing's depth, the movement that
  * mobilises a medium-dense sand's passive resistance (Clough and Duncan 1991: 1% dense, 4% loose). The
- * footing and what moves with it have mass M, integrated by backward Euler as a post's swing (post.c),
- * so that its residual
- *   r = F_ropes - R(u) - M (u - u_c - h v_c) / h^2
- * stays monotone where its resistance is flat. It pulls out, releasing every rope tied to it, when it has
+ * footing and what moves with it have mass M, integrated over the time h since the last commit by the
+ * trapezoidal rule (Newmark's average acceleration), u = u_c + h v_c + h^2 (a_c + a) / 4 with M a the
+ * net force F_ropes - R(u), so that its residual
+ *   r = F_ropes - R(u) - 4 M (u - u_c - h v_c) / h^2 + F_c      (F_c = M a_c, kept at the last commit)
+ * is second order in h and takes no energy out of the motion. The dead-man's modes (its mass on the
+ * soil and the ropes' end spans) are slow, omega h <= 0.11 at 0.5 ms for the APS anchors, where backward
+ * Euler would damp 1 / (1 + omega^2 h^2) of their energy away each step; a post's modes with the ropes
+ * reach omega h 0.5-0.9, and the posts keep backward Euler for that (post.c; docs/theory.md). The
+ * inertial 4 M / h^2 keeps the residual monotone where the resistance is flat. It pulls out, releasing
+ * every rope tied to it, when it has
  * travelled as far as its geometry allows: a footing that turns about the pivot 2/3 of its depth down
  * (Eq. 21's failure mode) moves its top by (2/3) D sin(theta) at its rotation limit theta; or when the
  * ropes' uplift reaches its pullout capacity (its weight plus its skin friction unless given). A rigid
@@ -111,9 +117,9 @@ void cs_anchor_residual(const cs_model *model, const cs_state *s, int a, const d
     resistance(am, as, as->u, q);
     r[0] = f[0] - q[0], r[1] = f[1] - q[1];
     if (s->h > 0.0 && s->h < HUGE_VAL) {
-        double k = am->mass / (s->h * s->h);
-        r[0] -= k * (as->u[0] - as->u_commit[0] - s->h * as->rate[0]);
-        r[1] -= k * (as->u[1] - as->u_commit[1] - s->h * as->rate[1]);
+        double k = 4.0 * am->mass / (s->h * s->h);
+        r[0] -= k * (as->u[0] - as->u_commit[0] - s->h * as->rate[0]) - as->net[0];
+        r[1] -= k * (as->u[1] - as->u_commit[1] - s->h * as->rate[1]) - as->net[1];
     }
 }
 
@@ -148,7 +154,7 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
     } else {
         k[0] = k[3] = -am->stiffness, k[1] = k[2] = 0.0;
     }
-    double inertia = am->mass / (s->h * s->h);
+    double inertia = 4.0 * am->mass / (s->h * s->h);
     k[0] -= inertia, k[3] -= inertia;
     for (int i = 0; i < 2; i++)
         for (int j = 0; j < 2; j++)
@@ -169,15 +175,14 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
 
 const cs_row_kind cs_anchor_rows = {2, residual, jacobian};
 
-/* End of step: the slide's rate and what its implicit integration dissipates, the plastic slide (radial
- * return) and its work, the resistance, and the ropes' uplift.
- * Backward Euler gives M (v - v_c) = h F(u), F the net force (the ropes' pull less the soil's resistance)
- * at the step's end, so the kinetic energy changes by F(u) du - M |v - v_c|^2 / 2, where the forces'
- * energies (the ropes' and the soil's, state functions) change by about -(F_c + F(u)) du / 2 over the
- * step. The step thus takes M |v - v_c|^2 / 2 + (F_c - F(u)) du / 2 out of the motion: for a spring of
- * stiffness k, M |dv|^2 / 2 + k |du|^2 / 2. Both parts are booked (as damping), as the work of F by the
- * trapezoid rule less the kinetic energy's change: on a dead-man tied to stiff ropes the second is as
- * large as the first (docs/theory.md, "Anchorage in the soil"). */
+/* End of step: the slide's rate and what its integration dissipates, the plastic slide (radial return) and
+ * its work, the resistance, and the ropes' uplift.
+ * The trapezoidal rule gives v = 2 du / h - v_c and M (v - v_c) = h (F_c + F(u)) / 2, F the net force
+ * (the ropes' pull less the soil's resistance), so the kinetic energy changes by (F_c + F(u)) . du / 2,
+ * the trapezoid rule's work of F, and the forces' energies (the ropes' and the soil's, state functions
+ * and the soil's plastic work) change by about as much the other way. What the step takes out of the
+ * motion, the trapezoid's work of F less the kinetic energy's change, is booked as damping: zero but for
+ * the solve's residual (tests/test_anchor.c). */
 void cs_anchor_commit(const cs_model *model, cs_state *s) {
     for (int a = 0; a < 2; a++) {
         const cs_anchor_model *am = &model->anchors[a];
@@ -189,7 +194,7 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
         double net[2] = {f[0] - q[0], f[1] - q[1]};
         if (s->h > 0.0 && s->h < HUGE_VAL) {
             double du0 = as->u[0] - as->u_commit[0], du1 = as->u[1] - as->u_commit[1];
-            double w0 = du0 / s->h, w1 = du1 / s->h;
+            double w0 = 2.0 * du0 / s->h - as->rate[0], w1 = 2.0 * du1 / s->h - as->rate[1];
             double kinetic =
                 0.5 * am->mass * (w0 * w0 + w1 * w1 - as->rate[0] * as->rate[0] - as->rate[1] * as->rate[1]);
             s->e_post_damping += 0.5 * ((as->net[0] + net[0]) * du0 + (as->net[1] + net[1]) * du1) - kinetic;
