@@ -339,6 +339,10 @@ void cs_vehicle_corner_band(const cs_model *model, int k, double *lo, double *hi
 void cs_vehicle_start(const cs_model *model, cs_state *s); /* accelerations at t = 0 */
 void cs_vehicle_integrate(cs_state *s, double h);
 void cs_vehicle_finish(const cs_model *model, cs_state *s, double h);
+/* The barrier's push changed at an instant (a failure at the step's end) from old to s->force, s->moment:
+ * the accelerations the next step starts from take the new push. */
+void cs_vehicle_push_changed(const cs_model *model, cs_state *s, const double *old_force,
+                             const double *old_moment);
 double cs_crush_force(const cs_vehicle_def *v, double crush, double crush_max);
 double cs_crush_curve(const cs_vehicle_def *v, double crush);
 double cs_crush_permanent(const cs_vehicle_def *v, double crush_max);

@@ -139,12 +139,12 @@ void cs_state_reset(const cs_model *model, cs_state *s) {
  * barrier's topology with no work done on it: re-solve at the same vehicle pose until nothing more
  * changes, and book the stored energy that vanished (massless cable snapping, posts letting go, a
  * struck post leaving the ropes' paths) as released. */
-static double resolve_failures(const cs_model *model, cs_state *s) {
+static double resolve_failures(const cs_model *model, cs_state *s, int *changed) {
     /* what is released is the whole drop across the failures; a cable slipping off the face inside
      * the loop books its own share too (contact.c), so restart from the total before the loop */
     double before = cs_barrier_stored_energy(model, s), released = s->e_released;
-    int changed = 0;
     double worst = 0.0;
+    *changed = 0;
     for (int round = 0; round <= model->cable_count + model->post_count + 2; round++) {
         int any = 0;
         for (int c = 0; c < model->cable_count; c++)
@@ -155,13 +155,13 @@ static double resolve_failures(const cs_model *model, cs_state *s) {
         any |= cs_post_capture(model, s);
         any |= cs_contact_check_slip(model, s);
         if (!any) break;
-        changed = 1;
+        *changed = 1;
         cs_contact_drop_failed(model, s);
         cs_contact_update(model, s);
         worst = fmax(worst, cs_barrier_solve(model, s));
         cs_barrier_commit(model, s);
     }
-    if (changed) s->e_released = released + before - cs_barrier_stored_energy(model, s);
+    if (*changed) s->e_released = released + before - cs_barrier_stored_energy(model, s);
     return worst;
 }
 
@@ -202,11 +202,12 @@ static double work_on_barrier(const loaded_pose *a, const loaded_pose *b) {
  * would hold more than that by CS_LEDGER_FAILURE of the energy scale, which no step of a run may make: an
  * equilibrium on a branch the path never reached (a rope stretched to its strength with no work done on
  * it), sent back as a failed one is. Returns 1 if it committed, with the largest residual of the solves
- * it committed kept in s->work->solver_residual. */
+ * it committed kept in s->work->solver_residual, the barrier's push at the pose as committed in `end`
+ * (before any failure found there) and whether a failure then changed the barrier in *failed. */
 #define CS_PATH_TRIGGER 1e-2
 
 static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, double allowed,
-                       const loaded_pose *from) {
+                       const loaded_pose *from, loaded_pose *end, int *failed) {
     cs_contact_update(model, s);               /* 2. cables wrap onto or leave the face */
     double worst = cs_barrier_solve(model, s); /* 3. posts, sliding and crush in equilibrium */
     if (allowed < HUGE_VAL) {                  /* the work done on it here */
@@ -218,8 +219,10 @@ static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, do
         if (excess > wild) return -1;
     }
     if (worst > CS_PATH_TRIGGER && !commit_anyway) return 0;
-    cs_barrier_commit(model, s);                     /* 4. plastic flow, friction and crush work */
-    worst = fmax(worst, resolve_failures(model, s)); /* 5. breaks, failures, posts struck by the face */
+    cs_barrier_commit(model, s); /* 4. plastic flow, friction and crush work */
+    cs_barrier_force(model, s);
+    *end = pose_of(s);
+    worst = fmax(worst, resolve_failures(model, s, failed)); /* 5. breaks, failures, posts struck */
     s->work->solver_residual = fmax(s->work->solver_residual, worst);
     return 1;
 }
@@ -231,19 +234,23 @@ static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, do
  * goes on. */
 static int advance(const cs_model *model, cs_state *s, double h, int commit_anyway, double allowed,
                    const cs_state *last, double *work) {
-    loaded_pose from = pose_of(s);
+    loaded_pose from = pose_of(s), to;
     s->h += h;                  /* the posts swing over the time since the last commit */
     cs_vehicle_integrate(s, h); /* 1. half a kick and a drift */
-    int committed = follow_pose(model, s, commit_anyway, allowed, &from);
+    int failed = 0, committed = follow_pose(model, s, commit_anyway, allowed, &from, &to, &failed);
     if (committed < 0) { /* the barrier as last committed, the time since then kept */
         double since = s->h;
         cs_state_restore_barrier(model, s, last), committed = 0;
         s->h = since;
     }
-    cs_barrier_force(model, s); /* 6. the barrier's push, */
-    loaded_pose to = pose_of(s);
+    if (!committed) cs_barrier_force(model, s), to = pose_of(s); /* 6. the barrier's push */
+    v3_copy(s->force, to.force), v3_copy(s->moment, to.moment);
     *work += work_on_barrier(&from, &to);
     cs_vehicle_finish(model, s, h); /* the second half kick */
+    if (failed) {                   /* the next step starts from the push the failures left */
+        cs_barrier_force(model, s);
+        cs_vehicle_push_changed(model, s, to.force, to.moment);
+    }
     return committed;
 }
 

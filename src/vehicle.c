@@ -152,6 +152,20 @@ void cs_vehicle_finish(const cs_model *model, cs_state *s, double h) {
     kick(s, h);
 }
 
+/* The accelerations are linear in the barrier's push, and the tyres' forces and the gyroscopic term stay as
+ * they were found at the step's end. */
+void cs_vehicle_push_changed(const cs_model *model, cs_state *s, const double *old_force,
+                             const double *old_moment) {
+    const cs_vehicle_model *vm = &model->vehicle;
+    double df[3], dm[3], db[3];
+    v3_sub(df, s->force, old_force);
+    v3_sub(dm, s->moment, old_moment);
+    v3_addto(s->acc, df, 1.0 / vm->def.mass);
+    quat_unrotate(db, s->quat, dm);
+    for (int i = 0; i < 3; i++)
+        s->ang_acc[i] += vm->inv_inertia[i] * db[i];
+}
+
 double cs_vehicle_kinetic_energy(const cs_model *model, const cs_state *s) {
     const double *in = model->vehicle.def.inertia;
     double e = 0.5 * model->vehicle.def.mass * v3_dot(s->vel, s->vel);

@@ -3,6 +3,7 @@
  * a 300-post barrier whose solves converge; a run past its solve budget ends did_not_converge. */
 #include "check.h"
 #include "fixture.h"
+#include "internal.h"
 
 #include <stdlib.h>
 
@@ -37,12 +38,50 @@ static void ledger_balances_and_run_is_deterministic(void **state) {
     unsigned long long ha = run_aps3(&a), hb = run_aps3(&b);
     assert_true(ha == hb);
     assert_true(a.outcome != CS_RUNNING);
-    /* the largest imbalance over the whole run, as a fraction of the initial kinetic energy (issue 2:
-     * 1%; measured 0.87%) */
-    assert_true(fabs(a.energy_balance_error) <= 0.01);
+    /* the largest imbalance over the whole run, as a fraction of the initial kinetic energy (the run's
+     * own flag is 1%; the ledger closes to the solver's tolerance at every step, failures included) */
+    printf("largest ledger error %.2g\n", a.energy_balance_error);
+    CHECK_ABS(a.energy_balance_error, 0.0, 1e-3);
     CHECK_REL(a.initial_kinetic_energy_j, 0.5 * 15000 * LB * pow(40 * MPH, 2), 1e-12);
     assert_true(isfinite(a.max_50ms_decel_g) && isfinite(a.max_dynamic_penetration_m));
     assert_true(a.first_contact_time_s > 0.0);
+}
+
+/* A failure found at a step's end changes the barrier's push at an instant: the step's second half kick
+ * and the vehicle's work over it take the push before the failure (what acted over the step), and the
+ * next step starts from the push after it. At the step where the first posts reach their rotation limit
+ * the vehicle's loss (kinetic, potential, tyres) must equal what the barrier took in, released energy
+ * included, to the solver's tolerance: taken after the failure, the push left (F_before - F_after) . dx
+ * / 2 out of the vehicle's side, 228 J (2.1e-4 of the energy scale) at that step. */
+static void a_failure_at_a_steps_end_keeps_the_ledger(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    cs_state *s = cs_state_create(m, &err);
+    double barrier0 = cs_barrier_stored_energy(m, s) + s->e_released;
+    double vehicle0 = cs_vehicle_kinetic_energy(m, s) + cs_vehicle_potential_energy(m, s) + s->e_tyre;
+    int failures = 0;
+    while (failures == 0 && s->t < 0.2) {
+        assert_int_equal(cs_step(m, s, &err), CS_OK);
+        double barrier = cs_barrier_stored_energy(m, s) + s->e_released;
+        double vehicle = cs_vehicle_kinetic_energy(m, s) + cs_vehicle_potential_energy(m, s) + s->e_tyre;
+        double gap = (vehicle0 - vehicle) - (barrier - barrier0), scale = cs_energy_scale(m, s);
+        for (int k = 0; k < s->event_count; k++)
+            failures += s->events[k].type == CS_EVENT_POST_ROTATION_LIMIT;
+        if (failures) {
+            printf("t = %.4f s: %d posts at their rotation limit, released %.1f kJ, the step's gap %.3g J "
+                   "(%.2g of the energy scale)\n",
+                   s->t, failures, 1e-3 * s->e_released, gap, gap / scale);
+            CHECK_ABS(gap / scale, 0.0, 1e-5);
+        }
+        barrier0 = barrier, vehicle0 = vehicle;
+    }
+    assert_true(failures > 0);
+    cs_state_free(s);
+    cs_model_free(m);
 }
 
 /* A time step ten times finer changes the response parameters by under 2% (issue 2): the run is
@@ -108,6 +147,7 @@ static void a_spent_solve_budget_ends_the_run(void **state) {
 
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(ledger_balances_and_run_is_deterministic),
+                                       cmocka_unit_test(a_failure_at_a_steps_end_keeps_the_ledger),
                                        cmocka_unit_test(refining_the_time_step_changes_little),
                                        cmocka_unit_test(long_barrier_solves_converge),
                                        cmocka_unit_test(a_spent_solve_budget_ends_the_run)};
