@@ -7,15 +7,20 @@
  * at P, doing plastic work booked as soil. k reaches P over 2% of the footing's depth, the movement that
  * mobilises a medium-dense sand's passive resistance (Clough and Duncan 1991: 1% dense, 4% loose). The
  * footing and what moves with it have mass M, integrated over the time h since the last commit by the
- * trapezoidal rule (Newmark's average acceleration), u = u_c + h v_c + h^2 (a_c + a) / 4 with M a the
- * net force F_ropes - R(u), so that its residual
- *   r = F_ropes - R(u) - 4 M (u - u_c - h v_c) / h^2 + F_c      (F_c = M a_c, kept at the last commit)
- * is second order in h and takes no energy out of the motion. The dead-man's modes (its mass on the
- * soil and the ropes' end spans) are slow, omega h <= 0.11 at 0.5 ms for the APS anchors, where backward
- * Euler would damp 1 / (1 + omega^2 h^2) of their energy away each step; a post's modes with the ropes
- * reach omega h 0.5-0.9, and the posts keep backward Euler for that (post.c; docs/theory.md). The
- * inertial 4 M / h^2 keeps the residual monotone where the resistance is flat. It pulls out, releasing
- * every rope tied to it, when it has
+ * HHT-alpha method (Hilber, Hughes and Taylor 1977): with F = F_ropes - R(u) the net force,
+ *   M a = (1 + alpha) F(u) - alpha F_c,
+ *   u = u_c + h v_c + h^2 ((1/2 - beta) a_c + beta a),   v = v_c + h ((1 - gamma) a_c + gamma a),
+ * beta = (1 - alpha)^2 / 4, gamma = 1/2 - alpha, so that its residual
+ *   r = F(u) - (M a(u) + alpha F_c) / (1 + alpha)
+ * is second order in h. At alpha = 0 it is the trapezoidal rule, which takes no energy from a linear
+ * motion; alpha = -0.1 keeps that for the dead-man's own modes, which are slow (its mass on the soil and
+ * the ropes' end spans: omega h <= 0.11 at 0.5 ms for the APS anchors, 3e-6 of their energy a step),
+ * and damps modes the step does not resolve (1.2% a step at omega h = 1, 14% at 3: a light dead-man on
+ * short stiff spans, rung by a failure). Backward Euler would take omega^2 h^2 / (1 + omega^2 h^2) of
+ * every mode's energy each step (1.2% for APS3's); a post's modes with the ropes reach omega h 0.5-0.9,
+ * and the posts keep it for that (post.c; docs/theory.md). The inertial M / (beta h^2 (1 + alpha)) keeps
+ * the residual monotone where the resistance is flat. It pulls out, releasing every rope tied to it, when
+ * it has
  * travelled as far as its geometry allows: a footing that turns about the pivot 2/3 of its depth down
  * (Eq. 21's failure mode) moves its top by (2/3) D sin(theta) at its rotation limit theta; or when the
  * ropes' uplift reaches its pullout capacity (its weight plus its skin friction unless given). A rigid
@@ -27,6 +32,15 @@
 
 #define CS_PI 3.14159265358979323846
 #define CS_ANCHOR_YIELD_STRAIN 0.02 /* movement to mobilise the passive resistance, over the depth */
+#define CS_HHT_ALPHA (-0.1)
+#define CS_HHT_BETA (0.25 * (1.0 - CS_HHT_ALPHA) * (1.0 - CS_HHT_ALPHA))
+#define CS_HHT_GAMMA (0.5 - CS_HHT_ALPHA)
+
+/* The acceleration the step from the last commit to u over h gives (the HHT-alpha update). */
+static double acceleration_to(const cs_anchor_state *as, int k, double u, double h) {
+    return (u - as->u_commit[k] - h * as->rate[k]) / (CS_HHT_BETA * h * h) -
+           (0.5 / CS_HHT_BETA - 1.0) * as->acc[k];
+}
 
 void cs_anchor_derive(const cs_anchor_def *d, double gravity, cs_anchor_model *am) {
     const cs_footing_def *f = &d->footing;
@@ -116,11 +130,10 @@ void cs_anchor_residual(const cs_model *model, const cs_state *s, int a, const d
     ropes_pull(model, s, a, chords, f);
     resistance(am, as, as->u, q);
     r[0] = f[0] - q[0], r[1] = f[1] - q[1];
-    if (s->h > 0.0 && s->h < HUGE_VAL) {
-        double k = 4.0 * am->mass / (s->h * s->h);
-        r[0] -= k * (as->u[0] - as->u_commit[0] - s->h * as->rate[0]) - as->net[0];
-        r[1] -= k * (as->u[1] - as->u_commit[1] - s->h * as->rate[1]) - as->net[1];
-    }
+    if (s->h > 0.0 && s->h < HUGE_VAL)
+        for (int k = 0; k < 2; k++)
+            r[k] -= (am->mass * acceleration_to(as, k, as->u[k], s->h) + CS_HHT_ALPHA * as->net[k]) /
+                    (1.0 + CS_HHT_ALPHA);
 }
 
 /* The residual's unit: the strongest rope's strength, as a support's. */
@@ -139,7 +152,8 @@ static void residual(const cs_model *model, const cs_state *s, const cs_rows *ro
 }
 
 /* Rows a, a+1: the ropes' pull through their end spans (chained to the nodes), less the resistance's slope
- * (k, or on the cap its radial projection's) and the inertial M / h^2 on the anchor's own columns. */
+ * (k, or on the cap its radial projection's) and the inertial M / (beta h^2 (1 + alpha)) on the anchor's
+ * own columns. */
 static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row,
                      const cs_slot *u) {
     int a = u->a;
@@ -154,7 +168,7 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
     } else {
         k[0] = k[3] = -am->stiffness, k[1] = k[2] = 0.0;
     }
-    double inertia = 4.0 * am->mass / (s->h * s->h);
+    double inertia = am->mass / (CS_HHT_BETA * s->h * s->h * (1.0 + CS_HHT_ALPHA));
     k[0] -= inertia, k[3] -= inertia;
     for (int i = 0; i < 2; i++)
         for (int j = 0; j < 2; j++)
@@ -175,14 +189,16 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
 
 const cs_row_kind cs_anchor_rows = {2, residual, jacobian};
 
-/* End of step: the slide's rate and what its integration dissipates, the plastic slide (radial return) and
- * its work, the resistance, and the ropes' uplift.
- * The trapezoidal rule gives v = 2 du / h - v_c and M (v - v_c) = h (F_c + F(u)) / 2, F the net force
- * (the ropes' pull less the soil's resistance), so the kinetic energy changes by (F_c + F(u)) . du / 2,
- * the trapezoid rule's work of F, and the forces' energies (the ropes' and the soil's, state functions
- * and the soil's plastic work) change by about as much the other way. What the step takes out of the
- * motion, the trapezoid's work of F less the kinetic energy's change, is booked as damping: zero but for
- * the solve's residual (tests/test_anchor.c). */
+/* End of step: the slide's rate, acceleration and what its integration dissipates, the plastic slide
+ * (radial return) and its work, the resistance, and the ropes' uplift.
+ * Over the step the forces' energies (the ropes' and the soil's, state functions and the soil's plastic
+ * work) change by about -(F_c + F(u)) . du / 2, F the net force (the ropes' pull less the soil's
+ * resistance); what the step takes out of the motion, that trapezoid rule's work of F less the kinetic
+ * energy's change, is booked as damping: the HHT-alpha method's dissipation (none at alpha = 0, where
+ * the kinetic energy changes by exactly that work) and the solve's residual. An anchor no rope pulls
+ * any more (the last let go) is out of the solve: the soil stops it within the step, and its kinetic
+ * energy goes to the soil. A re-solve at an instant (h = 0, after a failure) keeps its rate and starts
+ * its acceleration again from the net force there, as at the start of a motion. */
 void cs_anchor_commit(const cs_model *model, cs_state *s) {
     for (int a = 0; a < 2; a++) {
         const cs_anchor_model *am = &model->anchors[a];
@@ -192,16 +208,23 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
         ropes_pull(model, s, a, NULL, f);
         resistance(am, as, as->u, q);
         double net[2] = {f[0] - q[0], f[1] - q[1]};
-        if (s->h > 0.0 && s->h < HUGE_VAL) {
-            double du0 = as->u[0] - as->u_commit[0], du1 = as->u[1] - as->u_commit[1];
-            double w0 = 2.0 * du0 / s->h - as->rate[0], w1 = 2.0 * du1 / s->h - as->rate[1];
-            double kinetic =
-                0.5 * am->mass * (w0 * w0 + w1 * w1 - as->rate[0] * as->rate[0] - as->rate[1] * as->rate[1]);
-            s->e_post_damping += 0.5 * ((as->net[0] + net[0]) * du0 + (as->net[1] + net[1]) * du1) - kinetic;
-            as->rate[0] = w0, as->rate[1] = w1;
-        } else if (s->h > 0.0) { /* h infinite: settled at rest; h = 0, a re-solve at an instant: it keeps
-                                  * the rate it had, as a post does */
-            as->rate[0] = as->rate[1] = 0.0;
+        double kinetic_before = 0.5 * am->mass * (as->rate[0] * as->rate[0] + as->rate[1] * as->rate[1]);
+        if (s->h > 0.0 && s->h < HUGE_VAL && !cs_anchor_active(model, s, a)) {
+            s->e_soil += kinetic_before; /* no rope pulls it: the soil stops it */
+            as->rate[0] = as->rate[1] = as->acc[0] = as->acc[1] = 0.0;
+        } else if (s->h > 0.0 && s->h < HUGE_VAL) {
+            double work = 0.0;
+            for (int k = 0; k < 2; k++) {
+                double du = as->u[k] - as->u_commit[k], acc = acceleration_to(as, k, as->u[k], s->h);
+                work += 0.5 * (as->net[k] + net[k]) * du;
+                as->rate[k] += s->h * ((1.0 - CS_HHT_GAMMA) * as->acc[k] + CS_HHT_GAMMA * acc);
+                as->acc[k] = acc;
+            }
+            double kinetic = 0.5 * am->mass * (as->rate[0] * as->rate[0] + as->rate[1] * as->rate[1]);
+            s->e_post_damping += work - (kinetic - kinetic_before);
+        } else { /* h infinite: settled at rest; h = 0: it keeps the rate it had, as a post does */
+            if (s->h > 0.0) as->rate[0] = as->rate[1] = 0.0;
+            as->acc[0] = net[0] / am->mass, as->acc[1] = net[1] / am->mass;
         }
         as->net[0] = net[0], as->net[1] = net[1];
         as->u_commit[0] = as->u[0], as->u_commit[1] = as->u[1];

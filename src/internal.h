@@ -192,6 +192,7 @@ struct cs_state {
         double plastic[2];  /* its plastic part (committed), m */
         double u_commit[2]; /* at the last commit, m */
         double rate[2];     /* its rate at the last commit, m/s */
+        double acc[2];      /* its acceleration at the last commit, m/s^2 */
         double force[2];    /* the soil's resistance at the last commit, N */
         double net[2];      /* the ropes' pull less that resistance at the last commit, N */
         double uplift;      /* the ropes' upward pull at the last commit, N */

@@ -75,8 +75,8 @@ static void random_designs_run_clean(void **state) {
  * were booked from the wrong place (-3.0%, -3.6%, -4.4% and the 5% stop) until a corner taken up again
  * went on from where the rope was on it (docs/theory.md, Contact); 4824, 5358, 12245 and 20451, small cars
  * struck beside an anchor whose dead-man went on ringing between its soil and the ropes, part of what
- * backward Euler damped unbooked (-2.3% to -4.7%); the dead-men move by the trapezoidal rule now, which
- * takes nothing from the ringing (docs/theory.md, Anchorage in the soil); 6169, 7624 and 14314, cars sliding along a rope that runs nearly straight past a
+ * backward Euler damped unbooked (-2.3% to -4.7%); the dead-men move by HHT-alpha, which keeps such a
+ * slow ringing and books what it takes (docs/theory.md, Anchorage in the soil); 6169, 7624 and 14314, cars sliding along a rope that runs nearly straight past a
  * corner of the body, where the rounded friction switch let the tension difference take either sign and
  * its absolute value booked friction no tension paid for (+2.4% to +3.7%) until it was booked with its
  * sign (docs/theory.md, Capstan friction); 13527 and 90615, small cars whose front corner took up a
