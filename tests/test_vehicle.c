@@ -208,6 +208,37 @@ static void turn_between_poses_is_the_rotation_vector(void **state) {
     }
 }
 
+/* A push that changes at an instant (a failure at a step's end) changes the accelerations as they would be
+ * found afresh with the new push: the same linear and angular parts (the moment taken into the body frame,
+ * times the inverse inertia), the tyres and the gyroscopic term as they were. The body is pitched, rolled
+ * and turning, so that each axis of the moment counts. */
+static void a_changed_push_changes_the_accelerations_as_found_afresh(void **state) {
+    (void)state;
+    fixture fx;
+    open_road(&fx);
+    cs_model *m = model_for(&fx);
+    cs_state *s = cs_state_create(m, NULL);
+    double w[3] = {0.4, -0.3, 0.7};
+    quat_integrate(s->quat, w, 0.5); /* pitched, rolled and yawed by a few tenths of a radian */
+    v3_set(s->omega, 0.2, 0.5, -0.3);
+    v3_set(s->force, 1.0e4, -2.0e4, 3.0e3);
+    v3_set(s->moment, 2.0e3, 5.0e3, -4.0e3);
+    cs_vehicle_start(m, s);
+    double old_force[3], old_moment[3], acc[3], ang[3];
+    v3_copy(old_force, s->force), v3_copy(old_moment, s->moment);
+    v3_set(s->force, -3.0e4, 1.0e4, 8.0e3);
+    v3_set(s->moment, -6.0e3, 1.0e3, 7.0e3);
+    cs_vehicle_push_changed(m, s, old_force, old_moment);
+    v3_copy(acc, s->acc), v3_copy(ang, s->ang_acc);
+    cs_vehicle_start(m, s); /* afresh */
+    for (int i = 0; i < 3; i++) {
+        CHECK_ABS(acc[i], s->acc[i], 1e-12 * (1.0 + fabs(s->acc[i])));
+        CHECK_ABS(ang[i], s->ang_acc[i], 1e-12 * (1.0 + fabs(s->ang_acc[i])));
+    }
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(rolling_freely_keeps_its_speed),
@@ -216,6 +247,7 @@ int main(void) {
         cmocka_unit_test(a_tyre_held_off_by_its_damper_keeps_the_ledger),
         cmocka_unit_test(undamped_bounce_converges_at_second_order),
         cmocka_unit_test(centred_head_on_impact_makes_no_yaw),
+        cmocka_unit_test(a_changed_push_changes_the_accelerations_as_found_afresh),
         cmocka_unit_test(turn_between_poses_is_the_rotation_vector),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
