@@ -129,6 +129,33 @@ static void truck_pulls_the_dead_men_out(void **state) {
     cs_model_free(m);
 }
 
+/* A dead-man (APS3's 3 x 5 ft, or of the mass given) on one weightless rope to a rigid anchor, the vehicle
+ * away, let go from `kick` off its balance: held there at an instant (h = 0), the net force it starts
+ * from. */
+static cs_state *kicked_dead_man(double mass, cs_model **m, double *balance, double *kick) {
+    fixture fx;
+    fixture_aps3(&fx);
+    dead_men(&fx, 3.0, 5.0);
+    fx.barrier.start_anchor.mass = mass;
+    fx.barrier.end_anchor.footing.diameter = 0.0; /* rigid */
+    fx.barrier.cable_count = 1, fx.barrier.post_count = 0, fx.barrier.rail_count = 0;
+    fx.cables[0].rope.mass_per_length = 0.0;
+    fx.scenario.start_gap = 1000.0; /* the vehicle stays away */
+    cs_error err;
+    *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    if (!*m) fail_msg("%s", err.message);
+    cs_state *s = cs_state_create(*m, &err);
+    assert_non_null(s);
+    const cs_anchor_model *am = &(*m)->anchors[0];
+    *kick = 0.2 * am->capacity / am->stiffness; /* well inside the soil's elastic range */
+    *balance = s->anchors[0].u[0];
+    s->anchors[0].u[0] = s->anchors[0].u_commit[0] = *balance + *kick;
+    cs_anchor_place_nodes(*m, s, 0);
+    cs_cable_update_tensions(&(*m)->cables[0], &s->cables[0], NULL);
+    cs_anchor_commit(*m, s);
+    return s;
+}
+
 /* A dead-man let go from off its balance rings between its soil and a weightless rope to a rigid anchor:
  * one degree of freedom, M u'' = -k u about the balance, k = k_soil + EA / L. The HHT-alpha recursion of
  * anchor.c for that oscillator, from u0 at rest with M a0 = -k u0 (the net force it is held at), is
@@ -139,27 +166,12 @@ static void truck_pulls_the_dead_men_out(void **state) {
  * the motion is booked as damping (the soil's, the rope's and the dead-man's energies and the damping
  * sum to what they were after the kick). mass 0: the dead-man's concrete. */
 static double ring_a_dead_man(double mass, int steps, double *wh_out) {
-    fixture fx;
-    fixture_aps3(&fx);
-    dead_men(&fx, 3.0, 5.0);
-    fx.barrier.start_anchor.mass = mass;
-    fx.barrier.end_anchor.footing.diameter = 0.0; /* rigid */
-    fx.barrier.cable_count = 1, fx.barrier.post_count = 0, fx.barrier.rail_count = 0;
-    fx.cables[0].rope.mass_per_length = 0.0;
-    fx.scenario.start_gap = 1000.0; /* the vehicle stays away */
+    cs_model *m;
+    double balance, kick;
+    cs_state *s = kicked_dead_man(mass, &m, &balance, &kick);
     cs_error err;
-    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
-    if (!m) fail_msg("%s", err.message);
-    cs_state *s = cs_state_create(m, &err);
-    assert_non_null(s);
     const cs_anchor_model *am = &m->anchors[0];
     double l = m->anchors[1].x - am->x, k = am->stiffness + m->cables[0].rope.ea / l, h = m->scenario.dt;
-    double kick = 0.2 * am->capacity / am->stiffness; /* well inside the soil's elastic range */
-    double balance = s->anchors[0].u[0];
-    s->anchors[0].u[0] = s->anchors[0].u_commit[0] = balance + kick;
-    cs_anchor_place_nodes(m, s, 0);
-    cs_cable_update_tensions(&m->cables[0], &s->cables[0], NULL);
-    cs_anchor_commit(m, s); /* held there at an instant (h = 0): the net force it starts from */
     cs_energy_update(m, s);
     const cs_energy *e = &s->energy;
     double held0 = e->anchor_elastic + e->anchor_kinetic + e->cable_elastic;
@@ -207,22 +219,11 @@ static void a_ringing_dead_man_keeps_its_energy(void **state) {
  * step to step by an update with no movement). */
 static void a_dead_man_its_ropes_let_go_stops_in_the_soil(void **state) {
     (void)state;
-    fixture fx;
-    fixture_aps3(&fx);
-    dead_men(&fx, 3.0, 5.0);
-    fx.barrier.end_anchor.footing.diameter = 0.0; /* rigid */
-    fx.barrier.cable_count = 1, fx.barrier.post_count = 0, fx.barrier.rail_count = 0;
-    fx.scenario.start_gap = 1000.0; /* the vehicle stays away */
+    cs_model *m;
+    double balance, kick;
+    cs_state *s = kicked_dead_man(0.0, &m, &balance, &kick);
     cs_error err;
-    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
-    if (!m) fail_msg("%s", err.message);
-    cs_state *s = cs_state_create(m, &err);
-    assert_non_null(s);
     const cs_anchor_model *am = &m->anchors[0];
-    s->anchors[0].u[0] = s->anchors[0].u_commit[0] = s->anchors[0].u[0] + 0.2 * am->capacity / am->stiffness;
-    cs_anchor_place_nodes(m, s, 0);
-    cs_cable_update_tensions(&m->cables[0], &s->cables[0], NULL);
-    cs_anchor_commit(m, s);
     for (int n = 0; n < 5; n++) /* under way */
         assert_int_equal(cs_step(m, s, &err), CS_OK);
     double v = s->anchors[0].rate[0], kinetic = 0.5 * am->mass * v * v, soil = s->e_soil;

@@ -7,11 +7,17 @@
 
 #include <stdlib.h>
 
-/* Run a fixture to its end (it must end without an error): its summary, and the hash of its final state. */
-static unsigned long long run_fixture(const fixture *fx, cs_summary *out) {
+static cs_model *model_of(const fixture *fx) {
     cs_error err;
     cs_model *m = cs_model_create(&fx->barrier, &fx->vehicle, &fx->scenario, &err);
     if (!m) fail_msg("%s", err.message);
+    return m;
+}
+
+/* Run a fixture to its end (it must end without an error): its summary, and the hash of its final state. */
+static unsigned long long run_fixture(const fixture *fx, cs_summary *out) {
+    cs_error err;
+    cs_model *m = model_of(fx);
     cs_state *s = cs_state_create(m, &err);
     assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
     cs_state_summary(s, out);
@@ -58,8 +64,7 @@ static void a_failure_at_a_steps_end_keeps_the_ledger(void **state) {
     fixture fx;
     fixture_aps3(&fx);
     cs_error err;
-    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
-    if (!m) fail_msg("%s", err.message);
+    cs_model *m = model_of(&fx);
     cs_state *s = cs_state_create(m, &err);
     double barrier0 = cs_barrier_stored_energy(m, s) + s->e_released;
     double vehicle0 = cs_vehicle_kinetic_energy(m, s) + cs_vehicle_potential_energy(m, s) + s->e_tyre;
