@@ -36,6 +36,11 @@
 #define CS_HHT_BETA (0.25 * (1.0 - CS_HHT_ALPHA) * (1.0 - CS_HHT_ALPHA))
 #define CS_HHT_GAMMA (0.5 - CS_HHT_ALPHA)
 
+/* The kinetic energy of its slide at the rate of the last commit. */
+static double kinetic_energy(const cs_anchor_model *am, const cs_anchor_state *as) {
+    return 0.5 * am->mass * (as->rate[0] * as->rate[0] + as->rate[1] * as->rate[1]);
+}
+
 /* The acceleration the step from the last commit to u over h gives (the HHT-alpha update). */
 static double acceleration_to(const cs_anchor_state *as, int k, double u, double h) {
     return (u - as->u_commit[k] - h * as->rate[k]) / (CS_HHT_BETA * h * h) -
@@ -208,7 +213,7 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
         ropes_pull(model, s, a, NULL, f);
         resistance(am, as, as->u, q);
         double net[2] = {f[0] - q[0], f[1] - q[1]};
-        double kinetic_before = 0.5 * am->mass * (as->rate[0] * as->rate[0] + as->rate[1] * as->rate[1]);
+        double kinetic_before = kinetic_energy(am, as);
         if (s->h > 0.0 && s->h < HUGE_VAL && !cs_anchor_active(model, s, a)) {
             s->e_soil += kinetic_before; /* no rope pulls it: the soil stops it */
             as->rate[0] = as->rate[1] = as->acc[0] = as->acc[1] = 0.0;
@@ -220,8 +225,7 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
                 as->rate[k] += s->h * ((1.0 - CS_HHT_GAMMA) * as->acc[k] + CS_HHT_GAMMA * acc);
                 as->acc[k] = acc;
             }
-            double kinetic = 0.5 * am->mass * (as->rate[0] * as->rate[0] + as->rate[1] * as->rate[1]);
-            s->e_post_damping += work - (kinetic - kinetic_before);
+            s->e_post_damping += work - (kinetic_energy(am, as) - kinetic_before);
         } else { /* h infinite: settled at rest; h = 0: it keeps the rate it had, as a post does */
             if (s->h > 0.0) as->rate[0] = as->rate[1] = 0.0;
             as->acc[0] = net[0] / am->mass, as->acc[1] = net[1] / am->mass;
@@ -270,6 +274,6 @@ double cs_anchor_stored_energy(const cs_model *model, const cs_state *s, int a, 
     if (am->rigid || as->failed) return 0.0;
     double q[2];
     resistance(am, as, as->u, q);
-    *kinetic = 0.5 * am->mass * (as->rate[0] * as->rate[0] + as->rate[1] * as->rate[1]);
+    *kinetic = kinetic_energy(am, as);
     return 0.5 * (q[0] * q[0] + q[1] * q[1]) / am->stiffness;
 }
