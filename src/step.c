@@ -161,7 +161,10 @@ static double resolve_failures(const cs_model *model, cs_state *s, int *changed)
         worst = fmax(worst, cs_barrier_solve(model, s));
         cs_barrier_commit(model, s);
     }
-    if (*changed) s->e_released = released + before - cs_barrier_stored_energy(model, s);
+    if (*changed) {
+        s->e_released = released + before - cs_barrier_stored_energy(model, s);
+        cs_system_forget_motion(&s->work->sys); /* the next step extrapolates no failure's jump */
+    }
     return worst;
 }
 

@@ -72,9 +72,13 @@ void cs_system_free(cs_system *sys) {
     memset(sys, 0, sizeof *sys);
 }
 
-void cs_system_reset(cs_system *sys) {
+void cs_system_forget_motion(cs_system *sys) {
     for (size_t k = 0; k < sys->key_count; k++)
         sys->last_step[k] = -2, sys->last[k] = 0.0;
+}
+
+void cs_system_reset(cs_system *sys) {
+    cs_system_forget_motion(sys);
     cs_newton_forget(&sys->newton);
     sys->bw_valid = 0, sys->order_valid = 0;
 }
@@ -425,7 +429,9 @@ static int same_unknowns(cs_system *sys, int n) {
  * The barrier moves smoothly between failures, so each unknown starts from its committed value plus
  * the increment it took over the last step (a linear extrapolation in time). Unknowns are keyed by
  * element (post, cable node by its support, face contact, crush), so the memory survives nodes being
- * inserted or removed. A re-solve inside the same step (after a failure) does not extrapolate. */
+ * inserted or removed. A re-solve inside the same step (after a failure) does not extrapolate, nor does
+ * the step after it (cs_system_forget_motion): the last increment then holds the failure's jump, which
+ * the barrier does not repeat. */
 static size_t slot_key(const cs_model *model, const cs_state *s, const cs_slot *u) {
     size_t np = (size_t)model->post_count, nc = (size_t)model->cable_count;
     if (u->kind == CS_U_TILT) return 2 * (size_t)u->a + (size_t)u->b;

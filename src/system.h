@@ -31,6 +31,9 @@ int cs_system_init(const cs_model *model, cs_system *sys);
 void cs_system_free(cs_system *sys);
 /* Forget the predictor's history and the factored Jacobian (a new run). */
 void cs_system_reset(cs_system *sys);
+/* Forget the predictor's history alone: the next solve starts from the state as it stands (the barrier
+ * has just jumped to a new equilibrium at a failure). */
+void cs_system_forget_motion(cs_system *sys);
 
 /* Newton from the state as it stands (its unknowns extrapolated from the last step); the state is left
  * at the last iterate, every node placed and every intact span's tension found there. Returns the
