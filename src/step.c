@@ -163,7 +163,7 @@ static double resolve_failures(const cs_model *model, cs_state *s, int *changed)
     }
     if (*changed) {
         s->e_released = released + before - cs_barrier_stored_energy(model, s);
-        cs_system_forget_motion(&s->work->sys); /* the next step extrapolates no failure's jump */
+        cs_system_jumped(&s->work->sys, s->step); /* the next step extrapolates no failure's jump */
     }
     return worst;
 }
@@ -258,10 +258,10 @@ static int advance(const cs_model *model, cs_state *s, double h, int commit_anyw
 }
 
 /* What the barrier took in less than the work done on it since it held e0; a gap above `snap` is
- * booked as released. */
+ * booked as released (the barrier snapped to a lower equilibrium: a jump, as a failure's). */
 static double book_gap(const cs_model *model, cs_state *s, double work, double e0, double snap) {
     double gap = work - (barrier_energy(model, s) - e0);
-    if (gap > snap) s->e_released += gap;
+    if (gap > snap) s->e_released += gap, cs_system_jumped(&s->work->sys, s->step);
     return gap;
 }
 

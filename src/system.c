@@ -72,13 +72,14 @@ void cs_system_free(cs_system *sys) {
     memset(sys, 0, sizeof *sys);
 }
 
-void cs_system_forget_motion(cs_system *sys) {
-    for (size_t k = 0; k < sys->key_count; k++)
-        sys->last_step[k] = -2, sys->last[k] = 0.0;
+void cs_system_jumped(cs_system *sys, long step) {
+    sys->still_step = step + 1;
 }
 
 void cs_system_reset(cs_system *sys) {
-    cs_system_forget_motion(sys);
+    for (size_t k = 0; k < sys->key_count; k++)
+        sys->last_step[k] = -2, sys->last[k] = 0.0;
+    sys->still_step = -1;
     cs_newton_forget(&sys->newton);
     sys->bw_valid = 0, sys->order_valid = 0;
 }
@@ -430,8 +431,8 @@ static int same_unknowns(cs_system *sys, int n) {
  * the increment it took over the last step (a linear extrapolation in time). Unknowns are keyed by
  * element (post, cable node by its support, face contact, crush), so the memory survives nodes being
  * inserted or removed. A re-solve inside the same step (after a failure) does not extrapolate, nor does
- * the step after it (cs_system_forget_motion): the last increment then holds the failure's jump, which
- * the barrier does not repeat. */
+ * the step after a jump (a failure, a snap or a fall: cs_system_jumped): the last increment then holds
+ * the jump, which the barrier does not repeat. */
 static size_t slot_key(const cs_model *model, const cs_state *s, const cs_slot *u) {
     size_t np = (size_t)model->post_count, nc = (size_t)model->cable_count;
     if (u->kind == CS_U_TILT) return 2 * (size_t)u->a + (size_t)u->b;
@@ -453,7 +454,8 @@ static void predict(const cs_model *model, const cs_state *s, cs_system *sys, in
         size_t key = slot_key(model, s, &sys->rows.slots[k]);
         dx[k] = 0.0;
         if (sys->last_step[key] == s->step) continue; /* a re-solve: the pose has not changed */
-        if (sys->last_step[key] == s->step - 1) dx[k] = x[k] - sys->last[key], moved |= dx[k] != 0.0;
+        if (sys->last_step[key] == s->step - 1 && s->step != sys->still_step)
+            dx[k] = x[k] - sys->last[key], moved |= dx[k] != 0.0;
         sys->last[key] = x[k], sys->last_step[key] = s->step;
     }
     if (!moved) return;

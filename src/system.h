@@ -23,6 +23,7 @@ typedef struct cs_system {
     size_t key_count; /* unknowns the predictor remembers, keyed by element */
     double *last;     /* [keys] each unknown's value at the start of the last step's solve */
     long *last_step;  /* [keys] the step that value belongs to */
+    long still_step;  /* a step that extrapolates nothing: the one after a failure's jump */
     double *scratch;  /* [n] residuals of the crush's difference quotient */
     cs_newton newton;
 } cs_system;
@@ -31,13 +32,14 @@ int cs_system_init(const cs_model *model, cs_system *sys);
 void cs_system_free(cs_system *sys);
 /* Forget the predictor's history and the factored Jacobian (a new run). */
 void cs_system_reset(cs_system *sys);
-/* Forget the predictor's history alone: the next solve starts from the state as it stands (the barrier
- * has just jumped to a new equilibrium at a failure). */
-void cs_system_forget_motion(cs_system *sys);
+/* The barrier jumped to a new equilibrium at a failure in `step`: the next step's solves start from the
+ * state as it stands, not from the last increment (which holds the jump). */
+void cs_system_jumped(cs_system *sys, long step);
 
-/* Newton from the state as it stands (its unknowns extrapolated from the last step); the state is left
- * at the last iterate, every node placed and every intact span's tension found there. Returns the
- * largest scaled residual, or -1 if Newton stalled above CS_NEWTON_GIVE_UP or the band did not fit. */
+/* Newton from the state as it stands (its unknowns extrapolated from the last step, unless the barrier
+ * jumped in it: cs_system_jumped); the state is left at the last iterate, every node placed and every
+ * intact span's tension found there. Returns the largest scaled residual, or -1 if Newton stalled above
+ * CS_NEWTON_GIVE_UP or the band did not fit. */
 #define CS_NEWTON_GIVE_UP 1e-2
 double cs_system_solve(const cs_model *model, cs_state *s, cs_system *sys);
 
