@@ -73,10 +73,10 @@ static void axis_jacobian_from(const double *al, double s, double g, double *j) 
 
 /* Post p's cable nodes where a tilt puts them, and its axis' Jacobian into axis if not NULL. */
 void cs_post_place_nodes(const cs_model *model, cs_state *s, int p, const double *tilt, double *axis) {
-    int left, right, on_path = cs_rail_ties(model, s, p, &left, &right);
+    int left, right, on_path = axis || cs_rail_ties(model, s, p, &left, &right); /* an unknown, or tied */
     for (int k = 0; k < model->cable_count; k++)
         on_path |= s->cables[k].status == CS_CABLE_INTACT && s->cables[k].where[p] > 0;
-    if (!on_path && !axis) return; /* a post the ropes have left and no rail holds: nothing to place */
+    if (!on_path) return; /* a post the ropes have left and no rail holds: nothing to place */
     double sn, g, c;
     sinc_terms(v2_norm(tilt[0], tilt[1]), &sn, &g, &c);
     if (axis) axis_jacobian_from(tilt, sn, g, axis);

@@ -23,7 +23,7 @@ typedef struct cs_system {
     size_t key_count; /* unknowns the predictor remembers, keyed by element */
     double *last;     /* [keys] each unknown's value at the start of the last step's solve */
     long *last_step;  /* [keys] the step that value belongs to */
-    long still_step;  /* a step that extrapolates nothing: the one after a failure's jump */
+    long still_step;  /* a step that extrapolates nothing: the one after a jump (cs_system_jumped) */
     double *scratch;  /* [n] residuals of the crush's difference quotient */
     cs_newton newton;
 } cs_system;
@@ -32,8 +32,9 @@ int cs_system_init(const cs_model *model, cs_system *sys);
 void cs_system_free(cs_system *sys);
 /* Forget the predictor's history and the factored Jacobian (a new run). */
 void cs_system_reset(cs_system *sys);
-/* The barrier jumped to a new equilibrium at a failure in `step`: the next step's solves start from the
- * state as it stands, not from the last increment (which holds the jump). */
+/* The barrier jumped to a new equilibrium in `step` (a failure, a snap booked as released, a post's fall):
+ * the next step's solves start from the state as it stands, not from the last increment (which holds the
+ * jump). */
 void cs_system_jumped(cs_system *sys, long step);
 
 /* Newton from the state as it stands (its unknowns extrapolated from the last step, unless the barrier
