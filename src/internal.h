@@ -45,7 +45,8 @@ typedef struct cs_rope {
  * slides, however small the rope's pull (docs/assumptions.md). Without that floor a contact of a slack
  * rope has no friction and drifts, within the solver's tolerance, a little every step. At a support the
  * width is a pre-sliding slip of w / c (c = EA / (l_L + l_R)): ~50 um on APS3's 1.75-in rope over 8-ft
- * spans. A sharper switch (1e-4) costs 14-36% more Newton work for changes of 0.5% in the results. */
+ * spans. A sharper switch (1e-4) costs the crash tests 10-12% more instructions for changes of 1.6% or
+ * less in their results. */
 #define CS_FRICTION_FLOOR 1e-3
 
 /* Barrier solves a run may make per step to t_end on average, by default: a step takes about one (1.01 to

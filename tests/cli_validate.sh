@@ -21,6 +21,12 @@ check "validate --only crash exits 0 if APS1's targets are met, 3 if not ($rc)" 
     '[ $rc -eq 0 ] && grep -q "break times met" "$dir/crash/validation.md" || { [ $rc -eq 3 ] && grep -q "NOT met" "$dir/crash/validation.md"; }'
 "$cs" validate -o "$dir/crash" --only crash --report-only >/dev/null 2>&1
 check "validate --report-only exits 0 whatever the targets" '[ $? -eq 0 ]'
+# Each crash test's failed posts, per side, are those by rotation limit, shear and pullout added up.
+sums=$(awk -F, '/^crash,/ && $12 == $14 + $16 + $18 && $13 == $15 + $17 + $19' "$dir/crash/validation.csv" | wc -l)
+check "posts failed per side = rotation + shear + pullout (three crash rows: $sums)" '[ "$sums" -eq 3 ]'
+kinds=$(grep -cE "^\| of those, by (rotation limit|shear|pullout), left / right \| [0-9]+ / [0-9]+ \| withheld" \
+    "$dir/crash/validation.md")
+check "the blind table gives each kind of post failure per side ($kinds rows)" '[ "$kinds" -eq 3 ]'
 # Every documented reading of what the designs leave open, for the tests that have that part, then the
 # band over them and APS1 judged against its band.
 "$cs" validate -o "$dir/read" --only readings --report-only >/dev/null 2>&1

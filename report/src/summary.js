@@ -138,7 +138,7 @@ export function summaryTable(data) {
     ['Max barrier deflection (cable)', ...both.length(s.max_barrier_deflection_m)],
     ['Working width (vehicle, cables or posts)', ...both.length(s.working_width_m)],
     ['Max cable tension', ...both.force(s.max_cable_tension_n)],
-    ['Posts failed', `${s.posts_failed_left + s.posts_failed_right} of ${data.barrier.posts.length}`, `${s.posts_failed_left} at lower x than the impact, ${s.posts_failed_right} at higher x; ${s.posts_failed_rotation_left + s.posts_failed_rotation_right} past the rotation limit, ${s.posts_failed_shear_left + s.posts_failed_shear_right} sheared, ${s.posts_failed_pullout_left + s.posts_failed_pullout_right} pulled out`],
+    ['Posts failed', `${s.posts_failed_left + s.posts_failed_right} of ${data.barrier.posts.length}`, `${s.posts_failed_left} at lower x than the impact (${s.posts_failed_rotation_left} past the rotation limit, ${s.posts_failed_shear_left} sheared, ${s.posts_failed_pullout_left} pulled out); ${s.posts_failed_right} at higher x (${s.posts_failed_rotation_right} past the rotation limit, ${s.posts_failed_shear_right} sheared, ${s.posts_failed_pullout_right} pulled out)`],
     ['Cables broken', `${s.cables_broken} of ${data.barrier.cables.length}`, null],
     ['Exit speed', ...(s.exit_speed_mps === null ? ['none', null] : both.speed(s.exit_speed_mps))],
     ['Exit angle (from the barrier line)', ...(s.exit_angle_deg === null ? ['none', null] : both.angle((s.exit_angle_deg * Math.PI) / 180))],
