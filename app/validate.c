@@ -39,7 +39,6 @@
 #define IN 0.0254
 #define LB 0.45359237
 #define FTLB 1.3558179483314
-#define CS_PI_V 3.14159265358979323846
 
 typedef struct result {
     int ok;

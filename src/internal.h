@@ -304,20 +304,15 @@ double cs_post_kinetic_energy(const cs_model *model, const cs_state *s, int post
 int cs_post_held(const cs_model *model, const cs_state *s, int post);
 int cs_post_standing(const cs_post_state *ps);
 int cs_post_check_failure(const cs_model *model, cs_state *s, int post);
-/* chords: every cable's (max_nodes spans each), axis: the axis' Jacobian at the post's tilt; NULL forms
- * them. */
-void cs_post_residual_now(const cs_model *model, const cs_state *s, int post, const double *chords,
-                          const double *axis, const double *rails, double *r);
-/* The same at another tilt, with the post's cable nodes placed there. */
+/* The residual at a tilt, the post's cable nodes where they stand (the caller places them; chords, axis
+ * and rails as formed by the placement, or NULL: found here). */
 void cs_post_residual_at(const cs_model *model, const cs_state *s, int post, const double *tilt,
                          const double *chords, const double *axis, const double *rails, double *r);
 /* Whether a post of this model swings over a time h since the last commit (it has mass, h in (0, inf)). */
 int cs_post_swings(const cs_post_model *pm, double h);
 void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double *q);
-/* For the solver's Jacobian: the post axis' Jacobian and its tilt derivatives, and the slope of
- * -(resistance + inertial moment) at the post's tilt. */
+/* For the solver's Jacobian: the post axis' Jacobian and its tilt derivatives. */
 void cs_post_axis_jacobian(const double *tilt, double *j, double *dj);
-void cs_post_resistance_slope(const cs_model *model, const cs_state *s, int p, double *k);
 /* Posts struck by the vehicle: placed for a crush (the sum of the face's pushes returned), and their
  * resistance on the vehicle as placed (face_only: of those the face pushes), added to force and moment. */
 double cs_post_place_captured(const cs_model *model, cs_state *s, double crush);
@@ -330,7 +325,6 @@ int cs_post_capture(const cs_model *model, cs_state *s);
 int cs_attachment_check_release(const cs_model *model, cs_state *s, int p);
 
 /* ---- vehicle (vehicle.c) ---- */
-void cs_vehicle_body_to_world(const cs_state *s, const double *body, double *world);
 void cs_vehicle_face_point(const cs_model *model, const cs_state *s, double crush, double y_body,
                            double z_body, double *world);
 /* Corner k of the outline (CS_CORNERS) at body height z_body, in the world (the front ones crush back),

@@ -178,7 +178,7 @@ static void commit_swing(const cs_model *model, cs_state *s, int p) {
 
 /* Derivative of -(Q_resist + the inertial moment) of post p at its tilt, 2 x 2 row-major: the elastic
  * stiffness, or on the cap the radial projection's (its moment turns with the tilt, its size held). */
-void cs_post_resistance_slope(const cs_model *model, const cs_state *s, int p, double *k) {
+static void resistance_slope(const cs_model *model, const cs_state *s, int p, double *k) {
     const cs_post_model *pm = &model->posts[p];
     const cs_post_state *ps = &s->posts[p];
     double tr[2] = {pm->k_rot * (ps->tilt[0] - ps->plastic[0]), pm->k_rot * (ps->tilt[1] - ps->plastic[1])};
@@ -219,9 +219,10 @@ void cs_post_residual_at(const cs_model *model, const cs_state *s, int p, const 
     subtract_inertia(&model->posts[p], &s->posts[p], tilt, s->h, r);
 }
 
-/* Residual at the state as it stands (nodes placed, tensions current). */
-void cs_post_residual_now(const cs_model *model, const cs_state *s, int p, const double *chords,
-                          const double *axis, const double *rails, double *r) {
+/* Residual at the state as it stands (nodes placed, tensions current); chords: every cable's (max_nodes
+ * spans each), axis: the axis' Jacobian at the post's tilt; NULL forms them. */
+static void residual_now(const cs_model *model, const cs_state *s, int p, const double *chords,
+                         const double *axis, const double *rails, double *r) {
     cs_post_residual_at(model, s, p, s->posts[p].tilt, chords, axis, rails, r);
 }
 
@@ -229,7 +230,7 @@ void cs_post_residual_now(const cs_model *model, const cs_state *s, int p, const
  * stretch), at rest: Newton with a finite-difference Jacobian, the nodes placed at each tilt; no further
  * than its elastic limit (a post those tensions would bend past it is left there, and the barrier's
  * solve finds what it then does). Returns the relative residual found on entry. For the barrier as
- * installed (state.c). */
+ * installed (step.c, cs_state_reset). */
 double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int p) {
     cs_post_state *ps = &s->posts[p];
     const cs_post_model *pm = &model->posts[p];
@@ -237,7 +238,7 @@ double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int p) {
     double r[2], entry = -1.0;
     for (int it = 0; it < 20; it++) {
         cs_post_place_nodes(model, s, p, ps->tilt, NULL);
-        cs_post_residual_now(model, s, p, NULL, NULL, NULL, r);
+        residual_now(model, s, p, NULL, NULL, NULL, r);
         double rn = v2_norm(r[0], r[1]) / pm->moment_scale;
         if (entry < 0.0) entry = rn;
         if (rn <= 1e-14) break;
@@ -245,7 +246,7 @@ double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int p) {
         for (int k = 0; k < 2; k++) {
             ps->tilt[k] = a0[k] + h;
             cs_post_place_nodes(model, s, p, ps->tilt, NULL);
-            cs_post_residual_now(model, s, p, NULL, NULL, NULL, rp);
+            residual_now(model, s, p, NULL, NULL, NULL, rp);
             jac[k] = (rp[0] - r[0]) / h, jac[2 + k] = (rp[1] - r[1]) / h;
             ps->tilt[k] = a0[k];
         }
@@ -570,8 +571,8 @@ int cs_post_capture(const cs_model *model, cs_state *s) {
 static void residual(const cs_model *model, const cs_state *s, const cs_rows *rows, const cs_slot *u,
                      double *r) {
     double q[2];
-    cs_post_residual_now(model, s, u->a, rows->chords, rows->axes + 18 * u->a,
-                         rows->rails + 4 * (size_t)u->a * (size_t)model->rail_count, q);
+    residual_now(model, s, u->a, rows->chords, rows->axes + 18 * u->a,
+                 rows->rails + 4 * (size_t)u->a * (size_t)model->rail_count, q);
     double inv = 1.0 / model->posts[u->a].moment_scale;
     r[0] = q[0] * inv, r[1] = q[1] * inv;
 }
@@ -582,7 +583,7 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
     int p = u->a;
     const double *ja = rows->axes + 18 * p, *dj = ja + 6;
     double kr[4], unit = model->posts[p].moment_scale; /* as residual */
-    cs_post_resistance_slope(model, s, p, kr);
+    resistance_slope(model, s, p, kr);
     for (int a = 0; a < 2; a++)
         for (int b = 0; b < 2; b++)
             cs_rows_add(rows, row + a, row + b, kr[2 * a + b] / unit);

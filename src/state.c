@@ -288,7 +288,9 @@ static void hash_bytes(unsigned long long *h, const void *data, size_t n) {
     *h = cs_fnv1a64(*h, data, n);
 }
 
-/* FNV-1a over the bytes of every number that evolves. */
+/* FNV-1a over the bytes of every number that evolves: the vehicle, each cable's path, plastic strain,
+ * status and face contacts, each post's tilt, plastic rotation and status, the rails, the anchors, the
+ * ledger and the events (field by field: no struct padding). */
 unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
     unsigned long long h = CS_FNV1A64_BASIS;
     hash_bytes(&h, &s->t, sizeof s->t);
@@ -297,13 +299,20 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
     hash_bytes(&h, s->quat, sizeof s->quat);
     hash_bytes(&h, s->omega, sizeof s->omega);
     hash_bytes(&h, &s->crush, sizeof s->crush);
+    hash_bytes(&h, &s->crush_max, sizeof s->crush_max);
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
+        int status = (int)cs->status;
+        hash_bytes(&h, &status, sizeof status);
         hash_bytes(&h, cs->node, (size_t)cs->node_count * sizeof *cs->node);
         hash_bytes(&h, cs->m, (size_t)cs->node_count * sizeof *cs->m);
         hash_bytes(&h, cs->pos, (size_t)cs->node_count * 3 * sizeof *cs->pos);
+        if (cs->node_count > 1) hash_bytes(&h, cs->ep, (size_t)(cs->node_count - 1) * sizeof *cs->ep);
+        hash_bytes(&h, cs->corner_z, sizeof cs->corner_z);
     }
     for (int p = 0; p < model->post_count; p++) {
+        int status = (int)s->posts[p].status;
+        hash_bytes(&h, &status, sizeof status);
         hash_bytes(&h, s->posts[p].tilt, sizeof s->posts[p].tilt);
         hash_bytes(&h, s->posts[p].plastic, sizeof s->posts[p].plastic);
     }
@@ -314,5 +323,12 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
         hash_bytes(&h, s->anchors[a].plastic, sizeof s->anchors[a].plastic);
     }
     hash_bytes(&h, &s->energy, sizeof s->energy);
+    for (int k = 0; k < s->event_count; k++) {
+        const cs_event *e = &s->events[k];
+        int what[3] = {(int)e->type, (int)e->element_kind, e->element};
+        hash_bytes(&h, &e->t, sizeof e->t);
+        hash_bytes(&h, what, sizeof what);
+        hash_bytes(&h, &e->value, sizeof e->value);
+    }
     return h;
 }

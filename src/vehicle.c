@@ -19,7 +19,7 @@
 
 #define CS_TYRE_VREG 0.05 /* m/s: slip speed over which tyre friction builds up to mu N */
 
-void cs_vehicle_body_to_world(const cs_state *s, const double *body, double *world) {
+static void body_to_world(const cs_state *s, const double *body, double *world) {
     quat_rotate(world, s->quat, body);
     v3_add(world, world, s->pos);
 }
@@ -27,7 +27,7 @@ void cs_vehicle_body_to_world(const cs_state *s, const double *body, double *wor
 void cs_vehicle_face_point(const cs_model *model, const cs_state *s, double crush, double y_body,
                            double z_body, double *world) {
     double b[3] = {model->vehicle.def.cg_to_front - crush, y_body, z_body};
-    cs_vehicle_body_to_world(s, b, world);
+    body_to_world(s, b, world);
 }
 
 void cs_vehicle_corner_point(const cs_model *model, const cs_state *s, double crush, int k, double z_body,
@@ -35,7 +35,7 @@ void cs_vehicle_corner_point(const cs_model *model, const cs_state *s, double cr
     const cs_vehicle_def *v = &model->vehicle.def;
     double b[3] = {cs_corner_front(k) ? v->cg_to_front - crush : -v->cg_to_rear,
                    (k % 2 == 0 ? 0.5 : -0.5) * v->front_width, z_body};
-    cs_vehicle_body_to_world(s, b, world);
+    body_to_world(s, b, world);
 }
 
 void cs_vehicle_corner_band(const cs_model *model, int k, double *lo, double *hi) {
@@ -70,7 +70,7 @@ static void tyre_force(const cs_model *model, const cs_state *s, int w, double *
                        double *power) {
     const cs_vehicle_model *vm = &model->vehicle;
     v3_set(f, 0.0, 0.0, 0.0);
-    cs_vehicle_body_to_world(s, vm->wheel[w], point);
+    body_to_world(s, vm->wheel[w], point);
     double comp = vm->def.tyre_static_deflection - point[2];
     if (comp <= 0.0) return;
     double r[3], wv[3], v[3];
@@ -180,7 +180,7 @@ double cs_vehicle_potential_energy(const cs_model *model, const cs_state *s) {
     double e = vm->def.mass * model->scenario.gravity * s->pos[2];
     for (int w = 0; w < 4; w++) {
         double p[3];
-        cs_vehicle_body_to_world(s, vm->wheel[w], p);
+        body_to_world(s, vm->wheel[w], p);
         double comp = vm->def.tyre_static_deflection - p[2];
         if (comp > 0.0) e += 0.5 * vm->tyre_k[w] * comp * comp;
     }

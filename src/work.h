@@ -1,6 +1,9 @@
 /* The workspace of a state: what the step needs besides the physical state (the barrier system's
  * unknowns, factors and predictor history, and whole-state copies to go back to), allocated with the
- * state and never part of what a run's result or its hash depends on. */
+ * state and left out of its hash. It is not without effect: the predictor's history and the kept
+ * Jacobian decide where each solve starts, and so where, within the solver's tolerance, it ends. A run
+ * starts it afresh (cs_state_reset), so a run's result is the same every time; a state copied into
+ * another workspace mid-run goes on to the same results only within that tolerance. */
 #ifndef CS_WORK_H
 #define CS_WORK_H
 

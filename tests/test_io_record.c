@@ -96,7 +96,7 @@ static void public_record_and_outputs(void **state) {
     assert_int_equal(cs_write_outputs(out, &in, m, s, rec, 0, why, sizeof why), 0);
     assert_true(exists(out, "timeseries.csv") && exists(out, "events.csv") && exists(out, "summary.json"));
     assert_false(exists(out, "plots"));
-    char blocked[80];
+    char blocked[sizeof out + 20];
     snprintf(blocked, sizeof blocked, "%s/summary.json/run", out); /* a folder under a file: refused */
     assert_int_equal(cs_write_outputs(blocked, &in, m, s, rec, 0, why, sizeof why), -1);
     assert_true(strlen(why) > 0);

@@ -423,13 +423,6 @@ static void fill_band(cs_plot *p, cs_axes *a, const double *x, const double *lo,
     cairo_restore(cr);
 }
 
-void cs_plot_area(cs_plot *p, cs_axes *a, const double *x, const double *lo, const double *hi, int n,
-                  cs_rgb fill, double alpha, const char *label) {
-    fill_band(p, a, x, lo, 1, hi, 1, n, fill, alpha);
-    cs_style s = {fill, 0, CS_SOLID, CS_MARK_NONE, 0};
-    cs_axes_legend_add(a, CS_LEGEND_AREA, &s, label);
-}
-
 void cs_plot_stack(cs_plot *p, cs_axes *a, const double *x, const double *y, int count, int n,
                    const cs_rgb *fills, const char *const *labels) {
     for (int k = 0; k < count; k++)

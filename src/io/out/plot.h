@@ -108,9 +108,6 @@ double cs_plot_nice_step(double lo, double hi, int target);
 /* Data drawing, clipped to the area. A non-finite y breaks a line. label: a legend entry (NULL: none). */
 void cs_plot_line(cs_plot *p, cs_axes *a, const double *x, const double *y, int n, const cs_style *s,
                   const char *label);
-/* Fill between lo and hi (lo NULL: zero). */
-void cs_plot_area(cs_plot *p, cs_axes *a, const double *x, const double *lo, const double *hi, int n,
-                  cs_rgb fill, double alpha, const char *label);
 /* Stacked areas: layer k (of count) is y[k * n + i]; bands are drawn from zero upward in order. */
 void cs_plot_stack(cs_plot *p, cs_axes *a, const double *x, const double *y, int count, int n,
                    const cs_rgb *fills, const char *const *labels);

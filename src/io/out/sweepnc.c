@@ -72,7 +72,8 @@ static void define(ncfile *f, ncvar *v, int run_dim) {
     int dims[2] = {run_dim, 0};
     if (v->kind == CS_COLUMN_TEXT) {
         char dim[NC_MAX_NAME + 1];
-        snprintf(dim, sizeof dim, "%s_strlen", v->name);
+        int len = snprintf(dim, sizeof dim, "%s_strlen", v->name); /* its length's dimension */
+        if (!check(f, len < (int)sizeof dim ? NC_NOERR : NC_EMAXNAME, "naming", v->name)) return;
         if (!check(f, nc_def_dim(f->id, dim, v->width, &dims[1]), "defining", dim)) return;
     }
     nc_type type = v->kind == CS_COLUMN_TEXT ? NC_CHAR : v->kind == CS_COLUMN_COUNT ? NC_INT : NC_DOUBLE;

@@ -56,11 +56,6 @@ static int class_index(const char *vehicle_class) {
     return -1;
 }
 
-const char *cs_rating_class_part(const char *vehicle_class) {
-    int i = class_index(vehicle_class);
-    return i < 0 ? NULL : classes[i].name;
-}
-
 double cs_rating_class_mass(const char *vehicle_class) {
     int i = class_index(vehicle_class);
     return i < 0 ? 0.0 : classes[i].kg;

@@ -73,11 +73,9 @@ const char *cs_rating_level(cs_standard standard, double penetration);
 /* The standard test vehicle a vehicle of this mass stands for ("C", "PU", "M", "H"), within 5% of
  * the test mass; NULL if none. */
 const char *cs_rating_vehicle_class(double mass);
-/* The library part of a class's test vehicle ("C", "PU", "M", "H"; NULL for another class), its test mass
- * (kg), and the speed designations of a class in mph, highest first, into mph[3]; each returns 0 / NULL
+/* A class's test mass (kg), and its speed designations in mph, highest first, into mph[3]; each returns 0
  * for a class ASTM F2656 does not have. A standard tests a class: ASTM F2656 all four, SD-STD-02.01 and
  * its revision A only M. */
-const char *cs_rating_class_part(const char *vehicle_class);
 double cs_rating_class_mass(const char *vehicle_class);
 int cs_rating_class_speeds(const char *vehicle_class, int mph[3]);
 int cs_standard_tests_class(cs_standard standard, const char *vehicle_class);
