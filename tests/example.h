@@ -24,7 +24,8 @@ static inline void pinned_close_to(const char *what, double got, double want) {
 }
 
 static inline void pinned_hash(const char *name, unsigned long long got, unsigned long long want) {
-    if (CS_MATH_MUSL && got != want) fail_msg("%s: final state hash 0x%016llx, stored 0x%016llx", name, got, want);
+    if (CS_MATH_MUSL && got != want)
+        fail_msg("%s: final state hash 0x%016llx, stored 0x%016llx", name, got, want);
 }
 
 static inline cs_model *example_model(const char *name, const char *const *sets, cs_loader **loader) {
