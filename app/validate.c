@@ -38,6 +38,7 @@
 #define FT 0.3048
 #define IN 0.0254
 #define LB 0.45359237
+#define PSF 47.88025898033584 /* Pa */
 #define FTLB 1.3558179483314
 
 typedef struct result {
@@ -326,22 +327,27 @@ static void write_crash(FILE *md, FILE *csv, suite *s) {
 
 /* ---- bogie tests (the paper's Table 2: data/validation/post-bogie-tests.csv) ---- */
 
-/* The bogie struck the post at speed mph: one W6x16 (library part) with the given footing, no cable. */
-static cs_model *bogie_model(cs_loader *l, const cs_footing_def *footing, double mph, cs_error *err) {
+/* The rig's bogie struck the rig's post (a library part) at speed mph, with the given footing, no cable. */
+static cs_model *bogie_model(cs_loader *l, const cs_bogie_rig *rig, const cs_footing_def *footing, double mph,
+                             cs_error *err) {
     cs_post_def post = cs_default_post_def();
-    cs_loader_reset(l); /* the library's W6x16, not a loaded model file's */
-    if (cs_loader_part(l, CS_PART_SECTION, "W6x16", &post.section) != 0) return NULL;
+    cs_loader_reset(l); /* the library's section, not a loaded model file's */
+    if (cs_loader_part(l, CS_PART_SECTION, rig->section, &post.section) != 0) {
+        snprintf(err->message, sizeof err->message, "no section '%s' in the parts library", rig->section);
+        return NULL;
+    }
     post.height = 1.0;
     post.footing = *footing;
     cs_barrier_def b = cs_default_barrier_def();
     b.cable_count = 0, b.post_count = 1, b.posts = &post;
     b.start_anchor.x = -10.0, b.end_anchor.x = 10.0;
     cs_vehicle_def v = cs_default_vehicle_def();
-    v.mass = 2237 * LB;
+    v.mass = rig->mass_lb * LB;
     v.inertia[0] = v.mass * (1.5 * 1.5 + 1.0) / 12, v.inertia[1] = v.mass * (3.0 * 3.0 + 1.0) / 12;
     v.inertia[2] = v.mass * (3.0 * 3.0 + 1.5 * 1.5) / 12; /* a 3 x 1.5 x 1 m box */
-    v.cg_height = 0.6, v.cg_to_front = 2.0, v.front_width = 8 * IN;
-    v.face_bottom = 24.875 * IN - 4 * IN, v.face_top = 24.875 * IN + 4 * IN;
+    double head = rig->head_height_in * IN, radius = 0.5 * rig->head_diameter_in * IN;
+    v.cg_height = 0.6, v.cg_to_front = 2.0, v.front_width = 2.0 * radius;
+    v.face_bottom = head - radius, v.face_top = head + radius;
     v.wheelbase = 2.0, v.cg_to_front_axle = 1.0, v.track = 1.5, v.cg_to_rear = 1.0;
     v.side_bottom = v.face_bottom, v.side_top = v.face_top;
     v.crush_point_count = 2, v.crush_deformation[1] = 0.001, v.crush_force[1] = 1e7; /* rigid head */
@@ -350,30 +356,32 @@ static cs_model *bogie_model(cs_loader *l, const cs_footing_def *footing, double
     return cs_model_create(&b, &v, &sc, err);
 }
 
-/* A footing of width b and depth d in the soil of docs/assumptions.md (S1 = 8000 psf, the default
- * dynamic factor and skin friction); no pullout capacity given: it pulls out at its skin friction's. */
-static cs_footing_def soil_footing(double b, double d) {
+/* A footing of width b and depth d in soil of S1 = s1_psf (the default dynamic factor and skin friction,
+ * docs/assumptions.md); no pullout capacity given: it pulls out at its skin friction's. */
+static cs_footing_def soil_footing(double b, double d, double s1_psf) {
     cs_footing_def f = cs_default_footing_def();
-    f.diameter = b, f.depth = d, f.soil_pressure = 8000.0 * 47.88025898033584;
+    f.diameter = b, f.depth = d, f.soil_pressure = s1_psf * PSF;
     return f;
 }
 
-/* The post driven in soil: Eq. 21 with the flange (4.03 in) as B, the default dynamic factor, and no
- * pullout capacity (its skin friction). */
+/* The post driven in soil: Eq. 21 with its flange as B, the default dynamic factor, and no pullout
+ * capacity (its skin friction). */
 static int add_bogie(suite *s, const cs_bogie_test *t) {
-    cs_footing_def f = soil_footing(4.03 * IN, t->embedment_mm * 1e-3);
+    const cs_bogie_rig *rig = &s->data.rig;
+    cs_footing_def f = soil_footing(rig->flange_in * IN, t->embedment_mm * 1e-3, rig->soil_psf);
     cs_error err = {0};
-    cs_model *m = bogie_model(s->loader, &f, t->mph, &err);
+    cs_model *m = bogie_model(s->loader, rig, &f, t->mph, &err);
     if (!m) fprintf(stderr, "cablesim validate: %s: %s\n", t->name, err.message);
     return add_job(s, m);
 }
 
 static void write_bogie(FILE *md, FILE *csv, suite *s) {
     const cs_footing_def soil = cs_default_footing_def();
+    const cs_bogie_rig *rig = &s->data.rig;
     fprintf(
         md,
-        "## Bogie tests of W6x16 posts in soil (paper, Table 2)\n\nThe 2,237-lb bogie strikes the post at "
-        "24.875 in; the post rotates in the soil at %.3g x Eq. 21 (S1 = 8000 psf, B = the 4.03-in flange; "
+        "## Bogie tests of %s posts in soil (paper, Table 2)\n\nThe %.0f-lb bogie strikes the post at "
+        "%g in; the post rotates in the soil at %.3g x Eq. 21 (S1 = %.0f psf, B = the %.3g-in flange; "
         "%.3g the soil's dynamic factor) or hinges at Mp, and fails at 45 degrees, or pulls out earlier when "
         "the pull along the leaning post (push x sin(tilt)) reaches its skin friction q pi B D^2 / 2 "
         "(q = %.4g kPa/m). Energy absorbed = the bogie's loss of kinetic energy.\n\n"
@@ -383,7 +391,8 @@ static void write_bogie(FILE *md, FILE *csv, suite *s) {
         "check. "
         "The mode window is narrow (q within about +-2.5%%): the lateral capacity grows nearly as fast with "
         "D as the skin friction (docs/theory.md).\n\n",
-        soil.dynamic_factor, soil.dynamic_factor, soil.skin_friction / 1e3);
+        rig->section, rig->mass_lb, rig->head_height_in, soil.dynamic_factor, rig->soil_psf, rig->flange_in,
+        soil.dynamic_factor, soil.skin_friction / 1e3);
     fprintf(md,
             "| test | speed | embedment | energy measured | energy cablesim | error | deflection measured | "
             "failure measured | failure cablesim |\n|---|---|---|---|---|---|---|---|---|\n");
@@ -420,20 +429,19 @@ static void write_bogie(FILE *md, FILE *csv, suite *s) {
 /* Eq. 21 as the engine evaluates it (a one-post model's footing capacity) against the paper
  * (data/validation/eq21-table4.csv). */
 static void write_verification(FILE *md, cs_loader *l, const cs_validation_data *data) {
-    fprintf(
-        md,
-        "## Verification against closed forms\n\nEq. 21 as the engine evaluates it (S1 = 8000 psf, H = 3 ft) "
-        "against the P column of the paper's Table 4:\n\n| B | D | P paper | P cablesim "
-        "|\n|---|---|---|---|\n");
+    fprintf(md, "## Verification against closed forms\n\nEq. 21 as the engine evaluates it against the P "
+                "column of the "
+                "paper's Table 4 (at its S1 and load height H):\n\n| B | D | S1 | H | P paper | P cablesim "
+                "|\n|---|---|---|---|---|---|\n");
     for (int i = 0; i < data->eq21_count; i++) {
         const cs_eq21_point *e = &data->eq21[i];
-        cs_footing_def f = soil_footing(e->width_ft * FT, e->depth_ft * FT);
+        cs_footing_def f = soil_footing(e->width_ft * FT, e->depth_ft * FT, e->s1_psf);
         cs_error err = {0};
-        cs_model *m = bogie_model(l, &f, 20.0, &err);
+        cs_model *m = bogie_model(l, &data->rig, &f, 20.0, &err);
         if (!m) continue;
-        double pn = cs_model_footing_capacity(m, 0, 3 * FT);
-        fprintf(md, "| %.2f ft | %.0f ft | %.0f lb | %.0f lb |\n", e->width_ft, e->depth_ft, e->p_lb,
-                pn / (LB * 9.80665));
+        double pn = cs_model_footing_capacity(m, 0, e->h_ft * FT);
+        fprintf(md, "| %.2f ft | %.0f ft | %.0f psf | %.0f ft | %.0f lb | %.0f lb |\n", e->width_ft,
+                e->depth_ft, e->s1_psf, e->h_ft, e->p_lb, pn / (LB * 9.80665));
         cs_model_free(m);
     }
     fprintf(

@@ -7,7 +7,7 @@ dir="$tmp"
 "$cs" validate -o "$dir" --only verification,bogie >/dev/null 2>&1
 check "validate exits 0" '[ $? -eq 0 ]'
 md="$dir/validation.md"
-check "Eq. 21 reproduces Table 4 (B 3 ft, D 6 ft: 39024 lb)" 'grep -q "| 3.00 ft | 6 ft | 39024 lb | 39024 lb |" "$md"'
+check "Eq. 21 reproduces Table 4 (B 3 ft, D 6 ft: 39024 lb)" 'grep -q "| 3.00 ft | 6 ft | 8000 psf | 3 ft | 39024 lb | 39024 lb |" "$md"'
 check "ten bogie rows" '[ "$(grep -c "^| NPGB-" "$md")" -eq 10 ]'
 good=$(grep -oE "at least 8 of 10: [0-9]+ of 10" "$md" | grep -oE "[0-9]+ of 10$" | cut -d" " -f1)
 check "the bogie target is met, as the exit status says (${good:-?} of 10)" \
@@ -99,9 +99,15 @@ check "unknown option exits 2" '[ $? -eq 2 ]'
 # The values compared with are read at run time from data/validation/ beside the parts library
 # (CABLESIM_DATA moves both); a file that cannot be read is named with its place, and nothing is written.
 cp -r data "$tmp/data"
-sed -i 's/^3,6,39024$/3,6,39025/' "$tmp/data/validation/eq21-table4.csv"
+sed -i 's/^3,6,39024,/3,6,39025,/' "$tmp/data/validation/eq21-table4.csv"
 CABLESIM_DATA="$tmp/data" "$cs" validate -o "$tmp/moved" --only verification >/dev/null 2>&1
-check "Table 4 comes from data/validation/eq21-table4.csv" 'grep -q "| 3.00 ft | 6 ft | 39025 lb | 39024 lb |" "$tmp/moved/validation.md"'
+check "Table 4 comes from data/validation/eq21-table4.csv" 'grep -q "| 3.00 ft | 6 ft | 8000 psf | 3 ft | 39025 lb | 39024 lb |" "$tmp/moved/validation.md"'
+sed -i 's/^W6x16,4.03,2237,/W6x16,4.03,2300,/' "$tmp/data/validation/bogie-rig.csv"
+CABLESIM_DATA="$tmp/data" "$cs" validate -o "$tmp/rig" --only bogie --report-only >/dev/null 2>&1
+check "the bogie rig comes from data/validation/bogie-rig.csv" 'grep -q "The 2300-lb bogie strikes the post at 24.875 in" "$tmp/rig/validation.md"'
+sed -i 's/^W6x16,4.03,2300,/W6x16,4.03,-1,/' "$tmp/data/validation/bogie-rig.csv"
+out=$(CABLESIM_DATA="$tmp/data" "$cs" validate -o "$tmp/broken" --only bogie 2>&1)
+check "a rig value that is not positive: status 1, its place" '[ $? -eq 1 ] && grep -q "bogie-rig.csv:7:12: bogie_mass_lb -1 (expected a positive value)" <<<"$out"'
 sed -i 's/^NPGB-3,20.00,/NPGB-3,2O.00,/' "$tmp/data/validation/post-bogie-tests.csv"
 out=$(CABLESIM_DATA="$tmp/data" "$cs" validate -o "$tmp/broken" --only bogie 2>&1)
 check "a bad value in a data file: status 1, its place, nothing written" '[ $? -eq 1 ] && grep -q "post-bogie-tests.csv:8:8: .2O.00. is not a number" <<<"$out" && [ ! -e "$tmp/broken" ]'

@@ -181,8 +181,39 @@ static int read_bogie(const char *dir, cs_validation_data *out, char *why, size_
     return close_csv(&c, rc);
 }
 
+static int read_rig(const char *dir, cs_validation_data *out, char *why, size_t size) {
+    static const char *const columns[] = {"post_section",
+                                          "flange_width_in",
+                                          "bogie_mass_lb",
+                                          "head_height_in",
+                                          "head_diameter_in",
+                                          "soil_pressure_psf",
+                                          NULL};
+    cs_bogie_rig *r = &out->rig;
+    double v[5];
+    int rc;
+    csv c;
+    if (open_csv(&c, dir, "bogie-rig.csv", columns, why, size) != 0) return close_csv(&c, -1);
+    if ((rc = next_row(&c)) <= 0) return close_csv(&c, rc < 0 ? -1 : fault(&c, 0, "no row (expected one)"));
+    if (strlen(text(&c, 0)) >= sizeof r->section)
+        return close_csv(&c, fault(&c, 1, "a section name of %zu characters (expected fewer than %zu)",
+                                   strlen(text(&c, 0)), sizeof r->section));
+    if (numbers(&c, 1, 6, v) != 0) return close_csv(&c, -1);
+    for (int k = 0; k < 5; k++)
+        if (!(v[k] > 0.0))
+            return close_csv(&c, fault(&c, c.cell_col[c.want[k + 1]], "%s %g (expected a positive value)",
+                                       columns[k + 1], v[k]));
+    snprintf(r->section, sizeof r->section, "%s", text(&c, 0));
+    r->flange_in = v[0], r->mass_lb = v[1], r->head_height_in = v[2], r->head_diameter_in = v[3];
+    r->soil_psf = v[4];
+    if ((rc = next_row(&c)) != 0)
+        return close_csv(&c, rc < 0 ? -1 : fault(&c, 1, "a second row (expected one)"));
+    return close_csv(&c, 0);
+}
+
 static int read_eq21(const char *dir, cs_validation_data *out, char *why, size_t size) {
-    static const char *const columns[] = {"footing_width_ft", "depth_ft", "p_lb", NULL};
+    static const char *const columns[] = {"footing_width_ft", "depth_ft",       "p_lb",
+                                          "s1_psf",           "load_height_ft", NULL};
     int rc;
     csv c;
     out->eq21_count = 0;
@@ -190,9 +221,9 @@ static int read_eq21(const char *dir, cs_validation_data *out, char *why, size_t
     while ((rc = next_row(&c)) > 0) {
         if (out->eq21_count == CS_EQ21_MAX)
             return close_csv(&c, fault(&c, 1, "more than %d rows", CS_EQ21_MAX));
-        double v[3];
-        if (numbers(&c, 0, 3, v) != 0) return close_csv(&c, -1);
-        out->eq21[out->eq21_count++] = (cs_eq21_point){v[0], v[1], v[2]};
+        double v[5];
+        if (numbers(&c, 0, 5, v) != 0) return close_csv(&c, -1);
+        out->eq21[out->eq21_count++] = (cs_eq21_point){v[0], v[1], v[2], v[3], v[4]};
     }
     if (rc == 0 && out->eq21_count == 0) rc = fault(&c, 0, "no rows (expected at least one)");
     return close_csv(&c, rc);
@@ -201,7 +232,7 @@ static int read_eq21(const char *dir, cs_validation_data *out, char *why, size_t
 int cs_validation_read(const char *dir, cs_validation_data *out, char *why, size_t why_size) {
     memset(out, 0, sizeof *out);
     if (read_aps1(dir, out, why, why_size) != 0 || read_bogie(dir, out, why, why_size) != 0 ||
-        read_eq21(dir, out, why, why_size) != 0)
+        read_rig(dir, out, why, why_size) != 0 || read_eq21(dir, out, why, why_size) != 0)
         return -1;
     return 0;
 }

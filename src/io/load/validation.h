@@ -23,14 +23,21 @@ typedef struct cs_bogie_test {
     int pullout; /* 1: pulled out of the ground; 0: rotated in the soil */
 } cs_bogie_test;
 
-/* A footing's capacity by Eq. 21 as the paper gives it. */
+/* The bogie tests' rig: the post's section (a library part) and its flange, the bogie and the soil. */
+typedef struct cs_bogie_rig {
+    char section[32];
+    double flange_in, mass_lb, head_height_in, head_diameter_in, soil_psf;
+} cs_bogie_rig;
+
+/* A footing's capacity by Eq. 21 as the paper gives it, with the soil and load height it takes. */
 typedef struct cs_eq21_point {
-    double width_ft, depth_ft, p_lb;
+    double width_ft, depth_ft, p_lb, s1_psf, h_ft;
 } cs_eq21_point;
 
 typedef struct cs_validation_data {
     cs_crash_values aps1_test, aps1_paper; /* aps1-crash-test.csv */
     cs_bogie_test bogie[CS_BOGIE_TESTS];   /* post-bogie-tests.csv: the paper's ten, in its order */
+    cs_bogie_rig rig;                      /* bogie-rig.csv */
     cs_eq21_point eq21[CS_EQ21_MAX];       /* eq21-table4.csv */
     int eq21_count;
 } cs_validation_data;
