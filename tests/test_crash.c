@@ -89,7 +89,7 @@ static void a_failure_at_a_steps_end_keeps_the_ledger(void **state) {
     cs_model_free(m);
 }
 
-/* A time step ten times finer changes the response parameters by under 2% (issue 2): the run is
+/* A time step ten times finer changes the response parameters by under 2%: the run is
  * converged in time at the default 0.5 ms. */
 static void refining_the_time_step_changes_little(void **state) {
     (void)state;

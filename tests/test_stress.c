@@ -1,7 +1,7 @@
 /* Stress: random but valid designs and attacks, from a fixed seed, over realistic and extreme ranges
  * (rope sizes, post spacing, cables, vehicle sizes, speeds 5-60 mph, angles 15-90 degrees, impact
  * anywhere along the barrier including at an anchor and past its end). Every run must end without an
- * error, with finite response parameters and an energy ledger within 2% (issue 7). CS_STRESS_RUNS in
+ * error, with finite response parameters and an energy ledger within 2%. CS_STRESS_RUNS in
  * the environment sets how many (default 24, short runs) and CS_STRESS_FROM the first design; the
  * generator gives design k the same whatever the run count. The default subset is designs 0-23, plus
  * the designs kept as regressions (docs/robustness.md). */
@@ -76,11 +76,12 @@ static void random_designs_run_clean(void **state) {
  * went on from where the rope was on it (docs/theory.md, Contact); 4824, 5358, 12245 and 20451, small cars
  * struck beside an anchor whose dead-man went on ringing between its soil and the ropes, part of what
  * backward Euler damped unbooked (-2.3% to -4.7%); the dead-men move by HHT-alpha, which keeps such a
- * slow ringing and books what it takes (docs/theory.md, Anchorage in the soil); 6169, 7624 and 14314, cars sliding along a rope that runs nearly straight past a
- * corner of the body, where the rounded friction switch let the tension difference take either sign and
- * its absolute value booked friction no tension paid for (+2.4% to +3.7%) until it was booked with its
- * sign (docs/theory.md, Capstan friction); 13527 and 90615, small cars whose front corner took up a
- * slack rope where it hangs, which splits its chord and moved the sag's reference with no work done
+ * slow ringing and books what it takes (docs/theory.md, Anchorage in the soil); 6169, 7624 and 14314, cars
+ * sliding along a rope that runs nearly straight past a corner of the body, where the rounded friction switch
+ * let the tension difference take either sign and its absolute value booked friction no tension paid for
+ * (+2.4% to +3.7%) until it was booked with its sign (docs/theory.md, Capstan friction); 13527 and 90615,
+ * small cars whose front corner took up a slack rope where it hangs, which splits its chord and moved the
+ * sag's reference with no work done
  * (+8.1%, the 5% stop; +2.5%) until that was booked with the released energy (docs/theory.md, Contact);
  * 18787 and 54424, posts swinging hard against their rails or ropes, the end-point share of their
  * backward Euler damping unbooked (-2.2%, -2.0%) until it was booked; 59917, where the last 64th of a
