@@ -67,7 +67,7 @@ static double solve_at_pose(const cs_model *model, cs_state *s) {
         if (fallen < 0.0) fallen = cs_relax(model, s, sc->solver_max_sweeps, 1);
         double slack = CS_FALL_SLACK * cs_energy_scale(model, s);
         if (fallen <= CS_FALL_TRIGGER && cs_barrier_trial_energy(model, s, w) <= w->stored_committed + slack)
-            worst = fallen, cs_system_jumped(&w->sys, s->step); /* a jump, as a failure's */
+            worst = fallen, w->count.falls++, cs_system_jumped(&w->sys, s->step); /* a jump, as a failure's */
         else
             cs_system_go_back(model, s, &w->sys);
     }

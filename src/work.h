@@ -21,6 +21,7 @@ struct cs_work {
         long solves;     /* barrier solves at a pose */
         long fallback;   /* of them, those that needed the fallback's sweeps (relax.c) */
         long fall_tries; /* of them, those that tried letting a post fall (relax.c) */
+        long falls;      /* of those, the falls kept (barrier.c) */
         long pieces;     /* steps the path following cut into pieces (step.c) */
     } count;             /* since the state was reset */
 };
