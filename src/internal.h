@@ -223,6 +223,9 @@ struct cs_state {
     cs_work *work; /* the step's workspace (work.h); NULL in a copy that only holds a state */
 };
 
+/* A state's memory and its workspace, not yet set for a run (cs_state_create resets it: step.c). NULL with
+ * err set if out of memory. */
+cs_state *cs_state_allocate(const cs_model *model, cs_error *err);
 void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src);
 void cs_state_restore_barrier(const cs_model *model, cs_state *s, const cs_state *from);
 
@@ -283,7 +286,24 @@ void cs_cable_release(cs_cable_state *cs, cs_cable_status status);
 double cs_cable_stored_energy(const cs_cable_model *cm, const cs_cable_state *cs);
 void cs_node_force(const cs_cable_state *cs, int i, const double *chords, double *f);
 
+/* ---- a post's axis (post_axis.c): geometry only ---- */
+/* sin t / t, its derivative over t and cos t at t = |alpha|. */
+void cs_post_axis_terms(double t, double *s, double *g, double *c);
+/* The point at height z (when upright) of post p at a tilt: from cs_post_axis_terms' s and c, or found. */
+void cs_post_attachment_from(const cs_model *model, int post, const double *tilt, double s, double c,
+                             double z, double *out);
+void cs_post_attachment(const cs_model *model, int post, const double *tilt, double z, double *out);
+/* The axis' Jacobian da/dalpha (3 x 2, row-major): from s and g, at a tilt, and with its derivatives along
+ * the two tilts (dj, 2 x 6: the solver's linearisation of a post's moment). */
+void cs_post_axis_jacobian_from(const double *tilt, double s, double g, double *j);
+void cs_post_axis_jacobian_at(const double *tilt, double *j);
+void cs_post_axis_jacobian(const double *tilt, double *j, double *dj);
+
 /* ---- posts and footings (post.c, footing.c) ---- */
+/* Still in the barrier: not fallen, sheared or pulled out. */
+static inline int cs_post_standing(const cs_post_state *ps) {
+    return ps->status == CS_POST_ELASTIC || ps->status == CS_POST_HINGED || ps->status == CS_POST_SOIL;
+}
 double cs_footing_capacity(const cs_footing_def *f, double load_height);
 double cs_footing_impact_capacity(const cs_footing_def *f, double load_height);
 /* The passive wedge's three-dimensional factor R(b/D) of a member of width b and depth D (footing.c), and
@@ -291,7 +311,6 @@ double cs_footing_impact_capacity(const cs_footing_def *f, double load_height);
 double cs_footing_wedge_factor(double friction_angle, double width, double depth);
 double cs_footing_dynamic_factor(const cs_footing_def *f);
 double cs_footing_pullout_capacity(const cs_footing_def *f);
-void cs_post_attachment(const cs_model *model, int post, const double *tilt, double z, double *out);
 /* Each intact cable's node at post p where a tilt puts it (one sine and cosine for all), and the post
  * axis' Jacobian there (as cs_post_axis_jacobian's j) into axis if not NULL. */
 void cs_post_place_nodes(const cs_model *model, cs_state *s, int post, const double *tilt, double *axis);
@@ -302,7 +321,6 @@ double cs_post_stored_energy(const cs_model *model, const cs_state *s, int post)
 double cs_post_elastic_energy(const cs_model *model, const cs_state *s, int post);
 double cs_post_kinetic_energy(const cs_model *model, const cs_state *s, int post);
 int cs_post_held(const cs_model *model, const cs_state *s, int post);
-int cs_post_standing(const cs_post_state *ps);
 int cs_post_check_failure(const cs_model *model, cs_state *s, int post);
 /* The residual at a tilt, the post's cable nodes where they stand (the caller places them; chords, axis
  * and rails as formed by the placement, or NULL: found here). */
@@ -311,8 +329,6 @@ void cs_post_residual_at(const cs_model *model, const cs_state *s, int post, con
 /* Whether a post of this model swings over a time h since the last commit (it has mass, h in (0, inf)). */
 int cs_post_swings(const cs_post_model *pm, double h);
 void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double *q);
-/* For the solver's Jacobian: the post axis' Jacobian and its tilt derivatives. */
-void cs_post_axis_jacobian(const double *tilt, double *j, double *dj);
 /* Posts struck by the vehicle: placed for a crush (the sum of the face's pushes returned), and their
  * resistance on the vehicle as placed (face_only: of those the face pushes), added to force and moment. */
 double cs_post_place_captured(const cs_model *model, cs_state *s, double crush);

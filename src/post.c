@@ -1,6 +1,6 @@
 /* Posts: a post tilts about its base by a rotation vector alpha = theta * u (u the horizontal
  * direction its top moves). A cable at height z sits at base + z a(alpha), with the post axis
- *   a = (u sin theta, cos theta).
+ *   a = (u sin theta, cos theta)  (post_axis.c).
  * The cables' generalised moment on the post is Q = sum z J^T F, J = da/dalpha (virtual work), and the
  * post resists with an elastic-plastic rotational spring: k (alpha - alpha_p) up to the capacity
  * M_cap, then rotation at constant moment (the plastic hinge of Eqs. 13-20, or the footing rotating
@@ -16,59 +16,10 @@
 #include <math.h>
 #include <string.h>
 
-int cs_post_standing(const cs_post_state *ps) {
-    return ps->status == CS_POST_ELASTIC || ps->status == CS_POST_HINGED || ps->status == CS_POST_SOIL;
-}
-
 /* A post with mass cannot move in no time: a re-solve at the instant of a commit (after a failure)
  * holds it where it is. */
 int cs_post_held(const cs_model *model, const cs_state *s, int p) {
     return model->posts[p].inertia > 0.0 && s->h <= 0.0;
-}
-
-/* sin(t)/t, its derivative over t and cos t. Below t = 0.1 (a post that has not failed) by their series
- * to t^12, whose next terms are at most 1.2e-25: exact to round-off, cheaper than sin and cos, and more
- * accurate for the derivative, whose closed form (t cos t - sin t) / t^3 loses digits to cancellation
- * (1e-9 of it at t = 1e-3). */
-static void sinc_terms(double t, double *s, double *g, double *c) {
-    if (t < 0.1) {
-        static const double sc[] = {1.0,          -1.0 / 6,        1.0 / 120,       -1.0 / 5040,
-                                    1.0 / 362880, -1.0 / 39916800, 1.0 / 6227020800};
-        static const double gc[] = {-1.0 / 3,       1.0 / 30,        -1.0 / 840,        1.0 / 45360,
-                                    -1.0 / 3991680, 1.0 / 518918400, -1.0 / 93405312000};
-        static const double cc[] = {1.0,         -1.0 / 2,       1.0 / 24,       -1.0 / 720,
-                                    1.0 / 40320, -1.0 / 3628800, 1.0 / 479001600};
-        double t2 = t * t, ss = 0.0, gs = 0.0, cs = 0.0;
-        for (int k = 6; k >= 0; k--)
-            ss = sc[k] + t2 * ss, gs = gc[k] + t2 * gs, cs = cc[k] + t2 * cs;
-        *s = ss, *g = gs, *c = cs;
-    } else {
-        double sn = sin(t);
-        *c = cos(t);
-        *s = sn / t;
-        *g = (t * *c - sn) / (t * t * t);
-    }
-}
-
-/* The point at height z (when upright) of post p at tilt alpha, s and c from sinc_terms at |alpha|:
- * pivot + (z + pivot depth) a(alpha). */
-static void attachment_from(const cs_model *model, int p, const double *tilt, double s, double c, double z,
-                            double *out) {
-    double dp = model->posts[p].pivot, l = z + dp;
-    v3_set(out, model->posts[p].x + l * tilt[0] * s, l * tilt[1] * s, -dp + l * c);
-}
-
-void cs_post_attachment(const cs_model *model, int p, const double *tilt, double z, double *out) {
-    double s, g, c;
-    sinc_terms(v2_norm(tilt[0], tilt[1]), &s, &g, &c);
-    attachment_from(model, p, tilt, s, c, z, out);
-}
-
-/* Jacobian of the post axis a(alpha), 3 x 2, row-major, from sinc_terms' s and g at |alpha|. */
-static void axis_jacobian_from(const double *al, double s, double g, double *j) {
-    j[0] = s + al[0] * al[0] * g, j[1] = al[0] * al[1] * g;
-    j[2] = al[0] * al[1] * g, j[3] = s + al[1] * al[1] * g;
-    j[4] = -s * al[0], j[5] = -s * al[1];
 }
 
 /* Post p's cable nodes where a tilt puts them, and its axis' Jacobian into axis if not NULL. */
@@ -78,23 +29,17 @@ void cs_post_place_nodes(const cs_model *model, cs_state *s, int p, const double
         on_path |= s->cables[k].status == CS_CABLE_INTACT && s->cables[k].where[p] > 0;
     if (!on_path) return; /* a post the ropes have left and no rail holds: nothing to place */
     double sn, g, c;
-    sinc_terms(v2_norm(tilt[0], tilt[1]), &sn, &g, &c);
-    if (axis) axis_jacobian_from(tilt, sn, g, axis);
+    cs_post_axis_terms(v2_norm(tilt[0], tilt[1]), &sn, &g, &c);
+    if (axis) cs_post_axis_jacobian_from(tilt, sn, g, axis);
     for (int r = 0; r < model->rail_count; r++) /* the rails' points, kept with the tilt they are at */
-        attachment_from(model, p, tilt, sn, c, model->rails[r].z,
-                        s->rail_pos + 3 * ((size_t)p * (size_t)model->rail_count + (size_t)r));
+        cs_post_attachment_from(model, p, tilt, sn, c, model->rails[r].z,
+                                s->rail_pos + 3 * ((size_t)p * (size_t)model->rail_count + (size_t)r));
     if (model->rail_count) s->rail_tilt[2 * p] = tilt[0], s->rail_tilt[2 * p + 1] = tilt[1];
     for (int k = 0; k < model->cable_count; k++) {
         cs_cable_state *cs = &s->cables[k];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
-        if (i > 0) attachment_from(model, p, tilt, sn, c, model->cables[k].z, cs->pos + 3 * i);
+        if (i > 0) cs_post_attachment_from(model, p, tilt, sn, c, model->cables[k].z, cs->pos + 3 * i);
     }
-}
-
-static void axis_jacobian(const double *al, double *j) {
-    double s, g, c;
-    sinc_terms(v2_norm(al[0], al[1]), &s, &g, &c);
-    axis_jacobian_from(al, s, g, j);
 }
 
 void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double *q) {
@@ -102,27 +47,6 @@ void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const 
     double n = v2_norm(tr[0], tr[1]);
     double f = n > pm->moment_cap ? pm->moment_cap / n : 1.0;
     q[0] = tr[0] * f, q[1] = tr[1] * f;
-}
-
-/* The axis Jacobian j (3 x 2, as axis_jacobian) at a tilt and its derivatives along the two tilts,
- * dj[6 m + e] = d j[e] / d alpha_m (2 x 6): the solver's linearisation of a post's moment. With
- * s = sin t / t, g = s'(t) / t and q = g'(t) / t, d s / d alpha_m = g alpha_m and d g / d alpha_m =
- * q alpha_m, where q = -(3 g + s) / t^2; that loses digits to cancellation near 0 (3 g + s -> 0), so
- * below t = 0.05 its series 1/15 - t^2/210 + t^4/7560 (next term t^6/498960: below 1e-16 there). */
-void cs_post_axis_jacobian(const double *tilt, double *j, double *dj) {
-    double t = v2_norm(tilt[0], tilt[1]), s, g, c, t2 = t * t;
-    sinc_terms(t, &s, &g, &c);
-    double q = t < 0.05 ? 1.0 / 15.0 - t2 / 210.0 + t2 * t2 / 7560.0 : -(3.0 * g + s) / t2;
-    axis_jacobian_from(tilt, s, g, j);
-    for (int m = 0; m < 2; m++) {
-        double a = tilt[m], *d = dj + 6 * m;
-        d[0] = g * a + (m == 0 ? 2.0 * tilt[0] * g : 0.0) + tilt[0] * tilt[0] * q * a;
-        d[1] = (m == 0 ? tilt[1] : tilt[0]) * g + tilt[0] * tilt[1] * q * a;
-        d[2] = d[1];
-        d[3] = g * a + (m == 1 ? 2.0 * tilt[1] * g : 0.0) + tilt[1] * tilt[1] * q * a;
-        d[4] = -(g * a * tilt[0] + (m == 0 ? s : 0.0));
-        d[5] = -(g * a * tilt[1] + (m == 1 ? s : 0.0));
-    }
 }
 
 /* The swing: a post of inertia J about its pivot (model.c) goes, over the time h since the last
@@ -197,7 +121,7 @@ static void resistance_slope(const cs_model *model, const cs_state *s, int p, do
 void cs_post_residual_at(const cs_model *model, const cs_state *s, int p, const double *tilt,
                          const double *chords, const double *axis, const double *rails, double *r) {
     double own[6], q[2] = {0.0, 0.0};
-    if (!axis) axis_jacobian(tilt, own);
+    if (!axis) cs_post_axis_jacobian_at(tilt, own);
     const double *j = axis ? axis : own;
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
@@ -322,7 +246,7 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
      * step the solver left short of equilibrium cannot report a shear it never had */
     ps->shear = v2_norm(ps->moment[0], ps->moment[1]) / (pm->load_height + pm->pivot);
     double sn, g, c;
-    sinc_terms(v2_norm(ps->tilt[0], ps->tilt[1]), &sn, &g, &c);
+    cs_post_axis_terms(v2_norm(ps->tilt[0], ps->tilt[1]), &sn, &g, &c);
     v3_set(axis, ps->tilt[0] * sn, ps->tilt[1] * sn, c); /* the unit axis a(alpha) */
     ps->axial = v3_dot(f, axis);
 }

@@ -49,14 +49,13 @@ static int allocate(const cs_model *model, cs_state *s, int with_workspace) {
     return cs_system_init(model, &w->sys);
 }
 
-cs_state *cs_state_create(const cs_model *model, cs_error *err) {
+cs_state *cs_state_allocate(const cs_model *model, cs_error *err) {
     cs_state *s = calloc(1, sizeof *s);
     if (!s || allocate(model, s, 1) != 0) {
         cs_state_free(s);
         if (err) err->status = CS_ERR_MEMORY, strcpy(err->message, "out of memory allocating the state");
         return NULL;
     }
-    cs_state_reset(model, s);
     return s;
 }
 
