@@ -1,6 +1,7 @@
 /* A full APS3-like crash (tests/fixture.h): the energy ledger balances, every response parameter is
  * finite, two runs hash to the same final state (determinism), and the run is converged in time. And
- * a 300-post barrier whose solves converge; a run past its solve budget ends did_not_converge. */
+ * a 300-post barrier whose solves converge; a run past its solve budget ends did_not_converge; a state
+ * gone wrong is reported as unstable and frozen. */
 #include "check.h"
 #include "fixture.h"
 #include "internal.h"
@@ -150,11 +151,55 @@ static void a_spent_solve_budget_ends_the_run(void **state) {
                 isfinite(sm.energy_balance_error));
 }
 
+/* The step's guards (step.c check_numbers): APS3 run 100 steps (0.05 s, the truck on the ropes), then
+ * one number of the state spoiled. A vehicle's speed made NaN: the next step reports "the vehicle went
+ * unstable" (CS_ERR_UNSTABLE), and the state is frozen: a further step leaves its time where it was. 10%
+ * of the truck's kinetic energy added to the friction booked, beyond the ledger's 5%: the next step
+ * reports the ledger off by about +10% and names friction as the term that moved most. */
+static cs_state *aps3_after_100_steps(cs_model **m) {
+    fixture fx;
+    fixture_aps3(&fx);
+    *m = model_of(&fx);
+    cs_error err;
+    cs_state *s = cs_state_create(*m, &err);
+    assert_non_null(s);
+    for (int k = 0; k < 100; k++)
+        assert_int_equal(cs_step(*m, s, &err), CS_OK);
+    return s;
+}
+
+static void a_state_gone_wrong_is_reported_and_frozen(void **state) {
+    (void)state;
+    cs_model *m;
+    cs_error err;
+    cs_state *s = aps3_after_100_steps(&m);
+    s->vel[0] = NAN;
+    assert_int_equal(cs_step(m, s, &err), CS_ERR_UNSTABLE);
+    assert_int_equal(err.status, CS_ERR_UNSTABLE);
+    printf("%s\n", err.message);
+    assert_non_null(strstr(err.message, "the vehicle went unstable"));
+    double t = s->t;
+    assert_int_equal(cs_step(m, s, &err), CS_OK);
+    assert_true(s->t == t);
+    cs_state_free(s);
+    cs_model_free(m);
+
+    s = aps3_after_100_steps(&m);
+    s->e_friction += 0.1 * s->e_initial_kinetic;
+    assert_int_equal(cs_step(m, s, &err), CS_ERR_UNSTABLE);
+    printf("%s\n", err.message);
+    assert_non_null(strstr(err.message, "the energy ledger is off by +10."));
+    assert_non_null(strstr(err.message, "the term that moved most this step: friction"));
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(ledger_balances_and_run_is_deterministic),
                                        cmocka_unit_test(a_failure_at_a_steps_end_keeps_the_ledger),
                                        cmocka_unit_test(refining_the_time_step_changes_little),
                                        cmocka_unit_test(long_barrier_solves_converge),
-                                       cmocka_unit_test(a_spent_solve_budget_ends_the_run)};
+                                       cmocka_unit_test(a_spent_solve_budget_ends_the_run),
+                                       cmocka_unit_test(a_state_gone_wrong_is_reported_and_frozen)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
