@@ -52,7 +52,7 @@ typedef struct result {
 } result;
 
 enum { CRASH = 3, BOGIE = CS_BOGIE_TESTS, REFINE = 2, VALUES = 4, INPUTS = 6, JOINT = 32, JOINT_SEED = 2656 };
-enum { READINGS = 8, ROAD = 6, ROAD_READINGS = 8 };
+enum { READINGS = 9, ROAD = 6, ROAD_READINGS = 8 };
 enum {
     MAX_JOBS = CRASH + BOGIE + CRASH * REFINE * VALUES + CRASH * INPUTS * 2 + CRASH * JOINT +
                CRASH * READINGS + ROAD * (1 + ROAD_READINGS)
@@ -779,6 +779,11 @@ static const struct {
      "aps4",
      0,
      {"barrier.anchors.start.footing.depth=5 ft", "barrier.anchors.end.footing.depth=5 ft", NULL}},
+    {"the dead-men at the bogie post's dynamic factor, not scaled to their width",
+     "aps1 aps3 aps4",
+     0,
+     {"barrier.anchors.start.footing.width_scaling=none", "barrier.anchors.end.footing.width_scaling=none",
+      NULL}},
     {"swaged end fittings (95%) instead of clips (90%)",
      "aps1 aps3 aps4",
      0,

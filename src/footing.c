@@ -37,6 +37,7 @@ double cs_footing_wedge_factor(double friction_angle, double width, double depth
 }
 
 double cs_footing_dynamic_factor(const cs_footing_def *f) {
+    if (f->width_scaling == CS_WIDTH_NONE) return f->dynamic_factor;
     double ref = cs_footing_wedge_factor(f->friction_angle, CS_WEDGE_REF_WIDTH, CS_WEDGE_REF_DEPTH);
     return f->dynamic_factor * cs_footing_wedge_factor(f->friction_angle, f->diameter, f->depth) / ref;
 }

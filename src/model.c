@@ -79,6 +79,8 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
                             f->dynamic_factor);
             if (!(f->friction_angle > 0.0 && f->friction_angle < 1.2))
                 return fail(err, "anchor %d: soil friction angle must be between 0 and 69 degrees", k);
+            if (f->width_scaling < CS_WIDTH_WEDGE || f->width_scaling > CS_WIDTH_NONE)
+                return fail(err, "anchor %d: unknown width scaling of the soil's dynamic factor", k);
             if (!(f->rotation_limit > 0.0 && f->rotation_limit < 1.5))
                 return fail(err, "anchor %d: footing rotation limit must be between 0 and 1.5 rad", k);
             if (a->pullout_capacity == 0.0 && f->pullout_capacity == 0.0 && !positive(f->skin_friction))
@@ -117,6 +119,8 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
             return fail(err, "post %d: soil dynamic factor %.4g must be in [1, 10]", p, f->dynamic_factor);
         if (!(f->friction_angle > 0.0 && f->friction_angle < 1.2))
             return fail(err, "post %d: soil friction angle must be between 0 and 69 degrees", p);
+        if (f->width_scaling < CS_WIDTH_WEDGE || f->width_scaling > CS_WIDTH_NONE)
+            return fail(err, "post %d: unknown width scaling of the soil's dynamic factor", p);
         if (f->pullout_capacity == 0.0 && !positive(f->skin_friction))
             return fail(err, "post %d: a footing without a pullout capacity needs skin friction > 0", p);
         if (!(d->rotation_limit > 0.0 && d->rotation_limit < 1.5) ||

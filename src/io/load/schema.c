@@ -21,6 +21,11 @@
 static const char *const attachment_words[] = {"through", "clamped", "slot", "hook", NULL};
 static const char *const impact_at_words[] = {"centre", "corner", NULL};
 static const char *const termination_words[] = {"clips", "swaged", "spelter", "wedge", NULL};
+static const char *const width_scaling_words[] = {"wedge", "none", NULL};
+
+const char *cs_width_scaling_word(cs_width_scaling kind) {
+    return kind >= CS_WIDTH_WEDGE && kind <= CS_WIDTH_NONE ? width_scaling_words[kind] : "?";
+}
 
 const char *cs_attachment_word(cs_attachment kind) {
     return kind >= CS_ATTACH_THROUGH && kind <= CS_ATTACH_HOOK ? attachment_words[kind] : "?";
@@ -167,7 +172,14 @@ const cs_table cs_table_parts = {"parts",
            "shaft friction per depth; a footing without a pullout capacity pulls out at pi B D^2 / 2 times " \
            "it"),                                                                                            \
         FT("friction_angle", CS_Q_ANGLE, CS_POS | CS_MAX90, friction_angle,                                  \
-           "the soil's angle of friction: scales the dynamic factor to a footing's width (passive wedge)")
+           "the soil's angle of friction: scales the dynamic factor to a footing's width (passive wedge)"),  \
+    {                                                                                                        \
+        "width_scaling", CS_F_ENUM, CS_Q_NUMBER, 0, (long)offsetof(cs_footing_def, width_scaling), NULL,     \
+            width_scaling_words,                                                                             \
+            "how the dynamic factor carries to a footing's width: wedge (the passive wedge's width effect) " \
+            "or "                                                                                            \
+            "none (the bogie post's factor at any width)"                                                    \
+    }
 static const cs_field soil_fields[] = {SOIL_FIELDS};
 const cs_table cs_table_soil = {"soil",
                                 "Soil of every footing of the barrier (a footing may replace any of it).",
