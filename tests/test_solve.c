@@ -153,6 +153,18 @@ static void check_along_the_crash(fixture *fx_in) {
     cs_model_free(m);
 }
 
+/* A fixture's model and state run to the end (it must end without an error), its summary in sm. */
+static cs_state *run_to_end(const fixture *fx, cs_model **m, cs_summary *sm) {
+    cs_error err;
+    *m = cs_model_create(&fx->barrier, &fx->vehicle, &fx->scenario, &err);
+    if (!*m) fail_msg("%s", err.message);
+    cs_state *s = cs_state_create(*m, &err);
+    assert_non_null(s);
+    assert_int_equal(cs_run(*m, s, NULL, NULL, &err), CS_OK);
+    cs_state_summary(s, sm);
+    return s;
+}
+
 /* The fallback (relax.c) is reached and does its work: with rigid anchors and massless line posts (the
  * paper's), a post on its plastic plateau under the ropes' pull has no equilibrium that Newton's
  * linearisation finds, and the barrier's solve goes to the fallback's sweeps (19 of 607 solves). With
@@ -165,14 +177,9 @@ static void fallback_is_reached_and_balances(void **state) {
     for (int p = 0; p < fx.barrier.post_count; p++)
         fx.posts[p].section.mass_per_length = 0.0;
     fx.barrier.start_anchor.footing.diameter = fx.barrier.end_anchor.footing.diameter = 0.0; /* rigid */
-    cs_error err;
-    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
-    if (!m) fail_msg("%s", err.message);
-    cs_state *s = cs_state_create(m, &err);
-    assert_non_null(s);
-    assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
+    cs_model *m;
     cs_summary sm;
-    cs_state_summary(s, &sm);
+    cs_state *s = run_to_end(&fx, &m, &sm);
     printf("%ld solves, %ld with the fallback, %ld tried a fall, %ld steps cut; %d warnings, ledger %.3g%%, "
            "%s\n",
            s->work->count.solves, s->work->count.fallback, s->work->count.fall_tries, s->work->count.pieces,
@@ -195,14 +202,9 @@ static void a_post_with_no_equilibrium_near_falls(void **state) {
     (void)state;
     design d;
     design_numbered(144, &d);
-    cs_error err;
-    cs_model *m = cs_model_create(&d.fx.barrier, &d.fx.vehicle, &d.fx.scenario, &err);
-    if (!m) fail_msg("%s", err.message);
-    cs_state *s = cs_state_create(m, &err);
-    assert_non_null(s);
-    assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
+    cs_model *m;
     cs_summary sm;
-    cs_state_summary(s, &sm);
+    cs_state *s = run_to_end(&d.fx, &m, &sm);
     printf("%s: %ld tried a fall, %ld kept; ledger %.3g%%, %s\n", d.what, s->work->count.fall_tries,
            s->work->count.falls, 100.0 * sm.energy_balance_error, cs_outcome_name(sm.outcome));
     assert_true(s->work->count.falls >= 1);
