@@ -74,15 +74,15 @@ typedef struct cs_section_def {
     double mass_per_length; /**< kg/m: the post's swing (0: a massless post, the paper's) */
 } cs_section_def;
 
-/** Footing (or the post itself driven in soil) and the soil around it: lateral capacity by Eq. 21,
- *   S1 B D^2 - c_d P D - c_h P H = 0  =>  P = S1 B D^2 / (c_d D + c_h H),
- * dimensionally homogeneous, so evaluated in SI as written; see footing.c. */
 /** How a footing's dynamic factor carries to its own width and depth. */
 typedef enum cs_width_scaling {
     CS_WIDTH_WEDGE, /**< by the passive wedge's width effect, R(B/D) over the bogie post's (the default) */
     CS_WIDTH_NONE   /**< not at all: the bogie post's factor at any width (validate's other reading) */
 } cs_width_scaling;
 
+/** Footing (or the post itself driven in soil) and the soil around it: lateral capacity by Eq. 21,
+ *   S1 B D^2 - c_d P D - c_h P H = 0  =>  P = S1 B D^2 / (c_d D + c_h H),
+ * dimensionally homogeneous, so evaluated in SI as written; see footing.c. */
 typedef struct cs_footing_def {
     double diameter;          /**< B, m (width facing the soil) */
     double depth;             /**< D, embedment, m */
@@ -95,7 +95,7 @@ typedef struct cs_footing_def {
                                  skin friction (skin_friction pi B D^2 / 2) */
     double dynamic_factor;    /**< soil resistance under impact over Eq. 21's for a member of the bogie tests'
                                  post's proportions (calibrated, assumptions.md); scaled to a member's own
-                                 width and depth by the passive wedge's width effect (footing.c) */
+                                 width and depth as width_scaling says (footing.c) */
     double friction_angle;    /**< the soil's angle of internal friction, rad (the wedge's width effect) */
     cs_width_scaling width_scaling; /**< how dynamic_factor carries to this member's width */
     double skin_friction; /**< shaft friction per metre of depth, Pa/m (uplift capacity, calibrated) */
