@@ -174,7 +174,6 @@ static int add_loaded(suite *s, int rc, const cs_model_input *in) {
     return add_job(s, m);
 }
 
-/* One CSV row: suite, case, variant, then the run's numbers; what does not apply is left empty. */
 /* The posts failed by one kind (0 rotation limit, 1 shear, 2 pullout): left and right of the impact. */
 static void posts_failed_by_kind(const cs_summary *m, int kind, int out[2]) {
     out[0] = kind == 0 ? m->posts_failed_rotation_left
@@ -183,6 +182,7 @@ static void posts_failed_by_kind(const cs_summary *m, int kind, int out[2]) {
                        : (kind == 1 ? m->posts_failed_shear_right : m->posts_failed_pullout_right);
 }
 
+/* One CSV row: suite, case, variant, then the run's numbers; what does not apply is left empty. */
 static void csv_row(FILE *csv, const char *suite, const char *name, const char *variant, const result *r) {
     char exit[32] = "", stop[32] = "", b1[32] = "", b2[32] = "";
     if (r->ok && cs_outcome_exits(r->sm.outcome)) snprintf(exit, sizeof exit, "%.6g", r->sm.exit_speed_mps);
@@ -190,7 +190,7 @@ static void csv_row(FILE *csv, const char *suite, const char *name, const char *
     if (r->ok && r->cable_break[0] >= 0.0) snprintf(b1, sizeof b1, "%.6g", r->cable_break[0]);
     if (r->ok && r->cable_break[1] >= 0.0) snprintf(b2, sizeof b2, "%.6g", r->cable_break[1]);
     if (!r->ok) {
-        fprintf(csv, "%s,%s,%s,0,failed,,,,,,,,,,,,,,,,,,,\n", suite, name, variant);
+        fprintf(csv, "%s,%s,\"%s\",0,failed,,,,,,,,,,,,,,,,,,,\n", suite, name, variant);
         return;
     }
     char angle[32] = "";
@@ -333,6 +333,7 @@ static cs_model *bogie_model(cs_loader *l, const cs_bogie_rig *rig, const cs_foo
     cs_post_def post = cs_default_post_def();
     cs_loader_reset(l); /* the library's section, not a loaded model file's */
     if (cs_loader_part(l, CS_PART_SECTION, rig->section, &post.section) != 0) {
+        err->status = CS_ERR_INVALID;
         snprintf(err->message, sizeof err->message, "no section '%s' in the parts library", rig->section);
         return NULL;
     }

@@ -32,11 +32,14 @@ read -r want_dec want_exit want_brk < <(awk -F, '
 "$cs" validate -o "$dir/crash" --only crash >/dev/null 2>&1
 rc=$?
 verdict="deceleration ${want_dec/-/ }, exit speed ${want_exit/-/ }, break times"
+if [ "$want_brk" = either ]; then # break times the pinned file cannot judge: as the report judges them
+    want_brk=$(grep -oE "$verdict (met|NOT met)" "$dir/crash/validation.md" | grep -oE "(met|NOT met)$")
+    want_brk=${want_brk/ /-}
+fi
 want_rc=0
-[ "$want_dec" = met ] && [ "$want_exit" = met ] && [ "$want_brk" != NOT-met ] || want_rc=3
+[ "$want_dec" = met ] && [ "$want_exit" = met ] && [ "$want_brk" = met ] || want_rc=3
 check "APS1's targets judged as the pinned prediction implies: $verdict ${want_brk/-/ }, exit $want_rc ($rc)" \
-    '[ $rc -eq $want_rc ] && grep -q "$verdict" "$dir/crash/validation.md" &&
-     { [ "$want_brk" = either ] || grep -q "$verdict ${want_brk/-/ }" "$dir/crash/validation.md"; }'
+    '[ $rc -eq $want_rc ] && grep -q "$verdict ${want_brk/-/ }\." "$dir/crash/validation.md"'
 "$cs" validate -o "$dir/crash" --only crash --report-only >/dev/null 2>&1
 check "validate --report-only exits 0 whatever the targets" '[ $? -eq 0 ]'
 # Each crash test's failed posts, per side, are those by rotation limit, shear and pullout added up.

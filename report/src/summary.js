@@ -246,7 +246,7 @@ export function designTable(data) {
       row('Soil pressure S1', both.pressure(s.soil_pressure_pa), 'soil-pressure'),
       row('Cap on S1', both.pressure(s.soil_pressure_cap_pa)),
       text('Coefficients c_d, c_h', `${fmt(s.coeff_depth, 2)}, ${fmt(s.coeff_height, 2)}`),
-      text('Dynamic factor', `${fmt(s.dynamic_factor, 2)} (${s.width_scaling === 'none' ? 'at any width' : 'scaled to each footing\'s width'})`),
+      text('Dynamic factor', `${fmt(s.dynamic_factor, 2)} (the posts' footings: ${s.width_scaling === 'none' ? 'at any width' : 'scaled to their width'})`),
       text('Friction angle', both.angle(s.friction_angle_rad)[0]),
       row('Skin friction', both.pressureGradient(s.skin_friction_pa_m)),
     ],

@@ -196,13 +196,19 @@ static int read_rig(const char *dir, cs_validation_data *out, char *why, size_t 
     if (open_csv(&c, dir, "bogie-rig.csv", columns, why, size) != 0) return close_csv(&c, -1);
     if ((rc = next_row(&c)) <= 0) return close_csv(&c, rc < 0 ? -1 : fault(&c, 0, "no row (expected one)"));
     if (strlen(text(&c, 0)) >= sizeof r->section)
-        return close_csv(&c, fault(&c, 1, "a section name of %zu characters (expected fewer than %zu)",
+        return close_csv(&c, fault(&c, c.cell_col[c.want[0]],
+                                   "a section name of %zu characters (expected fewer than %zu)",
                                    strlen(text(&c, 0)), sizeof r->section));
     if (numbers(&c, 1, 6, v) != 0) return close_csv(&c, -1);
     for (int k = 0; k < 5; k++)
         if (!(v[k] > 0.0))
             return close_csv(&c, fault(&c, c.cell_col[c.want[k + 1]], "%s %g (expected a positive value)",
                                        columns[k + 1], v[k]));
+    if (!(v[2] > 0.5 * v[3]))
+        return close_csv(
+            &c, fault(&c, c.cell_col[c.want[3]],
+                      "head height %g in with a head of %g in (expected the head clear of the ground)", v[2],
+                      v[3]));
     snprintf(r->section, sizeof r->section, "%s", text(&c, 0));
     r->flange_in = v[0], r->mass_lb = v[1], r->head_height_in = v[2], r->head_diameter_in = v[3];
     r->soil_psf = v[4];
@@ -223,6 +229,10 @@ static int read_eq21(const char *dir, cs_validation_data *out, char *why, size_t
             return close_csv(&c, fault(&c, 1, "more than %d rows", CS_EQ21_MAX));
         double v[5];
         if (numbers(&c, 0, 5, v) != 0) return close_csv(&c, -1);
+        for (int k = 0; k < 5; k++)
+            if (!(v[k] > 0.0 || (k == 4 && v[k] == 0.0)))
+                return close_csv(&c, fault(&c, c.cell_col[c.want[k]], "%s %g (expected a positive value%s)",
+                                           columns[k], v[k], k == 4 ? " or 0" : ""));
         out->eq21[out->eq21_count++] = (cs_eq21_point){v[0], v[1], v[2], v[3], v[4]};
     }
     if (rc == 0 && out->eq21_count == 0) rc = fault(&c, 0, "no rows (expected at least one)");
