@@ -264,6 +264,7 @@ export function designTable(data) {
               row('Footing diameter', both.length(a.diameter_m)),
               row('Footing depth', both.length(a.depth_m)),
               row('Plan size across the pull', both.length(a.length_m)),
+              text('Soil dynamic factor', a.width_scaling === 'none' ? "the bogie post's, at any width" : 'scaled to its width'),
               a.mass_kg !== null ? row('Mass', both.mass(a.mass_kg)) : text('Mass', 'its concrete'),
               a.pullout_capacity_n !== null ? row('Pullout capacity', both.force(a.pullout_capacity_n)) : text('Pullout capacity', a.pullout_capacity_n_rule),
             ]),

@@ -451,6 +451,7 @@ static void write_design(jw *j, int *first, const cs_barrier_def *b) {
         knum(j, &af, "length_m", a->length > 0 ? a->length : a->footing.diameter);
         kopt(j, &af, "mass_kg", a->mass > 0 ? a->mass : NAN);
         kcapacity(j, &af, "pullout_capacity_n", a->pullout_capacity, "its weight and skin friction");
+        kstr(j, &af, "width_scaling", cs_width_scaling_word(a->footing.width_scaling));
         fputc('}', f);
     }
     fputs("]}", f);
