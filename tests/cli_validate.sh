@@ -42,7 +42,8 @@ check "APS1's targets judged as the pinned prediction implies: $verdict ${want_b
     '[ $rc -eq $want_rc ] && grep -q "$verdict ${want_brk/-/ }\." "$dir/crash/validation.md"'
 "$cs" validate -o "$dir/crash" --only crash --report-only >/dev/null 2>&1
 check "validate --report-only exits 0 whatever the targets" '[ $? -eq 0 ]'
-# Each crash test's failed posts, per side, are those by rotation limit, shear and pullout added up.
+# Each crash test's failed posts, per side, are those by rotation limit, shear and pullout added up
+# (response.c counts a side from those kinds, so this checks the CSV's new columns and their order).
 sums=$(awk -F, '/^crash,/ && $12 == $14 + $16 + $18 && $13 == $15 + $17 + $19' "$dir/crash/validation.csv" | wc -l)
 check "posts failed per side = rotation + shear + pullout (three crash rows: $sums)" '[ "$sums" -eq 3 ]'
 kinds=$(grep -cE "^\| of those, by (rotation limit|shear|pullout), left / right \| [0-9]+ / [0-9]+ \| withheld" \
