@@ -267,13 +267,13 @@ static int list(cs_loader *l) {
             if (cs_loader_part(l, (cs_part_kind)k, names[i], &d) != 0) continue;
             if (k == CS_PART_VEHICLE)
                 printf("  %-14s %7.0f kg (%6.0f lb), crush force %.0f kN at %.2f m  %s\n", names[i],
-                       d.vehicle.mass, d.vehicle.mass / 0.45359237,
+                       d.vehicle.mass, d.vehicle.mass / CS_LB,
                        d.vehicle.crush_force[d.vehicle.crush_point_count - 1] / 1e3,
                        d.vehicle.crush_deformation[d.vehicle.crush_point_count - 1], docs[i]);
             else if (k == CS_PART_ROPE)
                 printf("  %-14s A %7.1f mm2 (%.3f in2), Fu %6.1f kN (%5.1f kip)  %s\n", names[i],
-                       d.rope.area * 1e6, d.rope.area / 0.00064516, d.rope.nominal_strength / 1e3,
-                       d.rope.nominal_strength / 4448.2216152605, docs[i]);
+                       d.rope.area * 1e6, d.rope.area / (CS_IN * CS_IN), d.rope.nominal_strength / 1e3,
+                       d.rope.nominal_strength / CS_KIP, docs[i]);
             else if (k == CS_PART_RAIL)
                 printf("  %-14s A %.3f in2, I %.3f in4, Fy %.0f ksi, %.2f lb/ft  %s\n", names[i],
                        d.rail.area / 0.00064516, d.rail.inertia / 4.162314256e-07,

@@ -13,11 +13,11 @@
 #include <string.h>
 
 #include "cablesim/loader.h"
+#include "cablesim/units.h"
 #include "cli.h"
 #include "commands.h"
 #include "study/rating.h"
 
-#define MPH 0.44704
 #define CS_PI 3.14159265358979323846
 
 static const char rate_usage[] =
@@ -62,7 +62,7 @@ static int roadside_one(cs_loader *l, const cs_model_input *in, const cs_roadsid
         char exit[128] = "no exit";
         if (r.exit_speed_mps >= 0.0)
             snprintf(exit, sizeof exit, "exit %.1f km/h (%.1f mph) at %.1f deg%s", r.exit_speed_mps * 3.6,
-                     r.exit_speed_mps / MPH, r.exit_angle_deg,
+                     r.exit_speed_mps / CS_MPH, r.exit_angle_deg,
                      r.redirected && strcmp(t->standard, "nchrp-350") == 0
                          ? (r.exit_angle_within ? " (under 60% of the impact angle)"
                                                 : " (60% of the impact angle or more)")
@@ -71,7 +71,7 @@ static int roadside_one(cs_loader *l, const cs_model_input *in, const cs_roadsid
             "  %-4s %-6s %3.0f km/h %2.0f deg  %-12s deflection %.2f m (%.1f ft)  working width %.2f m (%.1f "
             "ft)  %s\n",
             t->name, t->vehicle, t->speed * 3.6, t->angle * 180 / CS_PI, cs_outcome_name(sm.outcome),
-            r.deflection, r.deflection / 0.3048, r.working_width_m, r.working_width_m / 0.3048, exit);
+            r.deflection, r.deflection / CS_FT, r.working_width_m, r.working_width_m / CS_FT, exit);
         if (!r.contained) *contained = 0;
         if (!r.redirected) *redirected = 0;
     }
@@ -111,7 +111,7 @@ static int rate_roadside(cs_loader *l, const char *file, const char *standard, c
  * failed. */
 static int rate_one(const cs_model_input *in, cs_standard std, const char *klass, int mph, cs_rating *out) {
     cs_scenario_def sc = in->scenario;
-    sc.speed = mph * MPH;
+    sc.speed = mph * CS_MPH;
     sc.angle = 0.5 * CS_PI; /* the standards' head-on impact */
     cs_error err = {0};
     cs_model *m = cs_model_create(&in->barrier, &in->vehicle, &sc, &err);
@@ -130,7 +130,7 @@ static int rate_one(const cs_model_input *in, cs_standard std, const char *klass
         else if (isnan(out->penetration))
             snprintf(pen, sizeof pen, "not measured");
         else
-            snprintf(pen, sizeof pen, "%.2f m (%.1f ft)", out->penetration, out->penetration / 0.3048);
+            snprintf(pen, sizeof pen, "%.2f m (%.1f ft)", out->penetration, out->penetration / CS_FT);
         printf("  %-4s %2d mph  %-12s penetration %-22s ->  %s\n", klass, mph, cs_outcome_name(sm.outcome),
                pen, out->label);
     }

@@ -27,19 +27,12 @@
 #include <time.h>
 
 #include "cablesim/loader.h"
+#include "cablesim/units.h"
 #include "cli.h"
 #include "commands.h"
 #include "load/validation.h"
 #include "out/outfile.h"
 #include "study/sweep.h"
-
-#define MPH 0.44704
-#define KIP 4448.2216152605 /* N */
-#define FT 0.3048
-#define IN 0.0254
-#define LB 0.45359237
-#define PSF 47.88025898033584 /* Pa */
-#define FTLB 1.3558179483314
 
 typedef struct result {
     int ok;
@@ -231,12 +224,12 @@ static double rel_err(double model, double test) {
  * least the rest of its loss down to the exit speed came after both ropes had broken. Per unit mass, over
  * the impact speeds of the sensitivity study (38-42 mph). */
 static void write_aps1_bound(FILE *md, const cs_crash_values *t) {
-    const double g = 9.80665, lost_by_break = 3 * 0.05 * t->decel_g * g, v_exit = t->exit_mph * MPH,
+    const double g = CS_G0, lost_by_break = 3 * 0.05 * t->decel_g * g, v_exit = t->exit_mph * CS_MPH,
                  mph[3] = {38, 40, 42};
     double after[3], share[3];
     for (int k = 0; k < 3; k++) {
-        double v0 = mph[k] * MPH, v_break = v0 - lost_by_break;
-        after[k] = v_break / MPH;
+        double v0 = mph[k] * CS_MPH, v_break = v0 - lost_by_break;
+        after[k] = v_break / CS_MPH;
         share[k] = 100.0 * (v_break * v_break - v_exit * v_exit) / (v0 * v0 - v_exit * v_exit);
     }
     fprintf(md,
@@ -268,7 +261,7 @@ static void write_crash(FILE *md, FILE *csv, suite *s) {
             p->decel_g, r->sm.max_50ms_decel_g, rel_err(r->sm.max_50ms_decel_g, t->decel_g));
     if (cs_outcome_through(r->sm.outcome))
         fprintf(md, "| exit speed | %.1f mph | %.1f mph | %.1f mph | %+.0f%% |\n", t->exit_mph, p->exit_mph,
-                r->sm.exit_speed_mps / MPH, rel_err(r->sm.exit_speed_mps / MPH, t->exit_mph));
+                r->sm.exit_speed_mps / CS_MPH, rel_err(r->sm.exit_speed_mps / CS_MPH, t->exit_mph));
     else
         fprintf(md, "| exit speed | %.1f mph | %.1f mph | none: %s at %.3f s | the truck is not through |\n",
                 t->exit_mph, p->exit_mph, cs_outcome_name(r->sm.outcome), r->sm.t_end_s);
@@ -280,7 +273,7 @@ static void write_crash(FILE *md, FILE *csv, suite *s) {
                     : (snprintf(b, sizeof b, "%+.0f ms", 1e3 * (r->cable_break[c] - t->brk[c])), b));
     int dec_ok = r->ok && fabs(rel_err(r->sm.max_50ms_decel_g, t->decel_g)) <= 15.0;
     int exit_ok = r->ok && cs_outcome_through(r->sm.outcome) &&
-                  fabs(rel_err(r->sm.exit_speed_mps / MPH, t->exit_mph)) <= 15.0;
+                  fabs(rel_err(r->sm.exit_speed_mps / CS_MPH, t->exit_mph)) <= 15.0;
     int brk_ok = r->ok && r->cable_break[0] >= 0.0 && r->cable_break[1] >= 0.0 &&
                  fabs(r->cable_break[0] - t->brk[0]) <= 0.05 && fabs(r->cable_break[1] - t->brk[1]) <= 0.05;
     fprintf(md,
@@ -293,7 +286,7 @@ static void write_crash(FILE *md, FILE *csv, suite *s) {
                 "No rope breaks in this run (its largest rope tension %.0f kN, %.0f kip): docs/theory.md, "
                 "\"APS1's miss\", follows it against the test (the dead-men sliding in the soil, the "
                 "readings below, and the end-fitting strengths that would break the ropes).\n\n",
-                r->sm.max_cable_tension_n / 1e3, r->sm.max_cable_tension_n / KIP);
+                r->sm.max_cable_tension_n / 1e3, r->sm.max_cable_tension_n / CS_KIP);
     write_aps1_bound(md, t);
     fprintf(md, "### APS3 and APS4: blind predictions (the measured results are withheld)\n\n");
     fprintf(md,
@@ -307,10 +300,10 @@ static void write_crash(FILE *md, FILE *csv, suite *s) {
             penetration_text(&p3->sm, a, sizeof a), penetration_text(&p4->sm, b, sizeof b));
     fprintf(md, "| exit speed | %s | withheld | %s | withheld |\n",
             cs_outcome_through(p3->sm.outcome)
-                ? (snprintf(a, sizeof a, "%.1f mph", p3->sm.exit_speed_mps / MPH), a)
+                ? (snprintf(a, sizeof a, "%.1f mph", p3->sm.exit_speed_mps / CS_MPH), a)
                 : "-",
             cs_outcome_through(p4->sm.outcome)
-                ? (snprintf(b, sizeof b, "%.1f mph", p4->sm.exit_speed_mps / MPH), b)
+                ? (snprintf(b, sizeof b, "%.1f mph", p4->sm.exit_speed_mps / CS_MPH), b)
                 : "-");
     fprintf(md, "| posts failed left / right | %d / %d | withheld | %d / %d | withheld |\n",
             p3->sm.posts_failed_left, p3->sm.posts_failed_right, p4->sm.posts_failed_left,
@@ -343,17 +336,17 @@ static cs_model *bogie_model(cs_loader *l, const cs_bogie_rig *rig, const cs_foo
     b.cable_count = 0, b.post_count = 1, b.posts = &post;
     b.start_anchor.x = -10.0, b.end_anchor.x = 10.0;
     cs_vehicle_def v = cs_default_vehicle_def();
-    v.mass = rig->mass_lb * LB;
+    v.mass = rig->mass_lb * CS_LB;
     v.inertia[0] = v.mass * (1.5 * 1.5 + 1.0) / 12, v.inertia[1] = v.mass * (3.0 * 3.0 + 1.0) / 12;
     v.inertia[2] = v.mass * (3.0 * 3.0 + 1.5 * 1.5) / 12; /* a 3 x 1.5 x 1 m box */
-    double head = rig->head_height_in * IN, radius = 0.5 * rig->head_diameter_in * IN;
+    double head = rig->head_height_in * CS_IN, radius = 0.5 * rig->head_diameter_in * CS_IN;
     v.cg_height = 0.6, v.cg_to_front = 2.0, v.front_width = 2.0 * radius;
     v.face_bottom = head - radius, v.face_top = head + radius;
     v.wheelbase = 2.0, v.cg_to_front_axle = 1.0, v.track = 1.5, v.cg_to_rear = 1.0;
     v.side_bottom = v.face_bottom, v.side_top = v.face_top;
     v.crush_point_count = 2, v.crush_deformation[1] = 0.001, v.crush_force[1] = 1e7; /* rigid head */
     cs_scenario_def sc = cs_default_scenario_def();
-    sc.speed = mph * MPH, sc.impact_x = 0.0, sc.t_end = 1.0;
+    sc.speed = mph * CS_MPH, sc.impact_x = 0.0, sc.t_end = 1.0;
     return cs_model_create(&b, &v, &sc, err);
 }
 
@@ -361,7 +354,7 @@ static cs_model *bogie_model(cs_loader *l, const cs_bogie_rig *rig, const cs_foo
  * docs/assumptions.md); no pullout capacity given: it pulls out at its skin friction's. */
 static cs_footing_def soil_footing(double b, double d, double s1_psf) {
     cs_footing_def f = cs_default_footing_def();
-    f.diameter = b, f.depth = d, f.soil_pressure = s1_psf * PSF;
+    f.diameter = b, f.depth = d, f.soil_pressure = s1_psf * CS_PSF;
     return f;
 }
 
@@ -369,7 +362,7 @@ static cs_footing_def soil_footing(double b, double d, double s1_psf) {
  * capacity (its skin friction). */
 static int add_bogie(suite *s, const cs_bogie_test *t) {
     const cs_bogie_rig *rig = &s->data.rig;
-    cs_footing_def f = soil_footing(rig->flange_in * IN, t->embedment_mm * 1e-3, rig->soil_psf);
+    cs_footing_def f = soil_footing(rig->flange_in * CS_IN, t->embedment_mm * 1e-3, rig->soil_psf);
     cs_error err = {0};
     cs_model *m = bogie_model(s->loader, rig, &f, t->mph, &err);
     if (!m) fprintf(stderr, "cablesim validate: %s: %s\n", t->name, err.message);
@@ -402,7 +395,7 @@ static void write_bogie(FILE *md, FILE *csv, suite *s) {
         const cs_bogie_test *t = &s->data.bogie[i];
         const result *r = &s->jobs[s->bogie[i]].r;
         if (!r->ok) continue;
-        double e = r->absorbed / FTLB, err = rel_err(e, t->energy_ftlb);
+        double e = r->absorbed / CS_FT_LBF, err = rel_err(e, t->energy_ftlb);
         const char *mode = r->post_failure == CS_EVENT_POST_PULLOUT          ? "pulled out"
                            : r->post_failure == CS_EVENT_POST_ROTATION_LIMIT ? "rotation (45 deg)"
                            : r->post_failure == CS_EVENT_POST_SHEAR          ? "shear"
@@ -436,13 +429,13 @@ static void write_verification(FILE *md, cs_loader *l, const cs_validation_data 
                 "|\n|---|---|---|---|---|---|\n");
     for (int i = 0; i < data->eq21_count; i++) {
         const cs_eq21_point *e = &data->eq21[i];
-        cs_footing_def f = soil_footing(e->width_ft * FT, e->depth_ft * FT, e->s1_psf);
+        cs_footing_def f = soil_footing(e->width_ft * CS_FT, e->depth_ft * CS_FT, e->s1_psf);
         cs_error err = {0};
         cs_model *m = bogie_model(l, &data->rig, &f, 20.0, &err);
         if (!m) continue;
-        double pn = cs_model_footing_capacity(m, 0, e->h_ft * FT);
+        double pn = cs_model_footing_capacity(m, 0, e->h_ft * CS_FT);
         fprintf(md, "| %.2f ft | %.0f ft | %.0f psf | %.0f ft | %.0f lb | %.0f lb |\n", e->width_ft,
-                e->depth_ft, e->s1_psf, e->h_ft, e->p_lb, pn / (LB * 9.80665));
+                e->depth_ft, e->s1_psf, e->h_ft, e->p_lb, pn / (CS_LB * CS_G0));
         cs_model_free(m);
     }
     fprintf(
@@ -675,7 +668,7 @@ static void write_bands(FILE *md, const bands *b) {
     char t[5][96];
     fprintf(md, " %s | %s | %s | %s | %s |\n", band_text(&b->decel, 1.0, "%.2f", "g", "-", t[0], sizeof t[0]),
             band_text(&b->pen, 1.0, "%.2f", "m", "-", t[1], sizeof t[1]),
-            band_text(&b->exit, MPH, "%.1f", "mph", "stopped", t[2], sizeof t[2]),
+            band_text(&b->exit, CS_MPH, "%.1f", "mph", "stopped", t[2], sizeof t[2]),
             band_text(&b->brk[0], 1.0, "%.3f", "s", "unbroken", t[3], sizeof t[3]),
             band_text(&b->brk[1], 1.0, "%.3f", "s", "unbroken", t[4], sizeof t[4]));
 }
@@ -745,8 +738,8 @@ static void write_sensitivity(FILE *md, FILE *csv, const suite *s) {
             "band is a miss that these inputs, within their ranges, do not explain: it lies in the model "
             "(docs/theory.md, \"APS1's miss\").\n\n",
             t->decel_g, inside(&aps1.decel, 1.0, t->decel_g), t->exit_mph,
-            inside(&aps1.exit, MPH, t->exit_mph), t->brk[0], inside(&aps1.brk[0], 1.0, t->brk[0]), t->brk[1],
-            inside(&aps1.brk[1], 1.0, t->brk[1]));
+            inside(&aps1.exit, CS_MPH, t->exit_mph), t->brk[0], inside(&aps1.brk[0], 1.0, t->brk[0]),
+            t->brk[1], inside(&aps1.brk[1], 1.0, t->brk[1]));
 }
 
 /* ---- readings of what the design data leaves open ---- */
@@ -820,7 +813,7 @@ static void reading_row(FILE *md, const char *name, const char *what, const resu
     }
     char exit[32] = "-", b[2][32], pen[32];
     if (cs_outcome_through(r->sm.outcome))
-        snprintf(exit, sizeof exit, "%.1f mph", r->sm.exit_speed_mps / MPH);
+        snprintf(exit, sizeof exit, "%.1f mph", r->sm.exit_speed_mps / CS_MPH);
     const cs_summary *m = &r->sm;
     fprintf(md, "| %s | %s | %s | %.2f g | %s | %s | %s, %s | %d + %d / %d + %d / %d + %d |\n", name, what,
             cs_outcome_name(m->outcome), m->max_50ms_decel_g, penetration_text(m, pen, sizeof pen), exit,
@@ -867,8 +860,8 @@ static void write_readings(FILE *md, FILE *csv, const suite *s) {
         "\nAPS1's crash test against the band of its readings: deceleration %.3f g %s, exit speed %.1f mph "
         "%s, cable 1 broke at %.3f s %s, cable 2 at %.3f s %s.\n\n",
         t->decel_g, inside(&all[0].decel, 1.0, t->decel_g), t->exit_mph,
-        inside(&all[0].exit, MPH, t->exit_mph), t->brk[0], inside(&all[0].brk[0], 1.0, t->brk[0]), t->brk[1],
-        inside(&all[0].brk[1], 1.0, t->brk[1]));
+        inside(&all[0].exit, CS_MPH, t->exit_mph), t->brk[0], inside(&all[0].brk[0], 1.0, t->brk[0]),
+        t->brk[1], inside(&all[0].brk[1], 1.0, t->brk[1]));
 }
 
 /* ---- the roadside crash tests: blind predictions ---- */
@@ -931,7 +924,7 @@ static void road_row(FILE *md, const char *name, const char *what, const result 
     if (cs_outcome_exits(m->outcome))
         snprintf(exit, sizeof exit, "%.1f km/h at %.1f deg", m->exit_speed_mps * 3.6, m->exit_angle_deg);
     fprintf(md, "| %s | %s | %s | %.2f m (%.1f ft) | %.2f m | %s | %d | %d |%s\n", name, what,
-            cs_outcome_name(m->outcome), m->max_barrier_deflection_m, m->max_barrier_deflection_m / FT,
+            cs_outcome_name(m->outcome), m->max_barrier_deflection_m, m->max_barrier_deflection_m / CS_FT,
             m->working_width_m, exit, r->released, m->posts_failed_left + m->posts_failed_right, more);
 }
 

@@ -1,11 +1,11 @@
 /* Default definitions. Values that are not design data are the documented assumptions of
  * docs/assumptions.md; design data (geometry, masses, strengths) default to 0 and must be given. */
 #include "cablesim/def.h"
+#include "cablesim/units.h"
 
 #include <math.h>
 #include <string.h>
 
-#define CS_PSF 47.88025898033584 /* Pa per lbf/ft^2 */
 #define CS_PI 3.14159265358979323846
 /* The post-in-soil model's two calibrated values (docs/assumptions.md, docs/theory.md): fitted on the odd
  * bogie tests (NPGB-1, 3, 5, 7, 9), checked on the even ones. CS_SOIL_* may be set when building, for
@@ -40,7 +40,7 @@ cs_cable_def cs_default_cable_def(void) {
 double cs_termination_efficiency(cs_termination kind, double diameter) {
     switch (kind) {
     case CS_TERMINATION_CLIPS:
-        return diameter > 0.0 && diameter < 0.0254 - 1e-9 ? 0.80 : 0.90;
+        return diameter > 0.0 && diameter < CS_IN - 1e-9 ? 0.80 : 0.90;
     case CS_TERMINATION_SWAGED:
         return 0.95;
     case CS_TERMINATION_SPELTER:
@@ -143,6 +143,6 @@ cs_scenario_def cs_default_scenario_def(void) {
     d.solver_tolerance = 1e-4;
     d.solver_max_sweeps = 300;
     d.stop_speed = 0.05;
-    d.gravity = 9.80665;
+    d.gravity = CS_G0;
     return d;
 }

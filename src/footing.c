@@ -21,8 +21,8 @@
 #include <math.h>
 
 #define CS_PI 3.14159265358979323846
-#define CS_WEDGE_REF_WIDTH (4.03 * 0.0254) /* the bogie tests' W6x16 flange, m */
-#define CS_WEDGE_REF_DEPTH (40.0 * 0.0254) /* their embedment, about 40 in (864-1092 mm), m */
+#define CS_WEDGE_REF_WIDTH (4.03 * CS_IN) /* the bogie tests' W6x16 flange, m */
+#define CS_WEDGE_REF_DEPTH (40.0 * CS_IN) /* their embedment, about 40 in (864-1092 mm), m */
 
 double cs_footing_capacity(const cs_footing_def *f, double load_height) {
     double s1 = fmin(f->soil_pressure, f->soil_pressure_cap);

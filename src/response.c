@@ -6,8 +6,6 @@
 
 #include <math.h>
 
-#define CS_STANDARD_GRAVITY 9.80665 /* m/s^2 per g, whatever the scenario's gravity */
-
 /* 50-ms average of the deceleration along the initial travel direction: the change of forward speed
  * over the window, (u(t - W) - u(t)) / W, from a ring of the last window_steps + 1 speeds (the first
  * of them the speed at t = 0, put there at reset). */
@@ -18,7 +16,7 @@ static void update_decel(const cs_model *model, cs_state *s, double u) {
     if (s->ring_fill < n) return;
     double old = s->speed_ring[(s->step + 1) % n];
     double w = model->window_steps * model->scenario.dt;
-    s->decel_50ms_g = (old - u) / w / CS_STANDARD_GRAVITY;
+    s->decel_50ms_g = (old - u) / w / CS_G0;
     if (s->decel_50ms_g > s->summary.max_50ms_decel_g) {
         s->summary.max_50ms_decel_g = s->decel_50ms_g;
         s->summary.t_max_50ms_decel_s = s->t;
@@ -45,7 +43,7 @@ static void close_decel_window(const cs_model *model, cs_state *s) {
     int n = model->window_steps + 1;
     if (s->ring_fill >= n) return; /* with the speed at t = 0 alone, first == last: 0 g */
     double first = s->speed_ring[(s->step + 1 - s->ring_fill) % n], last = s->speed_ring[s->step % n];
-    double w = model->window_steps * model->scenario.dt, g = (first - last) / w / CS_STANDARD_GRAVITY;
+    double w = model->window_steps * model->scenario.dt, g = (first - last) / w / CS_G0;
     if (g > s->summary.max_50ms_decel_g) {
         s->summary.max_50ms_decel_g = g;
         s->summary.t_max_50ms_decel_s =

@@ -21,7 +21,8 @@ deb=$(ls "$tmp"/cablesim_"$version"_*.deb 2>/dev/null | head -1)
 check "it made cablesim_${version}_ARCH.deb" '[ -n "$deb" ] && [ -s "$deb" ]'
 dpkg-deb -c "$deb" | awk '{print $6 ($7 == "->" ? " -> " $8 : "")}' | sed 's|^\./|/|' >"$tmp/contents"
 for f in /usr/include/cablesim/cablesim.h /usr/include/cablesim/def.h /usr/include/cablesim/sim.h \
-    /usr/include/cablesim/loader.h /usr/include/cablesim/output.h "/usr/lib/.*libcablesim.so.$version" \
+    /usr/include/cablesim/loader.h /usr/include/cablesim/output.h /usr/include/cablesim/units.h \
+    "/usr/lib/.*libcablesim.so.$version" \
     "/usr/lib/.*libcablesim.so.0 -> libcablesim.so.$version" "/usr/lib/.*libcablesim.so -> libcablesim.so.0" \
     /usr/lib/.*libcablesim.a /usr/lib/.*pkgconfig/cablesim.pc /usr/lib/.*cmake/cablesim/cablesimConfig.cmake \
     /usr/lib/.*cmake/cablesim/cablesimTargets.cmake /usr/bin/cablesim /usr/share/man/man1/cablesim.1 \

@@ -1,8 +1,9 @@
 /** @file
  * cablesim: progressive-failure simulation of cable barriers struck by a vehicle. The umbrella header:
  * the engine's definitions (def.h) and its model, state, step and run (sim.h), model files (loader.h),
- * and a run's time histories and output files (output.h). Link with libcablesim (pkg-config cablesim, or
- * CMake's find_package(cablesim) and the target cablesim::cablesim). */
+ * a run's time histories and output files (output.h), and the US customary units in SI (units.h). Link
+ * with libcablesim (pkg-config cablesim, or CMake's find_package(cablesim) and the target
+ * cablesim::cablesim). */
 #ifndef CABLESIM_H
 #define CABLESIM_H
 
@@ -13,6 +14,7 @@
 #include "cablesim/loader.h"
 #include "cablesim/output.h"
 #include "cablesim/sim.h"
+#include "cablesim/units.h"
 
 #ifdef __cplusplus
 extern "C" {

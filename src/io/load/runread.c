@@ -1,5 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "load/runread.h"
+#include "cablesim/units.h"
 
 #include <errno.h>
 #include <json-c/json.h>
@@ -8,8 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define GRAVITY 9.80665 /* m/s^2 per g */
-#define WINDOW 0.050    /* s, the 50-ms average */
+#define WINDOW 0.050 /* s, the 50-ms average */
 
 /* ---- a CSV file in memory ---- */
 
@@ -157,7 +157,7 @@ static void derive(cs_trace *tr) {
     if (isnan(tr->t_end)) tr->t_end = tr->t[tr->n - 1];
     if (isnan(tr->max_decel_50ms_g) && tr->have[CS_TRACE_DECEL_50MS])
         for (size_t i = 0; i < tr->n; i++) {
-            double g = tr->y[CS_TRACE_DECEL_50MS][i] / GRAVITY;
+            double g = tr->y[CS_TRACE_DECEL_50MS][i] / CS_G0;
             if (isfinite(g) && !(g <= tr->max_decel_50ms_g))
                 tr->max_decel_50ms_g = g, tr->t_max_decel_50ms = tr->t[i];
         }
@@ -259,7 +259,7 @@ int cs_trace_read_run(const char *dir, cs_trace *tr, char *why, size_t why_size)
         double vx = strtod(cells[ivx], NULL), vy = strtod(cells[ivy], NULL), v = hypot(vx, vy);
         if (i == 0 && v > 0.0) u0[0] = vx / v, u0[1] = vy / v; /* the initial heading */
         tr->y[CS_TRACE_DECEL][i] = -(strtod(cells[iax], NULL) * u0[0] + strtod(cells[iay], NULL) * u0[1]);
-        tr->y[CS_TRACE_DECEL_50MS][i] = strtod(cells[id50], NULL) * GRAVITY;
+        tr->y[CS_TRACE_DECEL_50MS][i] = strtod(cells[id50], NULL) * CS_G0;
         tr->y[CS_TRACE_SPEED][i] = strtod(cells[isp], NULL);
         tr->y[CS_TRACE_PENETRATION][i] = strtod(cells[ipen], NULL);
         double tmax = NAN;

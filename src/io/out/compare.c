@@ -1,5 +1,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "out/compare.h"
+#include "cablesim/units.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -20,15 +21,15 @@ typedef struct figure {
 
 static const figure figures[CS_COMPARE_PLOTS] = {
     {"compare-deceleration", "deceleration along the initial heading", "deceleration (g)", NULL,
-     CS_TRACE_DECEL, 9.80665, 0},
+     CS_TRACE_DECEL, CS_G0, 0},
     {"compare-deceleration-50ms", "50-ms average deceleration", "deceleration (g)", NULL, CS_TRACE_DECEL_50MS,
-     9.80665, 0},
+     CS_G0, 0},
     {"compare-speed", "speed along the initial heading", "speed (m/s)", "speed (mph)", CS_TRACE_SPEED, 1.0,
-     1.0 / 0.44704},
+     1.0 / CS_MPH},
     {"compare-penetration", "penetration past the cable line", "penetration (m)", "penetration (ft)",
-     CS_TRACE_PENETRATION, 1.0, 1.0 / 0.3048},
+     CS_TRACE_PENETRATION, 1.0, 1.0 / CS_FT},
     {"compare-tension", "largest rope tension", "tension (kN)", "tension (kip)", CS_TRACE_TENSION, 1e3,
-     1e3 / 4448.2216152605},
+     1e3 / CS_KIP},
 };
 enum { WIDTH = 960, HEIGHT = 520 };
 
@@ -101,12 +102,12 @@ typedef struct param {
 static const param params[] = {
     P("max 50-ms deceleration", "g", NULL, 0, max_decel_50ms_g),
     P("time of the max 50-ms deceleration", "s", NULL, 0, t_max_decel_50ms),
-    P("max dynamic penetration", "m", "ft", 0.3048, max_penetration),
-    P("max barrier deflection", "m", "ft", 0.3048, max_deflection),
-    P("working width", "m", "ft", 0.3048, working_width),
-    P("speed at the end", "m/s", "mph", 0.44704, final_speed),
-    P("exit speed", "m/s", "mph", 0.44704, exit_speed),
-    P("max rope tension", "N", "kip", 4448.2216152605, max_tension),
+    P("max dynamic penetration", "m", "ft", CS_FT, max_penetration),
+    P("max barrier deflection", "m", "ft", CS_FT, max_deflection),
+    P("working width", "m", "ft", CS_FT, working_width),
+    P("speed at the end", "m/s", "mph", CS_MPH, final_speed),
+    P("exit speed", "m/s", "mph", CS_MPH, exit_speed),
+    P("max rope tension", "N", "kip", CS_KIP, max_tension),
     P("end of the record", "s", NULL, 0, t_end),
 };
 enum { PARAMS = sizeof params / sizeof params[0] };

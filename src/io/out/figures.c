@@ -1,6 +1,7 @@
 /* The figures of a run (figures.h). Every time series comes from the recorded frames (record.h), every
  * marked failure from the events; nothing here recomputes the physics. */
 #include "figures.h"
+#include "cablesim/units.h"
 #include "writers.h"
 
 #include <math.h>
@@ -8,8 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const double G0 = 9.80665, MPH = 0.44704, FT = 0.3048, KIP = 4448.2216152605,
-                    PI = 3.14159265358979323846;
+static const double PI = 3.14159265358979323846;
 static const double MARGIN = 8, SNAP_WIDTH = 1800, SNAP_HEADER = 150;
 enum { SNAPS = 6, NEAR_POSTS = 4 };
 
@@ -72,7 +72,7 @@ static void fig_deceleration(cs_plot *p, const cs_figure_data *d, double *t) {
     double ux = cos(d->in->scenario.angle), uy = sin(d->in->scenario.angle);
     for (int i = 0; i < n; i++) {
         const cs_vehicle_view *v = &r->vehicle[i];
-        raw[i] = -(v->acceleration[0] * ux + v->acceleration[1] * uy) / G0;
+        raw[i] = -(v->acceleration[0] * ux + v->acceleration[1] * uy) / CS_G0;
         /* the average exists once a whole window has passed */
         avg[i] = v->t > 0.05 + 0.5 * d->in->scenario.dt ? v->decel_50ms_g : NAN;
         if (isfinite(avg[i]) && (imax < 0 || avg[i] > avg[imax])) imax = i;
@@ -108,7 +108,7 @@ static void fig_speed(cs_plot *p, const cs_figure_data *d, double *t) {
     char title[TITLE_SIZE], note[128];
     cs_axes a;
     time_axes(&a, title, d, "speed of the CG along the initial travel direction", "speed (m/s)",
-              "speed (mph)", 1 / MPH, t, n);
+              "speed (mph)", 1 / CS_MPH, t, n);
     cs_axes_fit(&a, NULL, u, n);
     cs_axes_layout(p, &a, whole(p));
     cs_style s = line(cs_plot_palette(0), 3);
@@ -125,7 +125,7 @@ static void fig_speed(cs_plot *p, const cs_figure_data *d, double *t) {
         else
             snprintf(note, sizeof note, "%s at t = %.3f s, leaving at %.1f m/s (%.1f mph), its whole speed",
                      e->type == CS_EVENT_REDIRECTED ? "redirected" : "broke through", e->t, e->value,
-                     e->value / MPH);
+                     e->value / CS_MPH);
         cs_plot_label(p, &a, e->t, value_at(t, u, n, e->t), -12, 22, 1, note);
     }
     cs_plot_legend(p, &a, CS_LEGEND_BOTTOM_LEFT);
@@ -155,7 +155,7 @@ static void fig_penetration(cs_plot *p, const cs_figure_data *d, double *t) {
     char title[TITLE_SIZE], note[96];
     cs_axes a;
     time_axes(&a, title, d, "penetration past the attack face (y = 0)", "distance past the attack face (m)",
-              "distance past the attack face (ft)", 1 / FT, t, n);
+              "distance past the attack face (ft)", 1 / CS_FT, t, n);
     cs_axes_fit(&a, NULL, face, 3 * n); /* face, pen and cable follow each other */
     cs_axes_layout(p, &a, whole(p));
     /* widest first: where the curves coincide (the face pushing the cables) all three stay visible */
@@ -166,7 +166,7 @@ static void fig_penetration(cs_plot *p, const cs_figure_data *d, double *t) {
     cs_plot_line(p, &a, t, pen, n, &s_pen, "dynamic penetration (largest so far, any face corner)");
     cs_plot_line(p, &a, t, cable, n, &s_cable, "barrier deflection (furthest point of an intact cable)");
     if (imax >= 0) {
-        snprintf(note, sizeof note, "max %.2f m (%.1f ft)", pen[imax], pen[imax] / FT);
+        snprintf(note, sizeof note, "max %.2f m (%.1f ft)", pen[imax], pen[imax] / CS_FT);
         cs_plot_label(p, &a, t[imax], pen[imax], -8, -16, 1, note);
     }
     cs_plot_legend(p, &a, CS_LEGEND_BOTTOM_RIGHT);
@@ -185,7 +185,7 @@ static void fig_cables(cs_plot *p, const cs_figure_data *d, double *t) {
     char title[TITLE_SIZE], label[CS_LABEL_SIZE];
     cs_axes a;
     time_axes(&a, title, d, "tension of each cable (largest span)", "tension (kN)", "tension (kip)",
-              1e3 / KIP, t, n);
+              1e3 / CS_KIP, t, n);
     cs_axes_fit(&a, NULL, t + n, n * nc);
     int same = 1;
     for (int c = 0; c < b->cable_count; c++) {
@@ -197,13 +197,13 @@ static void fig_cables(cs_plot *p, const cs_figure_data *d, double *t) {
         double fu = b->cables[c].rope.nominal_strength;
         if (same && c > 0) break;
         snprintf(label, sizeof label, "rope strength Fu%s = %.0f kN (%.0f kip)", same ? "" : " of this cable",
-                 fu / 1e3, fu / KIP);
+                 fu / 1e3, fu / CS_KIP);
         cs_style s = dashed(same ? BLACK : cs_plot_palette(c), 1.5);
         cs_plot_hline(p, &a, fu / 1e3, &s, label);
     }
     for (int c = 0; c < nc; c++) {
         double h = c < b->cable_count ? b->cables[c].height : NAN;
-        snprintf(label, sizeof label, "cable %d at %.2f m (%.2f ft)", c, h, h / FT);
+        snprintf(label, sizeof label, "cable %d at %.2f m (%.2f ft)", c, h, h / CS_FT);
         cs_style s = line(cs_plot_palette(c), 2.5);
         cs_plot_line(p, &a, t, t + (size_t)(1 + c) * (size_t)n, n, &s, label);
     }
@@ -323,7 +323,7 @@ static void fig_posts(cs_plot *p, const cs_figure_data *d, double *t) {
     for (int k = 0; k < count; k++) {
         cs_style s = line(cs_plot_palette(k), k % 2 ? 2.2 : 6.5);
         int len = snprintf(label, sizeof label, "post %d at x = %.2f m (%.1f ft)", idx[k], posts[idx[k]].x,
-                           posts[idx[k]].x / FT);
+                           posts[idx[k]].x / CS_FT);
         int j = mirror_of(d, idx, k, moment, tilt, n);
         if (j >= 0) snprintf(label + len, sizeof label - (size_t)len, ": mirror image of post %d", idx[j]);
         cs_plot_line(p, &am, t, moment + (size_t)k * (size_t)n, n, &s, label);
@@ -631,7 +631,7 @@ static void fig_snapshots(cs_plot *p, const cs_figure_data *d, double *t) {
              d->in->name, g.count);
     cs_plot_text(p, MARGIN + 10, MARGIN + 16, 20, 1, 0, text);
     snprintf(text, sizeof text, "cable tension / largest recorded (%.0f kN, %.0f kip)", g.tmax / 1e3,
-             g.tmax / KIP);
+             g.tmax / CS_KIP);
     cs_plot_colorbar(p, (cs_box){MARGIN + 40, MARGIN + 80, 480, 20}, text);
     cs_axes key;
     cs_axes_init(&key, NULL, NULL, NULL);

@@ -1,9 +1,8 @@
 /* The readable summary printed after a run: SI first, US units beside. */
 #include <math.h>
 
+#include "cablesim/units.h"
 #include "writers.h"
-
-static const double MPH = 0.44704, FT = 0.3048, KIP = 4448.2216152605;
 
 /* Events that are the barrier or the vehicle giving way, listed one by one; the posts' yielding (a hinge
  * at the base, a footing turning in the soil) is counted instead. */
@@ -69,7 +68,7 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
                 s.outcome == CS_OVERRIDE    ? "rode over the cables"
                 : s.outcome == CS_UNDERRIDE ? "ran under the cables"
                                             : "broke through",
-                s.exit_speed_mps, s.exit_speed_mps / MPH);
+                s.exit_speed_mps, s.exit_speed_mps / CS_MPH);
     else if (s.outcome == CS_NO_CONTACT)
         fprintf(f, "the vehicle never touched the barrier (t = %.3f s)\n", s.t_end_s);
     else if (s.outcome == CS_DID_NOT_CONVERGE)
@@ -79,7 +78,7 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
                 s.t_end_s);
     else if (s.outcome == CS_REDIRECTED)
         fprintf(f, "the vehicle was redirected, exit speed %.2f m/s (%.1f mph, %.1f km/h) at %.1f deg\n",
-                s.exit_speed_mps, s.exit_speed_mps / MPH, s.exit_speed_mps * 3.6, s.exit_angle_deg);
+                s.exit_speed_mps, s.exit_speed_mps / CS_MPH, s.exit_speed_mps * 3.6, s.exit_angle_deg);
     else
         fprintf(f, "the time limit was reached at t = %.3f s\n", s.t_end_s);
     if (info) {
@@ -89,21 +88,21 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
     }
     fprintf(f,
             "  impact               %.2f m/s (%.1f mph), %.1f deg, x = %.2f m (%.2f ft), %.0f kg (%.0f lb)\n",
-            sc->speed, sc->speed / MPH, sc->angle * 180 / 3.14159265358979323846, sc->impact_x,
-            sc->impact_x / FT, in->vehicle.mass, in->vehicle.mass / 0.45359237);
+            sc->speed, sc->speed / CS_MPH, sc->angle * 180 / 3.14159265358979323846, sc->impact_x,
+            sc->impact_x / CS_FT, in->vehicle.mass, in->vehicle.mass / CS_LB);
     fprintf(f, "  max 50-ms deceleration %.3f g at t = %.3f s\n", s.max_50ms_decel_g, s.t_max_50ms_decel_s);
     double pen = s.max_dynamic_penetration_m;
     if (cs_penetration_is_final(s.outcome))
-        fprintf(f, "  max penetration      %.3f m (%.2f ft)\n", pen, pen / FT);
+        fprintf(f, "  max penetration      %.3f m (%.2f ft)\n", pen, pen / CS_FT);
     else
-        fprintf(f, "  penetration          beyond %.3f m (%.2f ft): %s\n", pen, pen / FT,
+        fprintf(f, "  penetration          beyond %.3f m (%.2f ft): %s\n", pen, pen / CS_FT,
                 cs_outcome_through(s.outcome) ? "the vehicle got through"
                                               : "the run ended with the vehicle still going");
     fprintf(f, "  max deflection       %.3f m (%.2f ft)\n", s.max_barrier_deflection_m,
-            s.max_barrier_deflection_m / FT);
-    fprintf(f, "  working width        %.3f m (%.2f ft)\n", s.working_width_m, s.working_width_m / FT);
+            s.max_barrier_deflection_m / CS_FT);
+    fprintf(f, "  working width        %.3f m (%.2f ft)\n", s.working_width_m, s.working_width_m / CS_FT);
     fprintf(f, "  max cable tension    %.1f kN (%.1f kip)\n", s.max_cable_tension_n / 1e3,
-            s.max_cable_tension_n / KIP);
+            s.max_cable_tension_n / CS_KIP);
     fprintf(f, "  cables broken        %d of %d\n", s.cables_broken, in->barrier.cable_count);
     fprintf(f,
             "  posts failed         %d left, %d right (of %d): rotation limit %d + %d, shear %d + %d, "
@@ -118,10 +117,10 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
         fprintf(f, "  %s anchor         %s, moved %.3f m of %.3f m (capacity %.1f kN, %.1f kip)\n",
                 a ? "end  " : "start", cs_anchor_status_name(&av),
                 hypot(av.displacement[0], av.displacement[1]), av.travel_limit, av.capacity / 1e3,
-                av.capacity / KIP);
+                av.capacity / CS_KIP);
     }
     fprintf(f, "  kinetic energy       %.1f kJ (%.0f ft-kip)\n", s.initial_kinetic_energy_j / 1e3,
-            s.initial_kinetic_energy_j / (KIP * FT));
+            s.initial_kinetic_energy_j / (CS_KIP * CS_FT));
     fprintf(f, "  energy balance error %.3f %%%s\n", 100 * s.energy_balance_error,
             fabs(s.energy_balance_error) > CS_LEDGER_WARNING
                 ? " (WARNING: over 1%, the ledger does not close: docs/robustness.md)"

@@ -11,8 +11,6 @@
 #include "load/schema.h"
 #include "writers.h"
 
-static const double G0 = 9.80665;
-
 typedef struct jw {
     cs_wout w;
     char what[96]; /* names the value being written, for the message of a non-finite one */
@@ -114,7 +112,7 @@ static double s_time(const cs_record *r, const cs_model_input *in, int f, int ar
 static double s_decel(const cs_record *r, const cs_model_input *in, int f, int arg) {
     (void)arg;
     const double *a = r->vehicle[f].acceleration;
-    return -(a[0] * cos(in->scenario.angle) + a[1] * sin(in->scenario.angle)) / G0;
+    return -(a[0] * cos(in->scenario.angle) + a[1] * sin(in->scenario.angle)) / CS_G0;
 }
 /* the 50-ms average exists once a whole window has passed */
 static double s_decel50(const cs_record *r, const cs_model_input *in, int f, int arg) {

@@ -1,10 +1,10 @@
 #include "rating.h"
+#include "cablesim/units.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-#define MPH 0.44704
 #define KMH (1.0 / 3.6)
 #define DEG (3.14159265358979323846 / 180.0)
 
@@ -12,7 +12,7 @@ cs_rating_rules cs_default_rating_rules(void) {
     cs_rating_rules r;
     const double lo[4] = {28.0, 38.0, 47.0, 57.0}, hi[4] = {37.9, 46.9, 56.9, HUGE_VAL};
     for (int i = 0; i < 4; i++)
-        r.window_low[i] = lo[i] * MPH, r.window_high[i] = hi[i] * MPH;
+        r.window_low[i] = lo[i] * CS_MPH, r.window_high[i] = hi[i] * CS_MPH;
     r.barrier_depth = 0.1;         /* 4-in posts and rails: docs/ratings.md */
     r.head_on_tolerance = 1 * DEG; /* docs/ratings.md */
     return r;
@@ -104,7 +104,7 @@ int cs_rating_class_parse(cs_standard standard, const char *name, char *vehicle_
 int cs_rating_speed_for(const cs_rating_rules *rules, const char *vehicle_class, double speed) {
     int i = class_index(vehicle_class ? vehicle_class : "M");
     if (i < 0) return 0;
-    double v = round(speed / MPH * 10.0) * MPH / 10.0;
+    double v = round(speed / CS_MPH * 10.0) * CS_MPH / 10.0;
     for (int k = 0; k < 3; k++) {
         int w = (classes[i].mph[k] - 30) / 10;
         double high = k == 0 ? HUGE_VAL : rules->window_high[w]; /* the highest designation is open */
@@ -200,7 +200,7 @@ cs_rating cs_rate_run(cs_standard standard, const char *vehicle_class, double sp
         int mph[3];
         cs_rating_class_speeds(vehicle_class, mph);
         snprintf(r.note, sizeof r.note, "%.1f mph is below the lowest speed of its %s vehicle, %d mph",
-                 round(speed / MPH * 10.0) / 10.0, vehicle_class, mph[2]);
+                 round(speed / CS_MPH * 10.0) / 10.0, vehicle_class, mph[2]);
     } else if (r.through) {
         snprintf(r.note, sizeof r.note, "%s",
                  standard == CS_ASTM_F2656 ? "the vehicle got through"
