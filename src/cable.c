@@ -111,9 +111,12 @@ void cs_cable_commit(const cs_model *model, int c, cs_state *s) {
     if (cs->status != CS_CABLE_INTACT) return;
     const cs_rope *r = &cm->rope;
     double worst = 0.0, tmax = 0.0, end = 0.0;
-    for (int i = 0; i + 1 < cs->node_count; i++) /* carry the plastic strain with the rope that slid */
-        cs->ep_mix[i] = cs_span_plastic(cs, i, cs->m[i], cs->m[i + 1]);
-    memcpy(cs->ep, cs->ep_mix, (size_t)(cs->node_count - 1) * sizeof *cs->ep);
+    double left = 0.0; /* carry the plastic strain with the rope that slid: in place, span i - 1's kept */
+    for (int i = 0; i + 1 < cs->node_count; i++) {
+        double own = cs->ep[i], right = i + 2 < cs->node_count ? cs->ep[i + 1] : 0.0;
+        cs->ep[i] = cs_span_plastic_of(cs, i, cs->m[i], cs->m[i + 1], left, own, right);
+        left = own;
+    }
     for (int i = 0; i + 1 < cs->node_count; i++) {
         double sm = cs->m[i + 1] - cs->m[i], e;
         int yields;

@@ -137,7 +137,6 @@ typedef struct cs_cable_state {
     double *m;                          /* [max_nodes] material coordinate, m */
     double *m_commit;                   /* [max_nodes] at the end of the previous step */
     double *ep;                         /* [max_nodes - 1] plastic strain of each span (committed) */
-    double *ep_mix;                     /* [max_nodes - 1] scratch of the commit */
     double *tension;                    /* [max_nodes - 1] N */
     double *pos;                        /* [max_nodes * 3] node positions, m */
     double corner_z[CS_CORNERS];        /* body-frame z of the contact at each corner, m */
@@ -199,9 +198,7 @@ struct cs_state {
         double uplift;      /* the ropes' upward pull at the last commit, N */
     } anchors[2];
 
-    double *rail_plastic; /* [rail_count * post_count] each span's plastic change of length, m (rail.c) */
-    double *rail_pos;     /* [post_count * rail_count * 3] each post's rail points where it was last placed */
-    double *rail_tilt;    /* [post_count * 2] the tilt they were placed at */
+    double *rail_plastic;  /* [rail_count * post_count] each span's plastic change of length, m (rail.c) */
     double e_rail_elastic; /* the rails' elastic energy at the last commit, J (rail.c) */
 
     /* energy accumulators, J: the barrier's (friction: over supports and on the face) and the tyres' */
@@ -260,6 +257,9 @@ double cs_span_sag(const cs_rope *rope, const double *chord);
 /* Plastic strain of span i with its ends at material coordinates lo and hi (the rope that slid in brings
  * its own). */
 double cs_span_plastic(const cs_cable_state *cs, int span, double lo, double hi);
+/* The same from given committed strains of the span (own) and its neighbours (left, right). */
+double cs_span_plastic_of(const cs_cable_state *cs, int span, double lo, double hi, double left, double own,
+                          double right);
 /* Every span's tension, and its chord into chords if not NULL. */
 void cs_cable_update_tensions(const cs_cable_model *cm, cs_cable_state *cs, double *chords);
 /* Span i's tension from its ends as they stand (the chord into chord unless NULL). With

@@ -12,6 +12,7 @@
  * a post with mass (its swing, below); a massless post is in balance at once. */
 #include "rows.h"
 #include "vec3.h"
+#include "work.h"
 
 #include <math.h>
 #include <string.h>
@@ -31,10 +32,13 @@ void cs_post_place_nodes(const cs_model *model, cs_state *s, int p, const double
     double sn, g, c;
     cs_post_axis_terms(v2_norm(tilt[0], tilt[1]), &sn, &g, &c);
     if (axis) cs_post_axis_jacobian_from(tilt, sn, g, axis);
-    for (int r = 0; r < model->rail_count; r++) /* the rails' points, kept with the tilt they are at */
-        cs_post_attachment_from(model, p, tilt, sn, c, model->rails[r].z,
-                                s->rail_pos + 3 * ((size_t)p * (size_t)model->rail_count + (size_t)r));
-    if (model->rail_count) s->rail_tilt[2 * p] = tilt[0], s->rail_tilt[2 * p + 1] = tilt[1];
+    cs_work *w = s->work; /* the rails' points, kept in the workspace with the tilt they are at */
+    if (w && model->rail_count) {
+        for (int r = 0; r < model->rail_count; r++)
+            cs_post_attachment_from(model, p, tilt, sn, c, model->rails[r].z,
+                                    w->rail_pos + 3 * ((size_t)p * (size_t)model->rail_count + (size_t)r));
+        w->rail_tilt[2 * p] = tilt[0], w->rail_tilt[2 * p + 1] = tilt[1];
+    }
     for (int k = 0; k < model->cable_count; k++) {
         cs_cable_state *cs = &s->cables[k];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;

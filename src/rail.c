@@ -15,6 +15,7 @@
  * Half of each segment's steel swings with each of its posts (model.c). */
 #include "rows.h"
 #include "vec3.h"
+#include "work.h"
 
 #include <math.h>
 #include <string.h>
@@ -32,12 +33,13 @@ typedef struct bar {
     int capped;
 } bar;
 
-/* Post p's point on rail r at a tilt: as placed (cs_post_place_nodes) if it is the tilt placed, else found.
- */
+/* Post p's point on rail r at a tilt: as placed (cs_post_place_nodes, kept in the workspace) if it is the
+ * tilt placed last, else found (the same numbers: a point is a function of the tilt alone). */
 static void rail_point(const cs_model *model, const cs_state *s, int r, int p, const double *tilt,
                        double *out) {
-    if (tilt[0] == s->rail_tilt[2 * p] && tilt[1] == s->rail_tilt[2 * p + 1])
-        v3_copy(out, s->rail_pos + 3 * ((size_t)p * (size_t)model->rail_count + (size_t)r));
+    const cs_work *w = s->work;
+    if (w && tilt[0] == w->rail_tilt[2 * p] && tilt[1] == w->rail_tilt[2 * p + 1])
+        v3_copy(out, w->rail_pos + 3 * ((size_t)p * (size_t)model->rail_count + (size_t)r));
     else
         cs_post_attachment(model, p, tilt, model->rails[r].z, out);
 }

@@ -117,15 +117,21 @@ static double clamp_to(double x, double hi) {
 /* Plastic strain of span i with its ends at material coordinates lo and hi: the rope it kept since the
  * last commit at its own plastic strain, plus the rope that slid in across either end at the plastic
  * strain of the span it came from (the permanent stretch travels with the rope; first-order upwind). */
-double cs_span_plastic(const cs_cable_state *cs, int i, double lo, double hi) {
+double cs_span_plastic_of(const cs_cable_state *cs, int i, double lo, double hi, double left, double own,
+                          double right) {
     double s = hi - lo;
-    if (s <= 1e-12) return cs->ep[i];
+    if (s <= 1e-12) return own;
     double gl = i > 0 ? clamp_to(cs->m_commit[i] - lo, s) : 0.0;
     double gr = i + 2 < cs->node_count ? clamp_to(hi - cs->m_commit[i + 1], s - gl) : 0.0;
-    double e = cs->ep[i] * (s - gl - gr);
-    if (gl > 0.0) e += cs->ep[i - 1] * gl;
-    if (gr > 0.0) e += cs->ep[i + 1] * gr;
+    double e = own * (s - gl - gr);
+    if (gl > 0.0) e += left * gl;
+    if (gr > 0.0) e += right * gr;
     return e / s;
+}
+
+double cs_span_plastic(const cs_cable_state *cs, int i, double lo, double hi) {
+    return cs_span_plastic_of(cs, i, lo, hi, i > 0 ? cs->ep[i - 1] : 0.0, cs->ep[i],
+                              i + 2 < cs->node_count ? cs->ep[i + 1] : 0.0);
 }
 
 double cs_span_tension_chord(const cs_cable_model *cm, const cs_cable_state *cs, int i, double *d) {

@@ -17,9 +17,7 @@ static int allocate(const cs_model *model, cs_state *s, int with_workspace) {
     if (!s->cables || !s->posts) return -1;
     s->cable_count_alloc = nc;
     s->rail_plastic = calloc((size_t)model->rail_count * (size_t)np + 1, sizeof *s->rail_plastic);
-    s->rail_pos = calloc((size_t)model->rail_count * (size_t)np * 3 + 1, sizeof *s->rail_pos);
-    s->rail_tilt = calloc((size_t)np * 2 + 1, sizeof *s->rail_tilt);
-    if (!s->rail_plastic || !s->rail_pos || !s->rail_tilt) return -1;
+    if (!s->rail_plastic) return -1;
     for (int c = 0; c < nc; c++) {
         cs_cable_state *cs = &s->cables[c];
         cs->node = calloc((size_t)nn, sizeof *cs->node);
@@ -27,11 +25,9 @@ static int allocate(const cs_model *model, cs_state *s, int with_workspace) {
         cs->m = calloc((size_t)nn, sizeof *cs->m);
         cs->m_commit = calloc((size_t)nn, sizeof *cs->m_commit);
         cs->ep = calloc((size_t)nn, sizeof *cs->ep);
-        cs->ep_mix = calloc((size_t)nn, sizeof *cs->ep_mix);
         cs->tension = calloc((size_t)nn, sizeof *cs->tension);
         cs->pos = calloc((size_t)nn * 3, sizeof *cs->pos);
-        if (!cs->node || !cs->where || !cs->m || !cs->m_commit || !cs->ep || !cs->ep_mix || !cs->tension ||
-            !cs->pos)
+        if (!cs->node || !cs->where || !cs->m || !cs->m_commit || !cs->ep || !cs->tension || !cs->pos)
             return -1;
     }
     if (!with_workspace) return 0;
@@ -40,6 +36,9 @@ static int allocate(const cs_model *model, cs_state *s, int with_workspace) {
     s->work = calloc(1, sizeof *s->work);
     if (!s->events || !s->speed_ring || !s->work) return -1;
     cs_work *w = s->work;
+    w->rail_pos = calloc((size_t)model->rail_count * (size_t)np * 3 + 1, sizeof *w->rail_pos);
+    w->rail_tilt = calloc((size_t)np * 2 + 1, sizeof *w->rail_tilt);
+    if (!w->rail_pos || !w->rail_tilt) return -1;
     for (int k = 0; k < CS_PATH_LEVELS; k++) {
         w->step_start[k] = calloc(1, sizeof *w->step_start[k]);
         if (!w->step_start[k] || allocate(model, w->step_start[k], 0) != 0) return -1;
@@ -64,8 +63,7 @@ void cs_state_free(cs_state *s) {
     if (s->cables) {
         for (int c = 0; c < s->cable_count_alloc; c++) {
             cs_cable_state *cs = &s->cables[c];
-            free(cs->node), free(cs->where), free(cs->m), free(cs->m_commit), free(cs->ep), free(cs->ep_mix),
-                free(cs->tension);
+            free(cs->node), free(cs->where), free(cs->m), free(cs->m_commit), free(cs->ep), free(cs->tension);
             free(cs->pos);
         }
     }
@@ -74,10 +72,10 @@ void cs_state_free(cs_state *s) {
         for (int k = 0; k < CS_PATH_LEVELS; k++)
             cs_state_free(s->work->step_start[k]);
         cs_state_free(s->work->trial);
+        free(s->work->rail_pos), free(s->work->rail_tilt);
         free(s->work);
     }
-    free(s->cables), free(s->posts), free(s->events), free(s->speed_ring), free(s->rail_plastic),
-        free(s->rail_pos), free(s->rail_tilt);
+    free(s->cables), free(s->posts), free(s->events), free(s->speed_ring), free(s->rail_plastic);
     free(s);
 }
 
@@ -89,11 +87,8 @@ void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src) {
     *dst = *src;
     dst->cables = keep.cables, dst->posts = keep.posts, dst->events = keep.events;
     dst->speed_ring = keep.speed_ring, dst->work = keep.work, dst->rail_plastic = keep.rail_plastic;
-    dst->rail_pos = keep.rail_pos, dst->rail_tilt = keep.rail_tilt;
     size_t nr = (size_t)model->rail_count, np = (size_t)model->post_count;
     memcpy(dst->rail_plastic, src->rail_plastic, nr * np * sizeof *dst->rail_plastic);
-    memcpy(dst->rail_pos, src->rail_pos, nr * np * 3 * sizeof *dst->rail_pos);
-    memcpy(dst->rail_tilt, src->rail_tilt, np * 2 * sizeof *dst->rail_tilt);
     dst->cable_count_alloc = keep.cable_count_alloc;
     for (int c = 0; c < model->cable_count; c++) {
         cs_cable_state *d = &dst->cables[c], k = *d;
@@ -101,7 +96,7 @@ void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src) {
         size_t n = (size_t)o->node_count;
         *d = *o;
         d->node = k.node, d->where = k.where, d->m = k.m, d->m_commit = k.m_commit, d->ep = k.ep;
-        d->ep_mix = k.ep_mix, d->tension = k.tension, d->pos = k.pos;
+        d->tension = k.tension, d->pos = k.pos;
         memcpy(d->node, o->node, n * sizeof *d->node);
         memcpy(d->where, o->where, (size_t)model->post_count * sizeof *d->where);
         memcpy(d->m, o->m, n * sizeof *d->m);
