@@ -18,8 +18,6 @@
 #include "commands.h"
 #include "study/rating.h"
 
-#define CS_PI 3.14159265358979323846
-
 static const char rate_usage[] =
     "usage: cablesim rate FILE --standard astm-f2656|sd-std-02.01|sd-std-02.01a [--class CLASS]\n"
     "                     [--set PATH=VALUE]...\n"

@@ -30,7 +30,6 @@
 
 #include <math.h>
 
-#define CS_PI 3.14159265358979323846
 #define CS_ANCHOR_YIELD_STRAIN 0.02 /* movement to mobilise the passive resistance, over the depth */
 #define CS_HHT_ALPHA (-0.1)
 #define CS_HHT_BETA (0.25 * (1.0 - CS_HHT_ALPHA) * (1.0 - CS_HHT_ALPHA))

@@ -6,7 +6,6 @@
 #include <math.h>
 #include <string.h>
 
-#define CS_PI 3.14159265358979323846
 /* The post-in-soil model's two calibrated values (docs/assumptions.md, docs/theory.md): fitted on the odd
  * bogie tests (NPGB-1, 3, 5, 7, 9), checked on the even ones. CS_SOIL_* may be set when building, for
  * a calibration study. */

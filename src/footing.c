@@ -20,7 +20,6 @@
 
 #include <math.h>
 
-#define CS_PI 3.14159265358979323846
 #define CS_WEDGE_REF_WIDTH (4.03 * CS_IN) /* the bogie tests' W6x16 flange, m */
 #define CS_WEDGE_REF_DEPTH (40.0 * CS_IN) /* their embedment, about 40 in (864-1092 mm), m */
 

@@ -222,7 +222,7 @@ static int check_vehicle(const cs_vehicle_def *v, cs_error *err) {
 static int check_scenario(const cs_scenario_def *s, cs_error *err) {
     if (!non_negative(s->speed) || s->speed > 100.0)
         return fail(err, "scenario: speed must be in [0, 100] m/s");
-    if (!(s->angle > 0.0 && s->angle < 3.14159265358979))
+    if (!(s->angle > 0.0 && s->angle < CS_PI))
         return fail(err, "scenario: angle must be between 0 and 180 degrees (exclusive)");
     if (!isfinite(s->impact_x)) return fail(err, "scenario: impact point is not a number");
     if (!non_negative(s->start_gap)) return fail(err, "scenario: start gap must be >= 0");

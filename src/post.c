@@ -194,17 +194,6 @@ double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int p) {
     return entry;
 }
 
-/* A post whose own solve stalls far from balance has no equilibrium near its tilt, the ropes sliding
- * through it: a post on its plateau under the ropes' downward pull (P-delta) past the point where
- * tilting further adds more moment than it takes. A real post swings the way the unbalanced moment
- * turns it until the moment balances again. Follow that: steps of CS_FALL_STEP along the residual
- * (re-aimed at each step) until it turns back, then bisect the last step to where it vanishes; no
- * further than the rotation limit, where a post still unbalanced fails at the next check. The energy
- * the ropes give up on the way beyond what the post and friction take is what the step's ledger
- * books as released (step.c). */
-#define CS_FALL_STEP 0.01  /* rad */
-#define CS_FALL_STALL 1e-2 /* residual, of the capacity, that counts as no equilibrium near */
-
 /* End of step: plastic rotation (radial return) and its work, base shear and axial pull. */
 void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     cs_post_state *ps = &s->posts[p];

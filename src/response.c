@@ -74,7 +74,7 @@ static void end_run(const cs_model *model, cs_state *s, cs_outcome outcome, doub
         cs_event_add(model, s, CS_EVENT_STOPPED, CS_ELEMENT_VEHICLE, 0, value);
     } else if (cs_outcome_exits(outcome)) {
         s->summary.exit_speed_mps = value;
-        s->summary.exit_angle_deg = atan2(-s->vel[1], fabs(s->vel[0])) * 180.0 / 3.14159265358979323846;
+        s->summary.exit_angle_deg = atan2(-s->vel[1], fabs(s->vel[0])) / CS_DEG;
         cs_event_add(model, s, outcome == CS_REDIRECTED ? CS_EVENT_REDIRECTED : CS_EVENT_BREAKTHROUGH,
                      CS_ELEMENT_VEHICLE, 0, value);
     }

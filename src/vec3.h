@@ -3,9 +3,9 @@
 #ifndef CS_VEC3_H
 #define CS_VEC3_H
 
-#include <math.h>
+#include "cablesim/units.h"
 
-#define CS_PI 3.14159265358979323846
+#include <math.h>
 
 static inline void v3_set(double *r, double x, double y, double z) {
     r[0] = x, r[1] = y, r[2] = z;

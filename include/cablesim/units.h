@@ -6,6 +6,8 @@
 #ifndef CABLESIM_UNITS_H
 #define CABLESIM_UNITS_H
 
+#define CS_PI 3.14159265358979323846 /**< pi */
+#define CS_DEG (CS_PI / 180.0)       /**< degree, rad */
 #define CS_IN 0.0254                 /**< inch, m */
 #define CS_FT 0.3048                 /**< foot, m */
 #define CS_MPH 0.44704               /**< mile per hour, m/s */

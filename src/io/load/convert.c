@@ -7,11 +7,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cablesim/units.h"
 #include "loader_int.h"
 
 enum { MAX_POSTS = 10000 };
 static const double POS_TOL = 1e-3; /* m: two positions closer than this are the same */
-static const double PI = 3.14159265358979323846;
 
 static const cs_node *at(const cs_node *map, const char *key) {
     const cs_node *n = cs_node_get(map, key);
@@ -41,9 +41,9 @@ static int read_value(cs_loader *l, const cs_node *n, const cs_field *f, double 
         bad = "must not be negative";
     else if ((f->flags & CS_MAX1) && *out > 1)
         bad = "must be at most 1";
-    else if ((f->flags & CS_MAX90) && *out > PI / 2 + 1e-12)
+    else if ((f->flags & CS_MAX90) && *out > CS_PI / 2 + 1e-12)
         bad = "must be at most 90 deg";
-    else if ((f->flags & CS_MAX180) && *out >= PI)
+    else if ((f->flags & CS_MAX180) && *out >= CS_PI)
         bad = "must be below 180 deg";
     if (bad) {
         cs_err_node(l, n, 0, "'%s' %s (expected %s)", n->text, bad, hint);

@@ -9,7 +9,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const double PI = 3.14159265358979323846;
 static const double MARGIN = 8, SNAP_WIDTH = 1800, SNAP_HEADER = 150;
 enum { SNAPS = 6, NEAR_POSTS = 4 };
 
@@ -278,7 +277,7 @@ static void fig_posts(cs_plot *p, const cs_figure_data *d, double *t) {
         for (int i = 0, failed = 0; i < n; i++) {
             const cs_post_view *v = &r->posts[(size_t)i * (size_t)np + (size_t)idx[k]];
             moment[(size_t)k * (size_t)n + (size_t)i] = failed ? NAN : v->base_moment / 1e3;
-            tilt[(size_t)k * (size_t)n + (size_t)i] = failed ? NAN : v->tilt * 180 / PI;
+            tilt[(size_t)k * (size_t)n + (size_t)i] = failed ? NAN : v->tilt * 180 / CS_PI;
             failed = post_rank(v->status) == 2;
         }
     char title[TITLE_SIZE], label[CS_LABEL_SIZE], mtitle[TITLE_SIZE], ttitle[TITLE_SIZE];
@@ -295,7 +294,7 @@ static void fig_posts(cs_plot *p, const cs_figure_data *d, double *t) {
     cs_axes_fit(&at, NULL, tilt, n * count);
     for (int k = 0; k < count && n > 0; k++) {
         cs_axes_fit_point(&am, NAN, r->posts[idx[k]].moment_capacity / 1e3);
-        cs_axes_fit_point(&at, NAN, posts[idx[k]].rotation_limit * 180 / PI);
+        cs_axes_fit_point(&at, NAN, posts[idx[k]].rotation_limit * 180 / CS_PI);
     }
     cs_axes_layout(p, &am, (cs_box){MARGIN, MARGIN + 40, p->width - 2 * MARGIN, half});
     cs_axes_layout(p, &at, (cs_box){MARGIN, MARGIN + 40 + half, p->width - 2 * MARGIN, half});
@@ -316,8 +315,8 @@ static void fig_posts(cs_plot *p, const cs_figure_data *d, double *t) {
             snprintf(label + len, sizeof label - (size_t)len, ")");
             cs_plot_hline(p, &am, cap / 1e3, &s, label);
         }
-        snprintf(label, sizeof label, "rotation limit %.0f deg", lim * 180 / PI);
-        if (new_lim) cs_plot_hline(p, &at, lim * 180 / PI, &s, label);
+        snprintf(label, sizeof label, "rotation limit %.0f deg", lim * 180 / CS_PI);
+        if (new_lim) cs_plot_hline(p, &at, lim * 180 / CS_PI, &s, label);
     }
     /* a wide line under a narrow one: mirror posts of a centred impact coincide and both show */
     for (int k = 0; k < count; k++) {
@@ -610,8 +609,8 @@ static void draw_view(cs_plot *p, const cs_figure_data *d, const snap_geometry *
         for (int k = 0; k < 2; k++) {
             double cu[24], cw[24], pt[3];
             for (int j = 0; j < 24; j++) {
-                to_world(v, bd.axle[k] + bd.wheel_r * cos(j * PI / 12), 0,
-                         bd.wheel_z + bd.wheel_r * sin(j * PI / 12), pt);
+                to_world(v, bd.axle[k] + bd.wheel_r * cos(j * CS_PI / 12), 0,
+                         bd.wheel_z + bd.wheel_r * sin(j * CS_PI / 12), pt);
                 cu[j] = pt[1], cw[j] = pt[2];
             }
             cs_rgb tyre = {0.25, 0.25, 0.25};

@@ -1,6 +1,7 @@
 /* The plotting layer (plot.h) on cairo's image, SVG and PDF surfaces. Text uses cairo's own font
  * selection (DejaVu Sans, or whatever fontconfig gives for "sans-serif"). */
 #include "plot.h"
+#include "cablesim/units.h"
 
 #include <errno.h>
 #include <math.h>
@@ -11,7 +12,6 @@
 #include <fontconfig/fontconfig.h>
 
 static const char FONT[] = "DejaVu Sans";
-static const double PI = 3.14159265358979323846;
 static const double TICK_FONT = 15, LABEL_FONT = 16, TITLE_FONT = 18, LEGEND_FONT = 14, NOTE_FONT = 14;
 static const cs_rgb INK = {0.15, 0.15, 0.15}, GRID = {0.86, 0.86, 0.86};
 
@@ -290,11 +290,11 @@ void cs_axes_layout(cs_plot *p, cs_axes *a, cs_box panel) {
                   b->y + b->h + 14 + (a->xcat ? 2.8 : 1.6) * TICK_FONT + 0.8 * LABEL_FONT, LABEL_FONT, 0, 0.5,
                   0, 0, a->xlabel);
     if (a->ylabel)
-        draw_text(p, NULL, panel.x + 0.9 * LABEL_FONT, b->y + 0.5 * b->h, LABEL_FONT, 0, 0.5, -PI / 2, 0,
+        draw_text(p, NULL, panel.x + 0.9 * LABEL_FONT, b->y + 0.5 * b->h, LABEL_FONT, 0, 0.5, -CS_PI / 2, 0,
                   a->ylabel);
     if (a->y2label)
         draw_text(p, NULL, panel.x + panel.w - a->legend_width - 0.9 * LABEL_FONT - 8, b->y + 0.5 * b->h,
-                  LABEL_FONT, 0, 0.5, PI / 2, 0, a->y2label);
+                  LABEL_FONT, 0, 0.5, CS_PI / 2, 0, a->y2label);
     cs_plot_log *log = p->log;
     if (log && log->panel_count++ < CS_PLOT_LOG_PANELS) {
         cs_plot_logged_panel *q = &log->panel[log->panel_count - 1];
@@ -329,7 +329,7 @@ static void draw_marker(cairo_t *cr, double x, double y, cs_marker m, double siz
     case CS_MARK_NONE:
         return;
     case CS_MARK_CIRCLE:
-        cairo_arc(cr, x, y, r, 0, 2 * PI);
+        cairo_arc(cr, x, y, r, 0, 2 * CS_PI);
         break;
     case CS_MARK_SQUARE:
         cairo_rectangle(cr, x - r, y - r, 2 * r, 2 * r);

@@ -88,8 +88,8 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
     }
     fprintf(f,
             "  impact               %.2f m/s (%.1f mph), %.1f deg, x = %.2f m (%.2f ft), %.0f kg (%.0f lb)\n",
-            sc->speed, sc->speed / CS_MPH, sc->angle * 180 / 3.14159265358979323846, sc->impact_x,
-            sc->impact_x / CS_FT, in->vehicle.mass, in->vehicle.mass / CS_LB);
+            sc->speed, sc->speed / CS_MPH, sc->angle / CS_DEG, sc->impact_x, sc->impact_x / CS_FT,
+            in->vehicle.mass, in->vehicle.mass / CS_LB);
     fprintf(f, "  max 50-ms deceleration %.3f g at t = %.3f s\n", s.max_50ms_decel_g, s.t_max_50ms_decel_s);
     double pen = s.max_dynamic_penetration_m;
     if (cs_penetration_is_final(s.outcome))

@@ -29,7 +29,7 @@ static display display_of(const char *si) {
     static const display known[] = {
         {"m", "m", 1, "ft", 1 / CS_FT},       {"m/s", "m/s", 1, "mph", 1 / CS_MPH},
         {"N", "kN", 1e-3, "kip", 1 / CS_KIP}, {"J", "kJ", 1e-3, NULL, 0},
-        {"Pa", "kPa", 1e-3, NULL, 0},         {"rad", "deg", 180 / 3.14159265358979323846, NULL, 0},
+        {"Pa", "kPa", 1e-3, NULL, 0},         {"rad", "deg", 1 / CS_DEG, NULL, 0},
     };
     for (size_t i = 0; si && i < sizeof known / sizeof known[0]; i++)
         if (strcmp(si, known[i].si) == 0) return known[i];

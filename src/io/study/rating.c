@@ -6,15 +6,14 @@
 #include <string.h>
 
 #define KMH (1.0 / 3.6)
-#define DEG (3.14159265358979323846 / 180.0)
 
 cs_rating_rules cs_default_rating_rules(void) {
     cs_rating_rules r;
     const double lo[4] = {28.0, 38.0, 47.0, 57.0}, hi[4] = {37.9, 46.9, 56.9, HUGE_VAL};
     for (int i = 0; i < 4; i++)
         r.window_low[i] = lo[i] * CS_MPH, r.window_high[i] = hi[i] * CS_MPH;
-    r.barrier_depth = 0.1;         /* 4-in posts and rails: docs/ratings.md */
-    r.head_on_tolerance = 1 * DEG; /* docs/ratings.md */
+    r.barrier_depth = 0.1;            /* 4-in posts and rails: docs/ratings.md */
+    r.head_on_tolerance = 1 * CS_DEG; /* docs/ratings.md */
     return r;
 }
 
@@ -232,8 +231,9 @@ cs_rating cs_rate_as_run(cs_standard standard, const char *vehicle_class, const 
                                            : "not its 15,000-lb truck");
         return not_rated(standard, cls, why);
     }
-    if (fabs(angle - 90 * DEG) > rules->head_on_tolerance) {
-        snprintf(why, sizeof why, "the impact is at %.1f deg; its test is head-on, at 90 deg", angle / DEG);
+    if (fabs(angle - 90 * CS_DEG) > rules->head_on_tolerance) {
+        snprintf(why, sizeof why, "the impact is at %.1f deg; its test is head-on, at 90 deg",
+                 angle / CS_DEG);
         return not_rated(standard, cls, why);
     }
     return cs_rate_run(standard, cls, speed, summary, vehicle, rules);
@@ -247,11 +247,16 @@ void cs_rating_text(const cs_rating *r, char *buf, size_t size) {
 /* NCHRP Report 350 (1993) and MASH (2009): tests x-10 (small car), x-11 (pickup) at 100 km/h, 4-12 (single
  * unit truck); 4-10 and 4-11 repeat 3-10 and 3-11 (docs/ratings.md). */
 static const cs_roadside_test roadside_tests[] = {
-    {"nchrp-350", "3-10", "820C", 100 * KMH, 20 * DEG}, {"nchrp-350", "3-11", "2000P", 100 * KMH, 25 * DEG},
-    {"nchrp-350", "4-10", "820C", 100 * KMH, 20 * DEG}, {"nchrp-350", "4-11", "2000P", 100 * KMH, 25 * DEG},
-    {"nchrp-350", "4-12", "8000S", 80 * KMH, 15 * DEG}, {"mash", "3-10", "1100C", 100 * KMH, 25 * DEG},
-    {"mash", "3-11", "2270P", 100 * KMH, 25 * DEG},     {"mash", "4-10", "1100C", 100 * KMH, 25 * DEG},
-    {"mash", "4-11", "2270P", 100 * KMH, 25 * DEG},     {"mash", "4-12", "10000S", 90 * KMH, 15 * DEG},
+    {"nchrp-350", "3-10", "820C", 100 * KMH, 20 * CS_DEG},
+    {"nchrp-350", "3-11", "2000P", 100 * KMH, 25 * CS_DEG},
+    {"nchrp-350", "4-10", "820C", 100 * KMH, 20 * CS_DEG},
+    {"nchrp-350", "4-11", "2000P", 100 * KMH, 25 * CS_DEG},
+    {"nchrp-350", "4-12", "8000S", 80 * KMH, 15 * CS_DEG},
+    {"mash", "3-10", "1100C", 100 * KMH, 25 * CS_DEG},
+    {"mash", "3-11", "2270P", 100 * KMH, 25 * CS_DEG},
+    {"mash", "4-10", "1100C", 100 * KMH, 25 * CS_DEG},
+    {"mash", "4-11", "2270P", 100 * KMH, 25 * CS_DEG},
+    {"mash", "4-12", "10000S", 90 * KMH, 15 * CS_DEG},
 };
 
 int cs_roadside_tests(const char *standard, int level, const char *name, cs_roadside_test *out) {
@@ -275,7 +280,6 @@ cs_roadside_result cs_roadside_read(const cs_roadside_test *test, const cs_summa
     r.working_width_m = summary->working_width_m;
     r.exit_speed_mps = cs_outcome_exits(summary->outcome) ? summary->exit_speed_mps : -1.0;
     r.exit_angle_deg = r.exit_speed_mps >= 0.0 ? summary->exit_angle_deg : 0.0;
-    r.exit_angle_within =
-        r.redirected && r.exit_angle_deg <= 0.6 * test->angle * 180 / 3.14159265358979323846;
+    r.exit_angle_within = r.redirected && r.exit_angle_deg <= 0.6 * test->angle / CS_DEG;
     return r;
 }
