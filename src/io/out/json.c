@@ -309,6 +309,10 @@ int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model
         jnum(&w, &ef, "value", e->value);
         jkey(&w, &ef, "unit");
         cs_json_string(f, cs_event_value_unit(e->type));
+        if (e->cable_end >= 0) {
+            jkey(&w, &ef, "cable_end");
+            cs_json_string(f, cs_event_cable_end_name(e));
+        }
         fprintf(f, "}");
     }
     fprintf(f, "],\n\"inputs\":");
