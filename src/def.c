@@ -30,6 +30,7 @@ cs_cable_def cs_default_cable_def(void) {
     memset(&d, 0, sizeof d);
     d.post_friction = 0.15;               /* steel rope in a steel hole, docs/assumptions.md */
     d.termination = CS_TERMINATION_CLIPS; /* cable clamps, as APS3's: docs/assumptions.md */
+    d.ends[0].termination = d.ends[1].termination = CS_TERMINATION_AS_CABLE;
     d.rope = cs_default_rope_def();
     return d;
 }
@@ -46,8 +47,20 @@ double cs_termination_efficiency(cs_termination kind, double diameter) {
         return 1.0;
     case CS_TERMINATION_WEDGE:
         return 0.85;
+    case CS_TERMINATION_AS_CABLE: /* no kind of its own */
+        break;
     }
     return 0.80;
+}
+
+double cs_cable_end_efficiency(const cs_cable_def *cable, int end, cs_termination *kind) {
+    const cs_cable_end_def *e = &cable->ends[end != 0];
+    int own = e->termination != CS_TERMINATION_AS_CABLE;
+    cs_termination k = own ? e->termination : cable->termination;
+    if (kind) *kind = k;
+    if (e->termination_efficiency > 0.0) return e->termination_efficiency;
+    if (!own && cable->termination_efficiency > 0.0) return cable->termination_efficiency;
+    return cs_termination_efficiency(k, cable->rope.diameter);
 }
 
 /* docs/assumptions.md: a slot's strap and cap, taken as the vertical release of the cable-to-post

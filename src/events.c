@@ -32,16 +32,22 @@ const char *cs_element_kind_name(cs_element_kind kind) {
     return "unknown";
 }
 
+const char *cs_event_cable_end_name(const cs_event *e) {
+    return e->cable_end == 0 ? "start" : e->cable_end == 1 ? "end" : "";
+}
+
 /* The capacity covers every element failing once plus the end event, so nothing is dropped. */
-void cs_event_add(const cs_model *model, cs_state *s, cs_event_type type, cs_element_kind kind, int element,
-                  double value) {
-    if (s->event_count >= model->event_capacity) return;
+cs_event *cs_event_add(const cs_model *model, cs_state *s, cs_event_type type, cs_element_kind kind,
+                       int element, double value) {
+    if (s->event_count >= model->event_capacity) return NULL;
     cs_event *e = &s->events[s->event_count++];
     e->t = s->t;
     e->type = type;
     e->element_kind = kind;
     e->element = element;
     e->value = value;
+    e->cable_end = -1;
+    return e;
 }
 
 int cs_state_event_count(const cs_state *s) {

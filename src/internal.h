@@ -58,7 +58,7 @@ typedef struct cs_cable_model {
     double z;          /* height at the posts, m */
     double pretension; /* N */
     double mu_post;
-    double termination_strength; /* tension at which an end fitting lets go, N */
+    double termination_strength[2]; /* tension at which each end's fitting lets go (0 start, 1 end), N */
     cs_rope rope;
 } cs_cable_model;
 
@@ -143,7 +143,7 @@ typedef struct cs_cable_state {
     double corner_z_commit[CS_CORNERS]; /* the same at the end of the previous step */
     double max_tension_seen;
     double max_strain; /* largest span strain at the last commit */
-    double end_load;   /* larger end span's tension over its termination's strength, last commit */
+    double end_load;   /* the larger of the end spans' tensions over their fittings' strengths, last commit */
 } cs_cable_state;
 
 typedef struct cs_post_state {
@@ -431,8 +431,9 @@ double cs_anchor_stored_energy(const cs_model *model, const cs_state *s, int a, 
 void cs_energy_update(const cs_model *model, cs_state *s);
 double cs_energy_total(const cs_energy *e);
 double cs_energy_scale(const cs_model *model, const cs_state *s);
-void cs_event_add(const cs_model *model, cs_state *s, cs_event_type type, cs_element_kind kind, int element,
-                  double value);
+/* The event added (its cable_end -1), or NULL if the list is full. */
+cs_event *cs_event_add(const cs_model *model, cs_state *s, cs_event_type type, cs_element_kind kind,
+                       int element, double value);
 void cs_response_update(const cs_model *model, cs_state *s);
 /* End the run as "did not converge": its solves have used up the budget. */
 void cs_response_give_up(const cs_model *model, cs_state *s);

@@ -158,6 +158,17 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
             return fail(err, "cable %d: termination efficiency must be in (0, 1] (0: the fitting's own)", c);
         if (d->termination < CS_TERMINATION_CLIPS || d->termination > CS_TERMINATION_WEDGE)
             return fail(err, "cable %d: unknown termination", c);
+        for (int k = 0; k < 2; k++) {
+            const cs_cable_end_def *e = &d->ends[k];
+            const char *at = k ? "end" : "start";
+            if (!(e->termination_efficiency >= 0.0 && e->termination_efficiency <= 1.0))
+                return fail(err,
+                            "cable %d: termination efficiency at the %s anchor must be in (0, 1] (0: its "
+                            "fitting's own)",
+                            c, at);
+            if (e->termination < CS_TERMINATION_AS_CABLE || e->termination > CS_TERMINATION_WEDGE)
+                return fail(err, "cable %d: unknown termination at the %s anchor", c, at);
+        }
         if (check_rope(&d->rope, c, err)) return 1;
         if (d->pretension >= d->rope.elastic_limit_ratio * d->rope.nominal_strength)
             return fail(err, "cable %d: pretension exceeds the rope's elastic limit", c);
@@ -357,10 +368,8 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
         cm->pretension = d->pretension;
         cm->mu_post = d->post_friction;
         derive_rope(&d->rope, scenario->gravity, &cm->rope);
-        double eff = d->termination_efficiency > 0.0
-                         ? d->termination_efficiency
-                         : cs_termination_efficiency(d->termination, d->rope.diameter);
-        cm->termination_strength = eff * cm->rope.fu;
+        for (int k = 0; k < 2; k++)
+            cm->termination_strength[k] = cs_cable_end_efficiency(d, k, NULL) * cm->rope.fu;
     }
     /* the load height of every post: its cables' mean height, or for a barrier of posts alone
      * (bollards, a bogie test) the height where the vehicle's face strikes them */

@@ -323,6 +323,7 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
         hash_bytes(&h, &e->t, sizeof e->t);
         hash_bytes(&h, what, sizeof what);
         hash_bytes(&h, &e->value, sizeof e->value);
+        if (e->cable_end >= 0) hash_bytes(&h, &e->cable_end, sizeof e->cable_end); /* termination_break */
     }
     return h;
 }

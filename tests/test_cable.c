@@ -211,6 +211,30 @@ static void breaking_strain_breaks_the_cable(void **state) {
     world_free(w);
 }
 
+/* Lay cable 0 as anchor, post, post, anchor (3-m spans along x) with the spans at strains e, and commit. */
+static cs_cable_state *lay_ends(world *w, const double *e) {
+    cs_cable_state *cs = &w->state->cables[0];
+    double p[4][3] = {{0, 0, 1}, {3, 0, 1}, {6, 0, 1}, {9, 0, 1}};
+    cs->status = CS_CABLE_INTACT, cs->node_count = 4;
+    cs->node[0] = CS_NODE_START, cs->node[1] = 0, cs->node[2] = 1, cs->node[3] = CS_NODE_END;
+    cs->where[0] = 1, cs->where[1] = 2;
+    cs->m[0] = 0.0;
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 3; j++)
+            cs->pos[3 * i + j] = p[i][j];
+    for (int i = 0; i < 3; i++)
+        cs->m[i + 1] = cs->m[i] + 3.0 / (1.0 + e[i]), cs->ep[i] = 0.0;
+    for (int i = 0; i < 4; i++)
+        cs->m_commit[i] = cs->m[i];
+    cs_cable_commit(w->model, 0, w->state);
+    return cs;
+}
+
+/* The strain of a tension on the rope's secondary slope (0.6 Fu < t < Fu). */
+static double strain_of(const cs_rope *r, double t) {
+    return r->e1 + (t - r->t1) / r->k2;
+}
+
 /* An end span (tied to an anchor) breaks the rope at its fitting when its tension reaches the fitting's
  * efficiency times Fu (0.90: wire rope clips on rope of 1 in or more); an inner span at the same tension
  * holds (a 4-node path: anchor, post, post, anchor). Tensions on the secondary slope: 0.9 Fu > 0.6 Fu. */
@@ -219,34 +243,128 @@ static void termination_breaks_at_its_efficiency(void **state) {
     world *w = make_world(0.15);
     const cs_cable_model *cm = &w->model->cables[0];
     const cs_rope *r = &cm->rope;
-    CHECK_REL(cm->termination_strength, 0.90 * r->fu, 1e-15);
+    CHECK_REL(cm->termination_strength[0], 0.90 * r->fu, 1e-15);
+    CHECK_REL(cm->termination_strength[1], 0.90 * r->fu, 1e-15);
     double lo = 0.0021; /* a low strain for the spans not under test */
     for (int k = 0; k < 3; k++) {
-        double t = (k == 0 ? 0.99 : 1.01) * 0.90 * r->fu, e = r->e1 + (t - r->t1) / r->k2;
-        cs_cable_state *cs = &w->state->cables[0];
-        double p[4][3] = {{0, 0, 1}, {3, 0, 1}, {6, 0, 1}, {9, 0, 1}}, strain[3] = {e, lo, lo};
-        if (k == 2) strain[0] = lo, strain[1] = e; /* the inner span at 1.01 x 0.9 Fu */
-        cs->status = CS_CABLE_INTACT, cs->node_count = 4;
-        cs->node[0] = CS_NODE_START, cs->node[1] = 0, cs->node[2] = 1, cs->node[3] = CS_NODE_END;
-        cs->where[0] = 1, cs->where[1] = 2;
-        cs->m[0] = 0.0;
-        for (int i = 0; i < 4; i++)
-            for (int j = 0; j < 3; j++)
-                cs->pos[3 * i + j] = p[i][j];
-        for (int i = 0; i < 3; i++)
-            cs->m[i + 1] = cs->m[i] + 3.0 / (1.0 + strain[i]), cs->ep[i] = 0.0;
-        for (int i = 0; i < 4; i++)
-            cs->m_commit[i] = cs->m[i];
-        cs_cable_commit(w->model, 0, w->state);
+        double t = (k == 0 ? 0.99 : 1.01) * 0.90 * r->fu, strain[3] = {strain_of(r, t), lo, lo};
+        if (k == 2) strain[0] = lo, strain[1] = strain_of(r, t); /* the inner span at 1.01 x 0.9 Fu */
+        cs_cable_state *cs = lay_ends(w, strain);
         CHECK_REL(cs->tension[k == 2 ? 1 : 0], t, 1e-9);
         assert_int_equal(cs_cable_check_break(w->model, 0, w->state), k == 1);
         if (k == 1) {
             const cs_event *ev = cs_state_event(w->state, cs_state_event_count(w->state) - 1);
             assert_int_equal(ev->type, CS_EVENT_TERMINATION_BREAK);
+            assert_int_equal(ev->cable_end, 0);
             CHECK_REL(ev->value, t, 1e-9);
             assert_int_equal(cs->status, CS_CABLE_BROKEN);
             CHECK_ABS(cs->tension[0], 0.0, 0.0); /* a broken rope carries nothing */
         }
+    }
+    world_free(w);
+}
+
+/* A world whose cable 0 has the fitting `kind` (efficiency eff) and its ends their own. */
+static world *make_world_ends(cs_termination kind, double eff, cs_cable_end_def start, cs_cable_end_def end,
+                              cs_error *err) {
+    static world w;
+    fixture_aps3(&w.fx);
+    w.fx.cables[0].rope.mass_per_length = 0.0;
+    w.fx.cables[0].termination = kind;
+    w.fx.cables[0].termination_efficiency = eff;
+    w.fx.cables[0].ends[0] = start, w.fx.cables[0].ends[1] = end;
+    w.model = cs_model_create(&w.fx.barrier, &w.fx.vehicle, &w.fx.scenario, err);
+    w.state = w.model ? cs_state_create(w.model, err) : NULL;
+    return &w;
+}
+
+/* Each end's strength: its own kind's published efficiency (swaged 0.95 at the start, clips 0.90 on the
+ * 1.75-in rope at the end), the cable's efficiency where it takes the cable's kind, its own efficiency
+ * over both; an efficiency above 1 or an unknown kind at an end is refused, naming the end. */
+static void each_end_has_its_own_strength(void **state) {
+    (void)state;
+    enum { AS = CS_TERMINATION_AS_CABLE, CLIPS = CS_TERMINATION_CLIPS, SWAGED = CS_TERMINATION_SWAGED };
+    enum { SPELTER = CS_TERMINATION_SPELTER, WEDGE = CS_TERMINATION_WEDGE };
+    static const struct {
+        cs_termination kind;
+        double eff;
+        cs_cable_end_def ends[2];
+        double want[2];
+    } cases[] = {
+        {CLIPS, 0.0, {{SWAGED, 0.0}, {CLIPS, 0.0}}, {0.95, 0.90}}, /* each its kind's */
+        {SWAGED, 0.0, {{AS, 0.0}, {WEDGE, 0.0}}, {0.95, 0.85}},    /* the cable's kind at the start */
+        {SWAGED, 0.8, {{AS, 0.0}, {AS, 0.75}}, {0.8, 0.75}},       /* the cable's efficiency; its own */
+        {SWAGED, 0.8, {{SPELTER, 0.0}, {CLIPS, 0.7}}, {1.0, 0.7}}, /* its kind's, not the cable's 0.8 */
+    };
+    cs_error err;
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        world *w = make_world_ends(cases[k].kind, cases[k].eff, cases[k].ends[0], cases[k].ends[1], &err);
+        if (!w->state) fail_msg("case %zu: %s", k, err.message);
+        const cs_cable_model *cm = &w->model->cables[0];
+        CHECK_REL(cm->termination_strength[0], cases[k].want[0] * cm->rope.fu, 1e-15);
+        CHECK_REL(cm->termination_strength[1], cases[k].want[1] * cm->rope.fu, 1e-15);
+        world_free(w);
+    }
+    static const struct {
+        cs_cable_end_def end;
+        int at;
+        const char *want;
+    } bad[] = {
+        {{CS_TERMINATION_AS_CABLE, 1.2},
+         1,
+         "cable 0: termination efficiency at the end anchor must be in (0, 1]"},
+        {{(cs_termination)4, 0.0}, 0, "cable 0: unknown termination at the start anchor"},
+        {{(cs_termination)-2, 0.0}, 1, "cable 0: unknown termination at the end anchor"},
+    };
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        cs_cable_end_def ends[2] = {{CS_TERMINATION_AS_CABLE, 0.0}, {CS_TERMINATION_AS_CABLE, 0.0}};
+        ends[bad[k].at] = bad[k].end;
+        world *w = make_world_ends(CS_TERMINATION_CLIPS, 0.0, ends[0], ends[1], &err);
+        assert_null(w->model);
+        if (strncmp(err.message, bad[k].want, strlen(bad[k].want)) != 0)
+            fail_msg("case %zu: '%s', expected '%s...'", k, err.message, bad[k].want);
+    }
+}
+
+/* Swaged (0.95 Fu) at the start, clips (0.90 Fu) at the end: an end span at 0.93 Fu breaks the rope at the
+ * clips only, with the end and that span's tension in the event; at the swaged start it holds, and at
+ * 0.96 Fu there it breaks at the start. */
+static void each_end_breaks_at_its_own_fitting(void **state) {
+    (void)state;
+    cs_error err;
+    cs_cable_end_def swaged = {CS_TERMINATION_SWAGED, 0.0}, clips = {CS_TERMINATION_CLIPS, 0.0};
+    world *w = make_world_ends(CS_TERMINATION_CLIPS, 0.0, swaged, clips, &err);
+    assert_non_null(w->state);
+    const cs_rope *r = &w->model->cables[0].rope;
+    double lo = 0.0021;
+    static const struct {
+        int span;    /* the end span under load: 0 at the start anchor, 2 at the end anchor */
+        double load; /* its tension over Fu */
+        int end;     /* the end that lets go, -1 none */
+    } cases[] = {{2, 0.93, 1}, {0, 0.93, -1}, {0, 0.96, 0}};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        double t = cases[k].load * r->fu, strain[3] = {lo, lo, lo};
+        strain[cases[k].span] = strain_of(r, t);
+        int events = cs_state_event_count(w->state);
+        cs_cable_state *cs = lay_ends(w, strain);
+        CHECK_REL(cs->tension[cases[k].span], t, 1e-9);
+        CHECK_REL(cs->tension[2 - cases[k].span], cs->tension[1], 1e-12); /* the other spans at lo */
+        assert_true(cs->tension[1] < 0.25 * r->fu);                       /* 0.22 Fu */
+        assert_int_equal(cs_cable_check_break(w->model, 0, w->state), cases[k].end >= 0);
+        if (cases[k].end < 0) {
+            assert_int_equal(cs_state_event_count(w->state), events);
+            assert_int_equal(cs->status, CS_CABLE_INTACT);
+            continue;
+        }
+        assert_int_equal(cs_state_event_count(w->state), events + 1);
+        const cs_event *ev = cs_state_event(w->state, events);
+        assert_int_equal(ev->type, CS_EVENT_TERMINATION_BREAK);
+        assert_int_equal(ev->element_kind, CS_ELEMENT_CABLE);
+        assert_int_equal(ev->element, 0);
+        assert_int_equal(ev->cable_end, cases[k].end);
+        assert_string_equal(cs_event_cable_end_name(ev), cases[k].end ? "end" : "start");
+        CHECK_REL(ev->value, t, 1e-9);
+        assert_int_equal(cs->status, CS_CABLE_BROKEN);
     }
     world_free(w);
 }
@@ -261,6 +379,8 @@ int main(void) {
         cmocka_unit_test(sag_tension_solves_its_cubic),
         cmocka_unit_test(breaking_strain_breaks_the_cable),
         cmocka_unit_test(termination_breaks_at_its_efficiency),
+        cmocka_unit_test(each_end_has_its_own_strength),
+        cmocka_unit_test(each_end_breaks_at_its_own_fitting),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

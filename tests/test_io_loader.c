@@ -338,6 +338,74 @@ static void test_reuse(void **state) {
     cs_loader_free(l);
 }
 
+/* Each rope end's own fitting (tests/good/ends.yaml) into ends[0] (start anchor) and ends[1] (end anchor),
+ * an end not given left to the cable's, and as the engine takes them; a --set of an end's kind. An end left
+ * to the cable's adds nothing to the model's hash: base.yaml's is the hash of its other values alone,
+ * 0x0e2acfbb34c3174b; an end of its own changes it. */
+static void test_cable_ends(void **state) {
+    (void)state;
+    cs_model_input in;
+    cs_loader *l = load(CS_SOURCE_DIR "/tests/good/ends.yaml", &in, NULL);
+    const cs_cable_def *c = in.barrier.cables;
+    assert_int_equal(c[0].termination, CS_TERMINATION_CLIPS);
+    assert_int_equal(c[0].ends[0].termination, CS_TERMINATION_SWAGED);
+    CHECK_ABS(c[0].ends[0].termination_efficiency, 0.0, 0.0);
+    assert_int_equal(c[0].ends[1].termination, CS_TERMINATION_AS_CABLE);
+    close_to(c[0].ends[1].termination_efficiency, 0.85);
+    assert_int_equal(c[1].termination, CS_TERMINATION_WEDGE);
+    assert_int_equal(c[1].ends[0].termination, CS_TERMINATION_AS_CABLE);
+    CHECK_ABS(c[1].ends[0].termination_efficiency, 0.0, 0.0);
+    assert_int_equal(c[1].ends[1].termination, CS_TERMINATION_CLIPS);
+    static const struct {
+        int cable, end;
+        cs_termination kind;
+        double efficiency;
+    } want[] = {{0, 0, CS_TERMINATION_SWAGED, 0.95},
+                {0, 1, CS_TERMINATION_CLIPS, 0.85},
+                {1, 0, CS_TERMINATION_WEDGE, 0.85},
+                {1, 1, CS_TERMINATION_CLIPS, 0.90}}; /* clips on 1-in rope */
+    for (size_t k = 0; k < sizeof want / sizeof want[0]; k++) {
+        cs_termination kind;
+        double e = cs_cable_end_efficiency(&c[want[k].cable], want[k].end, &kind);
+        assert_int_equal(kind, want[k].kind);
+        CHECK_REL(e, want[k].efficiency, 1e-15);
+    }
+    cs_loader_free(l);
+    static const char *const spelter[] = {"barrier.cables[1].start.termination=spelter", NULL};
+    l = load(CS_SOURCE_DIR "/tests/good/ends.yaml", &in, spelter);
+    assert_int_equal(in.barrier.cables[1].ends[0].termination, CS_TERMINATION_SPELTER);
+    CHECK_REL(cs_cable_end_efficiency(&in.barrier.cables[1], 0, NULL), 1.0, 1e-15);
+    cs_loader_free(l);
+    l = load(CS_SOURCE_DIR "/tests/good/base.yaml", &in, NULL);
+    assert_true(cs_model_input_hash(&in) == 0x0e2acfbb34c3174bULL);
+    cs_loader_free(l);
+    static const char *const own[] = {"barrier.cables[0].end.termination=clips", NULL};
+    l = load(CS_SOURCE_DIR "/tests/good/base.yaml", &in, own);
+    assert_true(cs_model_input_hash(&in) != 0x0e2acfbb34c3174bULL);
+    cs_loader_free(l);
+}
+
+/* A rope end's bad kind, efficiency and key, and an end given as a word, each at its place. */
+static void test_cable_end_problems(void **state) {
+    (void)state;
+    static const char *const want[] = {
+        CS_SOURCE_DIR
+        "/tests/bad/bad_cable_end.yaml:5:78: barrier.cables[0].start.termination: 'knot' is not a "
+        "choice (expected clips, swaged, spelter or wedge)",
+        CS_SOURCE_DIR
+        "/tests/bad/bad_cable_end.yaml:9:58: barrier.cables[1].end.termination_efficiency: '1.2' "
+        "must be at most 1",
+        CS_SOURCE_DIR "/tests/bad/bad_cable_end.yaml:10:86: barrier.cables[2].start: unknown key 'colour' "
+                      "(expected one of: termination, termination_efficiency)",
+        NULL};
+    expect_problems(CS_SOURCE_DIR "/tests/bad/bad_cable_end.yaml", NULL, want);
+    static const char *const word[] = {CS_SOURCE_DIR
+                                       "/tests/bad/cable_end_word.yaml:5:62: barrier.cables[0].end "
+                                       "is a single value (expected a mapping: the cable_end)",
+                                       NULL};
+    expect_problems(CS_SOURCE_DIR "/tests/bad/cable_end_word.yaml", NULL, word);
+}
+
 static void test_every_problem_reported(void **state) {
     (void)state;
     static const char *const want[] = {
@@ -388,6 +456,8 @@ int main(void) {
         cmocka_unit_test(test_references),
         cmocka_unit_test(test_reuse),
         cmocka_unit_test(test_every_problem_reported),
+        cmocka_unit_test(test_cable_ends),
+        cmocka_unit_test(test_cable_end_problems),
         cmocka_unit_test(test_two_threads),
         cmocka_unit_test(test_aliases),
     };

@@ -171,6 +171,29 @@ static void has_number(const char *json, const char *key, double v) {
     if (!strstr(json, want)) fail_msg("no %s in the design", want);
 }
 
+/* Each rope end's fitting as the engine takes it: swaged (0.95) at cable 0's end anchor, cable 1's start at
+ * its own 0.7 of the cable's clips, the other two ends the cable's clips (0.90 on 1.75-in rope). */
+static void design_has_each_end(void **st) {
+    run *r = *st;
+    cs_cable_def cables[2] = {r->in.barrier.cables[0], r->in.barrier.cables[1]};
+    const cs_cable_def *loaded = r->in.barrier.cables;
+    cables[0].ends[1].termination = CS_TERMINATION_SWAGED;
+    cables[1].ends[0].termination_efficiency = 0.7;
+    r->in.barrier.cables = cables;
+    char why[256] = "";
+    int rc;
+    char *json = page(r, &r->rec, "@CS_DATA@", &rc, why, sizeof why);
+    r->in.barrier.cables = loaded;
+    if (rc != 0) fail_msg("%s", why);
+    assert_non_null(
+        strstr(json, "\"pretension_n\":22241.1,\"ends\":[{\"termination\":\"clips\",\"termination_"
+                     "efficiency\":0.9},{\"termination\":\"swaged\",\"termination_efficiency\":0.95}]}"));
+    assert_non_null(strstr(json,
+                           "\"pretension_n\":22241.1,\"ends\":[{\"termination\":\"clips\",\"termination_"
+                           "efficiency\":0.7},{\"termination\":\"clips\",\"termination_efficiency\":0.9}]}"));
+    free(json);
+}
+
 /* The design table's data: every rope's size and pretension, the two kinds of APS3's posts (line and
  * intermediate anchor posts) with the posts of each, the posts' places, the soil and the anchors, each the
  * model's own value in SI. */
@@ -190,7 +213,10 @@ static void design_as_loaded(void **st) {
         has_number(d, "strength_n", b->cables[c].rope.nominal_strength);
     }
     has_number(d, "pretension_n", 5 * 4448.2216152605); /* 5 kip, as examples/aps3.yaml gives it */
-    assert_non_null(strstr(d, "\"termination\":\"clips\""));
+    /* clips at both ends of APS3's 1.75-in ropes: 0.90 Fu */
+    assert_int_equal(count(d, "\"ends\":[{\"termination\":\"clips\",\"termination_efficiency\":0.9},"
+                              "{\"termination\":\"clips\",\"termination_efficiency\":0.9}]"),
+                     b->cable_count);
     assert_int_equal(count(d, "{\"posts\":["), 2);
     assert_non_null(strstr(d, "{\"posts\":[0,1,2,3,4,5,7,8,10,11,12,13,14,15],\"height_m\":"));
     assert_non_null(strstr(d, "{\"posts\":[6,9],\"height_m\":"));
@@ -269,7 +295,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(markers_filled),         cmocka_unit_test(data_complete),
         cmocka_unit_test(design_as_loaded),       cmocka_unit_test(page_without_data_marker),
-        cmocka_unit_test(long_record_subsampled),
+        cmocka_unit_test(long_record_subsampled), cmocka_unit_test(design_has_each_end),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

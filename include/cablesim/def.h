@@ -44,25 +44,39 @@ typedef struct cs_rope_def {
 /** How a rope's ends are made off at the anchors: each kind's published efficiency (its breaking strength
  * over the rope's) is in cs_termination_efficiency and docs/assumptions.md. */
 typedef enum cs_termination {
-    CS_TERMINATION_CLIPS = 0, /**< wire rope clips (cable clamps): 80% below 1-in rope, 90% from 1 in */
-    CS_TERMINATION_SWAGED,    /**< swaged socket or sleeve: 95% */
-    CS_TERMINATION_SPELTER,   /**< poured (spelter) socket: 100% */
-    CS_TERMINATION_WEDGE      /**< wedge socket: 75-95%, 85% taken */
+    CS_TERMINATION_AS_CABLE = -1, /**< a cable end's only (cs_cable_end_def): the cable's kind */
+    CS_TERMINATION_CLIPS = 0,     /**< wire rope clips (cable clamps): 80% below 1-in rope, 90% from 1 in */
+    CS_TERMINATION_SWAGED,        /**< swaged socket or sleeve: 95% */
+    CS_TERMINATION_SPELTER,       /**< poured (spelter) socket: 100% */
+    CS_TERMINATION_WEDGE          /**< wedge socket: 75-95%, 85% taken */
 } cs_termination;
+
+/** The fitting at one end of a cable, where it differs from the cable's. */
+typedef struct cs_cable_end_def {
+    cs_termination termination;    /**< its kind (CS_TERMINATION_AS_CABLE: the cable's) */
+    double termination_efficiency; /**< its strength over the rope's Fu (0: its kind's published value, or
+                                      the cable's termination_efficiency where it takes the cable's kind) */
+} cs_cable_end_def;
 
 /** A cable: a wire rope at a height along the posts, tied to both anchors. */
 typedef struct cs_cable_def {
     double height;                 /**< z of the cable at the posts, m */
     double pretension;             /**< installed tension, N */
     double post_friction;          /**< mu between cable and post (capstan at a threaded post) */
-    cs_termination termination;    /**< the fitting at each end */
+    cs_termination termination;    /**< the fitting at both ends, unless an end has its own */
     double termination_efficiency; /**< its strength over the rope's Fu (0: the kind's published value);
-                                      the rope breaks at its end when the end span's tension exceeds it */
+                                      the rope breaks at an end when that end span's tension exceeds it */
+    cs_cable_end_def ends[2];      /**< each end's own fitting: 0 at the start anchor (low x), 1 at the
+                                      end anchor (cs_default_cable_def: both the cable's) */
     cs_rope_def rope;              /**< its rope */
 } cs_cable_def;
 
 /** The published efficiency of a fitting on a rope of diameter d (m; 0 unknown: the larger rope's). */
 CS_API double cs_termination_efficiency(cs_termination kind, double diameter);
+
+/** The efficiency of the fitting at a cable's end (0 the start anchor's, 1 the end anchor's), as the engine
+ * takes it; its kind in *kind (may be NULL). */
+CS_API double cs_cable_end_efficiency(const cs_cable_def *cable, int end, cs_termination *kind);
 
 /** Steel post section. */
 typedef struct cs_section_def {

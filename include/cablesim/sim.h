@@ -103,7 +103,8 @@ CS_API cs_status cs_run(const cs_model *model, cs_state *state, cs_output_fn on_
 /** What happened: a failure, a release or the run's end. */
 typedef enum cs_event_type {
     CS_EVENT_CABLE_BREAK = 0,     /**< a rope breaks along a span (value: its largest span tension, N) */
-    CS_EVENT_TERMINATION_BREAK,   /**< a rope's end fitting lets go (value: its largest span tension, N) */
+    CS_EVENT_TERMINATION_BREAK,   /**< a rope's end fitting lets go (value: that end span's tension, N;
+                                       cable_end: which end) */
     CS_EVENT_POST_HINGE,          /**< a plastic hinge forms at a post's base (value: its capacity, N m) */
     CS_EVENT_POST_ROTATION_LIMIT, /**< a post turns to its rotation limit: it is down (value: rad) */
     CS_EVENT_POST_SHEAR,          /**< a post shears at its base (value: shear, N) */
@@ -135,8 +136,9 @@ typedef struct cs_event {
     double t;                     /**< when, s */
     cs_event_type type;           /**< what */
     cs_element_kind element_kind; /**< to what kind of element */
-    int element;  /**< index of the cable, post or anchor (0 start, 1 end); 0 for the vehicle */
-    double value; /**< what triggered it, SI: by type (cs_event_type) */
+    int element;   /**< index of the cable, post or anchor (0 start, 1 end); 0 for the vehicle */
+    double value;  /**< what triggered it, SI: by type (cs_event_type) */
+    int cable_end; /**< a termination_break's rope end: 0 at the start anchor, 1 at the end anchor; else -1 */
 } cs_event;
 
 /** An event type's name in events.csv and summary.json: "cable_break", "post_hinge", ... */
@@ -145,6 +147,8 @@ CS_API const char *cs_event_type_name(cs_event_type type);
 CS_API const char *cs_event_value_unit(cs_event_type type);
 /** An element kind's name: "cable", "post", "anchor", "vehicle". */
 CS_API const char *cs_element_kind_name(cs_element_kind kind);
+/** An event's cable end as events.csv and summary.json give it: "start", "end", or "" for none. */
+CS_API const char *cs_event_cable_end_name(const cs_event *event);
 /** The number of events so far. */
 CS_API int cs_state_event_count(const cs_state *state);
 /** The index-th event, in time order (NULL out of range). */

@@ -192,6 +192,15 @@ export function designTable(data) {
   const groups = [];
   const row = (name, [si, us], id) => ({ name, si, us, id });
   const text = (name, si, us = null) => ({ name, si, us });
+  // rope c's end fittings: one row where both ends have the same, else one an end
+  const fittings = (ends, c) => {
+    const [start, end] = ends.map((e) => `${e.termination}, ${fmt(100 * e.termination_efficiency, 0)} % of Fu`);
+    if (start === end) return [{ ...text('End fitting at the anchors', start), id: `rope-${c}-fitting` }];
+    return [
+      { ...text('End fitting at the start anchor', start), id: `rope-${c}-fitting-start` },
+      { ...text('End fitting at the end anchor', end), id: `rope-${c}-fitting-end` },
+    ];
+  };
   d.ropes.forEach((r, c) => {
     groups.push([
       `Cable ${c}: wire rope`,
@@ -201,7 +210,7 @@ export function designTable(data) {
         row('Metallic area', both.area(r.area_m2)),
         row('Breaking strength Fu', both.force(r.strength_n)),
         row('Pretension', both.force(r.pretension_n), `rope-${c}-pretension`),
-        text('End fitting at the anchors', `${r.termination}, ${fmt(100 * r.termination_efficiency, 0)} % of Fu`),
+        ...fittings(r.ends, c),
       ],
     ]);
   });

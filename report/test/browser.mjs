@@ -183,6 +183,8 @@ try {
       near('post-kind-0-fy', 1, 'ksi', 50, 0.05);
       near('spacing', 1, 'ft', 8, 0.05);
       near('soil-pressure', 1, 'psf', 8000, 0.5);
+      // clips at both ends of each rope: one row
+      for (const c of [0, 1]) check(`design: rope ${c}'s end fittings`, (design.cells[`rope-${c}-fitting`] || [])[0] === 'clips, 90 % of Fu', JSON.stringify(design.cells[`rope-${c}-fitting`]));
     }
   }
 

@@ -29,6 +29,7 @@ static unsigned long long fields(unsigned long long h, const cs_table *t, const 
         const cs_field *fd = &t->fields[i];
         if (fd->offset < 0) continue;
         const char *at = (const char *)def + fd->offset;
+        if (cs_field_unset(fd, at)) continue;
         h = key(h, fd->key);
         if (fd->kind == CS_F_MAP) {
             h = fields(h, fd->sub, at);

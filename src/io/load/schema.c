@@ -198,6 +198,21 @@ static const cs_field footing_fields[] = {
 const cs_table cs_table_footing = {"footing", "A post's footing in the soil (Eq. 21 lateral capacity).",
                                    CS_T_FOOTING, footing_fields, N(footing_fields)};
 
+#define TERMINATION_DOC                                                                                      \
+    "clips (cable clamps; 80% of the rope's strength below 1 in, 90% from 1 in), swaged (95%), spelter "     \
+    "(100%) or wedge (85%)"
+static const cs_field cable_end_fields[] = {
+    {"termination", CS_F_ENUM, CS_Q_NUMBER, 0, (long)offsetof(cs_cable_end_def, termination), NULL,
+     termination_words, "the fitting at this end (not given: the cable's termination): " TERMINATION_DOC},
+    QTY("termination_efficiency", CS_Q_NUMBER, CS_POS | CS_MAX1, cs_cable_end_def, termination_efficiency,
+        "its strength over the rope's, replacing its kind's (not given: its kind's, or the cable's "
+        "termination_efficiency where this end takes the cable's termination)"),
+};
+const cs_table cs_table_cable_end = {"cable_end",
+                                     "The fitting at one end of a cable, where it is not the cable's own "
+                                     "`termination`.",
+                                     CS_T_NONE, cable_end_fields, N(cable_end_fields)};
+
 static const cs_field cable_fields[] = {
     TEXT("rope", CS_REQ, "name of a rope part"),
     QTY("height", CS_Q_LENGTH, CS_REQ | CS_POS, cs_cable_def, height, "height of the cable at the posts"),
@@ -205,11 +220,13 @@ static const cs_field cable_fields[] = {
     QTY("post_friction", CS_Q_NUMBER, CS_NONNEG, cs_cable_def, post_friction,
         "friction between cable and post (capstan at a threaded post)"),
     {"termination", CS_F_ENUM, CS_Q_NUMBER, 0, (long)offsetof(cs_cable_def, termination), NULL,
-     termination_words,
-     "the fitting at each end: clips (cable clamps; 80% of the rope's strength below 1 in, 90% from 1 in), "
-     "swaged (95%), spelter (100%) or wedge (85%)"},
+     termination_words, "the fitting at both ends, unless start or end gives its own: " TERMINATION_DOC},
     QTY("termination_efficiency", CS_Q_NUMBER, CS_POS | CS_MAX1, cs_cable_def, termination_efficiency,
-        "the fitting's strength over the rope's, replacing its kind's"),
+        "the fitting's strength over the rope's, replacing its kind's at the ends that take termination"),
+    SUB("start", CS_F_MAP, CS_OWN, (long)offsetof(cs_cable_def, ends[0]), cs_table_cable_end,
+        "the fitting at the start anchor (low x), where not the cable's"),
+    SUB("end", CS_F_MAP, CS_OWN, (long)offsetof(cs_cable_def, ends[1]), cs_table_cable_end,
+        "the fitting at the end anchor (high x), where not the cable's"),
     QTY("elastic_limit_ratio", CS_Q_NUMBER, CS_POS | CS_MAX1, cs_cable_def, rope.elastic_limit_ratio,
         "replaces the rope's"),
     QTY("secondary_modulus_ratio", CS_Q_NUMBER, CS_POS | CS_MAX1, cs_cable_def, rope.secondary_modulus_ratio,
@@ -348,6 +365,22 @@ const cs_table cs_table_model = {"model",
                                  "a file of parts (like data/*.yaml) needs only parts.",
                                  CS_T_NONE, model_fields, N(model_fields)};
 
+int cs_field_unset(const cs_field *f, const void *at) {
+    if (!(f->flags & CS_OWN)) return 0;
+    for (int i = 0; i < f->sub->count; i++) {
+        const cs_field *g = &f->sub->fields[i];
+        const char *v = (const char *)at + g->offset;
+        int k = -1;
+        double d = 0.0;
+        if (g->kind == CS_F_ENUM)
+            memcpy(&k, v, sizeof k);
+        else
+            memcpy(&d, v, sizeof d);
+        if (k >= 0 || d != 0.0) return 0;
+    }
+    return 1;
+}
+
 int cs_table_find(const cs_table *t, const char *key) {
     for (int i = 0; i < t->count; i++)
         if (strcmp(t->fields[i].key, key) == 0) return i;
@@ -449,10 +482,10 @@ void cs_target_defaults(cs_target t, cs_any_def *out) {
 /* ---- the reference, docs/file-format.md ---- */
 
 static const cs_table *const doc_tables[] = {
-    &cs_table_model,     &cs_table_parts,   &cs_table_vehicle, &cs_table_box,
-    &cs_table_rope,      &cs_table_section, &cs_table_barrier, &cs_table_soil,
-    &cs_table_cable,     &cs_table_posts,   &cs_table_footing, &cs_table_rail,
-    &cs_table_rail_part, &cs_table_anchors, &cs_table_anchor,  &cs_table_scenario,
+    &cs_table_model,   &cs_table_parts,    &cs_table_vehicle, &cs_table_box,       &cs_table_rope,
+    &cs_table_section, &cs_table_barrier,  &cs_table_soil,    &cs_table_cable,     &cs_table_cable_end,
+    &cs_table_posts,   &cs_table_footing,  &cs_table_rail,    &cs_table_rail_part, &cs_table_anchors,
+    &cs_table_anchor,  &cs_table_scenario,
 };
 
 static void doc_type(FILE *out, const cs_field *f) {

@@ -28,7 +28,9 @@ enum cs_fflag {
     CS_MAX1 = 1u << 3,    /* <= 1 */
     CS_NONE_OK = 1u << 4, /* "none": no limit (stored as infinity) */
     CS_MAX90 = 1u << 5,   /* an angle up to 90 deg */
-    CS_MAX180 = 1u << 6   /* an angle below 180 deg */
+    CS_MAX180 = 1u << 6,  /* an angle below 180 deg */
+    CS_OWN = 1u << 7      /* a map of a part's own values where not its parent's (a cable end's fitting):
+                             not given (its enums < 0, its numbers 0), left out of the hash and the echo */
 };
 
 typedef enum cs_target {
@@ -81,9 +83,11 @@ typedef union cs_any_def {
 } cs_any_def;
 
 extern const cs_table cs_table_model, cs_table_parts, cs_table_vehicle, cs_table_box, cs_table_rope,
-    cs_table_section, cs_table_barrier, cs_table_soil, cs_table_cable, cs_table_posts, cs_table_footing,
-    cs_table_anchors, cs_table_anchor, cs_table_rail_part, cs_table_rail, cs_table_scenario;
+    cs_table_section, cs_table_barrier, cs_table_soil, cs_table_cable, cs_table_cable_end, cs_table_posts,
+    cs_table_footing, cs_table_anchors, cs_table_anchor, cs_table_rail_part, cs_table_rail, cs_table_scenario;
 
+/* 1 if f is a CS_OWN map that gives nothing at at (its values are its parent's). */
+int cs_field_unset(const cs_field *f, const void *at);
 /* The index of key in t, or -1. */
 int cs_table_find(const cs_table *t, const char *key);
 

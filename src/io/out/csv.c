@@ -89,7 +89,7 @@ int cs_write_timeseries(FILE *f, const cs_record *rec, char *why, size_t why_siz
 }
 
 int cs_write_events(FILE *f, const cs_state *state, char *why, size_t why_size) {
-    fprintf(f, "t_s,type,element_kind,element,value_si,value_unit\n");
+    fprintf(f, "t_s,type,element_kind,element,value_si,value_unit,cable_end\n");
     cs_wout w = {f, 0, ""};
     for (int i = 0; i < cs_state_event_count(state) && !w.bad; i++) {
         const cs_event *e = cs_state_event(state, i);
@@ -97,7 +97,7 @@ int cs_write_events(FILE *f, const cs_state *state, char *why, size_t why_size) 
         fprintf(f, ",%s,%s,%d,", cs_event_type_name(e->type), cs_element_kind_name(e->element_kind),
                 e->element);
         cs_w_num(&w, e->value, "an event's value");
-        fprintf(f, ",%s\n", cs_event_value_unit(e->type));
+        fprintf(f, ",%s,%s\n", cs_event_value_unit(e->type), cs_event_cable_end_name(e));
     }
     if (w.bad) snprintf(why, why_size, "events.csv: %s", w.why);
     return w.bad ? -1 : 0;

@@ -35,8 +35,9 @@ static void jnum(cs_wout *w, int *first, const char *key, double v) {
 static void jfields(cs_wout *w, int *first, const cs_table *t, const void *def) {
     for (int i = 0; i < t->count; i++) {
         const cs_field *fd = &t->fields[i];
-        const char *at = (const char *)def + fd->offset;
         if (fd->offset < 0) continue;
+        const char *at = (const char *)def + fd->offset;
+        if (cs_field_unset(fd, at)) continue;
         jkey(w, first, fd->key);
         if (fd->kind == CS_F_MAP) {
             int sub = 1;
@@ -46,7 +47,9 @@ static void jfields(cs_wout *w, int *first, const cs_table *t, const void *def) 
         } else if (fd->kind == CS_F_INT || fd->kind == CS_F_ENUM) {
             int v;
             memcpy(&v, at, sizeof v);
-            if (fd->kind == CS_F_ENUM)
+            if (fd->kind == CS_F_ENUM && v < 0)
+                fprintf(w->f, "null"); /* a CS_OWN map's: its parent's */
+            else if (fd->kind == CS_F_ENUM)
                 cs_json_string(w->f, fd->words[v]);
             else
                 fprintf(w->f, "%d", v);
@@ -306,6 +309,10 @@ int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model
         jnum(&w, &ef, "value", e->value);
         jkey(&w, &ef, "unit");
         cs_json_string(f, cs_event_value_unit(e->type));
+        if (e->cable_end >= 0) {
+            jkey(&w, &ef, "cable_end");
+            cs_json_string(f, cs_event_cable_end_name(e));
+        }
         fprintf(f, "}");
     }
     fprintf(f, "],\n\"inputs\":");

@@ -392,11 +392,17 @@ static void write_design(jw *j, int *first, const cs_barrier_def *b) {
         knum(j, &rf, "height_m", cd->height);
         kfields(j, &rf, &cd->rope, rope_fields, sizeof rope_fields / sizeof rope_fields[0]);
         knum(j, &rf, "pretension_n", cd->pretension);
-        kstr(j, &rf, "termination", cs_termination_word(cd->termination));
-        knum(j, &rf, "termination_efficiency",
-             cd->termination_efficiency > 0 ? cd->termination_efficiency
-                                            : cs_termination_efficiency(cd->termination, cd->rope.diameter));
-        fputc('}', f);
+        key(j, &rf, "ends"); /* the fitting at the start anchor, at the end anchor */
+        for (int k = 0; k < 2; k++) {
+            cs_termination kind;
+            double eff = cs_cable_end_efficiency(cd, k, &kind);
+            int ef = 1;
+            fputs(k ? ",{" : "[{", f);
+            kstr(j, &ef, "termination", cs_termination_word(kind));
+            knum(j, &ef, "termination_efficiency", eff);
+            fputc('}', f);
+        }
+        fputs("]}", f);
     }
     fputs("],\"post_kinds\":[", f);
     int kinds = 0;
@@ -580,7 +586,7 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
     num(&j, b->end_anchor.z);
     fputs("]]}", f);
     write_design(&j, &first, b);
-    /* events: [t, type, element kind, element, value (SI)] */
+    /* events: [t, type, element kind, element, value (SI)], a termination_break's cable end after */
     key(&j, &first, "events");
     fputc('[', f);
     for (int i = 0; i < cs_state_event_count(state); i++) {
@@ -594,6 +600,7 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
         cs_json_page_string(f, cs_element_kind_name(e->element_kind));
         fprintf(f, ",%d,", e->element);
         num(&j, e->value);
+        if (e->cable_end >= 0) fprintf(f, ",%d", e->cable_end);
         fputc(']', f);
     }
     fputc(']', f);
