@@ -283,7 +283,8 @@ static void hash_bytes(unsigned long long *h, const void *data, size_t n) {
 }
 
 /* FNV-1a over the bytes of every number that evolves: the vehicle, each cable's path, plastic strain,
- * status and face contacts, each post's tilt, plastic rotation and status, the rails, the anchors, the
+ * status, engagement and face contacts, each post's tilt, plastic rotation, swing rate, status and what
+ * pushes a struck one, the rails, each anchor's movement, its rate and acceleration and status, the
  * ledger and the events (field by field: no struct padding). */
 unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
     unsigned long long h = CS_FNV1A64_BASIS;
@@ -296,8 +297,8 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
     hash_bytes(&h, &s->crush_max, sizeof s->crush_max);
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
-        int status = (int)cs->status;
-        hash_bytes(&h, &status, sizeof status);
+        int flags[2] = {(int)cs->status, cs->engaged};
+        hash_bytes(&h, flags, sizeof flags);
         hash_bytes(&h, cs->node, (size_t)cs->node_count * sizeof *cs->node);
         hash_bytes(&h, cs->m, (size_t)cs->node_count * sizeof *cs->m);
         hash_bytes(&h, cs->pos, (size_t)cs->node_count * 3 * sizeof *cs->pos);
@@ -305,16 +306,24 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
         hash_bytes(&h, cs->corner_z, sizeof cs->corner_z);
     }
     for (int p = 0; p < model->post_count; p++) {
-        int status = (int)s->posts[p].status;
-        hash_bytes(&h, &status, sizeof status);
-        hash_bytes(&h, s->posts[p].tilt, sizeof s->posts[p].tilt);
-        hash_bytes(&h, s->posts[p].plastic, sizeof s->posts[p].plastic);
+        const cs_post_state *ps = &s->posts[p];
+        int flags[5] = {(int)ps->status, ps->yielded, ps->captured, ps->pusher, ps->bearing};
+        hash_bytes(&h, flags, sizeof flags);
+        hash_bytes(&h, ps->tilt, sizeof ps->tilt);
+        hash_bytes(&h, ps->plastic, sizeof ps->plastic);
+        hash_bytes(&h, ps->rate, sizeof ps->rate);
+        hash_bytes(&h, &ps->push, sizeof ps->push);
     }
     hash_bytes(&h, s->rail_plastic,
                (size_t)model->rail_count * (size_t)model->post_count * sizeof *s->rail_plastic);
     for (int a = 0; a < 2; a++) {
-        hash_bytes(&h, s->anchors[a].u, sizeof s->anchors[a].u);
-        hash_bytes(&h, s->anchors[a].plastic, sizeof s->anchors[a].plastic);
+        const cs_anchor_state *as = &s->anchors[a];
+        int flags[2] = {as->failed, as->yielded};
+        hash_bytes(&h, flags, sizeof flags);
+        hash_bytes(&h, as->u, sizeof as->u);
+        hash_bytes(&h, as->plastic, sizeof as->plastic);
+        hash_bytes(&h, as->rate, sizeof as->rate);
+        hash_bytes(&h, as->acc, sizeof as->acc);
     }
     hash_bytes(&h, &s->energy, sizeof s->energy);
     for (int k = 0; k < s->event_count; k++) {
