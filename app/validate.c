@@ -45,7 +45,7 @@ typedef struct result {
 } result;
 
 enum { CRASH = 3, BOGIE = CS_BOGIE_TESTS, REFINE = 2, VALUES = 4, INPUTS = 6, JOINT = 32, JOINT_SEED = 2656 };
-enum { READINGS = 9, ROAD = 6, ROAD_READINGS = 8 };
+enum { READINGS = 11, ROAD = 6, ROAD_READINGS = 8 };
 enum {
     MAX_JOBS = CRASH + BOGIE + CRASH * REFINE * VALUES + CRASH * INPUTS * 2 + CRASH * JOINT +
                CRASH * READINGS + ROAD * (1 + ROAD_READINGS)
@@ -778,6 +778,16 @@ static const struct {
      0,
      {"barrier.anchors.start.footing.width_scaling=none", "barrier.anchors.end.footing.width_scaling=none",
       NULL}},
+    {"the dead-men at Eq. 21's static capacity (no rate or wedge factor)",
+     "aps1 aps3 aps4",
+     0,
+     {"barrier.anchors.start.footing.dynamic_factor=1", "barrier.anchors.start.footing.width_scaling=none",
+      "barrier.anchors.end.footing.dynamic_factor=1", "barrier.anchors.end.footing.width_scaling=none",
+      NULL}},
+    {"the line posts pull out at 50 kip instead of 20 (the paper's 20-50 kip)",
+     "aps1 aps3 aps4",
+     0,
+     {"barrier.posts[0].footing.pullout_capacity=50 kip", NULL}},
     {"swaged end fittings (95%) instead of clips (90%)",
      "aps1 aps3 aps4",
      0,

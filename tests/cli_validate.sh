@@ -58,7 +58,7 @@ check "the blind table gives each kind of post failure per side ($kinds rows)" '
 "$cs" validate -o "$dir/read" --only readings --report-only >/dev/null 2>&1
 check "validate --only readings exits 0" '[ $? -eq 0 ]'
 md="$dir/read/validation.md"
-check "26 rows of readings (9 + 8 + 9)" '[ "$(grep -cE "^\| aps[134] \| (as the file|no rails|rails of|the |swaged)" "$md")" -eq 26 ]'
+check "32 rows of readings (11 + 10 + 11)" '[ "$(grep -cE "^\| aps[134] \| (as the file|no rails|rails of|the |swaged)" "$md")" -eq 32 ]'
 check "a band row per test" '[ "$(grep -cE "^\| aps[134] \| [0-9]+ \| [0-9]+ \|" "$md")" -eq 3 ]'
 # APS1's measured deceleration judged against the band a table of FILE prints: "lo-hi inside|OUTSIDE".
 aps1_band() {
