@@ -1,6 +1,5 @@
 /* Banded LU with partial pivoting (band.h). The loops walk from the diagonal entry d = A(k, k): along
- * row k by d[j - k], down column k by steps of width - 1. The factors keep U's diagonal as its
- * reciprocals, so the solve multiplies where it would divide. */
+ * row k by d[j - k], down column k by steps of width - 1. */
 #include "band.h"
 
 #include <math.h>
@@ -53,7 +52,6 @@ int cs_band_factor(cs_band *b) {
                 for (int j = 1; j <= width; j++)
                     di[j] -= f * d[j];
         }
-        d[0] = inv;
     }
     return 0;
 }
@@ -80,6 +78,6 @@ void cs_band_solve(const cs_band *b, double *x) {
         double sum = 0.0;
         for (int j = 1; j <= width; j++)
             sum += d[j] * x[k + j];
-        x[k] = (x[k] - sum) * d[0];
+        x[k] = (x[k] - sum) / d[0];
     }
 }
