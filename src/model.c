@@ -38,10 +38,7 @@ static int check_rope(const cs_rope_def *r, int c, cs_error *err) {
         return fail(err, "cable %d: elastic limit ratio must be in (0, 1]", c);
     if (!(r->secondary_modulus_ratio > 0.0 && r->secondary_modulus_ratio <= 1.0))
         return fail(err, "cable %d: secondary modulus ratio must be in (0, 1]", c);
-    double e2 = r->nominal_strength *
-                (r->elastic_limit_ratio / r->modulus +
-                 (1.0 - r->elastic_limit_ratio) / (r->secondary_modulus_ratio * r->modulus)) /
-                r->area;
+    double e2 = cs_rope_strain_at_strength(r);
     if (!(r->breaking_strain > e2))
         return fail(err, "cable %d: breaking strain %.4g must exceed the strain at nominal strength %.4g", c,
                     r->breaking_strain, e2);
@@ -265,7 +262,7 @@ static void derive_rope(const cs_rope_def *d, double g, cs_rope *r) {
     r->t1 = d->elastic_limit_ratio * r->fu;
     r->e1 = r->t1 / r->ea;
     r->k2 = d->secondary_modulus_ratio * r->ea;
-    r->e2 = r->e1 + (r->fu - r->t1) / r->k2;
+    r->e2 = cs_rope_strain_at_strength(d);
     r->e_break = d->breaking_strain;
     r->w = d->mass_per_length * g;
 }

@@ -41,6 +41,10 @@ typedef struct cs_rope_def {
     double diameter;                /**< nominal diameter d, m (0: unknown) */
 } cs_rope_def;
 
+/** The strain at which a rope reaches its nominal strength on the law's two slopes,
+ * r_el Fu / (EA) + (1 - r_el) Fu / (r_2 EA): its breaking strain must exceed it. */
+CS_API double cs_rope_strain_at_strength(const cs_rope_def *rope);
+
 /** How a rope's ends are made off at the anchors: each kind's published efficiency (its breaking strength
  * over the rope's) is in cs_termination_efficiency and docs/assumptions.md. */
 typedef enum cs_termination {

@@ -267,9 +267,7 @@ static void convert_cable(cs_loader *l, const cs_node *c, cs_cable_def *out) {
     if (rope && cs_convert_rope(l, rope, &out->rope, NULL) != 0) return;
     if (fields(l, c, out, 1) != 0 || !rope || cs_damaged(l, c)) return;
     const cs_rope_def *r = &out->rope;
-    double ea = r->area * r->modulus, fu = r->nominal_strength;
-    double strain_fu = r->elastic_limit_ratio * fu / ea +
-                       (1 - r->elastic_limit_ratio) * fu / (r->secondary_modulus_ratio * ea);
+    double fu = r->nominal_strength, strain_fu = cs_rope_strain_at_strength(r);
     if (r->breaking_strain <= strain_fu)
         cs_err_node(l, at(c, "breaking_strain"), 0,
                     "breaking strain %g is below the strain at nominal strength "
