@@ -53,7 +53,7 @@ double cs_termination_efficiency(cs_termination kind, double diameter) {
     case CS_TERMINATION_WEDGE:
         return 0.85;
     case CS_TERMINATION_AS_CABLE: /* no kind of its own */
-        break;
+        return 0.0;
     }
     return 0.80;
 }

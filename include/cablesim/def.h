@@ -75,7 +75,8 @@ typedef struct cs_cable_def {
     cs_rope_def rope;              /**< its rope */
 } cs_cable_def;
 
-/** The published efficiency of a fitting on a rope of diameter d (m; 0 unknown: the larger rope's). */
+/** The published efficiency of a fitting on a rope of diameter d (m; 0 unknown: the larger rope's); 0 for
+ * CS_TERMINATION_AS_CABLE, which is no fitting of its own. */
 CS_API double cs_termination_efficiency(cs_termination kind, double diameter);
 
 /** The efficiency of the fitting at a cable's end (0 the start anchor's, 1 the end anchor's), as the engine

@@ -192,10 +192,12 @@ export function designTable(data) {
   const groups = [];
   const row = (name, [si, us], id) => ({ name, si, us, id });
   const text = (name, si, us = null) => ({ name, si, us });
-  // rope c's end fittings: one row where both ends have the same, else one an end
+  // rope c's end fittings: one row where both ends have the same kind and efficiency, else one an end
   const fittings = (ends, c) => {
     const [start, end] = ends.map((e) => `${e.termination}, ${fmt(100 * e.termination_efficiency, 0)} % of Fu`);
-    if (start === end) return [{ ...text('End fitting at the anchors', start), id: `rope-${c}-fitting` }];
+    const same = ends[0].termination === ends[1].termination &&
+      ends[0].termination_efficiency === ends[1].termination_efficiency;
+    if (same) return [{ ...text('End fitting at the anchors', start), id: `rope-${c}-fitting` }];
     return [
       { ...text('End fitting at the start anchor', start), id: `rope-${c}-fitting-start` },
       { ...text('End fitting at the end anchor', end), id: `rope-${c}-fitting-end` },
