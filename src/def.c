@@ -35,13 +35,13 @@ cs_cable_def cs_default_cable_def(void) {
     return d;
 }
 
-/* US Army TM 5-3810-305-10 Table 4 and Crosby's G-450 instructions (shared reference data: rope-fittings.md).
- */
 double cs_rope_strain_at_strength(const cs_rope_def *r) {
     double ea = r->modulus * r->area, t1 = r->elastic_limit_ratio * r->nominal_strength;
     return t1 / ea + (r->nominal_strength - t1) / (r->secondary_modulus_ratio * ea);
 }
 
+/* US Army TM 5-3810-305-10 Table 4 and Crosby's G-450 instructions (shared reference data: rope-fittings.md).
+ */
 double cs_termination_efficiency(cs_termination kind, double diameter) {
     switch (kind) {
     case CS_TERMINATION_CLIPS:
