@@ -103,14 +103,6 @@ double cs_cable_stored_energy(const cs_cable_model *cm, const cs_cable_state *cs
     return e;
 }
 
-/* The larger of the end spans' tensions over their fittings' strengths; its end (0 start, 1 end) in *end. */
-static double end_load(const cs_cable_model *cm, const cs_cable_state *cs, int *end) {
-    double r0 = cs->tension[0] / cm->termination_strength[0];
-    double r1 = cs->tension[cs->node_count - 2] / cm->termination_strength[1];
-    if (end) *end = r1 > r0;
-    return fmax(r0, r1);
-}
-
 /* End of step: plastic flow of each span (work T dep s) and friction work of rope that slid over each
  * support (|slide| |T_left - T_right| measured along the stretched rope). */
 void cs_cable_commit(const cs_model *model, int c, cs_state *s) {
@@ -151,24 +143,27 @@ void cs_cable_commit(const cs_model *model, int c, cs_state *s) {
          * difference of either sign while rope runs across it (docs/theory.md, Capstan friction) */
         s->e_friction += slide * (cs->tension[i - 1] - cs->tension[i]) * stretch;
     }
+    cs_termination_commit(model, c, s); /* rope slipped through the end fittings */
     memcpy(cs->m_commit, cs->m, (size_t)cs->node_count * sizeof *cs->m);
     if (tmax > cs->max_tension_seen) cs->max_tension_seen = tmax;
     cs->max_strain = worst;
-    cs->end_load = end_load(cm, cs, NULL);
+    cs->end_load = cs_termination_load(cm, cs, NULL);
 }
 
-/* A span strained to the breaking strain breaks the cable (cable_break, with its largest span tension),
- * and an end span whose tension exceeds its fitting's strength breaks it at that fitting
- * (termination_break, with the end and that span's tension); from then on it carries nothing. */
+/* A span strained to the breaking strain breaks the cable (cable_break, with its largest span tension);
+ * an end span whose tension exceeds its fitting's strength, or whose rope has slipped through the fitting
+ * by its slip travel, breaks it at that fitting (termination_break, with the end and that span's
+ * tension); from then on it carries nothing. */
 int cs_cable_check_break(const cs_model *model, int c, cs_state *s) {
+    const cs_cable_model *cm = &model->cables[c];
     cs_cable_state *cs = &s->cables[c];
     if (cs->status != CS_CABLE_INTACT) return 0;
-    int strained = cs->max_strain >= model->cables[c].rope.e_break, end;
-    if (!strained && cs->end_load <= 1.0) return 0;
+    int strained = cs->max_strain >= cm->rope.e_break, end = cs_termination_run_out(cm, cs);
+    if (!strained && end < 0 && cs->end_load <= 1.0) return 0;
     double tmax = 0.0;
     for (int i = 0; i + 1 < cs->node_count; i++)
         tmax = fmax(tmax, cs->tension[i]);
-    end_load(&model->cables[c], cs, &end);
+    if (end < 0) cs_termination_load(cm, cs, &end);
     double t_end = cs->tension[end ? cs->node_count - 2 : 0];
     cs_cable_release(cs, CS_CABLE_BROKEN);
     cs_event *e = cs_event_add(model, s, strained ? CS_EVENT_CABLE_BREAK : CS_EVENT_TERMINATION_BREAK,

@@ -68,6 +68,12 @@ double cs_cable_end_efficiency(const cs_cable_def *cable, int end, cs_terminatio
     return cs_termination_efficiency(k, cable->rope.diameter);
 }
 
+double cs_cable_end_slip(const cs_cable_def *cable, int end, double *travel) {
+    const cs_cable_end_def *e = &cable->ends[end != 0];
+    if (travel) *travel = e->slip_travel > 0.0 ? e->slip_travel : cable->slip_travel;
+    return e->slip_load > 0.0 ? e->slip_load : cable->slip_load;
+}
+
 /* docs/assumptions.md: a slot's strap and cap, taken as the vertical release of the cable-to-post
  * attachments designed for the same purpose (about 1 kN); a 5/16-in hook bolt opening at the plastic
  * moment of its bar (36 ksi) over the lever from the bar to the 3/4-in cable's centre (13.5 mm). */

@@ -59,6 +59,9 @@ typedef struct cs_cable_model {
     double pretension; /* N */
     double mu_post;
     double termination_strength[2]; /* tension at which each end's fitting lets go (0 start, 1 end), N */
+    double slip_load[2];            /* end span tension at which the rope slips through each end's fitting,
+                                       N (0: it does not slip) */
+    double slip_travel[2];          /* rope each lets slip before the rope runs out of it, m */
     cs_rope rope;
 } cs_cable_model;
 
@@ -144,6 +147,7 @@ typedef struct cs_cable_state {
     double max_tension_seen;
     double max_strain; /* largest span strain at the last commit */
     double end_load;   /* the larger of the end spans' tensions over their fittings' strengths, last commit */
+    double slip[2];    /* rope slipped out of each end's fitting into its end span (committed), m */
 } cs_cable_state;
 
 typedef struct cs_post_state {
@@ -281,6 +285,17 @@ void cs_cable_insert_node(cs_cable_state *cs, int at, int id, const double *p);
 void cs_cable_remove_node(cs_cable_state *cs, int at);
 void cs_cable_commit(const cs_model *model, int c, cs_state *s);
 int cs_cable_check_break(const cs_model *model, int c, cs_state *s);
+
+/* ---- a rope's end fittings (termination.c) ---- */
+/* The larger of the end spans' tensions over their fittings' strengths; its end (0 start, 1 end) in *end. */
+double cs_termination_load(const cs_cable_model *cm, const cs_cable_state *cs, int *end);
+/* Whether the rope can slip through the fitting at `end` now: it has a slip load and is not yet run out. */
+int cs_termination_slips(const cs_cable_model *cm, const cs_cable_state *cs, int end);
+/* An end whose rope has slipped through its fitting by the slip travel, or -1. */
+int cs_termination_run_out(const cs_cable_model *cm, const cs_cable_state *cs);
+/* At the commit, before m_commit takes m: the rope let through each end's fitting, its friction work and
+ * the slip's start (termination_slip). */
+void cs_termination_commit(const cs_model *model, int c, cs_state *s);
 /* The cable carries nothing from now on (broken, released by its anchor, slipped off the face). */
 void cs_cable_release(cs_cable_state *cs, cs_cable_status status);
 double cs_cable_stored_energy(const cs_cable_model *cm, const cs_cable_state *cs);

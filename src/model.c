@@ -153,6 +153,8 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
             return fail(err, "cable %d: post friction must be in [0, 2]", c);
         if (!(d->termination_efficiency >= 0.0 && d->termination_efficiency <= 1.0))
             return fail(err, "cable %d: termination efficiency must be in (0, 1] (0: the fitting's own)", c);
+        if (!non_negative(d->slip_load) || !non_negative(d->slip_travel))
+            return fail(err, "cable %d: slip load and travel must be >= 0", c);
         if (d->termination < CS_TERMINATION_CLIPS || d->termination > CS_TERMINATION_WEDGE)
             return fail(err, "cable %d: unknown termination", c);
         for (int k = 0; k < 2; k++) {
@@ -165,6 +167,18 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
                             c, at);
             if (e->termination < CS_TERMINATION_AS_CABLE || e->termination > CS_TERMINATION_WEDGE)
                 return fail(err, "cable %d: unknown termination at the %s anchor", c, at);
+            if (!non_negative(e->slip_load) || !non_negative(e->slip_travel))
+                return fail(err, "cable %d: slip load and travel at the %s anchor must be >= 0", c, at);
+            double travel, slip = cs_cable_end_slip(d, k, &travel);
+            if (slip > 0.0 && !(travel > 0.0))
+                return fail(err, "cable %d: the fitting at the %s anchor slips but has no slip travel", c,
+                            at);
+            if (slip > 0.0 && slip <= d->pretension)
+                return fail(
+                    err,
+                    "cable %d: the fitting at the %s anchor slips at %.4g N, not above the pretension "
+                    "(%.4g N): it could not be tensioned",
+                    c, at, slip, d->pretension);
         }
         if (check_rope(&d->rope, c, err)) return 1;
         if (d->pretension >= d->rope.elastic_limit_ratio * d->rope.nominal_strength)
@@ -365,8 +379,10 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
         cm->pretension = d->pretension;
         cm->mu_post = d->post_friction;
         derive_rope(&d->rope, scenario->gravity, &cm->rope);
-        for (int k = 0; k < 2; k++)
+        for (int k = 0; k < 2; k++) {
             cm->termination_strength[k] = cs_cable_end_efficiency(d, k, NULL) * cm->rope.fu;
+            cm->slip_load[k] = cs_cable_end_slip(d, k, &cm->slip_travel[k]);
+        }
     }
     /* the load height of every post: its cables' mean height, or for a barrier of posts alone
      * (bollards, a bogie test) the height where the vehicle's face strikes them */
@@ -439,7 +455,7 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
     m->window_steps = (int)lround(0.05 / scenario->dt);
     if (m->window_steps < 1) m->window_steps = 1;
     /* each post and cable fails in a few ways, once; slots and hooks let each cable go once per post */
-    m->event_capacity = 4 * m->post_count + 4 * m->cable_count + m->post_count * m->cable_count + 16;
+    m->event_capacity = 4 * m->post_count + 6 * m->cable_count + m->post_count * m->cable_count + 16;
     return m;
 
 oom:

@@ -85,6 +85,12 @@ void cs_rows_length_gradient(const cs_span_grad *sp, double coef, double gp[3][3
 /* Gradient of the turning angle at node i, times coef; adds to gp (0 where the rope runs straight). */
 void cs_rows_angle_gradient(const cs_span_grad *sp, double coef, double gp[3][3]);
 
+/* The row of a rope end node i that slips through its fitting (termination.c), and its Jacobian row. */
+double cs_termination_slip_residual(const cs_model *model, const cs_state *s, const cs_rows *rows, int c,
+                                    int i);
+void cs_termination_slip_jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row,
+                                  int c, int i);
+
 /* The rails' share of post p's rows (rail.c), in its moment unit. */
 void cs_rail_jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row, int p,
                       double unit);

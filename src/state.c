@@ -300,7 +300,7 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
         int flags[2] = {(int)cs->status, cs->engaged};
         hash_bytes(&h, flags, sizeof flags);
         hash_bytes(&h, cs->node, (size_t)cs->node_count * sizeof *cs->node);
-        hash_bytes(&h, cs->m, (size_t)cs->node_count * sizeof *cs->m);
+        hash_bytes(&h, cs->m, (size_t)cs->node_count * sizeof *cs->m); /* the ends' m: their slip too */
         hash_bytes(&h, cs->pos, (size_t)cs->node_count * 3 * sizeof *cs->pos);
         if (cs->node_count > 1) hash_bytes(&h, cs->ep, (size_t)(cs->node_count - 1) * sizeof *cs->ep);
         hash_bytes(&h, cs->corner_z, sizeof cs->corner_z);
@@ -332,7 +332,7 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
         hash_bytes(&h, &e->t, sizeof e->t);
         hash_bytes(&h, what, sizeof what);
         hash_bytes(&h, &e->value, sizeof e->value);
-        if (e->cable_end >= 0) hash_bytes(&h, &e->cable_end, sizeof e->cable_end); /* termination_break */
+        if (e->cable_end >= 0) hash_bytes(&h, &e->cable_end, sizeof e->cable_end); /* a termination's */
     }
     return h;
 }

@@ -85,14 +85,24 @@ static void support_jacobian(const cs_model *model, const cs_state *s, const cs_
     cs_rows_add_node_gradient(model, s, rows, row, c, i, gp, gm);
 }
 
+/* A node the rope slides through: a support (here), or an end of it slipping through its fitting
+ * (termination.c). */
+static int at_end(const cs_state *s, const cs_slot *u) {
+    return u->b == 0 || u->b == s->cables[u->a].node_count - 1;
+}
+
 static void residual(const cs_model *model, const cs_state *s, const cs_rows *rows, const cs_slot *u,
                      double *r) {
-    r[0] = support_residual(model, s, rows, u->a, u->b);
+    r[0] = at_end(s, u) ? cs_termination_slip_residual(model, s, rows, u->a, u->b)
+                        : support_residual(model, s, rows, u->a, u->b);
 }
 
 static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row,
                      const cs_slot *u) {
-    support_jacobian(model, s, rows, row, u->a, u->b);
+    if (at_end(s, u))
+        cs_termination_slip_jacobian(model, s, rows, row, u->a, u->b);
+    else
+        support_jacobian(model, s, rows, row, u->a, u->b);
 }
 
 const cs_row_kind cs_support_rows = {1, residual, jacobian};

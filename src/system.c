@@ -1,14 +1,15 @@
 /* The barrier's quasi-static equilibrium as one nonlinear system (system.h), solved by Newton (newton.c).
  *
  * Unknowns: the tilt (2) of every standing post on a cable path, the material coordinate m of every
- * support node the rope can slide through (posts that do not clamp, face corners), each engaged contact's
- * height on the face, and the crush. Each kind of element gives its rows (rows.h): post.c, support.c,
- * contact.c. Every row is scaled by its unit (Fu for nodes and contacts; for a post, its strongest rope's
- * Fu at that rope's lever; the crush curve's top), so that one tolerance is one force everywhere.
- * Unknowns are ordered along the barrier, so the Jacobian is banded and its LU costs linear time in the
- * number of posts; the solution does not depend on any sweep order, so a symmetric impact stays
- * symmetric. The Jacobian is formed from the spans' tension gradients; the crush's column alone is a
- * difference quotient (the crush moves every corner and captured post at once). */
+ * support node the rope can slide through (posts that do not clamp, face corners) and of every rope end
+ * that can slip through its fitting, each engaged contact's height on the face, the crush, and each
+ * yielding anchor's slide (2). Each kind of element gives its rows (rows.h): post.c, support.c (with
+ * termination.c for the ends), contact.c, anchor.c. Every row is scaled by its unit (Fu for nodes and
+ * contacts; for a post, its strongest rope's Fu at that rope's lever; the crush curve's top), so that one
+ * tolerance is one force everywhere. Unknowns are ordered along the barrier, so the Jacobian is banded and
+ * its LU costs linear time in the number of posts; the solution does not depend on any sweep order, so a
+ * symmetric impact stays symmetric. The Jacobian is formed from the spans' tension gradients; the crush's
+ * column alone is a difference quotient (the crush moves every corner and captured post at once). */
 #include "system.h"
 
 #include "vec3.h"
@@ -50,7 +51,7 @@ int cs_system_init(const cs_model *model, cs_system *sys) {
     sys->slots_bw = calloc(n, sizeof *sys->slots_bw);
     sys->nodes_bw = calloc(nc * (nn + 1) + 1, sizeof *sys->nodes_bw);
     sys->scratch = calloc(n, sizeof *sys->scratch);
-    sys->key_count = 2 * np + nc * (np + CS_CORNERS) + CS_CORNERS * nc + 5; /* see slot_key */
+    sys->key_count = 2 * np + nc * (np + CS_CORNERS + 2) + CS_CORNERS * nc + 5; /* see slot_key */
     sys->last = calloc(sys->key_count, sizeof *sys->last);
     sys->last_step = calloc(sys->key_count, sizeof *sys->last_step);
     if (!rw->slots || !rw->tilt_index || !rw->node_index || !rw->height_index || !rw->spans || !rw->chords ||
@@ -140,6 +141,11 @@ static int assemble(const cs_model *model, const cs_state *s, cs_system *sys) {
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
         if (cs->status != CS_CABLE_INTACT) continue;
+        for (int end = 0; end < 2; end++) /* rope slipping through an end fitting */
+            if (cs_termination_slips(&model->cables[c], cs, end)) {
+                int i = end ? cs->node_count - 1 : 0;
+                sl[n++] = (cs_slot){cs->pos[3 * i], CS_U_NODE, c, i, 0};
+            }
         for (int i = 1; i + 1 < cs->node_count; i++) {
             if (node_slides(model, cs, i)) sl[n++] = (cs_slot){cs->pos[3 * i], CS_U_NODE, c, i, 0};
             if (cs_node_is_corner(cs->node[i]))
@@ -438,10 +444,12 @@ static size_t slot_key(const cs_model *model, const cs_state *s, const cs_slot *
     if (u->kind == CS_U_TILT) return 2 * (size_t)u->a + (size_t)u->b;
     if (u->kind == CS_U_NODE) {
         int id = s->cables[u->a].node[u->b];
-        size_t at = id >= 0 ? (size_t)id : np + (size_t)cs_node_corner(id);
-        return 2 * np + (size_t)u->a * (np + CS_CORNERS) + at;
+        size_t at = id >= 0                 ? (size_t)id
+                    : cs_node_is_corner(id) ? np + (size_t)cs_node_corner(id)
+                                            : np + CS_CORNERS + (id == CS_NODE_END); /* an end fitting */
+        return 2 * np + (size_t)u->a * (np + CS_CORNERS + 2) + at;
     }
-    size_t past = 2 * np + nc * (np + CS_CORNERS); /* heights, the crush, anchors */
+    size_t past = 2 * np + nc * (np + CS_CORNERS + 2); /* heights, the crush, anchors */
     if (u->kind == CS_U_HEIGHT) return past + CS_CORNERS * (size_t)u->a + (size_t)u->b;
     if (u->kind == CS_U_ANCHOR) return past + CS_CORNERS * nc + 1 + 2 * (size_t)u->a + (size_t)u->b;
     return past + CS_CORNERS * nc;

@@ -280,7 +280,8 @@ static world *make_world_ends(cs_termination kind, double eff, cs_cable_end_def 
 
 /* Each end's strength: its own kind's published efficiency (swaged 0.95 at the start, clips 0.90 on the
  * 1.75-in rope at the end), the cable's efficiency where it takes the cable's kind, its own efficiency
- * over both; an efficiency above 1 or an unknown kind at an end is refused, naming the end. */
+ * over both; an efficiency above 1, an unknown kind, a slip with no travel, a slip load the pretension
+ * would pass or a negative one at an end is refused, naming the end. */
 static void each_end_has_its_own_strength(void **state) {
     (void)state;
     enum { AS = CS_TERMINATION_AS_CABLE, CLIPS = CS_TERMINATION_CLIPS, SWAGED = CS_TERMINATION_SWAGED };
@@ -291,10 +292,19 @@ static void each_end_has_its_own_strength(void **state) {
         cs_cable_end_def ends[2];
         double want[2];
     } cases[] = {
-        {CLIPS, 0.0, {{SWAGED, 0.0}, {CLIPS, 0.0}}, {0.95, 0.90}}, /* each its kind's */
-        {SWAGED, 0.0, {{AS, 0.0}, {WEDGE, 0.0}}, {0.95, 0.85}},    /* the cable's kind at the start */
-        {SWAGED, 0.8, {{AS, 0.0}, {AS, 0.75}}, {0.8, 0.75}},       /* the cable's efficiency; its own */
-        {SWAGED, 0.8, {{SPELTER, 0.0}, {CLIPS, 0.7}}, {1.0, 0.7}}, /* its kind's, not the cable's 0.8 */
+        {CLIPS, 0.0, {{SWAGED, 0.0, 0.0, 0.0}, {CLIPS, 0.0, 0.0, 0.0}}, {0.95, 0.90}}, /* each its kind's */
+        {SWAGED,
+         0.0,
+         {{AS, 0.0, 0.0, 0.0}, {WEDGE, 0.0, 0.0, 0.0}},
+         {0.95, 0.85}}, /* the cable's kind at the start */
+        {SWAGED,
+         0.8,
+         {{AS, 0.0, 0.0, 0.0}, {AS, 0.75, 0.0, 0.0}},
+         {0.8, 0.75}}, /* the cable's efficiency; its own */
+        {SWAGED,
+         0.8,
+         {{SPELTER, 0.0, 0.0, 0.0}, {CLIPS, 0.7, 0.0, 0.0}},
+         {1.0, 0.7}}, /* its kind's, not the cable's 0.8 */
     };
     cs_error err;
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
@@ -310,14 +320,22 @@ static void each_end_has_its_own_strength(void **state) {
         int at;
         const char *want;
     } bad[] = {
-        {{CS_TERMINATION_AS_CABLE, 1.2},
+        {{CS_TERMINATION_AS_CABLE, 1.2, 0.0, 0.0},
          1,
          "cable 0: termination efficiency at the end anchor must be in (0, 1]"},
-        {{(cs_termination)4, 0.0}, 0, "cable 0: unknown termination at the start anchor"},
-        {{(cs_termination)-2, 0.0}, 1, "cable 0: unknown termination at the end anchor"},
+        {{(cs_termination)4, 0.0, 0.0, 0.0}, 0, "cable 0: unknown termination at the start anchor"},
+        {{(cs_termination)-2, 0.0, 0.0, 0.0}, 1, "cable 0: unknown termination at the end anchor"},
+        {{CS_TERMINATION_AS_CABLE, 0.0, 30.0 * KIP, 0.0},
+         1,
+         "cable 0: the fitting at the end anchor slips but has no slip travel"},
+        {{CS_TERMINATION_AS_CABLE, 0.0, 4.0 * KIP, 0.5},
+         0, /* the pretension is 5 kip */
+         "cable 0: the fitting at the start anchor slips at 1.779e+04 N, not above the pretension"},
+        {{CS_TERMINATION_AS_CABLE, 0.0, -1.0, 0.5}, 0, "cable 0: slip load and travel at the start anchor"},
     };
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
-        cs_cable_end_def ends[2] = {{CS_TERMINATION_AS_CABLE, 0.0}, {CS_TERMINATION_AS_CABLE, 0.0}};
+        cs_cable_end_def ends[2] = {{CS_TERMINATION_AS_CABLE, 0.0, 0.0, 0.0},
+                                    {CS_TERMINATION_AS_CABLE, 0.0, 0.0, 0.0}};
         ends[bad[k].at] = bad[k].end;
         world *w = make_world_ends(CS_TERMINATION_CLIPS, 0.0, ends[0], ends[1], &err);
         assert_null(w->model);
@@ -334,7 +352,8 @@ static void each_end_has_its_own_strength(void **state) {
 static void each_end_breaks_at_its_own_fitting(void **state) {
     (void)state;
     cs_error err;
-    cs_cable_end_def swaged = {CS_TERMINATION_SWAGED, 0.0}, clips = {CS_TERMINATION_CLIPS, 0.0};
+    cs_cable_end_def swaged = {CS_TERMINATION_SWAGED, 0.0, 0.0, 0.0},
+                     clips = {CS_TERMINATION_CLIPS, 0.0, 0.0, 0.0};
     world *w = make_world_ends(CS_TERMINATION_CLIPS, 0.0, swaged, clips, &err);
     assert_non_null(w->state);
     const cs_rope *r = &w->model->cables[0].rope;
@@ -373,6 +392,62 @@ static void each_end_breaks_at_its_own_fitting(void **state) {
     world_free(w);
 }
 
+/* Clips that slip: APS3's ropes with fittings that let the rope through at F_s = 30 kip (above the 5-kip
+ * pretension, below the 0.90 Fu = 252 kip they break at) and run out after 18 in. The truck loads every
+ * end past F_s: each starts to slip there (termination_slip, its end span at F_s within the clamp's
+ * rounding, 3 x 1e-3 Fu), no committed end span carries more than F_s and the solve's tolerance (1e-4
+ * Fu), and an end lets go (termination_break) once it has let the 18 in through, within one step's
+ * slip (0.5 ms at the rope's end speed, well under 5 cm); the ledger closes within 1%. */
+static void a_fitting_slips_at_its_load_and_runs_out(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    double fs = 30.0 * KIP, travel = 18.0 * IN;
+    for (int c = 0; c < 2; c++)
+        fx.cables[c].slip_load = fs, fx.cables[c].slip_travel = travel;
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    cs_state *s = cs_state_create(m, &err);
+    assert_non_null(s);
+    double fu = m->cables[0].rope.fu, most = 0.0, slip_at_break[2][2] = {{0}};
+    while (s->outcome == CS_RUNNING) {
+        assert_int_equal(cs_step(m, s, &err), CS_OK);
+        for (int c = 0; c < 2; c++) {
+            const cs_cable_state *cs = &s->cables[c];
+            if (cs->status != CS_CABLE_INTACT) continue;
+            most = fmax(most, fmax(cs->tension[0], cs->tension[cs->node_count - 2]));
+            for (int end = 0; end < 2; end++)
+                slip_at_break[c][end] = cs->slip[end];
+        }
+    }
+    int slips = 0, breaks = 0;
+    for (int k = 0; k < cs_state_event_count(s); k++) {
+        const cs_event *e = cs_state_event(s, k);
+        if (e->type == CS_EVENT_TERMINATION_SLIP) {
+            slips++;
+            assert_true(e->value > fs - 3e-3 * fu && e->value <= fs + 1e-4 * fu);
+        }
+        if (e->type == CS_EVENT_TERMINATION_BREAK) {
+            breaks++;
+            CHECK_REL(e->value, fs, 1e-4 * fu / fs);
+            double through = s->cables[e->element].slip[e->cable_end];
+            assert_true(through >= travel && through < travel + 0.05);
+            assert_true(slip_at_break[e->element][e->cable_end] < travel); /* the step before, still held */
+        }
+    }
+    printf("largest end span tension %.1f kN (F_s %.1f kN), %d slips, %d run out\n", most / 1e3, fs / 1e3,
+           slips, breaks);
+    assert_int_equal(slips, 4);
+    assert_true(breaks >= 1);
+    assert_true(most <= fs + 1e-4 * fu);
+    cs_summary sm;
+    cs_state_summary(s, &sm);
+    assert_true(fabs(sm.energy_balance_error) < 0.01);
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(rope_law_points),
@@ -385,6 +460,7 @@ int main(void) {
         cmocka_unit_test(termination_breaks_at_its_efficiency),
         cmocka_unit_test(each_end_has_its_own_strength),
         cmocka_unit_test(each_end_breaks_at_its_own_fitting),
+        cmocka_unit_test(a_fitting_slips_at_its_load_and_runs_out),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

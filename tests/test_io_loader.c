@@ -339,9 +339,10 @@ static void test_reuse(void **state) {
 }
 
 /* Each rope end's own fitting (tests/good/ends.yaml) into ends[0] (start anchor) and ends[1] (end anchor),
- * an end not given left to the cable's, and as the engine takes them; a --set of an end's kind. An end left
+ * an end not given left to the cable's, and as the engine takes them; a --set of an end's kind; a slip
+ * load and travel by the cable and by an end (with units). An end left
  * to the cable's adds nothing to the model's hash: base.yaml's is the hash of its other values alone,
- * 0x0e2acfbb34c3174b; an end of its own changes it. */
+ * 0xd2aade023bc081e7; an end of its own changes it. */
 static void test_cable_ends(void **state) {
     (void)state;
     cs_model_input in;
@@ -377,11 +378,22 @@ static void test_cable_ends(void **state) {
     CHECK_REL(cs_cable_end_efficiency(&in.barrier.cables[1], 0, NULL), 1.0, 1e-15);
     cs_loader_free(l);
     l = load(CS_SOURCE_DIR "/tests/good/base.yaml", &in, NULL);
-    assert_true(cs_model_input_hash(&in) == 0x0e2acfbb34c3174bULL);
+    assert_true(cs_model_input_hash(&in) == 0xd2aade023bc081e7ULL);
+    cs_loader_free(l);
+    static const char *const slip[] = {"barrier.cables[0].slip_load=30 kip",
+                                       "barrier.cables[0].slip_travel=18 in",
+                                       "barrier.cables[0].end.slip_load=40 kip", NULL};
+    l = load(CS_SOURCE_DIR "/tests/good/base.yaml", &in, slip);
+    double travel; /* the cable's slip at the start; the end's own load with the cable's travel */
+    CHECK_REL(cs_cable_end_slip(&in.barrier.cables[0], 0, &travel), 30.0 * 4448.2216152605, 1e-12);
+    CHECK_REL(travel, 18.0 * 0.0254, 1e-12);
+    CHECK_REL(cs_cable_end_slip(&in.barrier.cables[0], 1, &travel), 40.0 * 4448.2216152605, 1e-12);
+    CHECK_REL(travel, 18.0 * 0.0254, 1e-12);
+    CHECK_ABS(cs_cable_end_slip(&in.barrier.cables[1], 0, NULL), 0.0, 0.0); /* none given: it holds */
     cs_loader_free(l);
     static const char *const own[] = {"barrier.cables[0].end.termination=clips", NULL};
     l = load(CS_SOURCE_DIR "/tests/good/base.yaml", &in, own);
-    assert_true(cs_model_input_hash(&in) != 0x0e2acfbb34c3174bULL);
+    assert_true(cs_model_input_hash(&in) != 0xd2aade023bc081e7ULL);
     cs_loader_free(l);
 }
 
@@ -396,7 +408,7 @@ static void test_cable_end_problems(void **state) {
         "/tests/bad/bad_cable_end.yaml:9:58: barrier.cables[1].end.termination_efficiency: '1.2' "
         "must be at most 1",
         CS_SOURCE_DIR "/tests/bad/bad_cable_end.yaml:10:86: barrier.cables[2].start: unknown key 'colour' "
-                      "(expected one of: termination, termination_efficiency)",
+                      "(expected one of: termination, termination_efficiency, slip_load, slip_travel)",
         NULL};
     expect_problems(CS_SOURCE_DIR "/tests/bad/bad_cable_end.yaml", NULL, want);
     static const char *const word[] = {CS_SOURCE_DIR

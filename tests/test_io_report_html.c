@@ -172,13 +172,15 @@ static void has_number(const char *json, const char *key, double v) {
 }
 
 /* Each rope end's fitting as the engine takes it: swaged (0.95) at cable 0's end anchor, cable 1's start at
- * its own 0.7 of the cable's clips, the other two ends the cable's clips (0.90 on 1.75-in rope). */
+ * its own 0.7 of the cable's clips, the other two ends the cable's clips (0.90 on 1.75-in rope); cable 1's
+ * end slips at 100 kN and runs out after 0.45 m, the rest do not slip. */
 static void design_has_each_end(void **st) {
     run *r = *st;
     cs_cable_def cables[2] = {r->in.barrier.cables[0], r->in.barrier.cables[1]};
     const cs_cable_def *loaded = r->in.barrier.cables;
     cables[0].ends[1].termination = CS_TERMINATION_SWAGED;
     cables[1].ends[0].termination_efficiency = 0.7;
+    cables[1].ends[1].slip_load = 1e5, cables[1].ends[1].slip_travel = 0.45;
     r->in.barrier.cables = cables;
     char why[256] = "";
     int rc;
@@ -190,7 +192,8 @@ static void design_has_each_end(void **st) {
                      "efficiency\":0.9},{\"termination\":\"swaged\",\"termination_efficiency\":0.95}]}"));
     assert_non_null(strstr(json,
                            "\"pretension_n\":22241.1,\"ends\":[{\"termination\":\"clips\",\"termination_"
-                           "efficiency\":0.7},{\"termination\":\"clips\",\"termination_efficiency\":0.9}]}"));
+                           "efficiency\":0.7},{\"termination\":\"clips\",\"termination_efficiency\":0.9,"
+                           "\"slip_load_n\":100000,\"slip_travel_m\":0.45}]}"));
     free(json);
 }
 

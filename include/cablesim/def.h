@@ -60,6 +60,9 @@ typedef struct cs_cable_end_def {
     cs_termination termination;    /**< its kind (CS_TERMINATION_AS_CABLE: the cable's) */
     double termination_efficiency; /**< its strength over the rope's Fu (0: its kind's published value, or
                                       the cable's termination_efficiency where it takes the cable's kind) */
+    double slip_load;              /**< end span tension at which the rope slips through it, N (0: the cable's
+                                      slip_load) */
+    double slip_travel; /**< rope it lets slip before the rope runs out of it, m (0: the cable's) */
 } cs_cable_end_def;
 
 /** A cable: a wire rope at a height along the posts, tied to both anchors. */
@@ -70,6 +73,10 @@ typedef struct cs_cable_def {
     cs_termination termination;    /**< the fitting at both ends, unless an end has its own */
     double termination_efficiency; /**< its strength over the rope's Fu (0: the kind's published value);
                                       the rope breaks at an end when that end span's tension exceeds it */
+    double slip_load;              /**< end span tension at which the rope slips through the fittings, N
+                                      (0: none; they hold to their strength, as correctly made clips do) */
+    double slip_travel;            /**< rope a fitting lets slip before the rope runs out of it (a clip's
+                                      turn-back), m; needed with a slip_load */
     cs_cable_end_def ends[2];      /**< each end's own fitting: 0 at the start anchor (low x), 1 at the
                                       end anchor (cs_default_cable_def: both the cable's) */
     cs_rope_def rope;              /**< its rope */
@@ -82,6 +89,11 @@ CS_API double cs_termination_efficiency(cs_termination kind, double diameter);
 /** The efficiency of the fitting at a cable's end (0 the start anchor's, 1 the end anchor's), as the engine
  * takes it; its kind in *kind (may be NULL). */
 CS_API double cs_cable_end_efficiency(const cs_cable_def *cable, int end, cs_termination *kind);
+
+/** The load at which the rope slips through the fitting at a cable's end (0 the start anchor's, 1 the end
+ * anchor's), N, 0 where it does not slip; the travel it lets slip before the rope runs out, m, in *travel
+ * (may be NULL). An end's own slip_load and slip_travel replace the cable's. */
+CS_API double cs_cable_end_slip(const cs_cable_def *cable, int end, double *travel);
 
 /** Steel post section. */
 typedef struct cs_section_def {

@@ -120,6 +120,8 @@ typedef enum cs_event_type {
     CS_EVENT_REDIRECTED,          /**< the run ends: the vehicle was redirected (value: speed, m/s) */
     CS_EVENT_CABLE_RELEASE,       /**< a slot or hook lets a cable go (element: the post; value: the pull
                                        along it, N) */
+    CS_EVENT_TERMINATION_SLIP,    /**< a rope starts to slip through its end fitting (value: that end span's
+                                       tension, N; cable_end: which end) */
     CS_EVENT_TYPE_COUNT           /**< the number of event types */
 } cs_event_type;
 
@@ -138,7 +140,7 @@ typedef struct cs_event {
     cs_element_kind element_kind; /**< to what kind of element */
     int element;   /**< index of the cable, post or anchor (0 start, 1 end); 0 for the vehicle */
     double value;  /**< what triggered it, SI: by type (cs_event_type) */
-    int cable_end; /**< a termination_break's rope end: 0 at the start anchor, 1 at the end anchor; else -1 */
+    int cable_end; /**< a termination event's rope end: 0 at the start anchor, 1 at the end anchor; else -1 */
 } cs_event;
 
 /** An event type's name in events.csv and summary.json: "cable_break", "post_hinge", ... */

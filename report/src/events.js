@@ -13,6 +13,7 @@ const KINDS = {
   anchor_pullout: { group: 'fail', text: (who) => `${who} pull${s(who)} out of the ground: its cables go slack`, value: (v) => `force ${pair('force', v)}` },
   cable_break: { group: 'break', text: (who) => `${who} break${s(who)}`, value: (v) => `tension ${pair('force', v)}` },
   termination_break: { group: 'break', text: (who, end) => `${who} break${s(who)} at the end fitting on the ${end === 0 ? 'start' : 'end'} anchor`, value: (v) => `end span tension ${pair('force', v)}` },
+  termination_slip: { group: 'slip', text: (who, end) => `${who} start${s(who)} slipping through the end fitting on the ${end === 0 ? 'start' : 'end'} anchor`, value: (v) => `end span tension ${pair('force', v)}` },
   cable_release: { group: 'slip', text: (who) => `${who} let${s(who)} a cable go: bent over, its slot or hook no longer holds it`, value: (v) => `pull along the post ${pair('force', v)}` },
   override: { group: 'slip', text: (who) => `The vehicle rides over ${lower(who)}: it slips under the front face and stops holding the vehicle`, value: () => '' },
   underride: { group: 'slip', text: (who) => `The vehicle runs under ${lower(who)}: it slips over the front face and stops holding the vehicle`, value: () => '' },
@@ -55,7 +56,7 @@ export function timeline(data) {
   if (data.summary.first_contact_time_s !== null) {
     rows.push({ t: data.summary.first_contact_time_s, type: 'contact', group: 'contact', kind: 'vehicle', elements: [], text: 'First contact: the front face reaches the cables', value: '' });
   }
-  // a termination_break's sixth item: its cable end, 0 at the start anchor, 1 at the end anchor
+  // a termination event's sixth item: its cable end, 0 at the start anchor, 1 at the end anchor
   for (const [t, type, kind, element, value, end] of data.events) {
     const last = rows[rows.length - 1];
     if (last && last.t === t && last.type === type && last.kind === kind && last.end === end && kind !== 'vehicle') {

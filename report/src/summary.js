@@ -192,11 +192,11 @@ export function designTable(data) {
   const groups = [];
   const row = (name, [si, us], id) => ({ name, si, us, id });
   const text = (name, si, us = null) => ({ name, si, us });
-  // rope c's end fittings: one row where both ends have the same kind and efficiency, else one an end
+  // rope c's end fittings: one row where both ends have the same kind, efficiency and slip, else one an end
   const fittings = (ends, c) => {
-    const [start, end] = ends.map((e) => `${e.termination}, ${fmt(100 * e.termination_efficiency, 0)} % of Fu`);
-    const same = ends[0].termination === ends[1].termination &&
-      ends[0].termination_efficiency === ends[1].termination_efficiency;
+    const slip = (e) => (e.slip_load_n > 0 ? `; slips at ${pair('force', e.slip_load_n)}, runs out after ${pair('length', e.slip_travel_m)}` : '');
+    const [start, end] = ends.map((e) => `${e.termination}, ${fmt(100 * e.termination_efficiency, 0)} % of Fu${slip(e)}`);
+    const same = start === end;
     if (same) return [{ ...text('End fitting at the anchors', start), id: `rope-${c}-fitting` }];
     return [
       { ...text('End fitting at the start anchor', start), id: `rope-${c}-fitting-start` },

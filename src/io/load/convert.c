@@ -449,6 +449,26 @@ static void check_barrier(cs_loader *l, const cs_node *barrier, const cs_barrier
             break;
         }
     }
+    for (int c = 0; c < b->cable_count; c++) /* a fitting that slips: how far, and above the pretension */
+        for (int k = 0; k < 2; k++) {
+            const cs_cable_def *d = &b->cables[c];
+            double travel, slip = cs_cable_end_slip(d, k, &travel);
+            if (!(slip > 0.0)) continue;
+            const cs_node *cable = cables->items[c], *own = cs_node_get(cable, k ? "end" : "start");
+            const cs_node *given = own && cs_node_get(own, "slip_load") ? own : cable;
+            const char *which = k ? "end" : "start";
+            if (!(travel > 0.0))
+                cs_err_node(l, at(given, "slip_load"), 0,
+                            "the fitting at the %s anchor slips but has no slip_travel (expected the rope it "
+                            "lets through before the rope runs out of it, e.g. \"18 in\")",
+                            which);
+            else if (slip <= d->pretension)
+                cs_err_node(l, at(given, "slip_load"), 0,
+                            "the fitting at the %s anchor slips at %g N, not above the pretension (%g N) "
+                            "(expected a slip load the rope could be tensioned against)",
+                            which, slip, d->pretension);
+            if (!(travel > 0.0) || slip <= d->pretension) break; /* one error a cable */
+        }
     const cs_node *start = at(anchors, "start"), *end = at(anchors, "end");
     if (b->start_anchor.x >= first->x)
         cs_err_node(l, at(start, "x"), 0,

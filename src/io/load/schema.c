@@ -207,6 +207,10 @@ static const cs_field cable_end_fields[] = {
     QTY("termination_efficiency", CS_Q_NUMBER, CS_POS | CS_MAX1, cs_cable_end_def, termination_efficiency,
         "its strength over the rope's, replacing its kind's (not given: its kind's, or the cable's "
         "termination_efficiency where this end takes the cable's termination)"),
+    QTY("slip_load", CS_Q_FORCE, CS_POS, cs_cable_end_def, slip_load,
+        "end span tension at which the rope slips through this end's fitting (not given: the cable's)"),
+    QTY("slip_travel", CS_Q_LENGTH, CS_POS, cs_cable_end_def, slip_travel,
+        "rope this end's fitting lets slip before the rope runs out of it (not given: the cable's)"),
 };
 const cs_table cs_table_cable_end = {"cable_end",
                                      "The fitting at one end of a cable, where it is not the cable's own "
@@ -223,6 +227,11 @@ static const cs_field cable_fields[] = {
      termination_words, "the fitting at both ends, unless start or end gives its own: " TERMINATION_DOC},
     QTY("termination_efficiency", CS_Q_NUMBER, CS_POS | CS_MAX1, cs_cable_def, termination_efficiency,
         "the fitting's strength over the rope's, replacing its kind's at the ends that take termination"),
+    QTY("slip_load", CS_Q_FORCE, CS_POS, cs_cable_def, slip_load,
+        "end span tension at which the rope slips through the fittings (clips, clamps; not given: they hold "
+        "to their strength, as correctly made clips do); needs slip_travel"),
+    QTY("slip_travel", CS_Q_LENGTH, CS_POS, cs_cable_def, slip_travel,
+        "rope a fitting lets slip before the rope runs out of it (a clip's turn-back)"),
     SUB("start", CS_F_MAP, CS_OWN, (long)offsetof(cs_cable_def, ends[0]), cs_table_cable_end,
         "the fitting at the start anchor (low x), where not the cable's"),
     SUB("end", CS_F_MAP, CS_OWN, (long)offsetof(cs_cable_def, ends[1]), cs_table_cable_end,

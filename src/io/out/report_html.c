@@ -400,6 +400,9 @@ static void write_design(jw *j, int *first, const cs_barrier_def *b) {
             fputs(k ? ",{" : "[{", f);
             kstr(j, &ef, "termination", cs_termination_word(kind));
             knum(j, &ef, "termination_efficiency", eff);
+            double travel, slip = cs_cable_end_slip(cd, k, &travel);
+            if (slip > 0.0) /* a fitting that slips */
+                knum(j, &ef, "slip_load_n", slip), knum(j, &ef, "slip_travel_m", travel);
             fputc('}', f);
         }
         fputs("]}", f);
@@ -586,7 +589,7 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
     num(&j, b->end_anchor.z);
     fputs("]]}", f);
     write_design(&j, &first, b);
-    /* events: [t, type, element kind, element, value (SI)], a termination_break's cable end after */
+    /* events: [t, type, element kind, element, value (SI)], a termination event's cable end after */
     key(&j, &first, "events");
     fputc('[', f);
     for (int i = 0; i < cs_state_event_count(state); i++) {
