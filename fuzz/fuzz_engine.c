@@ -25,6 +25,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     design d;
     design_source src = {0x5eed0000ULL, data, size, 0};
     design_make(-1, &src, &d);
+    design_add_slip(&src, &d);
     cs_error err = {0};
     cs_model *m = cs_model_create(&d.fx.barrier, &d.fx.vehicle, &d.fx.scenario, &err);
     if (!m) broken(&d, err.message); /* every generated design is valid */

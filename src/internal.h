@@ -148,6 +148,7 @@ typedef struct cs_cable_state {
     double max_strain; /* largest span strain at the last commit */
     double end_load;   /* the larger of the end spans' tensions over their fittings' strengths, last commit */
     double slip[2];    /* rope slipped out of each end's fitting into its end span (committed), m */
+    int slipping[2];   /* each end's fitting has started to slip (its termination_slip given) */
 } cs_cable_state;
 
 typedef struct cs_post_state {
@@ -296,6 +297,10 @@ int cs_termination_run_out(const cs_cable_model *cm, const cs_cable_state *cs);
 /* At the commit, before m_commit takes m: the rope let through each end's fitting, its friction work and
  * the slip's start (termination_slip). */
 void cs_termination_commit(const cs_model *model, int c, cs_state *s);
+/* The Gauss-Seidel fallback's local problem at each end of cable c that can slip (relax.c): the end
+ * node sticks where it was committed unless its span would then pass the slip load, else it takes the
+ * rope that holds the span at it. Returns the largest change of the end span's tension over Fu. */
+double cs_termination_relax(const cs_model *model, int c, cs_state *s);
 /* The cable carries nothing from now on (broken, released by its anchor, slipped off the face). */
 void cs_cable_release(cs_cable_state *cs, cs_cable_status status);
 double cs_cable_stored_energy(const cs_cable_model *cm, const cs_cable_state *cs);

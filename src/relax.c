@@ -4,7 +4,8 @@
  * (the paper's crush correction, by regula falsi). It converges where Newton's linearisation misleads it
  * (a massless post on its plastic plateau under the ropes' pull), slowly; Newton goes on from where it
  * leaves off (barrier.c). With may_fall, a post with no equilibrium near falls to the next one.
- * The rows it solves are those of post.c, support.c and contact.c, one element at a time. */
+ * The rows it solves are those of post.c, support.c (with termination.c's ends) and contact.c, one
+ * element at a time. */
 #include "internal.h"
 #include "vec3.h"
 
@@ -404,6 +405,7 @@ double cs_relax(const cs_model *model, cs_state *s, int sweeps, int may_fall) {
                 int i = (sweep % 2 == 0) ? k : n - 1 - k;
                 worst = fmax(worst, cs_relax_slide_node(model, cm, cs, i, sc->solver_tolerance));
             }
+            worst = fmax(worst, cs_termination_relax(model, c, s)); /* ends slipping through fittings */
         }
         for (int a = 0; a < 2; a++)
             worst = fmax(worst, solve_anchor(model, s, a, sc->solver_tolerance));

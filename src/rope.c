@@ -116,13 +116,13 @@ static double clamp_to(double x, double hi) {
 
 /* Plastic strain of span i with its ends at material coordinates lo and hi: the rope it kept since the
  * last commit at its own plastic strain, plus the rope that slid in across either end at the plastic
- * strain of the span it came from (the permanent stretch travels with the rope; first-order upwind). */
+ * strain of the span it came from (the permanent stretch travels with the rope; first-order upwind); at a
+ * rope end, the rope that came out of its fitting at left or right, 0 (never loaded). */
 double cs_span_plastic_of(const cs_cable_state *cs, int i, double lo, double hi, double left, double own,
                           double right) {
     double s = hi - lo;
     if (s <= 1e-12) return own;
-    double gl = i > 0 ? clamp_to(cs->m_commit[i] - lo, s) : 0.0;
-    double gr = i + 2 < cs->node_count ? clamp_to(hi - cs->m_commit[i + 1], s - gl) : 0.0;
+    double gl = clamp_to(cs->m_commit[i] - lo, s), gr = clamp_to(hi - cs->m_commit[i + 1], s - gl);
     double e = own * (s - gl - gr);
     if (gl > 0.0) e += left * gl;
     if (gr > 0.0) e += right * gr;

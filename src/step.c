@@ -43,6 +43,7 @@ static void reset_cable(const cs_model *model, int c, cs_cable_state *cs) {
     cs->max_strain = cm->pretension / cm->rope.ea;
     cs->end_load = 0.0;
     cs->slip[0] = cs->slip[1] = 0.0;
+    cs->slipping[0] = cs->slipping[1] = 0;
     for (int k = 0; k < CS_CORNERS; k++)
         cs->corner_z[k] = cs->corner_z_commit[k] = 0.0;
 }

@@ -91,15 +91,36 @@ void cs_termination_commit(const cs_model *model, int c, cs_state *s) {
         int i = end_node(cs, end), span = end ? i - 1 : 0;
         double out = end ? cs->m[i] - cs->m_commit[i] : cs->m_commit[i] - cs->m[i]; /* rope let through */
         if (out == 0.0) continue;
-        double stretch = cs_span_length(cs, span) / (cs->m[span + 1] - cs->m[span]);
+        /* along the stretched rope, as over a support (cable.c) whose other side, the turn-back, is slack */
+        double stretch = 0.5 * (1.0 + cs_span_length(cs, span) / (cs->m[span + 1] - cs->m[span]));
         s->e_friction += out * cs->tension[span] * stretch;
         /* its start: the first rope let through at the slip load (within the clamp's rounding) */
-        if (cs->slip[end] <= 0.0 && out > 0.0 &&
+        if (!cs->slipping[end] && out > 0.0 &&
             cs->tension[span] >= cm->slip_load[end] - 3.0 * CS_FRICTION_FLOOR * cm->rope.fu) {
             cs_event *e =
                 cs_event_add(model, s, CS_EVENT_TERMINATION_SLIP, CS_ELEMENT_CABLE, c, cs->tension[span]);
             if (e) e->cable_end = end;
+            cs->slipping[end] = 1;
         }
         cs->slip[end] += out;
     }
+}
+
+double cs_termination_relax(const cs_model *model, int c, cs_state *s) {
+    const cs_cable_model *cm = &model->cables[c];
+    cs_cable_state *cs = &s->cables[c];
+    double worst = 0.0;
+    for (int end = 0; end < 2; end++) {
+        if (!cs_termination_slips(cm, cs, end)) continue;
+        int i = end_node(cs, end), span = end ? i - 1 : 0;
+        double before = cs_span_tension(cm, cs, span);
+        cs->m[i] = cs->m_commit[i]; /* it sticks where it was committed unless that passes F_s */
+        if (cs_span_tension(cm, cs, span) > cm->slip_load[end]) {
+            double held = cs_span_material_at(cm, cs, span, cm->slip_load[end]);
+            cs->m[i] = end ? cs->m[i - 1] + held : cs->m[i + 1] - held;
+        }
+        cs_cable_update_span(cm, cs, span, NULL);
+        worst = fmax(worst, fabs(cs->tension[span] - before) / cm->rope.fu);
+    }
+    return worst;
 }

@@ -98,6 +98,23 @@ static inline void design_make(int k, design_source *src, design *d) {
         fx->scenario.angle * 90.0 / M_PI_2_VALUE, fx->scenario.impact_x, length);
 }
 
+/* Fittings that slip (docs/theory.md, Slip), drawn after the rest of a design so that it stays as it was:
+ * at each rope end of about half of them a slip load from just above the cable's pretension to the rope's
+ * strength and a turn-back of 1 to 40 in. Returns how many ends slip. */
+static inline int design_add_slip(design_source *src, design *d) {
+    int ends = 0;
+    for (int c = 0; c < 2; c++)
+        for (int e = 0; e < 2; e++) {
+            cs_cable_def *cd = &d->fx.cables[c];
+            double u = design_uniform(src, -1.0, 1.0);
+            if (u <= 0.0) continue;
+            cd->ends[e].slip_load = cd->pretension + u * (cd->rope.nominal_strength - cd->pretension);
+            cd->ends[e].slip_travel = design_uniform(src, 1.0, 40.0) * IN;
+            ends += c < d->fx.barrier.cable_count;
+        }
+    return ends;
+}
+
 /* Design k of the stress test. */
 static inline void design_numbered(int k, design *d) {
     design_source src = {0x5eed0000ULL + (unsigned long long)k, NULL, 0, 0};

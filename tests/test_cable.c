@@ -448,6 +448,41 @@ static void a_fitting_slips_at_its_load_and_runs_out(void **state) {
     cs_model_free(m);
 }
 
+/* The fallback's local problem at a slipping end (cs_termination_relax; relax.c's sweeps call it): on the
+ * weightless 4-node path, fittings at both ends slipping at F_s = 0.3 Fu (the elastic slope, T = EA (l/s -
+ * 1)). The start span laid at 0.5 Fu takes the rope that holds it at F_s, s = l / (1 + F_s / EA), its
+ * tension F_s to 1e-12, the change 0.2 Fu returned; the end span at 0.1 Fu sticks (its node where it was
+ * committed). The commit then books the slip, l / (1 + F_s/EA) - l / (1 + 0.5 Fu/EA), its friction
+ * F_s times it along the stretched rope, (1 + l/s) / 2, and the slip's start with its tension. */
+static void the_fallback_lets_an_end_slip_at_its_load(void **state) {
+    (void)state;
+    double fu = 91.4 * 1.75 * 1.75 * KIP;
+    cs_cable_end_def slips = {CS_TERMINATION_AS_CABLE, 0.0, 0.3 * fu, 1.0};
+    cs_error err;
+    world *w = make_world_ends(CS_TERMINATION_CLIPS, 0.0, slips, slips, &err);
+    if (!w->state) fail_msg("%s", err.message);
+    const cs_cable_model *cm = &w->model->cables[0];
+    double ea = cm->rope.ea, strain[3] = {0.5 * fu / ea, 0.2 * fu / ea, 0.1 * fu / ea};
+    cs_cable_state *cs = lay_ends(w, strain);
+    double m3 = cs->m[3], s0 = 3.0 / (1.0 + 0.5 * fu / ea), held = 3.0 / (1.0 + 0.3 * fu / ea);
+    w->state->e_friction = 0.0;
+    CHECK_REL(cs_termination_relax(w->model, 0, w->state), 0.2, 1e-9);
+    CHECK_REL(cs->tension[0], 0.3 * fu, 1e-12);
+    CHECK_REL(cs->m[1] - cs->m[0], held, 1e-14);
+    CHECK_ABS(cs->m[3], m3, 0.0);
+    int events = cs_state_event_count(w->state);
+    cs_cable_commit(w->model, 0, w->state);
+    CHECK_REL(cs->slip[0], held - s0, 1e-9);
+    CHECK_ABS(cs->slip[1], 0.0, 0.0);
+    CHECK_REL(w->state->e_friction, (held - s0) * 0.3 * fu * 0.5 * (1.0 + 3.0 / held), 1e-9);
+    assert_int_equal(cs_state_event_count(w->state), events + 1);
+    const cs_event *ev = cs_state_event(w->state, events);
+    assert_int_equal(ev->type, CS_EVENT_TERMINATION_SLIP);
+    assert_int_equal(ev->cable_end, 0);
+    CHECK_REL(ev->value, 0.3 * fu, 1e-9);
+    world_free(w);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(rope_law_points),
@@ -461,6 +496,7 @@ int main(void) {
         cmocka_unit_test(each_end_has_its_own_strength),
         cmocka_unit_test(each_end_breaks_at_its_own_fitting),
         cmocka_unit_test(a_fitting_slips_at_its_load_and_runs_out),
+        cmocka_unit_test(the_fallback_lets_an_end_slip_at_its_load),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
