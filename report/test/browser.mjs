@@ -191,6 +191,9 @@ try {
   // printed: no controls or replay, every timeline row, nothing wider than an A4 page, a PDF of a few pages
   await page.setViewportSize({ width: 720, height: 1000 });
   await page.emulateMedia({ media: 'print' });
+  // the plots follow their container's width by a ResizeObserver, whose callbacks come before the next
+  // frames: wait for two, as a printed page is laid out after them
+  await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
   const printed = await page.evaluate(() => {
     const shown = (sel) => getComputedStyle(document.querySelector(sel)).display !== 'none';
     const wrap = document.querySelector('.timeline-wrap');
