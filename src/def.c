@@ -70,8 +70,9 @@ double cs_cable_end_efficiency(const cs_cable_def *cable, int end, cs_terminatio
 
 double cs_cable_end_slip(const cs_cable_def *cable, int end, double *travel) {
     const cs_cable_end_def *e = &cable->ends[end != 0];
+    int own = e->termination != CS_TERMINATION_AS_CABLE; /* a fitting of its own slips only if told so */
     if (travel) *travel = e->slip_travel > 0.0 ? e->slip_travel : cable->slip_travel;
-    return e->slip_load > 0.0 ? e->slip_load : cable->slip_load;
+    return e->slip_load > 0.0 ? e->slip_load : own ? 0.0 : cable->slip_load;
 }
 
 /* docs/assumptions.md: a slot's strap and cap, taken as the vertical release of the cable-to-post

@@ -340,8 +340,8 @@ static void test_reuse(void **state) {
 
 /* Each rope end's own fitting (tests/good/ends.yaml) into ends[0] (start anchor) and ends[1] (end anchor),
  * an end not given left to the cable's, and as the engine takes them; a --set of an end's kind; a slip
- * load and travel by the cable and by an end (with units). An end left
- * to the cable's adds nothing to the model's hash: base.yaml's is the hash of its other values alone,
+ * load and travel by the cable and by an end (with units), and none at an end with a kind of its own. An end
+ * left to the cable's adds nothing to the model's hash: base.yaml's is the hash of its other values alone,
  * 0xd2aade023bc081e7; an end of its own changes it. */
 static void test_cable_ends(void **state) {
     (void)state;
@@ -390,6 +390,13 @@ static void test_cable_ends(void **state) {
     CHECK_REL(cs_cable_end_slip(&in.barrier.cables[0], 1, &travel), 40.0 * 4448.2216152605, 1e-12);
     CHECK_REL(travel, 18.0 * 0.0254, 1e-12);
     CHECK_ABS(cs_cable_end_slip(&in.barrier.cables[1], 0, NULL), 0.0, 0.0); /* none given: it holds */
+    cs_loader_free(l);
+    static const char *const swaged[] = {"barrier.cables[0].slip_load=30 kip",
+                                         "barrier.cables[0].slip_travel=18 in",
+                                         "barrier.cables[0].start.termination=swaged", NULL};
+    l = load(CS_SOURCE_DIR "/tests/good/base.yaml", &in, swaged); /* a socket of its own does not slip */
+    CHECK_ABS(cs_cable_end_slip(&in.barrier.cables[0], 0, NULL), 0.0, 0.0);
+    CHECK_REL(cs_cable_end_slip(&in.barrier.cables[0], 1, NULL), 30.0 * 4448.2216152605, 1e-12);
     cs_loader_free(l);
     static const char *const own[] = {"barrier.cables[0].end.termination=clips", NULL};
     l = load(CS_SOURCE_DIR "/tests/good/base.yaml", &in, own);

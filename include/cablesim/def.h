@@ -61,7 +61,7 @@ typedef struct cs_cable_end_def {
     double termination_efficiency; /**< its strength over the rope's Fu (0: its kind's published value, or
                                       the cable's termination_efficiency where it takes the cable's kind) */
     double slip_load;              /**< end span tension at which the rope slips through it, N (0: the cable's
-                                      slip_load) */
+                                      slip_load where it takes the cable's kind, else none) */
     double slip_travel; /**< rope it lets slip before the rope runs out of it, m (0: the cable's) */
 } cs_cable_end_def;
 
@@ -92,7 +92,8 @@ CS_API double cs_cable_end_efficiency(const cs_cable_def *cable, int end, cs_ter
 
 /** The load at which the rope slips through the fitting at a cable's end (0 the start anchor's, 1 the end
  * anchor's), N, 0 where it does not slip; the travel it lets slip before the rope runs out, m, in *travel
- * (may be NULL). An end's own slip_load and slip_travel replace the cable's. */
+ * (may be NULL). An end's own slip_load and slip_travel replace the cable's; an end with a kind of its own
+ * (a swaged socket at one end of a clipped rope, say) does not take the cable's slip_load. */
 CS_API double cs_cable_end_slip(const cs_cable_def *cable, int end, double *travel);
 
 /** Steel post section. */

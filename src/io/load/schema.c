@@ -208,7 +208,8 @@ static const cs_field cable_end_fields[] = {
         "its strength over the rope's, replacing its kind's (not given: its kind's, or the cable's "
         "termination_efficiency where this end takes the cable's termination)"),
     QTY("slip_load", CS_Q_FORCE, CS_POS, cs_cable_end_def, slip_load,
-        "end span tension at which the rope slips through this end's fitting (not given: the cable's)"),
+        "end span tension at which the rope slips through this end's fitting (not given: the cable's "
+        "where this end takes the cable's termination, else none)"),
     QTY("slip_travel", CS_Q_LENGTH, CS_POS, cs_cable_end_def, slip_travel,
         "rope this end's fitting lets slip before the rope runs out of it (not given: the cable's)"),
 };
