@@ -151,9 +151,9 @@ void cs_cable_commit(const cs_model *model, int c, cs_state *s) {
 }
 
 /* A span strained to the breaking strain breaks the cable (cable_break, with its largest span tension);
- * an end span whose tension exceeds its fitting's strength, or whose rope has slipped through the fitting
- * by its slip travel, breaks it at that fitting (termination_break, with the end and that span's
- * tension); from then on it carries nothing. */
+ * an end whose rope has slipped through its fitting by the slip travel, or else an end span whose tension
+ * exceeds its fitting's strength, breaks it at that fitting (termination_break, with the end and that
+ * span's tension); from then on it carries nothing. */
 int cs_cable_check_break(const cs_model *model, int c, cs_state *s) {
     const cs_cable_model *cm = &model->cables[c];
     cs_cable_state *cs = &s->cables[c];

@@ -299,7 +299,8 @@ int cs_termination_run_out(const cs_cable_model *cm, const cs_cable_state *cs);
 void cs_termination_commit(const cs_model *model, int c, cs_state *s);
 /* The Gauss-Seidel fallback's local problem at each end of cable c that can slip (relax.c): the end
  * node sticks where it was committed unless its span would then pass the slip load, else it takes the
- * rope that holds the span at it. Returns the largest change of the end span's tension over Fu. */
+ * rope that holds the span at it. Returns the largest change it made to an end span's tension, over Fu
+ * (0 where the ends already kept the law). */
 double cs_termination_relax(const cs_model *model, int c, cs_state *s);
 /* The cable carries nothing from now on (broken, released by its anchor, slipped off the face). */
 void cs_cable_release(cs_cable_state *cs, cs_cable_status status);

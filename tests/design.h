@@ -98,7 +98,7 @@ static inline void design_make(int k, design_source *src, design *d) {
         fx->scenario.angle * 90.0 / M_PI_2_VALUE, fx->scenario.impact_x, length);
 }
 
-/* Fittings that slip (docs/theory.md, Slip), drawn after the rest of a design so that it stays as it was:
+/* Fittings that slip (docs/theory.md, Slip), drawn after the rest of a design, which they leave unchanged:
  * at each rope end of about half of them a slip load from just above the cable's pretension to the rope's
  * strength and a turn-back of 1 to 40 in. Returns how many ends slip. */
 static inline int design_add_slip(design_source *src, design *d) {

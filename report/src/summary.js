@@ -196,7 +196,8 @@ export function designTable(data) {
   const fittings = (ends, c) => {
     const slip = (e) => (e.slip_load_n > 0 ? `; slips at ${pair('force', e.slip_load_n)}, runs out after ${pair('length', e.slip_travel_m)}` : '');
     const [start, end] = ends.map((e) => `${e.termination}, ${fmt(100 * e.termination_efficiency, 0)} % of Fu${slip(e)}`);
-    const same = start === end;
+    const keys = ['termination', 'termination_efficiency', 'slip_load_n', 'slip_travel_m'];
+    const same = keys.every((k) => ends[0][k] === ends[1][k]);
     if (same) return [{ ...text('End fitting at the anchors', start), id: `rope-${c}-fitting` }];
     return [
       { ...text('End fitting at the start anchor', start), id: `rope-${c}-fitting-start` },
