@@ -455,7 +455,8 @@ static void a_fitting_slips_at_its_load_and_runs_out(void **state) {
  * 1)). The start span laid at 0.5 Fu takes the rope that holds it at F_s, s = l / (1 + F_s / EA), its
  * tension F_s to 1e-12, the change 0.2 Fu returned; the end span at 0.1 Fu sticks (its node where it was
  * committed). The commit then books the slip, l / (1 + F_s/EA) - l / (1 + 0.5 Fu/EA), its friction
- * F_s times it along the stretched rope, (1 + l/s) / 2, and the slip's start with its tension. */
+ * F_s times it along the stretched rope, (1 + l/s) / 2, and the slip's start with its tension. An end
+ * span with a plastic set comes to F_s too. */
 static void the_fallback_lets_an_end_slip_at_its_load(void **state) {
     (void)state;
     double fu = 91.4 * 1.75 * 1.75 * KIP;
@@ -482,6 +483,14 @@ static void the_fallback_lets_an_end_slip_at_its_load(void **state) {
     assert_int_equal(ev->type, CS_EVENT_TERMINATION_SLIP);
     assert_int_equal(ev->cable_end, 0);
     CHECK_REL(ev->value, 0.3 * fu, 1e-9);
+    /* a span with a plastic set keeps it on the rope it had; the rope out of the fitting brings none: the
+     * end span at 0.5 Fu over a set of 2e-3 still comes to F_s, to 1e-9 Fu */
+    cs = lay_ends(w, (double[3]){0.5 * fu / ea + 2e-3, 0.2 * fu / ea, 0.1 * fu / ea});
+    cs->ep[0] = 2e-3;
+    cs_cable_update_span(cm, cs, 0, NULL);
+    CHECK_REL(cs->tension[0], 0.5 * fu, 1e-9);
+    cs_termination_relax(w->model, 0, w->state);
+    CHECK_ABS(cs->tension[0], 0.3 * fu, 1e-9 * fu);
     world_free(w);
 }
 
