@@ -3,7 +3,8 @@
 // and a study's report.html (`cablesim sweep` of tests/sweep/mc.yaml). Each opens from file:// with no
 // console error and no network request; its tables have their rows; every figure is drawn (an SVG with a
 // size on the page) and every id an SVG refers to (glyphs, clip paths) is its own and once in the page,
-// so no figure borrows another's. Screenshots go to OUT.
+// so no figure borrows another's. Then a run's report.html whose clips slip (tests/good/base.yaml, the
+// lower rope's at 10 kip): its timeline and design table say so. Screenshots go to OUT.
 //
 //   node report/test/pages.mjs --cablesim BUILD/cablesim --modules BUILD/report/node_modules --out DIR
 import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
@@ -25,6 +26,8 @@ const trace = ['time [ms],speed [mph]', ...rows.slice(1).map((r) => { const c = 
 writeFileSync(join(out, 'measured.csv'), `${trace.join('\n')}\n`);
 cablesim('compare', join(out, 'a'), join(out, 'b'), '--measured', join(out, 'measured.csv'), '-o', join(out, 'compare'));
 cablesim('sweep', 'tests/sweep/mc.yaml', '--quiet', '-o', join(out, 'study'));
+// a run whose lower rope's clips slip at 10 kip and run out after 6 in (tests/cli_run.sh runs it too)
+cablesim('run', 'tests/good/base.yaml', '--set', 'barrier.cables[0].slip_load=10 kip', '--set', 'barrier.cables[0].slip_travel=6 in', '--report', '-o', join(out, 'slip'));
 
 const pages = [
   { name: 'compare', file: join(out, 'compare', 'compare.html'), figures: 5, tables: [11] },
@@ -75,6 +78,21 @@ try {
     await page.screenshot({ path: join(out, `${p.name}.png`), fullPage: true });
     await page.close();
   }
+  // the run report of the clips that slip: its timeline says where a rope starts to slip and runs out, its
+  // design table the slip load and turn-back of both ends of the lower rope, in one row
+  const { page, errors } = await watchedPage(context);
+  await page.goto(pathToFileURL(join(out, 'slip', 'report.html')).href, { waitUntil: 'load' });
+  await page.waitForSelector('table.timeline tbody tr');
+  const slip = await page.evaluate(() => ({
+    rows: [...document.querySelectorAll('table.timeline tbody tr')].map((r) => r.textContent),
+    design: [...document.querySelectorAll('table.design tr')].map((r) => r.textContent),
+  }));
+  for (const end of ['start', 'end'])
+    check(`slipping clips: the timeline says cable 0 starts slipping at its ${end} anchor`, slip.rows.some((r) => r.includes(`starts slipping through the end fitting on the ${end} anchor`) && /44\.\d kN/.test(r)), slip.rows.filter((r) => r.includes('slip')).join(' | '));
+  check('slipping clips: the timeline says where it runs out', slip.rows.some((r) => /Cable 0 .*breaks at the end fitting/.test(r)));
+  check('slipping clips: the design table gives the slip load and turn-back, one row for both ends', slip.design.filter((r) => r.includes('slips at 44.5 kN (10.00 kip), runs out after 0.15 m (0.5 ft)')).length === 1, slip.design.filter((r) => r.includes('fitting')).join(' | '));
+  check('slipping clips: no console errors', errors.length === 0, errors.join(' | '));
+  await page.close();
 } finally {
   await context.close();
 }
