@@ -425,6 +425,50 @@ static int convert_posts(cs_loader *l, const cs_node *barrier, cs_barrier_def *o
 
 /* ---- the model ---- */
 
+/* A cable's fittings that slip: each slipping end with a travel and above the pretension, and no slip
+ * load or travel given where it does nothing (a cable's slip_load every end replaces, a travel where
+ * nothing slips). One error a cable. */
+static void check_slip(cs_loader *l, const cs_node *cable, const cs_cable_def *d) {
+    double slip[2], travel[2];
+    for (int k = 0; k < 2; k++)
+        slip[k] = cs_cable_end_slip(d, k, &travel[k]);
+    for (int k = 0; k < 2; k++) {
+        const cs_node *own = cs_node_get(cable, k ? "end" : "start");
+        const char *which = k ? "end" : "start";
+        if (slip[k] > 0.0) {
+            const cs_node *given = own && cs_node_get(own, "slip_load") ? own : cable;
+            if (!(travel[k] > 0.0)) {
+                cs_err_node(l, at(given, "slip_load"), 0,
+                            "the fitting at the %s anchor slips but has no slip_travel (expected the "
+                            "rope it lets through before the rope runs out of it, e.g. \"18 in\")",
+                            which);
+                return;
+            }
+            if (slip[k] <= d->pretension) {
+                cs_err_node(l, at(given, "slip_load"), 0,
+                            "the fitting at the %s anchor slips at %g N, not above the pretension (%g "
+                            "N) (expected a slip load the rope could be tensioned against)",
+                            which, slip[k], d->pretension);
+                return;
+            }
+        } else if (own && cs_node_get(own, "slip_travel")) {
+            cs_err_node(l, cs_node_get(own, "slip_travel"), 0,
+                        "the fitting at the %s anchor does not slip (expected slip_travel with a slip_load)",
+                        which);
+            return;
+        }
+    }
+    if (d->slip_load > 0.0 && slip[0] != d->slip_load && slip[1] != d->slip_load) {
+        cs_err_node(l, at(cable, "slip_load"), 0,
+                    "no end takes the cable's slip_load (expected it where an end takes the cable's "
+                    "termination; an end of its own kind, or with its own slip_load, does not)");
+        return;
+    }
+    if (d->slip_travel > 0.0 && !(slip[0] > 0.0) && !(slip[1] > 0.0))
+        cs_err_node(l, at(cable, "slip_travel"), 0,
+                    "no fitting of this cable slips (expected slip_travel with a slip_load)");
+}
+
 static void check_barrier(cs_loader *l, const cs_node *barrier, const cs_barrier_def *b) {
     const cs_node *cables = cs_node_get(barrier, "cables"), *anchors = cs_node_get(barrier, "anchors");
     const cs_post_def *first = &b->posts[0], *last = &b->posts[b->post_count - 1];
@@ -449,26 +493,8 @@ static void check_barrier(cs_loader *l, const cs_node *barrier, const cs_barrier
             break;
         }
     }
-    for (int c = 0; c < b->cable_count; c++) /* a fitting that slips: how far, and above the pretension */
-        for (int k = 0; k < 2; k++) {
-            const cs_cable_def *d = &b->cables[c];
-            double travel, slip = cs_cable_end_slip(d, k, &travel);
-            if (!(slip > 0.0)) continue;
-            const cs_node *cable = cables->items[c], *own = cs_node_get(cable, k ? "end" : "start");
-            const cs_node *given = own && cs_node_get(own, "slip_load") ? own : cable;
-            const char *which = k ? "end" : "start";
-            if (!(travel > 0.0))
-                cs_err_node(l, at(given, "slip_load"), 0,
-                            "the fitting at the %s anchor slips but has no slip_travel (expected the rope it "
-                            "lets through before the rope runs out of it, e.g. \"18 in\")",
-                            which);
-            else if (slip <= d->pretension)
-                cs_err_node(l, at(given, "slip_load"), 0,
-                            "the fitting at the %s anchor slips at %g N, not above the pretension (%g N) "
-                            "(expected a slip load the rope could be tensioned against)",
-                            which, slip, d->pretension);
-            if (!(travel > 0.0) || slip <= d->pretension) break; /* one error a cable */
-        }
+    for (int c = 0; c < b->cable_count; c++)
+        check_slip(l, cables->items[c], &b->cables[c]);
     const cs_node *start = at(anchors, "start"), *end = at(anchors, "end");
     if (b->start_anchor.x >= first->x)
         cs_err_node(l, at(start, "x"), 0,
