@@ -17,10 +17,11 @@ export function fmt(v, digits = 3) {
   return v.toFixed(digits);
 }
 
-// Digits after the point so that v shows about `sig` significant digits (at least 0, at most 3).
+// Digits after the point so that v shows about `sig` significant digits (at least 0, at most 3), counted on
+// v rounded to them: 9.99999 kip (10 kip written to six digits in newtons) shows as 10.0, not 10.00.
 export function fixed(v, sig = 3) {
   if (!Number.isFinite(v) || v === 0) return 1;
-  const d = sig - 1 - Math.floor(Math.log10(Math.abs(v)));
+  const d = sig - 1 - Math.floor(Math.log10(Math.abs(Number(v.toPrecision(sig)))));
   return Math.max(0, Math.min(3, d));
 }
 
