@@ -229,8 +229,9 @@ static const cs_field cable_fields[] = {
     QTY("termination_efficiency", CS_Q_NUMBER, CS_POS | CS_MAX1, cs_cable_def, termination_efficiency,
         "the fitting's strength over the rope's, replacing its kind's at the ends that take termination"),
     QTY("slip_load", CS_Q_FORCE, CS_POS, cs_cable_def, slip_load,
-        "end span tension at which the rope slips through the fittings (clips, clamps; not given: they hold "
-        "to their strength, as correctly made clips do); needs slip_travel"),
+        "end span tension at which the rope slips through the fittings at the ends that take termination "
+        "(clips, clamps; not given: they hold to their strength, as correctly made clips do); needs "
+        "slip_travel"),
     QTY("slip_travel", CS_Q_LENGTH, CS_POS, cs_cable_def, slip_travel,
         "rope a fitting lets slip before the rope runs out of it (a clip's turn-back)"),
     SUB("start", CS_F_MAP, CS_OWN, (long)offsetof(cs_cable_def, ends[0]), cs_table_cable_end,
