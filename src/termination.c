@@ -38,7 +38,7 @@ int cs_termination_run_out(const cs_cable_model *cm, const cs_cable_state *cs) {
     return -1;
 }
 
-/* The row's terms at end `end`: lambda (signed end tension), the end span's gradient and c. */
+/* The row's lambda at end `end`: the end span's tension, signed (-T_0 at the start, +T_last at the end). */
 static double slip_lambda(const cs_cable_state *cs, int end) {
     return end ? cs->tension[cs->node_count - 2] : -cs->tension[0];
 }

@@ -2,8 +2,8 @@
  * posts' axes, must be the derivative of the solve's residual: checked against central difference
  * quotients of that residual at states along an APS3-like crash (tests/fixture.h), before and after
  * contact: posts elastic and hinged, supports sticking and sliding, the rope wrapped on the face's
- * corners. Its fallback is reached and balances, and lets a post with no equilibrium near fall; its
- * predictor repeats no jump. */
+ * corners, rope ends slipping through their fittings. Its fallback is reached and balances, and lets a post
+ * with no equilibrium near fall; its predictor repeats no jump. */
 #include "check.h"
 #include "design.h"
 #include "internal.h"
@@ -99,7 +99,7 @@ static jac_check check_jacobian(const cs_model *m, cs_state *s) {
  * one straddle differently). Leaving out the turning angle's gradient makes 1.2e-4; terms under ~1e-6 of a
  * row (the axis' own turning, the rope stiffness' change with the spans' length) are below what this
  * resolves. */
-static void check_along_the_crash(fixture *fx);
+static int check_along_the_crash(fixture *fx);
 
 static void jacobian_is_the_derivative_of_the_residual(void **state) {
     (void)state;
@@ -118,6 +118,18 @@ static void jacobian_with_anchors_in_the_soil(void **state) {
     check_along_the_crash(&fx);
 }
 
+/* And with clips that slip (termination.c) at 30 kip at all four rope ends, 18 in of turn-back: the end
+ * nodes' rows and columns, sticking at the install and sliding from 23 ms, at every check from step 40
+ * (8 checks of 4 ends at least). */
+static void jacobian_with_fittings_that_slip(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    for (int c = 0; c < 2; c++)
+        fx.cables[c].slip_load = 30.0 * KIP, fx.cables[c].slip_travel = 18.0 * IN;
+    assert_true(check_along_the_crash(&fx) >= 4 * 8);
+}
+
 /* And with the four rails tying the posts (rail.c): their pull's slope on a post's own tilt and its
  * neighbours'. */
 static void jacobian_with_rails(void **state) {
@@ -128,7 +140,8 @@ static void jacobian_with_rails(void **state) {
     check_along_the_crash(&fx);
 }
 
-static void check_along_the_crash(fixture *fx_in) {
+/* Returns how many rope ends slipping through their fittings were unknowns at the states checked. */
+static int check_along_the_crash(fixture *fx_in) {
     fixture fx = *fx_in;
     fx.barrier.cables = fx.cables, fx.barrier.posts = fx.posts;
     if (fx.barrier.rail_count) fx.barrier.rails = fx.rails;
@@ -137,10 +150,15 @@ static void check_along_the_crash(fixture *fx_in) {
     if (!m) fail_msg("%s", err.message);
     cs_state *s = cs_state_create(m, &err);
     assert_non_null(s);
-    int checked = 0;
+    int checked = 0, ends = 0;
     for (int k = 0; k <= 400; k++) {
         if (k % 40 == 0) {
             jac_check c = check_jacobian(m, s);
+            const cs_rows *rows = &s->work->sys.rows;
+            for (int j = 0; j < rows->n; j++) /* an end node's m: its fitting slips */
+                ends +=
+                    rows->slots[j].kind == CS_U_NODE &&
+                    (rows->slots[j].b == 0 || rows->slots[j].b == s->cables[rows->slots[j].a].node_count - 1);
             printf("step %3d: %d unknowns, largest difference %.2g of its row (row %d, column %d)\n", k, c.n,
                    c.worst, c.row, c.col);
             assert_true(c.worst <= 1e-4);
@@ -151,6 +169,7 @@ static void check_along_the_crash(fixture *fx_in) {
     assert_true(checked >= 6); /* through contact, the posts' hinges and the ropes' wrap */
     cs_state_free(s);
     cs_model_free(m);
+    return ends;
 }
 
 /* A fixture's model and state run to the end (it must end without an error), its summary in sm. */
@@ -255,6 +274,7 @@ static void the_step_after_a_jump_starts_where_the_barrier_is(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(jacobian_is_the_derivative_of_the_residual),
                                        cmocka_unit_test(jacobian_with_anchors_in_the_soil),
+                                       cmocka_unit_test(jacobian_with_fittings_that_slip),
                                        cmocka_unit_test(jacobian_with_rails),
                                        cmocka_unit_test(fallback_is_reached_and_balances),
                                        cmocka_unit_test(a_post_with_no_equilibrium_near_falls),
