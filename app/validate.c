@@ -792,16 +792,16 @@ static const struct {
      "aps1 aps3 aps4",
      0,
      {"barrier.cables[0].termination=swaged", "barrier.cables[1].termination=swaged", NULL}},
-    {"the dead-men let go at 30 degrees of footing rotation instead of 45",
+    {"the soil's critical-state friction angle 30 deg (the lowest of siliceous sands) instead of 33",
      "aps1 aps3 aps4",
      0,
-     {"barrier.anchors.start.footing.rotation_limit=30 deg",
-      "barrier.anchors.end.footing.rotation_limit=30 deg", NULL}},
-    {"the dead-men let go at 60 degrees of footing rotation instead of 45",
+     {"barrier.anchors.start.footing.residual_friction_angle=30 deg",
+      "barrier.anchors.end.footing.residual_friction_angle=30 deg", NULL}},
+    {"the soil's critical-state friction angle 40 deg (feldspar's) instead of 33",
      "aps1 aps3 aps4",
      0,
-     {"barrier.anchors.start.footing.rotation_limit=60 deg",
-      "barrier.anchors.end.footing.rotation_limit=60 deg", NULL}},
+     {"barrier.anchors.start.footing.residual_friction_angle=40 deg",
+      "barrier.anchors.end.footing.residual_friction_angle=40 deg", NULL}},
 };
 
 static void add_readings(suite *s, int k) {

@@ -1,12 +1,18 @@
 /* Anchors: the footings (dead-men) the ropes' ends are tied to, as bodies in the soil.
  *
  * An anchor moves horizontally by u (2 components); each rope's end rides on it at (x + u_x, u_y, z), so
- * ropes that share an anchor keep their own ends. The soil resists with an elastic-plastic spring like a
- * post's: k (u - u_p) up to the footing's capacity P (Eq. 21 at the height the ropes pull it, H = z, times
- * the soil's dynamic factor for the footing's width: footing.c), then the footing slides through the soil
- * at P, doing plastic work booked as soil. k reaches P over 2% of the footing's depth, the movement that
- * mobilises a medium-dense sand's passive resistance (Clough and Duncan 1991: 1% dense, 4% loose). The
- * footing and what moves with it have mass M, integrated over the time h since the last commit by the
+ * ropes that share an anchor keep their own ends. The soil resists with k (u - u_p) up to the footing's
+ * peak P (Eq. 21 at the height the ropes pull it, H = z, times the soil's dynamic factor for the
+ * footing's width: footing.c); k reaches P over 2% of the footing's depth, the movement that mobilises a
+ * medium-dense sand's passive resistance (Clough and Duncan 1991: 1% dense, 4% loose). Past the peak it
+ * ploughs on through the soil (radial return), its resistance falling linearly with the plastic slide s
+ * from P to the residual P_r = rho P over s_r = 5% of the depth, then held at P_r: a dense soil's shear
+ * zone dilates to its critical state past the peak (passive tests: Wilson and Elgamal 2010), and rho is
+ * the critical-state passive resistance over the peak's (footing.c). The plastic work, the integral of
+ * the resistance over the slide, is booked as soil. With the trial force n = |k (u - u_p)| above the cap
+ * c(s), the slide l solves n - k l = c(s + l): on the softening branch (slope H = (P - P_r) / s_r < k)
+ * l = (n - c(s)) / (k - H), past it l = (n - P_r) / k.
+ * The footing and what moves with it have mass M, integrated over the time h since the last commit by the
  * HHT-alpha method (Hilber, Hughes and Taylor 1977): with F = F_ropes - R(u) the net force,
  *   M a = (1 + alpha) F(u) - alpha F_c,
  *   u = u_c + h v_c + h^2 ((1/2 - beta) a_c + beta a),   v = v_c + h ((1 - gamma) a_c + gamma a),
@@ -19,18 +25,17 @@
  * short stiff spans, rung by a failure). Backward Euler would take omega^2 h^2 / (1 + omega^2 h^2) of
  * every mode's energy each step (1.2% for APS3's); a post's modes with the ropes reach omega h 0.5-0.9,
  * and the posts keep it for that (post.c; docs/theory.md). The inertial M / (beta h^2 (1 + alpha)) keeps
- * the residual monotone where the resistance is flat. It pulls out, releasing every rope tied to it, when
- * it has
- * travelled as far as its geometry allows: a footing that turns about the pivot 2/3 of its depth down
- * (Eq. 21's failure mode) moves its top by (2/3) D sin(theta) at its rotation limit theta; or when the
- * ropes' uplift reaches its pullout capacity (its weight plus its skin friction unless given). A rigid
- * anchor (no footing) never moves. The anchor's rows of the barrier solve are given here (rows.h). */
+ * the residual monotone where the resistance is flat or softens. A dead-man leaves the soil only when
+ * the ropes' uplift reaches its pullout capacity (its weight plus its skin friction unless given): every
+ * rope tied to it is then released. A rigid anchor (no footing) never moves. The anchor's rows of the
+ * barrier solve are given here (rows.h). */
 #include "rows.h"
 #include "vec3.h"
 
 #include <math.h>
 
-#define CS_ANCHOR_YIELD_STRAIN 0.02 /* movement to mobilise the passive resistance, over the depth */
+#define CS_ANCHOR_YIELD_STRAIN 0.02     /* movement to mobilise the passive resistance, over the depth */
+#define CS_ANCHOR_SOFTENING_STRAIN 0.05 /* plastic slide from the peak to the residual, over the depth */
 #define CS_HHT_ALPHA (-0.1)
 #define CS_HHT_BETA (0.25 * (1.0 - CS_HHT_ALPHA) * (1.0 - CS_HHT_ALPHA))
 #define CS_HHT_GAMMA (0.5 - CS_HHT_ALPHA)
@@ -55,8 +60,9 @@ void cs_anchor_derive(const cs_anchor_def *d, double gravity, cs_anchor_model *a
     double volume = len > 0.0 ? b * len * f->depth : 0.25 * CS_PI * b * b * f->depth;
     am->mass = d->mass > 0.0 ? d->mass : CS_CONCRETE_DENSITY * volume;
     am->capacity = cs_footing_impact_capacity(f, d->z);
+    am->residual = cs_footing_residual_ratio(f) * am->capacity;
+    am->softening = CS_ANCHOR_SOFTENING_STRAIN * f->depth;
     am->stiffness = am->capacity / (CS_ANCHOR_YIELD_STRAIN * f->depth);
-    am->travel_limit = 2.0 * f->depth / 3.0 * sin(f->rotation_limit);
     double perimeter_skin = len > 0.0 ? 2.0 * (b + len) / (CS_PI * b) : 1.0; /* a block's perimeter */
     /* a capacity given for the anchor, or for its footing, is design data and taken as it is */
     double given = d->pullout_capacity > 0.0 ? d->pullout_capacity : f->pullout_capacity;
@@ -107,11 +113,46 @@ void cs_anchor_settle(const cs_model *model, cs_state *s) {
     }
 }
 
-/* The soil's resistance at displacement u: k (u - u_p), capped radially at P. */
-static void resistance(const cs_anchor_model *am, const cs_anchor_state *as, const double *u, double *q) {
+/* The cap on the soil's resistance after a plastic slide s: P falling linearly to P_r over s_r. */
+double cs_anchor_cap(const cs_anchor_model *am, double s) {
+    return s >= am->softening ? am->residual
+                              : am->capacity - (am->capacity - am->residual) * s / am->softening;
+}
+
+/* The work of the cap over the slide from s0 to s1 (the soil's plastic work), J. */
+static double cap_work(const cs_anchor_model *am, double s0, double s1) {
+    double m = fmin(fmax(am->softening, s0), s1); /* where the softening branch ends inside [s0, s1] */
+    return 0.5 * (m - s0) * (cs_anchor_cap(am, s0) + cs_anchor_cap(am, m)) + (s1 - m) * am->residual;
+}
+
+/* The return map at the trial force's magnitude n after the committed slide s: the resistance's magnitude,
+ * the slide it takes into *slide and its slope d|R|/dn into *slope (1 elastic, -H/(k - H) softening, 0 on
+ * the residual). */
+static double return_map(const cs_anchor_model *am, double s, double n, double *slide, double *slope) {
+    double c = cs_anchor_cap(am, s), k = am->stiffness;
+    *slide = 0.0, *slope = 1.0;
+    if (n <= c) return n;
+    if (s < am->softening) {
+        double hard = (am->capacity - am->residual) / am->softening, l = (n - c) / (k - hard);
+        if (s + l <= am->softening) {
+            *slide = l, *slope = -hard / (k - hard);
+            return c - hard * l;
+        }
+    }
+    *slide = (n - am->residual) / k, *slope = 0.0;
+    return am->residual;
+}
+
+/* The soil's resistance at displacement u (the trial k (u - u_p) returned radially onto the cap), its
+ * magnitude's slope into *slope and the trial's magnitude into *trial (either may be NULL). */
+static void resistance(const cs_anchor_model *am, const cs_anchor_state *as, const double *u, double *q,
+                       double *slope, double *trial) {
     double tr[2] = {am->stiffness * (u[0] - as->plastic[0]), am->stiffness * (u[1] - as->plastic[1])};
-    double n = v2_norm(tr[0], tr[1]), f = n > am->capacity ? am->capacity / n : 1.0;
+    double n = v2_norm(tr[0], tr[1]), slide, dq;
+    double m = return_map(am, as->slide, n, &slide, &dq), f = n > m ? m / n : 1.0;
     q[0] = tr[0] * f, q[1] = tr[1] * f;
+    if (slope) *slope = dq;
+    if (trial) *trial = n;
 }
 
 /* The ropes' pull on the anchor (every intact rope's end span), N; chords as in cs_node_force. */
@@ -132,7 +173,7 @@ void cs_anchor_residual(const cs_model *model, const cs_state *s, int a, const d
     const cs_anchor_state *as = &s->anchors[a];
     double f[3], q[2];
     ropes_pull(model, s, a, chords, f);
-    resistance(am, as, as->u, q);
+    resistance(am, as, as->u, q, NULL, NULL);
     r[0] = f[0] - q[0], r[1] = f[1] - q[1];
     if (s->h > 0.0 && s->h < HUGE_VAL)
         for (int k = 0; k < 2; k++)
@@ -156,22 +197,22 @@ static void residual(const cs_model *model, const cs_state *s, const cs_rows *ro
 }
 
 /* Rows a, a+1: the ropes' pull through their end spans (chained to the nodes), less the resistance's slope
- * (k, or on the cap its radial projection's) and the inertial M / (beta h^2 (1 + alpha)) on the anchor's
- * own columns. */
+ * (k I elastic; past the peak k ((|R| / n) (I - e e^T) + d|R|/dn e e^T), e the trial's direction) and the
+ * inertial M / (beta h^2 (1 + alpha)) on the anchor's own columns. */
 static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row,
                      const cs_slot *u) {
     int a = u->a;
     const cs_anchor_model *am = &model->anchors[a];
     const cs_anchor_state *as = &s->anchors[a];
-    double unit = unit_of(model), k[4];
-    double tr[2] = {am->stiffness * (as->u[0] - as->plastic[0]), am->stiffness * (as->u[1] - as->plastic[1])};
-    double n = v2_norm(tr[0], tr[1]);
-    if (n > am->capacity) {
-        double g = am->capacity * am->stiffness / n, e[2] = {tr[0] / n, tr[1] / n};
-        k[0] = -g * (1.0 - e[0] * e[0]), k[1] = g * e[0] * e[1], k[2] = k[1], k[3] = -g * (1.0 - e[1] * e[1]);
-    } else {
-        k[0] = k[3] = -am->stiffness, k[1] = k[2] = 0.0;
-    }
+    double unit = unit_of(model), k[4], q[2], slope, n;
+    resistance(am, as, as->u, q, &slope, &n);
+    double qn = v2_norm(q[0], q[1]), t = n > 0.0 ? qn / n : 1.0, e[2] = {1.0, 0.0};
+    if (n > 0.0)
+        e[0] = (as->u[0] - as->plastic[0]) * am->stiffness / n,
+        e[1] = (as->u[1] - as->plastic[1]) * am->stiffness / n;
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2; j++)
+            k[2 * i + j] = -am->stiffness * (t * ((i == j) - e[i] * e[j]) + slope * e[i] * e[j]);
     double inertia = am->mass / (CS_HHT_BETA * s->h * s->h * (1.0 + CS_HHT_ALPHA));
     k[0] -= inertia, k[3] -= inertia;
     for (int i = 0; i < 2; i++)
@@ -210,7 +251,7 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
         if (am->rigid || as->failed) continue;
         double f[3], q[2];
         ropes_pull(model, s, a, NULL, f);
-        resistance(am, as, as->u, q);
+        resistance(am, as, as->u, q, NULL, NULL);
         double net[2] = {f[0] - q[0], f[1] - q[1]};
         double kinetic_before = kinetic_energy(am, as);
         if (s->h > 0.0 && s->h < HUGE_VAL && !cs_anchor_active(model, s, a)) {
@@ -233,34 +274,33 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
         as->u_commit[0] = as->u[0], as->u_commit[1] = as->u[1];
         double tr[2] = {am->stiffness * (as->u[0] - as->plastic[0]),
                         am->stiffness * (as->u[1] - as->plastic[1])};
-        double n = v2_norm(tr[0], tr[1]);
-        if (n > am->capacity) {
-            double e[2] = {tr[0] / n, tr[1] / n}, slide = (n - am->capacity) / am->stiffness;
-            s->e_soil += am->capacity * slide;
+        double n = v2_norm(tr[0], tr[1]), slide, slope;
+        return_map(am, as->slide, n, &slide, &slope);
+        if (slide > 0.0) {
+            double e[2] = {tr[0] / n, tr[1] / n};
+            s->e_soil += cap_work(am, as->slide, as->slide + slide);
             as->plastic[0] += slide * e[0], as->plastic[1] += slide * e[1];
+            as->slide += slide;
             if (!as->yielded) {
                 as->yielded = 1;
                 cs_event_add(model, s, CS_EVENT_ANCHOR_YIELD, CS_ELEMENT_ANCHOR, a, am->capacity);
             }
         }
-        resistance(am, as, as->u, as->force);
+        resistance(am, as, as->u, as->force, NULL, NULL);
         as->uplift = f[2] > 0.0 ? f[2] : 0.0;
     }
 }
 
-/* An anchor that has travelled its limit or is lifted past its pullout capacity pulls out; every rope
- * tied to it is released (contact.c). Returns 1 if one did. */
+/* An anchor lifted past its pullout capacity by the ropes' uplift leaves the soil; every rope tied to it
+ * is released (contact.c). Returns 1 if one did. */
 int cs_anchor_check(const cs_model *model, cs_state *s) {
     int failed = 0;
     for (int a = 0; a < 2; a++) {
         const cs_anchor_model *am = &model->anchors[a];
         cs_anchor_state *as = &s->anchors[a];
-        if (am->rigid || as->failed) continue;
-        double travel = v2_norm(as->u[0], as->u[1]);
-        if (travel < am->travel_limit && as->uplift < am->uplift_capacity) continue;
+        if (am->rigid || as->failed || as->uplift < am->uplift_capacity) continue;
         as->failed = 1;
-        cs_event_add(model, s, CS_EVENT_ANCHOR_PULLOUT, CS_ELEMENT_ANCHOR, a,
-                     travel >= am->travel_limit ? v2_norm(as->force[0], as->force[1]) : as->uplift);
+        cs_event_add(model, s, CS_EVENT_ANCHOR_PULLOUT, CS_ELEMENT_ANCHOR, a, as->uplift);
         failed = 1;
     }
     return failed;
@@ -272,7 +312,7 @@ double cs_anchor_stored_energy(const cs_model *model, const cs_state *s, int a, 
     *kinetic = 0.0;
     if (am->rigid || as->failed) return 0.0;
     double q[2];
-    resistance(am, as, as->u, q);
+    resistance(am, as, as->u, q, NULL, NULL);
     *kinetic = kinetic_energy(am, as);
     return 0.5 * (q[0] * q[0] + q[1] * q[1]) / am->stiffness;
 }

@@ -107,7 +107,8 @@ cs_footing_def cs_default_footing_def(void) {
     d.rotation_limit = CS_PI / 4.0;
     d.dynamic_factor = CS_SOIL_DYNAMIC_FACTOR; /* calibrated on the bogie tests: docs/assumptions.md */
     d.friction_angle = 42.0 * CS_PI / 180.0;   /* compacted crushed-stone base (AASHTO M147 B): 40-45 deg */
-    d.skin_friction = CS_SOIL_SKIN_FRICTION;   /* same */
+    d.residual_friction_angle = 33.0 * CS_PI / 180.0; /* critical state of quartz sand (Bolton 1986) */
+    d.skin_friction = CS_SOIL_SKIN_FRICTION;          /* same */
     return d;
 }
 

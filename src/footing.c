@@ -14,6 +14,9 @@
  * post (b_ref, D_ref) being the reference. The rate effect is carried as the bogie's (docs/theory.md,
  * "Anchorage"). Past its capacity the footing rotates in the soil at constant moment (post.c) or slides
  * (anchor.c), and that work is the soil's share of the energy ledger.
+ * Past the peak a dense soil's shear zone dilates to its critical state, so the passive resistance falls
+ * to that of the critical-state friction angle phi_cv (Bolton 1986: about 33 deg for quartz sand, 40 for
+ * feldspar): the residual ratio Kp(phi_cv) R(b/D; phi_cv) / (Kp(phi) R(b/D; phi)).
  * Axial: a footing without a given pullout capacity is held by shaft friction that grows linearly with
  * depth (K sigma_v tan delta, sigma_v = gamma z): q z on the perimeter pi B, so Q = q pi B D^2 / 2. */
 #include "internal.h"
@@ -33,6 +36,17 @@ double cs_footing_wedge_factor(double friction_angle, double width, double depth
     double kp = pow(tan(0.25 * CS_PI + 0.5 * friction_angle), 2.0);
     double ka = pow(tan(0.25 * CS_PI - 0.5 * friction_angle), 2.0);
     return 1.0 + pow(kp - ka, 0.67) * 1.6 / (1.0 + 5.0 * width / depth);
+}
+
+/* Kp R of a member b x D: the three-dimensional passive coefficient at the friction angle phi. */
+static double passive_3d(double phi, double width, double depth) {
+    return pow(tan(0.25 * CS_PI + 0.5 * phi), 2.0) * cs_footing_wedge_factor(phi, width, depth);
+}
+
+double cs_footing_residual_ratio(const cs_footing_def *f) {
+    if (!(f->residual_friction_angle < f->friction_angle)) return 1.0; /* no dilation to lose */
+    return passive_3d(f->residual_friction_angle, f->diameter, f->depth) /
+           passive_3d(f->friction_angle, f->diameter, f->depth);
 }
 
 double cs_footing_dynamic_factor(const cs_footing_def *f) {

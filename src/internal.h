@@ -97,11 +97,12 @@ typedef struct cs_rail_model {
 typedef struct cs_anchor_model {
     double x, z;
     int rigid;              /* no footing: it never moves */
-    double capacity;        /* horizontal resistance of its footing at the ropes' height, N */
-    double stiffness;       /* N/m, up to the capacity */
+    double capacity;        /* peak horizontal resistance of its footing at the ropes' height, N */
+    double residual;        /* what the soil keeps while it ploughs on past the peak, N */
+    double softening;       /* plastic slide over which the resistance falls from the peak to it, m */
+    double stiffness;       /* N/m, up to the peak */
     double mass;            /* kg */
-    double travel_limit;    /* m, after which it pulls out */
-    double uplift_capacity; /* N */
+    double uplift_capacity; /* N: the ropes' upward pull that lifts it out of the soil */
 } cs_anchor_model;
 
 typedef struct cs_vehicle_model {
@@ -195,6 +196,7 @@ struct cs_state {
         int failed, yielded;
         double u[2];        /* horizontal displacement, m */
         double plastic[2];  /* its plastic part (committed), m */
+        double slide;       /* the plastic slide's length so far (committed), m */
         double u_commit[2]; /* at the last commit, m */
         double rate[2];     /* its rate at the last commit, m/s */
         double acc[2];      /* its acceleration at the last commit, m/s^2 */
@@ -330,6 +332,8 @@ double cs_footing_impact_capacity(const cs_footing_def *f, double load_height);
 /* The passive wedge's three-dimensional factor R(b/D) of a member of width b and depth D (footing.c), and
  * the dynamic factor of a footing: f_d R(B/D) / R of the bogie tests' post. */
 double cs_footing_wedge_factor(double friction_angle, double width, double depth);
+/* The soil's resistance at large movement over its peak (critical state over peak friction angle). */
+double cs_footing_residual_ratio(const cs_footing_def *f);
 double cs_footing_dynamic_factor(const cs_footing_def *f);
 double cs_footing_pullout_capacity(const cs_footing_def *f);
 /* Each intact cable's node at post p where a tilt puts it (one sine and cosine for all), and the post
@@ -445,6 +449,8 @@ void cs_anchor_settle(const cs_model *model, cs_state *s);
 void cs_anchor_residual(const cs_model *model, const cs_state *s, int a, const double *chords, double *r);
 void cs_anchor_commit(const cs_model *model, cs_state *s);
 int cs_anchor_check(const cs_model *model, cs_state *s);
+/* The cap on an anchor's resistance after a plastic slide s (m): its peak falling to its residual, N. */
+double cs_anchor_cap(const cs_anchor_model *am, double s);
 /* The elastic energy of anchor a's soil spring; its kinetic energy into *kinetic. */
 double cs_anchor_stored_energy(const cs_model *model, const cs_state *s, int a, double *kinetic);
 

@@ -78,8 +78,9 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
                 return fail(err, "anchor %d: soil friction angle must be between 0 and 69 degrees", k);
             if (f->width_scaling < CS_WIDTH_WEDGE || f->width_scaling > CS_WIDTH_NONE)
                 return fail(err, "anchor %d: unknown width scaling of the soil's dynamic factor", k);
-            if (!(f->rotation_limit > 0.0 && f->rotation_limit < 1.5))
-                return fail(err, "anchor %d: footing rotation limit must be between 0 and 1.5 rad", k);
+            if (!(f->residual_friction_angle > 0.0 && f->residual_friction_angle < 1.2))
+                return fail(err, "anchor %d: soil residual friction angle must be between 0 and 69 degrees",
+                            k);
             if (a->pullout_capacity == 0.0 && f->pullout_capacity == 0.0 && !positive(f->skin_friction))
                 return fail(err, "anchor %d: an anchor without a pullout capacity needs skin friction > 0",
                             k);

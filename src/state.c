@@ -248,7 +248,7 @@ void cs_state_anchor(const cs_model *model, const cs_state *s, int a, cs_anchor_
     out->rigid = am->rigid, out->yielded = as->yielded, out->failed = as->failed;
     for (int k = 0; k < 2; k++)
         out->displacement[k] = as->u[k], out->force[k] = as->force[k];
-    out->capacity = am->capacity, out->travel_limit = am->travel_limit;
+    out->capacity = am->capacity, out->residual = am->residual, out->slide = as->slide;
     out->uplift = as->uplift, out->uplift_capacity = am->uplift_capacity;
 }
 
@@ -322,6 +322,7 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
         hash_bytes(&h, flags, sizeof flags);
         hash_bytes(&h, as->u, sizeof as->u);
         hash_bytes(&h, as->plastic, sizeof as->plastic);
+        hash_bytes(&h, &as->slide, sizeof as->slide);
         hash_bytes(&h, as->rate, sizeof as->rate);
         hash_bytes(&h, as->acc, sizeof as->acc);
     }

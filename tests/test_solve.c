@@ -41,7 +41,7 @@ static int on_the_yield_kink(const cs_model *m, const cs_state *s, int j) {
     } else if (u->kind == CS_U_ANCHOR) {
         const cs_anchor_model *am = &m->anchors[u->a];
         const cs_anchor_state *as = &s->anchors[u->a];
-        k = am->stiffness, cap = am->capacity;
+        k = am->stiffness, cap = cs_anchor_cap(am, as->slide);
         e[0] = as->u[0] - as->plastic[0], e[1] = as->u[1] - as->plastic[1];
     } else {
         return 0;

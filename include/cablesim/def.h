@@ -129,6 +129,9 @@ typedef struct cs_footing_def {
                                  post's proportions (calibrated, assumptions.md); scaled to a member's own
                                  width and depth as width_scaling says (footing.c) */
     double friction_angle;    /**< the soil's angle of internal friction, rad (the wedge's width effect) */
+    double residual_friction_angle; /**< its critical-state angle, rad: sheared on at constant volume past
+                                       the peak, the soil keeps the passive resistance of this angle (the
+                                       residual an anchor ploughs on at; none below: friction_angle) */
     cs_width_scaling width_scaling; /**< how dynamic_factor carries to this member's width */
     double skin_friction; /**< shaft friction per metre of depth, Pa/m (uplift capacity, calibrated) */
 } cs_footing_def;

@@ -241,15 +241,17 @@ typedef struct cs_anchor_view {
     int failed;             /**< pulled out */
     double displacement[2]; /**< horizontal, m */
     double force[2];        /**< the soil's resistance, N */
-    double capacity;        /**< its footing's horizontal capacity, N */
-    double travel_limit;    /**< how far it moves before it pulls out, m */
+    double capacity;        /**< its footing's peak horizontal resistance, N */
+    double residual;        /**< what the soil keeps resisting with as it ploughs on past the peak, N */
+    double slide;           /**< how far it has ploughed through the soil past its elastic range, m */
     double uplift;          /**< the ropes' upward pull, N */
     double uplift_capacity; /**< the upward pull that pulls it out, N */
 } cs_anchor_view;
 
 /** Fill out with an anchor now: 0 the start (low x), 1 the end. */
 CS_API void cs_state_anchor(const cs_model *model, const cs_state *state, int anchor, cs_anchor_view *out);
-/** "rigid", "holding" (in the soil's elastic range), "sliding" (it has yielded), "pulled_out". */
+/** "rigid", "holding" (in the soil's elastic range), "sliding" (it has yielded and ploughs through the soil),
+ * "pulled_out" (lifted out of the soil by the ropes). */
 CS_API const char *cs_anchor_status_name(const cs_anchor_view *anchor);
 
 /** Energy ledger, J. Every term is a state function or an accumulated dissipation computed on its own;

@@ -496,6 +496,16 @@ static void check_barrier(cs_loader *l, const cs_node *barrier, const cs_barrier
     for (int c = 0; c < b->cable_count; c++)
         check_slip(l, cables->items[c], &b->cables[c]);
     const cs_node *start = at(anchors, "start"), *end = at(anchors, "end");
+    for (int k = 0; k < 2; k++) {
+        const cs_node *footing = cs_node_get(k ? end : start, "footing");
+        const cs_node *limit = footing ? cs_node_get(footing, "rotation_limit") : NULL;
+        if (limit)
+            cs_err_node(
+                l, limit, 0,
+                "an anchor's footing has no rotation limit (expected none: a dead-man ploughs through "
+                "the soil at its residual resistance and leaves it only when lifted past its uplift "
+                "capacity)");
+    }
     if (b->start_anchor.x >= first->x)
         cs_err_node(l, at(start, "x"), 0,
                     "the start anchor (x = %g m) is inside the barrier (expected it before "

@@ -173,6 +173,9 @@ const cs_table cs_table_parts = {"parts",
            "it"),                                                                                            \
         FT("friction_angle", CS_Q_ANGLE, CS_POS | CS_MAX90, friction_angle,                                  \
            "the soil's angle of friction: scales the dynamic factor to a footing's width (passive wedge)"),  \
+        FT("residual_friction_angle", CS_Q_ANGLE, CS_POS | CS_MAX90, residual_friction_angle,                \
+           "the soil's critical-state angle of friction: the resistance an anchor keeps ploughing past its " \
+           "peak"),                                                                                          \
     {                                                                                                        \
         "width_scaling", CS_F_ENUM, CS_Q_NUMBER, 0, (long)offsetof(cs_footing_def, width_scaling), NULL,     \
             width_scaling_words,                                                                             \
@@ -307,8 +310,8 @@ const cs_table cs_table_rail = {
 const cs_table cs_table_anchor = {
     "anchor",
     "A cable end anchor: a footing (dead-man) in the soil that resists the ropes' "
-    "pull by Eq. 21 at their height, slides through the soil past it, and pulls out "
-    "after the travel its footing's rotation limit allows.",
+    "pull by Eq. 21 at their height, ploughs through the soil past it at a residual "
+    "resistance, and pulls out only when the ropes lift it past its uplift capacity.",
     CS_T_ANCHOR, anchor_fields, N(anchor_fields)};
 
 static const cs_field anchors_fields[] = {

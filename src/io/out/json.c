@@ -273,7 +273,8 @@ int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model
         jkey(&w, &af, "state");
         cs_json_string(f, cs_anchor_status_name(&av));
         jnum(&w, &af, "capacity_n", av.capacity);
-        jnum(&w, &af, "travel_limit_m", av.travel_limit);
+        jnum(&w, &af, "residual_n", av.residual);
+        jnum(&w, &af, "slide_m", av.slide);
         jnum(&w, &af, "displacement_m", hypot(av.displacement[0], av.displacement[1]));
         fprintf(f, "}");
     }

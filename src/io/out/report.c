@@ -117,10 +117,12 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
         cs_anchor_view av;
         cs_state_anchor(model, state, a, &av);
         if (av.rigid) continue;
-        fprintf(f, "  %s anchor         %s, moved %.3f m of %.3f m (capacity %.1f kN, %.1f kip)\n",
+        fprintf(f,
+                "  %s anchor         %s, moved %.3f m (peak %.1f kN, %.1f kip; residual %.1f kN, %.1f "
+                "kip)\n",
                 a ? "end  " : "start", cs_anchor_status_name(&av),
-                hypot(av.displacement[0], av.displacement[1]), av.travel_limit, av.capacity / 1e3,
-                av.capacity / CS_KIP);
+                hypot(av.displacement[0], av.displacement[1]), av.capacity / 1e3, av.capacity / CS_KIP,
+                av.residual / 1e3, av.residual / CS_KIP);
     }
     fprintf(f, "  kinetic energy       %.1f kJ (%.0f ft-kip)\n", s.initial_kinetic_energy_j / 1e3,
             s.initial_kinetic_energy_j / (CS_KIP * CS_FT));

@@ -444,6 +444,7 @@ static void write_design(jw *j, int *first, const cs_barrier_def *b) {
     knum(j, &sf, "coeff_height", soil->coeff_height);
     knum(j, &sf, "dynamic_factor", soil->dynamic_factor);
     knum(j, &sf, "friction_angle_rad", soil->friction_angle);
+    knum(j, &sf, "residual_friction_angle_rad", soil->residual_friction_angle);
     kstr(j, &sf, "width_scaling", cs_width_scaling_word(soil->width_scaling));
     knum(j, &sf, "skin_friction_pa_m", soil->skin_friction);
     fputs("},\"anchors\":[", f);
