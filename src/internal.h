@@ -75,7 +75,8 @@ typedef struct cs_post_model {
     int soil_yields;       /* 1 if the footing is weaker than the post */
     double shear_cap;      /* 0.6 Aw Fy, N */
     double pullout_cap;    /* N */
-    double rot_limit;      /* rad */
+    double rot_limit;      /* rad: a struck post's, past which the vehicle's edge rides over it */
+    double lie_angle;      /* rad: the tilt at which its top reaches grade, acos(pivot / (height + pivot)) */
     double load_height;    /* mean cable height on the post, m */
     double pivot;          /* depth of the point it turns about: 2/3 D if the soil yields, else 0, m */
     int clamped;
@@ -347,6 +348,9 @@ double cs_post_elastic_energy(const cs_model *model, const cs_state *s, int post
 double cs_post_kinetic_energy(const cs_model *model, const cs_state *s, int post);
 int cs_post_held(const cs_model *model, const cs_state *s, int post);
 int cs_post_check_failure(const cs_model *model, cs_state *s, int post);
+/* How far a standing post folds before it is down: a post carrying ropes until its top reaches grade
+ * (lie_angle), a struck post to its rotation limit, where the vehicle's edge rides over it; rad. */
+double cs_post_fold_limit(const cs_post_model *pm, const cs_post_state *ps);
 /* The residual at a tilt, the post's cable nodes where they stand (the caller places them; chords, axis
  * and rails as formed by the placement, or NULL: found here). */
 void cs_post_residual_at(const cs_model *model, const cs_state *s, int post, const double *tilt,

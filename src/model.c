@@ -419,6 +419,7 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
         pm->shear_cap = 0.6 * d->section.web_area * d->section.yield_stress;
         pm->pullout_cap = cs_footing_pullout_capacity(&d->footing);
         pm->rot_limit = pm->soil_yields ? d->footing.rotation_limit : d->rotation_limit;
+        pm->lie_angle = acos(pm->pivot / (d->height + pm->pivot));
         pm->clamped = d->attachment == CS_ATTACH_CLAMPED;
         pm->attach = d->attachment;
         pm->release_force =

@@ -244,7 +244,12 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     ps->axial = v3_dot(f, axis);
 }
 
-/* Failure of a standing post: rotation limit, base shear, pullout. Returns 1 if it failed. */
+double cs_post_fold_limit(const cs_post_model *pm, const cs_post_state *ps) {
+    return ps->captured ? pm->rot_limit : pm->lie_angle;
+}
+
+/* Failure of a standing post: folded down to its limit (cs_post_fold_limit), base shear, pullout. Returns 1
+ * if it failed. */
 int cs_post_check_failure(const cs_model *model, cs_state *s, int p) {
     cs_post_state *ps = &s->posts[p];
     if (!cs_post_standing(ps)) return 0;
@@ -253,7 +258,7 @@ int cs_post_check_failure(const cs_model *model, cs_state *s, int p) {
     cs_post_status st;
     cs_event_type ev;
     double value;
-    if (tilt >= pm->rot_limit) {
+    if (tilt >= cs_post_fold_limit(pm, ps)) {
         st = CS_POST_FAILED_ROTATION, ev = CS_EVENT_POST_ROTATION_LIMIT, value = tilt;
     } else if (ps->shear >= pm->shear_cap) {
         st = CS_POST_FAILED_SHEAR, ev = CS_EVENT_POST_SHEAR, value = ps->shear;

@@ -158,9 +158,8 @@ static void entry_material(const cs_model *model, const cs_state *s, int p, doub
 #define CS_FALL_STALL 1e-2 /* residual, of the capacity, that counts as no equilibrium near */
 static double fall(const cs_model *model, cs_state *s, int p, const double *m_entry, double *al, double *r) {
     const cs_post_model *pm = &model->posts[p];
-    double rn = v2_norm(r[0], r[1]), t[2], rt[2];
-    for (int k = 0; k * CS_FALL_STEP < pm->rot_limit + CS_FALL_STEP && v2_norm(al[0], al[1]) < pm->rot_limit;
-         k++) {
+    double rn = v2_norm(r[0], r[1]), t[2], rt[2], limit = cs_post_fold_limit(pm, &s->posts[p]);
+    for (int k = 0; k * CS_FALL_STEP < limit + CS_FALL_STEP && v2_norm(al[0], al[1]) < limit; k++) {
         double d[2] = {r[0] / rn, r[1] / rn};
         t[0] = al[0] + CS_FALL_STEP * d[0], t[1] = al[1] + CS_FALL_STEP * d[1];
         post_residual(model, s, p, t, m_entry, rt);

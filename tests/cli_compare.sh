@@ -5,10 +5,11 @@
 # of a run that broke through is a lower bound, written "beyond" and not compared); the slower run
 # differs; the page holds the table and five plots; bad input exits 2 naming the place, and writes nothing.
 source "$(dirname "$0")/lib.sh"
-# both with the start dead-man lifted out at 35 kip: run a breaks through, run b (35 mph) is stopped
-lifted="barrier.anchors.start.pullout_capacity=35 kip"
-"$cs" run examples/aps3.yaml -o "$tmp/a" --set "$lifted" >/dev/null 2>&1
-"$cs" run examples/aps3.yaml -o "$tmp/b" --set "$lifted" --set 'scenario.speed=35 mph' >/dev/null 2>&1
+# both with the ropes' end fittings at a quarter of their strength, both break through; run a written at
+# every step, so that the measured history made from it resolves its breaks
+weak=(--set "barrier.cables[0].termination_efficiency=0.25" --set "barrier.cables[1].termination_efficiency=0.25")
+"$cs" run examples/aps3.yaml -o "$tmp/a" "${weak[@]}" --set "scenario.output_interval=0.5 ms" >/dev/null 2>&1
+"$cs" run examples/aps3.yaml -o "$tmp/b" "${weak[@]}" --set 'scenario.speed=35 mph' >/dev/null 2>&1
 awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; print "time [ms],speed [mph],penetration (ft)"; next }
          { printf "%.6f,%.9f,%.9f\n", $c["t_s"] * 1000, $c["forward_speed_mps"] / 0.44704, $c["penetration_m"] / 0.3048 }' \
     "$tmp/a/timeseries.csv" >"$tmp/measured.csv"
@@ -32,7 +33,7 @@ check "the measured penetration is its own largest (0.1%)" \
 
 check "run b (35 mph) differs in its 50-ms deceleration by over 5%" \
     'awk -v d="$(value "max 50-ms deceleration" 7)" "BEGIN { exit !(d > 5 || d < -5) }"'
-check "outcomes in the table" 'grep -q "^outcome,,breakthrough,stopped," "$csv"'
+check "outcomes in the table" 'grep -q "^outcome,,breakthrough,breakthrough," "$csv"'
 check "the page has the table and five plots" \
     '[ "$(grep -o "<svg" "$tmp/cmp/compare.html" | wc -l)" -eq 5 ] && grep -q "<table>" "$tmp/cmp/compare.html"'
 check "five PNG and five SVG plots" '[ "$(ls "$tmp/cmp/plots" | grep -c "^compare-.*\.png$")" -eq 5 ] && [ "$(ls "$tmp/cmp/plots" | grep -c "^compare-.*\.svg$")" -eq 5 ]'
