@@ -92,6 +92,45 @@ static void shear_failure_onset(void **state) {
     world_free(w);
 }
 
+/* A post carrying ropes folds past 45 degrees until its top reaches grade, cos(theta) = d_p / (h + d_p):
+ * 90 degrees for APS3's line post, which hinges at grade; 0.2 rad short of it, with no shear or pull on it,
+ * it stands; at it, it is down (post_rotation_limit). A struck post goes at its rotation limit (45 deg),
+ * where the vehicle's edge rides over it. A post on a footing weak enough to turn in the soil (a 0.5-in wide
+ * one) turns about 2/3 of its 3-ft depth down and is down at acos(0.6096 / (h + 0.6096)). */
+static void a_post_folds_until_it_is_down(void **state) {
+    (void)state;
+    world *w = make_world(0.0, 0.0);
+    const cs_post_model *pm = &w->model->posts[0];
+    cs_post_state *ps = &w->state->posts[0];
+    assert_false(pm->soil_yields);
+    CHECK_REL(pm->lie_angle, M_PI_2_VALUE, 1e-15);
+    ps->shear = ps->axial = 0.0;
+    double tilts[2] = {pm->rot_limit + 0.2, pm->lie_angle - 0.2};
+    for (int k = 0; k < 2; k++) {
+        ps->tilt[0] = 0.0, ps->tilt[1] = tilts[k];
+        assert_int_equal(cs_post_check_failure(w->model, w->state, 0), 0);
+    }
+    ps->captured = 1; /* struck: its rotation limit */
+    assert_int_equal(cs_post_check_failure(w->model, w->state, 0), 1);
+    assert_int_equal(ps->status, CS_POST_FAILED_ROTATION);
+    ps->status = CS_POST_HINGED, ps->captured = 0;
+    ps->tilt[1] = pm->lie_angle;
+    assert_int_equal(cs_post_check_failure(w->model, w->state, 0), 1);
+    assert_int_equal(ps->status, CS_POST_FAILED_ROTATION);
+    world_free(w);
+    fixture fx;
+    fixture_aps3(&fx);
+    fx.posts[0].footing.diameter = 0.5 * IN;
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    assert_true(m->posts[0].soil_yields);
+    CHECK_REL(m->posts[0].pivot, 2.0 / 3.0 * fx.posts[0].footing.depth, 1e-15);
+    CHECK_REL(m->posts[0].lie_angle, acos(m->posts[0].pivot / (fx.posts[0].height + m->posts[0].pivot)),
+              1e-15);
+    cs_model_free(m);
+}
+
 /* A barrier of this one post and no cable (a bogie test, a bollard), struck head-on at 5 m/s by the
  * fixture's truck and run to the end: the post is pushed over until it fails. */
 /* The model of that strike: the post alone at x = 0, the truck head-on at 5 m/s. */
@@ -340,6 +379,7 @@ static void axis_jacobian_at_the_series_edge(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(cantilever_deflection),
+        cmocka_unit_test(a_post_folds_until_it_is_down),
         cmocka_unit_test(free_swing),
         cmocka_unit_test(axis_jacobian_derivatives),
         cmocka_unit_test(axis_jacobian_at_the_series_edge),
