@@ -91,15 +91,18 @@ void cs_barrier_force(const cs_model *model, cs_state *s) {
     cs_post_captured_force(model, s, s->crush, 0, s->force, s->moment);
     for (int c = 0; c < model->cable_count; c++) {
         cs_cable_state *cs = &s->cables[c];
+        v3_set(cs->push, 0.0, 0.0, 0.0), v3_set(cs->push + 3, 0.0, 0.0, 0.0);
         if (!cs->engaged || cs->status != CS_CABLE_INTACT) continue;
         for (int i = 1; i + 1 < cs->node_count; i++) {
             if (!cs_node_is_corner(cs->node[i])) continue;
             double f[3], r[3], t[3];
             cs_node_force(cs, i, NULL, f);
-            v3_add(s->force, s->force, f);
+            v3_add(s->force, s->force, f); /* corner by corner: the sum as it always was, to the bit */
+            v3_add(cs->push, cs->push, f);
             v3_sub(r, cs->pos + 3 * i, s->pos);
             v3_cross(t, r, f);
             v3_add(s->moment, s->moment, t);
+            v3_add(cs->push + 3, cs->push + 3, t);
         }
     }
 }

@@ -145,7 +145,7 @@ void cs_cable_commit(const cs_model *model, int c, cs_state *s) {
     }
     cs_termination_commit(model, c, s); /* rope slipped through the end fittings */
     memcpy(cs->m_commit, cs->m, (size_t)cs->node_count * sizeof *cs->m);
-    if (tmax > cs->max_tension_seen) cs->max_tension_seen = tmax;
+    if (tmax > cs->max_tension_seen) cs->max_tension_seen = tmax, cs->max_tension_time = s->t;
     cs->max_strain = worst;
     cs->end_load = cs_termination_load(cm, cs, NULL);
 }

@@ -126,6 +126,7 @@ struct cs_model {
     double start_pos[3]; /* CG at t = 0 */
     double start_yaw;
     int window_steps;    /* steps in the 50-ms average */
+    int loss_steps;      /* samples of the sudden-loss check's ring: every step within its window */
     double solve_budget; /* barrier solves the run may make in all (scenario.solve_budget per step) */
     int event_capacity;
 };
@@ -147,10 +148,15 @@ typedef struct cs_cable_state {
     double corner_z[CS_CORNERS];        /* body-frame z of the contact at each corner, m */
     double corner_z_commit[CS_CORNERS]; /* the same at the end of the previous step */
     double max_tension_seen;
-    double max_strain; /* largest span strain at the last commit */
-    double end_load;   /* the larger of the end spans' tensions over their fittings' strengths, last commit */
-    double slip[2];    /* rope slipped out of each end's fitting into its end span (committed), m */
-    int slipping[2];   /* each end's fitting has started to slip (its termination_slip given) */
+    double max_tension_time; /* when it was seen (the step's end), s */
+    double max_strain;       /* largest span strain at the last commit */
+    double end_load; /* the larger of the end spans' tensions over their fittings' strengths, last commit */
+    double slip[2];  /* rope slipped out of each end's fitting into its end span (committed), m */
+    int slipping[2]; /* each end's fitting has started to slip (its termination_slip given) */
+    double push[6];  /* the rope's force on the vehicle and its moment about the CG, at the last
+                        cs_barrier_force (world), N and N m */
+    double work_on_vehicle; /* the work that force has done on the vehicle (the vehicle's side: a barrier
+                               put back to its last commit keeps it, step.c), J */
 } cs_cable_state;
 
 typedef struct cs_post_state {
@@ -172,6 +178,24 @@ typedef struct cs_post_state {
 } cs_post_state;
 
 typedef struct cs_work cs_work; /* work.h */
+
+/* The sudden-loss check (response.c), fed the magnitude of the barrier's force on the vehicle sample by
+ * sample: a ring of the newest samples (every one within the window of the newest), the largest force so
+ * far, the newest sample's fall not yet judged (an event of the next sample may excuse it) and the
+ * stretches of flagged falls, each by its largest. */
+typedef struct cs_loss_scan {
+    double *t, *f; /* the ring: s, N */
+    int size;      /* its room */
+    long fed;      /* samples so far */
+    double step;   /* the sample step: an excusing event this close to a window excuses it, s */
+    double peak;   /* the largest force so far, N */
+    int pending;   /* the newest sample ends a fall (`fall`) not yet judged */
+    int open;      /* the last sample judged ended a flagged fall: 1 kept in found[kept - 1], 2 missed */
+    cs_sudden_loss fall;
+    int kept;   /* stretches in found */
+    int missed; /* stretches found once `found` was full */
+    cs_sudden_loss found[CS_SUDDEN_LOSS_KEPT];
+} cs_loss_scan;
 
 struct cs_state {
     double t;
@@ -220,6 +244,8 @@ struct cs_state {
     double *speed_ring; /* forward speed at the last window_steps steps */
     int ring_fill;
     double decel_50ms_g;
+    double *loss_ring; /* the sudden-loss check's ring, 2 loss_steps: times and forces */
+    cs_loss_scan loss;
     cs_summary summary;
 
     cs_event *events;
@@ -466,6 +492,12 @@ double cs_energy_scale(const cs_model *model, const cs_state *s);
 cs_event *cs_event_add(const cs_model *model, cs_state *s, cs_event_type type, cs_element_kind kind,
                        int element, double value);
 void cs_response_update(const cs_model *model, cs_state *s);
+/* The sudden-loss check on samples fed one by one (cs_sudden_losses): start with a ring of `size`
+ * samples (t and f), feed each with the events up to its time, finish at the end with all of them. */
+void cs_loss_scan_start(cs_loss_scan *scan, double *t, double *f, int size, double step);
+void cs_loss_scan_feed(cs_loss_scan *scan, double t, double force, const cs_event *events, int event_count);
+/* The windows flagged, kept ones in found[0 .. kept), the rest counted in missed: kept + missed. */
+int cs_loss_scan_finish(cs_loss_scan *scan, const cs_event *events, int event_count);
 /* End the run as "did not converge": its solves have used up the budget. */
 void cs_response_give_up(const cs_model *model, cs_state *s);
 

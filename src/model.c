@@ -456,6 +456,8 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
                       ceil(scenario->t_end / scenario->dt);
     m->window_steps = (int)lround(0.05 / scenario->dt);
     if (m->window_steps < 1) m->window_steps = 1;
+    /* every step within the window of the newest: floor(W / dt) steps back, and the newest */
+    m->loss_steps = (int)floor(CS_SUDDEN_LOSS_WINDOW / scenario->dt * (1.0 + 1e-9)) + 1;
     /* each post and cable fails in a few ways, once; slots and hooks let each cable go once per post */
     m->event_capacity = 4 * m->post_count + 6 * m->cable_count + m->post_count * m->cable_count + 16;
     return m;

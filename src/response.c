@@ -1,10 +1,12 @@
 /* Response parameters, updated every step: the 50-ms moving-average deceleration, penetration of the
  * front face past the attack face (y = 0), barrier deflection and working width, failed posts on each
- * side, and the end of the run (stopped, broke through, redirected, time limit). */
+ * side, each cable's peak tension and work on the vehicle, and the end of the run (stopped, broke through,
+ * redirected, time limit), with the sudden-loss check of the barrier's force on the vehicle. */
 #include "internal.h"
 #include "vec3.h"
 
 #include <math.h>
+#include <stdlib.h>
 
 /* 50-ms average of the deceleration along the initial travel direction: the change of forward speed
  * over the window, (u(t - W) - u(t)) / W, from a ring of the last window_steps + 1 speeds (the first
@@ -66,9 +68,124 @@ static double vehicle_reach(const cs_model *model, const cs_state *s) {
     return best;
 }
 
+/* ---- the sudden-loss check ----
+ * A window is a pair of samples at most CS_SUDDEN_LOSS_WINDOW apart; the force falls over it from the
+ * earlier to the later. Each sample ends the window of the largest fall to it (from the largest force within
+ * the window before it, the latest of equals); that fall is flagged if it passes CS_SUDDEN_LOSS_FRACTION of
+ * the largest force so far and no excusing event (a rope breaking, an end fitting letting go, an attachment
+ * letting a cable go, an anchor pulling out with its ropes) falls within the window or a sample step of it.
+ * It is judged at the next sample, whose events are then known. Falls flagged at successive samples make one
+ * stretch, kept by its largest fall; at the end a stretch stays flagged if that fall passes the fraction of
+ * the run's largest force (a fall that does passed it of the largest so far, so none is missed). */
+
+static int excuses(cs_event_type type) {
+    return type == CS_EVENT_CABLE_BREAK || type == CS_EVENT_TERMINATION_BREAK ||
+           type == CS_EVENT_CABLE_RELEASE || type == CS_EVENT_ANCHOR_PULLOUT;
+}
+
+void cs_loss_scan_start(cs_loss_scan *scan, double *t, double *f, int size, double step) {
+    *scan = (cs_loss_scan){.t = t, .f = f, .size = size, .step = step};
+}
+
+static void judge_fall(cs_loss_scan *scan, const cs_event *events, int event_count) {
+    const cs_sudden_loss *w = &scan->fall;
+    double slack = scan->step * (1.0 + 1e-6);
+    scan->pending = 0;
+    for (int i = 0; i < event_count; i++) {
+        if (excuses(events[i].type) && events[i].t >= w->t_start_s - slack &&
+            events[i].t <= w->t_end_s + slack) {
+            scan->open = 0;
+            return;
+        }
+    }
+    if (scan->open == 1) { /* the stretch goes on: kept by its largest fall */
+        cs_sudden_loss *last = &scan->found[scan->kept - 1];
+        if (w->force_before_n - w->force_after_n > last->force_before_n - last->force_after_n) *last = *w;
+    } else if (scan->open == 0) {
+        if (scan->kept < CS_SUDDEN_LOSS_KEPT)
+            scan->found[scan->kept++] = *w, scan->open = 1;
+        else
+            scan->missed++, scan->open = 2;
+    }
+}
+
+void cs_loss_scan_feed(cs_loss_scan *scan, double t, double force, const cs_event *events, int event_count) {
+    if (scan->pending)
+        judge_fall(scan, events, event_count);
+    else
+        scan->open = 0;
+    scan->t[scan->fed % scan->size] = t;
+    scan->f[scan->fed % scan->size] = force;
+    scan->fed++;
+    if (force > scan->peak) scan->peak = force;
+    double before = force, t_before = t, reach = CS_SUDDEN_LOSS_WINDOW + 1e-6 * scan->step;
+    for (long k = scan->fed - 2; k >= 0 && k >= scan->fed - scan->size; k--) {
+        int i = (int)(k % scan->size);
+        if (t - scan->t[i] > reach) break;
+        if (scan->f[i] > before) before = scan->f[i], t_before = scan->t[i];
+    }
+    scan->pending = before - force > CS_SUDDEN_LOSS_FRACTION * scan->peak;
+    if (scan->pending) scan->fall = (cs_sudden_loss){t_before, t, before, force};
+}
+
+int cs_loss_scan_finish(cs_loss_scan *scan, const cs_event *events, int event_count) {
+    if (scan->pending) judge_fall(scan, events, event_count);
+    scan->open = 0;
+    int kept = 0;
+    for (int k = 0; k < scan->kept; k++)
+        if (scan->found[k].force_before_n - scan->found[k].force_after_n >
+            CS_SUDDEN_LOSS_FRACTION * scan->peak)
+            scan->found[kept++] = scan->found[k];
+    scan->kept = kept;
+    return kept + scan->missed;
+}
+
+int cs_sudden_losses(const double *t, const double *force, int n, double step, const cs_event *events,
+                     int event_count, cs_sudden_loss *out, int capacity) {
+    if (n <= 0) return 0;
+    double *ring = malloc(2 * (size_t)n * sizeof *ring);
+    if (!ring) return -1;
+    cs_loss_scan *scan = malloc(sizeof *scan);
+    if (!scan) return free(ring), -1;
+    cs_loss_scan_start(scan, ring, ring + n, n, step);
+    int seen = 0; /* the events up to each sample's time */
+    for (int j = 0; j < n; j++) {
+        while (seen < event_count && events[seen].t <= t[j] + 1e-6 * step)
+            seen++;
+        cs_loss_scan_feed(scan, t[j], force[j], events, seen);
+    }
+    int count = cs_loss_scan_finish(scan, events, event_count);
+    for (int k = 0; k < scan->kept && k < capacity; k++)
+        out[k] = scan->found[k];
+    free(ring), free(scan);
+    return count;
+}
+
+int cs_state_sudden_losses(const cs_state *s, cs_sudden_loss *out, int capacity) {
+    if (s->outcome == CS_RUNNING) return 0;
+    int n = s->loss.kept < capacity ? s->loss.kept : capacity;
+    for (int k = 0; k < n; k++)
+        out[k] = s->loss.found[k];
+    return n;
+}
+
+int cs_state_cable_summary(const cs_state *s, int c, cs_cable_summary *out) {
+    if (c < 0 || c >= s->cable_count_alloc) return -1;
+    const cs_cable_state *cs = &s->cables[c];
+    out->peak_tension_n = cs->max_tension_seen;
+    out->peak_tension_time_s = cs->max_tension_time;
+    out->work_on_vehicle_j = cs->work_on_vehicle;
+    out->energy_share = s->e_initial_kinetic > 0.0 ? -cs->work_on_vehicle / s->e_initial_kinetic : 0.0;
+    return 0;
+}
+
 static void end_run(const cs_model *model, cs_state *s, cs_outcome outcome, double value) {
     s->outcome = outcome;
     close_decel_window(model, s);
+    cs_summary *sm = &s->summary;
+    sm->sudden_loss_count = cs_loss_scan_finish(&s->loss, s->events, s->event_count);
+    for (int k = 0; k < CS_SUMMARY_SUDDEN_LOSSES; k++)
+        sm->sudden_losses[k] = k < s->loss.kept ? s->loss.found[k] : (cs_sudden_loss){0};
     if (outcome == CS_STOPPED) {
         s->summary.stop_time_s = s->t;
         cs_event_add(model, s, CS_EVENT_STOPPED, CS_ELEMENT_VEHICLE, 0, value);
@@ -103,6 +220,10 @@ void cs_response_update(const cs_model *model, cs_state *s) {
     cs_summary *sm = &s->summary;
     double u = v3_dot(s->vel, model->dir);
     update_decel(model, s, u);
+    cs_loss_scan_feed(&s->loss, s->t, v3_norm(s->force), s->events, s->event_count);
+    sm->cable_count = model->cable_count;
+    for (int c = 0; c < model->cable_count && c < CS_SUMMARY_CABLES; c++)
+        cs_state_cable_summary(s, c, &sm->cables[c]);
     double pen = face_penetration(model, s);
     if (pen > sm->max_dynamic_penetration_m) sm->max_dynamic_penetration_m = pen;
     sm->working_width_m = fmax(sm->working_width_m, vehicle_reach(model, s));

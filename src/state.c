@@ -33,8 +33,9 @@ static int allocate(const cs_model *model, cs_state *s, int with_workspace) {
     if (!with_workspace) return 0;
     s->events = calloc((size_t)model->event_capacity, sizeof *s->events);
     s->speed_ring = calloc((size_t)model->window_steps + 1, sizeof *s->speed_ring);
+    s->loss_ring = calloc(2 * (size_t)model->loss_steps, sizeof *s->loss_ring);
     s->work = calloc(1, sizeof *s->work);
-    if (!s->events || !s->speed_ring || !s->work) return -1;
+    if (!s->events || !s->speed_ring || !s->loss_ring || !s->work) return -1;
     cs_work *w = s->work;
     w->rail_pos = calloc((size_t)model->rail_count * (size_t)np * 3 + 1, sizeof *w->rail_pos);
     w->rail_tilt = calloc((size_t)np * 2 + 1, sizeof *w->rail_tilt);
@@ -75,7 +76,8 @@ void cs_state_free(cs_state *s) {
         free(s->work->rail_pos), free(s->work->rail_tilt);
         free(s->work);
     }
-    free(s->cables), free(s->posts), free(s->events), free(s->speed_ring), free(s->rail_plastic);
+    free(s->cables), free(s->posts), free(s->events), free(s->speed_ring), free(s->loss_ring);
+    free(s->rail_plastic);
     free(s);
 }
 
@@ -87,6 +89,7 @@ void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src) {
     *dst = *src;
     dst->cables = keep.cables, dst->posts = keep.posts, dst->events = keep.events;
     dst->speed_ring = keep.speed_ring, dst->work = keep.work, dst->rail_plastic = keep.rail_plastic;
+    dst->loss_ring = keep.loss_ring, dst->loss.t = keep.loss.t, dst->loss.f = keep.loss.f;
     size_t nr = (size_t)model->rail_count, np = (size_t)model->post_count;
     memcpy(dst->rail_plastic, src->rail_plastic, nr * np * sizeof *dst->rail_plastic);
     dst->cable_count_alloc = keep.cable_count_alloc;
@@ -108,10 +111,13 @@ void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src) {
     memcpy(dst->posts, src->posts, (size_t)model->post_count * sizeof *dst->posts);
 }
 
-/* The barrier of `from` back into s (cables, posts, crush, ledger sums, events), s's vehicle kept. */
+/* The barrier of `from` back into s (cables, posts, crush, ledger sums, events), s's vehicle kept, and
+ * with it the work the ropes have done on it. */
 void cs_state_restore_barrier(const cs_model *model, cs_state *s, const cs_state *from) {
-    double pos[3], vel[3], quat[4], omega[3], acc[3], ang_acc[3];
+    double pos[3], vel[3], quat[4], omega[3], acc[3], ang_acc[3], work[CS_MAX_CABLES_PER_POST];
     double tyre_power = s->tyre_power, e_tyre = s->e_tyre;
+    for (int c = 0; c < model->cable_count; c++)
+        work[c] = s->cables[c].work_on_vehicle;
     v3_copy(pos, s->pos), v3_copy(vel, s->vel), v3_copy(omega, s->omega);
     v3_copy(acc, s->acc), v3_copy(ang_acc, s->ang_acc);
     memcpy(quat, s->quat, sizeof quat);
@@ -120,6 +126,8 @@ void cs_state_restore_barrier(const cs_model *model, cs_state *s, const cs_state
     v3_copy(s->acc, acc), v3_copy(s->ang_acc, ang_acc);
     memcpy(s->quat, quat, sizeof quat);
     s->tyre_power = tyre_power, s->e_tyre = e_tyre;
+    for (int c = 0; c < model->cable_count; c++)
+        s->cables[c].work_on_vehicle = work[c];
 }
 
 void cs_state_summary(const cs_state *s, cs_summary *out) {

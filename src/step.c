@@ -40,6 +40,10 @@ static void reset_cable(const cs_model *model, int c, cs_cable_state *cs) {
     v3_set(cs->pos + 3 * last, model->anchors[1].x, 0.0, model->anchors[1].z);
     lay_in_pretension(model, c, cs);
     cs->max_tension_seen = cm->pretension;
+    cs->max_tension_time = 0.0;
+    cs->work_on_vehicle = 0.0;
+    for (int k = 0; k < 6; k++)
+        cs->push[k] = 0.0;
     cs->max_strain = cm->pretension / cm->rope.ea;
     cs->end_load = 0.0;
     cs->slip[0] = cs->slip[1] = 0.0;
@@ -123,6 +127,8 @@ void cs_state_reset(const cs_model *model, cs_state *s) {
     s->speed_ring[0] = v3_dot(s->vel, model->dir); /* the speed the run starts with, at step 0 */
     s->ring_fill = 1;
     s->decel_50ms_g = 0.0;
+    cs_loss_scan_start(&s->loss, s->loss_ring, s->loss_ring + model->loss_steps, model->loss_steps,
+                       model->scenario.dt);
     s->work->solver_residual = 0.0;
     memset(&s->summary, 0, sizeof s->summary);
     s->summary.first_contact_time_s = -1.0;
@@ -140,6 +146,9 @@ void cs_state_reset(const cs_model *model, cs_state *s) {
     s->summary.energy_balance_error = 0.0;
     s->summary.initial_kinetic_energy_j = s->e_initial_kinetic;
     s->summary.max_cable_tension_n = 0.0;
+    s->summary.cable_count = model->cable_count;
+    for (int c = 0; c < model->cable_count && c < CS_SUMMARY_CABLES; c++)
+        cs_state_cable_summary(s, c, &s->summary.cables[c]);
     s->work->stored_committed = cs_barrier_stored_energy(model, s);
 }
 
@@ -204,6 +213,19 @@ static double work_on_barrier(const loaded_pose *a, const loaded_pose *b) {
     return w;
 }
 
+/* Each rope's share of it, with the sign turned: the work the rope does on the vehicle, added to its cable's
+ * work_on_vehicle (from: each cable's push at pose a, force and moment; at b, its push now). The rule is
+ * linear in the force, so the cables' shares and the struck posts' make the whole. */
+static void book_cable_work(const cs_model *model, cs_state *s, const loaded_pose *a, const loaded_pose *b,
+                            const double (*from)[6]) {
+    for (int c = 0; c < model->cable_count; c++) {
+        loaded_pose ca = *a, cb = *b;
+        v3_copy(ca.force, from[c]), v3_copy(ca.moment, from[c] + 3);
+        v3_copy(cb.force, s->cables[c].push), v3_copy(cb.moment, s->cables[c].push + 3);
+        s->cables[c].work_on_vehicle -= work_on_barrier(&ca, &cb);
+    }
+}
+
 /* Stages 2-5 at the vehicle's pose as it stands. A solve that ends further than CS_PATH_TRIGGER from
  * equilibrium is not committed unless told to (its slides and plastic flow would be booked from a state
  * that is not one). Nor at all, and -1 returned, if (with `allowed` given) it ends above the solver
@@ -246,6 +268,9 @@ static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, do
 static int advance(const cs_model *model, cs_state *s, double h, int commit_anyway, double allowed,
                    const cs_state *last, double *work) {
     loaded_pose from = pose_of(s), to;
+    double pushes[CS_MAX_CABLES_PER_POST][6];
+    for (int c = 0; c < model->cable_count; c++)
+        memcpy(pushes[c], s->cables[c].push, sizeof pushes[c]);
     s->h += h;                  /* the posts swing over the time since the last commit */
     cs_vehicle_integrate(s, h); /* 1. half a kick and a drift */
     int failed = 0, committed = follow_pose(model, s, commit_anyway, allowed, &from, &to, &failed);
@@ -257,6 +282,7 @@ static int advance(const cs_model *model, cs_state *s, double h, int commit_anyw
     if (!committed) cs_barrier_force(model, s), to = pose_of(s); /* 6. the barrier's push */
     v3_copy(s->force, to.force), v3_copy(s->moment, to.moment);
     *work += work_on_barrier(&from, &to);
+    book_cable_work(model, s, &from, &to, (const double(*)[6])pushes);
     cs_vehicle_finish(model, s, h); /* the second half kick */
     if (failed) {                   /* the next step starts from the push the failures left */
         cs_barrier_force(model, s);

@@ -63,11 +63,15 @@ for key in max_50ms_decel_g max_dynamic_penetration_m max_barrier_deflection_m s
 done
 # Every field of the C summary (cs_summary in include/cablesim/sim.h) is a key of summary.json by the same name.
 fields=$(sed -n '/^typedef struct cs_summary {/,/^} cs_summary;/p' include/cablesim/sim.h | perl -0pe 's{/\*.*?\*/}{}gs' |
-    grep -v cs_summary | grep -oE '[a-z_0-9]+(\[[0-9]+\])?[,;]' | tr -d ',;' | sed 's/\[.*//')
+    grep -v cs_summary | grep -oE '[a-z_0-9]+(\[[A-Z_0-9]+\])?[,;]' | tr -d ',;' | sed 's/\[.*//')
 check "the fields of cs_summary were read" '[ "$(wc -w <<<"$fields")" -ge 26 ]'
 for key in $fields; do
     check "summary.json has cs_summary's $key" 'grep -q "\"$key\":" "$out/summary.json"'
 done
+# Each cable's peak tension and work on the vehicle: summary.json's cables, a line each in the terminal
+check "summary.json: each cable's peak and work" 'grep -qE "\"cables\":\[\{\"index\":0,\"peak_tension_n\":[0-9.e+]+,\"peak_tension_time_s\":[0-9.e+-]+,\"work_on_vehicle_j\":-?[0-9.e+-]+,\"energy_share\":-?[0-9.e+-]+\},\{\"index\":1," "$out/summary.json"'
+check "summary.json: the sudden losses" 'grep -qE "\"sudden_loss_count\":[0-9]+,\"sudden_losses\":\[" "$out/summary.json"'
+check "the terminal: a line per cable, kN and kip" '[ "$(grep -cE "^  cable [01] +peak [0-9.]+ kN \([0-9.]+ kip\) at [0-9.]+ s; work on the vehicle -?[0-9.]+ kJ \(-?[0-9]+ ft-kip\), -?[0-9.]+% of its kinetic energy taken$" "$tmp/stdout")" -eq 2 ]'
 check "--set reached the run" 'grep -q "\"speed\":15.6464" "$out/summary.json"'
 check "no NaN or infinity in outputs" '! grep -qiE "(^|[,:[])-?(nan|inf)" "$out/timeseries.csv" "$out/summary.json" "$out/events.csv"'
 

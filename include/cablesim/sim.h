@@ -297,6 +297,40 @@ CS_API double cs_energy_term(const cs_energy *energy, int term);
  * the step (docs/robustness.md). */
 #define CS_LEDGER_FAILURE 0.05
 
+/** How many cables cs_summary gives one by one (cs_state_cable_summary gives any cable). */
+enum { CS_SUMMARY_CABLES = 8 };
+
+/** One cable over the run: its largest tension and the work its rope did on the vehicle. */
+typedef struct cs_cable_summary {
+    double peak_tension_n;      /**< largest span tension over the run, at a commit of the barrier, N */
+    double peak_tension_time_s; /**< when it was reached (the end of its step), s */
+    double work_on_vehicle_j;   /**< work of the rope's force on the vehicle over the run: the integral of
+                                     that force dotted with the vehicle's velocity at the contact, J
+                                     (negative while it slows the vehicle) */
+    double energy_share;        /**< -work_on_vehicle_j over the initial kinetic energy: the share of it the
+                                     cable took from the vehicle (negative if it gave the vehicle energy) */
+} cs_cable_summary;
+
+/** How many sudden losses cs_summary gives one by one (cs_state_sudden_losses gives the rest). */
+enum { CS_SUMMARY_SUDDEN_LOSSES = 4 };
+
+/** A sudden loss: within 10 ms the magnitude of the barrier's force on the vehicle (ropes and struck posts)
+ * fell by more than half of its largest over the run, and no rope broke, no end fitting let go and no
+ * attachment let a cable go within that window or a sample step of it. */
+typedef struct cs_sudden_loss {
+    double t_start_s;      /**< the window's start: the force before, s */
+    double t_end_s;        /**< its end: the force after, s (t_end_s - t_start_s <= 10 ms) */
+    double force_before_n; /**< N */
+    double force_after_n;  /**< N */
+} cs_sudden_loss;
+
+/** The window of the sudden-loss check, s. */
+#define CS_SUDDEN_LOSS_WINDOW 0.010
+/** The fall, as a fraction of the run's largest force on the vehicle, it takes to flag a window. */
+#define CS_SUDDEN_LOSS_FRACTION 0.5
+/** How many sudden losses a run keeps (cs_state_sudden_losses); more are counted. */
+enum { CS_SUDDEN_LOSS_KEPT = 64 };
+
 /** Response parameters, updated every step. Each field is named as its key in summary.json, its unit in the
  * name's last part (_s, _m, _g, _mps, _deg, _n, _j); summary.json also has what follows from them (stopped,
  * energy_balance_warning), the anchors, the events and the inputs. */
@@ -330,10 +364,40 @@ typedef struct cs_summary {
     double final_position_m[3];      /**< CG, m */
     int solver_warnings;             /**< steps whose barrier solve hit its sweep cap */
     double max_solver_residual;      /**< largest relative residual left by such a step */
+    int cable_count;                 /**< cables of the model; the first CS_SUMMARY_CABLES are in cables */
+    cs_cable_summary cables[CS_SUMMARY_CABLES]; /**< each cable's peak tension and work on the vehicle */
+    int sudden_loss_count; /**< sudden losses of the barrier's force on the vehicle, found at the
+                                run's end from its force at every step (0 while it runs) */
+    cs_sudden_loss sudden_losses[CS_SUMMARY_SUDDEN_LOSSES]; /**< the first of them, in time order */
 } cs_summary;
 
 /** Fill out with the response parameters now (at the run's end: the run's). */
 CS_API void cs_state_summary(const cs_state *state, cs_summary *out);
+/** Cable `cable`'s peak tension and work on the vehicle over the run so far.
+ * @return 0, or -1 if there is no such cable. */
+CS_API int cs_state_cable_summary(const cs_state *state, int cable, cs_cable_summary *out);
+/** The sudden losses of the run, once it has ended (cs_summary's sudden_loss_count in all).
+ * @param state the state at the run's end
+ * @param out filled with up to capacity of them, in time order
+ * @param capacity out's room
+ * @return how many it holds (at most CS_SUDDEN_LOSS_KEPT; a run with more counts them in sudden_loss_count).
+ */
+CS_API int cs_state_sudden_losses(const cs_state *state, cs_sudden_loss *out, int capacity);
+/** The sudden-loss check on a force history, as a run makes it from its force at every step.
+ * @param t the samples' times, increasing, s
+ * @param force the magnitude of the barrier's force on the vehicle at each, N
+ * @param n how many
+ * @param step the output step: an event this close to a window excuses it, s
+ * @param events the run's events, in time order (a cable_break, termination_break or cable_release
+ *        excuses a fall)
+ * @param event_count how many
+ * @param out filled with up to capacity windows, in time order (overlapping windows flagged at successive
+ *        samples are given once, by the largest fall among them)
+ * @param capacity out's room
+ * @return the number of windows flagged (those past capacity, or past CS_SUDDEN_LOSS_KEPT, counted too), or
+ *         -1 if out of memory. */
+CS_API int cs_sudden_losses(const double *t, const double *force, int n, double step, const cs_event *events,
+                            int event_count, cs_sudden_loss *out, int capacity);
 /** An outcome's name in summary.json: "stopped", "breakthrough", "redirected", ... */
 CS_API const char *cs_outcome_name(cs_outcome outcome);
 

@@ -138,6 +138,23 @@ export function summaryTable(data) {
     ['Max barrier deflection (cable)', ...both.length(s.max_barrier_deflection_m)],
     ['Working width (vehicle, cables or posts)', ...both.length(s.working_width_m)],
     ['Max cable tension', ...both.force(s.max_cable_tension_n)],
+    ...(s.cables || []).flatMap((c) => {
+      const [peakSI, peakUS] = both.force(c.peak_tension_n);
+      const [workSI, workUS] = both.energy(c.work_on_vehicle_j);
+      return [
+        [`Cable ${c.index}: peak tension`, `${peakSI} at t = ${fmt(c.peak_tension_time_s, 4)} s`, peakUS],
+        [`Cable ${c.index}: work on the vehicle`, `${workSI}, ${fmt(100 * c.energy_share, 1)} % of the initial kinetic energy taken`, workUS],
+      ];
+    }),
+    ...(s.sudden_losses || []).map((w) => {
+      const [beforeSI, beforeUS] = both.force(w.force_before_n);
+      const [afterSI, afterUS] = both.force(w.force_after_n);
+      return [
+        'Sudden loss of the barrier\'s force on the vehicle (warning)',
+        `${beforeSI} to ${afterSI} between t = ${fmt(w.t_start_s, 4)} and ${fmt(w.t_end_s, 4)} s`,
+        `${beforeUS} to ${afterUS}; no rope, fitting or attachment failed`,
+      ];
+    }),
     ['Posts failed', `${s.posts_failed_left + s.posts_failed_right} of ${data.barrier.posts.length}`, `${s.posts_failed_left} at lower x than the impact (${s.posts_failed_rotation_left} past the rotation limit, ${s.posts_failed_shear_left} sheared, ${s.posts_failed_pullout_left} pulled out); ${s.posts_failed_right} at higher x (${s.posts_failed_rotation_right} past the rotation limit, ${s.posts_failed_shear_right} sheared, ${s.posts_failed_pullout_right} pulled out)`],
     ['Cables broken', `${s.cables_broken} of ${data.barrier.cables.length}`, null],
     ['Exit speed', ...(s.exit_speed_mps === null ? ['none', null] : both.speed(s.exit_speed_mps))],

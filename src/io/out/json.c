@@ -72,6 +72,44 @@ static void jobject(cs_wout *w, int *first, const char *key, const cs_table *t, 
     fputc('}', w->f);
 }
 
+/* Every cable's peak tension and work on the vehicle, and the sudden losses (cs_summary's, each of them). */
+static void cables_and_losses(cs_wout *w, int *first, const cs_state *state, const cs_summary *s) {
+    jkey(w, first, "cable_count");
+    fprintf(w->f, "%d", s->cable_count);
+    jkey(w, first, "cables");
+    fputc('[', w->f);
+    for (int c = 0; c < s->cable_count; c++) {
+        cs_cable_summary cb;
+        cs_state_cable_summary(state, c, &cb);
+        int cf = 1;
+        fprintf(w->f, "%s{", c ? "," : "");
+        jkey(w, &cf, "index");
+        fprintf(w->f, "%d", c);
+        jnum(w, &cf, "peak_tension_n", cb.peak_tension_n);
+        jnum(w, &cf, "peak_tension_time_s", cb.peak_tension_time_s);
+        jnum(w, &cf, "work_on_vehicle_j", cb.work_on_vehicle_j);
+        jnum(w, &cf, "energy_share", cb.energy_share);
+        fputc('}', w->f);
+    }
+    fputc(']', w->f);
+    jkey(w, first, "sudden_loss_count");
+    fprintf(w->f, "%d", s->sudden_loss_count);
+    jkey(w, first, "sudden_losses");
+    fputc('[', w->f);
+    cs_sudden_loss losses[CS_SUDDEN_LOSS_KEPT];
+    int n = cs_state_sudden_losses(state, losses, CS_SUDDEN_LOSS_KEPT);
+    for (int k = 0; k < n; k++) {
+        int lf = 1;
+        fprintf(w->f, "%s{", k ? "," : "");
+        jnum(w, &lf, "t_start_s", losses[k].t_start_s);
+        jnum(w, &lf, "t_end_s", losses[k].t_end_s);
+        jnum(w, &lf, "force_before_n", losses[k].force_before_n);
+        jnum(w, &lf, "force_after_n", losses[k].force_after_n);
+        fputc('}', w->f);
+    }
+    fputs("]\n", w->f);
+}
+
 static void jarray(cs_wout *w, int *first, const char *key, const double *v, int n) {
     jkey(w, first, key);
     fputc('[', w->f);
@@ -290,6 +328,7 @@ int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model
     fprintf(f, "%d", s.solver_warnings);
     jnum(&w, &first, "max_solver_residual", s.max_solver_residual);
     fputc('\n', f);
+    cables_and_losses(&w, &first, state, &s);
     ratings(&w, &first, info);
     jkey(&w, &first, "events");
     fprintf(f, "[");

@@ -52,6 +52,22 @@ static void events(FILE *f, const cs_state *state) {
         fprintf(f, "  posts yielding       none\n");
 }
 
+/* A warning for each sudden loss of the barrier's force on the vehicle (docs/theory.md, Response
+ * parameters). */
+static void sudden_losses(FILE *f, const cs_state *state, const cs_summary *s) {
+    cs_sudden_loss losses[CS_SUDDEN_LOSS_KEPT];
+    int n = cs_state_sudden_losses(state, losses, CS_SUDDEN_LOSS_KEPT);
+    for (int k = 0; k < n; k++)
+        fprintf(
+            f,
+            "  WARNING sudden loss: force on the vehicle fell from %.1f kN (%.1f kip) to %.1f kN (%.1f kip) "
+            "between %.4f and %.4f s with no rope, fitting or attachment failing\n",
+            losses[k].force_before_n / 1e3, losses[k].force_before_n / CS_KIP, losses[k].force_after_n / 1e3,
+            losses[k].force_after_n / CS_KIP, losses[k].t_start_s, losses[k].t_end_s);
+    if (s->sudden_loss_count > n)
+        fprintf(f, "  WARNING sudden loss: %d more such windows\n", s->sudden_loss_count - n);
+}
+
 void cs_write_summary_text(FILE *f, const cs_model_input *in, const cs_model *model, const cs_state *state) {
     cs_run_info info;
     cs_run_info_of(&info, in, state);
@@ -106,6 +122,16 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
     fprintf(f, "  working width        %.3f m (%.2f ft)\n", s.working_width_m, s.working_width_m / CS_FT);
     fprintf(f, "  max cable tension    %.1f kN (%.1f kip)\n", s.max_cable_tension_n / 1e3,
             s.max_cable_tension_n / CS_KIP);
+    for (int c = 0; c < s.cable_count; c++) {
+        cs_cable_summary cb;
+        cs_state_cable_summary(state, c, &cb);
+        fprintf(
+            f,
+            "  cable %-2d             peak %.1f kN (%.1f kip) at %.4f s; work on the vehicle %.1f kJ (%.0f "
+            "ft-kip), %.1f%% of its kinetic energy taken\n",
+            c, cb.peak_tension_n / 1e3, cb.peak_tension_n / CS_KIP, cb.peak_tension_time_s,
+            cb.work_on_vehicle_j / 1e3, cb.work_on_vehicle_j / (CS_KIP * CS_FT), 100.0 * cb.energy_share);
+    }
     fprintf(f, "  cables broken        %d of %d\n", s.cables_broken, in->barrier.cable_count);
     fprintf(f,
             "  posts failed         %d left, %d right (of %d): rotation limit %d + %d, shear %d + %d, "
@@ -130,6 +156,7 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
             fabs(s.energy_balance_error) > CS_LEDGER_WARNING
                 ? " (WARNING: over 1%, the ledger does not close: docs/robustness.md)"
                 : "");
+    sudden_losses(f, state, &s);
     if (s.solver_warnings)
         fprintf(f, "  solver warnings      %d steps (largest residual %.2g)\n", s.solver_warnings,
                 s.max_solver_residual);

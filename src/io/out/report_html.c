@@ -485,6 +485,40 @@ static void write_info(jw *j, int *first, const cs_run_info *info) {
     fputc(']', f);
 }
 
+/* Each cable's peak tension and work on the vehicle, and the sudden losses, as summary.json has them. */
+static void cables_and_losses(jw *j, int *first, const cs_state *state, const cs_summary *s) {
+    key(j, first, "cables");
+    fputc('[', j->w.f);
+    for (int c = 0; c < s->cable_count; c++) {
+        cs_cable_summary cb;
+        cs_state_cable_summary(state, c, &cb);
+        int cf = 1;
+        fprintf(j->w.f, "%s{", c ? "," : "");
+        kint(j, &cf, "index", c);
+        knum(j, &cf, "peak_tension_n", cb.peak_tension_n);
+        knum(j, &cf, "peak_tension_time_s", cb.peak_tension_time_s);
+        knum(j, &cf, "work_on_vehicle_j", cb.work_on_vehicle_j);
+        knum(j, &cf, "energy_share", cb.energy_share);
+        fputc('}', j->w.f);
+    }
+    fputc(']', j->w.f);
+    kint(j, first, "sudden_loss_count", s->sudden_loss_count);
+    key(j, first, "sudden_losses");
+    fputc('[', j->w.f);
+    cs_sudden_loss losses[CS_SUDDEN_LOSS_KEPT];
+    int n = cs_state_sudden_losses(state, losses, CS_SUDDEN_LOSS_KEPT);
+    for (int k = 0; k < n; k++) {
+        int lf = 1;
+        fprintf(j->w.f, "%s{", k ? "," : "");
+        knum(j, &lf, "t_start_s", losses[k].t_start_s);
+        knum(j, &lf, "t_end_s", losses[k].t_end_s);
+        knum(j, &lf, "force_before_n", losses[k].force_before_n);
+        knum(j, &lf, "force_after_n", losses[k].force_after_n);
+        fputc('}', j->w.f);
+    }
+    fputc(']', j->w.f);
+}
+
 int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *state, const cs_record *r,
                          const cs_run_info *info, char *why, size_t why_size) {
     jw j = {{f, 0, ""}, ""};
@@ -531,6 +565,7 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
     knum(&j, &sf, "energy_balance_error", s.energy_balance_error);
     kint(&j, &sf, "solver_warnings", s.solver_warnings);
     knum(&j, &sf, "max_solver_residual", s.max_solver_residual);
+    cables_and_losses(&j, &sf, state, &s);
     fputc('}', f);
     key(&j, &first, "scenario");
     fputc('{', f);
