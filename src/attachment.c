@@ -1,10 +1,14 @@
 /* How a cable lets go of a post it is held on (the attachment kinds of def.h).
  *
- * A cable in a slot open at the top, or in a hook bolt, bears on the post across it and is held along
- * it by friction and by its retainer. With the post's unit axis a (base to top) and the cable's pull f
- * on the post, the pull along the post is F_a = f . a and across it F_n = |f - F_a a|. A post bent over
- * by its cables turns their pull up along it: a horizontal pull F on a post leaning theta away from it
- * has F_a = F sin(theta), F_n = F cos(theta). The cable rides up and out when
+ * A cable in a slot cut down the post's web from its top is held by the post itself: it comes out only
+ * at the slot's open end. Its spans hold it near its height z while the post leans theta about its pivot
+ * d_p below grade, so it sits (z + d_p) / cos(theta) from the pivot along the slot, and it reaches the
+ * open end, the top h, once cos(theta) <= (z + d_p) / (h + d_p). There the strap and cap over the slot
+ * hold it, as a hook bolt's bend holds a cable on the post's face; from there on (a hook from the start)
+ * it bears on the post across it and is held along it by friction and by that retainer. With the post's unit
+ * axis a (base to top) and the cable's pull f on the post, the pull along the post is F_a = f . a and across
+ * it F_n = |f - F_a a|. A post bent over by its cables turns their pull up along it: a horizontal pull F on a
+ * post leaning theta away from it has F_a = F sin(theta), F_n = F cos(theta). The cable rides up and out when
  *
  *     F_a > mu F_n + R,
  *
@@ -25,6 +29,10 @@ static int held_above(const cs_model *model, const cs_state *s, int p, int c) {
     return 0;
 }
 
+double cs_attachment_slot_open(const cs_post_model *pm, double z) {
+    return (z + pm->pivot) / (pm->height + pm->pivot);
+}
+
 int cs_attachment_check_release(const cs_model *model, cs_state *s, int p) {
     const cs_post_model *pm = &model->posts[p];
     const cs_post_state *ps = &s->posts[p];
@@ -38,7 +46,10 @@ int cs_attachment_check_release(const cs_model *model, cs_state *s, int p) {
         cs_cable_state *cs = &s->cables[c];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
         if (i <= 0) continue;
-        if (pm->attach == CS_ATTACH_SLOT && held_above(model, s, p, c)) continue;
+        if (pm->attach == CS_ATTACH_SLOT &&
+            (held_above(model, s, p, c) ||
+             cos(v2_norm(ps->tilt[0], ps->tilt[1])) > cs_attachment_slot_open(pm, model->cables[c].z)))
+            continue;
         double f[3], across[3];
         cs_node_force(cs, i, NULL, f);
         double along = v3_dot(f, axis);

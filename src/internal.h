@@ -392,6 +392,8 @@ void cs_post_captured_force(const cs_model *model, const cs_state *s, double cru
 int cs_post_capture(const cs_model *model, cs_state *s);
 
 /* ---- attachments (attachment.c) ---- */
+/* The cosine of the lean at which a cable held at height z reaches the open end of post pm's slot. */
+double cs_attachment_slot_open(const cs_post_model *pm, double z);
 /* Let go of the cables post p's slot or hooks no longer hold; returns 1 if any went. */
 int cs_attachment_check_release(const cs_model *model, cs_state *s, int p);
 

@@ -2,19 +2,23 @@
  * F (horizontal, across the barrier) on a post leaning theta away from the pull bears on it with
  * F cos(theta) across the post and pulls it F sin(theta) along, toward the top; it leaves when
  *   F sin(theta) > mu F cos(theta) + R,
- * that is past theta* = atan(mu) + asin(R cos(atan(mu)) / F). Checked by hand on a post leaning just short
- * of and just past theta*, for the slot's and the hook's documented R; and the slot's order: a cable
- * held above keeps the ones below in. */
+ * that is past theta* = atan(mu) + asin(R cos(atan(mu)) / F); a cable in a slot only once it has reached
+ * the slot's open end, at cos(theta) = (z + d_p) / (h + d_p). Checked by hand on a post leaning just short
+ * of and just past theta*, for the slot's and the hook's documented R (the slot's post cut to 1.23 m, so
+ * that its upper cable, at 4 ft, is at the open end from 7.7 degrees); just short of and past the open
+ * end on the 7-ft post; and the slot's order: a cable held above keeps the ones below in. */
 #include "check.h"
 #include "fixture.h"
 #include "internal.h"
 #include "vec3.h"
 
-/* Two cables on one post at x = 0 between rigid anchors 10 m away. */
-static cs_model *one_post(cs_attachment kind, fixture *fx) {
+/* Two cables on one post at x = 0 between rigid anchors 10 m away; the post's height if given (else the
+ * fixture's 7 ft). */
+static cs_model *one_post(cs_attachment kind, fixture *fx, double height) {
     fixture_aps3(fx);
     fx->barrier.post_count = 1;
     fx->posts[0].x = 0.0;
+    if (height > 0.0) fx->posts[0].height = height;
     fx->posts[0].attachment = kind;
     fx->barrier.posts = fx->posts, fx->barrier.cables = fx->cables;
     fx->barrier.start_anchor.x = -10.0, fx->barrier.end_anchor.x = 10.0;
@@ -46,9 +50,11 @@ static double release_angle(double mu, double r, double f) {
     return phi + asin(r * cos(phi) / f);
 }
 
+#define SHORT_POST 1.23 /* m: the upper cable (1.2192 m) at a slot's open end from acos(1.2192 / 1.23) */
+
 static void lets_go_at_its_limit(cs_attachment kind, double documented) {
     fixture fx;
-    cs_model *m = one_post(kind, &fx);
+    cs_model *m = one_post(kind, &fx, kind == CS_ATTACH_SLOT ? SHORT_POST : 0.0);
     cs_error err;
     cs_state *s = cs_state_create(m, &err);
     assert_non_null(s);
@@ -80,16 +86,40 @@ static void hook_lets_go_at_its_limit(void **state) {
     lets_go_at_its_limit(CS_ATTACH_HOOK, 1.5e3);
 }
 
+/* On the 7-ft post (hinged at grade) the upper cable, at 4 ft, reaches the slot's open end at acos(4 / 7)
+ * = 55.15 degrees: pulled by 10 kN it stays in 1 mrad short of it, far past theta* (14.9 degrees), and
+ * leaves 1 mrad past it. */
+static void slot_holds_until_its_open_end(void **state) {
+    (void)state;
+    fixture fx;
+    cs_model *m = one_post(CS_ATTACH_SLOT, &fx, 0.0);
+    cs_error err;
+    cs_state *s = cs_state_create(m, &err);
+    assert_non_null(s);
+    CHECK_REL(cs_attachment_slot_open(&m->posts[0], m->cables[1].z), 4.0 / 7.0, 1e-12);
+    double open = acos(4.0 / 7.0);
+    for (int side = -1; side <= 1; side += 2) {
+        cs_state_reset(m, s);
+        lean_and_pull(m, s, open + side * 1e-3, 1, 10e3);
+        lean_and_pull(m, s, open + side * 1e-3, 0, 1.0); /* the lower cable barely pulled: it stays */
+        assert_int_equal(cs_attachment_check_release(m, s, 0), side > 0);
+        assert_int_equal(s->cables[1].where[0]<0, side> 0);
+        assert_true(s->cables[0].where[0] > 0);
+    }
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
 /* The lower cable (0) pulled past its limit, the upper (1) short of its own: in a slot the upper holds
  * the lower in; once the upper goes, the lower follows in the same check. A hook lets each go alone. */
 static void slot_lets_go_from_the_top(void **state) {
     (void)state;
     for (int kind = CS_ATTACH_SLOT; kind <= CS_ATTACH_HOOK; kind++) {
         fixture fx;
-        cs_model *m = one_post((cs_attachment)kind, &fx);
+        cs_model *m = one_post((cs_attachment)kind, &fx, SHORT_POST);
         cs_error err;
         cs_state *s = cs_state_create(m, &err);
-        double th = 0.6;
+        double th = 0.85; /* past both cables' open ends on the short post (7.7 and 45.4 degrees) */
         lean_and_pull(m, s, th, 0, 40e3);
         lean_and_pull(m, s, th, 1, 1.0); /* 0.9 N: short of R */
         assert_int_equal(cs_attachment_check_release(m, s, 0), kind == CS_ATTACH_HOOK);
@@ -110,7 +140,7 @@ static void through_and_clamped_hold(void **state) {
     (void)state;
     for (int kind = CS_ATTACH_THROUGH; kind <= CS_ATTACH_CLAMPED; kind++) {
         fixture fx;
-        cs_model *m = one_post((cs_attachment)kind, &fx);
+        cs_model *m = one_post((cs_attachment)kind, &fx, 0.0);
         cs_error err;
         cs_state *s = cs_state_create(m, &err);
         lean_and_pull(m, s, 1.2, 1, 100e3);
@@ -123,6 +153,7 @@ static void through_and_clamped_hold(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(slot_lets_go_at_its_limit), cmocka_unit_test(hook_lets_go_at_its_limit),
-        cmocka_unit_test(slot_lets_go_from_the_top), cmocka_unit_test(through_and_clamped_hold)};
+        cmocka_unit_test(slot_holds_until_its_open_end), cmocka_unit_test(slot_lets_go_from_the_top),
+        cmocka_unit_test(through_and_clamped_hold)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
