@@ -42,6 +42,8 @@ typedef struct result {
     int post_failure;      /* the first post failure's event type, -1 if none */
     int released;          /* cables let go by slots and hooks (cable_release events) */
     double post_failure_t; /* its time, s */
+    char how[2][48];       /* each rope: where and when it broke, or that it held with its peak */
+    double slide[2];       /* each dead-man's plough through the soil, m (-1: rigid) */
 } result;
 
 enum { CRASH = 3, BOGIE = CS_BOGIE_TESTS, REFINE = 2, VALUES = 4, INPUTS = 6, JOINT = 32, JOINT_SEED = 2656 };
@@ -82,8 +84,16 @@ typedef struct suite {
 static const char *const crash_names[CRASH] = {"aps1", "aps3", "aps4"};
 static const char *const road_names[ROAD] = {"rs1", "rs2", "rs3", "rs4", "rs5", "rs6"};
 
-static void collect(const cs_state *s, result *r) {
+static void collect(const cs_model *m, const cs_state *s, result *r) {
     cs_state_summary(s, &r->sm);
+    for (int a = 0; a < 2; a++) {
+        cs_anchor_view v;
+        cs_state_anchor(m, s, a, &v);
+        r->slide[a] = v.rigid ? -1.0 : v.slide;
+    }
+    for (int c = 0; c < 2; c++)
+        snprintf(r->how[c], sizeof r->how[c], c < r->sm.cable_count ? "held (peak %.0f kN)" : "-",
+                 c < r->sm.cable_count ? r->sm.cables[c].peak_tension_n / 1e3 : 0.0);
     r->cable_break[0] = r->cable_break[1] = -1.0;
     r->post_failure = -1;
     r->released = 0;
@@ -94,8 +104,13 @@ static void collect(const cs_state *s, result *r) {
                                     e->type == CS_EVENT_POST_PULLOUT || e->type == CS_EVENT_POST_SHEAR))
             r->post_failure = (int)e->type, r->post_failure_t = e->t;
         if ((e->type == CS_EVENT_CABLE_BREAK || e->type == CS_EVENT_TERMINATION_BREAK) && e->element < 2 &&
-            r->cable_break[e->element] < 0.0)
+            r->cable_break[e->element] < 0.0) {
             r->cable_break[e->element] = e->t;
+            snprintf(r->how[e->element], sizeof r->how[e->element], "%.4g s %s", e->t,
+                     e->type == CS_EVENT_CABLE_BREAK ? "along the rope"
+                     : e->cable_end == 0             ? "at its start fitting"
+                                                     : "at its end fitting");
+        }
     }
     cs_energy en;
     cs_state_energy(s, &en);
@@ -108,7 +123,7 @@ static void run_job(job *j) {
     cs_state *s = j->model ? cs_state_create(j->model, &err) : NULL;
     j->r.ok = s && cs_run(j->model, s, NULL, NULL, &err) == CS_OK;
     if (j->r.ok)
-        collect(s, &j->r);
+        collect(j->model, s, &j->r);
     else if (j->model)
         fprintf(stderr, "cablesim validate: a run failed: %s\n", err.message);
     cs_state_free(s);
@@ -818,18 +833,19 @@ static void add_readings(suite *s, int k) {
 /* A row of the readings' table: outcome, deceleration, penetration, exit speed, breaks, anchors, posts. */
 static void reading_row(FILE *md, const char *name, const char *what, const result *r) {
     if (!r->ok) {
-        fprintf(md, "| %s | %s | failed | | | | | | |\n", name, what);
+        fprintf(md, "| %s | %s | failed | | | | | | | |\n", name, what);
         return;
     }
-    char exit[32] = "-", b[2][32], pen[32];
+    char exit[32] = "-", pen[32], slid[48] = "rigid";
     if (cs_outcome_through(r->sm.outcome))
         snprintf(exit, sizeof exit, "%.1f mph", r->sm.exit_speed_mps / CS_MPH);
+    if (r->slide[0] >= 0.0) snprintf(slid, sizeof slid, "%.2f, %.2f m", r->slide[0], r->slide[1]);
     const cs_summary *m = &r->sm;
-    fprintf(md, "| %s | %s | %s | %.2f g | %s | %s | %s, %s | %d + %d / %d + %d / %d + %d |\n", name, what,
-            cs_outcome_name(m->outcome), m->max_50ms_decel_g, penetration_text(m, pen, sizeof pen), exit,
-            fmt_time(r->cable_break[0], b[0], sizeof b[0]), fmt_time(r->cable_break[1], b[1], sizeof b[1]),
-            m->posts_failed_rotation_left, m->posts_failed_rotation_right, m->posts_failed_shear_left,
-            m->posts_failed_shear_right, m->posts_failed_pullout_left, m->posts_failed_pullout_right);
+    fprintf(md, "| %s | %s | %s | %.2f g | %s | %s | %s; %s | %s | %d + %d / %d + %d / %d + %d |\n", name,
+            what, cs_outcome_name(m->outcome), m->max_50ms_decel_g, penetration_text(m, pen, sizeof pen),
+            exit, r->how[0], r->how[1], slid, m->posts_failed_rotation_left, m->posts_failed_rotation_right,
+            m->posts_failed_shear_left, m->posts_failed_shear_right, m->posts_failed_pullout_left,
+            m->posts_failed_pullout_right);
 }
 
 static void write_readings(FILE *md, FILE *csv, const suite *s) {
@@ -838,8 +854,10 @@ static void write_readings(FILE *md, FILE *csv, const suite *s) {
             "Each crash test as its file reads the design (docs/assumptions.md) and under each other "
             "documented reading of a part the paper leaves open, one at a time; then the band of each "
             "response over all of them. APS3 and APS4 stay blind predictions.\n\n"
-            "| test | reading | outcome | max 50-ms decel | penetration | exit speed | ropes broke | posts "
-            "failed, left + right: rotation / shear / pullout |\n|---|---|---|---|---|---|---|---|\n");
+            "| test | reading | outcome | max 50-ms decel | penetration | exit speed | cable 1; cable 2 "
+            "(broke where "
+            "and when, or held at its peak tension) | dead-men ploughed (start, end) | posts failed, left + "
+            "right: rotation / shear / pullout |\n|---|---|---|---|---|---|---|---|---|\n");
     bands all[CRASH];
     for (int k = 0; k < CRASH; k++) {
         all[k] = bands_empty();
