@@ -105,6 +105,15 @@ static void history(double *t, double *f, double fall, double over) {
     }
 }
 
+/* How many windows the check flags in the history of a fall of `fall` of the peak over `over` s, with
+ * these events. */
+static int losses_in(double fall, double over, const cs_event *events, int n) {
+    double t[SAMPLES], f[SAMPLES];
+    history(t, f, fall, over);
+    cs_sudden_loss w[4];
+    return cs_sudden_losses(t, f, SAMPLES, STEP, events, n, w, 4);
+}
+
 static cs_event event_at(cs_event_type type, double t) {
     return (cs_event){.t = t, .type = type, .element_kind = CS_ELEMENT_CABLE, .cable_end = -1};
 }
@@ -134,36 +143,27 @@ static void a_fall_of_60_percent_in_10_ms_is_flagged(void **state) {
 /* The same fall over 30 ms: at most 20% of the peak in any 10 ms. */
 static void the_same_fall_over_30_ms_is_not(void **state) {
     (void)state;
-    double t[SAMPLES], f[SAMPLES];
-    history(t, f, 0.6, 30e-3);
-    cs_sudden_loss w[4];
-    assert_int_equal(cs_sudden_losses(t, f, SAMPLES, STEP, NULL, 0, w, 4), 0);
+    assert_int_equal(losses_in(0.6, 30e-3, NULL, 0), 0);
 }
 
 /* The 5-ms fall with a rope breaking in its window, or an end fitting or a slot letting go a step past its
  * end, or an anchor pulling out its ropes: excused. */
 static void a_fall_with_a_rope_breaking_is_not(void **state) {
     (void)state;
-    double t[SAMPLES], f[SAMPLES];
-    history(t, f, 0.6, 5e-3);
-    cs_sudden_loss w[4];
     const cs_event excusing[] = {
         event_at(CS_EVENT_CABLE_BREAK, 0.1025), event_at(CS_EVENT_TERMINATION_BREAK, 0.1005),
         event_at(CS_EVENT_CABLE_RELEASE, 0.1), event_at(CS_EVENT_ANCHOR_PULLOUT, 0.101)};
     for (int k = 0; k < 4; k++)
-        assert_int_equal(cs_sudden_losses(t, f, SAMPLES, STEP, &excusing[k], 1, w, 4), 0);
+        assert_int_equal(losses_in(0.6, 5e-3, &excusing[k], 1), 0);
     /* the windows flagged end from 104.5 to 110.5 ms: a break at 115 ms is more than a step past them */
     cs_event late = event_at(CS_EVENT_CABLE_BREAK, 0.115);
-    assert_int_equal(cs_sudden_losses(t, f, SAMPLES, STEP, &late, 1, w, 4), 1);
+    assert_int_equal(losses_in(0.6, 5e-3, &late, 1), 1);
 }
 
 /* 40% of the peak lost in 5 ms: under half of it. */
 static void a_fall_of_40_percent_is_not(void **state) {
     (void)state;
-    double t[SAMPLES], f[SAMPLES];
-    history(t, f, 0.4, 5e-3);
-    cs_sudden_loss w[4];
-    assert_int_equal(cs_sudden_losses(t, f, SAMPLES, STEP, NULL, 0, w, 4), 0);
+    assert_int_equal(losses_in(0.4, 5e-3, NULL, 0), 0);
 }
 
 /* Two falls of 60% (the force rising again between them) are two windows; a fall flagged against the
