@@ -504,7 +504,8 @@ static void out_dir_of(const sweep_opts *o, char *dir, size_t size) {
     } else {
         const char *base = strrchr(o->spec, '/');
         base = base ? base + 1 : o->spec;
-        snprintf(dir, size, "results/%.*s", (int)strcspn(base, "."), base);
+        int n = (int)strcspn(base, ".");
+        snprintf(dir, size, "results/%.*s", n ? n : 5, n ? base : "study"); /* ".x.yaml": results/study */
     }
 }
 

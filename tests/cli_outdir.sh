@@ -65,6 +65,14 @@ check "a dead run's lock is taken over" '[ $? -eq 0 ] && [ -s "$busy/summary.jso
 echo 999999999 >"$busy/.cablesim-lock"
 check "a lock file naming no live process is taken over" '"$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" >/dev/null 2>&1'
 
+# A model's name never steers where the files go: results/NAME with a NAME of '..' is refused at its
+# place, and nothing is written (tests/bad/name_*.yaml: the other refusals).
+mkdir -p "$tmp/cwd/a/b"
+out=$(cd "$tmp/cwd/a/b" && "$cs" run "$src/tests/good/base.yaml" --t-end "5 ms" --set "name=../../../victim" 2>&1)
+check "a name out of results/ is refused at its place, nothing written" '[ $? -eq 2 ] && grep -qF -- "--set name=../../../victim: not a name for the output folder results/NAME" <<<"$out" && [ -z "$(find "$tmp/cwd" -mindepth 3)" ] && [ ! -e "$tmp/victim" ]'
+out=$(cd "$tmp/cwd/a/b" && "$cs" designer "$src/tests/bad/name_path.yaml" 2>&1)
+check "designer refuses it too (results/NAME-designer)" '[ $? -eq 2 ] && [ -z "$(find "$tmp/cwd" -mindepth 3)" ] && grep -q "name_path.yaml:2:7: name: not a name for the output folder" <<<"$out"'
+
 # The other commands keep their folders by the same rule.
 out=$("$cs" sweep tests/sweep/grid.yaml -o "$user" --quiet 2>&1)
 check "sweep refuses the user's folder before any run" '[ $? -eq 1 ] && grep -q "nothing run: .*which no cablesim run wrote there" <<<"$out" && mine'

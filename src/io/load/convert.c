@@ -526,13 +526,32 @@ static const cs_node *need(cs_loader *l, const cs_node *root, const char *key, c
     return n;
 }
 
+/* Why a model's name cannot name its output folder (results/NAME, results/NAME-designer), or NULL: a
+ * name is one folder's name inside results/, shown on the terminal as it is. */
+static const char *unfit_name(const char *s) {
+    if (!s[0]) return "it is empty";
+    if (s[0] == '.') return "it begins with '.'";
+    if (strstr(s, "..")) return "it holds '..'";
+    if (strchr(s, '/')) return "it holds '/'";
+    for (const unsigned char *p = (const unsigned char *)s; *p; p++)
+        if (*p < 0x20 || *p == 0x7f) return "it holds a control character";
+    if (strlen(s) > 100) return "it is longer than 100 characters";
+    return NULL;
+}
+
 int cs_convert_model(cs_loader *l, const cs_node *root, const char *file, cs_model_input *out) {
     int before = l->error_count;
     const cs_node *name = cs_node_get(root, "name");
-    const char *base = strrchr(file, '/') ? strrchr(file, '/') + 1 : file;
+    const char *base = strrchr(file, '/') ? strrchr(file, '/') + 1 : file, *why;
     char stem[256];
     snprintf(stem, sizeof stem, "%.*s", (int)strcspn(base, "."), base);
-    out->name = cs_arena_strdup(l, name ? name->text : stem);
+    if (unfit_name(stem)) snprintf(stem, sizeof stem, "model"); /* a file name that cannot name a folder */
+    if (name && name->text && (why = unfit_name(name->text)) != NULL)
+        cs_err_node(l, name, 0,
+                    "not a name for the output folder results/NAME: %s (expected a name such as "
+                    "aps3-6ft: no '/', '..', leading '.' or control character)",
+                    why);
+    out->name = cs_arena_strdup(l, name && name->text ? name->text : stem);
     out->file = file;
     const cs_node *barrier = need(l, root, "barrier", "a barrier mapping, or barrier: {file: other.yaml}");
     const cs_node *vehicle = need(l, root, "vehicle", "a vehicle part's name, e.g. vehicle: M");

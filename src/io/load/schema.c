@@ -364,7 +364,9 @@ const cs_table cs_table_scenario = {"scenario", "The attack and how to integrate
                                     scenario_fields, N(scenario_fields)};
 
 static const cs_field model_fields[] = {
-    TEXT("name", 0, "the model's name (output folder results/NAME); default: the file name"),
+    TEXT("name", 0,
+         "the model's name, its output folder results/NAME (no '/', '..', leading '.' or control character); "
+         "default: the file name"),
     TEXT("description", 0, "what the model is"),
     SUB("parts", CS_F_MAP, 0, -1, cs_table_parts, "named parts of this file"),
     SUB("barrier", CS_F_MAP, 0, -1, cs_table_barrier, "the barrier"),
