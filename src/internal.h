@@ -125,6 +125,7 @@ struct cs_model {
     double start_yaw;
     int window_steps;    /* steps in the 50-ms average */
     double solve_budget; /* barrier solves the run may make in all (scenario.solve_budget per step) */
+    double max_steps;    /* steps the run may take (scenario.max_steps, or CS_MAX_STEPS_DEFAULT) */
     int event_capacity;
 };
 
@@ -457,6 +458,6 @@ cs_event *cs_event_add(const cs_model *model, cs_state *s, cs_event_type type, c
                        int element, double value);
 void cs_response_update(const cs_model *model, cs_state *s);
 /* End the run as "did not converge": its solves have used up the budget. */
-void cs_response_give_up(const cs_model *model, cs_state *s);
+void cs_response_give_up(const cs_model *model, cs_state *s, cs_outcome why);
 
 #endif

@@ -142,4 +142,13 @@ check "breakthrough: the $hinges post hinges counted, not listed" '[ "$hinges" -
 j="$tmp/stops/summary.json"
 check "stopped: its penetration given" 'grep -q "\"outcome\":\"stopped\"" "$j" && grep -qE "\"max_dynamic_penetration_m\":[0-9]" "$j" && grep -q "\"penetration_beyond_m\":null," "$j" && grep -qE "^  max penetration      [0-9.]+ m" "$tmp/stops.out"'
 
+# Runs that end: an output interval below the step (1e-30 s never moved the next frame on) or past 10
+# million frames is refused at its place; scenario.max_steps ends a run "step_limit" (tests/test_crash.c:
+# the engine's side).
+out=$(timeout 60 "$cs" run examples/aps3.yaml -o "$tmp/tiny" --set 'scenario.output_interval=1e-30 s' 2>&1)
+check "an output interval below the step is refused at its place" '[ $? -eq 2 ] && grep -qF "scenario.output_interval=1e-30 s: 1e-30 s is below the time step, 0.0005 s" <<<"$out" && [ ! -e "$tmp/tiny" ]'
+out=$(timeout 60 "$cs" run examples/aps3.yaml -o "$tmp/tiny" --dt "0.1 us" --set 'scenario.output_interval=0.1 us' 2>&1)
+check "past 10 million frames is refused at its place" '[ $? -eq 2 ] && grep -qF "scenario.output_interval=0.1 us: 3e+07 frames to the end time (t_end / output_interval) exceed the limit of 1e+07" <<<"$out"'
+out=$("$cs" run examples/aps3.yaml -o "$tmp/steps" --set scenario.max_steps=100 2>&1)
+check "scenario.max_steps ends the run: step_limit" '[ $? -eq 0 ] && grep -q "^aps3: the run took its 100 steps (scenario.max_steps) at t = 0.050 s" <<<"$out" && grep -q "\"outcome\":\"step_limit\"" "$tmp/steps/summary.json"'
 finish

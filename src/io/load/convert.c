@@ -508,6 +508,8 @@ static void check_barrier(cs_loader *l, const cs_node *barrier, const cs_barrier
                     b->end_anchor.x, last->x);
 }
 
+enum { CS_MAX_FRAMES = 10000000 }; /* a run's frames (t_end / output_interval) */
+
 static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_def *s,
                            const cs_barrier_def *b) {
     if (b && (s->impact_x <= b->start_anchor.x || s->impact_x >= b->end_anchor.x))
@@ -517,6 +519,18 @@ static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_de
                     s->impact_x, b->start_anchor.x, b->end_anchor.x);
     if (b) return; /* the rest was checked without the barrier */
     above(l, sc, "t_end", s->t_end, "dt", s->dt, "s");
+    const cs_node *every = at(sc, "output_interval");
+    double frames = s->output_interval > 0.0 ? s->t_end / s->output_interval : 0.0;
+    if (every && s->output_interval > 0.0 && s->output_interval < s->dt)
+        cs_err_node(l, every, 0,
+                    "%g s is below the time step, %g s: no frame can come between two steps (expected at "
+                    "least dt, or 0 for a frame every step)",
+                    s->output_interval, s->dt);
+    else if (every && frames > CS_MAX_FRAMES)
+        cs_err_node(l, every, 0,
+                    "%.3g frames to the end time (t_end / output_interval) exceed the limit of %.0g "
+                    "(expected a longer interval)",
+                    frames, (double)CS_MAX_FRAMES);
     above(l, sc, "speed", s->speed, "stop_speed", s->stop_speed, "m/s");
 }
 

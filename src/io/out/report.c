@@ -79,6 +79,12 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
                 "the run did not converge: its barrier solves used up their budget at t = %.3f s "
                 "(scenario.solve_budget); what it reached is below\n",
                 s.t_end_s);
+    else if (s.outcome == CS_STEP_LIMIT)
+        fprintf(f,
+                "the run took its %.0f steps (scenario.max_steps) at t = %.3f s, before its end time; what "
+                "it reached is below\n",
+                in->scenario.max_steps > 0.0 ? floor(in->scenario.max_steps) : CS_MAX_STEPS_DEFAULT,
+                s.t_end_s);
     else if (s.outcome == CS_REDIRECTED)
         fprintf(f, "the vehicle was redirected, exit speed %.2f m/s (%.1f mph, %.1f km/h) at %.1f deg\n",
                 s.exit_speed_mps, s.exit_speed_mps / CS_MPH, s.exit_speed_mps * 3.6, s.exit_angle_deg);

@@ -380,8 +380,9 @@ static int make_summary(summary *s, const cs_sweep_spec *spec, const double *x, 
         else
             s->failed++;
     }
-    static const cs_outcome outcomes[] = {CS_STOPPED,    CS_BREAKTHROUGH, CS_OVERRIDE,   CS_UNDERRIDE,
-                                          CS_REDIRECTED, CS_TIME_LIMIT,   CS_NO_CONTACT, CS_DID_NOT_CONVERGE};
+    static const cs_outcome outcomes[] = {CS_STOPPED,    CS_BREAKTHROUGH,     CS_OVERRIDE,
+                                          CS_UNDERRIDE,  CS_REDIRECTED,       CS_TIME_LIMIT,
+                                          CS_NO_CONTACT, CS_DID_NOT_CONVERGE, CS_STEP_LIMIT};
     static const char *const outcome_labels[] = {"stopped",
                                                  "breakthrough",
                                                  "rode over the cables",
@@ -389,7 +390,8 @@ static int make_summary(summary *s, const cs_sweep_spec *spec, const double *x, 
                                                  "redirected",
                                                  "time limit reached (still moving)",
                                                  "never touched the barrier",
-                                                 "did not converge (solve budget used up)"};
+                                                 "did not converge (solve budget used up)",
+                                                 "step limit reached (scenario.max_steps)"};
     for (int o = 0; o < 8; o++) {
         long c = 0;
         for (long i = 0; i < s->ok; i++)
