@@ -14,6 +14,7 @@
 #include "cli.h"
 #include "commands.h"
 #include "load/loader_int.h"
+#include "out/htmltext.h"
 #include "out/outfile.h"
 #include "out/report_html.h"
 
@@ -183,7 +184,7 @@ static int write_page(design *d, const char *dir, int force) {
         fprintf(stderr, "cablesim designer: nothing written: %s\n", why);
         return CS_EXIT_RUN;
     }
-    printf("designer page for %s: %s/designer.html\n", d->name, dir);
+    printf("designer page for "), cs_term_text(stdout, d->name), printf(": %s/designer.html\n", dir);
     return 0;
 #else
     (void)d, (void)dir, (void)force, (void)write_design;

@@ -10,6 +10,7 @@
 #include "commands.h"
 #include "load/schema.h"
 #include "out/figures.h"
+#include "out/htmltext.h"
 #include "out/outfile.h"
 #include "out/record.h"
 #include "out/report_html.h"
@@ -368,8 +369,8 @@ int main(int argc, char **argv) {
                 cs_loader_error_count(l) == 1 ? "" : "s");
         rc = EXIT_BAD;
     } else if (is_check) {
-        printf("%s: %s is a valid model (%d cables, %d posts)\n", o.file, in.name, in.barrier.cable_count,
-               in.barrier.post_count);
+        printf("%s: ", o.file), cs_term_text(stdout, in.name);
+        printf(" is a valid model (%d cables, %d posts)\n", in.barrier.cable_count, in.barrier.post_count);
     } else {
         rc = run(&in, model, &o, command);
     }

@@ -26,6 +26,7 @@
 
 #include "cablesim/cablesim.h"
 #include "cli.h"
+#include "out/htmltext.h"
 #include "out/outfile.h"
 #include "out/plot.h"
 #include "out/studyreport.h"
@@ -434,7 +435,7 @@ static cs_sweep_spec *read_spec(const sweep_opts *o, int rank) {
 
 static void print_errors(const cs_sweep_spec *spec) {
     for (int i = 0; i < spec->error_count; i++)
-        fprintf(stderr, "%s\n", spec->errors[i]);
+        cs_term_text(stderr, spec->errors[i]), fputc('\n', stderr);
     fprintf(stderr, "cablesim sweep: %s: %d problem%s, nothing run\n", spec->file, spec->error_count,
             spec->error_count == 1 ? "" : "s");
 }

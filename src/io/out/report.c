@@ -2,6 +2,7 @@
 #include <math.h>
 
 #include "cablesim/units.h"
+#include "out/htmltext.h"
 #include "writers.h"
 
 /* Events that are the barrier or the vehicle giving way, listed one by one; the posts' yielding (a hinge
@@ -63,7 +64,8 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
     cs_summary s;
     cs_state_summary(state, &s);
     const cs_scenario_def *sc = &in->scenario;
-    fprintf(f, "%s: ", in->name);
+    cs_term_text(f, in->name);
+    fprintf(f, ": ");
     if (s.outcome == CS_STOPPED)
         fprintf(f, "the vehicle stopped at t = %.3f s\n", s.stop_time_s);
     else if (cs_outcome_through(s.outcome))
