@@ -33,12 +33,12 @@ _cablesim() {
     esac
     local opts=""
     case $cmd in
-    run) opts="-o --dt --t-end --set --plots --report" ;;
+    run) opts="-o --force --dt --t-end --set --plots --report" ;;
     check) opts="--set" ;;
-    sweep) opts="-o --threads --runs --seed --set --t-end --dt --netcdf --quiet --help" ;;
+    sweep) opts="-o --threads --runs --seed --set --t-end --dt --netcdf --quiet --force --resume --help" ;;
     rate) opts="--standard --class --level --test --set" ;;
-    validate) opts="-o --examples --only --report-only" ;;
-    designer) opts="-o --help" ;;
+    validate) opts="-o --force --examples --only --report-only" ;;
+    designer) opts="-o --force --help" ;;
     *) return ;;
     esac
     if [[ $cur == -* ]]; then

@@ -18,7 +18,7 @@
 enum { MAX_RUNS = 12 };
 
 static const char usage[] =
-    "usage: cablesim compare RUN... [--measured FILE.csv] [-o DIR]\n"
+    "usage: cablesim compare RUN... [--measured FILE.csv] [-o DIR] [--force]\n"
     "\n"
     "Puts runs (folders written by cablesim run) side by side, and a measured time history if given:\n"
     "DIR/compare.html (one page: the table and the plots), compare.csv and compare.md (the response\n"
@@ -28,7 +28,8 @@ static const char usage[] =
     "The measured file is a CSV file whose header names each column with its unit, \"name [unit]\" or\n"
     "\"name (unit)\": the time first, then any of a deceleration (g, m/s^2), a speed (mph, km/h, m/s),\n"
     "a penetration (ft, m) and a rope tension (kip, kN); its 50-ms deceleration is found from its speed\n"
-    "(or its deceleration) as a run's is. At most 12 runs.\n";
+    "(or its deceleration) as a run's is. At most 12 runs. DIR is kept as cablesim run --help says;\n"
+    "--force writes into it beside files no manifest lists (none of them is removed).\n";
 
 static int bad(const char *fmt, const char *what) {
     fputs("cablesim compare: ", stderr);
@@ -38,9 +39,13 @@ static int bad(const char *fmt, const char *what) {
 }
 
 int cs_command_compare(int argc, char **argv) {
-    static const struct option options[] = {
-        {"measured", required_argument, NULL, 'm'}, {"help", no_argument, NULL, 'h'}, {NULL, 0, NULL, 0}};
+    static const struct option options[] = {{"measured", required_argument, NULL, 'm'},
+                                            {"out", required_argument, NULL, 'o'},
+                                            {"force", no_argument, NULL, 'f'},
+                                            {"help", no_argument, NULL, 'h'},
+                                            {NULL, 0, NULL, 0}};
     const char *measured = NULL, *dir = "results/compare";
+    int force = 0;
     optind = 2;
     opterr = 0;
     for (int c; (c = getopt_long(argc, argv, "o:h", options, NULL)) != -1;) {
@@ -52,6 +57,8 @@ int cs_command_compare(int argc, char **argv) {
             measured = optarg;
         else if (c == 'o')
             dir = optarg;
+        else if (c == 'f')
+            force = 1;
         else if (optopt == 'o' || optopt == 'm')
             return bad("%s lacks its value", optopt == 'o' ? "-o" : "--measured");
         else
@@ -79,7 +86,7 @@ int cs_command_compare(int argc, char **argv) {
     }
     cs_outdir out;
     rc = 1;
-    if (cs_out_open(&out, dir, why, sizeof why) != 0 ||
+    if (cs_out_open(&out, dir, force ? CS_OUT_FORCE : 0, why, sizeof why) != 0 ||
         cs_compare_write(&out, traces, count, measured ? count - 1 : 0, why, sizeof why) != 0 ||
         cs_out_commit(&out, why, sizeof why) != 0) {
         cs_out_abort(&out);

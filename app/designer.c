@@ -14,18 +14,20 @@
 #include "cli.h"
 #include "commands.h"
 #include "load/loader_int.h"
+#include "out/htmltext.h"
 #include "out/outfile.h"
 #include "out/report_html.h"
 
 static const char usage[] =
-    "usage: cablesim designer [FILE] [-o DIR]\n"
+    "usage: cablesim designer [FILE] [-o DIR] [--force]\n"
     "Writes DIR/designer.html (default DIR: results/<model name>-designer): one page that opens from disk,\n"
     "without a network, and runs the model of FILE (default: the APS3 example) in the browser. A form\n"
     "holds the design's main values with their units (ropes and pretension, post sections, spacing and\n"
     "footings, anchors, soil, vehicle, speed, angle and impact point); each change runs the crash again and\n"
     "updates the outcome, the response parameters, the rating, the plots and the 3D replay. A value can be\n"
     "swept over a range, and the edited model downloaded as YAML that cablesim run reproduces exactly.\n"
-    "  -o, --out DIR   the output folder\n"
+    "  -o, --out DIR   the output folder (outputs as cablesim run --help says)\n"
+    "  --force         write into DIR beside files no manifest lists (none of them is removed)\n"
     "Exit status: 0 written, 1 not written, 2 a bad model or command line.\n";
 
 #ifdef CS_HAVE_DESIGNER
@@ -162,11 +164,11 @@ static const char *default_model(cs_loader *l, char *buf, size_t size) {
     return NULL;
 }
 
-static int write_page(design *d, const char *dir) {
+static int write_page(design *d, const char *dir, int force) {
 #ifdef CS_HAVE_DESIGNER
     char why[1024], end_why[512];
     cs_outdir out;
-    if (cs_out_open(&out, dir, why, sizeof why) != 0) {
+    if (cs_out_open(&out, dir, force ? CS_OUT_FORCE : 0, why, sizeof why) != 0) {
         fprintf(stderr, "cablesim designer: nothing written: %s\n", why);
         return CS_EXIT_RUN;
     }
@@ -182,10 +184,10 @@ static int write_page(design *d, const char *dir) {
         fprintf(stderr, "cablesim designer: nothing written: %s\n", why);
         return CS_EXIT_RUN;
     }
-    printf("designer page for %s: %s/designer.html\n", d->name, dir);
+    printf("designer page for "), cs_term_text(stdout, d->name), printf(": %s/designer.html\n", dir);
     return 0;
 #else
-    (void)d, (void)dir, (void)write_design;
+    (void)d, (void)dir, (void)force, (void)write_design;
     fprintf(stderr,
             "cablesim designer: nothing written: this cablesim was built without emscripten (install it "
             "with scripts/install-deps.sh and build again)\n");
@@ -195,15 +197,21 @@ static int write_page(design *d, const char *dir) {
 
 int cs_command_designer(int argc, char **argv) {
     static const cs_cli cli = {"designer", usage};
-    static const struct option opts[] = {
-        {"out", required_argument, NULL, 'o'}, {"help", no_argument, NULL, 'h'}, {NULL, 0, NULL, 0}};
+    static const struct option opts[] = {{"out", required_argument, NULL, 'o'},
+                                         {"force", no_argument, NULL, 'f'},
+                                         {"help", no_argument, NULL, 'h'},
+                                         {NULL, 0, NULL, 0}};
     const char *dir = NULL, *file = NULL;
-    int v;
+    int v, force = 0;
     optind = 1;
     while ((v = cs_cli_next(&cli, argc, argv, "ho:", opts)) != -1) {
         if (v == 'h') return cs_cli_help(&cli);
-        if (v != 'o') return CS_EXIT_USAGE;
-        dir = optarg;
+        if (v == 'f')
+            force = 1;
+        else if (v == 'o')
+            dir = optarg;
+        else
+            return CS_EXIT_USAGE;
     }
     if (argc - 1 - optind > 1)
         return cs_cli_usage_error(&cli, "more than one model file ('%s' and '%s')", argv[1 + optind],
@@ -243,7 +251,7 @@ int cs_command_designer(int argc, char **argv) {
         d.units = unit_table(l);
         if (model >= 0) page_path(&d, model, d.model_path, sizeof d.model_path);
         if (!dir) snprintf(out_dir, sizeof out_dir, "results/%s-designer", in.name), dir = out_dir;
-        rc = d.units && d.model_path[0] ? write_page(&d, dir) : CS_EXIT_RUN;
+        rc = d.units && d.model_path[0] ? write_page(&d, dir, force) : CS_EXIT_RUN;
         if (!d.units || !d.model_path[0]) fprintf(stderr, "cablesim designer: out of memory\n");
     }
     free(d.units);

@@ -10,6 +10,7 @@
 #include "commands.h"
 #include "load/schema.h"
 #include "out/figures.h"
+#include "out/htmltext.h"
 #include "out/outfile.h"
 #include "out/record.h"
 #include "out/report_html.h"
@@ -19,7 +20,8 @@
 enum { EXIT_RUN = CS_EXIT_RUN, EXIT_BAD = CS_EXIT_USAGE };
 
 static const char usage[] =
-    "Usage: cablesim run FILE [-o DIR] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots] [--report]\n"
+    "Usage: cablesim run FILE [-o DIR] [--force] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
+    "                    [--report]\n"
     "  or:  cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]...\n"
     "  or:  cablesim sweep SPEC.yaml [-o DIR] [--threads N] ...\n"
     "  or:  cablesim sweep --resume DIR\n"
@@ -55,15 +57,18 @@ static const char usage[] =
     "Exit status: 0 done, 1 the run failed, 2 bad model or usage.\n";
 
 static const char run_usage[] =
-    "usage: cablesim run FILE [-o DIR] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots] [--report]\n"
+    "usage: cablesim run FILE [-o DIR] [--force] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
+    "                    [--report]\n"
     "Runs the model of FILE and prints a summary: the outcome, the model's hash, the response parameters,\n"
     "the ratings as run, the failure events. Writes DIR/timeseries.csv, DIR/events.csv and\n"
     "DIR/summary.json (default DIR: results/<model name>); --plots also the run's figures as\n"
     "DIR/plots/*.png and *.svg, --report DIR/report.html (one page that opens from disk: summary, failure\n"
-    "timeline, plots, 3D replay). DIR is checked before the run; the files appear together once all are\n"
-    "written, and those of an earlier run that this one does not write (plots/*.png, report.html...) are\n"
-    "removed: DIR holds one run. A failed run writes nothing.\n"
+    "timeline, plots, 3D replay). DIR is checked and locked before the run; the files appear together\n"
+    "once all are written, with DIR/.cablesim-manifest listing them, and the files of an earlier run there\n"
+    "(its manifest's) that this one does not write are removed: DIR holds one run. A DIR holding a file no\n"
+    "manifest lists is refused, naming it. A failed run writes nothing.\n"
     "  -o, --out DIR        the output folder\n"
+    "  --force              write into DIR beside files no manifest lists (none of them is removed)\n"
     "  --set PATH=VALUE     replace a value of the model: --set scenario.speed=\"35 mph\"\n"
     "  --dt T, --t-end T    the time step and the time limit: --dt \"0.2 ms\" (scenario.dt, scenario.t_end)\n"
     "  --plots, --report    the figures, the HTML report\n"
@@ -84,7 +89,7 @@ static const char schema_usage[] = "usage: cablesim schema\n"
 
 typedef struct options {
     const char *file, *out_dir;
-    int plots, report;
+    int plots, report, force;
     cs_overrides *overrides;
 } options;
 
@@ -96,12 +101,16 @@ static int bad_usage(const char *what) {
 /* Parse the command line of run or check into o, queueing --set, --dt and --t-end on the loader.
  * Returns 0, a help's 0 with o->file NULL, or EXIT_BAD. */
 static int parse(int argc, char **argv, const cs_cli *cli, int is_run, options *o, cs_loader *l) {
-    enum { SET = 1000, DT, T_END, PLOTS, REPORT };
-    static const struct option run_opts[] = {
-        {"out", required_argument, NULL, 'o'}, {"set", required_argument, NULL, SET},
-        {"dt", required_argument, NULL, DT},   {"t-end", required_argument, NULL, T_END},
-        {"plots", no_argument, NULL, PLOTS},   {"report", no_argument, NULL, REPORT},
-        {"help", no_argument, NULL, 'h'},      {NULL, 0, NULL, 0}};
+    enum { SET = 1000, DT, T_END, PLOTS, REPORT, FORCE };
+    static const struct option run_opts[] = {{"out", required_argument, NULL, 'o'},
+                                             {"set", required_argument, NULL, SET},
+                                             {"dt", required_argument, NULL, DT},
+                                             {"t-end", required_argument, NULL, T_END},
+                                             {"plots", no_argument, NULL, PLOTS},
+                                             {"report", no_argument, NULL, REPORT},
+                                             {"force", no_argument, NULL, FORCE},
+                                             {"help", no_argument, NULL, 'h'},
+                                             {NULL, 0, NULL, 0}};
     static const struct option check_opts[] = {{"set", required_argument, NULL, SET},
                                                {"dt", required_argument, NULL, DT},
                                                {"t-end", required_argument, NULL, T_END},
@@ -123,6 +132,9 @@ static int parse(int argc, char **argv, const cs_cli *cli, int is_run, options *
             break;
         case REPORT:
             o->report = 1;
+            break;
+        case FORCE:
+            o->force = 1;
             break;
         case SET:
         case DT:
@@ -212,7 +224,7 @@ static int run(const cs_model_input *in, cs_model *model, const options *o, cons
     const char *dir = o->out_dir;
     if (!dir) snprintf(path, sizeof path, "results/%s", in->name), dir = path;
     cs_outdir out;
-    if (cs_out_open(&out, dir, why, sizeof why) != 0) { /* before the run, not after it */
+    if (cs_out_open(&out, dir, o->force ? CS_OUT_FORCE : 0, why, sizeof why) != 0) { /* before the run */
         fprintf(stderr, "cablesim: nothing run: %s\n", why);
         return EXIT_RUN;
     }
@@ -345,7 +357,7 @@ int main(int argc, char **argv) {
     static cs_overrides overrides;
     static char command[8192];
     cs_cli_command_line(argc, argv, command, sizeof command); /* as typed: getopt_long reorders argv */
-    options o = {NULL, NULL, 0, 0, &overrides};
+    options o = {NULL, NULL, 0, 0, 0, &overrides};
     cs_model_input in;
     cs_model *model = NULL;
     if (!is_run && !is_check)
@@ -357,8 +369,8 @@ int main(int argc, char **argv) {
                 cs_loader_error_count(l) == 1 ? "" : "s");
         rc = EXIT_BAD;
     } else if (is_check) {
-        printf("%s: %s is a valid model (%d cables, %d posts)\n", o.file, in.name, in.barrier.cable_count,
-               in.barrier.post_count);
+        printf("%s: ", o.file), cs_term_text(stdout, in.name);
+        printf(" is a valid model (%d cables, %d posts)\n", in.barrier.cable_count, in.barrier.post_count);
     } else {
         rc = run(&in, model, &o, command);
     }

@@ -26,6 +26,7 @@
 
 #include "cablesim/cablesim.h"
 #include "cli.h"
+#include "out/htmltext.h"
 #include "out/outfile.h"
 #include "out/plot.h"
 #include "out/studyreport.h"
@@ -38,8 +39,8 @@ enum { EXIT_RUN = CS_EXIT_RUN, EXIT_BAD = CS_EXIT_USAGE };
 
 static const char sweep_usage[] =
     "usage: cablesim sweep SPEC.yaml [-o DIR] [--threads N] [--runs N] [--seed S] [--set PATH=VALUE]...\n"
-    "                      [--t-end T] [--dt T] [--netcdf] [--quiet]\n"
-    "       cablesim sweep --resume DIR [--threads N] [--quiet]\n"
+    "                      [--t-end T] [--dt T] [--netcdf] [--quiet] [--force]\n"
+    "       cablesim sweep --resume DIR [--threads N] [--quiet] [--force]\n"
     "Runs the study of SPEC (a base model, the values to vary: grids, or Monte Carlo / Latin hypercube\n"
     "samples) and writes DIR/runs.csv, DIR/summary.md and DIR/summary.json (default DIR: results/<spec\n"
     "name>). --threads: OpenMP threads per process (default: OMP_NUM_THREADS or the cores, shared among\n"
@@ -47,8 +48,10 @@ static const char sweep_usage[] =
     "the R ranks. --runs and --seed replace the spec's; --set, --t-end and --dt apply to every run.\n"
     "--netcdf (or `netcdf: true` in SPEC) also writes DIR/runs.nc: runs.csv's table as netCDF (CF-1.8).\n"
     "SPEC's `plot:` draws a response against a varied value in DIR/plots/<y>-vs-<x>.png (docs/sweep.md).\n"
-    "DIR is checked before any run; the files appear together at the end, and an earlier study's files\n"
-    "that this one does not write are removed.\n"
+    "DIR is checked and locked before any run; the files appear together at the end, listed in\n"
+    "DIR/.cablesim-manifest, and an earlier study's files (its manifest's) that this one does not write\n"
+    "are removed. A DIR holding a file no manifest lists is refused, unless --force: then the study is\n"
+    "written beside such files, and none of them is removed.\n"
     "SIGINT (Ctrl-C) or SIGTERM: the runs under way finish, no other starts, and DIR gets the runs done,\n"
     "marked partial (summary.md, summary.json \"partial\": true; exit status 130 or 143). --resume DIR\n"
     "reads them back from DIR/runs.csv, runs the others and writes the whole study; it refuses a DIR\n"
@@ -111,7 +114,7 @@ static void progress_show(progress *p, int final) {
 
 typedef struct sweep_opts {
     const char *spec, *out_dir, *resume;
-    int threads, quiet, netcdf;
+    int threads, quiet, netcdf, force;
     long runs;
     const char *seed;
     const char *sets[256];
@@ -126,14 +129,20 @@ static int sweep_bad_usage(int rank, const char *what, const char *arg) {
 
 /* The command line into o. Returns 0, -1 after --help (exit 0), or EXIT_BAD. */
 static int parse_opts(int argc, char **argv, sweep_opts *o, int rank) {
-    enum { THREADS = 1000, RUNS, SEED, SET, T_END, DT, NETCDF, QUIET, RESUME };
-    static const struct option longopts[] = {
-        {"out", required_argument, NULL, 'o'},   {"threads", required_argument, NULL, THREADS},
-        {"runs", required_argument, NULL, RUNS}, {"seed", required_argument, NULL, SEED},
-        {"set", required_argument, NULL, SET},   {"t-end", required_argument, NULL, T_END},
-        {"dt", required_argument, NULL, DT},     {"netcdf", no_argument, NULL, NETCDF},
-        {"quiet", no_argument, NULL, QUIET},     {"resume", required_argument, NULL, RESUME},
-        {"help", no_argument, NULL, 'h'},        {NULL, 0, NULL, 0}};
+    enum { THREADS = 1000, RUNS, SEED, SET, T_END, DT, NETCDF, QUIET, RESUME, FORCE };
+    static const struct option longopts[] = {{"out", required_argument, NULL, 'o'},
+                                             {"threads", required_argument, NULL, THREADS},
+                                             {"runs", required_argument, NULL, RUNS},
+                                             {"seed", required_argument, NULL, SEED},
+                                             {"set", required_argument, NULL, SET},
+                                             {"t-end", required_argument, NULL, T_END},
+                                             {"dt", required_argument, NULL, DT},
+                                             {"netcdf", no_argument, NULL, NETCDF},
+                                             {"quiet", no_argument, NULL, QUIET},
+                                             {"resume", required_argument, NULL, RESUME},
+                                             {"force", no_argument, NULL, FORCE},
+                                             {"help", no_argument, NULL, 'h'},
+                                             {NULL, 0, NULL, 0}};
     int v, study = 0; /* options that define the study, which --resume takes from DIR */
     optind = 1;
     opterr = 0;
@@ -184,6 +193,9 @@ static int parse_opts(int argc, char **argv, sweep_opts *o, int rank) {
             break;
         case QUIET:
             o->quiet = 1;
+            break;
+        case FORCE:
+            o->force = 1;
             break;
         case RESUME:
             o->resume = optarg;
@@ -312,15 +324,12 @@ static int read_resume(const char *dir, sweep_opts *o, resumed *r, char *why, si
 
 /* runs.csv, summary.md, summary.json, then the spec's plots (files 3 on), the study's own figures and
  * report.html, and runs.nc (not for a partial sweep), begun on out (opened before the runs) and renamed
- * together; nothing is left if one fails, and an earlier study's files that this one does not write are
- * removed. */
+ * together; nothing is left if one fails, and an earlier study's files (its manifest's) that this one
+ * does not write are removed. */
 static int write_all(cs_outdir *out, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
                      long n, int partial) {
-    static const char *const owned[] = {"runs.csv",    "summary.md",  "summary.json", "runs.nc",
-                                        "report.html", "plots/*.png", "plots/*.svg",  "plots/*.pdf"};
     char why[512] = "";
     int rc = 0;
-    cs_out_own(out, owned, (int)(sizeof owned / sizeof owned[0]));
     static const char *const names[] = {"runs.csv", "summary.md", "summary.json"};
     if (rc == 0) rc = cs_out_subdir(out, "plots", why, sizeof why);
     int study = 3 + spec->plot_count; /* then the study's figures, then its page */
@@ -426,7 +435,7 @@ static cs_sweep_spec *read_spec(const sweep_opts *o, int rank) {
 
 static void print_errors(const cs_sweep_spec *spec) {
     for (int i = 0; i < spec->error_count; i++)
-        fprintf(stderr, "%s\n", spec->errors[i]);
+        cs_term_text(stderr, spec->errors[i]), fputc('\n', stderr);
     fprintf(stderr, "cablesim sweep: %s: %d problem%s, nothing run\n", spec->file, spec->error_count,
             spec->error_count == 1 ? "" : "s");
 }
@@ -496,7 +505,8 @@ static void out_dir_of(const sweep_opts *o, char *dir, size_t size) {
     } else {
         const char *base = strrchr(o->spec, '/');
         base = base ? base + 1 : o->spec;
-        snprintf(dir, size, "results/%.*s", (int)strcspn(base, "."), base);
+        int n = (int)strcspn(base, ".");
+        snprintf(dir, size, "results/%.*s", n ? n : 5, n ? base : "study"); /* ".x.yaml": results/study */
     }
 }
 
@@ -620,7 +630,7 @@ int cs_sweep_command(int argc, char **argv) {
             rc = -1;
         } else if (o.resume && (done = read_done(dir, spec, &was, x, all, n)) < 0) {
             rc = EXIT_BAD;
-        } else if (cs_out_open(&out, dir, why, sizeof why) != 0) {
+        } else if (cs_out_open(&out, dir, o.force ? CS_OUT_FORCE : 0, why, sizeof why) != 0) {
             fprintf(stderr, "cablesim sweep: nothing run: %s\n", why);
             rc = EXIT_RUN;
         } else {

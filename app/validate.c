@@ -1056,13 +1056,14 @@ static suite *suite_create(void) {
 }
 
 static const char validate_usage[] =
-    "usage: cablesim validate [-o DIR] [--examples DIR] [--only PARTS] [--report-only]\n"
+    "usage: cablesim validate [-o DIR] [--force] [--examples DIR] [--only PARTS] [--report-only]\n"
     "Runs the validation suite and writes DIR/validation.md and DIR/validation.csv (default DIR:\n"
     "results/validation): the crash tests beside their measurements (APS1) or as blind predictions (APS3,\n"
     "APS4), each under every documented reading of its design, the roadside predictions, the bogie tests of\n"
-    "posts in soil, the closed forms, time-step convergence and sensitivity. DIR is checked before anything\n"
-    "runs; the two files appear together at the end.\n"
+    "posts in soil, the closed forms, time-step convergence and sensitivity. DIR is checked and locked\n"
+    "before anything runs; the two files appear together at the end (outputs as cablesim run --help says).\n"
     "  -o, --out DIR        the output folder\n"
+    "  --force              write into DIR beside files no manifest lists (none of them is removed)\n"
     "  --examples DIR       where the crash tests' model files are (default: examples)\n"
     "  --only PARTS         some of crash,readings,roadside,bogie,verification,convergence,sensitivity\n"
     "  --report-only        exit 0 even when APS1's or the bogie tests' targets are missed\n"
@@ -1071,12 +1072,15 @@ static const char validate_usage[] =
 
 int cs_command_validate(int argc, char **argv) {
     static const cs_cli cli = {"validate", validate_usage};
-    static const struct option longopts[] = {
-        {"out", required_argument, NULL, 'o'},  {"examples", required_argument, NULL, 'e'},
-        {"only", required_argument, NULL, 'n'}, {"report-only", no_argument, NULL, 'r'},
-        {"help", no_argument, NULL, 'h'},       {NULL, 0, NULL, 0}};
+    static const struct option longopts[] = {{"out", required_argument, NULL, 'o'},
+                                             {"examples", required_argument, NULL, 'e'},
+                                             {"only", required_argument, NULL, 'n'},
+                                             {"report-only", no_argument, NULL, 'r'},
+                                             {"force", no_argument, NULL, 'f'},
+                                             {"help", no_argument, NULL, 'h'},
+                                             {NULL, 0, NULL, 0}};
     const char *dir = "results/validation", *examples = NULL, *only = NULL;
-    int report_only = 0, v;
+    int report_only = 0, force = 0, v;
     optind = 1;
     while ((v = cs_cli_next(&cli, argc, argv, "ho:", longopts)) != -1) {
         if (v == 'h') return cs_cli_help(&cli);
@@ -1088,6 +1092,8 @@ int cs_command_validate(int argc, char **argv) {
             only = optarg;
         else if (v == 'r')
             report_only = 1;
+        else if (v == 'f')
+            force = 1;
         else
             return CS_EXIT_USAGE;
     }
@@ -1110,7 +1116,7 @@ int cs_command_validate(int argc, char **argv) {
     if (!s) return 1;
     char why[1200];
     cs_outdir out;
-    if (cs_out_open(&out, dir, why, sizeof why) != 0) { /* before anything runs */
+    if (cs_out_open(&out, dir, force ? CS_OUT_FORCE : 0, why, sizeof why) != 0) { /* before anything runs */
         fprintf(stderr, "cablesim validate: nothing run: %s\n", why);
         suite_free(s);
         return 1;

@@ -128,6 +128,7 @@ struct cs_model {
     int window_steps;    /* steps in the 50-ms average */
     int loss_steps;      /* samples of the sudden-loss check's ring: every step within its window */
     double solve_budget; /* barrier solves the run may make in all (scenario.solve_budget per step) */
+    double max_steps;    /* steps the run may take (scenario.max_steps, or CS_MAX_STEPS_DEFAULT) */
     int event_capacity;
 };
 
@@ -501,6 +502,6 @@ void cs_loss_scan_feed(cs_loss_scan *scan, double t, double force, const cs_even
 /* The windows flagged, kept ones in found[0 .. kept), the rest counted in missed: kept + missed. */
 int cs_loss_scan_finish(cs_loss_scan *scan, const cs_event *events, int event_count);
 /* End the run as "did not converge": its solves have used up the budget. */
-void cs_response_give_up(const cs_model *model, cs_state *s);
+void cs_response_give_up(const cs_model *model, cs_state *s, cs_outcome why);
 
 #endif

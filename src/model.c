@@ -263,6 +263,9 @@ static int check_scenario(const cs_scenario_def *s, cs_error *err) {
     if (!(s->solve_budget >= 0.0 && s->solve_budget <= 1e6))
         return fail(err, "scenario: solve budget %.4g must be between 0 (the default) and 1e6 a step",
                     s->solve_budget);
+    if (!(s->max_steps >= 0.0 && s->max_steps <= 1e9))
+        return fail(err, "scenario: max steps %.4g must be between 0 (the default, 1e7) and 1e9",
+                    s->max_steps);
     if (s->solver_max_sweeps < 1 || s->solver_max_sweeps > 100000)
         return fail(err, "scenario: solver sweeps must be in [1, 100000]");
     if (!non_negative(s->stop_speed)) return fail(err, "scenario: stop speed must be >= 0");
@@ -454,6 +457,7 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
            vehicle->cg_height);
     m->solve_budget = (scenario->solve_budget > 0.0 ? scenario->solve_budget : CS_SOLVE_BUDGET) *
                       ceil(scenario->t_end / scenario->dt);
+    m->max_steps = scenario->max_steps > 0.0 ? floor(scenario->max_steps) : CS_MAX_STEPS_DEFAULT;
     m->window_steps = (int)lround(0.05 / scenario->dt);
     if (m->window_steps < 1) m->window_steps = 1;
     /* every step within the window of the newest: floor(W / dt) steps back, and the newest */

@@ -211,8 +211,8 @@ static cs_outcome through_how(const cs_model *model, const cs_state *s) {
     return over + under == 0 ? CS_BREAKTHROUGH : over >= under ? CS_OVERRIDE : CS_UNDERRIDE;
 }
 
-void cs_response_give_up(const cs_model *model, cs_state *s) {
-    end_run(model, s, CS_DID_NOT_CONVERGE, 0.0);
+void cs_response_give_up(const cs_model *model, cs_state *s, cs_outcome why) {
+    end_run(model, s, why, 0.0);
     s->summary.outcome = s->outcome;
 }
 

@@ -154,6 +154,8 @@ const char *cs_outcome_name(cs_outcome o) {
         return "no_contact";
     case CS_DID_NOT_CONVERGE:
         return "did_not_converge";
+    case CS_STEP_LIMIT:
+        return "step_limit";
     }
     return "unknown";
 }

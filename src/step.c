@@ -422,23 +422,28 @@ cs_status cs_step(const cs_model *model, cs_state *s, cs_error *err) {
     cs_energy_update(model, s);   /* 7. the ledger */
     cs_response_update(model, s); /* 8. response parameters, end of the run */
     if (s->outcome == CS_RUNNING && (double)s->work->count.solves > model->solve_budget)
-        cs_response_give_up(model, s); /* bounded effort: a run that cannot follow its path ends */
+        cs_response_give_up(model, s, CS_DID_NOT_CONVERGE); /* bounded effort: a run that cannot follow */
+    if (s->outcome == CS_RUNNING && (double)s->step >= model->max_steps)
+        cs_response_give_up(model, s, CS_STEP_LIMIT); /* and a bounded number of steps */
     return check_numbers(model, s, &before, err);
 }
 
+/* Frames at t0 + k interval, k counted as an integer (t0 + k interval always moves on, where a sum of
+ * intervals below the rounding of t would not); an interval below the step is a frame every step. */
 cs_status cs_run(const cs_model *model, cs_state *s, cs_output_fn on_output, void *user, cs_error *err) {
-    double interval = model->scenario.output_interval, next = s->t + interval;
+    double dt = model->scenario.dt, interval = model->scenario.output_interval, t0 = s->t;
+    if (interval < dt) interval = 0.0;
+    double k = 1.0; /* the next frame's number */
     if (on_output) on_output(model, s, user);
     int last_out = 1;
     while (s->outcome == CS_RUNNING) {
         cs_status st = cs_step(model, s, err);
         if (st != CS_OK) return st;
         last_out = 0;
-        if (on_output && (interval <= 0.0 || s->t >= next - 1e-9 * model->scenario.dt)) {
+        if (on_output && (interval <= 0.0 || s->t >= t0 + k * interval - 1e-9 * dt)) {
             on_output(model, s, user);
             last_out = 1;
-            while (next <= s->t + 1e-9 * model->scenario.dt)
-                next += interval > 0.0 ? interval : model->scenario.dt;
+            if (interval > 0.0) k = floor((s->t - t0 + 1e-9 * dt) / interval) + 1.0;
         }
     }
     if (on_output && !last_out) on_output(model, s, user);

@@ -98,23 +98,24 @@ check "the twice-run passed a rope or anchor failure" \
 check "a bad model writes nothing" '[ $? -eq 2 ] && [ ! -e "$tmp/never" ]'
 
 # One folder, one run: a run without --plots and --report into the folder of a run with them leaves no
-# figures and no report beside its files (the files of names cablesim does not write stay), nor a
-# temporary a killed run left.
+# figures and no report beside its files (its manifest names them), nor a temporary a killed run left;
+# with --force, the files cablesim did not write stay (tests/cli_outdir.sh: the rest of the rule).
 dir="$tmp/one"
 "$cs" run examples/aps3.yaml -o "$dir" --t-end "20 ms" --plots --report >/dev/null 2>&1
 check "a run with --plots and --report writes them" '[ -s "$dir/plots/speed.png" ] && [ -s "$dir/plots/speed.svg" ] && [ -s "$dir/report.html" ]'
-echo notes >"$dir/notes.txt"
-echo mine >"$dir/plots/mine.txt"
-echo partial >"$dir/events.csv.tmp"
+echo partial >"$dir/.cablesim-tmp.events.csv.a1B2c3"
 "$cs" run examples/aps3.yaml -o "$dir" --t-end "10 ms" >"$tmp/one.out" 2>&1
 check "the rerun exits 0" '[ $? -eq 0 ] || { cat "$tmp/one.out"; false; }'
-check "the rerun left no figures and no report" '[ -z "$(ls "$dir/plots" | grep -E "\.(png|svg)$")" ] && [ ! -e "$dir/report.html" ]'
-check "the rerun left the files cablesim does not write" '[ "$(cat "$dir/notes.txt")" = notes ] && [ "$(cat "$dir/plots/mine.txt")" = mine ]'
-check "the rerun removed a stale temporary" '[ ! -e "$dir/events.csv.tmp" ]'
-check "the folder holds the rerun's outputs" 'grep -qF "\"overrides\":[\"--t-end 10 ms\"]" "$dir/summary.json" && [ "$(ls "$dir" | tr "\n" " ")" = "events.csv notes.txt plots summary.json timeseries.csv " ]'
-rm "$dir/plots/mine.txt"
-"$cs" run examples/aps3.yaml -o "$dir" --t-end "10 ms" >/dev/null 2>&1
-check "an emptied plots/ goes too" '[ ! -e "$dir/plots" ]'
+check "the rerun left no figures and no report" '[ ! -e "$dir/plots" ] && [ ! -e "$dir/report.html" ]'
+check "the rerun removed a stale temporary" '[ ! -e "$dir/.cablesim-tmp.events.csv.a1B2c3" ]'
+check "the folder holds the rerun's outputs" 'grep -qF "\"overrides\":[\"--t-end 10 ms\"]" "$dir/summary.json" && [ "$(ls "$dir" | tr "\n" " ")" = "events.csv summary.json timeseries.csv " ]'
+"$cs" run examples/aps3.yaml -o "$dir" --t-end "20 ms" --plots --report >/dev/null 2>&1
+echo notes >"$dir/notes.txt"
+echo mine >"$dir/plots/mine.txt"
+"$cs" run examples/aps3.yaml -o "$dir" --t-end "10 ms" --force >"$tmp/one.out" 2>&1
+check "the forced rerun exits 0" '[ $? -eq 0 ] || { cat "$tmp/one.out"; false; }'
+check "the forced rerun left no figures and no report" '[ -z "$(ls "$dir/plots" | grep -E "\.(png|svg)$")" ] && [ ! -e "$dir/report.html" ]'
+check "the forced rerun left the files cablesim did not write" '[ "$(cat "$dir/notes.txt")" = notes ] && [ "$(cat "$dir/plots/mine.txt")" = mine ]'
 
 # Where a result comes from: summary.json's first line holds the version, the command line (shell-quoted),
 # the overrides as given and the model's hash, which the terminal summary gives too; the same numbers give
@@ -147,4 +148,13 @@ check "breakthrough: the $hinges post hinges counted, not listed" '[ "$hinges" -
 j="$tmp/stops/summary.json"
 check "stopped: its penetration given" 'grep -q "\"outcome\":\"stopped\"" "$j" && grep -qE "\"max_dynamic_penetration_m\":[0-9]" "$j" && grep -q "\"penetration_beyond_m\":null," "$j" && grep -qE "^  max penetration      [0-9.]+ m" "$tmp/stops.out"'
 
+# Runs that end: an output interval below the step (1e-30 s never moved the next frame on) or past 10
+# million frames is refused at its place; scenario.max_steps ends a run "step_limit" (tests/test_crash.c:
+# the engine's side).
+out=$(timeout 60 "$cs" run examples/aps3.yaml -o "$tmp/tiny" --set 'scenario.output_interval=1e-30 s' 2>&1)
+check "an output interval below the step is refused at its place" '[ $? -eq 2 ] && grep -qF "scenario.output_interval=1e-30 s: 1e-30 s is below the time step, 0.0005 s" <<<"$out" && [ ! -e "$tmp/tiny" ]'
+out=$(timeout 60 "$cs" run examples/aps3.yaml -o "$tmp/tiny" --dt "0.1 us" --set 'scenario.output_interval=0.1 us' 2>&1)
+check "past 10 million frames is refused at its place" '[ $? -eq 2 ] && grep -qF "scenario.output_interval=0.1 us: 3e+07 frames to the end time (t_end / output_interval) exceed the limit of 1e+07" <<<"$out"'
+out=$("$cs" run examples/aps3.yaml -o "$tmp/steps" --set scenario.max_steps=100 2>&1)
+check "scenario.max_steps ends the run: step_limit" '[ $? -eq 0 ] && grep -q "^aps3: the run took its 100 steps (scenario.max_steps) at t = 0.050 s" <<<"$out" && grep -q "\"outcome\":\"step_limit\"" "$tmp/steps/summary.json"'
 finish

@@ -97,9 +97,9 @@ printf 'plot:\n  x: scenario.impact_x\n  y: max_cable_tension\n  format: pdf\n' 
 check "plot: a Monte Carlo's plot exits 0" '[ $? -eq 0 ] || { cat "$tmp/mc-plot.out"; false; }'
 check "plot: a Monte Carlo's runs as points, in a PDF" '[ "$(head -c 5 "$tmp/mc-plot/plots/max_cable_tension-vs-impact_x.pdf")" = "%PDF-" ] && grep -qF "max_cable_tension against scenario.impact_x, each run a point: 6 of 6 runs shown" "$tmp/mc-plot/summary.md"'
 check "plot: the runs are the same with a plot" 'cmp "$tmp/mc-plot/runs.csv" "$tmp/mc-1/runs.csv"'
-mkdir -p "$tmp/plot-fail/plots/max_barrier_deflection-vs-spacing.png.tmp"
+mkdir -p "$tmp/plot-fail/plots/max_barrier_deflection-vs-spacing.png"
 out=$("$cs" sweep tests/sweep/plot.yaml -o "$tmp/plot-fail" --quiet 2>&1)
-check "a plot that cannot be written: status 1, why, nothing written" '[ $? -eq 1 ] && grep -q "nothing written: .*/plots/max_barrier_deflection-vs-spacing.png.tmp: Is a directory" <<<"$out" && [ "$(ls -A "$tmp/plot-fail")" = plots ] && [ "$(ls -A "$tmp/plot-fail/plots")" = max_barrier_deflection-vs-spacing.png.tmp ]'
+check "a plot that cannot be written: status 1, why, nothing written" '[ $? -eq 1 ] && grep -q "nothing written: .*/plots/max_barrier_deflection-vs-spacing.png: Is a directory" <<<"$out" && [ "$(ls -A "$tmp/plot-fail")" = plots ] && [ "$(ls -A "$tmp/plot-fail/plots")" = max_barrier_deflection-vs-spacing.png ]'
 
 # runs.nc: one variable of it, a value a line, at full precision
 nc_column() { ncdump -p 9,17 -v "$2" "$1" | sed -n "/^ $2 = /,/;/p" | sed "s/^ $2 = //; s/;//" | tr ',' '\n' | tr -d ' ' | grep -v '^$'; }
@@ -118,9 +118,9 @@ sed "s|^model: .*|model: $PWD/examples/aps3.yaml|; s|^seed: 7|&\nnetcdf: true|" 
 "$cs" sweep "$tmp/lhs-nc.yaml" -o "$tmp/nc-spec" --quiet >/dev/null 2>&1
 check "netcdf: true in the spec writes runs.nc, the same runs" '[ "$(nc_column "$tmp/nc-spec/runs.nc" scenario_speed | tr "\n" " ")" = "$(nc_column "$nc" scenario_speed | tr "\n" " ")" ]'
 check "no runs.nc unless asked" '[ ! -e "$tmp/lhs-1/runs.nc" ]'
-mkdir -p "$tmp/nc-fail/runs.nc.tmp"
+mkdir -p "$tmp/nc-fail/runs.nc"
 out=$("$cs" sweep tests/sweep/lhs.yaml -o "$tmp/nc-fail" --netcdf --quiet 2>&1)
-check "a runs.nc that cannot be written: status 1, why, nothing written" '[ $? -eq 1 ] && grep -q "nothing written: .*/runs.nc: creating the file: Is a directory" <<<"$out" && [ "$(ls -A "$tmp/nc-fail")" = runs.nc.tmp ]'
+check "a runs.nc that cannot be written: status 1, why, nothing written" '[ $? -eq 1 ] && grep -q "nothing written: .*/runs.nc: Is a directory" <<<"$out" && [ "$(ls -A "$tmp/nc-fail")" = runs.nc ]'
 
 # --runs, --seed and --t-end from the command line; a different seed gives other inputs
 "$cs" sweep tests/sweep/mc.yaml -o "$tmp/mc-seed" --runs 3 --seed 99 --t-end "5 ms" --quiet >/dev/null 2>&1

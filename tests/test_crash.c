@@ -1,7 +1,8 @@
 /* A full APS3-like crash (tests/fixture.h): the energy ledger balances, every response parameter is
  * finite, two runs hash to the same final state (determinism), and the run is converged in time. And
- * a 300-post barrier whose solves converge; a run past its solve budget ends did_not_converge; a state
- * gone wrong is reported as unstable and frozen. */
+ * a 300-post barrier whose solves converge; a run past its solve budget ends did_not_converge, one past
+ * its max_steps step_limit; an output interval far below the step's rounding still ends, a frame a step;
+ * a state gone wrong is reported as unstable and frozen. */
 #include "check.h"
 #include "fixture.h"
 #include "internal.h"
@@ -151,6 +152,41 @@ static void a_spent_solve_budget_ends_the_run(void **state) {
                 isfinite(sm.energy_balance_error));
 }
 
+static void max_steps_ends_the_run(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    fx.scenario.max_steps = 100;
+    cs_summary sm;
+    run_fixture(&fx, &sm);
+    assert_int_equal(sm.outcome, CS_STEP_LIMIT);
+    assert_true(fabs(sm.t_end_s - 100 * fx.scenario.dt) < 1e-12);
+    assert_string_equal(cs_outcome_name(CS_STEP_LIMIT), "step_limit");
+}
+
+static void count_frame(const cs_model *m, const cs_state *s, void *user) {
+    (void)m, (void)s;
+    ++*(long *)user;
+}
+
+/* scenario.output_interval = 1e-30 s: `next += interval` stood still at t = 0.5 ms and the run never
+ * ended; frames counted as integers, an interval below the step is a frame every step (and the start). */
+static void a_tiny_output_interval_still_ends(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    fx.scenario.output_interval = 1e-30;
+    fx.scenario.t_end = 50 * fx.scenario.dt;
+    cs_model *m = model_of(&fx);
+    cs_error err;
+    cs_state *s = cs_state_create(m, &err);
+    long frames = 0;
+    assert_int_equal(cs_run(m, s, count_frame, &frames, &err), CS_OK);
+    assert_int_equal(frames, 51);
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
 /* The step's guards (step.c check_numbers): APS3 run 100 steps (0.05 s, the truck on the ropes), then
  * one number of the state spoiled. A vehicle's speed made NaN: the next step reports "the vehicle went
  * unstable" (CS_ERR_UNSTABLE), and the state is frozen: a further step leaves its time where it was. 10%
@@ -200,6 +236,8 @@ int main(void) {
                                        cmocka_unit_test(refining_the_time_step_changes_little),
                                        cmocka_unit_test(long_barrier_solves_converge),
                                        cmocka_unit_test(a_spent_solve_budget_ends_the_run),
+                                       cmocka_unit_test(max_steps_ends_the_run),
+                                       cmocka_unit_test(a_tiny_output_interval_still_ends),
                                        cmocka_unit_test(a_state_gone_wrong_is_reported_and_frozen)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

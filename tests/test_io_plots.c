@@ -602,7 +602,7 @@ static void test_figures_through_outdir(void **state) {
     synthetic *s = synthetic_new(FRAMES);
     cs_outdir out;
     char why[512] = "";
-    assert_int_equal(cs_out_open(&out, s->dir.path, why, sizeof why), 0);
+    assert_int_equal(cs_out_open(&out, s->dir.path, 0, why, sizeof why), 0);
     static const cs_plot_format formats[] = {CS_PLOT_PNG, CS_PLOT_SVG};
     if (cs_figures_write(&out, "plots", formats, 2, &s->d, why, sizeof why) != 0) fail_msg("%s", why);
     char names[2 * CS_FIG_COUNT][64], path[256];

@@ -256,7 +256,12 @@ typedef struct cs_scenario_def {
                                 it the run ends "did not converge" with what it has */
     double stop_speed;       /**< forward speed below which the vehicle counts as stopped, m/s */
     double gravity;          /**< m/s^2 */
+    double max_steps; /**< steps a run may take (0: CS_MAX_STEPS_DEFAULT, 10 million); past them the run
+                         ends "step_limit" */
 } cs_scenario_def;
+
+/** The steps a run may take when scenario.max_steps is 0. */
+#define CS_MAX_STEPS_DEFAULT 1.0e7
 
 /** A rope with the paper's law (Fig. 3) and no size: area, modulus and strength are design data. */
 CS_API cs_rope_def cs_default_rope_def(void);

@@ -78,6 +78,8 @@ enum cs_output_flags {
 /** Write a run's outputs into a folder, as `cablesim run -o DIR` does: timeseries.csv, events.csv,
  * summary.json and, with CS_OUTPUT_PLOTS, the plots. The folder (and its parents) are created; every file
  * is written beside its final name and renamed once all are complete, so a failure leaves nothing new.
+ * The folder keeps the rule of `cablesim run` without --force: a folder holding a file that no run's
+ * DIR/.cablesim-manifest lists is refused, and only the files of the earlier manifest are removed.
  * @param dir the folder
  * @param in the loaded model
  * @param model the model that ran

@@ -70,15 +70,16 @@ CS_API cs_status cs_step(const cs_model *model, cs_state *state, cs_error *err);
 
 /** Why a run ended. */
 typedef enum cs_outcome {
-    CS_RUNNING = 0,     /**< it has not ended */
-    CS_STOPPED,         /**< the vehicle's forward speed fell to the stop speed */
-    CS_BREAKTHROUGH,    /**< the vehicle is past the barrier line with no cable holding it */
-    CS_TIME_LIMIT,      /**< the run reached scenario.t_end */
-    CS_REDIRECTED,      /**< the vehicle left the barrier on the traffic side, moving away from it */
-    CS_OVERRIDE,        /**< it rode over every cable it met (none broke) and went past the barrier line */
-    CS_UNDERRIDE,       /**< it ran under every cable it met (none broke) and went past the barrier line */
-    CS_NO_CONTACT,      /**< it never touched the barrier before the time limit */
-    CS_DID_NOT_CONVERGE /**< the barrier's solves took more than the run's budget (scenario.solve_budget) */
+    CS_RUNNING = 0,      /**< it has not ended */
+    CS_STOPPED,          /**< the vehicle's forward speed fell to the stop speed */
+    CS_BREAKTHROUGH,     /**< the vehicle is past the barrier line with no cable holding it */
+    CS_TIME_LIMIT,       /**< the run reached scenario.t_end */
+    CS_REDIRECTED,       /**< the vehicle left the barrier on the traffic side, moving away from it */
+    CS_OVERRIDE,         /**< it rode over every cable it met (none broke) and went past the barrier line */
+    CS_UNDERRIDE,        /**< it ran under every cable it met (none broke) and went past the barrier line */
+    CS_NO_CONTACT,       /**< it never touched the barrier before the time limit */
+    CS_DID_NOT_CONVERGE, /**< the barrier's solves took more than the run's budget (scenario.solve_budget) */
+    CS_STEP_LIMIT        /**< the run took scenario.max_steps steps */
 } cs_outcome;
 
 /** Whether a run that ended so has an exit speed and angle (it got through or was redirected). */

@@ -22,6 +22,7 @@ const OUTCOME = {
   underride: { word: 'Ran under', cls: 'bad' },
   no_contact: { word: 'Never touched', cls: 'neutral' },
   did_not_converge: { word: 'Did not converge', cls: 'warn' },
+  step_limit: { word: 'Step limit reached', cls: 'warn' },
   time_limit: { word: 'Time limit reached', cls: 'neutral' },
   running: { word: 'Did not finish', cls: 'neutral' },
 };
@@ -68,6 +69,7 @@ export function story(data) {
       `The barrier redirected it: it left on the traffic side at t = ${seconds(s.t_end_s)} at ${pair('speed', s.exit_speed_mps)}, ` +
         `${fmt(s.exit_angle_deg, 1)}° away from the barrier line, after deflecting the cables ${pair('length', s.max_barrier_deflection_m)} (working width ${pair('length', s.working_width_m)}).`,
     );
+  else if (s.outcome === 'step_limit') parts.push(`The simulation took its scenario.max_steps steps at t = ${seconds(s.t_end_s)}, before its end time, with the vehicle still moving, ${penetrationText(s)} past the cable line.`);
   else if (s.outcome === 'did_not_converge') parts.push(`The simulation did not converge: its barrier solves used up their budget at t = ${seconds(s.t_end_s)}, with the vehicle still moving, ${penetrationText(s)} past the cable line.`);
   else parts.push(`The simulation ended at its time limit, t = ${seconds(s.t_end_s)}, with the vehicle still moving, ${penetrationText(s)} past the cable line.`);
   parts.push(

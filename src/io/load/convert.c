@@ -518,6 +518,8 @@ static void check_barrier(cs_loader *l, const cs_node *barrier, const cs_barrier
                     b->end_anchor.x, last->x);
 }
 
+enum { CS_MAX_FRAMES = 10000000 }; /* a run's frames (t_end / output_interval) */
+
 static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_def *s,
                            const cs_barrier_def *b) {
     if (b && (s->impact_x <= b->start_anchor.x || s->impact_x >= b->end_anchor.x))
@@ -527,6 +529,18 @@ static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_de
                     s->impact_x, b->start_anchor.x, b->end_anchor.x);
     if (b) return; /* the rest was checked without the barrier */
     above(l, sc, "t_end", s->t_end, "dt", s->dt, "s");
+    const cs_node *every = at(sc, "output_interval");
+    double frames = s->output_interval > 0.0 ? s->t_end / s->output_interval : 0.0;
+    if (every && s->output_interval > 0.0 && s->output_interval < s->dt)
+        cs_err_node(l, every, 0,
+                    "%g s is below the time step, %g s: no frame can come between two steps (expected at "
+                    "least dt, or 0 for a frame every step)",
+                    s->output_interval, s->dt);
+    else if (every && frames > CS_MAX_FRAMES)
+        cs_err_node(l, every, 0,
+                    "%.3g frames to the end time (t_end / output_interval) exceed the limit of %.0g "
+                    "(expected a longer interval)",
+                    frames, (double)CS_MAX_FRAMES);
     above(l, sc, "speed", s->speed, "stop_speed", s->stop_speed, "m/s");
 }
 
@@ -536,13 +550,32 @@ static const cs_node *need(cs_loader *l, const cs_node *root, const char *key, c
     return n;
 }
 
+/* Why a model's name cannot name its output folder (results/NAME, results/NAME-designer), or NULL: a
+ * name is one folder's name inside results/, shown on the terminal as it is. */
+static const char *unfit_name(const char *s) {
+    if (!s[0]) return "it is empty";
+    if (s[0] == '.') return "it begins with '.'";
+    if (strstr(s, "..")) return "it holds '..'";
+    if (strchr(s, '/')) return "it holds '/'";
+    for (const unsigned char *p = (const unsigned char *)s; *p; p++)
+        if (*p < 0x20 || *p == 0x7f) return "it holds a control character";
+    if (strlen(s) > 100) return "it is longer than 100 characters";
+    return NULL;
+}
+
 int cs_convert_model(cs_loader *l, const cs_node *root, const char *file, cs_model_input *out) {
     int before = l->error_count;
     const cs_node *name = cs_node_get(root, "name");
-    const char *base = strrchr(file, '/') ? strrchr(file, '/') + 1 : file;
+    const char *base = strrchr(file, '/') ? strrchr(file, '/') + 1 : file, *why;
     char stem[256];
     snprintf(stem, sizeof stem, "%.*s", (int)strcspn(base, "."), base);
-    out->name = cs_arena_strdup(l, name ? name->text : stem);
+    if (unfit_name(stem)) snprintf(stem, sizeof stem, "model"); /* a file name that cannot name a folder */
+    if (name && name->text && (why = unfit_name(name->text)) != NULL)
+        cs_err_node(l, name, 0,
+                    "not a name for the output folder results/NAME: %s (expected a name such as "
+                    "aps3-6ft: no '/', '..', leading '.' or control character)",
+                    why);
+    out->name = cs_arena_strdup(l, name && name->text ? name->text : stem);
     out->file = file;
     const cs_node *barrier = need(l, root, "barrier", "a barrier mapping, or barrier: {file: other.yaml}");
     const cs_node *vehicle = need(l, root, "vehicle", "a vehicle part's name, e.g. vehicle: M");

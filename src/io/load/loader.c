@@ -9,6 +9,7 @@
 
 #include "grow.h"
 #include "loader_int.h"
+#include "out/htmltext.h"
 
 enum { MAX_DEPTH = 16 };
 
@@ -229,7 +230,7 @@ const char *cs_loader_error(cs_loader *l, int i) {
 void cs_loader_print_errors(cs_loader *l, FILE *out) {
     for (int i = 0; i < l->error_count; i++) {
         const char *e = cs_loader_error(l, i);
-        if (e) fprintf(out, "%s\n", e);
+        if (e) cs_term_text(out, e), fputc('\n', out); /* a value echoed as the file gave it */
     }
 }
 

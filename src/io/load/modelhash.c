@@ -30,6 +30,8 @@ static unsigned long long fields(unsigned long long h, const cs_table *t, const 
         if (fd->offset < 0) continue;
         const char *at = (const char *)def + fd->offset;
         if (cs_field_unset(fd, at)) continue;
+        if ((fd->flags & CS_NEW0) && fd->kind == CS_F_QTY && memcmp(at, &(double){0.0}, sizeof(double)) == 0)
+            continue;
         h = key(h, fd->key);
         if (fd->kind == CS_F_MAP) {
             h = fields(h, fd->sub, at);

@@ -351,13 +351,17 @@ static const cs_field scenario_fields[] = {
     SC("start_gap", CS_Q_LENGTH, CS_NONNEG, start_gap, "front face to the cable line at t = 0"),
     SC("dt", CS_Q_TIME, CS_POS, dt, "time step"),
     SC("t_end", CS_Q_TIME, CS_POS, t_end, "time limit"),
-    SC("output_interval", CS_Q_TIME, CS_NONNEG, output_interval, "recording interval (0: every step)"),
+    SC("output_interval", CS_Q_TIME, CS_NONNEG, output_interval,
+       "recording interval (0: every step; if given, at least dt and at most 10 million frames to t_end)"),
     SC("crush_tolerance", CS_Q_NUMBER, CS_POS, crush_tolerance,
        "relative change that ends the crush iteration"),
     SC("solver_tolerance", CS_Q_NUMBER, CS_POS, solver_tolerance, "relative residual of the barrier solve"),
     SC("solve_budget", CS_Q_NUMBER, CS_POS, solve_budget,
        "barrier solves a run may make, per step to t_end on average (default 20); past it the run ends "
        "did_not_converge"),
+    SC("max_steps", CS_Q_NUMBER, CS_POS | CS_NEW0, max_steps,
+       "steps a run may take (default 10 million, which no sensible run reaches); past them the run ends "
+       "step_limit"),
     {"solver_max_sweeps", CS_F_INT, CS_Q_NUMBER, CS_POS, (long)offsetof(cs_scenario_def, solver_max_sweeps),
      NULL, NULL, "cap on the barrier solve's sweeps in one step"},
     SC("stop_speed", CS_Q_SPEED, CS_NONNEG, stop_speed, "forward speed below which the vehicle has stopped"),
@@ -367,7 +371,9 @@ const cs_table cs_table_scenario = {"scenario", "The attack and how to integrate
                                     scenario_fields, N(scenario_fields)};
 
 static const cs_field model_fields[] = {
-    TEXT("name", 0, "the model's name (output folder results/NAME); default: the file name"),
+    TEXT("name", 0,
+         "the model's name, its output folder results/NAME (no '/', '..', leading '.' or control character); "
+         "default: the file name"),
     TEXT("description", 0, "what the model is"),
     SUB("parts", CS_F_MAP, 0, -1, cs_table_parts, "named parts of this file"),
     SUB("barrier", CS_F_MAP, 0, -1, cs_table_barrier, "the barrier"),

@@ -29,8 +29,10 @@ enum cs_fflag {
     CS_NONE_OK = 1u << 4, /* "none": no limit (stored as infinity) */
     CS_MAX90 = 1u << 5,   /* an angle up to 90 deg */
     CS_MAX180 = 1u << 6,  /* an angle below 180 deg */
-    CS_OWN = 1u << 7      /* a map of a part's own values where not its parent's (a cable end's fitting):
+    CS_OWN = 1u << 7,     /* a map of a part's own values where not its parent's (a cable end's fitting):
                              not given (its enums < 0, its numbers 0), left out of the hash and the echo */
+    CS_NEW0 = 1u << 8     /* a number added later, 0 by default: left out of the model's hash at 0, so that
+                             a model that does not give it keeps its hash */
 };
 
 typedef enum cs_target {

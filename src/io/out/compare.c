@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "out/compare.h"
 #include "cablesim/units.h"
+#include "out/htmltext.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -130,12 +131,7 @@ static double difference(const cs_trace *tr, const cs_trace *ref, int k) {
 }
 
 static void csv_text(FILE *f, const char *s) {
-    fputc('"', f);
-    for (; *s; s++) {
-        if (*s == '"') fputc('"', f);
-        fputc(*s, f);
-    }
-    fputc('"', f);
+    cs_csv_text(f, s, 1);
 }
 
 static void write_csv(FILE *f, const cs_trace *tr, int count, int reference) {

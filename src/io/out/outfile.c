@@ -4,16 +4,273 @@
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
-static void path_of(const cs_outdir *out, int i, int tmp, char *buf, size_t size) {
-    snprintf(buf, size, "%s/%s%s", out->dir, out->names[i], tmp ? ".tmp" : "");
+enum { PATH_SIZE = 1400, MAX_DEPTH = 32 };
+
+static const char tmp_prefix[] = CS_OUT_TMP_PREFIX;
+
+/* DIR/rel into buf; 0 if it does not fit (buf then empty: no file). */
+static int full_path(const cs_outdir *out, const char *rel, char *buf, size_t size) {
+    size_t d = strlen(out->dir), r = strlen(rel);
+    if (d + 1 + r >= size) {
+        buf[0] = '\0';
+        return 0;
+    }
+    memcpy(buf, out->dir, d);
+    buf[d] = '/';
+    memcpy(buf + d + 1, rel, r + 1);
+    return 1;
 }
 
-int cs_out_open(cs_outdir *out, const char *dir, char *why, size_t why_size) {
+/* Whether rel names a file inside the folder: not empty, not absolute, no "." or ".." or empty part, no
+ * control character (a manifest's line or a command's name). */
+static int inside(const char *rel) {
+    if (!rel[0] || rel[0] == '/') return 0;
+    for (const unsigned char *p = (const unsigned char *)rel; *p; p++)
+        if (*p < 0x20 || *p == 0x7f) return 0;
+    for (const char *p = rel; *p;) {
+        size_t n = strcspn(p, "/");
+        if (n == 0 || (n == 1 && p[0] == '.') || (n == 2 && p[0] == '.' && p[1] == '.')) return 0;
+        p += n + (p[n] == '/');
+        if (p[-1] == '/' && !*p) return 0; /* a trailing slash */
+    }
+    return 1;
+}
+
+/* Whether the earlier manifest lists rel. */
+static int listed(const cs_outdir *out, const char *rel) {
+    for (int i = 0; i < out->prev_count; i++)
+        if (strcmp(out->prev[i], rel) == 0) return 1;
+    return 0;
+}
+
+static int written(const cs_outdir *out, const char *rel) {
+    for (int i = 0; i < out->count; i++)
+        if (strcmp(out->names[i], rel) == 0) return 1;
+    return 0;
+}
+
+/* ---- the lock ---- */
+
+/* The pid of the lock's holder: the system's word, else the pid the file holds; 0 if neither says. */
+static long lock_holder(int fd) {
+    struct flock fl = {0};
+    fl.l_type = F_WRLCK;
+    fl.l_whence = SEEK_SET;
+    if (fcntl(fd, F_GETLK, &fl) == 0 && fl.l_type != F_UNLCK && fl.l_pid > 0) return (long)fl.l_pid;
+    char text[32] = "";
+    ssize_t n = pread(fd, text, sizeof text - 1, 0);
+    return n > 0 ? strtol(text, NULL, 10) : 0;
+}
+
+/* DIR/.cablesim-lock, created if missing, locked (fcntl) and holding this pid. A lock whose holder died
+ * was released by the system and is taken over. */
+static int take_lock(cs_outdir *out, char *why, size_t why_size) {
+    char path[PATH_SIZE];
+    full_path(out, CS_OUT_LOCK, path, sizeof path);
+    for (int tries = 0; tries < 16; tries++) {
+        int fd = open(path, O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0666);
+        if (fd < 0) {
+            snprintf(why, why_size, "%s: cannot write there: %s", out->dir, strerror(errno));
+            return -1;
+        }
+        struct flock fl = {0};
+        fl.l_type = F_WRLCK;
+        fl.l_whence = SEEK_SET;
+        if (fcntl(fd, F_SETLK, &fl) != 0 && errno != ENOLCK) { /* ENOLCK: no locks on this file system */
+            int err = errno;
+            long pid = lock_holder(fd);
+            close(fd);
+            if (err != EACCES && err != EAGAIN) {
+                snprintf(why, why_size, "%s: cannot lock: %s", path, strerror(err));
+            } else if (pid > 0) {
+                snprintf(why, why_size,
+                         "%s is in use by another cablesim (pid %ld holds %s): wait for it to end, or write "
+                         "elsewhere",
+                         out->dir, pid, path);
+            } else {
+                snprintf(why, why_size, "%s is in use by another cablesim (it holds %s): wait for it to end",
+                         out->dir, path);
+            }
+            return -1;
+        }
+        /* the holder before may have removed the file as this took it: then take the new one */
+        struct stat held, now;
+        if (fstat(fd, &held) == 0 && lstat(path, &now) == 0 && held.st_dev == now.st_dev &&
+            held.st_ino == now.st_ino) {
+            char pid[32];
+            int n = snprintf(pid, sizeof pid, "%ld\n", (long)getpid());
+            if (ftruncate(fd, 0) != 0 || pwrite(fd, pid, (size_t)n, 0) != n) {
+                snprintf(why, why_size, "%s: %s", path, strerror(errno));
+                close(fd);
+                return -1;
+            }
+            out->lock = fd;
+            return 0;
+        }
+        close(fd);
+    }
+    snprintf(why, why_size, "%s: cannot take the lock: other cablesim runs keep taking it", path);
+    return -1;
+}
+
+static void release(cs_outdir *out) {
+    if (out->lock >= 0) {
+        char path[PATH_SIZE];
+        full_path(out, CS_OUT_LOCK, path, sizeof path);
+        unlink(path); /* while it is held: a run waiting on this file tries again */
+        close(out->lock);
+        out->lock = -1;
+    }
+    free(out->prev);
+    out->prev = NULL;
+    out->prev_count = 0;
+}
+
+/* ---- the manifest ---- */
+
+/* The earlier run's manifest into out->prev (none: empty). Lines that name no file inside the folder
+ * are skipped: a manifest never sends a removal outside. */
+static int read_manifest(cs_outdir *out, char *why, size_t why_size) {
+    char path[PATH_SIZE];
+    full_path(out, CS_OUT_MANIFEST, path, sizeof path);
+    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+    if (fd < 0 && errno == ENOENT) return 0;
+    FILE *f = fd < 0 ? NULL : fdopen(fd, "r");
+    if (!f) {
+        snprintf(why, why_size, "%s: %s", path, strerror(errno));
+        if (fd >= 0) close(fd);
+        return -1;
+    }
+    char line[512];
+    int cap = 0;
+    while (fgets(line, sizeof line, f)) {
+        size_t n = strcspn(line, "\n");
+        int whole = line[n] == '\n' || feof(f);
+        line[n] = '\0';
+        if (!whole) { /* longer than any name cablesim writes: skip the rest */
+            int c;
+            while ((c = fgetc(f)) != EOF && c != '\n') {
+            }
+            continue;
+        }
+        if (line[0] == '#' || n >= sizeof out->prev[0] || !inside(line) || listed(out, line)) continue;
+        if (out->prev_count == cap) {
+            cap = cap ? 2 * cap : 64;
+            char(*grown)[128] = realloc(out->prev, (size_t)cap * sizeof *grown);
+            if (!grown) {
+                fclose(f);
+                snprintf(why, why_size, "out of memory reading %s", path);
+                return -1;
+            }
+            out->prev = grown;
+        }
+        memcpy(out->prev[out->prev_count++], line, n + 1);
+    }
+    fclose(f);
+    return 0;
+}
+
+/* DIR/.cablesim-manifest: the files written, and with prev those of the earlier manifest too, through
+ * a temporary and a rename. */
+static int write_manifest(cs_outdir *out, int with_prev, char *why, size_t why_size) {
+    char tmp[PATH_SIZE], path[PATH_SIZE];
+    snprintf(tmp, sizeof tmp, "%s/%smanifest.XXXXXX", out->dir, tmp_prefix);
+    full_path(out, CS_OUT_MANIFEST, path, sizeof path);
+    int fd = mkstemp(tmp);
+    FILE *f = fd < 0 ? NULL : fdopen(fd, "w");
+    if (!f) {
+        snprintf(why, why_size, "%s: %s", path, strerror(errno));
+        if (fd >= 0) close(fd), unlink(tmp);
+        return -1;
+    }
+    fchmod(fd, (mode_t)out->mode);
+    fprintf(f, "# cablesim: the files its last run wrote in this folder; the next run into it removes "
+               "these and no other\n");
+    for (int i = 0; i < out->count; i++)
+        fprintf(f, "%s\n", out->names[i]);
+    for (int i = 0; with_prev && i < out->prev_count; i++)
+        if (!written(out, out->prev[i])) fprintf(f, "%s\n", out->prev[i]);
+    int bad = fflush(f) != 0 || ferror(f) || fsync(fd) != 0;
+    int err = errno;
+    bad |= fclose(f) != 0;
+    if (bad || rename(tmp, path) != 0) {
+        snprintf(why, why_size, "%s: %s", path, strerror(bad ? err : errno));
+        unlink(tmp);
+        return -1;
+    }
+    return 0;
+}
+
+/* ---- what the folder holds ---- */
+
+/* The first file under DIR/rel that no manifest lists into found (1), else 0; -1 with why filled if a
+ * folder cannot be read. Folders are walked, not followed through links; the lock, the manifest and
+ * temporaries are cablesim's, and folders that hold no file are not files. With remove, the
+ * temporaries a killed run left are removed instead (the folder is locked: no run is writing them). */
+static int scan(const cs_outdir *out, const char *rel, int depth, int remove, char *found, size_t found_size,
+                char *why, size_t why_size) {
+    char path[PATH_SIZE];
+    if (rel[0])
+        full_path(out, rel, path, sizeof path);
+    else
+        snprintf(path, sizeof path, "%s", out->dir);
+    DIR *d = opendir(path);
+    if (!d) {
+        snprintf(why, why_size, "%s: %s", path, strerror(errno));
+        return -1;
+    }
+    int rc = 0;
+    struct dirent *e;
+    while (rc == 0 && (e = readdir(d)) != NULL) {
+        const char *name = e->d_name;
+        if (strcmp(name, ".") == 0 || strcmp(name, "..") == 0) continue;
+        char sub[PATH_SIZE], full[PATH_SIZE];
+        snprintf(sub, sizeof sub, "%s%s%s", rel, rel[0] ? "/" : "", name);
+        full_path(out, sub, full, sizeof full);
+        struct stat st;
+        if (lstat(full, &st) != 0) continue; /* gone since */
+        int ours = strncmp(name, tmp_prefix, sizeof tmp_prefix - 1) == 0 && S_ISREG(st.st_mode);
+        if (S_ISDIR(st.st_mode) && depth < MAX_DEPTH) {
+            rc = scan(out, sub, depth + 1, remove, found, found_size, why, why_size);
+        } else if (ours && remove) {
+            unlink(full);
+        } else if (!ours && !remove && !listed(out, sub) &&
+                   !(!rel[0] && (strcmp(name, CS_OUT_MANIFEST) == 0 || strcmp(name, CS_OUT_LOCK) == 0))) {
+            snprintf(found, found_size, "%s", sub);
+            rc = 1;
+        }
+    }
+    closedir(d);
+    return rc;
+}
+
+/* Refuse a folder holding a file no manifest lists (unless CS_OUT_FORCE), else remove the temporaries
+ * a killed run left. */
+static int check_contents(cs_outdir *out, char *why, size_t why_size) {
+    if (out->flags & CS_OUT_FORCE) return 0;
+    char found[PATH_SIZE];
+    int rc = scan(out, "", 0, 0, found, sizeof found, why, why_size);
+    if (rc == 1)
+        snprintf(why, why_size,
+                 "%s holds %s, which no cablesim run wrote there (%s lists what one wrote): choose another "
+                 "folder, or give --force to write beside such files (none of them is removed)",
+                 out->dir, found, CS_OUT_MANIFEST);
+    if (rc == 0) rc = scan(out, "", 0, 1, found, sizeof found, why, why_size);
+    return rc == 0 ? 0 : -1;
+}
+
+int cs_out_open(cs_outdir *out, const char *dir, int flags, char *why, size_t why_size) {
     memset(out, 0, sizeof *out);
+    out->lock = -1;
+    out->flags = flags;
+    mode_t mask = umask(0);
+    umask(mask);
+    out->mode = 0666u & ~(unsigned)mask;
     if (strlen(dir) >= sizeof out->dir - 80) {
         snprintf(why, why_size, "%s: output path too long", dir);
         return -1;
@@ -33,109 +290,94 @@ int cs_out_open(cs_outdir *out, const char *dir, char *why, size_t why_size) {
             out->made = 0; /* only a trailing run of made folders is ours to remove */
         }
     }
-    /* a file can be made there (a read-only file system, a folder without write permission) */
-    snprintf(part, sizeof part, "%s/.cablesim-%ld.tmp", dir, (long)getpid());
-    int fd = open(part, O_WRONLY | O_CREAT | O_EXCL, 0666);
-    if (fd < 0) {
-        snprintf(why, why_size, "%s: cannot write there: %s", dir, strerror(errno));
+    struct stat st;
+    int found = stat(dir, &st) == 0;
+    if (!found || !S_ISDIR(st.st_mode)) {
+        snprintf(why, why_size, "%s: %s", dir, strerror(found ? ENOTDIR : errno));
         cs_out_abort(out);
         return -1;
     }
-    close(fd);
-    unlink(part);
-    return 0;
-}
-
-void cs_out_own(cs_outdir *out, const char *const *names, int count) {
-    out->owned = names;
-    out->owned_count = count;
-}
-
-static int written(const cs_outdir *out, const char *name) {
-    for (int i = 0; i < out->count; i++)
-        if (strcmp(out->names[i], name) == 0) return 1;
-    return 0;
-}
-
-/* Remove the file DIR/name if there is one; -1 with why filled if it cannot be. */
-static int remove_stale(const cs_outdir *out, const char *name, char *why, size_t why_size) {
-    char path[1200];
-    struct stat st;
-    snprintf(path, sizeof path, "%s/%s", out->dir, name);
-    if (lstat(path, &st) != 0 || !S_ISREG(st.st_mode)) return 0; /* missing, or not a file cablesim wrote */
-    if (unlink(path) == 0 || errno == ENOENT) return 0;
-    snprintf(why, why_size, "%s: an earlier run's file, cannot be removed: %s", path, strerror(errno));
-    return -1;
-}
-
-/* Whether name ends in ext, or in ext and ".tmp". */
-static int has_ext(const char *name, const char *ext) {
-    size_t n = strlen(name), e = strlen(ext);
-    if (n > e && strcmp(name + n - e, ext) == 0) return 1;
-    return n > e + 4 && strcmp(name + n - 4, ".tmp") == 0 && strncmp(name + n - 4 - e, ext, e) == 0;
-}
-
-/* The owned names this run did not write (and stale temporaries of them) removed. */
-static int prune(const cs_outdir *out, char *why, size_t why_size) {
-    for (int k = 0; k < out->owned_count; k++) {
-        const char *own = out->owned[k], *star = strstr(own, "/*");
-        char name[300];
-        if (!star) {
-            snprintf(name, sizeof name, "%s.tmp", own);
-            if ((!written(out, own) && remove_stale(out, own, why, why_size) != 0) ||
-                remove_stale(out, name, why, why_size) != 0)
-                return -1;
-            continue;
-        }
-        char sub[1200];
-        snprintf(sub, sizeof sub, "%s/%.*s", out->dir, (int)(star - own), own);
-        DIR *d = opendir(sub);
-        if (!d) continue; /* none there */
-        int rc = 0;
-        struct dirent *e;
-        while (rc == 0 && (e = readdir(d)) != NULL) {
-            snprintf(name, sizeof name, "%.*s/%s", (int)(star - own), own, e->d_name);
-            if (e->d_name[0] == '.' || !has_ext(e->d_name, star + 2) || written(out, name)) continue;
-            rc = remove_stale(out, name, why, why_size);
-        }
-        closedir(d);
-        if (rc != 0) return -1;
-        rmdir(sub); /* if nothing is left in it */
+    if (take_lock(out, why, why_size) != 0 || read_manifest(out, why, why_size) != 0 ||
+        check_contents(out, why, why_size) != 0) {
+        cs_out_abort(out);
+        return -1;
     }
     return 0;
 }
 
 int cs_out_subdir(cs_outdir *out, const char *subdir, char *why, size_t why_size) {
-    char path[1200];
-    snprintf(path, sizeof path, "%s/%s", out->dir, subdir);
+    char path[PATH_SIZE];
+    full_path(out, subdir, path, sizeof path);
+    struct stat st;
     if (mkdir(path, 0777) != 0 && errno != EEXIST) {
         snprintf(why, why_size, "%s: %s", path, strerror(errno));
         return -1;
     }
+    if (lstat(path, &st) != 0 || !S_ISDIR(st.st_mode)) { /* a file, or a link to somewhere else */
+        snprintf(why, why_size, "%s: not a folder of this one (%s)", path, strerror(ENOTDIR));
+        return -1;
+    }
     return 0;
 }
 
-int cs_out_begin_path(cs_outdir *out, const char *name, char *path, size_t path_size, char *why,
-                      size_t why_size) {
+/* A temporary beside DIR/name, open for writing (its descriptor), named into out. -1 with why filled. */
+static int begin(cs_outdir *out, const char *name, char *why, size_t why_size) {
+    char final[PATH_SIZE], tmp[PATH_SIZE];
     if (out->count == CS_OUT_MAX_FILES) {
         snprintf(why, why_size, "too many output files");
         return -1;
     }
-    if (strlen(name) >= sizeof out->names[0]) {
-        snprintf(why, why_size, "%s/%s: output file name too long", out->dir, name);
+    if (strlen(name) >= sizeof out->names[0] || !inside(name)) {
+        snprintf(why, why_size, "%s/%s: not a name for an output file", out->dir, name);
         return -1;
     }
-    snprintf(out->names[out->count], sizeof out->names[0], "%s", name);
-    path_of(out, out->count++, 1, path, path_size);
-    return 0;
+    full_path(out, name, final, sizeof final);
+    struct stat st;
+    if (lstat(final, &st) == 0 && S_ISDIR(st.st_mode)) {
+        snprintf(why, why_size, "%s: %s", final, strerror(EISDIR));
+        return -1;
+    }
+    if (lstat(final, &st) == 0 && !listed(out, name)) {
+        snprintf(why, why_size,
+                 "%s: a file no cablesim run wrote is there (not in %s/%s): it is kept; remove it or write "
+                 "elsewhere",
+                 final, out->dir, CS_OUT_MANIFEST);
+        return -1;
+    }
+    const char *slash = strrchr(name, '/');
+    int head = slash ? (int)(slash - name + 1) : 0;
+    char *rel = out->tmps[out->count];
+    snprintf(rel, sizeof out->tmps[0], "%.*s%s%s.XXXXXX", head, name, tmp_prefix, name + head);
+    full_path(out, rel, tmp, sizeof tmp);
+    int fd = mkstemp(tmp);
+    if (fd < 0) {
+        snprintf(why, why_size, "%s: %s", final, strerror(errno));
+        return -1;
+    }
+    snprintf(rel, sizeof out->tmps[0], "%s", tmp + strlen(out->dir) + 1); /* the name mkstemp chose */
+    fchmod(fd, (mode_t)out->mode);
+    snprintf(out->names[out->count++], sizeof out->names[0], "%s", name);
+    return fd;
 }
 
 FILE *cs_out_begin(cs_outdir *out, const char *name, char *why, size_t why_size) {
-    char path[1200];
-    if (cs_out_begin_path(out, name, path, sizeof path, why, why_size) != 0) return NULL;
-    FILE *f = fopen(path, "w");
-    if (!f) snprintf(why, why_size, "%s: %s", path, strerror(errno));
+    int fd = begin(out, name, why, why_size);
+    if (fd < 0) return NULL;
+    FILE *f = fdopen(fd, "w");
+    if (!f) {
+        snprintf(why, why_size, "%s/%s: %s", out->dir, name, strerror(errno));
+        close(fd);
+    }
     return f;
+}
+
+int cs_out_begin_path(cs_outdir *out, const char *name, char *path, size_t path_size, char *why,
+                      size_t why_size) {
+    int fd = begin(out, name, why, why_size);
+    if (fd < 0) return -1;
+    close(fd);
+    full_path(out, out->tmps[out->count - 1], path, path_size);
+    return 0;
 }
 
 static int end_failed(const cs_outdir *out, int i, int err, char *why, size_t why_size) {
@@ -155,8 +397,8 @@ int cs_out_end(cs_outdir *out, FILE *f, char *why, size_t why_size) {
 }
 
 int cs_out_end_path(cs_outdir *out, char *why, size_t why_size) {
-    char path[1200];
-    path_of(out, out->count - 1, 1, path, sizeof path);
+    char path[PATH_SIZE];
+    full_path(out, out->tmps[out->count - 1], path, sizeof path);
     int fd = open(path, O_RDONLY);
     if (fd < 0) return end_failed(out, out->count - 1, errno, why, why_size);
     int bad = fsync(fd) != 0, err = errno;
@@ -164,39 +406,82 @@ int cs_out_end_path(cs_outdir *out, char *why, size_t why_size) {
     return bad ? end_failed(out, out->count - 1, err, why, why_size) : 0;
 }
 
+/* fsync DIR/rel (a folder), so that the renames in it last. */
+static void sync_folder(const cs_outdir *out, const char *rel, int len) {
+    char path[PATH_SIZE];
+    snprintf(path, sizeof path, "%s/%.*s", out->dir, len, rel);
+    int fd = open(path, O_RDONLY);
+    if (fd >= 0) {
+        fsync(fd);
+        close(fd);
+    }
+}
+
+/* Remove the earlier run's file rel, a file (not a folder) in a folder of this one (not through a link). */
+static int remove_earlier(const cs_outdir *out, const char *rel, char *why, size_t why_size) {
+    char path[PATH_SIZE];
+    struct stat st;
+    for (const char *s = strchr(rel, '/'); s; s = strchr(s + 1, '/')) {
+        snprintf(path, sizeof path, "%s/%.*s", out->dir, (int)(s - rel), rel);
+        if (lstat(path, &st) != 0 || !S_ISDIR(st.st_mode)) return 0;
+    }
+    full_path(out, rel, path, sizeof path);
+    if (lstat(path, &st) != 0 || S_ISDIR(st.st_mode)) return 0;
+    if (unlink(path) == 0 || errno == ENOENT) return 0;
+    snprintf(why, why_size, "%s: an earlier run's file, cannot be removed: %s", path, strerror(errno));
+    return -1;
+}
+
 int cs_out_commit(cs_outdir *out, char *why, size_t why_size) {
-    char tmp[1200], final[1200];
+    char tmp[PATH_SIZE], final[PATH_SIZE];
+    /* the manifest first names both runs' files, so that every file cablesim put here stays its own */
+    if (write_manifest(out, 1, why, why_size) != 0) return -1;
     for (int i = 0; i < out->count; i++) {
-        path_of(out, i, 1, tmp, sizeof tmp);
-        path_of(out, i, 0, final, sizeof final);
+        full_path(out, out->tmps[i], tmp, sizeof tmp);
+        full_path(out, out->names[i], final, sizeof final);
         if (rename(tmp, final) != 0) {
             snprintf(why, why_size, "%s: %s", final, strerror(errno));
             return -1;
         }
     }
-    if (prune(out, why, why_size) != 0) return -1;
-    int fd = open(out->dir, O_RDONLY);
-    if (fd >= 0) { /* make the renames durable */
-        fsync(fd);
-        close(fd);
+    for (int i = 0; i < out->prev_count; i++) {
+        const char *rel = out->prev[i], *slash = strrchr(rel, '/');
+        if (written(out, rel)) continue;
+        if (remove_earlier(out, rel, why, why_size) != 0) return -1;
+        if (slash) { /* a subfolder this left empty */
+            full_path(out, rel, tmp, sizeof tmp);
+            tmp[strlen(out->dir) + 1 + (size_t)(slash - rel)] = '\0';
+            rmdir(tmp);
+        }
     }
+    if (write_manifest(out, 0, why, why_size) != 0) return -1; /* the commit point */
+    sync_folder(out, "", 0);
+    for (int i = 0; i < out->count; i++) {
+        const char *slash = strrchr(out->names[i], '/');
+        int len = slash ? (int)(slash - out->names[i]) : 0;
+        if (len && (i == 0 || strncmp(out->names[i - 1], out->names[i], (size_t)len + 1) != 0))
+            sync_folder(out, out->names[i], len);
+    }
+    out->count = 0;
     out->made = 0; /* the folders hold a result now */
+    release(out);
     return 0;
 }
 
 void cs_out_abort(cs_outdir *out) {
-    char tmp[1200];
+    char path[PATH_SIZE];
     for (int i = 0; i < out->count; i++) {
-        path_of(out, i, 1, tmp, sizeof tmp);
-        unlink(tmp);
+        full_path(out, out->tmps[i], path, sizeof path);
+        unlink(path);
     }
     for (int i = 0; i < out->count; i++) { /* a subfolder (plots/) this left empty */
         const char *slash = strrchr(out->names[i], '/');
         if (!slash) continue;
-        snprintf(tmp, sizeof tmp, "%s/%.*s", out->dir, (int)(slash - out->names[i]), out->names[i]);
-        rmdir(tmp);
+        snprintf(path, sizeof path, "%s/%.*s", out->dir, (int)(slash - out->names[i]), out->names[i]);
+        rmdir(path);
     }
     out->count = 0;
+    release(out);
     /* the folders cs_out_open made, deepest first, while they are empty */
     char part[1024];
     snprintf(part, sizeof part, "%s", out->dir);

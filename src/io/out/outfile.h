@@ -1,47 +1,66 @@
-/* Output files written atomically: each to DIR/name.tmp, flushed and fsync'ed, then all renamed at
- * once by cs_out_commit; cs_out_abort removes the temporaries (and the folders cs_out_open made) so a
- * failed run leaves nothing. A folder holds one run's outputs: on commit, the files of the command's
- * own names (cs_out_own) that this run did not write are removed, and nothing else. */
+/* A command's output folder, which never loses a file cablesim did not write.
+ *
+ * cs_out_open makes the folder, takes its lock (DIR/.cablesim-lock, flock'ed, holding the pid: a second
+ * cablesim into the same folder is refused with that pid; a lock whose holder died is taken over) and
+ * reads the manifest an earlier run left (DIR/.cablesim-manifest: every file that run wrote, one a
+ * line). A folder holding a file that no manifest lists is refused, naming it, unless CS_OUT_FORCE: then
+ * the run writes beside such files and touches none of them (nor writes over one).
+ *
+ * Each file is written to a unique temporary beside its name (mkstemp: ".cablesim-tmp.NAME.XXXXXX"),
+ * flushed and fsync'ed; cs_out_commit renames them all into place, removes the files of the earlier
+ * manifest that this run did not write, and writes the new manifest last, by a temporary and a rename:
+ * the commit point. cs_out_abort removes the temporaries (and the folders cs_out_open made) so a failed
+ * run leaves nothing. Either releases the lock. */
 #ifndef CS_OUTFILE_H
 #define CS_OUTFILE_H
 
 #include <stdio.h>
 
 enum { CS_OUT_MAX_FILES = 64 }; /* the data files, the plots and the pages */
+enum { CS_OUT_FORCE = 1 };      /* cs_out_open: write beside files no manifest lists */
+
+#define CS_OUT_MANIFEST ".cablesim-manifest"
+#define CS_OUT_LOCK ".cablesim-lock"
+#define CS_OUT_TMP_PREFIX ".cablesim-tmp."
 
 typedef struct cs_outdir {
     char dir[1024];
     int count;
-    char names[CS_OUT_MAX_FILES][128];
-    const char *const *owned; /* the command's names (cs_out_own) */
-    int owned_count;
-    int made; /* the folders cs_out_open created: the last `made` prefixes of dir */
+    char names[CS_OUT_MAX_FILES][128]; /* the files begun, relative to dir */
+    char tmps[CS_OUT_MAX_FILES][200];  /* their temporaries, relative to dir */
+    char (*prev)[128];                 /* the earlier run's manifest */
+    int prev_count;
+    int made;      /* the folders cs_out_open created: the last `made` prefixes of dir */
+    int flags;     /* CS_OUT_FORCE */
+    int lock;      /* the lock's file descriptor, -1 when not held */
+    unsigned mode; /* the files' permissions: 0666 less the umask */
 } cs_outdir;
 
-/* Create dir (and its parents) and check that a file can be made in it, before anything is computed.
- * Returns 0, or -1 with why filled ("DIR: Not a directory"). */
-int cs_out_open(cs_outdir *out, const char *dir, char *why, size_t why_size);
-/* The names of every file the command can write in its folder: "summary.json", or a subfolder and an
- * extension, "plots" "/" "*.png", for every file of plots/ ending in .png. The list must outlive out. */
-void cs_out_own(cs_outdir *out, const char *const *names, int count);
+/* Create dir (and its parents), take its lock and read its manifest, before anything is computed.
+ * Returns 0, or -1 with why filled ("DIR: Not a directory", "DIR is in use by cablesim pid N", "DIR
+ * holds notes.txt, which no cablesim run wrote ..."). */
+int cs_out_open(cs_outdir *out, const char *dir, int flags, char *why, size_t why_size);
 /* Create DIR/subdir, for files named "subdir/...". Returns 0, or -1 with why filled. */
 int cs_out_subdir(cs_outdir *out, const char *subdir, char *why, size_t why_size);
-/* Start DIR/name.tmp. NULL with why filled on failure (also a name longer than names hold). */
+/* Start a temporary for DIR/name. NULL with why filled on failure: a name longer than names hold, a
+ * folder there, or a file no manifest lists (CS_OUT_FORCE). */
 FILE *cs_out_begin(cs_outdir *out, const char *name, char *why, size_t why_size);
 /* Flush, fsync and close a file from cs_out_begin: the last begun, or the i-th (files written side by
  * side). Returns 0, or -1 with why filled. */
 int cs_out_end(cs_outdir *out, FILE *f, char *why, size_t why_size);
 int cs_out_end_at(cs_outdir *out, int i, FILE *f, char *why, size_t why_size);
-/* The same for a writer that opens its file by name (netCDF): DIR/name.tmp into path, and, once the writer
- * has closed it, cs_out_end_path fsyncs it. Each returns 0, or -1 with why filled. */
+/* The same for a writer that opens its file by name (netCDF): the temporary's path into path (an empty
+ * file the writer replaces), and, once the writer has closed it, cs_out_end_path fsyncs it. Each returns
+ * 0, or -1 with why filled. */
 int cs_out_begin_path(cs_outdir *out, const char *name, char *path, size_t path_size, char *why,
                       size_t why_size);
 int cs_out_end_path(cs_outdir *out, char *why, size_t why_size);
-/* Rename every temporary to its name, then remove the files of the owned names this run did not write
- * (an earlier run's, and temporaries a killed run left), and a subfolder they leave empty. Returns 0, or
- * -1 with why filled. */
+/* Rename every temporary to its name, remove the files of the earlier manifest that this run did not
+ * write (and a subfolder they leave empty), write the manifest, release the lock. Returns 0, or -1 with
+ * why filled (then call cs_out_abort). */
 int cs_out_commit(cs_outdir *out, char *why, size_t why_size);
-/* Remove the temporaries begun, and the folders cs_out_open made if they are empty. */
+/* Remove the temporaries begun, and the folders cs_out_open made if they are empty; release the lock.
+ * Safe to call twice, and after a commit (then it does nothing). */
 void cs_out_abort(cs_outdir *out);
 
 #endif

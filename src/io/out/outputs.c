@@ -28,13 +28,10 @@ static int write_plots(cs_outdir *out, const cs_model_input *in, const cs_state 
 int cs_write_run_files(cs_outdir *out, const cs_model_input *in, const cs_model *model, const cs_state *state,
                        const cs_record *rec, const cs_run_info *info, int flags, cs_more_outputs more,
                        void *user, char *why, size_t why_size) {
-    static const char *const owned[] = {"timeseries.csv", "events.csv",  "summary.json",
-                                        "report.html",    "plots/*.png", "plots/*.svg"};
     if (rec->failed) {
         snprintf(why, why_size, "the record lost frames: memory ran short while recording");
         return -1;
     }
-    cs_out_own(out, owned, (int)(sizeof owned / sizeof owned[0]));
     static const char *const names[] = {"timeseries.csv", "events.csv", "summary.json"};
     int rc = 0;
     for (int k = 0; rc == 0 && k < 3; k++) {
@@ -59,7 +56,7 @@ int cs_write_outputs(const char *dir, const cs_model_input *in, const cs_model *
     cs_outdir out;
     cs_run_info info;
     cs_run_info_of(&info, in, state);
-    int rc = cs_out_open(&out, dir, why, why_size);
+    int rc = cs_out_open(&out, dir, 0, why, why_size);
     if (rc == 0)
         rc = cs_write_run_files(&out, in, model, state, rec, &info, flags, NULL, NULL, why, why_size);
     if (rc == 0) rc = cs_out_commit(&out, why, why_size);

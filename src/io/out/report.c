@@ -2,6 +2,7 @@
 #include <math.h>
 
 #include "cablesim/units.h"
+#include "out/htmltext.h"
 #include "writers.h"
 
 /* Events that are the barrier or the vehicle giving way, listed one by one; the posts' yielding (a hinge
@@ -79,7 +80,8 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
     cs_summary s;
     cs_state_summary(state, &s);
     const cs_scenario_def *sc = &in->scenario;
-    fprintf(f, "%s: ", in->name);
+    cs_term_text(f, in->name);
+    fprintf(f, ": ");
     if (s.outcome == CS_STOPPED)
         fprintf(f, "the vehicle stopped at t = %.3f s\n", s.stop_time_s);
     else if (cs_outcome_through(s.outcome))
@@ -94,6 +96,12 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
         fprintf(f,
                 "the run did not converge: its barrier solves used up their budget at t = %.3f s "
                 "(scenario.solve_budget); what it reached is below\n",
+                s.t_end_s);
+    else if (s.outcome == CS_STEP_LIMIT)
+        fprintf(f,
+                "the run took its %.0f steps (scenario.max_steps) at t = %.3f s, before its end time; what "
+                "it reached is below\n",
+                in->scenario.max_steps > 0.0 ? floor(in->scenario.max_steps) : CS_MAX_STEPS_DEFAULT,
                 s.t_end_s);
     else if (s.outcome == CS_REDIRECTED)
         fprintf(f, "the vehicle was redirected, exit speed %.2f m/s (%.1f mph, %.1f km/h) at %.1f deg\n",

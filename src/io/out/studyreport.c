@@ -24,8 +24,9 @@ static const response_def responses[CS_STUDY_RESPONSES] = {
     {"exit_speed", "exit-speed", "exit speed (runs that left the barrier)", "exit speed (m/s)", 1.0},
 };
 
-static const cs_outcome outcomes[] = {CS_STOPPED,   CS_BREAKTHROUGH, CS_REDIRECTED, CS_OVERRIDE,
-                                      CS_UNDERRIDE, CS_TIME_LIMIT,   CS_NO_CONTACT, CS_DID_NOT_CONVERGE};
+static const cs_outcome outcomes[] = {CS_STOPPED,    CS_BREAKTHROUGH,     CS_REDIRECTED,
+                                      CS_OVERRIDE,   CS_UNDERRIDE,        CS_TIME_LIMIT,
+                                      CS_NO_CONTACT, CS_DID_NOT_CONVERGE, CS_STEP_LIMIT};
 enum { OUTCOMES = sizeof outcomes / sizeof outcomes[0] };
 
 typedef struct study {

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "out/htmltext.h"
 #include "sweepout.h"
 #include "writers.h"
 
@@ -226,16 +227,7 @@ const char *cs_sweep_column_text(const cs_sweep_column *c, const cs_sweep_result
 /* ---- runs.csv ---- */
 
 static void csv_text(FILE *f, const char *s) {
-    if (!strpbrk(s, ",\"\n\r")) {
-        fputs(s, f);
-        return;
-    }
-    fputc('"', f);
-    for (; *s; s++) {
-        if (*s == '"') fputc('"', f);
-        fputc(*s, f);
-    }
-    fputc('"', f);
+    cs_csv_text(f, s, 0);
 }
 
 static void csv_num(FILE *f, double v) {
@@ -380,8 +372,9 @@ static int make_summary(summary *s, const cs_sweep_spec *spec, const double *x, 
         else
             s->failed++;
     }
-    static const cs_outcome outcomes[] = {CS_STOPPED,    CS_BREAKTHROUGH, CS_OVERRIDE,   CS_UNDERRIDE,
-                                          CS_REDIRECTED, CS_TIME_LIMIT,   CS_NO_CONTACT, CS_DID_NOT_CONVERGE};
+    static const cs_outcome outcomes[] = {CS_STOPPED,    CS_BREAKTHROUGH,     CS_OVERRIDE,
+                                          CS_UNDERRIDE,  CS_REDIRECTED,       CS_TIME_LIMIT,
+                                          CS_NO_CONTACT, CS_DID_NOT_CONVERGE, CS_STEP_LIMIT};
     static const char *const outcome_labels[] = {"stopped",
                                                  "breakthrough",
                                                  "rode over the cables",
@@ -389,7 +382,8 @@ static int make_summary(summary *s, const cs_sweep_spec *spec, const double *x, 
                                                  "redirected",
                                                  "time limit reached (still moving)",
                                                  "never touched the barrier",
-                                                 "did not converge (solve budget used up)"};
+                                                 "did not converge (solve budget used up)",
+                                                 "step limit reached (scenario.max_steps)"};
     for (int o = 0; o < 8; o++) {
         long c = 0;
         for (long i = 0; i < s->ok; i++)
@@ -482,36 +476,46 @@ static int write_summary(FILE *f, const cs_sweep_spec *spec, const double *x, co
 static void summary_md(FILE *f, const cs_sweep_spec *spec, long n, const summary *s) {
     int k = spec->var_count;
     const cs_sweep_origin *o = &spec->origin;
-    fprintf(f, "# Sweep %s\n\n", spec->file);
+    fprintf(f, "# Sweep ");
+    cs_html_text(f, spec->file);
+    fprintf(f, "\n\n");
     if (s->done < n)
         fprintf(f,
                 "**Partial**: %ld of %ld runs were run before %s stopped the sweep; the tables below are of "
-                "those. `cablesim sweep --resume %s` runs the rest and completes these files.\n\n",
-                s->done, n, o->stopped_by ? o->stopped_by : "a signal", o->dir ? o->dir : "DIR");
+                "those. ",
+                s->done, n, o->stopped_by ? o->stopped_by : "a signal");
+    if (s->done < n) {
+        char resume[1100];
+        snprintf(resume, sizeof resume, "cablesim sweep --resume %s", o->dir ? o->dir : "DIR");
+        cs_md_code(f, resume);
+        fprintf(f, " runs the rest and completes these files.\n\n");
+    }
     fprintf(f, "Written by cablesim %s", CS_VERSION_STRING);
-    if (o->command) fprintf(f, ": `%s`", o->command);
+    if (o->command) fprintf(f, ": "), cs_md_code(f, o->command);
     if (o->has_model_hash) fprintf(f, "; the base model's hash %016llx", o->model_hash);
     fprintf(f, ".\n\n");
-    fprintf(f, "Model `%s`, method %s, %ld runs", spec->model, method_names[spec->method], n);
+    fprintf(f, "Model "), cs_md_code(f, spec->model);
+    fprintf(f, ", method %s, %ld runs", method_names[spec->method], n);
     if (spec->method != CS_SWEEP_GRID) fprintf(f, ", seed %llu", (unsigned long long)spec->seed);
     fprintf(f, ": %ld ran to the end, %ld bad models, %ld failed", s->ok, s->bad_model, s->failed);
     if (s->done < n) fprintf(f, ", %ld not run yet", n - s->done);
     fprintf(f, ".\n\n");
     for (int i = 0; i < spec->set_count; i++)
-        fprintf(f, "%s`%s`%s", i ? ", " : "Fixed for every run: ", spec->sets[i],
-                i + 1 == spec->set_count ? ".\n\n" : "");
+        fprintf(f, "%s", i ? ", " : "Fixed for every run: "), cs_md_code(f, spec->sets[i]),
+            fprintf(f, "%s", i + 1 == spec->set_count ? ".\n\n" : "");
     fprintf(f, "## Inputs\n\n| path | SI unit | varied as |\n| --- | --- | --- |\n");
     for (int j = 0; j < k; j++)
-        fprintf(f, "| `%s` | %s | %s |\n", spec->vars[j].path,
-                spec->vars[j].unit[0] ? spec->vars[j].unit : "-", spec->vars[j].desc);
+        fprintf(f, "| "), cs_md_code(f, spec->vars[j].path), fprintf(f, " | "),
+            cs_html_text(f, spec->vars[j].unit[0] ? spec->vars[j].unit : "-"), fprintf(f, " | "),
+            cs_html_text(f, spec->vars[j].desc), fprintf(f, " |\n");
     fprintf(f,
             "\n## Outcomes\n\nProbabilities over the %ld runs that ran to the end, with 95%% Wilson score "
             "intervals.\n\n| outcome | runs | probability | 95%% interval |\n| --- | --- | --- | --- |\n",
             s->ok);
     for (int t = 0; t < s->tally_count; t++) {
         cs_interval w = cs_wilson(s->t[t].count, s->ok, Z95);
-        fprintf(f, "| %s%s | %ld | ", strncmp(s->t[t].name, "rating ", 7) == 0 ? "ASTM F2656 rating " : "",
-                s->t[t].label, s->t[t].count);
+        fprintf(f, "| %s", strncmp(s->t[t].name, "rating ", 7) == 0 ? "ASTM F2656 rating " : "");
+        fprintf(f, "%s | %ld | ", s->t[t].label, s->t[t].count); /* cablesim's words, not the spec's */
         md_num(f, w.p);
         fprintf(f, " | ");
         md_num(f, w.lo);
@@ -546,7 +550,7 @@ static void summary_md(FILE *f, const cs_sweep_spec *spec, long n, const summary
         fprintf(f, " --- |");
     fputc('\n', f);
     for (int j = 0; j < k; j++) {
-        fprintf(f, "| `%s` |", spec->vars[j].path);
+        fprintf(f, "| "), cs_md_code(f, spec->vars[j].path), fprintf(f, " |");
         for (int q = 0; q < R_COUNT; q++) {
             double rho = s->rho[j * R_COUNT + q];
             fputc(' ', f);
@@ -563,7 +567,7 @@ static void summary_md(FILE *f, const cs_sweep_spec *spec, long n, const summary
         char file[256], caption[1000];
         cs_sweep_plot_file(spec, k, file, sizeof file);
         cs_sweep_plot_caption(spec, k, s->r, n, caption, sizeof caption);
-        fprintf(f, "- `%s`: %s.\n", file, caption);
+        fprintf(f, "- "), cs_md_code(f, file), fprintf(f, ": "), cs_html_text(f, caption), fprintf(f, ".\n");
     }
 }
 
@@ -828,6 +832,8 @@ long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *s, const
             break;
         }
         last = i;
+        for (int c = 1; c < got; c++)
+            cs_csv_untext(field[c]); /* the ' a text that looks like a formula was given */
         int bad = 0;
         for (int j = 0; j < k && !bad; j++) {
             char value[256];

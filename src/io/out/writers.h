@@ -57,9 +57,8 @@ void cs_json_provenance(FILE *f, const cs_run_info *info, cs_json_text_fn text);
  * out. Returns 0, or -1 with why filled. */
 typedef int (*cs_more_outputs)(cs_outdir *out, void *user, char *why, size_t why_size);
 /* A run's files into out (opened, not yet committed): timeseries.csv, events.csv, summary.json (with
- * info), the plots with CS_OUTPUT_PLOTS, then more (may be NULL); out owns every file a run writes, so
- * that the commit removes an earlier run's that this one does not write. Returns 0, or -1 with why
- * filled (out then to be aborted). */
+ * info), the plots with CS_OUTPUT_PLOTS, then more (may be NULL); the commit lists them in the folder's
+ * manifest (outfile.h). Returns 0, or -1 with why filled (out then to be aborted). */
 int cs_write_run_files(cs_outdir *out, const cs_model_input *in, const cs_model *model, const cs_state *state,
                        const cs_record *rec, const cs_run_info *info, int flags, cs_more_outputs more,
                        void *user, char *why, size_t why_size);

@@ -152,6 +152,8 @@ static const char *unfinished(cs_outcome o) {
         return "the vehicle never touched the barrier";
     case CS_DID_NOT_CONVERGE:
         return "the run did not converge";
+    case CS_STEP_LIMIT:
+        return "the run took its scenario.max_steps steps before it ended";
     case CS_STOPPED:
     case CS_REDIRECTED:
         return NULL;

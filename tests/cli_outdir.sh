@@ -1,0 +1,94 @@
+# An output folder never loses a file cablesim did not write (src/io/out/outfile.c): a folder holding
+# such files is refused, naming one, and --force writes beside them without removing or replacing any;
+# a rerun removes only what the earlier run's manifest lists (never a path outside the folder); a
+# second cablesim into a folder in use is kept out, naming the pid that holds it, and a dead holder's
+# lock is taken over. The same rule for sweep, validate and compare.
+# Usage: bash tests/cli_outdir.sh path/to/cablesim
+source "$(dirname "$0")/lib.sh"
+cs=$(cd "$(dirname "$cs")" && pwd)/$(basename "$cs")
+src=$(pwd)
+
+# A user's folder: their report, figure and diagram, and -o . into it.
+user="$tmp/user"
+mkdir -p "$user/plots"
+echo "my report" >"$user/report.html"
+echo "my figure" >"$user/plots/figure.png"
+echo "my diagram" >"$user/plots/diagram.svg"
+mine() { [ "$(cat "$user/report.html")" = "my report" ] && [ "$(cat "$user/plots/figure.png")" = "my figure" ] &&
+    [ "$(cat "$user/plots/diagram.svg")" = "my diagram" ]; }
+out=$(cd "$user" && "$cs" run "$src/examples/aps3.yaml" -o . --t-end "10 ms" --plots --report 2>&1)
+check "a folder of the user's files is refused: status 1" '[ $? -eq 1 ]'
+check "the refusal names one of them and says why" 'grep -qE "nothing run: \\. holds (report\\.html|plots/figure\\.png|plots/diagram\\.svg), which no cablesim run wrote there .*--force" <<<"$out" || { echo "$out"; false; }'
+check "the refusal keeps the user's files and writes nothing" 'mine && [ "$(ls -A "$user" | tr "\\n" " ")" = "plots report.html " ] && [ "$(ls -A "$user/plots" | tr "\\n" " ")" = "diagram.svg figure.png " ]'
+
+out=$(cd "$user" && "$cs" run "$src/examples/aps3.yaml" -o . --t-end "10 ms" --plots --report --force 2>&1)
+check "--force does not write over a file of the user's: status 1, nothing written" '[ $? -eq 1 ] && grep -q "report.html: a file no cablesim run wrote is there" <<<"$out" && mine && [ ! -e "$user/summary.json" ] && [ -z "$(find "$user" -name ".cablesim*")" ]'
+out=$(cd "$user" && "$cs" run "$src/examples/aps3.yaml" -o . --t-end "10 ms" --plots --force 2>&1)
+check "--force writes beside the user's files" '[ $? -eq 0 ] && mine && [ -s "$user/summary.json" ] && [ -s "$user/plots/speed.png" ] || { echo "$out"; false; }'
+check "the manifest lists the run's files, not the user's" 'grep -qx "summary.json" "$user/.cablesim-manifest" && grep -qx "plots/speed.svg" "$user/.cablesim-manifest" && ! grep -qE "report.html|figure|diagram" "$user/.cablesim-manifest"'
+check "no lock or temporary is left" '[ ! -e "$user/.cablesim-lock" ] && [ -z "$(find "$user" -name ".cablesim-tmp.*")" ]'
+out=$(cd "$user" && "$cs" run "$src/examples/aps3.yaml" -o . --t-end "10 ms" --force 2>&1)
+check "a forced rerun removes the earlier run's plots, and only those" '[ $? -eq 0 ] && mine && [ -z "$(ls "$user/plots" | grep -v -e figure.png -e diagram.svg)" ] && [ -s "$user/summary.json" ]'
+
+# A folder cablesim wrote is its own: a rerun needs no --force and removes what it does not write.
+own="$tmp/own"
+"$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" --plots --report >/dev/null 2>&1
+"$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" --plots --report >"$tmp/own.out" 2>&1
+check "a rerun into a folder cablesim wrote" '[ $? -eq 0 ] && [ -s "$own/plots/speed.png" ] || { cat "$tmp/own.out"; false; }'
+"$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" >/dev/null 2>&1
+check "a rerun without --plots and --report removes the earlier figures, the report and plots/" '[ $? -eq 0 ] && [ ! -e "$own/plots" ] && [ ! -e "$own/report.html" ] && [ "$(ls "$own" | tr "\\n" " ")" = "events.csv summary.json timeseries.csv " ]'
+
+# A manifest names files inside its folder only: a line that leaves it removes nothing.
+echo outside >"$tmp/victim.txt"
+mkdir -p "$tmp/linked" && echo linked >"$tmp/linked/x.csv"
+ln -s "$tmp/linked" "$own/sub"
+printf '../victim.txt\n%s\nsub/x.csv\n' "$tmp/victim.txt" >>"$own/.cablesim-manifest"
+"$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" --force >/dev/null 2>&1 # --force: sub is not its own
+check "a manifest's paths out of the folder, absolute or through a link remove nothing" '[ $? -eq 0 ] && [ "$(cat "$tmp/victim.txt")" = outside ] && [ "$(cat "$tmp/linked/x.csv")" = linked ]'
+rm "$own/sub"
+
+# The lock: a run into a folder in use is refused with the holder's pid; a dead holder's lock is taken.
+busy="$tmp/busy"
+"$cs" run examples/aps3.yaml -o "$busy" --dt "0.0002 ms" >/dev/null 2>&1 &
+holder=$!
+for _ in $(seq 200); do
+    [ -s "$busy/.cablesim-lock" ] && break
+    sleep 0.05
+done
+out=$("$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" 2>&1)
+check "a second run into a folder in use is refused, naming the pid holding it" '[ $? -eq 1 ] && grep -q "nothing run: $busy is in use by another cablesim (pid $holder holds $busy/.cablesim-lock)" <<<"$out" || { echo "$out"; false; }'
+kill "$holder"
+wait "$holder" 2>/dev/null
+check "the killed run left its lock, naming it" '[ "$(cat "$busy/.cablesim-lock")" = "$holder" ]'
+out=$("$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" 2>&1)
+check "a dead run's lock is taken over" '[ $? -eq 0 ] && [ -s "$busy/summary.json" ] && [ ! -e "$busy/.cablesim-lock" ] || { echo "$out"; false; }'
+echo 999999999 >"$busy/.cablesim-lock"
+check "a lock file naming no live process is taken over" '"$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" >/dev/null 2>&1'
+
+# A model's name never steers where the files go: results/NAME with a NAME of '..' is refused at its
+# place, and nothing is written (tests/bad/name_*.yaml: the other refusals).
+mkdir -p "$tmp/cwd/a/b"
+out=$(cd "$tmp/cwd/a/b" && "$cs" run "$src/tests/good/base.yaml" --t-end "5 ms" --set "name=../../../victim" 2>&1)
+check "a name out of results/ is refused at its place, nothing written" '[ $? -eq 2 ] && grep -qF -- "--set name=../../../victim: not a name for the output folder results/NAME" <<<"$out" && [ -z "$(find "$tmp/cwd" -mindepth 3)" ] && [ ! -e "$tmp/victim" ]'
+out=$(cd "$tmp/cwd/a/b" && "$cs" designer "$src/tests/bad/name_path.yaml" 2>&1)
+check "designer refuses it too (results/NAME-designer)" '[ $? -eq 2 ] && [ -z "$(find "$tmp/cwd" -mindepth 3)" ] && grep -q "name_path.yaml:2:7: name: not a name for the output folder" <<<"$out"'
+
+# The other commands keep their folders by the same rule.
+out=$("$cs" sweep tests/sweep/grid.yaml -o "$user" --quiet 2>&1)
+check "sweep refuses the user's folder before any run" '[ $? -eq 1 ] && grep -q "nothing run: .*which no cablesim run wrote there" <<<"$out" && mine'
+out=$("$cs" validate -o "$user" --only verification 2>&1)
+check "validate refuses the user's folder" '[ $? -eq 1 ] && grep -q "nothing run: .*which no cablesim run wrote there" <<<"$out" && mine'
+out=$("$cs" compare "$own" -o "$user" 2>&1)
+check "compare refuses the user's folder" '[ $? -eq 1 ] && grep -q "nothing written: .*which no cablesim run wrote there" <<<"$out" && mine'
+out=$("$cs" compare "$own" -o "$user" --force 2>&1)
+check "compare --force writes beside them" '[ $? -eq 0 ] && [ -s "$user/compare.csv" ] && mine || { echo "$out"; false; }'
+out=$("$cs" designer examples/aps3.yaml -o "$user" 2>&1)
+if grep -q "built without emscripten" <<<"$out"; then
+    echo "skipped: designer (this cablesim was built without emscripten)"
+else
+    check "designer refuses the user's folder" '[ $? -eq 1 ] && grep -q "nothing written: .*which no cablesim run wrote there" <<<"$out" && mine'
+fi
+"$cs" compare "$own" -o "$tmp/cmp" >/dev/null 2>&1
+check "compare reruns into its own folder" '"$cs" compare "$own" -o "$tmp/cmp" >/dev/null 2>&1 && [ -s "$tmp/cmp/compare.csv" ]'
+
+finish
