@@ -1,26 +1,32 @@
 #!/usr/bin/env bash
 # Install the Debian packages cablesim needs, only those missing. Safe to run again.
+# `--demo`: only what the command and its report page need (make demo); none: everything the tests,
+# sanitizers, fuzzers, MPI, the designer page and the package need too (make test).
 set -euo pipefail
-# clang + libclang-rt-14-dev: the sanitizer and libFuzzer runtimes (make sanitize, make fuzz); llvm-14:
-# llvm-symbolizer, so their reports name functions and lines.
-pkgs=(build-essential cmake pkg-config clang libclang-rt-14-dev llvm-14 libyaml-dev libudunits2-dev libcmocka-dev
-  libcairo2-dev)
-# libopenmpi-dev + openmpi-bin: cablesim-mpi and mpirun (sweeps shared among processes; tests/sweep_mpi.sh).
-pkgs+=(libopenmpi-dev openmpi-bin)
-# libnetcdf-dev: the sweep's runs.nc (netCDF C library); netcdf-bin: ncdump, which its shell test reads it with.
-pkgs+=(libnetcdf-dev netcdf-bin)
-# libjson-c-dev: cablesim compare reads each run's summary.json.
-pkgs+=(libjson-c-dev)
-# doxygen: the API reference (make docs) and its test (tests/api_docs.sh); help2man: the command's manual
-# page, made from its --help at build time; dpkg-dev: dpkg-shlibdeps, the .deb's dependencies (make package).
-pkgs+=(doxygen help2man dpkg-dev)
-# report.html (report/): node and npm build its page (Debian's only where none is installed: a newer one
-# may be); Debian's chromium and chromium-driver run its browser test.
-pkgs+=(chromium chromium-driver)
+# The command: the compiler and CMake; libyaml (models), udunits2 (units), cairo (plots), netCDF (a
+# sweep's runs.nc), json-c (compare reads summary.json); help2man: the manual page, made from --help at
+# build time. report.html (report/): node and npm build its page (Debian's only where none is installed:
+# a newer one may be).
+pkgs=(build-essential cmake pkg-config libyaml-dev libudunits2-dev libcairo2-dev libnetcdf-dev libjson-c-dev
+  help2man)
 { command -v node && command -v npm; } >/dev/null 2>&1 || pkgs+=(nodejs npm)
-# emscripten: designer.html's engine as WebAssembly (web/build.sh); dpkg-dev (above) unpacks the Debian
-# source of libyaml it compiles for it (scripts/wasm-libyaml.sh, at build time).
-pkgs+=(emscripten)
+if [ "${1:-}" != "--demo" ]; then
+  # libcmocka-dev: the unit tests. clang + libclang-rt-14-dev: the sanitizer and libFuzzer runtimes (make
+  # sanitize, make fuzz); llvm-14: llvm-symbolizer, so their reports name functions and lines.
+  pkgs+=(libcmocka-dev clang libclang-rt-14-dev llvm-14)
+  # libopenmpi-dev + openmpi-bin: cablesim-mpi and mpirun (sweeps shared among processes; tests/sweep_mpi.sh).
+  pkgs+=(libopenmpi-dev openmpi-bin)
+  # netcdf-bin: ncdump, which the sweep's shell test reads runs.nc with.
+  pkgs+=(netcdf-bin)
+  # doxygen: the API reference (make docs) and its test (tests/api_docs.sh); dpkg-dev: dpkg-shlibdeps, the
+  # .deb's dependencies (make package).
+  pkgs+=(doxygen dpkg-dev)
+  # Debian's chromium and chromium-driver run the pages' browser tests.
+  pkgs+=(chromium chromium-driver)
+  # emscripten: designer.html's engine as WebAssembly (web/build.sh); dpkg-dev (above) unpacks the Debian
+  # source of libyaml it compiles for it (scripts/wasm-libyaml.sh, at build time).
+  pkgs+=(emscripten)
+fi
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")
