@@ -122,7 +122,7 @@ typedef struct cs_footing_def {
     double soil_pressure_cap; /**< the paper caps S1 at 8000 psf, Pa */
     double coeff_depth;       /**< c_d (paper 2.37; building code 2.34) */
     double coeff_height;      /**< c_h (paper 2.64; building code 2.55) */
-    double rotation_limit;    /**< footing rotation in soil at which the post is lost, rad */
+    double rotation_limit;    /**< as the post's rotation_limit, where the footing turns in the soil, rad */
     double pullout_capacity;  /**< axial pull along the post that pulls it out, N; 0: the embedment's
                                  skin friction (skin_friction pi B D^2 / 2) */
     double dynamic_factor;    /**< soil resistance under impact over Eq. 21's for a member of the bogie tests'
@@ -161,15 +161,17 @@ typedef struct cs_post_def {
     cs_attachment attachment; /**< how it holds the cables */
     double release_force;     /**< a slot's or hook's retainer strength along the post, N (0: the kind's
                                  documented value, cs_attachment_release_force) */
-    double rotation_limit;    /**< post rotation from vertical at which it fails (paper: 45 deg), rad */
+    double rotation_limit;    /**< rotation from vertical at which a post the vehicle pushes over lets its
+                                 edge ride over it (paper: 45 deg), rad; a post carrying ropes folds on
+                                 until its top reaches grade */
 } cs_post_def;
 
 /** A cable end anchor: a footing (dead-man) in the soil. Every cable is tied to the start anchor at one
  * end and the end anchor at the other, each rope by its own end at height z. The footing resists the
  * ropes' horizontal pull by Eq. 21 at that height (times the soil's dynamic factor for its width, as a
- * post's footing), moves through the soil past it doing the soil's work, and pulls out, releasing the
- * ropes, when it has travelled as far as its geometry allows (turned to its footing's rotation limit
- * about the pivot 2/3 of its depth down) or when the ropes lift it with more than its pullout capacity.
+ * post's footing), ploughs on through the soil past it at a resistance falling to its residual (the
+ * footing's residual_friction_angle) doing the soil's work, and pulls out, releasing the ropes, only when
+ * the ropes lift it with more than its pullout capacity (its footing's rotation_limit is not used).
  * A footing of zero diameter is rigid: it never moves or pulls out (a rock anchor, a test's fixed end). */
 typedef struct cs_anchor_def {
     double x;                /**< m */

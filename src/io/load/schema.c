@@ -194,7 +194,9 @@ static const cs_field footing_fields[] = {
     FT("depth", CS_Q_LENGTH, CS_REQ | CS_POS, depth, "D: embedment depth"),
     SOIL_FIELDS,
     FT("rotation_limit", CS_Q_ANGLE, CS_POS | CS_MAX90, rotation_limit,
-       "footing rotation at which the post is lost"),
+       "footing rotation at which a post the vehicle pushes over lets it ride over (a post carrying ropes "
+       "folds "
+       "on until its top reaches grade)"),
     FT("pullout_capacity", CS_Q_FORCE, CS_POS | CS_NONE_OK, pullout_capacity,
        "axial pull along the post that pulls it out (none: never; omitted: the skin friction's)"),
 };
@@ -276,7 +278,9 @@ static const cs_field posts_fields[] = {
      "slot open at the top, let go as the post bends over) or hook (hook bolts that open)"},
     P("release_force", CS_Q_FORCE, CS_POS, release_force,
       "a slot's or hook's retainer strength along the post (not given: the kind's documented value)"),
-    P("rotation_limit", CS_Q_ANGLE, CS_POS | CS_MAX90, rotation_limit, "post rotation at which it fails"),
+    P("rotation_limit", CS_Q_ANGLE, CS_POS | CS_MAX90, rotation_limit,
+      "rotation at which a post the vehicle pushes over lets it ride over (a post carrying ropes folds on "
+      "until its top reaches grade)"),
 };
 const cs_table cs_table_posts = {"posts",
                                  "A group of identical posts: one by one (x) or as a run (from, "
