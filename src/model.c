@@ -421,6 +421,8 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
             3.0 * d->section.modulus * d->section.inertia * lever * lever / (mean_z * mean_z * mean_z);
         pm->shear_cap = 0.6 * d->section.web_area * d->section.yield_stress;
         pm->pullout_cap = cs_footing_pullout_capacity(&d->footing);
+        pm->embedment = d->footing.depth;
+        pm->pull_stiffness = pm->pullout_cap / CS_SHAFT_MOBILISATION;
         pm->rot_limit = pm->soil_yields ? d->footing.rotation_limit : d->rotation_limit;
         pm->lie_angle = acos(pm->pivot / (d->height + pm->pivot));
         pm->clamped = d->attachment == CS_ATTACH_CLAMPED;
