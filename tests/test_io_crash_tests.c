@@ -149,9 +149,10 @@ static void aps3_upper_rope_idle_at_the_peak(void **state) {
             t_lo = largest_tension(lo), t_up = largest_tension(up);
         }
     }
-    printf("peak deflection %.3f m at %.4f s: lower %.1f kN, upper %.2f kN over %d nodes, ratio %.4f (at most "
-           "0.03 by hand)\n",
-           pen, at, t_lo / 1e3, t_up / 1e3, nodes, t_up / t_lo);
+    printf(
+        "peak deflection %.3f m at %.4f s: lower %.1f kN, upper %.2f kN over %d nodes, ratio %.4f (at most "
+        "0.03 by hand)\n",
+        pen, at, t_lo / 1e3, t_up / 1e3, nodes, t_up / t_lo);
     assert_true(t_up / t_lo < 0.03);
     assert_true(t_up < 4.5e3); /* the 19.8-m span's sag tension with all of the slack: no span holds more */
     cs_state_free(s);
