@@ -7,6 +7,8 @@
  *   change of prediction is a visible change of that file (APS3 and APS4 stay blind: these are the
  *   model's predictions, not test results).
  * Rewrite both with CS_PIN_UPDATE=1 build/test_io_crash_tests (it prints what to store).
+ * Each must also pass the sudden-loss check (src/response.c): no 10-ms window in which the force on the
+ * vehicle falls by half its peak unless a rope, a fitting or an attachment let go in it.
  * And APS3's two ropes against their hand calculation (docs/theory.md, "Two ropes on one dead-man"). */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -44,6 +46,10 @@ static pinned run(const char *name, unsigned long long *hash) {
     assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
     cs_summary sm;
     cs_state_summary(s, &sm);
+    if (sm.sudden_loss_count) /* no element drops its load without a rope, fitting or slot letting go */
+        fail_msg("%s: %d sudden losses of the force on the vehicle with no rope, fitting or attachment to "
+                 "explain them",
+                 name, sm.sudden_loss_count);
     pinned p;
     memset(&p, 0, sizeof p);
     snprintf(p.outcome, sizeof p.outcome, "%s", cs_outcome_name(sm.outcome));
