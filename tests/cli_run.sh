@@ -22,6 +22,16 @@ for f in examples/*.yaml; do
     check "check $f" '"$cs" check "$f" >/dev/null'
 done
 check "check --set" '"$cs" check examples/aps3.yaml --set scenario.speed="35 mph" --set "barrier.cables[0].pretension=8 kip" >/dev/null'
+# A shallow angle: at 3 deg the face's centre at APS3's impact point puts its leading corner on the cable
+# line 22.93 m (1.2 m / sin 3 deg) before it, outside the barrier: refused, not run as a ride over ropes it
+# never met; with impact_at: corner the corner strikes there and the ropes take the vehicle (a glancing
+# contact: the face pushes the line out and the ropes do work on it).
+"$cs" run examples/aps3.yaml -o "$tmp/shallow" --set "scenario.angle=3 deg" >/dev/null 2>"$tmp/stderr"
+check "a vehicle that would pass the barrier's end is refused (status 2), where and why" \
+    '[ $? -eq 2 ] && grep -q "at 3 deg the vehicle.s leading front corner meets the cable line at x = -2.20 m" "$tmp/stderr" && [ ! -e "$tmp/shallow" ]'
+"$cs" run examples/aps3.yaml -o "$tmp/shallow" --t-end "0.3 s" --set "scenario.angle=3 deg" --set scenario.impact_at=corner >"$tmp/stdout" 2>&1
+check "at 3 deg to the corner the ropes take the vehicle" \
+    'grep -oE "\"max_barrier_deflection_m\":[0-9.]+" "$tmp/shallow/summary.json" | awk -F: "{ exit !(\$2 > 0.1) }"'
 
 out="$tmp/aps3"
 "$cs" run examples/aps3.yaml -o "$out" --t-end "20 ms" --set scenario.speed="35 mph" >"$tmp/stdout" 2>"$tmp/stderr"
