@@ -77,6 +77,7 @@ typedef struct cs_post_model {
     double pullout_cap;    /* N */
     double embedment;      /* the length of it in the ground that its pullout capacity holds, m */
     double pull_stiffness; /* its pull along its axis over the slip that mobilises it, N/m (post_pullout.c) */
+    double pull_mass;      /* what slides out with it along its axis: its steel and half its rail spans, kg */
     double rot_limit;      /* rad: a struck post's, past which the vehicle's edge rides over it */
     double lie_angle;      /* rad: the tilt at which its top reaches grade, acos(pivot / (height + pivot)) */
     double load_height;    /* mean cable height on the post, m */
@@ -181,6 +182,9 @@ typedef struct cs_post_state {
     int withdrawing;       /* its pull has reached its pullout capacity: it slides out (post_pullout.c) */
     double pull;           /* how far it has slid out along its axis, m */
     double pull_plastic;   /* the plastic part of that (committed), m */
+    double pull_commit;    /* the pull at the last commit, m */
+    double pull_rate;      /* its rate then, m/s */
+    double pull_net;       /* the net pull (ropes and rails less the shaft) then, N */
 } cs_post_state;
 
 typedef struct cs_work cs_work; /* work.h */
@@ -415,8 +419,10 @@ double cs_post_axial_pull(const cs_model *model, const cs_state *s, int p);
 int cs_post_pull_start(const cs_model *model, cs_state *s, int p);
 /* End of step: the slide's plastic work (soil) and the post out of the ground at its embedment. */
 void cs_post_pull_commit(const cs_model *model, cs_state *s, int p);
-/* The energy its shaft's slip stores, counted from where the slide started. */
+/* The energy its shaft's slip stores, counted from where the slide started; the kinetic energy of the slide.
+ */
 double cs_post_pull_energy(const cs_model *model, const cs_state *s, int p);
+double cs_post_pull_kinetic_energy(const cs_model *model, const cs_state *s, int p);
 
 /* ---- attachments (attachment.c) ---- */
 /* The cosine of the lean at which a cable held at height z reaches the open end of post pm's slot. */

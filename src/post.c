@@ -277,7 +277,8 @@ double cs_post_elastic_energy(const cs_model *model, const cs_state *s, int p) {
 double cs_post_kinetic_energy(const cs_model *model, const cs_state *s, int p) {
     const cs_post_state *ps = &s->posts[p];
     if (!cs_post_standing(ps)) return 0.0;
-    return 0.5 * model->posts[p].inertia * (ps->rate[0] * ps->rate[0] + ps->rate[1] * ps->rate[1]);
+    return 0.5 * model->posts[p].inertia * (ps->rate[0] * ps->rate[0] + ps->rate[1] * ps->rate[1]) +
+           cs_post_pull_kinetic_energy(model, s, p);
 }
 
 double cs_post_stored_energy(const cs_model *model, const cs_state *s, int p) {

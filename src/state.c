@@ -322,6 +322,7 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
         hash_bytes(&h, flags, sizeof flags);
         hash_bytes(&h, &ps->pull, sizeof ps->pull);
         hash_bytes(&h, &ps->pull_plastic, sizeof ps->pull_plastic);
+        hash_bytes(&h, &ps->pull_rate, sizeof ps->pull_rate);
         hash_bytes(&h, ps->tilt, sizeof ps->tilt);
         hash_bytes(&h, ps->plastic, sizeof ps->plastic);
         hash_bytes(&h, ps->rate, sizeof ps->rate);
