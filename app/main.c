@@ -238,7 +238,8 @@ static int run(const cs_model_input *in, cs_model *model, const options *o, cons
         cs_out_abort(&out);
         return EXIT_RUN;
     }
-    cs_run_info info = {command, NULL, o->overrides->count, cs_model_input_hash(in), {{0}}, 0};
+    cs_run_info info = {
+        .command = command, .override_count = o->overrides->count, .model_hash = cs_model_input_hash(in)};
     const char *overrides[64];
     for (int i = 0; i < o->overrides->count; i++)
         overrides[i] = o->overrides->text[i];
@@ -253,6 +254,7 @@ static int run(const cs_model_input *in, cs_model *model, const options *o, cons
         cs_summary sm;
         cs_state_summary(state, &sm);
         cs_run_info_rate(&info, in, &sm);
+        cs_run_info_motion(&info, &rec, &sm);
         if (write_outputs(&out, in, model, state, &rec, &info, o->plots, o->report) == 0) {
             cs_write_summary_text_with(stdout, in, model, state, &info);
             printf("  outputs              %s/{timeseries.csv,events.csv,summary.json%s%s}\n", dir,

@@ -17,8 +17,15 @@ void cs_run_info_rate(cs_run_info *info, const cs_model_input *in, const cs_summ
                 standards[i], NULL, &in->vehicle, in->scenario.speed, in->scenario.angle, summary, &rules);
 }
 
+void cs_run_info_motion(cs_run_info *info, const cs_record *rec, const cs_summary *summary) {
+    info->motion = 1;
+    cs_record_roll_pitch_peaks(rec, &info->roll_peak, &info->pitch_peak);
+    info->occupant_ok = cs_occupant_risk_of_run(rec, summary->first_contact_time_s, &info->occupant,
+                                                info->occupant_why, sizeof info->occupant_why) == 0;
+}
+
 void cs_run_info_of(cs_run_info *info, const cs_model_input *in, const cs_state *state) {
-    *info = (cs_run_info){NULL, NULL, 0, cs_model_input_hash(in), {{0}}, 0};
+    *info = (cs_run_info){.model_hash = cs_model_input_hash(in)};
     cs_summary s;
     cs_state_summary(state, &s);
     cs_run_info_rate(info, in, &s);
