@@ -254,7 +254,7 @@ static int run(const cs_model_input *in, cs_model *model, const options *o, cons
         cs_summary sm;
         cs_state_summary(state, &sm);
         cs_run_info_rate(&info, in, &sm);
-        cs_run_info_motion(&info, &rec, &sm);
+        cs_run_info_motion(&info, in, &rec, &sm);
         if (write_outputs(&out, in, model, state, &rec, &info, o->plots, o->report) == 0) {
             cs_write_summary_text_with(stdout, in, model, state, &info);
             printf("  outputs              %s/{timeseries.csv,events.csv,summary.json%s%s}\n", dir,

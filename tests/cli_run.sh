@@ -148,6 +148,15 @@ check "breakthrough: the $hinges post hinges counted, not listed" '[ "$hinges" -
 j="$tmp/stops/summary.json"
 check "stopped: its penetration given" 'grep -q "\"outcome\":\"stopped\"" "$j" && grep -qE "\"max_dynamic_penetration_m\":[0-9]" "$j" && grep -q "\"penetration_beyond_m\":null," "$j" && grep -qE "^  max penetration      [0-9.]+ m" "$tmp/stops.out"'
 
+# A roadside run (RS1, NCHRP 350 test 3-11's pickup at 25.7 deg): its occupant risk with units, its roll
+# and pitch peaks, and the criteria of the test it stands for, in summary.json and the terminal.
+out=$("$cs" run examples/roadside/rs1.yaml -o "$tmp/rs1" 2>&1)
+j="$tmp/rs1/summary.json"
+check "rs1: summary.json's occupant risk with units" 'grep -qE "\"occupant_risk\":\{\"basis\":\"[^\"]*CFC 180[^\"]*\",\"occupant_impact\":\"in_run\",\"occupant_impact_time_s\":[0-9.e-]+,\"oiv_longitudinal_mps\":[0-9.e-]+,\"oiv_lateral_mps\":[0-9.e-]+,\"ora_longitudinal_g\":[0-9.e-]+,\"ora_lateral_g\":[0-9.e-]+,\"head_impact\":\"in_run\",\"thiv_time_s\":[0-9.e-]+,\"thiv_mps\":[0-9.e-]+,\"thiv_kmh\":[0-9.e-]+,\"phd_g\":[0-9.e-]+,\"asi\":[0-9.e-]+,\"asi_time_s\":[0-9.e-]+\},\"max_roll_deg\":[0-9.e-]+,\"max_pitch_deg\":[0-9.e-]+" "$j"'
+check "rs1: the criteria of NCHRP 350 3-11 as run" 'grep -qE "\"roadside_criteria\":\{\"standard\":\"nchrp-350\",\"test\":\"3-11\",\"criteria\":\[\{\"id\":\"A\"" "$j" && grep -qE "\"id\":\"D\",[^}]*\"verdict\":\"not judged\"" "$j"'
+check "rs1: the terminal's occupant risk and criteria" 'grep -qE "^  occupant impact      [0-9.]+ s after first contact: OIV [0-9.]+ m/s \([0-9.]+ ft/s\) longitudinal" <<<"$out" && grep -qE "^  EN 1317-1            THIV [0-9.]+ km/h \([0-9.]+ m/s\), PHD [0-9.]+ g, ASI [0-9.]+$" <<<"$out" && grep -qE "^  criteria \(as run\)    nchrp-350 3-11: A (pass|FAIL), D not judged," <<<"$out"'
+check "aps3 (head-on, the 15,000-lb truck): no roadside criteria" 'grep -q "\"roadside_criteria\":null" "$tmp/aps3/summary.json"'
+
 # Runs that end: an output interval below the step (1e-30 s never moved the next frame on) or past 10
 # million frames is refused at its place; scenario.max_steps ends a run "step_limit" (tests/test_crash.c:
 # the engine's side).

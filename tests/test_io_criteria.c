@@ -180,8 +180,33 @@ static void exit_box(void **state) {
     assert_int_equal(find(c, n, "exit box")->verdict, CS_VERDICT_PASS);
 }
 
+static void test_as_run(void **state) {
+    (void)state;
+    struct {
+        double mass;
+        const char *standard, *name;
+    } cases[] = {{2000, "nchrp-350", "3-11"}, {2100, "nchrp-350", "3-11"}, {2270, "mash", "3-11"},
+                 {820, "nchrp-350", "3-10"},  {1100, "mash", "3-10"},      {8000, "nchrp-350", "4-12"},
+                 {10000, "mash", "4-12"},     {6804, NULL, NULL},          {2110, NULL, NULL}};
+    cs_vehicle_def v;
+    memset(&v, 0, sizeof v);
+    cs_roadside_test t;
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        v.mass = cases[i].mass;
+        int found = cs_roadside_test_as_run(&v, 27.6, 25.7 * DEG, &t);
+        assert_int_equal(found, cases[i].standard != NULL);
+        if (!found) continue;
+        assert_string_equal(t.standard, cases[i].standard);
+        assert_string_equal(t.name, cases[i].name);
+        CHECK_REL(t.speed, 27.6, 1e-12); /* the run's own speed and angle */
+        CHECK_REL(t.angle, 25.7 * DEG, 1e-12);
+    }
+    v.mass = 2000; /* head-on: no roadside test */
+    assert_int_equal(cs_roadside_test_as_run(&v, 27.6, 90 * DEG, &t), 0);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(criteria_of_each_test), cmocka_unit_test(limits),
-                                       cmocka_unit_test(exit_box)};
+                                       cmocka_unit_test(exit_box), cmocka_unit_test(test_as_run)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

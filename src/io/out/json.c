@@ -287,6 +287,39 @@ static void occupant_risk(cs_wout *w, int *first, const cs_run_info *info) {
     fputc('\n', f);
 }
 
+/* "roadside_criteria": the criteria of the roadside test the run stands for, as run, or null. */
+static void roadside_criteria(cs_wout *w, int *first, const cs_run_info *info) {
+    FILE *f = w->f;
+    jkey(w, first, "roadside_criteria");
+    if (!info || !info->criteria_count) {
+        fputs("null", f);
+        return;
+    }
+    int cf = 1;
+    fputc('{', f);
+    jkey(w, &cf, "standard");
+    cs_json_string(f, info->criteria_test.standard);
+    jkey(w, &cf, "test");
+    cs_json_string(f, info->criteria_test.name);
+    jkey(w, &cf, "criteria");
+    fputc('[', f);
+    for (int k = 0; k < info->criteria_count; k++) {
+        const cs_criterion *c = &info->criteria[k];
+        int kf = 1;
+        fputs(k ? ",{" : "{", f);
+        jkey(w, &kf, "id");
+        cs_json_string(f, c->id);
+        jkey(w, &kf, "criterion");
+        cs_json_string(f, c->name);
+        jkey(w, &kf, "verdict");
+        cs_json_string(f, cs_verdict_name(c->verdict));
+        jkey(w, &kf, "detail");
+        cs_json_string(f, c->detail);
+        fputc('}', f);
+    }
+    fputs("]}\n", f);
+}
+
 int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_model *model, const cs_state *state,
                           char *why, size_t why_size) {
     cs_run_info info;
@@ -388,6 +421,7 @@ int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model
     cables_and_losses(&w, &first, state, &s);
     ratings(&w, &first, info);
     occupant_risk(&w, &first, info);
+    roadside_criteria(&w, &first, info);
     jkey(&w, &first, "events");
     fprintf(f, "[");
     for (int i = 0; i < cs_state_event_count(state); i++) {

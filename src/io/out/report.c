@@ -196,6 +196,13 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
         fprintf(f, "  solver warnings      %d steps (largest residual %.2g)\n", s.solver_warnings,
                 s.max_solver_residual);
     occupant(f, info);
+    if (info && info->criteria_count) {
+        fprintf(f, "  criteria (as run)    %s %s:", info->criteria_test.standard, info->criteria_test.name);
+        for (int k = 0; k < info->criteria_count; k++)
+            fprintf(f, "%s %s %s", k ? "," : "", info->criteria[k].id,
+                    cs_verdict_name(info->criteria[k].verdict));
+        fprintf(f, " (each with its numbers: summary.json roadside_criteria)\n");
+    }
     for (int i = 0; info && i < info->rating_count; i++) {
         char text[256];
         cs_rating_text(&info->ratings[i], text, sizeof text);

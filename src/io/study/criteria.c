@@ -4,6 +4,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "cablesim/units.h"
@@ -202,4 +203,22 @@ int cs_roadside_criteria(const cs_roadside_test *t, const cs_test_result *r, cs_
         exit_angle(&l, t, r->summary);
     }
     return l.n;
+}
+
+int cs_roadside_test_as_run(const cs_vehicle_def *v, double speed, double angle, cs_roadside_test *out) {
+    static const char *const standards[] = {"nchrp-350", "mash"};
+    if (!(angle > 0.0 && angle < 45.0 * CS_DEG)) return 0;
+    for (int k = 0; k < 4; k++) { /* level 3 of each standard, then level 4 (the 4-12 trucks) */
+        cs_roadside_test t[3];
+        int n = cs_roadside_tests(standards[k % 2], 3 + k / 2, NULL, t);
+        for (int i = 0; i < n; i++) {
+            double mass = atof(t[i].vehicle);
+            if (fabs(v->mass - mass) <= 0.05 * mass) {
+                *out = t[i];
+                out->speed = speed, out->angle = angle;
+                return 1;
+            }
+        }
+    }
+    return 0;
 }
