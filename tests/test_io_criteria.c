@@ -32,6 +32,15 @@ static const cs_criterion *find(const cs_criterion *c, int n, const char *id) {
     return NULL;
 }
 
+/* The verdict of criterion id of a test on a result. */
+static cs_verdict verdict_of(const char *standard, const char *name, const cs_test_result *r,
+                             const char *id) {
+    cs_criterion c[CS_CRITERIA_MAX];
+    char ids[128];
+    int n = judge(standard, name, r, c, ids, sizeof ids);
+    return find(c, n, id)->verdict;
+}
+
 static cs_summary redirected(double exit_angle) {
     cs_summary s;
     memset(&s, 0, sizeof s);
@@ -105,31 +114,24 @@ static void limits(void **state) {
     /* roll and pitch: 75 deg passes, past it fails */
     memset(&o, 0, sizeof o);
     r.roll_peak = 75 * DEG, r.pitch_peak = 10 * DEG;
-    int n = judge("mash", "3-11", &r, c, ids, sizeof ids);
-    assert_int_equal(find(c, n, "F")->verdict, CS_VERDICT_PASS);
+    assert_int_equal(verdict_of("mash", "3-11", &r, "F"), CS_VERDICT_PASS);
     r.pitch_peak = 75.1 * DEG;
-    n = judge("mash", "3-11", &r, c, ids, sizeof ids);
-    assert_int_equal(find(c, n, "F")->verdict, CS_VERDICT_FAIL);
+    assert_int_equal(verdict_of("mash", "3-11", &r, "F"), CS_VERDICT_FAIL);
     r.roll_peak = r.pitch_peak = 0.0;
     /* M: 60% of 25 deg is 15 deg */
     s = redirected(14.9);
-    n = judge("nchrp-350", "3-11", &r, c, ids, sizeof ids);
-    assert_int_equal(find(c, n, "M")->verdict, CS_VERDICT_PASS);
+    assert_int_equal(verdict_of("nchrp-350", "3-11", &r, "M"), CS_VERDICT_PASS);
     s = redirected(15.1);
-    n = judge("nchrp-350", "3-11", &r, c, ids, sizeof ids);
-    assert_int_equal(find(c, n, "M")->verdict, CS_VERDICT_FAIL);
+    assert_int_equal(verdict_of("nchrp-350", "3-11", &r, "M"), CS_VERDICT_FAIL);
     /* A: through fails, stopped passes, the time limit is not judged */
     s.outcome = CS_BREAKTHROUGH;
-    n = judge("mash", "3-11", &r, c, ids, sizeof ids);
-    assert_int_equal(find(c, n, "A")->verdict, CS_VERDICT_FAIL);
-    assert_int_equal(find(c, n, "exit box")->verdict, CS_VERDICT_NOT_JUDGED);
+    assert_int_equal(verdict_of("mash", "3-11", &r, "A"), CS_VERDICT_FAIL);
+    assert_int_equal(verdict_of("mash", "3-11", &r, "exit box"), CS_VERDICT_NOT_JUDGED);
     s.outcome = CS_STOPPED;
-    n = judge("mash", "3-11", &r, c, ids, sizeof ids);
-    assert_int_equal(find(c, n, "A")->verdict, CS_VERDICT_PASS);
+    assert_int_equal(verdict_of("mash", "3-11", &r, "A"), CS_VERDICT_PASS);
     s.outcome = CS_TIME_LIMIT;
-    n = judge("nchrp-350", "3-11", &r, c, ids, sizeof ids);
-    assert_int_equal(find(c, n, "A")->verdict, CS_VERDICT_NOT_JUDGED);
-    assert_int_equal(find(c, n, "M")->verdict, CS_VERDICT_NOT_JUDGED);
+    assert_int_equal(verdict_of("nchrp-350", "3-11", &r, "A"), CS_VERDICT_NOT_JUDGED);
+    assert_int_equal(verdict_of("nchrp-350", "3-11", &r, "M"), CS_VERDICT_NOT_JUDGED);
 }
 
 /* A record of two frames: the vehicle (yaw 0) with its left wheels over the barrier's line, then at its
