@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include "check.h"
+#include "out/record.h"
 #include "study/occupant.h"
 
 #define PI 3.14159265358979323846
@@ -220,6 +221,56 @@ static void bad_motion(void **state) {
     free(mo.buf);
 }
 
+/* A record's motion in the vehicle's axes: a vehicle yawed 30 deg and rolled 10 deg decelerating at 8 g
+ * along its own x and 2 g along its own y (the world accelerations turned by Rz Ry Rx), frames every
+ * 1 ms from 0 to 0.5 s, first contact at 0.1 s: resampled every 0.1 ms from the contact, the body
+ * accelerations come back, and the occupant risk is the constant deceleration's closed form. */
+static void motion_of_a_record(void **state) {
+    (void)state;
+    enum { FRAMES = 501 };
+    static cs_vehicle_view frames[FRAMES];
+    const double yaw = 30 * PI / 180, roll = 10 * PI / 180, bx = -8 * G, by = 2 * G;
+    for (int i = 0; i < FRAMES; i++) {
+        cs_vehicle_view *v = &frames[i];
+        memset(v, 0, sizeof *v);
+        v->t = 1e-3 * i, v->yaw = yaw, v->roll = roll, v->angular_velocity[2] = 0.0;
+        /* world = Rz(yaw) Rx(roll) (bx, by, 0) */
+        double ry = cos(roll) * by, rz = sin(roll) * by;
+        v->acceleration[0] = cos(yaw) * bx - sin(yaw) * ry;
+        v->acceleration[1] = sin(yaw) * bx + cos(yaw) * ry;
+        v->acceleration[2] = rz;
+    }
+    cs_record rec;
+    memset(&rec, 0, sizeof rec);
+    rec.frame_count = FRAMES, rec.vehicle = frames;
+    cs_vehicle_motion m;
+    char why[200];
+    assert_int_equal(cs_vehicle_motion_of_record(&rec, 0.1, 1e-4, &m, why, sizeof why), 0);
+    assert_int_equal(m.n, 4001); /* 0.4 s after the contact, every 0.1 ms */
+    for (int i = 0; i < m.n; i += 97) {
+        CHECK_REL(m.ax[i], bx, 1e-12);
+        CHECK_REL(m.ay[i], by, 1e-12);
+        CHECK_ABS(m.az[i], 0.0, 1e-9);
+    }
+    free((void *)m.ax);
+    cs_occupant_risk o;
+    assert_int_equal(cs_occupant_risk_of_run(&rec, 0.1, &o, why, sizeof why), 0);
+    double t = sqrt(2 * 0.6 / (8 * G));
+    CHECK_REL(o.t_impact, t, 1e-4);
+    CHECK_REL(o.oiv_x, 8 * G * t, 1e-4);
+    CHECK_REL(o.oiv_y, 2 * G * t, 1e-4);
+    CHECK_REL(o.ora_x, 8.0, 1e-9);
+    double roll_peak, pitch_peak;
+    cs_record_roll_pitch_peaks(&rec, &roll_peak, &pitch_peak);
+    CHECK_REL(roll_peak, roll, 1e-12);
+    CHECK_ABS(pitch_peak, 0.0, 0.0);
+    /* no contact, or none before the end: refused with the reason */
+    assert_int_equal(cs_occupant_risk_of_run(&rec, -1.0, &o, why, sizeof why), -1);
+    assert_non_null(strstr(why, "never touched"));
+    assert_int_equal(cs_occupant_risk_of_run(&rec, 0.5, &o, why, sizeof why), -1);
+    assert_non_null(strstr(why, "no motion after the first contact"));
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(cfc_gain_closed_form),
                                        cmocka_unit_test(constant_deceleration),
@@ -227,6 +278,7 @@ int main(void) {
                                        cmocka_unit_test(thiv_on_a_circle),
                                        cmocka_unit_test(asi_constant),
                                        cmocka_unit_test(window_mean),
-                                       cmocka_unit_test(bad_motion)};
+                                       cmocka_unit_test(bad_motion),
+                                       cmocka_unit_test(motion_of_a_record)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
