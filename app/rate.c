@@ -160,7 +160,7 @@ static int rate_roadside(cs_loader *l, const char *file, const char *standard, c
         if (tl.failed[0])
             printf("%s: criteria failed: %s\n", what, listed(tl.failed));
         else
-            printf("%s: every criterion judged passed\n", what);
+            printf("%s: every judged criterion passed\n", what);
         if (tl.not_judged[0])
             printf("%s: not judged (the model cannot tell; no pass implied): %s\n", what,
                    listed(tl.not_judged));
