@@ -90,7 +90,7 @@ static int roadside_one(cs_loader *l, const cs_model_input *in, const cs_roadsid
             r.deflection, r.deflection / CS_FT, r.working_width_m, r.working_width_m / CS_FT, exit);
         cs_occupant_risk o;
         char why[160] = "";
-        int have = cs_occupant_risk_of_run(rec, sm.first_contact_time_s, &o, why, sizeof why) == 0;
+        int have = cs_occupant_risk_of_run(rec, sm.first_contact_time_s, NULL, &o, why, sizeof why) == 0;
         cs_exit_box box;
         cs_exit_box_of_record(rec, &v, sc.impact_x, &box);
         cs_test_result res = {&sm, have ? &o : NULL, why, 0.0, 0.0, &box};

@@ -221,6 +221,14 @@ static void bad_motion(void **state) {
     free(mo.buf);
 }
 
+/* A record holding these vehicle frames alone. */
+static cs_record record_of(cs_vehicle_view *frames, int n) {
+    cs_record rec;
+    memset(&rec, 0, sizeof rec);
+    rec.frame_count = n, rec.vehicle = frames;
+    return rec;
+}
+
 /* A record's motion in the vehicle's axes: a vehicle yawed 30 deg and rolled 10 deg decelerating at 8 g
  * along its own x and 2 g along its own y (the world accelerations turned by Rz Ry Rx), frames every
  * 1 ms from 0 to 0.5 s, first contact at 0.1 s: resampled every 0.1 ms from the contact, the body
@@ -240,12 +248,10 @@ static void motion_of_a_record(void **state) {
         v->acceleration[1] = sin(yaw) * bx + cos(yaw) * ry;
         v->acceleration[2] = rz;
     }
-    cs_record rec;
-    memset(&rec, 0, sizeof rec);
-    rec.frame_count = FRAMES, rec.vehicle = frames;
+    cs_record rec = record_of(frames, FRAMES);
     cs_vehicle_motion m;
     char why[200];
-    assert_int_equal(cs_vehicle_motion_of_record(&rec, 0.1, 1e-4, &m, why, sizeof why), 0);
+    assert_int_equal(cs_vehicle_motion_of_record(&rec, 0.1, 1e-4, NULL, &m, why, sizeof why), 0);
     assert_int_equal(m.n, 4001); /* 0.4 s after the contact, every 0.1 ms */
     for (int i = 0; i < m.n; i += 97) {
         CHECK_REL(m.ax[i], bx, 1e-12);
@@ -254,7 +260,7 @@ static void motion_of_a_record(void **state) {
     }
     free((void *)m.ax);
     cs_occupant_risk o;
-    assert_int_equal(cs_occupant_risk_of_run(&rec, 0.1, &o, why, sizeof why), 0);
+    assert_int_equal(cs_occupant_risk_of_run(&rec, 0.1, NULL, &o, why, sizeof why), 0);
     double t = sqrt(2 * 0.6 / (8 * G));
     CHECK_REL(o.t_impact, t, 1e-4);
     CHECK_REL(o.oiv_x, 8 * G * t, 1e-4);
@@ -265,10 +271,38 @@ static void motion_of_a_record(void **state) {
     CHECK_REL(roll_peak, roll, 1e-12);
     CHECK_ABS(pitch_peak, 0.0, 0.0);
     /* no contact, or none before the end: refused with the reason */
-    assert_int_equal(cs_occupant_risk_of_run(&rec, -1.0, &o, why, sizeof why), -1);
+    assert_int_equal(cs_occupant_risk_of_run(&rec, -1.0, NULL, &o, why, sizeof why), -1);
     assert_non_null(strstr(why, "never touched"));
-    assert_int_equal(cs_occupant_risk_of_run(&rec, 0.5, &o, why, sizeof why), -1);
+    assert_int_equal(cs_occupant_risk_of_run(&rec, 0.5, NULL, &o, why, sizeof why), -1);
     assert_non_null(strstr(why, "no motion after the first contact"));
+}
+
+/* At a point r from the CG of a body turning about its vertical axis with yaw rate w = w0 + alpha t and
+ * no acceleration at its CG: a = alpha x r + w x (w x r); for r = (x0, y0, z0): (-w^2 x0 - alpha y0,
+ * -w^2 y0 + alpha x0, 0). */
+static void motion_at_a_point(void **state) {
+    (void)state;
+    enum { FRAMES = 201 };
+    static cs_vehicle_view frames[FRAMES];
+    const double w0 = 0.5, alpha = 2.0, r[3] = {0.6, -0.4, 0.3};
+    for (int i = 0; i < FRAMES; i++) {
+        memset(&frames[i], 0, sizeof frames[i]);
+        frames[i].t = 1e-3 * i;
+        frames[i].angular_velocity[2] = w0 + alpha * frames[i].t;
+    }
+    cs_record rec = record_of(frames, FRAMES);
+    cs_vehicle_motion m;
+    char why[200];
+    assert_int_equal(cs_vehicle_motion_of_record(&rec, 0.0, 1e-4, r, &m, why, sizeof why), 0);
+    for (int i = 0; i < m.n; i += 101) {
+        double t = i * m.dt, w = w0 + alpha * t;
+        /* linear in t between frames, w^2 is not: within (1 ms)^2 alpha^2 / 4 of the closed form */
+        CHECK_ABS(m.ax[i], -w * w * r[0] - alpha * r[1], 1e-5);
+        CHECK_ABS(m.ay[i], -w * w * r[1] + alpha * r[0], 1e-5);
+        CHECK_ABS(m.az[i], 0.0, 1e-12);
+        CHECK_REL(m.yaw_rate[i], w, 1e-12);
+    }
+    free((void *)m.ax);
 }
 
 int main(void) {
@@ -279,6 +313,7 @@ int main(void) {
                                        cmocka_unit_test(asi_constant),
                                        cmocka_unit_test(window_mean),
                                        cmocka_unit_test(bad_motion),
-                                       cmocka_unit_test(motion_of_a_record)};
+                                       cmocka_unit_test(motion_of_a_record),
+                                       cmocka_unit_test(motion_at_a_point)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -259,10 +259,14 @@ static void occupant_risk(cs_wout *w, int *first, const cs_run_info *info) {
         int of = 1;
         fputc('{', f);
         jkey(w, &of, "basis");
-        fprintf(f,
-                "\"the vehicle's centre of gravity, accelerations filtered to SAE J211/1 CFC %.0f, from the "
-                "first contact\"",
+        fprintf(f, "\"%s, accelerations filtered to SAE J211/1 CFC %.0f, from the first contact\"",
+                info->occupant_at
+                    ? "a point of the vehicle (point_m: from its centre of gravity, x forward, y "
+                      "left, z up)"
+                    : "the vehicle's centre of gravity",
                 r.cfc);
+        const double cg[3] = {0, 0, 0};
+        jarray(w, &of, "point_m", info->occupant_at ? info->occupant_point : cg, 3);
         jkey(w, &of, "occupant_impact");
         cs_json_string(f, cs_flail_impact_name(o->impact));
         jopt(w, &of, "occupant_impact_time_s", o->t_impact);

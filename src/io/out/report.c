@@ -79,6 +79,9 @@ static void occupant(FILE *f, const cs_run_info *info) {
         return;
     }
     const cs_occupant_risk *o = &info->occupant;
+    if (info->occupant_at)
+        fprintf(f, "  occupant risk at     x %.3f m, y %.3f m, z %.3f m from the CG (forward, left, up)\n",
+                info->occupant_point[0], info->occupant_point[1], info->occupant_point[2]);
     if (o->impact == CS_FLAIL_NONE)
         fprintf(f, "  occupant impact      none: the occupant did not move against the vehicle\n");
     else

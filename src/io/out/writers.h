@@ -24,6 +24,9 @@ typedef struct cs_run_info {
     int rating_count;
     /* from the run's record (cs_run_info_motion); motion 0 when there was none to read */
     int motion;
+    int occupant_at; /* the occupant risk at occupant_point (m from the CG, the vehicle's axes), not
+                        at the CG (set before cs_run_info_motion) */
+    double occupant_point[3];
     int occupant_ok;           /* occupant computed; else occupant_why says why not */
     cs_occupant_risk occupant; /* at the CG, from the first contact (study/occupant.h) */
     char occupant_why[160];

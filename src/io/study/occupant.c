@@ -257,8 +257,31 @@ static void world_to_body(const cs_vehicle_view *v, const double w[3], double b[
         b[i] = R[0][i] * w[0] + R[1][i] * w[1] + R[2][i] * w[2];
 }
 
-int cs_vehicle_motion_of_record(const cs_record *rec, double t_contact, double dt, cs_vehicle_motion *m,
-                                char *why, size_t why_size) {
+static void cross(const double a[3], const double b[3], double out[3]) {
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* Frame i's acceleration in the vehicle's axes at point r from the CG (NULL: the CG itself). */
+static void frame_acceleration(const cs_record *rec, int i, const double *r, double b[3]) {
+    const cs_vehicle_view *v = cs_record_vehicle(rec, i);
+    world_to_body(v, v->acceleration, b);
+    if (!r) return;
+    int frames = cs_record_frame_count(rec), lo = i > 0 ? i - 1 : i, hi = i + 1 < frames ? i + 1 : i;
+    const cs_vehicle_view *p = cs_record_vehicle(rec, lo), *q = cs_record_vehicle(rec, hi);
+    double alpha[3] = {0, 0, 0}, wr[3], wwr[3], ar[3];
+    for (int k = 0; k < 3 && q->t > p->t; k++)
+        alpha[k] = (q->angular_velocity[k] - p->angular_velocity[k]) / (q->t - p->t);
+    cross(alpha, r, ar);
+    cross(v->angular_velocity, r, wr);
+    cross(v->angular_velocity, wr, wwr);
+    for (int k = 0; k < 3; k++)
+        b[k] += ar[k] + wwr[k];
+}
+
+int cs_vehicle_motion_of_record(const cs_record *rec, double t_contact, double dt, const double *point,
+                                cs_vehicle_motion *m, char *why, size_t why_size) {
     memset(m, 0, sizeof *m);
     int frames = cs_record_frame_count(rec);
     double t_last = frames > 0 ? cs_record_vehicle(rec, frames - 1)->t : -1.0;
@@ -283,8 +306,8 @@ int cs_vehicle_motion_of_record(const cs_record *rec, double t_contact, double d
         const cs_vehicle_view *p = cs_record_vehicle(rec, j), *q = cs_record_vehicle(rec, j + 1);
         double f = q->t > p->t ? (t - p->t) / (q->t - p->t) : 0.0, bp[3], bq[3];
         f = f < 0.0 ? 0.0 : f > 1.0 ? 1.0 : f;
-        world_to_body(p, p->acceleration, bp);
-        world_to_body(q, q->acceleration, bq);
+        frame_acceleration(rec, j, point, bp);
+        frame_acceleration(rec, j + 1, point, bq);
         ax[i] = bp[0] + f * (bq[0] - bp[0]);
         ay[i] = bp[1] + f * (bq[1] - bp[1]);
         az[i] = bp[2] + f * (bq[2] - bp[2]);
@@ -303,10 +326,10 @@ void cs_record_roll_pitch_peaks(const cs_record *rec, double *roll, double *pitc
     }
 }
 
-int cs_occupant_risk_of_run(const cs_record *rec, double t_contact, cs_occupant_risk *out, char *why,
-                            size_t why_size) {
+int cs_occupant_risk_of_run(const cs_record *rec, double t_contact, const double *point,
+                            cs_occupant_risk *out, char *why, size_t why_size) {
     cs_vehicle_motion m;
-    if (cs_vehicle_motion_of_record(rec, t_contact, 1e-4, &m, why, why_size) != 0) return -1;
+    if (cs_vehicle_motion_of_record(rec, t_contact, 1e-4, point, &m, why, why_size) != 0) return -1;
     cs_occupant_rules rules = cs_default_occupant_rules();
     int rc = cs_occupant_risk_compute(&m, &rules, out, why, why_size);
     free((void *)m.ax);
