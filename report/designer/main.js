@@ -6,7 +6,7 @@
 import uPlot from 'uplot';
 import uplotCss from 'uplot/dist/uPlot.min.css';
 import createCablesim from 'cablesim-wasm';
-import { story, cards, summaryTable, ratingsText, el } from '../src/summary.js';
+import { story, cards, summaryTable, designationsText, el } from '../src/summary.js';
 import { buildPlots } from '../src/plots.js';
 import { createReplay } from '../src/replay.js';
 import { fmt } from '../src/units.js';
@@ -144,7 +144,7 @@ function showRun(r) {
   const data = r.report;
   $('story').textContent = story(data);
   $('cards').replaceChildren(cards(data));
-  $('rating').textContent = `Rating as run: ${ratingsText(data)}.`;
+  $('designation').textContent = `Designation as run: ${designationsText(data)}.`;
   $('table').replaceChildren(summaryTable(data));
   const plotsHost = el('div', { class: 'plots' });
   $('plots').replaceWith(plotsHost);

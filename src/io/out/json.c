@@ -195,10 +195,11 @@ static void provenance(cs_wout *w, int *first, const cs_run_info *info) {
     fputc('\n', w->f);
 }
 
-/* "ratings": each as run, in cs_rating_text's words with its parts. */
+/* "designations_as_run": the standards' designation of the test the run is (docs/ratings.md), in
+ * cs_rating_text's words with its parts. */
 static void ratings(cs_wout *w, int *first, const cs_run_info *info) {
     FILE *f = w->f;
-    jkey(w, first, "ratings");
+    jkey(w, first, "designations_as_run");
     fputc('[', f);
     for (int i = 0; info && i < info->rating_count; i++) {
         const cs_rating *r = &info->ratings[i];
@@ -220,7 +221,7 @@ static void ratings(cs_wout *w, int *first, const cs_run_info *info) {
         fprintf(f, "%d", r->speed_mph);
         jkey(w, &rf, "penetration_m");
         if (r->tested && !r->through)
-            cs_w_num(w, r->penetration, "a rating's penetration");
+            cs_w_num(w, r->penetration, "a designation's penetration");
         else
             fputs("null", f);
         jkey(w, &rf, "measured");

@@ -465,12 +465,13 @@ static void write_design(jw *j, int *first, const cs_barrier_def *b) {
     fputs("]}", f);
 }
 
-/* "cablesim": {version, command, overrides, model_hash} and "ratings": [{standard, label, text}]. */
+/* "cablesim": {version, command, overrides, model_hash} and "designations_as_run": [{standard, label,
+ * text}]. */
 static void write_info(jw *j, int *first, const cs_run_info *info) {
     FILE *f = j->w.f;
     key(j, first, "cablesim");
     cs_json_provenance(f, info, cs_json_page_string);
-    key(j, first, "ratings");
+    key(j, first, "designations_as_run");
     fputc('[', f);
     for (int i = 0; info && i < info->rating_count; i++) {
         char text[256];

@@ -1,6 +1,6 @@
-/* What a run's outputs say beside its results (writers.h): its ratings as run, the record of a run made
- * through the library, the model hash's text, whether its penetration is final, and the posts nearest the
- * impact (which the plots and the report follow). */
+/* What a run's outputs say beside its results (writers.h): its designations as run, the record of a run
+ * made through the library, the model hash's text, and the posts nearest the impact (which the plots and
+ * the report follow). */
 #include <math.h>
 #include <stdio.h>
 

@@ -12,7 +12,7 @@
 #include "study/rating.h"
 
 /* What a run's outputs record beside its results: where they came from (this cablesim's version,
- * CS_VERSION_STRING, is written with them), and the run's ratings as run. */
+ * CS_VERSION_STRING, is written with them), and the run's designations as run. */
 typedef struct cs_run_info {
     const char *command;          /* the command line, shell-quoted */
     const char *const *overrides; /* --set, --dt, --t-end as given, in order: "--set PATH=VALUE" */
@@ -26,7 +26,7 @@ typedef struct cs_run_info {
  * standard's, and SD-STD-02.01 too for the 15,000-lb truck. */
 void cs_run_info_rate(cs_run_info *info, const cs_model_input *in, const cs_summary *summary);
 /* The record of a run written through the library (cs_write_outputs): no command line or overrides, its
- * model hash and its ratings as run. */
+ * model hash and its designations as run. */
 void cs_run_info_of(cs_run_info *info, const cs_model_input *in, const cs_state *state);
 /* The model hash as written: 16 hexadecimal digits. */
 void cs_model_hash_text(unsigned long long hash, char buf[17]);
@@ -66,7 +66,7 @@ int cs_write_run_files(cs_outdir *out, const cs_model_input *in, const cs_model 
 int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model *model,
                                const cs_state *state, const cs_run_info *info, char *why, size_t why_size);
 /* The readable summary (SI and US units side by side): the outcome, the model's hash, the response
- * parameters, the ratings as run, the failure events in order and the yielding posts counted. */
+ * parameters, the designations as run, the failure events in order and the yielding posts counted. */
 void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_model *model,
                                 const cs_state *state, const cs_run_info *info);
 
