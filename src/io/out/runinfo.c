@@ -28,10 +28,6 @@ void cs_model_hash_text(unsigned long long hash, char buf[17]) {
     snprintf(buf, 17, "%016llx", hash);
 }
 
-int cs_penetration_is_final(cs_outcome outcome) {
-    return outcome == CS_STOPPED || outcome == CS_REDIRECTED || outcome == CS_NO_CONTACT;
-}
-
 int cs_nearest_posts(const cs_model_input *in, int *idx, int max) {
     int count = 0;
     double x0 = in->scenario.impact_x;

@@ -30,10 +30,6 @@ void cs_run_info_rate(cs_run_info *info, const cs_model_input *in, const cs_summ
 void cs_run_info_of(cs_run_info *info, const cs_model_input *in, const cs_state *state);
 /* The model hash as written: 16 hexadecimal digits. */
 void cs_model_hash_text(unsigned long long hash, char buf[17]);
-/* Whether a run's max dynamic penetration is what the vehicle reached (it stopped, was redirected or never
- * touched the barrier), rather than where the run ended with the vehicle through or still going: then it
- * is a lower bound, "beyond" it. */
-int cs_penetration_is_final(cs_outcome outcome);
 /* Up to max post indices of the model by distance from its impact point, nearest first; the count. */
 int cs_nearest_posts(const cs_model_input *in, int *idx, int max);
 
