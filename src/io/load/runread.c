@@ -107,6 +107,7 @@ static void clear(cs_trace *tr, const char *label, int measured) {
     tr->measured = measured;
     tr->max_decel_50ms_g = tr->t_max_decel_50ms = tr->max_penetration = tr->final_speed = NAN;
     tr->max_tension = tr->t_end = tr->max_deflection = tr->working_width = tr->exit_speed = NAN;
+    tr->penetration_beyond_m = NAN;
 }
 
 void cs_trace_free(cs_trace *tr) {
@@ -161,7 +162,7 @@ static void derive(cs_trace *tr) {
             if (isfinite(g) && !(g <= tr->max_decel_50ms_g))
                 tr->max_decel_50ms_g = g, tr->t_max_decel_50ms = tr->t[i];
         }
-    if (isnan(tr->max_penetration) && tr->have[CS_TRACE_PENETRATION])
+    if (isnan(tr->max_penetration) && isnan(tr->penetration_beyond_m) && tr->have[CS_TRACE_PENETRATION])
         for (size_t i = 0; i < tr->n; i++)
             if (isfinite(tr->y[CS_TRACE_PENETRATION][i]) &&
                 !(tr->y[CS_TRACE_PENETRATION][i] <= tr->max_penetration))
@@ -208,7 +209,7 @@ static int read_summary(const char *dir, cs_trace *tr, char *why, size_t why_siz
     tr->max_decel_50ms_g = json_number(root, "max_50ms_decel_g");
     tr->t_max_decel_50ms = json_number(root, "t_max_50ms_decel_s");
     tr->max_penetration = json_number(root, "max_dynamic_penetration_m");
-    tr->penetration_beyond = isnan(tr->max_penetration); /* null: the vehicle got through */
+    tr->penetration_beyond_m = json_number(root, "penetration_beyond_m"); /* null: it stopped */
     tr->max_deflection = json_number(root, "max_barrier_deflection_m");
     tr->working_width = json_number(root, "working_width_m");
     tr->exit_speed = json_number(root, "exit_speed_mps");
