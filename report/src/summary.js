@@ -240,7 +240,7 @@ export function designTable(data) {
   d.post_kinds.forEach((k, i) => {
     const f = k.footing;
     groups.push([
-      `Post section ${d.post_kinds.length > 1 ? `${i + 1} ` : ''}(post${k.posts.length === 1 ? '' : 's'} ${ranges(k.posts)}: ${k.posts.length})`,
+      `Post section ${d.post_kinds.length > 1 ? `${i} ` : ''}(post${k.posts.length === 1 ? '' : 's'} ${ranges(k.posts)}: ${k.posts.length})`,
       [
         row('Plastic section modulus Zx', both.sectionModulus(k.plastic_modulus_m3)),
         row('Moment of inertia Ix', both.inertia(k.inertia_m4)),
