@@ -3,7 +3,7 @@
 # --set on the command line, that a refused model writes nothing, and that a run repeats byte for byte.
 source "$(dirname "$0")/lib.sh"
 
-check "--help" '"$cs" --help | grep -q "^Usage: cablesim run FILE"'
+check "--help" '"$cs" --help | grep -q "^usage: cablesim run FILE"'
 check "--version" '"$cs" --version | grep -q "^cablesim [0-9]"'
 "$cs" frobnicate >/dev/null 2>&1
 check "unknown command is status 2" '[ $? -eq 2 ]'
@@ -41,9 +41,11 @@ for f in timeseries.csv events.csv summary.json; do
     check "$f written" '[ -s "$out/$f" ]'
 done
 check "no temporaries left" '[ -z "$(ls "$out" | grep "\.tmp$")" ]'
-check "timeseries header has units" 'head -1 "$out/timeseries.csv" | grep -q "^t_s,x_m,y_m,z_m,vx_mps,.*decel_50ms_g.*cable0_max_tension_n.*post0_state.*energy_balance_error$"'
+check "timeseries header has units" 'head -1 "$out/timeseries.csv" | grep -q "^t \[s\],x \[m\],y \[m\],z \[m\],vx \[m/s\],.*decel_50ms \[g\].*cable0_max_tension \[N\],cable0_state.*post0_state.*energy_balance_error \[1\]$"'
+check "every header cell of timeseries.csv and events.csv is \"name [unit]\" or a name alone (no unit suffix)" \
+    'cells=$(head -qn1 "$out/timeseries.csv" "$out/events.csv" | tr , "\n"); [ "$(wc -l <<<"$cells")" -gt 20 ] && ! grep -vqE "^[a-z0-9_]+( \[[^]]+\])?\$" <<<"$cells" && ! grep -qE "_(s|m|n|j|g|rad|mps|mps2|si)\$" <<<"$cells"'
 check "timeseries has rows" '[ "$(wc -l <"$out/timeseries.csv")" -gt 10 ]'
-check "events header" 'head -1 "$out/events.csv" | grep -q "^t_s,type,element_kind,element,value_si,value_unit,cable_end$"'
+check "events header" 'head -1 "$out/events.csv" | grep -q "^t \[s\],type,element_kind,element,value,value_unit,cable_end$"'
 # APS3's first events: its middle posts hinge at their plastic moment, Zx Fy = 7,270.57 N m; every
 # event's value has its unit, and none but a termination event has a cable end
 check "a hinge's moment in N m" 'grep -qE "^[0-9.]+,post_hinge,post,[0-9]+,7270\.57[0-9]*,N m,$" "$out/events.csv"'

@@ -21,7 +21,7 @@ cablesim('run', 'examples/aps3.yaml', '--t-end', '0.2 s', '-o', join(out, 'a'));
 cablesim('run', 'examples/aps3.yaml', '--t-end', '0.2 s', '--set', 'scenario.speed=35 mph', '-o', join(out, 'b'));
 const rows = readFileSync(join(out, 'a', 'timeseries.csv'), 'utf8').trim().split('\n');
 const head = rows[0].split(',');
-const [it, iv] = [head.indexOf('t_s'), head.indexOf('forward_speed_mps')];
+const [it, iv] = [head.indexOf('t [s]'), head.indexOf('forward_speed [m/s]')];
 const trace = ['time [ms],speed [mph]', ...rows.slice(1).map((r) => { const c = r.split(','); return `${c[it] * 1000},${c[iv] / 0.44704}`; })];
 writeFileSync(join(out, 'measured.csv'), `${trace.join('\n')}\n`);
 cablesim('compare', join(out, 'a'), join(out, 'b'), '--measured', join(out, 'measured.csv'), '-o', join(out, 'compare'));
