@@ -20,17 +20,17 @@
 enum { EXIT_RUN = CS_EXIT_RUN, EXIT_BAD = CS_EXIT_USAGE };
 
 static const char usage[] =
-    "Usage: cablesim run FILE [-o DIR] [--force] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
+    "usage: cablesim run FILE [-o DIR] [--force] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
     "                    [--report]\n"
-    "  or:  cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]...\n"
-    "  or:  cablesim sweep SPEC.yaml [-o DIR] [--threads N] ...\n"
-    "  or:  cablesim sweep --resume DIR\n"
-    "  or:  cablesim rate FILE --standard astm-f2656|sd-std-02.01|sd-std-02.01a [--class M50|PU60|K8]\n"
-    "  or:  cablesim rate FILE --standard nchrp-350|mash [--level 3|4 | --test 3-11]\n"
-    "  or:  cablesim validate [-o DIR]\n"
-    "  or:  cablesim compare RUN... [--measured FILE.csv] [-o DIR]\n"
-    "  or:  cablesim designer [FILE] [-o DIR]\n"
-    "  or:  cablesim list | schema | --help | --version\n"
+    "       cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]...\n"
+    "       cablesim sweep SPEC.yaml [-o DIR] [--threads N] [--quiet] ...\n"
+    "       cablesim sweep --resume DIR\n"
+    "       cablesim rate FILE --standard astm-f2656|sd-std-02.01|sd-std-02.01a [--class M50|PU60|K8]\n"
+    "       cablesim rate FILE --standard nchrp-350|mash [--level 3|4 | --test 3-11]\n"
+    "       cablesim validate [-o DIR]\n"
+    "       cablesim compare RUN... [--measured FILE.csv] [-o DIR]\n"
+    "       cablesim designer [FILE] [-o DIR]\n"
+    "       cablesim list | schema | --help | --version\n"
     "Simulate a vehicle crashing into a cable barrier and its progressive failure.\n"
     "\n"
     "Commands:\n"
@@ -54,7 +54,9 @@ static const char usage[] =
     "--set barrier.cables[0].pretension=\"8 kip\".\n"
     "The parts library is the folder named by CABLESIM_DATA, else PREFIX/share/cablesim of an installed\n"
     "cablesim, else the source tree's data/.\n"
-    "Exit status: 0 done, 1 the run failed, 2 bad model or usage.\n";
+    "Exit status (every command): 0 done, 1 a run or its outputs failed, 2 a bad model, spec or command\n"
+    "line; validate: 3 its targets missed; sweep: 128 + the signal (130 Ctrl-C, 143 SIGTERM) when a\n"
+    "signal stopped it, its outputs partial.\n";
 
 static const char run_usage[] =
     "usage: cablesim run FILE [-o DIR] [--force] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
@@ -77,15 +79,19 @@ static const char run_usage[] =
 static const char check_usage[] =
     "usage: cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]...\n"
     "Checks a model file (or a sweep spec, see cablesim sweep --help) without running it: every problem as\n"
-    "FILE:LINE:COLUMN. Exit status: 0 valid, 2 problems or a bad command line.\n";
+    "FILE:LINE:COLUMN.\n"
+    "Exit status: 0 valid, 2 problems or a bad command line.\n";
 
 static const char list_usage[] = "usage: cablesim list\n"
                                  "Lists the named parts of the library (data/*.yaml): vehicles, wire ropes, "
-                                 "post and rail sections.\n";
+                                 "post and rail sections.\n"
+                                 "Exit status: 0 done, 1 no parts library, 2 a bad library file or command "
+                                 "line.\n";
 
 static const char schema_usage[] = "usage: cablesim schema\n"
                                    "Prints the model-file reference (docs/file-format.md) from the loader's "
-                                   "schema.\n";
+                                   "schema.\n"
+                                   "Exit status: 0 done, 1 it could not be written, 2 a bad command line.\n";
 
 typedef struct options {
     const char *file, *out_dir;
@@ -93,8 +99,9 @@ typedef struct options {
     cs_overrides *overrides;
 } options;
 
+/* A command line cablesim cannot take: what was wrong, in one line, and where the help is. */
 static int bad_usage(const char *what) {
-    fprintf(stderr, "cablesim: %s\n%s", what, usage);
+    fprintf(stderr, "cablesim: %s (cablesim --help: the commands)\n", what);
     return EXIT_BAD;
 }
 
@@ -344,8 +351,9 @@ int main(int argc, char **argv) {
     if (strcmp(cmd, "designer") == 0) return cs_command_designer(argc, argv);
     int is_run = strcmp(cmd, "run") == 0, is_check = strcmp(cmd, "check") == 0;
     if (!is_run && !is_check && strcmp(cmd, "list") != 0) {
-        fprintf(stderr, "cablesim: unknown command '%s'\n%s", cmd, usage);
-        return EXIT_BAD;
+        char what[300];
+        snprintf(what, sizeof what, "unknown command '%.200s'", cmd);
+        return bad_usage(what);
     }
     if (!is_run && !is_check && (rc = no_arguments(argc, argv, &list_cli)) >= 0) return rc;
     char why[256];
