@@ -1,5 +1,6 @@
 /* cablesim: run, check and list cable-barrier models. Exit status: 0 done, 1 the run or its outputs
  * failed, 2 a bad model or command line. */
+#include <ctype.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,7 +36,8 @@ static const char usage[] =
     "\n"
     "Commands:\n"
     "  run       run a model: DIR/timeseries.csv, DIR/events.csv and DIR/summary.json (default DIR:\n"
-    "            results/<model name>) and a summary printed; --plots also draws the run's figures as\n"
+    "            results/<model name>, and one of its own for a run with overrides, cablesim run --help)\n"
+    "            and a summary printed; --plots also draws the run's figures as\n"
     "            DIR/plots/*.png and *.svg; --report writes DIR/report.html, one page that opens from disk:\n"
     "            summary, failure timeline, plots, 3D replay\n"
     "  check     check a model (or a sweep spec) only: every problem as file:line:column\n"
@@ -63,9 +65,12 @@ static const char run_usage[] =
     "                    [--report]\n"
     "Runs the model of FILE and prints a summary: the outcome, the model's hash, the response parameters,\n"
     "the designations as run (docs/ratings.md), the failure events. Writes DIR/timeseries.csv,\n"
-    "DIR/events.csv and DIR/summary.json (default DIR: results/<model name>); --plots also the run's\n"
-    "figures as DIR/plots/*.png and *.svg, --report DIR/report.html (one page that opens from disk:\n"
-    "summary, failure timeline, plots, 3D replay). DIR is checked and locked before the run; the files\n"
+    "DIR/events.csv and DIR/summary.json; --plots also the run's figures as DIR/plots/*.png and *.svg,\n"
+    "--report DIR/report.html (one page that opens from disk: summary, failure timeline, plots, 3D\n"
+    "replay). Default DIR: results/<model name>; with overrides, a folder of its own named from them,\n"
+    "each as its path (without its first part) and its value: --set scenario.speed=\"35 mph\" writes\n"
+    "results/aps3_speed-35mph, --set barrier.cables[0].pretension=\"8 kip\" --t-end \"1 s\"\n"
+    "results/aps3_cables0.pretension-8kip_t-end-1s. DIR is checked and locked before the run; the files\n"
     "appear together once all are written, with DIR/.cablesim-manifest listing them, and the files of an\n"
     "earlier run there (its manifest's) that this one does not write are removed: DIR holds one run. A DIR\n"
     "holding a file no manifest lists is refused, naming it. A failed run writes nothing.\n"
@@ -226,10 +231,36 @@ static int write_outputs(cs_outdir *out, const cs_model_input *in, const cs_mode
     return rc;
 }
 
+/* The folder of a run given no -o: results/NAME, and for a run with overrides a folder of its own named
+ * from them, so that it does not replace the run as the file has it: each override as its path without
+ * its first part and brackets, then its value without spaces (--set scenario.speed="35 mph" --set
+ * barrier.cables[0].pretension="8 kip": results/aps3_speed-35mph_cables0.pretension-8kip; --dt 0.2 ms:
+ * _dt-0.2ms). A character a file name would not keep plainly becomes '-'; a name past 160 characters is
+ * cut. */
+static void default_dir(const cs_model_input *in, const cs_overrides *ov, char *path, size_t size) {
+    size_t n = (size_t)snprintf(path, size, "results/%s", in->name);
+    for (int i = 0; i < ov->count && n + 2 < size && n < 168; i++) {
+        const char *t = ov->text[i], *value = strchr(t, ' ') + 1; /* "--set PATH=VALUE", "--dt VALUE" */
+        const char *eq = strncmp(t, "--set ", 6) == 0 ? strchr(value, '=') : NULL;
+        const char *name = eq ? value : t + 2, *name_end = eq ? eq : value - 1;
+        const char *dot = memchr(name, '.', (size_t)(name_end - name));
+        if (eq && dot) name = dot + 1; /* scenario.speed: speed */
+        path[n++] = '_';
+        for (const char *s = name; s < name_end && n + 2 < size; s++)
+            if (*s != '[' && *s != ']') path[n++] = strchr("-.", *s) || isalnum((unsigned char)*s) ? *s : '-';
+        path[n++] = '-';
+        for (const char *s = eq ? eq + 1 : value; *s && n + 1 < size; s++)
+            if (*s != ' ' && *s != '"' && *s != '\'')
+                path[n++] = strchr("-.+", *s) || isalnum((unsigned char)*s) ? *s : '-';
+        path[n] = '\0';
+    }
+    if (n > 168) path[168] = '\0';
+}
+
 static int run(const cs_model_input *in, cs_model *model, const options *o, const char *command) {
     char path[1024], why[512];
     const char *dir = o->out_dir;
-    if (!dir) snprintf(path, sizeof path, "results/%s", in->name), dir = path;
+    if (!dir) default_dir(in, o->overrides, path, sizeof path), dir = path;
     cs_outdir out;
     if (cs_out_open(&out, dir, o->force ? CS_OUT_FORCE : 0, why, sizeof why) != 0) { /* before the run */
         fprintf(stderr, "cablesim: nothing run: %s\n", why);

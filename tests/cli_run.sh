@@ -169,4 +169,10 @@ out=$(timeout 60 "$cs" run examples/aps3.yaml -o "$tmp/tiny" --dt "0.1 us" --set
 check "past 10 million frames is refused at its place" '[ $? -eq 2 ] && grep -qF "scenario.output_interval=0.1 us: 3e+07 frames to the end time (t_end / output_interval) exceed the limit of 1e+07" <<<"$out"'
 out=$("$cs" run examples/aps3.yaml -o "$tmp/steps" --set scenario.max_steps=100 2>&1)
 check "scenario.max_steps ends the run: step_limit" '[ $? -eq 0 ] && grep -q "^aps3: the run took its 100 steps (scenario.max_steps) at t = 0.050 s" <<<"$out" && grep -q "\"outcome\":\"step_limit\"" "$tmp/steps/summary.json"'
+# no -o: results/NAME, and a run with overrides a folder of its own named from them, leaving the first
+mkdir -p "$tmp/cwd"
+(cd "$tmp/cwd" && "$cs" run "$OLDPWD/examples/aps3.yaml" >/dev/null 2>&1 &&
+    "$cs" run "$OLDPWD/examples/aps3.yaml" --set scenario.speed="35 mph" --set 'barrier.cables[0].pretension=8 kip' --t-end "10 ms" >"$tmp/cwd.out" 2>&1)
+check "no -o: results/aps3, and the run with overrides in results/aps3_speed-35mph_cables0.pretension-8kip_t-end-10ms" \
+    '[ "$(ls "$tmp/cwd/results" | tr "\n" " ")" = "aps3 aps3_speed-35mph_cables0.pretension-8kip_t-end-10ms " ] && grep -q "\"overrides\":\[\]" "$tmp/cwd/results/aps3/summary.json" && grep -qF "outputs              results/aps3_speed-35mph_cables0.pretension-8kip_t-end-10ms/{" "$tmp/cwd.out"'
 finish
