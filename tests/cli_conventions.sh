@@ -21,6 +21,13 @@ for sub in run check sweep rate validate compare list schema designer; do
     out=$("$cs" "$sub" --bar=1 2>&1)
     check "$sub --bar=1: the option named without its value" '[ $? -eq 2 ] && grep -qF "unknown option '"'"'--bar'"'"'" <<<"$out"'
 done
+# the bash completion offers the options of each command's usage and option lines (and --help, and --out
+# beside -o), and no other
+completion() { bash -c 'source app/cablesim.bash; COMP_WORDS=(cablesim "$1" -); COMP_CWORD=2; _cablesim; printf "%s\n" "${COMPREPLY[@]}"' _ "$1" | grep -vxE -- "--help|--out" | sort; }
+for sub in run check sweep rate validate compare designer list schema; do
+    help_opts=$("$cs" "$sub" --help | grep -E "^(usage: |       |  -)" | grep -oE -- "(^|[ [|,])--?[a-z][a-z-]*" | grep -oE -- "--?[a-z][a-z-]*" | grep -vxE -- "--help|--out" | sort -u)
+    check "completion of $sub: the options of its --help" '[ "$(completion "$sub")" = "$help_opts" ] || { diff <(completion "$sub") <(echo "$help_opts"); false; }'
+done
 out=$("$cs" frobnicate 2>&1)
 check "an unknown command named in one line, exit 2" '[ $? -eq 2 ] && [ "$out" = "cablesim: unknown command '"'"'frobnicate'"'"' (cablesim --help: the commands)" ]'
 out=$("$cs" compare 2>&1)
