@@ -19,7 +19,7 @@
 enum { MAX_RUNS = 12 };
 
 static const char usage[] =
-    "usage: cablesim compare RUN... [--measured FILE.csv] [-o DIR] [--force]\n"
+    "Usage: cablesim compare RUN... [--measured FILE.csv] [-o DIR] [--force]\n"
     "Puts runs (folders written by cablesim run) side by side, and a measured time history if given:\n"
     "DIR/compare.html (one page: the table and the plots), compare.csv and compare.md (the response\n"
     "parameters, each run's difference from the reference in %), plots/compare-*.png and .svg (the\n"

@@ -19,7 +19,7 @@
 #include "out/report_html.h"
 
 static const char usage[] =
-    "usage: cablesim designer [FILE] [-o DIR] [--force]\n"
+    "Usage: cablesim designer [FILE] [-o DIR] [--force]\n"
     "Writes DIR/designer.html (default DIR: results/<model name>-designer): one page that opens from disk,\n"
     "without a network, and runs the model of FILE (default: the APS3 example) in the browser. A form\n"
     "holds the design's main values with their units (ropes and pretension, post sections, spacing and\n"

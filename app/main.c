@@ -21,17 +21,17 @@
 enum { EXIT_RUN = CS_EXIT_RUN, EXIT_BAD = CS_EXIT_USAGE };
 
 static const char usage[] =
-    "usage: cablesim run FILE [-o DIR] [--force] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
-    "                    [--report]\n"
-    "       cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]...\n"
-    "       cablesim sweep SPEC.yaml [-o DIR] [--threads N] [--quiet] ...\n"
-    "       cablesim sweep --resume DIR\n"
-    "       cablesim rate FILE --standard astm-f2656|sd-std-02.01|sd-std-02.01a [--class M50|PU60|K8]\n"
-    "       cablesim rate FILE --standard nchrp-350|mash [--level 3|4 | --test 3-11]\n"
-    "       cablesim validate [-o DIR]\n"
-    "       cablesim compare RUN... [--measured FILE.csv] [-o DIR]\n"
-    "       cablesim designer [FILE] [-o DIR]\n"
-    "       cablesim list | schema | --help | --version\n"
+    "Usage: cablesim run FILE [-o DIR] [--force] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots] "
+    "[--report]\n" /* one line: help2man takes the synopsis from lines that begin with the command */
+    "  or:  cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]...\n"
+    "  or:  cablesim sweep SPEC.yaml [-o DIR] [--threads N] [--quiet] ...\n"
+    "  or:  cablesim sweep --resume DIR\n"
+    "  or:  cablesim rate FILE --standard astm-f2656|sd-std-02.01|sd-std-02.01a [--class M50|PU60|K8]\n"
+    "  or:  cablesim rate FILE --standard nchrp-350|mash [--level 3|4 | --test 3-11]\n"
+    "  or:  cablesim validate [-o DIR]\n"
+    "  or:  cablesim compare RUN... [--measured FILE.csv] [-o DIR]\n"
+    "  or:  cablesim designer [FILE] [-o DIR]\n"
+    "  or:  cablesim list | schema | --help | --version\n"
     "Simulate a vehicle crashing into a cable barrier and its progressive failure.\n"
     "\n"
     "Commands:\n"
@@ -61,7 +61,7 @@ static const char usage[] =
     "signal stopped it, its outputs partial.\n";
 
 static const char run_usage[] =
-    "usage: cablesim run FILE [-o DIR] [--force] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
+    "Usage: cablesim run FILE [-o DIR] [--force] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
     "                    [--report]\n"
     "Runs the model of FILE and prints a summary: the outcome, the model's hash, the response parameters,\n"
     "the designations as run (docs/ratings.md), the failure events. Writes DIR/timeseries.csv,\n"
@@ -82,18 +82,18 @@ static const char run_usage[] =
     "Exit status: 0 done, 1 the run or its outputs failed, 2 a bad model or command line.\n";
 
 static const char check_usage[] =
-    "usage: cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]...\n"
+    "Usage: cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]...\n"
     "Checks a model file (or a sweep spec, see cablesim sweep --help) without running it: every problem as\n"
     "FILE:LINE:COLUMN.\n"
     "Exit status: 0 valid, 2 problems or a bad command line.\n";
 
-static const char list_usage[] = "usage: cablesim list\n"
+static const char list_usage[] = "Usage: cablesim list\n"
                                  "Lists the named parts of the library (data/*.yaml): vehicles, wire ropes, "
                                  "post and rail sections.\n"
                                  "Exit status: 0 done, 1 no parts library, 2 a bad library file or command "
                                  "line.\n";
 
-static const char schema_usage[] = "usage: cablesim schema\n"
+static const char schema_usage[] = "Usage: cablesim schema\n"
                                    "Prints the model-file reference (docs/file-format.md) from the loader's "
                                    "schema.\n"
                                    "Exit status: 0 done, 1 it could not be written, 2 a bad command line.\n";

@@ -19,9 +19,9 @@
 #include "study/rating.h"
 
 static const char rate_usage[] =
-    "usage: cablesim rate FILE --standard astm-f2656|sd-std-02.01|sd-std-02.01a [--class CLASS]\n"
+    "Usage: cablesim rate FILE --standard astm-f2656|sd-std-02.01|sd-std-02.01a [--class CLASS]\n"
     "                     [--set PATH=VALUE]...\n"
-    "       cablesim rate FILE --standard nchrp-350|mash [--level 3|4 | --test 3-11] [--set PATH=VALUE]...\n"
+    "  or:  cablesim rate FILE --standard nchrp-350|mash [--level 3|4 | --test 3-11] [--set PATH=VALUE]...\n"
     "Runs a standard's test conditions against the barrier of FILE, at its impact point, and reads each\n"
     "result as the standard does (docs/ratings.md).\n"
     "Anti-ram: the test vehicle is the model's (after --set), head-on. ASTM F2656 tests C, PU, M and H (a\n"

@@ -38,9 +38,9 @@
 enum { EXIT_RUN = CS_EXIT_RUN, EXIT_BAD = CS_EXIT_USAGE };
 
 static const char sweep_usage[] =
-    "usage: cablesim sweep SPEC.yaml [-o DIR] [--threads N] [--runs N] [--seed S] [--set PATH=VALUE]...\n"
+    "Usage: cablesim sweep SPEC.yaml [-o DIR] [--threads N] [--runs N] [--seed S] [--set PATH=VALUE]...\n"
     "                      [--t-end T] [--dt T] [--netcdf] [--quiet] [--force]\n"
-    "       cablesim sweep --resume DIR [--threads N] [--quiet] [--force]\n"
+    "  or:  cablesim sweep --resume DIR [--threads N] [--quiet] [--force]\n"
     "Runs the study of SPEC (a base model, the values to vary: grids, or Monte Carlo / Latin hypercube\n"
     "samples) and writes DIR/runs.csv, DIR/summary.md and DIR/summary.json (default DIR: results/<spec\n"
     "name>). --threads: OpenMP threads per process (default: OMP_NUM_THREADS or the cores, shared among\n"

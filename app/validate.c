@@ -1061,7 +1061,7 @@ static suite *suite_create(void) {
 }
 
 static const char validate_usage[] =
-    "usage: cablesim validate [-o DIR] [--force] [--examples DIR] [--only PARTS] [--report-only]\n"
+    "Usage: cablesim validate [-o DIR] [--force] [--examples DIR] [--only PARTS] [--report-only]\n"
     "Runs the validation suite and writes DIR/validation.md and DIR/validation.csv (default DIR:\n"
     "results/validation): the crash tests beside their measurements (APS1) or as blind predictions (APS3,\n"
     "APS4), each under every documented reading of its design, the roadside predictions, the bogie tests of\n"

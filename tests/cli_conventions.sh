@@ -6,18 +6,18 @@
 source "$(dirname "$0")/lib.sh"
 
 top=$("$cs" --help)
-check "cablesim --help" 'grep -q "^usage: cablesim run FILE" <<<"$top"'
-check "one spelling: usage:, never Usage: or or:" '! "$cs" --help | grep -qE "^Usage:|^ *or: " && for s in run check sweep rate validate compare designer list schema; do ! "$cs" "$s" --help | grep -qE "^Usage:|^ *or: " || exit 1; done'
+check "cablesim --help" 'grep -q "^Usage: cablesim run FILE" <<<"$top"'
+check "one spelling: Usage: and   or:  (GNU's, as help2man reads them), never usage:" '( for s in "" run check sweep rate validate compare designer list schema; do h=$("$cs" $s --help); head -1 <<<"$h" | grep -q "^Usage: cablesim ${s:-run}" && ! sed 1d <<<"$h" | grep -qiE "^ *usage:" || exit 1; done ) && "$cs" --help | grep -q "^  or:  cablesim check"'
 check "the top level gives validate's and sweep's own exit statuses" 'grep -qF "validate: 3 its targets missed; sweep: 128 + the signal" <<<"$top"'
 check "no test-only environment variable in any help" '! { "$cs" --help; for s in run check sweep rate validate compare designer list schema; do "$cs" "$s" --help; done; } | grep -q "STOP_AFTER"'
 for sub in run check sweep rate validate compare list schema designer; do
     out=$("$cs" "$sub" --help 2>&1)
     check "$sub --help: exit 0" '[ $? -eq 0 ]'
-    check "$sub --help: its usage" 'grep -q "^usage: cablesim $sub" <<<"$out"'
+    check "$sub --help: its usage" 'grep -q "^Usage: cablesim $sub" <<<"$out"'
     check "$sub --help: its exit status" 'grep -q "^Exit status: 0 " <<<"$out"'
     out=$("$cs" "$sub" examples/aps3.yaml --foo 2>&1)
     check "$sub --foo: exit 2, the option named" '[ $? -eq 2 ] && grep -qxF "cablesim $sub: unknown option '"'"'--foo'"'"'" <<<"$out"'
-    check "$sub --foo: the usage lines and a pointer to --help, not the whole help" '[ "$(grep -cv "^usage: \|^       \|^cablesim $sub: unknown option" <<<"$out")" -eq 1 ] && grep -qxF "(cablesim $sub --help: what it does and its options)" <<<"$out"'
+    check "$sub --foo: the usage lines and a pointer to --help, not the whole help" '[ "$(grep -cv "^Usage: \|^  or:  \|^       \|^cablesim $sub: unknown option" <<<"$out")" -eq 1 ] && grep -qxF "(cablesim $sub --help: what it does and its options)" <<<"$out"'
     out=$("$cs" "$sub" --bar=1 2>&1)
     check "$sub --bar=1: the option named without its value" '[ $? -eq 2 ] && grep -qF "unknown option '"'"'--bar'"'"'" <<<"$out"'
 done
@@ -25,7 +25,7 @@ done
 # beside -o), and no other
 completion() { bash -c 'source app/cablesim.bash; COMP_WORDS=(cablesim "$1" -); COMP_CWORD=2; _cablesim; printf "%s\n" "${COMPREPLY[@]}"' _ "$1" | grep -vxE -- "--help|--out" | sort; }
 for sub in run check sweep rate validate compare designer list schema; do
-    help_opts=$("$cs" "$sub" --help | grep -E "^(usage: |       |  -)" | grep -oE -- "(^|[ [|,])--?[a-z][a-z-]*" | grep -oE -- "--?[a-z][a-z-]*" | grep -vxE -- "--help|--out" | sort -u)
+    help_opts=$("$cs" "$sub" --help | grep -E "^(Usage: |  or:  |       |  -)" | grep -oE -- "(^|[ [|,])--?[a-z][a-z-]*" | grep -oE -- "--?[a-z][a-z-]*" | grep -vxE -- "--help|--out" | sort -u)
     check "completion of $sub: the options of its --help" '[ "$(completion "$sub")" = "$help_opts" ] || { diff <(completion "$sub") <(echo "$help_opts"); false; }'
 done
 out=$("$cs" frobnicate 2>&1)

@@ -3,7 +3,7 @@
 # --set on the command line, that a refused model writes nothing, and that a run repeats byte for byte.
 source "$(dirname "$0")/lib.sh"
 
-check "--help" '"$cs" --help | grep -q "^usage: cablesim run FILE"'
+check "--help" '"$cs" --help | grep -q "^Usage: cablesim run FILE"'
 check "--version" '"$cs" --version | grep -q "^cablesim [0-9]"'
 "$cs" frobnicate >/dev/null 2>&1
 check "unknown command is status 2" '[ $? -eq 2 ]'

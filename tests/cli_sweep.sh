@@ -9,7 +9,7 @@
 # long so the suite stays fast.
 source "$(dirname "$0")/lib.sh"
 
-check "sweep --help" '"$cs" sweep --help | grep -q "usage: cablesim sweep SPEC.yaml"'
+check "sweep --help" '"$cs" sweep --help | grep -q "^Usage: cablesim sweep SPEC.yaml"'
 "$cs" sweep >/dev/null 2>&1
 check "sweep without a spec is status 2" '[ $? -eq 2 ]'
 
