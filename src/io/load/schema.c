@@ -628,8 +628,9 @@ int cs_schema_markdown(FILE *out) {
           "outcome, a count, an index) has its name alone: `cable0_state`, `type`, `posts_failed_left`. A "
           "column whose unit changes from row to row has it in the column beside it (events.csv's `value` "
           "and `value_unit`, compare.csv's `unit`). Cables, posts and anchors are numbered from 0, as the "
-          "paths of `--set` count them (`cable1` is `barrier.cables[1]`; anchor 0 is the start anchor), in "
-          "every output. `cablesim compare --measured FILE` reads a file of this convention (or "
+          "paths of `--set` count them (`cable1` is `barrier.cables[1]`), in every output; anchor 0 is "
+          "`barrier.anchors.start` (the low-x end), anchor 1 `barrier.anchors.end`. `cablesim compare "
+          "--measured FILE` reads a file of this convention (or "
           "`name (unit)`), a run's own timeseries.csv too.\n",
           out);
     return ferror(out) ? -1 : 0;
