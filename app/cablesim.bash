@@ -11,7 +11,7 @@ _cablesim() {
         return
     fi
     case $prev in
-    -o | --examples)
+    -o | --out | --examples | --resume)
         mapfile -t COMPREPLY < <(compgen -d -- "$cur")
         return
         ;;
@@ -33,12 +33,14 @@ _cablesim() {
     esac
     local opts=""
     case $cmd in
-    run) opts="-o --force --dt --t-end --set --plots --report --occupant-at" ;;
-    check) opts="--set" ;;
-    sweep) opts="-o --threads --runs --seed --set --t-end --dt --netcdf --quiet --force --resume --help" ;;
-    rate) opts="--standard --class --level --test --set" ;;
-    validate) opts="-o --force --examples --only --report-only" ;;
-    designer) opts="-o --force --help" ;;
+    run) opts="-o --out --force --dt --t-end --set --plots --report --occupant-at --help" ;;
+    check) opts="--dt --t-end --set --help" ;;
+    sweep) opts="-o --out --threads --runs --seed --set --t-end --dt --netcdf --quiet --force --resume --help" ;;
+    rate) opts="--standard --class --level --test --set --help" ;;
+    validate) opts="-o --out --force --examples --only --report-only --help" ;;
+    compare) opts="-o --out --measured --force --help" ;;
+    designer) opts="-o --out --force --help" ;;
+    list | schema) opts="--help" ;;
     *) return ;;
     esac
     if [[ $cur == -* ]]; then

@@ -11,10 +11,13 @@ int cs_cli_usage_error(const cs_cli *c, const char *fmt, ...) {
     vfprintf(stderr, fmt, ap);
     va_end(ap);
     fputc('\n', stderr);
-    /* the usage lines themselves; the rest is the command's --help */
+    /* the usage lines themselves (GNU's: "Usage: ", another form "  or:  ", a long one wrapped under
+     * itself); the rest is the command's --help */
     for (const char *line = c->usage; *line;) {
         size_t n = strcspn(line, "\n");
-        if (strncmp(line, "usage: ", 7) != 0 && strncmp(line, "       ", 7) != 0) break;
+        if (strncmp(line, "Usage: ", 7) != 0 && strncmp(line, "  or:  ", 7) != 0 &&
+            strncmp(line, "       ", 7) != 0)
+            break;
         fprintf(stderr, "%.*s\n", (int)n, line);
         line += n + (line[n] == '\n');
     }

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli.h"
 #include "commands.h"
 #include "load/runread.h"
 #include "load/units.h"
@@ -18,8 +19,7 @@
 enum { MAX_RUNS = 12 };
 
 static const char usage[] =
-    "usage: cablesim compare RUN... [--measured FILE.csv] [-o DIR] [--force]\n"
-    "\n"
+    "Usage: cablesim compare RUN... [--measured FILE.csv] [-o DIR] [--force]\n"
     "Puts runs (folders written by cablesim run) side by side, and a measured time history if given:\n"
     "DIR/compare.html (one page: the table and the plots), compare.csv and compare.md (the response\n"
     "parameters, each run's difference from the reference in %), plots/compare-*.png and .svg (the\n"
@@ -28,18 +28,19 @@ static const char usage[] =
     "The measured file is a CSV file whose header names each column with its unit, \"name [unit]\" or\n"
     "\"name (unit)\": the time first, then any of a deceleration (g, m/s^2), a speed (mph, km/h, m/s),\n"
     "a penetration (ft, m) and a rope tension (kip, kN); its 50-ms deceleration is found from its speed\n"
-    "(or its deceleration) as a run's is. With --measured, each run is scored against it (metrics.csv,\n"
-    "the page, the terminal): the Sprague-Geers magnitude, phase and comprehensive errors and the ANOVA\n"
-    "mean and standard deviation of the residuals of NCHRP W179, with W179's verdict. At most 12 runs.\n"
-    "DIR is kept as cablesim run --help says; --force writes into it beside files no manifest lists (none\n"
-    "of them is removed).\n";
+    "(or its deceleration) as a run's is. A run's own timeseries.csv is read as that run's history.\n"
+    "With --measured, each run is scored against it (metrics.csv, the page, the terminal): the\n"
+    "Sprague-Geers magnitude, phase and comprehensive errors and the ANOVA mean and standard deviation of\n"
+    "the residuals of NCHRP W179, with W179's verdict. At most 12 runs. DIR is kept as cablesim run --help\n"
+    "says.\n"
+    "  RUN                  a folder written by cablesim run (its summary.json and timeseries.csv)\n"
+    "  --measured FILE.csv  a measured time history, the reference\n"
+    "  -o, --out DIR        the output folder (default: results/compare)\n"
+    "  --force              write into DIR beside files no manifest lists (none of them is removed)\n"
+    "Exit status: 0 done, 1 the outputs could not be written, 2 a run folder or measured file that cannot\n"
+    "be read, or a bad command line.\n";
 
-static int bad(const char *fmt, const char *what) {
-    fputs("cablesim compare: ", stderr);
-    fprintf(stderr, fmt, what);
-    fprintf(stderr, "\n%s", usage);
-    return 2;
-}
+static const cs_cli compare_cli = {"compare", usage};
 
 int cs_command_compare(int argc, char **argv) {
     static const struct option options[] = {{"measured", required_argument, NULL, 'm'},
@@ -49,32 +50,26 @@ int cs_command_compare(int argc, char **argv) {
                                             {NULL, 0, NULL, 0}};
     const char *measured = NULL, *dir = "results/compare";
     int force = 0;
-    optind = 2;
-    opterr = 0;
-    for (int c; (c = getopt_long(argc, argv, "o:h", options, NULL)) != -1;) {
-        if (c == 'h') {
-            fputs(usage, stdout);
-            return 0;
-        }
+    optind = 1;
+    for (int c; (c = cs_cli_next(&compare_cli, argc, argv, "o:h", options)) != -1;) {
+        if (c == 'h') return cs_cli_help(&compare_cli);
         if (c == 'm')
             measured = optarg;
         else if (c == 'o')
             dir = optarg;
         else if (c == 'f')
             force = 1;
-        else if (optopt == 'o' || optopt == 'm')
-            return bad("%s lacks its value", optopt == 'o' ? "-o" : "--measured");
         else
-            return bad("unknown option '%s'", argv[optind - 1]);
+            return CS_EXIT_USAGE;
     }
-    int runs = argc - optind;
-    if (runs < 1) return bad("%s", "no run to compare");
-    if (runs > MAX_RUNS) return bad("%s", "more than 12 runs");
+    int first = 1 + optind, runs = argc - first; /* cs_cli_next: operands from argv[1 + optind] */
+    if (runs < 1) return cs_cli_usage_error(&compare_cli, "no run to compare");
+    if (runs > MAX_RUNS) return cs_cli_usage_error(&compare_cli, "more than %d runs", MAX_RUNS);
     cs_trace traces[MAX_RUNS + 1];
     int count = 0, rc = 2;
     char why[1024];
     cs_units *units = NULL;
-    for (int i = optind; i < argc; i++, count++)
+    for (int i = first; i < argc; i++, count++)
         if (cs_trace_read_run(argv[i], &traces[count], why, sizeof why) != 0) {
             fprintf(stderr, "cablesim compare: %s\n", why);
             goto done;

@@ -19,12 +19,13 @@
 #include "out/report_html.h"
 
 static const char usage[] =
-    "usage: cablesim designer [FILE] [-o DIR] [--force]\n"
+    "Usage: cablesim designer [FILE] [-o DIR] [--force]\n"
     "Writes DIR/designer.html (default DIR: results/<model name>-designer): one page that opens from disk,\n"
     "without a network, and runs the model of FILE (default: the APS3 example) in the browser. A form\n"
     "holds the design's main values with their units (ropes and pretension, post sections, spacing and\n"
     "footings, anchors, soil, vehicle, speed, angle and impact point); each change runs the crash again and\n"
-    "updates the outcome, the response parameters, the rating, the plots and the 3D replay. A value can be\n"
+    "updates the outcome, the response parameters, the designation as run, the plots and the 3D replay. A "
+    "value can be\n"
     "swept over a range, and the edited model downloaded as YAML that cablesim run reproduces exactly.\n"
     "  -o, --out DIR   the output folder (outputs as cablesim run --help says)\n"
     "  --force         write into DIR beside files no manifest lists (none of them is removed)\n"

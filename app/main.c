@@ -1,5 +1,6 @@
 /* cablesim: run, check and list cable-barrier models. Exit status: 0 done, 1 the run or its outputs
  * failed, 2 a bad model or command line. */
+#include <ctype.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,10 +22,11 @@
 enum { EXIT_RUN = CS_EXIT_RUN, EXIT_BAD = CS_EXIT_USAGE };
 
 static const char usage[] =
-    "Usage: cablesim run FILE [-o DIR] [--force] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
-    "                    [--report] [--occupant-at X,Y,Z]\n"
+    "Usage: cablesim run FILE [-o DIR] [--force] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots] "
+    "[--report] [--occupant-at X,Y,Z]\n" /* one line: help2man takes the synopsis from lines that begin with
+                                            the command */
     "  or:  cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]...\n"
-    "  or:  cablesim sweep SPEC.yaml [-o DIR] [--threads N] ...\n"
+    "  or:  cablesim sweep SPEC.yaml [-o DIR] [--threads N] [--quiet] ...\n"
     "  or:  cablesim sweep --resume DIR\n"
     "  or:  cablesim rate FILE --standard astm-f2656|sd-std-02.01|sd-std-02.01a [--class M50|PU60|K8]\n"
     "  or:  cablesim rate FILE --standard nchrp-350|mash [--level 3|4 | --test 3-11]\n"
@@ -36,14 +38,15 @@ static const char usage[] =
     "\n"
     "Commands:\n"
     "  run       run a model: DIR/timeseries.csv, DIR/events.csv and DIR/summary.json (default DIR:\n"
-    "            results/<model name>) and a summary printed; --plots also draws the run's figures as\n"
+    "            results/<model name>, and one of its own for a run with overrides, cablesim run --help)\n"
+    "            and a summary printed; --plots also draws the run's figures as\n"
     "            DIR/plots/*.png and *.svg; --report writes DIR/report.html, one page that opens from disk:\n"
     "            summary, failure timeline, plots, 3D replay\n"
     "  check     check a model (or a sweep spec) only: every problem as file:line:column\n"
     "  sweep     a study: grids, Monte Carlo, Latin hypercube (cablesim sweep --help); --resume DIR\n"
     "            completes an interrupted one\n"
-    "  rate      the highest class of ASTM F2656 or SD-STD-02.01 a design passes, or the NCHRP 350 or\n"
-    "            MASH tests of a level\n"
+    "  rate      the rating: the highest class of ASTM F2656 or SD-STD-02.01 a design passes, or the\n"
+    "            NCHRP 350 or MASH tests of a level\n"
     "  validate  the validation suite: DIR/validation.md and .csv\n"
     "  compare   runs (folders of cablesim run) and a measured history side by side: a table and plots\n"
     "  designer  one page that runs the model in the browser as its values are edited: DIR/designer.html\n"
@@ -55,19 +58,24 @@ static const char usage[] =
     "--set barrier.cables[0].pretension=\"8 kip\".\n"
     "The parts library is the folder named by CABLESIM_DATA, else PREFIX/share/cablesim of an installed\n"
     "cablesim, else the source tree's data/.\n"
-    "Exit status: 0 done, 1 the run failed, 2 bad model or usage.\n";
+    "Exit status (every command): 0 done, 1 a run or its outputs failed, 2 a bad model, spec or command\n"
+    "line; validate: 3 its targets missed; sweep: 128 + the signal (130 Ctrl-C, 143 SIGTERM) when a\n"
+    "signal stopped it, its outputs partial.\n";
 
 static const char run_usage[] =
-    "usage: cablesim run FILE [-o DIR] [--force] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
+    "Usage: cablesim run FILE [-o DIR] [--force] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
     "                    [--report] [--occupant-at X,Y,Z]\n"
     "Runs the model of FILE and prints a summary: the outcome, the model's hash, the response parameters,\n"
-    "the ratings as run, the failure events. Writes DIR/timeseries.csv, DIR/events.csv and\n"
-    "DIR/summary.json (default DIR: results/<model name>); --plots also the run's figures as\n"
-    "DIR/plots/*.png and *.svg, --report DIR/report.html (one page that opens from disk: summary, failure\n"
-    "timeline, plots, 3D replay). DIR is checked and locked before the run; the files appear together\n"
-    "once all are written, with DIR/.cablesim-manifest listing them, and the files of an earlier run there\n"
-    "(its manifest's) that this one does not write are removed: DIR holds one run. A DIR holding a file no\n"
-    "manifest lists is refused, naming it. A failed run writes nothing.\n"
+    "the designations as run (docs/ratings.md), the failure events. Writes DIR/timeseries.csv,\n"
+    "DIR/events.csv and DIR/summary.json; --plots also the run's figures as DIR/plots/*.png and *.svg,\n"
+    "--report DIR/report.html (one page that opens from disk: summary, failure timeline, plots, 3D\n"
+    "replay). Default DIR: results/<model name>; with overrides, a folder of its own named from them,\n"
+    "each as its path (without its first part) and its value: --set scenario.speed=\"35 mph\" writes\n"
+    "results/aps3_speed-35mph, --set barrier.cables[0].pretension=\"8 kip\" --t-end \"1 s\"\n"
+    "results/aps3_cables0.pretension-8kip_t-end-1s. DIR is checked and locked before the run; the files\n"
+    "appear together once all are written, with DIR/.cablesim-manifest listing them, and the files of an\n"
+    "earlier run there (its manifest's) that this one does not write are removed: DIR holds one run. A DIR\n"
+    "holding a file no manifest lists is refused, naming it. A failed run writes nothing.\n"
     "  -o, --out DIR        the output folder\n"
     "  --force              write into DIR beside files no manifest lists (none of them is removed)\n"
     "  --set PATH=VALUE     replace a value of the model: --set scenario.speed=\"35 mph\"\n"
@@ -78,17 +86,21 @@ static const char run_usage[] =
     "Exit status: 0 done, 1 the run or its outputs failed, 2 a bad model or command line.\n";
 
 static const char check_usage[] =
-    "usage: cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]...\n"
+    "Usage: cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]...\n"
     "Checks a model file (or a sweep spec, see cablesim sweep --help) without running it: every problem as\n"
-    "FILE:LINE:COLUMN. Exit status: 0 valid, 2 problems or a bad command line.\n";
+    "FILE:LINE:COLUMN.\n"
+    "Exit status: 0 valid, 2 problems or a bad command line.\n";
 
-static const char list_usage[] = "usage: cablesim list\n"
+static const char list_usage[] = "Usage: cablesim list\n"
                                  "Lists the named parts of the library (data/*.yaml): vehicles, wire ropes, "
-                                 "post and rail sections.\n";
+                                 "post and rail sections.\n"
+                                 "Exit status: 0 done, 1 no parts library, 2 a bad library file or command "
+                                 "line.\n";
 
-static const char schema_usage[] = "usage: cablesim schema\n"
+static const char schema_usage[] = "Usage: cablesim schema\n"
                                    "Prints the model-file reference (docs/file-format.md) from the loader's "
-                                   "schema.\n";
+                                   "schema.\n"
+                                   "Exit status: 0 done, 1 it could not be written, 2 a bad command line.\n";
 
 typedef struct options {
     const char *file, *out_dir;
@@ -118,8 +130,9 @@ static int occupant_at(const cs_cli *cli, const char *arg, options *o) {
     return rc;
 }
 
+/* A command line cablesim cannot take: what was wrong, in one line, and where the help is. */
 static int bad_usage(const char *what) {
-    fprintf(stderr, "cablesim: %s\n%s", what, usage);
+    fprintf(stderr, "cablesim: %s (cablesim --help: the commands)\n", what);
     return EXIT_BAD;
 }
 
@@ -244,10 +257,36 @@ static int write_outputs(cs_outdir *out, const cs_model_input *in, const cs_mode
     return rc;
 }
 
+/* The folder of a run given no -o: results/NAME, and for a run with overrides a folder of its own named
+ * from them, so that it does not replace the run as the file has it: each override as its path without
+ * its first part and brackets, then its value without spaces (--set scenario.speed="35 mph" --set
+ * barrier.cables[0].pretension="8 kip": results/aps3_speed-35mph_cables0.pretension-8kip; --dt 0.2 ms:
+ * _dt-0.2ms). A character a file name would not keep plainly becomes '-'; a name past 160 characters is
+ * cut. */
+static void default_dir(const cs_model_input *in, const cs_overrides *ov, char *path, size_t size) {
+    size_t n = (size_t)snprintf(path, size, "results/%s", in->name);
+    for (int i = 0; i < ov->count && n + 2 < size && n < 168; i++) {
+        const char *t = ov->text[i], *value = strchr(t, ' ') + 1; /* "--set PATH=VALUE", "--dt VALUE" */
+        const char *eq = strncmp(t, "--set ", 6) == 0 ? strchr(value, '=') : NULL;
+        const char *name = eq ? value : t + 2, *name_end = eq ? eq : value - 1;
+        const char *dot = memchr(name, '.', (size_t)(name_end - name));
+        if (eq && dot) name = dot + 1; /* scenario.speed: speed */
+        path[n++] = '_';
+        for (const char *s = name; s < name_end && n + 2 < size; s++)
+            if (*s != '[' && *s != ']') path[n++] = strchr("-.", *s) || isalnum((unsigned char)*s) ? *s : '-';
+        path[n++] = '-';
+        for (const char *s = eq ? eq + 1 : value; *s && n + 1 < size; s++)
+            if (*s != ' ' && *s != '"' && *s != '\'')
+                path[n++] = strchr("-.+", *s) || isalnum((unsigned char)*s) ? *s : '-';
+        path[n] = '\0';
+    }
+    if (n > 168) path[168] = '\0';
+}
+
 static int run(const cs_model_input *in, cs_model *model, const options *o, const char *command) {
     char path[1024], why[512];
     const char *dir = o->out_dir;
-    if (!dir) snprintf(path, sizeof path, "results/%s", in->name), dir = path;
+    if (!dir) default_dir(in, o->overrides, path, sizeof path), dir = path;
     cs_outdir out;
     if (cs_out_open(&out, dir, o->force ? CS_OUT_FORCE : 0, why, sizeof why) != 0) { /* before the run */
         fprintf(stderr, "cablesim: nothing run: %s\n", why);
@@ -373,8 +412,9 @@ int main(int argc, char **argv) {
     if (strcmp(cmd, "designer") == 0) return cs_command_designer(argc, argv);
     int is_run = strcmp(cmd, "run") == 0, is_check = strcmp(cmd, "check") == 0;
     if (!is_run && !is_check && strcmp(cmd, "list") != 0) {
-        fprintf(stderr, "cablesim: unknown command '%s'\n%s", cmd, usage);
-        return EXIT_BAD;
+        char what[300];
+        snprintf(what, sizeof what, "unknown command '%.200s'", cmd);
+        return bad_usage(what);
     }
     if (!is_run && !is_check && (rc = no_arguments(argc, argv, &list_cli)) >= 0) return rc;
     char why[256];

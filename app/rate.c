@@ -24,9 +24,9 @@
 #include "study/rating.h"
 
 static const char rate_usage[] =
-    "usage: cablesim rate FILE --standard astm-f2656|sd-std-02.01|sd-std-02.01a [--class CLASS]\n"
+    "Usage: cablesim rate FILE --standard astm-f2656|sd-std-02.01|sd-std-02.01a [--class CLASS]\n"
     "                     [--set PATH=VALUE]...\n"
-    "       cablesim rate FILE --standard nchrp-350|mash [--level 3|4 | --test 3-11] [--set PATH=VALUE]...\n"
+    "  or:  cablesim rate FILE --standard nchrp-350|mash [--level 3|4 | --test 3-11] [--set PATH=VALUE]...\n"
     "Runs a standard's test conditions against the barrier of FILE, at its impact point, and reads each\n"
     "result as the standard does (docs/ratings.md).\n"
     "Anti-ram: the test vehicle is the model's (after --set), head-on. ASTM F2656 tests C, PU, M and H (a\n"
@@ -34,6 +34,8 @@ static const char rate_usage[] =
     "15,000-lb truck (M); --set vehicle=PU rates the library's PU. Without --class the class's speeds run\n"
     "from the highest and stop at the first at which the vehicle is stopped; --class runs one: C40 C50 C60\n"
     "PU40 PU50 PU60 M30 M40 M50 H30 H40 H50 (ASTM F2656), K4 K8 K12 (SD-STD).\n"
+    "Each row gives its trial's designation as run; the last line, the rating: the first designation\n"
+    "(from the highest speed) with the vehicle stopped, else the lowest speed's.\n"
     "Roadside: each test's own vehicle, speed and angle: --level 3 (the default: x-10 and x-11) or 4 (and\n"
     "4-12), or one --test (3-10, 3-11, 4-10, 4-11, 4-12); each test's occupant risk (OIV, ORA, THIV, PHD,\n"
     "ASI) and every evaluation criterion of the standard: pass, FAIL, or not judged where the model cannot\n"
@@ -192,8 +194,8 @@ static int rate_one(const cs_model_input *in, cs_standard std, const char *klass
             snprintf(pen, sizeof pen, "not measured");
         else
             snprintf(pen, sizeof pen, "%.2f m (%.1f ft)", out->penetration, out->penetration / CS_FT);
-        printf("  %-4s %2d mph  %-12s penetration %-22s ->  %s\n", klass, mph, cs_outcome_name(sm.outcome),
-               pen, out->label);
+        printf("  %-4s %2d mph  %-12s penetration %-22s designation as run %s\n", klass, mph,
+               cs_outcome_name(sm.outcome), pen, out->label);
     }
     cs_state_free(s);
     cs_model_free(m);

@@ -38,9 +38,9 @@
 enum { EXIT_RUN = CS_EXIT_RUN, EXIT_BAD = CS_EXIT_USAGE };
 
 static const char sweep_usage[] =
-    "usage: cablesim sweep SPEC.yaml [-o DIR] [--threads N] [--runs N] [--seed S] [--set PATH=VALUE]...\n"
+    "Usage: cablesim sweep SPEC.yaml [-o DIR] [--threads N] [--runs N] [--seed S] [--set PATH=VALUE]...\n"
     "                      [--t-end T] [--dt T] [--netcdf] [--quiet] [--force]\n"
-    "       cablesim sweep --resume DIR [--threads N] [--quiet] [--force]\n"
+    "  or:  cablesim sweep --resume DIR [--threads N] [--quiet] [--force]\n"
     "Runs the study of SPEC (a base model, the values to vary: grids, or Monte Carlo / Latin hypercube\n"
     "samples) and writes DIR/runs.csv, DIR/summary.md and DIR/summary.json (default DIR: results/<spec\n"
     "name>). --threads: OpenMP threads per process (default: OMP_NUM_THREADS or the cores, shared among\n"
@@ -51,12 +51,12 @@ static const char sweep_usage[] =
     "DIR is checked and locked before any run; the files appear together at the end, listed in\n"
     "DIR/.cablesim-manifest, and an earlier study's files (its manifest's) that this one does not write\n"
     "are removed. A DIR holding a file no manifest lists is refused, unless --force: then the study is\n"
-    "written beside such files, and none of them is removed.\n"
+    "written beside such files, and none of them is removed. --quiet prints nothing but errors (no\n"
+    "progress, no closing lines).\n"
     "SIGINT (Ctrl-C) or SIGTERM: the runs under way finish, no other starts, and DIR gets the runs done,\n"
     "marked partial (summary.md, summary.json \"partial\": true; exit status 130 or 143). --resume DIR\n"
     "reads them back from DIR/runs.csv, runs the others and writes the whole study; it refuses a DIR\n"
-    "whose study changed (spec, model, values, cablesim). CABLESIM_SWEEP_STOP_AFTER=N stops a sweep with\n"
-    "SIGINT once N runs are done (for tests).\n"
+    "whose study changed (spec, model, values, cablesim).\n"
     "Exit status: 0 done, 1 the outputs failed, 2 a bad spec or command line, 128 + the signal: partial.\n";
 
 static const cs_cli sweep_cli = {"sweep", sweep_usage};
@@ -626,7 +626,7 @@ int cs_sweep_command(int argc, char **argv) {
             fprintf(stderr, "cablesim sweep: out of memory for %ld results\n", n);
             rc = EXIT_RUN;
         } else if (o.resume && !was.partial) {
-            printf("sweep: %s holds the whole study (%ld runs): nothing to run\n", dir, n);
+            if (!o.quiet) printf("sweep: %s holds the whole study (%ld runs): nothing to run\n", dir, n);
             rc = -1;
         } else if (o.resume && (done = read_done(dir, spec, &was, x, all, n)) < 0) {
             rc = EXIT_BAD;
@@ -768,7 +768,7 @@ int cs_sweep_command(int argc, char **argv) {
                     "sweep --resume %s` runs the other %ld\n",
                     signal_name(stopped), n - pending, n, dir, dir, pending);
             rc = 128 + (stopped ? stopped : SIGINT);
-        } else {
+        } else if (!o.quiet) {
             printf("sweep: %ld runs in %.3f s (%.3f runs/s) on %d rank%s x %d thread%s; %ld did not run to "
                    "the end\n",
                    todo_n, wall, wall > 0 ? (double)todo_n / wall : 0, size, size == 1 ? "" : "s", threads,

@@ -190,26 +190,31 @@ static void posts_failed_by_kind(const cs_summary *m, int kind, int out[2]) {
                        : (kind == 1 ? m->posts_failed_shear_right : m->posts_failed_pullout_right);
 }
 
-/* One CSV row: suite, case, variant, then the run's numbers; what does not apply is left empty. */
+/* One CSV row: suite, case, variant, then the run's numbers; what does not apply is left empty (the
+ * penetration of a vehicle through the barrier, or still going, is its penetration_beyond, as in
+ * summary.json and runs.csv). */
 static void csv_row(FILE *csv, const char *suite, const char *name, const char *variant, const result *r) {
-    char exit[32] = "", stop[32] = "", b1[32] = "", b2[32] = "";
+    char exit[32] = "", stop[32] = "", b1[32] = "", b2[32] = "", pen[32] = "", beyond[32] = "";
     if (r->ok && cs_outcome_exits(r->sm.outcome)) snprintf(exit, sizeof exit, "%.6g", r->sm.exit_speed_mps);
     if (r->ok && r->sm.outcome == CS_STOPPED) snprintf(stop, sizeof stop, "%.6g", r->sm.stop_time_s);
     if (r->ok && r->cable_break[0] >= 0.0) snprintf(b1, sizeof b1, "%.6g", r->cable_break[0]);
     if (r->ok && r->cable_break[1] >= 0.0) snprintf(b2, sizeof b2, "%.6g", r->cable_break[1]);
+    if (r->ok)
+        snprintf(cs_penetration_is_final(r->sm.outcome) ? pen : beyond, sizeof pen, "%.6g",
+                 r->sm.max_dynamic_penetration_m);
     if (!r->ok) {
-        fprintf(csv, "%s,%s,\"%s\",0,failed,,,,,,,,,,,,,,,,,,,\n", suite, name, variant);
+        fprintf(csv, "%s,%s,\"%s\",0,failed,,,,,,,,,,,,,,,,,,,,\n", suite, name, variant);
         return;
     }
     char angle[32] = "";
     if (cs_outcome_exits(r->sm.outcome)) snprintf(angle, sizeof angle, "%.6g", r->sm.exit_angle_deg);
     const cs_summary *m = &r->sm;
-    fprintf(csv, "%s,%s,\"%s\",1,%s,%.6g,%.6g,%s,%s,%s,%s,%d,%d,%d,%d,%d,%d,%d,%d,%.6g,%.6g,%.6g,%.6g,%s\n",
-            suite, name, variant, cs_outcome_name(m->outcome), m->max_50ms_decel_g,
-            m->max_dynamic_penetration_m, exit, stop, b1, b2, m->posts_failed_left, m->posts_failed_right,
-            m->posts_failed_rotation_left, m->posts_failed_rotation_right, m->posts_failed_shear_left,
-            m->posts_failed_shear_right, m->posts_failed_pullout_left, m->posts_failed_pullout_right,
-            m->energy_balance_error, r->absorbed, m->max_barrier_deflection_m, m->working_width_m, angle);
+    fprintf(csv, "%s,%s,\"%s\",1,%s,%.6g,%s,%s,%s,%s,%s,%d,%d,%d,%d,%d,%d,%d,%d,%.6g,%.6g,%.6g,%.6g,%s,%s\n",
+            suite, name, variant, cs_outcome_name(m->outcome), m->max_50ms_decel_g, pen, exit, stop, b1, b2,
+            m->posts_failed_left, m->posts_failed_right, m->posts_failed_rotation_left,
+            m->posts_failed_rotation_right, m->posts_failed_shear_left, m->posts_failed_shear_right,
+            m->posts_failed_pullout_left, m->posts_failed_pullout_right, m->energy_balance_error, r->absorbed,
+            m->max_barrier_deflection_m, m->working_width_m, angle, beyond);
 }
 
 static const char *fmt_time(double t, char *buf, size_t n) {
@@ -1056,7 +1061,7 @@ static suite *suite_create(void) {
 }
 
 static const char validate_usage[] =
-    "usage: cablesim validate [-o DIR] [--force] [--examples DIR] [--only PARTS] [--report-only]\n"
+    "Usage: cablesim validate [-o DIR] [--force] [--examples DIR] [--only PARTS] [--report-only]\n"
     "Runs the validation suite and writes DIR/validation.md and DIR/validation.csv (default DIR:\n"
     "results/validation): the crash tests beside their measurements (APS1) or as blind predictions (APS3,\n"
     "APS4), each under every documented reading of its design, the roadside predictions, the bogie tests of\n"
@@ -1144,13 +1149,13 @@ int cs_command_validate(int argc, char **argv) {
     fprintf(md, "# cablesim validation\n\nOne parameter set for every case (docs/assumptions.md); nothing is "
                 "tuned to "
                 "a test. Written by `cablesim validate`.\n\n");
-    fprintf(
-        csv,
-        "suite,case,variant,ok,outcome,max_50ms_decel_g,max_dynamic_penetration_m,exit_speed_mps,stop_time_s,"
-        "cable1_break_s,cable2_break_s,posts_failed_left,posts_failed_right,posts_rotation_left,"
-        "posts_rotation_right,posts_shear_left,posts_shear_right,posts_pullout_left,posts_pullout_right,"
-        "energy_balance_error,"
-        "energy_absorbed_j,max_deflection_m,working_width_m,exit_angle_deg\n");
+    fprintf(csv,
+            "suite,case,variant,ok,outcome,max_50ms_decel [g],max_dynamic_penetration [m],exit_speed [m/s],"
+            "stop_time [s],cable0_break [s],cable1_break [s],posts_failed_left,posts_failed_right,"
+            "posts_rotation_left,posts_rotation_right,posts_shear_left,posts_shear_right,posts_pullout_left,"
+            "posts_pullout_right,energy_balance_error [1],energy_absorbed [J],max_deflection "
+            "[m],working_width [m],"
+            "exit_angle [deg],penetration_beyond [m]\n");
     if (wanted(only, "crash")) write_crash(md, csv, s);
     if (wanted(only, "readings")) write_readings(md, csv, s);
     if (wanted(only, "roadside")) write_roadside(md, csv, s);

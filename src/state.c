@@ -132,6 +132,7 @@ void cs_state_restore_barrier(const cs_model *model, cs_state *s, const cs_state
 
 void cs_state_summary(const cs_state *s, cs_summary *out) {
     *out = s->summary;
+    out->penetration_beyond_m = cs_penetration_is_final(out->outcome) ? NAN : out->max_dynamic_penetration_m;
 }
 
 const char *cs_outcome_name(cs_outcome o) {
@@ -166,6 +167,10 @@ int cs_outcome_through(cs_outcome o) {
 
 int cs_outcome_exits(cs_outcome o) {
     return cs_outcome_through(o) || o == CS_REDIRECTED;
+}
+
+int cs_penetration_is_final(cs_outcome o) {
+    return o == CS_STOPPED || o == CS_REDIRECTED || o == CS_NO_CONTACT;
 }
 
 const char *cs_cable_status_name(cs_cable_status st) {

@@ -5,18 +5,37 @@
 # regular file: ENOTDIR even for root), leaving nothing behind.
 source "$(dirname "$0")/lib.sh"
 
-check "cablesim --help" '"$cs" --help | grep -q "^Usage: cablesim run FILE"'
-for sub in run check sweep rate validate list schema designer; do
+top=$("$cs" --help)
+check "cablesim --help" 'grep -q "^Usage: cablesim run FILE" <<<"$top"'
+check "one spelling: Usage: and   or:  (GNU's, as help2man reads them), never usage:" '( for s in "" run check sweep rate validate compare designer list schema; do h=$("$cs" $s --help); head -1 <<<"$h" | grep -q "^Usage: cablesim ${s:-run}" && ! sed 1d <<<"$h" | grep -qiE "^ *usage:" || exit 1; done ) && "$cs" --help | grep -q "^  or:  cablesim check"'
+check "the top level gives validate's and sweep's own exit statuses" 'grep -qF "validate: 3 its targets missed; sweep: 128 + the signal" <<<"$top"'
+check "no test-only environment variable in any help" '! { "$cs" --help; for s in run check sweep rate validate compare designer list schema; do "$cs" "$s" --help; done; } | grep -q "STOP_AFTER"'
+for sub in run check sweep rate validate compare list schema designer; do
     out=$("$cs" "$sub" --help 2>&1)
     check "$sub --help: exit 0" '[ $? -eq 0 ]'
-    check "$sub --help: its usage" 'grep -q "^usage: cablesim $sub" <<<"$out"'
+    check "$sub --help: its usage" 'grep -q "^Usage: cablesim $sub" <<<"$out"'
+    check "$sub --help: its exit status" 'grep -q "^Exit status: 0 " <<<"$out"'
     out=$("$cs" "$sub" examples/aps3.yaml --foo 2>&1)
     check "$sub --foo: exit 2, the option named" '[ $? -eq 2 ] && grep -qxF "cablesim $sub: unknown option '"'"'--foo'"'"'" <<<"$out"'
+    check "$sub --foo: the usage lines and a pointer to --help, not the whole help" '[ "$(grep -cv "^Usage: \|^  or:  \|^       \|^cablesim $sub: unknown option" <<<"$out")" -eq 1 ] && grep -qxF "(cablesim $sub --help: what it does and its options)" <<<"$out"'
     out=$("$cs" "$sub" --bar=1 2>&1)
     check "$sub --bar=1: the option named without its value" '[ $? -eq 2 ] && grep -qF "unknown option '"'"'--bar'"'"'" <<<"$out"'
 done
+# the bash completion offers the options of each command's usage and option lines (and --help, and --out
+# beside -o), and no other
+completion() { bash -c 'source app/cablesim.bash; COMP_WORDS=(cablesim "$1" -); COMP_CWORD=2; _cablesim; printf "%s\n" "${COMPREPLY[@]}"' _ "$1" | grep -vxE -- "--help|--out" | sort; }
+for sub in run check sweep rate validate compare designer list schema; do
+    help_opts=$("$cs" "$sub" --help | grep -E "^(Usage: |  or:  |       |  -)" | grep -oE -- "(^|[ [|,])--?[a-z][a-z-]*" | grep -oE -- "--?[a-z][a-z-]*" | grep -vxE -- "--help|--out" | sort -u)
+    check "completion of $sub: the options of its --help" '[ "$(completion "$sub")" = "$help_opts" ] || { diff <(completion "$sub") <(echo "$help_opts"); false; }'
+done
 out=$("$cs" frobnicate 2>&1)
-check "an unknown command named, exit 2" '[ $? -eq 2 ] && grep -qxF "cablesim: unknown command '"'"'frobnicate'"'"'" <<<"$out"'
+check "an unknown command named in one line, exit 2" '[ $? -eq 2 ] && [ "$out" = "cablesim: unknown command '"'"'frobnicate'"'"' (cablesim --help: the commands)" ]'
+out=$("$cs" compare 2>&1)
+check "compare without a run: exit 2, named" '[ $? -eq 2 ] && grep -qxF "cablesim compare: no run to compare" <<<"$out"'
+out=$("$cs" compare "$tmp" -o 2>&1)
+check "compare -o without its value: named, exit 2" '[ $? -eq 2 ] && grep -qF "option '"'"'-o'"'"' needs a value" <<<"$out"'
+out=$("$cs" sweep tests/sweep/lhs.yaml -o "$tmp/quiet" --threads 1 --runs 2 --quiet 2>&1)
+check "sweep --quiet: exit 0, nothing printed" '[ $? -eq 0 ] && [ -z "$out" ] && [ -s "$tmp/quiet/runs.csv" ]'
 for sub in run check rate sweep; do
     out=$("$cs" "$sub" examples/aps3.yaml --set 2>&1)
     check "$sub --set without its value: named, exit 2" '[ $? -eq 2 ] && grep -qF "option '"'"'--set'"'"' needs a value" <<<"$out"'

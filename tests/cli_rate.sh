@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # cablesim rate: the standard's test condition against a model's barrier, with the model's own vehicle
 # (every class ASTM F2656 tests: a PU model, --set vehicle=C); a vehicle the standard does not test, or a
-# --class of another vehicle, refused with exit 2; `run` and `rate` in the same words; usage errors exit 2.
+# --class of another vehicle, refused with exit 2; `run` and `rate` in the same words (the
+# designation as run; `rate` concludes the rating); usage errors exit 2.
 source "$(dirname "$0")/lib.sh"
 out=$("$cs" rate examples/aps3.yaml --standard astm-f2656 --class M30 --set 'scenario.t_end=0.05 s' 2>&1)
 rc=$?
@@ -21,7 +22,7 @@ aps3="$PWD/examples/aps3.yaml"
 printf 'name: aps3-pu\nbarrier: {file: %s}\nvehicle: PU\nscenario: {file: %s}\n' "$aps3" "$aps3" >"$tmp/pu.yaml"
 out=$("$cs" rate "$tmp/pu.yaml" --standard astm-f2656 --class PU50 2>&1)
 check "rate --class PU50 on a PU model (exit 0)" '[ $? -eq 0 ] || { echo "$out"; false; }'
-check "PU50: the model's PU at 50 mph, stopped, P2" 'grep -qE "^  PU   50 mph  stopped +penetration [0-9.]+ m .* ->  PU50/P2$" <<<"$out" && grep -qxF "rating: ASTM F2656 PU50/P2" <<<"$out"'
+check "PU50: the model's PU at 50 mph, stopped, P2" 'grep -qE "^  PU   50 mph  stopped +penetration [0-9.]+ m .* designation as run PU50/P2$" <<<"$out" && grep -qxF "rating: ASTM F2656 PU50/P2" <<<"$out"'
 check "PU50: its own vehicle named" 'grep -q "(test vehicle PU, the model.s 2300 kg;" <<<"$out"'
 out=$("$cs" rate examples/aps3.yaml --standard astm-f2656 --set vehicle=C --class C50 --set 'scenario.t_end=0.05 s' 2>&1)
 check "--set vehicle=C is honoured: the C runs" '[ $? -eq 0 ] && grep -q "(test vehicle C, the model.s 1102 kg;" <<<"$out" && grep -q "^  C    50 mph " <<<"$out"'
@@ -32,17 +33,17 @@ check "SD-STD with a car: exit 2, not its test vehicle" '[ $? -eq 2 ] && grep -q
 out=$("$cs" rate examples/aps3.yaml --standard astm-f2656 --set vehicle=2000P 2>&1)
 check "ASTM with NCHRP 350's 2000P: exit 2, not its test vehicle" '[ $? -eq 2 ] && grep -q "the model.s vehicle (2000 kg) is not a test vehicle of ASTM F2656 (C 1,100 kg, PU 2,300 kg, M 6,800 kg or H 29,500 kg" <<<"$out"'
 
-# run and rate give a run's rating in the same words: APS3's truck at its 40 mph gets through where the
-# ropes' end fittings hold a quarter of their strength
+# run and rate give a run's designation as run in the same words: APS3's truck at its 40 mph gets through
+# where the ropes' end fittings hold a quarter of their strength; rate's conclusion is its "rating"
 weak=(--set "barrier.cables[0].termination_efficiency=0.25" --set "barrier.cables[1].termination_efficiency=0.25")
 run_out=$("$cs" run examples/aps3.yaml -o "$tmp/run" "${weak[@]}" 2>&1)
 rate_out=$("$cs" rate examples/aps3.yaml --standard astm-f2656 --class M40 "${weak[@]}" 2>&1)
-check "run: the rating as run" 'grep -qxF "  rating (as run)      ASTM F2656 M40/P4 (the vehicle got through)" <<<"$run_out"'
+check "run: the designation as run" 'grep -qxF "  designation (as run) ASTM F2656 M40/P4 (the vehicle got through)" <<<"$run_out"'
 check "run: SD-STD-02.01 too, for its truck" 'grep -qxF "                       SD-STD-02.01 none (the vehicle got through; L1 needs it stopped within 15 m)" <<<"$run_out"'
-check "rate --class M40: the same words" 'grep -qxF "rating: ASTM F2656 M40/P4 (the vehicle got through)" <<<"$rate_out"'
+check "rate --class M40: the same designation as run, and the rating it concludes" 'grep -qE "^  M    40 mph  breakthrough +penetration through the barrier +designation as run M40/P4$" <<<"$rate_out" && grep -qxF "rating: ASTM F2656 M40/P4 (the vehicle got through)" <<<"$rate_out"'
 check "summary.json: the same words" 'grep -qF "\"label\":\"M40/P4\",\"text\":\"ASTM F2656 M40/P4 (the vehicle got through)\"" "$tmp/run/summary.json"'
 out=$("$cs" run examples/roadside/design.yaml -o "$tmp/design" --t-end "20 ms" 2>&1)
-check "run of MASH 2270P (within 5% of the PU) at 25 deg: not rated, and why" 'grep -qxF "  rating (as run)      ASTM F2656 not rated (the impact is at 25.0 deg; its test is head-on, at 90 deg)" <<<"$out"'
+check "run of MASH 2270P (within 5% of the PU) at 25 deg: not rated, and why" 'grep -qxF "  designation (as run) ASTM F2656 not rated (the impact is at 25.0 deg; its test is head-on, at 90 deg)" <<<"$out"'
 # Roadside test conditions: the tests of a level, or one; each a row with its deflection and working width.
 out=$("$cs" rate examples/roadside/rs1.yaml --standard mash --set 'scenario.t_end=0.3 s' 2>&1)
 check "mash TL-3 runs 3-10 and 3-11 (exit 0)" '[ $? -eq 0 ] && [ "$(grep -cE "^  3-1[01] +(1100C|2270P) +100 km/h 25 deg .* deflection [0-9.]+ m .* working width [0-9.]+ m" <<<"$out")" -eq 2 ]'

@@ -41,9 +41,11 @@ for f in timeseries.csv events.csv summary.json; do
     check "$f written" '[ -s "$out/$f" ]'
 done
 check "no temporaries left" '[ -z "$(ls "$out" | grep "\.tmp$")" ]'
-check "timeseries header has units" 'head -1 "$out/timeseries.csv" | grep -q "^t_s,x_m,y_m,z_m,vx_mps,.*decel_50ms_g.*cable0_max_tension_n.*post0_state.*energy_balance_error$"'
+check "timeseries header has units" 'head -1 "$out/timeseries.csv" | grep -q "^t \[s\],x \[m\],y \[m\],z \[m\],vx \[m/s\],.*decel_50ms \[g\].*cable0_max_tension \[N\],cable0_state.*post0_state.*energy_balance_error \[1\]$"'
+check "every header cell of timeseries.csv and events.csv is \"name [unit]\" or a name alone (no unit suffix)" \
+    'cells=$(head -qn1 "$out/timeseries.csv" "$out/events.csv" | tr , "\n"); [ "$(wc -l <<<"$cells")" -gt 20 ] && ! grep -vqE "^[a-z0-9_]+( \[[^]]+\])?\$" <<<"$cells" && ! grep -qE "_(s|m|n|j|g|rad|mps|mps2|si)\$" <<<"$cells"'
 check "timeseries has rows" '[ "$(wc -l <"$out/timeseries.csv")" -gt 10 ]'
-check "events header" 'head -1 "$out/events.csv" | grep -q "^t_s,type,element_kind,element,value_si,value_unit,cable_end$"'
+check "events header" 'head -1 "$out/events.csv" | grep -q "^t \[s\],type,element_kind,element,value,value_unit,cable_end$"'
 # APS3's first events: its middle posts hinge at their plastic moment, Zx Fy = 7,270.57 N m; every
 # event's value has its unit, and none but a termination event has a cable end
 check "a hinge's moment in N m" 'grep -qE "^[0-9.]+,post_hinge,post,[0-9]+,7270\.57[0-9]*,N m,$" "$out/events.csv"'
@@ -187,4 +189,10 @@ out=$(timeout 60 "$cs" run examples/aps3.yaml -o "$tmp/tiny" --dt "0.1 us" --set
 check "past 10 million frames is refused at its place" '[ $? -eq 2 ] && grep -qF "scenario.output_interval=0.1 us: 3e+07 frames to the end time (t_end / output_interval) exceed the limit of 1e+07" <<<"$out"'
 out=$("$cs" run examples/aps3.yaml -o "$tmp/steps" --set scenario.max_steps=100 2>&1)
 check "scenario.max_steps ends the run: step_limit" '[ $? -eq 0 ] && grep -q "^aps3: the run took its 100 steps (scenario.max_steps) at t = 0.050 s" <<<"$out" && grep -q "\"outcome\":\"step_limit\"" "$tmp/steps/summary.json"'
+# no -o: results/NAME, and a run with overrides a folder of its own named from them, leaving the first
+mkdir -p "$tmp/cwd"
+(cd "$tmp/cwd" && "$cs" run "$OLDPWD/examples/aps3.yaml" >/dev/null 2>&1 &&
+    "$cs" run "$OLDPWD/examples/aps3.yaml" --set scenario.speed="35 mph" --set 'barrier.cables[0].pretension=8 kip' --t-end "10 ms" >"$tmp/cwd.out" 2>&1)
+check "no -o: results/aps3, and the run with overrides in results/aps3_speed-35mph_cables0.pretension-8kip_t-end-10ms" \
+    '[ "$(ls "$tmp/cwd/results" | tr "\n" " ")" = "aps3 aps3_speed-35mph_cables0.pretension-8kip_t-end-10ms " ] && grep -q "\"overrides\":\[\]" "$tmp/cwd/results/aps3/summary.json" && grep -qF "outputs              results/aps3_speed-35mph_cables0.pretension-8kip_t-end-10ms/{" "$tmp/cwd.out"'
 finish

@@ -18,7 +18,7 @@ check "runs.csv: the header and the one run done, as the whole sweep has it" '[ 
 check "summary.json: partial, 1 run done, by SIGINT" 'grep -q "^\"partial\":true,\"runs_done\":1,\"stopped_by\":\"SIGINT\"," "$dir/summary.json"'
 check "summary.md: a partial note first" '[ "$(sed -n 3p "$dir/summary.md")" = "**Partial**: 1 of 4 runs were run before SIGINT stopped the sweep; the tables below are of those. \`cablesim sweep --resume $dir\` runs the rest and completes these files." ]'
 check "a partial sweep writes no runs.nc" '[ ! -e "$dir/runs.nc" ]'
-"$cs" sweep --resume "$dir" --threads 2 --quiet >"$tmp/resume.out" 2>&1
+"$cs" sweep --resume "$dir" --threads 2 >"$tmp/resume.out" 2>&1
 check "--resume exits 0" '[ $? -eq 0 ] || { cat "$tmp/resume.out"; false; }'
 check "--resume ran the other 3" 'grep -qxF "sweep: 1 runs read back from $dir/runs.csv, 3 run now" "$tmp/resume.out"'
 check "runs.csv: byte for byte the whole sweep's" 'cmp "$dir/runs.csv" "$tmp/whole/runs.csv"'

@@ -1,7 +1,7 @@
 /* report.html's writer (src/io/out/report_html.c) on a short real run: the markers of a page are filled,
  * the title is HTML-escaped and the data (a command line with "</script>" in it included) cannot close its
- * <script>, the data has every part the page reads (provenance and ratings too; a run cut at its time
- * limit has no penetration, only how far it got), the design as loaded (ropes, kinds of post, their
+ * <script>, the data has every part the page reads (provenance and designations as run too; a run cut at its
+ * time limit has no penetration, only how far it got), the design as loaded (ropes, kinds of post, their
  * places, soil, anchors) carries the model's values, a page without its data marker is refused, and a long
  * record is subsampled to the budget. The page itself is tested in a browser (report/test/browser.mjs). */
 #define _POSIX_C_SOURCE 200809L
@@ -135,7 +135,7 @@ static void data_complete(void **st) {
     static const char *const keys[] = {"\"cablesim\":{\"version\":\"" CS_VERSION_STRING "\"",
                                        "\"overrides\":[\"--set scenario.t_end=40 ms\"]",
                                        "\"model_hash\":\"0123456789abcdef\"",
-                                       "\"ratings\":[]",
+                                       "\"designations_as_run\":[]",
                                        "\"summary\":",
                                        "\"outcome\":",
                                        "\"max_50ms_decel_g\":",

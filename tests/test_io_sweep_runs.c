@@ -96,7 +96,8 @@ static void test_runs_csv(void **state) {
     assert_int_equal(cs_sweep_write_runs(out, f->spec, f->x, f->r, RUNS, why, sizeof why), 0);
     fclose(out);
     const char *want =
-        "run,barrier.cables[0].pretension [N],vehicle,outcome,astm_f2656,time_reached [s],max_50ms_decel [g],"
+        "run,barrier.cables[0].pretension [N],vehicle,outcome,astm_f2656_as_run,time_reached "
+        "[s],max_50ms_decel [g],"
         "t_max_50ms_decel [s],max_dynamic_penetration [m],penetration_beyond [m],max_barrier_deflection [m],"
         "working_width [m],"
         "stop_time [s],exit_speed [m/s],exit_angle [deg],first_contact_time "
@@ -210,7 +211,7 @@ static void test_runs_netcdf(void **state) {
     assert_text(id, "vehicle", 12, (const char *const[]){"SD-STD-02.01", "PU", "SD-STD-02.01"});
     /* text results; the failed run's rating is empty, its error whole */
     assert_text(id, "outcome", 12, (const char *const[]){"stopped", "breakthrough", "failed"});
-    assert_text(id, "astm_f2656", 7, (const char *const[]){"M40/P2", "PU40/P4", ""});
+    assert_text(id, "astm_f2656_as_run", 7, (const char *const[]){"M40/P2", "PU40/P4", ""});
     assert_text(id, "error", 30, (const char *const[]){"", "", "the solve \"diverged\", at 0.1 s"});
     /* numbers in full (runs.csv rounds to 10 digits), and the fill value where a run has none */
     double fill;

@@ -8,6 +8,7 @@
  *   cc post_spacing.c $(pkg-config --cflags --libs cablesim) -o post_spacing
  * or with this folder's CMakeLists.txt (find_package(cablesim)). Exit status: 0 done, 1 the run failed,
  * 2 a bad model. */
+#include <math.h>
 #include <stdio.h>
 
 #include <cablesim/cablesim.h>
@@ -47,7 +48,10 @@ int main(int argc, char **argv) {
         printf("%s with its posts %s apart (libcablesim %s)\n", in.name, spacing, cs_version());
         printf("outcome: %s at t = %.3f s\n", cs_outcome_name(s.outcome), s.t_end_s);
         printf("max 50-ms deceleration: %.3f g at t = %.3f s\n", s.max_50ms_decel_g, s.t_max_50ms_decel_s);
-        printf("max penetration: %.3f m\n", s.max_dynamic_penetration_m);
+        if (isnan(s.penetration_beyond_m))
+            printf("max penetration: %.3f m\n", s.max_dynamic_penetration_m);
+        else /* through the barrier, or still going: how far it had got */
+            printf("penetration: beyond %.3f m\n", s.penetration_beyond_m);
         printf("posts failed: %d left, %d right; cables broken: %d\n", s.posts_failed_left,
                s.posts_failed_right, s.cables_broken);
         double next = 0.0;

@@ -86,6 +86,10 @@ typedef enum cs_outcome {
 CS_API int cs_outcome_exits(cs_outcome outcome);
 /** Whether the vehicle got through the barrier (broke through, rode over or ran under it). */
 CS_API int cs_outcome_through(cs_outcome outcome);
+/** Whether a run that ended so has a penetration (the vehicle stopped, was redirected or never touched the
+ * barrier), rather than how far it had got with the vehicle through or still going (a lower bound:
+ * cs_summary's penetration_beyond_m). */
+CS_API int cs_penetration_is_final(cs_outcome outcome);
 
 /** Called by cs_run with the state at each output; user is cs_run's. cs_record_frame is one. */
 typedef void (*cs_output_fn)(const cs_model *model, const cs_state *state, void *user);
@@ -343,7 +347,9 @@ typedef struct cs_summary {
     double t_end_s;                   /**< time reached, s */
     double max_50ms_decel_g;          /**< largest 50-ms average deceleration along travel, g */
     double t_max_50ms_decel_s;        /**< the end of that 50-ms window, s */
-    double max_dynamic_penetration_m; /**< front face past the attack face, m */
+    double max_dynamic_penetration_m; /**< front face past the attack face, m: the run's penetration where
+                                           cs_penetration_is_final(outcome), else how far the front had
+                                           got (penetration_beyond_m) */
     double max_barrier_deflection_m;  /**< largest y of any cable path point (the dynamic deflection), m */
     double working_width_m;          /**< largest y reached by any part of the vehicle's outline, a cable or a
                                           standing post's top: the reach past the barrier's line (y = 0), m */
@@ -373,6 +379,10 @@ typedef struct cs_summary {
     int sudden_loss_count; /**< sudden losses of the barrier's force on the vehicle, found at the
                                 run's end from its force at every step (0 while it runs) */
     cs_sudden_loss sudden_losses[CS_SUMMARY_SUDDEN_LOSSES]; /**< the first of them, in time order */
+    double penetration_beyond_m; /**< a vehicle through the barrier or still going (not
+                                      cs_penetration_is_final(outcome)): how far its front had got when the
+                                      run ended, m, its penetration beyond it (summary.json's
+                                      penetration_beyond_m); NAN where the penetration is final */
 } cs_summary;
 
 /** Fill out with the response parameters now (at the run's end: the run's). */

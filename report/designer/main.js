@@ -6,7 +6,7 @@
 import uPlot from 'uplot';
 import uplotCss from 'uplot/dist/uPlot.min.css';
 import createCablesim from 'cablesim-wasm';
-import { story, cards, summaryTable, ratingsText, el } from '../src/summary.js';
+import { story, cards, summaryTable, designationsText, el } from '../src/summary.js';
 import { buildPlots } from '../src/plots.js';
 import { createReplay } from '../src/replay.js';
 import { fmt } from '../src/units.js';
@@ -64,15 +64,16 @@ function writeFiles(design) {
   engine.FS.chdir('/model');
 }
 
-// The field's name for a person: "line posts: spacing", "cable 2: pretension".
+// The field's name for a person: "line posts: spacing", "cable 1: pretension". Cables and post groups are
+// counted from 0, as in every output and in the --set paths (barrier.cables[1] is cable 1).
 function label(values, path, m) {
   const key = path.split('.').pop();
   const word = LABELS[key] || key;
-  if (path.startsWith('barrier.cables')) return `cable ${Number(m[1]) + 1}: ${word}`;
+  if (path.startsWith('barrier.cables')) return `cable ${Number(m[1])}: ${word}`;
   if (path.startsWith('barrier.posts')) {
     const name = values.get(`barrier.posts[${m[1]}].name`);
     const part = path.includes('.footing.') ? `footing ${word}` : word;
-    return `${name || `posts ${Number(m[1]) + 1}`}: ${part}`;
+    return `${name || `posts ${Number(m[1])}`}: ${part}`;
   }
   if (path.startsWith('barrier.anchors')) return `${m[1]} anchor: footing ${word}`;
   return word;
@@ -144,7 +145,7 @@ function showRun(r) {
   const data = r.report;
   $('story').textContent = story(data);
   $('cards').replaceChildren(cards(data));
-  $('rating').textContent = `Rating as run: ${ratingsText(data)}.`;
+  $('designation').textContent = `Designation as run: ${designationsText(data)}.`;
   $('table').replaceChildren(summaryTable(data));
   const plotsHost = el('div', { class: 'plots' });
   $('plots').replaceWith(plotsHost);

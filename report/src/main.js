@@ -1,7 +1,7 @@
 // report.html: reads the run's JSON from the page and builds the summary, the 3D replay, the failure
 // timeline and the plots. window.csReport exposes the page's state (the browser test reads it).
 import uplotCss from 'uplot/dist/uPlot.min.css';
-import { story, cards, summaryTable, designTable, timelineTable, ratingsText, el } from './summary.js';
+import { story, cards, summaryTable, designTable, timelineTable, designationsText, el } from './summary.js';
 import { buildPlots } from './plots.js';
 import { createReplay, POST_COLORS, BROKEN_CABLE, postState } from './replay.js';
 import { gradient } from './colors.js';
@@ -53,7 +53,7 @@ function main() {
   $('meta').textContent = `cablesim ${data.version} · model file ${data.file} · model hash ${prov.model_hash || '–'} · ${seconds(data.summary.t_end_s)} simulated with a ${fmt(data.scenario.dt * 1e3, 2)}-ms time step`;
   $('command').textContent = prov.command || '–';
   $('overrides').textContent = prov.overrides.length ? prov.overrides.join('  ') : 'none';
-  $('rating').textContent = `Rating as run: ${ratingsText(data)}.`;
+  $('designation').textContent = `Designation as run: ${designationsText(data)}.`;
   $('story').textContent = story(data);
   $('cards').append(cards(data));
   $('table').append(summaryTable(data));

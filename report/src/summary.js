@@ -34,9 +34,10 @@ export function penetrationText(s) {
   return s.penetration_beyond_m === null || s.penetration_beyond_m === undefined ? '–' : `beyond ${pair('length', s.penetration_beyond_m)}`;
 }
 
-// The ratings as run, one line each, in the command's words ("ASTM F2656 M40/P4 (the vehicle got through)").
-export function ratingsText(data) {
-  const r = data.ratings || [];
+// The designations of the test as run, one per standard, in the command's words ("ASTM F2656 M40/P4 (the
+// vehicle got through)"): not the rating `cablesim rate` finds over the standard's speeds (docs/ratings.md).
+export function designationsText(data) {
+  const r = data.designations_as_run || [];
   return r.length ? r.map((x) => x.text).join('; ') : 'not rated: the vehicle is not a test vehicle of ASTM F2656 or SD-STD-02.01';
 }
 
@@ -128,7 +129,7 @@ export function summaryTable(data) {
     ['Outcome', (OUTCOME[s.outcome] || OUTCOME.running).word, `at t = ${seconds(s.t_end_s)}`],
     ['Model', data.name, data.file],
     ['Model hash (FNV-1a 64 of its definitions)', data.cablesim.model_hash || '–', null],
-    ['Rating (as run)', ratingsText(data), 'docs/ratings.md'],
+    ['Designation as run', designationsText(data), 'docs/ratings.md'],
     ['Vehicle mass', ...both.mass(data.vehicle.mass)],
     ['Impact speed', ...both.speed(sc.speed)],
     ['Impact angle (90° = head-on)', ...both.angle(sc.angle)],
@@ -239,7 +240,7 @@ export function designTable(data) {
   d.post_kinds.forEach((k, i) => {
     const f = k.footing;
     groups.push([
-      `Post section ${d.post_kinds.length > 1 ? `${i + 1} ` : ''}(post${k.posts.length === 1 ? '' : 's'} ${ranges(k.posts)}: ${k.posts.length})`,
+      `Post section ${d.post_kinds.length > 1 ? `${i} ` : ''}(post${k.posts.length === 1 ? '' : 's'} ${ranges(k.posts)}: ${k.posts.length})`,
       [
         row('Plastic section modulus Zx', both.sectionModulus(k.plastic_modulus_m3)),
         row('Moment of inertia Ix', both.inertia(k.inertia_m4)),

@@ -81,8 +81,8 @@ try {
     const pen = await page.locator('.card').nth(2).textContent();
     check('a run still going gives its penetration as "beyond"', /^Penetrationbeyond \d/.test(pen), pen);
   }
-  const rating = await page.textContent('#rating');
-  check('the rating as run is stated', /^Rating as run: (ASTM F2656|not rated)/.test(rating), rating);
+  const designation = await page.textContent('#designation');
+  check('the designation as run is stated', /^Designation as run: (ASTM F2656|not rated)/.test(designation), designation);
   const table = await page.textContent('table.summary');
   check('the summary table gives SI and US units', /m\/s/.test(table) && /mph/.test(table) && /kip/.test(table) && /ft/.test(table));
 

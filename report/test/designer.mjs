@@ -2,7 +2,7 @@
 // examples/aps3.yaml opens from file:// with no console error and no network request, and its runs are
 // the command's: the first as the file has it, then with the post spacing and the speed changed in the
 // form. The numbers change; against `cablesim run --set` of the same values the model
-// (every value the engine is given, its hash), the outcome and the ratings are the same, and the numbers
+// (every value the engine is given, its hash), the outcome and the designations as run are the same, and the numbers
 // are too, to every digit of summary.json, when the command has the page's maths (musl's: CMake's
 // default), else within 2% (see compare below). The downloaded YAML runs natively to every digit of
 // `cablesim run --set`; a value in a wrong unit shows its message beside its field; a sweep runs; a
@@ -29,7 +29,7 @@ function native(name, model, sets) {
 }
 
 // The page's run against the command's. Always exact: the model (every value the engine is given, in SI,
-// and its hash: the page's loader and unit table are the command's), the outcome and the ratings. The
+// and its hash: the page's loader and unit table are the command's), the outcome and the designations as run. The
 // response numbers: to every digit of summary.json when the command's engine has the page's maths
 // (--math musl: the command has musl's maths); else within TOLERANCE, since glibc's maths differ from the
 // page's in the last bit and a crash carries that into the fourth digit (docs/designer.md).
@@ -39,7 +39,7 @@ function compare(what, page, cmd) {
   const inputs = (s) => JSON.stringify({ ...s.inputs, file: null });
   check(`${what}: the page's model is the command's (inputs, hash)`, inputs(page) === inputs(cmd) && page.cablesim.model_hash === cmd.cablesim.model_hash, `${page.cablesim.model_hash} ${cmd.cablesim.model_hash}`);
   check(`${what}: the same outcome`, page.outcome === cmd.outcome, `${page.outcome} ${cmd.outcome}`);
-  check(`${what}: the same ratings`, JSON.stringify(page.ratings.map((r) => r.text)) === JSON.stringify(cmd.ratings.map((r) => r.text)), JSON.stringify([page.ratings, cmd.ratings]));
+  check(`${what}: the same designations as run`, JSON.stringify(page.designations_as_run.map((r) => r.text)) === JSON.stringify(cmd.designations_as_run.map((r) => r.text)), JSON.stringify([page.designations_as_run, cmd.designations_as_run]));
   let total = 0;
   let same = 0;
   let worst = [0, ''];
@@ -51,7 +51,7 @@ function compare(what, page, cmd) {
       if (d > worst[0]) worst = [d, `${key}: page ${a}, command ${b}`];
     } else if (a && b && typeof a === 'object') for (const k of Object.keys(b)) walk(a[k], b[k], `${key}.${k}`);
   };
-  for (const k of Object.keys(cmd)) if (!['cablesim', 'inputs', 'ratings'].includes(k)) walk(page[k], cmd[k], k);
+  for (const k of Object.keys(cmd)) if (!['cablesim', 'inputs', 'designations_as_run'].includes(k)) walk(page[k], cmd[k], k);
   console.log(`${what}: ${same} of ${total} numbers (events included) equal to summary.json's digits; the largest difference ${(100 * worst[0]).toPrecision(2)}% (${worst[1] || 'none'}); ${page.events.length} events, the command ${cmd.events.length}`);
   if (exact) {
     const strip = (s) => JSON.stringify({ ...s, cablesim: s.cablesim.model_hash, inputs: { ...s.inputs, file: null } });

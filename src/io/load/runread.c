@@ -107,6 +107,7 @@ static void clear(cs_trace *tr, const char *label, int measured) {
     tr->measured = measured;
     tr->max_decel_50ms_g = tr->t_max_decel_50ms = tr->max_penetration = tr->final_speed = NAN;
     tr->max_tension = tr->t_end = tr->max_deflection = tr->working_width = tr->exit_speed = NAN;
+    tr->penetration_beyond_m = NAN;
 }
 
 void cs_trace_free(cs_trace *tr) {
@@ -161,7 +162,7 @@ static void derive(cs_trace *tr) {
             if (isfinite(g) && !(g <= tr->max_decel_50ms_g))
                 tr->max_decel_50ms_g = g, tr->t_max_decel_50ms = tr->t[i];
         }
-    if (isnan(tr->max_penetration) && tr->have[CS_TRACE_PENETRATION])
+    if (isnan(tr->max_penetration) && isnan(tr->penetration_beyond_m) && tr->have[CS_TRACE_PENETRATION])
         for (size_t i = 0; i < tr->n; i++)
             if (isfinite(tr->y[CS_TRACE_PENETRATION][i]) &&
                 !(tr->y[CS_TRACE_PENETRATION][i] <= tr->max_penetration))
@@ -208,7 +209,7 @@ static int read_summary(const char *dir, cs_trace *tr, char *why, size_t why_siz
     tr->max_decel_50ms_g = json_number(root, "max_50ms_decel_g");
     tr->t_max_decel_50ms = json_number(root, "t_max_50ms_decel_s");
     tr->max_penetration = json_number(root, "max_dynamic_penetration_m");
-    tr->penetration_beyond = isnan(tr->max_penetration); /* null: the vehicle got through */
+    tr->penetration_beyond_m = json_number(root, "penetration_beyond_m"); /* null: it stopped */
     tr->max_deflection = json_number(root, "max_barrier_deflection_m");
     tr->working_width = json_number(root, "working_width_m");
     tr->exit_speed = json_number(root, "exit_speed_mps");
@@ -222,15 +223,44 @@ static int read_summary(const char *dir, cs_trace *tr, char *why, size_t why_siz
     return 0;
 }
 
-int cs_trace_read_run(const char *dir, cs_trace *tr, char *why, size_t why_size) {
-    clear(tr, dir, 0);
-    if (read_summary(dir, tr, why, why_size) != 0) return -1;
-    char path[1200];
-    snprintf(path, sizeof path, "%s/timeseries.csv", dir);
+enum { MAX_COLS = 4096 }; /* of a run's timeseries.csv */
+
+/* The columns of a run's timeseries.csv that a trace is made of. */
+typedef struct run_columns {
+    int t, vx, vy, ax, ay, speed, decel_50ms, penetration;
+} run_columns;
+
+/* Whether a header is a run's timeseries.csv's, with the columns a trace reads into *c. */
+static int run_header(char *const *head, int nh, run_columns *c) {
+    c->t = column_of(head, nh, "t [s]"), c->vx = column_of(head, nh, "vx [m/s]");
+    c->vy = column_of(head, nh, "vy [m/s]"), c->ax = column_of(head, nh, "ax [m/s^2]");
+    c->ay = column_of(head, nh, "ay [m/s^2]"), c->speed = column_of(head, nh, "forward_speed [m/s]");
+    c->decel_50ms = column_of(head, nh, "decel_50ms [g]"),
+    c->penetration = column_of(head, nh, "penetration [m]");
+    return c->t == 0 && c->vx >= 0 && c->vy >= 0 && c->ax >= 0 && c->ay >= 0 && c->speed >= 0 &&
+           c->decel_50ms >= 0 && c->penetration >= 0;
+}
+
+/* Whether text's first line is the header of a run's timeseries.csv: 1, 0, or -1 out of memory. */
+static int is_run_series(const char *text) {
+    size_t n = strcspn(text, "\n");
+    char *line = malloc(n + 1), **cells = malloc(MAX_COLS * sizeof *cells), *p = line;
+    int *col = malloc(MAX_COLS * sizeof *col), is = -1;
+    if (line && cells && col) {
+        memcpy(line, text, n);
+        line[n] = '\0';
+        run_columns c;
+        is = run_header(cells, split_line(&p, cells, col, MAX_COLS), &c);
+    }
+    free(line), free(cells), free(col);
+    return is;
+}
+
+/* A run's time history, timeseries.csv at path, into tr (cleared, its label and measured set). */
+static int read_run_series(const char *path, cs_trace *tr, char *why, size_t why_size) {
     csv_file f;
     size_t rows;
     if (read_all(path, &f, &rows, why, why_size) != 0) return -1;
-    enum { MAX_COLS = 4096 };
     char **cells = malloc(MAX_COLS * sizeof *cells), **head = malloc(MAX_COLS * sizeof *head);
     int *col = malloc(MAX_COLS * sizeof *col), rc = -1;
     char *p = f.text;
@@ -239,16 +269,14 @@ int cs_trace_read_run(const char *dir, cs_trace *tr, char *why, size_t why_size)
         goto done;
     }
     int nh = split_line(&p, head, col, MAX_COLS);
-    int it = column_of(head, nh, "t_s"), ivx = column_of(head, nh, "vx_mps"),
-        ivy = column_of(head, nh, "vy_mps");
-    int iax = column_of(head, nh, "ax_mps2"), iay = column_of(head, nh, "ay_mps2");
-    int isp = column_of(head, nh, "forward_speed_mps"), id50 = column_of(head, nh, "decel_50ms_g");
-    int ipen = column_of(head, nh, "penetration_m");
-    if (it < 0 || ivx < 0 || ivy < 0 || iax < 0 || iay < 0 || isp < 0 || id50 < 0 || ipen < 0) {
-        snprintf(why, why_size, "%s:1:1: not a run's time history (expected t_s, vx_mps, ... penetration_m)",
-                 path);
+    run_columns c;
+    if (!run_header(head, nh, &c)) {
+        snprintf(why, why_size,
+                 "%s:1:1: not a run's time history (expected t [s], vx [m/s], ... penetration [m])", path);
         goto done;
     }
+    int it = c.t, ivx = c.vx, ivy = c.vy, iax = c.ax, iay = c.ay, isp = c.speed, id50 = c.decel_50ms,
+        ipen = c.penetration;
     double u0[2] = {0.0, 0.0};
     for (size_t line = 2; *p; line++) {
         int row = next_row(&p, cells, col, MAX_COLS, nh, path, line, why, why_size);
@@ -264,7 +292,7 @@ int cs_trace_read_run(const char *dir, cs_trace *tr, char *why, size_t why_size)
         tr->y[CS_TRACE_PENETRATION][i] = strtod(cells[ipen], NULL);
         double tmax = NAN;
         for (int k = 0; k < nh; k++) /* the tautest rope at this time */
-            if (strncmp(head[k], "cable", 5) == 0 && strstr(head[k], "_max_tension_n")) {
+            if (strncmp(head[k], "cable", 5) == 0 && strstr(head[k], "_max_tension [N]")) {
                 double x = strtod(cells[k], NULL);
                 if (!(x <= tmax)) tmax = x;
             }
@@ -278,6 +306,14 @@ done:
     free(cells), free(head), free(col), free(f.text);
     if (rc != 0) cs_trace_free(tr);
     return rc;
+}
+
+int cs_trace_read_run(const char *dir, cs_trace *tr, char *why, size_t why_size) {
+    clear(tr, dir, 0);
+    if (read_summary(dir, tr, why, why_size) != 0) return -1;
+    char path[1200];
+    snprintf(path, sizeof path, "%s/timeseries.csv", dir);
+    return read_run_series(path, tr, why, why_size);
 }
 
 /* ---- a measured history ---- */
@@ -296,15 +332,21 @@ int cs_trace_read_measured(const char *path, cs_units *units, cs_trace *tr, char
     csv_file f;
     size_t rows;
     if (read_all(path, &f, &rows, why, why_size) != 0) return -1;
-    enum { MAX_COLS = 16 };
-    char *head[MAX_COLS], *cells[MAX_COLS], *p = f.text, unit[64], text[96];
-    int hcol[MAX_COLS], col[MAX_COLS], rc = -1, target[MAX_COLS];
-    double factor[MAX_COLS];
+    enum { MEASURED_COLS = 16 };
+    char *head[MEASURED_COLS], *cells[MEASURED_COLS], *p = f.text, unit[64], text[96];
+    int hcol[MEASURED_COLS], col[MEASURED_COLS], rc = -1, target[MEASURED_COLS];
+    double factor[MEASURED_COLS];
+    int is_run = is_run_series(f.text);
+    if (is_run != 0) { /* a run's own timeseries.csv, read as a run's (or out of memory) */
+        free(f.text);
+        if (is_run < 0) snprintf(why, why_size, "%s: out of memory", path);
+        return is_run < 0 ? -1 : read_run_series(path, tr, why, why_size);
+    }
+    int nh = split_line(&p, head, hcol, MEASURED_COLS);
     if (alloc_trace(tr, rows + 1) != 0) {
         snprintf(why, why_size, "%s: out of memory", path);
         goto done;
     }
-    int nh = split_line(&p, head, hcol, MAX_COLS);
     if (nh < 2) {
         snprintf(why, why_size,
                  "%s:1:1: a header of a time column and at least one more (expected e.g. "
@@ -349,7 +391,7 @@ int cs_trace_read_measured(const char *path, cs_units *units, cs_trace *tr, char
         tr->have[target[j]] = 1;
     }
     for (size_t line = 2; *p; line++) {
-        int row = next_row(&p, cells, col, MAX_COLS, nh, path, line, why, why_size);
+        int row = next_row(&p, cells, col, MEASURED_COLS, nh, path, line, why, why_size);
         if (row < 0) goto done;
         if (row == 0) continue;
         size_t i = tr->n;

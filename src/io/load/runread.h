@@ -31,8 +31,10 @@ typedef struct cs_trace {
      * largest penetration, m; the speed at the end, m/s; the largest rope tension, N; the end, s */
     double max_decel_50ms_g, t_max_decel_50ms, max_penetration, final_speed, max_tension, t_end;
     double max_deflection, working_width, exit_speed; /* from a run's summary only, m, m, m/s */
-    int penetration_beyond; /* a run that got through: its penetration (from the series) is where it was
-                               when the run ended, and the real one beyond it */
+    /* a run that got through (or was still going): how far it had got when the run ended, m, its real
+     * penetration beyond it, and max_penetration NAN, as summary.json's penetration_beyond_m and
+     * max_dynamic_penetration_m: null; NAN for a run that stopped and for a measured trace */
+    double penetration_beyond_m;
 } cs_trace;
 
 /* Read the run in folder dir. Returns 0, or -1 with why filled ("dir/timeseries.csv: No such file..."). */

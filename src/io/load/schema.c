@@ -619,5 +619,19 @@ int cs_schema_markdown(FILE *out) {
             fprintf(out, " | %s |\n", f->doc);
         }
     }
+    fputs("\n## CSV files\n\n"
+          "Every CSV file cablesim writes (a run's timeseries.csv and events.csv, a sweep's runs.csv, "
+          "compare.csv, validation.csv) has one header line that names each column `name [unit]`, the unit "
+          "SI as udunits2 writes it: `t [s]`, `forward_speed [m/s]`, `ax [m/s^2]`, `cable0_max_tension [N]`, "
+          "`energy_balance_error [1]` (a fraction), and `decel_50ms [g]` (standard gravities) and "
+          "`exit_angle [deg]` where the standards read them so. A column without a unit (a state, a type, an "
+          "outcome, a count, an index) has its name alone: `cable0_state`, `type`, `posts_failed_left`. A "
+          "column whose unit changes from row to row has it in the column beside it (events.csv's `value` "
+          "and `value_unit`, compare.csv's `unit`). Cables, posts and anchors are numbered from 0, as the "
+          "paths of `--set` count them (`cable1` is `barrier.cables[1]`), in every output; anchor 0 is "
+          "`barrier.anchors.start` (the low-x end), anchor 1 `barrier.anchors.end`. `cablesim compare "
+          "--measured FILE` reads a file of this convention (or "
+          "`name (unit)`), a run's own timeseries.csv too.\n",
+          out);
     return ferror(out) ? -1 : 0;
 }

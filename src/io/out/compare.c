@@ -105,6 +105,7 @@ static const param params[] = {
     P("max 50-ms deceleration", "g", NULL, 0, max_decel_50ms_g),
     P("time of the max 50-ms deceleration", "s", NULL, 0, t_max_decel_50ms),
     P("max dynamic penetration", "m", "ft", CS_FT, max_penetration),
+    P("penetration beyond", "m", "ft", CS_FT, penetration_beyond_m),
     P("max barrier deflection", "m", "ft", CS_FT, max_deflection),
     P("working width", "m", "ft", CS_FT, working_width),
     P("speed at the end", "m/s", "mph", CS_MPH, final_speed),
@@ -118,15 +119,16 @@ static double value(const cs_trace *tr, int k) {
     return *(const double *)((const char *)tr + params[k].offset);
 }
 
-/* Whether parameter k of tr is a lower bound: the penetration of a run that got through. */
-static int beyond(const cs_trace *tr, int k) {
-    return tr->penetration_beyond && params[k].offset == offsetof(cs_trace, max_penetration);
+/* Whether parameter k is a lower bound: how far a run that got through had got (summary.json's
+ * penetration_beyond_m; its max_dynamic_penetration_m is null, and so is the table's). */
+static int beyond(int k) {
+    return params[k].offset == offsetof(cs_trace, penetration_beyond_m);
 }
 
 /* The difference from the reference in per cent, NAN where either is not given, is a lower bound, or
  * the reference is 0. */
 static double difference(const cs_trace *tr, const cs_trace *ref, int k) {
-    if (beyond(tr, k) || beyond(ref, k)) return NAN; /* a lower bound is not compared */
+    if (beyond(k)) return NAN; /* a lower bound is not compared */
     double x = value(tr, k), r = value(ref, k);
     return isfinite(x) && isfinite(r) && r != 0.0 ? 100.0 * (x - r) / fabs(r) : NAN;
 }
@@ -171,7 +173,7 @@ static void cell(char *buf, size_t size, const cs_trace *tr, const cs_trace *ref
         snprintf(buf, size, "-");
         return;
     }
-    const char *at_least = beyond(tr, k) ? "beyond " : "";
+    const char *at_least = beyond(k) ? "beyond " : "";
     int n = params[k].us_scale > 0.0 ? snprintf(buf, size, "%s%.3f %s (%.2f %s)", at_least, x, params[k].unit,
                                                 x / params[k].us_scale, params[k].us_unit)
                                      : snprintf(buf, size, "%s%.3f %s", at_least, x, params[k].unit);

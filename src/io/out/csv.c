@@ -1,4 +1,6 @@
-/* timeseries.csv and events.csv. */
+/* timeseries.csv and events.csv. Every CSV cablesim writes names a column "name [unit]" (SI; "[1]" a
+ * fraction), and a column without a unit (a state, a type, a count) by its name alone
+ * (docs/file-format.md, "CSV files"). */
 #include <math.h>
 #include <string.h>
 
@@ -15,17 +17,19 @@ void cs_w_num(cs_wout *w, double v, const char *what) {
 }
 
 int cs_write_timeseries(FILE *f, const cs_record *rec, char *why, size_t why_size) {
-    fprintf(f, "t_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,ax_mps2,ay_mps2,az_mps2,roll_rad,pitch_rad,yaw_rad,"
-               "forward_speed_mps,decel_50ms_g,crush_m,face_force_n,penetration_m");
+    fprintf(
+        f,
+        "t [s],x [m],y [m],z [m],vx [m/s],vy [m/s],vz [m/s],ax [m/s^2],ay [m/s^2],az [m/s^2],roll [rad],"
+        "pitch [rad],yaw [rad],forward_speed [m/s],decel_50ms [g],crush [m],face_force [N],penetration [m]");
     for (int c = 0; c < rec->cable_count; c++)
-        fprintf(f, ",cable%d_max_tension_n,cable%d_state", c, c);
+        fprintf(f, ",cable%d_max_tension [N],cable%d_state", c, c);
     for (int p = 0; p < rec->post_count; p++)
-        fprintf(f, ",post%d_state,post%d_tilt_rad", p, p);
+        fprintf(f, ",post%d_state,post%d_tilt [rad]", p, p);
     for (int a = 0; a < 2; a++)
-        fprintf(f, ",anchor%d_state,anchor%d_displacement_m,anchor%d_force_n", a, a, a);
+        fprintf(f, ",anchor%d_state,anchor%d_displacement [m],anchor%d_force [N]", a, a, a);
     for (int k = 0; k < CS_ENERGY_TERMS; k++)
-        fprintf(f, ",%s_j", cs_energy_term_name(k));
-    fprintf(f, ",energy_balance_error");
+        fprintf(f, ",%s [J]", cs_energy_term_name(k));
+    fprintf(f, ",energy_balance_error [1]");
     fputc('\n', f);
     cs_wout w = {f, 0, ""};
     char what[96];
@@ -89,7 +93,7 @@ int cs_write_timeseries(FILE *f, const cs_record *rec, char *why, size_t why_siz
 }
 
 int cs_write_events(FILE *f, const cs_state *state, char *why, size_t why_size) {
-    fprintf(f, "t_s,type,element_kind,element,value_si,value_unit,cable_end\n");
+    fprintf(f, "t [s],type,element_kind,element,value,value_unit,cable_end\n"); /* value: in its row's unit */
     cs_wout w = {f, 0, ""};
     for (int i = 0; i < cs_state_event_count(state) && !w.bad; i++) {
         const cs_event *e = cs_state_event(state, i);

@@ -121,6 +121,36 @@ static void jarray(cs_wout *w, int *first, const char *key, const double *v, int
     fputc(']', w->f);
 }
 
+/* Cable c as the run used it: termination_efficiency the strength its fittings are given (0 in the
+ * model is its kind's published value, written as that value), and "ends": the fitting at the start and
+ * at the end anchor, each its kind, strength over Fu and slip (cs_cable_end_efficiency, cs_cable_end_slip:
+ * what report.html's design table shows). */
+static void cable_input(cs_wout *w, const cs_cable_def *cable) {
+    FILE *f = w->f;
+    cs_cable_def used = *cable;
+    if (!(used.termination_efficiency > 0.0))
+        used.termination_efficiency = cs_termination_efficiency(used.termination, used.rope.diameter);
+    int first = 1;
+    fputc('{', f);
+    jfields(w, &first, &cs_table_cable, &used);
+    jobject(w, &first, "rope", &cs_table_rope, &cable->rope);
+    jkey(w, &first, "ends");
+    for (int k = 0; k < 2; k++) {
+        cs_termination kind;
+        double travel, efficiency = cs_cable_end_efficiency(cable, k, &kind);
+        double slip = cs_cable_end_slip(cable, k, &travel);
+        int ef = 1;
+        fputs(k ? ",{" : "[{", f);
+        jkey(w, &ef, "termination");
+        cs_json_string(f, cs_termination_word(kind));
+        jnum(w, &ef, "termination_efficiency", efficiency);
+        jnum(w, &ef, "slip_load", slip);
+        jnum(w, &ef, "slip_travel", slip > 0.0 ? travel : 0.0);
+        fputc('}', f);
+    }
+    fputs("]}", f);
+}
+
 static void inputs(cs_wout *w, const cs_model_input *in) {
     FILE *f = w->f;
     int top = 1, b = 1, v = 1;
@@ -134,11 +164,8 @@ static void inputs(cs_wout *w, const cs_model_input *in) {
     jkey(w, &b, "cables");
     fprintf(f, "[");
     for (int c = 0; c < in->barrier.cable_count; c++) {
-        int first = 1;
-        fprintf(f, "%s{", c ? "," : "");
-        jfields(w, &first, &cs_table_cable, &in->barrier.cables[c]);
-        jobject(w, &first, "rope", &cs_table_rope, &in->barrier.cables[c].rope);
-        fprintf(f, "}");
+        if (c) fputc(',', f);
+        cable_input(w, &in->barrier.cables[c]);
     }
     fprintf(f, "]");
     jkey(w, &b, "posts");
@@ -196,10 +223,11 @@ static void provenance(cs_wout *w, int *first, const cs_run_info *info) {
     fputc('\n', w->f);
 }
 
-/* "ratings": each as run, in cs_rating_text's words with its parts. */
+/* "designations_as_run": the standards' designation of the test the run is (docs/ratings.md), in
+ * cs_rating_text's words with its parts. */
 static void ratings(cs_wout *w, int *first, const cs_run_info *info) {
     FILE *f = w->f;
-    jkey(w, first, "ratings");
+    jkey(w, first, "designations_as_run");
     fputc('[', f);
     for (int i = 0; info && i < info->rating_count; i++) {
         const cs_rating *r = &info->ratings[i];
@@ -221,7 +249,7 @@ static void ratings(cs_wout *w, int *first, const cs_run_info *info) {
         fprintf(f, "%d", r->speed_mph);
         jkey(w, &rf, "penetration_m");
         if (r->tested && !r->through)
-            cs_w_num(w, r->penetration, "a rating's penetration");
+            cs_w_num(w, r->penetration, "a designation's penetration");
         else
             fputs("null", f);
         jkey(w, &rf, "measured");

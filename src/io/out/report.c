@@ -209,7 +209,7 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
     for (int i = 0; info && i < info->rating_count; i++) {
         char text[256];
         cs_rating_text(&info->ratings[i], text, sizeof text);
-        fprintf(f, "  %-20s %s\n", i ? "" : "rating (as run)", text);
+        fprintf(f, "  %-20s %s\n", i ? "" : "designation (as run)", text);
     }
     events(f, state);
 }

@@ -14,6 +14,7 @@
 typedef struct jw {
     cs_wout w;
     char what[96]; /* names the value being written, for the message of a non-finite one */
+    int digits;    /* of a named value (knum, kopt): 6, or every digit of the double in "summary" */
 } jw;
 
 void cs_json_page_string(FILE *f, const char *s) {
@@ -30,23 +31,35 @@ void cs_json_page_string(FILE *f, const char *s) {
     fputc('"', f);
 }
 
-/* A number with 6 significant digits (the data of a page, not of an analysis: the CSV has 10). */
-static void num(jw *j, double v) {
+/* The response parameters ("summary") have every digit of the double, so that the page, rounding them
+ * for display, shows what the terminal shows (0.41650000000000004 s is 0.417 s on both; written as 0.4165
+ * it would read 0.416). */
+enum { SUMMARY_DIGITS = 17, PAGE_DIGITS = 6 };
+
+/* A number to `digits` significant digits; NaN is null where nullable (absent on purpose). */
+static void num_digits(jw *j, double v, int digits, int nullable) {
+    if (nullable && isnan(v)) {
+        fputs("null", j->w.f);
+        return;
+    }
     if (j->w.bad) return;
     if (!isfinite(v)) {
         j->w.bad = 1;
         snprintf(j->w.why, sizeof j->w.why, "%s is %s", j->what, isnan(v) ? "NaN" : "infinite");
         return;
     }
-    fprintf(j->w.f, "%.6g", v == 0 ? 0.0 : v); /* no "-0" */
+    fprintf(j->w.f, "%.*g", digits, v == 0 ? 0.0 : v); /* no "-0" */
 }
 
-/* A number that may be absent on purpose (NaN: null). */
+/* A point of a time history, with 6 significant digits (the data of a page's plots and replay, not of an
+ * analysis: the CSV has 10). */
+static void num(jw *j, double v) {
+    num_digits(j, v, PAGE_DIGITS, 0);
+}
+
+/* A point of a time history that may be absent on purpose (NaN: null). */
 static void opt(jw *j, double v) {
-    if (isnan(v))
-        fputs("null", j->w.f);
-    else
-        num(j, v);
+    num_digits(j, v, PAGE_DIGITS, 1);
 }
 
 static void key(jw *j, int *first, const char *k) {
@@ -57,13 +70,13 @@ static void key(jw *j, int *first, const char *k) {
 static void knum(jw *j, int *first, const char *k, double v) {
     key(j, first, k);
     snprintf(j->what, sizeof j->what, "%s", k);
-    num(j, v);
+    num_digits(j, v, j->digits, 0);
 }
 
 static void kopt(jw *j, int *first, const char *k, double v) {
     key(j, first, k);
     snprintf(j->what, sizeof j->what, "%s", k);
-    opt(j, v);
+    num_digits(j, v, j->digits, 1);
 }
 
 static void kint(jw *j, int *first, const char *k, int v) {
@@ -465,12 +478,13 @@ static void write_design(jw *j, int *first, const cs_barrier_def *b) {
     fputs("]}", f);
 }
 
-/* "cablesim": {version, command, overrides, model_hash} and "ratings": [{standard, label, text}]. */
+/* "cablesim": {version, command, overrides, model_hash} and "designations_as_run": [{standard, label,
+ * text}]. */
 static void write_info(jw *j, int *first, const cs_run_info *info) {
     FILE *f = j->w.f;
     key(j, first, "cablesim");
     cs_json_provenance(f, info, cs_json_page_string);
-    key(j, first, "ratings");
+    key(j, first, "designations_as_run");
     fputc('[', f);
     for (int i = 0; info && i < info->rating_count; i++) {
         char text[256];
@@ -521,7 +535,7 @@ static void cables_and_losses(jw *j, int *first, const cs_state *state, const cs
 
 int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *state, const cs_record *r,
                          const cs_run_info *info, char *why, size_t why_size) {
-    jw j = {{f, 0, ""}, ""};
+    jw j = {{f, 0, ""}, "", PAGE_DIGITS};
     cs_summary s;
     cs_state_summary(state, &s);
     const cs_scenario_def *sc = &in->scenario;
@@ -536,6 +550,7 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
     write_info(&j, &first, info);
     key(&j, &first, "summary");
     fputc('{', f);
+    j.digits = SUMMARY_DIGITS;
     kstr(&j, &sf, "outcome", cs_outcome_name(s.outcome));
     knum(&j, &sf, "t_end_s", s.t_end_s);
     knum(&j, &sf, "max_50ms_decel_g", s.max_50ms_decel_g);
@@ -566,6 +581,7 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
     kint(&j, &sf, "solver_warnings", s.solver_warnings);
     knum(&j, &sf, "max_solver_residual", s.max_solver_residual);
     cables_and_losses(&j, &sf, state, &s);
+    j.digits = PAGE_DIGITS;
     fputc('}', f);
     key(&j, &first, "scenario");
     fputc('{', f);

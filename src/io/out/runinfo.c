@@ -1,6 +1,6 @@
-/* What a run's outputs say beside its results (writers.h): its ratings as run, the record of a run made
- * through the library, the model hash's text, whether its penetration is final, and the posts nearest the
- * impact (which the plots and the report follow). */
+/* What a run's outputs say beside its results (writers.h): its designations as run, the record of a run
+ * made through the library, the model hash's text, and the posts nearest the impact (which the plots and
+ * the report follow). */
 #include <math.h>
 #include <stdio.h>
 
@@ -48,10 +48,6 @@ void cs_run_info_of(cs_run_info *info, const cs_model_input *in, const cs_state 
 
 void cs_model_hash_text(unsigned long long hash, char buf[17]) {
     snprintf(buf, 17, "%016llx", hash);
-}
-
-int cs_penetration_is_final(cs_outcome outcome) {
-    return outcome == CS_STOPPED || outcome == CS_REDIRECTED || outcome == CS_NO_CONTACT;
 }
 
 int cs_nearest_posts(const cs_model_input *in, int *idx, int max) {

@@ -55,7 +55,7 @@ static const cs_sweep_column summary_columns[C_ERROR] = {
     [C_OUTCOME] = {"outcome", NULL, NULL,
                    "outcome: stopped, breakthrough, time_limit; bad_model or failed (see error)",
                    CS_COLUMN_TEXT, C_OUTCOME},
-    [C_RATING] = {"astm_f2656", NULL, NULL, "ASTM F2656 rating", CS_COLUMN_TEXT, C_RATING},
+    [C_RATING] = {"astm_f2656_as_run", NULL, NULL, "ASTM F2656 designation as run", CS_COLUMN_TEXT, C_RATING},
     [C_T] = {"time_reached", "s", NULL, "time reached", CS_COLUMN_REAL, C_T},
     [C_DECEL] = {"max_50ms_decel", "g", "standard_free_fall", "max 50-ms average deceleration",
                  CS_COLUMN_REAL, C_DECEL},
@@ -301,7 +301,7 @@ typedef struct stats {
 typedef struct summary {
     const cs_sweep_result *r;            /* the runs' results, for the plots' captions */
     long n, done, ok, bad_model, failed; /* done: run (a partial sweep's others are pending) */
-    tally *t;                            /* outcomes, penetration, events, ratings */
+    tally *t;                            /* outcomes, penetration, events, designations */
     int tally_count;
     stats resp[R_COUNT];
     double *rho; /* [var * R_COUNT + response]; NaN: not numeric or constant */
@@ -405,11 +405,11 @@ static int make_summary(summary *s, const cs_sweep_spec *spec, const double *x, 
         snprintf(label, sizeof label, "at least one %s", cs_event_type_name((cs_event_type)t));
         if (add_tally(s, name, label, c) != 0) goto oom;
     }
-    /* ratings, in order of first appearance by run */
+    /* the ASTM F2656 designations as run, in order of first appearance by run */
     int first_rating = s->tally_count;
     for (long i = 0; i < s->ok; i++) {
         char name[48];
-        snprintf(name, sizeof name, "rating %s", r[ok[i]].rating);
+        snprintf(name, sizeof name, "astm_f2656_as_run %s", r[ok[i]].rating);
         int seen = 0;
         for (int t = first_rating; t < s->tally_count && !seen; t++)
             if (strcmp(s->t[t].name, name) == 0) s->t[t].count++, seen = 1;
@@ -514,7 +514,8 @@ static void summary_md(FILE *f, const cs_sweep_spec *spec, long n, const summary
             s->ok);
     for (int t = 0; t < s->tally_count; t++) {
         cs_interval w = cs_wilson(s->t[t].count, s->ok, Z95);
-        fprintf(f, "| %s", strncmp(s->t[t].name, "rating ", 7) == 0 ? "ASTM F2656 rating " : "");
+        fprintf(f, "| %s",
+                strncmp(s->t[t].name, "astm_f2656_as_run ", 18) == 0 ? "ASTM F2656 designation as run " : "");
         fprintf(f, "%s | %ld | ", s->t[t].label, s->t[t].count); /* cablesim's words, not the spec's */
         md_num(f, w.p);
         fprintf(f, " | ");

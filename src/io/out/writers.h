@@ -14,7 +14,7 @@
 #include "study/rating.h"
 
 /* What a run's outputs record beside its results: where they came from (this cablesim's version,
- * CS_VERSION_STRING, is written with them), and the run's ratings as run. */
+ * CS_VERSION_STRING, is written with them), and the run's designations as run. */
 typedef struct cs_run_info {
     const char *command;          /* the command line, shell-quoted */
     const char *const *overrides; /* --set, --dt, --t-end as given, in order: "--set PATH=VALUE" */
@@ -46,14 +46,10 @@ const char *cs_flail_impact_name(cs_flail_impact k);
 void cs_run_info_motion(cs_run_info *info, const cs_model_input *in, const cs_record *rec,
                         const cs_summary *summary);
 /* The record of a run written through the library (cs_write_outputs): no command line or overrides, its
- * model hash and its ratings as run. */
+ * model hash and its designations as run. */
 void cs_run_info_of(cs_run_info *info, const cs_model_input *in, const cs_state *state);
 /* The model hash as written: 16 hexadecimal digits. */
 void cs_model_hash_text(unsigned long long hash, char buf[17]);
-/* Whether a run's max dynamic penetration is what the vehicle reached (it stopped, was redirected or never
- * touched the barrier), rather than where the run ended with the vehicle through or still going: then it
- * is a lower bound, "beyond" it. */
-int cs_penetration_is_final(cs_outcome outcome);
 /* Up to max post indices of the model by distance from its impact point, nearest first; the count. */
 int cs_nearest_posts(const cs_model_input *in, int *idx, int max);
 
@@ -86,7 +82,7 @@ int cs_write_run_files(cs_outdir *out, const cs_model_input *in, const cs_model 
 int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model *model,
                                const cs_state *state, const cs_run_info *info, char *why, size_t why_size);
 /* The readable summary (SI and US units side by side): the outcome, the model's hash, the response
- * parameters, the ratings as run, the failure events in order and the yielding posts counted. */
+ * parameters, the designations as run, the failure events in order and the yielding posts counted. */
 void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_model *model,
                                 const cs_state *state, const cs_run_info *info);
 

@@ -1,0 +1,88 @@
+// One run's numbers in every output agree (tests/cli_one_truth.sh runs it): node tests/one_truth.mjs DIR
+// TERMINAL where DIR is a `cablesim run --report` folder and TERMINAL the file of what that run printed.
+// report.html's text is made as the page makes it, by report/src/summary.js on the page's own data, with a
+// stand-in for the browser's document. Prints "ok NAME" or "FAIL NAME: detail" per check.
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+
+// The few parts of a DOM that summary.js builds with: elements with children, and their text.
+class Node {
+  constructor(tag) {
+    Object.assign(this, { tag, children: [], attrs: {}, dataset: {}, className: '' });
+  }
+  append(...c) {
+    this.children.push(...c);
+  }
+  setAttribute(k, v) {
+    this.attrs[k] = v;
+  }
+  addEventListener() {}
+  get textContent() {
+    return this.children.map((c) => (c instanceof Node ? c.textContent : String(c))).join('');
+  }
+}
+globalThis.document = { createElement: (tag) => new Node(tag) };
+const { summaryTable, designTable, designationsText } = await import('../report/src/summary.js');
+
+const [dir, termFile] = process.argv.slice(2);
+const term = readFileSync(termFile, 'utf8');
+const summary = JSON.parse(readFileSync(join(dir, 'summary.json'), 'utf8'));
+const html = readFileSync(join(dir, 'report.html'), 'utf8');
+const page = JSON.parse(html.match(/<script type="application\/json" id="cs-data">([\s\S]*?)<\/script>/)[1]);
+const csv = (f) => readFileSync(join(dir, f), 'utf8').trim().split('\n').map((l) => l.split(','));
+const events = csv('events.csv');
+const series = csv('timeseries.csv');
+
+let failed = 0;
+function check(name, ok, detail = '') {
+  if (!ok) failed++;
+  console.log(ok ? `ok ${name}` : `FAIL ${name}: ${detail}`);
+}
+// A table's body rows (every <tr> outside its <thead>), each as its cells' texts.
+function rows(node) {
+  if (!(node instanceof Node) || node.tag === 'thead') return [];
+  if (node.tag === 'tr') return [node.children.map((c) => c.textContent)];
+  return node.children.flatMap(rows);
+}
+const row = (table, name) => rows(table).find((r) => r[0] === name) || [];
+const summaryRows = summaryTable(page);
+const termLine = (re) => (term.match(re) || [])[1];
+
+// (a) the designation as run: the terminal's lines, summary.json, the page's data and its text
+const termDesignations = [...term.matchAll(/^ {2}(?:designation \(as run\)| {20}) (ASTM F2656 .*|SD-STD-02\.01 .*)$/gm)].map((m) => m[1]);
+const jsonDesignations = summary.designations_as_run.map((d) => d.text);
+check('designations: terminal = summary.json', JSON.stringify(termDesignations) === JSON.stringify(jsonDesignations) && jsonDesignations.length === 2, JSON.stringify([termDesignations, jsonDesignations]));
+check('designations: summary.json = report.html data', JSON.stringify(page.designations_as_run.map((d) => d.text)) === JSON.stringify(jsonDesignations));
+check('designations: report.html text', row(summaryRows, 'Designation as run')[1] === jsonDesignations.join('; ') && designationsText(page) === jsonDesignations.join('; '), row(summaryRows, 'Designation as run')[1]);
+check('no output calls the designation as run a rating', !/\bratings?\b/i.test(term) && !/\bratings?\b/i.test(JSON.stringify(rows(summaryRows).map((r) => r.slice(0, 2)))) && !('ratings' in summary) && !('ratings' in page));
+
+// (b) the same quantity, the same value: the peak deceleration and its time, at the terminal's precision
+const [termG, termT] = [termLine(/max 50-ms deceleration ([0-9.]+) g/), termLine(/max 50-ms deceleration [0-9.]+ g at t = ([0-9.]+) s/)];
+const decelRow = row(summaryRows, 'Max 50-ms deceleration');
+check('peak 50-ms deceleration: terminal = report.html', decelRow[1] === `${termG} g`, `${termG} vs ${decelRow[1]}`);
+check('its time: terminal = report.html (same rounding)', decelRow[2] === `at t = ${termT} s`, `${termT} vs ${decelRow[2]}`);
+check('its time: terminal = summary.json (to its 3 places)', Math.abs(Number(termT) - summary.t_max_50ms_decel_s) <= 0.0005 + 1e-12, `${termT} vs ${summary.t_max_50ms_decel_s}`);
+check('its time: summary.json = report.html data (1e-9 s)', Math.abs(page.summary.t_max_50ms_decel_s - summary.t_max_50ms_decel_s) < 1e-9);
+// the penetration: a number where the vehicle stopped, "beyond" where it got through, everywhere
+const through = summary.max_dynamic_penetration_m === null;
+const pen = through ? summary.penetration_beyond_m : summary.max_dynamic_penetration_m;
+const termPen = Number(termLine(through ? /penetration +beyond ([0-9.]+) m/ : /max penetration +([0-9.]+) m/));
+const penRow = row(summaryRows, 'Max dynamic penetration (front face)');
+check('penetration: terminal = summary.json (1 mm)', Math.abs(termPen - pen) <= 0.0005 + 1e-12, `${termPen} vs ${pen}`);
+check('penetration: report.html = summary.json (1 cm)', penRow[1] === `${through ? 'beyond ' : ''}${pen.toFixed(2)} m`, penRow[1]);
+check('penetration: one of max_dynamic_penetration_m and penetration_beyond_m is null, in summary.json and the page', (summary.max_dynamic_penetration_m === null) !== (summary.penetration_beyond_m === null) && (page.summary.max_dynamic_penetration_m === null) === through && (page.summary.penetration_beyond_m === null) === !through);
+// cables counted from 0 in every output, with the same peak tension
+summary.cables.forEach((c, i) => {
+  const t = termLine(new RegExp(`^  cable ${i} +peak ([0-9.]+) kN`, 'm'));
+  check(`cable ${i}: the terminal's, summary.json's and the page's cable ${i} (0.1 kN)`, c.index === i && Math.abs(Number(t) - c.peak_tension_n / 1e3) <= 0.05 + 1e-9 && row(summaryRows, `Cable ${i}: peak tension`).length === 3 && series[0].includes(`cable${i}_max_tension [N]`), `${t} vs ${c.peak_tension_n}`);
+});
+// the end fittings: summary.json's inputs give the strength the report states
+const fittings = rows(designTable(page)).filter((r) => r[0].startsWith('End fitting')).map((r) => r[1]);
+const inputs = summary.inputs.barrier.cables.map((c) => `${c.ends[0].termination}, ${(100 * c.ends[0].termination_efficiency).toFixed(0)} % of Fu`);
+check('end fittings: summary.json inputs = report.html design', fittings.length === inputs.length && fittings.every((f, i) => f.startsWith(inputs[i])) && summary.inputs.barrier.cables.every((c) => c.termination_efficiency > 0), JSON.stringify([fittings, inputs]));
+// events: events.csv, summary.json and the terminal's list in the same order and times
+check('events: events.csv rows = summary.json events', events.length - 1 === summary.events.length, `${events.length - 1} vs ${summary.events.length}`);
+const listed = [...term.matchAll(/^ {4} +([0-9.]+) s {2}(\S+)(?: +(\w+) (\d+))?/gm)].map((m) => [m[1], m[2], m[4]]);
+const failures = events.slice(1).filter((e) => !['post_hinge', 'footing_rotation'].includes(e[1]));
+check('events: the terminal lists events.csv\'s failures in order, at the same times (0.1 ms)', listed.length === Math.min(30, failures.length) && listed.every(([t, type, el], k) => type === failures[k][1] && Math.abs(Number(t) - Number(failures[k][0])) <= 0.00005 + 1e-12 && (el === undefined || el === failures[k][3])), JSON.stringify([listed.slice(0, 3), failures.slice(0, 3)]));
+process.exit(failed ? 1 : 0);
