@@ -58,7 +58,7 @@ check "metrics.csv: run a's speed against itself, M and P 0" \
     'awk -v M="$(metric "$m" speed 4)" -v P="$(metric "$m" speed 5)" "BEGIN { exit !(M != \"\" && M < 1e-6 && M > -1e-6 && P < 1e-3) }" && [ "$(metric "$m" speed 9)" = pass ]'
 check "the terminal and the page give the metrics" 'grep -qE "^validation metrics \(NCHRP W179\)" <<<"$out" && grep -q "<h2>Validation metrics (NCHRP W179)</h2>" "$tmp/cmp/compare.html"'
 awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; print "time [s],speed [m/s]"; next }
-         { printf "%.9f,%.12g\n", $c["t_s"], $c["forward_speed_mps"] / 1.1 }' "$tmp/a/timeseries.csv" >"$tmp/slow.csv"
+         { printf "%.9f,%.12g\n", $c["t [s]"], $c["forward_speed [m/s]"] / 1.1 }' "$tmp/a/timeseries.csv" >"$tmp/slow.csv"
 "$cs" compare "$tmp/a" --measured "$tmp/slow.csv" -o "$tmp/cmp11" >/dev/null 2>&1
 check "run a against its speed / 1.1: Sprague-Geers M = 0.1, P = 0" \
     'awk -v M="$(metric "$tmp/cmp11/metrics.csv" speed 4)" -v P="$(metric "$tmp/cmp11/metrics.csv" speed 5)" "BEGIN { exit !(M != \"\" && M - 0.1 < 1e-6 && 0.1 - M < 1e-6 && P < 1e-3) }"'
