@@ -57,7 +57,8 @@ int cs_attachment_check_release(const cs_model *model, cs_state *s, int p) {
         v3_addto(across, axis, -along);
         if (along <= model->cables[c].mu_post * v3_norm(across) + pm->release_force) continue;
         cs_cable_remove_node(cs, i);
-        cs_event_add(model, s, CS_EVENT_CABLE_RELEASE, CS_ELEMENT_POST, p, along);
+        cs_event *e = cs_event_add(model, s, CS_EVENT_CABLE_RELEASE, CS_ELEMENT_POST, p, along);
+        if (e) e->cable = c;
         any = 1;
         if (pm->attach == CS_ATTACH_SLOT) c = model->cable_count; /* the ones below may follow */
     }

@@ -48,6 +48,7 @@ cs_event *cs_event_add(const cs_model *model, cs_state *s, cs_event_type type, c
     e->element = element;
     e->value = value;
     e->cable_end = -1;
+    e->cable = -1;
     return e;
 }
 

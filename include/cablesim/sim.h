@@ -148,6 +148,7 @@ typedef struct cs_event {
     int element;   /**< index of the cable, post or anchor (0 start, 1 end); 0 for the vehicle */
     double value;  /**< what triggered it, SI: by type (cs_event_type) */
     int cable_end; /**< a termination event's rope end: 0 at the start anchor, 1 at the end anchor; else -1 */
+    int cable;     /**< the cable a post's slot or hook lets go (cable_release); else -1 */
 } cs_event;
 
 /** An event type's name in events.csv and summary.json: "cable_break", "post_hinge", ... */

@@ -477,6 +477,10 @@ int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model
             jkey(&w, &ef, "cable_end");
             cs_json_string(f, cs_event_cable_end_name(e));
         }
+        if (e->cable >= 0) {
+            jkey(&w, &ef, "cable");
+            fprintf(f, "%d", e->cable);
+        }
         fprintf(f, "}");
     }
     fprintf(f, "],\n\"inputs\":");

@@ -655,7 +655,8 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
         cs_json_page_string(f, cs_element_kind_name(e->element_kind));
         fprintf(f, ",%d,", e->element);
         num(&j, e->value);
-        if (e->cable_end >= 0) fprintf(f, ",%d", e->cable_end);
+        if (e->cable_end >= 0 || e->cable >= 0) fprintf(f, ",%d", e->cable_end);
+        if (e->cable >= 0) fprintf(f, ",%d", e->cable); /* the cable a post let go */
         fputc(']', f);
     }
     fputc(']', f);
