@@ -19,7 +19,7 @@
 #include "out/report_html.h"
 
 static const char usage[] =
-    "usage: cablesim designer [FILE] [-o DIR] [--force]\n"
+    "usage: cablesim designer [FILE] [-o DIR] [--force] [--allow-path DIR]...\n"
     "Writes DIR/designer.html (default DIR: results/<model name>-designer): one page that opens from disk,\n"
     "without a network, and runs the model of FILE (default: the APS3 example) in the browser. A form\n"
     "holds the design's main values with their units (ropes and pretension, post sections, spacing and\n"
@@ -28,6 +28,8 @@ static const char usage[] =
     "swept over a range, and the edited model downloaded as YAML that cablesim run reproduces exactly.\n"
     "  -o, --out DIR   the output folder (outputs as cablesim run --help says)\n"
     "  --force         write into DIR beside files no manifest lists (none of them is removed)\n"
+    "  --allow-path D  the files FILE names may be in D, as for cablesim run; the page holds the text of\n"
+    "                  each file the model was read from, and of no other\n"
     "Exit status: 0 written, 1 not written, 2 a bad model or command line.\n";
 
 #ifdef CS_HAVE_DESIGNER
@@ -67,18 +69,12 @@ static void page_path(const design *d, int i, char *out, size_t size) {
     }
 }
 
+/* A file the loader read, again: the same rule, a regular file of at most CS_INPUT_MAX bytes. */
 static int write_text_of(FILE *f, const char *real) {
-    FILE *in = fopen(real, "rb");
-    if (!in) return -1;
-    char *text = NULL;
-    size_t size = 0, got;
-    FILE *m = open_memstream(&text, &size);
-    char chunk[4096];
-    while (m && (got = fread(chunk, 1, sizeof chunk, in)) > 0)
-        fwrite(chunk, 1, got, m);
-    fclose(in);
-    if (!m) return -1;
-    fclose(m);
+    char *text = NULL, why[256];
+    size_t size = 0;
+    int err;
+    if (cs_input_read(real, CS_INPUT_MAX, &text, &size, &err, why, sizeof why) != 0) return -1;
     cs_json_page_string(f, text);
     free(text);
     return 0;
@@ -199,15 +195,20 @@ int cs_command_designer(int argc, char **argv) {
     static const cs_cli cli = {"designer", usage};
     static const struct option opts[] = {{"out", required_argument, NULL, 'o'},
                                          {"force", no_argument, NULL, 'f'},
+                                         {"allow-path", required_argument, NULL, 'A'},
                                          {"help", no_argument, NULL, 'h'},
                                          {NULL, 0, NULL, 0}};
-    const char *dir = NULL, *file = NULL;
-    int v, force = 0;
+    const char *dir = NULL, *file = NULL, *allow[64];
+    int v, force = 0, allow_count = 0;
     optind = 1;
     while ((v = cs_cli_next(&cli, argc, argv, "ho:", opts)) != -1) {
         if (v == 'h') return cs_cli_help(&cli);
         if (v == 'f')
             force = 1;
+        else if (v == 'A' && allow_count == 64)
+            return cs_cli_usage_error(&cli, "more than 64 --allow-path");
+        else if (v == 'A')
+            allow[allow_count++] = optarg;
         else if (v == 'o')
             dir = optarg;
         else
@@ -222,6 +223,11 @@ int cs_command_designer(int argc, char **argv) {
         fprintf(stderr, "cablesim designer: %s\n", why);
         return CS_EXIT_RUN;
     }
+    for (int i = 0; i < allow_count; i++)
+        if (cs_loader_allow_path(l, allow[i], buf, sizeof buf) != 0) {
+            cs_loader_free(l);
+            return cs_cli_usage_error(&cli, "--allow-path %s", buf);
+        }
     file = argc - 1 > optind ? argv[1 + optind] : default_model(l, buf, sizeof buf);
     int rc = CS_EXIT_USAGE;
     cs_model_input in;

@@ -21,8 +21,8 @@ enum { EXIT_RUN = CS_EXIT_RUN, EXIT_BAD = CS_EXIT_USAGE };
 
 static const char usage[] =
     "Usage: cablesim run FILE [-o DIR] [--force] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
-    "                    [--report]\n"
-    "  or:  cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]...\n"
+    "                    [--report] [--allow-path DIR]...\n"
+    "  or:  cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]... [--allow-path DIR]...\n"
     "  or:  cablesim sweep SPEC.yaml [-o DIR] [--threads N] ...\n"
     "  or:  cablesim sweep --resume DIR\n"
     "  or:  cablesim rate FILE --standard astm-f2656|sd-std-02.01|sd-std-02.01a [--class M50|PU60|K8]\n"
@@ -58,7 +58,7 @@ static const char usage[] =
 
 static const char run_usage[] =
     "usage: cablesim run FILE [-o DIR] [--force] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
-    "                    [--report]\n"
+    "                    [--report] [--allow-path DIR]...\n"
     "Runs the model of FILE and prints a summary: the outcome, the model's hash, the response parameters,\n"
     "the ratings as run, the failure events. Writes DIR/timeseries.csv, DIR/events.csv and\n"
     "DIR/summary.json (default DIR: results/<model name>); --plots also the run's figures as\n"
@@ -72,12 +72,15 @@ static const char run_usage[] =
     "  --set PATH=VALUE     replace a value of the model: --set scenario.speed=\"35 mph\"\n"
     "  --dt T, --t-end T    the time step and the time limit: --dt \"0.2 ms\" (scenario.dt, scenario.t_end)\n"
     "  --plots, --report    the figures, the HTML report\n"
+    "  --allow-path DIR     the files FILE names (file:) may be in DIR and its subfolders, beyond FILE's\n"
+    "                       folder (and its subfolders) and the parts library's\n"
     "Exit status: 0 done, 1 the run or its outputs failed, 2 a bad model or command line.\n";
 
 static const char check_usage[] =
-    "usage: cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]...\n"
+    "usage: cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]... [--allow-path DIR]...\n"
     "Checks a model file (or a sweep spec, see cablesim sweep --help) without running it: every problem as\n"
-    "FILE:LINE:COLUMN. Exit status: 0 valid, 2 problems or a bad command line.\n";
+    "FILE:LINE:COLUMN. --allow-path DIR: the files FILE names may be in DIR, as for cablesim run. Exit "
+    "status: 0 valid, 2 problems or a bad command line.\n";
 
 static const char list_usage[] = "usage: cablesim list\n"
                                  "Lists the named parts of the library (data/*.yaml): vehicles, wire ropes, "
@@ -101,21 +104,17 @@ static int bad_usage(const char *what) {
 /* Parse the command line of run or check into o, queueing --set, --dt and --t-end on the loader.
  * Returns 0, a help's 0 with o->file NULL, or EXIT_BAD. */
 static int parse(int argc, char **argv, const cs_cli *cli, int is_run, options *o, cs_loader *l) {
-    enum { SET = 1000, DT, T_END, PLOTS, REPORT, FORCE };
-    static const struct option run_opts[] = {{"out", required_argument, NULL, 'o'},
-                                             {"set", required_argument, NULL, SET},
-                                             {"dt", required_argument, NULL, DT},
-                                             {"t-end", required_argument, NULL, T_END},
-                                             {"plots", no_argument, NULL, PLOTS},
-                                             {"report", no_argument, NULL, REPORT},
-                                             {"force", no_argument, NULL, FORCE},
-                                             {"help", no_argument, NULL, 'h'},
-                                             {NULL, 0, NULL, 0}};
-    static const struct option check_opts[] = {{"set", required_argument, NULL, SET},
-                                               {"dt", required_argument, NULL, DT},
-                                               {"t-end", required_argument, NULL, T_END},
-                                               {"help", no_argument, NULL, 'h'},
-                                               {NULL, 0, NULL, 0}};
+    enum { SET = 1000, DT, T_END, PLOTS, REPORT, FORCE, ALLOW };
+    static const struct option run_opts[] = {
+        {"out", required_argument, NULL, 'o'}, {"set", required_argument, NULL, SET},
+        {"dt", required_argument, NULL, DT},   {"t-end", required_argument, NULL, T_END},
+        {"plots", no_argument, NULL, PLOTS},   {"report", no_argument, NULL, REPORT},
+        {"force", no_argument, NULL, FORCE},   {"allow-path", required_argument, NULL, ALLOW},
+        {"help", no_argument, NULL, 'h'},      {NULL, 0, NULL, 0}};
+    static const struct option check_opts[] = {
+        {"set", required_argument, NULL, SET},     {"dt", required_argument, NULL, DT},
+        {"t-end", required_argument, NULL, T_END}, {"allow-path", required_argument, NULL, ALLOW},
+        {"help", no_argument, NULL, 'h'},          {NULL, 0, NULL, 0}};
     int v;
     optind = 1;
     while ((v = cs_cli_next(cli, argc, argv, is_run ? "ho:" : "h", is_run ? run_opts : check_opts)) != -1) {
@@ -135,6 +134,10 @@ static int parse(int argc, char **argv, const cs_cli *cli, int is_run, options *
             break;
         case FORCE:
             o->force = 1;
+            break;
+        case ALLOW:
+            if (cs_loader_allow_path(l, optarg, set, sizeof set) != 0)
+                return cs_cli_usage_error(cli, "--allow-path %s", set);
             break;
         case SET:
         case DT:

@@ -39,13 +39,15 @@ enum { EXIT_RUN = CS_EXIT_RUN, EXIT_BAD = CS_EXIT_USAGE };
 
 static const char sweep_usage[] =
     "usage: cablesim sweep SPEC.yaml [-o DIR] [--threads N] [--runs N] [--seed S] [--set PATH=VALUE]...\n"
-    "                      [--t-end T] [--dt T] [--netcdf] [--quiet] [--force]\n"
+    "                      [--t-end T] [--dt T] [--netcdf] [--allow-path DIR]... [--quiet] [--force]\n"
     "       cablesim sweep --resume DIR [--threads N] [--quiet] [--force]\n"
     "Runs the study of SPEC (a base model, the values to vary: grids, or Monte Carlo / Latin hypercube\n"
     "samples) and writes DIR/runs.csv, DIR/summary.md and DIR/summary.json (default DIR: results/<spec\n"
     "name>). --threads: OpenMP threads per process (default: OMP_NUM_THREADS or the cores, shared among\n"
     "the ranks of a machine). Under MPI (mpirun -n R cablesim-mpi sweep ...) the runs are shared among\n"
     "the R ranks. --runs and --seed replace the spec's; --set, --t-end and --dt apply to every run.\n"
+    "--allow-path DIR: the model (SPEC's `model:`) and the files it names may be in DIR and its subfolders,\n"
+    "beyond SPEC's folder (and its subfolders) and the parts library's.\n"
     "--netcdf (or `netcdf: true` in SPEC) also writes DIR/runs.nc: runs.csv's table as netCDF (CF-1.8).\n"
     "SPEC's `plot:` draws a response against a varied value in DIR/plots/<y>-vs-<x>.png (docs/sweep.md).\n"
     "DIR is checked and locked before any run; the files appear together at the end, listed in\n"
@@ -117,6 +119,8 @@ typedef struct sweep_opts {
     int threads, quiet, netcdf, force;
     long runs;
     const char *seed;
+    const char *allow[64];
+    int allow_count;
     const char *sets[256];
     int set_count;
     char set_text[256][1100]; /* --t-end and --dt as sets */
@@ -129,20 +133,15 @@ static int sweep_bad_usage(int rank, const char *what, const char *arg) {
 
 /* The command line into o. Returns 0, -1 after --help (exit 0), or EXIT_BAD. */
 static int parse_opts(int argc, char **argv, sweep_opts *o, int rank) {
-    enum { THREADS = 1000, RUNS, SEED, SET, T_END, DT, NETCDF, QUIET, RESUME, FORCE };
-    static const struct option longopts[] = {{"out", required_argument, NULL, 'o'},
-                                             {"threads", required_argument, NULL, THREADS},
-                                             {"runs", required_argument, NULL, RUNS},
-                                             {"seed", required_argument, NULL, SEED},
-                                             {"set", required_argument, NULL, SET},
-                                             {"t-end", required_argument, NULL, T_END},
-                                             {"dt", required_argument, NULL, DT},
-                                             {"netcdf", no_argument, NULL, NETCDF},
-                                             {"quiet", no_argument, NULL, QUIET},
-                                             {"resume", required_argument, NULL, RESUME},
-                                             {"force", no_argument, NULL, FORCE},
-                                             {"help", no_argument, NULL, 'h'},
-                                             {NULL, 0, NULL, 0}};
+    enum { THREADS = 1000, RUNS, SEED, SET, T_END, DT, NETCDF, QUIET, RESUME, FORCE, ALLOW };
+    static const struct option longopts[] = {
+        {"out", required_argument, NULL, 'o'},   {"threads", required_argument, NULL, THREADS},
+        {"runs", required_argument, NULL, RUNS}, {"seed", required_argument, NULL, SEED},
+        {"set", required_argument, NULL, SET},   {"t-end", required_argument, NULL, T_END},
+        {"dt", required_argument, NULL, DT},     {"netcdf", no_argument, NULL, NETCDF},
+        {"quiet", no_argument, NULL, QUIET},     {"resume", required_argument, NULL, RESUME},
+        {"force", no_argument, NULL, FORCE},     {"allow-path", required_argument, NULL, ALLOW},
+        {"help", no_argument, NULL, 'h'},        {NULL, 0, NULL, 0}};
     int v, study = 0; /* options that define the study, which --resume takes from DIR */
     optind = 1;
     opterr = 0;
@@ -191,6 +190,11 @@ static int parse_opts(int argc, char **argv, sweep_opts *o, int rank) {
             o->netcdf = 1;
             study = 1;
             break;
+        case ALLOW:
+            if (o->allow_count == 64) return sweep_bad_usage(rank, "more than 64 --allow-path", optarg);
+            o->allow[o->allow_count++] = optarg;
+            study = 1;
+            break;
         case QUIET:
             o->quiet = 1;
             break;
@@ -209,7 +213,7 @@ static int parse_opts(int argc, char **argv, sweep_opts *o, int rank) {
         return sweep_bad_usage(
             rank,
             "--resume DIR takes the study as DIR/summary.json records it: no SPEC, -o, --runs, "
-            "--seed, --set, --t-end, --dt or --netcdf with it",
+            "--seed, --set, --t-end, --dt, --netcdf or --allow-path with it",
             operands > 0 ? argv[1 + optind] : NULL);
     if (o->resume) return 0;
     if (operands > 1) return sweep_bad_usage(rank, "more than one spec file", argv[2 + optind]);
@@ -221,7 +225,7 @@ static int parse_opts(int argc, char **argv, sweep_opts *o, int rank) {
 /* ---- the record --resume reads back (summary.json's "resume") ---- */
 
 /* {"spec": the spec's absolute path, "spec_as_given" and the "cwd" it was given in, "runs", "seed", "set":
- * the command line's fixed values, "netcdf"}. */
+ * the command line's fixed values, "netcdf", "allow": the --allow-path folders, absolute}. */
 static char *resume_record(const sweep_opts *o, const char *as_given, const char *cwd) {
     char real[PATH_MAX], *buf = NULL;
     size_t size = 0;
@@ -246,7 +250,12 @@ static char *resume_record(const sweep_opts *o, const char *as_given, const char
         if (i) fputc(',', f);
         cs_json_string(f, o->sets[i]);
     }
-    fprintf(f, "],\"netcdf\":%s}", o->netcdf ? "true" : "false");
+    fprintf(f, "],\"netcdf\":%s,\"allow\":[", o->netcdf ? "true" : "false");
+    for (int i = 0; i < o->allow_count; i++) {
+        if (i) fputc(',', f);
+        cs_json_string(f, realpath(o->allow[i], real) ? real : o->allow[i]);
+    }
+    fputs("]}", f);
     fclose(f);
     return buf;
 }
@@ -268,7 +277,7 @@ typedef struct resumed {
 /* DIR/summary.json's record of the study into o (its strings kept in static storage) and r. 0, or -1 with
  * why filled. */
 static int read_resume(const char *dir, sweep_opts *o, resumed *r, char *why, size_t why_size) {
-    static char spec[PATH_MAX], seed[64], sets[256][1100];
+    static char spec[PATH_MAX], seed[64], sets[256][1100], allow[64][PATH_MAX];
     char path[1200];
     snprintf(path, sizeof path, "%s/summary.json", dir);
     FILE *probe = fopen(path, "r");
@@ -303,6 +312,17 @@ static int read_resume(const char *dir, sweep_opts *o, resumed *r, char *why, si
         o->set_count++;
     }
     if (!bad && json_object_object_get_ex(rec, "netcdf", &v)) o->netcdf = json_object_get_boolean(v);
+    if (!bad && json_object_object_get_ex(rec, "allow", &list)) { /* none: a study that needed no leave */
+        bad = !json_object_is_type(list, json_type_array);
+        for (size_t i = 0; !bad && i < json_object_array_length(list) && o->allow_count < 64; i++) {
+            json_object *e = json_object_array_get_idx(list, i);
+            bad = !json_object_is_type(e, json_type_string) ||
+                  snprintf(allow[o->allow_count], sizeof allow[0], "%s", json_object_get_string(e)) >=
+                      (int)sizeof allow[0];
+            o->allow[o->allow_count] = allow[o->allow_count];
+            o->allow_count++;
+        }
+    }
     r->partial = !bad && json_object_object_get_ex(root, "partial", &v) && json_object_get_boolean(v);
     if (!bad && json_object_object_get_ex(root, "cablesim", &about)) {
         bad = json_text_at(about, "version", r->version, sizeof r->version) != 0 ||
@@ -416,6 +436,7 @@ static cs_sweep_spec *read_spec(const sweep_opts *o, int rank) {
         return NULL;
     }
     cs_sweep_plots_check(spec);
+    cs_sweep_spec_confine(spec, o->allow, o->allow_count);
     for (int i = 0; i < o->set_count; i++)
         cs_sweep_spec_add_set(spec, o->sets[i]);
     spec->netcdf |= o->netcdf;
@@ -456,8 +477,8 @@ static int thread_count(int asked, int local_ranks) {
 /* The file argument of `cablesim check FILE [--set PATH=VALUE]...`: the first word that is not an option or
  * an option's value. */
 static const char *check_file(int argc, char **argv) {
-    static const char *const valued[] = {"-o",    "--out",   "--threads", "--runs",  "--seed",
-                                         "--set", "--t-end", "--dt",      "--resume"};
+    static const char *const valued[] = {"-o",    "--out",   "--threads", "--runs",   "--seed",
+                                         "--set", "--t-end", "--dt",      "--resume", "--allow-path"};
     for (int i = 2; i < argc; i++) {
         if (argv[i][0] != '-') return argv[i];
         for (size_t k = 0; k < sizeof valued / sizeof valued[0]; k++)
@@ -699,7 +720,7 @@ int cs_sweep_command(int argc, char **argv) {
 #endif
     {
         char why[256];
-        cs_loader *loader = cs_loader_create(NULL, why, sizeof why); /* one per thread (NULL: one per run) */
+        cs_loader *loader = cs_sweep_loader(spec, why, sizeof why); /* one per thread (NULL: one per run) */
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 1)
 #endif

@@ -15,7 +15,7 @@ check "sweep without a spec is status 2" '[ $? -eq 2 ]'
 
 for spec in lhs grid mc plot; do
     for t in 1 2; do
-        "$cs" sweep "tests/sweep/$spec.yaml" -o "$tmp/$spec-$t" --threads "$t" >"$tmp/$spec-$t.out" 2>"$tmp/$spec-$t.err"
+        "$cs" sweep --allow-path examples "tests/sweep/$spec.yaml" -o "$tmp/$spec-$t" --threads "$t" >"$tmp/$spec-$t.out" 2>"$tmp/$spec-$t.err"
         check "$spec on $t threads exits 0" '[ $? -eq 0 ] || { cat "$tmp/$spec-$t.err"; false; }'
     done
     check "$spec: runs.csv the same on 1 and 2 threads" 'cmp "$tmp/$spec-1/runs.csv" "$tmp/$spec-2/runs.csv"'
@@ -24,7 +24,7 @@ for spec in lhs grid mc plot; do
         'cmp <(grep -v "^Written by cablesim " "$tmp/$spec-1/summary.md") <(grep -v "^Written by cablesim " "$tmp/$spec-2/summary.md")'
     check "$spec: summary.json the same on 1 and 2 threads, but for its first line" \
         'cmp <(tail -n +2 "$tmp/$spec-1/summary.json") <(tail -n +2 "$tmp/$spec-2/summary.json")'
-    check "$spec: the summaries give the command line" 'grep -qF "\"command\":\"$cs sweep tests/sweep/$spec.yaml -o $tmp/$spec-1 --threads 1\"" "$tmp/$spec-1/summary.json" && grep -qF "Written by cablesim $("$cs" --version | cut -d" " -f2): \`$cs sweep tests/sweep/$spec.yaml -o $tmp/$spec-1 --threads 1\`; the base model'"'"'s hash " "$tmp/$spec-1/summary.md"'
+    check "$spec: the summaries give the command line" 'grep -qF "\"command\":\"$cs sweep --allow-path examples tests/sweep/$spec.yaml -o $tmp/$spec-1 --threads 1\"" "$tmp/$spec-1/summary.json" && grep -qF "Written by cablesim $("$cs" --version | cut -d" " -f2): \`$cs sweep --allow-path examples tests/sweep/$spec.yaml -o $tmp/$spec-1 --threads 1\`; the base model'"'"'s hash " "$tmp/$spec-1/summary.md"'
     check "$spec: no run failed" 'grep -q "; 0 did not run to the end" "$tmp/$spec-1.out"'
     check "$spec: progress as plain lines" 'grep -q "^sweep: [0-9]*/[0-9]* runs (100%)" "$tmp/$spec-1.err"'
 done
@@ -66,7 +66,7 @@ check "study: the inputs' table in the spec's units" 'grep -qE "<tr><td>barrier.
 check "study: the inputs' values in those units" 'grep -oE "<tr><td>(barrier.soil.soil_pressure|scenario.speed)</td><td>[^<]*</td><td>[a-z]+</td><td>[0-9.e+]+</td><td>[0-9.e+]+</td><td>[0-9.e+]+</td>" "$page" | sed -E "s/<\/?t[dr]>/ /g" | awk "\$3 == \"psf\" && (\$4 < 4000 || \$6 > 12000) { bad = 1 } \$3 == \"mph\" && (\$4 < 38 || \$6 > 42) { bad = 1 } END { exit bad || NR != 2 }"'
 check "study: the rope tension in kN" 'grep -q "<tr><td>max rope tension (kN)</td>" "$page"'
 # a run that breaks through: runs.csv gives no penetration, only how far it got, as summary.json does
-"$cs" sweep tests/sweep/through.yaml -o "$tmp/through" --quiet >"$tmp/through.out" 2>&1
+"$cs" sweep --allow-path examples tests/sweep/through.yaml -o "$tmp/through" --quiet >"$tmp/through.out" 2>&1
 check "through: exits 0" '[ $? -eq 0 ] || { cat "$tmp/through.out"; false; }'
 col() { head -1 "$1" | tr , "\n" | grep -nxF -- "$2" | cut -d: -f1; }
 pen=$(col "$tmp/through/runs.csv" "max_dynamic_penetration [m]")
@@ -98,13 +98,13 @@ check "plot: a Monte Carlo's plot exits 0" '[ $? -eq 0 ] || { cat "$tmp/mc-plot.
 check "plot: a Monte Carlo's runs as points, in a PDF" '[ "$(head -c 5 "$tmp/mc-plot/plots/max_cable_tension-vs-impact_x.pdf")" = "%PDF-" ] && grep -qF "max_cable_tension against scenario.impact_x, each run a point: 6 of 6 runs shown" "$tmp/mc-plot/summary.md"'
 check "plot: the runs are the same with a plot" 'cmp "$tmp/mc-plot/runs.csv" "$tmp/mc-1/runs.csv"'
 mkdir -p "$tmp/plot-fail/plots/max_barrier_deflection-vs-spacing.png"
-out=$("$cs" sweep tests/sweep/plot.yaml -o "$tmp/plot-fail" --quiet 2>&1)
+out=$("$cs" sweep --allow-path examples tests/sweep/plot.yaml -o "$tmp/plot-fail" --quiet 2>&1)
 check "a plot that cannot be written: status 1, why, nothing written" '[ $? -eq 1 ] && grep -q "nothing written: .*/plots/max_barrier_deflection-vs-spacing.png: Is a directory" <<<"$out" && [ "$(ls -A "$tmp/plot-fail")" = plots ] && [ "$(ls -A "$tmp/plot-fail/plots")" = max_barrier_deflection-vs-spacing.png ]'
 
 # runs.nc: one variable of it, a value a line, at full precision
 nc_column() { ncdump -p 9,17 -v "$2" "$1" | sed -n "/^ $2 = /,/;/p" | sed "s/^ $2 = //; s/;//" | tr ',' '\n' | tr -d ' ' | grep -v '^$'; }
 for t in 1 2; do
-    "$cs" sweep tests/sweep/lhs.yaml -o "$tmp/nc-$t" --threads "$t" --netcdf --quiet >"$tmp/nc-$t.out" 2>&1
+    "$cs" sweep --allow-path examples tests/sweep/lhs.yaml -o "$tmp/nc-$t" --threads "$t" --netcdf --quiet >"$tmp/nc-$t.out" 2>&1
     check "lhs --netcdf on $t threads exits 0" '[ $? -eq 0 ] || { cat "$tmp/nc-$t.out"; false; }'
 done
 nc="$tmp/nc-1/runs.nc"
@@ -119,25 +119,25 @@ sed "s|^model: .*|model: $PWD/examples/aps3.yaml|; s|^seed: 7|&\nnetcdf: true|" 
 check "netcdf: true in the spec writes runs.nc, the same runs" '[ "$(nc_column "$tmp/nc-spec/runs.nc" scenario_speed | tr "\n" " ")" = "$(nc_column "$nc" scenario_speed | tr "\n" " ")" ]'
 check "no runs.nc unless asked" '[ ! -e "$tmp/lhs-1/runs.nc" ]'
 mkdir -p "$tmp/nc-fail/runs.nc"
-out=$("$cs" sweep tests/sweep/lhs.yaml -o "$tmp/nc-fail" --netcdf --quiet 2>&1)
+out=$("$cs" sweep --allow-path examples tests/sweep/lhs.yaml -o "$tmp/nc-fail" --netcdf --quiet 2>&1)
 check "a runs.nc that cannot be written: status 1, why, nothing written" '[ $? -eq 1 ] && grep -q "nothing written: .*/runs.nc: Is a directory" <<<"$out" && [ "$(ls -A "$tmp/nc-fail")" = runs.nc ]'
 
 # --runs, --seed and --t-end from the command line; a different seed gives other inputs
-"$cs" sweep tests/sweep/mc.yaml -o "$tmp/mc-seed" --runs 3 --seed 99 --t-end "5 ms" --quiet >/dev/null 2>&1
+"$cs" sweep --allow-path examples tests/sweep/mc.yaml -o "$tmp/mc-seed" --runs 3 --seed 99 --t-end "5 ms" --quiet >/dev/null 2>&1
 check "--runs --seed --t-end" '[ "$(wc -l <"$tmp/mc-seed/runs.csv")" -eq 4 ] && ! cmp -s <(head -2 "$tmp/mc-seed/runs.csv") <(head -2 "$tmp/mc-1/runs.csv") && grep -q "scenario.t_end=5 ms" "$tmp/mc-seed/summary.json"'
-check "--runs on a grid is refused" '! "$cs" sweep tests/sweep/grid.yaml -o "$tmp/x" --runs 3 >/dev/null 2>&1'
+check "--runs on a grid is refused" '! "$cs" sweep --allow-path examples tests/sweep/grid.yaml -o "$tmp/x" --runs 3 >/dev/null 2>&1'
 
 # `cablesim check` knows a spec from a model, and checks the spec's model with its values
-check "check a spec" '"$cs" check tests/sweep/lhs.yaml | grep -q "tests/sweep/lhs.yaml: a valid sweep spec: Latin hypercube of 4 runs over 3 values"'
+check "check a spec" '"$cs" check --allow-path examples tests/sweep/lhs.yaml | grep -q "tests/sweep/lhs.yaml: a valid sweep spec: Latin hypercube of 4 runs over 3 values"'
 check "check the example spec" '"$cs" check examples/aps3-uncertain.yaml >/dev/null'
-check "check a bad spec" '"$cs" check tests/sweep/bad/bad_level.yaml 2>&1 | grep -q "^tests/sweep/bad/bad_level.yaml:6:42: "'
-check "check a spec with plots" '"$cs" check tests/sweep/plot.yaml | grep -q "a valid sweep spec: grid of 6 runs over 2 values"'
-check "check a bad plot" '"$cs" check tests/sweep/bad/plot_unknown_response.yaml 2>&1 | grep -q "^tests/sweep/bad/plot_unknown_response.yaml:9:6: plot: y: unknown response"'
+check "check a bad spec" '"$cs" check --allow-path examples tests/sweep/bad/bad_level.yaml 2>&1 | grep -q "^tests/sweep/bad/bad_level.yaml:6:42: "'
+check "check a spec with plots" '"$cs" check --allow-path examples tests/sweep/plot.yaml | grep -q "a valid sweep spec: grid of 6 runs over 2 values"'
+check "check a bad plot" '"$cs" check --allow-path examples tests/sweep/bad/plot_unknown_response.yaml 2>&1 | grep -q "^tests/sweep/bad/plot_unknown_response.yaml:9:6: plot: y: unknown response"'
 
 files=0
 for f in tests/sweep/bad/*.yaml; do
     files=$((files + 1))
-    out=$("$cs" sweep "$f" -o "$tmp/bad" 2>&1)
+    out=$("$cs" sweep --allow-path examples "$f" -o "$tmp/bad" 2>&1)
     expect_problems "$f" "$out" $?
 done
 check "bad specs wrote nothing" '[ ! -e "$tmp/bad" ]'

@@ -47,6 +47,10 @@ cs_loader *cs_loader_create(const char *data_dir, char *why, size_t why_size) {
     return l;
 }
 
+int cs_loader_allow_path(cs_loader *l, const char *dir, char *why, size_t why_size) {
+    return cs_allow_add(&l->allow, dir, why, why_size);
+}
+
 const char *cs_loader_data_dir(const cs_loader *l) {
     return l->data_dir;
 }
@@ -79,12 +83,15 @@ void cs_loader_reset(cs_loader *l) {
     drop_sets(l);
     free(l->sets);
     drop_arena_to(l, NULL);
+    cs_allow_free(&l->scope);
     cs_units *units = l->units;
+    cs_allow allow = l->allow;
     char data_dir[sizeof l->data_dir], data_note[sizeof l->data_note];
     memcpy(data_dir, l->data_dir, sizeof data_dir);
     memcpy(data_note, l->data_note, sizeof data_note);
     memset(l, 0, sizeof *l);
     l->units = units;
+    l->allow = allow;
     memcpy(l->data_dir, data_dir, sizeof data_dir);
     memcpy(l->data_note, data_note, sizeof data_note);
 }
@@ -104,6 +111,7 @@ void cs_loader_reuse(cs_loader *l) {
 void cs_loader_free(cs_loader *l) {
     if (!l) return;
     cs_loader_reset(l);
+    cs_allow_free(&l->allow);
     cs_units_free(l->units);
     free(l);
 }
@@ -486,6 +494,18 @@ static void apply_set(cs_loader *l, cs_node **root, int k) {
         cs_err_at(l, src, 0, 0, "malformed path (expected keys and [index], e.g. barrier.cables[0].height)");
 }
 
+/* The folders the references of the model file named may be in: its own folder (as named), the parts
+ * library's and those the user allowed. */
+static void set_scope(cs_loader *l, const char *name) {
+    char why[PATH_MAX + 64], dir[PATH_MAX];
+    const char *slash = strrchr(name, '/');
+    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - name) + 1 : 1, slash ? name : ".");
+    cs_allow_free(&l->scope);
+    cs_allow_copy(&l->scope, &l->allow);
+    if (l->data_dir[0]) cs_allow_add(&l->scope, l->data_dir, why, sizeof why);
+    cs_allow_add(&l->scope, dir, why, sizeof why); /* none: the file's own load reports why */
+}
+
 static int load(cs_loader *l, int f, cs_model_input *out) {
     cs_node *root = f >= 0 ? cs_resolve_model(l, f) : NULL;
     for (int k = 0; root && k < l->set_count; k++)
@@ -496,12 +516,14 @@ static int load(cs_loader *l, int f, cs_model_input *out) {
 
 int cs_loader_load(cs_loader *l, const char *path, cs_model_input *out) {
     memset(out, 0, sizeof *out);
+    set_scope(l, path);
     return load(l, cs_file_load(l, path, NULL), out);
 }
 
 int cs_loader_load_buffer(cs_loader *l, const char *name, const char *data, size_t size,
                           cs_model_input *out) {
     memset(out, 0, sizeof *out);
+    set_scope(l, name);
     return load(l, cs_data_load(l, name, data, size), out);
 }
 
