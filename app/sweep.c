@@ -272,22 +272,35 @@ typedef struct resumed {
     char version[64], model_hash[20], inputs_hash[20];
     char spec_as_given[PATH_MAX], cwd[PATH_MAX]; /* the spec as the stopped sweep's command line gave it */
     int partial;
+    char *journal;      /* DIR/.cablesim-journal, when a killed sweep left one (NULL: none) */
+    const char *rows;   /* its runs.csv, after its first line */
+    size_t rows_length; /* their length */
 } resumed;
 
-/* DIR/summary.json's record of the study into o (its strings kept in static storage) and r. 0, or -1 with
- * why filled. */
+/* The record of the study into o (its strings kept in static storage) and r: the first line of
+ * DIR/.cablesim-journal when a sweep killed before it wrote its outputs left one (r->journal), else
+ * DIR/summary.json's. 0, or -1 with why filled. */
 static int read_resume(const char *dir, sweep_opts *o, resumed *r, char *why, size_t why_size) {
     static char spec[PATH_MAX], seed[64], sets[256][1100], allow[64][PATH_MAX];
     char path[1200];
-    snprintf(path, sizeof path, "%s/summary.json", dir);
-    FILE *probe = fopen(path, "r");
-    if (!probe) {
+    size_t length = 0;
+    if (!(r->journal = cs_out_journal_read(dir, &length, why, why_size)) && why[0]) return -1;
+    char *eol = r->journal ? strchr(r->journal, '\n') : NULL;
+    if (eol) { /* its first line is the record; runs.csv follows */
+        *eol = '\0';
+        r->rows = eol + 1;
+        r->rows_length = length - (size_t)(eol + 1 - r->journal);
+    }
+    snprintf(path, sizeof path, "%s/%s", dir, r->journal ? CS_OUT_JOURNAL : "summary.json");
+    FILE *probe = r->journal ? NULL : fopen(path, "r");
+    if (!r->journal && !probe) {
         snprintf(why, why_size, "%s: %s (expected the summary of a sweep written there)", path,
                  strerror(errno));
         return -1;
     }
-    fclose(probe);
-    json_object *root = json_object_from_file(path), *rec = NULL, *about = NULL, *v;
+    if (probe) fclose(probe);
+    json_object *root = r->journal ? json_tokener_parse(r->journal) : json_object_from_file(path),
+                *rec = NULL, *about = NULL, *v;
     int bad = !root || !json_object_object_get_ex(root, "resume", &rec) ||
               !json_object_is_type(rec, json_type_object) ||
               json_text_at(rec, "spec", spec, sizeof spec) != 0 || !spec[0];
@@ -392,7 +405,10 @@ static int write_all(cs_outdir *out, const cs_sweep_spec *spec, const double *x,
     if (rc == 0) rc = cs_out_commit(out, why, sizeof why);
     if (rc != 0) {
         cs_out_abort(out);
-        fprintf(stderr, "cablesim sweep: nothing written: %s\n", why);
+        fprintf(stderr,
+                "cablesim sweep: nothing written: %s; the runs done are kept in %s/%s: `cablesim sweep "
+                "--resume %s` writes the study once that is put right\n",
+                why, out->dir, CS_OUT_JOURNAL, out->dir);
     }
     return rc;
 }
@@ -531,8 +547,9 @@ static void out_dir_of(const sweep_opts *o, char *dir, size_t size) {
     }
 }
 
-/* --resume: the runs of DIR/runs.csv into all (the others left pending), after checking that the study is
- * the one DIR holds. Returns how many were read, or -1 (why printed). */
+/* --resume: the runs of DIR/runs.csv, or of the journal a killed sweep left, into all (the others left
+ * pending), after checking that the study is the one DIR holds. Returns how many were read, or -1 (why
+ * printed). */
 static long read_done(const char *dir, const cs_sweep_spec *spec, const resumed *was, const double *x,
                       cs_sweep_result *all, long n) {
     char hash[17], path[1200], why[600];
@@ -554,16 +571,51 @@ static long read_done(const char *dir, const cs_sweep_spec *spec, const resumed 
             dir, spec->model);
         return -1;
     }
-    snprintf(path, sizeof path, "%s/runs.csv", dir);
-    FILE *f = fopen(path, "r");
+    snprintf(path, sizeof path, "%s/%s", dir, was->journal ? CS_OUT_JOURNAL : "runs.csv");
+    FILE *f = was->journal ? fmemopen((void *)was->rows, was->rows_length ? was->rows_length : 1, "r")
+                           : fopen(path, "r");
     if (!f) {
         fprintf(stderr, "cablesim sweep: %s: %s\n", path, strerror(errno));
         return -1;
     }
-    long got = cs_sweep_read_runs(f, path, spec, x, all, n, why, sizeof why);
+    long got = cs_sweep_read_runs(f, path, spec, x, all, n, was->journal != NULL, why, sizeof why);
     fclose(f);
     if (got < 0) fprintf(stderr, "cablesim sweep: %s\n", why);
     return got;
+}
+
+/* The journal of the runs (DIR/.cablesim-journal): the study's record and the runs done (a resumed
+ * sweep's), before any run. */
+static int start_journal(cs_outdir *out, const cs_sweep_spec *spec, const double *x,
+                         const cs_sweep_result *all, long n, char *why, size_t why_size) {
+    char *text = NULL;
+    size_t length = 0;
+    FILE *f = open_memstream(&text, &length);
+    int rc = f ? cs_sweep_write_journal_start(f, spec, x, all, n, why, why_size) : -1;
+    if (f) fclose(f);
+    if (rc != 0 || !text) snprintf(why, why_size, "out of memory for the journal");
+    if (rc == 0 && text) rc = cs_out_journal_start(out, text, length, why, why_size);
+    free(text);
+    return rc;
+}
+
+/* Append a finished run to the journal (append and fsync: a kill -9 after it keeps it). A journal that
+ * cannot be written is said once; the runs go on, and the outputs at the end hold them. */
+static void journal_run(cs_outdir *out, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
+                        long i) {
+    static int failed;
+    char *text = NULL, why[1600];
+    size_t length = 0;
+    FILE *f = failed ? NULL : open_memstream(&text, &length);
+    if (!f) return;
+    cs_sweep_write_run_row(f, spec, x, r, i);
+    fclose(f);
+    if (cs_out_journal_add(out, text, length, why, sizeof why) != 0) {
+        failed = 1;
+        fprintf(stderr, "cablesim sweep: %s: the runs from now on are not journalled (a kill loses them)\n",
+                why);
+    }
+    free(text);
 }
 
 static const char *signal_name(int sig) {
@@ -654,8 +706,9 @@ int cs_sweep_command(int argc, char **argv) {
         } else if (cs_out_open(&out, dir, o.force ? CS_OUT_FORCE : 0, why, sizeof why) != 0) {
             fprintf(stderr, "cablesim sweep: nothing run: %s\n", why);
             rc = EXIT_RUN;
-        } else {
-            out_open = 1;
+        } else if (out_open = 1, start_journal(&out, spec, x, all, n, why, sizeof why) != 0) {
+            fprintf(stderr, "cablesim sweep: nothing run: %s\n", why);
+            rc = EXIT_RUN;
         }
     }
     /* the runs to do, the same list on every rank */
@@ -733,6 +786,7 @@ int cs_sweep_command(int argc, char **argv) {
 #endif
             {
                 p.done++;
+                if (rank == 0) journal_run(&out, spec, x, &mine[m], i);
                 progress_show(&p, 0);
                 if (stop_after > 0 && p.done == stop_after) raise(SIGINT); /* CABLESIM_SWEEP_STOP_AFTER */
             }
@@ -811,7 +865,7 @@ int cs_sweep_command(int argc, char **argv) {
     free(mine);
     free(all);
     free(x);
-    free(todo), free(todo_mask), free(record);
+    free(todo), free(todo_mask), free(record), free(was.journal);
     cs_sweep_spec_free(spec);
 #ifdef CS_MPI
     MPI_Bcast(&rc, 1, MPI_INT, 0, MPI_COMM_WORLD);

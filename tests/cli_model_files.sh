@@ -39,7 +39,6 @@ model "$tmp/m/to-fifo.yaml" fifo.yaml
 out=$(timeout 20 "$cs" check "$tmp/m/to-fifo.yaml" 2>&1)
 check "a FIFO as a file: exit 2, at once" '[ $? -eq 2 ] && grep -qF "fifo.yaml: a FIFO, not a regular file" <<<"$out" || echo "$out"'
 check "both FIFOs refused within 5 s" '[ $(($(date +%s) - start)) -lt 5 ]'
-printf 'name: s\nmodel: fifo.yaml\nmethod: grid\nvary: {scenario.speed: [30 mph, 40 mph]}\n' >"$tmp/m/fifo-spec.yaml"
 out=$(timeout 20 "$cs" sweep "$tmp/m/fifo.yaml" -o "$tmp/fifo-sweep" 2>&1)
 check "a FIFO as a sweep spec: exit 2, at once" '[ $? -eq 2 ] && grep -qF "a FIFO, not a regular file" <<<"$out" || echo "$out"'
 

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # cablesim sweep end to end: the same runs.csv (byte for byte), summaries and plots on 1 and 2 threads, a
 # grid, a Monte Carlo, a Latin hypercube, the outputs' shape, runs.nc (--netcdf or `netcdf: true`: the same
-# bytes on 1 and 2 threads, runs.csv's runs and numbers read back by ncdump, nothing written when it cannot
-# be written), the plots of `plot:` (a grid's lines as PNG and SVG, a Monte Carlo's points as PDF, named in
-# summary.md and on the outputs line, nothing written when one cannot be written), plain progress lines
+# bytes on 1 and 2 threads, runs.csv's runs and numbers read back by ncdump, nothing but the runs' journal
+# written when it cannot be written), the plots of `plot:` (a grid's lines as PNG and SVG, a Monte Carlo's
+# points as PDF, named in summary.md and on the outputs line, nothing but the journal written when one
+# cannot be), plain progress lines
 # when not on a terminal, `cablesim check` of a spec, and every spec in tests/sweep/bad/ refused with
 # status 2 and exactly the problems its "# expect: LINE:COL: text" lines name. The runs are 10 to 20 ms
 # long so the suite stays fast.
@@ -93,13 +94,13 @@ check "plot: the outputs line names the plots" 'grep -qxF "outputs: $tmp/plot-1/
 check "plot: the runs are the grid's, spacing slowest" '[ "$(cut -d, -f2,3 "$tmp/plot-1/runs.csv" | tail -n +2 | tr "\n" " ")" = "4,2270P 4,1100C 2,2270P 2,1100C 6,2270P 6,1100C " ]'
 sed "s|^model: .*|model: $PWD/examples/aps3.yaml|" tests/sweep/mc.yaml >"$tmp/mc-plot.yaml"
 printf 'plot:\n  x: scenario.impact_x\n  y: max_cable_tension\n  format: pdf\n' >>"$tmp/mc-plot.yaml"
-"$cs" sweep "$tmp/mc-plot.yaml" -o "$tmp/mc-plot" --quiet >"$tmp/mc-plot.out" 2>&1
+"$cs" sweep --allow-path examples "$tmp/mc-plot.yaml" -o "$tmp/mc-plot" --quiet >"$tmp/mc-plot.out" 2>&1
 check "plot: a Monte Carlo's plot exits 0" '[ $? -eq 0 ] || { cat "$tmp/mc-plot.out"; false; }'
 check "plot: a Monte Carlo's runs as points, in a PDF" '[ "$(head -c 5 "$tmp/mc-plot/plots/max_cable_tension-vs-impact_x.pdf")" = "%PDF-" ] && grep -qF "max_cable_tension against scenario.impact_x, each run a point: 6 of 6 runs shown" "$tmp/mc-plot/summary.md"'
 check "plot: the runs are the same with a plot" 'cmp "$tmp/mc-plot/runs.csv" "$tmp/mc-1/runs.csv"'
 mkdir -p "$tmp/plot-fail/plots/max_barrier_deflection-vs-spacing.png"
 out=$("$cs" sweep --allow-path examples tests/sweep/plot.yaml -o "$tmp/plot-fail" --quiet 2>&1)
-check "a plot that cannot be written: status 1, why, nothing written" '[ $? -eq 1 ] && grep -q "nothing written: .*/plots/max_barrier_deflection-vs-spacing.png: Is a directory" <<<"$out" && [ "$(ls -A "$tmp/plot-fail")" = plots ] && [ "$(ls -A "$tmp/plot-fail/plots")" = max_barrier_deflection-vs-spacing.png ]'
+check "a plot that cannot be written: status 1, why, nothing written" '[ $? -eq 1 ] && grep -q "nothing written: .*/plots/max_barrier_deflection-vs-spacing.png: Is a directory" <<<"$out" && [ "$(ls -A "$tmp/plot-fail")" = "$(printf ".cablesim-journal\nplots")" ] && [ "$(ls -A "$tmp/plot-fail/plots")" = max_barrier_deflection-vs-spacing.png ]'
 
 # runs.nc: one variable of it, a value a line, at full precision
 nc_column() { ncdump -p 9,17 -v "$2" "$1" | sed -n "/^ $2 = /,/;/p" | sed "s/^ $2 = //; s/;//" | tr ',' '\n' | tr -d ' ' | grep -v '^$'; }
@@ -115,12 +116,12 @@ check "runs.nc: runs.csv's speeds, within 38-42 mph" 'paste -d, <(nc_column "$nc
 check "runs.nc: runs.csv's penetrations in full (the CSV's 10 digits)" 'paste -d, <(nc_column "$nc" penetration_beyond) <(cut -d, -f11 "$runs" | tail -n +2) | awk -F, "!(\$1 > 0.05) || (\$1 - \$2) ^ 2 > (5e-10 * \$2) ^ 2 { bad = 1 } END { exit bad || NR != 4 }"'
 check "runs.nc: units and CF" 'ncdump -h "$nc" | grep -q "scenario_speed:units = \"m/s\"" && ncdump -h "$nc" | grep -q ":Conventions = \"CF-1.8\""'
 sed "s|^model: .*|model: $PWD/examples/aps3.yaml|; s|^seed: 7|&\nnetcdf: true|" tests/sweep/lhs.yaml >"$tmp/lhs-nc.yaml"
-"$cs" sweep "$tmp/lhs-nc.yaml" -o "$tmp/nc-spec" --quiet >/dev/null 2>&1
+"$cs" sweep --allow-path examples "$tmp/lhs-nc.yaml" -o "$tmp/nc-spec" --quiet >/dev/null 2>&1
 check "netcdf: true in the spec writes runs.nc, the same runs" '[ "$(nc_column "$tmp/nc-spec/runs.nc" scenario_speed | tr "\n" " ")" = "$(nc_column "$nc" scenario_speed | tr "\n" " ")" ]'
 check "no runs.nc unless asked" '[ ! -e "$tmp/lhs-1/runs.nc" ]'
 mkdir -p "$tmp/nc-fail/runs.nc"
 out=$("$cs" sweep --allow-path examples tests/sweep/lhs.yaml -o "$tmp/nc-fail" --netcdf --quiet 2>&1)
-check "a runs.nc that cannot be written: status 1, why, nothing written" '[ $? -eq 1 ] && grep -q "nothing written: .*/runs.nc: Is a directory" <<<"$out" && [ "$(ls -A "$tmp/nc-fail")" = runs.nc ]'
+check "a runs.nc that cannot be written: status 1, why, nothing written" '[ $? -eq 1 ] && grep -q "nothing written: .*/runs.nc: Is a directory" <<<"$out" && [ "$(ls -A "$tmp/nc-fail")" = "$(printf ".cablesim-journal\nruns.nc")" ]'
 
 # --runs, --seed and --t-end from the command line; a different seed gives other inputs
 "$cs" sweep --allow-path examples tests/sweep/mc.yaml -o "$tmp/mc-seed" --runs 3 --seed 99 --t-end "5 ms" --quiet >/dev/null 2>&1

@@ -1,6 +1,8 @@
 #define _POSIX_C_SOURCE 200809L
 #include "outfile.h"
 
+#include "load/confine.h"
+
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -119,6 +121,8 @@ static int take_lock(cs_outdir *out, char *why, size_t why_size) {
 }
 
 static void release(cs_outdir *out) {
+    if (out->journal >= 0) close(out->journal);
+    out->journal = -1;
     if (out->lock >= 0) {
         char path[PATH_SIZE];
         full_path(out, CS_OUT_LOCK, path, sizeof path);
@@ -240,7 +244,8 @@ static int scan(const cs_outdir *out, const char *rel, int depth, int remove, ch
         } else if (ours && remove) {
             unlink(full);
         } else if (!ours && !remove && !listed(out, sub) &&
-                   !(!rel[0] && (strcmp(name, CS_OUT_MANIFEST) == 0 || strcmp(name, CS_OUT_LOCK) == 0))) {
+                   !(!rel[0] && (strcmp(name, CS_OUT_MANIFEST) == 0 || strcmp(name, CS_OUT_LOCK) == 0 ||
+                                 strcmp(name, CS_OUT_JOURNAL) == 0))) {
             snprintf(found, found_size, "%s", sub);
             rc = 1;
         }
@@ -266,7 +271,7 @@ static int check_contents(cs_outdir *out, char *why, size_t why_size) {
 
 int cs_out_open(cs_outdir *out, const char *dir, int flags, char *why, size_t why_size) {
     memset(out, 0, sizeof *out);
-    out->lock = -1;
+    out->lock = out->journal = -1;
     out->flags = flags;
     mode_t mask = umask(0);
     umask(mask);
@@ -455,6 +460,8 @@ int cs_out_commit(cs_outdir *out, char *why, size_t why_size) {
         }
     }
     if (write_manifest(out, 0, why, why_size) != 0) return -1; /* the commit point */
+    full_path(out, CS_OUT_JOURNAL, tmp, sizeof tmp);
+    unlink(tmp); /* a journal's runs are in the outputs now */
     sync_folder(out, "", 0);
     for (int i = 0; i < out->count; i++) {
         const char *slash = strrchr(out->names[i], '/');
@@ -495,4 +502,59 @@ void cs_out_abort(cs_outdir *out) {
         *slash = '\0';
     }
     out->made = 0;
+}
+
+/* ---- a sweep's journal ---- */
+
+/* Write all of text to fd and fsync it. 0, or -1 with errno set. */
+static int write_all_sync(int fd, const char *text, size_t len) {
+    while (len > 0) {
+        ssize_t n = write(fd, text, len);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) return -1;
+        text += n, len -= (size_t)n;
+    }
+    return fsync(fd);
+}
+
+int cs_out_journal_start(cs_outdir *out, const char *text, size_t len, char *why, size_t why_size) {
+    char tmp[PATH_SIZE], path[PATH_SIZE];
+    snprintf(tmp, sizeof tmp, "%s/%sjournal.XXXXXX", out->dir, tmp_prefix);
+    full_path(out, CS_OUT_JOURNAL, path, sizeof path);
+    int fd = mkstemp(tmp);
+    if (fd < 0 || fchmod(fd, (mode_t)out->mode) != 0 || write_all_sync(fd, text, len) != 0 ||
+        rename(tmp, path) != 0) {
+        snprintf(why, why_size, "%s: %s", path, strerror(errno));
+        if (fd >= 0) close(fd), unlink(tmp);
+        return -1;
+    }
+    sync_folder(out, "", 0);
+    if (out->journal >= 0) close(out->journal);
+    out->journal = fd; /* the renamed file: appends go on at its end */
+    return 0;
+}
+
+int cs_out_journal_add(cs_outdir *out, const char *text, size_t len, char *why, size_t why_size) {
+    if (out->journal < 0 || write_all_sync(out->journal, text, len) != 0) {
+        char path[PATH_SIZE];
+        full_path(out, CS_OUT_JOURNAL, path, sizeof path);
+        snprintf(why, why_size, "%s: %s", path, out->journal < 0 ? "not open" : strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+char *cs_out_journal_read(const char *dir, size_t *len, char *why, size_t why_size) {
+    char path[PATH_SIZE], reason[256];
+    snprintf(path, sizeof path, "%s/%s", dir, CS_OUT_JOURNAL);
+    char *text = NULL;
+    int err = 0;
+    why[0] = '\0';
+    if (cs_input_read(path, (size_t)2 << 30, &text, len, &err, reason, sizeof reason) != 0) {
+        if (err != ENOENT) snprintf(why, why_size, "%s: %s", path, reason);
+        return NULL;
+    }
+    while (*len > 0 && text[*len - 1] != '\n') /* a row cut short by a kill */
+        text[--*len] = '\0';
+    return text;
 }

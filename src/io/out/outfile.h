@@ -10,7 +10,7 @@
  * flushed and fsync'ed; cs_out_commit renames them all into place, removes the files of the earlier
  * manifest that this run did not write, and writes the new manifest last, by a temporary and a rename:
  * the commit point. cs_out_abort removes the temporaries (and the folders cs_out_open made) so a failed
- * run leaves nothing. Either releases the lock. */
+ * run leaves nothing. Either releases the lock. A sweep's journal, beside them, is below. */
 #ifndef CS_OUTFILE_H
 #define CS_OUTFILE_H
 
@@ -22,6 +22,7 @@ enum { CS_OUT_FORCE = 1 };      /* cs_out_open: write beside files no manifest l
 #define CS_OUT_MANIFEST ".cablesim-manifest"
 #define CS_OUT_LOCK ".cablesim-lock"
 #define CS_OUT_TMP_PREFIX ".cablesim-tmp."
+#define CS_OUT_JOURNAL ".cablesim-journal"
 
 typedef struct cs_outdir {
     char dir[1024];
@@ -33,6 +34,7 @@ typedef struct cs_outdir {
     int made;      /* the folders cs_out_open created: the last `made` prefixes of dir */
     int flags;     /* CS_OUT_FORCE */
     int lock;      /* the lock's file descriptor, -1 when not held */
+    int journal;   /* the journal's, open for appending; -1: none */
     unsigned mode; /* the files' permissions: 0666 less the umask */
 } cs_outdir;
 
@@ -59,6 +61,18 @@ int cs_out_end_path(cs_outdir *out, char *why, size_t why_size);
  * write (and a subfolder they leave empty), write the manifest, release the lock. Returns 0, or -1 with
  * why filled (then call cs_out_abort). */
 int cs_out_commit(cs_outdir *out, char *why, size_t why_size);
+/* A journal in the folder (DIR/.cablesim-journal, a sweep's: each run's result as it finishes), which
+ * outlives a kill -9, a power cut or a failed write of the outputs, and which cs_out_commit removes (the
+ * outputs hold it all then). cs_out_journal_start writes its first text through a temporary, fsync and
+ * rename (it replaces an earlier journal whole or not at all) and keeps it open; cs_out_journal_add
+ * appends text and fsyncs. Each returns 0, or -1 with why filled ("DIR/.cablesim-journal: No space left
+ * on device"). */
+int cs_out_journal_start(cs_outdir *out, const char *text, size_t len, char *why, size_t why_size);
+int cs_out_journal_add(cs_outdir *out, const char *text, size_t len, char *why, size_t why_size);
+/* The journal of the folder dir up to its last whole line (a line cut by a kill is dropped), malloc'ed and
+ * NUL-terminated, its length in *len. NULL with why empty: there is none; NULL with why filled: it cannot
+ * be read. */
+char *cs_out_journal_read(const char *dir, size_t *len, char *why, size_t why_size);
 /* Remove the temporaries begun, and the folders cs_out_open made if they are empty; release the lock.
  * Safe to call twice, and after a commit (then it does nothing). */
 void cs_out_abort(cs_outdir *out);
