@@ -162,7 +162,7 @@ static const char *default_model(cs_loader *l, char *buf, size_t size) {
 
 static int write_page(design *d, const char *dir, int force) {
 #ifdef CS_HAVE_DESIGNER
-    char why[1024], end_why[512];
+    char why[1024];
     cs_outdir out;
     if (cs_out_open(&out, dir, force ? CS_OUT_FORCE : 0, why, sizeof why) != 0) {
         fprintf(stderr, "cablesim designer: nothing written: %s\n", why);
@@ -172,8 +172,7 @@ static int write_page(design *d, const char *dir, int force) {
     int rc = f ? cs_write_page(f, cs_designer_page, cs_designer_page_size, d->name, "designer.html",
                                write_design, d, why, sizeof why)
                : -1;
-    if (f && cs_out_end(&out, f, end_why, sizeof end_why) != 0 && rc == 0)
-        rc = -1, snprintf(why, sizeof why, "%s", end_why);
+    if (f) rc = cs_out_finish(&out, f, rc, why, sizeof why);
     if (rc == 0) rc = cs_out_commit(&out, why, sizeof why);
     if (rc != 0) {
         cs_out_abort(&out);

@@ -191,12 +191,7 @@ static int write_report_html(cs_outdir *out, void *user, char *why, size_t why_s
     if (!f) return -1;
     int rc = cs_write_report_html(f, cs_report_page, cs_report_page_size, a->in, a->state, a->rec, a->info,
                                   why, why_size);
-    char end_why[512];
-    if (cs_out_end(out, f, end_why, sizeof end_why) != 0 && rc == 0) {
-        snprintf(why, why_size, "%s", end_why);
-        rc = -1;
-    }
-    return rc;
+    return cs_out_finish(out, f, rc, why, why_size);
 #else
     (void)out, (void)a, (void)why, (void)why_size;
     fprintf(stderr, "cablesim: warning: no report.html: this cablesim was built without node and npm "

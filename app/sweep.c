@@ -388,11 +388,7 @@ static int write_all(cs_outdir *out, const cs_sweep_spec *spec, const double *x,
              : k < study + CS_STUDY_FIGURES
                  ? cs_study_write_figure(f, CS_PLOT_PNG, k - study, spec, x, r, n, why, sizeof why)
                  : cs_study_write_page(f, spec, x, r, n, why, sizeof why);
-        char end_why[512];
-        if (cs_out_end(out, f, end_why, sizeof end_why) != 0 && rc == 0) {
-            snprintf(why, sizeof why, "%s", end_why);
-            rc = -1;
-        }
+        rc = cs_out_finish(out, f, rc, why, sizeof why);
     }
     cs_plot_release(); /* after the last plot */
     if (rc == 0 && spec->netcdf && !partial) {

@@ -29,9 +29,12 @@ typedef struct cs_outdir {
     int count;
     char names[CS_OUT_MAX_FILES][128]; /* the files begun, relative to dir */
     char tmps[CS_OUT_MAX_FILES][200];  /* their temporaries, relative to dir */
+    int streams[CS_OUT_MAX_FILES][2];  /* their streams' descriptor and first write error (errno) */
     char (*prev)[128];                 /* the earlier run's manifest */
     int prev_count;
-    int made;      /* the folders cs_out_open created: the last `made` prefixes of dir */
+    int made;             /* the folders cs_out_open created: the last `made` prefixes of dir */
+    char subdirs[8][128]; /* the subfolders cs_out_subdir made (cs_out_abort removes them when empty) */
+    int subdir_count;
     int flags;     /* CS_OUT_FORCE */
     int lock;      /* the lock's file descriptor, -1 when not held */
     int journal;   /* the journal's, open for appending; -1: none */
@@ -48,8 +51,13 @@ int cs_out_subdir(cs_outdir *out, const char *subdir, char *why, size_t why_size
  * folder there, or a file no manifest lists (CS_OUT_FORCE). */
 FILE *cs_out_begin(cs_outdir *out, const char *name, char *why, size_t why_size);
 /* Flush, fsync and close a file from cs_out_begin: the last begun, or the i-th (files written side by
- * side). Returns 0, or -1 with why filled. */
+ * side). Returns 0, or -1 with why filled: the file and the system's reason for its first failed write
+ * (a full disk: "No space left on device"). */
 int cs_out_end(cs_outdir *out, FILE *f, char *why, size_t why_size);
+/* End the last file begun (cs_out_end) after its writer returned rc (rc != 0: why holds its reason).
+ * Returns 0 when both went well, else -1 with why the file's own error when it had one (which file, and
+ * the system's reason: "DIR/runs.csv: No space left on device"), else the writer's reason. */
+int cs_out_finish(cs_outdir *out, FILE *f, int rc, char *why, size_t why_size);
 int cs_out_end_at(cs_outdir *out, int i, FILE *f, char *why, size_t why_size);
 /* The same for a writer that opens its file by name (netCDF): the temporary's path into path (an empty
  * file the writer replaces), and, once the writer has closed it, cs_out_end_path fsyncs it. Each returns
