@@ -268,6 +268,20 @@ static int json_text_at(json_object *obj, const char *key, char *out, size_t siz
     return snprintf(out, size, "%s", json_object_get_string(v)) < (int)size ? 0 : -1;
 }
 
+/* The strings of a JSON array into store (slots of width bytes), each slot's address into to[*count],
+ * up to max. 0, or -1 when an entry is not a string or does not fit. */
+static int json_texts(json_object *list, char *store, size_t width, const char **to, int *count, int max) {
+    for (size_t i = 0; i < json_object_array_length(list) && *count < max; i++) {
+        json_object *e = json_object_array_get_idx(list, i);
+        char *slot = store + (size_t)*count * width;
+        if (!json_object_is_type(e, json_type_string) ||
+            snprintf(slot, width, "%s", json_object_get_string(e)) >= (int)width)
+            return -1;
+        to[(*count)++] = slot;
+    }
+    return 0;
+}
+
 typedef struct resumed {
     char version[64], model_hash[20], inputs_hash[20];
     char spec_as_given[PATH_MAX], cwd[PATH_MAX]; /* the spec as the stopped sweep's command line gave it */
@@ -316,25 +330,11 @@ static int read_resume(const char *dir, sweep_opts *o, resumed *r, char *why, si
     }
     json_object *list = NULL;
     bad = bad || !json_object_object_get_ex(rec, "set", &list) || !json_object_is_type(list, json_type_array);
-    for (size_t i = 0; !bad && i < json_object_array_length(list) && o->set_count < 256; i++) {
-        json_object *e = json_object_array_get_idx(list, i);
-        bad = !json_object_is_type(e, json_type_string) ||
-              snprintf(sets[o->set_count], sizeof sets[0], "%s", json_object_get_string(e)) >=
-                  (int)sizeof sets[0];
-        o->sets[o->set_count] = sets[o->set_count];
-        o->set_count++;
-    }
+    if (!bad) bad = json_texts(list, sets[0], sizeof sets[0], o->sets, &o->set_count, 256) != 0;
     if (!bad && json_object_object_get_ex(rec, "netcdf", &v)) o->netcdf = json_object_get_boolean(v);
     if (!bad && json_object_object_get_ex(rec, "allow", &list)) { /* none: a study that needed no leave */
-        bad = !json_object_is_type(list, json_type_array);
-        for (size_t i = 0; !bad && i < json_object_array_length(list) && o->allow_count < 64; i++) {
-            json_object *e = json_object_array_get_idx(list, i);
-            bad = !json_object_is_type(e, json_type_string) ||
-                  snprintf(allow[o->allow_count], sizeof allow[0], "%s", json_object_get_string(e)) >=
-                      (int)sizeof allow[0];
-            o->allow[o->allow_count] = allow[o->allow_count];
-            o->allow_count++;
-        }
+        bad = !json_object_is_type(list, json_type_array) ||
+              json_texts(list, allow[0], sizeof allow[0], o->allow, &o->allow_count, 64) != 0;
     }
     r->partial = !bad && json_object_object_get_ex(root, "partial", &v) && json_object_get_boolean(v);
     if (!bad && json_object_object_get_ex(root, "cablesim", &about)) {
