@@ -127,7 +127,7 @@ int cs_input_read(const char *path, size_t limit, char **data, size_t *size, int
         close(fd);
         return -1;
     }
-    size_t cap = (size_t)st.st_size + 1, n = 0;
+    size_t cap = (size_t)st.st_size + 2, n = 0; /* room for the NUL, and to see the end without growing */
     char *buf = malloc(cap);
     while (buf) {
         if (n + 1 >= cap) { /* it grew since fstat: read on, up to the limit */
