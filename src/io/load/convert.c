@@ -607,6 +607,7 @@ int cs_convert_model(cs_loader *l, const cs_node *root, const char *file, cs_mod
     const cs_node *cables = cs_node_get(barrier, "cables"), *anchors = cs_node_get(barrier, "anchors");
     l->anchors_node = anchors;
     const cs_node *soil = cs_node_get(barrier, "soil");
+    l->soil_node = soil;
     if (soil)
         fields(l, soil, &out->barrier.start_anchor.footing, 0),
             fields(l, soil, &out->barrier.end_anchor.footing, 0);

@@ -105,7 +105,7 @@ void cs_loader_reuse(cs_loader *l) {
     drop_arena_to(l, l->files_end); /* the files' nodes are older; nothing of theirs points later */
     l->depth = 0;
     l->post_origin = l->cable_origin = NULL;
-    l->vehicle_node = l->scenario_node = l->anchors_node = NULL;
+    l->vehicle_node = l->scenario_node = l->anchors_node = l->soil_node = NULL;
 }
 
 void cs_loader_free(cs_loader *l) {
@@ -603,9 +603,12 @@ static const cs_node *engine_place(const cs_loader *l, const cs_model_input *in,
 }
 
 /* The --set that changed that element, if one did: the value the engine refuses most likely came from
- * it, not from the file. Its index, or -1. */
-static int engine_set(const cs_loader *l, int w, long i) {
+ * it, not from the file. A message about the soil (an anchor's or a footing's, which take the barrier's
+ * soil) looks for a --set of barrier.soil first. Its index, or -1. */
+static int engine_set(const cs_loader *l, int w, long i, int soil) {
     char prefix[64];
+    for (int k = l->set_count - 1; soil && k >= 0; k--)
+        if (!l->sets[k].bad && strncmp(l->sets[k].path, "barrier.soil", 12) == 0) return k;
     if (w == 0)
         snprintf(prefix, sizeof prefix, "barrier.cables[%ld]", i);
     else if (w == 1)
@@ -626,8 +629,9 @@ cs_model *cs_loader_build(cs_loader *l, const cs_model_input *in) {
     cs_model *m = cs_model_create(&in->barrier, &in->vehicle, &in->scenario, &err);
     if (m) return m;
     long i = -1;
-    int w = engine_element(err.message, &i), set = w >= 0 ? engine_set(l, w, i) : -1;
-    const cs_node *place = w >= 0 ? engine_place(l, in, w, i) : NULL;
+    int soil = strstr(err.message, "soil") != NULL;
+    int w = engine_element(err.message, &i), set = w >= 0 ? engine_set(l, w, i, soil) : -1;
+    const cs_node *place = soil && l->soil_node ? l->soil_node : w >= 0 ? engine_place(l, in, w, i) : NULL;
     if (set >= 0)
         cs_err_at(l, -1 - set, 0, 0, "%s (the engine's check of the model)", err.message);
     else if (place)

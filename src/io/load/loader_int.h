@@ -28,10 +28,10 @@ typedef struct cs_lfile {
     char *real;       /* canonical path, to find it again */
     const char *data; /* its contents, when loaded from memory (NULL: read real) */
     size_t size;
-    cs_ytree tree;  /* its YAML, each value with its place */
-    cs_node *root;  /* NULL if it failed to load */
-    int loading;    /* being loaded (a reference cycle if met again) */
-    int referenced; /* named by another model's file: its text is not echoed when it is not a model */
+    cs_ytree tree;         /* its YAML, each value with its place */
+    cs_node *root;         /* NULL if it failed to load */
+    int loading;           /* being loaded (a reference cycle if met again) */
+    int referenced;        /* named by another model's file: its text is not echoed when it is not a model */
     int odd_line, odd_col; /* referenced and not a model: where it shows (0: it is one) */
 } cs_lfile;
 
@@ -64,7 +64,7 @@ struct cs_loader {
     int depth;                   /* nesting of part and file references */
     const cs_node **post_origin; /* group node of each loaded post */
     const cs_node **cable_origin;
-    const cs_node *vehicle_node, *scenario_node, *anchors_node;
+    const cs_node *vehicle_node, *scenario_node, *anchors_node, *soil_node;
 };
 
 void *cs_arena_alloc(cs_loader *l, size_t size); /* zeroed; NULL when out of memory */
