@@ -27,13 +27,13 @@ _cablesim() {
         mapfile -t COMPREPLY < <(compgen -W "3 4" -- "$cur")
         return
         ;;
-    --set | --dt | --t-end | --threads | --runs | --seed | --class | --test)
+    --set | --dt | --t-end | --occupant-at | --threads | --runs | --seed | --class | --test)
         return
         ;;
     esac
     local opts=""
     case $cmd in
-    run) opts="-o --force --dt --t-end --set --plots --report" ;;
+    run) opts="-o --force --dt --t-end --set --plots --report --occupant-at" ;;
     check) opts="--set" ;;
     sweep) opts="-o --threads --runs --seed --set --t-end --dt --netcdf --quiet --force --resume --help" ;;
     rate) opts="--standard --class --level --test --set" ;;

@@ -28,8 +28,11 @@ static const char usage[] =
     "The measured file is a CSV file whose header names each column with its unit, \"name [unit]\" or\n"
     "\"name (unit)\": the time first, then any of a deceleration (g, m/s^2), a speed (mph, km/h, m/s),\n"
     "a penetration (ft, m) and a rope tension (kip, kN); its 50-ms deceleration is found from its speed\n"
-    "(or its deceleration) as a run's is. At most 12 runs. DIR is kept as cablesim run --help says;\n"
-    "--force writes into it beside files no manifest lists (none of them is removed).\n";
+    "(or its deceleration) as a run's is. With --measured, each run is scored against it (metrics.csv,\n"
+    "the page, the terminal): the Sprague-Geers magnitude, phase and comprehensive errors and the ANOVA\n"
+    "mean and standard deviation of the residuals of NCHRP W179, with W179's verdict. At most 12 runs.\n"
+    "DIR is kept as cablesim run --help says; --force writes into it beside files no manifest lists (none\n"
+    "of them is removed).\n";
 
 static int bad(const char *fmt, const char *what) {
     fputs("cablesim compare: ", stderr);
@@ -93,8 +96,10 @@ int cs_command_compare(int argc, char **argv) {
         fprintf(stderr, "cablesim compare: nothing written: %s\n", why);
         goto done;
     }
-    printf("compared %d run%s%s: %s/{compare.html,compare.csv,compare.md,plots/compare-*.png,.svg}\n", runs,
-           runs == 1 ? "" : "s", measured ? " and a measured history" : "", dir);
+    printf("compared %d run%s%s: %s/{compare.html,compare.csv,compare.md,%splots/compare-*.png,.svg}\n", runs,
+           runs == 1 ? "" : "s", measured ? " and a measured history" : "", dir,
+           measured ? "metrics.csv," : "");
+    cs_compare_print_metrics(stdout, traces, count, measured ? count - 1 : 0);
     rc = 0;
 done:
     cs_plot_release(); /* after the last plot (fontconfig's caches) */

@@ -9,6 +9,7 @@
 #include "cli.h"
 #include "commands.h"
 #include "load/schema.h"
+#include "load/units.h"
 #include "out/figures.h"
 #include "out/htmltext.h"
 #include "out/outfile.h"
@@ -21,7 +22,7 @@ enum { EXIT_RUN = CS_EXIT_RUN, EXIT_BAD = CS_EXIT_USAGE };
 
 static const char usage[] =
     "Usage: cablesim run FILE [-o DIR] [--force] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
-    "                    [--report] [--allow-path DIR]...\n"
+    "                    [--report] [--occupant-at X,Y,Z] [--allow-path DIR]...\n"
     "  or:  cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]... [--allow-path DIR]...\n"
     "  or:  cablesim sweep SPEC.yaml [-o DIR] [--threads N] ...\n"
     "  or:  cablesim sweep --resume DIR\n"
@@ -58,7 +59,7 @@ static const char usage[] =
 
 static const char run_usage[] =
     "usage: cablesim run FILE [-o DIR] [--force] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
-    "                    [--report] [--allow-path DIR]...\n"
+    "                    [--report] [--occupant-at X,Y,Z] [--allow-path DIR]...\n"
     "Runs the model of FILE and prints a summary: the outcome, the model's hash, the response parameters,\n"
     "the ratings as run, the failure events. Writes DIR/timeseries.csv, DIR/events.csv and\n"
     "DIR/summary.json (default DIR: results/<model name>); --plots also the run's figures as\n"
@@ -72,6 +73,8 @@ static const char run_usage[] =
     "  --set PATH=VALUE     replace a value of the model: --set scenario.speed=\"35 mph\"\n"
     "  --dt T, --t-end T    the time step and the time limit: --dt \"0.2 ms\" (scenario.dt, scenario.t_end)\n"
     "  --plots, --report    the figures, the HTML report\n"
+    "  --occupant-at X,Y,Z  the occupant risk at this point of the vehicle, not at its CG: lengths from the\n"
+    "                       CG, forward, to the left and up: --occupant-at \"0.3 m,0.4 m,0.2 m\"\n"
     "  --allow-path DIR     the files FILE names (file:) may be in DIR and its subfolders, beyond FILE's\n"
     "                       folder (and its subfolders) and the parts library's\n"
     "Exit status: 0 done, 1 the run or its outputs failed, 2 a bad model or command line.\n";
@@ -94,7 +97,29 @@ typedef struct options {
     const char *file, *out_dir;
     int plots, report, force;
     cs_overrides *overrides;
+    int occupant_at;          /* --occupant-at given */
+    double occupant_point[3]; /* m from the CG: forward, left, up */
 } options;
+
+/* --occupant-at X,Y,Z: three lengths with their units into o. Returns 0, or EXIT_BAD with the reason. */
+static int occupant_at(const cs_cli *cli, const char *arg, options *o) {
+    char why[256], text[256];
+    snprintf(text, sizeof text, "%s", arg);
+    cs_units *u = cs_units_create(why, sizeof why);
+    if (!u) return cs_cli_usage_error(cli, "--occupant-at: %s", why);
+    int k = 0, rc = 0;
+    for (char *save = NULL, *p = strtok_r(text, ",", &save); p && rc == 0;
+         p = strtok_r(NULL, ",", &save), k++)
+        if (k >= 3 || cs_units_read(u, p, CS_Q_LENGTH, &o->occupant_point[k], why, sizeof why) != 0)
+            rc = cs_cli_usage_error(cli, "--occupant-at %s: %s", arg,
+                                    k >= 3 ? "more than three lengths (X,Y,Z)" : why);
+    if (rc == 0 && k != 3)
+        rc = cs_cli_usage_error(
+            cli, "--occupant-at %s: three lengths are needed, X,Y,Z (\"0.3 m,0.4 m,0.2 m\")", arg);
+    cs_units_free(u);
+    o->occupant_at = rc == 0;
+    return rc;
+}
 
 static int bad_usage(const char *what) {
     fprintf(stderr, "cablesim: %s\n%s", what, usage);
@@ -104,13 +129,18 @@ static int bad_usage(const char *what) {
 /* Parse the command line of run or check into o, queueing --set, --dt and --t-end on the loader.
  * Returns 0, a help's 0 with o->file NULL, or EXIT_BAD. */
 static int parse(int argc, char **argv, const cs_cli *cli, int is_run, options *o, cs_loader *l) {
-    enum { SET = 1000, DT, T_END, PLOTS, REPORT, FORCE, ALLOW };
-    static const struct option run_opts[] = {
-        {"out", required_argument, NULL, 'o'}, {"set", required_argument, NULL, SET},
-        {"dt", required_argument, NULL, DT},   {"t-end", required_argument, NULL, T_END},
-        {"plots", no_argument, NULL, PLOTS},   {"report", no_argument, NULL, REPORT},
-        {"force", no_argument, NULL, FORCE},   {"allow-path", required_argument, NULL, ALLOW},
-        {"help", no_argument, NULL, 'h'},      {NULL, 0, NULL, 0}};
+    enum { SET = 1000, DT, T_END, PLOTS, REPORT, FORCE, OCCUPANT, ALLOW };
+    static const struct option run_opts[] = {{"out", required_argument, NULL, 'o'},
+                                             {"set", required_argument, NULL, SET},
+                                             {"dt", required_argument, NULL, DT},
+                                             {"t-end", required_argument, NULL, T_END},
+                                             {"plots", no_argument, NULL, PLOTS},
+                                             {"report", no_argument, NULL, REPORT},
+                                             {"force", no_argument, NULL, FORCE},
+                                             {"occupant-at", required_argument, NULL, OCCUPANT},
+                                             {"allow-path", required_argument, NULL, ALLOW},
+                                             {"help", no_argument, NULL, 'h'},
+                                             {NULL, 0, NULL, 0}};
     static const struct option check_opts[] = {
         {"set", required_argument, NULL, SET},     {"dt", required_argument, NULL, DT},
         {"t-end", required_argument, NULL, T_END}, {"allow-path", required_argument, NULL, ALLOW},
@@ -134,6 +164,9 @@ static int parse(int argc, char **argv, const cs_cli *cli, int is_run, options *
             break;
         case FORCE:
             o->force = 1;
+            break;
+        case OCCUPANT:
+            if (occupant_at(cli, optarg, o) != 0) return EXIT_BAD;
             break;
         case ALLOW:
             if (cs_loader_allow_path(l, optarg, set, sizeof set) != 0)
@@ -236,7 +269,8 @@ static int run(const cs_model_input *in, cs_model *model, const options *o, cons
         cs_out_abort(&out);
         return EXIT_RUN;
     }
-    cs_run_info info = {command, NULL, o->overrides->count, cs_model_input_hash(in), {{0}}, 0};
+    cs_run_info info = {
+        .command = command, .override_count = o->overrides->count, .model_hash = cs_model_input_hash(in)};
     const char *overrides[64];
     for (int i = 0; i < o->overrides->count; i++)
         overrides[i] = o->overrides->text[i];
@@ -251,6 +285,9 @@ static int run(const cs_model_input *in, cs_model *model, const options *o, cons
         cs_summary sm;
         cs_state_summary(state, &sm);
         cs_run_info_rate(&info, in, &sm);
+        info.occupant_at = o->occupant_at;
+        memcpy(info.occupant_point, o->occupant_point, sizeof info.occupant_point);
+        cs_run_info_motion(&info, in, &rec, &sm);
         if (write_outputs(&out, in, model, state, &rec, &info, o->plots, o->report) == 0) {
             cs_write_summary_text_with(stdout, in, model, state, &info);
             printf("  outputs              %s/{timeseries.csv,events.csv,summary.json%s%s}\n", dir,
@@ -355,7 +392,7 @@ int main(int argc, char **argv) {
     static cs_overrides overrides;
     static char command[8192];
     cs_cli_command_line(argc, argv, command, sizeof command); /* as typed: getopt_long reorders argv */
-    options o = {NULL, NULL, 0, 0, 0, &overrides};
+    options o = {.overrides = &overrides};
     cs_model_input in;
     cs_model *model = NULL;
     if (!is_run && !is_check)

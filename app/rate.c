@@ -6,16 +6,21 @@
  *   highest speed and stops at the first at which the vehicle is stopped (and rated).
  * - Roadside (nchrp-350, mash): the tests of a test level (--level 3 or 4) or one (--test 3-11): vehicle,
  *   speed and angle at the model's impact point; each test's outcome, dynamic deflection, working width,
- *   exit speed and angle, and whether the barrier contained and redirected the vehicle. */
+ *   exit speed and angle, its occupant risk, and each evaluation criterion of its standard judged
+ *   (study/criteria.c) or listed as not judged; then whether the barrier contained and redirected the
+ *   vehicle in every test and which criteria failed or were not judged. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cablesim/loader.h"
+#include "cablesim/output.h"
 #include "cablesim/units.h"
 #include "cli.h"
 #include "commands.h"
+#include "study/criteria.h"
+#include "study/occupant.h"
 #include "study/rating.h"
 
 static const char rate_usage[] =
@@ -31,17 +36,32 @@ static const char rate_usage[] =
     "from the highest and stop at the first at which the vehicle is stopped; --class runs one: C40 C50 C60\n"
     "PU40 PU50 PU60 M30 M40 M50 H30 H40 H50 (ASTM F2656), K4 K8 K12 (SD-STD).\n"
     "Roadside: each test's own vehicle, speed and angle: --level 3 (the default: x-10 and x-11) or 4 (and\n"
-    "4-12), or one --test (3-10, 3-11, 4-10, 4-11, 4-12).\n"
+    "4-12), or one --test (3-10, 3-11, 4-10, 4-11, 4-12); each test's occupant risk (OIV, ORA, THIV, PHD,\n"
+    "ASI) and every evaluation criterion of the standard: pass, FAIL, or not judged where the model cannot\n"
+    "tell (debris, compartment deformation, the path after the loss of contact).\n"
     "--allow-path DIR: the files FILE names may be in DIR, as for cablesim run.\n"
     "Exit status: 0 done, 1 a run failed, 2 a bad model or command line.\n";
 
 static const cs_cli rate_cli = {"rate", rate_usage};
 
-/* One roadside test at the model's impact point; its row printed. Returns 0, 1 if the run failed, 2 if
- * its vehicle is not in the library. contained, redirected: set to 0 if the barrier did not contain the
- * vehicle (it got through), did not redirect it (it got through or stopped). */
-static int roadside_one(cs_loader *l, const cs_model_input *in, const cs_roadside_test *t, int *contained,
-                        int *redirected) {
+/* The tally of a test level's criteria: failed and not-judged letters, each once. */
+typedef struct criteria_tally {
+    int contained, redirected;
+    char failed[96], not_judged[96];
+} criteria_tally;
+
+static void tally_add(char *buf, size_t size, const char *id) {
+    char key[16];
+    snprintf(key, sizeof key, "%s,", id);
+    if (strstr(buf, key)) return;
+    size_t n = strlen(buf);
+    snprintf(buf + n, size - n, "%s", key);
+}
+
+/* One roadside test at the model's impact point; its row, its criteria and its occupant risk printed.
+ * Returns 0, 1 if the run failed, 2 if its vehicle is not in the library. */
+static int roadside_one(cs_loader *l, const cs_model_input *in, const cs_roadside_test *t,
+                        criteria_tally *tl) {
     cs_vehicle_def v;
     if (cs_loader_part(l, CS_PART_VEHICLE, t->vehicle, &v) != 0) {
         cs_loader_print_errors(l, stderr);
@@ -52,32 +72,64 @@ static int roadside_one(cs_loader *l, const cs_model_input *in, const cs_roadsid
     cs_error err = {0};
     cs_model *m = cs_model_create(&in->barrier, &v, &sc, &err);
     cs_state *s = m ? cs_state_create(m, &err) : NULL;
-    int rc = (s && cs_run(m, s, NULL, NULL, &err) == CS_OK) ? 0 : 1;
+    cs_record *rec = s ? cs_record_create(m, &err) : NULL;
+    int rc = (rec && cs_run(m, s, cs_record_frame, rec, &err) == CS_OK && cs_record_ok(rec)) ? 0 : 1;
     if (rc) {
-        fprintf(stderr, "cablesim rate: test %s: %s\n", t->name, err.message);
+        fprintf(stderr, "cablesim rate: test %s: %s\n", t->name,
+                err.message[0] ? err.message : "out of memory");
     } else {
         cs_summary sm;
         cs_state_summary(s, &sm);
         cs_roadside_result r = cs_roadside_read(t, &sm);
         char exit[128] = "no exit";
         if (r.exit_speed_mps >= 0.0)
-            snprintf(exit, sizeof exit, "exit %.1f km/h (%.1f mph) at %.1f deg%s", r.exit_speed_mps * 3.6,
-                     r.exit_speed_mps / CS_MPH, r.exit_angle_deg,
-                     r.redirected && strcmp(t->standard, "nchrp-350") == 0
-                         ? (r.exit_angle_within ? " (under 60% of the impact angle)"
-                                                : " (60% of the impact angle or more)")
-                         : "");
+            snprintf(exit, sizeof exit, "exit %.1f km/h (%.1f mph) at %.1f deg", r.exit_speed_mps * 3.6,
+                     r.exit_speed_mps / CS_MPH, r.exit_angle_deg);
         printf(
             "  %-4s %-6s %3.0f km/h %2.0f deg  %-12s deflection %.2f m (%.1f ft)  working width %.2f m (%.1f "
             "ft)  %s\n",
             t->name, t->vehicle, t->speed * 3.6, t->angle * 180 / CS_PI, cs_outcome_name(sm.outcome),
             r.deflection, r.deflection / CS_FT, r.working_width_m, r.working_width_m / CS_FT, exit);
-        if (!r.contained) *contained = 0;
-        if (!r.redirected) *redirected = 0;
+        cs_occupant_risk o;
+        char why[160] = "";
+        int have = cs_occupant_risk_of_run(rec, sm.first_contact_time_s, NULL, &o, why, sizeof why) == 0;
+        cs_exit_box box;
+        cs_exit_box_of_record(rec, &v, sc.impact_x, &box);
+        cs_test_result res = {&sm, have ? &o : NULL, why, 0.0, 0.0, &box};
+        cs_record_roll_pitch_peaks(rec, &res.roll_peak, &res.pitch_peak);
+        if (have)
+            printf("       occupant risk (CG, CFC 180): OIV %.2f / %.2f m/s at %.3f s%s, ORA %.2f / %.2f g "
+                   "(longitudinal / lateral); THIV %.1f km/h, PHD %.2f g, ASI %.2f\n",
+                   o.oiv_x, o.oiv_y, o.t_impact, o.impact == CS_FLAIL_AFTER_RECORD ? " (after the run)" : "",
+                   o.ora_x, o.ora_y, o.thiv * 3.6, o.phd, o.asi);
+        cs_criterion c[CS_CRITERIA_MAX];
+        int n = cs_roadside_criteria(t, &res, c);
+        for (int k = 0; k < n; k++) {
+            printf("       %-8s %-10s %s: %s\n", c[k].id, cs_verdict_name(c[k].verdict), c[k].name,
+                   c[k].detail);
+            if (c[k].verdict == CS_VERDICT_FAIL) tally_add(tl->failed, sizeof tl->failed, c[k].id);
+            if (c[k].verdict == CS_VERDICT_NOT_JUDGED)
+                tally_add(tl->not_judged, sizeof tl->not_judged, c[k].id);
+        }
+        if (!r.contained) tl->contained = 0;
+        if (!r.redirected) tl->redirected = 0;
     }
+    cs_record_free(rec);
     cs_state_free(s);
     cs_model_free(m);
     return rc;
+}
+
+/* A tally's list "A,D," as "A, D". */
+static const char *listed(char *buf) {
+    size_t n = strlen(buf);
+    if (n && buf[n - 1] == ',') buf[n - 1] = '\0';
+    for (char *p = buf; (p = strchr(p, ',')) != NULL;) {
+        memmove(p + 2, p + 1, strlen(p + 1) + 1);
+        p[1] = ' ';
+        p += 2;
+    }
+    return buf;
 }
 
 /* `rate` for nchrp-350 and mash. */
@@ -96,14 +148,25 @@ static int rate_roadside(cs_loader *l, const char *file, const char *standard, c
     }
     printf("%s against %s (impact at x = %.2f m, the %s):\n", in.name, standard, in.scenario.impact_x,
            in.scenario.impact_at_corner ? "leading front corner" : "centre of the front face");
-    int contained = 1, redirected = 1, rc = 0;
+    criteria_tally tl = {1, 1, "", ""};
+    int rc = 0;
     for (int k = 0; k < n && rc == 0; k++)
-        rc = roadside_one(l, &in, &t[k], &contained, &redirected);
-    if (rc == 0)
-        printf("%s: %s\n", test ? test : (lv == 4 ? "TL-4" : "TL-3"),
-               !contained    ? "NOT contained in every test (the vehicle got through)"
-               : !redirected ? "contained in every test, NOT redirected in every test (the vehicle stopped)"
-                             : "contained and redirected in every test");
+        rc = roadside_one(l, &in, &t[k], &tl);
+    if (rc == 0) {
+        const char *what = test ? test : (lv == 4 ? "TL-4" : "TL-3");
+        printf("%s: %s\n", what,
+               !tl.contained ? "NOT contained in every test (the vehicle got through)"
+               : !tl.redirected
+                   ? "contained in every test, NOT redirected in every test (the vehicle stopped)"
+                   : "contained and redirected in every test");
+        if (tl.failed[0])
+            printf("%s: criteria failed: %s\n", what, listed(tl.failed));
+        else
+            printf("%s: every judged criterion passed\n", what);
+        if (tl.not_judged[0])
+            printf("%s: not judged (the model cannot tell; no pass implied): %s\n", what,
+                   listed(tl.not_judged));
+    }
     return rc;
 }
 

@@ -181,18 +181,10 @@ void cs_anchor_residual(const cs_model *model, const cs_state *s, int a, const d
                     (1.0 + CS_HHT_ALPHA);
 }
 
-/* The residual's unit: the strongest rope's strength, as a support's. */
-static double unit_of(const cs_model *model) {
-    double u = 0.0;
-    for (int c = 0; c < model->cable_count; c++)
-        u = fmax(u, model->cables[c].rope.fu);
-    return u > 0.0 ? u : 1.0;
-}
-
 static void residual(const cs_model *model, const cs_state *s, const cs_rows *rows, const cs_slot *u,
                      double *r) {
     cs_anchor_residual(model, s, u->a, rows->chords, r);
-    double inv = 1.0 / unit_of(model);
+    double inv = 1.0 / cs_rows_force_unit(model);
     r[0] *= inv, r[1] *= inv;
 }
 
@@ -204,7 +196,7 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
     int a = u->a;
     const cs_anchor_model *am = &model->anchors[a];
     const cs_anchor_state *as = &s->anchors[a];
-    double unit = unit_of(model), k[4], q[2], slope, n;
+    double unit = cs_rows_force_unit(model), k[4], q[2], slope, n;
     resistance(am, as, as->u, q, &slope, &n);
     double qn = v2_norm(q[0], q[1]), t = n > 0.0 ? qn / n : 1.0, e[2] = {1.0, 0.0};
     if (n > 0.0)

@@ -38,8 +38,8 @@ int cs_attachment_check_release(const cs_model *model, cs_state *s, int p) {
     const cs_post_state *ps = &s->posts[p];
     if ((pm->attach != CS_ATTACH_SLOT && pm->attach != CS_ATTACH_HOOK) || !cs_post_standing(ps)) return 0;
     double base[3], top[3], axis[3];
-    cs_post_attachment(model, p, ps->tilt, 0.0, base);
-    cs_post_attachment(model, p, ps->tilt, 1.0, top);
+    cs_post_attachment(model, p, ps->tilt, ps->pull, 0.0, base);
+    cs_post_attachment(model, p, ps->tilt, ps->pull, 1.0, top);
     v3_sub(axis, top, base);
     int any = 0;
     for (int c = model->cable_count - 1; c >= 0; c--) {

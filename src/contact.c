@@ -122,6 +122,12 @@ static int wraps(const cs_state *s, const cs_cable_state *cs, int i, int k) {
 }
 
 /* The sag term q of span i (cs_span_sag): the sag's weight below its chord is -q / (12 T). */
+/* How far across a rope's path a rear corner can come in one step: three times the vehicle's travel in
+ * it, at least 5 cm (a corner turning with the body moves little more than the body). */
+static double rear_reach(const cs_model *model, const cs_state *s) {
+    return fmax(0.05, 3.0 * v3_norm(s->vel) * model->scenario.dt);
+}
+
 static double sag_of(const cs_cable_model *cm, const cs_cable_state *cs, int i) {
     double d[4];
     cs_span_chord(cs, i, d);
@@ -164,7 +170,15 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
         }
         if (p[0] <= cs->pos[0] || p[0] >= cs->pos[3 * (cs->node_count - 1)])
             continue; /* beyond the anchors */
-        if (left_of(cs->pos + 3 * (j - 1), cs->pos + 3 * j, p) <= 0.0) continue;
+        double across = left_of(cs->pos + 3 * (j - 1), cs->pos + 3 * j, p);
+        if (across <= 0.0) continue;
+        /* a rear corner found deep across the path has passed under or over the rope while the rope was
+         * out of the side's band, and the rope stays there: only a corner that crosses it within a step
+         * (its reach) takes it up */
+        if (!cs_corner_front(k) && !released[k] &&
+            across > rear_reach(model, s) * v2_norm(cs->pos[3 * j] - cs->pos[3 * (j - 1)],
+                                                    cs->pos[3 * j + 1] - cs->pos[3 * (j - 1) + 1]))
+            continue;
         if (zn < lo || zn > hi) {
             if (!cs_corner_front(k)) continue; /* below or above the side */
             slip(model, s, c, zn < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);

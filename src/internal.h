@@ -75,6 +75,9 @@ typedef struct cs_post_model {
     int soil_yields;       /* 1 if the footing is weaker than the post */
     double shear_cap;      /* 0.6 Aw Fy, N */
     double pullout_cap;    /* N */
+    double embedment;      /* the length of it in the ground that its pullout capacity holds, m */
+    double pull_stiffness; /* its pull along its axis over the slip that mobilises it, N/m (post_pullout.c) */
+    double pull_mass;      /* what slides out with it along its axis: its steel and half its rail spans, kg */
     double rot_limit;      /* rad: a struck post's, past which the vehicle's edge rides over it */
     double lie_angle;      /* rad: the tilt at which its top reaches grade, acos(pivot / (height + pivot)) */
     double load_height;    /* mean cable height on the post, m */
@@ -176,6 +179,12 @@ typedef struct cs_post_state {
     double tilt_commit[2]; /* tilt at the last commit, rad */
     double rate[2];        /* rate of tilt at the last commit, rad/s */
     double net[2];         /* the net generalised moment (cables, rails, less the resistance) then, N m */
+    int withdrawing;       /* its pull has reached its pullout capacity: it slides out (post_pullout.c) */
+    double pull;           /* how far it has slid out along its axis, m */
+    double pull_plastic;   /* the plastic part of that (committed), m */
+    double pull_commit;    /* the pull at the last commit, m */
+    double pull_rate;      /* its rate then, m/s */
+    double pull_net;       /* the net pull (ropes and rails less the shaft) then, N */
 } cs_post_state;
 
 typedef struct cs_work cs_work; /* work.h */
@@ -340,20 +349,28 @@ void cs_node_force(const cs_cable_state *cs, int i, const double *chords, double
 /* ---- a post's axis (post_axis.c): geometry only ---- */
 /* sin t / t, its derivative over t and cos t at t = |alpha|. */
 void cs_post_axis_terms(double t, double *s, double *g, double *c);
-/* The point at height z (when upright) of post p at a tilt: from cs_post_axis_terms' s and c, or found. */
-void cs_post_attachment_from(const cs_model *model, int post, const double *tilt, double s, double c,
-                             double z, double *out);
-void cs_post_attachment(const cs_model *model, int post, const double *tilt, double z, double *out);
+/* The point at height z (when upright) of post p at a tilt, slid out of the ground by `pull` along its
+ * axis: from cs_post_axis_terms' s and c, or found. */
+void cs_post_attachment_from(const cs_model *model, int post, const double *tilt, double pull, double s,
+                             double c, double z, double *out);
+void cs_post_attachment(const cs_model *model, int post, const double *tilt, double pull, double z,
+                        double *out);
 /* The axis' Jacobian da/dalpha (3 x 2, row-major): from s and g, at a tilt, and with its derivatives along
  * the two tilts (dj, 2 x 6: the solver's linearisation of a post's moment). */
 void cs_post_axis_jacobian_from(const double *tilt, double s, double g, double *j);
 void cs_post_axis_jacobian_at(const double *tilt, double *j);
+/* The unit axis a(alpha) at a tilt. */
+void cs_post_axis_at(const double *tilt, double *a);
 void cs_post_axis_jacobian(const double *tilt, double *j, double *dj);
 
 /* ---- posts and footings (post.c, footing.c) ---- */
 /* Still in the barrier: not fallen, sheared or pulled out. */
 static inline int cs_post_standing(const cs_post_state *ps) {
     return ps->status == CS_POST_ELASTIC || ps->status == CS_POST_HINGED || ps->status == CS_POST_SOIL;
+}
+/* The arm of post p's point at height z from its pivot along its axis: z + pivot depth + its pull. */
+static inline double cs_post_arm(const cs_model *model, const cs_state *s, int p, double z) {
+    return z + model->posts[p].pivot + s->posts[p].pull;
 }
 double cs_footing_capacity(const cs_footing_def *f, double load_height);
 double cs_footing_impact_capacity(const cs_footing_def *f, double load_height);
@@ -391,6 +408,21 @@ double cs_post_place_captured(const cs_model *model, cs_state *s, double crush);
 void cs_post_captured_force(const cs_model *model, const cs_state *s, double crush, int face_only,
                             double *force, double *moment);
 int cs_post_capture(const cs_model *model, cs_state *s);
+
+/* ---- a post sliding out of its footing (post_pullout.c) ---- */
+#define CS_SHAFT_MOBILISATION (0.1 * CS_IN) /* slip that mobilises a shaft's friction in sand, m */
+/* The pull along its axis that the length of it still in the ground holds, N. */
+double cs_post_pull_cap(const cs_post_model *pm, const cs_post_state *ps);
+/* The ropes' and rails' pull along post p's axis as placed, N. */
+double cs_post_axial_pull(const cs_model *model, const cs_state *s, int p);
+/* A post whose pull has reached its capacity starts to slide out: returns 1 if it started. */
+int cs_post_pull_start(const cs_model *model, cs_state *s, int p);
+/* End of step: the slide's plastic work (soil) and the post out of the ground at its embedment. */
+void cs_post_pull_commit(const cs_model *model, cs_state *s, int p);
+/* The energy its shaft's slip stores, counted from where the slide started; the kinetic energy of the slide.
+ */
+double cs_post_pull_energy(const cs_model *model, const cs_state *s, int p);
+double cs_post_pull_kinetic_energy(const cs_model *model, const cs_state *s, int p);
 
 /* ---- attachments (attachment.c) ---- */
 /* The cosine of the lean at which a cable held at height z reaches the open end of post pm's slot. */
@@ -465,6 +497,8 @@ void cs_rail_moment(const cs_model *model, const cs_state *s, int p, const doubl
  * span starting there (0 where it does not act); added in that order they make cs_rail_moment's sum. */
 void cs_rail_moments(const cs_model *model, const cs_state *s, const double *axes, double *rails);
 void cs_rail_commit(const cs_model *model, cs_state *s);
+/* The rails' pull on post p along its unit axis a, N. */
+double cs_rail_pull(const cs_model *model, const cs_state *s, int p, const double *a);
 /* The neighbours post p is tied to by rails now (-1: none); returns whether it has any. */
 int cs_rail_ties(const cs_model *model, const cs_state *s, int p, int *left, int *right);
 

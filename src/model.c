@@ -324,6 +324,13 @@ static double critical_step(const cs_model *m, const cs_barrier_def *b) {
     return 2.0 * sqrt(mass / k);
 }
 
+/* The length of rail post p carries: half of each span beside it. */
+static double rail_reach(const cs_barrier_def *b, int p) {
+    double x = b->posts[p].x;
+    return 0.5 *
+           ((p > 0 ? x - b->posts[p - 1].x : 0.0) + (p + 1 < b->post_count ? b->posts[p + 1].x - x : 0.0));
+}
+
 /* Rotational inertia of post p about its pivot: its steel from its top down to grade if it hinges there
  * (pivot 0), the whole post down to the bottom of its embedment, turning with its footing, if the soil
  * yields; and half of each rail span it holds, a point mass at the rail's height. The footing's mass is
@@ -332,13 +339,23 @@ static double post_inertia(const cs_barrier_def *b, int p, double pivot) {
     const cs_post_def *d = &b->posts[p];
     double above = d->height + pivot, below = pivot > 0.0 ? d->footing.depth - pivot : 0.0;
     double j = d->section.mass_per_length * (above * above * above + below * below * below) / 3.0;
-    double reach = 0.5 * ((p > 0 ? d->x - b->posts[p - 1].x : 0.0) +
-                          (p + 1 < b->post_count ? b->posts[p + 1].x - d->x : 0.0));
+    double reach = rail_reach(b, p);
     for (int r = 0; r < b->rail_count; r++) {
         double lever = b->rails[r].height + pivot;
         j += b->rails[r].mass_per_length * reach * lever * lever;
     }
     return j;
+}
+
+/* The mass of post p along its axis: its steel over its height and embedment and half of each rail span
+ * it holds (the footing stays in the ground as the post slides out of it). */
+static double post_mass(const cs_barrier_def *b, int p) {
+    const cs_post_def *d = &b->posts[p];
+    double mass = d->section.mass_per_length * (d->height + d->footing.depth);
+    double reach = rail_reach(b, p);
+    for (int r = 0; r < b->rail_count; r++)
+        mass += b->rails[r].mass_per_length * reach;
+    return mass;
 }
 
 cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *vehicle,
@@ -421,6 +438,8 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
             3.0 * d->section.modulus * d->section.inertia * lever * lever / (mean_z * mean_z * mean_z);
         pm->shear_cap = 0.6 * d->section.web_area * d->section.yield_stress;
         pm->pullout_cap = cs_footing_pullout_capacity(&d->footing);
+        pm->embedment = d->footing.depth;
+        pm->pull_stiffness = pm->pullout_cap / CS_SHAFT_MOBILISATION;
         pm->rot_limit = pm->soil_yields ? d->footing.rotation_limit : d->rotation_limit;
         pm->lie_angle = acos(pm->pivot / (d->height + pm->pivot));
         pm->clamped = d->attachment == CS_ATTACH_CLAMPED;
@@ -428,6 +447,7 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
         pm->release_force =
             d->release_force > 0.0 ? d->release_force : cs_attachment_release_force(d->attachment);
         pm->inertia = post_inertia(barrier, p, pm->pivot);
+        pm->pull_mass = post_mass(barrier, p);
     }
     cs_anchor_derive(&barrier->start_anchor, scenario->gravity, &m->anchors[0]);
     cs_anchor_derive(&barrier->end_anchor, scenario->gravity, &m->anchors[1]);

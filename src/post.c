@@ -32,17 +32,18 @@ void cs_post_place_nodes(const cs_model *model, cs_state *s, int p, const double
     double sn, g, c;
     cs_post_axis_terms(v2_norm(tilt[0], tilt[1]), &sn, &g, &c);
     if (axis) cs_post_axis_jacobian_from(tilt, sn, g, axis);
-    cs_work *w = s->work; /* the rails' points, kept in the workspace with the tilt they are at */
+    double pull = s->posts[p].pull;
+    cs_work *w = s->work; /* the rails' points, kept in the workspace with the tilt and pull they are at */
     if (w && model->rail_count) {
         for (int r = 0; r < model->rail_count; r++)
-            cs_post_attachment_from(model, p, tilt, sn, c, model->rails[r].z,
+            cs_post_attachment_from(model, p, tilt, pull, sn, c, model->rails[r].z,
                                     w->rail_pos + 3 * ((size_t)p * (size_t)model->rail_count + (size_t)r));
-        w->rail_tilt[2 * p] = tilt[0], w->rail_tilt[2 * p + 1] = tilt[1];
+        w->rail_tilt[3 * p] = tilt[0], w->rail_tilt[3 * p + 1] = tilt[1], w->rail_tilt[3 * p + 2] = pull;
     }
     for (int k = 0; k < model->cable_count; k++) {
         cs_cable_state *cs = &s->cables[k];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
-        if (i > 0) cs_post_attachment_from(model, p, tilt, sn, c, model->cables[k].z, cs->pos + 3 * i);
+        if (i > 0) cs_post_attachment_from(model, p, tilt, pull, sn, c, model->cables[k].z, cs->pos + 3 * i);
     }
 }
 
@@ -131,7 +132,7 @@ void cs_post_residual_at(const cs_model *model, const cs_state *s, int p, const 
         const cs_cable_state *cs = &s->cables[c];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
         if (i < 0) continue;
-        double f[3], l = model->cables[c].z + model->posts[p].pivot;
+        double f[3], l = cs_post_arm(model, s, p, model->cables[c].z);
         cs_node_force(cs, i, chords ? chords + 4 * (size_t)c * (size_t)model->max_nodes : NULL, f);
         q[0] += l * (j[0] * f[0] + j[2] * f[1] + j[4] * f[2]);
         q[1] += l * (j[1] * f[0] + j[3] * f[1] + j[5] * f[2]);
@@ -226,35 +227,25 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
         ps->shear = ps->push, ps->axial = ps->push * sin(v2_norm(ps->tilt[0], ps->tilt[1]));
         return;
     }
-    double f[3] = {0.0, 0.0, 0.0}, axis[3];
-    for (int c = 0; c < model->cable_count; c++) { /* the cables' pull on it, as solved */
-        const cs_cable_state *cs = &s->cables[c];
-        int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
-        if (i <= 0) continue;
-        double fc[3];
-        cs_node_force(cs, i, NULL, fc);
-        v3_add(f, f, fc);
-    }
+    cs_post_pull_commit(model, s, p);
     /* base shear from the post's own moment over the load height (what equilibrium allows), so a
      * step the solver left short of equilibrium cannot report a shear it never had */
     ps->shear = v2_norm(ps->moment[0], ps->moment[1]) / (pm->load_height + pm->pivot);
-    double sn, g, c;
-    cs_post_axis_terms(v2_norm(ps->tilt[0], ps->tilt[1]), &sn, &g, &c);
-    v3_set(axis, ps->tilt[0] * sn, ps->tilt[1] * sn, c); /* the unit axis a(alpha) */
-    ps->axial = v3_dot(f, axis);
+    ps->axial = cs_post_axial_pull(model, s, p); /* the ropes' and rails' pull along it, as solved */
 }
 
 double cs_post_fold_limit(const cs_post_model *pm, const cs_post_state *ps) {
     return ps->captured ? pm->rot_limit : pm->lie_angle;
 }
 
-/* Failure of a standing post: folded down to its limit (cs_post_fold_limit), base shear, pullout. Returns 1
- * if it failed. */
+/* Failure of a standing post: folded down to its limit (cs_post_fold_limit), base shear, pullout: a struck
+ * post at once at its capacity (the bogie tests'), a post the ropes pull out once it has slid all the way
+ * out (post_pullout.c; its slide starts here). Returns 1 if it failed. */
 int cs_post_check_failure(const cs_model *model, cs_state *s, int p) {
     cs_post_state *ps = &s->posts[p];
     if (!cs_post_standing(ps)) return 0;
     const cs_post_model *pm = &model->posts[p];
-    double tilt = v2_norm(ps->tilt[0], ps->tilt[1]);
+    double tilt = v2_norm(ps->tilt[0], ps->tilt[1]), cap = cs_post_pull_cap(pm, ps);
     cs_post_status st;
     cs_event_type ev;
     double value;
@@ -262,9 +253,10 @@ int cs_post_check_failure(const cs_model *model, cs_state *s, int p) {
         st = CS_POST_FAILED_ROTATION, ev = CS_EVENT_POST_ROTATION_LIMIT, value = tilt;
     } else if (ps->shear >= pm->shear_cap) {
         st = CS_POST_FAILED_SHEAR, ev = CS_EVENT_POST_SHEAR, value = ps->shear;
-    } else if (ps->axial >= pm->pullout_cap) {
+    } else if ((ps->captured && ps->axial >= cap) || (ps->withdrawing && !(cap > 0.0))) {
         st = CS_POST_FAILED_PULLOUT, ev = CS_EVENT_POST_PULLOUT, value = ps->axial;
     } else {
+        cs_post_pull_start(model, s, p);
         return 0;
     }
     ps->status = st;
@@ -278,14 +270,15 @@ double cs_post_elastic_energy(const cs_model *model, const cs_state *s, int p) {
     if (!cs_post_standing(ps)) return 0.0;
     double q[2];
     cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
-    return 0.5 * (q[0] * q[0] + q[1] * q[1]) / model->posts[p].k_rot;
+    return 0.5 * (q[0] * q[0] + q[1] * q[1]) / model->posts[p].k_rot + cs_post_pull_energy(model, s, p);
 }
 
 /* The kinetic energy of its swing, at the rate of the last commit. */
 double cs_post_kinetic_energy(const cs_model *model, const cs_state *s, int p) {
     const cs_post_state *ps = &s->posts[p];
     if (!cs_post_standing(ps)) return 0.0;
-    return 0.5 * model->posts[p].inertia * (ps->rate[0] * ps->rate[0] + ps->rate[1] * ps->rate[1]);
+    return 0.5 * model->posts[p].inertia * (ps->rate[0] * ps->rate[0] + ps->rate[1] * ps->rate[1]) +
+           cs_post_pull_kinetic_energy(model, s, p);
 }
 
 double cs_post_stored_energy(const cs_model *model, const cs_state *s, int p) {
@@ -464,7 +457,7 @@ int cs_post_capture(const cs_model *model, cs_state *s) {
         cs_post_state *ps = &s->posts[p];
         if (ps->captured || !cs_post_standing(ps)) continue;
         double top[3], rel[3], b[3];
-        cs_post_attachment(model, p, ps->tilt, zb, top);
+        cs_post_attachment(model, p, ps->tilt, ps->pull, zb, top);
         v3_sub(rel, o, top);
         double d = v3_dot(rel, f), lat = v3_dot(rel, left);
         if (d >= 0.0 && fabs(lat) <= 0.5 * v->front_width + CS_CAPTURE_MARGIN && d <= zb) {
@@ -475,7 +468,7 @@ int cs_post_capture(const cs_model *model, cs_state *s) {
         /* the post at the sides' bottom height, in the body frame */
         double zs = v->side_bottom - v->cg_height, lo[3] = {0.0, 0.0, zs}, wl[3];
         quat_rotate(wl, s->quat, lo);
-        cs_post_attachment(model, p, ps->tilt, s->pos[2] + wl[2], top);
+        cs_post_attachment(model, p, ps->tilt, ps->pull, s->pos[2] + wl[2], top);
         v3_sub(rel, top, s->pos);
         quat_unrotate(b, s->quat, rel);
         if (b[0] > -v->cg_to_rear && b[0] < v->cg_to_front - s->crush && fabs(b[1]) < 0.5 * v->front_width) {
@@ -487,7 +480,8 @@ int cs_post_capture(const cs_model *model, cs_state *s) {
 }
 
 /* ---- the post's rows of the barrier solve ----
- * Unknowns: the tilt alpha (2). Rows: Q_cables(alpha) - Q_resist(alpha) - J (alpha - alpha_c - h w_c) / h^2,
+ * Unknowns: the tilt alpha (2) (and, sliding out, the pull w: post_pullout.c, whose column the arms
+ * z + d_p + w depend on). Rows: Q_cables(alpha) - Q_resist(alpha) - J (alpha - alpha_c - h w_c) / h^2,
  * in units of the post's moment_scale (its strongest rope's strength at that rope's lever, model.c), so
  * that one tolerance is one force everywhere. */
 static void residual(const cs_model *model, const cs_state *s, const cs_rows *rows, const cs_slot *u,
@@ -509,14 +503,17 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
     for (int a = 0; a < 2; a++)
         for (int b = 0; b < 2; b++)
             cs_rows_add(rows, row + a, row + b, kr[2 * a + b] / unit);
+    int pc = rows->pull_index[p];
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
         if (i < 0) continue;
         const cs_span_grad *sp = cs_rows_spans(model, rows, c, i);
-        double l = model->cables[c].z + model->posts[p].pivot, f[3];
+        double l = cs_post_arm(model, s, p, model->cables[c].z), f[3];
         cs_node_force(cs, i, cs_rows_chords(model, rows, c), f);
         for (int a = 0; a < 2; a++) {
+            if (pc >= 0) /* the arm growing as the post slides out */
+                cs_rows_add(rows, row + a, pc, (ja[a] * f[0] + ja[2 + a] * f[1] + ja[4 + a] * f[2]) / unit);
             double rho[3] = {l * ja[a] / unit, l * ja[2 + a] / unit, l * ja[4 + a] / unit};
             double gp[3][3] = {{0}}, gm[3] = {0};
             cs_rows_force_gradient(sp, rho, gp, gm);

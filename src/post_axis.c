@@ -1,7 +1,8 @@
 /* The axis of a tilted post: a post tilts about its pivot by a rotation vector alpha = theta * u (u the
  * horizontal direction its top moves), so a point at height z (when upright) sits at
- *   pivot + (z + pivot depth) a(alpha),   a = (u sin theta, cos theta),
- * and J = da/dalpha carries a force at that point into the post's generalised moment (post.c, rail.c).
+ *   pivot + (z + pivot depth + w) a(alpha),   a = (u sin theta, cos theta),
+ * w how far it has slid out of the ground along its axis (post_pullout.c), and J = da/dalpha carries a
+ * force at that point into the post's generalised moment (post.c, rail.c).
  * Geometry only: no forces, no state; what the post and the rails both build on. */
 #include "internal.h"
 #include "vec3.h"
@@ -32,18 +33,19 @@ void cs_post_axis_terms(double t, double *s, double *g, double *c) {
     }
 }
 
-/* The point at height z (when upright) of post p at tilt alpha, s and c from cs_post_axis_terms at |alpha|:
- * pivot + (z + pivot depth) a(alpha). */
-void cs_post_attachment_from(const cs_model *model, int p, const double *tilt, double s, double c, double z,
-                             double *out) {
-    double dp = model->posts[p].pivot, l = z + dp;
+/* The point at height z (when upright) of post p at tilt alpha, slid out by w along its axis, s and c from
+ * cs_post_axis_terms at |alpha|: pivot + (z + pivot depth + w) a(alpha). */
+void cs_post_attachment_from(const cs_model *model, int p, const double *tilt, double pull, double s,
+                             double c, double z, double *out) {
+    double dp = model->posts[p].pivot, l = z + dp + pull;
     v3_set(out, model->posts[p].x + l * tilt[0] * s, l * tilt[1] * s, -dp + l * c);
 }
 
-void cs_post_attachment(const cs_model *model, int p, const double *tilt, double z, double *out) {
+void cs_post_attachment(const cs_model *model, int p, const double *tilt, double pull, double z,
+                        double *out) {
     double s, g, c;
     cs_post_axis_terms(v2_norm(tilt[0], tilt[1]), &s, &g, &c);
-    cs_post_attachment_from(model, p, tilt, s, c, z, out);
+    cs_post_attachment_from(model, p, tilt, pull, s, c, z, out);
 }
 
 /* Jacobian of the post axis a(alpha), 3 x 2, row-major, from cs_post_axis_terms' s and g at |alpha|. */
@@ -57,6 +59,12 @@ void cs_post_axis_jacobian_at(const double *al, double *j) {
     double s, g, c;
     cs_post_axis_terms(v2_norm(al[0], al[1]), &s, &g, &c);
     cs_post_axis_jacobian_from(al, s, g, j);
+}
+
+void cs_post_axis_at(const double *tilt, double *a) {
+    double s, g, c;
+    cs_post_axis_terms(v2_norm(tilt[0], tilt[1]), &s, &g, &c);
+    v3_set(a, tilt[0] * s, tilt[1] * s, c);
 }
 
 /* The axis Jacobian j (3 x 2) at a tilt and its derivatives along the two tilts,

@@ -33,15 +33,18 @@ typedef struct bar {
     int capped;
 } bar;
 
-/* Post p's point on rail r at a tilt: as placed (cs_post_place_nodes, kept in the workspace) if it is the
- * tilt placed last, else found (the same numbers: a point is a function of the tilt alone). */
+/* Post p's point on rail r at a tilt (and its pull as it stands): as placed (cs_post_place_nodes, kept in
+ * the workspace) if it is the tilt and pull placed last, else found (the same numbers: a point is a
+ * function of the tilt and pull alone). */
 static void rail_point(const cs_model *model, const cs_state *s, int r, int p, const double *tilt,
                        double *out) {
     const cs_work *w = s->work;
-    if (w && tilt[0] == w->rail_tilt[2 * p] && tilt[1] == w->rail_tilt[2 * p + 1])
+    double pull = s->posts[p].pull;
+    if (w && tilt[0] == w->rail_tilt[3 * p] && tilt[1] == w->rail_tilt[3 * p + 1] &&
+        pull == w->rail_tilt[3 * p + 2])
         v3_copy(out, w->rail_pos + 3 * ((size_t)p * (size_t)model->rail_count + (size_t)r));
     else
-        cs_post_attachment(model, p, tilt, model->rails[r].z, out);
+        cs_post_attachment(model, p, tilt, pull, model->rails[r].z, out);
 }
 
 static bar bar_at(const cs_model *model, const cs_state *s, int r, int k, const double *ta,
@@ -66,9 +69,8 @@ static bar bar_at(const cs_model *model, const cs_state *s, int r, int k, const 
 
 void cs_rail_moment(const cs_model *model, const cs_state *s, int p, const double *tilt, const double *axis,
                     double *q) {
-    double lever_base = model->posts[p].pivot;
     for (int r = 0; r < model->rail_count; r++) {
-        double lever = model->rails[r].z + lever_base;
+        double lever = cs_post_arm(model, s, p, model->rails[r].z);
         for (int side = 0; side < 2; side++) {
             int k = side == 0 ? p - 1 : p; /* the segment ending at p, the one starting there */
             if (!segment_acts(model, s, k)) continue;
@@ -91,7 +93,7 @@ void cs_rail_moments(const cs_model *model, const cs_state *s, const double *axe
             for (int side = 0; side < 2; side++) { /* post k + 1 at the span's end, post k at its start */
                 int p = side == 0 ? k + 1 : k;
                 const double *axis = axes + 18 * p;
-                double sign = side == 0 ? -1.0 : 1.0, lever = model->rails[r].z + model->posts[p].pivot;
+                double sign = side == 0 ? -1.0 : 1.0, lever = cs_post_arm(model, s, p, model->rails[r].z);
                 double *m = rails + 4 * ((size_t)p * nr + (size_t)r) + 2 * (size_t)side;
                 m[0] = sign * lever * (axis[0] * b.f[0] + axis[2] * b.f[1] + axis[4] * b.f[2]);
                 m[1] = sign * lever * (axis[1] * b.f[0] + axis[3] * b.f[1] + axis[5] * b.f[2]);
@@ -99,16 +101,34 @@ void cs_rail_moments(const cs_model *model, const cs_state *s, const double *axe
         }
 }
 
+double cs_rail_pull(const cs_model *model, const cs_state *s, int p, const double *a) {
+    double pull = 0.0;
+    for (int r = 0; r < model->rail_count; r++)
+        for (int side = 0; side < 2; side++) {
+            int k = side == 0 ? p - 1 : p;
+            if (!segment_acts(model, s, k)) continue;
+            bar b = bar_at(model, s, r, k, s->posts[k].tilt, s->posts[k + 1].tilt);
+            pull += (side == 0 ? -1.0 : 1.0) * v3_dot(b.f, a);
+        }
+    return pull;
+}
+
 /* Post p's rows (from `row`, its moment unit `unit`): the rails' moment's slope on its own tilt and on
  * its neighbours'. With G = dN/dl u u^T + N (I - u u^T) / l the derivative of N u along the chord, the
- * force on p moves by -G dP_p + G dP_o (o the other post), so with P = base + (z + d) a(alpha):
- * dQ_p/dalpha_p = -l_p^2 J_p^T G J_p + l_p dJ_p^T F_p and dQ_p/dalpha_o = l_p l_o J_p^T G J_o. */
+ * force on p moves by -G dP_p + G dP_o (o the other post), so with P = base + l a(alpha), l = z + d + w:
+ * dQ_p/dalpha_p = -l_p^2 J_p^T G J_p + l_p dJ_p^T F_p and dQ_p/dalpha_o = l_p l_o J_p^T G J_o; a post
+ * sliding out adds dQ_p/dw_p = J_p^T F_p - l_p J_p^T G a_p, dQ_p/dw_o = l_p J_p^T G a_o, and its pull's row
+ * a_p . F_p (in the force unit U) has the slopes J_p^T F_p - l_p J_p^T G a_p on alpha_p, l_o J_o^T G a_p on
+ * alpha_o, -a_p . G a_p on w_p and a_p . G a_o on w_o (G symmetric). */
 void cs_rail_jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row, int p,
                       double unit) {
     const double *ja = rows->axes + 18 * p, *dj = ja + 6;
+    int pp = rows->pull_index[p];
+    double ap[3], force_unit = cs_rows_force_unit(model);
+    cs_post_axis_at(s->posts[p].tilt, ap);
     for (int r = 0; r < model->rail_count; r++) {
         const cs_rail_model *rm = &model->rails[r];
-        double lp = rm->z + model->posts[p].pivot;
+        double lp = cs_post_arm(model, s, p, rm->z);
         for (int side = 0; side < 2; side++) {
             int k = side == 0 ? p - 1 : p, o = side == 0 ? p - 1 : p + 1;
             if (!segment_acts(model, s, k)) continue;
@@ -119,18 +139,31 @@ void cs_rail_jacobian(const cs_model *model, const cs_state *s, const cs_rows *r
                 for (int j = 0; j < 3; j++)
                     g[i][j] =
                         dn * b.u[i] * b.u[j] + (b.l > 0.0 ? b.n / b.l * ((i == j) - b.u[i] * b.u[j]) : 0.0);
-            double lo = rm->z + model->posts[o].pivot;
-            int col_o = rows->tilt_index[o];
+            double lo = cs_post_arm(model, s, o, rm->z), ao[3], gap[3], gao[3];
+            int col_o = rows->tilt_index[o], po = rows->pull_index[o];
             const double *jo = rows->axes + 18 * o; /* placed with the unknowns (only read if o is one) */
+            cs_post_axis_at(s->posts[o].tilt, ao);
+            for (int i = 0; i < 3; i++) /* G a_p and G a_o: the force's change with each pull */
+                gap[i] = g[i][0] * ap[0] + g[i][1] * ap[1] + g[i][2] * ap[2],
+                gao[i] = g[i][0] * ao[0] + g[i][1] * ao[1] + g[i][2] * ao[2];
             for (int a = 0; a < 2; a++) {
                 double gj[3]; /* G J_p e_a, the force's change with p's own tilt (less its sign) */
                 for (int i = 0; i < 3; i++)
                     gj[i] = g[i][0] * ja[a] + g[i][1] * ja[2 + a] + g[i][2] * ja[4 + a];
+                double jf = ja[a] * f[0] + ja[2 + a] * f[1] + ja[4 + a] * f[2];
                 for (int m = 0; m < 2; m++) {
                     double jtg = ja[m] * gj[0] + ja[2 + m] * gj[1] + ja[4 + m] * gj[2];
                     double turn = dj[6 * a + m] * f[0] + dj[6 * a + 2 + m] * f[1] + dj[6 * a + 4 + m] * f[2];
                     cs_rows_add(rows, row + m, row + a, (-lp * lp * jtg + lp * turn) / unit);
                 }
+                if (pp >= 0) { /* p sliding out: its pull's row on its tilt, its tilt's rows on its pull */
+                    cs_rows_add(rows, pp, row + a, (jf - lp * v3_dot(ap, gj)) / force_unit);
+                    cs_rows_add(rows, row + a, pp,
+                                (jf - lp * v3_dot(gap, (double[3]){ja[a], ja[2 + a], ja[4 + a]})) / unit);
+                }
+                if (po >= 0)
+                    cs_rows_add(rows, row + a, po,
+                                lp * (ja[a] * gao[0] + ja[2 + a] * gao[1] + ja[4 + a] * gao[2]) / unit);
                 if (col_o < 0) continue;
                 double go[3];
                 for (int i = 0; i < 3; i++)
@@ -138,7 +171,11 @@ void cs_rail_jacobian(const cs_model *model, const cs_state *s, const cs_rows *r
                 for (int m = 0; m < 2; m++)
                     cs_rows_add(rows, row + m, col_o + a,
                                 lp * lo * (ja[m] * go[0] + ja[2 + m] * go[1] + ja[4 + m] * go[2]) / unit);
+                if (pp >= 0) cs_rows_add(rows, pp, col_o + a, lo * v3_dot(ap, go) / force_unit);
             }
+            if (pp < 0) continue;
+            cs_rows_add(rows, pp, pp, -v3_dot(ap, gap) / force_unit);
+            if (po >= 0) cs_rows_add(rows, pp, po, v3_dot(ap, gao) / force_unit);
         }
     }
 }

@@ -13,18 +13,21 @@ typedef struct dep {
 } dep;
 
 /* The columns that move node j of cable c other than the crush (whose column is a difference quotient,
- * system.c): a post's two tilts (the attachment's arm times the axis' Jacobian), a contact's height (the
- * body's z axis). */
+ * system.c): a post's two tilts (the attachment's arm times the axis' Jacobian) and its pull (the axis),
+ * a contact's height (the body's z axis). */
 static int position_columns(const cs_model *model, const cs_state *s, const cs_rows *rows, int c, int j,
                             dep *out) {
     const cs_cable_state *cs = &s->cables[c];
     int id = cs->node[j];
     if (id >= 0 && rows->tilt_index[id] >= 0) {
         const double *ja = rows->axes + 18 * id;
-        double l = model->cables[c].z + model->posts[id].pivot;
+        double l = cs_post_arm(model, s, id, model->cables[c].z);
         for (int k = 0; k < 2; k++)
             out[k] = (dep){rows->tilt_index[id] + k, {l * ja[k], l * ja[2 + k], l * ja[4 + k]}};
-        return 2;
+        if (rows->pull_index[id] < 0) return 2;
+        out[2].col = rows->pull_index[id];
+        cs_post_axis_at(s->posts[id].tilt, out[2].v);
+        return 3;
     }
     if (id == CS_NODE_START || id == CS_NODE_END) {
         int a = rows->anchor_index[id == CS_NODE_START ? 0 : 1];
@@ -48,7 +51,7 @@ void cs_rows_add_node_gradient(const cs_model *model, const cs_state *s, const c
     for (int k = 0; k < 3; k++) {
         int j = i - 1 + k;
         if (j < 0 || j >= s->cables[c].node_count) continue;
-        dep d[2];
+        dep d[3];
         int count = position_columns(model, s, rows, c, j, d);
         for (int q = 0; q < count; q++)
             cs_rows_add(rows, row, d[q].col, v3_dot(gp[k], d[q].v));

@@ -18,6 +18,7 @@ typedef enum cs_unknown_kind {
     CS_U_CRUSH = 2,  /* the crush of the vehicle's face */
     CS_U_HEIGHT = 3, /* the height of cable a's contact at corner b of the outline (CS_CORNERS) */
     CS_U_ANCHOR = 4, /* anchor a's horizontal displacement (2 slots: b = 0, 1) */
+    CS_U_PULL = 5,   /* how far post a has slid out of its footing along its axis (post_pullout.c) */
     CS_U_KIND_COUNT
 } cs_unknown_kind;
 
@@ -33,6 +34,7 @@ typedef struct cs_rows {
     int n;
     cs_slot *slots;
     int *tilt_index;     /* [post_count] a post's first tilt column, -1 if none */
+    int *pull_index;     /* [post_count] a post's pull column, -1 if none */
     int *node_index;     /* [cable_count * max_nodes] a node's material column, -1 if none */
     int *height_index;   /* [cable_count * CS_CORNERS] a contact's height column, -1 if none */
     int crush_index;     /* -1 if none */
@@ -59,6 +61,16 @@ extern const cs_row_kind cs_support_rows; /* support.c */
 extern const cs_row_kind cs_height_rows;  /* contact.c */
 extern const cs_row_kind cs_crush_rows;   /* contact.c */
 extern const cs_row_kind cs_anchor_rows;  /* anchor.c */
+extern const cs_row_kind cs_pull_rows;    /* post_pullout.c */
+
+/* The force unit of the rows that balance forces (supports, anchors, a post's pull): the strongest rope's
+ * strength, so that one tolerance is one force everywhere. */
+static inline double cs_rows_force_unit(const cs_model *model) {
+    double u = 0.0;
+    for (int c = 0; c < model->cable_count; c++)
+        u = u > model->cables[c].rope.fu ? u : model->cables[c].rope.fu;
+    return u > 0.0 ? u : 1.0;
+}
 
 static inline const double *cs_rows_chords(const cs_model *model, const cs_rows *rows, int c) {
     return rows->chords + 4 * (size_t)c * (size_t)model->max_nodes;
@@ -91,7 +103,8 @@ double cs_termination_slip_residual(const cs_model *model, const cs_state *s, co
 void cs_termination_slip_jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row,
                                   int c, int i);
 
-/* The rails' share of post p's rows (rail.c), in its moment unit. */
+/* The rails' share of post p's rows (rail.c): its tilts' in its moment unit, and its pull's (if it slides
+ * out) in the force unit. */
 void cs_rail_jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row, int p,
                       double unit);
 

@@ -38,7 +38,7 @@ static int allocate(const cs_model *model, cs_state *s, int with_workspace) {
     if (!s->events || !s->speed_ring || !s->loss_ring || !s->work) return -1;
     cs_work *w = s->work;
     w->rail_pos = calloc((size_t)model->rail_count * (size_t)np * 3 + 1, sizeof *w->rail_pos);
-    w->rail_tilt = calloc((size_t)np * 2 + 1, sizeof *w->rail_tilt);
+    w->rail_tilt = calloc((size_t)np * 3 + 1, sizeof *w->rail_tilt);
     if (!w->rail_pos || !w->rail_tilt) return -1;
     for (int k = 0; k < CS_PATH_LEVELS; k++) {
         w->step_start[k] = calloc(1, sizeof *w->step_start[k]);
@@ -277,8 +277,9 @@ void cs_state_post(const cs_model *model, const cs_state *s, int p, cs_post_view
     out->base_moment = hypot(ps->moment[0], ps->moment[1]);
     out->base_shear = ps->shear;
     out->axial_pull = ps->axial;
+    out->withdrawal = ps->withdrawing ? ps->pull : 0.0;
     out->moment_capacity = pm->moment_cap;
-    cs_post_attachment(model, p, ps->tilt, pm->height, out->top);
+    cs_post_attachment(model, p, ps->tilt, ps->pull, pm->height, out->top);
 }
 
 unsigned long long cs_fnv1a64(unsigned long long h, const void *data, size_t n) {
@@ -293,9 +294,9 @@ static void hash_bytes(unsigned long long *h, const void *data, size_t n) {
 }
 
 /* FNV-1a over the bytes of every number that evolves: the vehicle, each cable's path, plastic strain,
- * status, engagement and face contacts, each post's tilt, plastic rotation, swing rate, status and what
- * pushes a struck one, the rails, each anchor's movement, its rate and acceleration and status, the
- * ledger and the events (field by field: no struct padding). */
+ * status, engagement and face contacts, each post's tilt, plastic rotation, swing rate, status, what
+ * pushes a struck one and its slide out of its footing, the rails, each anchor's movement, its rate and
+ * acceleration and status, the ledger and the events (field by field: no struct padding). */
 unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
     unsigned long long h = CS_FNV1A64_BASIS;
     hash_bytes(&h, &s->t, sizeof s->t);
@@ -317,8 +318,11 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
     }
     for (int p = 0; p < model->post_count; p++) {
         const cs_post_state *ps = &s->posts[p];
-        int flags[5] = {(int)ps->status, ps->yielded, ps->captured, ps->pusher, ps->bearing};
+        int flags[6] = {(int)ps->status, ps->yielded, ps->captured, ps->pusher, ps->bearing, ps->withdrawing};
         hash_bytes(&h, flags, sizeof flags);
+        hash_bytes(&h, &ps->pull, sizeof ps->pull);
+        hash_bytes(&h, &ps->pull_plastic, sizeof ps->pull_plastic);
+        hash_bytes(&h, &ps->pull_rate, sizeof ps->pull_rate);
         hash_bytes(&h, ps->tilt, sizeof ps->tilt);
         hash_bytes(&h, ps->plastic, sizeof ps->plastic);
         hash_bytes(&h, ps->rate, sizeof ps->rate);

@@ -1,6 +1,7 @@
 /* The barrier's quasi-static equilibrium as one nonlinear system (system.h), solved by Newton (newton.c).
  *
- * Unknowns: the tilt (2) of every standing post on a cable path, the material coordinate m of every
+ * Unknowns: the tilt (2) of every standing post on a cable path (and its pull, if it slides out of its
+ * footing: post_pullout.c), the material coordinate m of every
  * support node the rope can slide through (posts that do not clamp, face corners) and of every rope end
  * that can slip through its fitting, each engaged contact's height on the face, the crush, and each
  * yielding anchor's slide (2). Each kind of element gives its rows (rows.h): post.c, support.c (with
@@ -18,25 +19,26 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const cs_row_kind *const kinds[CS_U_KIND_COUNT] = {&cs_post_rows, &cs_support_rows, &cs_crush_rows,
-                                                          &cs_height_rows, &cs_anchor_rows};
+static const cs_row_kind *const kinds[CS_U_KIND_COUNT] = {&cs_post_rows,   &cs_support_rows, &cs_crush_rows,
+                                                          &cs_height_rows, &cs_anchor_rows,  &cs_pull_rows};
 
 static int node_slides(const cs_model *model, const cs_cable_state *cs, int i) {
     int id = cs->node[i];
     return cs_node_is_corner(id) || (id >= 0 && !model->posts[id].clamped);
 }
 
-/* Storage for every unknown the model can have: two per post, one per rope node, a contact per corner
+/* Storage for every unknown the model can have: three per post, one per rope node, a contact per corner
  * and cable, the crush and the anchors'. The band holds rows of up to 2 kl + ku + 1 entries; a post has
  * 2 + cables unknowns, and the vehicle adds its corners per cable and the crush, so this covers
  * neighbouring slots with room. */
 int cs_system_init(const cs_model *model, cs_system *sys) {
     memset(sys, 0, sizeof *sys);
     size_t nc = (size_t)model->cable_count, np = (size_t)model->post_count, nn = (size_t)model->max_nodes;
-    size_t n = 2 * np + nc * nn + CS_CORNERS * nc + 5, per_row = 3 * (12 + 12 * nc) + 1;
+    size_t n = 3 * np + nc * nn + CS_CORNERS * nc + 5, per_row = 3 * (12 + 12 * nc) + 1;
     cs_rows *rw = &sys->rows;
     rw->slots = calloc(n, sizeof *rw->slots);
     rw->tilt_index = calloc(np ? np : 1, sizeof *rw->tilt_index);
+    rw->pull_index = calloc(np ? np : 1, sizeof *rw->pull_index);
     rw->node_index = calloc(nc ? nc * nn : 1, sizeof *rw->node_index);
     rw->height_index = calloc(nc ? CS_CORNERS * nc : 1, sizeof *rw->height_index);
     rw->spans = calloc(nc * nn + 1, sizeof *rw->spans);
@@ -51,12 +53,13 @@ int cs_system_init(const cs_model *model, cs_system *sys) {
     sys->slots_bw = calloc(n, sizeof *sys->slots_bw);
     sys->nodes_bw = calloc(nc * (nn + 1) + 1, sizeof *sys->nodes_bw);
     sys->scratch = calloc(n, sizeof *sys->scratch);
-    sys->key_count = 2 * np + nc * (np + CS_CORNERS + 2) + CS_CORNERS * nc + 5; /* see slot_key */
+    sys->key_count = 3 * np + nc * (np + CS_CORNERS + 2) + CS_CORNERS * nc + 5; /* see slot_key */
     sys->last = calloc(sys->key_count, sizeof *sys->last);
     sys->last_step = calloc(sys->key_count, sizeof *sys->last_step);
-    if (!rw->slots || !rw->tilt_index || !rw->node_index || !rw->height_index || !rw->spans || !rw->chords ||
-        !rw->axes || !rw->rails || !sys->slots_kept || !sys->gathered || !sys->order || !sys->kept ||
-        !sys->slots_lu || !sys->slots_bw || !sys->nodes_bw || !sys->scratch || !sys->last || !sys->last_step)
+    if (!rw->slots || !rw->tilt_index || !rw->pull_index || !rw->node_index || !rw->height_index ||
+        !rw->spans || !rw->chords || !rw->axes || !rw->rails || !sys->slots_kept || !sys->gathered ||
+        !sys->order || !sys->kept || !sys->slots_lu || !sys->slots_bw || !sys->nodes_bw || !sys->scratch ||
+        !sys->last || !sys->last_step)
         return -1;
     if (cs_newton_init(&sys->newton, (int)n, n * per_row) != 0) return -1;
     rw->jac = &sys->newton.band;
@@ -65,8 +68,8 @@ int cs_system_init(const cs_model *model, cs_system *sys) {
 
 void cs_system_free(cs_system *sys) {
     cs_rows *rw = &sys->rows;
-    free(rw->slots), free(rw->tilt_index), free(rw->node_index), free(rw->height_index), free(rw->spans),
-        free(rw->chords), free(rw->axes), free(rw->rails);
+    free(rw->slots), free(rw->tilt_index), free(rw->pull_index), free(rw->node_index), free(rw->height_index),
+        free(rw->spans), free(rw->chords), free(rw->axes), free(rw->rails);
     free(sys->slots_kept), free(sys->gathered), free(sys->order), free(sys->kept), free(sys->slots_lu),
         free(sys->slots_bw), free(sys->nodes_bw), free(sys->scratch), free(sys->last), free(sys->last_step);
     cs_newton_free(&sys->newton);
@@ -137,6 +140,7 @@ static int assemble(const cs_model *model, const cs_state *s, cs_system *sys) {
         if (!post_on_path(model, s, p)) continue;
         sl[n++] = (cs_slot){model->posts[p].x, CS_U_TILT, p, 0, 0};
         sl[n++] = (cs_slot){model->posts[p].x, CS_U_TILT, p, 1, 0};
+        if (s->posts[p].withdrawing) sl[n++] = (cs_slot){model->posts[p].x, CS_U_PULL, p, 0, 0};
     }
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
@@ -163,7 +167,7 @@ static int assemble(const cs_model *model, const cs_state *s, cs_system *sys) {
     sort_unknowns(sys, n);
     /* index maps: tilt of post p, node i of cable c, crush */
     for (int p = 0; p < model->post_count; p++)
-        w->tilt_index[p] = -1;
+        w->tilt_index[p] = w->pull_index[p] = -1;
     for (int c = 0; c < model->cable_count; c++)
         for (int i = 0; i < model->max_nodes; i++)
             w->node_index[c * model->max_nodes + i] = -1;
@@ -174,6 +178,7 @@ static int assemble(const cs_model *model, const cs_state *s, cs_system *sys) {
     for (int k = 0; k < n; k++) {
         if (sl[k].kind == CS_U_HEIGHT) w->height_index[CS_CORNERS * sl[k].a + sl[k].b] = k;
         if (sl[k].kind == CS_U_TILT && sl[k].b == 0) w->tilt_index[sl[k].a] = k;
+        if (sl[k].kind == CS_U_PULL) w->pull_index[sl[k].a] = k;
         if (sl[k].kind == CS_U_NODE) w->node_index[sl[k].a * model->max_nodes + sl[k].b] = k;
         if (sl[k].kind == CS_U_CRUSH) w->crush_index = k;
         if (sl[k].kind == CS_U_ANCHOR && sl[k].b == 0) w->anchor_index[sl[k].a] = k;
@@ -189,9 +194,19 @@ static void widen(int k, int *lo, int *hi) {
     if (k > *hi) *hi = k;
 }
 
+/* A post's columns: its two tilts and its pull. */
+static void post_columns(const cs_rows *w, int p, int *lo, int *hi) {
+    int t = w->tilt_index[p];
+    if (t >= 0) widen(t, lo, hi), widen(t + 1, lo, hi);
+    widen(w->pull_index[p], lo, hi);
+}
+
 static void position_deps(const cs_rows *w, const cs_cable_state *cs, int c, int i, int *lo, int *hi) {
     int id = cs->node[i], k = -1;
-    if (id >= 0 && w->tilt_index[id] >= 0) k = w->tilt_index[id];
+    if (id >= 0) {
+        post_columns(w, id, lo, hi);
+        return;
+    }
     if (cs_node_is_corner(id)) {
         widen(w->height_index[CS_CORNERS * c + cs_node_corner(id)], lo, hi);
         k = w->crush_index;
@@ -199,7 +214,7 @@ static void position_deps(const cs_rows *w, const cs_cable_state *cs, int c, int
     int anchor = id == CS_NODE_START || id == CS_NODE_END;
     if (anchor) k = w->anchor_index[id == CS_NODE_START ? 0 : 1];
     if (k < 0) return;
-    int k2 = (id >= 0 || anchor) ? k + 1 : k; /* a post's and an anchor's two columns */
+    int k2 = anchor ? k + 1 : k; /* an anchor's two columns */
     if (k < *lo) *lo = k;
     if (k2 > *hi) *hi = k2;
 }
@@ -229,7 +244,7 @@ static void bandwidth(const cs_model *model, const cs_state *s, const cs_rows *w
         } else if (u->kind == CS_U_HEIGHT) {
             neighbourhood(model, w, &s->cables[u->a], u->a,
                           cs_cable_find_node(&s->cables[u->a], cs_corner_node(u->b)), &lo, &hi);
-        } else if (u->kind == CS_U_TILT) {
+        } else if (u->kind == CS_U_TILT || u->kind == CS_U_PULL) {
             for (int c = 0; c < model->cable_count; c++) {
                 const cs_cable_state *cs = &s->cables[c];
                 if (cs->status == CS_CABLE_INTACT && cs->where[u->a] > 0)
@@ -237,12 +252,9 @@ static void bandwidth(const cs_model *model, const cs_state *s, const cs_rows *w
             }
             int left, right; /* the neighbours its rails tie it to */
             if (cs_rail_ties(model, s, u->a, &left, &right))
-                for (int side = 0; side < 2; side++) {
-                    int o = side ? right : left, t = o >= 0 ? w->tilt_index[o] : -1;
-                    if (t >= 0) widen(t, &lo, &hi), widen(t + 1, &lo, &hi);
-                }
-            hi = hi > k + 1 ? hi : k + 1;
-            lo = lo < k - 1 ? lo : k - 1;
+                for (int side = 0; side < 2; side++)
+                    if ((side ? right : left) >= 0) post_columns(w, side ? right : left, &lo, &hi);
+            post_columns(w, u->a, &lo, &hi); /* its own: a post's rows come together */
         } else if (u->kind == CS_U_ANCHOR) {
             for (int c = 0; c < model->cable_count; c++) {
                 const cs_cable_state *cs = &s->cables[c];
@@ -304,6 +316,7 @@ static void gather(const cs_state *s, const cs_rows *w, int n, double *x) {
         if (u->kind == CS_U_CRUSH) x[k] = s->crush;
         if (u->kind == CS_U_HEIGHT) x[k] = s->cables[u->a].corner_z[u->b];
         if (u->kind == CS_U_ANCHOR) x[k] = s->anchors[u->a].u[u->b];
+        if (u->kind == CS_U_PULL) x[k] = s->posts[u->a].pull;
     }
 }
 
@@ -316,6 +329,7 @@ static void scatter(const cs_model *model, cs_state *s, const cs_rows *w, int n,
         if (u->kind == CS_U_CRUSH) s->crush = x[k];
         if (u->kind == CS_U_HEIGHT) s->cables[u->a].corner_z[u->b] = x[k];
         if (u->kind == CS_U_ANCHOR) s->anchors[u->a].u[u->b] = x[k];
+        if (u->kind == CS_U_PULL) s->posts[u->a].pull = x[k];
     }
     for (int a = 0; a < 2; a++)
         if (w->anchor_index[a] >= 0) cs_anchor_place_nodes(model, s, a);
@@ -396,13 +410,14 @@ static void jacobian_at(const cs_model *model, cs_state *s, cs_system *sys, cons
 }
 
 /* Largest fraction of a Newton step that keeps every span's rope at least half of what it has, turns
- * no post by more than 0.1 rad and moves the crush, a contact or an anchor by at most 5 cm. */
+ * no post by more than 0.1 rad and moves the crush, a contact, an anchor or a post's pull by at most 5 cm. */
 static double max_step(const cs_model *model, const cs_state *s, const cs_rows *w, const double *dx) {
     double t = 1.0;
     for (int k = 0; k < w->n; k++) {
         const cs_slot *u = &w->slots[k];
         if (u->kind == CS_U_TILT && fabs(dx[k]) * t > 0.1) t = 0.1 / fabs(dx[k]);
-        if ((u->kind == CS_U_CRUSH || u->kind == CS_U_HEIGHT || u->kind == CS_U_ANCHOR) &&
+        if ((u->kind == CS_U_CRUSH || u->kind == CS_U_HEIGHT || u->kind == CS_U_ANCHOR ||
+             u->kind == CS_U_PULL) &&
             fabs(dx[k]) * t > 0.05)
             t = 0.05 / fabs(dx[k]);
     }
@@ -449,9 +464,10 @@ static size_t slot_key(const cs_model *model, const cs_state *s, const cs_slot *
                                             : np + CS_CORNERS + (id == CS_NODE_END); /* an end fitting */
         return 2 * np + (size_t)u->a * (np + CS_CORNERS + 2) + at;
     }
-    size_t past = 2 * np + nc * (np + CS_CORNERS + 2); /* heights, the crush, anchors */
+    size_t past = 2 * np + nc * (np + CS_CORNERS + 2); /* heights, the crush, anchors, pulls */
     if (u->kind == CS_U_HEIGHT) return past + CS_CORNERS * (size_t)u->a + (size_t)u->b;
     if (u->kind == CS_U_ANCHOR) return past + CS_CORNERS * nc + 1 + 2 * (size_t)u->a + (size_t)u->b;
+    if (u->kind == CS_U_PULL) return past + CS_CORNERS * nc + 5 + (size_t)u->a;
     return past + CS_CORNERS * nc;
 }
 

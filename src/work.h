@@ -18,7 +18,7 @@ struct cs_work {
                               * committed at the last level, J (step.c) */
     double solver_residual;  /* largest residual of the solves the step committed */
     double *rail_pos;  /* [post_count * rail_count * 3] each post's rail points where it was last placed */
-    double *rail_tilt; /* [post_count * 2] the tilt they were placed at (NaN: none yet) */
+    double *rail_tilt; /* [post_count * 3] the tilt and pull they were placed at (NaN: none yet) */
     struct {
         long solves;     /* barrier solves at a pose */
         long fallback;   /* of them, those that needed the fallback's sweeps (relax.c) */

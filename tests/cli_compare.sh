@@ -37,6 +37,19 @@ check "outcomes in the table" 'grep -q "^outcome,,breakthrough,breakthrough," "$
 check "the page has the table and five plots" \
     '[ "$(grep -o "<svg" "$tmp/cmp/compare.html" | wc -l)" -eq 5 ] && grep -q "<table>" "$tmp/cmp/compare.html"'
 check "five PNG and five SVG plots" '[ "$(ls "$tmp/cmp/plots" | grep -c "^compare-.*\.png$")" -eq 5 ] && [ "$(ls "$tmp/cmp/plots" | grep -c "^compare-.*\.svg$")" -eq 5 ]'
+# Validation metrics (NCHRP W179): run a against itself gives M = P = 0; against its own speed divided by
+# 1.1 (at the same times) the run's speed is 1.1 times the measured one: M = 0.1, P = 0
+m="$tmp/cmp/metrics.csv"
+metric() { awk -F, -v r="$2" -v c="$3" '$2 == r && $1 ~ /\/a"?$/ { print $c }' "$1"; }
+check "metrics.csv: run a's speed against itself, M and P 0" \
+    'awk -v M="$(metric "$m" speed 4)" -v P="$(metric "$m" speed 5)" "BEGIN { exit !(M != \"\" && M < 1e-6 && M > -1e-6 && P < 1e-3) }" && [ "$(metric "$m" speed 9)" = pass ]'
+check "the terminal and the page give the metrics" 'grep -qE "^validation metrics \(NCHRP W179\)" <<<"$out" && grep -q "<h2>Validation metrics (NCHRP W179)</h2>" "$tmp/cmp/compare.html"'
+awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) c[$i] = i; print "time [s],speed [m/s]"; next }
+         { printf "%.9f,%.12g\n", $c["t_s"], $c["forward_speed_mps"] / 1.1 }' "$tmp/a/timeseries.csv" >"$tmp/slow.csv"
+"$cs" compare "$tmp/a" --measured "$tmp/slow.csv" -o "$tmp/cmp11" >/dev/null 2>&1
+check "run a against its speed / 1.1: Sprague-Geers M = 0.1, P = 0" \
+    'awk -v M="$(metric "$tmp/cmp11/metrics.csv" speed 4)" -v P="$(metric "$tmp/cmp11/metrics.csv" speed 5)" "BEGIN { exit !(M != \"\" && M - 0.1 < 1e-6 && 0.1 - M < 1e-6 && P < 1e-3) }"'
+
 # bad input
 printf 'time [s],speed [kg]\n0,1\n0.001,1\n' >"$tmp/badunit.csv"
 out=$("$cs" compare "$tmp/a" --measured "$tmp/badunit.csv" -o "$tmp/bad1" 2>&1)

@@ -22,6 +22,16 @@ for f in examples/*.yaml; do
     check "check $f" '"$cs" check "$f" >/dev/null'
 done
 check "check --set" '"$cs" check examples/aps3.yaml --set scenario.speed="35 mph" --set "barrier.cables[0].pretension=8 kip" >/dev/null'
+# A shallow angle: at 3 deg the face's centre at APS3's impact point puts its leading corner on the cable
+# line 22.93 m (1.2 m / sin 3 deg) before it, outside the barrier: refused, not run as a ride over ropes it
+# never met; with impact_at: corner the corner strikes there and the ropes take the vehicle (a glancing
+# contact: the face pushes the line out and the ropes do work on it).
+"$cs" run examples/aps3.yaml -o "$tmp/shallow" --set "scenario.angle=3 deg" >/dev/null 2>"$tmp/stderr"
+check "a vehicle that would pass the barrier's end is refused (status 2), where and why" \
+    '[ $? -eq 2 ] && grep -q "at 3 deg the vehicle.s leading front corner meets the cable line at x = -2.20 m" "$tmp/stderr" && [ ! -e "$tmp/shallow" ]'
+"$cs" run examples/aps3.yaml -o "$tmp/shallow" --t-end "0.3 s" --set "scenario.angle=3 deg" --set scenario.impact_at=corner >"$tmp/stdout" 2>&1
+check "at 3 deg to the corner the ropes take the vehicle" \
+    'grep -oE "\"max_barrier_deflection_m\":[0-9.]+" "$tmp/shallow/summary.json" | awk -F: "{ exit !(\$2 > 0.1) }"'
 
 out="$tmp/aps3"
 "$cs" run examples/aps3.yaml -o "$out" --t-end "20 ms" --set scenario.speed="35 mph" >"$tmp/stdout" 2>"$tmp/stderr"
@@ -147,6 +157,26 @@ check "breakthrough: the $hinges post hinges counted, not listed" '[ "$hinges" -
 "$cs" run examples/aps3.yaml -o "$tmp/stops" --set vehicle=PU --set "scenario.speed=50 mph" >"$tmp/stops.out" 2>&1
 j="$tmp/stops/summary.json"
 check "stopped: its penetration given" 'grep -q "\"outcome\":\"stopped\"" "$j" && grep -qE "\"max_dynamic_penetration_m\":[0-9]" "$j" && grep -q "\"penetration_beyond_m\":null," "$j" && grep -qE "^  max penetration      [0-9.]+ m" "$tmp/stops.out"'
+
+# A roadside run (RS1, NCHRP 350 test 3-11's pickup at 25.7 deg): its occupant risk with units, its roll
+# and pitch peaks, and the criteria of the test it stands for, in summary.json and the terminal.
+out=$("$cs" run examples/roadside/rs1.yaml -o "$tmp/rs1" 2>&1)
+j="$tmp/rs1/summary.json"
+check "rs1: summary.json's occupant risk with units" 'grep -qE "\"occupant_risk\":\{\"basis\":\"[^\"]*CFC 180[^\"]*\",\"point_m\":\[0,0,0\],\"occupant_impact\":\"in_run\",\"occupant_impact_time_s\":[0-9.e-]+,\"oiv_longitudinal_mps\":[0-9.e-]+,\"oiv_lateral_mps\":[0-9.e-]+,\"ora_longitudinal_g\":[0-9.e-]+,\"ora_lateral_g\":[0-9.e-]+,\"head_impact\":\"in_run\",\"thiv_time_s\":[0-9.e-]+,\"thiv_mps\":[0-9.e-]+,\"thiv_kmh\":[0-9.e-]+,\"phd_g\":[0-9.e-]+,\"asi\":[0-9.e-]+,\"asi_time_s\":[0-9.e-]+\},\"max_roll_deg\":[0-9.e-]+,\"max_pitch_deg\":[0-9.e-]+" "$j"'
+check "rs1: the criteria of NCHRP 350 3-11 as run" 'grep -qE "\"roadside_criteria\":\{\"standard\":\"nchrp-350\",\"test\":\"3-11\",\"criteria\":\[\{\"id\":\"A\"" "$j" && grep -qE "\"id\":\"D\",[^}]*\"verdict\":\"not judged\"" "$j"'
+check "rs1: the terminal's occupant risk and criteria" 'grep -qE "^  occupant impact      [0-9.]+ s after first contact: OIV [0-9.]+ m/s \([0-9.]+ ft/s\) longitudinal" <<<"$out" && grep -qE "^  EN 1317-1            THIV [0-9.]+ km/h \([0-9.]+ m/s\), PHD [0-9.]+ g, ASI [0-9.]+$" <<<"$out" && grep -qE "^  criteria \(as run\)    nchrp-350 3-11: A (pass|FAIL), D not judged," <<<"$out"'
+# --occupant-at: the CG named as a point gives the CG's numbers; another point is written with them; a
+# bad point is refused with the reason
+"$cs" run examples/roadside/rs1.yaml -o "$tmp/rs1cg" --occupant-at "0 m,0 m,0 m" >/dev/null 2>&1
+oiv() { grep -oE "\"oiv_longitudinal_mps\":[0-9.e-]+,\"oiv_lateral_mps\":[0-9.e-]+,\"ora_longitudinal_g\":[0-9.e-]+" "$1"; }
+check "--occupant-at the CG: the CG's occupant risk" '[ -n "$(oiv "$j")" ] && [ "$(oiv "$j")" = "$(oiv "$tmp/rs1cg/summary.json")" ] && grep -qF "\"point_m\":[0,0,0]" "$tmp/rs1cg/summary.json"'
+out=$("$cs" run examples/roadside/rs1.yaml -o "$tmp/rs1p" --occupant-at "30 cm,0.4 m,0.2" 2>&1)
+check "--occupant-at a point: written with its place" 'grep -qF "\"point_m\":[0.3,0.4,0.2]" "$tmp/rs1p/summary.json" && grep -qE "^  occupant risk at     x 0.300 m, y 0.400 m, z 0.200 m from the CG" <<<"$out"'
+out=$("$cs" run examples/roadside/rs1.yaml -o "$tmp/rs1bad" --occupant-at "0.3 m,1 kg,0" 2>&1)
+check "--occupant-at with a mass: exit 2, the reason" '[ $? -eq 2 ] && grep -qF "cablesim run: --occupant-at 0.3 m,1 kg,0: " <<<"$out" && grep -q "not of length" <<<"$out" && [ ! -e "$tmp/rs1bad" ]'
+out=$("$cs" run examples/roadside/rs1.yaml -o "$tmp/rs1bad" --occupant-at "0.3 m,1 m" 2>&1)
+check "--occupant-at with two lengths: exit 2, the reason" '[ $? -eq 2 ] && grep -qF "three lengths are needed" <<<"$out"'
+check "aps3 (head-on, the 15,000-lb truck): no roadside criteria" 'grep -q "\"roadside_criteria\":null" "$tmp/aps3/summary.json"'
 
 # Runs that end: an output interval below the step (1e-30 s never moved the next frame on) or past 10
 # million frames is refused at its place; scenario.max_steps ends a run "step_limit" (tests/test_crash.c:

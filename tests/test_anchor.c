@@ -98,7 +98,9 @@ static void pretension_beyond_the_anchor_pulls_it_in(void **state) {
 /* The truck of APS3 drags its dead-men through the soil: they yield at P and plough on, their resistance
  * falling to the residual P_r over the softening slide s_r and held there; nothing lifts them out. The
  * soil's work is the integral of that resistance along each plastic slide l, (P + P_r) s_r / 2 + P_r (l -
- * s_r), to round-off, and the ledger closes within 1%. */
+ * s_r), plus that of each post sliding out of its footing (its shaft's Q0 (1 - w / D)^2 over its slide w
+ * from the capacity's mobilisation, Q0 D (1 - x^3) / 3, post_pullout.c), to round-off, and the ledger
+ * closes within 1%. */
 static void truck_drags_the_dead_men_through_the_soil(void **state) {
     (void)state;
     fixture fx;
@@ -119,6 +121,12 @@ static void truck_drags_the_dead_men_through_the_soil(void **state) {
         assert_true(slide[a] >= hypot(s->anchors[a].plastic[0], s->anchors[a].plastic[1]));
         assert_true(slide[a] > soft);
         work += 0.5 * (p + pr) * soft + pr * (slide[a] - soft);
+    }
+    for (int q = 0; q < m->post_count; q++) { /* a post sliding out: its shaft's cap Q0 x^2 over its slide */
+        const cs_post_model *pm = &m->posts[q];
+        if (!s->posts[q].withdrawing) continue;
+        double x = 1.0 - (s->posts[q].pull_plastic + pm->pullout_cap / pm->pull_stiffness) / pm->embedment;
+        work += pm->pullout_cap * pm->embedment * (1.0 - pow(fmax(x, 0.0), 3.0)) / 3.0;
     }
     for (int k = 0; k < cs_state_event_count(s); k++) {
         const cs_event *e = cs_state_event(s, k);

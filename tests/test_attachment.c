@@ -36,7 +36,7 @@ static double lean_and_pull(const cs_model *m, cs_state *s, double theta, int c,
     s->posts[0].tilt[0] = 0.0, s->posts[0].tilt[1] = theta;
     cs_cable_state *cs = &s->cables[c];
     int i = cs->where[0];
-    cs_post_attachment(m, 0, s->posts[0].tilt, m->cables[c].z, cs->pos + 3 * i);
+    cs_post_attachment(m, 0, s->posts[0].tilt, 0.0, m->cables[c].z, cs->pos + 3 * i);
     for (int k = -1; k <= 1; k += 2) {
         double *q = cs->pos + 3 * (i + k);
         v3_set(q, cs->pos[3 * i] + 10.0 * k, cs->pos[3 * i + 1] + 5.0, cs->pos[3 * i + 2]);

@@ -7,6 +7,8 @@
  *   change of prediction is a visible change of that file (APS3 and APS4 stay blind: these are the
  *   model's predictions, not test results).
  * Rewrite both with CS_PIN_UPDATE=1 build/test_io_crash_tests (it prints what to store).
+ * Each must also pass the sudden-loss check (src/response.c): no 10-ms window in which the force on the
+ * vehicle falls by half its peak unless a rope, a fitting or an attachment let go in it.
  * And APS3's two ropes against their hand calculation (docs/theory.md, "Two ropes on one dead-man"). */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -25,8 +27,8 @@
 enum { TESTS = 3 };
 static const char *const names[TESTS] = {"aps1", "aps3", "aps4"};
 /* cs_state_hash of each run's final state */
-static const unsigned long long hashes[TESTS] = {0x71c856288eb206f0ULL, 0xf39650d809987d6eULL,
-                                                 0xf4b6e0f587b7e1d6ULL};
+static const unsigned long long hashes[TESTS] = {0x41fbd7a61aa6456fULL, 0xca56c6daa6a7a041ULL,
+                                                 0xc80b48e0c41e24c1ULL};
 
 typedef struct pinned {
     char outcome[32];
@@ -44,6 +46,10 @@ static pinned run(const char *name, unsigned long long *hash) {
     assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
     cs_summary sm;
     cs_state_summary(s, &sm);
+    if (sm.sudden_loss_count) /* no element drops its load without a rope, fitting or slot letting go */
+        fail_msg("%s: %d sudden losses of the force on the vehicle with no rope, fitting or attachment to "
+                 "explain them",
+                 name, sm.sudden_loss_count);
     pinned p;
     memset(&p, 0, sizeof p);
     snprintf(p.outcome, sizeof p.outcome, "%s", cs_outcome_name(sm.outcome));
@@ -121,10 +127,13 @@ static double largest_tension(const cs_cable_state *cs) {
 
 /* docs/theory.md, "Two ropes on one dead-man": APS3's upper rope, tied at grade to the lower one's dead-man
  * and raised over the same end post to 4 ft, holds 0.279 m more rope than the lower (its steeper ramps, by
- * hand). At the peak deflection (8.53 m, the dead-men ploughed 1.67 m) every post is down, the ropes run
- * straight from the dead-men to the face, and the upper hangs slack at its sag tension, 4.5 kN against the
- * lower's 184 kN (the dead-men's residual, 188.6 kN, less the upper's share) by hand: a ratio of 0.024.
- * The run must keep both within 25%: the upper rope is idle because the design makes it so. */
+ * hand), worth 738 kN of the lower's tension over the barrier's EA / L. The dead-men, which both ropes pull,
+ * plough at 188.6 kN, so the lower can never stretch that far: at the peak deflection the upper hangs slack,
+ * at its sag tension. By hand with every post down (the ropes straight from the dead-men to the face) the
+ * ratio is 0.024, over the lower's 150-450 kN 0.013-0.03; with the line posts leaning at the peak each span
+ * sags over 2.4 m instead of 19.8 m and the ratio is lower still ("(c) With the posts leaning"). The run
+ * must keep the rope laid in within 1% and the upper idle: below 0.03 of the lower, below the sag tension
+ * of its longest span with the whole extra rope in it (a bound: w R sqrt(R / 24 delta)). */
 static void aps3_upper_rope_idle_at_the_peak(void **state) {
     (void)state;
     cs_loader *l;
@@ -146,11 +155,12 @@ static void aps3_upper_rope_idle_at_the_peak(void **state) {
             t_lo = largest_tension(lo), t_up = largest_tension(up);
         }
     }
-    printf("peak deflection %.3f m at %.4f s: lower %.1f kN, upper %.2f kN, ratio %.4f (0.024 by hand)\n",
-           pen, at, t_lo / 1e3, t_up / 1e3, t_up / t_lo);
-    assert_int_equal(nodes, 4); /* dead-man, the two face corners, dead-man: every post down */
-    assert_true(fabs(t_up / 4.5e3 - 1.0) < 0.25);
-    assert_true(fabs(t_up / t_lo / 0.024 - 1.0) < 0.25);
+    printf(
+        "peak deflection %.3f m at %.4f s: lower %.1f kN, upper %.2f kN over %d nodes, ratio %.4f (at most "
+        "0.03 by hand)\n",
+        pen, at, t_lo / 1e3, t_up / 1e3, nodes, t_up / t_lo);
+    assert_true(t_up / t_lo < 0.03);
+    assert_true(t_up < 4.5e3); /* the 19.8-m span's sag tension with all of the slack: no span holds more */
     cs_state_free(s);
     cs_model_free(m);
     cs_loader_free(l);

@@ -62,7 +62,10 @@ static int teardown(void **st) {
 /* The page written from template into a malloc'ed string; rc the writer's return. */
 static char *page(run *r, const cs_record *rec, const char *template, int *rc, char *why, size_t why_size) {
     static const char *const overrides[] = {"--set scenario.t_end=40 ms"};
-    cs_run_info info = {"cablesim run 'x</script>.yaml'", overrides, 1, 0x0123456789abcdefULL, {{0}}, 0};
+    cs_run_info info = {.command = "cablesim run 'x</script>.yaml'",
+                        .overrides = overrides,
+                        .override_count = 1,
+                        .model_hash = 0x0123456789abcdefULL};
     char *buf = NULL;
     size_t size = 0;
     FILE *f = open_memstream(&buf, &size);

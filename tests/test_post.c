@@ -288,6 +288,53 @@ static void struck_post_takes_the_work_the_face_does(void **state) {
     cs_model_free(m);
 }
 
+/* A post pulled out of its footing (post_pullout.c), driven along its axis by hand: its pull reaches the
+ * capacity Q0 (the fixture's 20 kip in 3 ft), it slides, its shaft holding Q0 (1 - w_p / D)^2 past the
+ * 0.1-in slip that mobilises it (bearing in compression, elastic unloading), and the soil takes the cap's
+ * integral, Q0 D (x0^3 - x1^3) / 3, to round-off; all the way out it is down (post_pullout) with 0 left. */
+static void a_post_slides_out_of_its_footing(void **state) {
+    (void)state;
+    world *w = make_world(0.0, 0.0);
+    const cs_post_model *pm = &w->model->posts[0];
+    cs_post_state *ps = &w->state->posts[0];
+    double q0 = pm->pullout_cap, d = pm->embedment, zm = 0.1 * 0.0254;
+    CHECK_REL(q0, 20.0 * 4448.2216152605, 1e-9);
+    CHECK_REL(pm->pull_stiffness, q0 / zm, 1e-12);
+    ps->axial = 0.999 * q0;
+    assert_false(cs_post_pull_start(w->model, w->state, 0));
+    ps->axial = q0;
+    assert_true(cs_post_pull_start(w->model, w->state, 0));
+    CHECK_REL(cs_post_pull_cap(pm, ps), q0, 1e-12);
+    w->state->e_soil = 0.0;
+    double soil = 0.0;
+    for (int k = 1; k <= 40; k++) { /* out to 40% of the embedment */
+        double wp_before = ps->pull_plastic;
+        ps->pull = 0.01 * d * k;
+        cs_post_pull_commit(w->model, w->state, 0);
+        double x0 = 1.0 - (wp_before + zm) / d, x1 = 1.0 - (ps->pull_plastic + zm) / d;
+        soil += q0 * d * (x0 * x0 * x0 - x1 * x1 * x1) / 3.0;
+        CHECK_REL(cs_post_pull_cap(pm, ps), q0 * x1 * x1, 1e-12);
+    }
+    printf("slid out 0.4 D = %.4f m: holds %.2f kN of %.2f, soil %.1f J (%.1f by hand)\n", 0.4 * d,
+           cs_post_pull_cap(pm, ps) / 1e3, q0 / 1e3, w->state->e_soil, soil);
+    CHECK_REL(w->state->e_soil, soil, 1e-12);
+    CHECK_REL(cs_post_pull_cap(pm, ps), q0 * 0.36, 0.01); /* (1 - 0.4)^2, the slip's share aside */
+    double held = cs_post_pull_cap(pm, ps), wp = ps->pull_plastic;
+    ps->pull -= 0.5 * held / pm->pull_stiffness; /* unloading to half: elastic, no slide */
+    cs_post_pull_commit(w->model, w->state, 0);
+    assert_true(ps->pull_plastic == wp);
+    CHECK_REL(cs_post_pull_energy(w->model, w->state, 0),
+              0.5 * (0.25 * held * held - q0 * q0) / pm->pull_stiffness, 1e-9);
+    ps->pull = 2.0 * d; /* all the way out */
+    cs_post_pull_commit(w->model, w->state, 0);
+    assert_true(cs_post_pull_cap(pm, ps) == 0.0);
+    CHECK_REL(w->state->e_soil, q0 * d / 3.0, 1e-9); /* the whole embedment: Q0 D / 3 */
+    ps->axial = 0.0;
+    assert_true(cs_post_check_failure(w->model, w->state, 0));
+    assert_int_equal(ps->status, CS_POST_FAILED_PULLOUT);
+    world_free(w);
+}
+
 /* A post of inertia J = mu h^3 / 3 (pivot at grade) on its elastic spring k, let go from a tilt a0
  * with no cable load (a slack weightless rope): backward Euler's exact discrete solution is
  * [a, w]_{n+1} = M^-1 [a, w]_n, M = [[1, -h], [k h / J, 1]], so a_n is r^n a0 cos(n phi) plus a sine
@@ -381,6 +428,7 @@ int main(void) {
         cmocka_unit_test(cantilever_deflection),
         cmocka_unit_test(a_post_folds_until_it_is_down),
         cmocka_unit_test(free_swing),
+        cmocka_unit_test(a_post_slides_out_of_its_footing),
         cmocka_unit_test(axis_jacobian_derivatives),
         cmocka_unit_test(axis_jacobian_at_the_series_edge),
         cmocka_unit_test(plastic_hinge_at_mp),

@@ -162,8 +162,12 @@ EMSCRIPTEN_KEEPALIVE const char *cs_web_run(const char *path, const char *sets, 
     } else {
         cs_summary sm;
         cs_state_summary(state, &sm);
-        cs_run_info info = {"cablesim designer", overrides, n, cs_model_input_hash(&in), {{0}}, 0};
+        cs_run_info info = {.command = "cablesim designer",
+                            .overrides = overrides,
+                            .override_count = n,
+                            .model_hash = cs_model_input_hash(&in)};
         cs_run_info_rate(&info, &in, &sm);
+        cs_run_info_motion(&info, &in, &rec, &sm);
         char why[512] = "";
         FILE *f = begin();
         fprintf(f, "{\"ok\":true,\"ms\":%.3f,\"load_ms\":%.3f,\"summary\":", ms, load_ms);

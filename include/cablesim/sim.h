@@ -123,6 +123,8 @@ typedef enum cs_event_type {
                                        along it, N) */
     CS_EVENT_TERMINATION_SLIP,    /**< a rope starts to slip through its end fitting (value: that end span's
                                        tension, N; cable_end: which end) */
+    CS_EVENT_POST_WITHDRAWAL,     /**< the ropes' pull along a post reaches its pullout capacity: it starts to
+                                       slide out of its footing (value: that pull, N) */
     CS_EVENT_TYPE_COUNT           /**< the number of event types */
 } cs_event_type;
 
@@ -225,6 +227,7 @@ typedef struct cs_post_view {
     double base_moment;     /**< N m */
     double base_shear;      /**< N */
     double axial_pull;      /**< N, positive pulling the post out */
+    double withdrawal;      /**< how far it has slid out of its footing along its axis, m */
     double moment_capacity; /**< Mp about the base, or the footing's P (h + 2D/3) about its pivot if it is the
                                weaker, N m */
     double top[3];          /**< the top's position, m */

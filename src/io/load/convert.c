@@ -534,13 +534,33 @@ static void check_barrier(cs_loader *l, const cs_node *barrier, const cs_barrier
 
 enum { CS_MAX_FRAMES = 10000000 }; /* a run's frames (t_end / output_interval) */
 
-static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_def *s,
-                           const cs_barrier_def *b) {
+/* Where the vehicle's leading front corner meets the cable line: the face's centre meets it at impact_x
+ * (or the corner does, impact_at: corner), and a face of width w at angle theta meets it over
+ * w / sin(theta) of the line, the leading corner first. */
+static double leading_corner_x(const cs_scenario_def *s, double width) {
+    if (s->impact_at_corner) return s->impact_x;
+    double half = 0.5 * width / sin(s->angle);
+    return cos(s->angle) >= 0.0 ? s->impact_x - half : s->impact_x + half;
+}
+
+static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_def *s, const cs_barrier_def *b,
+                           const cs_vehicle_def *v) {
     if (b && (s->impact_x <= b->start_anchor.x || s->impact_x >= b->end_anchor.x))
         cs_err_node(l, at(sc, "impact_x"), 0,
                     "the impact point (%g m) is outside the barrier (expected between "
                     "the anchors, %g m to %g m)",
                     s->impact_x, b->start_anchor.x, b->end_anchor.x);
+    else if (b && v && v->front_width > 0.0 && s->angle > 0.0 && s->angle < CS_PI) {
+        double corner = leading_corner_x(s, v->front_width);
+        if (corner <= b->start_anchor.x || corner >= b->end_anchor.x)
+            cs_err_node(l, at(sc, at(sc, "angle") ? "angle" : "impact_x"), 0,
+                        "at %g deg the vehicle's leading front corner meets the cable line at x = %.2f m, "
+                        "%.2f m before the face's centre, outside the barrier (%.2f m to %.2f m): the vehicle "
+                        "would pass the barrier's end, not strike it (expected that corner between the "
+                        "anchors: move impact_x, or give impact_at: corner to place the corner there)",
+                        s->angle * 180.0 / CS_PI, corner, fabs(corner - s->impact_x), b->start_anchor.x,
+                        b->end_anchor.x);
+    }
     if (b) return; /* the rest was checked without the barrier */
     above(l, sc, "t_end", s->t_end, "dt", s->dt, "s");
     const cs_node *every = at(sc, "output_interval");
@@ -599,7 +619,7 @@ int cs_convert_model(cs_loader *l, const cs_node *root, const char *file, cs_mod
     if (vehicle) cs_convert_vehicle(l, vehicle, &out->vehicle);
     out->scenario = cs_default_scenario_def();
     int scenario_ok = scenario && fields(l, scenario, &out->scenario, 1) == 0 && !cs_damaged(l, scenario);
-    if (scenario_ok) check_scenario(l, scenario, &out->scenario, NULL);
+    if (scenario_ok) check_scenario(l, scenario, &out->scenario, NULL, NULL);
     if (!barrier) return l->error_count - before;
     int barrier_before = l->error_count;
     out->barrier = cs_default_barrier_def();
@@ -631,7 +651,7 @@ int cs_convert_model(cs_loader *l, const cs_node *root, const char *file, cs_mod
     if (l->error_count == barrier_before && !cs_damaged(l, barrier)) {
         check_barrier(l, barrier, &out->barrier);
         if (scenario_ok && l->error_count == barrier_before)
-            check_scenario(l, scenario, &out->scenario, &out->barrier);
+            check_scenario(l, scenario, &out->scenario, &out->barrier, vehicle ? &out->vehicle : NULL);
     }
     return l->error_count - before;
 }

@@ -11,6 +11,7 @@
 
 #include "out/html.h"
 #include "out/plot.h"
+#include "study/metrics.h"
 
 /* ---- the plots ---- */
 
@@ -214,6 +215,88 @@ static void write_table(FILE *f, const cs_trace *tr, int count, int reference, i
     }
 }
 
+/* ---- the validation metrics (NCHRP W179) against a measured history ---- */
+
+static const struct {
+    int trace;
+    const char *name;
+} metric_responses[] = {{CS_TRACE_DECEL, "deceleration"},
+                        {CS_TRACE_SPEED, "speed"},
+                        {CS_TRACE_PENETRATION, "penetration"},
+                        {CS_TRACE_TENSION, "rope tension"}};
+enum { METRIC_RESPONSES = sizeof metric_responses / sizeof metric_responses[0] };
+
+/* The metrics of trace j's response r against the reference's, at the reference's times. Returns 0, or
+ * -1 if either lacks the response or they share fewer than 2 samples or no magnitude. */
+static int metrics_of(const cs_trace *tr, int j, int reference, int r, cs_validation_metrics *v) {
+    const cs_trace *c = &tr[j], *m = &tr[reference];
+    int k = metric_responses[r].trace;
+    if (!c->have[k] || !m->have[k] || m->n < 2) return -1;
+    double *buf = malloc(2 * m->n * sizeof *buf);
+    if (!buf) return -1;
+    size_t n = cs_validation_pair(m->t, m->y[k], m->n, c->t, c->y[k], c->n, buf, buf + m->n);
+    int rc = cs_validation_metrics_of(buf, buf + m->n, n, v);
+    free(buf);
+    return rc;
+}
+
+/* Every run's metrics against the measured history: metrics.csv (format 0), a Markdown table (1), an HTML
+ * table (2) or the terminal's lines (3). Nothing if the reference is not measured. */
+static void write_metrics(FILE *f, const cs_trace *tr, int count, int reference, int format) {
+    if (!tr[reference].measured) return;
+    if (format == 0)
+        fputs("run,response,samples,sprague_geers_m,sprague_geers_p,sprague_geers_c,anova_mean,anova_std,"
+              "w179\n",
+              f);
+    else if (format == 1)
+        fputs(
+            "\n## Validation metrics (NCHRP W179)\n\nEach run against the measured history at its times "
+            "(M, P, C: Sprague-Geers; mean and std: the residuals over the measured peak; W179 accepts |M|, "
+            "|P| <= 40%, |mean| <= 5%, std <= 35%).\n\n| run | response | M | P | C | mean | std | W179 "
+            "|\n| --- | --- | --- | --- | --- | --- | --- | --- |\n",
+            f);
+    else if (format == 2)
+        fputs(
+            "<h2>Validation metrics (NCHRP W179)</h2>\n<p>Each run against the measured history at its "
+            "times (M, P, C: Sprague-Geers; mean and std: the residuals over the measured peak; W179 accepts "
+            "|M|, |P| &le; 40%, |mean| &le; 5%, std &le; 35%).</p>\n<table>\n<tr><th>run</th><th>response"
+            "</th><th>M</th><th>P</th><th>C</th><th>mean</th><th>std</th><th>W179</th></tr>\n",
+            f);
+    for (int j = 0; j < count; j++)
+        for (int r = 0; j != reference && r < METRIC_RESPONSES; r++) {
+            cs_validation_metrics v;
+            if (metrics_of(tr, j, reference, r, &v) != 0) continue;
+            const char *verdict = cs_validation_metrics_pass(&v) ? "pass" : "FAIL";
+            if (format == 0) {
+                csv_text(f, tr[j].label);
+                fprintf(f, ",%s,%zu,%.6g,%.6g,%.6g,%.6g,%.6g,%s\n", metric_responses[r].name, v.n, v.m, v.p,
+                        v.c, v.mean, v.std, verdict);
+                continue;
+            }
+            if (format == 2) {
+                fputs("<tr><td>", f);
+                cs_html_text(f, tr[j].label);
+                fputs("</td>", f);
+            } else {
+                fprintf(f, format == 1 ? "| %s" : "  %-24s", tr[j].label);
+            }
+            const char *sep = format == 2 ? "</td><td>" : format == 1 ? " | " : "  ";
+            fprintf(f, "%s%s%sM %+.1f%%%sP %.1f%%%sC %.1f%%%smean %+.1f%%%sstd %.1f%%%s%s%s\n",
+                    format == 2 ? "<td>" : sep, metric_responses[r].name, sep, 100 * v.m, sep, 100 * v.p, sep,
+                    100 * v.c, sep, 100 * v.mean, sep, 100 * v.std, sep, verdict,
+                    format == 2   ? "</td></tr>"
+                    : format == 1 ? " |"
+                                  : "");
+        }
+    if (format == 2) fputs("</table>\n", f);
+}
+
+void cs_compare_print_metrics(FILE *f, const cs_trace *traces, int count, int reference) {
+    if (!traces[reference].measured) return;
+    fputs("validation metrics (NCHRP W179) against the measured history:\n", f);
+    write_metrics(f, traces, count, reference, 3);
+}
+
 /* ---- the files ---- */
 
 int cs_compare_write(cs_outdir *out, const cs_trace *traces, int count, int reference, char *why,
@@ -226,7 +309,13 @@ int cs_compare_write(cs_outdir *out, const cs_trace *traces, int count, int refe
     fprintf(f, "# Comparison\n\nDifferences are against %s%s.\n\n", traces[reference].label,
             traces[reference].measured ? " (measured)" : "");
     write_table(f, traces, count, reference, 0);
+    write_metrics(f, traces, count, reference, 1);
     if (cs_out_finish(out, f, 0, why, why_size) != 0) return -1;
+    if (traces[reference].measured) {
+        if (!(f = cs_out_begin(out, "metrics.csv", why, why_size))) return -1;
+        write_metrics(f, traces, count, reference, 0);
+        if (cs_out_finish(out, f, 0, why, why_size) != 0) return -1;
+    }
     if (cs_out_subdir(out, "plots", why, why_size) != 0) return -1;
     static const cs_plot_format formats[] = {CS_PLOT_PNG, CS_PLOT_SVG};
     for (int k = 0; k < CS_COMPARE_PLOTS; k++)
@@ -250,6 +339,7 @@ int cs_compare_write(cs_outdir *out, const cs_trace *traces, int count, int refe
     fprintf(f, "%s.</p>\n<table>\n", traces[reference].measured ? " (measured)" : "");
     write_table(f, traces, count, reference, 1);
     fputs("</table>\n", f);
+    write_metrics(f, traces, count, reference, 2);
     int rc = 0;
     for (int k = 0; k < CS_COMPARE_PLOTS && rc == 0; k++) {
         fprintf(f, "<h2>%s</h2>\n", figures[k].title);

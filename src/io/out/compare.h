@@ -6,6 +6,7 @@
 #define CS_COMPARE_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "load/runread.h"
 #include "out/outfile.h"
@@ -23,5 +24,10 @@ int cs_compare_trace(int k, const cs_trace *traces, int count, int reference, cs
  * reference. Returns 0, or -1 with why filled. */
 int cs_compare_write(cs_outdir *out, const cs_trace *traces, int count, int reference, char *why,
                      size_t why_size);
+/* With a measured reference, compare_write also writes metrics.csv and a "Validation metrics" table in
+ * compare.md and compare.html: each run's Sprague-Geers M, P, C and ANOVA mean and std of the residuals
+ * against it (study/metrics.h), per response both give, and W179's verdict. This prints the same to f
+ * (nothing without a measured reference). */
+void cs_compare_print_metrics(FILE *f, const cs_trace *traces, int count, int reference);
 
 #endif

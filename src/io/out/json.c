@@ -3,6 +3,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "cablesim/units.h"
 #include "load/schema.h"
 #include "writers.h"
 
@@ -230,6 +231,99 @@ static void ratings(cs_wout *w, int *first, const cs_run_info *info) {
     fputc(']', f);
 }
 
+/* A number, or null if it is not finite (a window that did not fit, an impact that never came). */
+static void jopt(cs_wout *w, int *first, const char *key, double v) {
+    jkey(w, first, key);
+    if (isfinite(v))
+        cs_w_num(w, v, key);
+    else
+        fputs("null", w->f);
+}
+
+const char *cs_flail_impact_name(cs_flail_impact k) {
+    return k == CS_FLAIL_IN_RECORD ? "in_run" : k == CS_FLAIL_AFTER_RECORD ? "after_run" : "none";
+}
+
+/* "occupant_risk" at the CG (docs/ratings.md, Occupant risk), or null with "occupant_risk_note" saying
+ * why; "max_roll_deg" and "max_pitch_deg". */
+static void occupant_risk(cs_wout *w, int *first, const cs_run_info *info) {
+    FILE *f = w->f;
+    jkey(w, first, "occupant_risk");
+    if (!info || !info->motion || !info->occupant_ok) {
+        fputs("null", f);
+        jkey(w, first, "occupant_risk_note");
+        cs_json_string(f, !info || !info->motion ? "no record of the run's motion" : info->occupant_why);
+    } else {
+        const cs_occupant_risk *o = &info->occupant;
+        cs_occupant_rules r = cs_default_occupant_rules();
+        int of = 1;
+        fputc('{', f);
+        jkey(w, &of, "basis");
+        fprintf(f, "\"%s, accelerations filtered to SAE J211/1 CFC %.0f, from the first contact\"",
+                info->occupant_at
+                    ? "a point of the vehicle (point_m: from its centre of gravity, x forward, y "
+                      "left, z up)"
+                    : "the vehicle's centre of gravity",
+                r.cfc);
+        const double cg[3] = {0, 0, 0};
+        jarray(w, &of, "point_m", info->occupant_at ? info->occupant_point : cg, 3);
+        jkey(w, &of, "occupant_impact");
+        cs_json_string(f, cs_flail_impact_name(o->impact));
+        jopt(w, &of, "occupant_impact_time_s", o->t_impact);
+        jnum(w, &of, "oiv_longitudinal_mps", o->oiv_x);
+        jnum(w, &of, "oiv_lateral_mps", o->oiv_y);
+        jnum(w, &of, "ora_longitudinal_g", o->ora_x);
+        jnum(w, &of, "ora_lateral_g", o->ora_y);
+        jkey(w, &of, "head_impact");
+        cs_json_string(f, cs_flail_impact_name(o->thiv_impact));
+        jopt(w, &of, "thiv_time_s", o->t_thiv);
+        jnum(w, &of, "thiv_mps", o->thiv);
+        jnum(w, &of, "thiv_kmh", o->thiv * 3.6);
+        jnum(w, &of, "phd_g", o->phd);
+        jnum(w, &of, "asi", o->asi);
+        jopt(w, &of, "asi_time_s", o->t_asi);
+        fputc('}', f);
+    }
+    if (info && info->motion) {
+        jnum(w, first, "max_roll_deg", info->roll_peak / CS_DEG);
+        jnum(w, first, "max_pitch_deg", info->pitch_peak / CS_DEG);
+    }
+    fputc('\n', f);
+}
+
+/* "roadside_criteria": the criteria of the roadside test the run stands for, as run, or null. */
+static void roadside_criteria(cs_wout *w, int *first, const cs_run_info *info) {
+    FILE *f = w->f;
+    jkey(w, first, "roadside_criteria");
+    if (!info || !info->criteria_count) {
+        fputs("null", f);
+        return;
+    }
+    int cf = 1;
+    fputc('{', f);
+    jkey(w, &cf, "standard");
+    cs_json_string(f, info->criteria_test.standard);
+    jkey(w, &cf, "test");
+    cs_json_string(f, info->criteria_test.name);
+    jkey(w, &cf, "criteria");
+    fputc('[', f);
+    for (int k = 0; k < info->criteria_count; k++) {
+        const cs_criterion *c = &info->criteria[k];
+        int kf = 1;
+        fputs(k ? ",{" : "{", f);
+        jkey(w, &kf, "id");
+        cs_json_string(f, c->id);
+        jkey(w, &kf, "criterion");
+        cs_json_string(f, c->name);
+        jkey(w, &kf, "verdict");
+        cs_json_string(f, cs_verdict_name(c->verdict));
+        jkey(w, &kf, "detail");
+        cs_json_string(f, c->detail);
+        fputc('}', f);
+    }
+    fputs("]}\n", f);
+}
+
 int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_model *model, const cs_state *state,
                           char *why, size_t why_size) {
     cs_run_info info;
@@ -330,6 +424,8 @@ int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model
     fputc('\n', f);
     cables_and_losses(&w, &first, state, &s);
     ratings(&w, &first, info);
+    occupant_risk(&w, &first, info);
+    roadside_criteria(&w, &first, info);
     jkey(&w, &first, "events");
     fprintf(f, "[");
     for (int i = 0; i < cs_state_event_count(state); i++) {

@@ -52,6 +52,9 @@ int cs_write_outputs(const char *dir, const cs_model_input *in, const cs_model *
     cs_outdir out;
     cs_run_info info;
     cs_run_info_of(&info, in, state);
+    cs_summary sm;
+    cs_state_summary(state, &sm);
+    cs_run_info_motion(&info, in, rec, &sm);
     int rc = cs_out_open(&out, dir, 0, why, why_size);
     if (rc == 0)
         rc = cs_write_run_files(&out, in, model, state, rec, &info, flags, NULL, NULL, why, why_size);

@@ -69,6 +69,36 @@ static void sudden_losses(FILE *f, const cs_state *state, const cs_summary *s) {
         fprintf(f, "  WARNING sudden loss: %d more such windows\n", s->sudden_loss_count - n);
 }
 
+/* The occupant risk at the CG and the roll and pitch peaks (docs/ratings.md, Occupant risk). */
+static void occupant(FILE *f, const cs_run_info *info) {
+    if (!info || !info->motion) return;
+    fprintf(f, "  roll, pitch (max)    %.1f deg, %.1f deg\n", info->roll_peak / CS_DEG,
+            info->pitch_peak / CS_DEG);
+    if (!info->occupant_ok) {
+        fprintf(f, "  occupant risk        none: %s\n", info->occupant_why);
+        return;
+    }
+    const cs_occupant_risk *o = &info->occupant;
+    if (info->occupant_at)
+        fprintf(f, "  occupant risk at     x %.3f m, y %.3f m, z %.3f m from the CG (forward, left, up)\n",
+                info->occupant_point[0], info->occupant_point[1], info->occupant_point[2]);
+    if (o->impact == CS_FLAIL_NONE)
+        fprintf(f, "  occupant impact      none: the occupant did not move against the vehicle\n");
+    else
+        fprintf(f,
+                "  occupant impact      %.3f s after first contact%s: OIV %.2f m/s (%.1f ft/s) longitudinal, "
+                "%.2f m/s (%.1f ft/s) lateral\n",
+                o->t_impact, o->impact == CS_FLAIL_AFTER_RECORD ? " (after the run's end)" : "", o->oiv_x,
+                o->oiv_x / CS_FT, o->oiv_y, o->oiv_y / CS_FT);
+    fprintf(f, "  ridedown (10 ms)     ORA %.2f g longitudinal, %.2f g lateral\n", o->ora_x, o->ora_y);
+    fprintf(f, "  EN 1317-1            THIV %.1f km/h (%.2f m/s)%s, PHD %.2f g, ASI %.2f\n", o->thiv * 3.6,
+            o->thiv,
+            o->thiv_impact == CS_FLAIL_AFTER_RECORD ? " (head impact after the run's end)"
+            : o->thiv_impact == CS_FLAIL_NONE       ? " (no head impact)"
+                                                    : "",
+            o->phd, o->asi);
+}
+
 void cs_write_summary_text(FILE *f, const cs_model_input *in, const cs_model *model, const cs_state *state) {
     cs_run_info info;
     cs_run_info_of(&info, in, state);
@@ -168,6 +198,14 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
     if (s.solver_warnings)
         fprintf(f, "  solver warnings      %d steps (largest residual %.2g)\n", s.solver_warnings,
                 s.max_solver_residual);
+    occupant(f, info);
+    if (info && info->criteria_count) {
+        fprintf(f, "  criteria (as run)    %s %s:", info->criteria_test.standard, info->criteria_test.name);
+        for (int k = 0; k < info->criteria_count; k++)
+            fprintf(f, "%s %s %s", k ? "," : "", info->criteria[k].id,
+                    cs_verdict_name(info->criteria[k].verdict));
+        fprintf(f, " (each with its numbers: summary.json roadside_criteria)\n");
+    }
     for (int i = 0; info && i < info->rating_count; i++) {
         char text[256];
         cs_rating_text(&info->ratings[i], text, sizeof text);

@@ -17,8 +17,30 @@ void cs_run_info_rate(cs_run_info *info, const cs_model_input *in, const cs_summ
                 standards[i], NULL, &in->vehicle, in->scenario.speed, in->scenario.angle, summary, &rules);
 }
 
+void cs_run_info_motion(cs_run_info *info, const cs_model_input *in, const cs_record *rec,
+                        const cs_summary *summary) {
+    info->motion = 1;
+    cs_record_roll_pitch_peaks(rec, &info->roll_peak, &info->pitch_peak);
+    info->occupant_ok =
+        cs_occupant_risk_of_run(rec, summary->first_contact_time_s,
+                                info->occupant_at ? info->occupant_point : NULL, &info->occupant,
+                                info->occupant_why, sizeof info->occupant_why) == 0;
+    info->criteria_count = 0;
+    if (!cs_roadside_test_as_run(&in->vehicle, in->scenario.speed, in->scenario.angle, &info->criteria_test))
+        return;
+    cs_exit_box box;
+    cs_exit_box_of_record(rec, &in->vehicle, in->scenario.impact_x, &box);
+    cs_test_result r = {summary,
+                        info->occupant_ok ? &info->occupant : NULL,
+                        info->occupant_why,
+                        info->roll_peak,
+                        info->pitch_peak,
+                        &box};
+    info->criteria_count = cs_roadside_criteria(&info->criteria_test, &r, info->criteria);
+}
+
 void cs_run_info_of(cs_run_info *info, const cs_model_input *in, const cs_state *state) {
-    *info = (cs_run_info){NULL, NULL, 0, cs_model_input_hash(in), {{0}}, 0};
+    *info = (cs_run_info){.model_hash = cs_model_input_hash(in)};
     cs_summary s;
     cs_state_summary(state, &s);
     cs_run_info_rate(info, in, &s);

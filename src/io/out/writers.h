@@ -9,6 +9,8 @@
 #include "cablesim/output.h"
 #include "outfile.h"
 #include "record.h"
+#include "study/criteria.h"
+#include "study/occupant.h"
 #include "study/rating.h"
 
 /* What a run's outputs record beside its results: where they came from (this cablesim's version,
@@ -20,11 +22,29 @@ typedef struct cs_run_info {
     unsigned long long model_hash; /* cs_model_input_hash */
     cs_rating ratings[2];          /* ASTM F2656, SD-STD-02.01: those whose test vehicle the run's is */
     int rating_count;
+    /* from the run's record (cs_run_info_motion); motion 0 when there was none to read */
+    int motion;
+    int occupant_at; /* the occupant risk at occupant_point (m from the CG, the vehicle's axes), not
+                        at the CG (set before cs_run_info_motion) */
+    double occupant_point[3];
+    int occupant_ok;           /* occupant computed; else occupant_why says why not */
+    cs_occupant_risk occupant; /* at the CG, from the first contact (study/occupant.h) */
+    char occupant_why[160];
+    double roll_peak, pitch_peak; /* largest |roll| and |pitch| of the run, rad */
+    int criteria_count; /* of the roadside test the run stands for (cs_roadside_test_as_run); 0 none */
+    cs_roadside_test criteria_test;
+    cs_criterion criteria[CS_CRITERIA_MAX];
 } cs_run_info;
 
 /* The ratings of a run as run into info (cs_rate_as_run): ASTM F2656 if its vehicle is one of that
  * standard's, and SD-STD-02.01 too for the 15,000-lb truck. */
 void cs_run_info_rate(cs_run_info *info, const cs_model_input *in, const cs_summary *summary);
+/* How a flail impact is named in summary.json and the terminal: "in_run", "after_run", "none". */
+const char *cs_flail_impact_name(cs_flail_impact k);
+/* The occupant risk, the roll and pitch peaks and the roadside criteria as run (if the run stands for a
+ * roadside test) of a run's record into info. */
+void cs_run_info_motion(cs_run_info *info, const cs_model_input *in, const cs_record *rec,
+                        const cs_summary *summary);
 /* The record of a run written through the library (cs_write_outputs): no command line or overrides, its
  * model hash and its ratings as run. */
 void cs_run_info_of(cs_run_info *info, const cs_model_input *in, const cs_state *state);

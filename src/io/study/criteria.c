@@ -1,0 +1,224 @@
+/* NCHRP Report 350 and MASH evaluation criteria of a roadside test (criteria.h); each criterion's source
+ * and certainty in docs/ratings.md, "Criteria". */
+#include "criteria.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cablesim/units.h"
+
+const char *cs_verdict_name(cs_verdict v) {
+    return v == CS_VERDICT_PASS ? "pass" : v == CS_VERDICT_FAIL ? "FAIL" : "not judged";
+}
+
+/* The wheels' plan positions (front left, front right, rear left, rear right) of a frame. */
+static void wheels(const cs_vehicle_view *p, const cs_vehicle_def *v, double w[4][2]) {
+    double c = cos(p->yaw), s = sin(p->yaw), rear = v->wheelbase - v->cg_to_front_axle;
+    const double bx[4] = {v->cg_to_front_axle, v->cg_to_front_axle, -rear, -rear};
+    const double by[4] = {0.5 * v->track, -0.5 * v->track, 0.5 * v->track, -0.5 * v->track};
+    for (int k = 0; k < 4; k++)
+        w[k][0] = p->position[0] + c * bx[k] - s * by[k], w[k][1] = p->position[1] + s * bx[k] + c * by[k];
+}
+
+void cs_exit_box_of_record(const cs_record *rec, const cs_vehicle_def *v, double impact_x, cs_exit_box *out) {
+    out->a = 2.0 + v->front_width + 0.16 * (v->cg_to_front + v->cg_to_rear);
+    out->b = 10.0;
+    out->start_x = impact_x;
+    out->cross_along = HUGE_VAL;
+    out->crossed_in_run = 0;
+    int n = cs_record_frame_count(rec);
+    if (n < 1) return;
+    double dir = cs_record_vehicle(rec, 0)->velocity[0] >= 0.0 ? 1.0 : -1.0, w[4][2];
+    int started = 0;
+    for (int i = 0; i < n; i++) {
+        wheels(cs_record_vehicle(rec, i), v, w);
+        for (int k = 0; k < 4 && !started; k++)
+            if (w[k][1] >= 0.0) out->start_x = w[k][0], started = 1;
+        for (int k = 0; k < 4 && started; k++)
+            if (w[k][1] <= -out->a) {
+                double along = (w[k][0] - out->start_x) * dir;
+                if (along < out->cross_along) out->cross_along = along, out->crossed_in_run = 1;
+            }
+        if (out->crossed_in_run) return;
+    }
+    /* past the end: each wheel straight on along the CG's last velocity */
+    const cs_vehicle_view *e = cs_record_vehicle(rec, n - 1);
+    double vx = e->velocity[0], vy = e->velocity[1];
+    if (vy >= 0.0) return;
+    wheels(e, v, w);
+    for (int k = 0; k < 4; k++) {
+        double t = (-out->a - w[k][1]) / vy, along = (w[k][0] + vx * t - out->start_x) * dir;
+        if (along < out->cross_along) out->cross_along = along;
+    }
+}
+
+typedef struct {
+    cs_criterion *out;
+    int n;
+} list;
+
+static cs_criterion *add(list *l, const char *id, const char *name, cs_verdict v) {
+    cs_criterion *c = &l->out[l->n++];
+    c->id = id, c->name = name, c->verdict = v, c->detail[0] = '\0';
+    return c;
+}
+
+/* Criterion A: contained and redirected or brought to a controlled stop; no penetration, underride or
+ * override. */
+static void structural(list *l, const cs_summary *s) {
+    cs_outcome o = s->outcome;
+    int judged = o == CS_REDIRECTED || o == CS_STOPPED || cs_outcome_through(o);
+    cs_criterion *c =
+        add(l, "A", "contain and redirect or stop the vehicle; no penetration, underride, override",
+            !judged                                 ? CS_VERDICT_NOT_JUDGED
+            : o == CS_REDIRECTED || o == CS_STOPPED ? CS_VERDICT_PASS
+                                                    : CS_VERDICT_FAIL);
+    snprintf(c->detail, sizeof c->detail, "%s%s", cs_outcome_name(o),
+             !judged ? ": the run did not end with the vehicle redirected, stopped or through" : "");
+}
+
+static void not_judged(list *l, const char *id, const char *name, const char *why) {
+    snprintf(add(l, id, name, CS_VERDICT_NOT_JUDGED)->detail, sizeof(cs_criterion){0}.detail, "%s", why);
+}
+
+/* Upright: roll and pitch at most 75 deg over the run (to the loss of contact). */
+static void upright(list *l, const char *id, const cs_test_result *r, const char *name, const char *note) {
+    double lim = 75.0 * CS_DEG;
+    cs_criterion *c =
+        add(l, id, name, r->roll_peak <= lim && r->pitch_peak <= lim ? CS_VERDICT_PASS : CS_VERDICT_FAIL);
+    snprintf(c->detail, sizeof c->detail,
+             "roll %.1f deg, pitch %.1f deg (limit 75) over the run; after it: not "
+             "judged%s",
+             r->roll_peak / CS_DEG, r->pitch_peak / CS_DEG, note);
+}
+
+/* An occupant risk value against its maximum (and preferred limit, 0 if none). */
+static int within(char *buf, size_t size, const char *what, double v, const char *unit, double preferred,
+                  double max) {
+    char pref[64] = "";
+    if (preferred > 0.0)
+        snprintf(pref, sizeof pref, "%s the preferred %.4g, ", v <= preferred ? "within" : "over", preferred);
+    snprintf(buf, size, "%s %.2f %s (%smaximum %.4g)", what, v, unit, pref, max);
+    return v <= max;
+}
+
+/* H and I (both directions, preferred and maximum), or NCHRP 350's L (longitudinal, maximum only). */
+static void occupant(list *l, const cs_test_result *r, const char *id, double oiv_pref, double oiv_max,
+                     double ora_pref, double ora_max, int longitudinal_only) {
+    const cs_occupant_risk *o = r->occupant;
+    const char *oname =
+        longitudinal_only ? "longitudinal OIV and ORA within limits" : "occupant impact velocity";
+    if (!o) {
+        not_judged(l, id, oname, r->occupant_why ? r->occupant_why : "no occupant risk");
+        if (!longitudinal_only) not_judged(l, "I", "occupant ridedown acceleration", "no occupant risk");
+        return;
+    }
+    char a[128], b[128], c2[128], d[128];
+    if (longitudinal_only) {
+        int ok = within(a, sizeof a, "OIV", o->oiv_x, "m/s", 0.0, oiv_max) &
+                 within(b, sizeof b, "ORA", o->ora_x, "g", 0.0, ora_max);
+        snprintf(add(l, id, oname, ok ? CS_VERDICT_PASS : CS_VERDICT_FAIL)->detail,
+                 sizeof(cs_criterion){0}.detail, "longitudinal %s; %s", a, b);
+        return;
+    }
+    int ok = within(a, sizeof a, "longitudinal", o->oiv_x, "m/s", oiv_pref, oiv_max) &
+             within(b, sizeof b, "lateral", o->oiv_y, "m/s", oiv_pref, oiv_max);
+    snprintf(add(l, id, oname, ok ? CS_VERDICT_PASS : CS_VERDICT_FAIL)->detail,
+             sizeof(cs_criterion){0}.detail, "%s; %s", a, b);
+    ok = within(c2, sizeof c2, "longitudinal", o->ora_x, "g", ora_pref, ora_max) &
+         within(d, sizeof d, "lateral", o->ora_y, "g", ora_pref, ora_max);
+    snprintf(add(l, "I", "occupant ridedown acceleration", ok ? CS_VERDICT_PASS : CS_VERDICT_FAIL)->detail,
+             sizeof(cs_criterion){0}.detail, "%s; %s%s", c2, d,
+             o->impact == CS_FLAIL_AFTER_RECORD ? " (the occupant's impact comes after the run's end)" : "");
+}
+
+/* NCHRP 350's M: exit angle under 60% of the impact angle, at the loss of contact (a preference). */
+static void exit_angle(list *l, const cs_roadside_test *t, const cs_summary *s) {
+    const char *name = "exit angle preferably under 60% of the impact angle";
+    if (s->outcome != CS_REDIRECTED) {
+        not_judged(l, "M", name, "the vehicle did not leave the barrier on the traffic side");
+        return;
+    }
+    double lim = 0.6 * t->angle / CS_DEG;
+    snprintf(add(l, "M", name, s->exit_angle_deg < lim ? CS_VERDICT_PASS : CS_VERDICT_FAIL)->detail,
+             sizeof(cs_criterion){0}.detail, "exit %.1f deg (60%% of %.1f deg: %.1f deg)", s->exit_angle_deg,
+             t->angle / CS_DEG, lim);
+}
+
+/* MASH's exit box. */
+static void exit_box(list *l, const cs_test_result *r) {
+    const char *name = "the wheel tracks leave within the exit box";
+    const cs_exit_box *e = r->exit_box;
+    cs_outcome o = r->summary->outcome;
+    if (o == CS_STOPPED) {
+        snprintf(add(l, "exit box", name, CS_VERDICT_PASS)->detail, sizeof(cs_criterion){0}.detail,
+                 "the vehicle stopped in the barrier: it did not leave");
+        return;
+    }
+    if (o != CS_REDIRECTED || !e) {
+        not_judged(l, "exit box", name, "the vehicle did not leave the barrier on the traffic side");
+        return;
+    }
+    cs_criterion *c = add(l, "exit box", name, e->cross_along >= e->b ? CS_VERDICT_PASS : CS_VERDICT_FAIL);
+    if (isfinite(e->cross_along))
+        snprintf(c->detail, sizeof c->detail,
+                 "a wheel crosses the line %.2f m from the barrier %.1f m along (box %.1f m); %s", e->a,
+                 e->cross_along, e->b,
+                 e->crossed_in_run ? "in the run"
+                                   : "on the path extrapolated straight from the loss of contact");
+    else
+        snprintf(c->detail, sizeof c->detail,
+                 "no wheel crosses the line %.2f m from the barrier (the path extrapolated straight from the "
+                 "loss of contact)",
+                 e->a);
+}
+
+int cs_roadside_criteria(const cs_roadside_test *t, const cs_test_result *r, cs_criterion *out) {
+    list l = {out, 0};
+    int mash = strcmp(t->standard, "mash") == 0, truck = strcmp(t->name + 1, "-12") == 0;
+    int car = strcmp(t->name + 1, "-10") == 0;
+    structural(&l, r->summary);
+    not_judged(&l, "D",
+               "no debris penetrating or endangering the occupant compartment or others; compartment "
+               "deformation within limits",
+               "the model has no debris and no occupant compartment");
+    if (truck)
+        upright(&l, "G", r, "preferably upright", " (a preference, not essential)");
+    else
+        upright(&l, "F", r, "upright, roll and pitch at most 75 deg",
+                mash ? "" : " (NCHRP 350 gives no number; MASH's 75 deg is used)");
+    if (mash && !truck)
+        occupant(&l, r, "H", 9.1, 12.2, 15.0, 20.49, 0);
+    else if (!mash && car)
+        occupant(&l, r, "H", 9.0, 12.0, 15.0, 20.0, 0);
+    else if (!mash && !truck)
+        occupant(&l, r, "L", 0.0, 12.0, 0.0, 20.0, 1);
+    if (mash) {
+        exit_box(&l, r);
+    } else {
+        not_judged(&l, "K", "preferably no intrusion into adjacent traffic lanes after the collision",
+                   "the run ends at the loss of contact: the trajectory after it is not simulated");
+        exit_angle(&l, t, r->summary);
+    }
+    return l.n;
+}
+
+int cs_roadside_test_as_run(const cs_vehicle_def *v, double speed, double angle, cs_roadside_test *out) {
+    static const char *const standards[] = {"nchrp-350", "mash"};
+    if (!(angle > 0.0 && angle < 45.0 * CS_DEG)) return 0;
+    for (int k = 0; k < 4; k++) { /* level 3 of each standard, then level 4 (the 4-12 trucks) */
+        cs_roadside_test t[3];
+        int n = cs_roadside_tests(standards[k % 2], 3 + k / 2, NULL, t);
+        for (int i = 0; i < n; i++) {
+            double mass = atof(t[i].vehicle);
+            if (fabs(v->mass - mass) <= 0.05 * mass) {
+                *out = t[i];
+                out->speed = speed, out->angle = angle;
+                return 1;
+            }
+        }
+    }
+    return 0;
+}

@@ -1,0 +1,56 @@
+/* The evaluation criteria of NCHRP Report 350 and MASH for a roadside test, each judged from a run where
+ * the model can judge it and listed as "not judged" where it cannot (docs/ratings.md, "Criteria"). */
+#ifndef CS_CRITERIA_H
+#define CS_CRITERIA_H
+
+#include "cablesim/output.h"
+#include "study/occupant.h"
+#include "study/rating.h"
+
+typedef enum cs_verdict { CS_VERDICT_PASS = 0, CS_VERDICT_FAIL, CS_VERDICT_NOT_JUDGED } cs_verdict;
+
+typedef struct cs_criterion {
+    const char *id;   /* the standard's letter ("A", "H", ...), or "exit box" */
+    const char *name; /* what it asks, in short */
+    cs_verdict verdict;
+    char detail[400]; /* the run's numbers against the limits, or why it is not judged */
+} cs_criterion;
+
+/* MASH's exit box for a vehicle (docs/ratings.md): A = 2.0 m + its width + 0.16 x its length from the
+ * barrier's traffic face (y = 0), B = 10 m along from where its wheel track first crosses that face. */
+typedef struct cs_exit_box {
+    double a, b;        /* m */
+    double start_x;     /* where the wheel track first crossed y = 0 (or the impact point), m */
+    double cross_along; /* how far along from start_x a wheel crosses y = -a, m; HUGE_VAL never */
+    int crossed_in_run; /* 1 if it crossed within the run; 0 if on the path extrapolated past its end */
+} cs_exit_box;
+
+/* The exit box and the wheels' path of a run: the wheels (track and wheelbase) from the CG's place and
+ * yaw in each frame, and past the run's end straight along the CG's last velocity. */
+void cs_exit_box_of_record(const cs_record *rec, const cs_vehicle_def *v, double impact_x, cs_exit_box *out);
+
+/* What a run gives the criteria. occupant NULL: not computed (the occupant criteria are then not judged,
+ * occupant_why says why). */
+typedef struct cs_test_result {
+    const cs_summary *summary;
+    const cs_occupant_risk *occupant;
+    const char *occupant_why;
+    double roll_peak, pitch_peak; /* rad */
+    const cs_exit_box *exit_box;  /* NULL: none */
+} cs_test_result;
+
+enum { CS_CRITERIA_MAX = 10 };
+
+/* The criteria of a test (its standard's for its vehicle) judged on a result, into out[CS_CRITERIA_MAX];
+ * the count. */
+int cs_roadside_criteria(const cs_roadside_test *test, const cs_test_result *r, cs_criterion *out);
+
+/* The roadside test a run as run stands for: the first of NCHRP Report 350's and then MASH's tests whose
+ * vehicle (its mass the number in its name: 2000P, 2270P) the run's is within 5% by mass, impacted at an
+ * angle under 45 deg; its speed and angle the run's. Returns 1 and fills out, or 0 if none. */
+int cs_roadside_test_as_run(const cs_vehicle_def *v, double speed, double angle, cs_roadside_test *out);
+
+/* "pass", "FAIL", "not judged". */
+const char *cs_verdict_name(cs_verdict v);
+
+#endif

@@ -1,0 +1,337 @@
+/* Occupant risk (occupant.h): J211/1 filters, the flail-space model, THIV, PHD and ASI; formulas and
+ * sources in docs/ratings.md, "Occupant risk". */
+#include "occupant.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cablesim/units.h"
+
+cs_occupant_rules cs_default_occupant_rules(void) {
+    cs_occupant_rules r;
+    r.cfc = 180.0;
+    r.flail_x = 0.6, r.flail_y = 0.3;
+    r.ora_window = 0.010;
+    r.thiv_dx = 0.6, r.thiv_dy = 0.3;
+    r.phd_window = 0.010;
+    r.asi_window = 0.050;
+    r.asi_limit[0] = 12.0 * CS_G0, r.asi_limit[1] = 9.0 * CS_G0, r.asi_limit[2] = 10.0 * CS_G0;
+    return r;
+}
+
+int cs_cfc_coefficients(double cfc, double dt, cs_cfc_coeffs *c) {
+    double wd = 2.0 * CS_PI * cfc * 2.0775, half = 0.5 * wd * dt;
+    if (!(cfc > 0.0) || !(dt > 0.0) || half >= 0.5 * CS_PI) return -1;
+    double wa = sin(half) / cos(half), r2 = sqrt(2.0), den = 1.0 + r2 * wa + wa * wa;
+    c->a0 = wa * wa / den;
+    c->a1 = 2.0 * c->a0;
+    c->a2 = c->a0;
+    c->b1 = -2.0 * (wa * wa - 1.0) / den;
+    c->b2 = (-1.0 + r2 * wa - wa * wa) / den;
+    return 0;
+}
+
+/* One pass of the 2-pole filter over y[0..n-1] in place, in direction step (+1 or -1), its history the
+ * pass's first value. */
+static void cfc_pass(const cs_cfc_coeffs *c, double *y, int n, int step) {
+    int i = step > 0 ? 0 : n - 1;
+    double x1 = y[i], x2 = y[i], y1 = y[i], y2 = y[i];
+    for (int k = 0; k < n; k++, i += step) {
+        double x = y[i], out = c->a0 * x + c->a1 * x1 + c->a2 * x2 + c->b1 * y1 + c->b2 * y2;
+        x2 = x1, x1 = x, y2 = y1, y1 = out;
+        y[i] = out;
+    }
+}
+
+int cs_cfc_filter(double cfc, double dt, const double *x, double *y, int n) {
+    cs_cfc_coeffs c;
+    if (cs_cfc_coefficients(cfc, dt, &c) != 0) return -1;
+    if (n <= 0) return 0;
+    if (y != x) memmove(y, x, (size_t)n * sizeof *y);
+    cfc_pass(&c, y, n, +1);
+    cfc_pass(&c, y, n, -1);
+    return 0;
+}
+
+double cs_window_mean_max(const double *x, int n, int w, int from, int *at) {
+    double best = 0.0, sum = 0.0;
+    *at = -1;
+    if (w < 1 || from < 0 || from + w > n) return 0.0;
+    for (int i = from; i < from + w; i++)
+        sum += x[i];
+    for (int i = from;; i++) {
+        if (*at < 0 || fabs(sum) / w > best) best = fabs(sum) / w, *at = i;
+        if (i + w >= n) break;
+        sum += x[i + w] - x[i];
+    }
+    return best;
+}
+
+/* The first crossing of a bound by a relative displacement d (two components, bounds lim) along the
+ * samples, with its relative velocity v: the impact's time (s) and its velocity components by linear
+ * interpolation within the step; else the crossing after the last sample at the last velocity held.
+ * Returns where the impact is. */
+static cs_flail_impact first_crossing(const double *dx, const double *dy, const double *vx, const double *vy,
+                                      int n, double dt, const double lim[2], double *t, double v[2]) {
+    for (int i = 1; i < n; i++) {
+        double ax = fabs(dx[i]), ay = fabs(dy[i]);
+        if (ax < lim[0] && ay < lim[1]) continue;
+        double fx = ax >= lim[0] ? (lim[0] - fabs(dx[i - 1])) / (ax - fabs(dx[i - 1])) : 2.0;
+        double fy = ay >= lim[1] ? (lim[1] - fabs(dy[i - 1])) / (ay - fabs(dy[i - 1])) : 2.0;
+        double f = fx < fy ? fx : fy;
+        f = f < 0.0 ? 0.0 : f > 1.0 ? 1.0 : f;
+        *t = (i - 1 + f) * dt;
+        v[0] = vx[i - 1] + f * (vx[i] - vx[i - 1]);
+        v[1] = vy[i - 1] + f * (vy[i] - vy[i - 1]);
+        return CS_FLAIL_IN_RECORD;
+    }
+    int e = n - 1;
+    const double d[2] = {dx[e], dy[e]}, ve[2] = {vx[e], vy[e]};
+    double best = HUGE_VAL;
+    for (int k = 0; k < 2; k++)
+        if (fabs(ve[k]) > 1e-9) {
+            double tk = ((ve[k] > 0.0 ? lim[k] : -lim[k]) - d[k]) / ve[k];
+            if (tk >= 0.0 && tk < best) best = tk;
+        }
+    v[0] = ve[0], v[1] = ve[1];
+    if (!isfinite(best)) {
+        *t = NAN;
+        return CS_FLAIL_NONE;
+    }
+    *t = e * dt + best;
+    return CS_FLAIL_AFTER_RECORD;
+}
+
+/* The largest resultant of the x and y means over windows of w samples from index from on. */
+static double resultant_mean_max(const double *x, const double *y, int n, int w, int from, int *at) {
+    double best = 0.0, sx = 0.0, sy = 0.0;
+    *at = -1;
+    if (w < 1 || from < 0 || from + w > n) return 0.0;
+    for (int i = from; i < from + w; i++)
+        sx += x[i], sy += y[i];
+    for (int i = from;; i++) {
+        double r = hypot(sx, sy) / w;
+        if (*at < 0 || r > best) best = r, *at = i;
+        if (i + w >= n) break;
+        sx += x[i + w] - x[i], sy += y[i + w] - y[i];
+    }
+    return best;
+}
+
+static int window_samples(double window, double dt) {
+    int w = (int)lround(window / dt);
+    return w < 1 ? 1 : w;
+}
+
+/* The flail-space occupant (NCHRP 350, MASH): a free body that keeps the vehicle's velocity at the first
+ * contact, moving against the vehicle's axes without their rotation. */
+static void flail(const double *ax, const double *ay, int n, double dt, const cs_occupant_rules *r,
+                  double *work, cs_occupant_risk *o) {
+    double *vx = work, *vy = work + n, *dx = work + 2 * n, *dy = work + 3 * n;
+    vx[0] = vy[0] = dx[0] = dy[0] = 0.0;
+    for (int i = 1; i < n; i++) {
+        vx[i] = vx[i - 1] - 0.5 * dt * (ax[i] + ax[i - 1]);
+        vy[i] = vy[i - 1] - 0.5 * dt * (ay[i] + ay[i - 1]);
+        dx[i] = dx[i - 1] + 0.5 * dt * (vx[i] + vx[i - 1]);
+        dy[i] = dy[i - 1] + 0.5 * dt * (vy[i] + vy[i - 1]);
+    }
+    const double lim[2] = {r->flail_x, r->flail_y};
+    double v[2];
+    o->impact = first_crossing(dx, dy, vx, vy, n, dt, lim, &o->t_impact, v);
+    o->oiv_x = fabs(v[0]), o->oiv_y = fabs(v[1]);
+    o->ora_x = o->ora_y = 0.0;
+    o->t_ora_x = o->t_ora_y = NAN;
+    if (o->impact != CS_FLAIL_IN_RECORD) return;
+    int from = (int)ceil(o->t_impact / dt - 1e-9), w = window_samples(r->ora_window, dt), at;
+    o->ora_x = cs_window_mean_max(ax, n, w, from, &at) / CS_G0;
+    o->t_ora_x = at >= 0 ? at * dt : NAN;
+    o->ora_y = cs_window_mean_max(ay, n, w, from, &at) / CS_G0;
+    o->t_ora_y = at >= 0 ? at * dt : NAN;
+}
+
+/* EN 1317-1's theoretical head: a free body in the horizontal plane keeping the vehicle's velocity at the
+ * first contact, seen from the vehicle as it moves and yaws; it starts at the CG. */
+static void thiv(const cs_vehicle_motion *m, const cs_occupant_rules *r, double *work, cs_occupant_risk *o) {
+    int n = m->n;
+    double dt = m->dt;
+    double *bx = work, *by = work + n, *ux = work + 2 * n, *uy = work + 3 * n;
+    double psi = 0.0, Vx = 0.0, Vy = 0.0, Xx = 0.0, Xy = 0.0; /* the vehicle: yaw, velocity, position */
+    double gx_prev = m->ax[0], gy_prev = m->ay[0];            /* its acceleration in the ground frame */
+    for (int i = 0; i < n; i++) {
+        if (i > 0) {
+            psi += 0.5 * dt * (m->yaw_rate[i] + m->yaw_rate[i - 1]);
+            double c = cos(psi), s = sin(psi);
+            double gx = c * m->ax[i] - s * m->ay[i], gy = s * m->ax[i] + c * m->ay[i];
+            double Vx0 = Vx, Vy0 = Vy;
+            Vx += 0.5 * dt * (gx + gx_prev), Vy += 0.5 * dt * (gy + gy_prev);
+            Xx += 0.5 * dt * (Vx + Vx0), Xy += 0.5 * dt * (Vy + Vy0);
+            gx_prev = gx, gy_prev = gy;
+        }
+        double c = cos(psi), s = sin(psi);
+        /* the head's place and velocity against the vehicle, in the vehicle's axes */
+        bx[i] = -(c * Xx + s * Xy);
+        by[i] = -(-s * Xx + c * Xy);
+        ux[i] = -(c * Vx + s * Vy) + m->yaw_rate[i] * by[i];
+        uy[i] = -(-s * Vx + c * Vy) - m->yaw_rate[i] * bx[i];
+    }
+    const double lim[2] = {r->thiv_dx, r->thiv_dy};
+    double v[2];
+    o->thiv_impact = first_crossing(bx, by, ux, uy, n, dt, lim, &o->t_thiv, v);
+    o->thiv = hypot(v[0], v[1]);
+    o->phd = 0.0;
+    o->t_phd = NAN;
+    if (o->thiv_impact != CS_FLAIL_IN_RECORD) return;
+    int from = (int)ceil(o->t_thiv / dt - 1e-9), at;
+    o->phd = resultant_mean_max(m->ax, m->ay, n, window_samples(r->phd_window, dt), from, &at) / CS_G0;
+    o->t_phd = at >= 0 ? at * dt : NAN;
+}
+
+/* EN 1317-1's ASI: the largest over the windows of sqrt(sum (mean a_k / limit_k)^2). */
+static void asi(const double *a[3], int n, double dt, const cs_occupant_rules *r, cs_occupant_risk *o) {
+    int w = window_samples(r->asi_window, dt);
+    if (w > n) w = n;
+    double s[3] = {0, 0, 0};
+    for (int i = 0; i < w; i++)
+        for (int k = 0; k < 3; k++)
+            s[k] += a[k][i];
+    o->asi = -1.0;
+    for (int i = 0;; i++) {
+        double q = 0.0;
+        for (int k = 0; k < 3; k++)
+            q += pow(s[k] / w / r->asi_limit[k], 2);
+        if (sqrt(q) > o->asi) o->asi = sqrt(q), o->t_asi = i * dt;
+        if (i + w >= n) break;
+        for (int k = 0; k < 3; k++)
+            s[k] += a[k][i + w] - a[k][i];
+    }
+}
+
+int cs_occupant_risk_compute(const cs_vehicle_motion *m, const cs_occupant_rules *rules,
+                             cs_occupant_risk *out, char *why, size_t why_size) {
+    memset(out, 0, sizeof *out);
+    int n = m->n;
+    if (n < 2 || !(m->dt > 0.0)) {
+        snprintf(why, why_size, "the vehicle's motion has %d samples: at least 2 are needed", n);
+        return -1;
+    }
+    const double *in[4] = {m->ax, m->ay, m->az, m->yaw_rate};
+    for (int k = 0; k < 4; k++)
+        for (int i = 0; i < n; i++)
+            if (!isfinite(in[k][i])) {
+                snprintf(why, why_size, "the vehicle's motion is not finite at t = %g s (series %d)",
+                         i * m->dt, k);
+                return -1;
+            }
+    double *buf = malloc((size_t)n * 7 * sizeof *buf);
+    if (!buf) {
+        snprintf(why, why_size, "out of memory for the occupant risk (%d samples)", n);
+        return -1;
+    }
+    double *f[3] = {buf, buf + n, buf + 2 * n}, *work = buf + 3 * n;
+    for (int k = 0; k < 3; k++)
+        if (cs_cfc_filter(rules->cfc, m->dt, in[k], f[k], n) != 0) {
+            snprintf(why, why_size, "a sample interval of %g s is too long for a CFC %g filter", m->dt,
+                     rules->cfc);
+            free(buf);
+            return -1;
+        }
+    flail(f[0], f[1], n, m->dt, rules, work, out);
+    cs_vehicle_motion filtered = {n, m->dt, f[0], f[1], f[2], m->yaw_rate};
+    thiv(&filtered, rules, work, out);
+    const double *a[3] = {f[0], f[1], f[2]};
+    asi(a, n, m->dt, rules, out);
+    free(buf);
+    return 0;
+}
+
+/* A world-frame vector into the vehicle's axes: the transpose of Rz(yaw) Ry(pitch) Rx(roll). */
+static void world_to_body(const cs_vehicle_view *v, const double w[3], double b[3]) {
+    double cr = cos(v->roll), sr = sin(v->roll), cp = cos(v->pitch), sp = sin(v->pitch), cy = cos(v->yaw),
+           sy = sin(v->yaw);
+    const double R[3][3] = {{cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr},
+                            {sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr},
+                            {-sp, cp * sr, cp * cr}};
+    for (int i = 0; i < 3; i++)
+        b[i] = R[0][i] * w[0] + R[1][i] * w[1] + R[2][i] * w[2];
+}
+
+static void cross(const double a[3], const double b[3], double out[3]) {
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* Frame i's acceleration in the vehicle's axes at point r from the CG (NULL: the CG itself). */
+static void frame_acceleration(const cs_record *rec, int i, const double *r, double b[3]) {
+    const cs_vehicle_view *v = cs_record_vehicle(rec, i);
+    world_to_body(v, v->acceleration, b);
+    if (!r) return;
+    int frames = cs_record_frame_count(rec), lo = i > 0 ? i - 1 : i, hi = i + 1 < frames ? i + 1 : i;
+    const cs_vehicle_view *p = cs_record_vehicle(rec, lo), *q = cs_record_vehicle(rec, hi);
+    double alpha[3] = {0, 0, 0}, wr[3], wwr[3], ar[3];
+    for (int k = 0; k < 3 && q->t > p->t; k++)
+        alpha[k] = (q->angular_velocity[k] - p->angular_velocity[k]) / (q->t - p->t);
+    cross(alpha, r, ar);
+    cross(v->angular_velocity, r, wr);
+    cross(v->angular_velocity, wr, wwr);
+    for (int k = 0; k < 3; k++)
+        b[k] += ar[k] + wwr[k];
+}
+
+int cs_vehicle_motion_of_record(const cs_record *rec, double t_contact, double dt, const double *point,
+                                cs_vehicle_motion *m, char *why, size_t why_size) {
+    memset(m, 0, sizeof *m);
+    int frames = cs_record_frame_count(rec);
+    double t_last = frames > 0 ? cs_record_vehicle(rec, frames - 1)->t : -1.0;
+    if (frames < 2 || t_contact < 0.0 || t_last <= t_contact) {
+        snprintf(why, why_size, "%s",
+                 t_contact < 0.0 ? "the vehicle never touched the barrier"
+                                 : "the record has no motion after the first contact");
+        return -1;
+    }
+    int n = (int)floor((t_last - t_contact) / dt + 1e-9) + 1;
+    double *buf = malloc((size_t)n * 4 * sizeof *buf);
+    if (!buf) {
+        snprintf(why, why_size, "out of memory for the vehicle's motion (%d samples)", n);
+        return -1;
+    }
+    double *ax = buf, *ay = buf + n, *az = buf + 2 * n, *r = buf + 3 * n;
+    int j = 0; /* the frame at or before the sample */
+    for (int i = 0; i < n; i++) {
+        double t = t_contact + i * dt;
+        while (j + 2 < frames && cs_record_vehicle(rec, j + 1)->t <= t)
+            j++;
+        const cs_vehicle_view *p = cs_record_vehicle(rec, j), *q = cs_record_vehicle(rec, j + 1);
+        double f = q->t > p->t ? (t - p->t) / (q->t - p->t) : 0.0, bp[3], bq[3];
+        f = f < 0.0 ? 0.0 : f > 1.0 ? 1.0 : f;
+        frame_acceleration(rec, j, point, bp);
+        frame_acceleration(rec, j + 1, point, bq);
+        ax[i] = bp[0] + f * (bq[0] - bp[0]);
+        ay[i] = bp[1] + f * (bq[1] - bp[1]);
+        az[i] = bp[2] + f * (bq[2] - bp[2]);
+        r[i] = p->angular_velocity[2] + f * (q->angular_velocity[2] - p->angular_velocity[2]);
+    }
+    *m = (cs_vehicle_motion){n, dt, ax, ay, az, r};
+    return 0;
+}
+
+void cs_record_roll_pitch_peaks(const cs_record *rec, double *roll, double *pitch) {
+    *roll = *pitch = 0.0;
+    for (int i = 0; i < cs_record_frame_count(rec); i++) {
+        const cs_vehicle_view *v = cs_record_vehicle(rec, i);
+        if (fabs(v->roll) > *roll) *roll = fabs(v->roll);
+        if (fabs(v->pitch) > *pitch) *pitch = fabs(v->pitch);
+    }
+}
+
+int cs_occupant_risk_of_run(const cs_record *rec, double t_contact, const double *point,
+                            cs_occupant_risk *out, char *why, size_t why_size) {
+    cs_vehicle_motion m;
+    if (cs_vehicle_motion_of_record(rec, t_contact, 1e-4, point, &m, why, why_size) != 0) return -1;
+    cs_occupant_rules rules = cs_default_occupant_rules();
+    int rc = cs_occupant_risk_compute(&m, &rules, out, why, why_size);
+    free((void *)m.ax);
+    return rc;
+}

@@ -1,0 +1,214 @@
+/* NCHRP Report 350 and MASH criteria: which a test has, in order; each limit's edge (OIV 12.2 m/s and ORA
+ * 20.49 g for MASH, 12 m/s and 20 g for NCHRP 350's L, roll 75 deg, 60% of the impact angle, the exit box's
+ * 10 m); the not-judged ones never passed; the exit box's A from the vehicle's size and the wheels' path
+ * extrapolated straight from the loss of contact against its closed form. */
+#include "check.h"
+#include "out/record.h"
+#include "study/criteria.h"
+
+#define DEG (3.14159265358979323846 / 180.0)
+
+static cs_roadside_test test_of(const char *standard, const char *name) {
+    cs_roadside_test t[3];
+    assert_int_equal(cs_roadside_tests(standard, 0, name, t), 1);
+    return t[0];
+}
+
+/* The criteria of a test on a result, their letters joined ("A D F ..."). */
+static int judge(const char *standard, const char *name, const cs_test_result *r, cs_criterion *c, char *ids,
+                 size_t size) {
+    cs_roadside_test t = test_of(standard, name);
+    int n = cs_roadside_criteria(&t, r, c);
+    ids[0] = '\0';
+    for (int k = 0; k < n; k++)
+        snprintf(ids + strlen(ids), size - strlen(ids), "%s%s", k ? " " : "", c[k].id);
+    return n;
+}
+
+static const cs_criterion *find(const cs_criterion *c, int n, const char *id) {
+    for (int k = 0; k < n; k++)
+        if (strcmp(c[k].id, id) == 0) return &c[k];
+    fail_msg("no criterion %s", id);
+    return NULL;
+}
+
+/* The verdict of criterion id of a test on a result. */
+static cs_verdict verdict_of(const char *standard, const char *name, const cs_test_result *r,
+                             const char *id) {
+    cs_criterion c[CS_CRITERIA_MAX];
+    char ids[128];
+    int n = judge(standard, name, r, c, ids, sizeof ids);
+    return find(c, n, id)->verdict;
+}
+
+static cs_summary redirected(double exit_angle) {
+    cs_summary s;
+    memset(&s, 0, sizeof s);
+    s.outcome = CS_REDIRECTED, s.exit_speed_mps = 18.0, s.exit_angle_deg = exit_angle;
+    return s;
+}
+
+static void criteria_of_each_test(void **state) {
+    (void)state;
+    cs_summary s = redirected(10.0);
+    cs_occupant_risk o = {0};
+    cs_exit_box box = {4.9, 10.0, 0.0, 20.0, 0};
+    cs_test_result r = {&s, &o, NULL, 0.0, 0.0, &box};
+    cs_criterion c[CS_CRITERIA_MAX];
+    char ids[128];
+    judge("nchrp-350", "3-10", &r, c, ids, sizeof ids);
+    assert_string_equal(ids, "A D F H I K M");
+    judge("nchrp-350", "3-11", &r, c, ids, sizeof ids);
+    assert_string_equal(ids, "A D F L K M");
+    judge("nchrp-350", "4-12", &r, c, ids, sizeof ids);
+    assert_string_equal(ids, "A D G K M");
+    judge("mash", "3-11", &r, c, ids, sizeof ids);
+    assert_string_equal(ids, "A D F H I exit box");
+    int n = judge("mash", "4-12", &r, c, ids, sizeof ids);
+    assert_string_equal(ids, "A D G exit box");
+    /* D is never passed: the model has no debris or compartment */
+    assert_int_equal(find(c, n, "D")->verdict, CS_VERDICT_NOT_JUDGED);
+    n = judge("nchrp-350", "3-11", &r, c, ids, sizeof ids);
+    assert_int_equal(find(c, n, "K")->verdict, CS_VERDICT_NOT_JUDGED);
+    /* no occupant risk: H and I not judged, with the reason */
+    r.occupant = NULL, r.occupant_why = "the vehicle never touched the barrier";
+    n = judge("mash", "3-10", &r, c, ids, sizeof ids);
+    assert_int_equal(find(c, n, "H")->verdict, CS_VERDICT_NOT_JUDGED);
+    assert_int_equal(find(c, n, "I")->verdict, CS_VERDICT_NOT_JUDGED);
+    assert_non_null(strstr(find(c, n, "H")->detail, "never touched"));
+}
+
+static void limits(void **state) {
+    (void)state;
+    cs_summary s = redirected(10.0);
+    cs_occupant_risk o = {0};
+    cs_test_result r = {&s, &o, NULL, 0.0, 0.0, NULL};
+    cs_criterion c[CS_CRITERIA_MAX];
+    char ids[128];
+    struct {
+        const char *std, *test, *id;
+        double oiv_x, oiv_y, ora_x, ora_y;
+        cs_verdict v;
+    } cases[] = {
+        {"mash", "3-11", "H", 12.2, 0.0, 0, 0, CS_VERDICT_PASS},
+        {"mash", "3-11", "H", 0.0, 12.21, 0, 0, CS_VERDICT_FAIL},
+        {"mash", "3-10", "I", 0, 0, 20.49, 0.0, CS_VERDICT_PASS},
+        {"mash", "3-10", "I", 0, 0, 0.0, 20.5, CS_VERDICT_FAIL},
+        {"nchrp-350", "3-10", "H", 12.0, 0, 0, 0, CS_VERDICT_PASS},
+        {"nchrp-350", "3-10", "H", 0, 12.01, 0, 0, CS_VERDICT_FAIL},
+        {"nchrp-350", "3-10", "I", 0, 0, 0, 20.0, CS_VERDICT_PASS},
+        {"nchrp-350", "3-10", "I", 0, 0, 20.01, 0, CS_VERDICT_FAIL},
+        /* L: longitudinal only; a lateral 15 m/s does not count */
+        {"nchrp-350", "3-11", "L", 12.0, 15.0, 20.0, 30.0, CS_VERDICT_PASS},
+        {"nchrp-350", "3-11", "L", 12.01, 0, 0, 0, CS_VERDICT_FAIL},
+        {"nchrp-350", "3-11", "L", 0, 0, 20.01, 0, CS_VERDICT_FAIL},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        o.oiv_x = cases[i].oiv_x, o.oiv_y = cases[i].oiv_y, o.ora_x = cases[i].ora_x,
+        o.ora_y = cases[i].ora_y;
+        int n = judge(cases[i].std, cases[i].test, &r, c, ids, sizeof ids);
+        if (find(c, n, cases[i].id)->verdict != cases[i].v)
+            fail_msg("case %zu: %s %s %s: %s", i, cases[i].std, cases[i].test, cases[i].id,
+                     find(c, n, cases[i].id)->detail);
+    }
+    /* roll and pitch: 75 deg passes, past it fails */
+    memset(&o, 0, sizeof o);
+    r.roll_peak = 75 * DEG, r.pitch_peak = 10 * DEG;
+    assert_int_equal(verdict_of("mash", "3-11", &r, "F"), CS_VERDICT_PASS);
+    r.pitch_peak = 75.1 * DEG;
+    assert_int_equal(verdict_of("mash", "3-11", &r, "F"), CS_VERDICT_FAIL);
+    r.roll_peak = r.pitch_peak = 0.0;
+    /* M: 60% of 25 deg is 15 deg */
+    s = redirected(14.9);
+    assert_int_equal(verdict_of("nchrp-350", "3-11", &r, "M"), CS_VERDICT_PASS);
+    s = redirected(15.1);
+    assert_int_equal(verdict_of("nchrp-350", "3-11", &r, "M"), CS_VERDICT_FAIL);
+    /* A: through fails, stopped passes, the time limit is not judged */
+    s.outcome = CS_BREAKTHROUGH;
+    assert_int_equal(verdict_of("mash", "3-11", &r, "A"), CS_VERDICT_FAIL);
+    assert_int_equal(verdict_of("mash", "3-11", &r, "exit box"), CS_VERDICT_NOT_JUDGED);
+    s.outcome = CS_STOPPED;
+    assert_int_equal(verdict_of("mash", "3-11", &r, "A"), CS_VERDICT_PASS);
+    s.outcome = CS_TIME_LIMIT;
+    assert_int_equal(verdict_of("nchrp-350", "3-11", &r, "A"), CS_VERDICT_NOT_JUDGED);
+    assert_int_equal(verdict_of("nchrp-350", "3-11", &r, "M"), CS_VERDICT_NOT_JUDGED);
+}
+
+/* A record of two frames: the vehicle (yaw 0) with its left wheels over the barrier's line, then at its
+ * end moving away at (vx, vy). */
+static void exit_box_path(double vx, double vy, cs_exit_box *box) {
+    cs_vehicle_view frames[2];
+    memset(frames, 0, sizeof frames);
+    frames[0].position[0] = 0.0, frames[0].position[1] = -0.5, frames[0].velocity[0] = 20.0;
+    frames[1].t = 1.0, frames[1].position[0] = 5.0, frames[1].position[1] = -2.0;
+    frames[1].velocity[0] = vx, frames[1].velocity[1] = vy;
+    cs_record rec;
+    memset(&rec, 0, sizeof rec);
+    rec.frame_count = 2, rec.vehicle = frames;
+    cs_vehicle_def v;
+    memset(&v, 0, sizeof v);
+    v.front_width = 1.9, v.cg_to_front = 2.0, v.cg_to_rear = 3.5, v.track = 1.6, v.wheelbase = 3.0,
+    v.cg_to_front_axle = 1.2;
+    cs_exit_box_of_record(&rec, &v, 50.0, box);
+}
+
+static void exit_box(void **state) {
+    (void)state;
+    cs_exit_box box;
+    exit_box_path(10.0, -5.0, &box);
+    double a = 2.0 + 1.9 + 0.16 * 5.5;
+    CHECK_REL(box.a, a, 1e-12);
+    CHECK_REL(box.b, 10.0, 1e-12);
+    CHECK_REL(box.start_x, 1.2, 1e-12); /* the front left wheel over y = 0 in the first frame */
+    /* the rear right wheel (x 5 - 1.8, y -2 - 0.8) goes straight on to y = -a */
+    double t = (-a + 2.8) / -5.0;
+    CHECK_REL(box.cross_along, 3.2 + 10.0 * t - 1.2, 1e-12);
+    assert_int_equal(box.crossed_in_run, 0);
+    cs_summary s = redirected(26.6);
+    cs_test_result r = {&s, NULL, "none", 0.0, 0.0, &box};
+    cs_criterion c[CS_CRITERIA_MAX];
+    char ids[128];
+    int n = judge("mash", "3-11", &r, c, ids, sizeof ids);
+    assert_int_equal(find(c, n, "exit box")->verdict, CS_VERDICT_FAIL); /* 5.96 m < 10 m */
+    /* a flatter exit: 1.98 m across at 1 m/s while 10 m/s along */
+    exit_box_path(10.0, -1.0, &box);
+    CHECK_REL(box.cross_along, 3.2 + 10.0 * (a - 2.8) - 1.2, 1e-12);
+    n = judge("mash", "3-11", &r, c, ids, sizeof ids);
+    assert_int_equal(find(c, n, "exit box")->verdict, CS_VERDICT_PASS);
+    /* moving parallel: never crosses */
+    exit_box_path(10.0, 0.0, &box);
+    assert_true(isinf(box.cross_along));
+    n = judge("mash", "3-11", &r, c, ids, sizeof ids);
+    assert_int_equal(find(c, n, "exit box")->verdict, CS_VERDICT_PASS);
+}
+
+static void test_as_run(void **state) {
+    (void)state;
+    struct {
+        double mass;
+        const char *standard, *name;
+    } cases[] = {{2000, "nchrp-350", "3-11"}, {2100, "nchrp-350", "3-11"}, {2270, "mash", "3-11"},
+                 {820, "nchrp-350", "3-10"},  {1100, "mash", "3-10"},      {8000, "nchrp-350", "4-12"},
+                 {10000, "mash", "4-12"},     {6804, NULL, NULL},          {2110, NULL, NULL}};
+    cs_vehicle_def v;
+    memset(&v, 0, sizeof v);
+    cs_roadside_test t;
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        v.mass = cases[i].mass;
+        int found = cs_roadside_test_as_run(&v, 27.6, 25.7 * DEG, &t);
+        assert_int_equal(found, cases[i].standard != NULL);
+        if (!found) continue;
+        assert_string_equal(t.standard, cases[i].standard);
+        assert_string_equal(t.name, cases[i].name);
+        CHECK_REL(t.speed, 27.6, 1e-12); /* the run's own speed and angle */
+        CHECK_REL(t.angle, 25.7 * DEG, 1e-12);
+    }
+    v.mass = 2000; /* head-on: no roadside test */
+    assert_int_equal(cs_roadside_test_as_run(&v, 27.6, 90 * DEG, &t), 0);
+}
+
+int main(void) {
+    const struct CMUnitTest tests[] = {cmocka_unit_test(criteria_of_each_test), cmocka_unit_test(limits),
+                                       cmocka_unit_test(exit_box), cmocka_unit_test(test_as_run)};
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
