@@ -19,7 +19,7 @@
 #include "out/report_html.h"
 
 static const char usage[] =
-    "Usage: cablesim designer [FILE] [-o DIR] [--force]\n"
+    "Usage: cablesim designer [FILE] [-o DIR] [--force] [--allow-path DIR]...\n"
     "Writes DIR/designer.html (default DIR: results/<model name>-designer): one page that opens from disk,\n"
     "without a network, and runs the model of FILE (default: the APS3 example) in the browser. A form\n"
     "holds the design's main values with their units (ropes and pretension, post sections, spacing and\n"
@@ -29,6 +29,8 @@ static const char usage[] =
     "swept over a range, and the edited model downloaded as YAML that cablesim run reproduces exactly.\n"
     "  -o, --out DIR   the output folder (outputs as cablesim run --help says)\n"
     "  --force         write into DIR beside files no manifest lists (none of them is removed)\n"
+    "  --allow-path D  the files FILE names may be in D, as for cablesim run; the page holds the text of\n"
+    "                  each file the model was read from, and of no other\n"
     "Exit status: 0 written, 1 not written, 2 a bad model or command line.\n";
 
 #ifdef CS_HAVE_DESIGNER
@@ -68,18 +70,12 @@ static void page_path(const design *d, int i, char *out, size_t size) {
     }
 }
 
+/* A file the loader read, again: the same rule, a regular file of at most CS_INPUT_MAX bytes. */
 static int write_text_of(FILE *f, const char *real) {
-    FILE *in = fopen(real, "rb");
-    if (!in) return -1;
-    char *text = NULL;
-    size_t size = 0, got;
-    FILE *m = open_memstream(&text, &size);
-    char chunk[4096];
-    while (m && (got = fread(chunk, 1, sizeof chunk, in)) > 0)
-        fwrite(chunk, 1, got, m);
-    fclose(in);
-    if (!m) return -1;
-    fclose(m);
+    char *text = NULL, why[256];
+    size_t size = 0;
+    int err;
+    if (cs_input_read(real, CS_INPUT_MAX, &text, &size, &err, why, sizeof why) != 0) return -1;
     cs_json_page_string(f, text);
     free(text);
     return 0;
@@ -167,7 +163,7 @@ static const char *default_model(cs_loader *l, char *buf, size_t size) {
 
 static int write_page(design *d, const char *dir, int force) {
 #ifdef CS_HAVE_DESIGNER
-    char why[1024], end_why[512];
+    char why[1024];
     cs_outdir out;
     if (cs_out_open(&out, dir, force ? CS_OUT_FORCE : 0, why, sizeof why) != 0) {
         fprintf(stderr, "cablesim designer: nothing written: %s\n", why);
@@ -177,8 +173,7 @@ static int write_page(design *d, const char *dir, int force) {
     int rc = f ? cs_write_page(f, cs_designer_page, cs_designer_page_size, d->name, "designer.html",
                                write_design, d, why, sizeof why)
                : -1;
-    if (f && cs_out_end(&out, f, end_why, sizeof end_why) != 0 && rc == 0)
-        rc = -1, snprintf(why, sizeof why, "%s", end_why);
+    if (f) rc = cs_out_finish(&out, f, rc, why, sizeof why);
     if (rc == 0) rc = cs_out_commit(&out, why, sizeof why);
     if (rc != 0) {
         cs_out_abort(&out);
@@ -200,15 +195,20 @@ int cs_command_designer(int argc, char **argv) {
     static const cs_cli cli = {"designer", usage};
     static const struct option opts[] = {{"out", required_argument, NULL, 'o'},
                                          {"force", no_argument, NULL, 'f'},
+                                         {"allow-path", required_argument, NULL, 'A'},
                                          {"help", no_argument, NULL, 'h'},
                                          {NULL, 0, NULL, 0}};
-    const char *dir = NULL, *file = NULL;
-    int v, force = 0;
+    const char *dir = NULL, *file = NULL, *allow[64];
+    int v, force = 0, allow_count = 0;
     optind = 1;
     while ((v = cs_cli_next(&cli, argc, argv, "ho:", opts)) != -1) {
         if (v == 'h') return cs_cli_help(&cli);
         if (v == 'f')
             force = 1;
+        else if (v == 'A' && allow_count == 64)
+            return cs_cli_usage_error(&cli, "more than 64 --allow-path");
+        else if (v == 'A')
+            allow[allow_count++] = optarg;
         else if (v == 'o')
             dir = optarg;
         else
@@ -223,6 +223,11 @@ int cs_command_designer(int argc, char **argv) {
         fprintf(stderr, "cablesim designer: %s\n", why);
         return CS_EXIT_RUN;
     }
+    for (int i = 0; i < allow_count; i++)
+        if (cs_loader_allow_path(l, allow[i], buf, sizeof buf) != 0) {
+            cs_loader_free(l);
+            return cs_cli_usage_error(&cli, "--allow-path %s", buf);
+        }
     file = argc - 1 > optind ? argv[1 + optind] : default_model(l, buf, sizeof buf);
     int rc = CS_EXIT_USAGE;
     cs_model_input in;

@@ -23,9 +23,9 @@ enum { EXIT_RUN = CS_EXIT_RUN, EXIT_BAD = CS_EXIT_USAGE };
 
 static const char usage[] =
     "Usage: cablesim run FILE [-o DIR] [--force] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots] "
-    "[--report] [--occupant-at X,Y,Z]\n" /* one line: help2man takes the synopsis from lines that begin with
-                                            the command */
-    "  or:  cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]...\n"
+    "[--report] [--occupant-at X,Y,Z] [--allow-path DIR]...\n" /* one line: help2man takes the synopsis from
+                                                                 lines that begin with the command */
+    "  or:  cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]... [--allow-path DIR]...\n"
     "  or:  cablesim sweep SPEC.yaml [-o DIR] [--threads N] [--quiet] ...\n"
     "  or:  cablesim sweep --resume DIR\n"
     "  or:  cablesim rate FILE --standard astm-f2656|sd-std-02.01|sd-std-02.01a [--class M50|PU60|K8]\n"
@@ -64,7 +64,7 @@ static const char usage[] =
 
 static const char run_usage[] =
     "Usage: cablesim run FILE [-o DIR] [--force] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
-    "                    [--report] [--occupant-at X,Y,Z]\n"
+    "                    [--report] [--occupant-at X,Y,Z] [--allow-path DIR]...\n"
     "Runs the model of FILE and prints a summary: the outcome, the model's hash, the response parameters,\n"
     "the designations as run (docs/ratings.md), the failure events. Writes DIR/timeseries.csv,\n"
     "DIR/events.csv and DIR/summary.json; --plots also the run's figures as DIR/plots/*.png and *.svg,\n"
@@ -83,12 +83,14 @@ static const char run_usage[] =
     "  --plots, --report    the figures, the HTML report\n"
     "  --occupant-at X,Y,Z  the occupant risk at this point of the vehicle, not at its CG: lengths from the\n"
     "                       CG, forward, to the left and up: --occupant-at \"0.3 m,0.4 m,0.2 m\"\n"
+    "  --allow-path DIR     the files FILE names (file:) may be in DIR and its subfolders, beyond FILE's\n"
+    "                       folder (and its subfolders) and the parts library's\n"
     "Exit status: 0 done, 1 the run or its outputs failed, 2 a bad model or command line.\n";
 
 static const char check_usage[] =
-    "Usage: cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]...\n"
+    "Usage: cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]... [--allow-path DIR]...\n"
     "Checks a model file (or a sweep spec, see cablesim sweep --help) without running it: every problem as\n"
-    "FILE:LINE:COLUMN.\n"
+    "FILE:LINE:COLUMN. --allow-path DIR: the files FILE names may be in DIR, as for cablesim run.\n"
     "Exit status: 0 valid, 2 problems or a bad command line.\n";
 
 static const char list_usage[] = "Usage: cablesim list\n"
@@ -139,18 +141,22 @@ static int bad_usage(const char *what) {
 /* Parse the command line of run or check into o, queueing --set, --dt and --t-end on the loader.
  * Returns 0, a help's 0 with o->file NULL, or EXIT_BAD. */
 static int parse(int argc, char **argv, const cs_cli *cli, int is_run, options *o, cs_loader *l) {
-    enum { SET = 1000, DT, T_END, PLOTS, REPORT, FORCE, OCCUPANT };
-    static const struct option run_opts[] = {
-        {"out", required_argument, NULL, 'o'}, {"set", required_argument, NULL, SET},
-        {"dt", required_argument, NULL, DT},   {"t-end", required_argument, NULL, T_END},
-        {"plots", no_argument, NULL, PLOTS},   {"report", no_argument, NULL, REPORT},
-        {"force", no_argument, NULL, FORCE},   {"occupant-at", required_argument, NULL, OCCUPANT},
-        {"help", no_argument, NULL, 'h'},      {NULL, 0, NULL, 0}};
-    static const struct option check_opts[] = {{"set", required_argument, NULL, SET},
-                                               {"dt", required_argument, NULL, DT},
-                                               {"t-end", required_argument, NULL, T_END},
-                                               {"help", no_argument, NULL, 'h'},
-                                               {NULL, 0, NULL, 0}};
+    enum { SET = 1000, DT, T_END, PLOTS, REPORT, FORCE, OCCUPANT, ALLOW };
+    static const struct option run_opts[] = {{"out", required_argument, NULL, 'o'},
+                                             {"set", required_argument, NULL, SET},
+                                             {"dt", required_argument, NULL, DT},
+                                             {"t-end", required_argument, NULL, T_END},
+                                             {"plots", no_argument, NULL, PLOTS},
+                                             {"report", no_argument, NULL, REPORT},
+                                             {"force", no_argument, NULL, FORCE},
+                                             {"occupant-at", required_argument, NULL, OCCUPANT},
+                                             {"allow-path", required_argument, NULL, ALLOW},
+                                             {"help", no_argument, NULL, 'h'},
+                                             {NULL, 0, NULL, 0}};
+    static const struct option check_opts[] = {
+        {"set", required_argument, NULL, SET},     {"dt", required_argument, NULL, DT},
+        {"t-end", required_argument, NULL, T_END}, {"allow-path", required_argument, NULL, ALLOW},
+        {"help", no_argument, NULL, 'h'},          {NULL, 0, NULL, 0}};
     int v;
     optind = 1;
     while ((v = cs_cli_next(cli, argc, argv, is_run ? "ho:" : "h", is_run ? run_opts : check_opts)) != -1) {
@@ -173,6 +179,10 @@ static int parse(int argc, char **argv, const cs_cli *cli, int is_run, options *
             break;
         case OCCUPANT:
             if (occupant_at(cli, optarg, o) != 0) return EXIT_BAD;
+            break;
+        case ALLOW:
+            if (cs_loader_allow_path(l, optarg, set, sizeof set) != 0)
+                return cs_cli_usage_error(cli, "--allow-path %s", set);
             break;
         case SET:
         case DT:
@@ -226,12 +236,7 @@ static int write_report_html(cs_outdir *out, void *user, char *why, size_t why_s
     if (!f) return -1;
     int rc = cs_write_report_html(f, cs_report_page, cs_report_page_size, a->in, a->state, a->rec, a->info,
                                   why, why_size);
-    char end_why[512];
-    if (cs_out_end(out, f, end_why, sizeof end_why) != 0 && rc == 0) {
-        snprintf(why, why_size, "%s", end_why);
-        rc = -1;
-    }
-    return rc;
+    return cs_out_finish(out, f, rc, why, why_size);
 #else
     (void)out, (void)a, (void)why, (void)why_size;
     fprintf(stderr, "cablesim: warning: no report.html: this cablesim was built without node and npm "

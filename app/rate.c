@@ -25,8 +25,9 @@
 
 static const char rate_usage[] =
     "Usage: cablesim rate FILE --standard astm-f2656|sd-std-02.01|sd-std-02.01a [--class CLASS]\n"
-    "                     [--set PATH=VALUE]...\n"
+    "                     [--set PATH=VALUE]... [--allow-path DIR]...\n"
     "  or:  cablesim rate FILE --standard nchrp-350|mash [--level 3|4 | --test 3-11] [--set PATH=VALUE]...\n"
+    "                     [--allow-path DIR]...\n"
     "Runs a standard's test conditions against the barrier of FILE, at its impact point, and reads each\n"
     "result as the standard does (docs/ratings.md).\n"
     "Anti-ram: the test vehicle is the model's (after --set), head-on. ASTM F2656 tests C, PU, M and H (a\n"
@@ -40,6 +41,7 @@ static const char rate_usage[] =
     "4-12), or one --test (3-10, 3-11, 4-10, 4-11, 4-12); each test's occupant risk (OIV, ORA, THIV, PHD,\n"
     "ASI) and every evaluation criterion of the standard: pass, FAIL, or not judged where the model cannot\n"
     "tell (debris, compartment deformation, the path after the loss of contact).\n"
+    "--allow-path DIR: the files FILE names may be in DIR, as for cablesim run.\n"
     "Exit status: 0 done, 1 a run failed, 2 a bad model or command line.\n";
 
 static const cs_cli rate_cli = {"rate", rate_usage};
@@ -282,13 +284,11 @@ int cs_command_rate(int argc, char **argv) {
         fprintf(stderr, "cablesim: %s\n", why);
         return CS_EXIT_RUN;
     }
-    static const struct option longopts[] = {{"standard", required_argument, NULL, 's'},
-                                             {"class", required_argument, NULL, 'c'},
-                                             {"level", required_argument, NULL, 'l'},
-                                             {"test", required_argument, NULL, 't'},
-                                             {"set", required_argument, NULL, 'S'},
-                                             {"help", no_argument, NULL, 'h'},
-                                             {NULL, 0, NULL, 0}};
+    static const struct option longopts[] = {
+        {"standard", required_argument, NULL, 's'}, {"class", required_argument, NULL, 'c'},
+        {"level", required_argument, NULL, 'l'},    {"test", required_argument, NULL, 't'},
+        {"set", required_argument, NULL, 'S'},      {"allow-path", required_argument, NULL, 'A'},
+        {"help", no_argument, NULL, 'h'},           {NULL, 0, NULL, 0}};
     int rc = -1, v;
     optind = 1;
     while (rc < 0 && (v = cs_cli_next(&rate_cli, argc, argv, "h", longopts)) != -1) {
@@ -304,6 +304,10 @@ int cs_command_rate(int argc, char **argv) {
             test = optarg;
         else if (v == 'S')
             cs_loader_set(l, optarg);
+        else if (v == 'A' && cs_loader_allow_path(l, optarg, why, sizeof why) != 0)
+            rc = cs_cli_usage_error(&rate_cli, "--allow-path %s", why);
+        else if (v == 'A')
+            continue;
         else
             rc = CS_EXIT_USAGE;
     }

@@ -39,13 +39,15 @@ enum { EXIT_RUN = CS_EXIT_RUN, EXIT_BAD = CS_EXIT_USAGE };
 
 static const char sweep_usage[] =
     "Usage: cablesim sweep SPEC.yaml [-o DIR] [--threads N] [--runs N] [--seed S] [--set PATH=VALUE]...\n"
-    "                      [--t-end T] [--dt T] [--netcdf] [--quiet] [--force]\n"
+    "                      [--t-end T] [--dt T] [--netcdf] [--allow-path DIR]... [--quiet] [--force]\n"
     "  or:  cablesim sweep --resume DIR [--threads N] [--quiet] [--force]\n"
     "Runs the study of SPEC (a base model, the values to vary: grids, or Monte Carlo / Latin hypercube\n"
     "samples) and writes DIR/runs.csv, DIR/summary.md and DIR/summary.json (default DIR: results/<spec\n"
     "name>). --threads: OpenMP threads per process (default: OMP_NUM_THREADS or the cores, shared among\n"
     "the ranks of a machine). Under MPI (mpirun -n R cablesim-mpi sweep ...) the runs are shared among\n"
     "the R ranks. --runs and --seed replace the spec's; --set, --t-end and --dt apply to every run.\n"
+    "--allow-path DIR: the model (SPEC's `model:`) and the files it names may be in DIR and its subfolders,\n"
+    "beyond SPEC's folder (and its subfolders) and the parts library's.\n"
     "--netcdf (or `netcdf: true` in SPEC) also writes DIR/runs.nc: runs.csv's table as netCDF (CF-1.8).\n"
     "SPEC's `plot:` draws a response against a varied value in DIR/plots/<y>-vs-<x>.png (docs/sweep.md).\n"
     "DIR is checked and locked before any run; the files appear together at the end, listed in\n"
@@ -117,6 +119,8 @@ typedef struct sweep_opts {
     int threads, quiet, netcdf, force;
     long runs;
     const char *seed;
+    const char *allow[64];
+    int allow_count;
     const char *sets[256];
     int set_count;
     char set_text[256][1100]; /* --t-end and --dt as sets */
@@ -129,20 +133,15 @@ static int sweep_bad_usage(int rank, const char *what, const char *arg) {
 
 /* The command line into o. Returns 0, -1 after --help (exit 0), or EXIT_BAD. */
 static int parse_opts(int argc, char **argv, sweep_opts *o, int rank) {
-    enum { THREADS = 1000, RUNS, SEED, SET, T_END, DT, NETCDF, QUIET, RESUME, FORCE };
-    static const struct option longopts[] = {{"out", required_argument, NULL, 'o'},
-                                             {"threads", required_argument, NULL, THREADS},
-                                             {"runs", required_argument, NULL, RUNS},
-                                             {"seed", required_argument, NULL, SEED},
-                                             {"set", required_argument, NULL, SET},
-                                             {"t-end", required_argument, NULL, T_END},
-                                             {"dt", required_argument, NULL, DT},
-                                             {"netcdf", no_argument, NULL, NETCDF},
-                                             {"quiet", no_argument, NULL, QUIET},
-                                             {"resume", required_argument, NULL, RESUME},
-                                             {"force", no_argument, NULL, FORCE},
-                                             {"help", no_argument, NULL, 'h'},
-                                             {NULL, 0, NULL, 0}};
+    enum { THREADS = 1000, RUNS, SEED, SET, T_END, DT, NETCDF, QUIET, RESUME, FORCE, ALLOW };
+    static const struct option longopts[] = {
+        {"out", required_argument, NULL, 'o'},   {"threads", required_argument, NULL, THREADS},
+        {"runs", required_argument, NULL, RUNS}, {"seed", required_argument, NULL, SEED},
+        {"set", required_argument, NULL, SET},   {"t-end", required_argument, NULL, T_END},
+        {"dt", required_argument, NULL, DT},     {"netcdf", no_argument, NULL, NETCDF},
+        {"quiet", no_argument, NULL, QUIET},     {"resume", required_argument, NULL, RESUME},
+        {"force", no_argument, NULL, FORCE},     {"allow-path", required_argument, NULL, ALLOW},
+        {"help", no_argument, NULL, 'h'},        {NULL, 0, NULL, 0}};
     int v, study = 0; /* options that define the study, which --resume takes from DIR */
     optind = 1;
     opterr = 0;
@@ -191,6 +190,11 @@ static int parse_opts(int argc, char **argv, sweep_opts *o, int rank) {
             o->netcdf = 1;
             study = 1;
             break;
+        case ALLOW:
+            if (o->allow_count == 64) return sweep_bad_usage(rank, "more than 64 --allow-path", optarg);
+            o->allow[o->allow_count++] = optarg;
+            study = 1;
+            break;
         case QUIET:
             o->quiet = 1;
             break;
@@ -209,7 +213,7 @@ static int parse_opts(int argc, char **argv, sweep_opts *o, int rank) {
         return sweep_bad_usage(
             rank,
             "--resume DIR takes the study as DIR/summary.json records it: no SPEC, -o, --runs, "
-            "--seed, --set, --t-end, --dt or --netcdf with it",
+            "--seed, --set, --t-end, --dt, --netcdf or --allow-path with it",
             operands > 0 ? argv[1 + optind] : NULL);
     if (o->resume) return 0;
     if (operands > 1) return sweep_bad_usage(rank, "more than one spec file", argv[2 + optind]);
@@ -221,7 +225,7 @@ static int parse_opts(int argc, char **argv, sweep_opts *o, int rank) {
 /* ---- the record --resume reads back (summary.json's "resume") ---- */
 
 /* {"spec": the spec's absolute path, "spec_as_given" and the "cwd" it was given in, "runs", "seed", "set":
- * the command line's fixed values, "netcdf"}. */
+ * the command line's fixed values, "netcdf", "allow": the --allow-path folders, absolute}. */
 static char *resume_record(const sweep_opts *o, const char *as_given, const char *cwd) {
     char real[PATH_MAX], *buf = NULL;
     size_t size = 0;
@@ -246,7 +250,12 @@ static char *resume_record(const sweep_opts *o, const char *as_given, const char
         if (i) fputc(',', f);
         cs_json_string(f, o->sets[i]);
     }
-    fprintf(f, "],\"netcdf\":%s}", o->netcdf ? "true" : "false");
+    fprintf(f, "],\"netcdf\":%s,\"allow\":[", o->netcdf ? "true" : "false");
+    for (int i = 0; i < o->allow_count; i++) {
+        if (i) fputc(',', f);
+        cs_json_string(f, realpath(o->allow[i], real) ? real : o->allow[i]);
+    }
+    fputs("]}", f);
     fclose(f);
     return buf;
 }
@@ -259,26 +268,53 @@ static int json_text_at(json_object *obj, const char *key, char *out, size_t siz
     return snprintf(out, size, "%s", json_object_get_string(v)) < (int)size ? 0 : -1;
 }
 
+/* The strings of a JSON array into store (slots of width bytes), each slot's address into to[*count],
+ * up to max. 0, or -1 when an entry is not a string or does not fit. */
+static int json_texts(json_object *list, char *store, size_t width, const char **to, int *count, int max) {
+    for (size_t i = 0; i < json_object_array_length(list) && *count < max; i++) {
+        json_object *e = json_object_array_get_idx(list, i);
+        char *slot = store + (size_t)*count * width;
+        if (!json_object_is_type(e, json_type_string) ||
+            snprintf(slot, width, "%s", json_object_get_string(e)) >= (int)width)
+            return -1;
+        to[(*count)++] = slot;
+    }
+    return 0;
+}
+
 typedef struct resumed {
     char version[64], model_hash[20], inputs_hash[20];
     char spec_as_given[PATH_MAX], cwd[PATH_MAX]; /* the spec as the stopped sweep's command line gave it */
     int partial;
+    char *journal;      /* DIR/.cablesim-journal, when a killed sweep left one (NULL: none) */
+    const char *rows;   /* its runs.csv, after its first line */
+    size_t rows_length; /* their length */
 } resumed;
 
-/* DIR/summary.json's record of the study into o (its strings kept in static storage) and r. 0, or -1 with
- * why filled. */
+/* The record of the study into o (its strings kept in static storage) and r: the first line of
+ * DIR/.cablesim-journal when a sweep killed before it wrote its outputs left one (r->journal), else
+ * DIR/summary.json's. 0, or -1 with why filled. */
 static int read_resume(const char *dir, sweep_opts *o, resumed *r, char *why, size_t why_size) {
-    static char spec[PATH_MAX], seed[64], sets[256][1100];
+    static char spec[PATH_MAX], seed[64], sets[256][1100], allow[64][PATH_MAX];
     char path[1200];
-    snprintf(path, sizeof path, "%s/summary.json", dir);
-    FILE *probe = fopen(path, "r");
-    if (!probe) {
+    size_t length = 0;
+    if (!(r->journal = cs_out_journal_read(dir, &length, why, why_size)) && why[0]) return -1;
+    char *eol = r->journal ? strchr(r->journal, '\n') : NULL;
+    if (eol) { /* its first line is the record; runs.csv follows */
+        *eol = '\0';
+        r->rows = eol + 1;
+        r->rows_length = length - (size_t)(eol + 1 - r->journal);
+    }
+    snprintf(path, sizeof path, "%s/%s", dir, r->journal ? CS_OUT_JOURNAL : "summary.json");
+    FILE *probe = r->journal ? NULL : fopen(path, "r");
+    if (!r->journal && !probe) {
         snprintf(why, why_size, "%s: %s (expected the summary of a sweep written there)", path,
                  strerror(errno));
         return -1;
     }
-    fclose(probe);
-    json_object *root = json_object_from_file(path), *rec = NULL, *about = NULL, *v;
+    if (probe) fclose(probe);
+    json_object *root = r->journal ? json_tokener_parse(r->journal) : json_object_from_file(path),
+                *rec = NULL, *about = NULL, *v;
     int bad = !root || !json_object_object_get_ex(root, "resume", &rec) ||
               !json_object_is_type(rec, json_type_object) ||
               json_text_at(rec, "spec", spec, sizeof spec) != 0 || !spec[0];
@@ -294,15 +330,12 @@ static int read_resume(const char *dir, sweep_opts *o, resumed *r, char *why, si
     }
     json_object *list = NULL;
     bad = bad || !json_object_object_get_ex(rec, "set", &list) || !json_object_is_type(list, json_type_array);
-    for (size_t i = 0; !bad && i < json_object_array_length(list) && o->set_count < 256; i++) {
-        json_object *e = json_object_array_get_idx(list, i);
-        bad = !json_object_is_type(e, json_type_string) ||
-              snprintf(sets[o->set_count], sizeof sets[0], "%s", json_object_get_string(e)) >=
-                  (int)sizeof sets[0];
-        o->sets[o->set_count] = sets[o->set_count];
-        o->set_count++;
-    }
+    if (!bad) bad = json_texts(list, sets[0], sizeof sets[0], o->sets, &o->set_count, 256) != 0;
     if (!bad && json_object_object_get_ex(rec, "netcdf", &v)) o->netcdf = json_object_get_boolean(v);
+    if (!bad && json_object_object_get_ex(rec, "allow", &list)) { /* none: a study that needed no leave */
+        bad = !json_object_is_type(list, json_type_array) ||
+              json_texts(list, allow[0], sizeof allow[0], o->allow, &o->allow_count, 64) != 0;
+    }
     r->partial = !bad && json_object_object_get_ex(root, "partial", &v) && json_object_get_boolean(v);
     if (!bad && json_object_object_get_ex(root, "cablesim", &about)) {
         bad = json_text_at(about, "version", r->version, sizeof r->version) != 0 ||
@@ -355,11 +388,7 @@ static int write_all(cs_outdir *out, const cs_sweep_spec *spec, const double *x,
              : k < study + CS_STUDY_FIGURES
                  ? cs_study_write_figure(f, CS_PLOT_PNG, k - study, spec, x, r, n, why, sizeof why)
                  : cs_study_write_page(f, spec, x, r, n, why, sizeof why);
-        char end_why[512];
-        if (cs_out_end(out, f, end_why, sizeof end_why) != 0 && rc == 0) {
-            snprintf(why, sizeof why, "%s", end_why);
-            rc = -1;
-        }
+        rc = cs_out_finish(out, f, rc, why, sizeof why);
     }
     cs_plot_release(); /* after the last plot */
     if (rc == 0 && spec->netcdf && !partial) {
@@ -372,7 +401,10 @@ static int write_all(cs_outdir *out, const cs_sweep_spec *spec, const double *x,
     if (rc == 0) rc = cs_out_commit(out, why, sizeof why);
     if (rc != 0) {
         cs_out_abort(out);
-        fprintf(stderr, "cablesim sweep: nothing written: %s\n", why);
+        fprintf(stderr,
+                "cablesim sweep: nothing written: %s; the runs done are kept in %s/%s: `cablesim sweep "
+                "--resume %s` writes the study once that is put right\n",
+                why, out->dir, CS_OUT_JOURNAL, out->dir);
     }
     return rc;
 }
@@ -416,6 +448,7 @@ static cs_sweep_spec *read_spec(const sweep_opts *o, int rank) {
         return NULL;
     }
     cs_sweep_plots_check(spec);
+    cs_sweep_spec_confine(spec, o->allow, o->allow_count);
     for (int i = 0; i < o->set_count; i++)
         cs_sweep_spec_add_set(spec, o->sets[i]);
     spec->netcdf |= o->netcdf;
@@ -456,8 +489,8 @@ static int thread_count(int asked, int local_ranks) {
 /* The file argument of `cablesim check FILE [--set PATH=VALUE]...`: the first word that is not an option or
  * an option's value. */
 static const char *check_file(int argc, char **argv) {
-    static const char *const valued[] = {"-o",    "--out",   "--threads", "--runs",  "--seed",
-                                         "--set", "--t-end", "--dt",      "--resume"};
+    static const char *const valued[] = {"-o",    "--out",   "--threads", "--runs",   "--seed",
+                                         "--set", "--t-end", "--dt",      "--resume", "--allow-path"};
     for (int i = 2; i < argc; i++) {
         if (argv[i][0] != '-') return argv[i];
         for (size_t k = 0; k < sizeof valued / sizeof valued[0]; k++)
@@ -510,8 +543,9 @@ static void out_dir_of(const sweep_opts *o, char *dir, size_t size) {
     }
 }
 
-/* --resume: the runs of DIR/runs.csv into all (the others left pending), after checking that the study is
- * the one DIR holds. Returns how many were read, or -1 (why printed). */
+/* --resume: the runs of DIR/runs.csv, or of the journal a killed sweep left, into all (the others left
+ * pending), after checking that the study is the one DIR holds. Returns how many were read, or -1 (why
+ * printed). */
 static long read_done(const char *dir, const cs_sweep_spec *spec, const resumed *was, const double *x,
                       cs_sweep_result *all, long n) {
     char hash[17], path[1200], why[600];
@@ -533,16 +567,51 @@ static long read_done(const char *dir, const cs_sweep_spec *spec, const resumed 
             dir, spec->model);
         return -1;
     }
-    snprintf(path, sizeof path, "%s/runs.csv", dir);
-    FILE *f = fopen(path, "r");
+    snprintf(path, sizeof path, "%s/%s", dir, was->journal ? CS_OUT_JOURNAL : "runs.csv");
+    FILE *f = was->journal ? fmemopen((void *)was->rows, was->rows_length ? was->rows_length : 1, "r")
+                           : fopen(path, "r");
     if (!f) {
         fprintf(stderr, "cablesim sweep: %s: %s\n", path, strerror(errno));
         return -1;
     }
-    long got = cs_sweep_read_runs(f, path, spec, x, all, n, why, sizeof why);
+    long got = cs_sweep_read_runs(f, path, spec, x, all, n, was->journal != NULL, why, sizeof why);
     fclose(f);
     if (got < 0) fprintf(stderr, "cablesim sweep: %s\n", why);
     return got;
+}
+
+/* The journal of the runs (DIR/.cablesim-journal): the study's record and the runs done (a resumed
+ * sweep's), before any run. */
+static int start_journal(cs_outdir *out, const cs_sweep_spec *spec, const double *x,
+                         const cs_sweep_result *all, long n, char *why, size_t why_size) {
+    char *text = NULL;
+    size_t length = 0;
+    FILE *f = open_memstream(&text, &length);
+    int rc = f ? cs_sweep_write_journal_start(f, spec, x, all, n, why, why_size) : -1;
+    if (f) fclose(f);
+    if (rc != 0 || !text) snprintf(why, why_size, "out of memory for the journal");
+    if (rc == 0 && text) rc = cs_out_journal_start(out, text, length, why, why_size);
+    free(text);
+    return rc;
+}
+
+/* Append a finished run to the journal (append and fsync: a kill -9 after it keeps it). A journal that
+ * cannot be written is said once; the runs go on, and the outputs at the end hold them. */
+static void journal_run(cs_outdir *out, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
+                        long i) {
+    static int failed;
+    char *text = NULL, why[1600];
+    size_t length = 0;
+    FILE *f = failed ? NULL : open_memstream(&text, &length);
+    if (!f) return;
+    cs_sweep_write_run_row(f, spec, x, r, i);
+    fclose(f);
+    if (cs_out_journal_add(out, text, length, why, sizeof why) != 0) {
+        failed = 1;
+        fprintf(stderr, "cablesim sweep: %s: the runs from now on are not journalled (a kill loses them)\n",
+                why);
+    }
+    free(text);
 }
 
 static const char *signal_name(int sig) {
@@ -633,8 +702,9 @@ int cs_sweep_command(int argc, char **argv) {
         } else if (cs_out_open(&out, dir, o.force ? CS_OUT_FORCE : 0, why, sizeof why) != 0) {
             fprintf(stderr, "cablesim sweep: nothing run: %s\n", why);
             rc = EXIT_RUN;
-        } else {
-            out_open = 1;
+        } else if (out_open = 1, start_journal(&out, spec, x, all, n, why, sizeof why) != 0) {
+            fprintf(stderr, "cablesim sweep: nothing run: %s\n", why);
+            rc = EXIT_RUN;
         }
     }
     /* the runs to do, the same list on every rank */
@@ -699,7 +769,7 @@ int cs_sweep_command(int argc, char **argv) {
 #endif
     {
         char why[256];
-        cs_loader *loader = cs_loader_create(NULL, why, sizeof why); /* one per thread (NULL: one per run) */
+        cs_loader *loader = cs_sweep_loader(spec, why, sizeof why); /* one per thread (NULL: one per run) */
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 1)
 #endif
@@ -712,6 +782,7 @@ int cs_sweep_command(int argc, char **argv) {
 #endif
             {
                 p.done++;
+                if (rank == 0) journal_run(&out, spec, x, &mine[m], i);
                 progress_show(&p, 0);
                 if (stop_after > 0 && p.done == stop_after) raise(SIGINT); /* CABLESIM_SWEEP_STOP_AFTER */
             }
@@ -790,7 +861,7 @@ int cs_sweep_command(int argc, char **argv) {
     free(mine);
     free(all);
     free(x);
-    free(todo), free(todo_mask), free(record);
+    free(todo), free(todo_mask), free(record), free(was.journal);
     cs_sweep_spec_free(spec);
 #ifdef CS_MPI
     MPI_Bcast(&rc, 1, MPI_INT, 0, MPI_COMM_WORLD);

@@ -1,12 +1,16 @@
 #!/usr/bin/env bash
 # Every model in tests/bad/ is refused by `cablesim check` with exit status 2, and the problems it reports
 # are exactly those its "# expect: LINE:COL: text" lines name, at those places.
+# Files of tests/good may be named (--allow-path tests/good); no other folder beyond tests/bad.
 source "$(dirname "$0")/lib.sh"
 files=0
 for f in tests/bad/*.yaml; do
     files=$((files + 1))
-    out=$("$cs" check "$f" 2>&1)
+    out=$("$cs" check --allow-path tests/good "$f" 2>&1)
     expect_problems "$f" "$out" $?
 done
 check "at least 25 bad files ($files)" '[ "$files" -ge 25 ]'
+# a --set the engine refuses for an element that takes it from the soil is blamed on that --set
+out=$("$cs" check tests/good/base.yaml --set "barrier.soil.dynamic_factor=1e30" 2>&1)
+check "--set barrier.soil.dynamic_factor=1e30: blamed on the --set, not on a file's line" '[ $? -eq 2 ] && grep -qF -- "--set barrier.soil.dynamic_factor=1e30: post 0: soil dynamic factor 1e+30 must be in [1, 10]" <<<"$out" && ! grep -q "^tests/good/base.yaml:" <<<"$out" || { echo "$out"; false; }'
 finish

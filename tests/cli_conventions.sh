@@ -67,7 +67,7 @@ check "sweep --resume: a folder with no sweep, its reason" '[ $? -eq 2 ] && grep
 echo "a file" >"$tmp/file"
 out=$("$cs" run examples/aps3.yaml -o "$tmp/file/sub" 2>&1)
 check "run -o FILE/sub: exit 1, why, before the run" '[ $? -eq 1 ] && grep -qxF "cablesim: nothing run: $tmp/file/sub: Not a directory" <<<"$out"'
-out=$("$cs" sweep tests/sweep/lhs.yaml -o "$tmp/file/sub" 2>&1)
+out=$("$cs" sweep --allow-path examples tests/sweep/lhs.yaml -o "$tmp/file/sub" 2>&1)
 check "sweep -o FILE/sub: exit 1, why, before any run" '[ $? -eq 1 ] && grep -qxF "cablesim sweep: nothing run: $tmp/file/sub: Not a directory" <<<"$out" && ! grep -q "^sweep: [0-9]* runs" <<<"$out"'
 out=$("$cs" validate --only verification -o "$tmp/file/sub" 2>&1)
 check "validate -o FILE/sub: exit 1, why, before any run" '[ $? -eq 1 ] && grep -qxF "cablesim validate: nothing run: $tmp/file/sub: Not a directory" <<<"$out"'

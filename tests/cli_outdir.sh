@@ -74,7 +74,7 @@ out=$(cd "$tmp/cwd/a/b" && "$cs" designer "$src/tests/bad/name_path.yaml" 2>&1)
 check "designer refuses it too (results/NAME-designer)" '[ $? -eq 2 ] && [ -z "$(find "$tmp/cwd" -mindepth 3)" ] && grep -q "name_path.yaml:2:7: name: not a name for the output folder" <<<"$out"'
 
 # The other commands keep their folders by the same rule.
-out=$("$cs" sweep tests/sweep/grid.yaml -o "$user" --quiet 2>&1)
+out=$("$cs" sweep --allow-path examples tests/sweep/grid.yaml -o "$user" --quiet 2>&1)
 check "sweep refuses the user's folder before any run" '[ $? -eq 1 ] && grep -q "nothing run: .*which no cablesim run wrote there" <<<"$out" && mine'
 out=$("$cs" validate -o "$user" --only verification 2>&1)
 check "validate refuses the user's folder" '[ $? -eq 1 ] && grep -q "nothing run: .*which no cablesim run wrote there" <<<"$out" && mine'

@@ -18,8 +18,8 @@ check "no model file exits 2" '[ $? -eq 2 ]'
 
 # A model whose vehicle is the library's PU (the rest APS3's): PU40 runs it at 40 mph, and it stops 1.74 m
 # past the cable line (P2 is 1.01-7 m: the label holds for any penetration within 0.7 m of it).
-aps3="$PWD/examples/aps3.yaml"
-printf 'name: aps3-pu\nbarrier: {file: %s}\nvehicle: PU\nscenario: {file: %s}\n' "$aps3" "$aps3" >"$tmp/pu.yaml"
+cp examples/aps3.yaml "$tmp/aps3.yaml" # beside the model: its files may not leave its folder
+printf 'name: aps3-pu\nbarrier: {file: aps3.yaml}\nvehicle: PU\nscenario: {file: aps3.yaml}\n' >"$tmp/pu.yaml"
 out=$("$cs" rate "$tmp/pu.yaml" --standard astm-f2656 --class PU40 2>&1)
 check "rate --class PU40 on a PU model (exit 0)" '[ $? -eq 0 ] || { echo "$out"; false; }'
 check "PU40: the model's PU at 40 mph, stopped, P2" 'grep -qE "^  PU   40 mph  stopped +penetration [0-9.]+ m .* designation as run PU40/P2$" <<<"$out" && grep -qxF "rating: ASTM F2656 PU40/P2" <<<"$out"'

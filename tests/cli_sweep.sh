@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # cablesim sweep end to end: the same runs.csv (byte for byte), summaries and plots on 1 and 2 threads, a
 # grid, a Monte Carlo, a Latin hypercube, the outputs' shape, runs.nc (--netcdf or `netcdf: true`: the same
-# bytes on 1 and 2 threads, runs.csv's runs and numbers read back by ncdump, nothing written when it cannot
-# be written), the plots of `plot:` (a grid's lines as PNG and SVG, a Monte Carlo's points as PDF, named in
-# summary.md and on the outputs line, nothing written when one cannot be written), plain progress lines
+# bytes on 1 and 2 threads, runs.csv's runs and numbers read back by ncdump, nothing but the runs' journal
+# written when it cannot be written), the plots of `plot:` (a grid's lines as PNG and SVG, a Monte Carlo's
+# points as PDF, named in summary.md and on the outputs line, nothing but the journal written when one
+# cannot be), plain progress lines
 # when not on a terminal, `cablesim check` of a spec, and every spec in tests/sweep/bad/ refused with
 # status 2 and exactly the problems its "# expect: LINE:COL: text" lines name. The runs are 10 to 20 ms
 # long so the suite stays fast.
@@ -15,7 +16,7 @@ check "sweep without a spec is status 2" '[ $? -eq 2 ]'
 
 for spec in lhs grid mc plot; do
     for t in 1 2; do
-        "$cs" sweep "tests/sweep/$spec.yaml" -o "$tmp/$spec-$t" --threads "$t" >"$tmp/$spec-$t.out" 2>"$tmp/$spec-$t.err"
+        "$cs" sweep --allow-path examples "tests/sweep/$spec.yaml" -o "$tmp/$spec-$t" --threads "$t" >"$tmp/$spec-$t.out" 2>"$tmp/$spec-$t.err"
         check "$spec on $t threads exits 0" '[ $? -eq 0 ] || { cat "$tmp/$spec-$t.err"; false; }'
     done
     check "$spec: runs.csv the same on 1 and 2 threads" 'cmp "$tmp/$spec-1/runs.csv" "$tmp/$spec-2/runs.csv"'
@@ -24,7 +25,7 @@ for spec in lhs grid mc plot; do
         'cmp <(grep -v "^Written by cablesim " "$tmp/$spec-1/summary.md") <(grep -v "^Written by cablesim " "$tmp/$spec-2/summary.md")'
     check "$spec: summary.json the same on 1 and 2 threads, but for its first line" \
         'cmp <(tail -n +2 "$tmp/$spec-1/summary.json") <(tail -n +2 "$tmp/$spec-2/summary.json")'
-    check "$spec: the summaries give the command line" 'grep -qF "\"command\":\"$cs sweep tests/sweep/$spec.yaml -o $tmp/$spec-1 --threads 1\"" "$tmp/$spec-1/summary.json" && grep -qF "Written by cablesim $("$cs" --version | cut -d" " -f2): \`$cs sweep tests/sweep/$spec.yaml -o $tmp/$spec-1 --threads 1\`; the base model'"'"'s hash " "$tmp/$spec-1/summary.md"'
+    check "$spec: the summaries give the command line" 'grep -qF "\"command\":\"$cs sweep --allow-path examples tests/sweep/$spec.yaml -o $tmp/$spec-1 --threads 1\"" "$tmp/$spec-1/summary.json" && grep -qF "Written by cablesim $("$cs" --version | cut -d" " -f2): \`$cs sweep --allow-path examples tests/sweep/$spec.yaml -o $tmp/$spec-1 --threads 1\`; the base model'"'"'s hash " "$tmp/$spec-1/summary.md"'
     check "$spec: no run failed" 'grep -q "; 0 did not run to the end" "$tmp/$spec-1.out"'
     check "$spec: progress as plain lines" 'grep -q "^sweep: [0-9]*/[0-9]* runs (100%)" "$tmp/$spec-1.err"'
 done
@@ -66,7 +67,7 @@ check "study: the inputs' table in the spec's units" 'grep -qE "<tr><td>barrier.
 check "study: the inputs' values in those units" 'grep -oE "<tr><td>(barrier.soil.soil_pressure|scenario.speed)</td><td>[^<]*</td><td>[a-z]+</td><td>[0-9.e+]+</td><td>[0-9.e+]+</td><td>[0-9.e+]+</td>" "$page" | sed -E "s/<\/?t[dr]>/ /g" | awk "\$3 == \"psf\" && (\$4 < 4000 || \$6 > 12000) { bad = 1 } \$3 == \"mph\" && (\$4 < 38 || \$6 > 42) { bad = 1 } END { exit bad || NR != 2 }"'
 check "study: the rope tension in kN" 'grep -q "<tr><td>max rope tension (kN)</td>" "$page"'
 # a run that breaks through: runs.csv gives no penetration, only how far it got, as summary.json does
-"$cs" sweep tests/sweep/through.yaml -o "$tmp/through" --quiet >"$tmp/through.out" 2>&1
+"$cs" sweep --allow-path examples tests/sweep/through.yaml -o "$tmp/through" --quiet >"$tmp/through.out" 2>&1
 check "through: exits 0" '[ $? -eq 0 ] || { cat "$tmp/through.out"; false; }'
 col() { head -1 "$1" | tr , "\n" | grep -nxF -- "$2" | cut -d: -f1; }
 pen=$(col "$tmp/through/runs.csv" "max_dynamic_penetration [m]")
@@ -93,18 +94,18 @@ check "plot: the outputs line names the plots" 'grep -qxF "outputs: $tmp/plot-1/
 check "plot: the runs are the grid's, spacing slowest" '[ "$(cut -d, -f2,3 "$tmp/plot-1/runs.csv" | tail -n +2 | tr "\n" " ")" = "4,2270P 4,1100C 2,2270P 2,1100C 6,2270P 6,1100C " ]'
 sed "s|^model: .*|model: $PWD/examples/aps3.yaml|" tests/sweep/mc.yaml >"$tmp/mc-plot.yaml"
 printf 'plot:\n  x: scenario.impact_x\n  y: max_cable_tension\n  format: pdf\n' >>"$tmp/mc-plot.yaml"
-"$cs" sweep "$tmp/mc-plot.yaml" -o "$tmp/mc-plot" --quiet >"$tmp/mc-plot.out" 2>&1
+"$cs" sweep --allow-path examples "$tmp/mc-plot.yaml" -o "$tmp/mc-plot" --quiet >"$tmp/mc-plot.out" 2>&1
 check "plot: a Monte Carlo's plot exits 0" '[ $? -eq 0 ] || { cat "$tmp/mc-plot.out"; false; }'
 check "plot: a Monte Carlo's runs as points, in a PDF" '[ "$(head -c 5 "$tmp/mc-plot/plots/max_cable_tension-vs-impact_x.pdf")" = "%PDF-" ] && grep -qF "max_cable_tension against scenario.impact_x, each run a point: 6 of 6 runs shown" "$tmp/mc-plot/summary.md"'
 check "plot: the runs are the same with a plot" 'cmp "$tmp/mc-plot/runs.csv" "$tmp/mc-1/runs.csv"'
 mkdir -p "$tmp/plot-fail/plots/max_barrier_deflection-vs-spacing.png"
-out=$("$cs" sweep tests/sweep/plot.yaml -o "$tmp/plot-fail" --quiet 2>&1)
-check "a plot that cannot be written: status 1, why, nothing written" '[ $? -eq 1 ] && grep -q "nothing written: .*/plots/max_barrier_deflection-vs-spacing.png: Is a directory" <<<"$out" && [ "$(ls -A "$tmp/plot-fail")" = plots ] && [ "$(ls -A "$tmp/plot-fail/plots")" = max_barrier_deflection-vs-spacing.png ]'
+out=$("$cs" sweep --allow-path examples tests/sweep/plot.yaml -o "$tmp/plot-fail" --quiet 2>&1)
+check "a plot that cannot be written: status 1, why, nothing written" '[ $? -eq 1 ] && grep -q "nothing written: .*/plots/max_barrier_deflection-vs-spacing.png: Is a directory" <<<"$out" && [ "$(ls -A "$tmp/plot-fail")" = "$(printf ".cablesim-journal\nplots")" ] && [ "$(ls -A "$tmp/plot-fail/plots")" = max_barrier_deflection-vs-spacing.png ]'
 
 # runs.nc: one variable of it, a value a line, at full precision
 nc_column() { ncdump -p 9,17 -v "$2" "$1" | sed -n "/^ $2 = /,/;/p" | sed "s/^ $2 = //; s/;//" | tr ',' '\n' | tr -d ' ' | grep -v '^$'; }
 for t in 1 2; do
-    "$cs" sweep tests/sweep/lhs.yaml -o "$tmp/nc-$t" --threads "$t" --netcdf --quiet >"$tmp/nc-$t.out" 2>&1
+    "$cs" sweep --allow-path examples tests/sweep/lhs.yaml -o "$tmp/nc-$t" --threads "$t" --netcdf --quiet >"$tmp/nc-$t.out" 2>&1
     check "lhs --netcdf on $t threads exits 0" '[ $? -eq 0 ] || { cat "$tmp/nc-$t.out"; false; }'
 done
 nc="$tmp/nc-1/runs.nc"
@@ -115,29 +116,29 @@ check "runs.nc: runs.csv's speeds, within 38-42 mph" 'paste -d, <(nc_column "$nc
 check "runs.nc: runs.csv's penetrations in full (the CSV's 10 digits)" 'paste -d, <(nc_column "$nc" penetration_beyond) <(cut -d, -f11 "$runs" | tail -n +2) | awk -F, "!(\$1 > 0.05) || (\$1 - \$2) ^ 2 > (5e-10 * \$2) ^ 2 { bad = 1 } END { exit bad || NR != 4 }"'
 check "runs.nc: units and CF" 'ncdump -h "$nc" | grep -q "scenario_speed:units = \"m/s\"" && ncdump -h "$nc" | grep -q ":Conventions = \"CF-1.8\""'
 sed "s|^model: .*|model: $PWD/examples/aps3.yaml|; s|^seed: 7|&\nnetcdf: true|" tests/sweep/lhs.yaml >"$tmp/lhs-nc.yaml"
-"$cs" sweep "$tmp/lhs-nc.yaml" -o "$tmp/nc-spec" --quiet >/dev/null 2>&1
+"$cs" sweep --allow-path examples "$tmp/lhs-nc.yaml" -o "$tmp/nc-spec" --quiet >/dev/null 2>&1
 check "netcdf: true in the spec writes runs.nc, the same runs" '[ "$(nc_column "$tmp/nc-spec/runs.nc" scenario_speed | tr "\n" " ")" = "$(nc_column "$nc" scenario_speed | tr "\n" " ")" ]'
 check "no runs.nc unless asked" '[ ! -e "$tmp/lhs-1/runs.nc" ]'
 mkdir -p "$tmp/nc-fail/runs.nc"
-out=$("$cs" sweep tests/sweep/lhs.yaml -o "$tmp/nc-fail" --netcdf --quiet 2>&1)
-check "a runs.nc that cannot be written: status 1, why, nothing written" '[ $? -eq 1 ] && grep -q "nothing written: .*/runs.nc: Is a directory" <<<"$out" && [ "$(ls -A "$tmp/nc-fail")" = runs.nc ]'
+out=$("$cs" sweep --allow-path examples tests/sweep/lhs.yaml -o "$tmp/nc-fail" --netcdf --quiet 2>&1)
+check "a runs.nc that cannot be written: status 1, why, nothing written" '[ $? -eq 1 ] && grep -q "nothing written: .*/runs.nc: Is a directory" <<<"$out" && [ "$(ls -A "$tmp/nc-fail")" = "$(printf ".cablesim-journal\nruns.nc")" ]'
 
 # --runs, --seed and --t-end from the command line; a different seed gives other inputs
-"$cs" sweep tests/sweep/mc.yaml -o "$tmp/mc-seed" --runs 3 --seed 99 --t-end "5 ms" --quiet >/dev/null 2>&1
+"$cs" sweep --allow-path examples tests/sweep/mc.yaml -o "$tmp/mc-seed" --runs 3 --seed 99 --t-end "5 ms" --quiet >/dev/null 2>&1
 check "--runs --seed --t-end" '[ "$(wc -l <"$tmp/mc-seed/runs.csv")" -eq 4 ] && ! cmp -s <(head -2 "$tmp/mc-seed/runs.csv") <(head -2 "$tmp/mc-1/runs.csv") && grep -q "scenario.t_end=5 ms" "$tmp/mc-seed/summary.json"'
-check "--runs on a grid is refused" '! "$cs" sweep tests/sweep/grid.yaml -o "$tmp/x" --runs 3 >/dev/null 2>&1'
+check "--runs on a grid is refused" '! "$cs" sweep --allow-path examples tests/sweep/grid.yaml -o "$tmp/x" --runs 3 >/dev/null 2>&1'
 
 # `cablesim check` knows a spec from a model, and checks the spec's model with its values
-check "check a spec" '"$cs" check tests/sweep/lhs.yaml | grep -q "tests/sweep/lhs.yaml: a valid sweep spec: Latin hypercube of 4 runs over 3 values"'
+check "check a spec" '"$cs" check --allow-path examples tests/sweep/lhs.yaml | grep -q "tests/sweep/lhs.yaml: a valid sweep spec: Latin hypercube of 4 runs over 3 values"'
 check "check the example spec" '"$cs" check examples/aps3-uncertain.yaml >/dev/null'
-check "check a bad spec" '"$cs" check tests/sweep/bad/bad_level.yaml 2>&1 | grep -q "^tests/sweep/bad/bad_level.yaml:6:42: "'
-check "check a spec with plots" '"$cs" check tests/sweep/plot.yaml | grep -q "a valid sweep spec: grid of 6 runs over 2 values"'
-check "check a bad plot" '"$cs" check tests/sweep/bad/plot_unknown_response.yaml 2>&1 | grep -q "^tests/sweep/bad/plot_unknown_response.yaml:9:6: plot: y: unknown response"'
+check "check a bad spec" '"$cs" check --allow-path examples tests/sweep/bad/bad_level.yaml 2>&1 | grep -q "^tests/sweep/bad/bad_level.yaml:6:42: "'
+check "check a spec with plots" '"$cs" check --allow-path examples tests/sweep/plot.yaml | grep -q "a valid sweep spec: grid of 6 runs over 2 values"'
+check "check a bad plot" '"$cs" check --allow-path examples tests/sweep/bad/plot_unknown_response.yaml 2>&1 | grep -q "^tests/sweep/bad/plot_unknown_response.yaml:9:6: plot: y: unknown response"'
 
 files=0
 for f in tests/sweep/bad/*.yaml; do
     files=$((files + 1))
-    out=$("$cs" sweep "$f" -o "$tmp/bad" 2>&1)
+    out=$("$cs" sweep --allow-path examples "$f" -o "$tmp/bad" 2>&1)
     expect_problems "$f" "$out" $?
 done
 check "bad specs wrote nothing" '[ ! -e "$tmp/bad" ]'

@@ -7,11 +7,11 @@
 source "$(dirname "$0")/lib.sh"
 
 # the whole study, never stopped: tests/sweep/lhs.yaml's 4 runs, with runs.nc
-"$cs" sweep tests/sweep/lhs.yaml -o "$tmp/whole" --netcdf --quiet >/dev/null 2>&1
+"$cs" sweep --allow-path examples tests/sweep/lhs.yaml -o "$tmp/whole" --netcdf --quiet >/dev/null 2>&1
 check "the whole sweep exits 0" '[ $? -eq 0 ]'
 
 dir="$tmp/stopped"
-CABLESIM_SWEEP_STOP_AFTER=1 "$cs" sweep tests/sweep/lhs.yaml -o "$dir" --netcdf --threads 1 >"$tmp/stop.out" 2>"$tmp/stop.err"
+CABLESIM_SWEEP_STOP_AFTER=1 "$cs" sweep --allow-path examples tests/sweep/lhs.yaml -o "$dir" --netcdf --threads 1 >"$tmp/stop.out" 2>"$tmp/stop.err"
 check "stopped by SIGINT after 1 run: exit 130" '[ $? -eq 130 ] || { cat "$tmp/stop.err"; false; }'
 check "it says so, and how to go on" 'grep -qxF "cablesim sweep: stopped by SIGINT: 1 of 4 runs done, written to $dir (partial); \`cablesim sweep --resume $dir\` runs the other 3" "$tmp/stop.err"'
 check "runs.csv: the header and the one run done, as the whole sweep has it" '[ "$(wc -l <"$dir/runs.csv")" -eq 2 ] && cmp -s "$dir/runs.csv" <(head -2 "$tmp/whole/runs.csv")'
@@ -29,7 +29,7 @@ out=$("$cs" sweep --resume "$dir" 2>&1)
 check "--resume of a whole study: nothing to run, exit 0" '[ $? -eq 0 ] && grep -qxF "sweep: $dir holds the whole study (4 runs): nothing to run" <<<"$out"'
 
 # a study that changed is refused: another value of the model
-CABLESIM_SWEEP_STOP_AFTER=1 "$cs" sweep tests/sweep/lhs.yaml -o "$tmp/changed" --threads 1 --quiet >/dev/null 2>&1
+CABLESIM_SWEEP_STOP_AFTER=1 "$cs" sweep --allow-path examples tests/sweep/lhs.yaml -o "$tmp/changed" --threads 1 --quiet >/dev/null 2>&1
 sed -i 's/"set":\[\]/"set":["scenario.stop_speed=0.2 m\/s"]/' "$tmp/changed/summary.json"
 out=$("$cs" sweep --resume "$tmp/changed" 2>&1)
 check "--resume of a changed study: exit 2, why" '[ $? -eq 2 ] && grep -qF "the study has changed since it was stopped" <<<"$out"'
@@ -38,7 +38,7 @@ check "--resume with a spec: exit 2" '[ $? -eq 2 ] && grep -qF -- "--resume DIR 
 
 # SIGTERM from outside while the runs go on (120 runs of 150 ms, 0.01-0.04 s each on one thread by the
 # machine: the signal comes 0.3 s after the sweep has started them)
-spec=(tests/sweep/mc.yaml --runs 120 --t-end "150 ms")
+spec=(--allow-path examples tests/sweep/mc.yaml --runs 120 --t-end "150 ms")
 "$cs" sweep "${spec[@]}" -o "$tmp/whole-mc" --quiet >/dev/null 2>&1
 "$cs" sweep "${spec[@]}" -o "$tmp/term" --threads 1 >"$tmp/term.out" 2>"$tmp/term.err" &
 pid=$!

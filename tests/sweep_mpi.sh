@@ -24,7 +24,7 @@ for spec in lhs grid; do
     for case in "1 1" "2 1" "3 1" "2 2"; do
         set -- $case
         out="$tmp/$spec-$1-$2"
-        if ! mpirun "${flags[@]}" -n "$1" "$cs" sweep "tests/sweep/$spec.yaml" -o "$out" --threads "$2" --netcdf \
+        if ! mpirun "${flags[@]}" -n "$1" "$cs" sweep --allow-path examples "tests/sweep/$spec.yaml" -o "$out" --threads "$2" --netcdf \
             >"$out.log" 2>&1; then
             echo "FAIL: $spec on $1 ranks x $2 threads"
             cat "$out.log"
@@ -50,7 +50,7 @@ done
 # stopped on both ranks once each has done a run (CABLESIM_SWEEP_STOP_AFTER), then resumed on 2 ranks:
 # runs.csv as the sweep never stopped
 out="$tmp/stopped"
-CABLESIM_SWEEP_STOP_AFTER=1 mpirun "${flags[@]}" -x CABLESIM_SWEEP_STOP_AFTER -n 2 "$cs" sweep tests/sweep/lhs.yaml \
+CABLESIM_SWEEP_STOP_AFTER=1 mpirun "${flags[@]}" -x CABLESIM_SWEEP_STOP_AFTER -n 2 "$cs" sweep --allow-path examples tests/sweep/lhs.yaml \
     -o "$out" --threads 1 >"$out.log" 2>&1
 if grep -q "^\"partial\":true,\"runs_done\":2," "$out/summary.json" 2>/dev/null &&
     mpirun "${flags[@]}" -n 2 "$cs" sweep --resume "$out" --threads 1 >>"$out.log" 2>&1 &&

@@ -73,6 +73,9 @@ EMSCRIPTEN_KEEPALIVE const char *cs_web_open(const char *table, const char *data
     units_table = strdup(table);
     loader = units_table ? cs_loader_create(data_dir, why, sizeof why) : NULL;
     if (!loader) return fail(units_table ? why : "out of memory");
+    /* the page's file system holds only the files `cablesim designer` read under the rule of the folders
+     * a model may read (its --allow-path folders included): all of it may be read */
+    if (cs_loader_allow_path(loader, "/", why, sizeof why) != 0) return fail(why);
     FILE *f = begin();
     fputs("{\"ok\":true}", f);
     return end(f);

@@ -45,13 +45,26 @@ CS_API void cs_loader_free(cs_loader *loader);
  * with. */
 CS_API const char *cs_loader_data_dir(const cs_loader *loader);
 
+/** Allow the files a model names (`file:`) to be read from a folder and its subfolders, beyond the folder
+ * of the model file loaded (and its subfolders) and the parts library's, which are always allowed (as
+ * `cablesim run --allow-path DIR`). It lasts for the loader's life.
+ * @param loader the loader
+ * @param dir the folder
+ * @param why filled with the reason on failure
+ * @param why_size its size
+ * @return 0, or -1 when dir is not a folder. */
+CS_API int cs_loader_allow_path(cs_loader *loader, const char *dir, char *why, size_t why_size);
+
 /** Queue an override for the next load, as `cablesim run --set` does.
  * @param loader the loader
  * @param assignment "PATH=VALUE", the path of a value in the model file with units on the value:
  *        "scenario.speed=35 mph", "barrier.posts[0].spacing=6 ft", "vehicle=M".
  * @return 0, or -1 when it is not PATH=VALUE (the problem is recorded). */
 CS_API int cs_loader_set(cs_loader *loader, const char *assignment);
-/** Load, resolve, override and check a model file.
+/** Load, resolve, override and check a model file. A `file:` it names is found from the folder of the file
+ * naming it, and read only when it is a regular file of at most 64 MB in the folder of path (or a
+ * subfolder), the parts library's, or a folder of cs_loader_allow_path; a named file that is not a model
+ * is reported at its place, without its text.
  * @param loader the loader
  * @param path the model file
  * @param out filled with the model on success

@@ -25,7 +25,7 @@ const [it, iv] = [head.indexOf('t [s]'), head.indexOf('forward_speed [m/s]')];
 const trace = ['time [ms],speed [mph]', ...rows.slice(1).map((r) => { const c = r.split(','); return `${c[it] * 1000},${c[iv] / 0.44704}`; })];
 writeFileSync(join(out, 'measured.csv'), `${trace.join('\n')}\n`);
 cablesim('compare', join(out, 'a'), join(out, 'b'), '--measured', join(out, 'measured.csv'), '-o', join(out, 'compare'));
-cablesim('sweep', 'tests/sweep/mc.yaml', '--quiet', '-o', join(out, 'study'));
+cablesim('sweep', '--allow-path', 'examples', 'tests/sweep/mc.yaml', '--quiet', '-o', join(out, 'study'));
 // a run whose lower rope's clips slip at 10 kip and run out after 6 in (tests/cli_run.sh runs it too)
 cablesim('run', 'tests/good/base.yaml', '--set', 'barrier.cables[0].slip_load=10 kip', '--set', 'barrier.cables[0].slip_travel=6 in', '--report', '-o', join(out, 'slip'));
 

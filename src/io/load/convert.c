@@ -195,6 +195,9 @@ static void crush_curve(cs_loader *l, const cs_node *v, cs_vehicle_def *out) {
     memcpy(out->crush_force, force, (size_t)n * sizeof *force);
 }
 
+/* The least radius of gyration of a vehicle about any axis (docs/assumptions.md): 5 cm. */
+#define CS_GYRATION_MIN 0.05
+
 int cs_convert_vehicle(cs_loader *l, const cs_node *v, cs_vehicle_def *out) {
     int before = l->error_count;
     *out = cs_default_vehicle_def();
@@ -219,6 +222,17 @@ int cs_convert_vehicle(cs_loader *l, const cs_node *v, cs_vehicle_def *out) {
                             "missing '%s' (expected a moment of inertia, e.g. \"35000 kg m2\", or "
                             "inertia_box)",
                             keys[i]);
+    }
+    for (int i = 0; i < 3 && l->error_count == before && out->mass > 0; i++) {
+        const cs_node *at = cs_node_get(v, keys[i]) ? cs_node_get(v, keys[i]) : box;
+        double k = sqrt(out->inertia[i] / out->mass); /* the radius of gyration */
+        if (at && !(k >= CS_GYRATION_MIN))
+            cs_err_node(l, at, 0,
+                        "%s %.4g kg m^2 puts the vehicle's %.4g kg %.3g m from its centre, below %.0f cm "
+                        "(expected at least %.4g kg m^2: a road vehicle's mass lies decimetres to metres "
+                        "from its centre; less is a mistake of unit or typing)",
+                        keys[i], out->inertia[i], out->mass, k, CS_GYRATION_MIN * 100,
+                        out->mass * CS_GYRATION_MIN * CS_GYRATION_MIN);
     }
     crush_curve(l, v, out);
     if (l->error_count > before || cs_damaged(l, v)) return l->error_count - before;
@@ -613,6 +627,7 @@ int cs_convert_model(cs_loader *l, const cs_node *root, const char *file, cs_mod
     const cs_node *cables = cs_node_get(barrier, "cables"), *anchors = cs_node_get(barrier, "anchors");
     l->anchors_node = anchors;
     const cs_node *soil = cs_node_get(barrier, "soil");
+    l->soil_node = soil;
     if (soil)
         fields(l, soil, &out->barrier.start_anchor.footing, 0),
             fields(l, soil, &out->barrier.end_anchor.footing, 0);

@@ -47,6 +47,10 @@ cs_loader *cs_loader_create(const char *data_dir, char *why, size_t why_size) {
     return l;
 }
 
+int cs_loader_allow_path(cs_loader *l, const char *dir, char *why, size_t why_size) {
+    return cs_allow_add(&l->allow, dir, why, why_size);
+}
+
 const char *cs_loader_data_dir(const cs_loader *l) {
     return l->data_dir;
 }
@@ -79,12 +83,15 @@ void cs_loader_reset(cs_loader *l) {
     drop_sets(l);
     free(l->sets);
     drop_arena_to(l, NULL);
+    cs_allow_free(&l->scope);
     cs_units *units = l->units;
+    cs_allow allow = l->allow;
     char data_dir[sizeof l->data_dir], data_note[sizeof l->data_note];
     memcpy(data_dir, l->data_dir, sizeof data_dir);
     memcpy(data_note, l->data_note, sizeof data_note);
     memset(l, 0, sizeof *l);
     l->units = units;
+    l->allow = allow;
     memcpy(l->data_dir, data_dir, sizeof data_dir);
     memcpy(l->data_note, data_note, sizeof data_note);
 }
@@ -98,12 +105,13 @@ void cs_loader_reuse(cs_loader *l) {
     drop_arena_to(l, l->files_end); /* the files' nodes are older; nothing of theirs points later */
     l->depth = 0;
     l->post_origin = l->cable_origin = NULL;
-    l->vehicle_node = l->scenario_node = l->anchors_node = NULL;
+    l->vehicle_node = l->scenario_node = l->anchors_node = l->soil_node = NULL;
 }
 
 void cs_loader_free(cs_loader *l) {
     if (!l) return;
     cs_loader_reset(l);
+    cs_allow_free(&l->allow);
     cs_units_free(l->units);
     free(l);
 }
@@ -486,6 +494,18 @@ static void apply_set(cs_loader *l, cs_node **root, int k) {
         cs_err_at(l, src, 0, 0, "malformed path (expected keys and [index], e.g. barrier.cables[0].height)");
 }
 
+/* The folders the references of the model file named may be in: its own folder (as named), the parts
+ * library's and those the user allowed. */
+static void set_scope(cs_loader *l, const char *name) {
+    char why[PATH_MAX + 64], dir[PATH_MAX];
+    const char *slash = strrchr(name, '/');
+    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - name) + 1 : 1, slash ? name : ".");
+    cs_allow_free(&l->scope);
+    cs_allow_copy(&l->scope, &l->allow);
+    if (l->data_dir[0]) cs_allow_add(&l->scope, l->data_dir, why, sizeof why);
+    cs_allow_add(&l->scope, dir, why, sizeof why); /* none: the file's own load reports why */
+}
+
 static int load(cs_loader *l, int f, cs_model_input *out) {
     cs_node *root = f >= 0 ? cs_resolve_model(l, f) : NULL;
     for (int k = 0; root && k < l->set_count; k++)
@@ -496,12 +516,14 @@ static int load(cs_loader *l, int f, cs_model_input *out) {
 
 int cs_loader_load(cs_loader *l, const char *path, cs_model_input *out) {
     memset(out, 0, sizeof *out);
+    set_scope(l, path);
     return load(l, cs_file_load(l, path, NULL), out);
 }
 
 int cs_loader_load_buffer(cs_loader *l, const char *name, const char *data, size_t size,
                           cs_model_input *out) {
     memset(out, 0, sizeof *out);
+    set_scope(l, name);
     return load(l, cs_data_load(l, name, data, size), out);
 }
 
@@ -581,9 +603,12 @@ static const cs_node *engine_place(const cs_loader *l, const cs_model_input *in,
 }
 
 /* The --set that changed that element, if one did: the value the engine refuses most likely came from
- * it, not from the file. Its index, or -1. */
-static int engine_set(const cs_loader *l, int w, long i) {
+ * it, not from the file. A message about the soil (an anchor's or a footing's, which take the barrier's
+ * soil) looks for a --set of barrier.soil first. Its index, or -1. */
+static int engine_set(const cs_loader *l, int w, long i, int soil) {
     char prefix[64];
+    for (int k = l->set_count - 1; soil && k >= 0; k--)
+        if (!l->sets[k].bad && strncmp(l->sets[k].path, "barrier.soil", 12) == 0) return k;
     if (w == 0)
         snprintf(prefix, sizeof prefix, "barrier.cables[%ld]", i);
     else if (w == 1)
@@ -604,8 +629,9 @@ cs_model *cs_loader_build(cs_loader *l, const cs_model_input *in) {
     cs_model *m = cs_model_create(&in->barrier, &in->vehicle, &in->scenario, &err);
     if (m) return m;
     long i = -1;
-    int w = engine_element(err.message, &i), set = w >= 0 ? engine_set(l, w, i) : -1;
-    const cs_node *place = w >= 0 ? engine_place(l, in, w, i) : NULL;
+    int soil = strstr(err.message, "soil") != NULL;
+    int w = engine_element(err.message, &i), set = w >= 0 ? engine_set(l, w, i, soil) : -1;
+    const cs_node *place = soil && l->soil_node ? l->soil_node : w >= 0 ? engine_place(l, in, w, i) : NULL;
     if (set >= 0)
         cs_err_at(l, -1 - set, 0, 0, "%s (the engine's check of the model)", err.message);
     else if (place)

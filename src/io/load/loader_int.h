@@ -6,6 +6,7 @@
 #include <stdarg.h>
 
 #include "cablesim/loader.h"
+#include "confine.h"
 #include "schema.h"
 #include "units.h"
 #include "yamltree.h"
@@ -27,9 +28,11 @@ typedef struct cs_lfile {
     char *real;       /* canonical path, to find it again */
     const char *data; /* its contents, when loaded from memory (NULL: read real) */
     size_t size;
-    cs_ytree tree; /* its YAML, each value with its place */
-    cs_node *root; /* NULL if it failed to load */
-    int loading;   /* being loaded (a reference cycle if met again) */
+    cs_ytree tree;         /* its YAML, each value with its place */
+    cs_node *root;         /* NULL if it failed to load */
+    int loading;           /* being loaded (a reference cycle if met again) */
+    int referenced;        /* named by another model's file: its text is not echoed when it is not a model */
+    int odd_line, odd_col; /* referenced and not a model: where it shows (0: it is one) */
 } cs_lfile;
 
 typedef struct cs_lerror {
@@ -46,6 +49,8 @@ struct cs_loader {
     char data_dir[1024];
     char data_note[PATH_MAX + 64]; /* where data_dir came from (cs_data_dir_find), or why none was found */
     cs_units *units;
+    cs_allow allow; /* folders the user allowed (cs_loader_allow_path): kept by cs_loader_reset */
+    cs_allow scope; /* the folders this load's references may be in: allow's, the library's, the model's */
     struct cs_chunk *arena;
     struct cs_chunk *files_end; /* the newest allocation of a file read: cs_loader_reuse keeps up to it */
     cs_lfile *files;
@@ -59,7 +64,7 @@ struct cs_loader {
     int depth;                   /* nesting of part and file references */
     const cs_node **post_origin; /* group node of each loaded post */
     const cs_node **cable_origin;
-    const cs_node *vehicle_node, *scenario_node, *anchors_node;
+    const cs_node *vehicle_node, *scenario_node, *anchors_node, *soil_node;
 };
 
 void *cs_arena_alloc(cs_loader *l, size_t size); /* zeroed; NULL when out of memory */

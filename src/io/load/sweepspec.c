@@ -1,7 +1,7 @@
 /* The sweep spec: a YAML file read through the loader's YAML tree (yamltree.h), like the model files.
  * The keys of `set` and `vary` are model paths, a plot's x and lines are paths of `vary`; every value is
  * checked, each error at its line:column. */
-#define _POSIX_C_SOURCE 200809L
+#define _XOPEN_SOURCE 700 /* realpath */
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -827,9 +827,8 @@ cs_sweep_spec *cs_sweep_spec_read_buffer(const char *path, const char *data, siz
                            first->key_line, first->key_col);
     }
     const cs_ynode *root = tree.count > 0 ? &tree.items[0] : NULL;
-    if (rc != 0 && tree.open_errno)
-        cs_sweep_error(s, 0, 0, "%s: cannot open the file: %s (expected a readable sweep spec)", path,
-                       strerror(tree.open_errno));
+    if (rc != 0 && tree.unreadable)
+        cs_sweep_error(s, 0, 0, "%s: %s (expected a readable sweep spec)", path, tree.error);
     else if (rc != 0)
         cs_sweep_error(s, tree.error_line, tree.error_col, "%s", tree.error);
     else if (!root)
@@ -882,5 +881,23 @@ void cs_sweep_spec_free(cs_sweep_spec *s) {
     free(s->errors);
     free(s->model);
     free(s->file);
+    cs_allow_free(&s->allow);
     free(s);
+}
+
+void cs_sweep_spec_confine(cs_sweep_spec *s, const char *const *allow, int count) {
+    char why[PATH_MAX + 200], data[1024], note[PATH_MAX + 64], real[PATH_MAX];
+    for (int i = 0; i < count; i++)
+        if (cs_allow_add(&s->allow, allow[i], why, sizeof why) != 0)
+            cs_sweep_error(s, 0, 0, "--allow-path %s", why);
+    if (cs_data_dir_find(data, sizeof data, note, sizeof note) == 0)
+        cs_allow_add(&s->allow, data, why, sizeof why); /* none: the model's load says why */
+    cs_allow_add_folder_of(&s->allow, s->file, why, sizeof why);
+    if (!s->model || !realpath(s->model, real) || cs_allow_has(&s->allow, real)) return;
+    char dirs[2048];
+    cs_allow_list(&s->allow, dirs, sizeof dirs);
+    cs_sweep_error(s, s->model_line, s->model_col,
+                   "model: '%s' is outside the folders a study may read (expected a file in %s or below; "
+                   "--allow-path DIR allows another folder)",
+                   s->model, dirs);
 }

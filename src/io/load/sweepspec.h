@@ -7,6 +7,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "confine.h"
 #include "units.h"
 
 typedef enum cs_sweep_method {
@@ -79,6 +80,7 @@ typedef struct cs_sweep_spec {
     char *file;  /* the spec file as given */
     char *model; /* the base model file, relative to the spec's folder (or absolute) */
     int model_line, model_col;
+    cs_allow allow; /* more folders its model's files may be in (cs_sweep_spec_confine): none, the model's */
     cs_sweep_method method;
     long runs;
     uint64_t seed;
@@ -103,6 +105,11 @@ cs_sweep_spec *cs_sweep_spec_read(const char *path, cs_units *units);
 /* The same from a buffer standing for the file at path (whose folder the model is found from). */
 cs_sweep_spec *cs_sweep_spec_read_buffer(const char *path, const char *data, size_t size, cs_units *units);
 void cs_sweep_spec_free(cs_sweep_spec *spec);
+/* Hold the spec to the rule of the files it names: its model must be in the spec's folder (or below), the
+ * parts library's, or one of the folders of allow (--allow-path), and every run's loader may read the
+ * model's files from any of them. Errors recorded: at the model's place, or a folder of allow that is
+ * not one. */
+void cs_sweep_spec_confine(cs_sweep_spec *spec, const char *const *allow, int count);
 /* Is the file a sweep spec (a YAML mapping with a top-level `vary`) rather than a model? */
 int cs_sweep_is_spec(const char *path);
 /* Record an error at a place of the spec (line 0: no place). */

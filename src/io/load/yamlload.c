@@ -187,13 +187,31 @@ static int fill(const build *b, cs_node *n, const cs_ynode *y, const cs_field *f
     return 0;
 }
 
+/* The first node of a tree that a model file could not hold at its top: a root that is not a mapping, or a
+ * key of the root that is not one of the model's. NULL: none (an empty file is a model's, wrong). */
+static const cs_ynode *odd_top(const cs_ytree *t) {
+    if (t->count == 0) return NULL;
+    const cs_ynode *root = &t->items[0];
+    if (root->kind != CS_Y_MAP) return root;
+    for (int i = 0; i < root->count; i++)
+        if (!root->kids[i]->key || cs_table_find(&cs_table_model, root->kids[i]->key) < 0)
+            return root->kids[i];
+    return NULL;
+}
+
 static int read_file(cs_loader *l, int file) {
     cs_lfile *lf = &l->files[file];
     if (cs_ytree_read(&lf->tree, lf->real, lf->data, lf->size, MAX_DEPTH) != 0) {
-        if (lf->tree.open_errno) /* no place in a file it could not read */
+        if (lf->tree.unreadable) /* no place in a file it could not read */
             cs_err_at(l, INT_MIN, 0, 0, "%s: %s (expected a readable YAML file)", lf->name, lf->tree.error);
         else
             cs_err_at(l, file, lf->tree.error_line, lf->tree.error_col, "%s", lf->tree.error);
+        return -1;
+    }
+    const cs_ynode *at = lf->referenced ? odd_top(&lf->tree) : NULL;
+    if (at) { /* perhaps someone else's file: cs_file_load reports where, never what */
+        lf->odd_line = at->key_line;
+        lf->odd_col = at->key_col;
         return -1;
     }
     if (lf->tree.count == 0) {
@@ -213,7 +231,8 @@ static int read_file(cs_loader *l, int file) {
 }
 
 /* A new entry of the file table, read. Returns its index, or -1. */
-static int add_file(cs_loader *l, const char *name, const char *real, const char *data, size_t size) {
+static int add_file(cs_loader *l, const char *name, const char *real, const char *data, size_t size,
+                    int referenced) {
     if (cs_grow(&l->files, &l->file_capacity, l->file_count, sizeof *l->files) != 0) return -1;
     int f = l->file_count++;
     cs_lfile *lf = &l->files[f];
@@ -222,6 +241,7 @@ static int add_file(cs_loader *l, const char *name, const char *real, const char
     lf->real = cs_arena_strdup(l, real);
     lf->data = data;
     lf->size = size;
+    lf->referenced = referenced;
     if (!lf->name || !lf->real) return -1;
     lf->loading = 1;
     int rc = read_file(l, f);
@@ -251,12 +271,28 @@ int cs_file_load(cs_loader *l, const char *path, const cs_node *from) {
         }
         return l->files[i].root ? i : -1;
     }
-    return add_file(l, path, real, NULL, 0);
+    if (from && !cs_allow_has(&l->scope, real)) {
+        char dirs[2048];
+        cs_allow_list(&l->scope, dirs, sizeof dirs);
+        cs_err_node(l, from, 0,
+                    "'%s' is outside the folders a model may read (expected a file in %s or below; "
+                    "--allow-path DIR allows another folder)",
+                    from->kind == CS_Y_SCALAR ? from->text : path, dirs);
+        return -1;
+    }
+    int f = add_file(l, path, real, NULL, 0, from != NULL);
+    if (f < 0 && l->file_count > 0 && l->files[l->file_count - 1].odd_line)
+        cs_err_node(l, from, 0,
+                    "'%s' is not a model file (at its line %d, column %d; expected a mapping of name, "
+                    "description, parts, barrier, vehicle, scenario; its text is not shown)",
+                    from->kind == CS_Y_SCALAR ? from->text : path, l->files[l->file_count - 1].odd_line,
+                    l->files[l->file_count - 1].odd_col);
+    return f;
 }
 
 int cs_data_load(cs_loader *l, const char *name, const char *data, size_t size) {
     char real[PATH_MAX]; /* the file it stands for, if there is one */
-    return add_file(l, name, realpath(name, real) ? real : name, data, size);
+    return add_file(l, name, realpath(name, real) ? real : name, data, size, 0);
 }
 
 const cs_node *cs_node_get(const cs_node *map, const char *key) {

@@ -1,13 +1,12 @@
 #define _POSIX_C_SOURCE 200809L
 #include "yamltree.h"
 
+#include "confine.h"
 #include "grow.h"
 
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <yaml.h>
 
 enum { MAX_DEPTH = 64 };
@@ -205,27 +204,22 @@ static int link(reader *r) {
 int cs_ytree_read(cs_ytree *tree, const char *filename, const char *data, size_t size, int max_depth) {
     memset(tree, 0, sizeof *tree);
     reader r = {.tree = tree, .max_depth = max_depth < MAX_DEPTH ? max_depth : MAX_DEPTH};
-    FILE *f = data ? NULL : fopen(filename, "rb");
-    struct stat st;
-    if (f && fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) { /* fopen opens a folder for reading */
-        fclose(f);
-        f = NULL;
-        errno = EISDIR;
-    }
-    if (!data && !f) {
-        tree->open_errno = errno;
-        snprintf(tree->error, sizeof tree->error, "cannot open the file: %s", strerror(errno));
-        return -1;
+    char *text = NULL;
+    if (!data) { /* a regular file only, read whole: never a FIFO's or a device's wait */
+        int err = 0;
+        if (cs_input_read(filename, CS_INPUT_MAX, &text, &size, &err, tree->error, sizeof tree->error) != 0) {
+            tree->unreadable = 1;
+            tree->open_errno = err;
+            return -1;
+        }
+        data = text;
     }
     yaml_parser_t parser;
     yaml_parser_initialize(&parser);
-    if (f)
-        yaml_parser_set_input_file(&parser, f);
-    else
-        yaml_parser_set_input_string(&parser, (const unsigned char *)data, size);
+    yaml_parser_set_input_string(&parser, (const unsigned char *)data, size);
     read_events(&r, &parser);
     yaml_parser_delete(&parser);
-    if (f) fclose(f);
+    free(text);
     if (link(&r) != 0 && !tree->error[0]) snprintf(tree->error, sizeof tree->error, "out of memory");
     for (int a = 0; a < r.anchor_count; a++)
         free(r.anchors[a].name);

@@ -33,7 +33,8 @@ typedef struct cs_ytree {
     int count, capacity;
     struct cs_ynode **kid_store;
     int error_line, error_col; /* YAML syntax error, if error[0] */
-    int open_errno;            /* the file could not be opened: errno */
+    int unreadable;            /* the file could not be read (error says why; no place in it) */
+    int open_errno;            /* its errno, when the system refused it (0: cablesim refused it) */
     char error[200];
 } cs_ytree;
 

@@ -301,31 +301,22 @@ void cs_compare_print_metrics(FILE *f, const cs_trace *traces, int count, int re
 
 /* ---- the files ---- */
 
-static int finish(cs_outdir *out, FILE *f, int rc, char *why, size_t why_size) {
-    char end_why[512];
-    if (cs_out_end(out, f, end_why, sizeof end_why) != 0 && rc == 0) {
-        snprintf(why, why_size, "%s", end_why);
-        rc = -1;
-    }
-    return rc;
-}
-
 int cs_compare_write(cs_outdir *out, const cs_trace *traces, int count, int reference, char *why,
                      size_t why_size) {
     FILE *f = cs_out_begin(out, "compare.csv", why, why_size);
     if (!f) return -1;
     write_csv(f, traces, count, reference);
-    if (finish(out, f, 0, why, why_size) != 0) return -1;
+    if (cs_out_finish(out, f, 0, why, why_size) != 0) return -1;
     if (!(f = cs_out_begin(out, "compare.md", why, why_size))) return -1;
     fprintf(f, "# Comparison\n\nDifferences are against %s%s.\n\n", traces[reference].label,
             traces[reference].measured ? " (measured)" : "");
     write_table(f, traces, count, reference, 0);
     write_metrics(f, traces, count, reference, 1);
-    if (finish(out, f, 0, why, why_size) != 0) return -1;
+    if (cs_out_finish(out, f, 0, why, why_size) != 0) return -1;
     if (traces[reference].measured) {
         if (!(f = cs_out_begin(out, "metrics.csv", why, why_size))) return -1;
         write_metrics(f, traces, count, reference, 0);
-        if (finish(out, f, 0, why, why_size) != 0) return -1;
+        if (cs_out_finish(out, f, 0, why, why_size) != 0) return -1;
     }
     if (cs_out_subdir(out, "plots", why, why_size) != 0) return -1;
     static const cs_plot_format formats[] = {CS_PLOT_PNG, CS_PLOT_SVG};
@@ -336,7 +327,7 @@ int cs_compare_write(cs_outdir *out, const cs_trace *traces, int count, int refe
             if (!(f = cs_out_begin(out, name, why, why_size))) return -1;
             plot_job job = {&figures[k], traces, count, reference};
             int rc = cs_plot_write(f, formats[j], WIDTH, HEIGHT, draw, &job, why, why_size);
-            if (finish(out, f, rc, why, why_size) != 0) return -1;
+            if (cs_out_finish(out, f, rc, why, why_size) != 0) return -1;
         }
     /* the page: the table and each plot's SVG inline, so it opens from disk alone */
     if (!(f = cs_out_begin(out, "compare.html", why, why_size))) return -1;
@@ -360,5 +351,5 @@ int cs_compare_write(cs_outdir *out, const cs_trace *traces, int count, int refe
         rc = cs_html_figure(f, id, WIDTH, HEIGHT, draw, &job, why, why_size);
     }
     fputs("</body></html>\n", f);
-    return finish(out, f, rc, why, why_size);
+    return cs_out_finish(out, f, rc, why, why_size);
 }

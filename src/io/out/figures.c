@@ -751,12 +751,7 @@ int cs_figures_write(cs_outdir *out, const char *subdir, const cs_plot_format *f
             FILE *f = cs_out_begin(out, name, why, why_size);
             if (!f) return -1;
             int rc = cs_figure_write(f, formats[j], (cs_figure)k, d, why, why_size);
-            char end_why[512];
-            if (cs_out_end(out, f, end_why, sizeof end_why) != 0 && rc == 0) {
-                snprintf(why, why_size, "%s", end_why);
-                rc = -1;
-            }
-            if (rc != 0) return -1;
+            if (cs_out_finish(out, f, rc, why, why_size) != 0) return -1;
         }
     return 0;
 }

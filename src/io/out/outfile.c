@@ -1,5 +1,7 @@
-#define _POSIX_C_SOURCE 200809L
+#define _GNU_SOURCE /* fopencookie */
 #include "outfile.h"
+
+#include "load/confine.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -119,6 +121,8 @@ static int take_lock(cs_outdir *out, char *why, size_t why_size) {
 }
 
 static void release(cs_outdir *out) {
+    if (out->journal >= 0) close(out->journal);
+    out->journal = -1;
     if (out->lock >= 0) {
         char path[PATH_SIZE];
         full_path(out, CS_OUT_LOCK, path, sizeof path);
@@ -240,7 +244,8 @@ static int scan(const cs_outdir *out, const char *rel, int depth, int remove, ch
         } else if (ours && remove) {
             unlink(full);
         } else if (!ours && !remove && !listed(out, sub) &&
-                   !(!rel[0] && (strcmp(name, CS_OUT_MANIFEST) == 0 || strcmp(name, CS_OUT_LOCK) == 0))) {
+                   !(!rel[0] && (strcmp(name, CS_OUT_MANIFEST) == 0 || strcmp(name, CS_OUT_LOCK) == 0 ||
+                                 strcmp(name, CS_OUT_JOURNAL) == 0))) {
             snprintf(found, found_size, "%s", sub);
             rc = 1;
         }
@@ -266,7 +271,7 @@ static int check_contents(cs_outdir *out, char *why, size_t why_size) {
 
 int cs_out_open(cs_outdir *out, const char *dir, int flags, char *why, size_t why_size) {
     memset(out, 0, sizeof *out);
-    out->lock = -1;
+    out->lock = out->journal = -1;
     out->flags = flags;
     mode_t mask = umask(0);
     umask(mask);
@@ -309,10 +314,13 @@ int cs_out_subdir(cs_outdir *out, const char *subdir, char *why, size_t why_size
     char path[PATH_SIZE];
     full_path(out, subdir, path, sizeof path);
     struct stat st;
-    if (mkdir(path, 0777) != 0 && errno != EEXIST) {
+    int made = mkdir(path, 0777) == 0;
+    if (!made && errno != EEXIST) {
         snprintf(why, why_size, "%s: %s", path, strerror(errno));
         return -1;
     }
+    if (made && out->subdir_count < 8)
+        snprintf(out->subdirs[out->subdir_count++], sizeof out->subdirs[0], "%s", subdir);
     if (lstat(path, &st) != 0 || !S_ISDIR(st.st_mode)) { /* a file, or a link to somewhere else */
         snprintf(why, why_size, "%s: not a folder of this one (%s)", path, strerror(ENOTDIR));
         return -1;
@@ -360,10 +368,43 @@ static int begin(cs_outdir *out, const char *name, char *why, size_t why_size) {
     return fd;
 }
 
+/* The stream of an output file: its descriptor's writes, each error's errno kept (the first) so that the
+ * file's end says why, whatever a writer did with errno since. */
+static ssize_t stream_write(void *cookie, const char *buf, size_t size) {
+    int *c = cookie; /* {fd, first errno} */
+    size_t done = 0;
+    while (done < size) {
+        ssize_t n = write(c[0], buf + done, size - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) {
+            if (!c[1]) c[1] = errno;
+            return done ? (ssize_t)done : -1;
+        }
+        done += (size_t)n;
+    }
+    return (ssize_t)done;
+}
+
+static int stream_close(void *cookie) {
+    return close(((int *)cookie)[0]);
+}
+
+/* CABLESIM_TEST_DEV_FULL=NAME (for tests): the file NAME is written to /dev/full, as a full disk would
+ * take it (every write fails with ENOSPC). */
+static void test_dev_full(int fd, const char *name) {
+    const char *full = getenv("CABLESIM_TEST_DEV_FULL");
+    int dev = full && strcmp(full, name) == 0 ? open("/dev/full", O_WRONLY) : -1;
+    if (dev >= 0) dup2(dev, fd), close(dev);
+}
+
 FILE *cs_out_begin(cs_outdir *out, const char *name, char *why, size_t why_size) {
     int fd = begin(out, name, why, why_size);
     if (fd < 0) return NULL;
-    FILE *f = fdopen(fd, "w");
+    test_dev_full(fd, name);
+    int *c = out->streams[out->count - 1];
+    c[0] = fd;
+    c[1] = 0;
+    FILE *f = fopencookie(c, "w", (cookie_io_functions_t){NULL, stream_write, NULL, stream_close});
     if (!f) {
         snprintf(why, why_size, "%s/%s: %s", out->dir, name, strerror(errno));
         close(fd);
@@ -386,10 +427,18 @@ static int end_failed(const cs_outdir *out, int i, int err, char *why, size_t wh
 }
 
 int cs_out_end_at(cs_outdir *out, int i, FILE *f, char *why, size_t why_size) {
-    int bad = fflush(f) != 0 || ferror(f) || fsync(fileno(f)) != 0;
-    int err = errno;
+    int *c = out->streams[i];
+    int bad = fflush(f) != 0 || ferror(f) || fsync(c[0]) != 0;
+    int err = c[1] ? c[1] : errno; /* the first write's error, else the flush's or the fsync's */
     bad |= fclose(f) != 0;
     return bad ? end_failed(out, i, err ? err : errno, why, why_size) : 0;
+}
+
+int cs_out_finish(cs_outdir *out, FILE *f, int rc, char *why, size_t why_size) {
+    char end_why[1500];
+    if (cs_out_end(out, f, end_why, sizeof end_why) == 0) return rc == 0 ? 0 : -1;
+    snprintf(why, why_size, "%s", end_why); /* which file, and the system's reason: the cause */
+    return -1;
 }
 
 int cs_out_end(cs_outdir *out, FILE *f, char *why, size_t why_size) {
@@ -455,6 +504,8 @@ int cs_out_commit(cs_outdir *out, char *why, size_t why_size) {
         }
     }
     if (write_manifest(out, 0, why, why_size) != 0) return -1; /* the commit point */
+    full_path(out, CS_OUT_JOURNAL, tmp, sizeof tmp);
+    unlink(tmp); /* a journal's runs are in the outputs now */
     sync_folder(out, "", 0);
     for (int i = 0; i < out->count; i++) {
         const char *slash = strrchr(out->names[i], '/');
@@ -463,7 +514,7 @@ int cs_out_commit(cs_outdir *out, char *why, size_t why_size) {
             sync_folder(out, out->names[i], len);
     }
     out->count = 0;
-    out->made = 0; /* the folders hold a result now */
+    out->made = out->subdir_count = 0; /* the folders hold a result now */
     release(out);
     return 0;
 }
@@ -480,7 +531,11 @@ void cs_out_abort(cs_outdir *out) {
         snprintf(path, sizeof path, "%s/%.*s", out->dir, (int)(slash - out->names[i]), out->names[i]);
         rmdir(path);
     }
-    out->count = 0;
+    for (int i = 0; i < out->subdir_count; i++) { /* and one it made that no file was begun in */
+        full_path(out, out->subdirs[i], path, sizeof path);
+        rmdir(path);
+    }
+    out->count = out->subdir_count = 0;
     release(out);
     /* the folders cs_out_open made, deepest first, while they are empty */
     char part[1024];
@@ -495,4 +550,59 @@ void cs_out_abort(cs_outdir *out) {
         *slash = '\0';
     }
     out->made = 0;
+}
+
+/* ---- a sweep's journal ---- */
+
+/* Write all of text to fd and fsync it. 0, or -1 with errno set. */
+static int write_all_sync(int fd, const char *text, size_t len) {
+    while (len > 0) {
+        ssize_t n = write(fd, text, len);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) return -1;
+        text += n, len -= (size_t)n;
+    }
+    return fsync(fd);
+}
+
+int cs_out_journal_start(cs_outdir *out, const char *text, size_t len, char *why, size_t why_size) {
+    char tmp[PATH_SIZE], path[PATH_SIZE];
+    snprintf(tmp, sizeof tmp, "%s/%sjournal.XXXXXX", out->dir, tmp_prefix);
+    full_path(out, CS_OUT_JOURNAL, path, sizeof path);
+    int fd = mkstemp(tmp);
+    if (fd < 0 || fchmod(fd, (mode_t)out->mode) != 0 || write_all_sync(fd, text, len) != 0 ||
+        rename(tmp, path) != 0) {
+        snprintf(why, why_size, "%s: %s", path, strerror(errno));
+        if (fd >= 0) close(fd), unlink(tmp);
+        return -1;
+    }
+    sync_folder(out, "", 0);
+    if (out->journal >= 0) close(out->journal);
+    out->journal = fd; /* the renamed file: appends go on at its end */
+    return 0;
+}
+
+int cs_out_journal_add(cs_outdir *out, const char *text, size_t len, char *why, size_t why_size) {
+    if (out->journal < 0 || write_all_sync(out->journal, text, len) != 0) {
+        char path[PATH_SIZE];
+        full_path(out, CS_OUT_JOURNAL, path, sizeof path);
+        snprintf(why, why_size, "%s: %s", path, out->journal < 0 ? "not open" : strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+char *cs_out_journal_read(const char *dir, size_t *len, char *why, size_t why_size) {
+    char path[PATH_SIZE], reason[256];
+    snprintf(path, sizeof path, "%s/%s", dir, CS_OUT_JOURNAL);
+    char *text = NULL;
+    int err = 0;
+    why[0] = '\0';
+    if (cs_input_read(path, (size_t)2 << 30, &text, len, &err, reason, sizeof reason) != 0) {
+        if (err != ENOENT) snprintf(why, why_size, "%s: %s", path, reason);
+        return NULL;
+    }
+    while (*len > 0 && text[*len - 1] != '\n') /* a row cut short by a kill */
+        text[--*len] = '\0';
+    return text;
 }

@@ -10,7 +10,7 @@
  * flushed and fsync'ed; cs_out_commit renames them all into place, removes the files of the earlier
  * manifest that this run did not write, and writes the new manifest last, by a temporary and a rename:
  * the commit point. cs_out_abort removes the temporaries (and the folders cs_out_open made) so a failed
- * run leaves nothing. Either releases the lock. */
+ * run leaves nothing. Either releases the lock. A sweep's journal, beside them, is below. */
 #ifndef CS_OUTFILE_H
 #define CS_OUTFILE_H
 
@@ -22,17 +22,22 @@ enum { CS_OUT_FORCE = 1 };      /* cs_out_open: write beside files no manifest l
 #define CS_OUT_MANIFEST ".cablesim-manifest"
 #define CS_OUT_LOCK ".cablesim-lock"
 #define CS_OUT_TMP_PREFIX ".cablesim-tmp."
+#define CS_OUT_JOURNAL ".cablesim-journal"
 
 typedef struct cs_outdir {
     char dir[1024];
     int count;
     char names[CS_OUT_MAX_FILES][128]; /* the files begun, relative to dir */
     char tmps[CS_OUT_MAX_FILES][200];  /* their temporaries, relative to dir */
+    int streams[CS_OUT_MAX_FILES][2];  /* their streams' descriptor and first write error (errno) */
     char (*prev)[128];                 /* the earlier run's manifest */
     int prev_count;
-    int made;      /* the folders cs_out_open created: the last `made` prefixes of dir */
+    int made;             /* the folders cs_out_open created: the last `made` prefixes of dir */
+    char subdirs[8][128]; /* the subfolders cs_out_subdir made (cs_out_abort removes them when empty) */
+    int subdir_count;
     int flags;     /* CS_OUT_FORCE */
     int lock;      /* the lock's file descriptor, -1 when not held */
+    int journal;   /* the journal's, open for appending; -1: none */
     unsigned mode; /* the files' permissions: 0666 less the umask */
 } cs_outdir;
 
@@ -46,8 +51,13 @@ int cs_out_subdir(cs_outdir *out, const char *subdir, char *why, size_t why_size
  * folder there, or a file no manifest lists (CS_OUT_FORCE). */
 FILE *cs_out_begin(cs_outdir *out, const char *name, char *why, size_t why_size);
 /* Flush, fsync and close a file from cs_out_begin: the last begun, or the i-th (files written side by
- * side). Returns 0, or -1 with why filled. */
+ * side). Returns 0, or -1 with why filled: the file and the system's reason for its first failed write
+ * (a full disk: "No space left on device"). */
 int cs_out_end(cs_outdir *out, FILE *f, char *why, size_t why_size);
+/* End the last file begun (cs_out_end) after its writer returned rc (rc != 0: why holds its reason).
+ * Returns 0 when both went well, else -1 with why the file's own error when it had one (which file, and
+ * the system's reason: "DIR/runs.csv: No space left on device"), else the writer's reason. */
+int cs_out_finish(cs_outdir *out, FILE *f, int rc, char *why, size_t why_size);
 int cs_out_end_at(cs_outdir *out, int i, FILE *f, char *why, size_t why_size);
 /* The same for a writer that opens its file by name (netCDF): the temporary's path into path (an empty
  * file the writer replaces), and, once the writer has closed it, cs_out_end_path fsyncs it. Each returns
@@ -59,6 +69,18 @@ int cs_out_end_path(cs_outdir *out, char *why, size_t why_size);
  * write (and a subfolder they leave empty), write the manifest, release the lock. Returns 0, or -1 with
  * why filled (then call cs_out_abort). */
 int cs_out_commit(cs_outdir *out, char *why, size_t why_size);
+/* A journal in the folder (DIR/.cablesim-journal, a sweep's: each run's result as it finishes), which
+ * outlives a kill -9, a power cut or a failed write of the outputs, and which cs_out_commit removes (the
+ * outputs hold it all then). cs_out_journal_start writes its first text through a temporary, fsync and
+ * rename (it replaces an earlier journal whole or not at all) and keeps it open; cs_out_journal_add
+ * appends text and fsyncs. Each returns 0, or -1 with why filled ("DIR/.cablesim-journal: No space left
+ * on device"). */
+int cs_out_journal_start(cs_outdir *out, const char *text, size_t len, char *why, size_t why_size);
+int cs_out_journal_add(cs_outdir *out, const char *text, size_t len, char *why, size_t why_size);
+/* The journal of the folder dir up to its last whole line (a line cut by a kill is dropped), malloc'ed and
+ * NUL-terminated, its length in *len. NULL with why empty: there is none; NULL with why filled: it cannot
+ * be read. */
+char *cs_out_journal_read(const char *dir, size_t *len, char *why, size_t why_size);
 /* Remove the temporaries begun, and the folders cs_out_open made if they are empty; release the lock.
  * Safe to call twice, and after a commit (then it does nothing). */
 void cs_out_abort(cs_outdir *out);

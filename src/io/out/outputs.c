@@ -40,11 +40,7 @@ int cs_write_run_files(cs_outdir *out, const cs_model_input *in, const cs_model 
         rc = k == 0   ? cs_write_timeseries(f, rec, why, why_size)
              : k == 1 ? cs_write_events(f, state, why, why_size)
                       : cs_write_summary_json_with(f, in, model, state, info, why, why_size);
-        char end_why[512];
-        if (cs_out_end(out, f, end_why, sizeof end_why) != 0 && rc == 0) {
-            snprintf(why, why_size, "%s", end_why);
-            rc = -1;
-        }
+        rc = cs_out_finish(out, f, rc, why, why_size);
     }
     if (rc == 0 && (flags & CS_OUTPUT_PLOTS)) rc = write_plots(out, in, state, rec, why, why_size);
     if (rc == 0 && more) rc = more(out, user, why, why_size);

@@ -254,30 +254,33 @@ static void runs_header(FILE *f, const cs_sweep_spec *s) {
     fputc('\n', f);
 }
 
-int cs_sweep_write_runs(FILE *f, const cs_sweep_spec *s, const double *x, const cs_sweep_result *r, long n,
-                        char *why, size_t why_size) {
+void cs_sweep_write_run_row(FILE *f, const cs_sweep_spec *s, const double *x, const cs_sweep_result *r,
+                            long i) {
     int k = s->var_count;
     cs_sweep_column cols[CS_SWEEP_MAX_COLUMNS];
     int nc = cs_sweep_columns(cols);
-    runs_header(f, s);
-    for (long i = 0; i < n; i++) {
-        if (r[i].pending) continue; /* a partial sweep's runs not run yet */
-        fprintf(f, "%ld", i);
-        for (int j = 0; j < k; j++) {
-            char value[256];
-            cs_sweep_value_text(&s->vars[j], x[i * k + j], value, sizeof value);
-            fputc(',', f);
-            csv_text(f, value);
-        }
-        for (int c = 0; c < nc; c++) {
-            fputc(',', f);
-            if (cols[c].kind == CS_COLUMN_TEXT)
-                csv_text(f, cs_sweep_column_text(&cols[c], &r[i]));
-            else
-                csv_num(f, cs_sweep_column_number(&cols[c], &r[i]));
-        }
-        fputc('\n', f);
+    fprintf(f, "%ld", i);
+    for (int j = 0; j < k; j++) {
+        char value[256];
+        cs_sweep_value_text(&s->vars[j], x[i * k + j], value, sizeof value);
+        fputc(',', f);
+        csv_text(f, value);
     }
+    for (int c = 0; c < nc; c++) {
+        fputc(',', f);
+        if (cols[c].kind == CS_COLUMN_TEXT)
+            csv_text(f, cs_sweep_column_text(&cols[c], r));
+        else
+            csv_num(f, cs_sweep_column_number(&cols[c], r));
+    }
+    fputc('\n', f);
+}
+
+int cs_sweep_write_runs(FILE *f, const cs_sweep_spec *s, const double *x, const cs_sweep_result *r, long n,
+                        char *why, size_t why_size) {
+    runs_header(f, s);
+    for (long i = 0; i < n; i++)
+        if (!r[i].pending) cs_sweep_write_run_row(f, s, x, &r[i], i); /* a partial sweep's others: none */
     if (ferror(f)) {
         snprintf(why, why_size, "write error");
         return -1;
@@ -581,10 +584,9 @@ static void jnum(FILE *f, double v) {
     put_num(f, v, "%.10g", "null");
 }
 
-static void summary_json(FILE *f, const cs_sweep_spec *spec, long n, const summary *s) {
-    int k = spec->var_count;
-    const cs_sweep_origin *o = &spec->origin;
-    fprintf(f, "{\"cablesim\":{\"version\":");
+/* summary.json's "cablesim" member: the version, the command line and the base model's hash. */
+static void origin_json(FILE *f, const cs_sweep_origin *o) {
+    fprintf(f, "\"cablesim\":{\"version\":");
     cs_json_string(f, CS_VERSION_STRING);
     fprintf(f, ",\"command\":");
     if (o->command)
@@ -595,7 +597,25 @@ static void summary_json(FILE *f, const cs_sweep_spec *spec, long n, const summa
         fprintf(f, ",\"model_hash\":\"%016llx\"", o->model_hash);
     else
         fprintf(f, ",\"model_hash\":null");
-    fprintf(f, "},\n\"partial\":%s,\"runs_done\":%ld,\"stopped_by\":", s->done < n ? "true" : "false",
+    fputc('}', f);
+}
+
+int cs_sweep_write_journal_start(FILE *f, const cs_sweep_spec *spec, const double *x,
+                                 const cs_sweep_result *r, long n, char *why, size_t why_size) {
+    const cs_sweep_origin *o = &spec->origin;
+    fputc('{', f);
+    origin_json(f, o);
+    fprintf(f, ",\"partial\":true,\"inputs_hash\":\"%016llx\",\"resume\":%s}\n", o->inputs_hash,
+            o->resume ? o->resume : "null");
+    return cs_sweep_write_runs(f, spec, x, r, n, why, why_size);
+}
+
+static void summary_json(FILE *f, const cs_sweep_spec *spec, long n, const summary *s) {
+    int k = spec->var_count;
+    const cs_sweep_origin *o = &spec->origin;
+    fputc('{', f);
+    origin_json(f, o);
+    fprintf(f, ",\n\"partial\":%s,\"runs_done\":%ld,\"stopped_by\":", s->done < n ? "true" : "false",
             s->done);
     if (s->done < n && o->stopped_by)
         cs_json_string(f, o->stopped_by);
@@ -800,7 +820,7 @@ static int set_column(const cs_sweep_column *c, cs_sweep_result *r, const char *
 }
 
 long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *s, const double *x,
-                        cs_sweep_result *r, long n, char *why, size_t why_size) {
+                        cs_sweep_result *r, long n, int any_order, char *why, size_t why_size) {
     int k = s->var_count;
     cs_sweep_column cols[CS_SWEEP_MAX_COLUMNS];
     int nc = cs_sweep_columns(cols), max = 1 + k + nc;
@@ -826,9 +846,11 @@ long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *s, const
         if (got == 0) break;
         char *end;
         long i = got == max ? strtol(field[0], &end, 10) : -1;
-        if (got != max || *end || i < 0 || i >= n || i <= last) {
+        if (got != max || *end || i < 0 || i >= n || (any_order ? !r[i].pending : i <= last)) {
             snprintf(why, why_size, "%s:%ld: %s", name, at,
-                     got != max ? "not a row of this study (its fields)" : "not the next run of this study");
+                     got != max  ? "not a row of this study (its fields)"
+                     : any_order ? "not a run of this study, or one given twice"
+                                 : "not the next run of this study");
             count = -1;
             break;
         }

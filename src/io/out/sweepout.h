@@ -48,12 +48,23 @@ double cs_sweep_quantile(const double *sorted, long n, double p);
 /* runs.csv: one row per run in run order (a pending run has none). Returns 0, or -1 with why filled. */
 int cs_sweep_write_runs(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r, long n,
                         char *why, size_t why_size);
+/* The row of run i (r: its result), as cs_sweep_write_runs writes it: a sweep's journal appends each run's
+ * row as it finishes. */
+void cs_sweep_write_run_row(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
+                            long i);
+/* The start of a sweep's journal (DIR/.cablesim-journal): one line of JSON, summary.json's "cablesim",
+ * "partial" (true), "inputs_hash" and "resume" (what `sweep --resume` reads), then runs.csv with the runs
+ * of r done so far (none pending: a resumed sweep's); each run's row is appended as it finishes. 0, or -1
+ * with why filled. */
+int cs_sweep_write_journal_start(FILE *f, const cs_sweep_spec *spec, const double *x,
+                                 const cs_sweep_result *r, long n, char *why, size_t why_size);
 /* runs.csv read back, for `sweep --resume`: each row's run into r[run] (its pending flag cleared), after
- * checking the header and each row's inputs against spec and x (the same study). Rows must come in run
- * order; runs with no row are left as they are. Returns the rows read, or -1 with why filled
+ * checking the header and each row's inputs against spec and x (the same study). Rows come in run order,
+ * or with any_order (a journal: as the runs finished) in any order, each run once (r's runs pending
+ * before); runs with no row are left as they are. Returns the rows read, or -1 with why filled
  * ("NAME:LINE: what"). */
 long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *spec, const double *x,
-                        cs_sweep_result *r, long n, char *why, size_t why_size);
+                        cs_sweep_result *r, long n, int any_order, char *why, size_t why_size);
 /* runs.nc: the same table as netCDF (CF-1.8; 64-bit offset, the same bytes for the same results), at path
  * (a temporary: a failure leaves it to be removed). Returns 0, or -1 with why filled (nc_strerror's). */
 int cs_sweep_write_netcdf(const char *path, const cs_sweep_spec *spec, const double *x,

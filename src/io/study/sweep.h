@@ -55,6 +55,9 @@ typedef struct cs_sweep_result {
     char error[256]; /* status != OK: why */
 } cs_sweep_result;
 
+/* A loader for the spec's runs: it may read the model's files from the folders of spec->allow. NULL
+ * with why filled when memory is short or the unit database cannot be read. */
+cs_loader *cs_sweep_loader(const cs_sweep_spec *spec, char *why, size_t why_size);
 /* One run with inputs xrow (var_count values): load (on loader, reset first; NULL: a loader of its
  * own), build, run, rate. Safe to call from several threads at once, each with its own loader. */
 void cs_sweep_run(const cs_sweep_spec *spec, const double *xrow, cs_loader *loader, cs_sweep_result *r);

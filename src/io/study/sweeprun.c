@@ -25,11 +25,18 @@ static int load_run(cs_loader *l, const cs_sweep_spec *s, const double *xrow, in
     return cs_loader_load(l, s->model, in);
 }
 
+cs_loader *cs_sweep_loader(const cs_sweep_spec *s, char *why, size_t why_size) {
+    cs_loader *l = cs_loader_create(NULL, why, why_size);
+    for (int i = 0; l && i < s->allow.count; i++)
+        cs_loader_allow_path(l, s->allow.dirs[i], why, why_size); /* canonical folders: each is one */
+    return l;
+}
+
 void cs_sweep_run(const cs_sweep_spec *s, const double *xrow, cs_loader *loader, cs_sweep_result *r) {
     memset(r, 0, sizeof *r);
     snprintf(r->rating, sizeof r->rating, "none");
     char why[256];
-    cs_loader *l = loader ? loader : cs_loader_create(NULL, why, sizeof why);
+    cs_loader *l = loader ? loader : cs_sweep_loader(s, why, sizeof why);
     if (loader) cs_loader_reuse(loader); /* the model file and the library are parsed once per loader */
     if (!l) {
         r->status = CS_RUN_BAD_MODEL;
@@ -116,7 +123,7 @@ static void map_errors(cs_sweep_spec *s, cs_loader *l, const double *xrow, int v
 
 static int check_one(cs_sweep_spec *s, const double *xrow, int var, double x_var, int line, int col) {
     char why[256];
-    cs_loader *l = cs_loader_create(NULL, why, sizeof why);
+    cs_loader *l = cs_sweep_loader(s, why, sizeof why);
     if (!l) {
         cs_sweep_error(s, 0, 0, "%s", why);
         return -1;
@@ -144,7 +151,7 @@ int cs_sweep_check(cs_sweep_spec *s, const double *x) {
 
 int cs_sweep_model_hash(const cs_sweep_spec *s, unsigned long long *hash) {
     char why[256];
-    cs_loader *l = cs_loader_create(NULL, why, sizeof why);
+    cs_loader *l = cs_sweep_loader(s, why, sizeof why);
     if (!l) return -1;
     for (int k = 0; k < s->set_count; k++)
         cs_loader_set(l, s->sets[k]);
