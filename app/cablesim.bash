@@ -11,7 +11,7 @@ _cablesim() {
         return
     fi
     case $prev in
-    -o | --out | --examples | --resume)
+    -o | --out | --examples | --resume | --allow-path)
         mapfile -t COMPREPLY < <(compgen -d -- "$cur")
         return
         ;;
@@ -33,13 +33,13 @@ _cablesim() {
     esac
     local opts=""
     case $cmd in
-    run) opts="-o --out --force --dt --t-end --set --plots --report --occupant-at --help" ;;
-    check) opts="--dt --t-end --set --help" ;;
-    sweep) opts="-o --out --threads --runs --seed --set --t-end --dt --netcdf --quiet --force --resume --help" ;;
-    rate) opts="--standard --class --level --test --set --help" ;;
+    run) opts="-o --out --force --dt --t-end --set --plots --report --occupant-at --allow-path --help" ;;
+    check) opts="--dt --t-end --set --allow-path --help" ;;
+    sweep) opts="-o --out --threads --runs --seed --set --t-end --dt --netcdf --allow-path --quiet --force --resume --help" ;;
+    rate) opts="--standard --class --level --test --set --allow-path --help" ;;
     validate) opts="-o --out --force --examples --only --report-only --help" ;;
     compare) opts="-o --out --measured --force --help" ;;
-    designer) opts="-o --out --force --help" ;;
+    designer) opts="-o --out --force --allow-path --help" ;;
     list | schema) opts="--help" ;;
     *) return ;;
     esac

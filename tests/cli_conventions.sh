@@ -34,7 +34,7 @@ out=$("$cs" compare 2>&1)
 check "compare without a run: exit 2, named" '[ $? -eq 2 ] && grep -qxF "cablesim compare: no run to compare" <<<"$out"'
 out=$("$cs" compare "$tmp" -o 2>&1)
 check "compare -o without its value: named, exit 2" '[ $? -eq 2 ] && grep -qF "option '"'"'-o'"'"' needs a value" <<<"$out"'
-out=$("$cs" sweep tests/sweep/lhs.yaml -o "$tmp/quiet" --threads 1 --runs 2 --quiet 2>&1)
+out=$("$cs" sweep tests/sweep/lhs.yaml -o "$tmp/quiet" --threads 1 --runs 2 --quiet --allow-path examples 2>&1)
 check "sweep --quiet: exit 0, nothing printed" '[ $? -eq 0 ] && [ -z "$out" ] && [ -s "$tmp/quiet/runs.csv" ]'
 for sub in run check rate sweep; do
     out=$("$cs" "$sub" examples/aps3.yaml --set 2>&1)

@@ -28,7 +28,7 @@ check "rate --class M40: its row is the run's designation as run" 'grep -qE "^  
 check "rate --class M40: its conclusion is the rating, in the run's words" 'grep -qxF "rating: $(grep -o "ASTM F2656 M40/P2" "$tmp/designed.term" | head -1)" <<<"$rate"'
 # a sweep of one run of the same model: runs.csv gives the same designation as run
 printf 'model: %s/examples/aps3.yaml\nmethod: grid\nvary:\n  scenario.speed: [40 mph]\n' "$PWD" >"$tmp/one.yaml"
-"$cs" sweep "$tmp/one.yaml" -o "$tmp/sweep" --threads 1 --quiet >/dev/null 2>&1
+"$cs" sweep "$tmp/one.yaml" -o "$tmp/sweep" --threads 1 --quiet --allow-path "$PWD/examples" >/dev/null 2>&1
 col=$(head -1 "$tmp/sweep/runs.csv" | tr , '\n' | grep -nx astm_f2656_as_run | cut -d: -f1)
 check "runs.csv: astm_f2656_as_run is the run's designation as run" '[ -n "$col" ] && [ "$(sed -n 2p "$tmp/sweep/runs.csv" | cut -d, -f"$col")" = "$(label "$tmp/designed")" ]'
 finish

@@ -29,10 +29,11 @@ cablesim('sweep', '--allow-path', 'examples', 'tests/sweep/mc.yaml', '--quiet', 
 // a run whose lower rope's clips slip at 10 kip and run out after 6 in (tests/cli_run.sh runs it too)
 cablesim('run', 'tests/good/base.yaml', '--set', 'barrier.cables[0].slip_load=10 kip', '--set', 'barrier.cables[0].slip_travel=6 in', '--report', '-o', join(out, 'slip'));
 
-// compare's table: its header, the outcome and 10 parameters (the max dynamic penetration and the
-// penetration beyond, each a row)
+// compare's tables: its header, the outcome and 10 parameters (the max dynamic penetration and the
+// penetration beyond, each a row); the validation metrics against the measured trace, a header and a row
+// for each run
 const pages = [
-  { name: 'compare', file: join(out, 'compare', 'compare.html'), figures: 5, tables: [12] },
+  { name: 'compare', file: join(out, 'compare', 'compare.html'), figures: 5, tables: [12, 3] },
   { name: 'study', file: join(out, 'study', 'report.html'), figures: 19, tables: [3, 10, 7] },
 ];
 if (!existsSync(chromiumPath)) {
