@@ -124,8 +124,8 @@ void cs_rail_jacobian(const cs_model *model, const cs_state *s, const cs_rows *r
                       double unit) {
     const double *ja = rows->axes + 18 * p, *dj = ja + 6;
     int pp = rows->pull_index[p];
-    double ap[3], force_unit = cs_rows_force_unit(model);
-    cs_post_axis_at(s->posts[p].tilt, ap);
+    double ap[3] = {0.0, 0.0, 0.0}, force_unit = cs_rows_force_unit(model);
+    if (pp >= 0) cs_post_axis_at(s->posts[p].tilt, ap); /* only a post sliding out reads its axis */
     for (int r = 0; r < model->rail_count; r++) {
         const cs_rail_model *rm = &model->rails[r];
         double lp = cs_post_arm(model, s, p, rm->z);
@@ -139,10 +139,10 @@ void cs_rail_jacobian(const cs_model *model, const cs_state *s, const cs_rows *r
                 for (int j = 0; j < 3; j++)
                     g[i][j] =
                         dn * b.u[i] * b.u[j] + (b.l > 0.0 ? b.n / b.l * ((i == j) - b.u[i] * b.u[j]) : 0.0);
-            double lo = cs_post_arm(model, s, o, rm->z), ao[3], gap[3], gao[3];
+            double lo = cs_post_arm(model, s, o, rm->z), ao[3] = {0.0, 0.0, 0.0}, gap[3], gao[3];
             int col_o = rows->tilt_index[o], po = rows->pull_index[o];
             const double *jo = rows->axes + 18 * o; /* placed with the unknowns (only read if o is one) */
-            cs_post_axis_at(s->posts[o].tilt, ao);
+            if (po >= 0) cs_post_axis_at(s->posts[o].tilt, ao); /* read only where o slides out */
             for (int i = 0; i < 3; i++) /* G a_p and G a_o: the force's change with each pull */
                 gap[i] = g[i][0] * ap[0] + g[i][1] * ap[1] + g[i][2] * ap[2],
                 gao[i] = g[i][0] * ao[0] + g[i][1] * ao[1] + g[i][2] * ao[2];
