@@ -413,6 +413,7 @@ int cs_post_capture(const cs_model *model, cs_state *s);
 #define CS_SHAFT_MOBILISATION (0.1 * CS_IN) /* slip that mobilises a shaft's friction in sand, m */
 /* The pull along its axis that the length of it still in the ground holds, N. */
 double cs_post_pull_cap(const cs_post_model *pm, const cs_post_state *ps);
+double cs_post_moment_cap(const cs_post_model *pm, const cs_post_state *ps);
 /* The ropes' and rails' pull along post p's axis as placed, N. */
 double cs_post_axial_pull(const cs_model *model, const cs_state *s, int p);
 /* A post whose pull has reached its capacity starts to slide out: returns 1 if it started. */

@@ -348,7 +348,8 @@ static double post_inertia(const cs_barrier_def *b, int p, double pivot) {
 }
 
 /* The mass of post p along its axis: its steel over its height and embedment and half of each rail span
- * it holds (the footing stays in the ground as the post slides out of it). */
+ * it holds (not its footing's concrete: a footing's input does not say whether it is concrete or the post
+ * driven in the soil). */
 static double post_mass(const cs_barrier_def *b, int p) {
     const cs_post_def *d = &b->posts[p];
     double mass = d->section.mass_per_length * (d->height + d->footing.depth);

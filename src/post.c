@@ -49,8 +49,8 @@ void cs_post_place_nodes(const cs_model *model, cs_state *s, int p, const double
 
 void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double *q) {
     double tr[2] = {pm->k_rot * (tilt[0] - ps->plastic[0]), pm->k_rot * (tilt[1] - ps->plastic[1])};
-    double n = v2_norm(tr[0], tr[1]);
-    double f = n > pm->moment_cap ? pm->moment_cap / n : 1.0;
+    double n = v2_norm(tr[0], tr[1]), cap = cs_post_moment_cap(pm, ps);
+    double f = n > cap ? cap / n : 1.0;
     q[0] = tr[0] * f, q[1] = tr[1] * f;
 }
 
@@ -111,9 +111,9 @@ static void resistance_slope(const cs_model *model, const cs_state *s, int p, do
     const cs_post_model *pm = &model->posts[p];
     const cs_post_state *ps = &s->posts[p];
     double tr[2] = {pm->k_rot * (ps->tilt[0] - ps->plastic[0]), pm->k_rot * (ps->tilt[1] - ps->plastic[1])};
-    double n = v2_norm(tr[0], tr[1]);
-    if (n > pm->moment_cap) {
-        double f = pm->moment_cap * pm->k_rot / n, u[2] = {tr[0] / n, tr[1] / n};
+    double n = v2_norm(tr[0], tr[1]), cap = cs_post_moment_cap(pm, ps);
+    if (n > cap) {
+        double f = cap * pm->k_rot / n, u[2] = {tr[0] / n, tr[1] / n};
         k[0] = -f * (1.0 - u[0] * u[0]), k[1] = f * u[0] * u[1], k[2] = k[1], k[3] = -f * (1.0 - u[1] * u[1]);
     } else {
         k[0] = k[3] = -pm->k_rot, k[1] = k[2] = 0.0;
@@ -202,21 +202,22 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     const cs_post_model *pm = &model->posts[p];
     commit_swing(model, s, p);
     double tr[2] = {pm->k_rot * (ps->tilt[0] - ps->plastic[0]), pm->k_rot * (ps->tilt[1] - ps->plastic[1])};
-    double n = v2_norm(tr[0], tr[1]), q = pm->moment_cap;
+    double n = v2_norm(tr[0], tr[1]), q = cs_post_moment_cap(pm, ps);
     if (n > q) { /* radial return to the capacity */
         double u[2] = {tr[0] / n, tr[1] / n};
         double np[2] = {ps->tilt[0] - q / pm->k_rot * u[0], ps->tilt[1] - q / pm->k_rot * u[1]};
         double w = q * v2_norm(np[0] - ps->plastic[0], np[1] - ps->plastic[1]);
-        if (pm->soil_yields)
+        int soil = pm->soil_yields || q < pm->moment_cap; /* a footing coming out turns in the soil */
+        if (soil)
             s->e_soil += w;
         else
             s->e_post_plastic += w;
         ps->plastic[0] = np[0], ps->plastic[1] = np[1];
         if (!ps->yielded) {
             ps->yielded = 1;
-            ps->status = pm->soil_yields ? CS_POST_SOIL : CS_POST_HINGED;
-            cs_event_add(model, s, pm->soil_yields ? CS_EVENT_FOOTING_ROTATION : CS_EVENT_POST_HINGE,
-                         CS_ELEMENT_POST, p, pm->moment_cap);
+            ps->status = soil ? CS_POST_SOIL : CS_POST_HINGED;
+            cs_event_add(model, s, soil ? CS_EVENT_FOOTING_ROTATION : CS_EVENT_POST_HINGE, CS_ELEMENT_POST, p,
+                         q);
         }
     }
     cs_post_resistance(pm, ps, ps->tilt, ps->moment);

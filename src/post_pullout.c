@@ -40,6 +40,23 @@ double cs_post_pull_cap(const cs_post_model *pm, const cs_post_state *ps) {
     return x > 0.0 ? pm->pullout_cap * x * x : 0.0;
 }
 
+/* The lateral capacity of a post sliding out: its footing keeps x D in the ground, with the ropes x' =
+ * (1 - x) D higher above grade, so Eq. 21 (footing.c) holds P(x) = S1 B (x D)^2 / (c_d x D + c_h (h +
+ * x' )) against P(1) at the whole embedment: the footing's moment falls by P(x) / P(1) (about x^2), the
+ * post's steel keeps Zx Fy, and the weaker of the two holds. At x = 0 the post holds nothing: it leaves
+ * the barrier with no load on it (docs/theory.md, "A post pulled out of its footing"). */
+double cs_post_moment_cap(const cs_post_model *pm, const cs_post_state *ps) {
+    if (!ps->withdrawing) return pm->moment_cap;
+    double x = remaining(pm, ps->pull_plastic);
+    if (!(x > 0.0)) return 0.0;
+    const cs_footing_def *f = &pm->footing;
+    double d = pm->embedment, h = pm->load_height,
+           whole = pm->soil_yields ? pm->moment_cap : pm->footing_moment;
+    double ratio = x * x * (f->coeff_depth * d + f->coeff_height * h) /
+                   (f->coeff_depth * x * d + f->coeff_height * (h + (1.0 - x) * d));
+    return fmin(pm->moment_cap, whole * ratio);
+}
+
 /* The return map at the trial n = k (w - w_p): the resistance, the x it leaves and the slope dR/dn (1
  * elastic, 2 Q0 x / (2 Q0 x - k D) sliding, 0 out). */
 static double return_map(const cs_post_model *pm, const cs_post_state *ps, double n, double *x,

@@ -205,9 +205,9 @@ double cs_relax_post(const cs_model *model, cs_state *s, int p, double tol, int 
          * elastic range (restart there). A swinging post's residual has the inertial slope J / h^2
          * there, which Newton sees. */
         double tr[2] = {al[0] - ps->plastic[0], al[1] - ps->plastic[1]}, tn = v2_norm(tr[0], tr[1]);
-        if (!cs_post_swings(pm, s->h) && pm->k_rot * tn > pm->moment_cap &&
-            (r[0] * tr[0] + r[1] * tr[1]) < 0.0) {
-            double lo = 0.999 * pm->moment_cap / (pm->k_rot * tn), hi = 1.0, rb[2];
+        double cap = cs_post_moment_cap(pm, ps);
+        if (!cs_post_swings(pm, s->h) && pm->k_rot * tn > cap && (r[0] * tr[0] + r[1] * tr[1]) < 0.0) {
+            double lo = 0.999 * cap / (pm->k_rot * tn), hi = 1.0, rb[2];
             double b[2] = {ps->plastic[0] + lo * tr[0], ps->plastic[1] + lo * tr[1]};
             post_residual(model, s, p, b, m_entry, rb);
             double f = lo;

@@ -283,7 +283,7 @@ void cs_state_post(const cs_model *model, const cs_state *s, int p, cs_post_view
     out->base_shear = ps->shear;
     out->axial_pull = ps->axial;
     out->withdrawal = ps->withdrawing ? ps->pull : 0.0;
-    out->moment_capacity = pm->moment_cap;
+    out->moment_capacity = cs_post_moment_cap(pm, ps);
     cs_post_attachment(model, p, ps->tilt, ps->pull, pm->height, out->top);
 }
 

@@ -27,8 +27,8 @@
 enum { TESTS = 3 };
 static const char *const names[TESTS] = {"aps1", "aps3", "aps4"};
 /* cs_state_hash of each run's final state */
-static const unsigned long long hashes[TESTS] = {0x41fbd7a61aa6456fULL, 0xca56c6daa6a7a041ULL,
-                                                 0xc80b48e0c41e24c1ULL};
+static const unsigned long long hashes[TESTS] = {0xfe5ab9bc885d6c13ULL, 0xca56c6daa6a7a041ULL,
+                                                 0x81092e0c0568d164ULL};
 
 typedef struct pinned {
     char outcome[32];

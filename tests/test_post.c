@@ -314,9 +314,19 @@ static void a_post_slides_out_of_its_footing(void **state) {
         double x0 = 1.0 - (wp_before + zm) / d, x1 = 1.0 - (ps->pull_plastic + zm) / d;
         soil += q0 * d * (x0 * x0 * x0 - x1 * x1 * x1) / 3.0;
         CHECK_REL(cs_post_pull_cap(pm, ps), q0 * x1 * x1, 1e-12);
+        /* the lateral capacity: Eq. 21 over the x1 D still in the ground, the load x1' = (1 - x1) D higher
+         * above grade, P = S1 B D'^2 / (c_d D' + c_h H'); the steel's Zx Fy holds where it is weaker */
+        const cs_footing_def *f = &pm->footing;
+        double s1 = fmin(f->soil_pressure, f->soil_pressure_cap), h = pm->load_height, dd = x1 * d;
+        double p1 = s1 * f->diameter * d * d / (f->coeff_depth * d + f->coeff_height * h);
+        double px = s1 * f->diameter * dd * dd / (f->coeff_depth * dd + f->coeff_height * (h + d - dd));
+        double whole = pm->soil_yields ? pm->moment_cap : pm->footing_moment;
+        CHECK_REL(cs_post_moment_cap(pm, ps), fmin(pm->moment_cap, whole * px / p1), 1e-12);
     }
-    printf("slid out 0.4 D = %.4f m: holds %.2f kN of %.2f, soil %.1f J (%.1f by hand)\n", 0.4 * d,
-           cs_post_pull_cap(pm, ps) / 1e3, q0 / 1e3, w->state->e_soil, soil);
+    printf("slid out 0.4 D = %.4f m: holds %.2f kN of %.2f along it, %.2f kN m of %.2f across, soil %.1f J "
+           "(%.1f by hand)\n",
+           0.4 * d, cs_post_pull_cap(pm, ps) / 1e3, q0 / 1e3, cs_post_moment_cap(pm, ps) / 1e3,
+           pm->moment_cap / 1e3, w->state->e_soil, soil);
     CHECK_REL(w->state->e_soil, soil, 1e-12);
     CHECK_REL(cs_post_pull_cap(pm, ps), q0 * 0.36, 0.01); /* (1 - 0.4)^2, the slip's share aside */
     double held = cs_post_pull_cap(pm, ps), wp = ps->pull_plastic;
@@ -328,6 +338,7 @@ static void a_post_slides_out_of_its_footing(void **state) {
     ps->pull = 2.0 * d; /* all the way out */
     cs_post_pull_commit(w->model, w->state, 0);
     assert_true(cs_post_pull_cap(pm, ps) == 0.0);
+    assert_true(cs_post_moment_cap(pm, ps) == 0.0);  /* out of the ground it holds nothing across either */
     CHECK_REL(w->state->e_soil, q0 * d / 3.0, 1e-9); /* the whole embedment: Q0 D / 3 */
     ps->axial = 0.0;
     assert_true(cs_post_check_failure(w->model, w->state, 0));

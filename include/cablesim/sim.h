@@ -226,16 +226,17 @@ typedef enum cs_post_status {
 
 /** A post now. */
 typedef struct cs_post_view {
-    cs_post_status status;  /**< its condition */
-    double tilt;            /**< rotation from vertical, rad */
-    double tilt_dir[2];     /**< horizontal direction the top moves, unit */
-    double base_moment;     /**< N m */
-    double base_shear;      /**< N */
-    double axial_pull;      /**< N, positive pulling the post out */
-    double withdrawal;      /**< how far it has slid out of its footing along its axis, m */
-    double moment_capacity; /**< Mp about the base, or the footing's P (h + 2D/3) about its pivot if it is the
-                               weaker, N m */
-    double top[3];          /**< the top's position, m */
+    cs_post_status status; /**< its condition */
+    double tilt;           /**< rotation from vertical, rad */
+    double tilt_dir[2];    /**< horizontal direction the top moves, unit */
+    double base_moment;    /**< N m */
+    double base_shear;     /**< N */
+    double axial_pull;     /**< N, positive pulling the post out */
+    double withdrawal;     /**< how far it has slid out of its footing along its axis, m */
+    double
+        moment_capacity; /**< Mp about the base, or the footing's P (h + 2D/3) about its pivot if it is the
+                            weaker (a footing sliding out: what its length still in the ground holds), N m */
+    double top[3];       /**< the top's position, m */
 } cs_post_view;
 
 /** Fill out with a post now. */
