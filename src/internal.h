@@ -384,7 +384,10 @@ double cs_footing_pullout_capacity(const cs_footing_def *f);
 /* Each intact cable's node at post p where a tilt puts it (one sine and cosine for all), and the post
  * axis' Jacobian there (as cs_post_axis_jacobian's j) into axis if not NULL. */
 void cs_post_place_nodes(const cs_model *model, cs_state *s, int post, const double *tilt, double *axis);
-double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int post);
+/* The posts' lean under the ropes' tensions as they stand (held, not following the spans' stretch), at
+ * rest: one Newton solve over every standing post's tilt (settle.c). Returns the largest scaled residual
+ * left (-1 if the band did not fit). */
+double cs_settle_posts(const cs_model *model, cs_state *s);
 void cs_post_commit(const cs_model *model, cs_state *s, int post);
 /* Elastic plus kinetic. */
 double cs_post_stored_energy(const cs_model *model, const cs_state *s, int post);

@@ -155,46 +155,6 @@ static void residual_now(const cs_model *model, const cs_state *s, int p, const 
     cs_post_residual_at(model, s, p, s->posts[p].tilt, chords, axis, rails, r);
 }
 
-/* The tilt at which post p balances the cables' tensions as they stand (held, not following the spans'
- * stretch), at rest: Newton with a finite-difference Jacobian, the nodes placed at each tilt; no further
- * than its elastic limit (a post those tensions would bend past it is left there, and the barrier's
- * solve finds what it then does). Returns the relative residual found on entry. For the barrier as
- * installed (step.c, cs_state_reset). */
-double cs_post_balance_at_tensions(const cs_model *model, cs_state *s, int p) {
-    cs_post_state *ps = &s->posts[p];
-    const cs_post_model *pm = &model->posts[p];
-    if (!cs_post_standing(ps) || ps->captured) return 0.0;
-    double r[2], entry = -1.0;
-    for (int it = 0; it < 20; it++) {
-        cs_post_place_nodes(model, s, p, ps->tilt, NULL);
-        residual_now(model, s, p, NULL, NULL, NULL, r);
-        double rn = v2_norm(r[0], r[1]) / pm->moment_scale;
-        if (entry < 0.0) entry = rn;
-        if (rn <= 1e-14) break;
-        double jac[4], h = 1e-7, a0[2] = {ps->tilt[0], ps->tilt[1]}, rp[2];
-        for (int k = 0; k < 2; k++) {
-            ps->tilt[k] = a0[k] + h;
-            cs_post_place_nodes(model, s, p, ps->tilt, NULL);
-            residual_now(model, s, p, NULL, NULL, NULL, rp);
-            jac[k] = (rp[0] - r[0]) / h, jac[2 + k] = (rp[1] - r[1]) / h;
-            ps->tilt[k] = a0[k];
-        }
-        double det = jac[0] * jac[3] - jac[1] * jac[2];
-        if (!(fabs(det) > 0.0)) break;
-        ps->tilt[0] = a0[0] - (jac[3] * r[0] - jac[1] * r[1]) / det;
-        ps->tilt[1] = a0[1] - (-jac[2] * r[0] + jac[0] * r[1]) / det;
-        double e[2] = {ps->tilt[0] - ps->plastic[0], ps->tilt[1] - ps->plastic[1]}, en = v2_norm(e[0], e[1]);
-        double limit = 0.999 * pm->moment_cap / pm->k_rot;
-        if (en > limit) {
-            ps->tilt[0] = ps->plastic[0] + e[0] * limit / en,
-            ps->tilt[1] = ps->plastic[1] + e[1] * limit / en;
-            break;
-        }
-    }
-    cs_post_place_nodes(model, s, p, ps->tilt, NULL);
-    return entry;
-}
-
 /* End of step: plastic rotation (radial return) and its work, base shear and axial pull. */
 void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     cs_post_state *ps = &s->posts[p];

@@ -53,32 +53,21 @@ static void reset_cable(const cs_model *model, int c, cs_cable_state *cs) {
 }
 
 /* The barrier as installed, before the vehicle reaches it, as an installer tensions a rope on standing
- * posts: every span at the pretension, each post leaning until it balances those tensions along its
- * spans' chords (Gauss-Seidel over the posts, at most CS_SETTLE_SWEEPS sweeps to 1e-12 of a post's
- * capacity), the rope laid in at the pretension on that path, and the barrier solved and committed
- * there at rest (h infinite: posts with mass settle as massless ones). Each post sits in balance and
- * every support sticks with equal tensions, so the solve finds the laid-in state. A post that the
- * pretension would bend past its elastic limit (a weak end post under a heavy pretension) leans no
- * further than that limit here; the solve then lets it yield and the rope slide over it, as a propped
- * post let go would (leaning it to the balance instead folded such posts by up to 0.73 rad before the
- * vehicle came, stress designs 803 and 2250). Laying the rope in on
- * the straight path and letting the posts settle instead leaves the spans next to an end post 4-5% off
- * the pretension (it leans toward the barrier, the rope slides over it at the capstan limit), and
- * re-laying it there and settling again creeps toward the balance by about 1/60 a round (the rope is
- * about 60 times stiffer than the post). What settling dissipates belongs to the installation. */
-#define CS_SETTLE_SWEEPS 50
-
+ * posts: every span at the pretension, the posts leaning until each balances those tensions along its
+ * spans' chords (settle.c: one Newton solve over every post's tilt), the rope laid in at the pretension
+ * on that path, and the barrier solved and committed there at rest (h infinite: posts with mass settle
+ * as massless ones). Each post sits in balance and every support sticks with equal tensions, so the
+ * solve finds the laid-in state. Laying the rope in on the straight path and letting the posts settle
+ * instead leaves the spans next to an end post 4-5% off the pretension (it leans toward the barrier, the
+ * rope slides over it at the capstan limit), and re-laying it there and settling again creeps toward the
+ * balance by about 1/60 a round (the rope is about 60 times stiffer than the post). What settling
+ * dissipates belongs to the installation. */
 static void settle_barrier(const cs_model *model, cs_state *s) {
     cs_contact_update(model, s);
     for (int c = 0; c < model->cable_count; c++)
         cs_cable_hold_tension(&s->cables[c], model->cables[c].pretension);
     s->h = HUGE_VAL;
-    for (int sweep = 0; sweep < CS_SETTLE_SWEEPS; sweep++) {
-        double worst = 0.0;
-        for (int p = 0; p < model->post_count; p++)
-            worst = fmax(worst, cs_post_balance_at_tensions(model, s, p));
-        if (worst <= 1e-12) break;
-    }
+    cs_settle_posts(model, s);
     cs_anchor_settle(model, s);
     for (int c = 0; c < model->cable_count; c++)
         lay_in_pretension(model, c, &s->cables[c]);

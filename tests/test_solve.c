@@ -7,6 +7,7 @@
 #include "check.h"
 #include "design.h"
 #include "internal.h"
+#include "vec3.h"
 #include "work.h"
 
 #include <stdlib.h>
@@ -219,6 +220,45 @@ static int check_along_the_crash(fixture *fx_in, int *pulls) {
     return ends;
 }
 
+/* The barrier as installed (step.c, settle.c) is the barrier's equilibrium at rest: APS3 with its rails and
+ * its dead-men in the soil, the posts leaning under the pretension. Its scaled residual, every row of the
+ * barrier's system at the installed state, is within the solver's tolerance; every span carries the
+ * pretension (the ropes laid in on the settled path, every support sticking) within 1e-9 of it; and the
+ * posts lean (the end posts toward the barrier, by the ropes' pull over them). */
+static void the_installed_barrier_is_in_balance(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    fixture_rails(&fx);
+    fx.barrier.start_anchor.footing = fx.barrier.end_anchor.footing = fixture_footing(3.0, 5.0, 0.0);
+    fx.barrier.cables = fx.cables, fx.barrier.posts = fx.posts, fx.barrier.rails = fx.rails;
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    cs_state *s = cs_state_create(m, &err);
+    assert_non_null(s);
+    int *kind = calloc(CAP, sizeof *kind);
+    double *x = calloc(CAP, sizeof *x), *r = calloc(CAP, sizeof *r), *jac = calloc(CAP * CAP, sizeof *jac);
+    assert_true(kind && x && r && jac);
+    s->h = HUGE_VAL; /* at rest: the posts are unknowns, as massless ones */
+    int n = cs_system_linearize(m, s, &s->work->sys, CAP, kind, x, r, jac);
+    assert_true(n > 2 * m->post_count);
+    double worst = 0.0;
+    for (int i = 0; i < n; i++)
+        worst = fmax(worst, fabs(r[i]));
+    printf(
+        "installed: %d unknowns, largest scaled residual %.2g (tolerance %.2g); end post leans %.3g mrad\n",
+        n, worst, fx.scenario.solver_tolerance, 1e3 * v2_norm(s->posts[0].tilt[0], s->posts[0].tilt[1]));
+    assert_true(worst <= fx.scenario.solver_tolerance);
+    for (int c = 0; c < m->cable_count; c++)
+        for (int i = 0; i + 1 < s->cables[c].node_count; i++)
+            CHECK_REL(s->cables[c].tension[i], m->cables[c].pretension, 1e-9);
+    assert_true(s->posts[0].tilt[0] > 0.0 && s->posts[m->post_count - 1].tilt[0] < 0.0);
+    free(kind), free(x), free(r), free(jac);
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
 /* A fixture's model and state run to the end (it must end without an error), its summary in sm. */
 static cs_state *run_to_end(const fixture *fx, cs_model **m, cs_summary *sm) {
     cs_error err;
@@ -319,7 +359,8 @@ static void the_step_after_a_jump_starts_where_the_barrier_is(void **state) {
 }
 
 int main(void) {
-    const struct CMUnitTest tests[] = {cmocka_unit_test(jacobian_is_the_derivative_of_the_residual),
+    const struct CMUnitTest tests[] = {cmocka_unit_test(the_installed_barrier_is_in_balance),
+                                       cmocka_unit_test(jacobian_is_the_derivative_of_the_residual),
                                        cmocka_unit_test(jacobian_with_anchors_in_the_soil),
                                        cmocka_unit_test(jacobian_with_fittings_that_slip),
                                        cmocka_unit_test(jacobian_with_rails),
