@@ -158,17 +158,11 @@ static double s_deflection(const cs_record *r, const cs_model_input *in, int f, 
     }
     return y;
 }
-static double s_roll(const cs_record *r, const cs_model_input *in, int f, int arg) {
-    (void)in, (void)arg;
-    return r->vehicle[f].roll;
-}
-static double s_pitch(const cs_record *r, const cs_model_input *in, int f, int arg) {
-    (void)in, (void)arg;
-    return r->vehicle[f].pitch;
-}
-static double s_yaw(const cs_record *r, const cs_model_input *in, int f, int arg) {
-    (void)in, (void)arg;
-    return r->vehicle[f].yaw;
+/* the vehicle's roll (arg 0), pitch (1) or yaw (2) */
+static double s_attitude(const cs_record *r, const cs_model_input *in, int f, int arg) {
+    (void)in;
+    const cs_vehicle_view *v = &r->vehicle[f];
+    return arg == 0 ? v->roll : arg == 1 ? v->pitch : v->yaw;
 }
 /* the CG's place in plan: x (arg 0) or y (arg 1) */
 static double s_cg(const cs_record *r, const cs_model_input *in, int f, int arg) {
@@ -239,9 +233,9 @@ static void write_series(jw *j, const cs_model_input *in, const cs_record *r, in
         {"penetration", "the penetration", s_penetration, 0, 0},
         {"face", "the front face", s_face, 0, 0},
         {"deflection", "the barrier deflection", s_deflection, 0, 1},
-        {"roll", "the roll", s_roll, 0, 0},
-        {"pitch", "the pitch", s_pitch, 0, 0},
-        {"yaw", "the yaw", s_yaw, 0, 0},
+        {"roll", "the roll", s_attitude, 0, 0},
+        {"pitch", "the pitch", s_attitude, 1, 0},
+        {"yaw", "the yaw", s_attitude, 2, 0},
         {"cg_x", "the CG's x", s_cg, 0, 0},
         {"cg_y", "the CG's y", s_cg, 1, 0},
     };
