@@ -21,8 +21,9 @@ if [ "${1:-}" != "--demo" ]; then
   # doxygen: the API reference (make docs) and its test (tests/api_docs.sh); dpkg-dev: dpkg-shlibdeps, the
   # .deb's dependencies (make package).
   pkgs+=(doxygen dpkg-dev)
-  # Debian's chromium and chromium-driver run the pages' browser tests.
-  pkgs+=(chromium chromium-driver)
+  # Debian's chromium and chromium-driver run the pages' browser tests; poppler-utils' pdfinfo counts the
+  # pages of report.html printed (tests/cli_report_print.sh).
+  pkgs+=(chromium chromium-driver poppler-utils)
   # emscripten: designer.html's engine as WebAssembly (web/build.sh); dpkg-dev (above) unpacks the Debian
   # source of libyaml it compiles for it (scripts/wasm-libyaml.sh, at build time).
   pkgs+=(emscripten)

@@ -16,7 +16,7 @@ check "the summary names the plots" 'grep -q "plots/\*.png" "$tmp/stdout"'
 for f in timeseries.csv events.csv summary.json; do
     check "$f still written" '[ -s "$out/$f" ]'
 done
-for name in deceleration speed penetration cables posts energy snapshots; do
+for name in deceleration speed penetration cables posts energy snapshots angles path; do
     check "$name.png is a PNG" '[ "$(head -c 8 "$out/plots/$name.png" | od -An -tx1 | tr -d " \n")" = 89504e470d0a1a0a ]'
     check "$name.svg is an SVG" 'head -c 200 "$out/plots/$name.svg" | grep -q "<svg" && tail -c 20 "$out/plots/$name.svg" | grep -q "</svg>"'
 done

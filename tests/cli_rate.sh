@@ -56,6 +56,21 @@ check "a run at its time limit: A not judged" 'grep -qE "^       A +not judged .
 check "D and K listed as not judged, no pass implied" 'grep -qE "^3-11: not judged \(the model cannot tell; no pass implied\): A, D, K, M$" <<<"$out"'
 out=$("$cs" rate examples/roadside/rs1.yaml --standard mash --test 3-11 2>&1)
 check "mash 3-11 to its end: occupant risk and the exit box judged" 'grep -qE "^       occupant risk \(CG, CFC 180\): OIV [0-9.]+ / [0-9.]+ m/s" <<<"$out" && grep -qE "^       exit box +(pass|FAIL) .* \\(box 10.0 m\\)" <<<"$out" && grep -qE "^       H +(pass|FAIL) " <<<"$out"'
+# The issue's two cases to their ends: RS1 under NCHRP 350 (3-10: A D F H I K M; 3-11: A D F L K M) and the
+# MASH design example under MASH (each test A D F H I and the exit box), a verdict for every criterion
+criteria() {
+    awk -v t="$2" '/^  [0-9]-1[0-2] / {on = $1 == t} /^[^ ]/ {on = 0}
+        on && /^       / && ($2 ~ /^(pass|FAIL|not)$/ || ($1 == "exit" && $3 ~ /^(pass|FAIL|not)$/)) {printf "%s ", $1 == "exit" ? "box" : $1}' <<<"$1"
+}
+out=$("$cs" rate examples/roadside/rs1.yaml --standard nchrp-350 2>&1)
+check "RS1 under nchrp-350: 3-10's criteria, each with a verdict" '[ "$(criteria "$out" 3-10)" = "A D F H I K M " ]'
+check "RS1 under nchrp-350: 3-11's criteria, each with a verdict" '[ "$(criteria "$out" 3-11)" = "A D F L K M " ]'
+check "RS1 under nchrp-350: the level's last lines" 'grep -qxE "TL-3: not judged \(the model cannot tell; no pass implied\): D, K" <<<"$out"'
+out=$("$cs" rate examples/roadside/design.yaml --standard mash 2>&1)
+for t in 3-10 3-11; do
+    check "the design under mash: $t's criteria, each with a verdict" '[ "$(criteria "$out" $t)" = "A D F H I box " ]'
+done
+check "the design under mash: D not judged, never passed" 'grep -qxE "TL-3: not judged \(the model cannot tell; no pass implied\): D" <<<"$out"'
 "$cs" rate examples/roadside/rs1.yaml --standard mash --test 5-12 >/dev/null 2>&1
 check "unknown roadside test exits 2" '[ $? -eq 2 ]'
 "$cs" rate examples/roadside/rs1.yaml --standard mash --class M30 >/dev/null 2>&1

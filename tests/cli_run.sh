@@ -165,7 +165,11 @@ check "stopped: its penetration given" 'grep -q "\"outcome\":\"stopped\"" "$j" &
 out=$("$cs" run examples/roadside/rs1.yaml -o "$tmp/rs1" 2>&1)
 j="$tmp/rs1/summary.json"
 check "rs1: summary.json's occupant risk with units" 'grep -qE "\"occupant_risk\":\{\"basis\":\"[^\"]*CFC 180[^\"]*\",\"point_m\":\[0,0,0\],\"occupant_impact\":\"in_run\",\"occupant_impact_time_s\":[0-9.e-]+,\"oiv_longitudinal_mps\":[0-9.e-]+,\"oiv_lateral_mps\":[0-9.e-]+,\"ora_longitudinal_g\":[0-9.e-]+,\"ora_lateral_g\":[0-9.e-]+,\"head_impact\":\"in_run\",\"thiv_time_s\":[0-9.e-]+,\"thiv_mps\":[0-9.e-]+,\"thiv_kmh\":[0-9.e-]+,\"phd_g\":[0-9.e-]+,\"asi\":[0-9.e-]+,\"asi_time_s\":[0-9.e-]+\},\"max_roll_deg\":[0-9.e-]+,\"max_pitch_deg\":[0-9.e-]+" "$j"'
-check "rs1: the criteria of NCHRP 350 3-11 as run" 'grep -qE "\"roadside_criteria\":\{\"standard\":\"nchrp-350\",\"test\":\"3-11\",\"criteria\":\[\{\"id\":\"A\"" "$j" && grep -qE "\"id\":\"D\",[^}]*\"verdict\":\"not judged\"" "$j"'
+check "rs1: the criteria of NCHRP 350 3-11 as run" 'grep -qE "\"roadside_criteria\":\{\"standard\":\"nchrp-350\",\"test\":\"3-11\",\"vehicle\":\"2000P\",\"criteria\":\[\{\"id\":\"A\"" "$j" && grep -qE "\"id\":\"D\",[^}]*\"verdict\":\"not judged\"" "$j"'
+# the exit criteria of NCHRP 350 (M: the exit angle, judged; K: the path after, not judged)
+check "rs1: its exit criteria, M judged and K not" 'grep -qE "\"id\":\"M\",[^}]*\"verdict\":\"(pass|FAIL)\"" "$j" && grep -qE "\"id\":\"K\",[^}]*\"verdict\":\"not judged\"" "$j"'
+# MASH's exit box of the 2000P (A = 2 m + 1.95 m wide + 0.16 x 5.35 m long = 4.806 m), beside the criteria
+check "rs1: the exit box with the criteria" 'grep -qE "\],\"exit_box\":\{\"a_m\":4\.806,\"b_m\":10,\"start_x_m\":[0-9.e-]+,\"direction\":1,\"cross_along_m\":[0-9.e-]+,\"crossed_in_run\":(true|false)\}\}" "$j"'
 check "rs1: the terminal's occupant risk and criteria" 'grep -qE "^  occupant impact      [0-9.]+ s after first contact: OIV [0-9.]+ m/s \([0-9.]+ ft/s\) longitudinal" <<<"$out" && grep -qE "^  EN 1317-1            THIV [0-9.]+ km/h \([0-9.]+ m/s\), PHD [0-9.]+ g, ASI [0-9.]+$" <<<"$out" && grep -qE "^  criteria \(as run\)    nchrp-350 3-11: A (pass|FAIL), D not judged," <<<"$out"'
 # --occupant-at: the CG named as a point gives the CG's numbers; another point is written with them; a
 # bad point is refused with the reason

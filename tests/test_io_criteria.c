@@ -52,7 +52,7 @@ static void criteria_of_each_test(void **state) {
     (void)state;
     cs_summary s = redirected(10.0);
     cs_occupant_risk o = {0};
-    cs_exit_box box = {4.9, 10.0, 0.0, 20.0, 0};
+    cs_exit_box box = {4.9, 10.0, 0.0, 20.0, 0, 1.0};
     cs_test_result r = {&s, &o, NULL, 0.0, 0.0, &box};
     cs_criterion c[CS_CRITERIA_MAX];
     char ids[128];

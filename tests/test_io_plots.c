@@ -385,7 +385,7 @@ static synthetic *synthetic_new(int frames) {
         {0.299, CS_EVENT_STOPPED, CS_ELEMENT_VEHICLE, 0, 0.3, -1, -1},
     };
     memcpy(s->events, ev, sizeof ev);
-    s->d = (cs_figure_data){&s->in, &s->rec, s->events, (int)(sizeof ev / sizeof ev[0])};
+    s->d = (cs_figure_data){&s->in, &s->rec, s->events, (int)(sizeof ev / sizeof ev[0]), NULL, NULL};
     tmp_make(&s->dir);
     return s;
 }
@@ -466,8 +466,8 @@ static void test_time_axes_end_at_the_run_end(void **state) {
     s->rec.frame_count = 287; /* the run ends at 0.286 s, between ticks */
     cs_plot_log *log = calloc(1, sizeof *log);
     assert_non_null(log);
-    static const cs_figure timed[] = {CS_FIG_DECELERATION, CS_FIG_SPEED, CS_FIG_PENETRATION,
-                                      CS_FIG_CABLES,       CS_FIG_POSTS, CS_FIG_ENERGY};
+    static const cs_figure timed[] = {CS_FIG_DECELERATION, CS_FIG_SPEED,  CS_FIG_PENETRATION, CS_FIG_CABLES,
+                                      CS_FIG_POSTS,        CS_FIG_ENERGY, CS_FIG_ANGLES};
     for (size_t k = 0; k < sizeof timed / sizeof timed[0]; k++) {
         trace(s, timed[k], log);
         assert_true(log->panel_count >= 1);
@@ -596,6 +596,110 @@ static void test_mirror_posts_named_in_the_legend(void **state) {
     synthetic_free(s, NULL, 0);
 }
 
+/* The legend of a traced figure: the texts whose frame is the whole figure and that start right of every
+ * panel (an outside legend); each must be clear of every panel's plotting area, where the data are. */
+static int legend_clear_of_data(const cs_plot_log *log, const char *what) {
+    int entries = 0;
+    double right = 0;
+    for (int i = 0; i < log->panel_count; i++)
+        right = fmax(right, log->panel[i].area.x + log->panel[i].area.w);
+    for (int i = 0; i < log->text_count; i++) {
+        const cs_box *b = &log->text[i].box;
+        if (b->x < right - 1) continue; /* a tick label, a title: not the legend */
+        entries++;
+        for (int k = 0; k < log->panel_count; k++) {
+            const cs_box *a = &log->panel[k].area;
+            if (b->x < a->x + a->w && b->x + b->w > a->x && b->y < a->y + a->h && b->y + b->h > a->y)
+                fail_msg("%s: legend entry '%s' overlaps the plotting area", what, log->text[i].text);
+        }
+    }
+    return entries;
+}
+
+/* A text of the log that starts with prefix, or NULL. */
+static const cs_plot_logged_text *text_starting(const cs_plot_log *log, const char *prefix) {
+    for (int i = 0; i < log->text_count; i++)
+        if (strncmp(log->text[i].text, prefix, strlen(prefix)) == 0) return &log->text[i];
+    return NULL;
+}
+
+/* Roll, pitch and yaw: the synthetic car rolls to 0.2 t rad, pitches to -0.05 t and yaws 0.3 t rad from its
+ * heading; the plot's y axis holds every value in degrees and is no more than twice their span (axes from
+ * the data), each legend entry names the peak (roll 3.4 deg at 0.299 s) and the legend is clear of the
+ * data, every text inside the figure. */
+static void test_angles_from_the_data(void **state) {
+    (void)state;
+    synthetic *s = synthetic_new(FRAMES);
+    for (int i = 0; i < FRAMES; i++) {
+        cs_vehicle_view *v = &s->rec.vehicle[i];
+        v->roll = 0.2 * v->t, v->pitch = -0.05 * v->t, v->yaw = PI / 2 + 0.3 * v->t;
+    }
+    cs_plot_log *log = calloc(1, sizeof *log);
+    assert_non_null(log);
+    trace(s, CS_FIG_ANGLES, log);
+    assert_int_equal(log->panel_count, 1);
+    const cs_plot_logged_panel *q = &log->panel[0];
+    double t_end = 0.299, lo = -0.05 * t_end / (PI / 180), hi = 0.3 * t_end / (PI / 180); /* deg */
+    if (q->y0 > lo || q->y1 < hi || q->y1 - q->y0 > 2 * (hi - lo))
+        fail_msg("angles: y axis %g to %g deg, the data %g to %g deg", q->y0, q->y1, lo, hi);
+    assert_true(legend_clear_of_data(log, "angles") >= 3);
+    const cs_plot_logged_text *roll = text_starting(log, "roll (");
+    assert_non_null(roll);
+    double peak, at;
+    assert_int_equal(sscanf(strstr(roll->text, "peak"), "peak %lf deg at %lf s", &peak, &at), 2);
+    assert_float_equal(peak, 0.2 * t_end / (PI / 180), 0.05);
+    assert_float_equal(at, t_end, 1e-9);
+    check_texts_inside(log, "angles");
+    free(log);
+    synthetic_free(s, NULL, 0);
+}
+
+/* The path in plan: at true scale, its ranges hold the car at the start and the end and the exit box (A
+ * 4.9 m across, B 10 m along from x = 20 m) and are tight about them in one direction (axes from the data, a
+ * metre of margin and a tick), the box is named in the legend with its A and B, the legend is clear of the
+ * data, every text inside the figure (the box of NCHRP 350's run named as not its criterion); without a
+ * box, none is named. */
+static void test_path_from_the_data(void **state) {
+    (void)state;
+    synthetic *s = synthetic_new(FRAMES);
+    cs_exit_box box = {4.9, 10, 20, HUGE_VAL, 0, 1};
+    cs_plot_log *log = calloc(1, sizeof *log);
+    assert_non_null(log);
+    static const char *const standard[3] = {"mash", "nchrp-350", NULL};
+    for (int k = 0; k < 3; k++) {
+        int pass = k == 2; /* 0: with the box (MASH's or, for reference, NCHRP 350's), 1: none */
+        s->d.exit_box = pass ? NULL : &box;
+        s->d.standard = standard[k];
+        trace(s, CS_FIG_PATH, log);
+        assert_int_equal(log->panel_count, 1);
+        const cs_plot_logged_panel *q = &log->panel[0];
+        assert_true(q->equal);
+        double sx = q->area.w / (q->x1 - q->x0), sy = q->area.h / (q->y1 - q->y0);
+        if (fabs(sx / sy - 1) > 0.01) fail_msg("path: %.3f px/m across, %.3f px/m up", sx, sy);
+        /* the data: the car's outline (x 19.1-20.9 m) from the start (its rear 2.5 m behind the CG at
+         * -2 m) to the end (its crushed face); the box x 20-30 m, y -4.9-0 m */
+        const cs_vehicle_view *e = &s->rec.vehicle[FRAMES - 1];
+        double x0 = 19.1, x1 = pass ? 20.9 : 30, y0 = pass ? -2 - 2.5 : -4.9, y1 = e->front_corners[0][1];
+        if (q->x0 > x0 || q->x1 < x1 || q->y0 > y0 || q->y1 < y1)
+            fail_msg("path (pass %d) shows x %.2f-%.2f m, y %.2f-%.2f m: the data x %.2f-%.2f, y %.2f-%.2f",
+                     pass, q->x0, q->x1, q->y0, q->y1, x0, x1, y0, y1);
+        if (q->x1 - q->x0 > x1 - x0 + 4 && q->y1 - q->y0 > y1 - y0 + 4)
+            fail_msg(
+                "path (pass %d): x %.2f-%.2f m, y %.2f-%.2f m is loose about the data in both directions",
+                pass, q->x0, q->x1, q->y0, q->y1);
+        assert_true(legend_clear_of_data(log, "path") >= 4);
+        const cs_plot_logged_text *named =
+            text_starting(log, k == 1 ? "MASH's exit box, A = 4.90 m, B = 10.0 m (not in NCHRP 350)"
+                                      : "MASH's exit box: A = 4.90 m across, B = 10.0 m along");
+        if (pass ? text_starting(log, "MASH's exit box") != NULL : named == NULL)
+            fail_msg("path (%s): the exit box %s named", standard[k] ? standard[k] : "no box",
+                     pass ? "is" : "is not");
+        check_texts_inside(log, "path");
+    }
+    free(log);
+    synthetic_free(s, NULL, 0);
+}
+
 /* The set through an output directory: every figure as PNG and SVG under plots/, none left as .tmp. */
 static void test_figures_through_outdir(void **state) {
     (void)state;
@@ -642,6 +746,8 @@ int main(void) {
         cmocka_unit_test(test_compare_time_axes_end_at_the_last_end),
         cmocka_unit_test(test_top_views_true_scale_whole_vehicle),
         cmocka_unit_test(test_mirror_posts_named_in_the_legend),
+        cmocka_unit_test(test_angles_from_the_data),
+        cmocka_unit_test(test_path_from_the_data),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);
     cs_plot_release();

@@ -3,6 +3,7 @@
 import uplotCss from 'uplot/dist/uPlot.min.css';
 import { story, cards, summaryTable, designTable, timelineTable, designationsText, el } from './summary.js';
 import { buildPlots } from './plots.js';
+import { dataSheet } from './datasheet.js';
 import { createReplay, POST_COLORS, BROKEN_CABLE, postState } from './replay.js';
 import { gradient } from './colors.js';
 import { pair, fmt, seconds, both } from './units.js';
@@ -54,6 +55,17 @@ function main() {
   $('command').textContent = prov.command || '–';
   $('overrides').textContent = prov.overrides.length ? prov.overrides.join('  ') : 'none';
   $('designation').textContent = `Designation as run: ${designationsText(data)}.`;
+  try {
+    $('datasheet').append(dataSheet(data));
+  } catch (e) {
+    fail('data sheet', e);
+  }
+  // the print dialog prints the data sheet; this button the whole report
+  $('print-all').addEventListener('click', () => {
+    document.body.classList.add('print-all');
+    window.print();
+  });
+  window.addEventListener('afterprint', () => document.body.classList.remove('print-all'));
   $('story').textContent = story(data);
   $('cards').append(cards(data));
   $('table').append(summaryTable(data));

@@ -3,6 +3,7 @@
 import uPlot from 'uplot';
 import { el } from './summary.js';
 import { G0, MPH, FT, KIP, KIP_FT, fmt } from './units.js';
+import { pathPlan } from './plan.js';
 
 // The palette of the PNG figures (src/io/out/plot.c), so that cable k has the same colour everywhere.
 export const PALETTE = ['#1f78b5', '#e6730d', '#2b992b', '#cc2629', '#8c5cbd', '#8c5749', '#d966b8', '#737373', '#b3b31a', '#17b3c7'];
@@ -169,6 +170,29 @@ function specs(data) {
     axes: [timeAxis, { label: 'past the attack face (m)' }, otherAxis('past the attack face (ft)', 1 / FT, 0)],
     markers: [],
   });
+  // roll, pitch and yaw (yaw from the initial heading)
+  {
+    const d = (v) => (v * 180) / Math.PI;
+    const yaw0 = S.yaw.length ? S.yaw[0] : 0;
+    const cols = [S.roll.map(d), S.pitch.map(d), S.yaw.map((v) => d(v - yaw0))];
+    const markers = cols.map((c, k) => {
+      let at = 0;
+      c.forEach((v, i) => {
+        if (Math.abs(v) > Math.abs(c[at])) at = i;
+      });
+      return { t: t[at], v: c[at], color: PALETTE[k], shape: 'circle', label: `${['roll', 'pitch', 'yaw'][k]} ${fmt(c[at], 1)}°` };
+    });
+    out.push({
+      key: 'angles',
+      title: 'Roll, pitch and yaw of the vehicle',
+      caption:
+        'The vehicle’s attitude: roll about its own x (right side down positive), pitch about its y (nose down positive), and yaw from its heading at the start. MASH asks roll and pitch to stay under 75°; the dots mark each one’s largest value.',
+      data: [t, ...cols],
+      series: [line('roll (deg)', PALETTE[0], 2.5), line('pitch (deg)', PALETTE[1], 2.5), line('yaw from the initial heading (deg)', PALETTE[2], 2.5)],
+      axes: [timeAxis, { label: 'angle (deg)' }],
+      markers,
+    });
+  }
   // 4. cable tensions
   {
     const series = [];
@@ -338,8 +362,35 @@ export function buildPlots(container, data, onSeek) {
     const points = spec.series.map((_, i) => spec.data[i + 1].filter((v) => v !== null && Number.isFinite(v)).length);
     plots.push({ key: spec.key, title: spec.title, u, now, host, points, length: spec.data[0].length });
   }
+  // the path in plan, with MASH's exit box: a drawing, not a time history
+  try {
+    const rc = data.evaluation.roadside_criteria;
+    const box = rc ? rc.exit_box : null;
+    const plan = pathPlan(data, box, 1000);
+    const legend = el('ul', { class: 'plan-legend' }, ...plan.legend.map(([color, dash, text]) => el('li', {}, el('i', { style: `border-top: 3px ${dash ? 'dashed' : 'solid'} ${color}` }), text)));
+    const standardNote = !rc
+      ? 'The run stands for no roadside test, so no exit box is drawn.'
+      : rc.standard === 'mash'
+        ? 'MASH asks that no wheel cross the box’s far side (A from the barrier’s face) within B of where a wheel track first crossed the face.'
+        : 'NCHRP Report 350 has no exit box (it judges the exit angle, criterion M): MASH’s box is drawn for reference.';
+    container.append(
+      el(
+        'figure',
+        { class: 'plot-card wide', id: 'plot-path' },
+        el('h3', {}, 'Path of the vehicle in plan'),
+        plan.svg,
+        legend,
+        el('figcaption', {}, `Seen from above: x along the barrier, y toward the protected side (the traffic side is below its line), at true scale. ${standardNote} After the run the path is not simulated; the exit box's crossing is judged on the wheels' path straight on along the last velocity.`),
+      ),
+    );
+    plots.push({ key: 'path', title: 'Path of the vehicle in plan', points: [data.series.cg_x.length], length: data.series.cg_x.length });
+  } catch (e) {
+    container.append(el('p', { class: 'nogl' }, `The path in plan could not be drawn: ${e.message}`));
+    console.error(`path in plan: ${e.message}`);
+  }
   const resize = () => {
     for (const p of plots) {
+      if (!p.u) continue;
       const w = Math.max(300, p.host.clientWidth);
       if (Math.abs(w - p.u.width) > 2) p.u.setSize({ width: w, height: 300 });
     }
@@ -351,6 +402,7 @@ export function buildPlots(container, data, onSeek) {
     setTime(t) {
       current = t;
       for (const p of plots) {
+        if (!p.u) continue;
         const x = p.u.valToPos(t, 'x');
         const inside = Number.isFinite(x) && x >= 0 && x <= p.u.over.clientWidth;
         p.now.style.display = inside ? 'block' : 'none';

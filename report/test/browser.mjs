@@ -2,8 +2,9 @@
 // simulation with --report, opens the page from file:// and checks what a reader would see: no console
 // errors and no network requests, the summary and the timeline filled, the 3D replay drawn (pixels read
 // back), scrubbing to the end moves the vehicle, playing advances, every plot has data, the design table
-// gives the model's values in their units, and printed (print media, A4) the page drops the replay and its
-// controls, shows every timeline row and nothing wider than the page, and makes a PDF. Screenshots and the
+// gives the model's values in their units; printed as it opens (print media) it is the data sheet alone on one
+// page of A4 and of Letter with no text under 8 pt, and printed whole (print media, A4) the page drops the
+// replay and its controls, shows every timeline row and nothing wider than the page, and makes a PDF. Screenshots and the
 // PDF go to OUT (a build dir: test artifacts, never committed).
 //
 //   node report/test/browser.mjs --cablesim BUILD/cablesim --modules BUILD/report/node_modules --out DIR
@@ -131,6 +132,8 @@ try {
   const plots = await page.evaluate(() =>
     window.csReport.plots.map((p) => {
       const canvas = document.querySelector(`#plot-${p.key} canvas`);
+      // the path in plan is a drawing (SVG): the CG's path and the four wheels' tracks
+      if (!canvas) return { ...p, ink: document.querySelectorAll(`#plot-${p.key} svg polyline`).length >= 5 ? 1 : 0 };
       const ctx = canvas.getContext('2d');
       const img = ctx.getImageData(0, 0, canvas.width, canvas.height).data;
       let ink = 0;
@@ -138,7 +141,7 @@ try {
       return { ...p, ink: ink / (canvas.width * canvas.height) };
     }),
   );
-  const expected = ['deceleration', 'speed', 'penetration', 'cables', 'post_tilt', 'post_moment', 'energy'];
+  const expected = ['deceleration', 'speed', 'penetration', 'angles', 'cables', 'post_tilt', 'post_moment', 'energy', 'path'];
   check('every plot is there', expected.every((k) => plots.some((p) => p.key === k)), plots.map((p) => p.key).join(','));
   for (const p of plots) {
     check(`plot ${p.key} has its time axis`, p.length >= 10, `${p.length}`);
@@ -188,7 +191,30 @@ try {
     }
   }
 
-  // printed: no controls or replay, every timeline row, nothing wider than an A4 page, a PDF of a few pages
+  // printed as it opens: the data sheet alone, on one page of A4 and of Letter, no text under 8 pt
+  await page.emulateMedia({ media: 'print' });
+  const sheet = await page.evaluate(() => {
+    const visible = (e) => e.getClientRects().length > 0 && getComputedStyle(e).visibility !== 'hidden';
+    const texts = [...document.querySelectorAll('body *')].filter((e) => visible(e) && [...e.childNodes].some((n) => n.nodeType === 3 && n.textContent.trim()));
+    return {
+      others: [...document.querySelectorAll('main > section, header, footer')].filter((e) => e.id !== 'datasheet-section' && visible(e)).map((e) => e.tagName + (e.id ? `#${e.id}` : '')),
+      small: texts.filter((e) => parseFloat(getComputedStyle(e).fontSize) < (8 * 96) / 72 - 0.01).map((e) => `${e.tagName}.${e.className} ${getComputedStyle(e).fontSize}: ${e.textContent.slice(0, 30)}`).slice(0, 5),
+      texts: texts.length,
+    };
+  });
+  check('printed as it opens: the data sheet alone', sheet.others.length === 0, sheet.others.join(' '));
+  check('printed data sheet: no text under 8 pt', sheet.texts > 50 && sheet.small.length === 0, `${sheet.texts} texts; ${sheet.small.join(' | ')}`);
+  for (const format of ['A4', 'Letter']) {
+    const one = await page.pdf({ format });
+    const n = (one.toString('latin1').match(/\/Type\s*\/Page\b/g) || []).length;
+    check(`printed data sheet: one page of ${format}`, n === 1, `${n} pages`);
+    writeFileSync(join(out, `datasheet-${format}.pdf`), one);
+  }
+  await page.emulateMedia({ media: 'screen' });
+
+  // printed whole (the sheet's "Print the whole report"): no controls or replay, every timeline row,
+  // nothing wider than an A4 page, a PDF of a few pages
+  await page.evaluate(() => document.body.classList.add('print-all'));
   await page.setViewportSize({ width: 720, height: 1000 });
   await page.emulateMedia({ media: 'print' });
   // the plots follow their container's width by a ResizeObserver, whose callbacks come before the next
@@ -214,6 +240,7 @@ try {
   check('printed: a PDF of a few pages', pdf.subarray(0, 5).toString() === '%PDF-' && pages >= 2 && pages <= 30, `${pdf.length} bytes, ${pages} pages`);
   writeFileSync(join(out, 'report-print.pdf'), pdf);
   await page.emulateMedia({ media: 'screen' });
+  await page.evaluate(() => document.body.classList.remove('print-all'));
   await page.setViewportSize({ width: 1400, height: 1000 });
 
   check('no console errors', consoleErrors.length === 0, consoleErrors.join(' | '));

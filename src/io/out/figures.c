@@ -657,6 +657,167 @@ static void fig_snapshots(cs_plot *p, const cs_figure_data *d, double *t) {
     }
 }
 
+/* ---- 8: roll, pitch and yaw ---- */
+
+static void fig_angles(cs_plot *p, const cs_figure_data *d, double *t) {
+    const cs_record *r = d->rec;
+    int n = r->frame_count;
+    double *y = t + n; /* roll, pitch, yaw from its initial heading: 3 series of n, deg */
+    for (int i = 0; i < n; i++) {
+        const cs_vehicle_view *v = &r->vehicle[i];
+        y[i] = v->roll / CS_DEG;
+        y[n + i] = v->pitch / CS_DEG;
+        y[2 * n + i] = (v->yaw - r->vehicle[0].yaw) / CS_DEG;
+    }
+    char title[TITLE_SIZE], label[CS_LABEL_SIZE];
+    cs_axes a;
+    time_axes(&a, title, d, "roll, pitch and yaw of the vehicle", "angle (deg)", NULL, 0, t, n);
+    a.legend_width = 440;
+    cs_axes_fit(&a, NULL, y, 3 * n);
+    cs_axes_layout(p, &a, whole(p));
+    cs_style zero = line(GREY, 1);
+    cs_plot_hline(p, &a, 0, &zero, NULL);
+    static const char *const names[3] = {"roll (right side down +)", "pitch (nose down +)",
+                                         "yaw from the initial heading"};
+    for (int k = 0; k < 3; k++) {
+        const double *s = y + (size_t)k * (size_t)n;
+        int at = -1;
+        for (int i = 0; i < n; i++)
+            if (at < 0 || fabs(s[i]) > fabs(s[at])) at = i;
+        cs_style st = line(cs_plot_palette(k), k == 2 ? 2.5 : 3);
+        if (at >= 0) {
+            snprintf(label, sizeof label, "%s: peak %.1f deg at %.3f s", names[k], s[at], t[at]);
+            cs_plot_line(p, &a, t, s, n, &st, label);
+            cs_style m = mark(cs_plot_palette(k), CS_MARK_CIRCLE, 11);
+            cs_plot_line(p, &a, &t[at], &s[at], 1, &m, NULL);
+        } else {
+            cs_plot_line(p, &a, t, s, n, &st, names[k]);
+        }
+    }
+    cs_plot_legend(p, &a, CS_LEGEND_OUTSIDE_RIGHT);
+}
+
+/* ---- 9: the path in plan, with the exit box ---- */
+
+/* How far past the run's end the path is drawn straight on (s, 0: not at all): until every wheel is past
+ * the exit box's line (a box given) or 10 m on, at most 60 m; only for a vehicle heading back to the
+ * traffic side (y < 0). */
+static double path_after(const cs_figure_data *d, double w[4][2]) {
+    const cs_record *r = d->rec;
+    const cs_vehicle_view *e = &r->vehicle[r->frame_count - 1];
+    double vx = e->velocity[0], vy = e->velocity[1], speed = hypot(vx, vy);
+    if (!(vy < 0) || !(speed > 0)) return 0;
+    double tt = 10 / speed;
+    if (d->exit_box)
+        for (int k = 0; k < 4; k++)
+            tt = fmax(tt, (-d->exit_box->a - 1 - w[k][1]) / vy);
+    return fmin(tt, 60 / speed);
+}
+
+static void fig_path(cs_plot *p, const cs_figure_data *d, double *t) {
+    const cs_record *r = d->rec;
+    const cs_barrier_def *b = &d->in->barrier;
+    const cs_exit_box *box = d->exit_box;
+    int n = r->frame_count;
+    double *cx = t + n, *cy = t + 2 * n, *wx = t + 3 * n, *wy = t + 7 * n; /* CG, then 4 wheels' x and y */
+    double w[4][2];
+    for (int i = 0; i < n; i++) {
+        cs_vehicle_wheels(&r->vehicle[i], &d->in->vehicle, w);
+        cx[i] = r->vehicle[i].position[0], cy[i] = r->vehicle[i].position[1];
+        for (int k = 0; k < 4; k++)
+            wx[(size_t)k * (size_t)n + (size_t)i] = w[k][0], wy[(size_t)k * (size_t)n + (size_t)i] = w[k][1];
+    }
+    double after = n > 0 ? path_after(d, w) : 0, ex[2][5], ey[2][5]; /* straight on: CG, wheels */
+    if (after > 0) {
+        const double *v = r->vehicle[n - 1].velocity;
+        for (int k = 0; k < 5; k++) {
+            ex[0][k] = k ? w[k - 1][0] : cx[n - 1], ey[0][k] = k ? w[k - 1][1] : cy[n - 1];
+            ex[1][k] = ex[0][k] + v[0] * after, ey[1][k] = ey[0][k] + v[1] * after;
+        }
+    }
+    char title[TITLE_SIZE], label[CS_LABEL_SIZE];
+    snprintf(title, sizeof title, "%s: the vehicle's path in plan", d->in->name);
+    cs_axes a;
+    cs_axes_init(&a, title, "x, along the barrier (m)", "y, toward the protected side (m)");
+    a.equal = 1;
+    a.legend_width = 500;
+    cs_axes_fit(&a, cx, cy, n);
+    cs_axes_fit(&a, wx, wy, 4 * n);
+    for (int k = 0; k < 2 && n > 0; k++) { /* the vehicle at the start and the end */
+        double u[4], v[4];
+        outline(&d->in->vehicle, &r->vehicle[k ? n - 1 : 0], 0, u, v);
+        cs_axes_fit(&a, u, v, 4);
+    }
+    for (int k = 0; k < 5 && after > 0; k++)
+        cs_axes_fit_point(&a, ex[1][k], ey[1][k]);
+    double bx[4] = {0}, by[4] = {0};
+    if (box) {
+        double x1 = box->start_x + box->dir * box->b;
+        const double px[4] = {box->start_x, x1, x1, box->start_x}, py[4] = {0, 0, -box->a, -box->a};
+        memcpy(bx, px, sizeof bx), memcpy(by, py, sizeof by);
+        cs_axes_fit(&a, bx, by, 4);
+    }
+    cs_axes_fit_point(&a, NAN, 0);
+    if (n == 0) /* no run to show: the barrier about the impact point */
+        cs_axes_fit_point(&a, d->in->scenario.impact_x - 5, 0),
+            cs_axes_fit_point(&a, d->in->scenario.impact_x + 5, 0);
+    double xa = fmax(b->start_anchor.x, a.x0 - 2), xb = fmin(b->end_anchor.x, a.x1 + 2);
+    cs_axes_fit_point(&a, a.x0 - 1, a.y0 - 1); /* a metre clear of the frame all round */
+    cs_axes_fit_point(&a, a.x1 + 1, a.y1 + 1);
+    cs_axes_layout(p, &a, whole(p));
+    if (box) {
+        cs_rgb fill = {0.88, 0.95, 0.88};
+        cs_style edge = dashed((cs_rgb){0.10, 0.50, 0.15}, 2),
+                 far = (cs_style){RED, 1.5, CS_DOTTED, CS_MARK_NONE, 0};
+        int mash = d->standard && strcmp(d->standard, "mash") == 0;
+        snprintf(label, sizeof label,
+                 mash ? "MASH's exit box: A = %.2f m across, B = %.1f m along"
+                      : "MASH's exit box, A = %.2f m, B = %.1f m (not in NCHRP 350)",
+                 box->a, box->b);
+        cs_plot_polygon(p, &a, bx, by, 4, &fill, &edge);
+        cs_axes_legend_add(&a, CS_LEGEND_LINE, &edge, label);
+        cs_plot_hline(p, &a, -box->a, &far, "the box's far side, extended (y = -A)");
+    }
+    cs_style face = line(BLACK, 3), post = mark(GREY, CS_MARK_SQUARE, 7);
+    cs_plot_segment(p, &a, xa, 0, xb, 0, &face);
+    cs_axes_legend_add(&a, CS_LEGEND_LINE, &face, "the barrier's line before impact (y = 0)");
+    for (int q = 0, shown = 0; q < b->post_count; q++) {
+        double x = b->posts[q].x, y0 = 0;
+        if (x < a.x0 || x > a.x1) continue;
+        cs_plot_line(p, &a, &x, &y0, 1, &post, shown++ ? NULL : "posts (where they stood)");
+    }
+    cs_rgb body_fill = {0.85, 0.85, 0.85};
+    cs_style edge = line(GREY, 1.5);
+    for (int k = 0; k < 2 && n > 0; k++) {
+        double u[4], v[4];
+        outline(&d->in->vehicle, &r->vehicle[k ? n - 1 : 0], 0, u, v);
+        cs_plot_polygon(p, &a, u, v, 4, &body_fill, &edge);
+    }
+    if (n > 0)
+        cs_axes_legend_add(&a, CS_LEGEND_AREA, &(cs_style){body_fill, 0, CS_SOLID, CS_MARK_NONE, 0},
+                           "the vehicle at the start and the end of the run");
+    cs_style wheel = line((cs_rgb){0.45, 0.45, 0.45}, 1.2), cg = line(cs_plot_palette(0), 3);
+    for (int k = 0; k < 4; k++)
+        cs_plot_line(p, &a, wx + (size_t)k * (size_t)n, wy + (size_t)k * (size_t)n, n, &wheel,
+                     k ? NULL : "wheel tracks");
+    cs_plot_line(p, &a, cx, cy, n, &cg, "path of the CG in the run");
+    if (after > 0) {
+        cs_style on = dashed(cs_plot_palette(0), 2);
+        for (int k = 0; k < 5; k++)
+            cs_plot_segment(p, &a, ex[0][k], ey[0][k], ex[1][k], ey[1][k], &on);
+        snprintf(label, sizeof label, "after the run: straight on along the last velocity (%.1f s)", after);
+        cs_axes_legend_add(&a, CS_LEGEND_LINE, &on, label);
+    }
+    if (box && isfinite(box->cross_along)) {
+        double x = box->start_x + box->dir * box->cross_along, y = -box->a;
+        cs_style m = mark(RED, CS_MARK_CROSS, 14);
+        snprintf(label, sizeof label, "a wheel crosses y = -A %.1f m along%s", box->cross_along,
+                 box->crossed_in_run ? " (in the run)" : " (after it)");
+        cs_plot_line(p, &a, &x, &y, 1, &m, label);
+    }
+    cs_plot_legend(p, &a, CS_LEGEND_OUTSIDE_RIGHT);
+}
+
 /* ---- the table of figures ---- */
 
 /* A figure draws on p from d; t holds the frames' times followed by room for SERIES(cable count) more
@@ -676,6 +837,8 @@ static const struct {
     {"posts", fig_posts, 1300, 950},
     {"energy", fig_energy, 1300, 750},
     {"snapshots", fig_snapshots, SNAP_WIDTH, 0},
+    {"angles", fig_angles, 1300, 700},
+    {"path", fig_path, 1500, 800},
 };
 
 const char *cs_figure_name(cs_figure figure) {

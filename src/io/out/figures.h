@@ -1,6 +1,7 @@
 /* The figures of a run, drawn from its recorded frames and its events with the plotting layer (plot.h):
- * deceleration, speed, penetration, cable tensions, the posts nearest the impact, the energy ledger and
- * a strip of top and side snapshots. */
+ * deceleration, speed, penetration, cable tensions, the posts nearest the impact, the energy ledger, a
+ * strip of top and side snapshots, the vehicle's roll, pitch and yaw, and its path in plan with MASH's
+ * exit box. */
 #ifndef CS_FIGURES_H
 #define CS_FIGURES_H
 
@@ -8,13 +9,18 @@
 #include "outfile.h"
 #include "plot.h"
 #include "record.h"
+#include "study/criteria.h"
 
-/* What a figure reads: the resolved model (name, barrier, vehicle, scenario), the frames, the events. */
+/* What a figure reads: the resolved model (name, barrier, vehicle, scenario), the frames, the events,
+ * and the exit box of a run that stands for a roadside test (NULL: none; the path is drawn without it),
+ * with the standard that test is of ("mash", "nchrp-350"). */
 typedef struct cs_figure_data {
     const cs_model_input *in;
     const cs_record *rec;
     const cs_event *events;
     int event_count;
+    const cs_exit_box *exit_box;
+    const char *standard;
 } cs_figure_data;
 
 typedef enum cs_figure {
@@ -25,11 +31,13 @@ typedef enum cs_figure {
     CS_FIG_POSTS,
     CS_FIG_ENERGY,
     CS_FIG_SNAPSHOTS,
+    CS_FIG_ANGLES,
+    CS_FIG_PATH,
     CS_FIG_COUNT
 } cs_figure;
 
 /* The figure's file stem: "deceleration", "speed", "penetration", "cables", "posts", "energy",
- * "snapshots". */
+ * "snapshots", "angles", "path". */
 const char *cs_figure_name(cs_figure figure);
 /* Its size in device units (the snapshots' height follows the geometry of the run). */
 void cs_figure_size(cs_figure figure, const cs_figure_data *d, double *width, double *height);

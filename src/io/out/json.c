@@ -274,13 +274,13 @@ const char *cs_flail_impact_name(cs_flail_impact k) {
 
 /* "occupant_risk" at the CG (docs/ratings.md, Occupant risk), or null with "occupant_risk_note" saying
  * why; "max_roll_deg" and "max_pitch_deg". */
-static void occupant_risk(cs_wout *w, int *first, const cs_run_info *info) {
+static void occupant_risk(cs_wout *w, int *first, const cs_run_info *info, cs_json_text_fn text) {
     FILE *f = w->f;
     jkey(w, first, "occupant_risk");
     if (!info || !info->motion || !info->occupant_ok) {
         fputs("null", f);
         jkey(w, first, "occupant_risk_note");
-        cs_json_string(f, !info || !info->motion ? "no record of the run's motion" : info->occupant_why);
+        text(f, !info || !info->motion ? "no record of the run's motion" : info->occupant_why);
     } else {
         const cs_occupant_risk *o = &info->occupant;
         cs_occupant_rules r = cs_default_occupant_rules();
@@ -296,14 +296,14 @@ static void occupant_risk(cs_wout *w, int *first, const cs_run_info *info) {
         const double cg[3] = {0, 0, 0};
         jarray(w, &of, "point_m", info->occupant_at ? info->occupant_point : cg, 3);
         jkey(w, &of, "occupant_impact");
-        cs_json_string(f, cs_flail_impact_name(o->impact));
+        text(f, cs_flail_impact_name(o->impact));
         jopt(w, &of, "occupant_impact_time_s", o->t_impact);
         jnum(w, &of, "oiv_longitudinal_mps", o->oiv_x);
         jnum(w, &of, "oiv_lateral_mps", o->oiv_y);
         jnum(w, &of, "ora_longitudinal_g", o->ora_x);
         jnum(w, &of, "ora_lateral_g", o->ora_y);
         jkey(w, &of, "head_impact");
-        cs_json_string(f, cs_flail_impact_name(o->thiv_impact));
+        text(f, cs_flail_impact_name(o->thiv_impact));
         jopt(w, &of, "thiv_time_s", o->t_thiv);
         jnum(w, &of, "thiv_mps", o->thiv);
         jnum(w, &of, "thiv_kmh", o->thiv * 3.6);
@@ -319,20 +319,23 @@ static void occupant_risk(cs_wout *w, int *first, const cs_run_info *info) {
     fputc('\n', f);
 }
 
-/* "roadside_criteria": the criteria of the roadside test the run stands for, as run, or null. */
-static void roadside_criteria(cs_wout *w, int *first, const cs_run_info *info) {
+/* "roadside_criteria": the criteria of the roadside test the run stands for, as run, with MASH's exit
+ * box (a criterion of MASH's tests only), or null. */
+static void roadside_criteria(cs_wout *w, int *first, const cs_run_info *info, cs_json_text_fn text) {
     FILE *f = w->f;
     jkey(w, first, "roadside_criteria");
     if (!info || !info->criteria_count) {
         fputs("null", f);
         return;
     }
-    int cf = 1;
+    int cf = 1, bf = 1;
     fputc('{', f);
     jkey(w, &cf, "standard");
-    cs_json_string(f, info->criteria_test.standard);
+    text(f, info->criteria_test.standard);
     jkey(w, &cf, "test");
-    cs_json_string(f, info->criteria_test.name);
+    text(f, info->criteria_test.name);
+    jkey(w, &cf, "vehicle");
+    text(f, info->criteria_test.vehicle);
     jkey(w, &cf, "criteria");
     fputc('[', f);
     for (int k = 0; k < info->criteria_count; k++) {
@@ -340,16 +343,32 @@ static void roadside_criteria(cs_wout *w, int *first, const cs_run_info *info) {
         int kf = 1;
         fputs(k ? ",{" : "{", f);
         jkey(w, &kf, "id");
-        cs_json_string(f, c->id);
+        text(f, c->id);
         jkey(w, &kf, "criterion");
-        cs_json_string(f, c->name);
+        text(f, c->name);
         jkey(w, &kf, "verdict");
-        cs_json_string(f, cs_verdict_name(c->verdict));
+        text(f, cs_verdict_name(c->verdict));
         jkey(w, &kf, "detail");
-        cs_json_string(f, c->detail);
+        text(f, c->detail);
         fputc('}', f);
     }
-    fputs("]}\n", f);
+    fputc(']', f);
+    const cs_exit_box *e = &info->exit_box;
+    jkey(w, &cf, "exit_box");
+    fputc('{', f);
+    jnum(w, &bf, "a_m", e->a);
+    jnum(w, &bf, "b_m", e->b);
+    jnum(w, &bf, "start_x_m", e->start_x);
+    jnum(w, &bf, "direction", e->dir);
+    jopt(w, &bf, "cross_along_m", e->cross_along);
+    jkey(w, &bf, "crossed_in_run");
+    fputs(e->crossed_in_run ? "true" : "false", f);
+    fputs("}}\n", f);
+}
+
+void cs_json_evaluation(cs_wout *w, int *first, const cs_run_info *info, cs_json_text_fn text) {
+    occupant_risk(w, first, info, text);
+    roadside_criteria(w, first, info, text);
 }
 
 int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_model *model, const cs_state *state,
@@ -452,8 +471,7 @@ int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model
     fputc('\n', f);
     cables_and_losses(&w, &first, state, &s);
     ratings(&w, &first, info);
-    occupant_risk(&w, &first, info);
-    roadside_criteria(&w, &first, info);
+    cs_json_evaluation(&w, &first, info, cs_json_string);
     jkey(&w, &first, "events");
     fprintf(f, "[");
     for (int i = 0; i < cs_state_event_count(state); i++) {

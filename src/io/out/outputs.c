@@ -8,7 +8,7 @@
 
 /* DIR/plots/<figure>.png and .svg, begun on out. */
 static int write_plots(cs_outdir *out, const cs_model_input *in, const cs_state *state, const cs_record *rec,
-                       char *why, size_t why_size) {
+                       const cs_run_info *info, char *why, size_t why_size) {
     int n = cs_state_event_count(state);
     cs_event *events = malloc((size_t)(n > 0 ? n : 1) * sizeof *events);
     if (!events) {
@@ -18,7 +18,9 @@ static int write_plots(cs_outdir *out, const cs_model_input *in, const cs_state 
     for (int i = 0; i < n; i++)
         events[i] = *cs_state_event(state, i);
     static const cs_plot_format formats[] = {CS_PLOT_PNG, CS_PLOT_SVG};
-    cs_figure_data d = {in, rec, events, n};
+    int box = info && info->motion && info->criteria_count > 0;
+    cs_figure_data d = {
+        in, rec, events, n, box ? &info->exit_box : NULL, box ? info->criteria_test.standard : NULL};
     int rc = cs_figures_write(out, "plots", formats, 2, &d, why, why_size);
     cs_plot_release();
     free(events);
@@ -42,7 +44,7 @@ int cs_write_run_files(cs_outdir *out, const cs_model_input *in, const cs_model 
                       : cs_write_summary_json_with(f, in, model, state, info, why, why_size);
         rc = cs_out_finish(out, f, rc, why, why_size);
     }
-    if (rc == 0 && (flags & CS_OUTPUT_PLOTS)) rc = write_plots(out, in, state, rec, why, why_size);
+    if (rc == 0 && (flags & CS_OUTPUT_PLOTS)) rc = write_plots(out, in, state, rec, info, why, why_size);
     if (rc == 0 && more) rc = more(out, user, why, why_size);
     return rc;
 }

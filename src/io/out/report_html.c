@@ -158,6 +158,17 @@ static double s_deflection(const cs_record *r, const cs_model_input *in, int f, 
     }
     return y;
 }
+/* the vehicle's roll (arg 0), pitch (1) or yaw (2) */
+static double s_attitude(const cs_record *r, const cs_model_input *in, int f, int arg) {
+    (void)in;
+    const cs_vehicle_view *v = &r->vehicle[f];
+    return arg == 0 ? v->roll : arg == 1 ? v->pitch : v->yaw;
+}
+/* the CG's place in plan: x (arg 0) or y (arg 1) */
+static double s_cg(const cs_record *r, const cs_model_input *in, int f, int arg) {
+    (void)in;
+    return r->vehicle[f].position[arg];
+}
 static double s_tension(const cs_record *r, const cs_model_input *in, int f, int c) {
     (void)in;
     return r->cables[(size_t)f * (size_t)r->cable_count + (size_t)c].max_tension;
@@ -213,19 +224,24 @@ static void write_series(jw *j, const cs_model_input *in, const cs_record *r, in
     static const struct {
         const char *key, *what;
         series_fn fn;
-        int nullable;
+        int arg, nullable;
     } plain[] = {
-        {"t", "time", s_time, 0},
-        {"decel", "the deceleration", s_decel, 0},
-        {"decel50", "the 50-ms deceleration", s_decel50, 1},
-        {"speed", "the forward speed", s_speed, 0},
-        {"penetration", "the penetration", s_penetration, 0},
-        {"face", "the front face", s_face, 0},
-        {"deflection", "the barrier deflection", s_deflection, 1},
+        {"t", "time", s_time, 0, 0},
+        {"decel", "the deceleration", s_decel, 0, 0},
+        {"decel50", "the 50-ms deceleration", s_decel50, 0, 1},
+        {"speed", "the forward speed", s_speed, 0, 0},
+        {"penetration", "the penetration", s_penetration, 0, 0},
+        {"face", "the front face", s_face, 0, 0},
+        {"deflection", "the barrier deflection", s_deflection, 0, 1},
+        {"roll", "the roll", s_attitude, 0, 0},
+        {"pitch", "the pitch", s_attitude, 1, 0},
+        {"yaw", "the yaw", s_attitude, 2, 0},
+        {"cg_x", "the CG's x", s_cg, 0, 0},
+        {"cg_y", "the CG's y", s_cg, 1, 0},
     };
     for (size_t k = 0; k < sizeof plain / sizeof plain[0]; k++) {
         key(j, &first, plain[k].key);
-        series(j, r, in, stride, plain[k].fn, 0, plain[k].nullable, plain[k].what);
+        series(j, r, in, stride, plain[k].fn, plain[k].arg, plain[k].nullable, plain[k].what);
     }
     key(j, &first, "tension");
     fputc('[', f);
@@ -493,6 +509,7 @@ static void write_info(jw *j, int *first, const cs_run_info *info) {
         fputs(i ? ",{" : "{", f);
         kstr(j, &rf, "standard", cs_standard_name(info->ratings[i].standard));
         kstr(j, &rf, "label", info->ratings[i].label);
+        kstr(j, &rf, "vehicle_class", info->ratings[i].vehicle_class);
         kstr(j, &rf, "text", text);
         fputc('}', f);
     }
@@ -548,6 +565,11 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
     kstr(&j, &first, "file", in->file);
     kstr(&j, &first, "version", CS_VERSION_STRING);
     write_info(&j, &first, info);
+    key(&j, &first, "evaluation");
+    fputc('{', f);
+    int ef = 1;
+    cs_json_evaluation(&j.w, &ef, info, cs_json_page_string);
+    fputc('}', f);
     key(&j, &first, "summary");
     fputc('{', f);
     j.digits = SUMMARY_DIGITS;

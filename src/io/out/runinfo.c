@@ -28,14 +28,13 @@ void cs_run_info_motion(cs_run_info *info, const cs_model_input *in, const cs_re
     info->criteria_count = 0;
     if (!cs_roadside_test_as_run(&in->vehicle, in->scenario.speed, in->scenario.angle, &info->criteria_test))
         return;
-    cs_exit_box box;
-    cs_exit_box_of_record(rec, &in->vehicle, in->scenario.impact_x, &box);
+    cs_exit_box_of_record(rec, &in->vehicle, in->scenario.impact_x, &info->exit_box);
     cs_test_result r = {summary,
                         info->occupant_ok ? &info->occupant : NULL,
                         info->occupant_why,
                         info->roll_peak,
                         info->pitch_peak,
-                        &box};
+                        &info->exit_box};
     info->criteria_count = cs_roadside_criteria(&info->criteria_test, &r, info->criteria);
 }
 

@@ -34,6 +34,7 @@ typedef struct cs_run_info {
     int criteria_count; /* of the roadside test the run stands for (cs_roadside_test_as_run); 0 none */
     cs_roadside_test criteria_test;
     cs_criterion criteria[CS_CRITERIA_MAX];
+    cs_exit_box exit_box; /* MASH's, of a run that stands for a roadside test (criteria_count > 0) */
 } cs_run_info;
 
 /* The ratings of a run as run into info (cs_rate_as_run): ASTM F2656 if its vehicle is one of that
@@ -68,6 +69,11 @@ typedef void (*cs_json_text_fn)(FILE *f, const char *s);
 /* The object of "cablesim" in summary.json and report.html: {"version", "command", "overrides",
  * "model_hash"} (info NULL: the version alone, the rest null or empty), its strings written by text. */
 void cs_json_provenance(FILE *f, const cs_run_info *info, cs_json_text_fn text);
+/* The evaluation of a run as summary.json and report.html give it, as "key":value pairs after first:
+ * "occupant_risk" (or null and "occupant_risk_note"), "max_roll_deg", "max_pitch_deg" and
+ * "roadside_criteria" (with MASH's "exit_box"; null for a run that is no roadside test), strings written
+ * by text (docs/ratings.md). */
+void cs_json_evaluation(cs_wout *w, int *first, const cs_run_info *info, cs_json_text_fn text);
 
 /* More files to write into a run's folder before it commits (the command's report.html): each begun on
  * out. Returns 0, or -1 with why filled. */

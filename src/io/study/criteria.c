@@ -13,8 +13,7 @@ const char *cs_verdict_name(cs_verdict v) {
     return v == CS_VERDICT_PASS ? "pass" : v == CS_VERDICT_FAIL ? "FAIL" : "not judged";
 }
 
-/* The wheels' plan positions (front left, front right, rear left, rear right) of a frame. */
-static void wheels(const cs_vehicle_view *p, const cs_vehicle_def *v, double w[4][2]) {
+void cs_vehicle_wheels(const cs_vehicle_view *p, const cs_vehicle_def *v, double w[4][2]) {
     double c = cos(p->yaw), s = sin(p->yaw), rear = v->wheelbase - v->cg_to_front_axle;
     const double bx[4] = {v->cg_to_front_axle, v->cg_to_front_axle, -rear, -rear};
     const double by[4] = {0.5 * v->track, -0.5 * v->track, 0.5 * v->track, -0.5 * v->track};
@@ -28,12 +27,13 @@ void cs_exit_box_of_record(const cs_record *rec, const cs_vehicle_def *v, double
     out->start_x = impact_x;
     out->cross_along = HUGE_VAL;
     out->crossed_in_run = 0;
+    out->dir = 1.0;
     int n = cs_record_frame_count(rec);
     if (n < 1) return;
-    double dir = cs_record_vehicle(rec, 0)->velocity[0] >= 0.0 ? 1.0 : -1.0, w[4][2];
+    double dir = out->dir = cs_record_vehicle(rec, 0)->velocity[0] >= 0.0 ? 1.0 : -1.0, w[4][2];
     int started = 0;
     for (int i = 0; i < n; i++) {
-        wheels(cs_record_vehicle(rec, i), v, w);
+        cs_vehicle_wheels(cs_record_vehicle(rec, i), v, w);
         for (int k = 0; k < 4 && !started; k++)
             if (w[k][1] >= 0.0) out->start_x = w[k][0], started = 1;
         for (int k = 0; k < 4 && started; k++)
@@ -47,7 +47,7 @@ void cs_exit_box_of_record(const cs_record *rec, const cs_vehicle_def *v, double
     const cs_vehicle_view *e = cs_record_vehicle(rec, n - 1);
     double vx = e->velocity[0], vy = e->velocity[1];
     if (vy >= 0.0) return;
-    wheels(e, v, w);
+    cs_vehicle_wheels(e, v, w);
     for (int k = 0; k < 4; k++) {
         double t = (-out->a - w[k][1]) / vy, along = (w[k][0] + vx * t - out->start_x) * dir;
         if (along < out->cross_along) out->cross_along = along;

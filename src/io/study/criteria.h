@@ -23,7 +23,12 @@ typedef struct cs_exit_box {
     double start_x;     /* where the wheel track first crossed y = 0 (or the impact point), m */
     double cross_along; /* how far along from start_x a wheel crosses y = -a, m; HUGE_VAL never */
     int crossed_in_run; /* 1 if it crossed within the run; 0 if on the path extrapolated past its end */
+    double dir; /* +1 if the vehicle travels toward +x, -1 toward -x: the box runs from start_x that way */
 } cs_exit_box;
+
+/* The wheels' plan positions (x, y; front left, front right, rear left, rear right) of a frame: the
+ * vehicle's track and wheelbase placed by the CG and its yaw. */
+void cs_vehicle_wheels(const cs_vehicle_view *p, const cs_vehicle_def *v, double w[4][2]);
 
 /* The exit box and the wheels' path of a run: the wheels (track and wheelbase) from the CG's place and
  * yaw in each frame, and past the run's end straight along the CG's last velocity. */
