@@ -6,7 +6,7 @@ DEMO_OUT ?= results/aps3
 FUZZ_SECONDS ?= 60
 FUZZ_BUILD ?= build-fuzz
 
-.PHONY: all deps configure build demo designer test sanitize fuzz fuzz-build bench docs package format clean
+.PHONY: all deps configure build demo designer test sanitize fuzz fuzz-build pin bench docs package format clean
 
 all: build
 
@@ -81,6 +81,24 @@ fuzz: fuzz-build
 	$(FUZZ_RUN) $(FUZZ_BUILD)/fuzz_sweep $(FUZZ_FLAGS) -dict=fuzz/loader.dict \
 	  $(FUZZ_BUILD)/corpus-sweep $(FUZZ_BUILD)/seeds-sweep
 
+# The pinned runs, rewritten from this engine: the one way to change them (tests/example.h). Built with
+# musl's maths in $(BUILD) (CS_MATH=musl: the numbers of tests/predictions/*.csv, the hashes and the
+# outputs of tests/golden/musl/) and with glibc's in $(PIN_GLIBC) (their own hashes and tests/golden/glibc/,
+# on a processor with FMA and AVX2). Then review and commit the diff it prints.
+PIN_GLIBC ?= build-glibc
+PIN_TESTS = test_io_crash_tests test_io_roadside test_io_golden
+
+pin: deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCS_MATH=musl
+	cmake -S . -B $(PIN_GLIBC) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCS_MATH=glibc -DCS_REPORT=OFF -DCS_DESIGNER=OFF
+	for b in $(BUILD) $(PIN_GLIBC); do \
+	  cmake --build $$b -j $(JOBS) --target cablesim_cmd $(PIN_TESTS) || exit 1; \
+	  for t in $(PIN_TESTS); do \
+	    CS_PIN_UPDATE=1 $$b/$$t >$$b/$$t.pin.log 2>&1 || { cat $$b/$$t.pin.log; exit 1; }; \
+	    grep '^pinned: ' $$b/$$t.pin.log; done; done
+	git diff --stat -- tests/predictions tests/golden
+	git status --short -- tests/golden
+
 # Benchmarks (bench/run.sh, docs/performance.md; not part of test). Settings: BENCH_N (Monte Carlo runs, 1000),
 # BENCH_T_END (end time of the APS3 runs; empty: the model's), BENCH_POSTS, BENCH_POSTS_T_END, BENCH_REPEAT.
 bench: build
@@ -98,4 +116,4 @@ format:
 	clang-format -i include/cablesim/*.h src/*.c src/*.h src/io/*/*.c src/io/*/*.h app/*.c tests/*.c tests/*.h examples/*.c examples/*/*.c fuzz/*.c 2>/dev/null || true
 
 clean:
-	rm -rf $(BUILD) build-asan $(FUZZ_BUILD)
+	rm -rf $(BUILD) build-asan $(FUZZ_BUILD) $(PIN_GLIBC)

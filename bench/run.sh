@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The benchmarks of docs/performance.md (make bench; not part of make test):
-#   1. one APS3 run: engine time (cs_run alone, best of BENCH_REPEAT), steps per second, peak memory;
+#   1. one APS3 run: engine time (cs_run alone, best of BENCH_REPEAT), steps per second, peak memory, and
+#      the whole `cablesim run` as a user pays it (load, settle, run, files; no plots), best of BENCH_REPEAT;
 #   2. a Monte Carlo (examples/aps3-uncertain.yaml, BENCH_N runs) on 1 and 2 threads and on 2 MPI ranks;
 #   3. cost against barrier length: generated models of 10 to 1,000 posts (bench/gen_posts.sh), each run
 #      to BENCH_POSTS_T_END;
@@ -8,12 +9,17 @@
 #   5. instructions of the engine (cs_run) for APS1, APS3, APS4 and the 1,000-post model, counted by
 #      valgrind's callgrind: unlike wall times on a shared machine they do not move with the load, so a
 #      change of cost shows between two benches (skipped without valgrind, or with BENCH_ICOUNT=0).
-# Settings (environment): BUILD (build), BENCH_N (1000, the issue's Monte Carlo), BENCH_T_END (empty: the model's own, 3 s, or until
-# the truck stops or breaks through), BENCH_POSTS ("10 30 100 300 1000"), BENCH_POSTS_T_END (20 ms),
-# BENCH_REPEAT (10), BENCH_POSTS_REPEAT (3), BENCH_ICOUNT (1). Writes results/bench/bench.md and prints it.
+# Each of 1, 2 and 5 also for the build BENCH_BASE names (another engine's build folder, e.g. the previous
+# commit's built in its own worktree), run alternately with this one, side by side in the same tables.
+# Settings (environment): BUILD (build), BENCH_BASE (empty: none), BENCH_N (1000, the issue's Monte Carlo),
+# BENCH_T_END (empty: the model's own, 3 s, or until the truck stops or breaks through), BENCH_POSTS
+# ("10 30 100 300 1000"), BENCH_POSTS_T_END (20 ms), BENCH_REPEAT (10), BENCH_POSTS_REPEAT (3),
+# BENCH_ICOUNT (1). Writes results/bench/bench.md, prints it and copies it to docs/bench.md, the figures
+# docs/performance.md and the README give.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD=${BUILD:-build}
+BASE=${BENCH_BASE:-}
 N=${BENCH_N:-1000}
 T_END=${BENCH_T_END:-}
 POSTS=${BENCH_POSTS:-10 30 100 300 1000}
@@ -27,8 +33,12 @@ md="$out/bench.md"
 cs="$BUILD/cablesim"
 csmpi="$BUILD/cablesim-mpi"
 engine="$BUILD/bench_engine"
-for b in "$cs" "$engine"; do
-    [ -x "$b" ] || { echo "bench: $b is missing (make build first)"; exit 1; }
+builds=("$BUILD")
+[ -n "$BASE" ] && builds+=("$BASE")
+for d in "${builds[@]}"; do
+    for b in "$d/cablesim" "$d/bench_engine"; do
+        [ -x "$b" ] || { echo "bench: $b is missing (make build first)"; exit 1; }
+    done
 done
 have_time=0
 [ -x /usr/bin/time ] && have_time=1
@@ -52,17 +62,47 @@ peak_kb() { # peak resident memory of a command, from /usr/bin/time -v
     echo
 } >"$md"
 
-echo "bench: one APS3 run (best of $REPEAT)..."
-one=$("$engine" examples/aps3.yaml --repeat "$REPEAT" "${t_end_args[@]}")
+cmd_ms() { # the best wall and the best CPU time (user + sys), ms, of `BUILD/cablesim run examples/aps3.yaml`
+    # over REPEAT runs: what a user pays, the process from its start to its end (load, settle, run,
+    # files; no plots)
+    local best="" cpu="" t
+    for _ in $(seq "$REPEAT"); do
+        rm -rf "$out/cmd-run"
+        t=$({ TIMEFORMAT="%3R %3U %3S"; time "$1/cablesim" run examples/aps3.yaml -o "$out/cmd-run" \
+            "${t_end_args[@]}" >/dev/null; } 2>&1)
+        read -r best cpu < <(awk -v t="$t" -v b="$best" -v c="$cpu" 'BEGIN { split(t, x, " ")
+            w = 1000 * x[1]; u = 1000 * (x[2] + x[3])
+            print (b == "" || w < b) ? w : b, (c == "" || u < c) ? u : c }')
+    done
+    echo "$best $cpu"
+}
+echo "bench: one APS3 run (best of $REPEAT, each build alternately)..."
+declare -A one cmd
+for d in "${builds[@]}"; do # warm each build's files first: the first run pays the disk
+    "$d/bench_engine" examples/aps3.yaml --repeat 1 "${t_end_args[@]}" >/dev/null
+done
+for d in "${builds[@]}"; do
+    one[$d]=$("$d/bench_engine" examples/aps3.yaml --repeat "$REPEAT" "${t_end_args[@]}")
+    cmd[$d]=$(cmd_ms "$d")
+done
 rss_run=$(peak_kb "$cs" run examples/aps3.yaml -o "$out/aps3" "${t_end_args[@]}")
 {
     echo "## One APS3 run"
     echo
-    echo "\`$engine examples/aps3.yaml --repeat $REPEAT ${t_end_args[*]}\`"
+    echo "\`BUILD/bench_engine examples/aps3.yaml --repeat $REPEAT${T_END:+ --t-end \"$T_END\"}\` (the engine: \`cs_run\` alone)"
+    echo "and \`BUILD/cablesim run examples/aps3.yaml -o DIR${T_END:+ --t-end \"$T_END\"}\` (what a user pays: the process from"
+    echo "its start to its end, loading the model, settling the barrier, running and writing the files; no"
+    echo "plots), each best of $REPEAT; with two builds, each measured in turn."
     echo
-    echo "| engine time (best) | median | CPU time (best) | simulated | steps | steps/s | per step | outcome | load | peak memory (engine / \`cablesim run\`) |"
-    echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
-    echo "| $(field engine_ms_best "$one") ms | $(field engine_ms_median "$one") ms | $(field cpu_ms_best "$one") ms | $(field t_reached_s "$one") s | $(field steps "$one") | $(field steps_per_s "$one") | $(field us_per_step "$one") us | $(field outcome "$one") | $(field load_ms "$one") ms | $(field peak_rss_kb "$one") kB / $rss_run kB |"
+    echo "| build | \`cablesim run\` (best) | its CPU time (best) | engine time (best) | median | CPU time (best) | simulated | steps | steps/s | per step | outcome | load | peak memory (engine / \`cablesim run\`) |"
+    echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+    for d in "${builds[@]}"; do
+        o=${one[$d]}
+        rss="n/a"
+        [ "$d" = "$BUILD" ] && rss=$rss_run
+        read -r wall cpu <<<"${cmd[$d]}"
+        echo "| \`$d\` | **$wall ms** | $cpu ms | **$(field engine_ms_best "$o") ms** | $(field engine_ms_median "$o") ms | $(field cpu_ms_best "$o") ms | $(field t_reached_s "$o") s | $(field steps "$o") | $(field steps_per_s "$o") | $(field us_per_step "$o") us | $(field outcome "$o") | $(field load_ms "$o") ms | $(field peak_rss_kb "$o") kB / $rss kB |"
+    done
     echo
 } >>"$md"
 
@@ -73,11 +113,12 @@ mc_line() { # label, command...
     local timed=()
     [ "$have_time" -eq 1 ] && timed=(/usr/bin/time -f "%U %S %M" -o "$out/time.txt")
     echo "n/a n/a n/a" >"$out/time.txt"
-    "${timed[@]}" "$@" >"$out/mc.log" 2>/dev/null || { echo "| $label | failed | | | | |"; return; }
-    local log wall rate u s m
-    log=$(grep '^sweep: ' "$out/mc.log")
-    wall=$(sed -E 's/.* in ([0-9.]+) s .*/\1/' <<<"$log")
-    rate=$(sed -E 's/.*\(([0-9.]+) runs\/s\).*/\1/' <<<"$log")
+    local a b wall rate u s m
+    a=$(date +%s%N)
+    "${timed[@]}" "$@" >"$out/mc.log" 2>&1 || { echo "| $label | failed | | | | |"; return; }
+    b=$(date +%s%N)
+    wall=$(awk -v t=$((b - a)) 'BEGIN { printf "%.2f", t / 1e9 }')
+    rate=$(awk -v w="$wall" -v n="$N" 'BEGIN { printf "%.1f", n / w }')
     read -r u s m <"$out/time.txt"
     echo "| $label | $wall s | $rate | $(awk -v u="$u" -v s="$s" 'BEGIN { printf "%.1f", u + s }') s | $m kB | $(awk -v w="$wall" -v n="$N" 'BEGIN { printf "%.0f", w / n * 10000 }') s |"
 }
@@ -89,6 +130,8 @@ sweep_args=(sweep "$spec" --runs "$N" --quiet "${t_end_args[@]}")
     echo "| how | wall time | runs/s | CPU time (user + sys) | peak memory | 10,000 runs at this rate |"
     echo "| --- | --- | --- | --- | --- | --- |"
     mc_line "1 thread (\`$cs ${sweep_args[*]} -o $out/mc1 --threads 1\`)" "$cs" "${sweep_args[@]}" -o "$out/mc1" --threads 1
+    [ -n "$BASE" ] && mc_line "1 thread, \`$BASE\` (\`$BASE/cablesim ... --threads 1\`)" "$BASE/cablesim" \
+        "${sweep_args[@]}" -o "$out/mc1-base" --threads 1
     mc_line "2 threads (\`... --threads 2\`)" "$cs" "${sweep_args[@]}" -o "$out/mc2" --threads 2
     if [ -x "$csmpi" ] && command -v mpirun >/dev/null; then
         flags=(--oversubscribe)
@@ -128,37 +171,43 @@ echo "bench: cost against barrier length..."
     echo
 } >>"$md"
 
-icount() { # model, extra bench_engine arguments...: millions of instructions in cs_run (with link-time
+icount() { # bench_engine, model, extra arguments...: millions of instructions in cs_run (with link-time
     # optimisation its symbol may carry a suffix, cs_run.constprop.0: hence the pattern; none counted: n/a)
-    local model=$1
-    shift
-    valgrind --tool=callgrind --callgrind-out-file=/dev/null --toggle-collect='cs_run*' "$engine" "$model" \
+    local bench=$1 model=$2
+    shift 2
+    valgrind --tool=callgrind --callgrind-out-file=/dev/null --toggle-collect='cs_run*' "$bench" "$model" \
         --repeat 1 "$@" 2>&1 >/dev/null | awk '/Collected/ && $4 > 0 { printf "%.1f M", $4 / 1e6 }'
 }
 if [ "$ICOUNT" != 0 ] && command -v valgrind >/dev/null; then
     echo "bench: instructions (callgrind)..."
     big=$(for n in $POSTS; do echo "$n"; done | sort -n | tail -1)
     declare -A count
-    for m in aps1 aps3 aps4; do
-        icount "examples/$m.yaml" >"$out/icount-$m.txt" &
-    done
-    icount "$out/posts-$big.yaml" --t-end "$POSTS_T_END" >"$out/icount-posts.txt" &
-    wait
-    for m in aps1 aps3 aps4 posts; do # a run valgrind could not count says so instead of a blank
-        count[$m]=$(cat "$out/icount-$m.txt")
-        [ -n "${count[$m]}" ] || count[$m]="n/a"
+    for d in "${builds[@]}"; do
+        tag=$(tr -c 'A-Za-z0-9\n' _ <<<"$d")
+        for m in aps1 aps3 aps4; do
+            icount "$d/bench_engine" "examples/$m.yaml" >"$out/icount-$tag-$m.txt" &
+        done
+        icount "$d/bench_engine" "$out/posts-$big.yaml" --t-end "$POSTS_T_END" >"$out/icount-$tag-posts.txt" &
+        wait
+        for m in aps1 aps3 aps4 posts; do # a run valgrind could not count says so instead of a blank
+            count[$d$m]=$(cat "$out/icount-$tag-$m.txt")
+            [ -n "${count[$d$m]}" ] || count[$d$m]="n/a"
+        done
     done
     {
         echo "## Instructions of the engine"
         echo
-        echo "\`valgrind --tool=callgrind --toggle-collect='cs_run*' $engine MODEL --repeat 1\`, millions (M) of"
+        echo "\`valgrind --tool=callgrind --toggle-collect='cs_run*' BUILD/bench_engine MODEL --repeat 1\`, millions (M) of"
         echo "instructions: the same at any load for the same build (they can differ between CPUs only where"
         echo "the C library picks its math routines by the CPU's features)."
         echo
-        echo "| APS1 | APS3 | APS4 | $big posts to $POSTS_T_END |"
-        echo "| --- | --- | --- | --- |"
-        echo "| ${count[aps1]} | ${count[aps3]} | ${count[aps4]} | ${count[posts]} |"
+        echo "| build | APS1 | APS3 | APS4 | $big posts to $POSTS_T_END |"
+        echo "| --- | --- | --- | --- | --- |"
+        for d in "${builds[@]}"; do
+            echo "| \`$d\` | ${count[${d}aps1]} | ${count[${d}aps3]} | ${count[${d}aps4]} | ${count[${d}posts]} |"
+        done
         echo
     } >>"$md"
 fi
 cat "$md"
+cp "$md" docs/bench.md

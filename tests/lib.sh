@@ -12,6 +12,14 @@ finish() {
     echo "$pass passed, $fail failed"
     [ "$fail" -eq 0 ]
 }
+# `plain_only WHAT` is true in the plain suite; under the sanitizers (CS_TEST_SANITIZED=1, which CMake
+# sets on the shell tests of a CS_SANITIZE build) it is false and says what the script leaves to the plain
+# suite: there a script runs its representative cases under ASan and UBSan, not every repeat of them.
+plain_only() {
+    [ -z "${CS_TEST_SANITIZED:-}" ] && return 0
+    echo "sanitized build: left to the plain suite: $1"
+    return 1
+}
 
 # expect_problems FILE OUTPUT STATUS: the command refused FILE (status 2) and reported exactly the
 # problems its "# expect: LINE:COL: text" lines name, at those places; counts a pass or a failure.
