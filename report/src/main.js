@@ -239,7 +239,7 @@ function main() {
 
   try {
     plots = buildPlots($('plots'), data, (t) => seekTime(t));
-    report.plots = plots.plots.map((p) => ({ key: p.key, title: p.title, length: p.length, points: p.points }));
+    report.plots = plots.plots.map((p) => ({ key: p.key, title: p.title, length: p.length, points: p.points, get labels() { return p.labels; } }));
   } catch (e) {
     fail('plots', e);
   }

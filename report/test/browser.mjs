@@ -135,7 +135,7 @@ try {
       const img = ctx.getImageData(0, 0, canvas.width, canvas.height).data;
       let ink = 0;
       for (let i = 0; i < img.length; i += 4) if (img[i + 3] > 0 && img[i] + img[i + 1] + img[i + 2] < 600) ink++;
-      return { ...p, ink: ink / (canvas.width * canvas.height) };
+      return { key: p.key, points: p.points, length: p.length, labels: p.labels, ink: ink / (canvas.width * canvas.height) };
     }),
   );
   const expected = ['deceleration', 'speed', 'penetration', 'cables', 'post_tilt', 'post_moment', 'energy'];
@@ -144,6 +144,7 @@ try {
     check(`plot ${p.key} has its time axis`, p.length >= 10, `${p.length}`);
     check(`plot ${p.key}: every series has data`, p.points.length > 0 && p.points.every((n) => n > 0), JSON.stringify(p.points));
     check(`plot ${p.key} is drawn`, p.ink > 0.01, `${(100 * p.ink).toFixed(2)} % ink`);
+    check(`plot ${p.key}: every marker's note inside the plotting area`, p.labels.every((l) => l.x0 >= l.left && l.x1 <= l.right), JSON.stringify(p.labels));
   }
 
   await page.evaluate(() => window.scrollTo(0, 0));
