@@ -54,9 +54,16 @@ check "plot: format svg gives an SVG" 'head -c 200 "$svg" | grep -q "<svg" && ta
 check "plot: the same plots on 1 and 2 threads" 'cmp "$png" "$tmp/plot-2/plots/max_barrier_deflection-vs-spacing.png" && cmp "$svg" "$tmp/plot-2/plots/exit_speed-vs-spacing.svg"'
 check "plot: the plots asked for, and the study's own" '[ "$(ls "$tmp/plot-1/plots" | grep -v "^study-" | tr "\n" " ")" = "exit_speed-vs-spacing.svg max_barrier_deflection-vs-spacing.png " ] && [ "$(ls "$tmp/grid-1/plots" | grep -vc "^study-")" -eq 0 ]'
 # the study's own figures and page: the outcomes, and a histogram, a tornado chart and a scatter of each of
-# six responses; report.html holds them all and its outcome table agrees with runs.csv
-check "study: 19 PNG figures" '[ "$(ls "$tmp/lhs-1/plots" | grep -c "^study-.*\.png$")" -eq 19 ]'
-check "study: report.html has the 19 figures inline" '[ "$(grep -o "<svg" "$tmp/lhs-1/report.html" | wc -l)" -eq 19 ]'
+# the five responses its runs have a value of (none stops within its 10 ms, none leaves the barrier: no
+# max dynamic penetration, no exit speed, and no empty figure of them); report.html holds them all, says
+# which it leaves out, and its outcome table agrees with runs.csv
+check "study: 16 PNG figures" '[ "$(ls "$tmp/lhs-1/plots" | grep -c "^study-.*\.png$")" -eq 16 ] && [ ! -e "$tmp/lhs-1/plots/study-histogram-exit-speed.png" ]'
+check "study: report.html has the 16 figures inline" '[ "$(grep -o "<svg" "$tmp/lhs-1/report.html" | wc -l)" -eq 16 ]'
+check "study: the penetration beyond is one of its responses" '[ -s "$tmp/lhs-1/plots/study-histogram-penetration-beyond.png" ] && grep -q "<tr><td>penetration beyond (m)</td><td>4</td>" "$tmp/lhs-1/report.html"'
+# a tornado chart's y axis names its inputs, an input a bar, and has no numbered ticks
+tornado=$(awk -v RS='</svg>' '/Spearman rank correlation of each input/ {print; exit}' "$tmp/lhs-1/report.html")
+check "study: a tornado chart's y axis names the inputs, no numbers" 'grep -q ">scenario.speed</text>" <<<"$tornado" && ! grep -qE ">-?[0-9]+</text>" <<<"$tornado"'
+check "study: report.html says which responses have no figures" 'grep -qF "No run has a value of max dynamic penetration, exit speed (runs that left the barrier): their figures are left out." "$tmp/lhs-1/report.html"'
 stopped=$(awk -F, 'NR > 1 && $5 == "stopped"' "$runs" | wc -l)
 check "study: report.html counts the stopped runs as runs.csv does" 'grep -q "<tr><td>stopped</td><td>$stopped</td>" "$tmp/lhs-1/report.html"'
 check "study: the same figures on 1 and 2 threads" 'cmp "$tmp/lhs-1/plots/study-outcomes.png" "$tmp/lhs-2/plots/study-outcomes.png" && cmp "$tmp/lhs-1/report.html" "$tmp/lhs-2/report.html"'
