@@ -4,6 +4,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "plot.h"
 #include "cablesim/units.h"
+#include "out/htmltext.h"
 
 #include <errno.h>
 #include <math.h>
@@ -83,15 +84,7 @@ static void svg_text(FILE *out, double x, double y, double size, int bold, doubl
             (int)lround(255 * INK.r), (int)lround(255 * INK.g), (int)lround(255 * INK.b),
             halo ? " stroke=\"white\" stroke-width=\"4\" stroke-linejoin=\"round\" paint-order=\"stroke\""
                  : "");
-    for (const char *c = text; *c; c++)
-        if (*c == '&')
-            fputs("&amp;", out);
-        else if (*c == '<')
-            fputs("&lt;", out);
-        else if (*c == '>')
-            fputs("&gt;", out);
-        else
-            fputc(*c, out);
+    cs_html_text(out, text);
     fputs("</text>\n", out);
 }
 
