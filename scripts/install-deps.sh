@@ -18,9 +18,9 @@ if [ "${1:-}" != "--demo" ]; then
   pkgs+=(libopenmpi-dev openmpi-bin)
   # netcdf-bin: ncdump, which the sweep's shell test reads runs.nc with.
   pkgs+=(netcdf-bin)
-  # doxygen: the API reference (make docs) and its test (tests/api_docs.sh); dpkg-dev: dpkg-shlibdeps, the
-  # .deb's dependencies (make package).
-  pkgs+=(doxygen dpkg-dev)
+  # doxygen: the API reference (make docs) and its test (tests/api_docs.sh); dpkg-dev, debhelper and
+  # lintian: the Debian packages (make package, debian/) and their test (tests/package.sh).
+  pkgs+=(doxygen dpkg-dev debhelper lintian)
   # Debian's chromium and chromium-driver run the pages' browser tests.
   pkgs+=(chromium chromium-driver)
   # emscripten: designer.html's engine as WebAssembly (web/build.sh); dpkg-dev (above) unpacks the Debian
