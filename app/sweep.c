@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* cablesim sweep: read the spec, make every run's inputs (the same on every rank), share the runs to do
  * among MPI ranks (the k-th on rank k mod size) and, within a rank, among OpenMP threads (dynamic, one run
  * at a time), gather the results on rank 0 and write runs.csv, summary.md and summary.json there (and

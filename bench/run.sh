@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The benchmarks of docs/performance.md (make bench; not part of make test):
 #   1. one APS3 run: engine time (cs_run alone, best of BENCH_REPEAT), steps per second, peak memory;
 #   2. a Monte Carlo (examples/aps3-uncertain.yaml, BENCH_N runs) on 1 and 2 threads and on 2 MPI ranks;

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # `cablesim COMMAND ARG...` for help2man, which makes cablesim-COMMAND(1) from its --help: a synopsis line
 # continued on the next lines (indented, from "[") is joined into one, as help2man reads a synopsis a line.
 # $1 the cablesim binary, $2 the command.

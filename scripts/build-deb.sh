@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The Debian packages from debian/ (debhelper): `bash scripts/build-deb.sh OUT` copies the files git tracks
 # (as they are in the work tree) to OUT/cablesim-VERSION and runs `dpkg-buildpackage -us -uc -b` there, so
 # the build writes nothing in the source tree; the .deb files, .buildinfo and .changes land in OUT.

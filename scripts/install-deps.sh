@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Install the Debian packages cablesim needs, only those missing. Safe to run again.
 # `--demo`: only what the command and its report page need (make demo); none: everything the tests,
 # sanitizers, fuzzers, MPI, the designer page and the package need too (make test).

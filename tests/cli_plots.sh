@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # `cablesim run FILE --plots`: every figure as PNG and SVG (its texts <text> elements) under DIR/plots,
 # committed with the other outputs; without --plots no plots directory appears.
 source "$(dirname "$0")/lib.sh"

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # cablesim sweep end to end: the same runs.csv (byte for byte), summaries and plots on 1 and 2 threads, a
 # grid, a Monte Carlo, a Latin hypercube, the outputs' shape, runs.nc (--netcdf or `netcdf: true`: the same
 # bytes on 1 and 2 threads, runs.csv's runs and numbers read back by ncdump, nothing but the runs' journal

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The README's, docs/guide.md's and docs/tutorial.md's commands run as written: every line of their ```sh
 # blocks, in order (README.md first, then the guide), but the set-up ones (make, cmake --install, cc,
 # LD_LIBRARY_PATH=...), is run in a fresh folder holding examples/ and build/cablesim, as a reader would

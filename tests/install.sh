@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The installed tree on its own: `cmake --install` of the build into a temporary prefix, then, from a
 # folder outside the source tree with CABLESIM_DATA unset, the library example (examples/api/) built with
 # pkg-config and with CMake's find_package(cablesim), run against the installed libcablesim.so, prints

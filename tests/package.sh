@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The Debian packages (debian/, built by scripts/build-deb.sh with DEB_BUILD_OPTIONS=nocheck): lintian
 # finds no error and no warning in them; libcablesim0 holds the library under its multiarch directory with
 # its soname link, libcablesim-dev its headers, static library, pkg-config and CMake files, cablesim the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Plots: the plotting layer puts a known value on the expected pixel and keeps a label inside its frame
  * at every corner, and every figure of a synthetic run comes out as a PNG of the stated size that is not
  * blank, and as well-formed SVG and PDF; traced, every text of every figure lies inside its frame (a

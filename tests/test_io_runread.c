@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Results read back for comparison (load/runread.h): the 50-ms average of a deceleration history against
  * its closed forms (a constant, a ramp, on an uneven time grid), a measured file's units, read in SI, and a
  * run's 50-ms average undefined before its first window. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A sweep's table of runs from fabricated results (a run that stopped, one that broke through, one that
  * failed, over a numeric and a text input): runs.csv to the byte, runs.nc read back through the netCDF C
  * API (every value exact, units, fill values where a run has none, the same bytes twice), and the plots

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // report.html: reads the run's JSON from the page and builds the summary, the 3D replay, the failure
 // timeline and the plots. window.csReport exposes the page's state (the browser test reads it).
 import uplotCss from 'uplot/dist/uPlot.min.css';

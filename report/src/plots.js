@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Interactive time-series plots (uPlot): hover for values, drag to zoom into a time range, double-click
 // to zoom out, click to show that moment in the 3D replay. A vertical line marks the replay's time.
 import uPlot from 'uplot';

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // report.html in a real browser: Debian's headless chromium driven by playwright-core. Runs a short real
 // simulation with --report, opens the page from file:// and checks what a reader would see: no console
 // errors and no network requests, the summary and the timeline filled, the 3D replay drawn (pixels read

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The other pages cablesim writes, in a real browser (Debian's headless chromium, playwright-core):
 // compare.html (`cablesim compare` of two short runs and a synthetic "measured" trace made from the first)
 // and a study's report.html (`cablesim sweep` of tests/sweep/mc.yaml). Each opens from file:// with no

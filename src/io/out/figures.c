@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The figures of a run (figures.h). Every time series comes from the recorded frames (record.h), every
  * marked failure from the events; nothing here recomputes the physics. */
 #include "figures.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The plotting layer (plot.h) on cairo's image, SVG and PDF surfaces. Text uses cairo's own font
  * selection (DejaVu Sans, or whatever fontconfig gives for "sans-serif"). In an SVG the texts are <text>
  * elements, editable, written over the drawing (cairo's SVG surface would write each glyph's outline). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A small plotting layer on cairo: panels with axes (nice ticks, unit labels, an optional second y scale
  * on the right, equal-aspect views), lines, markers, filled and stacked areas, text, legends and a
  * colour bar, written as PNG, SVG or PDF. Immediate mode: a figure is a function that draws on a

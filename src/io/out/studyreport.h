@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A study's own figures and page, whatever its spec asks to plot: the probability of each outcome with
  * its 95% Wilson interval; for each response (the 50-ms deceleration, the penetration, the barrier's
  * deflection, the working width, the largest rope tension, the penetration beyond the runs not held, the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The plots of a sweep (`plot:` in the spec, sweepout.h), drawn with the plotting layer (plot.h) from
  * runs.csv's own columns: a response against a varied value, a line per level of another varied value of
  * a grid joining its runs in order of x, or each run a point (Monte Carlo, Latin hypercube). A run that
