@@ -104,9 +104,10 @@ pin: deps
 bench: build
 	BUILD=$(BUILD) bash bench/run.sh
 
-# The Debian package (CPack): $(BUILD)/cablesim_VERSION_ARCH.deb, for `apt install ./$(BUILD)/cablesim_*.deb`.
-package: build
-	cd $(BUILD) && cpack -G DEB
+# The Debian packages (debian/, debhelper) in $(BUILD)/deb: libcablesim0, libcablesim-dev, cablesim and
+# cablesim-data, for `apt install ./$(BUILD)/deb/*.deb`.
+package: deps
+	DEB_BUILD_OPTIONS="parallel=$(JOBS) $(DEB_BUILD_OPTIONS)" bash scripts/build-deb.sh $(BUILD)/deb
 
 # The API reference from the public headers (Doxygen): $(BUILD)/docs/html/index.html.
 docs: deps configure

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # bash completion for cablesim: its commands, each command's options, the values of --standard and
 # --only, model and spec files (*.yaml) and folders. Installed as
 # share/bash-completion/completions/cablesim.

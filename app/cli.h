@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The command line conventions every subcommand shares: options parsed by getopt_long (GNU: options and
  * operands in any order, "--opt=value" or "--opt value", unambiguous abbreviations), --help on stdout with
  * exit 0, a usage error on stderr naming what was wrong with exit 2, and the command line recorded as the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The command's subcommands that live in their own files. */
 #ifndef CS_APP_COMMANDS_H
 #define CS_APP_COMMANDS_H

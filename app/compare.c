@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `cablesim compare RUN... [--measured FILE.csv] [-o DIR]`: runs (folders written by `cablesim run`)
  * and optionally a measured history side by side: DIR/compare.csv, compare.md, compare.html and
  * plots/compare-*.png and .svg (out/compare.h). Every input is read before anything is written; a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `cablesim designer [FILE] [-o DIR]`: DIR/designer.html, one page that opens from disk and re-runs the
  * model in the browser as its values are edited (docs/designer.md). The page holds the engine and the
  * loader as WebAssembly (web/, built with emscripten: CS_HAVE_DESIGNER) and this model: its files, the

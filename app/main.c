@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* cablesim: run, check and list cable-barrier models. Exit status: 0 done, 1 the run or its outputs
  * failed, 2 a bad model or command line. */
 #include <ctype.h>

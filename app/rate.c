@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `cablesim rate`: run a standard's test condition against the barrier of a model file.
  * - Anti-ram (sd-std-02.01, sd-std-02.01a, astm-f2656): the model's vehicle (after --set), which must be
  *   one the standard tests (ASTM F2656: C, PU, M, H by mass within 5%; SD-STD: the 15,000-lb truck, M), at

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* cablesim sweep: read the spec, make every run's inputs (the same on every rank), share the runs to do
  * among MPI ranks (the k-th on rank k mod size) and, within a rank, among OpenMP threads (dynamic, one run
  * at a time), gather the results on rank 0 and write runs.csv, summary.md and summary.json there (and
@@ -372,9 +373,10 @@ static int write_all(cs_outdir *out, const cs_sweep_spec *spec, const double *x,
             snprintf(name, sizeof name, "%s", names[k]);
         else if (k < study)
             cs_sweep_plot_file(spec, k - 3, name, sizeof name);
-        else if (k < study + CS_STUDY_FIGURES)
+        else if (k < study + CS_STUDY_FIGURES) {
+            if (!cs_study_figure_shown(k - study, spec, x, r, n)) continue;
             cs_study_figure_file(k - study, name, sizeof name);
-        else
+        } else
             snprintf(name, sizeof name, "report.html");
         FILE *f = cs_out_begin(out, name, why, sizeof why);
         if (!f) {

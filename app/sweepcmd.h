@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `cablesim sweep SPEC [-o DIR] [--threads N] ...`: a study over a model's values (app/sweep.c). */
 #ifndef CS_SWEEPCMD_H
 #define CS_SWEEPCMD_H

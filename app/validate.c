@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* `cablesim validate [-o DIR] [--examples DIR] [--only
  * crash,readings,bogie,verification,convergence,sensitivity]
  * [--report-only]`: the validation suite, written to DIR/validation.md and DIR/validation.csv. It exits 3

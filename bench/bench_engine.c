@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The engine's cost on one model: load it once, then run it REPEAT times from t = 0 (cs_state_reset),
  * timing cs_run alone. Prints one line of key=value: load time, the best and median engine time of a
  * run (wall clock, and the best CPU time: the machine may be shared), steps and steps per second, the time

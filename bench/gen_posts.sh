@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Write a model of N line posts at 8 ft (APS3's line posts, cables, soil and truck; dead-man anchors 8 ft
 # beyond the end posts; the truck head-on at the bay nearest the middle) to stdout.
 # usage: bash bench/gen_posts.sh N

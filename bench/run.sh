@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The benchmarks of docs/performance.md (make bench; not part of make test):
 #   1. one APS3 run: engine time (cs_run alone, best of BENCH_REPEAT), steps per second, peak memory, and
 #      the whole `cablesim run` as a user pays it (load, settle, run, files; no plots), best of BENCH_REPEAT;

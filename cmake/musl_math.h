@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Force-included in each of musl's maths sources compiled into the engine with CS_MATH=musl
  * (CMakeLists.txt): the C library's <math.h> first, then musl's internal kernel names moved out of the
  * way of glibc's own declarations of the same names, and musl's `hidden` (its internal linkage). */

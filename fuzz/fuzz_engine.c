@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer harness of the engine: each input picks a valid design and attack (tests/design.h: two bytes
  * a value - cables, rope size, spacing, posts, dead-men, rails, vehicle size, speed, angle, impact point
  * - the generator after that), which is built and run to its end (0.15 s, under the run's solve budget).

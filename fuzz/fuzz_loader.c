@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer harness of the model loader: each input is a model file's contents, loaded through the public
  * API (cs_loader_load_buffer) and, when it loads, built by the engine, as `cablesim check` does. Lines of
  * the input that start with "#set " (YAML comments, so the model is unchanged) are queued first as

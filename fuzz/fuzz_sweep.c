@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer harness of the sweep spec: each input is a spec's contents, read as the file
  * examples/fuzz-spec.yaml (so `model: aps3.yaml` finds the example), then, as `cablesim check SPEC`
  * does, its runs' inputs drawn and each run's model checked by the loader and the engine (run 0 and every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Build the page of report.html: bundle src/main.js (three, uPlot and the report's own code) with
 // esbuild into one script, inline it into src/index.html, and write the page as a C source that the
 // cablesim command compiles in (cs_report_page, see src/io/out/report_html.h). With `designer WASM_JS`,

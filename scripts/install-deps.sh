@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Install the Debian packages cablesim needs, only those missing. Safe to run again.
 # `--demo`: only what the command and its report page need (make demo); none: everything the tests,
 # sanitizers, fuzzers, MPI, the designer page and the package need too (make test).
@@ -18,9 +19,9 @@ if [ "${1:-}" != "--demo" ]; then
   pkgs+=(libopenmpi-dev openmpi-bin)
   # netcdf-bin: ncdump, which the sweep's shell test reads runs.nc with.
   pkgs+=(netcdf-bin)
-  # doxygen: the API reference (make docs) and its test (tests/api_docs.sh); dpkg-dev: dpkg-shlibdeps, the
-  # .deb's dependencies (make package).
-  pkgs+=(doxygen dpkg-dev)
+  # doxygen: the API reference (make docs) and its test (tests/api_docs.sh); dpkg-dev, debhelper and
+  # lintian: the Debian packages (make package, debian/) and their test (tests/package.sh).
+  pkgs+=(doxygen dpkg-dev debhelper lintian)
   # Debian's chromium and chromium-driver run the pages' browser tests; poppler-utils' pdfinfo counts the
   # pages of report.html printed (tests/cli_report_print.sh).
   pkgs+=(chromium chromium-driver poppler-utils)

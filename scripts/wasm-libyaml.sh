@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # libyaml for the designer page's WebAssembly: Debian's source package of the libyaml the command links
 # (libyaml-0-2), fetched with apt-get source into OUT and compiled with emcc into OUT/libyaml.a, its
 # header in OUT/include. Nothing is installed and the machine's apt configuration is left as it is: the

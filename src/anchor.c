@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Anchors: the footings (dead-men) the ropes' ends are tied to, as bodies in the soil.
  *
  * An anchor moves horizontally by u (2 components); each rope's end rides on it at (x + u_x, u_y, z), so

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* How a cable lets go of a post it is held on (the attachment kinds of def.h).
  *
  * A cable in a slot cut down the post's web from its top is held by the post itself: it comes out only

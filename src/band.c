@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Banded LU with partial pivoting (band.h). The loops walk from the diagonal entry d = A(k, k): along
  * row k by d[j - k], down column k by steps of width - 1. */
 #include "band.h"

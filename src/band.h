@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A banded matrix and its LU factors with partial pivoting: linear algebra only, no physics.
  * Row i keeps columns i - kl .. i + ku + kl (the extra kl for the fill-in of the row exchanges). */
 #ifndef CS_BAND_H

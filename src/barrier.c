@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The quasi-static barrier at the vehicle's pose: every standing post in moment equilibrium with its
  * cables (post.c), every support sticking or sliding by the capstan condition (support.c), every
  * contact on the face and the face's crush in balance (contact.c). The cables are massless (the

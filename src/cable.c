@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Cables: the path of each cable (anchors, standing posts, face corners), its spans' tensions, their
  * plastic flow and friction work at the end of a step, and breaks. This file owns the spans' tensions:
  * everything else asks it to bring them up to date.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Contact between the vehicle's outline and the cables.
  *
  * In plan the vehicle is a rectangle: the front face between its two front corners, the sides back to

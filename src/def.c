@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Default definitions. Values that are not design data are the documented assumptions of
  * docs/assumptions.md; design data (geometry, masses, strengths) default to 0 and must be given. */
 #include "cablesim/def.h"

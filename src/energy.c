@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The energy ledger. Each term is computed on its own: kinetic and potential energy from the
  * vehicle's state, elastic energy from the cables' and posts' current forces, and dissipations
  * accumulated where they happen (cable.c, post.c, vehicle.c, barrier.c, step.c). The balance error

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Failure and end-of-run events: what, when, which element. */
 #include "internal.h"
 

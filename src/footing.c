@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Footing in soil.
  * Lateral: the pole-foundation relation of the paper (Eq. 21),
  *   S1 B D^2 - c_d P D - c_h P H = 0   =>   P = S1 B D^2 / (c_d D + c_h H),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Engine internals shared by the physics files: the model (derived, immutable) and the state.
  * One file per physics area works on these: vehicle.c, rope.c, cable.c, support.c, post.c, footing.c,
  * anchor.c, contact.c; barrier.c and system.c (the quasi-static solve that couples them, with rows.h,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Building the immutable model: check every definition, then derive what the step needs
  * (rope breakpoints, post capacities, tyre springs, the start pose). */
 #include "internal.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Newton's method with a banded Jacobian (newton.h).
  *
  * Each iteration solves J dx = -F and takes the largest step t dx (t from the problem's step limit, then

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A Newton solver for F(x) = 0 with a banded Jacobian: line search on |F|^2, Broyden's updates between
  * rebuilds of the factored Jacobian. It knows nothing of what x means: the problem places x, evaluates
  * F and its Jacobian, and says how far a step may go. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Posts: a post tilts about its base by a rotation vector alpha = theta * u (u the horizontal
  * direction its top moves). A cable at height z sits at base + z a(alpha), with the post axis
  *   a = (u sin theta, cos theta)  (post_axis.c).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The axis of a tilted post: a post tilts about its pivot by a rotation vector alpha = theta * u (u the
  * horizontal direction its top moves), so a point at height z (when upright) sits at
  *   pivot + (z + pivot depth + w) a(alpha),   a = (u sin theta, cos theta),

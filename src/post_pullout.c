@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A post sliding out of its footing. Once the ropes' and rails' pull along a post's axis reaches its
  * pullout capacity Q0 (design data, or the shaft friction q pi B D^2 / 2 that grows linearly with depth:
  * footing.c), the post slides out along its axis by w, an unknown of the barrier's solve (rows.h) that

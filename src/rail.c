@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Rails: horizontal members tying neighbouring posts at one height (the APS barriers' open trapezoidal
  * rails), where a post's failure or the truck's fold of the end posts along the barrier pulls on its
  * neighbours.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The fallback of the barrier solve: where Newton (system.c) stalls far from equilibrium, Gauss-Seidel
  * over the elements' local problems, each solved with its neighbours held: a post's tilt (its cables
  * sliding through it), a support's material coordinate, a contact's height on the face, and the crush

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Response parameters, updated every step: the 50-ms moving-average deceleration, penetration of the
  * front face past the attack face (y = 0), barrier deflection and working width, failed posts on each
  * side, each cable's peak tension and work on the vehicle, and the end of the run (stopped, broke through,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Rope: the rope law (Eqs. 1-2, Fig. 3) and the tension of a span, where a rope's tension is computed.
  *
  * A cable is a chain of straight spans between its supports (cable.c). Node i carries a material

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The row kit (rows.h): chaining a row's gradient on cable nodes to the unknowns' columns, and the
  * gradients and the rounded Coulomb clamp that several kinds of rows share. */
 #include "rows.h"

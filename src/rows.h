@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The barrier's unknowns and the interface through which each element gives its rows of the residual
  * and of the Jacobian (system.c assembles them; post.c, support.c, contact.c and anchor.c give them).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The state: allocated once per model with its workspace (the step never allocates), copied, and read through
  * views. */
 #include "internal.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The start of a run (the vehicle placed, the barrier as installed), one time step as named stages, and
  * the run loop. */
 #include "internal.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A support of a cable: a post it is threaded through or a corner of the vehicle's face it wraps.
  * Across a support that turns the rope by theta with friction mu the tensions on its two sides may differ
  * at most by the capstan ratio exp(mu theta) (Eq. 3); within that the rope sticks, beyond it the rope

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The barrier's quasi-static equilibrium as one nonlinear system (system.h), solved by Newton (newton.c).
  *
  * Unknowns: the tilt (2) of every standing post on a cable path (and its pull, if it slides out of its

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The barrier's equilibrium as one nonlinear system F(x) = 0 at a vehicle pose (system.c): its unknowns
  * gathered from the state in order along the barrier, each element's rows (rows.h), and Newton's method
  * on them (newton.c). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A rope's end fittings at the anchors: the load at which each lets go, and the slip of a fitting that
  * grips by friction (clips, clamps) before it does.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Small 3D vector and quaternion helpers, all inline. Quaternions are (w, x, y, z), unit length,
  * rotating body-frame vectors into the world frame. */
 #ifndef CS_VEC3_H

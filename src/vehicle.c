@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The vehicle: a rigid body in 6 degrees of freedom on four tyres, with a crushable front face.
  *
  * Forces: gravity; each tyre a vertical spring-damper at its contact point (stiffness from the static

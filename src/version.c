@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "cablesim/cablesim.h"
 
 const char *cs_version(void) {

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The workspace of a state: what the step needs besides the physical state (the barrier system's
  * unknowns, factors and predictor history, the rails' points as last placed, and whole-state copies to
  * go back to), allocated with the state and left out of its hash. It is not without effect: the predictor's

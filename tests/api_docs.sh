@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The API reference (make docs): Doxygen over include/cablesim/ without a single warning, so every
 # declaration of the public headers is documented, and the pages name the whole path a program takes.
 # $1 is the build tree's Doxyfile. Skipped (77) without doxygen.

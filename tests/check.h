@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Test helpers on top of cmocka: floating-point comparisons with a stated tolerance. */
 #ifndef CS_TEST_CHECK_H
 #define CS_TEST_CHECK_H

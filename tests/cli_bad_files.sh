@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Every model in tests/bad/ is refused by `cablesim check` with exit status 2, and the problems it reports
 # are exactly those its "# expect: LINE:COL: text" lines name, at those places.
 # Files of tests/good may be named (--allow-path tests/good); no other folder beyond tests/bad.

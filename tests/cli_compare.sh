@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # cablesim compare: two runs and a measured history made from the first (time in ms, speed in mph,
 # penetration in ft): the measured history's 50-ms deceleration, found from its speed by the engine's
 # rule, equals the run's to 0.1% and every difference of that run from it is under 0.1% (the penetration

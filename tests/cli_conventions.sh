@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The command line's conventions, for every subcommand: --help on stdout with exit 0; an unknown option
 # named, with exit 2; an option without its value named; a file that cannot be opened given with the
 # system's reason; an output folder that cannot be written refused before anything runs (a folder under a
-# regular file: ENOTDIR even for root), leaving nothing behind.
+# regular file: ENOTDIR even for root), leaving nothing behind. And every source file git tracks (C,
+# headers, shell, CMake, JavaScript, Python) names its licence, the LICENSE's MIT, by its SPDX identifier.
 source "$(dirname "$0")/lib.sh"
 
 top=$("$cs" --help)
@@ -81,4 +83,12 @@ out=$(trap "" XFSZ; ulimit -f 1; "$cs" run examples/aps3.yaml -o "$tmp/made/a/b"
 check "a run that cannot write: exit 1, why, its new folders gone" '[ $? -eq 1 ] && grep -qxF "cablesim: nothing written: $tmp/made/a/b/timeseries.csv: File too large" <<<"$out" && [ -z "$(ls -A "$tmp/made")" ]'
 out=$("$cs" run examples/aps3.yaml -o "$tmp/made/a/b" --t-end "5 ms" 2>&1)
 check "a run into new folders keeps them" '[ $? -eq 0 ] && [ -s "$tmp/made/a/b/summary.json" ]'
+# every source file git tracks names its licence, the LICENSE's, by its SPDX identifier in its first lines
+if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+    unmarked=$(git ls-files -- '*.c' '*.h' '*.sh' '*.bash' '*.js' '*.mjs' '*.py' '*.cmake' '*.cmake.in' '*.pc.in' \
+        CMakeLists.txt '*/CMakeLists.txt' ':!:tests/good' ':!:tests/bad' ':!:tests/fuzz-regressions' ':!:.ci' |
+        while IFS= read -r f; do head -3 "$f" | grep -q "SPDX-License-Identifier: MIT" || echo "$f"; done)
+    check "the LICENSE is MIT's" 'head -1 LICENSE | grep -qx "MIT License"'
+    check "every tracked source file has SPDX-License-Identifier: MIT" '[ -z "$unmarked" ] || { echo "$unmarked" | head; false; }'
+fi
 finish

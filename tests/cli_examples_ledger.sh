@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Every crash-tested example balances its energy ledger within 1% of the initial kinetic energy over the
 # whole run (the largest imbalance at any step, summary.json's energy_balance_error).
 source "$(dirname "$0")/lib.sh"

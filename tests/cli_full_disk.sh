@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # A full disk (docs/robustness.md): an output that cannot be written says which file and the system's
 # reason ("No space left on device"), and leaves no half-written result: the folder keeps the run before,
 # whole, and no temporary. CABLESIM_TEST_DEV_FULL=NAME writes the output NAME to /dev/full, where every

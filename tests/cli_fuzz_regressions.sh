@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Every input on which the loader's fuzzer once found a bug (tests/fuzz-regressions/) is now handled:
 # `cablesim check` exits 0 (a valid model) or 2 (a bad one), never crashes, and no sanitizer reports (in the
 # sanitizer build). A file's "#set PATH=VALUE" lines are passed as --set, as fuzz/fuzz_loader.c queues them.

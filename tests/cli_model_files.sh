@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # Model files are untrusted input (docs/robustness.md, "A user's files and machine"): a file: and a
 # study's model: are found from the file naming them and read only inside the folder of the file named
 # on the command line (and below), the parts library's, or a folder --allow-path allows; only regular

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # One run, one truth: APS3 as designed (the truck stopped) and with its ropes' end fittings at a quarter
 # of their strength (it breaks through), each read back from its terminal output, summary.json,
 # report.html (its text made by the page's own code: tests/one_truth.mjs), events.csv and timeseries.csv:

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # An output folder never loses a file cablesim did not write (src/io/out/outfile.c): a folder holding
 # such files is refused, naming one, and --force writes beside them without removing or replacing any;
 # a rerun removes only what the earlier run's manifest lists (never a path outside the folder); a

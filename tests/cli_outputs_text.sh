@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Outputs that cannot run code (src/io/out/htmltext.c): a CSV text cell that a spreadsheet would take
 # for a formula (=, +, -, @, a tab or a carriage return first; not a number) gets a leading ', and reads
 # back as it was (sweep --resume); a sweep's summary.md escapes HTML; the terminal shows control

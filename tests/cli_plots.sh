@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# `cablesim run FILE --plots`: every figure as PNG and SVG under DIR/plots, committed with the other outputs;
-# without --plots no plots directory appears.
+# SPDX-License-Identifier: MIT
+# `cablesim run FILE --plots`: every figure as PNG and SVG (its texts <text> elements) under DIR/plots,
+# committed with the other outputs; without --plots no plots directory appears.
 source "$(dirname "$0")/lib.sh"
 
 check "--help names --plots" '"$cs" --help | grep -q -- "--plots"'
@@ -19,6 +20,7 @@ done
 for name in deceleration speed penetration cables posts energy snapshots angles path; do
     check "$name.png is a PNG" '[ "$(head -c 8 "$out/plots/$name.png" | od -An -tx1 | tr -d " \n")" = 89504e470d0a1a0a ]'
     check "$name.svg is an SVG" 'head -c 200 "$out/plots/$name.svg" | grep -q "<svg" && tail -c 20 "$out/plots/$name.svg" | grep -q "</svg>"'
+    check "$name.svg's texts are text, not glyphs" 'grep -q "</text>" "$out/plots/$name.svg" && ! grep -q "glyph" "$out/plots/$name.svg"'
 done
 check "no temporaries left" '[ -z "$(find "$out" -name "*.tmp")" ]'
 

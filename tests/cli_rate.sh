@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # cablesim rate: the standard's test condition against a model's barrier, with the model's own vehicle
 # (every class ASTM F2656 tests: a PU model, --set vehicle=C); a vehicle the standard does not test, or a
 # --class of another vehicle, refused with exit 2; `run` and `rate` in the same words (the

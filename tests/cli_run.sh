@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The command end to end: help, version, list, check, a short run of examples/aps3.yaml and its outputs,
 # --set on the command line, that a refused model writes nothing, and that a run repeats byte for byte.
 source "$(dirname "$0")/lib.sh"

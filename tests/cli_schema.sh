@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # docs/file-format.md is exactly what `cablesim schema` prints from the schema tables.
 set -u
 cs=${1:?usage: bash tests/cli_schema.sh path/to/cablesim}

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # cablesim sweep end to end: the same runs.csv (byte for byte), summaries and plots on 1 and 2 threads, a
 # grid, a Monte Carlo, a Latin hypercube, the outputs' shape, runs.nc (--netcdf or `netcdf: true`: the same
 # bytes on 1 and 2 threads, runs.csv's runs and numbers read back by ncdump, nothing but the runs' journal
@@ -54,9 +55,16 @@ check "plot: format svg gives an SVG" 'head -c 200 "$svg" | grep -q "<svg" && ta
 check "plot: the same plots on 1 and 2 threads" 'cmp "$png" "$tmp/plot-2/plots/max_barrier_deflection-vs-spacing.png" && cmp "$svg" "$tmp/plot-2/plots/exit_speed-vs-spacing.svg"'
 check "plot: the plots asked for, and the study's own" '[ "$(ls "$tmp/plot-1/plots" | grep -v "^study-" | tr "\n" " ")" = "exit_speed-vs-spacing.svg max_barrier_deflection-vs-spacing.png " ] && [ "$(ls "$tmp/grid-1/plots" | grep -vc "^study-")" -eq 0 ]'
 # the study's own figures and page: the outcomes, and a histogram, a tornado chart and a scatter of each of
-# six responses; report.html holds them all and its outcome table agrees with runs.csv
-check "study: 19 PNG figures" '[ "$(ls "$tmp/lhs-1/plots" | grep -c "^study-.*\.png$")" -eq 19 ]'
-check "study: report.html has the 19 figures inline" '[ "$(grep -o "<svg" "$tmp/lhs-1/report.html" | wc -l)" -eq 19 ]'
+# the five responses its runs have a value of (none stops within its 10 ms, none leaves the barrier: no
+# max dynamic penetration, no exit speed, and no empty figure of them); report.html holds them all, says
+# which it leaves out, and its outcome table agrees with runs.csv
+check "study: 16 PNG figures" '[ "$(ls "$tmp/lhs-1/plots" | grep -c "^study-.*\.png$")" -eq 16 ] && [ ! -e "$tmp/lhs-1/plots/study-histogram-exit-speed.png" ]'
+check "study: report.html has the 16 figures inline" '[ "$(grep -o "<svg" "$tmp/lhs-1/report.html" | wc -l)" -eq 16 ]'
+check "study: the penetration beyond is one of its responses" '[ -s "$tmp/lhs-1/plots/study-histogram-penetration-beyond.png" ] && grep -q "<tr><td>penetration beyond (m)</td><td>4</td>" "$tmp/lhs-1/report.html"'
+# a tornado chart's y axis names its inputs, an input a bar, and has no numbered ticks
+tornado=$(awk -v RS='</svg>' '/Spearman rank correlation of each input/ {print; exit}' "$tmp/lhs-1/report.html")
+check "study: a tornado chart's y axis names the inputs, no numbers" 'grep -q ">scenario.speed</text>" <<<"$tornado" && ! grep -qE ">-?[0-9]+</text>" <<<"$tornado"'
+check "study: report.html says which responses have no figures" 'grep -qF "No run has a value of max dynamic penetration, exit speed (runs that left the barrier): their figures are left out." "$tmp/lhs-1/report.html"'
 stopped=$(awk -F, 'NR > 1 && $5 == "stopped"' "$runs" | wc -l)
 check "study: report.html counts the stopped runs as runs.csv does" 'grep -q "<tr><td>stopped</td><td>$stopped</td>" "$tmp/lhs-1/report.html"'
 check "study: the same figures on 1 and 2 threads" 'cmp "$tmp/lhs-1/plots/study-outcomes.png" "$tmp/lhs-2/plots/study-outcomes.png" && cmp "$tmp/lhs-1/report.html" "$tmp/lhs-2/report.html"'
@@ -89,7 +97,7 @@ check "through: summary.json's rope tension in kN, runs.csv's in N" '! grep -q m
 check "through: summary.json's exit speeds over both runs" 'awk -v j="$(jstat "$sj" exit_speed_mps | grep -o "\"max\":[0-9.e+-]*" | cut -d: -f2)" -v c="$(colmax "$tmp/through/runs.csv" "exit_speed [m/s]")" "BEGIN { exit !(j > 1 && (j - c) ^ 2 < 1e-16) }" && jstat "$sj" exit_speed_mps | grep -q "\"runs\":2,"'
 check "through: summary.md says so, with the counts and units" 'grep -q "^| max dynamic penetration (m) | 0 | n/a |" "$tmp/through/summary.md" && grep -q "^| penetration beyond (m) | 2 | [0-9]" "$tmp/through/summary.md" && grep -q "^| max cable tension (kN) | 2 | [0-9.]* |" "$tmp/through/summary.md" && grep -q "^| exit speed (m/s) | 2 | [0-9]" "$tmp/through/summary.md" && grep -q "max dynamic penetration (m) only over the runs the barrier held" "$tmp/through/summary.md"'
 check "through: a force given in N is shown in kN" 'grep -q "<tr><td>barrier.cables\[0\].pretension</td><td>levels: 22241.1</td><td>kN</td><td>22.2411</td>" "$tmp/through/report.html"'
-check "plot: summary.md names each plot, what it shows and what it leaves out" 'grep -qxF -- "- \`plots/max_barrier_deflection-vs-spacing.png\`: max_barrier_deflection against barrier.posts[0].spacing, a line per vehicle: 6 of 6 runs shown, 0 broke through (marked with a cross); left out: 0 that did not run to the end." "$tmp/plot-1/summary.md" && grep -qxF -- "- \`plots/exit_speed-vs-spacing.svg\`: exit_speed against barrier.posts[0].spacing, a line per vehicle: 0 of 6 runs shown, 0 broke through (marked with a cross); left out: 0 that did not run to the end, 6 with no exit_speed." "$tmp/plot-1/summary.md"'
+check "plot: summary.md names each plot, what it shows and what it leaves out" 'grep -qxF -- "- \`plots/max_barrier_deflection-vs-spacing.png\`: max_barrier_deflection against barrier.posts[0].spacing, a line per vehicle: 6 of 6 runs shown, 0 broke through (marked with a cross); none left out." "$tmp/plot-1/summary.md" && grep -qxF -- "- \`plots/exit_speed-vs-spacing.svg\`: exit_speed against barrier.posts[0].spacing, a line per vehicle: 0 of 6 runs shown, 0 broke through (marked with a cross); left out: 6 runs with no exit_speed." "$tmp/plot-1/summary.md"'
 check "plot: the outputs line names the plots" 'grep -qxF "outputs: $tmp/plot-1/{runs.csv,summary.md,summary.json,report.html,plots/study-*.png,plots/max_barrier_deflection-vs-spacing.png,plots/exit_speed-vs-spacing.svg}" "$tmp/plot-1.out"'
 check "plot: the runs are the grid's, spacing slowest" '[ "$(cut -d, -f2,3 "$tmp/plot-1/runs.csv" | tail -n +2 | tr "\n" " ")" = "4,2270P 4,1100C 2,2270P 2,1100C 6,2270P 6,1100C " ]'
 sed "s|^model: .*|model: $PWD/examples/aps3.yaml|" tests/sweep/mc.yaml >"$tmp/mc-plot.yaml"

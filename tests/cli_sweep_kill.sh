@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # A sweep survives kill -9 (docs/robustness.md): each run's row is appended to DIR/.cablesim-journal and
 # fsync'ed as it finishes, so a sweep killed with SIGKILL (no handler runs) loses at most the runs under
 # way, and `sweep --resume DIR` runs the rest and writes the same runs.csv, byte for byte, as a sweep never

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # A sweep stopped by a signal writes the runs it finished, marked partial, and `sweep --resume DIR` completes
 # it: runs.csv then equals, byte for byte, that of the same sweep never stopped. Stopped twice ways: by
 # CABLESIM_SWEEP_STOP_AFTER (it raises SIGINT once that many runs are done: a fixed point to stop at) and

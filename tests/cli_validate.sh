@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # cablesim validate: the fast parts of the suite (verification, bogie tests) write a report whose
 # numbers are the engine's, and the files appear whole (no temporaries left); the values it compares
 # with come from data/validation/.

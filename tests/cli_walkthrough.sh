@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# The README's and docs/tutorial.md's commands run as written: every line of their ```sh blocks, in order
-# (README.md first), but the set-up ones (make, cmake --install, cc, LD_LIBRARY_PATH=...), is run in a
-# fresh folder holding examples/ and build/cablesim, as a reader would run them in the checkout. Each must
+# SPDX-License-Identifier: MIT
+# The README's, docs/guide.md's and docs/tutorial.md's commands run as written: every line of their ```sh
+# blocks, in order (README.md first, then the guide), but the set-up ones (make, cmake --install, cc,
+# LD_LIBRARY_PATH=...), is run in a fresh folder holding examples/ and build/cablesim, as a reader would
+# run them in the checkout. Each must
 # exit 0 (validate: 0, or 3 when its targets are missed, its documented status for results outside
 # them), each -o DIR must then hold files, and the demo's run (the README's first command, as make demo
 # runs it) must still hold its plots, report and its own command line at the end: no later command wrote
@@ -15,7 +17,7 @@ ln -s "$repo/examples" "$w/examples"
 ln -s "$(cd "$(dirname "$cs")" && pwd)/$(basename "$cs")" "$w/build/cablesim"
 # the shell blocks' lines, a trailing backslash joining a line to the next
 commands() {
-    awk '/^```sh$/ { on = 1; next } /^```/ { on = 0 } on' README.md docs/tutorial.md |
+    awk '/^```sh$/ { on = 1; next } /^```/ { on = 0 } on' README.md docs/guide.md docs/tutorial.md |
         awk '{ if (sub(/\\$/, "")) { held = held $0; next } print held $0; held = "" }' |
         grep -vE '^(make|cmake|cc|sudo|apt)( |$)|^LD_LIBRARY_PATH='
 }

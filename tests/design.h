@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Random but valid designs and attacks for the stress test and the engine's fuzzer: rope sizes, post
  * spacing, cables, dead-men, rails, vehicle sizes, speeds 5-60 mph, angles 15-90 degrees, impact anywhere
  * along the barrier including at an anchor and past its end. Each value is drawn from a source: a

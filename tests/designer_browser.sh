@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # designer.html in headless chromium against the command's own runs (report/test/designer.mjs). Skipped
 # (exit 77) in a build without the designer page: emscripten, node or npm missing (scripts/install-deps.sh
 # installs them).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Load examples/<name>.yaml (with --set style assignments, NULL-terminated, or NULL) and build its model;
  * fails the test if it does not load. The loader is returned for freeing with the model. */
 #ifndef CS_TEST_EXAMPLE_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Test fixtures: an APS3-like barrier and the 15,000-lb truck, built in C from the design data of
  * data/aps-crash-tests.md and the assumptions of docs/assumptions.md (the same numbers as
  * examples/aps3.yaml and data/vehicles.yaml, so the engine tests need no loader). */

@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The installed tree on its own: `cmake --install` of the build into a temporary prefix, then, from a
 # folder outside the source tree with CABLESIM_DATA unset, the library example (examples/api/) built with
 # pkg-config and with CMake's find_package(cablesim), run against the installed libcablesim.so, prints
 # what the installed `cablesim run` gives for the same model and --set, and writes the same summary.json;
 # the installed command finds its parts library under the prefix, also once the prefix has moved; the
-# library exports only what its headers declare, and each header compiles on its own.
+# library exports only what its headers declare, and each header compiles on its own; cablesim(1) and a
+# manual page per command, cablesim-COMMAND(1), are installed.
 # $1 the build tree, $2 its CMAKE_INSTALL_LIBDIR, $3 the C compiler, $4 flags to compile and link with
 # (the sanitizers' in a sanitized build).
 set -u
@@ -112,10 +114,17 @@ check "a command with no share/cablesim beside it says how to point at the libra
     '[ $? -eq 2 ] && grep -q "cannot find the parts library: CABLESIM_DATA is not set and .* does not exist (set CABLESIM_DATA" "$tmp/none.err"'
 check "CABLESIM_DATA points it at one" 'CABLESIM_DATA="$tmp/moved/share/cablesim" "$tmp/copy/bin/cablesim" list | grep -q "^  M "'
 
-# The manual page and the bash completion.
+# The manual pages and the bash completion.
 man1=$tmp/moved/share/man/man1/cablesim.1
 check "the manual page is cablesim(1) $version, naming CABLESIM_DATA" \
     'grep -q "^\.TH CABLESIM \"1\".*cablesim $version" "$man1" && grep -q "^\.SH ENVIRONMENT" "$man1" && grep -q "CABLESIM_DATA" "$man1" && grep -q "^\.SH SYNOPSIS" "$man1"'
+# a page per command, from its --help: its synopsis, its exit status, and cablesim(1) under SEE ALSO
+for cmd in run check sweep rate validate compare designer list schema; do
+    page=$tmp/moved/share/man/man1/cablesim-$cmd.1
+    check "the manual page cablesim-$cmd(1)" \
+        'grep -q "^\.TH CABLESIM-${cmd^^} \"1\"" "$page" && sed -n "/^\.SH SYNOPSIS/,/^\.SH DESCRIPTION/p" "$page" | grep -qw "$cmd" && grep -q "Exit status: 0 " "$page" && sed -n "/^\.SH \"SEE ALSO\"/,\$p" "$page" | grep -qx "\.BR cablesim (1),"'
+done
+check "cablesim(1) names each command's page" '[ "$(grep -c "^\.BR cablesim\\\\-[a-z]* (1)" "$man1")" -eq 9 ]'
 completion() { bash -c 'source "$1"; shift; COMP_WORDS=("$@"); COMP_CWORD=$(($# - 1)); _cablesim; echo "${COMPREPLY[*]}"' _ \
     "$tmp/moved/share/bash-completion/completions/cablesim" "$@"; }
 check "completion: the commands" '[ "$(completion cablesim r)" = "run rate" ]'

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Engine-internal test helper: lay cable 0 of a state as anchor - post 0 - anchor through three
  * points, with the two spans at given strains (no plastic set). */
 #ifndef CS_TEST_LAY_H

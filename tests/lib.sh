@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # Shared by the command's shell tests (tests/cli_*.sh), sourced after their own comment: $1 is the
 # cablesim binary; `check NAME EXPR` counts a pass or prints FAIL; `finish` prints the closing
 # "N passed, N failed" line and returns the status. $tmp is a scratch directory removed at exit.

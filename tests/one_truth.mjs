@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // One run's numbers in every output agree (tests/cli_one_truth.sh runs it): node tests/one_truth.mjs DIR
 // TERMINAL where DIR is a `cablesim run --report` folder and TERMINAL the file of what that run printed.
 // report.html's text is made as the page makes it, by report/src/summary.js on the page's own data, with a

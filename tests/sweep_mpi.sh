@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # cablesim-mpi sweep: the same runs.csv, runs.nc and summaries, byte for byte (the summaries but for the
 # line that records the command line), on 1, 2 and 3 MPI ranks (3 splits 4 runs unevenly) and with 2
 # threads on each of 2 ranks; a sweep stopped on 2 ranks and resumed on 2 gives the runs.csv of 1 rank. Exit 77 (skipped) only when MPI or mpirun

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Anchors as footings in the soil (src/anchor.c): what they hold, how they slide, when they pull out. */
 #include "check.h"
 #include "fixture.h"

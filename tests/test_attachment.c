@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Slots and hooks let a cable go at their documented limit (attachment.c). A cable pulled sideways by
  * F (horizontal, across the barrier) on a post leaning theta away from the pull bears on it with
  * F cos(theta) across the post and pulls it F sin(theta) along, toward the top; it leaves when

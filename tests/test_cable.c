@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Cable: the rope law's points, the capstan ratio across a frictional support, frictionless tension
  * redistribution by sliding, breaking at the breaking strain and at an end fitting. */
 #include "check.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The vehicle's face against the cables (src/contact.c) and its crush (src/vehicle.c), and the events a
  * run records (src/events.c). */
 #include "check.h"

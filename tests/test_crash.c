@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A full APS3-like crash (tests/fixture.h): the energy ledger balances, every response parameter is
  * finite, two runs hash to the same final state (determinism), and the run is converged in time. And
  * a 300-post barrier whose solves converge; a run past its solve budget ends did_not_converge, one past

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Footings: Eq. 21 against the P column of the paper's Table 4 (S1 = 8000 psf, H = 3 ft), the cap, the
  * dynamic factor scaled by the passive wedge's width effect, and the uplift capacity. */
 #include "check.h"

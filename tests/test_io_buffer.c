@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The loader's in-memory entry point: every example, good and bad model file loads from a buffer exactly as
  * from its path (same problems, same values), --set applies to a buffer and a reset loader is as new; a
  * model file edited in place (cs_yaml_edit, the designer page's download) loads as the original with the

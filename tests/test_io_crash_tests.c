@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The crash tests' predictions, pinned. Each example (examples/aps1.yaml, aps3.yaml, aps4.yaml) is run to
  * its end and
  * - the final state's hash (cs_state_hash: positions, velocities, cable paths, strains and statuses, tilts,

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* NCHRP Report 350 and MASH criteria: which a test has, in order; each limit's edge (OIV 12.2 m/s and ORA
  * 20.49 g for MASH, 12 m/s and 20 g for NCHRP 350's L, roll 75 deg, 60% of the impact angle, the exit box's
  * 10 m); the not-judged ones never passed; the exit box's A from the vehicle's size and the wheels' path

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The loader: the examples and every library part load with the documented values; --set, file and
  * part references; YAML aliases; every problem reported with its place; two loaders in two threads. */
 #define _POSIX_C_SOURCE 200809L

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Validation metrics against closed forms: a trace against itself scaled by 1.1 (M = 0.1, P = 0, the
  * residuals 0.1 m: mean 0 over whole periods, std 0.1 sqrt(n / 2 (n - 1))); against itself shifted in
  * phase by phi (M = 0, P = phi / pi); a constant offset (mean its size over the peak, std 0); W179's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Occupant risk against closed forms: the J211/1 filter's gain at named frequencies against the
  * Butterworth magnitude of its bilinear design (and J211's nominal -3 dB at 1.667 CFC), no phase shift;
  * a constant deceleration's flail-space impact time, OIV and ORA; the impact after the record at the

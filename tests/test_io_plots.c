@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Plots: the plotting layer puts a known value on the expected pixel and keeps a label inside its frame
  * at every corner, and every figure of a synthetic run comes out as a PNG of the stated size that is not
  * blank, and as well-formed SVG and PDF; traced, every text of every figure lies inside its frame (a
@@ -108,6 +109,8 @@ static void check_svg(const char *path) {
     while (end > 0 && (b[end - 1] == '\n' || b[end - 1] == ' '))
         end--;
     if (end < 6 || memcmp(b + end - 6, "</svg>", 6) != 0) fail_msg("%s does not end with </svg>", path);
+    /* its texts are text an editor edits, not glyphs' outlines */
+    if (!strstr(b, "</text>") || strstr(b, "glyph")) fail_msg("%s: texts drawn as glyphs, not <text>", path);
     free(b);
 }
 
@@ -228,6 +231,14 @@ static void check_texts_inside(const cs_plot_log *log, const char *what) {
                      what, t->text, b->x, b->x + b->w, b->y, b->y + b->h, f->x, f->x + f->w, f->y,
                      f->y + f->h);
     }
+}
+
+/* Every legend inside a plotting area covers no cell of its data, markers or notes. */
+static void check_legends_clear(const cs_plot_log *log, const char *what) {
+    for (int i = 0; i < log->legend_count && i < CS_PLOT_LOG_LEGENDS; i++)
+        if (log->legend[i].inside && log->legend[i].covered != 0)
+            fail_msg("%s: its legend at x %.0f, y %.0f covers %d cells of data", what, log->legend[i].box.x,
+                     log->legend[i].box.y, log->legend[i].covered);
 }
 
 /* Labels at the four corners of a panel and at its middle, each offset outward. */
@@ -439,6 +450,7 @@ static void trace(synthetic *s, cs_figure k, cs_plot_log *log) {
     if (cs_figure_trace(k, &s->d, log, why, sizeof why) != 0) fail_msg("%s: %s", cs_figure_name(k), why);
 }
 
+/* Every text inside its frame, every legend clear of the data, markers and notes. */
 static void test_every_text_inside_its_frame(void **state) {
     (void)state;
     synthetic *s = synthetic_new(FRAMES);
@@ -453,6 +465,7 @@ static void test_every_text_inside_its_frame(void **state) {
             trace(s, (cs_figure)k, log);
             assert_true(log->text_count > 5);
             check_texts_inside(log, cs_figure_name((cs_figure)k));
+            check_legends_clear(log, cs_figure_name((cs_figure)k));
         }
     }
     free(log);
@@ -506,7 +519,8 @@ static cs_trace compared(const char *label, double t0, double t_end, int measure
 }
 
 /* compare's plots: every time axis runs from 0, or the earliest start of the traces a plot shows, to the
- * latest end among them, not to the next round tick; every text inside its frame. */
+ * latest end among them, not to the next round tick; every text inside its frame, the legend clear of the
+ * data. */
 static void test_compare_time_axes_end_at_the_last_end(void **state) {
     (void)state;
     cs_trace tr[3] = {compared("a", 0, 0.286, 0), compared("b", 0, 0.412, 0),
@@ -530,6 +544,8 @@ static void test_compare_time_axes_end_at_the_last_end(void **state) {
                 fail_msg("%s, %d traces: its time axis runs from %g to %g s, the traces from %g to %g s",
                          q->title, cases[c].count, q->x0, q->x1, t0, cases[c].t1);
             check_texts_inside(log, q->title);
+            assert_int_equal(log->legend_count, 1);
+            check_legends_clear(log, q->title);
         }
     free(log);
     for (int i = 0; i < 3; i++)

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Ratings: every penetration boundary (1, 6, 7, 15, 30 m) and speed window edge (a class's own
  * designations), the reference point each standard measures from (data/standards.md), the vehicle classes
  * and --class names, and a run's rating as run with each reason it is not rated, in the one wording. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A run's record stays within its size: when full it keeps every other frame and records every other
  * output from then on, and it always ends with the run's last state. A truck on the open road for 0.5 s,
  * an output every 0.5-ms step (outputs 0 to 1000), into a record of at most 100 frames: full at outputs

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* report.html's writer (src/io/out/report_html.c) on a short real run: the markers of a page are filled,
  * the title is HTML-escaped and the data (a command line with "</script>" in it included) cannot close its
  * <script>, the data has every part the page reads (provenance and designations as run too; a run cut at its

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The roadside crash tests (examples/roadside/rs1-rs6.yaml), predicted blind, and the trends of deflection
  * with the design on one of them.
  * - Each runs to its end with no sudden loss (src/response.c) and its energy ledger within 1% of the

@@ -1,5 +1,7 @@
+/* SPDX-License-Identifier: MIT */
 /* Results read back for comparison (load/runread.h): the 50-ms average of a deceleration history against
- * its closed forms (a constant, a ramp, on an uneven time grid), and a measured file's units, read in SI. */
+ * its closed forms (a constant, a ramp, on an uneven time grid), a measured file's units, read in SI, and a
+ * run's 50-ms average undefined before its first window. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <setjmp.h>
@@ -7,6 +9,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <unistd.h>
 
 #include <cmocka.h>
 
@@ -85,9 +88,47 @@ static void measured_row_of_another_width(void **state) {
     remove(path);
 }
 
+/* A run's folder: its timeseries.csv's decel_50ms column is 0 for the first 50 ms, where the average is
+ * undefined; read so it is NaN there and the column's own value from t = 50 ms. */
+static void run_average_undefined_before_a_window(void **state) {
+    (void)state;
+    char dir[] = "/tmp/cablesim-runread-XXXXXX", path[64];
+    assert_non_null(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/summary.json", dir);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("{\"outcome\": \"stopped\"}\n", f);
+    fclose(f);
+    snprintf(path, sizeof path, "%s/timeseries.csv", dir);
+    assert_non_null(f = fopen(path, "w"));
+    fputs(
+        "t [s],vx [m/s],vy [m/s],ax [m/s^2],ay [m/s^2],forward_speed [m/s],decel_50ms [g],penetration [m]\n",
+        f);
+    for (int i = 0; i <= 100;
+         i++) /* 2 g from the start, the column 0 until t = 50 ms as the engine writes it */
+        fprintf(f, "%.3f,%.6f,0,%.6f,0,%.6f,%d,0\n", 0.001 * i, 20 - 19.6133 * 0.001 * i, -19.6133,
+                20 - 19.6133 * 0.001 * i, i < 50 ? 0 : 2);
+    fclose(f);
+    char why[512];
+    cs_trace tr;
+    if (cs_trace_read_run(dir, &tr, why, sizeof why) != 0) fail_msg("%s", why);
+    assert_int_equal(tr.n, 101);
+    for (size_t i = 0; i < tr.n; i++)
+        if (i < 50 ? !isnan(tr.y[CS_TRACE_DECEL_50MS][i])
+                   : fabs(tr.y[CS_TRACE_DECEL_50MS][i] - 2 * 9.80665) > 1e-9)
+            fail_msg("t = %g s: the 50-ms average %g m/s^2, want %s", tr.t[i], tr.y[CS_TRACE_DECEL_50MS][i],
+                     i < 50 ? "none" : "19.6133");
+    cs_trace_free(&tr);
+    remove(path);
+    snprintf(path, sizeof path, "%s/summary.json", dir);
+    remove(path);
+    rmdir(dir);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(average_50ms_closed_forms),
                                        cmocka_unit_test(measured_units_and_average),
-                                       cmocka_unit_test(measured_row_of_another_width)};
+                                       cmocka_unit_test(measured_row_of_another_width),
+                                       cmocka_unit_test(run_average_undefined_before_a_window)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

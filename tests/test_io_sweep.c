@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sweeps: Wilson intervals and Spearman's rho against values worked by hand, the normal quantile, the
  * Latin hypercube's strata, the counter-based inputs (the same whatever else runs), the spec reader
  * (values in SI, grid order) and its errors at line:column. */

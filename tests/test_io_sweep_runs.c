@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A sweep's table of runs from fabricated results (a run that stopped, one that broke through, one that
  * failed, over a numeric and a text input): runs.csv to the byte, runs.nc read back through the netCDF C
  * API (every value exact, units, fill values where a run has none, the same bytes twice), and the plots
@@ -391,19 +392,19 @@ static void test_plots(void **state) {
     cs_sweep_plot_caption(s, 0, f->r, RUNS, caption, sizeof caption);
     assert_string_equal(caption,
                         "max_barrier_deflection against barrier.cables[0].pretension, a line per vehicle: "
-                        "2 of 3 runs shown, 1 broke through (marked with a cross); left out: 1 that did "
-                        "not run to the end");
+                        "2 of 3 runs shown, 1 broke through (marked with a cross); left out: 1 run that "
+                        "did not run to the end");
     cs_sweep_plot_caption(s, 1, f->r, RUNS, caption, sizeof caption);
     assert_string_equal(caption,
                         "exit_speed against barrier.cables[0].pretension, a line per vehicle: 1 of 3 runs "
-                        "shown, 1 broke through (marked with a cross); left out: 1 that did not run to "
-                        "the end, 1 with no exit_speed");
+                        "shown, 1 broke through (marked with a cross); left out: 1 run that did not run "
+                        "to the end, 1 run with no exit_speed");
     char *text = summary_text(f, cs_sweep_write_summary_md);
     assert_non_null(strstr(text,
                            "\n## Plots\n\n- `plots/max_barrier_deflection-vs-pretension.png`: "
                            "max_barrier_deflection against barrier.cables[0].pretension, a line per "
                            "vehicle: 2 of 3 runs shown, 1 broke through (marked with a cross); left out: 1 "
-                           "that did not run to the end.\n- `plots/exit_speed-vs-pretension.svg`: "));
+                           "run that did not run to the end.\n- `plots/exit_speed-vs-pretension.svg`: "));
     free(text);
 
     char dir[] = "/tmp/cs-plots-XXXXXX", png[64], svg[64];

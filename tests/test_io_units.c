@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Units: exact conversion factors, the field's aliases, wrong dimensions, and two unit systems used
  * from two threads at once. */
 #define _POSIX_C_SOURCE 200809L

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Posts: cantilever deflection in the elastic range (Eqs. 10-11), the onset of the plastic hinge at
  * Mp = Zx Fy, and shear failure at 0.6 Aw Fy. One cable pulls post 0 toward +y over anchors set 1 m
  * behind the barrier line; for these statics the post is massless. The swing of a post with mass is

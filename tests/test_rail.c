@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Rails (src/rail.c): each span an axial member between neighbouring posts, elastic, yielding at A Fy in
  * tension and buckling at the Euler load in compression, its pull entering the posts' moment balance. */
 #include "check.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The barrier solve (src/system.c). Its Jacobian, formed from the spans' tension gradients and the
  * posts' axes, must be the derivative of the solve's residual: checked against central difference
  * quotients of that residual at states along an APS3-like crash (tests/fixture.h), before and after

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Stress: random but valid designs and attacks, from a fixed seed, over realistic and extreme ranges
  * (rope sizes, post spacing, cables, vehicle sizes, speeds 5-60 mph, angles 15-90 degrees, impact
  * anywhere along the barrier including at an anchor and past its end). Every run must end without an

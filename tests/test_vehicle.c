@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Vehicle: free rolling (speed kept, or lost at mu_r g), settling on the tyres after a drop (static
  * equilibrium at the design ride height), an undamped bounce against its closed form (second order in
  * dt), a centred head-on impact that makes no yaw, and the turn between two poses (the rotation

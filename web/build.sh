@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # The designer page's engine: the engine (src/*.c) and the model loader with the writers it needs
 # (src/io/), compiled by emscripten into one JavaScript module with its WebAssembly inlined
 # (OUT/cablesim-wasm.js, a factory createCablesim()). libyaml is Debian's, compiled for it by

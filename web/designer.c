@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The designer page's engine (WebAssembly, built by web/build.sh with emscripten): the model loader and
  * the engine of the command, called from the page's JavaScript (report/designer/). The page writes its
  * model file under /model and the parts library under /data in emscripten's in-memory file system, then

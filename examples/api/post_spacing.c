@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The library's whole path in one short program: load a model file, change its line posts' spacing by an
  * override (as `cablesim run --set` does), run it, print the outcome, and write the run's files.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /** @file
  * cablesim: progressive-failure simulation of cable barriers struck by a vehicle. The umbrella header:
  * the engine's definitions (def.h) and its model, state, step and run (sim.h), model files (loader.h),

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /** @file
  * Definition structs: plain data a caller fills (or a loader fills) and hands to cs_model_create().
  * Every quantity is SI (m, kg, s, N, Pa, J, rad). Each struct has a cs_default_*() that returns the

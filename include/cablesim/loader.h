@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /** @file
  * Model files: read a model (YAML, units on every value), resolve its named parts and file references,
  * apply `--set` overrides, check it, and fill the engine's definition structs (def.h). Every problem is

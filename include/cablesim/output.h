@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /** @file
  * A run's time histories and its output files. A record collects the state at every output of cs_run
  * (pass cs_record_frame and the record to it); the writers turn a record, a state and a loaded model into

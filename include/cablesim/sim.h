@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /** @file
  * The model (immutable, built once from definitions), the state (everything that changes), the step
  * and the run, and read-only views of the state for writers and tests. The library never allocates

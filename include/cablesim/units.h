@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /** @file
  * The US customary units the engineers who use cablesim work in, each as its exact value in SI (NIST SP
  * 811, Appendix B): multiply a value in the unit by it for SI, divide an SI value by it for the unit. The

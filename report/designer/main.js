@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // designer.html: the model's files and the engine (WebAssembly: web/designer.c) in one page. The form's
 // values go to the engine as `--set PATH=VALUE` overrides of the model file, exactly as
 // `cablesim run --set` takes them; each change runs the crash again and redraws the outcome, the response

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The tension colour map of the PNG figures (cs_plot_colormap in src/io/out/plot.c): blue, cyan, green,
 // orange, red for 0 to 1.
 const STOPS = [

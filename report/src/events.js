@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The failure timeline in words: events.csv, one row per moment and kind of event (elements that
 // fail together, like the two mirror posts of a centred impact, share a row).
 import { pair, fmt } from './units.js';

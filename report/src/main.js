@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // report.html: reads the run's JSON from the page and builds the summary, the 3D replay, the failure
 // timeline and the plots. window.csReport exposes the page's state (the browser test reads it).
 import uplotCss from 'uplot/dist/uPlot.min.css';
@@ -251,7 +252,7 @@ function main() {
 
   try {
     plots = buildPlots($('plots'), data, (t) => seekTime(t));
-    report.plots = plots.plots.map((p) => ({ key: p.key, title: p.title, length: p.length, points: p.points }));
+    report.plots = plots.plots.map((p) => ({ key: p.key, title: p.title, length: p.length, points: p.points, get labels() { return p.labels; } }));
   } catch (e) {
     fail('plots', e);
   }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Interactive time-series plots (uPlot): hover for values, drag to zoom into a time range, double-click
 // to zoom out, click to show that moment in the 3D replay. A vertical line marks the replay's time.
 import uPlot from 'uplot';
@@ -36,7 +37,8 @@ function otherAxis(label, factor, decimals) {
 
 const timeAxis = { label: 'time (s)', values: (_u, splits) => splits.map((v) => v.toFixed(3).replace(/0+$/, '').replace(/\.$/, '')) };
 
-// Markers drawn over a plot: {t, v, color, shape: 'circle'|'cross'|'diamond'|'triangle', label}.
+// Markers drawn over a plot: {t, v, color, shape: 'circle'|'cross'|'diamond'|'triangle', label}. Returns
+// where each label went across the plot, with the plotting area's edges (canvas pixels).
 function drawMarkers(u, markers) {
   const ctx = u.ctx;
   const r = 6 * devicePixelRatio;
@@ -90,19 +92,22 @@ function drawMarkers(u, markers) {
       ctx.font = `${12 * devicePixelRatio}px system-ui, sans-serif`;
       ctx.fillStyle = '#222';
       const w = ctx.measureText(m.label).width;
+      const pad = 4 * devicePixelRatio;
       const right = x + 10 * devicePixelRatio + w < u.bbox.left + u.bbox.width;
       const below = y - 22 * devicePixelRatio < u.bbox.top;
-      const lx = x + (right ? 1 : -1) * 10 * devicePixelRatio;
-      const x0 = right ? lx : lx - w;
+      // beside the marker, on the side with room, then moved in where it would still cross the frame
+      const side = right ? x + 10 * devicePixelRatio : x - 10 * devicePixelRatio - w;
+      const x0 = Math.max(u.bbox.left + pad, Math.min(side, u.bbox.left + u.bbox.width - pad - w));
       const h = 15 * devicePixelRatio;
       let ly = y + (below ? 20 : -8) * devicePixelRatio;
       for (let k = 0; k < 6 && placed.some((b) => x0 < b[0] + b[2] && b[0] < x0 + w && ly - h < b[1] && b[1] - h < ly); k++) ly += h;
       placed.push([x0, ly, w]);
-      ctx.textAlign = right ? 'left' : 'right';
-      ctx.fillText(m.label, lx, ly);
+      ctx.textAlign = 'left';
+      ctx.fillText(m.label, x0, ly);
     }
   }
   ctx.restore();
+  return placed.map(([x0, , w]) => ({ x0, x1: x0 + w, left: u.bbox.left, right: u.bbox.left + u.bbox.width }));
 }
 
 // Value at time t on a series (linear between points).
@@ -349,9 +354,10 @@ export function buildPlots(container, data, onSeek) {
       axes: spec.axes,
       bands: spec.bands,
       hooks: {
-        draw: [(u) => drawMarkers(u, spec.markers)],
+        draw: [(u) => { entry.labels = drawMarkers(u, spec.markers); }],
       },
     };
+    const entry = { key: spec.key, title: spec.title, labels: [] };
     const u = new uPlot(opts, spec.data, host);
     const now = el('div', { class: 'now-line' });
     u.over.append(now);
@@ -360,7 +366,7 @@ export function buildPlots(container, data, onSeek) {
       if (Number.isFinite(tq)) onSeek(tq);
     });
     const points = spec.series.map((_, i) => spec.data[i + 1].filter((v) => v !== null && Number.isFinite(v)).length);
-    plots.push({ key: spec.key, title: spec.title, u, now, host, points, length: spec.data[0].length });
+    plots.push(Object.assign(entry, { u, now, host, points, length: spec.data[0].length }));
   }
   // the path in plan, with MASH's exit box: a drawing, not a time history
   try {

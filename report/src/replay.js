@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The 3D replay (three.js): the barrier's posts tilting and failing, the cables as polylines coloured by
 // the tension of each span, the vehicle as a box with its front face, moving and pitching. World frame
 // of the simulator: x along the barrier, y toward the protected side, z up.

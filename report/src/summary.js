@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The run in words and in numbers (SI with US units beside), and the failure timeline as a table.
 import { pair, both, fmt, seconds } from './units.js';
 import { timeline, GROUP_COLORS } from './events.js';

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Units and number formatting: SI first, US customary beside it, as in the command's summary.
 export const G0 = 9.80665;
 export const MPH = 0.44704; // m/s

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // report.html in a real browser: Debian's headless chromium driven by playwright-core. Runs a short real
 // simulation with --report, opens the page from file:// and checks what a reader would see: no console
 // errors and no network requests, the summary and the timeline filled, the 3D replay drawn (pixels read
@@ -138,7 +139,7 @@ try {
       const img = ctx.getImageData(0, 0, canvas.width, canvas.height).data;
       let ink = 0;
       for (let i = 0; i < img.length; i += 4) if (img[i + 3] > 0 && img[i] + img[i + 1] + img[i + 2] < 600) ink++;
-      return { ...p, ink: ink / (canvas.width * canvas.height) };
+      return { key: p.key, points: p.points, length: p.length, labels: p.labels, ink: ink / (canvas.width * canvas.height) };
     }),
   );
   const expected = ['deceleration', 'speed', 'penetration', 'angles', 'cables', 'post_tilt', 'post_moment', 'energy', 'path'];
@@ -147,6 +148,7 @@ try {
     check(`plot ${p.key} has its time axis`, p.length >= 10, `${p.length}`);
     check(`plot ${p.key}: every series has data`, p.points.length > 0 && p.points.every((n) => n > 0), JSON.stringify(p.points));
     check(`plot ${p.key} is drawn`, p.ink > 0.01, `${(100 * p.ink).toFixed(2)} % ink`);
+    check(`plot ${p.key}: every marker's note inside the plotting area`, p.labels.every((l) => l.x0 >= l.left && l.x1 <= l.right), JSON.stringify(p.labels));
   }
 
   await page.evaluate(() => window.scrollTo(0, 0));

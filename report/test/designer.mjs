@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // designer.html in a real browser (Debian's headless chromium, playwright-core): `cablesim designer` of
 // examples/aps3.yaml opens from file:// with no console error and no network request, and its runs are
 // the command's: the first as the file has it, then with the post spacing and the speed changed in the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // What the browser tests share: their command line (--name value pairs), counted checks, and a headless
 // Debian chromium driven by playwright-core from the report's packages.
 import { spawnSync } from 'node:child_process';

@@ -1,9 +1,10 @@
+// SPDX-License-Identifier: MIT
 // The other pages cablesim writes, in a real browser (Debian's headless chromium, playwright-core):
 // compare.html (`cablesim compare` of two short runs and a synthetic "measured" trace made from the first)
 // and a study's report.html (`cablesim sweep` of tests/sweep/mc.yaml). Each opens from file:// with no
 // console error and no network request; its tables have their rows; every figure is drawn (an SVG with a
-// size on the page) and every id an SVG refers to (glyphs, clip paths) is its own and once in the page,
-// so no figure borrows another's. Then a run's report.html whose clips slip (tests/good/base.yaml, the
+// size on the page, its texts <text> elements) and every id an SVG refers to (clip paths) is its own and
+// once in the page, so no figure borrows another's. Then a run's report.html whose clips slip (tests/good/base.yaml, the
 // lower rope's at 10 kip): its timeline and design table say so. Screenshots go to OUT.
 //
 //   node report/test/pages.mjs --cablesim BUILD/cablesim --modules BUILD/report/node_modules --out DIR
@@ -34,7 +35,7 @@ cablesim('run', 'tests/good/base.yaml', '--set', 'barrier.cables[0].slip_load=10
 // for each run
 const pages = [
   { name: 'compare', file: join(out, 'compare', 'compare.html'), figures: 5, tables: [12, 3] },
-  { name: 'study', file: join(out, 'study', 'report.html'), figures: 19, tables: [3, 10, 7] },
+  { name: 'study', file: join(out, 'study', 'report.html'), figures: 16, tables: [3, 10, 8] },
 ];
 if (!existsSync(chromiumPath)) {
   check(`a browser at ${chromiumPath}`, false, 'install Debian chromium (bash scripts/install-deps.sh)');
@@ -68,11 +69,13 @@ try {
       const ids = [...document.querySelectorAll('[id]')].map((e) => e.id);
       const repeated = ids.length - new Set(ids).size; // a reference resolves to the first of a repeated id
       const tables = [...document.querySelectorAll('table')].map((t) => t.querySelectorAll('tr').length);
-      return { svgs: svgs.length, drawn, refs, foreign, repeated, tables };
+      const texts = svgs.filter((s) => s.querySelector('text') && !s.querySelector('[id*="glyph"]')).length;
+      return { svgs: svgs.length, drawn, refs, foreign, repeated, tables, texts };
     });
     check(`${p.name}: ${p.figures} figures`, seen.svgs === p.figures, `${seen.svgs}`);
     check(`${p.name}: every figure drawn with a size`, seen.drawn === p.figures, `${seen.drawn}`);
-    check(`${p.name}: the figures refer to their glyphs and clips (${seen.refs})`, seen.refs > 0);
+    check(`${p.name}: every figure's texts are <text>, not glyphs`, seen.texts === p.figures, `${seen.texts}`);
+    check(`${p.name}: the figures refer to their clips (${seen.refs})`, seen.refs > 0);
     check(`${p.name}: no figure refers to another's ids`, seen.foreign === 0, `${seen.foreign} of ${seen.refs}`);
     check(`${p.name}: every id once in the page`, seen.repeated === 0, `${seen.repeated} repeated`);
     check(`${p.name}: its tables' rows`, JSON.stringify(seen.tables) === JSON.stringify(p.tables), JSON.stringify(seen.tables));

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The folders a model may read from, and the one way an input file is read (confine.h). */
 #define _XOPEN_SOURCE 700 /* realpath */
 #include "confine.h"

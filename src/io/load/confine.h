@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Files a model names are untrusted input: they are read only from the folders allowed (the folder of the
  * file named on the command line and its subfolders, the parts library's, and each `--allow-path DIR`),
  * only when they are regular files, and only up to CS_INPUT_MAX bytes. Model files, the parts library and

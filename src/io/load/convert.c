@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Checked values into the engine's definition structs: units, ranges, parts, post runs, and the
  * physical checks that need several fields, each reported at the field's place. */
 #define _POSIX_C_SOURCE 200809L

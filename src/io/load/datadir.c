@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Where the parts library is: the one place that decides. In order:
  *   1. $CABLESIM_DATA, when set and not empty;
  *   2. an installed tree: <prefix>/share/cablesim beside the code that runs, found from the shared library

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Room for one more element in a growing array. */
 #ifndef CS_GROW_H
 #define CS_GROW_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The loader's context: memory, errors, file references, parts, --set overrides. */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>

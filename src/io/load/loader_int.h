@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Inside the loader: the node tree every file is turned into, the file table, errors. */
 #ifndef CS_LOADER_INT_H
 #define CS_LOADER_INT_H

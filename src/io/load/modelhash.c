@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* cs_model_input_hash (cablesim/loader.h): 64-bit FNV-1a over a loaded model's definitions, field by field in
  * the schema's order (each key, then its value's bytes), with what the schema does not reach (each post's x,
  * a rope's diameter, the crush curve, the counts) hashed beside. Its name and the file it came from are

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #define _POSIX_C_SOURCE 200809L
 #include "load/runread.h"
 #include "cablesim/units.h"
@@ -298,6 +299,10 @@ static int read_run_series(const char *path, cs_trace *tr, char *why, size_t why
             }
         tr->y[CS_TRACE_TENSION][i] = tmax;
     }
+    /* the column is 0 until a whole window has passed: the average is undefined there, as the average of
+     * a measured trace is (cs_trace_average_50ms) */
+    for (size_t i = 0; i < tr->n && tr->t[i] - WINDOW < tr->t[0] - 1e-12; i++)
+        tr->y[CS_TRACE_DECEL_50MS][i] = NAN;
     for (int k = 0; k < CS_TRACE_COUNT; k++)
         tr->have[k] = 1;
     derive(tr);

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Results read back for comparison: a run's folder (timeseries.csv and summary.json, as `cablesim run`
  * writes them) or a measured time history (a CSV file whose header gives each column's quantity by its
  * unit). Each becomes a trace of the responses compared, in SI, with the response parameters found from

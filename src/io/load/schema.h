@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The model-file schema: one table per YAML mapping, each field with its kind, quantity, checks, the
  * definition-struct member it fills and its documentation. The loader's shape check, its nodes, the
  * --set paths, the JSON echo of the inputs and docs/file-format.md all come from these tables. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The sweep spec: a YAML file read through the loader's YAML tree (yamltree.h), like the model files.
  * The keys of `set` and `vary` are model paths, a plot's x and lines are paths of `vary`; every value is
  * checked, each error at its line:column. */

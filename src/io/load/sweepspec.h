@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The sweep spec: a YAML file read through the same tree as the model files (yamltree.h): the base model,
  * the method (full-factorial grid, Monte Carlo, Latin hypercube), the values set for every run, the
  * values varied and the plots of the runs, each with its place in the file for messages. */

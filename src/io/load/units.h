@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Physical quantities with units. A unit system is loaded per context (no shared state between two
  * loaders): udunits2's database with the aliases the field uses that udunits2 lacks (cs_units_create),
  * or a table of factors written from one (cs_units_from_table: the designer page's, which has no

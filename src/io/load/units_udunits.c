@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The unit system of the command and the library: udunits2's database with the field's aliases. */
 #define _POSIX_C_SOURCE 200809L
 #include <pthread.h>

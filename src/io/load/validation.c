@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The files of data/validation/ (validation.h): a small CSV reader (no quoting: no value holds a comma)
  * and the rows each file must have. */
 #define _POSIX_C_SOURCE 200809L

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The measured and published values `cablesim validate` compares its runs with, read from the CSV files
  * of data/validation/ (beside the parts library, found the same way: the loader's data folder). Each
  * file names its source in its '#' comment lines, then its columns in a header line, then a row a line.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "yamledit.h"
 
 #include <stdio.h>

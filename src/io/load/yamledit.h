@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A model file's text with some of its values replaced in place, its comments, order and layout kept:
  * the designer page's "download the edited model" (docs/designer.md). */
 #ifndef CS_YAMLEDIT_H

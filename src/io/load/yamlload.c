@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* One model file into the loader's nodes: the YAML tree (yamltree.h) gives every value with its place,
  * the schema tables check each one's key and shape where it is written, and the values that fit become
  * the nodes the rest of the loader resolves, overrides and converts. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The one YAML reader: a file as a tree of nodes, each with its kind, its text (a scalar's value), its key
  * in its mapping, its document path ("barrier.cables[0].height") and its line:column, from libyaml's
  * event stream read once. Model files (yamlload.c checks a tree against the schema and turns it into the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Several runs, and a measured history, side by side (`cablesim compare`): overlays of the deceleration
  * (raw and 50-ms), the speed, the penetration and the largest rope tension against time, and a table of
  * the response parameters with each one's difference from the reference (the measured history if there

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* timeseries.csv and events.csv. Every CSV cablesim writes names a column "name [unit]" (SI; "[1]" a
  * fraction), and a column without a unit (a state, a type, a count) by its name alone
  * (docs/file-format.md, "CSV files"). */

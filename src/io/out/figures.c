@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The figures of a run (figures.h). Every time series comes from the recorded frames (record.h), every
  * marked failure from the events; nothing here recomputes the physics. */
 #include "figures.h"
@@ -191,6 +192,15 @@ static void fig_cables(cs_plot *p, const cs_figure_data *d, double *t) {
         cs_axes_fit_point(&a, NAN, b->cables[c].rope.nominal_strength / 1e3);
         same &= b->cables[c].rope.nominal_strength == b->cables[0].rope.nominal_strength;
     }
+    int kinds[3] = {0, 0, 0}; /* the legend's rows: the strengths, the cables, each kind of event */
+    for (int k = 0; k < d->event_count; k++)
+        if (d->events[k].element_kind == CS_ELEMENT_CABLE && d->events[k].element >= 0 &&
+            d->events[k].element < nc)
+            kinds[0] |= d->events[k].type == CS_EVENT_CABLE_BREAK,
+                kinds[1] |= d->events[k].type == CS_EVENT_OVERRIDE,
+                kinds[2] |= d->events[k].type == CS_EVENT_UNDERRIDE;
+    a.legend_rows =
+        (same ? 1 : (b->cable_count < nc ? b->cable_count : nc)) + nc + kinds[0] + kinds[1] + kinds[2];
     cs_axes_layout(p, &a, whole(p));
     for (int c = 0; c < b->cable_count && c < nc; c++) {
         double fu = b->cables[c].rope.nominal_strength;

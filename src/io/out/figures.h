@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The figures of a run, drawn from its recorded frames and its events with the plotting layer (plot.h):
  * deceleration, speed, penetration, cable tensions, the posts nearest the impact, the energy ledger, a
  * strip of top and side snapshots, the vehicle's roll, pitch and yaw, and its path in plan with MASH's

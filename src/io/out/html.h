@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Text and figures into an HTML page: the pages cablesim writes (report.html, a comparison, a study)
  * escape every name and label they take from a model, a spec or the command line, and hold their figures
  * inline as SVG. */

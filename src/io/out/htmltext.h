@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Text that came from a user (a model's name, a spec's paths and values, a run folder's name) into an
  * output, made safe for what reads it: an HTML page (html.h), a Markdown file, a CSV cell a spreadsheet
  * opens, a terminal. Apart from html.h's figures so that the designer page's WebAssembly, which has no

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* summary.json: the response parameters, the events and the resolved inputs (SI, keys as in the
  * model file). A limit given as "none" is null. */
 #include <math.h>

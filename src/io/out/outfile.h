@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A command's output folder, which never loses a file cablesim did not write.
  *
  * cs_out_open makes the folder, takes its lock (DIR/.cablesim-lock, flock'ed, holding the pid: a second

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A run's output folder: the data files, the plots and whatever the caller adds, written beside their
  * names and committed together (outfile.h), or none of them. */
 #include <stdlib.h>

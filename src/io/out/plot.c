@@ -1,10 +1,15 @@
+/* SPDX-License-Identifier: MIT */
 /* The plotting layer (plot.h) on cairo's image, SVG and PDF surfaces. Text uses cairo's own font
- * selection (DejaVu Sans, or whatever fontconfig gives for "sans-serif"). */
+ * selection (DejaVu Sans, or whatever fontconfig gives for "sans-serif"). In an SVG the texts are <text>
+ * elements, editable, written over the drawing (cairo's SVG surface would write each glyph's outline). */
+#define _POSIX_C_SOURCE 200809L
 #include "plot.h"
 #include "cablesim/units.h"
+#include "out/htmltext.h"
 
 #include <errno.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include <cairo-pdf.h>
@@ -14,6 +19,12 @@
 static const char FONT[] = "DejaVu Sans";
 static const double TICK_FONT = 15, LABEL_FONT = 16, TITLE_FONT = 18, LEGEND_FONT = 14, NOTE_FONT = 14;
 static const cs_rgb INK = {0.15, 0.15, 0.15}, GRID = {0.86, 0.86, 0.86};
+static const double LEGEND_INSET = 10; /* an inside legend's distance from the frame */
+
+/* A legend of rows entries: its height. */
+static double legend_height(int rows) {
+    return 1.5 * LEGEND_FONT * rows + 10;
+}
 
 cs_plot_format cs_plot_format_of(const char *name) {
     static const char *const ext[] = {".png", ".svg", ".pdf"};
@@ -60,6 +71,24 @@ static cs_box text_box(cairo_t *cr, double x, double y, double size, int bold, d
     return (cs_box){lo[0], lo[1], hi[0] - lo[0], hi[1] - lo[1]};
 }
 
+/* The same text as an SVG <text> element on out: anchored at its start, middle or end as align is
+ * nearest 0, 0.5 or 1; the halo as a white stroke painted under the fill. */
+static void svg_text(FILE *out, double x, double y, double size, int bold, double align, double angle,
+                     int halo, const char *text) {
+    fprintf(out,
+            "<text transform=\"translate(%.2f %.2f) rotate(%.2f)\" y=\"%.2f\" font-family=\"%s, sans-serif\" "
+            "font-size=\"%.1f\"%s text-anchor=\"%s\" fill=\"rgb(%d,%d,%d)\"%s>",
+            x, y, angle * 180 / CS_PI, 0.36 * size, FONT, size, bold ? " font-weight=\"bold\"" : "",
+            align < 0.25   ? "start"
+            : align > 0.75 ? "end"
+                           : "middle",
+            (int)lround(255 * INK.r), (int)lround(255 * INK.g), (int)lround(255 * INK.b),
+            halo ? " stroke=\"white\" stroke-width=\"4\" stroke-linejoin=\"round\" paint-order=\"stroke\""
+                 : "");
+    cs_html_text(out, text);
+    fputs("</text>\n", out);
+}
+
 /* Text at (x, y) rotated by angle (rad, clockwise on the page), aligned along its own direction, its
  * vertical centre at y. halo: a white outline under the glyphs. frame: what it belongs inside, for the
  * log (NULL: the figure). */
@@ -72,6 +101,10 @@ static void draw_text(cs_plot *p, const cs_box *frame, double x, double y, doubl
         t->box = text_box(cr, x, y, size, bold, align, angle, halo, text);
         t->frame = frame ? *frame : (cs_box){0, 0, p->width, p->height};
         snprintf(t->text, sizeof t->text, "%s", text);
+    }
+    if (p->svg_text) {
+        svg_text(p->svg_text, x, y, size, bold, align, angle, halo, text);
+        return;
     }
     cairo_text_extents_t e;
     set_font(cr, size, bold);
@@ -97,6 +130,43 @@ static void draw_text(cs_plot *p, const cs_box *frame, double x, double y, doubl
 
 void cs_plot_text(cs_plot *p, double x, double y, double size, int bold, double align, const char *text) {
     draw_text(p, NULL, x, y, size, bold, align, 0, 0, text);
+}
+
+/* ---- ink: the cells of a plotting area that data, markers and notes were drawn on ---- */
+
+static void ink_set(cs_axes *a, double px, double py) {
+    double u = (px - a->area.x) / a->ink_cell, v = (py - a->area.y) / a->ink_cell;
+    if (!(a->ink_cell > 0) || !(px <= a->area.x + a->area.w && py <= a->area.y + a->area.h)) return;
+    if (!(u >= 0 && v >= 0 && u < CS_INK_COLS && v < CS_INK_ROWS)) return;
+    int c = (int)u;
+    a->ink[(int)v][c / 8] |= (unsigned char)(1u << (c % 8));
+}
+
+static void ink_segment(cs_axes *a, double x0, double y0, double x1, double y1) {
+    if (!isfinite(x0) || !isfinite(y0) || !isfinite(x1) || !isfinite(y1) || !(a->ink_cell > 0)) return;
+    int n = (int)fmin(4000, ceil(hypot(x1 - x0, y1 - y0) / (0.5 * a->ink_cell)));
+    for (int k = 0; k <= n; k++) {
+        double f = n > 0 ? (double)k / n : 0;
+        ink_set(a, x0 + f * (x1 - x0), y0 + f * (y1 - y0));
+    }
+}
+
+static void ink_box(cs_axes *a, cs_box b) {
+    if (!(a->ink_cell > 0)) return;
+    for (double y = b.y; y < b.y + b.h + 0.5 * a->ink_cell; y += 0.5 * a->ink_cell)
+        ink_segment(a, b.x, fmin(y, b.y + b.h), b.x + b.w, fmin(y, b.y + b.h));
+}
+
+/* The inked cells whose centres are inside b. */
+static int ink_under(const cs_axes *a, cs_box b) {
+    int count = 0;
+    for (int r = 0; a->ink_cell > 0 && r < CS_INK_ROWS; r++)
+        for (int c = 0; c < CS_INK_COLS; c++) {
+            double x = a->area.x + (c + 0.5) * a->ink_cell, y = a->area.y + (r + 0.5) * a->ink_cell;
+            count +=
+                (a->ink[r][c / 8] >> (c % 8) & 1) && x > b.x && x < b.x + b.w && y > b.y && y < b.y + b.h;
+        }
+    return count;
 }
 
 /* ---- axes ---- */
@@ -164,12 +234,15 @@ static double first_tick(double lo, double step) {
     return ceil(lo / step - 1e-9) * step;
 }
 
-static double widest_tick(cairo_t *cr, double lo, double hi, double step, double scale) {
+/* The widest tick label over [lo, hi] (cat: the names of categories at 0, 1, ..., count of them). */
+static double widest_tick(cairo_t *cr, double lo, double hi, double step, const char *const *cat, int count) {
     double w = 0;
     char buf[32];
-    for (double v = first_tick(lo * scale, step); v <= hi * scale + 1e-9 * step; v += step) {
+    for (double v = first_tick(lo, step); v <= hi + 1e-9 * step; v += step) {
+        long k = lround(v);
+        if (cat && (k < 0 || k >= count)) continue;
         tick_label(buf, sizeof buf, v, step);
-        w = fmax(w, text_width(cr, buf, TICK_FONT, 0));
+        w = fmax(w, text_width(cr, cat ? cat[k] : buf, TICK_FONT, 0));
     }
     return w;
 }
@@ -203,6 +276,8 @@ static void draw_ticks(cs_plot *p, const cs_axes *a) {
                   TICK_FONT, 0, 0.5, 0, 0, a->xcat ? a->xcat[cat] : buf);
     }
     for (double v = first_tick(a->y0, a->ystep); v <= a->y1 + 1e-9 * a->ystep; v += a->ystep) {
+        int cat = (int)lround(v);
+        if (a->ycat && (cat < 0 || cat >= a->ycat_count)) continue;
         double y = round(cs_axes_py(a, v)) + 0.5;
         set_color(cr, GRID);
         cairo_move_to(cr, b->x, y);
@@ -213,7 +288,7 @@ static void draw_ticks(cs_plot *p, const cs_axes *a) {
         cairo_line_to(cr, b->x, y);
         cairo_stroke(cr);
         tick_label(buf, sizeof buf, v, a->ystep);
-        draw_text(p, NULL, b->x - 8, y, TICK_FONT, 0, 1, 0, 0, buf);
+        draw_text(p, NULL, b->x - 8, y, TICK_FONT, 0, 1, 0, 0, a->ycat ? a->ycat[cat] : buf);
     }
     if (a->y2_scale == 0) return;
     double s = a->y2_scale;
@@ -250,29 +325,40 @@ void cs_axes_layout(cs_plot *p, cs_axes *a, cs_box panel) {
         a->ystep = cs_plot_nice_step(a->y0, a->y1, (int)fmax(3, a->area.h / 45));
     } else {
         /* headroom: a largest value, or a limit drawn at it, stays off the frame */
+        double data_top = a->y1;
         if (!a->fix_y) {
             double span = a->y1 - a->y0;
             a->y1 += 0.03 * span;
             if (a->y0 < 0) a->y0 -= 0.03 * span;
         }
-        a->xstep = a->xcat ? 1 : cs_plot_nice_step(a->x0, a->x1, xt);
-        a->ystep = cs_plot_nice_step(a->y0, a->y1, yt);
-        if (!a->fix_x)
-            a->x0 = floor(a->x0 / a->xstep + 1e-9) * a->xstep,
-            a->x1 = ceil(a->x1 / a->xstep - 1e-9) * a->xstep;
-        if (!a->fix_y)
-            a->y0 = floor(a->y0 / a->ystep + 1e-9) * a->ystep,
-            a->y1 = ceil(a->y1 / a->ystep - 1e-9) * a->ystep;
-        double left = label_left + 14 + widest_tick(cr, a->y0, a->y1, a->ystep, 1);
-        double right = 16 + a->legend_width;
-        if (a->y2_scale != 0) {
-            double s0 = a->y0 * a->y2_scale, s1 = a->y1 * a->y2_scale;
-            a->y2step = cs_plot_nice_step(fmin(s0, s1), fmax(s0, s1), yt);
-            right += 14 + label_right + widest_tick(cr, fmin(s0, s1), fmax(s0, s1), a->y2step, 1);
+        /* a legend at the top: y1 raised (again while rounding out moves the data up) until the data
+         * stays below it */
+        double room = a->legend_rows > 0 ? legend_height(a->legend_rows) + LEGEND_INSET + 4 : 0;
+        for (int k = 0; k < 4; k++) {
+            a->xstep = a->xcat ? 1 : cs_plot_nice_step(a->x0, a->x1, xt);
+            a->ystep = a->ycat ? 1 : cs_plot_nice_step(a->y0, a->y1, yt);
+            if (!a->fix_x)
+                a->x0 = floor(a->x0 / a->xstep + 1e-9) * a->xstep,
+                a->x1 = ceil(a->x1 / a->xstep - 1e-9) * a->xstep;
+            if (!a->fix_y)
+                a->y0 = floor(a->y0 / a->ystep + 1e-9) * a->ystep,
+                a->y1 = ceil(a->y1 / a->ystep - 1e-9) * a->ystep;
+            double left = label_left + 14 + widest_tick(cr, a->y0, a->y1, a->ystep, a->ycat, a->ycat_count);
+            double right = 16 + a->legend_width;
+            if (a->y2_scale != 0) {
+                double s0 = a->y0 * a->y2_scale, s1 = a->y1 * a->y2_scale;
+                a->y2step = cs_plot_nice_step(fmin(s0, s1), fmax(s0, s1), yt);
+                right += 14 + label_right + widest_tick(cr, fmin(s0, s1), fmax(s0, s1), a->y2step, NULL, 0);
+            }
+            a->area = (cs_box){panel.x + left + 8, panel.y + top, panel.w - left - right - 8,
+                               panel.h - top - bottom};
+            if (a->fix_y || !(room > 0 && room < 0.8 * a->area.h) ||
+                cs_axes_py(a, data_top) >= a->area.y + room)
+                break;
+            a->y1 = a->y0 + (data_top - a->y0) * a->area.h / (a->area.h - room);
         }
-        a->area =
-            (cs_box){panel.x + left + 8, panel.y + top, panel.w - left - right - 8, panel.h - top - bottom};
     }
+    a->ink_cell = fmax(4, fmax(a->area.w / CS_INK_COLS, a->area.h / CS_INK_ROWS));
     const cs_box *b = &a->area;
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_rectangle(cr, b->x, b->y, b->w, b->h);
@@ -383,7 +469,9 @@ void cs_plot_line(cs_plot *p, cs_axes *a, const double *x, const double *y, int 
                 pen = 0;
                 continue;
             }
-            (pen ? cairo_line_to : cairo_move_to)(cr, cs_axes_px(a, x[i]), cs_axes_py(a, y[i]));
+            double px = cs_axes_px(a, x[i]), py = cs_axes_py(a, y[i]);
+            if (pen) ink_segment(a, cs_axes_px(a, x[i - 1]), cs_axes_py(a, y[i - 1]), px, py);
+            (pen ? cairo_line_to : cairo_move_to)(cr, px, py);
             pen = 1;
         }
         stroke_style(cr, s);
@@ -393,8 +481,11 @@ void cs_plot_line(cs_plot *p, cs_axes *a, const double *x, const double *y, int 
     for (int i = 0; s->marker != CS_MARK_NONE && i < n; i++) {
         double px = cs_axes_px(a, x[i]), py = cs_axes_py(a, y[i]);
         if (px >= a->area.x - 1 && px <= a->area.x + a->area.w + 1 && py >= a->area.y - 1 &&
-            py <= a->area.y + a->area.h + 1)
+            py <= a->area.y + a->area.h + 1) {
+            double r = 0.65 * (s->marker_size > 0 ? s->marker_size : 9);
             draw_marker(cr, px, py, s->marker, s->marker_size, s->color);
+            ink_box(a, (cs_box){px - r, py - r, 2 * r, 2 * r});
+        }
     }
     cs_axes_legend_add(a, CS_LEGEND_LINE, s, label);
 }
@@ -413,8 +504,11 @@ static void fill_band(cs_plot *p, cs_axes *a, const double *x, const double *lo,
     cairo_t *cr = p->cr;
     if (n < 2) return;
     clip_to(cr, a);
-    for (int i = 0; i < n; i++)
-        cairo_line_to(cr, cs_axes_px(a, x[i]), cs_axes_py(a, layer_sum(hi, n, i, khi)));
+    for (int i = 0; i < n; i++) {
+        double px = cs_axes_px(a, x[i]), top = cs_axes_py(a, layer_sum(hi, n, i, khi));
+        cairo_line_to(cr, px, top);
+        ink_segment(a, px, top, px, cs_axes_py(a, lo ? layer_sum(lo, n, i, klo) : 0));
+    }
     for (int i = n - 1; i >= 0; i--)
         cairo_line_to(cr, cs_axes_px(a, x[i]), cs_axes_py(a, lo ? layer_sum(lo, n, i, klo) : 0));
     cairo_close_path(cr);
@@ -439,6 +533,7 @@ void cs_plot_segment(cs_plot *p, cs_axes *a, double x0, double y0, double x1, do
     cairo_move_to(cr, cs_axes_px(a, x0), cs_axes_py(a, y0));
     cairo_line_to(cr, cs_axes_px(a, x1), cs_axes_py(a, y1));
     stroke_style(cr, s);
+    ink_segment(a, cs_axes_px(a, x0), cs_axes_py(a, y0), cs_axes_px(a, x1), cs_axes_py(a, y1));
     cairo_restore(cr);
 }
 
@@ -463,6 +558,21 @@ void cs_plot_polygon(cs_plot *p, cs_axes *a, const double *x, const double *y, i
     }
     if (outline) stroke_style(cr, outline);
     cairo_restore(cr);
+    for (int i = 0; i < n; i++)
+        ink_segment(a, cs_axes_px(a, x[i]), cs_axes_py(a, y[i]), cs_axes_px(a, x[(i + 1) % n]),
+                    cs_axes_py(a, y[(i + 1) % n]));
+    for (int r = 0; fill && r < CS_INK_ROWS; r++) /* the cells whose centres are inside (even-odd) */
+        for (int c = 0; c < CS_INK_COLS; c++) {
+            double cx = a->area.x + (c + 0.5) * a->ink_cell, cy = a->area.y + (r + 0.5) * a->ink_cell;
+            if (cx > a->area.x + a->area.w || cy > a->area.y + a->area.h) continue;
+            int in = 0;
+            for (int i = 0, j = n - 1; i < n; j = i++) {
+                double xi = cs_axes_px(a, x[i]), yi = cs_axes_py(a, y[i]), xj = cs_axes_px(a, x[j]),
+                       yj = cs_axes_py(a, y[j]);
+                if ((yi > cy) != (yj > cy) && cx < xi + (cy - yi) * (xj - xi) / (yj - yi)) in = !in;
+            }
+            if (in) ink_set(a, cx, cy);
+        }
 }
 
 void cs_plot_label(cs_plot *p, cs_axes *a, double x, double y, double dx, double dy, double align,
@@ -483,22 +593,38 @@ void cs_plot_label(cs_plot *p, cs_axes *a, double x, double y, double dx, double
     double mx = fmin(0, f->x + f->w - pad - (b.x + b.w)), my = fmin(0, f->y + f->h - pad - (b.y + b.h));
     mx = fmax(mx, f->x + pad - b.x), my = fmax(my, f->y + pad - b.y);
     draw_text(p, f, px + dx + mx, py + dy + my, NOTE_FONT, 0, align, 0, 1, text);
+    ink_box(a, text_box(p->cr, px + dx + mx, py + dy + my, NOTE_FONT, 0, align, 0, 1, text));
 }
 
 void cs_plot_legend(cs_plot *p, const cs_axes *a, cs_legend_place place) {
     cairo_t *cr = p->cr;
     if (a->legend_count == 0) return;
-    double row = 1.5 * LEGEND_FONT, sample = 30, w = 0;
+    double row = 1.5 * LEGEND_FONT, sample = 30, w = 0; /* as legend_height has it */
     for (int i = 0; i < a->legend_count; i++)
         w = fmax(w, text_width(cr, a->legend[i].label, LEGEND_FONT, 0));
     w += sample + 24;
-    double h = row * a->legend_count + 10, inset = 10;
-    const cs_box *b = &a->area;
-    double x = place == CS_LEGEND_TOP_LEFT || place == CS_LEGEND_BOTTOM_LEFT ? b->x + inset
-                                                                             : b->x + b->w - inset - w;
-    double y = place == CS_LEGEND_BOTTOM_LEFT || place == CS_LEGEND_BOTTOM_RIGHT ? b->y + b->h - inset - h
-                                                                                 : b->y + inset;
-    if (place == CS_LEGEND_OUTSIDE_RIGHT) x = p->width - a->legend_width - 4, y = b->y;
+    double h = legend_height(a->legend_count), x = p->width - a->legend_width - 4, y = a->area.y;
+    int covered = 0;
+    if (place != CS_LEGEND_OUTSIDE_RIGHT) { /* place, else the first corner with nothing under it */
+        const cs_legend_place corners[] = {place, CS_LEGEND_TOP_RIGHT, CS_LEGEND_TOP_LEFT,
+                                           CS_LEGEND_BOTTOM_RIGHT, CS_LEGEND_BOTTOM_LEFT};
+        const cs_box *b = &a->area;
+        for (int k = 0, least = -1; k < 5 && least != 0; k++) {
+            cs_legend_place q = corners[k];
+            double qx = q == CS_LEGEND_TOP_LEFT || q == CS_LEGEND_BOTTOM_LEFT
+                            ? b->x + LEGEND_INSET
+                            : b->x + b->w - LEGEND_INSET - w;
+            double qy = q == CS_LEGEND_BOTTOM_LEFT || q == CS_LEGEND_BOTTOM_RIGHT
+                            ? b->y + b->h - LEGEND_INSET - h
+                            : b->y + LEGEND_INSET;
+            int under = ink_under(a, (cs_box){qx, qy, w, h});
+            if (least < 0 || under < least) least = covered = under, x = qx, y = qy;
+        }
+    }
+    cs_plot_log *log = p->log;
+    if (log && log->legend_count++ < CS_PLOT_LOG_LEGENDS)
+        log->legend[log->legend_count - 1] =
+            (cs_plot_logged_legend){{x, y, w, h}, place != CS_LEGEND_OUTSIDE_RIGHT, covered};
     cairo_set_source_rgba(cr, 1, 1, 1, 0.88);
     cairo_rectangle(cr, x, y, w, h);
     cairo_fill_preserve(cr);
@@ -579,14 +705,38 @@ static cairo_status_t to_file(void *closure, const unsigned char *data, unsigned
     return fwrite(data, 1, length, closure) == length ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
 }
 
+/* An SVG: cairo's drawing with the texts (svg_text) before its closing tag, to f. */
+static int write_svg(FILE *f, const char *svg, size_t svg_size, const char *texts, size_t texts_size) {
+    const char *end = NULL;
+    for (const char *q = svg; (q = strstr(q, "</svg>")) != NULL; q++)
+        end = q;
+    if (!end) return -1;
+    size_t head = (size_t)(end - svg);
+    return fwrite(svg, 1, head, f) == head && fwrite(texts, 1, texts_size, f) == texts_size &&
+                   fwrite(end, 1, svg_size - head, f) == svg_size - head
+               ? 0
+               : -1;
+}
+
 /* Draw on a surface of format and write it to f; f NULL: an image, written nowhere, traced into log. */
 static int plot_write(FILE *f, cs_plot_format format, double width, double height, cs_plot_draw_fn draw,
                       const void *user, cs_plot_log *log, char *why, size_t why_size) {
     cairo_surface_t *s;
+    char *svg = NULL, *texts = NULL;
+    size_t svg_size = 0, texts_size = 0;
+    FILE *svg_mem = NULL, *text_mem = NULL;
     if (format == CS_PLOT_PNG)
         s = cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)ceil(width), (int)ceil(height));
     else if (format == CS_PLOT_SVG) {
-        s = cairo_svg_surface_create_for_stream(to_file, f, width, height);
+        svg_mem = open_memstream(&svg, &svg_size);
+        text_mem = open_memstream(&texts, &texts_size);
+        if (!svg_mem || !text_mem) {
+            if (svg_mem) fclose(svg_mem), free(svg);
+            if (text_mem) fclose(text_mem), free(texts);
+            snprintf(why, why_size, "out of memory for an svg");
+            return -1;
+        }
+        s = cairo_svg_surface_create_for_stream(to_file, svg_mem, width, height);
         cairo_svg_surface_set_document_unit(s, CAIRO_SVG_UNIT_PX);
     } else if (format == CS_PLOT_PDF)
         s = cairo_pdf_surface_create_for_stream(to_file, f, width, height);
@@ -598,7 +748,7 @@ static int plot_write(FILE *f, cs_plot_format format, double width, double heigh
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
     if (log) memset(log, 0, sizeof *log), log->width = width, log->height = height;
-    cs_plot p = {cr, width, height, log};
+    cs_plot p = {cr, width, height, log, text_mem};
     int rc = draw(&p, user, why, why_size);
     cairo_status_t st = cairo_status(cr);
     cairo_destroy(cr);
@@ -607,6 +757,13 @@ static int plot_write(FILE *f, cs_plot_format format, double width, double heigh
     cairo_surface_finish(s);
     if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_status(s);
     cairo_surface_destroy(s);
+    if (format == CS_PLOT_SVG) {
+        int closed = fclose(svg_mem) == 0 && fclose(text_mem) == 0;
+        if (rc == 0 && st == CAIRO_STATUS_SUCCESS &&
+            (!closed || write_svg(f, svg, svg_size, texts, texts_size) != 0))
+            st = CAIRO_STATUS_WRITE_ERROR;
+        free(svg), free(texts);
+    }
     if (rc == 0 && st != CAIRO_STATUS_SUCCESS) {
         snprintf(why, why_size, "drawing a %s: %s", cs_plot_extension(format), cairo_status_to_string(st));
         rc = -1;

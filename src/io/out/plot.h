@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A small plotting layer on cairo: panels with axes (nice ticks, unit labels, an optional second y scale
  * on the right, equal-aspect views), lines, markers, filled and stacked areas, text, legends and a
  * colour bar, written as PNG, SVG or PDF. Immediate mode: a figure is a function that draws on a
@@ -22,6 +23,7 @@ typedef struct cs_plot {
     cairo_t *cr;
     double width, height;
     cs_plot_log *log; /* NULL; cs_plot_trace: what the drawing puts where */
+    FILE *svg_text;   /* an SVG's texts as <text> elements, written over the drawing; NULL: glyphs */
 } cs_plot;
 
 typedef struct cs_rgb {
@@ -51,7 +53,7 @@ typedef struct cs_box {
     double x, y, w, h; /* device units, y down */
 } cs_box;
 
-enum { CS_LEGEND_MAX = 16, CS_LABEL_SIZE = 96 };
+enum { CS_LEGEND_MAX = 16, CS_LABEL_SIZE = 96, CS_INK_COLS = 400, CS_INK_ROWS = 250 };
 
 typedef enum cs_legend_kind { CS_LEGEND_LINE, CS_LEGEND_AREA } cs_legend_kind;
 
@@ -79,13 +81,18 @@ typedef struct cs_axes {
     int equal;                   /* a view: one unit is as long on x as on y */
     int fix_x, fix_y;            /* keep the range as set, do not round it out to ticks */
     double legend_width;         /* space kept on the right for an outside legend */
-    const char *const *xcat;     /* categories: x ticks at 0, 1, ... named so (on two staggered rows) */
+    int legend_rows;         /* the rows of a legend inside at the top: y1 raised so no data is under it */
+    const char *const *xcat; /* categories: x ticks at 0, 1, ... named so (on two staggered rows) */
     int xcat_count;
+    const char *const *ycat; /* categories: y ticks at 0, 1, ... named so */
+    int ycat_count;
     double x0, x1, y0, y1;       /* data range */
     double xstep, ystep, y2step; /* tick spacing, set by layout */
     cs_box area;                 /* plotting area, set by layout */
     int legend_count;
     cs_legend_entry legend[CS_LEGEND_MAX];
+    double ink_cell; /* the cells of the area that data, markers and notes were drawn on, ink_cell px */
+    unsigned char ink[CS_INK_ROWS][CS_INK_COLS / 8];
 } cs_axes;
 
 /* Empty axes with these labels (NULL: none). */
@@ -125,6 +132,9 @@ void cs_plot_label(cs_plot *p, cs_axes *a, double x, double y, double dx, double
                    const char *text);
 /* Add a legend entry without drawing (for things drawn piecewise). */
 void cs_axes_legend_add(cs_axes *a, cs_legend_kind kind, const cs_style *s, const char *label);
+/* The legend, drawn after the data. Inside: at place if no data, marker or note is under it there, else
+ * at the first corner (top right, top left, bottom right, bottom left) where none is, else where least is;
+ * legend_rows set before layout keeps the top clear of data for it. */
 void cs_plot_legend(cs_plot *p, const cs_axes *a, cs_legend_place place);
 
 /* Text in device units: size in px, align as for cs_plot_label, vertical centre at y. */
@@ -140,8 +150,9 @@ typedef int (*cs_plot_draw_fn)(cs_plot *p, const void *user, char *why, size_t w
 
 /* What a drawing put where, in device units (y down): the box of every text's ink with the frame it
  * belongs inside (a label's: its plotting area; an inside legend's: the plotting area; any other text's:
- * the figure), and every panel's plotting area and final data ranges. For tests of the layout. */
-enum { CS_PLOT_LOG_TEXTS = 1024, CS_PLOT_LOG_PANELS = 32 };
+ * the figure), every panel's plotting area and final data ranges, and every legend's box with how much
+ * ink it covers. For tests of the layout. */
+enum { CS_PLOT_LOG_TEXTS = 1024, CS_PLOT_LOG_PANELS = 32, CS_PLOT_LOG_LEGENDS = 32 };
 
 typedef struct cs_plot_logged_text {
     cs_box box, frame;
@@ -155,11 +166,19 @@ typedef struct cs_plot_logged_panel {
     char title[CS_LABEL_SIZE];
 } cs_plot_logged_panel;
 
+typedef struct cs_plot_logged_legend {
+    cs_box box;
+    int inside;  /* in its plotting area (not outside on the right) */
+    int covered; /* cells of data, markers or notes under it (ink_cell px each) */
+} cs_plot_logged_legend;
+
 struct cs_plot_log {
-    int text_count, panel_count; /* how many were drawn: those past the arrays' sizes are not kept */
-    double width, height;        /* the figure's */
+    int text_count, panel_count,
+        legend_count;     /* how many were drawn: those past the arrays' sizes are not kept */
+    double width, height; /* the figure's */
     cs_plot_logged_text text[CS_PLOT_LOG_TEXTS];
     cs_plot_logged_panel panel[CS_PLOT_LOG_PANELS];
+    cs_plot_logged_legend legend[CS_PLOT_LOG_LEGENDS];
 };
 
 /* Draw a width x height figure with draw and write it to f in format. Returns 0, or -1 with why filled

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A run's recorded frames (cablesim/output.h's cs_record), collected through cs_run's output callback;
  * the input of every writer (CSV, JSON, plots, report). Growing the arrays happens here, outside the
  * engine's step. The record holds at most CS_RECORD_BYTES: when it is full it keeps every other frame and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The readable summary printed after a run: SI first, US units beside. */
 #include <math.h>
 

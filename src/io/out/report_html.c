@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* report.html (report_html.h): the run's data as one JSON object inside the page built from report/. */
 #include "report_html.h"
 

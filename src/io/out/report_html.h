@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* report.html: one self-contained page (no network) with the run's summary, its failure timeline,
  * interactive plots and a 3D replay. The page itself (HTML, CSS and the bundled JavaScript of report/)
  * is built from report/ by esbuild and compiled into the command as cs_report_page (only when the build

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What a run's outputs say beside its results (writers.h): its designations as run, the record of a run
  * made through the library, the model hash's text, and the posts nearest the impact (which the plots and
  * the report follow). */

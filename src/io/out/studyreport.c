@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #define _POSIX_C_SOURCE 200809L
 #include "out/studyreport.h"
 
@@ -21,6 +22,8 @@ static const response_def responses[CS_STUDY_RESPONSES] = {
     {"max_barrier_deflection", "deflection", "max barrier deflection", "max barrier deflection (m)", 1.0},
     {"working_width", "working-width", "working width", "working width (m)", 1.0},
     {"max_cable_tension", "tension", "max rope tension", "max rope tension (kN)", 1e-3},
+    {"penetration_beyond", "penetration-beyond", "penetration beyond (runs the barrier did not hold)",
+     "penetration beyond (m)", 1.0},
     {"exit_speed", "exit-speed", "exit speed (runs that left the barrier)", "exit speed (m/s)", 1.0},
 };
 
@@ -117,7 +120,23 @@ static int strongest(const study *s, const cs_sweep_spec *spec, int q) {
     return best;
 }
 
+/* Whether response q has a value in any run. */
+static int has_values(const study *s, int q) {
+    for (long i = 0; i < s->ok; i++)
+        if (isfinite(s->y[q][i])) return 1;
+    return 0;
+}
+
 /* ---- the figures ---- */
+
+int cs_study_figure_shown(int k, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
+                          long n) {
+    study s;
+    if (k == 0 || study_make(&s, spec, x, r, n) != 0) return 1; /* out of memory: the figure says so */
+    int shown = has_values(&s, (k - 1) % CS_STUDY_RESPONSES);
+    study_free(&s);
+    return shown;
+}
 
 static const char *const kinds[] = {"histogram", "tornado", "scatter"};
 
@@ -176,11 +195,6 @@ static void draw_histogram(cs_plot *p, const study *s, int q) {
     snprintf(title, sizeof title, "%s: %ld runs with a value", responses[q].title, m);
     cs_axes a;
     cs_axes_init(&a, title, responses[q].axis, "runs");
-    if (m == 0) {
-        cs_axes_set_x(&a, 0.0, 1.0), cs_axes_set_y(&a, 0.0, 1.0);
-        cs_axes_layout(p, &a, whole(p));
-        return;
-    }
     int bins = (int)fmin(40.0, fmax(5.0, ceil(sqrt((double)m))));
     if (hi - lo < 1e-12 * fmax(1.0, fabs(hi))) lo -= 0.5, hi += 0.5; /* all alike: one bar in the middle */
     long *c = calloc((size_t)bins, sizeof *c), top = 0;
@@ -211,17 +225,21 @@ static void draw_tornado(cs_plot *p, const cs_sweep_spec *spec, const study *s, 
             order[j] = order[j - 1], order[j - 1] = t;
         }
     char title[160];
+    const char *names[CS_SWEEP_MAX_VARS]; /* the y axis: an input a row, the strongest on top */
+    for (int i = 0; i < m; i++)
+        names[m - 1 - i] = spec->vars[order[i]].path;
     snprintf(title, sizeof title, "%s: Spearman rank correlation of each input", responses[q].title);
     cs_axes a;
     cs_axes_init(&a, title, "rank correlation with the response", NULL);
+    a.ycat = names, a.ycat_count = m;
     cs_axes_set_x(&a, -1.0, 1.0);
     cs_axes_set_y(&a, -0.5, m > 0 ? m - 0.5 : 0.5);
     cs_axes_layout(p, &a, whole(p));
     for (int i = 0; i < m; i++) {
         double rho = s->rho[q * k + order[i]], y = m - 1 - i;
         bar(p, &a, 0.0, rho, y - 0.35, y + 0.35, rho >= 0 ? cs_plot_palette(3) : cs_plot_palette(0));
-        char label[320];
-        snprintf(label, sizeof label, "%s  %+.2f", spec->vars[order[i]].path, rho);
+        char label[16];
+        snprintf(label, sizeof label, "%+.2f", rho);
         cs_plot_label(p, &a, rho >= 0 ? -0.02 : 0.02, y, 0, 0, rho >= 0 ? 1.0 : 0.0, label);
     }
     if (m == 0) cs_plot_label(p, &a, 0.0, 0.0, 0, 0, 0.5, "no numeric input varies with it");
@@ -362,8 +380,16 @@ int cs_study_write_page(FILE *f, const cs_sweep_spec *spec, const double *x, con
     }
     free(sorted);
     fputs("</table>\n", f);
+    int none = 0; /* the responses no run has a value of, named once */
+    for (int q = 0; q < CS_STUDY_RESPONSES; q++)
+        if (!has_values(&s, q)) {
+            fputs(none++ ? ", " : "<p>No run has a value of ", f);
+            cs_html_text(f, responses[q].title);
+        }
+    if (none > 0) fputs(": their figures are left out.</p>\n", f);
     int rc = 0;
     for (int k = 0; k < CS_STUDY_FIGURES && rc == 0; k++) {
+        if (k > 0 && !has_values(&s, (k - 1) % CS_STUDY_RESPONSES)) continue;
         char id[16];
         snprintf(id, sizeof id, "f%d", k);
         figure_job job = {k, spec, &s};

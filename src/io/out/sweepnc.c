@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* runs.nc: runs.csv's table as netCDF (CF-1.8), from the same results through the same columns: a
  * dimension `run`, the run index, one variable per varied input (named from its path, the path itself in
  * long_name, its SI unit in units) and one per result column; text as char arrays padded with NULs, a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A sweep's outputs: runs.csv (one row per run), summary.md and summary.json (outcome probabilities
  * with 95% Wilson intervals, response statistics, Spearman rank correlation of inputs and responses). */
 #include <errno.h>

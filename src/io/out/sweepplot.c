@@ -1,8 +1,9 @@
+/* SPDX-License-Identifier: MIT */
 /* The plots of a sweep (`plot:` in the spec, sweepout.h), drawn with the plotting layer (plot.h) from
  * runs.csv's own columns: a response against a varied value, a line per level of another varied value of
  * a grid joining its runs in order of x, or each run a point (Monte Carlo, Latin hypercube). A run that
  * got through (broke through, rode over or ran under the cables) is marked with a cross; a run that did not
- * run to the end, or has no value of the response, is left out, and the caption counts both. */
+ * run to the end, or has no value of the response, is left out, and the caption counts each. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -145,14 +146,18 @@ static void plot_counts(const cs_sweep_spec *spec, int k, const cs_sweep_result 
         else
             shown++, broke += cs_outcome_through(r[i].summary.outcome);
     }
-    int used = snprintf(buf, size,
-                        "%ld of %ld runs shown, %ld broke through (marked with a cross); left out: %ld that "
-                        "did not run to the end",
-                        shown, n, broke, failed);
-    if (missing > 0 && used > 0 && (size_t)used < size)
-        used += snprintf(buf + used, size - (size_t)used, ", %ld with no %s", missing, p->y);
-    if (pending > 0 && used > 0 && (size_t)used < size)
-        snprintf(buf + used, size - (size_t)used, ", %ld not run yet (a partial sweep)", pending);
+    /* each count with its noun, and none of 0: "left out: 0 that ..." reads as run 0 */
+    int used = snprintf(buf, size, "%ld of %ld runs shown, %ld broke through (marked with a cross); ", shown,
+                        n, broke);
+    const long left[] = {failed, missing, pending};
+    const char *const why[] = {"that did not run to the end", "with no ", "not run yet (a partial sweep)"};
+    for (int k = 0, listed = 0; k < 3; k++)
+        if (left[k] > 0 && used > 0 && (size_t)used < size)
+            used += snprintf(buf + used, size - (size_t)used, "%s%ld run%s %s%s",
+                             listed++ ? ", " : "left out: ", left[k], left[k] == 1 ? "" : "s", why[k],
+                             k == 1 ? p->y : "");
+    if (failed + missing + pending == 0 && used > 0 && (size_t)used < size)
+        snprintf(buf + used, size - (size_t)used, "none left out");
 }
 
 void cs_sweep_plot_caption(const cs_sweep_spec *spec, int k, const cs_sweep_result *r, long n, char *buf,

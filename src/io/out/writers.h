@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Inside the writers of a run's outputs (cablesim/output.h): printing numbers that must be finite, JSON
  * strings, and the output folder with files added by the command (report.html). */
 #ifndef CS_WRITERS_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* NCHRP Report 350 and MASH evaluation criteria of a roadside test (criteria.h); each criterion's source
  * and certainty in docs/ratings.md, "Criteria". */
 #include "criteria.h"

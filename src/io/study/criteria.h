@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The evaluation criteria of NCHRP Report 350 and MASH for a roadside test, each judged from a run where
  * the model can judge it and listed as "not judged" where it cannot (docs/ratings.md, "Criteria"). */
 #ifndef CS_CRITERIA_H

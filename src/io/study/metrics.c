@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Validation metrics (metrics.h): Sprague-Geers and ANOVA of the residuals, NCHRP W179. */
 #include "metrics.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Validation metrics of a computed time history against a measured one, as NCHRP Web-Only Document 179
  * (and its program RSVVP) defines them: the Sprague-Geers magnitude, phase and comprehensive errors and
  * the ANOVA mean and standard deviation of the residuals, with W179's acceptance limits

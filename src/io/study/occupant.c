@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Occupant risk (occupant.h): J211/1 filters, the flail-space model, THIV, PHD and ASI; formulas and
  * sources in docs/ratings.md, "Occupant risk". */
 #include "occupant.h"

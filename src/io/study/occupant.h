@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Occupant risk from the vehicle's motion at its centre of gravity, as the crash-test standards compute
  * it (docs/ratings.md, "Occupant risk"): the channel frequency class filters of SAE J211/1 (ISO 6487),
  * the flail-space model of NCHRP Report 350 and MASH (occupant impact velocity, its time, ridedown

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "rating.h"
 #include "cablesim/units.h"
 

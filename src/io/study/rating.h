@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Anti-ram ratings: how a run's result reads against SD-STD-02.01 (1985), its revision A (2003) and
  * ASTM F2656. Facts from shared/reference/data/standards.md; what could not be confirmed there is a
  * named field of cs_rating_rules with its documented default (docs/ratings.md), so a user can see and

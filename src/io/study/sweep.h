@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Studies over a model's values: the runs' inputs (full-factorial grids, Monte Carlo, Latin hypercube)
  * from a sweep spec (load/sweepspec.h), one run and its result, and the statistics of the results
  * (Wilson intervals, Spearman rank correlation). No threads, MPI or output files here: app/sweep.c runs

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* One run of a sweep, and the check of a spec against its model before any run. Each thread has a
  * loader of its own (the loader serialises its calls into udunits2), so runs may go in parallel threads;
  * between runs it keeps the files it has parsed and drops the rest (cs_loader_reuse). */

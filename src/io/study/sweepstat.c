@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The runs' inputs (counter-based random numbers, distributions, grids, Latin hypercubes) and the
  * statistics of the results (Wilson intervals, ranks, Spearman correlation). */
 #include <math.h>
