@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The posts' lean under the pretension, as an installer tensions a rope on standing posts: every span at
  * the pretension T0 (held, not following the spans' stretch), each post turned until the ropes' and
  * rails' moment on it balances its resistance (post.c, cs_post_residual_at). The posts are tied to each

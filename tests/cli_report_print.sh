@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # report.html opens with its data sheet, and printing the page prints that sheet alone on one page of A4
 # and of Letter at 100%, with no text under 8 pt: RS1 (NCHRP Report 350 test 3-11 as run) and APS3 (ASTM
 # F2656 as run) are printed to PDF by headless chromium (`--print-to-pdf`, the paper chosen by an @page

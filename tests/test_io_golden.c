@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The command's outputs, pinned: `cablesim run` of examples/aps3.yaml and examples/roadside/rs1.yaml must
  * write summary.json, events.csv and the first rows of timeseries.csv as tests/golden/MATHS/NAME/ holds
  * them, field by field: each number within a relative 1e-9 of the pinned one (the files give 10 digits),

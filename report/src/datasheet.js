@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // The data sheet that opens report.html: one page laid out as the crash-test standards' reporting chapters
 // ask for a test's summary (NCHRP Report 350 and MASH, chapter 6; EN 1317-2's test report): the test
 // article, the vehicle, the impact and exit conditions, sequential top and side pictures at fixed times,

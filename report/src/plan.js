@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Drawings of the run from its recorded frames, as SVG: the vehicle (its schematic box between bumper and
 // hood heights, placed by its CG, roll, pitch and yaw), the barrier (posts from base to top, cables along
 // their recorded paths) in plan (x-y) and seen along the barrier (y-z), and the vehicle's path in plan
