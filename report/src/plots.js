@@ -389,7 +389,7 @@ export function buildPlots(container, data, onSeek) {
         el('figcaption', {}, `Seen from above: x along the barrier, y toward the protected side (the traffic side is below its line), at true scale. ${standardNote} After the run the path is not simulated; the exit box's crossing is judged on the wheels' path straight on along the last velocity.`),
       ),
     );
-    plots.push({ key: 'path', title: 'Path of the vehicle in plan', points: [data.series.cg_x.length], length: data.series.cg_x.length });
+    plots.push({ key: 'path', title: 'Path of the vehicle in plan', points: [data.series.cg_x.length], length: data.series.cg_x.length, labels: [] });
   } catch (e) {
     container.append(el('p', { class: 'nogl' }, `The path in plan could not be drawn: ${e.message}`));
     console.error(`path in plan: ${e.message}`);
