@@ -48,11 +48,14 @@ sanitize: deps
 # - fuzz/fuzz_loader.c, the model loader: seeded at run time from examples/, tests/good/, tests/bad/ (also
 #   each example with --set lines), replaying tests/fuzz-regressions/;
 # - fuzz/fuzz_engine.c, the engine: random valid designs (tests/design.h) run to their end;
-# - fuzz/fuzz_sweep.c, the sweep spec: seeded from the example studies.
+# - fuzz/fuzz_sweep.c, the sweep spec: seeded from the example studies;
+# - fuzz/fuzz_set.sh, `cablesim check` (the sanitized one where make sanitize built it) with --set of
+#   every numeric field at extreme values: exit status 0 or 2, every message at a place, none over 20 s.
 # Each corpus grows in $(FUZZ_BUILD)/corpus-TARGET; a crash lands in $(FUZZ_BUILD)/artifacts.
 FUZZ_CFLAGS = -std=c17 -Wall -Wextra -Wpedantic -Werror -O1 -g -fno-omit-frame-pointer -fno-sanitize-recover=all \
   -fsanitize=fuzzer,address,undefined -Iinclude -Isrc -Isrc/io -Itests -DCS_SOURCE_DIR='"$(CURDIR)"'
 FUZZ_LIBS = $(FUZZ_BUILD)/libcablesim.a $$(pkg-config --libs yaml-0.1 cairo netcdf json-c) -ludunits2 -lm
+FUZZ_SET_CS = $(if $(wildcard build-asan/cablesim),build-asan/cablesim,$(BUILD)/cablesim)
 FUZZ_RUN = LSAN_OPTIONS=suppressions=$(CURDIR)/fuzz/lsan.supp
 FUZZ_FLAGS = -max_total_time=$(FUZZ_SECONDS) -timeout=20 -print_final_stats=1 -artifact_prefix=$(FUZZ_BUILD)/artifacts/
 
@@ -80,6 +83,7 @@ fuzz: fuzz-build
 	$(FUZZ_RUN) $(FUZZ_BUILD)/fuzz_engine $(FUZZ_FLAGS) $(FUZZ_BUILD)/corpus-engine
 	$(FUZZ_RUN) $(FUZZ_BUILD)/fuzz_sweep $(FUZZ_FLAGS) -dict=fuzz/loader.dict \
 	  $(FUZZ_BUILD)/corpus-sweep $(FUZZ_BUILD)/seeds-sweep
+	$(FUZZ_RUN) bash fuzz/fuzz_set.sh $(FUZZ_SET_CS) $(FUZZ_SECONDS)
 
 # The pinned runs, rewritten from this engine: the one way to change them (tests/example.h). Built with
 # musl's maths in $(BUILD) (CS_MATH=musl: the numbers of tests/predictions/*.csv, the hashes and the

@@ -283,7 +283,7 @@ static void test_spec_errors(void **state) {
     assert_int_equal(cs_sweep_check(s, x), -1);
     assert_int_equal(s->error_count, 1);
     assert_non_null(
-        strstr(s->errors[0], "bad_level.yaml:6:42: vary: barrier.soil.soil_pressure = -47.8802589803: "));
+        strstr(s->errors[0], "bad_level.yaml:6:42: vary: barrier.soil.soil_pressure = -47.8802589803 Pa: "));
     free(x);
     cs_sweep_spec_free(s);
 }

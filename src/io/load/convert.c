@@ -50,6 +50,17 @@ static int read_value(cs_loader *l, const cs_node *n, const cs_field *f, double 
         cs_err_node(l, n, 0, "'%s' %s (expected %s)", n->text, bad, hint);
         return -1;
     }
+    const cs_range *r = cs_field_range(f);
+    double size = fabs(*out);
+    if (size > r->hi || (size > 0 && size < r->lo)) {
+        char lo[80], hi[80];
+        cs_units_show(l->units, n->text, f->q, r->lo, lo, sizeof lo);
+        cs_units_show(l->units, n->text, f->q, r->hi, hi, sizeof hi);
+        cs_err_node(l, n, 0, "'%s' is %s for %s (expected %s%s%s to %s: %s)", n->text,
+                    size > r->hi ? "too large" : "too small", f->key, f->flags & CS_POS ? "" : "0 or ",
+                    f->flags & (CS_POS | CS_NONNEG) ? "" : "a size of ", lo, hi, r->why);
+        return -1;
+    }
     return 0;
 }
 
@@ -136,12 +147,27 @@ int cs_convert_fields(cs_loader *l, const cs_node *map, void *target) {
     return fields(l, map, target, 1);
 }
 
-/* Report key's value v at its place unless it is above other's value lo. */
-static void above(cs_loader *l, const cs_node *map, const char *key, double v, const char *other, double lo,
-                  const char *unit) {
-    if (!(v > lo))
-        cs_err_node(l, at(map, key), 0, "%g %s is not above %s, %g %s (expected %s > %s)", v, unit, other, lo,
-                    unit, key, other);
+/* The node that holds a value the user changed with a --set, of two that a check involves: a problem of
+ * the two is the --set's, not the library's or the file's line it was checked against. */
+static const cs_node *blamed(const cs_node *first, const cs_node *second) {
+    return second && second->source < 0 && first->source >= 0 ? second : first;
+}
+
+/* An SI value of key in map as its node was written ("1.45 m", "4.75 ft"; SI if it is not given). */
+static void shown(const cs_loader *l, const cs_node *map, const char *key, double v, char *out, size_t size) {
+    const cs_node *n = cs_node_get(map, key);
+    cs_units_show(l->units, n && n->text ? n->text : "", field_of(map, key)->q, v, out, size);
+}
+
+/* Report key's value v at its place (or at other's, where a --set gave other) unless it is above other's
+ * value lo. */
+static void above(cs_loader *l, const cs_node *map, const char *key, double v, const char *other, double lo) {
+    if (v > lo) return;
+    char a[80], b[80];
+    shown(l, map, key, v, a, sizeof a);
+    shown(l, map, other, lo, b, sizeof b);
+    cs_err_node(l, blamed(at(map, key), cs_node_get(map, other)), 0,
+                "%s %s is not above %s, %s (expected %s > %s)", key, a, other, b, key, other);
 }
 
 /* ---- vehicle ---- */
@@ -228,7 +254,7 @@ int cs_convert_vehicle(cs_loader *l, const cs_node *v, cs_vehicle_def *out) {
         const cs_node *at = cs_node_get(v, keys[i]) ? cs_node_get(v, keys[i]) : box;
         double k = sqrt(out->inertia[i] / out->mass); /* the radius of gyration */
         if (at && !(k >= CS_GYRATION_MIN))
-            cs_err_node(l, at, 0,
+            cs_err_node(l, blamed(at, cs_node_get(v, "mass")), 0,
                         "%s %.4g kg m^2 puts the vehicle's %.4g kg %.3g m from its centre, below %.0f cm "
                         "(expected at least %.4g kg m^2: a road vehicle's mass lies decimetres to metres "
                         "from its centre; less is a mistake of unit or typing)",
@@ -237,10 +263,10 @@ int cs_convert_vehicle(cs_loader *l, const cs_node *v, cs_vehicle_def *out) {
     }
     crush_curve(l, v, out);
     if (l->error_count > before || cs_damaged(l, v)) return l->error_count - before;
-    above(l, v, "face_top", out->face_top, "face_bottom", out->face_bottom, "m");
-    above(l, v, "side_top", out->side_top, "side_bottom", out->side_bottom, "m");
-    above(l, v, "wheelbase", out->wheelbase, "cg_to_front_axle", out->cg_to_front_axle, "m");
-    above(l, v, "cg_to_front", out->cg_to_front, "cg_to_front_axle", out->cg_to_front_axle, "m");
+    above(l, v, "face_top", out->face_top, "face_bottom", out->face_bottom);
+    above(l, v, "side_top", out->side_top, "side_bottom", out->side_bottom);
+    above(l, v, "wheelbase", out->wheelbase, "cg_to_front_axle", out->cg_to_front_axle);
+    above(l, v, "cg_to_front", out->cg_to_front, "cg_to_front_axle", out->cg_to_front_axle);
     return l->error_count - before;
 }
 
@@ -484,6 +510,9 @@ static void check_slip(cs_loader *l, const cs_node *cable, const cs_cable_def *d
                     "no fitting of this cable slips (expected slip_travel with a slip_load)");
 }
 
+/* The longest span of the ropes between two supports (docs/assumptions.md, "Ranges of the inputs"). */
+#define CS_MAX_SPAN 100.0
+
 static void check_barrier(cs_loader *l, const cs_node *barrier, const cs_barrier_def *b) {
     const cs_node *cables = cs_node_get(barrier, "cables"), *anchors = cs_node_get(barrier, "anchors");
     const cs_post_def *first = &b->posts[0], *last = &b->posts[b->post_count - 1];
@@ -521,6 +550,26 @@ static void check_barrier(cs_loader *l, const cs_node *barrier, const cs_barrier
                 "the soil at its residual resistance and leaves it only when lifted past its uplift "
                 "capacity)");
     }
+    for (int p = 0; p <= b->post_count; p++) { /* the spans: anchor to post, post to post, post to anchor */
+        double a = p ? b->posts[p - 1].x : b->start_anchor.x,
+               z = p < b->post_count ? b->posts[p].x : b->end_anchor.x;
+        if (z - a <= CS_MAX_SPAN) continue;
+        const cs_node *place = p == 0               ? at(start, "x")
+                               : p == b->post_count ? at(end, "x")
+                                                    : l->post_origin[p];
+        char span[80], from[80], to[80], most[80];
+        const char *given = place->text ? place->text : "";
+        cs_units_show(l->units, given, CS_Q_LENGTH, z - a, span, sizeof span);
+        cs_units_show(l->units, given, CS_Q_LENGTH, a, from, sizeof from);
+        cs_units_show(l->units, given, CS_Q_LENGTH, z, to, sizeof to);
+        cs_units_show(l->units, given, CS_Q_LENGTH, CS_MAX_SPAN, most, sizeof most);
+        cs_err_node(
+            l, place, 0,
+            "the ropes span %s unsupported from x = %s to %s (expected at most %s between an anchor and "
+            "a post or two posts: a cable barrier's spans are a few metres, its end spans up to about 15 m)",
+            span, from, to, most);
+        break;
+    }
     if (b->start_anchor.x >= first->x)
         cs_err_node(l, at(start, "x"), 0,
                     "the start anchor (x = %g m) is inside the barrier (expected it before "
@@ -554,16 +603,17 @@ static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_de
     else if (b && v && v->front_width > 0.0 && s->angle > 0.0 && s->angle < CS_PI) {
         double corner = leading_corner_x(s, v->front_width);
         if (corner <= b->start_anchor.x || corner >= b->end_anchor.x)
-            cs_err_node(l, at(sc, at(sc, "angle") ? "angle" : "impact_x"), 0,
-                        "at %g deg the vehicle's leading front corner meets the cable line at x = %.2f m, "
-                        "%.2f m before the face's centre, outside the barrier (%.2f m to %.2f m): the vehicle "
-                        "would pass the barrier's end, not strike it (expected that corner between the "
-                        "anchors: move impact_x, or give impact_at: corner to place the corner there)",
-                        s->angle * 180.0 / CS_PI, corner, fabs(corner - s->impact_x), b->start_anchor.x,
-                        b->end_anchor.x);
+            cs_err_node(
+                l, at(sc, at(sc, "angle") ? "angle" : "impact_x"), 0,
+                "at %g deg the vehicle's leading front corner meets the cable line at x = %.2f m, "
+                "%.2f m before the face's centre, outside the barrier (%.2f m to %.2f m): the vehicle "
+                "would pass the barrier's end, not strike it (expected that corner between the "
+                "anchors: move impact_x, or give impact_at: corner to place the corner there)",
+                s->angle * 180.0 / CS_PI, corner, fabs(corner - s->impact_x), b->start_anchor.x,
+                b->end_anchor.x);
     }
     if (b) return; /* the rest was checked without the barrier */
-    above(l, sc, "t_end", s->t_end, "dt", s->dt, "s");
+    above(l, sc, "t_end", s->t_end, "dt", s->dt);
     const cs_node *every = at(sc, "output_interval");
     double frames = s->output_interval > 0.0 ? s->t_end / s->output_interval : 0.0;
     if (every && s->output_interval > 0.0 && s->output_interval < s->dt)
@@ -576,7 +626,7 @@ static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_de
                     "%.3g frames to the end time (t_end / output_interval) exceed the limit of %.0g "
                     "(expected a longer interval)",
                     frames, (double)CS_MAX_FRAMES);
-    above(l, sc, "speed", s->speed, "stop_speed", s->stop_speed, "m/s");
+    above(l, sc, "speed", s->speed, "stop_speed", s->stop_speed);
 }
 
 static const cs_node *need(cs_loader *l, const cs_node *root, const char *key, const char *hint) {

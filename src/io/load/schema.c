@@ -392,6 +392,66 @@ const cs_table cs_table_model = {"model",
                                  "a file of parts (like data/*.yaml) needs only parts.",
                                  CS_T_NONE, model_fields, N(model_fields)};
 
+/* The ranges of docs/assumptions.md ("Ranges of the inputs"): each quantity's, then the fields whose kind
+ * of value is narrower or wider than their quantity's. */
+static const cs_range quantity_ranges[CS_Q_COUNT] = {
+    [CS_Q_NUMBER] = {1e-6, 1e6,
+                     "a coefficient, ratio or factor of a barrier or vehicle lies within 10^-6 to 10^6"},
+    [CS_Q_LENGTH] =
+        {1e-4, 1e4,
+         "no part of a barrier or vehicle is thinner than 0.1 mm, and no barrier or run is longer than "
+         "10 km"},
+    [CS_Q_AREA] = {1e-8, 1.0,
+                   "a steel area of a rope, post or rail: 0.01 mm^2 is a thread, 1 m^2 a bridge girder"},
+    [CS_Q_SECTION_MODULUS] = {1e-9, 0.1,
+                              "a post's section: 1 mm^3 is a wire, 0.1 m^3 five times the largest rolled "
+                              "steel shape's"},
+    [CS_Q_SECOND_MOMENT] = {1e-12, 0.1,
+                            "a post's or rail's section: 1 mm^4 is a wire, 0.1 m^4 ten times the largest "
+                            "rolled steel shape's"},
+    [CS_Q_MASS] = {1.0, 1e6, "a vehicle or an anchor block: 1 kg to 1,000 t (a loaded road train is 200 t)"},
+    [CS_Q_MASS_PER_LENGTH] = {1e-3, 1e4,
+                              "a rope, post or rail: 1 g/m is a thread, 10 t/m ten times a rail's"},
+    [CS_Q_INERTIA] = {1e-3, 1e8,
+                      "a road vehicle's moment of inertia: 1e8 kg m^2 is a 1,000-t body 30 m long"},
+    [CS_Q_TIME] =
+        {1e-8, 1e4,
+         "a step below 10 ns resolves nothing the model holds (a wave in steel crosses 0.05 mm in it), "
+         "and a crash is over in seconds, not hours"},
+    [CS_Q_SPEED] = {1e-3, 100.0, "a road vehicle: 1 mm/s to 100 m/s (224 mph), the engine's limit"},
+    [CS_Q_ACCELERATION] = {1e-3, 100.0, "gravity: 0 (none) or up to 100 m/s^2, the engine's limit"},
+    [CS_Q_FORCE] = {1.0, 1e8,
+                    "a rope's, post's or anchor's force: 1 N to 100 MN (the strongest barrier rope "
+                    "breaks near 1 MN)"},
+    [CS_Q_STIFFNESS] = {1.0, 1e12,
+                        "a vehicle's crush: 1 N/m to 1 TN/m (a solid steel block is about 1e10 N/m)"},
+    [CS_Q_PRESSURE] = {1.0, 2e12,
+                       "a soil's or steel's stress or modulus: 1 Pa to 2 TPa (diamond's modulus is 1.1 TPa)"},
+    [CS_Q_ANGLE] = {1.7e-4, 2 * 3.14159265358979323846, "an angle of 0.01 deg to a turn"},
+    [CS_Q_ENERGY] = {1e-3, 1e10, "1 mJ to 10 GJ (a 100-t body at 100 m/s is 0.5 GJ)"},
+    [CS_Q_PRESSURE_GRADIENT] = {1.0, 1e9, "a soil's friction per depth: 1 Pa/m to 1 GPa/m"},
+};
+
+static const struct {
+    const char *key;
+    cs_range range;
+} field_ranges[] = {
+    {"pretension",
+     {100.0, 1e7,
+      "a rope taut between posts: 100 N (22 lbf, a rope pulled by hand) to 10 MN; less leaves "
+      "it hanging in sags the rope's own weight sets, which the model is not for"}},
+    {"solver_tolerance", {1e-15, 1e6, "a relative residual: 1e-15 is double precision's"}},
+    {"crush_tolerance", {1e-15, 1e6, "a relative change: 1e-15 is double precision's"}},
+    {"max_steps", {1.0, 1e9, "a billion steps take days"}},
+    {"dynamic_factor", {1e-3, 1e3, "soil resistance under impact over Eq. 21's: measured 1 to 10"}},
+};
+
+const cs_range *cs_field_range(const cs_field *f) {
+    for (size_t i = 0; i < sizeof field_ranges / sizeof field_ranges[0]; i++)
+        if (strcmp(field_ranges[i].key, f->key) == 0) return &field_ranges[i].range;
+    return &quantity_ranges[f->q];
+}
+
 int cs_field_unset(const cs_field *f, const void *at) {
     if (!(f->flags & CS_OWN)) return 0;
     for (int i = 0; i < f->sub->count; i++) {
@@ -600,7 +660,11 @@ int cs_schema_markdown(FILE *out) {
             "so a named file that is not a model (its top is not a mapping of model keys) is reported at "
             "the place that names it, with its line and column, never with its text.\n\n"
             "Every dimensional value takes a unit: `\"8 ft\"`, `1.75 in`, `52 kip`, `8000 psf`, `40 mph`, "
-            "`15000 lb` (mass), `52 kip` or `5 lbf` (force), `0.5 ms`, `45 deg`. A bare number is SI. "
+            "`15000 lb` (mass), `52 kip` or `5 lbf` (force), `0.5 ms`, `45 deg`. A number without its unit "
+            "is refused (`35` for a speed: give `35 mph`): it was read as SI, which "
+            "made `angle: 90` 90 radians; 0 needs none, and a pure number (a ratio, a coefficient) is bare. "
+            "Numbers are decimal (no `0x28`, `inf` or `nan`), each value lies within the range of its kind "
+            "(docs/assumptions.md, Ranges of the inputs), and a YAML tag (`!!str`) is refused, not ignored. "
             "Units are read by udunits2, plus `mph`, `kph`, `psf`, `ksf`, `kips`, `deg`, `lbm` and `g` "
             "(standard gravity where an acceleration is expected). A unit of the wrong kind is an error.\n\n"
             "`cablesim run FILE --set PATH=VALUE` replaces any value by its path, e.g. "

@@ -89,6 +89,17 @@ extern const cs_table cs_table_model, cs_table_parts, cs_table_vehicle, cs_table
     cs_table_section, cs_table_barrier, cs_table_soil, cs_table_cable, cs_table_cable_end, cs_table_posts,
     cs_table_footing, cs_table_anchors, cs_table_anchor, cs_table_rail_part, cs_table_rail, cs_table_scenario;
 
+/* The range of a physical value, in SI: its size at most hi and, where it is not 0, at least lo. Each is an
+ * assumption (docs/assumptions.md, "Ranges of the inputs"), wide: only a value that no barrier, vehicle
+ * or run can have is refused. why says what bounds it. */
+typedef struct cs_range {
+    double lo, hi;
+    const char *why;
+} cs_range;
+
+/* The range of a quantity field: its own, else its quantity's. */
+const cs_range *cs_field_range(const cs_field *f);
+
 /* 1 if f is a CS_OWN map that gives nothing at at (its values are its parent's). */
 int cs_field_unset(const cs_field *f, const void *at);
 /* The index of key in t, or -1. */

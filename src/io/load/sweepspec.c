@@ -306,12 +306,11 @@ static int path_field(const char *path, cs_sweep_var *v, char *why, size_t why_s
 /* ---- values ---- */
 
 /* The unit after the number in text, as v's shown unit, if v has none yet: a unit udunits2 reads as a
- * multiple of the SI one (0 of it is 0). A bare number, or any other: the SI label (a force: kN). */
+ * multiple of the SI one (0 of it is 0). A bare number (0, or a pure number), or any other: the SI label. */
 static void shown_unit(cs_units *u, cs_sweep_var *v, const char *text) {
     if (v->shown_scale > 0) return;
-    int force = v->numeric && !v->integer && v->q == CS_Q_FORCE; /* a force in N is shown in kN */
-    snprintf(v->shown_unit, sizeof v->shown_unit, "%s", force ? "kN" : v->unit);
-    v->shown_scale = force ? 1e3 : 1;
+    snprintf(v->shown_unit, sizeof v->shown_unit, "%s", v->unit);
+    v->shown_scale = 1;
     char *rest, probe[64];
     strtod(text, &rest);
     while (*rest == ' ')

@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "units_int.h"
 
@@ -68,31 +69,78 @@ static const char *kind_of(cs_units *u, void *unit) {
     return convertible(u, unit, CS_Q_NUMBER) ? "pure number" : NULL;
 }
 
-int cs_units_read(cs_units *u, const char *text, cs_quantity q, double *si, char *why, size_t why_size) {
-    char *end;
+/* The end of a decimal number at s ([+-]digits[.digits][e[+-]digits]), or NULL: strtod's hexadecimal,
+ * "inf" and "nan" are not a model's numbers ("0x28 mph" is not 40 mph). */
+static const char *decimal_end(const char *s) {
+    const char *p = s + (*s == '+' || *s == '-'), *digits = p;
+    while (isdigit((unsigned char)*p))
+        p++;
+    int whole = p > digits;
+    if (*p == '.') {
+        const char *frac = ++p;
+        while (isdigit((unsigned char)*p))
+            p++;
+        if (!whole && p == frac) return NULL;
+    } else if (!whole) {
+        return NULL;
+    }
+    if (*p == 'e' || *p == 'E') {
+        const char *e = p + 1 + (p[1] == '+' || p[1] == '-'), *exp = e;
+        while (isdigit((unsigned char)*e))
+            e++;
+        if (e > exp) p = e;
+    }
+    return p;
+}
+
+/* The unit of a value's text: what follows its number, trimmed, in unit (empty: none). -1 if it has no
+ * decimal number or the unit is too long. */
+static int unit_of(const char *text, const char **number, char *unit, size_t size) {
     while (isspace((unsigned char)*text))
         text++;
-    double value = strtod(text, &end);
-    if (end == text || !isfinite(value)) {
-        snprintf(why, why_size, "'%s' is not a number with a unit", text);
-        return -1;
-    }
-    char unit_text[64];
+    const char *end = decimal_end(text);
+    *number = text;
+    if (!end) return -1;
     while (isspace((unsigned char)*end))
         end++;
     size_t n = strlen(end);
     while (n > 0 && isspace((unsigned char)end[n - 1]))
         n--;
-    if (n == 0) { /* a bare number is SI */
+    if (n >= size) return -1;
+    memcpy(unit, end, n);
+    unit[n] = '\0';
+    return 0;
+}
+
+int cs_units_read(cs_units *u, const char *text, cs_quantity q, double *si, char *why, size_t why_size) {
+    char unit_text[64];
+    const char *number;
+    if (unit_of(text, &number, unit_text, sizeof unit_text) != 0) {
+        if (decimal_end(number))
+            snprintf(why, why_size, "unit '%.20s...' is too long", number);
+        else
+            snprintf(why, why_size, "'%s' is not a number with a unit", number);
+        return -1;
+    }
+    if (strspn(number, "+-") < 2 && strncasecmp(number + strspn(number, "+-"), "0x", 2) == 0) {
+        snprintf(why, why_size, "'%s' is not a decimal number", number);
+        return -1;
+    }
+    double value = strtod(number, NULL);
+    if (!isfinite(value)) {
+        snprintf(why, why_size, "'%s' is out of range", number);
+        return -1;
+    }
+    if (!unit_text[0]) { /* a pure number; a quantity's 0 is 0 in any unit */
+        if (q != CS_Q_NUMBER && value != 0) {
+            const char *example = strchr(quantities[q].example, ' ');
+            snprintf(why, why_size, "'%s' has no unit: give one, e.g. %.*s%s", number,
+                     (int)strcspn(number, " \t"), number, example ? example : "");
+            return -1;
+        }
         *si = value;
         return 0;
     }
-    if (n >= sizeof unit_text) {
-        snprintf(why, why_size, "unit '%.*s...' is too long", 20, end);
-        return -1;
-    }
-    memcpy(unit_text, end, n);
-    unit_text[n] = '\0';
     const char *lookup = (q == CS_Q_ACCELERATION && strcmp(unit_text, "g") == 0) ? "gee" : unit_text;
     int rc = 0;
     void *unit = u->ops->parse(u, lookup);
@@ -109,10 +157,25 @@ int cs_units_read(cs_units *u, const char *text, cs_quantity q, double *si, char
     }
     if (unit) u->ops->release(u, unit);
     if (rc == 0 && !isfinite(*si)) {
-        snprintf(why, why_size, "'%s' is out of range", text);
+        snprintf(why, why_size, "'%s' is out of range", number);
         rc = -1;
     }
     return rc;
+}
+
+void cs_units_show(cs_units *u, const char *text, cs_quantity q, double si, char *out, size_t size) {
+    char unit[64], one[80], why[160];
+    const char *number;
+    double factor = 0;
+    if (unit_of(text, &number, unit, sizeof unit) == 0 && unit[0]) {
+        snprintf(one, sizeof one, "1 %s", unit);
+        if (cs_units_read(u, one, q, &factor, why, sizeof why) != 0 || !(factor > 0)) factor = 0;
+    }
+    if (factor > 0)
+        snprintf(out, size, "%.4g %s", si / factor, unit);
+    else
+        snprintf(out, size, "%.4g%s%s", si, q == CS_Q_NUMBER ? "" : " ",
+                 q == CS_Q_NUMBER ? "" : quantities[q].label);
 }
 
 /* A unit system from a table: each unit's factor to every quantity's SI unit (NAN: not a unit of it). */

@@ -60,8 +60,12 @@ int cs_units_write_table(cs_units *u, const char *const *texts, int count, FILE 
  * filled on a malformed table or no memory. */
 cs_units *cs_units_from_table(const char *table, char *why, size_t why_size);
 
-/* Read "40 mph", "1.75in", "0.15" (a bare number is SI) as quantity q, in SI. Returns 0, or -1 with
- * why filled ("'40 kg' is a mass" ...). */
+/* Read "40 mph", "1.75in", "0.15" (a pure number) as quantity q, in SI. The number is decimal (no "0x28",
+ * "inf" or "nan"); a quantity of a unit needs its unit ("35" is refused for a speed: a bare number is
+ * not read as SI), but for 0. Returns 0, or -1 with why filled ("'40 kg' is a mass" ...). */
 int cs_units_read(cs_units *u, const char *text, cs_quantity q, double *si, char *why, size_t why_size);
+/* An SI value of quantity q in the unit of text (a value as the user gave it, "35 mph"): "15.66 mph"; in
+ * SI where text has no unit u reads as one of q. */
+void cs_units_show(cs_units *u, const char *text, cs_quantity q, double si, char *out, size_t size);
 
 #endif

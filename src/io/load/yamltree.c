@@ -153,9 +153,18 @@ static void read_events(reader *r, yaml_parser_t *parser) {
             break;
         }
         yaml_event_type_t e = ev.type;
+        const yaml_char_t *tag = e == YAML_SCALAR_EVENT           ? ev.data.scalar.tag
+                                 : e == YAML_MAPPING_START_EVENT  ? ev.data.mapping_start.tag
+                                 : e == YAML_SEQUENCE_START_EVENT ? ev.data.sequence_start.tag
+                                                                  : NULL;
         int rc = -2;
-        if (e == YAML_SCALAR_EVENT || e == YAML_ALIAS_EVENT || e == YAML_MAPPING_START_EVENT ||
-            e == YAML_SEQUENCE_START_EVENT)
+        if (tag) { /* a tag would change no value cablesim reads, so it would be ignored: refused */
+            char what[160];
+            snprintf(what, sizeof what, "a YAML tag ('%.60s') is not read (expected the value alone)",
+                     (const char *)tag);
+            fail(t, what, ev.start_mark);
+        } else if (e == YAML_SCALAR_EVENT || e == YAML_ALIAS_EVENT || e == YAML_MAPPING_START_EVENT ||
+                   e == YAML_SEQUENCE_START_EVENT)
             rc = node(r, &ev,
                       e == YAML_SCALAR_EVENT          ? CS_Y_SCALAR
                       : e == YAML_ALIAS_EVENT         ? CS_Y_ALIAS

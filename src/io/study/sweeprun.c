@@ -11,6 +11,15 @@
 #include "rating.h"
 #include "sweep.h"
 
+/* The --set value of variable v for an input x: its text (runs.csv's), with the SI unit of a quantity,
+ * which a model takes only with its unit. */
+static void set_value(const cs_sweep_var *v, double x, char *buf, size_t size) {
+    char value[256];
+    cs_sweep_value_text(v, x, value, sizeof value);
+    int unit = v->numeric && !v->integer && v->q != CS_Q_NUMBER;
+    snprintf(buf, size, "%s%s%s", value, unit ? " " : "", unit ? cs_quantity_get(v->q)->si : "");
+}
+
 /* Queue the fixed sets, then the inputs of a run (var < 0: all; else all of xrow but var at value
  * x_var), and load. */
 static int load_run(cs_loader *l, const cs_sweep_spec *s, const double *xrow, int var, double x_var,
@@ -18,8 +27,8 @@ static int load_run(cs_loader *l, const cs_sweep_spec *s, const double *xrow, in
     for (int k = 0; k < s->set_count; k++)
         cs_loader_set(l, s->sets[k]);
     for (int j = 0; j < s->var_count; j++) {
-        char value[256], set[1024];
-        cs_sweep_value_text(&s->vars[j], j == var ? x_var : xrow[j], value, sizeof value);
+        char value[300], set[1024];
+        set_value(&s->vars[j], j == var ? x_var : xrow[j], value, sizeof value);
         snprintf(set, sizeof set, "%s=%s", s->vars[j].path, value);
         cs_loader_set(l, set);
     }
@@ -91,8 +100,8 @@ static void map_errors(cs_sweep_spec *s, cs_loader *l, const double *xrow, int v
         char text[1400] = "";
         int at_line = 0, at_col = 0;
         for (int j = 0; j < s->var_count && !text[0]; j++) {
-            char value[256], prefix[1024];
-            cs_sweep_value_text(&s->vars[j], j == var ? x_var : xrow[j], value, sizeof value);
+            char value[300], prefix[1024];
+            set_value(&s->vars[j], j == var ? x_var : xrow[j], value, sizeof value);
             int n = snprintf(prefix, sizeof prefix, "--set %s=%s: ", s->vars[j].path, value);
             if (strncmp(e, prefix, (size_t)n) != 0) continue;
             snprintf(text, sizeof text, "vary: %s = %s: %s", s->vars[j].path, value, e + n);
