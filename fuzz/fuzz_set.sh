@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
 # A fuzzer of --set: `cablesim check MODEL --set PATH=VALUE` for every numeric field of the schema (read
 # from `cablesim schema`, placed in MODEL's first cable, post, rail, anchor and the vehicle and scenario)
 # at extreme values (0, -1, 1e-30, 1e30, nan, inf, hex, a huge string, a wrong unit, a bare number), then
