@@ -5,8 +5,9 @@
 # report.html (its text made by the page's own code: tests/one_truth.mjs), events.csv and timeseries.csv:
 # the designation as run, the peak deceleration and its time at the terminal's precision, the
 # penetration (or how far beyond), the cables counted from 0, the end fittings' strength and the events
-# agree. The designation as run is also rate's row for the same condition and a sweep's runs.csv entry,
-# and rate's conclusion is its "rating". Exit 77 (skipped) for a build without node (no report.html).
+# agree; compare's table gives each run's own numbers. The designation as run is also rate's row for the
+# same condition and a sweep's runs.csv entry, and rate's conclusion is its "rating". Exit 77 (skipped)
+# for a build without node (no report.html).
 source "$(dirname "$0")/lib.sh"
 command -v node >/dev/null || { echo "no node: skipped"; exit 77; }
 weak=(--set "barrier.cables[0].termination_efficiency=0.25" --set "barrier.cables[1].termination_efficiency=0.25")
@@ -20,6 +21,31 @@ for what in designed weak; do
     check "$what: every output agrees (tests/one_truth.mjs)" '[ $? -eq 0 ] && [ "$(grep -c "^ok " <<<"$out")" -ge 16 ] || { echo "$out"; false; }'
 done
 check "designed: the truck stops, the breakthrough gets through" 'grep -q "\"outcome\":\"stopped\"" "$tmp/designed/summary.json" && grep -q "\"outcome\":\"breakthrough\"" "$tmp/weak/summary.json"'
+# compare of the two runs: each column of compare.csv gives its run's summary.json, to the digit written
+"$cs" compare "$tmp/designed" "$tmp/weak" -o "$tmp/compare" >/dev/null 2>&1
+check "compare: exit 0 and compare.csv" '[ $? -eq 0 ] && [ -s "$tmp/compare/compare.csv" ]'
+out=$(node -e '
+const fs = require("fs"), [csv, ...runs] = process.argv.slice(1);
+const rows = fs.readFileSync(csv, "utf8").trim().split("\n").map((l) => l.split(","));
+const keys = { outcome: "outcome", "max 50-ms deceleration": "max_50ms_decel_g",
+  "time of the max 50-ms deceleration": "t_max_50ms_decel_s", "max dynamic penetration": "max_dynamic_penetration_m",
+  "penetration beyond": "penetration_beyond_m", "max barrier deflection": "max_barrier_deflection_m",
+  "working width": "working_width_m", "exit speed": "exit_speed_mps", "max rope tension": "max_cable_tension_n" };
+let bad = 0, seen = 0;
+runs.forEach((dir, k) => {
+  const sj = JSON.parse(fs.readFileSync(dir + "/summary.json", "utf8"));
+  for (const r of rows) {
+    const key = keys[r[0]];
+    if (!key) continue;
+    const want = sj[key], got = r[2 + k];
+    const same = want === null ? got === "" : typeof want === "string" ? got === want : Math.abs(Number(got) - want) <= 1e-9 * Math.abs(want);
+    seen++;
+    if (!same) { bad++; console.log(`${dir}: ${r[0]}: compare.csv ${got}, summary.json ${want}`); }
+  }
+});
+console.log(`${seen} values, ${bad} differ`);
+process.exit(bad || seen < 18 ? 1 : 0);' "$tmp/compare/compare.csv" "$tmp/designed" "$tmp/weak")
+check "compare: compare.csv gives each run's summary.json values" '[ $? -eq 0 ] || { echo "$out"; false; }'
 label() { grep -o '"standard":"astm-f2656","label":"[^"]*"' "$1/summary.json" | cut -d'"' -f8; }
 check "summary.json: APS3's designation as run is M40/P2" '[ "$(label "$tmp/designed")" = M40/P2 ]'
 # rate at the run's own condition (M40) gives the run's designation on its row, and calls its conclusion
