@@ -151,14 +151,39 @@ void cs_cable_commit(const cs_model *model, int c, cs_state *s) {
     cs->end_load = cs_termination_load(cm, cs, NULL);
 }
 
+/* The threaded post whose hole bears the largest tension (the larger of the two spans on it), if that passes
+ * the rope's strength there, with that tension in *t; -1 if none does, or if the rope keeps its whole
+ * strength at the holes. */
+static int hole_break(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs, double *t) {
+    if (cm->hole_strength <= 0.0) return -1;
+    int worst = -1;
+    *t = 0.0;
+    for (int i = 1; i + 1 < cs->node_count; i++) {
+        int p = cs->node[i];
+        if (p < 0 || model->posts[p].attach != CS_ATTACH_THROUGH) continue;
+        double ti = fmax(cs->tension[i - 1], cs->tension[i]);
+        if (ti > *t) *t = ti, worst = p;
+    }
+    return *t > cm->hole_strength ? worst : -1;
+}
+
 /* A span strained to the breaking strain breaks the cable (cable_break, with its largest span tension);
- * an end whose rope has slipped through its fitting by the slip travel, or else an end span whose tension
- * exceeds its fitting's strength, breaks it at that fitting (termination_break, with the end and that
- * span's tension); from then on it carries nothing. */
+ * so does a span over a threaded post's hole whose tension passes the rope's strength there (cable_break
+ * at that post, with that tension); an end whose rope has slipped through its fitting by the slip travel,
+ * or else an end span whose tension exceeds its fitting's strength, breaks it at that fitting
+ * (termination_break, with the end and that span's tension); from then on it carries nothing. */
 int cs_cable_check_break(const cs_model *model, int c, cs_state *s) {
     const cs_cable_model *cm = &model->cables[c];
     cs_cable_state *cs = &s->cables[c];
     if (cs->status != CS_CABLE_INTACT) return 0;
+    double t_hole = 0.0;
+    int hole = hole_break(model, cm, cs, &t_hole);
+    if (hole >= 0) {
+        cs_cable_release(cs, CS_CABLE_BROKEN);
+        cs_event *e = cs_event_add(model, s, CS_EVENT_CABLE_BREAK, CS_ELEMENT_CABLE, c, t_hole);
+        if (e) e->post = hole;
+        return 1;
+    }
     int strained = cs->max_strain >= cm->rope.e_break, end = cs_termination_run_out(cm, cs);
     if (!strained && end < 0 && cs->end_load <= 1.0) return 0;
     double tmax = 0.0;

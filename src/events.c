@@ -50,6 +50,7 @@ cs_event *cs_event_add(const cs_model *model, cs_state *s, cs_event_type type, c
     e->value = value;
     e->cable_end = -1;
     e->cable = -1;
+    e->post = -1;
     return e;
 }
 

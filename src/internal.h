@@ -63,6 +63,8 @@ typedef struct cs_cable_model {
     double slip_load[2];            /* end span tension at which the rope slips through each end's fitting,
                                        N (0: it does not slip) */
     double slip_travel[2];          /* rope each lets slip before the rope runs out of it, m */
+    double hole_strength;           /* tension at which it breaks where it runs through a threaded post's
+                                       hole, N (0: no loss there) */
     cs_rope rope;
 } cs_cable_model;
 

@@ -402,6 +402,7 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
         cm->pretension = d->pretension;
         cm->mu_post = d->post_friction;
         derive_rope(&d->rope, scenario->gravity, &cm->rope);
+        cm->hole_strength = d->hole_efficiency * cm->rope.fu;
         for (int k = 0; k < 2; k++) {
             cm->termination_strength[k] = cs_cable_end_efficiency(d, k, NULL) * cm->rope.fu;
             cm->slip_load[k] = cs_cable_end_slip(d, k, &cm->slip_travel[k]);

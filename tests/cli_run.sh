@@ -46,10 +46,10 @@ check "timeseries header has units" 'head -1 "$out/timeseries.csv" | grep -q "^t
 check "every header cell of timeseries.csv and events.csv is \"name [unit]\" or a name alone (no unit suffix)" \
     'cells=$(head -qn1 "$out/timeseries.csv" "$out/events.csv" | tr , "\n"); [ "$(wc -l <<<"$cells")" -gt 20 ] && ! grep -vqE "^[a-z0-9_]+( \[[^]]+\])?\$" <<<"$cells" && ! grep -qE "_(s|m|n|j|g|rad|mps|mps2|si)\$" <<<"$cells"'
 check "timeseries has rows" '[ "$(wc -l <"$out/timeseries.csv")" -gt 10 ]'
-check "events header" 'head -1 "$out/events.csv" | grep -q "^t \[s\],type,element_kind,element,value,value_unit,cable_end,cable$"'
+check "events header" 'head -1 "$out/events.csv" | grep -q "^t \[s\],type,element_kind,element,value,value_unit,cable_end,cable,post$"'
 # APS3's first events: its middle posts hinge at their plastic moment, Zx Fy = 7,270.57 N m; every
 # event's value has its unit, and none but a termination event has a cable end
-check "a hinge's moment in N m" 'grep -qE "^[0-9.]+,post_hinge,post,[0-9]+,7270\.57[0-9]*,N m,,$" "$out/events.csv"'
+check "a hinge's moment in N m" 'grep -qE "^[0-9.]+,post_hinge,post,[0-9]+,7270\.57[0-9]*,N m,,,$" "$out/events.csv"'
 check "every event has a unit" 'awk -F, "NR > 1 && \$6 == \"\" { bad = 1 } END { exit bad }" "$out/events.csv"'
 check "no cable end but a termination event's" 'awk -F, "NR > 1 && \$2 !~ /^termination_/ && \$7 != \"\" { bad = 1 } END { exit bad }" "$out/events.csv"'
 

@@ -266,6 +266,44 @@ static void termination_breaks_at_its_efficiency(void **state) {
 }
 
 /* A world whose cable 0 has the fitting `kind` (efficiency eff) and its ends their own. */
+/* Where the rope runs through a threaded post's hole it keeps hole_efficiency of its strength: a span on
+ * such a post breaks the rope at that post once its tension passes 0.5 Fu, and holds just below it; at a
+ * post the rope is not threaded through (a slot) the same span holds, and without the loss (the default)
+ * it holds to its own strength. Fittings as strong as the rope, so that only the hole can break it. */
+static void a_rope_breaks_at_its_strength_in_a_hole(void **state) {
+    (void)state;
+    static world w;
+    for (int k = 0; k < 4; k++) {
+        fixture_aps3(&w.fx);
+        w.fx.cables[0].rope.mass_per_length = 0.0;
+        w.fx.cables[0].termination_efficiency = 1.0;
+        w.fx.cables[0].hole_efficiency = k == 3 ? 0.0 : 0.5;
+        if (k == 2)
+            for (int p = 0; p < w.fx.barrier.post_count; p++)
+                w.fx.posts[p].attachment = CS_ATTACH_SLOT;
+        cs_error err;
+        w.model = cs_model_create(&w.fx.barrier, &w.fx.vehicle, &w.fx.scenario, &err);
+        assert_non_null(w.model);
+        w.state = cs_state_create(w.model, &err);
+        assert_non_null(w.state);
+        const cs_rope *r = &w.model->cables[0].rope;
+        CHECK_REL(w.model->cables[0].hole_strength, k == 3 ? 0.0 : 0.5 * r->fu, 1e-15);
+        double t = (k == 0 ? 0.49 : 0.51) * r->fu; /* on the elastic slope, below 0.6 Fu */
+        double strain[3] = {0.0021, t / r->ea, 0.0021};
+        cs_cable_state *cs = lay_ends(&w, strain);
+        CHECK_REL(cs->tension[1], t, 1e-9);
+        assert_int_equal(cs_cable_check_break(w.model, 0, w.state), k == 1);
+        if (k == 1) {
+            const cs_event *ev = cs_state_event(w.state, cs_state_event_count(w.state) - 1);
+            assert_int_equal(ev->type, CS_EVENT_CABLE_BREAK);
+            assert_int_equal(ev->post, 0); /* of the two posts the span rests on, the first bears the most */
+            CHECK_REL(ev->value, t, 1e-9);
+            assert_int_equal(cs->status, CS_CABLE_BROKEN);
+        }
+        world_free(&w);
+    }
+}
+
 static world *make_world_ends(cs_termination kind, double eff, cs_cable_end_def start, cs_cable_end_def end,
                               cs_error *err) {
     static world w;
@@ -512,6 +550,7 @@ int main(void) {
         cmocka_unit_test(sag_tension_solves_its_cubic),
         cmocka_unit_test(breaking_strain_breaks_the_cable),
         cmocka_unit_test(termination_breaks_at_its_efficiency),
+        cmocka_unit_test(a_rope_breaks_at_its_strength_in_a_hole),
         cmocka_unit_test(each_end_has_its_own_strength),
         cmocka_unit_test(each_end_breaks_at_its_own_fitting),
         cmocka_unit_test(a_fitting_slips_at_its_load_and_runs_out),

@@ -78,6 +78,8 @@ typedef struct cs_cable_def {
                                       (0: none; they hold to their strength, as correctly made clips do) */
     double slip_travel;            /**< rope a fitting lets slip before the rope runs out of it (a clip's
                                       turn-back), m; needed with a slip_load */
+    double hole_efficiency;        /**< its strength over the rope's Fu where it runs through a hole at a
+                                      threaded post (0: the rope's own; docs/theory.md, APS1) */
     cs_cable_end_def ends[2];      /**< each end's own fitting: 0 at the start anchor (low x), 1 at the
                                       end anchor (cs_default_cable_def: both the cable's) */
     cs_rope_def rope;              /**< its rope */

@@ -108,7 +108,8 @@ CS_API cs_status cs_run(const cs_model *model, cs_state *state, cs_output_fn on_
 /* ---- events ---- */
 /** What happened: a failure, a release or the run's end. */
 typedef enum cs_event_type {
-    CS_EVENT_CABLE_BREAK = 0,     /**< a rope breaks along a span (value: its largest span tension, N) */
+    CS_EVENT_CABLE_BREAK = 0,     /**< a rope breaks along a span, or at a threaded post's hole (post: that
+                                     post; value: its largest span tension there, N) */
     CS_EVENT_TERMINATION_BREAK,   /**< a rope's end fitting lets go (value: that end span's tension, N;
                                        cable_end: which end) */
     CS_EVENT_POST_HINGE,          /**< a plastic hinge forms at a post's base (value: its capacity, N m) */
@@ -150,6 +151,7 @@ typedef struct cs_event {
     double value;  /**< what triggered it, SI: by type (cs_event_type) */
     int cable_end; /**< a termination event's rope end: 0 at the start anchor, 1 at the end anchor; else -1 */
     int cable;     /**< the cable a post's slot or hook lets go (cable_release); else -1 */
+    int post;      /**< the post at whose hole a rope broke (cable_break there); else -1 */
 } cs_event;
 
 /** An event type's name in events.csv and summary.json: "cable_break", "post_hinge", ... */

@@ -240,6 +240,9 @@ static const cs_field cable_fields[] = {
         "slip_travel"),
     QTY("slip_travel", CS_Q_LENGTH, CS_POS, cs_cable_def, slip_travel,
         "rope a fitting lets slip before the rope runs out of it (a clip's turn-back)"),
+    QTY("hole_efficiency", CS_Q_NUMBER, CS_POS | CS_MAX1, cs_cable_def, hole_efficiency,
+        "the rope's strength over its own where it runs through a hole at a threaded post: it breaks there "
+        "when a span on the post passes it (not given: no loss at the holes)"),
     SUB("start", CS_F_MAP, CS_OWN, (long)offsetof(cs_cable_def, ends[0]), cs_table_cable_end,
         "the fitting at the start anchor (low x), where not the cable's"),
     SUB("end", CS_F_MAP, CS_OWN, (long)offsetof(cs_cable_def, ends[1]), cs_table_cable_end,

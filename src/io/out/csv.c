@@ -96,7 +96,7 @@ int cs_write_timeseries(FILE *f, const cs_record *rec, char *why, size_t why_siz
 int cs_write_events(FILE *f, const cs_state *state, char *why, size_t why_size) {
     fprintf(
         f,
-        "t [s],type,element_kind,element,value,value_unit,cable_end,cable\n"); /* value: in its row's unit */
+        "t [s],type,element_kind,element,value,value_unit,cable_end,cable,post\n"); /* value: in its row's unit */
     cs_wout w = {f, 0, ""};
     for (int i = 0; i < cs_state_event_count(state) && !w.bad; i++) {
         const cs_event *e = cs_state_event(state, i);
@@ -106,6 +106,8 @@ int cs_write_events(FILE *f, const cs_state *state, char *why, size_t why_size) 
         cs_w_num(&w, e->value, "an event's value");
         fprintf(f, ",%s,%s,", cs_event_value_unit(e->type), cs_event_cable_end_name(e));
         if (e->cable >= 0) fprintf(f, "%d", e->cable); /* the cable a slot or hook let go */
+        fputc(',', f);
+        if (e->post >= 0) fprintf(f, "%d", e->post); /* the post at whose hole a rope broke */
         fputc('\n', f);
     }
     if (w.bad) snprintf(why, why_size, "events.csv: %s", w.why);

@@ -500,6 +500,10 @@ int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model
             jkey(&w, &ef, "cable");
             fprintf(f, "%d", e->cable);
         }
+        if (e->post >= 0) {
+            jkey(&w, &ef, "post");
+            fprintf(f, "%d", e->post);
+        }
         fprintf(f, "}");
     }
     fprintf(f, "],\n\"inputs\":");

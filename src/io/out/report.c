@@ -39,6 +39,9 @@ static void events(FILE *f, const cs_state *state) {
         else if (e->cable >= 0) /* a cable a post let go */
             fprintf(f, "    %8.4f s  %-19s %s %d lets cable %d go\n", e->t, cs_event_type_name(e->type),
                     cs_element_kind_name(e->element_kind), e->element, e->cable);
+        else if (e->post >= 0) /* a rope broken at a threaded post's hole */
+            fprintf(f, "    %8.4f s  %-19s %s %d at post %d's hole\n", e->t, cs_event_type_name(e->type),
+                    cs_element_kind_name(e->element_kind), e->element, e->post);
         else if (e->cable_end >= 0) /* a termination event: the rope end that slipped or let go */
             fprintf(f, "    %8.4f s  %-19s %s %d at the %s anchor\n", e->t, cs_event_type_name(e->type),
                     cs_element_kind_name(e->element_kind), e->element, cs_event_cable_end_name(e));
