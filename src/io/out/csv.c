@@ -94,9 +94,8 @@ int cs_write_timeseries(FILE *f, const cs_record *rec, char *why, size_t why_siz
 }
 
 int cs_write_events(FILE *f, const cs_state *state, char *why, size_t why_size) {
-    fprintf(
-        f,
-        "t [s],type,element_kind,element,value,value_unit,cable_end,cable,post\n"); /* value: in its row's unit */
+    fprintf(f, "t [s],type,element_kind,element,value,value_unit,cable_end,cable,post\n"); /* value: in its
+                                                                                              row's unit */
     cs_wout w = {f, 0, ""};
     for (int i = 0; i < cs_state_event_count(state) && !w.bad; i++) {
         const cs_event *e = cs_state_event(state, i);
