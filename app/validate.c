@@ -48,7 +48,7 @@ typedef struct result {
 } result;
 
 enum { CRASH = 3, BOGIE = CS_BOGIE_TESTS, REFINE = 2, VALUES = 4, INPUTS = 6, JOINT = 32, JOINT_SEED = 2656 };
-enum { READINGS = 11, ROAD = 6, ROAD_READINGS = 8 };
+enum { READINGS = 12, ROAD = 6, ROAD_READINGS = 8 };
 enum {
     MAX_JOBS = CRASH + BOGIE + CRASH * REFINE * VALUES + CRASH * INPUTS * 2 + CRASH * JOINT +
                CRASH * READINGS + ROAD * (1 + ROAD_READINGS)
@@ -107,10 +107,15 @@ static void collect(const cs_model *m, const cs_state *s, result *r) {
         if ((e->type == CS_EVENT_CABLE_BREAK || e->type == CS_EVENT_TERMINATION_BREAK) && e->element < 2 &&
             r->cable_break[e->element] < 0.0) {
             r->cable_break[e->element] = e->t;
-            snprintf(r->how[e->element], sizeof r->how[e->element], "%.4g s %s", e->t,
-                     e->type == CS_EVENT_CABLE_BREAK ? "along the rope"
-                     : e->cable_end == 0             ? "at its start fitting"
-                                                     : "at its end fitting");
+            char where[32];
+            if (e->post >= 0)
+                snprintf(where, sizeof where, "at post %d's hole", e->post);
+            else
+                snprintf(where, sizeof where, "%s",
+                         e->type == CS_EVENT_CABLE_BREAK ? "along the rope"
+                         : e->cable_end == 0             ? "at its start fitting"
+                                                         : "at its end fitting");
+            snprintf(r->how[e->element], sizeof r->how[e->element], "%.4g s %s", e->t, where);
         }
     }
     cs_energy en;
@@ -809,6 +814,10 @@ static const struct {
      "aps1 aps3 aps4",
      0,
      {"barrier.posts[0].footing.pullout_capacity=50 kip", NULL}},
+    {"the ropes keep half their strength at the rails' holes (the D/d table's lowest row, D/d = 1)",
+     "aps1 aps3 aps4",
+     0,
+     {"barrier.cables[0].hole_efficiency=0.5", "barrier.cables[1].hole_efficiency=0.5", NULL}},
     {"swaged end fittings (95%) instead of clips (90%)",
      "aps1 aps3 aps4",
      0,
