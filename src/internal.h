@@ -243,6 +243,11 @@ struct cs_state {
 
     double *rail_plastic;  /* [rail_count * post_count] each span's plastic change of length, m (rail.c) */
     double e_rail_elastic; /* the rails' elastic energy at the last commit, J (rail.c) */
+    /* The rails' points where post.c last placed each post, and the tilt and pull they were placed at: a
+     * cache rail.c reads instead of finding them again (the same numbers). Allocated with the workspace,
+     * neither copied nor hashed; NULL in a copy that only holds a state. */
+    double *rail_pos;  /* [post_count * rail_count * 3] m */
+    double *rail_tilt; /* [post_count * 3] rad, rad, m (NaN: none placed yet) */
 
     /* energy accumulators, J: the barrier's (friction: over supports and on the face) and the tyres' */
     double e_rail_plastic, e_cable_plastic, e_post_plastic, e_post_damping, e_soil, e_crush, e_friction,

@@ -13,7 +13,6 @@
  * a post with mass (its swing, below); a massless post is in balance at once. */
 #include "rows.h"
 #include "vec3.h"
-#include "work.h"
 
 #include <math.h>
 #include <string.h>
@@ -34,12 +33,11 @@ void cs_post_place_nodes(const cs_model *model, cs_state *s, int p, const double
     cs_post_axis_terms(v2_norm(tilt[0], tilt[1]), &sn, &g, &c);
     if (axis) cs_post_axis_jacobian_from(tilt, sn, g, axis);
     double pull = s->posts[p].pull;
-    cs_work *w = s->work; /* the rails' points, kept in the workspace with the tilt and pull they are at */
-    if (w && model->rail_count) {
+    if (s->rail_pos && model->rail_count) { /* the rails' points, kept with the tilt and pull they are at */
         for (int r = 0; r < model->rail_count; r++)
             cs_post_attachment_from(model, p, tilt, pull, sn, c, model->rails[r].z,
-                                    w->rail_pos + 3 * ((size_t)p * (size_t)model->rail_count + (size_t)r));
-        w->rail_tilt[3 * p] = tilt[0], w->rail_tilt[3 * p + 1] = tilt[1], w->rail_tilt[3 * p + 2] = pull;
+                                    s->rail_pos + 3 * ((size_t)p * (size_t)model->rail_count + (size_t)r));
+        s->rail_tilt[3 * p] = tilt[0], s->rail_tilt[3 * p + 1] = tilt[1], s->rail_tilt[3 * p + 2] = pull;
     }
     for (int k = 0; k < model->cable_count; k++) {
         cs_cable_state *cs = &s->cables[k];

@@ -16,7 +16,6 @@
  * Half of each segment's steel swings with each of its posts (model.c). */
 #include "rows.h"
 #include "vec3.h"
-#include "work.h"
 
 #include <math.h>
 #include <string.h>
@@ -35,15 +34,14 @@ typedef struct bar {
 } bar;
 
 /* Post p's point on rail r at a tilt (and its pull as it stands): as placed (cs_post_place_nodes, kept in
- * the workspace) if it is the tilt and pull placed last, else found (the same numbers: a point is a
+ * the state's cache) if it is the tilt and pull placed last, else found (the same numbers: a point is a
  * function of the tilt and pull alone). */
 static void rail_point(const cs_model *model, const cs_state *s, int r, int p, const double *tilt,
                        double *out) {
-    const cs_work *w = s->work;
     double pull = s->posts[p].pull;
-    if (w && tilt[0] == w->rail_tilt[3 * p] && tilt[1] == w->rail_tilt[3 * p + 1] &&
-        pull == w->rail_tilt[3 * p + 2])
-        v3_copy(out, w->rail_pos + 3 * ((size_t)p * (size_t)model->rail_count + (size_t)r));
+    if (s->rail_pos && tilt[0] == s->rail_tilt[3 * p] && tilt[1] == s->rail_tilt[3 * p + 1] &&
+        pull == s->rail_tilt[3 * p + 2])
+        v3_copy(out, s->rail_pos + 3 * ((size_t)p * (size_t)model->rail_count + (size_t)r));
     else
         cs_post_attachment(model, p, tilt, pull, model->rails[r].z, out);
 }

@@ -37,10 +37,10 @@ static int allocate(const cs_model *model, cs_state *s, int with_workspace) {
     s->loss_ring = calloc(2 * (size_t)model->loss_steps, sizeof *s->loss_ring);
     s->work = calloc(1, sizeof *s->work);
     if (!s->events || !s->speed_ring || !s->loss_ring || !s->work) return -1;
+    s->rail_pos = calloc((size_t)model->rail_count * (size_t)np * 3 + 1, sizeof *s->rail_pos);
+    s->rail_tilt = calloc((size_t)np * 3 + 1, sizeof *s->rail_tilt);
+    if (!s->rail_pos || !s->rail_tilt) return -1;
     cs_work *w = s->work;
-    w->rail_pos = calloc((size_t)model->rail_count * (size_t)np * 3 + 1, sizeof *w->rail_pos);
-    w->rail_tilt = calloc((size_t)np * 3 + 1, sizeof *w->rail_tilt);
-    if (!w->rail_pos || !w->rail_tilt) return -1;
     for (int k = 0; k < CS_PATH_LEVELS; k++) {
         w->step_start[k] = calloc(1, sizeof *w->step_start[k]);
         if (!w->step_start[k] || allocate(model, w->step_start[k], 0) != 0) return -1;
@@ -74,15 +74,15 @@ void cs_state_free(cs_state *s) {
         for (int k = 0; k < CS_PATH_LEVELS; k++)
             cs_state_free(s->work->step_start[k]);
         cs_state_free(s->work->trial);
-        free(s->work->rail_pos), free(s->work->rail_tilt);
         free(s->work);
     }
     free(s->cables), free(s->posts), free(s->events), free(s->speed_ring), free(s->loss_ring);
-    free(s->rail_plastic);
+    free(s->rail_plastic), free(s->rail_pos), free(s->rail_tilt);
     free(s);
 }
 
-/* A copy of src in dst: everything but the memory that is dst's own (arrays, events, workspace),
+/* A copy of src in dst: everything but the memory that is dst's own (arrays, events, workspace, the rails'
+ * cache),
  * with the cables' paths and the posts copied into dst's arrays. Events are appended only, so the ones
  * src holds are already in place when dst is the state and src its step-start copy. */
 void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src) {
@@ -90,6 +90,7 @@ void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src) {
     *dst = *src;
     dst->cables = keep.cables, dst->posts = keep.posts, dst->events = keep.events;
     dst->speed_ring = keep.speed_ring, dst->work = keep.work, dst->rail_plastic = keep.rail_plastic;
+    dst->rail_pos = keep.rail_pos, dst->rail_tilt = keep.rail_tilt;
     dst->loss_ring = keep.loss_ring, dst->loss.t = keep.loss.t, dst->loss.f = keep.loss.f;
     size_t nr = (size_t)model->rail_count, np = (size_t)model->post_count;
     memcpy(dst->rail_plastic, src->rail_plastic, nr * np * sizeof *dst->rail_plastic);

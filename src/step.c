@@ -109,7 +109,7 @@ void cs_state_reset(const cs_model *model, cs_state *s) {
     memset(s->rail_plastic, 0,
            (size_t)model->rail_count * (size_t)model->post_count * sizeof *s->rail_plastic);
     for (int k = 0; k < 3 * model->post_count; k++)
-        s->work->rail_tilt[k] = NAN; /* no rail point placed yet */
+        s->rail_tilt[k] = NAN; /* no rail point placed yet */
     s->e_rail_plastic = s->e_rail_elastic = 0.0;
     s->e_cable_plastic = s->e_post_plastic = s->e_post_damping = s->e_soil = s->e_crush = s->e_friction =
         s->e_released = s->e_tyre = 0.0;

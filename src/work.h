@@ -1,10 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* The workspace of a state: what the step needs besides the physical state (the barrier system's
- * unknowns, factors and predictor history, the rails' points as last placed, and whole-state copies to
- * go back to), allocated with the state and left out of its hash. It is not without effect: the predictor's
- * history and the kept Jacobian decide where each solve starts, and so where, within the solver's tolerance,
- * it ends. A run starts it afresh (cs_state_reset), so a run's result is the same every time; a state copied
- * into another workspace mid-run goes on to the same results only within that tolerance. */
+ * unknowns, factors and predictor history, and whole-state copies to go back to), allocated with the
+ * state and left out of its hash. It is not without effect: the predictor's history and the kept Jacobian
+ * decide where each solve starts, and so where, within the solver's tolerance, it ends. A run starts it
+ * afresh (cs_state_reset), so a run's result is the same every time; a state copied into another workspace
+ * mid-run goes on to the same results only within that tolerance. */
 #ifndef CS_WORK_H
 #define CS_WORK_H
 
@@ -18,8 +18,6 @@ struct cs_work {
     double stored_committed; /* cs_barrier_stored_energy where the stretch being followed started or last
                               * committed at the last level, J (step.c) */
     double solver_residual;  /* largest residual of the solves the step committed */
-    double *rail_pos;  /* [post_count * rail_count * 3] each post's rail points where it was last placed */
-    double *rail_tilt; /* [post_count * 3] the tilt and pull they were placed at (NaN: none yet) */
     struct {
         long solves;     /* barrier solves at a pose */
         long fallback;   /* of them, those that needed the fallback's sweeps (relax.c) */
