@@ -342,11 +342,6 @@ int cs_termination_run_out(const cs_cable_model *cm, const cs_cable_state *cs);
 /* At the commit, before m_commit takes m: the rope let through each end's fitting, its friction work and
  * the slip's start (termination_slip). */
 void cs_termination_commit(const cs_model *model, int c, cs_state *s);
-/* The Gauss-Seidel fallback's local problem at each end of cable c that can slip (relax.c): the end
- * node sticks where it was committed unless its span would then pass the slip load, else it takes the
- * rope that holds the span at it. Returns the largest change it made to an end span's tension, over Fu
- * (0 where the ends already kept the law). */
-double cs_termination_relax(const cs_model *model, int c, cs_state *s);
 /* The cable carries nothing from now on (broken, released by its anchor, slipped off the face). */
 void cs_cable_release(cs_cable_state *cs, cs_cable_status status);
 double cs_cable_stored_energy(const cs_cable_model *cm, const cs_cable_state *cs);
@@ -491,6 +486,9 @@ double cs_relax(const cs_model *model, cs_state *s, int sweeps, int may_fall);
  * with its neighbours held; the relative violation found on entry. */
 double cs_relax_slide_node(const cs_model *model, const cs_cable_model *cm, cs_cable_state *cs, int i,
                            double tol);
+/* The fallback's local problem at each end of cable c that can slip: the largest change it made to an end
+ * span's tension, over Fu (0 where the ends already kept the law). */
+double cs_relax_ends(const cs_model *model, int c, cs_state *s);
 /* The fallback's local solve of post p's tilt (its cables sliding through it) with its neighbours held;
  * the relative residual found on entry. */
 double cs_relax_post(const cs_model *model, cs_state *s, int p, double tol, int may_fall);

@@ -73,6 +73,43 @@ double cs_relax_slide_node(const cs_model *model, const cs_cable_model *cm, cs_c
     return rel;
 }
 
+/* The end node's m at which its span holds F_s: from the span's law without plastic set
+ * (cs_span_material_at), then secants on T(m) - F_s, T falling as rope comes out, to 1e-9 Fu (the span
+ * keeps its plastic set on the rope it had, and the rope that came out brings none). */
+static double m_at_slip_load(const cs_cable_model *cm, cs_cable_state *cs, int end, int i, int span) {
+    double fs = cm->slip_load[end], held = cs_span_material_at(cm, cs, span, fs);
+    double a = cs->m[i], fa = cs_span_tension(cm, cs, span) - fs; /* at the commit: above F_s */
+    double b = end ? cs->m[i - 1] + held : cs->m[i + 1] - held;
+    for (int it = 0; it < 30; it++) {
+        cs->m[i] = b;
+        double fb = cs_span_tension(cm, cs, span) - fs;
+        if (fabs(fb) <= 1e-9 * cm->rope.fu || fb == fa) break;
+        double next = b - fb * (b - a) / (fb - fa);
+        a = b, fa = fb, b = next;
+    }
+    return cs->m[i];
+}
+
+/* The local problem at each end of cable c whose rope can slip through its fitting (termination.c): the end
+ * node sticks where it was committed unless its span would then pass the slip load, else it takes the rope
+ * that holds the span at it. */
+double cs_relax_ends(const cs_model *model, int c, cs_state *s) {
+    const cs_cable_model *cm = &model->cables[c];
+    cs_cable_state *cs = &s->cables[c];
+    double worst = 0.0;
+    for (int end = 0; end < 2; end++) {
+        if (!cs_termination_slips(cm, cs, end)) continue;
+        int i = end ? cs->node_count - 1 : 0, span = end ? i - 1 : 0;
+        double before = cs->tension[span];
+        cs->m[i] = cs->m_commit[i]; /* it sticks where it was committed unless that passes F_s */
+        if (cs_span_tension(cm, cs, span) > cm->slip_load[end])
+            cs->m[i] = m_at_slip_load(cm, cs, end, i, span);
+        cs_cable_update_span(cm, cs, span, NULL);
+        worst = fmax(worst, fabs(cs->tension[span] - before) / cm->rope.fu);
+    }
+    return worst;
+}
+
 /* dir * F_z - mu F_n - the friction floor with the contact of corner k at body height z (the rope in
  * the spans held). */
 static double height_excess(const cs_model *model, cs_state *s, int c, int i, int k, double z, int dir) {
@@ -405,7 +442,7 @@ double cs_relax(const cs_model *model, cs_state *s, int sweeps, int may_fall) {
                 int i = (sweep % 2 == 0) ? k : n - 1 - k;
                 worst = fmax(worst, cs_relax_slide_node(model, cm, cs, i, sc->solver_tolerance));
             }
-            worst = fmax(worst, cs_termination_relax(model, c, s)); /* ends slipping through fittings */
+            worst = fmax(worst, cs_relax_ends(model, c, s)); /* ends slipping through fittings */
         }
         for (int a = 0; a < 2; a++)
             worst = fmax(worst, solve_anchor(model, s, a, sc->solver_tolerance));

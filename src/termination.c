@@ -106,37 +106,3 @@ void cs_termination_commit(const cs_model *model, int c, cs_state *s) {
         cs->slip[end] += out;
     }
 }
-
-/* The end node's m at which its span holds F_s: from the span's law without plastic set
- * (cs_span_material_at), then secants on T(m) - F_s, T falling as rope comes out, to 1e-9 Fu (the span
- * keeps its plastic set on the rope it had, and the rope that came out brings none). */
-static double m_at_slip_load(const cs_cable_model *cm, cs_cable_state *cs, int end, int i, int span) {
-    double fs = cm->slip_load[end], held = cs_span_material_at(cm, cs, span, fs);
-    double a = cs->m[i], fa = cs_span_tension(cm, cs, span) - fs; /* at the commit: above F_s */
-    double b = end ? cs->m[i - 1] + held : cs->m[i + 1] - held;
-    for (int it = 0; it < 30; it++) {
-        cs->m[i] = b;
-        double fb = cs_span_tension(cm, cs, span) - fs;
-        if (fabs(fb) <= 1e-9 * cm->rope.fu || fb == fa) break;
-        double next = b - fb * (b - a) / (fb - fa);
-        a = b, fa = fb, b = next;
-    }
-    return cs->m[i];
-}
-
-double cs_termination_relax(const cs_model *model, int c, cs_state *s) {
-    const cs_cable_model *cm = &model->cables[c];
-    cs_cable_state *cs = &s->cables[c];
-    double worst = 0.0;
-    for (int end = 0; end < 2; end++) {
-        if (!cs_termination_slips(cm, cs, end)) continue;
-        int i = end_node(cs, end), span = end ? i - 1 : 0;
-        double before = cs->tension[span];
-        cs->m[i] = cs->m_commit[i]; /* it sticks where it was committed unless that passes F_s */
-        if (cs_span_tension(cm, cs, span) > cm->slip_load[end])
-            cs->m[i] = m_at_slip_load(cm, cs, end, i, span);
-        cs_cable_update_span(cm, cs, span, NULL);
-        worst = fmax(worst, fabs(cs->tension[span] - before) / cm->rope.fu);
-    }
-    return worst;
-}
