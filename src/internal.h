@@ -270,8 +270,8 @@ struct cs_state {
     cs_work *work; /* the step's workspace (work.h); NULL in a copy that only holds a state */
 };
 
-/* A state's memory and its workspace, not yet set for a run (cs_state_create resets it: step.c). NULL with
- * err set if out of memory. */
+/* A state's memory and its workspace, not yet set for a run (cs_state_create resets it: cs_state_reset,
+ * step.c). NULL with err set if out of memory. */
 cs_state *cs_state_allocate(const cs_model *model, cs_error *err);
 void cs_state_copy(const cs_model *model, cs_state *dst, const cs_state *src);
 void cs_state_restore_barrier(const cs_model *model, cs_state *s, const cs_state *from);

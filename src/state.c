@@ -60,6 +60,12 @@ cs_state *cs_state_allocate(const cs_model *model, cs_error *err) {
     return s;
 }
 
+cs_state *cs_state_create(const cs_model *model, cs_error *err) {
+    cs_state *s = cs_state_allocate(model, err);
+    if (s) cs_state_reset(model, s);
+    return s;
+}
+
 void cs_state_free(cs_state *s) {
     if (!s) return;
     if (s->cables) {

@@ -78,12 +78,6 @@ static void settle_barrier(const cs_model *model, cs_state *s) {
     s->e_rail_plastic = 0.0;
 }
 
-cs_state *cs_state_create(const cs_model *model, cs_error *err) {
-    cs_state *s = cs_state_allocate(model, err);
-    if (s) cs_state_reset(model, s);
-    return s;
-}
-
 void cs_state_reset(const cs_model *model, cs_state *s) {
     s->t = 0.0;
     s->step = 0;
