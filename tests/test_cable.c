@@ -3,8 +3,8 @@
  * redistribution by sliding, breaking at the breaking strain and at an end fitting. */
 #include "check.h"
 #include "fixture.h"
-#include "internal.h"
 #include "lay.h"
+#include "run/run.h"
 
 /* The paper's closed forms (Eqs. 1-6) are for a weightless rope: the cable of these worlds weighs
  * `weighs` times its A603 weight (0 or 1). */
