@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Anchors as footings in the soil (src/elements/anchor.c): what they hold, how they slide, when they pull out. */
+/* Anchors as footings in the soil (src/elements/anchor.c): what they hold, how they slide, when they pull
+ * out. */
 #include "check.h"
 #include "fixture.h"
 #include "run/run.h"

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* The vehicle's face against the cables (src/elements/contact.c) and its crush (src/elements/vehicle.c), and the events a
- * run records (src/core/events.c). */
+/* The vehicle's face against the cables (src/elements/contact.c) and its crush (src/elements/vehicle.c), and
+ * the events a run records (src/core/events.c). */
 #include "check.h"
 #include "core/vec3.h"
 #include "fixture.h"

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* Rails (src/elements/rail.c): each span an axial member between neighbouring posts, elastic, yielding at A Fy in
- * tension and buckling at the Euler load in compression, its pull entering the posts' moment balance. */
+/* Rails (src/elements/rail.c): each span an axial member between neighbouring posts, elastic, yielding
+ * at A Fy in tension and buckling at the Euler load in compression, its pull entering the posts' moment
+ * balance. */
 #include "check.h"
 #include "fixture.h"
 #include "run/run.h"
