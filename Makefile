@@ -118,7 +118,7 @@ docs: deps configure
 	cmake --build $(BUILD) --target docs
 
 format:
-	clang-format -i include/cablesim/*.h src/*.c src/*.h src/io/*/*.c src/io/*/*.h app/*.c tests/*.c tests/*.h examples/*.c examples/*/*.c fuzz/*.c 2>/dev/null || true
+	clang-format -i include/cablesim/*.h src/*/*.c src/*/*.h src/io/*/*.c src/io/*/*.h app/*.c tests/*.c tests/*.h examples/*.c examples/*/*.c fuzz/*.c 2>/dev/null || true
 
 clean:
 	rm -rf $(BUILD) build-asan $(FUZZ_BUILD) $(PIN_GLIBC)

@@ -5,7 +5,7 @@
 #define CS_TEST_LAY_H
 
 #include "fixture.h"
-#include "internal.h"
+#include "run/run.h"
 
 /* A model and its state built from a fixture, for tests that reach into the engine. */
 typedef struct world {

@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: MIT */
-/* Anchors as footings in the soil (src/anchor.c): what they hold, how they slide, when they pull out. */
+/* Anchors as footings in the soil (src/elements/anchor.c): what they hold, how they slide, when they pull
+ * out. */
 #include "check.h"
 #include "fixture.h"
-#include "internal.h"
+#include "run/run.h"
 
 /* APS3's dead-man, a 3-ft diameter, 5-ft deep concrete shaft, at both ends. */
 static void dead_men(fixture *fx, double b_ft, double d_ft) {

@@ -9,9 +9,9 @@
  * that its upper cable, at 4 ft, is at the open end from 7.7 degrees); just short of and past the open
  * end on the 7-ft post; and the slot's order: a cable held above keeps the ones below in. */
 #include "check.h"
+#include "core/vec3.h"
 #include "fixture.h"
-#include "internal.h"
-#include "vec3.h"
+#include "run/run.h"
 
 /* Two cables on one post at x = 0 between rigid anchors 10 m away; the post's height if given (else the
  * fixture's 7 ft). */

@@ -3,8 +3,8 @@
  * redistribution by sliding, breaking at the breaking strain and at an end fitting. */
 #include "check.h"
 #include "fixture.h"
-#include "internal.h"
 #include "lay.h"
+#include "run/run.h"
 
 /* The paper's closed forms (Eqs. 1-6) are for a weightless rope: the cable of these worlds weighs
  * `weighs` times its A603 weight (0 or 1). */
@@ -496,7 +496,7 @@ static void a_fitting_slips_at_its_load_and_runs_out(void **state) {
     cs_model_free(m);
 }
 
-/* The fallback's local problem at a slipping end (cs_termination_relax; relax.c's sweeps call it): on the
+/* The fallback's local problem at a slipping end (cs_relax_ends, relax.c): on the
  * weightless 4-node path, fittings at both ends slipping at F_s = 0.3 Fu (the elastic slope, T = EA (l/s -
  * 1)). The start span laid at 0.5 Fu takes the rope that holds it at F_s, s = l / (1 + F_s / EA), its
  * tension F_s to 1e-12, the change 0.2 Fu returned; the end span at 0.1 Fu sticks (its node where it was
@@ -515,7 +515,7 @@ static void the_fallback_lets_an_end_slip_at_its_load(void **state) {
     cs_cable_state *cs = lay_ends(w, strain);
     double m3 = cs->m[3], s0 = 3.0 / (1.0 + 0.5 * fu / ea), held = 3.0 / (1.0 + 0.3 * fu / ea);
     w->state->e_friction = 0.0;
-    CHECK_REL(cs_termination_relax(w->model, 0, w->state), 0.2, 1e-9);
+    CHECK_REL(cs_relax_ends(w->model, 0, w->state), 0.2, 1e-9);
     CHECK_REL(cs->tension[0], 0.3 * fu, 1e-12);
     CHECK_REL(cs->m[1] - cs->m[0], held, 1e-14);
     CHECK_ABS(cs->m[3], m3, 0.0);
@@ -535,7 +535,7 @@ static void the_fallback_lets_an_end_slip_at_its_load(void **state) {
     cs->ep[0] = 2e-3;
     cs_cable_update_span(cm, cs, 0, NULL);
     CHECK_REL(cs->tension[0], 0.5 * fu, 1e-9);
-    cs_termination_relax(w->model, 0, w->state);
+    cs_relax_ends(w->model, 0, w->state);
     CHECK_ABS(cs->tension[0], 0.3 * fu, 1e-9 * fu);
     world_free(w);
 }

@@ -1,10 +1,10 @@
 /* SPDX-License-Identifier: MIT */
-/* The vehicle's face against the cables (src/contact.c) and its crush (src/vehicle.c), and the events a
- * run records (src/events.c). */
+/* The vehicle's face against the cables (src/elements/contact.c) and its crush (src/elements/vehicle.c), and
+ * the events a run records (src/core/events.c). */
 #include "check.h"
+#include "core/vec3.h"
 #include "fixture.h"
-#include "internal.h"
-#include "vec3.h"
+#include "run/run.h"
 
 /* The crush curve: linear between its points, extrapolated with its last slope; below the largest crush
  * reached the face unloads with crush_unload_stiffness, so its permanent set is d_max - C(d_max) / k_u. */

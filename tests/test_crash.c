@@ -6,7 +6,7 @@
  * a state gone wrong is reported as unstable and frozen. */
 #include "check.h"
 #include "fixture.h"
-#include "internal.h"
+#include "run/run.h"
 
 #include <stdlib.h>
 

@@ -3,7 +3,7 @@
  * dynamic factor scaled by the passive wedge's width effect, and the uplift capacity. */
 #include "check.h"
 #include "fixture.h"
-#include "internal.h"
+#include "run/run.h"
 
 static void table4_capacities(void **state) {
     (void)state;

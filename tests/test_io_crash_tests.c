@@ -9,7 +9,7 @@
  *   change of prediction is a visible change of that file (APS3 and APS4 stay blind: these are the
  *   model's predictions, not test results).
  * `make pin` rewrites both (CS_PIN_UPDATE=1; tests/example.h).
- * Each must also pass the sudden-loss check (src/response.c): no 10-ms window in which the force on the
+ * Each must also pass the sudden-loss check (src/run/response.c): no 10-ms window in which the force on the
  * vehicle falls by half its peak unless a rope, a fitting or an attachment let go in it.
  * And APS3's two ropes against their hand calculation (docs/theory.md, "Two ropes on one dead-man"). */
 #define _POSIX_C_SOURCE 200809L
@@ -24,7 +24,7 @@
 #include <cmocka.h>
 
 #include "example.h"
-#include "internal.h"
+#include "run/run.h"
 
 enum { TESTS = 3 };
 static const char *const names[TESTS] = {"aps1", "aps3", "aps4"};

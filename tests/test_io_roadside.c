@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The roadside crash tests (examples/roadside/rs1-rs6.yaml), predicted blind, and the trends of deflection
  * with the design on one of them.
- * - Each runs to its end with no sudden loss (src/response.c) and its energy ledger within 1% of the
+ * - Each runs to its end with no sudden loss (src/run/response.c) and its energy ledger within 1% of the
  *   initial kinetic energy, and its main numbers as pinned in tests/predictions/roadside.csv and its final
  *   state's hash as in tests/predictions/roadside-hashes.csv for this build's maths (`make pin` rewrites
  *   both; tests/example.h): a change of prediction is a visible, reviewed change. The measured results

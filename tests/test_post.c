@@ -4,10 +4,10 @@
  * behind the barrier line; for these statics the post is massless. The swing of a post with mass is
  * backward Euler on its spring (free_swing). */
 #include "check.h"
+#include "core/vec3.h"
 #include "fixture.h"
-#include "internal.h"
 #include "lay.h"
-#include "vec3.h"
+#include "run/run.h"
 
 /* A world whose post 0 has the given web area (0: the fixture's) and mass per length; a post with mass
  * (the swing) gets a weightless rope, so that a slack one carries nothing. */

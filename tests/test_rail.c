@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: MIT */
-/* Rails (src/rail.c): each span an axial member between neighbouring posts, elastic, yielding at A Fy in
- * tension and buckling at the Euler load in compression, its pull entering the posts' moment balance. */
+/* Rails (src/elements/rail.c): each span an axial member between neighbouring posts, elastic, yielding
+ * at A Fy in tension and buckling at the Euler load in compression, its pull entering the posts' moment
+ * balance. */
 #include "check.h"
 #include "fixture.h"
-#include "internal.h"
+#include "run/run.h"
 
 /* APS3's first two line posts (8 and 16 ft, hinging at grade) tied by one rail at 4 ft. */
 static cs_model *two_posts(fixture *fx) {

@@ -1,10 +1,10 @@
 /* SPDX-License-Identifier: MIT */
-/* Response parameters of src/response.c: each cable's peak tension and work on the vehicle (on the APS3-like
- * fixture: the cables' work makes the vehicle's change of energy, and each peak is the largest of its
- * cable's tension as recorded at every step), and the sudden-loss check on synthetic force histories. */
+/* Response parameters of src/run/response.c: each cable's peak tension and work on the vehicle (on the
+ * APS3-like fixture: the cables' work makes the vehicle's change of energy, and each peak is the largest of
+ * its cable's tension as recorded at every step), and the sudden-loss check on synthetic force histories. */
 #include "check.h"
 #include "fixture.h"
-#include "internal.h"
+#include "run/run.h"
 
 #include <stdlib.h>
 

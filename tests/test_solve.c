@@ -1,15 +1,15 @@
 /* SPDX-License-Identifier: MIT */
-/* The barrier solve (src/system.c). Its Jacobian, formed from the spans' tension gradients and the
+/* The barrier solve (src/solver/system.c). Its Jacobian, formed from the spans' tension gradients and the
  * posts' axes, must be the derivative of the solve's residual: checked against central difference
  * quotients of that residual at states along an APS3-like crash (tests/fixture.h), before and after
  * contact: posts elastic and hinged, supports sticking and sliding, the rope wrapped on the face's
  * corners, rope ends slipping through their fittings. Its fallback is reached and balances, and lets a post
  * with no equilibrium near fall; its predictor repeats no jump. */
 #include "check.h"
+#include "core/vec3.h"
 #include "design.h"
-#include "internal.h"
-#include "vec3.h"
-#include "work.h"
+#include "run/run.h"
+#include "solver/work.h"
 
 #include <stdlib.h>
 

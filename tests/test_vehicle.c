@@ -4,9 +4,9 @@
  * dt), a centred head-on impact that makes no yaw, and the turn between two poses (the rotation
  * vector the step's work on the barrier is taken over). */
 #include "check.h"
+#include "core/vec3.h"
 #include "fixture.h"
-#include "internal.h"
-#include "vec3.h"
+#include "run/run.h"
 
 static double v3_norm_test(const double *v) {
     return v3_norm(v);

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# The designer page's engine: the engine (src/*.c) and the model loader with the writers it needs
-# (src/io/), compiled by emscripten into one JavaScript module with its WebAssembly inlined
-# (OUT/cablesim-wasm.js, a factory createCablesim()). libyaml is Debian's, compiled for it by
-# scripts/wasm-libyaml.sh; the units come from the page's table (no udunits2: load/units_udunits.c is
-# left out, web/designer.c stands in for cs_units_create).
+# The designer page's engine: the engine (src/core, src/elements, src/solver, src/run) and the model
+# loader with the writers it needs (src/io/), compiled by emscripten into one JavaScript module with its
+# WebAssembly inlined (OUT/cablesim-wasm.js, a factory createCablesim()). libyaml is Debian's, compiled
+# for it by scripts/wasm-libyaml.sh; the units come from the page's table (no udunits2:
+# load/units_udunits.c is left out, web/designer.c stands in for cs_units_create).
 #   bash web/build.sh SOURCE_DIR OUT [EMCC]
 set -euo pipefail
 src=$(cd "$1" && pwd)
@@ -25,7 +25,7 @@ io=(load/confine load/convert load/loader load/modelhash load/schema load/units 
   load/yamledit out/json out/csv out/report_html out/record out/htmltext out/runinfo out/report study/rating study/occupant study/criteria)
 rm -rf "$out/obj"
 mkdir -p "$out/obj"
-sources=("$src"/src/*.c)
+sources=("$src"/src/{core,elements,solver,run}/*.c)
 for c in "${io[@]}"; do sources+=("$src/src/io/$c.c"); done
 sources+=("$src/web/designer.c")
 objs=()

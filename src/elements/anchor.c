@@ -1,0 +1,311 @@
+/* SPDX-License-Identifier: MIT */
+/* Anchors: the footings (dead-men) the ropes' ends are tied to, as bodies in the soil.
+ *
+ * An anchor moves horizontally by u (2 components); each rope's end rides on it at (x + u_x, u_y, z), so
+ * ropes that share an anchor keep their own ends. The soil resists with k (u - u_p) up to the footing's
+ * peak P (Eq. 21 at the height the ropes pull it, H = z, times the soil's dynamic factor for the
+ * footing's width: footing.c); k reaches P over 2% of the footing's depth, the movement that mobilises a
+ * medium-dense sand's passive resistance (Clough and Duncan 1991: 1% dense, 4% loose). Past the peak it
+ * ploughs on through the soil (radial return), its resistance falling linearly with the plastic slide s
+ * from P to the residual P_r = rho P over s_r = 5% of the depth, then held at P_r: a dense soil's shear
+ * zone dilates to its critical state past the peak (passive tests: Wilson and Elgamal 2010), and rho is
+ * the critical-state passive resistance over the peak's (footing.c). The plastic work, the integral of
+ * the resistance over the slide, is booked as soil. With the trial force n = |k (u - u_p)| above the cap
+ * c(s), the slide l solves n - k l = c(s + l): on the softening branch (slope H = (P - P_r) / s_r < k)
+ * l = (n - c(s)) / (k - H), past it l = (n - P_r) / k.
+ * The footing and what moves with it have mass M, integrated over the time h since the last commit by the
+ * HHT-alpha method (Hilber, Hughes and Taylor 1977): with F = F_ropes - R(u) the net force,
+ *   M a = (1 + alpha) F(u) - alpha F_c,
+ *   u = u_c + h v_c + h^2 ((1/2 - beta) a_c + beta a),   v = v_c + h ((1 - gamma) a_c + gamma a),
+ * beta = (1 - alpha)^2 / 4, gamma = 1/2 - alpha, so that its residual
+ *   r = F(u) - (M a(u) + alpha F_c) / (1 + alpha)
+ * is second order in h. At alpha = 0 it is the trapezoidal rule, which takes no energy from a linear
+ * motion; alpha = -0.1 keeps that for the dead-man's own modes, which are slow (its mass on the soil and
+ * the ropes' end spans: omega h <= 0.11 at 0.5 ms for the APS anchors, 3e-6 of their energy a step),
+ * and damps modes the step does not resolve (1.2% a step at omega h = 1, 14% at 3: a light dead-man on
+ * short stiff spans, rung by a failure). Backward Euler would take omega^2 h^2 / (1 + omega^2 h^2) of
+ * every mode's energy each step (1.2% for APS3's); a post's modes with the ropes reach omega h 0.5-0.9,
+ * and the posts keep it for that (post.c; docs/theory.md). The inertial M / (beta h^2 (1 + alpha)) keeps
+ * the residual monotone where the resistance is flat or softens. A dead-man leaves the soil only when
+ * the ropes' uplift reaches its pullout capacity (its weight plus its skin friction unless given): every
+ * rope tied to it is then released. A rigid anchor (no footing) never moves. The anchor's rows of the
+ * barrier solve are given here (rows.h). */
+#include "core/vec3.h"
+#include "elements/rows.h"
+
+#include <math.h>
+
+#define CS_ANCHOR_YIELD_STRAIN 0.02     /* movement to mobilise the passive resistance, over the depth */
+#define CS_ANCHOR_SOFTENING_STRAIN 0.05 /* plastic slide from the peak to the residual, over the depth */
+#define CS_HHT_ALPHA (-0.1)
+#define CS_HHT_BETA (0.25 * (1.0 - CS_HHT_ALPHA) * (1.0 - CS_HHT_ALPHA))
+#define CS_HHT_GAMMA (0.5 - CS_HHT_ALPHA)
+
+/* The kinetic energy of its slide at the rate of the last commit. */
+static double kinetic_energy(const cs_anchor_model *am, const cs_anchor_state *as) {
+    return 0.5 * am->mass * (as->rate[0] * as->rate[0] + as->rate[1] * as->rate[1]);
+}
+
+/* The acceleration the step from the last commit to u over h gives (the HHT-alpha update). */
+static double acceleration_to(const cs_anchor_state *as, int k, double u, double h) {
+    return (u - as->u_commit[k] - h * as->rate[k]) / (CS_HHT_BETA * h * h) -
+           (0.5 / CS_HHT_BETA - 1.0) * as->acc[k];
+}
+
+void cs_anchor_derive(const cs_anchor_def *d, double gravity, cs_anchor_model *am) {
+    const cs_footing_def *f = &d->footing;
+    am->x = d->x, am->z = d->z;
+    am->rigid = !(f->diameter > 0.0);
+    if (am->rigid) return;
+    double b = f->diameter, len = d->length > 0.0 ? d->length : 0.0;
+    double volume = len > 0.0 ? b * len * f->depth : 0.25 * CS_PI * b * b * f->depth;
+    am->mass = d->mass > 0.0 ? d->mass : CS_CONCRETE_DENSITY * volume;
+    am->capacity = cs_footing_impact_capacity(f, d->z);
+    am->residual = cs_footing_residual_ratio(f) * am->capacity;
+    am->softening = CS_ANCHOR_SOFTENING_STRAIN * f->depth;
+    am->stiffness = am->capacity / (CS_ANCHOR_YIELD_STRAIN * f->depth);
+    double perimeter_skin = len > 0.0 ? 2.0 * (b + len) / (CS_PI * b) : 1.0; /* a block's perimeter */
+    /* a capacity given for the anchor, or for its footing, is design data and taken as it is */
+    double given = d->pullout_capacity > 0.0 ? d->pullout_capacity : f->pullout_capacity;
+    am->uplift_capacity =
+        given > 0.0 ? given : am->mass * gravity + perimeter_skin * cs_footing_pullout_capacity(f);
+}
+
+int cs_anchor_active(const cs_model *model, const cs_state *s, int a) {
+    if (model->anchors[a].rigid || s->anchors[a].failed || !(s->h > 0.0)) return 0;
+    for (int c = 0; c < model->cable_count; c++)
+        if (s->cables[c].status == CS_CABLE_INTACT) return 1;
+    return 0;
+}
+
+static int end_node(const cs_cable_state *cs, int a) {
+    return a == 0 ? 0 : cs->node_count - 1;
+}
+
+void cs_anchor_place_nodes(const cs_model *model, cs_state *s, int a) {
+    const cs_anchor_model *am = &model->anchors[a];
+    const double *u = s->anchors[a].u;
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        if (cs->status != CS_CABLE_INTACT) continue;
+        v3_set(cs->pos + 3 * end_node(cs, a), am->x + u[0], u[1], am->z);
+    }
+}
+
+/* The barrier as installed: each anchor deflected elastically by the ropes' pull as they stand (the
+ * pretension along each end span), no further than its elastic limit; the ropes are then laid in on it
+ * (step.c), as an installer tensions them against the anchors already loaded. */
+void cs_anchor_settle(const cs_model *model, cs_state *s) {
+    for (int a = 0; a < 2; a++) {
+        const cs_anchor_model *am = &model->anchors[a];
+        if (am->rigid) continue;
+        double f[3] = {0.0, 0.0, 0.0};
+        for (int c = 0; c < model->cable_count; c++) {
+            const cs_cable_state *cs = &s->cables[c];
+            if (cs->status != CS_CABLE_INTACT) continue;
+            double fc[3];
+            cs_node_force(cs, end_node(cs, a), NULL, fc);
+            v3_add(f, f, fc);
+        }
+        double n = v2_norm(f[0], f[1]), cap = 0.999 * am->capacity, scale = n > cap ? cap / n : 1.0;
+        s->anchors[a].u[0] = s->anchors[a].u_commit[0] = scale * f[0] / am->stiffness;
+        s->anchors[a].u[1] = s->anchors[a].u_commit[1] = scale * f[1] / am->stiffness;
+        cs_anchor_place_nodes(model, s, a);
+    }
+}
+
+/* The cap on the soil's resistance after a plastic slide s: P falling linearly to P_r over s_r. */
+double cs_anchor_cap(const cs_anchor_model *am, double s) {
+    return s >= am->softening ? am->residual
+                              : am->capacity - (am->capacity - am->residual) * s / am->softening;
+}
+
+/* The work of the cap over the slide from s0 to s1 (the soil's plastic work), J. */
+static double cap_work(const cs_anchor_model *am, double s0, double s1) {
+    double m = fmin(fmax(am->softening, s0), s1); /* where the softening branch ends inside [s0, s1] */
+    return 0.5 * (m - s0) * (cs_anchor_cap(am, s0) + cs_anchor_cap(am, m)) + (s1 - m) * am->residual;
+}
+
+/* The return map at the trial force's magnitude n after the committed slide s: the resistance's magnitude,
+ * the slide it takes into *slide and its slope d|R|/dn into *slope (1 elastic, -H/(k - H) softening, 0 on
+ * the residual). */
+static double return_map(const cs_anchor_model *am, double s, double n, double *slide, double *slope) {
+    double c = cs_anchor_cap(am, s), k = am->stiffness;
+    *slide = 0.0, *slope = 1.0;
+    if (n <= c) return n;
+    if (s < am->softening) {
+        double hard = (am->capacity - am->residual) / am->softening, l = (n - c) / (k - hard);
+        if (s + l <= am->softening) {
+            *slide = l, *slope = -hard / (k - hard);
+            return c - hard * l;
+        }
+    }
+    *slide = (n - am->residual) / k, *slope = 0.0;
+    return am->residual;
+}
+
+/* The soil's resistance at displacement u (the trial k (u - u_p) returned radially onto the cap), its
+ * magnitude's slope into *slope and the trial's magnitude into *trial (either may be NULL). */
+static void resistance(const cs_anchor_model *am, const cs_anchor_state *as, const double *u, double *q,
+                       double *slope, double *trial) {
+    double tr[2] = {am->stiffness * (u[0] - as->plastic[0]), am->stiffness * (u[1] - as->plastic[1])};
+    double n = v2_norm(tr[0], tr[1]), slide, dq;
+    double m = return_map(am, as->slide, n, &slide, &dq), f = n > m ? m / n : 1.0;
+    q[0] = tr[0] * f, q[1] = tr[1] * f;
+    if (slope) *slope = dq;
+    if (trial) *trial = n;
+}
+
+/* The ropes' pull on the anchor (every intact rope's end span), N; chords as in cs_node_force. */
+static void ropes_pull(const cs_model *model, const cs_state *s, int a, const double *chords, double *f) {
+    v3_set(f, 0.0, 0.0, 0.0);
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        if (cs->status != CS_CABLE_INTACT) continue;
+        double fc[3];
+        cs_node_force(cs, end_node(cs, a), chords ? chords + 4 * (size_t)c * (size_t)model->max_nodes : NULL,
+                      fc);
+        v3_add(f, f, fc);
+    }
+}
+
+void cs_anchor_residual(const cs_model *model, const cs_state *s, int a, const double *chords, double *r) {
+    const cs_anchor_model *am = &model->anchors[a];
+    const cs_anchor_state *as = &s->anchors[a];
+    double f[3], q[2];
+    ropes_pull(model, s, a, chords, f);
+    resistance(am, as, as->u, q, NULL, NULL);
+    r[0] = f[0] - q[0], r[1] = f[1] - q[1];
+    if (s->h > 0.0 && s->h < HUGE_VAL)
+        for (int k = 0; k < 2; k++)
+            r[k] -= (am->mass * acceleration_to(as, k, as->u[k], s->h) + CS_HHT_ALPHA * as->net[k]) /
+                    (1.0 + CS_HHT_ALPHA);
+}
+
+static void residual(const cs_model *model, const cs_state *s, const cs_rows *rows, const cs_slot *u,
+                     double *r) {
+    cs_anchor_residual(model, s, u->a, rows->chords, r);
+    double inv = 1.0 / cs_rows_force_unit(model);
+    r[0] *= inv, r[1] *= inv;
+}
+
+/* Rows a, a+1: the ropes' pull through their end spans (chained to the nodes), less the resistance's slope
+ * (k I elastic; past the peak k ((|R| / n) (I - e e^T) + d|R|/dn e e^T), e the trial's direction) and the
+ * inertial M / (beta h^2 (1 + alpha)) on the anchor's own columns. */
+static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row,
+                     const cs_slot *u) {
+    int a = u->a;
+    const cs_anchor_model *am = &model->anchors[a];
+    const cs_anchor_state *as = &s->anchors[a];
+    double unit = cs_rows_force_unit(model), k[4], q[2], slope, n;
+    resistance(am, as, as->u, q, &slope, &n);
+    double qn = v2_norm(q[0], q[1]), t = n > 0.0 ? qn / n : 1.0, e[2] = {1.0, 0.0};
+    if (n > 0.0)
+        e[0] = (as->u[0] - as->plastic[0]) * am->stiffness / n,
+        e[1] = (as->u[1] - as->plastic[1]) * am->stiffness / n;
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2; j++)
+            k[2 * i + j] = -am->stiffness * (t * ((i == j) - e[i] * e[j]) + slope * e[i] * e[j]);
+    double inertia = am->mass / (CS_HHT_BETA * s->h * s->h * (1.0 + CS_HHT_ALPHA));
+    k[0] -= inertia, k[3] -= inertia;
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2; j++)
+            cs_rows_add(rows, row + i, row + j, k[2 * i + j] / unit);
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        if (cs->status != CS_CABLE_INTACT) continue;
+        int i = end_node(cs, a);
+        const cs_span_grad *sp = rows->spans + (size_t)c * (size_t)model->max_nodes + (a == 0 ? 0 : i - 1);
+        for (int e = 0; e < 2; e++) {
+            double rho[3] = {e == 0 ? 1.0 / unit : 0.0, e == 1 ? 1.0 / unit : 0.0, 0.0};
+            double gp[3][3] = {{0}}, gm[3] = {0};
+            cs_rows_end_force_gradient(sp, a == 0, rho, gp, gm);
+            cs_rows_add_node_gradient(model, s, rows, row + e, c, i, gp, gm);
+        }
+    }
+}
+
+const cs_row_kind cs_anchor_rows = {2, residual, jacobian};
+
+/* End of step: the slide's rate, acceleration and what its integration dissipates, the plastic slide
+ * (radial return) and its work, the resistance, and the ropes' uplift.
+ * Over the step the forces' energies (the ropes' and the soil's, state functions and the soil's plastic
+ * work) change by about -(F_c + F(u)) . du / 2, F the net force (the ropes' pull less the soil's
+ * resistance); what the step takes out of the motion, that trapezoid rule's work of F less the kinetic
+ * energy's change, is booked as damping: the HHT-alpha method's dissipation (none at alpha = 0, where
+ * the kinetic energy changes by exactly that work) and the solve's residual. An anchor no rope pulls
+ * any more (the last let go) is out of the solve: the soil stops it within the step, and its kinetic
+ * energy goes to the soil. A re-solve at an instant (h = 0, after a failure) keeps its rate and starts
+ * its acceleration again from the net force there, as at the start of a motion. */
+void cs_anchor_commit(const cs_model *model, cs_state *s) {
+    for (int a = 0; a < 2; a++) {
+        const cs_anchor_model *am = &model->anchors[a];
+        cs_anchor_state *as = &s->anchors[a];
+        if (am->rigid || as->failed) continue;
+        double f[3], q[2];
+        ropes_pull(model, s, a, NULL, f);
+        resistance(am, as, as->u, q, NULL, NULL);
+        double net[2] = {f[0] - q[0], f[1] - q[1]};
+        double kinetic_before = kinetic_energy(am, as);
+        if (s->h > 0.0 && s->h < HUGE_VAL && !cs_anchor_active(model, s, a)) {
+            s->e_soil += kinetic_before; /* no rope pulls it: the soil stops it */
+            as->rate[0] = as->rate[1] = as->acc[0] = as->acc[1] = 0.0;
+        } else if (s->h > 0.0 && s->h < HUGE_VAL) {
+            double work = 0.0;
+            for (int k = 0; k < 2; k++) {
+                double du = as->u[k] - as->u_commit[k], acc = acceleration_to(as, k, as->u[k], s->h);
+                work += 0.5 * (as->net[k] + net[k]) * du;
+                as->rate[k] += s->h * ((1.0 - CS_HHT_GAMMA) * as->acc[k] + CS_HHT_GAMMA * acc);
+                as->acc[k] = acc;
+            }
+            s->e_post_damping += work - (kinetic_energy(am, as) - kinetic_before);
+        } else { /* h infinite: settled at rest; h = 0: it keeps the rate it had, as a post does */
+            if (s->h > 0.0) as->rate[0] = as->rate[1] = 0.0;
+            as->acc[0] = net[0] / am->mass, as->acc[1] = net[1] / am->mass;
+        }
+        as->net[0] = net[0], as->net[1] = net[1];
+        as->u_commit[0] = as->u[0], as->u_commit[1] = as->u[1];
+        double tr[2] = {am->stiffness * (as->u[0] - as->plastic[0]),
+                        am->stiffness * (as->u[1] - as->plastic[1])};
+        double n = v2_norm(tr[0], tr[1]), slide, slope;
+        return_map(am, as->slide, n, &slide, &slope);
+        if (slide > 0.0) {
+            double e[2] = {tr[0] / n, tr[1] / n};
+            s->e_soil += cap_work(am, as->slide, as->slide + slide);
+            as->plastic[0] += slide * e[0], as->plastic[1] += slide * e[1];
+            as->slide += slide;
+            if (!as->yielded) {
+                as->yielded = 1;
+                cs_event_add(model, s, CS_EVENT_ANCHOR_YIELD, CS_ELEMENT_ANCHOR, a, am->capacity);
+            }
+        }
+        resistance(am, as, as->u, as->force, NULL, NULL);
+        as->uplift = f[2] > 0.0 ? f[2] : 0.0;
+    }
+}
+
+/* An anchor lifted past its pullout capacity by the ropes' uplift leaves the soil; every rope tied to it
+ * is released (contact.c). Returns 1 if one did. */
+int cs_anchor_check(const cs_model *model, cs_state *s) {
+    int failed = 0;
+    for (int a = 0; a < 2; a++) {
+        const cs_anchor_model *am = &model->anchors[a];
+        cs_anchor_state *as = &s->anchors[a];
+        if (am->rigid || as->failed || as->uplift < am->uplift_capacity) continue;
+        as->failed = 1;
+        cs_event_add(model, s, CS_EVENT_ANCHOR_PULLOUT, CS_ELEMENT_ANCHOR, a, as->uplift);
+        failed = 1;
+    }
+    return failed;
+}
+
+double cs_anchor_stored_energy(const cs_model *model, const cs_state *s, int a, double *kinetic) {
+    const cs_anchor_model *am = &model->anchors[a];
+    const cs_anchor_state *as = &s->anchors[a];
+    *kinetic = 0.0;
+    if (am->rigid || as->failed) return 0.0;
+    double q[2];
+    resistance(am, as, as->u, q, NULL, NULL);
+    *kinetic = kinetic_energy(am, as);
+    return 0.5 * (q[0] * q[0] + q[1] * q[1]) / am->stiffness;
+}

@@ -1,0 +1,412 @@
+/* SPDX-License-Identifier: MIT */
+/* Contact between the vehicle's outline and the cables.
+ *
+ * In plan the vehicle is a rectangle: the front face between its two front corners, the sides back to
+ * the two rear corners (vehicle.c). A cable whose straight path a corner has crossed wraps it: each corner
+ * that lies on the protected side of the path (to the left of the path directed from the start anchor to
+ * the end anchor) becomes a support of the cable, with capstan friction (cable.c), so a cable bears on
+ * the face head-on, on the front corner and along a side at an angle (straight between the front and rear
+ * corners: the side is flat), and on the rear corner as the rear swings in. Between the vehicle and the
+ * nearest standing posts the cable stays straight. Both tests are in 3D: a corner is tested where the
+ * rope runs at its abscissa (a pitched body is not where it is at the CG's height), and released when
+ * the rope no longer presses it into the outline: when its pull has a component out through the face
+ * (or the rear) or out through the side at that corner.
+ *
+ * Heights: a cable engages at its height on the span it runs on (the straight line between its
+ * neighbouring supports). At a front corner, below the face's bottom edge the vehicle rides over it
+ * (override), above the top edge it runs under it (underride). At a rear corner a cable outside the
+ * side's band passes below or above the body and does not engage. Once engaged, the contact's height at
+ * the corner is an unknown of the barrier solve with Coulomb friction on the vertical body: it sticks
+ * while the spans' pull along the body is at most mu times their pull into it, else it slides with the
+ * pull (its row below). A contact that slides past an edge slips off the vehicle for good (override or
+ * underride). */
+#include "core/vec3.h"
+#include "elements/rows.h"
+
+#include <math.h>
+
+/* > 0 if p lies to the left of the directed line a -> b in plan. */
+static double left_of(const double *a, const double *b, const double *p) {
+    return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
+}
+
+/* Height of the rope on span i (nodes i and i + 1) at abscissa x: its chord less its sag there. The span
+ * hangs as a shallow parabola under its weight across the chord, w h / l (h the chord's length in plan, l
+ * its length), at tension T: at fraction f along it the rope is w h l f (1 - f) / (2 T) below the chord,
+ * h / l of that straight down (the sag of cs_cable_stored_energy's term). A corner engages the rope where
+ * it hangs, so the two spans it makes hang on the same curve: no weight is lifted at the engagement. */
+static double span_height(const cs_cable_model *cm, const cs_cable_state *cs, int i, double x) {
+    const double *a = cs->pos + 3 * i, *b = cs->pos + 3 * (i + 1);
+    double f = (b[0] - a[0]) != 0.0 ? (x - a[0]) / (b[0] - a[0]) : 0.5;
+    f = f < 0.0 ? 0.0 : (f > 1.0 ? 1.0 : f);
+    double t = cs->tension[i], h2 = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
+    double sag = t > 0.0 ? cm->rope.w * h2 * f * (1.0 - f) / (2.0 * t) : 0.0;
+    return a[2] + f * (b[2] - a[2]) - sag;
+}
+
+/* World z of corner k's band's bottom and top edges, and the body z that maps to world z. */
+static void corner_heights(const cs_model *model, const cs_state *s, int k, double *bottom, double *top) {
+    double lo, hi, p[3];
+    cs_vehicle_corner_band(model, k, &lo, &hi);
+    cs_vehicle_corner_point(model, s, s->crush, k, lo, p);
+    *bottom = p[2];
+    cs_vehicle_corner_point(model, s, s->crush, k, hi, p);
+    *top = p[2];
+}
+
+static double body_z_for(const cs_model *model, const cs_state *s, int k, double zw) {
+    double p0[3], p1[3];
+    cs_vehicle_corner_point(model, s, s->crush, k, 0.0, p0);
+    cs_vehicle_corner_point(model, s, s->crush, k, 1.0, p1);
+    return (zw - p0[2]) / (p1[2] - p0[2]);
+}
+
+/* The cable's pull on contact node i in the vehicle frame: up the face (fz) and normal to it (fn). */
+void cs_contact_face_force(const cs_model *model, const cs_state *s, int c, int i, const double *chords,
+                           double *fz, double *fn) {
+    double f[3], fb[3];
+    cs_node_force(&s->cables[c], i, chords, f);
+    quat_unrotate(fb, s->quat, f);
+    *fz = fb[2];
+    *fn = v2_norm(fb[0], fb[1]);
+    (void)model;
+}
+
+static void slip(const cs_model *model, cs_state *s, int c, cs_event_type why) {
+    cs_cable_state *cs = &s->cables[c];
+    s->e_released += cs_cable_stored_energy(&model->cables[c], cs);
+    for (int i = cs->node_count - 2; i >= 1; i--)
+        if (cs_node_is_corner(cs->node[i])) cs_cable_remove_node(cs, i);
+    cs_cable_release(cs, CS_CABLE_SLIPPED);
+    cs_event_add(model, s, why, CS_ELEMENT_CABLE, c, s->t);
+    if (!s->contact_started) { /* the vehicle met the cable, if only to pass it */
+        s->contact_started = 1;
+        s->summary.first_contact_time_s = s->t;
+    }
+}
+
+void cs_contact_place_one(const cs_model *model, cs_state *s, int c, int i, int k, double z) {
+    cs_cable_state *cs = &s->cables[c];
+    cs->corner_z[k] = z;
+    cs_vehicle_corner_point(model, s, s->crush, k, z, cs->pos + 3 * i);
+}
+
+void cs_contact_place_corners(const cs_model *model, cs_state *s, double crush) {
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        if (!cs->engaged) continue;
+        for (int i = 1; i + 1 < cs->node_count; i++) {
+            if (!cs_node_is_corner(cs->node[i])) continue;
+            int k = cs_node_corner(cs->node[i]);
+            cs_vehicle_corner_point(model, s, crush, k, cs->corner_z[k], cs->pos + 3 * i);
+        }
+    }
+}
+
+/* Whether the rope at node i still wraps corner k: the sum of the unit vectors along its two spans (the
+ * direction it would pull the corner with equal tensions: the geometry of the turn, whatever friction
+ * does to the tensions) has no component out through the face (the rear, for a rear corner) or out
+ * through the side at that corner. In the body frame, so a rope on a pitched face that slides down it
+ * below the line it runs on in plan still bears on it. A rope that runs straight along the face or the
+ * side turns neither in nor out there, and stays. */
+static int wraps(const cs_state *s, const cs_cable_state *cs, int i, int k) {
+    double a[3], b[3], g[3], gb[3];
+    v3_sub(a, cs->pos + 3 * (i - 1), cs->pos + 3 * i);
+    v3_sub(b, cs->pos + 3 * (i + 1), cs->pos + 3 * i);
+    double la = v3_norm(a), lb = v3_norm(b);
+    if (!(la > 0.0 && lb > 0.0)) return 1;
+    for (int e = 0; e < 3; e++)
+        g[e] = a[e] / la + b[e] / lb;
+    quat_unrotate(gb, s->quat, g);
+    double out_end = cs_corner_front(k) ? gb[0] : -gb[0], out_side = k % 2 == 0 ? gb[1] : -gb[1];
+    return out_end < 0.0 && out_side <= 1e-12;
+}
+
+/* The sag term q of span i (cs_span_sag): the sag's weight below its chord is -q / (12 T). */
+/* How far across a rope's path a rear corner can come in one step: three times the vehicle's travel in
+ * it, at least 5 cm (a corner turning with the body moves little more than the body). */
+static double rear_reach(const cs_model *model, const cs_state *s) {
+    return fmax(0.05, 3.0 * v3_norm(s->vel) * model->scenario.dt);
+}
+
+static double sag_of(const cs_cable_model *cm, const cs_cable_state *cs, int i) {
+    double d[4];
+    cs_span_chord(cs, i, d);
+    return cs_span_sag(&cm->rope, d);
+}
+
+static void update_cable(const cs_model *model, cs_state *s, int c) {
+    cs_cable_state *cs = &s->cables[c];
+    cs_contact_place_corners(model, s, s->crush);
+    /* release the corners it no longer wraps, keeping where the rope was on each: a corner taken up again
+     * below (its turn can point out through the side and back within an update, as on a rope rising from
+     * an anchor at grade under the body) goes on from there, not from a contact set afresh, whose move
+     * back would be booked as a slide against friction that the rope never made (or a slide missed) */
+    int released[CS_CORNERS] = {0};
+    double was_m[CS_CORNERS], was_m_commit[CS_CORNERS];
+    for (int i = cs->node_count - 2; i >= 1; i--) {
+        if (!cs_node_is_corner(cs->node[i])) continue;
+        int k = cs_node_corner(cs->node[i]);
+        if (wraps(s, cs, i, k)) continue;
+        released[k] = 1, was_m[k] = cs->m[i], was_m_commit[k] = cs->m_commit[i];
+        double t = cs->tension[i - 1],
+               split = sag_of(&model->cables[c], cs, i - 1) + sag_of(&model->cables[c], cs, i);
+        cs_cable_remove_node(cs, i);
+        if (t > 0.0) s->e_released += (sag_of(&model->cables[c], cs, i - 1) - split) / (12.0 * t);
+    }
+    /* engage corners that have crossed the path */
+    for (int k = 0; k < CS_CORNERS; k++) {
+        if (cs_cable_find_node(cs, cs_corner_node(k)) >= 0) continue;
+        double lo, hi, p[3], zn = 0.0, bz = 0.0;
+        corner_heights(model, s, k, &lo, &hi);
+        int j = 1;
+        /* the corner at the rope's own height: where the rope would touch it (a pitched or rolled body
+         * is not where it is at the CG's height); the rope's height there found by two passes */
+        for (int pass = 0; pass < 2; pass++) {
+            cs_vehicle_corner_point(model, s, s->crush, k, bz, p);
+            for (j = 1; j < cs->node_count - 1 && cs->pos[3 * j] <= p[0];)
+                j++;
+            zn = span_height(&model->cables[c], cs, j - 1, p[0]);
+            bz = body_z_for(model, s, k, zn);
+        }
+        if (p[0] <= cs->pos[0] || p[0] >= cs->pos[3 * (cs->node_count - 1)])
+            continue; /* beyond the anchors */
+        double across = left_of(cs->pos + 3 * (j - 1), cs->pos + 3 * j, p);
+        if (across <= 0.0) continue;
+        /* a rear corner found deep across the path has passed under or over the rope while the rope was
+         * out of the side's band, and the rope stays there: only a corner that crosses it within a step
+         * (its reach) takes it up */
+        if (!cs_corner_front(k) && !released[k] &&
+            across > rear_reach(model, s) * v2_norm(cs->pos[3 * j] - cs->pos[3 * (j - 1)],
+                                                    cs->pos[3 * j + 1] - cs->pos[3 * (j - 1) + 1]))
+            continue;
+        if (zn < lo || zn > hi) {
+            if (!cs_corner_front(k)) continue; /* below or above the side */
+            slip(model, s, c, zn < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
+            return;
+        }
+        if (!released[k]) cs->corner_z[k] = cs->corner_z_commit[k] = bz;
+        cs_vehicle_corner_point(model, s, s->crush, k, cs->corner_z[k], p);
+        /* The sag's weight is measured from each span's chord (cs_cable_stored_energy): a corner that
+         * takes up a hanging rope where it hangs changes nothing real, but splits a chord in two, and
+         * with it that reference, by w^2 l^3 / (16 T) for a corner at mid-span. No work is done: the
+         * difference is booked with the released energy (docs/theory.md, The vehicle's outline and
+         * contact at an angle, "Engaging"). The release above books the chords joined again, at the
+         * tension the joined span keeps (its tension is found at the next solve, and the ledger follows
+         * it there). A corner taken up again goes on with the rope it had. */
+        double before = cs_cable_stored_energy(&model->cables[c], cs);
+        cs_cable_insert_node(cs, j, cs_corner_node(k), p);
+        if (released[k] && was_m[k] > cs->m[j - 1] && was_m[k] < cs->m[j + 1] &&
+            was_m_commit[k] > cs->m_commit[j - 1] && was_m_commit[k] < cs->m_commit[j + 1])
+            cs->m[j] = was_m[k], cs->m_commit[j] = was_m_commit[k];
+        s->e_released += before - cs_cable_stored_energy(&model->cables[c], cs);
+    }
+    cs->engaged = 0;
+    for (int i = 1; i + 1 < cs->node_count; i++)
+        cs->engaged |= cs_node_is_corner(cs->node[i]);
+    if (cs->engaged && !s->contact_started) {
+        s->contact_started = 1;
+        s->summary.first_contact_time_s = s->t;
+    }
+}
+
+/* Bring every intact cable's path in line with the vehicle's new pose. */
+void cs_contact_update(const cs_model *model, cs_state *s) {
+    for (int c = 0; c < model->cable_count; c++)
+        if (s->cables[c].status == CS_CABLE_INTACT) update_cable(model, s, c);
+}
+
+/* End of step: friction work of contacts that slid along the face (|dz| |F_z|, F_z at the bound). */
+void cs_contact_commit(const cs_model *model, cs_state *s) {
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        if (cs->status != CS_CABLE_INTACT || !cs->engaged) continue;
+        for (int i = 1; i + 1 < cs->node_count; i++) {
+            if (!cs_node_is_corner(cs->node[i])) continue;
+            int k = cs_node_corner(cs->node[i]);
+            double fz, fn;
+            cs_contact_face_force(model, s, c, i, NULL, &fz, &fn);
+            s->e_friction += (cs->corner_z[k] - cs->corner_z_commit[k]) * fz;
+            cs->corner_z_commit[k] = cs->corner_z[k];
+        }
+    }
+}
+
+/* A contact that slid past its band's edge leaves the vehicle: the cable slips off (below: the vehicle
+ * rides over it; above: it runs under it). Returns 1 if any did. */
+int cs_contact_check_slip(const cs_model *model, cs_state *s) {
+    int any = 0;
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        if (cs->status != CS_CABLE_INTACT || !cs->engaged) continue;
+        for (int i = 1; i + 1 < cs->node_count; i++) {
+            if (!cs_node_is_corner(cs->node[i])) continue;
+            int k = cs_node_corner(cs->node[i]);
+            double z = cs->corner_z[k], lo, hi;
+            cs_vehicle_corner_band(model, k, &lo, &hi);
+            if (z >= lo && z <= hi) continue;
+            slip(model, s, c, z < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
+            any = 1;
+            break;
+        }
+    }
+    return any;
+}
+
+/* Take failed posts out of every path and release the cables of failed anchors. */
+void cs_contact_drop_failed(const cs_model *model, cs_state *s) {
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        if (cs->status != CS_CABLE_INTACT) continue;
+        if (s->anchors[0].failed || s->anchors[1].failed) {
+            cs_cable_release(cs, CS_CABLE_RELEASED);
+            continue;
+        }
+        for (int i = cs->node_count - 2; i >= 1; i--)
+            if (cs->node[i] >= 0 && !cs_post_standing(&s->posts[cs->node[i]])) cs_cable_remove_node(cs, i);
+    }
+}
+
+/* The body's axes in the world. */
+static void body_axes(const cs_state *s, double ax[3][3]) {
+    for (int k = 0; k < 3; k++) {
+        double e[3] = {k == 0, k == 1, k == 2};
+        quat_rotate(ax[k], s->quat, e);
+    }
+}
+
+/* ---- the face: what pushes on it, and its rows of the barrier solve ----
+ * Unknowns: each engaged contact's height on the face (Coulomb friction along the vertical face, as for a
+ * support: lambda = the spans' pull up the face, b = mu times their pull into it plus the floor w, dz from
+ * the last step; the floor holds the contact of a slack rope where it is), and the crush, whose row
+ * balances the face's normal force N against the crush curve C: N(crush) - C(crush) = 0 (the paper's
+ * crush correction). */
+
+/* Whether anything pushes on the face: an intact cable wrapped on it or a standing post it struck. */
+int cs_face_loaded(const cs_model *model, const cs_state *s) {
+    for (int c = 0; c < model->cable_count; c++)
+        if (s->cables[c].engaged && s->cables[c].status == CS_CABLE_INTACT) return 1;
+    for (int p = 0; p < model->post_count; p++)
+        if (s->posts[p].captured && s->posts[p].pusher == CS_PUSH_FACE && cs_post_standing(&s->posts[p]))
+            return 1;
+    return 0;
+}
+
+/* Normal force on the face at the state as placed: the cables through the front corners plus the pushes
+ * of captured posts, along the vehicle's heading. chords: every cable's (max_nodes spans each), or NULL. */
+double cs_face_normal_force(const cs_model *model, const cs_state *s, const double *chords) {
+    double ax[3][3], f[3] = {0.0, 0.0, 0.0}, mo[3] = {0.0, 0.0, 0.0}, pushed = 0.0;
+    body_axes(s, ax);
+    for (int p = 0; p < model->post_count; p++)
+        if (s->posts[p].captured && s->posts[p].pusher == CS_PUSH_FACE && cs_post_standing(&s->posts[p]))
+            pushed += s->posts[p].push;
+    double n = 0.0;
+    if (pushed > 0.0) {
+        cs_post_captured_force(model, s, s->crush, 1, f, mo);
+        n = -v3_dot(f, ax[0]);
+    }
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        if (!cs->engaged || cs->status != CS_CABLE_INTACT) continue;
+        for (int i = 1; i + 1 < cs->node_count; i++) {
+            if (!cs_node_is_corner(cs->node[i]) || !cs_corner_front(cs_node_corner(cs->node[i]))) continue;
+            double fc[3];
+            cs_node_force(cs, i, chords ? chords + 4 * (size_t)c * (size_t)model->max_nodes : NULL, fc);
+            n -= v3_dot(fc, ax[0]);
+        }
+    }
+    return n;
+}
+
+/* The contact at corner k: Coulomb friction along the vertical body, as for a support (lambda = the
+ * spans' pull up the body, b = mu times their pull into it, dz from the last step). */
+static double height_residual(const cs_model *model, const cs_state *s, const cs_rows *rows, int c, int k) {
+    const cs_cable_model *cm = &model->cables[c];
+    const cs_cable_state *cs = &s->cables[c];
+    const double *ch = cs_rows_chords(model, rows, c);
+    int i = cs_cable_find_node(cs, cs_corner_node(k));
+    double fz, fn;
+    cs_contact_face_force(model, s, c, i, ch, &fz, &fn);
+    double b = model->vehicle.def.face_friction * fn;
+    double cstiff = cm->rope.ea / (ch[4 * (i - 1) + 3] + ch[4 * i + 3] + 1e-9);
+    double dz = cs->corner_z[k] - cs->corner_z_commit[k];
+    double wf = CS_FRICTION_FLOOR * cm->rope.fu, proj = cs_smooth_clamp(fz + cstiff * dz, b + wf, wf);
+    return (fz - proj - CS_STICK_EPS * cstiff * dz) * (1.0 / cm->rope.fu);
+}
+
+/* A face contact's row (height_residual): r Fu = fz - proj(fz + c dz, mu fn + w, w) - eps c dz. */
+static void height_jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row, int c,
+                            int k) {
+    const cs_cable_model *cm = &model->cables[c];
+    const cs_cable_state *cs = &s->cables[c];
+    int i = cs_cable_find_node(cs, cs_corner_node(k));
+    const cs_span_grad *sp = cs_rows_spans(model, rows, c, i);
+    double ax[3][3], f[3], fb[3], mu = model->vehicle.def.face_friction, fu = cm->rope.fu;
+    body_axes(s, ax);
+    cs_node_force(cs, i, cs_rows_chords(model, rows, c), f);
+    for (int e = 0; e < 3; e++)
+        fb[e] = v3_dot(ax[e], f);
+    double fn = v2_norm(fb[0], fb[1]), wf = CS_FRICTION_FLOOR * fu;
+    double len = sp[0].l + sp[1].l + 1e-9, cstiff = cm->rope.ea / len,
+           dz = cs->corner_z[k] - cs->corner_z_commit[k];
+    double py, pb;
+    cs_smooth_clamp_slopes(fb[2] + cstiff * dz, mu * fn + wf, wf, &py, &pb);
+    double rho[3], gp[3][3] = {{0}}, gm[3] = {0};
+    for (int e = 0; e < 3; e++) {
+        rho[e] = (1.0 - py) * ax[2][e];
+        if (fn > 0.0) rho[e] -= pb * mu * (fb[0] * ax[0][e] + fb[1] * ax[1][e]) / fn;
+        rho[e] /= fu;
+    }
+    cs_rows_force_gradient(sp, rho, gp, gm);
+    cs_rows_length_gradient(sp, -(py + CS_STICK_EPS) * dz * -cm->rope.ea / (len * len) / fu, gp);
+    cs_rows_add_node_gradient(model, s, rows, row, c, i, gp, gm);
+    cs_rows_add(rows, row, row, -(py + CS_STICK_EPS) * cstiff / fu); /* dz: the row's own unknown */
+}
+
+/* The crush row's dependence on everything but the crush: N = -sum of the front corners' pulls along
+ * the face's normal (the captured posts' pushes move with the crush alone). */
+static void crush_jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row) {
+    const cs_vehicle_def *v = &model->vehicle.def;
+    double ax[3][3], scale = v->crush_force[v->crush_point_count - 1];
+    body_axes(s, ax);
+    double rho[3] = {-ax[0][0] / scale, -ax[0][1] / scale, -ax[0][2] / scale};
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        if (!cs->engaged || cs->status != CS_CABLE_INTACT) continue;
+        for (int i = 1; i + 1 < cs->node_count; i++) {
+            if (!cs_node_is_corner(cs->node[i]) || !cs_corner_front(cs_node_corner(cs->node[i]))) continue;
+            const cs_span_grad *sp = cs_rows_spans(model, rows, c, i);
+            double gp[3][3] = {{0}}, gm[3] = {0};
+            cs_rows_force_gradient(sp, rho, gp, gm);
+            cs_rows_add_node_gradient(model, s, rows, row, c, i, gp, gm);
+        }
+    }
+}
+
+static void height_rows_residual(const cs_model *model, const cs_state *s, const cs_rows *rows,
+                                 const cs_slot *u, double *r) {
+    r[0] = height_residual(model, s, rows, u->a, u->b);
+}
+
+static void height_rows_jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row,
+                                 const cs_slot *u) {
+    height_jacobian(model, s, rows, row, u->a, u->b);
+}
+
+const cs_row_kind cs_height_rows = {1, height_rows_residual, height_rows_jacobian};
+
+static void crush_residual(const cs_model *model, const cs_state *s, const cs_rows *rows, const cs_slot *u,
+                           double *r) {
+    (void)u;
+    const cs_vehicle_def *v = &model->vehicle.def;
+    double nf = cs_face_normal_force(model, s, rows->chords);
+    r[0] = (nf - cs_crush_force(v, s->crush, s->crush_max)) / v->crush_force[v->crush_point_count - 1];
+}
+
+static void crush_rows_jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row,
+                                const cs_slot *u) {
+    (void)u;
+    crush_jacobian(model, s, rows, row);
+}
+
+const cs_row_kind cs_crush_rows = {1, crush_residual, crush_rows_jacobian};

@@ -1,0 +1,240 @@
+/* SPDX-License-Identifier: MIT */
+/* What the elements (src/elements) offer the solver and the run above them: each part's physics on the
+ * core's model and state (the rope law, a cable's path and ends, the posts with their footings, rails and
+ * attachments, the anchors, the vehicle and its contacts) and the energy ledger over them. How each gives
+ * its rows to the barrier's solve: rows.h. */
+#ifndef CS_ELEMENTS_H
+#define CS_ELEMENTS_H
+
+#include "core/core.h"
+
+/* ---- rope law (rope.c) ---- */
+double cs_rope_tension(const cs_rope *rope, double strain, double plastic_strain);
+double cs_rope_elastic_energy(const cs_rope *rope, double tension, double material);
+
+/* ---- cable paths (cable.c) ---- */
+double cs_span_length(const cs_cable_state *cs, int span);
+/* A span's chord d = p_{span+1} - p_span and its length in d[3]. The functions below that take `chords`
+ * (a cable's, 4 doubles a span as here; the solver keeps them from its last placement) form them from
+ * the node positions where it is NULL. */
+void cs_span_chord(const cs_cable_state *cs, int span, double *d);
+double cs_span_tension(const cs_cable_model *cm, const cs_cable_state *cs, int span);
+/* The same, with the span's chord put into d. */
+double cs_span_tension_chord(const cs_cable_model *cm, const cs_cable_state *cs, int span, double *d);
+/* A span's tension with its gradient, for the solver's Jacobian: along the chord d = p_{i+1} - p_i and
+ * with the material coordinates of its ends (m_i, m_{i+1}); its length and unit chord. */
+typedef struct cs_span_grad {
+    double t, l, u[3], dt_dd[3], dt_dm[2];
+} cs_span_grad;
+void cs_span_tension_grad(const cs_cable_model *cm, const cs_cable_state *cs, int span, const double *chord,
+                          cs_span_grad *g);
+double cs_span_material_at(const cs_cable_model *cm, const cs_cable_state *cs, int span, double t);
+/* The rope law of a span (rope.c): its tension with `material` of rope at plastic strain ep over a chord of
+ * `length`, sagging (sag term q = cs_span_sag); *arc (unless NULL) gets the arc's strain and *yields
+ * whether the backbone capped the tension. */
+double cs_span_tension_law(const cs_rope *rope, double length, double material, double ep, double q,
+                           double *arc, int *yields);
+double cs_span_tension_at(const cs_rope *rope, double length, double material, double ep, double q);
+double cs_span_sag(const cs_rope *rope, const double *chord);
+/* Plastic strain of span i with its ends at material coordinates lo and hi (the rope that slid in brings
+ * its own). */
+double cs_span_plastic(const cs_cable_state *cs, int span, double lo, double hi);
+/* The same from given committed strains of the span (own) and its neighbours (left, right). */
+double cs_span_plastic_of(const cs_cable_state *cs, int span, double lo, double hi, double left, double own,
+                          double right);
+/* Every span's tension, and its chord into chords if not NULL. */
+void cs_cable_update_tensions(const cs_cable_model *cm, cs_cable_state *cs, double *chords);
+/* Span i's tension from its ends as they stand (the chord into chord unless NULL). With
+ * cs_cable_update_tensions it is where the solve sets a span's tension; the commit (cs_cable_commit)
+ * sets it from the same law at the committed ends, and the installer's hold (cs_cable_hold_tension)
+ * and a release (cs_cable_release) set it outright. */
+void cs_cable_update_span(const cs_cable_model *cm, cs_cable_state *cs, int span, double *chord);
+/* Every span at tension t whatever its stretch (the rope as an installer pulls it, before it is laid in). */
+void cs_cable_hold_tension(cs_cable_state *cs, double t);
+/* Index of node id on the cable's path, -1 if it is not on it. */
+int cs_cable_find_node(const cs_cable_state *cs, int id);
+/* mu theta at interior node i, theta the path's turning angle there; the ratio is its exponential. */
+double cs_node_capstan_exponent(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs,
+                                int i, const double *chords);
+/* tanh(mu theta / 2) at interior node i: the friction band's half-width over T_L + T_R. */
+double cs_node_band_fraction(const cs_model *model, const cs_cable_model *cm, const cs_cable_state *cs, int i,
+                             const double *chords);
+void cs_cable_insert_node(cs_cable_state *cs, int at, int id, const double *p);
+void cs_cable_remove_node(cs_cable_state *cs, int at);
+void cs_cable_commit(const cs_model *model, int c, cs_state *s);
+int cs_cable_check_break(const cs_model *model, int c, cs_state *s);
+
+/* ---- a rope's end fittings (termination.c) ---- */
+/* The larger of the end spans' tensions over their fittings' strengths; its end (0 start, 1 end) in *end. */
+double cs_termination_load(const cs_cable_model *cm, const cs_cable_state *cs, int *end);
+/* Whether the rope can slip through the fitting at `end` now: it has a slip load and is not yet run out. */
+int cs_termination_slips(const cs_cable_model *cm, const cs_cable_state *cs, int end);
+/* An end whose rope has slipped through its fitting by the slip travel, or -1. */
+int cs_termination_run_out(const cs_cable_model *cm, const cs_cable_state *cs);
+/* At the commit, before m_commit takes m: the rope let through each end's fitting, its friction work and
+ * the slip's start (termination_slip). */
+void cs_termination_commit(const cs_model *model, int c, cs_state *s);
+/* The cable carries nothing from now on (broken, released by its anchor, slipped off the face). */
+void cs_cable_release(cs_cable_state *cs, cs_cable_status status);
+double cs_cable_stored_energy(const cs_cable_model *cm, const cs_cable_state *cs);
+void cs_node_force(const cs_cable_state *cs, int i, const double *chords, double *f);
+
+/* ---- a post's axis (post_axis.c): geometry only ---- */
+/* sin t / t, its derivative over t and cos t at t = |alpha|. */
+void cs_post_axis_terms(double t, double *s, double *g, double *c);
+/* The point at height z (when upright) of post p at a tilt, slid out of the ground by `pull` along its
+ * axis: from cs_post_axis_terms' s and c, or found. */
+void cs_post_attachment_from(const cs_model *model, int post, const double *tilt, double pull, double s,
+                             double c, double z, double *out);
+void cs_post_attachment(const cs_model *model, int post, const double *tilt, double pull, double z,
+                        double *out);
+/* The axis' Jacobian da/dalpha (3 x 2, row-major): from s and g, at a tilt, and with its derivatives along
+ * the two tilts (dj, 2 x 6: the solver's linearisation of a post's moment). */
+void cs_post_axis_jacobian_from(const double *tilt, double s, double g, double *j);
+void cs_post_axis_jacobian_at(const double *tilt, double *j);
+/* The unit axis a(alpha) at a tilt. */
+void cs_post_axis_at(const double *tilt, double *a);
+void cs_post_axis_jacobian(const double *tilt, double *j, double *dj);
+
+/* ---- posts and footings (post.c, footing.c) ---- */
+/* Still in the barrier: not fallen, sheared or pulled out. */
+static inline int cs_post_standing(const cs_post_state *ps) {
+    return ps->status == CS_POST_ELASTIC || ps->status == CS_POST_HINGED || ps->status == CS_POST_SOIL;
+}
+/* The arm of post p's point at height z from its pivot along its axis: z + pivot depth + its pull. */
+static inline double cs_post_arm(const cs_model *model, const cs_state *s, int p, double z) {
+    return z + model->posts[p].pivot + s->posts[p].pull;
+}
+double cs_footing_capacity(const cs_footing_def *f, double load_height);
+double cs_footing_impact_capacity(const cs_footing_def *f, double load_height);
+/* The passive wedge's three-dimensional factor R(b/D) of a member of width b and depth D (footing.c), and
+ * the dynamic factor of a footing: f_d R(B/D) / R of the bogie tests' post. */
+double cs_footing_wedge_factor(double friction_angle, double width, double depth);
+/* The soil's resistance at large movement over its peak (critical state over peak friction angle). */
+double cs_footing_residual_ratio(const cs_footing_def *f);
+double cs_footing_dynamic_factor(const cs_footing_def *f);
+double cs_footing_pullout_capacity(const cs_footing_def *f);
+/* Each intact cable's node at post p where a tilt puts it (one sine and cosine for all), and the post
+ * axis' Jacobian there (as cs_post_axis_jacobian's j) into axis if not NULL. */
+void cs_post_place_nodes(const cs_model *model, cs_state *s, int post, const double *tilt, double *axis);
+void cs_post_commit(const cs_model *model, cs_state *s, int post);
+/* Elastic plus kinetic. */
+double cs_post_stored_energy(const cs_model *model, const cs_state *s, int post);
+double cs_post_elastic_energy(const cs_model *model, const cs_state *s, int post);
+double cs_post_kinetic_energy(const cs_model *model, const cs_state *s, int post);
+int cs_post_held(const cs_model *model, const cs_state *s, int post);
+int cs_post_check_failure(const cs_model *model, cs_state *s, int post);
+/* How far a standing post folds before it is down: a post carrying ropes until its top reaches grade
+ * (lie_angle), a struck post to its rotation limit, where the vehicle's edge rides over it; rad. */
+double cs_post_fold_limit(const cs_post_model *pm, const cs_post_state *ps);
+/* The residual at a tilt, the post's cable nodes where they stand (the caller places them; chords, axis
+ * and rails as formed by the placement, or NULL: found here). */
+void cs_post_residual_at(const cs_model *model, const cs_state *s, int post, const double *tilt,
+                         const double *chords, const double *axis, const double *rails, double *r);
+/* Whether a post of this model swings over a time h since the last commit (it has mass, h in (0, inf)). */
+int cs_post_swings(const cs_post_model *pm, double h);
+void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double *q);
+/* Posts struck by the vehicle: placed for a crush (the sum of the face's pushes returned), and their
+ * resistance on the vehicle as placed (face_only: of those the face pushes), added to force and moment. */
+double cs_post_place_captured(const cs_model *model, cs_state *s, double crush);
+void cs_post_captured_force(const cs_model *model, const cs_state *s, double crush, int face_only,
+                            double *force, double *moment);
+int cs_post_capture(const cs_model *model, cs_state *s);
+
+/* ---- a post sliding out of its footing (post_pullout.c) ---- */
+#define CS_SHAFT_MOBILISATION (0.1 * CS_IN) /* slip that mobilises a shaft's friction in sand, m */
+/* The pull along its axis that the length of it still in the ground holds, N. */
+double cs_post_pull_cap(const cs_post_model *pm, const cs_post_state *ps);
+double cs_post_moment_cap(const cs_post_model *pm, const cs_post_state *ps);
+/* The ropes' and rails' pull along post p's axis as placed, N. */
+double cs_post_axial_pull(const cs_model *model, const cs_state *s, int p);
+/* A post whose pull has reached its capacity starts to slide out: returns 1 if it started. */
+int cs_post_pull_start(const cs_model *model, cs_state *s, int p);
+/* End of step: the slide's plastic work (soil) and the post out of the ground at its embedment. */
+void cs_post_pull_commit(const cs_model *model, cs_state *s, int p);
+/* The energy its shaft's slip stores, counted from where the slide started; the kinetic energy of the slide.
+ */
+double cs_post_pull_energy(const cs_model *model, const cs_state *s, int p);
+double cs_post_pull_kinetic_energy(const cs_model *model, const cs_state *s, int p);
+
+/* ---- attachments (attachment.c) ---- */
+/* The cosine of the lean at which a cable held at height z reaches the open end of post pm's slot. */
+double cs_attachment_slot_open(const cs_post_model *pm, double z);
+/* Let go of the cables post p's slot or hooks no longer hold; returns 1 if any went. */
+int cs_attachment_check_release(const cs_model *model, cs_state *s, int p);
+
+/* ---- vehicle (vehicle.c) ---- */
+void cs_vehicle_face_point(const cs_model *model, const cs_state *s, double crush, double y_body,
+                           double z_body, double *world);
+/* Corner k of the outline (CS_CORNERS) at body height z_body, in the world (the front ones crush back),
+ * and the body-z band it meets cables over (the face's or the side's). */
+void cs_vehicle_corner_point(const cs_model *model, const cs_state *s, double crush, int k, double z_body,
+                             double *world);
+void cs_vehicle_corner_band(const cs_model *model, int k, double *lo, double *hi);
+void cs_vehicle_start(const cs_model *model, cs_state *s); /* accelerations at t = 0 */
+void cs_vehicle_integrate(cs_state *s, double h);
+void cs_vehicle_finish(const cs_model *model, cs_state *s, double h);
+/* The barrier's push changed at an instant (a failure at the step's end) from old to s->force, s->moment:
+ * the accelerations the next step starts from take the new push. */
+void cs_vehicle_push_changed(const cs_model *model, cs_state *s, const double *old_force,
+                             const double *old_moment);
+double cs_crush_force(const cs_vehicle_def *v, double crush, double crush_max);
+double cs_crush_curve(const cs_vehicle_def *v, double crush);
+double cs_crush_permanent(const cs_vehicle_def *v, double crush_max);
+double cs_vehicle_kinetic_energy(const cs_model *model, const cs_state *s);
+double cs_vehicle_potential_energy(const cs_model *model, const cs_state *s);
+
+/* ---- contact (contact.c) ---- */
+void cs_contact_update(const cs_model *model, cs_state *s);
+void cs_contact_place_corners(const cs_model *model, cs_state *s, double crush);
+void cs_contact_drop_failed(const cs_model *model, cs_state *s);
+void cs_contact_face_force(const cs_model *model, const cs_state *s, int c, int i, const double *chords,
+                           double *fz, double *fn);
+/* Put the contact of corner k (node i of cable c) at body height z on the face. */
+void cs_contact_place_one(const cs_model *model, cs_state *s, int c, int i, int k, double z);
+/* Whether anything pushes on the face, and its normal force at the state as placed (chords: every
+ * cable's, max_nodes spans each, or NULL). */
+int cs_face_loaded(const cs_model *model, const cs_state *s);
+double cs_face_normal_force(const cs_model *model, const cs_state *s, const double *chords);
+void cs_contact_commit(const cs_model *model, cs_state *s);
+int cs_contact_check_slip(const cs_model *model, cs_state *s);
+
+/* ---- rails (rail.c) ---- */
+/* Add the rails' generalised moment on post p at a tilt (its neighbours where they stand; axis: the axis'
+ * Jacobian at that tilt) to q. */
+void cs_rail_moment(const cs_model *model, const cs_state *s, int p, const double *tilt, const double *axis,
+                    double *q);
+/* Every post's share of the same with the posts as placed (axes: 18 per post, as the solver keeps them),
+ * each span computed once: rails[4 (rail_count p + r) + 2 side + e], side 0 the span ending at p, 1 the
+ * span starting there (0 where it does not act); added in that order they make cs_rail_moment's sum. */
+void cs_rail_moments(const cs_model *model, const cs_state *s, const double *axes, double *rails);
+void cs_rail_commit(const cs_model *model, cs_state *s);
+/* The rails' pull on post p along its unit axis a, N. */
+double cs_rail_pull(const cs_model *model, const cs_state *s, int p, const double *a);
+/* The neighbours post p is tied to by rails now (-1: none); returns whether it has any. */
+int cs_rail_ties(const cs_model *model, const cs_state *s, int p, int *left, int *right);
+
+/* ---- anchors (anchor.c) ---- */
+void cs_anchor_derive(const cs_anchor_def *d, double gravity, cs_anchor_model *am);
+/* Whether anchor a is an unknown of the barrier solve now (it has a footing, holds, and can move). */
+int cs_anchor_active(const cs_model *model, const cs_state *s, int a);
+/* Every intact rope's end on anchor a where its displacement puts it. */
+void cs_anchor_place_nodes(const cs_model *model, cs_state *s, int a);
+/* The barrier as installed: each anchor deflected elastically by the ropes' held tensions. */
+void cs_anchor_settle(const cs_model *model, cs_state *s);
+/* r = the ropes' horizontal pull - the soil's resistance - the inertial force, N (chords as cs_node_force).
+ */
+void cs_anchor_residual(const cs_model *model, const cs_state *s, int a, const double *chords, double *r);
+void cs_anchor_commit(const cs_model *model, cs_state *s);
+int cs_anchor_check(const cs_model *model, cs_state *s);
+/* The cap on an anchor's resistance after a plastic slide s (m): its peak falling to its residual, N. */
+double cs_anchor_cap(const cs_anchor_model *am, double s);
+/* The elastic energy of anchor a's soil spring; its kinetic energy into *kinetic. */
+double cs_anchor_stored_energy(const cs_model *model, const cs_state *s, int a, double *kinetic);
+
+/* ---- the energy ledger (energy.c) ---- */
+void cs_energy_update(const cs_model *model, cs_state *s);
+double cs_energy_total(const cs_energy *e);
+double cs_energy_scale(const cs_model *model, const cs_state *s);
+
+#endif

@@ -1,0 +1,490 @@
+/* SPDX-License-Identifier: MIT */
+/* Posts: a post tilts about its base by a rotation vector alpha = theta * u (u the horizontal
+ * direction its top moves). A cable at height z sits at base + z a(alpha), with the post axis
+ *   a = (u sin theta, cos theta)  (post_axis.c).
+ * The cables' generalised moment on the post is Q = sum z J^T F, J = da/dalpha (virtual work), and the
+ * post resists with an elastic-plastic rotational spring: k (alpha - alpha_p) up to the capacity
+ * M_cap, then rotation at constant moment (the plastic hinge of Eqs. 13-20, or the footing rotating
+ * in the soil past Eq. 21). k = 3 E I / h is the cantilever of Eqs. 10-11 seen at the load height h.
+ * Whichever of post and footing holds the smaller pull at h yields: the post at Zx Fy about its base
+ * (M_cap = Zx Fy), or the footing at P(h), turning about a pivot 2/3 of its depth down (M_cap = P(h) (h +
+ * 2D/3) about that pivot, which may exceed Zx Fy while the base moment P h stays below it); the work goes
+ * to post plastic or soil. Each step the tilt is solved so that Q = resistance, plus the inertial moment of
+ * a post with mass (its swing, below); a massless post is in balance at once. */
+#include "core/vec3.h"
+#include "elements/rows.h"
+
+#include <math.h>
+#include <string.h>
+
+/* A post with mass cannot move in no time: a re-solve at the instant of a commit (after a failure)
+ * holds it where it is. */
+int cs_post_held(const cs_model *model, const cs_state *s, int p) {
+    return model->posts[p].inertia > 0.0 && s->h <= 0.0;
+}
+
+/* Post p's cable nodes where a tilt puts them, and its axis' Jacobian into axis if not NULL. */
+void cs_post_place_nodes(const cs_model *model, cs_state *s, int p, const double *tilt, double *axis) {
+    int left, right, on_path = axis || cs_rail_ties(model, s, p, &left, &right); /* an unknown, or tied */
+    for (int k = 0; k < model->cable_count; k++)
+        on_path |= s->cables[k].status == CS_CABLE_INTACT && s->cables[k].where[p] > 0;
+    if (!on_path) return; /* a post the ropes have left and no rail holds: nothing to place */
+    double sn, g, c;
+    cs_post_axis_terms(v2_norm(tilt[0], tilt[1]), &sn, &g, &c);
+    if (axis) cs_post_axis_jacobian_from(tilt, sn, g, axis);
+    double pull = s->posts[p].pull;
+    if (s->rail_pos && model->rail_count) { /* the rails' points, kept with the tilt and pull they are at */
+        for (int r = 0; r < model->rail_count; r++)
+            cs_post_attachment_from(model, p, tilt, pull, sn, c, model->rails[r].z,
+                                    s->rail_pos + 3 * ((size_t)p * (size_t)model->rail_count + (size_t)r));
+        s->rail_tilt[3 * p] = tilt[0], s->rail_tilt[3 * p + 1] = tilt[1], s->rail_tilt[3 * p + 2] = pull;
+    }
+    for (int k = 0; k < model->cable_count; k++) {
+        cs_cable_state *cs = &s->cables[k];
+        int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
+        if (i > 0) cs_post_attachment_from(model, p, tilt, pull, sn, c, model->cables[k].z, cs->pos + 3 * i);
+    }
+}
+
+void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double *q) {
+    double tr[2] = {pm->k_rot * (tilt[0] - ps->plastic[0]), pm->k_rot * (tilt[1] - ps->plastic[1])};
+    double n = v2_norm(tr[0], tr[1]), cap = cs_post_moment_cap(pm, ps);
+    double f = n > cap ? cap / n : 1.0;
+    q[0] = tr[0] * f, q[1] = tr[1] * f;
+}
+
+/* The swing: a post of inertia J about its pivot (model.c) goes, over the time h since the last
+ * commit, by backward Euler,
+ *   J (alpha - alpha_c - h w_c) / h^2 = Q_cables - Q_resist,   w = (alpha - alpha_c) / h,
+ * so its residual carries the inertial moment. J / h^2 (about 1e8 N m/rad for 20 kg m^2 at 0.5 ms)
+ * dwarfs the slope of the cables' pull that makes a post on its plateau fold (its P-delta), so the
+ * residual stays monotone in the tilt and the post swings through where the massless one had no
+ * equilibrium near. Backward Euler takes energy out of the swing at each commit, J |w - w_c|^2 / 2 and
+ * its end-point rule's share in the forces that swing the post (k |d alpha|^2 / 2 for a spring); both
+ * are booked as post damping (commit_swing below; docs/theory.md, "Posts with mass"). */
+int cs_post_swings(const cs_post_model *pm, double h) {
+    return pm->inertia > 0.0 && h > 0.0 && h < HUGE_VAL; /* not massless, held, or at rest */
+}
+
+static void subtract_inertia(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double h,
+                             double *r) {
+    if (!cs_post_swings(pm, h)) return;
+    double k = pm->inertia / (h * h);
+    r[0] -= k * (tilt[0] - ps->tilt_commit[0] - h * ps->rate[0]);
+    r[1] -= k * (tilt[1] - ps->tilt_commit[1] - h * ps->rate[1]);
+}
+
+/* At a commit: the rate the swing ended with, and what backward Euler took out of it. With Q the net
+ * generalised moment (the cables' and rails' less the resistance) at the commit, J (w - w_c) = h Q, so
+ * the kinetic energy changes by Q da - J |w - w_c|^2 / 2 while the forces' energies change by about
+ * -(Q_c + Q) da / 2: the swing loses J |w - w_c|^2 / 2 + (Q_c - Q) da / 2, booked as post damping (the
+ * trapezoid rule's work of Q less the kinetic energy's change), as an anchor's (anchor.c). Q is read
+ * off that identity (the solve has balanced it, to its tolerance); at a commit with no time since the
+ * last (a failure's re-solve), where the ropes' pull can have changed with no swing, it is evaluated.
+ * A captured post is moved by the face (no swing of its own). */
+static void commit_swing(const cs_model *model, cs_state *s, int p) {
+    const cs_post_model *pm = &model->posts[p];
+    cs_post_state *ps = &s->posts[p];
+    double *net = ps->net;
+    if (ps->captured || pm->inertia <= 0.0) {
+        ps->rate[0] = ps->rate[1] = 0.0;
+        net[0] = net[1] = 0.0;
+    } else if (cs_post_swings(pm, s->h)) {
+        double da0 = ps->tilt[0] - ps->tilt_commit[0], da1 = ps->tilt[1] - ps->tilt_commit[1];
+        double w0 = da0 / s->h, w1 = da1 / s->h, q0 = pm->inertia * (w0 - ps->rate[0]) / s->h,
+               q1 = pm->inertia * (w1 - ps->rate[1]) / s->h;
+        double kinetic =
+            0.5 * pm->inertia * (w0 * w0 + w1 * w1 - ps->rate[0] * ps->rate[0] - ps->rate[1] * ps->rate[1]);
+        s->e_post_damping += 0.5 * ((net[0] + q0) * da0 + (net[1] + q1) * da1) - kinetic;
+        ps->rate[0] = w0, ps->rate[1] = w1, net[0] = q0, net[1] = q1;
+    } else {
+        if (s->h > 0.0) ps->rate[0] = ps->rate[1] = 0.0; /* h infinite, at rest: the rate is 0 */
+        cs_post_residual_at(model, s, p, ps->tilt, NULL, NULL, NULL, net);
+    }
+    ps->tilt_commit[0] = ps->tilt[0], ps->tilt_commit[1] = ps->tilt[1];
+}
+
+/* Derivative of -(Q_resist + the inertial moment) of post p at its tilt, 2 x 2 row-major: the elastic
+ * stiffness, or on the cap the radial projection's (its moment turns with the tilt, its size held). */
+static void resistance_slope(const cs_model *model, const cs_state *s, int p, double *k) {
+    const cs_post_model *pm = &model->posts[p];
+    const cs_post_state *ps = &s->posts[p];
+    double tr[2] = {pm->k_rot * (ps->tilt[0] - ps->plastic[0]), pm->k_rot * (ps->tilt[1] - ps->plastic[1])};
+    double n = v2_norm(tr[0], tr[1]), cap = cs_post_moment_cap(pm, ps);
+    if (n > cap) {
+        double f = cap * pm->k_rot / n, u[2] = {tr[0] / n, tr[1] / n};
+        k[0] = -f * (1.0 - u[0] * u[0]), k[1] = f * u[0] * u[1], k[2] = k[1], k[3] = -f * (1.0 - u[1] * u[1]);
+    } else {
+        k[0] = k[3] = -pm->k_rot, k[1] = k[2] = 0.0;
+    }
+    if (cs_post_swings(pm, s->h)) k[0] -= pm->inertia / (s->h * s->h), k[3] -= pm->inertia / (s->h * s->h);
+}
+
+/* Residual of post p at a tilt, its cable nodes placed there and their tensions current:
+ * r = Q_cables - Q_resist, less the swing's inertial moment. */
+void cs_post_residual_at(const cs_model *model, const cs_state *s, int p, const double *tilt,
+                         const double *chords, const double *axis, const double *rails, double *r) {
+    double own[6], q[2] = {0.0, 0.0};
+    if (!axis) cs_post_axis_jacobian_at(tilt, own);
+    const double *j = axis ? axis : own;
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
+        if (i < 0) continue;
+        double f[3], l = cs_post_arm(model, s, p, model->cables[c].z);
+        cs_node_force(cs, i, chords ? chords + 4 * (size_t)c * (size_t)model->max_nodes : NULL, f);
+        q[0] += l * (j[0] * f[0] + j[2] * f[1] + j[4] * f[2]);
+        q[1] += l * (j[1] * f[0] + j[3] * f[1] + j[5] * f[2]);
+    }
+    if (rails)
+        for (int k = 0; k < 2 * model->rail_count; k++) /* each rail's span ending here, then starting */
+            q[0] += rails[2 * k], q[1] += rails[2 * k + 1];
+    else
+        cs_rail_moment(model, s, p, tilt, j, q);
+    double res[2];
+    cs_post_resistance(&model->posts[p], &s->posts[p], tilt, res);
+    r[0] = q[0] - res[0], r[1] = q[1] - res[1];
+    subtract_inertia(&model->posts[p], &s->posts[p], tilt, s->h, r);
+}
+
+/* Residual at the state as it stands (nodes placed, tensions current); chords: every cable's (max_nodes
+ * spans each), axis: the axis' Jacobian at the post's tilt; NULL forms them. */
+static void residual_now(const cs_model *model, const cs_state *s, int p, const double *chords,
+                         const double *axis, const double *rails, double *r) {
+    cs_post_residual_at(model, s, p, s->posts[p].tilt, chords, axis, rails, r);
+}
+
+/* End of step: plastic rotation (radial return) and its work, base shear and axial pull. */
+void cs_post_commit(const cs_model *model, cs_state *s, int p) {
+    cs_post_state *ps = &s->posts[p];
+    if (!cs_post_standing(ps)) return;
+    const cs_post_model *pm = &model->posts[p];
+    commit_swing(model, s, p);
+    double tr[2] = {pm->k_rot * (ps->tilt[0] - ps->plastic[0]), pm->k_rot * (ps->tilt[1] - ps->plastic[1])};
+    double n = v2_norm(tr[0], tr[1]), q = cs_post_moment_cap(pm, ps);
+    if (n > q) { /* radial return to the capacity */
+        double u[2] = {tr[0] / n, tr[1] / n};
+        double np[2] = {ps->tilt[0] - q / pm->k_rot * u[0], ps->tilt[1] - q / pm->k_rot * u[1]};
+        double w = q * v2_norm(np[0] - ps->plastic[0], np[1] - ps->plastic[1]);
+        int soil = pm->soil_yields || q < pm->moment_cap; /* a footing coming out turns in the soil */
+        if (soil)
+            s->e_soil += w;
+        else
+            s->e_post_plastic += w;
+        ps->plastic[0] = np[0], ps->plastic[1] = np[1];
+        if (!ps->yielded) {
+            ps->yielded = 1;
+            ps->status = soil ? CS_POST_SOIL : CS_POST_HINGED;
+            cs_event_add(model, s, soil ? CS_EVENT_FOOTING_ROTATION : CS_EVENT_POST_HINGE, CS_ELEMENT_POST, p,
+                         q);
+        }
+    }
+    cs_post_resistance(pm, ps, ps->tilt, ps->moment);
+    if (ps->captured) {
+        /* the horizontal push on a post leaning by theta has the component push sin(theta) along
+         * the post, out of the ground: what pulls a short post out (its skin friction grows as D^2,
+         * its lateral capacity more slowly) */
+        ps->shear = ps->push, ps->axial = ps->push * sin(v2_norm(ps->tilt[0], ps->tilt[1]));
+        return;
+    }
+    cs_post_pull_commit(model, s, p);
+    /* base shear from the post's own moment over the load height (what equilibrium allows), so a
+     * step the solver left short of equilibrium cannot report a shear it never had */
+    ps->shear = v2_norm(ps->moment[0], ps->moment[1]) / (pm->load_height + pm->pivot);
+    ps->axial = cs_post_axial_pull(model, s, p); /* the ropes' and rails' pull along it, as solved */
+}
+
+double cs_post_fold_limit(const cs_post_model *pm, const cs_post_state *ps) {
+    return ps->captured ? pm->rot_limit : pm->lie_angle;
+}
+
+/* Failure of a standing post: folded down to its limit (cs_post_fold_limit), base shear, pullout: a struck
+ * post at once at its capacity (the bogie tests'), a post the ropes pull out once it has slid all the way
+ * out (post_pullout.c; its slide starts here). Returns 1 if it failed. */
+int cs_post_check_failure(const cs_model *model, cs_state *s, int p) {
+    cs_post_state *ps = &s->posts[p];
+    if (!cs_post_standing(ps)) return 0;
+    const cs_post_model *pm = &model->posts[p];
+    double tilt = v2_norm(ps->tilt[0], ps->tilt[1]), cap = cs_post_pull_cap(pm, ps);
+    cs_post_status st;
+    cs_event_type ev;
+    double value;
+    if (tilt >= cs_post_fold_limit(pm, ps)) {
+        st = CS_POST_FAILED_ROTATION, ev = CS_EVENT_POST_ROTATION_LIMIT, value = tilt;
+    } else if (ps->shear >= pm->shear_cap) {
+        st = CS_POST_FAILED_SHEAR, ev = CS_EVENT_POST_SHEAR, value = ps->shear;
+    } else if ((ps->captured && ps->axial >= cap) || (ps->withdrawing && !(cap > 0.0))) {
+        st = CS_POST_FAILED_PULLOUT, ev = CS_EVENT_POST_PULLOUT, value = ps->axial;
+    } else {
+        cs_post_pull_start(model, s, p);
+        return 0;
+    }
+    ps->status = st;
+    cs_event_add(model, s, ev, CS_ELEMENT_POST, p, value);
+    return 1;
+}
+
+/* The elastic energy of the post's spring. */
+double cs_post_elastic_energy(const cs_model *model, const cs_state *s, int p) {
+    const cs_post_state *ps = &s->posts[p];
+    if (!cs_post_standing(ps)) return 0.0;
+    double q[2];
+    cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
+    return 0.5 * (q[0] * q[0] + q[1] * q[1]) / model->posts[p].k_rot + cs_post_pull_energy(model, s, p);
+}
+
+/* The kinetic energy of its swing, at the rate of the last commit. */
+double cs_post_kinetic_energy(const cs_model *model, const cs_state *s, int p) {
+    const cs_post_state *ps = &s->posts[p];
+    if (!cs_post_standing(ps)) return 0.0;
+    return 0.5 * model->posts[p].inertia * (ps->rate[0] * ps->rate[0] + ps->rate[1] * ps->rate[1]) +
+           cs_post_pull_kinetic_energy(model, s, p);
+}
+
+double cs_post_stored_energy(const cs_model *model, const cs_state *s, int p) {
+    return cs_post_elastic_energy(model, s, p) + cs_post_kinetic_energy(model, s, p);
+}
+
+/* ---- posts struck by the vehicle ----
+ * A standing post whose base the face's bottom edge reaches (within its width plus a margin) is
+ * struck by the vehicle: it leaves the cable paths and is pushed over at the face's bottom edge,
+ * height zb at the strike. With the face a distance d past the post's base (along the vehicle's heading
+ * f), the post leans by theta = asin(d / (zb + pivot)) toward f, resisting with its moment M
+ * (elastic-plastic, as above). A standing post that finds itself inside the body's outline in plan at
+ * the sides' bottom (the vehicle at an angle has swept its side over it: the post let its cables go,
+ * or the rear swung in) is struck by the nearer side the same way: d is how far the side's bottom edge
+ * is past the base along the side's outward normal f. Its resistance acts on the vehicle as the
+ * gradient of the work Q . dtilt with respect to the vehicle's pose, so the work the vehicle does is
+ * exactly what the post stores and dissipates; along f that is the push M / ((zb + pivot) cos theta)
+ * (push x dd = M dtheta), which also loads the crush when the face pushes. */
+#define CS_CAPTURE_MARGIN 0.1 /* m beyond each face corner that still strikes a post */
+
+/* The face at a vehicle pose (pos, quat): the middle of its bottom edge, the heading f (horizontal,
+ * unit), the body's left axis, and the edge's height (at least 5 cm). */
+static void face_frame(const cs_model *model, const double *pos, const double *quat, double crush,
+                       double *origin, double *f, double *left, double *zb) {
+    const cs_vehicle_def *v = &model->vehicle.def;
+    double x[3], bx[3] = {1.0, 0.0, 0.0}, by[3] = {0.0, 1.0, 0.0};
+    double mid[3] = {v->cg_to_front - crush, 0.0, v->face_bottom - v->cg_height};
+    quat_rotate(origin, quat, mid);
+    v3_add(origin, origin, pos);
+    quat_rotate(x, quat, bx);
+    x[2] = 0.0;
+    double n = v3_norm(x);
+    v3_scale(f, x, n > 0.0 ? 1.0 / n : 0.0);
+    quat_rotate(left, quat, by);
+    *zb = origin[2] > 0.05 ? origin[2] : 0.05;
+}
+
+/* The point of the pushing edge's bottom in line with post p, with the vehicle at a pose: where it
+ * strikes and pushes the post; and the direction f it pushes (horizontal, unit): the face's heading,
+ * or a side's outward normal. */
+static void edge_point(const cs_model *model, int p, int pusher, const double *pos, const double *quat,
+                       double crush, double *pt, double *f) {
+    const cs_vehicle_def *v = &model->vehicle.def;
+    double base[3] = {model->posts[p].x, 0.0, 0.0}, rel[3];
+    if (pusher == CS_PUSH_FACE) {
+        double o[3], left[3], zb;
+        face_frame(model, pos, quat, crush, o, f, left, &zb);
+        v3_sub(rel, base, o);
+        double edge[3] = {v->cg_to_front - crush, v3_dot(rel, left), v->face_bottom - v->cg_height};
+        quat_rotate(pt, quat, edge);
+    } else {
+        double side = pusher == CS_PUSH_LEFT ? 1.0 : -1.0, out[3] = {0.0, side, 0.0}, b[3];
+        quat_rotate(f, quat, out);
+        f[2] = 0.0;
+        double n = v3_norm(f);
+        v3_scale(f, f, n > 0.0 ? 1.0 / n : 0.0);
+        v3_sub(rel, base, pos);
+        quat_unrotate(b, quat, rel);
+        double edge[3] = {b[0], side * 0.5 * v->front_width, v->side_bottom - v->cg_height};
+        quat_rotate(pt, quat, edge);
+    }
+    v3_add(pt, pt, pos);
+}
+
+/* Where a captured post leans with the vehicle at a pose: the pushing edge's point in line with it is
+ * a distance d past the base along f, and the post turns about its pivot through the point it was
+ * struck at, ps->lever along it: sin(theta) = (d + reach) / lever, reach set at the strike so that the
+ * post goes on from where it stood (theta < 0: it leaned toward the edge when struck). The tilt is theta
+ * along f and the permanent set across it (the edge pushes along f only, so it turns no tilt across).
+ * Returns theta; f gets the direction. */
+static double captured_lean(const cs_model *model, const cs_post_state *ps, int p, const double *pos,
+                            const double *quat, double crush, double *tilt, double *f) {
+    double pt[3], rel[3], base[3] = {model->posts[p].x, 0.0, 0.0};
+    edge_point(model, p, ps->pusher, pos, quat, crush, pt, f);
+    v3_sub(rel, pt, base);
+    double sn = (v3_dot(rel, f) + ps->reach) / ps->lever;
+    sn = sn < -0.999 ? -0.999 : (sn > 0.999 ? 0.999 : sn);
+    double th = asin(sn), along = ps->plastic[0] * f[0] + ps->plastic[1] * f[1];
+    tilt[0] = ps->plastic[0] + (th - along) * f[0];
+    tilt[1] = ps->plastic[1] + (th - along) * f[1];
+    return th;
+}
+
+/* Place every captured post for a crush; returns the sum of their pushes along the vehicle's heading
+ * (the captured posts' share of the face's normal force). */
+double cs_post_place_captured(const cs_model *model, cs_state *s, double crush) {
+    double total = 0.0;
+    for (int p = 0; p < model->post_count; p++) {
+        cs_post_state *ps = &s->posts[p];
+        if (!ps->captured || !cs_post_standing(ps)) continue;
+        double q[2], f[3];
+        double th = captured_lean(model, ps, p, s->pos, s->quat, crush, ps->tilt, f);
+        cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
+        double m = q[0] * f[0] + q[1] * f[1];
+        ps->bearing = m >= 0.0;
+        if (!ps->bearing) { /* the edge has backed off: the post stands at its set, free */
+            ps->tilt[0] = ps->plastic[0], ps->tilt[1] = ps->plastic[1];
+            ps->push = 0.0;
+            continue;
+        }
+        ps->push = m / (ps->lever * cos(th));
+        if (ps->pusher == CS_PUSH_FACE) total += ps->push;
+    }
+    return total;
+}
+
+/* The captured posts' resistance (as placed for this crush) on the vehicle, added to force and moment:
+ * the gradient of the work Q . dtilt with respect to the vehicle's pose (central differences, 1e-6 m
+ * and 1e-6 rad), so that the vehicle's work is exactly what the posts store and dissipate however the
+ * face moves (pushing on, coming down, rolling, sliding along its edge). */
+void cs_post_captured_force(const cs_model *model, const cs_state *s, double crush, int face_only,
+                            double *force, double *moment) {
+    for (int p = 0; p < model->post_count; p++) {
+        const cs_post_state *ps = &s->posts[p];
+        if (!ps->captured || !cs_post_standing(ps) || !(ps->push > 0.0)) continue;
+        if (face_only && ps->pusher != CS_PUSH_FACE) continue;
+        double q[2];
+        cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
+        const double h = 1e-6;
+        for (int k = 0; k < 6; k++) {
+            double tp[2], tm[2], qp[4], qm[4], pos[3], turn[3] = {0.0, 0.0, 0.0}, w[3], fk[3];
+            memcpy(qp, s->quat, sizeof qp), memcpy(qm, s->quat, sizeof qm);
+            v3_copy(pos, s->pos);
+            if (k < 3) {
+                pos[k] += h;
+                captured_lean(model, ps, p, pos, s->quat, crush, tp, fk);
+                pos[k] -= 2.0 * h;
+                captured_lean(model, ps, p, pos, s->quat, crush, tm, fk);
+            } else { /* a turn about world axis k - 3, applied in the body frame */
+                turn[k - 3] = 1.0;
+                quat_unrotate(w, s->quat, turn);
+                quat_integrate(qp, w, h);
+                quat_integrate(qm, w, -h);
+                captured_lean(model, ps, p, pos, qp, crush, tp, fk);
+                captured_lean(model, ps, p, pos, qm, crush, tm, fk);
+            }
+            double g = -(q[0] * (tp[0] - tm[0]) + q[1] * (tp[1] - tm[1])) / (2.0 * h);
+            if (k < 3)
+                force[k] += g;
+            else
+                moment[k - 3] += g;
+        }
+    }
+}
+
+/* Post p struck by `pusher`: off the cable paths, its lever where the edge strikes it. */
+static void capture(const cs_model *model, cs_state *s, int p, int pusher) {
+    cs_post_state *ps = &s->posts[p];
+    ps->captured = 1;
+    ps->bearing = 1;
+    ps->pusher = pusher;
+    double pt[3], f[3];
+    edge_point(model, p, pusher, s->pos, s->quat, s->crush, pt, f);
+    ps->lever = (pt[2] > 0.05 ? pt[2] : 0.05) + model->posts[p].pivot;
+    double rel[3], base[3] = {model->posts[p].x, 0.0, 0.0}, lean = ps->tilt[0] * f[0] + ps->tilt[1] * f[1];
+    v3_sub(rel, pt, base);
+    ps->reach = ps->lever * sin(lean) - v3_dot(rel, f);
+    if (!s->contact_started) {
+        s->contact_started = 1;
+        s->summary.first_contact_time_s = s->t;
+    }
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        if (cs->status == CS_CABLE_INTACT && cs->where[p] > 0) cs_cable_remove_node(cs, cs->where[p]);
+    }
+}
+
+/* Capture the standing posts the face has reached, and those a side has swept over. Returns 1 if any
+ * was captured. */
+int cs_post_capture(const cs_model *model, cs_state *s) {
+    const cs_vehicle_def *v = &model->vehicle.def;
+    double o[3], f[3], left[3], zb;
+    face_frame(model, s->pos, s->quat, s->crush, o, f, left, &zb);
+    int any = 0;
+    for (int p = 0; p < model->post_count; p++) {
+        cs_post_state *ps = &s->posts[p];
+        if (ps->captured || !cs_post_standing(ps)) continue;
+        double top[3], rel[3], b[3];
+        cs_post_attachment(model, p, ps->tilt, ps->pull, zb, top);
+        v3_sub(rel, o, top);
+        double d = v3_dot(rel, f), lat = v3_dot(rel, left);
+        if (d >= 0.0 && fabs(lat) <= 0.5 * v->front_width + CS_CAPTURE_MARGIN && d <= zb) {
+            capture(model, s, p, CS_PUSH_FACE);
+            any = 1;
+            continue;
+        }
+        /* the post at the sides' bottom height, in the body frame */
+        double zs = v->side_bottom - v->cg_height, lo[3] = {0.0, 0.0, zs}, wl[3];
+        quat_rotate(wl, s->quat, lo);
+        cs_post_attachment(model, p, ps->tilt, ps->pull, s->pos[2] + wl[2], top);
+        v3_sub(rel, top, s->pos);
+        quat_unrotate(b, s->quat, rel);
+        if (b[0] > -v->cg_to_rear && b[0] < v->cg_to_front - s->crush && fabs(b[1]) < 0.5 * v->front_width) {
+            capture(model, s, p, b[1] >= 0.0 ? CS_PUSH_LEFT : CS_PUSH_RIGHT);
+            any = 1;
+        }
+    }
+    return any;
+}
+
+/* ---- the post's rows of the barrier solve ----
+ * Unknowns: the tilt alpha (2) (and, sliding out, the pull w: post_pullout.c, whose column the arms
+ * z + d_p + w depend on). Rows: Q_cables(alpha) - Q_resist(alpha) - J (alpha - alpha_c - h w_c) / h^2,
+ * in units of the post's moment_scale (its strongest rope's strength at that rope's lever, model.c), so
+ * that one tolerance is one force everywhere. */
+static void residual(const cs_model *model, const cs_state *s, const cs_rows *rows, const cs_slot *u,
+                     double *r) {
+    double q[2];
+    residual_now(model, s, u->a, rows->chords, rows->axes + 18 * u->a,
+                 rows->rails + 4 * (size_t)u->a * (size_t)model->rail_count, q);
+    double inv = 1.0 / model->posts[u->a].moment_scale;
+    r[0] = q[0] * inv, r[1] = q[1] * inv;
+}
+
+/* A post's two rows: Q = sum over its cables of l_c J(alpha)^T f_c, less resistance and inertia. */
+static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row,
+                     const cs_slot *u) {
+    int p = u->a;
+    const double *ja = rows->axes + 18 * p, *dj = ja + 6;
+    double kr[4], unit = model->posts[p].moment_scale; /* as residual */
+    resistance_slope(model, s, p, kr);
+    for (int a = 0; a < 2; a++)
+        for (int b = 0; b < 2; b++)
+            cs_rows_add(rows, row + a, row + b, kr[2 * a + b] / unit);
+    int pc = rows->pull_index[p];
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
+        if (i < 0) continue;
+        const cs_span_grad *sp = cs_rows_spans(model, rows, c, i);
+        double l = cs_post_arm(model, s, p, model->cables[c].z), f[3];
+        cs_node_force(cs, i, cs_rows_chords(model, rows, c), f);
+        for (int a = 0; a < 2; a++) {
+            if (pc >= 0) /* the arm growing as the post slides out */
+                cs_rows_add(rows, row + a, pc, (ja[a] * f[0] + ja[2 + a] * f[1] + ja[4 + a] * f[2]) / unit);
+            double rho[3] = {l * ja[a] / unit, l * ja[2 + a] / unit, l * ja[4 + a] / unit};
+            double gp[3][3] = {{0}}, gm[3] = {0};
+            cs_rows_force_gradient(sp, rho, gp, gm);
+            cs_rows_add_node_gradient(model, s, rows, row + a, c, i, gp, gm);
+            for (int b = 0; b < 2; b++) /* the axis turning under the pull */
+                cs_rows_add(rows, row + a, row + b,
+                            l * (dj[6 * b + a] * f[0] + dj[6 * b + 2 + a] * f[1] + dj[6 * b + 4 + a] * f[2]) /
+                                unit);
+        }
+    }
+    cs_rail_jacobian(model, s, rows, row, p, unit);
+}
+
+const cs_row_kind cs_post_rows = {2, residual, jacobian};

@@ -1,0 +1,30 @@
+/* SPDX-License-Identifier: MIT */
+/* The run (src/run), the engine's top layer: the model built from the definitions (model.c), the state
+ * created with its workspace and read through views (state.c), a step and the run loop (step.c), and the
+ * response parameters (response.c). */
+#ifndef CS_RUN_H
+#define CS_RUN_H
+
+#include "solver/solver.h"
+
+/* Barrier solves a run may make per step to t_end on average, by default: a step takes about one (1.01 to
+ * 1.04 over the crash tests), a step cut into its finest pieces some 70; a run that needs 20 a step over
+ * its whole length is not following its path (docs/robustness.md). */
+#define CS_SOLVE_BUDGET 20.0
+
+/* A state's memory and its workspace, not yet set for a run (cs_state_create resets it: cs_state_reset,
+ * step.c). NULL with err set if out of memory. */
+cs_state *cs_state_allocate(const cs_model *model, cs_error *err);
+
+/* ---- response parameters (response.c) ---- */
+void cs_response_update(const cs_model *model, cs_state *s);
+/* The sudden-loss check on samples fed one by one (cs_sudden_losses): start with a ring of `size`
+ * samples (t and f), feed each with the events up to its time, finish at the end with all of them. */
+void cs_loss_scan_start(cs_loss_scan *scan, double *t, double *f, int size, double step);
+void cs_loss_scan_feed(cs_loss_scan *scan, double t, double force, const cs_event *events, int event_count);
+/* The windows flagged, kept ones in found[0 .. kept), the rest counted in missed: kept + missed. */
+int cs_loss_scan_finish(cs_loss_scan *scan, const cs_event *events, int event_count);
+/* End the run as "did not converge": its solves have used up the budget. */
+void cs_response_give_up(const cs_model *model, cs_state *s, cs_outcome why);
+
+#endif

@@ -1,0 +1,32 @@
+/* SPDX-License-Identifier: MIT */
+/* The workspace of a state: what the step needs besides the physical state (the barrier system's
+ * unknowns, factors and predictor history, and whole-state copies to go back to), allocated with the
+ * state and left out of its hash. It is not without effect: the predictor's history and the kept Jacobian
+ * decide where each solve starts, and so where, within the solver's tolerance, it ends. A run starts it
+ * afresh (cs_state_reset), so a run's result is the same every time; a state copied into another workspace
+ * mid-run goes on to the same results only within that tolerance. */
+#ifndef CS_WORK_H
+#define CS_WORK_H
+
+#include "solver/system.h"
+
+enum { CS_PATH_LEVELS = 2 }; /* how many times a step may be cut into pieces (step.c) */
+
+struct cs_work {
+    cs_system sys;
+    /* the state at the start of the stretch followed at each level, to take it again (step.c) */
+    cs_state *step_start[CS_PATH_LEVELS];
+    cs_state *trial;         /* a trial commit (barrier.c) */
+    double stored_committed; /* cs_barrier_stored_energy where the stretch being followed started or last
+                              * committed at the last level, J (step.c) */
+    double solver_residual;  /* largest residual of the solves the step committed */
+    struct {
+        long solves;     /* barrier solves at a pose */
+        long fallback;   /* of them, those that needed the fallback's sweeps (relax.c) */
+        long fall_tries; /* of them, those that tried letting a post fall (relax.c) */
+        long falls;      /* of those, the falls kept (barrier.c) */
+        long pieces;     /* steps the path following cut into pieces (step.c) */
+    } count;             /* since the state was reset */
+};
+
+#endif
