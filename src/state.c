@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The state: allocated once per model with its workspace (the step never allocates), copied, and read through
  * views. */
+#include "fnv.h"
 #include "internal.h"
 #include "vec3.h"
 #include "work.h"

@@ -11,12 +11,7 @@
 
 #include <stddef.h>
 
-/** Marks a function of the library's interface: exported from libcablesim.so, which hides the rest. */
-#if defined(__GNUC__)
-#define CS_API __attribute__((visibility("default")))
-#else
-#define CS_API
-#endif
+#include "cablesim/export.h"
 
 #ifdef __cplusplus
 extern "C" {

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "cablesim/loader.h"
+#include "fnv.h"
 #include "schema.h"
 
 static unsigned long long bytes(unsigned long long h, const void *data, size_t n) {

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "cablesim/loader.h"
+#include "fnv.h"
 #include "rating.h"
 #include "sweep.h"
 
@@ -36,9 +37,11 @@ static int load_run(cs_loader *l, const cs_sweep_spec *s, const double *xrow, in
 }
 
 cs_loader *cs_sweep_loader(const cs_sweep_spec *s, char *why, size_t why_size) {
-    cs_loader *l = cs_loader_create(NULL, why, why_size);
+    cs_error err;
+    cs_loader *l = cs_loader_create(NULL, &err);
+    if (!l) snprintf(why, why_size, "%s", err.message);
     for (int i = 0; l && i < s->allow.count; i++)
-        cs_loader_allow_path(l, s->allow.dirs[i], why, why_size); /* canonical folders: each is one */
+        cs_loader_allow_path(l, s->allow.dirs[i], NULL); /* canonical folders: each is one */
     return l;
 }
 
