@@ -218,16 +218,17 @@ int cs_command_designer(int argc, char **argv) {
     if (argc - 1 - optind > 1)
         return cs_cli_usage_error(&cli, "more than one model file ('%s' and '%s')", argv[1 + optind],
                                   argv[2 + optind]);
-    char why[256], buf[PATH_MAX], out_dir[1024], real[PATH_MAX];
-    cs_loader *l = cs_loader_create(NULL, why, sizeof why);
+    char buf[PATH_MAX], out_dir[1024], real[PATH_MAX];
+    cs_error err;
+    cs_loader *l = cs_loader_create(NULL, &err);
     if (!l) {
-        fprintf(stderr, "cablesim designer: %s\n", why);
+        fprintf(stderr, "cablesim designer: %s\n", err.message);
         return CS_EXIT_RUN;
     }
     for (int i = 0; i < allow_count; i++)
-        if (cs_loader_allow_path(l, allow[i], buf, sizeof buf) != 0) {
+        if (cs_loader_allow_path(l, allow[i], &err) != CS_OK) {
             cs_loader_free(l);
-            return cs_cli_usage_error(&cli, "--allow-path %s", buf);
+            return cs_cli_usage_error(&cli, "--allow-path %s", err.message);
         }
     file = argc - 1 > optind ? argv[1 + optind] : default_model(l, buf, sizeof buf);
     int rc = CS_EXIT_USAGE;

@@ -163,6 +163,7 @@ static int parse(int argc, char **argv, const cs_cli *cli, int is_run, options *
     optind = 1;
     while ((v = cs_cli_next(cli, argc, argv, is_run ? "ho:" : "h", is_run ? run_opts : check_opts)) != -1) {
         char set[1200];
+        cs_error err;
         switch (v) {
         case 'h':
             o->file = NULL;
@@ -183,8 +184,8 @@ static int parse(int argc, char **argv, const cs_cli *cli, int is_run, options *
             if (occupant_at(cli, optarg, o) != 0) return EXIT_BAD;
             break;
         case ALLOW:
-            if (cs_loader_allow_path(l, optarg, set, sizeof set) != 0)
-                return cs_cli_usage_error(cli, "--allow-path %s", set);
+            if (cs_loader_allow_path(l, optarg, &err) != CS_OK)
+                return cs_cli_usage_error(cli, "--allow-path %s", err.message);
             break;
         case SET:
         case DT:
@@ -424,10 +425,10 @@ int main(int argc, char **argv) {
         return bad_usage(what);
     }
     if (!is_run && !is_check && (rc = no_arguments(argc, argv, &list_cli)) >= 0) return rc;
-    char why[256];
-    cs_loader *l = cs_loader_create(NULL, why, sizeof why);
+    cs_error err;
+    cs_loader *l = cs_loader_create(NULL, &err);
     if (!l) {
-        fprintf(stderr, "cablesim: %s\n", why);
+        fprintf(stderr, "cablesim: %s\n", err.message);
         return EXIT_RUN;
     }
     static cs_overrides overrides;

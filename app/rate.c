@@ -279,10 +279,10 @@ static int rate_antiram(cs_loader *l, const char *file, cs_standard std, const c
 
 int cs_command_rate(int argc, char **argv) {
     const char *file = NULL, *std_name = NULL, *klass = NULL, *level = NULL, *test = NULL;
-    char why[256];
-    cs_loader *l = cs_loader_create(NULL, why, sizeof why);
+    cs_error err;
+    cs_loader *l = cs_loader_create(NULL, &err);
     if (!l) {
-        fprintf(stderr, "cablesim: %s\n", why);
+        fprintf(stderr, "cablesim: %s\n", err.message);
         return CS_EXIT_RUN;
     }
     static const struct option longopts[] = {
@@ -305,8 +305,8 @@ int cs_command_rate(int argc, char **argv) {
             test = optarg;
         else if (v == 'S')
             cs_loader_set(l, optarg);
-        else if (v == 'A' && cs_loader_allow_path(l, optarg, why, sizeof why) != 0)
-            rc = cs_cli_usage_error(&rate_cli, "--allow-path %s", why);
+        else if (v == 'A' && cs_loader_allow_path(l, optarg, &err) != CS_OK)
+            rc = cs_cli_usage_error(&rate_cli, "--allow-path %s", err.message);
         else if (v == 'A')
             continue;
         else

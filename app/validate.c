@@ -1051,9 +1051,10 @@ static void suite_free(suite *s) {
  * library). NULL, the reason printed, if either cannot be had. */
 static suite *suite_create(void) {
     char why[1600], data_dir[1100];
+    cs_error err;
     suite *s = calloc(1, sizeof *s);
-    if (!s || !(s->loader = cs_loader_create(NULL, why, sizeof why))) {
-        fprintf(stderr, "cablesim validate: %s\n", s ? why : "out of memory");
+    if (!s || !(s->loader = cs_loader_create(NULL, &err))) {
+        fprintf(stderr, "cablesim validate: %s\n", s ? err.message : "out of memory");
         free(s);
         return NULL;
     }

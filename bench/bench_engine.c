@@ -36,12 +36,13 @@ int main(int argc, char **argv) {
         fprintf(stderr, "usage: bench_engine MODEL [--repeat R] [--t-end T] [--set PATH=VALUE]...\n");
         return 2;
     }
-    char why[256], set[512];
+    char set[512];
     int repeat = 3;
     double t0 = now();
-    cs_loader *l = cs_loader_create(NULL, why, sizeof why);
+    cs_error err;
+    cs_loader *l = cs_loader_create(NULL, &err);
     if (!l) {
-        fprintf(stderr, "bench_engine: %s\n", why);
+        fprintf(stderr, "bench_engine: %s\n", err.message);
         return 1;
     }
     for (int i = 2; i < argc; i++) {
@@ -67,7 +68,7 @@ int main(int argc, char **argv) {
     double load = now() - t0, dt = in.scenario.dt;
     int posts = in.barrier.post_count, cables = in.barrier.cable_count;
     cs_loader_free(l);
-    cs_error err = {0};
+    err = (cs_error){0};
     cs_state *s = cs_state_create(m, &err);
     if (!s) {
         fprintf(stderr, "bench_engine: %s\n", err.message);

@@ -26,9 +26,9 @@ static cs_loader *loader;
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (!loader) {
-        char why[256];
-        if (!(loader = cs_loader_create(CS_SOURCE_DIR "/data", why, sizeof why))) {
-            fprintf(stderr, "fuzz_loader: %s\n", why);
+        cs_error err;
+        if (!(loader = cs_loader_create(CS_SOURCE_DIR "/data", &err))) {
+            fprintf(stderr, "fuzz_loader: %s\n", err.message);
             abort();
         }
     }

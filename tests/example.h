@@ -104,9 +104,10 @@ static inline void pin_write(const char *csv, const char *hash_file, const char 
 }
 
 static inline cs_model *example_model(const char *name, const char *const *sets, cs_loader **loader) {
-    char why[256], path[512];
-    cs_loader *l = cs_loader_create(CS_SOURCE_DIR "/data", why, sizeof why);
-    if (!l) fail_msg("%s", why);
+    char path[512];
+    cs_error err;
+    cs_loader *l = cs_loader_create(CS_SOURCE_DIR "/data", &err);
+    if (!l) fail_msg("%s", err.message);
     snprintf(path, sizeof path, CS_SOURCE_DIR "/examples/%s.yaml", name);
     for (int k = 0; sets && sets[k]; k++)
         if (cs_loader_set(l, sets[k]) != 0) fail_msg("%s: bad assignment %s", name, sets[k]);

@@ -49,8 +49,9 @@ has() { # has PACKAGE [ARCH] PATTERN...: each pattern is a whole line of the pac
 }
 lib=/usr/lib/$multiarch
 has libcablesim0 "$lib/libcablesim.so.$version" "$lib/libcablesim.so.0 -> libcablesim.so.$version"
-has libcablesim-dev /usr/include/cablesim/cablesim.h /usr/include/cablesim/def.h /usr/include/cablesim/sim.h \
-    /usr/include/cablesim/loader.h /usr/include/cablesim/output.h /usr/include/cablesim/units.h \
+has libcablesim-dev /usr/include/cablesim/cablesim.h /usr/include/cablesim/export.h /usr/include/cablesim/def.h \
+    /usr/include/cablesim/sim.h /usr/include/cablesim/loader.h /usr/include/cablesim/output.h \
+    /usr/include/cablesim/rating.h /usr/include/cablesim/units.h \
     "$lib/libcablesim.so -> libcablesim.so.0" "$lib/libcablesim.a" "$lib/pkgconfig/cablesim.pc" \
     "$lib/cmake/cablesim/cablesimConfig.cmake" "$lib/cmake/cablesim/cablesimTargets.cmake"
 has cablesim /usr/bin/cablesim /usr/share/man/man1/cablesim.1.gz /usr/share/man/man1/cablesim-run.1.gz \

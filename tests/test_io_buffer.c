@@ -21,9 +21,9 @@
 static const double MPH = 0.44704;
 
 static cs_loader *new_loader(void) {
-    char why[256];
-    cs_loader *l = cs_loader_create(CS_SOURCE_DIR "/data", why, sizeof why);
-    if (!l) fail_msg("%s", why);
+    cs_error err;
+    cs_loader *l = cs_loader_create(CS_SOURCE_DIR "/data", &err);
+    if (!l) fail_msg("%s", err.message);
     return l;
 }
 
@@ -106,15 +106,17 @@ static void test_set_and_reset(void **state) {
     assert_string_equal(in.name, "inline");
     assert_true(fabs(in.scenario.speed - 35 * MPH) < 1e-9);
     cs_loader_reset(l);
-    assert_int_equal(cs_loader_load_buffer(l, "tests/bad/inline.yaml", model, strlen(model), &in), -1);
+    assert_int_equal(cs_loader_load_buffer(l, "tests/bad/inline.yaml", model, strlen(model), &in),
+                     CS_ERR_INVALID);
     assert_int_equal(cs_loader_error_count(l), 1); /* no base.yaml there */
     assert_non_null(
         strstr(cs_loader_error(l, 0), "tests/bad/inline.yaml:2:17: barrier.file: cannot open 'base.yaml'"));
     cs_loader_reset(l); /* the --set and the problems are gone */
     assert_int_equal(cs_loader_error_count(l), 0);
     assert_int_equal(cs_loader_load_buffer(l, "tests/good/inline.yaml", model, strlen(model), &in), 0);
-    assert_true(fabs(in.scenario.speed - 40 * MPH) < 1e-9);               /* base.yaml's */
-    assert_int_equal(cs_loader_load_buffer(l, "x.yaml", "", 0, &in), -1); /* empty: a problem, no crash */
+    assert_true(fabs(in.scenario.speed - 40 * MPH) < 1e-9); /* base.yaml's */
+    assert_int_equal(cs_loader_load_buffer(l, "x.yaml", "", 0, &in),
+                     CS_ERR_INVALID); /* empty: a problem, no crash */
     cs_loader_free(l);
 }
 

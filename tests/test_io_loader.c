@@ -23,9 +23,9 @@ static void close_to(double got, double want) {
 }
 
 static cs_loader *new_loader(void) {
-    char why[256];
-    cs_loader *l = cs_loader_create(CS_SOURCE_DIR "/data", why, sizeof why);
-    if (!l) fail_msg("%s", why);
+    cs_error err;
+    cs_loader *l = cs_loader_create(CS_SOURCE_DIR "/data", &err);
+    if (!l) fail_msg("%s", err.message);
     return l;
 }
 
@@ -162,7 +162,7 @@ static void test_library_parts(void **state) {
     assert_int_equal(cs_loader_part(l, CS_PART_ROPE, "A603-0.75in", &r), 0);
     close_to(r.nominal_strength, 52000 * LBF);
     close_to(r.mass_per_length, 0.95 * LB / FT);
-    assert_int_equal(cs_loader_part(l, CS_PART_ROPE, "no-such-rope", &r), -1);
+    assert_int_equal(cs_loader_part(l, CS_PART_ROPE, "no-such-rope", &r), CS_ERR_INVALID);
     assert_non_null(strstr(cs_loader_error(l, 0), "no rope part named 'no-such-rope'"));
     cs_loader_free(l);
 }
@@ -212,7 +212,7 @@ static void expect_problems(const char *file, const char *const *sets, const cha
     for (int i = 0; sets && sets[i]; i++)
         cs_loader_set(l, sets[i]);
     cs_model_input in;
-    assert_int_equal(cs_loader_load(l, file, &in), -1);
+    assert_int_equal(cs_loader_load(l, file, &in), CS_ERR_INVALID);
     int n = 0;
     while (want[n])
         n++;
@@ -326,7 +326,7 @@ static void test_reuse(void **state) {
         if (round == 2) cs_loader_set(l, "scenario.colour=red");
         if (round == 3) cs_loader_set(l, "scenario.speed=35 mph");
         int rc = cs_loader_load(l, file, &in);
-        assert_int_equal(rc, round == 2 ? -1 : 0);
+        assert_int_equal(rc, round == 2 ? CS_ERR_INVALID : CS_OK);
         if (round == 2) continue;
         assert_int_equal(in.barrier.post_count, 7);
         close_to(in.vehicle.mass, 16000 * LB);
@@ -444,8 +444,7 @@ static void test_every_problem_reported(void **state) {
 /* Two loaders, each with its own units and files, at once. */
 static void *load_aps3(void *arg) {
     cs_model_input in;
-    char why[256];
-    cs_loader *l = cs_loader_create(CS_SOURCE_DIR "/data", why, sizeof why);
+    cs_loader *l = cs_loader_create(CS_SOURCE_DIR "/data", NULL);
     *(double *)arg =
         l && cs_loader_load(l, CS_SOURCE_DIR "/examples/aps3.yaml", &in) == 0 ? in.barrier.posts[15].x : -1;
     cs_loader_free(l);

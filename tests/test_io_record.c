@@ -50,9 +50,9 @@ static int exists(const char *dir, const char *name) {
 
 static void public_record_and_outputs(void **state) {
     (void)state;
-    char why[512];
-    cs_loader *l = cs_loader_create(CS_SOURCE_DIR "/data", why, sizeof why);
-    if (!l) fail_msg("%s", why);
+    cs_error err;
+    cs_loader *l = cs_loader_create(CS_SOURCE_DIR "/data", &err);
+    if (!l) fail_msg("%s", err.message);
     assert_int_equal(cs_loader_set(l, "scenario.t_end=60 ms"), 0);
     cs_model_input in;
     cs_model *m = NULL;
@@ -60,7 +60,6 @@ static void public_record_and_outputs(void **state) {
         cs_loader_print_errors(l, stderr);
         fail_msg("examples/aps3.yaml did not load");
     }
-    cs_error err;
     cs_state *s = cs_state_create(m, &err);
     cs_record *rec = cs_record_create(m, &err);
     assert_non_null(s), assert_non_null(rec);
@@ -94,13 +93,14 @@ static void public_record_and_outputs(void **state) {
     assert_non_null(mkdtemp(dir));
     char out[64];
     snprintf(out, sizeof out, "%s/run", dir);
-    assert_int_equal(cs_write_outputs(out, &in, m, s, rec, 0, why, sizeof why), 0);
+    assert_int_equal(cs_write_outputs(out, &in, m, s, rec, 0, &err), CS_OK);
     assert_true(exists(out, "timeseries.csv") && exists(out, "events.csv") && exists(out, "summary.json"));
     assert_false(exists(out, "plots"));
     char blocked[sizeof out + 20];
     snprintf(blocked, sizeof blocked, "%s/summary.json/run", out); /* a folder under a file: refused */
-    assert_int_equal(cs_write_outputs(blocked, &in, m, s, rec, 0, why, sizeof why), -1);
-    assert_true(strlen(why) > 0);
+    assert_int_equal(cs_write_outputs(blocked, &in, m, s, rec, 0, &err), CS_ERR_IO);
+    assert_int_equal(err.status, CS_ERR_IO);
+    assert_true(strlen(err.message) > 0);
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
     assert_int_equal(system(cmd), 0);

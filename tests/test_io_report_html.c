@@ -29,9 +29,8 @@ typedef struct run {
 
 static int setup(void **st) {
     run *r = calloc(1, sizeof *r);
-    char why[256];
     assert_non_null(r);
-    r->loader = cs_loader_create(NULL, why, sizeof why);
+    r->loader = cs_loader_create(NULL, NULL);
     assert_non_null(r->loader);
     cs_loader_set(r->loader, "scenario.t_end=40 ms");
     if (cs_loader_load(r->loader, "examples/aps3.yaml", &r->in) != 0) {

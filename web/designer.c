@@ -67,16 +67,16 @@ static const char *fail(const char *what) {
 
 /* Keep the page's unit table and make the loader (parts library: data_dir). Returns JSON {"ok"}. */
 EMSCRIPTEN_KEEPALIVE const char *cs_web_open(const char *table, const char *data_dir) {
-    char why[256];
+    cs_error err;
     free(units_table);
     cs_loader_free(loader);
     loaded_path[0] = '\0';
     units_table = strdup(table);
-    loader = units_table ? cs_loader_create(data_dir, why, sizeof why) : NULL;
-    if (!loader) return fail(units_table ? why : "out of memory");
+    loader = units_table ? cs_loader_create(data_dir, &err) : NULL;
+    if (!loader) return fail(units_table ? err.message : "out of memory");
     /* the page's file system holds only the files `cablesim designer` read under the rule of the folders
      * a model may read (its --allow-path folders included): all of it may be read */
-    if (cs_loader_allow_path(loader, "/", why, sizeof why) != 0) return fail(why);
+    if (cs_loader_allow_path(loader, "/", &err) != CS_OK) return fail(err.message);
     FILE *f = begin();
     fputs("{\"ok\":true}", f);
     return end(f);

@@ -18,12 +18,13 @@ int main(int argc, char **argv) {
     const char *file = argc > 1 ? argv[1] : "examples/aps3.yaml";
     const char *spacing = argc > 2 ? argv[2] : "6 ft";
     const char *dir = argc > 3 ? argv[3] : NULL;
-    char why[512], set[256];
+    char set[256];
 
     /* Load the model with the override; the parts library is found as docs/library.md says. */
-    cs_loader *loader = cs_loader_create(NULL, why, sizeof why);
+    cs_error err = {CS_OK, ""};
+    cs_loader *loader = cs_loader_create(NULL, &err);
     if (!loader) {
-        fprintf(stderr, "post_spacing: %s\n", why);
+        fprintf(stderr, "post_spacing: %s\n", err.message);
         return 1;
     }
     snprintf(set, sizeof set, "barrier.posts[0].spacing=%s", spacing);
@@ -37,7 +38,6 @@ int main(int argc, char **argv) {
     }
 
     /* Run it to its end, recording the time histories. */
-    cs_error err = {CS_OK, ""};
     cs_state *state = cs_state_create(model, &err);
     cs_record *rec = state ? cs_record_create(model, &err) : NULL;
     int rc = 1;
@@ -64,8 +64,8 @@ int main(int argc, char **argv) {
             next += 0.05;
         }
         rc = 0;
-        if (dir && cs_write_outputs(dir, &in, model, state, rec, 0, why, sizeof why) != 0) {
-            fprintf(stderr, "post_spacing: nothing written: %s\n", why);
+        if (dir && cs_write_outputs(dir, &in, model, state, rec, 0, &err) != CS_OK) {
+            fprintf(stderr, "post_spacing: nothing written: %s\n", err.message);
             rc = 1;
         } else if (dir) {
             printf("outputs: %s/{timeseries.csv,events.csv,summary.json}\n", dir);

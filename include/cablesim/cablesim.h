@@ -2,9 +2,9 @@
 /** @file
  * cablesim: progressive-failure simulation of cable barriers struck by a vehicle. The umbrella header:
  * the engine's definitions (def.h) and its model, state, step and run (sim.h), model files (loader.h),
- * a run's time histories and output files (output.h), and the US customary units in SI (units.h). Link
- * with libcablesim (pkg-config cablesim, or CMake's find_package(cablesim) and the target
- * cablesim::cablesim). */
+ * a run's time histories and output files (output.h), a run's anti-ram rating (rating.h), and the US
+ * customary units in SI (units.h). Link with libcablesim (pkg-config cablesim, or CMake's
+ * find_package(cablesim) and the target cablesim::cablesim). */
 #ifndef CABLESIM_H
 #define CABLESIM_H
 
@@ -14,6 +14,7 @@
 #include "cablesim/def.h"
 #include "cablesim/loader.h"
 #include "cablesim/output.h"
+#include "cablesim/rating.h"
 #include "cablesim/sim.h"
 #include "cablesim/units.h"
 

@@ -4,6 +4,14 @@
  * Every quantity is SI (m, kg, s, N, Pa, J, rad). Each struct has a cs_default_*() that returns the
  * documented defaults (docs/assumptions.md); fields that are design data default to 0 and must be set.
  *
+ * Each struct begins with its size, which its cs_default_*() sets: start every definition from it. A later
+ * version of the library adds fields only at a struct's end, so a program built against an earlier one
+ * keeps working: the library reads the size the program gave and takes the defaults for the fields it
+ * does not have (an array's elements are read at the first one's size). A struct of size 0 (not started
+ * from its cs_default_*()), or larger than the library knows (a program built for a later version), is
+ * refused with CS_ERR_INVALID. cs_cable_end_def, only ever a member of cs_cable_def, is covered by its
+ * cable's size.
+ *
  * Frame: x along the barrier, y the direction of attack (attack face at y = 0, protected side y > 0),
  * z up from grade. */
 #ifndef CABLESIM_DEF_H
@@ -11,12 +19,7 @@
 
 #include <stddef.h>
 
-/** Marks a function of the library's interface: exported from libcablesim.so, which hides the rest. */
-#if defined(__GNUC__)
-#define CS_API __attribute__((visibility("default")))
-#else
-#define CS_API
-#endif
+#include "cablesim/export.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -32,7 +35,8 @@ enum { CS_MAX_CRUSH_POINTS = 16 };
  *   broken                        beyond.
  * Unloading is elastic with slope EA; the plastic stretch stays. */
 typedef struct cs_rope_def {
-    double area;                    /**< metallic area A, m^2 */
+    size_t size; /**< the size of this struct in the program that filled it: set by cs_default_rope_def() */
+    double area; /**< metallic area A, m^2 */
     double modulus;                 /**< apparent modulus E, Pa */
     double nominal_strength;        /**< Fu, N */
     double elastic_limit_ratio;     /**< r_el: end of the first slope as a fraction of Fu (paper: 0.6) */
@@ -68,6 +72,7 @@ typedef struct cs_cable_end_def {
 
 /** A cable: a wire rope at a height along the posts, tied to both anchors. */
 typedef struct cs_cable_def {
+    size_t size; /**< the size of this struct in the program that filled it: set by cs_default_cable_def() */
     double height;                 /**< z of the cable at the posts, m */
     double pretension;             /**< installed tension, N */
     double post_friction;          /**< mu between cable and post (capstan at a threaded post) */
@@ -101,6 +106,8 @@ CS_API double cs_cable_end_slip(const cs_cable_def *cable, int end, double *trav
 
 /** Steel post section. */
 typedef struct cs_section_def {
+    size_t
+        size; /**< the size of this struct in the program that filled it: set by cs_default_section_def() */
     double plastic_modulus; /**< Zx, m^3 */
     double inertia;         /**< Ix, m^4 */
     double web_area;        /**< Aw for shear, m^2 */
@@ -119,6 +126,8 @@ typedef enum cs_width_scaling {
  *   S1 B D^2 - c_d P D - c_h P H = 0  =>  P = S1 B D^2 / (c_d D + c_h H),
  * dimensionally homogeneous, so evaluated in SI as written; see footing.c. */
 typedef struct cs_footing_def {
+    size_t
+        size; /**< the size of this struct in the program that filled it: set by cs_default_footing_def() */
     double diameter;          /**< B, m (width facing the soil) */
     double depth;             /**< D, embedment, m */
     double soil_pressure;     /**< S1, average soil pressure above the point of rotation, Pa */
@@ -157,8 +166,9 @@ CS_API double cs_attachment_release_force(cs_attachment kind);
 
 /** A post: its steel section, its footing in the soil and how it holds the cables. */
 typedef struct cs_post_def {
-    double x;                 /**< position along the barrier, m */
-    double height;            /**< top of the post above grade, m */
+    size_t size;   /**< the size of this struct in the program that filled it: set by cs_default_post_def() */
+    double x;      /**< position along the barrier, m */
+    double height; /**< top of the post above grade, m */
     cs_section_def section;   /**< its steel */
     cs_footing_def footing;   /**< its footing (or itself driven) in the soil */
     cs_attachment attachment; /**< how it holds the cables */
@@ -177,8 +187,9 @@ typedef struct cs_post_def {
  * the ropes lift it with more than its pullout capacity (its footing's rotation_limit is not used).
  * A footing of zero diameter is rigid: it never moves or pulls out (a rock anchor, a test's fixed end). */
 typedef struct cs_anchor_def {
-    double x;                /**< m */
-    double z;                /**< height where the cables are tied, m */
+    size_t size; /**< the size of this struct in the program that filled it: set by cs_default_anchor_def() */
+    double x;    /**< m */
+    double z;    /**< height where the cables are tied, m */
     double pullout_capacity; /**< uplift that pulls it out, N; 0: its weight plus its skin friction
                               * (footing.skin_friction); HUGE_VAL: never */
     double length;           /**< plan size along the pull, m (0: a round shaft of the footing's diameter) */
@@ -193,8 +204,9 @@ typedef struct cs_anchor_def {
  * A Fy in tension and buckling at the Euler load pi^2 E I / spacing^2 in compression, then holding that
  * force (rail.c). Half of each span's steel swings with each of its posts. */
 typedef struct cs_rail_def {
-    double height;          /**< above grade, m */
-    double area;            /**< A, m^2 */
+    size_t size;   /**< the size of this struct in the program that filled it: set by cs_default_rail_def() */
+    double height; /**< above grade, m */
+    double area;   /**< A, m^2 */
     double inertia;         /**< I about its weaker axis, m^4 (the buckling load) */
     double yield_stress;    /**< Fy, Pa */
     double modulus;         /**< E, Pa */
@@ -203,6 +215,8 @@ typedef struct cs_rail_def {
 
 /** A barrier: cables, posts, rails and the two anchors. The arrays belong to the caller. */
 typedef struct cs_barrier_def {
+    size_t
+        size; /**< the size of this struct in the program that filled it: set by cs_default_barrier_def() */
     int cable_count;            /**< the number of cables */
     const cs_cable_def *cables; /**< [cable_count] */
     int post_count;             /**< the number of posts */
@@ -218,6 +232,8 @@ typedef struct cs_barrier_def {
  * is a rectangle front_width wide from the front face to the rear: the cables bear on its four corners,
  * the front ones between the face's bottom and top, the rear ones between the sides' bottom and top. */
 typedef struct cs_vehicle_def {
+    size_t
+        size; /**< the size of this struct in the program that filled it: set by cs_default_vehicle_def() */
     double mass;                   /**< kg */
     double inertia[3];             /**< roll Ixx, pitch Iyy, yaw Izz about the CG, kg m^2 */
     double cg_height;              /**< m */
@@ -245,6 +261,8 @@ typedef struct cs_vehicle_def {
 
 /** The attack and how to integrate it. */
 typedef struct cs_scenario_def {
+    size_t
+        size; /**< the size of this struct in the program that filled it: set by cs_default_scenario_def() */
     double speed;            /**< m/s at first contact */
     double angle;            /**< between barrier line and travel direction, rad (pi/2 = head-on) */
     double impact_x;         /**< where the centre of the front face meets the cable line, m; with

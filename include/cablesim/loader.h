@@ -34,10 +34,10 @@ typedef struct cs_model_input {
  * @param data_dir the folder of the parts library (the YAML files of data/), or NULL to find it: the
  * environment variable CABLESIM_DATA, else PREFIX/share/cablesim of the installed library or command that
  * runs, else the source tree's data/ for a program of the build tree (docs/parts.md).
- * @param why filled with the reason on failure
- * @param why_size its size
- * @return the loader, or NULL if memory is short or the unit database (udunits2) cannot be loaded. */
-CS_API cs_loader *cs_loader_create(const char *data_dir, char *why, size_t why_size);
+ * @param err filled on failure (may be NULL)
+ * @return the loader, or NULL with err filled: CS_ERR_MEMORY if memory is short, CS_ERR_IO if the unit
+ * database (udunits2) cannot be read. */
+CS_API cs_loader *cs_loader_create(const char *data_dir, cs_error *err);
 /** Free a loader and everything it returned. NULL is allowed. */
 CS_API void cs_loader_free(cs_loader *loader);
 
@@ -51,17 +51,16 @@ CS_API const char *cs_loader_data_dir(const cs_loader *loader);
  * `cablesim run --allow-path DIR`). It lasts for the loader's life.
  * @param loader the loader
  * @param dir the folder
- * @param why filled with the reason on failure
- * @param why_size its size
- * @return 0, or -1 when dir is not a folder. */
-CS_API int cs_loader_allow_path(cs_loader *loader, const char *dir, char *why, size_t why_size);
+ * @param err filled on failure (may be NULL)
+ * @return CS_OK, or CS_ERR_INVALID when dir is not a folder. */
+CS_API cs_status cs_loader_allow_path(cs_loader *loader, const char *dir, cs_error *err);
 
 /** Queue an override for the next load, as `cablesim run --set` does.
  * @param loader the loader
  * @param assignment "PATH=VALUE", the path of a value in the model file with units on the value:
  *        "scenario.speed=35 mph", "barrier.posts[0].spacing=6 ft", "vehicle=M".
- * @return 0, or -1 when it is not PATH=VALUE (the problem is recorded). */
-CS_API int cs_loader_set(cs_loader *loader, const char *assignment);
+ * @return CS_OK, or CS_ERR_INVALID when it is not PATH=VALUE (the problem is recorded). */
+CS_API cs_status cs_loader_set(cs_loader *loader, const char *assignment);
 /** Load, resolve, override and check a model file. A `file:` it names is found from the folder of the file
  * naming it, and read only when it is a regular file of at most 64 MB in the folder of path (or a
  * subfolder), the parts library's, or a folder of cs_loader_allow_path; a named file that is not a model
@@ -69,17 +68,17 @@ CS_API int cs_loader_set(cs_loader *loader, const char *assignment);
  * @param loader the loader
  * @param path the model file
  * @param out filled with the model on success
- * @return 0, or -1 with every problem recorded (cs_loader_error_count, cs_loader_error). */
-CS_API int cs_loader_load(cs_loader *loader, const char *path, cs_model_input *out);
+ * @return CS_OK, or CS_ERR_INVALID with every problem recorded (cs_loader_error_count, cs_loader_error). */
+CS_API cs_status cs_loader_load(cs_loader *loader, const char *path, cs_model_input *out);
 /** The same as cs_loader_load for a model file's contents held in memory.
  * @param loader the loader
  * @param name stands for the file in messages; files the model refers to are found from its folder
  * @param data the contents, needed only during the call
  * @param size their length in bytes
  * @param out filled with the model on success
- * @return 0, or -1 with every problem recorded. */
-CS_API int cs_loader_load_buffer(cs_loader *loader, const char *name, const char *data, size_t size,
-                                 cs_model_input *out);
+ * @return CS_OK, or CS_ERR_INVALID with every problem recorded. */
+CS_API cs_status cs_loader_load_buffer(cs_loader *loader, const char *name, const char *data, size_t size,
+                                       cs_model_input *out);
 /** Forget every loaded file, override and problem, keeping the unit database: ready for a new model.
  * Whatever an earlier load returned becomes invalid. */
 CS_API void cs_loader_reset(cs_loader *loader);
@@ -125,8 +124,8 @@ CS_API int cs_loader_library(cs_loader *loader, cs_part_kind kind, const char **
  * @param kind the kind
  * @param name the part's name
  * @param def a cs_vehicle_def, cs_rope_def, cs_section_def or cs_rail_def by kind
- * @return 0, or -1 with the problem recorded. */
-CS_API int cs_loader_part(cs_loader *loader, cs_part_kind kind, const char *name, void *def);
+ * @return CS_OK, or CS_ERR_INVALID with the problem recorded. */
+CS_API cs_status cs_loader_part(cs_loader *loader, cs_part_kind kind, const char *name, void *def);
 
 #ifdef __cplusplus
 }

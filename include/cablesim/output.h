@@ -3,7 +3,7 @@
  * A run's time histories and its output files. A record collects the state at every output of cs_run
  * (pass cs_record_frame and the record to it); the writers turn a record, a state and a loaded model into
  * the files `cablesim run` writes: timeseries.csv, events.csv, summary.json and the plots. A writer never
- * prints NaN or infinity: it stops at the first one and says where it was. */
+ * prints NaN or infinity: it stops at the first one and says where it was (CS_ERR_IO). */
 #ifndef CABLESIM_OUTPUT_H
 #define CABLESIM_OUTPUT_H
 
@@ -56,16 +56,16 @@ CS_API int cs_record_cable_path(const cs_record *rec, int frame, int cable, cons
 
 /** timeseries.csv: a row per frame, the vehicle, cables, posts, anchors and the ledger, units in the
  * header's names (t_s, x_m, decel_50ms_g, cable0_max_tension_n ...).
- * @return 0, or -1 with why filled. */
-CS_API int cs_write_timeseries(FILE *f, const cs_record *rec, char *why, size_t why_size);
+ * @return CS_OK, or CS_ERR_IO with err filled. */
+CS_API cs_status cs_write_timeseries(FILE *f, const cs_record *rec, cs_error *err);
 /** events.csv: the failure sequence, a row per event (t_s, type, element_kind, element, value_si).
- * @return 0, or -1 with why filled. */
-CS_API int cs_write_events(FILE *f, const cs_state *state, char *why, size_t why_size);
+ * @return CS_OK, or CS_ERR_IO with err filled. */
+CS_API cs_status cs_write_events(FILE *f, const cs_state *state, cs_error *err);
 /** summary.json: the response parameters (the fields of cs_summary by the same names), the anchors, the
  * events and the resolved inputs in SI under "inputs".
- * @return 0, or -1 with why filled. */
-CS_API int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_model *model,
-                                 const cs_state *state, char *why, size_t why_size);
+ * @return CS_OK, or CS_ERR_IO with err filled. */
+CS_API cs_status cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_model *model,
+                                       const cs_state *state, cs_error *err);
 /** The readable summary `cablesim run` prints: the outcome, the response parameters in SI with US units
  * beside, and the first events. */
 CS_API void cs_write_summary_text(FILE *f, const cs_model_input *in, const cs_model *model,
@@ -87,12 +87,10 @@ enum cs_output_flags {
  * @param state the state at the run's end
  * @param rec its record
  * @param flags 0 or CS_OUTPUT_PLOTS
- * @param why filled with the reason on failure
- * @param why_size its size
- * @return 0, or -1 with why filled. */
-CS_API int cs_write_outputs(const char *dir, const cs_model_input *in, const cs_model *model,
-                            const cs_state *state, const cs_record *rec, int flags, char *why,
-                            size_t why_size);
+ * @param err filled on failure (may be NULL)
+ * @return CS_OK, or CS_ERR_IO with err filled (nothing written, or a record that lost frames). */
+CS_API cs_status cs_write_outputs(const char *dir, const cs_model_input *in, const cs_model *model,
+                                  const cs_state *state, const cs_record *rec, int flags, cs_error *err);
 
 #ifdef __cplusplus
 }

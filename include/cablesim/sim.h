@@ -14,10 +14,11 @@ extern "C" {
 
 /** What a call of the engine came to. */
 typedef enum cs_status {
-    CS_OK = 0,          /**< done */
-    CS_ERR_INVALID = 1, /**< a definition is physically impossible or out of range */
-    CS_ERR_MEMORY = 2,  /**< allocation failed or a size limit was exceeded */
-    CS_ERR_UNSTABLE = 3 /**< the run went numerically wrong; the message names time and element */
+    CS_OK = 0,           /**< done */
+    CS_ERR_INVALID = 1,  /**< a definition is physically impossible or out of range */
+    CS_ERR_MEMORY = 2,   /**< allocation failed or a size limit was exceeded */
+    CS_ERR_UNSTABLE = 3, /**< the run went numerically wrong; the message names time and element */
+    CS_ERR_IO = 4        /**< a file could not be read or written; the message names it and says why */
 } cs_status;
 
 /** The size of cs_error's message. */
@@ -420,14 +421,8 @@ CS_API int cs_sudden_losses(const double *t, const double *force, int n, double 
 /** An outcome's name in summary.json: "stopped", "breakthrough", "redirected", ... */
 CS_API const char *cs_outcome_name(cs_outcome outcome);
 
-/** FNV-1a hash of the state's numbers, for determinism tests. */
+/** A 64-bit FNV-1a hash of the state's numbers, for determinism tests. */
 CS_API unsigned long long cs_state_hash(const cs_model *model, const cs_state *state);
-
-/** The offset basis of 64-bit FNV-1a, where a hash by cs_fnv1a64 starts. */
-#define CS_FNV1A64_BASIS 1469598103934665603ULL
-/** 64-bit FNV-1a of n bytes, continuing from h (start from CS_FNV1A64_BASIS): the hash of cs_state_hash,
- * and of the model a run's outputs record (cs_model_input_hash). */
-CS_API unsigned long long cs_fnv1a64(unsigned long long h, const void *data, size_t n);
 
 #ifdef __cplusplus
 }

@@ -20,6 +20,7 @@
 cs_rope_def cs_default_rope_def(void) {
     cs_rope_def d;
     memset(&d, 0, sizeof d);
+    d.size = sizeof d;
     d.elastic_limit_ratio = 0.6;     /* paper: the modulus drops at 60% of nominal strength */
     d.secondary_modulus_ratio = 0.6; /* paper: "reduced by 40%" */
     d.breaking_strain = 0.03;        /* paper's 0.03 read as a strain (model-notes.md) */
@@ -29,6 +30,7 @@ cs_rope_def cs_default_rope_def(void) {
 cs_cable_def cs_default_cable_def(void) {
     cs_cable_def d;
     memset(&d, 0, sizeof d);
+    d.size = sizeof d;
     d.post_friction = 0.15;               /* steel rope in a steel hole, docs/assumptions.md */
     d.termination = CS_TERMINATION_CLIPS; /* cable clamps, as APS3's: docs/assumptions.md */
     d.ends[0].termination = d.ends[1].termination = CS_TERMINATION_AS_CABLE;
@@ -95,6 +97,7 @@ double cs_attachment_release_force(cs_attachment kind) {
 cs_section_def cs_default_section_def(void) {
     cs_section_def d;
     memset(&d, 0, sizeof d);
+    d.size = sizeof d;
     d.modulus = 200e9;
     return d;
 }
@@ -102,6 +105,7 @@ cs_section_def cs_default_section_def(void) {
 cs_footing_def cs_default_footing_def(void) {
     cs_footing_def d;
     memset(&d, 0, sizeof d);
+    d.size = sizeof d;
     d.soil_pressure_cap = 8000.0 * CS_PSF; /* paper: S1 at most 8000 psf under dynamic load */
     d.coeff_depth = 2.37;                  /* paper's Eq. 21 */
     d.coeff_height = 2.64;
@@ -116,6 +120,7 @@ cs_footing_def cs_default_footing_def(void) {
 cs_post_def cs_default_post_def(void) {
     cs_post_def d;
     memset(&d, 0, sizeof d);
+    d.size = sizeof d;
     d.section = cs_default_section_def();
     d.footing = cs_default_footing_def();
     d.attachment = CS_ATTACH_THROUGH;
@@ -126,6 +131,7 @@ cs_post_def cs_default_post_def(void) {
 cs_anchor_def cs_default_anchor_def(void) {
     cs_anchor_def d;
     memset(&d, 0, sizeof d);
+    d.size = sizeof d;
     d.footing = cs_default_footing_def(); /* diameter 0: rigid unless a footing is given */
     return d;
 }
@@ -133,6 +139,7 @@ cs_anchor_def cs_default_anchor_def(void) {
 cs_rail_def cs_default_rail_def(void) {
     cs_rail_def d;
     memset(&d, 0, sizeof d);
+    d.size = sizeof d;
     d.modulus = 200e9;
     return d;
 }
@@ -140,6 +147,7 @@ cs_rail_def cs_default_rail_def(void) {
 cs_barrier_def cs_default_barrier_def(void) {
     cs_barrier_def d;
     memset(&d, 0, sizeof d);
+    d.size = sizeof d;
     d.start_anchor = cs_default_anchor_def();
     d.end_anchor = cs_default_anchor_def();
     return d;
@@ -148,6 +156,7 @@ cs_barrier_def cs_default_barrier_def(void) {
 cs_vehicle_def cs_default_vehicle_def(void) {
     cs_vehicle_def d;
     memset(&d, 0, sizeof d);
+    d.size = sizeof d;
     d.tyre_static_deflection = 0.05;
     d.tyre_damping_ratio = 0.3;
     d.rolling_resistance = 0.01;
@@ -160,6 +169,7 @@ cs_vehicle_def cs_default_vehicle_def(void) {
 cs_scenario_def cs_default_scenario_def(void) {
     cs_scenario_def d;
     memset(&d, 0, sizeof d);
+    d.size = sizeof d;
     d.angle = CS_PI / 2.0;
     d.start_gap = 0.05;
     d.dt = 0.5e-3;

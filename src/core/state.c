@@ -2,6 +2,7 @@
 /* The state as data: copied whole or barrier only, its summary, the names of its statuses and outcomes,
  * and its hash. Its memory and its views: run/state.c. */
 #include "core/core.h"
+#include "core/fnv.h"
 #include "core/vec3.h"
 
 #include <math.h>

@@ -3,6 +3,7 @@
  * (rope breakpoints, post capacities, tyre springs, the start pose). */
 #include "core/vec3.h"
 #include "run/run.h"
+#include "run/sized.h"
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -360,6 +361,9 @@ static double post_mass(const cs_barrier_def *b, int p) {
     return mass;
 }
 
+static cs_model *model_create(const cs_barrier_def *barrier, const cs_vehicle_def *vehicle,
+                              const cs_scenario_def *scenario, cs_error *err);
+
 cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *vehicle,
                           const cs_scenario_def *scenario, cs_error *err) {
     if (err) err->status = CS_OK, err->message[0] = '\0';
@@ -367,6 +371,16 @@ cs_model *cs_model_create(const cs_barrier_def *barrier, const cs_vehicle_def *v
         fail(err, "missing barrier, vehicle or scenario definition");
         return NULL;
     }
+    cs_defs defs; /* the caller's definitions at this library's sizes (def.h) */
+    cs_model *m = NULL;
+    if (cs_defs_take(&defs, barrier, vehicle, scenario, err) == 0)
+        m = model_create(&defs.barrier, &defs.vehicle, &defs.scenario, err);
+    cs_defs_free(&defs);
+    return m;
+}
+
+static cs_model *model_create(const cs_barrier_def *barrier, const cs_vehicle_def *vehicle,
+                              const cs_scenario_def *scenario, cs_error *err) {
     if (check_barrier(barrier, err) || check_vehicle(vehicle, err) || check_scenario(scenario, err))
         return NULL;
 

@@ -11,6 +11,7 @@
 #include "grow.h"
 #include "loader_int.h"
 #include "out/htmltext.h"
+#include "status.h"
 
 enum { MAX_DEPTH = 16 };
 
@@ -34,22 +35,29 @@ char *cs_arena_strdup(cs_loader *l, const char *s) {
     return d;
 }
 
-cs_loader *cs_loader_create(const char *data_dir, char *why, size_t why_size) {
+cs_loader *cs_loader_create(const char *data_dir, cs_error *err) {
     cs_loader *l = calloc(1, sizeof *l);
-    if (!l) return NULL;
+    if (!l) {
+        cs_status_set(err, CS_ERR_MEMORY, "out of memory");
+        return NULL;
+    }
     if (data_dir)
         snprintf(l->data_dir, sizeof l->data_dir, "%s", data_dir);
     else
         cs_data_dir_find(l->data_dir, sizeof l->data_dir, l->data_note, sizeof l->data_note);
-    if (!(l->units = cs_units_create(why, why_size))) {
+    char why[CS_MESSAGE_SIZE];
+    if (!(l->units = cs_units_create(why, sizeof why))) {
         free(l);
+        cs_status_set(err, CS_ERR_IO, why);
         return NULL;
     }
+    cs_status_set(err, CS_OK, "");
     return l;
 }
 
-int cs_loader_allow_path(cs_loader *l, const char *dir, char *why, size_t why_size) {
-    return cs_allow_add(&l->allow, dir, why, why_size);
+cs_status cs_loader_allow_path(cs_loader *l, const char *dir, cs_error *err) {
+    char why[CS_MESSAGE_SIZE];
+    return cs_status_set(err, cs_allow_add(&l->allow, dir, why, sizeof why) ? CS_ERR_INVALID : CS_OK, why);
 }
 
 const char *cs_loader_data_dir(const cs_loader *l) {
@@ -406,9 +414,9 @@ cs_node *cs_resolve_model(cs_loader *l, int file) {
 
 /* ---- --set ---- */
 
-int cs_loader_set(cs_loader *l, const char *assignment) {
+cs_status cs_loader_set(cs_loader *l, const char *assignment) {
     const char *eq = strchr(assignment, '=');
-    if (cs_grow(&l->sets, &l->set_capacity, l->set_count, sizeof *l->sets) != 0) return -1;
+    if (cs_grow(&l->sets, &l->set_capacity, l->set_count, sizeof *l->sets) != 0) return CS_ERR_MEMORY;
     size_t n = eq ? (size_t)(eq - assignment) : strlen(assignment);
     cs_lset *s = &l->sets[l->set_count];
     s->path = malloc(n + 1);
@@ -416,7 +424,7 @@ int cs_loader_set(cs_loader *l, const char *assignment) {
     if (!s->path || !s->value) {
         free(s->path);
         free(s->value);
-        return -1;
+        return CS_ERR_MEMORY;
     }
     memcpy(s->path, assignment, n);
     s->path[n] = '\0';
@@ -424,9 +432,9 @@ int cs_loader_set(cs_loader *l, const char *assignment) {
     l->set_count++;
     if (s->bad) {
         cs_err_at(l, -l->set_count, 0, 0, "expected PATH=VALUE, e.g. scenario.speed=\"35 mph\"");
-        return -1;
+        return CS_ERR_INVALID;
     }
-    return 0;
+    return CS_OK;
 }
 
 static cs_node *set_node(cs_loader *l, int k, cs_ykind kind, const cs_table *t) {
@@ -515,17 +523,17 @@ static int load(cs_loader *l, int f, cs_model_input *out) {
     return l->error_count ? -1 : 0;
 }
 
-int cs_loader_load(cs_loader *l, const char *path, cs_model_input *out) {
+cs_status cs_loader_load(cs_loader *l, const char *path, cs_model_input *out) {
     memset(out, 0, sizeof *out);
     set_scope(l, path);
-    return load(l, cs_file_load(l, path, NULL), out);
+    return load(l, cs_file_load(l, path, NULL), out) ? CS_ERR_INVALID : CS_OK;
 }
 
-int cs_loader_load_buffer(cs_loader *l, const char *name, const char *data, size_t size,
-                          cs_model_input *out) {
+cs_status cs_loader_load_buffer(cs_loader *l, const char *name, const char *data, size_t size,
+                                cs_model_input *out) {
     memset(out, 0, sizeof *out);
     set_scope(l, name);
-    return load(l, cs_data_load(l, name, data, size), out);
+    return load(l, cs_data_load(l, name, data, size), out) ? CS_ERR_INVALID : CS_OK;
 }
 
 /* ---- the library ---- */
@@ -557,11 +565,11 @@ int cs_loader_library(cs_loader *l, cs_part_kind kind, const char ***names, cons
     return count;
 }
 
-int cs_loader_part(cs_loader *l, cs_part_kind kind, const char *name, void *def) {
-    if (cs_library_read(l) != 0) return -1;
+cs_status cs_loader_part(cs_loader *l, cs_part_kind kind, const char *name, void *def) {
+    if (cs_library_read(l) != 0) return CS_ERR_INVALID;
     cs_node at = {.kind = CS_Y_SCALAR, .text = name, .source = INT_MIN, .path = name};
     const cs_node *part = cs_find_part(l, main_file(l), part_lists[kind], name, &at);
-    if (!part) return -1;
+    if (!part) return CS_ERR_INVALID;
     int errors = 0;
     if (kind == CS_PART_VEHICLE)
         errors = cs_convert_vehicle(l, part, def);
@@ -574,7 +582,7 @@ int cs_loader_part(cs_loader *l, cs_part_kind kind, const char *name, void *def)
         *(cs_section_def *)def = cs_default_section_def();
         errors = cs_convert_fields(l, part, def);
     }
-    return errors ? -1 : 0;
+    return errors ? CS_ERR_INVALID : CS_OK;
 }
 
 /* ---- the engine's own check ---- */

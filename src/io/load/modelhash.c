@@ -6,10 +6,11 @@
 #include <string.h>
 
 #include "cablesim/loader.h"
+#include "fnv.h"
 #include "schema.h"
 
 static unsigned long long bytes(unsigned long long h, const void *data, size_t n) {
-    return cs_fnv1a64(h, data, n);
+    return cs_io_fnv(h, data, n);
 }
 
 static unsigned long long key(unsigned long long h, const char *k) {
@@ -50,7 +51,7 @@ static unsigned long long fields(unsigned long long h, const cs_table *t, const 
 }
 
 unsigned long long cs_model_input_hash(const cs_model_input *in) {
-    unsigned long long h = CS_FNV1A64_BASIS;
+    unsigned long long h = CS_IO_FNV_BASIS;
     const cs_barrier_def *b = &in->barrier;
     h = count(h, "cables", b->cable_count);
     for (int c = 0; c < b->cable_count; c++) {

@@ -17,7 +17,7 @@ void cs_w_num(cs_wout *w, double v, const char *what) {
     fprintf(w->f, "%.10g", v);
 }
 
-int cs_write_timeseries(FILE *f, const cs_record *rec, char *why, size_t why_size) {
+int cs_timeseries_csv(FILE *f, const cs_record *rec, char *why, size_t why_size) {
     fprintf(
         f,
         "t [s],x [m],y [m],z [m],vx [m/s],vy [m/s],vz [m/s],ax [m/s^2],ay [m/s^2],az [m/s^2],roll [rad],"
@@ -93,9 +93,10 @@ int cs_write_timeseries(FILE *f, const cs_record *rec, char *why, size_t why_siz
     return w.bad ? -1 : 0;
 }
 
-int cs_write_events(FILE *f, const cs_state *state, char *why, size_t why_size) {
-    fprintf(f, "t [s],type,element_kind,element,value,value_unit,cable_end,cable,post\n"); /* value: in its
-                                                                                              row's unit */
+int cs_events_csv(FILE *f, const cs_state *state, char *why, size_t why_size) {
+    fprintf(
+        f,
+        "t [s],type,element_kind,element,value,value_unit,cable_end,cable,post\n"); /* value: in its row's unit */
     cs_wout w = {f, 0, ""};
     for (int i = 0; i < cs_state_event_count(state) && !w.bad; i++) {
         const cs_event *e = cs_state_event(state, i);

@@ -372,13 +372,6 @@ void cs_json_evaluation(cs_wout *w, int *first, const cs_run_info *info, cs_json
     roadside_criteria(w, first, info, text);
 }
 
-int cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_model *model, const cs_state *state,
-                          char *why, size_t why_size) {
-    cs_run_info info;
-    cs_run_info_of(&info, in, state);
-    return cs_write_summary_json_with(f, in, model, state, &info, why, why_size);
-}
-
 int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model *model,
                                const cs_state *state, const cs_run_info *info, char *why, size_t why_size) {
     cs_summary s;

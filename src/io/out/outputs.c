@@ -1,10 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /* A run's output folder: the data files, the plots and whatever the caller adds, written beside their
- * names and committed together (outfile.h), or none of them. */
+ * names and committed together (outfile.h), or none of them; and the interface's writers (output.h). */
 #include <stdlib.h>
 
 #include "figures.h"
 #include "plot.h"
+#include "status.h"
 #include "writers.h"
 
 /* DIR/plots/<figure>.png and .svg, begun on out. */
@@ -40,8 +41,8 @@ int cs_write_run_files(cs_outdir *out, const cs_model_input *in, const cs_model 
     for (int k = 0; rc == 0 && k < 3; k++) {
         FILE *f = cs_out_begin(out, names[k], why, why_size);
         if (!f) return -1;
-        rc = k == 0   ? cs_write_timeseries(f, rec, why, why_size)
-             : k == 1 ? cs_write_events(f, state, why, why_size)
+        rc = k == 0   ? cs_timeseries_csv(f, rec, why, why_size)
+             : k == 1 ? cs_events_csv(f, state, why, why_size)
                       : cs_write_summary_json_with(f, in, model, state, info, why, why_size);
         rc = cs_out_finish(out, f, rc, why, why_size);
     }
@@ -50,8 +51,10 @@ int cs_write_run_files(cs_outdir *out, const cs_model_input *in, const cs_model 
     return rc;
 }
 
-int cs_write_outputs(const char *dir, const cs_model_input *in, const cs_model *model, const cs_state *state,
-                     const cs_record *rec, int flags, char *why, size_t why_size) {
+cs_status cs_write_outputs(const char *dir, const cs_model_input *in, const cs_model *model,
+                           const cs_state *state, const cs_record *rec, int flags, cs_error *err) {
+    char why[CS_MESSAGE_SIZE];
+    size_t why_size = sizeof why;
     cs_outdir out;
     cs_run_info info;
     cs_run_info_of(&info, in, state);
@@ -63,5 +66,24 @@ int cs_write_outputs(const char *dir, const cs_model_input *in, const cs_model *
         rc = cs_write_run_files(&out, in, model, state, rec, &info, flags, NULL, NULL, why, why_size);
     if (rc == 0) rc = cs_out_commit(&out, why, why_size);
     if (rc != 0) cs_out_abort(&out);
-    return rc;
+    return cs_status_set(err, rc ? CS_ERR_IO : CS_OK, why);
+}
+
+cs_status cs_write_timeseries(FILE *f, const cs_record *rec, cs_error *err) {
+    char why[CS_MESSAGE_SIZE];
+    return cs_status_set(err, cs_timeseries_csv(f, rec, why, sizeof why) ? CS_ERR_IO : CS_OK, why);
+}
+
+cs_status cs_write_events(FILE *f, const cs_state *state, cs_error *err) {
+    char why[CS_MESSAGE_SIZE];
+    return cs_status_set(err, cs_events_csv(f, state, why, sizeof why) ? CS_ERR_IO : CS_OK, why);
+}
+
+cs_status cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_model *model,
+                                const cs_state *state, cs_error *err) {
+    cs_run_info info;
+    cs_run_info_of(&info, in, state);
+    char why[CS_MESSAGE_SIZE];
+    int rc = cs_write_summary_json_with(f, in, model, state, &info, why, sizeof why);
+    return cs_status_set(err, rc ? CS_ERR_IO : CS_OK, why);
 }

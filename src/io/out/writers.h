@@ -85,7 +85,10 @@ typedef int (*cs_more_outputs)(cs_outdir *out, void *user, char *why, size_t why
 int cs_write_run_files(cs_outdir *out, const cs_model_input *in, const cs_model *model, const cs_state *state,
                        const cs_record *rec, const cs_run_info *info, int flags, cs_more_outputs more,
                        void *user, char *why, size_t why_size);
-/* summary.json with info (may be NULL: no provenance, no ratings); each returns 0, or -1 with why filled. */
+/* timeseries.csv and events.csv (output.h's cs_write_timeseries and cs_write_events), and summary.json
+ * with info (may be NULL: no provenance, no ratings); each returns 0, or -1 with why filled. */
+int cs_timeseries_csv(FILE *f, const cs_record *rec, char *why, size_t why_size);
+int cs_events_csv(FILE *f, const cs_state *state, char *why, size_t why_size);
 int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model *model,
                                const cs_state *state, const cs_run_info *info, char *why, size_t why_size);
 /* The readable summary (SI and US units side by side): the outcome, the model's hash, the response

@@ -8,13 +8,6 @@
 
 #include "cablesim/cablesim.h"
 
-typedef enum cs_standard {
-    CS_SD_STD_02_01 = 0,
-    CS_SD_STD_02_01A,
-    CS_ASTM_F2656,
-    CS_STANDARD_COUNT
-} cs_standard;
-
 typedef struct cs_rating_rules {
     /* speed windows of the 30, 40, 50 and 60 mph designations, m/s (UNCONFIRMED: 28.0-37.9, 38.0-46.9,
      * 47.0-56.9, >= 57.0 mph); a class's highest designation takes every speed above its window too */
@@ -42,7 +35,6 @@ typedef struct cs_rating {
 } cs_rating;
 
 cs_rating_rules cs_default_rating_rules(void);
-const char *cs_standard_name(cs_standard s);               /* "sd-std-02.01", "sd-std-02.01a", "astm-f2656" */
 const char *cs_standard_title(cs_standard s);              /* "SD-STD-02.01", "SD-STD-02.01a", "ASTM F2656" */
 int cs_standard_parse(const char *name, cs_standard *out); /* 0 on success */
 

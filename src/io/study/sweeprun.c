@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "cablesim/loader.h"
+#include "fnv.h"
 #include "rating.h"
 #include "sweep.h"
 
@@ -36,9 +37,11 @@ static int load_run(cs_loader *l, const cs_sweep_spec *s, const double *xrow, in
 }
 
 cs_loader *cs_sweep_loader(const cs_sweep_spec *s, char *why, size_t why_size) {
-    cs_loader *l = cs_loader_create(NULL, why, why_size);
+    cs_error err;
+    cs_loader *l = cs_loader_create(NULL, &err);
+    if (!l) snprintf(why, why_size, "%s", err.message);
     for (int i = 0; l && i < s->allow.count; i++)
-        cs_loader_allow_path(l, s->allow.dirs[i], why, why_size); /* canonical folders: each is one */
+        cs_loader_allow_path(l, s->allow.dirs[i], NULL); /* canonical folders: each is one */
     return l;
 }
 
@@ -173,13 +176,13 @@ int cs_sweep_model_hash(const cs_sweep_spec *s, unsigned long long *hash) {
 }
 
 unsigned long long cs_sweep_inputs_hash(const cs_sweep_spec *s, const double *x, long n) {
-    unsigned long long h = CS_FNV1A64_BASIS;
-    h = cs_fnv1a64(h, &n, sizeof n);
-    h = cs_fnv1a64(h, &s->var_count, sizeof s->var_count);
+    unsigned long long h = CS_IO_FNV_BASIS;
+    h = cs_io_fnv(h, &n, sizeof n);
+    h = cs_io_fnv(h, &s->var_count, sizeof s->var_count);
     for (int j = 0; j < s->var_count; j++)
-        h = cs_fnv1a64(h, s->vars[j].path, strlen(s->vars[j].path) + 1);
-    h = cs_fnv1a64(h, x, (size_t)n * (size_t)s->var_count * sizeof *x);
+        h = cs_io_fnv(h, s->vars[j].path, strlen(s->vars[j].path) + 1);
+    h = cs_io_fnv(h, x, (size_t)n * (size_t)s->var_count * sizeof *x);
     for (int k = 0; k < s->set_count; k++)
-        h = cs_fnv1a64(h, s->sets[k], strlen(s->sets[k]) + 1);
-    return cs_fnv1a64(h, s->vehicle_class, strlen(s->vehicle_class) + 1);
+        h = cs_io_fnv(h, s->sets[k], strlen(s->sets[k]) + 1);
+    return cs_io_fnv(h, s->vehicle_class, strlen(s->vehicle_class) + 1);
 }

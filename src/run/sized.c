@@ -1,0 +1,177 @@
+/* SPDX-License-Identifier: MIT */
+/* The definitions' sizes (def.h): a struct from a program built against an earlier, smaller version is
+ * read to its size, the rest taken from its cs_default_*(); a struct nested in another is read the same
+ * way, and may be smaller than this library's only where it ends its owner (a smaller one inside would put
+ * the owner's later fields where this version has none). */
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "run/sized.h"
+
+typedef struct kind kind;
+typedef struct member {
+    size_t offset;
+    const kind *kind;
+    const char *name;
+} member;
+struct kind {
+    size_t size;
+    void (*fill)(void *def); /* the defaults */
+    const char *name;        /* cs_default_NAME() */
+    member members[3];       /* nested definitions, by offset */
+};
+
+static void rope(void *d) {
+    *(cs_rope_def *)d = cs_default_rope_def();
+}
+static void cable(void *d) {
+    *(cs_cable_def *)d = cs_default_cable_def();
+}
+static void section(void *d) {
+    *(cs_section_def *)d = cs_default_section_def();
+}
+static void footing(void *d) {
+    *(cs_footing_def *)d = cs_default_footing_def();
+}
+static void post(void *d) {
+    *(cs_post_def *)d = cs_default_post_def();
+}
+static void anchor(void *d) {
+    *(cs_anchor_def *)d = cs_default_anchor_def();
+}
+static void rail(void *d) {
+    *(cs_rail_def *)d = cs_default_rail_def();
+}
+static void barrier(void *d) {
+    *(cs_barrier_def *)d = cs_default_barrier_def();
+}
+static void vehicle(void *d) {
+    *(cs_vehicle_def *)d = cs_default_vehicle_def();
+}
+static void scenario(void *d) {
+    *(cs_scenario_def *)d = cs_default_scenario_def();
+}
+
+static const kind rope_kind = {sizeof(cs_rope_def), rope, "rope_def", {{0}}};
+static const kind section_kind = {sizeof(cs_section_def), section, "section_def", {{0}}};
+static const kind footing_kind = {sizeof(cs_footing_def), footing, "footing_def", {{0}}};
+static const kind rail_kind = {sizeof(cs_rail_def), rail, "rail_def", {{0}}};
+static const kind vehicle_kind = {sizeof(cs_vehicle_def), vehicle, "vehicle_def", {{0}}};
+static const kind scenario_kind = {sizeof(cs_scenario_def), scenario, "scenario_def", {{0}}};
+static const kind cable_kind = {
+    sizeof(cs_cable_def), cable, "cable_def", {{offsetof(cs_cable_def, rope), &rope_kind, "rope"}}};
+static const kind post_kind = {sizeof(cs_post_def),
+                               post,
+                               "post_def",
+                               {{offsetof(cs_post_def, section), &section_kind, "section"},
+                                {offsetof(cs_post_def, footing), &footing_kind, "footing"}}};
+static const kind anchor_kind = {sizeof(cs_anchor_def),
+                                 anchor,
+                                 "anchor_def",
+                                 {{offsetof(cs_anchor_def, footing), &footing_kind, "footing"}}};
+static const kind barrier_kind = {sizeof(cs_barrier_def),
+                                  barrier,
+                                  "barrier_def",
+                                  {{offsetof(cs_barrier_def, start_anchor), &anchor_kind, "start anchor"},
+                                   {offsetof(cs_barrier_def, end_anchor), &anchor_kind, "end anchor"}}};
+
+static int bad(cs_error *err, const char *what, const kind *k, size_t given) {
+    if (err) {
+        err->status = CS_ERR_INVALID;
+        if (given < sizeof given)
+            snprintf(err->message, sizeof err->message,
+                     "%s: size %zu: start it from cs_default_%s(), which sets its size", what, given,
+                     k->name);
+        else
+            snprintf(
+                err->message, sizeof err->message,
+                "%s: size %zu, where this library's is %zu: a program built for a later cablesim, or not "
+                "started from cs_default_%s()",
+                what, given, k->size, k->name);
+    }
+    return -1;
+}
+
+/* Read the caller's struct at given (room bytes of it at most) into full. */
+static int take(const kind *k, void *full, const void *given, size_t room, const char *what, cs_error *err) {
+    size_t n = 0;
+    if (room >= sizeof n) memcpy(&n, given, sizeof n);
+    k->fill(full);
+    if (n < sizeof n || n > k->size || n > room) return bad(err, what, k, n);
+    memcpy(full, given, n);
+    memcpy(full, &k->size, sizeof k->size);
+    for (int i = 0; i < 3 && k->members[i].kind; i++) {
+        const member *m = &k->members[i];
+        if (n <= m->offset) continue; /* the caller's has none of it: its defaults */
+        char sub[128];
+        snprintf(sub, sizeof sub, "%s's %s", what, m->name);
+        const char *at = (const char *)given + m->offset;
+        if (take(m->kind, (char *)full + m->offset, at, n - m->offset, sub, err) != 0) return -1;
+        size_t inner;
+        memcpy(&inner, at, sizeof inner);
+        if (inner < m->kind->size && n > m->offset + inner) {
+            if (err) {
+                err->status = CS_ERR_INVALID;
+                snprintf(err->message, sizeof err->message,
+                         "%s: size %zu inside a %s of %zu: a layout this library does not know", sub, inner,
+                         what, n);
+            }
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* count elements of the caller's array given, each of the first one's size, into out (count of this
+ * library's size, or 1 for none). */
+static int take_array(const kind *k, void *out, const void *given, int count, const char *what,
+                      cs_error *err) {
+    if (!out) {
+        if (err) err->status = CS_ERR_MEMORY, snprintf(err->message, sizeof err->message, "out of memory");
+        return -1;
+    }
+    if (count <= 0 || !given) return 0;
+    size_t stride;
+    memcpy(&stride, given, sizeof stride);
+    for (int i = 0; i < count; i++) {
+        char at[64];
+        snprintf(at, sizeof at, "%s %d", what, i);
+        const char *g = (const char *)given + (size_t)i * stride;
+        if (take(k, (char *)out + (size_t)i * k->size, g, stride, at, err) != 0) return -1;
+    }
+    return 0;
+}
+
+static void *room_for(int count, size_t size) {
+    return calloc((size_t)(count > 0 ? count : 1), size);
+}
+
+int cs_defs_take(cs_defs *d, const cs_barrier_def *b, const cs_vehicle_def *v, const cs_scenario_def *s,
+                 cs_error *err) {
+    memset(d, 0, sizeof *d);
+    if (take(&barrier_kind, &d->barrier, b, SIZE_MAX, "barrier", err) != 0 ||
+        take(&vehicle_kind, &d->vehicle, v, SIZE_MAX, "vehicle", err) != 0 ||
+        take(&scenario_kind, &d->scenario, s, SIZE_MAX, "scenario", err) != 0)
+        return -1;
+    int nc = d->barrier.cable_count, np = d->barrier.post_count, nr = d->barrier.rail_count;
+    d->cables = room_for(nc, sizeof *d->cables);
+    d->posts = room_for(np, sizeof *d->posts);
+    d->rails = room_for(nr, sizeof *d->rails);
+    if (take_array(&cable_kind, d->cables, d->barrier.cables, nc, "cable", err) ||
+        take_array(&post_kind, d->posts, d->barrier.posts, np, "post", err) ||
+        take_array(&rail_kind, d->rails, d->barrier.rails, nr, "rail", err))
+        return -1;
+    d->barrier.cables = d->cables;
+    d->barrier.posts = d->posts;
+    d->barrier.rails = d->rails;
+    return 0;
+}
+
+void cs_defs_free(cs_defs *d) {
+    free(d->cables);
+    free(d->posts);
+    free(d->rails);
+}
