@@ -180,11 +180,35 @@ static void test_table_same_bits(void **state) {
     assert_non_null(strstr(why, "line 1"));
 }
 
+/* The usual units come from a table of the database's factors (built in); any other text reads the
+ * database, when first met: a unit's other names there convert to the same bits as the table's. */
+static void test_database_beyond_the_table(void **state) {
+    (void)state;
+    char why[256];
+    cs_units *u = cs_units_create(why, sizeof why);
+    if (!u) fail_msg("%s", why);
+    const struct {
+        const char *table, *database;
+        cs_quantity q;
+    } pairs[] = {{"8 ft", "8 foot", CS_Q_LENGTH},        {"1.75 in", "1.75 inch", CS_Q_LENGTH},
+                 {"40 mph", "40 mile/hour", CS_Q_SPEED}, {"8000 psf", "8000 lbf/ft^2", CS_Q_PRESSURE},
+                 {"15000 lb", "15000 pound", CS_Q_MASS}, {"20 MN/m", "20 meganewton/meter", CS_Q_STIFFNESS},
+                 {"1 g", "1 gee", CS_Q_ACCELERATION}};
+    for (size_t i = 0; i < sizeof pairs / sizeof pairs[0]; i++) {
+        double a = read_ok(u, pairs[i].table, pairs[i].q), b = read_ok(u, pairs[i].database, pairs[i].q);
+        if (memcmp(&a, &b, sizeof a) != 0)
+            fail_msg("'%s' %.17g but '%s' %.17g", pairs[i].table, a, pairs[i].database, b);
+    }
+    close_to(read_ok(u, "3 furlong", CS_Q_LENGTH), 3 * 660 * 1200.0 / 3937); /* survey feet, as udunits2 */
+    expect_error(u, "3 furlong", CS_Q_MASS, "'furlong' is a unit of length, not of mass");
+    cs_units_free(u);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_exact_factors),   cmocka_unit_test(test_bare_numbers_are_pure),
         cmocka_unit_test(test_wrong_units),     cmocka_unit_test(test_two_threads),
-        cmocka_unit_test(test_table_same_bits),
+        cmocka_unit_test(test_table_same_bits), cmocka_unit_test(test_database_beyond_the_table),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

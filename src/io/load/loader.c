@@ -1,7 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* The loader's context: memory, errors, file references, parts, --set overrides. */
 #define _POSIX_C_SOURCE 200809L
-#include <dirent.h>
 #include <limits.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -10,30 +9,7 @@
 
 #include "grow.h"
 #include "loader_int.h"
-#include "out/htmltext.h"
 #include "status.h"
-
-enum { MAX_DEPTH = 16 };
-
-struct cs_chunk {
-    struct cs_chunk *next;
-    max_align_t data[];
-};
-
-void *cs_arena_alloc(cs_loader *l, size_t size) {
-    struct cs_chunk *c = calloc(1, sizeof *c + size);
-    if (!c) return NULL;
-    c->next = l->arena;
-    l->arena = c;
-    return c->data;
-}
-
-char *cs_arena_strdup(cs_loader *l, const char *s) {
-    size_t n = strlen(s) + 1;
-    char *d = cs_arena_alloc(l, n);
-    if (d) memcpy(d, s, n);
-    return d;
-}
 
 cs_loader *cs_loader_create(const char *data_dir, cs_error *err) {
     cs_loader *l = calloc(1, sizeof *l);
@@ -73,15 +49,6 @@ static void drop_sets(cs_loader *l) {
     l->set_count = 0;
 }
 
-/* Free the arena's allocations newer than keep (NULL: all). */
-static void drop_arena_to(cs_loader *l, struct cs_chunk *keep) {
-    while (l->arena != keep) {
-        struct cs_chunk *next = l->arena->next;
-        free(l->arena);
-        l->arena = next;
-    }
-}
-
 void cs_loader_reset(cs_loader *l) {
     for (int i = 0; i < l->file_count; i++)
         cs_ytree_free(&l->files[i].tree);
@@ -91,7 +58,7 @@ void cs_loader_reset(cs_loader *l) {
     free(l->errors);
     drop_sets(l);
     free(l->sets);
-    drop_arena_to(l, NULL);
+    cs_arena_drop_to(l, NULL);
     cs_allow_free(&l->scope);
     cs_units *units = l->units;
     cs_allow allow = l->allow;
@@ -111,7 +78,7 @@ void cs_loader_reuse(cs_loader *l) {
         return;
     }
     drop_sets(l);
-    drop_arena_to(l, l->files_end); /* the files' nodes are older; nothing of theirs points later */
+    cs_arena_drop_to(l, l->files_end); /* the files' nodes are older; nothing of theirs points later */
     l->depth = 0;
     l->post_origin = l->cable_origin = NULL;
     l->vehicle_node = l->scenario_node = l->anchors_node = l->soil_node = NULL;
@@ -123,293 +90,6 @@ void cs_loader_free(cs_loader *l) {
     cs_allow_free(&l->allow);
     cs_units_free(l->units);
     free(l);
-}
-
-/* ---- errors ---- */
-
-static void add_error(cs_loader *l, int source, int line, int col, const char *fmt, va_list ap) {
-    char msg[1024], where[600] = "";
-    vsnprintf(msg, sizeof msg, fmt, ap);
-    if (source >= 0 && source < l->file_count)
-        snprintf(where, sizeof where, "%s:%d:%d: ", l->files[source].name, line, col);
-    else if (source < 0 && source != INT_MIN && -1 - source < l->set_count)
-        snprintf(where, sizeof where, "--set %s%s%s: ", l->sets[-1 - source].path,
-                 l->sets[-1 - source].bad ? "" : "=", l->sets[-1 - source].value);
-    if (cs_grow(&l->errors, &l->error_capacity, l->error_count, sizeof *l->errors) != 0) return;
-    size_t n = strlen(where) + strlen(msg) + 1;
-    char *text = malloc(n);
-    if (!text) return;
-    snprintf(text, n, "%s%s", where, msg);
-    /* a --set sorts after the files; a message with no place first */
-    int key = source == INT_MIN ? -1 : source < 0 ? INT_MAX / 2 - source : source;
-    l->errors[l->error_count] = (cs_lerror){key, line, col, l->error_count, text};
-    l->error_count++;
-    l->errors_sorted = 0;
-}
-
-void cs_err_at(cs_loader *l, int source, int line, int col, const char *fmt, ...) {
-    va_list ap;
-    va_start(ap, fmt);
-    add_error(l, source, line, col, fmt, ap);
-    va_end(ap);
-}
-
-void cs_err_node(cs_loader *l, const cs_node *at, int at_key, const char *fmt, ...) {
-    char msg[900];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(msg, sizeof msg, fmt, ap);
-    va_end(ap);
-    int line = 1, col = 1;
-    if (at->source >= 0) {
-        const cs_ynode *p = at->at;
-        if (p) {
-            line = at_key ? p->key_line : p->line;
-            col = at_key ? p->key_col : p->col;
-        }
-        if (at->path[0]) {
-            cs_err_at(l, at->source, line, col, "%s: %s", at->path, msg);
-            return;
-        }
-    }
-    cs_err_at(l, at->source, line, col, "%s", msg);
-}
-
-void cs_field_hint(const cs_field *f, char *buf, size_t size) {
-    const cs_quantity_info *q = cs_quantity_get(f->q);
-    switch (f->kind) {
-    case CS_F_QTY:
-    case CS_F_LIST:
-        if (f->q == CS_Q_NUMBER)
-            snprintf(buf, size, "%s, e.g. %s", f->kind == CS_F_LIST ? "a list of numbers" : "a number",
-                     q->example);
-        else
-            snprintf(buf, size, "%s%s, e.g. \"%s\"%s",
-                     f->kind == CS_F_LIST          ? "a list of values of "
-                     : strchr("aeiou", q->name[0]) ? "an "
-                                                   : "a ",
-                     q->name, q->example, f->flags & CS_NONE_OK ? " or none" : "");
-        break;
-    case CS_F_INT:
-        snprintf(buf, size, "a whole number");
-        break;
-    case CS_F_ENUM: {
-        size_t n = 0;
-        buf[0] = '\0';
-        for (int k = 0; f->words[k] && n < size; k++) {
-            const char *sep = k == 0 ? "" : (f->words[k + 1] ? ", " : " or ");
-            int w = snprintf(buf + n, size - n, "%s%s", sep, f->words[k]);
-            n += w > 0 ? (size_t)w : 0;
-        }
-        break;
-    }
-    default:
-        snprintf(buf, size, "text");
-        break;
-    }
-}
-
-static int error_order(const void *a, const void *b) {
-    const cs_lerror *x = a, *y = b;
-    if (x->source != y->source) return x->source < y->source ? -1 : 1;
-    if (x->line != y->line) return x->line < y->line ? -1 : 1;
-    if (x->col != y->col) return x->col < y->col ? -1 : 1;
-    return (x->seq > y->seq) - (x->seq < y->seq);
-}
-
-/* Sort the problems by place and keep each once (a value used twice is wrong once). */
-static void sort_errors(cs_loader *l) {
-    if (l->errors_sorted) return;
-    if (l->error_count > 1) /* none: errors may be NULL, which qsort must not be given */
-        qsort(l->errors, (size_t)l->error_count, sizeof *l->errors, error_order);
-    int kept = 0;
-    for (int k = 0; k < l->error_count; k++) {
-        if (kept > 0 && strcmp(l->errors[kept - 1].text, l->errors[k].text) == 0) {
-            free(l->errors[k].text);
-            continue;
-        }
-        l->errors[kept++] = l->errors[k];
-    }
-    l->error_count = kept;
-    l->errors_sorted = 1;
-}
-
-int cs_loader_error_count(cs_loader *l) {
-    sort_errors(l);
-    return l->error_count;
-}
-
-const char *cs_loader_error(cs_loader *l, int i) {
-    sort_errors(l);
-    return i >= 0 && i < l->error_count ? l->errors[i].text : NULL;
-}
-
-void cs_loader_print_errors(cs_loader *l, FILE *out) {
-    for (int i = 0; i < l->error_count; i++) {
-        const char *e = cs_loader_error(l, i);
-        if (e) cs_term_text(out, e), fputc('\n', out); /* a value echoed as the file gave it */
-    }
-}
-
-/* ---- references ---- */
-
-static cs_node *clone(cs_loader *l, const cs_node *n) {
-    cs_node *c = cs_arena_alloc(l, sizeof *c);
-    if (!c) return NULL;
-    *c = *n;
-    if (n->items) {
-        size_t size = (size_t)n->count * sizeof *c->items;
-        if (!(c->items = cs_arena_alloc(l, size + sizeof *c->items))) return NULL;
-        memcpy(c->items, n->items, size);
-    }
-    return c;
-}
-
-/* local's fields over base's (a field given replaces the base's whole). */
-static const cs_node *merge(cs_loader *l, const cs_node *local, const cs_node *base) {
-    cs_node *n = clone(l, local);
-    if (!n) return NULL;
-    for (int i = 0; i < n->count; i++)
-        if (!n->items[i]) n->items[i] = base->items[i];
-    return n;
-}
-
-int cs_library_read(cs_loader *l) {
-    if (l->library_state) return l->library_state > 0 ? 0 : -1;
-    l->library_state = -1;
-    DIR *d = l->data_dir[0] ? opendir(l->data_dir) : NULL;
-    if (!l->data_dir[0]) {
-        cs_err_at(l, INT_MIN, 0, 0,
-                  "cannot find the parts library: %s (set CABLESIM_DATA to the folder of its YAML files)",
-                  l->data_note);
-        return -1;
-    }
-    if (!d) {
-        cs_err_at(l, INT_MIN, 0, 0, "%s: cannot read the parts library (%s%sexpected a folder of YAML files)",
-                  l->data_dir, l->data_note, l->data_note[0] ? "; " : "");
-        return -1;
-    }
-    char names[64][PATH_MAX];
-    int count = 0;
-    struct dirent *e;
-    while ((e = readdir(d)) && count < 64) {
-        size_t n = strlen(e->d_name);
-        if (n > 5 && n < 256 && strcmp(e->d_name + n - 5, ".yaml") == 0)
-            snprintf(names[count++], sizeof names[0], "%.1024s/%.255s", l->data_dir, e->d_name);
-    }
-    closedir(d);
-    qsort(names, (size_t)count, sizeof names[0], (int (*)(const void *, const void *))strcmp);
-    int ok = 1;
-    l->library_first = l->file_count;
-    for (int i = 0; i < count; i++)
-        ok &= cs_file_load(l, names[i], NULL) >= 0;
-    l->library_end = l->file_count;
-    l->library_state = ok ? 1 : -1;
-    return ok ? 0 : -1;
-}
-
-static const cs_node *find_in_file(const cs_loader *l, int file, const char *list, const char *name) {
-    if (file < 0 || file >= l->file_count) return NULL;
-    const cs_node *seq = cs_node_get(cs_node_get(l->files[file].root, "parts"), list);
-    for (int i = 0; seq && i < seq->count; i++) {
-        const cs_node *n = cs_node_get(seq->items[i], "name");
-        if (n && strcmp(n->text, name) == 0) return seq->items[i];
-    }
-    return NULL;
-}
-
-static void part_names(const cs_loader *l, int file, const char *list, char *buf, size_t size) {
-    size_t n = 0;
-    buf[0] = '\0';
-    for (int f = 0; f < l->file_count && n < size; f++) {
-        if (f != file && (f < l->library_first || f >= l->library_end)) continue;
-        const cs_node *seq = cs_node_get(cs_node_get(l->files[f].root, "parts"), list);
-        for (int i = 0; seq && i < seq->count && n < size; i++) {
-            const cs_node *nm = cs_node_get(seq->items[i], "name");
-            if (nm) n += (size_t)snprintf(buf + n, size - n, "%s%s", n ? ", " : "", nm->text);
-        }
-    }
-}
-
-static int main_file(const cs_loader *l) {
-    return l->library_state && l->library_first == 0 ? l->library_end : 0;
-}
-
-const cs_node *cs_find_part(cs_loader *l, int source, const char *list, const char *name,
-                            const cs_node *from) {
-    int file = source >= 0 ? source : main_file(l);
-    const cs_node *found = find_in_file(l, file, list, name);
-    cs_library_read(l);
-    for (int f = l->library_first; !found && f < l->library_end; f++)
-        if (l->files[f].root) found = find_in_file(l, f, list, name);
-    if (!found) {
-        char names[600];
-        part_names(l, file, list, names, sizeof names);
-        cs_err_node(l, from, 0, "no %.*s part named '%s' (expected one of: %s)", (int)strlen(list) - 1, list,
-                    name, names);
-        return NULL;
-    }
-    const cs_node *base_name = cs_node_get(found, "part");
-    if (!base_name) return found;
-    if (l->depth >= MAX_DEPTH) {
-        cs_err_node(l, base_name, 0, "parts refer to each other in a cycle (expected a chain that ends)");
-        return NULL;
-    }
-    l->depth++;
-    const cs_node *base = cs_find_part(l, found->source, list, base_name->text, base_name);
-    l->depth--;
-    return base ? merge(l, found, base) : NULL;
-}
-
-/* A copy of path's folder joined to name (name as is when absolute). */
-static void relative_to(const char *path, const char *name, char *out, size_t size) {
-    const char *slash = strrchr(path, '/');
-    if (name[0] == '/' || !slash)
-        snprintf(out, size, "%s", name);
-    else
-        snprintf(out, size, "%.*s/%s", (int)(slash - path), path, name);
-}
-
-/* barrier, vehicle or scenario of a model: a part name, or a mapping with file or part underneath. */
-static const cs_node *resolve_top(cs_loader *l, const cs_node *node, const char *key) {
-    if (node->kind == CS_Y_SCALAR) return cs_find_part(l, node->source, "vehicles", node->text, node);
-    const cs_node *file = cs_node_get(node, "file"), *part = cs_node_get(node, "part"), *base = NULL;
-    if (file && part) {
-        cs_err_node(l, part, 1, "give file or part, not both (expected one source for the %s)", key);
-        return NULL;
-    }
-    if (l->depth >= MAX_DEPTH) {
-        cs_err_node(l, node, 0, "files refer to each other in a cycle (expected a chain that ends)");
-        return NULL;
-    }
-    l->depth++;
-    if (part) {
-        base = cs_find_part(l, part->source, "vehicles", part->text, part);
-    } else if (file) {
-        char path[PATH_MAX];
-        relative_to(node->source >= 0 ? l->files[node->source].real : ".", file->text, path, sizeof path);
-        int g = cs_file_load(l, path, file);
-        const cs_node *theirs = g >= 0 ? cs_node_get(l->files[g].root, key) : NULL;
-        if (g >= 0 && !theirs)
-            cs_err_node(l, file, 0, "'%s' has no %s (expected a file with a %s)", file->text, key, key);
-        base = theirs ? resolve_top(l, theirs, key) : NULL;
-    }
-    l->depth--;
-    if ((file || part) && !base) return NULL;
-    return base ? merge(l, node, base) : node;
-}
-
-static const char *const top_keys[] = {"barrier", "vehicle", "scenario"};
-
-cs_node *cs_resolve_model(cs_loader *l, int file) {
-    cs_node *root = clone(l, l->files[file].root);
-    int ok = root != NULL;
-    for (size_t k = 0; ok && k < sizeof top_keys / sizeof top_keys[0]; k++) {
-        int i = cs_table_find(&cs_table_model, top_keys[k]);
-        if (root->items[i] && !(root->items[i] = (cs_node *)resolve_top(l, root->items[i], top_keys[k])))
-            ok = 0;
-    }
-    return ok ? root : NULL;
 }
 
 /* ---- --set ---- */
@@ -459,7 +139,7 @@ static void apply_set(cs_loader *l, cs_node **root, int k) {
     long index;
     int rc, src = -1 - k;
     while ((rc = cs_path_next(&p, key, sizeof key, &index)) > 0) {
-        cs_node *n = clone(l, *ref);
+        cs_node *n = cs_node_clone(l, *ref);
         if (!n) return;
         *ref = n;
         int i = rc == 1 && n->kind == CS_Y_MAP ? cs_table_find(n->table, key) : -1;
@@ -490,7 +170,7 @@ static void apply_set(cs_loader *l, cs_node **root, int k) {
         }
         if (last) {
             *ref = set_node(l, k, CS_Y_SCALAR, NULL);
-            if (*ref && f->kind == CS_F_PART) *ref = (cs_node *)resolve_top(l, *ref, f->key);
+            if (*ref && f->kind == CS_F_PART) *ref = (cs_node *)cs_resolve_top(l, *ref, f->key);
             return;
         }
         if (!*ref && (f->kind == CS_F_MAP || f->kind == CS_F_PART)) *ref = set_node(l, k, CS_Y_MAP, f->sub);
@@ -568,7 +248,7 @@ int cs_loader_library(cs_loader *l, cs_part_kind kind, const char ***names, cons
 cs_status cs_loader_part(cs_loader *l, cs_part_kind kind, const char *name, void *def) {
     if (cs_library_read(l) != 0) return CS_ERR_INVALID;
     cs_node at = {.kind = CS_Y_SCALAR, .text = name, .source = INT_MIN, .path = name};
-    const cs_node *part = cs_find_part(l, main_file(l), part_lists[kind], name, &at);
+    const cs_node *part = cs_find_part(l, cs_main_file(l), part_lists[kind], name, &at);
     if (!part) return CS_ERR_INVALID;
     int errors = 0;
     if (kind == CS_PART_VEHICLE)

@@ -68,8 +68,11 @@ struct cs_loader {
     const cs_node *vehicle_node, *scenario_node, *anchors_node, *soil_node;
 };
 
+/* The arena (lstore.c). */
 void *cs_arena_alloc(cs_loader *l, size_t size); /* zeroed; NULL when out of memory */
 char *cs_arena_strdup(cs_loader *l, const char *s);
+/* Free the arena's allocations newer than keep (NULL: all). */
+void cs_arena_drop_to(cs_loader *l, struct cs_chunk *keep);
 
 /* Record a problem at a node (its key if at_key) or at a place in a file (source < 0: a --set). */
 void cs_err_node(cs_loader *l, const cs_node *at, int at_key, const char *fmt, ...)
@@ -88,6 +91,14 @@ int cs_damaged(const cs_loader *l, const cs_node *n);
 /* The field of a mapping node by key (NULL if absent). */
 const cs_node *cs_node_get(const cs_node *map, const char *key);
 
+/* References (parts.c). A copy of a node in the arena, its items' array copied too (NULL: no memory). */
+cs_node *cs_node_clone(cs_loader *l, const cs_node *n);
+/* The file a part is looked for from when no file names it: the model's (the first after the library
+ * when the library was read first). */
+int cs_main_file(const cs_loader *l);
+/* The barrier, vehicle or scenario (key) of a model, node: a part name, or a mapping with file or part
+ * underneath, resolved (NULL: an error recorded). */
+const cs_node *cs_resolve_top(cs_loader *l, const cs_node *node, const char *key);
 /* Resolve references of a file's model (vehicle/barrier/scenario) into a fresh root. */
 cs_node *cs_resolve_model(cs_loader *l, int file);
 /* A named part (list: "vehicles", "ropes", "sections") seen from a source, resolved. NULL if absent. */

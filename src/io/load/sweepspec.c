@@ -14,7 +14,6 @@
 
 #include "grow.h"
 #include "loader_int.h"
-#include "study/sweep.h"
 #include "sweepspec.h"
 
 /* ---- errors ---- */

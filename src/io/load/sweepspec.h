@@ -27,6 +27,15 @@ typedef struct cs_dist {
     double p_lo, p_hi; /* the untruncated CDF at lo and hi */
 } cs_dist;
 
+/* The standard normal CDF and its inverse (Acklam's rational start and one Halley step on erfc)
+ * (sweepdist.c). */
+double cs_normal_cdf(double x);
+double cs_normal_quantile(double p);
+/* Fill the untruncated CDF at the bounds. Returns 0, or -1 if the bounds leave no probability. */
+int cs_dist_prepare(cs_dist *d);
+/* The value at probability u in (0, 1) of the (truncated) distribution. */
+double cs_dist_quantile(const cs_dist *d, double u);
+
 enum { CS_SWEEP_MAX_RUNS = 1000000, CS_SWEEP_MAX_VARS = 64 };
 
 /* One varied value of the model. */

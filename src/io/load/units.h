@@ -42,7 +42,9 @@ const cs_quantity_info *cs_quantity_get(cs_quantity q);
 
 typedef struct cs_units cs_units;
 
-/* Load the udunits2 system database and the aliases. NULL with why filled on failure. */
+/* udunits2's system database with the aliases: the usual units from a table of its factors written at
+ * build time, the database itself read when a text the table lacks is first met. NULL with why filled
+ * when there is no database to read. */
 cs_units *cs_units_create(char *why, size_t why_size);
 void cs_units_free(cs_units *u);
 

@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <udunits2.h>
+#include <unistd.h>
 
 #include "units_int.h"
 
@@ -12,37 +13,92 @@
  * into it is serialised here. Each context still owns its own unit system. */
 static pthread_mutex_t ut_lock = PTHREAD_MUTEX_INITIALIZER;
 
+/* The usual units (cs_units_usual) as udunits2's database converts them, in cs_units_write_table's form:
+ * written at build time by cmake/units_table.c from this same database, whose XML costs more to read
+ * than a whole run spends outside its engine on loading. A unit the table lists is converted by its
+ * factors, to the same bits; any other text reads the database, once, when first met. */
+extern const char cs_units_usual_table[];
+
 typedef struct ud_units {
     cs_units base;
-    ut_system *system;
+    cs_units *table;   /* the usual units (NULL: an empty table) */
+    int read;          /* the database: 0 not yet read, 1 read, -1 unreadable */
+    ut_system *system; /* the database with the aliases, once read */
     ut_unit *si[CS_Q_COUNT];
 } ud_units;
 
-static void *ud_parse(cs_units *u, const char *text) {
-    pthread_mutex_lock(&ut_lock);
-    ut_unit *unit = ut_parse(((ud_units *)u)->system, text, UT_ASCII);
-    pthread_mutex_unlock(&ut_lock);
-    return unit;
+/* A unit a text names: one of the table's, or the database's. */
+typedef struct ud_handle {
+    int in_table;
+    void *unit;
+} ud_handle;
+
+static int add_alias(ud_units *u, const char *symbol, const char *definition) {
+    ut_unit *unit = ut_parse(u->system, definition, UT_ASCII);
+    int ok = unit && ut_map_symbol_to_unit(symbol, UT_ASCII, unit) == UT_SUCCESS;
+    ut_free(unit);
+    return ok ? 0 : -1;
 }
 
-static int ud_convert(cs_units *u, void *unit, cs_quantity q, double value, double *si) {
+/* Read the database, the aliases and each quantity's SI unit, under ut_lock: 0, or -1. */
+static int read_database(ud_units *u) {
+    if (u->read) return u->read > 0 ? 0 : -1;
+    ut_set_error_message_handler(ut_ignore);
+    u->system = ut_read_xml(NULL);
+    int ok = u->system != NULL;
+    for (int i = 0; ok && i < cs_unit_alias_count; i++)
+        ok = add_alias(u, cs_unit_aliases[i][0], cs_unit_aliases[i][1]) == 0;
+    for (int q = 0; ok && q < CS_Q_COUNT; q++)
+        ok = (u->si[q] = ut_parse(u->system, cs_quantity_get(q)->si, UT_ASCII)) != NULL;
+    u->read = ok ? 1 : -1;
+    return ok ? 0 : -1;
+}
+
+static void *ud_parse(cs_units *base, const char *text) {
+    ud_units *u = (ud_units *)base;
+    ud_handle *h = malloc(sizeof *h);
+    if (!h) return NULL;
+    h->in_table = u->table != NULL && (h->unit = u->table->ops->parse(u->table, text)) != NULL;
+    if (!h->in_table) {
+        pthread_mutex_lock(&ut_lock);
+        h->unit = read_database(u) == 0 ? ut_parse(u->system, text, UT_ASCII) : NULL;
+        pthread_mutex_unlock(&ut_lock);
+    }
+    if (!h->unit) {
+        free(h);
+        return NULL;
+    }
+    return h;
+}
+
+static int ud_convert(cs_units *base, void *unit, cs_quantity q, double value, double *si) {
+    ud_units *u = (ud_units *)base;
+    ud_handle *h = unit;
+    if (h->in_table) return u->table->ops->convert(u->table, h->unit, q, value, si);
     pthread_mutex_lock(&ut_lock);
-    cv_converter *cv = ut_get_converter(unit, ((ud_units *)u)->si[q]);
+    cv_converter *cv = ut_get_converter(h->unit, u->si[q]);
     if (cv) *si = cv_convert_double(cv, value);
     cv_free(cv);
     pthread_mutex_unlock(&ut_lock);
     return cv ? 0 : -1;
 }
 
-static void ud_release(cs_units *u, void *unit) {
-    (void)u;
-    pthread_mutex_lock(&ut_lock);
-    ut_free(unit);
-    pthread_mutex_unlock(&ut_lock);
+static void ud_release(cs_units *base, void *unit) {
+    ud_units *u = (ud_units *)base;
+    ud_handle *h = unit;
+    if (h->in_table) {
+        u->table->ops->release(u->table, h->unit);
+    } else {
+        pthread_mutex_lock(&ut_lock);
+        ut_free(h->unit);
+        pthread_mutex_unlock(&ut_lock);
+    }
+    free(h);
 }
 
 static void ud_destroy(cs_units *base) {
     ud_units *u = (ud_units *)base;
+    cs_units_free(u->table);
     pthread_mutex_lock(&ut_lock);
     for (int q = 0; q < CS_Q_COUNT; q++)
         ut_free(u->si[q]);
@@ -53,13 +109,6 @@ static void ud_destroy(cs_units *base) {
 
 static const cs_units_ops ud_ops = {ud_parse, ud_convert, ud_release, ud_destroy};
 
-static int add_alias(ud_units *u, const char *symbol, const char *definition) {
-    ut_unit *unit = ut_parse(u->system, definition, UT_ASCII);
-    int ok = unit && ut_map_symbol_to_unit(symbol, UT_ASCII, unit) == UT_SUCCESS;
-    ut_free(unit);
-    return ok ? 0 : -1;
-}
-
 cs_units *cs_units_create(char *why, size_t why_size) {
     ud_units *u = calloc(1, sizeof *u);
     if (!u) {
@@ -67,16 +116,17 @@ cs_units *cs_units_create(char *why, size_t why_size) {
         return NULL;
     }
     u->base.ops = &ud_ops;
+    if (cs_units_usual_table[0] && !(u->table = cs_units_from_table(cs_units_usual_table, why, why_size))) {
+        free(u);
+        return NULL;
+    }
+    /* the database is read when a text the table lacks needs it; whether it can be is known now */
     pthread_mutex_lock(&ut_lock);
-    ut_set_error_message_handler(ut_ignore);
-    u->system = ut_read_xml(NULL);
-    int ok = u->system != NULL;
-    for (int i = 0; ok && i < cs_unit_alias_count; i++)
-        ok = add_alias(u, cs_unit_aliases[i][0], cs_unit_aliases[i][1]) == 0;
-    for (int q = 0; ok && q < CS_Q_COUNT; q++)
-        ok = (u->si[q] = ut_parse(u->system, cs_quantity_get(q)->si, UT_ASCII)) != NULL;
+    ut_status status;
+    const char *path = ut_get_path_xml(NULL, &status);
+    int readable = path && access(path, R_OK) == 0;
     pthread_mutex_unlock(&ut_lock);
-    if (!ok) {
+    if (!readable) {
         snprintf(why, why_size, "cannot load the udunits2 unit database (set UDUNITS2_XML_PATH)");
         cs_units_free(&u->base);
         return NULL;

@@ -5,6 +5,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "numtext.h"
 #include "writers.h"
 
 void cs_w_num(cs_wout *w, double v, const char *what) {
@@ -14,7 +15,21 @@ void cs_w_num(cs_wout *w, double v, const char *what) {
         snprintf(w->why, sizeof w->why, "%s is %s", what, isnan(v) ? "NaN" : "infinite");
         return;
     }
-    fprintf(w->f, "%.10g", v);
+    char text[CS_G10_SIZE];
+    fwrite(text, 1, (size_t)cs_g10(v, text), w->f);
+}
+
+/* A number of timeseries.csv's row at time t: its message, should it not be finite, names "NOUN at t"
+ * (index negative) or "NOUN INDEX TAIL at t"; it is worded only then. */
+static void ts_num(cs_wout *w, double v, const char *noun, int index, const char *tail, double t) {
+    char what[96] = "";
+    if (!isfinite(v)) {
+        if (index < 0)
+            snprintf(what, sizeof what, "%s at t = %g s", noun, t);
+        else
+            snprintf(what, sizeof what, "%s %d%s at t = %g s", noun, index, tail, t);
+    }
+    cs_w_num(w, v, what);
 }
 
 int cs_timeseries_csv(FILE *f, const cs_record *rec, char *why, size_t why_size) {
@@ -33,7 +48,6 @@ int cs_timeseries_csv(FILE *f, const cs_record *rec, char *why, size_t why_size)
     fprintf(f, ",energy_balance_error [1]");
     fputc('\n', f);
     cs_wout w = {f, 0, ""};
-    char what[96];
     for (int i = 0; i < rec->frame_count && !w.bad; i++) {
         const cs_vehicle_view *v = &rec->vehicle[i];
         const double row[] = {v->t,
@@ -54,38 +68,38 @@ int cs_timeseries_csv(FILE *f, const cs_record *rec, char *why, size_t why_size)
                               v->crush,
                               v->face_force,
                               v->penetration};
-        snprintf(what, sizeof what, "the vehicle's state at t = %g s", v->t);
         for (size_t k = 0; k < sizeof row / sizeof row[0]; k++) {
             if (k) fputc(',', f);
-            cs_w_num(&w, row[k], what);
+            ts_num(&w, row[k], "the vehicle's state", -1, "", v->t);
         }
         for (int c = 0; c < rec->cable_count; c++) {
             const cs_cable_view *cv = &rec->cables[(size_t)i * (size_t)rec->cable_count + (size_t)c];
-            snprintf(what, sizeof what, "cable %d's tension at t = %g s", c, v->t);
             fputc(',', f);
-            cs_w_num(&w, cv->max_tension, what);
-            fprintf(f, ",%s", cs_cable_status_name(cv->status));
+            ts_num(&w, cv->max_tension, "cable", c, "'s tension", v->t);
+            fputc(',', f);
+            fputs(cs_cable_status_name(cv->status), f);
         }
         for (int p = 0; p < rec->post_count; p++) {
             const cs_post_view *pv = &rec->posts[(size_t)i * (size_t)rec->post_count + (size_t)p];
-            snprintf(what, sizeof what, "post %d's tilt at t = %g s", p, v->t);
-            fprintf(f, ",%s,", cs_post_status_name(pv->status));
-            cs_w_num(&w, pv->tilt, what);
+            fputc(',', f);
+            fputs(cs_post_status_name(pv->status), f);
+            fputc(',', f);
+            ts_num(&w, pv->tilt, "post", p, "'s tilt", v->t);
         }
         for (int a = 0; a < 2; a++) {
             const cs_anchor_view *av = &rec->anchors[(size_t)i * 2 + (size_t)a];
-            snprintf(what, sizeof what, "anchor %d at t = %g s", a, v->t);
-            fprintf(f, ",%s,", cs_anchor_status_name(av));
-            cs_w_num(&w, hypot(av->displacement[0], av->displacement[1]), what);
             fputc(',', f);
-            cs_w_num(&w, hypot(av->force[0], av->force[1]), what);
+            fputs(cs_anchor_status_name(av), f);
+            fputc(',', f);
+            ts_num(&w, hypot(av->displacement[0], av->displacement[1]), "anchor", a, "", v->t);
+            fputc(',', f);
+            ts_num(&w, hypot(av->force[0], av->force[1]), "anchor", a, "", v->t);
         }
-        snprintf(what, sizeof what, "the energy ledger at t = %g s", v->t);
         for (int k = 0; k <= CS_ENERGY_TERMS; k++) { /* the terms, then the balance error */
             fputc(',', f);
-            cs_w_num(&w,
-                     k < CS_ENERGY_TERMS ? cs_energy_term(&rec->energy[i], k) : rec->energy[i].balance_error,
-                     what);
+            ts_num(&w,
+                   k < CS_ENERGY_TERMS ? cs_energy_term(&rec->energy[i], k) : rec->energy[i].balance_error,
+                   "the energy ledger", -1, "", v->t);
         }
         fputc('\n', f);
     }

@@ -61,7 +61,7 @@ typedef struct cs_wout {
     char why[256]; /* where */
 } cs_wout;
 
-/* Print v with %.10g; a non-finite v is not printed and marks the output bad, naming what. */
+/* Print v as %.10g would (cs_g10); a non-finite v is not printed and marks the output bad, naming what. */
 void cs_w_num(cs_wout *w, double v, const char *what);
 /* Print s as a JSON string literal (quotes, backslashes and control characters escaped). */
 void cs_json_string(FILE *f, const char *s);

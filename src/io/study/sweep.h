@@ -20,13 +20,6 @@
 
 /* A uniform number in (0, 1) from (seed, a, b, stream): SplitMix64's finaliser over the key. */
 double cs_sweep_u01(uint64_t seed, uint64_t a, uint64_t b, uint64_t stream);
-/* The standard normal CDF and its inverse (Acklam's rational start and one Halley step on erfc). */
-double cs_normal_cdf(double x);
-double cs_normal_quantile(double p);
-/* Fill the untruncated CDF at the bounds. Returns 0, or -1 if the bounds leave no probability. */
-int cs_dist_prepare(cs_dist *d);
-/* The value at probability u in (0, 1) of the (truncated) distribution. */
-double cs_dist_quantile(const cs_dist *d, double u);
 
 /* The inputs of every run: x[run * var_count + var], SI (text variables: the level index). Grids vary
  * the first variable slowest. NULL if memory is short. */
