@@ -14,4 +14,7 @@ check "at least 25 bad files ($files)" '[ "$files" -ge 25 ]'
 # a --set the engine refuses for an element that takes it from the soil is blamed on that --set
 out=$("$cs" check tests/good/base.yaml --set "barrier.soil.dynamic_factor=20" 2>&1)
 check "--set barrier.soil.dynamic_factor=20: blamed on the --set, not on a file's line" '[ $? -eq 2 ] && grep -qF -- "--set barrier.soil.dynamic_factor=20: post 0: soil dynamic factor 20 must be in [1, 10]" <<<"$out" && ! grep -q "^tests/good/base.yaml:" <<<"$out" || { echo "$out"; false; }'
+# a check of a cable's height against a post's is blamed on the --set of the post's, not on the cable's line
+out=$("$cs" check tests/good/base.yaml --set "barrier.posts[0].height=3 ft" 2>&1)
+check "--set barrier.posts[0].height=3 ft: the cable above the post blamed on the --set" '[ $? -eq 2 ] && grep -qxF -- "--set barrier.posts[0].height=3 ft: the cable (1.2192 m) is above the top of the post at x = 2.4384 m (0.9144 m) (expected a height up to the posts'"'"' tops)" <<<"$out" && ! grep -q "^tests/good/base.yaml:" <<<"$out" || { echo "$out"; false; }'
 finish
