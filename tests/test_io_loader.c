@@ -270,39 +270,40 @@ static void test_engine_check_names_set(void **state) {
  * either value, not the file's line of the other: the file was fine before the --set. */
 static void test_cross_checks_name_set(void **state) {
     (void)state;
-    static const char *const low_posts[] = {"barrier.posts[0].height=3 ft", NULL};
-    static const char *const low_posts_want[] = {"--set barrier.posts[0].height=3 ft: the cable (1.2192 m) "
-                                                 "is above the top of the post at x = 2.4384 m "
-                                                 "(0.9144 m)",
-                                                 NULL};
-    expect_problems(CS_SOURCE_DIR "/tests/good/base.yaml", low_posts, low_posts_want);
-    static const char *const early[] = {"barrier.posts[0].from=-8 ft", NULL};
-    static const char *const early_want[] = {
-        "--set barrier.posts[0].from=-8 ft: the start anchor (x = 0 m) is inside the barrier (expected it "
-        "before the first post, x = -2.4384 m)",
-        NULL};
-    expect_problems(CS_SOURCE_DIR "/tests/good/base.yaml", early, early_want);
-    static const char *const late[] = {"barrier.posts[1].x[0]=70 ft", NULL};
-    static const char *const late_want[] = {
-        "--set barrier.posts[1].x[0]=70 ft: the end anchor (x = 19.5072 m) is inside the barrier (expected "
-        "it after the last post, x = 21.336 m)",
-        NULL};
-    expect_problems(CS_SOURCE_DIR "/tests/good/base.yaml", late, late_want);
-    static const char *const rail[] = {"barrier.posts[1].height=6 ft", NULL};
-    static const char *const rail_want[] = {
-        "--set barrier.posts[1].height=6 ft: the rail (2.1336 m) is above the top of the post at x = 17.0688 "
-        "m (1.8288 m)",
-        NULL};
-    expect_problems(CS_SOURCE_DIR "/examples/aps3.yaml", rail, rail_want);
-    /* posts at 8 and 20 ft, the end anchor at 24 ft: the file's impact point, 28 ft, lies beyond it */
-    static const char *const short_barrier[] = {
-        "barrier.posts[0].to=16 ft", "barrier.posts[0].except[0]=16 ft", "barrier.posts[1].x[0]=20 ft",
-        "barrier.anchors.end.x=24 ft", NULL};
-    static const char *const short_want[] = {
-        "--set barrier.anchors.end.x=24 ft: the impact point (8.5344 m) is outside the barrier (expected "
-        "between the anchors, 0 m to 7.3152 m)",
-        NULL};
-    expect_problems(CS_SOURCE_DIR "/tests/good/base.yaml", short_barrier, short_want);
+    static const struct {
+        const char *file;
+        const char *sets[5]; /* NULL-terminated */
+        const char *want;
+    } cases[] = {
+        {"tests/good/base.yaml",
+         {"barrier.posts[0].height=3 ft"},
+         "--set barrier.posts[0].height=3 ft: the cable (1.2192 m) is above the top of the post at x = "
+         "2.4384 m (0.9144 m)"},
+        {"tests/good/base.yaml",
+         {"barrier.posts[0].from=-8 ft"},
+         "--set barrier.posts[0].from=-8 ft: the start anchor (x = 0 m) is inside the barrier (expected it "
+         "before the first post, x = -2.4384 m)"},
+        {"tests/good/base.yaml",
+         {"barrier.posts[1].x[0]=70 ft"},
+         "--set barrier.posts[1].x[0]=70 ft: the end anchor (x = 19.5072 m) is inside the barrier (expected "
+         "it after the last post, x = 21.336 m)"},
+        {"examples/aps3.yaml",
+         {"barrier.posts[1].height=6 ft"},
+         "--set barrier.posts[1].height=6 ft: the rail (2.1336 m) is above the top of the post at x = "
+         "17.0688 m (1.8288 m)"},
+        /* posts at 8 and 20 ft, the end anchor at 24 ft: the file's impact point, 28 ft, lies beyond it */
+        {"tests/good/base.yaml",
+         {"barrier.posts[0].to=16 ft", "barrier.posts[0].except[0]=16 ft", "barrier.posts[1].x[0]=20 ft",
+          "barrier.anchors.end.x=24 ft"},
+         "--set barrier.anchors.end.x=24 ft: the impact point (8.5344 m) is outside the barrier (expected "
+         "between the anchors, 0 m to 7.3152 m)"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char file[512];
+        snprintf(file, sizeof file, "%s/%s", CS_SOURCE_DIR, cases[i].file);
+        const char *const want[] = {cases[i].want, NULL};
+        expect_problems(file, cases[i].sets, want);
+    }
 }
 
 static void test_references(void **state) {
