@@ -1,9 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* cablesim sweep: read the spec, make every run's inputs (the same on every rank), share the runs to do
  * among MPI ranks (the k-th on rank k mod size) and, within a rank, among OpenMP threads (dynamic, one run
- * at a time), gather the results on rank 0 and write runs.csv, summary.md and summary.json there (and
- * runs.nc and the spec's plots when asked). The inputs depend only on the seed and the run index, and
- * each run on nothing else, so the outputs are the same for any thread or rank count.
+ * at a time), send each finished run to rank 0 as it ends (app/sweep_mpi.c), which journals it, and write
+ * runs.csv, summary.md and summary.json there (and runs.nc and the spec's plots when asked). The inputs
+ * depend only on the seed and the run index, and each run on nothing else, so the outputs are the same
+ * for any thread or rank count.
  * SIGINT or SIGTERM during the runs lets the runs under way finish and starts no other: the outputs then
  * hold the runs done, marked partial, and `sweep --resume DIR` reads them back from runs.csv, runs the
  * rest and writes the whole study (runs.csv the same bytes as a sweep never stopped). */
@@ -11,6 +12,7 @@
 #include <errno.h>
 #include <json-c/json.h>
 #include <limits.h>
+#include <pthread.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -23,6 +25,8 @@
 #endif
 #ifdef CS_MPI
 #include <mpi.h>
+
+#include "sweep_mpi.h"
 #endif
 
 #include "cablesim/cablesim.h"
@@ -616,6 +620,24 @@ static void journal_run(cs_outdir *out, const cs_sweep_spec *spec, const double 
     free(text);
 }
 
+/* Rank 0's record of a finished run, its own or another rank's: its result and its journal row. An MPI
+ * sweep's receiver thread takes the other ranks' runs beside rank 0's threads, hence the lock. */
+typedef struct taker {
+    cs_outdir *out;
+    const cs_sweep_spec *spec;
+    const double *x;
+    cs_sweep_result *all;
+} taker;
+
+static void take_run(void *ctx, long i, const cs_sweep_result *r) {
+    static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
+    taker *t = ctx;
+    pthread_mutex_lock(&lock);
+    t->all[i] = *r;
+    journal_run(t->out, t->spec, t->x, r, i);
+    pthread_mutex_unlock(&lock);
+}
+
 static const char *signal_name(int sig) {
     return sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "a signal";
 }
@@ -626,9 +648,16 @@ int cs_sweep_command(int argc, char **argv) {
     cs_cli_command_line(argc, argv, command, sizeof command); /* as typed: getopt_long reorders argv */
 #ifdef CS_MPI
     int provided;
-    MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+    MPI_Init_thread(&argc, &argv, MPI_THREAD_SERIALIZED, &provided); /* sweep_mpi.h */
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     MPI_Comm_size(MPI_COMM_WORLD, &size);
+    if (provided < MPI_THREAD_SERIALIZED) {
+        if (rank == 0)
+            fprintf(stderr, "cablesim sweep: this MPI gives no MPI_THREAD_SERIALIZED, which the sweep's "
+                            "journal of every rank's runs needs\n");
+        MPI_Finalize();
+        return EXIT_RUN;
+    }
     MPI_Comm node;
     MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank, MPI_INFO_NULL, &node);
     MPI_Comm_size(node, &local_ranks);
@@ -766,6 +795,14 @@ int cs_sweep_command(int argc, char **argv) {
     catch_signals(1);
     double start = now();
     int k = spec->var_count;
+    taker t = {&out, spec, x, all};
+#ifdef CS_MPI
+    cs_sweep_receiver rx = {0};
+    if (rank == 0 && size > 1 && cs_sweep_receive_start(&rx, size, take_run, &t) != 0) {
+        fprintf(stderr, "cablesim sweep: cannot start the thread that receives the other ranks' runs\n");
+        MPI_Abort(MPI_COMM_WORLD, EXIT_RUN);
+    }
+#endif
 #ifdef _OPENMP
 #pragma omp parallel num_threads(threads)
 #endif
@@ -784,7 +821,10 @@ int cs_sweep_command(int argc, char **argv) {
 #endif
             {
                 p.done++;
-                if (rank == 0) journal_run(&out, spec, x, &mine[m], i);
+#ifdef CS_MPI
+                if (rank > 0) cs_sweep_send_run(i, &mine[m]);
+#endif
+                if (rank == 0) take_run(&t, i, &mine[m]);
                 progress_show(&p, 0);
                 if (stop_after > 0 && p.done == stop_after) raise(SIGINT); /* CABLESIM_SWEEP_STOP_AFTER */
             }
@@ -798,32 +838,11 @@ int cs_sweep_command(int argc, char **argv) {
     else if (p.on && p.tty)
         fputc('\n', stderr);
 #ifdef CS_MPI
+    if (rank == 0 && size > 1)
+        cs_sweep_receive_end(&rx);
+    else if (rank > 0)
+        cs_sweep_send_done();
     MPI_Allreduce(MPI_IN_PLACE, &stopped, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-    int *counts = NULL, *displs = NULL;
-    int bytes = (int)((size_t)local_n * sizeof *mine);
-    cs_sweep_result *gathered = NULL;
-    if (rank == 0) {
-        counts = calloc((size_t)size, sizeof *counts);
-        displs = calloc((size_t)size, sizeof *displs);
-        gathered = calloc((size_t)(todo_n > 0 ? todo_n : 1), sizeof *gathered);
-        if (!counts || !displs || !gathered) MPI_Abort(MPI_COMM_WORLD, EXIT_RUN);
-    }
-    MPI_Gather(&bytes, 1, MPI_INT, counts, 1, MPI_INT, 0, MPI_COMM_WORLD);
-    if (rank == 0)
-        for (int r = 1; r < size; r++)
-            displs[r] = displs[r - 1] + counts[r - 1];
-    MPI_Gatherv(mine, bytes, MPI_BYTE, gathered, counts, displs, MPI_BYTE, 0, MPI_COMM_WORLD);
-    if (rank == 0) {
-        for (int r = 0; r < size; r++) {
-            const cs_sweep_result *from = (const cs_sweep_result *)((const char *)gathered + displs[r]);
-            for (long m = 0; m < (long)((size_t)counts[r] / sizeof *mine); m++)
-                all[todo[r + m * size]] = from[m];
-        }
-    }
-    free(counts), free(displs), free(gathered);
-#else
-    for (long m = 0; m < local_n; m++)
-        all[todo[m]] = mine[m];
 #endif
     double wall = now() - start;
     if (rank == 0) {

@@ -2,8 +2,9 @@
 # SPDX-License-Identifier: MIT
 # cablesim-mpi sweep: the same runs.csv, runs.nc and summaries, byte for byte (the summaries but for the
 # line that records the command line), on 1, 2 and 3 MPI ranks (3 splits 4 runs unevenly) and with 2
-# threads on each of 2 ranks; a sweep stopped on 2 ranks and resumed on 2 gives the runs.csv of 1 rank. Exit 77 (skipped) only when MPI or mpirun
-# is absent.
+# threads on each of 2 ranks; a sweep stopped on 2 ranks and resumed on 2 gives the runs.csv of 1 rank,
+# and so does one killed by SIGKILL on 2 ranks, whose journal holds the runs of both. Exit 77 (skipped)
+# only when MPI or mpirun is absent.
 set -u
 cs=${1:-}
 if [ -z "$cs" ]; then
@@ -59,6 +60,34 @@ if grep -q "^\"partial\":true,\"runs_done\":2," "$out/summary.json" 2>/dev/null 
     pass=$((pass + 1))
 else
     echo "FAIL: lhs stopped after a run on each of 2 ranks, then resumed on 2: not the runs.csv of 1 rank"
+    cat "$out.log"
+    fail=$((fail + 1))
+fi
+# killed by SIGKILL on 2 ranks (mpirun and both ranks, no handler runs) once the journal holds 5 runs, one
+# of them rank 1's (the odd ones): each rank's finished runs reach rank 0's journal as they end, and
+# --resume on 2 ranks reads them back and gives the runs.csv of 1 rank
+mc=(--allow-path examples tests/sweep/mc.yaml --runs 30 --t-end "500 ms" --threads 1)
+mpirun "${flags[@]}" -n 1 "$cs" sweep "${mc[@]}" -o "$tmp/mc-1" --quiet >"$tmp/mc-1.log" 2>&1
+out="$tmp/mc-killed"
+journal="$out/.cablesim-journal"
+setsid mpirun "${flags[@]}" -n 2 "$cs" sweep "${mc[@]}" -o "$out" --quiet >"$out.log" 2>&1 &
+pid=$!
+odd_rows() { tail -n +3 "$journal" 2>/dev/null | awk -F, '$1 % 2 == 1' | wc -l; }
+for _ in $(seq 6000); do # up to 60 s: a loaded machine is slow to start mpirun
+    [ -e "$journal" ] && [ "$(wc -l <"$journal")" -ge 7 ] && [ "$(odd_rows)" -ge 1 ] && break
+    kill -0 "$pid" 2>/dev/null || break
+    sleep 0.01
+done
+kill -KILL $(ps -o pid= --sid "$pid") 2>/dev/null # mpirun and each rank (a process group of its own)
+wait "$pid" 2>/dev/null
+rows=$(($(wc -l <"$journal") - 2))
+odd=$(odd_rows)
+if [ ! -e "$out/runs.csv" ] && [ "$odd" -ge 1 ] && [ "$rows" -gt "$odd" ] && [ "$rows" -lt 30 ] &&
+    mpirun "${flags[@]}" -n 2 "$cs" sweep --resume "$out" >>"$out.log" 2>&1 &&
+    grep -qF "sweep: $rows runs read back from" "$out.log" && cmp "$out/runs.csv" "$tmp/mc-1/runs.csv"; then
+    pass=$((pass + 1))
+else
+    echo "FAIL: a sweep on 2 ranks killed by SIGKILL: its journal held $rows runs, $odd of them rank 1's (expected some of each rank), or --resume did not give the runs.csv of 1 rank"
     cat "$out.log"
     fail=$((fail + 1))
 fi

@@ -265,6 +265,47 @@ static void test_engine_check_names_set(void **state) {
     cs_loader_free(l);
 }
 
+/* A check between two values of the model (a cable's or a rail's height against a post's, an anchor's x
+ * against where the posts stand, the impact point against the anchors) names the --set that changed
+ * either value, not the file's line of the other: the file was fine before the --set. */
+static void test_cross_checks_name_set(void **state) {
+    (void)state;
+    static const struct {
+        const char *file;
+        const char *sets[5]; /* NULL-terminated */
+        const char *want;
+    } cases[] = {
+        {"tests/good/base.yaml",
+         {"barrier.posts[0].height=3 ft"},
+         "--set barrier.posts[0].height=3 ft: the cable (1.2192 m) is above the top of the post at x = "
+         "2.4384 m (0.9144 m)"},
+        {"tests/good/base.yaml",
+         {"barrier.posts[0].from=-8 ft"},
+         "--set barrier.posts[0].from=-8 ft: the start anchor (x = 0 m) is inside the barrier (expected it "
+         "before the first post, x = -2.4384 m)"},
+        {"tests/good/base.yaml",
+         {"barrier.posts[1].x[0]=70 ft"},
+         "--set barrier.posts[1].x[0]=70 ft: the end anchor (x = 19.5072 m) is inside the barrier (expected "
+         "it after the last post, x = 21.336 m)"},
+        {"examples/aps3.yaml",
+         {"barrier.posts[1].height=6 ft"},
+         "--set barrier.posts[1].height=6 ft: the rail (2.1336 m) is above the top of the post at x = "
+         "17.0688 m (1.8288 m)"},
+        /* posts at 8 and 20 ft, the end anchor at 24 ft: the file's impact point, 28 ft, lies beyond it */
+        {"tests/good/base.yaml",
+         {"barrier.posts[0].to=16 ft", "barrier.posts[0].except[0]=16 ft", "barrier.posts[1].x[0]=20 ft",
+          "barrier.anchors.end.x=24 ft"},
+         "--set barrier.anchors.end.x=24 ft: the impact point (8.5344 m) is outside the barrier (expected "
+         "between the anchors, 0 m to 7.3152 m)"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        char file[512];
+        snprintf(file, sizeof file, "%s/%s", CS_SOURCE_DIR, cases[i].file);
+        const char *const want[] = {cases[i].want, NULL};
+        expect_problems(file, cases[i].sets, want);
+    }
+}
+
 static void test_references(void **state) {
     (void)state;
     cs_model_input in;
@@ -472,6 +513,7 @@ int main(void) {
         cmocka_unit_test(test_set_errors),
         cmocka_unit_test(test_inertia_override),
         cmocka_unit_test(test_engine_check_names_set),
+        cmocka_unit_test(test_cross_checks_name_set),
         cmocka_unit_test(test_references),
         cmocka_unit_test(test_reuse),
         cmocka_unit_test(test_every_problem_reported),

@@ -510,6 +510,19 @@ static void check_slip(cs_loader *l, const cs_node *cable, const cs_cable_def *d
                     "no fitting of this cable slips (expected slip_travel with a slip_load)");
 }
 
+/* Where a post of group stands, for a check against it: the value of its x or of its run's keys that a
+ * --set gave (blamed() then names that --set), else the group. */
+static const cs_node *post_position(const cs_node *group) {
+    static const char *const keys[] = {"x", "from", "spacing", "to", "up_to", "count", "except"};
+    for (size_t k = 0; k < sizeof keys / sizeof *keys; k++) {
+        const cs_node *n = cs_node_get(group, keys[k]);
+        int items = n && n->kind == CS_Y_SEQ;
+        for (int i = 0; n && i < (items ? n->count : 1); i++)
+            if ((items ? n->items[i] : n)->source < 0) return items ? n->items[i] : n;
+    }
+    return group;
+}
+
 /* The longest span of the ropes between two supports (docs/assumptions.md, "Ranges of the inputs"). */
 #define CS_MAX_SPAN 100.0
 
@@ -521,7 +534,7 @@ static void check_barrier(cs_loader *l, const cs_node *barrier, const cs_barrier
         for (int p = 0; p < b->post_count; p++) {
             if (b->rails[r].height <= b->posts[p].height) continue;
             cs_err_node(
-                l, at(rails->items[r], "height"), 0,
+                l, blamed(at(rails->items[r], "height"), at(l->post_origin[p], "height")), 0,
                 "the rail (%g m) is above the top of the post at x = %g m (%g m) (expected a height up "
                 "to the posts' tops)",
                 b->rails[r].height, b->posts[p].x, b->posts[p].height);
@@ -530,7 +543,7 @@ static void check_barrier(cs_loader *l, const cs_node *barrier, const cs_barrier
     for (int c = 0; c < b->cable_count; c++) {
         for (int p = 0; p < b->post_count; p++) {
             if (b->cables[c].height <= b->posts[p].height) continue;
-            cs_err_node(l, at(cables->items[c], "height"), 0,
+            cs_err_node(l, blamed(at(cables->items[c], "height"), at(l->post_origin[p], "height")), 0,
                         "the cable (%g m) is above the top of the post at "
                         "x = %g m (%g m) (expected a height up to the posts' tops)",
                         b->cables[c].height, b->posts[p].x, b->posts[p].height);
@@ -554,9 +567,10 @@ static void check_barrier(cs_loader *l, const cs_node *barrier, const cs_barrier
         double a = p ? b->posts[p - 1].x : b->start_anchor.x,
                z = p < b->post_count ? b->posts[p].x : b->end_anchor.x;
         if (z - a <= CS_MAX_SPAN) continue;
-        const cs_node *place = p == 0               ? at(start, "x")
-                               : p == b->post_count ? at(end, "x")
-                                                    : l->post_origin[p];
+        const cs_node *place = p == 0 ? blamed(at(start, "x"), post_position(l->post_origin[0]))
+                               : p == b->post_count
+                                   ? blamed(at(end, "x"), post_position(l->post_origin[p - 1]))
+                                   : l->post_origin[p];
         char span[80], from[80], to[80], most[80];
         const char *given = place->text ? place->text : "";
         cs_units_show(l->units, given, CS_Q_LENGTH, z - a, span, sizeof span);
@@ -571,12 +585,12 @@ static void check_barrier(cs_loader *l, const cs_node *barrier, const cs_barrier
         break;
     }
     if (b->start_anchor.x >= first->x)
-        cs_err_node(l, at(start, "x"), 0,
+        cs_err_node(l, blamed(at(start, "x"), post_position(l->post_origin[0])), 0,
                     "the start anchor (x = %g m) is inside the barrier (expected it before "
                     "the first post, x = %g m)",
                     b->start_anchor.x, first->x);
     if (b->end_anchor.x <= last->x)
-        cs_err_node(l, at(end, "x"), 0,
+        cs_err_node(l, blamed(at(end, "x"), post_position(l->post_origin[b->post_count - 1])), 0,
                     "the end anchor (x = %g m) is inside the barrier (expected it after the "
                     "last post, x = %g m)",
                     b->end_anchor.x, last->x);
@@ -593,10 +607,16 @@ static double leading_corner_x(const cs_scenario_def *s, double width) {
     return cos(s->angle) >= 0.0 ? s->impact_x - half : s->impact_x + half;
 }
 
+/* The x of the anchor at the end of the barrier that x is beyond, for a check of where the impact falls:
+ * blamed() names a --set of it. */
+static const cs_node *anchor_x(const cs_loader *l, const cs_barrier_def *b, double x) {
+    return cs_node_get(cs_node_get(l->anchors_node, x <= b->start_anchor.x ? "start" : "end"), "x");
+}
+
 static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_def *s, const cs_barrier_def *b,
                            const cs_vehicle_def *v) {
     if (b && (s->impact_x <= b->start_anchor.x || s->impact_x >= b->end_anchor.x))
-        cs_err_node(l, at(sc, "impact_x"), 0,
+        cs_err_node(l, blamed(at(sc, "impact_x"), anchor_x(l, b, s->impact_x)), 0,
                     "the impact point (%g m) is outside the barrier (expected between "
                     "the anchors, %g m to %g m)",
                     s->impact_x, b->start_anchor.x, b->end_anchor.x);
@@ -604,7 +624,7 @@ static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_de
         double corner = leading_corner_x(s, v->front_width);
         if (corner <= b->start_anchor.x || corner >= b->end_anchor.x)
             cs_err_node(
-                l, at(sc, at(sc, "angle") ? "angle" : "impact_x"), 0,
+                l, blamed(at(sc, at(sc, "angle") ? "angle" : "impact_x"), anchor_x(l, b, corner)), 0,
                 "at %g deg the vehicle's leading front corner meets the cable line at x = %.2f m, "
                 "%.2f m before the face's centre, outside the barrier (%.2f m to %.2f m): the vehicle "
                 "would pass the barrier's end, not strike it (expected that corner between the "
