@@ -370,7 +370,9 @@ static int begin(cs_outdir *out, const char *name, char *why, size_t why_size) {
 }
 
 /* The stream of an output file: its descriptor's writes, each error's errno kept (the first) so that the
- * file's end says why, whatever a writer did with errno since. */
+ * file's end says why, whatever a writer did with errno since. On an error it returns what it wrote, 0 if
+ * nothing: fopencookie(3) takes no negative count (glibc then counts -1 byte written and reads past the
+ * caller's buffer). */
 static ssize_t stream_write(void *cookie, const char *buf, size_t size) {
     int *c = cookie; /* {fd, first errno} */
     size_t done = 0;
@@ -379,7 +381,7 @@ static ssize_t stream_write(void *cookie, const char *buf, size_t size) {
         if (n < 0 && errno == EINTR) continue;
         if (n < 0) {
             if (!c[1]) c[1] = errno;
-            return done ? (ssize_t)done : -1;
+            return (ssize_t)done;
         }
         done += (size_t)n;
     }
