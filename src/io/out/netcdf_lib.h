@@ -1,31 +1,39 @@
 /* SPDX-License-Identifier: MIT */
-/* netCDF, loaded when a sweep first writes runs.nc. Linked into the command, libnetcdf would bring HDF5,
- * curl, TLS and Kerberos with it: 37 of the 46 shared objects a process of cablesim maps, loaded and
- * relocated at every start, about half of a whole run's time, for a file only a sweep writes. */
+/* netCDF, loaded when a sweep first writes runs.nc (dynlib.h): include this in place of <netcdf.h>, call
+ * cs_netcdf_load, then nc_* as usual. */
 #ifndef CS_IO_NETCDF_LIB_H
 #define CS_IO_NETCDF_LIB_H
 
 #include <netcdf.h>
-#include <stddef.h>
 
-/* The netCDF functions runs.nc needs, as the library declares them. */
-typedef struct cs_netcdf {
-    __typeof__(nc_create) *create;
-    __typeof__(nc_def_dim) *def_dim;
-    __typeof__(nc_def_var) *def_var;
-    __typeof__(nc_put_att_text) *put_att_text;
-    __typeof__(nc_put_att_int) *put_att_int;
-    __typeof__(nc_put_att_double) *put_att_double;
-    __typeof__(nc_enddef) *enddef;
-    __typeof__(nc_put_var_text) *put_var_text;
-    __typeof__(nc_put_var_int) *put_var_int;
-    __typeof__(nc_put_var_double) *put_var_double;
-    __typeof__(nc_close) *close;
-    __typeof__(nc_abort) *abort;
-    __typeof__(nc_strerror) *strerror;
-} cs_netcdf;
+#include "dynlib.h"
 
-/* The library's functions, loaded once (thread-safe); NULL with the reason in why if it cannot be. */
-const cs_netcdf *cs_netcdf_load(char *why, size_t why_size);
+#define CS_NETCDF_FUNCTIONS(X)                                                                               \
+    X(nc_create)                                                                                             \
+    X(nc_def_dim) X(nc_def_var) X(nc_put_att_text) X(nc_put_att_int) X(nc_put_att_double) X(nc_enddef)       \
+        X(nc_put_var_text) X(nc_put_var_int) X(nc_put_var_double) X(nc_close) X(nc_abort) X(nc_strerror)
+
+typedef struct cs_netcdf_lib {
+    CS_NETCDF_FUNCTIONS(CS_DYNLIB_FIELD)
+} cs_netcdf_lib;
+
+extern cs_netcdf_lib cs_netcdf;
+
+/* netCDF's functions, loaded once (thread-safe): 0; -1 with why. */
+int cs_netcdf_load(char *why, size_t why_size);
+
+#define nc_create (cs_netcdf.nc_create)
+#define nc_def_dim (cs_netcdf.nc_def_dim)
+#define nc_def_var (cs_netcdf.nc_def_var)
+#define nc_put_att_text (cs_netcdf.nc_put_att_text)
+#define nc_put_att_int (cs_netcdf.nc_put_att_int)
+#define nc_put_att_double (cs_netcdf.nc_put_att_double)
+#define nc_enddef (cs_netcdf.nc_enddef)
+#define nc_put_var_text (cs_netcdf.nc_put_var_text)
+#define nc_put_var_int (cs_netcdf.nc_put_var_int)
+#define nc_put_var_double (cs_netcdf.nc_put_var_double)
+#define nc_close (cs_netcdf.nc_close)
+#define nc_abort (cs_netcdf.nc_abort)
+#define nc_strerror (cs_netcdf.nc_strerror)
 
 #endif

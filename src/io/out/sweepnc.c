@@ -25,7 +25,6 @@ typedef struct ncvar {
 
 /* The file being written, and its first failure (later calls are skipped). */
 typedef struct ncfile {
-    const cs_netcdf *nc;
     int id, status;
     char doing[NC_MAX_NAME + 32];
 } ncfile;
@@ -40,7 +39,7 @@ static int check(ncfile *f, int status, const char *doing, const char *name) {
 
 static void text_att(ncfile *f, int varid, const char *name, const char *value) {
     if (f->status == NC_NOERR)
-        check(f, f->nc->put_att_text(f->id, varid, name, strlen(value), value), "writing attribute", name);
+        check(f, nc_put_att_text(f->id, varid, name, strlen(value), value), "writing attribute", name);
 }
 
 void cs_sweep_name(const char *path, char *name, size_t size) {
@@ -76,10 +75,10 @@ static void define(ncfile *f, ncvar *v, int run_dim) {
         char dim[NC_MAX_NAME + 1];
         int len = snprintf(dim, sizeof dim, "%s_strlen", v->name); /* its length's dimension */
         if (!check(f, len < (int)sizeof dim ? NC_NOERR : NC_EMAXNAME, "naming", v->name)) return;
-        if (!check(f, f->nc->def_dim(f->id, dim, v->width, &dims[1]), "defining", dim)) return;
+        if (!check(f, nc_def_dim(f->id, dim, v->width, &dims[1]), "defining", dim)) return;
     }
     nc_type type = v->kind == CS_COLUMN_TEXT ? NC_CHAR : v->kind == CS_COLUMN_COUNT ? NC_INT : NC_DOUBLE;
-    if (!check(f, f->nc->def_var(f->id, v->name, type, v->kind == CS_COLUMN_TEXT ? 2 : 1, dims, &v->id),
+    if (!check(f, nc_def_var(f->id, v->name, type, v->kind == CS_COLUMN_TEXT ? 2 : 1, dims, &v->id),
                "defining", v->name))
         return;
     text_att(f, v->id, "long_name", v->in ? v->in->path : v->col ? v->col->long_name : "run index");
@@ -93,8 +92,8 @@ static void define(ncfile *f, ncvar *v, int run_dim) {
     static const double fill_double = NC_FILL_DOUBLE;
     static const int fill_int = NC_FILL_INT;
     check(f,
-          type == NC_INT ? f->nc->put_att_int(f->id, v->id, "_FillValue", NC_INT, 1, &fill_int)
-                         : f->nc->put_att_double(f->id, v->id, "_FillValue", NC_DOUBLE, 1, &fill_double),
+          type == NC_INT ? nc_put_att_int(f->id, v->id, "_FillValue", NC_INT, 1, &fill_int)
+                         : nc_put_att_double(f->id, v->id, "_FillValue", NC_DOUBLE, 1, &fill_double),
           "writing _FillValue of", v->name);
 }
 
@@ -117,9 +116,9 @@ static void put(ncfile *f, const ncvar *v, const double *x, int k, const cs_swee
         else
             ((double *)data)[i] = isfinite(d) ? d : NC_FILL_DOUBLE;
     }
-    int status = v->kind == CS_COLUMN_TEXT    ? f->nc->put_var_text(f->id, v->id, data)
-                 : v->kind == CS_COLUMN_COUNT ? f->nc->put_var_int(f->id, v->id, data)
-                                              : f->nc->put_var_double(f->id, v->id, data);
+    int status = v->kind == CS_COLUMN_TEXT    ? nc_put_var_text(f->id, v->id, data)
+                 : v->kind == CS_COLUMN_COUNT ? nc_put_var_int(f->id, v->id, data)
+                                              : nc_put_var_double(f->id, v->id, data);
     check(f, status, "writing", v->name);
     free(data);
 }
@@ -151,10 +150,10 @@ int cs_sweep_write_netcdf(const char *path, const cs_sweep_spec *s, const double
             if (len > vars[m].width) vars[m].width = len;
         }
     }
-    ncfile f = {cs_netcdf_load(why, why_size), 0, NC_NOERR, ""};
-    if (!f.nc) return -1;
-    if (!check(&f, f.nc->create(path, NC_CLOBBER | NC_64BIT_OFFSET, &f.id), "creating", "the file")) {
-        snprintf(why, why_size, "%s: %s", f.doing, f.nc->strerror(f.status));
+    if (cs_netcdf_load(why, why_size) != 0) return -1;
+    ncfile f = {0, NC_NOERR, ""};
+    if (!check(&f, nc_create(path, NC_CLOBBER | NC_64BIT_OFFSET, &f.id), "creating", "the file")) {
+        snprintf(why, why_size, "%s: %s", f.doing, nc_strerror(f.status));
         return -1;
     }
     char title[1200], seed[24];
@@ -170,15 +169,15 @@ int cs_sweep_write_netcdf(const char *path, const cs_sweep_spec *s, const double
     text_att(&f, NC_GLOBAL, "seed", seed);
     int runs = (int)n, run_dim = -1;
     if (f.status == NC_NOERR)
-        check(&f, f.nc->put_att_int(f.id, NC_GLOBAL, "runs", NC_INT, 1, &runs), "writing attribute", "runs");
-    if (f.status == NC_NOERR) check(&f, f.nc->def_dim(f.id, "run", (size_t)n, &run_dim), "defining", "run");
+        check(&f, nc_put_att_int(f.id, NC_GLOBAL, "runs", NC_INT, 1, &runs), "writing attribute", "runs");
+    if (f.status == NC_NOERR) check(&f, nc_def_dim(f.id, "run", (size_t)n, &run_dim), "defining", "run");
     for (int m = 0; m < count && f.status == NC_NOERR; m++)
         define(&f, &vars[m], run_dim);
-    if (f.status == NC_NOERR) check(&f, f.nc->enddef(f.id), "defining", "the variables");
+    if (f.status == NC_NOERR) check(&f, nc_enddef(f.id), "defining", "the variables");
     for (int m = 0; m < count && f.status == NC_NOERR; m++)
         put(&f, &vars[m], x, k, r, n);
-    if (f.status == NC_NOERR && check(&f, f.nc->close(f.id), "closing", "the file")) return 0;
-    if (f.status != NC_NOERR) f.nc->abort(f.id); /* the caller removes what is left */
-    snprintf(why, why_size, "%s: %s", f.doing, f.nc->strerror(f.status));
+    if (f.status == NC_NOERR && check(&f, nc_close(f.id), "closing", "the file")) return 0;
+    if (f.status != NC_NOERR) nc_abort(f.id); /* the caller removes what is left */
+    snprintf(why, why_size, "%s: %s", f.doing, nc_strerror(f.status));
     return -1;
 }
