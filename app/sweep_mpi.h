@@ -6,10 +6,7 @@
 
 #include <pthread.h>
 
-#include "study/sweep.h"
-
-/* What rank 0 does with a finished run i of any rank (its journal row and its result). */
-typedef void cs_sweep_take(void *ctx, long i, const cs_sweep_result *r);
+#include "study/sweepstudy.h"
 
 typedef struct cs_sweep_receiver {
     pthread_t thread;
