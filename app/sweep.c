@@ -217,49 +217,6 @@ static void omp_parallel(int threads, void (*worker)(void *arg), void *arg) {
     worker(arg);
 }
 
-#ifdef CS_MPI
-/* The ranks' hooks of the study (study/sweepstudy.h) on MPI_COMM_WORLD. */
-static cs_sweep_receiver receiver;
-
-static void mpi_share(void *ctx, void *data, long bytes) {
-    (void)ctx;
-    MPI_Bcast(data, (int)bytes, MPI_BYTE, 0, MPI_COMM_WORLD);
-}
-
-static int mpi_largest(void *ctx, int v) {
-    (void)ctx;
-    MPI_Allreduce(MPI_IN_PLACE, &v, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-    return v;
-}
-
-static int mpi_receive_start(void *ctx, cs_sweep_take *take, void *take_ctx) {
-    int size;
-    (void)ctx;
-    MPI_Comm_size(MPI_COMM_WORLD, &size);
-    return cs_sweep_receive_start(&receiver, size, take, take_ctx);
-}
-
-static void mpi_receive_end(void *ctx) {
-    (void)ctx;
-    cs_sweep_receive_end(&receiver);
-}
-
-static void mpi_send_run(void *ctx, long i, const cs_sweep_result *r) {
-    (void)ctx;
-    cs_sweep_send_run(i, r);
-}
-
-static void mpi_send_done(void *ctx) {
-    (void)ctx;
-    cs_sweep_send_done();
-}
-
-static void mpi_abort(void *ctx, int status) {
-    (void)ctx;
-    MPI_Abort(MPI_COMM_WORLD, status);
-}
-#endif
-
 int cs_sweep_command(int argc, char **argv) {
     cs_sweep_ranks ranks = {
         .rank = 0, .size = 1, .local = 1, .threads = thread_count, .parallel = omp_parallel};
@@ -281,9 +238,7 @@ int cs_sweep_command(int argc, char **argv) {
     MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, ranks.rank, MPI_INFO_NULL, &node);
     MPI_Comm_size(node, &ranks.local);
     MPI_Comm_free(&node);
-    ranks.share = mpi_share, ranks.largest = mpi_largest, ranks.receive_start = mpi_receive_start;
-    ranks.receive_end = mpi_receive_end, ranks.send_run = mpi_send_run, ranks.send_done = mpi_send_done;
-    ranks.abort = mpi_abort;
+    cs_sweep_mpi_hooks(&ranks);
 #else
     const char *world = getenv("OMPI_COMM_WORLD_SIZE");
     if (!world) world = getenv("PMI_SIZE");
