@@ -312,6 +312,7 @@ int cs_sweep_study_run(cs_sweep_options *o, const char *command, const cs_sweep_
     int rank = ranks->rank, size = ranks->size, rc = 0;
     static cs_sweep_resumed was;
     char as_given[PATH_MAX] = "", cwd[PATH_MAX] = "";
+    memset(&was, 0, sizeof was); /* nothing of an earlier study's */
     if (!getcwd(cwd, sizeof cwd)) cwd[0] = '\0';
     if (!o->resume) snprintf(as_given, sizeof as_given, "%s", o->spec);
     if (o->resume) {
