@@ -6,6 +6,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "plot.h"
 #include "cablesim/units.h"
+#include "out/cairo_lib.h"
 #include "out/htmltext.h"
 
 #include <math.h>

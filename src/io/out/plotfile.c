@@ -9,9 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include <cairo-pdf.h>
-#include <cairo-svg.h>
-#include <fontconfig/fontconfig.h>
+#include "cairo_lib.h"
 
 static cairo_status_t to_file(void *closure, const unsigned char *data, unsigned int length) {
     return fwrite(data, 1, length, closure) == length ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
@@ -33,6 +31,7 @@ static int write_svg(FILE *f, const char *svg, size_t svg_size, const char *text
 /* Draw on a surface of format and write it to f; f NULL: an image, written nowhere, traced into log. */
 static int plot_write(FILE *f, cs_plot_format format, double width, double height, cs_plot_draw_fn draw,
                       const void *user, cs_plot_log *log, char *why, size_t why_size) {
+    if (cs_cairo_load(why, why_size) != 0) return -1;
     cairo_surface_t *s;
     char *svg = NULL, *texts = NULL;
     size_t svg_size = 0, texts_size = 0;
@@ -114,6 +113,7 @@ int cs_plot_save(const char *path, double width, double height, cs_plot_draw_fn 
 }
 
 void cs_plot_release(void) {
+    if (!cs_cairo_loaded()) return;
     cairo_debug_reset_static_data();
     FcFini();
 }

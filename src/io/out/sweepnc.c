@@ -6,10 +6,10 @@
  * times or library state, so the same results give the same bytes, as runs.csv does. */
 #include <ctype.h>
 #include <math.h>
-#include <netcdf.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "netcdf_lib.h"
 #include "sweepout.h"
 
 /* A variable of runs.nc: a varied input (in), a result column (col), or, with neither, the run index. */
@@ -150,6 +150,7 @@ int cs_sweep_write_netcdf(const char *path, const cs_sweep_spec *s, const double
             if (len > vars[m].width) vars[m].width = len;
         }
     }
+    if (cs_netcdf_load(why, why_size) != 0) return -1;
     ncfile f = {0, NC_NOERR, ""};
     if (!check(&f, nc_create(path, NC_CLOBBER | NC_64BIT_OFFSET, &f.id), "creating", "the file")) {
         snprintf(why, why_size, "%s: %s", f.doing, nc_strerror(f.status));

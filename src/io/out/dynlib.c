@@ -1,0 +1,27 @@
+/* SPDX-License-Identifier: MIT */
+/* A shared object's functions by name (dynlib.h). */
+#include "dynlib.h"
+
+#include <dlfcn.h>
+#include <stdio.h>
+#include <string.h>
+
+int cs_dynlib_bind(const char *what, const char *soname, const char *const *names, void *table, int n,
+                   char *why, size_t why_size) {
+    void *h = dlopen(soname, RTLD_NOW | RTLD_LOCAL);
+    if (!h) {
+        snprintf(why, why_size, "%s (%s) could not be loaded: %s", what, soname, dlerror());
+        return -1;
+    }
+    for (int i = 0; i < n; i++) {
+        void *sym = dlsym(h, names[i]);
+        if (!sym) {
+            snprintf(why, why_size, "%s (%s) has no %s", what, soname, names[i]);
+            dlclose(h);
+            return -1;
+        }
+        /* POSIX: dlsym's object pointer converts to the function's; the table's fields are such pointers */
+        memcpy((char *)table + (size_t)i * sizeof sym, &sym, sizeof sym);
+    }
+    return 0;
+}
