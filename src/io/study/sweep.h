@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Studies over a model's values: the runs' inputs (full-factorial grids, Monte Carlo, Latin hypercube)
  * from a sweep spec (load/sweepspec.h), one run and its result, and the statistics of the results
- * (Wilson intervals, Spearman rank correlation). No threads, MPI or output files here: app/sweep.c runs
- * the runs, out/sweepout.h writes them.
+ * (Wilson intervals, Spearman rank correlation). No threads, MPI or output files here: sweepstudy.h runs
+ * a whole study, out/sweepout.h writes its outputs.
  *
  * Every input of run i comes from (seed, i, variable) alone through a counter-based generator, so the
  * samples do not depend on how the runs are shared among threads or ranks. */

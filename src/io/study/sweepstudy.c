@@ -1,0 +1,493 @@
+/* SPDX-License-Identifier: MIT */
+/* A whole sweep (sweepstudy.h): the spec with the command line's changes, the output folder, the journal
+ * of the runs, the runs shared among ranks and threads with their progress, and the outputs. */
+#include <limits.h>
+#include <pthread.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "cablesim/cablesim.h"
+#include "out/htmltext.h"
+#include "out/outfile.h"
+#include "out/plot.h"
+#include "out/studyreport.h"
+#include "out/sweepout.h"
+#include "out/writers.h"
+#include "study/sweepresume.h"
+#include "study/sweepstudy.h"
+
+enum { EXIT_RUN = CS_SWEEP_EXIT_RUN, EXIT_BAD = CS_SWEEP_EXIT_USAGE };
+
+/* ---- the spec and the folder ---- */
+
+cs_sweep_spec *cs_sweep_study_spec(const cs_sweep_options *o, int loud) {
+    char why[256];
+    cs_units *units = cs_units_create(why, sizeof why);
+    if (!units) {
+        if (loud) fprintf(stderr, "cablesim sweep: %s\n", why);
+        return NULL;
+    }
+    cs_sweep_spec *spec = cs_sweep_spec_read(o->spec, units);
+    cs_units_free(units);
+    if (!spec) {
+        if (loud) fprintf(stderr, "cablesim sweep: out of memory\n");
+        return NULL;
+    }
+    cs_sweep_plots_check(spec);
+    cs_sweep_spec_confine(spec, o->allow, o->allow_count);
+    for (int i = 0; i < o->set_count; i++)
+        cs_sweep_spec_add_set(spec, o->sets[i]);
+    spec->netcdf |= o->netcdf;
+    if (o->runs > 0 && spec->method == CS_SWEEP_GRID)
+        cs_sweep_error(spec, 0, 0, "--runs: a grid's runs are every combination of its levels");
+    else if (o->runs > 0)
+        spec->runs = o->runs;
+    if (o->seed) {
+        char *end;
+        unsigned long long s = strtoull(o->seed, &end, 10);
+        if (*end || end == o->seed || o->seed[0] == '-')
+            cs_sweep_error(spec, 0, 0, "--seed %s: expected a whole number from 0 to 2^64 - 1", o->seed);
+        spec->seed = (uint64_t)s;
+    }
+    return spec;
+}
+
+void cs_sweep_print_errors(const cs_sweep_spec *spec) {
+    for (int i = 0; i < spec->error_count; i++)
+        cs_term_text(stderr, spec->errors[i]), fputc('\n', stderr);
+    fprintf(stderr, "cablesim sweep: %s: %d problem%s, nothing run\n", spec->file, spec->error_count,
+            spec->error_count == 1 ? "" : "s");
+}
+
+/* The sweep's output folder: DIR, or results/<the spec's name>. */
+static void out_dir_of(const cs_sweep_options *o, char *dir, size_t size) {
+    if (o->out_dir) {
+        snprintf(dir, size, "%s", o->out_dir);
+    } else {
+        const char *base = strrchr(o->spec, '/');
+        base = base ? base + 1 : o->spec;
+        int n = (int)strcspn(base, ".");
+        snprintf(dir, size, "results/%.*s", n ? n : 5, n ? base : "study"); /* ".x.yaml": results/study */
+    }
+}
+
+/* ---- progress: a bar on a terminal, plain lines every few seconds otherwise ---- */
+
+static double now(void) {
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+typedef struct progress {
+    int on, tty, ranks;
+    long done, total;
+    double start, last;
+} progress;
+
+static void fmt_time(double s, char *buf, size_t size) {
+    long t = (long)(s + 0.5);
+    if (t >= 3600)
+        snprintf(buf, size, "%ldh%02ldm", t / 3600, t / 60 % 60);
+    else if (t >= 60)
+        snprintf(buf, size, "%ldm%02lds", t / 60, t % 60);
+    else
+        snprintf(buf, size, "%lds", t);
+}
+
+static void progress_show(progress *p, int final) {
+    double t = now(), elapsed = t - p->start;
+    if (!p->on || (!final && t - p->last < (p->tty ? 0.25 : 10.0))) return;
+    p->last = t;
+    double rate = elapsed > 0 ? (double)p->done / elapsed : 0;
+    char left[32] = "?";
+    if (rate > 0) fmt_time((double)(p->total - p->done) / rate, left, sizeof left);
+    char who[48] = "";
+    if (p->ranks > 1) snprintf(who, sizeof who, " on rank 0 (of %d)", p->ranks);
+    if (p->tty) {
+        char bar[31];
+        int full = p->total ? (int)(30 * p->done / p->total) : 30;
+        for (int i = 0; i < 30; i++)
+            bar[i] = i < full ? '#' : '-';
+        bar[30] = '\0';
+        fprintf(stderr, "\r[%s] %ld/%ld runs%s  %.2f runs/s  %s left   ", bar, p->done, p->total, who, rate,
+                left);
+        if (final) fputc('\n', stderr);
+    } else {
+        fprintf(stderr, "sweep: %ld/%ld runs%s (%.0f%%), %.2f runs/s, about %s left\n", p->done, p->total,
+                who, p->total ? 100.0 * (double)p->done / (double)p->total : 100.0, rate, left);
+    }
+    fflush(stderr);
+}
+
+/* ---- the journal and the outputs ---- */
+
+/* The journal of the runs (DIR/.cablesim-journal): the study's record and the runs done (a resumed
+ * sweep's), before any run. */
+static int start_journal(cs_outdir *out, const cs_sweep_spec *spec, const double *x,
+                         const cs_sweep_result *all, long n, char *why, size_t why_size) {
+    char *text = NULL;
+    size_t length = 0;
+    FILE *f = open_memstream(&text, &length);
+    int rc = f ? cs_sweep_write_journal_start(f, spec, x, all, n, why, why_size) : -1;
+    if (f) fclose(f);
+    if (rc != 0 || !text) snprintf(why, why_size, "out of memory for the journal");
+    if (rc == 0 && text) rc = cs_out_journal_start(out, text, length, why, why_size);
+    free(text);
+    return rc;
+}
+
+/* Append a finished run to the journal (append and fsync: a kill -9 after it keeps it). A journal that
+ * cannot be written is said once; the runs go on, and the outputs at the end hold them. */
+static void journal_run(cs_outdir *out, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
+                        long i) {
+    static int failed;
+    char *text = NULL, why[1600];
+    size_t length = 0;
+    FILE *f = failed ? NULL : open_memstream(&text, &length);
+    if (!f) return;
+    cs_sweep_write_run_row(f, spec, x, r, i);
+    fclose(f);
+    if (cs_out_journal_add(out, text, length, why, sizeof why) != 0) {
+        failed = 1;
+        fprintf(stderr, "cablesim sweep: %s: the runs from now on are not journalled (a kill loses them)\n",
+                why);
+    }
+    free(text);
+}
+
+/* Rank 0's record of a finished run, its own or another rank's: its result and its journal row. An MPI
+ * sweep's receiver thread takes the other ranks' runs beside rank 0's threads, hence the lock. */
+typedef struct taker {
+    cs_outdir *out;
+    const cs_sweep_spec *spec;
+    const double *x;
+    cs_sweep_result *all;
+} taker;
+
+static void take_run(void *ctx, long i, const cs_sweep_result *r) {
+    static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
+    taker *t = ctx;
+    pthread_mutex_lock(&lock);
+    t->all[i] = *r;
+    journal_run(t->out, t->spec, t->x, r, i);
+    pthread_mutex_unlock(&lock);
+}
+
+static const char *signal_name(int sig) {
+    return sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "a signal";
+}
+
+/* runs.csv, summary.md, summary.json, then the spec's plots (files 3 on), the study's own figures and
+ * report.html, and runs.nc (not for a partial sweep), begun on out (opened before the runs) and renamed
+ * together; nothing is left if one fails, and an earlier study's files (its manifest's) that this one
+ * does not write are removed. */
+static int write_all(cs_outdir *out, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
+                     long n, int partial) {
+    char why[512] = "";
+    int rc = 0;
+    static const char *const names[] = {"runs.csv", "summary.md", "summary.json"};
+    if (rc == 0) rc = cs_out_subdir(out, "plots", why, sizeof why);
+    int study = 3 + spec->plot_count; /* then the study's figures, then its page */
+    for (int k = 0; rc == 0 && k < study + CS_STUDY_FIGURES + 1; k++) {
+        char name[256];
+        if (k < 3)
+            snprintf(name, sizeof name, "%s", names[k]);
+        else if (k < study)
+            cs_sweep_plot_file(spec, k - 3, name, sizeof name);
+        else if (k < study + CS_STUDY_FIGURES) {
+            if (!cs_study_figure_shown(k - study, spec, x, r, n)) continue;
+            cs_study_figure_file(k - study, name, sizeof name);
+        } else
+            snprintf(name, sizeof name, "report.html");
+        FILE *f = cs_out_begin(out, name, why, sizeof why);
+        if (!f) {
+            rc = -1;
+            break;
+        }
+        rc = k == 0      ? cs_sweep_write_runs(f, spec, x, r, n, why, sizeof why)
+             : k == 1    ? cs_sweep_write_summary_md(f, spec, x, r, n, why, sizeof why)
+             : k == 2    ? cs_sweep_write_summary_json(f, spec, x, r, n, why, sizeof why)
+             : k < study ? cs_sweep_write_plot(f, spec, k - 3, x, r, n, why, sizeof why)
+             : k < study + CS_STUDY_FIGURES
+                 ? cs_study_write_figure(f, CS_PLOT_PNG, k - study, spec, x, r, n, why, sizeof why)
+                 : cs_study_write_page(f, spec, x, r, n, why, sizeof why);
+        rc = cs_out_finish(out, f, rc, why, sizeof why);
+    }
+    cs_plot_release(); /* after the last plot */
+    if (rc == 0 && spec->netcdf && !partial) {
+        char path[1200], nc_why[200];
+        rc = cs_out_begin_path(out, "runs.nc", path, sizeof path, why, sizeof why);
+        if (rc == 0 && (rc = cs_sweep_write_netcdf(path, spec, x, r, n, nc_why, sizeof nc_why)) != 0)
+            snprintf(why, sizeof why, "%.280s/runs.nc: %s", out->dir, nc_why);
+        if (rc == 0) rc = cs_out_end_path(out, why, sizeof why);
+    }
+    if (rc == 0) rc = cs_out_commit(out, why, sizeof why);
+    if (rc != 0) {
+        cs_out_abort(out);
+        fprintf(stderr,
+                "cablesim sweep: nothing written: %s; the runs done are kept in %s/%s: `cablesim sweep "
+                "--resume %s` writes the study once that is put right\n",
+                why, out->dir, CS_OUT_JOURNAL, out->dir);
+    }
+    return rc;
+}
+
+/* ---- stopping on a signal ---- */
+
+static volatile sig_atomic_t stop_signal = 0;
+
+/* The first SIGINT or SIGTERM asks the sweep to stop starting runs; a second one does what it does by
+ * default. */
+static void on_signal(int sig) {
+    if (stop_signal) {
+        signal(sig, SIG_DFL);
+        raise(sig); /* delivered when this handler returns */
+        return;
+    }
+    stop_signal = sig;
+}
+
+static void catch_signals(int on) {
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on ? on_signal : SIG_DFL;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+}
+
+/* ---- the runs ---- */
+
+/* The runs of this process, todo[rank + m * size] for m < local_n, shared among its threads one at a time
+ * (the next m to start under the lock): each thread runs on a loader of its own. */
+typedef struct runner {
+    const cs_sweep_spec *spec;
+    const double *x;
+    const long *todo;
+    long local_n, next, stop_after;
+    const cs_sweep_ranks *ranks;
+    cs_sweep_result *mine;
+    taker *t;
+    progress *p;
+    pthread_mutex_t lock;
+} runner;
+
+static void run_worker(void *arg) {
+    runner *w = arg;
+    int rank = w->ranks->rank, size = w->ranks->size;
+    char why[256];
+    cs_loader *loader = cs_sweep_loader(w->spec, why, sizeof why); /* one per thread (NULL: one per run) */
+    for (;;) {
+        pthread_mutex_lock(&w->lock);
+        long m = w->next++;
+        pthread_mutex_unlock(&w->lock);
+        if (m >= w->local_n || stop_signal) break; /* stopped: start no other run */
+        long i = w->todo[rank + m * size];
+        cs_sweep_run(w->spec, &w->x[i * w->spec->var_count], loader, &w->mine[m]);
+        pthread_mutex_lock(&w->lock);
+        w->p->done++;
+        if (rank > 0 && w->ranks->send_run) w->ranks->send_run(w->ranks->ctx, i, &w->mine[m]);
+        if (rank == 0) take_run(w->t, i, &w->mine[m]);
+        progress_show(w->p, 0);
+        if (w->stop_after > 0 && w->p->done == w->stop_after) raise(SIGINT); /* CABLESIM_SWEEP_STOP_AFTER */
+        pthread_mutex_unlock(&w->lock);
+    }
+    cs_loader_free(loader);
+}
+
+static void share(const cs_sweep_ranks *ranks, void *data, long bytes) {
+    if (ranks->share) ranks->share(ranks->ctx, data, bytes);
+}
+
+static void abort_ranks(const cs_sweep_ranks *ranks, int status) {
+    if (ranks->abort) ranks->abort(ranks->ctx, status);
+}
+
+int cs_sweep_study_run(cs_sweep_options *o, const char *command, const cs_sweep_ranks *ranks) {
+    int rank = ranks->rank, size = ranks->size, rc = 0;
+    static cs_sweep_resumed was;
+    char as_given[PATH_MAX] = "", cwd[PATH_MAX] = "";
+    memset(&was, 0, sizeof was); /* nothing of an earlier study's */
+    if (!getcwd(cwd, sizeof cwd)) cwd[0] = '\0';
+    if (!o->resume) snprintf(as_given, sizeof as_given, "%s", o->spec);
+    if (o->resume) {
+        char why[1400];
+        if (cs_sweep_resume_read(o->resume, o, &was, why, sizeof why) != 0) {
+            if (rank == 0) fprintf(stderr, "cablesim sweep: --resume: %s\n", why);
+            rc = EXIT_BAD;
+        } else if (strcmp(was.cwd, cwd) == 0) {
+            snprintf(as_given, sizeof as_given, "%s", was.spec_as_given);
+        } else {
+            snprintf(as_given, sizeof as_given, "%s", o->spec);
+        }
+    }
+    cs_sweep_spec *spec = NULL;
+    double *x = NULL;
+    long n = 0;
+    if (rc == 0 && !(spec = cs_sweep_study_spec(o, rank == 0))) rc = EXIT_RUN;
+    if (rc == 0 && spec->error_count == 0 && !(x = cs_sweep_samples(spec, &n))) {
+        cs_sweep_error(spec, 0, 0, "out of memory for %ld runs", spec->runs);
+    }
+    if (rc == 0 && rank == 0 && spec->error_count == 0) cs_sweep_check(spec, x);
+    if (rc == 0 && spec->error_count) {
+        if (rank == 0) cs_sweep_print_errors(spec);
+        rc = EXIT_BAD;
+    }
+    /* rank 0: the output folder, checked before any run; --resume: the runs done */
+    char dir[1024] = "", *record = NULL;
+    cs_outdir out;
+    int out_open = 0;
+    cs_sweep_result *all = NULL;
+    long done = 0;
+    if (rc == 0 && rank == 0) {
+        char why[600];
+        out_dir_of(o, dir, sizeof dir);
+        spec->origin.command = command;
+        spec->origin.dir = dir;
+        spec->origin.resume = record = cs_sweep_resume_record(o, as_given, cwd);
+        spec->origin.has_model_hash = cs_sweep_model_hash(spec, &spec->origin.model_hash) == 0;
+        spec->origin.inputs_hash = cs_sweep_inputs_hash(spec, x, n);
+        all = calloc((size_t)(n > 0 ? n : 1), sizeof *all);
+        for (long i = 0; all && i < n; i++)
+            all[i].pending = 1;
+        if (!all || !record) {
+            fprintf(stderr, "cablesim sweep: out of memory for %ld results\n", n);
+            rc = EXIT_RUN;
+        } else if (o->resume && !was.partial) {
+            if (!o->quiet) printf("sweep: %s holds the whole study (%ld runs): nothing to run\n", dir, n);
+            rc = -1;
+        } else if (o->resume && (done = cs_sweep_resume_runs(dir, spec, &was, x, all, n)) < 0) {
+            rc = EXIT_BAD;
+        } else if (cs_out_open(&out, dir, o->force ? CS_OUT_FORCE : 0, why, sizeof why) != 0) {
+            fprintf(stderr, "cablesim sweep: nothing run: %s\n", why);
+            rc = EXIT_RUN;
+        } else if (out_open = 1, start_journal(&out, spec, x, all, n, why, sizeof why) != 0) {
+            fprintf(stderr, "cablesim sweep: nothing run: %s\n", why);
+            rc = EXIT_RUN;
+        }
+    }
+    /* the runs to do, the same list on every rank */
+    char *todo_mask = NULL;
+    long *todo = NULL, todo_n = 0;
+    share(ranks, &rc, sizeof rc); /* rank 0 checked the model and the folder */
+    share(ranks, &n, sizeof n);
+    if (rc == 0) {
+        todo_mask = malloc((size_t)(n > 0 ? n : 1));
+        todo = malloc((size_t)(n > 0 ? n : 1) * sizeof *todo);
+        if (!todo_mask || !todo) {
+            fprintf(stderr, "cablesim sweep: out of memory for %ld runs\n", n);
+            abort_ranks(ranks, EXIT_RUN);
+            rc = EXIT_RUN;
+        }
+        for (long i = 0; rc == 0 && rank == 0 && i < n; i++)
+            todo_mask[i] = (char)all[i].pending;
+        if (rc == 0) share(ranks, todo_mask, n);
+        for (long i = 0; rc == 0 && i < n; i++)
+            if (todo_mask[i]) todo[todo_n++] = i;
+    }
+    if (rc != 0) {
+        if (out_open) cs_out_abort(&out);
+        free(x), free(all), free(todo), free(todo_mask), free(record), free(was.journal);
+        cs_sweep_spec_free(spec);
+        return rc < 0 ? 0 : rc;
+    }
+    int threads = ranks->threads ? ranks->threads(o->threads, ranks->local) : 1;
+    long local_n = todo_n > rank ? (todo_n - rank + size - 1) / size : 0;
+    cs_sweep_result *mine = calloc((size_t)(local_n > 0 ? local_n : 1), sizeof *mine);
+    if (!mine) {
+        fprintf(stderr, "cablesim sweep: out of memory for %ld results\n", todo_n);
+        abort_ranks(ranks, EXIT_RUN);
+        return EXIT_RUN;
+    }
+    for (long m = 0; m < local_n; m++)
+        mine[m].pending = 1;
+    progress p = {rank == 0 && !o->quiet, isatty(STDERR_FILENO), size, 0, local_n, now(), now()};
+    if (rank == 0 && !o->quiet)
+        fprintf(stderr, "sweep: %ld runs of %s on %d rank%s x %d thread%s%s\n", todo_n, spec->model, size,
+                size == 1 ? "" : "s", threads, threads == 1 ? "" : "s",
+                o->resume ? " (the rest of a stopped study)" : "");
+    const char *stop_after_text = getenv("CABLESIM_SWEEP_STOP_AFTER");
+    stop_signal = 0;
+    catch_signals(1);
+    double start = now();
+    taker t = {&out, spec, x, all};
+    if (rank == 0 && size > 1 && ranks->receive_start &&
+        ranks->receive_start(ranks->ctx, take_run, &t) != 0) {
+        fprintf(stderr, "cablesim sweep: cannot start the thread that receives the other ranks' runs\n");
+        abort_ranks(ranks, EXIT_RUN);
+    }
+    runner w = {spec,
+                x,
+                todo,
+                local_n,
+                0,
+                stop_after_text ? strtol(stop_after_text, NULL, 10) : 0,
+                ranks,
+                mine,
+                &t,
+                &p,
+                PTHREAD_MUTEX_INITIALIZER};
+    if (ranks->parallel)
+        ranks->parallel(threads, run_worker, &w);
+    else
+        run_worker(&w);
+    catch_signals(0);
+    int stopped = stop_signal;
+    if (!stopped)
+        progress_show(&p, 1);
+    else if (p.on && p.tty)
+        fputc('\n', stderr);
+    if (rank == 0 && size > 1 && ranks->receive_end)
+        ranks->receive_end(ranks->ctx);
+    else if (rank > 0 && ranks->send_done)
+        ranks->send_done(ranks->ctx);
+    if (ranks->largest) stopped = ranks->largest(ranks->ctx, stopped);
+    double wall = now() - start;
+    if (rank == 0) {
+        long bad = 0, pending = 0;
+        for (long i = 0; i < n; i++) {
+            pending += all[i].pending;
+            bad += !all[i].pending && all[i].status != CS_RUN_OK;
+        }
+        spec->origin.stopped_by = pending ? signal_name(stopped) : NULL;
+        if (write_all(&out, spec, x, all, n, pending > 0) != 0) {
+            rc = EXIT_RUN;
+        } else if (pending) {
+            fprintf(stderr,
+                    "cablesim sweep: stopped by %s: %ld of %ld runs done, written to %s (partial); `cablesim "
+                    "sweep --resume %s` runs the other %ld\n",
+                    signal_name(stopped), n - pending, n, dir, dir, pending);
+            rc = 128 + (stopped ? stopped : SIGINT);
+        } else if (!o->quiet) {
+            printf("sweep: %ld runs in %.3f s (%.3f runs/s) on %d rank%s x %d thread%s; %ld did not run to "
+                   "the end\n",
+                   todo_n, wall, wall > 0 ? (double)todo_n / wall : 0, size, size == 1 ? "" : "s", threads,
+                   threads == 1 ? "" : "s", bad);
+            if (o->resume)
+                printf("sweep: %ld runs read back from %s/runs.csv, %ld run now\n", done, dir, todo_n);
+            printf("outputs: %s/{runs.csv,summary.md,summary.json,report.html,plots/study-*.png%s", dir,
+                   spec->netcdf ? ",runs.nc" : "");
+            for (int k = 0; k < spec->plot_count; k++) {
+                char file[256];
+                cs_sweep_plot_file(spec, k, file, sizeof file);
+                printf(",%s", file);
+            }
+            printf("}\n");
+        }
+    } else if (stopped) {
+        rc = 128 + stopped;
+    }
+    pthread_mutex_destroy(&w.lock);
+    free(mine);
+    free(all);
+    free(x);
+    free(todo), free(todo_mask), free(record), free(was.journal);
+    cs_sweep_spec_free(spec);
+    share(ranks, &rc, sizeof rc);
+    return rc;
+}
