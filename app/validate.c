@@ -86,10 +86,11 @@ static const char *const crash_names[CRASH] = {"aps1", "aps3", "aps4"};
 static const char *const road_names[ROAD] = {"rs1", "rs2", "rs3", "rs4", "rs5", "rs6"};
 
 static void collect(const cs_model *m, const cs_state *s, result *r) {
-    cs_state_summary(s, &r->sm);
+    r->sm.size = sizeof r->sm;
+    cs_state_summary(s, &r->sm, NULL);
     for (int a = 0; a < 2; a++) {
-        cs_anchor_view v;
-        cs_state_anchor(m, s, a, &v);
+        cs_anchor_view v = {.size = sizeof v};
+        cs_state_anchor(m, s, a, &v, NULL);
         r->slide[a] = v.rigid ? -1.0 : v.slide;
     }
     for (int c = 0; c < 2; c++)
@@ -99,7 +100,9 @@ static void collect(const cs_model *m, const cs_state *s, result *r) {
     r->post_failure = -1;
     r->released = 0;
     for (int i = 0; i < cs_state_event_count(s); i++) {
-        const cs_event *e = cs_state_event(s, i);
+        cs_event e_held = {.size = sizeof e_held};
+        cs_state_event(s, i, &e_held, NULL);
+        const cs_event *e = &e_held;
         r->released += e->type == CS_EVENT_CABLE_RELEASE;
         if (r->post_failure < 0 && (e->type == CS_EVENT_POST_ROTATION_LIMIT ||
                                     e->type == CS_EVENT_POST_PULLOUT || e->type == CS_EVENT_POST_SHEAR))
@@ -502,7 +505,7 @@ static void add_refinement(suite *s, int t, int k) {
         char set[96];
         snprintf(set, sizeof set, "scenario.%s=%s", refinements[t].setting, refinements[t].values[d]);
         const char *sets[] = {set, NULL};
-        cs_model_input in;
+        cs_model_input in = {.size = sizeof in};
         int rc = load_crash(s, k, sets, &in);
         size_t f = refinements[t].field;
         int same = rc == 0 && s->base_loaded[k] &&
@@ -613,7 +616,7 @@ static int add_inputs(suite *s, int k, int only, const double *u) {
         }
     }
     sets[n] = NULL;
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     int rc = load_crash(s, k, sets, &in);
     return add_loaded(s, rc, &in);
 }
@@ -838,7 +841,7 @@ static void add_readings(suite *s, int k) {
     for (int r = 0; r < READINGS; r++) {
         s->reading[k][r] = -1;
         if (!strstr(readings[r].tests, crash_names[k])) continue;
-        cs_model_input in;
+        cs_model_input in = {.size = sizeof in};
         int rc = load_crash(s, k, readings[r].sets, &in);
         if (rc == 0 && readings[r].no_rails) in.barrier.rail_count = 0;
         s->reading[k][r] = add_loaded(s, rc, &in);
@@ -946,7 +949,7 @@ static const struct {
 static void add_road(suite *s, int k) {
     char name[64];
     snprintf(name, sizeof name, "roadside/%s", road_names[k]);
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     s->road[k] = add_loaded(s, load_example(s, name, NULL, &in), &in);
     for (int r = 0; r < ROAD_READINGS; r++) {
         s->road_reading[k][r] = -1;
@@ -1021,7 +1024,7 @@ static void plan(suite *s, const char *only) {
     int crash = wanted(only, "crash"), convergence = wanted(only, "convergence"),
         sensitivity = wanted(only, "sensitivity"), reads = wanted(only, "readings");
     for (int k = 0; k < CRASH; k++) {
-        cs_model_input in;
+        cs_model_input in = {.size = sizeof in};
         int rc = crash || convergence || sensitivity || reads ? load_crash(s, k, NULL, &in) : -1;
         s->base_loaded[k] = rc == 0;
         if (rc == 0) s->base_scenario[k] = in.scenario;

@@ -554,8 +554,8 @@ static void cables_and_losses(jw *j, int *first, const cs_state *state, const cs
 int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *state, const cs_record *r,
                          const cs_run_info *info, char *why, size_t why_size) {
     jw j = {{f, 0, ""}, "", PAGE_DIGITS};
-    cs_summary s;
-    cs_state_summary(state, &s);
+    cs_summary s = {.size = sizeof s};
+    cs_state_summary(state, &s, NULL);
     const cs_scenario_def *sc = &in->scenario;
     const cs_vehicle_def *v = &in->vehicle;
     const cs_barrier_def *b = &in->barrier;
@@ -668,7 +668,9 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
     key(&j, &first, "events");
     fputc('[', f);
     for (int i = 0; i < cs_state_event_count(state); i++) {
-        const cs_event *e = cs_state_event(state, i);
+        cs_event e_held = {.size = sizeof e_held};
+        cs_state_event(state, i, &e_held, NULL);
+        const cs_event *e = &e_held;
         fprintf(f, "%s\n[", i ? "," : "");
         snprintf(j.what, sizeof j.what, "an event's time or value");
         num(&j, e->t);
