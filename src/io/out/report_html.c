@@ -664,7 +664,8 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
     num(&j, b->end_anchor.z);
     fputs("]]}", f);
     write_design(&j, &first, b);
-    /* events: [t, type, element kind, element, value (SI)], a termination event's cable end after */
+    /* events: [t, type, element kind, element, value (SI)], then a termination event's cable end, the
+     * cable a post let go and the post at whose hole a rope broke, as far as one of them is given */
     key(&j, &first, "events");
     fputc('[', f);
     for (int i = 0; i < cs_state_event_count(state); i++) {
@@ -680,8 +681,9 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
         cs_json_page_string(f, cs_element_kind_name(e->element_kind));
         fprintf(f, ",%d,", e->element);
         num(&j, e->value);
-        if (e->cable_end >= 0 || e->cable >= 0) fprintf(f, ",%d", e->cable_end);
-        if (e->cable >= 0) fprintf(f, ",%d", e->cable); /* the cable a post let go */
+        if (e->cable_end >= 0 || e->cable >= 0 || e->post >= 0) fprintf(f, ",%d", e->cable_end);
+        if (e->cable >= 0 || e->post >= 0) fprintf(f, ",%d", e->cable); /* the cable a post let go */
+        if (e->post >= 0) fprintf(f, ",%d", e->post); /* the post at whose hole a rope broke */
         fputc(']', f);
     }
     fputc(']', f);
