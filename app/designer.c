@@ -232,7 +232,7 @@ int cs_command_designer(int argc, char **argv) {
         }
     file = argc - 1 > optind ? argv[1 + optind] : default_model(l, buf, sizeof buf);
     int rc = CS_EXIT_USAGE;
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     cs_model *model = NULL;
     design d = {l, NULL, NULL, "", NULL};
     if (!file) {

@@ -323,8 +323,8 @@ static int run(const cs_model_input *in, cs_model *model, const options *o, cons
         fprintf(stderr, "cablesim: out of memory while recording, nothing written\n");
         cs_out_abort(&out);
     } else {
-        cs_summary sm;
-        cs_state_summary(state, &sm);
+        cs_summary sm = {.size = sizeof sm};
+        cs_state_summary(state, &sm, NULL);
         cs_run_info_rate(&info, in, &sm);
         info.occupant_at = o->occupant_at;
         memcpy(info.occupant_point, o->occupant_point, sizeof info.occupant_point);
@@ -435,7 +435,7 @@ int main(int argc, char **argv) {
     static char command[8192];
     cs_cli_command_line(argc, argv, command, sizeof command); /* as typed: getopt_long reorders argv */
     options o = {.overrides = &overrides};
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     cs_model *model = NULL;
     if (!is_run && !is_check)
         rc = list(l);

@@ -81,8 +81,8 @@ static int roadside_one(cs_loader *l, const cs_model_input *in, const cs_roadsid
         fprintf(stderr, "cablesim rate: test %s: %s\n", t->name,
                 err.message[0] ? err.message : "out of memory");
     } else {
-        cs_summary sm;
-        cs_state_summary(s, &sm);
+        cs_summary sm = {.size = sizeof sm};
+        cs_state_summary(s, &sm, NULL);
         cs_roadside_result r = cs_roadside_read(t, &sm);
         char exit[128] = "no exit";
         if (r.exit_speed_mps >= 0.0)
@@ -144,7 +144,7 @@ static int rate_roadside(cs_loader *l, const char *file, const char *standard, c
     if (n == 0 || (level && lv != 3 && lv != 4))
         return cs_cli_usage_error(
             &rate_cli, "%s", test ? "unknown test (3-10, 3-11, 4-10, 4-11 or 4-12)" : "--level takes 3 or 4");
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     if (cs_loader_load(l, file, &in) != 0) {
         cs_loader_print_errors(l, stderr);
         return 2;
@@ -186,8 +186,8 @@ static int rate_one(const cs_model_input *in, cs_standard std, const char *klass
     if (rc) {
         fprintf(stderr, "cablesim rate: %s at %d mph: %s\n", klass, mph, err.message);
     } else {
-        cs_summary sm;
-        cs_state_summary(s, &sm);
+        cs_summary sm = {.size = sizeof sm};
+        cs_state_summary(s, &sm, NULL);
         cs_rating_rules rules = cs_default_rating_rules();
         *out = cs_rate_run(std, klass, sc.speed, &sm, &in->vehicle, &rules);
         char pen[64];
@@ -233,7 +233,7 @@ static int rate_antiram(cs_loader *l, const char *file, cs_standard std, const c
     if (class_arg && cs_rating_class_parse(std, class_arg, klass, sizeof klass, &only_mph) != 0)
         return cs_cli_usage_error(&rate_cli, "--class %s: %s has no such class (expected one of %s)",
                                   class_arg, cs_standard_title(std), list);
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     if (cs_loader_load(l, file, &in) != 0) {
         cs_loader_print_errors(l, stderr);
         return CS_EXIT_USAGE;

@@ -59,7 +59,7 @@ int main(int argc, char **argv) {
         }
     }
     if (repeat < 1 || repeat > 1000) repeat = 1;
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     cs_model *m = NULL;
     if (cs_loader_load(l, argv[1], &in) != 0 || !(m = cs_loader_build(l, &in))) {
         cs_loader_print_errors(l, stderr);
@@ -75,7 +75,7 @@ int main(int argc, char **argv) {
         return 1;
     }
     double *times = malloc((size_t)repeat * sizeof *times), *cpus = malloc((size_t)repeat * sizeof *cpus);
-    cs_summary sum;
+    cs_summary sum = {.size = sizeof sum};
     for (int r = 0; r < repeat; r++) {
         cs_state_reset(m, s);
         double a = now(), c = cpu();
@@ -87,7 +87,7 @@ int main(int argc, char **argv) {
             return 1;
         }
     }
-    cs_state_summary(s, &sum);
+    cs_state_summary(s, &sum, NULL);
     qsort(times, (size_t)repeat, sizeof *times, by_value);
     qsort(cpus, (size_t)repeat, sizeof *cpus, by_value);
     double best = times[0], median = times[repeat / 2];

@@ -35,8 +35,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     cs_status st = cs_run(m, s, NULL, NULL, &err);
     if (st != CS_OK && !(st == CS_ERR_UNSTABLE && strstr(err.message, "energy ledger")))
         broken(&d, err.message);
-    cs_summary sm;
-    cs_state_summary(s, &sm);
+    cs_summary sm = {.size = sizeof sm};
+    cs_state_summary(s, &sm, NULL);
     const double r[] = {sm.max_50ms_decel_g, sm.max_dynamic_penetration_m, sm.max_barrier_deflection_m,
                         sm.energy_balance_error, sm.max_cable_tension_n};
     for (size_t i = 0; i < sizeof r / sizeof *r; i++)

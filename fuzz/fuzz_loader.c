@@ -46,7 +46,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         }
         p = eol + 1;
     }
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     cs_model *model = NULL;
     if (cs_loader_load_buffer(loader, CS_SOURCE_DIR "/tests/good/fuzz-input.yaml", (const char *)data, size,
                               &in) == 0)

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# One run, one truth: APS3 as designed (the truck stopped) and with its ropes' end fittings at a quarter
-# of their strength (it breaks through), each read back from its terminal output, summary.json,
-# report.html (its text made by the page's own code: tests/one_truth.mjs), events.csv and timeseries.csv:
+# One run, one truth: APS3 as designed (the truck stopped), with its ropes' end fittings at a quarter
+# of their strength (it breaks through), and APS1 with its ropes at half strength at the threaded posts'
+# holes (a rope breaks at a post's hole: every output names that post), each read back from its terminal
+# output, summary.json, report.html (its text made by the page's own code: tests/one_truth.mjs),
+# events.csv and timeseries.csv:
 # the designation as run, the peak deceleration and its time at the terminal's precision, the
 # penetration (or how far beyond), the cables counted from 0, the end fittings' strength and the events
 # agree; compare's table gives each run's own numbers. The designation as run is also rate's row for the
@@ -11,15 +13,20 @@
 source "$(dirname "$0")/lib.sh"
 command -v node >/dev/null || { echo "no node: skipped"; exit 77; }
 weak=(--set "barrier.cables[0].termination_efficiency=0.25" --set "barrier.cables[1].termination_efficiency=0.25")
-for what in designed weak; do
+hole=(--set "barrier.cables[0].hole_efficiency=0.5" --set "barrier.cables[1].hole_efficiency=0.5")
+for what in designed weak hole; do
     extra=()
     [ "$what" = weak ] && extra=("${weak[@]}")
-    "$cs" run examples/aps3.yaml -o "$tmp/$what" --report "${extra[@]}" >"$tmp/$what.term" 2>&1
+    [ "$what" = hole ] && extra=("${hole[@]}")
+    model=examples/aps3.yaml
+    [ "$what" = hole ] && model=examples/aps1.yaml
+    "$cs" run "$model" -o "$tmp/$what" --report "${extra[@]}" >"$tmp/$what.term" 2>&1
     check "$what: the run (exit 0), with report.html" '[ $? -eq 0 ] && [ -s "$tmp/$what/report.html" ]'
     [ -s "$tmp/$what/report.html" ] || { [ "$what" = designed ] && grep -q "no report.html" "$tmp/$what.term" && exit 77; }
     out=$(node tests/one_truth.mjs "$tmp/$what" "$tmp/$what.term" 2>/dev/null)
     check "$what: every output agrees (tests/one_truth.mjs)" '[ $? -eq 0 ] && [ "$(grep -c "^ok " <<<"$out")" -ge 16 ] || { echo "$out"; false; }'
 done
+check "hole: APS1's ropes at half strength at the holes break at a post's hole, and every output says where" 'grep -q "at post [0-9]*'"'"'s hole$" "$tmp/hole.term" && node tests/one_truth.mjs "$tmp/hole" "$tmp/hole.term" 2>/dev/null | grep -q "^ok breaks at a hole: report.html"'
 check "designed: the truck stops, the breakthrough gets through" 'grep -q "\"outcome\":\"stopped\"" "$tmp/designed/summary.json" && grep -q "\"outcome\":\"breakthrough\"" "$tmp/weak/summary.json"'
 # compare of the two runs: each column of compare.csv gives its run's summary.json, to the digit written
 "$cs" compare "$tmp/designed" "$tmp/weak" -o "$tmp/compare" >/dev/null 2>&1

@@ -111,7 +111,7 @@ static inline cs_model *example_model(const char *name, const char *const *sets,
     snprintf(path, sizeof path, CS_SOURCE_DIR "/examples/%s.yaml", name);
     for (int k = 0; sets && sets[k]; k++)
         if (cs_loader_set(l, sets[k]) != 0) fail_msg("%s: bad assignment %s", name, sets[k]);
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     cs_model *m = NULL;
     if (cs_loader_load(l, path, &in) != 0 || !(m = cs_loader_build(l, &in))) {
         cs_loader_print_errors(l, stderr);

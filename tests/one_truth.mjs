@@ -24,6 +24,7 @@ class Node {
 }
 globalThis.document = { createElement: (tag) => new Node(tag) };
 const { summaryTable, designTable, designationsText } = await import('../report/src/summary.js');
+const { timeline } = await import('../report/src/events.js');
 
 const [dir, termFile] = process.argv.slice(2);
 const term = readFileSync(termFile, 'utf8');
@@ -86,4 +87,17 @@ check('events: events.csv rows = summary.json events', events.length - 1 === sum
 const listed = [...term.matchAll(/^ {4} +([0-9.]+) s {2}(\S+)(?: +(\w+) (\d+))?/gm)].map((m) => [m[1], m[2], m[4]]);
 const failures = events.slice(1).filter((e) => !['post_hinge', 'footing_rotation'].includes(e[1]));
 check('events: the terminal lists events.csv\'s failures in order, at the same times (0.1 ms)', listed.length === Math.min(30, failures.length) && listed.every(([t, type, el], k) => type === failures[k][1] && Math.abs(Number(t) - Number(failures[k][0])) <= 0.00005 + 1e-12 && (el === undefined || el === failures[k][3])), JSON.stringify([listed.slice(0, 3), failures.slice(0, 3)]));
+// a rope broken at a threaded post's hole: events.csv's post, summary.json's, the terminal's "at post N's
+// hole" and the report's events list in the same words, for every such break (checked when the run has
+// one; tests/cli_one_truth.sh runs one that must)
+const atHole = events.slice(1).filter((e) => e[1] === 'cable_break' && e[8] !== undefined && e[8] !== '');
+const termHoles = [...term.matchAll(/^ {4} +([0-9.]+) s {2}cable_break +cable (\d+) at post (\d+)'s hole$/gm)].map((m) => [m[2], m[3]]);
+const jsonHoles = summary.events.filter((e) => e.type === 'cable_break' && e.post !== undefined).map((e) => [e.element.split(' ')[1], String(e.post)]);
+const pageHoles = timeline(page).filter((r) => r.type === 'cable_break' && r.post !== undefined).flatMap((r) => r.elements.map((c) => [String(c), String(r.post), r.text]));
+if (atHole.length || termHoles.length || jsonHoles.length || pageHoles.length) {
+  const csvHoles = atHole.map((e) => [e[3], e[8]]);
+  const same = (a, b) => JSON.stringify(a) === JSON.stringify(b);
+  check('breaks at a hole: events.csv = summary.json = the terminal (cable and post)', same(csvHoles, jsonHoles) && same(csvHoles, termHoles), JSON.stringify([csvHoles, jsonHoles, termHoles]));
+  check('breaks at a hole: report.html says "at post N\'s hole" for the same cables and posts', same(pageHoles.map((h) => h.slice(0, 2)), csvHoles) && pageHoles.every(([c, p, text]) => text.startsWith(`Cable ${c} `) && text.endsWith(`breaks at post ${p}'s hole`)), JSON.stringify(pageHoles));
+}
 process.exit(failed ? 1 : 0);

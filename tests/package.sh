@@ -3,9 +3,10 @@
 # The Debian packages (debian/, built by scripts/build-deb.sh with DEB_BUILD_OPTIONS=nocheck): lintian
 # finds no error and no warning in them; libcablesim0 holds the library under its multiarch directory with
 # its soname link, libcablesim-dev its headers, static library, pkg-config and CMake files, cablesim the
-# command with its manual pages (compressed) and bash completion, cablesim-data the parts library and
-# examples; the command's package depends on the libraries it is linked with, the library's has a symbols
-# file and nothing runs ldconfig in a maintainer script; a -dbgsym package holds the debug symbols.
+# command with its manual pages (compressed), the documents they name and bash completion, cablesim-data
+# the parts library and examples; the command's package depends on the libraries it is linked with, the
+# library's has a symbols file and nothing runs ldconfig in a maintainer script; a -dbgsym package holds
+# the debug symbols.
 # $1 the build tree (its cablesim gives the version). Skipped (77) without dpkg-buildpackage, debhelper or
 # lintian.
 set -u
@@ -59,6 +60,15 @@ has cablesim /usr/bin/cablesim /usr/share/man/man1/cablesim.1.gz /usr/share/man/
 has cablesim-data all /usr/share/cablesim/vehicles.yaml /usr/share/cablesim/ropes.yaml \
     /usr/share/cablesim/sections.yaml /usr/share/cablesim/rails.yaml /usr/share/cablesim/validation/eq21-table4.csv \
     /usr/share/cablesim/examples/aps3.yaml /usr/share/cablesim/examples/api/post_spacing.c
+# the documents a manual page names are where it says, in the command's package
+dpkg-deb -x "$(deb cablesim)" "$tmp/cablesim-root"
+named=$(zcat "$tmp"/cablesim-root/usr/share/man/man1/*.1.gz | grep -o '/usr/share/doc/cablesim/[a-z\\-]*\.md' | tr -d '\\' |
+    sort -u)
+check "the manual pages name the installed documents (ratings.md among them)" 'grep -qx /usr/share/doc/cablesim/ratings.md <<<"$named"'
+for f in $named; do
+    check "cablesim holds $f, which a manual page names" '[ -s "$tmp/cablesim-root$f" ]'
+done
+check "no manual page names a docs/ path of the source tree" '! zcat "$tmp"/cablesim-root/usr/share/man/man1/*.1.gz | grep -q "[^/]docs/"'
 check "the library's package has a symbols file naming cs_version" \
     'dpkg-deb --ctrl-tarfile "$(deb libcablesim0)" | tar -xOf - ./symbols | grep -q "^ cs_version@Base"'
 check "no maintainer script of the library's, ldconfig by debhelper's trigger" \

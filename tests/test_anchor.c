@@ -131,12 +131,12 @@ static void truck_drags_the_dead_men_through_the_soil(void **state) {
         work += pm->pullout_cap * pm->embedment * (1.0 - pow(fmax(x, 0.0), 3.0)) / 3.0;
     }
     for (int k = 0; k < cs_state_event_count(s); k++) {
-        const cs_event *e = cs_state_event(s, k);
+        const cs_event *e = &s->events[k];
         yielded += e->type == CS_EVENT_ANCHOR_YIELD;
         pulled += e->type == CS_EVENT_ANCHOR_PULLOUT;
     }
-    cs_summary sm;
-    cs_state_summary(s, &sm);
+    cs_summary sm = {.size = sizeof sm};
+    cs_state_summary(s, &sm, NULL);
     printf("soil %.1f kJ, the cap's work over the slides %.1f kJ, slides %.4f %.4f m, %s, ledger %.3g%%\n",
            s->e_soil / 1e3, work / 1e3, slide[0], slide[1], cs_outcome_name(sm.outcome),
            100.0 * sm.energy_balance_error);

@@ -41,7 +41,7 @@ static void cables_below_and_above_the_face_slip(void **state) {
         assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
         int slipped = k == 0 ? 0 : 1, held = 1 - slipped, seen = 0;
         for (int i = 0; i < cs_state_event_count(s); i++) {
-            const cs_event *e = cs_state_event(s, i);
+            const cs_event *e = &s->events[i];
             if (e->type != CS_EVENT_OVERRIDE && e->type != CS_EVENT_UNDERRIDE) continue;
             assert_int_equal(e->type, k == 0 ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
             assert_int_equal(e->element, slipped);
@@ -106,8 +106,8 @@ static void events_in_order_and_once(void **state) {
     int n = cs_state_event_count(s), failed[64] = {0}, end = 0;
     assert_true(n > 5);
     for (int i = 0; i < n; i++) {
-        const cs_event *e = cs_state_event(s, i);
-        if (i) assert_true(e->t >= cs_state_event(s, i - 1)->t);
+        const cs_event *e = &s->events[i];
+        if (i) assert_true(e->t >= s->events[i - 1].t);
         int fails = e->type == CS_EVENT_POST_ROTATION_LIMIT || e->type == CS_EVENT_POST_SHEAR ||
                     e->type == CS_EVENT_POST_PULLOUT;
         if (fails) assert_int_equal(failed[e->element]++, 0);

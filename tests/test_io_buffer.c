@@ -80,7 +80,7 @@ static void test_every_file(void **state) {
             const char *file = g.gl_pathv[i];
             size_t size;
             char *data = slurp(file, &size);
-            cs_model_input x, y;
+            cs_model_input x = {.size = sizeof x}, y = {.size = sizeof y};
             cs_loader *a = new_loader();
             int rc_a = cs_loader_load(a, file, &x);
             cs_loader_reset(b);
@@ -100,7 +100,7 @@ static void test_set_and_reset(void **state) {
     static const char model[] = "name: inline\nbarrier: {file: base.yaml}\nvehicle: M\n"
                                 "scenario: {file: base.yaml}\n";
     cs_loader *l = new_loader();
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     assert_int_equal(cs_loader_set(l, "scenario.speed=35 mph"), 0);
     assert_int_equal(cs_loader_load_buffer(l, "tests/good/inline.yaml", model, strlen(model), &in), 0);
     assert_string_equal(in.name, "inline");
@@ -140,7 +140,7 @@ static void test_edit_as_set(void **state) {
     cs_loader *a = new_loader(), *b = new_loader();
     for (int i = 0; i < n; i++)
         cs_loader_set(a, sets[i]);
-    cs_model_input x, y;
+    cs_model_input x = {.size = sizeof x}, y = {.size = sizeof y};
     assert_int_equal(cs_loader_load_buffer(a, "aps3.yaml", text, size, &x), 0);
     assert_int_equal(cs_loader_load_buffer(b, "aps3.yaml", edited, edited_size, &y), 0);
     assert_true(cs_model_input_hash(&x) == cs_model_input_hash(&y));

@@ -43,8 +43,8 @@ static pinned run(const char *name, unsigned long long *hash) {
     cs_state *s = cs_state_create(m, &err);
     assert_non_null(s);
     assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
-    cs_summary sm;
-    cs_state_summary(s, &sm);
+    cs_summary sm = {.size = sizeof sm};
+    cs_state_summary(s, &sm, NULL);
     if (sm.sudden_loss_count) /* no element drops its load without a rope, fitting or slot letting go */
         fail_msg("%s: %d sudden losses of the force on the vehicle with no rope, fitting or attachment to "
                  "explain them",
@@ -59,8 +59,8 @@ static pinned run(const char *name, unsigned long long *hash) {
     p.shear = sm.posts_failed_shear_left + sm.posts_failed_shear_right;
     p.pullout = sm.posts_failed_pullout_left + sm.posts_failed_pullout_right;
     for (int a = 0; a < 2; a++) {
-        cs_anchor_view v;
-        cs_state_anchor(m, s, a, &v);
+        cs_anchor_view v = {.size = sizeof v};
+        cs_state_anchor(m, s, a, &v, NULL);
         snprintf(p.anchors[a], sizeof p.anchors[a], "%s", cs_anchor_status_name(&v));
     }
     *hash = cs_state_hash(m, s);

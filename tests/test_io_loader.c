@@ -45,7 +45,7 @@ static cs_loader *load(const char *file, cs_model_input *in, const char *const *
 
 static void test_aps3(void **state) {
     (void)state;
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     cs_loader *l = load(CS_SOURCE_DIR "/examples/aps3.yaml", &in, NULL);
     const cs_barrier_def *b = &in.barrier;
     assert_string_equal(in.name, "aps3");
@@ -91,7 +91,7 @@ static void test_aps3(void **state) {
 
 static void test_aps1_aps4_layouts(void **state) {
     (void)state;
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     cs_loader *l = load(CS_SOURCE_DIR "/examples/aps1.yaml", &in, NULL);
     assert_int_equal(in.barrier.post_count, 19);
     for (int k = 0; k < 19; k++) {
@@ -177,7 +177,7 @@ static void test_set(void **state) {
                                        "vehicle.mass=16000 lb",
                                        "barrier.soil.coeff_depth=2.34",
                                        NULL};
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     cs_loader *l = load(CS_SOURCE_DIR "/tests/good/base.yaml", &in, sets);
     close_to(in.scenario.speed, 35 * 0.44704);
     close_to(in.barrier.cables[0].pretension, 8000 * LBF);
@@ -198,7 +198,7 @@ static void test_set(void **state) {
 static void test_inertia_override(void **state) {
     (void)state;
     static const char *const sets[] = {"vehicle.yaw_inertia=50000 kg m^2", NULL};
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     cs_loader *l = load(CS_SOURCE_DIR "/tests/good/base.yaml", &in, sets);
     const double m = 15000 * LB, L = 7.5, W = 2.4, H = 2.5; /* vehicle M of data/vehicles.yaml */
     close_to(in.vehicle.inertia[0], m * (W * W + H * H) / 12);
@@ -211,7 +211,7 @@ static void expect_problems(const char *file, const char *const *sets, const cha
     cs_loader *l = new_loader();
     for (int i = 0; sets && sets[i]; i++)
         cs_loader_set(l, sets[i]);
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     assert_int_equal(cs_loader_load(l, file, &in), CS_ERR_INVALID);
     int n = 0;
     while (want[n])
@@ -255,7 +255,7 @@ static void test_engine_check_names_set(void **state) {
     (void)state;
     cs_loader *l = new_loader();
     cs_loader_set(l, "vehicle.mass=800 t");
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     assert_int_equal(cs_loader_load(l, CS_SOURCE_DIR "/tests/good/base.yaml", &in), 0);
     assert_null(cs_loader_build(l, &in));
     assert_int_equal(cs_loader_error_count(l), 1);
@@ -308,7 +308,7 @@ static void test_cross_checks_name_set(void **state) {
 
 static void test_references(void **state) {
     (void)state;
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     cs_loader *l = load(CS_SOURCE_DIR "/tests/good/split.yaml", &in, NULL);
     assert_string_equal(in.name, "split");
     close_to(in.vehicle.mass, 16000 * LB);      /* heavy-M: M with its own mass */
@@ -330,7 +330,7 @@ static void test_references(void **state) {
  * loads to the same definitions, and a --set through an aliased value changes that place only. */
 static void test_aliases(void **state) {
     (void)state;
-    cs_model_input in, base;
+    cs_model_input in = {.size = sizeof in}, base = {.size = sizeof base};
     cs_loader *l = load(CS_SOURCE_DIR "/tests/good/anchors.yaml", &in, NULL);
     cs_loader *b = load(CS_SOURCE_DIR "/tests/good/base.yaml", &base, NULL);
     assert_int_equal(in.barrier.cable_count, base.barrier.cable_count);
@@ -358,7 +358,7 @@ static void test_aliases(void **state) {
  * works. */
 static void test_reuse(void **state) {
     (void)state;
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     cs_loader *l = new_loader();
     static const char *const file = CS_SOURCE_DIR "/tests/good/split.yaml";
     for (int round = 0; round < 4; round++) {
@@ -387,7 +387,7 @@ static void test_reuse(void **state) {
  * 0xd2aade023bc081e7; an end of its own changes it. */
 static void test_cable_ends(void **state) {
     (void)state;
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     cs_loader *l = load(CS_SOURCE_DIR "/tests/good/ends.yaml", &in, NULL);
     const cs_cable_def *c = in.barrier.cables;
     assert_int_equal(c[0].termination, CS_TERMINATION_CLIPS);
@@ -484,7 +484,7 @@ static void test_every_problem_reported(void **state) {
 
 /* Two loaders, each with its own units and files, at once. */
 static void *load_aps3(void *arg) {
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     cs_loader *l = cs_loader_create(CS_SOURCE_DIR "/data", NULL);
     *(double *)arg =
         l && cs_loader_load(l, CS_SOURCE_DIR "/examples/aps3.yaml", &in) == 0 ? in.barrier.posts[15].x : -1;
@@ -504,9 +504,59 @@ static void test_two_threads(void **state) {
         close_to(x[i], 128 * FT);
 }
 
+/* cs_model_input is filled to the caller's size (cablesim/loader.h): one without its last field (the
+ * scenario) gets the same name, file, barrier and vehicle as a whole one and nothing past its size, and
+ * cannot be built from or hashed; a size of 0 or larger than the library's is refused by name. */
+static void test_model_input_sizes(void **state) {
+    (void)state;
+    cs_model_input in = {.size = sizeof in};
+    cs_loader *whole = load(CS_SOURCE_DIR "/examples/aps3.yaml", &in, NULL), *l = new_loader();
+    _Alignas(max_align_t) unsigned char b[sizeof in + 64];
+    size_t n = offsetof(cs_model_input, scenario);
+    memset(b, 0x5a, sizeof b);
+    memcpy(b, &n, sizeof n);
+    cs_model_input *shorter = (cs_model_input *)(void *)b;
+    assert_int_equal(cs_loader_load(l, CS_SOURCE_DIR "/examples/aps3.yaml", shorter), CS_OK);
+    assert_int_equal(shorter->size, n);
+    assert_string_equal(shorter->name, in.name);
+    assert_string_equal(shorter->file, in.file);
+    assert_memory_equal(&shorter->vehicle, &in.vehicle, sizeof in.vehicle);
+    assert_int_equal(shorter->barrier.post_count, in.barrier.post_count);
+    for (int p = 0; p < in.barrier.post_count; p++)
+        assert_memory_equal(&shorter->barrier.posts[p], &in.barrier.posts[p], sizeof in.barrier.posts[p]);
+    for (int c = 0; c < in.barrier.cable_count; c++)
+        assert_memory_equal(&shorter->barrier.cables[c], &in.barrier.cables[c], sizeof in.barrier.cables[c]);
+    for (size_t k = n; k < sizeof b; k++) /* nothing past its size */
+        assert_int_equal(b[k], 0x5a);
+    /* it lacks the scenario: not built from, not hashed */
+    assert_true(cs_model_input_hash(&in) != 0);
+    assert_true(cs_model_input_hash(shorter) == 0);
+    assert_null(cs_loader_build(l, shorter));
+    assert_true(strstr(cs_loader_error(l, 0), "cs_model_input: size ") == cs_loader_error(l, 0));
+    assert_non_null(strstr(cs_loader_error(l, 0), "needs"));
+    /* sizes it does not know */
+    size_t bad[2] = {0, sizeof in + 8};
+    for (int k = 0; k < 2; k++) {
+        cs_loader_reset(l);
+        memset(b, 0x5a, sizeof b);
+        memcpy(b, &bad[k], sizeof bad[k]);
+        assert_int_equal(cs_loader_load(l, CS_SOURCE_DIR "/examples/aps3.yaml", shorter), CS_ERR_INVALID);
+        char want[64];
+        snprintf(want, sizeof want, "cs_model_input: size %zu, where this library's is %zu", bad[k],
+                 sizeof in);
+        assert_int_equal(cs_loader_error_count(l), 1);
+        assert_true(strstr(cs_loader_error(l, 0), want) == cs_loader_error(l, 0));
+        for (size_t j = sizeof(size_t); j < sizeof b; j++) /* nothing written */
+            assert_int_equal(b[j], 0x5a);
+    }
+    cs_loader_free(l);
+    cs_loader_free(whole);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_aps3),
+        cmocka_unit_test(test_model_input_sizes),
         cmocka_unit_test(test_aps1_aps4_layouts),
         cmocka_unit_test(test_library_parts),
         cmocka_unit_test(test_set),

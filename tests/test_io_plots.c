@@ -306,6 +306,7 @@ static synthetic *synthetic_new(int frames) {
         s->posts[p].rotation_limit = PI / 4;
     }
     cs_model_input *in = &s->in;
+    in->size = sizeof *in;
     in->name = "synthetic";
     in->file = "synthetic.yaml";
     in->barrier = cs_default_barrier_def();
@@ -387,13 +388,13 @@ static synthetic *synthetic_new(int frames) {
         }
     }
     const cs_event ev[] = {
-        {0.1, CS_EVENT_POST_HINGE, CS_ELEMENT_POST, 2, 8e3, -1, -1, -1},
-        {0.1, CS_EVENT_POST_HINGE, CS_ELEMENT_POST, 3, 8e3, -1, -1, -1},
-        {0.2, CS_EVENT_CABLE_BREAK, CS_ELEMENT_CABLE, 0, 320e3, -1, -1, -1},
-        {0.25, CS_EVENT_POST_ROTATION_LIMIT, CS_ELEMENT_POST, 2, 0.8, -1, -1, -1},
-        {0.25, CS_EVENT_POST_ROTATION_LIMIT, CS_ELEMENT_POST, 3, 0.8, -1, -1, -1},
-        {0.27, CS_EVENT_OVERRIDE, CS_ELEMENT_CABLE, 1, 0.27, -1, -1, -1},
-        {0.299, CS_EVENT_STOPPED, CS_ELEMENT_VEHICLE, 0, 0.3, -1, -1, -1},
+        {sizeof(cs_event), 0.1, CS_EVENT_POST_HINGE, CS_ELEMENT_POST, 2, 8e3, -1, -1, -1},
+        {sizeof(cs_event), 0.1, CS_EVENT_POST_HINGE, CS_ELEMENT_POST, 3, 8e3, -1, -1, -1},
+        {sizeof(cs_event), 0.2, CS_EVENT_CABLE_BREAK, CS_ELEMENT_CABLE, 0, 320e3, -1, -1, -1},
+        {sizeof(cs_event), 0.25, CS_EVENT_POST_ROTATION_LIMIT, CS_ELEMENT_POST, 2, 0.8, -1, -1, -1},
+        {sizeof(cs_event), 0.25, CS_EVENT_POST_ROTATION_LIMIT, CS_ELEMENT_POST, 3, 0.8, -1, -1, -1},
+        {sizeof(cs_event), 0.27, CS_EVENT_OVERRIDE, CS_ELEMENT_CABLE, 1, 0.27, -1, -1, -1},
+        {sizeof(cs_event), 0.299, CS_EVENT_STOPPED, CS_ELEMENT_VEHICLE, 0, 0.3, -1, -1, -1},
     };
     memcpy(s->events, ev, sizeof ev);
     s->d = (cs_figure_data){&s->in, &s->rec, s->events, (int)(sizeof ev / sizeof ev[0]), NULL, NULL};

@@ -18,7 +18,7 @@ static void rating_is_the_commands(void **state) {
     cs_error err;
     cs_loader *l = cs_loader_create(CS_SOURCE_DIR "/data", &err);
     if (!l) fail_msg("%s", err.message);
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     cs_model *m = NULL;
     if (cs_loader_load(l, CS_SOURCE_DIR "/examples/aps3.yaml", &in) != CS_OK ||
         !(m = cs_loader_build(l, &in))) {

@@ -54,7 +54,7 @@ static void public_record_and_outputs(void **state) {
     cs_loader *l = cs_loader_create(CS_SOURCE_DIR "/data", &err);
     if (!l) fail_msg("%s", err.message);
     assert_int_equal(cs_loader_set(l, "scenario.t_end=60 ms"), 0);
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     cs_model *m = NULL;
     if (cs_loader_load(l, CS_SOURCE_DIR "/examples/aps3.yaml", &in) != 0 || !(m = cs_loader_build(l, &in))) {
         cs_loader_print_errors(l, stderr);
@@ -67,8 +67,8 @@ static void public_record_and_outputs(void **state) {
     assert_true(cs_record_ok(rec));
     int n = cs_record_frame_count(rec);
     assert_int_equal(n, 61); /* t = 0, every 1 ms to 60 ms */
-    cs_vehicle_view now;
-    cs_state_vehicle(m, s, &now);
+    cs_vehicle_view now = {.size = sizeof now};
+    cs_state_vehicle(m, s, &now, NULL);
     const cs_vehicle_view *last = cs_record_vehicle(rec, n - 1);
     assert_non_null(last);
     CHECK_ABS(last->t, 0.06, 1e-9);

@@ -33,6 +33,7 @@ static int setup(void **st) {
     r->loader = cs_loader_create(NULL, NULL);
     assert_non_null(r->loader);
     cs_loader_set(r->loader, "scenario.t_end=40 ms");
+    r->in.size = sizeof r->in;
     if (cs_loader_load(r->loader, "examples/aps3.yaml", &r->in) != 0) {
         cs_loader_print_errors(r->loader, stderr);
         fail();

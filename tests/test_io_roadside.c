@@ -40,8 +40,8 @@ static pinned run(const char *name, const char *const *sets, unsigned long long 
     cs_state *s = cs_state_create(m, &err);
     assert_non_null(s);
     assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
-    cs_summary sm;
-    cs_state_summary(s, &sm);
+    cs_summary sm = {.size = sizeof sm};
+    cs_state_summary(s, &sm, NULL);
     if (sm.sudden_loss_count) /* no element drops its load without a rope, fitting or slot letting go */
         fail_msg("%s: %d sudden losses of the force on the vehicle with no rope, fitting or attachment to "
                  "explain them",
@@ -52,8 +52,11 @@ static pinned run(const char *name, const char *const *sets, unsigned long long 
     p.t_s = sm.t_end_s, p.deflection_m = sm.max_barrier_deflection_m, p.working_width_m = sm.working_width_m;
     if (cs_outcome_exits(sm.outcome))
         p.exit_speed_mps = sm.exit_speed_mps, p.exit_angle_deg = sm.exit_angle_deg;
-    for (int i = 0; i < cs_state_event_count(s); i++)
-        p.released += cs_state_event(s, i)->type == CS_EVENT_CABLE_RELEASE;
+    for (int i = 0; i < cs_state_event_count(s); i++) {
+        cs_event e = {.size = sizeof e};
+        assert_int_equal(cs_state_event(s, i, &e, NULL), CS_OK);
+        p.released += e.type == CS_EVENT_CABLE_RELEASE;
+    }
     p.posts_failed = sm.posts_failed_left + sm.posts_failed_right;
     if (hash) *hash = cs_state_hash(m, s);
     *balance = sm.energy_balance_error;

@@ -73,7 +73,7 @@ static void plastic_hinge_at_mp(void **state) {
     CHECK_REL(hypot(w->state->posts[0].moment[0], w->state->posts[0].moment[1]), mp, 1e-9);
     const cs_event *ev = NULL;
     for (int i = 0; i < cs_state_event_count(w->state); i++)
-        if (cs_state_event(w->state, i)->type == CS_EVENT_POST_HINGE) ev = cs_state_event(w->state, i);
+        if (w->state->events[i].type == CS_EVENT_POST_HINGE) ev = &w->state->events[i];
     assert_non_null(ev);
     world_free(w);
 }

@@ -23,8 +23,8 @@ static void record_tensions(const cs_model *model, const cs_state *s, void *user
     for (int p = 0; p < model->post_count; p++)
         ts->struck += s->posts[p].captured;
     for (int c = 0; c < ts->cables; c++) {
-        cs_cable_view v;
-        cs_state_cable(model, s, c, &v);
+        cs_cable_view v = {.size = sizeof v};
+        cs_state_cable(model, s, c, &v, NULL);
         if (v.max_tension > ts->peak[c]) ts->peak[c] = v.max_tension, ts->t_peak[c] = s->t;
     }
 }
@@ -60,8 +60,8 @@ static void cables_work_sums_to_the_vehicles_loss(void **state) {
     tension_series ts = {.cables = 2};
     assert_int_equal(cs_run(m, s, record_tensions, &ts, &err), CS_OK);
     double vehicle = cs_vehicle_kinetic_energy(m, s) + cs_vehicle_potential_energy(m, s) + s->e_tyre;
-    cs_summary sm;
-    cs_state_summary(s, &sm);
+    cs_summary sm = {.size = sizeof sm};
+    cs_state_summary(s, &sm, NULL);
     assert_int_equal(sm.cable_count, 2);
     assert_int_equal(ts.struck, 0);
     double work = 0.0, ke0 = sm.initial_kinetic_energy_j;
@@ -112,11 +112,12 @@ static int losses_in(double fall, double over, const cs_event *events, int n) {
     double t[SAMPLES], f[SAMPLES];
     history(t, f, fall, over);
     cs_sudden_loss w[4];
-    return cs_sudden_losses(t, f, SAMPLES, STEP, events, n, w, 4);
+    return cs_sudden_losses(t, f, SAMPLES, STEP, events, n, w, 4, NULL);
 }
 
 static cs_event event_at(cs_event_type type, double t) {
-    return (cs_event){.t = t, .type = type, .element_kind = CS_ELEMENT_CABLE, .cable_end = -1};
+    return (cs_event){
+        .size = sizeof(cs_event), .t = t, .type = type, .element_kind = CS_ELEMENT_CABLE, .cable_end = -1};
 }
 
 /* 60% of the peak lost over 5 ms: one window, from the last sample at the peak (100 ms) to the first at
@@ -128,7 +129,7 @@ static void a_fall_of_60_percent_in_10_ms_is_flagged(void **state) {
     double t[SAMPLES], f[SAMPLES];
     history(t, f, 0.6, 5e-3);
     cs_sudden_loss w[4];
-    assert_int_equal(cs_sudden_losses(t, f, SAMPLES, STEP, NULL, 0, w, 4), 1);
+    assert_int_equal(cs_sudden_losses(t, f, SAMPLES, STEP, NULL, 0, w, 4, NULL), 1);
     assert_true(w[0].t_start_s == t[200]);
     assert_true(w[0].t_end_s == t[210]);
     assert_true(w[0].force_before_n == PEAK);
@@ -137,7 +138,7 @@ static void a_fall_of_60_percent_in_10_ms_is_flagged(void **state) {
     /* the events that do not excuse it: a post down in the window, a rope breaking long before */
     cs_event events[2] = {event_at(CS_EVENT_CABLE_BREAK, 0.05),
                           event_at(CS_EVENT_POST_ROTATION_LIMIT, 0.102)};
-    assert_int_equal(cs_sudden_losses(t, f, SAMPLES, STEP, events, 2, w, 4), 1);
+    assert_int_equal(cs_sudden_losses(t, f, SAMPLES, STEP, events, 2, w, 4, NULL), 1);
     assert_true(w[0].t_start_s == t[200] && w[0].t_end_s == t[210]);
 }
 
@@ -177,12 +178,12 @@ static void falls_are_judged_against_the_runs_peak(void **state) {
         f[j] = j < 40 ? PEAK : j < 100 ? 0.4 * PEAK : j < 200 ? PEAK : 0.4 * PEAK;
     }
     cs_sudden_loss w[4];
-    assert_int_equal(cs_sudden_losses(t, f, SAMPLES, STEP, NULL, 0, w, 4), 2);
+    assert_int_equal(cs_sudden_losses(t, f, SAMPLES, STEP, NULL, 0, w, 4, NULL), 2);
     assert_true(w[0].t_start_s == t[39] && w[0].t_end_s == t[40]);
     assert_true(w[1].t_start_s == t[199] && w[1].t_end_s == t[200]);
     for (int j = 300; j < SAMPLES; j++)
         f[j] = 2.5 * PEAK; /* the run's peak, at 150 ms: the falls of 60 kN are 24% of it */
-    assert_int_equal(cs_sudden_losses(t, f, SAMPLES, STEP, NULL, 0, w, 4), 0);
+    assert_int_equal(cs_sudden_losses(t, f, SAMPLES, STEP, NULL, 0, w, 4, NULL), 0);
 }
 
 int main(void) {

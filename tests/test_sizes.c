@@ -3,14 +3,21 @@
  * gets the run of today's structs with the defaults for the fields it lacks; a struct not started from
  * its cs_default_*(), or larger than the library's, is refused with a sentence naming it. The earlier
  * structs are today's without their last field: a rope without its diameter (so a cable ending in that
- * smaller rope, read at its own stride in the barrier's array) and a scenario without max_steps. */
+ * smaller rope, read at its own stride in the barrier's array) and a scenario without max_steps.
+ * The structs the engine fills (sim.h: cs_summary, the views, cs_event) the other way: one a field short
+ * gets the leading values of a whole one from the same state and nothing past its size; a size of 0 or
+ * larger than the library's is refused by the struct's name, nothing written. (cs_model_input, filled by
+ * the loader: test_io_loader.c.) */
+#include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
+#include <stdio.h>
 #include <string.h>
 
 #include <cmocka.h>
 
+#include "check.h"
 #include "fixture.h"
 
 enum { OLD_ROPE = offsetof(cs_rope_def, diameter), OLD_CABLE = offsetof(cs_cable_def, rope) + OLD_ROPE };
@@ -104,10 +111,180 @@ static void unknown_sizes_are_refused(void **state) {
     expect_refused(&fx.barrier, &fx.vehicle, &fx.scenario, "a layout this library does not know");
 }
 
+/* ---- the structs the engine fills ---- */
+
+/* APS3 run to t = 0.3 s: posts hinged, ropes loaded, the vehicle slowed. */
+static struct {
+    fixture fx;
+    cs_model *model;
+    cs_state *state;
+    int post; /* the post nearest the impact */
+} run;
+
+static int run_setup(void **state) {
+    (void)state;
+    fixture_aps3(&run.fx);
+    run.fx.scenario.t_end = 0.3;
+    cs_error err;
+    run.model = cs_model_create(&run.fx.barrier, &run.fx.vehicle, &run.fx.scenario, &err);
+    run.state = run.model ? cs_state_create(run.model, &err) : NULL;
+    if (!run.state || cs_run(run.model, run.state, NULL, NULL, &err) != CS_OK) return -1;
+    for (int p = 1; p < cs_model_post_count(run.model); p++)
+        if (fabs(cs_model_post_x(run.model, p) - run.fx.scenario.impact_x) <
+            fabs(cs_model_post_x(run.model, run.post) - run.fx.scenario.impact_x))
+            run.post = p;
+    return 0;
+}
+
+static int run_teardown(void **state) {
+    (void)state;
+    cs_state_free(run.state);
+    cs_model_free(run.model);
+    return 0;
+}
+
+static cs_status fill_summary(void *out, cs_error *err) {
+    return cs_state_summary(run.state, out, err);
+}
+static cs_status fill_vehicle(void *out, cs_error *err) {
+    return cs_state_vehicle(run.model, run.state, out, err);
+}
+static cs_status fill_cable(void *out, cs_error *err) {
+    return cs_state_cable(run.model, run.state, 0, out, err);
+}
+static cs_status fill_post(void *out, cs_error *err) {
+    return cs_state_post(run.model, run.state, run.post, out, err);
+}
+static cs_status fill_anchor(void *out, cs_error *err) {
+    return cs_state_anchor(run.model, run.state, 0, out, err);
+}
+static cs_status fill_event(void *out, cs_error *err) {
+    return cs_state_event(run.state, 0, out, err);
+}
+
+typedef struct filled {
+    const char *name;
+    cs_status (*fill)(void *out, cs_error *err);
+    size_t size;   /* this library's */
+    size_t short_; /* an earlier struct's: today's without its last field */
+} filled;
+
+static const filled summary_case = {"cs_summary", fill_summary, sizeof(cs_summary),
+                                    offsetof(cs_summary, penetration_beyond_m)};
+static const filled vehicle_case = {"cs_vehicle_view", fill_vehicle, sizeof(cs_vehicle_view),
+                                    offsetof(cs_vehicle_view, rear_corners)};
+static const filled cable_case = {"cs_cable_view", fill_cable, sizeof(cs_cable_view),
+                                  offsetof(cs_cable_view, node_count)};
+static const filled post_case = {"cs_post_view", fill_post, sizeof(cs_post_view),
+                                 offsetof(cs_post_view, top)};
+static const filled anchor_case = {"cs_anchor_view", fill_anchor, sizeof(cs_anchor_view),
+                                   offsetof(cs_anchor_view, uplift_capacity)};
+static const filled event_case = {"cs_event", fill_event, sizeof(cs_event), offsetof(cs_event, post)};
+
+enum { ROOM = 1024, MARK = 0x5a };
+
+static size_t size_of(const unsigned char *b) {
+    size_t n;
+    memcpy(&n, b, sizeof n);
+    return n;
+}
+
+static void refused(const filled *c, size_t size) {
+    _Alignas(max_align_t) unsigned char b[ROOM];
+    memset(b, MARK, sizeof b);
+    memcpy(b, &size, sizeof size);
+    cs_error err;
+    assert_int_equal(c->fill(b, &err), CS_ERR_INVALID);
+    assert_int_equal(err.status, CS_ERR_INVALID);
+    char want[64];
+    snprintf(want, sizeof want, "%s: size %zu", c->name, size);
+    if (strncmp(err.message, want, strlen(want)) != 0)
+        fail_msg("'%s' does not begin '%s'", err.message, want);
+    for (size_t k = sizeof size; k < sizeof b; k++) /* nothing written */
+        assert_int_equal(b[k], MARK);
+}
+
+static void filled_to_the_callers_size(void **state) {
+    const filled *c = *state;
+    assert_true(c->size <= ROOM && c->short_ > sizeof(size_t) && c->short_ < c->size);
+    _Alignas(max_align_t) unsigned char whole[ROOM], shorter[ROOM];
+    memset(whole, 0, sizeof whole);
+    memcpy(whole, &c->size, sizeof c->size);
+    memset(shorter, MARK, sizeof shorter);
+    memcpy(shorter, &c->short_, sizeof c->short_);
+    cs_error err;
+    assert_int_equal(c->fill(whole, &err), CS_OK);
+    assert_int_equal(c->fill(shorter, &err), CS_OK);
+    assert_int_equal(size_of(whole), c->size);
+    assert_int_equal(size_of(shorter), c->short_);
+    /* the same leading values, bit for bit, and none of them all zero */
+    assert_memory_equal(whole + sizeof(size_t), shorter + sizeof(size_t), c->short_ - sizeof(size_t));
+    size_t nonzero = 0;
+    for (size_t k = sizeof(size_t); k < c->short_; k++)
+        nonzero += whole[k] != 0;
+    assert_true(nonzero > 0);
+    for (size_t k = c->short_; k < sizeof shorter; k++) /* nothing past its size */
+        assert_int_equal(shorter[k], MARK);
+    refused(c, 0);
+    refused(c, sizeof(size_t) - 1);
+    refused(c, c->size + sizeof(double));
+}
+
+/* The values the views and the summary give agree with one another where they are the same quantity. */
+static void views_agree_with_the_summary(void **state) {
+    (void)state;
+    cs_summary s = {.size = sizeof s};
+    cs_vehicle_view v = {.size = sizeof v};
+    cs_cable_view c = {.size = sizeof c};
+    cs_event e = {.size = sizeof e};
+    cs_error err;
+    assert_int_equal(cs_state_summary(run.state, &s, &err), CS_OK);
+    assert_int_equal(cs_state_vehicle(run.model, run.state, &v, &err), CS_OK);
+    assert_int_equal(cs_state_cable(run.model, run.state, 0, &c, &err), CS_OK);
+    assert_int_equal(cs_state_event(run.state, 0, &e, &err), CS_OK);
+    assert_true(fabs(v.t - s.t_end_s) == 0.0 && fabs(s.t_end_s - 0.3) < 1e-3);
+    assert_true(fabs(v.penetration - s.max_dynamic_penetration_m) == 0.0);
+    assert_true(c.max_tension > 1e3 && c.max_tension <= s.max_cable_tension_n); /* loaded, under its peak */
+    assert_true(e.t > 0.0 && e.t <= s.t_end_s);
+    /* out of range: refused by name, saying which */
+    assert_int_equal(cs_state_cable(run.model, run.state, 7, &c, &err), CS_ERR_INVALID);
+    assert_string_equal(err.message, "cs_cable_view: no cable 7 (the model has 2)");
+    assert_int_equal(cs_state_event(run.state, -1, &e, &err), CS_ERR_INVALID);
+    assert_true(strstr(err.message, "cs_event: no event -1") == err.message);
+}
+
+/* cs_sudden_losses reads the caller's events at their own size, and refuses one it does not know. */
+static void sudden_losses_read_events_at_their_size(void **state) {
+    (void)state;
+    double t[3] = {0.0, 0.005, 0.010}, f[3] = {1e5, 1e5, 1e4};
+    cs_event e = {.size = sizeof e};
+    assert_int_equal(cs_state_event(run.state, 0, &e, NULL), CS_OK);
+    cs_sudden_loss w[1];
+    cs_error err;
+    e.t = 1.0; /* after the fall: it excuses nothing */
+    assert_int_equal(cs_sudden_losses(t, f, 3, 0.005, &e, 1, w, 1, &err), 1);
+    CHECK_ABS(w[0].force_before_n, 1e5, 0.0);
+    CHECK_ABS(w[0].force_after_n, 1e4, 0.0);
+    e.size = 0;
+    assert_int_equal(cs_sudden_losses(t, f, 3, 0.005, &e, 1, w, 1, &err), -1);
+    assert_true(strstr(err.message, "cs_event: size 0") == err.message);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(earlier_structs_run_as_todays_with_defaults),
         cmocka_unit_test(unknown_sizes_are_refused),
     };
-    return cmocka_run_group_tests(tests, NULL, NULL);
+    const struct CMUnitTest filled_tests[] = {
+        cmocka_unit_test_prestate(filled_to_the_callers_size, (void *)&summary_case),
+        cmocka_unit_test_prestate(filled_to_the_callers_size, (void *)&vehicle_case),
+        cmocka_unit_test_prestate(filled_to_the_callers_size, (void *)&cable_case),
+        cmocka_unit_test_prestate(filled_to_the_callers_size, (void *)&post_case),
+        cmocka_unit_test_prestate(filled_to_the_callers_size, (void *)&anchor_case),
+        cmocka_unit_test_prestate(filled_to_the_callers_size, (void *)&event_case),
+        cmocka_unit_test(views_agree_with_the_summary),
+        cmocka_unit_test(sudden_losses_read_events_at_their_size),
+    };
+    int failed = cmocka_run_group_tests(tests, NULL, NULL);
+    return failed + cmocka_run_group_tests_name("filled", filled_tests, run_setup, run_teardown);
 }

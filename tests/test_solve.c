@@ -268,7 +268,8 @@ static cs_state *run_to_end(const fixture *fx, cs_model **m, cs_summary *sm) {
     cs_state *s = cs_state_create(*m, &err);
     assert_non_null(s);
     assert_int_equal(cs_run(*m, s, NULL, NULL, &err), CS_OK);
-    cs_state_summary(s, sm);
+    sm->size = sizeof *sm;
+    cs_state_summary(s, sm, NULL);
     return s;
 }
 

@@ -32,10 +32,13 @@ static int design_runs_badly(int k, int slip, int *slipped) {
     }
     cs_state *s = cs_state_create(m, &err);
     cs_status st = cs_run(m, s, NULL, NULL, &err);
-    for (int e = 0; slipped && e < cs_state_event_count(s); e++)
-        *slipped += cs_state_event(s, e)->type == CS_EVENT_TERMINATION_SLIP;
-    cs_summary sm;
-    cs_state_summary(s, &sm);
+    for (int i = 0; slipped && i < cs_state_event_count(s); i++) {
+        cs_event e = {.size = sizeof e};
+        cs_state_event(s, i, &e, NULL);
+        *slipped += e.type == CS_EVENT_TERMINATION_SLIP;
+    }
+    cs_summary sm = {.size = sizeof sm};
+    cs_state_summary(s, &sm, NULL);
     int finite = isfinite(sm.max_50ms_decel_g) && isfinite(sm.max_dynamic_penetration_m) &&
                  isfinite(sm.max_barrier_deflection_m) && isfinite(sm.energy_balance_error);
     int fails = st != CS_OK || !finite || fabs(sm.energy_balance_error) > 0.02;

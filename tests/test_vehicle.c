@@ -68,8 +68,8 @@ static void short_run_has_its_window_average(void **state) {
         cs_model *m = model_for(&fx);
         cs_state *s = cs_state_create(m, NULL);
         run_until(m, s, 1.0);
-        cs_summary sm;
-        cs_state_summary(s, &sm);
+        cs_summary sm = {.size = sizeof sm};
+        cs_state_summary(s, &sm, NULL);
         assert_int_equal(sm.outcome, CS_NO_CONTACT); /* on the open road */
         double span = k == 0 ? sm.t_end_s : 0.05;    /* from the speed at t = 0 */
         printf("t_end %.4f s: max 50-ms average %.6f g at %.4f s\n", fx.scenario.t_end, sm.max_50ms_decel_g,

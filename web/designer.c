@@ -138,7 +138,7 @@ EMSCRIPTEN_KEEPALIVE const char *cs_web_run(const char *path, const char *sets, 
         overrides[i] = set_text[i];
     }
     free(copy);
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     cs_model *model = NULL;
     struct timespec t_load;
     clock_gettime(CLOCK_MONOTONIC, &t_load);
@@ -161,8 +161,8 @@ EMSCRIPTEN_KEEPALIVE const char *cs_web_run(const char *path, const char *sets, 
     if (rc != CS_OK || rec.failed) {
         out = fail(rc != CS_OK ? err.message : "out of memory while recording");
     } else {
-        cs_summary sm;
-        cs_state_summary(state, &sm);
+        cs_summary sm = {.size = sizeof sm};
+        cs_state_summary(state, &sm, NULL);
         cs_run_info info = {.command = "cablesim designer",
                             .overrides = overrides,
                             .override_count = n,

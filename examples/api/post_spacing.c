@@ -29,7 +29,7 @@ int main(int argc, char **argv) {
     }
     snprintf(set, sizeof set, "barrier.posts[0].spacing=%s", spacing);
     cs_loader_set(loader, set);
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     cs_model *model = NULL;
     if (cs_loader_load(loader, file, &in) != 0 || !(model = cs_loader_build(loader, &in))) {
         cs_loader_print_errors(loader, stderr);
@@ -44,8 +44,8 @@ int main(int argc, char **argv) {
     if (!rec || cs_run(model, state, cs_record_frame, rec, &err) != CS_OK) {
         fprintf(stderr, "post_spacing: %s\n", err.message);
     } else {
-        cs_summary s;
-        cs_state_summary(state, &s);
+        cs_summary s = {.size = sizeof s};
+        cs_state_summary(state, &s, NULL);
         printf("%s with its posts %s apart (libcablesim %s)\n", in.name, spacing, cs_version());
         printf("outcome: %s at t = %.3f s\n", cs_outcome_name(s.outcome), s.t_end_s);
         printf("max 50-ms deceleration: %.3f g at t = %.3f s\n", s.max_50ms_decel_g, s.t_max_50ms_decel_s);

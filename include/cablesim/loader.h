@@ -21,8 +21,12 @@ typedef struct cs_loader cs_loader;
 
 /** A loaded model: the engine's definitions of the barrier, the vehicle and the attack, in SI. The names,
  * files and arrays behind barrier.cables, barrier.posts and barrier.rails belong to the loader: they last
- * until its next load, cs_loader_reset, cs_loader_reuse or cs_loader_free. */
+ * until its next load, cs_loader_reset, cs_loader_reuse or cs_loader_free. It starts with its size, as the
+ * engine's views do (sim.h): the loader fills that much of it; new fields go at its end. */
 typedef struct cs_model_input {
+    size_t size;              /**< the size of this struct in the program: set it (cs_model_input in =
+                                   {.size = sizeof in}); the loader fills only that much, and the functions
+                                   that take it back need every field up to scenario */
     const char *name;         /**< the model's name (the default output folder is results/NAME) */
     const char *file;         /**< the model file as given */
     cs_barrier_def barrier;   /**< cables, posts, rails and anchors */
@@ -67,15 +71,16 @@ CS_API cs_status cs_loader_set(cs_loader *loader, const char *assignment);
  * is reported at its place, without its text.
  * @param loader the loader
  * @param path the model file
- * @param out filled with the model on success
- * @return CS_OK, or CS_ERR_INVALID with every problem recorded (cs_loader_error_count, cs_loader_error). */
+ * @param out filled with the model on success, to its size
+ * @return CS_OK, or CS_ERR_INVALID with every problem recorded (cs_loader_error_count, cs_loader_error):
+ *         also out's size 0 or larger than this library's. */
 CS_API cs_status cs_loader_load(cs_loader *loader, const char *path, cs_model_input *out);
 /** The same as cs_loader_load for a model file's contents held in memory.
  * @param loader the loader
  * @param name stands for the file in messages; files the model refers to are found from its folder
  * @param data the contents, needed only during the call
  * @param size their length in bytes
- * @param out filled with the model on success
+ * @param out filled with the model on success, to its size
  * @return CS_OK, or CS_ERR_INVALID with every problem recorded. */
 CS_API cs_status cs_loader_load_buffer(cs_loader *loader, const char *name, const char *data, size_t size,
                                        cs_model_input *out);
@@ -88,10 +93,11 @@ CS_API void cs_loader_reset(cs_loader *loader);
 CS_API void cs_loader_reuse(cs_loader *loader);
 /** 64-bit FNV-1a of a loaded model's definitions (barrier, vehicle, scenario: every value as the engine
  * gets it, in SI), not of its name or file: two loads give the same hash exactly when they give the engine
- * the same numbers. */
+ * the same numbers; 0 for an input whose size does not reach its scenario. */
 CS_API unsigned long long cs_model_input_hash(const cs_model_input *in);
 /** Build the engine's model from a loaded input (cs_model_create). On failure the engine's message is
- * recorded at the place in the file, or the override, of the element it names.
+ * recorded at the place in the file, or the override, of the element it names (or that the input's size
+ * does not reach its scenario).
  * @return the model (free it with cs_model_free), or NULL. */
 CS_API cs_model *cs_loader_build(cs_loader *loader, const cs_model_input *in);
 

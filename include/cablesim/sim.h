@@ -145,7 +145,9 @@ typedef enum cs_element_kind {
 
 /** An event of a run. */
 typedef struct cs_event {
-    double t;                     /**< when, s */
+    size_t size; /**< the size of this struct in the program: set it (cs_event e = {.size = sizeof e}); the
+                      library fills only that much */
+    double t;    /**< when, s */
     cs_event_type type;           /**< what */
     cs_element_kind element_kind; /**< to what kind of element */
     int element;   /**< index of the cable, post or anchor (0 start, 1 end); 0 for the vehicle */
@@ -165,12 +167,20 @@ CS_API const char *cs_element_kind_name(cs_element_kind kind);
 CS_API const char *cs_event_cable_end_name(const cs_event *event);
 /** The number of events so far. */
 CS_API int cs_state_event_count(const cs_state *state);
-/** The index-th event, in time order (NULL out of range). */
-CS_API const cs_event *cs_state_event(const cs_state *state, int index);
+/** Fill out with the index-th event, in time order, to out's size.
+ * @return CS_OK, or CS_ERR_INVALID with err filled (may be NULL): index out of range, or out's size 0 or
+ *         larger than this library's. */
+CS_API cs_status cs_state_event(const cs_state *state, int index, cs_event *out, cs_error *err);
 
 /* ---- views ---- */
+/* A view, like cs_summary and cs_event, starts with its size: the caller sets it to sizeof the struct
+ * (cs_post_view v = {.size = sizeof v}) and the library fills that much of it, so a program built against
+ * an earlier cablesim, whose structs lack the fields added since, gets the ones it has. A size of 0, or
+ * larger than this library's, is refused with CS_ERR_INVALID naming the struct. */
+
 /** The vehicle now. World frame: x along the barrier, y the direction of attack, z up. */
 typedef struct cs_vehicle_view {
+    size_t size;                /**< the size of this struct in the program (set it; see above) */
     double t;                   /**< the state's time, s */
     double position[3];         /**< CG, m */
     double velocity[3];         /**< CG, m/s */
@@ -189,8 +199,11 @@ typedef struct cs_vehicle_view {
     double rear_corners[2][3];  /**< left and right rear corners at mid-side height, m */
 } cs_vehicle_view;
 
-/** Fill out with the vehicle now. */
-CS_API void cs_state_vehicle(const cs_model *model, const cs_state *state, cs_vehicle_view *out);
+/** Fill out with the vehicle now, to out's size.
+ * @return CS_OK, or CS_ERR_INVALID with err filled (may be NULL) for a size 0 or larger than this library's.
+ */
+CS_API cs_status cs_state_vehicle(const cs_model *model, const cs_state *state, cs_vehicle_view *out,
+                                  cs_error *err);
 
 /** A cable's condition. */
 typedef enum cs_cable_status {
@@ -202,6 +215,7 @@ typedef enum cs_cable_status {
 
 /** A cable now. */
 typedef struct cs_cable_view {
+    size_t size;            /**< the size of this struct in the program (set it) */
     cs_cable_status status; /**< its condition */
     int engaged;            /**< 1 while the vehicle's face pushes it */
     double max_tension;     /**< largest span tension now, N */
@@ -209,8 +223,11 @@ typedef struct cs_cable_view {
     int node_count;         /**< points of the cable's path (anchors, standing posts, face corners) */
 } cs_cable_view;
 
-/** Fill out with a cable now. */
-CS_API void cs_state_cable(const cs_model *model, const cs_state *state, int cable, cs_cable_view *out);
+/** Fill out with a cable now, to out's size.
+ * @return CS_OK, or CS_ERR_INVALID with err filled (may be NULL): no such cable, or out's size 0 or larger
+ *         than this library's. */
+CS_API cs_status cs_state_cable(const cs_model *model, const cs_state *state, int cable, cs_cable_view *out,
+                                cs_error *err);
 /** A cable status's name: "intact", "broken", "released", "slipped". */
 CS_API const char *cs_cable_status_name(cs_cable_status status);
 /** Copy up to capacity path points (x, y, z triplets, m) and span tensions (node_count - 1 of them, N).
@@ -230,6 +247,7 @@ typedef enum cs_post_status {
 
 /** A post now. */
 typedef struct cs_post_view {
+    size_t size;           /**< the size of this struct in the program (set it) */
     cs_post_status status; /**< its condition */
     double tilt;           /**< rotation from vertical, rad */
     double tilt_dir[2];    /**< horizontal direction the top moves, unit */
@@ -243,13 +261,17 @@ typedef struct cs_post_view {
     double top[3];       /**< the top's position, m */
 } cs_post_view;
 
-/** Fill out with a post now. */
-CS_API void cs_state_post(const cs_model *model, const cs_state *state, int post, cs_post_view *out);
+/** Fill out with a post now, to out's size.
+ * @return CS_OK, or CS_ERR_INVALID with err filled (may be NULL): no such post, or out's size 0 or larger
+ *         than this library's. */
+CS_API cs_status cs_state_post(const cs_model *model, const cs_state *state, int post, cs_post_view *out,
+                               cs_error *err);
 /** A post status's name: "elastic", "hinged", ... */
 CS_API const char *cs_post_status_name(cs_post_status status);
 
 /** An anchor (a dead-man in the soil) now. */
 typedef struct cs_anchor_view {
+    size_t size;            /**< the size of this struct in the program (set it) */
     int rigid;              /**< no footing: it does not move */
     int yielded;            /**< moving through the soil */
     int failed;             /**< pulled out */
@@ -262,8 +284,11 @@ typedef struct cs_anchor_view {
     double uplift_capacity; /**< the upward pull that pulls it out, N */
 } cs_anchor_view;
 
-/** Fill out with an anchor now: 0 the start (low x), 1 the end. */
-CS_API void cs_state_anchor(const cs_model *model, const cs_state *state, int anchor, cs_anchor_view *out);
+/** Fill out with an anchor now, 0 the start (low x), 1 the end, to out's size.
+ * @return CS_OK, or CS_ERR_INVALID with err filled (may be NULL): no such anchor, or out's size 0 or larger
+ *         than this library's. */
+CS_API cs_status cs_state_anchor(const cs_model *model, const cs_state *state, int anchor,
+                                 cs_anchor_view *out, cs_error *err);
 /** "rigid", "holding" (in the soil's elastic range), "sliding" (it has yielded and ploughs through the soil),
  * "pulled_out" (lifted out of the soil by the ropes). */
 CS_API const char *cs_anchor_status_name(const cs_anchor_view *anchor);
@@ -347,8 +372,11 @@ enum { CS_SUDDEN_LOSS_KEPT = 64 };
 
 /** Response parameters, updated every step. Each field is named as its key in summary.json, its unit in the
  * name's last part (_s, _m, _g, _mps, _deg, _n, _j); summary.json also has what follows from them (stopped,
- * energy_balance_warning), the anchors, the events and the inputs. */
+ * energy_balance_warning), the anchors, the events and the inputs. It starts with its size, as the views do;
+ * new fields go at its end (cs_cable_summary and cs_sudden_loss, held in arrays here, keep their layout). */
 typedef struct cs_summary {
+    size_t size;                      /**< the size of this struct in the program: set it (cs_summary s =
+                                           {.size = sizeof s}); the library fills only that much */
     cs_outcome outcome;               /**< why the run ended (CS_RUNNING while it goes on) */
     double t_end_s;                   /**< time reached, s */
     double max_50ms_decel_g;          /**< largest 50-ms average deceleration along travel, g */
@@ -391,8 +419,10 @@ typedef struct cs_summary {
                                       penetration_beyond_m); NAN where the penetration is final */
 } cs_summary;
 
-/** Fill out with the response parameters now (at the run's end: the run's). */
-CS_API void cs_state_summary(const cs_state *state, cs_summary *out);
+/** Fill out with the response parameters now (at the run's end: the run's), to out's size.
+ * @return CS_OK, or CS_ERR_INVALID with err filled (may be NULL) for a size 0 or larger than this library's.
+ */
+CS_API cs_status cs_state_summary(const cs_state *state, cs_summary *out, cs_error *err);
 /** Cable `cable`'s peak tension and work on the vehicle over the run so far.
  * @return 0, or -1 if there is no such cable. */
 CS_API int cs_state_cable_summary(const cs_state *state, int cable, cs_cable_summary *out);
@@ -409,15 +439,17 @@ CS_API int cs_state_sudden_losses(const cs_state *state, cs_sudden_loss *out, in
  * @param n how many
  * @param step the output step: an event this close to a window excuses it, s
  * @param events the run's events, in time order (a cable_break, termination_break or cable_release
- *        excuses a fall)
+ *        excuses a fall), each of the first one's size (as cs_state_event filled them)
  * @param event_count how many
  * @param out filled with up to capacity windows, in time order (overlapping windows flagged at successive
  *        samples are given once, by the largest fall among them)
  * @param capacity out's room
+ * @param err filled on failure (may be NULL)
  * @return the number of windows flagged (those past capacity, or past CS_SUDDEN_LOSS_KEPT, counted too), or
- *         -1 if out of memory. */
+ *         -1 with err filled: CS_ERR_MEMORY, or CS_ERR_INVALID for events of size 0 or larger than this
+ *         library's. */
 CS_API int cs_sudden_losses(const double *t, const double *force, int n, double step, const cs_event *events,
-                            int event_count, cs_sudden_loss *out, int capacity);
+                            int event_count, cs_sudden_loss *out, int capacity, cs_error *err);
 /** An outcome's name in summary.json: "stopped", "breakthrough", "redirected", ... */
 CS_API const char *cs_outcome_name(cs_outcome outcome);
 

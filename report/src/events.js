@@ -13,7 +13,7 @@ const KINDS = {
   post_pullout: { group: 'fail', text: (who) => `${who} fail${s(who)}: slid all the way out of the footing`, value: (v) => `axial pull ${pair('force', v)}` },
   anchor_yield: { group: 'yield', text: (who) => `${who} start${s(who)} sliding through the soil (footing at its capacity)`, value: (v) => `capacity ${pair('force', v)}` },
   anchor_pullout: { group: 'fail', text: (who) => `${who} pull${s(who)} out of the ground: its cables go slack`, value: (v) => `force ${pair('force', v)}` },
-  cable_break: { group: 'break', text: (who) => `${who} break${s(who)}`, value: (v) => `tension ${pair('force', v)}` },
+  cable_break: { group: 'break', text: (who, end, cable, post) => `${who} break${s(who)}${post === undefined ? '' : ` at post ${post}'s hole`}`, value: (v) => `tension ${pair('force', v)}` },
   termination_break: { group: 'break', text: (who, end) => `${who} break${s(who)} at the end fitting on the ${end === 0 ? 'start' : 'end'} anchor`, value: (v) => `end span tension ${pair('force', v)}` },
   termination_slip: { group: 'slip', text: (who, end) => `${who} start${s(who)} slipping through the end fitting on the ${end === 0 ? 'start' : 'end'} anchor`, value: (v) => `end span tension ${pair('force', v)}` },
   cable_release: { group: 'slip', text: (who, end, cable) => `${who} let${s(who)} ${cable === undefined ? 'a cable' : `cable ${cable}`} go: bent over, its slot or hook no longer holds it`, value: (v) => `pull along the post ${pair('force', v)}` },
@@ -58,22 +58,23 @@ export function timeline(data) {
   if (data.summary.first_contact_time_s !== null) {
     rows.push({ t: data.summary.first_contact_time_s, type: 'contact', group: 'contact', kind: 'vehicle', elements: [], text: 'First contact: the front face reaches the cables', value: '' });
   }
-  // a termination event's sixth item: its cable end, 0 at the start anchor, 1 at the end anchor; a
-  // cable_release's seventh: the cable its post let go
-  for (const [t, type, kind, element, value, end, cable] of data.events) {
+  // a termination event's sixth item: its cable end, 0 at the start anchor, 1 at the end anchor (-1 for
+  // none); a cable_release's seventh: the cable its post let go (-1 for none); a cable_break's eighth: the
+  // post at whose hole the rope broke (the terminal's "at post N's hole")
+  for (const [t, type, kind, element, value, end, cable, post] of data.events) {
     const last = rows[rows.length - 1];
-    if (last && last.t === t && last.type === type && last.kind === kind && last.end === end && last.cable === cable && kind !== 'vehicle') {
+    if (last && last.t === t && last.type === type && last.kind === kind && last.end === end && last.cable === cable && last.post === post && kind !== 'vehicle') {
       last.elements.push(element);
       last.values.push(value);
       continue;
     }
-    rows.push({ t, type, kind, end, cable, group: KINDS[type] ? KINDS[type].group : 'end', elements: [element], values: [value] });
+    rows.push({ t, type, kind, end, cable, post, group: KINDS[type] ? KINDS[type].group : 'end', elements: [element], values: [value] });
   }
   for (const r of rows) {
     if (r.type === 'contact') continue;
     const k = KINDS[r.type];
     const w = who(data, r.kind, r.elements);
-    r.text = k ? k.text(w, r.end, r.cable) : `${r.type}: ${w}`;
+    r.text = k ? k.text(w, r.end, r.cable, r.post) : `${r.type}: ${w}`;
     const distinct = [...new Set(r.values.map((v) => v.toPrecision(4)))];
     r.value = k ? (distinct.length === 1 ? k.value(r.values[0]) : r.values.map((v) => k.value(v)).join('; ')) : '';
   }

@@ -43,6 +43,7 @@ cs_event *cs_event_add(const cs_model *model, cs_state *s, cs_event_type type, c
                        int element, double value) {
     if (s->event_count >= model->event_capacity) return NULL;
     cs_event *e = &s->events[s->event_count++];
+    e->size = sizeof *e;
     e->t = s->t;
     e->type = type;
     e->element_kind = kind;
@@ -56,7 +57,4 @@ cs_event *cs_event_add(const cs_model *model, cs_state *s, cs_event_type type, c
 
 int cs_state_event_count(const cs_state *s) {
     return s->event_count;
-}
-const cs_event *cs_state_event(const cs_state *s, int i) {
-    return (i >= 0 && i < s->event_count) ? &s->events[i] : NULL;
 }

@@ -60,11 +60,6 @@ void cs_state_restore_barrier(const cs_model *model, cs_state *s, const cs_state
         s->cables[c].work_on_vehicle = work[c];
 }
 
-void cs_state_summary(const cs_state *s, cs_summary *out) {
-    *out = s->summary;
-    out->penetration_beyond_m = cs_penetration_is_final(out->outcome) ? NAN : out->max_dynamic_penetration_m;
-}
-
 const char *cs_outcome_name(cs_outcome o) {
     switch (o) {
     case CS_RUNNING:

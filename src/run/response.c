@@ -5,9 +5,11 @@
  * redirected, time limit), with the sudden-loss check of the barrier's force on the vehicle. */
 #include "core/vec3.h"
 #include "run/run.h"
+#include "run/sized.h"
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* 50-ms average of the deceleration along the initial travel direction: the change of forward speed
  * over the window, (u(t - W) - u(t)) / W, from a ring of the last window_steps + 1 speeds (the first
@@ -141,13 +143,30 @@ int cs_loss_scan_finish(cs_loss_scan *scan, const cs_event *events, int event_co
     return kept + scan->missed;
 }
 
-int cs_sudden_losses(const double *t, const double *force, int n, double step, const cs_event *events,
-                     int event_count, cs_sudden_loss *out, int capacity) {
+/* The caller's events, each of the first one's size, as this library's (count of them, or 1 for none):
+ * NULL with err filled. */
+static cs_event *take_events(const cs_event *given, int count, cs_error *err) {
+    cs_event *all = calloc(count > 0 ? (size_t)count : 1, sizeof *all);
+    if (!all) return cs_out_of_memory(err), NULL;
+    size_t stride = 0;
+    if (count > 0 && given) memcpy(&stride, given, sizeof stride);
+    for (int i = 0; i < count && given; i++) {
+        all[i] = (cs_event){.size = sizeof *all, .cable_end = -1, .cable = -1, .post = -1};
+        if (cs_sized_take(&all[i], sizeof *all, (const char *)given + (size_t)i * stride, "cs_event", err))
+            return free(all), NULL;
+    }
+    return all;
+}
+
+int cs_sudden_losses(const double *t, const double *force, int n, double step, const cs_event *given,
+                     int event_count, cs_sudden_loss *out, int capacity, cs_error *err) {
     if (n <= 0) return 0;
+    cs_event *events = take_events(given, given ? event_count : 0, err);
+    if (!events) return -1;
     double *ring = malloc(2 * (size_t)n * sizeof *ring);
-    if (!ring) return -1;
     cs_loss_scan *scan = malloc(sizeof *scan);
-    if (!scan) return free(ring), -1;
+    if (!ring || !scan) return free(events), free(ring), free(scan), cs_out_of_memory(err), -1;
+    if (!given) event_count = 0;
     cs_loss_scan_start(scan, ring, ring + n, n, step);
     int seen = 0; /* the events up to each sample's time */
     for (int j = 0; j < n; j++) {
@@ -158,7 +177,7 @@ int cs_sudden_losses(const double *t, const double *force, int n, double step, c
     int count = cs_loss_scan_finish(scan, events, event_count);
     for (int k = 0; k < scan->kept && k < capacity; k++)
         out[k] = scan->found[k];
-    free(ring), free(scan);
+    free(events), free(ring), free(scan);
     return count;
 }
 

@@ -129,10 +129,7 @@ static int take(const kind *k, void *full, const void *given, size_t room, const
  * library's size, or 1 for none). */
 static int take_array(const kind *k, void *out, const void *given, int count, const char *what,
                       cs_error *err) {
-    if (!out) {
-        if (err) err->status = CS_ERR_MEMORY, snprintf(err->message, sizeof err->message, "out of memory");
-        return -1;
-    }
+    if (!out) return cs_out_of_memory(err), -1;
     if (count <= 0 || !given) return 0;
     size_t stride;
     memcpy(&stride, given, sizeof stride);
@@ -174,4 +171,52 @@ void cs_defs_free(cs_defs *d) {
     free(d->cables);
     free(d->posts);
     free(d->rails);
+}
+
+void cs_out_of_memory(cs_error *err) {
+    if (err) err->status = CS_ERR_MEMORY, snprintf(err->message, sizeof err->message, "out of memory");
+}
+
+cs_status cs_sized_refuse(cs_error *err, const char *name, const char *why) {
+    if (err) {
+        err->status = CS_ERR_INVALID;
+        snprintf(err->message, sizeof err->message, "%s: %s", name, why);
+    }
+    return CS_ERR_INVALID;
+}
+
+/* The size at the start of the caller's struct at: CS_OK, or CS_ERR_INVALID naming it if that size is not
+ * one a struct of this library's full_size can be. */
+static cs_status caller_size(const void *at, size_t full_size, const char *name, size_t *n, cs_error *err) {
+    if (!at) return cs_sized_refuse(err, name, "no struct (NULL)");
+    memcpy(n, at, sizeof *n);
+    char why[160];
+    if (*n < sizeof *n)
+        snprintf(why, sizeof why, "size %zu: set it to sizeof the struct (%s x = {.size = sizeof x})", *n,
+                 name);
+    else if (*n > full_size)
+        snprintf(
+            why, sizeof why,
+            "size %zu, where this library's is %zu: a program built for a later cablesim, or size not set",
+            *n, full_size);
+    else
+        return CS_OK;
+    return cs_sized_refuse(err, name, why);
+}
+
+cs_status cs_sized_put(void *out, const void *full, size_t full_size, const char *name, cs_error *err) {
+    size_t n;
+    if (caller_size(out, full_size, name, &n, err) != CS_OK) return CS_ERR_INVALID;
+    memcpy(out, full, n);
+    memcpy(out, &n, sizeof n);
+    if (err) err->status = CS_OK, err->message[0] = '\0';
+    return CS_OK;
+}
+
+cs_status cs_sized_take(void *full, size_t full_size, const void *given, const char *name, cs_error *err) {
+    size_t n;
+    if (caller_size(given, full_size, name, &n, err) != CS_OK) return CS_ERR_INVALID;
+    memcpy(full, given, n);
+    memcpy(full, &full_size, sizeof full_size);
+    return CS_OK;
 }

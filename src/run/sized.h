@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* A caller's definitions read at the sizes it gave them (def.h): whole structs of this library, the fields
- * the caller's lacked at their defaults, for cs_model_create to check and build from. */
+ * the caller's lacked at their defaults, for cs_model_create to check and build from; and the structs the
+ * engine fills for the caller (sim.h's views, cs_summary, cs_event) written at the caller's size. */
 #ifndef CS_SIZED_H
 #define CS_SIZED_H
 
@@ -21,5 +22,17 @@ typedef struct cs_defs {
 int cs_defs_take(cs_defs *d, const cs_barrier_def *barrier, const cs_vehicle_def *vehicle,
                  const cs_scenario_def *scenario, cs_error *err);
 void cs_defs_free(cs_defs *d);
+
+/* Hand full (this library's struct, of full_size bytes, that starts with its size) to the caller's out at
+ * out's size: CS_OK, or CS_ERR_INVALID with err filled (may be NULL) naming the struct if out is NULL or its
+ * size is less than a size_t's or larger than full_size. */
+cs_status cs_sized_put(void *out, const void *full, size_t full_size, const char *name, cs_error *err);
+/* Read the caller's struct given, of the size it starts with, over full (this library's, of full_size
+ * bytes, holding the defaults of what the caller's lacks): CS_OK, or CS_ERR_INVALID as cs_sized_put. */
+cs_status cs_sized_take(void *full, size_t full_size, const void *given, const char *name, cs_error *err);
+/* Fill err (may be NULL) with CS_ERR_MEMORY. */
+void cs_out_of_memory(cs_error *err);
+/* Refuse a fill of name: CS_ERR_INVALID with err filled (may be NULL) saying why. */
+cs_status cs_sized_refuse(cs_error *err, const char *name, const char *why);
 
 #endif

@@ -3,6 +3,7 @@
  * run and freed, and read through views. */
 #include "core/vec3.h"
 #include "run/run.h"
+#include "run/sized.h"
 #include "solver/work.h"
 
 #include <math.h>
@@ -87,8 +88,33 @@ void cs_state_free(cs_state *s) {
     free(s);
 }
 
-void cs_state_vehicle(const cs_model *model, const cs_state *s, cs_vehicle_view *out) {
-    memset(out, 0, sizeof *out);
+cs_status cs_state_summary(const cs_state *s, cs_summary *out, cs_error *err) {
+    cs_summary full = s->summary;
+    full.size = sizeof full;
+    full.penetration_beyond_m = cs_penetration_is_final(full.outcome) ? NAN : full.max_dynamic_penetration_m;
+    return cs_sized_put(out, &full, sizeof full, "cs_summary", err);
+}
+
+cs_status cs_state_event(const cs_state *s, int i, cs_event *out, cs_error *err) {
+    if (i < 0 || i >= s->event_count) {
+        char why[64];
+        snprintf(why, sizeof why, "no event %d (the run has %d)", i, s->event_count);
+        return cs_sized_refuse(err, "cs_event", why);
+    }
+    cs_event full = s->events[i];
+    full.size = sizeof full;
+    return cs_sized_put(out, &full, sizeof full, "cs_event", err);
+}
+
+/* Refuse element i of a model's n of a kind, naming the struct that was to hold it. */
+static cs_status no_such(cs_error *err, const char *name, const char *kind, int i, int n) {
+    char why[64];
+    snprintf(why, sizeof why, "no %s %d (the model has %d)", kind, i, n);
+    return cs_sized_refuse(err, name, why);
+}
+
+cs_status cs_state_vehicle(const cs_model *model, const cs_state *s, cs_vehicle_view *view, cs_error *err) {
+    cs_vehicle_view full = {.size = sizeof full}, *out = &full;
     out->t = s->t;
     v3_copy(out->position, s->pos);
     v3_copy(out->velocity, s->vel);
@@ -107,23 +133,25 @@ void cs_state_vehicle(const cs_model *model, const cs_state *s, cs_vehicle_view 
         cs_vehicle_corner_point(model, s, s->crush, k, 0.5 * (lo + hi),
                                 cs_corner_front(k) ? out->front_corners[k] : out->rear_corners[k - 2]);
     }
+    return cs_sized_put(view, &full, sizeof full, "cs_vehicle_view", err);
 }
 
-void cs_state_cable(const cs_model *model, const cs_state *s, int c, cs_cable_view *out) {
-    (void)model;
+cs_status cs_state_cable(const cs_model *model, const cs_state *s, int c, cs_cable_view *view,
+                         cs_error *err) {
+    if (c < 0 || c >= model->cable_count)
+        return no_such(err, "cs_cable_view", "cable", c, model->cable_count);
     const cs_cable_state *cs = &s->cables[c];
+    cs_cable_view full = {.size = sizeof full}, *out = &full;
     out->status = cs->status;
     out->engaged = cs->engaged;
     out->node_count = cs->node_count;
-    out->max_tension = 0.0;
-    out->max_strain = 0.0;
-    if (cs->status != CS_CABLE_INTACT) return;
-    for (int i = 0; i + 1 < cs->node_count; i++) {
+    for (int i = 0; cs->status == CS_CABLE_INTACT && i + 1 < cs->node_count; i++) {
         if (cs->tension[i] > out->max_tension) out->max_tension = cs->tension[i];
         double sm = cs->m[i + 1] - cs->m[i];
         double e = sm > 0.0 ? cs_span_length(cs, i) / sm - 1.0 : 0.0;
         if (e > out->max_strain) out->max_strain = e;
     }
+    return cs_sized_put(view, &full, sizeof full, "cs_cable_view", err);
 }
 
 int cs_state_cable_path(const cs_model *model, const cs_state *s, int c, double *xyz, double *tension,
@@ -138,25 +166,29 @@ int cs_state_cable_path(const cs_model *model, const cs_state *s, int c, double 
     return n;
 }
 
-void cs_state_anchor(const cs_model *model, const cs_state *s, int a, cs_anchor_view *out) {
+cs_status cs_state_anchor(const cs_model *model, const cs_state *s, int a, cs_anchor_view *view,
+                          cs_error *err) {
+    if (a < 0 || a > 1) return no_such(err, "cs_anchor_view", "anchor", a, 2);
     const cs_anchor_model *am = &model->anchors[a];
     const cs_anchor_state *as = &s->anchors[a];
-    memset(out, 0, sizeof *out);
+    cs_anchor_view full = {.size = sizeof full}, *out = &full;
     out->rigid = am->rigid, out->yielded = as->yielded, out->failed = as->failed;
     for (int k = 0; k < 2; k++)
         out->displacement[k] = as->u[k], out->force[k] = as->force[k];
     out->capacity = am->capacity, out->residual = am->residual, out->slide = as->slide;
     out->uplift = as->uplift, out->uplift_capacity = am->uplift_capacity;
+    return cs_sized_put(view, &full, sizeof full, "cs_anchor_view", err);
 }
 
 const char *cs_anchor_status_name(const cs_anchor_view *a) {
     return a->rigid ? "rigid" : a->failed ? "pulled_out" : a->yielded ? "sliding" : "holding";
 }
 
-void cs_state_post(const cs_model *model, const cs_state *s, int p, cs_post_view *out) {
+cs_status cs_state_post(const cs_model *model, const cs_state *s, int p, cs_post_view *view, cs_error *err) {
+    if (p < 0 || p >= model->post_count) return no_such(err, "cs_post_view", "post", p, model->post_count);
     const cs_post_state *ps = &s->posts[p];
     const cs_post_model *pm = &model->posts[p];
-    memset(out, 0, sizeof *out);
+    cs_post_view full = {.size = sizeof full}, *out = &full;
     out->status = ps->status;
     out->tilt = hypot(ps->tilt[0], ps->tilt[1]);
     if (out->tilt > 0.0)
@@ -167,4 +199,5 @@ void cs_state_post(const cs_model *model, const cs_state *s, int p, cs_post_view
     out->withdrawal = ps->withdrawing ? ps->pull : 0.0;
     out->moment_capacity = cs_post_moment_cap(pm, ps);
     cs_post_attachment(model, p, ps->tilt, ps->pull, pm->height, out->top);
+    return cs_sized_put(view, &full, sizeof full, "cs_post_view", err);
 }

@@ -203,17 +203,27 @@ static int load(cs_loader *l, int f, cs_model_input *out) {
     return l->error_count ? -1 : 0;
 }
 
+/* Hand a load's model (rc its result) back at the caller's size, recording why if the size is refused. */
+static cs_status hand_back(cs_loader *l, int rc, const cs_model_input *full, cs_model_input *out) {
+    cs_error err;
+    if (cs_status_put_sized(out, full, sizeof *full, "cs_model_input", &err) != CS_OK) {
+        cs_err_at(l, INT_MIN, 0, 0, "%s", err.message);
+        return CS_ERR_INVALID;
+    }
+    return rc ? CS_ERR_INVALID : CS_OK;
+}
+
 cs_status cs_loader_load(cs_loader *l, const char *path, cs_model_input *out) {
-    memset(out, 0, sizeof *out);
+    cs_model_input full = {.size = sizeof full};
     set_scope(l, path);
-    return load(l, cs_file_load(l, path, NULL), out) ? CS_ERR_INVALID : CS_OK;
+    return hand_back(l, load(l, cs_file_load(l, path, NULL), &full), &full, out);
 }
 
 cs_status cs_loader_load_buffer(cs_loader *l, const char *name, const char *data, size_t size,
                                 cs_model_input *out) {
-    memset(out, 0, sizeof *out);
+    cs_model_input full = {.size = sizeof full};
     set_scope(l, name);
-    return load(l, cs_data_load(l, name, data, size), out) ? CS_ERR_INVALID : CS_OK;
+    return hand_back(l, load(l, cs_data_load(l, name, data, size), &full), &full, out);
 }
 
 /* ---- the library ---- */
@@ -315,6 +325,7 @@ static int engine_set(const cs_loader *l, int w, long i, int soil) {
 
 cs_model *cs_loader_build(cs_loader *l, const cs_model_input *in) {
     cs_error err = {0};
+    if (cs_status_input(in, &err) != CS_OK) return cs_err_at(l, INT_MIN, 0, 0, "%s", err.message), NULL;
     cs_model *m = cs_model_create(&in->barrier, &in->vehicle, &in->scenario, &err);
     if (m) return m;
     long i = -1;

@@ -8,6 +8,7 @@
 #include "cablesim/loader.h"
 #include "fnv.h"
 #include "schema.h"
+#include "status.h"
 
 static unsigned long long bytes(unsigned long long h, const void *data, size_t n) {
     return cs_io_fnv(h, data, n);
@@ -51,6 +52,7 @@ static unsigned long long fields(unsigned long long h, const cs_table *t, const 
 }
 
 unsigned long long cs_model_input_hash(const cs_model_input *in) {
+    if (cs_status_input(in, NULL) != CS_OK) return 0;
     unsigned long long h = CS_IO_FNV_BASIS;
     const cs_barrier_def *b = &in->barrier;
     h = count(h, "cables", b->cable_count);

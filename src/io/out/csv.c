@@ -108,12 +108,13 @@ int cs_timeseries_csv(FILE *f, const cs_record *rec, char *why, size_t why_size)
 }
 
 int cs_events_csv(FILE *f, const cs_state *state, char *why, size_t why_size) {
-    fprintf(
-        f,
-        "t [s],type,element_kind,element,value,value_unit,cable_end,cable,post\n"); /* value: in its row's unit */
+    fprintf(f, "t [s],type,element_kind,element,value,value_unit,cable_end,cable,post\n"); /* value: in its
+                                                                                              row's unit */
     cs_wout w = {f, 0, ""};
     for (int i = 0; i < cs_state_event_count(state) && !w.bad; i++) {
-        const cs_event *e = cs_state_event(state, i);
+        cs_event e_held = {.size = sizeof e_held};
+        cs_state_event(state, i, &e_held, NULL);
+        const cs_event *e = &e_held;
         cs_w_num(&w, e->t, "an event's time");
         fprintf(f, ",%s,%s,%d,", cs_event_type_name(e->type), cs_element_kind_name(e->element_kind),
                 e->element);

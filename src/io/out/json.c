@@ -374,8 +374,8 @@ void cs_json_evaluation(cs_wout *w, int *first, const cs_run_info *info, cs_json
 
 int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model *model,
                                const cs_state *state, const cs_run_info *info, char *why, size_t why_size) {
-    cs_summary s;
-    cs_state_summary(state, &s);
+    cs_summary s = {.size = sizeof s};
+    cs_state_summary(state, &s, NULL);
     cs_wout w = {f, 0, ""};
     int first = 1;
     fprintf(f, "{");
@@ -436,8 +436,8 @@ int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model
         fprintf(f, "%d", counts[k]);
     }
     for (int a = 0; a < 2; a++) {
-        cs_anchor_view av;
-        cs_state_anchor(model, state, a, &av);
+        cs_anchor_view av = {.size = sizeof av};
+        cs_state_anchor(model, state, a, &av, NULL);
         char key[48];
         snprintf(key, sizeof key, "anchor_%s", a ? "end" : "start");
         jkey(&w, &first, key);
@@ -469,7 +469,9 @@ int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model
     jkey(&w, &first, "events");
     fprintf(f, "[");
     for (int i = 0; i < cs_state_event_count(state); i++) {
-        const cs_event *e = cs_state_event(state, i);
+        cs_event e_held = {.size = sizeof e_held};
+        cs_state_event(state, i, &e_held, NULL);
+        const cs_event *e = &e_held;
         char element[48];
         int ef = 1;
         if (e->element_kind == CS_ELEMENT_VEHICLE)

@@ -17,8 +17,10 @@ static int write_plots(cs_outdir *out, const cs_model_input *in, const cs_state 
         snprintf(why, why_size, "out of memory");
         return -1;
     }
-    for (int i = 0; i < n; i++)
-        events[i] = *cs_state_event(state, i);
+    for (int i = 0; i < n; i++) {
+        events[i].size = sizeof events[i];
+        cs_state_event(state, i, &events[i], NULL);
+    }
     static const cs_plot_format formats[] = {CS_PLOT_PNG, CS_PLOT_SVG};
     int box = info && info->motion && info->criteria_count > 0;
     cs_figure_data d = {
@@ -53,13 +55,14 @@ int cs_write_run_files(cs_outdir *out, const cs_model_input *in, const cs_model 
 
 cs_status cs_write_outputs(const char *dir, const cs_model_input *in, const cs_model *model,
                            const cs_state *state, const cs_record *rec, int flags, cs_error *err) {
+    if (cs_status_input(in, err) != CS_OK) return CS_ERR_INVALID;
     char why[CS_MESSAGE_SIZE];
     size_t why_size = sizeof why;
     cs_outdir out;
     cs_run_info info;
     cs_run_info_of(&info, in, state);
-    cs_summary sm;
-    cs_state_summary(state, &sm);
+    cs_summary sm = {.size = sizeof sm};
+    cs_state_summary(state, &sm, NULL);
     cs_run_info_motion(&info, in, rec, &sm);
     int rc = cs_out_open(&out, dir, 0, why, why_size);
     if (rc == 0)
@@ -81,6 +84,7 @@ cs_status cs_write_events(FILE *f, const cs_state *state, cs_error *err) {
 
 cs_status cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_model *model,
                                 const cs_state *state, cs_error *err) {
+    if (cs_status_input(in, err) != CS_OK) return CS_ERR_INVALID;
     cs_run_info info;
     cs_run_info_of(&info, in, state);
     char why[CS_MESSAGE_SIZE];

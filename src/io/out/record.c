@@ -71,8 +71,8 @@ static int grow(cs_record *rec) {
 void cs_record_frame(const cs_model *model, const cs_state *state, void *user) {
     cs_record *rec = user;
     if (rec->failed) return;
-    cs_summary sm;
-    cs_state_summary(state, &sm);
+    cs_summary sm = {.size = sizeof sm};
+    cs_state_summary(state, &sm, NULL);
     int last = sm.outcome != CS_RUNNING;
     if (rec->calls++ % rec->stride != 0 && !last) return;
     if (rec->frame_count == rec->max_frames) thin(rec);
@@ -81,19 +81,27 @@ void cs_record_frame(const cs_model *model, const cs_state *state, void *user) {
         return;
     }
     int f = rec->frame_count;
-    cs_state_vehicle(model, state, &rec->vehicle[f]);
+    rec->vehicle[f].size = sizeof rec->vehicle[f];
+    cs_state_vehicle(model, state, &rec->vehicle[f], NULL);
     cs_state_energy(state, &rec->energy[f]);
     for (int c = 0; c < rec->cable_count; c++) {
         size_t k = (size_t)f * (size_t)rec->cable_count + (size_t)c;
-        cs_state_cable(model, state, c, &rec->cables[k]);
+        rec->cables[k].size = sizeof rec->cables[k];
+        cs_state_cable(model, state, c, &rec->cables[k], NULL);
         rec->path_count[k] =
             cs_state_cable_path(model, state, c, rec->path_xyz + k * (size_t)rec->max_nodes * 3,
                                 rec->path_tension + k * (size_t)rec->max_nodes, rec->max_nodes);
     }
-    for (int p = 0; p < rec->post_count; p++)
-        cs_state_post(model, state, p, &rec->posts[(size_t)f * (size_t)rec->post_count + (size_t)p]);
-    for (int a = 0; a < 2; a++)
-        cs_state_anchor(model, state, a, &rec->anchors[(size_t)f * 2 + (size_t)a]);
+    for (int p = 0; p < rec->post_count; p++) {
+        cs_post_view *v = &rec->posts[(size_t)f * (size_t)rec->post_count + (size_t)p];
+        v->size = sizeof *v;
+        cs_state_post(model, state, p, v, NULL);
+    }
+    for (int a = 0; a < 2; a++) {
+        cs_anchor_view *v = &rec->anchors[(size_t)f * 2 + (size_t)a];
+        v->size = sizeof *v;
+        cs_state_anchor(model, state, a, v, NULL);
+    }
     rec->frame_count++;
 }
 

@@ -4,6 +4,7 @@
 
 #include "cablesim/units.h"
 #include "out/htmltext.h"
+#include "status.h"
 #include "writers.h"
 
 /* Events that are the barrier or the vehicle giving way, listed one by one; the posts' yielding (a hinge
@@ -15,20 +16,24 @@ static int yielding(cs_event_type t) {
 static void events(FILE *f, const cs_state *state) {
     enum { LISTED = 30 };
     int n = cs_state_event_count(state), failures = 0, hinges = 0, footings = 0;
-    const cs_event *first_yield = NULL;
+    cs_event first_yield = {0};
     for (int i = 0; i < n; i++) {
-        const cs_event *e = cs_state_event(state, i);
+        cs_event e_held = {.size = sizeof e_held};
+        cs_state_event(state, i, &e_held, NULL);
+        const cs_event *e = &e_held;
         if (!yielding(e->type)) {
             failures++;
             continue;
         }
         hinges += e->type == CS_EVENT_POST_HINGE;
         footings += e->type == CS_EVENT_FOOTING_ROTATION;
-        if (!first_yield) first_yield = e;
+        if (hinges + footings == 1) first_yield = *e;
     }
     fprintf(f, "  failure events       %d, in order (every event of the run: events.csv)\n", failures);
     for (int i = 0, listed = 0; i < n; i++) {
-        const cs_event *e = cs_state_event(state, i);
+        cs_event e_held = {.size = sizeof e_held};
+        cs_state_event(state, i, &e_held, NULL);
+        const cs_event *e = &e_held;
         if (yielding(e->type)) continue;
         if (listed++ == LISTED) {
             fprintf(f, "    ... %d more in events.csv\n", failures - LISTED);
@@ -49,13 +54,13 @@ static void events(FILE *f, const cs_state *state) {
             fprintf(f, "    %8.4f s  %-19s %s %d\n", e->t, cs_event_type_name(e->type),
                     cs_element_kind_name(e->element_kind), e->element);
     }
-    if (first_yield)
+    if (hinges + footings)
         fprintf(
             f,
             "  posts yielding       %d plastic hinge%s at the base, %d footing%s turning in the soil (the "
             "first at %.4f s, post %d)\n",
-            hinges, hinges == 1 ? "" : "s", footings, footings == 1 ? "" : "s", first_yield->t,
-            first_yield->element);
+            hinges, hinges == 1 ? "" : "s", footings, footings == 1 ? "" : "s", first_yield.t,
+            first_yield.element);
     else
         fprintf(f, "  posts yielding       none\n");
 }
@@ -107,6 +112,11 @@ static void occupant(FILE *f, const cs_run_info *info) {
 }
 
 void cs_write_summary_text(FILE *f, const cs_model_input *in, const cs_model *model, const cs_state *state) {
+    cs_error err;
+    if (cs_status_input(in, &err) != CS_OK) {
+        fprintf(f, "%s\n", err.message);
+        return;
+    }
     cs_run_info info;
     cs_run_info_of(&info, in, state);
     cs_write_summary_text_with(f, in, model, state, &info);
@@ -114,8 +124,8 @@ void cs_write_summary_text(FILE *f, const cs_model_input *in, const cs_model *mo
 
 void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_model *model,
                                 const cs_state *state, const cs_run_info *info) {
-    cs_summary s;
-    cs_state_summary(state, &s);
+    cs_summary s = {.size = sizeof s};
+    cs_state_summary(state, &s, NULL);
     const cs_scenario_def *sc = &in->scenario;
     cs_term_text(f, in->name);
     fprintf(f, ": ");
@@ -185,8 +195,8 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
             s.posts_failed_rotation_right, s.posts_failed_shear_left, s.posts_failed_shear_right,
             s.posts_failed_pullout_left, s.posts_failed_pullout_right);
     for (int a = 0; a < 2; a++) {
-        cs_anchor_view av;
-        cs_state_anchor(model, state, a, &av);
+        cs_anchor_view av = {.size = sizeof av};
+        cs_state_anchor(model, state, a, &av, NULL);
         if (av.rigid) continue;
         fprintf(f,
                 "  %s anchor         %s, moved %.3f m (peak %.1f kN, %.1f kip; residual %.1f kN, %.1f "

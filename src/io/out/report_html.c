@@ -554,8 +554,8 @@ static void cables_and_losses(jw *j, int *first, const cs_state *state, const cs
 int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *state, const cs_record *r,
                          const cs_run_info *info, char *why, size_t why_size) {
     jw j = {{f, 0, ""}, "", PAGE_DIGITS};
-    cs_summary s;
-    cs_state_summary(state, &s);
+    cs_summary s = {.size = sizeof s};
+    cs_state_summary(state, &s, NULL);
     const cs_scenario_def *sc = &in->scenario;
     const cs_vehicle_def *v = &in->vehicle;
     const cs_barrier_def *b = &in->barrier;
@@ -664,11 +664,14 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
     num(&j, b->end_anchor.z);
     fputs("]]}", f);
     write_design(&j, &first, b);
-    /* events: [t, type, element kind, element, value (SI)], a termination event's cable end after */
+    /* events: [t, type, element kind, element, value (SI)], then a termination event's cable end, the
+     * cable a post let go and the post at whose hole a rope broke, as far as one of them is given */
     key(&j, &first, "events");
     fputc('[', f);
     for (int i = 0; i < cs_state_event_count(state); i++) {
-        const cs_event *e = cs_state_event(state, i);
+        cs_event e_held = {.size = sizeof e_held};
+        cs_state_event(state, i, &e_held, NULL);
+        const cs_event *e = &e_held;
         fprintf(f, "%s\n[", i ? "," : "");
         snprintf(j.what, sizeof j.what, "an event's time or value");
         num(&j, e->t);
@@ -678,8 +681,9 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
         cs_json_page_string(f, cs_element_kind_name(e->element_kind));
         fprintf(f, ",%d,", e->element);
         num(&j, e->value);
-        if (e->cable_end >= 0 || e->cable >= 0) fprintf(f, ",%d", e->cable_end);
-        if (e->cable >= 0) fprintf(f, ",%d", e->cable); /* the cable a post let go */
+        if (e->cable_end >= 0 || e->cable >= 0 || e->post >= 0) fprintf(f, ",%d", e->cable_end);
+        if (e->cable >= 0 || e->post >= 0) fprintf(f, ",%d", e->cable); /* the cable a post let go */
+        if (e->post >= 0) fprintf(f, ",%d", e->post); /* the post at whose hole a rope broke */
         fputc(']', f);
     }
     fputc(']', f);

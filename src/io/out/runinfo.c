@@ -41,8 +41,8 @@ void cs_run_info_motion(cs_run_info *info, const cs_model_input *in, const cs_re
 
 void cs_run_info_of(cs_run_info *info, const cs_model_input *in, const cs_state *state) {
     *info = (cs_run_info){.model_hash = cs_model_input_hash(in)};
-    cs_summary s;
-    cs_state_summary(state, &s);
+    cs_summary s = {.size = sizeof s};
+    cs_state_summary(state, &s, NULL);
     cs_run_info_rate(info, in, &s);
 }
 

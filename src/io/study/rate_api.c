@@ -12,13 +12,11 @@ cs_status cs_standard_from_name(const char *name, cs_standard *out) {
 
 cs_status cs_rate(const cs_model *model, const cs_state *state, cs_standard standard,
                   const char *vehicle_class, cs_rating_result *out, cs_error *err) {
-    if (!out || out->size < sizeof out->size || out->size > sizeof *out)
-        return cs_status_set(err, CS_ERR_INVALID,
-                             "the rating's size is not one this library knows: set it to sizeof the struct");
+    if (cs_status_sized(out, sizeof *out, "cs_rating_result", err) != CS_OK) return CS_ERR_INVALID;
     if ((unsigned)standard >= CS_STANDARD_COUNT)
         return cs_status_set(err, CS_ERR_INVALID, "no such standard");
-    cs_summary sm;
-    cs_state_summary(state, &sm);
+    cs_summary sm = {.size = sizeof sm};
+    cs_state_summary(state, &sm, NULL);
     if (sm.outcome == CS_RUNNING)
         return cs_status_set(err, CS_ERR_INVALID, "the run has not ended: rate it once cs_run returns");
     const cs_scenario_def *sc = cs_model_scenario(model);
@@ -36,8 +34,5 @@ cs_status cs_rate(const cs_model *model, const cs_state *state, cs_standard stan
     snprintf(full.label, sizeof full.label, "%s", r.label);
     snprintf(full.note, sizeof full.note, "%s", r.note);
     cs_rating_text(&r, full.text, sizeof full.text);
-    size_t n = out->size;
-    memcpy(out, &full, n);
-    out->size = n;
-    return cs_status_set(err, CS_OK, "");
+    return cs_status_put_sized(out, &full, sizeof full, "cs_rating_result", err);
 }

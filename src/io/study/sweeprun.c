@@ -56,7 +56,7 @@ void cs_sweep_run(const cs_sweep_spec *s, const double *xrow, cs_loader *loader,
         snprintf(r->error, sizeof r->error, "%s", why);
         return;
     }
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     cs_model *m = NULL;
     if (load_run(l, s, xrow, -1, 0, &in) != 0 || !(m = cs_loader_build(l, &in))) {
         r->status = CS_RUN_BAD_MODEL;
@@ -80,10 +80,12 @@ void cs_sweep_run(const cs_sweep_spec *s, const double *xrow, cs_loader *loader,
         r->status = CS_RUN_FAILED;
         snprintf(r->error, sizeof r->error, "%s", err.message);
     }
-    cs_state_summary(state, &r->summary);
+    r->summary.size = sizeof r->summary;
+    cs_state_summary(state, &r->summary, NULL);
     for (int i = 0; i < cs_state_event_count(state); i++) {
-        cs_event_type t = cs_state_event(state, i)->type;
-        if (t >= 0 && t < CS_EVENT_TYPE_COUNT) r->event_counts[t]++;
+        cs_event e = {.size = sizeof e};
+        cs_state_event(state, i, &e, NULL);
+        if (e.type >= 0 && e.type < CS_EVENT_TYPE_COUNT) r->event_counts[e.type]++;
     }
     if (r->status == CS_RUN_OK) {
         cs_rating_rules rules = cs_default_rating_rules();
@@ -141,7 +143,7 @@ static int check_one(cs_sweep_spec *s, const double *xrow, int var, double x_var
         cs_sweep_error(s, 0, 0, "%s", why);
         return -1;
     }
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     cs_model *m = NULL;
     int rc = load_run(l, s, xrow, var, x_var, &in) == 0 && (m = cs_loader_build(l, &in)) ? 0 : -1;
     if (rc != 0) map_errors(s, l, xrow, var, x_var, line, col);
@@ -168,7 +170,7 @@ int cs_sweep_model_hash(const cs_sweep_spec *s, unsigned long long *hash) {
     if (!l) return -1;
     for (int k = 0; k < s->set_count; k++)
         cs_loader_set(l, s->sets[k]);
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     int rc = cs_loader_load(l, s->model, &in);
     if (rc == 0) *hash = cs_model_input_hash(&in);
     cs_loader_free(l);

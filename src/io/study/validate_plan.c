@@ -127,7 +127,7 @@ static void add_refinement(cs_validate_suite *s, int t, int k) {
         snprintf(set, sizeof set, "scenario.%s=%s", cs_validate_refinements[t].setting,
                  cs_validate_refinements[t].values[d]);
         const char *sets[] = {set, NULL};
-        cs_model_input in;
+        cs_model_input in = {.size = sizeof in};
         int rc = load_crash(s, k, sets, &in);
         size_t f = cs_validate_refinements[t].field;
         int same = rc == 0 && s->base_loaded[k] &&
@@ -176,7 +176,7 @@ static int add_inputs(cs_validate_suite *s, int k, int only, const double *u) {
         }
     }
     sets[n] = NULL;
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     int rc = load_crash(s, k, sets, &in);
     return add_loaded(s, rc, &in);
 }
@@ -265,7 +265,7 @@ static void add_readings(cs_validate_suite *s, int k) {
     for (int r = 0; r < CS_VAL_READINGS; r++) {
         s->reading[k][r] = -1;
         if (!strstr(cs_validate_readings[r].tests, cs_validate_crash_names[k])) continue;
-        cs_model_input in;
+        cs_model_input in = {.size = sizeof in};
         int rc = load_crash(s, k, cs_validate_readings[r].sets, &in);
         if (rc == 0 && cs_validate_readings[r].no_rails) in.barrier.rail_count = 0;
         s->reading[k][r] = add_loaded(s, rc, &in);
@@ -308,7 +308,7 @@ const cs_validate_road_reading cs_validate_road_readings[CS_VAL_ROAD_READINGS] =
 static void add_road(cs_validate_suite *s, int k) {
     char name[64];
     snprintf(name, sizeof name, "roadside/%s", cs_validate_road_names[k]);
-    cs_model_input in;
+    cs_model_input in = {.size = sizeof in};
     s->road[k] = add_loaded(s, load_example(s, name, NULL, &in), &in);
     for (int r = 0; r < CS_VAL_ROAD_READINGS; r++) {
         s->road_reading[k][r] = -1;
@@ -327,7 +327,7 @@ void cs_validate_plan(cs_validate_suite *s) {
     int crash = cs_validate_wanted(only, "crash"), convergence = cs_validate_wanted(only, "convergence"),
         sensitivity = cs_validate_wanted(only, "sensitivity"), reads = cs_validate_wanted(only, "readings");
     for (int k = 0; k < CS_VAL_CRASH; k++) {
-        cs_model_input in;
+        cs_model_input in = {.size = sizeof in};
         int rc = crash || convergence || sensitivity || reads ? load_crash(s, k, NULL, &in) : -1;
         s->base_loaded[k] = rc == 0;
         if (rc == 0) s->base_scenario[k] = in.scenario;

@@ -28,10 +28,11 @@ const char *cs_validate_unknown_part(const char *only, size_t *len) {
 }
 
 static void collect(const cs_model *m, const cs_state *s, cs_validate_result *r) {
-    cs_state_summary(s, &r->sm);
+    r->sm.size = sizeof r->sm;
+    cs_state_summary(s, &r->sm, NULL);
     for (int a = 0; a < 2; a++) {
-        cs_anchor_view v;
-        cs_state_anchor(m, s, a, &v);
+        cs_anchor_view v = {.size = sizeof v};
+        cs_state_anchor(m, s, a, &v, NULL);
         r->slide[a] = v.rigid ? -1.0 : v.slide;
     }
     for (int c = 0; c < 2; c++)
@@ -41,7 +42,9 @@ static void collect(const cs_model *m, const cs_state *s, cs_validate_result *r)
     r->post_failure = -1;
     r->released = 0;
     for (int i = 0; i < cs_state_event_count(s); i++) {
-        const cs_event *e = cs_state_event(s, i);
+        cs_event e_held = {.size = sizeof e_held};
+        cs_state_event(s, i, &e_held, NULL);
+        const cs_event *e = &e_held;
         r->released += e->type == CS_EVENT_CABLE_RELEASE;
         if (r->post_failure < 0 && (e->type == CS_EVENT_POST_ROTATION_LIMIT ||
                                     e->type == CS_EVENT_POST_PULLOUT || e->type == CS_EVENT_POST_SHEAR))
