@@ -2,6 +2,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "load/runread.h"
 #include "cablesim/units.h"
+#include "load/csvread.h"
 
 #include <errno.h>
 #include <json-c/json.h>
@@ -51,36 +52,13 @@ static int read_all(const char *path, csv_file *f, size_t *lines, char *why, siz
     return 0;
 }
 
-/* Split the line at *p (ending at '\n' or '\0') into at most max cells, NUL-terminating each in place;
- * *p moves to the next line. Returns the number of cells; col[] gets each cell's 1-based column. */
-static int split_line(char **p, char **cells, int *col, int max) {
-    char *s = *p, *start = s;
-    int n = 0;
-    char *end = strchr(s, '\n');
-    if (end) *end = '\0';
-    char *next = end ? end + 1 : s + strlen(s);
-    size_t len = strlen(s);
-    if (len > 0 && s[len - 1] == '\r') s[len - 1] = '\0';
-    while (n < max) {
-        cells[n] = s, col[n] = (int)(s - start) + 1;
-        n++;
-        char *comma = strchr(s, ',');
-        if (!comma) break;
-        *comma = '\0';
-        s = comma + 1;
-    }
-    *p = next;
-    return n;
-}
-
-/* The next data row at *p into cells (at most max): 1 for a row of the header's nh cells, 0 for a blank
- * line, -1 (and why, at the row's line) for a row of another width. */
-static int next_row(char **p, char **cells, int *col, int max, int nh, const char *path, size_t line,
-                    char *why, size_t why_size) {
-    int nc = split_line(p, cells, col, max);
-    if (nc == 1 && cells[0][0] == '\0') return 0;
-    if (nc == nh) return 1;
-    snprintf(why, why_size, "%s:%zu:1: %d cells, the header has %d", path, line, nc, nh);
+/* The next data row of rows, blank lines skipped: 1 for a row of the header's nh cells, 0 at the end, -1
+ * (and why, at the row's line) for a row of another width. */
+static int next_row(cs_csv *rows, int nh, const char *path, char *why, size_t why_size) {
+    int rc = cs_csv_next(rows);
+    if (rc < 0) snprintf(why, why_size, "%s: %s", path, rows->why); /* out of memory */
+    if (rc <= 0 || rows->count == nh) return rc;
+    snprintf(why, why_size, "%s:%ld:1: %d cells, the header has %d", path, rows->line, rows->count, nh);
     return -1;
 }
 
@@ -244,16 +222,11 @@ static int run_header(char *const *head, int nh, run_columns *c) {
 
 /* Whether text's first line is the header of a run's timeseries.csv: 1, 0, or -1 out of memory. */
 static int is_run_series(const char *text) {
-    size_t n = strcspn(text, "\n");
-    char *line = malloc(n + 1), **cells = malloc(MAX_COLS * sizeof *cells), *p = line;
-    int *col = malloc(MAX_COLS * sizeof *col), is = -1;
-    if (line && cells && col) {
-        memcpy(line, text, n);
-        line[n] = '\0';
-        run_columns c;
-        is = run_header(cells, split_line(&p, cells, col, MAX_COLS), &c);
-    }
-    free(line), free(cells), free(col);
+    cs_csv rows;
+    cs_csv_open_text(&rows, text, CS_CSV_REST, MAX_COLS);
+    run_columns c;
+    int is = cs_csv_next(&rows) < 0 ? -1 : run_header(rows.cell, rows.count, &c);
+    cs_csv_close(&rows);
     return is;
 }
 
@@ -262,27 +235,29 @@ static int read_run_series(const char *path, cs_trace *tr, char *why, size_t why
     csv_file f;
     size_t rows;
     if (read_all(path, &f, &rows, why, why_size) != 0) return -1;
-    char **cells = malloc(MAX_COLS * sizeof *cells), **head = malloc(MAX_COLS * sizeof *head);
-    int *col = malloc(MAX_COLS * sizeof *col), rc = -1;
-    char *p = f.text;
-    if (!cells || !head || !col || alloc_trace(tr, rows) != 0) {
+    cs_csv csv;
+    cs_csv_open_text(&csv, f.text, CS_CSV_REST, MAX_COLS);
+    int *tension = NULL, rc = -1, nh = 0, row;
+    if (alloc_trace(tr, rows) != 0 || cs_csv_next(&csv) < 0 ||
+        !(tension = calloc(MAX_COLS, sizeof *tension))) {
         snprintf(why, why_size, "%s: out of memory", path);
         goto done;
     }
-    int nh = split_line(&p, head, col, MAX_COLS);
+    nh = csv.count;
     run_columns c;
-    if (!run_header(head, nh, &c)) {
+    if (!run_header(csv.cell, nh, &c)) {
         snprintf(why, why_size,
                  "%s:1:1: not a run's time history (expected t [s], vx [m/s], ... penetration [m])", path);
         goto done;
     }
+    for (int k = 0; k < nh; k++) /* the ropes' columns */
+        tension[k] = strncmp(csv.cell[k], "cable", 5) == 0 && strstr(csv.cell[k], "_max_tension [N]");
     int it = c.t, ivx = c.vx, ivy = c.vy, iax = c.ax, iay = c.ay, isp = c.speed, id50 = c.decel_50ms,
         ipen = c.penetration;
     double u0[2] = {0.0, 0.0};
-    for (size_t line = 2; *p; line++) {
-        int row = next_row(&p, cells, col, MAX_COLS, nh, path, line, why, why_size);
-        if (row < 0) goto done;
-        if (row == 0) continue;
+    csv.flags |= CS_CSV_BLANKS;
+    while ((row = next_row(&csv, nh, path, why, why_size)) > 0) {
+        char **cells = csv.cell;
         size_t i = tr->n++;
         tr->t[i] = strtod(cells[it], NULL);
         double vx = strtod(cells[ivx], NULL), vy = strtod(cells[ivy], NULL), v = hypot(vx, vy);
@@ -293,12 +268,13 @@ static int read_run_series(const char *path, cs_trace *tr, char *why, size_t why
         tr->y[CS_TRACE_PENETRATION][i] = strtod(cells[ipen], NULL);
         double tmax = NAN;
         for (int k = 0; k < nh; k++) /* the tautest rope at this time */
-            if (strncmp(head[k], "cable", 5) == 0 && strstr(head[k], "_max_tension [N]")) {
+            if (tension[k]) {
                 double x = strtod(cells[k], NULL);
                 if (!(x <= tmax)) tmax = x;
             }
         tr->y[CS_TRACE_TENSION][i] = tmax;
     }
+    if (row < 0) goto done;
     /* the column is 0 until a whole window has passed: the average is undefined there, as the average of
      * a measured trace is (cs_trace_average_50ms) */
     for (size_t i = 0; i < tr->n && tr->t[i] - WINDOW < tr->t[0] - 1e-12; i++)
@@ -308,7 +284,8 @@ static int read_run_series(const char *path, cs_trace *tr, char *why, size_t why
     derive(tr);
     rc = 0;
 done:
-    free(cells), free(head), free(col), free(f.text);
+    free(tension), free(f.text);
+    cs_csv_close(&csv);
     if (rc != 0) cs_trace_free(tr);
     return rc;
 }
@@ -338,8 +315,8 @@ int cs_trace_read_measured(const char *path, cs_units *units, cs_trace *tr, char
     size_t rows;
     if (read_all(path, &f, &rows, why, why_size) != 0) return -1;
     enum { MEASURED_COLS = 16 };
-    char *head[MEASURED_COLS], *cells[MEASURED_COLS], *p = f.text, unit[64], text[96];
-    int hcol[MEASURED_COLS], col[MEASURED_COLS], rc = -1, target[MEASURED_COLS];
+    char unit[64], text[96];
+    int rc = -1, target[MEASURED_COLS], row;
     double factor[MEASURED_COLS];
     int is_run = is_run_series(f.text);
     if (is_run != 0) { /* a run's own timeseries.csv, read as a run's (or out of memory) */
@@ -347,11 +324,14 @@ int cs_trace_read_measured(const char *path, cs_units *units, cs_trace *tr, char
         if (is_run < 0) snprintf(why, why_size, "%s: out of memory", path);
         return is_run < 0 ? -1 : read_run_series(path, tr, why, why_size);
     }
-    int nh = split_line(&p, head, hcol, MEASURED_COLS);
-    if (alloc_trace(tr, rows + 1) != 0) {
+    cs_csv csv;
+    cs_csv_open_text(&csv, f.text, CS_CSV_REST, MEASURED_COLS);
+    if (alloc_trace(tr, rows + 1) != 0 || cs_csv_next(&csv) < 0) {
         snprintf(why, why_size, "%s: out of memory", path);
         goto done;
     }
+    int nh = csv.count, *hcol = csv.cell_col;
+    char **head = csv.cell;
     if (nh < 2) {
         snprintf(why, why_size,
                  "%s:1:1: a header of a time column and at least one more (expected e.g. "
@@ -395,10 +375,11 @@ int cs_trace_read_measured(const char *path, cs_units *units, cs_trace *tr, char
             }
         tr->have[target[j]] = 1;
     }
-    for (size_t line = 2; *p; line++) {
-        int row = next_row(&p, cells, col, MEASURED_COLS, nh, path, line, why, why_size);
-        if (row < 0) goto done;
-        if (row == 0) continue;
+    csv.flags |= CS_CSV_BLANKS;
+    while ((row = next_row(&csv, nh, path, why, why_size)) > 0) {
+        char **cells = csv.cell;
+        int *col = csv.cell_col;
+        long line = csv.line;
         size_t i = tr->n;
         for (int j = 0; j < nh; j++) {
             char *end;
@@ -407,7 +388,7 @@ int cs_trace_read_measured(const char *path, cs_units *units, cs_trace *tr, char
                 end++;
             int blank = cells[j][strspn(cells[j], " ")] == '\0';
             if ((*end != '\0' || !isfinite(x)) && !(blank && j > 0)) {
-                snprintf(why, why_size, "%s:%zu:%d: '%s' is not a number", path, line, col[j], cells[j]);
+                snprintf(why, why_size, "%s:%ld:%d: '%s' is not a number", path, line, col[j], cells[j]);
                 goto done;
             }
             if (j == 0)
@@ -417,12 +398,13 @@ int cs_trace_read_measured(const char *path, cs_units *units, cs_trace *tr, char
         }
         if (i > 0 && !(tr->t[i] > tr->t[i - 1])) {
             snprintf(why, why_size,
-                     "%s:%zu:%d: the time goes back or stands (expected it to grow row by row)", path, line,
+                     "%s:%ld:%d: the time goes back or stands (expected it to grow row by row)", path, line,
                      col[0]);
             goto done;
         }
         tr->n++;
     }
+    if (row < 0) goto done;
     if (tr->n < 2) {
         snprintf(why, why_size, "%s:2:1: fewer than two rows of data", path);
         goto done;
@@ -439,6 +421,7 @@ int cs_trace_read_measured(const char *path, cs_units *units, cs_trace *tr, char
     rc = 0;
 done:
     free(f.text);
+    cs_csv_close(&csv);
     if (rc != 0) cs_trace_free(tr);
     return rc;
 }

@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: MIT */
-/* The files of data/validation/ (validation.h): a small CSV reader (no quoting: no value holds a comma)
- * and the rows each file must have. */
+/* The files of data/validation/ (validation.h), read with the CSV reader (no quoting: no value holds a
+ * comma), and the rows each file must have. */
 #define _POSIX_C_SOURCE 200809L
 #include "validation.h"
+#include "load/csvread.h"
 
 #include <errno.h>
 #include <math.h>
@@ -11,17 +12,15 @@
 #include <stdlib.h>
 #include <string.h>
 
-enum { MAX_COLS = 16, LINE = 512 };
+enum { MAX_COLS = 16, MAX_LINE = 510 }; /* values and characters of a line */
 
 typedef struct csv {
     char path[1100];
     FILE *f;
-    int line;               /* of the line last read */
-    int cols;               /* as the header names */
-    int want[MAX_COLS];     /* the header's column of each column asked for */
-    char text[LINE];        /* the row last read, cut at its commas */
-    char *cell[MAX_COLS];   /* its values */
-    int cell_col[MAX_COLS]; /* where each starts, 1-based */
+    cs_csv rows;        /* its rows, the last read in rows.cell */
+    int line;           /* of the row last read */
+    int cols;           /* as the header names */
+    int want[MAX_COLS]; /* the header's column of each column asked for */
     char *why;
     size_t why_size;
 } csv;
@@ -44,24 +43,11 @@ static int fault(csv *c, int col, const char *fmt, ...) {
 
 /* The next line that is not a comment or blank, cut into its values. 1, 0 at the end, or -1. */
 static int next_line(csv *c, int *count) {
-    while (fgets(c->text, sizeof c->text, c->f)) {
-        c->line++;
-        size_t n = strlen(c->text);
-        if (n == sizeof c->text - 1 && c->text[n - 1] != '\n')
-            return fault(c, 1, "a line of more than %d characters (expected shorter lines)", LINE - 2);
-        c->text[strcspn(c->text, "\r\n")] = '\0';
-        if (c->text[0] == '#' || c->text[0] == '\0') continue;
-        *count = 0;
-        for (char *p = c->text;; p++) {
-            if (*count == MAX_COLS) return fault(c, (int)(p - c->text) + 1, "more than %d values", MAX_COLS);
-            c->cell[*count] = p;
-            c->cell_col[(*count)++] = (int)(p - c->text) + 1;
-            if (!(p = strchr(p, ','))) break;
-            *p = '\0';
-        }
-        return 1;
-    }
-    return ferror(c->f) ? fault(c, 0, "cannot read the file: %s", strerror(errno)) : 0;
+    int rc = cs_csv_next(&c->rows);
+    c->line = (int)(rc < 0 ? c->rows.why_line : c->rows.line);
+    if (rc < 0) return fault(c, c->rows.why_col, "%s", c->rows.why);
+    *count = c->rows.count;
+    return rc;
 }
 
 /* Open dir/name and read its header, which must name every column of columns (NULL-terminated). */
@@ -73,12 +59,14 @@ static int open_csv(csv *c, const char *dir, const char *name, const char *const
     if (!(c->f = fopen(c->path, "r")))
         return fault(c, 0, "cannot open the file: %s (expected the values cablesim validate compares with)",
                      strerror(errno));
+    cs_csv_open_file(&c->rows, c->f, CS_CSV_COMMENTS | CS_CSV_BLANKS | CS_CSV_CR_ENDS, MAX_COLS);
+    c->rows.max_line = MAX_LINE;
     int rc = next_line(c, &c->cols);
     if (rc <= 0) return rc < 0 ? -1 : fault(c, 0, "no header line (expected the names of its columns)");
     for (int k = 0; columns[k]; k++) {
         c->want[k] = -1;
         for (int i = 0; i < c->cols; i++)
-            if (strcmp(c->cell[i], columns[k]) == 0) c->want[k] = i;
+            if (strcmp(c->rows.cell[i], columns[k]) == 0) c->want[k] = i;
         if (c->want[k] >= 0) continue;
         char names[300] = "";
         for (int j = 0; columns[j]; j++)
@@ -98,7 +86,7 @@ static int next_row(csv *c) {
 
 /* The value of the k-th column asked for. */
 static const char *text(const csv *c, int k) {
-    return c->cell[c->want[k]];
+    return c->rows.cell[c->want[k]];
 }
 
 static int number(csv *c, int k, double *out) {
@@ -107,7 +95,7 @@ static int number(csv *c, int k, double *out) {
     errno = 0;
     *out = strtod(t, &end);
     if (end == t || *end || errno || !isfinite(*out))
-        return fault(c, c->cell_col[c->want[k]], "'%s' is not a number (expected a plain number)", t);
+        return fault(c, c->rows.cell_col[c->want[k]], "'%s' is not a number (expected a plain number)", t);
     return 0;
 }
 
@@ -120,6 +108,7 @@ static int numbers(csv *c, int from, int to, double *out) {
 
 static int close_csv(csv *c, int rc) {
     if (c->f) fclose(c->f);
+    cs_csv_close(&c->rows);
     return rc;
 }
 
@@ -135,8 +124,9 @@ static int read_aps1(const char *dir, cs_validation_data *out, char *why, size_t
         if (strcmp(text(&c, 0), "APS1") != 0) continue; /* another test's */
         int s = strcmp(text(&c, 1), sources[0]) == 0 ? 0 : strcmp(text(&c, 1), sources[1]) == 0 ? 1 : -1;
         if (s < 0)
-            return close_csv(&c, fault(&c, c.cell_col[c.want[1]], "unknown source '%s' (expected %s or %s)",
-                                       text(&c, 1), sources[0], sources[1]));
+            return close_csv(&c,
+                             fault(&c, c.rows.cell_col[c.want[1]], "unknown source '%s' (expected %s or %s)",
+                                   text(&c, 1), sources[0], sources[1]));
         if (seen[s]++)
             return close_csv(&c, fault(&c, 1, "APS1, %s: given twice (expected one row)", sources[s]));
         double v[4];
@@ -171,7 +161,7 @@ static int read_bogie(const char *dir, cs_validation_data *out, char *why, size_
                                        strlen(text(&c, 0)), sizeof t->name));
         if (numbers(&c, 1, 5, v) != 0) return close_csv(&c, -1);
         if (strcmp(mode, "pullout") != 0 && strcmp(mode, "rotation") != 0)
-            return close_csv(&c, fault(&c, c.cell_col[c.want[5]],
+            return close_csv(&c, fault(&c, c.rows.cell_col[c.want[5]],
                                        "failure mode '%s' (expected pullout or rotation)", mode));
         snprintf(t->name, sizeof t->name, "%s", text(&c, 0));
         t->mph = v[0], t->embedment_mm = v[1], t->deflection_mm = v[2], t->energy_ftlb = v[3];
@@ -197,17 +187,17 @@ static int read_rig(const char *dir, cs_validation_data *out, char *why, size_t 
     if (open_csv(&c, dir, "bogie-rig.csv", columns, why, size) != 0) return close_csv(&c, -1);
     if ((rc = next_row(&c)) <= 0) return close_csv(&c, rc < 0 ? -1 : fault(&c, 0, "no row (expected one)"));
     if (strlen(text(&c, 0)) >= sizeof r->section)
-        return close_csv(&c, fault(&c, c.cell_col[c.want[0]],
+        return close_csv(&c, fault(&c, c.rows.cell_col[c.want[0]],
                                    "a section name of %zu characters (expected fewer than %zu)",
                                    strlen(text(&c, 0)), sizeof r->section));
     if (numbers(&c, 1, 6, v) != 0) return close_csv(&c, -1);
     for (int k = 0; k < 5; k++)
         if (!(v[k] > 0.0))
-            return close_csv(&c, fault(&c, c.cell_col[c.want[k + 1]], "%s %g (expected a positive value)",
-                                       columns[k + 1], v[k]));
+            return close_csv(&c, fault(&c, c.rows.cell_col[c.want[k + 1]],
+                                       "%s %g (expected a positive value)", columns[k + 1], v[k]));
     if (!(v[2] > 0.5 * v[3]))
         return close_csv(
-            &c, fault(&c, c.cell_col[c.want[3]],
+            &c, fault(&c, c.rows.cell_col[c.want[3]],
                       "head height %g in with a head of %g in (expected the head clear of the ground)", v[2],
                       v[3]));
     snprintf(r->section, sizeof r->section, "%s", text(&c, 0));
@@ -232,8 +222,9 @@ static int read_eq21(const char *dir, cs_validation_data *out, char *why, size_t
         if (numbers(&c, 0, 5, v) != 0) return close_csv(&c, -1);
         for (int k = 0; k < 5; k++)
             if (!(v[k] > 0.0 || (k == 4 && v[k] == 0.0)))
-                return close_csv(&c, fault(&c, c.cell_col[c.want[k]], "%s %g (expected a positive value%s)",
-                                           columns[k], v[k], k == 4 ? " or 0" : ""));
+                return close_csv(&c,
+                                 fault(&c, c.rows.cell_col[c.want[k]], "%s %g (expected a positive value%s)",
+                                       columns[k], v[k], k == 4 ? " or 0" : ""));
         out->eq21[out->eq21_count++] = (cs_eq21_point){v[0], v[1], v[2], v[3], v[4]};
     }
     if (rc == 0 && out->eq21_count == 0) rc = fault(&c, 0, "no rows (expected at least one)");

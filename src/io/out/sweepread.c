@@ -6,43 +6,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "out/htmltext.h"
+#include "load/csvread.h"
 #include "sweepout.h"
 #include "sweepout_int.h"
 #include "writers.h"
-
-/* The fields of one CSV line (quoted fields may hold commas, quotes and line breaks) into row, each
- * NUL-terminated in turn. Returns the count, 0 at the end of the file, -1 if a line is too long. */
-static int csv_row(FILE *f, char *row, size_t size, char **field, int max) {
-    int c = getc(f), count = 0;
-    if (c == EOF) return 0;
-    size_t n = 0;
-    field[count++] = row;
-    for (int quoted = 0;; c = getc(f)) {
-        if (c == EOF && !quoted) c = '\n';
-        if (c == EOF) return -1;
-        if (quoted && c == '"') {
-            int d = getc(f);
-            if (d != '"') {
-                quoted = 0;
-                ungetc(d, f);
-                continue;
-            }
-        } else if (!quoted && c == '"') {
-            quoted = 1;
-            continue;
-        } else if (!quoted && (c == ',' || c == '\n')) {
-            if (n + 1 >= size) return -1;
-            row[n++] = '\0';
-            if (c == '\n') return count;
-            if (count == max) return -1;
-            field[count++] = row + n;
-            continue;
-        }
-        if (n + 1 >= size) return -1;
-        row[n++] = (char)c;
-    }
-}
 
 /* A column's text back into a result (cs_sweep_column_number and _text read it out). */
 static int set_column(const cs_sweep_column *c, cs_sweep_result *r, const char *text) {
@@ -144,12 +111,14 @@ long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *s, const
     int k = s->var_count;
     cs_sweep_column cols[CS_SWEEP_MAX_COLUMNS];
     int nc = cs_sweep_columns(cols), max = 1 + k + nc;
-    char *want = NULL, *line = NULL, *row = malloc(65536);
-    char **field = malloc((size_t)max * sizeof *field);
+    char *want = NULL, *line = NULL;
     size_t want_size = 0, line_size = 0;
     FILE *h = open_memstream(&want, &want_size);
     long count = -1, last = -1;
-    if (!h || !row || !field) {
+    cs_csv rows; /* quoted cells, and the ' before a text that looks like a formula undone */
+    cs_csv_open_file(&rows, f, CS_CSV_QUOTED | CS_CSV_UNTEXT, max);
+    rows.max_line = 65534;
+    if (!h) {
         snprintf(why, why_size, "out of memory");
         goto done;
     }
@@ -162,8 +131,10 @@ long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *s, const
     }
     count = 0;
     for (long at = 2;; at++) {
-        int got = csv_row(f, row, 65536, field, max);
-        if (got == 0) break;
+        int got = cs_csv_next(&rows);
+        if (got == 0 || (got < 0 && ferror(f))) break;
+        got = got < 0 ? -1 : rows.count;
+        char **field = rows.cell;
         char *end;
         long i = got == max ? strtol(field[0], &end, 10) : -1;
         if (got != max || *end || i < 0 || i >= n || (any_order ? !r[i].pending : i <= last)) {
@@ -175,8 +146,6 @@ long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *s, const
             break;
         }
         last = i;
-        for (int c = 1; c < got; c++)
-            cs_csv_untext(field[c]); /* the ' a text that looks like a formula was given */
         int bad = 0;
         for (int j = 0; j < k && !bad; j++) {
             char value[256];
@@ -208,6 +177,7 @@ long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *s, const
         count = -1;
     }
 done:
-    free(want), free(line), free(row), free(field);
+    free(want), free(line);
+    cs_csv_close(&rows);
     return count;
 }
