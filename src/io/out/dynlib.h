@@ -1,11 +1,12 @@
 /* SPDX-License-Identifier: MIT */
 /* Libraries loaded by dlopen(3) when first used, not linked: cairo (and fontconfig) when a plot is drawn,
  * netCDF when a sweep writes runs.nc. Linked, they would be mapped and relocated at every start of the
- * command (netCDF brings HDF5, curl, TLS and Kerberos, cairo the X and font libraries: 53 of the 66
- * shared objects a run mapped), about half the time of a whole run that draws no plot and writes no
- * runs.nc. Each library's header (cairo_lib.h, netcdf_lib.h) lists the functions cablesim calls, in a
- * table of pointers with the library's own types, and names each function as its pointer in the table,
- * so the code calls cairo and netCDF as it would if they were linked; it must load its library first. */
+ * command (netCDF brings HDF5, curl, TLS and Kerberos, cairo the X and font libraries: 57 of the 66
+ * shared objects a run mapped), about a third of the CPU time of a whole run that draws no plot and
+ * writes no runs.nc. Each library's header (cairo_lib.h, netcdf_lib.h) lists the functions cablesim
+ * calls, in a table of pointers with the library's own types, and names each function as its pointer in
+ * the table, so the code calls cairo and netCDF as it would if they were linked; it must load its
+ * library first. */
 #ifndef CS_IO_DYNLIB_H
 #define CS_IO_DYNLIB_H
 
