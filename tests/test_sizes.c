@@ -268,6 +268,11 @@ static void sudden_losses_read_events_at_their_size(void **state) {
     e.size = 0;
     assert_int_equal(cs_sudden_losses(t, f, 3, 0.005, &e, 1, w, 1, &err), -1);
     assert_true(strstr(err.message, "cs_event: size 0") == err.message);
+    /* an array's events are read at the first one's size: one of another size is refused */
+    cs_event two[2] = {e, e};
+    two[0].size = sizeof two[0], two[1].size = sizeof two[1] - sizeof(double);
+    assert_int_equal(cs_sudden_losses(t, f, 3, 0.005, two, 2, w, 1, &err), -1);
+    assert_string_equal(err.message, "cs_event: an array's events must all have the first one's size");
 }
 
 int main(void) {

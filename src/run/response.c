@@ -143,17 +143,22 @@ int cs_loss_scan_finish(cs_loss_scan *scan, const cs_event *events, int event_co
     return kept + scan->missed;
 }
 
-/* The caller's events, each of the first one's size, as this library's (count of them, or 1 for none):
- * NULL with err filled. */
+/* The caller's events, an array of the first one's size (an event of another size is refused: it would
+ * be read past its place), as this library's (count of them, or 1 for none): NULL with err filled. */
 static cs_event *take_events(const cs_event *given, int count, cs_error *err) {
     cs_event *all = calloc(count > 0 ? (size_t)count : 1, sizeof *all);
     if (!all) return cs_out_of_memory(err), NULL;
     size_t stride = 0;
     if (count > 0 && given) memcpy(&stride, given, sizeof stride);
     for (int i = 0; i < count && given; i++) {
+        const char *at = (const char *)given + (size_t)i * stride;
+        size_t size;
+        memcpy(&size, at, sizeof size);
+        if (size != stride)
+            return cs_sized_refuse(err, "cs_event", "an array's events must all have the first one's size"),
+                   free(all), NULL;
         all[i] = (cs_event){.size = sizeof *all, .cable_end = -1, .cable = -1, .post = -1};
-        if (cs_sized_take(&all[i], sizeof *all, (const char *)given + (size_t)i * stride, "cs_event", err))
-            return free(all), NULL;
+        if (cs_sized_take(&all[i], sizeof *all, at, "cs_event", err)) return free(all), NULL;
     }
     return all;
 }
