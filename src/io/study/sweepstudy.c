@@ -142,18 +142,18 @@ static int start_journal(cs_outdir *out, const cs_sweep_spec *spec, const double
 }
 
 /* Append a finished run to the journal (append and fsync: a kill -9 after it keeps it). A journal that
- * cannot be written is said once; the runs go on, and the outputs at the end hold them. */
+ * cannot be written is said once (*failed, the study's own); the runs go on, and the outputs at the end
+ * hold them. */
 static void journal_run(cs_outdir *out, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
-                        long i) {
-    static int failed;
+                        long i, int *failed) {
     char *text = NULL, why[1600];
     size_t length = 0;
-    FILE *f = failed ? NULL : open_memstream(&text, &length);
+    FILE *f = *failed ? NULL : open_memstream(&text, &length);
     if (!f) return;
     cs_sweep_write_run_row(f, spec, x, r, i);
     fclose(f);
     if (cs_out_journal_add(out, text, length, why, sizeof why) != 0) {
-        failed = 1;
+        *failed = 1;
         fprintf(stderr, "cablesim sweep: %s: the runs from now on are not journalled (a kill loses them)\n",
                 why);
     }
@@ -167,6 +167,7 @@ typedef struct taker {
     const cs_sweep_spec *spec;
     const double *x;
     cs_sweep_result *all;
+    int journal_failed; /* the journal could not be written (said once) */
 } taker;
 
 static void take_run(void *ctx, long i, const cs_sweep_result *r) {
@@ -174,7 +175,7 @@ static void take_run(void *ctx, long i, const cs_sweep_result *r) {
     taker *t = ctx;
     pthread_mutex_lock(&lock);
     t->all[i] = *r;
-    journal_run(t->out, t->spec, t->x, r, i);
+    journal_run(t->out, t->spec, t->x, r, i, &t->journal_failed);
     pthread_mutex_unlock(&lock);
 }
 
@@ -415,7 +416,7 @@ int cs_sweep_study_run(cs_sweep_options *o, const char *command, const cs_sweep_
     stop_signal = 0;
     catch_signals(1);
     double start = now();
-    taker t = {&out, spec, x, all};
+    taker t = {&out, spec, x, all, 0};
     if (rank == 0 && size > 1 && ranks->receive_start &&
         ranks->receive_start(ranks->ctx, take_run, &t) != 0) {
         fprintf(stderr, "cablesim sweep: cannot start the thread that receives the other ranks' runs\n");
