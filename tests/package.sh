@@ -4,8 +4,8 @@
 # finds no error and no warning in them; libcablesim0 holds the library under its multiarch directory with
 # its soname link, libcablesim-dev its headers, static library, pkg-config and CMake files, cablesim the
 # command with its manual pages (compressed), the documents they name and bash completion, cablesim-data
-# the parts library and examples; the command's package depends on the libraries it is linked with, the
-# library's has a symbols file and nothing runs ldconfig in a maintainer script; a -dbgsym package holds
+# the parts library and examples; the command's package depends on the libraries it is linked with and
+# those it loads by dlopen, the library's has a symbols file and nothing runs ldconfig in a maintainer script; a -dbgsym package holds
 # the debug symbols.
 # $1 the build tree (its cablesim gives the version). Skipped (77) without dpkg-buildpackage, debhelper or
 # lintian.
@@ -77,7 +77,7 @@ dpkg-deb --fsys-tarfile "$(deb cablesim)" | tar -xOf - ./usr/bin/cablesim >"$tmp
 check "the command is stripped, its debug symbols in cablesim-dbgsym" \
     '! readelf -S "$tmp/cablesim" | grep -q "\.debug_info" && dpkg-deb -c "$(deb cablesim-dbgsym)" | grep -q "/usr/lib/debug/.build-id/.*\.debug$"'
 depends=$(dpkg-deb -f "$(deb cablesim)" Depends)
-for p in libc6 libyaml-0-2 libudunits2-0 libcairo2 libnetcdf19 cablesim-data; do
+for p in libc6 libyaml-0-2 libudunits2-0 libcairo2 libfontconfig1 libnetcdf19 cablesim-data; do
     check "cablesim depends on $p" 'grep -qE "(^|, )$p( |,|$)" <<<"$depends"'
 done
 echo "$pass passed, $fail failed"
