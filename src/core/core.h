@@ -65,8 +65,8 @@ typedef struct cs_cable_model {
 
 typedef struct cs_post_model {
     double x, height;
-    double k_rot;          /* elastic rotational stiffness about the base, 3 E I / h_ref, N m/rad */
-    double mp;             /* plastic moment Zx Fy, N m */
+    double k_rot; /* elastic rotational stiffness about the pivot: the bend and the soil in series, N m/rad */
+    double mp;    /* plastic moment Zx Fy, N m */
     double footing_moment; /* impact capacity (Eq. 21 x dynamic factor) times its load height, N m */
     double moment_cap;     /* mp, or if the footing is weaker its capacity at the lever h + pivot, N m */
     double moment_scale;   /* the barrier solve's unit of moment for this post's balance, N m (model.c) */

@@ -35,7 +35,6 @@
 
 #include <math.h>
 
-#define CS_ANCHOR_YIELD_STRAIN 0.02     /* movement to mobilise the passive resistance, over the depth */
 #define CS_ANCHOR_SOFTENING_STRAIN 0.05 /* plastic slide from the peak to the residual, over the depth */
 #define CS_HHT_ALPHA (-0.1)
 #define CS_HHT_BETA (0.25 * (1.0 - CS_HHT_ALPHA) * (1.0 - CS_HHT_ALPHA))
@@ -63,7 +62,7 @@ void cs_anchor_derive(const cs_anchor_def *d, double gravity, cs_anchor_model *a
     am->capacity = cs_footing_impact_capacity(f, d->z);
     am->residual = cs_footing_residual_ratio(f) * am->capacity;
     am->softening = CS_ANCHOR_SOFTENING_STRAIN * f->depth;
-    am->stiffness = am->capacity / (CS_ANCHOR_YIELD_STRAIN * f->depth);
+    am->stiffness = am->capacity / (CS_PASSIVE_MOBILISATION * f->depth);
     double perimeter_skin = len > 0.0 ? 2.0 * (b + len) / (CS_PI * b) : 1.0; /* a block's perimeter */
     /* a capacity given for the anchor, or for its footing, is design data and taken as it is */
     double given = d->pullout_capacity > 0.0 ? d->pullout_capacity : f->pullout_capacity;

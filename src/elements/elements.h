@@ -114,6 +114,14 @@ double cs_footing_wedge_factor(double friction_angle, double width, double depth
 double cs_footing_residual_ratio(const cs_footing_def *f);
 double cs_footing_dynamic_factor(const cs_footing_def *f);
 double cs_footing_pullout_capacity(const cs_footing_def *f);
+/* Movement that mobilises the soil's passive resistance, over the member's depth (Clough and Duncan
+ * 1991: about 1% of the height in dense sand, 2% medium, 4% loose): a dead-man's slide, a footing's
+ * movement at grade as it turns about its pivot 2D/3 down. */
+#define CS_PASSIVE_MOBILISATION 0.02
+/* The footing's elastic rotational stiffness about its pivot 2D/3 below grade, N m/rad: its impact
+ * capacity at the load height, moment (h + 2D/3) F P(h), reached as grade moves by the mobilisation
+ * movement, a turn of 1.5 CS_PASSIVE_MOBILISATION; HUGE_VAL for a rigid footing (no width or depth). */
+double cs_footing_rotational_stiffness(const cs_footing_def *f, double load_height);
 /* Each intact cable's node at post p where a tilt puts it (one sine and cosine for all), and the post
  * axis' Jacobian there (as cs_post_axis_jacobian's j) into axis if not NULL. */
 void cs_post_place_nodes(const cs_model *model, cs_state *s, int post, const double *tilt, double *axis);

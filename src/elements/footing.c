@@ -60,6 +60,12 @@ double cs_footing_impact_capacity(const cs_footing_def *f, double load_height) {
     return cs_footing_dynamic_factor(f) * cs_footing_capacity(f, load_height);
 }
 
+double cs_footing_rotational_stiffness(const cs_footing_def *f, double load_height) {
+    if (!(f->diameter > 0.0 && f->depth > 0.0)) return HUGE_VAL;
+    double lever = load_height + 2.0 * f->depth / 3.0;
+    return cs_footing_impact_capacity(f, load_height) * lever / (1.5 * CS_PASSIVE_MOBILISATION);
+}
+
 double cs_footing_pullout_capacity(const cs_footing_def *f) {
     if (f->pullout_capacity > 0.0) return f->pullout_capacity; /* design data (or HUGE_VAL: never) */
     return f->skin_friction * CS_PI * f->diameter * f->depth * f->depth / 2.0;

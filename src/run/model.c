@@ -449,10 +449,13 @@ static cs_model *model_create(const cs_barrier_def *barrier, const cs_vehicle_de
         pm->moment_scale = pm->moment_cap;
         for (int c = 0; c < m->cable_count; c++)
             pm->moment_scale = fmax(pm->moment_scale, m->cables[c].rope.fu * (m->cables[c].z + pm->pivot));
-        /* the cantilever of Eqs. 10-11 seen at the load height: R h^3 / 3EI there, as a rotation about
-         * the pivot (lever h + pivot) */
-        pm->k_rot =
-            3.0 * d->section.modulus * d->section.inertia * lever * lever / (mean_z * mean_z * mean_z);
+        /* the load point moves by the cantilever's bend (Eqs. 10-11: R h^3 / 3EI) plus the footing's
+         * elastic turn in the soil about 2D/3 down (R (h + 2D/3)^2 / k_soil), springs in series; k_rot
+         * is that compliance as a rotation about the pivot (lever h + pivot) */
+        double soil_lever = mean_z + 2.0 * d->footing.depth / 3.0,
+               compliance = mean_z * mean_z * mean_z / (3.0 * d->section.modulus * d->section.inertia) +
+                            soil_lever * soil_lever / cs_footing_rotational_stiffness(&d->footing, mean_z);
+        pm->k_rot = lever * lever / compliance;
         pm->shear_cap = 0.6 * d->section.web_area * d->section.yield_stress;
         pm->pullout_cap = cs_footing_pullout_capacity(&d->footing);
         pm->embedment = d->footing.depth;
