@@ -4,8 +4,10 @@
 # its layer, never up. The engine's layers, bottom up: src/core, src/elements, src/solver, src/run (the
 # order of CMakeLists.txt's CS_ENGINE_LAYERS); the loaders and writers (src/io) sit above them all but
 # reach the engine only through its public headers (include/cablesim), never into a layer's internal
-# ones. A quoted include is resolved as the compiler does (the including file's folder, then src/ for the
-# engine and src/io/ for the loaders and writers, then include/); one that resolves nowhere fails too.
+# ones, but for src/run/sized.h, the one check of the structs filled or read at their caller's size, that
+# src/io/status.h shares. A quoted include is resolved as the compiler does (the including file's folder,
+# then src/ for the engine and src/io/ for the loaders and writers, then include/); one that resolves
+# nowhere fails too.
 # The check is also run on a small tree with an include up a layer, one from src/io into an engine layer,
 # one that resolves nowhere and a file in no layer, and must find each of them and nothing else.
 source "$(dirname "$0")/lib.sh"
@@ -48,8 +50,12 @@ violations() {
             echo "${f#"$root"/}:$line: \"$name\" is no file of the tree"
             continue
         fi
-        rank "$root" "$target"
+        target=$(realpath -m "$target")
+        rank "$(realpath -m "$root")" "$target"
         to=$r
+        if [ "$from" -eq 4 ] && [ "${target#"$(realpath -m "$root")"/}" = src/run/sized.h ]; then
+            continue # the one size check of the structs filled at their caller's size (src/io/status.h)
+        fi
         if [ -z "$to" ]; then
             echo "${f#"$root"/}:$line: \"$name\" is in no layer"
         elif [ "$from" -eq 4 ] && [ "$to" -ge 0 ] && [ "$to" -lt 4 ]; then

@@ -355,6 +355,7 @@ static synthetic *synthetic_new(int frames) {
         vv->penetration = fmax(0, face);
         vv->face_force = face > 0 ? 1e5 : 0;
         cs_energy *e = &r->energy[i];
+        e->size = sizeof *e;
         e->initial_kinetic = e->initial_total = ke0;
         e->vehicle_kinetic = 0.5 * v->mass * u * u;
         double gone = ke0 - e->vehicle_kinetic;

@@ -4,7 +4,8 @@
  * its cs_default_*(), or larger than the library's, is refused with a sentence naming it. The earlier
  * structs are today's without their last field: a rope without its diameter (so a cable ending in that
  * smaller rope, read at its own stride in the barrier's array) and a scenario without max_steps.
- * The structs the engine fills (sim.h: cs_summary, the views, cs_event) the other way: one a field short
+ * The structs the engine fills (sim.h: cs_summary, the views, cs_event, cs_energy, cs_cable_summary,
+ * cs_sudden_loss, the last in an array at its first one's size) the other way: one a field short
  * gets the leading values of a whole one from the same state and nothing past its size; a size of 0 or
  * larger than the library's is refused by the struct's name, nothing written. (cs_model_input, filled by
  * the loader: test_io_loader.c.) */
@@ -161,6 +162,26 @@ static cs_status fill_anchor(void *out, cs_error *err) {
 static cs_status fill_event(void *out, cs_error *err) {
     return cs_state_event(run.state, 0, out, err);
 }
+static cs_status fill_energy(void *out, cs_error *err) {
+    return cs_state_energy(run.state, out, err);
+}
+static cs_status fill_cable_summary(void *out, cs_error *err) {
+    return cs_state_cable_summary(run.state, 0, out, err);
+}
+
+/* A force history with two falls of 90% of its peak within 10 ms: two sudden losses. */
+enum { FALL_SAMPLES = 40 };
+static void two_falls(double *t, double *f) {
+    for (int j = 0; j < FALL_SAMPLES; j++)
+        t[j] = 1e-3 * j, f[j] = (j < 10 || (j >= 20 && j < 30)) ? 1e5 : 1e4;
+}
+static cs_status fill_sudden_loss(void *out, cs_error *err) {
+    double t[FALL_SAMPLES], f[FALL_SAMPLES];
+    two_falls(t, f);
+    if (err) err->status = CS_OK;
+    int n = cs_sudden_losses(t, f, FALL_SAMPLES, 1e-3, NULL, 0, out, 1, err);
+    return n < 0 ? (err ? err->status : CS_ERR_INVALID) : n == 2 ? CS_OK : CS_ERR_UNSTABLE;
+}
 
 typedef struct filled {
     const char *name;
@@ -180,6 +201,12 @@ static const filled post_case = {"cs_post_view", fill_post, sizeof(cs_post_view)
 static const filled anchor_case = {"cs_anchor_view", fill_anchor, sizeof(cs_anchor_view),
                                    offsetof(cs_anchor_view, uplift_capacity)};
 static const filled event_case = {"cs_event", fill_event, sizeof(cs_event), offsetof(cs_event, post)};
+static const filled energy_case = {"cs_energy", fill_energy, sizeof(cs_energy),
+                                   offsetof(cs_energy, balance_error)};
+static const filled cable_summary_case = {"cs_cable_summary", fill_cable_summary, sizeof(cs_cable_summary),
+                                          offsetof(cs_cable_summary, energy_share)};
+static const filled sudden_loss_case = {"cs_sudden_loss", fill_sudden_loss, sizeof(cs_sudden_loss),
+                                        offsetof(cs_sudden_loss, force_after_n)};
 
 enum { ROOM = 1024, MARK = 0x5a };
 
@@ -259,7 +286,7 @@ static void sudden_losses_read_events_at_their_size(void **state) {
     double t[3] = {0.0, 0.005, 0.010}, f[3] = {1e5, 1e5, 1e4};
     cs_event e = {.size = sizeof e};
     assert_int_equal(cs_state_event(run.state, 0, &e, NULL), CS_OK);
-    cs_sudden_loss w[1];
+    cs_sudden_loss w[1] = {{.size = sizeof w[0]}};
     cs_error err;
     e.t = 1.0; /* after the fall: it excuses nothing */
     assert_int_equal(cs_sudden_losses(t, f, 3, 0.005, &e, 1, w, 1, &err), 1);
@@ -275,6 +302,83 @@ static void sudden_losses_read_events_at_their_size(void **state) {
     assert_string_equal(err.message, "cs_event: an array's events must all have the first one's size");
 }
 
+/* The ledger, a cable's record and the sudden losses agree with the summary, whose arrays keep the first
+ * layouts (cs_summary_cable, cs_summary_loss); a ledger of an earlier, smaller size gives no term past it. */
+static void energy_cables_and_losses_agree_with_the_summary(void **state) {
+    (void)state;
+    cs_summary s = {.size = sizeof s};
+    cs_energy e = {.size = sizeof e};
+    cs_error err;
+    assert_int_equal(cs_state_summary(run.state, &s, &err), CS_OK);
+    assert_int_equal(cs_state_energy(run.state, &e, &err), CS_OK);
+    assert_int_equal(e.size, sizeof e);
+    CHECK_ABS(e.initial_kinetic, s.initial_kinetic_energy_j, 0.0);
+    assert_true(fabs(e.balance_error) <= fabs(s.energy_balance_error));
+    assert_true(cs_energy_term(&e, 0) == e.vehicle_kinetic && e.vehicle_kinetic > 0.0);
+    assert_true(cs_energy_term(&e, CS_ENERGY_TERMS - 1) == e.released);
+    cs_energy earlier = e;
+    earlier.size = offsetof(cs_energy, released); /* an earlier ledger, without its last term */
+    assert_true(cs_energy_term(&earlier, CS_ENERGY_TERMS - 1) == 0.0);
+    assert_true(cs_energy_term(&earlier, CS_ENERGY_TERMS - 2) == e.friction);
+    for (int c = 0; c < s.cable_count; c++) {
+        cs_cable_summary cb = {.size = sizeof cb};
+        assert_int_equal(cs_state_cable_summary(run.state, c, &cb, &err), CS_OK);
+        assert_true(cb.peak_tension_n == s.cables[c].peak_tension_n && cb.peak_tension_n > 1e3);
+        assert_true(cb.work_on_vehicle_j == s.cables[c].work_on_vehicle_j);
+        assert_true(cb.energy_share == s.cables[c].energy_share);
+    }
+    cs_cable_summary cb = {.size = sizeof cb};
+    assert_int_equal(cs_state_cable_summary(run.state, s.cable_count, &cb, &err), CS_ERR_INVALID);
+    assert_string_equal(err.message, "cs_cable_summary: no cable 2 (the run has 2)");
+    /* the summary's arrays have their first layout, which never changes */
+    assert_int_equal(sizeof(cs_summary_cable), 4 * sizeof(double));
+    assert_int_equal(sizeof(cs_summary_loss), 4 * sizeof(double));
+    cs_sudden_loss w[CS_SUDDEN_LOSS_KEPT] = {{.size = sizeof w[0]}};
+    int n = cs_state_sudden_losses(run.state, w, CS_SUDDEN_LOSS_KEPT, &err);
+    assert_true(n >= 0 && n <= s.sudden_loss_count);
+    for (int k = 0; k < n && k < CS_SUMMARY_SUDDEN_LOSSES; k++)
+        assert_true(w[k].t_start_s == s.sudden_losses[k].t_start_s &&
+                    w[k].force_after_n == s.sudden_losses[k].force_after_n);
+    w[0].size = 0; /* refused even with nothing to give */
+    assert_int_equal(cs_state_sudden_losses(run.state, w, CS_SUDDEN_LOSS_KEPT, &err), -1);
+    assert_true(strstr(err.message, "cs_sudden_loss: size 0") == err.message);
+}
+
+/* An array of sudden losses of an earlier, smaller size is filled at the first one's size: each in its
+ * place, with that size, and nothing past the last. */
+static void sudden_losses_fill_an_array_at_its_first_size(void **state) {
+    (void)state;
+    double t[FALL_SAMPLES], f[FALL_SAMPLES];
+    two_falls(t, f);
+    cs_sudden_loss whole[2] = {{.size = sizeof whole[0]}};
+    cs_error err;
+    assert_int_equal(cs_sudden_losses(t, f, FALL_SAMPLES, 1e-3, NULL, 0, whole, 2, &err), 2);
+    assert_int_equal(whole[1].size, sizeof whole[1]);
+    CHECK_ABS(whole[0].force_before_n, 1e5, 0.0);
+    CHECK_ABS(whole[1].force_after_n, 1e4, 0.0);
+    assert_true(whole[1].t_start_s > whole[0].t_end_s);
+    enum { SHORT = offsetof(cs_sudden_loss, force_after_n) };
+    _Alignas(max_align_t) unsigned char b[3 * SHORT];
+    memset(b, MARK, sizeof b);
+    size_t n = SHORT;
+    memcpy(b, &n, sizeof n);
+    assert_int_equal(cs_sudden_losses(t, f, FALL_SAMPLES, 1e-3, NULL, 0, (cs_sudden_loss *)(void *)b, 2, &err),
+                     2);
+    for (int k = 0; k < 2; k++) {
+        assert_int_equal(size_of(b + k * SHORT), SHORT);
+        assert_memory_equal(b + k * SHORT + sizeof(size_t), (const char *)&whole[k] + sizeof(size_t),
+                            SHORT - sizeof(size_t));
+    }
+    for (size_t k = 2 * SHORT; k < sizeof b; k++) /* nothing past the second */
+        assert_int_equal(b[k], MARK);
+    n = sizeof(cs_sudden_loss) + 8; /* a later cablesim's */
+    memcpy(b, &n, sizeof n);
+    assert_int_equal(cs_sudden_losses(t, f, FALL_SAMPLES, 1e-3, NULL, 0, (cs_sudden_loss *)(void *)b, 2, &err),
+                     -1);
+    assert_true(strstr(err.message, "cs_sudden_loss: size ") == err.message);
+    assert_non_null(strstr(err.message, "a program built for a later cablesim"));
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(earlier_structs_run_as_todays_with_defaults),
@@ -287,6 +391,11 @@ int main(void) {
         cmocka_unit_test_prestate(filled_to_the_callers_size, (void *)&post_case),
         cmocka_unit_test_prestate(filled_to_the_callers_size, (void *)&anchor_case),
         cmocka_unit_test_prestate(filled_to_the_callers_size, (void *)&event_case),
+        cmocka_unit_test_prestate(filled_to_the_callers_size, (void *)&energy_case),
+        cmocka_unit_test_prestate(filled_to_the_callers_size, (void *)&cable_summary_case),
+        cmocka_unit_test_prestate(filled_to_the_callers_size, (void *)&sudden_loss_case),
+        cmocka_unit_test(energy_cables_and_losses_agree_with_the_summary),
+        cmocka_unit_test(sudden_losses_fill_an_array_at_its_first_size),
         cmocka_unit_test(views_agree_with_the_summary),
         cmocka_unit_test(sudden_losses_read_events_at_their_size),
     };

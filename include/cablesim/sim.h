@@ -295,8 +295,10 @@ CS_API const char *cs_anchor_status_name(const cs_anchor_view *anchor);
 
 /** Energy ledger, J. Every term is a state function or an accumulated dissipation computed on its own;
  * balance_error = (sum now - sum at t = 0) / initial kinetic energy (for a vehicle starting at rest:
- * / m g h_cg). */
+ * / m g h_cg). It starts with its size, as the views do; new fields go at its end. */
 typedef struct cs_energy {
+    size_t size;              /**< the size of this struct in the program: set it (cs_energy e =
+                                   {.size = sizeof e}); the library fills only that much */
     double vehicle_kinetic;   /**< the vehicle's kinetic energy, translation and rotation */
     double vehicle_potential; /**< gravity and tyre springs, relative to t = 0 */
     double cable_elastic;     /**< the ropes' elastic strain energy */
@@ -320,14 +322,16 @@ typedef struct cs_energy {
     double balance_error;     /**< (sum now - initial_total) over initial_kinetic */
 } cs_energy;
 
-/** Fill out with the ledger now. */
-CS_API void cs_state_energy(const cs_state *state, cs_energy *out);
+/** Fill out with the ledger now, to out's size.
+ * @return CS_OK, or CS_ERR_INVALID with err filled (may be NULL) for a size 0 or larger than this library's.
+ */
+CS_API cs_status cs_state_energy(const cs_state *state, cs_energy *out, cs_error *err);
 /** The number of the ledger's terms: those of cs_energy from vehicle_kinetic to released, in that order. */
 enum { CS_ENERGY_TERMS = 16 };
 /** A term's short name ("ke", "pe", "cable_elastic", ...; timeseries.csv's columns NAME_j), "?" out of range.
  */
 CS_API const char *cs_energy_term_name(int term);
-/** A term's value, J (0 out of range). */
+/** A term's value, J: 0 out of range, or for a term past energy's size (a struct of an earlier cablesim). */
 CS_API double cs_energy_term(const cs_energy *energy, int term);
 /** A run's ledger closes when its balance error stays within this fraction of the initial kinetic energy;
  * beyond it the run is flagged (summary.json's energy_balance_warning). */
@@ -339,8 +343,12 @@ CS_API double cs_energy_term(const cs_energy *energy, int term);
 /** How many cables cs_summary gives one by one (cs_state_cable_summary gives any cable). */
 enum { CS_SUMMARY_CABLES = 8 };
 
-/** One cable over the run: its largest tension and the work its rope did on the vehicle. */
+/** One cable over the run: its largest tension and the work its rope did on the vehicle. It starts with its
+ * size, as the views do; new fields go at its end (cs_summary's cables keep the first layout:
+ * cs_summary_cable). */
 typedef struct cs_cable_summary {
+    size_t size;                /**< the size of this struct in the program: set it (cs_cable_summary c =
+                                     {.size = sizeof c}); the library fills only that much */
     double peak_tension_n;      /**< largest span tension over the run, at a commit of the barrier, N */
     double peak_tension_time_s; /**< when it was reached (the end of its step), s */
     double work_on_vehicle_j;   /**< work of the rope's force on the vehicle over the run: the integral of
@@ -350,18 +358,40 @@ typedef struct cs_cable_summary {
                                      cable took from the vehicle (negative if it gave the vehicle energy) */
 } cs_cable_summary;
 
+/** cs_cable_summary's first fields, as cs_summary holds them in an array: this layout never changes (a
+ * field added to cs_cable_summary comes through cs_state_cable_summary alone). */
+typedef struct cs_summary_cable {
+    double peak_tension_n;      /**< as cs_cable_summary's, N */
+    double peak_tension_time_s; /**< as cs_cable_summary's, s */
+    double work_on_vehicle_j;   /**< as cs_cable_summary's, J */
+    double energy_share;        /**< as cs_cable_summary's */
+} cs_summary_cable;
+
 /** How many sudden losses cs_summary gives one by one (cs_state_sudden_losses gives the rest). */
 enum { CS_SUMMARY_SUDDEN_LOSSES = 4 };
 
 /** A sudden loss: within 10 ms the magnitude of the barrier's force on the vehicle (ropes and struck posts)
  * fell by more than half of its largest over the run, and no rope broke, no end fitting let go and no
- * attachment let a cable go within that window or a sample step of it. */
+ * attachment let a cable go within that window or a sample step of it. It starts with its size, as the
+ * views do; new fields go at its end (cs_summary's sudden losses keep the first layout: cs_summary_loss). */
 typedef struct cs_sudden_loss {
+    size_t size;           /**< the size of this struct in the program: set it (cs_sudden_loss w =
+                                {.size = sizeof w}; in an array, the first one's); the library fills only
+                                that much */
     double t_start_s;      /**< the window's start: the force before, s */
     double t_end_s;        /**< its end: the force after, s (t_end_s - t_start_s <= 10 ms) */
     double force_before_n; /**< N */
     double force_after_n;  /**< N */
 } cs_sudden_loss;
+
+/** cs_sudden_loss's first fields, as cs_summary holds them in an array: this layout never changes (a field
+ * added to cs_sudden_loss comes through cs_state_sudden_losses alone). */
+typedef struct cs_summary_loss {
+    double t_start_s;      /**< as cs_sudden_loss's, s */
+    double t_end_s;        /**< as cs_sudden_loss's, s */
+    double force_before_n; /**< as cs_sudden_loss's, N */
+    double force_after_n;  /**< as cs_sudden_loss's, N */
+} cs_summary_loss;
 
 /** The window of the sudden-loss check, s. */
 #define CS_SUDDEN_LOSS_WINDOW 0.010
@@ -373,7 +403,9 @@ enum { CS_SUDDEN_LOSS_KEPT = 64 };
 /** Response parameters, updated every step. Each field is named as its key in summary.json, its unit in the
  * name's last part (_s, _m, _g, _mps, _deg, _n, _j); summary.json also has what follows from them (stopped,
  * energy_balance_warning), the anchors, the events and the inputs. It starts with its size, as the views do;
- * new fields go at its end (cs_cable_summary and cs_sudden_loss, held in arrays here, keep their layout). */
+ * new fields go at its end (its arrays of cables and sudden losses hold cs_summary_cable and cs_summary_loss,
+ * whose layouts never change; the sized cs_cable_summary and cs_sudden_loss that grow come through
+ * cs_state_cable_summary and cs_state_sudden_losses). */
 typedef struct cs_summary {
     size_t size;                      /**< the size of this struct in the program: set it (cs_summary s =
                                            {.size = sizeof s}); the library fills only that much */
@@ -409,10 +441,10 @@ typedef struct cs_summary {
     int solver_warnings;             /**< steps whose barrier solve hit its sweep cap */
     double max_solver_residual;      /**< largest relative residual left by such a step */
     int cable_count;                 /**< cables of the model; the first CS_SUMMARY_CABLES are in cables */
-    cs_cable_summary cables[CS_SUMMARY_CABLES]; /**< each cable's peak tension and work on the vehicle */
+    cs_summary_cable cables[CS_SUMMARY_CABLES]; /**< each cable's peak tension and work on the vehicle */
     int sudden_loss_count; /**< sudden losses of the barrier's force on the vehicle, found at the
                                 run's end from its force at every step (0 while it runs) */
-    cs_sudden_loss sudden_losses[CS_SUMMARY_SUDDEN_LOSSES]; /**< the first of them, in time order */
+    cs_summary_loss sudden_losses[CS_SUMMARY_SUDDEN_LOSSES]; /**< the first of them, in time order */
     double penetration_beyond_m; /**< a vehicle through the barrier or still going (not
                                       cs_penetration_is_final(outcome)): how far its front had got when the
                                       run ended, m, its penetration beyond it (summary.json's
@@ -423,16 +455,20 @@ typedef struct cs_summary {
  * @return CS_OK, or CS_ERR_INVALID with err filled (may be NULL) for a size 0 or larger than this library's.
  */
 CS_API cs_status cs_state_summary(const cs_state *state, cs_summary *out, cs_error *err);
-/** Cable `cable`'s peak tension and work on the vehicle over the run so far.
- * @return 0, or -1 if there is no such cable. */
-CS_API int cs_state_cable_summary(const cs_state *state, int cable, cs_cable_summary *out);
+/** Fill out with cable `cable`'s peak tension and work on the vehicle over the run so far, to out's size.
+ * @return CS_OK, or CS_ERR_INVALID with err filled (may be NULL): no such cable, or out's size 0 or larger
+ *         than this library's. */
+CS_API cs_status cs_state_cable_summary(const cs_state *state, int cable, cs_cable_summary *out,
+                                        cs_error *err);
 /** The sudden losses of the run, once it has ended (cs_summary's sudden_loss_count in all).
  * @param state the state at the run's end
- * @param out filled with up to capacity of them, in time order
+ * @param out filled with up to capacity of them, in time order, each at the size of the first (set out[0]'s
+ *        size; each one filled gets that size)
  * @param capacity out's room
- * @return how many it holds (at most CS_SUDDEN_LOSS_KEPT; a run with more counts them in sudden_loss_count).
- */
-CS_API int cs_state_sudden_losses(const cs_state *state, cs_sudden_loss *out, int capacity);
+ * @param err filled on failure (may be NULL)
+ * @return how many it holds (at most CS_SUDDEN_LOSS_KEPT; a run with more counts them in sudden_loss_count),
+ *         or -1 with err filled (CS_ERR_INVALID) for out's size 0 or larger than this library's. */
+CS_API int cs_state_sudden_losses(const cs_state *state, cs_sudden_loss *out, int capacity, cs_error *err);
 /** The sudden-loss check on a force history, as a run makes it from its force at every step.
  * @param t the samples' times, increasing, s
  * @param force the magnitude of the barrier's force on the vehicle at each, N
@@ -442,12 +478,13 @@ CS_API int cs_state_sudden_losses(const cs_state *state, cs_sudden_loss *out, in
  *        excuses a fall), each of the first one's size (as cs_state_event filled them)
  * @param event_count how many
  * @param out filled with up to capacity windows, in time order (overlapping windows flagged at successive
- *        samples are given once, by the largest fall among them)
+ *        samples are given once, by the largest fall among them), each at the size of the first (set
+ *        out[0]'s size; may be NULL with capacity 0)
  * @param capacity out's room
  * @param err filled on failure (may be NULL)
  * @return the number of windows flagged (those past capacity, or past CS_SUDDEN_LOSS_KEPT, counted too), or
- *         -1 with err filled: CS_ERR_MEMORY, or CS_ERR_INVALID for events of size 0 or larger than this
- *         library's. */
+ *         -1 with err filled: CS_ERR_MEMORY, or CS_ERR_INVALID for events, or out, of size 0 or larger than
+ *         this library's. */
 CS_API int cs_sudden_losses(const double *t, const double *force, int n, double step, const cs_event *events,
                             int event_count, cs_sudden_loss *out, int capacity, cs_error *err);
 /** An outcome's name in summary.json: "stopped", "breakthrough", "redirected", ... */

@@ -7,6 +7,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <stddef.h>
 #include <string.h>
 
 /* A copy of src in dst: everything but the memory that is dst's own (arrays, events, workspace, the rails'
@@ -188,7 +189,8 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
         hash_bytes(&h, as->rate, sizeof as->rate);
         hash_bytes(&h, as->acc, sizeof as->acc);
     }
-    hash_bytes(&h, &s->energy, sizeof s->energy);
+    /* the ledger's numbers, not its size (the hash of a state is the same as before cs_energy had one) */
+    hash_bytes(&h, &s->energy.vehicle_kinetic, sizeof s->energy - offsetof(cs_energy, vehicle_kinetic));
     for (int k = 0; k < s->event_count; k++) {
         const cs_event *e = &s->events[k];
         int what[3] = {(int)e->type, (int)e->element_kind, e->element};

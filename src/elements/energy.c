@@ -7,6 +7,8 @@
 #include "elements/elements.h"
 
 #include <math.h>
+#include <stddef.h>
+#include <string.h>
 
 /* The energy the balance error is a fraction of: the initial kinetic energy, or for a vehicle that
  * starts at rest the work of lifting it by its CG height (m g h), so the fraction stays meaningful. */
@@ -25,6 +27,7 @@ double cs_energy_total(const cs_energy *e) {
 
 void cs_energy_update(const cs_model *model, cs_state *s) {
     cs_energy *e = &s->energy;
+    e->size = sizeof *e;
     e->vehicle_kinetic = cs_vehicle_kinetic_energy(model, s);
     e->vehicle_potential = cs_vehicle_potential_energy(model, s) - s->e_initial_potential_ref;
     e->cable_elastic = 0.0;
@@ -58,9 +61,6 @@ void cs_energy_update(const cs_model *model, cs_state *s) {
         s->summary.energy_balance_error = e->balance_error;
 }
 
-void cs_state_energy(const cs_state *s, cs_energy *out) {
-    *out = s->energy;
-}
 
 static const char *const term_names[CS_ENERGY_TERMS] = {
     "ke",           "pe",           "cable_elastic",  "cable_plastic",  "post_elastic", "post_kinetic",
@@ -71,11 +71,20 @@ const char *cs_energy_term_name(int k) {
     return k >= 0 && k < CS_ENERGY_TERMS ? term_names[k] : "?";
 }
 
+/* The terms' places in cs_energy, in their order. */
+static const size_t term_offsets[CS_ENERGY_TERMS] = {
+    offsetof(cs_energy, vehicle_kinetic), offsetof(cs_energy, vehicle_potential),
+    offsetof(cs_energy, cable_elastic),   offsetof(cs_energy, cable_plastic),
+    offsetof(cs_energy, post_elastic),    offsetof(cs_energy, post_kinetic),
+    offsetof(cs_energy, post_plastic),    offsetof(cs_energy, post_damping),
+    offsetof(cs_energy, anchor_elastic),  offsetof(cs_energy, anchor_kinetic),
+    offsetof(cs_energy, rail_elastic),    offsetof(cs_energy, rail_plastic),
+    offsetof(cs_energy, soil),            offsetof(cs_energy, crush),
+    offsetof(cs_energy, friction),        offsetof(cs_energy, released)};
+
 double cs_energy_term(const cs_energy *e, int k) {
-    const double all[CS_ENERGY_TERMS] = {
-        e->vehicle_kinetic, e->vehicle_potential, e->cable_elastic, e->cable_plastic,  e->post_elastic,
-        e->post_kinetic,    e->post_plastic,      e->post_damping,  e->anchor_elastic, e->anchor_kinetic,
-        e->rail_elastic,    e->rail_plastic,      e->soil,          e->crush,          e->friction,
-        e->released};
-    return k >= 0 && k < CS_ENERGY_TERMS ? all[k] : 0.0;
+    if (!e || k < 0 || k >= CS_ENERGY_TERMS || term_offsets[k] + sizeof(double) > e->size) return 0.0;
+    double v;
+    memcpy(&v, (const char *)e + term_offsets[k], sizeof v);
+    return v;
 }

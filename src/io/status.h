@@ -10,6 +10,7 @@
 
 #include "cablesim/loader.h"
 #include "cablesim/sim.h"
+#include "../run/sized.h" /* the one size check: the engine's header src/io may include (tests/cli_layers.sh) */
 
 /* Fill err (may be NULL) with status and message, and return status. */
 static inline cs_status cs_status_set(cs_error *err, cs_status status, const char *message) {
@@ -21,28 +22,17 @@ static inline cs_status cs_status_set(cs_error *err, cs_status status, const cha
 }
 
 /* Whether the caller's struct out, that starts with its size, can take this library's of full_size bytes
- * (cablesim/rating.h, cablesim/loader.h): CS_OK, or CS_ERR_INVALID with err filled naming the struct if out
- * is NULL or its size is less than a size_t's or larger than full_size. */
+ * (cablesim/rating.h, cablesim/loader.h, cablesim/sweep.h, cablesim/compare.h): the engine's one check
+ * (run/sized.h), CS_OK or CS_ERR_INVALID with err filled naming the struct. */
 static inline cs_status cs_status_sized(const void *out, size_t full_size, const char *name, cs_error *err) {
-    size_t n = 0;
-    if (out) memcpy(&n, out, sizeof n);
-    if (n >= sizeof n && n <= full_size) return CS_OK;
-    char why[CS_MESSAGE_SIZE];
-    snprintf(why, sizeof why, "%s: size %zu, where this library's is %zu: set it to sizeof the struct", name,
-             n, full_size);
-    return cs_status_set(err, CS_ERR_INVALID, why);
+    return cs_sized_check(out, full_size, name, err);
 }
 
 /* Hand full (this library's struct, of full_size bytes) to the caller's out at out's size: as
- * cs_status_sized, writing nothing when that refuses it. */
+ * cs_status_sized, writing nothing when that refuses it (run/sized.h's cs_sized_put). */
 static inline cs_status cs_status_put_sized(void *out, const void *full, size_t full_size, const char *name,
                                             cs_error *err) {
-    if (cs_status_sized(out, full_size, name, err) != CS_OK) return CS_ERR_INVALID;
-    size_t n;
-    memcpy(&n, out, sizeof n);
-    memcpy(out, full, n);
-    memcpy(out, &n, sizeof n);
-    return cs_status_set(err, CS_OK, "");
+    return cs_sized_put(out, full, full_size, name, err);
 }
 
 /* A loaded model handed back by the caller (cablesim/loader.h): CS_OK, or CS_ERR_INVALID with err filled if

@@ -8,6 +8,7 @@
 #include "run/sized.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -128,7 +129,7 @@ void cs_loss_scan_feed(cs_loss_scan *scan, double t, double force, const cs_even
         if (scan->f[i] > before) before = scan->f[i], t_before = scan->t[i];
     }
     scan->pending = before - force > CS_SUDDEN_LOSS_FRACTION * scan->peak;
-    if (scan->pending) scan->fall = (cs_sudden_loss){t_before, t, before, force};
+    if (scan->pending) scan->fall = (cs_sudden_loss){sizeof(cs_sudden_loss), t_before, t, before, force};
 }
 
 int cs_loss_scan_finish(cs_loss_scan *scan, const cs_event *events, int event_count) {
@@ -180,28 +181,48 @@ int cs_sudden_losses(const double *t, const double *force, int n, double step, c
         cs_loss_scan_feed(scan, t[j], force[j], events, seen);
     }
     int count = cs_loss_scan_finish(scan, events, event_count);
-    for (int k = 0; k < scan->kept && k < capacity; k++)
-        out[k] = scan->found[k];
+    int kept = scan->kept < capacity ? scan->kept : capacity;
+    if (capacity > 0 && cs_sized_put_array(out, scan->found, sizeof *scan->found, kept, "cs_sudden_loss", err))
+        count = -1;
     free(events), free(ring), free(scan);
     return count;
 }
 
-int cs_state_sudden_losses(const cs_state *s, cs_sudden_loss *out, int capacity) {
-    if (s->outcome == CS_RUNNING) return 0;
-    int n = s->loss.kept < capacity ? s->loss.kept : capacity;
-    for (int k = 0; k < n; k++)
-        out[k] = s->loss.found[k];
+int cs_state_sudden_losses(const cs_state *s, cs_sudden_loss *out, int capacity, cs_error *err) {
+    int n = s->outcome == CS_RUNNING ? 0 : s->loss.kept < capacity ? s->loss.kept : capacity;
+    if (capacity > 0 && cs_sized_put_array(out, s->loss.found, sizeof *s->loss.found, n, "cs_sudden_loss", err))
+        return -1;
+    if (err) err->status = CS_OK, err->message[0] = '\0';
     return n;
 }
 
-int cs_state_cable_summary(const cs_state *s, int c, cs_cable_summary *out) {
-    if (c < 0 || c >= s->cable_count_alloc) return -1;
+/* Cable c's record over the run so far, at this library's size. */
+static cs_cable_summary cable_summary(const cs_state *s, int c) {
     const cs_cable_state *cs = &s->cables[c];
-    out->peak_tension_n = cs->max_tension_seen;
-    out->peak_tension_time_s = cs->max_tension_time;
-    out->work_on_vehicle_j = cs->work_on_vehicle;
-    out->energy_share = s->e_initial_kinetic > 0.0 ? -cs->work_on_vehicle / s->e_initial_kinetic : 0.0;
-    return 0;
+    return (cs_cable_summary){
+        .size = sizeof(cs_cable_summary),
+        .peak_tension_n = cs->max_tension_seen,
+        .peak_tension_time_s = cs->max_tension_time,
+        .work_on_vehicle_j = cs->work_on_vehicle,
+        .energy_share = s->e_initial_kinetic > 0.0 ? -cs->work_on_vehicle / s->e_initial_kinetic : 0.0};
+}
+
+cs_status cs_state_cable_summary(const cs_state *s, int c, cs_cable_summary *out, cs_error *err) {
+    if (c < 0 || c >= s->cable_count_alloc) {
+        char why[64];
+        snprintf(why, sizeof why, "no cable %d (the run has %d)", c, s->cable_count_alloc);
+        return cs_sized_refuse(err, "cs_cable_summary", why);
+    }
+    cs_cable_summary full = cable_summary(s, c);
+    return cs_sized_put(out, &full, sizeof full, "cs_cable_summary", err);
+}
+
+void cs_summary_cables(const cs_model *model, const cs_state *s, cs_summary *sm) {
+    for (int c = 0; c < model->cable_count && c < CS_SUMMARY_CABLES; c++) {
+        cs_cable_summary cb = cable_summary(s, c);
+        sm->cables[c] = (cs_summary_cable){cb.peak_tension_n, cb.peak_tension_time_s, cb.work_on_vehicle_j,
+                                           cb.energy_share};
+    }
 }
 
 static void end_run(const cs_model *model, cs_state *s, cs_outcome outcome, double value) {
@@ -210,7 +231,11 @@ static void end_run(const cs_model *model, cs_state *s, cs_outcome outcome, doub
     cs_summary *sm = &s->summary;
     sm->sudden_loss_count = cs_loss_scan_finish(&s->loss, s->events, s->event_count);
     for (int k = 0; k < CS_SUMMARY_SUDDEN_LOSSES; k++)
-        sm->sudden_losses[k] = k < s->loss.kept ? s->loss.found[k] : (cs_sudden_loss){0};
+        sm->sudden_losses[k] = k < s->loss.kept ? (cs_summary_loss){s->loss.found[k].t_start_s,
+                                                                    s->loss.found[k].t_end_s,
+                                                                    s->loss.found[k].force_before_n,
+                                                                    s->loss.found[k].force_after_n}
+                                                : (cs_summary_loss){0};
     if (outcome == CS_STOPPED) {
         s->summary.stop_time_s = s->t;
         cs_event_add(model, s, CS_EVENT_STOPPED, CS_ELEMENT_VEHICLE, 0, value);
@@ -247,8 +272,7 @@ void cs_response_update(const cs_model *model, cs_state *s) {
     update_decel(model, s, u);
     cs_loss_scan_feed(&s->loss, s->t, v3_norm(s->force), s->events, s->event_count);
     sm->cable_count = model->cable_count;
-    for (int c = 0; c < model->cable_count && c < CS_SUMMARY_CABLES; c++)
-        cs_state_cable_summary(s, c, &sm->cables[c]);
+    cs_summary_cables(model, s, sm);
     double pen = face_penetration(model, s);
     if (pen > sm->max_dynamic_penetration_m) sm->max_dynamic_penetration_m = pen;
     sm->working_width_m = fmax(sm->working_width_m, vehicle_reach(model, s));

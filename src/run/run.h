@@ -18,6 +18,8 @@ cs_state *cs_state_allocate(const cs_model *model, cs_error *err);
 
 /* ---- response parameters (response.c) ---- */
 void cs_response_update(const cs_model *model, cs_state *s);
+/* The summary's records of the model's first CS_SUMMARY_CABLES cables (cs_summary_cable), from the state. */
+void cs_summary_cables(const cs_model *model, const cs_state *s, cs_summary *sm);
 /* The sudden-loss check on samples fed one by one (cs_sudden_losses): start with a ring of `size`
  * samples (t and f), feed each with the events up to its time, finish at the end with all of them. */
 void cs_loss_scan_start(cs_loss_scan *scan, double *t, double *f, int size, double step);

@@ -187,13 +187,21 @@ cs_status cs_sized_refuse(cs_error *err, const char *name, const char *why) {
 
 /* The size at the start of the caller's struct at: CS_OK, or CS_ERR_INVALID naming it if that size is not
  * one a struct of this library's full_size can be. */
-static cs_status caller_size(const void *at, size_t full_size, const char *name, size_t *n, cs_error *err) {
+cs_status cs_sized_check(const void *at, size_t full_size, const char *name, cs_error *err) {
+    size_t n;
+    return cs_sized_size(at, full_size, name, &n, err);
+}
+
+cs_status cs_sized_size(const void *at, size_t full_size, const char *name, size_t *n, cs_error *err) {
+    *n = 0;
     if (!at) return cs_sized_refuse(err, name, "no struct (NULL)");
     memcpy(n, at, sizeof *n);
     char why[160];
     if (*n < sizeof *n)
-        snprintf(why, sizeof why, "size %zu: set it to sizeof the struct (%s x = {.size = sizeof x})", *n,
-                 name);
+        snprintf(why, sizeof why,
+                 "size %zu, where this library's is %zu: set it to sizeof the struct (%s x = {.size = "
+                 "sizeof x})",
+                 *n, full_size, name);
     else if (*n > full_size)
         snprintf(
             why, sizeof why,
@@ -206,16 +214,29 @@ static cs_status caller_size(const void *at, size_t full_size, const char *name,
 
 cs_status cs_sized_put(void *out, const void *full, size_t full_size, const char *name, cs_error *err) {
     size_t n;
-    if (caller_size(out, full_size, name, &n, err) != CS_OK) return CS_ERR_INVALID;
+    if (cs_sized_size(out, full_size, name, &n, err) != CS_OK) return CS_ERR_INVALID;
     memcpy(out, full, n);
     memcpy(out, &n, sizeof n);
     if (err) err->status = CS_OK, err->message[0] = '\0';
     return CS_OK;
 }
 
+cs_status cs_sized_put_array(void *out, const void *full, size_t full_size, int count, const char *name,
+                             cs_error *err) {
+    size_t n;
+    if (cs_sized_size(out, full_size, name, &n, err) != CS_OK) return CS_ERR_INVALID;
+    for (int i = 0; i < count; i++) {
+        char *at = (char *)out + (size_t)i * n;
+        memcpy(at, (const char *)full + (size_t)i * full_size, n);
+        memcpy(at, &n, sizeof n);
+    }
+    if (err) err->status = CS_OK, err->message[0] = '\0';
+    return CS_OK;
+}
+
 cs_status cs_sized_take(void *full, size_t full_size, const void *given, const char *name, cs_error *err) {
     size_t n;
-    if (caller_size(given, full_size, name, &n, err) != CS_OK) return CS_ERR_INVALID;
+    if (cs_sized_size(given, full_size, name, &n, err) != CS_OK) return CS_ERR_INVALID;
     memcpy(full, given, n);
     memcpy(full, &full_size, sizeof full_size);
     return CS_OK;

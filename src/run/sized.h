@@ -1,7 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* A caller's definitions read at the sizes it gave them (def.h): whole structs of this library, the fields
  * the caller's lacked at their defaults, for cs_model_create to check and build from; and the structs the
- * engine fills for the caller (sim.h's views, cs_summary, cs_event) written at the caller's size. */
+ * engine fills for the caller (sim.h's views, cs_summary, cs_event, cs_energy, cs_cable_summary,
+ * cs_sudden_loss; and the loaders' and writers' structs, through src/io/status.h) written at the caller's
+ * size. src/io includes this one header of the engine's layers (tests/cli_layers.sh), so that there is one
+ * size check. */
 #ifndef CS_SIZED_H
 #define CS_SIZED_H
 
@@ -23,10 +26,23 @@ int cs_defs_take(cs_defs *d, const cs_barrier_def *barrier, const cs_vehicle_def
                  const cs_scenario_def *scenario, cs_error *err);
 void cs_defs_free(cs_defs *d);
 
+/* Whether the caller's struct at, that starts with its size, can take this library's of full_size bytes:
+ * CS_OK, or CS_ERR_INVALID with err filled (may be NULL) naming the struct ("NAME: size N, where this
+ * library's is M: ...") if at is NULL or its size is less than a size_t's or larger than full_size. The one
+ * check of every struct the library fills or reads at its caller's size, the engine's and the loaders' and
+ * writers' (src/io/status.h). */
+cs_status cs_sized_check(const void *at, size_t full_size, const char *name, cs_error *err);
+/* The same, with the size found in *n (0 for NULL). */
+cs_status cs_sized_size(const void *at, size_t full_size, const char *name, size_t *n, cs_error *err);
 /* Hand full (this library's struct, of full_size bytes, that starts with its size) to the caller's out at
  * out's size: CS_OK, or CS_ERR_INVALID with err filled (may be NULL) naming the struct if out is NULL or its
  * size is less than a size_t's or larger than full_size. */
 cs_status cs_sized_put(void *out, const void *full, size_t full_size, const char *name, cs_error *err);
+/* Hand count (0 or more) of this library's structs (an array of full_size strides) to the caller's array
+ * out, each at the size of out's first and with that size: as cs_sized_put (out's first size checked even
+ * for none), nothing written when it is refused. */
+cs_status cs_sized_put_array(void *out, const void *full, size_t full_size, int count, const char *name,
+                             cs_error *err);
 /* Read the caller's struct given, of the size it starts with, over full (this library's, of full_size
  * bytes, holding the defaults of what the caller's lacks): CS_OK, or CS_ERR_INVALID as cs_sized_put. */
 cs_status cs_sized_take(void *full, size_t full_size, const void *given, const char *name, cs_error *err);

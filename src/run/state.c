@@ -95,6 +95,12 @@ cs_status cs_state_summary(const cs_state *s, cs_summary *out, cs_error *err) {
     return cs_sized_put(out, &full, sizeof full, "cs_summary", err);
 }
 
+cs_status cs_state_energy(const cs_state *s, cs_energy *out, cs_error *err) {
+    cs_energy full = s->energy;
+    full.size = sizeof full;
+    return cs_sized_put(out, &full, sizeof full, "cs_energy", err);
+}
+
 cs_status cs_state_event(const cs_state *s, int i, cs_event *out, cs_error *err) {
     if (i < 0 || i >= s->event_count) {
         char why[64];

@@ -131,8 +131,7 @@ void cs_state_reset(const cs_model *model, cs_state *s) {
     s->summary.initial_kinetic_energy_j = s->e_initial_kinetic;
     s->summary.max_cable_tension_n = 0.0;
     s->summary.cable_count = model->cable_count;
-    for (int c = 0; c < model->cable_count && c < CS_SUMMARY_CABLES; c++)
-        cs_state_cable_summary(s, c, &s->summary.cables[c]);
+    cs_summary_cables(model, s, &s->summary);
     s->work->stored_committed = cs_barrier_stored_energy(model, s);
 }
 

@@ -81,8 +81,8 @@ static void cables_and_losses(cs_wout *w, int *first, const cs_state *state, con
     jkey(w, first, "cables");
     fputc('[', w->f);
     for (int c = 0; c < s->cable_count; c++) {
-        cs_cable_summary cb;
-        cs_state_cable_summary(state, c, &cb);
+        cs_cable_summary cb = {.size = sizeof cb};
+        cs_state_cable_summary(state, c, &cb, NULL);
         int cf = 1;
         fprintf(w->f, "%s{", c ? "," : "");
         jkey(w, &cf, "index");
@@ -98,8 +98,8 @@ static void cables_and_losses(cs_wout *w, int *first, const cs_state *state, con
     fprintf(w->f, "%d", s->sudden_loss_count);
     jkey(w, first, "sudden_losses");
     fputc('[', w->f);
-    cs_sudden_loss losses[CS_SUDDEN_LOSS_KEPT];
-    int n = cs_state_sudden_losses(state, losses, CS_SUDDEN_LOSS_KEPT);
+    cs_sudden_loss losses[CS_SUDDEN_LOSS_KEPT] = {{.size = sizeof losses[0]}};
+    int n = cs_state_sudden_losses(state, losses, CS_SUDDEN_LOSS_KEPT, NULL);
     for (int k = 0; k < n; k++) {
         int lf = 1;
         fprintf(w->f, "%s{", k ? "," : "");

@@ -83,7 +83,8 @@ void cs_record_frame(const cs_model *model, const cs_state *state, void *user) {
     int f = rec->frame_count;
     rec->vehicle[f].size = sizeof rec->vehicle[f];
     cs_state_vehicle(model, state, &rec->vehicle[f], NULL);
-    cs_state_energy(state, &rec->energy[f]);
+    rec->energy[f].size = sizeof rec->energy[f];
+    cs_state_energy(state, &rec->energy[f], NULL);
     for (int c = 0; c < rec->cable_count; c++) {
         size_t k = (size_t)f * (size_t)rec->cable_count + (size_t)c;
         rec->cables[k].size = sizeof rec->cables[k];

@@ -68,8 +68,8 @@ static void events(FILE *f, const cs_state *state) {
 /* A warning for each sudden loss of the barrier's force on the vehicle (docs/theory.md, Response
  * parameters). */
 static void sudden_losses(FILE *f, const cs_state *state, const cs_summary *s) {
-    cs_sudden_loss losses[CS_SUDDEN_LOSS_KEPT];
-    int n = cs_state_sudden_losses(state, losses, CS_SUDDEN_LOSS_KEPT);
+    cs_sudden_loss losses[CS_SUDDEN_LOSS_KEPT] = {{.size = sizeof losses[0]}};
+    int n = cs_state_sudden_losses(state, losses, CS_SUDDEN_LOSS_KEPT, NULL);
     for (int k = 0; k < n; k++)
         fprintf(
             f,
@@ -178,8 +178,8 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
     fprintf(f, "  max cable tension    %.1f kN (%.1f kip)\n", s.max_cable_tension_n / 1e3,
             s.max_cable_tension_n / CS_KIP);
     for (int c = 0; c < s.cable_count; c++) {
-        cs_cable_summary cb;
-        cs_state_cable_summary(state, c, &cb);
+        cs_cable_summary cb = {.size = sizeof cb};
+        cs_state_cable_summary(state, c, &cb, NULL);
         fprintf(
             f,
             "  cable %-2d             peak %.1f kN (%.1f kip) at %.4f s; work on the vehicle %.1f kJ (%.0f "

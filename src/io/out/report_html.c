@@ -522,8 +522,8 @@ static void cables_and_losses(jw *j, int *first, const cs_state *state, const cs
     key(j, first, "cables");
     fputc('[', j->w.f);
     for (int c = 0; c < s->cable_count; c++) {
-        cs_cable_summary cb;
-        cs_state_cable_summary(state, c, &cb);
+        cs_cable_summary cb = {.size = sizeof cb};
+        cs_state_cable_summary(state, c, &cb, NULL);
         int cf = 1;
         fprintf(j->w.f, "%s{", c ? "," : "");
         kint(j, &cf, "index", c);
@@ -537,8 +537,8 @@ static void cables_and_losses(jw *j, int *first, const cs_state *state, const cs
     kint(j, first, "sudden_loss_count", s->sudden_loss_count);
     key(j, first, "sudden_losses");
     fputc('[', j->w.f);
-    cs_sudden_loss losses[CS_SUDDEN_LOSS_KEPT];
-    int n = cs_state_sudden_losses(state, losses, CS_SUDDEN_LOSS_KEPT);
+    cs_sudden_loss losses[CS_SUDDEN_LOSS_KEPT] = {{.size = sizeof losses[0]}};
+    int n = cs_state_sudden_losses(state, losses, CS_SUDDEN_LOSS_KEPT, NULL);
     for (int k = 0; k < n; k++) {
         int lf = 1;
         fprintf(j->w.f, "%s{", k ? "," : "");

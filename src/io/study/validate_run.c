@@ -63,8 +63,8 @@ static void collect(const cs_model *m, const cs_state *s, cs_validate_result *r)
             snprintf(r->how[e->element], sizeof r->how[e->element], "%.4g s %s", e->t, where);
         }
     }
-    cs_energy en;
-    cs_state_energy(s, &en);
+    cs_energy en = {.size = sizeof en};
+    cs_state_energy(s, &en, NULL);
     r->absorbed = en.initial_kinetic - en.vehicle_kinetic;
 }
 
