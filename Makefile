@@ -54,7 +54,7 @@ sanitize: deps
 # Each corpus grows in $(FUZZ_BUILD)/corpus-TARGET; a crash lands in $(FUZZ_BUILD)/artifacts.
 FUZZ_CFLAGS = -std=c17 -Wall -Wextra -Wpedantic -Werror -O1 -g -fno-omit-frame-pointer -fno-sanitize-recover=all \
   -fsanitize=fuzzer,address,undefined -Iinclude -Isrc -Isrc/io -Itests -DCS_SOURCE_DIR='"$(CURDIR)"'
-FUZZ_LIBS = $(FUZZ_BUILD)/libcablesim.a $$(pkg-config --libs yaml-0.1 cairo json-c) -ludunits2 -lm
+FUZZ_LIBS = $(FUZZ_BUILD)/libcablesim.a $$(pkg-config --libs yaml-0.1 json-c) -ludunits2 -lm -ldl
 FUZZ_SET_CS = $(if $(wildcard build-asan/cablesim),build-asan/cablesim,$(BUILD)/cablesim)
 FUZZ_RUN = LSAN_OPTIONS=suppressions=$(CURDIR)/fuzz/lsan.supp
 FUZZ_FLAGS = -max_total_time=$(FUZZ_SECONDS) -timeout=20 -print_final_stats=1 -artifact_prefix=$(FUZZ_BUILD)/artifacts/

@@ -1,23 +1,19 @@
 /* SPDX-License-Identifier: MIT */
 /* `cablesim compare RUN... [--measured FILE.csv] [-o DIR]`: runs (folders written by `cablesim run`)
  * and optionally a measured history side by side: DIR/compare.csv, compare.md, compare.html and
- * plots/compare-*.png and .svg (out/compare.h). Every input is read before anything is written; a
- * failure leaves nothing. */
+ * plots/compare-*.png and .svg, through the library's cablesim/compare.h: this file parses the command
+ * line. Every input is read before anything is written; a failure leaves nothing. */
 #define _POSIX_C_SOURCE 200809L
 #include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "cablesim/compare.h"
 #include "cli.h"
 #include "commands.h"
-#include "load/runread.h"
-#include "load/units.h"
-#include "out/compare.h"
-#include "out/outfile.h"
-#include "out/plot.h"
 
-enum { MAX_RUNS = 12 };
+enum { MAX_RUNS = CS_COMPARE_MAX_RUNS };
 
 static const char usage[] =
     "Usage: cablesim compare RUN... [--measured FILE.csv] [-o DIR] [--force]\n"
@@ -66,41 +62,26 @@ int cs_command_compare(int argc, char **argv) {
     int first = 1 + optind, runs = argc - first; /* cs_cli_next: operands from argv[1 + optind] */
     if (runs < 1) return cs_cli_usage_error(&compare_cli, "no run to compare");
     if (runs > MAX_RUNS) return cs_cli_usage_error(&compare_cli, "more than %d runs", MAX_RUNS);
-    cs_trace traces[MAX_RUNS + 1];
-    int count = 0, rc = 2;
-    char why[1024];
-    cs_units *units = NULL;
-    for (int i = first; i < argc; i++, count++)
-        if (cs_trace_read_run(argv[i], &traces[count], why, sizeof why) != 0) {
-            fprintf(stderr, "cablesim compare: %s\n", why);
-            goto done;
-        }
-    if (measured) {
-        if (!(units = cs_units_create(why, sizeof why)) ||
-            cs_trace_read_measured(measured, units, &traces[count], why, sizeof why) != 0) {
-            fprintf(stderr, "cablesim compare: %s\n", why);
-            goto done;
-        }
-        count++;
+    cs_compare_def def = cs_default_compare_def();
+    def.runs = (const char *const *)(argv + first);
+    def.run_count = runs;
+    def.measured = measured;
+    cs_compare *cmp = NULL;
+    cs_error err;
+    if (cs_compare_create(&def, &cmp, &err) != CS_OK) {
+        fprintf(stderr, "cablesim compare: %s\n", err.message);
+        return CS_EXIT_USAGE; /* as a run folder or measured file that cannot be read */
     }
-    cs_outdir out;
-    rc = 1;
-    if (cs_out_open(&out, dir, force ? CS_OUT_FORCE : 0, why, sizeof why) != 0 ||
-        cs_compare_write(&out, traces, count, measured ? count - 1 : 0, why, sizeof why) != 0 ||
-        cs_out_commit(&out, why, sizeof why) != 0) {
-        cs_out_abort(&out);
-        fprintf(stderr, "cablesim compare: nothing written: %s\n", why);
-        goto done;
+    int rc = 0;
+    if (cs_compare_write(cmp, dir, force ? CS_COMPARE_FORCE : 0, &err) != CS_OK) {
+        fprintf(stderr, "cablesim compare: nothing written: %s\n", err.message);
+        rc = 1;
+    } else {
+        printf("compared %d run%s%s: %s/{compare.html,compare.csv,compare.md,%splots/compare-*.png,.svg}\n",
+               runs, runs == 1 ? "" : "s", measured ? " and a measured history" : "", dir,
+               measured ? "metrics.csv," : "");
+        cs_compare_print_metrics(cmp, stdout);
     }
-    printf("compared %d run%s%s: %s/{compare.html,compare.csv,compare.md,%splots/compare-*.png,.svg}\n", runs,
-           runs == 1 ? "" : "s", measured ? " and a measured history" : "", dir,
-           measured ? "metrics.csv," : "");
-    cs_compare_print_metrics(stdout, traces, count, measured ? count - 1 : 0);
-    rc = 0;
-done:
-    cs_plot_release(); /* after the last plot (fontconfig's caches) */
-    for (int k = 0; k < count; k++)
-        cs_trace_free(&traces[k]);
-    cs_units_free(units);
+    cs_compare_free(cmp);
     return rc;
 }

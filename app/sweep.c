@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* cablesim sweep: the command line into the study's options, then the study run by the library
- * (study/sweepstudy.h) on this process's OpenMP threads and, in cablesim-mpi, on the ranks of MPI
- * (app/sweep_mpi.c sends each finished run to rank 0, which journals it). */
+/* cablesim sweep: the command line into the study's def, then the study run by the library
+ * (cablesim/sweep.h) on this process's OpenMP threads and, in cablesim-mpi, on the ranks of MPI through
+ * the library's study with the ranks' hooks (study/sweepstudy.h; app/sweep_mpi.c sends each finished run
+ * to rank 0, which journals it). */
 #include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -58,8 +59,16 @@ static int sweep_bad_usage(int rank, const char *what, const char *arg) {
     return EXIT_BAD;
 }
 
-/* The command line into o. Returns 0, -1 after --help (exit 0), or EXIT_BAD. */
-static int parse_opts(int argc, char **argv, cs_sweep_options *o, int rank) {
+/* The command line: the study's def (cablesim/sweep.h) and the strings it points to. */
+typedef struct sweep_args {
+    cs_sweep_def def;
+    int quiet;
+    const char *sets[256], *allow[64];
+    char set_text[256][1100]; /* --t-end and --dt as sets */
+} sweep_args;
+
+/* The command line into a. Returns 0, -1 after --help (exit 0), or EXIT_BAD. */
+static int parse_opts(int argc, char **argv, sweep_args *a, int rank) {
     enum { THREADS = 1000, RUNS, SEED, SET, T_END, DT, NETCDF, QUIET, RESUME, FORCE, ALLOW };
     static const struct option longopts[] = {
         {"out", required_argument, NULL, 'o'},   {"threads", required_argument, NULL, THREADS},
@@ -69,6 +78,10 @@ static int parse_opts(int argc, char **argv, cs_sweep_options *o, int rank) {
         {"quiet", no_argument, NULL, QUIET},     {"resume", required_argument, NULL, RESUME},
         {"force", no_argument, NULL, FORCE},     {"allow-path", required_argument, NULL, ALLOW},
         {"help", no_argument, NULL, 'h'},        {NULL, 0, NULL, 0}};
+    cs_sweep_def *d = &a->def;
+    *d = cs_default_sweep_def();
+    d->sets = a->sets;
+    d->allow = a->allow;
     int v, study = 0; /* options that define the study, which --resume takes from DIR */
     optind = 1;
     opterr = 0;
@@ -80,72 +93,76 @@ static int parse_opts(int argc, char **argv, cs_sweep_options *o, int rank) {
             if (rank == 0) cs_cli_help(&sweep_cli);
             return -1;
         case 'o':
-            o->out_dir = optarg;
+            d->out_dir = optarg;
             study = 1;
             break;
         case THREADS:
-            o->threads = (int)strtol(optarg, &end, 10);
-            if (*end || end == optarg || o->threads < 1 || o->threads > 1024)
+            d->threads = (int)strtol(optarg, &end, 10);
+            if (*end || end == optarg || d->threads < 1 || d->threads > 1024)
                 return sweep_bad_usage(rank, "--threads takes 1 to 1024", optarg);
             break;
         case RUNS:
-            o->runs = strtol(optarg, &end, 10);
-            if (*end || end == optarg || o->runs < 1 || o->runs > CS_SWEEP_MAX_RUNS)
+            d->runs = strtol(optarg, &end, 10);
+            if (*end || end == optarg || d->runs < 1 || d->runs > 1000000)
                 return sweep_bad_usage(rank, "--runs takes 1 to 1000000", optarg);
             study = 1;
             break;
         case SEED:
-            o->seed = optarg;
+            d->seed = optarg;
             study = 1;
             break;
         case SET:
         case T_END:
         case DT:
-            if (o->set_count == 256)
+            if (d->set_count == 256)
                 return sweep_bad_usage(rank, "more than 256 --set, --t-end and --dt", optarg);
             if (v == SET) {
-                o->sets[o->set_count] = optarg;
+                a->sets[d->set_count] = optarg;
             } else {
-                snprintf(o->set_text[o->set_count], sizeof o->set_text[0], "scenario.%s=%s",
+                snprintf(a->set_text[d->set_count], sizeof a->set_text[0], "scenario.%s=%s",
                          v == T_END ? "t_end" : "dt", optarg);
-                o->sets[o->set_count] = o->set_text[o->set_count];
+                a->sets[d->set_count] = a->set_text[d->set_count];
             }
-            o->set_count++;
+            d->set_count++;
             study = 1;
             break;
         case NETCDF:
-            o->netcdf = 1;
+            d->netcdf = 1;
             study = 1;
             break;
         case ALLOW:
-            if (o->allow_count == 64) return sweep_bad_usage(rank, "more than 64 --allow-path", optarg);
-            o->allow[o->allow_count++] = optarg;
+            if (d->allow_count == 64) return sweep_bad_usage(rank, "more than 64 --allow-path", optarg);
+            a->allow[d->allow_count++] = optarg;
             study = 1;
             break;
         case QUIET:
-            o->quiet = 1;
+            a->quiet = 1;
             break;
         case FORCE:
-            o->force = 1;
+            d->force = 1;
             break;
         case RESUME:
-            o->resume = optarg;
+            d->resume = optarg;
             break;
         default:
             return EXIT_BAD;
         }
     }
     int operands = argc - 1 - optind;
-    if (o->resume && (operands > 0 || study))
+    if (d->resume && (operands > 0 || study))
         return sweep_bad_usage(
             rank,
             "--resume DIR takes the study as DIR/summary.json records it: no SPEC, -o, --runs, "
             "--seed, --set, --t-end, --dt, --netcdf or --allow-path with it",
             operands > 0 ? argv[1 + optind] : NULL);
-    if (o->resume) return 0;
+    /* the problems on stderr; the progress and the closing lines unless --quiet, from rank 0 alone */
+    d->errors = stderr;
+    d->progress = a->quiet || rank > 0 ? NULL : stderr;
+    d->closing = a->quiet || rank > 0 ? NULL : stdout;
+    if (d->resume) return 0;
     if (operands > 1) return sweep_bad_usage(rank, "more than one spec file", argv[2 + optind]);
     if (operands < 1) return sweep_bad_usage(rank, "no spec file", NULL);
-    o->spec = argv[1 + optind];
+    d->spec = argv[1 + optind];
     return 0;
 }
 
@@ -184,10 +201,16 @@ int cs_sweep_check_wanted(int argc, char **argv) {
 }
 
 int cs_sweep_check_command(int argc, char **argv) {
+    static sweep_args a;
     static cs_sweep_options o;
-    memset(&o, 0, sizeof o);
-    int rc = parse_opts(argc, argv, &o, 0);
+    memset(&a, 0, sizeof a);
+    int rc = parse_opts(argc, argv, &a, 0);
     if (rc != 0) return rc < 0 ? 0 : rc;
+    cs_error err;
+    if (cs_sweep_options_of(&a.def, &o, &err) != CS_OK) {
+        fprintf(stderr, "cablesim check: %s\n", err.message);
+        return EXIT_BAD;
+    }
     cs_sweep_spec *spec = cs_sweep_study_spec(&o, 1);
     if (!spec) return EXIT_RUN;
     long n = 0;
@@ -195,7 +218,7 @@ int cs_sweep_check_command(int argc, char **argv) {
     if (!spec->error_count && !x) cs_sweep_error(spec, 0, 0, "out of memory for %ld runs", spec->runs);
     if (!spec->error_count) cs_sweep_check(spec, x);
     if (spec->error_count) {
-        cs_sweep_print_errors(spec);
+        cs_sweep_print_errors(spec, &o);
         rc = EXIT_BAD;
     } else {
         static const char *const methods[] = {"grid", "Monte Carlo", "Latin hypercube"};
@@ -252,15 +275,35 @@ int cs_sweep_command(int argc, char **argv) {
         return EXIT_BAD;
     }
 #endif
-    static cs_sweep_options o; /* its strings outlive the study */
-    memset(&o, 0, sizeof o);
-    int rc = parse_opts(argc, argv, &o, ranks.rank);
-    if (rc == 0)
-        rc = cs_sweep_study_run(&o, command, &ranks);
-    else if (rc < 0)
-        rc = 0; /* --help */
+    static sweep_args a; /* its strings outlive the study */
+    memset(&a, 0, sizeof a);
+    int rc = parse_opts(argc, argv, &a, ranks.rank);
+    if (rc < 0) rc = 0; /* --help */
 #ifdef CS_MPI
+    else if (rc == 0) { /* the ranks' hooks (sweep_mpi.h) are the command's: the study's options */
+        static cs_sweep_options o;
+        cs_error err;
+        if (cs_sweep_options_of(&a.def, &o, &err) != CS_OK) {
+            if (ranks.rank == 0) fprintf(stderr, "cablesim sweep: %s\n", err.message);
+            rc = EXIT_BAD;
+        } else {
+            rc = cs_sweep_study_run(&o, command, &ranks);
+        }
+    }
     MPI_Finalize();
+#else
+    else if (rc == 0) {
+        a.def.threads = thread_count(a.def.threads, 1);
+        a.def.parallel = omp_parallel;
+        a.def.command = command;
+        cs_sweep *study = NULL;
+        cs_error err;
+        cs_status st = cs_sweep_study(&a.def, &study, &err); /* its problems said on stderr */
+        rc = st == CS_OK           ? (cs_sweep_stopped_by(study) ? 128 + cs_sweep_stopped_by(study) : 0)
+             : st == CS_ERR_INVALID ? EXIT_BAD
+                                    : EXIT_RUN;
+        cs_sweep_free(study);
+    }
 #endif
     return rc;
 }

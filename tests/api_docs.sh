@@ -15,11 +15,14 @@ check() { if eval "$2"; then pass=$((pass + 1)); else echo "FAIL: $1"; fail=$((f
 { cat "$doxyfile"; echo "OUTPUT_DIRECTORY = $tmp"; echo "WARN_AS_ERROR = FAIL_ON_WARNINGS"; } | doxygen - >"$tmp/log" 2>&1
 check "doxygen ran without a warning" '[ $? -eq 0 ] && [ ! -s "$tmp/log" ] || { cat "$tmp/log"; false; }'
 check "the first page is docs/library.md" 'grep -q "cablesim as a C library" "$tmp/html/index.html"'
-for h in cablesim export def sim loader output rating; do
+check "the first page shows a study and a comparison" 'grep -q "cs_sweep_study" "$tmp/html/index.html" && grep -q "cs_compare_create" "$tmp/html/index.html"'
+for h in cablesim export def sim loader output rating sweep compare; do
     check "a page for $h.h" '[ -s "$tmp/html/${h}_8h.html" ]'
 done
 for f in cs_loader_create cs_loader_set cs_loader_load cs_loader_build cs_state_create cs_run cs_state_summary \
-    cs_record_create cs_record_vehicle cs_write_outputs cs_version cs_rate; do
+    cs_record_create cs_record_vehicle cs_write_outputs cs_version cs_rate cs_state_energy cs_state_cable_summary \
+    cs_state_sudden_losses cs_default_sweep_def cs_sweep_study cs_sweep_run_summary cs_default_compare_def \
+    cs_compare_create cs_compare_get cs_compare_write; do
     check "$f has its documentation" 'grep -q "</span>$f()</h2>" "$tmp"/html/*_8h.html'
 done
 echo "$pass passed, $fail failed"

@@ -2,8 +2,8 @@
 /** @file
  * cablesim: progressive-failure simulation of cable barriers struck by a vehicle. The umbrella header:
  * the engine's definitions (def.h) and its model, state, step and run (sim.h), model files (loader.h),
- * a run's time histories and output files (output.h), a run's anti-ram rating (rating.h), and the US
- * customary units in SI (units.h). Link with libcablesim (pkg-config cablesim, or CMake's
+ * a run's time histories and output files (output.h), a run's anti-ram rating (rating.h), studies over
+ * a model's values (sweep.h), runs side by side (compare.h), and the US customary units in SI (units.h). Link with libcablesim (pkg-config cablesim, or CMake's
  * find_package(cablesim) and the target cablesim::cablesim). */
 #ifndef CABLESIM_H
 #define CABLESIM_H
@@ -11,11 +11,13 @@
 /** The version of these headers, MAJOR.MINOR.PATCH (CMakeLists.txt takes the project's version from it). */
 #define CS_VERSION_STRING "0.1.0"
 
+#include "cablesim/compare.h"
 #include "cablesim/def.h"
 #include "cablesim/loader.h"
 #include "cablesim/output.h"
 #include "cablesim/rating.h"
 #include "cablesim/sim.h"
+#include "cablesim/sweep.h"
 #include "cablesim/units.h"
 
 #ifdef __cplusplus

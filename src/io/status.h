@@ -16,7 +16,10 @@
 static inline cs_status cs_status_set(cs_error *err, cs_status status, const char *message) {
     if (err) {
         err->status = status;
-        snprintf(err->message, sizeof err->message, "%s", status == CS_OK ? "" : message);
+        size_t n = status == CS_OK || !message ? 0 : strlen(message); /* cut to the message's room */
+        if (n >= sizeof err->message) n = sizeof err->message - 1;
+        memcpy(err->message, message, n);
+        err->message[n] = '\0';
     }
     return status;
 }

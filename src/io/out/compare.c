@@ -134,6 +134,26 @@ static double difference(const cs_trace *tr, const cs_trace *ref, int k) {
     return isfinite(x) && isfinite(r) && r != 0.0 ? 100.0 * (x - r) / fabs(r) : NAN;
 }
 
+int cs_compare_param_count(void) {
+    return PARAMS;
+}
+
+const char *cs_compare_param_name(int k) {
+    return k >= 0 && k < PARAMS ? params[k].name : NULL;
+}
+
+const char *cs_compare_param_unit(int k) {
+    return k >= 0 && k < PARAMS ? params[k].unit : NULL;
+}
+
+double cs_compare_param_value(const cs_trace *tr, int k) {
+    return k >= 0 && k < PARAMS ? value(tr, k) : NAN;
+}
+
+double cs_compare_param_difference(const cs_trace *tr, const cs_trace *ref, int k) {
+    return k >= 0 && k < PARAMS ? difference(tr, ref, k) : NAN;
+}
+
 static void csv_text(FILE *f, const char *s) {
     cs_csv_text(f, s, 1);
 }
@@ -294,7 +314,7 @@ static void write_metrics(FILE *f, const cs_trace *tr, int count, int reference,
     if (format == 2) fputs("</table>\n", f);
 }
 
-void cs_compare_print_metrics(FILE *f, const cs_trace *traces, int count, int reference) {
+void cs_compare_print_trace_metrics(FILE *f, const cs_trace *traces, int count, int reference) {
     if (!traces[reference].measured) return;
     fputs("validation metrics (NCHRP W179) against the measured history:\n", f);
     write_metrics(f, traces, count, reference, 3);
@@ -302,8 +322,8 @@ void cs_compare_print_metrics(FILE *f, const cs_trace *traces, int count, int re
 
 /* ---- the files ---- */
 
-int cs_compare_write(cs_outdir *out, const cs_trace *traces, int count, int reference, char *why,
-                     size_t why_size) {
+int cs_compare_write_traces(cs_outdir *out, const cs_trace *traces, int count, int reference, char *why,
+                            size_t why_size) {
     FILE *f = cs_out_begin(out, "compare.csv", why, why_size);
     if (!f) return -1;
     write_csv(f, traces, count, reference);

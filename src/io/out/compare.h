@@ -23,12 +23,22 @@ int cs_compare_trace(int k, const cs_trace *traces, int count, int reference, cs
 /* Into out: compare.csv and compare.md (the table), plots/compare-<response>.png and .svg, and
  * compare.html (the table and the plots in one page that opens from disk). traces[reference] is the
  * reference. Returns 0, or -1 with why filled. */
-int cs_compare_write(cs_outdir *out, const cs_trace *traces, int count, int reference, char *why,
-                     size_t why_size);
-/* With a measured reference, compare_write also writes metrics.csv and a "Validation metrics" table in
+int cs_compare_write_traces(cs_outdir *out, const cs_trace *traces, int count, int reference, char *why,
+                            size_t why_size);
+/* With a measured reference, cs_compare_write_traces also writes metrics.csv and a "Validation metrics" table in
  * compare.md and compare.html: each run's Sprague-Geers M, P, C and ANOVA mean and std of the residuals
  * against it (study/metrics.h), per response both give, and W179's verdict. This prints the same to f
  * (nothing without a measured reference). */
-void cs_compare_print_metrics(FILE *f, const cs_trace *traces, int count, int reference);
+void cs_compare_print_trace_metrics(FILE *f, const cs_trace *traces, int count, int reference);
+
+/* The table's response parameters (compare.csv's rows after the outcome), in its order: their count, name
+ * ("max 50-ms deceleration") and SI unit ("g", "m"; NULL out of range), trace tr's value (NAN: not given)
+ * and its difference from ref in per cent (NAN: either not given, a lower bound, or ref's 0), as
+ * compare.csv writes them. */
+int cs_compare_param_count(void);
+const char *cs_compare_param_name(int k);
+const char *cs_compare_param_unit(int k);
+double cs_compare_param_value(const cs_trace *tr, int k);
+double cs_compare_param_difference(const cs_trace *tr, const cs_trace *ref, int k);
 
 #endif

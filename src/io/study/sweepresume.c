@@ -143,12 +143,12 @@ int cs_sweep_resume_read(const char *dir, cs_sweep_options *o, cs_sweep_resumed 
  * pending), after checking that the study is the one DIR holds. Returns how many were read, or -1 (why
  * printed). */
 long cs_sweep_resume_runs(const char *dir, const cs_sweep_spec *spec, const cs_sweep_resumed *was,
-                          const double *x, cs_sweep_result *all, long n) {
+                          const double *x, cs_sweep_result *all, long n, cs_sweep_options *o) {
     char hash[17], path[1200], why[600];
     if (strcmp(was->version, CS_VERSION_STRING) != 0) {
-        fprintf(stderr,
-                "cablesim sweep: %s was written by cablesim %s, this is %s: its runs may differ from this "
-                "one's; run the study again without --resume\n",
+        cs_sweep_say(o,
+                "%s was written by cablesim %s, this is %s: its runs may differ from this "
+                "one's; run the study again without --resume",
                 dir, was->version, CS_VERSION_STRING);
         return -1;
     }
@@ -156,10 +156,10 @@ long cs_sweep_resume_runs(const char *dir, const cs_sweep_spec *spec, const cs_s
     if (!spec->origin.has_model_hash || strcmp(hash, was->model_hash) != 0 ||
         strcmp((snprintf(hash, sizeof hash, "%016llx", spec->origin.inputs_hash), hash), was->inputs_hash) !=
             0) {
-        fprintf(
-            stderr,
-            "cablesim sweep: %s: the study has changed since it was stopped (its model, %s, or its values): "
-            "run it again without --resume\n",
+        cs_sweep_say(
+            o,
+            "%s: the study has changed since it was stopped (its model, %s, or its values): "
+            "run it again without --resume",
             dir, spec->model);
         return -1;
     }
@@ -167,11 +167,11 @@ long cs_sweep_resume_runs(const char *dir, const cs_sweep_spec *spec, const cs_s
     FILE *f = was->journal ? fmemopen((void *)was->rows, was->rows_length ? was->rows_length : 1, "r")
                            : fopen(path, "r");
     if (!f) {
-        fprintf(stderr, "cablesim sweep: %s: %s\n", path, strerror(errno));
+        cs_sweep_say(o, "%s: %s", path, strerror(errno));
         return -1;
     }
     long got = cs_sweep_read_runs(f, path, spec, x, all, n, was->journal != NULL, why, sizeof why);
     fclose(f);
-    if (got < 0) fprintf(stderr, "cablesim sweep: %s\n", why);
+    if (got < 0) cs_sweep_say(o, "%s", why);
     return got;
 }

@@ -4,6 +4,7 @@
 #include <limits.h>
 #include <pthread.h>
 #include <signal.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -24,17 +25,17 @@ enum { EXIT_RUN = CS_SWEEP_EXIT_RUN, EXIT_BAD = CS_SWEEP_EXIT_USAGE };
 
 /* ---- the spec and the folder ---- */
 
-cs_sweep_spec *cs_sweep_study_spec(const cs_sweep_options *o, int loud) {
+cs_sweep_spec *cs_sweep_study_spec(cs_sweep_options *o, int loud) {
     char why[256];
     cs_units *units = cs_units_create(why, sizeof why);
     if (!units) {
-        if (loud) fprintf(stderr, "cablesim sweep: %s\n", why);
+        if (loud) cs_sweep_say(o, "%s", why);
         return NULL;
     }
     cs_sweep_spec *spec = cs_sweep_spec_read(o->spec, units);
     cs_units_free(units);
     if (!spec) {
-        if (loud) fprintf(stderr, "cablesim sweep: out of memory\n");
+        if (loud) cs_sweep_say(o, "out of memory");
         return NULL;
     }
     cs_sweep_plots_check(spec);
@@ -56,11 +57,22 @@ cs_sweep_spec *cs_sweep_study_spec(const cs_sweep_options *o, int loud) {
     return spec;
 }
 
-void cs_sweep_print_errors(const cs_sweep_spec *spec) {
-    for (int i = 0; i < spec->error_count; i++)
-        cs_term_text(stderr, spec->errors[i]), fputc('\n', stderr);
-    fprintf(stderr, "cablesim sweep: %s: %d problem%s, nothing run\n", spec->file, spec->error_count,
-            spec->error_count == 1 ? "" : "s");
+void cs_sweep_say(cs_sweep_options *o, const char *fmt, ...) {
+    char text[2048];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(text, sizeof text, fmt, ap);
+    va_end(ap);
+    if (o->errors) fprintf(o->errors, "cablesim sweep: %s\n", text), fflush(o->errors);
+    if (!o->why[0]) snprintf(o->why, sizeof o->why, "%.511s", text);
+}
+
+void cs_sweep_print_errors(const cs_sweep_spec *spec, cs_sweep_options *o) {
+    for (int i = 0; o->errors && i < spec->error_count; i++)
+        cs_term_text(o->errors, spec->errors[i]), fputc('\n', o->errors);
+    if (spec->error_count == 1 && !o->why[0]) snprintf(o->why, sizeof o->why, "%.511s", spec->errors[0]);
+    cs_sweep_say(o, "%s: %d problem%s, nothing run", spec->file, spec->error_count,
+                 spec->error_count == 1 ? "" : "s");
 }
 
 /* The sweep's output folder: DIR, or results/<the spec's name>. */
@@ -84,6 +96,7 @@ static double now(void) {
 }
 
 typedef struct progress {
+    FILE *f; /* NULL: none */
     int on, tty, ranks;
     long done, total;
     double start, last;
@@ -114,14 +127,14 @@ static void progress_show(progress *p, int final) {
         for (int i = 0; i < 30; i++)
             bar[i] = i < full ? '#' : '-';
         bar[30] = '\0';
-        fprintf(stderr, "\r[%s] %ld/%ld runs%s  %.2f runs/s  %s left   ", bar, p->done, p->total, who, rate,
+        fprintf(p->f, "\r[%s] %ld/%ld runs%s  %.2f runs/s  %s left   ", bar, p->done, p->total, who, rate,
                 left);
-        if (final) fputc('\n', stderr);
+        if (final) fputc('\n', p->f);
     } else {
-        fprintf(stderr, "sweep: %ld/%ld runs%s (%.0f%%), %.2f runs/s, about %s left\n", p->done, p->total,
+        fprintf(p->f, "sweep: %ld/%ld runs%s (%.0f%%), %.2f runs/s, about %s left\n", p->done, p->total,
                 who, p->total ? 100.0 * (double)p->done / (double)p->total : 100.0, rate, left);
     }
-    fflush(stderr);
+    fflush(p->f);
 }
 
 /* ---- the journal and the outputs ---- */
@@ -145,7 +158,7 @@ static int start_journal(cs_outdir *out, const cs_sweep_spec *spec, const double
  * cannot be written is said once (*failed, the study's own); the runs go on, and the outputs at the end
  * hold them. */
 static void journal_run(cs_outdir *out, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
-                        long i, int *failed) {
+                        long i, int *failed, cs_sweep_options *o) {
     char *text = NULL, why[1600];
     size_t length = 0;
     FILE *f = *failed ? NULL : open_memstream(&text, &length);
@@ -154,8 +167,7 @@ static void journal_run(cs_outdir *out, const cs_sweep_spec *spec, const double 
     fclose(f);
     if (cs_out_journal_add(out, text, length, why, sizeof why) != 0) {
         *failed = 1;
-        fprintf(stderr, "cablesim sweep: %s: the runs from now on are not journalled (a kill loses them)\n",
-                why);
+        cs_sweep_say(o, "%s: the runs from now on are not journalled (a kill loses them)", why);
     }
     free(text);
 }
@@ -168,6 +180,7 @@ typedef struct taker {
     const double *x;
     cs_sweep_result *all;
     int journal_failed; /* the journal could not be written (said once) */
+    cs_sweep_options *o;
 } taker;
 
 static void take_run(void *ctx, long i, const cs_sweep_result *r) {
@@ -175,7 +188,7 @@ static void take_run(void *ctx, long i, const cs_sweep_result *r) {
     taker *t = ctx;
     pthread_mutex_lock(&lock);
     t->all[i] = *r;
-    journal_run(t->out, t->spec, t->x, r, i, &t->journal_failed);
+    journal_run(t->out, t->spec, t->x, r, i, &t->journal_failed, t->o);
     pthread_mutex_unlock(&lock);
 }
 
@@ -188,7 +201,7 @@ static const char *signal_name(int sig) {
  * together; nothing is left if one fails, and an earlier study's files (its manifest's) that this one
  * does not write are removed. */
 static int write_all(cs_outdir *out, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
-                     long n, int partial) {
+                     long n, int partial, cs_sweep_options *o) {
     char why[512] = "";
     int rc = 0;
     static const char *const names[] = {"runs.csv", "summary.md", "summary.json"};
@@ -230,10 +243,10 @@ static int write_all(cs_outdir *out, const cs_sweep_spec *spec, const double *x,
     if (rc == 0) rc = cs_out_commit(out, why, sizeof why);
     if (rc != 0) {
         cs_out_abort(out);
-        fprintf(stderr,
-                "cablesim sweep: nothing written: %s; the runs done are kept in %s/%s: `cablesim sweep "
-                "--resume %s` writes the study once that is put right\n",
-                why, out->dir, CS_OUT_JOURNAL, out->dir);
+        cs_sweep_say(o,
+                     "nothing written: %s; the runs done are kept in %s/%s: `cablesim sweep --resume %s` "
+                     "writes the study once that is put right",
+                     why, out->dir, CS_OUT_JOURNAL, out->dir);
     }
     return rc;
 }
@@ -309,7 +322,24 @@ static void abort_ranks(const cs_sweep_ranks *ranks, int status) {
     if (ranks->abort) ranks->abort(ranks->ctx, status);
 }
 
+/* The study as a handle (cablesim/sweep.h), taking over spec, x and all: NULL if memory is short. */
+static cs_sweep *handle(cs_sweep_spec *spec, double *x, cs_sweep_result *all, long n, long ran, int stopped,
+                        const char *dir) {
+    cs_sweep *h = calloc(1, sizeof *h);
+    if (!h) return NULL;
+    *h = (cs_sweep){spec, x, all, n, ran, stopped, ""};
+    if (spec) spec->origin.command = NULL, spec->origin.dir = NULL, spec->origin.resume = NULL; /* freed */
+    snprintf(h->dir, sizeof h->dir, "%s", dir);
+    return h;
+}
+
 int cs_sweep_study_run(cs_sweep_options *o, const char *command, const cs_sweep_ranks *ranks) {
+    return cs_sweep_study_keep(o, command, ranks, NULL);
+}
+
+int cs_sweep_study_keep(cs_sweep_options *o, const char *command, const cs_sweep_ranks *ranks,
+                        cs_sweep **keep) {
+    if (keep) *keep = NULL;
     int rank = ranks->rank, size = ranks->size, rc = 0;
     static cs_sweep_resumed was;
     char as_given[PATH_MAX] = "", cwd[PATH_MAX] = "";
@@ -319,7 +349,7 @@ int cs_sweep_study_run(cs_sweep_options *o, const char *command, const cs_sweep_
     if (o->resume) {
         char why[1400];
         if (cs_sweep_resume_read(o->resume, o, &was, why, sizeof why) != 0) {
-            if (rank == 0) fprintf(stderr, "cablesim sweep: --resume: %s\n", why);
+            if (rank == 0) cs_sweep_say(o, "--resume: %s", why);
             rc = EXIT_BAD;
         } else if (strcmp(was.cwd, cwd) == 0) {
             snprintf(as_given, sizeof as_given, "%s", was.spec_as_given);
@@ -336,7 +366,7 @@ int cs_sweep_study_run(cs_sweep_options *o, const char *command, const cs_sweep_
     }
     if (rc == 0 && rank == 0 && spec->error_count == 0) cs_sweep_check(spec, x);
     if (rc == 0 && spec->error_count) {
-        if (rank == 0) cs_sweep_print_errors(spec);
+        if (rank == 0) cs_sweep_print_errors(spec, o);
         rc = EXIT_BAD;
     }
     /* rank 0: the output folder, checked before any run; --resume: the runs done */
@@ -357,18 +387,18 @@ int cs_sweep_study_run(cs_sweep_options *o, const char *command, const cs_sweep_
         for (long i = 0; all && i < n; i++)
             all[i].pending = 1;
         if (!all || !record) {
-            fprintf(stderr, "cablesim sweep: out of memory for %ld results\n", n);
+            cs_sweep_say(o, "out of memory for %ld results", n);
             rc = EXIT_RUN;
         } else if (o->resume && !was.partial) {
-            if (!o->quiet) printf("sweep: %s holds the whole study (%ld runs): nothing to run\n", dir, n);
+            if (o->closing) fprintf(o->closing, "sweep: %s holds the whole study (%ld runs): nothing to run\n", dir, n);
             rc = -1;
-        } else if (o->resume && (done = cs_sweep_resume_runs(dir, spec, &was, x, all, n)) < 0) {
+        } else if (o->resume && (done = cs_sweep_resume_runs(dir, spec, &was, x, all, n, o)) < 0) {
             rc = EXIT_BAD;
         } else if (cs_out_open(&out, dir, o->force ? CS_OUT_FORCE : 0, why, sizeof why) != 0) {
-            fprintf(stderr, "cablesim sweep: nothing run: %s\n", why);
+            cs_sweep_say(o, "nothing run: %s", why);
             rc = EXIT_RUN;
         } else if (out_open = 1, start_journal(&out, spec, x, all, n, why, sizeof why) != 0) {
-            fprintf(stderr, "cablesim sweep: nothing run: %s\n", why);
+            cs_sweep_say(o, "nothing run: %s", why);
             rc = EXIT_RUN;
         }
     }
@@ -381,7 +411,7 @@ int cs_sweep_study_run(cs_sweep_options *o, const char *command, const cs_sweep_
         todo_mask = malloc((size_t)(n > 0 ? n : 1));
         todo = malloc((size_t)(n > 0 ? n : 1) * sizeof *todo);
         if (!todo_mask || !todo) {
-            fprintf(stderr, "cablesim sweep: out of memory for %ld runs\n", n);
+            cs_sweep_say(o, "out of memory for %ld runs", n);
             abort_ranks(ranks, EXIT_RUN);
             rc = EXIT_RUN;
         }
@@ -393,6 +423,8 @@ int cs_sweep_study_run(cs_sweep_options *o, const char *command, const cs_sweep_
     }
     if (rc != 0) {
         if (out_open) cs_out_abort(&out);
+        if (rc < 0 && keep && (*keep = handle(spec, x, all, n, 0, 0, dir))) /* nothing to run */
+            spec = NULL, x = NULL, all = NULL;
         free(x), free(all), free(todo), free(todo_mask), free(record), free(was.journal);
         cs_sweep_spec_free(spec);
         return rc < 0 ? 0 : rc;
@@ -401,25 +433,26 @@ int cs_sweep_study_run(cs_sweep_options *o, const char *command, const cs_sweep_
     long local_n = todo_n > rank ? (todo_n - rank + size - 1) / size : 0;
     cs_sweep_result *mine = calloc((size_t)(local_n > 0 ? local_n : 1), sizeof *mine);
     if (!mine) {
-        fprintf(stderr, "cablesim sweep: out of memory for %ld results\n", todo_n);
+        cs_sweep_say(o, "out of memory for %ld results", todo_n);
         abort_ranks(ranks, EXIT_RUN);
         return EXIT_RUN;
     }
     for (long m = 0; m < local_n; m++)
         mine[m].pending = 1;
-    progress p = {rank == 0 && !o->quiet, isatty(STDERR_FILENO), size, 0, local_n, now(), now()};
-    if (rank == 0 && !o->quiet)
-        fprintf(stderr, "sweep: %ld runs of %s on %d rank%s x %d thread%s%s\n", todo_n, spec->model, size,
+    progress p = {o->progress,          rank == 0 && o->progress,
+                  o->progress && isatty(fileno(o->progress)), size, 0, local_n, now(), now()};
+    if (rank == 0 && o->progress)
+        fprintf(o->progress, "sweep: %ld runs of %s on %d rank%s x %d thread%s%s\n", todo_n, spec->model, size,
                 size == 1 ? "" : "s", threads, threads == 1 ? "" : "s",
                 o->resume ? " (the rest of a stopped study)" : "");
     const char *stop_after_text = getenv("CABLESIM_SWEEP_STOP_AFTER");
     stop_signal = 0;
     catch_signals(1);
     double start = now();
-    taker t = {&out, spec, x, all, 0};
+    taker t = {&out, spec, x, all, 0, o};
     if (rank == 0 && size > 1 && ranks->receive_start &&
         ranks->receive_start(ranks->ctx, take_run, &t) != 0) {
-        fprintf(stderr, "cablesim sweep: cannot start the thread that receives the other ranks' runs\n");
+        cs_sweep_say(o, "cannot start the thread that receives the other ranks' runs");
         abort_ranks(ranks, EXIT_RUN);
     }
     runner w = {spec,
@@ -442,7 +475,7 @@ int cs_sweep_study_run(cs_sweep_options *o, const char *command, const cs_sweep_
     if (!stopped)
         progress_show(&p, 1);
     else if (p.on && p.tty)
-        fputc('\n', stderr);
+        fputc('\n', p.f);
     if (rank == 0 && size > 1 && ranks->receive_end)
         ranks->receive_end(ranks->ctx);
     else if (rank > 0 && ranks->send_done)
@@ -456,34 +489,39 @@ int cs_sweep_study_run(cs_sweep_options *o, const char *command, const cs_sweep_
             bad += !all[i].pending && all[i].status != CS_RUN_OK;
         }
         spec->origin.stopped_by = pending ? signal_name(stopped) : NULL;
-        if (write_all(&out, spec, x, all, n, pending > 0) != 0) {
+        if (write_all(&out, spec, x, all, n, pending > 0, o) != 0) {
             rc = EXIT_RUN;
         } else if (pending) {
-            fprintf(stderr,
-                    "cablesim sweep: stopped by %s: %ld of %ld runs done, written to %s (partial); `cablesim "
-                    "sweep --resume %s` runs the other %ld\n",
-                    signal_name(stopped), n - pending, n, dir, dir, pending);
+            if (o->errors)
+                fprintf(o->errors,
+                        "cablesim sweep: stopped by %s: %ld of %ld runs done, written to %s (partial); `cablesim "
+                        "sweep --resume %s` runs the other %ld\n",
+                        signal_name(stopped), n - pending, n, dir, dir, pending);
             rc = 128 + (stopped ? stopped : SIGINT);
-        } else if (!o->quiet) {
-            printf("sweep: %ld runs in %.3f s (%.3f runs/s) on %d rank%s x %d thread%s; %ld did not run to "
+        } else if (o->closing) {
+            fprintf(o->closing, "sweep: %ld runs in %.3f s (%.3f runs/s) on %d rank%s x %d thread%s; %ld did not run to "
                    "the end\n",
                    todo_n, wall, wall > 0 ? (double)todo_n / wall : 0, size, size == 1 ? "" : "s", threads,
                    threads == 1 ? "" : "s", bad);
             if (o->resume)
-                printf("sweep: %ld runs read back from %s/runs.csv, %ld run now\n", done, dir, todo_n);
-            printf("outputs: %s/{runs.csv,summary.md,summary.json,report.html,plots/study-*.png%s", dir,
+                fprintf(o->closing, "sweep: %ld runs read back from %s/runs.csv, %ld run now\n", done, dir,
+                        todo_n);
+            fprintf(o->closing, "outputs: %s/{runs.csv,summary.md,summary.json,report.html,plots/study-*.png%s", dir,
                    spec->netcdf ? ",runs.nc" : "");
             for (int k = 0; k < spec->plot_count; k++) {
                 char file[256];
                 cs_sweep_plot_file(spec, k, file, sizeof file);
-                printf(",%s", file);
+                fprintf(o->closing, ",%s", file);
             }
-            printf("}\n");
+            fprintf(o->closing, "}\n");
         }
     } else if (stopped) {
         rc = 128 + stopped;
     }
     pthread_mutex_destroy(&w.lock);
+    if (rank == 0 && keep && (rc == 0 || rc > 128) &&
+        (*keep = handle(spec, x, all, n, p.done, stopped, dir)))
+        spec = NULL, x = NULL, all = NULL;
     free(mine);
     free(all);
     free(x);

@@ -13,6 +13,9 @@
 #ifndef CS_SWEEPSTUDY_H
 #define CS_SWEEPSTUDY_H
 
+#include <stdio.h>
+
+#include "cablesim/sweep.h"
 #include "study/sweep.h"
 
 /* The exit statuses returned, beside 0 and 128 + a signal (stopped, partial): the command's own. */
@@ -24,7 +27,10 @@ enum { CS_SWEEP_MAX_ALLOW = 64, CS_SWEEP_MAX_SETS = 256 };
  * study is read back from its folder (cs_sweep_resume_read). */
 typedef struct cs_sweep_options {
     const char *spec, *out_dir, *resume;
-    int threads, quiet, netcdf, force;
+    int threads, netcdf, force;
+    /* the problems; the progress; the closing lines (cablesim/sweep.h's def): NULL, none */
+    FILE *errors, *progress, *closing;
+    char why[512]; /* the first problem said (without "cablesim sweep: "), for a cs_error */
     long runs;
     const char *seed;
     const char *allow[CS_SWEEP_MAX_ALLOW];
@@ -65,13 +71,33 @@ typedef struct cs_sweep_ranks {
 
 /* The spec of o->spec with the command line's changes (--set, --runs, --seed, --netcdf, --allow-path);
  * its problems are in its errors. NULL if memory is short (said on stderr when loud). */
-cs_sweep_spec *cs_sweep_study_spec(const cs_sweep_options *o, int loud);
-/* The spec's errors on stderr, and their count. */
-void cs_sweep_print_errors(const cs_sweep_spec *spec);
+cs_sweep_spec *cs_sweep_study_spec(cs_sweep_options *o, int loud);
+/* The spec's errors on f (NULL: none), and their count; the first into o->why. */
+void cs_sweep_print_errors(const cs_sweep_spec *spec, cs_sweep_options *o);
+/* Say a problem: "cablesim sweep: " and it on o->errors (if any), the first one kept in o->why. */
+void cs_sweep_say(cs_sweep_options *o, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 /* Run the study of o (command: the command line as typed, for summary.json) on ranks. Returns the exit
  * status: 0 done (or nothing left to run), CS_SWEEP_EXIT_RUN the outputs failed, CS_SWEEP_EXIT_USAGE a bad
  * spec or resume, 128 + the signal that stopped it (partial). */
 int cs_sweep_study_run(cs_sweep_options *o, const char *command, const cs_sweep_ranks *ranks);
+
+/* What a study run on one process leaves for cablesim/sweep.h's handle (rank 0): its spec, inputs and
+ * results (owned by the handle once handed over), its folder, how many runs it ran and the signal that
+ * stopped it. */
+struct cs_sweep {
+    cs_sweep_spec *spec;
+    double *x;
+    cs_sweep_result *all;
+    long n, ran;
+    int stopped_by;
+    char dir[1024];
+};
+/* cs_sweep_study_run, handing the study's runs over to *keep (allocated; NULL if none could be). */
+int cs_sweep_study_keep(cs_sweep_options *o, const char *command, const cs_sweep_ranks *ranks,
+                        cs_sweep **keep);
+/* A public def (cablesim/sweep.h) as options into o (zeroed first; its strings are def's). CS_OK, or
+ * CS_ERR_INVALID with err filled (too many sets or folders, runs out of range). */
+cs_status cs_sweep_options_of(const cs_sweep_def *def, cs_sweep_options *o, cs_error *err);
 
 #endif

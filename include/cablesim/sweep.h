@@ -1,0 +1,122 @@
+/* SPDX-License-Identifier: MIT */
+/** @file
+ * Studies over a model's values, as `cablesim sweep` runs them (docs/sweep.md): a spec names a base model
+ * and the values to vary (grids, Monte Carlo or Latin hypercube samples); the study runs every run, on as
+ * many threads as the program gives it, writes runs.csv, summary.md, summary.json, the plots, report.html
+ * (and runs.nc) together into its folder, and hands back each run's inputs and response parameters. A
+ * study stopped by SIGINT or SIGTERM writes the runs done, marked partial, and a later study with
+ * `resume` set runs the rest. The runs' inputs depend only on the seed and the run's index, so the
+ * results are the same for any thread count. */
+#ifndef CABLESIM_SWEEP_H
+#define CABLESIM_SWEEP_H
+
+#include <stdio.h>
+
+#include "cablesim/sim.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Runs worker(arg) on `threads` threads at once and returns when each has returned (OpenMP's parallel
+ * region is one: `#pragma omp parallel num_threads(threads)` around the call). */
+typedef void (*cs_sweep_parallel_fn)(int threads, void (*worker)(void *arg), void *arg);
+
+/** A study to run. Start it from cs_default_sweep_def(), which sets its size; new fields go at its end. The
+ * strings and arrays it points to are read during cs_sweep_study alone. */
+typedef struct cs_sweep_def {
+    size_t size;                    /**< the size of this struct in the program (cs_default_sweep_def sets it) */
+    const char *spec;               /**< the spec file (a YAML mapping with `vary`); NULL with resume */
+    const char *out_dir;            /**< the output folder; NULL: results/<the spec's name> */
+    const char *resume;             /**< a stopped study's folder: run the runs it lacks and write the whole
+                                         study (the study as its summary.json records it: spec, out_dir,
+                                         runs, seed, sets, allow and netcdf are then left unset) */
+    long runs;                      /**< Monte Carlo and Latin hypercube: the runs, replacing the spec's; 0:
+                                         the spec's */
+    const char *seed;               /**< the seed, a whole number from 0 to 2^64 - 1, replacing the spec's;
+                                         NULL: the spec's */
+    const char *const *sets;        /**< "PATH=VALUE" for every run, as `cablesim run --set` (after the
+                                         spec's own) */
+    int set_count;                  /**< how many (at most 256) */
+    const char *const *allow;       /**< more folders the model and its files may be in, beyond the spec's
+                                         folder and the parts library's */
+    int allow_count;                /**< how many (at most 64) */
+    int netcdf;                     /**< 1: also write runs.nc */
+    int force;                      /**< 1: write into a folder beside files no manifest lists */
+    int threads;                    /**< the threads to run on (with parallel); 0: 1 */
+    cs_sweep_parallel_fn parallel;  /**< how to run on them; NULL: on the calling thread alone */
+    const char *command;            /**< the command line, for summary.json; NULL: none */
+    FILE *errors;                   /**< the problems (a spec's, each at its place) as they are found;
+                                         NULL: none printed (the first is in the cs_error) */
+    FILE *progress;                 /**< the progress of the runs (a bar on a terminal); NULL: none */
+    FILE *closing;                  /**< the closing lines: the runs done and the files written; NULL: none */
+} cs_sweep_def;
+
+/** A study run: its runs' inputs and results (opaque). */
+typedef struct cs_sweep cs_sweep;
+
+/** A def with nothing set but its size. */
+CS_API cs_sweep_def cs_default_sweep_def(void);
+
+/** Run a study and write its outputs.
+ * @param def the study (read to its size)
+ * @param out the study's runs, to free with cs_sweep_free (NULL on failure)
+ * @param err filled on failure (may be NULL)
+ * @return CS_OK: done, stopped by a signal (cs_sweep_stopped_by: the runs done are written, partial), or,
+ *         with resume, nothing left to run (cs_sweep_ran 0); CS_ERR_INVALID: a def of a size this library
+ *         does not know, a spec with problems (each printed to def->errors; the first, or their count, in
+ *         err) or a folder that cannot be resumed, nothing run; CS_ERR_IO: the folder could not be taken or
+ *         the outputs written (the runs done are kept in its journal for a resume); CS_ERR_MEMORY. */
+CS_API cs_status cs_sweep_study(const cs_sweep_def *def, cs_sweep **out, cs_error *err);
+/** Free a study. NULL is allowed. */
+CS_API void cs_sweep_free(cs_sweep *sweep);
+
+/** The study's output folder. */
+CS_API const char *cs_sweep_dir(const cs_sweep *sweep);
+/** Its number of runs: runs.csv's rows, numbered from 0 as its `run` column. */
+CS_API long cs_sweep_run_count(const cs_sweep *sweep);
+/** How many runs this call ran (those of a resumed study read back from its folder not counted). */
+CS_API long cs_sweep_ran(const cs_sweep *sweep);
+/** The signal (SIGINT, SIGTERM) that stopped the study, its outputs then partial; 0 if none did. */
+CS_API int cs_sweep_stopped_by(const cs_sweep *sweep);
+/** The number of varied values (runs.csv's columns after `run`). */
+CS_API int cs_sweep_var_count(const cs_sweep *sweep);
+/** Varied value var's path, as --set takes it ("barrier.cables[0].pretension"); NULL out of range. */
+CS_API const char *cs_sweep_var_path(const cs_sweep *sweep, int var);
+/** Varied value var's SI unit as runs.csv's header gives it ("N", "m/s", "1"; "" for a text value). */
+CS_API const char *cs_sweep_var_unit(const cs_sweep *sweep, int var);
+/** Run `run`'s input of varied value var, SI, as runs.csv writes it (a text value: its level's index);
+ * NAN out of range. */
+CS_API double cs_sweep_input(const cs_sweep *sweep, long run, int var);
+
+/** How a run of a study went. */
+typedef enum cs_sweep_run_status {
+    CS_SWEEP_RUN_OK = 0,    /**< it ran to its end */
+    CS_SWEEP_RUN_BAD_MODEL, /**< its model with its inputs was refused (error says why) */
+    CS_SWEEP_RUN_FAILED,    /**< it failed on the way (error says why) */
+    CS_SWEEP_RUN_PENDING    /**< it was not run: the study was stopped, or it was in the folder resumed */
+} cs_sweep_run_status;
+
+/** A run of a study. */
+typedef struct cs_sweep_run_info {
+    size_t size;                /**< the size of this struct in the program: set it (cs_sweep_run_info r =
+                                     {.size = sizeof r}); the library fills only that much */
+    cs_sweep_run_status status; /**< how it went */
+    char rating[24];            /**< its ASTM F2656 rating as run, as runs.csv's astm_f2656_as_run: "M40/P1",
+                                     "none" or "not rated" */
+    char error[256];            /**< why it did not run to its end; "" if it did */
+} cs_sweep_run_info;
+
+/** Fill out with run `run`, to out's size.
+ * @return CS_OK, or CS_ERR_INVALID with err filled (may be NULL): no such run, or out's size 0 or larger
+ *         than this library's. */
+CS_API cs_status cs_sweep_run_of(const cs_sweep *sweep, long run, cs_sweep_run_info *out, cs_error *err);
+/** Fill out with run `run`'s response parameters (runs.csv's values are these), to out's size.
+ * @return CS_OK, or CS_ERR_INVALID with err filled (may be NULL): no such run, a run without them (not run,
+ *         or refused before it ran), or out's size 0 or larger than this library's. */
+CS_API cs_status cs_sweep_run_summary(const cs_sweep *sweep, long run, cs_summary *out, cs_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

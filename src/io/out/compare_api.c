@@ -1,0 +1,127 @@
+/* SPDX-License-Identifier: MIT */
+/* cablesim/compare.h: the runs and the measured history read back (load/runread.h) and compared and
+ * written (out/compare.h), behind an opaque handle. */
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cablesim/compare.h"
+#include "load/runread.h"
+#include "load/units.h"
+#include "out/compare.h"
+#include "out/outfile.h"
+#include "out/plot.h"
+#include "status.h"
+
+struct cs_compare {
+    int count, reference;
+    cs_trace traces[CS_COMPARE_MAX_RUNS + 1];
+};
+
+cs_compare_def cs_default_compare_def(void) {
+    return (cs_compare_def){.size = sizeof(cs_compare_def)};
+}
+
+void cs_compare_free(cs_compare *c) {
+    if (!c) return;
+    for (int k = 0; k < c->count; k++)
+        cs_trace_free(&c->traces[k]);
+    free(c);
+}
+
+cs_status cs_compare_create(const cs_compare_def *given, cs_compare **out, cs_error *err) {
+    if (out) *out = NULL;
+    cs_compare_def def = cs_default_compare_def();
+    if (cs_sized_take(&def, sizeof def, given, "cs_compare_def", err) != CS_OK) return CS_ERR_INVALID;
+    if (!out) return cs_status_set(err, CS_ERR_INVALID, "cs_compare_create: no place for the comparison");
+    char why[1024];
+    if (def.run_count < 1 || !def.runs)
+        return cs_status_set(err, CS_ERR_INVALID, "cs_compare_def: no run to compare");
+    if (def.run_count > CS_COMPARE_MAX_RUNS) {
+        snprintf(why, sizeof why, "cs_compare_def: %d runs, more than %d", def.run_count, CS_COMPARE_MAX_RUNS);
+        return cs_status_set(err, CS_ERR_INVALID, why);
+    }
+    cs_compare *c = calloc(1, sizeof *c);
+    if (!c) return cs_status_set(err, CS_ERR_MEMORY, "out of memory");
+    cs_status rc = CS_OK;
+    for (int i = 0; rc == CS_OK && i < def.run_count; i++, c->count++)
+        if (!def.runs[i] || cs_trace_read_run(def.runs[i], &c->traces[c->count], why, sizeof why) != 0) {
+            if (!def.runs[i]) snprintf(why, sizeof why, "cs_compare_def: run %d is NULL", i);
+            rc = cs_status_set(err, def.runs[i] ? CS_ERR_IO : CS_ERR_INVALID, why);
+        }
+    if (rc == CS_OK && def.measured) {
+        cs_units *units = cs_units_create(why, sizeof why);
+        if (!units || cs_trace_read_measured(def.measured, units, &c->traces[c->count], why, sizeof why) != 0)
+            rc = cs_status_set(err, CS_ERR_IO, why);
+        else
+            c->reference = c->count++;
+        cs_units_free(units);
+    }
+    if (rc != CS_OK) {
+        cs_compare_free(c);
+        return rc;
+    }
+    *out = c;
+    return cs_status_set(err, CS_OK, "");
+}
+
+int cs_compare_count(const cs_compare *c) {
+    return c ? c->count : 0;
+}
+
+int cs_compare_reference(const cs_compare *c) {
+    return c ? c->reference : 0;
+}
+
+const char *cs_compare_label(const cs_compare *c, int i) {
+    return c && i >= 0 && i < c->count ? c->traces[i].label : NULL;
+}
+
+const char *cs_compare_outcome(const cs_compare *c, int i) {
+    if (!c || i < 0 || i >= c->count) return NULL;
+    return c->traces[i].measured ? "" : c->traces[i].outcome;
+}
+
+int cs_compare_parameter_count(void) {
+    return cs_compare_param_count();
+}
+
+cs_status cs_compare_get(const cs_compare *c, int k, int i, cs_compare_row *out, cs_error *err) {
+    if (cs_status_sized(out, sizeof(cs_compare_row), "cs_compare_row", err) != CS_OK) return CS_ERR_INVALID;
+    char why[96];
+    if (!c || i < 0 || i >= c->count || k < 0 || k >= cs_compare_param_count()) {
+        if (!c || i < 0 || i >= c->count)
+            snprintf(why, sizeof why, "cs_compare_row: no history %d (the comparison has %d)", i, cs_compare_count(c));
+        else
+            snprintf(why, sizeof why, "cs_compare_row: no parameter %d (there are %d)", k, cs_compare_param_count());
+        return cs_status_set(err, CS_ERR_INVALID, why);
+    }
+    const cs_trace *tr = &c->traces[i], *ref = &c->traces[c->reference];
+    cs_compare_row full = {.size = sizeof full,
+                           .name = cs_compare_param_name(k),
+                           .unit = cs_compare_param_unit(k),
+                           .value = cs_compare_param_value(tr, k),
+                           .difference = i == c->reference ? NAN : cs_compare_param_difference(tr, ref, k)};
+    return cs_status_put_sized(out, &full, sizeof full, "cs_compare_row", err);
+}
+
+cs_status cs_compare_write(const cs_compare *c, const char *dir, int flags, cs_error *err) {
+    if (!c || !dir) return cs_status_set(err, CS_ERR_INVALID, "cs_compare_write: no comparison or no folder");
+    char why[1024];
+    cs_outdir out;
+    int rc = 0;
+    if (cs_out_open(&out, dir, flags & CS_COMPARE_FORCE ? CS_OUT_FORCE : 0, why, sizeof why) != 0 ||
+        cs_compare_write_traces(&out, c->traces, c->count, c->reference, why, sizeof why) != 0 ||
+        cs_out_commit(&out, why, sizeof why) != 0) {
+        cs_out_abort(&out);
+        rc = -1;
+    }
+    cs_plot_release(); /* after the last plot (fontconfig's caches) */
+    return rc == 0 ? cs_status_set(err, CS_OK, "") : cs_status_set(err, CS_ERR_IO, why);
+}
+
+void cs_compare_print_metrics(const cs_compare *c, FILE *f) {
+    if (c && f) cs_compare_print_trace_metrics(f, c->traces, c->count, c->reference);
+}

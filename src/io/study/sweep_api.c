@@ -1,0 +1,159 @@
+/* SPDX-License-Identifier: MIT */
+/* cablesim/sweep.h: a study on one process (study/sweepstudy.h) from a def, and its runs behind an opaque
+ * handle. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cablesim/sweep.h"
+#include "status.h"
+#include "study/sweepstudy.h"
+
+cs_sweep_def cs_default_sweep_def(void) {
+    return (cs_sweep_def){.size = sizeof(cs_sweep_def)};
+}
+
+cs_status cs_sweep_options_of(const cs_sweep_def *given, cs_sweep_options *o, cs_error *err) {
+    cs_sweep_def def = cs_default_sweep_def();
+    if (cs_sized_take(&def, sizeof def, given, "cs_sweep_def", err) != CS_OK) return CS_ERR_INVALID;
+    memset(o, 0, sizeof *o);
+    char why[160];
+    if (def.set_count < 0 || def.set_count > CS_SWEEP_MAX_SETS || (def.set_count > 0 && !def.sets))
+        snprintf(why, sizeof why, "cs_sweep_def: %d sets, where at most %d are taken", def.set_count,
+                 CS_SWEEP_MAX_SETS);
+    else if (def.allow_count < 0 || def.allow_count > CS_SWEEP_MAX_ALLOW || (def.allow_count > 0 && !def.allow))
+        snprintf(why, sizeof why, "cs_sweep_def: %d folders to allow, where at most %d are taken",
+                 def.allow_count, CS_SWEEP_MAX_ALLOW);
+    else if (def.runs < 0 || def.runs > CS_SWEEP_MAX_RUNS)
+        snprintf(why, sizeof why, "cs_sweep_def: %ld runs, where 1 to %ld are taken", def.runs,
+                 (long)CS_SWEEP_MAX_RUNS);
+    else if (!def.spec == !def.resume)
+        snprintf(why, sizeof why, "cs_sweep_def: %s", def.spec ? "a spec and a folder to resume" : "no spec");
+    else if (def.resume && (def.out_dir || def.runs || def.seed || def.set_count || def.allow_count || def.netcdf))
+        snprintf(why, sizeof why,
+                 "cs_sweep_def: a folder to resume takes its study as its summary.json records it: no "
+                 "out_dir, runs, seed, sets, allow or netcdf");
+    else
+        why[0] = '\0';
+    if (why[0]) return cs_status_set(err, CS_ERR_INVALID, why);
+    o->spec = def.spec, o->out_dir = def.out_dir, o->resume = def.resume;
+    o->threads = def.threads;
+    o->netcdf = def.netcdf, o->force = def.force;
+    o->runs = def.runs, o->seed = def.seed;
+    for (int i = 0; i < def.allow_count; i++)
+        o->allow[o->allow_count++] = def.allow[i];
+    for (int i = 0; i < def.set_count; i++)
+        o->sets[o->set_count++] = def.sets[i];
+    o->errors = def.errors, o->progress = def.progress, o->closing = def.closing;
+    return CS_OK;
+}
+
+static int asked_threads(int asked, int local) {
+    (void)local;
+    return asked > 0 ? asked : 1;
+}
+
+cs_status cs_sweep_study(const cs_sweep_def *def, cs_sweep **out, cs_error *err) {
+    if (out) *out = NULL;
+    if (!out) return cs_status_set(err, CS_ERR_INVALID, "cs_sweep_study: no place for the study");
+    cs_sweep_def full = cs_default_sweep_def(); /* the caller's, to its size */
+    if (cs_sized_take(&full, sizeof full, def, "cs_sweep_def", err) != CS_OK) return CS_ERR_INVALID;
+    cs_sweep_options *o = malloc(sizeof *o);
+    if (!o) return cs_status_set(err, CS_ERR_MEMORY, "out of memory");
+    cs_status st = cs_sweep_options_of(&full, o, err);
+    if (st != CS_OK) return free(o), st;
+    cs_sweep_ranks ranks = {.rank = 0, .size = 1, .local = 1, .threads = asked_threads, .parallel = full.parallel};
+    int rc = cs_sweep_study_keep(o, full.command, &ranks, out);
+    if (rc == 0 || rc > 128) {
+        st = *out ? cs_status_set(err, CS_OK, "") : cs_status_set(err, CS_ERR_MEMORY, "out of memory");
+    } else {
+        if (*out) cs_sweep_free(*out), *out = NULL;
+        st = cs_status_set(err, rc == CS_SWEEP_EXIT_USAGE ? CS_ERR_INVALID : CS_ERR_IO,
+                           o->why[0] ? o->why : "the study failed");
+    }
+    free(o);
+    return st;
+}
+
+void cs_sweep_free(cs_sweep *s) {
+    if (!s) return;
+    cs_sweep_spec_free(s->spec);
+    free(s->x);
+    free(s->all);
+    free(s);
+}
+
+const char *cs_sweep_dir(const cs_sweep *s) {
+    return s ? s->dir : NULL;
+}
+
+long cs_sweep_run_count(const cs_sweep *s) {
+    return s ? s->n : 0;
+}
+
+long cs_sweep_ran(const cs_sweep *s) {
+    return s ? s->ran : 0;
+}
+
+int cs_sweep_stopped_by(const cs_sweep *s) {
+    return s ? s->stopped_by : 0;
+}
+
+int cs_sweep_var_count(const cs_sweep *s) {
+    return s && s->spec ? s->spec->var_count : 0;
+}
+
+const char *cs_sweep_var_path(const cs_sweep *s, int var) {
+    return var >= 0 && var < cs_sweep_var_count(s) ? s->spec->vars[var].path : NULL;
+}
+
+const char *cs_sweep_var_unit(const cs_sweep *s, int var) {
+    return var >= 0 && var < cs_sweep_var_count(s) ? s->spec->vars[var].unit : NULL;
+}
+
+double cs_sweep_input(const cs_sweep *s, long run, int var) {
+    if (!s || run < 0 || run >= s->n || var < 0 || var >= cs_sweep_var_count(s)) return NAN;
+    const cs_sweep_var *v = &s->spec->vars[var];
+    double x = s->x[run * s->spec->var_count + var];
+    return v->numeric ? cs_sweep_value_used(v, x) : x;
+}
+
+/* Run `run` of s, or NULL with err filled naming the struct. */
+static const cs_sweep_result *run_of(const cs_sweep *s, long run, const char *name, cs_error *err) {
+    if (s && run >= 0 && run < s->n) return &s->all[run];
+    char why[96];
+    snprintf(why, sizeof why, "no run %ld (the study has %ld)", run, cs_sweep_run_count(s));
+    cs_sized_refuse(err, name, why);
+    return NULL;
+}
+
+cs_status cs_sweep_run_of(const cs_sweep *s, long run, cs_sweep_run_info *out, cs_error *err) {
+    if (cs_status_sized(out, sizeof *out, "cs_sweep_run_info", err) != CS_OK) return CS_ERR_INVALID;
+    const cs_sweep_result *r = run_of(s, run, "cs_sweep_run_info", err);
+    if (!r) return CS_ERR_INVALID;
+    cs_sweep_run_info full = {.size = sizeof full,
+                              .status = r->pending                      ? CS_SWEEP_RUN_PENDING
+                                        : r->status == CS_RUN_BAD_MODEL ? CS_SWEEP_RUN_BAD_MODEL
+                                        : r->status == CS_RUN_FAILED    ? CS_SWEEP_RUN_FAILED
+                                                                        : CS_SWEEP_RUN_OK};
+    if (!r->pending) {
+        snprintf(full.rating, sizeof full.rating, "%s", r->rating);
+        snprintf(full.error, sizeof full.error, "%s", r->status == CS_RUN_OK ? "" : r->error);
+    }
+    return cs_status_put_sized(out, &full, sizeof full, "cs_sweep_run_info", err);
+}
+
+cs_status cs_sweep_run_summary(const cs_sweep *s, long run, cs_summary *out, cs_error *err) {
+    if (cs_status_sized(out, sizeof *out, "cs_summary", err) != CS_OK) return CS_ERR_INVALID;
+    const cs_sweep_result *r = run_of(s, run, "cs_summary", err);
+    if (!r) return CS_ERR_INVALID;
+    if (r->pending || r->status == CS_RUN_BAD_MODEL) {
+        char why[96];
+        snprintf(why, sizeof why, "run %ld has none: %s", run, r->pending ? "it was not run" : "its model was refused");
+        return cs_sized_refuse(err, "cs_summary", why);
+    }
+    cs_summary full = r->summary;
+    full.size = sizeof full;
+    return cs_status_put_sized(out, &full, sizeof full, "cs_summary", err);
+}
