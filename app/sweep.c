@@ -299,7 +299,7 @@ int cs_sweep_command(int argc, char **argv) {
         cs_sweep *study = NULL;
         cs_error err;
         cs_status st = cs_sweep_study(&a.def, &study, &err); /* its problems said on stderr */
-        rc = st == CS_OK           ? (cs_sweep_stopped_by(study) ? 128 + cs_sweep_stopped_by(study) : 0)
+        rc = st == CS_OK            ? (cs_sweep_stopped_by(study) ? 128 + cs_sweep_stopped_by(study) : 0)
              : st == CS_ERR_INVALID ? EXIT_BAD
                                     : EXIT_RUN;
         cs_sweep_free(study);

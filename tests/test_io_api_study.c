@@ -147,7 +147,8 @@ static void sweep_is_the_commands(void **state) {
     assert_int_equal(cs_sweep_run_count(s), 3);
     assert_int_equal(cs_sweep_ran(s), 3);
     assert_int_equal(cs_sweep_stopped_by(s), 0);
-    sh(CS " sweep " CS_SOURCE_DIR "/examples/aps3-uncertain.yaml --runs 3 --t-end '60 ms' -o '%s' --quiet", cmd);
+    sh(CS " sweep " CS_SOURCE_DIR "/examples/aps3-uncertain.yaml --runs 3 --t-end '60 ms' -o '%s' --quiet",
+       cmd);
     char a[400], b[400];
     snprintf(a, sizeof a, "%s/runs.csv", api);
     snprintf(b, sizeof b, "%s/runs.csv", cmd);

@@ -83,8 +83,9 @@ static void cables_work_sums_to_the_vehicles_loss(void **state) {
            work / 1e3, (vehicle - vehicle0) / 1e3, (work - (vehicle - vehicle0)) / ke0);
     CHECK_ABS(work, vehicle - vehicle0, 1e-4 * ke0);
     cs_error err2;
-    assert_int_equal(cs_state_cable_summary(s, 2, &(cs_cable_summary){.size = sizeof(cs_cable_summary)}, &err2),
-                     CS_ERR_INVALID);
+    assert_int_equal(
+        cs_state_cable_summary(s, 2, &(cs_cable_summary){.size = sizeof(cs_cable_summary)}, &err2),
+        CS_ERR_INVALID);
     assert_string_equal(err2.message, "cs_cable_summary: no cable 2 (the run has 2)");
     cs_state_free(s);
     cs_model_free(m);

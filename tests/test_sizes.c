@@ -362,8 +362,8 @@ static void sudden_losses_fill_an_array_at_its_first_size(void **state) {
     memset(b, MARK, sizeof b);
     size_t n = SHORT;
     memcpy(b, &n, sizeof n);
-    assert_int_equal(cs_sudden_losses(t, f, FALL_SAMPLES, 1e-3, NULL, 0, (cs_sudden_loss *)(void *)b, 2, &err),
-                     2);
+    assert_int_equal(
+        cs_sudden_losses(t, f, FALL_SAMPLES, 1e-3, NULL, 0, (cs_sudden_loss *)(void *)b, 2, &err), 2);
     for (int k = 0; k < 2; k++) {
         assert_int_equal(size_of(b + k * SHORT), SHORT);
         assert_memory_equal(b + k * SHORT + sizeof(size_t), (const char *)&whole[k] + sizeof(size_t),
@@ -373,8 +373,8 @@ static void sudden_losses_fill_an_array_at_its_first_size(void **state) {
         assert_int_equal(b[k], MARK);
     n = sizeof(cs_sudden_loss) + 8; /* a later cablesim's */
     memcpy(b, &n, sizeof n);
-    assert_int_equal(cs_sudden_losses(t, f, FALL_SAMPLES, 1e-3, NULL, 0, (cs_sudden_loss *)(void *)b, 2, &err),
-                     -1);
+    assert_int_equal(
+        cs_sudden_losses(t, f, FALL_SAMPLES, 1e-3, NULL, 0, (cs_sudden_loss *)(void *)b, 2, &err), -1);
     assert_true(strstr(err.message, "cs_sudden_loss: size ") == err.message);
     assert_non_null(strstr(err.message, "a program built for a later cablesim"));
 }

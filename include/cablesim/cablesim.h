@@ -3,8 +3,9 @@
  * cablesim: progressive-failure simulation of cable barriers struck by a vehicle. The umbrella header:
  * the engine's definitions (def.h) and its model, state, step and run (sim.h), model files (loader.h),
  * a run's time histories and output files (output.h), a run's anti-ram rating (rating.h), studies over
- * a model's values (sweep.h), runs side by side (compare.h), and the US customary units in SI (units.h). Link with libcablesim (pkg-config cablesim, or CMake's
- * find_package(cablesim) and the target cablesim::cablesim). */
+ * a model's values (sweep.h), runs side by side (compare.h), and the US customary units in SI (units.h). Link
+ * with libcablesim (pkg-config cablesim, or CMake's find_package(cablesim) and the target
+ * cablesim::cablesim). */
 #ifndef CABLESIM_H
 #define CABLESIM_H
 

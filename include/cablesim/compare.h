@@ -22,10 +22,10 @@ enum { CS_COMPARE_MAX_RUNS = 12 };
 
 /** What to compare. Start it from cs_default_compare_def(), which sets its size; new fields go at its end. */
 typedef struct cs_compare_def {
-    size_t size;               /**< the size of this struct in the program (cs_default_compare_def sets it) */
-    const char *const *runs;   /**< the run folders, as `cablesim run -o` wrote them */
-    int run_count;             /**< how many: 1 to CS_COMPARE_MAX_RUNS */
-    const char *measured;      /**< a measured history (CSV), the reference; NULL: none, the first run is */
+    size_t size;             /**< the size of this struct in the program (cs_default_compare_def sets it) */
+    const char *const *runs; /**< the run folders, as `cablesim run -o` wrote them */
+    int run_count;           /**< how many: 1 to CS_COMPARE_MAX_RUNS */
+    const char *measured;    /**< a measured history (CSV), the reference; NULL: none, the first run is */
 } cs_compare_def;
 
 /** A comparison: the runs and the measured history read back (opaque). */
@@ -60,14 +60,14 @@ CS_API int cs_compare_parameter_count(void);
 
 /** One response parameter of one history, as a row of compare.csv gives it. */
 typedef struct cs_compare_row {
-    size_t size;          /**< the size of this struct in the program: set it (cs_compare_row r =
-                               {.size = sizeof r}); the library fills only that much */
-    const char *name;     /**< the parameter, as compare.csv's first column ("max 50-ms deceleration") */
-    const char *unit;     /**< its SI unit, as compare.csv's second column ("g", "m", "m/s", "N", "s") */
-    double value;         /**< the history's value in that unit; NAN where it gives none (compare.csv: empty) */
-    double difference;    /**< its difference from the reference, per cent of the reference's magnitude;
-                               NAN for the reference itself, where either gives no value, for a lower bound
-                               (the penetration beyond of a vehicle through) or a reference of 0 */
+    size_t size;       /**< the size of this struct in the program: set it (cs_compare_row r =
+                            {.size = sizeof r}); the library fills only that much */
+    const char *name;  /**< the parameter, as compare.csv's first column ("max 50-ms deceleration") */
+    const char *unit;  /**< its SI unit, as compare.csv's second column ("g", "m", "m/s", "N", "s") */
+    double value;      /**< the history's value in that unit; NAN where it gives none (compare.csv: empty) */
+    double difference; /**< its difference from the reference, per cent of the reference's magnitude;
+                            NAN for the reference itself, where either gives no value, for a lower bound
+                            (the penetration beyond of a vehicle through) or a reference of 0 */
 } cs_compare_row;
 
 /** Fill out with parameter `parameter` (0 to cs_compare_parameter_count() - 1) of history i, to out's size.

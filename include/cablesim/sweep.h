@@ -25,31 +25,31 @@ typedef void (*cs_sweep_parallel_fn)(int threads, void (*worker)(void *arg), voi
 /** A study to run. Start it from cs_default_sweep_def(), which sets its size; new fields go at its end. The
  * strings and arrays it points to are read during cs_sweep_study alone. */
 typedef struct cs_sweep_def {
-    size_t size;                    /**< the size of this struct in the program (cs_default_sweep_def sets it) */
-    const char *spec;               /**< the spec file (a YAML mapping with `vary`); NULL with resume */
-    const char *out_dir;            /**< the output folder; NULL: results/<the spec's name> */
-    const char *resume;             /**< a stopped study's folder: run the runs it lacks and write the whole
-                                         study (the study as its summary.json records it: spec, out_dir,
-                                         runs, seed, sets, allow and netcdf are then left unset) */
-    long runs;                      /**< Monte Carlo and Latin hypercube: the runs, replacing the spec's; 0:
-                                         the spec's */
-    const char *seed;               /**< the seed, a whole number from 0 to 2^64 - 1, replacing the spec's;
-                                         NULL: the spec's */
-    const char *const *sets;        /**< "PATH=VALUE" for every run, as `cablesim run --set` (after the
-                                         spec's own) */
-    int set_count;                  /**< how many (at most 256) */
-    const char *const *allow;       /**< more folders the model and its files may be in, beyond the spec's
-                                         folder and the parts library's */
-    int allow_count;                /**< how many (at most 64) */
-    int netcdf;                     /**< 1: also write runs.nc */
-    int force;                      /**< 1: write into a folder beside files no manifest lists */
-    int threads;                    /**< the threads to run on (with parallel); 0: 1 */
-    cs_sweep_parallel_fn parallel;  /**< how to run on them; NULL: on the calling thread alone */
-    const char *command;            /**< the command line, for summary.json; NULL: none */
-    FILE *errors;                   /**< the problems (a spec's, each at its place) as they are found;
-                                         NULL: none printed (the first is in the cs_error) */
-    FILE *progress;                 /**< the progress of the runs (a bar on a terminal); NULL: none */
-    FILE *closing;                  /**< the closing lines: the runs done and the files written; NULL: none */
+    size_t size;              /**< the size of this struct in the program (cs_default_sweep_def sets it) */
+    const char *spec;         /**< the spec file (a YAML mapping with `vary`); NULL with resume */
+    const char *out_dir;      /**< the output folder; NULL: results/<the spec's name> */
+    const char *resume;       /**< a stopped study's folder: run the runs it lacks and write the whole
+                                   study (the study as its summary.json records it: spec, out_dir,
+                                   runs, seed, sets, allow and netcdf are then left unset) */
+    long runs;                /**< Monte Carlo and Latin hypercube: the runs, replacing the spec's; 0:
+                                   the spec's */
+    const char *seed;         /**< the seed, a whole number from 0 to 2^64 - 1, replacing the spec's;
+                                   NULL: the spec's */
+    const char *const *sets;  /**< "PATH=VALUE" for every run, as `cablesim run --set` (after the
+                                   spec's own) */
+    int set_count;            /**< how many (at most 256) */
+    const char *const *allow; /**< more folders the model and its files may be in, beyond the spec's
+                                   folder and the parts library's */
+    int allow_count;          /**< how many (at most 64) */
+    int netcdf;               /**< 1: also write runs.nc */
+    int force;                /**< 1: write into a folder beside files no manifest lists */
+    int threads;              /**< the threads to run on (with parallel); 0: 1 */
+    cs_sweep_parallel_fn parallel; /**< how to run on them; NULL: on the calling thread alone */
+    const char *command;           /**< the command line, for summary.json; NULL: none */
+    FILE *errors;                  /**< the problems (a spec's, each at its place) as they are found;
+                                        NULL: none printed (the first is in the cs_error) */
+    FILE *progress;                /**< the progress of the runs (a bar on a terminal); NULL: none */
+    FILE *closing;                 /**< the closing lines: the runs done and the files written; NULL: none */
 } cs_sweep_def;
 
 /** A study run: its runs' inputs and results (opaque). */

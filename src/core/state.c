@@ -6,8 +6,8 @@
 #include "core/vec3.h"
 
 #include <math.h>
-#include <stdlib.h>
 #include <stddef.h>
+#include <stdlib.h>
 #include <string.h>
 
 /* A copy of src in dst: everything but the memory that is dst's own (arrays, events, workspace, the rails'

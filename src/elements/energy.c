@@ -61,7 +61,6 @@ void cs_energy_update(const cs_model *model, cs_state *s) {
         s->summary.energy_balance_error = e->balance_error;
 }
 
-
 static const char *const term_names[CS_ENERGY_TERMS] = {
     "ke",           "pe",           "cable_elastic",  "cable_plastic",  "post_elastic", "post_kinetic",
     "post_plastic", "post_damping", "anchor_elastic", "anchor_kinetic", "rail_elastic", "rail_plastic",
@@ -72,15 +71,22 @@ const char *cs_energy_term_name(int k) {
 }
 
 /* The terms' places in cs_energy, in their order. */
-static const size_t term_offsets[CS_ENERGY_TERMS] = {
-    offsetof(cs_energy, vehicle_kinetic), offsetof(cs_energy, vehicle_potential),
-    offsetof(cs_energy, cable_elastic),   offsetof(cs_energy, cable_plastic),
-    offsetof(cs_energy, post_elastic),    offsetof(cs_energy, post_kinetic),
-    offsetof(cs_energy, post_plastic),    offsetof(cs_energy, post_damping),
-    offsetof(cs_energy, anchor_elastic),  offsetof(cs_energy, anchor_kinetic),
-    offsetof(cs_energy, rail_elastic),    offsetof(cs_energy, rail_plastic),
-    offsetof(cs_energy, soil),            offsetof(cs_energy, crush),
-    offsetof(cs_energy, friction),        offsetof(cs_energy, released)};
+static const size_t term_offsets[CS_ENERGY_TERMS] = {offsetof(cs_energy, vehicle_kinetic),
+                                                     offsetof(cs_energy, vehicle_potential),
+                                                     offsetof(cs_energy, cable_elastic),
+                                                     offsetof(cs_energy, cable_plastic),
+                                                     offsetof(cs_energy, post_elastic),
+                                                     offsetof(cs_energy, post_kinetic),
+                                                     offsetof(cs_energy, post_plastic),
+                                                     offsetof(cs_energy, post_damping),
+                                                     offsetof(cs_energy, anchor_elastic),
+                                                     offsetof(cs_energy, anchor_kinetic),
+                                                     offsetof(cs_energy, rail_elastic),
+                                                     offsetof(cs_energy, rail_plastic),
+                                                     offsetof(cs_energy, soil),
+                                                     offsetof(cs_energy, crush),
+                                                     offsetof(cs_energy, friction),
+                                                     offsetof(cs_energy, released)};
 
 double cs_energy_term(const cs_energy *e, int k) {
     if (!e || k < 0 || k >= CS_ENERGY_TERMS || term_offsets[k] + sizeof(double) > e->size) return 0.0;

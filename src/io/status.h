@@ -8,9 +8,9 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "../run/sized.h" /* the one size check: the engine's header src/io may include (tests/cli_layers.sh) */
 #include "cablesim/loader.h"
 #include "cablesim/sim.h"
-#include "../run/sized.h" /* the one size check: the engine's header src/io may include (tests/cli_layers.sh) */
 
 /* Fill err (may be NULL) with status and message, and return status. */
 static inline cs_status cs_status_set(cs_error *err, cs_status status, const char *message) {

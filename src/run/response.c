@@ -182,7 +182,8 @@ int cs_sudden_losses(const double *t, const double *force, int n, double step, c
     }
     int count = cs_loss_scan_finish(scan, events, event_count);
     int kept = scan->kept < capacity ? scan->kept : capacity;
-    if (capacity > 0 && cs_sized_put_array(out, scan->found, sizeof *scan->found, kept, "cs_sudden_loss", err))
+    if (capacity > 0 &&
+        cs_sized_put_array(out, scan->found, sizeof *scan->found, kept, "cs_sudden_loss", err))
         count = -1;
     free(events), free(ring), free(scan);
     return count;
@@ -190,7 +191,8 @@ int cs_sudden_losses(const double *t, const double *force, int n, double step, c
 
 int cs_state_sudden_losses(const cs_state *s, cs_sudden_loss *out, int capacity, cs_error *err) {
     int n = s->outcome == CS_RUNNING ? 0 : s->loss.kept < capacity ? s->loss.kept : capacity;
-    if (capacity > 0 && cs_sized_put_array(out, s->loss.found, sizeof *s->loss.found, n, "cs_sudden_loss", err))
+    if (capacity > 0 &&
+        cs_sized_put_array(out, s->loss.found, sizeof *s->loss.found, n, "cs_sudden_loss", err))
         return -1;
     if (err) err->status = CS_OK, err->message[0] = '\0';
     return n;
@@ -231,11 +233,11 @@ static void end_run(const cs_model *model, cs_state *s, cs_outcome outcome, doub
     cs_summary *sm = &s->summary;
     sm->sudden_loss_count = cs_loss_scan_finish(&s->loss, s->events, s->event_count);
     for (int k = 0; k < CS_SUMMARY_SUDDEN_LOSSES; k++)
-        sm->sudden_losses[k] = k < s->loss.kept ? (cs_summary_loss){s->loss.found[k].t_start_s,
-                                                                    s->loss.found[k].t_end_s,
-                                                                    s->loss.found[k].force_before_n,
-                                                                    s->loss.found[k].force_after_n}
-                                                : (cs_summary_loss){0};
+        sm->sudden_losses[k] =
+            k < s->loss.kept
+                ? (cs_summary_loss){s->loss.found[k].t_start_s, s->loss.found[k].t_end_s,
+                                    s->loss.found[k].force_before_n, s->loss.found[k].force_after_n}
+                : (cs_summary_loss){0};
     if (outcome == CS_STOPPED) {
         s->summary.stop_time_s = s->t;
         cs_event_add(model, s, CS_EVENT_STOPPED, CS_ELEMENT_VEHICLE, 0, value);

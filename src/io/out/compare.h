@@ -25,8 +25,8 @@ int cs_compare_trace(int k, const cs_trace *traces, int count, int reference, cs
  * reference. Returns 0, or -1 with why filled. */
 int cs_compare_write_traces(cs_outdir *out, const cs_trace *traces, int count, int reference, char *why,
                             size_t why_size);
-/* With a measured reference, cs_compare_write_traces also writes metrics.csv and a "Validation metrics" table in
- * compare.md and compare.html: each run's Sprague-Geers M, P, C and ANOVA mean and std of the residuals
+/* With a measured reference, cs_compare_write_traces also writes metrics.csv and a "Validation metrics" table
+ * in compare.md and compare.html: each run's Sprague-Geers M, P, C and ANOVA mean and std of the residuals
  * against it (study/metrics.h), per response both give, and W179's verdict. This prints the same to f
  * (nothing without a measured reference). */
 void cs_compare_print_trace_metrics(FILE *f, const cs_trace *traces, int count, int reference);

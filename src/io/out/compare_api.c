@@ -40,7 +40,8 @@ cs_status cs_compare_create(const cs_compare_def *given, cs_compare **out, cs_er
     if (def.run_count < 1 || !def.runs)
         return cs_status_set(err, CS_ERR_INVALID, "cs_compare_def: no run to compare");
     if (def.run_count > CS_COMPARE_MAX_RUNS) {
-        snprintf(why, sizeof why, "cs_compare_def: %d runs, more than %d", def.run_count, CS_COMPARE_MAX_RUNS);
+        snprintf(why, sizeof why, "cs_compare_def: %d runs, more than %d", def.run_count,
+                 CS_COMPARE_MAX_RUNS);
         return cs_status_set(err, CS_ERR_INVALID, why);
     }
     cs_compare *c = calloc(1, sizeof *c);
@@ -93,9 +94,11 @@ cs_status cs_compare_get(const cs_compare *c, int k, int i, cs_compare_row *out,
     char why[96];
     if (!c || i < 0 || i >= c->count || k < 0 || k >= cs_compare_param_count()) {
         if (!c || i < 0 || i >= c->count)
-            snprintf(why, sizeof why, "cs_compare_row: no history %d (the comparison has %d)", i, cs_compare_count(c));
+            snprintf(why, sizeof why, "cs_compare_row: no history %d (the comparison has %d)", i,
+                     cs_compare_count(c));
         else
-            snprintf(why, sizeof why, "cs_compare_row: no parameter %d (there are %d)", k, cs_compare_param_count());
+            snprintf(why, sizeof why, "cs_compare_row: no parameter %d (there are %d)", k,
+                     cs_compare_param_count());
         return cs_status_set(err, CS_ERR_INVALID, why);
     }
     const cs_trace *tr = &c->traces[i], *ref = &c->traces[c->reference];

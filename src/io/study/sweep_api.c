@@ -22,7 +22,8 @@ cs_status cs_sweep_options_of(const cs_sweep_def *given, cs_sweep_options *o, cs
     if (def.set_count < 0 || def.set_count > CS_SWEEP_MAX_SETS || (def.set_count > 0 && !def.sets))
         snprintf(why, sizeof why, "cs_sweep_def: %d sets, where at most %d are taken", def.set_count,
                  CS_SWEEP_MAX_SETS);
-    else if (def.allow_count < 0 || def.allow_count > CS_SWEEP_MAX_ALLOW || (def.allow_count > 0 && !def.allow))
+    else if (def.allow_count < 0 || def.allow_count > CS_SWEEP_MAX_ALLOW ||
+             (def.allow_count > 0 && !def.allow))
         snprintf(why, sizeof why, "cs_sweep_def: %d folders to allow, where at most %d are taken",
                  def.allow_count, CS_SWEEP_MAX_ALLOW);
     else if (def.runs < 0 || def.runs > CS_SWEEP_MAX_RUNS)
@@ -30,7 +31,8 @@ cs_status cs_sweep_options_of(const cs_sweep_def *given, cs_sweep_options *o, cs
                  (long)CS_SWEEP_MAX_RUNS);
     else if (!def.spec == !def.resume)
         snprintf(why, sizeof why, "cs_sweep_def: %s", def.spec ? "a spec and a folder to resume" : "no spec");
-    else if (def.resume && (def.out_dir || def.runs || def.seed || def.set_count || def.allow_count || def.netcdf))
+    else if (def.resume &&
+             (def.out_dir || def.runs || def.seed || def.set_count || def.allow_count || def.netcdf))
         snprintf(why, sizeof why,
                  "cs_sweep_def: a folder to resume takes its study as its summary.json records it: no "
                  "out_dir, runs, seed, sets, allow or netcdf");
@@ -63,7 +65,8 @@ cs_status cs_sweep_study(const cs_sweep_def *def, cs_sweep **out, cs_error *err)
     if (!o) return cs_status_set(err, CS_ERR_MEMORY, "out of memory");
     cs_status st = cs_sweep_options_of(&full, o, err);
     if (st != CS_OK) return free(o), st;
-    cs_sweep_ranks ranks = {.rank = 0, .size = 1, .local = 1, .threads = asked_threads, .parallel = full.parallel};
+    cs_sweep_ranks ranks = {
+        .rank = 0, .size = 1, .local = 1, .threads = asked_threads, .parallel = full.parallel};
     int rc = cs_sweep_study_keep(o, full.command, &ranks, out);
     if (rc == 0 || rc > 128) {
         st = *out ? cs_status_set(err, CS_OK, "") : cs_status_set(err, CS_ERR_MEMORY, "out of memory");
@@ -150,7 +153,8 @@ cs_status cs_sweep_run_summary(const cs_sweep *s, long run, cs_summary *out, cs_
     if (!r) return CS_ERR_INVALID;
     if (r->pending || r->status == CS_RUN_BAD_MODEL) {
         char why[96];
-        snprintf(why, sizeof why, "run %ld has none: %s", run, r->pending ? "it was not run" : "its model was refused");
+        snprintf(why, sizeof why, "run %ld has none: %s", run,
+                 r->pending ? "it was not run" : "its model was refused");
         return cs_sized_refuse(err, "cs_summary", why);
     }
     cs_summary full = r->summary;

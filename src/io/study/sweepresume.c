@@ -147,20 +147,19 @@ long cs_sweep_resume_runs(const char *dir, const cs_sweep_spec *spec, const cs_s
     char hash[17], path[1200], why[600];
     if (strcmp(was->version, CS_VERSION_STRING) != 0) {
         cs_sweep_say(o,
-                "%s was written by cablesim %s, this is %s: its runs may differ from this "
-                "one's; run the study again without --resume",
-                dir, was->version, CS_VERSION_STRING);
+                     "%s was written by cablesim %s, this is %s: its runs may differ from this "
+                     "one's; run the study again without --resume",
+                     dir, was->version, CS_VERSION_STRING);
         return -1;
     }
     snprintf(hash, sizeof hash, "%016llx", spec->origin.model_hash);
     if (!spec->origin.has_model_hash || strcmp(hash, was->model_hash) != 0 ||
         strcmp((snprintf(hash, sizeof hash, "%016llx", spec->origin.inputs_hash), hash), was->inputs_hash) !=
             0) {
-        cs_sweep_say(
-            o,
-            "%s: the study has changed since it was stopped (its model, %s, or its values): "
-            "run it again without --resume",
-            dir, spec->model);
+        cs_sweep_say(o,
+                     "%s: the study has changed since it was stopped (its model, %s, or its values): "
+                     "run it again without --resume",
+                     dir, spec->model);
         return -1;
     }
     snprintf(path, sizeof path, "%s/%s", dir, was->journal ? CS_OUT_JOURNAL : "runs.csv");

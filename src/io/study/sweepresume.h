@@ -28,7 +28,8 @@ char *cs_sweep_resume_record(const cs_sweep_options *o, const char *as_given, co
 int cs_sweep_resume_read(const char *dir, cs_sweep_options *o, cs_sweep_resumed *r, char *why,
                          size_t why_size);
 /* The runs of DIR/runs.csv, or of the journal a killed sweep left, into all (the others left pending),
- * after checking that the study is the one DIR holds. Returns how many were read, or -1 (why said: cs_sweep_say). */
+ * after checking that the study is the one DIR holds. Returns how many were read, or -1 (why said:
+ * cs_sweep_say). */
 long cs_sweep_resume_runs(const char *dir, const cs_sweep_spec *spec, const cs_sweep_resumed *was,
                           const double *x, cs_sweep_result *all, long n, cs_sweep_options *o);
 

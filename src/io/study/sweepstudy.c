@@ -70,7 +70,9 @@ void cs_sweep_say(cs_sweep_options *o, const char *fmt, ...) {
 void cs_sweep_print_errors(const cs_sweep_spec *spec, cs_sweep_options *o) {
     for (int i = 0; o->errors && i < spec->error_count; i++)
         cs_term_text(o->errors, spec->errors[i]), fputc('\n', o->errors);
-    if (spec->error_count == 1 && !o->why[0]) snprintf(o->why, sizeof o->why, "%.511s", spec->errors[0]);
+    if (spec->error_count > 0 && !o->why[0]) /* the first, for a cs_error */
+        snprintf(o->why, sizeof o->why, "%.440s%s", spec->errors[0],
+                 spec->error_count > 1 ? " (and more problems)" : "");
     cs_sweep_say(o, "%s: %d problem%s, nothing run", spec->file, spec->error_count,
                  spec->error_count == 1 ? "" : "s");
 }
@@ -131,8 +133,8 @@ static void progress_show(progress *p, int final) {
                 left);
         if (final) fputc('\n', p->f);
     } else {
-        fprintf(p->f, "sweep: %ld/%ld runs%s (%.0f%%), %.2f runs/s, about %s left\n", p->done, p->total,
-                who, p->total ? 100.0 * (double)p->done / (double)p->total : 100.0, rate, left);
+        fprintf(p->f, "sweep: %ld/%ld runs%s (%.0f%%), %.2f runs/s, about %s left\n", p->done, p->total, who,
+                p->total ? 100.0 * (double)p->done / (double)p->total : 100.0, rate, left);
     }
     fflush(p->f);
 }
@@ -390,7 +392,8 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, const cs_sweep
             cs_sweep_say(o, "out of memory for %ld results", n);
             rc = EXIT_RUN;
         } else if (o->resume && !was.partial) {
-            if (o->closing) fprintf(o->closing, "sweep: %s holds the whole study (%ld runs): nothing to run\n", dir, n);
+            if (o->closing)
+                fprintf(o->closing, "sweep: %s holds the whole study (%ld runs): nothing to run\n", dir, n);
             rc = -1;
         } else if (o->resume && (done = cs_sweep_resume_runs(dir, spec, &was, x, all, n, o)) < 0) {
             rc = EXIT_BAD;
@@ -439,11 +442,17 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, const cs_sweep
     }
     for (long m = 0; m < local_n; m++)
         mine[m].pending = 1;
-    progress p = {o->progress,          rank == 0 && o->progress,
-                  o->progress && isatty(fileno(o->progress)), size, 0, local_n, now(), now()};
+    progress p = {o->progress,
+                  rank == 0 && o->progress,
+                  o->progress && isatty(fileno(o->progress)),
+                  size,
+                  0,
+                  local_n,
+                  now(),
+                  now()};
     if (rank == 0 && o->progress)
-        fprintf(o->progress, "sweep: %ld runs of %s on %d rank%s x %d thread%s%s\n", todo_n, spec->model, size,
-                size == 1 ? "" : "s", threads, threads == 1 ? "" : "s",
+        fprintf(o->progress, "sweep: %ld runs of %s on %d rank%s x %d thread%s%s\n", todo_n, spec->model,
+                size, size == 1 ? "" : "s", threads, threads == 1 ? "" : "s",
                 o->resume ? " (the rest of a stopped study)" : "");
     const char *stop_after_text = getenv("CABLESIM_SWEEP_STOP_AFTER");
     stop_signal = 0;
@@ -493,21 +502,24 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, const cs_sweep
             rc = EXIT_RUN;
         } else if (pending) {
             if (o->errors)
-                fprintf(o->errors,
-                        "cablesim sweep: stopped by %s: %ld of %ld runs done, written to %s (partial); `cablesim "
-                        "sweep --resume %s` runs the other %ld\n",
-                        signal_name(stopped), n - pending, n, dir, dir, pending);
+                fprintf(
+                    o->errors,
+                    "cablesim sweep: stopped by %s: %ld of %ld runs done, written to %s (partial); `cablesim "
+                    "sweep --resume %s` runs the other %ld\n",
+                    signal_name(stopped), n - pending, n, dir, dir, pending);
             rc = 128 + (stopped ? stopped : SIGINT);
         } else if (o->closing) {
-            fprintf(o->closing, "sweep: %ld runs in %.3f s (%.3f runs/s) on %d rank%s x %d thread%s; %ld did not run to "
-                   "the end\n",
-                   todo_n, wall, wall > 0 ? (double)todo_n / wall : 0, size, size == 1 ? "" : "s", threads,
-                   threads == 1 ? "" : "s", bad);
+            fprintf(o->closing,
+                    "sweep: %ld runs in %.3f s (%.3f runs/s) on %d rank%s x %d thread%s; %ld did not run to "
+                    "the end\n",
+                    todo_n, wall, wall > 0 ? (double)todo_n / wall : 0, size, size == 1 ? "" : "s", threads,
+                    threads == 1 ? "" : "s", bad);
             if (o->resume)
                 fprintf(o->closing, "sweep: %ld runs read back from %s/runs.csv, %ld run now\n", done, dir,
                         todo_n);
-            fprintf(o->closing, "outputs: %s/{runs.csv,summary.md,summary.json,report.html,plots/study-*.png%s", dir,
-                   spec->netcdf ? ",runs.nc" : "");
+            fprintf(o->closing,
+                    "outputs: %s/{runs.csv,summary.md,summary.json,report.html,plots/study-*.png%s", dir,
+                    spec->netcdf ? ",runs.nc" : "");
             for (int k = 0; k < spec->plot_count; k++) {
                 char file[256];
                 cs_sweep_plot_file(spec, k, file, sizeof file);
@@ -519,8 +531,7 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, const cs_sweep
         rc = 128 + stopped;
     }
     pthread_mutex_destroy(&w.lock);
-    if (rank == 0 && keep && (rc == 0 || rc > 128) &&
-        (*keep = handle(spec, x, all, n, p.done, stopped, dir)))
+    if (rank == 0 && keep && (rc == 0 || rc > 128) && (*keep = handle(spec, x, all, n, p.done, stopped, dir)))
         spec = NULL, x = NULL, all = NULL;
     free(mine);
     free(all);
