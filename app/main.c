@@ -304,7 +304,9 @@ static int run(const cs_model_input *in, cs_model *model, const options *o, cons
     cs_record rec;
     cs_state *state = cs_state_create(model, &err);
     int rc = EXIT_RUN;
-    if (!state || cs_record_init(&rec, model) != 0) {
+    /* every view of each frame only for what draws them */
+    cs_record_kind kind = o->plots || o->report ? CS_RECORD_ALL : CS_RECORD_FILES;
+    if (!state || cs_record_init_for(&rec, model, kind) != 0) {
         fprintf(stderr, "cablesim: %s\n", state ? "out of memory" : err.message);
         cs_state_free(state);
         cs_out_abort(&out);

@@ -4,14 +4,18 @@
  * an output every 0.5-ms step (outputs 0 to 1000), into a record of at most 100 frames: full at outputs
  * 100, 200, 400 and 800, it ends recording every 16th and holds the outputs 0, 16, ..., 992 (8 ms
  * apart) and the run's last, 1000. The public way (cablesim/output.h) reads the same frames, refuses what
- * is out of range, and writes the run's files into a folder, all or none. */
+ * is out of range, and writes the run's files into a folder, all or none. The record of the files alone
+ * (cablesim run without plots or report) writes the same timeseries.csv. */
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/stat.h>
 
 #include "cablesim/cablesim.h"
 #include "check.h"
 #include "fixture.h"
 #include "out/record.h"
+#include "out/writers.h"
 
 static void record_thins_and_keeps_the_end(void **state) {
     (void)state;
@@ -110,8 +114,58 @@ static void public_record_and_outputs(void **state) {
     cs_loader_free(l);
 }
 
+/* Both records of one run, fed each output. */
+static void record_both(const cs_model *m, const cs_state *s, void *user) {
+    cs_record *recs = user;
+    cs_record_frame(m, s, &recs[0]);
+    cs_record_frame(m, s, &recs[1]);
+}
+
+/* timeseries.csv as text from a record. */
+static char *timeseries_text(const cs_record *rec) {
+    char *text = NULL, why[256] = "";
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    assert_non_null(f);
+    assert_int_equal(cs_timeseries_csv(f, rec, why, sizeof why), 0);
+    fclose(f);
+    return text;
+}
+
+/* The record of the files alone (no plots, no report.html: cablesim run's) writes the same
+ * timeseries.csv as the whole record, to the byte, and holds neither paths nor posts' views. */
+static void files_record_writes_the_same_timeseries(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    fx.scenario.t_end = 0.08;
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    cs_state *s = cs_state_create(m, &err);
+    assert_non_null(s);
+    cs_record recs[2];
+    assert_int_equal(cs_record_init(&recs[0], m), 0);
+    assert_int_equal(cs_record_init_for(&recs[1], m, CS_RECORD_FILES), 0);
+    assert_int_equal(cs_run(m, s, record_both, recs, &err), CS_OK);
+    assert_int_equal(recs[0].failed, 0), assert_int_equal(recs[1].failed, 0);
+    assert_int_equal(recs[1].frame_count, recs[0].frame_count);
+    assert_true(recs[1].capacity >= recs[1].frame_count && recs[1].capacity <= recs[1].max_frames);
+    assert_null(cs_record_post(&recs[1], 0, 0)), assert_non_null(cs_record_post(&recs[0], 0, 0));
+    const double *xyz = NULL;
+    assert_int_equal(cs_record_cable_path(&recs[1], 0, 0, &xyz, NULL), 0);
+    assert_null(xyz);
+    char *all = timeseries_text(&recs[0]), *files = timeseries_text(&recs[1]);
+    assert_string_equal(files, all);
+    free(all), free(files);
+    cs_record_release(&recs[0]), cs_record_release(&recs[1]);
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(record_thins_and_keeps_the_end),
+                                       cmocka_unit_test(files_record_writes_the_same_timeseries),
                                        cmocka_unit_test(public_record_and_outputs)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -80,11 +80,11 @@ int cs_timeseries_csv(FILE *f, const cs_record *rec, char *why, size_t why_size)
             fputs(cs_cable_status_name(cv->status), f);
         }
         for (int p = 0; p < rec->post_count; p++) {
-            const cs_post_view *pv = &rec->posts[(size_t)i * (size_t)rec->post_count + (size_t)p];
+            cs_post_state ps = cs_record_post_state(rec, i, p);
             fputc(',', f);
-            fputs(cs_post_status_name(pv->status), f);
+            fputs(cs_post_status_name(ps.status), f);
             fputc(',', f);
-            ts_num(&w, pv->tilt, "post", p, "'s tilt", v->t);
+            ts_num(&w, ps.tilt, "post", p, "'s tilt", v->t);
         }
         for (int a = 0; a < 2; a++) {
             const cs_anchor_view *av = &rec->anchors[(size_t)i * 2 + (size_t)a];
