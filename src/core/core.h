@@ -129,6 +129,10 @@ struct cs_model {
     int window_steps;    /* steps in the 50-ms average */
     int loss_steps;      /* samples of the sudden-loss check's ring: every step within its window */
     double solve_budget; /* barrier solves the run may make in all (scenario.solve_budget per step) */
+    double work_budget;  /* the solver's work the run may do in all, in rows evaluated (solver/work.h:
+                          * solve_budget solves of CS_SOLVE_WORK passes over work_rows rows each) */
+    double work_rows;    /* the barrier's unknowns as installed: two tilts a post, a support a post and
+                          * rope, two a dead-man, the crush */
     double max_steps;    /* steps the run may take (scenario.max_steps, or CS_MAX_STEPS_DEFAULT) */
     int event_capacity;
 };

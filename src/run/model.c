@@ -497,6 +497,8 @@ static cs_model *model_create(const cs_barrier_def *barrier, const cs_vehicle_de
            vehicle->cg_height);
     m->solve_budget = (scenario->solve_budget > 0.0 ? scenario->solve_budget : CS_SOLVE_BUDGET) *
                       ceil(scenario->t_end / scenario->dt);
+    m->work_rows = 2.0 * m->post_count + (double)m->cable_count * m->post_count + 4.0 + 1.0;
+    m->work_budget = m->solve_budget * CS_SOLVE_WORK * m->work_rows;
     m->max_steps = scenario->max_steps > 0.0 ? floor(scenario->max_steps) : CS_MAX_STEPS_DEFAULT;
     m->window_steps = (int)lround(0.05 / scenario->dt);
     if (m->window_steps < 1) m->window_steps = 1;

@@ -311,15 +311,16 @@ static void follow_stretch(const cs_model *model, cs_state *s, double h, int lev
     cs_state *start = s->work->step_start[level];
     cs_state_copy(model, start, s);
     if (advance(model, s, h, 0, HUGE_VAL, NULL, &work) && book_gap(model, s, work, e0, snap) >= -snap) return;
+    if (cs_work_spent(model, s->work)) return; /* the step is not taken (cs_step) */
     cs_state_copy(model, s, start);
     s->work->count.pieces++;
     if (level + 1 < CS_PATH_LEVELS) {
-        for (int j = 0; j < CS_PATH_PIECES; j++)
+        for (int j = 0; j < CS_PATH_PIECES && !cs_work_spent(model, s->work); j++)
             follow_stretch(model, s, h / CS_PATH_PIECES, level + 1, scale);
         return;
     }
     work = 0.0;
-    for (int j = 1; j <= CS_PATH_PIECES; j++) { /* start holds the barrier as last committed */
+    for (int j = 1; j <= CS_PATH_PIECES && !cs_work_spent(model, s->work); j++) { /* start: the last commit */
         double allowed = s->work->stored_committed + work + CS_PATH_GAP * scale * h / model->scenario.dt;
         if (!advance(model, s, h / CS_PATH_PIECES, j == CS_PATH_PIECES, allowed, start, &work)) continue;
         book_gap(model, s, work, e0, snap / CS_PATH_PIECES);
@@ -397,10 +398,18 @@ static cs_status check_numbers(const cs_model *model, cs_state *s, const cs_ener
 cs_status cs_step(const cs_model *model, cs_state *s, cs_error *err) {
     if (err) err->status = CS_OK, err->message[0] = '\0';
     if (s->frozen || s->outcome != CS_RUNNING) return CS_OK;
+    double t0 = s->t;
+    long step0 = s->step;
     s->t += model->scenario.dt;
     s->step++;
     cs_energy before = s->energy;
     follow_path(model, s); /* 1-6. the vehicle moves, the barrier follows and pushes back */
+    if (cs_work_spent(model, s->work)) { /* bounded work: the step under way is not taken */
+        cs_state_copy(model, s, s->work->step_start[0]); /* the state this step started from */
+        s->t = t0, s->step = step0;
+        cs_response_give_up(model, s, CS_DID_NOT_CONVERGE);
+        return CS_OK;
+    }
     count_warning(model, s);
     cs_energy_update(model, s);   /* 7. the ledger */
     cs_response_update(model, s); /* 8. response parameters, end of the run */

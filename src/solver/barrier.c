@@ -17,7 +17,7 @@
  * if it still stalls. */
 static double newton_or_sweeps(const cs_model *model, cs_state *s, int may_fall, int *swept) {
     double worst = cs_system_solve(model, s, &s->work->sys);
-    for (int round = 0; worst < 0.0 && round < 6; round++) {
+    for (int round = 0; worst < 0.0 && round < 6 && !cs_work_spent(model, s->work); round++) {
         *swept = 1;
         cs_relax(model, s, 3, may_fall); /* sweeps, then Newton again from there */
         worst = cs_system_solve(model, s, &s->work->sys);
@@ -47,7 +47,8 @@ static double solve_at_pose(const cs_model *model, cs_state *s) {
     if (swept || worst < 0.0 || worst > sc->solver_tolerance) w->count.fallback++;
     /* Stalled near it: polish in rounds of a few sweeps and Newton again, each kept only if it ends
      * closer, until the tolerance is met (one round mostly does). */
-    for (int round = 0; round < CS_POLISH_ROUNDS && worst > sc->solver_tolerance; round++) {
+    for (int round = 0; round < CS_POLISH_ROUNDS && worst > sc->solver_tolerance && !cs_work_spent(model, w);
+         round++) {
         cs_system_keep(model, s, &w->sys);
         cs_relax(model, s, 3, 0);
         double polished = cs_system_solve(model, s, &w->sys);
@@ -60,7 +61,7 @@ static double solve_at_pose(const cs_model *model, cs_state *s) {
     }
     if (worst < 0.0)
         worst = cs_relax(model, s, sc->solver_max_sweeps, 0); /* Newton stalled, or band too wide */
-    if (worst > CS_FALL_TRIGGER) {
+    if (worst > CS_FALL_TRIGGER && !cs_work_spent(model, w)) {
         w->count.fall_tries++;
         cs_system_keep(model, s, &w->sys);
         cs_relax(model, s, 3, 1);

@@ -19,6 +19,9 @@
 
 #define CS_NEWTON_ITERATIONS 40
 #define CS_BROYDEN_MAX 8 /* rank-one updates kept on one factored Jacobian */
+/* What forming and factoring a Jacobian costs, in residuals (counted in nw->evaluations): its rows'
+ * gradients, the crush's column by differences and the banded LU. */
+#define CS_JACOBIAN_EVALUATIONS 2
 
 int cs_newton_init(cs_newton *nw, int capacity, size_t band_entries) {
     memset(nw, 0, sizeof *nw);
@@ -103,11 +106,13 @@ double cs_newton_solve(cs_newton *nw, const cs_newton_problem *p, double tol) {
     double *x = nw->x, *r = nw->r, *dx = nw->dx;
     p->place(p->ctx, x);
     p->residual(p->ctx, r);
+    nw->evaluations++;
     double rn = norm_inf(r, n);
     int fresh = 0, at_x = 1, have_dx = 0; /* at_x: the problem is at x (not at a rejected trial) */
     for (int it = 0; it < CS_NEWTON_ITERATIONS && rn > tol; it++) {
         if (!nw->factored) {
             if (!at_x) p->place(p->ctx, x), at_x = 1;
+            nw->evaluations += CS_JACOBIAN_EVALUATIONS;
             if (p->jacobian(p->ctx, x, r, &nw->band) != 0) return -1.0;
             if (cs_band_factor(&nw->band) != 0) break;
             nw->factored = 1, fresh = 1, nw->update_count = 0, have_dx = 0;
@@ -121,6 +126,7 @@ double cs_newton_solve(cs_newton *nw, const cs_newton_problem *p, double tol) {
                 nw->xt[k] = x[k] + t * dx[k];
             p->place(p->ctx, nw->xt);
             p->residual(p->ctx, nw->rt);
+            nw->evaluations++;
             at_x = 0;
             trial = sum_of_squares(nw->rt, n);
             if (trial < (fresh ? (1.0 - 1e-4 * t) : 0.25) * merit) {

@@ -30,6 +30,7 @@ typedef struct cs_newton {
     int update_count;
     int factored; /* `band` holds the factors of a Jacobian of the problem's current unknowns */
     cs_band band;
+    long evaluations; /* residuals and Jacobians evaluated since cs_newton_init (each a pass over the rows) */
 } cs_newton;
 
 int cs_newton_init(cs_newton *nw, int capacity, size_t band_entries);

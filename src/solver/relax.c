@@ -9,6 +9,7 @@
  * element at a time. */
 #include "core/vec3.h"
 #include "solver/solver.h"
+#include "solver/work.h"
 
 #include <math.h>
 
@@ -420,19 +421,27 @@ double cs_relax_crush(const cs_model *model, cs_state *s) {
 }
 
 /* Gauss-Seidel over the local problems, up to `sweeps` sweeps, or until CS_GS_STALL sweeps in a row
- * have not brought the residual below 0.9 of the best yet (a stalled sweep is pure cost). Returns the
- * largest relative residual found in the last sweep. */
+ * have not brought the residual below 0.9 of the best yet (a stalled sweep is pure cost), or the run's
+ * work budget is spent (work.h). Each sweep adds CS_SWEEP_ROW_COST a local problem to the run's work: a
+ * local problem is an iterative solve of its own (a post's Newton with its ropes sliding through it, a
+ * support's regula falsi, a contact's bisection), which costs several of Newton's rows (measured on the
+ * slowest input found: docs/robustness.md). Returns the largest relative residual found in the last sweep;
+ * CS_RELAX_NOTHING if it made none (the budget spent on entry). */
 #define CS_GS_STALL 50
+#define CS_SWEEP_ROW_COST 20.0
 
 double cs_relax(const cs_model *model, cs_state *s, int sweeps, int may_fall) {
     const cs_scenario_def *sc = &model->scenario;
-    double worst = 0.0, best = HUGE_VAL;
+    double worst = CS_RELAX_NOTHING, best = HUGE_VAL;
     for (int sweep = 0, last_gain = 0; sweep < sweeps && sweep - last_gain <= CS_GS_STALL; sweep++) {
+        if (cs_work_spent(model, s->work)) break;
+        long problems = 0;
         worst = 0.0;
         for (int k = 0; k < model->post_count; k++) {
             int p = (sweep % 2 == 0) ? k : model->post_count - 1 - k; /* alternate direction */
             worst = fmax(worst, cs_relax_post(model, s, p, sc->solver_tolerance, may_fall));
         }
+        problems += model->post_count;
         for (int c = 0; c < model->cable_count; c++) {
             cs_cable_state *cs = &s->cables[c];
             if (cs->status != CS_CABLE_INTACT) continue;
@@ -443,18 +452,23 @@ double cs_relax(const cs_model *model, cs_state *s, int sweeps, int may_fall) {
                 worst = fmax(worst, cs_relax_slide_node(model, cm, cs, i, sc->solver_tolerance));
             }
             worst = fmax(worst, cs_relax_ends(model, c, s)); /* ends slipping through fittings */
+            problems += n;
         }
         for (int a = 0; a < 2; a++)
             worst = fmax(worst, solve_anchor(model, s, a, sc->solver_tolerance));
         for (int c = 0; c < model->cable_count; c++) { /* contact heights on the face */
             cs_cable_state *cs = &s->cables[c];
             if (cs->status != CS_CABLE_INTACT || !cs->engaged) continue;
-            for (int i = 1; i + 1 < cs->node_count; i++)
-                if (cs_node_is_corner(cs->node[i]))
-                    worst = fmax(worst, solve_height(model, s, c, i, cs_node_corner(cs->node[i]),
-                                                     sc->solver_tolerance));
+            for (int i = 1; i + 1 < cs->node_count; i++) {
+                if (!cs_node_is_corner(cs->node[i])) continue;
+                worst = fmax(worst, solve_height(model, s, c, i, cs_node_corner(cs->node[i]), sc->solver_tolerance));
+                problems++;
+            }
         }
         worst = fmax(worst, cs_relax_crush(model, s));
+        problems += 3; /* the anchors and the crush */
+        s->work->count.sweeps++;
+        s->work->count.work += CS_SWEEP_ROW_COST * (double)problems;
         if (worst <= sc->solver_tolerance) break;
         if (worst < 0.9 * best) best = worst, last_gain = sweep;
     }

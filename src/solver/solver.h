@@ -16,7 +16,9 @@ void cs_barrier_commit(const cs_model *model, cs_state *s);
 double cs_barrier_trial_energy(const cs_model *model, const cs_state *s, cs_work *work);
 double cs_barrier_stored_energy(const cs_model *model, const cs_state *s);
 /* Gauss-Seidel sweeps of the elements' local problems (may_fall: a post with no equilibrium near falls
- * to the next one); the largest relative residual of the last sweep. */
+ * to the next one), no more once the run's work budget is spent (work.h); the largest relative residual
+ * of the last sweep, or CS_RELAX_NOTHING if it swept none. */
+#define CS_RELAX_NOTHING 1.0 /* a residual of one unit: far from equilibrium, nothing solved */
 double cs_relax(const cs_model *model, cs_state *s, int sweeps, int may_fall);
 /* The fallback's local solve of support i of a cable: the rope slides until the capstan condition holds
  * with its neighbours held; the relative violation found on entry. */

@@ -13,6 +13,7 @@
  * symmetric impact stays symmetric. The Jacobian is formed from the spans' tension gradients; the crush's
  * column alone is a difference quotient (the crush moves every corner and captured post at once). */
 #include "solver/system.h"
+#include "solver/work.h"
 
 #include "core/vec3.h"
 
@@ -539,7 +540,11 @@ double cs_system_solve(const cs_model *model, cs_state *s, cs_system *sys) {
     if (!same_unknowns(sys, n)) cs_newton_forget(&sys->newton);
     problem p = {model, s, sys};
     cs_newton_problem np = problem_of(&p);
+    long before = sys->newton.evaluations;
     double rn = cs_newton_solve(&sys->newton, &np, model->scenario.solver_tolerance);
+    long passes = sys->newton.evaluations - before; /* the work: each pass over its n rows */
+    s->work->count.newton += passes;
+    s->work->count.work += (double)passes * (double)n;
     return rn > CS_NEWTON_GIVE_UP || rn < 0.0 ? -1.0 : rn; /* stalled far off: the fallback goes on */
 }
 

@@ -26,7 +26,18 @@ struct cs_work {
         long fall_tries; /* of them, those that tried letting a post fall (relax.c) */
         long falls;      /* of those, the falls kept (barrier.c) */
         long pieces;     /* steps the path following cut into pieces (step.c) */
+        long sweeps;     /* the fallback's Gauss-Seidel sweeps (relax.c) */
+        long newton;     /* Newton's residuals and Jacobians evaluated (newton.c), each a pass over the rows */
+        double work;     /* the solver's work, in rows evaluated: each of Newton's passes its n rows, each
+                          * sweep CS_SWEEP_ROW_COST a local problem it solves (relax.c, system.c) */
     } count;             /* since the state was reset */
 };
+
+/* The run's work is bounded by what it costs, not by its count of solves (docs/theory.md, The barrier
+ * solve, "Bounded work"): once count.work passes the model's work_budget, every solve ends at its next
+ * pass (Newton's iteration, a sweep) and the step under way is not taken (step.c). */
+static inline int cs_work_spent(const cs_model *model, const cs_work *w) {
+    return w->count.work > model->work_budget;
+}
 
 #endif
