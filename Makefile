@@ -47,7 +47,8 @@ sanitize: deps
 # libFuzzer, each target built with ASan + UBSan + coverage and run for FUZZ_SECONDS:
 # - fuzz/fuzz_loader.c, the model loader: seeded at run time from examples/, tests/good/, tests/bad/ (also
 #   each example with --set lines), replaying tests/fuzz-regressions/;
-# - fuzz/fuzz_engine.c, the engine: random valid designs (tests/design.h) run to their end;
+# - fuzz/fuzz_engine.c, the engine: random valid designs (tests/design.h) run to their end, replaying
+#   tests/fuzz-regressions/engine/ (its kept inputs, bytes, not YAML);
 # - fuzz/fuzz_sweep.c, the sweep spec: seeded from the example studies;
 # - fuzz/fuzz_set.sh, `cablesim check` (the sanitized one where make sanitize built it) with --set of
 #   every numeric field at extreme values: exit status 0 or 2, every message at a place, none over 20 s.
@@ -80,7 +81,7 @@ fuzz: fuzz-build
 	  > $(FUZZ_BUILD)/seeds-sweep/spacing-study.yaml
 	$(FUZZ_RUN) $(FUZZ_BUILD)/fuzz_loader $(FUZZ_FLAGS) -dict=fuzz/loader.dict \
 	  $(FUZZ_BUILD)/corpus-loader $(FUZZ_BUILD)/seeds $(wildcard tests/fuzz-regressions)
-	$(FUZZ_RUN) $(FUZZ_BUILD)/fuzz_engine $(FUZZ_FLAGS) $(FUZZ_BUILD)/corpus-engine
+	$(FUZZ_RUN) $(FUZZ_BUILD)/fuzz_engine $(FUZZ_FLAGS) $(FUZZ_BUILD)/corpus-engine tests/fuzz-regressions/engine
 	$(FUZZ_RUN) $(FUZZ_BUILD)/fuzz_sweep $(FUZZ_FLAGS) -dict=fuzz/loader.dict \
 	  $(FUZZ_BUILD)/corpus-sweep $(FUZZ_BUILD)/seeds-sweep
 	$(FUZZ_RUN) bash fuzz/fuzz_set.sh $(FUZZ_SET_CS) $(FUZZ_SECONDS)

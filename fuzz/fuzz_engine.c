@@ -1,13 +1,15 @@
 /* SPDX-License-Identifier: MIT */
 /* libFuzzer harness of the engine: each input picks a valid design and attack (tests/design.h: two bytes
  * a value - cables, rope size, spacing, posts, dead-men, rails, vehicle size, speed, angle, impact point
- * - the generator after that), which is built and run to its end (0.15 s, under the run's solve budget).
+ * - the generator after that), which is built and run to its end (0.15 s, under the run's solve and work
+ * budgets: a design whose solves all fail ends did_not_converge by its work, in bounded time).
  * The engine's contract: the model builds, the run ends either cleanly or with the ledger's own error
  * (past CS_LEDGER_FAILURE, naming the term), never another error, and every response is finite. A
  * broken contract aborts, so libFuzzer keeps the input.
  *
  * Build and run: make fuzz (FUZZ_SECONDS for each target). A kept input replays with
- * build-fuzz/fuzz_engine FILE. */
+ * build-fuzz/fuzz_engine FILE; findings are kept in tests/fuzz-regressions/engine/, which make fuzz
+ * replays and tests/test_fuzz_engine_regressions.c runs (its work asserted against the budget). */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>

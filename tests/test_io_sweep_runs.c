@@ -123,6 +123,59 @@ static void test_runs_csv(void **state) {
     free(text);
 }
 
+/* runs.csv read back (sweep --resume) from text: the rows read, or -1 with why. */
+static long read_back(const fixture *f, const char *text, cs_sweep_result *r, char *why, size_t why_size) {
+    FILE *in = fmemopen((void *)text, strlen(text), "r");
+    assert_non_null(in);
+    for (int i = 0; i < RUNS; i++)
+        memset(&r[i], 0, sizeof r[i]), r[i].pending = 1;
+    long got = cs_sweep_read_runs(in, "runs.csv", f->spec, f->x, r, RUNS, 0, why, why_size);
+    fclose(in);
+    return got;
+}
+
+/* A failed run's error with a line break in it is a quoted cell over two lines: read back whole, and the
+ * places of the rows after it are their lines in the file (they were counted as rows, one line too few
+ * each); a row the CSV reader cannot read is its own message at its place (it was "not a row of this
+ * study"). */
+static void test_runs_csv_read_back(void **state) {
+    fixture *f = *state;
+    snprintf(f->r[2].error, sizeof f->r[2].error, "the solve failed\nat 0.1 s, \"diverged\"");
+    char *text = NULL, why[512] = "";
+    size_t size = 0;
+    FILE *out = open_memstream(&text, &size);
+    assert_non_null(out);
+    assert_int_equal(cs_sweep_write_runs(out, f->spec, f->x, f->r, RUNS, why, sizeof why), 0);
+    fclose(out);
+    assert_non_null(strstr(text, "\"the solve failed\nat 0.1 s, \"\"diverged\"\"\"\n")); /* lines 4-5 */
+    cs_sweep_result back[RUNS];
+    assert_int_equal(read_back(f, text, back, why, sizeof why), RUNS);
+    assert_string_equal(back[2].error, f->r[2].error);
+    assert_int_equal(back[2].status, CS_RUN_FAILED);
+    assert_int_equal(back[1].summary.outcome, CS_BREAKTHROUGH);
+
+    /* the runs' rows, then a bad one on line 6 (after the two lines of run 2's error) */
+    size_t n = strlen(text);
+    char *bad = malloc(2 * n + 64);
+    assert_non_null(bad);
+    snprintf(bad, 2 * n + 64, "%s2,x\n", text);
+    assert_int_equal(read_back(f, bad, back, why, sizeof why), -1);
+    assert_string_equal(why, "runs.csv:6: not a row of this study (its fields)");
+    /* run 2's row given twice, the second on line 6 */
+    const char *row2 = strstr(text, "\n2,") + 1;
+    snprintf(bad, 2 * n + 64, "%s%s", text, row2);
+    assert_int_equal(read_back(f, bad, back, why, sizeof why), -1);
+    assert_string_equal(why, "runs.csv:6: not the next run of this study");
+    /* a quote not closed on line 6, column 3: the reader's own message, at its place */
+    snprintf(bad, 2 * n + 64, "%s2,\"open\n", text);
+    assert_int_equal(read_back(f, bad, back, why, sizeof why), -1);
+    assert_string_equal(why, "runs.csv:6:3: a quoted cell not closed (expected a closing \" before the end of "
+                             "the file)");
+    free(bad);
+    free(text);
+    snprintf(f->r[2].error, sizeof f->r[2].error, "the solve \"diverged\", at 0.1 s"); /* as setup made it */
+}
+
 /* A text attribute of a variable (NC_GLOBAL: of the file). */
 static const char *att(int id, int varid, const char *name) {
     static char text[512];
@@ -445,6 +498,7 @@ static void test_plots(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_runs_csv),
+        cmocka_unit_test(test_runs_csv_read_back),
         cmocka_unit_test(test_runs_netcdf),
         cmocka_unit_test(test_summary_responses),
         cmocka_unit_test(test_plots),

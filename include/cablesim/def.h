@@ -275,8 +275,9 @@ typedef struct cs_scenario_def {
     double crush_tolerance;  /**< relative change of face force that ends the crush iteration (paper: 0.05) */
     double solver_tolerance; /**< relative residual of the quasi-static barrier solve */
     int solver_max_sweeps;   /**< cap on Gauss-Seidel sweeps of the barrier solve in one step */
-    double solve_budget;     /**< barrier solves a run may make, per step to t_end on average (0: 20); past
-                                it the run ends "did not converge" with what it has */
+    double solve_budget;     /**< barrier solves a run may make, per step to t_end on average (0: 20), and
+                                their work (100 passes over the barrier's unknowns a solve); past either
+                                the run ends "did not converge" with what it has */
     double stop_speed;       /**< forward speed below which the vehicle counts as stopped, m/s */
     double gravity;          /**< m/s^2 */
     double max_steps; /**< steps a run may take (0: CS_MAX_STEPS_DEFAULT, 10 million); past them the run

@@ -80,7 +80,8 @@ typedef enum cs_outcome {
     CS_OVERRIDE,         /**< it rode over every cable it met (none broke) and went past the barrier line */
     CS_UNDERRIDE,        /**< it ran under every cable it met (none broke) and went past the barrier line */
     CS_NO_CONTACT,       /**< it never touched the barrier before the time limit */
-    CS_DID_NOT_CONVERGE, /**< the barrier's solves took more than the run's budget (scenario.solve_budget) */
+    CS_DID_NOT_CONVERGE, /**< the barrier's solves took more than the run's budget, in count or in work
+                              (scenario.solve_budget) */
     CS_STEP_LIMIT        /**< the run took scenario.max_steps steps */
 } cs_outcome;
 

@@ -413,6 +413,7 @@ cs_status cs_step(const cs_model *model, cs_state *s, cs_error *err) {
     count_warning(model, s);
     cs_energy_update(model, s);   /* 7. the ledger */
     cs_response_update(model, s); /* 8. response parameters, end of the run */
+    /* a step that spent the work budget was not taken, above; one that used up the count of solves was */
     if (s->outcome == CS_RUNNING && (double)s->work->count.solves > model->solve_budget)
         cs_response_give_up(model, s, CS_DID_NOT_CONVERGE); /* bounded effort: a run that cannot follow */
     if (s->outcome == CS_RUNNING && (double)s->step >= model->max_steps)

@@ -32,7 +32,9 @@ static double newton_or_sweeps(const cs_model *model, cs_state *s, int may_fall,
  * "fall" that would book more is a branch the path cannot reach (a stress design fell onto a state whose
  * commit booked 11 kJ more than the ropes gave up). Only on a failed solve: a post whose local solve
  * stalls inside an ordinary sweep is usually waiting for its neighbours, not falling (falls there led
- * another design onto the rope at its strength). tests/test_solve.c reaches the fallback. */
+ * another design onto the rope at its strength). tests/test_solve.c reaches the fallback. Once the run's
+ * work budget is spent (work.h) no round of the fallback, polish or fall is begun and the sweeps make
+ * none: the solve ends as it stands, and the step that made it is not taken (step.c). */
 #define CS_FALL_TRIGGER 1e-2
 #define CS_POLISH_ROUNDS 7
 #define CS_FALL_SLACK 1e-3 /* of the energy scale, as step.c's CS_PATH_GAP: a piece's work, round-off */

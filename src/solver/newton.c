@@ -17,11 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define CS_NEWTON_ITERATIONS 40
 #define CS_BROYDEN_MAX 8 /* rank-one updates kept on one factored Jacobian */
-/* What forming and factoring a Jacobian costs, in residuals (counted in nw->evaluations): its rows'
- * gradients, the crush's column by differences and the banded LU. */
-#define CS_JACOBIAN_EVALUATIONS 2
 
 int cs_newton_init(cs_newton *nw, int capacity, size_t band_entries) {
     memset(nw, 0, sizeof *nw);
@@ -121,7 +117,7 @@ double cs_newton_solve(cs_newton *nw, const cs_newton_problem *p, double tol) {
         have_dx = 0;
         double t = p->step_limit(p->ctx, dx), merit = sum_of_squares(r, n), trial = 0.0;
         int accepted = 0;
-        for (int ls = 0; ls < (fresh ? 30 : 1); ls++, t *= 0.5) {
+        for (int ls = 0; ls < (fresh ? CS_NEWTON_TRIALS : 1); ls++, t *= 0.5) {
             for (int k = 0; k < n; k++)
                 nw->xt[k] = x[k] + t * dx[k];
             p->place(p->ctx, nw->xt);

@@ -7,6 +7,15 @@
 
 #include "core/band.h"
 
+/* Its limits: at most CS_NEWTON_ITERATIONS iterations, each forming and factoring a Jacobian (counted as
+ * CS_JACOBIAN_EVALUATIONS residuals: its rows' gradients, the crush's column by differences, the banded LU)
+ * and trying up to CS_NEWTON_TRIALS steps; so one solve makes at most CS_NEWTON_MOST_PASSES passes over
+ * its rows (nw->evaluations). */
+#define CS_NEWTON_ITERATIONS 40
+#define CS_NEWTON_TRIALS 30
+#define CS_JACOBIAN_EVALUATIONS 2
+#define CS_NEWTON_MOST_PASSES (1 + CS_NEWTON_ITERATIONS * (CS_JACOBIAN_EVALUATIONS + CS_NEWTON_TRIALS))
+
 typedef struct cs_newton_problem {
     void *ctx;
     int n;

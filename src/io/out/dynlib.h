@@ -19,7 +19,8 @@
 
 /* Loads the shared object soname (RTLD_NOW | RTLD_LOCAL, never unloaded) and fills the n function
  * pointers of table, in the order of names. 0; -1 with why ("cairo (libcairo.so.2) ...: dlerror's
- * reason", or the missing function). */
+ * reason", or the missing function). For tests, CABLESIM_TEST_NO_LIB=WHAT[,WHAT...] makes the libraries
+ * named WHAT fail so, as on a machine without their packages. */
 int cs_dynlib_bind(const char *what, const char *soname, const char *const *names, void *table, int n,
                    char *why, size_t why_size);
 

@@ -141,8 +141,8 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
         fprintf(f, "the vehicle never touched the barrier (t = %.3f s)\n", s.t_end_s);
     else if (s.outcome == CS_DID_NOT_CONVERGE)
         fprintf(f,
-                "the run did not converge: its barrier solves used up their budget at t = %.3f s "
-                "(scenario.solve_budget); what it reached is below\n",
+                "the run did not converge: its barrier solves used up their budget (their count or "
+                "their work) at t = %.3f s (scenario.solve_budget); what it reached is below\n",
                 s.t_end_s);
     else if (s.outcome == CS_STEP_LIMIT)
         fprintf(f,

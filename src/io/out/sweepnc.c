@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cairo_lib.h"
 #include "netcdf_lib.h"
 #include "sweepout.h"
 
@@ -180,4 +181,19 @@ int cs_sweep_write_netcdf(const char *path, const cs_sweep_spec *s, const double
     if (f.status != NC_NOERR) nc_abort(f.id); /* the caller removes what is left */
     snprintf(why, why_size, "%s: %s", f.doing, nc_strerror(f.status));
     return -1;
+}
+
+int cs_sweep_outputs_loadable(const cs_sweep_spec *spec, char *why, size_t why_size) {
+    char lib[400];
+    if (cs_cairo_load(lib, sizeof lib) != 0) {
+        snprintf(why, why_size, "%s: a study draws its figures with it (plots/study-*.png); install its package",
+                 lib);
+        return -1;
+    }
+    if (spec->netcdf && cs_netcdf_load(lib, sizeof lib) != 0) {
+        snprintf(why, why_size, "%s: runs.nc (--netcdf, or `netcdf: true` in the spec) needs it; install its "
+                 "package or leave runs.nc out", lib);
+        return -1;
+    }
+    return 0;
 }

@@ -63,9 +63,14 @@ int cs_sweep_write_journal_start(FILE *f, const cs_sweep_spec *spec, const doubl
  * checking the header and each row's inputs against spec and x (the same study). Rows come in run order,
  * or with any_order (a journal: as the runs finished) in any order, each run once (r's runs pending
  * before); runs with no row are left as they are. Returns the rows read, or -1 with why filled
- * ("NAME:LINE: what"). */
+ * ("NAME:LINE: what", LINE the file's line the row begins on, a quoted cell's line breaks counted; a row
+ * the CSV reader cannot read: "NAME:LINE:COL: " and the reader's own message). */
 long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *spec, const double *x,
                         cs_sweep_result *r, long n, int any_order, char *why, size_t why_size);
+/* The libraries the study's outputs load when written (dynlib.h), loaded now, before any run: cairo
+ * (plots/study-*.png and the spec's plots, always drawn) and netCDF where spec->netcdf (runs.nc). 0; -1
+ * with why naming the library, its reason and what needs it. */
+int cs_sweep_outputs_loadable(const cs_sweep_spec *spec, char *why, size_t why_size);
 /* runs.nc: the same table as netCDF (CF-1.8; 64-bit offset, the same bytes for the same results), at path
  * (a temporary: a failure leaves it to be removed). Returns 0, or -1 with why filled (nc_strerror's). */
 int cs_sweep_write_netcdf(const char *path, const cs_sweep_spec *spec, const double *x,

@@ -130,10 +130,21 @@ long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *s, const
         goto done;
     }
     count = 0;
-    for (long at = 2;; at++) {
+    for (;;) {
+        /* the reader began after the header: its line k is the file's k + 1, and a row begins on the line
+         * its first cell does (a quoted cell may hold line breaks) */
         int got = cs_csv_next(&rows);
         if (got == 0 || (got < 0 && ferror(f))) break;
-        got = got < 0 ? -1 : rows.count;
+        if (got < 0) { /* the reader's own problem, at its place */
+            if (rows.why_col > 0)
+                snprintf(why, why_size, "%s:%ld:%d: %s", name, rows.why_line + 1, rows.why_col, rows.why);
+            else
+                snprintf(why, why_size, "%s:%ld: %s", name, rows.why_line + 1, rows.why);
+            count = -1;
+            break;
+        }
+        long at = rows.line + 1;
+        got = rows.count;
         char **field = rows.cell;
         char *end;
         long i = got == max ? strtol(field[0], &end, 10) : -1;

@@ -395,6 +395,9 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, const cs_sweep
             if (o->closing)
                 fprintf(o->closing, "sweep: %s holds the whole study (%ld runs): nothing to run\n", dir, n);
             rc = -1;
+        } else if (cs_sweep_outputs_loadable(spec, why, sizeof why) != 0) { /* not found after the runs */
+            cs_sweep_say(o, "nothing run: %s", why);
+            rc = EXIT_RUN;
         } else if (o->resume && (done = cs_sweep_resume_runs(dir, spec, &was, x, all, n, o)) < 0) {
             rc = EXIT_BAD;
         } else if (cs_out_open(&out, dir, o->force ? CS_OUT_FORCE : 0, why, sizeof why) != 0) {
