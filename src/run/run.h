@@ -13,8 +13,8 @@
 #define CS_SOLVE_BUDGET 20.0
 /* What one solve of that budget may cost on average, in passes over the barrier's unknowns as installed
  * (model->work_rows): the run's work budget is CS_SOLVE_WORK x work_rows rows a solve of the budget, 2,000
- * passes a step at the default (solver/work.h). The costliest of 5,600 stress designs that follow their
- * path make 853 passes a step (median 2); a fuzzed design that did not made 21,000 (docs/theory.md, The
+ * passes a step at the default (solver/work.h). The costliest of 11,037 stress runs that follow their
+ * path make 869 passes a step (median 2); a fuzzed design that did not made 43,000 (docs/theory.md, The
  * barrier solve, "Bounded work"). */
 #define CS_SOLVE_WORK 100.0
 

@@ -367,7 +367,8 @@ static const cs_field scenario_fields[] = {
        "relative change that ends the crush iteration"),
     SC("solver_tolerance", CS_Q_NUMBER, CS_POS, solver_tolerance, "relative residual of the barrier solve"),
     SC("solve_budget", CS_Q_NUMBER, CS_POS, solve_budget,
-       "barrier solves a run may make, per step to t_end on average (default 20); past it the run ends "
+       "barrier solves a run may make, per step to t_end on average (default 20), each worth 100 passes "
+       "over the barrier's unknowns in work (docs/theory.md, Bounded work); past either the run ends "
        "did_not_converge"),
     SC("max_steps", CS_Q_NUMBER, CS_POS | CS_NEW0, max_steps,
        "steps a run may take (default 10 million, which no sensible run reaches); past them the run ends "
