@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* libFuzzer harness of the engine: each input picks a valid design and attack (tests/design.h: two bytes
  * a value - cables, rope size, spacing, posts, dead-men, rails, vehicle size, speed, angle, impact point
- * - the generator after that), which is built and run to its end (0.15 s, under the run's solve and work
- * budgets: a design whose solves all fail ends did_not_converge by its work, in bounded time).
+ * - the generator after that), which is built and run to its end (0.15 s, under a tenth of the default
+ * solve and work budgets: a design whose solves all fail ends did_not_converge by its work, in bounded
+ * time).
  * The engine's contract: the model builds, the run ends either cleanly or with the ledger's own error
  * (past CS_LEDGER_FAILURE, naming the term), never another error, and every response is finite. A
  * broken contract aborts, so libFuzzer keeps the input.
@@ -19,6 +20,14 @@
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
+/* Each design runs on a tenth of the default solve budget (2 solves a step, and their work: 200 passes
+ * over the barrier's unknowns a step on average), so that a unit ends within libFuzzer's timeout under
+ * the sanitizers (10-20 times slower): the slow design kept in tests/fuzz-regressions/engine/ ends
+ * did_not_converge after about 0.3 s of CPU without them, 3 s with them, where the default budget takes
+ * 2 s and 28 s. Of 11,037 stress runs, 21 make 200 passes a step or more and end did_not_converge here,
+ * which keeps the contract; the others run as they would at the default. */
+#define FUZZ_SOLVE_BUDGET 2.0
+
 static void broken(const design *d, const char *what) {
     fprintf(stderr, "fuzz_engine: %s: %s\n", d->what, what);
     abort();
@@ -29,6 +38,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     design_source src = {0x5eed0000ULL, data, size, 0};
     design_make(-1, &src, &d);
     design_add_slip(&src, &d);
+    d.fx.scenario.solve_budget = FUZZ_SOLVE_BUDGET;
     cs_error err = {0};
     cs_model *m = cs_model_create(&d.fx.barrier, &d.fx.vehicle, &d.fx.scenario, &err);
     if (!m) broken(&d, err.message); /* every generated design is valid */
