@@ -34,8 +34,8 @@ struct cs_work {
 };
 
 /* The run's work is bounded by what it costs, not by its count of solves (docs/theory.md, The barrier
- * solve, "Bounded work"): once count.work passes the model's work_budget, every solve ends at its next
- * pass (Newton's iteration, a sweep) and the step under way is not taken (step.c). */
+ * solve, "Bounded work"): once count.work passes the model's work_budget, every solve ends with the
+ * Newton solve or sweep under way (barrier.c, relax.c) and the step under way is not taken (step.c). */
 static inline int cs_work_spent(const cs_model *model, const cs_work *w) {
     return w->count.work > model->work_budget;
 }
