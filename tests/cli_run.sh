@@ -149,13 +149,14 @@ check "another speed: another hash" 'grep -qE " [0-9a-f]{16} " <<<"$other" && ! 
 # Outcomes that say what happened: APS3's truck breaks through where the ropes' end fittings hold a quarter
 # of their strength, so its penetration is not given, only how far it had got (beyond), with its exit
 # speed; the library's PU at 40 mph stops, and its penetration is given. The failure events are listed;
-# the posts' hinges are counted, not listed.
+# the posts' hinges are counted, not listed. The truck strikes the middle of a symmetric barrier, so which
+# end's fitting lets go first is round-off's choice.
 "$cs" run examples/aps3.yaml -o "$tmp/through" --set "barrier.cables[0].termination_efficiency=0.25" \
     --set "barrier.cables[1].termination_efficiency=0.25" >"$tmp/through.out" 2>&1
 j="$tmp/through/summary.json"
 check "breakthrough: no penetration as such in summary.json" 'grep -q "\"outcome\":\"breakthrough\"" "$j" && grep -q "\"max_dynamic_penetration_m\":null," "$j" && grep -qE "\"penetration_beyond_m\":[0-9]" "$j" && grep -qE "\"exit_speed_mps\":[0-9]" "$j"'
 check "breakthrough: the terminal says beyond" 'grep -qE "^  penetration          beyond [0-9.]+ m \([0-9.]+ ft\): the vehicle got through$" "$tmp/through.out" && ! grep -q "max penetration" "$tmp/through.out"'
-check "breakthrough: the failure events, the breakthrough among them" 'grep -qE "^  failure events       [0-9]+, in order" "$tmp/through.out" && grep -qE "^ +[0-9.]+ s  termination_break +cable 0 at the start anchor$" "$tmp/through.out" && grep -qE "^ +[0-9.]+ s  breakthrough$" "$tmp/through.out"'
+check "breakthrough: the failure events, the breakthrough among them" 'grep -qE "^  failure events       [0-9]+, in order" "$tmp/through.out" && grep -qE "^ +[0-9.]+ s  termination_break +cable [01] at the (start|end) anchor$" "$tmp/through.out" && grep -qE "^ +[0-9.]+ s  breakthrough$" "$tmp/through.out"'
 hinges=$(grep -c ",post_hinge," "$tmp/through/events.csv")
 check "breakthrough: the $hinges post hinges counted, not listed" '[ "$hinges" -gt 0 ] && grep -q "^  posts yielding       $hinges plastic hinges at the base" "$tmp/through.out" && ! grep -q " post_hinge " "$tmp/through.out"'
 "$cs" run examples/aps3.yaml -o "$tmp/stops" --set vehicle=PU --set "scenario.speed=40 mph" >"$tmp/stops.out" 2>&1
