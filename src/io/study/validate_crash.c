@@ -133,8 +133,8 @@ void cs_validate_write_bogie(FILE *md, FILE *csv, cs_validate_suite *s) {
     fprintf(
         md,
         "## Bogie tests of %s posts in soil (paper, Table 2)\n\nThe %.0f-lb bogie strikes the post at "
-        "%g in; the post rotates in the soil at %.3g x Eq. 21 (S1 = %.0f psf, B = the %.3g-in flange; "
-        "%.3g the soil's dynamic factor) or hinges at Mp, and fails at 45 degrees, or pulls out earlier when "
+        "%g in; the post rotates in the soil at %.4g x Eq. 21 (S1 = %.0f psf, B = the %.3g-in flange; "
+        "%.4g the soil's dynamic factor) or hinges at Mp, and fails at 45 degrees, or pulls out earlier when "
         "the pull along the leaning post (push x sin(tilt)) reaches its skin friction q pi B D^2 / 2 "
         "(q = %.4g kPa/m). Energy absorbed = the bogie's loss of kinetic energy.\n\n"
         "**Calibration.** The dynamic factor and q are the model's two values fitted to these tests, "
