@@ -76,6 +76,15 @@ check "a cell that is not a number exits 2 at its place" '[ $? -eq 2 ] && grep -
 printf 'time [s],speed [mph]\n0,40\n0,39\n' >"$tmp/back.csv"
 out=$("$cs" compare "$tmp/a" --measured "$tmp/back.csv" -o "$tmp/bad3" 2>&1)
 check "time that does not grow exits 2" '[ $? -eq 2 ] && grep -q "back.csv:3:1: the time goes back or stands" <<<"$out"'
+# A measured history is read whole, from a regular file only: /dev/zero, which grew the reader to 8 GB, and a
+# FIFO, which blocked it, are refused at once (within the 10 s the test gives them).
+out=$(timeout 10 "$cs" compare "$tmp/a" --measured /dev/zero -o "$tmp/bad5" 2>&1)
+check "/dev/zero as the measured history is refused at once (exit 2)" \
+    '[ $? -eq 2 ] && grep -q "/dev/zero: a character device, not a regular file" <<<"$out" && [ ! -e "$tmp/bad5" ]'
+mkfifo "$tmp/fifo.csv"
+out=$(timeout 10 "$cs" compare "$tmp/a" --measured "$tmp/fifo.csv" -o "$tmp/bad6" 2>&1)
+check "a FIFO as the measured history is refused at once (exit 2)" \
+    '[ $? -eq 2 ] && grep -q "fifo.csv: a FIFO, not a regular file" <<<"$out" && [ ! -e "$tmp/bad6" ]'
 out=$("$cs" compare "$tmp/nothing" -o "$tmp/bad4" 2>&1)
 check "a missing run folder exits 2 with the system's reason" '[ $? -eq 2 ] && grep -q "nothing/summary.json: No such file or directory" <<<"$out"'
 out=$("$cs" compare "$tmp/a" --frobnicate 2>&1)
