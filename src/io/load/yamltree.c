@@ -90,7 +90,6 @@ static int add(cs_ytree *t, const frame *parent, cs_ykind kind, const yaml_event
         free(n.path), free(n.text), free(n.key);
         return -1;
     }
-    n.duplicate = cs_ytree_find(t, n.path) != NULL;
     t->items[t->count] = n;
     return t->count++;
 }
@@ -185,7 +184,29 @@ static void read_events(reader *r, yaml_parser_t *parser) {
     }
 }
 
-/* Link every node to its parent's list and every alias to its anchor's node. */
+/* Order of a map's entries by key, then by place in the file. */
+static int by_key(const void *a, const void *b) {
+    const cs_ynode *x = *(const cs_ynode *const *)a, *y = *(const cs_ynode *const *)b;
+    int c = strcmp(x->key, y->key);
+    return c ? c : (x < y ? -1 : x > y);
+}
+
+/* Mark each entry of a map whose key an earlier entry has (a key given twice): the entries sorted by key,
+ * so that a map of n keys costs n log n, not n^2. 0, or -1 when memory is short. */
+static int mark_duplicates(cs_ynode *map) {
+    if (map->count < 2) return 0;
+    cs_ynode **sorted = malloc((size_t)map->count * sizeof *sorted);
+    if (!sorted) return -1;
+    memcpy(sorted, map->kids, (size_t)map->count * sizeof *sorted);
+    qsort(sorted, (size_t)map->count, sizeof *sorted, by_key);
+    for (int i = 1; i < map->count; i++)
+        sorted[i]->duplicate = strcmp(sorted[i]->key, sorted[i - 1]->key) == 0;
+    free(sorted);
+    return 0;
+}
+
+/* Link every node to its parent's list, mark a map's keys given twice and every alias to its anchor's
+ * node. */
 static int link(reader *r) {
     cs_ytree *t = r->tree;
     if (t->count == 0) return 0;
@@ -202,6 +223,8 @@ static int link(reader *r) {
         cs_ynode *p = &t->items[t->items[i].parent];
         p->kids[p->count++] = &t->items[i];
     }
+    for (int i = 0; i < t->count; i++)
+        if (t->items[i].kind == CS_Y_MAP && mark_duplicates(&t->items[i]) != 0) return -1;
     for (int i = 0; i < t->count; i++) {
         cs_ynode *n = &t->items[i];
         for (int a = r->anchor_count - 1; n->kind == CS_Y_ALIAS && a >= 0 && !n->target; a--)
