@@ -5,7 +5,8 @@
  * The cables' generalised moment on the post is Q = sum z J^T F, J = da/dalpha (virtual work), and the
  * post resists with an elastic-plastic rotational spring: k (alpha - alpha_p) up to the capacity
  * M_cap, then rotation at constant moment (the plastic hinge of Eqs. 13-20, or the footing rotating
- * in the soil past Eq. 21). k = 3 E I / h is the cantilever of Eqs. 10-11 seen at the load height h.
+ * in the soil past Eq. 21). k is the cantilever of Eqs. 10-11 seen at the load height h in series with
+ * the footing's elastic turn in the soil (model.c, footing.c).
  * Whichever of post and footing holds the smaller pull at h yields: the post at Zx Fy about its base
  * (M_cap = Zx Fy), or the footing at P(h), turning about a pivot 2/3 of its depth down (M_cap = P(h) (h +
  * 2D/3) about that pivot, which may exceed Zx Fy while the base moment P h stays below it); the work goes
