@@ -108,14 +108,16 @@ static void test_runs_csv(void **state) {
         "events_termination_break,events_post_hinge,events_post_rotation_limit,events_post_shear,"
         "events_post_pullout,events_footing_rotation,events_anchor_pullout,events_anchor_yield,events_"
         "override,"
-        "events_underride,events_cable_release,events_termination_slip,events_post_withdrawal,error\n"
+        "events_underride,events_cable_release,events_termination_slip,events_post_withdrawal,events_post_"
+        "down,error\n"
         "0,17792.886461,SD-STD-02.01,stopped,M40/"
         "P2,0.5,3.25,0.125,1.23456789,,2.25,2.625,0.4375,,,0.003,2,3,0,"
         "38621.24685,1087776.709,-4.259510776e-05,1,0.002394143186,20.5,-3.25,1,0,0,2,0,0,0,0,0,0,0,0,0,0,0,"
+        "0,"
         "\n"
         "1,17792.886461,PU,breakthrough,PU40/P4,0.5,2.875,0.125,,4.03125,2.25,5.5,,13.75,22.5,,0,3,2,1500000,"
-        "1087776.709,0,1,0.002394143186,20.5,-3.25,1,2,0,0,0,0,0,0,0,0,0,1,0,0,0,\n"
-        "2,22241.1080763,SD-STD-02.01,failed,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"the solve "
+        "1087776.709,0,1,0.002394143186,20.5,-3.25,1,2,0,0,0,0,0,0,0,0,0,1,0,0,0,0,\n"
+        "2,22241.1080763,SD-STD-02.01,failed,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"the solve "
         "\"\"diverged\"\", "
         "at "
         "0.1 s\"\n";
@@ -169,8 +171,9 @@ static void test_runs_csv_read_back(void **state) {
     /* a quote not closed on line 6, column 3: the reader's own message, at its place */
     snprintf(bad, 2 * n + 64, "%s2,\"open\n", text);
     assert_int_equal(read_back(f, bad, back, why, sizeof why), -1);
-    assert_string_equal(why, "runs.csv:6:3: a quoted cell not closed (expected a closing \" before the end of "
-                             "the file)");
+    assert_string_equal(why,
+                        "runs.csv:6:3: a quoted cell not closed (expected a closing \" before the end of "
+                        "the file)");
     free(bad);
     free(text);
     snprintf(f->r[2].error, sizeof f->r[2].error, "the solve \"diverged\", at 0.1 s"); /* as setup made it */
@@ -497,10 +500,8 @@ static void test_plots(void **state) {
 
 int main(void) {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_runs_csv),
-        cmocka_unit_test(test_runs_csv_read_back),
-        cmocka_unit_test(test_runs_netcdf),
-        cmocka_unit_test(test_summary_responses),
+        cmocka_unit_test(test_runs_csv),    cmocka_unit_test(test_runs_csv_read_back),
+        cmocka_unit_test(test_runs_netcdf), cmocka_unit_test(test_summary_responses),
         cmocka_unit_test(test_plots),
     };
     int rc = cmocka_run_group_tests(tests, setup, teardown);

@@ -189,6 +189,34 @@ static void jacobian_with_rails(void **state) {
     assert_true(pulls >= 2 * 2); /* the intermediate anchor posts sliding out, at two checks at least */
 }
 
+/* And with a post down on the ground (post.c, the ground stop): APS3 as installed, line post 5 folded
+ * 0.02 rad past its lie angle along the barrier and across it, on its plastic cap (its set 0.2 rad short of
+ * the tilt), so the ground's stop and the cap's radial projection are both in its rows. */
+static void jacobian_with_a_post_down(void **state) {
+    (void)state;
+    fixture fx = {0};
+    fixture_aps3(&fx);
+    fx.barrier.cables = fx.cables, fx.barrier.posts = fx.posts;
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    cs_state *s = cs_state_create(m, &err);
+    assert_non_null(s);
+    cs_post_state *ps = &s->posts[5];
+    double lie = m->posts[5].lie_angle + 0.02, u[2] = {0.6, 0.8};
+    ps->tilt[0] = lie * u[0], ps->tilt[1] = lie * u[1];
+    ps->plastic[0] = (lie - 0.2) * u[0], ps->plastic[1] = (lie - 0.2) * u[1];
+    ps->tilt_commit[0] = ps->tilt[0], ps->tilt_commit[1] = ps->tilt[1];
+    ps->status = CS_POST_DOWN;
+    cs_post_place_nodes(m, s, 5, ps->tilt, NULL);
+    jac_check c = check_jacobian(m, s);
+    printf("post down: %d unknowns, largest difference %.2g of its row (row %d, column %d)\n", c.n, c.worst,
+           c.row, c.col);
+    assert_true(c.worst <= 1e-4);
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
 /* Returns how many rope ends slipping through their fittings were unknowns at the states checked. */
 static int check_along_the_crash(fixture *fx_in, int *pulls) {
     fixture fx = *fx_in;
@@ -365,6 +393,7 @@ static void the_step_after_a_jump_starts_where_the_barrier_is(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(the_installed_barrier_is_in_balance),
                                        cmocka_unit_test(jacobian_is_the_derivative_of_the_residual),
+                                       cmocka_unit_test(jacobian_with_a_post_down),
                                        cmocka_unit_test(jacobian_with_anchors_in_the_soil),
                                        cmocka_unit_test(jacobian_with_fittings_that_slip),
                                        cmocka_unit_test(jacobian_with_rails),

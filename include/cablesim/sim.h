@@ -115,7 +115,8 @@ typedef enum cs_event_type {
     CS_EVENT_TERMINATION_BREAK,   /**< a rope's end fitting lets go (value: that end span's tension, N;
                                        cable_end: which end) */
     CS_EVENT_POST_HINGE,          /**< a plastic hinge forms at a post's base (value: its capacity, N m) */
-    CS_EVENT_POST_ROTATION_LIMIT, /**< a post turns to its rotation limit: it is down (value: rad) */
+    CS_EVENT_POST_ROTATION_LIMIT, /**< a post the vehicle struck turns to its rotation limit: the vehicle
+                                     rides over it and it leaves the barrier (value: rad) */
     CS_EVENT_POST_SHEAR,          /**< a post shears at its base (value: shear, N) */
     CS_EVENT_POST_PULLOUT,        /**< a post is pulled out of the ground (value: pull, N) */
     CS_EVENT_FOOTING_ROTATION,    /**< a post's footing starts to turn in the soil (value: capacity, N m) */
@@ -133,7 +134,9 @@ typedef enum cs_event_type {
                                        tension, N; cable_end: which end) */
     CS_EVENT_POST_WITHDRAWAL,     /**< the ropes' pull along a post reaches its pullout capacity: it starts to
                                        slide out of its footing (value: that pull, N) */
-    CS_EVENT_TYPE_COUNT           /**< the number of event types */
+    CS_EVENT_POST_DOWN, /**< a post folded over by its ropes lies on the ground, its top at grade; it
+                             keeps the ropes threaded or clamped on it (value: its tilt, rad) */
+    CS_EVENT_TYPE_COUNT /**< the number of event types */
 } cs_event_type;
 
 /** The kind of element an event happened to. */
@@ -241,9 +244,10 @@ typedef enum cs_post_status {
     CS_POST_ELASTIC = 0,     /**< bending elastically */
     CS_POST_HINGED,          /**< plastic hinge at the base, rotating at Mp */
     CS_POST_SOIL,            /**< footing rotating in the soil at its capacity */
-    CS_POST_FAILED_ROTATION, /**< down: turned to its rotation limit */
-    CS_POST_FAILED_SHEAR,    /**< down: sheared at the base */
-    CS_POST_FAILED_PULLOUT   /**< down: pulled out of the ground */
+    CS_POST_FAILED_ROTATION, /**< out: struck by the vehicle and turned to its rotation limit */
+    CS_POST_FAILED_SHEAR,    /**< out: sheared at the base */
+    CS_POST_FAILED_PULLOUT,  /**< out: pulled out of the ground */
+    CS_POST_DOWN             /**< lying on the ground, its top at grade, still holding its ropes */
 } cs_post_status;
 
 /** A post now. */

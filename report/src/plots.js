@@ -233,7 +233,7 @@ function specs(data) {
   // 5, 6. the posts nearest the impact
   {
     const near = S.near_posts;
-    const failTypes = new Set(['post_rotation_limit', 'post_shear', 'post_pullout']);
+    const failTypes = new Set(['post_rotation_limit', 'post_down', 'post_shear', 'post_pullout']);
     const yieldTypes = new Set(['post_hinge', 'footing_rotation']);
     // a curve ends where its post fails: a failed post carries nothing
     const cut = (arr, p) => {

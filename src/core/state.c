@@ -127,6 +127,8 @@ const char *cs_post_status_name(cs_post_status st) {
         return "failed_shear";
     case CS_POST_FAILED_PULLOUT:
         return "failed_pullout";
+    case CS_POST_DOWN:
+        return "down";
     }
     return "unknown";
 }

@@ -37,7 +37,7 @@ double cs_attachment_slot_open(const cs_post_model *pm, double z) {
 int cs_attachment_check_release(const cs_model *model, cs_state *s, int p) {
     const cs_post_model *pm = &model->posts[p];
     const cs_post_state *ps = &s->posts[p];
-    if ((pm->attach != CS_ATTACH_SLOT && pm->attach != CS_ATTACH_HOOK) || !cs_post_standing(ps)) return 0;
+    if ((pm->attach != CS_ATTACH_SLOT && pm->attach != CS_ATTACH_HOOK) || !cs_post_in_barrier(ps)) return 0;
     double base[3], top[3], axis[3];
     cs_post_attachment(model, p, ps->tilt, ps->pull, 0.0, base);
     cs_post_attachment(model, p, ps->tilt, ps->pull, 1.0, top);

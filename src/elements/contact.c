@@ -263,7 +263,7 @@ void cs_contact_drop_failed(const cs_model *model, cs_state *s) {
             continue;
         }
         for (int i = cs->node_count - 2; i >= 1; i--)
-            if (cs->node[i] >= 0 && !cs_post_standing(&s->posts[cs->node[i]])) cs_cable_remove_node(cs, i);
+            if (cs->node[i] >= 0 && !cs_post_in_barrier(&s->posts[cs->node[i]])) cs_cable_remove_node(cs, i);
     }
 }
 
@@ -287,7 +287,7 @@ int cs_face_loaded(const cs_model *model, const cs_state *s) {
     for (int c = 0; c < model->cable_count; c++)
         if (s->cables[c].engaged && s->cables[c].status == CS_CABLE_INTACT) return 1;
     for (int p = 0; p < model->post_count; p++)
-        if (s->posts[p].captured && s->posts[p].pusher == CS_PUSH_FACE && cs_post_standing(&s->posts[p]))
+        if (s->posts[p].captured && s->posts[p].pusher == CS_PUSH_FACE && cs_post_in_barrier(&s->posts[p]))
             return 1;
     return 0;
 }
@@ -298,7 +298,7 @@ double cs_face_normal_force(const cs_model *model, const cs_state *s, const doub
     double ax[3][3], f[3] = {0.0, 0.0, 0.0}, mo[3] = {0.0, 0.0, 0.0}, pushed = 0.0;
     body_axes(s, ax);
     for (int p = 0; p < model->post_count; p++)
-        if (s->posts[p].captured && s->posts[p].pusher == CS_PUSH_FACE && cs_post_standing(&s->posts[p]))
+        if (s->posts[p].captured && s->posts[p].pusher == CS_PUSH_FACE && cs_post_in_barrier(&s->posts[p]))
             pushed += s->posts[p].push;
     double n = 0.0;
     if (pushed > 0.0) {

@@ -97,9 +97,11 @@ void cs_post_axis_at(const double *tilt, double *a);
 void cs_post_axis_jacobian(const double *tilt, double *j, double *dj);
 
 /* ---- posts and footings (post.c, footing.c) ---- */
-/* Still in the barrier: not fallen, sheared or pulled out. */
-static inline int cs_post_standing(const cs_post_state *ps) {
-    return ps->status == CS_POST_ELASTIC || ps->status == CS_POST_HINGED || ps->status == CS_POST_SOIL;
+/* Still in the barrier: standing, or down on the ground with its ropes; not ridden over, sheared or pulled
+ * out. */
+static inline int cs_post_in_barrier(const cs_post_state *ps) {
+    return ps->status == CS_POST_ELASTIC || ps->status == CS_POST_HINGED || ps->status == CS_POST_SOIL ||
+           ps->status == CS_POST_DOWN;
 }
 /* The arm of post p's point at height z from its pivot along its axis: z + pivot depth + its pull. */
 static inline double cs_post_arm(const cs_model *model, const cs_state *s, int p, double z) {
@@ -132,8 +134,8 @@ double cs_post_elastic_energy(const cs_model *model, const cs_state *s, int post
 double cs_post_kinetic_energy(const cs_model *model, const cs_state *s, int post);
 int cs_post_held(const cs_model *model, const cs_state *s, int post);
 int cs_post_check_failure(const cs_model *model, cs_state *s, int post);
-/* How far a standing post folds before it is down: a post carrying ropes until its top reaches grade
- * (lie_angle), a struck post to its rotation limit, where the vehicle's edge rides over it; rad. */
+/* How far a standing post folds: a post carrying ropes until its top reaches grade (lie_angle), where the
+ * ground stops it, a struck post to its rotation limit, where the vehicle's edge rides over it; rad. */
 double cs_post_fold_limit(const cs_post_model *pm, const cs_post_state *ps);
 /* The residual at a tilt, the post's cable nodes where they stand (the caller places them; chords, axis
  * and rails as formed by the placement, or NULL: found here). */

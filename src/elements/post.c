@@ -54,6 +54,34 @@ void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const 
     q[0] = tr[0] * f, q[1] = tr[1] * f;
 }
 
+/* The ground under a post folded down: past the tilt at which its top reaches grade (lie_angle) the top
+ * bears on the ground, a one-sided stop `Q_g = k_g (|alpha| - lie) u` against the turn, stiff enough that
+ * the post's own capacity presses it CS_GROUND_STOP_TURN past (k_g = M_cap / that turn). The ground, not
+ * the base, carries it: it is not in the base moment or shear. A struck post never reaches it (it leaves
+ * at its rotation limit). */
+#define CS_GROUND_STOP_TURN 0.01 /* rad */
+static double ground_stiffness(const cs_post_model *pm) {
+    return pm->moment_cap / CS_GROUND_STOP_TURN;
+}
+
+/* The stop's moment at a tilt (added to q), and, if k is not NULL, its derivative (2 x 2, subtracted
+ * from k as the residual's); returns its penetration past the lie angle, rad (0 if clear). */
+static double ground_stop(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double *q,
+                          double *k) {
+    double n = v2_norm(tilt[0], tilt[1]);
+    if (ps->captured || !(n > pm->lie_angle)) return 0.0;
+    double kg = ground_stiffness(pm), u[2] = {tilt[0] / n, tilt[1] / n}, over = n - pm->lie_angle;
+    q[0] += kg * over * u[0], q[1] += kg * over * u[1];
+    if (k) { /* d(kg (n - lie) u)/dalpha = kg (u u^T + (1 - lie / n)(I - u u^T)) */
+        double a = 1.0 - pm->lie_angle / n;
+        k[0] -= kg * (u[0] * u[0] + a * (1.0 - u[0] * u[0]));
+        k[1] -= kg * (1.0 - a) * u[0] * u[1];
+        k[2] -= kg * (1.0 - a) * u[0] * u[1];
+        k[3] -= kg * (u[1] * u[1] + a * (1.0 - u[1] * u[1]));
+    }
+    return over;
+}
+
 /* The swing: a post of inertia J about its pivot (model.c) goes, over the time h since the last
  * commit, by backward Euler,
  *   J (alpha - alpha_c - h w_c) / h^2 = Q_cables - Q_resist,   w = (alpha - alpha_c) / h,
@@ -119,10 +147,12 @@ static void resistance_slope(const cs_model *model, const cs_state *s, int p, do
         k[0] = k[3] = -pm->k_rot, k[1] = k[2] = 0.0;
     }
     if (cs_post_swings(pm, s->h)) k[0] -= pm->inertia / (s->h * s->h), k[3] -= pm->inertia / (s->h * s->h);
+    double unused[2] = {0.0, 0.0};
+    ground_stop(pm, ps, ps->tilt, unused, k);
 }
 
 /* Residual of post p at a tilt, its cable nodes placed there and their tensions current:
- * r = Q_cables - Q_resist, less the swing's inertial moment. */
+ * r = Q_cables - Q_resist - Q_ground, less the swing's inertial moment. */
 void cs_post_residual_at(const cs_model *model, const cs_state *s, int p, const double *tilt,
                          const double *chords, const double *axis, const double *rails, double *r) {
     double own[6], q[2] = {0.0, 0.0};
@@ -144,6 +174,7 @@ void cs_post_residual_at(const cs_model *model, const cs_state *s, int p, const 
         cs_rail_moment(model, s, p, tilt, j, q);
     double res[2];
     cs_post_resistance(&model->posts[p], &s->posts[p], tilt, res);
+    ground_stop(&model->posts[p], &s->posts[p], tilt, res, NULL);
     r[0] = q[0] - res[0], r[1] = q[1] - res[1];
     subtract_inertia(&model->posts[p], &s->posts[p], tilt, s->h, r);
 }
@@ -158,7 +189,7 @@ static void residual_now(const cs_model *model, const cs_state *s, int p, const 
 /* End of step: plastic rotation (radial return) and its work, base shear and axial pull. */
 void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     cs_post_state *ps = &s->posts[p];
-    if (!cs_post_standing(ps)) return;
+    if (!cs_post_in_barrier(ps)) return;
     const cs_post_model *pm = &model->posts[p];
     commit_swing(model, s, p);
     double tr[2] = {pm->k_rot * (ps->tilt[0] - ps->plastic[0]), pm->k_rot * (ps->tilt[1] - ps->plastic[1])};
@@ -199,24 +230,29 @@ double cs_post_fold_limit(const cs_post_model *pm, const cs_post_state *ps) {
     return ps->captured ? pm->rot_limit : pm->lie_angle;
 }
 
-/* Failure of a standing post: folded down to its limit (cs_post_fold_limit), base shear, pullout: a struck
- * post at once at its capacity (the bogie tests'), a post the ropes pull out once it has slid all the way
- * out (post_pullout.c; its slide starts here). Returns 1 if it failed. */
+/* Failure of a post in the barrier: a struck post turned to its rotation limit, base shear, pullout: a
+ * struck post at once at its capacity (the bogie tests'), a post the ropes pull out once it has slid all the
+ * way out (post_pullout.c; its slide starts here). A post the ropes fold down to grade lies there and keeps
+ * them (*post_down*, once). Returns 1 if it failed. */
 int cs_post_check_failure(const cs_model *model, cs_state *s, int p) {
     cs_post_state *ps = &s->posts[p];
-    if (!cs_post_standing(ps)) return 0;
+    if (!cs_post_in_barrier(ps)) return 0;
     const cs_post_model *pm = &model->posts[p];
     double tilt = v2_norm(ps->tilt[0], ps->tilt[1]), cap = cs_post_pull_cap(pm, ps);
     cs_post_status st;
     cs_event_type ev;
     double value;
-    if (tilt >= cs_post_fold_limit(pm, ps)) {
+    if (ps->captured && tilt >= cs_post_fold_limit(pm, ps)) {
         st = CS_POST_FAILED_ROTATION, ev = CS_EVENT_POST_ROTATION_LIMIT, value = tilt;
     } else if (ps->shear >= pm->shear_cap) {
         st = CS_POST_FAILED_SHEAR, ev = CS_EVENT_POST_SHEAR, value = ps->shear;
     } else if ((ps->captured && ps->axial >= cap) || (ps->withdrawing && !(cap > 0.0))) {
         st = CS_POST_FAILED_PULLOUT, ev = CS_EVENT_POST_PULLOUT, value = ps->axial;
     } else {
+        if (ps->status != CS_POST_DOWN && tilt >= cs_post_fold_limit(pm, ps)) {
+            ps->status = CS_POST_DOWN;
+            cs_event_add(model, s, CS_EVENT_POST_DOWN, CS_ELEMENT_POST, p, tilt);
+        }
         cs_post_pull_start(model, s, p);
         return 0;
     }
@@ -228,16 +264,18 @@ int cs_post_check_failure(const cs_model *model, cs_state *s, int p) {
 /* The elastic energy of the post's spring. */
 double cs_post_elastic_energy(const cs_model *model, const cs_state *s, int p) {
     const cs_post_state *ps = &s->posts[p];
-    if (!cs_post_standing(ps)) return 0.0;
-    double q[2];
+    if (!cs_post_in_barrier(ps)) return 0.0;
+    double q[2], g[2] = {0.0, 0.0};
     cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
-    return 0.5 * (q[0] * q[0] + q[1] * q[1]) / model->posts[p].k_rot + cs_post_pull_energy(model, s, p);
+    double over = ground_stop(&model->posts[p], ps, ps->tilt, g, NULL);
+    return 0.5 * (q[0] * q[0] + q[1] * q[1]) / model->posts[p].k_rot +
+           0.5 * ground_stiffness(&model->posts[p]) * over * over + cs_post_pull_energy(model, s, p);
 }
 
 /* The kinetic energy of its swing, at the rate of the last commit. */
 double cs_post_kinetic_energy(const cs_model *model, const cs_state *s, int p) {
     const cs_post_state *ps = &s->posts[p];
-    if (!cs_post_standing(ps)) return 0.0;
+    if (!cs_post_in_barrier(ps)) return 0.0;
     return 0.5 * model->posts[p].inertia * (ps->rate[0] * ps->rate[0] + ps->rate[1] * ps->rate[1]) +
            cs_post_pull_kinetic_energy(model, s, p);
 }
@@ -329,7 +367,7 @@ double cs_post_place_captured(const cs_model *model, cs_state *s, double crush) 
     double total = 0.0;
     for (int p = 0; p < model->post_count; p++) {
         cs_post_state *ps = &s->posts[p];
-        if (!ps->captured || !cs_post_standing(ps)) continue;
+        if (!ps->captured || !cs_post_in_barrier(ps)) continue;
         double q[2], f[3];
         double th = captured_lean(model, ps, p, s->pos, s->quat, crush, ps->tilt, f);
         cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
@@ -354,7 +392,7 @@ void cs_post_captured_force(const cs_model *model, const cs_state *s, double cru
                             double *force, double *moment) {
     for (int p = 0; p < model->post_count; p++) {
         const cs_post_state *ps = &s->posts[p];
-        if (!ps->captured || !cs_post_standing(ps) || !(ps->push > 0.0)) continue;
+        if (!ps->captured || !cs_post_in_barrier(ps) || !(ps->push > 0.0)) continue;
         if (face_only && ps->pusher != CS_PUSH_FACE) continue;
         double q[2];
         cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
@@ -416,7 +454,7 @@ int cs_post_capture(const cs_model *model, cs_state *s) {
     int any = 0;
     for (int p = 0; p < model->post_count; p++) {
         cs_post_state *ps = &s->posts[p];
-        if (ps->captured || !cs_post_standing(ps)) continue;
+        if (ps->captured || !cs_post_in_barrier(ps)) continue;
         double top[3], rel[3], b[3];
         cs_post_attachment(model, p, ps->tilt, ps->pull, zb, top);
         v3_sub(rel, o, top);

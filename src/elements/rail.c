@@ -23,7 +23,7 @@
 static int segment_acts(const cs_model *model, const cs_state *s, int k) {
     if (k < 0 || k + 1 >= model->post_count) return 0;
     const cs_post_state *a = &s->posts[k], *b = &s->posts[k + 1];
-    return cs_post_standing(a) && cs_post_standing(b) && !a->captured && !b->captured;
+    return cs_post_in_barrier(a) && cs_post_in_barrier(b) && !a->captured && !b->captured;
 }
 
 /* Segment k of rail r with its posts at tilts ta and tb: the force on post k (N u), the force N, the

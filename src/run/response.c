@@ -279,7 +279,7 @@ void cs_response_update(const cs_model *model, cs_state *s) {
     if (pen > sm->max_dynamic_penetration_m) sm->max_dynamic_penetration_m = pen;
     sm->working_width_m = fmax(sm->working_width_m, vehicle_reach(model, s));
     for (int p = 0; p < model->post_count; p++) {
-        if (!cs_post_standing(&s->posts[p])) continue;
+        if (!cs_post_in_barrier(&s->posts[p])) continue;
         double top[3];
         cs_post_attachment(model, p, s->posts[p].tilt, s->posts[p].pull, model->posts[p].height, top);
         sm->working_width_m = fmax(sm->working_width_m, top[1]);
@@ -287,7 +287,7 @@ void cs_response_update(const cs_model *model, cs_state *s) {
 
     int engaged = 0, intact = 0; /* a struck post still standing and bearing holds the vehicle like a cable */
     for (int p = 0; p < model->post_count; p++)
-        engaged += s->posts[p].captured && cs_post_standing(&s->posts[p]) && s->posts[p].bearing;
+        engaged += s->posts[p].captured && cs_post_in_barrier(&s->posts[p]) && s->posts[p].bearing;
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
         intact += cs->status == CS_CABLE_INTACT;
@@ -305,15 +305,15 @@ void cs_response_update(const cs_model *model, cs_state *s) {
     sm->posts_failed_shear_left = sm->posts_failed_shear_right = 0;
     sm->posts_failed_pullout_left = sm->posts_failed_pullout_right = 0;
     for (int p = 0; p < model->post_count; p++) {
-        cs_post_status st = s->posts[p].status;
-        if (cs_post_standing(&s->posts[p])) continue;
+        cs_post_status st = s->posts[p].status; /* a post down on the ground has failed, its ropes kept */
+        if (cs_post_in_barrier(&s->posts[p]) && st != CS_POST_DOWN) continue;
         int right = model->posts[p].x >= model->scenario.impact_x;
         if (right)
             sm->posts_failed_right++;
         else
             sm->posts_failed_left++;
         *(right ? &sm->posts_failed_rotation_right : &sm->posts_failed_rotation_left) +=
-            st == CS_POST_FAILED_ROTATION;
+            st == CS_POST_FAILED_ROTATION || st == CS_POST_DOWN;
         *(right ? &sm->posts_failed_shear_right : &sm->posts_failed_shear_left) += st == CS_POST_FAILED_SHEAR;
         *(right ? &sm->posts_failed_pullout_right : &sm->posts_failed_pullout_left) +=
             st == CS_POST_FAILED_PULLOUT;

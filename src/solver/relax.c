@@ -190,7 +190,7 @@ static void entry_material(const cs_model *model, const cs_state *s, int p, doub
  * tilting further adds more moment than it takes. A real post swings the way the unbalanced moment
  * turns it until the moment balances again. Follow that: steps of CS_FALL_STEP along the residual
  * (re-aimed at each step) until it turns back, then bisect the last step to where it vanishes; no
- * further than the rotation limit, where a post still unbalanced fails at the next check. The energy
+ * further than its fold limit (cs_post_fold_limit: the ground, for a post carrying ropes). The energy
  * the ropes give up on the way beyond what the post and friction take is what the step's ledger
  * books as released (step.c). */
 #define CS_FALL_STEP 0.01  /* rad */
@@ -228,7 +228,7 @@ static double fall(const cs_model *model, cs_state *s, int p, const double *m_en
  * residual found on entry. */
 double cs_relax_post(const cs_model *model, cs_state *s, int p, double tol, int may_fall) {
     cs_post_state *ps = &s->posts[p];
-    if (!cs_post_standing(ps) || ps->captured || cs_post_held(model, s, p)) return 0.0;
+    if (!cs_post_in_barrier(ps) || ps->captured || cs_post_held(model, s, p)) return 0.0;
     const cs_post_model *pm = &model->posts[p];
     double scale = pm->moment_scale, r[2], m_entry[CS_MAX_CABLES_PER_POST];
     double *al = ps->tilt;
@@ -461,7 +461,8 @@ double cs_relax(const cs_model *model, cs_state *s, int sweeps, int may_fall) {
             if (cs->status != CS_CABLE_INTACT || !cs->engaged) continue;
             for (int i = 1; i + 1 < cs->node_count; i++) {
                 if (!cs_node_is_corner(cs->node[i])) continue;
-                worst = fmax(worst, solve_height(model, s, c, i, cs_node_corner(cs->node[i]), sc->solver_tolerance));
+                worst = fmax(worst,
+                             solve_height(model, s, c, i, cs_node_corner(cs->node[i]), sc->solver_tolerance));
                 problems++;
             }
         }

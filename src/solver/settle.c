@@ -34,7 +34,7 @@ typedef struct settle {
 } settle;
 
 static int solved(const cs_state *s, int p) {
-    return cs_post_standing(&s->posts[p]) && !s->posts[p].captured;
+    return cs_post_in_barrier(&s->posts[p]) && !s->posts[p].captured;
 }
 
 static void place(void *ctx, const double *x) {

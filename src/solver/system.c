@@ -102,7 +102,7 @@ static int slot_order(const void *pa, const void *pb) {
 
 static int post_on_path(const cs_model *model, const cs_state *s, int p) {
     const cs_post_state *ps = &s->posts[p];
-    if (!cs_post_standing(ps) || ps->captured || cs_post_held(model, s, p)) return 0;
+    if (!cs_post_in_barrier(ps) || ps->captured || cs_post_held(model, s, p)) return 0;
     for (int c = 0; c < model->cable_count; c++)
         if (s->cables[c].status == CS_CABLE_INTACT && s->cables[c].where[p] > 0) return 1;
     return 0;
