@@ -32,17 +32,31 @@ demo:
 designer: build
 	$(BUILD)/cablesim designer examples/aps3.yaml -o results/aps3-designer
 
-# The suite, then the same suite under AddressSanitizer + UBSan, then each fuzzer for FUZZ_SECONDS.
+# The whole suite, then the sanitized suite, then each fuzzer for FUZZ_SECONDS (docs/testing.md: what each
+# part runs).
 test: build
 	ctest --test-dir $(BUILD) --output-on-failure -j $(JOBS)
 	$(MAKE) --no-print-directory sanitize
 	$(MAKE) --no-print-directory fuzz
 
+# The sanitized suite: clang's AddressSanitizer + UBSan (Debug, $(SAN_BUILD)/), LeakSanitizer on, over the C
+# code: every unit test (ctest label unit) and every shell test of the command (label script). Under the
+# sanitizers a script runs its representative case of each kind of run (a run, a sweep, a stop and resume,
+# validate's parts, a comparison...) and leaves the repeats of that kind to the plain suite
+# (CS_TEST_SANITIZED=1, tests/lib.sh's plain_only): the sanitizers find a memory error on the path a case
+# takes, not on its hundredth repeat. Left to the plain suite: the pages in the browser, the installed tree
+# and Debian packages, and the API reference (labels browser, install, docs), whose code is JavaScript,
+# CMake, debhelper and Doxygen's. It builds only what it runs (the target test_programs) and compiles the
+# report and designer pages $(BUILD) made (CS_PAGES_FROM) rather than making them again.
+SAN_BUILD ?= build-asan
 sanitize: deps
-	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DCS_SANITIZE=ON -DCMAKE_C_COMPILER=clang
-	cmake --build build-asan -j $(JOBS)
+	@[ -f $(BUILD)/CMakeCache.txt ] || $(MAKE) --no-print-directory configure
+	cmake --build $(BUILD) -j $(JOBS) --target pages
+	cmake -S . -B $(SAN_BUILD) -DCMAKE_BUILD_TYPE=Debug -DCS_SANITIZE=ON -DCMAKE_C_COMPILER=clang \
+	  -DCS_PAGES_FROM=$(abspath $(BUILD))
+	cmake --build $(SAN_BUILD) -j $(JOBS) --target test_programs
 	ASAN_OPTIONS=detect_leaks=1 LSAN_OPTIONS=suppressions=$(CURDIR)/fuzz/lsan.supp \
-	  ctest --test-dir build-asan --output-on-failure -j $(JOBS)
+	  ctest --test-dir $(SAN_BUILD) --output-on-failure -j $(JOBS) -L '^(unit|script)$$'
 
 # libFuzzer, each target built with ASan + UBSan + coverage and run for FUZZ_SECONDS:
 # - fuzz/fuzz_loader.c, the model loader: seeded at run time from examples/, tests/good/, tests/bad/ (also
@@ -56,7 +70,7 @@ sanitize: deps
 FUZZ_CFLAGS = -std=c17 -Wall -Wextra -Wpedantic -Werror -O1 -g -fno-omit-frame-pointer -fno-sanitize-recover=all \
   -fsanitize=fuzzer,address,undefined -Iinclude -Isrc -Isrc/io -Itests -DCS_SOURCE_DIR='"$(CURDIR)"'
 FUZZ_LIBS = $(FUZZ_BUILD)/libcablesim.a $$(pkg-config --libs yaml-0.1 json-c) -ludunits2 -lm -ldl
-FUZZ_SET_CS = $(if $(wildcard build-asan/cablesim),build-asan/cablesim,$(BUILD)/cablesim)
+FUZZ_SET_CS = $(if $(wildcard $(SAN_BUILD)/cablesim),$(SAN_BUILD)/cablesim,$(BUILD)/cablesim)
 FUZZ_RUN = LSAN_OPTIONS=suppressions=$(CURDIR)/fuzz/lsan.supp
 FUZZ_FLAGS = -max_total_time=$(FUZZ_SECONDS) -timeout=20 -print_final_stats=1 -artifact_prefix=$(FUZZ_BUILD)/artifacts/
 
@@ -122,4 +136,4 @@ format:
 	clang-format -i include/cablesim/*.h src/*/*.c src/*/*.h src/io/*/*.c src/io/*/*.h app/*.c tests/*.c tests/*.h examples/*.c examples/*/*.c fuzz/*.c 2>/dev/null || true
 
 clean:
-	rm -rf $(BUILD) build-asan $(FUZZ_BUILD) $(PIN_GLIBC)
+	rm -rf $(BUILD) $(SAN_BUILD) $(FUZZ_BUILD) $(PIN_GLIBC)
