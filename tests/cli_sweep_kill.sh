@@ -16,10 +16,12 @@ kill_when() {
     kill -KILL "$pid" 2>/dev/null
     wait "$pid" 2>/dev/null
 }
-# 30 runs of 150 ms of APS3 (0.01-0.04 s each on one thread): the kill comes once 5 rows are journalled
-spec=(--allow-path examples tests/sweep/mc.yaml --runs 30 --t-end "150 ms")
+# 30 runs of 150 ms of APS3 (0.01-0.04 s each on one thread; 12 under the sanitizers, about five times as
+# slow): the kill comes once 5 rows are journalled
+n=$(repeats 30 12 "runs a sweep")
+spec=(--allow-path examples tests/sweep/mc.yaml --runs "$n" --t-end "150 ms")
 "$cs" sweep "${spec[@]}" -o "$tmp/whole" --quiet >/dev/null 2>&1
-check "the whole sweep: runs.csv of 30 runs, no journal left" '[ "$(wc -l <"$tmp/whole/runs.csv")" -eq 31 ] && [ ! -e "$tmp/whole/.cablesim-journal" ]'
+check "the whole sweep: runs.csv of $n runs, no journal left" '[ "$(wc -l <"$tmp/whole/runs.csv")" -eq $((n + 1)) ] && [ ! -e "$tmp/whole/.cablesim-journal" ]'
 
 "$cs" sweep "${spec[@]}" -o "$tmp/killed" --threads 1 --quiet >/dev/null 2>&1 &
 pid=$!
@@ -27,7 +29,7 @@ journal="$tmp/killed/.cablesim-journal"
 kill_when "$tmp/killed" 7 # the record, the header, 5 runs
 check "kill -9: the sweep died by SIGKILL (exit 137)" '[ $? -eq 137 ]'
 rows=$(($(wc -l <"$journal") - 2))
-check "kill -9: the journal holds the runs done ($rows of 30), no outputs" '[ "$rows" -ge 5 ] && [ "$rows" -lt 30 ] && [ ! -e "$tmp/killed/runs.csv" ] && head -1 "$journal" | grep -q "^{\"cablesim\":{\"version\":.*\"partial\":true,\"inputs_hash\":\"[0-9a-f]\{16\}\",\"resume\":{\"spec\":"'
+check "kill -9: the journal holds the runs done ($rows of $n), no outputs" '[ "$rows" -ge 5 ] && [ "$rows" -lt "$n" ] && [ ! -e "$tmp/killed/runs.csv" ] && head -1 "$journal" | grep -q "^{\"cablesim\":{\"version\":.*\"partial\":true,\"inputs_hash\":\"[0-9a-f]\{16\}\",\"resume\":{\"spec\":"'
 out=$("$cs" sweep --resume "$tmp/killed" 2>&1)
 check "--resume after kill -9: exit 0, the journalled runs read back" '[ $? -eq 0 ] && grep -qF "sweep: $rows runs read back from" <<<"$out" || { echo "$out"; false; }'
 check "--resume after kill -9: runs.csv byte for byte the whole sweep's" 'cmp "$tmp/killed/runs.csv" "$tmp/whole/runs.csv"'

@@ -13,13 +13,23 @@ finish() {
     echo "$pass passed, $fail failed"
     [ "$fail" -eq 0 ]
 }
-# `plain_only WHAT` is true in the plain suite; under the sanitizers (CS_TEST_SANITIZED=1, which CMake
-# sets on the shell tests of a CS_SANITIZE build) it is false and says what the script leaves to the plain
-# suite: there a script runs its representative cases under ASan and UBSan, not every repeat of them.
+# Under the sanitizers (CS_TEST_SANITIZED=1, which CMake sets on the shell tests of a CS_SANITIZE build) a
+# script runs its representative case of each kind, not every repeat of it (docs/testing.md), and says in
+# its log what it leaves to the plain suite. `plain_only WHAT` is true in the plain suite, false there.
 plain_only() {
     [ -z "${CS_TEST_SANITIZED:-}" ] && return 0
     echo "sanitized build: left to the plain suite: $1"
     return 1
+}
+# `repeats N FEW WHAT` prints N in the plain suite, FEW under the sanitizers: the number of like runs (WHAT)
+# a case makes.
+repeats() {
+    if [ -z "${CS_TEST_SANITIZED:-}" ]; then
+        echo "$1"
+    else
+        echo "sanitized build: $2 $3, not the plain suite's $1" >&2
+        echo "$2"
+    fi
 }
 
 # expect_problems FILE OUTPUT STATUS: the command refused FILE (status 2) and reported exactly the
