@@ -44,10 +44,11 @@ test: build
 # sanitizers a script runs its representative case of each kind of run (a run, a sweep, a stop and resume,
 # validate's parts, a comparison...) and leaves the repeats of that kind to the plain suite
 # (CS_TEST_SANITIZED=1, tests/lib.sh's plain_only): the sanitizers find a memory error on the path a case
-# takes, not on its hundredth repeat. Left to the plain suite: the pages in the browser, the installed tree
-# and Debian packages, and the API reference (labels browser, install, docs), whose code is JavaScript,
-# CMake, debhelper and Doxygen's. It builds only what it runs (the target test_programs) and compiles the
-# report and designer pages $(BUILD) made (CS_PAGES_FROM) rather than making them again.
+# takes, not on its hundredth repeat. Left to the plain suite: the checks of the source tree, the pages in
+# the browser, the installed tree and Debian packages, and the API reference (labels source, browser,
+# install, docs), which run no C of this project's or run it as the scripts do. It builds only what it
+# runs (the target test_programs) and compiles the report and designer pages $(BUILD) made (CS_PAGES_FROM)
+# rather than making them again.
 SAN_BUILD ?= build-asan
 sanitize: deps
 	@[ -f $(BUILD)/CMakeCache.txt ] || $(MAKE) --no-print-directory configure
