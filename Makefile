@@ -6,7 +6,8 @@ DEMO_OUT ?= results/aps3
 FUZZ_SECONDS ?= 60
 FUZZ_BUILD ?= build-fuzz
 
-.PHONY: all deps configure build demo designer test sanitize fuzz fuzz-build pin bench docs package format clean
+.PHONY: all deps configure build demo designer test sanitize fuzz fuzz-build fuzz-seeds fuzz-loader fuzz-engine \
+  fuzz-sweep fuzz-set pin bench docs package format clean
 
 all: build
 
@@ -82,7 +83,15 @@ fuzz-build: deps
 	for t in loader engine sweep; do \
 	  clang $(FUZZ_CFLAGS) fuzz/fuzz_$$t.c $(FUZZ_LIBS) -o $(FUZZ_BUILD)/fuzz_$$t || exit 1; done
 
+# The four fuzzers, FUZZ_JOBS at a time (by default as many as the cores): each runs FUZZ_SECONDS of wall
+# time whatever runs beside it; make prints each one's log whole when it ends (--output-sync).
+FUZZ_JOBS ?= $(JOBS)
+FUZZ_RUNS = fuzz-loader fuzz-engine fuzz-sweep fuzz-set
+
 fuzz: fuzz-build
+	$(MAKE) --no-print-directory --output-sync=target -j $(FUZZ_JOBS) $(FUZZ_RUNS)
+
+fuzz-seeds:
 	rm -rf $(FUZZ_BUILD)/seeds $(FUZZ_BUILD)/seeds-sweep
 	mkdir -p $(FUZZ_BUILD)/seeds $(FUZZ_BUILD)/seeds-sweep $(FUZZ_BUILD)/artifacts
 	mkdir -p $(FUZZ_BUILD)/corpus-loader $(FUZZ_BUILD)/corpus-engine $(FUZZ_BUILD)/corpus-sweep
@@ -94,11 +103,19 @@ fuzz: fuzz-build
 	cp examples/aps3-uncertain.yaml $(FUZZ_BUILD)/seeds-sweep/
 	sed 's|^model: design.yaml|model: roadside/design.yaml|' examples/roadside/spacing-study.yaml \
 	  > $(FUZZ_BUILD)/seeds-sweep/spacing-study.yaml
+
+fuzz-loader: fuzz-seeds
 	$(FUZZ_RUN) $(FUZZ_BUILD)/fuzz_loader $(FUZZ_FLAGS) -dict=fuzz/loader.dict \
 	  $(FUZZ_BUILD)/corpus-loader $(FUZZ_BUILD)/seeds $(wildcard tests/fuzz-regressions)
+
+fuzz-engine: fuzz-seeds
 	$(FUZZ_RUN) $(FUZZ_BUILD)/fuzz_engine $(FUZZ_FLAGS) $(FUZZ_BUILD)/corpus-engine tests/fuzz-regressions/engine
+
+fuzz-sweep: fuzz-seeds
 	$(FUZZ_RUN) $(FUZZ_BUILD)/fuzz_sweep $(FUZZ_FLAGS) -dict=fuzz/loader.dict \
 	  $(FUZZ_BUILD)/corpus-sweep $(FUZZ_BUILD)/seeds-sweep
+
+fuzz-set: fuzz-seeds
 	$(FUZZ_RUN) bash fuzz/fuzz_set.sh $(FUZZ_SET_CS) $(FUZZ_SECONDS)
 
 # The pinned runs, rewritten from this engine: the one way to change them (tests/example.h). Built with
