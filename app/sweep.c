@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* cablesim sweep: the command line into the study's def, then the study run by the library
  * (cablesim/sweep.h) on this process's OpenMP threads and, in cablesim-mpi, on the ranks of MPI through
- * the library's study with the ranks' hooks (study/sweepstudy.h; app/sweep_mpi.c sends each finished run
- * to rank 0, which journals it). */
+ * the def's ranks (app/sweep_mpi.c's hooks send each finished run to rank 0, which journals it).
+ * `cablesim check SPEC`: the study checked by the library, nothing run. */
 #include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -19,12 +19,9 @@
 
 #include "cablesim/cablesim.h"
 #include "cli.h"
-#include "study/sweepstudy.h"
 #include "sweepcmd.h"
 
 enum { EXIT_RUN = CS_EXIT_RUN, EXIT_BAD = CS_EXIT_USAGE };
-_Static_assert((int)CS_SWEEP_EXIT_RUN == (int)CS_EXIT_RUN && (int)CS_SWEEP_EXIT_USAGE == (int)CS_EXIT_USAGE,
-               "the study returns the command's exit statuses");
 
 static const char sweep_usage[] =
     "Usage: cablesim sweep SPEC.yaml [-o DIR] [--threads N] [--runs N] [--seed S] [--set PATH=VALUE]...\n"
@@ -200,33 +197,30 @@ int cs_sweep_check_wanted(int argc, char **argv) {
     return f && cs_sweep_is_spec(f);
 }
 
+/* The exit status of a study's outcome: 0 done, 128 + the signal that stopped it, 2 a bad spec, 1 else. */
+static int exit_status(cs_status st, const cs_sweep *study) {
+    return st == CS_OK            ? (cs_sweep_stopped_by(study) ? 128 + cs_sweep_stopped_by(study) : 0)
+           : st == CS_ERR_INVALID ? EXIT_BAD
+                                  : EXIT_RUN;
+}
+
 int cs_sweep_check_command(int argc, char **argv) {
     static sweep_args a;
-    static cs_sweep_options o;
     memset(&a, 0, sizeof a);
     int rc = parse_opts(argc, argv, &a, 0);
     if (rc != 0) return rc < 0 ? 0 : rc;
+    cs_sweep *study = NULL;
     cs_error err;
-    if (cs_sweep_options_of(&a.def, &o, &err) != CS_OK) {
-        fprintf(stderr, "cablesim check: %s\n", err.message);
-        return EXIT_BAD;
-    }
-    cs_sweep_spec *spec = cs_sweep_study_spec(&o, 1);
-    if (!spec) return EXIT_RUN;
-    long n = 0;
-    double *x = spec->error_count ? NULL : cs_sweep_samples(spec, &n);
-    if (!spec->error_count && !x) cs_sweep_error(spec, 0, 0, "out of memory for %ld runs", spec->runs);
-    if (!spec->error_count) cs_sweep_check(spec, x);
-    if (spec->error_count) {
-        cs_sweep_print_errors(spec, &o);
-        rc = EXIT_BAD;
-    } else {
+    cs_status st = cs_sweep_check_study(&a.def, &study, &err); /* its problems said on stderr */
+    rc = exit_status(st, study);
+    if (st == CS_OK) {
         static const char *const methods[] = {"grid", "Monte Carlo", "Latin hypercube"};
-        printf("%s: a valid sweep spec: %s of %ld runs over %d value%s of %s\n", spec->file,
-               methods[spec->method], n, spec->var_count, spec->var_count == 1 ? "" : "s", spec->model);
+        int vars = cs_sweep_var_count(study);
+        printf("%s: a valid sweep spec: %s of %ld runs over %d value%s of %s\n", cs_sweep_spec_file(study),
+               methods[cs_sweep_method_of(study)], cs_sweep_run_count(study), vars, vars == 1 ? "" : "s",
+               cs_sweep_model(study));
     }
-    free(x);
-    cs_sweep_spec_free(spec);
+    cs_sweep_free(study);
     return rc;
 }
 
@@ -241,15 +235,15 @@ static void omp_parallel(int threads, void (*worker)(void *arg), void *arg) {
 }
 
 int cs_sweep_command(int argc, char **argv) {
-    cs_sweep_ranks ranks = {
-        .rank = 0, .size = 1, .local = 1, .threads = thread_count, .parallel = omp_parallel};
+    cs_sweep_ranks_def ranks = cs_default_sweep_ranks();
+    int local = 1; /* the ranks on this machine, which share its cores */
     char command[8192];
     cs_cli_command_line(argc, argv, command, sizeof command); /* as typed: getopt_long reorders argv */
 #ifdef CS_MPI
     int provided;
     MPI_Init_thread(&argc, &argv, MPI_THREAD_SERIALIZED, &provided); /* sweep_mpi.h */
     MPI_Comm_rank(MPI_COMM_WORLD, &ranks.rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &ranks.size);
+    MPI_Comm_size(MPI_COMM_WORLD, &ranks.ranks);
     if (provided < MPI_THREAD_SERIALIZED) {
         if (ranks.rank == 0)
             fprintf(stderr, "cablesim sweep: this MPI gives no MPI_THREAD_SERIALIZED, which the sweep's "
@@ -259,7 +253,7 @@ int cs_sweep_command(int argc, char **argv) {
     }
     MPI_Comm node;
     MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, ranks.rank, MPI_INFO_NULL, &node);
-    MPI_Comm_size(node, &ranks.local);
+    MPI_Comm_size(node, &local);
     MPI_Comm_free(&node);
     cs_sweep_mpi_hooks(&ranks);
 #else
@@ -278,32 +272,21 @@ int cs_sweep_command(int argc, char **argv) {
     static sweep_args a; /* its strings outlive the study */
     memset(&a, 0, sizeof a);
     int rc = parse_opts(argc, argv, &a, ranks.rank);
-    if (rc < 0) rc = 0; /* --help */
-#ifdef CS_MPI
-    else if (rc == 0) { /* the ranks' hooks (sweep_mpi.h) are the command's: the study's options */
-        static cs_sweep_options o;
-        cs_error err;
-        if (cs_sweep_options_of(&a.def, &o, &err) != CS_OK) {
-            if (ranks.rank == 0) fprintf(stderr, "cablesim sweep: %s\n", err.message);
-            rc = EXIT_BAD;
-        } else {
-            rc = cs_sweep_study_run(&o, command, &ranks);
-        }
-    }
-    MPI_Finalize();
-#else
-    else if (rc == 0) {
-        a.def.threads = thread_count(a.def.threads, 1);
+    if (rc < 0) {
+        rc = 0; /* --help */
+    } else if (rc == 0) {
+        a.def.threads = thread_count(a.def.threads, local);
         a.def.parallel = omp_parallel;
         a.def.command = command;
+        a.def.ranks = &ranks;
         cs_sweep *study = NULL;
         cs_error err;
         cs_status st = cs_sweep_study(&a.def, &study, &err); /* its problems said on stderr */
-        rc = st == CS_OK            ? (cs_sweep_stopped_by(study) ? 128 + cs_sweep_stopped_by(study) : 0)
-             : st == CS_ERR_INVALID ? EXIT_BAD
-                                    : EXIT_RUN;
+        rc = exit_status(st, study);
         cs_sweep_free(study);
     }
+#ifdef CS_MPI
+    MPI_Finalize();
 #endif
     return rc;
 }

@@ -7,6 +7,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include <mpi.h>
 #include <pthread.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 
@@ -14,23 +15,20 @@
 
 enum { TAG_RUN = 1, TAG_DONE = 2 };
 
+/* A run's message: its index, then its result's bytes (as cablesim/sweep.h hands them to send_run). */
 typedef struct cs_sweep_receiver {
     pthread_t thread;
-    int size; /* the ranks */
-    cs_sweep_take *take;
+    int size;               /* the ranks */
+    size_t bytes;           /* a result's */
+    unsigned char *message; /* sizeof(long) + bytes */
+    cs_sweep_take_fn take;
     void *ctx;
 } cs_sweep_receiver;
-
-typedef struct run_message {
-    long index;
-    cs_sweep_result result;
-} run_message;
 
 /* Open MPI's blocking receive spins on its core; the receiver polls every millisecond instead, and leaves
  * rank 0's cores to its runs. */
 static void *receive(void *arg) {
     cs_sweep_receiver *rx = arg;
-    run_message m;
     for (int done = 1; done < rx->size;) { /* rank 0 and the ranks that said they are done */
         int flag = 0;
         MPI_Status st;
@@ -39,50 +37,24 @@ static void *receive(void *arg) {
             nanosleep(&(struct timespec){0, 1000000}, NULL);
             continue;
         }
-        MPI_Recv(&m, (int)sizeof m, MPI_BYTE, st.MPI_SOURCE, st.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-        if (st.MPI_TAG == TAG_DONE)
+        MPI_Recv(rx->message, (int)(sizeof(long) + rx->bytes), MPI_BYTE, st.MPI_SOURCE, st.MPI_TAG,
+                 MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        if (st.MPI_TAG == TAG_DONE) {
             done++;
-        else
-            rx->take(rx->ctx, m.index, &m.result);
+        } else {
+            long index;
+            memcpy(&index, rx->message, sizeof index);
+            rx->take(rx->ctx, index, rx->message + sizeof index);
+        }
     }
     return NULL;
 }
 
-/* Rank 0: a thread that receives the runs the other ranks send and calls take with each at once, until
- * every other rank has sent that it is done. The caller serializes take with its own calls of it. 0, or
- * -1 if the thread cannot start. Requires MPI_THREAD_SERIALIZED: rank 0 makes no other MPI call until
- * cs_sweep_receive_end. */
-static int cs_sweep_receive_start(cs_sweep_receiver *rx, int size, cs_sweep_take *take, void *ctx) {
-    rx->size = size;
-    rx->take = take;
-    rx->ctx = ctx;
-    return pthread_create(&rx->thread, NULL, receive, rx) == 0 ? 0 : -1;
-}
-
-/* Rank 0: wait for the receiver to have every other rank's runs. */
-static void cs_sweep_receive_end(cs_sweep_receiver *rx) {
-    pthread_join(rx->thread, NULL);
-}
-
-/* A rank other than 0: send run i's result to rank 0 (from one thread at a time). */
-static void cs_sweep_send_run(long i, const cs_sweep_result *r) {
-    run_message m;
-    memset(&m, 0, sizeof m); /* the padding too: every byte sent is defined */
-    m.index = i;
-    m.result = *r;
-    MPI_Send(&m, (int)sizeof m, MPI_BYTE, 0, TAG_RUN, MPI_COMM_WORLD);
-}
-
-/* A rank other than 0, after its last run: tell rank 0 that it is done. */
-static void cs_sweep_send_done(void) {
-    MPI_Send(NULL, 0, MPI_BYTE, 0, TAG_DONE, MPI_COMM_WORLD);
-}
-
-/* ---- the study's hooks (study/sweepstudy.h) on MPI_COMM_WORLD ---- */
+/* ---- the study's hooks (cablesim/sweep.h's cs_sweep_ranks_def) on MPI_COMM_WORLD ---- */
 
 static cs_sweep_receiver receiver;
 
-static void mpi_share(void *ctx, void *data, long bytes) {
+static void mpi_share(void *ctx, void *data, size_t bytes) {
     (void)ctx;
     MPI_Bcast(data, (int)bytes, MPI_BYTE, 0, MPI_COMM_WORLD);
 }
@@ -93,26 +65,49 @@ static int mpi_largest(void *ctx, int v) {
     return v;
 }
 
-static int mpi_receive_start(void *ctx, cs_sweep_take *take, void *take_ctx) {
-    int size;
+/* Rank 0: a thread that receives the runs the other ranks send and calls take with each at once, until
+ * every other rank has sent that it is done. 0, or -1 if it cannot start. Requires
+ * MPI_THREAD_SERIALIZED: rank 0 makes no other MPI call until mpi_receive_end. */
+static int mpi_receive_start(void *ctx, size_t bytes, cs_sweep_take_fn take, void *take_ctx) {
     (void)ctx;
-    MPI_Comm_size(MPI_COMM_WORLD, &size);
-    return cs_sweep_receive_start(&receiver, size, take, take_ctx);
+    MPI_Comm_size(MPI_COMM_WORLD, &receiver.size);
+    receiver.bytes = bytes;
+    receiver.take = take;
+    receiver.ctx = take_ctx;
+    receiver.message = malloc(sizeof(long) + bytes);
+    if (receiver.message && pthread_create(&receiver.thread, NULL, receive, &receiver) == 0) return 0;
+    free(receiver.message);
+    receiver.message = NULL;
+    return -1;
 }
 
+/* Rank 0: wait for the receiver to have every other rank's runs. */
 static void mpi_receive_end(void *ctx) {
     (void)ctx;
-    cs_sweep_receive_end(&receiver);
+    pthread_join(receiver.thread, NULL);
+    free(receiver.message);
+    receiver.message = NULL;
 }
 
-static void mpi_send_run(void *ctx, long i, const cs_sweep_result *r) {
+/* A rank other than 0: send run i's result to rank 0 (from one thread at a time). */
+static void mpi_send_run(void *ctx, long i, const void *result, size_t bytes) {
+    static unsigned char *message;
+    static size_t capacity;
     (void)ctx;
-    cs_sweep_send_run(i, r);
+    if (capacity < sizeof i + bytes) {
+        unsigned char *m = realloc(message, sizeof i + bytes);
+        if (!m) MPI_Abort(MPI_COMM_WORLD, 1); /* the run cannot reach rank 0's journal */
+        message = m, capacity = sizeof i + bytes;
+    }
+    memcpy(message, &i, sizeof i);
+    memcpy(message + sizeof i, result, bytes);
+    MPI_Send(message, (int)(sizeof i + bytes), MPI_BYTE, 0, TAG_RUN, MPI_COMM_WORLD);
 }
 
+/* A rank other than 0, after its last run: tell rank 0 that it is done. */
 static void mpi_send_done(void *ctx) {
     (void)ctx;
-    cs_sweep_send_done();
+    MPI_Send(NULL, 0, MPI_BYTE, 0, TAG_DONE, MPI_COMM_WORLD);
 }
 
 static void mpi_abort(void *ctx, int status) {
@@ -120,7 +115,7 @@ static void mpi_abort(void *ctx, int status) {
     MPI_Abort(MPI_COMM_WORLD, status);
 }
 
-void cs_sweep_mpi_hooks(cs_sweep_ranks *ranks) {
+void cs_sweep_mpi_hooks(cs_sweep_ranks_def *ranks) {
     ranks->share = mpi_share, ranks->largest = mpi_largest, ranks->receive_start = mpi_receive_start;
     ranks->receive_end = mpi_receive_end, ranks->send_run = mpi_send_run, ranks->send_done = mpi_send_done;
     ranks->abort = mpi_abort;

@@ -4,11 +4,11 @@
 #ifndef CS_SWEEP_MPI_H
 #define CS_SWEEP_MPI_H
 
-#include "study/sweepstudy.h"
+#include "cablesim/sweep.h"
 
-/* The hooks of a sweep's study (study/sweepstudy.h) that share it among the ranks of MPI_COMM_WORLD,
- * rank 0's receiver thread among them. Requires MPI_THREAD_SERIALIZED: rank 0 makes no other MPI call
- * while the receiver runs. */
-void cs_sweep_mpi_hooks(cs_sweep_ranks *ranks);
+/* The hooks of a sweep's study (cablesim/sweep.h's cs_sweep_ranks_def) that share it among the ranks of
+ * MPI_COMM_WORLD, rank 0's receiver thread among them. Requires MPI_THREAD_SERIALIZED: rank 0 makes no other
+ * MPI call while the receiver runs. */
+void cs_sweep_mpi_hooks(cs_sweep_ranks_def *ranks);
 
 #endif

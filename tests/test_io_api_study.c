@@ -7,8 +7,10 @@
  * - two runs of examples/aps3.yaml cut to 60 ms, 40 and 35 mph, written by `cablesim run`: the compare.csv
  *   the interface writes is the command's byte for byte, and its values and differences are the ones of
  *   that file (and each run's 50-ms deceleration its summary.json's);
- * - a def or a row of a size the library does not know is refused by name, and an earlier, smaller row is
- *   filled to its size. */
+ * - the same study checked without running (cs_sweep_check_study): its runs' inputs are the study's, each
+ *   run pending;
+ * - a def, a row or ranks of a size the library does not know, or ranks that cannot share a study, are
+ *   refused by name, and an earlier, smaller row is filled to its size. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <setjmp.h>
@@ -183,6 +185,27 @@ static void sweep_is_the_commands(void **state) {
         same_number(sm.initial_kinetic_energy_j, number(t, r, column(t, "initial_kinetic_energy [J]")),
                     "kinetic energy");
     }
+    /* the study checked, not run: the same runs' inputs, each run pending, nothing written */
+    cs_sweep *c = NULL;
+    cs_sweep_def check = def;
+    check.out_dir = NULL;
+    if (cs_sweep_check_study(&check, &c, &err) != CS_OK) fail_msg("%s", err.message);
+    assert_int_equal(cs_sweep_run_count(c), 3);
+    assert_int_equal(cs_sweep_method_of(c), CS_SWEEP_LATIN_HYPERCUBE);
+    assert_string_equal(cs_sweep_spec_file(c), def.spec);
+    assert_string_equal(cs_sweep_model(c), CS_SOURCE_DIR "/examples/aps3.yaml");
+    assert_string_equal(cs_sweep_dir(c), "");
+    for (long run = 0; run < 3; run++) {
+        for (int v = 0; v < vars; v++)
+            assert_true(cs_sweep_input(c, run, v) == cs_sweep_input(s, run, v));
+        cs_sweep_run_info info = {.size = sizeof info};
+        assert_int_equal(cs_sweep_run_of(c, run, &info, &err), CS_OK);
+        assert_int_equal(info.status, CS_SWEEP_RUN_PENDING);
+    }
+    cs_sweep_free(c);
+    assert_int_equal(cs_sweep_is_spec(def.spec), 1);
+    assert_int_equal(cs_sweep_is_spec(CS_SOURCE_DIR "/examples/aps3.yaml"), 0);
+    assert_int_equal(cs_sweep_is_spec(CS_SOURCE_DIR "/no/such/file.yaml"), 0);
     /* the runs differ: their inputs are sampled */
     assert_true(cs_sweep_input(s, 0, 0) != cs_sweep_input(s, 1, 0));
     /* out of range, and sizes it does not know */
@@ -207,6 +230,22 @@ static void sweep_is_the_commands(void **state) {
     assert_int_equal(cs_sweep_study(&bad, &s, &err), CS_ERR_INVALID);
     assert_null(s);
     assert_non_null(strstr(err.message, "--seed minus one: expected a whole number"));
+    /* ranks that cannot share a study: refused by name before anything runs */
+    cs_sweep_ranks_def ranks = cs_default_sweep_ranks();
+    assert_true(ranks.size == sizeof ranks && ranks.rank == 0 && ranks.ranks == 1);
+    ranks.ranks = 2; /* and no hooks */
+    bad = def;
+    bad.ranks = &ranks;
+    assert_int_equal(cs_sweep_study(&bad, &s, &err), CS_ERR_INVALID);
+    assert_null(s);
+    assert_string_equal(err.message, "cs_sweep_ranks_def: 2 ranks without every hook");
+    ranks.ranks = 1, ranks.rank = 1;
+    assert_int_equal(cs_sweep_study(&bad, &s, &err), CS_ERR_INVALID);
+    assert_string_equal(err.message, "cs_sweep_ranks_def: rank 1 of 1 ranks");
+    ranks = cs_default_sweep_ranks();
+    ranks.size += 8;
+    assert_int_equal(cs_sweep_study(&bad, &s, &err), CS_ERR_INVALID);
+    assert_true(strstr(err.message, "cs_sweep_ranks_def: size ") == err.message);
 }
 
 static void compare_is_the_commands(void **state) {

@@ -22,6 +22,49 @@ extern "C" {
  * region is one: `#pragma omp parallel num_threads(threads)` around the call). */
 typedef void (*cs_sweep_parallel_fn)(int threads, void (*worker)(void *arg), void *arg);
 
+/** How a study's spec draws its runs. */
+typedef enum cs_sweep_method {
+    CS_SWEEP_GRID = 0,       /**< every combination of the varied values' levels */
+    CS_SWEEP_MONTE_CARLO,    /**< independent samples of the varied values' distributions */
+    CS_SWEEP_LATIN_HYPERCUBE /**< one sample of each of `runs` equal-probability strata of every value */
+} cs_sweep_method;
+
+/** Rank 0 of a study shared among processes: take a run another rank finished (`result`: the bytes that
+ * rank's send_run was given). */
+typedef void (*cs_sweep_take_fn)(void *take_ctx, long run, const void *result);
+
+/** How the processes of one study share it (an MPI program's ranks: app/sweep_mpi.c): each process calls
+ * cs_sweep_study with the same def but for its own rank. Rank 0 reads the spec's files, checks and writes
+ * the folder and journals every run as it ends; the runs are dealt round robin among the ranks, and each
+ * rank runs its own on def->threads threads. The other ranks need not see rank 0's folder. Start it from
+ * cs_default_sweep_ranks(), which sets its size; new fields go at its end. With ranks above 1, every hook
+ * is needed. */
+typedef struct cs_sweep_ranks_def {
+    size_t size; /**< the size of this struct in the program (cs_default_sweep_ranks sets it) */
+    int rank;    /**< this process's rank, 0 to ranks - 1 */
+    int ranks;   /**< how many processes share the study */
+    void *ctx;   /**< passed to every hook */
+    /** rank 0's `bytes` bytes at data to every rank (MPI_Bcast from 0) */
+    void (*share)(void *ctx, void *data, size_t bytes);
+    /** the largest of every rank's v, returned on every rank (MPI_Allreduce with MPI_MAX) */
+    int (*largest)(void *ctx, int v);
+    /** rank 0: start calling take(take_ctx, ...) with each run the other ranks send (results of `bytes`
+     * bytes), one call at a time, until every other rank has sent that it is done; 0, or -1 if it cannot
+     * start. Between it and receive_end, rank 0 calls no other hook. */
+    int (*receive_start)(void *ctx, size_t bytes, cs_sweep_take_fn take, void *take_ctx);
+    /** rank 0: return once every other rank's runs are taken */
+    void (*receive_end)(void *ctx);
+    /** a rank other than 0: run `run`'s result (`bytes` bytes) to rank 0, as it ends (one call at a time) */
+    void (*send_run)(void *ctx, long run, const void *result, size_t bytes);
+    /** a rank other than 0, after its last run: that it is done */
+    void (*send_done)(void *ctx);
+    /** end every rank at once with exit status `status` (MPI_Abort) */
+    void (*abort)(void *ctx, int status);
+} cs_sweep_ranks_def;
+
+/** A ranks def of one process (rank 0 of 1, no hooks) with its size set. */
+CS_API cs_sweep_ranks_def cs_default_sweep_ranks(void);
+
 /** A study to run. Start it from cs_default_sweep_def(), which sets its size; new fields go at its end. The
  * strings and arrays it points to are read during cs_sweep_study alone. */
 typedef struct cs_sweep_def {
@@ -50,6 +93,8 @@ typedef struct cs_sweep_def {
                                         NULL: none printed (the first is in the cs_error) */
     FILE *progress;                /**< the progress of the runs (a bar on a terminal); NULL: none */
     FILE *closing;                 /**< the closing lines: the runs done and the files written; NULL: none */
+    const cs_sweep_ranks_def *ranks; /**< the processes that share the study (read to its size); NULL:
+                                          this process alone */
 } cs_sweep_def;
 
 /** A study run: its runs' inputs and results (opaque). */
@@ -60,7 +105,9 @@ CS_API cs_sweep_def cs_default_sweep_def(void);
 
 /** Run a study and write its outputs.
  * @param def the study (read to its size)
- * @param out the study's runs, to free with cs_sweep_free (NULL on failure)
+ * @param out the study's runs, to free with cs_sweep_free (NULL on failure); on a rank other than 0 of a
+ *        study shared among processes (def->ranks), a study without runs (cs_sweep_run_count 0, cs_sweep_dir
+ *        "") whose cs_sweep_stopped_by is rank 0's
  * @param err filled on failure (may be NULL)
  * @return CS_OK: done, stopped by a signal (cs_sweep_stopped_by: the runs done are written, partial), or,
  *         with resume, nothing left to run (cs_sweep_ran 0); CS_ERR_INVALID: a def of a size this library
@@ -68,11 +115,33 @@ CS_API cs_sweep_def cs_default_sweep_def(void);
  *         err) or a folder that cannot be resumed, nothing run; CS_ERR_IO: the folder could not be taken or
  *         the outputs written (the runs done are kept in its journal for a resume); CS_ERR_MEMORY. */
 CS_API cs_status cs_sweep_study(const cs_sweep_def *def, cs_sweep **out, cs_error *err);
+/** Check a study without running it, as `cablesim check SPEC` does: the spec with def's changes, and its
+ * model with the inputs of run 0 and with each grid level. Nothing is written, no folder is taken.
+ * @param def the study (read to its size; its ranks, threads, parallel, progress and closing unused)
+ * @param out the study's runs, none of them run (each CS_SWEEP_RUN_PENDING), with their inputs, to free
+ *        with cs_sweep_free (NULL on failure)
+ * @param err filled on failure (may be NULL)
+ * @return CS_OK; CS_ERR_INVALID: a def this library cannot take, or a spec with problems (each printed to
+ *         def->errors; the first, or their count, in err); CS_ERR_IO: the unit database could not be read;
+ *         CS_ERR_MEMORY. */
+CS_API cs_status cs_sweep_check_study(const cs_sweep_def *def, cs_sweep **out, cs_error *err);
+/** Is the file a study's spec (a YAML mapping with a top-level `vary`) rather than a model? 1 or 0 (0 too
+ * for a file that cannot be read). */
+CS_API int cs_sweep_is_spec(const char *path);
+
 /** Free a study. NULL is allowed. */
 CS_API void cs_sweep_free(cs_sweep *sweep);
 
 /** The study's output folder. */
 CS_API const char *cs_sweep_dir(const cs_sweep *sweep);
+/** The spec file as the def gave it (a resumed study: as its folder records it); "" on a rank other than 0.
+ */
+CS_API const char *cs_sweep_spec_file(const cs_sweep *sweep);
+/** The spec's base model file, as the study opens it (the spec's `model:` found from the spec's folder); ""
+ * on a rank other than 0. */
+CS_API const char *cs_sweep_model(const cs_sweep *sweep);
+/** How the spec draws its runs. */
+CS_API cs_sweep_method cs_sweep_method_of(const cs_sweep *sweep);
 /** Its number of runs: runs.csv's rows, numbered from 0 as its `run` column. */
 CS_API long cs_sweep_run_count(const cs_sweep *sweep);
 /** How many runs this call ran (those of a resumed study read back from its folder not counted). */

@@ -8,14 +8,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "cablesim/sweep.h" /* cs_sweep_method, cs_sweep_is_spec */
 #include "confine.h"
 #include "units.h"
-
-typedef enum cs_sweep_method {
-    CS_SWEEP_GRID = 0,
-    CS_SWEEP_MONTE_CARLO,
-    CS_SWEEP_LATIN_HYPERCUBE
-} cs_sweep_method;
 
 typedef enum cs_dist_kind { CS_DIST_UNIFORM = 0, CS_DIST_NORMAL, CS_DIST_LOGNORMAL } cs_dist_kind;
 
@@ -120,8 +115,6 @@ void cs_sweep_spec_free(cs_sweep_spec *spec);
  * model's files from any of them. Errors recorded: at the model's place, or a folder of allow that is
  * not one. */
 void cs_sweep_spec_confine(cs_sweep_spec *spec, const char *const *allow, int count);
-/* Is the file a sweep spec (a YAML mapping with a top-level `vary`) rather than a model? */
-int cs_sweep_is_spec(const char *path);
 /* Record an error at a place of the spec (line 0: no place). */
 void cs_sweep_error(cs_sweep_spec *spec, int line, int col, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));

@@ -14,11 +14,30 @@ cs_sweep_def cs_default_sweep_def(void) {
     return (cs_sweep_def){.size = sizeof(cs_sweep_def)};
 }
 
+cs_sweep_ranks_def cs_default_sweep_ranks(void) {
+    return (cs_sweep_ranks_def){.size = sizeof(cs_sweep_ranks_def), .rank = 0, .ranks = 1};
+}
+
+/* The def's ranks into o->ranks (to their size): "" , or why they cannot be taken into why. */
+static void ranks_of(const cs_sweep_def *def, cs_sweep_options *o, char *why, size_t size) {
+    o->ranks = cs_default_sweep_ranks();
+    cs_error err;
+    if (def->ranks &&
+        cs_sized_take(&o->ranks, sizeof o->ranks, def->ranks, "cs_sweep_ranks_def", &err) != CS_OK)
+        snprintf(why, size, "%.150s", err.message);
+    else if (o->ranks.ranks < 1 || o->ranks.rank < 0 || o->ranks.rank >= o->ranks.ranks)
+        snprintf(why, size, "cs_sweep_ranks_def: rank %d of %d ranks", o->ranks.rank, o->ranks.ranks);
+    else if (o->ranks.ranks > 1 &&
+             !(o->ranks.share && o->ranks.largest && o->ranks.receive_start && o->ranks.receive_end &&
+               o->ranks.send_run && o->ranks.send_done && o->ranks.abort))
+        snprintf(why, size, "cs_sweep_ranks_def: %d ranks without every hook", o->ranks.ranks);
+}
+
 cs_status cs_sweep_options_of(const cs_sweep_def *given, cs_sweep_options *o, cs_error *err) {
     cs_sweep_def def = cs_default_sweep_def();
     if (cs_sized_take(&def, sizeof def, given, "cs_sweep_def", err) != CS_OK) return CS_ERR_INVALID;
     memset(o, 0, sizeof *o);
-    char why[160];
+    char why[160] = "";
     if (def.set_count < 0 || def.set_count > CS_SWEEP_MAX_SETS || (def.set_count > 0 && !def.sets))
         snprintf(why, sizeof why, "cs_sweep_def: %d sets, where at most %d are taken", def.set_count,
                  CS_SWEEP_MAX_SETS);
@@ -37,10 +56,10 @@ cs_status cs_sweep_options_of(const cs_sweep_def *given, cs_sweep_options *o, cs
                  "cs_sweep_def: a folder to resume takes its study as its summary.json records it: no "
                  "out_dir, runs, seed, sets, allow or netcdf");
     else
-        why[0] = '\0';
+        ranks_of(&def, o, why, sizeof why);
     if (why[0]) return cs_status_set(err, CS_ERR_INVALID, why);
     o->spec = def.spec, o->out_dir = def.out_dir, o->resume = def.resume;
-    o->threads = def.threads;
+    o->threads = def.threads, o->parallel = def.parallel;
     o->netcdf = def.netcdf, o->force = def.force;
     o->runs = def.runs, o->seed = def.seed;
     for (int i = 0; i < def.allow_count; i++)
@@ -51,23 +70,18 @@ cs_status cs_sweep_options_of(const cs_sweep_def *given, cs_sweep_options *o, cs
     return CS_OK;
 }
 
-static int asked_threads(int asked, int local) {
-    (void)local;
-    return asked > 0 ? asked : 1;
-}
-
-cs_status cs_sweep_study(const cs_sweep_def *def, cs_sweep **out, cs_error *err) {
+/* The study of def run (check: checked alone) into *out, as cs_sweep_study and cs_sweep_check_study say. */
+static cs_status study(const cs_sweep_def *def, int check, cs_sweep **out, cs_error *err) {
     if (out) *out = NULL;
-    if (!out) return cs_status_set(err, CS_ERR_INVALID, "cs_sweep_study: no place for the study");
+    if (!out) return cs_status_set(err, CS_ERR_INVALID, "cablesim/sweep.h: no place for the study");
     cs_sweep_def full = cs_default_sweep_def(); /* the caller's, to its size */
     if (cs_sized_take(&full, sizeof full, def, "cs_sweep_def", err) != CS_OK) return CS_ERR_INVALID;
     cs_sweep_options *o = malloc(sizeof *o);
     if (!o) return cs_status_set(err, CS_ERR_MEMORY, "out of memory");
     cs_status st = cs_sweep_options_of(&full, o, err);
     if (st != CS_OK) return free(o), st;
-    cs_sweep_ranks ranks = {
-        .rank = 0, .size = 1, .local = 1, .threads = asked_threads, .parallel = full.parallel};
-    int rc = cs_sweep_study_keep(o, full.command, &ranks, out);
+    if (check) o->ranks = cs_default_sweep_ranks(), o->progress = NULL, o->closing = NULL;
+    int rc = check ? cs_sweep_study_check(o, out) : cs_sweep_study_keep(o, full.command, out);
     if (rc == 0 || rc > 128) {
         st = *out ? cs_status_set(err, CS_OK, "") : cs_status_set(err, CS_ERR_MEMORY, "out of memory");
     } else {
@@ -77,6 +91,14 @@ cs_status cs_sweep_study(const cs_sweep_def *def, cs_sweep **out, cs_error *err)
     }
     free(o);
     return st;
+}
+
+cs_status cs_sweep_study(const cs_sweep_def *def, cs_sweep **out, cs_error *err) {
+    return study(def, 0, out, err);
+}
+
+cs_status cs_sweep_check_study(const cs_sweep_def *def, cs_sweep **out, cs_error *err) {
+    return study(def, 1, out, err);
 }
 
 void cs_sweep_free(cs_sweep *s) {
@@ -89,6 +111,18 @@ void cs_sweep_free(cs_sweep *s) {
 
 const char *cs_sweep_dir(const cs_sweep *s) {
     return s ? s->dir : NULL;
+}
+
+const char *cs_sweep_spec_file(const cs_sweep *s) {
+    return s && s->spec ? s->spec->file : "";
+}
+
+const char *cs_sweep_model(const cs_sweep *s) {
+    return s && s->spec ? s->spec->model : "";
+}
+
+cs_sweep_method cs_sweep_method_of(const cs_sweep *s) {
+    return s && s->spec ? s->spec->method : CS_SWEEP_GRID;
 }
 
 long cs_sweep_run_count(const cs_sweep *s) {

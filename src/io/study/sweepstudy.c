@@ -185,9 +185,10 @@ typedef struct taker {
     cs_sweep_options *o;
 } taker;
 
-static void take_run(void *ctx, long i, const cs_sweep_result *r) {
+static void take_run(void *ctx, long i, const void *result) {
     static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
     taker *t = ctx;
+    const cs_sweep_result *r = result;
     pthread_mutex_lock(&lock);
     t->all[i] = *r;
     journal_run(t->out, t->spec, t->x, r, i, &t->journal_failed, t->o);
@@ -286,7 +287,7 @@ typedef struct runner {
     const double *x;
     const long *todo;
     long local_n, next, stop_after;
-    const cs_sweep_ranks *ranks;
+    const cs_sweep_ranks_def *ranks;
     cs_sweep_result *mine;
     taker *t;
     progress *p;
@@ -295,7 +296,7 @@ typedef struct runner {
 
 static void run_worker(void *arg) {
     runner *w = arg;
-    int rank = w->ranks->rank, size = w->ranks->size;
+    int rank = w->ranks->rank, size = w->ranks->ranks;
     char why[256];
     cs_loader *loader = cs_sweep_loader(w->spec, why, sizeof why); /* one per thread (NULL: one per run) */
     for (;;) {
@@ -307,7 +308,7 @@ static void run_worker(void *arg) {
         cs_sweep_run(w->spec, &w->x[i * w->spec->var_count], loader, &w->mine[m]);
         pthread_mutex_lock(&w->lock);
         w->p->done++;
-        if (rank > 0 && w->ranks->send_run) w->ranks->send_run(w->ranks->ctx, i, &w->mine[m]);
+        if (rank > 0) w->ranks->send_run(w->ranks->ctx, i, &w->mine[m], sizeof w->mine[m]);
         if (rank == 0) take_run(w->t, i, &w->mine[m]);
         progress_show(w->p, 0);
         if (w->stop_after > 0 && w->p->done == w->stop_after) raise(SIGINT); /* CABLESIM_SWEEP_STOP_AFTER */
@@ -316,11 +317,11 @@ static void run_worker(void *arg) {
     cs_loader_free(loader);
 }
 
-static void share(const cs_sweep_ranks *ranks, void *data, long bytes) {
+static void share(const cs_sweep_ranks_def *ranks, void *data, size_t bytes) {
     if (ranks->share) ranks->share(ranks->ctx, data, bytes);
 }
 
-static void abort_ranks(const cs_sweep_ranks *ranks, int status) {
+static void abort_ranks(const cs_sweep_ranks_def *ranks, int status) {
     if (ranks->abort) ranks->abort(ranks->ctx, status);
 }
 
@@ -335,14 +336,44 @@ static cs_sweep *handle(cs_sweep_spec *spec, double *x, cs_sweep_result *all, lo
     return h;
 }
 
-int cs_sweep_study_run(cs_sweep_options *o, const char *command, const cs_sweep_ranks *ranks) {
-    return cs_sweep_study_keep(o, command, ranks, NULL);
+/* The spec of o read with its changes into *spec (NULL if memory is short), its runs' inputs into *x and *n,
+ * and its model checked with them (on rank 0 alone: the other ranks read what rank 0 checked): 0, or the
+ * exit status, its problems printed (rank 0). */
+static int spec_checked(cs_sweep_options *o, int rank, cs_sweep_spec **spec, double **x, long *n) {
+    *x = NULL, *n = 0;
+    if (!(*spec = cs_sweep_study_spec(o, rank == 0))) return EXIT_RUN;
+    if ((*spec)->error_count == 0 && !(*x = cs_sweep_samples(*spec, n)))
+        cs_sweep_error(*spec, 0, 0, "out of memory for %ld runs", (*spec)->runs);
+    if (rank == 0 && (*spec)->error_count == 0) cs_sweep_check(*spec, *x);
+    if (!(*spec)->error_count) return 0;
+    if (rank == 0) cs_sweep_print_errors(*spec, o);
+    return EXIT_BAD;
 }
 
-int cs_sweep_study_keep(cs_sweep_options *o, const char *command, const cs_sweep_ranks *ranks,
-                        cs_sweep **keep) {
+int cs_sweep_study_check(cs_sweep_options *o, cs_sweep **keep) {
+    *keep = NULL;
+    if (o->resume) {
+        cs_sweep_say(o, "a study's spec is checked, not a folder to resume (%s)", o->resume);
+        return EXIT_BAD;
+    }
+    cs_sweep_spec *spec;
+    double *x;
+    long n;
+    int rc = spec_checked(o, 0, &spec, &x, &n);
+    cs_sweep_result *all = rc == 0 ? calloc((size_t)(n > 0 ? n : 1), sizeof *all) : NULL;
+    for (long i = 0; all && i < n; i++)
+        all[i].pending = 1;
+    if (all && (*keep = handle(spec, x, all, n, 0, 0, ""))) return 0;
+    if (rc == 0) cs_sweep_say(o, "out of memory for %ld runs", n), rc = EXIT_RUN;
+    free(all), free(x);
+    cs_sweep_spec_free(spec);
+    return rc;
+}
+
+int cs_sweep_study_keep(cs_sweep_options *o, const char *command, cs_sweep **keep) {
     if (keep) *keep = NULL;
-    int rank = ranks->rank, size = ranks->size, rc = 0;
+    const cs_sweep_ranks_def *ranks = &o->ranks;
+    int rank = ranks->rank, size = ranks->ranks, rc = 0;
     static cs_sweep_resumed was;
     char as_given[PATH_MAX] = "", cwd[PATH_MAX] = "";
     memset(&was, 0, sizeof was); /* nothing of an earlier study's */
@@ -362,15 +393,7 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, const cs_sweep
     cs_sweep_spec *spec = NULL;
     double *x = NULL;
     long n = 0;
-    if (rc == 0 && !(spec = cs_sweep_study_spec(o, rank == 0))) rc = EXIT_RUN;
-    if (rc == 0 && spec->error_count == 0 && !(x = cs_sweep_samples(spec, &n))) {
-        cs_sweep_error(spec, 0, 0, "out of memory for %ld runs", spec->runs);
-    }
-    if (rc == 0 && rank == 0 && spec->error_count == 0) cs_sweep_check(spec, x);
-    if (rc == 0 && spec->error_count) {
-        if (rank == 0) cs_sweep_print_errors(spec, o);
-        rc = EXIT_BAD;
-    }
+    if (rc == 0) rc = spec_checked(o, rank, &spec, &x, &n);
     /* rank 0: the output folder, checked before any run; --resume: the runs done */
     char dir[1024] = "", *record = NULL;
     cs_outdir out;
@@ -429,13 +452,15 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, const cs_sweep
     }
     if (rc != 0) {
         if (out_open) cs_out_abort(&out);
-        if (rc < 0 && keep && (*keep = handle(spec, x, all, n, 0, 0, dir))) /* nothing to run */
+        if (rc < 0 && keep && rank == 0 && (*keep = handle(spec, x, all, n, 0, 0, dir))) /* nothing to run */
             spec = NULL, x = NULL, all = NULL;
+        else if (rc < 0 && keep && rank > 0)
+            *keep = handle(NULL, NULL, NULL, 0, 0, 0, "");
         free(x), free(all), free(todo), free(todo_mask), free(record), free(was.journal);
         cs_sweep_spec_free(spec);
         return rc < 0 ? 0 : rc;
     }
-    int threads = ranks->threads ? ranks->threads(o->threads, ranks->local) : 1;
+    int threads = o->threads > 0 ? o->threads : 1;
     long local_n = todo_n > rank ? (todo_n - rank + size - 1) / size : 0;
     cs_sweep_result *mine = calloc((size_t)(local_n > 0 ? local_n : 1), sizeof *mine);
     if (!mine) {
@@ -462,8 +487,8 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, const cs_sweep
     catch_signals(1);
     double start = now();
     taker t = {&out, spec, x, all, 0, o};
-    if (rank == 0 && size > 1 && ranks->receive_start &&
-        ranks->receive_start(ranks->ctx, take_run, &t) != 0) {
+    if (rank == 0 && size > 1 &&
+        ranks->receive_start(ranks->ctx, sizeof(cs_sweep_result), take_run, &t) != 0) {
         cs_sweep_say(o, "cannot start the thread that receives the other ranks' runs");
         abort_ranks(ranks, EXIT_RUN);
     }
@@ -478,8 +503,8 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, const cs_sweep
                 &t,
                 &p,
                 PTHREAD_MUTEX_INITIALIZER};
-    if (ranks->parallel)
-        ranks->parallel(threads, run_worker, &w);
+    if (o->parallel)
+        o->parallel(threads, run_worker, &w);
     else
         run_worker(&w);
     catch_signals(0);
@@ -488,9 +513,9 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, const cs_sweep
         progress_show(&p, 1);
     else if (p.on && p.tty)
         fputc('\n', p.f);
-    if (rank == 0 && size > 1 && ranks->receive_end)
+    if (rank == 0 && size > 1)
         ranks->receive_end(ranks->ctx);
-    else if (rank > 0 && ranks->send_done)
+    else if (rank > 0)
         ranks->send_done(ranks->ctx);
     if (ranks->largest) stopped = ranks->largest(ranks->ctx, stopped);
     double wall = now() - start;
@@ -542,5 +567,7 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, const cs_sweep
     free(todo), free(todo_mask), free(record), free(was.journal);
     cs_sweep_spec_free(spec);
     share(ranks, &rc, sizeof rc);
+    if (rank > 0 && keep && (rc == 0 || rc > 128)) /* rank 0's outcome, no runs */
+        *keep = handle(NULL, NULL, NULL, 0, p.done, rc > 128 ? rc - 128 : 0, "");
     return rc;
 }
