@@ -42,6 +42,7 @@ extern const size_t cs_designer_page_size;
 typedef struct design {
     cs_loader *l;
     const char *name, *model_dir; /* the model's name, its file's real folder */
+    const char *file;             /* the model's file as the command line gives it (report.html's) */
     char model_path[PATH_MAX];    /* the model's path in the page */
     char *units;                  /* the unit table */
 } design;
@@ -82,7 +83,7 @@ static int write_text_of(FILE *f, const char *real) {
     return 0;
 }
 
-/* The page's data: {"version","name","model","data_dir","units","files":[{"path","text"}]}. */
+/* The page's data: {"version","name","model","file","data_dir","units","files":[{"path","text"}]}. */
 static int write_design(FILE *f, void *user, char *why, size_t why_size) {
     const design *d = user;
     fputs("{\"version\":", f);
@@ -91,6 +92,8 @@ static int write_design(FILE *f, void *user, char *why, size_t why_size) {
     cs_json_page_string(f, d->name);
     fputs(",\"model\":", f);
     cs_json_page_string(f, d->model_path);
+    fputs(",\"file\":", f);
+    cs_json_page_string(f, d->file);
     fputs(",\"data_dir\":\"/data\",\"units\":", f);
     cs_json_page_string(f, d->units);
     fputs(",\"files\":[", f);
@@ -234,7 +237,7 @@ int cs_command_designer(int argc, char **argv) {
     int rc = CS_EXIT_USAGE;
     cs_model_input in = {.size = sizeof in};
     cs_model *model = NULL;
-    design d = {l, NULL, NULL, "", NULL};
+    design d = {l, NULL, NULL, file, "", NULL};
     if (!file) {
         fprintf(
             stderr,

@@ -9,7 +9,8 @@
 # penetration (or how far beyond), the cables counted from 0, the end fittings' strength and the events
 # agree; compare's table gives each run's own numbers. The designation as run is also rate's row for the
 # same condition and a sweep's runs.csv entry, and rate's conclusion is its "rating". Exit 77 (skipped)
-# for a build without node (no report.html).
+# for a build without node (no report.html). The designer page's numbers for the same run are checked
+# against these outputs in a browser: designer_one_truth (report/test/designer_truth.mjs).
 source "$(dirname "$0")/lib.sh"
 command -v node >/dev/null || { echo "no node: skipped"; exit 77; }
 weak=(--set "barrier.cables[0].termination_efficiency=0.25" --set "barrier.cables[1].termination_efficiency=0.25")

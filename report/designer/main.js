@@ -45,6 +45,7 @@ function fail(where, e) {
 
 let engine = null;
 let modelArg = '';
+let modelFile = ''; // the model's file as `cablesim designer` was given it, as report.html names it
 const fields = [];
 
 function call(name, ...args) {
@@ -66,7 +67,8 @@ function writeFiles(design) {
 }
 
 // The field's name for a person: "line posts: spacing", "cable 1: pretension". Cables and post groups are
-// counted from 0, as in every output and in the --set paths (barrier.cables[1] is cable 1).
+// counted from 0, as in every output and in the --set paths (barrier.cables[1] is cable 1); a group without
+// a name is "post group i", since "post i" is the i-th post along the barrier in every output.
 function label(values, path, m) {
   const key = path.split('.').pop();
   const word = LABELS[key] || key;
@@ -74,7 +76,7 @@ function label(values, path, m) {
   if (path.startsWith('barrier.posts')) {
     const name = values.get(`barrier.posts[${m[1]}].name`);
     const part = path.includes('.footing.') ? `footing ${word}` : word;
-    return `${name || `posts ${Number(m[1])}`}: ${part}`;
+    return `${name || `post group ${Number(m[1])}`}: ${part}`; // group i, not post i
   }
   if (path.startsWith('barrier.anchors')) return `${m[1]} anchor: footing ${word}`;
   return word;
@@ -143,7 +145,8 @@ function showErrors(errors) {
 
 let replay = null;
 function showRun(r) {
-  const data = r.report;
+  // the page runs the model from its folder; its outputs name the file as the command's do
+  const data = { ...r.report, file: modelFile };
   $('story').textContent = story(data);
   $('cards').replaceChildren(cards(data));
   $('designation').textContent = `Designation as run: ${designationsText(data)}.`;
@@ -295,12 +298,13 @@ async function main() {
   engine = await createCablesim();
   writeFiles(design);
   modelArg = design.model.replace(/^\/model\//, '');
+  modelFile = design.file;
   const opened = call('cs_web_open', design.units, design.data_dir);
   if (!opened.ok) throw new Error(opened.errors.join('; '));
   const values = call('cs_web_values', modelArg);
   if (!values.ok) throw new Error(values.errors.join('; '));
   buildForm(values.values, call('cs_web_parts'));
-  $('meta').textContent = `cablesim ${design.version} · model file ${modelArg} · the engine runs in this page (WebAssembly); values take units as in the file ("8 ft", "2.4 m"); each change runs the crash again`;
+  $('meta').textContent = `cablesim ${design.version} · model file ${modelFile} · the engine runs in this page (WebAssembly); values take units as in the file ("8 ft", "2.4 m"); each change runs the crash again`;
   $('reset').addEventListener('click', () => {
     for (const f of fields) f.input.value = f.original;
     run();
