@@ -7,8 +7,8 @@
  * - two runs of examples/aps3.yaml cut to 60 ms, 40 and 35 mph, written by `cablesim run`: the compare.csv
  *   the interface writes is the command's byte for byte, and its values and differences are the ones of
  *   that file (and each run's 50-ms deceleration its summary.json's);
- * - the same study checked without running (cs_sweep_check_study): its runs' inputs are the study's, each
- *   run pending;
+ * - the same study checked without running (cs_sweep_check_study), from a def of the size before it had
+ *   ranks: its runs' inputs are the study's, each run pending;
  * - a def, a row or ranks of a size the library does not know, or ranks that cannot share a study, are
  *   refused by name, and an earlier, smaller row is filled to its size. */
 #define _POSIX_C_SOURCE 200809L
@@ -189,6 +189,11 @@ static void sweep_is_the_commands(void **state) {
     cs_sweep *c = NULL;
     cs_sweep_def check = def;
     check.out_dir = NULL;
+    /* as a program built before cs_sweep_def had ranks passes it: the ranks past its size are not read */
+    cs_sweep_ranks_def unread = cs_default_sweep_ranks();
+    unread.ranks = 2; /* refused, if it were read */
+    check.ranks = &unread;
+    check.size = offsetof(cs_sweep_def, ranks);
     if (cs_sweep_check_study(&check, &c, &err) != CS_OK) fail_msg("%s", err.message);
     assert_int_equal(cs_sweep_run_count(c), 3);
     assert_int_equal(cs_sweep_method_of(c), CS_SWEEP_LATIN_HYPERCUBE);
