@@ -199,7 +199,7 @@ cs_rating cs_rate_run(cs_standard standard, const char *vehicle_class, double sp
     const char *level = cs_rating_level(standard, r.penetration);
     r.rated = r.speed_mph > 0 && level != NULL;
     if (r.speed_mph == 0) {
-        int mph[3];
+        int mph[3] = {0, 0, 0}; /* the class's three speeds: a class the standard tests (checked above) */
         cs_rating_class_speeds(vehicle_class, mph);
         snprintf(r.note, sizeof r.note, "%.1f mph is below the lowest speed of its %s vehicle, %d mph",
                  round(speed / CS_MPH * 10.0) / 10.0, vehicle_class, mph[2]);
