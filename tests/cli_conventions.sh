@@ -5,6 +5,9 @@
 # system's reason; an output folder that cannot be written refused before anything runs (a folder under a
 # regular file: ENOTDIR even for root), leaving nothing behind. And every source file git tracks (C,
 # headers, shell, CMake, JavaScript, Python) names its licence, the LICENSE's MIT, by its SPDX identifier.
+# And the quick start's promises: README.md at most 150 lines; `make demo` builds the command alone (no
+# test) and installs, on a machine that lacks every package, none of emscripten, chromium or the test
+# toolchain (scripts/install-deps.sh --demo, with dpkg and apt-get stood in for).
 source "$(dirname "$0")/lib.sh"
 
 top=$("$cs" --help)
@@ -92,4 +95,23 @@ if git rev-parse --is-inside-work-tree >/dev/null 2>&1 && plain_only "the source
     check "the LICENSE is MIT's" 'head -1 LICENSE | grep -qx "MIT License"'
     check "every tracked source file has SPDX-License-Identifier: MIT" '[ -z "$unmarked" ] || { echo "$unmarked" | head; false; }'
 fi
+check "README.md is at most 150 lines" '[ "$(wc -l <README.md)" -le 150 ]'
+demo=$(make -n demo BUILD="$tmp/demo-build" 2>&1)
+check "make demo builds the command's target alone, no test" '[ "$(grep -c "cmake --build" <<<"$demo")" -eq 1 ] && grep -q "cmake --build .* --target cablesim_cmd$" <<<"$demo" || { echo "$demo"; false; }'
+mkdir -p "$tmp/stub"
+printf '#!/bin/sh
+exit 1
+' >"$tmp/stub/dpkg"                       # every package missing
+printf '#!/bin/sh
+echo "apt-get $*"
+' >"$tmp/stub/apt-get"          # what it would install
+printf '#!/bin/sh
+"$@"
+' >"$tmp/stub/sudo"
+chmod +x "$tmp/stub/dpkg" "$tmp/stub/apt-get" "$tmp/stub/sudo"
+asked=$(PATH="$tmp/stub:$PATH" bash scripts/install-deps.sh --demo 2>&1)
+check "install-deps.sh --demo installs the command's libraries" 'grep -q "^apt-get install .* libyaml-dev .*libudunits2-dev" <<<"$asked" || { echo "$asked"; false; }'
+check "install-deps.sh --demo installs no emscripten, chromium, cmocka, clang or MPI" '! grep -qwE "emscripten|chromium|libcmocka-dev|clang|libopenmpi-dev" <<<"$asked"'
+asked=$(PATH="$tmp/stub:$PATH" bash scripts/install-deps.sh 2>&1)
+check "install-deps.sh without --demo installs them (the stand-ins see the whole list)" 'grep -qw emscripten <<<"$asked" && grep -qw chromium <<<"$asked"'
 finish
