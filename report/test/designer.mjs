@@ -9,7 +9,7 @@
 // `cablesim run --set`; a value in a wrong unit shows its message beside its field; a sweep runs; a
 // model of two files (tests/good/split.yaml) runs as the command runs it. One APS3 run's time in the page is measured (the
 // run, cs_run, by the engine's clock, and the whole call that loads, runs and sums it up: the fastest and
-// the median of 21, in OUT/timing.json) against the 50-ms target.
+// the median of 21, in OUT/timing.json) and recorded, not checked.
 //
 //   node report/test/designer.mjs --cablesim BUILD/cablesim --modules BUILD/report/node_modules --out DIR
 //                                 [--math glibc|musl]   (the command's maths, as CMake resolved CS_MATH)
@@ -147,9 +147,8 @@ try {
   const call = stats(timing.callMs);
   writeFileSync(join(out, 'timing.json'), `${JSON.stringify({ model: 'examples/aps3.yaml', engine, load, call }, null, 1)}\n`);
   console.log(`one APS3 run in the page (headless chromium), fastest and median of 21: the engine ${engine.fastest_ms} and ${engine.median_ms} ms; the model's load ${load.fastest_ms} and ${load.median_ms} ms; the whole call (load, run, summary) ${call.fastest_ms} and ${call.median_ms} ms`);
-  // the fastest of 21: the run's own cost, least disturbed by whatever else the machine runs; the run as
-  // `make bench` times the command's (cs_run; its numbers in docs/performance.md)
-  check('one APS3 run in the page takes under 50 ms', engine.fastest_ms < 50, `${engine.fastest_ms} ms`);
+  // recorded, not checked: a time depends on what else the machine runs, and speed is judged from
+  // measurements (docs/performance.md), never by a test that fails on a busy machine
   // a model made of files: tests/good/split.yaml takes its barrier and scenario from base.yaml beside it,
   // which the page holds too and reads from the model's folder, as the command does
   cablesim('designer', 'tests/good/split.yaml', '-o', join(out, 'split'));
