@@ -86,10 +86,8 @@ static int get_list(cs_loader *l, const cs_node *map, const char *key, double *o
 }
 
 /* Was key written in the file but dropped for its wrong shape (already reported)? */
-static int given_but_bad(const cs_loader *l, const cs_node *map, const char *key) {
-    char path[600];
-    snprintf(path, sizeof path, "%s%s%s", map->path, map->path[0] ? "." : "", key);
-    return map->source >= 0 && cs_ytree_find(&l->files[map->source].tree, path) != NULL;
+static int given_but_bad(cs_loader *l, const cs_node *map, const char *key) {
+    return map->source >= 0 && cs_ynode_get_counted(map->at, key, &l->work) != NULL;
 }
 
 static void check_required(cs_loader *l, const cs_node *map) {
@@ -262,7 +260,7 @@ int cs_convert_vehicle(cs_loader *l, const cs_node *v, cs_vehicle_def *out) {
                         out->mass * CS_GYRATION_MIN * CS_GYRATION_MIN);
     }
     crush_curve(l, v, out);
-    if (l->error_count > before || cs_damaged(l, v)) return l->error_count - before;
+    if (l->error_count > before || cs_damaged(v)) return l->error_count - before;
     above(l, v, "face_top", out->face_top, "face_bottom", out->face_bottom);
     above(l, v, "side_top", out->side_top, "side_bottom", out->side_bottom);
     above(l, v, "wheelbase", out->wheelbase, "cg_to_front_axle", out->cg_to_front_axle);
@@ -279,7 +277,8 @@ int cs_convert_rope(cs_loader *l, const cs_node *rope, cs_rope_def *out, double 
     int has_d = get_qty(l, rope, "diameter", &d);
     *out = cs_default_rope_def();
     if (from) {
-        const cs_node *base = l->depth < 16 ? cs_find_part(l, from->source, "ropes", from->text, from) : NULL;
+        const cs_node *base =
+            l->depth < 16 ? cs_find_part(l, from->source, CS_PART_ROPE, from->text, from) : NULL;
         l->depth++;
         int base_errors = base ? cs_convert_rope(l, base, out, &d0) : 1;
         l->depth--;
@@ -304,9 +303,9 @@ int cs_convert_rope(cs_loader *l, const cs_node *rope, cs_rope_def *out, double 
 static void convert_cable(cs_loader *l, const cs_node *c, cs_cable_def *out) {
     *out = cs_default_cable_def();
     const cs_node *name = cs_node_get(c, "rope");
-    const cs_node *rope = name ? cs_find_part(l, name->source, "ropes", name->text, name) : NULL;
+    const cs_node *rope = name ? cs_find_part(l, name->source, CS_PART_ROPE, name->text, name) : NULL;
     if (rope && cs_convert_rope(l, rope, &out->rope, NULL) != 0) return;
-    if (fields(l, c, out, 1) != 0 || !rope || cs_damaged(l, c)) return;
+    if (fields(l, c, out, 1) != 0 || !rope || cs_damaged(c)) return;
     const cs_rope_def *r = &out->rope;
     double fu = r->nominal_strength, strain_fu = cs_rope_strain_at_strength(r);
     if (r->breaking_strain <= strain_fu)
@@ -326,7 +325,7 @@ static void convert_cable(cs_loader *l, const cs_node *c, cs_cable_def *out) {
 static void convert_rail(cs_loader *l, const cs_node *r, cs_rail_def *out) {
     *out = cs_default_rail_def();
     const cs_node *name = cs_node_get(r, "rail");
-    const cs_node *part = name ? cs_find_part(l, name->source, "rails", name->text, name) : NULL;
+    const cs_node *part = name ? cs_find_part(l, name->source, CS_PART_RAIL, name->text, name) : NULL;
     if (part) fields(l, part, out, 1);
     fields(l, r, out, 1);
 }
@@ -419,7 +418,7 @@ static int convert_group(cs_loader *l, const cs_node *g, const cs_node *soil, cs
     int before = l->error_count;
     *def = cs_default_post_def();
     const cs_node *name = cs_node_get(g, "section");
-    const cs_node *section = name ? cs_find_part(l, name->source, "sections", name->text, name) : NULL;
+    const cs_node *section = name ? cs_find_part(l, name->source, CS_PART_SECTION, name->text, name) : NULL;
     if (section) fields(l, section, &def->section, 1);
     if (soil) fields(l, soil, &def->footing, 0);
     fields(l, g, def, 1);
@@ -526,29 +525,48 @@ static const cs_node *post_position(const cs_node *group) {
 /* The longest span of the ropes between two supports (docs/assumptions.md, "Ranges of the inputs"). */
 #define CS_MAX_SPAN 100.0
 
+/* The first post (in x order) lower than height, or n if none, from low[p], the lowest of posts 0 to p,
+ * which never rises along p: a bisection, so that c cables against n posts cost n + c log n, not c n. */
+static int first_below(cs_loader *l, const double *low, int n, double height) {
+    int lo = 0, hi = n;
+    while (lo < hi) {
+        int mid = lo + (hi - lo) / 2;
+        if (low[mid] < height)
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    l->work++; /* one look-up (its log2 n probes not counted) */
+    return lo;
+}
+
 static void check_barrier(cs_loader *l, const cs_node *barrier, const cs_barrier_def *b) {
     const cs_node *cables = cs_node_get(barrier, "cables"), *anchors = cs_node_get(barrier, "anchors");
     const cs_post_def *first = &b->posts[0], *last = &b->posts[b->post_count - 1];
     const cs_node *rails = cs_node_get(barrier, "rails");
-    for (int r = 0; r < b->rail_count; r++)
-        for (int p = 0; p < b->post_count; p++) {
-            if (b->rails[r].height <= b->posts[p].height) continue;
+    double *low = cs_arena_alloc(l, (size_t)b->post_count * sizeof *low);
+    if (!low) {
+        cs_err_at(l, INT_MIN, 0, 0, "out of memory");
+        return;
+    }
+    for (int p = 0; p < b->post_count; p++, l->work++)
+        low[p] = p && low[p - 1] < b->posts[p].height ? low[p - 1] : b->posts[p].height;
+    for (int r = 0; r < b->rail_count; r++) {
+        int p = first_below(l, low, b->post_count, b->rails[r].height);
+        if (p < b->post_count)
             cs_err_node(
                 l, blamed(at(rails->items[r], "height"), at(l->post_origin[p], "height")), 0,
                 "the rail (%g m) is above the top of the post at x = %g m (%g m) (expected a height up "
                 "to the posts' tops)",
                 b->rails[r].height, b->posts[p].x, b->posts[p].height);
-            break;
-        }
+    }
     for (int c = 0; c < b->cable_count; c++) {
-        for (int p = 0; p < b->post_count; p++) {
-            if (b->cables[c].height <= b->posts[p].height) continue;
+        int p = first_below(l, low, b->post_count, b->cables[c].height);
+        if (p < b->post_count)
             cs_err_node(l, blamed(at(cables->items[c], "height"), at(l->post_origin[p], "height")), 0,
                         "the cable (%g m) is above the top of the post at "
                         "x = %g m (%g m) (expected a height up to the posts' tops)",
                         b->cables[c].height, b->posts[p].x, b->posts[p].height);
-            break;
-        }
     }
     for (int c = 0; c < b->cable_count; c++)
         check_slip(l, cables->items[c], &b->cables[c]);
@@ -689,7 +707,7 @@ int cs_convert_model(cs_loader *l, const cs_node *root, const char *file, cs_mod
     l->scenario_node = scenario;
     if (vehicle) cs_convert_vehicle(l, vehicle, &out->vehicle);
     out->scenario = cs_default_scenario_def();
-    int scenario_ok = scenario && fields(l, scenario, &out->scenario, 1) == 0 && !cs_damaged(l, scenario);
+    int scenario_ok = scenario && fields(l, scenario, &out->scenario, 1) == 0 && !cs_damaged(scenario);
     if (scenario_ok) check_scenario(l, scenario, &out->scenario, NULL, NULL);
     if (!barrier) return l->error_count - before;
     int barrier_before = l->error_count;
@@ -719,7 +737,7 @@ int cs_convert_model(cs_loader *l, const cs_node *root, const char *file, cs_mod
     out->barrier.rails = rail_defs;
     out->barrier.rail_count = rails ? rails->count : 0;
     convert_posts(l, barrier, &out->barrier);
-    if (l->error_count == barrier_before && !cs_damaged(l, barrier)) {
+    if (l->error_count == barrier_before && !cs_damaged(barrier)) {
         check_barrier(l, barrier, &out->barrier);
         if (scenario_ok && l->error_count == barrier_before)
             check_scenario(l, scenario, &out->scenario, &out->barrier, vehicle ? &out->vehicle : NULL);

@@ -50,8 +50,11 @@ static void drop_sets(cs_loader *l) {
 }
 
 void cs_loader_reset(cs_loader *l) {
-    for (int i = 0; i < l->file_count; i++)
+    for (int i = 0; i < l->file_count; i++) {
         cs_ytree_free(&l->files[i].tree);
+        for (int k = 0; k < CS_PART_KIND_COUNT; k++)
+            free(l->files[i].named[k]);
+    }
     free(l->files);
     for (int i = 0; i < l->error_count; i++)
         free(l->errors[i].text);
@@ -228,15 +231,13 @@ cs_status cs_loader_load_buffer(cs_loader *l, const char *name, const char *data
 
 /* ---- the library ---- */
 
-static const char *const part_lists[CS_PART_KIND_COUNT] = {"vehicles", "ropes", "sections", "rails"};
-
 int cs_loader_library(cs_loader *l, cs_part_kind kind, const char ***names, const char ***descriptions) {
     if (cs_library_read(l) != 0) return -1;
     int count = 0;
     for (int pass = 0; pass < 2; pass++) {
         int n = 0;
         for (int f = l->library_first; f < l->library_end; f++) {
-            const cs_node *seq = cs_node_get(cs_node_get(l->files[f].root, "parts"), part_lists[kind]);
+            const cs_node *seq = cs_node_get(cs_node_get(l->files[f].root, "parts"), cs_part_lists[kind]);
             for (int i = 0; seq && i < seq->count; i++, n++) {
                 const cs_node *nm = cs_node_get(seq->items[i], "name"),
                               *d = cs_node_get(seq->items[i], "description");
@@ -258,7 +259,7 @@ int cs_loader_library(cs_loader *l, cs_part_kind kind, const char ***names, cons
 cs_status cs_loader_part(cs_loader *l, cs_part_kind kind, const char *name, void *def) {
     if (cs_library_read(l) != 0) return CS_ERR_INVALID;
     cs_node at = {.kind = CS_Y_SCALAR, .text = name, .source = INT_MIN, .path = name};
-    const cs_node *part = cs_find_part(l, cs_main_file(l), part_lists[kind], name, &at);
+    const cs_node *part = cs_find_part(l, cs_main_file(l), kind, name, &at);
     if (!part) return CS_ERR_INVALID;
     int errors = 0;
     if (kind == CS_PART_VEHICLE)

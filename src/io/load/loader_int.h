@@ -24,6 +24,13 @@ typedef struct cs_node {
     const cs_ynode *at; /* where it is written in that file (NULL: not in a file) */
 } cs_node;
 
+/* A named part of a file's list, for its index by name. */
+typedef struct cs_named {
+    const char *name;
+    const struct cs_node *part;
+    int order; /* its place in the list */
+} cs_named;
+
 typedef struct cs_lfile {
     char *name;       /* as given, for messages */
     char *real;       /* canonical path, to find it again */
@@ -34,6 +41,9 @@ typedef struct cs_lfile {
     int loading;           /* being loaded (a reference cycle if met again) */
     int referenced;        /* named by another model's file: its text is not echoed when it is not a model */
     int odd_line, odd_col; /* referenced and not a model: where it shows (0: it is one) */
+    cs_named *named[CS_PART_KIND_COUNT]; /* its parts of each kind by name, then place (parts.c): made at
+                                          * the first look in a loaded file (NULL: not yet) */
+    int named_count[CS_PART_KIND_COUNT];
 } cs_lfile;
 
 typedef struct cs_lerror {
@@ -66,6 +76,8 @@ struct cs_loader {
     const cs_node **post_origin; /* group node of each loaded post */
     const cs_node **cable_origin;
     const cs_node *vehicle_node, *scenario_node, *anchors_node, *soil_node;
+    unsigned long work; /* the steps of its reading and lookups since it was made or reset: nodes read,
+                         * built and checked, keys and names compared (a test's measure of its cost) */
 };
 
 /* The arena (lstore.c). */
@@ -86,8 +98,8 @@ void cs_field_hint(const cs_field *f, char *buf, size_t size);
 int cs_file_load(cs_loader *l, const char *path, const cs_node *from);
 /* The same for contents held in memory under a name (files it refers to are found from its folder). */
 int cs_data_load(cs_loader *l, const char *name, const char *data, size_t size);
-/* Does the node's subtree hold a key or value whose shape was reported wrong? */
-int cs_damaged(const cs_loader *l, const cs_node *n);
+/* Does the node's subtree in its file hold a key or value whose shape was reported wrong? */
+int cs_damaged(const cs_node *n);
 /* The field of a mapping node by key (NULL if absent). */
 const cs_node *cs_node_get(const cs_node *map, const char *key);
 
@@ -101,8 +113,10 @@ int cs_main_file(const cs_loader *l);
 const cs_node *cs_resolve_top(cs_loader *l, const cs_node *node, const char *key);
 /* Resolve references of a file's model (vehicle/barrier/scenario) into a fresh root. */
 cs_node *cs_resolve_model(cs_loader *l, int file);
-/* A named part (list: "vehicles", "ropes", "sections") seen from a source, resolved. NULL if absent. */
-const cs_node *cs_find_part(cs_loader *l, int source, const char *list, const char *name,
+/* The lists of parts: "vehicles", "ropes", "sections", "rails", by kind. */
+extern const char *const cs_part_lists[CS_PART_KIND_COUNT];
+/* A named part of a kind seen from a source, resolved. NULL if absent (an error recorded at from). */
+const cs_node *cs_find_part(cs_loader *l, int source, cs_part_kind kind, const char *name,
                             const cs_node *from);
 int cs_library_read(cs_loader *l);
 /* The parts library's folder by the lookup order of datadir.c into dir, and in note where it came from

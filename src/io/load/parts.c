@@ -67,22 +67,56 @@ int cs_library_read(cs_loader *l) {
     return ok ? 0 : -1;
 }
 
-static const cs_node *find_in_file(const cs_loader *l, int file, const char *list, const char *name) {
-    if (file < 0 || file >= l->file_count) return NULL;
-    const cs_node *seq = cs_node_get(cs_node_get(l->files[file].root, "parts"), list);
-    for (int i = 0; seq && i < seq->count; i++) {
-        const cs_node *n = cs_node_get(seq->items[i], "name");
-        if (n && strcmp(n->text, name) == 0) return seq->items[i];
-    }
-    return NULL;
+const char *const cs_part_lists[CS_PART_KIND_COUNT] = {"vehicles", "ropes", "sections", "rails"};
+
+static int by_name(const void *a, const void *b) {
+    const cs_named *x = a, *y = b;
+    int c = strcmp(x->name, y->name);
+    return c ? c : (x->order > y->order) - (x->order < y->order);
 }
 
-static void part_names(const cs_loader *l, int file, const char *list, char *buf, size_t size) {
+/* A loaded file's parts of a kind sorted by name, then place, made once: a model naming n parts among m
+ * costs m log m + n log m, not n m. 0, or -1 when memory is short. */
+static int index_parts(cs_loader *l, cs_lfile *lf, cs_part_kind kind) {
+    const cs_node *seq = cs_node_get(cs_node_get(lf->root, "parts"), cs_part_lists[kind]);
+    int n = 0;
+    cs_named *named = malloc(((size_t)(seq ? seq->count : 0) + 1) * sizeof *named);
+    if (!named) return -1;
+    for (int i = 0; seq && i < seq->count; i++, l->work++) {
+        const cs_node *nm = cs_node_get(seq->items[i], "name");
+        if (nm) named[n++] = (cs_named){nm->text, seq->items[i], i};
+    }
+    qsort(named, (size_t)n, sizeof *named, by_name);
+    lf->named[kind] = named;
+    lf->named_count[kind] = n;
+    return 0;
+}
+
+/* The first part of a kind named name in a file's list, or NULL. */
+static const cs_node *find_in_file(cs_loader *l, int file, cs_part_kind kind, const char *name) {
+    if (file < 0 || file >= l->file_count || !l->files[file].root) return NULL;
+    cs_lfile *lf = &l->files[file];
+    if (!lf->named[kind] && index_parts(l, lf, kind) != 0) return NULL;
+    int lo = 0, hi = lf->named_count[kind];
+    while (lo < hi) { /* the first of name or after it */
+        int mid = lo + (hi - lo) / 2;
+        if (strcmp(lf->named[kind][mid].name, name) < 0)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    l->work++; /* one look-up (its log2 n probes not counted) */
+    return lo < lf->named_count[kind] && strcmp(lf->named[kind][lo].name, name) == 0
+               ? lf->named[kind][lo].part
+               : NULL;
+}
+
+static void part_names(const cs_loader *l, int file, cs_part_kind kind, char *buf, size_t size) {
     size_t n = 0;
     buf[0] = '\0';
     for (int f = 0; f < l->file_count && n < size; f++) {
         if (f != file && (f < l->library_first || f >= l->library_end)) continue;
-        const cs_node *seq = cs_node_get(cs_node_get(l->files[f].root, "parts"), list);
+        const cs_node *seq = cs_node_get(cs_node_get(l->files[f].root, "parts"), cs_part_lists[kind]);
         for (int i = 0; seq && i < seq->count && n < size; i++) {
             const cs_node *nm = cs_node_get(seq->items[i], "name");
             if (nm) n += (size_t)snprintf(buf + n, size - n, "%s%s", n ? ", " : "", nm->text);
@@ -94,16 +128,17 @@ int cs_main_file(const cs_loader *l) {
     return l->library_state && l->library_first == 0 ? l->library_end : 0;
 }
 
-const cs_node *cs_find_part(cs_loader *l, int source, const char *list, const char *name,
+const cs_node *cs_find_part(cs_loader *l, int source, cs_part_kind kind, const char *name,
                             const cs_node *from) {
     int file = source >= 0 ? source : cs_main_file(l);
-    const cs_node *found = find_in_file(l, file, list, name);
+    const cs_node *found = find_in_file(l, file, kind, name);
     cs_library_read(l);
     for (int f = l->library_first; !found && f < l->library_end; f++)
-        if (l->files[f].root) found = find_in_file(l, f, list, name);
+        found = find_in_file(l, f, kind, name);
     if (!found) {
+        const char *list = cs_part_lists[kind];
         char names[600];
-        part_names(l, file, list, names, sizeof names);
+        part_names(l, file, kind, names, sizeof names);
         cs_err_node(l, from, 0, "no %.*s part named '%s' (expected one of: %s)", (int)strlen(list) - 1, list,
                     name, names);
         return NULL;
@@ -115,7 +150,7 @@ const cs_node *cs_find_part(cs_loader *l, int source, const char *list, const ch
         return NULL;
     }
     l->depth++;
-    const cs_node *base = cs_find_part(l, found->source, list, base_name->text, base_name);
+    const cs_node *base = cs_find_part(l, found->source, kind, base_name->text, base_name);
     l->depth--;
     return base ? merge(l, found, base) : NULL;
 }
@@ -130,7 +165,7 @@ static void relative_to(const char *path, const char *name, char *out, size_t si
 }
 
 const cs_node *cs_resolve_top(cs_loader *l, const cs_node *node, const char *key) {
-    if (node->kind == CS_Y_SCALAR) return cs_find_part(l, node->source, "vehicles", node->text, node);
+    if (node->kind == CS_Y_SCALAR) return cs_find_part(l, node->source, CS_PART_VEHICLE, node->text, node);
     const cs_node *file = cs_node_get(node, "file"), *part = cs_node_get(node, "part"), *base = NULL;
     if (file && part) {
         cs_err_node(l, part, 1, "give file or part, not both (expected one source for the %s)", key);
@@ -142,7 +177,7 @@ const cs_node *cs_resolve_top(cs_loader *l, const cs_node *node, const char *key
     }
     l->depth++;
     if (part) {
-        base = cs_find_part(l, part->source, "vehicles", part->text, part);
+        base = cs_find_part(l, part->source, CS_PART_VEHICLE, part->text, part);
     } else if (file) {
         char path[PATH_MAX];
         relative_to(node->source >= 0 ? l->files[node->source].real : ".", file->text, path, sizeof path);

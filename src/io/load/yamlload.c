@@ -62,20 +62,23 @@ static int misfit(cs_loader *l, int file, const cs_ynode *e, const cs_schema_pla
     return 1;
 }
 
-/* Schema paths whose values are left out of this file's nodes (their shape is wrong, already reported). */
+/* Schema paths whose values are left out of this file's nodes (their shape is wrong, already reported),
+ * each once: at most the schema's paths, however many values of a path are wrong. */
 typedef struct skips {
     char **path;
     int count, capacity;
 } skips;
 
-static int skipped(const skips *sk, const char *skey) {
-    for (int i = 0; i < sk->count; i++)
+static int skipped(cs_loader *l, const skips *sk, const char *skey) {
+    for (int i = 0; i < sk->count; i++) {
+        l->work++;
         if (strcmp(sk->path[i], skey) == 0) return 1;
+    }
     return 0;
 }
 
 static void skip(cs_loader *l, skips *sk, const char *skey) {
-    if (cs_grow(&sk->path, &sk->capacity, sk->count, sizeof *sk->path) == 0 &&
+    if (!skipped(l, sk, skey) && cs_grow(&sk->path, &sk->capacity, sk->count, sizeof *sk->path) == 0 &&
         (sk->path[sk->count] = cs_arena_strdup(l, skey)))
         sk->count++;
 }
@@ -87,12 +90,14 @@ static void table_keys(const cs_table *t, char *buf, size_t size) {
         n += (size_t)snprintf(buf + n, size - n, "%s%s", i ? ", " : "", t->fields[i].key);
 }
 
-/* Check every node's key and shape; report each problem at its place. */
+/* Check every node's key and shape; report each problem at its place, and mark bad its node and those
+ * above it (cs_damaged). */
 static void check_shape(cs_loader *l, int file, skips *sk) {
     cs_ytree *tree = &l->files[file].tree;
     for (int i = 0; i < tree->count; i++) {
         cs_ynode *e = &tree->items[i];
         int before = l->error_count;
+        l->work++;
         cs_schema_place s;
         cs_schema_walk(e->path, &s);
         int known = s.fault == CS_PATH_OK;
@@ -109,23 +114,19 @@ static void check_shape(cs_loader *l, int file, skips *sk) {
                       e->path, plen ? ": " : "", s.key, want);
         } else if (known && misfit(l, file, e, &s, e->path)) {
             skip(l, sk, s.skey);
-        } else if (known && e->duplicate) {
-            const cs_ynode *first = cs_ytree_find(tree, e->path);
+        } else if (known && e->first) {
             cs_err_at(l, file, e->key_line, e->key_col, "%s: given twice (first at %d:%d)", e->path,
-                      first->key_line, first->key_col);
+                      e->first->key_line, e->first->key_col);
             skip(l, sk, s.skey);
         }
         e->bad = l->error_count > before;
     }
+    for (int i = tree->count - 1; i > 0; i--) /* a node's parent comes before it */
+        if (tree->items[i].bad) tree->items[tree->items[i].parent].bad = 1;
 }
 
-int cs_damaged(const cs_loader *l, const cs_node *n) {
-    if (n->source < 0) return 0;
-    const cs_ytree *tree = &l->files[n->source].tree;
-    size_t len = strlen(n->path);
-    for (int i = 0; i < tree->count; i++)
-        if (tree->items[i].bad && strncmp(tree->items[i].path, n->path, len) == 0) return 1;
-    return 0;
+int cs_damaged(const cs_node *n) {
+    return n->source >= 0 && n->at && n->at->bad;
 }
 
 /* ---- the tree's values into nodes ---- */
@@ -154,6 +155,7 @@ static int value(const build *b, cs_node **n, const cs_ynode *y, const cs_field 
     if (misfit(b->l, b->file, y, &s, path)) return 1;
     const cs_ynode *v = cs_ynode_value(y);
     cs_node *m = cs_arena_alloc(b->l, sizeof *m);
+    b->l->work++;
     if (!m || !(m->path = cs_arena_strdup(b->l, path))) return -1;
     m->kind = v->kind;
     m->source = b->file;
@@ -180,8 +182,9 @@ static int fill(const build *b, cs_node *n, const cs_ynode *y, const cs_field *f
             const cs_field *g = &t->fields[i];
             char sub[256];
             snprintf(sub, sizeof sub, "%s%s%s", skey, skey[0] ? "." : "", g->key);
-            const cs_ynode *kid = cs_ynode_get(y, g->key);
-            if (kid && !skipped(b->sk, sub)) rc = value(b, &n->items[i], kid, g, 0, n->path, g->key, 0, sub);
+            const cs_ynode *kid = cs_ynode_get_counted(y, g->key, &b->l->work);
+            if (kid && !skipped(b->l, b->sk, sub))
+                rc = value(b, &n->items[i], kid, g, 0, n->path, g->key, 0, sub);
         }
         if (rc < 0 || (rc > 0 && seq)) return rc;
     }
@@ -209,6 +212,7 @@ static int read_file(cs_loader *l, int file) {
             cs_err_at(l, file, lf->tree.error_line, lf->tree.error_col, "%s", lf->tree.error);
         return -1;
     }
+    l->work += lf->tree.work;
     const cs_ynode *at = lf->referenced ? odd_top(&lf->tree) : NULL;
     if (at) { /* perhaps someone else's file: cs_file_load reports where, never what */
         lf->odd_line = at->key_line;

@@ -22,11 +22,11 @@ typedef struct frame {
     char *anchor; /* its anchor, named once it ends */
 } frame;
 
-/* An anchor: its name, its node, and how many nodes were read when it was complete (an alias among
- * them, inside its own node, cannot name it). */
+/* An anchor: its name, its node, how many nodes were read when it was complete (an alias among them,
+ * inside its own node, cannot name it) and how many anchors were complete before it. */
 typedef struct anchor {
     char *name;
-    int node, complete_at;
+    int node, complete_at, order;
 } anchor;
 
 typedef struct reader {
@@ -50,7 +50,7 @@ static int add_anchor(reader *r, const char *name, int node) {
     if (!(a->name = strdup(name))) return -1;
     a->node = node;
     a->complete_at = r->tree->count;
-    r->anchor_count++;
+    a->order = r->anchor_count++;
     return 0;
 }
 
@@ -91,6 +91,7 @@ static int add(cs_ytree *t, const frame *parent, cs_ykind kind, const yaml_event
         return -1;
     }
     t->items[t->count] = n;
+    t->work++;
     return t->count++;
 }
 
@@ -191,22 +192,55 @@ static int by_key(const void *a, const void *b) {
     return c ? c : (x < y ? -1 : x > y);
 }
 
-/* Mark each entry of a map whose key an earlier entry has (a key given twice): the entries sorted by key,
- * so that a map of n keys costs n log n, not n^2. 0, or -1 when memory is short. */
-static int mark_duplicates(cs_ynode *map) {
+/* Point each entry of a map whose key an earlier entry has (a key given twice) at that first entry: the
+ * entries sorted by key, so that a map of n keys costs n log n, not n^2. 0, or -1 when memory is short. */
+static int mark_duplicates(cs_ytree *t, cs_ynode *map) {
     if (map->count < 2) return 0;
     cs_ynode **sorted = malloc((size_t)map->count * sizeof *sorted);
     if (!sorted) return -1;
     memcpy(sorted, map->kids, (size_t)map->count * sizeof *sorted);
     qsort(sorted, (size_t)map->count, sizeof *sorted, by_key);
     for (int i = 1; i < map->count; i++)
-        sorted[i]->duplicate = strcmp(sorted[i]->key, sorted[i - 1]->key) == 0;
+        if (strcmp(sorted[i]->key, sorted[i - 1]->key) == 0)
+            sorted[i]->first = sorted[i - 1]->first ? sorted[i - 1]->first : sorted[i - 1];
+    t->work += (unsigned long)map->count;
     free(sorted);
     return 0;
 }
 
-/* Link every node to its parent's list, mark a map's keys given twice and every alias to its anchor's
- * node. */
+/* Order of anchors by name, then by when they were complete. */
+static int by_name(const void *a, const void *b) {
+    const anchor *x = a, *y = b;
+    int c = strcmp(x->name, y->name);
+    return c ? c : (x->order > y->order) - (x->order < y->order);
+}
+
+/* The node an alias at node i names: of the anchors of its name complete before it (sorted by by_name),
+ * the last; NULL if none. Two binary searches: a file of n aliases and anchors costs n log n. */
+static const cs_ynode *anchored(cs_ytree *t, const anchor *sorted, int count, const char *name, int i) {
+    int lo = 0, hi = count; /* the first anchor of name or after it */
+    while (lo < hi) {
+        int mid = lo + (hi - lo) / 2;
+        if (strcmp(sorted[mid].name, name) < 0)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    int first = lo;
+    hi = count; /* past the last anchor of name complete by i */
+    while (lo < hi) {
+        int mid = lo + (hi - lo) / 2;
+        if (strcmp(sorted[mid].name, name) == 0 && sorted[mid].complete_at <= i)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    t->work++; /* one look-up (its 2 log2 n probes not counted) */
+    return lo > first ? &t->items[sorted[lo - 1].node] : NULL;
+}
+
+/* Link every node to its parent's list, a map's keys given twice to their first and every alias to its
+ * anchor's node. */
 static int link(reader *r) {
     cs_ytree *t = r->tree;
     if (t->count == 0) return 0;
@@ -224,13 +258,11 @@ static int link(reader *r) {
         p->kids[p->count++] = &t->items[i];
     }
     for (int i = 0; i < t->count; i++)
-        if (t->items[i].kind == CS_Y_MAP && mark_duplicates(&t->items[i]) != 0) return -1;
-    for (int i = 0; i < t->count; i++) {
-        cs_ynode *n = &t->items[i];
-        for (int a = r->anchor_count - 1; n->kind == CS_Y_ALIAS && a >= 0 && !n->target; a--)
-            if (r->anchors[a].complete_at <= i && strcmp(r->anchors[a].name, n->text) == 0)
-                n->target = &t->items[r->anchors[a].node];
-    }
+        if (t->items[i].kind == CS_Y_MAP && mark_duplicates(t, &t->items[i]) != 0) return -1;
+    if (r->anchor_count > 1) qsort(r->anchors, (size_t)r->anchor_count, sizeof *r->anchors, by_name);
+    for (int i = 0; i < t->count; i++)
+        if (t->items[i].kind == CS_Y_ALIAS)
+            t->items[i].target = anchored(t, r->anchors, r->anchor_count, t->items[i].text, i);
     return 0;
 }
 
@@ -277,11 +309,17 @@ const cs_ynode *cs_ytree_find(const cs_ytree *tree, const char *path) {
     return NULL;
 }
 
-const cs_ynode *cs_ynode_get(const cs_ynode *map, const char *key) {
+const cs_ynode *cs_ynode_get_counted(const cs_ynode *map, const char *key, unsigned long *work) {
     if (!map || map->kind != CS_Y_MAP) return NULL;
-    for (int i = 0; i < map->count; i++)
+    for (int i = 0; i < map->count; i++) {
+        if (work) ++*work;
         if (strcmp(map->kids[i]->key, key) == 0) return map->kids[i];
+    }
     return NULL;
+}
+
+const cs_ynode *cs_ynode_get(const cs_ynode *map, const char *key) {
+    return cs_ynode_get_counted(map, key, NULL);
 }
 
 const cs_ynode *cs_ynode_value(const cs_ynode *n) {

@@ -16,13 +16,13 @@ typedef struct cs_ynode {
     char *key;  /* its key in the parent mapping (NULL: the root or a sequence item) */
     char *text; /* a scalar's value; an alias's anchor name */
     cs_ykind kind;
-    int line, col;         /* of the value, 1-based */
-    int key_line, key_col; /* of its key in the parent mapping (= line, col for sequence items) */
-    int end_line, end_col; /* just past a scalar's value as written (its quotes included) */
-    int duplicate;         /* a node earlier in the file has the same path (a key given twice) */
-    int odd_key;           /* its key is empty, 64 characters or longer, or holds '.', '[' or ']' */
-    int bad;               /* its key or shape was reported wrong (set by the reader's user) */
-    int count;             /* mapping, sequence: its nodes, in file order */
+    int line, col;                /* of the value, 1-based */
+    int key_line, key_col;        /* of its key in the parent mapping (= line, col for sequence items) */
+    int end_line, end_col;        /* just past a scalar's value as written (its quotes included) */
+    const struct cs_ynode *first; /* a key given twice: the node of its first place (NULL: the first) */
+    int odd_key;                  /* its key is empty, 64 characters or longer, or holds '.', '[' or ']' */
+    int bad;   /* its key or shape, or one under it, was reported wrong (set by the reader's user) */
+    int count; /* mapping, sequence: its nodes, in file order */
     struct cs_ynode **kids;
     const struct cs_ynode *target; /* alias: the node its anchor named, NULL if no anchor of that name
                                     * was complete before it */
@@ -36,6 +36,7 @@ typedef struct cs_ytree {
     int error_line, error_col; /* YAML syntax error, if error[0] */
     int unreadable;            /* the file could not be read (error says why; no place in it) */
     int open_errno;            /* its errno, when the system refused it (0: cablesim refused it) */
+    unsigned long work;        /* the reading's steps: nodes made, keys and anchors compared */
     char error[200];
 } cs_ytree;
 
@@ -48,6 +49,8 @@ void cs_ytree_free(cs_ytree *tree);
 const cs_ynode *cs_ytree_find(const cs_ytree *tree, const char *path);
 /* The first node of a mapping with key, or NULL (also when map is NULL or not a mapping). */
 const cs_ynode *cs_ynode_get(const cs_ynode *map, const char *key);
+/* The same, adding the keys it compared to *work (the caller's count of its work; NULL: none). */
+const cs_ynode *cs_ynode_get_counted(const cs_ynode *map, const char *key, unsigned long *work);
 /* An alias's anchored node (NULL if none); any other node itself. */
 const cs_ynode *cs_ynode_value(const cs_ynode *n);
 /* "a single value", "a mapping", "a list" or "an alias": a kind in messages. */
