@@ -432,6 +432,11 @@ static int convert_posts(cs_loader *l, const cs_node *barrier, cs_barrier_def *o
     post_slot *posts = malloc(MAX_POSTS * sizeof *posts);
     for (int gi = 0; xs && posts && groups && gi < groups->count; gi++) {
         const cs_node *g = groups->items[gi];
+        if (total == MAX_POSTS) { /* one problem, not one a group past it */
+            cs_err_node(l, g, 0, "more than %d posts (expected at most %d in a barrier)", MAX_POSTS,
+                        MAX_POSTS);
+            break;
+        }
         cs_post_def def;
         int n = positions(l, g, xs, MAX_POSTS - total);
         if (convert_group(l, g, soil, &def) != 0 || n < 0) continue;
