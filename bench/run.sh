@@ -7,10 +7,11 @@
 #   3. cost against barrier length: generated models of 10 to 1,000 posts (bench/gen_posts.sh), each run
 #      to BENCH_POSTS_T_END;
 #   4. peak memory of the command (/usr/bin/time -v) for a run and for the sweep;
-#   5. instructions of the engine (cs_run) for APS1, APS3, APS4 and the 1,000-post model, counted by
+#   5. loading a model of 10,000 and of 100,000 posts, each a group of its own (`cablesim check`);
+#   6. instructions of the engine (cs_run) for APS1, APS3, APS4 and the 1,000-post model, counted by
 #      valgrind's callgrind: unlike wall times on a shared machine they do not move with the load, so a
 #      change of cost shows between two benches (skipped without valgrind, or with BENCH_ICOUNT=0).
-# Each of 1, 2 and 5 also for the build BENCH_BASE names (another engine's build folder, e.g. the previous
+# Each of 1, 2 and 6 also for the build BENCH_BASE names (another engine's build folder, e.g. the previous
 # commit's built in its own worktree), run alternately with this one, side by side in the same tables.
 # Settings (environment): BUILD (build), BENCH_BASE (empty: none), BENCH_N (1000, the issue's Monte Carlo),
 # BENCH_T_END (empty: the model's own, 3 s, or until the truck stops or breaks through), BENCH_POSTS
@@ -168,6 +169,32 @@ echo "bench: cost against barrier length..."
         else
             echo "| $n | failed | | | | | $(tr '\n|' '  ' <"$out/posts-$n.err") | | |"
         fi
+    done
+    echo
+} >>"$md"
+
+echo "bench: loading 10,000 and 100,000 posts..."
+{
+    echo "## Loading a model of many posts"
+    echo
+    echo "\`$cs check posts-one-N.yaml\`: bench/gen_posts.sh's model with each post a group of its own (\`x: [...]\`),"
+    echo "N lines of YAML; 100,000 posts are past the loader's 10,000 and refused, after the whole file is read"
+    echo "and checked. The loader's work is linear in N (tests/test_io_loader_work.c counts it)."
+    echo
+    echo "| posts | wall time | CPU time (user + sys) | status |"
+    echo "| --- | --- | --- | --- |"
+    for n in 10000 100000; do
+        f="$out/posts-one-$n.yaml"
+        bash bench/gen_posts.sh "$n" | awk -v n="$n" -v g="section: CF-I4x1.75, height: 7 ft, attachment: through, \
+footing: {diameter: 9 in, depth: 3 ft, rotation_limit: 45 deg, pullout_capacity: 20 kip}" '/^  posts:/ { print
+            for (i = 1; i <= n; i++) printf "    - {x: [%d in], %s}\n", 96 + (i - 1) * 3, g
+            skip = 1; next } skip && /^  anchors:/ { skip = 0 } !skip' |
+            sed -e "s/end: {x: [0-9]* ft/end: {x: $((96 + n * 3)) in/" -e "s/impact_x: [0-9]* ft/impact_x: 100 ft/" >"$f"
+        t=$({ TIMEFORMAT="%3R %3U %3S"; time "$cs" check "$f" >/dev/null 2>"$out/posts-one-$n.err"; } 2>&1 | tail -1)
+        rc=$(grep -q "valid model" "$out/posts-one-$n.err" && echo loaded || echo refused)
+        "$cs" check "$f" >/dev/null 2>&1 && rc=loaded
+        read -r w u s <<<"$t"
+        echo "| $n | $w s | $(awk -v u="$u" -v s="$s" 'BEGIN { printf "%.2f", u + s }') s | $rc |"
     done
     echo
 } >>"$md"
