@@ -33,6 +33,18 @@ check "a vehicle that would pass the barrier's end is refused (status 2), where 
 "$cs" run examples/aps3.yaml -o "$tmp/shallow" --t-end "0.3 s" --set "scenario.angle=3 deg" --set scenario.impact_at=corner >"$tmp/stdout" 2>&1
 check "at 3 deg to the corner the ropes take the vehicle" \
     'grep -oE "\"max_barrier_deflection_m\":[0-9.]+" "$tmp/shallow/summary.json" | awk -F: "{ exit !(\$2 > 0.1) }"'
+# At 1 deg and at 179 deg (the same approach from the other side) the corner glances along the line: each
+# run gives what happened (the ropes pushed out, the vehicle still going at 0.3 s: time_limit), and the two,
+# mirror images, agree within 2% in the barrier's deflection.
+for a in 1 179; do
+    "$cs" run examples/aps3.yaml -o "$tmp/glance$a" --t-end "0.3 s" --set "scenario.angle=$a deg" \
+        --set scenario.impact_at=corner >/dev/null 2>&1
+done
+defl() { grep -oE '"max_barrier_deflection_m":[0-9.e-]+' "$tmp/glance$1/summary.json" | cut -d: -f2; }
+check "at 1 and 179 deg the ropes are pushed out and the vehicle goes on (time_limit)" \
+    '[ "$(cat "$tmp"/glance{1,179}/summary.json | grep -c "\"outcome\":\"time_limit\"")" -eq 2 ] && awk -v d="$(defl 1)" "BEGIN { exit !(d > 0.01) }"'
+check "at 1 and 179 deg the deflections agree within 2% (mirror images)" \
+    'awk -v a="$(defl 1)" -v b="$(defl 179)" "BEGIN { exit !(a > 0 && (a - b) ^ 2 <= (0.02 * a) ^ 2) }"'
 
 out="$tmp/aps3"
 "$cs" run examples/aps3.yaml -o "$out" --t-end "20 ms" --set scenario.speed="35 mph" >"$tmp/stdout" 2>"$tmp/stderr"
