@@ -5,15 +5,20 @@
 # way, and `sweep --resume DIR` runs the rest and writes the same runs.csv, byte for byte, as a sweep never
 # stopped. The journal is removed once the outputs hold its runs; a failed write of the outputs keeps it.
 source "$(dirname "$0")/lib.sh"
-# kill_when DIR LINES: SIGKILL the sweep $pid once DIR's journal has LINES lines (waiting up to 60 s: a
-# loaded machine is slow to start it), and wait for it; its exit status is wait's
+# kill_when DIR LINES [SIGNAL...]: SIGKILL the sweep $pid (or send it the SIGNALs, one after the other)
+# once DIR's journal has LINES lines (waiting up to 60 s: a loaded machine is slow to start it), and wait
+# for it; its exit status is wait's
 kill_when() {
     for _ in $(seq 6000); do
         [ -e "$1/.cablesim-journal" ] && [ "$(wc -l <"$1/.cablesim-journal")" -ge "$2" ] && break
         kill -0 "$pid" 2>/dev/null || break
         sleep 0.01
     done
-    kill -KILL "$pid" 2>/dev/null
+    local s
+    for s in "${@:3}"; do
+        kill -"$s" "$pid" 2>/dev/null
+    done
+    [ $# -gt 2 ] || kill -KILL "$pid" 2>/dev/null
     wait "$pid" 2>/dev/null
 }
 # 30 runs of 150 ms of APS3 (0.01-0.04 s each on one thread; 12 under the sanitizers, about five times as
@@ -34,6 +39,15 @@ out=$("$cs" sweep --resume "$tmp/killed" 2>&1)
 check "--resume after kill -9: exit 0, the journalled runs read back" '[ $? -eq 0 ] && grep -qF "sweep: $rows runs read back from" <<<"$out" || { echo "$out"; false; }'
 check "--resume after kill -9: runs.csv byte for byte the whole sweep's" 'cmp "$tmp/killed/runs.csv" "$tmp/whole/runs.csv"'
 check "--resume after kill -9: the journal is gone, the manifest lists runs.csv" '[ ! -e "$journal" ] && grep -qx "runs.csv" "$tmp/killed/.cablesim-manifest"'
+
+# a second Ctrl-C (SIGINT twice) ends the sweep at once, as the system does (exit 130), or after it wrote
+# the runs done if it got there first: either way --resume gives the whole sweep's runs.csv
+"$cs" sweep "${spec[@]}" -o "$tmp/int2" --threads 1 --quiet >/dev/null 2>&1 &
+pid=$!
+kill_when "$tmp/int2" 7 INT INT
+check "SIGINT twice: the sweep ends by SIGINT (exit 130)" '[ $? -eq 130 ]'
+"$cs" sweep --resume "$tmp/int2" --quiet >/dev/null 2>&1
+check "--resume after SIGINT twice: runs.csv byte for byte the whole sweep's" '[ $? -eq 0 ] && cmp "$tmp/int2/runs.csv" "$tmp/whole/runs.csv"'
 
 # a journal row cut short by the kill (no newline yet) is dropped: its run runs again
 "$cs" sweep "${spec[@]}" -o "$tmp/cut" --threads 1 --quiet >/dev/null 2>&1 &
