@@ -31,24 +31,23 @@ model "$tmp/m/link.yaml" sub/link.yaml
 out=$("$cs" check "$tmp/m/link.yaml" 2>&1)
 check "a link inside to a file outside: refused" '[ $? -eq 2 ] && grep -qF "'"'"'sub/link.yaml'"'"' is outside the folders" <<<"$out"'
 
-# a FIFO, as the model or as its file: refused at once (no writer ever comes)
+# a FIFO, as the model or as its file: refused without being opened (no writer ever comes, so an open
+# would block for ever; `timeout 20` turns that into a failure)
 mkfifo "$tmp/m/fifo.yaml"
-start=$(date +%s)
 out=$(timeout 20 "$cs" check "$tmp/m/fifo.yaml" 2>&1)
 check "a FIFO as the model: exit 2, 'a FIFO, not a regular file'" '[ $? -eq 2 ] && grep -qF "$tmp/m/fifo.yaml: a FIFO, not a regular file" <<<"$out" || { echo "$out"; false; }'
 model "$tmp/m/to-fifo.yaml" fifo.yaml
 out=$(timeout 20 "$cs" check "$tmp/m/to-fifo.yaml" 2>&1)
-check "a FIFO as a file: exit 2, at once" '[ $? -eq 2 ] && grep -qF "fifo.yaml: a FIFO, not a regular file" <<<"$out" || { echo "$out"; false; }'
-check "both FIFOs refused within 5 s" '[ $(($(date +%s) - start)) -lt 5 ]'
-# the loader's work grows with the model's size, not its square: a list of 100,000 items under a key that
-# is not the model's, and a map of 20,000 keys with one given twice, are each refused at their place
-# within the 20 s allowed (a key given twice was looked for among every node before it: 32 s for the list)
+check "a FIFO as a file: exit 2" '[ $? -eq 2 ] && grep -qF "fifo.yaml: a FIFO, not a regular file" <<<"$out" || { echo "$out"; false; }'
+# a list of 100,000 items under a key that is not the model's, and a map of 20,000 keys with one given
+# twice, are each refused at their place (the loader's work is linear in the model's size: counted by
+# test_io_loader_work; timed by make bench)
 { cat examples/aps3.yaml; printf 'extra:\n'; seq 1 100000 | sed 's/^/  - /'; } >"$tmp/m/list.yaml"
 out=$(timeout 20 "$cs" check "$tmp/m/list.yaml" --allow-path examples 2>&1)
-check "a 100,000-item list: its key refused at its place, at once" '[ $? -eq 2 ] && grep -q "list.yaml:[0-9]*:1: unknown key .extra." <<<"$out" || { echo "$out"; false; }'
+check "a 100,000-item list: its key refused at its place" '[ $? -eq 2 ] && grep -q "list.yaml:[0-9]*:1: unknown key .extra." <<<"$out" || { echo "$out"; false; }'
 { cat examples/aps3.yaml; printf 'extra:\n'; seq 1 20000 | sed 's/^\(.*\)$/  k\1: 1/'; printf '  k7: 2\n'; } >"$tmp/m/map.yaml"
 out=$(timeout 20 "$cs" check "$tmp/m/map.yaml" --allow-path examples 2>&1)
-check "a map of 20,000 keys: refused at once" '[ $? -eq 2 ] && grep -q "map.yaml:[0-9]*:1: unknown key .extra." <<<"$out" || { echo "$out"; false; }'
+check "a map of 20,000 keys: refused at its place" '[ $? -eq 2 ] && grep -q "map.yaml:[0-9]*:1: unknown key .extra." <<<"$out" || { echo "$out"; false; }'
 { cat examples/aps3.yaml; printf 'description: one\ndescription: two\n'; } >"$tmp/m/twice.yaml"
 out=$("$cs" check "$tmp/m/twice.yaml" --allow-path examples 2>&1)
 check "a key given twice: the second named, with the first's place" '[ $? -eq 2 ] && grep -q "twice.yaml:[0-9]*:1: description: given twice (first at [0-9]*:1)" <<<"$out" || { echo "$out"; false; }'
