@@ -96,14 +96,15 @@ rss_run=$(peak_kb "$cs" run examples/aps3.yaml -o "$out/aps3" "${t_end_args[@]}"
     echo "its start to its end, loading the model, settling the barrier, running and writing the files; no"
     echo "plots), each best of $REPEAT; with two builds, each measured in turn."
     echo
-    echo "| build | \`cablesim run\` (best) | its CPU time (best) | engine time (best) | median | CPU time (best) | simulated | steps | steps/s | per step | outcome | load | peak memory (engine / \`cablesim run\`) |"
-    echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+    echo "| build | \`cablesim run\` (best) | its CPU time (best) | engine time (best) | median | CPU time (best) | whole run over the engine (CPU, best against best) | simulated | steps | steps/s | per step | outcome | load | peak memory (engine / \`cablesim run\`) |"
+    echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
     for d in "${builds[@]}"; do
         o=${one[$d]}
         rss="n/a"
         [ "$d" = "$BUILD" ] && rss=$rss_run
         read -r wall cpu <<<"${cmd[$d]}"
-        echo "| \`$d\` | **$wall ms** | $cpu ms | **$(field engine_ms_best "$o") ms** | $(field engine_ms_median "$o") ms | $(field cpu_ms_best "$o") ms | $(field t_reached_s "$o") s | $(field steps "$o") | $(field steps_per_s "$o") | $(field us_per_step "$o") us | $(field outcome "$o") | $(field load_ms "$o") ms | $(field peak_rss_kb "$o") kB / $rss kB |"
+        ratio=$(awk -v a="$cpu" -v b="$(field cpu_ms_best "$o")" 'BEGIN { printf (b > 0 ? "%.2f" : "n/a"), a / b }')
+        echo "| \`$d\` | **$wall ms** | $cpu ms | **$(field engine_ms_best "$o") ms** | $(field engine_ms_median "$o") ms | $(field cpu_ms_best "$o") ms | **$ratio** | $(field t_reached_s "$o") s | $(field steps "$o") | $(field steps_per_s "$o") | $(field us_per_step "$o") us | $(field outcome "$o") | $(field load_ms "$o") ms | $(field peak_rss_kb "$o") kB / $rss kB |"
     done
     echo
 } >>"$md"
