@@ -5,7 +5,8 @@
  * The cables' generalised moment on the post is Q = sum z J^T F, J = da/dalpha (virtual work), and the
  * post resists with an elastic-plastic rotational spring: k (alpha - alpha_p) up to the capacity
  * M_cap, then rotation at constant moment (the plastic hinge of Eqs. 13-20, or the footing rotating
- * in the soil past Eq. 21). k is the cantilever of Eqs. 10-11 seen at the load height h in series with
+ * in the soil past Eq. 21); past the tilt at which its top reaches grade the ground stops it (a post
+ * down keeps its ropes). k is the cantilever of Eqs. 10-11 seen at the load height h in series with
  * the footing's elastic turn in the soil (model.c, footing.c).
  * Whichever of post and footing holds the smaller pull at h yields: the post at Zx Fy about its base
  * (M_cap = Zx Fy), or the footing at P(h), turning about a pivot 2/3 of its depth down (M_cap = P(h) (h +
@@ -64,14 +65,14 @@ static double ground_stiffness(const cs_post_model *pm) {
     return pm->moment_cap / CS_GROUND_STOP_TURN;
 }
 
-/* The stop's moment at a tilt (added to q), and, if k is not NULL, its derivative (2 x 2, subtracted
- * from k as the residual's); returns its penetration past the lie angle, rad (0 if clear). */
+/* The stop's moment at a tilt (added to q if not NULL), and, if k is not NULL, its derivative (2 x 2,
+ * subtracted from k as the residual's); returns its penetration past the lie angle, rad (0 if clear). */
 static double ground_stop(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double *q,
                           double *k) {
     double n = v2_norm(tilt[0], tilt[1]);
     if (ps->captured || !(n > pm->lie_angle)) return 0.0;
     double kg = ground_stiffness(pm), u[2] = {tilt[0] / n, tilt[1] / n}, over = n - pm->lie_angle;
-    q[0] += kg * over * u[0], q[1] += kg * over * u[1];
+    if (q) q[0] += kg * over * u[0], q[1] += kg * over * u[1];
     if (k) { /* d(kg (n - lie) u)/dalpha = kg (u u^T + (1 - lie / n)(I - u u^T)) */
         double a = 1.0 - pm->lie_angle / n;
         k[0] -= kg * (u[0] * u[0] + a * (1.0 - u[0] * u[0]));
@@ -147,8 +148,7 @@ static void resistance_slope(const cs_model *model, const cs_state *s, int p, do
         k[0] = k[3] = -pm->k_rot, k[1] = k[2] = 0.0;
     }
     if (cs_post_swings(pm, s->h)) k[0] -= pm->inertia / (s->h * s->h), k[3] -= pm->inertia / (s->h * s->h);
-    double unused[2] = {0.0, 0.0};
-    ground_stop(pm, ps, ps->tilt, unused, k);
+    ground_stop(pm, ps, ps->tilt, NULL, k);
 }
 
 /* Residual of post p at a tilt, its cable nodes placed there and their tensions current:
@@ -265,9 +265,9 @@ int cs_post_check_failure(const cs_model *model, cs_state *s, int p) {
 double cs_post_elastic_energy(const cs_model *model, const cs_state *s, int p) {
     const cs_post_state *ps = &s->posts[p];
     if (!cs_post_in_barrier(ps)) return 0.0;
-    double q[2], g[2] = {0.0, 0.0};
+    double q[2];
     cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
-    double over = ground_stop(&model->posts[p], ps, ps->tilt, g, NULL);
+    double over = ground_stop(&model->posts[p], ps, ps->tilt, NULL, NULL);
     return 0.5 * (q[0] * q[0] + q[1] * q[1]) / model->posts[p].k_rot +
            0.5 * ground_stiffness(&model->posts[p]) * over * over + cs_post_pull_energy(model, s, p);
 }
