@@ -47,7 +47,7 @@ have_time=0
 t_end_args=()
 [ -n "$T_END" ] && t_end_args=(--t-end "$T_END")
 
-field() { grep -o "$1=[^ ]*" <<<"$2" | head -1 | cut -d= -f2; }
+field() { grep -oE "(^| )$1=[^ ]*" <<<"$2" | head -1 | cut -d= -f2; } # key=value, the key whole
 peak_kb() { # peak resident memory of a command, from /usr/bin/time -v
     if [ "$have_time" -eq 1 ]; then
         /usr/bin/time -v "$@" 2>&1 >/dev/null | awk -F: '/Maximum resident set size/ { gsub(/ /, "", $2); print $2 }'
@@ -94,17 +94,21 @@ rss_run=$(peak_kb "$cs" run examples/aps3.yaml -o "$out/aps3" "${t_end_args[@]}"
     echo "\`BUILD/bench_engine examples/aps3.yaml --repeat $REPEAT${T_END:+ --t-end \"$T_END\"}\` (the engine: \`cs_run\` alone)"
     echo "and \`BUILD/cablesim run examples/aps3.yaml -o DIR${T_END:+ --t-end \"$T_END\"}\` (what a user pays: the process from"
     echo "its start to its end, loading the model, settling the barrier, running and writing the files; no"
-    echo "plots), each best of $REPEAT; with two builds, each measured in turn."
+    echo "plots), each best of $REPEAT; with two builds, each measured in turn. The settle is the barrier's"
+    echo "equilibrium under its pretension before the crash (\`cs_state_create\`, made $REPEAT times by bench_engine)."
     echo
-    echo "| build | \`cablesim run\` (best) | its CPU time (best) | engine time (best) | median | CPU time (best) | whole run over the engine (CPU, best against best) | simulated | steps | steps/s | per step | outcome | load | peak memory (engine / \`cablesim run\`) |"
-    echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+    echo "| build | \`cablesim run\` (best) | its CPU time (best) | engine time (best) | median | CPU time (best) | whole run over the engine (wall, best against best) | whole run over the engine (CPU) | settle (CPU, best) | settle over the engine (CPU) | simulated | steps | steps/s | per step | outcome | load | peak memory (engine / \`cablesim run\`) |"
+    echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
     for d in "${builds[@]}"; do
         o=${one[$d]}
         rss="n/a"
         [ "$d" = "$BUILD" ] && rss=$rss_run
         read -r wall cpu <<<"${cmd[$d]}"
         ratio=$(awk -v a="$cpu" -v b="$(field cpu_ms_best "$o")" 'BEGIN { printf (b > 0 ? "%.2f" : "n/a"), a / b }')
-        echo "| \`$d\` | **$wall ms** | $cpu ms | **$(field engine_ms_best "$o") ms** | $(field engine_ms_median "$o") ms | $(field cpu_ms_best "$o") ms | **$ratio** | $(field t_reached_s "$o") s | $(field steps "$o") | $(field steps_per_s "$o") | $(field us_per_step "$o") us | $(field outcome "$o") | $(field load_ms "$o") ms | $(field peak_rss_kb "$o") kB / $rss kB |"
+        wratio=$(awk -v a="$wall" -v b="$(field engine_ms_best "$o")" 'BEGIN { printf (b > 0 ? "%.2f" : "n/a"), a / b }')
+        settle=$(field settle_cpu_ms_best "$o")
+        share=$(awk -v a="$settle" -v b="$(field cpu_ms_best "$o")" 'BEGIN { printf (a != "" && b > 0 ? "%.1f%%" : "n/a"), 100 * a / b }')
+        echo "| \`$d\` | **$wall ms** | $cpu ms | **$(field engine_ms_best "$o") ms** | $(field engine_ms_median "$o") ms | $(field cpu_ms_best "$o") ms | **$wratio** | **$ratio** | ${settle:-n/a} ms | **$share** | $(field t_reached_s "$o") s | $(field steps "$o") | $(field steps_per_s "$o") | $(field us_per_step "$o") us | $(field outcome "$o") | $(field load_ms "$o") ms | $(field peak_rss_kb "$o") kB / $rss kB |"
     done
     echo
 } >>"$md"
