@@ -10,7 +10,9 @@
 #   5. loading a model of 10,000 and of 100,000 posts, each a group of its own (`cablesim check`);
 #   6. instructions of the engine (cs_run) for APS1, APS3, APS4 and the 1,000-post model, counted by
 #      valgrind's callgrind: unlike wall times on a shared machine they do not move with the load, so a
-#      change of cost shows between two benches (skipped without valgrind, or with BENCH_ICOUNT=0).
+#      change of cost shows between two benches (skipped without valgrind, or with BENCH_ICOUNT=0);
+#   7. the speed targets of the issues (whole run against the engine, the settle's share, two threads
+#      against one, cost per post), each judged from the figures above.
 # Each of 1, 2 and 6 also for the build BENCH_BASE names (another engine's build folder, e.g. the previous
 # commit's built in its own worktree), run alternately with this one, side by side in the same tables.
 # Settings (environment): BUILD (build), BENCH_BASE (empty: none), BENCH_N (1000, the issue's Monte Carlo),
@@ -108,15 +110,17 @@ rss_run=$(peak_kb "$cs" run examples/aps3.yaml -o "$out/aps3" "${t_end_args[@]}"
         wratio=$(awk -v a="$wall" -v b="$(field engine_ms_best "$o")" 'BEGIN { printf (b > 0 ? "%.2f" : "n/a"), a / b }')
         settle=$(field settle_cpu_ms_best "$o")
         share=$(awk -v a="$settle" -v b="$(field cpu_ms_best "$o")" 'BEGIN { printf (a != "" && b > 0 ? "%.1f%%" : "n/a"), 100 * a / b }')
+        [ "$d" = "$BUILD" ] && { mine_wratio=$wratio mine_ratio=$ratio mine_share=$share; }
         echo "| \`$d\` | **$wall ms** | $cpu ms | **$(field engine_ms_best "$o") ms** | $(field engine_ms_median "$o") ms | $(field cpu_ms_best "$o") ms | **$wratio** | **$ratio** | ${settle:-n/a} ms | **$share** | $(field t_reached_s "$o") s | $(field steps "$o") | $(field steps_per_s "$o") | $(field us_per_step "$o") us | $(field outcome "$o") | $(field load_ms "$o") ms | $(field peak_rss_kb "$o") kB / $rss kB |"
     done
     echo
 } >>"$md"
 
 echo "bench: Monte Carlo of $N runs..."
-mc_line() { # label, command...
-    local label=$1
-    shift
+declare -A mc_wall # each Monte Carlo's wall time, s, by its key
+mc_line() { # key, label, command...
+    local key=$1 label=$2
+    shift 2
     local timed=()
     [ "$have_time" -eq 1 ] && timed=(/usr/bin/time -f "%U %S %M" -o "$out/time.txt")
     echo "n/a n/a n/a" >"$out/time.txt"
@@ -125,6 +129,7 @@ mc_line() { # label, command...
     "${timed[@]}" "$@" >"$out/mc.log" 2>&1 || { echo "| $label | failed | | | | |"; return; }
     b=$(date +%s%N)
     wall=$(awk -v t=$((b - a)) 'BEGIN { printf "%.2f", t / 1e9 }')
+    mc_wall[$key]=$wall
     rate=$(awk -v w="$wall" -v n="$N" 'BEGIN { printf "%.1f", n / w }')
     read -r u s m <"$out/time.txt"
     echo "| $label | $wall s | $rate | $(awk -v u="$u" -v s="$s" 'BEGIN { printf "%.1f", u + s }') s | $m kB | $(awk -v w="$wall" -v n="$N" 'BEGIN { printf "%.0f", w / n * 10000 }') s |"
@@ -136,14 +141,14 @@ sweep_args=(sweep "$spec" --runs "$N" --quiet "${t_end_args[@]}")
     echo
     echo "| how | wall time | runs/s | CPU time (user + sys) | peak memory | 10,000 runs at this rate |"
     echo "| --- | --- | --- | --- | --- | --- |"
-    mc_line "1 thread (\`$cs ${sweep_args[*]} -o $out/mc1 --threads 1\`)" "$cs" "${sweep_args[@]}" -o "$out/mc1" --threads 1
-    [ -n "$BASE" ] && mc_line "1 thread, \`$BASE\` (\`$BASE/cablesim ... --threads 1\`)" "$BASE/cablesim" \
+    mc_line one "1 thread (\`$cs ${sweep_args[*]} -o $out/mc1 --threads 1\`)" "$cs" "${sweep_args[@]}" -o "$out/mc1" --threads 1
+    [ -n "$BASE" ] && mc_line base "1 thread, \`$BASE\` (\`$BASE/cablesim ... --threads 1\`)" "$BASE/cablesim" \
         "${sweep_args[@]}" -o "$out/mc1-base" --threads 1
-    mc_line "2 threads (\`... --threads 2\`)" "$cs" "${sweep_args[@]}" -o "$out/mc2" --threads 2
+    mc_line two "2 threads (\`... --threads 2\`)" "$cs" "${sweep_args[@]}" -o "$out/mc2" --threads 2
     if [ -x "$csmpi" ] && command -v mpirun >/dev/null; then
         flags=(--oversubscribe)
         [ "$(id -u)" -eq 0 ] && flags+=(--allow-run-as-root)
-        mc_line "2 MPI ranks x 1 thread (\`mpirun -n 2 $csmpi ... --threads 1\`)" mpirun "${flags[@]}" -n 2 "$csmpi" \
+        mc_line mpi "2 MPI ranks x 1 thread (\`mpirun -n 2 $csmpi ... --threads 1\`)" mpirun "${flags[@]}" -n 2 "$csmpi" \
             "${sweep_args[@]}" -o "$out/mpi2" --threads 1
     else
         echo "| 2 MPI ranks | not run: no cablesim-mpi or mpirun | | | | |"
@@ -166,10 +171,12 @@ echo "bench: cost against barrier length..."
     echo
     echo "| posts | engine time (best) | CPU time (best) | steps | per step | per post and step | outcome | load | peak memory |"
     echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
+    declare -A per_post # ns per post and step, by the number of posts
     for n in $POSTS; do
         bash bench/gen_posts.sh "$n" >"$out/posts-$n.yaml"
         # a run the engine stops (numerical guard) is a result too: its row says so, and the rest go on
         if r=$("$engine" "$out/posts-$n.yaml" --repeat "$POSTS_REPEAT" --t-end "$POSTS_T_END" 2>"$out/posts-$n.err"); then
+            per_post[$n]=$(field ns_per_post_step "$r")
             echo "| $n | $(field engine_ms_best "$r") ms | $(field cpu_ms_best "$r") ms | $(field steps "$r") | $(field us_per_step "$r") us | $(field ns_per_post_step "$r") ns | $(field outcome "$r") | $(field load_ms "$r") ms | $(field peak_rss_kb "$r") kB |"
         else
             echo "| $n | failed | | | | | $(tr '\n|' '  ' <"$out/posts-$n.err") | | |"
@@ -242,5 +249,27 @@ if [ "$ICOUNT" != 0 ] && command -v valgrind >/dev/null; then
         echo
     } >>"$md"
 fi
+{ # the issues' targets for speed, each judged from the figures above
+    verdict() { awk -v x="$1" -v lim="$2" -v op="$3" 'BEGIN { if (x == "" || x == "n/a") print "not measured"
+        else if ((op == "le" && x + 0 <= lim) || (op == "ge" && x + 0 >= lim)) print "met"; else print "missed" }'; }
+    echo "## Against the targets"
+    echo
+    echo "| target | measured | verdict |"
+    echo "| --- | --- | --- |"
+    echo "| a whole APS3 \`cablesim run\` at most 2 times the engine's run (wall, best against best) | ${mine_wratio:-n/a} | $(verdict "${mine_wratio:-}" 2 le) |"
+    echo "| the same in CPU time | ${mine_ratio:-n/a} | $(verdict "${mine_ratio:-}" 2 le) |"
+    echo "| the settle under 2% of a crash run (CPU) | ${mine_share:-n/a} | $(verdict "${mine_share%\%}" 2 le) |"
+    speedup=n/a
+    [ -n "${mc_wall[one]:-}" ] && [ -n "${mc_wall[two]:-}" ] &&
+        speedup=$(awk -v a="${mc_wall[one]}" -v b="${mc_wall[two]}" 'BEGIN { printf "%.2f", a / b }')
+    echo "| 2 threads at least 1.8 times one (the Monte Carlo's wall time) | $speedup | $(verdict "$speedup" 1.8 ge) |"
+    sorted=$(for n in "${!per_post[@]}"; do echo "$n"; done | sort -n)
+    # from 100 posts up (below, the step's fixed cost is most of a post's share)
+    lo=$(awk '$1 >= 100' <<<"$sorted" | head -1) hi=$(tail -1 <<<"$sorted") spread=n/a
+    [ -n "$lo" ] && [ "$lo" != "$hi" ] &&
+        spread=$(awk -v a="${per_post[$lo]}" -v b="${per_post[$hi]}" 'BEGIN { printf "%.2f", b / a }')
+    echo "| time linear in the number of posts: the cost per post and step at $hi posts within 2 times that at $lo | $spread | $(verdict "$spread" 2 le) |"
+    echo
+} >>"$md"
 cat "$md"
 cp "$md" docs/bench.md
