@@ -11,7 +11,8 @@
 #   6. instructions of the engine (cs_run) for APS1, APS3, APS4 and the 1,000-post model, counted by
 #      valgrind's callgrind: unlike wall times on a shared machine they do not move with the load, so a
 #      change of cost shows between two benches (skipped without valgrind, or with BENCH_ICOUNT=0);
-#   7. the speed targets of the issues (whole run against the engine, the settle's share, two threads
+#   7. the designer page's times, as make test's browser test last wrote them (if it has run);
+#   8. the speed targets of the issues (whole run against the engine, the settle's share, two threads
 #      against one, cost per post), each judged from the figures above.
 # Each of 1, 2 and 6 also for the build BENCH_BASE names (another engine's build folder, e.g. the previous
 # commit's built in its own worktree), run alternately with this one, side by side in the same tables.
@@ -249,6 +250,29 @@ if [ "$ICOUNT" != 0 ] && command -v valgrind >/dev/null; then
         echo
     } >>"$md"
 fi
+timing="$BUILD/designer-test/timing.json" # written by make test's designer_browser (report/test/designer.mjs)
+if [ -f "$timing" ]; then
+    {
+        echo "## The designer page"
+        echo
+        echo "One run of examples/aps3.yaml in designer.html in headless chromium, 21 times, as \`make test\`'s"
+        echo "designer_browser timed it on $(date -u -r "$timing" '+%Y-%m-%d %H:%M UTC') ($timing): the run (\`cs_run\` in"
+        echo "the WebAssembly), the model's load from the page's files, and the whole call the page makes for a"
+        echo "change (load, settle, run and summaries; no redrawing)."
+        echo
+        echo "| in the page | fastest | median |"
+        echo "| --- | --- | --- |"
+        for part in engine load call; do
+            f=$(awk -v p="\"$part\"" '$1 == p":" { on = 1 } on && /"fastest_ms"/ { gsub(/[^0-9.]/, "", $2); f = $2 }
+                on && /"median_ms"/ { gsub(/[^0-9.]/, "", $2); print f, $2; exit }' "$timing")
+            read -r fast med <<<"$f"
+            case $part in engine) what="the run (\`cs_run\`)" ;; load) what="the load" ;; *) what="the whole call" ;; esac
+            echo "| $what | ${fast:-n/a} ms | ${med:-n/a} ms |"
+        done
+        echo
+    } >>"$md"
+fi
+
 { # the issues' targets for speed, each judged from the figures above
     verdict() { awk -v x="$1" -v lim="$2" -v op="$3" 'BEGIN { if (x == "" || x == "n/a") print "not measured"
         else if ((op == "le" && x + 0 <= lim) || (op == "ge" && x + 0 >= lim)) print "met"; else print "missed" }'; }
