@@ -249,6 +249,29 @@ if [ "$ICOUNT" != 0 ] && command -v valgrind >/dev/null; then
         done
         echo
     } >>"$md"
+    if command -v callgrind_annotate >/dev/null; then
+        echo "bench: where APS3's instructions go..."
+        valgrind --tool=callgrind --callgrind-out-file="$out/aps3.callgrind" --toggle-collect='cs_run*' \
+            "$engine" examples/aps3.yaml --repeat 1 >/dev/null 2>&1
+        {
+            echo "## Where APS3's instructions go"
+            echo
+            echo "The same count for \`$BUILD\`, by function, inclusive (a function's share holds what it calls), the 15"
+            echo "largest of the engine's own (\`callgrind_annotate --inclusive=yes\`). Link-time optimisation"
+            echo "inlines across files, so a function may be named under the file it was inlined into, and shares"
+            echo "overlap."
+            echo
+            echo "| share of \`cs_run\` | instructions | function (file) |"
+            echo "| --- | --- | --- |"
+            callgrind_annotate --inclusive=yes --threshold=100 "$out/aps3.callgrind" 2>/dev/null |
+                awk '/^ *[0-9,]+ +\(/ { w = $3; if (w !~ /:/) w = $4 } /^ *[0-9,]+ +\(/ && w ~ /(^|\/)src\// {
+                    n = $1; gsub(/,/, "", n); sub(/^.*\/src\//, "src/", w); split(w, a, ":")
+                    f = a[2]; sub(/\..*/, "", f); if ((a[1] f) in seen) next; seen[a[1] f] = 1
+                    if (f == "cs_run") total = n; else if (total > 0 && k++ < 15)
+                        printf "| %.1f%% | %.1f M | `%s` (%s) |\n", 100 * n / total, n / 1e6, f, a[1] }'
+            echo
+        } >>"$md"
+    fi
 fi
 timing="$BUILD/designer-test/timing.json" # written by make test's designer_browser (report/test/designer.mjs)
 if [ -f "$timing" ]; then
