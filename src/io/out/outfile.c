@@ -429,10 +429,18 @@ static int end_failed(const cs_outdir *out, int i, int err, char *why, size_t wh
     return -1;
 }
 
+/* Start writing fd's data to the disk, not waiting for it: cs_out_commit's fsync of each file then waits
+ * for writes already under way, and the system can put the files' blocks in one journal commit rather than
+ * one a file. Its errors are the fsync's to report. */
+static void start_writeback(int fd) {
+    sync_file_range(fd, 0, 0, SYNC_FILE_RANGE_WRITE);
+}
+
 int cs_out_end_at(cs_outdir *out, int i, FILE *f, char *why, size_t why_size) {
     int *c = out->streams[i];
-    int bad = fflush(f) != 0 || ferror(f) || fsync(c[0]) != 0;
-    int err = c[1] ? c[1] : errno; /* the first write's error, else the flush's or the fsync's */
+    int bad = fflush(f) != 0 || ferror(f);
+    int err = c[1] ? c[1] : errno; /* the first write's error, else the flush's */
+    if (!bad) start_writeback(c[0]);
     bad |= fclose(f) != 0;
     return bad ? end_failed(out, i, err ? err : errno, why, why_size) : 0;
 }
@@ -448,14 +456,24 @@ int cs_out_end(cs_outdir *out, FILE *f, char *why, size_t why_size) {
     return cs_out_end_at(out, out->count - 1, f, why, why_size);
 }
 
-int cs_out_end_path(cs_outdir *out, char *why, size_t why_size) {
+/* The i-th file's temporary opened, then sync (fsync, or start_writeback when wait is 0). Returns 0, or -1
+ * with why filled. */
+static int sync_file(const cs_outdir *out, int i, int wait, char *why, size_t why_size) {
     char path[PATH_SIZE];
-    full_path(out, out->tmps[out->count - 1], path, sizeof path);
+    full_path(out, out->tmps[i], path, sizeof path);
     int fd = open(path, O_RDONLY);
-    if (fd < 0) return end_failed(out, out->count - 1, errno, why, why_size);
-    int bad = fsync(fd) != 0, err = errno;
+    if (fd < 0) return end_failed(out, i, errno, why, why_size);
+    int bad = 0, err = 0;
+    if (wait)
+        bad = fsync(fd) != 0, err = errno;
+    else
+        start_writeback(fd);
     close(fd);
-    return bad ? end_failed(out, out->count - 1, err, why, why_size) : 0;
+    return bad ? end_failed(out, i, err, why, why_size) : 0;
+}
+
+int cs_out_end_path(cs_outdir *out, char *why, size_t why_size) {
+    return sync_file(out, out->count - 1, 0, why, why_size);
 }
 
 /* fsync DIR/rel (a folder), so that the renames in it last. */
@@ -486,8 +504,11 @@ static int remove_earlier(const cs_outdir *out, const char *rel, char *why, size
 
 int cs_out_commit(cs_outdir *out, char *why, size_t why_size) {
     char tmp[PATH_SIZE], final[PATH_SIZE];
+    for (int i = 0; i < out->count; i++) /* every file on the disk before any is renamed */
+        if (sync_file(out, i, 1, why, why_size) != 0) return -1;
     /* the manifest first names both runs' files, so that every file cablesim put here stays its own */
     if (write_manifest(out, 1, why, why_size) != 0) return -1;
+    int earlier = 0; /* the earlier run's files this run does not write: removed below */
     for (int i = 0; i < out->count; i++) {
         full_path(out, out->tmps[i], tmp, sizeof tmp);
         full_path(out, out->names[i], final, sizeof final);
@@ -499,6 +520,7 @@ int cs_out_commit(cs_outdir *out, char *why, size_t why_size) {
     for (int i = 0; i < out->prev_count; i++) {
         const char *rel = out->prev[i], *slash = strrchr(rel, '/');
         if (written(out, rel)) continue;
+        earlier++;
         if (remove_earlier(out, rel, why, why_size) != 0) return -1;
         if (slash) { /* a subfolder this left empty */
             full_path(out, rel, tmp, sizeof tmp);
@@ -506,7 +528,9 @@ int cs_out_commit(cs_outdir *out, char *why, size_t why_size) {
             rmdir(tmp);
         }
     }
-    if (write_manifest(out, 0, why, why_size) != 0) return -1; /* the commit point */
+    /* the commit point: the manifest of this run's files alone (the first already is, when it named no
+     * earlier file besides them) */
+    if (earlier && write_manifest(out, 0, why, why_size) != 0) return -1;
     full_path(out, CS_OUT_JOURNAL, tmp, sizeof tmp);
     unlink(tmp); /* a journal's runs are in the outputs now */
     sync_folder(out, "", 0);

@@ -7,11 +7,13 @@
  * line). A folder holding a file that no manifest lists is refused, naming it, unless CS_OUT_FORCE: then
  * the run writes beside such files and touches none of them (nor writes over one).
  *
- * Each file is written to a unique temporary beside its name (mkstemp: ".cablesim-tmp.NAME.XXXXXX"),
- * flushed and fsync'ed; cs_out_commit renames them all into place, removes the files of the earlier
- * manifest that this run did not write, and writes the new manifest last, by a temporary and a rename:
- * the commit point. cs_out_abort removes the temporaries (and the folders cs_out_open made) so a failed
- * run leaves nothing. Either releases the lock. A sweep's journal, beside them, is below. */
+ * Each file is written to a unique temporary beside its name (mkstemp: ".cablesim-tmp.NAME.XXXXXX") and
+ * flushed, its writing to the disk begun; cs_out_commit fsyncs them all, renames them into place, removes
+ * the files of the earlier manifest that this run did not write, and writes the new manifest last, by a
+ * temporary and a rename: the commit point (the manifest written before the renames is that one already
+ * when the earlier manifest named no other file). cs_out_abort removes the temporaries (and the folders
+ * cs_out_open made) so a failed run leaves nothing. Either releases the lock. A sweep's journal, beside them,
+ * is below. */
 #ifndef CS_OUTFILE_H
 #define CS_OUTFILE_H
 
@@ -51,9 +53,9 @@ int cs_out_subdir(cs_outdir *out, const char *subdir, char *why, size_t why_size
 /* Start a temporary for DIR/name. NULL with why filled on failure: a name longer than names hold, a
  * folder there, or a file no manifest lists (CS_OUT_FORCE). */
 FILE *cs_out_begin(cs_outdir *out, const char *name, char *why, size_t why_size);
-/* Flush, fsync and close a file from cs_out_begin: the last begun, or the i-th (files written side by
- * side). Returns 0, or -1 with why filled: the file and the system's reason for its first failed write
- * (a full disk: "No space left on device"). */
+/* Flush and close a file from cs_out_begin, its writing to the disk begun (cs_out_commit waits for it):
+ * the last begun, or the i-th (files written side by side). Returns 0, or -1 with why filled: the file and
+ * the system's reason for its first failed write (a full disk: "No space left on device"). */
 int cs_out_end(cs_outdir *out, FILE *f, char *why, size_t why_size);
 /* End the last file begun (cs_out_end) after its writer returned rc (rc != 0: why holds its reason).
  * Returns 0 when both went well, else -1 with why the file's own error when it had one (which file, and
@@ -61,14 +63,14 @@ int cs_out_end(cs_outdir *out, FILE *f, char *why, size_t why_size);
 int cs_out_finish(cs_outdir *out, FILE *f, int rc, char *why, size_t why_size);
 int cs_out_end_at(cs_outdir *out, int i, FILE *f, char *why, size_t why_size);
 /* The same for a writer that opens its file by name (netCDF): the temporary's path into path (an empty
- * file the writer replaces), and, once the writer has closed it, cs_out_end_path fsyncs it. Each returns
- * 0, or -1 with why filled. */
+ * file the writer replaces), and, once the writer has closed it, cs_out_end_path begins its writing to the
+ * disk. Each returns 0, or -1 with why filled. */
 int cs_out_begin_path(cs_outdir *out, const char *name, char *path, size_t path_size, char *why,
                       size_t why_size);
 int cs_out_end_path(cs_outdir *out, char *why, size_t why_size);
-/* Rename every temporary to its name, remove the files of the earlier manifest that this run did not
- * write (and a subfolder they leave empty), write the manifest, release the lock. Returns 0, or -1 with
- * why filled (then call cs_out_abort). */
+/* Fsync every temporary, rename each to its name, remove the files of the earlier manifest that this run
+ * did not write (and a subfolder they leave empty), write the manifest, release the lock. Returns 0, or -1
+ * with why filled (then call cs_out_abort). */
 int cs_out_commit(cs_outdir *out, char *why, size_t why_size);
 /* A journal in the folder (DIR/.cablesim-journal, a sweep's: each run's result as it finishes), which
  * outlives a kill -9, a power cut or a failed write of the outputs, and which cs_out_commit removes (the
