@@ -70,38 +70,43 @@ double cs_window_mean_max(const double *x, int n, int w, int from, int *at) {
     return best;
 }
 
-/* The first crossing of a bound by a relative displacement d (two components, bounds lim) along the
- * samples, with its relative velocity v: the impact's time (s) and its velocity components by linear
- * interpolation within the step; else the crossing after the last sample at the last velocity held.
- * Returns where the impact is. */
-static cs_flail_impact first_crossing(const double *dx, const double *dy, const double *vx, const double *vy,
-                                      int n, double dt, const double lim[2], double *t, double v[2]) {
-    for (int i = 1; i < n; i++) {
-        double ax = fabs(dx[i]), ay = fabs(dy[i]);
-        if (ax < lim[0] && ay < lim[1]) continue;
-        double fx = ax >= lim[0] ? (lim[0] - fabs(dx[i - 1])) / (ax - fabs(dx[i - 1])) : 2.0;
-        double fy = ay >= lim[1] ? (lim[1] - fabs(dy[i - 1])) / (ay - fabs(dy[i - 1])) : 2.0;
-        double f = fx < fy ? fx : fy;
-        f = f < 0.0 ? 0.0 : f > 1.0 ? 1.0 : f;
-        *t = (i - 1 + f) * dt;
-        v[0] = vx[i - 1] + f * (vx[i] - vx[i - 1]);
-        v[1] = vy[i - 1] + f * (vy[i] - vy[i - 1]);
-        return CS_FLAIL_IN_RECORD;
-    }
-    int e = n - 1;
-    const double d[2] = {dx[e], dy[e]}, ve[2] = {vx[e], vy[e]};
+/* An occupant's (or head's) displacement against the vehicle and its relative velocity at one sample. */
+typedef struct rel_sample {
+    double d[2], v[2];
+} rel_sample;
+
+/* Whether the displacement crosses a bound (lim, two components) between samples p (index i - 1) and q
+ * (index i): the impact's time (s) and its velocity components by linear interpolation within the step. */
+static int crossed_in_step(const rel_sample *p, const rel_sample *q, int i, double dt, const double lim[2],
+                           double *t, double v[2]) {
+    double ax = fabs(q->d[0]), ay = fabs(q->d[1]);
+    if (ax < lim[0] && ay < lim[1]) return 0;
+    double fx = ax >= lim[0] ? (lim[0] - fabs(p->d[0])) / (ax - fabs(p->d[0])) : 2.0;
+    double fy = ay >= lim[1] ? (lim[1] - fabs(p->d[1])) / (ay - fabs(p->d[1])) : 2.0;
+    double f = fx < fy ? fx : fy;
+    f = f < 0.0 ? 0.0 : f > 1.0 ? 1.0 : f;
+    *t = (i - 1 + f) * dt;
+    v[0] = p->v[0] + f * (q->v[0] - p->v[0]);
+    v[1] = p->v[1] + f * (q->v[1] - p->v[1]);
+    return 1;
+}
+
+/* The crossing after the last sample e (index last) of a record none of whose steps crossed, at the last
+ * velocity held. Returns where the impact is. */
+static cs_flail_impact crossed_after(const rel_sample *e, int last, double dt, const double lim[2], double *t,
+                                     double v[2]) {
     double best = HUGE_VAL;
     for (int k = 0; k < 2; k++)
-        if (fabs(ve[k]) > 1e-9) {
-            double tk = ((ve[k] > 0.0 ? lim[k] : -lim[k]) - d[k]) / ve[k];
+        if (fabs(e->v[k]) > 1e-9) {
+            double tk = ((e->v[k] > 0.0 ? lim[k] : -lim[k]) - e->d[k]) / e->v[k];
             if (tk >= 0.0 && tk < best) best = tk;
         }
-    v[0] = ve[0], v[1] = ve[1];
+    v[0] = e->v[0], v[1] = e->v[1];
     if (!isfinite(best)) {
         *t = NAN;
         return CS_FLAIL_NONE;
     }
-    *t = e * dt + best;
+    *t = last * dt + best;
     return CS_FLAIL_AFTER_RECORD;
 }
 
@@ -127,20 +132,25 @@ static int window_samples(double window, double dt) {
 }
 
 /* The flail-space occupant (NCHRP 350, MASH): a free body that keeps the vehicle's velocity at the first
- * contact, moving against the vehicle's axes without their rotation. */
+ * contact, moving against the vehicle's axes without their rotation; integrated sample by sample up to
+ * its first crossing of the flail space. */
 static void flail(const double *ax, const double *ay, int n, double dt, const cs_occupant_rules *r,
-                  double *work, cs_occupant_risk *o) {
-    double *vx = work, *vy = work + n, *dx = work + 2 * n, *dy = work + 3 * n;
-    vx[0] = vy[0] = dx[0] = dy[0] = 0.0;
-    for (int i = 1; i < n; i++) {
-        vx[i] = vx[i - 1] - 0.5 * dt * (ax[i] + ax[i - 1]);
-        vy[i] = vy[i - 1] - 0.5 * dt * (ay[i] + ay[i - 1]);
-        dx[i] = dx[i - 1] + 0.5 * dt * (vx[i] + vx[i - 1]);
-        dy[i] = dy[i - 1] + 0.5 * dt * (vy[i] + vy[i - 1]);
-    }
+                  cs_occupant_risk *o) {
     const double lim[2] = {r->flail_x, r->flail_y};
     double v[2];
-    o->impact = first_crossing(dx, dy, vx, vy, n, dt, lim, &o->t_impact, v);
+    rel_sample p = {{0.0, 0.0}, {0.0, 0.0}}, q;
+    o->impact = CS_FLAIL_NONE;
+    for (int i = 1; i < n; i++, p = q) {
+        q.v[0] = p.v[0] - 0.5 * dt * (ax[i] + ax[i - 1]);
+        q.v[1] = p.v[1] - 0.5 * dt * (ay[i] + ay[i - 1]);
+        q.d[0] = p.d[0] + 0.5 * dt * (q.v[0] + p.v[0]);
+        q.d[1] = p.d[1] + 0.5 * dt * (q.v[1] + p.v[1]);
+        if (crossed_in_step(&p, &q, i, dt, lim, &o->t_impact, v)) {
+            o->impact = CS_FLAIL_IN_RECORD;
+            break;
+        }
+    }
+    if (o->impact != CS_FLAIL_IN_RECORD) o->impact = crossed_after(&p, n - 1, dt, lim, &o->t_impact, v);
     o->oiv_x = fabs(v[0]), o->oiv_y = fabs(v[1]);
     o->ora_x = o->ora_y = 0.0;
     o->t_ora_x = o->t_ora_y = NAN;
@@ -153,14 +163,18 @@ static void flail(const double *ax, const double *ay, int n, double dt, const cs
 }
 
 /* EN 1317-1's theoretical head: a free body in the horizontal plane keeping the vehicle's velocity at the
- * first contact, seen from the vehicle as it moves and yaws; it starts at the CG. */
-static void thiv(const cs_vehicle_motion *m, const cs_occupant_rules *r, double *work, cs_occupant_risk *o) {
+ * first contact, seen from the vehicle as it moves and yaws; it starts at the CG. Integrated sample by
+ * sample up to its first crossing of the head's space. */
+static void thiv(const cs_vehicle_motion *m, const cs_occupant_rules *r, cs_occupant_risk *o) {
     int n = m->n;
     double dt = m->dt;
-    double *bx = work, *by = work + n, *ux = work + 2 * n, *uy = work + 3 * n;
+    const double lim[2] = {r->thiv_dx, r->thiv_dy};
+    double v[2];
     double psi = 0.0, Vx = 0.0, Vy = 0.0, Xx = 0.0, Xy = 0.0; /* the vehicle: yaw, velocity, position */
     double gx_prev = m->ax[0], gy_prev = m->ay[0];            /* its acceleration in the ground frame */
-    for (int i = 0; i < n; i++) {
+    rel_sample p = {{0.0, 0.0}, {0.0, 0.0}}, q;
+    o->thiv_impact = CS_FLAIL_NONE;
+    for (int i = 0; i < n; i++, p = q) {
         if (i > 0) {
             psi += 0.5 * dt * (m->yaw_rate[i] + m->yaw_rate[i - 1]);
             double c = cos(psi), s = sin(psi);
@@ -172,14 +186,17 @@ static void thiv(const cs_vehicle_motion *m, const cs_occupant_rules *r, double 
         }
         double c = cos(psi), s = sin(psi);
         /* the head's place and velocity against the vehicle, in the vehicle's axes */
-        bx[i] = -(c * Xx + s * Xy);
-        by[i] = -(-s * Xx + c * Xy);
-        ux[i] = -(c * Vx + s * Vy) + m->yaw_rate[i] * by[i];
-        uy[i] = -(-s * Vx + c * Vy) - m->yaw_rate[i] * bx[i];
+        q.d[0] = -(c * Xx + s * Xy);
+        q.d[1] = -(-s * Xx + c * Xy);
+        q.v[0] = -(c * Vx + s * Vy) + m->yaw_rate[i] * q.d[1];
+        q.v[1] = -(-s * Vx + c * Vy) - m->yaw_rate[i] * q.d[0];
+        if (i > 0 && crossed_in_step(&p, &q, i, dt, lim, &o->t_thiv, v)) {
+            o->thiv_impact = CS_FLAIL_IN_RECORD;
+            break;
+        }
     }
-    const double lim[2] = {r->thiv_dx, r->thiv_dy};
-    double v[2];
-    o->thiv_impact = first_crossing(bx, by, ux, uy, n, dt, lim, &o->t_thiv, v);
+    if (o->thiv_impact != CS_FLAIL_IN_RECORD)
+        o->thiv_impact = crossed_after(&p, n - 1, dt, lim, &o->t_thiv, v);
     o->thiv = hypot(v[0], v[1]);
     o->phd = 0.0;
     o->t_phd = NAN;
@@ -209,14 +226,11 @@ static void asi(const double *a[3], int n, double dt, const cs_occupant_rules *r
     }
 }
 
-int cs_occupant_risk_compute(const cs_vehicle_motion *m, const cs_occupant_rules *rules,
-                             cs_occupant_risk *out, char *why, size_t why_size) {
-    memset(out, 0, sizeof *out);
+/* The motion's checks, then its accelerations filtered into f[0..2] (each may be its own series). Returns
+ * 0, or -1 with why filled. */
+static int filter_motion(const cs_vehicle_motion *m, const cs_occupant_rules *rules, double *f[3], char *why,
+                         size_t why_size) {
     int n = m->n;
-    if (n < 2 || !(m->dt > 0.0)) {
-        snprintf(why, why_size, "the vehicle's motion has %d samples: at least 2 are needed", n);
-        return -1;
-    }
     const double *in[4] = {m->ax, m->ay, m->az, m->yaw_rate};
     for (int k = 0; k < 4; k++)
         for (int i = 0; i < n; i++)
@@ -225,26 +239,45 @@ int cs_occupant_risk_compute(const cs_vehicle_motion *m, const cs_occupant_rules
                          i * m->dt, k);
                 return -1;
             }
-    double *buf = malloc((size_t)n * 7 * sizeof *buf);
-    if (!buf) {
-        snprintf(why, why_size, "out of memory for the occupant risk (%d samples)", n);
-        return -1;
-    }
-    double *f[3] = {buf, buf + n, buf + 2 * n}, *work = buf + 3 * n;
     for (int k = 0; k < 3; k++)
         if (cs_cfc_filter(rules->cfc, m->dt, in[k], f[k], n) != 0) {
             snprintf(why, why_size, "a sample interval of %g s is too long for a CFC %g filter", m->dt,
                      rules->cfc);
-            free(buf);
             return -1;
         }
-    flail(f[0], f[1], n, m->dt, rules, work, out);
-    cs_vehicle_motion filtered = {n, m->dt, f[0], f[1], f[2], m->yaw_rate};
-    thiv(&filtered, rules, work, out);
-    const double *a[3] = {f[0], f[1], f[2]};
-    asi(a, n, m->dt, rules, out);
-    free(buf);
     return 0;
+}
+
+static int too_few(const cs_vehicle_motion *m, char *why, size_t why_size) {
+    if (m->n >= 2 && m->dt > 0.0) return 0;
+    snprintf(why, why_size, "the vehicle's motion has %d samples: at least 2 are needed", m->n);
+    return -1;
+}
+
+/* The risk of a motion whose accelerations are filtered already. */
+static void risk_of_filtered(const cs_vehicle_motion *f, const cs_occupant_rules *rules,
+                             cs_occupant_risk *out) {
+    flail(f->ax, f->ay, f->n, f->dt, rules, out);
+    thiv(f, rules, out);
+    const double *a[3] = {f->ax, f->ay, f->az};
+    asi(a, f->n, f->dt, rules, out);
+}
+
+int cs_occupant_risk_compute(const cs_vehicle_motion *m, const cs_occupant_rules *rules,
+                             cs_occupant_risk *out, char *why, size_t why_size) {
+    memset(out, 0, sizeof *out);
+    if (too_few(m, why, why_size) != 0) return -1;
+    int n = m->n;
+    double *buf = malloc((size_t)n * 3 * sizeof *buf);
+    if (!buf) {
+        snprintf(why, why_size, "out of memory for the occupant risk (%d samples)", n);
+        return -1;
+    }
+    double *f[3] = {buf, buf + n, buf + 2 * n};
+    int rc = filter_motion(m, rules, f, why, why_size);
+    if (rc == 0) risk_of_filtered(&(cs_vehicle_motion){n, m->dt, f[0], f[1], f[2], m->yaw_rate}, rules, out);
+    free(buf);
+    return rc;
 }
 
 /* A world-frame vector into the vehicle's axes: the transpose of Rz(yaw) Ry(pitch) Rx(roll). */
@@ -294,26 +327,31 @@ int cs_vehicle_motion_of_record(const cs_record *rec, double t_contact, double d
     }
     int n = (int)floor((t_last - t_contact) / dt + 1e-9) + 1;
     double *buf = malloc((size_t)n * 4 * sizeof *buf);
-    if (!buf) {
+    double *body = malloc((size_t)frames * 3 * sizeof *body); /* each frame's, found once */
+    if (!buf || !body) {
+        free(buf);
+        free(body);
         snprintf(why, why_size, "out of memory for the vehicle's motion (%d samples)", n);
         return -1;
     }
     double *ax = buf, *ay = buf + n, *az = buf + 2 * n, *r = buf + 3 * n;
-    int j = 0; /* the frame at or before the sample */
+    int j = 0, found = 0; /* the frame at or before the sample; the frames whose acceleration is found */
     for (int i = 0; i < n; i++) {
         double t = t_contact + i * dt;
         while (j + 2 < frames && cs_record_vehicle(rec, j + 1)->t <= t)
             j++;
+        for (; found <= j + 1; found++)
+            frame_acceleration(rec, found, point, body + 3 * found);
         const cs_vehicle_view *p = cs_record_vehicle(rec, j), *q = cs_record_vehicle(rec, j + 1);
-        double f = q->t > p->t ? (t - p->t) / (q->t - p->t) : 0.0, bp[3], bq[3];
+        double f = q->t > p->t ? (t - p->t) / (q->t - p->t) : 0.0;
+        const double *bp = body + 3 * j, *bq = body + 3 * (j + 1);
         f = f < 0.0 ? 0.0 : f > 1.0 ? 1.0 : f;
-        frame_acceleration(rec, j, point, bp);
-        frame_acceleration(rec, j + 1, point, bq);
         ax[i] = bp[0] + f * (bq[0] - bp[0]);
         ay[i] = bp[1] + f * (bq[1] - bp[1]);
         az[i] = bp[2] + f * (bq[2] - bp[2]);
         r[i] = p->angular_velocity[2] + f * (q->angular_velocity[2] - p->angular_velocity[2]);
     }
+    free(body);
     *m = (cs_vehicle_motion){n, dt, ax, ay, az, r};
     return 0;
 }
@@ -332,7 +370,11 @@ int cs_occupant_risk_of_run(const cs_record *rec, double t_contact, const double
     cs_vehicle_motion m;
     if (cs_vehicle_motion_of_record(rec, t_contact, 1e-4, point, &m, why, why_size) != 0) return -1;
     cs_occupant_rules rules = cs_default_occupant_rules();
-    int rc = cs_occupant_risk_compute(&m, &rules, out, why, why_size);
-    free((void *)m.ax);
+    /* the motion's arrays are this function's own (one block from m.ax): filtered in place */
+    double *own = (double *)m.ax, *f[3] = {own, own + m.n, own + 2 * m.n};
+    memset(out, 0, sizeof *out);
+    int rc = too_few(&m, why, why_size) == 0 ? filter_motion(&m, &rules, f, why, why_size) : -1;
+    if (rc == 0) risk_of_filtered(&m, &rules, out);
+    free(own);
     return rc;
 }
