@@ -5,7 +5,7 @@
 # sanitizers, fuzzers, MPI, the designer page and the package need too (make test).
 set -euo pipefail
 # The command: the compiler and CMake; libyaml (models), udunits2 (units), cairo (plots), netCDF (a
-# sweep's runs.nc), json-c (compare reads summary.json); help2man: the manual page, made from --help at
+# sweep's runs.nc), json-c (the JSON files, written and read); help2man: the manual page, made from --help at
 # build time. report.html (report/): node and npm build its page (Debian's only where none is installed:
 # a newer one may be).
 pkgs=(build-essential cmake pkg-config libyaml-dev libudunits2-dev libcairo2-dev libnetcdf-dev libjson-c-dev
@@ -26,7 +26,7 @@ if [ "${1:-}" != "--demo" ]; then
   # pages of report.html printed (tests/cli_report_print.sh).
   pkgs+=(chromium chromium-driver poppler-utils)
   # emscripten: designer.html's engine as WebAssembly (web/build.sh); dpkg-dev (above) unpacks the Debian
-  # source of libyaml it compiles for it (scripts/wasm-libyaml.sh, at build time).
+  # sources of libyaml and json-c it compiles for it (scripts/wasm-libyaml.sh, wasm-jsonc.sh, at build time).
   pkgs+=(emscripten)
 fi
 missing=()
