@@ -24,7 +24,7 @@ nobuiltin=(-fno-builtin-sin -fno-builtin-cos -fno-builtin-tan -fno-builtin-asin 
 flags=("${nobuiltin[@]}" -std=c17 -Wall -Wextra -Wpedantic -Werror -O3 -fno-math-errno -fno-trapping-math -D_POSIX_C_SOURCE=200809L
   -I"$src/include" -I"$src/src" -I"$src/src/io" -I"$out/libyaml/include" -I"$out/jsonc/include" -DYAML_DECLARE_STATIC)
 io=(load/confine load/convert load/loader load/lstore load/parts load/modelhash load/schema load/units load/yamlload load/yamltree
-  load/yamledit out/json out/csv out/numtext out/report_html out/record out/htmltext out/runinfo out/report study/rating study/occupant study/criteria)
+  load/yamledit out/json out/jsondoc out/csv out/numtext out/report_html out/record out/htmltext out/runinfo out/report study/rating study/occupant study/criteria)
 rm -rf "$out/obj"
 mkdir -p "$out/obj"
 sources=("$src"/src/{core,elements,solver,run}/*.c)
