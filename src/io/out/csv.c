@@ -8,13 +8,24 @@
 #include "numtext.h"
 #include "writers.h"
 
-void cs_w_num(cs_wout *w, double v, const char *what) {
-    if (w->bad) return;
+int cs_w_finite(cs_wout *w, double v, const char *what) {
+    if (w->bad) return 0;
     if (!isfinite(v)) {
         w->bad = 1;
         snprintf(w->why, sizeof w->why, "%s is %s", what, isnan(v) ? "NaN" : "infinite");
-        return;
+        return 0;
     }
+    return 1;
+}
+
+void cs_w_oom(cs_wout *w, const char *what) {
+    if (w->bad) return;
+    w->bad = 1;
+    snprintf(w->why, sizeof w->why, "%s: out of memory", what);
+}
+
+void cs_w_num(cs_wout *w, double v, const char *what) {
+    if (!cs_w_finite(w, v, what)) return;
     char text[CS_G10_SIZE];
     fwrite(text, 1, (size_t)cs_g10(v, text), w->f);
 }

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "cablesim/cablesim.h"
+#include "jsondoc.h"
 #include "load/schema.h"
 #include "writers.h"
 
@@ -500,7 +501,9 @@ static void write_design(jw *j, int *first, const cs_barrier_def *b) {
 static void write_info(jw *j, int *first, const cs_run_info *info) {
     FILE *f = j->w.f;
     key(j, first, "cablesim");
-    cs_json_provenance(f, info, cs_json_page_string);
+    json_object *provenance = cs_json_provenance(info);
+    if (!provenance || cs_json_write(f, provenance, 1, "") != 0) cs_w_oom(&j->w, "cablesim");
+    json_object_put(provenance);
     key(j, first, "designations_as_run");
     fputc('[', f);
     for (int i = 0; info && i < info->rating_count; i++) {
@@ -567,10 +570,10 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
     kstr(&j, &first, "version", CS_VERSION_STRING);
     write_info(&j, &first, info);
     key(&j, &first, "evaluation");
-    fputc('{', f);
-    int ef = 1;
-    cs_json_evaluation(&j.w, &ef, info, cs_json_page_string);
-    fputc('}', f);
+    json_object *evaluation = json_object_new_object();
+    if (evaluation) cs_json_evaluation(&j.w, evaluation, info);
+    if (!evaluation || cs_json_write(f, evaluation, 1, "") != 0) cs_w_oom(&j.w, "evaluation");
+    json_object_put(evaluation);
     key(&j, &first, "summary");
     fputc('{', f);
     j.digits = SUMMARY_DIGITS;

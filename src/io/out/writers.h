@@ -61,20 +61,24 @@ typedef struct cs_wout {
     char why[256]; /* where */
 } cs_wout;
 
+/* Whether v is finite (and w not already bad): if not, w is marked bad, its why naming what. */
+int cs_w_finite(cs_wout *w, double v, const char *what);
+/* w marked bad (if it is not already), its why: what ran out of memory. */
+void cs_w_oom(cs_wout *w, const char *what);
 /* Print v as %.10g would (cs_g10); a non-finite v is not printed and marks the output bad, naming what. */
 void cs_w_num(cs_wout *w, double v, const char *what);
 /* Print s as a JSON string literal (quotes, backslashes and control characters escaped). */
 void cs_json_string(FILE *f, const char *s);
-/* A JSON string writer: cs_json_string, or a page's, which also escapes <, > and &. */
-typedef void (*cs_json_text_fn)(FILE *f, const char *s);
+struct json_object;
 /* The object of "cablesim" in summary.json and report.html: {"version", "command", "overrides",
- * "model_hash"} (info NULL: the version alone, the rest null or empty), its strings written by text. */
-void cs_json_provenance(FILE *f, const cs_run_info *info, cs_json_text_fn text);
-/* The evaluation of a run as summary.json and report.html give it, as "key":value pairs after first:
+ * "model_hash"} (info NULL: the version alone, the rest null or empty), made with json-c (jsondoc.h). */
+struct json_object *cs_json_provenance(const cs_run_info *info);
+/* The evaluation of a run as summary.json and report.html give it, as members added to to:
  * "occupant_risk" (or null and "occupant_risk_note"), "max_roll_deg", "max_pitch_deg" and
- * "roadside_criteria" (with MASH's "exit_box"; null for a run that is no roadside test), strings written
- * by text (docs/ratings.md). */
-void cs_json_evaluation(cs_wout *w, int *first, const cs_run_info *info, cs_json_text_fn text);
+ * "roadside_criteria" (with MASH's "exit_box"; null for a run that is no roadside test), numbers as cs_w_num
+ * (w marked bad by a non-finite one), a line break after the occupant risk's members and after the criteria
+ * (docs/ratings.md). */
+void cs_json_evaluation(cs_wout *w, struct json_object *to, const cs_run_info *info);
 
 /* More files to write into a run's folder before it commits (the command's report.html): each begun on
  * out. Returns 0, or -1 with why filled. */
