@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "out/htmltext.h"
+#include "out/jsondoc.h"
 #include "sweepout.h"
 #include "sweepout_int.h"
 #include "writers.h"
@@ -427,7 +428,8 @@ static void md_num(FILE *f, double v) {
 }
 
 /* The summary's body in one format, from the computed summary. */
-typedef void (*summary_writer)(FILE *f, const cs_sweep_spec *spec, long n, const summary *s);
+typedef int (*summary_writer)(FILE *f, const cs_sweep_spec *spec, long n, const summary *s, char *why,
+                              size_t why_size);
 
 /* Compute the summary, write it with `body`, and report a failure to allocate or to write. */
 static int write_summary(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
@@ -437,8 +439,9 @@ static int write_summary(FILE *f, const cs_sweep_spec *spec, const double *x, co
         snprintf(why, why_size, "out of memory");
         return -1;
     }
-    body(f, spec, n, &s);
+    int bad = body(f, spec, n, &s, why, why_size);
     free_summary(&s);
+    if (bad) return -1;
     if (ferror(f)) {
         snprintf(why, why_size, "write error");
         return -1;
@@ -446,7 +449,9 @@ static int write_summary(FILE *f, const cs_sweep_spec *spec, const double *x, co
     return 0;
 }
 
-static void summary_md(FILE *f, const cs_sweep_spec *spec, long n, const summary *s) {
+static int summary_md(FILE *f, const cs_sweep_spec *spec, long n, const summary *s, char *why,
+                      size_t why_size) {
+    (void)why, (void)why_size;
     int k = spec->var_count;
     const cs_sweep_origin *o = &spec->origin;
     fprintf(f, "# Sweep ");
@@ -543,6 +548,7 @@ static void summary_md(FILE *f, const cs_sweep_spec *spec, long n, const summary
         cs_sweep_plot_caption(spec, k, s->r, n, caption, sizeof caption);
         fprintf(f, "- "), cs_md_code(f, file), fprintf(f, ": "), cs_html_text(f, caption), fprintf(f, ".\n");
     }
+    return 0;
 }
 
 int cs_sweep_write_summary_md(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
@@ -550,108 +556,109 @@ int cs_sweep_write_summary_md(FILE *f, const cs_sweep_spec *spec, const double *
     return write_summary(f, spec, x, r, n, why, why_size, summary_md);
 }
 
-static void jnum(FILE *f, double v) {
-    put_num(f, v, "%.10g", "null");
+/* summary.json's "cablesim" member: the version, the command line and the base model's hash. */
+static json_object *origin_json(const cs_sweep_origin *o) {
+    json_object *j = json_object_new_object();
+    char hash[17];
+    snprintf(hash, sizeof hash, "%016llx", o->model_hash);
+    json_object_object_add(j, "version", cs_jstr(CS_VERSION_STRING));
+    json_object_object_add(j, "command", cs_jstr(o->command));
+    json_object_object_add(j, "model_hash", cs_jstr(o->has_model_hash ? hash : NULL));
+    return j;
 }
 
-/* summary.json's "cablesim" member: the version, the command line and the base model's hash. */
-static void origin_json(FILE *f, const cs_sweep_origin *o) {
-    fprintf(f, "\"cablesim\":{\"version\":");
-    cs_json_string(f, CS_VERSION_STRING);
-    fprintf(f, ",\"command\":");
-    if (o->command)
-        cs_json_string(f, o->command);
-    else
-        fputs("null", f);
-    if (o->has_model_hash)
-        fprintf(f, ",\"model_hash\":\"%016llx\"", o->model_hash);
-    else
-        fprintf(f, ",\"model_hash\":null");
-    fputc('}', f);
+/* The members "partial" to "resume" of the journal's first line and of summary.json (lines nonzero: with
+ * its line breaks, and "runs_done" and "stopped_by" after "partial"). */
+static void origin_members(json_object *j, const cs_sweep_origin *o, int partial, long done, int lines) {
+    char hash[17];
+    snprintf(hash, sizeof hash, "%016llx", o->inputs_hash);
+    json_object *resume = o->resume ? json_tokener_parse(o->resume) : NULL; /* resume_record's JSON */
+    json_object_object_add(j, "cablesim", origin_json(o));
+    json_object_object_add(j, "partial", json_object_new_boolean(partial));
+    if (lines) {
+        json_object_object_add(j, "runs_done", json_object_new_int64(done));
+        json_object_object_add(j, "stopped_by", cs_jstr(partial ? o->stopped_by : NULL));
+        static const char *const new_line[] = {"partial", "resume", "spec", NULL};
+        cs_jkeys_on_new_line(j, new_line);
+    }
+    json_object_object_add(j, "inputs_hash", cs_jstr(hash));
+    json_object_object_add(j, "resume", resume);
+}
+
+/* j as the file's text and a line break; 0, or -1 with why filled. */
+static int put_json(FILE *f, json_object *j, char *why, size_t why_size) {
+    int ok = j && cs_json_write(f, j, 0, "\n") == 0;
+    json_object_put(j);
+    if (!ok) snprintf(why, why_size, "out of memory");
+    return ok ? 0 : -1;
 }
 
 int cs_sweep_write_journal_start(FILE *f, const cs_sweep_spec *spec, const double *x,
                                  const cs_sweep_result *r, long n, char *why, size_t why_size) {
-    const cs_sweep_origin *o = &spec->origin;
-    fputc('{', f);
-    origin_json(f, o);
-    fprintf(f, ",\"partial\":true,\"inputs_hash\":\"%016llx\",\"resume\":%s}\n", o->inputs_hash,
-            o->resume ? o->resume : "null");
+    json_object *j = json_object_new_object();
+    if (j) origin_members(j, &spec->origin, 1, 0, 0);
+    if (put_json(f, j, why, why_size) != 0) return -1;
     return cs_sweep_write_runs(f, spec, x, r, n, why, why_size);
 }
 
-static void summary_json(FILE *f, const cs_sweep_spec *spec, long n, const summary *s) {
+static int summary_json(FILE *f, const cs_sweep_spec *spec, long n, const summary *s, char *why,
+                        size_t why_size) {
     int k = spec->var_count;
-    const cs_sweep_origin *o = &spec->origin;
-    fputc('{', f);
-    origin_json(f, o);
-    fprintf(f, ",\n\"partial\":%s,\"runs_done\":%ld,\"stopped_by\":", s->done < n ? "true" : "false",
-            s->done);
-    if (s->done < n && o->stopped_by)
-        cs_json_string(f, o->stopped_by);
-    else
-        fputs("null", f);
-    fprintf(f, ",\"inputs_hash\":\"%016llx\",\n\"resume\":%s,\n\"spec\":", o->inputs_hash,
-            o->resume ? o->resume : "null");
-    cs_json_string(f, spec->file);
-    fprintf(f, ",\"model\":");
-    cs_json_string(f, spec->model);
-    fprintf(
-        f,
-        ",\"method\":\"%s\",\"seed\":%llu,\"runs\":%ld,\"ok\":%ld,\"bad_model\":%ld,\"failed\":%ld,\"set\":[",
-        method_names[spec->method], (unsigned long long)spec->seed, n, s->ok, s->bad_model, s->failed);
-    for (int i = 0; i < spec->set_count; i++) {
-        if (i) fputc(',', f);
-        cs_json_string(f, spec->sets[i]);
+    json_object *j = json_object_new_object();
+    if (!j) return put_json(f, j, why, why_size);
+    origin_members(j, &spec->origin, s->done < n, s->done, 1);
+    json_object_object_add(j, "spec", cs_jstr(spec->file));
+    json_object_object_add(j, "model", cs_jstr(spec->model));
+    json_object_object_add(j, "method", cs_jstr(method_names[spec->method]));
+    json_object_object_add(j, "seed", json_object_new_uint64(spec->seed));
+    json_object_object_add(j, "runs", json_object_new_int64(n));
+    json_object_object_add(j, "ok", json_object_new_int64(s->ok));
+    json_object_object_add(j, "bad_model", json_object_new_int64(s->bad_model));
+    json_object_object_add(j, "failed", json_object_new_int64(s->failed));
+    json_object *sets = json_object_new_array(), *inputs = json_object_new_array();
+    for (int i = 0; i < spec->set_count; i++)
+        json_object_array_add(sets, cs_jstr(spec->sets[i]));
+    json_object_object_add(j, "set", sets);
+    for (int v = 0; v < k; v++) {
+        json_object *in = json_object_new_object();
+        json_object_object_add(in, "path", cs_jstr(spec->vars[v].path));
+        json_object_object_add(in, "unit", cs_jstr(spec->vars[v].unit));
+        json_object_object_add(in, "varied_as", cs_jstr(spec->vars[v].desc));
+        json_object_array_add(inputs, in);
     }
-    fprintf(f, "],\"inputs\":[");
-    for (int j = 0; j < k; j++) {
-        fprintf(f, "%s{\"path\":", j ? "," : "");
-        cs_json_string(f, spec->vars[j].path);
-        fprintf(f, ",\"unit\":");
-        cs_json_string(f, spec->vars[j].unit);
-        fprintf(f, ",\"varied_as\":");
-        cs_json_string(f, spec->vars[j].desc);
-        fputc('}', f);
-    }
-    fprintf(f, "],\"probabilities\":{");
+    json_object_object_add(j, "inputs", inputs);
+    json_object *probabilities = json_object_new_object();
     for (int t = 0; t < s->tally_count; t++) {
         cs_interval w = cs_wilson(s->t[t].count, s->ok, Z95);
-        if (t) fputc(',', f);
-        cs_json_string(f, s->t[t].name);
-        fprintf(f, ":{\"count\":%ld,\"p\":", s->t[t].count);
-        jnum(f, w.p);
-        fprintf(f, ",\"ci95\":[");
-        jnum(f, w.lo);
-        fputc(',', f);
-        jnum(f, w.hi);
-        fprintf(f, "]}");
+        json_object *p = json_object_new_object(), *ci = json_object_new_array();
+        json_object_object_add(p, "count", json_object_new_int64(s->t[t].count));
+        json_object_object_add(p, "p", cs_jnum(w.p));
+        json_object_array_add(ci, cs_jnum(w.lo));
+        json_object_array_add(ci, cs_jnum(w.hi));
+        json_object_object_add(p, "ci95", ci);
+        json_object_object_add(probabilities, s->t[t].name, p);
     }
-    fprintf(f, "},\"responses\":{");
+    json_object_object_add(j, "probabilities", probabilities);
     static const char *const stat_names[] = {"mean", "sd", "min", "p05", "median", "p95", "max"};
+    json_object *stats_of_responses = json_object_new_object(), *spearman = json_object_new_object();
     for (int q = 0; q < R_COUNT; q++) {
         const stats *st = &s->resp[q];
         const double v[] = {st->mean, st->sd, st->min, st->p05, st->p50, st->p95, st->max};
-        fprintf(f, "%s\"%s\":{\"runs\":%ld,\"over\":", q ? "," : "", responses[q].key, st->runs);
-        cs_json_string(f, responses[q].over ? responses[q].over : "the runs that ran to the end");
-        for (int c = 0; c < 7; c++) {
-            fprintf(f, ",\"%s\":", stat_names[c]);
-            jnum(f, v[c]);
-        }
-        fputc('}', f);
+        json_object *o = json_object_new_object();
+        json_object_object_add(o, "runs", json_object_new_int64(st->runs));
+        json_object_object_add(
+            o, "over", cs_jstr(responses[q].over ? responses[q].over : "the runs that ran to the end"));
+        for (int c = 0; c < 7; c++)
+            json_object_object_add(o, stat_names[c], cs_jnum(v[c]));
+        json_object_object_add(stats_of_responses, responses[q].key, o);
+        json_object *rho = json_object_new_object();
+        for (int v = 0; v < k; v++)
+            json_object_object_add(rho, spec->vars[v].path, cs_jnum(s->rho[v * R_COUNT + q]));
+        json_object_object_add(spearman, responses[q].key, rho);
     }
-    fprintf(f, "},\"spearman\":{");
-    for (int q = 0; q < R_COUNT; q++) {
-        fprintf(f, "%s\"%s\":{", q ? "," : "", responses[q].key);
-        for (int j = 0; j < k; j++) {
-            if (j) fputc(',', f);
-            cs_json_string(f, spec->vars[j].path);
-            fputc(':', f);
-            jnum(f, s->rho[j * R_COUNT + q]);
-        }
-        fputc('}', f);
-    }
-    fprintf(f, "}}\n");
+    json_object_object_add(j, "responses", stats_of_responses);
+    json_object_object_add(j, "spearman", spearman);
+    return put_json(f, j, why, why_size);
 }
 
 int cs_sweep_write_summary_json(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,

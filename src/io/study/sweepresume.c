@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "cablesim/cablesim.h"
+#include "out/jsondoc.h"
 #include "out/outfile.h"
 #include "out/sweepout.h"
 #include "out/writers.h"
@@ -19,37 +20,28 @@
 /* {"spec": the spec's absolute path, "spec_as_given" and the "cwd" it was given in, "runs", "seed", "set":
  * the command line's fixed values, "netcdf", "allow": the --allow-path folders, absolute}. */
 char *cs_sweep_resume_record(const cs_sweep_options *o, const char *as_given, const char *cwd) {
-    char real[PATH_MAX], *buf = NULL;
-    size_t size = 0;
-    FILE *f = open_memstream(&buf, &size);
-    if (!f) return NULL;
-    fputs("{\"spec\":", f);
-    cs_json_string(f, realpath(o->spec, real) ? real : o->spec);
-    fputs(",\"spec_as_given\":", f);
-    cs_json_string(f, as_given);
-    fputs(",\"cwd\":", f);
-    cs_json_string(f, cwd);
-    if (o->runs > 0)
-        fprintf(f, ",\"runs\":%ld,\"seed\":", o->runs);
-    else
-        fputs(",\"runs\":null,\"seed\":", f);
-    if (o->seed)
-        cs_json_string(f, o->seed);
-    else
-        fputs("null", f);
-    fputs(",\"set\":[", f);
-    for (int i = 0; i < o->set_count; i++) {
-        if (i) fputc(',', f);
-        cs_json_string(f, o->sets[i]);
+    char real[PATH_MAX];
+    json_object *j = json_object_new_object(), *sets = json_object_new_array(),
+                *allow = json_object_new_array();
+    if (!j || !sets || !allow) {
+        json_object_put(j), json_object_put(sets), json_object_put(allow);
+        return NULL;
     }
-    fprintf(f, "],\"netcdf\":%s,\"allow\":[", o->netcdf ? "true" : "false");
-    for (int i = 0; i < o->allow_count; i++) {
-        if (i) fputc(',', f);
-        cs_json_string(f, realpath(o->allow[i], real) ? real : o->allow[i]);
-    }
-    fputs("]}", f);
-    fclose(f);
-    return buf;
+    json_object_object_add(j, "spec", cs_jstr(realpath(o->spec, real) ? real : o->spec));
+    json_object_object_add(j, "spec_as_given", cs_jstr(as_given));
+    json_object_object_add(j, "cwd", cs_jstr(cwd));
+    json_object_object_add(j, "runs", o->runs > 0 ? json_object_new_int64(o->runs) : NULL);
+    json_object_object_add(j, "seed", cs_jstr(o->seed));
+    for (int i = 0; i < o->set_count; i++)
+        json_object_array_add(sets, cs_jstr(o->sets[i]));
+    json_object_object_add(j, "set", sets);
+    json_object_object_add(j, "netcdf", json_object_new_boolean(o->netcdf));
+    for (int i = 0; i < o->allow_count; i++)
+        json_object_array_add(allow, cs_jstr(realpath(o->allow[i], real) ? real : o->allow[i]));
+    json_object_object_add(j, "allow", allow);
+    char *text = cs_json_text(j);
+    json_object_put(j);
+    return text;
 }
 
 /* The string at key of obj into out (NULL, or not a string: ""). 0, or -1 if it does not fit. */
