@@ -16,6 +16,7 @@
 #include "commands.h"
 #include "load/loader_int.h"
 #include "out/htmltext.h"
+#include "out/jsondoc.h"
 #include "out/outfile.h"
 #include "out/report_html.h"
 
@@ -72,45 +73,55 @@ static void page_path(const design *d, int i, char *out, size_t size) {
     }
 }
 
-/* A file the loader read, again: the same rule, a regular file of at most CS_INPUT_MAX bytes. */
-static int write_text_of(FILE *f, const char *real) {
+/* A file the loader read, again (the same rule, a regular file of at most CS_INPUT_MAX bytes), as a JSON
+ * string; NULL if it cannot be read. */
+static json_object *text_of(const char *real) {
     char *text = NULL, why[256];
     size_t size = 0;
     int err;
-    if (cs_input_read(real, CS_INPUT_MAX, &text, &size, &err, why, sizeof why) != 0) return -1;
-    cs_json_page_string(f, text);
+    if (cs_input_read(real, CS_INPUT_MAX, &text, &size, &err, why, sizeof why) != 0) return NULL;
+    json_object *s = cs_jstr(text);
     free(text);
-    return 0;
+    return s;
 }
 
 /* The page's data: {"version","name","model","file","data_dir","units","files":[{"path","text"}]}. */
 static int write_design(FILE *f, void *user, char *why, size_t why_size) {
     const design *d = user;
-    fputs("{\"version\":", f);
-    cs_json_page_string(f, CS_VERSION_STRING);
-    fputs(",\"name\":", f);
-    cs_json_page_string(f, d->name);
-    fputs(",\"model\":", f);
-    cs_json_page_string(f, d->model_path);
-    fputs(",\"file\":", f);
-    cs_json_page_string(f, d->file);
-    fputs(",\"data_dir\":\"/data\",\"units\":", f);
-    cs_json_page_string(f, d->units);
-    fputs(",\"files\":[", f);
-    for (int i = 0; i < d->l->file_count; i++) {
+    json_object *doc = json_object_new_object(), *files = json_object_new_array();
+    if (!doc || !files) {
+        json_object_put(doc), json_object_put(files);
+        snprintf(why, why_size, "out of memory");
+        return -1;
+    }
+    json_object_object_add(doc, "version", cs_jstr(CS_VERSION_STRING));
+    json_object_object_add(doc, "name", cs_jstr(d->name));
+    json_object_object_add(doc, "model", cs_jstr(d->model_path));
+    json_object_object_add(doc, "file", cs_jstr(d->file));
+    json_object_object_add(doc, "data_dir", cs_jstr("/data"));
+    json_object_object_add(doc, "units", cs_jstr(d->units));
+    json_object_object_add(doc, "files", files);
+    int rc = 0;
+    for (int i = 0; i < d->l->file_count && rc == 0; i++) {
         char path[PATH_MAX + 16];
         page_path(d, i, path, sizeof path);
-        fputs(i ? ",{\"path\":" : "{\"path\":", f);
-        cs_json_page_string(f, path);
-        fputs(",\"text\":", f);
-        if (write_text_of(f, d->l->files[i].real) != 0) {
+        json_object *file = json_object_new_object(), *text = text_of(d->l->files[i].real);
+        if (!file || !text) {
+            json_object_put(file), json_object_put(text);
             snprintf(why, why_size, "%s: cannot read it again", d->l->files[i].name);
-            return -1;
+            rc = -1;
+            break;
         }
-        fputc('}', f);
+        json_object_object_add(file, "path", cs_jstr(path));
+        json_object_object_add(file, "text", text);
+        json_object_array_add(files, file);
     }
-    fputs("]}", f);
-    return 0;
+    if (rc == 0 && cs_json_write(f, doc, 1, "") != 0) {
+        snprintf(why, why_size, "out of memory");
+        rc = -1;
+    }
+    json_object_put(doc);
+    return rc;
 }
 
 /* The unit table: the usual units and every unit written in the files read (the text after a number). */
