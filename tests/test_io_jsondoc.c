@@ -2,7 +2,8 @@
 /* The JSON documents' writer (out/jsondoc.h): numbers keep cs_g10's "%.10g" text to the byte and read
  * back within its 10 digits, strings are escaped by json-c ('/' left as it is), the line-break wrappers
  * put a line break after or before a member, or before a named key, and leave the document valid JSON
- * that reads back the same, and a page's text has no <, > or & left. */
+ * that reads back the same, a list of numbers keeps the digits asked for and reads back within them, and a
+ * page's text has no <, > or & left. */
 #include <json-c/json.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -38,6 +39,31 @@ static void numbers_keep_their_text(void **state) {
         CHECK_ABS(json_object_get_double(json_object_array_get_idx(back, i)), v[i], 5e-10 * fabs(v[i]));
     assert_null(json_object_array_get_idx(back, 8));
     json_object_put(back), json_object_put(a);
+    free(text);
+}
+
+static void number_lists_to_their_digits(void **state) {
+    (void)state;
+    const double v[] = {1.0 / 3.0, -0.0, 2.5e-7, 123456789.0, NAN, 4.0};
+    json_object *o = json_object_new_object();
+    json_object_object_add(o, "six", cs_jnums(v, 6, 6, 1));
+    json_object_object_add(o, "all", cs_jnums(v, 2, 17, 0));
+    json_object_object_add(o, "none", cs_jnums(v, 0, 6, 0));
+    char *text = text_of(o, 0);
+    assert_string_equal(text, "{\"six\":[0.333333,0,2.5e-07,1.23457e+08,null,4],"
+                              "\"all\":[0.33333333333333331,0],\"none\":[]}\n");
+    json_object *back = json_tokener_parse(text), *six, *all;
+    assert_non_null(back);
+    assert_true(json_object_object_get_ex(back, "six", &six));
+    assert_true(json_object_object_get_ex(back, "all", &all));
+    assert_int_equal(json_object_array_length(six), 6);
+    for (int i = 0; i < 6; i++) /* 6 significant digits: 5e-6 relative */
+        if (i != 4)
+            CHECK_ABS(json_object_get_double(json_object_array_get_idx(six, i)), v[i], 5e-6 * fabs(v[i]));
+    assert_null(json_object_array_get_idx(six, 4));
+    /* 17 digits: the double itself */
+    CHECK_ABS(json_object_get_double(json_object_array_get_idx(all, 0)), v[0], 0.0);
+    json_object_put(back), json_object_put(o);
     free(text);
 }
 
@@ -106,9 +132,8 @@ static void keys_on_new_lines(void **state) {
 
 int main(void) {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(numbers_keep_their_text),
-        cmocka_unit_test(strings_escaped_by_json_c),
-        cmocka_unit_test(line_breaks_between_members),
+        cmocka_unit_test(numbers_keep_their_text),   cmocka_unit_test(number_lists_to_their_digits),
+        cmocka_unit_test(strings_escaped_by_json_c), cmocka_unit_test(line_breaks_between_members),
         cmocka_unit_test(keys_on_new_lines),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -18,6 +18,40 @@ json_object *cs_jnum(double v) {
     return json_object_new_double_s(v, text);
 }
 
+/* A list of numbers (cs_jnums): its length, digits and whether NaN is null, and the numbers. */
+typedef struct numbers {
+    int n, digits, nan_null;
+    double v[];
+} numbers;
+
+static int numbers_text(json_object *jso, struct printbuf *pb, int level, int flags) {
+    (void)level, (void)flags;
+    const numbers *l = json_object_get_userdata(jso);
+    if (printbuf_memappend(pb, "[", 1) < 0) return -1;
+    for (int i = 0; i < l->n; i++) {
+        char text[40];
+        double v = l->v[i];
+        int len = l->nan_null && isnan(v) ? snprintf(text, sizeof text, "null")
+                                          : snprintf(text, sizeof text, "%.*g", l->digits, v == 0 ? 0.0 : v);
+        if ((i && printbuf_memappend(pb, ",", 1) < 0) || printbuf_memappend(pb, text, len) < 0) return -1;
+    }
+    return printbuf_memappend(pb, "]", 1) < 0 ? -1 : 0;
+}
+
+json_object *cs_jnums(const double *v, int n, int digits, int nan_null) {
+    json_object *list = json_object_new_array();
+    numbers *l = malloc(sizeof *l + (size_t)(n > 0 ? n : 0) * sizeof l->v[0]);
+    if (!list || !l) {
+        json_object_put(list);
+        free(l);
+        return NULL;
+    }
+    l->n = n > 0 ? n : 0, l->digits = digits, l->nan_null = nan_null;
+    if (n > 0) memcpy(l->v, v, (size_t)n * sizeof v[0]);
+    json_object_set_serializer(list, numbers_text, l, json_object_free_userdata);
+    return list;
+}
+
 json_object *cs_jstr(const char *s) {
     return s ? json_object_new_string(s) : NULL;
 }
@@ -113,11 +147,12 @@ int cs_json_write(FILE *f, json_object *doc, int page, const char *end) {
     if (!page) {
         fwrite(text, 1, n, f);
     } else {
-        for (const char *s = text; *s; s++) {
-            if (*s == '<' || *s == '>' || *s == '&') /* only ever inside a string */
-                fprintf(f, "\\u%04x", (unsigned)*s);
-            else
-                fputc(*s, f);
+        /* the runs between them written whole (a page's data is megabytes) */
+        for (const char *s = text; *s;) {
+            size_t run = strcspn(s, "<>&"); /* only ever inside a string */
+            fwrite(s, 1, run, f);
+            s += run;
+            if (*s) fprintf(f, "\\u%04x", (unsigned)*s++);
         }
     }
     fputs(end, f);

@@ -12,6 +12,11 @@
 /* v as a JSON number written as cs_g10 writes it (the text kept with the value); NULL, JSON's null, if v
  * is not finite. */
 json_object *cs_jnum(double v);
+/* n numbers as a JSON array, each written to digits significant digits ("%.*g", 0 for -0), a NaN as null
+ * where nan_null (else as printf writes it: the caller keeps them finite). One object for the list, the
+ * numbers kept as a copy and written by its serializer: for writing only (json-c sees an empty array).
+ * NULL if out of memory. */
+json_object *cs_jnums(const double *v, int n, int digits, int nan_null);
 /* s as a JSON string; NULL (null) for NULL. */
 json_object *cs_jstr(const char *s);
 /* A member's value written as v's text then a line break (after), or a line break then v's text: for

@@ -19,76 +19,57 @@ typedef struct jw {
     int digits;    /* of a named value (knum, kopt): 6, or every digit of the double in "summary" */
 } jw;
 
-void cs_json_page_string(FILE *f, const char *s) {
-    fputc('"', f);
-    for (; s && *s; s++) {
-        unsigned char c = (unsigned char)*s;
-        if (c == '"' || c == '\\')
-            fprintf(f, "\\%c", c);
-        else if (c < 0x20 || c == '<' || c == '>' || c == '&')
-            fprintf(f, "\\u%04x", c);
-        else
-            fputc(c, f);
-    }
-    fputc('"', f);
-}
-
 /* The response parameters ("summary") have every digit of the double, so that the page, rounding them
  * for display, shows what the terminal shows (0.41650000000000004 s is 0.417 s on both; written as 0.4165
  * it would read 0.416). */
 enum { SUMMARY_DIGITS = 17, PAGE_DIGITS = 6 };
 
-/* A number to `digits` significant digits; NaN is null where nullable (absent on purpose). */
-static void num_digits(jw *j, double v, int digits, int nullable) {
-    if (nullable && isnan(v)) {
-        fputs("null", j->w.f);
-        return;
-    }
-    if (j->w.bad) return;
-    if (!isfinite(v)) {
-        j->w.bad = 1;
-        snprintf(j->w.why, sizeof j->w.why, "%s is %s", j->what, isnan(v) ? "NaN" : "infinite");
-        return;
-    }
-    fprintf(j->w.f, "%.*g", digits, v == 0 ? 0.0 : v); /* no "-0" */
+/* A number to `digits` significant digits, its text kept with it (no "-0"); NaN is null where nullable
+ * (absent on purpose). A non-finite one that may not be marks j bad, naming j->what, and is null. */
+static json_object *num_digits(jw *j, double v, int digits, int nullable) {
+    if (nullable && isnan(v)) return NULL;
+    if (!cs_w_finite(&j->w, v, j->what)) return NULL;
+    char text[32];
+    snprintf(text, sizeof text, "%.*g", digits, v == 0 ? 0.0 : v);
+    return json_object_new_double_s(v, text);
 }
 
 /* A point of a time history, with 6 significant digits (the data of a page's plots and replay, not of an
  * analysis: the CSV has 10). */
-static void num(jw *j, double v) {
-    num_digits(j, v, PAGE_DIGITS, 0);
+static json_object *num(jw *j, double v) {
+    return num_digits(j, v, PAGE_DIGITS, 0);
 }
 
 /* A point of a time history that may be absent on purpose (NaN: null). */
-static void opt(jw *j, double v) {
-    num_digits(j, v, PAGE_DIGITS, 1);
+static json_object *opt(jw *j, double v) {
+    return num_digits(j, v, PAGE_DIGITS, 1);
 }
 
-static void key(jw *j, int *first, const char *k) {
-    fprintf(j->w.f, "%s\"%s\":", *first ? "" : ",", k);
-    *first = 0;
-}
-
-static void knum(jw *j, int *first, const char *k, double v) {
-    key(j, first, k);
+static void knum(jw *j, json_object *o, const char *k, double v) {
     snprintf(j->what, sizeof j->what, "%s", k);
-    num_digits(j, v, j->digits, 0);
+    json_object_object_add(o, k, num_digits(j, v, j->digits, 0));
 }
 
-static void kopt(jw *j, int *first, const char *k, double v) {
-    key(j, first, k);
+static void kopt(jw *j, json_object *o, const char *k, double v) {
     snprintf(j->what, sizeof j->what, "%s", k);
-    num_digits(j, v, j->digits, 1);
+    json_object_object_add(o, k, num_digits(j, v, j->digits, 1));
 }
 
-static void kint(jw *j, int *first, const char *k, int v) {
-    key(j, first, k);
-    fprintf(j->w.f, "%d", v);
+static void kint(json_object *o, const char *k, int v) {
+    json_object_object_add(o, k, json_object_new_int(v));
 }
 
-static void kstr(jw *j, int *first, const char *k, const char *v) {
-    key(j, first, k);
-    cs_json_page_string(j->w.f, v);
+/* A string of the page (NULL: ""). */
+static void kstr(json_object *o, const char *k, const char *v) {
+    json_object_object_add(o, k, cs_jstr(v ? v : ""));
+}
+
+/* n ints as a JSON array. */
+static json_object *ints(const int *v, int n) {
+    json_object *a = json_object_new_array();
+    for (int i = 0; i < n; i++)
+        json_object_array_add(a, json_object_new_int(v[i]));
+    return a;
 }
 
 /* Frames kept: 0, stride, 2 stride, ... and always the last. */
@@ -103,21 +84,34 @@ static int kept_frame(int n, int stride, int k) {
 /* A series over the kept frames: value(rec, frame, arg). */
 typedef double (*series_fn)(const cs_record *r, const cs_model_input *in, int f, int arg);
 
-static void series(jw *j, const cs_record *r, const cs_model_input *in, int stride, series_fn fn, int arg,
-                   int nullable, const char *what) {
+/* n numbers of the page as one list (cs_jnums), 6 significant digits, a NaN null where nullable; any
+ * other non-finite one marks j bad, naming j->what. */
+static json_object *page_nums(jw *j, const double *v, int n, int nullable) {
+    for (int i = 0; i < n; i++)
+        if (!(nullable && isnan(v[i])) && !cs_w_finite(&j->w, v[i], j->what)) return NULL;
+    json_object *a = j->w.bad ? NULL : cs_jnums(v, n, PAGE_DIGITS, nullable);
+    if (!a) cs_w_oom(&j->w, j->what);
+    return a;
+}
+
+static json_object *series(jw *j, const cs_record *r, const cs_model_input *in, int stride, series_fn fn,
+                           int arg, int nullable, const char *what) {
     int n = r->frame_count, count = kept_count(n, stride);
-    fputc('[', j->w.f);
-    for (int k = 0; k < count && !j->w.bad; k++) {
-        int f = kept_frame(n, stride, k);
-        if (k) fputc(',', j->w.f);
-        snprintf(j->what, sizeof j->what, "%s at t = %g s", what, r->vehicle[f].t);
-        double v = fn(r, in, f, arg);
-        if (nullable)
-            opt(j, v);
-        else
-            num(j, v);
+    double *v = malloc((size_t)(count > 0 ? count : 1) * sizeof *v);
+    snprintf(j->what, sizeof j->what, "%s", what);
+    if (!v) {
+        cs_w_oom(&j->w, what);
+        return NULL;
     }
-    fputc(']', j->w.f);
+    for (int k = 0; k < count; k++) {
+        int f = kept_frame(n, stride, k);
+        v[k] = fn(r, in, f, arg);
+        if (!isfinite(v[k]) && !(nullable && isnan(v[k])) && !j->w.bad) /* the message names its time */
+            snprintf(j->what, sizeof j->what, "%s at t = %g s", what, r->vehicle[f].t);
+    }
+    json_object *a = page_nums(j, v, count, nullable);
+    free(v);
+    return a;
 }
 
 static double s_time(const cs_record *r, const cs_model_input *in, int f, int arg) {
@@ -217,12 +211,11 @@ static double s_energy(const cs_record *r, const cs_model_input *in, int f, int 
 
 enum { NEAR_POSTS = 4 };
 
-static void write_series(jw *j, const cs_model_input *in, const cs_record *r, int stride) {
-    FILE *f = j->w.f;
-    int first = 1, idx[NEAR_POSTS];
+static json_object *write_series(jw *j, const cs_model_input *in, const cs_record *r, int stride) {
+    int idx[NEAR_POSTS];
     int near = cs_nearest_posts(in, idx, r->post_count < NEAR_POSTS ? r->post_count : NEAR_POSTS);
-    fputc('{', f);
-    kint(j, &first, "stride", stride);
+    json_object *o = json_object_new_object();
+    kint(o, "stride", stride);
     static const struct {
         const char *key, *what;
         series_fn fn;
@@ -241,57 +234,42 @@ static void write_series(jw *j, const cs_model_input *in, const cs_record *r, in
         {"cg_x", "the CG's x", s_cg, 0, 0},
         {"cg_y", "the CG's y", s_cg, 1, 0},
     };
-    for (size_t k = 0; k < sizeof plain / sizeof plain[0]; k++) {
-        key(j, &first, plain[k].key);
-        series(j, r, in, stride, plain[k].fn, plain[k].arg, plain[k].nullable, plain[k].what);
-    }
-    key(j, &first, "tension");
-    fputc('[', f);
-    for (int c = 0; c < r->cable_count; c++) {
-        if (c) fputc(',', f);
-        series(j, r, in, stride, s_tension, c, 0, "a cable's tension");
-    }
-    fputc(']', f);
-    key(j, &first, "near_posts");
-    fputc('[', f);
-    for (int k = 0; k < near; k++)
-        fprintf(f, "%s%d", k ? "," : "", idx[k]);
-    fputc(']', f);
+    for (size_t k = 0; k < sizeof plain / sizeof plain[0]; k++)
+        json_object_object_add(
+            o, plain[k].key,
+            series(j, r, in, stride, plain[k].fn, plain[k].arg, plain[k].nullable, plain[k].what));
+    json_object *tension = json_object_new_array();
+    for (int c = 0; c < r->cable_count; c++)
+        json_object_array_add(tension, series(j, r, in, stride, s_tension, c, 0, "a cable's tension"));
+    json_object_object_add(o, "tension", tension);
+    json_object_object_add(o, "near_posts", ints(idx, near));
     static const struct {
         const char *key, *what;
         series_fn fn;
     } per_post[] = {{"post_tilt", "a post's tilt", s_tilt},
                     {"post_moment", "a post's base moment", s_moment}};
     for (int m = 0; m < 2; m++) {
-        key(j, &first, per_post[m].key);
-        fputc('[', f);
-        for (int k = 0; k < near; k++) {
-            if (k) fputc(',', f);
-            series(j, r, in, stride, per_post[m].fn, idx[k], 0, per_post[m].what);
-        }
-        fputc(']', f);
+        json_object *a = json_object_new_array();
+        for (int k = 0; k < near; k++)
+            json_object_array_add(a, series(j, r, in, stride, per_post[m].fn, idx[k], 0, per_post[m].what));
+        json_object_object_add(o, per_post[m].key, a);
     }
-    key(j, &first, "post_capacity");
-    fputc('[', f);
+    json_object *capacity = json_object_new_array();
     for (int k = 0; k < near && r->frame_count > 0; k++) {
-        if (k) fputc(',', f);
         snprintf(j->what, sizeof j->what, "post %d's moment capacity", idx[k]);
-        num(j, r->posts[idx[k]].moment_capacity);
+        json_object_array_add(capacity, num(j, r->posts[idx[k]].moment_capacity));
     }
-    fputc(']', f);
-    key(j, &first, "energy");
-    fputc('{', f);
-    int ef = 1;
-    for (int k = 0; k < LEDGER_TERMS; k++) {
-        key(j, &ef, ledger[k].key);
-        series(j, r, in, stride, s_energy, k, 0, "the energy ledger");
-    }
-    fputc('}', f);
+    json_object_object_add(o, "post_capacity", capacity);
+    json_object *energy = json_object_new_object();
+    for (int k = 0; k < LEDGER_TERMS; k++)
+        json_object_object_add(energy, ledger[k].key,
+                               series(j, r, in, stride, s_energy, k, 0, "the energy ledger"));
+    json_object_object_add(o, "energy", energy);
     if (r->frame_count > 0) {
-        knum(j, &first, "initial_kinetic", r->energy[0].initial_kinetic);
-        knum(j, &first, "initial_total", r->energy[0].initial_total);
+        knum(j, o, "initial_kinetic", r->energy[0].initial_kinetic);
+        knum(j, o, "initial_total", r->energy[0].initial_total);
     }
-    fputc('}', f);
+    return o;
 }
 
 /* Bytes of one replay frame, roughly (a number ~ 8 characters). */
@@ -302,75 +280,71 @@ static double replay_frame_bytes(const cs_record *r) {
     return 8.0 * (10 + 4 * r->post_count + r->cable_count * (4 + 4 * nodes));
 }
 
+/* n numbers of the page as a JSON array. */
+static json_object *nums(jw *j, const double *v, int n) {
+    return page_nums(j, v, n, 0);
+}
+
 /* frames: [[t, [x, y, z, roll, pitch, yaw, crush, face_force], [top x, y, z, status]*posts,
- * [[status, engaged, [x, y, z]*nodes, [span tension]*(nodes-1)]]*cables], ...] */
-static void write_frames(jw *j, const cs_record *r, int stride) {
-    FILE *f = j->w.f;
+ * [[status, engaged, [x, y, z]*nodes, [span tension]*(nodes-1)]]*cables], ...], each frame on a line of
+ * its own */
+static json_object *write_frames(jw *j, const cs_record *r, int stride) {
     int n = r->frame_count, count = kept_count(n, stride);
-    fputc('[', f);
+    json_object *frames = json_object_new_array_ext(count > 0 ? count : 1);
+    double *tops = malloc((size_t)(4 * r->post_count + 1) * sizeof *tops); /* a frame's posts */
+    if (!tops) cs_w_oom(&j->w, "the replay");
     for (int k = 0; k < count && !j->w.bad; k++) {
         int fr = kept_frame(n, stride, k);
         const cs_vehicle_view *v = &r->vehicle[fr];
         snprintf(j->what, sizeof j->what, "the replay frame at t = %g s", v->t);
-        fprintf(f, "%s\n[", k ? "," : "");
-        num(j, v->t);
         const double pose[] = {v->position[0], v->position[1], v->position[2], v->roll,
                                v->pitch,       v->yaw,         v->crush,       v->face_force};
-        fputs(",[", f);
-        for (size_t i = 0; i < sizeof pose / sizeof pose[0]; i++) {
-            if (i) fputc(',', f);
-            num(j, pose[i]);
-        }
-        fputs("],[", f);
+        json_object *frame = json_object_new_array_ext(4),
+                    *cables = json_object_new_array_ext(r->cable_count + 1);
+        json_object_array_add(frame, num(j, v->t));
+        json_object_array_add(frame, nums(j, pose, (int)(sizeof pose / sizeof pose[0])));
         for (int p = 0; p < r->post_count; p++) {
             const cs_post_view *pv = &r->posts[(size_t)fr * (size_t)r->post_count + (size_t)p];
-            fputs(p ? "," : "", f);
-            for (int i = 0; i < 3; i++) {
-                num(j, pv->top[i]);
-                fputc(',', f);
-            }
-            fprintf(f, "%d", (int)pv->status);
+            for (int i = 0; i < 3; i++)
+                tops[4 * p + i] = pv->top[i];
+            tops[4 * p + 3] = (double)pv->status; /* a small integer: "%.6g" writes it as "%d" would */
         }
-        fputs("],[", f);
+        json_object_array_add(frame, page_nums(j, tops, 4 * r->post_count, 0));
         for (int c = 0; c < r->cable_count; c++) {
             size_t ck = (size_t)fr * (size_t)r->cable_count + (size_t)c;
             const cs_cable_view *cv = &r->cables[ck];
-            const double *xyz = r->path_xyz + ck * (size_t)r->max_nodes * 3,
-                         *ten = r->path_tension + ck * (size_t)r->max_nodes;
             int nodes = r->path_count[ck];
-            fprintf(f, "%s[%d,%d,[", c ? "," : "", (int)cv->status, cv->engaged);
-            for (int i = 0; i < 3 * nodes; i++) {
-                if (i) fputc(',', f);
-                num(j, xyz[i]);
-            }
-            fputs("],[", f);
-            for (int i = 0; i + 1 < nodes; i++) {
-                if (i) fputc(',', f);
-                num(j, ten[i]);
-            }
-            fputs("]]", f);
+            json_object *cable = json_object_new_array_ext(4);
+            json_object_array_add(cable, json_object_new_int((int)cv->status));
+            json_object_array_add(cable, json_object_new_int(cv->engaged));
+            json_object_array_add(cable, nums(j, r->path_xyz + ck * (size_t)r->max_nodes * 3, 3 * nodes));
+            json_object_array_add(
+                cable, nums(j, r->path_tension + ck * (size_t)r->max_nodes, nodes > 1 ? nodes - 1 : 0));
+            json_object_array_add(cables, cable);
         }
-        fputs("]]", f);
+        json_object_array_add(frame, cables);
+        json_object_array_add(frames, cs_jline_before(frame));
     }
-    fputc(']', f);
+    free(tops);
+    return frames;
 }
 
 /* ---- the design as loaded ---- */
 
 /* A capacity that may be a rule instead of a number: key as a number where one is given, else null and
  * key_rule what stands for it. */
-static void kcapacity(jw *j, int *first, const char *k, double v, const char *rule) {
+static void kcapacity(jw *j, json_object *o, const char *k, double v, const char *rule) {
     char rk[64];
-    kopt(j, first, k, isfinite(v) && v > 0 ? v : NAN);
+    kopt(j, o, k, isfinite(v) && v > 0 ? v : NAN);
     snprintf(rk, sizeof rk, "%s_rule", k);
-    kstr(j, first, rk, isinf(v) ? "never" : v > 0 ? "" : rule);
+    kstr(o, rk, isinf(v) ? "never" : v > 0 ? "" : rule);
 }
 
-static void write_footing(jw *j, int *first, const cs_footing_def *f, const char *pullout_rule) {
-    knum(j, first, "diameter_m", f->diameter);
-    knum(j, first, "depth_m", f->depth);
-    knum(j, first, "rotation_limit_rad", f->rotation_limit);
-    kcapacity(j, first, "pullout_capacity_n", f->pullout_capacity, pullout_rule);
+static void write_footing(jw *j, json_object *o, const cs_footing_def *f, const char *pullout_rule) {
+    knum(j, o, "diameter_m", f->diameter);
+    knum(j, o, "depth_m", f->depth);
+    knum(j, o, "rotation_limit_rad", f->rotation_limit);
+    kcapacity(j, o, "pullout_capacity_n", f->pullout_capacity, pullout_rule);
 }
 
 /* A struct's doubles by name and place. */
@@ -389,11 +363,11 @@ static const field section_fields[] = {{"plastic_modulus_m3", offsetof(cs_sectio
                                        {"modulus_pa", offsetof(cs_section_def, modulus)},
                                        {"mass_per_length_kg_m", offsetof(cs_section_def, mass_per_length)}};
 
-static void kfields(jw *j, int *first, const void *base, const field *fields, size_t count) {
+static void kfields(jw *j, json_object *o, const void *base, const field *fields, size_t count) {
     for (size_t k = 0; k < count; k++) {
         double v;
         memcpy(&v, (const char *)base + fields[k].offset, sizeof v);
-        knum(j, first, fields[k].key, v);
+        knum(j, o, fields[k].key, v);
     }
 }
 
@@ -409,287 +383,283 @@ static int same_kind(const cs_post_def *a, const cs_post_def *b) {
            f->pullout_capacity == g->pullout_capacity;
 }
 
-/* "design": the barrier's ropes, its kinds of post (section, footing, where they stand), the posts'
- * spacing, the soil (the first post's footing's) and the anchors, in SI, as the engine gets them. */
-static void write_design(jw *j, int *first, const cs_barrier_def *b) {
-    FILE *f = j->w.f;
-    snprintf(j->what, sizeof j->what, "the design");
-    key(j, first, "design");
-    fputs("{\"ropes\":[", f);
+/* The barrier's ropes as the design gives them: each one's height, rope and pretension, and the fitting
+ * at the start anchor and at the end anchor. */
+static json_object *design_ropes(jw *j, const cs_barrier_def *b) {
+    json_object *ropes = json_object_new_array();
     for (int c = 0; c < b->cable_count; c++) {
         const cs_cable_def *cd = &b->cables[c];
-        int rf = 1;
-        fputs(c ? ",{" : "{", f);
-        knum(j, &rf, "height_m", cd->height);
-        kfields(j, &rf, &cd->rope, rope_fields, sizeof rope_fields / sizeof rope_fields[0]);
-        knum(j, &rf, "pretension_n", cd->pretension);
-        key(j, &rf, "ends"); /* the fitting at the start anchor, at the end anchor */
+        json_object *rope = json_object_new_object(), *ends = json_object_new_array();
+        knum(j, rope, "height_m", cd->height);
+        kfields(j, rope, &cd->rope, rope_fields, sizeof rope_fields / sizeof rope_fields[0]);
+        knum(j, rope, "pretension_n", cd->pretension);
         for (int k = 0; k < 2; k++) {
             cs_termination kind;
             double eff = cs_cable_end_efficiency(cd, k, &kind);
-            int ef = 1;
-            fputs(k ? ",{" : "[{", f);
-            kstr(j, &ef, "termination", cs_termination_word(kind));
-            knum(j, &ef, "termination_efficiency", eff);
+            json_object *end = json_object_new_object();
+            kstr(end, "termination", cs_termination_word(kind));
+            knum(j, end, "termination_efficiency", eff);
             double travel, slip = cs_cable_end_slip(cd, k, &travel);
             if (slip > 0.0) /* a fitting that slips */
-                knum(j, &ef, "slip_load_n", slip), knum(j, &ef, "slip_travel_m", travel);
-            fputc('}', f);
+                knum(j, end, "slip_load_n", slip), knum(j, end, "slip_travel_m", travel);
+            json_object_array_add(ends, end);
         }
-        fputs("]}", f);
+        json_object_object_add(rope, "ends", ends);
+        json_object_array_add(ropes, rope);
     }
-    fputs("],\"post_kinds\":[", f);
-    int kinds = 0;
+    return ropes;
+}
+
+/* The barrier's kinds of post: the posts of each kind, its section, footing and attachment. */
+static json_object *design_post_kinds(jw *j, const cs_barrier_def *b) {
+    json_object *kinds = json_object_new_array();
     for (int p = 0; p < b->post_count; p++) {
         const cs_post_def *pd = &b->posts[p];
-        int seen = 0, count = 0, pf = 1;
+        int seen = 0;
         for (int q = 0; q < p && !seen; q++)
             seen = same_kind(&b->posts[q], pd);
         if (seen) continue;
-        fputs(kinds++ ? ",{\"posts\":[" : "{\"posts\":[", f);
+        json_object *kind = json_object_new_object(), *posts = json_object_new_array(),
+                    *footing = json_object_new_object();
         for (int q = p; q < b->post_count; q++)
-            if (same_kind(&b->posts[q], pd)) fprintf(f, "%s%d", count++ ? "," : "", q);
-        fputc(']', f);
-        pf = 0;
-        knum(j, &pf, "height_m", pd->height);
-        kfields(j, &pf, &pd->section, section_fields, sizeof section_fields / sizeof section_fields[0]);
-        knum(j, &pf, "rotation_limit_rad", pd->rotation_limit);
-        kstr(j, &pf, "attachment", cs_attachment_word(pd->attachment));
-        key(j, &pf, "footing");
-        int ff = 1;
-        fputc('{', f);
-        write_footing(j, &ff, &pd->footing, "skin friction");
-        fputs("}}", f);
+            if (same_kind(&b->posts[q], pd)) json_object_array_add(posts, json_object_new_int(q));
+        json_object_object_add(kind, "posts", posts);
+        knum(j, kind, "height_m", pd->height);
+        kfields(j, kind, &pd->section, section_fields, sizeof section_fields / sizeof section_fields[0]);
+        knum(j, kind, "rotation_limit_rad", pd->rotation_limit);
+        kstr(kind, "attachment", cs_attachment_word(pd->attachment));
+        write_footing(j, footing, &pd->footing, "skin friction");
+        json_object_object_add(kind, "footing", footing);
+        json_object_array_add(kinds, kind);
     }
-    fputs("],\"post_x_m\":[", f);
-    for (int p = 0; p < b->post_count; p++) {
-        if (p) fputc(',', f);
-        num(j, b->posts[p].x);
-    }
-    fputs("],\"soil\":{", f);
+    return kinds;
+}
+
+/* "design": the barrier's ropes, its kinds of post (section, footing, where they stand), the posts'
+ * spacing, the soil (the first post's footing's) and the anchors, in SI, as the engine gets them. */
+static json_object *write_design(jw *j, const cs_barrier_def *b) {
+    snprintf(j->what, sizeof j->what, "the design");
+    json_object *o = json_object_new_object(), *post_x = json_object_new_array(),
+                *soil_o = json_object_new_object(), *anchors = json_object_new_array();
+    json_object_object_add(o, "ropes", design_ropes(j, b));
+    json_object_object_add(o, "post_kinds", design_post_kinds(j, b));
+    for (int p = 0; p < b->post_count; p++)
+        json_object_array_add(post_x, num(j, b->posts[p].x));
+    json_object_object_add(o, "post_x_m", post_x);
     const cs_footing_def *soil = b->post_count ? &b->posts[0].footing : &b->start_anchor.footing;
-    int sf = 1;
-    knum(j, &sf, "soil_pressure_pa", soil->soil_pressure);
-    knum(j, &sf, "soil_pressure_cap_pa", soil->soil_pressure_cap);
-    knum(j, &sf, "coeff_depth", soil->coeff_depth);
-    knum(j, &sf, "coeff_height", soil->coeff_height);
-    knum(j, &sf, "dynamic_factor", soil->dynamic_factor);
-    knum(j, &sf, "friction_angle_rad", soil->friction_angle);
-    knum(j, &sf, "residual_friction_angle_rad", soil->residual_friction_angle);
-    kstr(j, &sf, "width_scaling", cs_width_scaling_word(soil->width_scaling));
-    knum(j, &sf, "skin_friction_pa_m", soil->skin_friction);
-    fputs("},\"anchors\":[", f);
+    knum(j, soil_o, "soil_pressure_pa", soil->soil_pressure);
+    knum(j, soil_o, "soil_pressure_cap_pa", soil->soil_pressure_cap);
+    knum(j, soil_o, "coeff_depth", soil->coeff_depth);
+    knum(j, soil_o, "coeff_height", soil->coeff_height);
+    knum(j, soil_o, "dynamic_factor", soil->dynamic_factor);
+    knum(j, soil_o, "friction_angle_rad", soil->friction_angle);
+    knum(j, soil_o, "residual_friction_angle_rad", soil->residual_friction_angle);
+    kstr(soil_o, "width_scaling", cs_width_scaling_word(soil->width_scaling));
+    knum(j, soil_o, "skin_friction_pa_m", soil->skin_friction);
+    json_object_object_add(o, "soil", soil_o);
     for (int k = 0; k < 2; k++) {
         const cs_anchor_def *a = k ? &b->end_anchor : &b->start_anchor;
-        int af = 1;
-        fputs(k ? ",{" : "{", f);
-        knum(j, &af, "x_m", a->x);
-        knum(j, &af, "z_m", a->z);
-        knum(j, &af, "diameter_m", a->footing.diameter);
-        knum(j, &af, "depth_m", a->footing.depth);
-        knum(j, &af, "length_m", a->length > 0 ? a->length : a->footing.diameter);
-        kopt(j, &af, "mass_kg", a->mass > 0 ? a->mass : NAN);
-        kcapacity(j, &af, "pullout_capacity_n", a->pullout_capacity, "its weight and skin friction");
-        kstr(j, &af, "width_scaling", cs_width_scaling_word(a->footing.width_scaling));
-        fputc('}', f);
+        json_object *ao = json_object_new_object();
+        knum(j, ao, "x_m", a->x);
+        knum(j, ao, "z_m", a->z);
+        knum(j, ao, "diameter_m", a->footing.diameter);
+        knum(j, ao, "depth_m", a->footing.depth);
+        knum(j, ao, "length_m", a->length > 0 ? a->length : a->footing.diameter);
+        kopt(j, ao, "mass_kg", a->mass > 0 ? a->mass : NAN);
+        kcapacity(j, ao, "pullout_capacity_n", a->pullout_capacity, "its weight and skin friction");
+        kstr(ao, "width_scaling", cs_width_scaling_word(a->footing.width_scaling));
+        json_object_array_add(anchors, ao);
     }
-    fputs("]}", f);
+    json_object_object_add(o, "anchors", anchors);
+    return o;
 }
 
 /* "cablesim": {version, command, overrides, model_hash} and "designations_as_run": [{standard, label,
  * text}]. */
-static void write_info(jw *j, int *first, const cs_run_info *info) {
-    FILE *f = j->w.f;
-    key(j, first, "cablesim");
-    json_object *provenance = cs_json_provenance(info);
-    if (!provenance || cs_json_write(f, provenance, 1, "") != 0) cs_w_oom(&j->w, "cablesim");
-    json_object_put(provenance);
-    key(j, first, "designations_as_run");
-    fputc('[', f);
+static void write_info(json_object *doc, const cs_run_info *info) {
+    json_object *list = json_object_new_array();
+    json_object_object_add(doc, "cablesim", cs_json_provenance(info));
     for (int i = 0; info && i < info->rating_count; i++) {
         char text[256];
-        int rf = 1;
+        json_object *o = json_object_new_object();
         cs_rating_text(&info->ratings[i], text, sizeof text);
-        fputs(i ? ",{" : "{", f);
-        kstr(j, &rf, "standard", cs_standard_name(info->ratings[i].standard));
-        kstr(j, &rf, "label", info->ratings[i].label);
-        kstr(j, &rf, "vehicle_class", info->ratings[i].vehicle_class);
-        kstr(j, &rf, "text", text);
-        fputc('}', f);
+        kstr(o, "standard", cs_standard_name(info->ratings[i].standard));
+        kstr(o, "label", info->ratings[i].label);
+        kstr(o, "vehicle_class", info->ratings[i].vehicle_class);
+        kstr(o, "text", text);
+        json_object_array_add(list, o);
     }
-    fputc(']', f);
+    json_object_object_add(doc, "designations_as_run", list);
 }
 
 /* Each cable's peak tension and work on the vehicle, and the sudden losses, as summary.json has them. */
-static void cables_and_losses(jw *j, int *first, const cs_state *state, const cs_summary *s) {
-    key(j, first, "cables");
-    fputc('[', j->w.f);
+static void cables_and_losses(jw *j, json_object *to, const cs_state *state, const cs_summary *s) {
+    json_object *cables = json_object_new_array(), *list = json_object_new_array();
     for (int c = 0; c < s->cable_count; c++) {
         cs_cable_summary cb = {.size = sizeof cb};
         cs_state_cable_summary(state, c, &cb, NULL);
-        int cf = 1;
-        fprintf(j->w.f, "%s{", c ? "," : "");
-        kint(j, &cf, "index", c);
-        knum(j, &cf, "peak_tension_n", cb.peak_tension_n);
-        knum(j, &cf, "peak_tension_time_s", cb.peak_tension_time_s);
-        knum(j, &cf, "work_on_vehicle_j", cb.work_on_vehicle_j);
-        knum(j, &cf, "energy_share", cb.energy_share);
-        fputc('}', j->w.f);
+        json_object *o = json_object_new_object();
+        kint(o, "index", c);
+        knum(j, o, "peak_tension_n", cb.peak_tension_n);
+        knum(j, o, "peak_tension_time_s", cb.peak_tension_time_s);
+        knum(j, o, "work_on_vehicle_j", cb.work_on_vehicle_j);
+        knum(j, o, "energy_share", cb.energy_share);
+        json_object_array_add(cables, o);
     }
-    fputc(']', j->w.f);
-    kint(j, first, "sudden_loss_count", s->sudden_loss_count);
-    key(j, first, "sudden_losses");
-    fputc('[', j->w.f);
+    json_object_object_add(to, "cables", cables);
+    kint(to, "sudden_loss_count", s->sudden_loss_count);
     cs_sudden_loss losses[CS_SUDDEN_LOSS_KEPT] = {{.size = sizeof losses[0]}};
     int n = cs_state_sudden_losses(state, losses, CS_SUDDEN_LOSS_KEPT, NULL);
     for (int k = 0; k < n; k++) {
-        int lf = 1;
-        fprintf(j->w.f, "%s{", k ? "," : "");
-        knum(j, &lf, "t_start_s", losses[k].t_start_s);
-        knum(j, &lf, "t_end_s", losses[k].t_end_s);
-        knum(j, &lf, "force_before_n", losses[k].force_before_n);
-        knum(j, &lf, "force_after_n", losses[k].force_after_n);
-        fputc('}', j->w.f);
+        json_object *o = json_object_new_object();
+        knum(j, o, "t_start_s", losses[k].t_start_s);
+        knum(j, o, "t_end_s", losses[k].t_end_s);
+        knum(j, o, "force_before_n", losses[k].force_before_n);
+        knum(j, o, "force_after_n", losses[k].force_after_n);
+        json_object_array_add(list, o);
     }
-    fputc(']', j->w.f);
+    json_object_object_add(to, "sudden_losses", list);
 }
 
-int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *state, const cs_record *r,
-                         const cs_run_info *info, char *why, size_t why_size) {
-    jw j = {{f, 0, ""}, "", PAGE_DIGITS};
-    cs_summary s = {.size = sizeof s};
-    cs_state_summary(state, &s, NULL);
-    const cs_scenario_def *sc = &in->scenario;
-    const cs_vehicle_def *v = &in->vehicle;
-    const cs_barrier_def *b = &in->barrier;
-    int first = 1, sf = 1;
-    fputc('{', f);
-    kint(&j, &first, "format", 1);
-    kstr(&j, &first, "name", in->name);
-    kstr(&j, &first, "file", in->file);
-    kstr(&j, &first, "version", CS_VERSION_STRING);
-    write_info(&j, &first, info);
-    key(&j, &first, "evaluation");
-    json_object *evaluation = json_object_new_object();
-    if (evaluation) cs_json_evaluation(&j.w, evaluation, info);
-    if (!evaluation || cs_json_write(f, evaluation, 1, "") != 0) cs_w_oom(&j.w, "evaluation");
-    json_object_put(evaluation);
-    key(&j, &first, "summary");
-    fputc('{', f);
-    j.digits = SUMMARY_DIGITS;
-    kstr(&j, &sf, "outcome", cs_outcome_name(s.outcome));
-    knum(&j, &sf, "t_end_s", s.t_end_s);
-    knum(&j, &sf, "max_50ms_decel_g", s.max_50ms_decel_g);
-    knum(&j, &sf, "t_max_50ms_decel_s", s.t_max_50ms_decel_s);
+/* "summary": the response parameters with every digit of the double. */
+static json_object *summary_of(jw *j, const cs_state *state, const cs_summary *s) {
+    json_object *o = json_object_new_object();
+    j->digits = SUMMARY_DIGITS;
+    kstr(o, "outcome", cs_outcome_name(s->outcome));
+    knum(j, o, "t_end_s", s->t_end_s);
+    knum(j, o, "max_50ms_decel_g", s->max_50ms_decel_g);
+    knum(j, o, "t_max_50ms_decel_s", s->t_max_50ms_decel_s);
     /* the penetration the vehicle stopped at (null if it got through or was still going), else how far
      * it had got when the run ended: beyond that */
-    int final = cs_penetration_is_final(s.outcome);
-    kopt(&j, &sf, "max_dynamic_penetration_m", final ? s.max_dynamic_penetration_m : NAN);
-    kopt(&j, &sf, "penetration_beyond_m", final ? NAN : s.max_dynamic_penetration_m);
-    knum(&j, &sf, "max_barrier_deflection_m", s.max_barrier_deflection_m);
-    knum(&j, &sf, "working_width_m", s.working_width_m);
-    kopt(&j, &sf, "stop_time_s", s.outcome == CS_STOPPED ? s.stop_time_s : NAN);
-    kopt(&j, &sf, "exit_speed_mps", cs_outcome_exits(s.outcome) ? s.exit_speed_mps : NAN);
-    kopt(&j, &sf, "exit_angle_deg", cs_outcome_exits(s.outcome) ? s.exit_angle_deg : NAN);
-    kopt(&j, &sf, "first_contact_time_s", s.first_contact_time_s >= 0 ? s.first_contact_time_s : NAN);
-    kint(&j, &sf, "posts_failed_left", s.posts_failed_left);
-    kint(&j, &sf, "posts_failed_right", s.posts_failed_right);
-    kint(&j, &sf, "posts_failed_rotation_left", s.posts_failed_rotation_left);
-    kint(&j, &sf, "posts_failed_rotation_right", s.posts_failed_rotation_right);
-    kint(&j, &sf, "posts_failed_shear_left", s.posts_failed_shear_left);
-    kint(&j, &sf, "posts_failed_shear_right", s.posts_failed_shear_right);
-    kint(&j, &sf, "posts_failed_pullout_left", s.posts_failed_pullout_left);
-    kint(&j, &sf, "posts_failed_pullout_right", s.posts_failed_pullout_right);
-    kint(&j, &sf, "cables_broken", s.cables_broken);
-    knum(&j, &sf, "max_cable_tension_n", s.max_cable_tension_n);
-    knum(&j, &sf, "initial_kinetic_energy_j", s.initial_kinetic_energy_j);
-    knum(&j, &sf, "energy_balance_error", s.energy_balance_error);
-    kint(&j, &sf, "solver_warnings", s.solver_warnings);
-    knum(&j, &sf, "max_solver_residual", s.max_solver_residual);
-    cables_and_losses(&j, &sf, state, &s);
-    j.digits = PAGE_DIGITS;
-    fputc('}', f);
-    key(&j, &first, "scenario");
-    fputc('{', f);
-    sf = 1;
-    knum(&j, &sf, "speed", sc->speed);
-    knum(&j, &sf, "angle", sc->angle);
-    knum(&j, &sf, "impact_x", sc->impact_x);
-    kint(&j, &sf, "impact_at_corner", sc->impact_at_corner);
-    knum(&j, &sf, "dt", sc->dt);
-    knum(&j, &sf, "t_end", sc->t_end);
-    knum(&j, &sf, "output_interval", sc->output_interval);
-    fputc('}', f);
-    key(&j, &first, "vehicle");
-    fputc('{', f);
-    sf = 1;
-    knum(&j, &sf, "mass", v->mass);
-    knum(&j, &sf, "cg_height", v->cg_height);
-    knum(&j, &sf, "cg_to_front", v->cg_to_front);
-    knum(&j, &sf, "front_width", v->front_width);
-    knum(&j, &sf, "cg_to_rear", v->cg_to_rear);
-    knum(&j, &sf, "face_bottom", v->face_bottom);
-    knum(&j, &sf, "face_top", v->face_top);
-    knum(&j, &sf, "wheelbase", v->wheelbase);
-    knum(&j, &sf, "cg_to_front_axle", v->cg_to_front_axle);
-    knum(&j, &sf, "track", v->track);
-    fputc('}', f);
-    /* barrier: posts [x, height, rotation limit], cables [height, Fu, pretension], anchors [x, z] */
-    key(&j, &first, "barrier");
-    fputs("{\"posts\":[", f);
-    snprintf(j.what, sizeof j.what, "the barrier");
+    int final = cs_penetration_is_final(s->outcome);
+    kopt(j, o, "max_dynamic_penetration_m", final ? s->max_dynamic_penetration_m : NAN);
+    kopt(j, o, "penetration_beyond_m", final ? NAN : s->max_dynamic_penetration_m);
+    knum(j, o, "max_barrier_deflection_m", s->max_barrier_deflection_m);
+    knum(j, o, "working_width_m", s->working_width_m);
+    kopt(j, o, "stop_time_s", s->outcome == CS_STOPPED ? s->stop_time_s : NAN);
+    kopt(j, o, "exit_speed_mps", cs_outcome_exits(s->outcome) ? s->exit_speed_mps : NAN);
+    kopt(j, o, "exit_angle_deg", cs_outcome_exits(s->outcome) ? s->exit_angle_deg : NAN);
+    kopt(j, o, "first_contact_time_s", s->first_contact_time_s >= 0 ? s->first_contact_time_s : NAN);
+    kint(o, "posts_failed_left", s->posts_failed_left);
+    kint(o, "posts_failed_right", s->posts_failed_right);
+    kint(o, "posts_failed_rotation_left", s->posts_failed_rotation_left);
+    kint(o, "posts_failed_rotation_right", s->posts_failed_rotation_right);
+    kint(o, "posts_failed_shear_left", s->posts_failed_shear_left);
+    kint(o, "posts_failed_shear_right", s->posts_failed_shear_right);
+    kint(o, "posts_failed_pullout_left", s->posts_failed_pullout_left);
+    kint(o, "posts_failed_pullout_right", s->posts_failed_pullout_right);
+    kint(o, "cables_broken", s->cables_broken);
+    knum(j, o, "max_cable_tension_n", s->max_cable_tension_n);
+    knum(j, o, "initial_kinetic_energy_j", s->initial_kinetic_energy_j);
+    knum(j, o, "energy_balance_error", s->energy_balance_error);
+    kint(o, "solver_warnings", s->solver_warnings);
+    knum(j, o, "max_solver_residual", s->max_solver_residual);
+    cables_and_losses(j, o, state, s);
+    j->digits = PAGE_DIGITS;
+    return o;
+}
+
+/* "scenario" and "vehicle": the inputs the page shows. */
+static void scenario_and_vehicle(jw *j, json_object *doc, const cs_model_input *in) {
+    const cs_scenario_def *sc = &in->scenario;
+    const cs_vehicle_def *v = &in->vehicle;
+    json_object *o = json_object_new_object(), *vo = json_object_new_object();
+    knum(j, o, "speed", sc->speed);
+    knum(j, o, "angle", sc->angle);
+    knum(j, o, "impact_x", sc->impact_x);
+    kint(o, "impact_at_corner", sc->impact_at_corner);
+    knum(j, o, "dt", sc->dt);
+    knum(j, o, "t_end", sc->t_end);
+    knum(j, o, "output_interval", sc->output_interval);
+    json_object_object_add(doc, "scenario", o);
+    knum(j, vo, "mass", v->mass);
+    knum(j, vo, "cg_height", v->cg_height);
+    knum(j, vo, "cg_to_front", v->cg_to_front);
+    knum(j, vo, "front_width", v->front_width);
+    knum(j, vo, "cg_to_rear", v->cg_to_rear);
+    knum(j, vo, "face_bottom", v->face_bottom);
+    knum(j, vo, "face_top", v->face_top);
+    knum(j, vo, "wheelbase", v->wheelbase);
+    knum(j, vo, "cg_to_front_axle", v->cg_to_front_axle);
+    knum(j, vo, "track", v->track);
+    json_object_object_add(doc, "vehicle", vo);
+}
+
+/* "barrier": posts [x, height, rotation limit], cables [height, Fu, pretension], anchors [x, z] */
+static json_object *barrier_of(jw *j, const cs_barrier_def *b) {
+    json_object *o = json_object_new_object(), *posts = json_object_new_array(),
+                *cables = json_object_new_array(), *anchors = json_object_new_array();
+    snprintf(j->what, sizeof j->what, "the barrier");
     for (int p = 0; p < b->post_count; p++) {
-        fputs(p ? ",[" : "[", f);
-        num(&j, b->posts[p].x);
-        fputc(',', f);
-        num(&j, b->posts[p].height);
-        fputc(',', f);
-        opt(&j, isfinite(b->posts[p].rotation_limit) ? b->posts[p].rotation_limit : NAN);
-        fputc(']', f);
+        const cs_post_def *pd = &b->posts[p];
+        json_object *a = json_object_new_array_ext(3);
+        json_object_array_add(a, num(j, pd->x));
+        json_object_array_add(a, num(j, pd->height));
+        json_object_array_add(a, opt(j, isfinite(pd->rotation_limit) ? pd->rotation_limit : NAN));
+        json_object_array_add(posts, a);
     }
-    fputs("],\"cables\":[", f);
+    json_object_object_add(o, "posts", posts);
     for (int c = 0; c < b->cable_count; c++) {
-        fputs(c ? ",[" : "[", f);
-        num(&j, b->cables[c].height);
-        fputc(',', f);
-        num(&j, b->cables[c].rope.nominal_strength);
-        fputc(',', f);
-        num(&j, b->cables[c].pretension);
-        fputc(']', f);
+        const double v[] = {b->cables[c].height, b->cables[c].rope.nominal_strength, b->cables[c].pretension};
+        json_object_array_add(cables, nums(j, v, 3));
     }
-    fputs("],\"anchors\":[[", f);
-    num(&j, b->start_anchor.x);
-    fputc(',', f);
-    num(&j, b->start_anchor.z);
-    fputs("],[", f);
-    num(&j, b->end_anchor.x);
-    fputc(',', f);
-    num(&j, b->end_anchor.z);
-    fputs("]]}", f);
-    write_design(&j, &first, b);
-    /* events: [t, type, element kind, element, value (SI)], then a termination event's cable end, the
-     * cable a post let go and the post at whose hole a rope broke, as far as one of them is given */
-    key(&j, &first, "events");
-    fputc('[', f);
+    json_object_object_add(o, "cables", cables);
+    for (int k = 0; k < 2; k++) {
+        const cs_anchor_def *a = k ? &b->end_anchor : &b->start_anchor;
+        const double v[] = {a->x, a->z};
+        json_object_array_add(anchors, nums(j, v, 2));
+    }
+    json_object_object_add(o, "anchors", anchors);
+    return o;
+}
+
+/* events: [t, type, element kind, element, value (SI)], then a termination event's cable end, the cable a
+ * post let go and the post at whose hole a rope broke, as far as one of them is given; each on a line of
+ * its own */
+static json_object *events_of(jw *j, const cs_state *state) {
+    json_object *list = json_object_new_array();
+    snprintf(j->what, sizeof j->what, "an event's time or value");
     for (int i = 0; i < cs_state_event_count(state); i++) {
-        cs_event e_held = {.size = sizeof e_held};
-        cs_state_event(state, i, &e_held, NULL);
-        const cs_event *e = &e_held;
-        fprintf(f, "%s\n[", i ? "," : "");
-        snprintf(j.what, sizeof j.what, "an event's time or value");
-        num(&j, e->t);
-        fputc(',', f);
-        cs_json_page_string(f, cs_event_type_name(e->type));
-        fputc(',', f);
-        cs_json_page_string(f, cs_element_kind_name(e->element_kind));
-        fprintf(f, ",%d,", e->element);
-        num(&j, e->value);
-        if (e->cable_end >= 0 || e->cable >= 0 || e->post >= 0) fprintf(f, ",%d", e->cable_end);
-        if (e->cable >= 0 || e->post >= 0) fprintf(f, ",%d", e->cable); /* the cable a post let go */
-        if (e->post >= 0) fprintf(f, ",%d", e->post); /* the post at whose hole a rope broke */
-        fputc(']', f);
+        cs_event e = {.size = sizeof e};
+        cs_state_event(state, i, &e, NULL);
+        json_object *o = json_object_new_array();
+        json_object_array_add(o, num(j, e.t));
+        json_object_array_add(o, cs_jstr(cs_event_type_name(e.type)));
+        json_object_array_add(o, cs_jstr(cs_element_kind_name(e.element_kind)));
+        json_object_array_add(o, json_object_new_int(e.element));
+        json_object_array_add(o, num(j, e.value));
+        if (e.cable_end >= 0 || e.cable >= 0 || e.post >= 0)
+            json_object_array_add(o, json_object_new_int(e.cable_end));
+        if (e.cable >= 0 || e.post >= 0) json_object_array_add(o, json_object_new_int(e.cable));
+        if (e.post >= 0) json_object_array_add(o, json_object_new_int(e.post));
+        json_object_array_add(list, cs_jline_before(o));
     }
-    fputc(']', f);
+    return list;
+}
+
+json_object *cs_report_json(const cs_model_input *in, const cs_state *state, const cs_record *r,
+                            const cs_run_info *info, char *why, size_t why_size) {
+    jw j = {{NULL, 0, ""}, "", PAGE_DIGITS};
+    cs_summary s = {.size = sizeof s};
+    cs_state_summary(state, &s, NULL);
+    json_object *doc = json_object_new_object(), *evaluation = json_object_new_object();
+    if (!doc || !evaluation) {
+        json_object_put(doc), json_object_put(evaluation);
+        snprintf(why, why_size, "report.html: out of memory");
+        return NULL;
+    }
+    kint(doc, "format", 1);
+    kstr(doc, "name", in->name);
+    kstr(doc, "file", in->file);
+    kstr(doc, "version", CS_VERSION_STRING);
+    write_info(doc, info);
+    cs_json_evaluation(&j.w, evaluation, info);
+    json_object_object_add(doc, "evaluation", evaluation);
+    json_object_object_add(doc, "summary", summary_of(&j, state, &s));
+    scenario_and_vehicle(&j, doc, in);
+    json_object_object_add(doc, "barrier", barrier_of(&j, &in->barrier));
+    json_object_object_add(doc, "design", write_design(&j, &in->barrier));
+    json_object_object_add(doc, "events", events_of(&j, state));
     int n = r->frame_count;
     int series_stride = n > CS_REPORT_SERIES_MAX ? (n + CS_REPORT_SERIES_MAX - 1) / CS_REPORT_SERIES_MAX : 1;
     double fit = CS_REPORT_REPLAY_BYTES / replay_frame_bytes(r);
@@ -697,18 +667,23 @@ int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *stat
                      : fit > CS_REPORT_REPLAY_MAX ? CS_REPORT_REPLAY_MAX
                                                   : (int)fit;
     int replay_stride = n > replay_max ? (n + replay_max - 1) / replay_max : 1;
-    key(&j, &first, "series");
-    write_series(&j, in, r, series_stride);
-    kint(&j, &first, "replay_stride", replay_stride);
-    key(&j, &first, "frames");
-    write_frames(&j, r, replay_stride);
-    fputs("}", f);
-    if (j.w.bad) {
-        snprintf(why, why_size, "report.html: %s", j.w.why);
-        return -1;
-    }
-    if (ferror(f)) {
-        snprintf(why, why_size, "report.html: write error");
+    json_object_object_add(doc, "series", write_series(&j, in, r, series_stride));
+    kint(doc, "replay_stride", replay_stride);
+    json_object_object_add(doc, "frames", write_frames(&j, r, replay_stride));
+    if (!j.w.bad) return doc;
+    snprintf(why, why_size, "report.html: %s", j.w.why);
+    json_object_put(doc);
+    return NULL;
+}
+
+int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *state, const cs_record *r,
+                         const cs_run_info *info, char *why, size_t why_size) {
+    json_object *doc = cs_report_json(in, state, r, info, why, why_size);
+    if (!doc) return -1;
+    int written = cs_json_write(f, doc, 1, "") == 0;
+    json_object_put(doc);
+    if (!written || ferror(f)) {
+        snprintf(why, why_size, "report.html: %s", written ? "write error" : "out of memory");
         return -1;
     }
     return 0;

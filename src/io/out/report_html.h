@@ -35,9 +35,9 @@ enum {
  * why filled (a non-finite number where one must be finite, a write error). */
 int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *state, const cs_record *rec,
                          const cs_run_info *info, char *why, size_t why_size);
-
-/* A JSON string; '<', '>' and '&' as \u escapes so that no "</script>" or "<!--" can appear. */
-void cs_json_page_string(FILE *f, const char *s);
+/* The same data as a json-c document (jsondoc.h; to put), or NULL with why filled. */
+struct json_object *cs_report_json(const cs_model_input *in, const cs_state *state, const cs_record *rec,
+                                   const cs_run_info *info, char *why, size_t why_size);
 
 /* Writes a page's data at its @CS_DATA@ marker: 0, or -1 with why filled. */
 typedef int (*cs_page_data_fn)(FILE *f, void *user, char *why, size_t why_size);
