@@ -20,6 +20,7 @@
 #include "load/units.h"
 #include "load/yamledit.h"
 #include "load/yamltree.h"
+#include "out/jsondoc.h"
 #include "out/record.h"
 #include "out/report_html.h"
 #include "out/writers.h"
@@ -28,7 +29,6 @@ static char *units_table;     /* the page's units (cs_units_write_table) */
 static cs_loader *loader;     /* its files parsed once: runs of one model reuse it */
 static char loaded_path[256]; /* the model it last loaded, "" after a failed load */
 static char *result;          /* the last call's JSON */
-static size_t result_size;
 
 /* The loader's unit system: the page's table (udunits2 is not built for WebAssembly). */
 cs_units *cs_units_create(char *why, size_t why_size) {
@@ -46,23 +46,48 @@ int cs_data_dir_find(char *dir, size_t size, char *note, size_t note_size) {
     return 0;
 }
 
-static FILE *begin(void) {
+/* A call's answer: {"ok": ok} and the members of more (may be NULL; taken) after it, as JSON text kept
+ * until the next call. */
+static const char *answer(int ok, json_object *more) {
+    json_object *doc = json_object_new_object();
     free(result);
     result = NULL;
-    return open_memstream(&result, &result_size);
-}
-
-static const char *end(FILE *f) {
-    fclose(f);
+    if (doc) {
+        json_object_object_add(doc, "ok", json_object_new_boolean(ok));
+        if (more) {
+            json_object_object_foreach(more, key, value)
+                json_object_object_add(doc, key, json_object_get(value));
+        }
+        result = cs_json_text(doc);
+    }
+    json_object_put(doc), json_object_put(more);
     return result ? result : "{\"ok\":false,\"errors\":[\"out of memory\"]}";
 }
 
+/* {"ok":false,"errors":[...]}: the strings of list (taken). */
+static const char *failed(json_object *list) {
+    json_object *more = json_object_new_object();
+    if (more)
+        json_object_object_add(more, "errors", list);
+    else
+        json_object_put(list);
+    return answer(0, more);
+}
+
 static const char *fail(const char *what) {
-    FILE *f = begin();
-    fputs("{\"ok\":false,\"errors\":[", f);
-    cs_json_string(f, what);
-    fputs("]}", f);
-    return end(f);
+    json_object *list = json_object_new_array();
+    if (list) json_object_array_add(list, cs_jstr(what));
+    return failed(list);
+}
+
+/* {"ok":true} with member key: value (taken). */
+static const char *succeeded(const char *key, json_object *value) {
+    json_object *more = json_object_new_object();
+    if (more)
+        json_object_object_add(more, key, value);
+    else
+        json_object_put(value);
+    return answer(1, more);
 }
 
 /* Keep the page's unit table and make the loader (parts library: data_dir). Returns JSON {"ok"}. */
@@ -77,21 +102,15 @@ EMSCRIPTEN_KEEPALIVE const char *cs_web_open(const char *table, const char *data
     /* the page's file system holds only the files `cablesim designer` read under the rule of the folders
      * a model may read (its --allow-path folders included): all of it may be read */
     if (cs_loader_allow_path(loader, "/", &err) != CS_OK) return fail(err.message);
-    FILE *f = begin();
-    fputs("{\"ok\":true}", f);
-    return end(f);
+    return answer(1, NULL);
 }
 
 /* The loader's problems as {"ok":false,"errors":[...]}. */
 static const char *problems(void) {
-    FILE *f = begin();
-    fputs("{\"ok\":false,\"errors\":[", f);
-    for (int i = 0; i < cs_loader_error_count(loader); i++) {
-        if (i) fputc(',', f);
-        cs_json_string(f, cs_loader_error(loader, i));
-    }
-    fputs("]}", f);
-    return end(f);
+    json_object *list = json_object_new_array();
+    for (int i = 0; list && i < cs_loader_error_count(loader); i++)
+        json_object_array_add(list, cs_jstr(cs_loader_error(loader, i)));
+    return failed(list);
 }
 
 /* Split sets ("PATH=VALUE" lines) in place into at most max lines. Returns the count, or -1 past max. */
@@ -105,6 +124,13 @@ static int split(char *sets, char **line, int max) {
         s = nl ? nl + 1 : NULL;
     }
     return n;
+}
+
+/* A time in ms as a JSON number to the microsecond. */
+static json_object *fixed3(double ms) {
+    char text[32];
+    snprintf(text, sizeof text, "%.3f", ms);
+    return json_object_new_double_s(ms, text);
 }
 
 static double ms_since(const struct timespec *t0) {
@@ -169,28 +195,30 @@ EMSCRIPTEN_KEEPALIVE const char *cs_web_run(const char *path, const char *sets, 
                             .model_hash = cs_model_input_hash(&in)};
         cs_run_info_rate(&info, &in, &sm);
         cs_run_info_motion(&info, &in, &rec, &sm);
-        char why[512] = "";
-        FILE *f = begin();
-        fprintf(f, "{\"ok\":true,\"ms\":%.3f,\"load_ms\":%.3f,\"summary\":", ms, load_ms);
-        int bad = cs_write_summary_json_with(f, &in, model, state, &info, why, sizeof why);
-        fputs(",\"text\":", f);
-        char *text = NULL;
+        char why[512] = "", *text = NULL;
         size_t text_size = 0;
         FILE *t = open_memstream(&text, &text_size);
         if (t) {
             cs_write_summary_text_with(t, &in, model, state, &info);
             fclose(t);
         }
-        cs_json_string(f, text ? text : "");
+        json_object *more = json_object_new_object(),
+                    *summary = cs_summary_json(&in, model, state, &info, why, sizeof why),
+                    *report = summary && with_report
+                                  ? cs_report_json(&in, state, &rec, &info, why, sizeof why)
+                                  : NULL;
+        if (!more || !summary || (with_report && !report)) {
+            json_object_put(more), json_object_put(summary), json_object_put(report);
+            out = fail(why[0] ? why : "out of memory");
+        } else {
+            json_object_object_add(more, "ms", fixed3(ms));
+            json_object_object_add(more, "load_ms", fixed3(load_ms));
+            json_object_object_add(more, "summary", summary);
+            json_object_object_add(more, "text", cs_jstr(text ? text : ""));
+            json_object_object_add(more, "report", report);
+            out = answer(1, more);
+        }
         free(text);
-        fputs(",\"report\":", f);
-        if (with_report)
-            bad = bad || cs_write_report_json(f, &in, state, &rec, &info, why, sizeof why);
-        else
-            fputs("null", f);
-        fputc('}', f);
-        out = end(f);
-        if (bad) out = fail(why);
     }
     cs_record_release(&rec);
     cs_state_free(state);
@@ -208,22 +236,20 @@ EMSCRIPTEN_KEEPALIVE const char *cs_web_values(const char *path) {
         cs_ytree_free(&t);
         return fail(why);
     }
-    FILE *f = begin();
-    fputs("{\"ok\":true,\"values\":[", f);
-    int first = 1;
-    for (int i = 0; i < t.count; i++) {
+    json_object *values = json_object_new_array();
+    for (int i = 0; values && i < t.count; i++) {
         const cs_ynode *n = &t.items[i];
         if (n->kind != CS_Y_SCALAR) continue;
-        fputs(first ? "{\"path\":" : ",{\"path\":", f);
-        first = 0;
-        cs_json_string(f, n->path);
-        fputs(",\"text\":", f);
-        cs_json_string(f, n->text);
-        fprintf(f, ",\"line\":%d,\"col\":%d}", n->line, n->col);
+        json_object *v = json_object_new_object();
+        if (!v) break;
+        json_object_object_add(v, "path", cs_jstr(n->path));
+        json_object_object_add(v, "text", cs_jstr(n->text));
+        json_object_object_add(v, "line", json_object_new_int(n->line));
+        json_object_object_add(v, "col", json_object_new_int(n->col));
+        json_object_array_add(values, v);
     }
-    fputs("]}", f);
     cs_ytree_free(&t);
-    return end(f);
+    return succeeded("values", values);
 }
 
 /* The model file at path with the overrides of sets written into it (cs_yaml_edit): {"ok":true,"yaml"}. */
@@ -250,30 +276,23 @@ EMSCRIPTEN_KEEPALIVE const char *cs_web_edit(const char *path, const char *sets)
     free(copy);
     free(text);
     if (!edited) return fail(why[0] ? why : "out of memory");
-    FILE *f = begin();
-    fputs("{\"ok\":true,\"yaml\":", f);
-    cs_json_string(f, edited);
-    fputc('}', f);
+    json_object *yaml = cs_jstr(edited);
     free(edited);
-    return end(f);
+    return succeeded("yaml", yaml);
 }
 
 /* The parts library's names: {"ok":true,"vehicle":[...],"rope":[...],"section":[...],"rail":[...]}. */
 EMSCRIPTEN_KEEPALIVE const char *cs_web_parts(void) {
     static const char *kinds[CS_PART_KIND_COUNT] = {"vehicle", "rope", "section", "rail"};
     if (!loader) return fail("cs_web_open was not called");
-    FILE *f = begin();
-    fputs("{\"ok\":true", f);
-    for (int k = 0; k < CS_PART_KIND_COUNT; k++) {
+    json_object *more = json_object_new_object();
+    for (int k = 0; more && k < CS_PART_KIND_COUNT; k++) {
         const char **names, **descriptions;
         int n = cs_loader_library(loader, (cs_part_kind)k, &names, &descriptions);
-        fprintf(f, ",\"%s\":[", kinds[k]);
-        for (int i = 0; i < n; i++) {
-            if (i) fputc(',', f);
-            cs_json_string(f, names[i]);
-        }
-        fputc(']', f);
+        json_object *list = json_object_new_array();
+        for (int i = 0; list && i < n; i++)
+            json_object_array_add(list, cs_jstr(names[i]));
+        json_object_object_add(more, kinds[k], list);
     }
-    fputc('}', f);
-    return end(f);
+    return answer(1, more);
 }

@@ -9,19 +9,6 @@
 #include "load/schema.h"
 #include "writers.h"
 
-void cs_json_string(FILE *f, const char *s) {
-    fputc('"', f);
-    for (; *s; s++) {
-        if (*s == '"' || *s == '\\')
-            fprintf(f, "\\%c", *s);
-        else if ((unsigned char)*s < 0x20)
-            fprintf(f, "\\u%04x", *s);
-        else
-            fputc(*s, f);
-    }
-    fputc('"', f);
-}
-
 /* v as a number of the document; NULL (null) and w marked bad, naming what, if it is not finite. */
 static json_object *wnum(cs_wout *w, double v, const char *what) {
     return cs_w_finite(w, v, what) ? cs_jnum(v) : NULL;
@@ -317,12 +304,16 @@ static json_object *event(cs_wout *w, const cs_event *e) {
     return o;
 }
 
-int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model *model,
-                               const cs_state *state, const cs_run_info *info, char *why, size_t why_size) {
+json_object *cs_summary_json(const cs_model_input *in, const cs_model *model, const cs_state *state,
+                             const cs_run_info *info, char *why, size_t why_size) {
     cs_summary s = {.size = sizeof s};
     cs_state_summary(state, &s, NULL);
-    cs_wout w = {f, 0, ""};
+    cs_wout w = {NULL, 0, ""};
     json_object *doc = json_object_new_object();
+    if (!doc) {
+        snprintf(why, why_size, "summary.json: out of memory");
+        return NULL;
+    }
     /* "cablesim": where the results come from, on a line of its own */
     json_object_object_add(doc, "cablesim", cs_jline_after(cs_json_provenance(info)));
     jstr(doc, "outcome", cs_outcome_name(s.outcome));
@@ -390,11 +381,18 @@ int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model
     json_object_object_add(doc, "inputs", inputs(&w, in));
     static const char *const new_line[] = {"inputs", NULL};
     cs_jkeys_on_new_line(doc, new_line);
-    int written = w.bad ? 0 : cs_json_write(f, doc, 0, "\n") == 0;
+    if (!w.bad) return doc;
+    snprintf(why, why_size, "summary.json: %s", w.why);
     json_object_put(doc);
-    if (w.bad)
-        snprintf(why, why_size, "summary.json: %s", w.why);
-    else if (!written)
-        snprintf(why, why_size, "summary.json: out of memory");
+    return NULL;
+}
+
+int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model *model,
+                               const cs_state *state, const cs_run_info *info, char *why, size_t why_size) {
+    json_object *doc = cs_summary_json(in, model, state, info, why, why_size);
+    if (!doc) return -1;
+    int written = cs_json_write(f, doc, 0, "\n") == 0;
+    json_object_put(doc);
+    if (!written) snprintf(why, why_size, "summary.json: out of memory");
     return written ? 0 : -1;
 }

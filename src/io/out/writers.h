@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Inside the writers of a run's outputs (cablesim/output.h): printing numbers that must be finite, JSON
- * strings, and the output folder with files added by the command (report.html). */
+/* Inside the writers of a run's outputs (cablesim/output.h): printing numbers that must be finite, the
+ * JSON documents' parts, and the output folder with files added by the command (report.html). */
 #ifndef CS_WRITERS_H
 #define CS_WRITERS_H
 
@@ -67,8 +67,6 @@ int cs_w_finite(cs_wout *w, double v, const char *what);
 void cs_w_oom(cs_wout *w, const char *what);
 /* Print v as %.10g would (cs_g10); a non-finite v is not printed and marks the output bad, naming what. */
 void cs_w_num(cs_wout *w, double v, const char *what);
-/* Print s as a JSON string literal (quotes, backslashes and control characters escaped). */
-void cs_json_string(FILE *f, const char *s);
 struct json_object;
 /* The object of "cablesim" in summary.json and report.html: {"version", "command", "overrides",
  * "model_hash"} (info NULL: the version alone, the rest null or empty), made with json-c (jsondoc.h). */
@@ -95,6 +93,10 @@ int cs_timeseries_csv(FILE *f, const cs_record *rec, char *why, size_t why_size)
 int cs_events_csv(FILE *f, const cs_state *state, char *why, size_t why_size);
 int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model *model,
                                const cs_state *state, const cs_run_info *info, char *why, size_t why_size);
+/* summary.json's document (json-c, jsondoc.h; to put), or NULL with why filled (a non-finite number
+ * where one must be finite, out of memory). */
+struct json_object *cs_summary_json(const cs_model_input *in, const cs_model *model, const cs_state *state,
+                                    const cs_run_info *info, char *why, size_t why_size);
 /* The readable summary (SI and US units side by side): the outcome, the model's hash, the response
  * parameters, the designations as run, the failure events in order and the yielding posts counted. */
 void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_model *model,
