@@ -63,35 +63,34 @@ static void jobject(cs_wout *w, json_object *obj, const char *key, const cs_tabl
     json_object_object_add(obj, key, sub);
 }
 
-/* Every cable's peak tension and work on the vehicle, and the sudden losses (cs_summary's, each of them). */
-static void cables_and_losses(cs_wout *w, json_object *doc, const cs_state *state, const cs_summary *s) {
-    jint(doc, "cable_count", s->cable_count);
-    json_object *cables = json_object_new_array();
+void cs_json_cables_and_losses(cs_wout *w, json_object *to, const cs_state *state, const cs_summary *s,
+                               cs_jnum_fn number) {
+    json_object *cables = json_object_new_array(), *list = json_object_new_array();
     for (int c = 0; c < s->cable_count; c++) {
         cs_cable_summary cb = {.size = sizeof cb};
         cs_state_cable_summary(state, c, &cb, NULL);
         json_object *o = json_object_new_object();
         jint(o, "index", c);
-        jnum(w, o, "peak_tension_n", cb.peak_tension_n);
-        jnum(w, o, "peak_tension_time_s", cb.peak_tension_time_s);
-        jnum(w, o, "work_on_vehicle_j", cb.work_on_vehicle_j);
-        jnum(w, o, "energy_share", cb.energy_share);
+        json_object_object_add(o, "peak_tension_n", number(w, cb.peak_tension_n, "peak_tension_n"));
+        json_object_object_add(o, "peak_tension_time_s",
+                               number(w, cb.peak_tension_time_s, "peak_tension_time_s"));
+        json_object_object_add(o, "work_on_vehicle_j", number(w, cb.work_on_vehicle_j, "work_on_vehicle_j"));
+        json_object_object_add(o, "energy_share", number(w, cb.energy_share, "energy_share"));
         json_object_array_add(cables, o);
     }
-    json_object_object_add(doc, "cables", cables);
-    jint(doc, "sudden_loss_count", s->sudden_loss_count);
-    json_object *list = json_object_new_array();
+    json_object_object_add(to, "cables", cables);
+    jint(to, "sudden_loss_count", s->sudden_loss_count);
     cs_sudden_loss losses[CS_SUDDEN_LOSS_KEPT] = {{.size = sizeof losses[0]}};
     int n = cs_state_sudden_losses(state, losses, CS_SUDDEN_LOSS_KEPT, NULL);
     for (int k = 0; k < n; k++) {
         json_object *o = json_object_new_object();
-        jnum(w, o, "t_start_s", losses[k].t_start_s);
-        jnum(w, o, "t_end_s", losses[k].t_end_s);
-        jnum(w, o, "force_before_n", losses[k].force_before_n);
-        jnum(w, o, "force_after_n", losses[k].force_after_n);
+        json_object_object_add(o, "t_start_s", number(w, losses[k].t_start_s, "t_start_s"));
+        json_object_object_add(o, "t_end_s", number(w, losses[k].t_end_s, "t_end_s"));
+        json_object_object_add(o, "force_before_n", number(w, losses[k].force_before_n, "force_before_n"));
+        json_object_object_add(o, "force_after_n", number(w, losses[k].force_after_n, "force_after_n"));
         json_object_array_add(list, o);
     }
-    json_object_object_add(doc, "sudden_losses", cs_jline_after(list));
+    json_object_object_add(to, "sudden_losses", list);
 }
 
 static json_object *jarray(cs_wout *w, const char *what, const double *v, int n) {
@@ -368,7 +367,9 @@ json_object *cs_summary_json(const cs_model_input *in, const cs_model *model, co
     jint(doc, "solver_warnings", s.solver_warnings);
     jnum(&w, doc, "max_solver_residual", s.max_solver_residual);
     cs_jline_after_last(doc);
-    cables_and_losses(&w, doc, state, &s);
+    jint(doc, "cable_count", s.cable_count);
+    cs_json_cables_and_losses(&w, doc, state, &s, wnum);
+    cs_jline_after_last(doc); /* a line break after the sudden losses */
     ratings(&w, doc, info);
     cs_json_evaluation(&w, doc, info);
     json_object *events = json_object_new_array(); /* each on a line of its own */

@@ -362,6 +362,31 @@ static const field section_fields[] = {{"plastic_modulus_m3", offsetof(cs_sectio
                                        {"yield_stress_pa", offsetof(cs_section_def, yield_stress)},
                                        {"modulus_pa", offsetof(cs_section_def, modulus)},
                                        {"mass_per_length_kg_m", offsetof(cs_section_def, mass_per_length)}};
+static const field soil_fields[] = {
+    {"soil_pressure_pa", offsetof(cs_footing_def, soil_pressure)},
+    {"soil_pressure_cap_pa", offsetof(cs_footing_def, soil_pressure_cap)},
+    {"coeff_depth", offsetof(cs_footing_def, coeff_depth)},
+    {"coeff_height", offsetof(cs_footing_def, coeff_height)},
+    {"dynamic_factor", offsetof(cs_footing_def, dynamic_factor)},
+    {"friction_angle_rad", offsetof(cs_footing_def, friction_angle)},
+    {"residual_friction_angle_rad", offsetof(cs_footing_def, residual_friction_angle)}};
+/* the scenario's before and after its impact_at_corner, and the vehicle's */
+static const field scenario_fields[] = {{"speed", offsetof(cs_scenario_def, speed)},
+                                        {"angle", offsetof(cs_scenario_def, angle)},
+                                        {"impact_x", offsetof(cs_scenario_def, impact_x)},
+                                        {"dt", offsetof(cs_scenario_def, dt)},
+                                        {"t_end", offsetof(cs_scenario_def, t_end)},
+                                        {"output_interval", offsetof(cs_scenario_def, output_interval)}};
+static const field vehicle_fields[] = {{"mass", offsetof(cs_vehicle_def, mass)},
+                                       {"cg_height", offsetof(cs_vehicle_def, cg_height)},
+                                       {"cg_to_front", offsetof(cs_vehicle_def, cg_to_front)},
+                                       {"front_width", offsetof(cs_vehicle_def, front_width)},
+                                       {"cg_to_rear", offsetof(cs_vehicle_def, cg_to_rear)},
+                                       {"face_bottom", offsetof(cs_vehicle_def, face_bottom)},
+                                       {"face_top", offsetof(cs_vehicle_def, face_top)},
+                                       {"wheelbase", offsetof(cs_vehicle_def, wheelbase)},
+                                       {"cg_to_front_axle", offsetof(cs_vehicle_def, cg_to_front_axle)},
+                                       {"track", offsetof(cs_vehicle_def, track)}};
 
 static void kfields(jw *j, json_object *o, const void *base, const field *fields, size_t count) {
     for (size_t k = 0; k < count; k++) {
@@ -447,13 +472,7 @@ static json_object *write_design(jw *j, const cs_barrier_def *b) {
         json_object_array_add(post_x, num(j, b->posts[p].x));
     json_object_object_add(o, "post_x_m", post_x);
     const cs_footing_def *soil = b->post_count ? &b->posts[0].footing : &b->start_anchor.footing;
-    knum(j, soil_o, "soil_pressure_pa", soil->soil_pressure);
-    knum(j, soil_o, "soil_pressure_cap_pa", soil->soil_pressure_cap);
-    knum(j, soil_o, "coeff_depth", soil->coeff_depth);
-    knum(j, soil_o, "coeff_height", soil->coeff_height);
-    knum(j, soil_o, "dynamic_factor", soil->dynamic_factor);
-    knum(j, soil_o, "friction_angle_rad", soil->friction_angle);
-    knum(j, soil_o, "residual_friction_angle_rad", soil->residual_friction_angle);
+    kfields(j, soil_o, soil, soil_fields, sizeof soil_fields / sizeof soil_fields[0]);
     kstr(soil_o, "width_scaling", cs_width_scaling_word(soil->width_scaling));
     knum(j, soil_o, "skin_friction_pa_m", soil->skin_friction);
     json_object_object_add(o, "soil", soil_o);
@@ -492,33 +511,11 @@ static void write_info(json_object *doc, const cs_run_info *info) {
     json_object_object_add(doc, "designations_as_run", list);
 }
 
-/* Each cable's peak tension and work on the vehicle, and the sudden losses, as summary.json has them. */
-static void cables_and_losses(jw *j, json_object *to, const cs_state *state, const cs_summary *s) {
-    json_object *cables = json_object_new_array(), *list = json_object_new_array();
-    for (int c = 0; c < s->cable_count; c++) {
-        cs_cable_summary cb = {.size = sizeof cb};
-        cs_state_cable_summary(state, c, &cb, NULL);
-        json_object *o = json_object_new_object();
-        kint(o, "index", c);
-        knum(j, o, "peak_tension_n", cb.peak_tension_n);
-        knum(j, o, "peak_tension_time_s", cb.peak_tension_time_s);
-        knum(j, o, "work_on_vehicle_j", cb.work_on_vehicle_j);
-        knum(j, o, "energy_share", cb.energy_share);
-        json_object_array_add(cables, o);
-    }
-    json_object_object_add(to, "cables", cables);
-    kint(to, "sudden_loss_count", s->sudden_loss_count);
-    cs_sudden_loss losses[CS_SUDDEN_LOSS_KEPT] = {{.size = sizeof losses[0]}};
-    int n = cs_state_sudden_losses(state, losses, CS_SUDDEN_LOSS_KEPT, NULL);
-    for (int k = 0; k < n; k++) {
-        json_object *o = json_object_new_object();
-        knum(j, o, "t_start_s", losses[k].t_start_s);
-        knum(j, o, "t_end_s", losses[k].t_end_s);
-        knum(j, o, "force_before_n", losses[k].force_before_n);
-        knum(j, o, "force_after_n", losses[k].force_after_n);
-        json_object_array_add(list, o);
-    }
-    json_object_object_add(to, "sudden_losses", list);
+/* A number of the summary: every digit of the double (w is a jw's). */
+static json_object *summary_num(cs_wout *w, double v, const char *what) {
+    jw *j = (jw *)w; /* its first member */
+    snprintf(j->what, sizeof j->what, "%s", what);
+    return num_digits(j, v, SUMMARY_DIGITS, 0);
 }
 
 /* "summary": the response parameters with every digit of the double. */
@@ -554,34 +551,19 @@ static json_object *summary_of(jw *j, const cs_state *state, const cs_summary *s
     knum(j, o, "energy_balance_error", s->energy_balance_error);
     kint(o, "solver_warnings", s->solver_warnings);
     knum(j, o, "max_solver_residual", s->max_solver_residual);
-    cables_and_losses(j, o, state, s);
+    cs_json_cables_and_losses(&j->w, o, state, s, summary_num);
     j->digits = PAGE_DIGITS;
     return o;
 }
 
 /* "scenario" and "vehicle": the inputs the page shows. */
 static void scenario_and_vehicle(jw *j, json_object *doc, const cs_model_input *in) {
-    const cs_scenario_def *sc = &in->scenario;
-    const cs_vehicle_def *v = &in->vehicle;
     json_object *o = json_object_new_object(), *vo = json_object_new_object();
-    knum(j, o, "speed", sc->speed);
-    knum(j, o, "angle", sc->angle);
-    knum(j, o, "impact_x", sc->impact_x);
-    kint(o, "impact_at_corner", sc->impact_at_corner);
-    knum(j, o, "dt", sc->dt);
-    knum(j, o, "t_end", sc->t_end);
-    knum(j, o, "output_interval", sc->output_interval);
+    kfields(j, o, &in->scenario, scenario_fields, 3);
+    kint(o, "impact_at_corner", in->scenario.impact_at_corner);
+    kfields(j, o, &in->scenario, scenario_fields + 3, sizeof scenario_fields / sizeof scenario_fields[0] - 3);
     json_object_object_add(doc, "scenario", o);
-    knum(j, vo, "mass", v->mass);
-    knum(j, vo, "cg_height", v->cg_height);
-    knum(j, vo, "cg_to_front", v->cg_to_front);
-    knum(j, vo, "front_width", v->front_width);
-    knum(j, vo, "cg_to_rear", v->cg_to_rear);
-    knum(j, vo, "face_bottom", v->face_bottom);
-    knum(j, vo, "face_top", v->face_top);
-    knum(j, vo, "wheelbase", v->wheelbase);
-    knum(j, vo, "cg_to_front_axle", v->cg_to_front_axle);
-    knum(j, vo, "track", v->track);
+    kfields(j, vo, &in->vehicle, vehicle_fields, sizeof vehicle_fields / sizeof vehicle_fields[0]);
     json_object_object_add(doc, "vehicle", vo);
 }
 

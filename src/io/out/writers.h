@@ -77,6 +77,14 @@ struct json_object *cs_json_provenance(const cs_run_info *info);
  * (w marked bad by a non-finite one), a line break after the occupant risk's members and after the criteria
  * (docs/ratings.md). */
 void cs_json_evaluation(cs_wout *w, struct json_object *to, const cs_run_info *info);
+/* A number of a JSON document as its writer writes them, what naming it; NULL (null) and w marked bad if
+ * v is not finite. */
+typedef struct json_object *(*cs_jnum_fn)(cs_wout *w, double v, const char *what);
+/* Every cable's peak tension and work on the vehicle ("cables") and the sudden losses
+ * ("sudden_loss_count", "sudden_losses"; cs_summary's, each of them) as members added to to, as
+ * summary.json and report.html give them, each number made by number. */
+void cs_json_cables_and_losses(cs_wout *w, struct json_object *to, const cs_state *state, const cs_summary *s,
+                               cs_jnum_fn number);
 
 /* More files to write into a run's folder before it commits (the command's report.html): each begun on
  * out. Returns 0, or -1 with why filled. */
