@@ -5,7 +5,6 @@
 #include "run/run.h"
 #include "run/sized.h"
 
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,14 +12,12 @@
 enum { CS_MAX_POSTS = 20000, CS_MAX_CABLES = 64 };
 #define CS_MAX_STEPS 5.0e7
 
+static int fail(cs_error *err, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 static int fail(cs_error *err, const char *fmt, ...) {
-    if (err) {
-        va_list ap;
-        va_start(ap, fmt);
-        err->status = CS_ERR_INVALID;
-        vsnprintf(err->message, sizeof err->message, fmt, ap);
-        va_end(ap);
-    }
+    va_list ap;
+    va_start(ap, fmt);
+    cs_error_vset(err, CS_ERR_INVALID, fmt, ap);
+    va_end(ap);
     return 1;
 }
 
@@ -510,7 +507,7 @@ static cs_model *model_create(const cs_barrier_def *barrier, const cs_vehicle_de
 
 oom:
     cs_model_free(m);
-    if (err) err->status = CS_ERR_MEMORY, snprintf(err->message, sizeof err->message, "out of memory");
+    cs_out_of_memory(err);
     return NULL;
 }
 

@@ -173,16 +173,8 @@ void cs_defs_free(cs_defs *d) {
     free(d->rails);
 }
 
-void cs_out_of_memory(cs_error *err) {
-    if (err) err->status = CS_ERR_MEMORY, snprintf(err->message, sizeof err->message, "out of memory");
-}
-
 cs_status cs_sized_refuse(cs_error *err, const char *name, const char *why) {
-    if (err) {
-        err->status = CS_ERR_INVALID;
-        snprintf(err->message, sizeof err->message, "%s: %s", name, why);
-    }
-    return CS_ERR_INVALID;
+    return cs_error_set(err, CS_ERR_INVALID, "%s: %s", name, why);
 }
 
 /* The size at the start of the caller's struct at: CS_OK, or CS_ERR_INVALID naming it if that size is not

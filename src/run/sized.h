@@ -8,6 +8,8 @@
 #ifndef CS_SIZED_H
 #define CS_SIZED_H
 
+#include <stdarg.h>
+
 #include "cablesim/sim.h"
 
 typedef struct cs_defs {
@@ -46,6 +48,14 @@ cs_status cs_sized_put_array(void *out, const void *full, size_t full_size, int 
 /* Read the caller's struct given, of the size it starts with, over full (this library's, of full_size
  * bytes, holding the defaults of what the caller's lacks): CS_OK, or CS_ERR_INVALID as cs_sized_put. */
 cs_status cs_sized_take(void *full, size_t full_size, const void *given, const char *name, cs_error *err);
+/* Fill err (may be NULL) with status and the message that fmt and what follows make, as printf does, cut
+ * to the message's room; return status. The one way a cs_error's message is formatted, the engine's and
+ * the loaders' and writers' (src/io/status.h). */
+cs_status cs_error_set(cs_error *err, cs_status status, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+/* The same with the arguments in ap. */
+cs_status cs_error_vset(cs_error *err, cs_status status, const char *fmt, va_list ap)
+    __attribute__((format(printf, 3, 0)));
 /* Fill err (may be NULL) with CS_ERR_MEMORY. */
 void cs_out_of_memory(cs_error *err);
 /* Refuse a fill of name: CS_ERR_INVALID with err filled (may be NULL) saying why. */
