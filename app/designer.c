@@ -76,10 +76,10 @@ static void page_path(const design *d, int i, char *out, size_t size) {
 /* A file the loader read, again (the same rule, a regular file of at most CS_INPUT_MAX bytes), as a JSON
  * string; NULL if it cannot be read. */
 static json_object *text_of(const char *real) {
-    char *text = NULL, why[256];
+    char *text = NULL;
     size_t size = 0;
-    int err;
-    if (cs_input_read(real, CS_INPUT_MAX, &text, &size, &err, why, sizeof why) != 0) return NULL;
+    int errnum;
+    if (cs_input_load(real, CS_INPUT_MAX, &text, &size, &errnum, NULL) != CS_OK) return NULL;
     json_object *s = cs_jstr(text);
     free(text);
     return s;

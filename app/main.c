@@ -116,16 +116,17 @@ typedef struct options {
 
 /* --occupant-at X,Y,Z: three lengths with their units into o. Returns 0, or EXIT_BAD with the reason. */
 static int occupant_at(const cs_cli *cli, const char *arg, options *o) {
-    char why[256], text[256];
+    char text[256];
+    cs_error err;
     snprintf(text, sizeof text, "%s", arg);
-    cs_units *u = cs_units_create(why, sizeof why);
-    if (!u) return cs_cli_usage_error(cli, "--occupant-at: %s", why);
+    cs_units *u = cs_units_open(&err);
+    if (!u) return cs_cli_usage_error(cli, "--occupant-at: %s", err.message);
     int k = 0, rc = 0;
     for (char *save = NULL, *p = strtok_r(text, ",", &save); p && rc == 0;
          p = strtok_r(NULL, ",", &save), k++)
-        if (k >= 3 || cs_units_read(u, p, CS_Q_LENGTH, &o->occupant_point[k], why, sizeof why) != 0)
+        if (k >= 3 || cs_units_read(u, p, CS_Q_LENGTH, &o->occupant_point[k], &err) != CS_OK)
             rc = cs_cli_usage_error(cli, "--occupant-at %s: %s", arg,
-                                    k >= 3 ? "more than three lengths (X,Y,Z)" : why);
+                                    k >= 3 ? "more than three lengths (X,Y,Z)" : err.message);
     if (rc == 0 && k != 3)
         rc = cs_cli_usage_error(
             cli, "--occupant-at %s: three lengths are needed, X,Y,Z (\"0.3 m,0.4 m,0.2 m\")", arg);

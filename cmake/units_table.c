@@ -16,12 +16,13 @@ int main(int argc, char **argv) {
         fprintf(stderr, "usage: units_table OUT.c\n");
         return 2;
     }
-    char why[256], *table = NULL;
+    char *table = NULL;
     size_t size = 0;
-    cs_units *u = cs_units_create(why, sizeof why);
+    cs_error err;
+    cs_units *u = cs_units_open(&err);
     FILE *mem = open_memstream(&table, &size);
     if (!u || !mem) {
-        fprintf(stderr, "units_table: %s\n", u ? "out of memory" : why);
+        fprintf(stderr, "units_table: %s\n", u ? "out of memory" : err.message);
         return 1;
     }
     int written = cs_units_write_table(u, cs_units_usual, cs_units_usual_count, mem);

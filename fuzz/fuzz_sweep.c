@@ -23,9 +23,9 @@ static cs_units *units; /* read once: the unit database takes milliseconds */
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (!units) {
-        char why[256];
-        if (!(units = cs_units_create(why, sizeof why))) {
-            fprintf(stderr, "fuzz_sweep: %s\n", why);
+        cs_error err;
+        if (!(units = cs_units_open(&err))) {
+            fprintf(stderr, "fuzz_sweep: %s\n", err.message);
             abort();
         }
     }

@@ -53,11 +53,11 @@ static void measured_units_and_average(void **state) {
         fprintf(f, "%.6f,%.12f,%.12f\n", ts * 1e3, (20.0 - 0.5 * g * ts) / mph, 0.1 * i / ft);
     }
     fclose(f);
-    char why[512];
-    cs_units *u = cs_units_create(why, sizeof why);
+    cs_error err;
+    cs_units *u = cs_units_open(&err);
     assert_non_null(u);
     cs_trace tr;
-    if (cs_trace_read_measured(path, u, &tr, why, sizeof why) != 0) fail_msg("%s", why);
+    if (cs_trace_load_measured(path, u, &tr, &err) != CS_OK) fail_msg("%s", err.message);
     assert_int_equal(tr.n, 201);
     assert_true(fabs(tr.t[200] - 0.2) < 1e-12 && fabs(tr.y[CS_TRACE_SPEED][0] - 20.0) < 1e-9);
     assert_true(fabs(tr.max_penetration - 20.0) < 1e-9);
@@ -77,13 +77,14 @@ static void measured_row_of_another_width(void **state) {
     FILE *f = fdopen(fd, "w");
     fputs("time [s],speed [m/s]\n0,20\n\n0.001,19.9\n0.002,19.8,7\n", f);
     fclose(f);
-    char why[512], want[600];
-    cs_units *u = cs_units_create(why, sizeof why);
+    char want[600];
+    cs_error err;
+    cs_units *u = cs_units_open(&err);
     assert_non_null(u);
     cs_trace tr;
-    assert_int_equal(cs_trace_read_measured(path, u, &tr, why, sizeof why), -1);
+    assert_int_equal(cs_trace_load_measured(path, u, &tr, &err), CS_ERR_INVALID);
     snprintf(want, sizeof want, "%s:5:1: 3 cells, the header has 2", path);
-    assert_string_equal(why, want);
+    assert_string_equal(err.message, want);
     cs_units_free(u);
     remove(path);
 }
@@ -109,9 +110,9 @@ static void run_average_undefined_before_a_window(void **state) {
         fprintf(f, "%.3f,%.6f,0,%.6f,0,%.6f,%d,0\n", 0.001 * i, 20 - 19.6133 * 0.001 * i, -19.6133,
                 20 - 19.6133 * 0.001 * i, i < 50 ? 0 : 2);
     fclose(f);
-    char why[512];
+    cs_error err;
     cs_trace tr;
-    if (cs_trace_read_run(dir, &tr, why, sizeof why) != 0) fail_msg("%s", why);
+    if (cs_trace_load_run(dir, &tr, &err) != CS_OK) fail_msg("%s", err.message);
     assert_int_equal(tr.n, 101);
     for (size_t i = 0; i < tr.n; i++)
         if (i < 50 ? !isnan(tr.y[CS_TRACE_DECEL_50MS][i])

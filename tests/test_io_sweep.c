@@ -151,8 +151,7 @@ static void test_distributions(void **state) {
 }
 
 static cs_sweep_spec *read(const char *path) {
-    char why[256];
-    cs_units *u = cs_units_create(why, sizeof why);
+    cs_units *u = cs_units_open(NULL);
     assert_non_null(u);
     cs_sweep_spec *s = cs_sweep_spec_read(path, u);
     cs_units_free(u);

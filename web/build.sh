@@ -5,7 +5,7 @@
 # WebAssembly inlined (OUT/cablesim-wasm.js, a factory createCablesim()). libyaml and json-c are
 # Debian's, compiled for it by scripts/wasm-libyaml.sh and scripts/wasm-jsonc.sh; the units come from the
 # page's table (no udunits2: load/units_udunits.c is left out, web/designer.c stands in for
-# cs_units_create).
+# cs_units_open).
 #   bash web/build.sh SOURCE_DIR OUT [EMCC]
 set -euo pipefail
 src=$(cd "$1" && pwd)

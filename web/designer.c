@@ -24,6 +24,7 @@
 #include "out/record.h"
 #include "out/report_html.h"
 #include "out/writers.h"
+#include "status.h"
 
 static char *units_table;     /* the page's units (cs_units_write_table) */
 static cs_loader *loader;     /* its files parsed once: runs of one model reuse it */
@@ -31,12 +32,12 @@ static char loaded_path[256]; /* the model it last loaded, "" after a failed loa
 static char *result;          /* the last call's JSON */
 
 /* The loader's unit system: the page's table (udunits2 is not built for WebAssembly). */
-cs_units *cs_units_create(char *why, size_t why_size) {
+cs_units *cs_units_open(cs_error *err) {
     if (!units_table) {
-        snprintf(why, why_size, "the page holds no unit table");
+        cs_error_set(err, CS_ERR_IO, "the page holds no unit table");
         return NULL;
     }
-    return cs_units_from_table(units_table, why, why_size);
+    return cs_units_from_table(units_table, err);
 }
 
 /* The parts library is the page's /data (the loader is always given it: this is never asked). */

@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "grow.h"
+#include "status.h"
 
 static int add_real(cs_allow *a, const char *real) {
     for (int i = 0; i < a->count; i++)
@@ -26,36 +27,26 @@ static int add_real(cs_allow *a, const char *real) {
     return 0;
 }
 
-int cs_allow_add(cs_allow *a, const char *dir, char *why, size_t why_size) {
+cs_status cs_allow_add(cs_allow *a, const char *dir, cs_error *err) {
     char real[PATH_MAX];
     struct stat st;
-    if (!realpath(dir, real) || stat(real, &st) != 0) {
-        snprintf(why, why_size, "%s: %s (expected a folder)", dir, strerror(errno));
-        return -1;
-    }
-    if (!S_ISDIR(st.st_mode)) {
-        snprintf(why, why_size, "%s: not a folder (expected a folder)", dir);
-        return -1;
-    }
-    if (add_real(a, real) != 0) {
-        snprintf(why, why_size, "out of memory");
-        return -1;
-    }
-    return 0;
+    if (!realpath(dir, real) || stat(real, &st) != 0)
+        return cs_error_set(err, CS_ERR_INVALID, "%s: %s (expected a folder)", dir, strerror(errno));
+    if (!S_ISDIR(st.st_mode))
+        return cs_error_set(err, CS_ERR_INVALID, "%s: not a folder (expected a folder)", dir);
+    if (add_real(a, real) != 0) return cs_error_set(err, CS_ERR_MEMORY, "out of memory");
+    return CS_OK;
 }
 
-int cs_allow_add_folder_of(cs_allow *a, const char *file, char *why, size_t why_size) {
+cs_status cs_allow_add_folder_of(cs_allow *a, const char *file, cs_error *err) {
     char real[PATH_MAX];
-    if (!realpath(file, real)) {
-        snprintf(why, why_size, "%s: %s", file, strerror(errno));
-        return -1;
-    }
+    if (!realpath(file, real)) return cs_error_set(err, CS_ERR_INVALID, "%s: %s", file, strerror(errno));
     char *slash = strrchr(real, '/');
     if (slash == real)
         slash[1] = '\0'; /* a file in / */
     else if (slash)
         *slash = '\0';
-    return cs_allow_add(a, real, why, why_size);
+    return cs_allow_add(a, real, err);
 }
 
 int cs_allow_copy(cs_allow *to, const cs_allow *from) {
@@ -98,35 +89,31 @@ static const char *kind_of(mode_t m) {
                          : "not a regular file";
 }
 
-int cs_input_read(const char *path, size_t limit, char **data, size_t *size, int *err, char *why,
-                  size_t why_size) {
+cs_status cs_input_load(const char *path, size_t limit, char **data, size_t *size, int *errnum,
+                        cs_error *err) {
     *data = NULL;
     *size = 0;
-    *err = 0;
+    *errnum = 0;
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC); /* a FIFO opens without a writer */
     struct stat st;
     if (fd < 0 || fstat(fd, &st) != 0) {
-        *err = errno;
-        snprintf(why, why_size, "cannot open the file: %s", strerror(errno));
+        *errnum = errno;
         if (fd >= 0) close(fd);
-        return -1;
+        return cs_error_set(err, CS_ERR_IO, "cannot open the file: %s", strerror(*errnum));
     }
     if (S_ISDIR(st.st_mode)) { /* the system's own word for it */
-        *err = EISDIR;
-        snprintf(why, why_size, "cannot open the file: %s", strerror(EISDIR));
+        *errnum = EISDIR;
         close(fd);
-        return -1;
+        return cs_error_set(err, CS_ERR_IO, "cannot open the file: %s", strerror(EISDIR));
     }
     if (!S_ISREG(st.st_mode)) {
-        snprintf(why, why_size, "%s, not a regular file", kind_of(st.st_mode));
         close(fd);
-        return -1;
+        return cs_error_set(err, CS_ERR_INVALID, "%s, not a regular file", kind_of(st.st_mode));
     }
     if ((unsigned long long)st.st_size > limit) {
-        snprintf(why, why_size, "%lld bytes, larger than the %zu MB an input file may hold",
-                 (long long)st.st_size, limit >> 20);
         close(fd);
-        return -1;
+        return cs_error_set(err, CS_ERR_INVALID, "%lld bytes, larger than the %zu MB an input file may hold",
+                            (long long)st.st_size, limit >> 20);
     }
     size_t cap = (size_t)st.st_size + 2, n = 0; /* room for the NUL, and to see the end without growing */
     char *buf = malloc(cap);
@@ -139,23 +126,28 @@ int cs_input_read(const char *path, size_t limit, char **data, size_t *size, int
         ssize_t got = read(fd, buf + n, cap - 1 - n);
         if (got < 0 && errno == EINTR) continue;
         if (got < 0) {
-            *err = errno;
-            snprintf(why, why_size, "cannot read the file: %s", strerror(errno));
+            *errnum = errno;
             free(buf);
             close(fd);
-            return -1;
+            return cs_error_set(err, CS_ERR_IO, "cannot read the file: %s", strerror(*errnum));
         }
         if (got == 0) {
             close(fd);
             buf[n] = '\0';
             *data = buf;
             *size = n;
-            return 0;
+            return CS_OK;
         }
         n += (size_t)got;
     }
     free(buf);
     close(fd);
-    snprintf(why, why_size, "%s", cap > limit ? "larger than an input file may be" : "out of memory");
-    return -1;
+    return cap > limit ? cs_error_set(err, CS_ERR_INVALID, "larger than an input file may be")
+                       : cs_error_set(err, CS_ERR_MEMORY, "out of memory");
+}
+
+int cs_input_read(const char *path, size_t limit, char **data, size_t *size, int *errnum, char *why,
+                  size_t why_size) {
+    cs_error err;
+    return cs_status_why(cs_input_load(path, limit, data, size, errnum, &err), &err, why, why_size);
 }

@@ -25,14 +25,15 @@ static const cs_field *field_of(const cs_node *map, const char *key) {
 
 /* Read one scalar as the field's quantity and check its range. */
 static int read_value(cs_loader *l, const cs_node *n, const cs_field *f, double *out) {
-    char why[300], hint[160];
+    char hint[160];
+    cs_error err;
     cs_field_hint(f, hint, sizeof hint);
     if ((f->flags & CS_NONE_OK) && strcmp(n->text, "none") == 0) {
         *out = INFINITY;
         return 0;
     }
-    if (cs_units_read(l->units, n->text, f->q, out, why, sizeof why) != 0) {
-        cs_err_node(l, n, 0, "%s (expected %s)", why, hint);
+    if (cs_units_read(l->units, n->text, f->q, out, &err) != CS_OK) {
+        cs_err_node(l, n, 0, "%s (expected %s)", err.message, hint);
         return -1;
     }
     const char *bad = NULL;

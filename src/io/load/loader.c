@@ -21,10 +21,8 @@ cs_loader *cs_loader_create(const char *data_dir, cs_error *err) {
         snprintf(l->data_dir, sizeof l->data_dir, "%s", data_dir);
     else
         cs_data_dir_find(l->data_dir, sizeof l->data_dir, l->data_note, sizeof l->data_note);
-    char why[CS_MESSAGE_SIZE];
-    if (!(l->units = cs_units_create(why, sizeof why))) {
+    if (!(l->units = cs_units_open(err))) {
         free(l);
-        cs_status_set(err, CS_ERR_IO, why);
         return NULL;
     }
     cs_status_set(err, CS_OK, "");
@@ -32,8 +30,8 @@ cs_loader *cs_loader_create(const char *data_dir, cs_error *err) {
 }
 
 cs_status cs_loader_allow_path(cs_loader *l, const char *dir, cs_error *err) {
-    char why[CS_MESSAGE_SIZE];
-    return cs_status_set(err, cs_allow_add(&l->allow, dir, why, sizeof why) ? CS_ERR_INVALID : CS_OK, why);
+    cs_status rc = cs_allow_add(&l->allow, dir, err);
+    return rc == CS_OK ? cs_status_set(err, CS_OK, "") : rc;
 }
 
 const char *cs_loader_data_dir(const cs_loader *l) {
@@ -189,13 +187,13 @@ static void apply_set(cs_loader *l, cs_node **root, int k) {
 /* The folders the references of the model file named may be in: its own folder (as named), the parts
  * library's and those the user allowed. */
 static void set_scope(cs_loader *l, const char *name) {
-    char why[PATH_MAX + 64], dir[PATH_MAX];
+    char dir[PATH_MAX];
     const char *slash = strrchr(name, '/');
     snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - name) + 1 : 1, slash ? name : ".");
     cs_allow_free(&l->scope);
     cs_allow_copy(&l->scope, &l->allow);
-    if (l->data_dir[0]) cs_allow_add(&l->scope, l->data_dir, why, sizeof why);
-    cs_allow_add(&l->scope, dir, why, sizeof why); /* none: the file's own load reports why */
+    if (l->data_dir[0]) cs_allow_add(&l->scope, l->data_dir, NULL);
+    cs_allow_add(&l->scope, dir, NULL); /* none: the file's own load reports why */
 }
 
 static int load(cs_loader *l, int f, cs_model_input *out) {

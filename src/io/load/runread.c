@@ -4,6 +4,7 @@
 #include "cablesim/units.h"
 #include "load/confine.h"
 #include "load/csvread.h"
+#include "status.h"
 
 #include <errno.h>
 #include <json-c/json.h>
@@ -26,27 +27,27 @@ typedef struct csv_file {
 } csv_file;
 
 /* The file at path in memory, NUL-terminated, and its number of lines (newlines) into *lines. */
-static int read_all(const char *path, csv_file *f, size_t *lines, char *why, size_t why_size) {
-    char reason[160];
-    int err;
-    if (cs_input_read(path, CS_HISTORY_MAX, &f->text, &f->size, &err, reason, sizeof reason) != 0) {
-        snprintf(why, why_size, "%s: %s", path, reason);
-        return -1;
-    }
+static cs_status read_all(const char *path, csv_file *f, size_t *lines, cs_error *err) {
+    cs_error input;
+    int errnum;
+    cs_status rc = cs_input_load(path, CS_HISTORY_MAX, &f->text, &f->size, &errnum, &input);
+    if (rc != CS_OK) return cs_error_set(err, rc, "%s: %s", path, input.message);
     *lines = 0;
     for (size_t i = 0; i < f->size; i++)
         *lines += f->text[i] == '\n';
-    return 0;
+    return CS_OK;
 }
 
-/* The next data row of rows, blank lines skipped: 1 for a row of the header's nh cells, 0 at the end, -1
- * (and why, at the row's line) for a row of another width. */
-static int next_row(cs_csv *rows, int nh, const char *path, char *why, size_t why_size) {
+/* The next data row of rows, blank lines skipped, *more 1 for a row of the header's nh cells, 0 at the
+ * end: CS_OK, or with err filled CS_ERR_MEMORY or CS_ERR_INVALID (at the row's line, a row of another
+ * width). */
+static cs_status next_row(cs_csv *rows, int nh, const char *path, int *more, cs_error *err) {
     int rc = cs_csv_next(rows);
-    if (rc < 0) snprintf(why, why_size, "%s: %s", path, rows->why); /* out of memory */
-    if (rc <= 0 || rows->count == nh) return rc;
-    snprintf(why, why_size, "%s:%ld:1: %d cells, the header has %d", path, rows->line, rows->count, nh);
-    return -1;
+    *more = rc > 0;
+    if (rc < 0) return cs_error_set(err, CS_ERR_MEMORY, "%s: %s", path, rows->why); /* out of memory */
+    if (rc == 0 || rows->count == nh) return CS_OK;
+    return cs_error_set(err, CS_ERR_INVALID, "%s:%ld:1: %d cells, the header has %d", path, rows->line,
+                        rows->count, nh);
 }
 
 static int column_of(char *const *names, int n, const char *name) {
@@ -154,20 +155,19 @@ static double json_number(json_object *root, const char *key) {
     return t == json_type_double || t == json_type_int ? json_object_get_double(v) : NAN;
 }
 
-static int read_summary(const char *dir, cs_trace *tr, char *why, size_t why_size) {
+static cs_status read_summary(const char *dir, cs_trace *tr, cs_error *err) {
     char path[1200];
     snprintf(path, sizeof path, "%s/summary.json", dir);
     FILE *probe = fopen(path, "rb");
-    if (!probe) {
-        snprintf(why, why_size, "%s: %s (expected a folder written by cablesim run)", path, strerror(errno));
-        return -1;
-    }
+    if (!probe)
+        return cs_error_set(err, CS_ERR_IO, "%s: %s (expected a folder written by cablesim run)", path,
+                            strerror(errno));
     fclose(probe);
     json_object *root = json_object_from_file(path);
     if (!root || !json_object_is_type(root, json_type_object)) {
-        snprintf(why, why_size, "%s: not a summary of a run (%s)", path, json_util_get_last_err());
         if (root) json_object_put(root);
-        return -1;
+        return cs_error_set(err, CS_ERR_INVALID, "%s: not a summary of a run (%s)", path,
+                            json_util_get_last_err());
     }
     json_object *o;
     if (json_object_object_get_ex(root, "outcome", &o) && json_object_is_type(o, json_type_string))
@@ -182,11 +182,10 @@ static int read_summary(const char *dir, cs_trace *tr, char *why, size_t why_siz
     tr->max_tension = json_number(root, "max_cable_tension_n");
     tr->t_end = json_number(root, "t_end_s");
     json_object_put(root);
-    if (!tr->outcome[0]) {
-        snprintf(why, why_size, "%s: no outcome (expected a summary written by cablesim run)", path);
-        return -1;
-    }
-    return 0;
+    if (!tr->outcome[0])
+        return cs_error_set(err, CS_ERR_INVALID,
+                            "%s: no outcome (expected a summary written by cablesim run)", path);
+    return CS_OK;
 }
 
 enum { MAX_COLS = 4096 }; /* of a run's timeseries.csv */
@@ -218,23 +217,25 @@ static int is_run_series(const char *text) {
 }
 
 /* A run's time history, timeseries.csv at path, into tr (cleared, its label and measured set). */
-static int read_run_series(const char *path, cs_trace *tr, char *why, size_t why_size) {
+static cs_status read_run_series(const char *path, cs_trace *tr, cs_error *err) {
     csv_file f;
     size_t rows;
-    if (read_all(path, &f, &rows, why, why_size) != 0) return -1;
+    cs_status rc = read_all(path, &f, &rows, err);
+    if (rc != CS_OK) return rc;
     cs_csv csv;
     cs_csv_open_text(&csv, f.text, CS_CSV_REST, MAX_COLS);
-    int *tension = NULL, rc = -1, nh = 0, row;
+    int *tension = NULL, nh = 0, more;
     if (alloc_trace(tr, rows) != 0 || cs_csv_next(&csv) < 0 ||
         !(tension = calloc(MAX_COLS, sizeof *tension))) {
-        snprintf(why, why_size, "%s: out of memory", path);
+        rc = cs_error_set(err, CS_ERR_MEMORY, "%s: out of memory", path);
         goto done;
     }
     nh = csv.count;
     run_columns c;
     if (!run_header(csv.cell, nh, &c)) {
-        snprintf(why, why_size,
-                 "%s:1:1: not a run's time history (expected t [s], vx [m/s], ... penetration [m])", path);
+        rc = cs_error_set(err, CS_ERR_INVALID,
+                          "%s:1:1: not a run's time history (expected t [s], vx [m/s], ... penetration [m])",
+                          path);
         goto done;
     }
     for (int k = 0; k < nh; k++) /* the ropes' columns */
@@ -243,7 +244,7 @@ static int read_run_series(const char *path, cs_trace *tr, char *why, size_t why
         ipen = c.penetration;
     double u0[2] = {0.0, 0.0};
     csv.flags |= CS_CSV_BLANKS;
-    while ((row = next_row(&csv, nh, path, why, why_size)) > 0) {
+    while ((rc = next_row(&csv, nh, path, &more, err)) == CS_OK && more) {
         char **cells = csv.cell;
         size_t i = tr->n++;
         tr->t[i] = strtod(cells[it], NULL);
@@ -261,7 +262,7 @@ static int read_run_series(const char *path, cs_trace *tr, char *why, size_t why
             }
         tr->y[CS_TRACE_TENSION][i] = tmax;
     }
-    if (row < 0) goto done;
+    if (rc != CS_OK) goto done;
     /* the column is 0 until a whole window has passed: the average is undefined there, as the average of
      * a measured trace is (cs_trace_average_50ms) */
     for (size_t i = 0; i < tr->n && tr->t[i] - WINDOW < tr->t[0] - 1e-12; i++)
@@ -269,20 +270,26 @@ static int read_run_series(const char *path, cs_trace *tr, char *why, size_t why
     for (int k = 0; k < CS_TRACE_COUNT; k++)
         tr->have[k] = 1;
     derive(tr);
-    rc = 0;
+    rc = CS_OK;
 done:
     free(tension), free(f.text);
     cs_csv_close(&csv);
-    if (rc != 0) cs_trace_free(tr);
+    if (rc != CS_OK) cs_trace_free(tr);
     return rc;
 }
 
-int cs_trace_read_run(const char *dir, cs_trace *tr, char *why, size_t why_size) {
+cs_status cs_trace_load_run(const char *dir, cs_trace *tr, cs_error *err) {
     clear(tr, dir, 0);
-    if (read_summary(dir, tr, why, why_size) != 0) return -1;
+    cs_status rc = read_summary(dir, tr, err);
+    if (rc != CS_OK) return rc;
     char path[1200];
     snprintf(path, sizeof path, "%s/timeseries.csv", dir);
-    return read_run_series(path, tr, why, why_size);
+    return read_run_series(path, tr, err);
+}
+
+int cs_trace_read_run(const char *dir, cs_trace *tr, char *why, size_t why_size) {
+    cs_error err;
+    return cs_status_why(cs_trace_load_run(dir, tr, &err), &err, why, why_size);
 }
 
 /* ---- a measured history ---- */
@@ -296,74 +303,78 @@ static int header_unit(const char *cell, char *unit, size_t size) {
     return (int)(open - cell);
 }
 
-int cs_trace_read_measured(const char *path, cs_units *units, cs_trace *tr, char *why, size_t why_size) {
+cs_status cs_trace_load_measured(const char *path, cs_units *units, cs_trace *tr, cs_error *err) {
     clear(tr, path, 1);
     csv_file f;
     size_t rows;
-    if (read_all(path, &f, &rows, why, why_size) != 0) return -1;
+    cs_status rc = read_all(path, &f, &rows, err);
+    if (rc != CS_OK) return rc;
     enum { MEASURED_COLS = 16 };
     char unit[64], text[96];
-    int rc = -1, target[MEASURED_COLS], row;
+    int target[MEASURED_COLS], more;
     double factor[MEASURED_COLS];
     int is_run = is_run_series(f.text);
     if (is_run != 0) { /* a run's own timeseries.csv, read as a run's (or out of memory) */
         free(f.text);
-        if (is_run < 0) snprintf(why, why_size, "%s: out of memory", path);
-        return is_run < 0 ? -1 : read_run_series(path, tr, why, why_size);
+        return is_run < 0 ? cs_error_set(err, CS_ERR_MEMORY, "%s: out of memory", path)
+                          : read_run_series(path, tr, err);
     }
     cs_csv csv;
     cs_csv_open_text(&csv, f.text, CS_CSV_REST, MEASURED_COLS);
     if (alloc_trace(tr, rows + 1) != 0 || cs_csv_next(&csv) < 0) {
-        snprintf(why, why_size, "%s: out of memory", path);
+        rc = cs_error_set(err, CS_ERR_MEMORY, "%s: out of memory", path);
         goto done;
     }
     int nh = csv.count, *hcol = csv.cell_col;
     char **head = csv.cell;
     if (nh < 2) {
-        snprintf(why, why_size,
-                 "%s:1:1: a header of a time column and at least one more (expected e.g. "
-                 "\"time [s],deceleration [g]\")",
-                 path);
+        rc = cs_error_set(err, CS_ERR_INVALID,
+                          "%s:1:1: a header of a time column and at least one more (expected e.g. "
+                          "\"time [s],deceleration [g]\")",
+                          path);
         goto done;
     }
     static const cs_quantity kinds[] = {CS_Q_ACCELERATION, CS_Q_SPEED, CS_Q_LENGTH, CS_Q_FORCE};
     static const int traces[] = {CS_TRACE_DECEL, CS_TRACE_SPEED, CS_TRACE_PENETRATION, CS_TRACE_TENSION};
     for (int j = 0; j < nh; j++) {
-        char unit_why[256];
+        cs_error unit_err;
         if (header_unit(head[j], unit, sizeof unit) < 0) {
-            snprintf(why, why_size, "%s:1:%d: '%s' has no unit (expected \"name [unit]\" or \"name (unit)\")",
-                     path, hcol[j], head[j]);
+            rc = cs_error_set(err, CS_ERR_INVALID,
+                              "%s:1:%d: '%s' has no unit (expected \"name [unit]\" or \"name (unit)\")", path,
+                              hcol[j], head[j]);
             goto done;
         }
         snprintf(text, sizeof text, "1 %s", unit);
         target[j] = -1;
         if (j == 0) {
-            if (cs_units_read(units, text, CS_Q_TIME, &factor[0], unit_why, sizeof unit_why) != 0) {
-                snprintf(why, why_size, "%s:1:%d: the first column is the time: %s", path, hcol[0], unit_why);
+            if (cs_units_read(units, text, CS_Q_TIME, &factor[0], &unit_err) != CS_OK) {
+                rc = cs_error_set(err, CS_ERR_INVALID, "%s:1:%d: the first column is the time: %s", path,
+                                  hcol[0], unit_err.message);
                 goto done;
             }
             continue;
         }
         for (size_t k = 0; k < sizeof kinds / sizeof kinds[0] && target[j] < 0; k++)
-            if (cs_units_read(units, text, kinds[k], &factor[j], unit_why, sizeof unit_why) == 0)
-                target[j] = traces[k];
+            if (cs_units_read(units, text, kinds[k], &factor[j], &unit_err) == CS_OK) target[j] = traces[k];
         if (target[j] < 0) {
-            snprintf(why, why_size,
-                     "%s:1:%d: '%s' is not a unit of acceleration, speed, length or force (expected a "
-                     "deceleration, speed, penetration or rope tension)",
-                     path, hcol[j], unit);
+            rc = cs_error_set(
+                err, CS_ERR_INVALID,
+                "%s:1:%d: '%s' is not a unit of acceleration, speed, length or force (expected a "
+                "deceleration, speed, penetration or rope tension)",
+                path, hcol[j], unit);
             goto done;
         }
         for (int i = 1; i < j; i++)
             if (target[i] == target[j]) {
-                snprintf(why, why_size, "%s:1:%d: a second column of the same quantity as column %d", path,
-                         hcol[j], hcol[i]);
+                rc = cs_error_set(err, CS_ERR_INVALID,
+                                  "%s:1:%d: a second column of the same quantity as column %d", path, hcol[j],
+                                  hcol[i]);
                 goto done;
             }
         tr->have[target[j]] = 1;
     }
     csv.flags |= CS_CSV_BLANKS;
-    while ((row = next_row(&csv, nh, path, why, why_size)) > 0) {
+    while ((rc = next_row(&csv, nh, path, &more, err)) == CS_OK && more) {
         char **cells = csv.cell;
         int *col = csv.cell_col;
         long line = csv.line;
@@ -375,7 +386,8 @@ int cs_trace_read_measured(const char *path, cs_units *units, cs_trace *tr, char
                 end++;
             int blank = cells[j][strspn(cells[j], " ")] == '\0';
             if ((*end != '\0' || !isfinite(x)) && !(blank && j > 0)) {
-                snprintf(why, why_size, "%s:%ld:%d: '%s' is not a number", path, line, col[j], cells[j]);
+                rc = cs_error_set(err, CS_ERR_INVALID, "%s:%ld:%d: '%s' is not a number", path, line, col[j],
+                                  cells[j]);
                 goto done;
             }
             if (j == 0)
@@ -384,16 +396,16 @@ int cs_trace_read_measured(const char *path, cs_units *units, cs_trace *tr, char
                 tr->y[target[j]][i] = blank ? NAN : x * factor[j];
         }
         if (i > 0 && !(tr->t[i] > tr->t[i - 1])) {
-            snprintf(why, why_size,
-                     "%s:%ld:%d: the time goes back or stands (expected it to grow row by row)", path, line,
-                     col[0]);
+            rc = cs_error_set(err, CS_ERR_INVALID,
+                              "%s:%ld:%d: the time goes back or stands (expected it to grow row by row)",
+                              path, line, col[0]);
             goto done;
         }
         tr->n++;
     }
-    if (row < 0) goto done;
+    if (rc != CS_OK) goto done;
     if (tr->n < 2) {
-        snprintf(why, why_size, "%s:2:1: fewer than two rows of data", path);
+        rc = cs_error_set(err, CS_ERR_INVALID, "%s:2:1: fewer than two rows of data", path);
         goto done;
     }
     /* the 50-ms average as the engine takes it: from the speed if given, else from the deceleration */
@@ -405,10 +417,15 @@ int cs_trace_read_measured(const char *path, cs_units *units, cs_trace *tr, char
         tr->have[CS_TRACE_DECEL_50MS] = 1;
     }
     derive(tr);
-    rc = 0;
+    rc = CS_OK;
 done:
     free(f.text);
     cs_csv_close(&csv);
-    if (rc != 0) cs_trace_free(tr);
+    if (rc != CS_OK) cs_trace_free(tr);
     return rc;
+}
+
+int cs_trace_read_measured(const char *path, cs_units *units, cs_trace *tr, char *why, size_t why_size) {
+    cs_error err;
+    return cs_status_why(cs_trace_load_measured(path, units, tr, &err), &err, why, why_size);
 }

@@ -38,12 +38,18 @@ typedef struct cs_trace {
     double penetration_beyond_m;
 } cs_trace;
 
-/* Read the run in folder dir. Returns 0, or -1 with why filled ("dir/timeseries.csv: No such file..."). */
-int cs_trace_read_run(const char *dir, cs_trace *out, char *why, size_t why_size);
+/* Read the run in folder dir. CS_OK, or with err filled ("dir/timeseries.csv: No such file...")
+ * CS_ERR_IO (a file that cannot be read), CS_ERR_INVALID (not a run's) or CS_ERR_MEMORY. */
+cs_status cs_trace_load_run(const char *dir, cs_trace *out, cs_error *err);
 /* Read a measured history: a CSV file, its first line the header, each cell "name [unit]" or "name
  * (unit)", the first column the time; every other column is a deceleration (an acceleration unit, g
- * allowed), a speed, a penetration (a length) or a rope tension (a force), known by its unit. Returns
- * 0, or -1 with why filled as "file:line:column: what and why". */
+ * allowed), a speed, a penetration (a length) or a rope tension (a force), known by its unit. CS_OK, or
+ * with err filled as "file:line:column: what and why" CS_ERR_INVALID, or CS_ERR_IO or CS_ERR_MEMORY as
+ * cs_trace_load_run. */
+cs_status cs_trace_load_measured(const char *path, cs_units *units, cs_trace *out, cs_error *err);
+/* cs_trace_load_run and cs_trace_load_measured in the writers' form (src/io/status.h, cs_status_why): 0,
+ * or -1 with why filled. */
+int cs_trace_read_run(const char *dir, cs_trace *out, char *why, size_t why_size);
 int cs_trace_read_measured(const char *path, cs_units *units, cs_trace *out, char *why, size_t why_size);
 void cs_trace_free(cs_trace *trace);
 

@@ -647,13 +647,14 @@ void cs_sweep_spec_free(cs_sweep_spec *s) {
 }
 
 void cs_sweep_spec_confine(cs_sweep_spec *s, const char *const *allow, int count) {
-    char why[PATH_MAX + 200], data[1024], note[PATH_MAX + 64], real[PATH_MAX];
+    char data[1024], note[PATH_MAX + 64], real[PATH_MAX];
+    cs_error err;
     for (int i = 0; i < count; i++)
-        if (cs_allow_add(&s->allow, allow[i], why, sizeof why) != 0)
-            cs_sweep_error(s, 0, 0, "--allow-path %s", why);
+        if (cs_allow_add(&s->allow, allow[i], &err) != CS_OK)
+            cs_sweep_error(s, 0, 0, "--allow-path %s", err.message);
     if (cs_data_dir_find(data, sizeof data, note, sizeof note) == 0)
-        cs_allow_add(&s->allow, data, why, sizeof why); /* none: the model's load says why */
-    cs_allow_add_folder_of(&s->allow, s->file, why, sizeof why);
+        cs_allow_add(&s->allow, data, NULL); /* none: the model's load says why */
+    cs_allow_add_folder_of(&s->allow, s->file, NULL);
     if (!s->model || !realpath(s->model, real) || cs_allow_has(&s->allow, real)) return;
     char dirs[2048];
     cs_allow_list(&s->allow, dirs, sizeof dirs);

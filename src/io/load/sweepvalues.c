@@ -25,19 +25,18 @@ static void shown_unit(cs_units *u, cs_sweep_var *v, const char *text) {
     while (n > 0 && rest[n - 1] == ' ')
         n--;
     double one, zero;
-    char why[256];
     if (v->integer || n == 0 || n >= sizeof v->shown_unit) return;
     snprintf(probe, sizeof probe, "1 %.*s", (int)n, rest);
-    if (cs_units_read(u, probe, v->q, &one, why, sizeof why) != 0 || !(one > 0)) return;
+    if (cs_units_read(u, probe, v->q, &one, NULL) != CS_OK || !(one > 0)) return;
     snprintf(probe, sizeof probe, "0 %.*s", (int)n, rest);
-    if (cs_units_read(u, probe, v->q, &zero, why, sizeof why) != 0 || zero != 0) return;
+    if (cs_units_read(u, probe, v->q, &zero, NULL) != CS_OK || zero != 0) return;
     snprintf(v->shown_unit, sizeof v->shown_unit, "%.*s", (int)n, rest);
     v->shown_scale = one;
 }
 
 static int read_value(cs_sweep_spec *s, cs_units *u, cs_sweep_var *v, const char *text, int line, int col,
                       const char *what, double *out) {
-    char why[256];
+    cs_error err;
     if (v->integer) {
         char *end;
         errno = 0;
@@ -51,9 +50,9 @@ static int read_value(cs_sweep_spec *s, cs_units *u, cs_sweep_var *v, const char
         *out = (double)n;
         return 0;
     }
-    if (cs_units_read(u, text, v->q, out, why, sizeof why) != 0) {
-        cs_sweep_error(s, line, col, "vary: %s: %s: %s (expected a %s, e.g. \"%s\")", v->path, what, why,
-                       cs_quantity_get(v->q)->name, cs_quantity_get(v->q)->example);
+    if (cs_units_read(u, text, v->q, out, &err) != CS_OK) {
+        cs_sweep_error(s, line, col, "vary: %s: %s: %s (expected a %s, e.g. \"%s\")", v->path, what,
+                       err.message, cs_quantity_get(v->q)->name, cs_quantity_get(v->q)->example);
         return -1;
     }
     shown_unit(u, v, text);

@@ -7,6 +7,7 @@
 #include <string.h>
 #include <strings.h>
 
+#include "status.h"
 #include "units_int.h"
 
 static const cs_quantity_info quantities[CS_Q_COUNT] = {
@@ -112,64 +113,52 @@ static int unit_of(const char *text, const char **number, char *unit, size_t siz
     return 0;
 }
 
-int cs_units_read(cs_units *u, const char *text, cs_quantity q, double *si, char *why, size_t why_size) {
+cs_status cs_units_read(cs_units *u, const char *text, cs_quantity q, double *si, cs_error *err) {
     char unit_text[64];
     const char *number;
     if (unit_of(text, &number, unit_text, sizeof unit_text) != 0) {
         if (decimal_end(number))
-            snprintf(why, why_size, "unit '%.20s...' is too long", number);
-        else
-            snprintf(why, why_size, "'%s' is not a number with a unit", number);
-        return -1;
+            return cs_error_set(err, CS_ERR_INVALID, "unit '%.20s...' is too long", number);
+        return cs_error_set(err, CS_ERR_INVALID, "'%s' is not a number with a unit", number);
     }
-    if (strspn(number, "+-") < 2 && strncasecmp(number + strspn(number, "+-"), "0x", 2) == 0) {
-        snprintf(why, why_size, "'%s' is not a decimal number", number);
-        return -1;
-    }
+    if (strspn(number, "+-") < 2 && strncasecmp(number + strspn(number, "+-"), "0x", 2) == 0)
+        return cs_error_set(err, CS_ERR_INVALID, "'%s' is not a decimal number", number);
     double value = strtod(number, NULL);
-    if (!isfinite(value)) {
-        snprintf(why, why_size, "'%s' is out of range", number);
-        return -1;
-    }
+    if (!isfinite(value)) return cs_error_set(err, CS_ERR_INVALID, "'%s' is out of range", number);
     if (!unit_text[0]) { /* a pure number; a quantity's 0 is 0 in any unit */
         if (q != CS_Q_NUMBER && value != 0) {
             const char *example = strchr(quantities[q].example, ' ');
-            snprintf(why, why_size, "'%s' has no unit: give one, e.g. %.*s%s", number,
-                     (int)strcspn(number, " \t"), number, example ? example : "");
-            return -1;
+            return cs_error_set(err, CS_ERR_INVALID, "'%s' has no unit: give one, e.g. %.*s%s", number,
+                                (int)strcspn(number, " \t"), number, example ? example : "");
         }
         *si = value;
-        return 0;
+        return CS_OK;
     }
     const char *lookup = (q == CS_Q_ACCELERATION && strcmp(unit_text, "g") == 0) ? "gee" : unit_text;
-    int rc = 0;
+    cs_status rc = CS_OK;
     void *unit = u->ops->parse(u, lookup);
     if (!unit) {
-        snprintf(why, why_size, "unknown unit '%s'", unit_text);
-        rc = -1;
+        rc = cs_error_set(err, CS_ERR_INVALID, "unknown unit '%s'", unit_text);
     } else if (u->ops->convert(u, unit, q, value, si) != 0) {
         const char *kind = kind_of(u, unit);
         if (kind)
-            snprintf(why, why_size, "'%s' is a unit of %s, not of %s", unit_text, kind, quantities[q].name);
+            rc = cs_error_set(err, CS_ERR_INVALID, "'%s' is a unit of %s, not of %s", unit_text, kind,
+                              quantities[q].name);
         else
-            snprintf(why, why_size, "'%s' is not a unit of %s", unit_text, quantities[q].name);
-        rc = -1;
+            rc = cs_error_set(err, CS_ERR_INVALID, "'%s' is not a unit of %s", unit_text, quantities[q].name);
     }
     if (unit) u->ops->release(u, unit);
-    if (rc == 0 && !isfinite(*si)) {
-        snprintf(why, why_size, "'%s' is out of range", number);
-        rc = -1;
-    }
+    if (rc == CS_OK && !isfinite(*si)) rc = cs_error_set(err, CS_ERR_INVALID, "'%s' is out of range", number);
     return rc;
 }
 
 void cs_units_show(cs_units *u, const char *text, cs_quantity q, double si, char *out, size_t size) {
-    char unit[64], one[80], why[160];
+    char unit[64], one[80];
     const char *number;
     double factor = 0;
     if (unit_of(text, &number, unit, sizeof unit) == 0 && unit[0]) {
         snprintf(one, sizeof one, "1 %s", unit);
-        if (cs_units_read(u, one, q, &factor, why, sizeof why) != 0 || !(factor > 0)) factor = 0;
+        if (cs_units_read(u, one, q, &factor, NULL) != CS_OK || !(factor > 0)) factor = 0;
     }
     if (factor > 0)
         snprintf(out, size, "%.4g %s", si / factor, unit);
@@ -243,14 +232,14 @@ static int table_line(const char *line, size_t len, table_unit *tu) {
     return p == stop ? 0 : -1;
 }
 
-cs_units *cs_units_from_table(const char *table, char *why, size_t why_size) {
+cs_units *cs_units_from_table(const char *table, cs_error *err) {
     table_units *t = calloc(1, sizeof *t);
     int lines = 0;
     for (const char *c = table; *c; c++)
         lines += *c == '\n';
     if (!t || !(t->units = calloc((size_t)lines + 1, sizeof *t->units))) {
         free(t);
-        snprintf(why, why_size, "out of memory");
+        cs_out_of_memory(err);
         return NULL;
     }
     t->base.ops = &table_ops;
@@ -258,13 +247,21 @@ cs_units *cs_units_from_table(const char *table, char *why, size_t why_size) {
         const char *nl = strchr(line, '\n');
         size_t len = nl ? (size_t)(nl - line) : strlen(line);
         if (len > 0 && table_line(line, len, &t->units[t->count++]) != 0) {
-            snprintf(why, why_size, "unit table, line %d: not UNIT<tab>%d factors", t->count, CS_Q_COUNT);
+            cs_error_set(err, CS_ERR_INVALID, "unit table, line %d: not UNIT<tab>%d factors", t->count,
+                         CS_Q_COUNT);
             cs_units_free(&t->base);
             return NULL;
         }
         line += len + (nl != NULL);
     }
     return &t->base;
+}
+
+cs_units *cs_units_create(char *why, size_t why_size) {
+    cs_error err;
+    cs_units *u = cs_units_open(&err);
+    if (!u) cs_status_why(err.status, &err, why, why_size);
+    return u;
 }
 
 /* Whether value * factor is exactly what u converts value in unit to (a conversion by a factor alone). */

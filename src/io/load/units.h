@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Physical quantities with units. A unit system is loaded per context (no shared state between two
- * loaders): udunits2's database with the aliases the field uses that udunits2 lacks (cs_units_create),
+ * loaders): udunits2's database with the aliases the field uses that udunits2 lacks (cs_units_open),
  * or a table of factors written from one (cs_units_from_table: the designer page's, which has no
  * udunits2), which converts the units it lists to the same bits. */
 #ifndef CS_UNITS_H
@@ -8,6 +8,8 @@
 
 #include <stddef.h>
 #include <stdio.h>
+
+#include "cablesim/sim.h"
 
 /* The kinds of quantity a model file holds; each has an SI unit and a name for messages. */
 typedef enum cs_quantity {
@@ -43,8 +45,10 @@ const cs_quantity_info *cs_quantity_get(cs_quantity q);
 typedef struct cs_units cs_units;
 
 /* udunits2's system database with the aliases: the usual units from a table of its factors written at
- * build time, the database itself read when a text the table lacks is first met. NULL with why filled
- * when there is no database to read. */
+ * build time, the database itself read when a text the table lacks is first met. NULL with err filled
+ * when there is no database to read (CS_ERR_IO) or no memory (CS_ERR_MEMORY). */
+cs_units *cs_units_open(cs_error *err);
+/* cs_units_open in the writers' form (src/io/status.h, cs_status_why): NULL with why filled. */
 cs_units *cs_units_create(char *why, size_t why_size);
 void cs_units_free(cs_units *u);
 
@@ -58,14 +62,14 @@ extern const int cs_units_usual_count;
  * or u converts it otherwise than by a factor alone. Returns the number of lines. */
 int cs_units_write_table(cs_units *u, const char *const *texts, int count, FILE *f);
 /* A unit system that knows the units of a table (cs_units_write_table's text) and converts each by its
- * factor: the same messages as any unit system, "unknown unit" for a unit it lacks. NULL with why
- * filled on a malformed table or no memory. */
-cs_units *cs_units_from_table(const char *table, char *why, size_t why_size);
+ * factor: the same messages as any unit system, "unknown unit" for a unit it lacks. NULL with err
+ * filled on a malformed table (CS_ERR_INVALID) or no memory (CS_ERR_MEMORY). */
+cs_units *cs_units_from_table(const char *table, cs_error *err);
 
 /* Read "40 mph", "1.75in", "0.15" (a pure number) as quantity q, in SI. The number is decimal (no "0x28",
  * "inf" or "nan"); a quantity of a unit needs its unit ("35" is refused for a speed: a bare number is
- * not read as SI), but for 0. Returns 0, or -1 with why filled ("'40 kg' is a mass" ...). */
-int cs_units_read(cs_units *u, const char *text, cs_quantity q, double *si, char *why, size_t why_size);
+ * not read as SI), but for 0. CS_OK, or CS_ERR_INVALID with err filled ("'40 kg' is a mass" ...). */
+cs_status cs_units_read(cs_units *u, const char *text, cs_quantity q, double *si, cs_error *err);
 /* An SI value of quantity q in the unit of text (a value as the user gave it, "35 mph"): "15.66 mph"; in
  * SI where text has no unit u reads as one of q. */
 void cs_units_show(cs_units *u, const char *text, cs_quantity q, double si, char *out, size_t size);

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Inside a unit system (units.h): what each kind of system does with a unit's text. units.c reads a
  * quantity's text and words every message once, over either kind: udunits2's database
- * (units_udunits.c, cs_units_create) or a table of factors (units.c, cs_units_from_table). */
+ * (units_udunits.c, cs_units_open) or a table of factors (units.c, cs_units_from_table). */
 #ifndef CS_UNITS_INT_H
 #define CS_UNITS_INT_H
 

@@ -7,6 +7,7 @@
 #include <udunits2.h>
 #include <unistd.h>
 
+#include "status.h"
 #include "units_int.h"
 
 /* udunits2 reads its XML database and parses unit strings through static parser state: every call
@@ -109,14 +110,14 @@ static void ud_destroy(cs_units *base) {
 
 static const cs_units_ops ud_ops = {ud_parse, ud_convert, ud_release, ud_destroy};
 
-cs_units *cs_units_create(char *why, size_t why_size) {
+cs_units *cs_units_open(cs_error *err) {
     ud_units *u = calloc(1, sizeof *u);
     if (!u) {
-        snprintf(why, why_size, "out of memory");
+        cs_out_of_memory(err);
         return NULL;
     }
     u->base.ops = &ud_ops;
-    if (cs_units_usual_table[0] && !(u->table = cs_units_from_table(cs_units_usual_table, why, why_size))) {
+    if (cs_units_usual_table[0] && !(u->table = cs_units_from_table(cs_units_usual_table, err))) {
         free(u);
         return NULL;
     }
@@ -127,7 +128,7 @@ cs_units *cs_units_create(char *why, size_t why_size) {
     int readable = path && access(path, R_OK) == 0;
     pthread_mutex_unlock(&ut_lock);
     if (!readable) {
-        snprintf(why, why_size, "cannot load the udunits2 unit database (set UDUNITS2_XML_PATH)");
+        cs_error_set(err, CS_ERR_IO, "cannot load the udunits2 unit database (set UDUNITS2_XML_PATH)");
         cs_units_free(&u->base);
         return NULL;
     }

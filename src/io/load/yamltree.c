@@ -271,10 +271,10 @@ int cs_ytree_read(cs_ytree *tree, const char *filename, const char *data, size_t
     reader r = {.tree = tree, .max_depth = max_depth < MAX_DEPTH ? max_depth : MAX_DEPTH};
     char *text = NULL;
     if (!data) { /* a regular file only, read whole: never a FIFO's or a device's wait */
-        int err = 0;
-        if (cs_input_read(filename, CS_INPUT_MAX, &text, &size, &err, tree->error, sizeof tree->error) != 0) {
+        cs_error err;
+        if (cs_input_load(filename, CS_INPUT_MAX, &text, &size, &tree->open_errno, &err) != CS_OK) {
+            snprintf(tree->error, sizeof tree->error, "%.*s", (int)sizeof tree->error - 1, err.message);
             tree->unreadable = 1;
-            tree->open_errno = err;
             return -1;
         }
         data = text;

@@ -26,10 +26,10 @@ enum { EXIT_RUN = CS_SWEEP_EXIT_RUN, EXIT_BAD = CS_SWEEP_EXIT_USAGE };
 /* ---- the spec and the folder ---- */
 
 cs_sweep_spec *cs_sweep_study_spec(cs_sweep_options *o, int loud) {
-    char why[256];
-    cs_units *units = cs_units_create(why, sizeof why);
+    cs_error err;
+    cs_units *units = cs_units_open(&err);
     if (!units) {
-        if (loud) cs_sweep_say(o, "%s", why);
+        if (loud) cs_sweep_say(o, "%s", err.message);
         return NULL;
     }
     cs_sweep_spec *spec = cs_sweep_spec_read(o->spec, units);
