@@ -4,6 +4,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "validation.h"
 #include "load/csvread.h"
+#include "status.h"
 
 #include <errno.h>
 #include <math.h>
@@ -21,13 +22,12 @@ typedef struct csv {
     int line;           /* of the row last read */
     int cols;           /* as the header names */
     int want[MAX_COLS]; /* the header's column of each column asked for */
-    char *why;
-    size_t why_size;
+    cs_error *err;      /* where a problem is said */
 } csv;
 
 static int fault(csv *c, int col, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 
-/* Record a problem at column col of the line last read (col 0: of the file). Returns -1. */
+/* Record a problem (CS_ERR_INVALID) at column col of the line last read (col 0: of the file). Returns -1. */
 static int fault(csv *c, int col, const char *fmt, ...) {
     char msg[400];
     va_list ap;
@@ -35,9 +35,9 @@ static int fault(csv *c, int col, const char *fmt, ...) {
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
     if (col > 0)
-        snprintf(c->why, c->why_size, "%s:%d:%d: %s", c->path, c->line, col, msg);
+        cs_error_set(c->err, CS_ERR_INVALID, "%s:%d:%d: %s", c->path, c->line, col, msg);
     else
-        snprintf(c->why, c->why_size, "%s: %s", c->path, msg);
+        cs_error_set(c->err, CS_ERR_INVALID, "%s: %s", c->path, msg);
     return -1;
 }
 
@@ -51,14 +51,16 @@ static int next_line(csv *c, int *count) {
 }
 
 /* Open dir/name and read its header, which must name every column of columns (NULL-terminated). */
-static int open_csv(csv *c, const char *dir, const char *name, const char *const *columns, char *why,
-                    size_t why_size) {
+static int open_csv(csv *c, const char *dir, const char *name, const char *const *columns, cs_error *err) {
     memset(c, 0, sizeof *c);
-    c->why = why, c->why_size = why_size;
+    c->err = err;
     snprintf(c->path, sizeof c->path, "%s/%s", dir, name);
-    if (!(c->f = fopen(c->path, "r")))
-        return fault(c, 0, "cannot open the file: %s (expected the values cablesim validate compares with)",
-                     strerror(errno));
+    if (!(c->f = fopen(c->path, "r"))) {
+        cs_error_set(err, CS_ERR_IO,
+                     "%s: cannot open the file: %s (expected the values cablesim validate compares with)",
+                     c->path, strerror(errno));
+        return -1;
+    }
     cs_csv_open_file(&c->rows, c->f, CS_CSV_COMMENTS | CS_CSV_BLANKS | CS_CSV_CR_ENDS, MAX_COLS);
     c->rows.max_line = MAX_LINE;
     int rc = next_line(c, &c->cols);
@@ -112,14 +114,14 @@ static int close_csv(csv *c, int rc) {
     return rc;
 }
 
-static int read_aps1(const char *dir, cs_validation_data *out, char *why, size_t size) {
+static int read_aps1(const char *dir, cs_validation_data *out, cs_error *err) {
     static const char *const columns[] = {
         "test", "source", "max_50ms_decel_g", "exit_speed_mph", "cable1_break_s", "cable2_break_s", NULL};
     static const char *const sources[2] = {"crash test", "paper simulation"};
     cs_crash_values *values[2] = {&out->aps1_test, &out->aps1_paper};
     int seen[2] = {0, 0}, rc;
     csv c;
-    if (open_csv(&c, dir, "aps1-crash-test.csv", columns, why, size) != 0) return close_csv(&c, -1);
+    if (open_csv(&c, dir, "aps1-crash-test.csv", columns, err) != 0) return close_csv(&c, -1);
     while ((rc = next_row(&c)) > 0) {
         if (strcmp(text(&c, 0), "APS1") != 0) continue; /* another test's */
         int s = strcmp(text(&c, 1), sources[0]) == 0 ? 0 : strcmp(text(&c, 1), sources[1]) == 0 ? 1 : -1;
@@ -138,7 +140,7 @@ static int read_aps1(const char *dir, cs_validation_data *out, char *why, size_t
     return close_csv(&c, rc);
 }
 
-static int read_bogie(const char *dir, cs_validation_data *out, char *why, size_t size) {
+static int read_bogie(const char *dir, cs_validation_data *out, cs_error *err) {
     static const char *const columns[] = {"test",
                                           "impact_speed_mph",
                                           "embedment_mm",
@@ -148,7 +150,7 @@ static int read_bogie(const char *dir, cs_validation_data *out, char *why, size_
                                           NULL};
     int n = 0, rc;
     csv c;
-    if (open_csv(&c, dir, "post-bogie-tests.csv", columns, why, size) != 0) return close_csv(&c, -1);
+    if (open_csv(&c, dir, "post-bogie-tests.csv", columns, err) != 0) return close_csv(&c, -1);
     while ((rc = next_row(&c)) > 0) {
         if (n == CS_BOGIE_TESTS)
             return close_csv(&c, fault(&c, 1, "more than %d tests (expected the paper's %d)", CS_BOGIE_TESTS,
@@ -172,7 +174,7 @@ static int read_bogie(const char *dir, cs_validation_data *out, char *why, size_
     return close_csv(&c, rc);
 }
 
-static int read_rig(const char *dir, cs_validation_data *out, char *why, size_t size) {
+static int read_rig(const char *dir, cs_validation_data *out, cs_error *err) {
     static const char *const columns[] = {"post_section",
                                           "flange_width_in",
                                           "bogie_mass_lb",
@@ -184,7 +186,7 @@ static int read_rig(const char *dir, cs_validation_data *out, char *why, size_t 
     double v[5];
     int rc;
     csv c;
-    if (open_csv(&c, dir, "bogie-rig.csv", columns, why, size) != 0) return close_csv(&c, -1);
+    if (open_csv(&c, dir, "bogie-rig.csv", columns, err) != 0) return close_csv(&c, -1);
     if ((rc = next_row(&c)) <= 0) return close_csv(&c, rc < 0 ? -1 : fault(&c, 0, "no row (expected one)"));
     if (strlen(text(&c, 0)) >= sizeof r->section)
         return close_csv(&c, fault(&c, c.rows.cell_col[c.want[0]],
@@ -208,13 +210,13 @@ static int read_rig(const char *dir, cs_validation_data *out, char *why, size_t 
     return close_csv(&c, 0);
 }
 
-static int read_eq21(const char *dir, cs_validation_data *out, char *why, size_t size) {
+static int read_eq21(const char *dir, cs_validation_data *out, cs_error *err) {
     static const char *const columns[] = {"footing_width_ft", "depth_ft",       "p_lb",
                                           "s1_psf",           "load_height_ft", NULL};
     int rc;
     csv c;
     out->eq21_count = 0;
-    if (open_csv(&c, dir, "eq21-table4.csv", columns, why, size) != 0) return close_csv(&c, -1);
+    if (open_csv(&c, dir, "eq21-table4.csv", columns, err) != 0) return close_csv(&c, -1);
     while ((rc = next_row(&c)) > 0) {
         if (out->eq21_count == CS_EQ21_MAX)
             return close_csv(&c, fault(&c, 1, "more than %d rows", CS_EQ21_MAX));
@@ -231,10 +233,12 @@ static int read_eq21(const char *dir, cs_validation_data *out, char *why, size_t
     return close_csv(&c, rc);
 }
 
-int cs_validation_read(const char *dir, cs_validation_data *out, char *why, size_t why_size) {
+cs_status cs_validation_read(const char *dir, cs_validation_data *out, cs_error *err) {
+    cs_error local;
+    if (!err) err = &local; /* the readers' status is err's */
     memset(out, 0, sizeof *out);
-    if (read_aps1(dir, out, why, why_size) != 0 || read_bogie(dir, out, why, why_size) != 0 ||
-        read_rig(dir, out, why, why_size) != 0 || read_eq21(dir, out, why, why_size) != 0)
-        return -1;
-    return 0;
+    if (read_aps1(dir, out, err) != 0 || read_bogie(dir, out, err) != 0 || read_rig(dir, out, err) != 0 ||
+        read_eq21(dir, out, err) != 0)
+        return err->status;
+    return CS_OK;
 }

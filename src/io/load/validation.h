@@ -8,6 +8,8 @@
 
 #include <stddef.h>
 
+#include "cablesim/sim.h"
+
 enum { CS_BOGIE_TESTS = 10, CS_EQ21_MAX = 16 };
 
 /* One crash test's response parameters: as measured, or as a simulation gave them. */
@@ -43,7 +45,9 @@ typedef struct cs_validation_data {
     int eq21_count;
 } cs_validation_data;
 
-/* Read the files of dir (data/validation). Returns 0, or -1 with why filled. */
-int cs_validation_read(const char *dir, cs_validation_data *out, char *why, size_t why_size);
+/* Read the files of dir (data/validation). CS_OK, or with err filled ("file:line:column: what and why")
+ * CS_ERR_IO (a file that cannot be opened), CS_ERR_INVALID (a value or row the file must not have) or
+ * CS_ERR_MEMORY. */
+cs_status cs_validation_read(const char *dir, cs_validation_data *out, cs_error *err);
 
 #endif

@@ -108,7 +108,7 @@ static void suite_free(cs_validate_suite *s) {
 /* A suite with its loader and the values it compares with (data/validation/, beside the loader's parts
  * library). NULL, the reason printed, if either cannot be had. */
 static cs_validate_suite *suite_create(const cs_validate_opts *o) {
-    char why[1600], data_dir[1100];
+    char data_dir[1100];
     cs_error err;
     cs_validate_suite *s = calloc(1, sizeof *s);
     if (!s || !(s->loader = cs_loader_create(NULL, &err))) {
@@ -124,8 +124,8 @@ static cs_validate_suite *suite_create(const cs_validate_opts *o) {
         return NULL;
     }
     snprintf(data_dir, sizeof data_dir, "%s/validation", cs_loader_data_dir(s->loader));
-    if (cs_validation_read(data_dir, &s->data, why, sizeof why) == 0) return s;
-    fprintf(o->err, "cablesim validate: %s\n", why);
+    if (cs_validation_read(data_dir, &s->data, &err) == CS_OK) return s;
+    fprintf(o->err, "cablesim validate: %s\n", err.message);
     suite_free(s);
     return NULL;
 }
