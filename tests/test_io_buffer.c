@@ -125,7 +125,8 @@ static void test_set_and_reset(void **state) {
 static void test_edit_as_set(void **state) {
     (void)state;
     size_t size, edited_size = 0;
-    char *text = slurp(CS_SOURCE_DIR "/examples/aps3.yaml", &size), why[256] = "";
+    char *text = slurp(CS_SOURCE_DIR "/examples/aps3.yaml", &size);
+    cs_error err;
     const char *sets[] = {"barrier.posts[0].spacing=6 ft",
                           "scenario.speed=35 mph",
                           "vehicle=M",
@@ -133,8 +134,8 @@ static void test_edit_as_set(void **state) {
                           "barrier.cables[1].pretension=7.5 kip",
                           "description=a: b, [c] # d \"e\""};
     int n = sizeof sets / sizeof sets[0];
-    char *edited = cs_yaml_edit(text, size, sets, n, &edited_size, why, sizeof why);
-    if (!edited) fail_msg("%s", why);
+    char *edited = cs_yaml_edit(text, size, sets, n, &edited_size, &err);
+    if (!edited) fail_msg("%s", err.message);
     assert_non_null(strstr(edited, "footing: {diameter: 9 in, depth: 4 ft, rotation_limit"));
     assert_non_null(strstr(edited, "# the intermediate anchor posts stand there")); /* comments kept */
     cs_loader *a = new_loader(), *b = new_loader();
@@ -150,11 +151,14 @@ static void test_edit_as_set(void **state) {
     free(edited);
     const char *missing[] = {"scenario.no_such_value=1"}, *collection[] = {"barrier.soil=1"},
                *twice[] = {"vehicle=M", "vehicle=S"};
-    assert_null(cs_yaml_edit(text, size, missing, 1, &edited_size, why, sizeof why));
-    assert_non_null(strstr(why, "scenario.no_such_value is not a single value written in the file"));
-    assert_null(cs_yaml_edit(text, size, collection, 1, &edited_size, why, sizeof why));
-    assert_null(cs_yaml_edit(text, size, twice, 2, &edited_size, why, sizeof why));
-    assert_non_null(strstr(why, "vehicle is set twice"));
+    assert_null(cs_yaml_edit(text, size, missing, 1, &edited_size, &err));
+    assert_int_equal(err.status, CS_ERR_INVALID);
+    assert_non_null(strstr(err.message, "scenario.no_such_value is not a single value written in the file"));
+    assert_null(cs_yaml_edit(text, size, collection, 1, &edited_size, &err));
+    assert_int_equal(err.status, CS_ERR_INVALID);
+    assert_null(cs_yaml_edit(text, size, twice, 2, &edited_size, &err));
+    assert_int_equal(err.status, CS_ERR_INVALID);
+    assert_non_null(strstr(err.message, "vehicle is set twice"));
     free(text);
 }
 

@@ -267,16 +267,16 @@ EMSCRIPTEN_KEEPALIVE const char *cs_web_edit(const char *path, const char *sets)
     fclose(in);
     if (!buf) return fail("out of memory");
     fclose(buf);
-    char *copy = strdup(sets), *line[64], why[512] = "";
+    char *copy = strdup(sets), *line[64];
+    cs_error err = {CS_ERR_MEMORY, "out of memory"};
     int n = copy ? split(copy, line, 64) : 0;
     size_t edited_size = 0;
-    if (n < 0) snprintf(why, sizeof why, "more than 64 values changed at once");
-    char *edited = copy && n >= 0
-                       ? cs_yaml_edit(text, size, (const char *const *)line, n, &edited_size, why, sizeof why)
-                       : NULL;
+    if (n < 0) cs_error_set(&err, CS_ERR_INVALID, "more than 64 values changed at once");
+    char *edited =
+        copy && n >= 0 ? cs_yaml_edit(text, size, (const char *const *)line, n, &edited_size, &err) : NULL;
     free(copy);
     free(text);
-    if (!edited) return fail(why[0] ? why : "out of memory");
+    if (!edited) return fail(err.message);
     json_object *yaml = cs_jstr(edited);
     free(edited);
     return succeeded("yaml", yaml);

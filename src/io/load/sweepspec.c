@@ -14,6 +14,7 @@
 
 #include "grow.h"
 #include "loader_int.h"
+#include "status.h"
 #include "sweepspec.h"
 #include "sweepspec_int.h"
 
@@ -265,35 +266,35 @@ static void check_shapes(cs_sweep_spec *s, const cs_ynode *root) {
 
 /* ---- model paths ---- */
 
-/* Walk the schema along a --set path to one value. 0 with v's kind filled, or -1 with why filled. */
-static int path_field(const char *path, cs_sweep_var *v, char *why, size_t why_size) {
+/* Walk the schema along a --set path to one value: CS_OK with v's kind filled, or CS_ERR_INVALID with err
+ * filled. */
+static cs_status path_field(const char *path, cs_sweep_var *v, cs_error *err) {
     cs_schema_place at;
     cs_schema_walk(path, &at);
     const cs_field *f = at.field;
     if (at.fault == CS_PATH_NEEDS_INDEX)
-        snprintf(why, why_size, "'%s' needs an index before '%s' (e.g. %s[0].%s)", f->key, at.key, f->key,
-                 at.key);
-    else if (at.fault == CS_PATH_UNKNOWN_KEY)
-        snprintf(why, why_size, "unknown key '%s'%s%s (expected a model path, as --set)", at.key,
-                 at.table ? " in " : "", at.table ? at.table->name : "");
-    else if (at.fault == CS_PATH_NO_LIST)
-        snprintf(why, why_size, "no list before [%ld] (expected a model path, as --set)", at.index);
-    else if (at.fault == CS_PATH_MALFORMED || !f)
-        snprintf(why, why_size, "malformed path (expected keys and [index], e.g. barrier.cables[0].height)");
-    if (at.fault != CS_PATH_OK || !f) return -1;
+        return cs_error_set(err, CS_ERR_INVALID, "'%s' needs an index before '%s' (e.g. %s[0].%s)", f->key,
+                            at.key, f->key, at.key);
+    if (at.fault == CS_PATH_UNKNOWN_KEY)
+        return cs_error_set(err, CS_ERR_INVALID, "unknown key '%s'%s%s (expected a model path, as --set)",
+                            at.key, at.table ? " in " : "", at.table ? at.table->name : "");
+    if (at.fault == CS_PATH_NO_LIST)
+        return cs_error_set(err, CS_ERR_INVALID, "no list before [%ld] (expected a model path, as --set)",
+                            at.index);
+    if (at.fault != CS_PATH_OK || !f)
+        return cs_error_set(err, CS_ERR_INVALID,
+                            "malformed path (expected keys and [index], e.g. barrier.cables[0].height)");
     int item = at.item;
     int one = f->kind == CS_F_QTY || f->kind == CS_F_INT || f->kind == CS_F_TEXT || f->kind == CS_F_ENUM ||
               f->kind == CS_F_PART || (f->kind == CS_F_LIST && item);
-    if (!one) {
-        snprintf(why, why_size, "'%s' is not a single value (expected a path to one value, as --set)",
-                 f->key);
-        return -1;
-    }
+    if (!one)
+        return cs_error_set(err, CS_ERR_INVALID,
+                            "'%s' is not a single value (expected a path to one value, as --set)", f->key);
     v->numeric = f->kind == CS_F_QTY || f->kind == CS_F_INT || f->kind == CS_F_LIST;
     v->integer = f->kind == CS_F_INT;
     v->q = f->kind == CS_F_INT ? CS_Q_NUMBER : f->q;
     v->unit = v->numeric ? cs_quantity_get(v->q)->label : "";
-    return 0;
+    return CS_OK;
 }
 
 /* ---- the spec ---- */
@@ -415,9 +416,9 @@ static void read_vary(cs_sweep_spec *s, cs_units *u, const cs_ynode *root) {
         cs_sweep_var *v = &s->vars[s->var_count++];
         v->line = e->key_line, v->col = e->key_col;
         if (!(v->path = strdup(e->key))) return;
-        char why[300];
-        if (path_field(v->path, v, why, sizeof why) != 0) {
-            cs_sweep_error(s, e->key_line, e->key_col, "vary: %s: %s", v->path, why);
+        cs_error err;
+        if (path_field(v->path, v, &err) != CS_OK) {
+            cs_sweep_error(s, e->key_line, e->key_col, "vary: %s: %s", v->path, err.message);
             continue;
         }
         if (!scalar_seq(e) && !scalar_map(e)) continue; /* its shape was reported */

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "status.h"
 #include "yamltree.h"
 
 typedef struct edit {
@@ -68,27 +69,24 @@ static int by_offset(const void *a, const void *b) {
     return x->from < y->from ? -1 : x->from > y->from;
 }
 
-/* Find each set's value in the tree of text into edits. Returns 0, or -1 with why filled. */
-static int locate(const cs_ytree *t, const char *text, size_t size, const char *const *sets, int count,
-                  edit *edits, char *why, size_t why_size) {
+/* Find each set's value in the tree of text into edits. CS_OK, or CS_ERR_INVALID with err filled. */
+static cs_status locate(const cs_ytree *t, const char *text, size_t size, const char *const *sets, int count,
+                        edit *edits, cs_error *err) {
     for (int i = 0; i < count; i++) {
         const char *eq = strchr(sets[i], '=');
         if (!eq || eq == sets[i]) {
-            snprintf(why, why_size, "'%s' is not PATH=VALUE", sets[i]);
-            return -1;
+            return cs_error_set(err, CS_ERR_INVALID, "'%s' is not PATH=VALUE", sets[i]);
         }
         char path[512];
         size_t plen = (size_t)(eq - sets[i]);
         if (plen >= sizeof path) {
-            snprintf(why, why_size, "the path of '%.40s...' is too long", sets[i]);
-            return -1;
+            return cs_error_set(err, CS_ERR_INVALID, "the path of '%.40s...' is too long", sets[i]);
         }
         memcpy(path, sets[i], plen);
         path[plen] = '\0';
         const cs_ynode *n = cs_ytree_find(t, path);
         if (!n || n->kind != CS_Y_SCALAR) {
-            snprintf(why, why_size, "%s is not a single value written in the file", path);
-            return -1;
+            return cs_error_set(err, CS_ERR_INVALID, "%s is not a single value written in the file", path);
         }
         edit *e = &edits[i];
         *e = (edit){offset_of(text, size, n->line, n->col),
@@ -98,51 +96,50 @@ static int locate(const cs_ytree *t, const char *text, size_t size, const char *
                     sets[i],
                     plen};
         if (e->from == (size_t)-1 || e->to == (size_t)-1 || e->to < e->from) {
-            snprintf(why, why_size, "%s: its place in the file is not found", path);
-            return -1;
+            return cs_error_set(err, CS_ERR_INVALID, "%s: its place in the file is not found", path);
         }
     }
     qsort(edits, (size_t)count, sizeof *edits, by_offset);
     for (int i = 1; i < count; i++)
         if (edits[i].from < edits[i - 1].to) {
-            snprintf(why, why_size, "%.*s is set twice", (int)edits[i].path_len, edits[i].path);
-            return -1;
+            return cs_error_set(err, CS_ERR_INVALID, "%.*s is set twice", (int)edits[i].path_len,
+                                edits[i].path);
         }
-    return 0;
+    return CS_OK;
 }
 
-/* Read back: every edited path holds its value. */
-static int check(const char *text, size_t size, const edit *edits, int count, char *why, size_t why_size) {
+/* Read back: every edited path holds its value. CS_OK, or CS_ERR_INVALID with err filled. */
+static cs_status check(const char *text, size_t size, const edit *edits, int count, cs_error *err) {
     cs_ytree t = {0};
-    int rc = cs_ytree_read(&t, NULL, text, size, 64);
-    for (int i = 0; rc == 0 && i < count; i++) {
+    cs_status rc = cs_ytree_read(&t, NULL, text, size, 64) == 0 ? CS_OK : CS_ERR_INVALID;
+    for (int i = 0; rc == CS_OK && i < count; i++) {
         char path[512];
         snprintf(path, sizeof path, "%.*s", (int)edits[i].path_len, edits[i].path);
         const cs_ynode *n = cs_ytree_find(&t, path);
         if (!n || n->kind != CS_Y_SCALAR || strlen(n->text) != edits[i].value_len ||
             memcmp(n->text, edits[i].value, edits[i].value_len) != 0) {
-            snprintf(why, why_size, "%s does not read back as '%.*s'", path, (int)edits[i].value_len,
-                     edits[i].value);
-            rc = -1;
+            rc = cs_error_set(err, CS_ERR_INVALID, "%s does not read back as '%.*s'", path,
+                              (int)edits[i].value_len, edits[i].value);
         }
     }
-    if (rc != 0 && t.error[0]) snprintf(why, why_size, "the edited file does not read: %s", t.error);
+    if (rc != CS_OK && t.error[0])
+        cs_error_set(err, CS_ERR_INVALID, "the edited file does not read: %s", t.error);
     cs_ytree_free(&t);
     return rc;
 }
 
 char *cs_yaml_edit(const char *text, size_t size, const char *const *sets, int count, size_t *out_size,
-                   char *why, size_t why_size) {
+                   cs_error *err) {
     cs_ytree t = {0};
     edit *edits = calloc((size_t)(count > 0 ? count : 1), sizeof *edits);
     char *out = NULL;
     if (!edits) {
-        snprintf(why, why_size, "out of memory");
+        cs_out_of_memory(err);
         return NULL;
     }
     if (cs_ytree_read(&t, NULL, text, size, 64) != 0) {
-        snprintf(why, why_size, "%d:%d: %s", t.error_line, t.error_col, t.error);
-    } else if (locate(&t, text, size, sets, count, edits, why, why_size) == 0) {
+        cs_error_set(err, CS_ERR_INVALID, "%d:%d: %s", t.error_line, t.error_col, t.error);
+    } else if (locate(&t, text, size, sets, count, edits, err) == CS_OK) {
         size_t cap = size + 1;
         for (int i = 0; i < count; i++)
             cap += edits[i].value_len * 4 + 2;
@@ -153,7 +150,7 @@ char *cs_yaml_edit(const char *text, size_t size, const char *const *sets, int c
                 k += edits[i].from - at;
                 int n = write_value(out + k, cap - k, edits[i].value, edits[i].value_len);
                 if (n < 0) {
-                    snprintf(why, why_size, "no room for a value");
+                    cs_error_set(err, CS_ERR_MEMORY, "no room for a value");
                     free(out), out = NULL;
                 } else {
                     k += (size_t)n;
@@ -165,10 +162,10 @@ char *cs_yaml_edit(const char *text, size_t size, const char *const *sets, int c
                 k += size - at;
                 out[k] = '\0';
                 *out_size = k;
-                if (check(out, k, edits, count, why, why_size) != 0) free(out), out = NULL;
+                if (check(out, k, edits, count, err) != CS_OK) free(out), out = NULL;
             }
         } else {
-            snprintf(why, why_size, "out of memory");
+            cs_out_of_memory(err);
         }
     }
     cs_ytree_free(&t);
