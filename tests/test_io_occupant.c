@@ -82,8 +82,8 @@ static void constant_deceleration(void **state) {
     const double dt = 1e-4, a = 10 * G, b = 3 * G;
     motion mo = constant_motion(5000, dt, -a, b, 0.0, 0.0); /* 0.5 s */
     cs_occupant_risk o;
-    char why[200];
-    assert_int_equal(cs_occupant_risk_compute(&mo.m, &rules, &o, why, sizeof why), 0);
+    cs_error err;
+    assert_int_equal(cs_occupant_risk_compute(&mo.m, &rules, &o, &err), CS_OK);
     /* x reaches 0.6 m first: t = sqrt(2 0.6 / a); the lateral 0.3 m would take sqrt(2 0.3 / b) */
     double t = sqrt(2 * 0.6 / a);
     assert_true(t < sqrt(2 * 0.3 / b));
@@ -102,7 +102,7 @@ static void constant_deceleration(void **state) {
 
     /* lateral first: 8 g across, 2 g along */
     mo = constant_motion(5000, dt, -2 * G, -8 * G, 0.0, 0.0);
-    assert_int_equal(cs_occupant_risk_compute(&mo.m, &rules, &o, why, sizeof why), 0);
+    assert_int_equal(cs_occupant_risk_compute(&mo.m, &rules, &o, &err), CS_OK);
     t = sqrt(2 * 0.3 / (8 * G));
     CHECK_REL(o.t_impact, t, 1e-4);
     CHECK_REL(o.oiv_y, 8 * G * t, 1e-4);
@@ -116,8 +116,8 @@ static void impact_after_the_record(void **state) {
     const double dt = 1e-4, a = 10 * G, tau = 0.05;
     motion mo = constant_motion((int)lround(tau / dt) + 1, dt, -a, 0.0, 0.0, 0.0);
     cs_occupant_risk o;
-    char why[200];
-    assert_int_equal(cs_occupant_risk_compute(&mo.m, &rules, &o, why, sizeof why), 0);
+    cs_error err;
+    assert_int_equal(cs_occupant_risk_compute(&mo.m, &rules, &o, &err), CS_OK);
     /* at the end: v = a tau, d = a tau^2 / 2, then 0.6 m reached at v held */
     double v = a * tau, d = 0.5 * a * tau * tau;
     assert_int_equal(o.impact, CS_FLAIL_AFTER_RECORD);
@@ -127,7 +127,7 @@ static void impact_after_the_record(void **state) {
     free(mo.buf);
     /* no relative motion at all: no impact */
     mo = constant_motion(100, dt, 0.0, 0.0, 0.0, 0.0);
-    assert_int_equal(cs_occupant_risk_compute(&mo.m, &rules, &o, why, sizeof why), 0);
+    assert_int_equal(cs_occupant_risk_compute(&mo.m, &rules, &o, &err), CS_OK);
     assert_int_equal(o.impact, CS_FLAIL_NONE);
     assert_int_equal(o.thiv_impact, CS_FLAIL_NONE);
     free(mo.buf);
@@ -146,8 +146,8 @@ static void thiv_on_a_circle(void **state) {
     const double dt = 1e-4, V = 100 / 3.6, R = 40.0;
     motion mo = constant_motion(8000, dt, 0.0, V * V / R, 0.0, V / R);
     cs_occupant_risk o;
-    char why[200];
-    assert_int_equal(cs_occupant_risk_compute(&mo.m, &rules, &o, why, sizeof why), 0);
+    cs_error err;
+    assert_int_equal(cs_occupant_risk_compute(&mo.m, &rules, &o, &err), CS_OK);
     /* the closed form's first time at |b_x| = 0.6 or |b_y| = 0.3, by bisection */
     double lo = 0, hi = 0.8, b[2];
     for (int k = 0; k < 100; k++) {
@@ -178,13 +178,13 @@ static void asi_constant(void **state) {
     cs_occupant_rules rules = cs_default_occupant_rules();
     motion mo = constant_motion(2000, 1e-4, 6 * G, -4.5 * G, 5 * G, 0.0);
     cs_occupant_risk o;
-    char why[200];
-    assert_int_equal(cs_occupant_risk_compute(&mo.m, &rules, &o, why, sizeof why), 0);
+    cs_error err;
+    assert_int_equal(cs_occupant_risk_compute(&mo.m, &rules, &o, &err), CS_OK);
     CHECK_REL(o.asi, sqrt(3 * 0.25), 1e-9); /* 6/12, 4.5/9, 5/10 */
     free(mo.buf);
     /* one direction at its limit: ASI 1 */
     mo = constant_motion(2000, 1e-4, 0.0, 9 * G, 0.0, 0.0);
-    assert_int_equal(cs_occupant_risk_compute(&mo.m, &rules, &o, why, sizeof why), 0);
+    assert_int_equal(cs_occupant_risk_compute(&mo.m, &rules, &o, &err), CS_OK);
     CHECK_REL(o.asi, 1.0, 1e-9);
     free(mo.buf);
 }
@@ -212,13 +212,13 @@ static void bad_motion(void **state) {
     motion mo = constant_motion(100, 1e-4, 1.0, 0.0, 0.0, 0.0);
     mo.buf[50] = NAN;
     cs_occupant_risk o;
-    char why[200];
-    assert_int_equal(cs_occupant_risk_compute(&mo.m, &rules, &o, why, sizeof why), -1);
-    assert_non_null(strstr(why, "not finite"));
+    cs_error err;
+    assert_int_equal(cs_occupant_risk_compute(&mo.m, &rules, &o, &err), CS_ERR_INVALID);
+    assert_non_null(strstr(err.message, "not finite"));
     mo.buf[50] = 1.0;
     mo.m.dt = 0.01; /* 100 Hz: too coarse for CFC 180 */
-    assert_int_equal(cs_occupant_risk_compute(&mo.m, &rules, &o, why, sizeof why), -1);
-    assert_non_null(strstr(why, "too long"));
+    assert_int_equal(cs_occupant_risk_compute(&mo.m, &rules, &o, &err), CS_ERR_INVALID);
+    assert_non_null(strstr(err.message, "too long"));
     free(mo.buf);
 }
 
@@ -251,8 +251,8 @@ static void motion_of_a_record(void **state) {
     }
     cs_record rec = record_of(frames, FRAMES);
     cs_vehicle_motion m;
-    char why[200];
-    assert_int_equal(cs_vehicle_motion_of_record(&rec, 0.1, 1e-4, NULL, &m, why, sizeof why), 0);
+    cs_error err;
+    assert_int_equal(cs_vehicle_motion_of_record(&rec, 0.1, 1e-4, NULL, &m, &err), CS_OK);
     assert_int_equal(m.n, 4001); /* 0.4 s after the contact, every 0.1 ms */
     for (int i = 0; i < m.n; i += 97) {
         CHECK_REL(m.ax[i], bx, 1e-12);
@@ -261,7 +261,7 @@ static void motion_of_a_record(void **state) {
     }
     free((void *)m.ax);
     cs_occupant_risk o;
-    assert_int_equal(cs_occupant_risk_of_run(&rec, 0.1, NULL, &o, why, sizeof why), 0);
+    assert_int_equal(cs_occupant_risk_for_run(&rec, 0.1, NULL, &o, &err), CS_OK);
     double t = sqrt(2 * 0.6 / (8 * G));
     CHECK_REL(o.t_impact, t, 1e-4);
     CHECK_REL(o.oiv_x, 8 * G * t, 1e-4);
@@ -272,10 +272,10 @@ static void motion_of_a_record(void **state) {
     CHECK_REL(roll_peak, roll, 1e-12);
     CHECK_ABS(pitch_peak, 0.0, 0.0);
     /* no contact, or none before the end: refused with the reason */
-    assert_int_equal(cs_occupant_risk_of_run(&rec, -1.0, NULL, &o, why, sizeof why), -1);
-    assert_non_null(strstr(why, "never touched"));
-    assert_int_equal(cs_occupant_risk_of_run(&rec, 0.5, NULL, &o, why, sizeof why), -1);
-    assert_non_null(strstr(why, "no motion after the first contact"));
+    assert_int_equal(cs_occupant_risk_for_run(&rec, -1.0, NULL, &o, &err), CS_ERR_INVALID);
+    assert_non_null(strstr(err.message, "never touched"));
+    assert_int_equal(cs_occupant_risk_for_run(&rec, 0.5, NULL, &o, &err), CS_ERR_INVALID);
+    assert_non_null(strstr(err.message, "no motion after the first contact"));
 }
 
 /* At a point r from the CG of a body turning about its vertical axis with yaw rate w = w0 + alpha t and
@@ -293,8 +293,8 @@ static void motion_at_a_point(void **state) {
     }
     cs_record rec = record_of(frames, FRAMES);
     cs_vehicle_motion m;
-    char why[200];
-    assert_int_equal(cs_vehicle_motion_of_record(&rec, 0.0, 1e-4, r, &m, why, sizeof why), 0);
+    cs_error err;
+    assert_int_equal(cs_vehicle_motion_of_record(&rec, 0.0, 1e-4, r, &m, &err), CS_OK);
     for (int i = 0; i < m.n; i += 101) {
         double t = i * m.dt, w = w0 + alpha * t;
         /* linear in t between frames, w^2 is not: within (1 ms)^2 alpha^2 / 4 of the closed form */

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "cablesim/units.h"
+#include "status.h"
 
 cs_occupant_rules cs_default_occupant_rules(void) {
     cs_occupant_rules r;
@@ -226,32 +227,29 @@ static void asi(const double *a[3], int n, double dt, const cs_occupant_rules *r
     }
 }
 
-/* The motion's checks, then its accelerations filtered into f[0..2] (each may be its own series). Returns
- * 0, or -1 with why filled. */
-static int filter_motion(const cs_vehicle_motion *m, const cs_occupant_rules *rules, double *f[3], char *why,
-                         size_t why_size) {
+/* The motion's checks, then its accelerations filtered into f[0..2] (each may be its own series). */
+static cs_status filter_motion(const cs_vehicle_motion *m, const cs_occupant_rules *rules, double *f[3],
+                               cs_error *err) {
     int n = m->n;
     const double *in[4] = {m->ax, m->ay, m->az, m->yaw_rate};
     for (int k = 0; k < 4; k++)
         for (int i = 0; i < n; i++)
-            if (!isfinite(in[k][i])) {
-                snprintf(why, why_size, "the vehicle's motion is not finite at t = %g s (series %d)",
-                         i * m->dt, k);
-                return -1;
-            }
+            if (!isfinite(in[k][i]))
+                return cs_error_set(err, CS_ERR_INVALID,
+                                    "the vehicle's motion is not finite at t = %g s (series %d)", i * m->dt,
+                                    k);
     for (int k = 0; k < 3; k++)
-        if (cs_cfc_filter(rules->cfc, m->dt, in[k], f[k], n) != 0) {
-            snprintf(why, why_size, "a sample interval of %g s is too long for a CFC %g filter", m->dt,
-                     rules->cfc);
-            return -1;
-        }
-    return 0;
+        if (cs_cfc_filter(rules->cfc, m->dt, in[k], f[k], n) != 0)
+            return cs_error_set(err, CS_ERR_INVALID,
+                                "a sample interval of %g s is too long for a CFC %g filter", m->dt,
+                                rules->cfc);
+    return CS_OK;
 }
 
-static int too_few(const cs_vehicle_motion *m, char *why, size_t why_size) {
-    if (m->n >= 2 && m->dt > 0.0) return 0;
-    snprintf(why, why_size, "the vehicle's motion has %d samples: at least 2 are needed", m->n);
-    return -1;
+static cs_status too_few(const cs_vehicle_motion *m, cs_error *err) {
+    if (m->n >= 2 && m->dt > 0.0) return CS_OK;
+    return cs_error_set(err, CS_ERR_INVALID, "the vehicle's motion has %d samples: at least 2 are needed",
+                        m->n);
 }
 
 /* The risk of a motion whose accelerations are filtered already. */
@@ -263,19 +261,18 @@ static void risk_of_filtered(const cs_vehicle_motion *f, const cs_occupant_rules
     asi(a, f->n, f->dt, rules, out);
 }
 
-int cs_occupant_risk_compute(const cs_vehicle_motion *m, const cs_occupant_rules *rules,
-                             cs_occupant_risk *out, char *why, size_t why_size) {
+cs_status cs_occupant_risk_compute(const cs_vehicle_motion *m, const cs_occupant_rules *rules,
+                                   cs_occupant_risk *out, cs_error *err) {
     memset(out, 0, sizeof *out);
-    if (too_few(m, why, why_size) != 0) return -1;
+    cs_status rc = too_few(m, err);
+    if (rc != CS_OK) return rc;
     int n = m->n;
     double *buf = malloc((size_t)n * 3 * sizeof *buf);
-    if (!buf) {
-        snprintf(why, why_size, "out of memory for the occupant risk (%d samples)", n);
-        return -1;
-    }
+    if (!buf) return cs_error_set(err, CS_ERR_MEMORY, "out of memory for the occupant risk (%d samples)", n);
     double *f[3] = {buf, buf + n, buf + 2 * n};
-    int rc = filter_motion(m, rules, f, why, why_size);
-    if (rc == 0) risk_of_filtered(&(cs_vehicle_motion){n, m->dt, f[0], f[1], f[2], m->yaw_rate}, rules, out);
+    rc = filter_motion(m, rules, f, err);
+    if (rc == CS_OK)
+        risk_of_filtered(&(cs_vehicle_motion){n, m->dt, f[0], f[1], f[2], m->yaw_rate}, rules, out);
     free(buf);
     return rc;
 }
@@ -314,25 +311,22 @@ static void frame_acceleration(const cs_record *rec, int i, const double *r, dou
         b[k] += ar[k] + wwr[k];
 }
 
-int cs_vehicle_motion_of_record(const cs_record *rec, double t_contact, double dt, const double *point,
-                                cs_vehicle_motion *m, char *why, size_t why_size) {
+cs_status cs_vehicle_motion_of_record(const cs_record *rec, double t_contact, double dt, const double *point,
+                                      cs_vehicle_motion *m, cs_error *err) {
     memset(m, 0, sizeof *m);
     int frames = cs_record_frame_count(rec);
     double t_last = frames > 0 ? cs_record_vehicle(rec, frames - 1)->t : -1.0;
-    if (frames < 2 || t_contact < 0.0 || t_last <= t_contact) {
-        snprintf(why, why_size, "%s",
-                 t_contact < 0.0 ? "the vehicle never touched the barrier"
-                                 : "the record has no motion after the first contact");
-        return -1;
-    }
+    if (frames < 2 || t_contact < 0.0 || t_last <= t_contact)
+        return cs_error_set(err, CS_ERR_INVALID, "%s",
+                            t_contact < 0.0 ? "the vehicle never touched the barrier"
+                                            : "the record has no motion after the first contact");
     int n = (int)floor((t_last - t_contact) / dt + 1e-9) + 1;
     double *buf = malloc((size_t)n * 4 * sizeof *buf);
     double *body = malloc((size_t)frames * 3 * sizeof *body); /* each frame's, found once */
     if (!buf || !body) {
         free(buf);
         free(body);
-        snprintf(why, why_size, "out of memory for the vehicle's motion (%d samples)", n);
-        return -1;
+        return cs_error_set(err, CS_ERR_MEMORY, "out of memory for the vehicle's motion (%d samples)", n);
     }
     double *ax = buf, *ay = buf + n, *az = buf + 2 * n, *r = buf + 3 * n;
     int j = 0, found = 0; /* the frame at or before the sample; the frames whose acceleration is found */
@@ -353,7 +347,7 @@ int cs_vehicle_motion_of_record(const cs_record *rec, double t_contact, double d
     }
     free(body);
     *m = (cs_vehicle_motion){n, dt, ax, ay, az, r};
-    return 0;
+    return CS_OK;
 }
 
 void cs_record_roll_pitch_peaks(const cs_record *rec, double *roll, double *pitch) {
@@ -365,16 +359,24 @@ void cs_record_roll_pitch_peaks(const cs_record *rec, double *roll, double *pitc
     }
 }
 
-int cs_occupant_risk_of_run(const cs_record *rec, double t_contact, const double *point,
-                            cs_occupant_risk *out, char *why, size_t why_size) {
+cs_status cs_occupant_risk_for_run(const cs_record *rec, double t_contact, const double *point,
+                                   cs_occupant_risk *out, cs_error *err) {
     cs_vehicle_motion m;
-    if (cs_vehicle_motion_of_record(rec, t_contact, 1e-4, point, &m, why, why_size) != 0) return -1;
+    cs_status rc = cs_vehicle_motion_of_record(rec, t_contact, 1e-4, point, &m, err);
+    if (rc != CS_OK) return rc;
     cs_occupant_rules rules = cs_default_occupant_rules();
     /* the motion's arrays are this function's own (one block from m.ax): filtered in place */
     double *own = (double *)m.ax, *f[3] = {own, own + m.n, own + 2 * m.n};
     memset(out, 0, sizeof *out);
-    int rc = too_few(&m, why, why_size) == 0 ? filter_motion(&m, &rules, f, why, why_size) : -1;
-    if (rc == 0) risk_of_filtered(&m, &rules, out);
+    rc = too_few(&m, err);
+    if (rc == CS_OK) rc = filter_motion(&m, &rules, f, err);
+    if (rc == CS_OK) risk_of_filtered(&m, &rules, out);
     free(own);
     return rc;
+}
+
+int cs_occupant_risk_of_run(const cs_record *rec, double t_contact, const double *point,
+                            cs_occupant_risk *out, char *why, size_t why_size) {
+    cs_error err;
+    return cs_status_why(cs_occupant_risk_for_run(rec, t_contact, point, out, &err), &err, why, why_size);
 }

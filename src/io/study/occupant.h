@@ -78,25 +78,30 @@ typedef struct cs_occupant_risk {
     double t_asi;  /* start of its window, s */
 } cs_occupant_risk;
 
-/* Occupant risk of a motion. Returns 0, or -1 with why filled (too few samples, a non-finite sample, an
- * interval too long for the filter). */
-int cs_occupant_risk_compute(const cs_vehicle_motion *m, const cs_occupant_rules *rules,
-                             cs_occupant_risk *out, char *why, size_t why_size);
+/* Occupant risk of a motion. CS_OK, or with err filled CS_ERR_INVALID (too few samples, a non-finite
+ * sample, an interval too long for the filter) or CS_ERR_MEMORY. */
+cs_status cs_occupant_risk_compute(const cs_vehicle_motion *m, const cs_occupant_rules *rules,
+                                   cs_occupant_risk *out, cs_error *err);
 
 /* The vehicle's motion of a run's record from its first contact (t_contact, s), resampled every dt by
  * linear interpolation, into arrays the caller frees with free(m->ax) (one block). Accelerations from the
  * world frame into the vehicle's by its roll, pitch and yaw; at point (x forward, y left, z up from the
  * CG in the vehicle's axes, m; NULL: the CG) the rigid body's a + alpha x r + omega x (omega x r), alpha
- * the change of the body-frame angular velocity between the frames either side. Returns 0, or -1 with
- * why filled (no frame at or after the contact, memory). */
-int cs_vehicle_motion_of_record(const cs_record *rec, double t_contact, double dt, const double *point,
-                                cs_vehicle_motion *m, char *why, size_t why_size);
+ * the change of the body-frame angular velocity between the frames either side. CS_OK, or with err filled
+ * CS_ERR_INVALID (no contact, no frame after it) or CS_ERR_MEMORY. */
+cs_status cs_vehicle_motion_of_record(const cs_record *rec, double t_contact, double dt, const double *point,
+                                      cs_vehicle_motion *m, cs_error *err);
 
 /* The largest |roll| and |pitch| of a record, rad. */
 void cs_record_roll_pitch_peaks(const cs_record *rec, double *roll, double *pitch);
 
 /* Occupant risk of a run (its record and first contact time) at point (NULL: the CG) with the default
- * rules, resampled at 0.1 ms. Returns 0; -1 with why filled (no contact: why says so). */
+ * rules, resampled at 0.1 ms. CS_OK, or as cs_vehicle_motion_of_record and cs_occupant_risk_compute (no
+ * contact: the message says so). */
+cs_status cs_occupant_risk_for_run(const cs_record *rec, double t_contact, const double *point,
+                                   cs_occupant_risk *out, cs_error *err);
+/* cs_occupant_risk_for_run in the writers' form (src/io/status.h, cs_status_why): 0, or -1 with why
+ * filled. */
 int cs_occupant_risk_of_run(const cs_record *rec, double t_contact, const double *point,
                             cs_occupant_risk *out, char *why, size_t why_size);
 
