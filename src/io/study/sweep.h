@@ -50,8 +50,8 @@ typedef struct cs_sweep_result {
 } cs_sweep_result;
 
 /* A loader for the spec's runs: it may read the model's files from the folders of spec->allow. NULL
- * with why filled when memory is short or the unit database cannot be read. */
-cs_loader *cs_sweep_loader(const cs_sweep_spec *spec, char *why, size_t why_size);
+ * with err filled when memory is short (CS_ERR_MEMORY) or the unit database cannot be read (CS_ERR_IO). */
+cs_loader *cs_sweep_loader(const cs_sweep_spec *spec, cs_error *err);
 /* One run with inputs xrow (var_count values): load (on loader, reset first; NULL: a loader of its
  * own), build, run, rate. Safe to call from several threads at once, each with its own loader. */
 void cs_sweep_run(const cs_sweep_spec *spec, const double *xrow, cs_loader *loader, cs_sweep_result *r);

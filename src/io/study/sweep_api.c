@@ -18,46 +18,49 @@ cs_sweep_ranks_def cs_default_sweep_ranks(void) {
     return (cs_sweep_ranks_def){.size = sizeof(cs_sweep_ranks_def), .rank = 0, .ranks = 1};
 }
 
-/* The def's ranks into o->ranks (to their size): "" , or why they cannot be taken into why. */
-static void ranks_of(const cs_sweep_def *def, cs_sweep_options *o, char *why, size_t size) {
+/* The def's ranks into o->ranks (to their size): CS_OK, or CS_ERR_INVALID with err filled saying why they
+ * cannot be taken. */
+static cs_status ranks_of(const cs_sweep_def *def, cs_sweep_options *o, cs_error *err) {
     o->ranks = cs_default_sweep_ranks();
-    cs_error err;
+    cs_error taken;
     if (def->ranks &&
-        cs_sized_take(&o->ranks, sizeof o->ranks, def->ranks, "cs_sweep_ranks_def", &err) != CS_OK)
-        snprintf(why, size, "%.150s", err.message);
-    else if (o->ranks.ranks < 1 || o->ranks.rank < 0 || o->ranks.rank >= o->ranks.ranks)
-        snprintf(why, size, "cs_sweep_ranks_def: rank %d of %d ranks", o->ranks.rank, o->ranks.ranks);
-    else if (o->ranks.ranks > 1 &&
-             !(o->ranks.share && o->ranks.largest && o->ranks.receive_start && o->ranks.receive_end &&
-               o->ranks.send_run && o->ranks.send_done && o->ranks.abort))
-        snprintf(why, size, "cs_sweep_ranks_def: %d ranks without every hook", o->ranks.ranks);
+        cs_sized_take(&o->ranks, sizeof o->ranks, def->ranks, "cs_sweep_ranks_def", &taken) != CS_OK)
+        return cs_error_set(err, CS_ERR_INVALID, "%.150s", taken.message);
+    if (o->ranks.ranks < 1 || o->ranks.rank < 0 || o->ranks.rank >= o->ranks.ranks)
+        return cs_error_set(err, CS_ERR_INVALID, "cs_sweep_ranks_def: rank %d of %d ranks", o->ranks.rank,
+                            o->ranks.ranks);
+    if (o->ranks.ranks > 1 &&
+        !(o->ranks.share && o->ranks.largest && o->ranks.receive_start && o->ranks.receive_end &&
+          o->ranks.send_run && o->ranks.send_done && o->ranks.abort))
+        return cs_error_set(err, CS_ERR_INVALID, "cs_sweep_ranks_def: %d ranks without every hook",
+                            o->ranks.ranks);
+    return CS_OK;
 }
 
 cs_status cs_sweep_options_of(const cs_sweep_def *given, cs_sweep_options *o, cs_error *err) {
     cs_sweep_def def = cs_default_sweep_def();
     if (cs_sized_take(&def, sizeof def, given, "cs_sweep_def", err) != CS_OK) return CS_ERR_INVALID;
     memset(o, 0, sizeof *o);
-    char why[160] = "";
     if (def.set_count < 0 || def.set_count > CS_SWEEP_MAX_SETS || (def.set_count > 0 && !def.sets))
-        snprintf(why, sizeof why, "cs_sweep_def: %d sets, where at most %d are taken", def.set_count,
-                 CS_SWEEP_MAX_SETS);
-    else if (def.allow_count < 0 || def.allow_count > CS_SWEEP_MAX_ALLOW ||
-             (def.allow_count > 0 && !def.allow))
-        snprintf(why, sizeof why, "cs_sweep_def: %d folders to allow, where at most %d are taken",
-                 def.allow_count, CS_SWEEP_MAX_ALLOW);
-    else if (def.runs < 0 || def.runs > CS_SWEEP_MAX_RUNS)
-        snprintf(why, sizeof why, "cs_sweep_def: %ld runs, where 1 to %ld are taken", def.runs,
-                 (long)CS_SWEEP_MAX_RUNS);
-    else if (!def.spec == !def.resume)
-        snprintf(why, sizeof why, "cs_sweep_def: %s", def.spec ? "a spec and a folder to resume" : "no spec");
-    else if (def.resume &&
-             (def.out_dir || def.runs || def.seed || def.set_count || def.allow_count || def.netcdf))
-        snprintf(why, sizeof why,
-                 "cs_sweep_def: a folder to resume takes its study as its summary.json records it: no "
-                 "out_dir, runs, seed, sets, allow or netcdf");
-    else
-        ranks_of(&def, o, why, sizeof why);
-    if (why[0]) return cs_status_set(err, CS_ERR_INVALID, why);
+        return cs_error_set(err, CS_ERR_INVALID, "cs_sweep_def: %d sets, where at most %d are taken",
+                            def.set_count, CS_SWEEP_MAX_SETS);
+    if (def.allow_count < 0 || def.allow_count > CS_SWEEP_MAX_ALLOW || (def.allow_count > 0 && !def.allow))
+        return cs_error_set(err, CS_ERR_INVALID,
+                            "cs_sweep_def: %d folders to allow, where at most %d are taken", def.allow_count,
+                            CS_SWEEP_MAX_ALLOW);
+    if (def.runs < 0 || def.runs > CS_SWEEP_MAX_RUNS)
+        return cs_error_set(err, CS_ERR_INVALID, "cs_sweep_def: %ld runs, where 1 to %ld are taken", def.runs,
+                            (long)CS_SWEEP_MAX_RUNS);
+    if (!def.spec == !def.resume)
+        return cs_error_set(err, CS_ERR_INVALID, "cs_sweep_def: %s",
+                            def.spec ? "a spec and a folder to resume" : "no spec");
+    if (def.resume && (def.out_dir || def.runs || def.seed || def.set_count || def.allow_count || def.netcdf))
+        return cs_error_set(
+            err, CS_ERR_INVALID,
+            "cs_sweep_def: a folder to resume takes its study as its summary.json records it: "
+            "no out_dir, runs, seed, sets, allow or netcdf");
+    cs_status rc = ranks_of(&def, o, err);
+    if (rc != CS_OK) return rc;
     o->spec = def.spec, o->out_dir = def.out_dir, o->resume = def.resume;
     o->threads = def.threads, o->parallel = def.parallel;
     o->netcdf = def.netcdf, o->force = def.force;

@@ -36,10 +36,8 @@ static int load_run(cs_loader *l, const cs_sweep_spec *s, const double *xrow, in
     return cs_loader_load(l, s->model, in);
 }
 
-cs_loader *cs_sweep_loader(const cs_sweep_spec *s, char *why, size_t why_size) {
-    cs_error err;
-    cs_loader *l = cs_loader_create(NULL, &err);
-    if (!l) snprintf(why, why_size, "%s", err.message);
+cs_loader *cs_sweep_loader(const cs_sweep_spec *s, cs_error *err) {
+    cs_loader *l = cs_loader_create(NULL, err);
     for (int i = 0; l && i < s->allow.count; i++)
         cs_loader_allow_path(l, s->allow.dirs[i], NULL); /* canonical folders: each is one */
     return l;
@@ -48,12 +46,12 @@ cs_loader *cs_sweep_loader(const cs_sweep_spec *s, char *why, size_t why_size) {
 void cs_sweep_run(const cs_sweep_spec *s, const double *xrow, cs_loader *loader, cs_sweep_result *r) {
     memset(r, 0, sizeof *r);
     snprintf(r->rating, sizeof r->rating, "none");
-    char why[256];
-    cs_loader *l = loader ? loader : cs_sweep_loader(s, why, sizeof why);
+    cs_error err = {0};
+    cs_loader *l = loader ? loader : cs_sweep_loader(s, &err);
     if (loader) cs_loader_reuse(loader); /* the model file and the library are parsed once per loader */
     if (!l) {
         r->status = CS_RUN_BAD_MODEL;
-        snprintf(r->error, sizeof r->error, "%s", why);
+        snprintf(r->error, sizeof r->error, "%s", err.message);
         return;
     }
     cs_model_input in = {.size = sizeof in};
@@ -68,7 +66,6 @@ void cs_sweep_run(const cs_sweep_spec *s, const double *xrow, cs_loader *loader,
     cs_vehicle_def vehicle = in.vehicle;
     double speed = in.scenario.speed, angle = in.scenario.angle;
     if (!loader) cs_loader_free(l);
-    cs_error err = {0};
     cs_state *state = cs_state_create(m, &err);
     if (!state) {
         r->status = CS_RUN_FAILED;
@@ -137,10 +134,10 @@ static void map_errors(cs_sweep_spec *s, cs_loader *l, const double *xrow, int v
 }
 
 static int check_one(cs_sweep_spec *s, const double *xrow, int var, double x_var, int line, int col) {
-    char why[256];
-    cs_loader *l = cs_sweep_loader(s, why, sizeof why);
+    cs_error err;
+    cs_loader *l = cs_sweep_loader(s, &err);
     if (!l) {
-        cs_sweep_error(s, 0, 0, "%s", why);
+        cs_sweep_error(s, 0, 0, "%s", err.message);
         return -1;
     }
     cs_model_input in = {.size = sizeof in};
@@ -165,8 +162,7 @@ int cs_sweep_check(cs_sweep_spec *s, const double *x) {
 }
 
 int cs_sweep_model_hash(const cs_sweep_spec *s, unsigned long long *hash) {
-    char why[256];
-    cs_loader *l = cs_sweep_loader(s, why, sizeof why);
+    cs_loader *l = cs_sweep_loader(s, NULL);
     if (!l) return -1;
     for (int k = 0; k < s->set_count; k++)
         cs_loader_set(l, s->sets[k]);

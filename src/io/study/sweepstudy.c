@@ -297,8 +297,7 @@ typedef struct runner {
 static void run_worker(void *arg) {
     runner *w = arg;
     int rank = w->ranks->rank, size = w->ranks->ranks;
-    char why[256];
-    cs_loader *loader = cs_sweep_loader(w->spec, why, sizeof why); /* one per thread (NULL: one per run) */
+    cs_loader *loader = cs_sweep_loader(w->spec, NULL); /* one per thread (NULL: one per run) */
     for (;;) {
         pthread_mutex_lock(&w->lock);
         long m = w->next++;
