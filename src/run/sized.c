@@ -79,19 +79,15 @@ static const kind barrier_kind = {sizeof(cs_barrier_def),
                                    {offsetof(cs_barrier_def, end_anchor), &anchor_kind, "end anchor"}}};
 
 static int bad(cs_error *err, const char *what, const kind *k, size_t given) {
-    if (err) {
-        err->status = CS_ERR_INVALID;
-        if (given < sizeof given)
-            snprintf(err->message, sizeof err->message,
-                     "%s: size %zu: start it from cs_default_%s(), which sets its size", what, given,
-                     k->name);
-        else
-            snprintf(
-                err->message, sizeof err->message,
-                "%s: size %zu, where this library's is %zu: a program built for a later cablesim, or not "
-                "started from cs_default_%s()",
-                what, given, k->size, k->name);
-    }
+    if (given < sizeof given)
+        cs_error_set(err, CS_ERR_INVALID, "%s: size %zu: start it from cs_default_%s(), which sets its size",
+                     what, given, k->name);
+    else
+        cs_error_set(
+            err, CS_ERR_INVALID,
+            "%s: size %zu, where this library's is %zu: a program built for a later cablesim, or not "
+            "started from cs_default_%s()",
+            what, given, k->size, k->name);
     return -1;
 }
 
@@ -113,12 +109,9 @@ static int take(const kind *k, void *full, const void *given, size_t room, const
         size_t inner;
         memcpy(&inner, at, sizeof inner);
         if (inner < m->kind->size && n > m->offset + inner) {
-            if (err) {
-                err->status = CS_ERR_INVALID;
-                snprintf(err->message, sizeof err->message,
+            cs_error_set(err, CS_ERR_INVALID,
                          "%s: size %zu inside a %s of %zu: a layout this library does not know", sub, inner,
                          what, n);
-            }
             return -1;
         }
     }

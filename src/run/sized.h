@@ -4,7 +4,7 @@
  * engine fills for the caller (sim.h's views, cs_summary, cs_event, cs_energy, cs_cable_summary,
  * cs_sudden_loss; and the loaders' and writers' structs, through src/io/status.h) written at the caller's
  * size. src/io includes this one header of the engine's layers (tests/cli_layers.sh), so that there is one
- * size check. */
+ * size check; and one filler of a cs_error (cs_error_set). */
 #ifndef CS_SIZED_H
 #define CS_SIZED_H
 
@@ -49,8 +49,8 @@ cs_status cs_sized_put_array(void *out, const void *full, size_t full_size, int 
  * bytes, holding the defaults of what the caller's lacks): CS_OK, or CS_ERR_INVALID as cs_sized_put. */
 cs_status cs_sized_take(void *full, size_t full_size, const void *given, const char *name, cs_error *err);
 /* Fill err (may be NULL) with status and the message that fmt and what follows make, as printf does, cut
- * to the message's room; return status. The one way a cs_error's message is formatted, the engine's and
- * the loaders' and writers' (src/io/status.h). */
+ * to the message's room; return status. The one filler of a cs_error's message, the engine's and the
+ * loaders' and writers' (src/io/status.h); it is in run/error.c. */
 cs_status cs_error_set(cs_error *err, cs_status status, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 /* The same with the arguments in ap. */

@@ -55,7 +55,7 @@ cs_state *cs_state_allocate(const cs_model *model, cs_error *err) {
     cs_state *s = calloc(1, sizeof *s);
     if (!s || allocate(model, s, 1) != 0) {
         cs_state_free(s);
-        if (err) err->status = CS_ERR_MEMORY, strcpy(err->message, "out of memory allocating the state");
+        cs_error_set(err, CS_ERR_MEMORY, "out of memory allocating the state");
         return NULL;
     }
     return s;

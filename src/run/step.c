@@ -3,6 +3,7 @@
  * the run loop. */
 #include "core/vec3.h"
 #include "run/run.h"
+#include "run/sized.h"
 #include "solver/work.h"
 
 #include <math.h>
@@ -343,11 +344,11 @@ static cs_status unstable(const cs_model *model, cs_state *s, cs_error *err, con
             snprintf(name, sizeof name, "%s %d", what, element);
         else
             snprintf(name, sizeof name, "%s", what);
-        err->status = CS_ERR_UNSTABLE;
-        snprintf(err->message, sizeof err->message,
-                 "t = %.4f s: %s went unstable (a value became NaN or infinite); reduce the time step (now "
-                 "%.3g ms)",
-                 s->t, name, model->scenario.dt * 1e3);
+        cs_error_set(
+            err, CS_ERR_UNSTABLE,
+            "t = %.4f s: %s went unstable (a value became NaN or infinite); reduce the time step (now "
+            "%.3g ms)",
+            s->t, name, model->scenario.dt * 1e3);
     }
     return CS_ERR_UNSTABLE;
 }
@@ -381,9 +382,8 @@ static cs_status check_numbers(const cs_model *model, cs_state *s, const cs_ener
                 if (fabs(cs_energy_term(&s->energy, k) - cs_energy_term(before, k)) >
                     fabs(cs_energy_term(&s->energy, worst) - cs_energy_term(before, worst)))
                     worst = k;
-            err->status = CS_ERR_UNSTABLE;
-            snprintf(
-                err->message, sizeof err->message,
+            cs_error_set(
+                err, CS_ERR_UNSTABLE,
                 "t = %.4f s: the energy ledger is off by %+.1f%% of the initial kinetic energy (over the "
                 "%.0f%% a run may be; the term that moved most this step: %s, %+.3g kJ): the state no "
                 "longer follows the physics (docs/robustness.md)",
@@ -403,7 +403,7 @@ cs_status cs_step(const cs_model *model, cs_state *s, cs_error *err) {
     s->t += model->scenario.dt;
     s->step++;
     cs_energy before = s->energy;
-    follow_path(model, s); /* 1-6. the vehicle moves, the barrier follows and pushes back */
+    follow_path(model, s);               /* 1-6. the vehicle moves, the barrier follows and pushes back */
     if (cs_work_spent(model, s->work)) { /* bounded work: the step under way is not taken */
         cs_state_copy(model, s, s->work->step_start[0]); /* the state this step started from */
         s->t = t0, s->step = step0;

@@ -11,6 +11,7 @@
 
 #include "cablesim/loader.h"
 #include "cablesim/units.h"
+#include "status.h"
 #include "study/sweep.h"
 #include "study/validate.h"
 
@@ -59,8 +60,7 @@ cs_model *cs_validate_bogie_model(cs_loader *l, const cs_bogie_rig *rig, const c
     cs_post_def post = cs_default_post_def();
     cs_loader_reset(l); /* the library's section, not a loaded model file's */
     if (cs_loader_part(l, CS_PART_SECTION, rig->section, &post.section) != 0) {
-        err->status = CS_ERR_INVALID;
-        snprintf(err->message, sizeof err->message, "no section '%s' in the parts library", rig->section);
+        cs_error_set(err, CS_ERR_INVALID, "no section '%s' in the parts library", rig->section);
         return NULL;
     }
     post.height = 1.0;
