@@ -19,6 +19,7 @@
 #include "out/jsondoc.h"
 #include "out/outfile.h"
 #include "out/report_html.h"
+#include "status.h"
 
 static const char usage[] =
     "Usage: cablesim designer [FILE] [-o DIR] [--force] [--allow-path DIR]...\n"
@@ -178,21 +179,23 @@ static const char *default_model(cs_loader *l, char *buf, size_t size) {
 
 static int write_page(design *d, const char *dir, int force) {
 #ifdef CS_HAVE_DESIGNER
-    char why[1024];
+    char why[CS_MESSAGE_SIZE];
     cs_outdir out;
-    if (cs_out_open(&out, dir, force ? CS_OUT_FORCE : 0, why, sizeof why) != 0) {
-        fprintf(stderr, "cablesim designer: nothing written: %s\n", why);
+    cs_error err = {CS_OK, ""};
+    if (cs_out_open(&out, dir, force ? CS_OUT_FORCE : 0, &err) != CS_OK) {
+        fprintf(stderr, "cablesim designer: nothing written: %s\n", err.message);
         return CS_EXIT_RUN;
     }
-    FILE *f = cs_out_begin(&out, "designer.html", why, sizeof why);
+    FILE *f = cs_out_begin(&out, "designer.html", &err);
     int rc = f ? cs_write_page(f, cs_designer_page, cs_designer_page_size, d->name, "designer.html",
                                write_design, d, why, sizeof why)
                : -1;
-    if (f) rc = cs_out_finish(&out, f, rc, why, sizeof why);
-    if (rc == 0) rc = cs_out_commit(&out, why, sizeof why);
+    if (rc != 0 && f) cs_status_set(&err, CS_ERR_IO, why); /* the page's reason, unless the file has one */
+    if (f && cs_out_finish(&out, f, rc ? CS_ERR_IO : CS_OK, &err) != CS_OK) rc = -1;
+    if (rc == 0 && cs_out_commit(&out, &err) != CS_OK) rc = -1;
     if (rc != 0) {
         cs_out_abort(&out);
-        fprintf(stderr, "cablesim designer: nothing written: %s\n", why);
+        fprintf(stderr, "cablesim designer: nothing written: %s\n", err.message);
         return CS_EXIT_RUN;
     }
     printf("designer page for "), cs_term_text(stdout, d->name), printf(": %s/designer.html\n", dir);

@@ -18,6 +18,7 @@
 #include "out/record.h"
 #include "out/report_html.h"
 #include "out/writers.h"
+#include "status.h"
 #include "sweepcmd.h"
 
 enum { EXIT_RUN = CS_EXIT_RUN, EXIT_BAD = CS_EXIT_USAGE };
@@ -236,11 +237,14 @@ typedef struct report_args {
 static int write_report_html(cs_outdir *out, void *user, char *why, size_t why_size) {
     const report_args *a = user;
 #ifdef CS_HAVE_REPORT
-    FILE *f = cs_out_begin(out, "report.html", why, why_size);
-    if (!f) return -1;
+    cs_error err = {CS_OK, ""};
+    FILE *f = cs_out_begin(out, "report.html", &err);
+    if (!f) return cs_status_why(err.status, &err, why, why_size);
     int rc = cs_write_report_html(f, cs_report_page, cs_report_page_size, a->in, a->state, a->rec, a->info,
                                   why, why_size);
-    return cs_out_finish(out, f, rc, why, why_size);
+    if (cs_out_finish(out, f, rc ? CS_ERR_IO : CS_OK, &err) == CS_OK) return 0;
+    cs_status_why(err.status, &err, why, why_size); /* the file's error, else the writer's */
+    return -1;
 #else
     (void)out, (void)a, (void)why, (void)why_size;
     fprintf(stderr, "cablesim: warning: no report.html: this cablesim was built without node and npm "
@@ -258,7 +262,8 @@ static int write_outputs(cs_outdir *out, const cs_model_input *in, const cs_mode
     report_args args = {in, state, rec, info};
     int rc = cs_write_run_files(out, in, model, state, rec, info, plots ? CS_OUTPUT_PLOTS : 0,
                                 report ? write_report_html : NULL, &args, why, sizeof why);
-    if (rc == 0) rc = cs_out_commit(out, why, sizeof why);
+    cs_error err;
+    if (rc == 0) rc = cs_status_why(cs_out_commit(out, &err), &err, why, sizeof why);
     if (rc != 0) {
         cs_out_abort(out);
         fprintf(stderr, "cablesim: nothing written: %s\n", why);
@@ -293,15 +298,15 @@ static void default_dir(const cs_model_input *in, const cs_overrides *ov, char *
 }
 
 static int run(const cs_model_input *in, cs_model *model, const options *o, const char *command) {
-    char path[1024], why[512];
+    char path[1024];
     const char *dir = o->out_dir;
     if (!dir) default_dir(in, o->overrides, path, sizeof path), dir = path;
     cs_outdir out;
-    if (cs_out_open(&out, dir, o->force ? CS_OUT_FORCE : 0, why, sizeof why) != 0) { /* before the run */
-        fprintf(stderr, "cablesim: nothing run: %s\n", why);
+    cs_error err = {0};
+    if (cs_out_open(&out, dir, o->force ? CS_OUT_FORCE : 0, &err) != CS_OK) { /* before the run */
+        fprintf(stderr, "cablesim: nothing run: %s\n", err.message);
         return EXIT_RUN;
     }
-    cs_error err = {0};
     cs_record rec;
     cs_state *state = cs_state_create(model, &err);
     int rc = EXIT_RUN;

@@ -724,7 +724,8 @@ static void test_figures_through_outdir(void **state) {
     synthetic *s = synthetic_new(FRAMES);
     cs_outdir out;
     char why[512] = "";
-    assert_int_equal(cs_out_open(&out, s->dir.path, 0, why, sizeof why), 0);
+    cs_error err;
+    assert_int_equal(cs_out_open(&out, s->dir.path, 0, &err), CS_OK);
     static const cs_plot_format formats[] = {CS_PLOT_PNG, CS_PLOT_SVG};
     if (cs_figures_write(&out, "plots", formats, 2, &s->d, why, sizeof why) != 0) fail_msg("%s", why);
     char names[2 * CS_FIG_COUNT][64], path[256];
@@ -738,7 +739,7 @@ static void test_figures_through_outdir(void **state) {
             tmp_file(&s->dir, names[i], path, sizeof path);
             assert_int_equal(access(path, F_OK), -1); /* not before the commit */
         }
-    assert_int_equal(cs_out_commit(&out, why, sizeof why), 0);
+    assert_int_equal(cs_out_commit(&out, &err), CS_OK);
     for (int i = 0; i < 2 * CS_FIG_COUNT; i++) {
         tmp_file(&s->dir, names[i], path, sizeof path);
         if (access(path, F_OK) != 0) fail_msg("%s missing", names[i]);

@@ -12,6 +12,7 @@
 
 #include "out/html.h"
 #include "out/plot.h"
+#include "status.h"
 #include "study/metrics.h"
 
 /* ---- the plots ---- */
@@ -322,36 +323,47 @@ void cs_compare_print_trace_metrics(FILE *f, const cs_trace *traces, int count, 
 
 /* ---- the files ---- */
 
+/* A file of out ended after its writer returned rc (cs_out_finish): 0, or -1 with why the file's error
+ * when it had one, else the writer's reason (already in why). */
+static int finish(cs_outdir *out, FILE *f, int rc, char *why, size_t why_size) {
+    cs_error err = {CS_OK, ""};
+    if (cs_out_finish(out, f, rc ? CS_ERR_IO : CS_OK, &err) == CS_OK) return 0;
+    cs_status_why(err.status, &err, why, why_size);
+    return -1;
+}
+
 int cs_compare_write_traces(cs_outdir *out, const cs_trace *traces, int count, int reference, char *why,
                             size_t why_size) {
-    FILE *f = cs_out_begin(out, "compare.csv", why, why_size);
-    if (!f) return -1;
+    cs_error err;
+    FILE *f = cs_out_begin(out, "compare.csv", &err);
+    if (!f) return cs_status_why(err.status, &err, why, why_size);
     write_csv(f, traces, count, reference);
-    if (cs_out_finish(out, f, 0, why, why_size) != 0) return -1;
-    if (!(f = cs_out_begin(out, "compare.md", why, why_size))) return -1;
+    if (finish(out, f, 0, why, why_size) != 0) return -1;
+    if (!(f = cs_out_begin(out, "compare.md", &err))) return cs_status_why(err.status, &err, why, why_size);
     fprintf(f, "# Comparison\n\nDifferences are against %s%s.\n\n", traces[reference].label,
             traces[reference].measured ? " (measured)" : "");
     write_table(f, traces, count, reference, 0);
     write_metrics(f, traces, count, reference, 1);
-    if (cs_out_finish(out, f, 0, why, why_size) != 0) return -1;
+    if (finish(out, f, 0, why, why_size) != 0) return -1;
     if (traces[reference].measured) {
-        if (!(f = cs_out_begin(out, "metrics.csv", why, why_size))) return -1;
+        if (!(f = cs_out_begin(out, "metrics.csv", &err)))
+            return cs_status_why(err.status, &err, why, why_size);
         write_metrics(f, traces, count, reference, 0);
-        if (cs_out_finish(out, f, 0, why, why_size) != 0) return -1;
+        if (finish(out, f, 0, why, why_size) != 0) return -1;
     }
-    if (cs_out_subdir(out, "plots", why, why_size) != 0) return -1;
+    if (cs_out_subdir(out, "plots", &err) != CS_OK) return cs_status_why(err.status, &err, why, why_size);
     static const cs_plot_format formats[] = {CS_PLOT_PNG, CS_PLOT_SVG};
     for (int k = 0; k < CS_COMPARE_PLOTS; k++)
         for (int j = 0; j < 2; j++) {
             char name[128];
             snprintf(name, sizeof name, "plots/%s.%s", figures[k].name, cs_plot_extension(formats[j]));
-            if (!(f = cs_out_begin(out, name, why, why_size))) return -1;
+            if (!(f = cs_out_begin(out, name, &err))) return cs_status_why(err.status, &err, why, why_size);
             plot_job job = {&figures[k], traces, count, reference};
             int rc = cs_plot_write(f, formats[j], WIDTH, HEIGHT, draw, &job, why, why_size);
-            if (cs_out_finish(out, f, rc, why, why_size) != 0) return -1;
+            if (finish(out, f, rc, why, why_size) != 0) return -1;
         }
     /* the page: the table and each plot's SVG inline, so it opens from disk alone */
-    if (!(f = cs_out_begin(out, "compare.html", why, why_size))) return -1;
+    if (!(f = cs_out_begin(out, "compare.html", &err))) return cs_status_why(err.status, &err, why, why_size);
     fputs("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>cablesim: "
           "comparison</title>\n"
           "<style>body{font-family:sans-serif;margin:1.5em;max-width:1000px}table{border-collapse:collapse}"
@@ -372,5 +384,5 @@ int cs_compare_write_traces(cs_outdir *out, const cs_trace *traces, int count, i
         rc = cs_html_figure(f, id, WIDTH, HEIGHT, draw, &job, why, why_size);
     }
     fputs("</body></html>\n", f);
-    return cs_out_finish(out, f, rc, why, why_size);
+    return finish(out, f, rc, why, why_size);
 }

@@ -112,17 +112,15 @@ cs_status cs_compare_get(const cs_compare *c, int k, int i, cs_compare_row *out,
 
 cs_status cs_compare_write(const cs_compare *c, const char *dir, int flags, cs_error *err) {
     if (!c || !dir) return cs_status_set(err, CS_ERR_INVALID, "cs_compare_write: no comparison or no folder");
-    char why[1024];
+    char why[CS_MESSAGE_SIZE];
     cs_outdir out;
-    int rc = 0;
-    if (cs_out_open(&out, dir, flags & CS_COMPARE_FORCE ? CS_OUT_FORCE : 0, why, sizeof why) != 0 ||
-        cs_compare_write_traces(&out, c->traces, c->count, c->reference, why, sizeof why) != 0 ||
-        cs_out_commit(&out, why, sizeof why) != 0) {
-        cs_out_abort(&out);
-        rc = -1;
-    }
+    cs_status st = cs_out_open(&out, dir, flags & CS_COMPARE_FORCE ? CS_OUT_FORCE : 0, err);
+    if (st == CS_OK && cs_compare_write_traces(&out, c->traces, c->count, c->reference, why, sizeof why) != 0)
+        st = cs_status_set(err, CS_ERR_IO, why);
+    if (st == CS_OK) st = cs_out_commit(&out, err);
+    if (st != CS_OK) cs_out_abort(&out);
     cs_plot_release(); /* after the last plot (fontconfig's caches) */
-    return rc == 0 ? cs_status_set(err, CS_OK, "") : cs_status_set(err, CS_ERR_IO, why);
+    return st == CS_OK ? cs_status_set(err, CS_OK, "") : st;
 }
 
 void cs_compare_print_metrics(const cs_compare *c, FILE *f) {

@@ -3,6 +3,7 @@
  * marked failure from the events; nothing here recomputes the physics. */
 #include "cablesim/units.h"
 #include "figures_int.h"
+#include "status.h"
 #include "writers.h"
 
 #include <math.h>
@@ -653,14 +654,18 @@ int cs_figure_trace(cs_figure figure, const cs_figure_data *d, cs_plot_log *log,
 int cs_figures_write(cs_outdir *out, const char *subdir, const cs_plot_format *formats, int format_count,
                      const cs_figure_data *d, char *why, size_t why_size) {
     char name[128];
-    if (cs_out_subdir(out, subdir, why, why_size) != 0) return -1;
+    cs_error err = {CS_OK, ""};
+    if (cs_out_subdir(out, subdir, &err) != CS_OK) return cs_status_why(err.status, &err, why, why_size);
     for (int k = 0; k < CS_FIG_COUNT; k++)
         for (int j = 0; j < format_count; j++) {
             snprintf(name, sizeof name, "%s/%s.%s", subdir, figures[k].name, cs_plot_extension(formats[j]));
-            FILE *f = cs_out_begin(out, name, why, why_size);
-            if (!f) return -1;
+            FILE *f = cs_out_begin(out, name, &err);
+            if (!f) return cs_status_why(err.status, &err, why, why_size);
             int rc = cs_figure_write(f, formats[j], (cs_figure)k, d, why, why_size);
-            if (cs_out_finish(out, f, rc, why, why_size) != 0) return -1;
+            if (cs_out_finish(out, f, rc ? CS_ERR_IO : CS_OK, &err) != CS_OK) {
+                cs_status_why(err.status, &err, why, why_size); /* the file's error, else the writer's */
+                return -1;
+            }
         }
     return 0;
 }

@@ -7,6 +7,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -15,6 +16,18 @@
 enum { PATH_SIZE = 1400, MAX_DEPTH = 32 };
 
 static const char tmp_prefix[] = CS_OUT_TMP_PREFIX;
+
+/* err (may be NULL) filled with status and the formatted reason; returns status. */
+static cs_status fail(cs_error *err, cs_status status, const char *fmt, ...) {
+    if (err) {
+        va_list ap;
+        va_start(ap, fmt);
+        err->status = status;
+        vsnprintf(err->message, sizeof err->message, fmt, ap);
+        va_end(ap);
+    }
+    return status;
+}
 
 /* DIR/rel into buf; 0 if it does not fit (buf then empty: no file). */
 static int full_path(const cs_outdir *out, const char *rel, char *buf, size_t size) {
@@ -72,34 +85,33 @@ static long lock_holder(int fd) {
 
 /* DIR/.cablesim-lock, created if missing, locked (fcntl) and holding this pid. A lock whose holder died
  * was released by the system and is taken over. */
-static int take_lock(cs_outdir *out, char *why, size_t why_size) {
+static cs_status take_lock(cs_outdir *out, cs_error *err) {
     char path[PATH_SIZE];
     full_path(out, CS_OUT_LOCK, path, sizeof path);
     for (int tries = 0; tries < 16; tries++) {
         int fd = open(path, O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0666);
         if (fd < 0) {
-            snprintf(why, why_size, "%s: cannot write there: %s", out->dir, strerror(errno));
-            return -1;
+            return fail(err, CS_ERR_IO, "%s: cannot write there: %s", out->dir, strerror(errno));
         }
         struct flock fl = {0};
         fl.l_type = F_WRLCK;
         fl.l_whence = SEEK_SET;
         if (fcntl(fd, F_SETLK, &fl) != 0 && errno != ENOLCK) { /* ENOLCK: no locks on this file system */
-            int err = errno;
+            int errnum = errno;
             long pid = lock_holder(fd);
             close(fd);
-            if (err != EACCES && err != EAGAIN) {
-                snprintf(why, why_size, "%s: cannot lock: %s", path, strerror(err));
+            if (errnum != EACCES && errnum != EAGAIN) {
+                fail(err, CS_ERR_IO, "%s: cannot lock: %s", path, strerror(errnum));
             } else if (pid > 0) {
-                snprintf(why, why_size,
-                         "%s is in use by another cablesim (pid %ld holds %s): wait for it to end, or write "
-                         "elsewhere",
-                         out->dir, pid, path);
+                fail(err, CS_ERR_IO,
+                     "%s is in use by another cablesim (pid %ld holds %s): wait for it to end, or write "
+                     "elsewhere",
+                     out->dir, pid, path);
             } else {
-                snprintf(why, why_size, "%s is in use by another cablesim (it holds %s): wait for it to end",
-                         out->dir, path);
+                fail(err, CS_ERR_IO, "%s is in use by another cablesim (it holds %s): wait for it to end",
+                     out->dir, path);
             }
-            return -1;
+            return CS_ERR_IO;
         }
         /* the holder before may have removed the file as this took it: then take the new one */
         struct stat held, now;
@@ -108,17 +120,16 @@ static int take_lock(cs_outdir *out, char *why, size_t why_size) {
             char pid[32];
             int n = snprintf(pid, sizeof pid, "%ld\n", (long)getpid());
             if (ftruncate(fd, 0) != 0 || pwrite(fd, pid, (size_t)n, 0) != n) {
-                snprintf(why, why_size, "%s: %s", path, strerror(errno));
+                cs_status st = fail(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
                 close(fd);
-                return -1;
+                return st;
             }
             out->lock = fd;
-            return 0;
+            return CS_OK;
         }
         close(fd);
     }
-    snprintf(why, why_size, "%s: cannot take the lock: other cablesim runs keep taking it", path);
-    return -1;
+    return fail(err, CS_ERR_IO, "%s: cannot take the lock: other cablesim runs keep taking it", path);
 }
 
 static void release(cs_outdir *out) {
@@ -140,16 +151,16 @@ static void release(cs_outdir *out) {
 
 /* The earlier run's manifest into out->prev (none: empty). Lines that name no file inside the folder
  * are skipped: a manifest never sends a removal outside. */
-static int read_manifest(cs_outdir *out, char *why, size_t why_size) {
+static cs_status read_manifest(cs_outdir *out, cs_error *err) {
     char path[PATH_SIZE];
     full_path(out, CS_OUT_MANIFEST, path, sizeof path);
     int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
-    if (fd < 0 && errno == ENOENT) return 0;
+    if (fd < 0 && errno == ENOENT) return CS_OK;
     FILE *f = fd < 0 ? NULL : fdopen(fd, "r");
     if (!f) {
-        snprintf(why, why_size, "%s: %s", path, strerror(errno));
+        cs_status st = fail(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
         if (fd >= 0) close(fd);
-        return -1;
+        return st;
     }
     char line[512];
     int cap = 0;
@@ -169,29 +180,28 @@ static int read_manifest(cs_outdir *out, char *why, size_t why_size) {
             char(*grown)[128] = realloc(out->prev, (size_t)cap * sizeof *grown);
             if (!grown) {
                 fclose(f);
-                snprintf(why, why_size, "out of memory reading %s", path);
-                return -1;
+                return fail(err, CS_ERR_MEMORY, "out of memory reading %s", path);
             }
             out->prev = grown;
         }
         memcpy(out->prev[out->prev_count++], line, n + 1);
     }
     fclose(f);
-    return 0;
+    return CS_OK;
 }
 
 /* DIR/.cablesim-manifest: the files written, and with prev those of the earlier manifest too, through
  * a temporary and a rename. */
-static int write_manifest(cs_outdir *out, int with_prev, char *why, size_t why_size) {
+static cs_status write_manifest(cs_outdir *out, int with_prev, cs_error *err) {
     char tmp[PATH_SIZE], path[PATH_SIZE];
     snprintf(tmp, sizeof tmp, "%s/%smanifest.XXXXXX", out->dir, tmp_prefix);
     full_path(out, CS_OUT_MANIFEST, path, sizeof path);
     int fd = mkstemp(tmp);
     FILE *f = fd < 0 ? NULL : fdopen(fd, "w");
     if (!f) {
-        snprintf(why, why_size, "%s: %s", path, strerror(errno));
+        cs_status st = fail(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
         if (fd >= 0) close(fd), unlink(tmp);
-        return -1;
+        return st;
     }
     fchmod(fd, (mode_t)out->mode);
     fprintf(f, "# cablesim: the files its last run wrote in this folder; the next run into it removes "
@@ -201,24 +211,24 @@ static int write_manifest(cs_outdir *out, int with_prev, char *why, size_t why_s
     for (int i = 0; with_prev && i < out->prev_count; i++)
         if (!written(out, out->prev[i])) fprintf(f, "%s\n", out->prev[i]);
     int bad = fflush(f) != 0 || ferror(f) || fsync(fd) != 0;
-    int err = errno;
+    int errnum = errno;
     bad |= fclose(f) != 0;
     if (bad || rename(tmp, path) != 0) {
-        snprintf(why, why_size, "%s: %s", path, strerror(bad ? err : errno));
+        cs_status st = fail(err, CS_ERR_IO, "%s: %s", path, strerror(bad ? errnum : errno));
         unlink(tmp);
-        return -1;
+        return st;
     }
-    return 0;
+    return CS_OK;
 }
 
 /* ---- what the folder holds ---- */
 
-/* The first file under DIR/rel that no manifest lists into found (1), else 0; -1 with why filled if a
+/* The first file under DIR/rel that no manifest lists into found (1), else 0; -1 with err filled if a
  * folder cannot be read. Folders are walked, not followed through links; the lock, the manifest and
  * temporaries are cablesim's, and folders that hold no file are not files. With remove, the
  * temporaries a killed run left are removed instead (the folder is locked: no run is writing them). */
 static int scan(const cs_outdir *out, const char *rel, int depth, int remove, char *found, size_t found_size,
-                char *why, size_t why_size) {
+                cs_error *err) {
     char path[PATH_SIZE];
     if (rel[0])
         full_path(out, rel, path, sizeof path);
@@ -226,7 +236,7 @@ static int scan(const cs_outdir *out, const char *rel, int depth, int remove, ch
         snprintf(path, sizeof path, "%s", out->dir);
     DIR *d = opendir(path);
     if (!d) {
-        snprintf(why, why_size, "%s: %s", path, strerror(errno));
+        fail(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
         return -1;
     }
     int rc = 0;
@@ -241,7 +251,7 @@ static int scan(const cs_outdir *out, const char *rel, int depth, int remove, ch
         if (lstat(full, &st) != 0) continue; /* gone since */
         int ours = strncmp(name, tmp_prefix, sizeof tmp_prefix - 1) == 0 && S_ISREG(st.st_mode);
         if (S_ISDIR(st.st_mode) && depth < MAX_DEPTH) {
-            rc = scan(out, sub, depth + 1, remove, found, found_size, why, why_size);
+            rc = scan(out, sub, depth + 1, remove, found, found_size, err);
         } else if (ours && remove) {
             unlink(full);
         } else if (!ours && !remove && !listed(out, sub) &&
@@ -257,20 +267,20 @@ static int scan(const cs_outdir *out, const char *rel, int depth, int remove, ch
 
 /* Refuse a folder holding a file no manifest lists (unless CS_OUT_FORCE), else remove the temporaries
  * a killed run left. */
-static int check_contents(cs_outdir *out, char *why, size_t why_size) {
-    if (out->flags & CS_OUT_FORCE) return 0;
+static cs_status check_contents(cs_outdir *out, cs_error *err) {
+    if (out->flags & CS_OUT_FORCE) return CS_OK;
     char found[PATH_SIZE];
-    int rc = scan(out, "", 0, 0, found, sizeof found, why, why_size);
+    int rc = scan(out, "", 0, 0, found, sizeof found, err);
     if (rc == 1)
-        snprintf(why, why_size,
-                 "%s holds %s, which no cablesim run wrote there (%s lists what one wrote): choose another "
-                 "folder, or give --force to write beside such files (none of them is removed)",
-                 out->dir, found, CS_OUT_MANIFEST);
-    if (rc == 0) rc = scan(out, "", 0, 1, found, sizeof found, why, why_size);
-    return rc == 0 ? 0 : -1;
+        fail(err, CS_ERR_IO,
+             "%s holds %s, which no cablesim run wrote there (%s lists what one wrote): choose another "
+             "folder, or give --force to write beside such files (none of them is removed)",
+             out->dir, found, CS_OUT_MANIFEST);
+    if (rc == 0) rc = scan(out, "", 0, 1, found, sizeof found, err);
+    return rc == 0 ? CS_OK : CS_ERR_IO;
 }
 
-int cs_out_open(cs_outdir *out, const char *dir, int flags, char *why, size_t why_size) {
+cs_status cs_out_open(cs_outdir *out, const char *dir, int flags, cs_error *err) {
     memset(out, 0, sizeof *out);
     out->lock = out->journal = -1;
     out->flags = flags;
@@ -278,8 +288,7 @@ int cs_out_open(cs_outdir *out, const char *dir, int flags, char *why, size_t wh
     umask(mask);
     out->mode = 0666u & ~(unsigned)mask;
     if (strlen(dir) >= sizeof out->dir - 80) {
-        snprintf(why, why_size, "%s: output path too long", dir);
-        return -1;
+        return fail(err, CS_ERR_INVALID, "%s: output path too long", dir);
     }
     snprintf(out->dir, sizeof out->dir, "%s", dir);
     char part[1024];
@@ -289,9 +298,8 @@ int cs_out_open(cs_outdir *out, const char *dir, int flags, char *why, size_t wh
         if (mkdir(part, 0777) == 0) {
             out->made++;
         } else if (errno != EEXIST) {
-            snprintf(why, why_size, "%s: %s", part, strerror(errno));
             cs_out_abort(out);
-            return -1;
+            return fail(err, CS_ERR_IO, "%s: %s", part, strerror(errno));
         } else {
             out->made = 0; /* only a trailing run of made folders is ours to remove */
         }
@@ -299,58 +307,54 @@ int cs_out_open(cs_outdir *out, const char *dir, int flags, char *why, size_t wh
     struct stat st;
     int found = stat(dir, &st) == 0;
     if (!found || !S_ISDIR(st.st_mode)) {
-        snprintf(why, why_size, "%s: %s", dir, strerror(found ? ENOTDIR : errno));
         cs_out_abort(out);
-        return -1;
+        return fail(err, CS_ERR_IO, "%s: %s", dir, strerror(found ? ENOTDIR : errno));
     }
-    if (take_lock(out, why, why_size) != 0 || read_manifest(out, why, why_size) != 0 ||
-        check_contents(out, why, why_size) != 0) {
-        cs_out_abort(out);
-        return -1;
-    }
-    return 0;
+    cs_status status = take_lock(out, err);
+    if (status == CS_OK) status = read_manifest(out, err);
+    if (status == CS_OK) status = check_contents(out, err);
+    if (status != CS_OK) cs_out_abort(out);
+    return status;
 }
 
-int cs_out_subdir(cs_outdir *out, const char *subdir, char *why, size_t why_size) {
+cs_status cs_out_subdir(cs_outdir *out, const char *subdir, cs_error *err) {
     char path[PATH_SIZE];
     full_path(out, subdir, path, sizeof path);
     struct stat st;
     int made = mkdir(path, 0777) == 0;
     if (!made && errno != EEXIST) {
-        snprintf(why, why_size, "%s: %s", path, strerror(errno));
-        return -1;
+        return fail(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
     }
     if (made && out->subdir_count < 8)
         snprintf(out->subdirs[out->subdir_count++], sizeof out->subdirs[0], "%s", subdir);
     if (lstat(path, &st) != 0 || !S_ISDIR(st.st_mode)) { /* a file, or a link to somewhere else */
-        snprintf(why, why_size, "%s: not a folder of this one (%s)", path, strerror(ENOTDIR));
-        return -1;
+        return fail(err, CS_ERR_IO, "%s: not a folder of this one (%s)", path, strerror(ENOTDIR));
     }
-    return 0;
+    return CS_OK;
 }
 
-/* A temporary beside DIR/name, open for writing (its descriptor), named into out. -1 with why filled. */
-static int begin(cs_outdir *out, const char *name, char *why, size_t why_size) {
+/* A temporary beside DIR/name, open for writing (its descriptor), named into out. -1 with err filled. */
+static int begin(cs_outdir *out, const char *name, cs_error *err) {
     char final[PATH_SIZE], tmp[PATH_SIZE];
     if (out->count == CS_OUT_MAX_FILES) {
-        snprintf(why, why_size, "too many output files");
+        fail(err, CS_ERR_MEMORY, "too many output files");
         return -1;
     }
     if (strlen(name) >= sizeof out->names[0] || !inside(name)) {
-        snprintf(why, why_size, "%s/%s: not a name for an output file", out->dir, name);
+        fail(err, CS_ERR_INVALID, "%s/%s: not a name for an output file", out->dir, name);
         return -1;
     }
     full_path(out, name, final, sizeof final);
     struct stat st;
     if (lstat(final, &st) == 0 && S_ISDIR(st.st_mode)) {
-        snprintf(why, why_size, "%s: %s", final, strerror(EISDIR));
+        fail(err, CS_ERR_IO, "%s: %s", final, strerror(EISDIR));
         return -1;
     }
     if (lstat(final, &st) == 0 && !listed(out, name)) {
-        snprintf(why, why_size,
-                 "%s: a file no cablesim run wrote is there (not in %s/%s): it is kept; remove it or write "
-                 "elsewhere",
-                 final, out->dir, CS_OUT_MANIFEST);
+        fail(err, CS_ERR_IO,
+             "%s: a file no cablesim run wrote is there (not in %s/%s): it is kept; remove it or write "
+             "elsewhere",
+             final, out->dir, CS_OUT_MANIFEST);
         return -1;
     }
     const char *slash = strrchr(name, '/');
@@ -360,7 +364,7 @@ static int begin(cs_outdir *out, const char *name, char *why, size_t why_size) {
     full_path(out, rel, tmp, sizeof tmp);
     int fd = mkstemp(tmp);
     if (fd < 0) {
-        snprintf(why, why_size, "%s: %s", final, strerror(errno));
+        fail(err, CS_ERR_IO, "%s: %s", final, strerror(errno));
         return -1;
     }
     snprintf(rel, sizeof out->tmps[0], "%s", tmp + strlen(out->dir) + 1); /* the name mkstemp chose */
@@ -400,8 +404,8 @@ static void test_dev_full(int fd, const char *name) {
     if (dev >= 0) dup2(dev, fd), close(dev);
 }
 
-FILE *cs_out_begin(cs_outdir *out, const char *name, char *why, size_t why_size) {
-    int fd = begin(out, name, why, why_size);
+FILE *cs_out_begin(cs_outdir *out, const char *name, cs_error *err) {
+    int fd = begin(out, name, err);
     if (fd < 0) return NULL;
     test_dev_full(fd, name);
     int *c = out->streams[out->count - 1];
@@ -409,24 +413,23 @@ FILE *cs_out_begin(cs_outdir *out, const char *name, char *why, size_t why_size)
     c[1] = 0;
     FILE *f = fopencookie(c, "w", (cookie_io_functions_t){NULL, stream_write, NULL, stream_close});
     if (!f) {
-        snprintf(why, why_size, "%s/%s: %s", out->dir, name, strerror(errno));
+        fail(err, CS_ERR_IO, "%s/%s: %s", out->dir, name, strerror(errno));
         close(fd);
     }
     return f;
 }
 
-int cs_out_begin_path(cs_outdir *out, const char *name, char *path, size_t path_size, char *why,
-                      size_t why_size) {
-    int fd = begin(out, name, why, why_size);
-    if (fd < 0) return -1;
+cs_status cs_out_begin_path(cs_outdir *out, const char *name, char *path, size_t path_size, cs_error *err) {
+    cs_error own;
+    int fd = begin(out, name, err ? err : &own);
+    if (fd < 0) return err ? err->status : own.status;
     close(fd);
     full_path(out, out->tmps[out->count - 1], path, path_size);
-    return 0;
+    return CS_OK;
 }
 
-static int end_failed(const cs_outdir *out, int i, int err, char *why, size_t why_size) {
-    snprintf(why, why_size, "%s/%s: %s", out->dir, out->names[i], strerror(err));
-    return -1;
+static cs_status end_failed(const cs_outdir *out, int i, int errnum, cs_error *err) {
+    return fail(err, CS_ERR_IO, "%s/%s: %s", out->dir, out->names[i], strerror(errnum));
 }
 
 /* Start writing fd's data to the disk, not waiting for it: cs_out_commit's fsync of each file then waits
@@ -436,44 +439,43 @@ static void start_writeback(int fd) {
     sync_file_range(fd, 0, 0, SYNC_FILE_RANGE_WRITE);
 }
 
-int cs_out_end_at(cs_outdir *out, int i, FILE *f, char *why, size_t why_size) {
+cs_status cs_out_end_at(cs_outdir *out, int i, FILE *f, cs_error *err) {
     int *c = out->streams[i];
     int bad = fflush(f) != 0 || ferror(f);
-    int err = c[1] ? c[1] : errno; /* the first write's error, else the flush's */
+    int errnum = c[1] ? c[1] : errno; /* the first write's error, else the flush's */
     if (!bad) start_writeback(c[0]);
     bad |= fclose(f) != 0;
-    return bad ? end_failed(out, i, err ? err : errno, why, why_size) : 0;
+    return bad ? end_failed(out, i, errnum ? errnum : errno, err) : CS_OK;
 }
 
-int cs_out_finish(cs_outdir *out, FILE *f, int rc, char *why, size_t why_size) {
-    char end_why[1500];
-    if (cs_out_end(out, f, end_why, sizeof end_why) == 0) return rc == 0 ? 0 : -1;
-    snprintf(why, why_size, "%s", end_why); /* which file, and the system's reason: the cause */
-    return -1;
+cs_status cs_out_finish(cs_outdir *out, FILE *f, cs_status status, cs_error *err) {
+    /* a failed end is the cause, in err: which file, and the system's reason */
+    cs_status end = cs_out_end(out, f, err);
+    return end != CS_OK ? end : status;
 }
 
-int cs_out_end(cs_outdir *out, FILE *f, char *why, size_t why_size) {
-    return cs_out_end_at(out, out->count - 1, f, why, why_size);
+cs_status cs_out_end(cs_outdir *out, FILE *f, cs_error *err) {
+    return cs_out_end_at(out, out->count - 1, f, err);
 }
 
 /* The i-th file's temporary opened, then sync (fsync, or start_writeback when wait is 0). Returns 0, or -1
  * with why filled. */
-static int sync_file(const cs_outdir *out, int i, int wait, char *why, size_t why_size) {
+static cs_status sync_file(const cs_outdir *out, int i, int wait, cs_error *err) {
     char path[PATH_SIZE];
     full_path(out, out->tmps[i], path, sizeof path);
     int fd = open(path, O_RDONLY);
-    if (fd < 0) return end_failed(out, i, errno, why, why_size);
-    int bad = 0, err = 0;
+    if (fd < 0) return end_failed(out, i, errno, err);
+    int bad = 0, errnum = 0;
     if (wait)
-        bad = fsync(fd) != 0, err = errno;
+        bad = fsync(fd) != 0, errnum = errno;
     else
         start_writeback(fd);
     close(fd);
-    return bad ? end_failed(out, i, err, why, why_size) : 0;
+    return bad ? end_failed(out, i, errnum, err) : CS_OK;
 }
 
-int cs_out_end_path(cs_outdir *out, char *why, size_t why_size) {
-    return sync_file(out, out->count - 1, 0, why, why_size);
+cs_status cs_out_end_path(cs_outdir *out, cs_error *err) {
+    return sync_file(out, out->count - 1, 0, err);
 }
 
 /* fsync DIR/rel (a folder), so that the renames in it last. */
@@ -488,40 +490,40 @@ static void sync_folder(const cs_outdir *out, const char *rel, int len) {
 }
 
 /* Remove the earlier run's file rel, a file (not a folder) in a folder of this one (not through a link). */
-static int remove_earlier(const cs_outdir *out, const char *rel, char *why, size_t why_size) {
+static cs_status remove_earlier(const cs_outdir *out, const char *rel, cs_error *err) {
     char path[PATH_SIZE];
     struct stat st;
     for (const char *s = strchr(rel, '/'); s; s = strchr(s + 1, '/')) {
         snprintf(path, sizeof path, "%s/%.*s", out->dir, (int)(s - rel), rel);
-        if (lstat(path, &st) != 0 || !S_ISDIR(st.st_mode)) return 0;
+        if (lstat(path, &st) != 0 || !S_ISDIR(st.st_mode)) return CS_OK;
     }
     full_path(out, rel, path, sizeof path);
-    if (lstat(path, &st) != 0 || S_ISDIR(st.st_mode)) return 0;
-    if (unlink(path) == 0 || errno == ENOENT) return 0;
-    snprintf(why, why_size, "%s: an earlier run's file, cannot be removed: %s", path, strerror(errno));
-    return -1;
+    if (lstat(path, &st) != 0 || S_ISDIR(st.st_mode)) return CS_OK;
+    if (unlink(path) == 0 || errno == ENOENT) return CS_OK;
+    return fail(err, CS_ERR_IO, "%s: an earlier run's file, cannot be removed: %s", path, strerror(errno));
 }
 
-int cs_out_commit(cs_outdir *out, char *why, size_t why_size) {
+cs_status cs_out_commit(cs_outdir *out, cs_error *err) {
     char tmp[PATH_SIZE], final[PATH_SIZE];
-    for (int i = 0; i < out->count; i++) /* every file on the disk before any is renamed */
-        if (sync_file(out, i, 1, why, why_size) != 0) return -1;
+    cs_status st = CS_OK;
+    for (int i = 0; st == CS_OK && i < out->count; i++) /* every file on the disk before any is renamed */
+        st = sync_file(out, i, 1, err);
     /* the manifest first names both runs' files, so that every file cablesim put here stays its own */
-    if (write_manifest(out, 1, why, why_size) != 0) return -1;
+    if (st == CS_OK) st = write_manifest(out, 1, err);
+    if (st != CS_OK) return st;
     int earlier = 0; /* the earlier run's files this run does not write: removed below */
     for (int i = 0; i < out->count; i++) {
         full_path(out, out->tmps[i], tmp, sizeof tmp);
         full_path(out, out->names[i], final, sizeof final);
         if (rename(tmp, final) != 0) {
-            snprintf(why, why_size, "%s: %s", final, strerror(errno));
-            return -1;
+            return fail(err, CS_ERR_IO, "%s: %s", final, strerror(errno));
         }
     }
     for (int i = 0; i < out->prev_count; i++) {
         const char *rel = out->prev[i], *slash = strrchr(rel, '/');
         if (written(out, rel)) continue;
         earlier++;
-        if (remove_earlier(out, rel, why, why_size) != 0) return -1;
+        if ((st = remove_earlier(out, rel, err)) != CS_OK) return st;
         if (slash) { /* a subfolder this left empty */
             full_path(out, rel, tmp, sizeof tmp);
             tmp[strlen(out->dir) + 1 + (size_t)(slash - rel)] = '\0';
@@ -530,7 +532,7 @@ int cs_out_commit(cs_outdir *out, char *why, size_t why_size) {
     }
     /* the commit point: the manifest of this run's files alone (the first already is, when it named no
      * earlier file besides them) */
-    if (earlier && write_manifest(out, 0, why, why_size) != 0) return -1;
+    if (earlier && (st = write_manifest(out, 0, err)) != CS_OK) return st;
     full_path(out, CS_OUT_JOURNAL, tmp, sizeof tmp);
     unlink(tmp); /* a journal's runs are in the outputs now */
     sync_folder(out, "", 0);
@@ -543,7 +545,7 @@ int cs_out_commit(cs_outdir *out, char *why, size_t why_size) {
     out->count = 0;
     out->made = out->subdir_count = 0; /* the folders hold a result now */
     release(out);
-    return 0;
+    return CS_OK;
 }
 
 void cs_out_abort(cs_outdir *out) {
@@ -592,41 +594,40 @@ static int write_all_sync(int fd, const char *text, size_t len) {
     return fsync(fd);
 }
 
-int cs_out_journal_start(cs_outdir *out, const char *text, size_t len, char *why, size_t why_size) {
+cs_status cs_out_journal_start(cs_outdir *out, const char *text, size_t len, cs_error *err) {
     char tmp[PATH_SIZE], path[PATH_SIZE];
     snprintf(tmp, sizeof tmp, "%s/%sjournal.XXXXXX", out->dir, tmp_prefix);
     full_path(out, CS_OUT_JOURNAL, path, sizeof path);
     int fd = mkstemp(tmp);
     if (fd < 0 || fchmod(fd, (mode_t)out->mode) != 0 || write_all_sync(fd, text, len) != 0 ||
         rename(tmp, path) != 0) {
-        snprintf(why, why_size, "%s: %s", path, strerror(errno));
+        cs_status st = fail(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
         if (fd >= 0) close(fd), unlink(tmp);
-        return -1;
+        return st;
     }
     sync_folder(out, "", 0);
     if (out->journal >= 0) close(out->journal);
     out->journal = fd; /* the renamed file: appends go on at its end */
-    return 0;
+    return CS_OK;
 }
 
-int cs_out_journal_add(cs_outdir *out, const char *text, size_t len, char *why, size_t why_size) {
+cs_status cs_out_journal_add(cs_outdir *out, const char *text, size_t len, cs_error *err) {
     if (out->journal < 0 || write_all_sync(out->journal, text, len) != 0) {
         char path[PATH_SIZE];
         full_path(out, CS_OUT_JOURNAL, path, sizeof path);
-        snprintf(why, why_size, "%s: %s", path, out->journal < 0 ? "not open" : strerror(errno));
-        return -1;
+        return fail(err, CS_ERR_IO, "%s: %s", path, out->journal < 0 ? "not open" : strerror(errno));
     }
-    return 0;
+    return CS_OK;
 }
 
-char *cs_out_journal_read(const char *dir, size_t *len, char *why, size_t why_size) {
+char *cs_out_journal_read(const char *dir, size_t *len, cs_error *err) {
     char path[PATH_SIZE], reason[256];
     snprintf(path, sizeof path, "%s/%s", dir, CS_OUT_JOURNAL);
     char *text = NULL;
-    int err = 0;
-    why[0] = '\0';
-    if (cs_input_read(path, (size_t)2 << 30, &text, len, &err, reason, sizeof reason) != 0) {
-        if (err != ENOENT) snprintf(why, why_size, "%s: %s", path, reason);
+    int errnum = 0;
+    fail(err, CS_OK, "%s", "");
+    if (cs_input_read(path, (size_t)2 << 30, &text, len, &errnum, reason, sizeof reason) != 0) {
+        if (errnum != ENOENT) fail(err, CS_ERR_IO, "%s: %s", path, reason);
         return NULL;
     }
     while (*len > 0 && text[*len - 1] != '\n') /* a row cut short by a kill */

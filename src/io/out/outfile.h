@@ -17,7 +17,10 @@
 #ifndef CS_OUTFILE_H
 #define CS_OUTFILE_H
 
+#include <stddef.h>
 #include <stdio.h>
+
+#include "cablesim/sim.h"
 
 enum { CS_OUT_MAX_FILES = 64 }; /* the data files, the plots and the pages */
 enum { CS_OUT_FORCE = 1 };      /* cs_out_open: write beside files no manifest lists */
@@ -45,45 +48,47 @@ typedef struct cs_outdir {
 } cs_outdir;
 
 /* Create dir (and its parents), take its lock and read its manifest, before anything is computed.
- * Returns 0, or -1 with why filled ("DIR: Not a directory", "DIR is in use by cablesim pid N", "DIR
- * holds notes.txt, which no cablesim run wrote ..."). */
-int cs_out_open(cs_outdir *out, const char *dir, int flags, char *why, size_t why_size);
-/* Create DIR/subdir, for files named "subdir/...". Returns 0, or -1 with why filled. */
-int cs_out_subdir(cs_outdir *out, const char *subdir, char *why, size_t why_size);
-/* Start a temporary for DIR/name. NULL with why filled on failure: a name longer than names hold, a
- * folder there, or a file no manifest lists (CS_OUT_FORCE). */
-FILE *cs_out_begin(cs_outdir *out, const char *name, char *why, size_t why_size);
+ * Returns CS_OK, or CS_ERR_IO with err filled ("DIR: Not a directory", "DIR is in use by cablesim pid N",
+ * "DIR holds notes.txt, which no cablesim run wrote ..."); CS_ERR_INVALID for a path too long,
+ * CS_ERR_MEMORY for a manifest that does not fit in memory. */
+cs_status cs_out_open(cs_outdir *out, const char *dir, int flags, cs_error *err);
+/* Create DIR/subdir, for files named "subdir/...". Returns CS_OK, or CS_ERR_IO with err filled. */
+cs_status cs_out_subdir(cs_outdir *out, const char *subdir, cs_error *err);
+/* Start a temporary for DIR/name. NULL with err filled on failure: CS_ERR_INVALID for a name longer than
+ * names hold, CS_ERR_MEMORY past CS_OUT_MAX_FILES, CS_ERR_IO for a folder there, or a file no manifest lists
+ * (CS_OUT_FORCE). */
+FILE *cs_out_begin(cs_outdir *out, const char *name, cs_error *err);
 /* Flush and close a file from cs_out_begin, its writing to the disk begun (cs_out_commit waits for it):
- * the last begun, or the i-th (files written side by side). Returns 0, or -1 with why filled: the file and
- * the system's reason for its first failed write (a full disk: "No space left on device"). */
-int cs_out_end(cs_outdir *out, FILE *f, char *why, size_t why_size);
-/* End the last file begun (cs_out_end) after its writer returned rc (rc != 0: why holds its reason).
- * Returns 0 when both went well, else -1 with why the file's own error when it had one (which file, and
- * the system's reason: "DIR/runs.csv: No space left on device"), else the writer's reason. */
-int cs_out_finish(cs_outdir *out, FILE *f, int rc, char *why, size_t why_size);
-int cs_out_end_at(cs_outdir *out, int i, FILE *f, char *why, size_t why_size);
+ * the last begun, or the i-th (files written side by side). Returns CS_OK, or CS_ERR_IO with err filled:
+ * the file and the system's reason for its first failed write (a full disk: "No space left on device"). */
+cs_status cs_out_end(cs_outdir *out, FILE *f, cs_error *err);
+cs_status cs_out_end_at(cs_outdir *out, int i, FILE *f, cs_error *err);
+/* End the last file begun (cs_out_end) after its writer returned status (not CS_OK: err holds its reason).
+ * Returns CS_OK when both went well, else the file's own error when it had one (CS_ERR_IO, err saying which
+ * file and the system's reason: "DIR/runs.csv: No space left on device"), else the writer's status with
+ * err as the writer left it. */
+cs_status cs_out_finish(cs_outdir *out, FILE *f, cs_status status, cs_error *err);
 /* The same for a writer that opens its file by name (netCDF): the temporary's path into path (an empty
  * file the writer replaces), and, once the writer has closed it, cs_out_end_path begins its writing to the
- * disk. Each returns 0, or -1 with why filled. */
-int cs_out_begin_path(cs_outdir *out, const char *name, char *path, size_t path_size, char *why,
-                      size_t why_size);
-int cs_out_end_path(cs_outdir *out, char *why, size_t why_size);
+ * disk. Each returns CS_OK, or a failure's status with err filled. */
+cs_status cs_out_begin_path(cs_outdir *out, const char *name, char *path, size_t path_size, cs_error *err);
+cs_status cs_out_end_path(cs_outdir *out, cs_error *err);
 /* Fsync every temporary, rename each to its name, remove the files of the earlier manifest that this run
- * did not write (and a subfolder they leave empty), write the manifest, release the lock. Returns 0, or -1
- * with why filled (then call cs_out_abort). */
-int cs_out_commit(cs_outdir *out, char *why, size_t why_size);
+ * did not write (and a subfolder they leave empty), write the manifest, release the lock. Returns CS_OK, or
+ * CS_ERR_IO with err filled (then call cs_out_abort). */
+cs_status cs_out_commit(cs_outdir *out, cs_error *err);
 /* A journal in the folder (DIR/.cablesim-journal, a sweep's: each run's result as it finishes), which
  * outlives a kill -9, a power cut or a failed write of the outputs, and which cs_out_commit removes (the
  * outputs hold it all then). cs_out_journal_start writes its first text through a temporary, fsync and
  * rename (it replaces an earlier journal whole or not at all) and keeps it open; cs_out_journal_add
- * appends text and fsyncs. Each returns 0, or -1 with why filled ("DIR/.cablesim-journal: No space left
- * on device"). */
-int cs_out_journal_start(cs_outdir *out, const char *text, size_t len, char *why, size_t why_size);
-int cs_out_journal_add(cs_outdir *out, const char *text, size_t len, char *why, size_t why_size);
+ * appends text and fsyncs. Each returns CS_OK, or CS_ERR_IO with err filled ("DIR/.cablesim-journal: No
+ * space left on device"). */
+cs_status cs_out_journal_start(cs_outdir *out, const char *text, size_t len, cs_error *err);
+cs_status cs_out_journal_add(cs_outdir *out, const char *text, size_t len, cs_error *err);
 /* The journal of the folder dir up to its last whole line (a line cut by a kill is dropped), malloc'ed and
- * NUL-terminated, its length in *len. NULL with why empty: there is none; NULL with why filled: it cannot
- * be read. */
-char *cs_out_journal_read(const char *dir, size_t *len, char *why, size_t why_size);
+ * NUL-terminated, its length in *len. NULL with err's status CS_OK: there is none; NULL with err filled
+ * (CS_ERR_IO): it cannot be read. */
+char *cs_out_journal_read(const char *dir, size_t *len, cs_error *err);
 /* Remove the temporaries begun, and the folders cs_out_open made if they are empty; release the lock.
  * Safe to call twice, and after a commit (then it does nothing). */
 void cs_out_abort(cs_outdir *out);

@@ -40,13 +40,17 @@ int cs_write_run_files(cs_outdir *out, const cs_model_input *in, const cs_model 
     }
     static const char *const names[] = {"timeseries.csv", "events.csv", "summary.json"};
     int rc = 0;
+    cs_error err = {CS_OK, ""};
     for (int k = 0; rc == 0 && k < 3; k++) {
-        FILE *f = cs_out_begin(out, names[k], why, why_size);
-        if (!f) return -1;
+        FILE *f = cs_out_begin(out, names[k], &err);
+        if (!f) return cs_status_why(err.status, &err, why, why_size);
         rc = k == 0   ? cs_timeseries_csv(f, rec, why, why_size)
              : k == 1 ? cs_events_csv(f, state, why, why_size)
                       : cs_write_summary_json_with(f, in, model, state, info, why, why_size);
-        rc = cs_out_finish(out, f, rc, why, why_size);
+        if (cs_out_finish(out, f, rc ? CS_ERR_IO : CS_OK, &err) != CS_OK) {
+            cs_status_why(err.status, &err, why, why_size); /* the file's error, else the writer's */
+            rc = -1;
+        }
     }
     if (rc == 0 && (flags & CS_OUTPUT_PLOTS)) rc = write_plots(out, in, state, rec, info, why, why_size);
     if (rc == 0 && more) rc = more(out, user, why, why_size);
@@ -64,12 +68,13 @@ cs_status cs_write_outputs(const char *dir, const cs_model_input *in, const cs_m
     cs_summary sm = {.size = sizeof sm};
     cs_state_summary(state, &sm, NULL);
     cs_run_info_motion(&info, in, rec, &sm);
-    int rc = cs_out_open(&out, dir, 0, why, why_size);
-    if (rc == 0)
-        rc = cs_write_run_files(&out, in, model, state, rec, &info, flags, NULL, NULL, why, why_size);
-    if (rc == 0) rc = cs_out_commit(&out, why, why_size);
-    if (rc != 0) cs_out_abort(&out);
-    return cs_status_set(err, rc ? CS_ERR_IO : CS_OK, why);
+    cs_status st = cs_out_open(&out, dir, 0, err);
+    if (st == CS_OK &&
+        cs_write_run_files(&out, in, model, state, rec, &info, flags, NULL, NULL, why, why_size) != 0)
+        st = cs_status_set(err, CS_ERR_IO, why);
+    if (st == CS_OK) st = cs_out_commit(&out, err);
+    if (st != CS_OK) cs_out_abort(&out);
+    return st == CS_OK ? cs_status_set(err, CS_OK, NULL) : st;
 }
 
 cs_status cs_write_timeseries(FILE *f, const cs_record *rec, cs_error *err) {

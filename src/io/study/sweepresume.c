@@ -15,6 +15,7 @@
 #include "out/outfile.h"
 #include "out/sweepout.h"
 #include "out/writers.h"
+#include "status.h"
 #include "study/sweepresume.h"
 
 /* {"spec": the spec's absolute path, "spec_as_given" and the "cwd" it was given in, "runs", "seed", "set":
@@ -74,7 +75,9 @@ int cs_sweep_resume_read(const char *dir, cs_sweep_options *o, cs_sweep_resumed 
     static char spec[PATH_MAX], seed[64], sets[256][1100], allow[64][PATH_MAX];
     char path[1200];
     size_t length = 0;
-    if (!(r->journal = cs_out_journal_read(dir, &length, why, why_size)) && why[0]) return -1;
+    cs_error err;
+    if (!(r->journal = cs_out_journal_read(dir, &length, &err)) && err.status != CS_OK)
+        return cs_status_why(err.status, &err, why, why_size);
     char *eol = r->journal ? strchr(r->journal, '\n') : NULL;
     if (eol) { /* its first line is the record; runs.csv follows */
         *eol = '\0';

@@ -18,6 +18,7 @@
 #include "out/studyreport.h"
 #include "out/sweepout.h"
 #include "out/writers.h"
+#include "status.h"
 #include "study/sweepresume.h"
 #include "study/sweepstudy.h"
 
@@ -151,7 +152,9 @@ static int start_journal(cs_outdir *out, const cs_sweep_spec *spec, const double
     int rc = f ? cs_sweep_write_journal_start(f, spec, x, all, n, why, why_size) : -1;
     if (f) fclose(f);
     if (rc != 0 || !text) snprintf(why, why_size, "out of memory for the journal");
-    if (rc == 0 && text) rc = cs_out_journal_start(out, text, length, why, why_size);
+    cs_error err;
+    if (rc == 0 && text)
+        rc = cs_status_why(cs_out_journal_start(out, text, length, &err), &err, why, why_size);
     free(text);
     return rc;
 }
@@ -161,15 +164,16 @@ static int start_journal(cs_outdir *out, const cs_sweep_spec *spec, const double
  * hold them. */
 static void journal_run(cs_outdir *out, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
                         long i, int *failed, cs_sweep_options *o) {
-    char *text = NULL, why[1600];
+    char *text = NULL;
+    cs_error err;
     size_t length = 0;
     FILE *f = *failed ? NULL : open_memstream(&text, &length);
     if (!f) return;
     cs_sweep_write_run_row(f, spec, x, r, i);
     fclose(f);
-    if (cs_out_journal_add(out, text, length, why, sizeof why) != 0) {
+    if (cs_out_journal_add(out, text, length, &err) != CS_OK) {
         *failed = 1;
-        cs_sweep_say(o, "%s: the runs from now on are not journalled (a kill loses them)", why);
+        cs_sweep_say(o, "%s: the runs from now on are not journalled (a kill loses them)", err.message);
     }
     free(text);
 }
@@ -206,9 +210,9 @@ static const char *signal_name(int sig) {
 static int write_all(cs_outdir *out, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
                      long n, int partial, cs_sweep_options *o) {
     char why[512] = "";
-    int rc = 0;
+    cs_error err = {CS_OK, ""};
     static const char *const names[] = {"runs.csv", "summary.md", "summary.json"};
-    if (rc == 0) rc = cs_out_subdir(out, "plots", why, sizeof why);
+    int rc = cs_status_why(cs_out_subdir(out, "plots", &err), &err, why, sizeof why);
     int study = 3 + spec->plot_count; /* then the study's figures, then its page */
     for (int k = 0; rc == 0 && k < study + CS_STUDY_FIGURES + 1; k++) {
         char name[256];
@@ -221,9 +225,9 @@ static int write_all(cs_outdir *out, const cs_sweep_spec *spec, const double *x,
             cs_study_figure_file(k - study, name, sizeof name);
         } else
             snprintf(name, sizeof name, "report.html");
-        FILE *f = cs_out_begin(out, name, why, sizeof why);
+        FILE *f = cs_out_begin(out, name, &err);
         if (!f) {
-            rc = -1;
+            rc = cs_status_why(err.status, &err, why, sizeof why);
             break;
         }
         rc = k == 0      ? cs_sweep_write_runs(f, spec, x, r, n, why, sizeof why)
@@ -233,17 +237,19 @@ static int write_all(cs_outdir *out, const cs_sweep_spec *spec, const double *x,
              : k < study + CS_STUDY_FIGURES
                  ? cs_study_write_figure(f, CS_PLOT_PNG, k - study, spec, x, r, n, why, sizeof why)
                  : cs_study_write_page(f, spec, x, r, n, why, sizeof why);
-        rc = cs_out_finish(out, f, rc, why, sizeof why);
+        err.status = CS_OK; /* a failed end's reason replaces the writer's (in why) */
+        if (cs_out_finish(out, f, rc ? CS_ERR_IO : CS_OK, &err) != CS_OK) rc = -1;
+        if (err.status != CS_OK) cs_status_why(err.status, &err, why, sizeof why);
     }
     cs_plot_release(); /* after the last plot */
     if (rc == 0 && spec->netcdf && !partial) {
         char path[1200], nc_why[200];
-        rc = cs_out_begin_path(out, "runs.nc", path, sizeof path, why, sizeof why);
+        rc = cs_status_why(cs_out_begin_path(out, "runs.nc", path, sizeof path, &err), &err, why, sizeof why);
         if (rc == 0 && (rc = cs_sweep_write_netcdf(path, spec, x, r, n, nc_why, sizeof nc_why)) != 0)
             snprintf(why, sizeof why, "%.280s/runs.nc: %s", out->dir, nc_why);
-        if (rc == 0) rc = cs_out_end_path(out, why, sizeof why);
+        if (rc == 0) rc = cs_status_why(cs_out_end_path(out, &err), &err, why, sizeof why);
     }
-    if (rc == 0) rc = cs_out_commit(out, why, sizeof why);
+    if (rc == 0) rc = cs_status_why(cs_out_commit(out, &err), &err, why, sizeof why);
     if (rc != 0) {
         cs_out_abort(out);
         cs_sweep_say(o,
@@ -401,6 +407,7 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, cs_sweep **kee
     long done = 0;
     if (rc == 0 && rank == 0) {
         char why[600];
+        cs_error err;
         out_dir_of(o, dir, sizeof dir);
         spec->origin.command = command;
         spec->origin.dir = dir;
@@ -422,8 +429,8 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, cs_sweep **kee
             rc = EXIT_RUN;
         } else if (o->resume && (done = cs_sweep_resume_runs(dir, spec, &was, x, all, n, o)) < 0) {
             rc = EXIT_BAD;
-        } else if (cs_out_open(&out, dir, o->force ? CS_OUT_FORCE : 0, why, sizeof why) != 0) {
-            cs_sweep_say(o, "nothing run: %s", why);
+        } else if (cs_out_open(&out, dir, o->force ? CS_OUT_FORCE : 0, &err) != CS_OK) {
+            cs_sweep_say(o, "nothing run: %s", err.message);
             rc = EXIT_RUN;
         } else if (out_open = 1, start_journal(&out, spec, x, all, n, why, sizeof why) != 0) {
             cs_sweep_say(o, "nothing run: %s", why);

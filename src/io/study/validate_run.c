@@ -134,16 +134,16 @@ cs_validate_suite *cs_validate_begin(const cs_validate_opts *o, int *status) {
     *status = 1;
     cs_validate_suite *s = suite_create(o);
     if (!s) return NULL;
-    char why[1200];
-    if (cs_out_open(&s->out, o->dir, o->force ? CS_OUT_FORCE : 0, why, sizeof why) != 0) {
-        fprintf(o->err, "cablesim validate: nothing run: %s\n", why);
+    cs_error err;
+    if (cs_out_open(&s->out, o->dir, o->force ? CS_OUT_FORCE : 0, &err) != CS_OK) {
+        fprintf(o->err, "cablesim validate: nothing run: %s\n", err.message);
         suite_free(s);
         return NULL;
     }
-    s->md = cs_out_begin(&s->out, "validation.md", why, sizeof why);
-    s->csv = s->md ? cs_out_begin(&s->out, "validation.csv", why, sizeof why) : NULL;
+    s->md = cs_out_begin(&s->out, "validation.md", &err);
+    s->csv = s->md ? cs_out_begin(&s->out, "validation.csv", &err) : NULL;
     if (!s->md || !s->csv) {
-        fprintf(o->err, "cablesim validate: nothing run: %s\n", why);
+        fprintf(o->err, "cablesim validate: nothing run: %s\n", err.message);
         if (s->md) fclose(s->md);
         cs_out_abort(&s->out);
         suite_free(s);
@@ -183,12 +183,12 @@ int cs_validate_finish(cs_validate_suite *s) {
     if (cs_validate_wanted(o->only, "convergence")) cs_validate_write_convergence(md, csv, s);
     if (cs_validate_wanted(o->only, "sensitivity")) cs_validate_write_sensitivity(md, csv, s);
     fprintf(md, "Run time: %.0f s.\n", difftime(time(NULL), s->t0));
-    char why[1200];
-    int bad = cs_out_end_at(&s->out, 0, md, why, sizeof why) != 0;
-    if (cs_out_end_at(&s->out, 1, csv, why, sizeof why) != 0) bad = 1;
-    if (bad || cs_out_commit(&s->out, why, sizeof why) != 0) {
+    cs_error err;
+    int bad = cs_out_end_at(&s->out, 0, md, &err) != CS_OK;
+    if (cs_out_end_at(&s->out, 1, csv, &err) != CS_OK) bad = 1;
+    if (bad || cs_out_commit(&s->out, &err) != CS_OK) {
         cs_out_abort(&s->out);
-        fprintf(o->err, "cablesim validate: nothing written: %s\n", why);
+        fprintf(o->err, "cablesim validate: nothing written: %s\n", err.message);
         suite_free(s);
         return 1;
     }
