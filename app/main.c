@@ -234,22 +234,22 @@ typedef struct report_args {
 
 /* DIR/report.html, begun on out (a cs_more_outputs). A build that lacked node and npm has no page: a
  * warning, no file. */
-static int write_report_html(cs_outdir *out, void *user, char *why, size_t why_size) {
+static cs_status write_report_html(cs_outdir *out, void *user, cs_error *err) {
     const report_args *a = user;
 #ifdef CS_HAVE_REPORT
-    cs_error err = {CS_OK, ""};
-    FILE *f = cs_out_begin(out, "report.html", &err);
-    if (!f) return cs_status_why(err.status, &err, why, why_size);
-    int rc = cs_write_report_html(f, cs_report_page, cs_report_page_size, a->in, a->state, a->rec, a->info,
-                                  why, why_size);
-    if (cs_out_finish(out, f, rc ? CS_ERR_IO : CS_OK, &err) == CS_OK) return 0;
-    cs_status_why(err.status, &err, why, why_size); /* the file's error, else the writer's */
-    return -1;
+    FILE *f = cs_out_begin(out, "report.html", err);
+    if (!f) return err->status;
+    char why[CS_MESSAGE_SIZE];
+    cs_status st = CS_OK;
+    if (cs_write_report_html(f, cs_report_page, cs_report_page_size, a->in, a->state, a->rec, a->info, why,
+                             sizeof why) != 0)
+        st = cs_status_set(err, CS_ERR_IO, why);
+    return cs_out_finish(out, f, st, err);
 #else
-    (void)out, (void)a, (void)why, (void)why_size;
+    (void)out, (void)a, (void)err;
     fprintf(stderr, "cablesim: warning: no report.html: this cablesim was built without node and npm "
                     "(install them with scripts/install-deps.sh and build again)\n");
-    return 0;
+    return CS_OK;
 #endif
 }
 
@@ -258,17 +258,16 @@ static int write_report_html(cs_outdir *out, void *user, char *why, size_t why_s
 static int write_outputs(cs_outdir *out, const cs_model_input *in, const cs_model *model,
                          const cs_state *state, const cs_record *rec, const cs_run_info *info, int plots,
                          int report) {
-    char why[512] = "";
     report_args args = {in, state, rec, info};
-    int rc = cs_write_run_files(out, in, model, state, rec, info, plots ? CS_OUTPUT_PLOTS : 0,
-                                report ? write_report_html : NULL, &args, why, sizeof why);
     cs_error err;
-    if (rc == 0) rc = cs_status_why(cs_out_commit(out, &err), &err, why, sizeof why);
-    if (rc != 0) {
+    cs_status st = cs_write_run_files(out, in, model, state, rec, info, plots ? CS_OUTPUT_PLOTS : 0,
+                                      report ? write_report_html : NULL, &args, &err);
+    if (st == CS_OK) st = cs_out_commit(out, &err);
+    if (st != CS_OK) {
         cs_out_abort(out);
-        fprintf(stderr, "cablesim: nothing written: %s\n", why);
+        fprintf(stderr, "cablesim: nothing written: %s\n", err.message);
     }
-    return rc;
+    return st == CS_OK ? 0 : -1;
 }
 
 /* The folder of a run given no -o: results/NAME, and for a run with overrides a folder of its own named

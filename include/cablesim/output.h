@@ -64,7 +64,7 @@ CS_API cs_status cs_write_events(FILE *f, const cs_state *state, cs_error *err);
 /** summary.json: the response parameters (the fields of cs_summary by the same names), the anchors, the
  * events and the resolved inputs in SI under "inputs".
  * @return CS_OK, or CS_ERR_IO with err filled (CS_ERR_INVALID: an input whose size does not reach its
- *         scenario). */
+ *         scenario; CS_ERR_MEMORY: memory ran out). */
 CS_API cs_status cs_write_summary_json(FILE *f, const cs_model_input *in, const cs_model *model,
                                        const cs_state *state, cs_error *err);
 /** The readable summary `cablesim run` prints: the outcome, the response parameters in SI with US units
@@ -90,7 +90,8 @@ enum cs_output_flags {
  * @param flags 0 or CS_OUTPUT_PLOTS
  * @param err filled on failure (may be NULL)
  * @return CS_OK, or CS_ERR_IO with err filled (nothing written, or a record that lost frames);
- *         CS_ERR_INVALID for an input whose size does not reach its scenario. */
+ *         CS_ERR_INVALID for an input whose size does not reach its scenario or a folder's path too long;
+ *         CS_ERR_MEMORY when memory runs out. */
 CS_API cs_status cs_write_outputs(const char *dir, const cs_model_input *in, const cs_model *model,
                                   const cs_state *state, const cs_record *rec, int flags, cs_error *err);
 

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "numtext.h"
+#include "status.h"
 #include "writers.h"
 
 int cs_w_finite(cs_wout *w, double v, const char *what) {
@@ -22,6 +23,13 @@ void cs_w_oom(cs_wout *w, const char *what) {
     if (w->bad) return;
     w->bad = 1;
     snprintf(w->why, sizeof w->why, "%s: out of memory", what);
+}
+
+cs_status cs_w_status(const cs_wout *w, const char *file, cs_error *err) {
+    if (!w->bad) return CS_OK;
+    char message[CS_MESSAGE_SIZE + sizeof w->why]; /* cs_status_set cuts it to the message's room */
+    snprintf(message, sizeof message, "%s: %s", file, w->why);
+    return cs_status_set(err, CS_ERR_IO, message);
 }
 
 void cs_w_num(cs_wout *w, double v, const char *what) {
@@ -43,7 +51,7 @@ static void ts_num(cs_wout *w, double v, const char *noun, int index, const char
     cs_w_num(w, v, what);
 }
 
-int cs_timeseries_csv(FILE *f, const cs_record *rec, char *why, size_t why_size) {
+cs_status cs_timeseries_csv(FILE *f, const cs_record *rec, cs_error *err) {
     fprintf(
         f,
         "t [s],x [m],y [m],z [m],vx [m/s],vy [m/s],vz [m/s],ax [m/s^2],ay [m/s^2],az [m/s^2],roll [rad],"
@@ -114,11 +122,10 @@ int cs_timeseries_csv(FILE *f, const cs_record *rec, char *why, size_t why_size)
         }
         fputc('\n', f);
     }
-    if (w.bad) snprintf(why, why_size, "timeseries.csv: %s", w.why);
-    return w.bad ? -1 : 0;
+    return cs_w_status(&w, "timeseries.csv", err);
 }
 
-int cs_events_csv(FILE *f, const cs_state *state, char *why, size_t why_size) {
+cs_status cs_events_csv(FILE *f, const cs_state *state, cs_error *err) {
     fprintf(f, "t [s],type,element_kind,element,value,value_unit,cable_end,cable,post\n"); /* value: in its
                                                                                               row's unit */
     cs_wout w = {f, 0, ""};
@@ -136,6 +143,5 @@ int cs_events_csv(FILE *f, const cs_state *state, char *why, size_t why_size) {
         if (e->post >= 0) fprintf(f, "%d", e->post); /* the post at whose hole a rope broke */
         fputc('\n', f);
     }
-    if (w.bad) snprintf(why, why_size, "events.csv: %s", w.why);
-    return w.bad ? -1 : 0;
+    return cs_w_status(&w, "events.csv", err);
 }

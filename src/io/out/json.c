@@ -7,6 +7,7 @@
 #include "cablesim/units.h"
 #include "jsondoc.h"
 #include "load/schema.h"
+#include "status.h"
 #include "writers.h"
 
 /* v as a number of the document; NULL (null) and w marked bad, naming what, if it is not finite. */
@@ -304,13 +305,13 @@ static json_object *event(cs_wout *w, const cs_event *e) {
 }
 
 json_object *cs_summary_json(const cs_model_input *in, const cs_model *model, const cs_state *state,
-                             const cs_run_info *info, char *why, size_t why_size) {
+                             const cs_run_info *info, cs_error *err) {
     cs_summary s = {.size = sizeof s};
     cs_state_summary(state, &s, NULL);
     cs_wout w = {NULL, 0, ""};
     json_object *doc = json_object_new_object();
     if (!doc) {
-        snprintf(why, why_size, "summary.json: out of memory");
+        cs_status_set(err, CS_ERR_MEMORY, "summary.json: out of memory");
         return NULL;
     }
     /* "cablesim": where the results come from, on a line of its own */
@@ -382,18 +383,17 @@ json_object *cs_summary_json(const cs_model_input *in, const cs_model *model, co
     json_object_object_add(doc, "inputs", inputs(&w, in));
     static const char *const new_line[] = {"inputs", NULL};
     cs_jkeys_on_new_line(doc, new_line);
-    if (!w.bad) return doc;
-    snprintf(why, why_size, "summary.json: %s", w.why);
+    if (cs_w_status(&w, "summary.json", err) == CS_OK) return doc;
     json_object_put(doc);
     return NULL;
 }
 
-int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model *model,
-                               const cs_state *state, const cs_run_info *info, char *why, size_t why_size) {
-    json_object *doc = cs_summary_json(in, model, state, info, why, why_size);
-    if (!doc) return -1;
+cs_status cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model *model,
+                                     const cs_state *state, const cs_run_info *info, cs_error *err) {
+    cs_error own;
+    json_object *doc = cs_summary_json(in, model, state, info, err ? err : &own);
+    if (!doc) return err ? err->status : own.status;
     int written = cs_json_write(f, doc, 0, "\n") == 0;
     json_object_put(doc);
-    if (!written) snprintf(why, why_size, "summary.json: out of memory");
-    return written ? 0 : -1;
+    return written ? CS_OK : cs_status_set(err, CS_ERR_MEMORY, "summary.json: out of memory");
 }

@@ -65,6 +65,8 @@ typedef struct cs_wout {
 int cs_w_finite(cs_wout *w, double v, const char *what);
 /* w marked bad (if it is not already), its why: what ran out of memory. */
 void cs_w_oom(cs_wout *w, const char *what);
+/* CS_OK if w is not bad, else CS_ERR_IO with err "FILE: what" (file names the output, "summary.json"). */
+cs_status cs_w_status(const cs_wout *w, const char *file, cs_error *err);
 /* Print v as %.10g would (cs_g10); a non-finite v is not printed and marks the output bad, naming what. */
 void cs_w_num(cs_wout *w, double v, const char *what);
 struct json_object;
@@ -87,24 +89,26 @@ void cs_json_cables_and_losses(cs_wout *w, struct json_object *to, const cs_stat
                                cs_jnum_fn number);
 
 /* More files to write into a run's folder before it commits (the command's report.html): each begun on
- * out. Returns 0, or -1 with why filled. */
-typedef int (*cs_more_outputs)(cs_outdir *out, void *user, char *why, size_t why_size);
+ * out. Returns CS_OK, or a failure's status with err filled. */
+typedef cs_status (*cs_more_outputs)(cs_outdir *out, void *user, cs_error *err);
 /* A run's files into out (opened, not yet committed): timeseries.csv, events.csv, summary.json (with
  * info), the plots with CS_OUTPUT_PLOTS, then more (may be NULL); the commit lists them in the folder's
- * manifest (outfile.h). Returns 0, or -1 with why filled (out then to be aborted). */
-int cs_write_run_files(cs_outdir *out, const cs_model_input *in, const cs_model *model, const cs_state *state,
-                       const cs_record *rec, const cs_run_info *info, int flags, cs_more_outputs more,
-                       void *user, char *why, size_t why_size);
+ * manifest (outfile.h). Returns CS_OK, or a failure's status with err filled (out then to be aborted):
+ * CS_ERR_IO for a file, a non-finite number or a record that lost frames, CS_ERR_MEMORY. */
+cs_status cs_write_run_files(cs_outdir *out, const cs_model_input *in, const cs_model *model,
+                             const cs_state *state, const cs_record *rec, const cs_run_info *info, int flags,
+                             cs_more_outputs more, void *user, cs_error *err);
 /* timeseries.csv and events.csv (output.h's cs_write_timeseries and cs_write_events), and summary.json
- * with info (may be NULL: no provenance, no ratings); each returns 0, or -1 with why filled. */
-int cs_timeseries_csv(FILE *f, const cs_record *rec, char *why, size_t why_size);
-int cs_events_csv(FILE *f, const cs_state *state, char *why, size_t why_size);
-int cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model *model,
-                               const cs_state *state, const cs_run_info *info, char *why, size_t why_size);
-/* summary.json's document (json-c, jsondoc.h; to put), or NULL with why filled (a non-finite number
- * where one must be finite, out of memory). */
+ * with info (may be NULL: no provenance, no ratings); each returns CS_OK, or CS_ERR_IO with err filled
+ * naming the file and the first non-finite number, or CS_ERR_MEMORY. */
+cs_status cs_timeseries_csv(FILE *f, const cs_record *rec, cs_error *err);
+cs_status cs_events_csv(FILE *f, const cs_state *state, cs_error *err);
+cs_status cs_write_summary_json_with(FILE *f, const cs_model_input *in, const cs_model *model,
+                                     const cs_state *state, const cs_run_info *info, cs_error *err);
+/* summary.json's document (json-c, jsondoc.h; to put), or NULL with err filled (CS_ERR_IO: a non-finite
+ * number where one must be finite; CS_ERR_MEMORY). */
 struct json_object *cs_summary_json(const cs_model_input *in, const cs_model *model, const cs_state *state,
-                                    const cs_run_info *info, char *why, size_t why_size);
+                                    const cs_run_info *info, cs_error *err);
 /* The readable summary (SI and US units side by side): the outcome, the model's hash, the response
  * parameters, the designations as run, the failure events in order and the yielding posts counted. */
 void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_model *model,
