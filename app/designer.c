@@ -87,13 +87,12 @@ static json_object *text_of(const char *real) {
 }
 
 /* The page's data: {"version","name","model","file","data_dir","units","files":[{"path","text"}]}. */
-static int write_design(FILE *f, void *user, char *why, size_t why_size) {
+static cs_status write_design(FILE *f, void *user, cs_error *err) {
     const design *d = user;
     json_object *doc = json_object_new_object(), *files = json_object_new_array();
     if (!doc || !files) {
         json_object_put(doc), json_object_put(files);
-        snprintf(why, why_size, "out of memory");
-        return -1;
+        return cs_status_set(err, CS_ERR_MEMORY, "out of memory");
     }
     json_object_object_add(doc, "version", cs_jstr(CS_VERSION_STRING));
     json_object_object_add(doc, "name", cs_jstr(d->name));
@@ -102,27 +101,26 @@ static int write_design(FILE *f, void *user, char *why, size_t why_size) {
     json_object_object_add(doc, "data_dir", cs_jstr("/data"));
     json_object_object_add(doc, "units", cs_jstr(d->units));
     json_object_object_add(doc, "files", files);
-    int rc = 0;
-    for (int i = 0; i < d->l->file_count && rc == 0; i++) {
+    cs_status st = CS_OK;
+    for (int i = 0; i < d->l->file_count && st == CS_OK; i++) {
         char path[PATH_MAX + 16];
         page_path(d, i, path, sizeof path);
         json_object *file = json_object_new_object(), *text = text_of(d->l->files[i].real);
         if (!file || !text) {
             json_object_put(file), json_object_put(text);
-            snprintf(why, why_size, "%s: cannot read it again", d->l->files[i].name);
-            rc = -1;
+            char message[CS_MESSAGE_SIZE];
+            snprintf(message, sizeof message, "%s: cannot read it again", d->l->files[i].name);
+            st = cs_status_set(err, CS_ERR_IO, message);
             break;
         }
         json_object_object_add(file, "path", cs_jstr(path));
         json_object_object_add(file, "text", text);
         json_object_array_add(files, file);
     }
-    if (rc == 0 && cs_json_write(f, doc, 1, "") != 0) {
-        snprintf(why, why_size, "out of memory");
-        rc = -1;
-    }
+    if (st == CS_OK && cs_json_write(f, doc, 1, "") != 0)
+        st = cs_status_set(err, CS_ERR_MEMORY, "out of memory");
     json_object_put(doc);
-    return rc;
+    return st;
 }
 
 /* The unit table: the usual units and every unit written in the files read (the text after a number). */
@@ -179,7 +177,6 @@ static const char *default_model(cs_loader *l, char *buf, size_t size) {
 
 static int write_page(design *d, const char *dir, int force) {
 #ifdef CS_HAVE_DESIGNER
-    char why[CS_MESSAGE_SIZE];
     cs_outdir out;
     cs_error err = {CS_OK, ""};
     if (cs_out_open(&out, dir, force ? CS_OUT_FORCE : 0, &err) != CS_OK) {
@@ -187,13 +184,12 @@ static int write_page(design *d, const char *dir, int force) {
         return CS_EXIT_RUN;
     }
     FILE *f = cs_out_begin(&out, "designer.html", &err);
-    int rc = f ? cs_write_page(f, cs_designer_page, cs_designer_page_size, d->name, "designer.html",
-                               write_design, d, why, sizeof why)
-               : -1;
-    if (rc != 0 && f) cs_status_set(&err, CS_ERR_IO, why); /* the page's reason, unless the file has one */
-    if (f && cs_out_finish(&out, f, rc ? CS_ERR_IO : CS_OK, &err) != CS_OK) rc = -1;
-    if (rc == 0 && cs_out_commit(&out, &err) != CS_OK) rc = -1;
-    if (rc != 0) {
+    cs_status st = f ? cs_write_page(f, cs_designer_page, cs_designer_page_size, d->name, "designer.html",
+                                     write_design, d, &err)
+                     : err.status;
+    if (f) st = cs_out_finish(&out, f, st, &err);
+    if (st == CS_OK) st = cs_out_commit(&out, &err);
+    if (st != CS_OK) {
         cs_out_abort(&out);
         fprintf(stderr, "cablesim designer: nothing written: %s\n", err.message);
         return CS_EXIT_RUN;

@@ -239,11 +239,8 @@ static cs_status write_report_html(cs_outdir *out, void *user, cs_error *err) {
 #ifdef CS_HAVE_REPORT
     FILE *f = cs_out_begin(out, "report.html", err);
     if (!f) return err->status;
-    char why[CS_MESSAGE_SIZE];
-    cs_status st = CS_OK;
-    if (cs_write_report_html(f, cs_report_page, cs_report_page_size, a->in, a->state, a->rec, a->info, why,
-                             sizeof why) != 0)
-        st = cs_status_set(err, CS_ERR_IO, why);
+    cs_status st =
+        cs_write_report_html(f, cs_report_page, cs_report_page_size, a->in, a->state, a->rec, a->info, err);
     return cs_out_finish(out, f, st, err);
 #else
     (void)out, (void)a, (void)err;

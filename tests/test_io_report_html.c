@@ -71,8 +71,12 @@ static char *page(run *r, const cs_record *rec, const char *template, int *rc, c
     size_t size = 0;
     FILE *f = open_memstream(&buf, &size);
     assert_non_null(f);
+    cs_error err;
     *rc = cs_write_report_html(f, (const unsigned char *)template, strlen(template), &r->in, r->state, rec,
-                               &info, why, why_size);
+                               &info, &err) == CS_OK
+              ? 0
+              : -1;
+    if (*rc) snprintf(why, why_size, "%s", err.message);
     fclose(f);
     char *out = strdup(buf); /* a copy: gcc -O3 otherwise takes buf for a pointer into this frame */
     free(buf);

@@ -205,10 +205,8 @@ EMSCRIPTEN_KEEPALIVE const char *cs_web_run(const char *path, const char *sets, 
         }
         json_object *more = json_object_new_object(),
                     *summary = cs_summary_json(&in, model, state, &info, &err),
-                    *report = summary && with_report
-                                  ? cs_report_json(&in, state, &rec, &info, why, sizeof why)
-                                  : NULL;
-        if (!summary) snprintf(why, sizeof why, "%s", err.message);
+                    *report = summary && with_report ? cs_report_json(&in, state, &rec, &info, &err) : NULL;
+        if (!summary || (with_report && !report)) snprintf(why, sizeof why, "%s", err.message);
         if (!more || !summary || (with_report && !report)) {
             json_object_put(more), json_object_put(summary), json_object_put(report);
             out = fail(why[0] ? why : "out of memory");

@@ -11,6 +11,7 @@
 #include "cablesim/cablesim.h"
 #include "jsondoc.h"
 #include "load/schema.h"
+#include "status.h"
 #include "writers.h"
 
 typedef struct jw {
@@ -620,14 +621,14 @@ static json_object *events_of(jw *j, const cs_state *state) {
 }
 
 json_object *cs_report_json(const cs_model_input *in, const cs_state *state, const cs_record *r,
-                            const cs_run_info *info, char *why, size_t why_size) {
+                            const cs_run_info *info, cs_error *err) {
     jw j = {{NULL, 0, ""}, "", PAGE_DIGITS};
     cs_summary s = {.size = sizeof s};
     cs_state_summary(state, &s, NULL);
     json_object *doc = json_object_new_object(), *evaluation = json_object_new_object();
     if (!doc || !evaluation) {
         json_object_put(doc), json_object_put(evaluation);
-        snprintf(why, why_size, "report.html: out of memory");
+        cs_status_set(err, CS_ERR_MEMORY, "report.html: out of memory");
         return NULL;
     }
     kint(doc, "format", 1);
@@ -652,27 +653,26 @@ json_object *cs_report_json(const cs_model_input *in, const cs_state *state, con
     json_object_object_add(doc, "series", write_series(&j, in, r, series_stride));
     kint(doc, "replay_stride", replay_stride);
     json_object_object_add(doc, "frames", write_frames(&j, r, replay_stride));
-    if (!j.w.bad) return doc;
-    snprintf(why, why_size, "report.html: %s", j.w.why);
+    if (cs_w_status(&j.w, "report.html", err) == CS_OK) return doc;
     json_object_put(doc);
     return NULL;
 }
 
-int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *state, const cs_record *r,
-                         const cs_run_info *info, char *why, size_t why_size) {
-    json_object *doc = cs_report_json(in, state, r, info, why, why_size);
-    if (!doc) return -1;
+cs_status cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *state, const cs_record *r,
+                               const cs_run_info *info, cs_error *err) {
+    cs_error own;
+    json_object *doc = cs_report_json(in, state, r, info, err ? err : &own);
+    if (!doc) return err ? err->status : own.status;
     int written = cs_json_write(f, doc, 1, "") == 0;
     json_object_put(doc);
-    if (!written || ferror(f)) {
-        snprintf(why, why_size, "report.html: %s", written ? "write error" : "out of memory");
-        return -1;
-    }
-    return 0;
+    if (!written) return cs_status_set(err, CS_ERR_MEMORY, "report.html: out of memory");
+    if (ferror(f)) return cs_status_set(err, CS_ERR_IO, "report.html: write error");
+    return CS_OK;
 }
 
-int cs_write_page(FILE *f, const unsigned char *page, size_t size, const char *title, const char *what,
-                  cs_page_data_fn data, void *user, char *why, size_t why_size) {
+cs_status cs_write_page(FILE *f, const unsigned char *page, size_t size, const char *title, const char *what,
+                        cs_page_data_fn data, void *user, cs_error *err) {
+    char message[CS_MESSAGE_SIZE];
     static const char title_marker[] = "@CS_TITLE@", data_marker[] = "@CS_DATA@";
     const size_t nt = sizeof title_marker - 1, nd = sizeof data_marker - 1;
     size_t i = 0, from = 0;
@@ -689,7 +689,8 @@ int cs_write_page(FILE *f, const unsigned char *page, size_t size, const char *t
             cs_html_text(f, title);
             i += nt;
         } else {
-            if (data(f, user, why, why_size) != 0) return -1;
+            cs_status st = data(f, user, err);
+            if (st != CS_OK) return st;
             data_written = 1;
             i += nd;
         }
@@ -697,15 +698,15 @@ int cs_write_page(FILE *f, const unsigned char *page, size_t size, const char *t
     }
     fwrite(page + from, 1, size - from, f);
     if (!data_written) {
-        snprintf(why, why_size, "%s: the page has no %s marker (a broken build of report/)", what,
+        snprintf(message, sizeof message, "%s: the page has no %s marker (a broken build of report/)", what,
                  data_marker);
-        return -1;
+        return cs_status_set(err, CS_ERR_IO, message);
     }
     if (ferror(f)) {
-        snprintf(why, why_size, "%s: write error", what);
-        return -1;
+        snprintf(message, sizeof message, "%s: write error", what);
+        return cs_status_set(err, CS_ERR_IO, message);
     }
-    return 0;
+    return CS_OK;
 }
 
 typedef struct report_data {
@@ -715,14 +716,14 @@ typedef struct report_data {
     const cs_run_info *info;
 } report_data;
 
-static int write_report_data(FILE *f, void *user, char *why, size_t why_size) {
+static cs_status write_report_data(FILE *f, void *user, cs_error *err) {
     const report_data *d = user;
-    return cs_write_report_json(f, d->in, d->state, d->rec, d->info, why, why_size);
+    return cs_write_report_json(f, d->in, d->state, d->rec, d->info, err);
 }
 
-int cs_write_report_html(FILE *f, const unsigned char *page, size_t size, const cs_model_input *in,
-                         const cs_state *state, const cs_record *rec, const cs_run_info *info, char *why,
-                         size_t why_size) {
+cs_status cs_write_report_html(FILE *f, const unsigned char *page, size_t size, const cs_model_input *in,
+                               const cs_state *state, const cs_record *rec, const cs_run_info *info,
+                               cs_error *err) {
     report_data d = {in, state, rec, info};
-    return cs_write_page(f, page, size, in->name, "report.html", write_report_data, &d, why, why_size);
+    return cs_write_page(f, page, size, in->name, "report.html", write_report_data, &d, err);
 }

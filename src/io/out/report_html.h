@@ -31,25 +31,27 @@ enum {
 
 /* The run as JSON: where it came from (version, command line, overrides, model hash: info, which may be
  * NULL), summary, ratings, scenario, vehicle, barrier, events, series (plots) and frames (replay). Every
- * '<', '>' and '&' is escaped, so the text can stand inside a <script> element. Returns 0, or -1 with
- * why filled (a non-finite number where one must be finite, a write error). */
-int cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *state, const cs_record *rec,
-                         const cs_run_info *info, char *why, size_t why_size);
-/* The same data as a json-c document (jsondoc.h; to put), or NULL with why filled. */
+ * '<', '>' and '&' is escaped, so the text can stand inside a <script> element. Returns CS_OK, or
+ * CS_ERR_IO with err filled (a non-finite number where one must be finite, a write error), or
+ * CS_ERR_MEMORY. */
+cs_status cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *state, const cs_record *rec,
+                               const cs_run_info *info, cs_error *err);
+/* The same data as a json-c document (jsondoc.h; to put), or NULL with err filled (CS_ERR_IO: a
+ * non-finite number; CS_ERR_MEMORY). */
 struct json_object *cs_report_json(const cs_model_input *in, const cs_state *state, const cs_record *rec,
-                                   const cs_run_info *info, char *why, size_t why_size);
+                                   const cs_run_info *info, cs_error *err);
 
-/* Writes a page's data at its @CS_DATA@ marker: 0, or -1 with why filled. */
-typedef int (*cs_page_data_fn)(FILE *f, void *user, char *why, size_t why_size);
+/* Writes a page's data at its @CS_DATA@ marker: CS_OK, or a failure's status with err filled. */
+typedef cs_status (*cs_page_data_fn)(FILE *f, void *user, cs_error *err);
 /* A page built from report/ (size bytes) with its markers filled: @CS_TITLE@ with title HTML-escaped,
- * @CS_DATA@ by data(user). what names the page in messages. Returns 0, or -1 with why filled. */
-int cs_write_page(FILE *f, const unsigned char *page, size_t size, const char *title, const char *what,
-                  cs_page_data_fn data, void *user, char *why, size_t why_size);
+ * @CS_DATA@ by data(user). what names the page in messages. Returns CS_OK, or data's failure, or CS_ERR_IO
+ * with err filled (no data marker, a write error). */
+cs_status cs_write_page(FILE *f, const unsigned char *page, size_t size, const char *title, const char *what,
+                        cs_page_data_fn data, void *user, cs_error *err);
 
-/* The page (size bytes, with the markers above) with its markers filled. Returns 0, or -1 with why
- * filled. */
-int cs_write_report_html(FILE *f, const unsigned char *page, size_t size, const cs_model_input *in,
-                         const cs_state *state, const cs_record *rec, const cs_run_info *info, char *why,
-                         size_t why_size);
+/* The page (size bytes, with the markers above) with its markers filled. Returns as cs_write_page. */
+cs_status cs_write_report_html(FILE *f, const unsigned char *page, size_t size, const cs_model_input *in,
+                               const cs_state *state, const cs_record *rec, const cs_run_info *info,
+                               cs_error *err);
 
 #endif
