@@ -6,12 +6,14 @@
 #include <pthread.h>
 #include <stdio.h>
 
+#include "status.h"
+
 cs_cairo_lib cs_cairo;
 cs_fontconfig_lib cs_fontconfig;
 
 static const char *const cairo_names[] = {CS_CAIRO_FUNCTIONS(CS_DYNLIB_NAME)};
 static const char *const fontconfig_names[] = {"FcFini"};
-static char failure[512];
+static cs_error failure;   /* why they could not be loaded */
 static _Atomic int loaded; /* set once by load */
 static pthread_once_t once = PTHREAD_ONCE_INIT;
 
@@ -21,16 +23,16 @@ _Static_assert(sizeof cs_fontconfig == sizeof(void *), "a table of pointers");
 
 static void load(void) {
     loaded = cs_dynlib_bind("cairo", CS_CAIRO_SONAME, cairo_names, &cs_cairo,
-                            (int)(sizeof cairo_names / sizeof *cairo_names), failure, sizeof failure) == 0 &&
-             cs_dynlib_bind("fontconfig", CS_FONTCONFIG_SONAME, fontconfig_names, &cs_fontconfig, 1, failure,
-                            sizeof failure) == 0;
+                            (int)(sizeof cairo_names / sizeof *cairo_names), &failure) == CS_OK &&
+             cs_dynlib_bind("fontconfig", CS_FONTCONFIG_SONAME, fontconfig_names, &cs_fontconfig, 1,
+                            &failure) == CS_OK;
 }
 
-int cs_cairo_load(char *why, size_t why_size) {
+cs_status cs_cairo_load(cs_error *err) {
     pthread_once(&once, load);
-    if (loaded) return 0;
-    snprintf(why, why_size, "%s", failure);
-    return -1;
+    if (loaded) return CS_OK;
+    if (err) *err = failure;
+    return failure.status;
 }
 
 int cs_cairo_loaded(void) {

@@ -14,8 +14,9 @@
 
 #define CS_CAIRO_FUNCTIONS(X)                                                                                \
     X(cairo_arc)                                                                                             \
-    X(cairo_clip) X(cairo_close_path) X(cairo_create) X(cairo_debug_reset_static_data) X(cairo_destroy)      \
-        X(cairo_fill) X(cairo_fill_preserve) X(cairo_image_surface_create) X(cairo_line_to) X(cairo_move_to) \
+    X(cairo_clip)                                                                                            \
+    X(cairo_close_path) X(cairo_create) X(cairo_debug_reset_static_data) X(cairo_destroy) X(cairo_fill)      \
+        X(cairo_fill_preserve) X(cairo_image_surface_create) X(cairo_line_to) X(cairo_move_to)               \
             X(cairo_new_path) X(cairo_paint) X(cairo_pattern_add_color_stop_rgb)                             \
                 X(cairo_pattern_create_linear) X(cairo_pattern_destroy)                                      \
                     X(cairo_pdf_surface_create_for_stream) X(cairo_rectangle) X(cairo_restore)               \
@@ -42,8 +43,9 @@ typedef struct cs_fontconfig_lib {
 extern cs_cairo_lib cs_cairo;
 extern cs_fontconfig_lib cs_fontconfig;
 
-/* cairo's functions and fontconfig's FcFini, loaded once (thread-safe): 0; -1 with why. */
-int cs_cairo_load(char *why, size_t why_size);
+/* cairo's functions and fontconfig's FcFini, loaded once (thread-safe): CS_OK; CS_ERR_IO with err filled
+ * (dynlib.h). */
+cs_status cs_cairo_load(cs_error *err);
 /* Whether they are loaded: a program that drew no plot has no cairo to release. */
 int cs_cairo_loaded(void);
 

@@ -7,6 +7,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "status.h"
+
 /* CABLESIM_TEST_NO_LIB=WHAT[,WHAT...] (for tests): the library WHAT ("cairo", "netCDF") is not found,
  * as on a machine without its package. */
 static int hidden(const char *what) {
@@ -17,26 +19,28 @@ static int hidden(const char *what) {
     return 0;
 }
 
-int cs_dynlib_bind(const char *what, const char *soname, const char *const *names, void *table, int n,
-                   char *why, size_t why_size) {
+cs_status cs_dynlib_bind(const char *what, const char *soname, const char *const *names, void *table, int n,
+                         cs_error *err) {
+    char message[CS_MESSAGE_SIZE];
     if (hidden(what)) {
-        snprintf(why, why_size, "%s (%s) could not be loaded: hidden by CABLESIM_TEST_NO_LIB", what, soname);
-        return -1;
+        snprintf(message, sizeof message, "%s (%s) could not be loaded: hidden by CABLESIM_TEST_NO_LIB", what,
+                 soname);
+        return cs_status_set(err, CS_ERR_IO, message);
     }
     void *h = dlopen(soname, RTLD_NOW | RTLD_LOCAL);
     if (!h) {
-        snprintf(why, why_size, "%s (%s) could not be loaded: %s", what, soname, dlerror());
-        return -1;
+        snprintf(message, sizeof message, "%s (%s) could not be loaded: %s", what, soname, dlerror());
+        return cs_status_set(err, CS_ERR_IO, message);
     }
     for (int i = 0; i < n; i++) {
         void *sym = dlsym(h, names[i]);
         if (!sym) {
-            snprintf(why, why_size, "%s (%s) has no %s", what, soname, names[i]);
+            snprintf(message, sizeof message, "%s (%s) has no %s", what, soname, names[i]);
             dlclose(h);
-            return -1;
+            return cs_status_set(err, CS_ERR_IO, message);
         }
         /* POSIX: dlsym's object pointer converts to the function's; the table's fields are such pointers */
         memcpy((char *)table + (size_t)i * sizeof sym, &sym, sizeof sym);
     }
-    return 0;
+    return CS_OK;
 }

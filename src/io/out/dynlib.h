@@ -12,16 +12,19 @@
 
 #include <stddef.h>
 
+#include "cablesim/sim.h"
+
 /* A table's field: a pointer to the function of that name, of its declared type. */
 #define CS_DYNLIB_FIELD(name) __typeof__(name) *name;
 /* A table's entry in the list of names bound. */
 #define CS_DYNLIB_NAME(name) #name,
 
 /* Loads the shared object soname (RTLD_NOW | RTLD_LOCAL, never unloaded) and fills the n function
- * pointers of table, in the order of names. 0; -1 with why ("cairo (libcairo.so.2) ...: dlerror's
- * reason", or the missing function). For tests, CABLESIM_TEST_NO_LIB=WHAT[,WHAT...] makes the libraries
- * named WHAT fail so, as on a machine without their packages. */
-int cs_dynlib_bind(const char *what, const char *soname, const char *const *names, void *table, int n,
-                   char *why, size_t why_size);
+ * pointers of table, in the order of names. CS_OK; CS_ERR_IO with err filled ("cairo
+ * (libcairo.so.2) ...: dlerror's reason", or the missing function). For tests,
+ * CABLESIM_TEST_NO_LIB=WHAT[,WHAT...] makes the libraries named WHAT fail so, as on a machine without their
+ * packages. */
+cs_status cs_dynlib_bind(const char *what, const char *soname, const char *const *names, void *table, int n,
+                         cs_error *err);
 
 #endif

@@ -9,19 +9,19 @@
 cs_netcdf_lib cs_netcdf;
 
 static const char *const names[] = {CS_NETCDF_FUNCTIONS(CS_DYNLIB_NAME)};
-static char failure[512];
+static cs_error failure; /* CS_OK, or why it could not be loaded */
 static pthread_once_t once = PTHREAD_ONCE_INIT;
 
 _Static_assert(sizeof cs_netcdf == sizeof names / sizeof *names * sizeof(void *), "a table of pointers");
 
 static void load(void) {
     cs_dynlib_bind("netCDF", CS_NETCDF_SONAME, names, &cs_netcdf, (int)(sizeof names / sizeof *names),
-                   failure, sizeof failure);
+                   &failure);
 }
 
-int cs_netcdf_load(char *why, size_t why_size) {
+cs_status cs_netcdf_load(cs_error *err) {
     pthread_once(&once, load);
-    if (!failure[0]) return 0;
-    snprintf(why, why_size, "%s", failure);
-    return -1;
+    if (failure.status == CS_OK) return CS_OK;
+    if (err) *err = failure;
+    return failure.status;
 }

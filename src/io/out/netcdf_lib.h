@@ -10,8 +10,9 @@
 
 #define CS_NETCDF_FUNCTIONS(X)                                                                               \
     X(nc_create)                                                                                             \
-    X(nc_def_dim) X(nc_def_var) X(nc_put_att_text) X(nc_put_att_int) X(nc_put_att_double) X(nc_enddef)       \
-        X(nc_put_var_text) X(nc_put_var_int) X(nc_put_var_double) X(nc_close) X(nc_abort) X(nc_strerror)
+    X(nc_def_dim)                                                                                            \
+    X(nc_def_var) X(nc_put_att_text) X(nc_put_att_int) X(nc_put_att_double) X(nc_enddef) X(nc_put_var_text)  \
+        X(nc_put_var_int) X(nc_put_var_double) X(nc_close) X(nc_abort) X(nc_strerror)
 
 typedef struct cs_netcdf_lib {
     CS_NETCDF_FUNCTIONS(CS_DYNLIB_FIELD)
@@ -19,8 +20,8 @@ typedef struct cs_netcdf_lib {
 
 extern cs_netcdf_lib cs_netcdf;
 
-/* netCDF's functions, loaded once (thread-safe): 0; -1 with why. */
-int cs_netcdf_load(char *why, size_t why_size);
+/* netCDF's functions, loaded once (thread-safe): CS_OK; CS_ERR_IO with err filled (dynlib.h). */
+cs_status cs_netcdf_load(cs_error *err);
 
 #define nc_create (cs_netcdf.nc_create)
 #define nc_def_dim (cs_netcdf.nc_def_dim)

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "cairo_lib.h"
+#include "status.h"
 
 static cairo_status_t to_file(void *closure, const unsigned char *data, unsigned int length) {
     return fwrite(data, 1, length, closure) == length ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
@@ -31,7 +32,8 @@ static int write_svg(FILE *f, const char *svg, size_t svg_size, const char *text
 /* Draw on a surface of format and write it to f; f NULL: an image, written nowhere, traced into log. */
 static int plot_write(FILE *f, cs_plot_format format, double width, double height, cs_plot_draw_fn draw,
                       const void *user, cs_plot_log *log, char *why, size_t why_size) {
-    if (cs_cairo_load(why, why_size) != 0) return -1;
+    cs_error err;
+    if (cs_cairo_load(&err) != CS_OK) return cs_status_why(err.status, &err, why, why_size);
     cairo_surface_t *s;
     char *svg = NULL, *texts = NULL;
     size_t svg_size = 0, texts_size = 0;

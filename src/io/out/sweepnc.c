@@ -11,6 +11,7 @@
 
 #include "cairo_lib.h"
 #include "netcdf_lib.h"
+#include "status.h"
 #include "sweepout.h"
 
 /* A variable of runs.nc: a varied input (in), a result column (col), or, with neither, the run index. */
@@ -151,7 +152,8 @@ int cs_sweep_write_netcdf(const char *path, const cs_sweep_spec *s, const double
             if (len > vars[m].width) vars[m].width = len;
         }
     }
-    if (cs_netcdf_load(why, why_size) != 0) return -1;
+    cs_error err;
+    if (cs_netcdf_load(&err) != CS_OK) return cs_status_why(err.status, &err, why, why_size);
     ncfile f = {0, NC_NOERR, ""};
     if (!check(&f, nc_create(path, NC_CLOBBER | NC_64BIT_OFFSET, &f.id), "creating", "the file")) {
         snprintf(why, why_size, "%s: %s", f.doing, nc_strerror(f.status));
@@ -184,15 +186,18 @@ int cs_sweep_write_netcdf(const char *path, const cs_sweep_spec *s, const double
 }
 
 int cs_sweep_outputs_loadable(const cs_sweep_spec *spec, char *why, size_t why_size) {
-    char lib[400];
-    if (cs_cairo_load(lib, sizeof lib) != 0) {
-        snprintf(why, why_size, "%s: a study draws its figures with it (plots/study-*.png); install its package",
-                 lib);
+    cs_error err;
+    const char *lib = err.message;
+    if (cs_cairo_load(&err) != CS_OK) {
+        snprintf(why, why_size,
+                 "%s: a study draws its figures with it (plots/study-*.png); install its package", lib);
         return -1;
     }
-    if (spec->netcdf && cs_netcdf_load(lib, sizeof lib) != 0) {
-        snprintf(why, why_size, "%s: runs.nc (--netcdf, or `netcdf: true` in the spec) needs it; install its "
-                 "package or leave runs.nc out", lib);
+    if (spec->netcdf && cs_netcdf_load(&err) != CS_OK) {
+        snprintf(why, why_size,
+                 "%s: runs.nc (--netcdf, or `netcdf: true` in the spec) needs it; install its "
+                 "package or leave runs.nc out",
+                 lib);
         return -1;
     }
     return 0;
