@@ -152,8 +152,8 @@ typedef struct known_lines {
     cs_box *area;
 } known_lines;
 
-static int draw_known(cs_plot *p, const void *user, char *why, size_t why_size) {
-    (void)why, (void)why_size;
+static cs_status draw_known(cs_plot *p, const void *user, cs_error *err) {
+    (void)err;
     const known_lines *k = user;
     cs_axes a;
     cs_axes_init(&a, "known lines", "x (m)", "y (kN)");
@@ -166,7 +166,7 @@ static int draw_known(cs_plot *p, const void *user, char *why, size_t why_size) 
     cs_plot_line(p, &a, x, y, 2, &red, "y = 2.5");
     cs_plot_line(p, &a, vx, vy, 2, &blue, NULL);
     *k->area = a.area;
-    return 0;
+    return CS_OK;
 }
 
 /* Mean pixel centre along a scan of the pixels that are mostly of channel ch (cairo RGB24 is B, G, R). */
@@ -193,8 +193,8 @@ static void test_known_value_lands_on_its_pixel(void **state) {
     tmp_file(&d, "known.png", path, sizeof path);
     cs_box area = {0, 0, 0, 0};
     known_lines k = {&area};
-    char why[256] = "";
-    if (cs_plot_save(path, 640, 400, draw_known, &k, why, sizeof why) != 0) fail_msg("%s", why);
+    cs_error err;
+    if (cs_plot_save(path, 640, 400, draw_known, &k, &err) != CS_OK) fail_msg("%s", err.message);
     check_png(path, 640, 400);
     /* the area is a real part of the picture */
     assert_true(area.x > 20 && area.y > 10 && area.w > 400 && area.h > 250);
@@ -209,12 +209,12 @@ static void test_known_value_lands_on_its_pixel(void **state) {
     const char *names[] = {"known.png", "known.svg", "known.pdf"};
     for (int f = 1; f < 3; f++) {
         tmp_file(&d, names[f], path, sizeof path);
-        if (cs_plot_save(path, 640, 400, draw_known, &k, why, sizeof why) != 0) fail_msg("%s", why);
+        if (cs_plot_save(path, 640, 400, draw_known, &k, &err) != CS_OK) fail_msg("%s", err.message);
         (f == 1 ? check_svg : check_pdf)(path);
     }
     tmp_file(&d, "known.txt", path, sizeof path);
-    assert_int_equal(cs_plot_save(path, 640, 400, draw_known, &k, why, sizeof why), -1);
-    assert_non_null(strstr(why, "unknown plot format"));
+    assert_int_equal(cs_plot_save(path, 640, 400, draw_known, &k, &err), CS_ERR_INVALID);
+    assert_non_null(strstr(err.message, "unknown plot format"));
     tmp_remove(&d, names, 3);
 }
 
@@ -242,8 +242,8 @@ static void check_legends_clear(const cs_plot_log *log, const char *what) {
 }
 
 /* Labels at the four corners of a panel and at its middle, each offset outward. */
-static int draw_corner_labels(cs_plot *p, const void *user, char *why, size_t why_size) {
-    (void)user, (void)why, (void)why_size;
+static cs_status draw_corner_labels(cs_plot *p, const void *user, cs_error *err) {
+    (void)user, (void)err;
     cs_axes a;
     cs_axes_init(&a, "labels", "x (m)", "y (kN)");
     cs_axes_set_x(&a, 0, 10);
@@ -255,15 +255,15 @@ static int draw_corner_labels(cs_plot *p, const void *user, char *why, size_t wh
         for (int align = 0; align <= 2; align++)
             cs_plot_label(p, &a, at[k][0], at[k][1], at[k][2], at[k][3], 0.5 * align,
                           "a long note: max 3.55 g at t = 0.418 s");
-    return 0;
+    return CS_OK;
 }
 
 static void test_labels_stay_inside_the_frame(void **state) {
     (void)state;
     cs_plot_log *log = calloc(1, sizeof *log);
     assert_non_null(log);
-    char why[256] = "";
-    if (cs_plot_trace(640, 400, draw_corner_labels, NULL, log, why, sizeof why) != 0) fail_msg("%s", why);
+    cs_error err;
+    if (cs_plot_trace(640, 400, draw_corner_labels, NULL, log, &err) != CS_OK) fail_msg("%s", err.message);
     assert_int_equal(log->panel_count, 1);
     assert_int_equal(log->text_count > 15, 1);
     int labels = 0;

@@ -43,7 +43,7 @@ typedef struct plot_job {
     int count, reference;
 } plot_job;
 
-static int draw(cs_plot *p, const void *user, char *why, size_t why_size) {
+static cs_status draw(cs_plot *p, const void *user, cs_error *err) {
     const plot_job *job = user;
     const figure *f = job->fig;
     cs_axes a;
@@ -54,10 +54,7 @@ static int draw(cs_plot *p, const void *user, char *why, size_t why_size) {
     for (int k = 0; k < job->count; k++)
         if (job->traces[k].n > most) most = job->traces[k].n;
     double *y = malloc((most ? most : 1) * sizeof *y);
-    if (!y) {
-        snprintf(why, why_size, "out of memory");
-        return -1;
-    }
+    if (!y) return cs_status_set(err, CS_ERR_MEMORY, "out of memory");
     double t0 = 0.0, t1 = -HUGE_VAL;       /* the time axis: from 0 (or an earlier start) to the last end */
     for (int pass = 0; pass < 2; pass++) { /* fit every trace, lay the axes out, then draw them */
         for (int k = 0; k < job->count; k++) {
@@ -84,13 +81,14 @@ static int draw(cs_plot *p, const void *user, char *why, size_t why_size) {
     }
     cs_plot_legend(p, &a, CS_LEGEND_TOP_RIGHT);
     free(y);
-    return 0;
+    return CS_OK;
 }
 
 int cs_compare_trace(int k, const cs_trace *traces, int count, int reference, cs_plot_log *log, char *why,
                      size_t why_size) {
     plot_job job = {&figures[k], traces, count, reference};
-    return cs_plot_trace(WIDTH, HEIGHT, draw, &job, log, why, why_size);
+    cs_error err;
+    return cs_status_why(cs_plot_trace(WIDTH, HEIGHT, draw, &job, log, &err), &err, why, why_size);
 }
 
 /* ---- the table ---- */
@@ -359,7 +357,8 @@ int cs_compare_write_traces(cs_outdir *out, const cs_trace *traces, int count, i
             snprintf(name, sizeof name, "plots/%s.%s", figures[k].name, cs_plot_extension(formats[j]));
             if (!(f = cs_out_begin(out, name, &err))) return cs_status_why(err.status, &err, why, why_size);
             plot_job job = {&figures[k], traces, count, reference};
-            int rc = cs_plot_write(f, formats[j], WIDTH, HEIGHT, draw, &job, why, why_size);
+            int rc = cs_status_why(cs_plot_write(f, formats[j], WIDTH, HEIGHT, draw, &job, &err), &err, why,
+                                   why_size);
             if (finish(out, f, rc, why, why_size) != 0) return -1;
         }
     /* the page: the table and each plot's SVG inline, so it opens from disk alone */

@@ -608,20 +608,21 @@ typedef struct figure_job {
 } figure_job;
 
 /* cs_plot_draw_fn: the scratch series of the figure's frames, then the figure. */
-static int draw_figure(cs_plot *p, const void *user, char *why, size_t why_size) {
+static cs_status draw_figure(cs_plot *p, const void *user, cs_error *err) {
     const figure_job *job = user;
     const cs_record *r = job->d->rec;
     size_t n = (size_t)r->frame_count;
     double *t = malloc((n * (size_t)SERIES(r->cable_count) + 1) * sizeof *t);
     if (!t) {
-        snprintf(why, why_size, "out of memory while drawing %s", figures[job->figure].name);
-        return -1;
+        char message[CS_MESSAGE_SIZE];
+        snprintf(message, sizeof message, "out of memory while drawing %s", figures[job->figure].name);
+        return cs_status_set(err, CS_ERR_MEMORY, message);
     }
     for (size_t i = 0; i < n; i++)
         t[i] = r->vehicle[i].t;
     figures[job->figure].draw(p, job->d, t);
     free(t);
-    return 0;
+    return CS_OK;
 }
 
 /* Write figure to f in format, or trace it into log (f NULL). */
@@ -634,8 +635,10 @@ static int figure_out(FILE *f, cs_plot_format format, cs_plot_log *log, cs_figur
     double w, h;
     cs_figure_size(figure, d, &w, &h);
     figure_job job = {d, figure};
-    return f ? cs_plot_write(f, format, w, h, draw_figure, &job, why, why_size)
-             : cs_plot_trace(w, h, draw_figure, &job, log, why, why_size);
+    cs_error err;
+    cs_status st = f ? cs_plot_write(f, format, w, h, draw_figure, &job, &err)
+                     : cs_plot_trace(w, h, draw_figure, &job, log, &err);
+    return cs_status_why(st, &err, why, why_size);
 }
 
 int cs_figure_write(FILE *f, cs_plot_format format, cs_figure figure, const cs_figure_data *d, char *why,

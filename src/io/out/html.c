@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "status.h"
+
 int cs_html_figure(FILE *f, const char *id, double width, double height, cs_plot_draw_fn draw,
                    const void *user, char *why, size_t why_size) {
     char *svg = NULL;
@@ -14,7 +16,9 @@ int cs_html_figure(FILE *f, const char *id, double width, double height, cs_plot
         snprintf(why, why_size, "out of memory for a page's figure");
         return -1;
     }
-    int rc = cs_plot_write(mem, CS_PLOT_SVG, width, height, draw, user, why, why_size);
+    cs_error err;
+    int rc =
+        cs_status_why(cs_plot_write(mem, CS_PLOT_SVG, width, height, draw, user, &err), &err, why, why_size);
     fclose(mem);
     const char *p = svg ? strstr(svg, "<svg") : NULL; /* without the XML declaration */
     if (rc == 0 && !p) {

@@ -11,6 +11,8 @@
 
 #include <cairo.h>
 
+#include "cablesim/sim.h"
+
 typedef enum cs_plot_format { CS_PLOT_UNKNOWN = -1, CS_PLOT_PNG, CS_PLOT_SVG, CS_PLOT_PDF } cs_plot_format;
 
 /* The format named by a file name's extension (.png, .svg, .pdf), CS_PLOT_UNKNOWN otherwise. */
@@ -146,7 +148,8 @@ cs_rgb cs_plot_colormap(double f);
 /* A distinct colour for series k. */
 cs_rgb cs_plot_palette(int k);
 
-typedef int (*cs_plot_draw_fn)(cs_plot *p, const void *user, char *why, size_t why_size);
+/* Draws a figure on p: CS_OK, or a failure's status with err filled. */
+typedef cs_status (*cs_plot_draw_fn)(cs_plot *p, const void *user, cs_error *err);
 
 /* What a drawing put where, in device units (y down): the box of every text's ink with the frame it
  * belongs inside (a label's: its plotting area; an inside legend's: the plotting area; any other text's:
@@ -181,17 +184,18 @@ struct cs_plot_log {
     cs_plot_logged_legend legend[CS_PLOT_LOG_LEGENDS];
 };
 
-/* Draw a width x height figure with draw and write it to f in format. Returns 0, or -1 with why filled
- * (draw's own failure, a cairo error, a write error). */
-int cs_plot_write(FILE *f, cs_plot_format format, double width, double height, cs_plot_draw_fn draw,
-                  const void *user, char *why, size_t why_size);
+/* Draw a width x height figure with draw and write it to f in format. Returns CS_OK, or draw's own
+ * failure, or CS_ERR_IO with err filled (cairo not loaded, a cairo error, a write error), or
+ * CS_ERR_MEMORY. */
+cs_status cs_plot_write(FILE *f, cs_plot_format format, double width, double height, cs_plot_draw_fn draw,
+                        const void *user, cs_error *err);
 /* Draw a width x height figure with draw on an image (as a PNG would be drawn) and write nothing: log
- * (zeroed first) gets where every text and panel went. Returns 0, or -1 with why filled. */
-int cs_plot_trace(double width, double height, cs_plot_draw_fn draw, const void *user, cs_plot_log *log,
-                  char *why, size_t why_size);
-/* The same to a file; the format follows path's extension. */
-int cs_plot_save(const char *path, double width, double height, cs_plot_draw_fn draw, const void *user,
-                 char *why, size_t why_size);
+ * (zeroed first) gets where every text and panel went. Returns as cs_plot_write. */
+cs_status cs_plot_trace(double width, double height, cs_plot_draw_fn draw, const void *user, cs_plot_log *log,
+                        cs_error *err);
+/* The same to a file; the format follows path's extension (CS_ERR_INVALID for another). */
+cs_status cs_plot_save(const char *path, double width, double height, cs_plot_draw_fn draw, const void *user,
+                       cs_error *err);
 
 /* Release what cairo and fontconfig keep for the life of the process (font configuration and caches).
  * Optional, once at exit after the last plot: it keeps leak checkers quiet. */

@@ -30,10 +30,10 @@ static int write_svg(FILE *f, const char *svg, size_t svg_size, const char *text
 }
 
 /* Draw on a surface of format and write it to f; f NULL: an image, written nowhere, traced into log. */
-static int plot_write(FILE *f, cs_plot_format format, double width, double height, cs_plot_draw_fn draw,
-                      const void *user, cs_plot_log *log, char *why, size_t why_size) {
-    cs_error err;
-    if (cs_cairo_load(&err) != CS_OK) return cs_status_why(err.status, &err, why, why_size);
+static cs_status plot_write(FILE *f, cs_plot_format format, double width, double height, cs_plot_draw_fn draw,
+                            const void *user, cs_plot_log *log, cs_error *err) {
+    cs_status rc = cs_cairo_load(err);
+    if (rc != CS_OK) return rc;
     cairo_surface_t *s;
     char *svg = NULL, *texts = NULL;
     size_t svg_size = 0, texts_size = 0;
@@ -46,23 +46,21 @@ static int plot_write(FILE *f, cs_plot_format format, double width, double heigh
         if (!svg_mem || !text_mem) {
             if (svg_mem) fclose(svg_mem), free(svg);
             if (text_mem) fclose(text_mem), free(texts);
-            snprintf(why, why_size, "out of memory for an svg");
-            return -1;
+            return cs_status_set(err, CS_ERR_MEMORY, "out of memory for an svg");
         }
         s = cairo_svg_surface_create_for_stream(to_file, svg_mem, width, height);
         cairo_svg_surface_set_document_unit(s, CAIRO_SVG_UNIT_PX);
     } else if (format == CS_PLOT_PDF)
         s = cairo_pdf_surface_create_for_stream(to_file, f, width, height);
     else {
-        snprintf(why, why_size, "unknown plot format (use .png, .svg or .pdf)");
-        return -1;
+        return cs_status_set(err, CS_ERR_INVALID, "unknown plot format (use .png, .svg or .pdf)");
     }
     cairo_t *cr = cairo_create(s);
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
     if (log) memset(log, 0, sizeof *log), log->width = width, log->height = height;
     cs_plot p = {cr, width, height, log, text_mem};
-    int rc = draw(&p, user, why, why_size);
+    rc = draw(&p, user, err);
     cairo_status_t st = cairo_status(cr);
     cairo_destroy(cr);
     if (rc == 0 && st == CAIRO_STATUS_SUCCESS && format == CS_PLOT_PNG && f)
@@ -77,39 +75,42 @@ static int plot_write(FILE *f, cs_plot_format format, double width, double heigh
             st = CAIRO_STATUS_WRITE_ERROR;
         free(svg), free(texts);
     }
-    if (rc == 0 && st != CAIRO_STATUS_SUCCESS) {
-        snprintf(why, why_size, "drawing a %s: %s", cs_plot_extension(format), cairo_status_to_string(st));
-        rc = -1;
+    if (rc == CS_OK && st != CAIRO_STATUS_SUCCESS) {
+        char message[CS_MESSAGE_SIZE];
+        snprintf(message, sizeof message, "drawing a %s: %s", cs_plot_extension(format),
+                 cairo_status_to_string(st));
+        rc = cs_status_set(err, CS_ERR_IO, message);
     }
     return rc;
 }
 
-int cs_plot_write(FILE *f, cs_plot_format format, double width, double height, cs_plot_draw_fn draw,
-                  const void *user, char *why, size_t why_size) {
-    return plot_write(f, format, width, height, draw, user, NULL, why, why_size);
+cs_status cs_plot_write(FILE *f, cs_plot_format format, double width, double height, cs_plot_draw_fn draw,
+                        const void *user, cs_error *err) {
+    return plot_write(f, format, width, height, draw, user, NULL, err);
 }
 
-int cs_plot_trace(double width, double height, cs_plot_draw_fn draw, const void *user, cs_plot_log *log,
-                  char *why, size_t why_size) {
-    return plot_write(NULL, CS_PLOT_PNG, width, height, draw, user, log, why, why_size);
+cs_status cs_plot_trace(double width, double height, cs_plot_draw_fn draw, const void *user, cs_plot_log *log,
+                        cs_error *err) {
+    return plot_write(NULL, CS_PLOT_PNG, width, height, draw, user, log, err);
 }
 
-int cs_plot_save(const char *path, double width, double height, cs_plot_draw_fn draw, const void *user,
-                 char *why, size_t why_size) {
+cs_status cs_plot_save(const char *path, double width, double height, cs_plot_draw_fn draw, const void *user,
+                       cs_error *err) {
+    char message[CS_MESSAGE_SIZE];
     cs_plot_format format = cs_plot_format_of(path);
     if (format == CS_PLOT_UNKNOWN) {
-        snprintf(why, why_size, "%s: unknown plot format (use .png, .svg or .pdf)", path);
-        return -1;
+        snprintf(message, sizeof message, "%s: unknown plot format (use .png, .svg or .pdf)", path);
+        return cs_status_set(err, CS_ERR_INVALID, message);
     }
     FILE *f = fopen(path, "wb");
     if (!f) {
-        snprintf(why, why_size, "%s: %s", path, strerror(errno));
-        return -1;
+        snprintf(message, sizeof message, "%s: %s", path, strerror(errno));
+        return cs_status_set(err, CS_ERR_IO, message);
     }
-    int rc = cs_plot_write(f, format, width, height, draw, user, why, why_size);
-    if (fclose(f) != 0 && rc == 0) {
-        snprintf(why, why_size, "%s: write error", path);
-        rc = -1;
+    cs_status rc = cs_plot_write(f, format, width, height, draw, user, err);
+    if (fclose(f) != 0 && rc == CS_OK) {
+        snprintf(message, sizeof message, "%s: write error", path);
+        rc = cs_status_set(err, CS_ERR_IO, message);
     }
     return rc;
 }

@@ -8,6 +8,7 @@
 
 #include "out/html.h"
 #include "out/sweepout.h"
+#include "status.h"
 
 /* ---- the study's numbers ---- */
 
@@ -275,9 +276,9 @@ static void draw_scatter(cs_plot *p, const cs_sweep_spec *spec, const study *s, 
     if (v >= 0) cs_plot_legend(p, &a, CS_LEGEND_TOP_RIGHT);
 }
 
-static int draw(cs_plot *p, const void *user, char *why, size_t why_size) {
+static cs_status draw(cs_plot *p, const void *user, cs_error *err) {
     const figure_job *job = user;
-    (void)why, (void)why_size;
+    (void)err;
     int k = job->k;
     if (k == 0)
         draw_outcomes(p, job->s);
@@ -287,7 +288,7 @@ static int draw(cs_plot *p, const void *user, char *why, size_t why_size) {
         draw_tornado(p, job->spec, job->s, k - 1 - CS_STUDY_RESPONSES);
     else
         draw_scatter(p, job->spec, job->s, k - 1 - 2 * CS_STUDY_RESPONSES);
-    return 0;
+    return CS_OK;
 }
 
 enum { WIDTH = 900, HEIGHT = 480 };
@@ -300,7 +301,8 @@ int cs_study_write_figure(FILE *f, cs_plot_format format, int k, const cs_sweep_
         return -1;
     }
     figure_job job = {k, spec, &s};
-    int rc = cs_plot_write(f, format, WIDTH, HEIGHT, draw, &job, why, why_size);
+    cs_error err;
+    int rc = cs_status_why(cs_plot_write(f, format, WIDTH, HEIGHT, draw, &job, &err), &err, why, why_size);
     study_free(&s);
     return rc;
 }

@@ -10,6 +10,7 @@
 
 #include "cablesim/units.h"
 #include "plot.h"
+#include "status.h"
 #include "sweepout.h"
 
 static const double WIDTH = 1200, HEIGHT = 760, MARGIN = 8, CAPTION = 56, LEGEND_WIDTH = 260, NOTE = 14;
@@ -234,23 +235,24 @@ static void plot_axes(cs_plot *p, cs_axes *a, plot_text *t, const cs_sweep_spec 
 
 /* cs_plot_draw_fn: the runs with a value as points, a line per level of lines (or one, or none), the
  * crosses of the runs that broke through, the legend and the caption. */
-static int draw_plot(cs_plot *p, const void *user, char *why, size_t why_size) {
+static cs_status draw_plot(cs_plot *p, const void *user, cs_error *err) {
+    char message[CS_MESSAGE_SIZE];
     const plot_job *job = user;
     const cs_sweep_spec *s = job->spec;
     const cs_sweep_plot *pl = &s->plots[job->k];
     const cs_sweep_var *vx = &s->vars[pl->x], *vl = pl->lines >= 0 ? &s->vars[pl->lines] : NULL;
     cs_sweep_column col;
     if (!find_column(pl->y, &col)) {
-        snprintf(why, why_size, "plot: runs.csv has no column %s", pl->y);
-        return -1;
+        snprintf(message, sizeof message, "plot: runs.csv has no column %s", pl->y);
+        return cs_status_set(err, CS_ERR_INVALID, message);
     }
     size_t room = (size_t)(job->n > 0 ? job->n : 1);
     point *pt = malloc(room * sizeof *pt);
     double *xs = malloc(2 * room * sizeof *xs), *ys = xs ? xs + room : NULL;
     if (!pt || !xs) {
         free(pt), free(xs);
-        snprintf(why, why_size, "out of memory while drawing plots/%s", pl->y);
-        return -1;
+        snprintf(message, sizeof message, "out of memory while drawing plots/%s", pl->y);
+        return cs_status_set(err, CS_ERR_MEMORY, message);
     }
     display dx = display_of(vx->unit), dy = display_of(col.unit);
     long m = 0;
@@ -288,7 +290,7 @@ static int draw_plot(cs_plot *p, const void *user, char *why, size_t why_size) {
     cs_plot_text(p, MARGIN + 10, p->height - MARGIN - 0.7 * CAPTION, NOTE, 0, 0, line);
     cs_plot_text(p, MARGIN + 10, p->height - MARGIN - 0.25 * CAPTION, NOTE, 0, 0, counts);
     free(pt), free(xs);
-    return 0;
+    return CS_OK;
 }
 
 int cs_sweep_write_plot(FILE *f, const cs_sweep_spec *spec, int k, const double *x, const cs_sweep_result *r,
@@ -296,5 +298,7 @@ int cs_sweep_write_plot(FILE *f, const cs_sweep_spec *spec, int k, const double 
     char file[256];
     cs_sweep_plot_file(spec, k, file, sizeof file);
     plot_job job = {spec, k, x, r, n};
-    return cs_plot_write(f, cs_plot_format_of(file), WIDTH, HEIGHT, draw_plot, &job, why, why_size);
+    cs_error err;
+    return cs_status_why(cs_plot_write(f, cs_plot_format_of(file), WIDTH, HEIGHT, draw_plot, &job, &err),
+                         &err, why, why_size);
 }
