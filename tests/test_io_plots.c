@@ -411,7 +411,7 @@ static void synthetic_free(synthetic *s, const char *const *names, int count) {
 
 static void write_every_figure(int frames) {
     synthetic *s = synthetic_new(frames);
-    char names[CS_FIG_COUNT * 3][64], why[512] = "";
+    char names[CS_FIG_COUNT * 3][64];
     const char *list[CS_FIG_COUNT * 3];
     for (int k = 0; k < CS_FIG_COUNT; k++)
         for (int f = 0; f < 3; f++) {
@@ -422,8 +422,9 @@ static void write_every_figure(int frames) {
             tmp_file(&s->dir, names[3 * k + f], path, sizeof path);
             FILE *out = fopen(path, "wb");
             assert_non_null(out);
-            if (cs_figure_write(out, (cs_plot_format)f, (cs_figure)k, &s->d, why, sizeof why) != 0)
-                fail_msg("%s: %s", names[3 * k + f], why);
+            cs_error err;
+            if (cs_figure_write(out, (cs_plot_format)f, (cs_figure)k, &s->d, &err) != CS_OK)
+                fail_msg("%s: %s", names[3 * k + f], err.message);
             assert_int_equal(fclose(out), 0);
             double w, h;
             cs_figure_size((cs_figure)k, &s->d, &w, &h);
@@ -448,8 +449,8 @@ static void test_runs_of_one_frame_and_none(void **state) {
 
 /* Trace figure k of s into log. */
 static void trace(synthetic *s, cs_figure k, cs_plot_log *log) {
-    char why[512] = "";
-    if (cs_figure_trace(k, &s->d, log, why, sizeof why) != 0) fail_msg("%s: %s", cs_figure_name(k), why);
+    cs_error err;
+    if (cs_figure_trace(k, &s->d, log, &err) != CS_OK) fail_msg("%s: %s", cs_figure_name(k), err.message);
 }
 
 /* Every text inside its frame, every legend clear of the data, markers and notes. */
@@ -723,11 +724,10 @@ static void test_figures_through_outdir(void **state) {
     (void)state;
     synthetic *s = synthetic_new(FRAMES);
     cs_outdir out;
-    char why[512] = "";
     cs_error err;
     assert_int_equal(cs_out_open(&out, s->dir.path, 0, &err), CS_OK);
     static const cs_plot_format formats[] = {CS_PLOT_PNG, CS_PLOT_SVG};
-    if (cs_figures_write(&out, "plots", formats, 2, &s->d, why, sizeof why) != 0) fail_msg("%s", why);
+    if (cs_figures_write(&out, "plots", formats, 2, &s->d, &err) != CS_OK) fail_msg("%s", err.message);
     char names[2 * CS_FIG_COUNT][64], path[256];
     const char *list[2 * CS_FIG_COUNT];
     for (int k = 0; k < CS_FIG_COUNT; k++)

@@ -626,49 +626,44 @@ static cs_status draw_figure(cs_plot *p, const void *user, cs_error *err) {
 }
 
 /* Write figure to f in format, or trace it into log (f NULL). */
-static int figure_out(FILE *f, cs_plot_format format, cs_plot_log *log, cs_figure figure,
-                      const cs_figure_data *d, char *why, size_t why_size) {
+static cs_status figure_out(FILE *f, cs_plot_format format, cs_plot_log *log, cs_figure figure,
+                            const cs_figure_data *d, cs_error *err) {
+    char message[CS_MESSAGE_SIZE];
     if (figure < 0 || figure >= CS_FIG_COUNT) {
-        snprintf(why, why_size, "no figure %d", (int)figure);
-        return -1;
+        snprintf(message, sizeof message, "no figure %d", (int)figure);
+        return cs_status_set(err, CS_ERR_INVALID, message);
     }
     double w, h;
     cs_figure_size(figure, d, &w, &h);
     figure_job job = {d, figure};
-    cs_error err;
-    cs_status st = f ? cs_plot_write(f, format, w, h, draw_figure, &job, &err)
-                     : cs_plot_trace(w, h, draw_figure, &job, log, &err);
-    return cs_status_why(st, &err, why, why_size);
+    return f ? cs_plot_write(f, format, w, h, draw_figure, &job, err)
+             : cs_plot_trace(w, h, draw_figure, &job, log, err);
 }
 
-int cs_figure_write(FILE *f, cs_plot_format format, cs_figure figure, const cs_figure_data *d, char *why,
-                    size_t why_size) {
+cs_status cs_figure_write(FILE *f, cs_plot_format format, cs_figure figure, const cs_figure_data *d,
+                          cs_error *err) {
     if (!f) {
-        snprintf(why, why_size, "no file to write %s to", cs_figure_name(figure));
-        return -1;
+        char message[CS_MESSAGE_SIZE];
+        snprintf(message, sizeof message, "no file to write %s to", cs_figure_name(figure));
+        return cs_status_set(err, CS_ERR_INVALID, message);
     }
-    return figure_out(f, format, NULL, figure, d, why, why_size);
+    return figure_out(f, format, NULL, figure, d, err);
 }
 
-int cs_figure_trace(cs_figure figure, const cs_figure_data *d, cs_plot_log *log, char *why, size_t why_size) {
-    return figure_out(NULL, CS_PLOT_PNG, log, figure, d, why, why_size);
+cs_status cs_figure_trace(cs_figure figure, const cs_figure_data *d, cs_plot_log *log, cs_error *err) {
+    return figure_out(NULL, CS_PLOT_PNG, log, figure, d, err);
 }
 
-int cs_figures_write(cs_outdir *out, const char *subdir, const cs_plot_format *formats, int format_count,
-                     const cs_figure_data *d, char *why, size_t why_size) {
+cs_status cs_figures_write(cs_outdir *out, const char *subdir, const cs_plot_format *formats,
+                           int format_count, const cs_figure_data *d, cs_error *err) {
     char name[128];
-    cs_error err = {CS_OK, ""};
-    if (cs_out_subdir(out, subdir, &err) != CS_OK) return cs_status_why(err.status, &err, why, why_size);
-    for (int k = 0; k < CS_FIG_COUNT; k++)
-        for (int j = 0; j < format_count; j++) {
+    cs_status st = cs_out_subdir(out, subdir, err);
+    for (int k = 0; st == CS_OK && k < CS_FIG_COUNT; k++)
+        for (int j = 0; st == CS_OK && j < format_count; j++) {
             snprintf(name, sizeof name, "%s/%s.%s", subdir, figures[k].name, cs_plot_extension(formats[j]));
-            FILE *f = cs_out_begin(out, name, &err);
-            if (!f) return cs_status_why(err.status, &err, why, why_size);
-            int rc = cs_figure_write(f, formats[j], (cs_figure)k, d, why, why_size);
-            if (cs_out_finish(out, f, rc ? CS_ERR_IO : CS_OK, &err) != CS_OK) {
-                cs_status_why(err.status, &err, why, why_size); /* the file's error, else the writer's */
-                return -1;
-            }
+            FILE *f = cs_out_begin(out, name, err);
+            if (!f) return err ? err->status : CS_ERR_IO;
+            st = cs_out_finish(out, f, cs_figure_write(f, formats[j], (cs_figure)k, d, err), err);
         }
-    return 0;
+    return st;
 }

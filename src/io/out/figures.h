@@ -42,16 +42,16 @@ typedef enum cs_figure {
 const char *cs_figure_name(cs_figure figure);
 /* Its size in device units (the snapshots' height follows the geometry of the run). */
 void cs_figure_size(cs_figure figure, const cs_figure_data *d, double *width, double *height);
-/* Draw one figure to f. Returns 0, or -1 with why filled. */
-int cs_figure_write(FILE *f, cs_plot_format format, cs_figure figure, const cs_figure_data *d, char *why,
-                    size_t why_size);
+/* Draw one figure to f. Returns CS_OK, or as cs_plot_write (CS_ERR_INVALID: no such figure, no file). */
+cs_status cs_figure_write(FILE *f, cs_plot_format format, cs_figure figure, const cs_figure_data *d,
+                          cs_error *err);
 /* Draw one figure without writing it: log gets where its texts and panels went (cs_plot_trace). Returns
- * 0, or -1 with why filled. */
-int cs_figure_trace(cs_figure figure, const cs_figure_data *d, cs_plot_log *log, char *why, size_t why_size);
+ * CS_OK, or as cs_plot_trace. */
+cs_status cs_figure_trace(cs_figure figure, const cs_figure_data *d, cs_plot_log *log, cs_error *err);
 /* Every figure in every format, as subdir/<name>.<ext> files begun and ended on out; cs_out_commit
- * then renames them together with the run's other outputs. Creates out's DIR/subdir. Returns 0, or -1
- * with why filled. */
-int cs_figures_write(cs_outdir *out, const char *subdir, const cs_plot_format *formats, int format_count,
-                     const cs_figure_data *d, char *why, size_t why_size);
+ * then renames them together with the run's other outputs. Creates out's DIR/subdir. Returns CS_OK, or a
+ * failure's status with err filled (a file's own error first: outfile.h's cs_out_finish). */
+cs_status cs_figures_write(cs_outdir *out, const char *subdir, const cs_plot_format *formats,
+                           int format_count, const cs_figure_data *d, cs_error *err);
 
 #endif

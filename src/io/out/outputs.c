@@ -22,11 +22,10 @@ static cs_status write_plots(cs_outdir *out, const cs_model_input *in, const cs_
     int box = info && info->motion && info->criteria_count > 0;
     cs_figure_data d = {
         in, rec, events, n, box ? &info->exit_box : NULL, box ? info->criteria_test.standard : NULL};
-    char why[CS_MESSAGE_SIZE];
-    int rc = cs_figures_write(out, "plots", formats, 2, &d, why, sizeof why);
+    cs_status st = cs_figures_write(out, "plots", formats, 2, &d, err);
     cs_plot_release();
     free(events);
-    return rc == 0 ? CS_OK : cs_status_set(err, CS_ERR_IO, why);
+    return st;
 }
 
 cs_status cs_write_run_files(cs_outdir *out, const cs_model_input *in, const cs_model *model,
