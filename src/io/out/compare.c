@@ -380,7 +380,7 @@ int cs_compare_write_traces(cs_outdir *out, const cs_trace *traces, int count, i
         char id[16];
         snprintf(id, sizeof id, "f%d", k);
         plot_job job = {&figures[k], traces, count, reference};
-        rc = cs_html_figure(f, id, WIDTH, HEIGHT, draw, &job, why, why_size);
+        rc = cs_status_why(cs_html_figure(f, id, WIDTH, HEIGHT, draw, &job, &err), &err, why, why_size);
     }
     fputs("</body></html>\n", f);
     return finish(out, f, rc, why, why_size);

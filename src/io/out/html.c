@@ -7,27 +7,19 @@
 
 #include "status.h"
 
-int cs_html_figure(FILE *f, const char *id, double width, double height, cs_plot_draw_fn draw,
-                   const void *user, char *why, size_t why_size) {
+cs_status cs_html_figure(FILE *f, const char *id, double width, double height, cs_plot_draw_fn draw,
+                         const void *user, cs_error *err) {
     char *svg = NULL;
     size_t size = 0;
     FILE *mem = open_memstream(&svg, &size);
-    if (!mem) {
-        snprintf(why, why_size, "out of memory for a page's figure");
-        return -1;
-    }
-    cs_error err;
-    int rc =
-        cs_status_why(cs_plot_write(mem, CS_PLOT_SVG, width, height, draw, user, &err), &err, why, why_size);
+    if (!mem) return cs_status_set(err, CS_ERR_MEMORY, "out of memory for a page's figure");
+    cs_status rc = cs_plot_write(mem, CS_PLOT_SVG, width, height, draw, user, err);
     fclose(mem);
     const char *p = svg ? strstr(svg, "<svg") : NULL; /* without the XML declaration */
-    if (rc == 0 && !p) {
-        snprintf(why, why_size, "a figure without <svg>");
-        rc = -1;
-    }
+    if (rc == CS_OK && !p) rc = cs_status_set(err, CS_ERR_IO, "a figure without <svg>");
     /* every reference to an id is id="X", href="#X" or url(#X): each X becomes <id>-X */
     static const char *const refs[] = {"id=\"", "href=\"#", "url(#"};
-    while (rc == 0 && *p) {
+    while (rc == CS_OK && *p) {
         const char *next = NULL;
         size_t len = 0;
         for (int k = 0; k < 3; k++) {

@@ -11,9 +11,9 @@
 #include "out/plot.h"
 
 /* A width x height figure drawn by draw, inline as SVG. Its ids (cairo's glyphs and clip paths) take the
- * prefix `id`, so that several figures in one page do not take each other's. Returns 0, or -1 with why
- * filled. */
-int cs_html_figure(FILE *f, const char *id, double width, double height, cs_plot_draw_fn draw,
-                   const void *user, char *why, size_t why_size);
+ * prefix `id`, so that several figures in one page do not take each other's. Returns CS_OK, or as
+ * cs_plot_write (CS_ERR_MEMORY: no room for the figure). */
+cs_status cs_html_figure(FILE *f, const char *id, double width, double height, cs_plot_draw_fn draw,
+                         const void *user, cs_error *err);
 
 #endif

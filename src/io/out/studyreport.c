@@ -396,7 +396,8 @@ int cs_study_write_page(FILE *f, const cs_sweep_spec *spec, const double *x, con
         snprintf(id, sizeof id, "f%d", k);
         figure_job job = {k, spec, &s};
         fputs("<div>", f);
-        rc = cs_html_figure(f, id, WIDTH, HEIGHT, draw, &job, why, why_size);
+        cs_error err;
+        rc = cs_status_why(cs_html_figure(f, id, WIDTH, HEIGHT, draw, &job, &err), &err, why, why_size);
         fputs("</div>\n", f);
     }
     fputs("</body></html>\n", f);
