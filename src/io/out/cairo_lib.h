@@ -14,9 +14,8 @@
 
 #define CS_CAIRO_FUNCTIONS(X)                                                                                \
     X(cairo_arc)                                                                                             \
-    X(cairo_clip)                                                                                            \
-    X(cairo_close_path) X(cairo_create) X(cairo_debug_reset_static_data) X(cairo_destroy) X(cairo_fill)      \
-        X(cairo_fill_preserve) X(cairo_image_surface_create) X(cairo_line_to) X(cairo_move_to)               \
+    X(cairo_clip) X(cairo_close_path) X(cairo_create) X(cairo_debug_reset_static_data) X(cairo_destroy)      \
+        X(cairo_fill) X(cairo_fill_preserve) X(cairo_image_surface_create) X(cairo_line_to) X(cairo_move_to) \
             X(cairo_new_path) X(cairo_paint) X(cairo_pattern_add_color_stop_rgb)                             \
                 X(cairo_pattern_create_linear) X(cairo_pattern_destroy)                                      \
                     X(cairo_pdf_surface_create_for_stream) X(cairo_rectangle) X(cairo_restore)               \

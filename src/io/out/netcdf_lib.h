@@ -10,9 +10,8 @@
 
 #define CS_NETCDF_FUNCTIONS(X)                                                                               \
     X(nc_create)                                                                                             \
-    X(nc_def_dim)                                                                                            \
-    X(nc_def_var) X(nc_put_att_text) X(nc_put_att_int) X(nc_put_att_double) X(nc_enddef) X(nc_put_var_text)  \
-        X(nc_put_var_int) X(nc_put_var_double) X(nc_close) X(nc_abort) X(nc_strerror)
+    X(nc_def_dim) X(nc_def_var) X(nc_put_att_text) X(nc_put_att_int) X(nc_put_att_double) X(nc_enddef)       \
+        X(nc_put_var_text) X(nc_put_var_int) X(nc_put_var_double) X(nc_close) X(nc_abort) X(nc_strerror)
 
 typedef struct cs_netcdf_lib {
     CS_NETCDF_FUNCTIONS(CS_DYNLIB_FIELD)
