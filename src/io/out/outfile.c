@@ -3,11 +3,11 @@
 #include "outfile.h"
 
 #include "load/confine.h"
+#include "status.h"
 
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -16,18 +16,6 @@
 enum { PATH_SIZE = 1400, MAX_DEPTH = 32 };
 
 static const char tmp_prefix[] = CS_OUT_TMP_PREFIX;
-
-/* err (may be NULL) filled with status and the formatted reason; returns status. */
-static cs_status fail(cs_error *err, cs_status status, const char *fmt, ...) {
-    if (err) {
-        va_list ap;
-        va_start(ap, fmt);
-        err->status = status;
-        vsnprintf(err->message, sizeof err->message, fmt, ap);
-        va_end(ap);
-    }
-    return status;
-}
 
 /* DIR/rel into buf; 0 if it does not fit (buf then empty: no file). */
 static int full_path(const cs_outdir *out, const char *rel, char *buf, size_t size) {
@@ -91,7 +79,7 @@ static cs_status take_lock(cs_outdir *out, cs_error *err) {
     for (int tries = 0; tries < 16; tries++) {
         int fd = open(path, O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0666);
         if (fd < 0) {
-            return fail(err, CS_ERR_IO, "%s: cannot write there: %s", out->dir, strerror(errno));
+            return cs_error_set(err, CS_ERR_IO, "%s: cannot write there: %s", out->dir, strerror(errno));
         }
         struct flock fl = {0};
         fl.l_type = F_WRLCK;
@@ -101,15 +89,17 @@ static cs_status take_lock(cs_outdir *out, cs_error *err) {
             long pid = lock_holder(fd);
             close(fd);
             if (errnum != EACCES && errnum != EAGAIN) {
-                fail(err, CS_ERR_IO, "%s: cannot lock: %s", path, strerror(errnum));
+                cs_error_set(err, CS_ERR_IO, "%s: cannot lock: %s", path, strerror(errnum));
             } else if (pid > 0) {
-                fail(err, CS_ERR_IO,
-                     "%s is in use by another cablesim (pid %ld holds %s): wait for it to end, or write "
-                     "elsewhere",
-                     out->dir, pid, path);
+                cs_error_set(
+                    err, CS_ERR_IO,
+                    "%s is in use by another cablesim (pid %ld holds %s): wait for it to end, or write "
+                    "elsewhere",
+                    out->dir, pid, path);
             } else {
-                fail(err, CS_ERR_IO, "%s is in use by another cablesim (it holds %s): wait for it to end",
-                     out->dir, path);
+                cs_error_set(err, CS_ERR_IO,
+                             "%s is in use by another cablesim (it holds %s): wait for it to end", out->dir,
+                             path);
             }
             return CS_ERR_IO;
         }
@@ -120,7 +110,7 @@ static cs_status take_lock(cs_outdir *out, cs_error *err) {
             char pid[32];
             int n = snprintf(pid, sizeof pid, "%ld\n", (long)getpid());
             if (ftruncate(fd, 0) != 0 || pwrite(fd, pid, (size_t)n, 0) != n) {
-                cs_status st = fail(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
+                cs_status st = cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
                 close(fd);
                 return st;
             }
@@ -129,7 +119,7 @@ static cs_status take_lock(cs_outdir *out, cs_error *err) {
         }
         close(fd);
     }
-    return fail(err, CS_ERR_IO, "%s: cannot take the lock: other cablesim runs keep taking it", path);
+    return cs_error_set(err, CS_ERR_IO, "%s: cannot take the lock: other cablesim runs keep taking it", path);
 }
 
 static void release(cs_outdir *out) {
@@ -158,7 +148,7 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
     if (fd < 0 && errno == ENOENT) return CS_OK;
     FILE *f = fd < 0 ? NULL : fdopen(fd, "r");
     if (!f) {
-        cs_status st = fail(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
+        cs_status st = cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
         if (fd >= 0) close(fd);
         return st;
     }
@@ -180,7 +170,7 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
             char(*grown)[128] = realloc(out->prev, (size_t)cap * sizeof *grown);
             if (!grown) {
                 fclose(f);
-                return fail(err, CS_ERR_MEMORY, "out of memory reading %s", path);
+                return cs_error_set(err, CS_ERR_MEMORY, "out of memory reading %s", path);
             }
             out->prev = grown;
         }
@@ -199,7 +189,7 @@ static cs_status write_manifest(cs_outdir *out, int with_prev, cs_error *err) {
     int fd = mkstemp(tmp);
     FILE *f = fd < 0 ? NULL : fdopen(fd, "w");
     if (!f) {
-        cs_status st = fail(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
+        cs_status st = cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
         if (fd >= 0) close(fd), unlink(tmp);
         return st;
     }
@@ -214,7 +204,7 @@ static cs_status write_manifest(cs_outdir *out, int with_prev, cs_error *err) {
     int errnum = errno;
     bad |= fclose(f) != 0;
     if (bad || rename(tmp, path) != 0) {
-        cs_status st = fail(err, CS_ERR_IO, "%s: %s", path, strerror(bad ? errnum : errno));
+        cs_status st = cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(bad ? errnum : errno));
         unlink(tmp);
         return st;
     }
@@ -236,7 +226,7 @@ static int scan(const cs_outdir *out, const char *rel, int depth, int remove, ch
         snprintf(path, sizeof path, "%s", out->dir);
     DIR *d = opendir(path);
     if (!d) {
-        fail(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
+        cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
         return -1;
     }
     int rc = 0;
@@ -272,10 +262,11 @@ static cs_status check_contents(cs_outdir *out, cs_error *err) {
     char found[PATH_SIZE];
     int rc = scan(out, "", 0, 0, found, sizeof found, err);
     if (rc == 1)
-        fail(err, CS_ERR_IO,
-             "%s holds %s, which no cablesim run wrote there (%s lists what one wrote): choose another "
-             "folder, or give --force to write beside such files (none of them is removed)",
-             out->dir, found, CS_OUT_MANIFEST);
+        cs_error_set(
+            err, CS_ERR_IO,
+            "%s holds %s, which no cablesim run wrote there (%s lists what one wrote): choose another "
+            "folder, or give --force to write beside such files (none of them is removed)",
+            out->dir, found, CS_OUT_MANIFEST);
     if (rc == 0) rc = scan(out, "", 0, 1, found, sizeof found, err);
     return rc == 0 ? CS_OK : CS_ERR_IO;
 }
@@ -288,7 +279,7 @@ cs_status cs_out_open(cs_outdir *out, const char *dir, int flags, cs_error *err)
     umask(mask);
     out->mode = 0666u & ~(unsigned)mask;
     if (strlen(dir) >= sizeof out->dir - 80) {
-        return fail(err, CS_ERR_INVALID, "%s: output path too long", dir);
+        return cs_error_set(err, CS_ERR_INVALID, "%s: output path too long", dir);
     }
     snprintf(out->dir, sizeof out->dir, "%s", dir);
     char part[1024];
@@ -299,7 +290,7 @@ cs_status cs_out_open(cs_outdir *out, const char *dir, int flags, cs_error *err)
             out->made++;
         } else if (errno != EEXIST) {
             cs_out_abort(out);
-            return fail(err, CS_ERR_IO, "%s: %s", part, strerror(errno));
+            return cs_error_set(err, CS_ERR_IO, "%s: %s", part, strerror(errno));
         } else {
             out->made = 0; /* only a trailing run of made folders is ours to remove */
         }
@@ -308,7 +299,7 @@ cs_status cs_out_open(cs_outdir *out, const char *dir, int flags, cs_error *err)
     int found = stat(dir, &st) == 0;
     if (!found || !S_ISDIR(st.st_mode)) {
         cs_out_abort(out);
-        return fail(err, CS_ERR_IO, "%s: %s", dir, strerror(found ? ENOTDIR : errno));
+        return cs_error_set(err, CS_ERR_IO, "%s: %s", dir, strerror(found ? ENOTDIR : errno));
     }
     cs_status status = take_lock(out, err);
     if (status == CS_OK) status = read_manifest(out, err);
@@ -323,12 +314,12 @@ cs_status cs_out_subdir(cs_outdir *out, const char *subdir, cs_error *err) {
     struct stat st;
     int made = mkdir(path, 0777) == 0;
     if (!made && errno != EEXIST) {
-        return fail(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
+        return cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
     }
     if (made && out->subdir_count < 8)
         snprintf(out->subdirs[out->subdir_count++], sizeof out->subdirs[0], "%s", subdir);
     if (lstat(path, &st) != 0 || !S_ISDIR(st.st_mode)) { /* a file, or a link to somewhere else */
-        return fail(err, CS_ERR_IO, "%s: not a folder of this one (%s)", path, strerror(ENOTDIR));
+        return cs_error_set(err, CS_ERR_IO, "%s: not a folder of this one (%s)", path, strerror(ENOTDIR));
     }
     return CS_OK;
 }
@@ -337,24 +328,25 @@ cs_status cs_out_subdir(cs_outdir *out, const char *subdir, cs_error *err) {
 static int begin(cs_outdir *out, const char *name, cs_error *err) {
     char final[PATH_SIZE], tmp[PATH_SIZE];
     if (out->count == CS_OUT_MAX_FILES) {
-        fail(err, CS_ERR_MEMORY, "too many output files");
+        cs_error_set(err, CS_ERR_MEMORY, "too many output files");
         return -1;
     }
     if (strlen(name) >= sizeof out->names[0] || !inside(name)) {
-        fail(err, CS_ERR_INVALID, "%s/%s: not a name for an output file", out->dir, name);
+        cs_error_set(err, CS_ERR_INVALID, "%s/%s: not a name for an output file", out->dir, name);
         return -1;
     }
     full_path(out, name, final, sizeof final);
     struct stat st;
     if (lstat(final, &st) == 0 && S_ISDIR(st.st_mode)) {
-        fail(err, CS_ERR_IO, "%s: %s", final, strerror(EISDIR));
+        cs_error_set(err, CS_ERR_IO, "%s: %s", final, strerror(EISDIR));
         return -1;
     }
     if (lstat(final, &st) == 0 && !listed(out, name)) {
-        fail(err, CS_ERR_IO,
-             "%s: a file no cablesim run wrote is there (not in %s/%s): it is kept; remove it or write "
-             "elsewhere",
-             final, out->dir, CS_OUT_MANIFEST);
+        cs_error_set(
+            err, CS_ERR_IO,
+            "%s: a file no cablesim run wrote is there (not in %s/%s): it is kept; remove it or write "
+            "elsewhere",
+            final, out->dir, CS_OUT_MANIFEST);
         return -1;
     }
     const char *slash = strrchr(name, '/');
@@ -364,7 +356,7 @@ static int begin(cs_outdir *out, const char *name, cs_error *err) {
     full_path(out, rel, tmp, sizeof tmp);
     int fd = mkstemp(tmp);
     if (fd < 0) {
-        fail(err, CS_ERR_IO, "%s: %s", final, strerror(errno));
+        cs_error_set(err, CS_ERR_IO, "%s: %s", final, strerror(errno));
         return -1;
     }
     snprintf(rel, sizeof out->tmps[0], "%s", tmp + strlen(out->dir) + 1); /* the name mkstemp chose */
@@ -413,7 +405,7 @@ FILE *cs_out_begin(cs_outdir *out, const char *name, cs_error *err) {
     c[1] = 0;
     FILE *f = fopencookie(c, "w", (cookie_io_functions_t){NULL, stream_write, NULL, stream_close});
     if (!f) {
-        fail(err, CS_ERR_IO, "%s/%s: %s", out->dir, name, strerror(errno));
+        cs_error_set(err, CS_ERR_IO, "%s/%s: %s", out->dir, name, strerror(errno));
         close(fd);
     }
     return f;
@@ -429,7 +421,7 @@ cs_status cs_out_begin_path(cs_outdir *out, const char *name, char *path, size_t
 }
 
 static cs_status end_failed(const cs_outdir *out, int i, int errnum, cs_error *err) {
-    return fail(err, CS_ERR_IO, "%s/%s: %s", out->dir, out->names[i], strerror(errnum));
+    return cs_error_set(err, CS_ERR_IO, "%s/%s: %s", out->dir, out->names[i], strerror(errnum));
 }
 
 /* Start writing fd's data to the disk, not waiting for it: cs_out_commit's fsync of each file then waits
@@ -500,7 +492,8 @@ static cs_status remove_earlier(const cs_outdir *out, const char *rel, cs_error 
     full_path(out, rel, path, sizeof path);
     if (lstat(path, &st) != 0 || S_ISDIR(st.st_mode)) return CS_OK;
     if (unlink(path) == 0 || errno == ENOENT) return CS_OK;
-    return fail(err, CS_ERR_IO, "%s: an earlier run's file, cannot be removed: %s", path, strerror(errno));
+    return cs_error_set(err, CS_ERR_IO, "%s: an earlier run's file, cannot be removed: %s", path,
+                        strerror(errno));
 }
 
 cs_status cs_out_commit(cs_outdir *out, cs_error *err) {
@@ -516,7 +509,7 @@ cs_status cs_out_commit(cs_outdir *out, cs_error *err) {
         full_path(out, out->tmps[i], tmp, sizeof tmp);
         full_path(out, out->names[i], final, sizeof final);
         if (rename(tmp, final) != 0) {
-            return fail(err, CS_ERR_IO, "%s: %s", final, strerror(errno));
+            return cs_error_set(err, CS_ERR_IO, "%s: %s", final, strerror(errno));
         }
     }
     for (int i = 0; i < out->prev_count; i++) {
@@ -601,7 +594,7 @@ cs_status cs_out_journal_start(cs_outdir *out, const char *text, size_t len, cs_
     int fd = mkstemp(tmp);
     if (fd < 0 || fchmod(fd, (mode_t)out->mode) != 0 || write_all_sync(fd, text, len) != 0 ||
         rename(tmp, path) != 0) {
-        cs_status st = fail(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
+        cs_status st = cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
         if (fd >= 0) close(fd), unlink(tmp);
         return st;
     }
@@ -615,7 +608,7 @@ cs_status cs_out_journal_add(cs_outdir *out, const char *text, size_t len, cs_er
     if (out->journal < 0 || write_all_sync(out->journal, text, len) != 0) {
         char path[PATH_SIZE];
         full_path(out, CS_OUT_JOURNAL, path, sizeof path);
-        return fail(err, CS_ERR_IO, "%s: %s", path, out->journal < 0 ? "not open" : strerror(errno));
+        return cs_error_set(err, CS_ERR_IO, "%s: %s", path, out->journal < 0 ? "not open" : strerror(errno));
     }
     return CS_OK;
 }
@@ -625,9 +618,9 @@ char *cs_out_journal_read(const char *dir, size_t *len, cs_error *err) {
     snprintf(path, sizeof path, "%s/%s", dir, CS_OUT_JOURNAL);
     char *text = NULL;
     int errnum = 0;
-    fail(err, CS_OK, "%s", "");
+    cs_error_set(err, CS_OK, "%s", "");
     if (cs_input_read(path, (size_t)2 << 30, &text, len, &errnum, reason, sizeof reason) != 0) {
-        if (errnum != ENOENT) fail(err, CS_ERR_IO, "%s: %s", path, reason);
+        if (errnum != ENOENT) cs_error_set(err, CS_ERR_IO, "%s: %s", path, reason);
         return NULL;
     }
     while (*len > 0 && text[*len - 1] != '\n') /* a row cut short by a kill */
