@@ -113,7 +113,7 @@ fuzz-engine: fuzz-seeds
 
 fuzz-sweep: fuzz-seeds
 	$(FUZZ_RUN) $(FUZZ_BUILD)/fuzz_sweep $(FUZZ_FLAGS) -dict=fuzz/loader.dict \
-	  $(FUZZ_BUILD)/corpus-sweep $(FUZZ_BUILD)/seeds-sweep
+	  $(FUZZ_BUILD)/corpus-sweep $(FUZZ_BUILD)/seeds-sweep tests/fuzz-regressions/sweep
 
 fuzz-set: fuzz-seeds
 	$(FUZZ_RUN) bash fuzz/fuzz_set.sh $(FUZZ_SET_CS) $(FUZZ_SECONDS)
