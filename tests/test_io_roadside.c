@@ -36,16 +36,8 @@ static pinned run(const char *name, const char *const *sets, unsigned long long 
     snprintf(path, sizeof path, "roadside/%s", name);
     cs_loader *l;
     cs_model *m = example_model(path, sets, &l);
-    cs_error err;
-    cs_state *s = cs_state_create(m, &err);
-    assert_non_null(s);
-    assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
-    cs_summary sm = {.size = sizeof sm};
-    cs_state_summary(s, &sm, NULL);
-    if (sm.sudden_loss_count) /* no element drops its load without a rope, fitting or slot letting go */
-        fail_msg("%s: %d sudden losses of the force on the vehicle with no rope, fitting or attachment to "
-                 "explain them",
-                 name, sm.sudden_loss_count);
+    cs_summary sm;
+    cs_state *s = example_run(name, m, &sm);
     pinned p;
     memset(&p, 0, sizeof p);
     snprintf(p.outcome, sizeof p.outcome, "%s", cs_outcome_name(sm.outcome));
