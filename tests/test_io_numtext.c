@@ -124,11 +124,28 @@ static void pseudo_random_values(void **state) {
     assert_true(checked > 3000000);
 }
 
+/* A run's times to the decimals that show them exactly: a sum of 0.5-ms steps, with its round-off, keeps
+ * its last 5 (0.5345), a whole millisecond keeps 3 decimals (0.050), a 0.05-ms step shows 5. */
+static void times_shown_exactly(void **state) {
+    (void)state;
+    char buf[CS_TIME_TEXT_SIZE];
+    double t = 0.0;
+    for (int k = 0; k < 1069; k++)
+        t += 0.0005;
+    assert_string_equal(cs_time_text(t, buf), "0.5345");
+    assert_string_equal(cs_time_text(0.437, buf), "0.437");
+    assert_string_equal(cs_time_text(0.05, buf), "0.050");
+    assert_string_equal(cs_time_text(0.43705, buf), "0.43705");
+    assert_string_equal(cs_time_text(0.0, buf), "0.000");
+    assert_string_equal(cs_time_text(1.0 / 3.0, buf), "0.333333");
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(known_texts),
         cmocka_unit_test(rounding_edges),
         cmocka_unit_test(pseudo_random_values),
+        cmocka_unit_test(times_shown_exactly),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

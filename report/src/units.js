@@ -54,6 +54,11 @@ export function pair(kind, v) {
   return us ? `${si} (${us})` : si;
 }
 
+// A run's time as the command prints it (src/io/out/numtext.h, cs_time_text): at least 3 decimals and as
+// many more, up to 6, as show it exactly (its times are whole numbers of steps, summed with round-off).
 export function seconds(t) {
-  return `${fmt(t, 3)} s`;
+  if (t === null || t === undefined || !Number.isFinite(t)) return `${fmt(t)} s`;
+  let d = 3;
+  while (d < 6 && Math.abs(t * 10 ** d - Math.round(t * 10 ** d)) > 1e-9 * 10 ** d) d++;
+  return `${t.toFixed(d)} s`;
 }

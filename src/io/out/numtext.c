@@ -1,9 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /* "%.10g" without printf: v = M * 2^E exactly (M below 2^53); its 10 significant digits are the integer
  * nearest v * 10^(9 - X), X its decimal exponent, computed exactly as a quotient of 128-bit integers; then
- * C's rules for %g: style f when -4 <= X < 10, else style e, trailing zeros and a bare point dropped. */
+ * C's rules for %g: style f when -4 <= X < 10, else style e, trailing zeros and a bare point dropped. And a
+ * run's times for the text outputs, to the decimals that show them exactly. */
 #include "numtext.h"
 
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
@@ -143,4 +145,13 @@ int cs_g10(double v, char buf[CS_G10_SIZE]) {
     }
     *p = '\0';
     return (int)(p - buf);
+}
+
+const char *cs_time_text(double t, char buf[CS_TIME_TEXT_SIZE]) {
+    int decimals = 3;
+    while (decimals < 6 &&
+           fabs(t * pow(10.0, decimals) - nearbyint(t * pow(10.0, decimals))) > 1e-9 * pow(10.0, decimals))
+        decimals++;
+    snprintf(buf, CS_TIME_TEXT_SIZE, "%.*f", decimals, t);
+    return buf;
 }

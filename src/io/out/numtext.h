@@ -13,4 +13,10 @@ enum { CS_G10_SIZE = 32 }; /* room for any "%.10g" text and its terminating NUL 
  * fit them (below 1e-17 or above 1e36 in magnitude, subnormals, infinities, NaN) go through snprintf. */
 int cs_g10(double v, char buf[CS_G10_SIZE]);
 
+/* A time of a run (in s, no unit written) as the text outputs give it: at least 3 decimals and as many more,
+ * up to 6, as it takes to show the time exactly (a run's times are whole numbers of steps, 0.5 ms by
+ * default, summed with round-off below 1e-9 s): 0.437, 0.5345, 0.050. Returns buf. */
+enum { CS_TIME_TEXT_SIZE = 32 };
+const char *cs_time_text(double t, char buf[CS_TIME_TEXT_SIZE]);
+
 #endif

@@ -4,6 +4,7 @@
 
 #include "cablesim/units.h"
 #include "out/htmltext.h"
+#include "out/numtext.h"
 #include "status.h"
 #include "writers.h"
 
@@ -127,10 +128,11 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
     cs_summary s = {.size = sizeof s};
     cs_state_summary(state, &s, NULL);
     const cs_scenario_def *sc = &in->scenario;
+    char tt[CS_TIME_TEXT_SIZE];
     cs_term_text(f, in->name);
     fprintf(f, ": ");
     if (s.outcome == CS_STOPPED)
-        fprintf(f, "the vehicle stopped at t = %.3f s\n", s.stop_time_s);
+        fprintf(f, "the vehicle stopped at t = %s s\n", cs_time_text(s.stop_time_s, tt));
     else if (cs_outcome_through(s.outcome))
         fprintf(f, "the vehicle %s, exit speed %.2f m/s (%.1f mph)\n",
                 s.outcome == CS_OVERRIDE    ? "rode over the cables"
@@ -138,23 +140,23 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
                                             : "broke through",
                 s.exit_speed_mps, s.exit_speed_mps / CS_MPH);
     else if (s.outcome == CS_NO_CONTACT)
-        fprintf(f, "the vehicle never touched the barrier (t = %.3f s)\n", s.t_end_s);
+        fprintf(f, "the vehicle never touched the barrier (t = %s s)\n", cs_time_text(s.t_end_s, tt));
     else if (s.outcome == CS_DID_NOT_CONVERGE)
         fprintf(f,
                 "the run did not converge: its barrier solves used up their budget (their count or "
-                "their work) at t = %.3f s (scenario.solve_budget); what it reached is below\n",
-                s.t_end_s);
+                "their work) at t = %s s (scenario.solve_budget); what it reached is below\n",
+                cs_time_text(s.t_end_s, tt));
     else if (s.outcome == CS_STEP_LIMIT)
         fprintf(f,
-                "the run took its %.0f steps (scenario.max_steps) at t = %.3f s, before its end time; what "
+                "the run took its %.0f steps (scenario.max_steps) at t = %s s, before its end time; what "
                 "it reached is below\n",
                 in->scenario.max_steps > 0.0 ? floor(in->scenario.max_steps) : CS_MAX_STEPS_DEFAULT,
-                s.t_end_s);
+                cs_time_text(s.t_end_s, tt));
     else if (s.outcome == CS_REDIRECTED)
         fprintf(f, "the vehicle was redirected, exit speed %.2f m/s (%.1f mph, %.1f km/h) at %.1f deg\n",
                 s.exit_speed_mps, s.exit_speed_mps / CS_MPH, s.exit_speed_mps * 3.6, s.exit_angle_deg);
     else
-        fprintf(f, "the time limit was reached at t = %.3f s\n", s.t_end_s);
+        fprintf(f, "the time limit was reached at t = %s s\n", cs_time_text(s.t_end_s, tt));
     if (info) {
         char hash[17];
         cs_model_hash_text(info->model_hash, hash);
@@ -164,7 +166,8 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
             "  impact               %.2f m/s (%.1f mph), %.1f deg, x = %.2f m (%.2f ft), %.0f kg (%.0f lb)\n",
             sc->speed, sc->speed / CS_MPH, sc->angle / CS_DEG, sc->impact_x, sc->impact_x / CS_FT,
             in->vehicle.mass, in->vehicle.mass / CS_LB);
-    fprintf(f, "  max 50-ms deceleration %.3f g at t = %.3f s\n", s.max_50ms_decel_g, s.t_max_50ms_decel_s);
+    fprintf(f, "  max 50-ms deceleration %.3f g at t = %s s\n", s.max_50ms_decel_g,
+            cs_time_text(s.t_max_50ms_decel_s, tt));
     double pen = s.max_dynamic_penetration_m;
     if (cs_penetration_is_final(s.outcome))
         fprintf(f, "  max penetration      %.3f m (%.2f ft)\n", pen, pen / CS_FT);
