@@ -6,6 +6,7 @@
 #include <stdio.h>
 
 #include "cablesim/units.h"
+#include "out/numtext.h"
 #include "study/validate.h"
 
 /* The posts failed by one kind (0 rotation limit, 1 shear, 2 pullout): left and right of the impact. */
@@ -17,10 +18,11 @@ static void posts_failed_by_kind(const cs_summary *m, int kind, int out[2]) {
 }
 
 static const char *fmt_time(double t, char *buf, size_t n) {
+    char text[CS_TIME_TEXT_SIZE];
     if (t < 0.0)
         snprintf(buf, n, "not broken");
     else
-        snprintf(buf, n, "%.3f s", t);
+        snprintf(buf, n, "%s s", cs_time_text(t, text));
     return buf;
 }
 
@@ -71,14 +73,16 @@ void cs_validate_write_crash(FILE *md, FILE *csv, cs_validate_suite *s) {
                 r->sm.exit_speed_mps / CS_MPH,
                 cs_validate_rel_err(r->sm.exit_speed_mps / CS_MPH, t->exit_mph));
     else
-        fprintf(md, "| exit speed | %.1f mph | %.1f mph | none: %s at %.3f s | the truck is not through |\n",
-                t->exit_mph, p->exit_mph, cs_outcome_name(r->sm.outcome), r->sm.t_end_s);
+        fprintf(md, "| exit speed | %.1f mph | %.1f mph | none: %s at %s s | the truck is not through |\n",
+                t->exit_mph, p->exit_mph, cs_outcome_name(r->sm.outcome), cs_time_text(r->sm.t_end_s, a));
     for (int c = 0; c < 2; c++)
-        fprintf(md, "| time when cable %d broke | %.3f s | %.3f s | %s | %s |\n", c + 1, t->brk[c], p->brk[c],
-                fmt_time(r->cable_break[c], a, sizeof a),
-                r->cable_break[c] < 0.0
-                    ? "no break"
-                    : (snprintf(b, sizeof b, "%+.0f ms", 1e3 * (r->cable_break[c] - t->brk[c])), b));
+        fprintf(
+            md,
+            "| time when the test's cable %d broke (the model's cable %d) | %.3f s | %.3f s | %s | %s |\n",
+            c + 1, c, t->brk[c], p->brk[c], fmt_time(r->cable_break[c], a, sizeof a),
+            r->cable_break[c] < 0.0
+                ? "no break"
+                : (snprintf(b, sizeof b, "%+.0f ms", 1e3 * (r->cable_break[c] - t->brk[c])), b));
     int dec_ok = r->ok && fabs(cs_validate_rel_err(r->sm.max_50ms_decel_g, t->decel_g)) <= 15.0;
     int exit_ok = r->ok && cs_outcome_through(r->sm.outcome) &&
                   fabs(cs_validate_rel_err(r->sm.exit_speed_mps / CS_MPH, t->exit_mph)) <= 15.0;
@@ -100,8 +104,9 @@ void cs_validate_write_crash(FILE *md, FILE *csv, cs_validate_suite *s) {
     fprintf(md,
             "| response | APS3 cablesim | APS3 test | APS4 cablesim | APS4 test |\n|---|---|---|---|---|\n");
     const cs_validate_result *p3 = &s->jobs[s->base[1]].r, *p4 = &s->jobs[s->base[2]].r;
-    fprintf(md, "| outcome | %s at %.3f s | withheld | %s at %.3f s | withheld |\n",
-            cs_outcome_name(p3->sm.outcome), p3->sm.t_end_s, cs_outcome_name(p4->sm.outcome), p4->sm.t_end_s);
+    fprintf(md, "| outcome | %s at %s s | withheld | %s at %s s | withheld |\n",
+            cs_outcome_name(p3->sm.outcome), cs_time_text(p3->sm.t_end_s, a), cs_outcome_name(p4->sm.outcome),
+            cs_time_text(p4->sm.t_end_s, b));
     fprintf(md, "| max 50-ms average deceleration | %.3f g | withheld | %.3f g | withheld |\n",
             p3->sm.max_50ms_decel_g, p4->sm.max_50ms_decel_g);
     fprintf(md, "| max dynamic penetration | %s | withheld | %s | withheld |\n",

@@ -80,8 +80,9 @@ static double refinement_table(FILE *md, FILE *csv, const cs_validate_suite *s, 
             worst = HUGE_VAL;
             continue;
         }
-        double decel = cs_validate_rel_err(a->sm.max_50ms_decel_g, b->sm.max_50ms_decel_g),
-               pen = cs_validate_rel_err(a->sm.max_dynamic_penetration_m, b->sm.max_dynamic_penetration_m);
+        /* the change on refining, as the arrow reads: the finest value against the coarsest */
+        double decel = cs_validate_rel_err(b->sm.max_50ms_decel_g, a->sm.max_50ms_decel_g),
+               pen = cs_validate_rel_err(b->sm.max_dynamic_penetration_m, a->sm.max_dynamic_penetration_m);
         fprintf(md, "| %s | %s -> %s | change | %+.1f%% | %+.1f%% | | |\n", cs_validate_crash_names[k],
                 values[0], values[count - 1], decel, pen);
         worst = fmax(worst, fmax(fabs(decel), fabs(pen)));
@@ -163,7 +164,7 @@ static bands bands_empty(void) {
     return (bands){band_empty(), band_empty(), band_empty(), {band_empty(), band_empty()}, 0, 0};
 }
 
-/* "| decel | penetration | exit speed | cable 1 | cable 2 |" of a table row. */
+/* "| decel | penetration | exit speed | cable 0 | cable 1 |" of a table row. */
 static void write_bands(FILE *md, const bands *b) {
     char t[5][96];
     fprintf(md, " %s | %s | %s | %s | %s |\n", band_text(&b->decel, 1.0, "%.2f", "g", "-", t[0], sizeof t[0]),
@@ -187,7 +188,7 @@ void cs_validate_write_sensitivity(FILE *md, FILE *csv, const cs_validate_suite 
             "the two ends and the file's own value (a response need not be monotone in an input). "
             "Exit speeds are those of the runs that broke through; \"unbroken\": some runs kept that "
             "rope.\n\n| test | input | outcomes (low, high) | max 50-ms decel | penetration | exit speed | "
-            "cable 1 broke | cable 2 broke |\n|---|---|---|---|---|---|---|---|\n");
+            "cable 0 broke | cable 1 broke |\n|---|---|---|---|---|---|---|---|\n");
     for (int k = 0; k < CS_VAL_CRASH; k++) {
         const cs_validate_result *base = s->base[k] >= 0 ? &s->jobs[s->base[k]].r : NULL;
         for (int i = 0; i < CS_VAL_INPUTS; i++) {
@@ -210,8 +211,8 @@ void cs_validate_write_sensitivity(FILE *md, FILE *csv, const cs_validate_suite 
     fprintf(md,
             "\nAll six inputs at once: a %d-run Latin hypercube per test, each input uniform over its range "
             "(seed %d + the test's index). The band of each response over those runs:\n\n"
-            "| test | runs | broke through | max 50-ms decel | penetration | exit speed | cable 1 broke | "
-            "cable 2 broke |\n|---|---|---|---|---|---|---|---|\n",
+            "| test | runs | broke through | max 50-ms decel | penetration | exit speed | cable 0 broke | "
+            "cable 1 broke |\n|---|---|---|---|---|---|---|---|\n",
             CS_VAL_JOINT, CS_VAL_JOINT_SEED);
     bands aps1 = bands_empty();
     for (int k = 0; k < CS_VAL_CRASH; k++) {
@@ -234,7 +235,8 @@ void cs_validate_write_sensitivity(FILE *md, FILE *csv, const cs_validate_suite 
     }
     fprintf(md,
             "\nAPS1's crash test against its joint band: deceleration %.3f g %s, exit speed %.1f mph %s, "
-            "cable 1 broke at %.3f s %s, cable 2 at %.3f s %s. A measured value well outside the sampled "
+            "the test's cable 1 broke at %.3f s %s (the model's cable 0), its cable 2 at %.3f s %s (the "
+            "model's cable 1). A measured value well outside the sampled "
             "band is a miss that these inputs, within their ranges, do not explain: it lies in the model "
             "(docs/theory.md, \"APS1's miss\").\n\n",
             t->decel_g, inside(&aps1.decel, 1.0, t->decel_g), t->exit_mph,
@@ -261,15 +263,15 @@ static void reading_row(FILE *md, const char *name, const char *what, const cs_v
 }
 
 void cs_validate_write_readings(FILE *md, FILE *csv, const cs_validate_suite *s) {
-    fprintf(md,
-            "## Readings of what the design data leaves open\n\n"
-            "Each crash test as its file reads the design (docs/assumptions.md) and under each other "
-            "documented reading of a part the paper leaves open, one at a time; then the band of each "
-            "response over all of them. APS3 and APS4 stay blind predictions.\n\n"
-            "| test | reading | outcome | max 50-ms decel | penetration | exit speed | cable 1; cable 2 "
-            "(broke where "
-            "and when, or held at its peak tension) | dead-men ploughed (start, end) | posts failed, left + "
-            "right: rotation / shear / pullout |\n|---|---|---|---|---|---|---|---|---|\n");
+    fprintf(md, "## Readings of what the design data leaves open\n\n"
+                "Each crash test as its file reads the design (docs/assumptions.md) and under each other "
+                "documented reading of a part the paper leaves open, one at a time; then the band of each "
+                "response over all of them. APS3 and APS4 stay blind predictions.\n\n"
+                "| test | reading | outcome | max 50-ms decel | penetration | exit speed | cable 0; cable 1 "
+                "(broke where "
+                "and when, or held at its peak tension) | dead-men's plastic slide (start, end) | posts "
+                "failed, left + "
+                "right: rotation / shear / pullout |\n|---|---|---|---|---|---|---|---|---|\n");
     bands all[CS_VAL_CRASH];
     for (int k = 0; k < CS_VAL_CRASH; k++) {
         all[k] = bands_empty();
@@ -289,7 +291,7 @@ void cs_validate_write_readings(FILE *md, FILE *csv, const cs_validate_suite *s)
         "\nThe band over the readings (the penetration of a run that got through is where it was when the "
         "run ended, less than the real one):\n\n| test | runs | broke through | max 50-ms decel | "
         "penetration | "
-        "exit speed | cable 1 broke | cable 2 broke |\n|---|---|---|---|---|---|---|---|\n");
+        "exit speed | cable 0 broke | cable 1 broke |\n|---|---|---|---|---|---|---|---|\n");
     for (int k = 0; k < CS_VAL_CRASH; k++) {
         fprintf(md, "| %s | %d | %d |", cs_validate_crash_names[k], all[k].runs, all[k].through);
         write_bands(md, &all[k]);
@@ -298,7 +300,9 @@ void cs_validate_write_readings(FILE *md, FILE *csv, const cs_validate_suite *s)
     fprintf(
         md,
         "\nAPS1's crash test against the band of its readings: deceleration %.3f g %s, exit speed %.1f mph "
-        "%s, cable 1 broke at %.3f s %s, cable 2 at %.3f s %s.\n\n",
+        "%s, the test's cable 1 broke at %.3f s %s (the model's cable 0), its cable 2 at %.3f s %s (the "
+        "model's "
+        "cable 1).\n\n",
         t->decel_g, inside(&all[0].decel, 1.0, t->decel_g), t->exit_mph,
         inside(&all[0].exit, CS_MPH, t->exit_mph), t->brk[0], inside(&all[0].brk[0], 1.0, t->brk[0]),
         t->brk[1], inside(&all[0].brk[1], 1.0, t->brk[1]));
