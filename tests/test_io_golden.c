@@ -144,6 +144,20 @@ static void copy_lines(const char *from, const char *to, int lines) {
     printf("pinned: %s\n", to);
 }
 
+/* Every number under "inputs" has its key in "input_units" (summary.json labels each of them). */
+static void units_of(const char *file, json_object *o, const char *key, json_object *units) {
+    json_type t = json_object_get_type(o);
+    if (t == json_type_object) {
+        json_object_object_foreach(o, k, v) units_of(file, v, k, units);
+    } else if (t == json_type_array) {
+        for (size_t i = 0; i < json_object_array_length(o); i++)
+            units_of(file, json_object_array_get_idx(o, i), key, units);
+    } else if ((t == json_type_double || t == json_type_int) &&
+               !json_object_object_get_ex(units, key, NULL)) {
+        mismatch(file, key, "a number of inputs with no unit", "one in input_units");
+    }
+}
+
 static void outputs_as_pinned(void **state) {
     (void)state;
     if (!pin_comparable()) {
@@ -182,6 +196,11 @@ static void outputs_as_pinned(void **state) {
                 json_object *g = json_object_from_file(got), *w = json_object_from_file(want);
                 if (!g || !w) fail_msg("%s: cannot read %s", file, g ? want : got);
                 same_json(file, "summary", g, w);
+                json_object *inputs, *units;
+                if (!json_object_object_get_ex(g, "inputs", &inputs) ||
+                    !json_object_object_get_ex(g, "input_units", &units))
+                    fail_msg("%s: no inputs or input_units", file);
+                units_of(file, inputs, "inputs", units);
                 json_object_put(g), json_object_put(w);
             } else {
                 same_csv(file, got, want, f == 1);

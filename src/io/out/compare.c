@@ -267,9 +267,10 @@ static int metrics_of(const cs_trace *tr, int j, int reference, int r, cs_valida
 static void write_metrics(FILE *f, const cs_trace *tr, int count, int reference, int format) {
     if (!tr[reference].measured) return;
     if (format == 0)
-        fputs("run,response,samples,sprague_geers_m,sprague_geers_p,sprague_geers_c,anova_mean,anova_std,"
-              "w179\n",
-              f);
+        fputs(
+            "run,response,samples,sprague_geers_m [1],sprague_geers_p [1],sprague_geers_c [1],anova_mean [1],"
+            "anova_std [1],w179\n",
+            f);
     else if (format == 1)
         fputs(
             "\n## Validation metrics (NCHRP W179)\n\nEach run against the measured history at its times "

@@ -127,6 +127,40 @@ static json_object *cable_input(cs_wout *w, const cs_cable_def *cable) {
     return o;
 }
 
+/* The SI unit of each number a table's fields write, by key, into units ("1" for a pure number or a count;
+ * a key has one unit wherever it stands in the schema). */
+static void junits(json_object *units, const cs_table *t) {
+    for (int i = 0; i < t->count; i++) {
+        const cs_field *fd = &t->fields[i];
+        if (fd->offset < 0) continue;
+        if (fd->kind == CS_F_MAP)
+            junits(units, fd->sub);
+        else if ((fd->kind == CS_F_QTY || fd->kind == CS_F_INT) &&
+                 !json_object_object_get_ex(units, fd->key, NULL))
+            json_object_object_add(units, fd->key,
+                                   cs_jstr(fd->kind == CS_F_INT ? "1" : cs_quantity_get(fd->q)->label));
+    }
+}
+
+/* "input_units": the unit of every number of "inputs", by its key. */
+static json_object *input_units(void) {
+    json_object *units = json_object_new_object();
+    static const struct {
+        const char *key;
+        cs_quantity q;
+    } own[] = {
+        {"x", CS_Q_LENGTH},           {"termination_efficiency", CS_Q_NUMBER}, {"slip_load", CS_Q_FORCE},
+        {"slip_travel", CS_Q_LENGTH}, {"crush_deformation", CS_Q_LENGTH},      {"crush_force", CS_Q_FORCE}};
+    for (size_t k = 0; k < sizeof own / sizeof own[0]; k++)
+        json_object_object_add(units, own[k].key, cs_jstr(cs_quantity_get(own[k].q)->label));
+    const cs_table *const tables[] = {&cs_table_cable,   &cs_table_rope,    &cs_table_posts,
+                                      &cs_table_section, &cs_table_anchors, &cs_table_vehicle,
+                                      &cs_table_scenario};
+    for (size_t k = 0; k < sizeof tables / sizeof tables[0]; k++)
+        junits(units, tables[k]);
+    return units;
+}
+
 /* The model as run, each post on a line of its own. */
 static json_object *inputs(cs_wout *w, const cs_model_input *in) {
     json_object *top = json_object_new_object(), *barrier = json_object_new_object();
@@ -381,7 +415,8 @@ json_object *cs_summary_json(const cs_model_input *in, const cs_model *model, co
     }
     json_object_object_add(doc, "events", events);
     json_object_object_add(doc, "inputs", inputs(&w, in));
-    static const char *const new_line[] = {"inputs", NULL};
+    json_object_object_add(doc, "input_units", input_units());
+    static const char *const new_line[] = {"inputs", "input_units", NULL};
     cs_jkeys_on_new_line(doc, new_line);
     if (cs_w_status(&w, "summary.json", err) == CS_OK) return doc;
     json_object_put(doc);
