@@ -284,7 +284,7 @@ function specs(data) {
       ['crush', 'crush of the vehicle', '#cc3333'],
       ['post_plastic', 'post plastic (hinges)', '#338c40'],
       ['post_damping', 'post swing and anchor slide damping', '#66a673'],
-      ['soil', 'soil (footings rotating, anchors sliding)', '#8c6138'],
+      ['soil', 'soil (footings turning, posts and anchors sliding)', '#8c6138'],
       ['cable_plastic', 'cable plastic', '#e6801a'],
       ['rail_plastic', 'rail plastic (yield, buckling)', '#4d804d'],
       ['friction', 'friction (tyres, rope sliding)', '#8c66bf'],

@@ -342,7 +342,7 @@ static const struct {
     {"crush of the vehicle", offsetof(cs_energy, crush), {0.80, 0.20, 0.20}},
     {"post plastic (hinges)", offsetof(cs_energy, post_plastic), {0.20, 0.55, 0.25}},
     {"post swing damping", offsetof(cs_energy, post_damping), {0.40, 0.65, 0.45}},
-    {"soil (footings, dead-men)", offsetof(cs_energy, soil), {0.55, 0.38, 0.22}},
+    {"soil (footings, posts, dead-men)", offsetof(cs_energy, soil), {0.55, 0.38, 0.22}},
     {"cable plastic", offsetof(cs_energy, cable_plastic), {0.90, 0.50, 0.10}},
     {"rail plastic (yield, buckling)", offsetof(cs_energy, rail_plastic), {0.30, 0.32, 0.40}},
     {"friction (tyres, rope sliding)", offsetof(cs_energy, friction), {0.55, 0.40, 0.75}},
