@@ -190,6 +190,22 @@ static void falls_are_judged_against_the_runs_peak(void **state) {
     assert_int_equal(cs_sudden_losses(t, f, SAMPLES, STEP, NULL, 0, w, 4, NULL), 0);
 }
 
+/* A stop speed above a tenth of the impact speed would call a vehicle still moving stopped: refused. */
+static void a_stop_speed_near_the_impact_speed_is_refused(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    cs_error err;
+    fx.scenario.stop_speed = 0.1 * fx.scenario.speed;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    assert_non_null(m);
+    cs_model_free(m);
+    fx.scenario.stop_speed = 0.11 * fx.scenario.speed;
+    assert_null(cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err));
+    assert_int_equal(err.status, CS_ERR_INVALID);
+    assert_non_null(strstr(err.message, "a tenth of the impact speed"));
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(cables_work_sums_to_the_vehicles_loss),
@@ -198,6 +214,7 @@ int main(void) {
         cmocka_unit_test(a_fall_with_a_rope_breaking_is_not),
         cmocka_unit_test(a_fall_of_40_percent_is_not),
         cmocka_unit_test(falls_are_judged_against_the_runs_peak),
+        cmocka_unit_test(a_stop_speed_near_the_impact_speed_is_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -278,11 +278,16 @@ typedef struct cs_scenario_def {
     double solve_budget;     /**< barrier solves a run may make, per step to t_end on average (0: 20), and
                                 their work (100 passes over the barrier's unknowns a solve); past either
                                 the run ends "did not converge" with what it has */
-    double stop_speed;       /**< forward speed below which the vehicle counts as stopped, m/s */
+    double stop_speed;       /**< forward speed below which the vehicle counts as stopped, m/s: at most
+                                CS_STOP_SPEED_SHARE of speed */
     double gravity;          /**< m/s^2 */
     double max_steps; /**< steps a run may take (0: CS_MAX_STEPS_DEFAULT, 10 million); past them the run
                          ends "step_limit" */
 } cs_scenario_def;
+
+/** The largest stop speed against the impact speed: a vehicle at a tenth of its speed keeps 1% of its kinetic
+ * energy, where a larger threshold would call a vehicle still moving stopped. */
+#define CS_STOP_SPEED_SHARE 0.1
 
 /** The steps a run may take when scenario.max_steps is 0. */
 #define CS_MAX_STEPS_DEFAULT 1.0e7

@@ -670,7 +670,17 @@ static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_de
                     "%.3g frames to the end time (t_end / output_interval) exceed the limit of %.0g "
                     "(expected a longer interval)",
                     frames, (double)CS_MAX_FRAMES);
-    above(l, sc, "speed", s->speed, "stop_speed", s->stop_speed);
+    if (!(s->stop_speed <=
+          CS_STOP_SPEED_SHARE * s->speed)) { /* a vehicle still moving would count as stopped */
+        char a[80], b[80];
+        shown(l, sc, "stop_speed", s->stop_speed, a, sizeof a);
+        shown(l, sc, "speed", s->speed, b, sizeof b);
+        cs_err_node(
+            l, blamed(at(sc, "stop_speed"), cs_node_get(sc, "speed")), 0,
+            "stop_speed %s is not small against the impact speed %s: a vehicle slower than it counts as "
+            "stopped (expected at most a tenth of the speed)",
+            a, b);
+    }
 }
 
 static const cs_node *need(cs_loader *l, const cs_node *root, const char *key, const char *hint) {

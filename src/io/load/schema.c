@@ -375,7 +375,8 @@ static const cs_field scenario_fields[] = {
        "step_limit"),
     {"solver_max_sweeps", CS_F_INT, CS_Q_NUMBER, CS_POS, (long)offsetof(cs_scenario_def, solver_max_sweeps),
      NULL, NULL, "cap on the barrier solve's sweeps in one step"},
-    SC("stop_speed", CS_Q_SPEED, CS_NONNEG, stop_speed, "forward speed below which the vehicle has stopped"),
+    SC("stop_speed", CS_Q_SPEED, CS_NONNEG, stop_speed,
+       "forward speed below which the vehicle has stopped; at most a tenth of speed"),
     SC("gravity", CS_Q_ACCELERATION, CS_NONNEG, gravity, "acceleration of gravity"),
 };
 const cs_table cs_table_scenario = {"scenario", "The attack and how to integrate it.", CS_T_SCENARIO,
