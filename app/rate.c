@@ -277,8 +277,29 @@ static int rate_antiram(cs_loader *l, const char *file, cs_standard std, const c
     return rc;
 }
 
+/* Why a --set would not reach the standard's runs (they set it themselves), or NULL: the impact speed and
+ * angle for every standard, and the vehicle for the roadside ones, which run their own test vehicles. */
+static const char *set_overridden(const char *set, int roadside) {
+    size_t n = strcspn(set, "=");
+    if (n == strlen("scenario.speed") && strncmp(set, "scenario.speed", n) == 0)
+        return "the standard's tests set the impact speed";
+    if (n == strlen("scenario.angle") && strncmp(set, "scenario.angle", n) == 0)
+        return "the standard's tests set the impact angle";
+    if (roadside && strncmp(set, "vehicle", strlen("vehicle")) == 0 &&
+        (n == strlen("vehicle") || set[strlen("vehicle")] == '.'))
+        return "the standard's tests run their own vehicles";
+    return NULL;
+}
+
+/* An option's value into *slot: -1 (go on), or a usage error if it was given before. */
+static int take(const char **slot, const char *option, const char *value) {
+    if (*slot) return cs_cli_usage_error(&rate_cli, "%s given twice (expected it once)", option);
+    *slot = value;
+    return -1;
+}
+
 int cs_command_rate(int argc, char **argv) {
-    const char *file = NULL, *std_name = NULL, *klass = NULL, *level = NULL, *test = NULL;
+    const char *file = NULL, *std_name = NULL, *klass = NULL, *level = NULL, *test = NULL, *why;
     cs_error err;
     cs_loader *l = cs_loader_create(NULL, &err);
     if (!l) {
@@ -290,21 +311,22 @@ int cs_command_rate(int argc, char **argv) {
         {"level", required_argument, NULL, 'l'},    {"test", required_argument, NULL, 't'},
         {"set", required_argument, NULL, 'S'},      {"allow-path", required_argument, NULL, 'A'},
         {"help", no_argument, NULL, 'h'},           {NULL, 0, NULL, 0}};
-    int rc = -1, v;
+    int rc = -1, v, set_count = 0;
+    const char **sets = calloc((size_t)argc + 1, sizeof *sets);
     optind = 1;
     while (rc < 0 && (v = cs_cli_next(&rate_cli, argc, argv, "h", longopts)) != -1) {
         if (v == 'h')
             rc = cs_cli_help(&rate_cli);
         else if (v == 's')
-            std_name = optarg;
+            rc = take(&std_name, "--standard", optarg);
         else if (v == 'c')
-            klass = optarg;
+            rc = take(&klass, "--class", optarg);
         else if (v == 'l')
-            level = optarg;
+            rc = take(&level, "--level", optarg);
         else if (v == 't')
-            test = optarg;
+            rc = take(&test, "--test", optarg);
         else if (v == 'S')
-            cs_loader_set(l, optarg);
+            cs_loader_set(l, sets[set_count++] = optarg);
         else if (v == 'A' && cs_loader_allow_path(l, optarg, &err) != CS_OK)
             rc = cs_cli_usage_error(&rate_cli, "--allow-path %s", err.message);
         else if (v == 'A')
@@ -312,6 +334,14 @@ int cs_command_rate(int argc, char **argv) {
         else
             rc = CS_EXIT_USAGE;
     }
+    int roadside = std_name && (strcmp(std_name, "nchrp-350") == 0 || strcmp(std_name, "mash") == 0);
+    for (int k = 0; rc < 0 && k < set_count; k++)
+        if ((why = set_overridden(sets[k], roadside)))
+            rc = cs_cli_usage_error(&rate_cli,
+                                    "--set %s: %s, so it would not be used (rate runs each test as the "
+                                    "standard gives it)",
+                                    sets[k], why);
+    free(sets);
     if (rc < 0) {
         int operands = argc - 1 - optind;
         file = operands > 0 ? argv[1 + optind] : NULL;
@@ -321,7 +351,7 @@ int cs_command_rate(int argc, char **argv) {
                                     argv[2 + optind]);
         else if (!file || !std_name)
             rc = cs_cli_usage_error(&rate_cli, "%s", !file ? "no model file" : "no --standard");
-        else if (strcmp(std_name, "nchrp-350") == 0 || strcmp(std_name, "mash") == 0)
+        else if (roadside)
             rc = klass           ? cs_cli_usage_error(&rate_cli, "--class is for the anti-ram standards")
                  : level && test ? cs_cli_usage_error(&rate_cli, "give --level or --test, not both")
                                  : rate_roadside(l, file, std_name, level, test);

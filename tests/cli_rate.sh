@@ -16,6 +16,15 @@ out=$("$cs" rate examples/aps3.yaml --standard astm-f2656 --class M45 2>&1)
 check "unknown class exits 2, naming the classes" '[ $? -eq 2 ] && grep -q "^cablesim rate: --class M45: ASTM F2656 has no such class (expected one of C40, C50, C60, PU40, PU50, PU60, M30, M40, M50, H30, H40, H50)" <<<"$out"'
 "$cs" rate --standard astm-f2656 >/dev/null 2>&1
 check "no model file exits 2" '[ $? -eq 2 ]'
+# what the standard's tests set themselves cannot be --set: refused rather than dropped; an option twice too
+out=$("$cs" rate examples/aps3.yaml --standard mash --test 3-11 --set 'scenario.speed=10 mph' 2>&1)
+check "--set scenario.speed with mash: refused, saying the tests set it" '[ $? -eq 2 ] && grep -qF -- "cablesim rate: --set scenario.speed=10 mph: the standard'"'"'s tests set the impact speed, so it would not be used" <<<"$out"'
+out=$("$cs" rate examples/roadside/rs1.yaml --standard mash --test 3-11 --set 'vehicle.mass=2100 kg' 2>&1)
+check "--set vehicle.mass with mash: refused (the tests run their own vehicles)" '[ $? -eq 2 ] && grep -qF "the standard'"'"'s tests run their own vehicles" <<<"$out"'
+out=$("$cs" rate examples/aps3.yaml --standard astm-f2656 --set 'scenario.angle=60 deg' 2>&1)
+check "--set scenario.angle with astm-f2656: refused (head-on)" '[ $? -eq 2 ] && grep -qF "the standard'"'"'s tests set the impact angle" <<<"$out"'
+out=$("$cs" rate examples/aps3.yaml --standard astm-f2656 --standard mash 2>&1)
+check "--standard twice: refused" '[ $? -eq 2 ] && grep -qxF "cablesim rate: --standard given twice (expected it once)" <<<"$out"'
 
 # A model whose vehicle is the library's PU (the rest APS3's): PU40 runs it at 40 mph, and it stops 1.74 m
 # past the cable line (P2 is 1.01-7 m: the label holds for any penetration within 0.7 m of it).
