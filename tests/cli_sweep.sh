@@ -146,6 +146,7 @@ check "a runs.nc that cannot be written: status 1, why, nothing written" '[ $? -
 # --runs, --seed and --t-end from the command line; a different seed gives other inputs
 "$cs" sweep --allow-path examples tests/sweep/mc.yaml -o "$tmp/mc-seed" --runs 3 --seed 99 --t-end "5 ms" --quiet >/dev/null 2>&1
 check "--runs --seed --t-end" '[ "$(wc -l <"$tmp/mc-seed/runs.csv")" -eq 4 ] && ! cmp -s <(head -2 "$tmp/mc-seed/runs.csv") <(head -2 "$tmp/mc-1/runs.csv") && grep -q "scenario.t_end=5 ms" "$tmp/mc-seed/summary.json"'
+check "--set of a varied path is refused, naming it" '! out=$("$cs" sweep --allow-path examples tests/sweep/mc.yaml -o "$tmp/setv" --runs 2 --set "scenario.impact_x=50 ft" 2>&1) && grep -qF -- "--set scenario.impact_x=50 ft: the study varies scenario.impact_x, so a fixed value would not be used" <<<"$out" && [ ! -e "$tmp/setv" ]'
 check "--runs on a grid is refused" '! "$cs" sweep --allow-path examples tests/sweep/grid.yaml -o "$tmp/x" --runs 3 >/dev/null 2>&1'
 
 # `cablesim check` knows a spec from a model, and checks the spec's model with its values

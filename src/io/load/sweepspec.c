@@ -386,6 +386,29 @@ static int push_set(cs_sweep_spec *s, const char *path, const char *value, int l
     return 0;
 }
 
+/* The study's varied path that a fixed path would meet (the same path, one inside it or one holding it),
+ * or NULL: each run's level would replace the fixed value, or the fixed value the level. */
+static const char *varied(const cs_sweep_spec *s, const char *path) {
+    size_t n = strlen(path);
+    for (int i = 0; i < s->var_count; i++) {
+        const char *v = s->vars[i].path;
+        size_t m = strlen(v), k = n < m ? n : m;
+        if (strncmp(v, path, k) == 0 && (n == m || strchr(".[", n < m ? v[k] : path[k]))) return v;
+    }
+    return NULL;
+}
+
+/* A fixed value (set: or --set, its place line and col, 0 for --set) on a path the study varies: an error. */
+static void set_not_varied(cs_sweep_spec *s, const char *path, const char *value, int line, int col) {
+    const char *v = varied(s, path);
+    if (v)
+        cs_sweep_error(
+            s, line, col,
+            "%s %s=%s: the study varies %s, so a fixed value would not be used (expected a path that "
+            "vary does not hold)",
+            line ? "set:" : "--set", path, value, v);
+}
+
 int cs_sweep_spec_add_set(cs_sweep_spec *s, const char *assignment) {
     const char *eq = strchr(assignment, '=');
     if (!eq || eq == assignment) {
@@ -394,6 +417,7 @@ int cs_sweep_spec_add_set(cs_sweep_spec *s, const char *assignment) {
     }
     char path[512];
     snprintf(path, sizeof path, "%.*s", (int)(eq - assignment), assignment);
+    set_not_varied(s, path, eq + 1, 0, 0);
     return push_set(s, path, eq + 1, 0, 0);
 }
 
@@ -609,6 +633,9 @@ cs_sweep_spec *cs_sweep_spec_read_buffer(const char *path, const char *data, siz
                              set->kids[i]->key_col) != 0)
                     break;
             read_vary(s, units, root);
+            for (int i = 0; top_read(set) && i < set->count; i++)
+                set_not_varied(s, set->kids[i]->key, set->kids[i]->text, set->kids[i]->key_line,
+                               set->kids[i]->key_col);
             check_runs(s, root);
             read_plots(s, root);
         }
