@@ -267,7 +267,8 @@ static int check_scenario(const cs_scenario_def *s, cs_error *err) {
                     s->max_steps);
     if (s->solver_max_sweeps < 1 || s->solver_max_sweeps > 100000)
         return fail(err, "scenario: solver sweeps must be in [1, 100000]");
-    if (!non_negative(s->stop_speed) || !(s->stop_speed <= CS_STOP_SPEED_SHARE * s->speed))
+    if (!non_negative(s->stop_speed) ||
+        (s->speed > 0.0 && !(s->stop_speed <= CS_STOP_SPEED_SHARE * s->speed)))
         return fail(err,
                     "scenario: stop speed %.4g m/s must be from 0 to a tenth of the impact speed, %.4g m/s",
                     s->stop_speed, CS_STOP_SPEED_SHARE * s->speed);
