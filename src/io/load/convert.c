@@ -423,6 +423,11 @@ static int convert_group(cs_loader *l, const cs_node *g, const cs_node *soil, cs
     if (section) fields(l, section, &def->section, 1);
     if (soil) fields(l, soil, &def->footing, 0);
     fields(l, g, def, 1);
+    if (l->error_count == before && !(def->footing.soil_pressure > 0.0) &&
+        (cs_node_get(g, "footing") || !given_but_bad(l, g, "footing")))
+        cs_err_node(l, g, 0,
+                    "no soil pressure for its footing (expected barrier.soil: {soil_pressure: ...}, the soil "
+                    "of every footing, or the group's footing.soil_pressure; e.g. 8000 psf, the paper's)");
     return l->error_count - before;
 }
 
@@ -455,7 +460,13 @@ static int convert_posts(cs_loader *l, const cs_node *barrier, cs_barrier_def *o
         for (int i = 0; defs && l->post_origin && i < total; i++) {
             defs[i] = posts[i].def;
             l->post_origin[i] = posts[i].group;
-            if (i > 0 && defs[i].x - defs[i - 1].x < POS_TOL)
+            if (i > 0 && defs[i].x - defs[i - 1].x < POS_TOL && posts[i - 1].group == posts[i].group)
+                cs_err_node(l, posts[i].group, 0,
+                            "two posts at x = %g m and %g m, both of %s, %g mm apart (expected one post per "
+                            "position: positions at least %g mm apart)",
+                            defs[i - 1].x, defs[i].x, posts[i].group->path, 1e3 * (defs[i].x - defs[i - 1].x),
+                            1e3 * POS_TOL);
+            else if (i > 0 && defs[i].x - defs[i - 1].x < POS_TOL)
                 cs_err_node(l, posts[i].group, 0,
                             "two posts at x = %g m (%s and %s) (expected one post per "
                             "position: leave one out with except)",
