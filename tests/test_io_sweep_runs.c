@@ -89,11 +89,12 @@ static int teardown(void **state) {
 
 static void test_runs_csv(void **state) {
     fixture *f = *state;
-    char *text = NULL, why[256];
+    char *text = NULL;
     size_t size = 0;
+    cs_error err;
     FILE *out = open_memstream(&text, &size);
     assert_non_null(out);
-    assert_int_equal(cs_sweep_write_runs(out, f->spec, f->x, f->r, RUNS, why, sizeof why), 0);
+    assert_int_equal(cs_sweep_write_runs(out, f->spec, f->x, f->r, RUNS, &err), CS_OK);
     fclose(out);
     const char *want =
         "run,barrier.cables[0].pretension [N],vehicle,outcome,astm_f2656_as_run,time_reached "
@@ -124,13 +125,13 @@ static void test_runs_csv(void **state) {
     free(text);
 }
 
-/* runs.csv read back (sweep --resume) from text: the rows read, or -1 with why. */
-static long read_back(const fixture *f, const char *text, cs_sweep_result *r, char *why, size_t why_size) {
+/* runs.csv read back (sweep --resume) from text: the rows read, or -1 with err filled. */
+static long read_back(const fixture *f, const char *text, cs_sweep_result *r, cs_error *err) {
     FILE *in = fmemopen((void *)text, strlen(text), "r");
     assert_non_null(in);
     for (int i = 0; i < RUNS; i++)
         memset(&r[i], 0, sizeof r[i]), r[i].pending = 1;
-    long got = cs_sweep_read_runs(in, "runs.csv", f->spec, f->x, r, RUNS, 0, why, why_size);
+    long got = cs_sweep_read_runs(in, "runs.csv", f->spec, f->x, r, RUNS, 0, err);
     fclose(in);
     return got;
 }
@@ -142,15 +143,16 @@ static long read_back(const fixture *f, const char *text, cs_sweep_result *r, ch
 static void test_runs_csv_read_back(void **state) {
     fixture *f = *state;
     snprintf(f->r[2].error, sizeof f->r[2].error, "the solve failed\nat 0.1 s, \"diverged\"");
-    char *text = NULL, why[512] = "";
+    char *text = NULL;
     size_t size = 0;
+    cs_error err;
     FILE *out = open_memstream(&text, &size);
     assert_non_null(out);
-    assert_int_equal(cs_sweep_write_runs(out, f->spec, f->x, f->r, RUNS, why, sizeof why), 0);
+    assert_int_equal(cs_sweep_write_runs(out, f->spec, f->x, f->r, RUNS, &err), CS_OK);
     fclose(out);
     assert_non_null(strstr(text, "\"the solve failed\nat 0.1 s, \"\"diverged\"\"\"\n")); /* lines 4-5 */
     cs_sweep_result back[RUNS];
-    assert_int_equal(read_back(f, text, back, why, sizeof why), RUNS);
+    assert_int_equal(read_back(f, text, back, &err), RUNS);
     assert_string_equal(back[2].error, f->r[2].error);
     assert_int_equal(back[2].status, CS_RUN_FAILED);
     assert_int_equal(back[1].summary.outcome, CS_BREAKTHROUGH);
@@ -160,17 +162,17 @@ static void test_runs_csv_read_back(void **state) {
     char *bad = malloc(2 * n + 64);
     assert_non_null(bad);
     snprintf(bad, 2 * n + 64, "%s2,x\n", text);
-    assert_int_equal(read_back(f, bad, back, why, sizeof why), -1);
-    assert_string_equal(why, "runs.csv:6: not a row of this study (its fields)");
+    assert_int_equal(read_back(f, bad, back, &err), -1);
+    assert_string_equal(err.message, "runs.csv:6: not a row of this study (its fields)");
     /* run 2's row given twice, the second on line 6 */
     const char *row2 = strstr(text, "\n2,") + 1;
     snprintf(bad, 2 * n + 64, "%s%s", text, row2);
-    assert_int_equal(read_back(f, bad, back, why, sizeof why), -1);
-    assert_string_equal(why, "runs.csv:6: not the next run of this study");
+    assert_int_equal(read_back(f, bad, back, &err), -1);
+    assert_string_equal(err.message, "runs.csv:6: not the next run of this study");
     /* a quote not closed on line 6, column 3: the reader's own message, at its place */
     snprintf(bad, 2 * n + 64, "%s2,\"open\n", text);
-    assert_int_equal(read_back(f, bad, back, why, sizeof why), -1);
-    assert_string_equal(why,
+    assert_int_equal(read_back(f, bad, back, &err), -1);
+    assert_string_equal(err.message,
                         "runs.csv:6:3: a quoted cell not closed (expected a closing \" before the end of "
                         "the file)");
     free(bad);
@@ -231,11 +233,12 @@ static void assert_text(int id, const char *name, size_t width, const char *cons
 
 static void test_runs_netcdf(void **state) {
     fixture *f = *state;
-    char dir[] = "/tmp/cs-runs-nc-XXXXXX", path[64], again[64], why[256];
+    char dir[] = "/tmp/cs-runs-nc-XXXXXX", path[64], again[64];
+    cs_error err;
     assert_non_null(mkdtemp(dir));
     snprintf(path, sizeof path, "%s/runs.nc", dir);
     snprintf(again, sizeof again, "%s/again.nc", dir);
-    assert_int_equal(cs_sweep_write_netcdf(path, f->spec, f->x, f->r, RUNS, why, sizeof why), 0);
+    assert_int_equal(cs_sweep_write_netcdf(path, f->spec, f->x, f->r, RUNS, &err), CS_OK);
     int id, format, dim;
     size_t len;
     assert_int_equal(nc_open(path, NC_NOWRITE, &id), NC_NOERR);
@@ -329,7 +332,7 @@ static void test_runs_netcdf(void **state) {
     assert_int_equal(nc_close(id), NC_NOERR);
 
     /* the same results, the same bytes */
-    assert_int_equal(cs_sweep_write_netcdf(again, f->spec, f->x, f->r, RUNS, why, sizeof why), 0);
+    assert_int_equal(cs_sweep_write_netcdf(again, f->spec, f->x, f->r, RUNS, &err), CS_OK);
     size_t na, nb;
     char *a = slurp(path, &na), *b = slurp(again, &nb);
     assert_true(na > 0 && na == nb);
@@ -338,9 +341,9 @@ static void test_runs_netcdf(void **state) {
     unlink(path), unlink(again), rmdir(dir);
 
     /* a file that cannot be created: nc_strerror's words */
-    assert_int_equal(
-        cs_sweep_write_netcdf("/nonexistent/runs.nc", f->spec, f->x, f->r, RUNS, why, sizeof why), -1);
-    assert_string_equal(why, "creating the file: No such file or directory");
+    assert_int_equal(cs_sweep_write_netcdf("/nonexistent/runs.nc", f->spec, f->x, f->r, RUNS, &err),
+                     CS_ERR_IO);
+    assert_string_equal(err.message, "creating the file: No such file or directory");
 }
 
 /* Pixels of a PNG within 3 of an 8-bit colour (cairo's RGB24 is B, G, R in memory). */
@@ -363,22 +366,23 @@ static long pixels_of(const char *path, int r, int g, int b) {
 
 /* Draw plot k of the fixture's runs to path. */
 static void draw(const fixture *f, int k, const char *path) {
-    char why[256];
+    cs_error err;
     FILE *out = fopen(path, "wb");
     assert_non_null(out);
-    if (cs_sweep_write_plot(out, f->spec, k, f->x, f->r, RUNS, why, sizeof why) != 0) fail_msg("%s", why);
+    if (cs_sweep_write_plot(out, f->spec, k, f->x, f->r, RUNS, &err) != CS_OK) fail_msg("%s", err.message);
     assert_int_equal(fclose(out), 0);
 }
 
 /* summary.md or summary.json (write) of the fixture's runs, as a string to free. */
-typedef int (*summary_fn)(FILE *, const cs_sweep_spec *, const double *, const cs_sweep_result *, long,
-                          char *, size_t);
+typedef cs_status (*summary_fn)(FILE *, const cs_sweep_spec *, const double *, const cs_sweep_result *, long,
+                                cs_error *);
 static char *summary_text(const fixture *f, summary_fn write) {
-    char *text = NULL, why[256];
+    char *text = NULL;
     size_t size = 0;
+    cs_error err;
     FILE *out = open_memstream(&text, &size);
     assert_non_null(out);
-    if (write(out, f->spec, f->x, f->r, RUNS, why, sizeof why) != 0) fail_msg("%s", why);
+    if (write(out, f->spec, f->x, f->r, RUNS, &err) != CS_OK) fail_msg("%s", err.message);
     fclose(out);
     return text;
 }

@@ -293,29 +293,24 @@ static cs_status draw(cs_plot *p, const void *user, cs_error *err) {
 
 enum { WIDTH = 900, HEIGHT = 480 };
 
-int cs_study_write_figure(FILE *f, cs_plot_format format, int k, const cs_sweep_spec *spec, const double *x,
-                          const cs_sweep_result *r, long n, char *why, size_t why_size) {
+cs_status cs_study_write_figure(FILE *f, cs_plot_format format, int k, const cs_sweep_spec *spec,
+                                const double *x, const cs_sweep_result *r, long n, cs_error *err) {
     study s;
-    if (study_make(&s, spec, x, r, n) != 0) {
-        snprintf(why, why_size, "out of memory for the study's figures");
-        return -1;
-    }
+    if (study_make(&s, spec, x, r, n) != 0)
+        return cs_error_set(err, CS_ERR_MEMORY, "out of memory for the study's figures");
     figure_job job = {k, spec, &s};
-    cs_error err;
-    int rc = cs_status_why(cs_plot_write(f, format, WIDTH, HEIGHT, draw, &job, &err), &err, why, why_size);
+    cs_status rc = cs_plot_write(f, format, WIDTH, HEIGHT, draw, &job, err);
     study_free(&s);
     return rc;
 }
 
 /* ---- the page ---- */
 
-int cs_study_write_page(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r, long n,
-                        char *why, size_t why_size) {
+cs_status cs_study_write_page(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
+                              long n, cs_error *err) {
     study s;
-    if (study_make(&s, spec, x, r, n) != 0) {
-        snprintf(why, why_size, "out of memory for the study's page");
-        return -1;
-    }
+    if (study_make(&s, spec, x, r, n) != 0)
+        return cs_error_set(err, CS_ERR_MEMORY, "out of memory for the study's page");
     fputs("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>cablesim study: ", f);
     cs_html_text(f, spec->file);
     fputs("</title>\n<style>body{font-family:sans-serif;margin:1.5em;max-width:1000px}table{border-collapse:"
@@ -389,15 +384,14 @@ int cs_study_write_page(FILE *f, const cs_sweep_spec *spec, const double *x, con
             cs_html_text(f, responses[q].title);
         }
     if (none > 0) fputs(": their figures are left out.</p>\n", f);
-    int rc = 0;
-    for (int k = 0; k < CS_STUDY_FIGURES && rc == 0; k++) {
+    cs_status rc = cs_status_set(err, CS_OK, "");
+    for (int k = 0; k < CS_STUDY_FIGURES && rc == CS_OK; k++) {
         if (k > 0 && !has_values(&s, (k - 1) % CS_STUDY_RESPONSES)) continue;
         char id[16];
         snprintf(id, sizeof id, "f%d", k);
         figure_job job = {k, spec, &s};
         fputs("<div>", f);
-        cs_error err;
-        rc = cs_status_why(cs_html_figure(f, id, WIDTH, HEIGHT, draw, &job, &err), &err, why, why_size);
+        rc = cs_html_figure(f, id, WIDTH, HEIGHT, draw, &job, err);
         fputs("</div>\n", f);
     }
     fputs("</body></html>\n", f);

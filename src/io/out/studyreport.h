@@ -21,11 +21,12 @@ void cs_study_figure_file(int k, char *buf, size_t size);
 /* Whether figure k is drawn: the outcomes always, a response's figures when a run has a value of it. */
 int cs_study_figure_shown(int k, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
                           long n);
-/* Draw figure k of the runs to f. Returns 0, or -1 with why filled. */
-int cs_study_write_figure(FILE *f, cs_plot_format format, int k, const cs_sweep_spec *spec, const double *x,
-                          const cs_sweep_result *r, long n, char *why, size_t why_size);
-/* report.html: the study's outcome and response tables and every figure inline. */
-int cs_study_write_page(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r, long n,
-                        char *why, size_t why_size);
+/* Draw figure k of the runs to f. CS_OK, or CS_ERR_MEMORY or cs_plot_write's status with err filled. */
+cs_status cs_study_write_figure(FILE *f, cs_plot_format format, int k, const cs_sweep_spec *spec,
+                                const double *x, const cs_sweep_result *r, long n, cs_error *err);
+/* report.html: the study's outcome and response tables and every figure inline. CS_OK, or CS_ERR_MEMORY or
+ * cs_html_figure's status with err filled. */
+cs_status cs_study_write_page(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
+                              long n, cs_error *err);
 
 #endif

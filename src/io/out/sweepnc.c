@@ -125,8 +125,8 @@ static void put(ncfile *f, const ncvar *v, const double *x, int k, const cs_swee
     free(data);
 }
 
-int cs_sweep_write_netcdf(const char *path, const cs_sweep_spec *s, const double *x, const cs_sweep_result *r,
-                          long n, char *why, size_t why_size) {
+cs_status cs_sweep_write_netcdf(const char *path, const cs_sweep_spec *s, const double *x,
+                                const cs_sweep_result *r, long n, cs_error *err) {
     int k = s->var_count;
     cs_sweep_column cols[CS_SWEEP_MAX_COLUMNS];
     int nc = cs_sweep_columns(cols), count = 0;
@@ -152,13 +152,11 @@ int cs_sweep_write_netcdf(const char *path, const cs_sweep_spec *s, const double
             if (len > vars[m].width) vars[m].width = len;
         }
     }
-    cs_error err;
-    if (cs_netcdf_load(&err) != CS_OK) return cs_status_why(err.status, &err, why, why_size);
+    cs_status loaded = cs_netcdf_load(err);
+    if (loaded != CS_OK) return loaded;
     ncfile f = {0, NC_NOERR, ""};
-    if (!check(&f, nc_create(path, NC_CLOBBER | NC_64BIT_OFFSET, &f.id), "creating", "the file")) {
-        snprintf(why, why_size, "%s: %s", f.doing, nc_strerror(f.status));
-        return -1;
-    }
+    if (!check(&f, nc_create(path, NC_CLOBBER | NC_64BIT_OFFSET, &f.id), "creating", "the file"))
+        return cs_error_set(err, CS_ERR_IO, "%s: %s", f.doing, nc_strerror(f.status));
     char title[1200], seed[24];
     snprintf(title, sizeof title, "cablesim sweep %s: one record per run", s->file);
     /* the seed as text: netCDF-3 has no 64-bit integer */
@@ -179,26 +177,22 @@ int cs_sweep_write_netcdf(const char *path, const cs_sweep_spec *s, const double
     if (f.status == NC_NOERR) check(&f, nc_enddef(f.id), "defining", "the variables");
     for (int m = 0; m < count && f.status == NC_NOERR; m++)
         put(&f, &vars[m], x, k, r, n);
-    if (f.status == NC_NOERR && check(&f, nc_close(f.id), "closing", "the file")) return 0;
+    if (f.status == NC_NOERR && check(&f, nc_close(f.id), "closing", "the file"))
+        return cs_status_set(err, CS_OK, "");
     if (f.status != NC_NOERR) nc_abort(f.id); /* the caller removes what is left */
-    snprintf(why, why_size, "%s: %s", f.doing, nc_strerror(f.status));
-    return -1;
+    return cs_error_set(err, CS_ERR_IO, "%s: %s", f.doing, nc_strerror(f.status));
 }
 
-int cs_sweep_outputs_loadable(const cs_sweep_spec *spec, char *why, size_t why_size) {
-    cs_error err;
-    const char *lib = err.message;
-    if (cs_cairo_load(&err) != CS_OK) {
-        snprintf(why, why_size,
-                 "%s: a study draws its figures with it (plots/study-*.png); install its package", lib);
-        return -1;
-    }
-    if (spec->netcdf && cs_netcdf_load(&err) != CS_OK) {
-        snprintf(why, why_size,
-                 "%s: runs.nc (--netcdf, or `netcdf: true` in the spec) needs it; install its "
-                 "package or leave runs.nc out",
-                 lib);
-        return -1;
-    }
-    return 0;
+cs_status cs_sweep_outputs_loadable(const cs_sweep_spec *spec, cs_error *err) {
+    cs_error lib;
+    if (cs_cairo_load(&lib) != CS_OK)
+        return cs_error_set(err, lib.status,
+                            "%s: a study draws its figures with it (plots/study-*.png); install its package",
+                            lib.message);
+    if (spec->netcdf && cs_netcdf_load(&lib) != CS_OK)
+        return cs_error_set(err, lib.status,
+                            "%s: runs.nc (--netcdf, or `netcdf: true` in the spec) needs it; install its "
+                            "package or leave runs.nc out",
+                            lib.message);
+    return cs_status_set(err, CS_OK, "");
 }

@@ -7,6 +7,7 @@
 
 #include "out/htmltext.h"
 #include "out/jsondoc.h"
+#include "status.h"
 #include "sweepout.h"
 #include "sweepout_int.h"
 #include "writers.h"
@@ -247,16 +248,12 @@ void cs_sweep_write_run_row(FILE *f, const cs_sweep_spec *s, const double *x, co
     fputc('\n', f);
 }
 
-int cs_sweep_write_runs(FILE *f, const cs_sweep_spec *s, const double *x, const cs_sweep_result *r, long n,
-                        char *why, size_t why_size) {
+cs_status cs_sweep_write_runs(FILE *f, const cs_sweep_spec *s, const double *x, const cs_sweep_result *r,
+                              long n, cs_error *err) {
     runs_header(f, s);
     for (long i = 0; i < n; i++)
         if (!r[i].pending) cs_sweep_write_run_row(f, s, x, &r[i], i); /* a partial sweep's others: none */
-    if (ferror(f)) {
-        snprintf(why, why_size, "write error");
-        return -1;
-    }
-    return 0;
+    return ferror(f) ? cs_error_set(err, CS_ERR_IO, "write error") : cs_status_set(err, CS_OK, "");
 }
 
 /* ---- the summary ---- */
@@ -428,30 +425,22 @@ static void md_num(FILE *f, double v) {
 }
 
 /* The summary's body in one format, from the computed summary. */
-typedef int (*summary_writer)(FILE *f, const cs_sweep_spec *spec, long n, const summary *s, char *why,
-                              size_t why_size);
+typedef cs_status (*summary_writer)(FILE *f, const cs_sweep_spec *spec, long n, const summary *s,
+                                    cs_error *err);
 
 /* Compute the summary, write it with `body`, and report a failure to allocate or to write. */
-static int write_summary(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
-                         long n, char *why, size_t why_size, summary_writer body) {
+static cs_status write_summary(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
+                               long n, cs_error *err, summary_writer body) {
     summary s;
-    if (make_summary(&s, spec, x, r, n) != 0) {
-        snprintf(why, why_size, "out of memory");
-        return -1;
-    }
-    int bad = body(f, spec, n, &s, why, why_size);
+    if (make_summary(&s, spec, x, r, n) != 0) return cs_error_set(err, CS_ERR_MEMORY, "out of memory");
+    cs_status rc = body(f, spec, n, &s, err);
     free_summary(&s);
-    if (bad) return -1;
-    if (ferror(f)) {
-        snprintf(why, why_size, "write error");
-        return -1;
-    }
-    return 0;
+    if (rc != CS_OK) return rc;
+    return ferror(f) ? cs_error_set(err, CS_ERR_IO, "write error") : cs_status_set(err, CS_OK, "");
 }
 
-static int summary_md(FILE *f, const cs_sweep_spec *spec, long n, const summary *s, char *why,
-                      size_t why_size) {
-    (void)why, (void)why_size;
+static cs_status summary_md(FILE *f, const cs_sweep_spec *spec, long n, const summary *s, cs_error *err) {
+    (void)err;
     int k = spec->var_count;
     const cs_sweep_origin *o = &spec->origin;
     fprintf(f, "# Sweep ");
@@ -548,12 +537,12 @@ static int summary_md(FILE *f, const cs_sweep_spec *spec, long n, const summary 
         cs_sweep_plot_caption(spec, k, s->r, n, caption, sizeof caption);
         fprintf(f, "- "), cs_md_code(f, file), fprintf(f, ": "), cs_html_text(f, caption), fprintf(f, ".\n");
     }
-    return 0;
+    return CS_OK;
 }
 
-int cs_sweep_write_summary_md(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
-                              long n, char *why, size_t why_size) {
-    return write_summary(f, spec, x, r, n, why, why_size, summary_md);
+cs_status cs_sweep_write_summary_md(FILE *f, const cs_sweep_spec *spec, const double *x,
+                                    const cs_sweep_result *r, long n, cs_error *err) {
+    return write_summary(f, spec, x, r, n, err, summary_md);
 }
 
 /* summary.json's "cablesim" member: the version, the command line and the base model's hash. */
@@ -585,27 +574,25 @@ static void origin_members(json_object *j, const cs_sweep_origin *o, int partial
     json_object_object_add(j, "resume", resume);
 }
 
-/* j as the file's text and a line break; 0, or -1 with why filled. */
-static int put_json(FILE *f, json_object *j, char *why, size_t why_size) {
+/* j as the file's text and a line break; CS_OK, or CS_ERR_MEMORY with err filled. */
+static cs_status put_json(FILE *f, json_object *j, cs_error *err) {
     int ok = j && cs_json_write(f, j, 0, "\n") == 0;
     json_object_put(j);
-    if (!ok) snprintf(why, why_size, "out of memory");
-    return ok ? 0 : -1;
+    return ok ? cs_status_set(err, CS_OK, "") : cs_error_set(err, CS_ERR_MEMORY, "out of memory");
 }
 
-int cs_sweep_write_journal_start(FILE *f, const cs_sweep_spec *spec, const double *x,
-                                 const cs_sweep_result *r, long n, char *why, size_t why_size) {
+cs_status cs_sweep_write_journal_start(FILE *f, const cs_sweep_spec *spec, const double *x,
+                                       const cs_sweep_result *r, long n, cs_error *err) {
     json_object *j = json_object_new_object();
     if (j) origin_members(j, &spec->origin, 1, 0, 0);
-    if (put_json(f, j, why, why_size) != 0) return -1;
-    return cs_sweep_write_runs(f, spec, x, r, n, why, why_size);
+    cs_status rc = put_json(f, j, err);
+    return rc == CS_OK ? cs_sweep_write_runs(f, spec, x, r, n, err) : rc;
 }
 
-static int summary_json(FILE *f, const cs_sweep_spec *spec, long n, const summary *s, char *why,
-                        size_t why_size) {
+static cs_status summary_json(FILE *f, const cs_sweep_spec *spec, long n, const summary *s, cs_error *err) {
     int k = spec->var_count;
     json_object *j = json_object_new_object();
-    if (!j) return put_json(f, j, why, why_size);
+    if (!j) return put_json(f, j, err);
     origin_members(j, &spec->origin, s->done < n, s->done, 1);
     json_object_object_add(j, "spec", cs_jstr(spec->file));
     json_object_object_add(j, "model", cs_jstr(spec->model));
@@ -658,10 +645,10 @@ static int summary_json(FILE *f, const cs_sweep_spec *spec, long n, const summar
     }
     json_object_object_add(j, "responses", stats_of_responses);
     json_object_object_add(j, "spearman", spearman);
-    return put_json(f, j, why, why_size);
+    return put_json(f, j, err);
 }
 
-int cs_sweep_write_summary_json(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
-                                long n, char *why, size_t why_size) {
-    return write_summary(f, spec, x, r, n, why, why_size, summary_json);
+cs_status cs_sweep_write_summary_json(FILE *f, const cs_sweep_spec *spec, const double *x,
+                                      const cs_sweep_result *r, long n, cs_error *err) {
+    return write_summary(f, spec, x, r, n, err, summary_json);
 }

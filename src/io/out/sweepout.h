@@ -45,44 +45,47 @@ void cs_sweep_sort(double *v, long n);
 /* The p-quantile of n sorted values, linear between order statistics (the statistics of summary.md). */
 double cs_sweep_quantile(const double *sorted, long n, double p);
 
-/* runs.csv: one row per run in run order. Returns 0, or -1 with why filled. */
-/* runs.csv: one row per run in run order (a pending run has none). Returns 0, or -1 with why filled. */
-int cs_sweep_write_runs(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r, long n,
-                        char *why, size_t why_size);
+/* runs.csv: one row per run in run order (a pending run has none). CS_OK, or CS_ERR_IO with err filled
+ * ("write error"). */
+cs_status cs_sweep_write_runs(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
+                              long n, cs_error *err);
 /* The row of run i (r: its result), as cs_sweep_write_runs writes it: a sweep's journal appends each run's
  * row as it finishes. */
 void cs_sweep_write_run_row(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
                             long i);
 /* The start of a sweep's journal (DIR/.cablesim-journal): one line of JSON, summary.json's "cablesim",
  * "partial" (true), "inputs_hash" and "resume" (what `sweep --resume` reads), then runs.csv with the runs
- * of r done so far (none pending: a resumed sweep's); each run's row is appended as it finishes. 0, or -1
- * with why filled. */
-int cs_sweep_write_journal_start(FILE *f, const cs_sweep_spec *spec, const double *x,
-                                 const cs_sweep_result *r, long n, char *why, size_t why_size);
+ * of r done so far (none pending: a resumed sweep's); each run's row is appended as it finishes. CS_OK, or
+ * CS_ERR_MEMORY or CS_ERR_IO with err filled. */
+cs_status cs_sweep_write_journal_start(FILE *f, const cs_sweep_spec *spec, const double *x,
+                                       const cs_sweep_result *r, long n, cs_error *err);
 /* runs.csv read back, for `sweep --resume`: each row's run into r[run] (its pending flag cleared), after
  * checking the header and each row's inputs against spec and x (the same study). Rows come in run order,
  * or with any_order (a journal: as the runs finished) in any order, each run once (r's runs pending
- * before); runs with no row are left as they are. Returns the rows read, or -1 with why filled
- * ("NAME:LINE: what", LINE the file's line the row begins on, a quoted cell's line breaks counted; a row
- * the CSV reader cannot read: "NAME:LINE:COL: " and the reader's own message). */
+ * before); runs with no row are left as they are. Returns the rows read, or -1 with err filled:
+ * CS_ERR_INVALID ("NAME:LINE: what", LINE the file's line the row begins on, a quoted cell's line breaks
+ * counted; a row the CSV reader cannot read: "NAME:LINE:COL: " and the reader's own message), CS_ERR_IO
+ * ("NAME: " and the system's reason) or CS_ERR_MEMORY. */
 long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *spec, const double *x,
-                        cs_sweep_result *r, long n, int any_order, char *why, size_t why_size);
+                        cs_sweep_result *r, long n, int any_order, cs_error *err);
 /* The libraries the study's outputs load when written (dynlib.h), loaded now, before any run: cairo
- * (plots/study-*.png and the spec's plots, always drawn) and netCDF where spec->netcdf (runs.nc). 0; -1
- * with why naming the library, its reason and what needs it. */
-int cs_sweep_outputs_loadable(const cs_sweep_spec *spec, char *why, size_t why_size);
+ * (plots/study-*.png and the spec's plots, always drawn) and netCDF where spec->netcdf (runs.nc). CS_OK,
+ * or the loader's status with err naming the library, its reason and what needs it. */
+cs_status cs_sweep_outputs_loadable(const cs_sweep_spec *spec, cs_error *err);
 /* runs.nc: the same table as netCDF (CF-1.8; 64-bit offset, the same bytes for the same results), at path
- * (a temporary: a failure leaves it to be removed). Returns 0, or -1 with why filled (nc_strerror's). */
-int cs_sweep_write_netcdf(const char *path, const cs_sweep_spec *spec, const double *x,
-                          const cs_sweep_result *r, long n, char *why, size_t why_size);
+ * (a temporary: a failure leaves it to be removed). CS_OK, or CS_ERR_IO with err filled ("what it was
+ * doing: " and nc_strerror's), or the library loader's status. */
+cs_status cs_sweep_write_netcdf(const char *path, const cs_sweep_spec *spec, const double *x,
+                                const cs_sweep_result *r, long n, cs_error *err);
 /* summary.md and summary.json: outcome probabilities with 95% Wilson intervals, response statistics and
  * the Spearman correlation of each numeric input with each response, each response over the runs that
  * have it as runs.csv gives it (the penetration of the runs the barrier held, the penetration beyond of
- * the others, the exit speed of the runs that left it) with their count; forces in kN. */
-int cs_sweep_write_summary_md(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
-                              long n, char *why, size_t why_size);
-int cs_sweep_write_summary_json(FILE *f, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
-                                long n, char *why, size_t why_size);
+ * the others, the exit speed of the runs that left it) with their count; forces in kN. CS_OK, or
+ * CS_ERR_MEMORY or CS_ERR_IO with err filled. */
+cs_status cs_sweep_write_summary_md(FILE *f, const cs_sweep_spec *spec, const double *x,
+                                    const cs_sweep_result *r, long n, cs_error *err);
+cs_status cs_sweep_write_summary_json(FILE *f, const cs_sweep_spec *spec, const double *x,
+                                      const cs_sweep_result *r, long n, cs_error *err);
 
 /* ---- plots (`plot:` in the spec) ---- */
 
@@ -95,8 +98,8 @@ void cs_sweep_plot_file(const cs_sweep_spec *spec, int k, char *buf, size_t size
  * (those that did not run to the end, those with no value of y), in words. */
 void cs_sweep_plot_caption(const cs_sweep_spec *spec, int k, const cs_sweep_result *r, long n, char *buf,
                            size_t size);
-/* Draw plot k of the runs to f in its format. Returns 0, or -1 with why filled. */
-int cs_sweep_write_plot(FILE *f, const cs_sweep_spec *spec, int k, const double *x, const cs_sweep_result *r,
-                        long n, char *why, size_t why_size);
+/* Draw plot k of the runs to f in its format. CS_OK, or cs_plot_write's status with err filled. */
+cs_status cs_sweep_write_plot(FILE *f, const cs_sweep_spec *spec, int k, const double *x,
+                              const cs_sweep_result *r, long n, cs_error *err);
 
 #endif

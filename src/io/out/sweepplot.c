@@ -293,12 +293,10 @@ static cs_status draw_plot(cs_plot *p, const void *user, cs_error *err) {
     return CS_OK;
 }
 
-int cs_sweep_write_plot(FILE *f, const cs_sweep_spec *spec, int k, const double *x, const cs_sweep_result *r,
-                        long n, char *why, size_t why_size) {
+cs_status cs_sweep_write_plot(FILE *f, const cs_sweep_spec *spec, int k, const double *x,
+                              const cs_sweep_result *r, long n, cs_error *err) {
     char file[256];
     cs_sweep_plot_file(spec, k, file, sizeof file);
     plot_job job = {spec, k, x, r, n};
-    cs_error err;
-    return cs_status_why(cs_plot_write(f, cs_plot_format_of(file), WIDTH, HEIGHT, draw_plot, &job, &err),
-                         &err, why, why_size);
+    return cs_plot_write(f, cs_plot_format_of(file), WIDTH, HEIGHT, draw_plot, &job, err);
 }

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "load/csvread.h"
+#include "status.h"
 #include "sweepout.h"
 #include "sweepout_int.h"
 #include "writers.h"
@@ -107,7 +108,7 @@ static int set_column(const cs_sweep_column *c, cs_sweep_result *r, const char *
 }
 
 long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *s, const double *x,
-                        cs_sweep_result *r, long n, int any_order, char *why, size_t why_size) {
+                        cs_sweep_result *r, long n, int any_order, cs_error *err) {
     int k = s->var_count;
     cs_sweep_column cols[CS_SWEEP_MAX_COLUMNS];
     int nc = cs_sweep_columns(cols), max = 1 + k + nc;
@@ -119,14 +120,15 @@ long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *s, const
     cs_csv_open_file(&rows, f, CS_CSV_QUOTED | CS_CSV_UNTEXT, max);
     rows.max_line = 65534;
     if (!h) {
-        snprintf(why, why_size, "out of memory");
+        cs_out_of_memory(err);
         goto done;
     }
-    cs_sweep_write_runs(h, s, x, r, 0, why, why_size); /* its first line alone */
+    cs_sweep_write_runs(h, s, x, r, 0, NULL); /* its first line alone */
     fclose(h);
     h = NULL;
     if (getline(&line, &line_size, f) < 0 || strcmp(line, want) != 0) {
-        snprintf(why, why_size, "%s:1: not the header this study writes (another study's runs.csv?)", name);
+        cs_error_set(err, CS_ERR_INVALID,
+                     "%s:1: not the header this study writes (another study's runs.csv?)", name);
         goto done;
     }
     count = 0;
@@ -137,9 +139,10 @@ long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *s, const
         if (got == 0 || (got < 0 && ferror(f))) break;
         if (got < 0) { /* the reader's own problem, at its place */
             if (rows.why_col > 0)
-                snprintf(why, why_size, "%s:%ld:%d: %s", name, rows.why_line + 1, rows.why_col, rows.why);
+                cs_error_set(err, CS_ERR_INVALID, "%s:%ld:%d: %s", name, rows.why_line + 1, rows.why_col,
+                             rows.why);
             else
-                snprintf(why, why_size, "%s:%ld: %s", name, rows.why_line + 1, rows.why);
+                cs_error_set(err, CS_ERR_INVALID, "%s:%ld: %s", name, rows.why_line + 1, rows.why);
             count = -1;
             break;
         }
@@ -149,10 +152,10 @@ long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *s, const
         char *end;
         long i = got == max ? strtol(field[0], &end, 10) : -1;
         if (got != max || *end || i < 0 || i >= n || (any_order ? !r[i].pending : i <= last)) {
-            snprintf(why, why_size, "%s:%ld: %s", name, at,
-                     got != max  ? "not a row of this study (its fields)"
-                     : any_order ? "not a run of this study, or one given twice"
-                                 : "not the next run of this study");
+            cs_error_set(err, CS_ERR_INVALID, "%s:%ld: %s", name, at,
+                         got != max  ? "not a row of this study (its fields)"
+                         : any_order ? "not a run of this study, or one given twice"
+                                     : "not the next run of this study");
             count = -1;
             break;
         }
@@ -164,9 +167,9 @@ long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *s, const
             bad = strcmp(value, field[1 + j]) != 0;
         }
         if (bad) {
-            snprintf(why, why_size,
-                     "%s:%ld: run %ld's inputs are not this study's (the spec or its seed changed)", name, at,
-                     i);
+            cs_error_set(err, CS_ERR_INVALID,
+                         "%s:%ld: run %ld's inputs are not this study's (the spec or its seed changed)", name,
+                         at, i);
             count = -1;
             break;
         }
@@ -175,8 +178,8 @@ long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *s, const
         for (int c = 0; c < nc && !bad; c++)
             bad = set_column(&cols[c], ri, field[1 + k + c]) != 0;
         if (bad) {
-            snprintf(why, why_size, "%s:%ld: run %ld: a value this study's runs.csv does not hold", name, at,
-                     i);
+            cs_error_set(err, CS_ERR_INVALID, "%s:%ld: run %ld: a value this study's runs.csv does not hold",
+                         name, at, i);
             ri->pending = 1;
             count = -1;
             break;
@@ -184,7 +187,7 @@ long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *s, const
         count++;
     }
     if (count >= 0 && ferror(f)) {
-        snprintf(why, why_size, "%s: %s", name, strerror(errno));
+        cs_error_set(err, CS_ERR_IO, "%s: %s", name, strerror(errno));
         count = -1;
     }
 done:

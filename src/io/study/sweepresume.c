@@ -139,7 +139,8 @@ int cs_sweep_resume_read(const char *dir, cs_sweep_options *o, cs_sweep_resumed 
  * printed). */
 long cs_sweep_resume_runs(const char *dir, const cs_sweep_spec *spec, const cs_sweep_resumed *was,
                           const double *x, cs_sweep_result *all, long n, cs_sweep_options *o) {
-    char hash[17], path[1200], why[600];
+    char hash[17], path[1200];
+    cs_error err;
     if (strcmp(was->version, CS_VERSION_STRING) != 0) {
         cs_sweep_say(o,
                      "%s was written by cablesim %s, this is %s: its runs may differ from this "
@@ -164,8 +165,8 @@ long cs_sweep_resume_runs(const char *dir, const cs_sweep_spec *spec, const cs_s
         cs_sweep_say(o, "%s: %s", path, strerror(errno));
         return -1;
     }
-    long got = cs_sweep_read_runs(f, path, spec, x, all, n, was->journal != NULL, why, sizeof why);
+    long got = cs_sweep_read_runs(f, path, spec, x, all, n, was->journal != NULL, &err);
     fclose(f);
-    if (got < 0) cs_sweep_say(o, "%s", why);
+    if (got < 0) cs_sweep_say(o, "%s", err.message);
     return got;
 }

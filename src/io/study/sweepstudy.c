@@ -143,18 +143,18 @@ static void progress_show(progress *p, int final) {
 /* ---- the journal and the outputs ---- */
 
 /* The journal of the runs (DIR/.cablesim-journal): the study's record and the runs done (a resumed
- * sweep's), before any run. */
-static int start_journal(cs_outdir *out, const cs_sweep_spec *spec, const double *x,
-                         const cs_sweep_result *all, long n, char *why, size_t why_size) {
+ * sweep's), before any run. CS_OK, or CS_ERR_MEMORY or cs_out_journal_start's status with err filled. */
+static cs_status start_journal(cs_outdir *out, const cs_sweep_spec *spec, const double *x,
+                               const cs_sweep_result *all, long n, cs_error *err) {
     char *text = NULL;
     size_t length = 0;
     FILE *f = open_memstream(&text, &length);
-    int rc = f ? cs_sweep_write_journal_start(f, spec, x, all, n, why, why_size) : -1;
+    cs_status rc = f ? cs_sweep_write_journal_start(f, spec, x, all, n, err) : CS_ERR_MEMORY;
     if (f) fclose(f);
-    if (rc != 0 || !text) snprintf(why, why_size, "out of memory for the journal");
-    cs_error err;
-    if (rc == 0 && text)
-        rc = cs_status_why(cs_out_journal_start(out, text, length, &err), &err, why, why_size);
+    if (rc != CS_OK || !text)
+        rc = cs_error_set(err, CS_ERR_MEMORY, "out of memory for the journal");
+    else
+        rc = cs_out_journal_start(out, text, length, err);
     free(text);
     return rc;
 }
@@ -209,12 +209,11 @@ static const char *signal_name(int sig) {
  * does not write are removed. */
 static int write_all(cs_outdir *out, const cs_sweep_spec *spec, const double *x, const cs_sweep_result *r,
                      long n, int partial, cs_sweep_options *o) {
-    char why[512] = "";
     cs_error err = {CS_OK, ""};
     static const char *const names[] = {"runs.csv", "summary.md", "summary.json"};
-    int rc = cs_status_why(cs_out_subdir(out, "plots", &err), &err, why, sizeof why);
+    cs_status rc = cs_out_subdir(out, "plots", &err);
     int study = 3 + spec->plot_count; /* then the study's figures, then its page */
-    for (int k = 0; rc == 0 && k < study + CS_STUDY_FIGURES + 1; k++) {
+    for (int k = 0; rc == CS_OK && k < study + CS_STUDY_FIGURES + 1; k++) {
         char name[256];
         if (k < 3)
             snprintf(name, sizeof name, "%s", names[k]);
@@ -227,37 +226,38 @@ static int write_all(cs_outdir *out, const cs_sweep_spec *spec, const double *x,
             snprintf(name, sizeof name, "report.html");
         FILE *f = cs_out_begin(out, name, &err);
         if (!f) {
-            rc = cs_status_why(err.status, &err, why, sizeof why);
+            rc = err.status;
             break;
         }
-        rc = k == 0      ? cs_sweep_write_runs(f, spec, x, r, n, why, sizeof why)
-             : k == 1    ? cs_sweep_write_summary_md(f, spec, x, r, n, why, sizeof why)
-             : k == 2    ? cs_sweep_write_summary_json(f, spec, x, r, n, why, sizeof why)
-             : k < study ? cs_sweep_write_plot(f, spec, k - 3, x, r, n, why, sizeof why)
+        rc = k == 0      ? cs_sweep_write_runs(f, spec, x, r, n, &err)
+             : k == 1    ? cs_sweep_write_summary_md(f, spec, x, r, n, &err)
+             : k == 2    ? cs_sweep_write_summary_json(f, spec, x, r, n, &err)
+             : k < study ? cs_sweep_write_plot(f, spec, k - 3, x, r, n, &err)
              : k < study + CS_STUDY_FIGURES
-                 ? cs_study_write_figure(f, CS_PLOT_PNG, k - study, spec, x, r, n, why, sizeof why)
-                 : cs_study_write_page(f, spec, x, r, n, why, sizeof why);
-        err.status = CS_OK; /* a failed end's reason replaces the writer's (in why) */
-        if (cs_out_finish(out, f, rc ? CS_ERR_IO : CS_OK, &err) != CS_OK) rc = -1;
-        if (err.status != CS_OK) cs_status_why(err.status, &err, why, sizeof why);
+                 ? cs_study_write_figure(f, CS_PLOT_PNG, k - study, spec, x, r, n, &err)
+                 : cs_study_write_page(f, spec, x, r, n, &err);
+        rc = cs_out_finish(out, f, rc, &err); /* a failed end's reason replaces the writer's */
     }
     cs_plot_release(); /* after the last plot */
-    if (rc == 0 && spec->netcdf && !partial) {
-        char path[1200], nc_why[200];
-        rc = cs_status_why(cs_out_begin_path(out, "runs.nc", path, sizeof path, &err), &err, why, sizeof why);
-        if (rc == 0 && (rc = cs_sweep_write_netcdf(path, spec, x, r, n, nc_why, sizeof nc_why)) != 0)
-            snprintf(why, sizeof why, "%.280s/runs.nc: %s", out->dir, nc_why);
-        if (rc == 0) rc = cs_status_why(cs_out_end_path(out, &err), &err, why, sizeof why);
+    if (rc == CS_OK && spec->netcdf && !partial) {
+        char path[1200];
+        rc = cs_out_begin_path(out, "runs.nc", path, sizeof path, &err);
+        if (rc == CS_OK && (rc = cs_sweep_write_netcdf(path, spec, x, r, n, &err)) != CS_OK) {
+            char nc_why[CS_MESSAGE_SIZE];
+            snprintf(nc_why, sizeof nc_why, "%s", err.message);
+            cs_error_set(&err, rc, "%.180s/runs.nc: %s", out->dir, nc_why);
+        }
+        if (rc == CS_OK) rc = cs_out_end_path(out, &err);
     }
-    if (rc == 0) rc = cs_status_why(cs_out_commit(out, &err), &err, why, sizeof why);
-    if (rc != 0) {
+    if (rc == CS_OK) rc = cs_out_commit(out, &err);
+    if (rc != CS_OK) {
         cs_out_abort(out);
         cs_sweep_say(o,
                      "nothing written: %s; the runs done are kept in %s/%s: `cablesim sweep --resume %s` "
                      "writes the study once that is put right",
-                     why, out->dir, CS_OUT_JOURNAL, out->dir);
+                     err.message, out->dir, CS_OUT_JOURNAL, out->dir);
     }
-    return rc;
+    return rc == CS_OK ? 0 : -1;
 }
 
 /* ---- stopping on a signal ---- */
@@ -406,7 +406,6 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, cs_sweep **kee
     cs_sweep_result *all = NULL;
     long done = 0;
     if (rc == 0 && rank == 0) {
-        char why[600];
         cs_error err;
         out_dir_of(o, dir, sizeof dir);
         spec->origin.command = command;
@@ -424,16 +423,16 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, cs_sweep **kee
             if (o->closing)
                 fprintf(o->closing, "sweep: %s holds the whole study (%ld runs): nothing to run\n", dir, n);
             rc = -1;
-        } else if (cs_sweep_outputs_loadable(spec, why, sizeof why) != 0) { /* not found after the runs */
-            cs_sweep_say(o, "nothing run: %s", why);
+        } else if (cs_sweep_outputs_loadable(spec, &err) != CS_OK) { /* not found after the runs */
+            cs_sweep_say(o, "nothing run: %s", err.message);
             rc = EXIT_RUN;
         } else if (o->resume && (done = cs_sweep_resume_runs(dir, spec, &was, x, all, n, o)) < 0) {
             rc = EXIT_BAD;
         } else if (cs_out_open(&out, dir, o->force ? CS_OUT_FORCE : 0, &err) != CS_OK) {
             cs_sweep_say(o, "nothing run: %s", err.message);
             rc = EXIT_RUN;
-        } else if (out_open = 1, start_journal(&out, spec, x, all, n, why, sizeof why) != 0) {
-            cs_sweep_say(o, "nothing run: %s", why);
+        } else if (out_open = 1, start_journal(&out, spec, x, all, n, &err) != CS_OK) {
+            cs_sweep_say(o, "nothing run: %s", err.message);
             rc = EXIT_RUN;
         }
     }
