@@ -530,7 +530,7 @@ static void test_compare_time_axes_end_at_the_last_end(void **state) {
                       compared("test.csv", -0.005, 0.3, 1)};
     cs_plot_log *log = calloc(1, sizeof *log);
     assert_non_null(log);
-    char why[512] = "";
+    cs_error err;
     /* {traces shown, start, end}: run a alone; both runs and the measured speed (the reference) */
     static const struct {
         int count;
@@ -538,8 +538,8 @@ static void test_compare_time_axes_end_at_the_last_end(void **state) {
     } cases[] = {{1, 0, 0.286}, {3, 0, 0.412}};
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++)
         for (int k = 0; k < CS_COMPARE_PLOTS; k++) {
-            if (cs_compare_trace(k, tr, cases[c].count, cases[c].count - 1, log, why, sizeof why) != 0)
-                fail_msg("%s", why);
+            if (cs_compare_trace(k, tr, cases[c].count, cases[c].count - 1, log, &err) != CS_OK)
+                fail_msg("%s", err.message);
             assert_int_equal(log->panel_count, 1);
             const cs_plot_logged_panel *q = &log->panel[0];
             double t0 = cases[c].count == 3 && strstr(q->title, "speed") ? -0.005 : cases[c].t0;

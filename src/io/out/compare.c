@@ -84,11 +84,10 @@ static cs_status draw(cs_plot *p, const void *user, cs_error *err) {
     return CS_OK;
 }
 
-int cs_compare_trace(int k, const cs_trace *traces, int count, int reference, cs_plot_log *log, char *why,
-                     size_t why_size) {
+cs_status cs_compare_trace(int k, const cs_trace *traces, int count, int reference, cs_plot_log *log,
+                           cs_error *err) {
     plot_job job = {&figures[k], traces, count, reference};
-    cs_error err;
-    return cs_status_why(cs_plot_trace(WIDTH, HEIGHT, draw, &job, log, &err), &err, why, why_size);
+    return cs_plot_trace(WIDTH, HEIGHT, draw, &job, log, err);
 }
 
 /* ---- the table ---- */
@@ -322,48 +321,37 @@ void cs_compare_print_trace_metrics(FILE *f, const cs_trace *traces, int count, 
 
 /* ---- the files ---- */
 
-/* A file of out ended after its writer returned rc (cs_out_finish): 0, or -1 with why the file's error
- * when it had one, else the writer's reason (already in why). */
-static int finish(cs_outdir *out, FILE *f, int rc, char *why, size_t why_size) {
-    cs_error err = {CS_OK, ""};
-    if (cs_out_finish(out, f, rc ? CS_ERR_IO : CS_OK, &err) == CS_OK) return 0;
-    cs_status_why(err.status, &err, why, why_size);
-    return -1;
-}
-
-int cs_compare_write_traces(cs_outdir *out, const cs_trace *traces, int count, int reference, char *why,
-                            size_t why_size) {
-    cs_error err;
-    FILE *f = cs_out_begin(out, "compare.csv", &err);
-    if (!f) return cs_status_why(err.status, &err, why, why_size);
+cs_status cs_compare_write_traces(cs_outdir *out, const cs_trace *traces, int count, int reference,
+                                  cs_error *err) {
+    FILE *f = cs_out_begin(out, "compare.csv", err);
+    if (!f) return err->status;
     write_csv(f, traces, count, reference);
-    if (finish(out, f, 0, why, why_size) != 0) return -1;
-    if (!(f = cs_out_begin(out, "compare.md", &err))) return cs_status_why(err.status, &err, why, why_size);
+    cs_status rc = cs_out_finish(out, f, CS_OK, err);
+    if (rc != CS_OK) return rc;
+    if (!(f = cs_out_begin(out, "compare.md", err))) return err->status;
     fprintf(f, "# Comparison\n\nDifferences are against %s%s.\n\n", traces[reference].label,
             traces[reference].measured ? " (measured)" : "");
     write_table(f, traces, count, reference, 0);
     write_metrics(f, traces, count, reference, 1);
-    if (finish(out, f, 0, why, why_size) != 0) return -1;
+    if ((rc = cs_out_finish(out, f, CS_OK, err)) != CS_OK) return rc;
     if (traces[reference].measured) {
-        if (!(f = cs_out_begin(out, "metrics.csv", &err)))
-            return cs_status_why(err.status, &err, why, why_size);
+        if (!(f = cs_out_begin(out, "metrics.csv", err))) return err->status;
         write_metrics(f, traces, count, reference, 0);
-        if (finish(out, f, 0, why, why_size) != 0) return -1;
+        if ((rc = cs_out_finish(out, f, CS_OK, err)) != CS_OK) return rc;
     }
-    if (cs_out_subdir(out, "plots", &err) != CS_OK) return cs_status_why(err.status, &err, why, why_size);
+    if ((rc = cs_out_subdir(out, "plots", err)) != CS_OK) return rc;
     static const cs_plot_format formats[] = {CS_PLOT_PNG, CS_PLOT_SVG};
     for (int k = 0; k < CS_COMPARE_PLOTS; k++)
         for (int j = 0; j < 2; j++) {
             char name[128];
             snprintf(name, sizeof name, "plots/%s.%s", figures[k].name, cs_plot_extension(formats[j]));
-            if (!(f = cs_out_begin(out, name, &err))) return cs_status_why(err.status, &err, why, why_size);
+            if (!(f = cs_out_begin(out, name, err))) return err->status;
             plot_job job = {&figures[k], traces, count, reference};
-            int rc = cs_status_why(cs_plot_write(f, formats[j], WIDTH, HEIGHT, draw, &job, &err), &err, why,
-                                   why_size);
-            if (finish(out, f, rc, why, why_size) != 0) return -1;
+            rc = cs_plot_write(f, formats[j], WIDTH, HEIGHT, draw, &job, err);
+            if ((rc = cs_out_finish(out, f, rc, err)) != CS_OK) return rc;
         }
     /* the page: the table and each plot's SVG inline, so it opens from disk alone */
-    if (!(f = cs_out_begin(out, "compare.html", &err))) return cs_status_why(err.status, &err, why, why_size);
+    if (!(f = cs_out_begin(out, "compare.html", err))) return err->status;
     fputs("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>cablesim: "
           "comparison</title>\n"
           "<style>body{font-family:sans-serif;margin:1.5em;max-width:1000px}table{border-collapse:collapse}"
@@ -375,14 +363,13 @@ int cs_compare_write_traces(cs_outdir *out, const cs_trace *traces, int count, i
     write_table(f, traces, count, reference, 1);
     fputs("</table>\n", f);
     write_metrics(f, traces, count, reference, 2);
-    int rc = 0;
-    for (int k = 0; k < CS_COMPARE_PLOTS && rc == 0; k++) {
+    for (int k = 0; k < CS_COMPARE_PLOTS && rc == CS_OK; k++) {
         fprintf(f, "<h2>%s</h2>\n", figures[k].title);
         char id[16];
         snprintf(id, sizeof id, "f%d", k);
         plot_job job = {&figures[k], traces, count, reference};
-        rc = cs_status_why(cs_html_figure(f, id, WIDTH, HEIGHT, draw, &job, &err), &err, why, why_size);
+        rc = cs_html_figure(f, id, WIDTH, HEIGHT, draw, &job, err);
     }
     fputs("</body></html>\n", f);
-    return finish(out, f, rc, why, why_size);
+    return cs_out_finish(out, f, rc, err);
 }

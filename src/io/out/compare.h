@@ -17,14 +17,15 @@ enum { CS_COMPARE_PLOTS = 5 };
 
 /* Draw plot k (of CS_COMPARE_PLOTS) as a PNG would be drawn, writing nothing: log gets where every text
  * and panel went (cs_plot_trace). Each plot's time axis runs from 0 (or the earliest start) to the
- * latest end of the traces it shows, not rounded out to a tick. Returns 0, or -1 with why filled. */
-int cs_compare_trace(int k, const cs_trace *traces, int count, int reference, cs_plot_log *log, char *why,
-                     size_t why_size);
+ * latest end of the traces it shows, not rounded out to a tick. CS_OK, or cs_plot_trace's status with err
+ * filled. */
+cs_status cs_compare_trace(int k, const cs_trace *traces, int count, int reference, cs_plot_log *log,
+                           cs_error *err);
 /* Into out: compare.csv and compare.md (the table), plots/compare-<response>.png and .svg, and
  * compare.html (the table and the plots in one page that opens from disk). traces[reference] is the
- * reference. Returns 0, or -1 with why filled. */
-int cs_compare_write_traces(cs_outdir *out, const cs_trace *traces, int count, int reference, char *why,
-                            size_t why_size);
+ * reference. CS_OK, or a failure's status with err filled (a file's: which one and the system's reason). */
+cs_status cs_compare_write_traces(cs_outdir *out, const cs_trace *traces, int count, int reference,
+                                  cs_error *err);
 /* With a measured reference, cs_compare_write_traces also writes metrics.csv and a "Validation metrics" table
  * in compare.md and compare.html: each run's Sprague-Geers M, P, C and ANOVA mean and std of the residuals
  * against it (study/metrics.h), per response both give, and W179's verdict. This prints the same to f

@@ -36,26 +36,24 @@ cs_status cs_compare_create(const cs_compare_def *given, cs_compare **out, cs_er
     cs_compare_def def = cs_default_compare_def();
     if (cs_sized_take(&def, sizeof def, given, "cs_compare_def", err) != CS_OK) return CS_ERR_INVALID;
     if (!out) return cs_status_set(err, CS_ERR_INVALID, "cs_compare_create: no place for the comparison");
-    char why[1024];
     if (def.run_count < 1 || !def.runs)
         return cs_status_set(err, CS_ERR_INVALID, "cs_compare_def: no run to compare");
-    if (def.run_count > CS_COMPARE_MAX_RUNS) {
-        snprintf(why, sizeof why, "cs_compare_def: %d runs, more than %d", def.run_count,
-                 CS_COMPARE_MAX_RUNS);
-        return cs_status_set(err, CS_ERR_INVALID, why);
-    }
+    if (def.run_count > CS_COMPARE_MAX_RUNS)
+        return cs_error_set(err, CS_ERR_INVALID, "cs_compare_def: %d runs, more than %d", def.run_count,
+                            CS_COMPARE_MAX_RUNS);
     cs_compare *c = calloc(1, sizeof *c);
     if (!c) return cs_status_set(err, CS_ERR_MEMORY, "out of memory");
     cs_status rc = CS_OK;
+    cs_error read; /* a file's failure, reported as CS_ERR_IO (cablesim/compare.h) */
     for (int i = 0; rc == CS_OK && i < def.run_count; i++, c->count++)
-        if (!def.runs[i] || cs_trace_read_run(def.runs[i], &c->traces[c->count], why, sizeof why) != 0) {
-            if (!def.runs[i]) snprintf(why, sizeof why, "cs_compare_def: run %d is NULL", i);
-            rc = cs_status_set(err, def.runs[i] ? CS_ERR_IO : CS_ERR_INVALID, why);
-        }
+        if (!def.runs[i])
+            rc = cs_error_set(err, CS_ERR_INVALID, "cs_compare_def: run %d is NULL", i);
+        else if (cs_trace_load_run(def.runs[i], &c->traces[c->count], &read) != CS_OK)
+            rc = cs_status_set(err, CS_ERR_IO, read.message);
     if (rc == CS_OK && def.measured) {
-        cs_units *units = cs_units_create(why, sizeof why);
-        if (!units || cs_trace_read_measured(def.measured, units, &c->traces[c->count], why, sizeof why) != 0)
-            rc = cs_status_set(err, CS_ERR_IO, why);
+        cs_units *units = cs_units_open(&read);
+        if (!units || cs_trace_load_measured(def.measured, units, &c->traces[c->count], &read) != CS_OK)
+            rc = cs_status_set(err, CS_ERR_IO, read.message);
         else
             c->reference = c->count++;
         cs_units_free(units);
@@ -112,11 +110,11 @@ cs_status cs_compare_get(const cs_compare *c, int k, int i, cs_compare_row *out,
 
 cs_status cs_compare_write(const cs_compare *c, const char *dir, int flags, cs_error *err) {
     if (!c || !dir) return cs_status_set(err, CS_ERR_INVALID, "cs_compare_write: no comparison or no folder");
-    char why[CS_MESSAGE_SIZE];
+    cs_error wrote;
     cs_outdir out;
     cs_status st = cs_out_open(&out, dir, flags & CS_COMPARE_FORCE ? CS_OUT_FORCE : 0, err);
-    if (st == CS_OK && cs_compare_write_traces(&out, c->traces, c->count, c->reference, why, sizeof why) != 0)
-        st = cs_status_set(err, CS_ERR_IO, why);
+    if (st == CS_OK && cs_compare_write_traces(&out, c->traces, c->count, c->reference, &wrote) != CS_OK)
+        st = cs_status_set(err, CS_ERR_IO, wrote.message); /* the status cablesim/compare.h promises */
     if (st == CS_OK) st = cs_out_commit(&out, err);
     if (st != CS_OK) cs_out_abort(&out);
     cs_plot_release(); /* after the last plot (fontconfig's caches) */
