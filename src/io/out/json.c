@@ -245,7 +245,7 @@ static void occupant_risk(cs_wout *w, json_object *to, const cs_run_info *info) 
     if (!info || !info->motion || !info->occupant_ok) {
         json_object_object_add(to, "occupant_risk", NULL);
         jstr(to, "occupant_risk_note",
-             !info || !info->motion ? "no record of the run's motion" : info->occupant_why);
+             !info || !info->motion ? "no record of the run's motion" : info->occupant_error.message);
     } else {
         const cs_occupant_risk *o = &info->occupant;
         cs_occupant_rules r = cs_default_occupant_rules();

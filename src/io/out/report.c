@@ -88,7 +88,7 @@ static void occupant(FILE *f, const cs_run_info *info) {
     fprintf(f, "  roll, pitch (max)    %.1f deg, %.1f deg\n", info->roll_peak / CS_DEG,
             info->pitch_peak / CS_DEG);
     if (!info->occupant_ok) {
-        fprintf(f, "  occupant risk        none: %s\n", info->occupant_why);
+        fprintf(f, "  occupant risk        none: %s\n", info->occupant_error.message);
         return;
     }
     const cs_occupant_risk *o = &info->occupant;

@@ -22,17 +22,16 @@ void cs_run_info_motion(cs_run_info *info, const cs_model_input *in, const cs_re
                         const cs_summary *summary) {
     info->motion = 1;
     cs_record_roll_pitch_peaks(rec, &info->roll_peak, &info->pitch_peak);
-    info->occupant_ok =
-        cs_occupant_risk_of_run(rec, summary->first_contact_time_s,
-                                info->occupant_at ? info->occupant_point : NULL, &info->occupant,
-                                info->occupant_why, sizeof info->occupant_why) == 0;
+    info->occupant_ok = cs_occupant_risk_for_run(rec, summary->first_contact_time_s,
+                                                 info->occupant_at ? info->occupant_point : NULL,
+                                                 &info->occupant, &info->occupant_error) == CS_OK;
     info->criteria_count = 0;
     if (!cs_roadside_test_as_run(&in->vehicle, in->scenario.speed, in->scenario.angle, &info->criteria_test))
         return;
     cs_exit_box_of_record(rec, &in->vehicle, in->scenario.impact_x, &info->exit_box);
     cs_test_result r = {summary,
                         info->occupant_ok ? &info->occupant : NULL,
-                        info->occupant_why,
+                        info->occupant_error.message,
                         info->roll_peak,
                         info->pitch_peak,
                         &info->exit_box};

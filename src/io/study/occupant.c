@@ -374,9 +374,3 @@ cs_status cs_occupant_risk_for_run(const cs_record *rec, double t_contact, const
     free(own);
     return rc;
 }
-
-int cs_occupant_risk_of_run(const cs_record *rec, double t_contact, const double *point,
-                            cs_occupant_risk *out, char *why, size_t why_size) {
-    cs_error err;
-    return cs_status_why(cs_occupant_risk_for_run(rec, t_contact, point, out, &err), &err, why, why_size);
-}

@@ -100,9 +100,5 @@ void cs_record_roll_pitch_peaks(const cs_record *rec, double *roll, double *pitc
  * contact: the message says so). */
 cs_status cs_occupant_risk_for_run(const cs_record *rec, double t_contact, const double *point,
                                    cs_occupant_risk *out, cs_error *err);
-/* cs_occupant_risk_for_run in the writers' form (src/io/status.h, cs_status_why): 0, or -1 with why
- * filled. */
-int cs_occupant_risk_of_run(const cs_record *rec, double t_contact, const double *point,
-                            cs_occupant_risk *out, char *why, size_t why_size);
 
 #endif

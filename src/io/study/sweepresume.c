@@ -69,15 +69,12 @@ static int json_texts(json_object *list, char *store, size_t width, const char *
 
 /* The record of the study into o (its strings kept in static storage) and r: the first line of
  * DIR/.cablesim-journal when a sweep killed before it wrote its outputs left one (r->journal), else
- * DIR/summary.json's. 0, or -1 with why filled. */
-int cs_sweep_resume_read(const char *dir, cs_sweep_options *o, cs_sweep_resumed *r, char *why,
-                         size_t why_size) {
+ * DIR/summary.json's. CS_OK, or CS_ERR_IO or CS_ERR_INVALID with err filled. */
+cs_status cs_sweep_resume_read(const char *dir, cs_sweep_options *o, cs_sweep_resumed *r, cs_error *err) {
     static char spec[PATH_MAX], seed[64], sets[256][1100], allow[64][PATH_MAX];
     char path[1200];
     size_t length = 0;
-    cs_error err;
-    if (!(r->journal = cs_out_journal_read(dir, &length, &err)) && err.status != CS_OK)
-        return cs_status_why(err.status, &err, why, why_size);
+    if (!(r->journal = cs_out_journal_read(dir, &length, err)) && err->status != CS_OK) return err->status;
     char *eol = r->journal ? strchr(r->journal, '\n') : NULL;
     if (eol) { /* its first line is the record; runs.csv follows */
         *eol = '\0';
@@ -86,11 +83,9 @@ int cs_sweep_resume_read(const char *dir, cs_sweep_options *o, cs_sweep_resumed 
     }
     snprintf(path, sizeof path, "%s/%s", dir, r->journal ? CS_OUT_JOURNAL : "summary.json");
     FILE *probe = r->journal ? NULL : fopen(path, "r");
-    if (!r->journal && !probe) {
-        snprintf(why, why_size, "%s: %s (expected the summary of a sweep written there)", path,
-                 strerror(errno));
-        return -1;
-    }
+    if (!r->journal && !probe)
+        return cs_error_set(err, CS_ERR_IO, "%s: %s (expected the summary of a sweep written there)", path,
+                            strerror(errno));
     if (probe) fclose(probe);
     json_object *root = r->journal ? json_tokener_parse(r->journal) : json_object_from_file(path),
                 *rec = NULL, *about = NULL, *v;
@@ -122,16 +117,14 @@ int cs_sweep_resume_read(const char *dir, cs_sweep_options *o, cs_sweep_resumed 
     }
     if (!bad) bad = json_text_at(root, "inputs_hash", r->inputs_hash, sizeof r->inputs_hash) != 0;
     if (root) json_object_put(root);
-    if (bad) {
-        snprintf(why, why_size,
-                 "%s: no record of the study to resume (written by an older cablesim, or not by "
-                 "cablesim sweep)",
-                 path);
-        return -1;
-    }
+    if (bad)
+        return cs_error_set(err, CS_ERR_INVALID,
+                            "%s: no record of the study to resume (written by an older cablesim, or not by "
+                            "cablesim sweep)",
+                            path);
     o->spec = spec;
     o->out_dir = dir;
-    return 0;
+    return cs_status_set(err, CS_OK, "");
 }
 
 /* --resume: the runs of DIR/runs.csv, or of the journal a killed sweep left, into all (the others left

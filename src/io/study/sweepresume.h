@@ -24,9 +24,9 @@ typedef struct cs_sweep_resumed {
 char *cs_sweep_resume_record(const cs_sweep_options *o, const char *as_given, const char *cwd);
 /* The record of the study into o (its strings kept in static storage) and r: the first line of
  * DIR/.cablesim-journal when a sweep killed before it wrote its outputs left one (r->journal), else
- * DIR/summary.json's. 0, or -1 with why filled. */
-int cs_sweep_resume_read(const char *dir, cs_sweep_options *o, cs_sweep_resumed *r, char *why,
-                         size_t why_size);
+ * DIR/summary.json's. CS_OK, or with err filled CS_ERR_IO (no journal or summary to read: the path and
+ * the system's reason) or CS_ERR_INVALID (none with a record of the study). */
+cs_status cs_sweep_resume_read(const char *dir, cs_sweep_options *o, cs_sweep_resumed *r, cs_error *err);
 /* The runs of DIR/runs.csv, or of the journal a killed sweep left, into all (the others left pending),
  * after checking that the study is the one DIR holds. Returns how many were read, or -1 (why said:
  * cs_sweep_say). */

@@ -385,9 +385,9 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, cs_sweep **kee
     if (!getcwd(cwd, sizeof cwd)) cwd[0] = '\0';
     if (!o->resume) snprintf(as_given, sizeof as_given, "%s", o->spec);
     if (o->resume) {
-        char why[1400];
-        if (cs_sweep_resume_read(o->resume, o, &was, why, sizeof why) != 0) {
-            if (rank == 0) cs_sweep_say(o, "--resume: %s", why);
+        cs_error err;
+        if (cs_sweep_resume_read(o->resume, o, &was, &err) != CS_OK) {
+            if (rank == 0) cs_sweep_say(o, "--resume: %s", err.message);
             rc = EXIT_BAD;
         } else if (strcmp(was.cwd, cwd) == 0) {
             snprintf(as_given, sizeof as_given, "%s", was.spec_as_given);
