@@ -1,8 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* The loaders' and writers' side of cs_error: their functions return a cs_status and fill a cs_error,
- * formatted by the engine's one filler (run/sized.h, cs_error_set); the writers' inner functions (src/io/out)
- * say why in a caller's buffer, and the few loaders' functions they call keep that form beside the
- * cs_error one (cs_status_why). */
+/* The loaders' and writers' side of cs_error: their functions return a cs_status (or NULL or -1 where that
+ * is their natural result) and fill a cs_error, formatted by the engine's one filler (run/sized.h,
+ * cs_error_set). */
 #ifndef CS_IO_STATUS_H
 #define CS_IO_STATUS_H
 
@@ -17,13 +16,6 @@
 /* Fill err (may be NULL) with status and message, and return status. */
 static inline cs_status cs_status_set(cs_error *err, cs_status status, const char *message) {
     return cs_error_set(err, status, "%s", status == CS_OK || !message ? "" : message);
-}
-
-/* A cs_status and its cs_error in the writers' form: 0 for CS_OK, else -1 with err's message in why. */
-static inline int cs_status_why(cs_status status, const cs_error *err, char *why, size_t why_size) {
-    if (status == CS_OK) return 0;
-    snprintf(why, why_size, "%s", err->message);
-    return -1;
 }
 
 /* Whether the caller's struct out, that starts with its size, can take this library's of full_size bytes

@@ -145,9 +145,3 @@ cs_status cs_input_load(const char *path, size_t limit, char **data, size_t *siz
     return cap > limit ? cs_error_set(err, CS_ERR_INVALID, "larger than an input file may be")
                        : cs_error_set(err, CS_ERR_MEMORY, "out of memory");
 }
-
-int cs_input_read(const char *path, size_t limit, char **data, size_t *size, int *errnum, char *why,
-                  size_t why_size) {
-    cs_error err;
-    return cs_status_why(cs_input_load(path, limit, data, size, errnum, &err), &err, why, why_size);
-}

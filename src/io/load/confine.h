@@ -40,9 +40,5 @@ void cs_allow_free(cs_allow *a);
  * large; *errnum 0) or CS_ERR_MEMORY. */
 cs_status cs_input_load(const char *path, size_t limit, char **data, size_t *size, int *errnum,
                         cs_error *err);
-/* cs_input_load in the writers' form (src/io/status.h, cs_status_why): 0, or -1 with why filled and *errnum
- * set. */
-int cs_input_read(const char *path, size_t limit, char **data, size_t *size, int *errnum, char *why,
-                  size_t why_size);
 
 #endif

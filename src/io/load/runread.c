@@ -287,10 +287,6 @@ cs_status cs_trace_load_run(const char *dir, cs_trace *tr, cs_error *err) {
     return read_run_series(path, tr, err);
 }
 
-int cs_trace_read_run(const char *dir, cs_trace *tr, char *why, size_t why_size) {
-    cs_error err;
-    return cs_status_why(cs_trace_load_run(dir, tr, &err), &err, why, why_size);
-}
 
 /* ---- a measured history ---- */
 
@@ -423,9 +419,4 @@ done:
     cs_csv_close(&csv);
     if (rc != CS_OK) cs_trace_free(tr);
     return rc;
-}
-
-int cs_trace_read_measured(const char *path, cs_units *units, cs_trace *tr, char *why, size_t why_size) {
-    cs_error err;
-    return cs_status_why(cs_trace_load_measured(path, units, tr, &err), &err, why, why_size);
 }

@@ -47,10 +47,6 @@ cs_status cs_trace_load_run(const char *dir, cs_trace *out, cs_error *err);
  * with err filled as "file:line:column: what and why" CS_ERR_INVALID, or CS_ERR_IO or CS_ERR_MEMORY as
  * cs_trace_load_run. */
 cs_status cs_trace_load_measured(const char *path, cs_units *units, cs_trace *out, cs_error *err);
-/* cs_trace_load_run and cs_trace_load_measured in the writers' form (src/io/status.h, cs_status_why): 0,
- * or -1 with why filled. */
-int cs_trace_read_run(const char *dir, cs_trace *out, char *why, size_t why_size);
-int cs_trace_read_measured(const char *path, cs_units *units, cs_trace *out, char *why, size_t why_size);
 void cs_trace_free(cs_trace *trace);
 
 /* The trailing 50-ms average of a deceleration history over times t (the engine's rule), into avg. */

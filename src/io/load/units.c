@@ -257,13 +257,6 @@ cs_units *cs_units_from_table(const char *table, cs_error *err) {
     return &t->base;
 }
 
-cs_units *cs_units_create(char *why, size_t why_size) {
-    cs_error err;
-    cs_units *u = cs_units_open(&err);
-    if (!u) cs_status_why(err.status, &err, why, why_size);
-    return u;
-}
-
 /* Whether value * factor is exactly what u converts value in unit to (a conversion by a factor alone). */
 static int by_factor(cs_units *u, void *unit, cs_quantity q, double factor) {
     static const double samples[] = {0, 0.1, 0.15, 3, 7.25, 35, 1234.5, 1e-3, -2.5};

@@ -48,8 +48,6 @@ typedef struct cs_units cs_units;
  * build time, the database itself read when a text the table lacks is first met. NULL with err filled
  * when there is no database to read (CS_ERR_IO) or no memory (CS_ERR_MEMORY). */
 cs_units *cs_units_open(cs_error *err);
-/* cs_units_open in the writers' form (src/io/status.h, cs_status_why): NULL with why filled. */
-cs_units *cs_units_create(char *why, size_t why_size);
 void cs_units_free(cs_units *u);
 
 /* The units of every quantity a designer page's table holds beside its model's own: metric and US. */

@@ -450,8 +450,8 @@ cs_status cs_out_end(cs_outdir *out, FILE *f, cs_error *err) {
     return cs_out_end_at(out, out->count - 1, f, err);
 }
 
-/* The i-th file's temporary opened, then sync (fsync, or start_writeback when wait is 0). Returns 0, or -1
- * with why filled. */
+/* The i-th file's temporary opened, then sync (fsync, or start_writeback when wait is 0). CS_OK, or
+ * CS_ERR_IO with err filled (the file and the system's reason). */
 static cs_status sync_file(const cs_outdir *out, int i, int wait, cs_error *err) {
     char path[PATH_SIZE];
     full_path(out, out->tmps[i], path, sizeof path);
@@ -614,13 +614,14 @@ cs_status cs_out_journal_add(cs_outdir *out, const char *text, size_t len, cs_er
 }
 
 char *cs_out_journal_read(const char *dir, size_t *len, cs_error *err) {
-    char path[PATH_SIZE], reason[256];
+    char path[PATH_SIZE];
     snprintf(path, sizeof path, "%s/%s", dir, CS_OUT_JOURNAL);
     char *text = NULL;
     int errnum = 0;
-    cs_error_set(err, CS_OK, "%s", "");
-    if (cs_input_read(path, (size_t)2 << 30, &text, len, &errnum, reason, sizeof reason) != 0) {
-        if (errnum != ENOENT) cs_error_set(err, CS_ERR_IO, "%s: %s", path, reason);
+    cs_error reason;
+    cs_status_set(err, CS_OK, "");
+    if (cs_input_load(path, (size_t)2 << 30, &text, len, &errnum, &reason) != CS_OK) {
+        if (errnum != ENOENT) cs_error_set(err, CS_ERR_IO, "%s: %s", path, reason.message);
         return NULL;
     }
     while (*len > 0 && text[*len - 1] != '\n') /* a row cut short by a kill */
