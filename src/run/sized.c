@@ -166,8 +166,8 @@ void cs_defs_free(cs_defs *d) {
     free(d->rails);
 }
 
-cs_status cs_sized_refuse(cs_error *err, const char *name, const char *why) {
-    return cs_error_set(err, CS_ERR_INVALID, "%s: %s", name, why);
+cs_status cs_sized_refuse(cs_error *err, const char *name, const char *reason) {
+    return cs_error_set(err, CS_ERR_INVALID, "%s: %s", name, reason);
 }
 
 /* The size at the start of the caller's struct at: CS_OK, or CS_ERR_INVALID naming it if that size is not

@@ -58,7 +58,7 @@ cs_status cs_error_vset(cs_error *err, cs_status status, const char *fmt, va_lis
     __attribute__((format(printf, 3, 0)));
 /* Fill err (may be NULL) with CS_ERR_MEMORY. */
 void cs_out_of_memory(cs_error *err);
-/* Refuse a fill of name: CS_ERR_INVALID with err filled (may be NULL) saying why. */
-cs_status cs_sized_refuse(cs_error *err, const char *name, const char *why);
+/* Refuse a fill of name: CS_ERR_INVALID with err filled (may be NULL): "name: reason". */
+cs_status cs_sized_refuse(cs_error *err, const char *name, const char *reason);
 
 #endif

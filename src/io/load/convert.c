@@ -59,7 +59,7 @@ static int read_value(cs_loader *l, const cs_node *n, const cs_field *f, double 
         cs_units_show(l->units, n->text, f->q, r->hi, hi, sizeof hi);
         cs_err_node(l, n, 0, "'%s' is %s for %s (expected %s%s%s to %s: %s)", n->text,
                     size > r->hi ? "too large" : "too small", f->key, f->flags & CS_POS ? "" : "0 or ",
-                    f->flags & (CS_POS | CS_NONNEG) ? "" : "a size of ", lo, hi, r->why);
+                    f->flags & (CS_POS | CS_NONNEG) ? "" : "a size of ", lo, hi, r->basis);
         return -1;
     }
     return 0;

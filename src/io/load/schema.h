@@ -91,10 +91,10 @@ extern const cs_table cs_table_model, cs_table_parts, cs_table_vehicle, cs_table
 
 /* The range of a physical value, in SI: its size at most hi and, where it is not 0, at least lo. Each is an
  * assumption (docs/assumptions.md, "Ranges of the inputs"), wide: only a value that no barrier, vehicle
- * or run can have is refused. why says what bounds it. */
+ * or run can have is refused. basis says what bounds it. */
 typedef struct cs_range {
     double lo, hi;
-    const char *why;
+    const char *basis;
 } cs_range;
 
 /* The range of a quantity field: its own, else its quantity's. */

@@ -80,8 +80,8 @@ static void structural(list *l, const cs_summary *s) {
              !judged ? ": the run did not end with the vehicle redirected, stopped or through" : "");
 }
 
-static void not_judged(list *l, const char *id, const char *name, const char *why) {
-    snprintf(add(l, id, name, CS_VERDICT_NOT_JUDGED)->detail, sizeof(cs_criterion){0}.detail, "%s", why);
+static void not_judged(list *l, const char *id, const char *name, const char *detail) {
+    snprintf(add(l, id, name, CS_VERDICT_NOT_JUDGED)->detail, sizeof(cs_criterion){0}.detail, "%s", detail);
 }
 
 /* Upright: roll and pitch at most 75 deg over the run (to the loss of contact). */

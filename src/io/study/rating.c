@@ -132,7 +132,7 @@ const char *cs_rating_level(cs_standard standard, double p) {
     }
 }
 
-static cs_rating not_rated(cs_standard standard, const char *vehicle_class, const char *why) {
+static cs_rating not_rated(cs_standard standard, const char *vehicle_class, const char *note) {
     cs_rating r;
     memset(&r, 0, sizeof r);
     r.standard = standard;
@@ -140,7 +140,7 @@ static cs_rating not_rated(cs_standard standard, const char *vehicle_class, cons
     r.penetration = NAN;
     r.reference = "";
     snprintf(r.label, sizeof r.label, "not rated");
-    snprintf(r.note, sizeof r.note, "%s", why);
+    snprintf(r.note, sizeof r.note, "%s", note);
     return r;
 }
 
@@ -166,11 +166,11 @@ static const char *unfinished(cs_outcome o) {
 cs_rating cs_rate_run(cs_standard standard, const char *vehicle_class, double speed,
                       const cs_summary *summary, const cs_vehicle_def *vehicle,
                       const cs_rating_rules *rules) {
-    char why[160];
+    char note[160];
     if (!cs_standard_tests_class(standard, vehicle_class)) {
-        snprintf(why, sizeof why, "%s has no %s test vehicle", cs_standard_title(standard),
+        snprintf(note, sizeof note, "%s has no %s test vehicle", cs_standard_title(standard),
                  vehicle_class ? vehicle_class : "such");
-        return not_rated(standard, vehicle_class, why);
+        return not_rated(standard, vehicle_class, note);
     }
     const char *open = unfinished(summary->outcome);
     if (open) return not_rated(standard, vehicle_class, open);
@@ -227,17 +227,17 @@ cs_rating cs_rate_as_run(cs_standard standard, const char *vehicle_class, const 
                          double speed, double angle, const cs_summary *summary,
                          const cs_rating_rules *rules) {
     const char *cls = vehicle_class ? vehicle_class : cs_rating_vehicle_class(vehicle->mass);
-    char why[160];
+    char note[160];
     if (!cls || !cs_standard_tests_class(standard, cls)) {
-        snprintf(why, sizeof why, "the vehicle, %.0f kg, is %s, within 5%%", vehicle->mass,
+        snprintf(note, sizeof note, "the vehicle, %.0f kg, is %s, within 5%%", vehicle->mass,
                  standard == CS_ASTM_F2656 ? "none of its test vehicles, C, PU, M and H"
                                            : "not its 15,000-lb truck");
-        return not_rated(standard, cls, why);
+        return not_rated(standard, cls, note);
     }
     if (fabs(angle - 90 * CS_DEG) > rules->head_on_tolerance) {
-        snprintf(why, sizeof why, "the impact is at %.1f deg; its test is head-on, at 90 deg",
+        snprintf(note, sizeof note, "the impact is at %.1f deg; its test is head-on, at 90 deg",
                  angle / CS_DEG);
-        return not_rated(standard, cls, why);
+        return not_rated(standard, cls, note);
     }
     return cs_rate_run(standard, cls, speed, summary, vehicle, rules);
 }
