@@ -60,8 +60,8 @@ static int teardown(void **st) {
     return 0;
 }
 
-/* The page written from template into a malloc'ed string; rc the writer's return. */
-static char *page(run *r, const cs_record *rec, const char *template, int *rc, char *why, size_t why_size) {
+/* The page written from template into a malloc'ed string; err the writer's. */
+static char *page(run *r, const cs_record *rec, const char *template, cs_error *err) {
     static const char *const overrides[] = {"--set scenario.t_end=40 ms"};
     cs_run_info info = {.command = "cablesim run 'x</script>.yaml'",
                         .overrides = overrides,
@@ -71,12 +71,9 @@ static char *page(run *r, const cs_record *rec, const char *template, int *rc, c
     size_t size = 0;
     FILE *f = open_memstream(&buf, &size);
     assert_non_null(f);
-    cs_error err;
-    *rc = cs_write_report_html(f, (const unsigned char *)template, strlen(template), &r->in, r->state, rec,
-                               &info, &err) == CS_OK
-              ? 0
-              : -1;
-    if (*rc) snprintf(why, why_size, "%s", err.message);
+    if (cs_write_report_html(f, (const unsigned char *)template, strlen(template), &r->in, r->state, rec,
+                             &info, err) == CS_OK)
+        *err = (cs_error){CS_OK, ""};
     fclose(f);
     char *out = strdup(buf); /* a copy: gcc -O3 otherwise takes buf for a pointer into this frame */
     free(buf);
@@ -111,12 +108,11 @@ static void markers_filled(void **st) {
     run *r = *st;
     const char *name = r->in.name;
     r->in.name = "a<b>&\"c</script>";
-    char why[256] = "";
-    int rc;
-    char *html = page(r, &r->rec, "<title>@CS_TITLE@</title><h1>@CS_TITLE@</h1><script>@CS_DATA@</script>!",
-                      &rc, why, sizeof why);
+    cs_error err;
+    char *html =
+        page(r, &r->rec, "<title>@CS_TITLE@</title><h1>@CS_TITLE@</h1><script>@CS_DATA@</script>!", &err);
     r->in.name = name;
-    if (rc != 0) fail_msg("%s", why);
+    if (err.status != CS_OK) fail_msg("%s", err.message);
     assert_int_equal(count(html, "<title>a&lt;b&gt;&amp;&quot;c&lt;/script&gt;</title>"), 1);
     assert_int_equal(count(html, "<h1>a&lt;b&gt;&amp;&quot;c&lt;/script&gt;</h1>"), 1);
     assert_int_equal(count(html, "@CS_"), 0);
@@ -132,10 +128,9 @@ static void markers_filled(void **st) {
 
 static void data_complete(void **st) {
     run *r = *st;
-    char why[256] = "";
-    int rc;
-    char *json = page(r, &r->rec, "@CS_DATA@", &rc, why, sizeof why);
-    if (rc != 0) fail_msg("%s", why);
+    cs_error err;
+    char *json = page(r, &r->rec, "@CS_DATA@", &err);
+    if (err.status != CS_OK) fail_msg("%s", err.message);
     assert_true(json[0] == '{' && json[strlen(json) - 1] == '}');
     static const char *const keys[] = {"\"cablesim\":{\"version\":\"" CS_VERSION_STRING "\"",
                                        "\"overrides\":[\"--set scenario.t_end=40 ms\"]",
@@ -190,11 +185,10 @@ static void design_has_each_end(void **st) {
     cables[1].ends[0].termination_efficiency = 0.7;
     cables[1].ends[1].slip_load = 1e5, cables[1].ends[1].slip_travel = 0.45;
     r->in.barrier.cables = cables;
-    char why[256] = "";
-    int rc;
-    char *json = page(r, &r->rec, "@CS_DATA@", &rc, why, sizeof why);
+    cs_error err;
+    char *json = page(r, &r->rec, "@CS_DATA@", &err);
     r->in.barrier.cables = loaded;
-    if (rc != 0) fail_msg("%s", why);
+    if (err.status != CS_OK) fail_msg("%s", err.message);
     assert_non_null(
         strstr(json, "\"pretension_n\":22241.1,\"ends\":[{\"termination\":\"clips\",\"termination_"
                      "efficiency\":0.9},{\"termination\":\"swaged\",\"termination_efficiency\":0.95}]}"));
@@ -210,10 +204,9 @@ static void design_has_each_end(void **st) {
  * model's own value in SI. */
 static void design_as_loaded(void **st) {
     run *r = *st;
-    char why[256] = "";
-    int rc;
-    char *json = page(r, &r->rec, "@CS_DATA@", &rc, why, sizeof why);
-    if (rc != 0) fail_msg("%s", why);
+    cs_error err;
+    char *json = page(r, &r->rec, "@CS_DATA@", &err);
+    if (err.status != CS_OK) fail_msg("%s", err.message);
     const char *d = strstr(json, "\"design\":{\"ropes\":[");
     assert_non_null(d);
     const cs_barrier_def *b = &r->in.barrier;
@@ -246,11 +239,10 @@ static void design_as_loaded(void **st) {
 
 static void page_without_data_marker(void **st) {
     run *r = *st;
-    char why[256] = "";
-    int rc;
-    char *html = page(r, &r->rec, "<title>@CS_TITLE@</title>", &rc, why, sizeof why);
-    assert_int_equal(rc, -1);
-    assert_non_null(strstr(why, "@CS_DATA@"));
+    cs_error err;
+    char *html = page(r, &r->rec, "<title>@CS_TITLE@</title>", &err);
+    assert_int_not_equal(err.status, CS_OK);
+    assert_non_null(strstr(err.message, "@CS_DATA@"));
     free(html);
 }
 
@@ -287,10 +279,9 @@ static void long_record_subsampled(void **st) {
         memcpy(big.path_tension + i * nc * nn, s->path_tension + j * nc * nn,
                nc * nn * sizeof *big.path_tension);
     }
-    char why[256] = "";
-    int rc;
-    char *json = page(r, &big, "@CS_DATA@", &rc, why, sizeof why);
-    if (rc != 0) fail_msg("%s", why);
+    cs_error err;
+    char *json = page(r, &big, "@CS_DATA@", &err);
+    if (err.status != CS_OK) fail_msg("%s", err.message);
     int series = array_length(json, "\"t\":"), frames = array_length(json, "\"frames\":");
     assert_in_range(series, CS_REPORT_SERIES_MAX / 2, CS_REPORT_SERIES_MAX + 1);
     assert_in_range(frames, CS_REPORT_REPLAY_MIN, CS_REPORT_REPLAY_MAX + 1);
