@@ -73,6 +73,21 @@ check "a unit of no compared quantity exits 2 at line 1, column 10" \
 printf 'time [s],speed [mph]\n0,40\n0.002,x\n' >"$tmp/badcell.csv"
 out=$("$cs" compare "$tmp/a" --measured "$tmp/badcell.csv" -o "$tmp/bad2" 2>&1)
 check "a cell that is not a number exits 2 at its place" '[ $? -eq 2 ] && grep -q "badcell.csv:3:7: .x. is not a number" <<<"$out"'
+printf 'time [s],speed [mph]\n0,1e300\n0.1,1e300\n0.2,0\n' >"$tmp/huge.csv"
+out=$("$cs" compare "$tmp/a" --measured "$tmp/huge.csv" -o "$tmp/bad-huge" 2>&1)
+check "a value beyond any crash history (its metrics would be inf) exits 2 at its place" '[ $? -eq 2 ] && grep -q "huge.csv:2:3: .1e300. is too large" <<<"$out" && [ ! -e "$tmp/bad-huge" ]'
+# a run's folder is read as strictly as a measured history: a nan in timeseries.csv, a summary that is not
+# JSON or holds text where a number belongs, each at its place
+mkdir -p "$tmp/d1" "$tmp/d2" "$tmp/d3"
+cp "$tmp/a/summary.json" "$tmp/d1/" && sed -E '3s/^(([^,]*,){4})[^,]*/\1nan/' "$tmp/a/timeseries.csv" >"$tmp/d1/timeseries.csv"
+out=$("$cs" compare "$tmp/d1" -o "$tmp/bad-nan" 2>&1)
+check "a nan in a run's timeseries.csv exits 2 at its place" '[ $? -eq 2 ] && grep -qE "d1/timeseries.csv:3:[0-9]+: .nan. is not a number" <<<"$out" && [ ! -e "$tmp/bad-nan" ]'
+cp "$tmp/a/timeseries.csv" "$tmp/d2/" && head -c 40 "$tmp/a/summary.json" >"$tmp/d2/summary.json"
+out=$("$cs" compare "$tmp/d2" -o "$tmp/bad-cut" 2>&1)
+check "a cut summary.json exits 2 at where it ends" '[ $? -eq 2 ] && grep -qE "d2/summary.json:[0-9]+:[0-9]+: not JSON: it ends too soon" <<<"$out"'
+cp "$tmp/a/timeseries.csv" "$tmp/d3/" && sed 's/"max_50ms_decel_g": *[0-9.e+-]*/"max_50ms_decel_g": "abc"/' "$tmp/a/summary.json" >"$tmp/d3/summary.json"
+out=$("$cs" compare "$tmp/d3" -o "$tmp/bad-text" 2>&1)
+check "text where summary.json has a number exits 2, naming it" '[ $? -eq 2 ] && grep -qF "d3/summary.json: max_50ms_decel_g is \"abc\" (expected a number" <<<"$out"'
 printf 'time [s],speed [mph]\n0,40\n0,39\n' >"$tmp/back.csv"
 out=$("$cs" compare "$tmp/a" --measured "$tmp/back.csv" -o "$tmp/bad3" 2>&1)
 check "time that does not grow exits 2" '[ $? -eq 2 ] && grep -q "back.csv:3:1: the time goes back or stands" <<<"$out"'

@@ -148,11 +148,16 @@ static void derive(cs_trace *tr) {
 
 /* ---- a run's folder ---- */
 
-static double json_number(json_object *root, const char *key) {
+/* A number of the summary: NAN where it is null or absent (a run that did not reach it); a key holding
+ * anything else makes *bad that key (the first such). */
+static double json_number(json_object *root, const char *key, const char **bad) {
     json_object *v;
     if (!json_object_object_get_ex(root, key, &v) || !v) return NAN;
     enum json_type t = json_object_get_type(v);
-    return t == json_type_double || t == json_type_int ? json_object_get_double(v) : NAN;
+    if ((t == json_type_double || t == json_type_int) && isfinite(json_object_get_double(v)))
+        return json_object_get_double(v);
+    if (!*bad) *bad = key;
+    return NAN;
 }
 
 static cs_status read_summary(const char *dir, cs_trace *tr, cs_error *err) {
@@ -163,25 +168,58 @@ static cs_status read_summary(const char *dir, cs_trace *tr, cs_error *err) {
         return cs_error_set(err, CS_ERR_IO, "%s: %s (expected a folder written by cablesim run)", path,
                             strerror(errno));
     fclose(probe);
-    json_object *root = json_object_from_file(path);
-    if (!root || !json_object_is_type(root, json_type_object)) {
-        if (root) json_object_put(root);
-        return cs_error_set(err, CS_ERR_INVALID, "%s: not a summary of a run (%s)", path,
-                            json_util_get_last_err());
+    csv_file f;
+    size_t lines;
+    cs_status rc = read_all(path, &f, &lines, err);
+    if (rc != CS_OK) return rc;
+    json_tokener *tok = json_tokener_new();
+    if (!tok) {
+        free(f.text);
+        return cs_error_set(err, CS_ERR_MEMORY, "%s: out of memory", path);
+    }
+    json_object *root = json_tokener_parse_ex(tok, f.text, (int)f.size);
+    enum json_tokener_error why = json_tokener_get_error(tok);
+    if (root && why == json_tokener_success && !json_object_is_type(root, json_type_object))
+        rc = cs_error_set(err, CS_ERR_INVALID,
+                          "%s:1:1: a JSON %s (expected a summary written by cablesim run)", path,
+                          json_type_to_name(json_object_get_type(root)));
+    else if (!root || why != json_tokener_success) { /* where the text stops being JSON, as line:column */
+        size_t at = json_tokener_get_parse_end(tok), line = 1, col = 1;
+        for (size_t i = 0; i < at && i < f.size; i++)
+            f.text[i] == '\n' ? (line++, col = 1) : col++;
+        rc = cs_error_set(err, CS_ERR_INVALID,
+                          "%s:%zu:%zu: not JSON: %s (expected a summary written by cablesim run)", path, line,
+                          col,
+                          why == json_tokener_continue ? "it ends too soon" : json_tokener_error_desc(why));
+    }
+    json_tokener_free(tok);
+    free(f.text);
+    if (rc != CS_OK) {
+        json_object_put(root);
+        return rc;
     }
     json_object *o;
     if (json_object_object_get_ex(root, "outcome", &o) && json_object_is_type(o, json_type_string))
         snprintf(tr->outcome, sizeof tr->outcome, "%s", json_object_get_string(o));
-    tr->max_decel_50ms_g = json_number(root, "max_50ms_decel_g");
-    tr->t_max_decel_50ms = json_number(root, "t_max_50ms_decel_s");
-    tr->max_penetration = json_number(root, "max_dynamic_penetration_m");
-    tr->penetration_beyond_m = json_number(root, "penetration_beyond_m"); /* null: it stopped */
-    tr->max_deflection = json_number(root, "max_barrier_deflection_m");
-    tr->working_width = json_number(root, "working_width_m");
-    tr->exit_speed = json_number(root, "exit_speed_mps");
-    tr->max_tension = json_number(root, "max_cable_tension_n");
-    tr->t_end = json_number(root, "t_end_s");
+    const char *bad = NULL;
+    tr->max_decel_50ms_g = json_number(root, "max_50ms_decel_g", &bad);
+    tr->t_max_decel_50ms = json_number(root, "t_max_50ms_decel_s", &bad);
+    tr->max_penetration = json_number(root, "max_dynamic_penetration_m", &bad);
+    tr->penetration_beyond_m = json_number(root, "penetration_beyond_m", &bad); /* null: it stopped */
+    tr->max_deflection = json_number(root, "max_barrier_deflection_m", &bad);
+    tr->working_width = json_number(root, "working_width_m", &bad);
+    tr->exit_speed = json_number(root, "exit_speed_mps", &bad);
+    tr->max_tension = json_number(root, "max_cable_tension_n", &bad);
+    tr->t_end = json_number(root, "t_end_s", &bad);
+    char shown[64] = "";
+    json_object *b;
+    if (bad && json_object_object_get_ex(root, bad, &b))
+        snprintf(shown, sizeof shown, "%s", json_object_to_json_string_ext(b, JSON_C_TO_STRING_PLAIN));
     json_object_put(root);
+    if (bad)
+        return cs_error_set(err, CS_ERR_INVALID,
+                            "%s: %s is %s (expected a number, or null where the run did not reach it)", path,
+                            bad, shown);
     if (!tr->outcome[0])
         return cs_error_set(err, CS_ERR_INVALID,
                             "%s: no outcome (expected a summary written by cablesim run)", path);
@@ -216,6 +254,24 @@ static int is_run_series(const char *text) {
     return is;
 }
 
+/* Cell k of a run's row as a number: an empty cell is NAN, anything else a finite number whole. */
+static cs_status run_number(const cs_csv *csv, int k, const char *path, double *x, cs_error *err) {
+    const char *c = csv->cell[k];
+    char *end;
+    if (c[strspn(c, " ")] == '\0') {
+        *x = NAN;
+        return CS_OK;
+    }
+    *x = strtod(c, &end);
+    while (*end == ' ')
+        end++;
+    if (*end == '\0' && isfinite(*x)) return CS_OK;
+    return cs_error_set(err, CS_ERR_INVALID,
+                        "%s:%ld:%d: '%s' is not a number (expected a finite number, or nothing where the run "
+                        "has none)",
+                        path, csv->cell_line[k], csv->cell_col[k], c);
+}
+
 /* A run's time history, timeseries.csv at path, into tr (cleared, its label and measured set). */
 static cs_status read_run_series(const char *path, cs_trace *tr, cs_error *err) {
     csv_file f;
@@ -245,21 +301,29 @@ static cs_status read_run_series(const char *path, cs_trace *tr, cs_error *err) 
     double u0[2] = {0.0, 0.0};
     csv.flags |= CS_CSV_BLANKS;
     while ((rc = next_row(&csv, nh, path, &more, err)) == CS_OK && more) {
-        char **cells = csv.cell;
-        size_t i = tr->n++;
-        tr->t[i] = strtod(cells[it], NULL);
-        double vx = strtod(cells[ivx], NULL), vy = strtod(cells[ivy], NULL), v = hypot(vx, vy);
-        if (i == 0 && v > 0.0) u0[0] = vx / v, u0[1] = vy / v; /* the initial heading */
-        tr->y[CS_TRACE_DECEL][i] = -(strtod(cells[iax], NULL) * u0[0] + strtod(cells[iay], NULL) * u0[1]);
-        tr->y[CS_TRACE_DECEL_50MS][i] = strtod(cells[id50], NULL) * CS_G0;
-        tr->y[CS_TRACE_SPEED][i] = strtod(cells[isp], NULL);
-        tr->y[CS_TRACE_PENETRATION][i] = strtod(cells[ipen], NULL);
+        const int cols[] = {it, ivx, ivy, iax, iay, id50, isp, ipen};
+        double x[8];
+        for (int k = 0; rc == CS_OK && k < 8; k++)
+            rc = run_number(&csv, cols[k], path, &x[k], err);
+        if (rc == CS_OK && isnan(x[0]))
+            rc = cs_error_set(err, CS_ERR_INVALID, "%s:%ld:%d: no time (expected one in every row)", path,
+                              csv.cell_line[it], csv.cell_col[it]);
         double tmax = NAN;
-        for (int k = 0; k < nh; k++) /* the tautest rope at this time */
+        for (int k = 0; rc == CS_OK && k < nh; k++) /* the tautest rope at this time */
             if (tension[k]) {
-                double x = strtod(cells[k], NULL);
-                if (!(x <= tmax)) tmax = x;
+                double tk;
+                rc = run_number(&csv, k, path, &tk, err);
+                if (!isnan(tk) && !(tk <= tmax)) tmax = tk;
             }
+        if (rc != CS_OK) break;
+        size_t i = tr->n++;
+        tr->t[i] = x[0];
+        double v = hypot(x[1], x[2]);
+        if (i == 0 && v > 0.0) u0[0] = x[1] / v, u0[1] = x[2] / v; /* the initial heading */
+        tr->y[CS_TRACE_DECEL][i] = -(x[3] * u0[0] + x[4] * u0[1]);
+        tr->y[CS_TRACE_DECEL_50MS][i] = x[5] * CS_G0;
+        tr->y[CS_TRACE_SPEED][i] = x[6];
+        tr->y[CS_TRACE_PENETRATION][i] = x[7];
         tr->y[CS_TRACE_TENSION][i] = tmax;
     }
     if (rc != CS_OK) goto done;
@@ -286,7 +350,6 @@ cs_status cs_trace_load_run(const char *dir, cs_trace *tr, cs_error *err) {
     snprintf(path, sizeof path, "%s/timeseries.csv", dir);
     return read_run_series(path, tr, err);
 }
-
 
 /* ---- a measured history ---- */
 
@@ -384,6 +447,14 @@ cs_status cs_trace_load_measured(const char *path, cs_units *units, cs_trace *tr
             if ((*end != '\0' || !isfinite(x)) && !(blank && j > 0)) {
                 rc = cs_error_set(err, CS_ERR_INVALID, "%s:%ld:%d: '%s' is not a number", path, line, col[j],
                                   cells[j]);
+                goto done;
+            }
+            if (fabs(x * factor[j]) > 1e12) { /* squared by the metrics, and beyond any crash history */
+                rc = cs_error_set(
+                    err, CS_ERR_INVALID,
+                    "%s:%ld:%d: '%s' is too large (expected at most 1e12 in SI units, far beyond "
+                    "any crash history)",
+                    path, line, col[j], cells[j]);
                 goto done;
             }
             if (j == 0)
