@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "out/html.h"
+#include "out/numtext.h"
 #include "out/plot.h"
 #include "status.h"
 #include "study/metrics.h"
@@ -198,6 +199,10 @@ static void cell(char *buf, size_t size, const cs_trace *tr, const cs_trace *ref
                                      : snprintf(buf, size, "%s%.3f %s", at_least, x, params[k].unit);
     if (strcmp(params[k].unit, "N") == 0) /* tensions in kN */
         n = snprintf(buf, size, "%.1f kN (%.1f kip)", x / 1e3, x / params[k].us_scale);
+    if (strcmp(params[k].unit, "s") == 0) { /* a run's times as its other outputs give them */
+        char t[CS_TIME_TEXT_SIZE];
+        n = snprintf(buf, size, "%s%s s", at_least, cs_time_text(x, t));
+    }
     if (!is_ref && isfinite(d) && n > 0 && (size_t)n < size)
         snprintf(buf + n, size - (size_t)n, ", %+.1f%%", d);
 }

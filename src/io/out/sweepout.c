@@ -25,7 +25,8 @@ const char *cs_sweep_method_name(cs_sweep_method method) {
 /* Each column but the event counts and the error, at its `what`. */
 static const cs_sweep_column summary_columns[C_ERROR] = {
     [C_OUTCOME] = {"outcome", NULL, NULL,
-                   "outcome: stopped, breakthrough, time_limit; bad_model or failed (see error)",
+                   "outcome: stopped, breakthrough, override, underride, redirected, time_limit, no_contact, "
+                   "did_not_converge or step_limit; bad_model or failed (see error)",
                    CS_COLUMN_TEXT, C_OUTCOME},
     [C_RATING] = {"astm_f2656_as_run", NULL, NULL, "ASTM F2656 designation as run", CS_COLUMN_TEXT, C_RATING},
     [C_T] = {"time_reached", "s", NULL, "time reached", CS_COLUMN_REAL, C_T},

@@ -19,7 +19,7 @@ typedef struct cs_sweep_column {
     char name[48];        /* the header without its unit, and the netCDF name: "max_50ms_decel" */
     const char *unit;     /* the header's unit ("g", "m/s", "1"); NULL: text, or a count */
     const char *cf_units; /* the unit as UDUNITS reads it where the header's is read otherwise ("g": gram) */
-    char long_name[96];   /* what it is, in words */
+    char long_name[160];  /* what it is, in words */
     cs_column_kind kind;
     int what; /* which value of a result */
 } cs_sweep_column;
