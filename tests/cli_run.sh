@@ -29,7 +29,7 @@ check "check --set" '"$cs" check examples/aps3.yaml --set scenario.speed="35 mph
 # contact: the face pushes the line out and the ropes do work on it).
 "$cs" run examples/aps3.yaml -o "$tmp/shallow" --set "scenario.angle=3 deg" >/dev/null 2>"$tmp/stderr"
 check "a vehicle that would pass the barrier's end is refused (status 2), where and why" \
-    '[ $? -eq 2 ] && grep -q "at 3 deg the vehicle.s leading front corner meets the cable line at x = -2.20 m" "$tmp/stderr" && [ ! -e "$tmp/shallow" ]'
+    '[ $? -eq 2 ] && grep -q "at 3 deg the leading front corner of the vehicle.s 2.40-m face meets the cable line at x = -2.20 m" "$tmp/stderr" && [ ! -e "$tmp/shallow" ]'
 "$cs" run examples/aps3.yaml -o "$tmp/shallow" --t-end "0.3 s" --set "scenario.angle=3 deg" --set scenario.impact_at=corner >"$tmp/stdout" 2>&1
 check "at 3 deg to the corner the ropes take the vehicle" \
     'grep -oE "\"max_barrier_deflection_m\":[0-9.]+" "$tmp/shallow/summary.json" | awk -F: "{ exit !(\$2 > 0.1) }"'

@@ -622,12 +622,12 @@ static void check_barrier(cs_loader *l, const cs_node *barrier, const cs_barrier
     if (b->start_anchor.x >= first->x)
         cs_err_node(l, blamed(at(start, "x"), post_position(l->post_origin[0])), 0,
                     "the start anchor (x = %g m) is inside the barrier (expected it before "
-                    "the first post, x = %g m)",
+                    "the first post at x = %g m, not at it or beyond)",
                     b->start_anchor.x, first->x);
     if (b->end_anchor.x <= last->x)
         cs_err_node(l, blamed(at(end, "x"), post_position(l->post_origin[b->post_count - 1])), 0,
                     "the end anchor (x = %g m) is inside the barrier (expected it after the "
-                    "last post, x = %g m)",
+                    "last post at x = %g m, not at it or before)",
                     b->end_anchor.x, last->x);
 }
 
@@ -653,19 +653,23 @@ static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_de
     if (b && (s->impact_x <= b->start_anchor.x || s->impact_x >= b->end_anchor.x))
         cs_err_node(l, blamed(at(sc, "impact_x"), anchor_x(l, b, s->impact_x)), 0,
                     "the impact point (%g m) is outside the barrier (expected between "
-                    "the anchors, %g m to %g m)",
+                    "the anchors, above %g m and below %g m)",
                     s->impact_x, b->start_anchor.x, b->end_anchor.x);
     else if (b && v && v->front_width > 0.0 && s->angle > 0.0 && s->angle < CS_PI) {
         double corner = leading_corner_x(s, v->front_width);
+        const cs_node *width = l->vehicle_node ? cs_node_get(l->vehicle_node, "front_width") : NULL;
         if (corner <= b->start_anchor.x || corner >= b->end_anchor.x)
             cs_err_node(
-                l, blamed(at(sc, at(sc, "angle") ? "angle" : "impact_x"), anchor_x(l, b, corner)), 0,
-                "at %g deg the vehicle's leading front corner meets the cable line at x = %.2f m, "
-                "%.2f m before the face's centre, outside the barrier (%.2f m to %.2f m): the vehicle "
+                l,
+                blamed(blamed(at(sc, at(sc, "angle") ? "angle" : "impact_x"), anchor_x(l, b, corner)), width),
+                0,
+                "at %g deg the leading front corner of the vehicle's %.2f-m face meets the cable line at x = "
+                "%.2f m, %.2f m before the face's centre, outside the barrier (%.2f m to %.2f m): the "
+                "vehicle "
                 "would pass the barrier's end, not strike it (expected that corner between the "
                 "anchors: move impact_x, or give impact_at: corner to place the corner there)",
-                s->angle * 180.0 / CS_PI, corner, fabs(corner - s->impact_x), b->start_anchor.x,
-                b->end_anchor.x);
+                s->angle * 180.0 / CS_PI, v->front_width, corner, fabs(corner - s->impact_x),
+                b->start_anchor.x, b->end_anchor.x);
     }
     if (b) return; /* the rest was checked without the barrier */
     above(l, sc, "t_end", s->t_end, "dt", s->dt);

@@ -414,7 +414,7 @@ static const cs_range quantity_ranges[CS_Q_COUNT] = {
     [CS_Q_SECOND_MOMENT] = {1e-12, 0.1,
                             "a post's or rail's section: 1 mm^4 is a wire, 0.1 m^4 ten times the largest "
                             "rolled steel shape's"},
-    [CS_Q_MASS] = {1.0, 1e6, "a vehicle or an anchor block: 1 kg to 1,000 t (a loaded road train is 200 t)"},
+    [CS_Q_MASS] = {10.0, 5e5, "a vehicle or an anchor block: 10 kg to 500 t (a loaded road train is 200 t)"},
     [CS_Q_MASS_PER_LENGTH] = {1e-3, 1e4,
                               "a rope, post or rail: 1 g/m is a thread, 10 t/m ten times a rail's"},
     [CS_Q_INERTIA] = {1e-3, 1e8,
