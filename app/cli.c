@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #include "cli.h"
 
+#include <ctype.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -37,7 +38,19 @@ int cs_cli_next(const cs_cli *c, int argc, char **argv, const char *shortopts,
     snprintf(opts, sizeof opts, ":%s", shortopts); /* a missing value returned as ':' */
     opterr = 0;
     /* argv[1], the subcommand, stands where getopt expects the program's name */
-    int v = getopt_long(argc - 1, argv + 1, opts, longopts, NULL);
+    int index = -1;
+    int v = getopt_long(argc - 1, argv + 1, opts, longopts, &index);
+    /* a value that is another option ("--measured -o DIR"): the value was left out */
+    if (v != '?' && v != ':' && optarg && optarg[0] == '-' &&
+        isalpha((unsigned char)optarg[1 + (optarg[1] == '-')])) {
+        char name[128];
+        if (index >= 0)
+            snprintf(name, sizeof name, "--%s", longopts[index].name);
+        else
+            snprintf(name, sizeof name, "-%c", v);
+        cs_cli_usage_error(c, "option '%s' needs a value, and '%s' is an option", name, optarg);
+        return '?';
+    }
     if (v != '?' && v != ':') return v;
     const char *arg = argv[optind]; /* argv + 1 shifted: argv[1 + optind - 1] */
     char name[128];

@@ -88,6 +88,11 @@ check "a cut summary.json exits 2 at where it ends" '[ $? -eq 2 ] && grep -qE "d
 cp "$tmp/a/timeseries.csv" "$tmp/d3/" && sed 's/"max_50ms_decel_g": *[0-9.e+-]*/"max_50ms_decel_g": "abc"/' "$tmp/a/summary.json" >"$tmp/d3/summary.json"
 out=$("$cs" compare "$tmp/d3" -o "$tmp/bad-text" 2>&1)
 check "text where summary.json has a number exits 2, naming it" '[ $? -eq 2 ] && grep -qF "d3/summary.json: max_50ms_decel_g is \"abc\" (expected a number" <<<"$out"'
+out=$("$cs" compare "$tmp/a" --measured -o "$tmp/bad-opt" 2>&1)
+check "--measured followed by an option: its value left out, said so" '[ $? -eq 2 ] && grep -qxF "cablesim compare: option '"'"'--measured'"'"' needs a value, and '"'"'-o'"'"' is an option" <<<"$out" && [ ! -e "$tmp/bad-opt" ]'
+printf 'time [s],speed [mph],speed [km/h]\n0,40,64\n' >"$tmp/twice.csv"
+out=$("$cs" compare "$tmp/a" --measured "$tmp/twice.csv" -o "$tmp/bad-twice" 2>&1)
+check "a quantity in two columns: both named, at the second" '[ $? -eq 2 ] && grep -qF "twice.csv:1:22: '"'"'speed [km/h]'"'"' is a second column of the quantity of '"'"'speed [mph]'"'"' (the header'"'"'s column 2, at 1:10)" <<<"$out"'
 printf 'time [s],speed [mph]\n0,40\n0,39\n' >"$tmp/back.csv"
 out=$("$cs" compare "$tmp/a" --measured "$tmp/back.csv" -o "$tmp/bad3" 2>&1)
 check "time that does not grow exits 2" '[ $? -eq 2 ] && grep -q "back.csv:3:1: the time goes back or stands" <<<"$out"'

@@ -426,8 +426,9 @@ cs_status cs_trace_load_measured(const char *path, cs_units *units, cs_trace *tr
         for (int i = 1; i < j; i++)
             if (target[i] == target[j]) {
                 rc = cs_error_set(err, CS_ERR_INVALID,
-                                  "%s:1:%d: a second column of the same quantity as column %d", path, hcol[j],
-                                  hcol[i]);
+                                  "%s:1:%d: '%s' is a second column of the quantity of '%s' (the header's "
+                                  "column %d, at 1:%d) (expected one column of each)",
+                                  path, hcol[j], csv.cell[j], csv.cell[i], i + 1, hcol[i]);
                 goto done;
             }
         tr->have[target[j]] = 1;
