@@ -38,7 +38,7 @@ const rows = fs.readFileSync(csv, "utf8").trim().split("\n").map((l) => l.split(
 const keys = { outcome: "outcome", "max 50-ms deceleration": "max_50ms_decel_g",
   "time of the max 50-ms deceleration": "t_max_50ms_decel_s", "max dynamic penetration": "max_dynamic_penetration_m",
   "penetration beyond": "penetration_beyond_m", "max barrier deflection": "max_barrier_deflection_m",
-  "working width": "working_width_m", "exit speed": "exit_speed_mps", "max rope tension": "max_cable_tension_n" };
+  "working width": "working_width_m", "exit speed": "exit_speed_mps", "max cable tension": "max_cable_tension_n" };
 let bad = 0, seen = 0;
 runs.forEach((dir, k) => {
   const sj = JSON.parse(fs.readFileSync(dir + "/summary.json", "utf8"));

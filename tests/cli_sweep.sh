@@ -83,7 +83,7 @@ check "study: the same figures on 1 and 2 threads" 'cmp "$tmp/lhs-1/plots/study-
 page="$tmp/lhs-1/report.html"
 check "study: the inputs' table in the spec's units" 'grep -qE "<tr><td>barrier.soil.soil_pressure</td><td>normal: mean 8000 psf, sd 1000 psf, min 4000 psf</td><td>psf</td><td>[0-9.]+</td>" "$page" && grep -qE "<tr><td>scenario.speed</td><td>[^<]*</td><td>mph</td>" "$page"'
 check "study: the inputs' values in those units" 'grep -oE "<tr><td>(barrier.soil.soil_pressure|scenario.speed)</td><td>[^<]*</td><td>[a-z]+</td><td>[0-9.e+]+</td><td>[0-9.e+]+</td><td>[0-9.e+]+</td>" "$page" | sed -E "s/<\/?t[dr]>/ /g" | awk "\$3 == \"psf\" && (\$4 < 4000 || \$6 > 12000) { bad = 1 } \$3 == \"mph\" && (\$4 < 38 || \$6 > 42) { bad = 1 } END { exit bad || NR != 2 }"'
-check "study: the rope tension in kN" 'grep -q "<tr><td>max rope tension (kN)</td>" "$page"'
+check "study: the cable tension in kN" 'grep -q "<tr><td>max cable tension (kN)</td>" "$page"'
 # a run that breaks through: runs.csv gives no penetration, only how far it got, as summary.json does
 "$cs" sweep --allow-path examples tests/sweep/through.yaml -o "$tmp/through" --quiet >"$tmp/through.out" 2>&1
 check "through: exits 0" '[ $? -eq 0 ] || { cat "$tmp/through.out"; false; }'

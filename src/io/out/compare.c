@@ -110,7 +110,7 @@ static const param params[] = {
     P("working width", "m", "ft", CS_FT, working_width),
     P("speed at the end", "m/s", "mph", CS_MPH, final_speed),
     P("exit speed", "m/s", "mph", CS_MPH, exit_speed),
-    P("max rope tension", "N", "kip", CS_KIP, max_tension),
+    P("max cable tension", "N", "kip", CS_KIP, max_tension),
     P("end of the record", "s", NULL, 0, t_end),
 };
 enum { PARAMS = sizeof params / sizeof params[0] };

@@ -22,7 +22,7 @@ static const response_def responses[CS_STUDY_RESPONSES] = {
     {"max_dynamic_penetration", "penetration", "max dynamic penetration", "max dynamic penetration (m)", 1.0},
     {"max_barrier_deflection", "deflection", "max barrier deflection", "max barrier deflection (m)", 1.0},
     {"working_width", "working-width", "working width", "working width (m)", 1.0},
-    {"max_cable_tension", "tension", "max rope tension", "max rope tension (kN)", 1e-3},
+    {"max_cable_tension", "tension", "max cable tension", "max cable tension (kN)", 1e-3},
     {"penetration_beyond", "penetration-beyond", "penetration beyond (runs the barrier did not hold)",
      "penetration beyond (m)", 1.0},
     {"exit_speed", "exit-speed", "exit speed (runs that left the barrier)", "exit speed (m/s)", 1.0},

@@ -82,7 +82,7 @@ typedef struct response_def {
     const char *over;
 } response_def;
 
-enum { R_COUNT = 8 };
+enum { R_COUNT = 9 };
 static const response_def responses[R_COUNT] = {
     {C_DECEL, -1, 1.0, "max_50ms_decel_g", "max 50-ms deceleration (g)", NULL},
     {C_PEN, -1, 1.0, "max_dynamic_penetration_m", "max dynamic penetration (m)",
@@ -91,6 +91,7 @@ static const response_def responses[R_COUNT] = {
      "the runs it did not hold (through it, or still going when the run ended): how far past the attack "
      "face the vehicle had got when the run ended; its penetration is beyond that"},
     {C_DEFL, -1, 1.0, "max_barrier_deflection_m", "max barrier deflection (m)", NULL},
+    {C_WIDTH, -1, 1.0, "working_width_m", "working width (m)", NULL},
     {C_TENSION, -1, 1e-3, "max_cable_tension_kn", "max cable tension (kN)", NULL},
     {C_EXIT, -1, 1.0, "exit_speed_mps", "exit speed (m/s)",
      "the runs that left the barrier (broke through, rode over or ran under it, or were redirected)"},
@@ -356,7 +357,7 @@ static int make_summary(summary *s, const cs_sweep_spec *spec, const double *x, 
                                                  "never touched the barrier",
                                                  "did not converge (solve budget used up)",
                                                  "step limit reached (scenario.max_steps)"};
-    for (int o = 0; o < 8; o++) {
+    for (size_t o = 0; o < sizeof outcomes / sizeof outcomes[0]; o++) {
         long c = 0;
         for (long i = 0; i < s->ok; i++)
             c += r[ok[i]].summary.outcome == outcomes[o];
