@@ -676,10 +676,11 @@ static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_de
     const cs_node *every = at(sc, "output_interval");
     double frames = s->output_interval > 0.0 ? s->t_end / s->output_interval : 0.0;
     if (every && s->output_interval > 0.0 && s->output_interval < s->dt)
-        cs_err_node(l, every, 0,
-                    "%g s is below the time step, %g s: no frame can come between two steps (expected at "
-                    "least dt, or 0 for a frame every step)",
-                    s->output_interval, s->dt);
+        cs_err_node(
+            l, blamed(every, cs_node_get(sc, "dt")), 0,
+            "output_interval %g s%s is below the time step dt, %g s: no frame can come between two steps "
+            "(expected output_interval at least dt, or 0 for a frame every step)",
+            s->output_interval, cs_node_get(sc, "output_interval") ? "" : " (its default)", s->dt);
     else if (every && frames > CS_MAX_FRAMES)
         cs_err_node(l, every, 0,
                     "%.3g frames to the end time (t_end / output_interval) exceed the limit of %.0g "

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #include "schema.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
@@ -484,8 +485,9 @@ int cs_path_next(const char **p, char *key, size_t key_size, long *index) {
     if (*s == '\0') return 0;
     if (*s == '[') {
         char *end;
+        errno = 0;
         long i = strtol(s + 1, &end, 10);
-        if (end == s + 1 || *end != ']' || i < 0) return -1;
+        if (end == s + 1 || *end != ']' || i < 0 || errno == ERANGE) return -1; /* past long: no list is */
         *index = i;
         *p = end + 1;
         if (**p == '.') ++*p;
