@@ -631,7 +631,9 @@ static void check_barrier(cs_loader *l, const cs_node *barrier, const cs_barrier
                     b->end_anchor.x, last->x);
 }
 
-enum { CS_MAX_FRAMES = 10000000 }; /* a run's frames (t_end / output_interval) */
+/* A run's frames (t_end / output_interval, or / dt for a frame every step): a million frames of a roadside
+ * barrier are about 0.8 GB of timeseries.csv, and its record as much in memory. */
+enum { CS_MAX_FRAMES = 1000000 };
 
 /* Where the vehicle's leading front corner meets the cable line: the face's centre meets it at impact_x
  * (or the corner does, impact_at: corner), and a face of width w at angle theta meets it over
@@ -674,7 +676,7 @@ static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_de
     if (b) return; /* the rest was checked without the barrier */
     above(l, sc, "t_end", s->t_end, "dt", s->dt);
     const cs_node *every = at(sc, "output_interval");
-    double frames = s->output_interval > 0.0 ? s->t_end / s->output_interval : 0.0;
+    double frames = s->t_end / (s->output_interval > 0.0 ? s->output_interval : s->dt);
     if (every && s->output_interval > 0.0 && s->output_interval < s->dt)
         cs_err_node(
             l, blamed(every, cs_node_get(sc, "dt")), 0,
@@ -682,10 +684,11 @@ static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_de
             "(expected output_interval at least dt, or 0 for a frame every step)",
             s->output_interval, cs_node_get(sc, "output_interval") ? "" : " (its default)", s->dt);
     else if (every && frames > CS_MAX_FRAMES)
-        cs_err_node(l, every, 0,
-                    "%.3g frames to the end time (t_end / output_interval) exceed the limit of %.0g "
-                    "(expected a longer interval)",
-                    frames, (double)CS_MAX_FRAMES);
+        cs_err_node(
+            l, every, 0,
+            "%.3g frames to the end time (t_end / output_interval, or / dt for 0) exceed the limit of %.0g "
+            "(expected a longer interval)",
+            frames, (double)CS_MAX_FRAMES);
     if (!(s->stop_speed <=
           CS_STOP_SPEED_SHARE * s->speed)) { /* a vehicle still moving would count as stopped */
         char a[80], b[80];
