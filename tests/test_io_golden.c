@@ -196,7 +196,7 @@ static void outputs_as_pinned(void **state) {
                 json_object *g = json_object_from_file(got), *w = json_object_from_file(want);
                 if (!g || !w) fail_msg("%s: cannot read %s", file, g ? want : got);
                 same_json(file, "summary", g, w);
-                json_object *inputs, *units;
+                json_object *inputs = NULL, *units = NULL;
                 if (!json_object_object_get_ex(g, "inputs", &inputs) ||
                     !json_object_object_get_ex(g, "input_units", &units))
                     fail_msg("%s: no inputs or input_units", file);
