@@ -81,7 +81,8 @@ void cs_err_node(cs_loader *l, const cs_node *at, int at_key, const char *fmt, .
             line = at_key ? p->key_line : p->line;
             col = at_key ? p->key_col : p->col;
         }
-        if (at->path[0]) {
+        size_t n = strlen(at->path);
+        if (at->path[0] && !(strncmp(msg, at->path, n) == 0 && msg[n] == ':')) { /* the path once */
             cs_err_at(l, at->source, line, col, "%s: %s", at->path, msg);
             return;
         }
