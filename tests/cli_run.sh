@@ -204,6 +204,8 @@ check "aps3 (head-on, the 15,000-lb truck): no roadside criteria" 'grep -q "\"ro
 # the engine's side).
 out=$(timeout 60 "$cs" run examples/aps3.yaml -o "$tmp/tiny" --set 'scenario.output_interval=1e-30 s' 2>&1)
 check "an output interval below the step is refused at its place" '[ $? -eq 2 ] && grep -q "scenario.output_interval=1e-30 s: .1e-30 s. is too small for output_interval" <<<"$out" && [ ! -e "$tmp/tiny" ]'
+out=$("$cs" run examples/aps3.yaml -o "$tmp/dt2" --dt "2 ms" --t-end "0.1 s" 2>&1)
+check "a step above the default 1-ms interval: a frame every step" '[ $? -eq 0 ] && [ "$(wc -l <"$tmp/dt2/timeseries.csv")" -eq 52 ] || { echo "$out"; false; }'
 out=$(timeout 60 "$cs" run examples/aps3.yaml -o "$tmp/tiny" --dt "0.1 us" --set 'scenario.output_interval=0.1 us' 2>&1)
 check "past a million frames is refused at its place" '[ $? -eq 2 ] && grep -qF "scenario.output_interval=0.1 us: 3e+07 frames to the end time (t_end / output_interval, or / dt for 0) exceed the limit of 1e+06" <<<"$out"'
 out=$("$cs" run examples/aps3.yaml -o "$tmp/steps" --set scenario.max_steps=100 2>&1)

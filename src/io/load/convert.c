@@ -360,6 +360,10 @@ static int positions(cs_loader *l, const cs_node *g, double *xs, int max) {
         }
         return nx;
     }
+    if (cs_node_get(g, "x")) { /* given, with no position in it */
+        cs_err_node(l, at(g, "x"), 0, "an empty list (expected x: [...] with at least one position)");
+        return -1;
+    }
     if (!gf || !gs || (gt != 0) + (gu != 0) + (count != NULL) != 1) {
         cs_err_node(l, g, 0, "%s (expected x: [...], or from, spacing and one of to, up_to or count)",
                     !gf   ? "missing 'from'"
@@ -675,14 +679,15 @@ static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_de
     }
     if (b) return; /* the rest was checked without the barrier */
     above(l, sc, "t_end", s->t_end, "dt", s->dt);
-    const cs_node *every = at(sc, "output_interval");
-    double frames = s->t_end / (s->output_interval > 0.0 ? s->output_interval : s->dt);
-    if (every && s->output_interval > 0.0 && s->output_interval < s->dt)
+    /* the default interval below the step is a frame every step, as the engine records it (step.c) */
+    const cs_node *given = cs_node_get(sc, "output_interval"), *every = at(sc, "output_interval");
+    double frames = s->t_end / (s->output_interval > s->dt ? s->output_interval : s->dt);
+    if (given && s->output_interval > 0.0 && s->output_interval < s->dt)
         cs_err_node(
-            l, blamed(every, cs_node_get(sc, "dt")), 0,
-            "output_interval %g s%s is below the time step dt, %g s: no frame can come between two steps "
+            l, blamed(given, cs_node_get(sc, "dt")), 0,
+            "output_interval %g s is below the time step dt, %g s: no frame can come between two steps "
             "(expected output_interval at least dt, or 0 for a frame every step)",
-            s->output_interval, cs_node_get(sc, "output_interval") ? "" : " (its default)", s->dt);
+            s->output_interval, s->dt);
     else if (every && frames > CS_MAX_FRAMES)
         cs_err_node(
             l, every, 0,

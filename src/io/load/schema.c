@@ -363,7 +363,8 @@ static const cs_field scenario_fields[] = {
     SC("dt", CS_Q_TIME, CS_POS, dt, "time step"),
     SC("t_end", CS_Q_TIME, CS_POS, t_end, "time limit"),
     SC("output_interval", CS_Q_TIME, CS_NONNEG, output_interval,
-       "recording interval (0: every step; if given, at least dt and at most a million frames to t_end)"),
+       "recording interval (0, or the default below dt: every step; if given, at least dt; at most a million "
+       "frames to t_end)"),
     SC("crush_tolerance", CS_Q_NUMBER, CS_POS, crush_tolerance,
        "relative change that ends the crush iteration"),
     SC("solver_tolerance", CS_Q_NUMBER, CS_POS, solver_tolerance, "relative residual of the barrier solve"),
