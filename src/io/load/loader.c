@@ -300,6 +300,20 @@ static const cs_node *engine_place(const cs_loader *l, const cs_model_input *in,
     return NULL;
 }
 
+/* Within the element's node, the value the message names, where its words are a key ("cable 0: post friction
+ * must be ..." is post_friction), or the element's node. */
+static const cs_node *engine_value(const cs_node *place, const char *msg) {
+    const char *from = strstr(msg, ": "), *to = from ? strstr(from, " must ") : NULL;
+    char key[48];
+    if (!place || place->kind != CS_Y_MAP || !to || (size_t)(to - from - 2) >= sizeof key) return place;
+    size_t n = (size_t)(to - from - 2);
+    for (size_t k = 0; k < n; k++)
+        key[k] = from[2 + k] == ' ' ? '_' : from[2 + k];
+    key[n] = '\0';
+    const cs_node *value = cs_table_find(place->table, key) >= 0 ? cs_node_get(place, key) : NULL;
+    return value ? value : place;
+}
+
 /* The --set that changed that element, if one did: the value the engine refuses most likely came from
  * it, not from the file. A message about the soil (an anchor's or a footing's, which take the barrier's
  * soil) looks for a --set of barrier.soil first. Its index, or -1. */
@@ -330,7 +344,9 @@ cs_model *cs_loader_build(cs_loader *l, const cs_model_input *in) {
     long i = -1;
     int soil = strstr(err.message, "soil") != NULL;
     int w = engine_element(err.message, &i), set = w >= 0 ? engine_set(l, w, i, soil) : -1;
-    const cs_node *place = soil && l->soil_node ? l->soil_node : w >= 0 ? engine_place(l, in, w, i) : NULL;
+    const cs_node *place = soil && l->soil_node ? l->soil_node
+                           : w >= 0             ? engine_value(engine_place(l, in, w, i), err.message)
+                                                : NULL;
     if (set >= 0)
         cs_err_at(l, -1 - set, 0, 0, "%s (the engine's check of the model)", err.message);
     else if (place)
