@@ -254,8 +254,9 @@ static int is_run_series(const char *text) {
     return is;
 }
 
-/* Cell k of a run's row as a number: an empty cell is NAN, anything else a finite number whole. */
-static cs_status run_number(const cs_csv *csv, int k, const char *path, double *x, cs_error *err) {
+/* Cell k of a history's row (a run's or a measured one) as a number: an empty cell is NAN, anything else a
+ * finite number whole. */
+static cs_status cell_number(const cs_csv *csv, int k, const char *path, double *x, cs_error *err) {
     const char *c = csv->cell[k];
     char *end;
     if (c[strspn(c, " ")] == '\0') {
@@ -267,8 +268,8 @@ static cs_status run_number(const cs_csv *csv, int k, const char *path, double *
         end++;
     if (*end == '\0' && isfinite(*x)) return CS_OK;
     return cs_error_set(err, CS_ERR_INVALID,
-                        "%s:%ld:%d: '%s' is not a number (expected a finite number, or nothing where the run "
-                        "has none)",
+                        "%s:%ld:%d: '%s' is not a number (expected a finite number, or an empty cell where "
+                        "there is none)",
                         path, csv->cell_line[k], csv->cell_col[k], c);
 }
 
@@ -302,9 +303,9 @@ static cs_status read_run_series(const char *path, cs_trace *tr, cs_error *err) 
     csv.flags |= CS_CSV_BLANKS;
     while ((rc = next_row(&csv, nh, path, &more, err)) == CS_OK && more) {
         const int cols[] = {it, ivx, ivy, iax, iay, id50, isp, ipen};
-        double x[8];
-        for (int k = 0; rc == CS_OK && k < 8; k++)
-            rc = run_number(&csv, cols[k], path, &x[k], err);
+        double x[sizeof cols / sizeof cols[0]];
+        for (size_t k = 0; rc == CS_OK && k < sizeof cols / sizeof cols[0]; k++)
+            rc = cell_number(&csv, cols[k], path, &x[k], err);
         if (rc == CS_OK && isnan(x[0]))
             rc = cs_error_set(err, CS_ERR_INVALID, "%s:%ld:%d: no time (expected one in every row)", path,
                               csv.cell_line[it], csv.cell_col[it]);
@@ -312,7 +313,7 @@ static cs_status read_run_series(const char *path, cs_trace *tr, cs_error *err) 
         for (int k = 0; rc == CS_OK && k < nh; k++) /* the tautest rope at this time */
             if (tension[k]) {
                 double tk;
-                rc = run_number(&csv, k, path, &tk, err);
+                rc = cell_number(&csv, k, path, &tk, err);
                 if (!isnan(tk) && !(tk <= tmax)) tmax = tk;
             }
         if (rc != CS_OK) break;
@@ -440,14 +441,11 @@ cs_status cs_trace_load_measured(const char *path, cs_units *units, cs_trace *tr
         long line = csv.line;
         size_t i = tr->n;
         for (int j = 0; j < nh; j++) {
-            char *end;
-            double x = strtod(cells[j], &end);
-            while (*end == ' ')
-                end++;
-            int blank = cells[j][strspn(cells[j], " ")] == '\0';
-            if ((*end != '\0' || !isfinite(x)) && !(blank && j > 0)) {
-                rc = cs_error_set(err, CS_ERR_INVALID, "%s:%ld:%d: '%s' is not a number", path, line, col[j],
-                                  cells[j]);
+            double x;
+            if ((rc = cell_number(&csv, j, path, &x, err)) != CS_OK) goto done;
+            if (j == 0 && isnan(x)) {
+                rc = cs_error_set(err, CS_ERR_INVALID, "%s:%ld:%d: no time (expected one in every row)", path,
+                                  line, col[j]);
                 goto done;
             }
             if (fabs(x * factor[j]) > 1e12) { /* squared by the metrics, and beyond any crash history */
@@ -461,7 +459,7 @@ cs_status cs_trace_load_measured(const char *path, cs_units *units, cs_trace *tr
             if (j == 0)
                 tr->t[i] = x * factor[0];
             else
-                tr->y[target[j]][i] = blank ? NAN : x * factor[j];
+                tr->y[target[j]][i] = x * factor[j];
         }
         if (i > 0 && !(tr->t[i] > tr->t[i - 1])) {
             rc = cs_error_set(err, CS_ERR_INVALID,
