@@ -127,15 +127,15 @@ static json_object *cable_input(cs_wout *w, const cs_cable_def *cable) {
     return o;
 }
 
-/* The SI unit of each number a table's fields write, by key, into units ("1" for a pure number or a count;
- * a key has one unit wherever it stands in the schema). */
+/* The SI unit of each number a table's fields give, by key, into units ("1" for a pure number or a count;
+ * a key has one unit wherever it stands in the schema): its quantities and lists of them, its counts, and
+ * its mappings' fields. */
 static void junits(json_object *units, const cs_table *t) {
     for (int i = 0; i < t->count; i++) {
         const cs_field *fd = &t->fields[i];
-        if (fd->offset < 0) continue;
-        if (fd->kind == CS_F_MAP)
+        if (fd->kind == CS_F_MAP && fd->offset >= 0)
             junits(units, fd->sub);
-        else if ((fd->kind == CS_F_QTY || fd->kind == CS_F_INT) &&
+        else if ((fd->kind == CS_F_QTY || fd->kind == CS_F_LIST || fd->kind == CS_F_INT) &&
                  !json_object_object_get_ex(units, fd->key, NULL))
             json_object_object_add(units, fd->key,
                                    cs_jstr(fd->kind == CS_F_INT ? "1" : cs_quantity_get(fd->q)->label));
@@ -145,14 +145,6 @@ static void junits(json_object *units, const cs_table *t) {
 /* "input_units": the unit of every number of "inputs", by its key. */
 static json_object *input_units(void) {
     json_object *units = json_object_new_object();
-    static const struct {
-        const char *key;
-        cs_quantity q;
-    } own[] = {
-        {"x", CS_Q_LENGTH},           {"termination_efficiency", CS_Q_NUMBER}, {"slip_load", CS_Q_FORCE},
-        {"slip_travel", CS_Q_LENGTH}, {"crush_deformation", CS_Q_LENGTH},      {"crush_force", CS_Q_FORCE}};
-    for (size_t k = 0; k < sizeof own / sizeof own[0]; k++)
-        json_object_object_add(units, own[k].key, cs_jstr(cs_quantity_get(own[k].q)->label));
     const cs_table *const tables[] = {&cs_table_cable,   &cs_table_rope,    &cs_table_posts,
                                       &cs_table_section, &cs_table_anchors, &cs_table_vehicle,
                                       &cs_table_scenario};
