@@ -194,15 +194,17 @@ static void cell(char *buf, size_t size, const cs_trace *tr, const cs_trace *ref
         return;
     }
     const char *at_least = beyond(k) ? "beyond " : "";
-    int n = params[k].us_scale > 0.0 ? snprintf(buf, size, "%s%.3f %s (%.2f %s)", at_least, x, params[k].unit,
-                                                x / params[k].us_scale, params[k].us_unit)
-                                     : snprintf(buf, size, "%s%.3f %s", at_least, x, params[k].unit);
+    char t[CS_TIME_TEXT_SIZE];
+    int n;
     if (strcmp(params[k].unit, "N") == 0) /* tensions in kN */
         n = snprintf(buf, size, "%.1f kN (%.1f kip)", x / 1e3, x / params[k].us_scale);
-    if (strcmp(params[k].unit, "s") == 0) { /* a run's times as its other outputs give them */
-        char t[CS_TIME_TEXT_SIZE];
+    else if (strcmp(params[k].unit, "s") == 0) /* a run's times as its other outputs give them */
         n = snprintf(buf, size, "%s%s s", at_least, cs_time_text(x, t));
-    }
+    else if (params[k].us_scale > 0.0)
+        n = snprintf(buf, size, "%s%.3f %s (%.2f %s)", at_least, x, params[k].unit, x / params[k].us_scale,
+                     params[k].us_unit);
+    else
+        n = snprintf(buf, size, "%s%.3f %s", at_least, x, params[k].unit);
     if (!is_ref && isfinite(d) && n > 0 && (size_t)n < size)
         snprintf(buf + n, size - (size_t)n, ", %+.1f%%", d);
 }
