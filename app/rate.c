@@ -312,7 +312,12 @@ int cs_command_rate(int argc, char **argv) {
         {"set", required_argument, NULL, 'S'},      {"allow-path", required_argument, NULL, 'A'},
         {"help", no_argument, NULL, 'h'},           {NULL, 0, NULL, 0}};
     int rc = -1, v, set_count = 0;
-    const char **sets = calloc((size_t)argc + 1, sizeof *sets);
+    const char **sets = calloc((size_t)argc + 1, sizeof *sets); /* the --set given, to check */
+    if (!sets) {
+        cs_loader_free(l);
+        fprintf(stderr, "cablesim rate: out of memory\n");
+        return CS_EXIT_RUN;
+    }
     optind = 1;
     while (rc < 0 && (v = cs_cli_next(&rate_cli, argc, argv, "h", longopts)) != -1) {
         if (v == 'h')
