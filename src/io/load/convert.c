@@ -671,8 +671,7 @@ static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_de
                 0,
                 "at %g deg the leading front corner of the vehicle's %.2f-m face meets the cable line at x = "
                 "%.2f m, %.2f m before the face's centre, outside the barrier (%.2f m to %.2f m): the "
-                "vehicle "
-                "would pass the barrier's end, not strike it (expected that corner between the "
+                "vehicle would pass the barrier's end, not strike it (expected that corner between the "
                 "anchors: move impact_x, or give impact_at: corner to place the corner there)",
                 s->angle * 180.0 / CS_PI, v->front_width, corner, fabs(corner - s->impact_x),
                 b->start_anchor.x, b->end_anchor.x);
@@ -694,8 +693,8 @@ static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_de
             "%.3g frames to the end time (t_end / output_interval, or / dt for 0) exceed the limit of %.0g "
             "(expected a longer interval)",
             frames, (double)CS_MAX_FRAMES);
-    if (!(s->stop_speed <=
-          CS_STOP_SPEED_SHARE * s->speed)) { /* a vehicle still moving would count as stopped */
+    /* above a tenth of the impact speed, a vehicle still moving would count as stopped */
+    if (!(s->stop_speed <= CS_STOP_SPEED_SHARE * s->speed)) {
         char a[80], b[80];
         shown(l, sc, "stop_speed", s->stop_speed, a, sizeof a);
         shown(l, sc, "speed", s->speed, b, sizeof b);
