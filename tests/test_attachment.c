@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* Slots and hooks let a cable go at their documented limit (attachment.c). A cable pulled sideways by
+/* Slots, hooks, keyway bolts and brackets let a cable go at their documented limit (attachment.c). A cable pulled sideways by
  * F (horizontal, across the barrier) on a post leaning theta away from the pull bears on it with
  * F cos(theta) across the post and pulls it F sin(theta) along, toward the top; it leaves when
  *   F sin(theta) > mu F cos(theta) + R,
@@ -7,7 +7,8 @@
  * the slot's open end, at cos(theta) = (z + d_p) / (h + d_p). Checked by hand on a post leaning just short
  * of and just past theta*, for the slot's and the hook's documented R (the slot's post cut to 1.23 m, so
  * that its upper cable, at 4 ft, is at the open end from 7.7 degrees); just short of and past the open
- * end on the 7-ft post; and the slot's order: a cable held above keeps the ones below in. */
+ * end on the 7-ft post; the slot's order: a cable held above keeps the ones below in; and a keyway bolt's
+ * and a bracket's pull off their face (their component tests' lateral loads). */
 #include "check.h"
 #include "core/vec3.h"
 #include "fixture.h"
@@ -15,12 +16,13 @@
 
 /* Two cables on one post at x = 0 between rigid anchors 10 m away; the post's height if given (else the
  * fixture's 7 ft). */
-static cs_model *one_post(cs_attachment kind, fixture *fx, double height) {
+static cs_model *one_post_on(cs_attachment kind, cs_face face, fixture *fx, double height) {
     fixture_aps3(fx);
     fx->barrier.post_count = 1;
     fx->posts[0].x = 0.0;
     if (height > 0.0) fx->posts[0].height = height;
     fx->posts[0].attachment = kind;
+    fx->posts[0].face = face;
     fx->barrier.posts = fx->posts, fx->barrier.cables = fx->cables;
     fx->barrier.start_anchor.x = -10.0, fx->barrier.end_anchor.x = 10.0;
     fx->barrier.start_anchor.footing.diameter = fx->barrier.end_anchor.footing.diameter = 0.0;
@@ -29,6 +31,10 @@ static cs_model *one_post(cs_attachment kind, fixture *fx, double height) {
     cs_model *m = cs_model_create(&fx->barrier, &fx->vehicle, &fx->scenario, &err);
     if (!m) fail_msg("%s", err.message);
     return m;
+}
+
+static cs_model *one_post(cs_attachment kind, fixture *fx, double height) {
+    return one_post_on(kind, CS_FACE_ATTACK, fx, height);
 }
 
 /* The post leaning theta toward +y; cable c's node on it, its two spans running 10 m along x and 5 m
@@ -85,6 +91,61 @@ static void slot_lets_go_at_its_limit(void **state) {
 static void hook_lets_go_at_its_limit(void **state) {
     (void)state;
     lets_go_at_its_limit(CS_ATTACH_HOOK, 1.5e3);
+}
+
+/* On the attack face the cable pulled toward +y bears on the post: a keyway bolt or a bracket lets it go
+ * along the post as a hook does, at its component test's vertical load (1.00 kip, 346 lb). */
+static void bolted_let_go_along_at_their_limit(void **state) {
+    (void)state;
+    lets_go_at_its_limit(CS_ATTACH_KEYWAY, 1.00 * CS_KIP);
+    lets_go_at_its_limit(CS_ATTACH_BRACKET, 346.0 * CS_LBF);
+}
+
+/* Pulled off the protected face of an upright post by F across the barrier, a keyway bolt or a bracket
+ * lets its cable go past its lateral load (8.00 and 6.10 kip), the event's value F; on the attack face
+ * the same cable bears on the post and stays at 100 kN. Leaning theta toward the pull, the face turns
+ * with the post: the cable, bearing on the fitting with F cos(theta), leaves along the post past theta*
+ * as from a hook, F sin(theta) = mu F cos(theta) + R, its lateral pull F cos(theta) short of its own. */
+static void bolted_let_go_off_their_face(void **state) {
+    (void)state;
+    const cs_attachment kinds[] = {CS_ATTACH_KEYWAY, CS_ATTACH_BRACKET};
+    const double lateral[] = {8.00 * CS_KIP, 6.10 * CS_KIP}, vertical[] = {1.00 * CS_KIP, 346.0 * CS_LBF};
+    for (int k = 0; k < 2; k++) {
+        fixture fx;
+        cs_model *m = one_post_on(kinds[k], CS_FACE_PROTECTED, &fx, 0.0);
+        cs_error err;
+        cs_state *s = cs_state_create(m, &err);
+        assert_non_null(s);
+        CHECK_REL(m->posts[0].lateral_release, lateral[k], 1e-12);
+        double per_t = lean_and_pull(m, s, 0.0, 1, 1.0); /* the pull of a unit tension */
+        for (int side = -1; side <= 1; side += 2) {
+            cs_state_reset(m, s);
+            double t = lateral[k] * (1.0 + side * 1e-6) / per_t;
+            lean_and_pull(m, s, 0.0, 1, t);
+            int before = s->event_count;
+            assert_int_equal(cs_attachment_check_release(m, s, 0), side > 0);
+            assert_int_equal(s->cables[1].where[0]<0, side> 0);
+            if (side > 0) CHECK_REL(s->events[before].value, t * per_t, 1e-9);
+        }
+        const double th = 0.5;
+        for (int side = -1; side <= 1; side += 2) {
+            cs_state_reset(m, s);
+            double mu = m->cables[1].mu_post;
+            double t = vertical[k] * (1.0 + side * 1e-6) / (per_t * (sin(th) - mu * cos(th)));
+            lean_and_pull(m, s, th, 1, t);
+            assert_true(t * per_t * cos(th) < lateral[k]);
+            assert_int_equal(cs_attachment_check_release(m, s, 0), side > 0);
+            assert_int_equal(s->cables[1].where[0]<0, side> 0);
+        }
+        cs_state_free(s);
+        cs_model_free(m);
+        m = one_post_on(kinds[k], CS_FACE_ATTACK, &fx, 0.0);
+        s = cs_state_create(m, &err);
+        lean_and_pull(m, s, 0.0, 1, 100e3 / per_t);
+        assert_int_equal(cs_attachment_check_release(m, s, 0), 0);
+        cs_state_free(s);
+        cs_model_free(m);
+    }
 }
 
 /* On the 7-ft post (hinged at grade) the upper cable, at 4 ft, reaches the slot's open end at acos(4 / 7)
@@ -152,9 +213,12 @@ static void through_and_clamped_hold(void **state) {
 }
 
 int main(void) {
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(slot_lets_go_at_its_limit), cmocka_unit_test(hook_lets_go_at_its_limit),
-        cmocka_unit_test(slot_holds_until_its_open_end), cmocka_unit_test(slot_lets_go_from_the_top),
-        cmocka_unit_test(through_and_clamped_hold)};
+    const struct CMUnitTest tests[] = {cmocka_unit_test(slot_lets_go_at_its_limit),
+                                       cmocka_unit_test(hook_lets_go_at_its_limit),
+                                       cmocka_unit_test(slot_holds_until_its_open_end),
+                                       cmocka_unit_test(slot_lets_go_from_the_top),
+                                       cmocka_unit_test(bolted_let_go_along_at_their_limit),
+                                       cmocka_unit_test(bolted_let_go_off_their_face),
+                                       cmocka_unit_test(through_and_clamped_hold)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

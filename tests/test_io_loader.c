@@ -422,7 +422,7 @@ static void test_cable_ends(void **state) {
     CHECK_REL(cs_cable_end_efficiency(&in.barrier.cables[1], 0, NULL), 1.0, 1e-15);
     cs_loader_free(l);
     l = load(CS_SOURCE_DIR "/tests/good/base.yaml", &in, NULL);
-    assert_true(cs_model_input_hash(&in) == 0x633c5725fd090bd9ULL);
+    assert_true(cs_model_input_hash(&in) == 0x1ef1b58a139ccc63ULL);
     cs_loader_free(l);
     static const char *const slip[] = {"barrier.cables[0].slip_load=30 kip",
                                        "barrier.cables[0].slip_travel=18 in",
@@ -444,7 +444,7 @@ static void test_cable_ends(void **state) {
     cs_loader_free(l);
     static const char *const own[] = {"barrier.cables[0].end.termination=clips", NULL};
     l = load(CS_SOURCE_DIR "/tests/good/base.yaml", &in, own);
-    assert_true(cs_model_input_hash(&in) != 0x633c5725fd090bd9ULL);
+    assert_true(cs_model_input_hash(&in) != 0x1ef1b58a139ccc63ULL);
     cs_loader_free(l);
 }
 

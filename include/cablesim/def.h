@@ -149,34 +149,51 @@ typedef struct cs_footing_def {
 } cs_footing_def;
 
 /** How the cables are held on a post. All but clamped slide along the barrier with capstan friction.
- * Slots and hooks let a cable go (attachment.c) when its pull along the post, toward the post's top,
- * exceeds friction on the post (the cable's post_friction times its pull across the post) plus what the
- * retainer holds (release_force): a post bent over under the cables turns their pull up along it. */
+ * Slots, hooks, keyway bolts and brackets let a cable go (attachment.c) when its pull along the post,
+ * toward the post's top, exceeds friction on the post (the cable's post_friction times its pull across
+ * the post) plus what the retainer holds (release_force): a post bent over under the cables turns their
+ * pull up along it. A keyway bolt or a bracket, bolted to one face of the post, also lets its cable go
+ * when the cable pulls it off that face by more than its lateral_release_force. */
 typedef enum cs_attachment {
     CS_ATTACH_THROUGH = 0, /**< cable threaded through the post */
     CS_ATTACH_CLAMPED = 1, /**< cable clamped to the post: no sliding */
-    CS_ATTACH_SLOT = 2, /**< cables stacked in a slot open at the top (spacers, strap and cap): they ride up
-                           and out, the top one first */
-    CS_ATTACH_HOOK = 3  /**< each cable in a hook bolt on the post's face: the hook opens */
+    CS_ATTACH_SLOT = 2,   /**< cables stacked in a slot open at the top (spacers, strap and cap): they ride up
+                             and out, the top one first */
+    CS_ATTACH_HOOK = 3,   /**< each cable in a hook bolt on the post's face: the hook opens */
+    CS_ATTACH_KEYWAY = 4, /**< each cable in a keyway bolt on the post's face (component tests: 35.6 kN off
+                             the face, 4.45 kN along the post) */
+    CS_ATTACH_BRACKET = 5 /**< each cable in a tabbed bracket on the post's face (component tests: 27.1 kN
+                             off the face, 1.54 kN along the post) */
 } cs_attachment;
+
+/** The face of a post a keyway bolt or a bracket is fixed to: the attack face (toward y < 0, where the
+ * vehicle comes from) or the protected one (toward y > 0). */
+typedef enum cs_face { CS_FACE_ATTACK = 0, CS_FACE_PROTECTED = 1 } cs_face;
 
 /** The documented strength of a kind's retainer along the post, N (docs/assumptions.md): 0 for kinds that
  * never let go. */
 CS_API double cs_attachment_release_force(cs_attachment kind);
+
+/** The documented load that pulls a kind's fitting off the post's face, N (docs/assumptions.md): 0 for
+ * kinds without one (held by the post itself, or never let go across it). */
+CS_API double cs_attachment_lateral_release_force(cs_attachment kind);
 
 /** A post: its steel section, its footing in the soil and how it holds the cables. */
 typedef struct cs_post_def {
     size_t size;   /**< the size of this struct in the program that filled it: set by cs_default_post_def() */
     double x;      /**< position along the barrier, m */
     double height; /**< top of the post above grade, m */
-    cs_section_def section;   /**< its steel */
-    cs_footing_def footing;   /**< its footing (or itself driven) in the soil */
-    cs_attachment attachment; /**< how it holds the cables */
-    double release_force;     /**< a slot's or hook's retainer strength along the post, N (0: the kind's
-                                 documented value, cs_attachment_release_force) */
-    double rotation_limit;    /**< rotation from vertical at which a post the vehicle pushes over lets its
-                                 edge ride over it (paper: 45 deg), rad; a post carrying ropes folds on
-                                 until its top reaches grade */
+    cs_section_def section;       /**< its steel */
+    cs_footing_def footing;       /**< its footing (or itself driven) in the soil */
+    cs_attachment attachment;     /**< how it holds the cables */
+    double release_force;         /**< a retainer's strength along the post (slot, hook, keyway bolt,
+                                     bracket), N (0: the kind's documented value, cs_attachment_release_force) */
+    double rotation_limit;        /**< rotation from vertical at which a post the vehicle pushes over lets its
+                                     edge ride over it (paper: 45 deg), rad; a post carrying ropes folds on
+                                     until its top reaches grade */
+    double lateral_release_force; /**< a keyway bolt's or bracket's strength against a pull off its face, N
+                                     (0: the kind's documented value, cs_attachment_lateral_release_force) */
+    cs_face face;                 /**< the face a keyway bolt or bracket is fixed to */
 } cs_post_def;
 
 /** A cable end anchor: a footing (dead-man) in the soil. Every cable is tied to the start anchor at one

@@ -128,15 +128,17 @@ typedef enum cs_event_type {
     CS_EVENT_STOPPED,             /**< the run ends: the vehicle stopped (value: its penetration, m) */
     CS_EVENT_BREAKTHROUGH,        /**< the run ends: the vehicle got through (value: speed, m/s) */
     CS_EVENT_REDIRECTED,          /**< the run ends: the vehicle was redirected (value: speed, m/s) */
-    CS_EVENT_CABLE_RELEASE,       /**< a slot or hook lets a cable go (element: the post; value: the pull
-                                       along it, N) */
+    CS_EVENT_CABLE_RELEASE,       /**< a slot, hook, keyway bolt or bracket lets a cable go along the post
+                                       (element: the post; value: the pull along it, N; cable: which) */
     CS_EVENT_TERMINATION_SLIP,    /**< a rope starts to slip through its end fitting (value: that end span's
                                        tension, N; cable_end: which end) */
     CS_EVENT_POST_WITHDRAWAL,     /**< the ropes' pull along a post reaches its pullout capacity: it starts to
                                        slide out of its footing (value: that pull, N) */
-    CS_EVENT_POST_DOWN, /**< a post folded over by its ropes lies on the ground, its top at grade; it
-                             keeps the ropes threaded or clamped on it (value: its tilt, rad) */
-    CS_EVENT_TYPE_COUNT /**< the number of event types */
+    CS_EVENT_POST_DOWN,        /**< a post folded over by its ropes lies on the ground, its top at grade; it
+                                    keeps the ropes threaded or clamped on it (value: its tilt, rad) */
+    CS_EVENT_CABLE_PULLED_OFF, /**< a keyway bolt or bracket pulled off its post's face lets a cable go
+                                    (element: the post; value: the pull off the face, N; cable: which) */
+    CS_EVENT_TYPE_COUNT        /**< the number of event types */
 } cs_event_type;
 
 /** The kind of element an event happened to. */

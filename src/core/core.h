@@ -82,8 +82,10 @@ typedef struct cs_post_model {
     double pivot;          /* depth of the point it turns about: 2/3 D if the soil yields, else 0, m */
     int clamped;
     cs_attachment attach;
-    double release_force; /* a slot's or hook's retainer along the post, N */
-    double inertia;       /* rotational inertia of the post about its pivot, kg m^2 (0: massless) */
+    double release_force;   /* a retainer's strength along the post (slot, hook, keyway, bracket), N */
+    double lateral_release; /* a keyway bolt's or bracket's strength against a pull off its face, N */
+    double face_normal; /* y of that face's outward normal while the post stands: -1 attack, +1 protected */
+    double inertia;     /* rotational inertia of the post about its pivot, kg m^2 (0: massless) */
     cs_footing_def footing;
 } cs_post_model;
 

@@ -80,15 +80,38 @@ double cs_cable_end_slip(const cs_cable_def *cable, int end, double *travel) {
 
 /* docs/assumptions.md: a slot's strap and cap, taken as the vertical release of the cable-to-post
  * attachments designed for the same purpose (about 1 kN); a 5/16-in hook bolt opening at the plastic
- * moment of its bar (36 ksi) over the lever from the bar to the 3/4-in cable's centre (13.5 mm). */
+ * moment of its bar (36 ksi) over the lever from the bar to the 3/4-in cable's centre (13.5 mm); the
+ * keyway bolt's 1.00 kip (Dickey et al., MwRSF) and the tabbed bracket's 346 lb (Rosenbaugh et al., MwRSF)
+ * measured in component tests. */
 double cs_attachment_release_force(cs_attachment kind) {
     switch (kind) {
     case CS_ATTACH_SLOT:
         return 1.0e3;
     case CS_ATTACH_HOOK:
         return 1.5e3;
+    case CS_ATTACH_KEYWAY:
+        return 1.00 * CS_KIP;
+    case CS_ATTACH_BRACKET:
+        return 346.0 * CS_LBF;
     case CS_ATTACH_THROUGH:
     case CS_ATTACH_CLAMPED:
+        break;
+    }
+    return 0.0;
+}
+
+/* docs/assumptions.md: the same component tests, pulled off the post's face: the keyway bolt's 8.00 kip,
+ * the tabbed bracket's 6.10 kip. */
+double cs_attachment_lateral_release_force(cs_attachment kind) {
+    switch (kind) {
+    case CS_ATTACH_KEYWAY:
+        return 8.00 * CS_KIP;
+    case CS_ATTACH_BRACKET:
+        return 6.10 * CS_KIP;
+    case CS_ATTACH_THROUGH:
+    case CS_ATTACH_CLAMPED:
+    case CS_ATTACH_SLOT:
+    case CS_ATTACH_HOOK:
         break;
     }
     return 0.0;

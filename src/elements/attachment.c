@@ -16,8 +16,15 @@
  * mu the cable's friction on the post and R the retainer's strength (a slot's strap and cap, a hook
  * bolt's opening; cs_attachment_release_force). With R small against F that is tan(theta) > mu: the
  * post's lean, not the cable's force, sets the release. Cables stacked in a slot leave from the top
- * down: one still held above holds those below in. A released cable runs straight past the post, which
- * stands on, unloaded (its swing and set kept). */
+ * down: one still held above holds those below in.
+ *
+ * A keyway bolt or a bracket is bolted to one face of the post, whose outward normal n is the barrier's
+ * -y (the attack face) or +y (the protected one) turned with the post (its part normal to the axis). A
+ * cable pulled into the face bears on the post, as in a hook; one pulled off it by F_off = f . n > 0
+ * bears on the fitting, which lets go past its lateral strength R_off (the component tests'). Along the
+ * post it lets go as a hook does: it bears across the post on the one or the other, so friction acts on
+ * F_n either way. A released cable runs straight past the post, which stands on, unloaded (its swing and
+ * set kept). */
 #include "core/vec3.h"
 #include "elements/elements.h"
 
@@ -34,14 +41,28 @@ double cs_attachment_slot_open(const cs_post_model *pm, double z) {
     return (z + pm->pivot) / (pm->height + pm->pivot);
 }
 
+/* The outward normal of the face a keyway bolt or bracket is fixed to, normal to the post's unit axis;
+ * 0 if there is none (the axis along y). */
+static double face_normal(const cs_post_model *pm, const double axis[3], double n[3]) {
+    double n0[3] = {0.0, pm->face_normal, 0.0};
+    v3_copy(n, n0);
+    v3_addto(n, axis, -v3_dot(n0, axis));
+    double len = v3_norm(n);
+    if (len < 1e-9) return 0.0;
+    v3_scale(n, n, 1.0 / len);
+    return len;
+}
+
 int cs_attachment_check_release(const cs_model *model, cs_state *s, int p) {
     const cs_post_model *pm = &model->posts[p];
     const cs_post_state *ps = &s->posts[p];
-    if ((pm->attach != CS_ATTACH_SLOT && pm->attach != CS_ATTACH_HOOK) || !cs_post_in_barrier(ps)) return 0;
-    double base[3], top[3], axis[3];
+    if (pm->attach == CS_ATTACH_THROUGH || pm->attach == CS_ATTACH_CLAMPED || !cs_post_in_barrier(ps))
+        return 0; /* never let go */
+    double base[3], top[3], axis[3], normal[3];
     cs_post_attachment(model, p, ps->tilt, ps->pull, 0.0, base);
     cs_post_attachment(model, p, ps->tilt, ps->pull, 1.0, top);
     v3_sub(axis, top, base);
+    int bolted = pm->lateral_release > 0.0 && face_normal(pm, axis, normal) > 0.0;
     int any = 0;
     for (int c = model->cable_count - 1; c >= 0; c--) {
         cs_cable_state *cs = &s->cables[c];
@@ -53,12 +74,14 @@ int cs_attachment_check_release(const cs_model *model, cs_state *s, int p) {
             continue;
         double f[3], across[3];
         cs_node_force(cs, i, NULL, f);
-        double along = v3_dot(f, axis);
+        double along = v3_dot(f, axis), off = bolted ? v3_dot(f, normal) : 0.0;
         v3_copy(across, f);
         v3_addto(across, axis, -along);
-        if (along <= model->cables[c].mu_post * v3_norm(across) + pm->release_force) continue;
+        int pulled_off = bolted && off > pm->lateral_release;
+        if (!pulled_off && along <= model->cables[c].mu_post * v3_norm(across) + pm->release_force) continue;
         cs_cable_remove_node(cs, i);
-        cs_event *e = cs_event_add(model, s, CS_EVENT_CABLE_RELEASE, CS_ELEMENT_POST, p, along);
+        cs_event *e = cs_event_add(model, s, pulled_off ? CS_EVENT_CABLE_PULLED_OFF : CS_EVENT_CABLE_RELEASE,
+                                   CS_ELEMENT_POST, p, pulled_off ? off : along);
         if (e) e->cable = c;
         any = 1;
         if (pm->attach == CS_ATTACH_SLOT) c = model->cable_count; /* the ones below may follow */

@@ -123,9 +123,18 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
         if (!(d->rotation_limit > 0.0 && d->rotation_limit < 1.5) ||
             !(f->rotation_limit > 0.0 && f->rotation_limit < 1.5))
             return fail(err, "post %d: rotation limits must be between 0 and 1.5 rad", p);
-        if (d->attachment < CS_ATTACH_THROUGH || d->attachment > CS_ATTACH_HOOK)
+        if (d->attachment < CS_ATTACH_THROUGH || d->attachment > CS_ATTACH_BRACKET)
             return fail(err, "post %d: unknown attachment %d", p, (int)d->attachment);
         if (!non_negative(d->release_force)) return fail(err, "post %d: release force must be >= 0", p);
+        if (!non_negative(d->lateral_release_force))
+            return fail(err, "post %d: lateral release force must be >= 0", p);
+        if (d->lateral_release_force > 0.0 && cs_attachment_lateral_release_force(d->attachment) == 0.0)
+            return fail(
+                err,
+                "post %d: lateral release force must be left out (only keyway bolts and brackets have one)",
+                p);
+        if (d->face != CS_FACE_ATTACK && d->face != CS_FACE_PROTECTED)
+            return fail(err, "post %d: unknown face %d", p, (int)d->face);
     }
     if (b->rail_count < 0 || b->rail_count > CS_MAX_CABLES || (b->rail_count > 0 && !b->rails))
         return fail(err, "barrier: %d rails (expected 0 to %d)", b->rail_count, CS_MAX_CABLES);
@@ -467,6 +476,10 @@ static cs_model *model_create(const cs_barrier_def *barrier, const cs_vehicle_de
         pm->attach = d->attachment;
         pm->release_force =
             d->release_force > 0.0 ? d->release_force : cs_attachment_release_force(d->attachment);
+        pm->lateral_release = d->lateral_release_force > 0.0
+                                  ? d->lateral_release_force
+                                  : cs_attachment_lateral_release_force(d->attachment);
+        pm->face_normal = d->face == CS_FACE_PROTECTED ? 1.0 : -1.0;
         pm->inertia = post_inertia(barrier, p, pm->pivot);
         pm->pull_mass = post_mass(barrier, p);
     }

@@ -84,7 +84,8 @@ static double vehicle_reach(const cs_model *model, const cs_state *s) {
 
 static int excuses(cs_event_type type) {
     return type == CS_EVENT_CABLE_BREAK || type == CS_EVENT_TERMINATION_BREAK ||
-           type == CS_EVENT_CABLE_RELEASE || type == CS_EVENT_ANCHOR_PULLOUT;
+           type == CS_EVENT_CABLE_RELEASE || type == CS_EVENT_CABLE_PULLED_OFF ||
+           type == CS_EVENT_ANCHOR_PULLOUT;
 }
 
 void cs_loss_scan_start(cs_loss_scan *scan, double *t, double *f, int size, double step) {

@@ -20,7 +20,9 @@
 #define SUB(key, kind, flags, offset, table, doc)                                                            \
     { key, kind, CS_Q_NUMBER, flags, offset, &table, NULL, doc }
 
-static const char *const attachment_words[] = {"through", "clamped", "slot", "hook", NULL};
+static const char *const attachment_words[] = {"through", "clamped", "slot", "hook",
+                                               "keyway",  "bracket", NULL};
+static const char *const face_words[] = {"attack", "protected", NULL};
 static const char *const impact_at_words[] = {"centre", "corner", NULL};
 static const char *const termination_words[] = {"clips", "swaged", "spelter", "wedge", NULL};
 static const char *const width_scaling_words[] = {"wedge", "none", NULL};
@@ -30,7 +32,7 @@ const char *cs_width_scaling_word(cs_width_scaling kind) {
 }
 
 const char *cs_attachment_word(cs_attachment kind) {
-    return kind >= CS_ATTACH_THROUGH && kind <= CS_ATTACH_HOOK ? attachment_words[kind] : "?";
+    return kind >= CS_ATTACH_THROUGH && kind <= CS_ATTACH_BRACKET ? attachment_words[kind] : "?";
 }
 
 const char *cs_termination_word(cs_termination kind) {
@@ -279,13 +281,20 @@ static const cs_field posts_fields[] = {
     SUB("footing", CS_F_MAP, CS_REQ, (long)offsetof(cs_post_def, footing), cs_table_footing, "the footing"),
     {"attachment", CS_F_ENUM, CS_Q_NUMBER, 0, (long)offsetof(cs_post_def, attachment), NULL, attachment_words,
      "how the cables hold to the post: through (threaded, sliding with friction), clamped, slot (stacked in "
-     "a "
-     "slot open at the top, let go as the post bends over) or hook (hook bolts that open)"},
+     "a slot open at the top, let go as the post bends over), hook (hook bolts that open), keyway (keyway "
+     "bolts) or bracket (tabbed brackets): keyway bolts and brackets also let go when pulled off their face"},
     P("release_force", CS_Q_FORCE, CS_POS, release_force,
-      "a slot's or hook's retainer strength along the post (not given: the kind's documented value)"),
+      "a slot's, hook's, keyway bolt's or bracket's retainer strength along the post (not given: the kind's "
+      "documented value)"),
     P("rotation_limit", CS_Q_ANGLE, CS_POS | CS_MAX90, rotation_limit,
       "rotation at which a post the vehicle pushes over lets it ride over (a post carrying ropes folds on "
       "until its top reaches grade)"),
+    P("lateral_release_force", CS_Q_FORCE, CS_POS, lateral_release_force,
+      "a keyway bolt's or bracket's strength against a pull off its face (not given: the kind's documented "
+      "value)"),
+    {"face", CS_F_ENUM, CS_Q_NUMBER, 0, (long)offsetof(cs_post_def, face), NULL, face_words,
+     "the face of the post keyway bolts or brackets are fixed to: attack (the side the vehicle comes from, "
+     "the default) or protected"},
 };
 const cs_table cs_table_posts = {"posts",
                                  "A group of identical posts: one by one (x) or as a run (from, "

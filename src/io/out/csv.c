@@ -138,7 +138,7 @@ cs_status cs_events_csv(FILE *f, const cs_state *state, cs_error *err) {
                 e->element);
         cs_w_num(&w, e->value, "an event's value");
         fprintf(f, ",%s,%s,", cs_event_value_unit(e->type), cs_event_cable_end_name(e));
-        if (e->cable >= 0) fprintf(f, "%d", e->cable); /* the cable a slot or hook let go */
+        if (e->cable >= 0) fprintf(f, "%d", e->cable); /* the cable a post let go */
         fputc(',', f);
         if (e->post >= 0) fprintf(f, "%d", e->post); /* the post at whose hole a rope broke */
         fputc('\n', f);

@@ -402,6 +402,7 @@ static int same_kind(const cs_post_def *a, const cs_post_def *b) {
     const cs_section_def *s = &a->section, *t = &b->section;
     const cs_footing_def *f = &a->footing, *g = &b->footing;
     return a->height == b->height && a->attachment == b->attachment && a->release_force == b->release_force &&
+           a->lateral_release_force == b->lateral_release_force && a->face == b->face &&
            a->rotation_limit == b->rotation_limit && s->plastic_modulus == t->plastic_modulus &&
            s->inertia == t->inertia && s->web_area == t->web_area && s->yield_stress == t->yield_stress &&
            s->modulus == t->modulus && s->mass_per_length == t->mass_per_length &&

@@ -45,7 +45,7 @@ static void collect(const cs_model *m, const cs_state *s, cs_validate_result *r)
         cs_event e_held = {.size = sizeof e_held};
         cs_state_event(s, i, &e_held, NULL);
         const cs_event *e = &e_held;
-        r->released += e->type == CS_EVENT_CABLE_RELEASE;
+        r->released += e->type == CS_EVENT_CABLE_RELEASE || e->type == CS_EVENT_CABLE_PULLED_OFF;
         if (r->post_failure < 0 && (e->type == CS_EVENT_POST_ROTATION_LIMIT ||
                                     e->type == CS_EVENT_POST_PULLOUT || e->type == CS_EVENT_POST_SHEAR))
             r->post_failure = (int)e->type, r->post_failure_t = e->t;
