@@ -192,18 +192,19 @@ static int parse(int argc, char **argv, const cs_cli *cli, int is_run, options *
         case SET:
         case DT:
         case T_END:
-            snprintf(set, sizeof set, "%s%s",
-                     v == DT      ? "scenario.dt="
-                     : v == T_END ? "scenario.t_end="
-                                  : "",
-                     optarg);
-            cs_loader_set(l, set);
             if (cs_overrides_add(o->overrides,
                                  v == SET  ? "--set"
                                  : v == DT ? "--dt"
                                            : "--t-end",
                                  optarg) != 0)
                 return EXIT_BAD;
+            snprintf(set, sizeof set, "%s%s",
+                     v == DT      ? "scenario.dt="
+                     : v == T_END ? "scenario.t_end="
+                                  : "",
+                     optarg);
+            /* a problem with --dt or --t-end names it as given ("--dt 2 ms": the override's text) */
+            cs_loader_set_given(l, set, v == SET ? NULL : o->overrides->text[o->overrides->count - 1]);
             break;
         default:
             return EXIT_BAD;

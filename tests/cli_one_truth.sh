@@ -7,7 +7,8 @@
 # events.csv and timeseries.csv:
 # the designation as run, the peak deceleration and its time at the terminal's precision, the
 # penetration (or how far beyond), the cables counted from 0, the end fittings' strength and the events
-# agree; compare's table gives each run's own numbers. The designation as run is also rate's row for the
+# agree, and report.html's data gives the unit of every number it holds, as the CSVs write it; compare's
+# table gives each run's own numbers. The designation as run is also rate's row for the
 # same condition and a sweep's runs.csv entry, and rate's conclusion is its "rating". Exit 77 (skipped)
 # for a build without node (no report.html). The designer page's numbers for the same run are checked
 # against these outputs in a browser: designer_one_truth (report/test/designer_truth.mjs).

@@ -106,6 +106,12 @@ cp "$out/summary.json" "$tmp/before.json"
 check "a refused model is status 2" '[ $? -eq 2 ]'
 check "the refusal names the place" 'grep -q "^--set scenario.speed=35 kg: .*not of speed" "$tmp/stderr"'
 check "a refused run leaves earlier outputs alone" 'cmp -s "$tmp/before.json" "$out/summary.json"'
+# --dt and --t-end stand for --set scenario.dt= and scenario.t_end=, but a problem with one names it as
+# the user typed it
+"$cs" run examples/aps3.yaml -o "$tmp/dt" --dt "2 ft" >/dev/null 2>"$tmp/stderr"
+check "a refused --dt is status 2, named as given" '[ $? -eq 2 ] && grep -qxF -- "--dt 2 ft: '"'"'ft'"'"' is a unit of length, not of time (expected a time, e.g. \"0.5 ms\")" "$tmp/stderr" && ! grep -q "scenario.dt" "$tmp/stderr"'
+"$cs" check examples/aps3.yaml --t-end "-1 s" >/dev/null 2>"$tmp/stderr"
+check "a refused --t-end is named as given" '[ $? -eq 2 ] && grep -qe "^--t-end -1 s: '"'"'-1 s'"'"' must be above zero" "$tmp/stderr" && ! grep -qe "--set\|scenario.t_end" "$tmp/stderr"'
 # Determinism: the same input twice gives byte-identical outputs (a run through the barrier's failures,
 # 0.3 s of APS1: ropes or their anchors giving way and the end posts failing, exercises every stage of the
 # step).

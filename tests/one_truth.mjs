@@ -2,7 +2,8 @@
 // One run's numbers in every output agree (tests/cli_one_truth.sh runs it): node tests/one_truth.mjs DIR
 // TERMINAL where DIR is a `cablesim run --report` folder and TERMINAL the file of what that run printed.
 // report.html's text is made as the page makes it, by report/src/summary.js on the page's own data, with a
-// stand-in for the browser's document. Prints "ok NAME" or "FAIL NAME: detail" per check.
+// stand-in for the browser's document; its data's units are checked against the CSVs'. Prints "ok NAME" or
+// "FAIL NAME: detail" per check.
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 
@@ -100,4 +101,31 @@ if (atHole.length || termHoles.length || jsonHoles.length || pageHoles.length) {
   check('breaks at a hole: events.csv = summary.json = the terminal (cable and post)', same(csvHoles, jsonHoles) && same(csvHoles, termHoles), JSON.stringify([csvHoles, jsonHoles, termHoles]));
   check('breaks at a hole: report.html says "at post N\'s hole" for the same cables and posts', same(pageHoles.map((h) => h.slice(0, 2)), csvHoles) && pageHoles.every(([c, p, text]) => text.startsWith(`Cable ${c} `) && text.endsWith(`breaks at post ${p}'s hole`)), JSON.stringify(pageHoles));
 }
+// (c) every number of the page's data carries its unit: page.units, shaped as the data
+// (src/io/out/report_html.h): an object's by key, a list's one unit for all its numbers or a list whose
+// element i % length gives element i's; "" (no unit) only for an integer (a count, an index, a state)
+const unitless = [];
+const used = new Set();
+let numbers = 0;
+function walk(v, u, path) {
+  if (typeof v === 'number') {
+    numbers++;
+    if (typeof u !== 'string') unitless.push(`${path} (${v}): no unit`);
+    else if (u === '' && !Number.isInteger(v)) unitless.push(`${path} (${v}): "" for a number that is no count`);
+    else used.add(u);
+  } else if (Array.isArray(v)) {
+    v.forEach((e, i) => walk(e, typeof u === 'string' ? u : Array.isArray(u) && u.length ? u[i % u.length] : undefined, `${path}[${i}]`));
+  } else if (v !== null && typeof v === 'object') {
+    for (const [k, e] of Object.entries(v)) walk(e, u !== null && typeof u === 'object' && !Array.isArray(u) ? u[k] : undefined, `${path}.${k}`);
+  }
+}
+for (const [k, v] of Object.entries(page)) if (k !== 'units') walk(v, (page.units || {})[k], k);
+check(`report.html data: every number has its unit (${numbers} numbers)`, numbers > 1000 && unitless.length === 0, unitless.slice(0, 5).join('; '));
+// each unit as the CSVs write it (udunits2: "m/s^2", "N m", "1"), the same as the CSVs' for the same quantity
+const udunits = /^(1|[A-Za-z]+(\^-?[0-9]+)?([ /][A-Za-z]+(\^-?[0-9]+)?)*)$/;
+check('report.html data: each unit written as udunits2 writes it', [...used].every((u) => u === '' || udunits.test(u)), JSON.stringify([...used]));
+const header = (name) => (series[0].find((h) => h.startsWith(`${name} [`)) || '').slice(name.length + 2, -1);
+const U = page.units || {};
+check('report.html data: the units of time, speed, tension, tilt and energy are timeseries.csv\'s', U.series && U.series.t === header('t') && U.series.speed === header('forward_speed') && U.series.tension === header('cable0_max_tension') && U.series.post_tilt === header('post0_tilt') && U.series.energy.friction === header('friction') && U.series.energy.balance_error === header('energy_balance_error') && U.series.decel50 === header('decel_50ms'), JSON.stringify(U.series));
+check('report.html data: each event\'s value in events.csv\'s value_unit', events.length - 1 === page.events.length && page.events.every((e, i) => U.events[i][4] === events[i + 1][5] && U.events[i][0] === 's'), JSON.stringify((U.events || []).slice(0, 3)));
 process.exit(failed ? 1 : 0);

@@ -155,7 +155,8 @@ static void data_complete(void **st) {
                                        "\"post_tilt\":",
                                        "\"energy\":",
                                        "\"vehicle_kinetic\":",
-                                       "\"frames\":"};
+                                       "\"frames\":",
+                                       "\"units\":\n{\"format\":\"\",\"evaluation\":"};
     for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++)
         if (!strstr(json, keys[k])) fail_msg("no %s in the data", keys[k]);
     /* every recorded frame of a short run is kept, for the plots and the replay */
@@ -207,6 +208,9 @@ static void design_as_loaded(void **st) {
     cs_error err;
     char *json = page(r, &r->rec, "@CS_DATA@", &err);
     if (err.status != CS_OK) fail_msg("%s", err.message);
+    char *units = strstr(json, ",\"units\":\n{");
+    assert_non_null(units);
+    *units = '\0'; /* the design's keys, not those of their units (the data's last member) */
     const char *d = strstr(json, "\"design\":{\"ropes\":[");
     assert_non_null(d);
     const cs_barrier_def *b = &r->in.barrier;

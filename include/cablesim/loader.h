@@ -65,6 +65,13 @@ CS_API cs_status cs_loader_allow_path(cs_loader *loader, const char *dir, cs_err
  *        "scenario.speed=35 mph", "barrier.posts[0].spacing=6 ft", "vehicle=M".
  * @return CS_OK, or CS_ERR_INVALID when it is not PATH=VALUE (the problem is recorded). */
 CS_API cs_status cs_loader_set(cs_loader *loader, const char *assignment);
+/** Queue an override as cs_loader_set does, for a command-line option that stands for one (`cablesim run
+ * --dt T` is scenario.dt=T): its problems name the option as the user gave it, not the --set.
+ * @param loader the loader
+ * @param assignment "PATH=VALUE" as for cs_loader_set: "scenario.dt=2 ms"
+ * @param given the option as given, which the messages name: "--dt 2 ms" (NULL: as cs_loader_set)
+ * @return as cs_loader_set (CS_ERR_MEMORY: no room to keep it). */
+CS_API cs_status cs_loader_set_given(cs_loader *loader, const char *assignment, const char *given);
 /** Load, resolve, override and check a model file. A `file:` it names is found from the folder of the file
  * naming it, and read only when it is a regular file of at most 64 MB in the folder of path (or a
  * subfolder), the parts library's, or a folder of cs_loader_allow_path; a named file that is not a model

@@ -43,6 +43,7 @@ static void drop_sets(cs_loader *l) {
     for (int i = 0; i < l->set_count; i++) {
         free(l->sets[i].path);
         free(l->sets[i].value);
+        free(l->sets[i].given);
     }
     l->set_count = 0;
 }
@@ -96,15 +97,21 @@ void cs_loader_free(cs_loader *l) {
 /* ---- --set ---- */
 
 cs_status cs_loader_set(cs_loader *l, const char *assignment) {
+    return cs_loader_set_given(l, assignment, NULL);
+}
+
+cs_status cs_loader_set_given(cs_loader *l, const char *assignment, const char *given) {
     const char *eq = strchr(assignment, '=');
     if (cs_grow(&l->sets, &l->set_capacity, l->set_count, sizeof *l->sets) != 0) return CS_ERR_MEMORY;
     size_t n = eq ? (size_t)(eq - assignment) : strlen(assignment);
     cs_lset *s = &l->sets[l->set_count];
     s->path = malloc(n + 1);
     s->value = strdup(eq ? eq + 1 : "");
-    if (!s->path || !s->value) {
+    s->given = given ? strdup(given) : NULL;
+    if (!s->path || !s->value || (given && !s->given)) {
         free(s->path);
         free(s->value);
+        free(s->given);
         return CS_ERR_MEMORY;
     }
     memcpy(s->path, assignment, n);

@@ -53,7 +53,8 @@ typedef struct cs_lerror {
 
 typedef struct cs_lset {
     char *path, *value;
-    int bad; /* not PATH=VALUE */
+    char *given; /* the command-line option it stands for, as given ("--dt 2 ms"), or NULL: a --set */
+    int bad;     /* not PATH=VALUE */
 } cs_lset;
 
 struct cs_loader {

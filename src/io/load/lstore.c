@@ -46,9 +46,13 @@ static void add_error(cs_loader *l, int source, int line, int col, const char *f
     vsnprintf(msg, sizeof msg, fmt, ap);
     if (source >= 0 && source < l->file_count)
         snprintf(where, sizeof where, "%s:%d:%d: ", l->files[source].name, line, col);
-    else if (source < 0 && source != INT_MIN && -1 - source < l->set_count)
-        snprintf(where, sizeof where, "--set %s%s%s: ", l->sets[-1 - source].path,
-                 l->sets[-1 - source].bad ? "" : "=", l->sets[-1 - source].value);
+    else if (source < 0 && source != INT_MIN && -1 - source < l->set_count) {
+        const cs_lset *set = &l->sets[-1 - source]; /* named as the user gave it */
+        if (set->given)
+            snprintf(where, sizeof where, "%s: ", set->given);
+        else
+            snprintf(where, sizeof where, "--set %s%s%s: ", set->path, set->bad ? "" : "=", set->value);
+    }
     if (cs_grow(&l->errors, &l->error_capacity, l->error_count, sizeof *l->errors) != 0) return;
     size_t n = strlen(where) + strlen(msg) + 1;
     char *text = malloc(n);

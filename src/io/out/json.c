@@ -304,11 +304,12 @@ static json_object *roadside_criteria(cs_wout *w, const cs_run_info *info) {
     return o;
 }
 
-void cs_json_evaluation(cs_wout *w, json_object *to, const cs_run_info *info) {
+void cs_json_evaluation(cs_wout *w, json_object *to, const cs_run_info *info, int line_breaks) {
     occupant_risk(w, to, info);
-    cs_jline_after_last(to);
+    if (line_breaks) cs_jline_after_last(to);
     json_object *criteria = roadside_criteria(w, info);
-    json_object_object_add(to, "roadside_criteria", criteria ? cs_jline_after(criteria) : NULL);
+    json_object_object_add(to, "roadside_criteria",
+                           criteria && line_breaks ? cs_jline_after(criteria) : criteria);
 }
 
 /* An event as summary.json gives it. */
@@ -398,7 +399,7 @@ json_object *cs_summary_json(const cs_model_input *in, const cs_model *model, co
     cs_json_cables_and_losses(&w, doc, state, &s, wnum);
     cs_jline_after_last(doc); /* a line break after the sudden losses */
     ratings(&w, doc, info);
-    cs_json_evaluation(&w, doc, info);
+    cs_json_evaluation(&w, doc, info, 1);
     json_object *events = json_object_new_array(); /* each on a line of its own */
     for (int i = 0; i < cs_state_event_count(state); i++) {
         cs_event e = {.size = sizeof e};

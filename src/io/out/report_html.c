@@ -179,27 +179,29 @@ static double s_moment(const cs_record *r, const cs_model_input *in, int f, int 
     return r->posts[(size_t)f * (size_t)r->post_count + (size_t)p].base_moment;
 }
 
+/* the energy ledger's terms in J, and its balance error, a fraction of the initial kinetic energy */
 static const struct {
     const char *key;
     size_t offset;
+    const char *unit;
 } ledger[] = {
-    {"crush", offsetof(cs_energy, crush)},
-    {"post_plastic", offsetof(cs_energy, post_plastic)},
-    {"post_damping", offsetof(cs_energy, post_damping)},
-    {"soil", offsetof(cs_energy, soil)},
-    {"cable_plastic", offsetof(cs_energy, cable_plastic)},
-    {"friction", offsetof(cs_energy, friction)},
-    {"released", offsetof(cs_energy, released)},
-    {"post_elastic", offsetof(cs_energy, post_elastic)},
-    {"post_kinetic", offsetof(cs_energy, post_kinetic)},
-    {"anchor_elastic", offsetof(cs_energy, anchor_elastic)},
-    {"anchor_kinetic", offsetof(cs_energy, anchor_kinetic)},
-    {"rail_elastic", offsetof(cs_energy, rail_elastic)},
-    {"rail_plastic", offsetof(cs_energy, rail_plastic)},
-    {"cable_elastic", offsetof(cs_energy, cable_elastic)},
-    {"vehicle_potential", offsetof(cs_energy, vehicle_potential)},
-    {"vehicle_kinetic", offsetof(cs_energy, vehicle_kinetic)},
-    {"balance_error", offsetof(cs_energy, balance_error)},
+    {"crush", offsetof(cs_energy, crush), "J"},
+    {"post_plastic", offsetof(cs_energy, post_plastic), "J"},
+    {"post_damping", offsetof(cs_energy, post_damping), "J"},
+    {"soil", offsetof(cs_energy, soil), "J"},
+    {"cable_plastic", offsetof(cs_energy, cable_plastic), "J"},
+    {"friction", offsetof(cs_energy, friction), "J"},
+    {"released", offsetof(cs_energy, released), "J"},
+    {"post_elastic", offsetof(cs_energy, post_elastic), "J"},
+    {"post_kinetic", offsetof(cs_energy, post_kinetic), "J"},
+    {"anchor_elastic", offsetof(cs_energy, anchor_elastic), "J"},
+    {"anchor_kinetic", offsetof(cs_energy, anchor_kinetic), "J"},
+    {"rail_elastic", offsetof(cs_energy, rail_elastic), "J"},
+    {"rail_plastic", offsetof(cs_energy, rail_plastic), "J"},
+    {"cable_elastic", offsetof(cs_energy, cable_elastic), "J"},
+    {"vehicle_potential", offsetof(cs_energy, vehicle_potential), "J"},
+    {"vehicle_kinetic", offsetof(cs_energy, vehicle_kinetic), "J"},
+    {"balance_error", offsetof(cs_energy, balance_error), "1"},
 };
 enum { LEDGER_TERMS = sizeof ledger / sizeof ledger[0] };
 
@@ -212,48 +214,63 @@ static double s_energy(const cs_record *r, const cs_model_input *in, int f, int 
 
 enum { NEAR_POSTS = 4 };
 
-static json_object *write_series(jw *j, const cs_model_input *in, const cs_record *r, int stride) {
+/* k's unit into units (a list's: the unit of every number in it). */
+static void kunit(json_object *units, const char *k, const char *unit) {
+    json_object_object_add(units, k, cs_jstr(unit));
+}
+
+/* "series", and its units into units. */
+static json_object *write_series(jw *j, const cs_model_input *in, const cs_record *r, int stride,
+                                 json_object *units) {
     int idx[NEAR_POSTS];
     int near = cs_nearest_posts(in, idx, r->post_count < NEAR_POSTS ? r->post_count : NEAR_POSTS);
     json_object *o = json_object_new_object();
     kint(o, "stride", stride);
+    kunit(units, "stride", "");
     static const struct {
         const char *key, *what;
         series_fn fn;
         int arg, nullable;
+        const char *unit;
     } plain[] = {
-        {"t", "time", s_time, 0, 0},
-        {"decel", "the deceleration", s_decel, 0, 0},
-        {"decel50", "the 50-ms deceleration", s_decel50, 0, 1},
-        {"speed", "the forward speed", s_speed, 0, 0},
-        {"penetration", "the penetration", s_penetration, 0, 0},
-        {"face", "the front face", s_face, 0, 0},
-        {"deflection", "the barrier deflection", s_deflection, 0, 1},
-        {"roll", "the roll", s_attitude, 0, 0},
-        {"pitch", "the pitch", s_attitude, 1, 0},
-        {"yaw", "the yaw", s_attitude, 2, 0},
-        {"cg_x", "the CG's x", s_cg, 0, 0},
-        {"cg_y", "the CG's y", s_cg, 1, 0},
+        {"t", "time", s_time, 0, 0, "s"},
+        {"decel", "the deceleration", s_decel, 0, 0, "g"},
+        {"decel50", "the 50-ms deceleration", s_decel50, 0, 1, "g"},
+        {"speed", "the forward speed", s_speed, 0, 0, "m/s"},
+        {"penetration", "the penetration", s_penetration, 0, 0, "m"},
+        {"face", "the front face", s_face, 0, 0, "m"},
+        {"deflection", "the barrier deflection", s_deflection, 0, 1, "m"},
+        {"roll", "the roll", s_attitude, 0, 0, "rad"},
+        {"pitch", "the pitch", s_attitude, 1, 0, "rad"},
+        {"yaw", "the yaw", s_attitude, 2, 0, "rad"},
+        {"cg_x", "the CG's x", s_cg, 0, 0, "m"},
+        {"cg_y", "the CG's y", s_cg, 1, 0, "m"},
     };
-    for (size_t k = 0; k < sizeof plain / sizeof plain[0]; k++)
+    for (size_t k = 0; k < sizeof plain / sizeof plain[0]; k++) {
         json_object_object_add(
             o, plain[k].key,
             series(j, r, in, stride, plain[k].fn, plain[k].arg, plain[k].nullable, plain[k].what));
+        kunit(units, plain[k].key, plain[k].unit);
+    }
     json_object *tension = json_object_new_array();
     for (int c = 0; c < r->cable_count; c++)
         json_object_array_add(tension, series(j, r, in, stride, s_tension, c, 0, "a cable's tension"));
     json_object_object_add(o, "tension", tension);
+    kunit(units, "tension", "N");
     json_object_object_add(o, "near_posts", ints(idx, near));
+    kunit(units, "near_posts", "");
     static const struct {
         const char *key, *what;
         series_fn fn;
-    } per_post[] = {{"post_tilt", "a post's tilt", s_tilt},
-                    {"post_moment", "a post's base moment", s_moment}};
+        const char *unit;
+    } per_post[] = {{"post_tilt", "a post's tilt", s_tilt, "rad"},
+                    {"post_moment", "a post's base moment", s_moment, "N m"}};
     for (int m = 0; m < 2; m++) {
         json_object *a = json_object_new_array();
         for (int k = 0; k < near; k++)
             json_object_array_add(a, series(j, r, in, stride, per_post[m].fn, idx[k], 0, per_post[m].what));
         json_object_object_add(o, per_post[m].key, a);
+        kunit(units, per_post[m].key, per_post[m].unit);
     }
     json_object *capacity = json_object_new_array();
     for (int k = 0; k < near && r->frame_count > 0; k++) {
@@ -261,14 +278,20 @@ static json_object *write_series(jw *j, const cs_model_input *in, const cs_recor
         json_object_array_add(capacity, num(j, r->posts[idx[k]].moment_capacity));
     }
     json_object_object_add(o, "post_capacity", capacity);
-    json_object *energy = json_object_new_object();
-    for (int k = 0; k < LEDGER_TERMS; k++)
+    kunit(units, "post_capacity", "N m");
+    json_object *energy = json_object_new_object(), *energy_units = json_object_new_object();
+    for (int k = 0; k < LEDGER_TERMS; k++) {
         json_object_object_add(energy, ledger[k].key,
                                series(j, r, in, stride, s_energy, k, 0, "the energy ledger"));
+        kunit(energy_units, ledger[k].key, ledger[k].unit);
+    }
     json_object_object_add(o, "energy", energy);
+    json_object_object_add(units, "energy", energy_units);
     if (r->frame_count > 0) {
         knum(j, o, "initial_kinetic", r->energy[0].initial_kinetic);
         knum(j, o, "initial_total", r->energy[0].initial_total);
+        kunit(units, "initial_kinetic", "J");
+        kunit(units, "initial_total", "J");
     }
     return o;
 }
@@ -288,7 +311,10 @@ static json_object *nums(jw *j, const double *v, int n) {
 
 /* frames: [[t, [x, y, z, roll, pitch, yaw, crush, face_force], [top x, y, z, status]*posts,
  * [[status, engaged, [x, y, z]*nodes, [span tension]*(nodes-1)]]*cables], ...], each frame on a line of
- * its own */
+ * its own; their units frame_units (a list's units repeated along it: report_html.h) */
+static const char frame_units[] = "[[\"s\",[\"m\",\"m\",\"m\",\"rad\",\"rad\",\"rad\",\"m\",\"N\"],"
+                                  "[\"m\",\"m\",\"m\",\"\"],[[\"\",\"\",\"m\",\"N\"]]]]";
+
 static json_object *write_frames(jw *j, const cs_record *r, int stride) {
     int n = r->frame_count, count = kept_count(n, stride);
     json_object *frames = json_object_new_array_ext(count > 0 ? count : 1);
@@ -569,7 +595,10 @@ static void scenario_and_vehicle(jw *j, json_object *doc, const cs_model_input *
     json_object_object_add(doc, "vehicle", vo);
 }
 
-/* "barrier": posts [x, height, rotation limit], cables [height, Fu, pretension], anchors [x, z] */
+/* "barrier": posts [x, height, rotation limit], cables [height, Fu, pretension], anchors [x, z]; their
+ * units barrier_units */
+static const char barrier_units[] =
+    "{\"posts\":[[\"m\",\"m\",\"rad\"]],\"cables\":[[\"m\",\"N\",\"N\"]],\"anchors\":\"m\"}";
 static json_object *barrier_of(jw *j, const cs_barrier_def *b) {
     json_object *o = json_object_new_object(), *posts = json_object_new_array(),
                 *cables = json_object_new_array(), *anchors = json_object_new_array();
@@ -599,14 +628,14 @@ static json_object *barrier_of(jw *j, const cs_barrier_def *b) {
 
 /* events: [t, type, element kind, element, value (SI)], then a termination event's cable end, the cable a
  * post let go and the post at whose hole a rope broke, as far as one of them is given; each on a line of
- * its own */
-static json_object *events_of(jw *j, const cs_state *state) {
+ * its own. Each event's units into units: its value's is its type's (events.csv's value_unit). */
+static json_object *events_of(jw *j, const cs_state *state, json_object *units) {
     json_object *list = json_object_new_array();
     snprintf(j->what, sizeof j->what, "an event's time or value");
     for (int i = 0; i < cs_state_event_count(state); i++) {
         cs_event e = {.size = sizeof e};
         cs_state_event(state, i, &e, NULL);
-        json_object *o = json_object_new_array();
+        json_object *o = json_object_new_array(), *u = json_object_new_array();
         json_object_array_add(o, num(j, e.t));
         json_object_array_add(o, cs_jstr(cs_event_type_name(e.type)));
         json_object_array_add(o, cs_jstr(cs_element_kind_name(e.element_kind)));
@@ -617,8 +646,110 @@ static json_object *events_of(jw *j, const cs_state *state) {
         if (e.cable >= 0 || e.post >= 0) json_object_array_add(o, json_object_new_int(e.cable));
         if (e.post >= 0) json_object_array_add(o, json_object_new_int(e.post));
         json_object_array_add(list, cs_jline_before(o));
+        const char *unit[] = {"s", "", "", "", cs_event_value_unit(e.type)}; /* then indices: "" */
+        for (size_t k = 0; k < json_object_array_length(o); k++)
+            json_object_array_add(u, cs_jstr(k < sizeof unit / sizeof unit[0] ? unit[k] : ""));
+        json_object_array_add(units, u);
     }
     return list;
+}
+
+/* ---- the units of the data ("units": report_html.h) ---- */
+
+/* The unit of key's value v (a number or null) in a part of the data: NULL for a null that has none. */
+typedef const char *(*unit_fn)(const void *ctx, const char *key, json_object *v);
+
+/* The unit a key names by its ending, as summary.json's keys do (docs/tutorial.md: "working_width_m" is
+ * in m), written as the CSVs write it; a key without one holds a pure number ("1") where v is a double,
+ * a count or an index (no unit, "") where it is an integer. */
+static const char *unit_by_ending(const void *ctx, const char *key, json_object *v) {
+    (void)ctx;
+    static const struct {
+        const char *end, *unit;
+    } ends[] = {{"_mps", "m/s"}, {"_kmh", "km/h"}, {"_kg_m", "kg/m"}, {"_pa_m", "Pa/m"},
+                {"_m2", "m^2"},  {"_m3", "m^3"},   {"_m4", "m^4"},    {"_deg", "deg"},
+                {"_rad", "rad"}, {"_pa", "Pa"},    {"_kg", "kg"},     {"_m", "m"},
+                {"_s", "s"},     {"_g", "g"},      {"_n", "N"},       {"_j", "J"}};
+    size_t n = strlen(key);
+    for (size_t k = 0; k < sizeof ends / sizeof ends[0]; k++) {
+        size_t e = strlen(ends[k].end);
+        if (n > e && strcmp(key + n - e, ends[k].end) == 0) return ends[k].unit;
+    }
+    return json_object_is_type(v, json_type_int) ? "" : json_object_is_type(v, json_type_double) ? "1" : NULL;
+}
+
+/* The unit the model's schema gives key in table ctx (its quantity's SI unit); none for an integer it does
+ * not give (a flag: "impact_at_corner"). */
+static const char *unit_by_schema(const void *ctx, const char *key, json_object *v) {
+    const cs_table *t = ctx;
+    for (int i = 0; i < t->count; i++)
+        if (t->fields[i].kind == CS_F_QTY && strcmp(t->fields[i].key, key) == 0)
+            return cs_quantity_get(t->fields[i].q)->label;
+    return json_object_is_type(v, json_type_int) ? "" : NULL;
+}
+
+static json_object *value_units(unit_fn unit, const void *ctx, const char *key, json_object *v);
+
+/* The units of object o, keyed as it: each member's by value_units. */
+static json_object *object_units(unit_fn unit, const void *ctx, json_object *o) {
+    json_object *units = json_object_new_object();
+    json_object_object_foreach(o, key, v) {
+        json_object *u = value_units(unit, ctx, key, v);
+        if (u) json_object_object_add(units, key, u);
+    }
+    return units;
+}
+
+/* The units of member key's value v: a number's unit(key); an object's object_units; a list of numbers'
+ * one unit for them all; another list's, each element's; NULL where v holds no number. */
+static json_object *value_units(unit_fn unit, const void *ctx, const char *key, json_object *v) {
+    json_type type = json_object_get_type(v);
+    if (type == json_type_object) return object_units(unit, ctx, v);
+    if (type != json_type_array) {
+        const char *u = type == json_type_int || type == json_type_double || type == json_type_null
+                            ? unit(ctx, key, v)
+                            : NULL;
+        return u ? cs_jstr(u) : NULL;
+    }
+    size_t n = json_object_array_length(v), numbers = 0, first = n;
+    for (size_t i = 0; i < n; i++) {
+        json_type t = json_object_get_type(json_object_array_get_idx(v, i));
+        numbers += t == json_type_int || t == json_type_double || t == json_type_null;
+        if (first == n && t != json_type_null) first = i;
+    }
+    if (n == 0 || numbers == n)
+        return value_units(unit, ctx, key, json_object_array_get_idx(v, first < n ? first : 0));
+    json_object *units = json_object_new_array_ext((int)n);
+    for (size_t i = 0; i < n; i++)
+        json_object_array_add(units, value_units(unit, ctx, key, json_object_array_get_idx(v, i)));
+    return units;
+}
+
+/* "units": the units of every number of doc (the series' and the events' as written with them, taken),
+ * on the data's last line. */
+static json_object *page_units(json_object *doc, json_object *series_units, json_object *event_units) {
+    static const struct {
+        const char *key;
+        unit_fn unit;
+        const cs_table *table;
+    } by_key[] = {{"evaluation", unit_by_ending, NULL},
+                  {"summary", unit_by_ending, NULL},
+                  {"scenario", unit_by_schema, &cs_table_scenario},
+                  {"vehicle", unit_by_schema, &cs_table_vehicle},
+                  {"design", unit_by_ending, NULL}};
+    json_object *units = json_object_new_object();
+    kunit(units, "format", "");
+    for (size_t k = 0; k < sizeof by_key / sizeof by_key[0]; k++) {
+        json_object *part = NULL;
+        json_object_object_get_ex(doc, by_key[k].key, &part);
+        json_object_object_add(units, by_key[k].key, object_units(by_key[k].unit, by_key[k].table, part));
+    }
+    json_object_object_add(units, "barrier", json_tokener_parse(barrier_units));
+    json_object_object_add(units, "events", event_units);
+    json_object_object_add(units, "series", series_units);
+    kunit(units, "replay_stride", "");
+    json_object_object_add(units, "frames", json_tokener_parse(frame_units));
+    return units;
 }
 
 json_object *cs_report_json(const cs_model_input *in, const cs_state *state, const cs_record *r,
@@ -626,9 +757,11 @@ json_object *cs_report_json(const cs_model_input *in, const cs_state *state, con
     jw j = {{NULL, 0, ""}, "", PAGE_DIGITS};
     cs_summary s = {.size = sizeof s};
     cs_state_summary(state, &s, NULL);
-    json_object *doc = json_object_new_object(), *evaluation = json_object_new_object();
-    if (!doc || !evaluation) {
+    json_object *doc = json_object_new_object(), *evaluation = json_object_new_object(),
+                *series_units = json_object_new_object(), *event_units = json_object_new_array();
+    if (!doc || !evaluation || !series_units || !event_units) {
         json_object_put(doc), json_object_put(evaluation);
+        json_object_put(series_units), json_object_put(event_units);
         cs_status_set(err, CS_ERR_MEMORY, "report.html: out of memory");
         return NULL;
     }
@@ -637,13 +770,13 @@ json_object *cs_report_json(const cs_model_input *in, const cs_state *state, con
     kstr(doc, "file", in->file);
     kstr(doc, "version", CS_VERSION_STRING);
     write_info(doc, info);
-    cs_json_evaluation(&j.w, evaluation, info);
+    cs_json_evaluation(&j.w, evaluation, info, 0);
     json_object_object_add(doc, "evaluation", evaluation);
     json_object_object_add(doc, "summary", summary_of(&j, state, &s));
     scenario_and_vehicle(&j, doc, in);
     json_object_object_add(doc, "barrier", barrier_of(&j, &in->barrier));
     json_object_object_add(doc, "design", write_design(&j, &in->barrier));
-    json_object_object_add(doc, "events", events_of(&j, state));
+    json_object_object_add(doc, "events", events_of(&j, state, event_units));
     int n = r->frame_count;
     int series_stride = n > CS_REPORT_SERIES_MAX ? (n + CS_REPORT_SERIES_MAX - 1) / CS_REPORT_SERIES_MAX : 1;
     double fit = CS_REPORT_REPLAY_BYTES / replay_frame_bytes(r);
@@ -651,9 +784,10 @@ json_object *cs_report_json(const cs_model_input *in, const cs_state *state, con
                      : fit > CS_REPORT_REPLAY_MAX ? CS_REPORT_REPLAY_MAX
                                                   : (int)fit;
     int replay_stride = n > replay_max ? (n + replay_max - 1) / replay_max : 1;
-    json_object_object_add(doc, "series", write_series(&j, in, r, series_stride));
+    json_object_object_add(doc, "series", write_series(&j, in, r, series_stride, series_units));
     kint(doc, "replay_stride", replay_stride);
     json_object_object_add(doc, "frames", write_frames(&j, r, replay_stride));
+    json_object_object_add(doc, "units", cs_jline_before(page_units(doc, series_units, event_units)));
     if (cs_w_status(&j.w, "report.html", err) == CS_OK) return doc;
     json_object_put(doc);
     return NULL;

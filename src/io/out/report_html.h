@@ -30,8 +30,16 @@ enum {
 };
 
 /* The run as JSON: where it came from (version, command line, overrides, model hash: info, which may be
- * NULL), summary, ratings, scenario, vehicle, barrier, events, series (plots) and frames (replay). Every
- * '<', '>' and '&' is escaped, so the text can stand inside a <script> element. Returns CS_OK, or
+ * NULL), summary, ratings, scenario, vehicle, barrier, events, series (plots) and frames (replay), all in
+ * SI, and last "units": the unit of every number, shaped as the data, so that the data read on its own
+ * (saved, or in the page's source) says what its numbers are. Each is written as the CSVs write units
+ * (docs/file-format.md: "m/s^2", "N m", "g", "deg", "1" a pure number), "" for a number without one (a
+ * count, an index, a state, a flag: the CSVs' columns named alone). An object's units are an object of
+ * its keys; a list's are one unit for every number in it, or a list U whose element i % |U| gives the
+ * units of the list's element i: a tuple's units (a post [x, height, rotation limit]), a tuple repeated
+ * along a flat list (a frame's posts' [x, y, z, status]), or one entry for each element (each event,
+ * whose value's unit is its type's). Every '<', '>' and '&' is escaped, so the text can stand inside a
+ * <script> element. Returns CS_OK, or
  * CS_ERR_IO with err filled (a non-finite number where one must be finite, a write error), or
  * CS_ERR_MEMORY. */
 cs_status cs_write_report_json(FILE *f, const cs_model_input *in, const cs_state *state, const cs_record *rec,

@@ -76,9 +76,10 @@ struct json_object *cs_json_provenance(const cs_run_info *info);
 /* The evaluation of a run as summary.json and report.html give it, as members added to to:
  * "occupant_risk" (or null and "occupant_risk_note"), "max_roll_deg", "max_pitch_deg" and
  * "roadside_criteria" (with MASH's "exit_box"; null for a run that is no roadside test), numbers as cs_w_num
- * (w marked bad by a non-finite one), a line break after the occupant risk's members and after the criteria
- * (docs/ratings.md). */
-void cs_json_evaluation(cs_wout *w, struct json_object *to, const cs_run_info *info);
+ * (w marked bad by a non-finite one) (docs/ratings.md); with line_breaks (summary.json) a line break after
+ * the occupant risk's members and after the criteria. report.html's data has none: its units are read off
+ * its values, which a line break's wrapper hides (jsondoc.h). */
+void cs_json_evaluation(cs_wout *w, struct json_object *to, const cs_run_info *info, int line_breaks);
 /* A number of a JSON document as its writer writes them, what naming it; NULL (null) and w marked bad if
  * v is not finite. */
 typedef struct json_object *(*cs_jnum_fn)(cs_wout *w, double v, const char *what);
