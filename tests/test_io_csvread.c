@@ -2,7 +2,7 @@
 /* The CSV reader (load/csvread.h): quoted commas, quoted line breaks and doubled quotes; the ' before a
  * formula-like text undone only when asked; comment and blank lines skipped only when asked; a cell
  * limit as a problem or as the rest of the row; a line too long; each cell's line and column, and a
- * problem's. */
+ * problem's; a quote only around a cell. */
 #define _POSIX_C_SOURCE 200809L
 #include <setjmp.h>
 #include <stdarg.h>
@@ -128,6 +128,22 @@ static void too_many_cells(void **state) {
     cs_csv_close(&r);
 }
 
+/* A quote opens a cell only as its first character: further in (1"2, a space before it) it is the cell's
+ * own; after a closing quote only a comma or the line's end (its CR LF's CR too) may come, else a problem
+ * at that character ("12"5 is not read as 125). */
+static void quote_only_around_a_cell(void **state) {
+    (void)state;
+    cs_csv r;
+    cs_csv_open_text(&r, "1\"2, \"3\",\"4\"\r\n\"12\"5,6\n", CS_CSV_QUOTED, 4);
+    expect_row(&r, (const char *[]){"1\"2", " \"3\"", "4", NULL}, (long[]){1, 1, 1}, (int[]){1, 5, 10});
+    assert_int_equal(cs_csv_next(&r), -1);
+    assert_string_equal(r.why, "'5' after a quoted cell's closing quote (expected a comma or the end of the "
+                               "line; a quote inside a quoted cell is doubled: \"\")");
+    assert_int_equal(r.why_line, 2);
+    assert_int_equal(r.why_col, 5);
+    cs_csv_close(&r);
+}
+
 /* A quote not closed by the end is a problem where it opens; a file read as its text is. */
 static void unclosed_quote_in_a_file(void **state) {
     (void)state;
@@ -147,9 +163,12 @@ static void unclosed_quote_in_a_file(void **state) {
 }
 
 int main(void) {
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(quoted_cells),        cmocka_unit_test(untext),
-        cmocka_unit_test(comments_and_blanks), cmocka_unit_test(line_too_long),
-        cmocka_unit_test(too_many_cells),      cmocka_unit_test(unclosed_quote_in_a_file)};
+    const struct CMUnitTest tests[] = {cmocka_unit_test(quoted_cells),
+                                       cmocka_unit_test(untext),
+                                       cmocka_unit_test(comments_and_blanks),
+                                       cmocka_unit_test(line_too_long),
+                                       cmocka_unit_test(too_many_cells),
+                                       cmocka_unit_test(unclosed_quote_in_a_file),
+                                       cmocka_unit_test(quote_only_around_a_cell)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

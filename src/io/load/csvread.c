@@ -112,22 +112,29 @@ int cs_csv_next(cs_csv *r) {
     r->line = r->lines;
     if (begin_cell(r, 0, 1) != 0) return -1;
     long open_line = 0;
-    int open_col = 0, quoted = 0;
+    int open_col = 0, quoted = 0, closed = 0; /* closed: just past a quoted cell's closing quote */
     for (;;) {
         const char *p = r->phys;
         for (size_t i = 0; i < len; i++) {
+            int line_end = p[i] == '\r' && i + 1 == len; /* a line's last \r is its CR LF's */
+            if (closed && p[i] != ',' && !line_end)
+                return problem(r, r->lines, (int)i + 1,
+                               "'%c' after a quoted cell's closing quote (expected a comma or the end of "
+                               "the line; a quote inside a quoted cell is doubled: \"\")",
+                               p[i]);
+            closed = 0;
             if (quoted && p[i] == '"') {
                 if (i + 1 < len && p[i + 1] == '"') {
                     if (put(r, &n, p[i++]) != 0) return -1; /* a doubled quote: one quote */
                 } else
-                    quoted = 0;
-            } else if (!quoted && p[i] == '"' && (r->flags & CS_CSV_QUOTED)) {
-                quoted = 1, open_line = r->lines, open_col = (int)i + 1;
+                    quoted = 0, closed = 1;
+            } else if (!quoted && p[i] == '"' && (r->flags & CS_CSV_QUOTED) && n == r->off[r->count - 1]) {
+                quoted = 1, open_line = r->lines, open_col = (int)i + 1; /* only a cell's first character */
             } else if (!quoted && p[i] == ',' && !(r->count == r->max_cells && (r->flags & CS_CSV_REST))) {
                 if (r->count == r->max_cells)
                     return problem(r, r->lines, (int)i + 2, "more than %d values", r->max_cells);
                 if (put(r, &n, '\0') != 0 || begin_cell(r, n, (int)i + 2) != 0) return -1;
-            } else if (quoted || p[i] != '\r' || i + 1 < len) { /* a line's last \r is its CR LF's */
+            } else if (quoted || !line_end) {
                 if (put(r, &n, p[i]) != 0) return -1;
             }
         }

@@ -1,9 +1,12 @@
 /* SPDX-License-Identifier: MIT */
 /* A CSV reader, a row at a time, over a file or a NUL-terminated text: cells cut at commas, quoted cells
- * (RFC 4180: commas, doubled quotes and line breaks inside quotes) where the caller asks, the ' a writer
- * puts before a text that looks like a formula undone where it asks, '#' comment lines and blank lines
- * skipped where it asks. Each cell keeps the line and column it starts at, so that a caller's message
- * can be "file:line:column: what and why"; a row that cannot be read gives its own, the same way. */
+ * (RFC 4180: a quote as a cell's first character opens it, a quote not doubled closes it, and commas,
+ * doubled quotes and line breaks inside quotes are the cell's; a quote further into a cell is a character
+ * like any other, and anything but a comma or the line's end after a closing quote is a problem) where
+ * the caller asks, the ' a writer puts before a text that looks like a formula undone where it asks, '#'
+ * comment lines and blank lines skipped where it asks. Each cell keeps the line and column it starts at,
+ * so that a caller's message can be "file:line:column: what and why"; a row that cannot be read gives its
+ * own, the same way. */
 #ifndef CS_CSVREAD_H
 #define CS_CSVREAD_H
 
