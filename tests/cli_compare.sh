@@ -35,6 +35,17 @@ check "a breakthrough: penetration beyond is summary.json's (1e-9), with no diff
 check "the measured penetration is its own largest: run a's penetration beyond (0.1%)" \
     'awk -v a="$(value "penetration beyond" 3)" -v m="$(value "max dynamic penetration" 5)" "BEGIN { exit !(a > 1 && (a - m) / a < 1e-3 && (m - a) / a < 1e-3) }"'
 
+# the measured history with every cell quoted, as spreadsheets write CSV (RFC 4180): read as the same file
+# unquoted, its parameters the same to the last digit written
+sed 's/[^,]*/"&"/g' "$tmp/measured.csv" >"$tmp/quoted.csv"
+out=$("$cs" compare "$tmp/a" --measured "$tmp/quoted.csv" -o "$tmp/cmpq" 2>&1)
+check "a measured history of quoted cells (exit 0)" '[ $? -eq 0 ] || { echo "$out"; false; }'
+quoted() { awk -F, -v p="$1" '$1 == p { print $4 }' "$tmp/cmpq/compare.csv"; }
+for p in "max 50-ms deceleration" "max dynamic penetration" "speed at the end"; do
+    check "quoted cells: the measured $p is the unquoted one's" \
+        '[ -n "$(value "$p" 5)" ] && [ "$(quoted "$p")" = "$(value "$p" 5)" ]'
+done
+
 # a run's own timeseries.csv as the measured history: read as that run's (its own 50-ms average), so its
 # parameters are run a's: the 50-ms deceleration to 1e-6, the largest penetration to 0.1%
 out=$("$cs" compare "$tmp/b" --measured "$tmp/a/timeseries.csv" -o "$tmp/own" 2>&1)
@@ -73,6 +84,9 @@ check "a unit of no compared quantity exits 2 at line 1, column 10" \
 printf 'time [s],speed [mph]\n0,40\n0.002,x\n' >"$tmp/badcell.csv"
 out=$("$cs" compare "$tmp/a" --measured "$tmp/badcell.csv" -o "$tmp/bad2" 2>&1)
 check "a cell that is not a number exits 2 at its place" '[ $? -eq 2 ] && grep -q "badcell.csv:3:7: .x. is not a number" <<<"$out"'
+printf 'time [s],speed [mph]\n0,40\n0.002,"4O"\n' >"$tmp/quotedtext.csv"
+out=$("$cs" compare "$tmp/a" --measured "$tmp/quotedtext.csv" -o "$tmp/bad-quoted" 2>&1)
+check "a quoted cell that is not a number exits 2 at its place" '[ $? -eq 2 ] && grep -q "quotedtext.csv:3:7: .4O. is not a number" <<<"$out" && [ ! -e "$tmp/bad-quoted" ]'
 printf 'time [s],speed [mph]\n0,1e300\n0.1,1e300\n0.2,0\n' >"$tmp/huge.csv"
 out=$("$cs" compare "$tmp/a" --measured "$tmp/huge.csv" -o "$tmp/bad-huge" 2>&1)
 check "a value beyond any crash history (its metrics would be inf) exits 2 at its place" '[ $? -eq 2 ] && grep -q "huge.csv:2:3: .1e300. is too large" <<<"$out" && [ ! -e "$tmp/bad-huge" ]'

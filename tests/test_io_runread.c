@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Results read back for comparison (load/runread.h): the 50-ms average of a deceleration history against
- * its closed forms (a constant, a ramp, on an uneven time grid), a measured file's units, read in SI, and a
- * run's 50-ms average undefined before its first window. */
+ * its closed forms (a constant, a ramp, on an uneven time grid), a measured file's units, read in SI, its
+ * quoted cells, and a run's 50-ms average undefined before its first window. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <setjmp.h>
@@ -38,6 +38,16 @@ static void average_50ms_closed_forms(void **state) {
             fail_msg("ramp: t = %g s: %.12g, want %.12g", t[i], avg[i], 200.0 * (t[i] - 0.025));
 }
 
+/* text into a new temporary file, its name into path (of "/tmp/cablesim-runread-XXXXXX"). */
+static void write_temp(char *path, const char *text) {
+    int fd = mkstemp(path);
+    assert_true(fd >= 0);
+    FILE *f = fdopen(fd, "w");
+    assert_non_null(f);
+    fputs(text, f);
+    fclose(f);
+}
+
 /* A measured file in ms, mph and ft: read in s, m/s and m; its 50-ms deceleration from its speed, a speed
  * falling at 0.5 g giving 0.5 g after the first 50 ms. */
 static void measured_units_and_average(void **state) {
@@ -71,13 +81,8 @@ static void measured_units_and_average(void **state) {
 /* A blank line is skipped; a row of another width than the header is refused at its own line. */
 static void measured_row_of_another_width(void **state) {
     (void)state;
-    char path[] = "/tmp/cablesim-runread-XXXXXX";
-    int fd = mkstemp(path);
-    assert_true(fd >= 0);
-    FILE *f = fdopen(fd, "w");
-    fputs("time [s],speed [m/s]\n0,20\n\n0.001,19.9\n0.002,19.8,7\n", f);
-    fclose(f);
-    char want[600];
+    char path[] = "/tmp/cablesim-runread-XXXXXX", want[600];
+    write_temp(path, "time [s],speed [m/s]\n0,20\n\n0.001,19.9\n0.002,19.8,7\n");
     cs_error err;
     cs_units *u = cs_units_open(&err);
     assert_non_null(u);
@@ -87,6 +92,42 @@ static void measured_row_of_another_width(void **state) {
     assert_string_equal(err.message, want);
     cs_units_free(u);
     remove(path);
+}
+
+/* Cells quoted as a spreadsheet writes them (RFC 4180), header and numbers, read to the same trace as the
+ * same file unquoted; a quoted cell that is not a number ("12,5", a decimal comma) refused at its place. */
+static void measured_quoted_cells(void **state) {
+    (void)state;
+    char plain[] = "/tmp/cablesim-runread-XXXXXX", quoted[] = "/tmp/cablesim-runread-XXXXXX",
+         comma[] = "/tmp/cablesim-runread-XXXXXX", want[600];
+    write_temp(plain, "time [ms],speed [mph],deceleration [g]\n0,40,0\n10,39.5,1.25\n20,38.75,2.5\n");
+    write_temp(quoted, "\"time [ms]\",\"speed [mph]\",\"deceleration [g]\"\r\n\"0\",\"40\",\"0\"\r\n"
+                       "\"10\",\"39.5\",\"1.25\"\r\n\"20\",\"38.75\",\"2.5\"\r\n");
+    write_temp(comma, "time [ms],speed [mph]\n0,40\n10,\"12,5\"\n");
+    cs_error err;
+    cs_units *u = cs_units_open(&err);
+    assert_non_null(u);
+    cs_trace a, b;
+    if (cs_trace_load_measured(plain, u, &a, &err) != CS_OK) fail_msg("%s", err.message);
+    if (cs_trace_load_measured(quoted, u, &b, &err) != CS_OK) fail_msg("%s", err.message);
+    assert_int_equal(b.n, 3);
+    assert_true(fabs(b.t[2] - 0.020) < 1e-15 && fabs(b.y[CS_TRACE_SPEED][1] - 39.5 * 0.44704) < 1e-12);
+    assert_true(fabs(b.y[CS_TRACE_DECEL][2] - 2.5 * 9.80665) < 1e-12);
+    for (size_t i = 0; i < a.n; i++) {
+        assert_true(a.t[i] == b.t[i]);
+        for (int k = 0; k < CS_TRACE_COUNT; k++)
+            assert_true(a.have[k] == b.have[k] &&
+                        (a.y[k][i] == b.y[k][i] || (isnan(a.y[k][i]) && isnan(b.y[k][i]))));
+    }
+    cs_trace_free(&a), cs_trace_free(&b);
+    assert_int_equal(cs_trace_load_measured(comma, u, &a, &err), CS_ERR_INVALID);
+    snprintf(
+        want, sizeof want,
+        "%s:3:4: '12,5' is not a number (expected a finite number, or an empty cell where there is none)",
+        comma);
+    assert_string_equal(err.message, want);
+    cs_units_free(u);
+    remove(plain), remove(quoted), remove(comma);
 }
 
 /* A run's folder: its timeseries.csv's decel_50ms column is 0 for the first 50 ms, where the average is
@@ -127,9 +168,9 @@ static void run_average_undefined_before_a_window(void **state) {
 }
 
 int main(void) {
-    const struct CMUnitTest tests[] = {cmocka_unit_test(average_50ms_closed_forms),
-                                       cmocka_unit_test(measured_units_and_average),
-                                       cmocka_unit_test(measured_row_of_another_width),
-                                       cmocka_unit_test(run_average_undefined_before_a_window)};
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(average_50ms_closed_forms), cmocka_unit_test(measured_units_and_average),
+        cmocka_unit_test(measured_row_of_another_width), cmocka_unit_test(measured_quoted_cells),
+        cmocka_unit_test(run_average_undefined_before_a_window)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

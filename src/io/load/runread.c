@@ -228,6 +228,10 @@ static cs_status read_summary(const char *dir, cs_trace *tr, cs_error *err) {
 
 enum { MAX_COLS = 4096 }; /* of a run's timeseries.csv */
 
+/* How a history's CSV is cut, a run's and a measured one alike: cells quoted as spreadsheets write them
+ * ("12.5", RFC 4180), and past the most cells read, the rest of the row in the last. */
+enum { HISTORY_CSV = CS_CSV_REST | CS_CSV_QUOTED };
+
 /* The columns of a run's timeseries.csv that a trace is made of. */
 typedef struct run_columns {
     int t, vx, vy, ax, ay, speed, decel_50ms, penetration;
@@ -247,7 +251,7 @@ static int run_header(char *const *head, int nh, run_columns *c) {
 /* Whether text's first line is the header of a run's timeseries.csv: 1, 0, or -1 out of memory. */
 static int is_run_series(const char *text) {
     cs_csv rows;
-    cs_csv_open_text(&rows, text, CS_CSV_REST, MAX_COLS);
+    cs_csv_open_text(&rows, text, HISTORY_CSV, MAX_COLS);
     run_columns c;
     int is = cs_csv_next(&rows) < 0 ? -1 : run_header(rows.cell, rows.count, &c);
     cs_csv_close(&rows);
@@ -280,7 +284,7 @@ static cs_status read_run_series(const char *path, cs_trace *tr, cs_error *err) 
     cs_status rc = read_all(path, &f, &rows, err);
     if (rc != CS_OK) return rc;
     cs_csv csv;
-    cs_csv_open_text(&csv, f.text, CS_CSV_REST, MAX_COLS);
+    cs_csv_open_text(&csv, f.text, HISTORY_CSV, MAX_COLS);
     int *tension = NULL, nh = 0, more;
     if (alloc_trace(tr, rows) != 0 || cs_csv_next(&csv) < 0 ||
         !(tension = calloc(MAX_COLS, sizeof *tension))) {
@@ -380,7 +384,7 @@ cs_status cs_trace_load_measured(const char *path, cs_units *units, cs_trace *tr
                           : read_run_series(path, tr, err);
     }
     cs_csv csv;
-    cs_csv_open_text(&csv, f.text, CS_CSV_REST, MEASURED_COLS);
+    cs_csv_open_text(&csv, f.text, HISTORY_CSV, MEASURED_COLS);
     if (alloc_trace(tr, rows + 1) != 0 || cs_csv_next(&csv) < 0) {
         rc = cs_error_set(err, CS_ERR_MEMORY, "%s: out of memory", path);
         goto done;

@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Results read back for comparison: a run's folder (timeseries.csv and summary.json, as `cablesim run`
  * writes them) or a measured time history (a CSV file whose header gives each column's quantity by its
- * unit). Each becomes a trace of the responses compared, in SI, with the response parameters found from
- * it the way a run finds its own. */
+ * unit), both with cells quoted or not (RFC 4180). Each becomes a trace of the responses compared, in SI,
+ * with the response parameters found from it the way a run finds its own. */
 #ifndef CS_RUNREAD_H
 #define CS_RUNREAD_H
 

@@ -719,8 +719,9 @@ int cs_schema_markdown(FILE *out) {
           "and `value_unit`, compare.csv's `unit`). Cables, posts and anchors are numbered from 0, as the "
           "paths of `--set` count them (`cable1` is `barrier.cables[1]`), in every output; anchor 0 is "
           "`barrier.anchors.start` (the low-x end), anchor 1 `barrier.anchors.end`. `cablesim compare "
-          "--measured FILE` reads a file of this convention (or "
-          "`name (unit)`), a run's own timeseries.csv too.\n",
+          "--measured FILE` reads a file of this convention (or `name (unit)`), a run's own timeseries.csv "
+          "too, its cells quoted or not (RFC 4180, as spreadsheets write CSV: `\"12.5\"` is 12.5, `\"\"` "
+          "inside quotes a quote; a quote only around a whole cell).\n",
           out);
     return ferror(out) ? -1 : 0;
 }
