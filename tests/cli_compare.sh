@@ -76,11 +76,18 @@ check "run a against its speed / 1.1: Sprague-Geers M = 0.1, P = 0" \
     'awk -v M="$(metric "$tmp/cmp11/metrics.csv" speed 4)" -v P="$(metric "$tmp/cmp11/metrics.csv" speed 5)" "BEGIN { exit !(M != \"\" && M - 0.1 < 1e-6 && 0.1 - M < 1e-6 && P < 1e-3) }"'
 
 # bad input
-printf 'time [s],speed [kg]\n0,1\n0.001,1\n' >"$tmp/badunit.csv"
+# a column is compared as what its name says, its unit checked against it: a length named foo is not read
+# as the penetration, nor a speed given in metres
+printf 'time [s],speed [mph],foo [m]\n0,40,1\n0.001,40,1\n' >"$tmp/noname.csv"
+out=$("$cs" compare "$tmp/a" --measured "$tmp/noname.csv" -o "$tmp/bad0" 2>&1)
+rc=$?
+check "a column whose name names no quantity exits 2 at line 1, column 22" \
+    '[ $rc -eq 2 ] && grep -qF "noname.csv:1:22: '"'"'foo [m]'"'"' names no quantity compared (expected a name holding decel, accel, speed, velocity, penetration or tension" <<<"$out" && [ ! -e "$tmp/bad0" ]'
+printf 'time [s],speed [m]\n0,1\n0.001,1\n' >"$tmp/badunit.csv"
 out=$("$cs" compare "$tmp/a" --measured "$tmp/badunit.csv" -o "$tmp/bad1" 2>&1)
 rc=$?
-check "a unit of no compared quantity exits 2 at line 1, column 10" \
-    '[ $rc -eq 2 ] && grep -q "badunit.csv:1:10: .kg. is not a unit of acceleration, speed, length or force" <<<"$out" && [ ! -e "$tmp/bad1" ]'
+check "a unit that does not fit the name exits 2 at line 1, column 10" \
+    '[ $rc -eq 2 ] && grep -qF "badunit.csv:1:10: '"'"'speed [m]'"'"' names a speed: '"'"'m'"'"' is a unit of length, not of speed (expected mph, km/h or m/s)" <<<"$out" && [ ! -e "$tmp/bad1" ]'
 printf 'time [s],speed [mph]\n0,40\n0.002,x\n' >"$tmp/badcell.csv"
 out=$("$cs" compare "$tmp/a" --measured "$tmp/badcell.csv" -o "$tmp/bad2" 2>&1)
 check "a cell that is not a number exits 2 at its place" '[ $? -eq 2 ] && grep -q "badcell.csv:3:7: .x. is not a number" <<<"$out"'

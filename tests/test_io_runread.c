@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Results read back for comparison (load/runread.h): the 50-ms average of a deceleration history against
  * its closed forms (a constant, a ramp, on an uneven time grid), a measured file's units, read in SI, its
- * quoted cells, and a run's 50-ms average undefined before its first window. */
+ * quoted cells, its columns' quantities known by their names and refused where the name or the unit does
+ * not fit, and a run's 50-ms average undefined before its first window. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <setjmp.h>
@@ -9,6 +10,7 @@
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <unistd.h>
 
 #include <cmocka.h>
@@ -130,6 +132,81 @@ static void measured_quoted_cells(void **state) {
     remove(plain), remove(quoted), remove(comma);
 }
 
+/* A column's name says its quantity (case and punctuation aside), its unit is checked against it: an
+ * acceleration along the travel read as a deceleration with its sign turned, a speed, a penetration and a
+ * rope tension each from a name a user writes. */
+static void measured_names(void **state) {
+    (void)state;
+    char accel[] = "/tmp/cablesim-runread-XXXXXX", rest[] = "/tmp/cablesim-runread-XXXXXX";
+    write_temp(accel, "Time [ms],Longitudinal Acceleration [g]\n0,0\n10,-0.5\n20,-1.5\n");
+    write_temp(
+        rest,
+        "t (s),Vehicle_Speed (km/h),Rope tension [kN],dynamic PENETRATION [ft]\n0,72,0,0\n1,36,50,10\n");
+    cs_error err;
+    cs_units *u = cs_units_open(&err);
+    assert_non_null(u);
+    cs_trace tr;
+    if (cs_trace_load_measured(accel, u, &tr, &err) != CS_OK) fail_msg("%s", err.message);
+    assert_true(tr.have[CS_TRACE_DECEL] && !tr.have[CS_TRACE_SPEED] && !tr.have[CS_TRACE_PENETRATION]);
+    assert_true(tr.y[CS_TRACE_DECEL][0] == 0.0 && fabs(tr.y[CS_TRACE_DECEL][1] - 0.5 * 9.80665) < 1e-12 &&
+                fabs(tr.y[CS_TRACE_DECEL][2] - 1.5 * 9.80665) < 1e-12);
+    cs_trace_free(&tr);
+    if (cs_trace_load_measured(rest, u, &tr, &err) != CS_OK) fail_msg("%s", err.message);
+    assert_true(fabs(tr.y[CS_TRACE_SPEED][1] - 10.0) < 1e-12 && fabs(tr.final_speed - 10.0) < 1e-12);
+    assert_true(fabs(tr.max_tension - 50e3) < 1e-6 && fabs(tr.max_penetration - 3.048) < 1e-12);
+    assert_true(!tr.have[CS_TRACE_DECEL]);
+    cs_trace_free(&tr);
+    cs_units_free(u);
+    remove(accel), remove(rest);
+}
+
+/* A column whose name names no quantity compared is refused at its place, whatever its unit, as are a
+ * unit that does not fit the name, a name of two quantities, one across the travel or averaged, and a
+ * second column of one quantity (an acceleration beside a deceleration). */
+static void measured_names_refused(void **state) {
+    (void)state;
+    static const char *const cases[][2] = {
+        {"time [s],foo [m]",
+         ":1:10: 'foo [m]' names no quantity compared (expected a name holding decel, accel, "
+         "speed, velocity, penetration or tension, e.g. \"speed [mph]\")"},
+        {"time [s],speed [mph],post displacement [m]",
+         ":1:22: 'post displacement [m]' names no quantity compared"},
+        {"time [s],x [g]", ":1:10: 'x [g]' names no quantity compared"},
+        {"time [s],dynamic deflection [m]", ":1:10: 'dynamic deflection [m]' names no quantity compared"},
+        {"time [s],speed [m]", ":1:10: 'speed [m]' names a speed: 'm' is a unit of length, not of speed "
+                               "(expected mph, km/h or m/s)"},
+        {"time [s],\"tension (g)\"", ":1:10: 'tension (g)' names a rope tension: 'g' is a unit of mass, not "
+                                     "of force (expected kip or kN)"},
+        {"time [s],speed and tension [kN]", ":1:10: 'speed and tension [kN]' names both a speed and a rope "
+                                            "tension (expected one quantity a column)"},
+        {"time [s],lateral acceleration [g]",
+         ":1:10: 'lateral acceleration [g]' names an acceleration across the "
+         "travel (expected the vehicle's along its travel, not averaged)"},
+        {"time [s],decel_50ms [g]", ":1:10: 'decel_50ms [g]' names a deceleration averaged over time"},
+        {"time [s],deceleration [g],acceleration [g]", ":1:27: 'acceleration [g]' is a second column of the "
+                                                       "quantity of 'deceleration [g]' (the header's column "
+                                                       "2, at 1:10) (expected one column of each)"},
+    };
+    cs_error err;
+    cs_units *u = cs_units_open(&err);
+    assert_non_null(u);
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        char path[] = "/tmp/cablesim-runread-XXXXXX", text[200], want[600];
+        int cols = 1;
+        for (const char *c = cases[k][0]; *c; c++)
+            cols += *c == ',';
+        snprintf(text, sizeof text, "%s\n0%s\n1%s\n", cases[k][0], cols > 2 ? ",1,1" : ",1",
+                 cols > 2 ? ",1,1" : ",1");
+        write_temp(path, text);
+        cs_trace tr;
+        assert_int_equal(cs_trace_load_measured(path, u, &tr, &err), CS_ERR_INVALID);
+        snprintf(want, sizeof want, "%s%s", path, cases[k][1]);
+        if (strncmp(err.message, want, strlen(want)) != 0) fail_msg("%s\nwant %s", err.message, want);
+        remove(path);
+    }
+    cs_units_free(u);
+}
+
 /* A run's folder: its timeseries.csv's decel_50ms column is 0 for the first 50 ms, where the average is
  * undefined; read so it is NaN there and the column's own value from t = 50 ms. */
 static void run_average_undefined_before_a_window(void **state) {
@@ -168,9 +245,12 @@ static void run_average_undefined_before_a_window(void **state) {
 }
 
 int main(void) {
-    const struct CMUnitTest tests[] = {
-        cmocka_unit_test(average_50ms_closed_forms), cmocka_unit_test(measured_units_and_average),
-        cmocka_unit_test(measured_row_of_another_width), cmocka_unit_test(measured_quoted_cells),
-        cmocka_unit_test(run_average_undefined_before_a_window)};
+    const struct CMUnitTest tests[] = {cmocka_unit_test(average_50ms_closed_forms),
+                                       cmocka_unit_test(measured_units_and_average),
+                                       cmocka_unit_test(measured_row_of_another_width),
+                                       cmocka_unit_test(measured_quoted_cells),
+                                       cmocka_unit_test(measured_names),
+                                       cmocka_unit_test(measured_names_refused),
+                                       cmocka_unit_test(run_average_undefined_before_a_window)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -6,6 +6,7 @@
 #include "load/csvread.h"
 #include "status.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <json-c/json.h>
 #include <math.h>
@@ -367,6 +368,72 @@ static int header_unit(const char *cell, char *unit, size_t size) {
     return (int)(open - cell);
 }
 
+/* The quantities a measured column is read as, each known by a word its name holds (case aside, its
+ * letters and digits alone: "Vehicle_Speed" holds "speed"), its unit then checked against it. An
+ * acceleration is the vehicle's along its travel, negative as it slows: read as a deceleration with its
+ * sign turned, as a run's ax and ay along its initial heading become its deceleration. A deflection is not
+ * a penetration: cablesim's is the barrier's (max_barrier_deflection_m), not the vehicle's. */
+static const struct measured_name {
+    const char *word;  /* held by the name */
+    const char *what;  /* "a speed" */
+    int trace;         /* CS_TRACE_... */
+    double sign;       /* the trace is sign times the column */
+    cs_quantity q;     /* of the unit */
+    const char *units; /* "mph, km/h or m/s" */
+} measured_names[] = {
+    {"decel", "a deceleration", CS_TRACE_DECEL, 1.0, CS_Q_ACCELERATION, "g or m/s^2"},
+    {"accel", "an acceleration", CS_TRACE_DECEL, -1.0, CS_Q_ACCELERATION, "g or m/s^2"},
+    {"speed", "a speed", CS_TRACE_SPEED, 1.0, CS_Q_SPEED, "mph, km/h or m/s"},
+    {"velocity", "a speed", CS_TRACE_SPEED, 1.0, CS_Q_SPEED, "mph, km/h or m/s"},
+    {"penetration", "a penetration", CS_TRACE_PENETRATION, 1.0, CS_Q_LENGTH, "ft or m"},
+    {"tension", "a rope tension", CS_TRACE_TENSION, 1.0, CS_Q_FORCE, "kip or kN"},
+};
+
+/* Words that make a name that holds one of those another quantity than compare's: its traces are along the
+ * vehicle's travel and not averaged (it averages over 50 ms itself). */
+static const char *const measured_other[][2] = {
+    {"lateral", "across the travel"},  {"vertical", "across the travel"}, {"50ms", "averaged over time"},
+    {"average", "averaged over time"}, {"avg", "averaged over time"},
+};
+
+/* The quantity named by cell's first len characters, as measured_names; NULL with err filled (at col, in
+ * path) where it names none, two, or one across the travel or averaged. */
+static const struct measured_name *measured_name(const char *path, int col, const char *cell, int len,
+                                                 cs_error *err) {
+    char key[160];
+    size_t n = 0;
+    for (int i = 0; i < len && n + 1 < sizeof key; i++)
+        if (isalnum((unsigned char)cell[i])) key[n++] = (char)tolower((unsigned char)cell[i]);
+    key[n] = '\0';
+    const struct measured_name *found = NULL;
+    for (size_t k = 0; k < sizeof measured_names / sizeof measured_names[0]; k++) {
+        const struct measured_name *m = &measured_names[k];
+        if (!strstr(key, m->word)) continue;
+        if (found && (found->trace != m->trace || found->sign != m->sign)) {
+            cs_error_set(err, CS_ERR_INVALID,
+                         "%s:1:%d: '%s' names both %s and %s (expected one quantity a column)", path, col,
+                         cell, found->what, m->what);
+            return NULL;
+        }
+        found = m;
+    }
+    if (!found) {
+        cs_error_set(err, CS_ERR_INVALID,
+                     "%s:1:%d: '%s' names no quantity compared (expected a name holding decel, accel, speed, "
+                     "velocity, penetration or tension, e.g. \"speed [mph]\")",
+                     path, col, cell);
+        return NULL;
+    }
+    for (size_t k = 0; k < sizeof measured_other / sizeof measured_other[0]; k++)
+        if (strstr(key, measured_other[k][0])) {
+            cs_error_set(err, CS_ERR_INVALID,
+                         "%s:1:%d: '%s' names %s %s (expected the vehicle's along its travel, not averaged)",
+                         path, col, cell, found->what, measured_other[k][1]);
+            return NULL;
+        }
+    return found;
+}
+
 cs_status cs_trace_load_measured(const char *path, cs_units *units, cs_trace *tr, cs_error *err) {
     clear(tr, path, 1);
     csv_file f;
@@ -398,11 +465,10 @@ cs_status cs_trace_load_measured(const char *path, cs_units *units, cs_trace *tr
                           path);
         goto done;
     }
-    static const cs_quantity kinds[] = {CS_Q_ACCELERATION, CS_Q_SPEED, CS_Q_LENGTH, CS_Q_FORCE};
-    static const int traces[] = {CS_TRACE_DECEL, CS_TRACE_SPEED, CS_TRACE_PENETRATION, CS_TRACE_TENSION};
     for (int j = 0; j < nh; j++) {
         cs_error unit_err;
-        if (header_unit(head[j], unit, sizeof unit) < 0) {
+        int name_len = header_unit(head[j], unit, sizeof unit);
+        if (name_len < 0) {
             rc = cs_error_set(err, CS_ERR_INVALID,
                               "%s:1:%d: '%s' has no unit (expected \"name [unit]\" or \"name (unit)\")", path,
                               hcol[j], head[j]);
@@ -418,16 +484,17 @@ cs_status cs_trace_load_measured(const char *path, cs_units *units, cs_trace *tr
             }
             continue;
         }
-        for (size_t k = 0; k < sizeof kinds / sizeof kinds[0] && target[j] < 0; k++)
-            if (cs_units_read(units, text, kinds[k], &factor[j], &unit_err) == CS_OK) target[j] = traces[k];
-        if (target[j] < 0) {
-            rc = cs_error_set(
-                err, CS_ERR_INVALID,
-                "%s:1:%d: '%s' is not a unit of acceleration, speed, length or force (expected a "
-                "deceleration, speed, penetration or rope tension)",
-                path, hcol[j], unit);
+        const struct measured_name *m = measured_name(path, hcol[j], head[j], name_len, err);
+        if (!m) {
+            rc = CS_ERR_INVALID;
             goto done;
         }
+        if (cs_units_read(units, text, m->q, &factor[j], &unit_err) != CS_OK) {
+            rc = cs_error_set(err, CS_ERR_INVALID, "%s:1:%d: '%s' names %s: %s (expected %s)", path, hcol[j],
+                              head[j], m->what, unit_err.message, m->units);
+            goto done;
+        }
+        target[j] = m->trace, factor[j] *= m->sign;
         for (int i = 1; i < j; i++)
             if (target[i] == target[j]) {
                 rc = cs_error_set(err, CS_ERR_INVALID,

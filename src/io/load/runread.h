@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Results read back for comparison: a run's folder (timeseries.csv and summary.json, as `cablesim run`
  * writes them) or a measured time history (a CSV file whose header gives each column's quantity by its
- * unit), both with cells quoted or not (RFC 4180). Each becomes a trace of the responses compared, in SI,
- * with the response parameters found from it the way a run finds its own. */
+ * name and its unit), both with cells quoted or not (RFC 4180). Each becomes a trace of the responses
+ * compared, in SI, with the response parameters found from it the way a run finds its own. */
 #ifndef CS_RUNREAD_H
 #define CS_RUNREAD_H
 
@@ -42,9 +42,11 @@ typedef struct cs_trace {
  * CS_ERR_IO (a file that cannot be read), CS_ERR_INVALID (not a run's) or CS_ERR_MEMORY. */
 cs_status cs_trace_load_run(const char *dir, cs_trace *out, cs_error *err);
 /* Read a measured history: a CSV file, its first line the header, each cell "name [unit]" or "name
- * (unit)", the first column the time; every other column is a deceleration (an acceleration unit, g
- * allowed), a speed, a penetration (a length) or a rope tension (a force), known by its unit. CS_OK, or
- * with err filled as "file:line:column: what and why" CS_ERR_INVALID, or CS_ERR_IO or CS_ERR_MEMORY as
+ * (unit)", the first column the time; every other column is known by its name (case and punctuation
+ * aside) and its unit checked against it: decel (a deceleration), accel (an acceleration along the
+ * travel, read as a deceleration with its sign turned), speed or velocity, penetration, tension (the rope
+ * tension); a name of none, two, or one across the travel or averaged is refused. CS_OK, or with err
+ * filled as "file:line:column: what and why" CS_ERR_INVALID, or CS_ERR_IO or CS_ERR_MEMORY as
  * cs_trace_load_run. */
 cs_status cs_trace_load_measured(const char *path, cs_units *units, cs_trace *out, cs_error *err);
 void cs_trace_free(cs_trace *trace);

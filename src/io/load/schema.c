@@ -721,7 +721,16 @@ int cs_schema_markdown(FILE *out) {
           "`barrier.anchors.start` (the low-x end), anchor 1 `barrier.anchors.end`. `cablesim compare "
           "--measured FILE` reads a file of this convention (or `name (unit)`), a run's own timeseries.csv "
           "too, its cells quoted or not (RFC 4180, as spreadsheets write CSV: `\"12.5\"` is 12.5, `\"\"` "
-          "inside quotes a quote; a quote only around a whole cell).\n",
+          "inside quotes a quote; a quote only around a whole cell). Its first column is the time; every "
+          "other is known by its name, case and punctuation aside, and its unit must be one of that "
+          "quantity: a name holding `decel` a deceleration (g, m/s^2), `accel` an acceleration along the "
+          "travel, negative as the vehicle slows, read as the deceleration with its sign turned (as a run's "
+          "`ax` and `ay` along its first heading make its deceleration), `speed` or `velocity` the speed "
+          "(mph, km/h, m/s), `penetration` the vehicle's penetration (ft, m), `tension` the rope tension "
+          "(kip, kN). A column whose name holds none of them (`post displacement [m]`; a deflection is the "
+          "barrier's, not the vehicle's penetration), two of them, or one across the travel or averaged "
+          "(`lateral`, `vertical`, `50ms`, `average`, `avg`), one whose unit does not fit its name (`speed "
+          "[m]`), and a second column of one quantity are refused at their line and column.\n",
           out);
     return ferror(out) ? -1 : 0;
 }
