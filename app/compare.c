@@ -23,7 +23,7 @@ static const char usage[] =
     "deceleration raw and over 50 ms, the speed, the penetration and the largest rope tension against\n"
     "time). The reference is the measured history, else the first run. Default DIR: results/compare.\n"
     "The measured file is a CSV file (cells quoted or not) whose header names each column with its unit,\n"
-    "\"name [unit]\" or \"name (unit)\": the time first, then columns known by a word their names hold,\n"
+    "\"name [unit]\" or \"name (unit)\": the time first, then columns known by a word of their names,\n"
     "case aside: decel, a deceleration (g, m/s^2); accel, an acceleration along the travel (read as the\n"
     "deceleration with its sign turned); speed or velocity (mph, km/h, m/s); penetration (ft, m);\n"
     "tension, the rope tension (kip, kN). Any other name, or a unit that does not fit the name, is refused\n"

@@ -132,7 +132,8 @@ static void measured_quoted_cells(void **state) {
     remove(plain), remove(quoted), remove(comma);
 }
 
-/* A column's name says its quantity (case and punctuation aside), its unit is checked against it: an
+/* A column's name says its quantity by a word (case and punctuation aside, a capital after a lower-case
+ * letter starting a word), its unit is checked against it: an
  * acceleration along the travel read as a deceleration with its sign turned, a speed, a penetration and a
  * rope tension each from a name a user writes. */
 static void measured_names(void **state) {
@@ -140,8 +141,7 @@ static void measured_names(void **state) {
     char accel[] = "/tmp/cablesim-runread-XXXXXX", rest[] = "/tmp/cablesim-runread-XXXXXX";
     write_temp(accel, "Time [ms],Longitudinal Acceleration [g]\n0,0\n10,-0.5\n20,-1.5\n");
     write_temp(
-        rest,
-        "t (s),Vehicle_Speed (km/h),Rope tension [kN],dynamic PENETRATION [ft]\n0,72,0,0\n1,36,50,10\n");
+        rest, "t (s),vehicleSpeed (km/h),Rope tension [kN],dynamic PENETRATION [ft]\n0,72,0,0\n1,36,50,10\n");
     cs_error err;
     cs_units *u = cs_units_open(&err);
     assert_non_null(u);
@@ -160,7 +160,8 @@ static void measured_names(void **state) {
     remove(accel), remove(rest);
 }
 
-/* A column whose name names no quantity compared is refused at its place, whatever its unit, as are a
+/* A column whose name names no quantity compared (no word begins as one: "extension" holds no tension)
+ * is refused at its place, whatever its unit, as are a
  * unit that does not fit the name, a name of two quantities, one across the travel or averaged, and a
  * second column of one quantity (an acceleration beside a deceleration). */
 static void measured_names_refused(void **state) {
@@ -173,6 +174,7 @@ static void measured_names_refused(void **state) {
          ":1:22: 'post displacement [m]' names no quantity compared"},
         {"time [s],x [g]", ":1:10: 'x [g]' names no quantity compared"},
         {"time [s],dynamic deflection [m]", ":1:10: 'dynamic deflection [m]' names no quantity compared"},
+        {"time [s],spring extension [kN]", ":1:10: 'spring extension [kN]' names no quantity compared"},
         {"time [s],speed [m]", ":1:10: 'speed [m]' names a speed: 'm' is a unit of length, not of speed "
                                "(expected mph, km/h or m/s)"},
         {"time [s],\"tension (g)\"", ":1:10: 'tension (g)' names a rope tension: 'g' is a unit of mass, not "

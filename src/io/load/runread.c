@@ -368,8 +368,10 @@ static int header_unit(const char *cell, char *unit, size_t size) {
     return (int)(open - cell);
 }
 
-/* The quantities a measured column is read as, each known by a word its name holds (case aside, its
- * letters and digits alone: "Vehicle_Speed" holds "speed"), its unit then checked against it. An
+/* The quantities a measured column is read as, each known by a word of its name that begins so (case
+ * aside; words are runs of letters and digits, split where a lower-case letter meets a capital:
+ * "Vehicle_Speed" and "vehicleSpeed" hold "speed", "extension" no "tension"), its unit then checked
+ * against it. An
  * acceleration is the vehicle's along its travel, negative as it slows: read as a deceleration with its
  * sign turned, as a run's ax and ay along its initial heading become its deceleration. A deflection is not
  * a penetration: cablesim's is the barrier's (max_barrier_deflection_m), not the vehicle's. */
@@ -389,26 +391,40 @@ static const struct measured_name {
     {"tension", "a rope tension", CS_TRACE_TENSION, 1.0, CS_Q_FORCE, "kip or kN"},
 };
 
-/* Words that make a name that holds one of those another quantity than compare's: its traces are along the
- * vehicle's travel and not averaged (it averages over 50 ms itself). */
+/* Words that make a name that holds one of those another quantity than compare's (a word beginning so):
+ * its traces are along the vehicle's travel and not averaged (it averages over 50 ms itself). */
 static const char *const measured_other[][2] = {
     {"lateral", "across the travel"},  {"vertical", "across the travel"}, {"50ms", "averaged over time"},
     {"average", "averaged over time"}, {"avg", "averaged over time"},
 };
 
+/* Whether words (each after a space) has one beginning with start. */
+static int has_word(const char *words, const char *start) {
+    size_t n = strlen(start);
+    for (const char *w = strchr(words, ' '); w; w = strchr(w + 1, ' '))
+        if (strncmp(w + 1, start, n) == 0) return 1;
+    return 0;
+}
+
 /* The quantity named by cell's first len characters, as measured_names; NULL with err filled (at col, in
  * path) where it names none, two, or one across the travel or averaged. */
 static const struct measured_name *measured_name(const char *path, int col, const char *cell, int len,
                                                  cs_error *err) {
-    char key[160];
+    char key[160]; /* the name's words, lower-cased, each after a space: " vehicle speed" */
     size_t n = 0;
-    for (int i = 0; i < len && n + 1 < sizeof key; i++)
-        if (isalnum((unsigned char)cell[i])) key[n++] = (char)tolower((unsigned char)cell[i]);
+    for (int i = 0; i < len && n + 2 < sizeof key; i++) {
+        unsigned char c = (unsigned char)cell[i];
+        if (!isalnum(c)) continue;
+        if (i == 0 || !isalnum((unsigned char)cell[i - 1]) ||
+            (isupper(c) && islower((unsigned char)cell[i - 1])))
+            key[n++] = ' ';
+        key[n++] = (char)tolower(c);
+    }
     key[n] = '\0';
     const struct measured_name *found = NULL;
     for (size_t k = 0; k < sizeof measured_names / sizeof measured_names[0]; k++) {
         const struct measured_name *m = &measured_names[k];
-        if (!strstr(key, m->word)) continue;
+        if (!has_word(key, m->word)) continue;
         if (found && (found->trace != m->trace || found->sign != m->sign)) {
             cs_error_set(err, CS_ERR_INVALID,
                          "%s:1:%d: '%s' names both %s and %s (expected one quantity a column)", path, col,
@@ -425,7 +441,7 @@ static const struct measured_name *measured_name(const char *path, int col, cons
         return NULL;
     }
     for (size_t k = 0; k < sizeof measured_other / sizeof measured_other[0]; k++)
-        if (strstr(key, measured_other[k][0])) {
+        if (has_word(key, measured_other[k][0])) {
             cs_error_set(err, CS_ERR_INVALID,
                          "%s:1:%d: '%s' names %s %s (expected the vehicle's along its travel, not averaged)",
                          path, col, cell, found->what, measured_other[k][1]);

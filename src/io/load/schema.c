@@ -708,29 +708,33 @@ int cs_schema_markdown(FILE *out) {
             fprintf(out, " | %s |\n", f->doc);
         }
     }
-    fputs("\n## CSV files\n\n"
-          "Every CSV file cablesim writes (a run's timeseries.csv and events.csv, a sweep's runs.csv, "
-          "compare.csv, validation.csv) has one header line that names each column `name [unit]`, the unit "
-          "SI as udunits2 writes it: `t [s]`, `forward_speed [m/s]`, `ax [m/s^2]`, `cable0_max_tension [N]`, "
-          "`energy_balance_error [1]` (a fraction), and `decel_50ms [g]` (standard gravities) and "
-          "`exit_angle [deg]` where the standards read them so. A column without a unit (a state, a type, an "
-          "outcome, a count, an index) has its name alone: `cable0_state`, `type`, `posts_failed_left`. A "
-          "column whose unit changes from row to row has it in the column beside it (events.csv's `value` "
-          "and `value_unit`, compare.csv's `unit`). Cables, posts and anchors are numbered from 0, as the "
-          "paths of `--set` count them (`cable1` is `barrier.cables[1]`), in every output; anchor 0 is "
-          "`barrier.anchors.start` (the low-x end), anchor 1 `barrier.anchors.end`. `cablesim compare "
-          "--measured FILE` reads a file of this convention (or `name (unit)`), a run's own timeseries.csv "
-          "too, its cells quoted or not (RFC 4180, as spreadsheets write CSV: `\"12.5\"` is 12.5, `\"\"` "
-          "inside quotes a quote; a quote only around a whole cell). Its first column is the time; every "
-          "other is known by its name, case and punctuation aside, and its unit must be one of that "
-          "quantity: a name holding `decel` a deceleration (g, m/s^2), `accel` an acceleration along the "
-          "travel, negative as the vehicle slows, read as the deceleration with its sign turned (as a run's "
-          "`ax` and `ay` along its first heading make its deceleration), `speed` or `velocity` the speed "
-          "(mph, km/h, m/s), `penetration` the vehicle's penetration (ft, m), `tension` the rope tension "
-          "(kip, kN). A column whose name holds none of them (`post displacement [m]`; a deflection is the "
-          "barrier's, not the vehicle's penetration), two of them, or one across the travel or averaged "
-          "(`lateral`, `vertical`, `50ms`, `average`, `avg`), one whose unit does not fit its name (`speed "
-          "[m]`), and a second column of one quantity are refused at their line and column.\n",
-          out);
+    fputs(
+        "\n## CSV files\n\n"
+        "Every CSV file cablesim writes (a run's timeseries.csv and events.csv, a sweep's runs.csv, "
+        "compare.csv, validation.csv) has one header line that names each column `name [unit]`, the unit "
+        "SI as udunits2 writes it: `t [s]`, `forward_speed [m/s]`, `ax [m/s^2]`, `cable0_max_tension [N]`, "
+        "`energy_balance_error [1]` (a fraction), and `decel_50ms [g]` (standard gravities) and "
+        "`exit_angle [deg]` where the standards read them so. A column without a unit (a state, a type, an "
+        "outcome, a count, an index) has its name alone: `cable0_state`, `type`, `posts_failed_left`. A "
+        "column whose unit changes from row to row has it in the column beside it (events.csv's `value` "
+        "and `value_unit`, compare.csv's `unit`). Cables, posts and anchors are numbered from 0, as the "
+        "paths of `--set` count them (`cable1` is `barrier.cables[1]`), in every output; anchor 0 is "
+        "`barrier.anchors.start` (the low-x end), anchor 1 `barrier.anchors.end`. `cablesim compare "
+        "--measured FILE` reads a file of this convention (or `name (unit)`), a run's own timeseries.csv "
+        "too, its cells quoted or not (RFC 4180, as spreadsheets write CSV: `\"12.5\"` is 12.5, `\"\"` "
+        "inside quotes a quote; a quote only around a whole cell). Its first column is the time; every "
+        "other is known by its name, case and punctuation aside, and its unit must be one of that "
+        "quantity: a name with a word beginning `decel` a deceleration (g, m/s^2), `accel` an acceleration "
+        "along the "
+        "travel, negative as the vehicle slows, read as the deceleration with its sign turned (as a run's "
+        "`ax` and `ay` along its first heading make its deceleration), `speed` or `velocity` the speed "
+        "(mph, km/h, m/s), `penetration` the vehicle's penetration (ft, m), `tension` the rope tension "
+        "(kip, kN); a word is a run of letters and digits, or starts at a capital after a lower-case letter "
+        "(`vehicleSpeed`; `extension` is no tension). A column whose name holds none of them (`post "
+        "displacement [m]`; a deflection is the "
+        "barrier's, not the vehicle's penetration), two of them, or one across the travel or averaged "
+        "(`lateral`, `vertical`, `50ms`, `average`, `avg`), one whose unit does not fit its name (`speed "
+        "[m]`), and a second column of one quantity are refused at their line and column.\n",
+        out);
     return ferror(out) ? -1 : 0;
 }
