@@ -1,14 +1,14 @@
 /* SPDX-License-Identifier: MIT */
-/* Slots, hooks, keyway bolts and brackets let a cable go at their documented limit (attachment.c). A cable pulled sideways by
- * F (horizontal, across the barrier) on a post leaning theta away from the pull bears on it with
- * F cos(theta) across the post and pulls it F sin(theta) along, toward the top; it leaves when
- *   F sin(theta) > mu F cos(theta) + R,
- * that is past theta* = atan(mu) + asin(R cos(atan(mu)) / F); a cable in a slot only once it has reached
- * the slot's open end, at cos(theta) = (z + d_p) / (h + d_p). Checked by hand on a post leaning just short
- * of and just past theta*, for the slot's and the hook's documented R (the slot's post cut to 1.23 m, so
- * that its upper cable, at 4 ft, is at the open end from 7.7 degrees); just short of and past the open
- * end on the 7-ft post; the slot's order: a cable held above keeps the ones below in; and a keyway bolt's
- * and a bracket's pull off their face (their component tests' lateral loads). */
+/* Slots, hooks, keyway bolts and brackets let a cable go at their documented limit (attachment.c). A cable
+ * pulled sideways by F (horizontal, across the barrier) on a post leaning theta away from the pull bears on
+ * it with F cos(theta) across the post and pulls it F sin(theta) along, toward the top; it leaves when F
+ * sin(theta) > mu F cos(theta) + R, that is past theta* = atan(mu) + asin(R cos(atan(mu)) / F); a cable in a
+ * slot only once it has reached the slot's open end, at cos(theta) = (z + d_p) / (h + d_p). Checked by hand
+ * on a post leaning just short of and just past theta*, for the slot's and the hook's documented R (the
+ * slot's post cut to 1.23 m, so that its upper cable, at 4 ft, is at the open end from 7.7 degrees); just
+ * short of and past the open end on the 7-ft post; the slot's order: a cable held above keeps the ones below
+ * in; and a keyway bolt's and a bracket's pull off their face (their component tests' lateral loads, or
+ * a post group's), the face turning with a post that leans across the barrier, and which event says so. */
 #include "check.h"
 #include "core/vec3.h"
 #include "fixture.h"
@@ -16,7 +16,7 @@
 
 /* Two cables on one post at x = 0 between rigid anchors 10 m away; the post's height if given (else the
  * fixture's 7 ft). */
-static cs_model *one_post_on(cs_attachment kind, cs_face face, fixture *fx, double height) {
+static void fill_one_post(cs_attachment kind, cs_face face, fixture *fx, double height) {
     fixture_aps3(fx);
     fx->barrier.post_count = 1;
     fx->posts[0].x = 0.0;
@@ -27,10 +27,18 @@ static cs_model *one_post_on(cs_attachment kind, cs_face face, fixture *fx, doub
     fx->barrier.start_anchor.x = -10.0, fx->barrier.end_anchor.x = 10.0;
     fx->barrier.start_anchor.footing.diameter = fx->barrier.end_anchor.footing.diameter = 0.0;
     fx->scenario.impact_x = 5.0;
+}
+
+static cs_model *build(fixture *fx) {
     cs_error err;
     cs_model *m = cs_model_create(&fx->barrier, &fx->vehicle, &fx->scenario, &err);
     if (!m) fail_msg("%s", err.message);
     return m;
+}
+
+static cs_model *one_post_on(cs_attachment kind, cs_face face, fixture *fx, double height) {
+    fill_one_post(kind, face, fx, height);
+    return build(fx);
 }
 
 static cs_model *one_post(cs_attachment kind, fixture *fx, double height) {
@@ -39,8 +47,9 @@ static cs_model *one_post(cs_attachment kind, fixture *fx, double height) {
 
 /* The post leaning theta toward +y; cable c's node on it, its two spans running 10 m along x and 5 m
  * toward +y at tension t each: a pull of 2 t 5 / sqrt(125) across the barrier. Returns that pull. */
-static double lean_and_pull(const cs_model *m, cs_state *s, double theta, int c, double t) {
-    s->posts[0].tilt[0] = 0.0, s->posts[0].tilt[1] = theta;
+static double lean_and_pull_at(const cs_model *m, cs_state *s, double along_x, double theta, int c,
+                               double t) {
+    s->posts[0].tilt[0] = along_x, s->posts[0].tilt[1] = theta;
     cs_cable_state *cs = &s->cables[c];
     int i = cs->where[0];
     cs_post_attachment(m, 0, s->posts[0].tilt, 0.0, m->cables[c].z, cs->pos + 3 * i);
@@ -50,6 +59,10 @@ static double lean_and_pull(const cs_model *m, cs_state *s, double theta, int c,
     }
     cs->tension[i - 1] = cs->tension[i] = t;
     return 2.0 * t * 5.0 / sqrt(125.0);
+}
+
+static double lean_and_pull(const cs_model *m, cs_state *s, double theta, int c, double t) {
+    return lean_and_pull_at(m, s, 0.0, theta, c, t);
 }
 
 static double release_angle(double mu, double r, double f) {
@@ -125,7 +138,11 @@ static void bolted_let_go_off_their_face(void **state) {
             int before = s->event_count;
             assert_int_equal(cs_attachment_check_release(m, s, 0), side > 0);
             assert_int_equal(s->cables[1].where[0]<0, side> 0);
-            if (side > 0) CHECK_REL(s->events[before].value, t * per_t, 1e-9);
+            if (side > 0) {
+                assert_int_equal(s->events[before].type, CS_EVENT_CABLE_PULLED_OFF);
+                assert_int_equal(s->events[before].cable, 1);
+                CHECK_REL(s->events[before].value, t * per_t, 1e-9);
+            }
         }
         const double th = 0.5;
         for (int side = -1; side <= 1; side += 2) {
@@ -134,8 +151,10 @@ static void bolted_let_go_off_their_face(void **state) {
             double t = vertical[k] * (1.0 + side * 1e-6) / (per_t * (sin(th) - mu * cos(th)));
             lean_and_pull(m, s, th, 1, t);
             assert_true(t * per_t * cos(th) < lateral[k]);
+            int before = s->event_count;
             assert_int_equal(cs_attachment_check_release(m, s, 0), side > 0);
             assert_int_equal(s->cables[1].where[0]<0, side> 0);
+            if (side > 0) assert_int_equal(s->events[before].type, CS_EVENT_CABLE_RELEASE);
         }
         cs_state_free(s);
         cs_model_free(m);
@@ -146,6 +165,41 @@ static void bolted_let_go_off_their_face(void **state) {
         cs_state_free(s);
         cs_model_free(m);
     }
+}
+
+/* Pulled off the face by F across the barrier: leaning theta toward the pull, less than the lean at
+ * which the pull along the post decides (tan(theta) < mu + R / R_off), the face turns with the post and
+ * the cable leaves once F cos(theta) passes R_off; leaning along the barrier, the face keeps facing the
+ * pull and it leaves once F passes R_off. A post group's loads replace the kind's. */
+static void bolted_face_turns_with_the_post(void **state) {
+    (void)state;
+    fixture fx;
+    fill_one_post(CS_ATTACH_BRACKET, CS_FACE_PROTECTED, &fx, 0.0);
+    fx.posts[0].lateral_release_force = 10e3, fx.posts[0].release_force = 2e3;
+    cs_model *m = build(&fx);
+    cs_error err;
+    cs_state *s = cs_state_create(m, &err);
+    assert_non_null(s);
+    CHECK_REL(m->posts[0].lateral_release, 10e3, 1e-12);
+    CHECK_REL(m->posts[0].release_force, 2e3, 1e-12);
+    const double th = 0.1, per_t = lean_and_pull(m, s, 0.0, 1, 1.0);
+    assert_true(tan(th) < m->cables[1].mu_post);
+    for (int lean = 0; lean < 2; lean++) { /* across the barrier, then along it */
+        double turn = lean == 0 ? cos(th) : 1.0;
+        for (int side = -1; side <= 1; side += 2) {
+            cs_state_reset(m, s);
+            double t = 10e3 * (1.0 + side * 1e-6) / (per_t * turn);
+            lean_and_pull_at(m, s, lean == 1 ? th : 0.0, lean == 0 ? th : 0.0, 1, t);
+            int before = s->event_count;
+            assert_int_equal(cs_attachment_check_release(m, s, 0), side > 0);
+            if (side > 0) {
+                assert_int_equal(s->events[before].type, CS_EVENT_CABLE_PULLED_OFF);
+                CHECK_REL(s->events[before].value, t * per_t * turn, 1e-9);
+            }
+        }
+    }
+    cs_state_free(s);
+    cs_model_free(m);
 }
 
 /* On the 7-ft post (hinged at grade) the upper cable, at 4 ft, reaches the slot's open end at acos(4 / 7)
@@ -213,12 +267,10 @@ static void through_and_clamped_hold(void **state) {
 }
 
 int main(void) {
-    const struct CMUnitTest tests[] = {cmocka_unit_test(slot_lets_go_at_its_limit),
-                                       cmocka_unit_test(hook_lets_go_at_its_limit),
-                                       cmocka_unit_test(slot_holds_until_its_open_end),
-                                       cmocka_unit_test(slot_lets_go_from_the_top),
-                                       cmocka_unit_test(bolted_let_go_along_at_their_limit),
-                                       cmocka_unit_test(bolted_let_go_off_their_face),
-                                       cmocka_unit_test(through_and_clamped_hold)};
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(slot_lets_go_at_its_limit),          cmocka_unit_test(hook_lets_go_at_its_limit),
+        cmocka_unit_test(slot_holds_until_its_open_end),      cmocka_unit_test(slot_lets_go_from_the_top),
+        cmocka_unit_test(bolted_let_go_along_at_their_limit), cmocka_unit_test(bolted_let_go_off_their_face),
+        cmocka_unit_test(bolted_face_turns_with_the_post),    cmocka_unit_test(through_and_clamped_hold)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

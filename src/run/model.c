@@ -135,6 +135,9 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
                 p);
         if (d->face != CS_FACE_ATTACK && d->face != CS_FACE_PROTECTED)
             return fail(err, "post %d: unknown face %d", p, (int)d->face);
+        if (d->face != CS_FACE_ATTACK && cs_attachment_lateral_release_force(d->attachment) == 0.0)
+            return fail(
+                err, "post %d: face must be left out (only keyway bolts and brackets are fixed to one)", p);
     }
     if (b->rail_count < 0 || b->rail_count > CS_MAX_CABLES || (b->rail_count > 0 && !b->rails))
         return fail(err, "barrier: %d rails (expected 0 to %d)", b->rail_count, CS_MAX_CABLES);

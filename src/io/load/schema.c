@@ -291,10 +291,10 @@ static const cs_field posts_fields[] = {
       "until its top reaches grade)"),
     P("lateral_release_force", CS_Q_FORCE, CS_POS, lateral_release_force,
       "a keyway bolt's or bracket's strength against a pull off its face (not given: the kind's documented "
-      "value)"),
+      "value; other kinds: left out)"),
     {"face", CS_F_ENUM, CS_Q_NUMBER, 0, (long)offsetof(cs_post_def, face), NULL, face_words,
      "the face of the post keyway bolts or brackets are fixed to: attack (the side the vehicle comes from, "
-     "the default) or protected"},
+     "the default) or protected (other kinds: left out)"},
 };
 const cs_table cs_table_posts = {"posts",
                                  "A group of identical posts: one by one (x) or as a run (from, "

@@ -71,7 +71,7 @@ typedef struct cs_validate_result {
     double cable_break[2]; /* s, < 0 if not broken (along the rope or at an end fitting) */
     double absorbed;       /* J: initial kinetic energy minus what is left */
     int post_failure;      /* the first post failure's event type, -1 if none */
-    int released;          /* cables let go by slots and hooks (cable_release events) */
+    int released;          /* cables let go by their posts (cable_release, cable_pulled_off events) */
     double post_failure_t; /* its time, s */
     char how[2][48];       /* each rope: where and when it broke, or that it held with its peak */
     double slide[2];       /* each dead-man's plough through the soil, m (-1: rigid) */
