@@ -196,6 +196,14 @@ typedef struct cs_post_def {
     cs_face face;                 /**< the face a keyway bolt or bracket is fixed to */
 } cs_post_def;
 
+/** A post's retainer strength along it, N: its release_force, or its kind's documented value when that is 0.
+ */
+CS_API double cs_post_release_force(const cs_post_def *post);
+
+/** A post's fitting's strength against a pull off its face, N: its lateral_release_force, or its kind's
+ * documented value when that is 0 (0 for kinds without one). */
+CS_API double cs_post_lateral_release_force(const cs_post_def *post);
+
 /** A cable end anchor: a footing (dead-man) in the soil. Every cable is tied to the start anchor at one
  * end and the end anchor at the other, each rope by its own end at height z. The footing resists the
  * ropes' horizontal pull by Eq. 21 at that height (times the soil's dynamic factor for its width, as a

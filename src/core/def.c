@@ -140,6 +140,15 @@ cs_footing_def cs_default_footing_def(void) {
     return d;
 }
 
+double cs_post_release_force(const cs_post_def *post) {
+    return post->release_force > 0.0 ? post->release_force : cs_attachment_release_force(post->attachment);
+}
+
+double cs_post_lateral_release_force(const cs_post_def *post) {
+    return post->lateral_release_force > 0.0 ? post->lateral_release_force
+                                             : cs_attachment_lateral_release_force(post->attachment);
+}
+
 cs_post_def cs_default_post_def(void) {
     cs_post_def d;
     memset(&d, 0, sizeof d);

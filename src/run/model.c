@@ -477,11 +477,8 @@ static cs_model *model_create(const cs_barrier_def *barrier, const cs_vehicle_de
         pm->lie_angle = acos(pm->pivot / (d->height + pm->pivot));
         pm->clamped = d->attachment == CS_ATTACH_CLAMPED;
         pm->attach = d->attachment;
-        pm->release_force =
-            d->release_force > 0.0 ? d->release_force : cs_attachment_release_force(d->attachment);
-        pm->lateral_release = d->lateral_release_force > 0.0
-                                  ? d->lateral_release_force
-                                  : cs_attachment_lateral_release_force(d->attachment);
+        pm->release_force = cs_post_release_force(d);
+        pm->lateral_release = cs_post_lateral_release_force(d);
         pm->face_normal = d->face == CS_FACE_PROTECTED ? 1.0 : -1.0;
         pm->inertia = post_inertia(barrier, p, pm->pivot);
         pm->pull_mass = post_mass(barrier, p);

@@ -31,6 +31,10 @@ const char *cs_width_scaling_word(cs_width_scaling kind) {
     return kind >= CS_WIDTH_WEDGE && kind <= CS_WIDTH_NONE ? width_scaling_words[kind] : "?";
 }
 
+const char *cs_face_word(cs_face face) {
+    return face >= CS_FACE_ATTACK && face <= CS_FACE_PROTECTED ? face_words[face] : "?";
+}
+
 const char *cs_attachment_word(cs_attachment kind) {
     return kind >= CS_ATTACH_THROUGH && kind <= CS_ATTACH_BRACKET ? attachment_words[kind] : "?";
 }

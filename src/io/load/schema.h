@@ -137,6 +137,7 @@ void cs_target_defaults(cs_target t, cs_any_def *out);
 /* The word a model file gives a post's attachment or a cable's termination by ("through", "clips"); "?"
  * for a value that has none. */
 const char *cs_attachment_word(cs_attachment kind);
+const char *cs_face_word(cs_face face);
 const char *cs_termination_word(cs_termination kind);
 const char *cs_width_scaling_word(cs_width_scaling kind);
 /* Print the file-format reference (docs/file-format.md). Returns 0 or -1 on a write error. */

@@ -481,6 +481,12 @@ static json_object *design_post_kinds(jw *j, const cs_barrier_def *b) {
         kfields(j, kind, &pd->section, section_fields, sizeof section_fields / sizeof section_fields[0]);
         knum(j, kind, "rotation_limit_rad", pd->rotation_limit);
         kstr(kind, "attachment", cs_attachment_word(pd->attachment));
+        double along = cs_post_release_force(pd), off = cs_post_lateral_release_force(pd);
+        if (along > 0.0) knum(j, kind, "release_force_n", along); /* a kind that lets its cables go */
+        if (off > 0.0) {                                          /* bolted to one face */
+            knum(j, kind, "lateral_release_force_n", off);
+            kstr(kind, "face", cs_face_word(pd->face));
+        }
         write_footing(j, footing, &pd->footing, "skin friction");
         json_object_object_add(kind, "footing", footing);
         json_object_array_add(kinds, kind);
