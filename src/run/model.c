@@ -126,6 +126,10 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
         if (d->attachment < CS_ATTACH_THROUGH || d->attachment > CS_ATTACH_BRACKET)
             return fail(err, "post %d: unknown attachment %d", p, (int)d->attachment);
         if (!non_negative(d->release_force)) return fail(err, "post %d: release force must be >= 0", p);
+        if (d->release_force > 0.0 && cs_attachment_release_force(d->attachment) == 0.0)
+            return fail(
+                err, "post %d: release force must be left out (threaded and clamped cables are never let go)",
+                p);
         if (!non_negative(d->lateral_release_force))
             return fail(err, "post %d: lateral release force must be >= 0", p);
         if (d->lateral_release_force > 0.0 && cs_attachment_lateral_release_force(d->attachment) == 0.0)
