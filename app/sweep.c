@@ -60,8 +60,9 @@ static int sweep_bad_usage(int rank, const char *what, const char *arg) {
 typedef struct sweep_args {
     cs_sweep_def def;
     int quiet;
-    const char *sets[256], *allow[64];
-    char set_text[256][1100]; /* --t-end and --dt as sets */
+    const char *sets[256], *given[256], *allow[64];
+    char set_text[256][1100];   /* --t-end and --dt as sets */
+    char given_text[256][1100]; /* and as the user gave them, which their problems name */
 } sweep_args;
 
 /* The command line into a. Returns 0, -1 after --help (exit 0), or EXIT_BAD. */
@@ -77,7 +78,7 @@ static int parse_opts(int argc, char **argv, sweep_args *a, int rank) {
         {"help", no_argument, NULL, 'h'},        {NULL, 0, NULL, 0}};
     cs_sweep_def *d = &a->def;
     *d = cs_default_sweep_def();
-    d->sets = a->sets;
+    d->sets = a->sets, d->sets_given = a->given;
     d->allow = a->allow;
     int v, study = 0; /* options that define the study, which --resume takes from DIR */
     optind = 1;
@@ -114,11 +115,14 @@ static int parse_opts(int argc, char **argv, sweep_args *a, int rank) {
             if (d->set_count == 256)
                 return sweep_bad_usage(rank, "more than 256 --set, --t-end and --dt", optarg);
             if (v == SET) {
-                a->sets[d->set_count] = optarg;
+                a->sets[d->set_count] = optarg, a->given[d->set_count] = NULL;
             } else {
                 snprintf(a->set_text[d->set_count], sizeof a->set_text[0], "scenario.%s=%s",
                          v == T_END ? "t_end" : "dt", optarg);
+                snprintf(a->given_text[d->set_count], sizeof a->given_text[0], "--%s %s",
+                         v == T_END ? "t-end" : "dt", optarg);
                 a->sets[d->set_count] = a->set_text[d->set_count];
+                a->given[d->set_count] = a->given_text[d->set_count];
             }
             d->set_count++;
             study = 1;

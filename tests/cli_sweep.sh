@@ -84,6 +84,9 @@ page="$tmp/lhs-1/report.html"
 check "study: the inputs' table in the spec's units" 'grep -qE "<tr><td>barrier.soil.soil_pressure</td><td>normal: mean 8000 psf, sd 1000 psf, min 4000 psf</td><td>psf</td><td>[0-9.]+</td>" "$page" && grep -qE "<tr><td>scenario.speed</td><td>[^<]*</td><td>mph</td>" "$page"'
 check "study: the inputs' values in those units" 'grep -oE "<tr><td>(barrier.soil.soil_pressure|scenario.speed)</td><td>[^<]*</td><td>[a-z]+</td><td>[0-9.e+]+</td><td>[0-9.e+]+</td><td>[0-9.e+]+</td>" "$page" | sed -E "s/<\/?t[dr]>/ /g" | awk "\$3 == \"psf\" && (\$4 < 4000 || \$6 > 12000) { bad = 1 } \$3 == \"mph\" && (\$4 < 38 || \$6 > 42) { bad = 1 } END { exit bad || NR != 2 }"'
 check "study: the cable tension in kN" 'grep -q "<tr><td>max cable tension (kN)</td>" "$page"'
+# --dt and --t-end stand for sets of scenario.dt and scenario.t_end; a problem with one names it as given
+"$cs" sweep --allow-path examples tests/sweep/through.yaml -o "$tmp/dt" --dt "2 ft" --quiet >/dev/null 2>"$tmp/dt.err"
+check "a refused --dt is status 2, named as given" '[ $? -eq 2 ] && grep -qxF -- "--dt 2 ft: '"'"'ft'"'"' is a unit of length, not of time (expected a time, e.g. \"0.5 ms\")" "$tmp/dt.err" && ! grep -q "scenario.dt" "$tmp/dt.err"'
 # a run that breaks through: runs.csv gives no penetration, only how far it got, as summary.json does
 "$cs" sweep --allow-path examples tests/sweep/through.yaml -o "$tmp/through" --quiet >"$tmp/through.out" 2>&1
 check "through: exits 0" '[ $? -eq 0 ] || { cat "$tmp/through.out"; false; }'

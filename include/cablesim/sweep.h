@@ -95,6 +95,9 @@ typedef struct cs_sweep_def {
     FILE *closing;                 /**< the closing lines: the runs done and the files written; NULL: none */
     const cs_sweep_ranks_def *ranks; /**< the processes that share the study (read to its size); NULL:
                                           this process alone */
+    const char *const *sets_given;   /**< [set_count] the command-line option each of sets stands for, as
+                                          the user gave it ("--dt 2 ms"), which its problems then name; a
+                                          NULL entry (or NULL): a --set */
 } cs_sweep_def;
 
 /** A study run: its runs' inputs and results (opaque). */

@@ -373,13 +373,19 @@ static void read_scalars(cs_sweep_spec *s, const cs_ynode *root) {
     }
 }
 
-static int push_set(cs_sweep_spec *s, const char *path, const char *value, int line, int col) {
+static int push_set(cs_sweep_spec *s, const char *path, const char *value, const char *given, int line,
+                    int col) {
     int n = s->set_count;
     size_t len = strlen(path) + strlen(value) + 2;
     if (cs_grow_one(&s->sets, n, sizeof *s->sets) != 0 ||
+        cs_grow_one(&s->set_given, n, sizeof *s->set_given) != 0 ||
         cs_grow_one(&s->set_line, n, sizeof *s->set_line) != 0 ||
         cs_grow_one(&s->set_col, n, sizeof *s->set_col) != 0 || !(s->sets[n] = malloc(len)))
         return -1;
+    if (!(s->set_given[n] = given ? strdup(given) : NULL) && given) {
+        free(s->sets[n]);
+        return -1;
+    }
     snprintf(s->sets[n], len, "%s=%s", path, value);
     s->set_line[n] = line, s->set_col[n] = col;
     s->set_count++;
@@ -409,7 +415,7 @@ static void set_not_varied(cs_sweep_spec *s, const char *path, const char *value
             line ? "set:" : "--set", path, value, v);
 }
 
-int cs_sweep_spec_add_set(cs_sweep_spec *s, const char *assignment) {
+int cs_sweep_spec_add_set(cs_sweep_spec *s, const char *assignment, const char *given) {
     const char *eq = strchr(assignment, '=');
     if (!eq || eq == assignment) {
         cs_sweep_error(s, 0, 0, "--set %s: expected PATH=VALUE, e.g. scenario.speed=\"35 mph\"", assignment);
@@ -418,7 +424,7 @@ int cs_sweep_spec_add_set(cs_sweep_spec *s, const char *assignment) {
     char path[512];
     snprintf(path, sizeof path, "%.*s", (int)(eq - assignment), assignment);
     set_not_varied(s, path, eq + 1, 0, 0);
-    return push_set(s, path, eq + 1, 0, 0);
+    return push_set(s, path, eq + 1, given, 0, 0);
 }
 
 static void read_vary(cs_sweep_spec *s, cs_units *u, const cs_ynode *root) {
@@ -629,7 +635,7 @@ cs_sweep_spec *cs_sweep_spec_read_buffer(const char *path, const char *data, siz
             read_scalars(s, root);
             const cs_ynode *set = cs_ynode_get(root, "set");
             for (int i = 0; top_read(set) && i < set->count; i++)
-                if (push_set(s, set->kids[i]->key, set->kids[i]->text, set->kids[i]->key_line,
+                if (push_set(s, set->kids[i]->key, set->kids[i]->text, NULL, set->kids[i]->key_line,
                              set->kids[i]->key_col) != 0)
                     break;
             read_vary(s, units, root);
@@ -661,8 +667,9 @@ void cs_sweep_spec_free(cs_sweep_spec *s) {
         free(s->plots[i].y);
     free(s->plots);
     for (int i = 0; i < s->set_count; i++)
-        free(s->sets[i]);
+        free(s->sets[i]), free(s->set_given[i]);
     free(s->sets);
+    free(s->set_given);
     free(s->set_line);
     free(s->set_col);
     for (int i = 0; i < s->error_count; i++)

@@ -92,7 +92,8 @@ typedef struct cs_sweep_spec {
     char vehicle_class[8]; /* ASTM F2656 class; "": the class within 5% of the vehicle's mass, if any */
     int netcdf;            /* also write runs.nc (netcdf: true; or --netcdf) */
     int set_count;
-    char **sets; /* "PATH=VALUE" applied to every run, in order */
+    char **sets;      /* "PATH=VALUE" applied to every run, in order */
+    char **set_given; /* the command-line option each stands for as given ("--dt 2 ms"), or NULL */
     int *set_line, *set_col;
     int var_count;
     cs_sweep_var *vars;
@@ -119,6 +120,6 @@ void cs_sweep_spec_confine(cs_sweep_spec *spec, const char *const *allow, int co
 void cs_sweep_error(cs_sweep_spec *spec, int line, int col, const char *fmt, ...)
     __attribute__((format(printf, 4, 5)));
 /* Add a fixed "PATH=VALUE" (from the command line) after the spec's own. 0, or -1 (error recorded). */
-int cs_sweep_spec_add_set(cs_sweep_spec *spec, const char *assignment);
+int cs_sweep_spec_add_set(cs_sweep_spec *spec, const char *assignment, const char *given);
 
 #endif

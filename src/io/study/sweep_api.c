@@ -67,8 +67,10 @@ cs_status cs_sweep_options_of(const cs_sweep_def *given, cs_sweep_options *o, cs
     o->runs = def.runs, o->seed = def.seed;
     for (int i = 0; i < def.allow_count; i++)
         o->allow[o->allow_count++] = def.allow[i];
-    for (int i = 0; i < def.set_count; i++)
+    for (int i = 0; i < def.set_count; i++) {
+        o->sets_given[o->set_count] = def.sets_given ? def.sets_given[i] : NULL;
         o->sets[o->set_count++] = def.sets[i];
+    }
     o->errors = def.errors, o->progress = def.progress, o->closing = def.closing;
     return CS_OK;
 }

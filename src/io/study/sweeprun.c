@@ -116,6 +116,8 @@ static void map_errors(cs_sweep_spec *s, cs_loader *l, const double *xrow, int v
             if (strncmp(e, prefix, (size_t)n) != 0) continue;
             if (s->set_line[k] > 0)
                 snprintf(text, sizeof text, "set: %s: %s", s->sets[k], e + n);
+            else if (s->set_given[k]) /* --dt or --t-end, named as the user gave it */
+                snprintf(text, sizeof text, "%s: %s", s->set_given[k], e + n);
             else
                 snprintf(text, sizeof text, "%s", e);
             at_line = s->set_line[k], at_col = s->set_col[k];

@@ -42,7 +42,7 @@ cs_sweep_spec *cs_sweep_study_spec(cs_sweep_options *o, int loud) {
     cs_sweep_plots_check(spec);
     cs_sweep_spec_confine(spec, o->allow, o->allow_count);
     for (int i = 0; i < o->set_count; i++)
-        cs_sweep_spec_add_set(spec, o->sets[i]);
+        cs_sweep_spec_add_set(spec, o->sets[i], o->sets_given[i]);
     spec->netcdf |= o->netcdf;
     if (o->runs > 0 && spec->method == CS_SWEEP_GRID)
         cs_sweep_error(spec, 0, 0, "--runs: a grid's runs are every combination of its levels");

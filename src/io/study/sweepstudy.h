@@ -37,6 +37,7 @@ typedef struct cs_sweep_options {
     const char *allow[CS_SWEEP_MAX_ALLOW];
     int allow_count;
     const char *sets[CS_SWEEP_MAX_SETS];
+    const char *sets_given[CS_SWEEP_MAX_SETS]; /* the option each stands for as given, or NULL: a --set */
     int set_count;
     char set_text[CS_SWEEP_MAX_SETS][1100]; /* --t-end and --dt as sets */
 } cs_sweep_options;
