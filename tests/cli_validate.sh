@@ -13,6 +13,11 @@ check "ten bogie rows" '[ "$(grep -c "^| NPGB-" "$md")" -eq 10 ]'
 good=$(grep -oE "at least 8 of 10: [0-9]+ of 10" "$md" | grep -oE "[0-9]+ of 10$" | cut -d" " -f1)
 check "the bogie target is met, as the exit status says (${good:-?} of 10)" \
     '[ "${good:-0}" -ge 8 ] && grep -q "at least 8 of 10: $good of 10, met" "$md"'
+# a post that rotates to its 45-degree limit about 2/3 of its embedment D, pushed at the head's bottom edge
+# (24.875 - 4 in = 0.530225 m): the bogie travels (0.530225 + 2 D / 3) sin 45 deg from contact, to the
+# 1-ms output (9 mm at 20 mph)
+check "the rotated posts' deflection is the 45-degree limit's travel" \
+    'awk -F"|" "/^\| NPGB-/ && \$11 ~ /rotation/ { d = \$4 / 1000; x = (0.530225 + 2 * d / 3) * sqrt(0.5) * 1000; n++; if (!(\$9 + 0 <= x + 1 && \$9 + 0 >= x - 10)) bad = 1 } END { exit bad || n != 6 }" "$md"'
 check "csv has a header and ten bogie rows" '[ "$(grep -c "^bogie," "$dir/validation.csv")" -eq 10 ]'
 check "no temporaries left" '[ -z "$(ls "$dir" | grep tmp)" ]'
 check "no NaN or Inf in the csv" '! grep -qiE "nan|inf" "$dir/validation.csv"'

@@ -75,6 +75,9 @@ typedef struct cs_validate_result {
     double post_failure_t; /* its time, s */
     char how[2][48];       /* each rope: where and when it broke, or that it held with its peak */
     double slide[2];       /* each dead-man's plough through the soil, m (-1: rigid) */
+    double contact_pen;    /* the face's penetration at the first output with a force on it, m (NAN: none) */
+    double failure_pen;    /* and at the first output after the first post failure, m (NAN: none) */
+    int events_seen;       /* the events the outputs have looked at */
 } cs_validate_result;
 
 enum {

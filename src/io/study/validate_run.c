@@ -2,6 +2,7 @@
 /* The validation suite and its jobs (validate.h): the values compared with and the output folder, read
  * and checked before anything runs; each job run on a state of its own and its result kept; the report
  * written from the results and its two files committed together. */
+#include <math.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -72,12 +73,30 @@ int cs_validate_job_count(const cs_validate_suite *s) {
     return s->count;
 }
 
+/* At each output: the face's penetration where it first bears on something and where the first post
+ * failure has just happened (the travel between, to an output interval, is a bogie test's deflection). */
+static void watch_travel(const cs_model *m, const cs_state *s, void *user) {
+    cs_validate_result *r = user;
+    cs_vehicle_view v = {.size = sizeof v};
+    cs_state_vehicle(m, s, &v, NULL);
+    if (isnan(r->contact_pen) && v.face_force > 0.0) r->contact_pen = v.penetration;
+    int n = cs_state_event_count(s);
+    for (; r->events_seen < n && isnan(r->failure_pen); r->events_seen++) {
+        cs_event e = {.size = sizeof e};
+        cs_state_event(s, r->events_seen, &e, NULL);
+        if (e.type == CS_EVENT_POST_ROTATION_LIMIT || e.type == CS_EVENT_POST_PULLOUT ||
+            e.type == CS_EVENT_POST_SHEAR)
+            r->failure_pen = v.penetration;
+    }
+}
+
 /* Run a job on its own state, then free its model. */
 void cs_validate_run(cs_validate_suite *s, int i) {
     cs_validate_job *j = &s->jobs[s->order[i]];
     cs_error err = {0};
     cs_state *st = j->model ? cs_state_create(j->model, &err) : NULL;
-    j->r.ok = st && cs_run(j->model, st, NULL, NULL, &err) == CS_OK;
+    j->r.contact_pen = j->r.failure_pen = NAN, j->r.events_seen = 0;
+    j->r.ok = st && cs_run(j->model, st, watch_travel, &j->r, &err) == CS_OK;
     if (j->r.ok)
         collect(j->model, st, &j->r);
     else if (j->model)
