@@ -39,13 +39,26 @@ static cs_status read_all(const char *path, csv_file *f, size_t *lines, cs_error
     return CS_OK;
 }
 
+/* Whether the row rows could not read failed for want of memory (csvread says "out of memory"), not for
+ * its text (a quoted cell not closed, text after a closing quote). */
+static int row_oom(const cs_csv *rows) {
+    return strcmp(rows->why, "out of memory") == 0;
+}
+
+/* The problem of a row rows could not read, into err: CS_ERR_MEMORY, or CS_ERR_INVALID at its place. */
+static cs_status row_problem(const cs_csv *rows, const char *path, cs_error *err) {
+    if (row_oom(rows)) return cs_error_set(err, CS_ERR_MEMORY, "%s: out of memory", path);
+    return cs_error_set(err, CS_ERR_INVALID, "%s:%ld:%d: %s", path, rows->why_line,
+                        rows->why_col > 0 ? rows->why_col : 1, rows->why);
+}
+
 /* The next data row of rows, blank lines skipped, *more 1 for a row of the header's nh cells, 0 at the
- * end: CS_OK, or with err filled CS_ERR_MEMORY or CS_ERR_INVALID (at the row's line, a row of another
- * width). */
+ * end: CS_OK, or with err filled CS_ERR_MEMORY or CS_ERR_INVALID (at its place: a row that cannot be read,
+ * or a row of another width). */
 static cs_status next_row(cs_csv *rows, int nh, const char *path, int *more, cs_error *err) {
     int rc = cs_csv_next(rows);
     *more = rc > 0;
-    if (rc < 0) return cs_error_set(err, CS_ERR_MEMORY, "%s: %s", path, rows->why); /* out of memory */
+    if (rc < 0) return row_problem(rows, path, err);
     if (rc == 0 || rows->count == nh) return CS_OK;
     return cs_error_set(err, CS_ERR_INVALID, "%s:%ld:1: %d cells, the header has %d", path, rows->line,
                         rows->count, nh);
@@ -249,12 +262,13 @@ static int run_header(char *const *head, int nh, run_columns *c) {
            c->decel_50ms >= 0 && c->penetration >= 0;
 }
 
-/* Whether text's first line is the header of a run's timeseries.csv: 1, 0, or -1 out of memory. */
+/* Whether text's first line is the header of a run's timeseries.csv: 1, 0 (a line that cannot be read
+ * too: its reader says why), or -1 out of memory. */
 static int is_run_series(const char *text) {
     cs_csv rows;
     cs_csv_open_text(&rows, text, HISTORY_CSV, MAX_COLS);
     run_columns c;
-    int is = cs_csv_next(&rows) < 0 ? -1 : run_header(rows.cell, rows.count, &c);
+    int is = cs_csv_next(&rows) >= 0 ? run_header(rows.cell, rows.count, &c) : row_oom(&rows) ? -1 : 0;
     cs_csv_close(&rows);
     return is;
 }
@@ -287,9 +301,12 @@ static cs_status read_run_series(const char *path, cs_trace *tr, cs_error *err) 
     cs_csv csv;
     cs_csv_open_text(&csv, f.text, HISTORY_CSV, MAX_COLS);
     int *tension = NULL, nh = 0, more;
-    if (alloc_trace(tr, rows) != 0 || cs_csv_next(&csv) < 0 ||
-        !(tension = calloc(MAX_COLS, sizeof *tension))) {
+    if (alloc_trace(tr, rows) != 0 || !(tension = calloc(MAX_COLS, sizeof *tension))) {
         rc = cs_error_set(err, CS_ERR_MEMORY, "%s: out of memory", path);
+        goto done;
+    }
+    if (cs_csv_next(&csv) < 0) {
+        rc = row_problem(&csv, path, err);
         goto done;
     }
     nh = csv.count;
@@ -468,8 +485,12 @@ cs_status cs_trace_load_measured(const char *path, cs_units *units, cs_trace *tr
     }
     cs_csv csv;
     cs_csv_open_text(&csv, f.text, HISTORY_CSV, MEASURED_COLS);
-    if (alloc_trace(tr, rows + 1) != 0 || cs_csv_next(&csv) < 0) {
+    if (alloc_trace(tr, rows + 1) != 0) {
         rc = cs_error_set(err, CS_ERR_MEMORY, "%s: out of memory", path);
+        goto done;
+    }
+    if (cs_csv_next(&csv) < 0) {
+        rc = row_problem(&csv, path, err);
         goto done;
     }
     int nh = csv.count, *hcol = csv.cell_col;
