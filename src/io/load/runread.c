@@ -386,12 +386,12 @@ static int header_unit(const char *cell, char *unit, size_t size) {
 }
 
 /* The quantities a measured column is read as, each known by a word of its name that begins so (case
- * aside; words are runs of letters and digits, split where a lower-case letter meets a capital:
- * "Vehicle_Speed" and "vehicleSpeed" hold "speed", "extension" no "tension"), its unit then checked
- * against it. An
- * acceleration is the vehicle's along its travel, negative as it slows: read as a deceleration with its
- * sign turned, as a run's ax and ay along its initial heading become its deceleration. A deflection is not
- * a penetration: cablesim's is the barrier's (max_barrier_deflection_m), not the vehicle's. */
+ * aside; words are runs of letters and digits, split where a capital follows a lower-case letter or a
+ * digit a letter: "Vehicle_Speed" and "vehicleSpeed" hold "speed", "decel50ms" "50ms", "extension" no
+ * "tension"), its unit then checked against it. An acceleration is the vehicle's along its travel,
+ * negative as it slows: read as a deceleration with its sign turned, as a run's ax and ay along its
+ * initial heading become its deceleration. A deflection is not a penetration: cablesim's is the
+ * barrier's (max_barrier_deflection_m), not the vehicle's. */
 static const struct measured_name {
     const char *word;  /* held by the name */
     const char *what;  /* "a speed" */
@@ -408,14 +408,18 @@ static const struct measured_name {
     {"tension", "a rope tension", CS_TRACE_TENSION, 1.0, CS_Q_FORCE, "kip or kN"},
 };
 
-/* Words that make a name that holds one of those another quantity than compare's (a word beginning so):
- * its traces are along the vehicle's travel and not averaged (it averages over 50 ms itself). */
+/* Words that make a name that holds one of those another quantity than compare's (a word beginning so; one
+ * ending in a space a whole word, and "50 ms" two): its traces are along the vehicle's travel and not
+ * averaged (it averages over 50 ms itself). The vehicle's axes are x along it, y across and z up, as
+ * crash-test instruments name their channels ("Y Accel", "accel_z"); x is taken as along the travel. */
 static const char *const measured_other[][2] = {
-    {"lateral", "across the travel"},  {"vertical", "across the travel"}, {"50ms", "averaged over time"},
+    {"lateral", "across the travel"},  {"lat ", "across the travel"},  {"transverse", "across the travel"},
+    {"vertical", "across the travel"}, {"vert ", "across the travel"}, {"y ", "across the travel"},
+    {"z ", "across the travel"},       {"50ms", "averaged over time"}, {"50 ms", "averaged over time"},
     {"average", "averaged over time"}, {"avg", "averaged over time"},
 };
 
-/* Whether words (each after a space) has one beginning with start. */
+/* Whether words (each after a space, and a space at the end) has one beginning with start. */
 static int has_word(const char *words, const char *start) {
     size_t n = strlen(start);
     for (const char *w = strchr(words, ' '); w; w = strchr(w + 1, ' '))
@@ -427,16 +431,16 @@ static int has_word(const char *words, const char *start) {
  * path) where it names none, two, or one across the travel or averaged. */
 static const struct measured_name *measured_name(const char *path, int col, const char *cell, int len,
                                                  cs_error *err) {
-    char key[160]; /* the name's words, lower-cased, each after a space: " vehicle speed" */
+    char key[160]; /* its words, lower-cased, each after a space, a space at the end: " vehicle speed " */
     size_t n = 0;
-    for (int i = 0; i < len && n + 2 < sizeof key; i++) {
-        unsigned char c = (unsigned char)cell[i];
+    for (int i = 0; i < len && n + 3 < sizeof key; i++) {
+        unsigned char c = (unsigned char)cell[i], before = i > 0 ? (unsigned char)cell[i - 1] : ' ';
         if (!isalnum(c)) continue;
-        if (i == 0 || !isalnum((unsigned char)cell[i - 1]) ||
-            (isupper(c) && islower((unsigned char)cell[i - 1])))
-            key[n++] = ' ';
+        if (!isalnum(before) || (isupper(c) && islower(before)) || (isdigit(c) && isalpha(before)))
+            key[n++] = ' '; /* a word starts: "vehicleSpeed", "decel50ms", "accel_y" */
         key[n++] = (char)tolower(c);
     }
+    key[n++] = ' ';
     key[n] = '\0';
     const struct measured_name *found = NULL;
     for (size_t k = 0; k < sizeof measured_names / sizeof measured_names[0]; k++) {
