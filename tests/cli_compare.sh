@@ -56,6 +56,12 @@ check "a run's timeseries.csv as measured: its 50-ms deceleration is the run's (
 check "a run's timeseries.csv as measured: its largest penetration is the run's penetration beyond (0.1%)" \
     'awk -v a="$(value "penetration beyond" 3)" -v m="$(own "max dynamic penetration" 4)" "BEGIN { exit !(a > 1 && (a - m) ^ 2 < (1e-3 * a) ^ 2) }"'
 
+# saved again by a spreadsheet as "CSV UTF-8", a byte order mark before its header: still read as the run's
+{ printf '\357\273\277'; cat "$tmp/a/timeseries.csv"; } >"$tmp/bom.csv"
+out=$("$cs" compare "$tmp/b" --measured "$tmp/bom.csv" -o "$tmp/own-bom" 2>&1)
+check "a run's timeseries.csv after a byte order mark: read as the run's, the same parameters" \
+    '[ $? -eq 0 ] && cmp -s <(cut -d, -f1,4 "$tmp/own/compare.csv" | sed 1d) <(cut -d, -f1,4 "$tmp/own-bom/compare.csv" | sed 1d) || { echo "$out"; false; }'
+
 check "run b (35 mph) differs in its 50-ms deceleration by over 5%" \
     'awk -v d="$(value "max 50-ms deceleration" 7)" "BEGIN { exit !(d > 5 || d < -5) }"'
 check "outcomes in the table" 'grep -q "^outcome,,breakthrough,breakthrough," "$csv"'

@@ -27,12 +27,17 @@ typedef struct csv_file {
     size_t size;
 } csv_file;
 
-/* The file at path in memory, NUL-terminated, and its number of lines (newlines) into *lines. */
+/* The file at path in memory, NUL-terminated, without the byte order mark a spreadsheet may put before
+ * UTF-8 ("CSV UTF-8"), and its number of lines (newlines) into *lines. */
 static cs_status read_all(const char *path, csv_file *f, size_t *lines, cs_error *err) {
     cs_error input;
     int errnum;
     cs_status rc = cs_input_load(path, CS_HISTORY_MAX, &f->text, &f->size, &errnum, &input);
     if (rc != CS_OK) return cs_error_set(err, rc, "%s: %s", path, input.message);
+    if (f->size >= 3 && memcmp(f->text, "\xEF\xBB\xBF", 3) == 0) { /* UTF-8's byte order mark: not text */
+        memmove(f->text, f->text + 3, f->size - 3 + 1);
+        f->size -= 3;
+    }
     *lines = 0;
     for (size_t i = 0; i < f->size; i++)
         *lines += f->text[i] == '\n';
