@@ -56,6 +56,12 @@ check "a run's timeseries.csv as measured: its 50-ms deceleration is the run's (
 check "a run's timeseries.csv as measured: its largest penetration is the run's penetration beyond (0.1%)" \
     'awk -v a="$(value "penetration beyond" 3)" -v m="$(own "max dynamic penetration" 4)" "BEGIN { exit !(a > 1 && (a - m) ^ 2 < (1e-3 * a) ^ 2) }"'
 
+# saved again by a spreadsheet as "CSV UTF-8", a byte order mark before its header: still read as the run's
+{ printf '\357\273\277'; cat "$tmp/a/timeseries.csv"; } >"$tmp/bom.csv"
+out=$("$cs" compare "$tmp/b" --measured "$tmp/bom.csv" -o "$tmp/own-bom" 2>&1)
+check "a run's timeseries.csv after a byte order mark: read as the run's, the same parameters" \
+    '[ $? -eq 0 ] && cmp -s <(cut -d, -f1,4 "$tmp/own/compare.csv" | sed 1d) <(cut -d, -f1,4 "$tmp/own-bom/compare.csv" | sed 1d) || { echo "$out"; false; }'
+
 check "run b (35 mph) differs in its 50-ms deceleration by over 5%" \
     'awk -v d="$(value "max 50-ms deceleration" 7)" "BEGIN { exit !(d > 5 || d < -5) }"'
 check "outcomes in the table" 'grep -q "^outcome,,breakthrough,breakthrough," "$csv"'
@@ -94,6 +100,15 @@ check "a cell that is not a number exits 2 at its place" '[ $? -eq 2 ] && grep -
 printf 'time [s],speed [mph]\n0,40\n0.002,"4O"\n' >"$tmp/quotedtext.csv"
 out=$("$cs" compare "$tmp/a" --measured "$tmp/quotedtext.csv" -o "$tmp/bad-quoted" 2>&1)
 check "a quoted cell that is not a number exits 2 at its place" '[ $? -eq 2 ] && grep -q "quotedtext.csv:3:7: .4O. is not a number" <<<"$out" && [ ! -e "$tmp/bad-quoted" ]'
+# a row the CSV reader cannot cut (text after a closing quote, a quote not closed) is the file's fault, at its
+# place, in a data row and in the header alike: not "out of memory"
+printf 'time [s],speed [mph]\n0,40\n0.002,"4"0\n' >"$tmp/afterquote.csv"
+printf '"time [s],speed [mph]\n0,40\n0.002,40\n' >"$tmp/openquote.csv"
+out=$("$cs" compare "$tmp/a" --measured "$tmp/afterquote.csv" -o "$tmp/bad-after" 2>&1)
+rc=$?
+out2=$("$cs" compare "$tmp/a" --measured "$tmp/openquote.csv" -o "$tmp/bad-open" 2>&1)
+check "a row that cannot be cut exits 2 at its place, the header's too" \
+    '[ $rc -eq 2 ] && grep -q "afterquote.csv:3:10: .0. after a quoted cell.s closing quote" <<<"$out" && grep -q "openquote.csv:1:1: a quoted cell not closed" <<<"$out2" && ! grep -q "out of memory" <<<"$out$out2" && [ ! -e "$tmp/bad-after" ] && [ ! -e "$tmp/bad-open" ]'
 printf 'time [s],speed [mph]\n0,1e300\n0.1,1e300\n0.2,0\n' >"$tmp/huge.csv"
 out=$("$cs" compare "$tmp/a" --measured "$tmp/huge.csv" -o "$tmp/bad-huge" 2>&1)
 check "a value beyond any crash history (its metrics would be inf) exits 2 at its place" '[ $? -eq 2 ] && grep -q "huge.csv:2:3: .1e300. is too large" <<<"$out" && [ ! -e "$tmp/bad-huge" ]'

@@ -150,6 +150,8 @@ check "a runs.nc that cannot be written: status 1, why, nothing written" '[ $? -
 "$cs" sweep --allow-path examples tests/sweep/mc.yaml -o "$tmp/mc-seed" --runs 3 --seed 99 --t-end "5 ms" --quiet >/dev/null 2>&1
 check "--runs --seed --t-end" '[ "$(wc -l <"$tmp/mc-seed/runs.csv")" -eq 4 ] && ! cmp -s <(head -2 "$tmp/mc-seed/runs.csv") <(head -2 "$tmp/mc-1/runs.csv") && grep -q "scenario.t_end=5 ms" "$tmp/mc-seed/summary.json"'
 check "--set of a varied path is refused, naming it" '! out=$("$cs" sweep --allow-path examples tests/sweep/mc.yaml -o "$tmp/setv" --runs 2 --set "scenario.impact_x=50 ft" 2>&1) && grep -qF -- "--set scenario.impact_x=50 ft: the study varies scenario.impact_x, so a fixed value would not be used" <<<"$out" && [ ! -e "$tmp/setv" ]'
+sed "s|^model: .*|model: $PWD/examples/aps3.yaml|; s|^  scenario.impact_x: .*|  scenario.dt: {dist: uniform, min: 0.2 ms, max: 0.5 ms}|" tests/sweep/mc.yaml >"$tmp/mc-dt.yaml"
+check "--dt on a study that varies scenario.dt is refused, named as given" '! out=$("$cs" sweep --allow-path examples "$tmp/mc-dt.yaml" -o "$tmp/setdt" --runs 2 --dt "1 ms" 2>&1) && grep -qF -- "--dt 1 ms: the study varies scenario.dt, so a fixed value would not be used (expected no --dt)" <<<"$out" && ! grep -q -- "--set" <<<"$out" && [ ! -e "$tmp/setdt" ]'
 check "--runs on a grid is refused" '! "$cs" sweep --allow-path examples tests/sweep/grid.yaml -o "$tmp/x" --runs 3 >/dev/null 2>&1'
 
 # `cablesim check` knows a spec from a model, and checks the spec's model with its values

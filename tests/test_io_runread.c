@@ -185,6 +185,11 @@ static void measured_names_refused(void **state) {
          ":1:10: 'lateral acceleration [g]' names an acceleration across the "
          "travel (expected the vehicle's along its travel, not averaged)"},
         {"time [s],decel_50ms [g]", ":1:10: 'decel_50ms [g]' names a deceleration averaged over time"},
+        {"time [s],decel50ms [g]", ":1:10: 'decel50ms [g]' names a deceleration averaged over time"},
+        {"time [s],Decel 50 ms [g]", ":1:10: 'Decel 50 ms [g]' names a deceleration averaged over time"},
+        {"time [s],Y Accel [g]", ":1:10: 'Y Accel [g]' names an acceleration across the travel"},
+        {"time [s],accel_z [g]", ":1:10: 'accel_z [g]' names an acceleration across the travel"},
+        {"time [s],Lat Accel [g]", ":1:10: 'Lat Accel [g]' names an acceleration across the travel"},
         {"time [s],deceleration [g],acceleration [g]", ":1:27: 'acceleration [g]' is a second column of the "
                                                        "quantity of 'deceleration [g]' (the header's column "
                                                        "2, at 1:10) (expected one column of each)"},

@@ -27,25 +27,43 @@ typedef struct csv_file {
     size_t size;
 } csv_file;
 
-/* The file at path in memory, NUL-terminated, and its number of lines (newlines) into *lines. */
+/* The file at path in memory, NUL-terminated, without the byte order mark a spreadsheet may put before
+ * UTF-8 ("CSV UTF-8"), and its number of lines (newlines) into *lines. */
 static cs_status read_all(const char *path, csv_file *f, size_t *lines, cs_error *err) {
     cs_error input;
     int errnum;
     cs_status rc = cs_input_load(path, CS_HISTORY_MAX, &f->text, &f->size, &errnum, &input);
     if (rc != CS_OK) return cs_error_set(err, rc, "%s: %s", path, input.message);
+    if (f->size >= 3 && memcmp(f->text, "\xEF\xBB\xBF", 3) == 0) { /* UTF-8's byte order mark: not text */
+        memmove(f->text, f->text + 3, f->size - 3 + 1);
+        f->size -= 3;
+    }
     *lines = 0;
     for (size_t i = 0; i < f->size; i++)
         *lines += f->text[i] == '\n';
     return CS_OK;
 }
 
+/* Whether the row rows could not read failed for want of memory (csvread says "out of memory"), not for
+ * its text (a quoted cell not closed, text after a closing quote). */
+static int row_oom(const cs_csv *rows) {
+    return strcmp(rows->why, "out of memory") == 0;
+}
+
+/* The problem of a row rows could not read, into err: CS_ERR_MEMORY, or CS_ERR_INVALID at its place. */
+static cs_status row_problem(const cs_csv *rows, const char *path, cs_error *err) {
+    if (row_oom(rows)) return cs_error_set(err, CS_ERR_MEMORY, "%s: out of memory", path);
+    return cs_error_set(err, CS_ERR_INVALID, "%s:%ld:%d: %s", path, rows->why_line,
+                        rows->why_col > 0 ? rows->why_col : 1, rows->why);
+}
+
 /* The next data row of rows, blank lines skipped, *more 1 for a row of the header's nh cells, 0 at the
- * end: CS_OK, or with err filled CS_ERR_MEMORY or CS_ERR_INVALID (at the row's line, a row of another
- * width). */
+ * end: CS_OK, or with err filled CS_ERR_MEMORY or CS_ERR_INVALID (at its place: a row that cannot be read,
+ * or a row of another width). */
 static cs_status next_row(cs_csv *rows, int nh, const char *path, int *more, cs_error *err) {
     int rc = cs_csv_next(rows);
     *more = rc > 0;
-    if (rc < 0) return cs_error_set(err, CS_ERR_MEMORY, "%s: %s", path, rows->why); /* out of memory */
+    if (rc < 0) return row_problem(rows, path, err);
     if (rc == 0 || rows->count == nh) return CS_OK;
     return cs_error_set(err, CS_ERR_INVALID, "%s:%ld:1: %d cells, the header has %d", path, rows->line,
                         rows->count, nh);
@@ -249,12 +267,13 @@ static int run_header(char *const *head, int nh, run_columns *c) {
            c->decel_50ms >= 0 && c->penetration >= 0;
 }
 
-/* Whether text's first line is the header of a run's timeseries.csv: 1, 0, or -1 out of memory. */
+/* Whether text's first line is the header of a run's timeseries.csv: 1, 0 (a line that cannot be read
+ * too: its reader says why), or -1 out of memory. */
 static int is_run_series(const char *text) {
     cs_csv rows;
     cs_csv_open_text(&rows, text, HISTORY_CSV, MAX_COLS);
     run_columns c;
-    int is = cs_csv_next(&rows) < 0 ? -1 : run_header(rows.cell, rows.count, &c);
+    int is = cs_csv_next(&rows) >= 0 ? run_header(rows.cell, rows.count, &c) : row_oom(&rows) ? -1 : 0;
     cs_csv_close(&rows);
     return is;
 }
@@ -287,9 +306,12 @@ static cs_status read_run_series(const char *path, cs_trace *tr, cs_error *err) 
     cs_csv csv;
     cs_csv_open_text(&csv, f.text, HISTORY_CSV, MAX_COLS);
     int *tension = NULL, nh = 0, more;
-    if (alloc_trace(tr, rows) != 0 || cs_csv_next(&csv) < 0 ||
-        !(tension = calloc(MAX_COLS, sizeof *tension))) {
+    if (alloc_trace(tr, rows) != 0 || !(tension = calloc(MAX_COLS, sizeof *tension))) {
         rc = cs_error_set(err, CS_ERR_MEMORY, "%s: out of memory", path);
+        goto done;
+    }
+    if (cs_csv_next(&csv) < 0) {
+        rc = row_problem(&csv, path, err);
         goto done;
     }
     nh = csv.count;
@@ -369,12 +391,12 @@ static int header_unit(const char *cell, char *unit, size_t size) {
 }
 
 /* The quantities a measured column is read as, each known by a word of its name that begins so (case
- * aside; words are runs of letters and digits, split where a lower-case letter meets a capital:
- * "Vehicle_Speed" and "vehicleSpeed" hold "speed", "extension" no "tension"), its unit then checked
- * against it. An
- * acceleration is the vehicle's along its travel, negative as it slows: read as a deceleration with its
- * sign turned, as a run's ax and ay along its initial heading become its deceleration. A deflection is not
- * a penetration: cablesim's is the barrier's (max_barrier_deflection_m), not the vehicle's. */
+ * aside; words are runs of letters and digits, split where a capital follows a lower-case letter or a
+ * digit a letter: "Vehicle_Speed" and "vehicleSpeed" hold "speed", "decel50ms" "50ms", "extension" no
+ * "tension"), its unit then checked against it. An acceleration is the vehicle's along its travel,
+ * negative as it slows: read as a deceleration with its sign turned, as a run's ax and ay along its
+ * initial heading become its deceleration. A deflection is not a penetration: cablesim's is the
+ * barrier's (max_barrier_deflection_m), not the vehicle's. */
 static const struct measured_name {
     const char *word;  /* held by the name */
     const char *what;  /* "a speed" */
@@ -391,14 +413,18 @@ static const struct measured_name {
     {"tension", "a rope tension", CS_TRACE_TENSION, 1.0, CS_Q_FORCE, "kip or kN"},
 };
 
-/* Words that make a name that holds one of those another quantity than compare's (a word beginning so):
- * its traces are along the vehicle's travel and not averaged (it averages over 50 ms itself). */
+/* Words that make a name that holds one of those another quantity than compare's (a word beginning so; one
+ * ending in a space a whole word, and "50 ms" two): its traces are along the vehicle's travel and not
+ * averaged (it averages over 50 ms itself). The vehicle's axes are x along it, y across and z up, as
+ * crash-test instruments name their channels ("Y Accel", "accel_z"); x is taken as along the travel. */
 static const char *const measured_other[][2] = {
-    {"lateral", "across the travel"},  {"vertical", "across the travel"}, {"50ms", "averaged over time"},
+    {"lateral", "across the travel"},  {"lat ", "across the travel"},  {"transverse", "across the travel"},
+    {"vertical", "across the travel"}, {"vert ", "across the travel"}, {"y ", "across the travel"},
+    {"z ", "across the travel"},       {"50ms", "averaged over time"}, {"50 ms", "averaged over time"},
     {"average", "averaged over time"}, {"avg", "averaged over time"},
 };
 
-/* Whether words (each after a space) has one beginning with start. */
+/* Whether words (each after a space, and a space at the end) has one beginning with start. */
 static int has_word(const char *words, const char *start) {
     size_t n = strlen(start);
     for (const char *w = strchr(words, ' '); w; w = strchr(w + 1, ' '))
@@ -410,16 +436,16 @@ static int has_word(const char *words, const char *start) {
  * path) where it names none, two, or one across the travel or averaged. */
 static const struct measured_name *measured_name(const char *path, int col, const char *cell, int len,
                                                  cs_error *err) {
-    char key[160]; /* the name's words, lower-cased, each after a space: " vehicle speed" */
+    char key[160]; /* its words, lower-cased, each after a space, a space at the end: " vehicle speed " */
     size_t n = 0;
-    for (int i = 0; i < len && n + 2 < sizeof key; i++) {
-        unsigned char c = (unsigned char)cell[i];
+    for (int i = 0; i < len && n + 3 < sizeof key; i++) {
+        unsigned char c = (unsigned char)cell[i], before = i > 0 ? (unsigned char)cell[i - 1] : ' ';
         if (!isalnum(c)) continue;
-        if (i == 0 || !isalnum((unsigned char)cell[i - 1]) ||
-            (isupper(c) && islower((unsigned char)cell[i - 1])))
-            key[n++] = ' ';
+        if (!isalnum(before) || (isupper(c) && islower(before)) || (isdigit(c) && isalpha(before)))
+            key[n++] = ' '; /* a word starts: "vehicleSpeed", "decel50ms", "accel_y" */
         key[n++] = (char)tolower(c);
     }
+    key[n++] = ' ';
     key[n] = '\0';
     const struct measured_name *found = NULL;
     for (size_t k = 0; k < sizeof measured_names / sizeof measured_names[0]; k++) {
@@ -468,8 +494,12 @@ cs_status cs_trace_load_measured(const char *path, cs_units *units, cs_trace *tr
     }
     cs_csv csv;
     cs_csv_open_text(&csv, f.text, HISTORY_CSV, MEASURED_COLS);
-    if (alloc_trace(tr, rows + 1) != 0 || cs_csv_next(&csv) < 0) {
+    if (alloc_trace(tr, rows + 1) != 0) {
         rc = cs_error_set(err, CS_ERR_MEMORY, "%s: out of memory", path);
+        goto done;
+    }
+    if (cs_csv_next(&csv) < 0) {
+        rc = row_problem(&csv, path, err);
         goto done;
     }
     int nh = csv.count, *hcol = csv.cell_col;

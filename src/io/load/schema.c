@@ -734,10 +734,13 @@ int cs_schema_markdown(FILE *out) {
         "`ax` and `ay` along its first heading make its deceleration), `speed` or `velocity` the speed "
         "(mph, km/h, m/s), `penetration` the vehicle's penetration (ft, m), `tension` the rope tension "
         "(kip, kN); a word is a run of letters and digits, or starts at a capital after a lower-case letter "
-        "(`vehicleSpeed`; `extension` is no tension). A column whose name holds none of them (`post "
+        "or at a digit after a letter (`vehicleSpeed`, `decel50ms`; `extension` is no tension). A column "
+        "whose name holds none of them (`post "
         "displacement [m]`; a deflection is the "
         "barrier's, not the vehicle's penetration), two of them, or one across the travel or averaged "
-        "(`lateral`, `vertical`, `50ms`, `average`, `avg`), one whose unit does not fit its name (`speed "
+        "(`lateral`, `lat`, `transverse`, `vertical`, `vert`, the vehicle's axes across it `y` and `z` as "
+        "crash-test channels name them, `Y Accel`, `accel_z`; `50ms` or `50 ms`, `average`, `avg`), one "
+        "whose unit does not fit its name (`speed "
         "[m]`), and a second column of one quantity are refused at their line and column.\n",
         out);
     return ferror(out) ? -1 : 0;

@@ -404,10 +404,16 @@ static const char *varied(const cs_sweep_spec *s, const char *path) {
     return NULL;
 }
 
-/* A fixed value (set: or --set, its place line and col, 0 for --set) on a path the study varies: an error. */
-static void set_not_varied(cs_sweep_spec *s, const char *path, const char *value, int line, int col) {
+/* A fixed value (set: or --set, its place line and col, 0 for --set; given: the option it stands for as
+ * the user gave it, "--dt 2 ms", or NULL) on a path the study varies: an error, naming it as given. */
+static void set_not_varied(cs_sweep_spec *s, const char *path, const char *value, const char *given, int line,
+                           int col) {
     const char *v = varied(s, path);
-    if (v)
+    if (v && given)
+        cs_sweep_error(s, line, col,
+                       "%s: the study varies %s, so a fixed value would not be used (expected no %.*s)",
+                       given, v, (int)strcspn(given, " "), given);
+    else if (v)
         cs_sweep_error(
             s, line, col,
             "%s %s=%s: the study varies %s, so a fixed value would not be used (expected a path that "
@@ -423,7 +429,7 @@ int cs_sweep_spec_add_set(cs_sweep_spec *s, const char *assignment, const char *
     }
     char path[512];
     snprintf(path, sizeof path, "%.*s", (int)(eq - assignment), assignment);
-    set_not_varied(s, path, eq + 1, 0, 0);
+    set_not_varied(s, path, eq + 1, given, 0, 0);
     return push_set(s, path, eq + 1, given, 0, 0);
 }
 
@@ -640,7 +646,7 @@ cs_sweep_spec *cs_sweep_spec_read_buffer(const char *path, const char *data, siz
                     break;
             read_vary(s, units, root);
             for (int i = 0; top_read(set) && i < set->count; i++)
-                set_not_varied(s, set->kids[i]->key, set->kids[i]->text, set->kids[i]->key_line,
+                set_not_varied(s, set->kids[i]->key, set->kids[i]->text, NULL, set->kids[i]->key_line,
                                set->kids[i]->key_col);
             check_runs(s, root);
             read_plots(s, root);
