@@ -251,6 +251,37 @@ static void run_average_undefined_before_a_window(void **state) {
     rmdir(dir);
 }
 
+/* A long name: its quantity's word is found after 200 characters of other words, and a message quotes
+ * the first 57 characters and "..." so that its reason is kept whole. */
+static void measured_long_names(void **state) {
+    (void)state;
+    char long_ok[] = "/tmp/cablesim-runread-XXXXXX", long_bad[] = "/tmp/cablesim-runread-XXXXXX";
+    char text[1200] = "time [s],", name[400] = "";
+    for (int k = 0; k < 25; k++)
+        strcat(name, "vehicle "); /* 200 characters */
+    snprintf(text + strlen(text), sizeof text - strlen(text), "%sspeed [mph]\n0,10\n1,5\n", name);
+    write_temp(long_ok, text);
+    snprintf(text, sizeof text, "time [s],%sspeed [m]\n0,10\n1,5\n", name);
+    write_temp(long_bad, text);
+    cs_error err;
+    cs_units *u = cs_units_open(&err);
+    assert_non_null(u);
+    cs_trace tr;
+    if (cs_trace_load_measured(long_ok, u, &tr, &err) != CS_OK) fail_msg("%s", err.message);
+    assert_true(tr.have[CS_TRACE_SPEED] && fabs(tr.y[CS_TRACE_SPEED][1] - 5 * 0.44704) < 1e-12);
+    cs_trace_free(&tr);
+    assert_int_equal(cs_trace_load_measured(long_bad, u, &tr, &err), CS_ERR_INVALID);
+    char want[400];
+    snprintf(
+        want, sizeof want,
+        "%s:1:10: '%.57s...' names a speed: 'm' is a unit of length, not of speed (expected mph, km/h or "
+        "m/s)",
+        long_bad, name);
+    assert_string_equal(err.message, want);
+    cs_units_free(u);
+    remove(long_ok), remove(long_bad);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(average_50ms_closed_forms),
                                        cmocka_unit_test(measured_units_and_average),
@@ -258,6 +289,7 @@ int main(void) {
                                        cmocka_unit_test(measured_quoted_cells),
                                        cmocka_unit_test(measured_names),
                                        cmocka_unit_test(measured_names_refused),
+                                       cmocka_unit_test(measured_long_names),
                                        cmocka_unit_test(run_average_undefined_before_a_window)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

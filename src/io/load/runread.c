@@ -278,6 +278,17 @@ static int is_run_series(const char *text) {
     return is;
 }
 
+/* A cell as a message quotes it: the first 60 characters and "..." if it is longer, so that a long
+ * cell leaves the message room for its reason. */
+typedef struct {
+    char text[64];
+} brief_cell;
+static const char *brief(const char *cell, brief_cell *b) {
+    if (strlen(cell) <= 60) return cell;
+    snprintf(b->text, sizeof b->text, "%.57s...", cell);
+    return b->text;
+}
+
 /* Cell k of a history's row (a run's or a measured one) as a number: an empty cell is NAN, anything else a
  * finite number whole. */
 static cs_status cell_number(const cs_csv *csv, int k, const char *path, double *x, cs_error *err) {
@@ -291,10 +302,11 @@ static cs_status cell_number(const cs_csv *csv, int k, const char *path, double 
     while (*end == ' ')
         end++;
     if (*end == '\0' && isfinite(*x)) return CS_OK;
+    brief_cell b;
     return cs_error_set(err, CS_ERR_INVALID,
                         "%s:%ld:%d: '%s' is not a number (expected a finite number, or an empty cell where "
                         "there is none)",
-                        path, csv->cell_line[k], csv->cell_col[k], c);
+                        path, csv->cell_line[k], csv->cell_col[k], brief(c, &b));
 }
 
 /* A run's time history, timeseries.csv at path, into tr (cleared, its label and measured set). */
@@ -436,7 +448,7 @@ static int has_word(const char *words, const char *start) {
  * path) where it names none, two, or one across the travel or averaged. */
 static const struct measured_name *measured_name(const char *path, int col, const char *cell, int len,
                                                  cs_error *err) {
-    char key[160]; /* its words, lower-cased, each after a space, a space at the end: " vehicle speed " */
+    char key[1024]; /* its words, lower-cased, each after a space, a space at the end: " vehicle speed " */
     size_t n = 0;
     for (int i = 0; i < len && n + 3 < sizeof key; i++) {
         unsigned char c = (unsigned char)cell[i], before = i > 0 ? (unsigned char)cell[i - 1] : ' ';
@@ -447,6 +459,8 @@ static const struct measured_name *measured_name(const char *path, int col, cons
     }
     key[n++] = ' ';
     key[n] = '\0';
+    brief_cell b;
+    const char *shown = brief(cell, &b);
     const struct measured_name *found = NULL;
     for (size_t k = 0; k < sizeof measured_names / sizeof measured_names[0]; k++) {
         const struct measured_name *m = &measured_names[k];
@@ -454,7 +468,7 @@ static const struct measured_name *measured_name(const char *path, int col, cons
         if (found && (found->trace != m->trace || found->sign != m->sign)) {
             cs_error_set(err, CS_ERR_INVALID,
                          "%s:1:%d: '%s' names both %s and %s (expected one quantity a column)", path, col,
-                         cell, found->what, m->what);
+                         shown, found->what, m->what);
             return NULL;
         }
         found = m;
@@ -463,14 +477,14 @@ static const struct measured_name *measured_name(const char *path, int col, cons
         cs_error_set(err, CS_ERR_INVALID,
                      "%s:1:%d: '%s' names no quantity compared (expected a name holding decel, accel, speed, "
                      "velocity, penetration or tension, e.g. \"speed [mph]\")",
-                     path, col, cell);
+                     path, col, shown);
         return NULL;
     }
     for (size_t k = 0; k < sizeof measured_other / sizeof measured_other[0]; k++)
         if (has_word(key, measured_other[k][0])) {
             cs_error_set(err, CS_ERR_INVALID,
                          "%s:1:%d: '%s' names %s %s (expected the vehicle's along its travel, not averaged)",
-                         path, col, cell, found->what, measured_other[k][1]);
+                         path, col, shown, found->what, measured_other[k][1]);
             return NULL;
         }
     return found;
@@ -513,11 +527,12 @@ cs_status cs_trace_load_measured(const char *path, cs_units *units, cs_trace *tr
     }
     for (int j = 0; j < nh; j++) {
         cs_error unit_err;
+        brief_cell b, b2;
         int name_len = header_unit(head[j], unit, sizeof unit);
         if (name_len < 0) {
             rc = cs_error_set(err, CS_ERR_INVALID,
                               "%s:1:%d: '%s' has no unit (expected \"name [unit]\" or \"name (unit)\")", path,
-                              hcol[j], head[j]);
+                              hcol[j], brief(head[j], &b));
             goto done;
         }
         snprintf(text, sizeof text, "1 %s", unit);
@@ -537,7 +552,7 @@ cs_status cs_trace_load_measured(const char *path, cs_units *units, cs_trace *tr
         }
         if (cs_units_read(units, text, m->q, &factor[j], &unit_err) != CS_OK) {
             rc = cs_error_set(err, CS_ERR_INVALID, "%s:1:%d: '%s' names %s: %s (expected %s)", path, hcol[j],
-                              head[j], m->what, unit_err.message, m->units);
+                              brief(head[j], &b), m->what, unit_err.message, m->units);
             goto done;
         }
         target[j] = m->trace, factor[j] *= m->sign;
@@ -546,7 +561,8 @@ cs_status cs_trace_load_measured(const char *path, cs_units *units, cs_trace *tr
                 rc = cs_error_set(err, CS_ERR_INVALID,
                                   "%s:1:%d: '%s' is a second column of the quantity of '%s' (the header's "
                                   "column %d, at 1:%d) (expected one column of each)",
-                                  path, hcol[j], csv.cell[j], csv.cell[i], i + 1, hcol[i]);
+                                  path, hcol[j], brief(csv.cell[j], &b), brief(csv.cell[i], &b2), i + 1,
+                                  hcol[i]);
                 goto done;
             }
         tr->have[target[j]] = 1;
@@ -570,7 +586,7 @@ cs_status cs_trace_load_measured(const char *path, cs_units *units, cs_trace *tr
                     err, CS_ERR_INVALID,
                     "%s:%ld:%d: '%s' is too large (expected at most 1e12 in SI units, far beyond "
                     "any crash history)",
-                    path, line, col[j], cells[j]);
+                    path, line, col[j], brief(cells[j], &(brief_cell){0}));
                 goto done;
             }
             if (j == 0)
