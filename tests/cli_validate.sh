@@ -50,6 +50,10 @@ want_rc=0
 [ "$want_dec" = met ] && [ "$want_exit" = met ] && [ "$want_brk" = met ] || want_rc=3
 check "APS1's targets judged as the pinned prediction implies: $verdict ${want_brk/-/ }, exit $want_rc ($rc)" \
     '[ $rc -eq $want_rc ] && grep -q "$verdict ${want_brk/-/ }\." "$dir/crash/validation.md"'
+# the two ropes at APS3's peak deflection, against the hand calculation (c) of docs/theory.md: with the
+# posts standing the upper rope, holding 0.279 m more rope, is idle, at most 0.03 of the lower's tension
+check "APS3's upper rope idle at the peak, under the hand calculation's bound" \
+    'awk -F"|" "\$2 ~ /^ aps3 / { n++; r = \$7 + 0; lo = \$5 + 0; if (!(r > 0 && r <= 0.03 && lo > 100)) bad = 1 } END { exit bad || n != 1 }" "$dir/crash/validation.md"'
 "$cs" validate -o "$dir/crash" --only crash --report-only >/dev/null 2>&1
 check "validate --report-only exits 0 whatever the targets" '[ $? -eq 0 ]'
 # Each crash test's failed posts, per side, are those by rotation limit, shear and pullout added up

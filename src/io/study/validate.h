@@ -68,16 +68,19 @@ int cs_validate_finish(cs_validate_suite *s);
 typedef struct cs_validate_result {
     int ok;
     cs_summary sm;
-    double cable_break[2]; /* s, < 0 if not broken (along the rope or at an end fitting) */
-    double absorbed;       /* J: initial kinetic energy minus what is left */
-    int post_failure;      /* the first post failure's event type, -1 if none */
-    int released;          /* cables let go by their posts (cable_release, cable_pulled_off events) */
-    double post_failure_t; /* its time, s */
-    char how[2][48];       /* each rope: where and when it broke, or that it held with its peak */
-    double slide[2];       /* each dead-man's plough through the soil, m (-1: rigid) */
-    double contact_pen;    /* the face's penetration at the first output with a force on it, m (NAN: none) */
-    double failure_pen;    /* and at the first output after the first post failure, m (NAN: none) */
-    int events_seen;       /* the events the outputs have looked at */
+    double cable_break[2];  /* s, < 0 if not broken (along the rope or at an end fitting) */
+    double absorbed;        /* J: initial kinetic energy minus what is left */
+    int post_failure;       /* the first post failure's event type, -1 if none */
+    int released;           /* cables let go by their posts (cable_release, cable_pulled_off events) */
+    double post_failure_t;  /* its time, s */
+    char how[2][48];        /* each rope: where and when it broke, or that it held with its peak */
+    double slide[2];        /* each dead-man's plough through the soil, m (-1: rigid) */
+    double contact_pen;     /* the face's penetration at the first output with a force on it, m (NAN: none) */
+    double failure_pen;     /* and at the first output after the first post failure, m (NAN: none) */
+    int events_seen;        /* the events the outputs have looked at */
+    double peak_pen;        /* the face's largest penetration at an output, m (-HUGE_VAL: none yet) */
+    double peak_t;          /* its time, s */
+    double peak_tension[2]; /* cables 0 and 1's largest span tension then, N (NAN: no such cable) */
 } cs_validate_result;
 
 enum {

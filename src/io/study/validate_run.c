@@ -74,11 +74,19 @@ int cs_validate_job_count(const cs_validate_suite *s) {
 }
 
 /* At each output: the face's penetration where it first bears on something and where the first post
- * failure has just happened (the travel between, to an output interval, is a bogie test's deflection). */
+ * failure has just happened (the travel between, to an output interval, is a bogie test's deflection);
+ * the two first ropes' tensions where the penetration is largest. */
 static void watch_travel(const cs_model *m, const cs_state *s, void *user) {
     cs_validate_result *r = user;
     cs_vehicle_view v = {.size = sizeof v};
     cs_state_vehicle(m, s, &v, NULL);
+    if (v.penetration > r->peak_pen) {
+        r->peak_pen = v.penetration, r->peak_t = v.t;
+        for (int c = 0; c < 2; c++) {
+            cs_cable_view cv = {.size = sizeof cv};
+            r->peak_tension[c] = cs_state_cable(m, s, c, &cv, NULL) == CS_OK ? cv.max_tension : NAN;
+        }
+    }
     if (isnan(r->contact_pen) && v.face_force > 0.0) r->contact_pen = v.penetration;
     int n = cs_state_event_count(s);
     for (; r->events_seen < n && isnan(r->failure_pen); r->events_seen++) {
@@ -96,6 +104,7 @@ void cs_validate_run(cs_validate_suite *s, int i) {
     cs_error err = {0};
     cs_state *st = j->model ? cs_state_create(j->model, &err) : NULL;
     j->r.contact_pen = j->r.failure_pen = NAN, j->r.events_seen = 0;
+    j->r.peak_pen = -HUGE_VAL, j->r.peak_tension[0] = j->r.peak_tension[1] = NAN;
     j->r.ok = st && cs_run(j->model, st, watch_travel, &j->r, &err) == CS_OK;
     if (j->r.ok)
         collect(j->model, st, &j->r);
