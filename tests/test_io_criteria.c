@@ -124,6 +124,8 @@ static void limits(void **state) {
     assert_int_equal(verdict_of("nchrp-350", "3-11", &r, "M"), CS_VERDICT_PASS);
     s = redirected(15.1);
     assert_int_equal(verdict_of("nchrp-350", "3-11", &r, "M"), CS_VERDICT_FAIL);
+    s = redirected(0.6 * test_of("nchrp-350", "3-11").angle / DEG); /* at 60%: not less than it */
+    assert_int_equal(verdict_of("nchrp-350", "3-11", &r, "M"), CS_VERDICT_FAIL);
     /* A: through fails, stopped passes, the time limit is not judged */
     s.outcome = CS_BREAKTHROUGH;
     assert_int_equal(verdict_of("mash", "3-11", &r, "A"), CS_VERDICT_FAIL);

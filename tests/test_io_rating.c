@@ -177,6 +177,8 @@ static void roadside_test_conditions(void **state) {
     assert_true(r.contained && r.redirected && r.exit_angle_within);
     s.exit_angle_deg = 0.61 * t[0].angle * 180 / 3.14159265358979323846;
     assert_false(cs_roadside_read(&t[0], &s).exit_angle_within);
+    s.exit_angle_deg = 0.6 * t[0].angle / (3.14159265358979323846 / 180.0); /* at 60%: not less than it */
+    assert_false(cs_roadside_read(&t[0], &s).exit_angle_within);
     s.outcome = CS_BREAKTHROUGH;
     r = cs_roadside_read(&t[0], &s);
     assert_false(r.contained || r.redirected);

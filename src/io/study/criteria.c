@@ -143,7 +143,8 @@ static void exit_angle(list *l, const cs_roadside_test *t, const cs_summary *s) 
         return;
     }
     double lim = 0.6 * t->angle / CS_DEG;
-    snprintf(add(l, "M", name, s->exit_angle_deg < lim ? CS_VERDICT_PASS : CS_VERDICT_FAIL)->detail,
+    snprintf(add(l, "M", name, cs_roadside_read(t, s).exit_angle_within ? CS_VERDICT_PASS : CS_VERDICT_FAIL)
+                 ->detail,
              sizeof(cs_criterion){0}.detail, "exit %.1f deg (60%% of %.1f deg: %.1f deg)", s->exit_angle_deg,
              t->angle / CS_DEG, lim);
 }

@@ -283,6 +283,6 @@ cs_roadside_result cs_roadside_read(const cs_roadside_test *test, const cs_summa
     r.working_width_m = summary->working_width_m;
     r.exit_speed_mps = cs_outcome_exits(summary->outcome) ? summary->exit_speed_mps : -1.0;
     r.exit_angle_deg = r.exit_speed_mps >= 0.0 ? summary->exit_angle_deg : 0.0;
-    r.exit_angle_within = r.redirected && r.exit_angle_deg <= 0.6 * test->angle / CS_DEG;
+    r.exit_angle_within = r.redirected && r.exit_angle_deg < 0.6 * test->angle / CS_DEG; /* "less than" */
     return r;
 }

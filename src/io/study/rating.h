@@ -92,8 +92,8 @@ typedef struct cs_roadside_test {
 int cs_roadside_tests(const char *standard, int level, const char *name, cs_roadside_test *out);
 
 /* How a run of a roadside test reads: contained and redirected (it left on the traffic side) or
- * stopped, not broken through; the exit angle against NCHRP 350's preferred limit, 60% of the impact
- * angle (UNCONFIRMED). */
+ * stopped, not broken through; the exit angle against NCHRP 350's preferred limit (criterion M: less
+ * than 60% of the impact angle; docs/ratings.md). */
 typedef struct cs_roadside_result {
     int contained;          /* redirected or stopped, not through */
     int redirected;         /* left the barrier on the traffic side */
@@ -101,7 +101,7 @@ typedef struct cs_roadside_result {
     double working_width_m; /* m */
     double exit_speed_mps;  /* m/s, < 0 if it did not leave */
     double exit_angle_deg;  /* degrees */
-    int exit_angle_within;  /* exit angle within 60% of the impact angle */
+    int exit_angle_within;  /* redirected, its exit angle less than 60% of the impact angle */
 } cs_roadside_result;
 
 cs_roadside_result cs_roadside_read(const cs_roadside_test *test, const cs_summary *summary);
