@@ -210,8 +210,50 @@ static void test_as_run(void **state) {
     assert_int_equal(cs_roadside_test_as_run(&v, 27.6, 90 * DEG, &t), 0);
 }
 
+/* A value judged against a limit never prints the same as the limit: the digits that tell them apart */
+static void verdict_digits(void **state) {
+    (void)state;
+    cs_summary s = redirected(14.98); /* 3-11: 60% of 25 deg is 15 deg */
+    cs_occupant_risk o = {0};
+    cs_exit_box box = {4.9, 10.0, 0.0, 9.96, 0, 1.0};
+    cs_test_result r = {&s, &o, NULL, 75.04 * DEG, 10.0 * DEG, &box};
+    struct {
+        const char *std, *test, *id;
+        double oiv_x, exit_angle;
+        cs_verdict v;
+        const char *detail;
+    } cases[] = {
+        {"nchrp-350", "3-11", "M", 0.0, 14.98, CS_VERDICT_PASS,
+         "exit 14.98 deg (60% of 25.0 deg: 15.00 deg)"},
+        {"nchrp-350", "3-11", "F", 0.0, 14.98, CS_VERDICT_FAIL,
+         "roll 75.04 deg, pitch 10.0 deg (limit 75) over the run; after it: not judged (NCHRP 350 gives no "
+         "number; MASH's 75 deg is used)"},
+        {"nchrp-350", "3-10", "H", 12.004, 14.98, CS_VERDICT_FAIL,
+         "longitudinal 12.004 m/s (over the preferred 9, maximum 12); lateral 0.00 m/s (within the preferred "
+         "9, maximum 12)"},
+        {"mash", "3-11", "H", 9.1004, 14.98, CS_VERDICT_PASS,
+         "longitudinal 9.1004 m/s (over the preferred 9.1, maximum 12.2); lateral 0.00 m/s (within the "
+         "preferred 9.1, maximum 12.2)"},
+        {"mash", "3-11", "exit box", 0.0, 14.98, CS_VERDICT_FAIL,
+         "a wheel crosses the line 4.90 m from the barrier 9.96 m along (box 10.00 m); on the path "
+         "extrapolated straight from the loss of contact"},
+        /* a value well apart keeps its usual digits */
+        {"nchrp-350", "3-11", "M", 0.0, 17.5, CS_VERDICT_FAIL, "exit 17.5 deg (60% of 25.0 deg: 15.0 deg)"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        cs_criterion c[CS_CRITERIA_MAX];
+        char ids[128];
+        s = redirected(cases[i].exit_angle), o.oiv_x = cases[i].oiv_x;
+        const cs_criterion *k =
+            find(c, judge(cases[i].std, cases[i].test, &r, c, ids, sizeof ids), cases[i].id);
+        assert_int_equal(k->verdict, cases[i].v);
+        assert_string_equal(k->detail, cases[i].detail);
+    }
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(criteria_of_each_test), cmocka_unit_test(limits),
-                                       cmocka_unit_test(exit_box), cmocka_unit_test(test_as_run)};
+                                       cmocka_unit_test(exit_box), cmocka_unit_test(test_as_run),
+                                       cmocka_unit_test(verdict_digits)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -14,6 +14,17 @@ const char *cs_verdict_name(cs_verdict v) {
     return v == CS_VERDICT_PASS ? "pass" : v == CS_VERDICT_FAIL ? "FAIL" : "not judged";
 }
 
+/* The decimals, from d up to 4, at which a and b print differently (the same if they are equal): a
+ * value judged against a limit never reads the same as the limit it passed or failed. */
+static int apart(double a, double b, int d) {
+    char x[64], y[64];
+    for (; d < 4 && a != b; d++) {
+        snprintf(x, sizeof x, "%.*f", d, a), snprintf(y, sizeof y, "%.*f", d, b);
+        if (strcmp(x, y) != 0) break;
+    }
+    return d;
+}
+
 void cs_vehicle_wheels(const cs_vehicle_view *p, const cs_vehicle_def *v, double w[4][2]) {
     double c = cos(p->yaw), s = sin(p->yaw), rear = v->wheelbase - v->cg_to_front_axle;
     const double bx[4] = {v->cg_to_front_axle, v->cg_to_front_axle, -rear, -rear};
@@ -89,19 +100,23 @@ static void upright(list *l, const char *id, const cs_test_result *r, const char
     double lim = 75.0 * CS_DEG;
     cs_criterion *c =
         add(l, id, name, r->roll_peak <= lim && r->pitch_peak <= lim ? CS_VERDICT_PASS : CS_VERDICT_FAIL);
+    double roll = r->roll_peak / CS_DEG, pitch = r->pitch_peak / CS_DEG;
     snprintf(c->detail, sizeof c->detail,
-             "roll %.1f deg, pitch %.1f deg (limit 75) over the run; after it: not "
+             "roll %.*f deg, pitch %.*f deg (limit 75) over the run; after it: not "
              "judged%s",
-             r->roll_peak / CS_DEG, r->pitch_peak / CS_DEG, note);
+             apart(roll, 75.0, 1), roll, apart(pitch, 75.0, 1), pitch, note);
 }
 
 /* An occupant risk value against its maximum (and preferred limit, 0 if none). */
 static int within(char *buf, size_t size, const char *what, double v, const char *unit, double preferred,
                   double max) {
     char pref[64] = "";
-    if (preferred > 0.0)
+    int d = apart(v, max, 2);
+    if (preferred > 0.0) {
         snprintf(pref, sizeof pref, "%s the preferred %.4g, ", v <= preferred ? "within" : "over", preferred);
-    snprintf(buf, size, "%s %.2f %s (%smaximum %.4g)", what, v, unit, pref, max);
+        if (apart(v, preferred, 2) > d) d = apart(v, preferred, 2);
+    }
+    snprintf(buf, size, "%s %.*f %s (%smaximum %.4g)", what, d, v, unit, pref, max);
     return v <= max;
 }
 
@@ -143,10 +158,11 @@ static void exit_angle(list *l, const cs_roadside_test *t, const cs_summary *s) 
         return;
     }
     double lim = 0.6 * t->angle / CS_DEG;
+    int d = apart(s->exit_angle_deg, lim, 1);
     snprintf(add(l, "M", name, cs_roadside_read(t, s).exit_angle_within ? CS_VERDICT_PASS : CS_VERDICT_FAIL)
                  ->detail,
-             sizeof(cs_criterion){0}.detail, "exit %.1f deg (60%% of %.1f deg: %.1f deg)", s->exit_angle_deg,
-             t->angle / CS_DEG, lim);
+             sizeof(cs_criterion){0}.detail, "exit %.*f deg (60%% of %.1f deg: %.*f deg)", d,
+             s->exit_angle_deg, t->angle / CS_DEG, d, lim);
 }
 
 /* MASH's exit box. */
@@ -166,8 +182,8 @@ static void exit_box(list *l, const cs_test_result *r) {
     cs_criterion *c = add(l, "exit box", name, e->cross_along >= e->b ? CS_VERDICT_PASS : CS_VERDICT_FAIL);
     if (isfinite(e->cross_along))
         snprintf(c->detail, sizeof c->detail,
-                 "a wheel crosses the line %.2f m from the barrier %.1f m along (box %.1f m); %s", e->a,
-                 e->cross_along, e->b,
+                 "a wheel crosses the line %.2f m from the barrier %.*f m along (box %.*f m); %s", e->a,
+                 apart(e->cross_along, e->b, 1), e->cross_along, apart(e->cross_along, e->b, 1), e->b,
                  e->crossed_in_run ? "in the run"
                                    : "on the path extrapolated straight from the loss of contact");
     else
