@@ -271,6 +271,7 @@ static int rate_antiram(cs_loader *l, const char *file, cs_standard std, const c
     }
     if (rc == 0) {
         char text[256];
+        if (last.reference[0]) printf("  penetration as the standard measures it: %s\n", last.reference);
         cs_rating_text(found ? &best : &last, text, sizeof text);
         printf("rating: %s\n", text);
     }

@@ -34,6 +34,11 @@ out=$("$cs" rate "$tmp/pu.yaml" --standard astm-f2656 --class PU40 2>&1)
 check "rate --class PU40 on a PU model (exit 0)" '[ $? -eq 0 ] || { echo "$out"; false; }'
 check "PU40: the model's PU at 40 mph, stopped, P2" 'grep -qE "^  PU   40 mph  stopped +penetration [0-9.]+ m .* designation as run PU40/P2$" <<<"$out" && grep -qxF "rating: ASTM F2656 PU40/P2" <<<"$out"'
 check "PU40: its own vehicle named" 'grep -q "(test vehicle PU, the model.s 2300 kg;" <<<"$out"'
+check "PU40: the penetration as ASTM F2656 measures a PU's" 'grep -qxF "  penetration as the standard measures it: vehicle front, from the barrier'"'"'s protected-side face" <<<"$out"'
+out=$("$cs" rate examples/aps3.yaml --standard astm-f2656 --class M40 2>&1)
+check "M40: the penetration from the M's cargo bed, named" 'grep -qxF "  penetration as the standard measures it: front of the cargo bed, from the barrier'"'"'s protected-side face" <<<"$out"'
+out=$("$cs" rate examples/aps3.yaml --standard sd-std-02.01 --class K8 2>&1)
+check "K8: the penetration from the attack face, named" 'grep -qxF "  penetration as the standard measures it: vehicle front, from the attack face to where it stopped" <<<"$out"'
 out=$("$cs" rate examples/aps3.yaml --standard astm-f2656 --set vehicle=C --class C50 --set 'scenario.t_end=0.05 s' 2>&1)
 check "--set vehicle=C is honoured: the C runs" '[ $? -eq 0 ] && grep -q "(test vehicle C, the model.s 1102 kg;" <<<"$out" && grep -q "^  C    50 mph " <<<"$out"'
 out=$("$cs" rate examples/aps3.yaml --standard astm-f2656 --class PU50 2>&1)
