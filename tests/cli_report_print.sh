@@ -72,6 +72,8 @@ if plain_only "the pages in chromium: the data sheets and their prints on A4 and
     done
     check "RS1's sheet: the not-judged line" 'grep -q "Not judged (D, K): the model cannot tell; no pass is implied." "$dom"'
     check "RS1's sheet: the occupant risk" 'grep -q "<th scope=\"row\">OIV long., lat.</th><td>[0-9.]*, [0-9.]* m/s</td>" "$dom"'
+    check "RS1's story gives the impact angle as the sheet does (25.7 deg)" \
+        'grep -q "<th scope=\"row\">angle</th><td>25.7°</td>" "$dom" && grep -q "at 25.7° to the barrier line" "$dom"'
     check "RS1's sheet: five sequential pictures, top and side" '[ "$(grep -o "<svg[^>]*class=\"pic top\"" "$dom" | wc -l)" = 5 ] && [ "$(grep -o "<svg[^>]*class=\"pic side\"" "$dom" | wc -l)" = 5 ]'
     check "APS3's sheet: its ASTM F2656 designation" 'grep -q -E "<th scope=\"row\">ASTM F2656</th><td>[^<]*</td><td class=\"verdict rating\">M40/P[1-4]</td>" "$tmp/aps3.dom"'
 fi

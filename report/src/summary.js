@@ -57,7 +57,7 @@ export function story(data) {
     );
   parts.push(
     `A ${pair('mass', data.vehicle.mass)} vehicle struck the ${data.name} barrier (${cables} cable${cables === 1 ? '' : 's'} on ${posts} posts) ` +
-      `${Math.abs(angle - 90) < 0.5 ? 'head-on' : `at ${fmt(angle, 0)}° to the barrier line`} at ${pair('speed', sc.speed)}, ` +
+      `${Math.abs(angle - 90) < 0.5 ? 'head-on' : `at ${fmt(angle, 1)}° to the barrier line`} at ${pair('speed', sc.speed)}, ` +
       `${sc.impact_at_corner ? 'its leading front corner' : 'centred'} at x = ${pair('length', sc.impact_x)} along the barrier.`,
   );
   if (s.outcome === 'stopped')
