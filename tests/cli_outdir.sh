@@ -65,6 +65,17 @@ out=$("$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" 2>&1)
 check "a dead run's lock is taken over" '[ $? -eq 0 ] && [ -s "$busy/summary.json" ] && [ ! -e "$busy/.cablesim-lock" ] || { echo "$out"; false; }'
 echo 999999999 >"$busy/.cablesim-lock"
 check "a lock file naming no live process is taken over" '"$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" >/dev/null 2>&1'
+# A file named .cablesim-lock that no cablesim made (a hard link to a file elsewhere, or a file of text) is
+# not a lock: it is refused, even with --force, and neither truncated nor removed.
+echo "precious data" >"$tmp/precious.txt"
+mkdir -p "$tmp/hardlinked"
+ln "$tmp/precious.txt" "$tmp/hardlinked/.cablesim-lock"
+out=$("$cs" run examples/aps3.yaml -o "$tmp/hardlinked" --t-end "10 ms" --force 2>&1)
+check "a hard link named .cablesim-lock is refused, the file it shares kept" '[ $? -eq 1 ] && grep -q "nothing run: $tmp/hardlinked/.cablesim-lock: not a lock of cablesim" <<<"$out" && [ "$(cat "$tmp/precious.txt")" = "precious data" ] && [ -e "$tmp/hardlinked/.cablesim-lock" ] && [ ! -e "$tmp/hardlinked/summary.json" ] || { echo "$out"; false; }'
+mkdir -p "$tmp/textlock"
+echo "my notes" >"$tmp/textlock/.cablesim-lock"
+out=$("$cs" run examples/aps3.yaml -o "$tmp/textlock" --t-end "10 ms" 2>&1)
+check "a file of text named .cablesim-lock is refused and kept" '[ $? -eq 1 ] && grep -q "not a lock of cablesim" <<<"$out" && [ "$(cat "$tmp/textlock/.cablesim-lock")" = "my notes" ] || { echo "$out"; false; }'
 
 # A model's name never steers where the files go: results/NAME with a NAME of '..' is refused at its
 # place, and nothing is written (tests/bad/name_*.yaml: the other refusals).

@@ -71,8 +71,21 @@ static long lock_holder(int fd) {
     return n > 0 ? strtol(text, NULL, 10) : 0;
 }
 
+/* Whether the lock file fd (st its status) is one cablesim made: a regular file of one name (no hard link
+ * to a file elsewhere), empty or holding a pid. Anything else is a user's file: it is neither truncated nor
+ * removed. */
+static int lock_is_ours(int fd, const struct stat *st) {
+    char text[32];
+    if (!S_ISREG(st->st_mode) || st->st_nlink != 1 || st->st_size >= (off_t)sizeof text) return 0;
+    ssize_t n = pread(fd, text, sizeof text, 0);
+    if (n < 0 || n != st->st_size) return 0;
+    for (ssize_t i = 0; i < n; i++)
+        if (!(text[i] >= '0' && text[i] <= '9') && !(text[i] == '\n' && i == n - 1)) return 0;
+    return 1;
+}
+
 /* DIR/.cablesim-lock, created if missing, locked (fcntl) and holding this pid. A lock whose holder died
- * was released by the system and is taken over. */
+ * was released by the system and is taken over; a file of that name that is not a lock is refused. */
 static cs_status take_lock(cs_outdir *out, cs_error *err) {
     char path[PATH_SIZE];
     full_path(out, CS_OUT_LOCK, path, sizeof path);
@@ -107,6 +120,13 @@ static cs_status take_lock(cs_outdir *out, cs_error *err) {
         struct stat held, now;
         if (fstat(fd, &held) == 0 && lstat(path, &now) == 0 && held.st_dev == now.st_dev &&
             held.st_ino == now.st_ino) {
+            if (!lock_is_ours(fd, &held)) {
+                close(fd);
+                return cs_error_set(err, CS_ERR_IO,
+                                    "%s: not a lock of cablesim's (a file of yours, or a link to one): it is "
+                                    "kept; remove it or write elsewhere",
+                                    path);
+            }
             char pid[32];
             int n = snprintf(pid, sizeof pid, "%ld\n", (long)getpid());
             if (ftruncate(fd, 0) != 0 || pwrite(fd, pid, (size_t)n, 0) != n) {
