@@ -102,5 +102,15 @@ else
 fi
 "$cs" compare "$own" -o "$tmp/cmp" >/dev/null 2>&1
 check "compare reruns into its own folder" '"$cs" compare "$own" -o "$tmp/cmp" >/dev/null 2>&1 && [ -s "$tmp/cmp/compare.csv" ]'
+# compare into the folder of a run it compares would remove that run's files (its manifest's): refused.
+cp -r "$own" "$tmp/own2"
+before=$(cd "$own" && md5sum * | sort)
+out=$("$cs" compare "$own" "$tmp/own2" -o "$own/" --force 2>&1)
+check "compare into a run's folder it compares is refused, the run kept" '[ $? -eq 1 ] && grep -qF "nothing written: $own/ is the folder of the run $own compared" <<<"$out" && [ "$(cd "$own" && md5sum * | sort)" = "$before" ] && [ ! -e "$own/compare.csv" ] || { echo "$out"; false; }'
+out=$(cd "$own" && "$cs" compare "$tmp/own2" --measured timeseries.csv -o . 2>&1)
+check "compare into the folder of its measured history is refused, the run there kept" '[ $? -eq 1 ] && grep -qF "nothing written: . is the folder of the measured history timeseries.csv compared" <<<"$out" && [ "$(cd "$own" && md5sum * | sort)" = "$before" ] || { echo "$out"; false; }'
+mkdir -p "$tmp/measured" && cp "$own/timeseries.csv" "$tmp/measured/test.csv"
+out=$("$cs" compare "$tmp/own2" --measured "$tmp/measured/test.csv" -o "$tmp/measured" --force 2>&1)
+check "compare --force writes beside a measured history in a folder of the user's" '[ $? -eq 0 ] && [ -s "$tmp/measured/compare.csv" ] && cmp -s "$own/timeseries.csv" "$tmp/measured/test.csv" || { echo "$out"; false; }'
 
 finish

@@ -88,7 +88,8 @@ enum {
  * @param dir the folder (made if need be)
  * @param flags 0 or CS_COMPARE_FORCE
  * @param err filled on failure (may be NULL)
- * @return CS_OK, or CS_ERR_IO with err filled (nothing written). */
+ * @return CS_OK, or CS_ERR_IO with err filled (nothing written), also when dir is the folder of a run
+ * compared (writing there would remove that run's files). */
 CS_API cs_status cs_compare_write(const cs_compare *compare, const char *dir, int flags, cs_error *err);
 
 /** With a measured history: print each run's validation metrics against it (Sprague-Geers M, P, C, the

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "cablesim/compare.h"
 #include "load/runread.h"
@@ -18,7 +19,29 @@
 struct cs_compare {
     int count, reference;
     cs_trace traces[CS_COMPARE_MAX_RUNS + 1];
+    struct {
+        dev_t dev;
+        ino_t ino;
+    } folders[CS_COMPARE_MAX_RUNS + 1]; /* the runs' folders and the measured file's: none is written into */
 };
+
+/* Keep the device and inode of the folder path (a run's), or of the one holding it (a measured file's)
+ * when cablesim wrote it (it holds a manifest, whose files a comparison there would remove). */
+static void keep_folder(cs_compare *c, int i, const char *path, int holding) {
+    char dir[4096];
+    snprintf(dir, sizeof dir, "%s", path);
+    char *slash = strrchr(dir, '/');
+    if (holding && !slash)
+        snprintf(dir, sizeof dir, ".");
+    else if (holding)
+        slash[slash == dir] = '\0'; /* "/f": "/" */
+    char manifest[4200];
+    snprintf(manifest, sizeof manifest, "%s/%s", dir, CS_OUT_MANIFEST);
+    struct stat st;
+    int known = (!holding || lstat(manifest, &st) == 0) && stat(dir, &st) == 0;
+    c->folders[i].dev = known ? st.st_dev : 0;
+    c->folders[i].ino = known ? st.st_ino : 0;
+}
 
 cs_compare_def cs_default_compare_def(void) {
     return (cs_compare_def){.size = sizeof(cs_compare_def)};
@@ -50,12 +73,14 @@ cs_status cs_compare_create(const cs_compare_def *given, cs_compare **out, cs_er
             rc = cs_error_set(err, CS_ERR_INVALID, "cs_compare_def: run %d is NULL", i);
         else if (cs_trace_load_run(def.runs[i], &c->traces[c->count], &read) != CS_OK)
             rc = cs_status_set(err, CS_ERR_IO, read.message);
+        else
+            keep_folder(c, i, def.runs[i], 0);
     if (rc == CS_OK && def.measured) {
         cs_units *units = cs_units_open(&read);
         if (!units || cs_trace_load_measured(def.measured, units, &c->traces[c->count], &read) != CS_OK)
             rc = cs_status_set(err, CS_ERR_IO, read.message);
         else
-            c->reference = c->count++;
+            keep_folder(c, c->count, def.measured, 1), c->reference = c->count++;
         cs_units_free(units);
     }
     if (rc != CS_OK) {
@@ -110,6 +135,15 @@ cs_status cs_compare_get(const cs_compare *c, int k, int i, cs_compare_row *out,
 
 cs_status cs_compare_write(const cs_compare *c, const char *dir, int flags, cs_error *err) {
     if (!c || !dir) return cs_status_set(err, CS_ERR_INVALID, "cs_compare_write: no comparison or no folder");
+    /* a run's folder holds its manifest's files, which a comparison written there would remove */
+    struct stat at;
+    for (int i = 0; stat(dir, &at) == 0 && i < c->count; i++)
+        if (c->folders[i].ino == at.st_ino && c->folders[i].dev == at.st_dev)
+            return cs_error_set(err, CS_ERR_IO,
+                                "%s is the folder of %s %s compared: writing there would remove a run's "
+                                "files; choose another folder",
+                                dir, c->traces[i].measured ? "the measured history" : "the run",
+                                c->traces[i].label);
     cs_error wrote;
     cs_outdir out;
     cs_status st = cs_out_open(&out, dir, flags & CS_COMPARE_FORCE ? CS_OUT_FORCE : 0, err);
