@@ -65,6 +65,12 @@ out=$("$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" 2>&1)
 check "a dead run's lock is taken over" '[ $? -eq 0 ] && [ -s "$busy/summary.json" ] && [ ! -e "$busy/.cablesim-lock" ] || { echo "$out"; false; }'
 echo 999999999 >"$busy/.cablesim-lock"
 check "a lock file naming no live process is taken over" '"$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" >/dev/null 2>&1'
+# A FIFO named .cablesim-manifest is refused at once, not waited on.
+mkdir -p "$tmp/fifo"
+mkfifo "$tmp/fifo/.cablesim-manifest"
+out=$(timeout 10 "$cs" run examples/aps3.yaml -o "$tmp/fifo" --t-end "10 ms" 2>&1)
+check "a FIFO as the manifest is refused at once" '[ $? -eq 1 ] && grep -q "nothing run: $tmp/fifo/.cablesim-manifest: not a regular file" <<<"$out" && [ "$(ls -A "$tmp/fifo")" = .cablesim-manifest ] || { echo "$out"; false; }'
+
 # A file named .cablesim-lock that no cablesim made (a hard link to a file elsewhere, or a file of text) is
 # not a lock: it is refused, even with --force, and neither truncated nor removed.
 echo "precious data" >"$tmp/precious.txt"

@@ -164,8 +164,13 @@ static void release(cs_outdir *out) {
 static cs_status read_manifest(cs_outdir *out, cs_error *err) {
     char path[PATH_SIZE];
     full_path(out, CS_OUT_MANIFEST, path, sizeof path);
-    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW);
+    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK); /* a FIFO: no wait for a writer */
     if (fd < 0 && errno == ENOENT) return CS_OK;
+    struct stat st;
+    if (fd >= 0 && (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode))) {
+        close(fd);
+        return cs_error_set(err, CS_ERR_IO, "%s: not a regular file, so not a manifest of cablesim's", path);
+    }
     FILE *f = fd < 0 ? NULL : fdopen(fd, "r");
     if (!f) {
         cs_status st = cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
