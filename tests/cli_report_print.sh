@@ -71,7 +71,10 @@ if plain_only "the pages in chromium: the data sheets and their prints on A4 and
         check "RS1's sheet: $id not judged" 'grep -q "<th scope=\"row\">$id</th><td>[^<]*</td><td class=\"verdict nj\">not judged</td>" "$dom"'
     done
     check "RS1's sheet: the not-judged line" 'grep -q "Not judged (D, K): the model cannot tell; no pass is implied." "$dom"'
-    check "RS1's sheet: the occupant risk" 'grep -q "<th scope=\"row\">OIV long., lat.</th><td>[0-9.]*, [0-9.]* m/s</td>" "$dom"'
+    # the sheet's OIV as the terminal prints it: the occupant impact line's two values, to 2 decimals
+    oiv=$(grep -oE "OIV [0-9.]+ m/s \([0-9.]+ ft/s\) longitudinal, [0-9.]+ m/s" "$tmp/rs1.out" | awk '{ print $2 ", " $7 }')
+    check "RS1's sheet: the occupant impact velocities as the terminal gives them ($oiv m/s)" \
+        '[ -n "$oiv" ] && grep -qF "<th scope=\"row\">OIV long., lat.</th><td>$oiv m/s</td>" "$dom"'
     check "RS1's story gives the impact angle as the sheet does (25.7 deg)" \
         'grep -q "<th scope=\"row\">angle</th><td>25.7°</td>" "$dom" && grep -q "at 25.7° to the barrier line" "$dom"'
     check "RS1's sheet: five sequential pictures, top and side" '[ "$(grep -o "<svg[^>]*class=\"pic top\"" "$dom" | wc -l)" = 5 ] && [ "$(grep -o "<svg[^>]*class=\"pic side\"" "$dom" | wc -l)" = 5 ]'

@@ -147,8 +147,8 @@ export function dataSheet(data) {
   const right = [
     block('Occupant risk', o
       ? [
-          ['OIV long., lat.', `${f(o.oiv_longitudinal_mps)}, ${f(o.oiv_lateral_mps)} m/s`],
-          ['ORA long., lat.', `${f(o.ora_longitudinal_g)}, ${f(o.ora_lateral_g)} g`],
+          ['OIV long., lat.', `${f(o.oiv_longitudinal_mps, 2)}, ${f(o.oiv_lateral_mps, 2)} m/s`],
+          ['ORA long., lat.', `${f(o.ora_longitudinal_g, 2)}, ${f(o.ora_lateral_g, 2)} g`],
           ['THIV', `${f(o.thiv_kmh)} km/h`],
           ['PHD', `${f(o.phd_g)} g`],
           ['ASI', f(o.asi, 2)],
