@@ -28,6 +28,12 @@ const char *cs_validate_unknown_part(const char *only, size_t *len) {
     return NULL;
 }
 
+/* A post's failure: at its rotation limit, pulled out or sheared. */
+static int post_failure(cs_event_type type) {
+    return type == CS_EVENT_POST_ROTATION_LIMIT || type == CS_EVENT_POST_PULLOUT ||
+           type == CS_EVENT_POST_SHEAR;
+}
+
 static void collect(const cs_model *m, const cs_state *s, cs_validate_result *r) {
     r->sm.size = sizeof r->sm;
     cs_state_summary(s, &r->sm, NULL);
@@ -47,8 +53,7 @@ static void collect(const cs_model *m, const cs_state *s, cs_validate_result *r)
         cs_state_event(s, i, &e_held, NULL);
         const cs_event *e = &e_held;
         r->released += e->type == CS_EVENT_CABLE_RELEASE || e->type == CS_EVENT_CABLE_PULLED_OFF;
-        if (r->post_failure < 0 && (e->type == CS_EVENT_POST_ROTATION_LIMIT ||
-                                    e->type == CS_EVENT_POST_PULLOUT || e->type == CS_EVENT_POST_SHEAR))
+        if (r->post_failure < 0 && post_failure(e->type))
             r->post_failure = (int)e->type, r->post_failure_t = e->t;
         if ((e->type == CS_EVENT_CABLE_BREAK || e->type == CS_EVENT_TERMINATION_BREAK) && e->element < 2 &&
             r->cable_break[e->element] < 0.0) {
@@ -76,7 +81,7 @@ int cs_validate_job_count(const cs_validate_suite *s) {
 /* At each output: the face's penetration where it first bears on something and where the first post
  * failure has just happened (the travel between, to an output interval, is a bogie test's deflection);
  * the two first ropes' tensions where the penetration is largest. */
-static void watch_travel(const cs_model *m, const cs_state *s, void *user) {
+static void watch_run(const cs_model *m, const cs_state *s, void *user) {
     cs_validate_result *r = user;
     cs_vehicle_view v = {.size = sizeof v};
     cs_state_vehicle(m, s, &v, NULL);
@@ -92,9 +97,7 @@ static void watch_travel(const cs_model *m, const cs_state *s, void *user) {
     for (; r->events_seen < n && isnan(r->failure_pen); r->events_seen++) {
         cs_event e = {.size = sizeof e};
         cs_state_event(s, r->events_seen, &e, NULL);
-        if (e.type == CS_EVENT_POST_ROTATION_LIMIT || e.type == CS_EVENT_POST_PULLOUT ||
-            e.type == CS_EVENT_POST_SHEAR)
-            r->failure_pen = v.penetration;
+        if (post_failure(e.type)) r->failure_pen = v.penetration;
     }
 }
 
@@ -105,7 +108,7 @@ void cs_validate_run(cs_validate_suite *s, int i) {
     cs_state *st = j->model ? cs_state_create(j->model, &err) : NULL;
     j->r.contact_pen = j->r.failure_pen = NAN, j->r.events_seen = 0;
     j->r.peak_pen = -HUGE_VAL, j->r.peak_tension[0] = j->r.peak_tension[1] = NAN;
-    j->r.ok = st && cs_run(j->model, st, watch_travel, &j->r, &err) == CS_OK;
+    j->r.ok = st && cs_run(j->model, st, watch_run, &j->r, &err) == CS_OK;
     if (j->r.ok)
         collect(j->model, st, &j->r);
     else if (j->model)
