@@ -5,6 +5,7 @@
  * its max_steps step_limit; an output interval far below the step's rounding still ends, a frame a step;
  * a state gone wrong is reported as unstable and frozen. */
 #include "check.h"
+#include "core/fnv.h"
 #include "fixture.h"
 #include "run/run.h"
 
@@ -40,6 +41,15 @@ static unsigned long long run_aps3_dt(cs_summary *out, double dt) {
 
 static unsigned long long run_aps3(cs_summary *out) {
     return run_aps3_dt(out, 0.5e-3);
+}
+
+/* The state's hash is 64-bit FNV-1a: the published test vectors (Fowler, Noll and Vo; the IETF draft
+ * draft-eastlake-fnv): "" is the offset basis, "a" and "foobar" their listed hashes. */
+static void the_state_hash_is_fnv1a64(void **state) {
+    (void)state;
+    assert_true(cs_fnv1a64(CS_FNV1A64_BASIS, "", 0) == 0xcbf29ce484222325ULL);
+    assert_true(cs_fnv1a64(CS_FNV1A64_BASIS, "a", 1) == 0xaf63dc4c8601ec8cULL);
+    assert_true(cs_fnv1a64(CS_FNV1A64_BASIS, "foobar", 6) == 0x85944171f73967e8ULL);
 }
 
 static void ledger_balances_and_run_is_deterministic(void **state) {
@@ -233,7 +243,8 @@ static void a_state_gone_wrong_is_reported_and_frozen(void **state) {
 }
 
 int main(void) {
-    const struct CMUnitTest tests[] = {cmocka_unit_test(ledger_balances_and_run_is_deterministic),
+    const struct CMUnitTest tests[] = {cmocka_unit_test(the_state_hash_is_fnv1a64),
+                                       cmocka_unit_test(ledger_balances_and_run_is_deterministic),
                                        cmocka_unit_test(a_failure_at_a_steps_end_keeps_the_ledger),
                                        cmocka_unit_test(refining_the_time_step_changes_little),
                                        cmocka_unit_test(long_barrier_solves_converge),

@@ -7,7 +7,7 @@
 #include <stddef.h>
 
 /* The offset basis of 64-bit FNV-1a, where a hash by cs_fnv1a64 starts. */
-#define CS_FNV1A64_BASIS 1469598103934665603ULL
+#define CS_FNV1A64_BASIS 14695981039346656037ULL
 /* 64-bit FNV-1a of n bytes, continuing from h (start from CS_FNV1A64_BASIS). */
 unsigned long long cs_fnv1a64(unsigned long long h, const void *data, size_t n);
 

@@ -8,7 +8,7 @@
 #include <stddef.h>
 
 /* The offset basis of 64-bit FNV-1a, where a hash starts. */
-#define CS_IO_FNV_BASIS 1469598103934665603ULL
+#define CS_IO_FNV_BASIS 14695981039346656037ULL
 
 /* 64-bit FNV-1a of n bytes, continuing from h. */
 static inline unsigned long long cs_io_fnv(unsigned long long h, const void *data, size_t n) {
