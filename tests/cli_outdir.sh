@@ -23,10 +23,10 @@ check "the refusal names one of them and says why" 'grep -qE "nothing run: \\. h
 check "the refusal keeps the user's files and writes nothing" 'mine && [ "$(ls -A "$user" | tr "\\n" " ")" = "plots report.html " ] && [ "$(ls -A "$user/plots" | tr "\\n" " ")" = "diagram.svg figure.png " ]'
 
 out=$(cd "$user" && "$cs" run "$src/examples/aps3.yaml" -o . --t-end "10 ms" --plots --report --force 2>&1)
-check "--force does not write over a file of the user's: status 1, nothing written" '[ $? -eq 1 ] && grep -q "report.html: a file no cablesim run wrote is there" <<<"$out" && mine && [ ! -e "$user/summary.json" ] && [ -z "$(find "$user" -name ".cablesim*")" ]'
+check "--force does not write over a file of the user's: status 1, nothing written" '[ $? -eq 1 ] && grep -q "report.html: a file is there which no cablesim run wrote there" <<<"$out" && mine && [ ! -e "$user/summary.json" ] && [ -z "$(find "$user" -name ".cablesim*")" ]'
 out=$(cd "$user" && "$cs" run "$src/examples/aps3.yaml" -o . --t-end "10 ms" --plots --force 2>&1)
 check "--force writes beside the user's files" '[ $? -eq 0 ] && mine && [ -s "$user/summary.json" ] && [ -s "$user/plots/speed.png" ] || { echo "$out"; false; }'
-check "the manifest lists the run's files, not the user's" 'grep -qx "summary.json" "$user/.cablesim-manifest" && grep -qx "plots/speed.svg" "$user/.cablesim-manifest" && ! grep -qE "report.html|figure|diagram" "$user/.cablesim-manifest"'
+check "the manifest lists the run's files, not the user's" 'grep -qP "^summary.json\\t$(stat -c %s "$user/summary.json")\\t[0-9a-f]{16}$" "$user/.cablesim-manifest" && grep -qP "^plots/speed.svg\\t" "$user/.cablesim-manifest" && ! grep -qE "report.html|figure|diagram" "$user/.cablesim-manifest"'
 check "no lock or temporary is left" '[ ! -e "$user/.cablesim-lock" ] && [ -z "$(find "$user" -name ".cablesim-tmp.*")" ]'
 out=$(cd "$user" && "$cs" run "$src/examples/aps3.yaml" -o . --t-end "10 ms" --force 2>&1)
 check "a forced rerun removes the earlier run's plots, and only those" '[ $? -eq 0 ] && mine && [ -z "$(ls "$user/plots" | grep -v -e figure.png -e diagram.svg)" ] && [ -s "$user/summary.json" ]'
@@ -38,6 +38,32 @@ own="$tmp/own"
 check "a rerun into a folder cablesim wrote" '[ $? -eq 0 ] && [ -s "$own/plots/speed.png" ] || { cat "$tmp/own.out"; false; }'
 "$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" >/dev/null 2>&1
 check "a rerun without --plots and --report removes the earlier figures, the report and plots/" '[ $? -eq 0 ] && [ ! -e "$own/plots" ] && [ ! -e "$own/report.html" ] && [ "$(ls "$own" | tr "\\n" " ")" = "events.csv summary.json timeseries.csv " ]'
+
+# A listed file is cablesim's only while it is as written: the manifest's size and hash (64-bit FNV-1a,
+# checked against the published value for "a") tell an edited file from cablesim's.
+fnv1a64() { # the 64-bit FNV-1a of a file's bytes, in bash's wrapping 64-bit arithmetic
+    local h=$((0xcbf29ce484222325)) b
+    for b in $(od -An -v -tu1 "$1"); do h=$(((h ^ b) * 0x100000001b3)); done
+    printf '%016x' "$h"
+}
+check "FNV-1a 64 of \"a\" is the published af63dc4c8601ec8c" '[ "$(printf a >"$tmp/a" && fnv1a64 "$tmp/a")" = af63dc4c8601ec8c ]'
+check "the manifest's hash is FNV-1a 64 of the file's bytes" 'grep -qP "^events.csv\\t$(stat -c %s "$own/events.csv")\\t$(fnv1a64 "$own/events.csv")$" "$own/.cablesim-manifest"'
+cp "$own/summary.json" "$tmp/summary.before"
+printf ' ' >>"$own/summary.json" # an edit: the file is the user's now
+edited=$(sha256sum <"$own/summary.json")
+out=$("$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" 2>&1)
+check "a file edited since cablesim wrote it is refused, named, and kept" '[ $? -eq 1 ] && grep -q "nothing run: $own holds summary.json, which has changed since cablesim wrote it there" <<<"$out" && [ "$(sha256sum <"$own/summary.json")" = "$edited" ] || { echo "$out"; false; }'
+out=$("$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" --force 2>&1)
+check "--force does not write over the edited file either" '[ $? -eq 1 ] && grep -q "summary.json: a file is there which has changed since cablesim wrote it there" <<<"$out" && [ "$(sha256sum <"$own/summary.json")" = "$edited" ] || { echo "$out"; false; }'
+mv "$tmp/summary.before" "$own/summary.json"
+echo "my notes" >"$own/notes.txt"
+printf 'notes.txt\n' >>"$own/.cablesim-manifest"
+out=$("$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" 2>&1)
+check "a name typed into the manifest does not make a file cablesim's" '[ $? -eq 1 ] && grep -q "holds notes.txt, which its manifest lists without the size and hash" <<<"$out" && [ "$(cat "$own/notes.txt")" = "my notes" ] || { echo "$out"; false; }'
+printf 'notes.txt\t9\t0123456789abcdef\n' >>"$own/.cablesim-manifest"
+out=$("$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" --force 2>&1)
+check "nor does one typed with a wrong hash: --force writes beside it and keeps it" '[ $? -eq 0 ] && [ "$(cat "$own/notes.txt")" = "my notes" ] && ! grep -q "^notes.txt" "$own/.cablesim-manifest" || { echo "$out"; false; }'
+rm "$own/notes.txt"
 
 # A manifest names files inside its folder only: a line that leaves it removes nothing.
 echo outside >"$tmp/victim.txt"

@@ -38,7 +38,7 @@ check "kill -9: the journal holds the runs done ($rows of $n), no outputs" '[ "$
 out=$("$cs" sweep --resume "$tmp/killed" 2>&1)
 check "--resume after kill -9: exit 0, the journalled runs read back" '[ $? -eq 0 ] && grep -qF "sweep: $rows runs read back from" <<<"$out" || { echo "$out"; false; }'
 check "--resume after kill -9: runs.csv byte for byte the whole sweep's" 'cmp "$tmp/killed/runs.csv" "$tmp/whole/runs.csv"'
-check "--resume after kill -9: the journal is gone, the manifest lists runs.csv" '[ ! -e "$journal" ] && grep -qx "runs.csv" "$tmp/killed/.cablesim-manifest"'
+check "--resume after kill -9: the journal is gone, the manifest lists runs.csv" '[ ! -e "$journal" ] && grep -qP "^runs.csv\\t[0-9]+\\t[0-9a-f]{16}$" "$tmp/killed/.cablesim-manifest"'
 
 # a second Ctrl-C (SIGINT twice) ends the sweep at once, as the system does (exit 130), or after it wrote
 # the runs done if it got there first: either way --resume gives the whole sweep's runs.csv

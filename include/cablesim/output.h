@@ -81,7 +81,8 @@ enum cs_output_flags {
  * summary.json and, with CS_OUTPUT_PLOTS, the plots. The folder (and its parents) are created; every file
  * is written beside its final name and renamed once all are complete, so a failure leaves nothing new.
  * The folder keeps the rule of `cablesim run` without --force: a folder holding a file that no run's
- * DIR/.cablesim-manifest lists is refused, and only the files of the earlier manifest are removed.
+ * DIR/.cablesim-manifest lists (with the size and hash it was written with) is refused, and only the files
+ * of the earlier manifest, as written, are removed.
  * @param dir the folder
  * @param in the loaded model
  * @param model the model that ran

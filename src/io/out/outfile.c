@@ -2,6 +2,7 @@
 #define _GNU_SOURCE /* fopencookie */
 #include "outfile.h"
 
+#include "fnv.h"
 #include "load/confine.h"
 #include "status.h"
 
@@ -45,11 +46,71 @@ static int inside(const char *rel) {
     return 1;
 }
 
-/* Whether the earlier manifest lists rel. */
-static int listed(const cs_outdir *out, const char *rel) {
+/* The earlier manifest's line naming rel, or NULL. */
+static const cs_out_listed *find(const cs_outdir *out, const char *rel) {
     for (int i = 0; i < out->prev_count; i++)
-        if (strcmp(out->prev[i], rel) == 0) return 1;
+        if (strcmp(out->prev[i].name, rel) == 0) return &out->prev[i];
+    return NULL;
+}
+
+/* Whether rel is cablesim's: the earlier manifest lists it and it is as that run wrote it (or gone). */
+static int listed(const cs_outdir *out, const char *rel) {
+    const cs_out_listed *e = find(out, rel);
+    return e && e->ours == 1;
+}
+
+/* Why the file rel, which is there and not cablesim's, is not: the end of "..., which " for a message. */
+static const char *not_ours(const cs_outdir *out, const char *rel) {
+    const cs_out_listed *e = find(out, rel);
+    if (!e) return "no cablesim run wrote there";
+    return e->ours == 0 ? "has changed since cablesim wrote it there"
+                        : "its manifest lists without the size and hash cablesim records";
+}
+
+/* The size and hash of the regular file at path (not through a link at its end) into p. 0, or -1 (errno
+ * set) when it is not a regular file or cannot be read. */
+static int fingerprint(const char *path, cs_out_print *p) {
+    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+    if (fd < 0) return -1;
+    struct stat st;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        close(fd);
+        errno = EINVAL;
+        return -1;
+    }
+    unsigned long long h = CS_IO_FNV_BASIS;
+    long long size = 0;
+    char buf[1 << 16];
+    ssize_t n;
+    while ((n = read(fd, buf, sizeof buf)) != 0) {
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) break;
+        h = cs_io_fnv(h, buf, (size_t)n);
+        size += n;
+    }
+    int errnum = errno;
+    close(fd);
+    if (n < 0) {
+        errno = errnum;
+        return -1;
+    }
+    p->size = size;
+    p->hash = h;
     return 0;
+}
+
+/* A manifest line's "SIZE<tab>HASH" (decimal bytes, 16 hex digits) into p: 1, else 0. */
+static int read_print(const char *text, cs_out_print *p) {
+    char *end;
+    errno = 0;
+    long long size = strtoll(text, &end, 10);
+    if (end == text || *end != '\t' || size < 0 || errno) return 0;
+    const char *h = end + 1;
+    unsigned long long hash = strtoull(h, &end, 16);
+    if (end - h != 16 || *end || errno) return 0;
+    p->size = size;
+    p->hash = hash;
+    return 1;
 }
 
 static int written(const cs_outdir *out, const char *rel) {
@@ -159,8 +220,9 @@ static void release(cs_outdir *out) {
 
 /* ---- the manifest ---- */
 
-/* The earlier run's manifest into out->prev (none: empty). Lines that name no file inside the folder
- * are skipped: a manifest never sends a removal outside. */
+/* The earlier run's manifest into out->prev (none: empty), each listed file checked against its size
+ * and hash. Lines that name no file inside the folder are skipped: a manifest never sends a removal
+ * outside. */
 static cs_status read_manifest(cs_outdir *out, cs_error *err) {
     char path[PATH_SIZE];
     full_path(out, CS_OUT_MANIFEST, path, sizeof path);
@@ -189,17 +251,31 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
             }
             continue;
         }
-        if (line[0] == '#' || n >= sizeof out->prev[0] || !inside(line) || listed(out, line)) continue;
+        char *tab = strchr(line, '\t');
+        if (tab) *tab = '\0';
+        cs_out_listed e = {.ours = -1};
+        size_t len = strlen(line);
+        if (line[0] == '#' || len >= sizeof e.name || !inside(line) || find(out, line)) continue;
+        memcpy(e.name, line, len + 1);
+        int printed = tab && read_print(tab + 1, &e.print);
+        char file[PATH_SIZE];
+        struct stat st;
+        cs_out_print now;
+        full_path(out, e.name, file, sizeof file);
+        if (printed && lstat(file, &st) != 0)
+            e.ours = 1; /* gone: nothing of the user's to keep */
+        else if (printed)
+            e.ours = fingerprint(file, &now) == 0 && now.size == e.print.size && now.hash == e.print.hash;
         if (out->prev_count == cap) {
             cap = cap ? 2 * cap : 64;
-            char(*grown)[128] = realloc(out->prev, (size_t)cap * sizeof *grown);
+            cs_out_listed *grown = realloc(out->prev, (size_t)cap * sizeof *grown);
             if (!grown) {
                 fclose(f);
                 return cs_error_set(err, CS_ERR_MEMORY, "out of memory reading %s", path);
             }
             out->prev = grown;
         }
-        memcpy(out->prev[out->prev_count++], line, n + 1);
+        out->prev[out->prev_count++] = e;
     }
     fclose(f);
     return CS_OK;
@@ -219,12 +295,16 @@ static cs_status write_manifest(cs_outdir *out, int with_prev, cs_error *err) {
         return st;
     }
     fchmod(fd, (mode_t)out->mode);
-    fprintf(f, "# cablesim: the files its last run wrote in this folder; the next run into it removes "
-               "these and no other\n");
+    fprintf(f, "# cablesim: the files its last run wrote in this folder, each with its size in bytes and "
+               "the 64-bit FNV-1a hash of its bytes; the next run into it removes or replaces these while "
+               "they are as written, and no other file\n");
     for (int i = 0; i < out->count; i++)
-        fprintf(f, "%s\n", out->names[i]);
-    for (int i = 0; with_prev && i < out->prev_count; i++)
-        if (!written(out, out->prev[i])) fprintf(f, "%s\n", out->prev[i]);
+        fprintf(f, "%s\t%lld\t%016llx\n", out->names[i], out->prints[i].size, out->prints[i].hash);
+    for (int i = 0; with_prev && i < out->prev_count; i++) {
+        const cs_out_listed *e = &out->prev[i];
+        if (e->ours == 1 && !written(out, e->name))
+            fprintf(f, "%s\t%lld\t%016llx\n", e->name, e->print.size, e->print.hash);
+    }
     int bad = fflush(f) != 0 || ferror(f) || fsync(fd) != 0;
     int errnum = errno;
     bad |= fclose(f) != 0;
@@ -287,11 +367,10 @@ static cs_status check_contents(cs_outdir *out, cs_error *err) {
     char found[PATH_SIZE];
     int rc = scan(out, "", 0, 0, found, sizeof found, err);
     if (rc == 1)
-        cs_error_set(
-            err, CS_ERR_IO,
-            "%s holds %s, which no cablesim run wrote there (%s lists what one wrote): choose another "
-            "folder, or give --force to write beside such files (none of them is removed)",
-            out->dir, found, CS_OUT_MANIFEST);
+        cs_error_set(err, CS_ERR_IO,
+                     "%s holds %s, which %s (%s lists what one wrote, as written): choose another folder, or "
+                     "give --force to write beside such files (none of them is removed)",
+                     out->dir, found, not_ours(out, found), CS_OUT_MANIFEST);
     if (rc == 0) rc = scan(out, "", 0, 1, found, sizeof found, err);
     return rc == 0 ? CS_OK : CS_ERR_IO;
 }
@@ -369,9 +448,9 @@ static int begin(cs_outdir *out, const char *name, cs_error *err) {
     if (lstat(final, &st) == 0 && !listed(out, name)) {
         cs_error_set(
             err, CS_ERR_IO,
-            "%s: a file no cablesim run wrote is there (not in %s/%s): it is kept; remove it or write "
-            "elsewhere",
-            final, out->dir, CS_OUT_MANIFEST);
+            "%s: a file is there which %s (%s/%s lists what one wrote, as written): it is kept; remove "
+            "it or write elsewhere",
+            final, not_ours(out, name), out->dir, CS_OUT_MANIFEST);
         return -1;
     }
     const char *slash = strrchr(name, '/');
@@ -524,8 +603,11 @@ static cs_status remove_earlier(const cs_outdir *out, const char *rel, cs_error 
 cs_status cs_out_commit(cs_outdir *out, cs_error *err) {
     char tmp[PATH_SIZE], final[PATH_SIZE];
     cs_status st = CS_OK;
-    for (int i = 0; st == CS_OK && i < out->count; i++) /* every file on the disk before any is renamed */
+    for (int i = 0; st == CS_OK && i < out->count; i++) { /* every file on the disk before any is renamed */
         st = sync_file(out, i, 1, err);
+        full_path(out, out->tmps[i], tmp, sizeof tmp);
+        if (st == CS_OK && fingerprint(tmp, &out->prints[i]) != 0) st = end_failed(out, i, errno, err);
+    }
     /* the manifest first names both runs' files, so that every file cablesim put here stays its own */
     if (st == CS_OK) st = write_manifest(out, 1, err);
     if (st != CS_OK) return st;
@@ -538,8 +620,8 @@ cs_status cs_out_commit(cs_outdir *out, cs_error *err) {
         }
     }
     for (int i = 0; i < out->prev_count; i++) {
-        const char *rel = out->prev[i], *slash = strrchr(rel, '/');
-        if (written(out, rel)) continue;
+        const char *rel = out->prev[i].name, *slash = strrchr(rel, '/');
+        if (out->prev[i].ours != 1 || written(out, rel)) continue;
         earlier++;
         if ((st = remove_earlier(out, rel, err)) != CS_OK) return st;
         if (slash) { /* a subfolder this left empty */

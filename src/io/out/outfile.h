@@ -4,8 +4,11 @@
  * cs_out_open makes the folder, takes its lock (DIR/.cablesim-lock, flock'ed, holding the pid: a second
  * cablesim into the same folder is refused with that pid; a lock whose holder died is taken over) and
  * reads the manifest an earlier run left (DIR/.cablesim-manifest: every file that run wrote, one a
- * line). A folder holding a file that no manifest lists is refused, naming it, unless CS_OUT_FORCE: then
- * the run writes beside such files and touches none of them (nor writes over one).
+ * line with its size in bytes and the 64-bit FNV-1a hash of its bytes). A listed file is cablesim's only
+ * while it is as written: one changed since (its size or hash differs, or it is no longer a regular file),
+ * or listed without a size and hash (a line typed in), is the user's. A folder holding a file that is not
+ * cablesim's is refused, naming it, unless CS_OUT_FORCE: then the run writes beside such files and touches
+ * none of them (nor writes over one).
  *
  * Each file is written to a unique temporary beside its name (mkstemp: ".cablesim-tmp.NAME.XXXXXX") and
  * flushed, its writing to the disk begun; cs_out_commit fsyncs them all, renames them into place, removes
@@ -30,13 +33,28 @@ enum { CS_OUT_FORCE = 1 };      /* cs_out_open: write beside files no manifest l
 #define CS_OUT_TMP_PREFIX ".cablesim-tmp."
 #define CS_OUT_JOURNAL ".cablesim-journal"
 
+/* A file as cablesim wrote it: its size in bytes and the 64-bit FNV-1a hash of its bytes. */
+typedef struct cs_out_print {
+    long long size;
+    unsigned long long hash;
+} cs_out_print;
+
+/* A line of the earlier manifest. ours 1: the file is as that run wrote it, or gone; 0: a file of that name
+ * is there, changed since; -1: the line gives no size and hash (typed in). A file not ours is the user's. */
+typedef struct cs_out_listed {
+    char name[128];
+    cs_out_print print;
+    int ours;
+} cs_out_listed;
+
 typedef struct cs_outdir {
     char dir[1024];
     int count;
-    char names[CS_OUT_MAX_FILES][128]; /* the files begun, relative to dir */
-    char tmps[CS_OUT_MAX_FILES][200];  /* their temporaries, relative to dir */
-    int streams[CS_OUT_MAX_FILES][2];  /* their streams' descriptor and first write error (errno) */
-    char (*prev)[128];                 /* the earlier run's manifest */
+    char names[CS_OUT_MAX_FILES][128];     /* the files begun, relative to dir */
+    char tmps[CS_OUT_MAX_FILES][200];      /* their temporaries, relative to dir */
+    int streams[CS_OUT_MAX_FILES][2];      /* their streams' descriptor and first write error (errno) */
+    cs_out_print prints[CS_OUT_MAX_FILES]; /* the files' size and hash, taken at the commit */
+    cs_out_listed *prev;                   /* the earlier run's manifest */
     int prev_count;
     int made;             /* the folders cs_out_open created: the last `made` prefixes of dir */
     char subdirs[8][128]; /* the subfolders cs_out_subdir made (cs_out_abort removes them when empty) */
@@ -49,7 +67,8 @@ typedef struct cs_outdir {
 
 /* Create dir (and its parents), take its lock and read its manifest, before anything is computed.
  * Returns CS_OK, or CS_ERR_IO with err filled ("DIR: Not a directory", "DIR is in use by cablesim pid N",
- * "DIR holds notes.txt, which no cablesim run wrote ..."); CS_ERR_INVALID for a path too long,
+ * "DIR holds notes.txt, which no cablesim run wrote there ...", or "... which has changed since cablesim
+ * wrote it there ..."); CS_ERR_INVALID for a path too long,
  * CS_ERR_MEMORY for a manifest that does not fit in memory. */
 cs_status cs_out_open(cs_outdir *out, const char *dir, int flags, cs_error *err);
 /* Create DIR/subdir, for files named "subdir/...". Returns CS_OK, or CS_ERR_IO with err filled. */
