@@ -334,7 +334,7 @@ static int run(const cs_model_input *in, cs_model *model, const options *o, cons
         cs_run_info_rate(&info, in, &sm);
         info.occupant_at = o->occupant_at;
         memcpy(info.occupant_point, o->occupant_point, sizeof info.occupant_point);
-        cs_run_info_motion(&info, in, &rec, &sm);
+        cs_run_info_motion(&info, in, &rec, state, &sm);
         if (write_outputs(&out, in, model, state, &rec, &info, o->plots, o->report) == 0) {
             cs_write_summary_text_with(stdout, in, model, state, &info);
             printf("  outputs              %s/{timeseries.csv,events.csv,summary.json%s%s}\n", dir,

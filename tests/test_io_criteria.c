@@ -54,7 +54,7 @@ static void criteria_of_each_test(void **state) {
     cs_summary s = redirected(10.0);
     cs_occupant_risk o = {0};
     cs_exit_box box = {4.9, 10.0, 0.0, 20.0, 0, 1.0};
-    cs_test_result r = {&s, &o, NULL, 0.0, 0.0, &box};
+    cs_test_result r = {&s, &o, NULL, 0.0, 0.0, &box, NULL};
     cs_criterion c[CS_CRITERIA_MAX];
     char ids[128];
     judge("nchrp-350", "3-10", &r, c, ids, sizeof ids);
@@ -83,7 +83,7 @@ static void limits(void **state) {
     (void)state;
     cs_summary s = redirected(10.0);
     cs_occupant_risk o = {0};
-    cs_test_result r = {&s, &o, NULL, 0.0, 0.0, NULL};
+    cs_test_result r = {&s, &o, NULL, 0.0, 0.0, NULL, NULL};
     cs_criterion c[CS_CRITERIA_MAX];
     char ids[128];
     struct {
@@ -168,7 +168,7 @@ static void exit_box(void **state) {
     CHECK_REL(box.cross_along, 3.2 + 10.0 * t - 1.2, 1e-12);
     assert_int_equal(box.crossed_in_run, 0);
     cs_summary s = redirected(26.6);
-    cs_test_result r = {&s, NULL, "none", 0.0, 0.0, &box};
+    cs_test_result r = {&s, NULL, "none", 0.0, 0.0, &box, NULL};
     cs_criterion c[CS_CRITERIA_MAX];
     char ids[128];
     int n = judge("mash", "3-11", &r, c, ids, sizeof ids);
@@ -216,7 +216,7 @@ static void verdict_digits(void **state) {
     cs_summary s = redirected(14.98); /* 3-11: 60% of 25 deg is 15 deg */
     cs_occupant_risk o = {0};
     cs_exit_box box = {4.9, 10.0, 0.0, 9.96, 0, 1.0};
-    cs_test_result r = {&s, &o, NULL, 75.04 * DEG, 10.0 * DEG, &box};
+    cs_test_result r = {&s, &o, NULL, 75.04 * DEG, 10.0 * DEG, &box, NULL};
     struct {
         const char *std, *test, *id;
         double oiv_x, exit_angle;

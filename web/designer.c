@@ -195,7 +195,7 @@ EMSCRIPTEN_KEEPALIVE const char *cs_web_run(const char *path, const char *sets, 
                             .override_count = n,
                             .model_hash = cs_model_input_hash(&in)};
         cs_run_info_rate(&info, &in, &sm);
-        cs_run_info_motion(&info, &in, &rec, &sm);
+        cs_run_info_motion(&info, &in, &rec, state, &sm);
         char why[512] = "", *text = NULL;
         size_t text_size = 0;
         FILE *t = open_memstream(&text, &text_size);

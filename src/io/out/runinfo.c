@@ -19,7 +19,7 @@ void cs_run_info_rate(cs_run_info *info, const cs_model_input *in, const cs_summ
 }
 
 void cs_run_info_motion(cs_run_info *info, const cs_model_input *in, const cs_record *rec,
-                        const cs_summary *summary) {
+                        const cs_state *state, const cs_summary *summary) {
     info->motion = 1;
     cs_record_roll_pitch_peaks(rec, &info->roll_peak, &info->pitch_peak);
     info->occupant_ok = cs_occupant_risk_for_run(rec, summary->first_contact_time_s,
@@ -34,7 +34,8 @@ void cs_run_info_motion(cs_run_info *info, const cs_model_input *in, const cs_re
                         info->occupant_error.message,
                         info->roll_peak,
                         info->pitch_peak,
-                        &info->exit_box};
+                        &info->exit_box,
+                        state};
     info->criteria_count = cs_roadside_criteria(&info->criteria_test, &r, info->criteria);
 }
 

@@ -44,9 +44,9 @@ void cs_run_info_rate(cs_run_info *info, const cs_model_input *in, const cs_summ
 /* How a flail impact is named in summary.json and the terminal: "in_run", "after_run", "none". */
 const char *cs_flail_impact_name(cs_flail_impact k);
 /* The occupant risk, the roll and pitch peaks and the roadside criteria as run (if the run stands for a
- * roadside test) of a run's record into info. */
+ * roadside test) of a run's record and its state at the end (its events) into info. */
 void cs_run_info_motion(cs_run_info *info, const cs_model_input *in, const cs_record *rec,
-                        const cs_summary *summary);
+                        const cs_state *state, const cs_summary *summary);
 /* The record of a run written through the library (cs_write_outputs): no command line or overrides, its
  * model hash and its designations as run. */
 void cs_run_info_of(cs_run_info *info, const cs_model_input *in, const cs_state *state);

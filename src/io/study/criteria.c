@@ -77,9 +77,31 @@ static cs_criterion *add(list *l, const char *id, const char *name, cs_verdict v
     return c;
 }
 
+/* The cables the vehicle rode over or went under (override and underride events), appended to buf as
+ * "; the vehicle rode over cable 0 at 0.4075 s". With contained, that the others held it: a cable slipping
+ * off the vehicle is not an override or underride of the barrier while the barrier contains it. */
+static void slips(char *buf, size_t size, const cs_state *state, int contained) {
+    int n = state ? cs_state_event_count(state) : 0, said = 0;
+    for (int i = 0; i < n; i++) {
+        cs_event e = {.size = sizeof e};
+        if (cs_state_event(state, i, &e, NULL) != CS_OK ||
+            (e.type != CS_EVENT_OVERRIDE && e.type != CS_EVENT_UNDERRIDE))
+            continue;
+        size_t len = strlen(buf);
+        snprintf(buf + len, size - len, "%s%s cable %d at %.6g s", said ? "," : "; the vehicle",
+                 e.type == CS_EVENT_OVERRIDE ? " rode over" : " went under", e.element, e.t);
+        said++;
+    }
+    size_t len = strlen(buf);
+    if (said && contained)
+        snprintf(buf + len, size - len,
+                 ", and the other cables held it (no override or underride of the "
+                 "barrier)");
+}
+
 /* Criterion A: contained and redirected or brought to a controlled stop; no penetration, underride or
  * override. */
-static void structural(list *l, const cs_summary *s) {
+static void structural(list *l, const cs_summary *s, const cs_state *state) {
     cs_outcome o = s->outcome;
     int judged = o == CS_REDIRECTED || o == CS_STOPPED || cs_outcome_through(o);
     cs_criterion *c =
@@ -89,6 +111,7 @@ static void structural(list *l, const cs_summary *s) {
                                                     : CS_VERDICT_FAIL);
     snprintf(c->detail, sizeof c->detail, "%s%s", cs_outcome_name(o),
              !judged ? ": the run did not end with the vehicle redirected, stopped or through" : "");
+    if (judged) slips(c->detail, sizeof c->detail, state, c->verdict == CS_VERDICT_PASS);
 }
 
 static void not_judged(list *l, const char *id, const char *name, const char *detail) {
@@ -197,7 +220,7 @@ int cs_roadside_criteria(const cs_roadside_test *t, const cs_test_result *r, cs_
     list l = {out, 0};
     int mash = strcmp(t->standard, "mash") == 0, truck = strcmp(t->name + 1, "-12") == 0;
     int car = strcmp(t->name + 1, "-10") == 0;
-    structural(&l, r->summary);
+    structural(&l, r->summary, r->state);
     not_judged(&l, "D",
                "no debris penetrating or endangering the occupant compartment or others; compartment "
                "deformation within limits",

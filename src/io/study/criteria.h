@@ -36,13 +36,15 @@ void cs_vehicle_wheels(const cs_vehicle_view *p, const cs_vehicle_def *v, double
 void cs_exit_box_of_record(const cs_record *rec, const cs_vehicle_def *v, double impact_x, cs_exit_box *out);
 
 /* What a run gives the criteria. occupant NULL: not computed (the occupant criteria are then not judged,
- * occupant_why says why). */
+ * occupant_why says why). state: the run at its end, whose override and underride events (a cable the
+ * vehicle rode over or went under) criterion A names; NULL: none known. */
 typedef struct cs_test_result {
     const cs_summary *summary;
     const cs_occupant_risk *occupant;
     const char *occupant_why;
     double roll_peak, pitch_peak; /* rad */
     const cs_exit_box *exit_box;  /* NULL: none */
+    const cs_state *state;
 } cs_test_result;
 
 enum { CS_CRITERIA_MAX = 10 };
