@@ -2,9 +2,12 @@
 #include "cli.h"
 
 #include <ctype.h>
+#include <signal.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
+
+#include "out/outfile.h"
 
 int cs_cli_usage_error(const cs_cli *c, const char *fmt, ...) {
     va_list ap;
@@ -63,6 +66,36 @@ int cs_cli_next(const cs_cli *c, int argc, char **argv, const char *shortopts,
     else
         cs_cli_usage_error(c, "unknown option '%s'", name);
     return '?';
+}
+
+static void end_by_signal(int sig) {
+    cs_out_signal_cleanup();
+    signal(sig, SIG_DFL);
+    raise(sig); /* delivered when this handler returns */
+}
+
+/* SIGINT and SIGTERM into set. */
+static void both_signals(sigset_t *set) {
+    sigemptyset(set);
+    sigaddset(set, SIGINT);
+    sigaddset(set, SIGTERM);
+}
+
+void cs_cli_catch_signals(void) {
+    struct sigaction sa, was;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = end_by_signal;
+    both_signals(&sa.sa_mask); /* one cleanup: the other signal waits for it */
+    static const int signals[] = {SIGINT, SIGTERM};
+    for (int i = 0; i < 2; i++)
+        if (sigaction(signals[i], NULL, &was) == 0 && was.sa_handler != SIG_IGN)
+            sigaction(signals[i], &sa, NULL);
+}
+
+void cs_cli_leave_signals(void) {
+    sigset_t set;
+    both_signals(&set);
+    pthread_sigmask(SIG_BLOCK, &set, NULL);
 }
 
 /* A word the shell reads as itself. */

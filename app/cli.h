@@ -29,6 +29,15 @@ int cs_cli_usage_error(const cs_cli *c, const char *fmt, ...)
 /* The command's --help: the usage on stdout; returns 0. */
 int cs_cli_help(const cs_cli *c);
 
+/* SIGINT (Ctrl-C) and SIGTERM end the command by that signal, as the system would (exit status 128 + the
+ * signal), its output folders first left as they were before it (cs_out_signal_cleanup). A signal the
+ * command was started ignoring (a shell's background job ignores SIGINT) stays ignored. Every command but
+ * sweep, which catches them itself. */
+void cs_cli_catch_signals(void);
+/* This thread takes neither SIGINT nor SIGTERM (it blocks them): the command's main thread, which writes
+ * its outputs, does. For the threads a command starts. */
+void cs_cli_leave_signals(void);
+
 /* argv[0..argc) joined by spaces, each word shell-quoted when it needs to be ('it'\''s'); cut short with
  * "..." if it does not fit in size. */
 void cs_cli_command_line(int argc, char *const *argv, char *buf, size_t size);

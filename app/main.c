@@ -61,8 +61,8 @@ static const char usage[] =
     "The parts library is the folder named by CABLESIM_DATA, else PREFIX/share/cablesim of an installed\n"
     "cablesim, else the source tree's data/.\n"
     "Exit status (every command): 0 done, 1 a run or its outputs failed, 2 a bad model, spec or command\n"
-    "line; validate: 3 its targets missed; sweep: 128 + the signal (130 Ctrl-C, 143 SIGTERM) when a\n"
-    "signal stopped it, its outputs partial.\n";
+    "line; validate: 3 its targets missed; 128 + the signal (130 Ctrl-C, 143 SIGTERM) when a signal\n"
+    "stopped it: a sweep's outputs partial, any other command's output folder left as it was.\n";
 
 static const char run_usage[] =
     "Usage: cablesim run FILE [-o DIR] [--force] [--dt T] [--t-end T] [--set PATH=VALUE]... [--plots]\n"
@@ -79,7 +79,9 @@ static const char run_usage[] =
     "appear together once all are written, with DIR/.cablesim-manifest listing them, and the files of an\n"
     "earlier run there (its manifest's) that this one does not write are removed: DIR holds one run. A DIR\n"
     "holding a file no manifest lists, or one changed since cablesim wrote it (the manifest holds each\n"
-    "file's size and hash), is refused, naming it. A failed run writes nothing.\n"
+    "file's size and hash), is refused, naming it. A failed run writes nothing. Ctrl-C (SIGINT) or\n"
+    "SIGTERM leaves DIR as it was, no temporary or lock left and a folder the run made removed, unless\n"
+    "the files were being renamed into place: the renames end first. The run then ends by the signal.\n"
     "  -o, --out DIR        the output folder\n"
     "  --force              write into DIR beside files no manifest lists (none of them is removed)\n"
     "  --set PATH=VALUE     replace a value of the model: --set scenario.speed=\"35 mph\"\n"
@@ -89,7 +91,8 @@ static const char run_usage[] =
     "                       CG, forward, to the left and up: --occupant-at \"0.3 m,0.4 m,0.2 m\"\n"
     "  --allow-path DIR     the files FILE names (file:) may be in DIR and its subfolders, beyond FILE's\n"
     "                       folder (and its subfolders) and the parts library's\n"
-    "Exit status: 0 done, 1 the run or its outputs failed, 2 a bad model or command line.\n";
+    "Exit status: 0 done, 1 the run or its outputs failed, 2 a bad model or command line, 128 + the\n"
+    "signal that stopped it (130 Ctrl-C, 143 SIGTERM).\n";
 
 static const char check_usage[] =
     "Usage: cablesim check FILE [--dt T] [--t-end T] [--set PATH=VALUE]... [--allow-path DIR]...\n"
@@ -418,6 +421,7 @@ int main(int argc, char **argv) {
         return cs_schema_markdown(stdout) == 0 ? 0 : EXIT_RUN;
     }
     if (strcmp(cmd, "sweep") == 0) return cs_sweep_command(argc, argv);
+    cs_cli_catch_signals();
     if (strcmp(cmd, "check") == 0 && cs_sweep_check_wanted(argc, argv))
         return cs_sweep_check_command(argc, argv);
     if (strcmp(cmd, "rate") == 0) return cs_command_rate(argc, argv);

@@ -4,6 +4,9 @@
  * result depends only on its own model, so the report is the same for any thread count. */
 #include <stddef.h>
 #include <stdio.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 #include "cli.h"
 #include "commands.h"
@@ -64,9 +67,15 @@ int cs_command_validate(int argc, char **argv) {
     if (!s) return status;
     int count = cs_validate_job_count(s);
 #ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel
 #endif
-    for (int i = 0; i < count; i++) /* dynamic: one job at a time per thread */
-        cs_validate_run(s, i);
+    {
+#ifdef _OPENMP
+        if (omp_get_thread_num() > 0) cs_cli_leave_signals(); /* a signal's cleanup in the writing thread */
+#pragma omp for schedule(dynamic, 1)
+#endif
+        for (int i = 0; i < count; i++) /* dynamic: one job at a time per thread */
+            cs_validate_run(s, i);
+    }
     return cs_validate_finish(s);
 }

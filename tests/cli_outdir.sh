@@ -84,13 +84,65 @@ for _ in $(seq 200); do
 done
 out=$("$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" 2>&1)
 check "a second run into a folder in use is refused, naming the pid holding it" '[ $? -eq 1 ] && grep -q "nothing run: $busy is in use by another cablesim (pid $holder holds $busy/.cablesim-lock)" <<<"$out" || { echo "$out"; false; }'
-kill "$holder"
+kill -KILL "$holder" # no handler runs: the lock stays
 wait "$holder" 2>/dev/null
 check "the killed run left its lock, naming it" '[ "$(cat "$busy/.cablesim-lock")" = "$holder" ]'
 out=$("$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" 2>&1)
 check "a dead run's lock is taken over" '[ $? -eq 0 ] && [ -s "$busy/summary.json" ] && [ ! -e "$busy/.cablesim-lock" ] || { echo "$out"; false; }'
 echo 999999999 >"$busy/.cablesim-lock"
 check "a lock file naming no live process is taken over" '"$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" >/dev/null 2>&1'
+# Ctrl-C (SIGINT) or SIGTERM leaves the folder as it was before the command: no temporary, no lock, the
+# folders the command made removed, an earlier run's files byte for byte; the command then dies by the
+# signal (exit 128 + the signal). validate begins its two files before it runs anything, so the signal
+# finds both temporaries there. `env --default-signal`: a script's background job ignores SIGINT, and
+# cablesim keeps a signal it was started ignoring ignored.
+# interrupt SIGNAL COMMAND...: COMMAND (run or validate into $dir) started, sent SIGNAL once $dir holds
+# WAIT_FOR (waiting up to 60 s: a loaded machine is slow to start it), and waited for; the status is its
+interrupt() {
+    local sig=$1
+    shift
+    env --default-signal="$sig" "$cs" "$@" >/dev/null 2>&1 &
+    local pid=$!
+    for _ in $(seq 6000); do
+        [ -n "$(find "$dir" -maxdepth 1 -name "$wait_for" 2>/dev/null)" ] && break
+        kill -0 "$pid" 2>/dev/null || break
+        sleep 0.01
+    done
+    kill -"$sig" "$pid"
+    wait "$pid"
+}
+# every file under $1, hidden ones too, with its checksum
+sums() { (cd "$1" && find . -type f -exec md5sum {} + | sort); }
+wait_for=".cablesim-tmp.validation.csv.*"
+mkdir -p "$tmp/sig"
+for s in INT:130 TERM:143; do
+    dir="$tmp/sig/new/deeper"
+    interrupt "${s%:*}" validate --only sensitivity -o "$dir"
+    check "validate stopped by SIG${s%:*} into a new folder: exit ${s#*:}, the folders it made removed" '[ $? -eq "${s#*:}" ] && [ ! -e "$tmp/sig/new" ] || { find "$tmp/sig/new"; false; }'
+    dir="$tmp/sig/kept"
+    [ -d "$dir" ] || "$cs" validate --only bogie -o "$dir" >/dev/null 2>&1
+    before=$(sums "$dir")
+    interrupt "${s%:*}" validate --only sensitivity -o "$dir"
+    check "validate stopped by SIG${s%:*} into an earlier run's folder: exit ${s#*:}, no temporary or lock, its files byte for byte" '[ $? -eq "${s#*:}" ] && [ "$(sums "$dir")" = "$before" ] && [ "$(ls -A "$dir" | tr "\n" " ")" = ".cablesim-manifest validation.csv validation.md " ] || { ls -A "$dir"; false; }'
+done
+dir="$tmp/sig/run"
+wait_for=.cablesim-lock
+interrupt INT run examples/aps3.yaml -o "$dir" --dt "0.0002 ms"
+check "run stopped by SIGINT: exit 130, the folder it made removed" '[ $? -eq 130 ] && [ ! -e "$dir" ]'
+# a SIGINT the command was started ignoring stays ignored; SIGTERM then ends it
+env --ignore-signal=INT "$cs" run examples/aps3.yaml -o "$dir" --dt "0.0002 ms" >/dev/null 2>&1 &
+pid=$!
+for _ in $(seq 6000); do
+    [ -e "$dir/.cablesim-lock" ] && break
+    sleep 0.01
+done
+kill -INT "$pid"
+sleep 0.3
+check "a run started ignoring SIGINT goes on after one" 'kill -0 "$pid"'
+kill -TERM "$pid"
+wait "$pid"
+check "then SIGTERM ends it: exit 143, the folder it made removed" '[ $? -eq 143 ] && [ ! -e "$dir" ]'
+
 # A FIFO named .cablesim-manifest is refused at once, not waited on.
 mkdir -p "$tmp/fifo"
 mkfifo "$tmp/fifo/.cablesim-manifest"

@@ -9,6 +9,8 @@
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <signal.h>
+#include <stdatomic.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -18,17 +20,113 @@ enum { PATH_SIZE = 1400, MAX_DEPTH = 32 };
 
 static const char tmp_prefix[] = CS_OUT_TMP_PREFIX;
 
-/* DIR/rel into buf; 0 if it does not fit (buf then empty: no file). */
-static int full_path(const cs_outdir *out, const char *rel, char *buf, size_t size) {
-    size_t d = strlen(out->dir), r = strlen(rel);
+/* DIR/ and the first r characters of rel into buf; 0 if it does not fit (buf then empty: no file).
+ * Async-signal-safe, as remove_uncommitted needs. */
+static int join(const cs_outdir *out, const char *rel, size_t r, char *buf, size_t size) {
+    size_t d = strlen(out->dir);
     if (d + 1 + r >= size) {
         buf[0] = '\0';
         return 0;
     }
     memcpy(buf, out->dir, d);
     buf[d] = '/';
-    memcpy(buf + d + 1, rel, r + 1);
+    memcpy(buf + d + 1, rel, r);
+    buf[d + 1 + r] = '\0';
     return 1;
+}
+
+/* DIR/rel into buf; 0 if it does not fit (buf then empty: no file). */
+static int full_path(const cs_outdir *out, const char *rel, char *buf, size_t size) {
+    return join(out, rel, strlen(rel), buf, size);
+}
+
+/* ---- a signal's cleanup ---- */
+
+/* The folders open, from cs_out_open to cs_out_commit or cs_out_abort, for cs_out_signal_cleanup. A slot
+ * is taken and given back atomically, so threads writing folders of their own share the list; a folder
+ * past OPEN_MAX is not in it (a signal then leaves it as a kill -9 would). */
+enum { OPEN_MAX = 8 };
+static _Atomic(cs_outdir *) open_dirs[OPEN_MAX];
+
+static void enlist(cs_outdir *out) {
+    for (int i = 0; i < OPEN_MAX; i++) {
+        cs_outdir *none = NULL;
+        if (atomic_compare_exchange_strong(&open_dirs[i], &none, out)) return;
+    }
+}
+
+static void delist(cs_outdir *out) {
+    for (int i = 0; i < OPEN_MAX; i++) {
+        cs_outdir *self = out;
+        atomic_compare_exchange_strong(&open_dirs[i], &self, NULL);
+    }
+}
+
+/* SIGINT and SIGTERM held back in this thread, the mask before into old: whatever changes the record of what
+ * a folder holds (the temporaries, the folders made, the lock) does it between hold_signals and
+ * let_signals, so that a handler calling cs_out_signal_cleanup finds that record whole. */
+static void hold_signals(sigset_t *old) {
+    sigset_t set;
+    sigemptyset(&set);
+    sigaddset(&set, SIGINT);
+    sigaddset(&set, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &set, old);
+}
+
+static void let_signals(const sigset_t *old) {
+    pthread_sigmask(SIG_SETMASK, old, NULL);
+}
+
+static void unlink_lock(const cs_outdir *out) {
+    char path[PATH_SIZE];
+    full_path(out, CS_OUT_LOCK, path, sizeof path);
+    unlink(path);
+}
+
+/* Remove what a run began and did not commit: its temporaries (its files' and its manifest's or journal's),
+ * the subfolders its files were begun in and those cs_out_subdir made, when that leaves them empty, the
+ * lock if it is held, then the folders cs_out_open made, deepest first, while they are empty. Only system
+ * calls on paths put together with memcpy: async-signal-safe. A temporary renamed into place since is no
+ * longer under its name: its unlink fails, the file stays. */
+static void remove_uncommitted(const cs_outdir *out) {
+    char path[PATH_SIZE];
+    for (int i = 0; i < out->count; i++) {
+        full_path(out, out->tmps[i], path, sizeof path);
+        unlink(path);
+    }
+    if (out->aside[0]) {
+        full_path(out, out->aside, path, sizeof path);
+        unlink(path);
+    }
+    for (int i = 0; i < out->count; i++) { /* a subfolder (plots/) this left empty */
+        const char *slash = strrchr(out->names[i], '/');
+        if (!slash) continue;
+        join(out, out->names[i], (size_t)(slash - out->names[i]), path, sizeof path);
+        rmdir(path);
+    }
+    for (int i = 0; i < out->subdir_count; i++) { /* and one it made that no file was begun in */
+        full_path(out, out->subdirs[i], path, sizeof path);
+        rmdir(path);
+    }
+    if (out->lock >= 0) unlink_lock(out); /* while it is held: a run waiting on this file tries again */
+    size_t n = strlen(out->dir);
+    memcpy(path, out->dir, n + 1);
+    for (int k = 0; k < out->made; k++) {
+        while (n > 1 && path[n - 1] == '/')
+            path[--n] = '\0';
+        if (rmdir(path) != 0) break;
+        char *slash = strrchr(path, '/');
+        if (!slash) break;
+        *slash = '\0';
+        n = (size_t)(slash - path);
+    }
+}
+
+void cs_out_signal_cleanup(void) {
+    for (int i = 0; i < OPEN_MAX; i++) {
+        const cs_outdir *out = atomic_load(&open_dirs[i]);
+        if (out) remove_uncommitted(out);
+    }
 }
 
 /* Whether rel names a file inside the folder: not empty, not absolute, no "." or ".." or empty part, no
@@ -203,19 +301,54 @@ static cs_status take_lock(cs_outdir *out, cs_error *err) {
     return cs_error_set(err, CS_ERR_IO, "%s: cannot take the lock: other cablesim runs keep taking it", path);
 }
 
+/* Close the journal and the lock, removing the lock's file first (while it is held: a run waiting on this
+ * file tries again). With signals held: a handler never removes the lock's file again once this did (another
+ * run's by then). */
 static void release(cs_outdir *out) {
     if (out->journal >= 0) close(out->journal);
     out->journal = -1;
     if (out->lock >= 0) {
-        char path[PATH_SIZE];
-        full_path(out, CS_OUT_LOCK, path, sizeof path);
-        unlink(path); /* while it is held: a run waiting on this file tries again */
+        unlink_lock(out);
         close(out->lock);
         out->lock = -1;
     }
     free(out->prev);
     out->prev = NULL;
     out->prev_count = 0;
+}
+
+/* ---- temporaries ---- */
+
+/* mkstemp of the template DIR/rel (ending in XXXXXX), and the name it chose into rel (as long as the
+ * template). Its descriptor, or -1 with errno set. The caller holds signals until rel is where
+ * cs_out_signal_cleanup looks. */
+static int make_temp(const cs_outdir *out, char *rel) {
+    char path[PATH_SIZE];
+    if (!full_path(out, rel, path, sizeof path)) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    int fd = mkstemp(path);
+    if (fd >= 0) memcpy(rel, path + strlen(out->dir) + 1, strlen(rel));
+    return fd;
+}
+
+/* A temporary of the folder's own (what: "manifest", "journal"), named in out->aside until end_aside, its
+ * path into path (PATH_SIZE). Its descriptor, or -1 with errno set. */
+static int begin_aside(cs_outdir *out, const char *what, char *path) {
+    snprintf(out->aside, sizeof out->aside, "%s%s.XXXXXX", tmp_prefix, what);
+    sigset_t old;
+    hold_signals(&old);
+    int fd = make_temp(out, out->aside);
+    let_signals(&old);
+    full_path(out, out->aside, path, PATH_SIZE);
+    if (fd < 0) out->aside[0] = '\0';
+    return fd;
+}
+
+/* The temporary of begin_aside renamed or removed. */
+static void end_aside(cs_outdir *out) {
+    out->aside[0] = '\0';
 }
 
 /* ---- the manifest ---- */
@@ -285,13 +418,13 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
  * a temporary and a rename. */
 static cs_status write_manifest(cs_outdir *out, int with_prev, cs_error *err) {
     char tmp[PATH_SIZE], path[PATH_SIZE];
-    snprintf(tmp, sizeof tmp, "%s/%smanifest.XXXXXX", out->dir, tmp_prefix);
     full_path(out, CS_OUT_MANIFEST, path, sizeof path);
-    int fd = mkstemp(tmp);
+    int fd = begin_aside(out, "manifest", tmp);
     FILE *f = fd < 0 ? NULL : fdopen(fd, "w");
     if (!f) {
         cs_status st = cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
         if (fd >= 0) close(fd), unlink(tmp);
+        end_aside(out);
         return st;
     }
     fchmod(fd, (mode_t)out->mode);
@@ -311,8 +444,10 @@ static cs_status write_manifest(cs_outdir *out, int with_prev, cs_error *err) {
     if (bad || rename(tmp, path) != 0) {
         cs_status st = cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(bad ? errnum : errno));
         unlink(tmp);
+        end_aside(out);
         return st;
     }
+    end_aside(out);
     return CS_OK;
 }
 
@@ -375,17 +510,10 @@ static cs_status check_contents(cs_outdir *out, cs_error *err) {
     return rc == 0 ? CS_OK : CS_ERR_IO;
 }
 
-cs_status cs_out_open(cs_outdir *out, const char *dir, int flags, cs_error *err) {
-    memset(out, 0, sizeof *out);
-    out->lock = out->journal = -1;
-    out->flags = flags;
-    mode_t mask = umask(0);
-    umask(mask);
-    out->mode = 0666u & ~(unsigned)mask;
-    if (strlen(dir) >= sizeof out->dir - 80) {
-        return cs_error_set(err, CS_ERR_INVALID, "%s: output path too long", dir);
-    }
+/* cs_out_open with signals held: its folders made and its lock taken are known to the handler at once. */
+static cs_status open_held(cs_outdir *out, const char *dir, cs_error *err) {
     snprintf(out->dir, sizeof out->dir, "%s", dir);
+    enlist(out);
     char part[1024];
     for (size_t i = 1; i <= strlen(dir); i++) {
         if ((dir[i] != '/' && dir[i] != '\0') || dir[i - 1] == '/') continue;
@@ -412,16 +540,36 @@ cs_status cs_out_open(cs_outdir *out, const char *dir, int flags, cs_error *err)
     return status;
 }
 
+cs_status cs_out_open(cs_outdir *out, const char *dir, int flags, cs_error *err) {
+    memset(out, 0, sizeof *out);
+    out->lock = out->journal = -1;
+    out->flags = flags;
+    mode_t mask = umask(0);
+    umask(mask);
+    out->mode = 0666u & ~(unsigned)mask;
+    if (strlen(dir) >= sizeof out->dir - 80) {
+        return cs_error_set(err, CS_ERR_INVALID, "%s: output path too long", dir);
+    }
+    sigset_t old;
+    hold_signals(&old);
+    cs_status status = open_held(out, dir, err);
+    let_signals(&old);
+    return status;
+}
+
 cs_status cs_out_subdir(cs_outdir *out, const char *subdir, cs_error *err) {
     char path[PATH_SIZE];
     full_path(out, subdir, path, sizeof path);
     struct stat st;
-    int made = mkdir(path, 0777) == 0;
-    if (!made && errno != EEXIST) {
-        return cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
-    }
+    sigset_t old;
+    hold_signals(&old);
+    int made = mkdir(path, 0777) == 0, errnum = errno;
     if (made && out->subdir_count < 8)
         snprintf(out->subdirs[out->subdir_count++], sizeof out->subdirs[0], "%s", subdir);
+    let_signals(&old);
+    if (!made && errnum != EEXIST) {
+        return cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errnum));
+    }
     if (lstat(path, &st) != 0 || !S_ISDIR(st.st_mode)) { /* a file, or a link to somewhere else */
         return cs_error_set(err, CS_ERR_IO, "%s: not a folder of this one (%s)", path, strerror(ENOTDIR));
     }
@@ -430,7 +578,7 @@ cs_status cs_out_subdir(cs_outdir *out, const char *subdir, cs_error *err) {
 
 /* A temporary beside DIR/name, open for writing (its descriptor), named into out. -1 with err filled. */
 static int begin(cs_outdir *out, const char *name, cs_error *err) {
-    char final[PATH_SIZE], tmp[PATH_SIZE];
+    char final[PATH_SIZE];
     if (out->count == CS_OUT_MAX_FILES) {
         cs_error_set(err, CS_ERR_MEMORY, "too many output files");
         return -1;
@@ -457,15 +605,17 @@ static int begin(cs_outdir *out, const char *name, cs_error *err) {
     int head = slash ? (int)(slash - name + 1) : 0;
     char *rel = out->tmps[out->count];
     snprintf(rel, sizeof out->tmps[0], "%.*s%s%s.XXXXXX", head, name, tmp_prefix, name + head);
-    full_path(out, rel, tmp, sizeof tmp);
-    int fd = mkstemp(tmp);
+    snprintf(out->names[out->count], sizeof out->names[0], "%s", name);
+    sigset_t old;
+    hold_signals(&old);
+    int fd = make_temp(out, rel);
+    if (fd >= 0) out->count++;
+    let_signals(&old);
     if (fd < 0) {
         cs_error_set(err, CS_ERR_IO, "%s: %s", final, strerror(errno));
         return -1;
     }
-    snprintf(rel, sizeof out->tmps[0], "%s", tmp + strlen(out->dir) + 1); /* the name mkstemp chose */
     fchmod(fd, (mode_t)out->mode);
-    snprintf(out->names[out->count++], sizeof out->names[0], "%s", name);
     return fd;
 }
 
@@ -600,16 +750,11 @@ static cs_status remove_earlier(const cs_outdir *out, const char *rel, cs_error 
                         strerror(errno));
 }
 
-cs_status cs_out_commit(cs_outdir *out, cs_error *err) {
+/* cs_out_commit once every file is on the disk: the manifests and the renames. */
+static cs_status put_in_place(cs_outdir *out, cs_error *err) {
     char tmp[PATH_SIZE], final[PATH_SIZE];
-    cs_status st = CS_OK;
-    for (int i = 0; st == CS_OK && i < out->count; i++) { /* every file on the disk before any is renamed */
-        st = sync_file(out, i, 1, err);
-        full_path(out, out->tmps[i], tmp, sizeof tmp);
-        if (st == CS_OK && fingerprint(tmp, &out->prints[i]) != 0) st = end_failed(out, i, errno, err);
-    }
     /* the manifest first names both runs' files, so that every file cablesim put here stays its own */
-    if (st == CS_OK) st = write_manifest(out, 1, err);
+    cs_status st = write_manifest(out, 1, err);
     if (st != CS_OK) return st;
     int earlier = 0; /* the earlier run's files this run does not write: removed below */
     for (int i = 0; i < out->count; i++) {
@@ -645,40 +790,39 @@ cs_status cs_out_commit(cs_outdir *out, cs_error *err) {
     out->count = 0;
     out->made = out->subdir_count = 0; /* the folders hold a result now */
     release(out);
+    delist(out);
     return CS_OK;
 }
 
+cs_status cs_out_commit(cs_outdir *out, cs_error *err) {
+    cs_status st = CS_OK;
+    char tmp[PATH_SIZE];
+    for (int i = 0; st == CS_OK && i < out->count; i++) { /* every file on the disk before any is renamed */
+        st = sync_file(out, i, 1, err);
+        full_path(out, out->tmps[i], tmp, sizeof tmp);
+        if (st == CS_OK && fingerprint(tmp, &out->prints[i]) != 0) st = end_failed(out, i, errno, err);
+    }
+    if (st != CS_OK) return st;
+    /* a signal from here on is taken once the files are in place: it finds the folder as it was before
+     * the command, or with the command's files, never with some of each */
+    sigset_t old;
+    hold_signals(&old);
+    st = put_in_place(out, err);
+    let_signals(&old);
+    return st;
+}
+
 void cs_out_abort(cs_outdir *out) {
-    char path[PATH_SIZE];
-    for (int i = 0; i < out->count; i++) {
-        full_path(out, out->tmps[i], path, sizeof path);
-        unlink(path);
-    }
-    for (int i = 0; i < out->count; i++) { /* a subfolder (plots/) this left empty */
-        const char *slash = strrchr(out->names[i], '/');
-        if (!slash) continue;
-        snprintf(path, sizeof path, "%s/%.*s", out->dir, (int)(slash - out->names[i]), out->names[i]);
-        rmdir(path);
-    }
-    for (int i = 0; i < out->subdir_count; i++) { /* and one it made that no file was begun in */
-        full_path(out, out->subdirs[i], path, sizeof path);
-        rmdir(path);
-    }
-    out->count = out->subdir_count = 0;
+    sigset_t old;
+    hold_signals(&old);
+    remove_uncommitted(out);
+    if (out->lock >= 0) close(out->lock); /* its file removed above */
+    out->lock = -1;
+    out->count = out->subdir_count = out->made = 0;
+    end_aside(out);
     release(out);
-    /* the folders cs_out_open made, deepest first, while they are empty */
-    char part[1024];
-    snprintf(part, sizeof part, "%s", out->dir);
-    for (int k = 0; k < out->made; k++) {
-        size_t n = strlen(part);
-        while (n > 1 && part[n - 1] == '/')
-            part[--n] = '\0';
-        if (rmdir(part) != 0) break;
-        char *slash = strrchr(part, '/');
-        if (!slash) break;
-        *slash = '\0';
-    }
-    out->made = 0;
+    delist(out);
+    let_signals(&old);
 }
 
 /* ---- a sweep's journal ---- */
@@ -696,15 +840,16 @@ static int write_all_sync(int fd, const char *text, size_t len) {
 
 cs_status cs_out_journal_start(cs_outdir *out, const char *text, size_t len, cs_error *err) {
     char tmp[PATH_SIZE], path[PATH_SIZE];
-    snprintf(tmp, sizeof tmp, "%s/%sjournal.XXXXXX", out->dir, tmp_prefix);
     full_path(out, CS_OUT_JOURNAL, path, sizeof path);
-    int fd = mkstemp(tmp);
+    int fd = begin_aside(out, "journal", tmp);
     if (fd < 0 || fchmod(fd, (mode_t)out->mode) != 0 || write_all_sync(fd, text, len) != 0 ||
         rename(tmp, path) != 0) {
         cs_status st = cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
         if (fd >= 0) close(fd), unlink(tmp);
+        end_aside(out);
         return st;
     }
+    end_aside(out);
     sync_folder(out, "", 0);
     if (out->journal >= 0) close(out->journal);
     out->journal = fd; /* the renamed file: appends go on at its end */

@@ -16,7 +16,17 @@
  * temporary and a rename: the commit point (the manifest written before the renames is that one already
  * when the earlier manifest named no other file). cs_out_abort removes the temporaries (and the folders
  * cs_out_open made) so a failed run leaves nothing. Either releases the lock. A sweep's journal, beside them,
- * is below. */
+ * is below.
+ *
+ * A signal (the command's handler of SIGINT and SIGTERM calls cs_out_signal_cleanup) does what
+ * cs_out_abort does to every folder open, from within the handler: the folder is left as it was before
+ * the command. Whatever changes the record of what a folder holds (a temporary made, a folder made, the
+ * lock taken or released) does so with SIGINT and SIGTERM held back in its thread, so the handler never
+ * finds a file made and not yet named; the commit holds them too from its first manifest on (its fsyncs of
+ * the files before it do not), so a signal during a commit is taken once the files are in place: the
+ * folder then holds the earlier run's files or this one's, never some of each. For this the handler must
+ * run in the thread that writes the folder (a command's other threads block both signals). A kill -9
+ * leaves the temporaries, which the next run into the folder removes, and the lock, which it takes over. */
 #ifndef CS_OUTFILE_H
 #define CS_OUTFILE_H
 
@@ -59,17 +69,19 @@ typedef struct cs_outdir {
     int made;             /* the folders cs_out_open created: the last `made` prefixes of dir */
     char subdirs[8][128]; /* the subfolders cs_out_subdir made (cs_out_abort removes them when empty) */
     int subdir_count;
-    int flags;     /* CS_OUT_FORCE */
-    int lock;      /* the lock's file descriptor, -1 when not held */
-    int journal;   /* the journal's, open for appending; -1: none */
-    unsigned mode; /* the files' permissions: 0666 less the umask */
+    int flags;      /* CS_OUT_FORCE */
+    char aside[48]; /* the temporary of the manifest or the journal being written, relative to dir; "" */
+    int lock;       /* the lock's file descriptor, -1 when not held */
+    int journal;    /* the journal's, open for appending; -1: none */
+    unsigned mode;  /* the files' permissions: 0666 less the umask */
 } cs_outdir;
 
 /* Create dir (and its parents), take its lock and read its manifest, before anything is computed.
  * Returns CS_OK, or CS_ERR_IO with err filled ("DIR: Not a directory", "DIR is in use by cablesim pid N",
  * "DIR holds notes.txt, which no cablesim run wrote there ...", or "... which has changed since cablesim
- * wrote it there ..."); CS_ERR_INVALID for a path too long,
- * CS_ERR_MEMORY for a manifest that does not fit in memory. */
+ * wrote it there ..."); CS_ERR_INVALID for a path too long, CS_ERR_MEMORY for a manifest that does not fit
+ * in memory. Once it returned CS_OK, cs_out_commit or cs_out_abort ends out's use before out goes away
+ * (cs_out_signal_cleanup reads it until then). */
 cs_status cs_out_open(cs_outdir *out, const char *dir, int flags, cs_error *err);
 /* Create DIR/subdir, for files named "subdir/...". Returns CS_OK, or CS_ERR_IO with err filled. */
 cs_status cs_out_subdir(cs_outdir *out, const char *subdir, cs_error *err);
@@ -111,5 +123,10 @@ char *cs_out_journal_read(const char *dir, size_t *len, cs_error *err);
 /* Remove the temporaries begun, and the folders cs_out_open made if they are empty; release the lock.
  * Safe to call twice, and after a commit (then it does nothing). */
 void cs_out_abort(cs_outdir *out);
+/* cs_out_abort's removals for every folder open in the process (from cs_out_open to cs_out_commit or
+ * cs_out_abort; the first 8 open at once), for a handler of SIGINT or SIGTERM that then ends the process:
+ * async-signal-safe (unlink, rmdir and memcpy on the paths each folder holds); it neither closes nor
+ * frees anything. The lock's file is removed only while this process holds the lock. */
+void cs_out_signal_cleanup(void);
 
 #endif
