@@ -59,11 +59,21 @@ mv "$tmp/summary.before" "$own/summary.json"
 echo "my notes" >"$own/notes.txt"
 printf 'notes.txt\n' >>"$own/.cablesim-manifest"
 out=$("$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" 2>&1)
-check "a name typed into the manifest does not make a file cablesim's" '[ $? -eq 1 ] && grep -q "holds notes.txt, which its manifest lists without the size and hash" <<<"$out" && [ "$(cat "$own/notes.txt")" = "my notes" ] || { echo "$out"; false; }'
+check "a name typed into the manifest does not make a file cablesim's" '[ $? -eq 1 ] && grep -q "holds notes.txt, which .cablesim-manifest lists without the size and hash" <<<"$out" && [ "$(cat "$own/notes.txt")" = "my notes" ] || { echo "$out"; false; }'
 printf 'notes.txt\t9\t0123456789abcdef\n' >>"$own/.cablesim-manifest"
 out=$("$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" --force 2>&1)
 check "nor does one typed with a wrong hash: --force writes beside it and keeps it" '[ $? -eq 0 ] && [ "$(cat "$own/notes.txt")" = "my notes" ] && ! grep -q "^notes.txt" "$own/.cablesim-manifest" || { echo "$out"; false; }'
 rm "$own/notes.txt"
+
+# A folder holds one command's results: another command's are kept as the user's are (named in the
+# refusal, and --force writes beside them), so a validate into a run's folder does not remove the run.
+cmd="$tmp/cmd"
+"$cs" run examples/aps3.yaml -o "$cmd" --t-end "10 ms" >/dev/null 2>&1
+sums=$(cd "$cmd" && sha256sum events.csv summary.json timeseries.csv)
+out=$("$cs" validate -o "$cmd" --only verification 2>&1)
+check "validate into a run's folder is refused, naming the command that wrote it" '[ $? -eq 1 ] && grep -q "nothing run: $cmd holds [a-z.]*, which \`cablesim run\` wrote there: that command.s results, which \`cablesim validate\` does not replace" <<<"$out" && [ "$(cd "$cmd" && sha256sum events.csv summary.json timeseries.csv)" = "$sums" ] || { echo "$out"; false; }'
+out=$("$cs" validate -o "$cmd" --only verification --force 2>&1)
+check "validate --force writes beside the run's results and keeps them" '[ $? -eq 0 ] && [ -s "$cmd/validation.md" ] && [ "$(cd "$cmd" && sha256sum events.csv summary.json timeseries.csv)" = "$sums" ] && grep -qx "# written by: cablesim validate" "$cmd/.cablesim-manifest" && ! grep -q "^summary.json" "$cmd/.cablesim-manifest" || { echo "$out"; false; }'
 
 # A manifest names files inside its folder only: a line that leaves it removes nothing.
 echo outside >"$tmp/victim.txt"

@@ -146,7 +146,7 @@ cs_status cs_compare_write(const cs_compare *c, const char *dir, int flags, cs_e
                                 c->traces[i].label);
     cs_error wrote;
     cs_outdir out;
-    cs_status st = cs_out_open(&out, dir, flags & CS_COMPARE_FORCE ? CS_OUT_FORCE : 0, err);
+    cs_status st = cs_out_open(&out, dir, "compare", flags & CS_COMPARE_FORCE ? CS_OUT_FORCE : 0, err);
     if (st == CS_OK && cs_compare_write_traces(&out, c->traces, c->count, c->reference, &wrote) != CS_OK)
         st = cs_status_set(err, CS_ERR_IO, wrote.message); /* the status cablesim/compare.h promises */
     if (st == CS_OK) st = cs_out_commit(&out, err);

@@ -157,12 +157,23 @@ static int listed(const cs_outdir *out, const char *rel) {
     return e && e->ours == 1;
 }
 
-/* Why the file rel, which is there and not cablesim's, is not: the end of "..., which " for a message. */
-static const char *not_ours(const cs_outdir *out, const char *rel) {
+/* Why the file rel, which is there and not this command's, is not: the end of "DIR holds rel, which "
+ * for a message, into buf. */
+static const char *not_ours(const cs_outdir *out, const char *rel, char *buf, size_t size) {
     const cs_out_listed *e = find(out, rel);
-    if (!e) return "no cablesim run wrote there";
-    return e->ours == 0 ? "has changed since cablesim wrote it there"
-                        : "its manifest lists without the size and hash cablesim records";
+    if (!e)
+        snprintf(buf, size, "no cablesim run wrote there (no %s lists it)", CS_OUT_MANIFEST);
+    else if (e->ours == 0)
+        snprintf(buf, size, "has changed since cablesim wrote it there (its size or hash is not %s's)",
+                 CS_OUT_MANIFEST);
+    else if (e->ours == -1)
+        snprintf(buf, size, "%s lists without the size and hash cablesim gives its files", CS_OUT_MANIFEST);
+    else
+        snprintf(buf, size,
+                 "`cablesim %s` wrote there: that command's results, which `cablesim %s` does not "
+                 "replace",
+                 out->prev_command, out->command);
+    return buf;
 }
 
 /* The size and hash of the regular file at path (not through a link at its end) into p. 0, or -1 (errno
@@ -384,6 +395,10 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
             }
             continue;
         }
+        if (strncmp(line, "# written by: cablesim ", 23) == 0 &&
+            strlen(line + 23) < sizeof out->prev_command &&
+            strspn(line + 23, "abcdefghijklmnopqrstuvwxyz") == strlen(line + 23))
+            memcpy(out->prev_command, line + 23, strlen(line + 23) + 1);
         char *tab = strchr(line, '\t');
         if (tab) *tab = '\0';
         cs_out_listed e = {.ours = -1};
@@ -411,6 +426,9 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
         out->prev[out->prev_count++] = e;
     }
     fclose(f);
+    for (int i = 0;
+         out->prev_command[0] && strcmp(out->prev_command, out->command) != 0 && i < out->prev_count; i++)
+        if (out->prev[i].ours == 1) out->prev[i].ours = -2;
     return CS_OK;
 }
 
@@ -431,6 +449,7 @@ static cs_status write_manifest(cs_outdir *out, int with_prev, cs_error *err) {
     fprintf(f, "# cablesim: the files its last run wrote in this folder, each with its size in bytes and "
                "the 64-bit FNV-1a hash of its bytes; the next run into it removes or replaces these while "
                "they are as written, and no other file\n");
+    fprintf(f, "# written by: cablesim %s\n", out->command);
     for (int i = 0; i < out->count; i++)
         fprintf(f, "%s\t%lld\t%016llx\n", out->names[i], out->prints[i].size, out->prints[i].hash);
     for (int i = 0; with_prev && i < out->prev_count; i++) {
@@ -499,13 +518,14 @@ static int scan(const cs_outdir *out, const char *rel, int depth, int remove, ch
  * a killed run left. */
 static cs_status check_contents(cs_outdir *out, cs_error *err) {
     if (out->flags & CS_OUT_FORCE) return CS_OK;
-    char found[PATH_SIZE];
+    char found[PATH_SIZE], why[PATH_SIZE];
     int rc = scan(out, "", 0, 0, found, sizeof found, err);
     if (rc == 1)
-        cs_error_set(err, CS_ERR_IO,
-                     "%s holds %s, which %s (%s lists what one wrote, as written): choose another folder, or "
-                     "give --force to write beside such files (none of them is removed)",
-                     out->dir, found, not_ours(out, found), CS_OUT_MANIFEST);
+        cs_error_set(
+            err, CS_ERR_IO,
+            "%s holds %s, which %s: choose another folder, or give --force to write beside such files "
+            "(none of them is removed)",
+            out->dir, found, not_ours(out, found, why, sizeof why));
     if (rc == 0) rc = scan(out, "", 0, 1, found, sizeof found, err);
     return rc == 0 ? CS_OK : CS_ERR_IO;
 }
@@ -540,10 +560,11 @@ static cs_status open_held(cs_outdir *out, const char *dir, cs_error *err) {
     return status;
 }
 
-cs_status cs_out_open(cs_outdir *out, const char *dir, int flags, cs_error *err) {
+cs_status cs_out_open(cs_outdir *out, const char *dir, const char *command, int flags, cs_error *err) {
     memset(out, 0, sizeof *out);
     out->lock = out->journal = -1;
     out->flags = flags;
+    snprintf(out->command, sizeof out->command, "%s", command);
     mode_t mask = umask(0);
     umask(mask);
     out->mode = 0666u & ~(unsigned)mask;
@@ -594,11 +615,9 @@ static int begin(cs_outdir *out, const char *name, cs_error *err) {
         return -1;
     }
     if (lstat(final, &st) == 0 && !listed(out, name)) {
-        cs_error_set(
-            err, CS_ERR_IO,
-            "%s: a file is there which %s (%s/%s lists what one wrote, as written): it is kept; remove "
-            "it or write elsewhere",
-            final, not_ours(out, name), out->dir, CS_OUT_MANIFEST);
+        char why[PATH_SIZE];
+        cs_error_set(err, CS_ERR_IO, "%s: a file is there which %s: it is kept; remove it or write elsewhere",
+                     final, not_ours(out, name, why, sizeof why));
         return -1;
     }
     const char *slash = strrchr(name, '/');

@@ -50,7 +50,8 @@ typedef struct cs_out_print {
 } cs_out_print;
 
 /* A line of the earlier manifest. ours 1: the file is as that run wrote it, or gone; 0: a file of that name
- * is there, changed since; -1: the line gives no size and hash (typed in). A file not ours is the user's. */
+ * is there, changed since; -1: the line gives no size and hash (typed in); -2: another command wrote it (a
+ * sweep's results, met by a run). A file not ours is kept: the user's, or another command's results. */
 typedef struct cs_out_listed {
     char name[128];
     cs_out_print print;
@@ -69,20 +70,24 @@ typedef struct cs_outdir {
     int made;             /* the folders cs_out_open created: the last `made` prefixes of dir */
     char subdirs[8][128]; /* the subfolders cs_out_subdir made (cs_out_abort removes them when empty) */
     int subdir_count;
-    int flags;      /* CS_OUT_FORCE */
+    int flags;             /* CS_OUT_FORCE */
+    char command[16];      /* the command writing ("run", "sweep", ...): the manifest's "written by" */
+    char prev_command[16]; /* the earlier manifest's; "" if it names none */
     char aside[48]; /* the temporary of the manifest or the journal being written, relative to dir; "" */
     int lock;       /* the lock's file descriptor, -1 when not held */
     int journal;    /* the journal's, open for appending; -1: none */
     unsigned mode;  /* the files' permissions: 0666 less the umask */
 } cs_outdir;
 
-/* Create dir (and its parents), take its lock and read its manifest, before anything is computed.
+/* Create dir (and its parents), take its lock and read its manifest, before anything is computed, for
+ * the command (`cablesim COMMAND`: "run", "sweep", "validate", "compare", "designer") that writes it: the
+ * files another command wrote there are that command's results, kept as the user's are.
  * Returns CS_OK, or CS_ERR_IO with err filled ("DIR: Not a directory", "DIR is in use by cablesim pid N",
  * "DIR holds notes.txt, which no cablesim run wrote there ...", or "... which has changed since cablesim
  * wrote it there ..."); CS_ERR_INVALID for a path too long, CS_ERR_MEMORY for a manifest that does not fit
  * in memory. Once it returned CS_OK, cs_out_commit or cs_out_abort ends out's use before out goes away
  * (cs_out_signal_cleanup reads it until then). */
-cs_status cs_out_open(cs_outdir *out, const char *dir, int flags, cs_error *err);
+cs_status cs_out_open(cs_outdir *out, const char *dir, const char *command, int flags, cs_error *err);
 /* Create DIR/subdir, for files named "subdir/...". Returns CS_OK, or CS_ERR_IO with err filled. */
 cs_status cs_out_subdir(cs_outdir *out, const char *subdir, cs_error *err);
 /* Start a temporary for DIR/name. NULL with err filled on failure: CS_ERR_INVALID for a name longer than
