@@ -32,7 +32,7 @@ cp examples/aps3.yaml "$tmp/aps3.yaml" # beside the model: its files may not lea
 printf 'name: aps3-pu\nbarrier: {file: aps3.yaml}\nvehicle: PU\nscenario: {file: aps3.yaml}\n' >"$tmp/pu.yaml"
 out=$("$cs" rate "$tmp/pu.yaml" --standard astm-f2656 --class PU40 2>&1)
 check "rate --class PU40 on a PU model (exit 0)" '[ $? -eq 0 ] || { echo "$out"; false; }'
-check "PU40: the model's PU at 40 mph, stopped, P2" 'grep -qE "^  PU   40 mph  stopped +penetration [0-9.]+ m .* designation as run PU40/P2$" <<<"$out" && grep -qxF "rating: ASTM F2656 PU40/P2" <<<"$out"'
+check "PU40: the model's PU at 40 mph, stopped, P2" 'grep -qE "^  PU   40 mph  stopped +penetration [0-9.]+ m .* designation as run PU40/P2$" <<<"$out" && grep -qE "^rating: ASTM F2656 PU40/P2 \(penetration [0-9.]+ m \([0-9.]+ ft\), vehicle front, from the barrier.s protected-side face\)$" <<<"$out"'
 check "PU40: its own vehicle named" 'grep -q "(test vehicle PU, the model.s 2300 kg;" <<<"$out"'
 check "PU40: the penetration as ASTM F2656 measures a PU's" 'grep -qxF "  penetration as the standard measures it: vehicle front, from the barrier'"'"'s protected-side face" <<<"$out"'
 out=$("$cs" rate examples/aps3.yaml --standard astm-f2656 --class M40 2>&1)

@@ -121,7 +121,9 @@ static void rated_as_run(void **state) {
     assert_string_equal(r.label, "PU50/P2"); /* the front, 3.9 m less the 0.1-m barrier */
     CHECK_ABS(r.penetration, 3.8, 1e-12);
     cs_rating_text(&r, text, sizeof text);
-    assert_string_equal(text, "ASTM F2656 PU50/P2");
+    assert_string_equal(text,
+                        "ASTM F2656 PU50/P2 (penetration 3.80 m (12.5 ft), vehicle front, from the barrier's "
+                        "protected-side face)");
     r = cs_rate_as_run(CS_ASTM_F2656, NULL, &pu, 50 * MPH, head_on - 1.01 * deg, &s, &rules);
     assert_false(r.rated || r.tested);
     cs_rating_text(&r, text, sizeof text);

@@ -34,7 +34,9 @@ typedef struct cs_rating_result {
     int through;           /**< 1 if the vehicle got through the barrier */
     char note[160];        /**< why not rated or none, or "the vehicle got through"; "" if nothing */
     char text[256];        /**< the one wording of `cablesim rate` and summary.json: the standard's title,
-                                the label and the note in brackets ("ASTM F2656 M40/P1") */
+                                the label, and in brackets the note and a rating's penetration as the
+                                standard measures it ("ASTM F2656 M40/P2 (penetration 1.50 m (4.9 ft),
+                                front of the cargo bed, from the barrier's protected-side face)") */
 } cs_rating_result;
 
 /** A standard's name as `cablesim rate --standard` takes it: "sd-std-02.01", "sd-std-02.01a", "astm-f2656".

@@ -243,8 +243,13 @@ cs_rating cs_rate_as_run(cs_standard standard, const char *vehicle_class, const 
 }
 
 void cs_rating_text(const cs_rating *r, char *buf, size_t size) {
-    snprintf(buf, size, "%s %s%s%s%s", cs_standard_title(r->standard), r->label, r->note[0] ? " (" : "",
-             r->note, r->note[0] ? ")" : "");
+    char pen[192] = ""; /* a rating's penetration where it has one, as its standard measures it */
+    if (r->rated && isfinite(r->penetration))
+        snprintf(pen, sizeof pen, "penetration %.2f m (%.1f ft), %s", r->penetration, r->penetration / CS_FT,
+                 r->reference);
+    int both = r->note[0] && pen[0], any = r->note[0] || pen[0];
+    snprintf(buf, size, "%s %s%s%s%s%s%s", cs_standard_title(r->standard), r->label, any ? " (" : "", r->note,
+             both ? "; " : "", pen, any ? ")" : "");
 }
 
 /* NCHRP Report 350 (1993) and MASH (2009): tests x-10 (small car), x-11 (pickup) at 100 km/h, 4-12 (single
