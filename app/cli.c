@@ -68,12 +68,6 @@ int cs_cli_next(const cs_cli *c, int argc, char **argv, const char *shortopts,
     return '?';
 }
 
-static void end_by_signal(int sig) {
-    cs_out_signal_cleanup();
-    signal(sig, SIG_DFL);
-    raise(sig); /* delivered when this handler returns */
-}
-
 /* SIGINT and SIGTERM into set. */
 static void both_signals(sigset_t *set) {
     sigemptyset(set);
@@ -84,7 +78,7 @@ static void both_signals(sigset_t *set) {
 void cs_cli_catch_signals(void) {
     struct sigaction sa, was;
     memset(&sa, 0, sizeof sa);
-    sa.sa_handler = end_by_signal;
+    sa.sa_handler = cs_out_end_by_signal;
     both_signals(&sa.sa_mask); /* one cleanup: the other signal waits for it */
     static const int signals[] = {SIGINT, SIGTERM};
     for (int i = 0; i < 2; i++)

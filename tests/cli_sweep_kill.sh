@@ -40,12 +40,14 @@ check "--resume after kill -9: exit 0, the journalled runs read back" '[ $? -eq 
 check "--resume after kill -9: runs.csv byte for byte the whole sweep's" 'cmp "$tmp/killed/runs.csv" "$tmp/whole/runs.csv"'
 check "--resume after kill -9: the journal is gone, the manifest lists runs.csv" '[ ! -e "$journal" ] && grep -qP "^runs.csv\\t[0-9]+\\t[0-9a-f]{16}$" "$tmp/killed/.cablesim-manifest"'
 
-# a second Ctrl-C (SIGINT twice) ends the sweep at once, as the system does (exit 130), or after it wrote
-# the runs done if it got there first: either way --resume gives the whole sweep's runs.csv
+# a second Ctrl-C (SIGINT twice) ends the sweep at once (exit 130), its temporaries and lock removed and
+# its journal kept, or after it wrote the runs done if it got there first: either way --resume gives the
+# whole sweep's runs.csv
 "$cs" sweep "${spec[@]}" -o "$tmp/int2" --threads 1 --quiet >/dev/null 2>&1 &
 pid=$!
 kill_when "$tmp/int2" 7 INT INT
 check "SIGINT twice: the sweep ends by SIGINT (exit 130)" '[ $? -eq 130 ]'
+check "SIGINT twice: no temporary or lock is left, the journal or the outputs kept" '[ -z "$(find "$tmp/int2" -name ".cablesim-tmp.*")" ] && [ ! -e "$tmp/int2/.cablesim-lock" ] && { [ -s "$tmp/int2/.cablesim-journal" ] || [ -s "$tmp/int2/runs.csv" ]; }'
 "$cs" sweep --resume "$tmp/int2" --quiet >/dev/null 2>&1
 check "--resume after SIGINT twice: runs.csv byte for byte the whole sweep's" '[ $? -eq 0 ] && cmp "$tmp/int2/runs.csv" "$tmp/whole/runs.csv"'
 

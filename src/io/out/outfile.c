@@ -129,6 +129,12 @@ void cs_out_signal_cleanup(void) {
     }
 }
 
+void cs_out_end_by_signal(int sig) {
+    cs_out_signal_cleanup();
+    signal(sig, SIG_DFL);
+    raise(sig); /* delivered when this handler returns */
+}
+
 /* Whether rel names a file inside the folder: not empty, not absolute, no "." or ".." or empty part, no
  * control character (a manifest's line or a command's name). */
 static int inside(const char *rel) {

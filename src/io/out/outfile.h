@@ -133,5 +133,8 @@ void cs_out_abort(cs_outdir *out);
  * async-signal-safe (unlink, rmdir and memcpy on the paths each folder holds); it neither closes nor
  * frees anything. The lock's file is removed only while this process holds the lock. */
 void cs_out_signal_cleanup(void);
+/* A handler of SIGINT or SIGTERM: cs_out_signal_cleanup, then the process ends by the signal (its default
+ * action, exit status 128 + the signal). */
+void cs_out_end_by_signal(int sig);
 
 #endif

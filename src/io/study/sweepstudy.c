@@ -264,24 +264,39 @@ static int write_all(cs_outdir *out, const cs_sweep_spec *spec, const double *x,
 
 static volatile sig_atomic_t stop_signal = 0;
 
-/* The first SIGINT or SIGTERM asks the sweep to stop starting runs; a second one does what it does by
- * default. */
+/* The first SIGINT or SIGTERM asks the sweep to stop starting runs; a second one ends it at once, its
+ * folder as it was but for the journal, which keeps the runs done (cs_out_end_by_signal). */
 static void on_signal(int sig) {
     if (stop_signal) {
-        signal(sig, SIG_DFL);
-        raise(sig); /* delivered when this handler returns */
+        cs_out_end_by_signal(sig);
         return;
     }
     stop_signal = sig;
 }
 
-static void catch_signals(int on) {
+/* The program's own handlers, while the study has its own. */
+static struct sigaction program_int, program_term;
+
+/* During the runs (handler on_signal) and while the outputs are written (cs_out_end_by_signal: the
+ * folder as it was, the journal kept) the study's handler, with the program's kept; NULL: the program's
+ * back. */
+static void catch_signals(void (*handler)(int)) {
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on ? on_signal : SIG_DFL;
+    sa.sa_handler = handler;
     sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
+    sigaddset(&sa.sa_mask, SIGINT);
+    sigaddset(&sa.sa_mask, SIGTERM);
+    if (!handler) {
+        sigaction(SIGINT, &program_int, NULL);
+        sigaction(SIGTERM, &program_term, NULL);
+    } else if (handler == on_signal) {
+        sigaction(SIGINT, &sa, &program_int);
+        sigaction(SIGTERM, &sa, &program_term);
+    } else {
+        sigaction(SIGINT, &sa, NULL);
+        sigaction(SIGTERM, &sa, NULL);
+    }
 }
 
 /* ---- the runs ---- */
@@ -489,7 +504,7 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, cs_sweep **kee
                 o->resume ? " (the rest of a stopped study)" : "");
     const char *stop_after_text = getenv("CABLESIM_SWEEP_STOP_AFTER");
     stop_signal = 0;
-    catch_signals(1);
+    catch_signals(on_signal);
     double start = now();
     taker t = {&out, spec, x, all, 0, o};
     if (rank == 0 && size > 1 &&
@@ -512,7 +527,7 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, cs_sweep **kee
         o->parallel(threads, run_worker, &w);
     else
         run_worker(&w);
-    catch_signals(0);
+    catch_signals(cs_out_end_by_signal);
     int stopped = stop_signal;
     if (!stopped)
         progress_show(&p, 1);
@@ -563,6 +578,7 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, cs_sweep **kee
     } else if (stopped) {
         rc = 128 + stopped;
     }
+    catch_signals(NULL); /* the outputs are in place, or removed */
     pthread_mutex_destroy(&w.lock);
     if (rank == 0 && keep && (rc == 0 || rc > 128) && (*keep = handle(spec, x, all, n, p.done, stopped, dir)))
         spec = NULL, x = NULL, all = NULL;
