@@ -94,6 +94,20 @@ static void test_wrong_units(void **state) {
     expect_error(u, "inf m", CS_Q_LENGTH, "is not a number");
 }
 
+/* udunits2 converts a unit to one of the reciprocal dimension by 1/x: "2 s/m" would be 0.5 m/s and "0.5 ft-1"
+ * (a '-' before a digit is a negative power) a 2-ft length. A value is never meant so: refused. */
+static void test_reciprocal_units_refused(void **state) {
+    cs_units *u = *state;
+    expect_error(u, "2 s/m", CS_Q_SPEED, "'s/m' is a unit of 1/speed, not of speed");
+    expect_error(u, "0.5 ft-1", CS_Q_LENGTH,
+                 "'ft-1' is a unit of 1/length, not of length (a '-' before a digit is a negative power)");
+    expect_error(u, "1 ft-2", CS_Q_AREA, "'ft-2' is a unit of 1/area, not of area");
+    expect_error(u, "2 Hz", CS_Q_TIME, "'Hz' is a unit of 1/time, not of time");
+    expect_error(u, "2 in/kip", CS_Q_STIFFNESS, "'in/kip' is a unit of 1/stiffness, not of stiffness");
+    expect_error(u, "3 1/psi", CS_Q_PRESSURE, "'1/psi' is a unit of 1/pressure, not of pressure");
+    close_to(read_ok(u, "2 kg m-1", CS_Q_MASS_PER_LENGTH), 2.0); /* a negative power in a unit of q */
+}
+
 /* Each thread has its own unit system; both read at once. */
 static void *convert_many(void *arg) {
     cs_units *u = cs_units_open(NULL);
@@ -206,9 +220,13 @@ static void test_database_beyond_the_table(void **state) {
 
 int main(void) {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_exact_factors),   cmocka_unit_test(test_bare_numbers_are_pure),
-        cmocka_unit_test(test_wrong_units),     cmocka_unit_test(test_two_threads),
-        cmocka_unit_test(test_table_same_bits), cmocka_unit_test(test_database_beyond_the_table),
+        cmocka_unit_test(test_exact_factors),
+        cmocka_unit_test(test_bare_numbers_are_pure),
+        cmocka_unit_test(test_wrong_units),
+        cmocka_unit_test(test_two_threads),
+        cmocka_unit_test(test_table_same_bits),
+        cmocka_unit_test(test_database_beyond_the_table),
+        cmocka_unit_test(test_reciprocal_units_refused),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

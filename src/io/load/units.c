@@ -70,6 +70,23 @@ static const char *kind_of(cs_units *u, void *unit) {
     return convertible(u, unit, CS_Q_NUMBER) ? "pure number" : NULL;
 }
 
+/* Name the kind of quantity a unit is the reciprocal of ("s/m": speed, "ft-2": area), for a message. */
+static const char *reciprocal_kind_of(cs_units *u, const char *text) {
+    char inverse[80];
+    snprintf(inverse, sizeof inverse, "1/(%s)", text);
+    void *unit = u->ops->parse(u, inverse);
+    const char *kind = unit ? kind_of(u, unit) : NULL;
+    if (unit) u->ops->release(u, unit);
+    return kind;
+}
+
+/* Whether a unit's text has a '-' before a digit: udunits2 reads "ft-2" as 1/ft^2. */
+static int negative_power(const char *text) {
+    for (const char *minus = strchr(text, '-'); minus; minus = strchr(minus + 1, '-'))
+        if (isdigit((unsigned char)minus[1])) return 1;
+    return 0;
+}
+
 /* The end of a decimal number at s ([+-]digits[.digits][e[+-]digits]), or NULL: strtod's hexadecimal,
  * "inf" and "nan" are not a model's numbers ("0x28 mph" is not 40 mph). */
 static const char *decimal_end(const char *s) {
@@ -140,10 +157,14 @@ cs_status cs_units_read(cs_units *u, const char *text, cs_quantity q, double *si
     if (!unit) {
         rc = cs_error_set(err, CS_ERR_INVALID, "unknown unit '%s'", unit_text);
     } else if (u->ops->convert(u, unit, q, value, si) != 0) {
-        const char *kind = kind_of(u, unit);
+        const char *kind = kind_of(u, unit), *inverse = kind ? NULL : reciprocal_kind_of(u, unit_text);
         if (kind)
             rc = cs_error_set(err, CS_ERR_INVALID, "'%s' is a unit of %s, not of %s", unit_text, kind,
                               quantities[q].name);
+        else if (inverse)
+            rc = cs_error_set(err, CS_ERR_INVALID, "'%s' is a unit of 1/%s, not of %s%s", unit_text, inverse,
+                              quantities[q].name,
+                              negative_power(unit_text) ? " (a '-' before a digit is a negative power)" : "");
         else
             rc = cs_error_set(err, CS_ERR_INVALID, "'%s' is not a unit of %s", unit_text, quantities[q].name);
     }
