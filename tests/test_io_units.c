@@ -105,7 +105,38 @@ static void test_reciprocal_units_refused(void **state) {
     expect_error(u, "2 Hz", CS_Q_TIME, "'Hz' is a unit of 1/time, not of time");
     expect_error(u, "2 in/kip", CS_Q_STIFFNESS, "'in/kip' is a unit of 1/stiffness, not of stiffness");
     expect_error(u, "3 1/psi", CS_Q_PRESSURE, "'1/psi' is a unit of 1/pressure, not of pressure");
-    close_to(read_ok(u, "2 kg m-1", CS_Q_MASS_PER_LENGTH), 2.0); /* a negative power in a unit of q */
+}
+
+/* udunits2 reads a number in a unit's text as a factor of it and "@ N" or "since DATE" as an origin: "15
+ * 000.5 kg" (digits grouped by a space) would be 15 x 0.5 kg and "5 s @ 3" a date's seconds. Refused, while a
+ * power's digits and the 1 of 1/x read as before. */
+static void test_number_in_unit_refused(void **state) {
+    cs_units *u = *state;
+    const char *why = "(expected one number, then its unit, e.g. \"15000 lb\": no space within the number)";
+    const struct {
+        const char *text, *unit;
+        cs_quantity q;
+    } bad[] = {{"15 000.5 kg", "'000.5 kg'", CS_Q_MASS},
+               {"5 2 kg", "'2 kg'", CS_Q_MASS},
+               {"1 m 2", "'m 2'", CS_Q_LENGTH},
+               {"2 kg.5", "'kg.5'", CS_Q_MASS},
+               {"1 m2.5", "'m2.5'", CS_Q_AREA},
+               {"5 s @ 3", "'s @ 3'", CS_Q_TIME},
+               {"5 s since 1970-01-01", "'s since 1970-01-01'", CS_Q_TIME},
+               {"3 1000 lbf/ft^2", "'1000 lbf/ft^2'", CS_Q_PRESSURE}};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        char part[160];
+        snprintf(part, sizeof part, "'%s' has a number in its unit %s %s", bad[i].text, bad[i].unit, why);
+        expect_error(u, bad[i].text, bad[i].q, part);
+    }
+    const double in = 0.0254;
+    close_to(read_ok(u, "3 in2", CS_Q_AREA), 3 * in * in);
+    close_to(read_ok(u, "3 in^2", CS_Q_AREA), 3 * in * in);
+    close_to(read_ok(u, "3 in**2", CS_Q_AREA), 3 * in * in);
+    close_to(read_ok(u, "3 in^+2", CS_Q_AREA), 3 * in * in);
+    close_to(read_ok(u, "2 kg m-1", CS_Q_MASS_PER_LENGTH), 2.0);
+    close_to(read_ok(u, "2 kg m^-1", CS_Q_MASS_PER_LENGTH), 2.0);
+    close_to(read_ok(u, "2 N 1/m", CS_Q_STIFFNESS), 2.0);
 }
 
 /* Each thread has its own unit system; both read at once. */
@@ -227,6 +258,7 @@ int main(void) {
         cmocka_unit_test(test_table_same_bits),
         cmocka_unit_test(test_database_beyond_the_table),
         cmocka_unit_test(test_reciprocal_units_refused),
+        cmocka_unit_test(test_number_in_unit_refused),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -87,6 +87,22 @@ static int negative_power(const char *text) {
     return 0;
 }
 
+/* Whether a unit's text holds a number or an origin of its own: udunits2 reads "2 kg" as a unit of 2 kg and
+ * "s @ 3" as seconds from an origin, so "15 000.5 kg" would be 15 x 0.5 kg. A power's digits (in2, m^2,
+ * m**2, m-1) and the 1 of 1/s are none. */
+static int number_in_unit(const char *text) {
+    for (const char *p = text; *p; p++) {
+        if (*p == '@') return 1;
+        if (!isdigit((unsigned char)*p) || (p > text && isdigit((unsigned char)p[-1])))
+            continue; /* not the first digit of a number (after a power's digits, "m2.5" is m^2 x 5) */
+        const char *before = p - (p > text && (p[-1] == '-' || p[-1] == '+'));
+        int power = before > text && (isalpha((unsigned char)before[-1]) || before[-1] == '^' ||
+                                      (before - text >= 2 && before[-1] == '*' && before[-2] == '*'));
+        if (!power && !(p[0] == '1' && p[1] == '/')) return 1;
+    }
+    return 0;
+}
+
 /* The end of a decimal number at s ([+-]digits[.digits][e[+-]digits]), or NULL: strtod's hexadecimal,
  * "inf" and "nan" are not a model's numbers ("0x28 mph" is not 40 mph). */
 static const char *decimal_end(const char *s) {
@@ -151,6 +167,11 @@ cs_status cs_units_read(cs_units *u, const char *text, cs_quantity q, double *si
         *si = value;
         return CS_OK;
     }
+    if (number_in_unit(unit_text))
+        return cs_error_set(err, CS_ERR_INVALID,
+                            "'%s' has a number in its unit '%s' (expected one number, then its unit, e.g. "
+                            "\"15000 lb\": no space within the number)",
+                            number, unit_text);
     const char *lookup = (q == CS_Q_ACCELERATION && strcmp(unit_text, "g") == 0) ? "gee" : unit_text;
     cs_status rc = CS_OK;
     void *unit = u->ops->parse(u, lookup);
