@@ -139,6 +139,44 @@ static void test_number_in_unit_refused(void **state) {
     close_to(read_ok(u, "2 N 1/m", CS_Q_STIFFNESS), 2.0);
 }
 
+/* A moment or an energy as engineers write it: two units joined by a hyphen, a middle dot (U+00B7, or the dot
+ * operator U+22C5 that looks the same), a '*', a '.' or a space, in either order, is their product. By hand:
+ * 1 ft kip = 0.3048 m x 4448.2216152605 N = 1355.8179483314 J (1355.818 J to the 0.5 mJ of its last digit),
+ * 1 ft lbf = 1.3558179483314 J, 1 kip in = 112.98482902762 J, 1 kN m = 1000 J. A pound written lb is of
+ * mass: refused for an energy, saying so. */
+static void test_products_of_units(void **state) {
+    cs_units *u = *state;
+    const double lbf = 0.45359237 * 9.80665, ft = 0.3048, in = 0.0254;
+    const char *ft_kip[] = {"ft-kip", "kip-ft", "ft\u00b7kip", "kip\u00b7ft", "ft\u22c5kip",
+                            "ft*kip", "kip ft", "ft.kip",      "ft-kips"};
+    for (size_t i = 0; i < sizeof ft_kip / sizeof ft_kip[0]; i++) {
+        char text[32];
+        snprintf(text, sizeof text, "1 %s", ft_kip[i]);
+        double v = read_ok(u, text, CS_Q_ENERGY);
+        close_to(v, ft * 1000 * lbf);
+        if (!(fabs(v - 1355.818) <= 5e-4)) fail_msg("'%s': %.9g J, not 1355.818 J", text, v);
+    }
+    close_to(read_ok(u, "2.5 ft-lbf", CS_Q_ENERGY), 2.5 * ft * lbf);
+    close_to(read_ok(u, "2.5 lbf-ft", CS_Q_ENERGY), 2.5 * ft * lbf);
+    close_to(read_ok(u, "2.5 ft\u00b7lbf", CS_Q_ENERGY), 2.5 * ft * lbf);
+    close_to(read_ok(u, "3 kip-in", CS_Q_ENERGY), 3 * 1000 * lbf * in);
+    close_to(read_ok(u, "3 in-kip", CS_Q_ENERGY), 3 * 1000 * lbf * in);
+    close_to(read_ok(u, "3 kip\u00b7in", CS_Q_ENERGY), 3 * 1000 * lbf * in);
+    close_to(read_ok(u, "7 kN-m", CS_Q_ENERGY), 7000);
+    close_to(read_ok(u, "7 kN\u00b7m", CS_Q_ENERGY), 7000);
+    close_to(read_ok(u, "7 kN\u22c5m", CS_Q_ENERGY), 7000);
+    close_to(read_ok(u, "7 N\u00b7m", CS_Q_ENERGY), 7);
+    close_to(read_ok(u, "7 N-m", CS_Q_ENERGY), 7);
+    const char *pound = "is not a unit of energy (lb is a pound of mass: a pound of force is lbf)";
+    expect_error(u, "1000 ft-lb", CS_Q_ENERGY, pound);
+    expect_error(u, "1000 lb-ft", CS_Q_ENERGY, pound);
+    expect_error(u, "1000 ft\u00b7lb", CS_Q_ENERGY, pound);
+    expect_error(u, "1000 in-lb", CS_Q_ENERGY, pound);
+    expect_error(u, "15000 lb", CS_Q_FORCE, "'lb' is a unit of mass, not of force (lb is a pound of mass");
+    expect_error(u, "5 kip-ft", CS_Q_FORCE, "'kip-ft' is a unit of energy, not of force");
+    expect_error(u, "5 kNm", CS_Q_ENERGY, "unknown unit 'kNm'");
+}
+
 /* Each thread has its own unit system; both read at once. */
 static void *convert_many(void *arg) {
     cs_units *u = cs_units_open(NULL);
@@ -259,6 +297,7 @@ int main(void) {
         cmocka_unit_test(test_database_beyond_the_table),
         cmocka_unit_test(test_reciprocal_units_refused),
         cmocka_unit_test(test_number_in_unit_refused),
+        cmocka_unit_test(test_products_of_units),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
