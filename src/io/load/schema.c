@@ -746,7 +746,10 @@ int cs_schema_markdown(FILE *out) {
         "(`lateral`, `lat`, `transverse`, `vertical`, `vert`, the vehicle's axes across it `y` and `z` as "
         "crash-test channels name them, `Y Accel`, `accel_z`; `50ms` or `50 ms`, `average`, `avg`), one "
         "whose unit does not fit its name (`speed "
-        "[m]`), and a second column of one quantity are refused at their line and column.\n",
+        "[m]`), one that names two units of its quantity (`speed [mph] (km/h)`, `speed [mph] [km/h]`: "
+        "which its numbers are in cannot be told; a group in brackets that is no unit of it, `decel (CG) "
+        "[g]`, is part of the name), and a second column of one quantity are refused at their line and "
+        "column.\n",
         out);
     return ferror(out) ? -1 : 0;
 }
