@@ -98,13 +98,21 @@ static void test_wrong_units(void **state) {
  * (a '-' before a digit is a negative power) a 2-ft length. A value is never meant so: refused. */
 static void test_reciprocal_units_refused(void **state) {
     cs_units *u = *state;
-    expect_error(u, "2 s/m", CS_Q_SPEED, "'s/m' is a unit of 1/speed, not of speed");
-    expect_error(u, "0.5 ft-1", CS_Q_LENGTH,
-                 "'ft-1' is a unit of 1/length, not of length (a '-' before a digit is a negative power)");
-    expect_error(u, "1 ft-2", CS_Q_AREA, "'ft-2' is a unit of 1/area, not of area");
-    expect_error(u, "2 Hz", CS_Q_TIME, "'Hz' is a unit of 1/time, not of time");
-    expect_error(u, "2 in/kip", CS_Q_STIFFNESS, "'in/kip' is a unit of 1/stiffness, not of stiffness");
-    expect_error(u, "3 1/psi", CS_Q_PRESSURE, "'1/psi' is a unit of 1/pressure, not of pressure");
+    const struct {
+        const char *text;
+        cs_quantity q;
+        const char *message;
+    } bad[] = {
+        {"2 s/m", CS_Q_SPEED, "'s/m' is a unit of 1/speed, not of speed"},
+        {"0.5 ft-1", CS_Q_LENGTH,
+         "'ft-1' is a unit of 1/length, not of length (a '-' before a digit is a negative power)"},
+        {"1 ft-2", CS_Q_AREA, "'ft-2' is a unit of 1/area, not of area"},
+        {"2 Hz", CS_Q_TIME, "'Hz' is a unit of 1/time, not of time"},
+        {"2 in/kip", CS_Q_STIFFNESS, "'in/kip' is a unit of 1/stiffness, not of stiffness"},
+        {"3 1/psi", CS_Q_PRESSURE, "'1/psi' is a unit of 1/pressure, not of pressure"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
+        expect_error(u, bad[i].text, bad[i].q, bad[i].message);
 }
 
 /* udunits2 reads a number in a unit's text as a factor of it and "@ N" or "since DATE" as an origin: "15
