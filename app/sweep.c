@@ -44,8 +44,9 @@ static const char sweep_usage[] =
     "progress, no closing lines).\n"
     "SIGINT (Ctrl-C) or SIGTERM: the runs under way finish, no other starts, and DIR gets the runs done,\n"
     "marked partial (summary.md, summary.json \"partial\": true; exit status 130 or 143). --resume DIR\n"
-    "reads them back from DIR/runs.csv, runs the others and writes the whole study; it refuses a DIR\n"
-    "whose study changed (spec, model, values, cablesim).\n"
+    "reads them back from DIR/runs.csv, runs the others as those were run (the study's own --set, --t-end\n"
+    "and --dt: none of the study's options is taken with --resume) and writes the whole study; it refuses\n"
+    "a DIR whose study changed (spec, model, values, cablesim).\n"
     "Exit status: 0 done, 1 the outputs failed, 2 a bad spec or command line, 128 + the signal: partial.\n";
 
 static const cs_cli sweep_cli = {"sweep", sweep_usage};
@@ -81,7 +82,8 @@ static int parse_opts(int argc, char **argv, sweep_args *a, int rank) {
     *d = cs_default_sweep_def();
     d->sets = a->sets, d->sets_given = a->given;
     d->allow = a->allow;
-    int v, study = 0; /* options that define the study, which --resume takes from DIR */
+    int v, study = 0;            /* options that define the study, which --resume takes from DIR */
+    char first_study[1100] = ""; /* the first of them as given, which a refusal with --resume names */
     optind = 1;
     opterr = 0;
     while ((v = rank == 0 ? cs_cli_next(&sweep_cli, argc, argv, "ho:", longopts)
@@ -149,14 +151,26 @@ static int parse_opts(int argc, char **argv, sweep_args *a, int rank) {
         default:
             return EXIT_BAD;
         }
+        if (study && !first_study[0]) { /* this option is the first that defines the study */
+            const struct option *o = longopts;
+            while (o->name && o->val != v)
+                o++;
+            snprintf(first_study, sizeof first_study, "%s%s%s%s", v == 'o' ? "-o" : "--",
+                     v == 'o' ? "" : o->name, optarg ? " " : "", optarg ? optarg : "");
+        }
     }
     int operands = argc - 1 - optind;
-    if (d->resume && (operands > 0 || study))
-        return sweep_bad_usage(
-            rank,
-            "--resume DIR takes the study as DIR/summary.json records it: no SPEC, -o, --runs, "
-            "--seed, --set, --t-end, --dt, --netcdf or --allow-path with it",
-            operands > 0 ? argv[1 + optind] : NULL);
+    if (d->resume && (operands > 0 || study)) {
+        if (rank == 0)
+            cs_cli_usage_error(
+                &sweep_cli,
+                "%s with --resume: --resume DIR takes the study as DIR/summary.json records it "
+                "and makes the runs left as those done, with one model, values, time step "
+                "and end (expected no SPEC, -o, --runs, --seed, --set, --t-end, --dt, --netcdf "
+                "or --allow-path with --resume)",
+                operands > 0 ? argv[1 + optind] : first_study);
+        return EXIT_BAD;
+    }
     /* the problems on stderr; the progress and the closing lines unless --quiet, from rank 0 alone */
     d->errors = stderr;
     d->progress = a->quiet || rank > 0 ? NULL : stderr;

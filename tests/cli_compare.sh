@@ -129,6 +129,9 @@ check "--measured followed by an option: its value left out, said so" '[ $? -eq 
 printf 'time [s],speed [mph],speed [km/h]\n0,40,64\n' >"$tmp/twice.csv"
 out=$("$cs" compare "$tmp/a" --measured "$tmp/twice.csv" -o "$tmp/bad-twice" 2>&1)
 check "a quantity in two columns: both named, at the second" '[ $? -eq 2 ] && grep -qF "twice.csv:1:22: '"'"'speed [km/h]'"'"' is a second column of the quantity of '"'"'speed [mph]'"'"' (the header'"'"'s column 2, at 1:10)" <<<"$out"'
+printf 'time [s],speed [mph] [km/h]\n0,40\n0.1,38\n' >"$tmp/twounits.csv"
+out=$("$cs" compare "$tmp/a" --measured "$tmp/twounits.csv" -o "$tmp/bad-units" 2>&1)
+check "a column named with two units: both named, at its place, nothing written" '[ $? -eq 2 ] && grep -qF "twounits.csv:1:10: '"'"'speed [mph] [km/h]'"'"' names two units of a speed, '"'"'mph'"'"' and '"'"'km/h'"'"'" <<<"$out" && [ ! -e "$tmp/bad-units" ]'
 printf 'time [s],speed [mph]\n0,40\n0,39\n' >"$tmp/back.csv"
 out=$("$cs" compare "$tmp/a" --measured "$tmp/back.csv" -o "$tmp/bad3" 2>&1)
 check "time that does not grow exits 2" '[ $? -eq 2 ] && grep -q "back.csv:3:1: the time goes back or stands" <<<"$out"'

@@ -37,6 +37,22 @@ check "--resume of a changed study: exit 2, why" '[ $? -eq 2 ] && grep -qF "the 
 out=$("$cs" sweep --resume "$tmp/changed" tests/sweep/lhs.yaml 2>&1)
 check "--resume with a spec: exit 2" '[ $? -eq 2 ] && grep -qF -- "--resume DIR takes the study as DIR/summary.json records it" <<<"$out"'
 
+# a study stopped with --dt: --resume runs the rest at its time step (runs.csv byte for byte the whole sweep's
+# at --dt 0.2 ms), and refuses a --dt or --t-end of its own, named as the user gave it, rather than mix runs
+# made at two time steps
+CABLESIM_SWEEP_STOP_AFTER=1 "$cs" sweep --allow-path examples tests/sweep/lhs.yaml -o "$tmp/dt" --dt "0.2 ms" --threads 1 --quiet >/dev/null 2>&1
+"$cs" sweep --allow-path examples tests/sweep/lhs.yaml -o "$tmp/whole-dt" --dt "0.2 ms" --quiet >/dev/null 2>&1
+for opt in "--dt|0.1 ms" "--t-end|1 s" "--dt=0.1 ms|"; do
+    args=("${opt%%|*}")
+    [ -n "${opt#*|}" ] && args+=("${opt#*|}")
+    given=$(sed 's/=/ /; s/|/ /; s/ $//' <<<"$opt")
+    out=$("$cs" sweep --resume "$tmp/dt" --threads 1 "${args[@]}" 2>&1)
+    check "--resume with ${args[*]}: exit 2, the option named as given, why" '[ $? -eq 2 ] && grep -qF -- "cablesim sweep: $given with --resume: --resume DIR takes the study as DIR/summary.json records it and makes the runs left as those done, with one model, values, time step and end" <<<"$out" || { echo "$out"; false; }'
+done
+check "the refused --resume runs nothing: 1 run done still" 'grep -q "^\"partial\":true,\"runs_done\":1," "$tmp/dt/summary.json"'
+"$cs" sweep --resume "$tmp/dt" --threads 1 --quiet >/dev/null 2>&1
+check "--resume of a study run with --dt 0.2 ms: runs.csv byte for byte the whole sweep's at 0.2 ms (not the spec's step's)" '[ $? -eq 0 ] && cmp "$tmp/dt/runs.csv" "$tmp/whole-dt/runs.csv" && ! cmp -s "$tmp/dt/runs.csv" "$tmp/whole/runs.csv"'
+
 # The stop by SIGTERM: two sweeps of 120 runs, in the plain suite; under the sanitizers the stop by SIGINT
 # above is the representative case of a stop and its resume.
 if plain_only "the stop by SIGTERM and its resume (240 runs)"; then

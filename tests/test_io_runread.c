@@ -135,13 +135,14 @@ static void measured_quoted_cells(void **state) {
 /* A column's name says its quantity by a word (case and punctuation aside, a capital after a lower-case
  * letter starting a word), its unit is checked against it: an
  * acceleration along the travel read as a deceleration with its sign turned, a speed, a penetration and a
- * rope tension each from a name a user writes. */
+ * rope tension each from a name a user writes. A group in brackets that names no unit of the column's
+ * quantity is part of its name ("(CG)", the instrument's place; "(CFC 60)", its filter). */
 static void measured_names(void **state) {
     (void)state;
     char accel[] = "/tmp/cablesim-runread-XXXXXX", rest[] = "/tmp/cablesim-runread-XXXXXX";
-    write_temp(accel, "Time [ms],Longitudinal Acceleration [g]\n0,0\n10,-0.5\n20,-1.5\n");
-    write_temp(
-        rest, "t (s),vehicleSpeed (km/h),Rope tension [kN],dynamic PENETRATION [ft]\n0,72,0,0\n1,36,50,10\n");
+    write_temp(accel, "Time [ms],Longitudinal Acceleration (CG) [g]\n0,0\n10,-0.5\n20,-1.5\n");
+    write_temp(rest, "t (s),vehicleSpeed (km/h),Rope tension (CFC 60) [kN],dynamic PENETRATION [ft]\n0,72,0,"
+                     "0\n1,36,50,10\n");
     cs_error err;
     cs_units *u = cs_units_open(&err);
     assert_non_null(u);
@@ -162,8 +163,9 @@ static void measured_names(void **state) {
 
 /* A column whose name names no quantity compared (no word begins as one: "extension" holds no tension)
  * is refused at its place, whatever its unit, as are a
- * unit that does not fit the name, a name of two quantities, one across the travel or averaged, and a
- * second column of one quantity (an acceleration beside a deceleration). */
+ * unit that does not fit the name, a name of two quantities, one across the travel or averaged, a name of
+ * two units of its quantity (which of them its numbers are in cannot be told), and a second column of one
+ * quantity (an acceleration beside a deceleration). */
 static void measured_names_refused(void **state) {
     (void)state;
     static const char *const cases[][2] = {
@@ -190,6 +192,13 @@ static void measured_names_refused(void **state) {
         {"time [s],Y Accel [g]", ":1:10: 'Y Accel [g]' names an acceleration across the travel"},
         {"time [s],accel_z [g]", ":1:10: 'accel_z [g]' names an acceleration across the travel"},
         {"time [s],Lat Accel [g]", ":1:10: 'Lat Accel [g]' names an acceleration across the travel"},
+        {"time [s],speed [mph] (km/h)", ":1:10: 'speed [mph] (km/h)' names two units of a speed, 'mph' and "
+                                        "'km/h' (expected one, as \"name [unit]\" or \"name (unit)\")"},
+        {"time [s],speed [mph] [km/h]", ":1:10: 'speed [mph] [km/h]' names two units of a speed, 'mph' and "
+                                        "'km/h'"},
+        {"time [s],tension (kN) [kip]", ":1:10: 'tension (kN) [kip]' names two units of a rope tension, 'kN' "
+                                        "and 'kip'"},
+        {"time (s) (ms),speed [mph]", ":1:1: 'time (s) (ms)' names two units of the time, 's' and 'ms'"},
         {"time [s],deceleration [g],acceleration [g]", ":1:27: 'acceleration [g]' is a second column of the "
                                                        "quantity of 'deceleration [g]' (the header's column "
                                                        "2, at 1:10) (expected one column of each)"},

@@ -94,6 +94,97 @@ static void test_wrong_units(void **state) {
     expect_error(u, "inf m", CS_Q_LENGTH, "is not a number");
 }
 
+/* udunits2 converts a unit to one of the reciprocal dimension by 1/x: "2 s/m" would be 0.5 m/s and "0.5 ft-1"
+ * (a '-' before a digit is a negative power) a 2-ft length. A value is never meant so: refused. */
+static void test_reciprocal_units_refused(void **state) {
+    cs_units *u = *state;
+    const struct {
+        const char *text;
+        cs_quantity q;
+        const char *message;
+    } bad[] = {
+        {"2 s/m", CS_Q_SPEED, "'s/m' is a unit of 1/speed, not of speed"},
+        {"0.5 ft-1", CS_Q_LENGTH,
+         "'ft-1' is a unit of 1/length, not of length (a '-' before a digit is a negative power)"},
+        {"1 ft-2", CS_Q_AREA, "'ft-2' is a unit of 1/area, not of area"},
+        {"2 Hz", CS_Q_TIME, "'Hz' is a unit of 1/time, not of time"},
+        {"2 in/kip", CS_Q_STIFFNESS, "'in/kip' is a unit of 1/stiffness, not of stiffness"},
+        {"3 1/psi", CS_Q_PRESSURE, "'1/psi' is a unit of 1/pressure, not of pressure"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
+        expect_error(u, bad[i].text, bad[i].q, bad[i].message);
+}
+
+/* udunits2 reads a number in a unit's text as a factor of it and "@ N" or "since DATE" as an origin: "15
+ * 000.5 kg" (digits grouped by a space) would be 15 x 0.5 kg and "5 s @ 3" a date's seconds. Refused, while a
+ * power's digits and the 1 of 1/x read as before. */
+static void test_number_in_unit_refused(void **state) {
+    cs_units *u = *state;
+    const char *why = "(expected one number, then its unit, e.g. \"15000 lb\": no space within the number)";
+    const struct {
+        const char *text, *unit;
+        cs_quantity q;
+    } bad[] = {{"15 000.5 kg", "'000.5 kg'", CS_Q_MASS},
+               {"5 2 kg", "'2 kg'", CS_Q_MASS},
+               {"1 m 2", "'m 2'", CS_Q_LENGTH},
+               {"2 kg.5", "'kg.5'", CS_Q_MASS},
+               {"1 m2.5", "'m2.5'", CS_Q_AREA},
+               {"5 s @ 3", "'s @ 3'", CS_Q_TIME},
+               {"5 s since 1970-01-01", "'s since 1970-01-01'", CS_Q_TIME},
+               {"3 1000 lbf/ft^2", "'1000 lbf/ft^2'", CS_Q_PRESSURE}};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        char part[160];
+        snprintf(part, sizeof part, "'%s' has a number in its unit %s %s", bad[i].text, bad[i].unit, why);
+        expect_error(u, bad[i].text, bad[i].q, part);
+    }
+    const double in = 0.0254;
+    close_to(read_ok(u, "3 in2", CS_Q_AREA), 3 * in * in);
+    close_to(read_ok(u, "3 in^2", CS_Q_AREA), 3 * in * in);
+    close_to(read_ok(u, "3 in**2", CS_Q_AREA), 3 * in * in);
+    close_to(read_ok(u, "3 in^+2", CS_Q_AREA), 3 * in * in);
+    close_to(read_ok(u, "2 kg m-1", CS_Q_MASS_PER_LENGTH), 2.0);
+    close_to(read_ok(u, "2 kg m^-1", CS_Q_MASS_PER_LENGTH), 2.0);
+    close_to(read_ok(u, "2 N 1/m", CS_Q_STIFFNESS), 2.0);
+}
+
+/* A moment or an energy as engineers write it: two units joined by a hyphen, a middle dot (U+00B7, or the dot
+ * operator U+22C5 that looks the same), a '*', a '.' or a space, in either order, is their product. By hand:
+ * 1 ft kip = 0.3048 m x 4448.2216152605 N = 1355.8179483314 J (1355.818 J to the 0.5 mJ of its last digit),
+ * 1 ft lbf = 1.3558179483314 J, 1 kip in = 112.98482902762 J, 1 kN m = 1000 J. A pound written lb is of
+ * mass: refused for an energy, saying so. */
+static void test_products_of_units(void **state) {
+    cs_units *u = *state;
+    const double lbf = 0.45359237 * 9.80665, ft = 0.3048, in = 0.0254;
+    const char *ft_kip[] = {"ft-kip", "kip-ft", "ft\u00b7kip", "kip\u00b7ft", "ft\u22c5kip",
+                            "ft*kip", "kip ft", "ft.kip",      "ft-kips"};
+    for (size_t i = 0; i < sizeof ft_kip / sizeof ft_kip[0]; i++) {
+        char text[32];
+        snprintf(text, sizeof text, "1 %s", ft_kip[i]);
+        double v = read_ok(u, text, CS_Q_ENERGY);
+        close_to(v, ft * 1000 * lbf);
+        if (!(fabs(v - 1355.818) <= 5e-4)) fail_msg("'%s': %.9g J, not 1355.818 J", text, v);
+    }
+    close_to(read_ok(u, "2.5 ft-lbf", CS_Q_ENERGY), 2.5 * ft * lbf);
+    close_to(read_ok(u, "2.5 lbf-ft", CS_Q_ENERGY), 2.5 * ft * lbf);
+    close_to(read_ok(u, "2.5 ft\u00b7lbf", CS_Q_ENERGY), 2.5 * ft * lbf);
+    close_to(read_ok(u, "3 kip-in", CS_Q_ENERGY), 3 * 1000 * lbf * in);
+    close_to(read_ok(u, "3 in-kip", CS_Q_ENERGY), 3 * 1000 * lbf * in);
+    close_to(read_ok(u, "3 kip\u00b7in", CS_Q_ENERGY), 3 * 1000 * lbf * in);
+    close_to(read_ok(u, "7 kN-m", CS_Q_ENERGY), 7000);
+    close_to(read_ok(u, "7 kN\u00b7m", CS_Q_ENERGY), 7000);
+    close_to(read_ok(u, "7 kN\u22c5m", CS_Q_ENERGY), 7000);
+    close_to(read_ok(u, "7 N\u00b7m", CS_Q_ENERGY), 7);
+    close_to(read_ok(u, "7 N-m", CS_Q_ENERGY), 7);
+    const char *pound = "is not a unit of energy (lb is a pound of mass: a pound of force is lbf)";
+    expect_error(u, "1000 ft-lb", CS_Q_ENERGY, pound);
+    expect_error(u, "1000 lb-ft", CS_Q_ENERGY, pound);
+    expect_error(u, "1000 ft\u00b7lb", CS_Q_ENERGY, pound);
+    expect_error(u, "1000 in-lb", CS_Q_ENERGY, pound);
+    expect_error(u, "15000 lb", CS_Q_FORCE, "'lb' is a unit of mass, not of force (lb is a pound of mass");
+    expect_error(u, "5 kip-ft", CS_Q_FORCE, "'kip-ft' is a unit of energy, not of force");
+    expect_error(u, "5 kNm", CS_Q_ENERGY, "unknown unit 'kNm'");
+}
+
 /* Each thread has its own unit system; both read at once. */
 static void *convert_many(void *arg) {
     cs_units *u = cs_units_open(NULL);
@@ -206,9 +297,15 @@ static void test_database_beyond_the_table(void **state) {
 
 int main(void) {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_exact_factors),   cmocka_unit_test(test_bare_numbers_are_pure),
-        cmocka_unit_test(test_wrong_units),     cmocka_unit_test(test_two_threads),
-        cmocka_unit_test(test_table_same_bits), cmocka_unit_test(test_database_beyond_the_table),
+        cmocka_unit_test(test_exact_factors),
+        cmocka_unit_test(test_bare_numbers_are_pure),
+        cmocka_unit_test(test_wrong_units),
+        cmocka_unit_test(test_two_threads),
+        cmocka_unit_test(test_table_same_bits),
+        cmocka_unit_test(test_database_beyond_the_table),
+        cmocka_unit_test(test_reciprocal_units_refused),
+        cmocka_unit_test(test_number_in_unit_refused),
+        cmocka_unit_test(test_products_of_units),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

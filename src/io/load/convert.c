@@ -427,6 +427,12 @@ static int convert_group(cs_loader *l, const cs_node *g, const cs_node *soil, cs
     if (section) fields(l, section, &def->section, 1);
     if (soil) fields(l, soil, &def->footing, 0);
     fields(l, g, def, 1);
+    const cs_node *face = cs_node_get(g, "face");
+    if (face && l->error_count == before && cs_attachment_lateral_release_force(def->attachment) == 0.0)
+        cs_err_node(l, face, 0,
+                    "'%s' for posts whose attachment is %s, which is fixed to no face of the post "
+                    "(expected face left out: only keyway bolts and brackets are fixed to one)",
+                    face->text, cs_attachment_word(def->attachment));
     if (l->error_count == before && !(def->footing.soil_pressure > 0.0) &&
         (cs_node_get(g, "footing") || !given_but_bad(l, g, "footing")))
         cs_err_node(l, g, 0,

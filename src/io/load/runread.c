@@ -402,6 +402,28 @@ static int header_unit(const char *cell, char *unit, size_t size) {
     return (int)(open - cell);
 }
 
+/* A unit of q named by a bracketed group of a header cell other than its unit's, which opens at unit_open: in
+ * "speed [mph] (km/h)" which of the two the column's numbers are in cannot be told. A group that names no
+ * unit of q is part of the name ("decel (CG) [g]", "speed (CFC 60) [mph]"). Into other; where its group
+ * opens, or NULL if there is none. */
+static const char *second_unit(cs_units *units, const char *cell, const char *unit_open, cs_quantity q,
+                               char *other, size_t size) {
+    for (const char *p = cell; (p = strpbrk(p, "[(")) != NULL; p++) {
+        const char *close = strchr(p, *p == '[' ? ']' : ')');
+        if (!close) break;
+        char text[64];
+        double si;
+        int len = (int)(close - p - 1);
+        snprintf(text, sizeof text, "1 %.*s", len, p + 1);
+        if (p != unit_open && len > 0 && len < 60 && cs_units_read(units, text, q, &si, NULL) == CS_OK) {
+            snprintf(other, size, "%.*s", len, p + 1);
+            return p;
+        }
+        p = close;
+    }
+    return NULL;
+}
+
 /* The quantities a measured column is read as, each known by a word of its name that begins so (case
  * aside; words are runs of letters and digits, split where a capital follows a lower-case letter or a
  * digit a letter: "Vehicle_Speed" and "vehicleSpeed" hold "speed", "decel50ms" "50ms", "extension" no
@@ -537,24 +559,34 @@ cs_status cs_trace_load_measured(const char *path, cs_units *units, cs_trace *tr
         }
         snprintf(text, sizeof text, "1 %s", unit);
         target[j] = -1;
+        const struct measured_name *m = NULL;
         if (j == 0) {
             if (cs_units_read(units, text, CS_Q_TIME, &factor[0], &unit_err) != CS_OK) {
                 rc = cs_error_set(err, CS_ERR_INVALID, "%s:1:%d: the first column is the time: %s", path,
                                   hcol[0], unit_err.message);
                 goto done;
             }
-            continue;
-        }
-        const struct measured_name *m = measured_name(path, hcol[j], head[j], name_len, err);
-        if (!m) {
+        } else if (!(m = measured_name(path, hcol[j], head[j], name_len, err))) {
             rc = CS_ERR_INVALID;
             goto done;
-        }
-        if (cs_units_read(units, text, m->q, &factor[j], &unit_err) != CS_OK) {
+        } else if (cs_units_read(units, text, m->q, &factor[j], &unit_err) != CS_OK) {
             rc = cs_error_set(err, CS_ERR_INVALID, "%s:1:%d: '%s' names %s: %s (expected %s)", path, hcol[j],
                               brief(head[j], &b), m->what, unit_err.message, m->units);
             goto done;
         }
+        char other[64];
+        const char *at =
+            second_unit(units, head[j], head[j] + name_len, m ? m->q : CS_Q_TIME, other, sizeof other);
+        if (at) {
+            int first = at < head[j] + name_len;
+            rc = cs_error_set(err, CS_ERR_INVALID,
+                              "%s:1:%d: '%s' names two units of %s, '%s' and '%s' (expected one, as "
+                              "\"name [unit]\" or \"name (unit)\")",
+                              path, hcol[j], brief(head[j], &b), m ? m->what : "the time",
+                              first ? other : unit, first ? unit : other);
+            goto done;
+        }
+        if (j == 0) continue;
         target[j] = m->trace, factor[j] *= m->sign;
         for (int i = 1; i < j; i++)
             if (target[i] == target[j]) {

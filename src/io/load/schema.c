@@ -687,7 +687,12 @@ int cs_schema_markdown(FILE *out) {
             "Numbers are decimal (no `0x28`, `inf` or `nan`), each value lies within the range of its kind "
             "(docs/assumptions.md, Ranges of the inputs), and a YAML tag (`!!str`) is refused, not ignored. "
             "Units are read by udunits2, plus `mph`, `kph`, `psf`, `ksf`, `kips`, `deg`, `lbm` and `g` "
-            "(standard gravity where an acceleration is expected). A unit of the wrong kind is an error.\n\n"
+            "(standard gravity where an acceleration is expected). A product of units is written with a "
+            "hyphen, a middle dot, `*`, `.` or a space, in either order (`ft-kip`, `kip·ft`, `kN·m`, "
+            "`ft*lbf`: `lb` is a pound of mass, so `ft-lb` is no energy); a `-` before a digit is a "
+            "negative power (`kg m-1`). A unit of the wrong kind is an error, and so is one of the "
+            "reciprocal kind (`s/m` for a speed, `Hz` for a time), a number inside the unit (`15 000 kg`: "
+            "write a number without spaces) and an origin (`s @ 3`).\n\n"
             "`cablesim run FILE --set PATH=VALUE` replaces any value by its path, e.g. "
             "`--set scenario.speed=\"35 mph\"` or `--set barrier.cables[0].pretension=\"8 kip\"`. "
             "`file` and `part` are followed when the file is read, so a `--set` of either is refused "
@@ -741,7 +746,10 @@ int cs_schema_markdown(FILE *out) {
         "(`lateral`, `lat`, `transverse`, `vertical`, `vert`, the vehicle's axes across it `y` and `z` as "
         "crash-test channels name them, `Y Accel`, `accel_z`; `50ms` or `50 ms`, `average`, `avg`), one "
         "whose unit does not fit its name (`speed "
-        "[m]`), and a second column of one quantity are refused at their line and column.\n",
+        "[m]`), one that names two units of its quantity (`speed [mph] (km/h)`, `speed [mph] [km/h]`: "
+        "which its numbers are in cannot be told; a group in brackets that is no unit of it, `decel (CG) "
+        "[g]`, is part of the name), and a second column of one quantity are refused at their line and "
+        "column.\n",
         out);
     return ferror(out) ? -1 : 0;
 }

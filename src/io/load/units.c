@@ -70,6 +70,39 @@ static const char *kind_of(cs_units *u, void *unit) {
     return convertible(u, unit, CS_Q_NUMBER) ? "pure number" : NULL;
 }
 
+/* Name the kind of quantity a unit is the reciprocal of ("s/m": speed, "ft-2": area), for a message. */
+static const char *reciprocal_kind_of(cs_units *u, const char *text) {
+    char inverse[80];
+    snprintf(inverse, sizeof inverse, "1/(%s)", text);
+    void *unit = u->ops->parse(u, inverse);
+    const char *kind = unit ? kind_of(u, unit) : NULL;
+    if (unit) u->ops->release(u, unit);
+    return kind;
+}
+
+/* Whether a unit's text has a '-' before a digit: udunits2 reads "ft-2" as 1/ft^2. */
+static int negative_power(const char *text) {
+    for (const char *minus = strchr(text, '-'); minus; minus = strchr(minus + 1, '-'))
+        if (isdigit((unsigned char)minus[1])) return 1;
+    return 0;
+}
+
+/* Whether a unit's text holds a number or an origin of its own: udunits2 reads "2 kg" as a unit of 2 kg and
+ * "s @ 3" as seconds from an origin, so "15 000.5 kg" would be 15 x 0.5 kg. A power's digits (in2, m^2,
+ * m**2, m-1) and the 1 of 1/s are none. */
+static int number_in_unit(const char *text) {
+    for (const char *p = text; *p; p++) {
+        if (*p == '@') return 1;
+        if (!isdigit((unsigned char)*p) || (p > text && isdigit((unsigned char)p[-1])))
+            continue; /* not the first digit of a number (after a power's digits, "m2.5" is m^2 x 5) */
+        const char *before = p - (p > text && (p[-1] == '-' || p[-1] == '+'));
+        int power = before > text && (isalpha((unsigned char)before[-1]) || before[-1] == '^' ||
+                                      (before - text >= 2 && before[-1] == '*' && before[-2] == '*'));
+        if (!power && !(p[0] == '1' && p[1] == '/')) return 1;
+    }
+    return 0;
+}
+
 /* The end of a decimal number at s ([+-]digits[.digits][e[+-]digits]), or NULL: strtod's hexadecimal,
  * "inf" and "nan" are not a model's numbers ("0x28 mph" is not 40 mph). */
 static const char *decimal_end(const char *s) {
@@ -113,6 +146,47 @@ static int unit_of(const char *text, const char **number, char *unit, size_t siz
     return 0;
 }
 
+/* Whether text with each pound (lb, of mass) read as a pound of force (lbf) is a unit of q: "ft-lb" for an
+ * energy, "15000 lb" for a force. */
+static int pound_of_force(cs_units *u, const char *text, cs_quantity q) {
+    char force[128];
+    size_t n = 0;
+    for (const char *p = text; *p && n + 3 < sizeof force; p++) {
+        force[n++] = *p;
+        if (p[0] == 'l' && p[1] == 'b' && !(p > text && isalpha((unsigned char)p[-1])) &&
+            !isalpha((unsigned char)p[2]))
+            force[n++] = 'b', force[n++] = 'f', p++;
+    }
+    force[n] = '\0';
+    void *unit = strcmp(force, text) != 0 ? u->ops->parse(u, force) : NULL;
+    int is = unit && convertible(u, unit, q);
+    if (unit) u->ops->release(u, unit);
+    return is;
+}
+
+/* Why a unit that text names is not a unit of q. */
+static cs_status not_of(cs_units *u, void *unit, const char *text, cs_quantity q, cs_error *err) {
+    const char *kind = kind_of(u, unit), *inverse = kind ? NULL : reciprocal_kind_of(u, text);
+    const char *pound = pound_of_force(u, text, q) ? " (lb is a pound of mass: a pound of force is lbf)" : "";
+    if (kind)
+        return cs_error_set(err, CS_ERR_INVALID, "'%s' is a unit of %s, not of %s%s", text, kind,
+                            quantities[q].name, pound);
+    if (inverse)
+        return cs_error_set(err, CS_ERR_INVALID, "'%s' is a unit of 1/%s, not of %s%s", text, inverse,
+                            quantities[q].name,
+                            negative_power(text) ? " (a '-' before a digit is a negative power)" : "");
+    return cs_error_set(err, CS_ERR_INVALID, "'%s' is not a unit of %s%s", text, quantities[q].name, pound);
+}
+
+/* The dot operator (U+22C5) as the middle dot (U+00B7), which udunits2 reads as a product ("kN·m"): the two
+ * look alike. */
+static void dot_operator_as_middle_dot(char *text) {
+    for (char *dot; (dot = strstr(text, "\xE2\x8B\x85")) != NULL;) {
+        dot[0] = '\xC2', dot[1] = '\xB7';
+        memmove(dot + 2, dot + 3, strlen(dot + 3) + 1);
+    }
+}
+
 cs_status cs_units_read(cs_units *u, const char *text, cs_quantity q, double *si, cs_error *err) {
     char unit_text[64];
     const char *number;
@@ -134,18 +208,19 @@ cs_status cs_units_read(cs_units *u, const char *text, cs_quantity q, double *si
         *si = value;
         return CS_OK;
     }
+    if (number_in_unit(unit_text))
+        return cs_error_set(err, CS_ERR_INVALID,
+                            "'%s' has a number in its unit '%s' (expected one number, then its unit, e.g. "
+                            "\"15000 lb\": no space within the number)",
+                            number, unit_text);
+    dot_operator_as_middle_dot(unit_text);
     const char *lookup = (q == CS_Q_ACCELERATION && strcmp(unit_text, "g") == 0) ? "gee" : unit_text;
     cs_status rc = CS_OK;
     void *unit = u->ops->parse(u, lookup);
     if (!unit) {
         rc = cs_error_set(err, CS_ERR_INVALID, "unknown unit '%s'", unit_text);
     } else if (u->ops->convert(u, unit, q, value, si) != 0) {
-        const char *kind = kind_of(u, unit);
-        if (kind)
-            rc = cs_error_set(err, CS_ERR_INVALID, "'%s' is a unit of %s, not of %s", unit_text, kind,
-                              quantities[q].name);
-        else
-            rc = cs_error_set(err, CS_ERR_INVALID, "'%s' is not a unit of %s", unit_text, quantities[q].name);
+        rc = not_of(u, unit, unit_text, q, err);
     }
     if (unit) u->ops->release(u, unit);
     if (rc == CS_OK && !isfinite(*si)) rc = cs_error_set(err, CS_ERR_INVALID, "'%s' is out of range", number);

@@ -77,7 +77,11 @@ static int ud_convert(cs_units *base, void *unit, cs_quantity q, double value, d
     ud_handle *h = unit;
     if (h->in_table) return u->table->ops->convert(u->table, h->unit, q, value, si);
     pthread_mutex_lock(&ut_lock);
-    cv_converter *cv = ut_get_converter(h->unit, u->si[q]);
+    /* udunits2 also converts between a unit and one of the reciprocal dimension, by 1/x ("2 s/m" to
+     * 0.5 m/s, "0.5 ft-1" to 2 ft): a value is never meant so, so only a unit of q's own dimension is */
+    ut_unit *ratio = ut_divide(h->unit, u->si[q]);
+    cv_converter *cv = ratio && ut_is_dimensionless(ratio) ? ut_get_converter(h->unit, u->si[q]) : NULL;
+    ut_free(ratio);
     if (cv) *si = cv_convert_double(cv, value);
     cv_free(cv);
     pthread_mutex_unlock(&ut_lock);
