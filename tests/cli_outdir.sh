@@ -75,6 +75,14 @@ check "validate into a run's folder is refused, naming the command that wrote it
 out=$("$cs" validate -o "$cmd" --only verification --force 2>&1)
 check "validate --force writes beside the run's results and keeps them" '[ $? -eq 0 ] && [ -s "$cmd/validation.md" ] && [ "$(cd "$cmd" && sha256sum events.csv summary.json timeseries.csv)" = "$sums" ] && grep -qx "# written by: cablesim validate" "$cmd/.cablesim-manifest" && ! grep -q "^summary.json" "$cmd/.cablesim-manifest" || { echo "$out"; false; }'
 
+# A folder an earlier version wrote (its manifest names its files without size or hash) is refused, saying
+# so, and nothing in it is removed.
+old="$tmp/oldversion"
+mkdir -p "$old" && echo "old run" >"$old/summary.json"
+printf '# cablesim: the files its last run wrote in this folder; the next run into it removes these and no other\nsummary.json\n' >"$old/.cablesim-manifest"
+out=$("$cs" run examples/aps3.yaml -o "$old" --t-end "10 ms" 2>&1)
+check "an earlier version's folder is refused, saying why, and kept" '[ $? -eq 1 ] && grep -q "holds summary.json, which an earlier version of cablesim may have written there, but its .cablesim-manifest gives no size and hash" <<<"$out" && [ "$(cat "$old/summary.json")" = "old run" ] || { echo "$out"; false; }'
+
 # A manifest names files inside its folder only: a line that leaves it removes nothing.
 echo outside >"$tmp/victim.txt"
 mkdir -p "$tmp/linked" && echo linked >"$tmp/linked/x.csv"

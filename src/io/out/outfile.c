@@ -172,6 +172,12 @@ static const char *not_ours(const cs_outdir *out, const char *rel, char *buf, si
     else if (e->ours == 0)
         snprintf(buf, size, "has changed since cablesim wrote it there (its size or hash is not %s's)",
                  CS_OUT_MANIFEST);
+    else if (e->ours == -1 && !out->prev_command[0]) /* a manifest of names alone: an earlier version's */
+        snprintf(buf, size,
+                 "an earlier version of cablesim may have written there, but its %s gives no size and hash "
+                 "to tell its files from yours, so none is taken for cablesim's (move or remove them "
+                 "yourself)",
+                 CS_OUT_MANIFEST);
     else if (e->ours == -1)
         snprintf(buf, size, "%s lists without the size and hash cablesim gives its files", CS_OUT_MANIFEST);
     else
