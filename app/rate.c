@@ -101,10 +101,11 @@ static int roadside_one(cs_loader *l, const cs_model_input *in, const cs_roadsid
         cs_test_result res = {&sm, have ? &o : NULL, err.message, 0.0, 0.0, &box, s};
         cs_record_roll_pitch_peaks(rec, &res.roll_peak, &res.pitch_peak);
         if (have)
-            printf("       occupant risk (CG, CFC 180): OIV %.2f / %.2f m/s at %.3f s%s, ORA %.2f / %.2f g "
-                   "(longitudinal / lateral); THIV %.1f km/h, PHD %.2f g, ASI %.2f\n",
-                   o.oiv_x, o.oiv_y, o.t_impact, o.impact == CS_FLAIL_AFTER_RECORD ? " (after the run)" : "",
-                   o.ora_x, o.ora_y, o.thiv * 3.6, o.phd, o.asi);
+            printf("       occupant risk (CG, CFC 180): OIV %.2f / %.2f m/s at %.3f s after first contact%s, "
+                   "ORA %.2f / %.2f g (longitudinal / lateral); THIV %.1f km/h, PHD %.2f g, ASI %.2f\n",
+                   o.oiv_x, o.oiv_y, o.t_impact,
+                   o.impact == CS_FLAIL_AFTER_RECORD ? " (after the run's end)" : "", o.ora_x, o.ora_y,
+                   o.thiv * 3.6, o.phd, o.asi);
         cs_criterion c[CS_CRITERIA_MAX];
         int n = cs_roadside_criteria(t, &res, c);
         for (int k = 0; k < n; k++) {

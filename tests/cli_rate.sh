@@ -71,6 +71,12 @@ check "a run at its time limit: A not judged" 'grep -qE "^       A +not judged .
 check "D and K listed as not judged, no pass implied" 'grep -qE "^3-11: not judged \(the model cannot tell; no pass implied\): A, D, K, M$" <<<"$out"'
 out=$("$cs" rate examples/roadside/rs1.yaml --standard mash --test 3-11 2>&1)
 check "mash 3-11 to its end: occupant risk and the exit box judged" 'grep -qE "^       occupant risk \(CG, CFC 180\): OIV [0-9.]+ / [0-9.]+ m/s" <<<"$out" && grep -qE "^       exit box +(pass|FAIL) .* \\(box 10.0 m\\)" <<<"$out" && grep -qE "^       H +(pass|FAIL) " <<<"$out"'
+# The MASH design example is test 3-11 as its model runs it: run and rate give its occupant impact at the
+# same time from the same point (after the first contact), where rate's criteria give times of the run
+out=$("$cs" rate examples/roadside/design.yaml --standard mash --test 3-11 2>&1)
+run_out=$("$cs" run examples/roadside/design.yaml -o "$tmp/design-3-11" 2>&1)
+at=$(grep -oE "^  occupant impact +[0-9.]+ s after first contact" <<<"$run_out" | grep -oE "[0-9.]+ s after first contact")
+check "design under mash 3-11: the occupant impact's time and its reference as run gives them" '[ -n "$at" ] && grep -qE "^       occupant risk \(CG, CFC 180\): OIV [0-9.]+ / [0-9.]+ m/s at $at, ORA " <<<"$out" || { echo "$at"; grep "occupant risk" <<<"$out"; false; }'
 # The issue's two cases to their ends: RS1 under NCHRP 350 (3-10: A D F H I K M; 3-11: A D F L K M) and the
 # MASH design example under MASH (each test A D F H I and the exit box), a verdict for every criterion
 criteria() {

@@ -27,8 +27,11 @@ const FIELDS = [
   [/^scenario\.(speed|angle|impact_x)$/, 'Vehicle and impact'],
 ];
 const LABELS = { impact_x: 'impact point (x)', pullout_capacity: 'pullout capacity', yield_stress: 'yield stress', soil_pressure: 'soil pressure', soil_pressure_cap: 'soil pressure cap', coeff_depth: 'depth coefficient', coeff_height: 'height coefficient', dynamic_factor: 'dynamic factor', skin_friction: 'skin friction' };
+// Each response of the sweep: its name, its value of a run's summary (null: none), and the text of a run
+// without one where there is something to say. The max dynamic penetration is only a held run's, as in a
+// study's outputs: a run that got through has how far it had got, a lower bound, written "beyond".
 const RESPONSES = [
-  ['penetration (m)', (s) => (s.max_dynamic_penetration_m !== null ? s.max_dynamic_penetration_m : s.penetration_beyond_m)],
+  ['max dynamic penetration (m)', (s) => s.max_dynamic_penetration_m, (s) => (s.penetration_beyond_m !== null ? `beyond ${fmt(s.penetration_beyond_m, 4)}` : '–')],
   ['max 50-ms deceleration (g)', (s) => s.max_50ms_decel_g],
   ['max cable tension (kN)', (s) => s.max_cable_tension_n / 1e3],
   ['barrier deflection (m)', (s) => s.max_barrier_deflection_m],
@@ -257,7 +260,7 @@ function setupSweep() {
       const y = r.ok ? response[1](r.summary) : null;
       xs.push(x);
       ys.push(y);
-      rows.push(el('tr', {}, el('td', {}, text), el('td', {}, r.ok ? r.summary.outcome : 'not run'), el('td', {}, y === null ? '–' : fmt(y, 4)), el('td', {}, r.ok ? '' : r.errors.join('; '))));
+      rows.push(el('tr', {}, el('td', {}, text), el('td', {}, r.ok ? r.summary.outcome : 'not run'), el('td', {}, y !== null ? fmt(y, 4) : r.ok && response[2] ? response[2](r.summary) : '–'), el('td', {}, r.ok ? '' : r.errors.join('; '))));
     }
     designer.sweep = { path, xs, ys };
     $('sweep-table').replaceChildren(el('thead', {}, el('tr', {}, el('th', {}, path), el('th', {}, 'outcome'), el('th', {}, response[0]), el('th', {}, ''))), el('tbody', {}, ...rows));

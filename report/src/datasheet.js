@@ -71,6 +71,14 @@ function evaluation(data) {
   };
 }
 
+// Where a wheel track crosses the exit box's far side, as the exit box criterion says it (criteria.c): in
+// the run, or on the path extrapolated from the loss of contact, which the run does not simulate.
+function exitBox(box) {
+  if (!box) return '– (no roadside test)';
+  if (!Number.isFinite(box.cross_along_m)) return 'not crossed';
+  return `crossed ${f(box.cross_along_m)} m along${box.crossed_in_run ? '' : ' on the path extrapolated from the loss of contact'} (B = ${f(box.b_m)} m)`;
+}
+
 function verdictClass(v) {
   return v === 'pass' ? 'pass' : v === 'FAIL' ? 'fail' : v === 'not judged' ? 'nj' : 'rating';
 }
@@ -136,7 +144,7 @@ export function dataSheet(data) {
       ['outcome', `${s.outcome.replace(/_/g, ' ')} at ${seconds(s.outcome === 'stopped' ? s.stop_time_s : s.t_end_s)}`],
       ['speed', exits ? kmh(s.exit_speed_mps) : '– (did not leave)'],
       ['angle', exits && s.exit_angle_deg !== null ? deg(s.exit_angle_deg) : '–'],
-      ['exit box (MASH)', box ? (Number.isFinite(box.cross_along_m) ? `crossed ${f(box.cross_along_m)} m along (B = ${f(box.b_m)} m)` : 'not crossed') : '– (no roadside test)'],
+      ['exit box (MASH)', exitBox(box)],
       ['after loss of contact', 'not simulated'],
     ]),
     block('Vehicle angles (max)', [

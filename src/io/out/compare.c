@@ -108,7 +108,7 @@ static const param params[] = {
     P("penetration beyond", "m", "ft", CS_FT, penetration_beyond_m),
     P("max barrier deflection", "m", "ft", CS_FT, max_deflection),
     P("working width", "m", "ft", CS_FT, working_width),
-    P("speed at the end", "m/s", "mph", CS_MPH, final_speed),
+    P("speed at the end along the initial heading", "m/s", "mph", CS_MPH, final_speed),
     P("exit speed", "m/s", "mph", CS_MPH, exit_speed),
     P("max cable tension", "N", "kip", CS_KIP, max_tension),
     P("end of the record", "s", NULL, 0, t_end),

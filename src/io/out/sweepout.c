@@ -367,7 +367,10 @@ static int make_summary(summary *s, const cs_sweep_spec *spec, const double *x, 
     for (long i = 0; i < s->ok; i++)
         pen +=
             cs_outcome_through(r[ok[i]].summary.outcome) || r[ok[i]].summary.max_dynamic_penetration_m > 1.0;
-    if (add_tally(s, "penetration_over_1m", "penetration > 1 m (or breakthrough)", pen) != 0) goto oom;
+    if (add_tally(s, "penetration_over_1m",
+                  "max dynamic penetration > 1 m past the attack face (or the vehicle got through)",
+                  pen) != 0)
+        goto oom;
     for (int t = 0; t < CS_EVENT_TYPE_COUNT; t++) {
         if (!is_failure_event(t)) continue;
         long c = 0;
