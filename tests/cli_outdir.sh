@@ -75,6 +75,18 @@ check "validate into a run's folder is refused, naming the command that wrote it
 out=$("$cs" validate -o "$cmd" --only verification --force 2>&1)
 check "validate --force writes beside the run's results and keeps them" '[ $? -eq 0 ] && [ -s "$cmd/validation.md" ] && [ "$(cd "$cmd" && sha256sum events.csv summary.json timeseries.csv)" = "$sums" ] && grep -qx "# written by: cablesim validate" "$cmd/.cablesim-manifest" && ! grep -q "^summary.json" "$cmd/.cablesim-manifest" || { echo "$out"; false; }'
 
+# A sweep whose outputs failed (here on a full disk) keeps its runs in .cablesim-journal for --resume:
+# another command's results into its folder keep it as the user's files are.
+jr="$tmp/journal"
+CABLESIM_TEST_DEV_FULL=runs.csv "$cs" sweep --allow-path examples tests/sweep/grid.yaml -o "$jr" --quiet >/dev/null 2>&1
+journal=$(sha256sum <"$jr/.cablesim-journal")
+out=$("$cs" run examples/aps3.yaml -o "$jr" --t-end "10 ms" 2>&1)
+check "a run into a stopped sweep's folder is refused, naming its journal, which is kept" '[ $? -eq 1 ] && grep -q "nothing run: $jr holds .cablesim-journal, which a \`cablesim sweep\` stopped before its outputs left there" <<<"$out" && [ "$(sha256sum <"$jr/.cablesim-journal")" = "$journal" ] || { echo "$out"; false; }'
+out=$("$cs" validate -o "$jr" --only verification --force 2>&1)
+check "validate --force writes beside the journal and keeps it" '[ $? -eq 0 ] && [ -s "$jr/validation.md" ] && [ "$(sha256sum <"$jr/.cablesim-journal")" = "$journal" ] || { echo "$out"; false; }'
+out=$("$cs" sweep --resume "$jr" --force --quiet 2>&1)
+check "then sweep --resume reads the runs back from it" '[ $? -eq 0 ] && [ "$(wc -l <"$jr/runs.csv")" -eq 7 ] && [ ! -e "$jr/.cablesim-journal" ] || { echo "$out"; false; }'
+
 # A manifest names files inside its folder only: a line that leaves it removes nothing.
 echo outside >"$tmp/victim.txt"
 mkdir -p "$tmp/linked" && echo linked >"$tmp/linked/x.csv"

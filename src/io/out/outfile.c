@@ -161,7 +161,11 @@ static int listed(const cs_outdir *out, const char *rel) {
  * for a message, into buf. */
 static const char *not_ours(const cs_outdir *out, const char *rel, char *buf, size_t size) {
     const cs_out_listed *e = find(out, rel);
-    if (!e)
+    if (strcmp(rel, CS_OUT_JOURNAL) == 0)
+        snprintf(buf, size,
+                 "a `cablesim sweep` stopped before its outputs left there (its runs, which `cablesim sweep "
+                 "--resume` finishes)");
+    else if (!e)
         snprintf(buf, size, "no cablesim run wrote there (no %s lists it)", CS_OUT_MANIFEST);
     else if (e->ours == 0)
         snprintf(buf, size, "has changed since cablesim wrote it there (its size or hash is not %s's)",
@@ -474,8 +478,10 @@ static cs_status write_manifest(cs_outdir *out, int with_prev, cs_error *err) {
 
 /* The first file under DIR/rel that no manifest lists into found (1), else 0; -1 with err filled if a
  * folder cannot be read. Folders are walked, not followed through links; the lock, the manifest and
- * temporaries are cablesim's, and folders that hold no file are not files. With remove, the
- * temporaries a killed run left are removed instead (the folder is locked: no run is writing them). */
+ * temporaries are cablesim's, and so is a sweep's journal to a sweep (to another command, the runs of a
+ * sweep stopped before its outputs, kept as the user's files are); folders that hold no file are not files.
+ * With remove, the temporaries a killed run left are removed instead (the folder is locked: no run is writing
+ * them). */
 static int scan(const cs_outdir *out, const char *rel, int depth, int remove, char *found, size_t found_size,
                 cs_error *err) {
     char path[PATH_SIZE];
@@ -504,8 +510,9 @@ static int scan(const cs_outdir *out, const char *rel, int depth, int remove, ch
         } else if (ours && remove) {
             unlink(full);
         } else if (!ours && !remove && !listed(out, sub) &&
-                   !(!rel[0] && (strcmp(name, CS_OUT_MANIFEST) == 0 || strcmp(name, CS_OUT_LOCK) == 0 ||
-                                 strcmp(name, CS_OUT_JOURNAL) == 0))) {
+                   !(!rel[0] &&
+                     (strcmp(name, CS_OUT_MANIFEST) == 0 || strcmp(name, CS_OUT_LOCK) == 0 ||
+                      (strcmp(name, CS_OUT_JOURNAL) == 0 && strcmp(out->command, "sweep") == 0)))) {
             snprintf(found, found_size, "%s", sub);
             rc = 1;
         }
@@ -797,8 +804,10 @@ static cs_status put_in_place(cs_outdir *out, cs_error *err) {
     /* the commit point: the manifest of this run's files alone (the first already is, when it named no
      * earlier file besides them) */
     if (earlier && (st = write_manifest(out, 0, err)) != CS_OK) return st;
-    full_path(out, CS_OUT_JOURNAL, tmp, sizeof tmp);
-    unlink(tmp); /* a journal's runs are in the outputs now */
+    if (out->journal >= 0) { /* this sweep's journal: its runs are in the outputs now */
+        full_path(out, CS_OUT_JOURNAL, tmp, sizeof tmp);
+        unlink(tmp);
+    }
     sync_folder(out, "", 0);
     for (int i = 0; i < out->count; i++) {
         const char *slash = strrchr(out->names[i], '/');

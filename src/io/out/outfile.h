@@ -114,11 +114,11 @@ cs_status cs_out_end_path(cs_outdir *out, cs_error *err);
  * CS_ERR_IO with err filled (then call cs_out_abort). */
 cs_status cs_out_commit(cs_outdir *out, cs_error *err);
 /* A journal in the folder (DIR/.cablesim-journal, a sweep's: each run's result as it finishes), which
- * outlives a kill -9, a power cut or a failed write of the outputs, and which cs_out_commit removes (the
- * outputs hold it all then). cs_out_journal_start writes its first text through a temporary, fsync and
- * rename (it replaces an earlier journal whole or not at all) and keeps it open; cs_out_journal_add
- * appends text and fsyncs. Each returns CS_OK, or CS_ERR_IO with err filled ("DIR/.cablesim-journal: No
- * space left on device"). */
+ * outlives a kill -9, a power cut or a failed write of the outputs, and which the commit of the sweep that
+ * keeps it removes (the outputs hold it all then); to another command it is another command's results.
+ * cs_out_journal_start writes its first text through a temporary, fsync and rename (it replaces an earlier
+ * journal whole or not at all) and keeps it open; cs_out_journal_add appends text and fsyncs. Each returns
+ * CS_OK, or CS_ERR_IO with err filled ("DIR/.cablesim-journal: No space left on device"). */
 cs_status cs_out_journal_start(cs_outdir *out, const char *text, size_t len, cs_error *err);
 cs_status cs_out_journal_add(cs_outdir *out, const char *text, size_t len, cs_error *err);
 /* The journal of the folder dir up to its last whole line (a line cut by a kill is dropped), malloc'ed and
