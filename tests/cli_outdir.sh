@@ -65,6 +65,27 @@ out=$("$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" --force 2>&1)
 check "nor does one typed with a wrong hash: --force writes beside it and keeps it" '[ $? -eq 0 ] && [ "$(cat "$own/notes.txt")" = "my notes" ] && ! grep -q "^notes.txt" "$own/.cablesim-manifest" || { echo "$out"; false; }'
 rm "$own/notes.txt"
 
+# The folder is judged again at the commit, not only before the run: an earlier run's file edited during
+# the run is the user's then, kept; one this run would replace fails the commit, nothing written.
+ed="$tmp/edited"
+"$cs" run examples/aps3.yaml -o "$ed" --t-end "10 ms" --plots >/dev/null 2>&1
+# edit_during EDIT: a run of a few seconds into $ed, EDIT run once it holds the folder; its status
+edit_during() {
+    "$cs" run examples/aps3.yaml -o "$ed" --t-end "20 ms" --dt "0.0005 ms" >"$tmp/ed.out" 2>&1 &
+    local pid=$!
+    for _ in $(seq 6000); do
+        [ -e "$ed/.cablesim-lock" ] && break
+        sleep 0.01
+    done
+    eval "$1"
+    wait "$pid"
+}
+edit_during 'echo "my notes" >"$ed/plots/speed.png"'
+check "an earlier run's file edited during the run is kept, not removed" '[ $? -eq 0 ] && [ "$(cat "$ed/plots/speed.png")" = "my notes" ] && ! grep -q "^plots/speed.png" "$ed/.cablesim-manifest" && [ ! -e "$ed/plots/speed.svg" ] || { cat "$tmp/ed.out"; false; }'
+rm "$ed/plots/speed.png"
+edit_during 'printf " " >>"$ed/summary.json"; edited=$(sha256sum <"$ed/summary.json")'
+check "one it would replace, edited during the run: nothing written, the edit kept" '[ $? -eq 1 ] && grep -q "nothing written: $ed/summary.json: a file is there which has changed since cablesim wrote it there" "$tmp/ed.out" && [ "$(sha256sum <"$ed/summary.json")" = "$edited" ] && [ -z "$(find "$ed" -name ".cablesim-tmp.*" -o -name .cablesim-lock)" ] || { cat "$tmp/ed.out"; false; }'
+
 # A folder holds one command's results: another command's are kept as the user's are (named in the
 # refusal, and --force writes beside them), so a validate into a run's folder does not remove the run.
 cmd="$tmp/cmd"

@@ -226,6 +226,16 @@ static int read_print(const char *text, cs_out_print *p) {
     return 1;
 }
 
+/* Whether the earlier run's file e is as that run wrote it (its size and hash), or gone: 1, else 0. */
+static int as_written(const cs_outdir *out, const cs_out_listed *e) {
+    char file[PATH_SIZE];
+    struct stat st;
+    cs_out_print now;
+    full_path(out, e->name, file, sizeof file);
+    if (lstat(file, &st) != 0) return 1; /* gone: nothing of the user's to keep */
+    return fingerprint(file, &now) == 0 && now.size == e->print.size && now.hash == e->print.hash;
+}
+
 static int written(const cs_outdir *out, const char *rel) {
     for (int i = 0; i < out->count; i++)
         if (strcmp(out->names[i], rel) == 0) return 1;
@@ -409,15 +419,7 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
         size_t len = strlen(line);
         if (line[0] == '#' || len >= sizeof e.name || !inside(line) || find(out, line)) continue;
         memcpy(e.name, line, len + 1);
-        int printed = tab && read_print(tab + 1, &e.print);
-        char file[PATH_SIZE];
-        struct stat st;
-        cs_out_print now;
-        full_path(out, e.name, file, sizeof file);
-        if (printed && lstat(file, &st) != 0)
-            e.ours = 1; /* gone: nothing of the user's to keep */
-        else if (printed)
-            e.ours = fingerprint(file, &now) == 0 && now.size == e.print.size && now.hash == e.print.hash;
+        if (tab && read_print(tab + 1, &e.print)) e.ours = as_written(out, &e);
         if (out->prev_count == cap) {
             cap = cap ? 2 * cap : 64;
             cs_out_listed *grown = realloc(out->prev, (size_t)cap * sizeof *grown);
@@ -604,6 +606,20 @@ cs_status cs_out_subdir(cs_outdir *out, const char *subdir, cs_error *err) {
     return CS_OK;
 }
 
+/* Whether this run may put its file at DIR/name: nothing there, or the earlier run's file as written.
+ * CS_OK, or CS_ERR_IO with err filled (a folder there, or a file of the user's, which is kept). */
+static cs_status place_free(const cs_outdir *out, const char *name, cs_error *err) {
+    char final[PATH_SIZE], why[PATH_SIZE];
+    full_path(out, name, final, sizeof final);
+    struct stat st;
+    if (lstat(final, &st) != 0) return CS_OK;
+    if (S_ISDIR(st.st_mode)) return cs_error_set(err, CS_ERR_IO, "%s: %s", final, strerror(EISDIR));
+    if (listed(out, name)) return CS_OK;
+    return cs_error_set(err, CS_ERR_IO,
+                        "%s: a file is there which %s: it is kept; remove it or write elsewhere", final,
+                        not_ours(out, name, why, sizeof why));
+}
+
 /* A temporary beside DIR/name, open for writing (its descriptor), named into out. -1 with err filled. */
 static int begin(cs_outdir *out, const char *name, cs_error *err) {
     char final[PATH_SIZE];
@@ -616,17 +632,7 @@ static int begin(cs_outdir *out, const char *name, cs_error *err) {
         return -1;
     }
     full_path(out, name, final, sizeof final);
-    struct stat st;
-    if (lstat(final, &st) == 0 && S_ISDIR(st.st_mode)) {
-        cs_error_set(err, CS_ERR_IO, "%s: %s", final, strerror(EISDIR));
-        return -1;
-    }
-    if (lstat(final, &st) == 0 && !listed(out, name)) {
-        char why[PATH_SIZE];
-        cs_error_set(err, CS_ERR_IO, "%s: a file is there which %s: it is kept; remove it or write elsewhere",
-                     final, not_ours(out, name, why, sizeof why));
-        return -1;
-    }
+    if (place_free(out, name, err) != CS_OK) return -1;
     const char *slash = strrchr(name, '/');
     int head = slash ? (int)(slash - name + 1) : 0;
     char *rel = out->tmps[out->count];
@@ -779,8 +785,15 @@ static cs_status remove_earlier(const cs_outdir *out, const char *rel, cs_error 
 /* cs_out_commit once every file is on the disk: the manifests and the renames. */
 static cs_status put_in_place(cs_outdir *out, cs_error *err) {
     char tmp[PATH_SIZE], final[PATH_SIZE];
+    cs_status st = CS_OK;
+    /* the folder as it is now, not as cs_out_open found it: an earlier file edited during the run, or a
+     * file the user put where this run writes, is the user's */
+    for (int i = 0; i < out->prev_count; i++)
+        if (out->prev[i].ours == 1) out->prev[i].ours = as_written(out, &out->prev[i]);
+    for (int i = 0; st == CS_OK && i < out->count; i++)
+        st = place_free(out, out->names[i], err);
     /* the manifest first names both runs' files, so that every file cablesim put here stays its own */
-    cs_status st = write_manifest(out, 1, err);
+    if (st == CS_OK) st = write_manifest(out, 1, err);
     if (st != CS_OK) return st;
     int earlier = 0; /* the earlier run's files this run does not write: removed below */
     for (int i = 0; i < out->count; i++) {

@@ -11,9 +11,10 @@
  * none of them (nor writes over one).
  *
  * Each file is written to a unique temporary beside its name (mkstemp: ".cablesim-tmp.NAME.XXXXXX") and
- * flushed, its writing to the disk begun; cs_out_commit fsyncs them all, renames them into place, removes
- * the files of the earlier manifest that this run did not write, and writes the new manifest last, by a
- * temporary and a rename: the commit point (the manifest written before the renames is that one already
+ * flushed, its writing to the disk begun; cs_out_commit fsyncs them all, judges the folder again (a file
+ * edited during the run is the user's then; one where a file goes fails the commit), renames them into place,
+ * removes the files of the earlier manifest that this run did not write, and writes the new manifest last, by
+ * a temporary and a rename: the commit point (the manifest written before the renames is that one already
  * when the earlier manifest named no other file). cs_out_abort removes the temporaries (and the folders
  * cs_out_open made) so a failed run leaves nothing. Either releases the lock. A sweep's journal, beside them,
  * is below.
@@ -109,9 +110,9 @@ cs_status cs_out_finish(cs_outdir *out, FILE *f, cs_status status, cs_error *err
  * disk. Each returns CS_OK, or a failure's status with err filled. */
 cs_status cs_out_begin_path(cs_outdir *out, const char *name, char *path, size_t path_size, cs_error *err);
 cs_status cs_out_end_path(cs_outdir *out, cs_error *err);
-/* Fsync every temporary, rename each to its name, remove the files of the earlier manifest that this run
- * did not write (and a subfolder they leave empty), write the manifest, release the lock. Returns CS_OK, or
- * CS_ERR_IO with err filled (then call cs_out_abort). */
+/* Fsync every temporary, judge the earlier files again (as cs_out_open did), rename each to its name, remove
+ * the files of the earlier manifest that this run did not write (and a subfolder they leave empty), write the
+ * manifest, release the lock. Returns CS_OK, or CS_ERR_IO with err filled (then call cs_out_abort). */
 cs_status cs_out_commit(cs_outdir *out, cs_error *err);
 /* A journal in the folder (DIR/.cablesim-journal, a sweep's: each run's result as it finishes), which
  * outlives a kill -9, a power cut or a failed write of the outputs, and which the commit of the sweep that
