@@ -64,6 +64,11 @@ printf 'notes.txt\t9\t0123456789abcdef\n' >>"$own/.cablesim-manifest"
 out=$("$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" --force 2>&1)
 check "nor does one typed with a wrong hash: --force writes beside it and keeps it" '[ $? -eq 0 ] && [ "$(cat "$own/notes.txt")" = "my notes" ] && ! grep -q "^notes.txt" "$own/.cablesim-manifest" || { echo "$out"; false; }'
 rm "$own/notes.txt"
+cp "$own/events.csv" "$tmp/events.before"
+truncate -s 64G "$own/events.csv" # sparse: no room taken, 64 GB to read
+out=$(timeout -s KILL 20 "$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" 2>&1)
+check "a listed file of another size is judged without reading it (64 GB, sparse)" '[ $? -eq 1 ] && grep -q "holds events.csv, which has changed since" <<<"$out" || { echo "$out"; false; }'
+mv "$tmp/events.before" "$own/events.csv"
 
 # The folder is judged again at the commit, not only before the run: an earlier run's file edited during
 # the run is the user's then, kept; one this run would replace fails the commit, nothing written.

@@ -226,13 +226,15 @@ static int read_print(const char *text, cs_out_print *p) {
     return 1;
 }
 
-/* Whether the earlier run's file e is as that run wrote it (its size and hash), or gone: 1, else 0. */
+/* Whether the earlier run's file e is as that run wrote it (its size and hash), or gone: 1, else 0. A file
+ * of another size is not read (a file of terabytes, or a sparse one, in its place is judged at once). */
 static int as_written(const cs_outdir *out, const cs_out_listed *e) {
     char file[PATH_SIZE];
     struct stat st;
     cs_out_print now;
     full_path(out, e->name, file, sizeof file);
     if (lstat(file, &st) != 0) return 1; /* gone: nothing of the user's to keep */
+    if (!S_ISREG(st.st_mode) || st.st_size != e->print.size) return 0;
     return fingerprint(file, &now) == 0 && now.size == e->print.size && now.hash == e->print.hash;
 }
 
