@@ -197,6 +197,15 @@ mkfifo "$tmp/fifo/.cablesim-manifest"
 out=$(timeout 10 "$cs" run examples/aps3.yaml -o "$tmp/fifo" --t-end "10 ms" 2>&1)
 check "a FIFO as the manifest is refused at once" '[ $? -eq 1 ] && grep -q "nothing run: $tmp/fifo/.cablesim-manifest: not a regular file" <<<"$out" && [ "$(ls -A "$tmp/fifo")" = .cablesim-manifest ] || { echo "$out"; false; }'
 
+# A manifest larger than any cablesim writes is not one: refused at once, and kept.
+mkdir -p "$tmp/bigman"
+truncate -s 64G "$tmp/bigman/.cablesim-manifest" # sparse: no room taken
+out=$(timeout -s KILL 20 "$cs" run examples/aps3.yaml -o "$tmp/bigman" --t-end "10 ms" 2>&1)
+check "a manifest of 64 GB (sparse) is refused at once, not read" '[ $? -eq 1 ] && grep -q "nothing run: $tmp/bigman/.cablesim-manifest: 68719476736 bytes, more than a manifest of cablesim.s holds" <<<"$out" && [ "$(stat -c %s "$tmp/bigman/.cablesim-manifest")" = 68719476736 ] || { echo "$out"; false; }'
+seq -f "f%g" 120000 >"$tmp/bigman/.cablesim-manifest"
+out=$(timeout -s KILL 20 "$cs" run examples/aps3.yaml -o "$tmp/bigman" --t-end "10 ms" 2>&1)
+check "one of 120,000 names is refused at once" '[ $? -eq 1 ] && grep -q "nothing run: $tmp/bigman/.cablesim-manifest: lists more than 256 files" <<<"$out" && [ "$(wc -l <"$tmp/bigman/.cablesim-manifest")" -eq 120000 ] || { echo "$out"; false; }'
+
 # A file named .cablesim-lock that no cablesim made (a hard link to a file elsewhere, or a file of text) is
 # not a lock: it is refused, even with --force, and neither truncated nor removed.
 echo "precious data" >"$tmp/precious.txt"

@@ -17,6 +17,8 @@
 #include <unistd.h>
 
 enum { PATH_SIZE = 1400, MAX_DEPTH = 32 };
+/* More than any manifest of cablesim's holds: a commit's files and, until its end, the earlier run's. */
+enum { MANIFEST_MAX_FILES = 4 * CS_OUT_MAX_FILES, MANIFEST_MAX_BYTES = 1 << 20 };
 
 static const char tmp_prefix[] = CS_OUT_TMP_PREFIX;
 
@@ -393,6 +395,13 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
         close(fd);
         return cs_error_set(err, CS_ERR_IO, "%s: not a regular file, so not a manifest of cablesim's", path);
     }
+    if (fd >= 0 &&
+        st.st_size > MANIFEST_MAX_BYTES) { /* not read: a sparse file of terabytes is refused at once */
+        close(fd);
+        return cs_error_set(err, CS_ERR_IO,
+                            "%s: %lld bytes, more than a manifest of cablesim's holds, so not one", path,
+                            (long long)st.st_size);
+    }
     FILE *f = fd < 0 ? NULL : fdopen(fd, "r");
     if (!f) {
         cs_status st = cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
@@ -422,6 +431,13 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
         if (line[0] == '#' || len >= sizeof e.name || !inside(line) || find(out, line)) continue;
         memcpy(e.name, line, len + 1);
         if (tab && read_print(tab + 1, &e.print)) e.ours = as_written(out, &e);
+        if (out->prev_count == MANIFEST_MAX_FILES) { /* and each line's look-up bounded */
+            fclose(f);
+            return cs_error_set(
+                err, CS_ERR_IO,
+                "%s: lists more than %d files, more than a manifest of cablesim's, so not one", path,
+                MANIFEST_MAX_FILES);
+        }
         if (out->prev_count == cap) {
             cap = cap ? 2 * cap : 64;
             cs_out_listed *grown = realloc(out->prev, (size_t)cap * sizeof *grown);
