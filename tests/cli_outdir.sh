@@ -197,6 +197,20 @@ mkfifo "$tmp/fifo/.cablesim-manifest"
 out=$(timeout 10 "$cs" run examples/aps3.yaml -o "$tmp/fifo" --t-end "10 ms" 2>&1)
 check "a FIFO as the manifest is refused at once" '[ $? -eq 1 ] && grep -q "nothing run: $tmp/fifo/.cablesim-manifest: not a regular file" <<<"$out" && [ "$(ls -A "$tmp/fifo")" = .cablesim-manifest ] || { echo "$out"; false; }'
 
+# A file named like a temporary that cablesim does not make (not .cablesim-tmp.NAME.XXXXXX, or below a
+# subfolder) is the user's: refused, named and kept; the temporaries a killed run left are removed.
+tn="$tmp/tmpnames"
+mkdir -p "$tn/sub/deeper" "$tn/plots"
+echo "my notes" >"$tn/.cablesim-tmp.notes"
+echo "kept" >"$tn/sub/deeper/.cablesim-tmp.summary.json.AbC123"
+out=$("$cs" run examples/aps3.yaml -o "$tn" --t-end "10 ms" 2>&1)
+check "files named like temporaries cablesim does not make are refused, and kept" '[ $? -eq 1 ] && grep -qE "holds (\.cablesim-tmp\.notes|sub/deeper/\.cablesim-tmp\.summary\.json\.AbC123), which no cablesim run wrote there" <<<"$out" && [ "$(cat "$tn/.cablesim-tmp.notes")" = "my notes" ] && [ "$(cat "$tn/sub/deeper/.cablesim-tmp.summary.json.AbC123")" = kept ] || { echo "$out"; false; }'
+rm -r "$tn/.cablesim-tmp.notes" "$tn/sub"
+echo stale >"$tn/.cablesim-tmp.summary.json.AbC123"
+echo stale >"$tn/plots/.cablesim-tmp.speed.png.x1Y2z3"
+out=$("$cs" run examples/aps3.yaml -o "$tn" --t-end "10 ms" 2>&1)
+check "a killed run's temporaries, in the folder and in plots/, are removed" '[ $? -eq 0 ] && [ -z "$(find "$tn" -name ".cablesim-tmp.*")" ] || { echo "$out"; false; }'
+
 # A manifest larger than any cablesim writes is not one: refused at once, and kept.
 mkdir -p "$tmp/bigman"
 truncate -s 64G "$tmp/bigman/.cablesim-manifest" # sparse: no room taken

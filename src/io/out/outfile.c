@@ -496,6 +496,19 @@ static cs_status write_manifest(cs_outdir *out, int with_prev, cs_error *err) {
 
 /* ---- what the folder holds ---- */
 
+/* Whether name, a file's at depth (0 the folder, 1 a subfolder), is one of cablesim's temporaries: in the
+ * folder or a subfolder of it (plots/), where outputs go, and named as begin and begin_aside name them,
+ * ".cablesim-tmp.NAME." and mkstemp's six letters or digits. */
+static int temporary(const char *name, int depth) {
+    size_t n = strlen(name), p = sizeof tmp_prefix - 1;
+    if (depth > 1 || n < p + 8 || strncmp(name, tmp_prefix, p) != 0 || name[n - 7] != '.') return 0;
+    for (size_t i = n - 6; i < n; i++)
+        if (!((name[i] >= 'a' && name[i] <= 'z') || (name[i] >= 'A' && name[i] <= 'Z') ||
+              (name[i] >= '0' && name[i] <= '9')))
+            return 0;
+    return 1;
+}
+
 /* The first file under DIR/rel that no manifest lists into found (1), else 0; -1 with err filled if a
  * folder cannot be read. Folders are walked, not followed through links; the lock, the manifest and
  * temporaries are cablesim's, and so is a sweep's journal to a sweep (to another command, the runs of a
@@ -524,7 +537,7 @@ static int scan(const cs_outdir *out, const char *rel, int depth, int remove, ch
         full_path(out, sub, full, sizeof full);
         struct stat st;
         if (lstat(full, &st) != 0) continue; /* gone since */
-        int ours = strncmp(name, tmp_prefix, sizeof tmp_prefix - 1) == 0 && S_ISREG(st.st_mode);
+        int ours = S_ISREG(st.st_mode) && temporary(name, depth);
         if (S_ISDIR(st.st_mode) && depth < MAX_DEPTH) {
             rc = scan(out, sub, depth + 1, remove, found, found_size, err);
         } else if (ours && remove) {
