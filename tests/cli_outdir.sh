@@ -91,6 +91,12 @@ rm "$ed/plots/speed.png"
 edit_during 'printf " " >>"$ed/summary.json"; edited=$(sha256sum <"$ed/summary.json")'
 check "one it would replace, edited during the run: nothing written, the edit kept" '[ $? -eq 1 ] && grep -q "nothing written: $ed/summary.json: a file is there which has changed since cablesim wrote it there" "$tmp/ed.out" && [ "$(sha256sum <"$ed/summary.json")" = "$edited" ] && [ -z "$(find "$ed" -name ".cablesim-tmp.*" -o -name .cablesim-lock)" ] || { cat "$tmp/ed.out"; false; }'
 
+# A failed run leaves the folder as it was: an empty plots/ of the user's stays.
+"$cs" run examples/aps3.yaml -o "$tmp/emptysub" --t-end "10 ms" >/dev/null 2>&1
+mkdir "$tmp/emptysub/plots"
+out=$(CABLESIM_TEST_DEV_FULL=plots/speed.png "$cs" run examples/aps3.yaml -o "$tmp/emptysub" --t-end "10 ms" --plots 2>&1)
+check "a failed run keeps an empty subfolder that was there before it" '[ $? -eq 1 ] && grep -q "plots/speed.png: No space left on device" <<<"$out" && [ -d "$tmp/emptysub/plots" ] && [ -z "$(ls -A "$tmp/emptysub/plots")" ] || { echo "$out"; false; }'
+
 # A folder holds one command's results: another command's are kept as the user's are (named in the
 # refusal, and --force writes beside them), so a validate into a run's folder does not remove the run.
 cmd="$tmp/cmd"

@@ -86,7 +86,7 @@ static void unlink_lock(const cs_outdir *out) {
 }
 
 /* Remove what a run began and did not commit: its temporaries (its files' and its manifest's or journal's),
- * the subfolders its files were begun in and those cs_out_subdir made, when that leaves them empty, the
+ * the subfolders cs_out_subdir made, when that leaves them empty (one that was there before stays), the
  * lock if it is held, then the folders cs_out_open made, deepest first, while they are empty. Only system
  * calls on paths put together with memcpy: async-signal-safe. A temporary renamed into place since is no
  * longer under its name: its unlink fails, the file stays. */
@@ -100,13 +100,7 @@ static void remove_uncommitted(const cs_outdir *out) {
         full_path(out, out->aside, path, sizeof path);
         unlink(path);
     }
-    for (int i = 0; i < out->count; i++) { /* a subfolder (plots/) this left empty */
-        const char *slash = strrchr(out->names[i], '/');
-        if (!slash) continue;
-        join(out, out->names[i], (size_t)(slash - out->names[i]), path, sizeof path);
-        rmdir(path);
-    }
-    for (int i = 0; i < out->subdir_count; i++) { /* and one it made that no file was begun in */
+    for (int i = 0; i < out->subdir_count; i++) { /* a subfolder (plots/) this made, left empty */
         full_path(out, out->subdirs[i], path, sizeof path);
         rmdir(path);
     }
