@@ -107,6 +107,18 @@ check "validate into a run's folder is refused, naming the command that wrote it
 out=$("$cs" validate -o "$cmd" --only verification --force 2>&1)
 check "validate --force writes beside the run's results and keeps them" '[ $? -eq 0 ] && [ -s "$cmd/validation.md" ] && [ "$(cd "$cmd" && sha256sum events.csv summary.json timeseries.csv)" = "$sums" ] && grep -qx "# written by: cablesim validate" "$cmd/.cablesim-manifest" && ! grep -q "^summary.json" "$cmd/.cablesim-manifest" || { echo "$out"; false; }'
 
+# A manifest whose "written by" line names no command (edited), or names two, gives no command its files:
+# they are kept as another command's.
+wb="$tmp/writtenby"
+"$cs" validate -o "$wb" --only verification >/dev/null 2>&1
+sums=$(cd "$wb" && sha256sum validation.*)
+sed -i 's/^# written by: cablesim validate$/# written by: cablesim validate!/' "$wb/.cablesim-manifest"
+out=$("$cs" run examples/aps3.yaml -o "$wb" --t-end "10 ms" 2>&1)
+check "a manifest naming no command: its files kept, the folder refused" '[ $? -eq 1 ] && grep -q "holds validation.[a-z]*, which a cablesim command wrote there that .cablesim-manifest does not name" <<<"$out" && [ "$(cd "$wb" && sha256sum validation.*)" = "$sums" ] || { echo "$out"; false; }'
+sed -i 's/^# written by: cablesim validate!$/# written by: cablesim validate\n# written by: cablesim run/' "$wb/.cablesim-manifest"
+out=$("$cs" run examples/aps3.yaml -o "$wb" --t-end "10 ms" --force 2>&1)
+check "one naming two: --force writes beside its files and keeps them" '[ $? -eq 0 ] && [ -s "$wb/summary.json" ] && [ "$(cd "$wb" && sha256sum validation.*)" = "$sums" ] || { echo "$out"; false; }'
+
 # A sweep whose outputs failed (here on a full disk) keeps its runs in .cablesim-journal for --resume:
 # another command's results into its folder keep it as the user's files are.
 jr="$tmp/journal"

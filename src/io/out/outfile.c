@@ -168,6 +168,11 @@ static const char *not_ours(const cs_outdir *out, const char *rel, char *buf, si
                  CS_OUT_MANIFEST);
     else if (e->ours == -1)
         snprintf(buf, size, "%s lists without the size and hash cablesim gives its files", CS_OUT_MANIFEST);
+    else if (!out->prev_command[0])
+        snprintf(buf, size,
+                 "a cablesim command wrote there that %s does not name (its \"# written by\" line): that "
+                 "command's results, which `cablesim %s` does not replace",
+                 CS_OUT_MANIFEST, out->command);
     else
         snprintf(buf, size,
                  "`cablesim %s` wrote there: that command's results, which `cablesim %s` does not "
@@ -403,7 +408,7 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
         return st;
     }
     char line[512];
-    int cap = 0;
+    int cap = 0, unnamed = 0; /* unnamed: a "written by" line that names no command, or another */
     while (fgets(line, sizeof line, f)) {
         size_t n = strcspn(line, "\n");
         int whole = line[n] == '\n' || feof(f);
@@ -414,10 +419,15 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
             }
             continue;
         }
-        if (strncmp(line, "# written by: cablesim ", 23) == 0 &&
-            strlen(line + 23) < sizeof out->prev_command &&
-            strspn(line + 23, "abcdefghijklmnopqrstuvwxyz") == strlen(line + 23))
-            memcpy(out->prev_command, line + 23, strlen(line + 23) + 1);
+        if (strncmp(line, "# written by:", 13) == 0) { /* one command, named once or more */
+            const char *c = strncmp(line, "# written by: cablesim ", 23) == 0 ? line + 23 : "";
+            size_t k = strlen(c);
+            if (k == 0 || k >= sizeof out->prev_command || strspn(c, "abcdefghijklmnopqrstuvwxyz") != k ||
+                (out->prev_command[0] && strcmp(out->prev_command, c) != 0))
+                unnamed = 1;
+            else
+                memcpy(out->prev_command, c, k + 1);
+        }
         char *tab = strchr(line, '\t');
         if (tab) *tab = '\0';
         cs_out_listed e = {.ours = -1};
@@ -444,8 +454,8 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
         out->prev[out->prev_count++] = e;
     }
     fclose(f);
-    for (int i = 0;
-         out->prev_command[0] && strcmp(out->prev_command, out->command) != 0 && i < out->prev_count; i++)
+    if (unnamed) out->prev_command[0] = '\0';
+    for (int i = 0; strcmp(out->prev_command, out->command) != 0 && i < out->prev_count; i++)
         if (out->prev[i].ours == 1) out->prev[i].ours = -2;
     return CS_OK;
 }

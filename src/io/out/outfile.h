@@ -52,7 +52,8 @@ typedef struct cs_out_print {
 
 /* A line of the earlier manifest. ours 1: the file is as that run wrote it, or gone; 0: a file of that name
  * is there, changed since; -1: the line gives no size and hash (typed in); -2: another command wrote it (a
- * sweep's results, met by a run). A file not ours is kept: the user's, or another command's results. */
+ * sweep's results, met by a run), or one the manifest does not name (its "written by" line edited). A file
+ * not ours is kept: the user's, or another command's results. */
 typedef struct cs_out_listed {
     char name[128];
     cs_out_print print;
@@ -73,7 +74,7 @@ typedef struct cs_outdir {
     int subdir_count;
     int flags;             /* CS_OUT_FORCE */
     char command[16];      /* the command writing ("run", "sweep", ...): the manifest's "written by" */
-    char prev_command[16]; /* the earlier manifest's; "" if it names none */
+    char prev_command[16]; /* the earlier manifest's; "" if it names none, or two (another's results) */
     char aside[48]; /* the temporary of the manifest or the journal being written, relative to dir; "" */
     int lock;       /* the lock's file descriptor, -1 when not held */
     int journal;    /* the journal's, open for appending; -1: none */
