@@ -64,6 +64,38 @@ printf 'notes.txt\t9\t0123456789abcdef\n' >>"$own/.cablesim-manifest"
 out=$("$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" --force 2>&1)
 check "nor does one typed with a wrong hash: --force writes beside it and keeps it" '[ $? -eq 0 ] && [ "$(cat "$own/notes.txt")" = "my notes" ] && ! grep -q "^notes.txt" "$own/.cablesim-manifest" || { echo "$out"; false; }'
 rm "$own/notes.txt"
+cp "$own/events.csv" "$tmp/events.before"
+truncate -s 64G "$own/events.csv" # sparse: no room taken, 64 GB to read
+out=$(timeout -s KILL 20 "$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" 2>&1)
+check "a listed file of another size is judged without reading it (64 GB, sparse)" '[ $? -eq 1 ] && grep -q "holds events.csv, which has changed since" <<<"$out" || { echo "$out"; false; }'
+mv "$tmp/events.before" "$own/events.csv"
+
+# The folder is judged again at the commit, not only before the run: an earlier run's file edited during
+# the run is the user's then, kept; one this run would replace fails the commit, nothing written.
+ed="$tmp/edited"
+"$cs" run examples/aps3.yaml -o "$ed" --t-end "10 ms" --plots >/dev/null 2>&1
+# edit_during EDIT: a run of a few seconds into $ed, EDIT run once it holds the folder; its status
+edit_during() {
+    "$cs" run examples/aps3.yaml -o "$ed" --t-end "20 ms" --dt "0.0005 ms" >"$tmp/ed.out" 2>&1 &
+    local pid=$!
+    for _ in $(seq 6000); do
+        [ -e "$ed/.cablesim-lock" ] && break
+        sleep 0.01
+    done
+    eval "$1"
+    wait "$pid"
+}
+edit_during 'echo "my notes" >"$ed/plots/speed.png"'
+check "an earlier run's file edited during the run is kept, not removed" '[ $? -eq 0 ] && [ "$(cat "$ed/plots/speed.png")" = "my notes" ] && ! grep -q "^plots/speed.png" "$ed/.cablesim-manifest" && [ ! -e "$ed/plots/speed.svg" ] || { cat "$tmp/ed.out"; false; }'
+rm "$ed/plots/speed.png"
+edit_during 'printf " " >>"$ed/summary.json"; edited=$(sha256sum <"$ed/summary.json")'
+check "one it would replace, edited during the run: nothing written, the edit kept" '[ $? -eq 1 ] && grep -q "nothing written: $ed/summary.json: a file is there which has changed since cablesim wrote it there" "$tmp/ed.out" && [ "$(sha256sum <"$ed/summary.json")" = "$edited" ] && [ -z "$(find "$ed" -name ".cablesim-tmp.*" -o -name .cablesim-lock)" ] || { cat "$tmp/ed.out"; false; }'
+
+# A failed run leaves the folder as it was: an empty plots/ of the user's stays.
+"$cs" run examples/aps3.yaml -o "$tmp/emptysub" --t-end "10 ms" >/dev/null 2>&1
+mkdir "$tmp/emptysub/plots"
+out=$(CABLESIM_TEST_DEV_FULL=plots/speed.png "$cs" run examples/aps3.yaml -o "$tmp/emptysub" --t-end "10 ms" --plots 2>&1)
+check "a failed run keeps an empty subfolder that was there before it" '[ $? -eq 1 ] && grep -q "plots/speed.png: No space left on device" <<<"$out" && [ -d "$tmp/emptysub/plots" ] && [ -z "$(ls -A "$tmp/emptysub/plots")" ] || { echo "$out"; false; }'
 
 # A folder holds one command's results: another command's are kept as the user's are (named in the
 # refusal, and --force writes beside them), so a validate into a run's folder does not remove the run.
@@ -82,6 +114,30 @@ mkdir -p "$old" && echo "old run" >"$old/summary.json"
 printf '# cablesim: the files its last run wrote in this folder; the next run into it removes these and no other\nsummary.json\n' >"$old/.cablesim-manifest"
 out=$("$cs" run examples/aps3.yaml -o "$old" --t-end "10 ms" 2>&1)
 check "an earlier version's folder is refused, saying why, and kept" '[ $? -eq 1 ] && grep -q "holds summary.json, which an earlier version of cablesim may have written there, but its .cablesim-manifest gives no size and hash" <<<"$out" && [ "$(cat "$old/summary.json")" = "old run" ] || { echo "$out"; false; }'
+
+# A manifest whose "written by" line names no command (edited), or names two, gives no command its files:
+# they are kept as another command's.
+wb="$tmp/writtenby"
+"$cs" validate -o "$wb" --only verification >/dev/null 2>&1
+sums=$(cd "$wb" && sha256sum validation.*)
+sed -i 's/^# written by: cablesim validate$/# written by: cablesim validate!/' "$wb/.cablesim-manifest"
+out=$("$cs" run examples/aps3.yaml -o "$wb" --t-end "10 ms" 2>&1)
+check "a manifest naming no command: its files kept, the folder refused" '[ $? -eq 1 ] && grep -q "holds validation.[a-z]*, which a cablesim command wrote there that .cablesim-manifest does not name" <<<"$out" && [ "$(cd "$wb" && sha256sum validation.*)" = "$sums" ] || { echo "$out"; false; }'
+sed -i 's/^# written by: cablesim validate!$/# written by: cablesim validate\n# written by: cablesim run/' "$wb/.cablesim-manifest"
+out=$("$cs" run examples/aps3.yaml -o "$wb" --t-end "10 ms" --force 2>&1)
+check "one naming two: --force writes beside its files and keeps them" '[ $? -eq 0 ] && [ -s "$wb/summary.json" ] && [ "$(cd "$wb" && sha256sum validation.*)" = "$sums" ] || { echo "$out"; false; }'
+
+# A sweep whose outputs failed (here on a full disk) keeps its runs in .cablesim-journal for --resume:
+# another command's results into its folder keep it as the user's files are.
+jr="$tmp/journal"
+CABLESIM_TEST_DEV_FULL=runs.csv "$cs" sweep --allow-path examples tests/sweep/grid.yaml -o "$jr" --quiet >/dev/null 2>&1
+journal=$(sha256sum <"$jr/.cablesim-journal")
+out=$("$cs" run examples/aps3.yaml -o "$jr" --t-end "10 ms" 2>&1)
+check "a run into a stopped sweep's folder is refused, naming its journal, which is kept" '[ $? -eq 1 ] && grep -q "nothing run: $jr holds .cablesim-journal, which a \`cablesim sweep\` stopped before its outputs left there" <<<"$out" && [ "$(sha256sum <"$jr/.cablesim-journal")" = "$journal" ] || { echo "$out"; false; }'
+out=$("$cs" validate -o "$jr" --only verification --force 2>&1)
+check "validate --force writes beside the journal and keeps it" '[ $? -eq 0 ] && [ -s "$jr/validation.md" ] && [ "$(sha256sum <"$jr/.cablesim-journal")" = "$journal" ] || { echo "$out"; false; }'
+out=$("$cs" sweep --resume "$jr" --force --quiet 2>&1)
+check "then sweep --resume reads the runs back from it" '[ $? -eq 0 ] && [ "$(wc -l <"$jr/runs.csv")" -eq 7 ] && [ ! -e "$jr/.cablesim-journal" ] || { echo "$out"; false; }'
 
 # A manifest names files inside its folder only: a line that leaves it removes nothing.
 echo outside >"$tmp/victim.txt"
@@ -166,6 +222,29 @@ mkdir -p "$tmp/fifo"
 mkfifo "$tmp/fifo/.cablesim-manifest"
 out=$(timeout 10 "$cs" run examples/aps3.yaml -o "$tmp/fifo" --t-end "10 ms" 2>&1)
 check "a FIFO as the manifest is refused at once" '[ $? -eq 1 ] && grep -q "nothing run: $tmp/fifo/.cablesim-manifest: not a regular file" <<<"$out" && [ "$(ls -A "$tmp/fifo")" = .cablesim-manifest ] || { echo "$out"; false; }'
+
+# A file named like a temporary that cablesim does not make (not .cablesim-tmp.NAME.XXXXXX, or below a
+# subfolder) is the user's: refused, named and kept; the temporaries a killed run left are removed.
+tn="$tmp/tmpnames"
+mkdir -p "$tn/sub/deeper" "$tn/plots"
+echo "my notes" >"$tn/.cablesim-tmp.notes"
+echo "kept" >"$tn/sub/deeper/.cablesim-tmp.summary.json.AbC123"
+out=$("$cs" run examples/aps3.yaml -o "$tn" --t-end "10 ms" 2>&1)
+check "files named like temporaries cablesim does not make are refused, and kept" '[ $? -eq 1 ] && grep -qE "holds (\.cablesim-tmp\.notes|sub/deeper/\.cablesim-tmp\.summary\.json\.AbC123), which no cablesim run wrote there" <<<"$out" && [ "$(cat "$tn/.cablesim-tmp.notes")" = "my notes" ] && [ "$(cat "$tn/sub/deeper/.cablesim-tmp.summary.json.AbC123")" = kept ] || { echo "$out"; false; }'
+rm -r "$tn/.cablesim-tmp.notes" "$tn/sub"
+echo stale >"$tn/.cablesim-tmp.summary.json.AbC123"
+echo stale >"$tn/plots/.cablesim-tmp.speed.png.x1Y2z3"
+out=$("$cs" run examples/aps3.yaml -o "$tn" --t-end "10 ms" 2>&1)
+check "a killed run's temporaries, in the folder and in plots/, are removed" '[ $? -eq 0 ] && [ -z "$(find "$tn" -name ".cablesim-tmp.*")" ] || { echo "$out"; false; }'
+
+# A manifest larger than any cablesim writes is not one: refused at once, and kept.
+mkdir -p "$tmp/bigman"
+truncate -s 64G "$tmp/bigman/.cablesim-manifest" # sparse: no room taken
+out=$(timeout -s KILL 20 "$cs" run examples/aps3.yaml -o "$tmp/bigman" --t-end "10 ms" 2>&1)
+check "a manifest of 64 GB (sparse) is refused at once, not read" '[ $? -eq 1 ] && grep -q "nothing run: $tmp/bigman/.cablesim-manifest: 68719476736 bytes, more than a manifest of cablesim.s holds" <<<"$out" && [ "$(stat -c %s "$tmp/bigman/.cablesim-manifest")" = 68719476736 ] || { echo "$out"; false; }'
+seq -f "f%g" 120000 >"$tmp/bigman/.cablesim-manifest"
+out=$(timeout -s KILL 20 "$cs" run examples/aps3.yaml -o "$tmp/bigman" --t-end "10 ms" 2>&1)
+check "one of 120,000 names is refused at once" '[ $? -eq 1 ] && grep -q "nothing run: $tmp/bigman/.cablesim-manifest: lists more than 256 files" <<<"$out" && [ "$(wc -l <"$tmp/bigman/.cablesim-manifest")" -eq 120000 ] || { echo "$out"; false; }'
 
 # A file named .cablesim-lock that no cablesim made (a hard link to a file elsewhere, or a file of text) is
 # not a lock: it is refused, even with --force, and neither truncated nor removed.

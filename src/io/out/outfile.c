@@ -17,6 +17,8 @@
 #include <unistd.h>
 
 enum { PATH_SIZE = 1400, MAX_DEPTH = 32 };
+/* More than any manifest of cablesim's holds: a commit's files and, until its end, the earlier run's. */
+enum { MANIFEST_MAX_FILES = 4 * CS_OUT_MAX_FILES, MANIFEST_MAX_BYTES = 1 << 20 };
 
 static const char tmp_prefix[] = CS_OUT_TMP_PREFIX;
 
@@ -84,7 +86,7 @@ static void unlink_lock(const cs_outdir *out) {
 }
 
 /* Remove what a run began and did not commit: its temporaries (its files' and its manifest's or journal's),
- * the subfolders its files were begun in and those cs_out_subdir made, when that leaves them empty, the
+ * the subfolders cs_out_subdir made, when that leaves them empty (one that was there before stays), the
  * lock if it is held, then the folders cs_out_open made, deepest first, while they are empty. Only system
  * calls on paths put together with memcpy: async-signal-safe. A temporary renamed into place since is no
  * longer under its name: its unlink fails, the file stays. */
@@ -98,13 +100,7 @@ static void remove_uncommitted(const cs_outdir *out) {
         full_path(out, out->aside, path, sizeof path);
         unlink(path);
     }
-    for (int i = 0; i < out->count; i++) { /* a subfolder (plots/) this left empty */
-        const char *slash = strrchr(out->names[i], '/');
-        if (!slash) continue;
-        join(out, out->names[i], (size_t)(slash - out->names[i]), path, sizeof path);
-        rmdir(path);
-    }
-    for (int i = 0; i < out->subdir_count; i++) { /* and one it made that no file was begun in */
+    for (int i = 0; i < out->subdir_count; i++) { /* a subfolder (plots/) this made, left empty */
         full_path(out, out->subdirs[i], path, sizeof path);
         rmdir(path);
     }
@@ -167,7 +163,11 @@ static int listed(const cs_outdir *out, const char *rel) {
  * for a message, into buf. */
 static const char *not_ours(const cs_outdir *out, const char *rel, char *buf, size_t size) {
     const cs_out_listed *e = find(out, rel);
-    if (!e)
+    if (strcmp(rel, CS_OUT_JOURNAL) == 0)
+        snprintf(buf, size,
+                 "a `cablesim sweep` stopped before its outputs left there (its runs, which `cablesim sweep "
+                 "--resume` finishes)");
+    else if (!e)
         snprintf(buf, size, "no cablesim run wrote there (no %s lists it)", CS_OUT_MANIFEST);
     else if (e->ours == 0)
         snprintf(buf, size, "has changed since cablesim wrote it there (its size or hash is not %s's)",
@@ -180,6 +180,11 @@ static const char *not_ours(const cs_outdir *out, const char *rel, char *buf, si
                  CS_OUT_MANIFEST);
     else if (e->ours == -1)
         snprintf(buf, size, "%s lists without the size and hash cablesim gives its files", CS_OUT_MANIFEST);
+    else if (!out->prev_command[0])
+        snprintf(buf, size,
+                 "a cablesim command wrote there that %s does not name (its \"# written by\" line): that "
+                 "command's results, which `cablesim %s` does not replace",
+                 CS_OUT_MANIFEST, out->command);
     else
         snprintf(buf, size,
                  "`cablesim %s` wrote there: that command's results, which `cablesim %s` does not "
@@ -232,6 +237,18 @@ static int read_print(const char *text, cs_out_print *p) {
     p->size = size;
     p->hash = hash;
     return 1;
+}
+
+/* Whether the earlier run's file e is as that run wrote it (its size and hash), or gone: 1, else 0. A file
+ * of another size is not read (a file of terabytes, or a sparse one, in its place is judged at once). */
+static int as_written(const cs_outdir *out, const cs_out_listed *e) {
+    char file[PATH_SIZE];
+    struct stat st;
+    cs_out_print now;
+    full_path(out, e->name, file, sizeof file);
+    if (lstat(file, &st) != 0) return 1; /* gone: nothing of the user's to keep */
+    if (!S_ISREG(st.st_mode) || st.st_size != e->print.size) return 0;
+    return fingerprint(file, &now) == 0 && now.size == e->print.size && now.hash == e->print.hash;
 }
 
 static int written(const cs_outdir *out, const char *rel) {
@@ -389,6 +406,13 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
         close(fd);
         return cs_error_set(err, CS_ERR_IO, "%s: not a regular file, so not a manifest of cablesim's", path);
     }
+    if (fd >= 0 &&
+        st.st_size > MANIFEST_MAX_BYTES) { /* not read: a sparse file of terabytes is refused at once */
+        close(fd);
+        return cs_error_set(err, CS_ERR_IO,
+                            "%s: %lld bytes, more than a manifest of cablesim's holds, so not one", path,
+                            (long long)st.st_size);
+    }
     FILE *f = fd < 0 ? NULL : fdopen(fd, "r");
     if (!f) {
         cs_status st = cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
@@ -396,7 +420,7 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
         return st;
     }
     char line[512];
-    int cap = 0;
+    int cap = 0, unnamed = 0; /* unnamed: a "written by" line that names no command, or another */
     while (fgets(line, sizeof line, f)) {
         size_t n = strcspn(line, "\n");
         int whole = line[n] == '\n' || feof(f);
@@ -407,25 +431,29 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
             }
             continue;
         }
-        if (strncmp(line, "# written by: cablesim ", 23) == 0 &&
-            strlen(line + 23) < sizeof out->prev_command &&
-            strspn(line + 23, "abcdefghijklmnopqrstuvwxyz") == strlen(line + 23))
-            memcpy(out->prev_command, line + 23, strlen(line + 23) + 1);
+        if (strncmp(line, "# written by:", 13) == 0) { /* one command, named once or more */
+            const char *c = strncmp(line, "# written by: cablesim ", 23) == 0 ? line + 23 : "";
+            size_t k = strlen(c);
+            if (k == 0 || k >= sizeof out->prev_command || strspn(c, "abcdefghijklmnopqrstuvwxyz") != k ||
+                (out->prev_command[0] && strcmp(out->prev_command, c) != 0))
+                unnamed = 1;
+            else
+                memcpy(out->prev_command, c, k + 1);
+        }
         char *tab = strchr(line, '\t');
         if (tab) *tab = '\0';
         cs_out_listed e = {.ours = -1};
         size_t len = strlen(line);
         if (line[0] == '#' || len >= sizeof e.name || !inside(line) || find(out, line)) continue;
         memcpy(e.name, line, len + 1);
-        int printed = tab && read_print(tab + 1, &e.print);
-        char file[PATH_SIZE];
-        struct stat st;
-        cs_out_print now;
-        full_path(out, e.name, file, sizeof file);
-        if (printed && lstat(file, &st) != 0)
-            e.ours = 1; /* gone: nothing of the user's to keep */
-        else if (printed)
-            e.ours = fingerprint(file, &now) == 0 && now.size == e.print.size && now.hash == e.print.hash;
+        if (tab && read_print(tab + 1, &e.print)) e.ours = as_written(out, &e);
+        if (out->prev_count == MANIFEST_MAX_FILES) { /* and each line's look-up bounded */
+            fclose(f);
+            return cs_error_set(
+                err, CS_ERR_IO,
+                "%s: lists more than %d files, more than a manifest of cablesim's, so not one", path,
+                MANIFEST_MAX_FILES);
+        }
         if (out->prev_count == cap) {
             cap = cap ? 2 * cap : 64;
             cs_out_listed *grown = realloc(out->prev, (size_t)cap * sizeof *grown);
@@ -438,8 +466,8 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
         out->prev[out->prev_count++] = e;
     }
     fclose(f);
-    for (int i = 0;
-         out->prev_command[0] && strcmp(out->prev_command, out->command) != 0 && i < out->prev_count; i++)
+    if (unnamed) out->prev_command[0] = '\0';
+    for (int i = 0; strcmp(out->prev_command, out->command) != 0 && i < out->prev_count; i++)
         if (out->prev[i].ours == 1) out->prev[i].ours = -2;
     return CS_OK;
 }
@@ -484,10 +512,25 @@ static cs_status write_manifest(cs_outdir *out, int with_prev, cs_error *err) {
 
 /* ---- what the folder holds ---- */
 
+/* Whether name, a file's at depth (0 the folder, 1 a subfolder), is one of cablesim's temporaries: in the
+ * folder or a subfolder of it (plots/), where outputs go, and named as begin and begin_aside name them,
+ * ".cablesim-tmp.NAME." and mkstemp's six letters or digits. */
+static int temporary(const char *name, int depth) {
+    size_t n = strlen(name), p = sizeof tmp_prefix - 1;
+    if (depth > 1 || n < p + 8 || strncmp(name, tmp_prefix, p) != 0 || name[n - 7] != '.') return 0;
+    for (size_t i = n - 6; i < n; i++)
+        if (!((name[i] >= 'a' && name[i] <= 'z') || (name[i] >= 'A' && name[i] <= 'Z') ||
+              (name[i] >= '0' && name[i] <= '9')))
+            return 0;
+    return 1;
+}
+
 /* The first file under DIR/rel that no manifest lists into found (1), else 0; -1 with err filled if a
  * folder cannot be read. Folders are walked, not followed through links; the lock, the manifest and
- * temporaries are cablesim's, and folders that hold no file are not files. With remove, the
- * temporaries a killed run left are removed instead (the folder is locked: no run is writing them). */
+ * temporaries are cablesim's, and so is a sweep's journal to a sweep (to another command, the runs of a
+ * sweep stopped before its outputs, kept as the user's files are); folders that hold no file are not files.
+ * With remove, the temporaries a killed run left are removed instead (the folder is locked: no run is writing
+ * them). */
 static int scan(const cs_outdir *out, const char *rel, int depth, int remove, char *found, size_t found_size,
                 cs_error *err) {
     char path[PATH_SIZE];
@@ -510,14 +553,15 @@ static int scan(const cs_outdir *out, const char *rel, int depth, int remove, ch
         full_path(out, sub, full, sizeof full);
         struct stat st;
         if (lstat(full, &st) != 0) continue; /* gone since */
-        int ours = strncmp(name, tmp_prefix, sizeof tmp_prefix - 1) == 0 && S_ISREG(st.st_mode);
+        int ours = S_ISREG(st.st_mode) && temporary(name, depth);
         if (S_ISDIR(st.st_mode) && depth < MAX_DEPTH) {
             rc = scan(out, sub, depth + 1, remove, found, found_size, err);
         } else if (ours && remove) {
             unlink(full);
         } else if (!ours && !remove && !listed(out, sub) &&
-                   !(!rel[0] && (strcmp(name, CS_OUT_MANIFEST) == 0 || strcmp(name, CS_OUT_LOCK) == 0 ||
-                                 strcmp(name, CS_OUT_JOURNAL) == 0))) {
+                   !(!rel[0] &&
+                     (strcmp(name, CS_OUT_MANIFEST) == 0 || strcmp(name, CS_OUT_LOCK) == 0 ||
+                      (strcmp(name, CS_OUT_JOURNAL) == 0 && strcmp(out->command, "sweep") == 0)))) {
             snprintf(found, found_size, "%s", sub);
             rc = 1;
         }
@@ -609,6 +653,20 @@ cs_status cs_out_subdir(cs_outdir *out, const char *subdir, cs_error *err) {
     return CS_OK;
 }
 
+/* Whether this run may put its file at DIR/name: nothing there, or the earlier run's file as written.
+ * CS_OK, or CS_ERR_IO with err filled (a folder there, or a file of the user's, which is kept). */
+static cs_status place_free(const cs_outdir *out, const char *name, cs_error *err) {
+    char final[PATH_SIZE], why[PATH_SIZE];
+    full_path(out, name, final, sizeof final);
+    struct stat st;
+    if (lstat(final, &st) != 0) return CS_OK;
+    if (S_ISDIR(st.st_mode)) return cs_error_set(err, CS_ERR_IO, "%s: %s", final, strerror(EISDIR));
+    if (listed(out, name)) return CS_OK;
+    return cs_error_set(err, CS_ERR_IO,
+                        "%s: a file is there which %s: it is kept; remove it or write elsewhere", final,
+                        not_ours(out, name, why, sizeof why));
+}
+
 /* A temporary beside DIR/name, open for writing (its descriptor), named into out. -1 with err filled. */
 static int begin(cs_outdir *out, const char *name, cs_error *err) {
     char final[PATH_SIZE];
@@ -621,17 +679,7 @@ static int begin(cs_outdir *out, const char *name, cs_error *err) {
         return -1;
     }
     full_path(out, name, final, sizeof final);
-    struct stat st;
-    if (lstat(final, &st) == 0 && S_ISDIR(st.st_mode)) {
-        cs_error_set(err, CS_ERR_IO, "%s: %s", final, strerror(EISDIR));
-        return -1;
-    }
-    if (lstat(final, &st) == 0 && !listed(out, name)) {
-        char why[PATH_SIZE];
-        cs_error_set(err, CS_ERR_IO, "%s: a file is there which %s: it is kept; remove it or write elsewhere",
-                     final, not_ours(out, name, why, sizeof why));
-        return -1;
-    }
+    if (place_free(out, name, err) != CS_OK) return -1;
     const char *slash = strrchr(name, '/');
     int head = slash ? (int)(slash - name + 1) : 0;
     char *rel = out->tmps[out->count];
@@ -784,8 +832,15 @@ static cs_status remove_earlier(const cs_outdir *out, const char *rel, cs_error 
 /* cs_out_commit once every file is on the disk: the manifests and the renames. */
 static cs_status put_in_place(cs_outdir *out, cs_error *err) {
     char tmp[PATH_SIZE], final[PATH_SIZE];
+    cs_status st = CS_OK;
+    /* the folder as it is now, not as cs_out_open found it: an earlier file edited during the run, or a
+     * file the user put where this run writes, is the user's */
+    for (int i = 0; i < out->prev_count; i++)
+        if (out->prev[i].ours == 1) out->prev[i].ours = as_written(out, &out->prev[i]);
+    for (int i = 0; st == CS_OK && i < out->count; i++)
+        st = place_free(out, out->names[i], err);
     /* the manifest first names both runs' files, so that every file cablesim put here stays its own */
-    cs_status st = write_manifest(out, 1, err);
+    if (st == CS_OK) st = write_manifest(out, 1, err);
     if (st != CS_OK) return st;
     int earlier = 0; /* the earlier run's files this run does not write: removed below */
     for (int i = 0; i < out->count; i++) {
@@ -809,8 +864,10 @@ static cs_status put_in_place(cs_outdir *out, cs_error *err) {
     /* the commit point: the manifest of this run's files alone (the first already is, when it named no
      * earlier file besides them) */
     if (earlier && (st = write_manifest(out, 0, err)) != CS_OK) return st;
-    full_path(out, CS_OUT_JOURNAL, tmp, sizeof tmp);
-    unlink(tmp); /* a journal's runs are in the outputs now */
+    if (out->journal >= 0) { /* this sweep's journal: its runs are in the outputs now */
+        full_path(out, CS_OUT_JOURNAL, tmp, sizeof tmp);
+        unlink(tmp);
+    }
     sync_folder(out, "", 0);
     for (int i = 0; i < out->count; i++) {
         const char *slash = strrchr(out->names[i], '/');

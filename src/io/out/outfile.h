@@ -11,9 +11,10 @@
  * none of them (nor writes over one).
  *
  * Each file is written to a unique temporary beside its name (mkstemp: ".cablesim-tmp.NAME.XXXXXX") and
- * flushed, its writing to the disk begun; cs_out_commit fsyncs them all, renames them into place, removes
- * the files of the earlier manifest that this run did not write, and writes the new manifest last, by a
- * temporary and a rename: the commit point (the manifest written before the renames is that one already
+ * flushed, its writing to the disk begun; cs_out_commit fsyncs them all, judges the folder again (a file
+ * edited during the run is the user's then; one where a file goes fails the commit), renames them into place,
+ * removes the files of the earlier manifest that this run did not write, and writes the new manifest last, by
+ * a temporary and a rename: the commit point (the manifest written before the renames is that one already
  * when the earlier manifest named no other file). cs_out_abort removes the temporaries (and the folders
  * cs_out_open made) so a failed run leaves nothing. Either releases the lock. A sweep's journal, beside them,
  * is below.
@@ -51,7 +52,8 @@ typedef struct cs_out_print {
 
 /* A line of the earlier manifest. ours 1: the file is as that run wrote it, or gone; 0: a file of that name
  * is there, changed since; -1: the line gives no size and hash (typed in); -2: another command wrote it (a
- * sweep's results, met by a run). A file not ours is kept: the user's, or another command's results. */
+ * sweep's results, met by a run), or one the manifest does not name (its "written by" line edited). A file
+ * not ours is kept: the user's, or another command's results. */
 typedef struct cs_out_listed {
     char name[128];
     cs_out_print print;
@@ -72,7 +74,7 @@ typedef struct cs_outdir {
     int subdir_count;
     int flags;             /* CS_OUT_FORCE */
     char command[16];      /* the command writing ("run", "sweep", ...): the manifest's "written by" */
-    char prev_command[16]; /* the earlier manifest's; "" if it names none */
+    char prev_command[16]; /* the earlier manifest's; "" if it names none, or two (another's results) */
     char aside[48]; /* the temporary of the manifest or the journal being written, relative to dir; "" */
     int lock;       /* the lock's file descriptor, -1 when not held */
     int journal;    /* the journal's, open for appending; -1: none */
@@ -109,16 +111,16 @@ cs_status cs_out_finish(cs_outdir *out, FILE *f, cs_status status, cs_error *err
  * disk. Each returns CS_OK, or a failure's status with err filled. */
 cs_status cs_out_begin_path(cs_outdir *out, const char *name, char *path, size_t path_size, cs_error *err);
 cs_status cs_out_end_path(cs_outdir *out, cs_error *err);
-/* Fsync every temporary, rename each to its name, remove the files of the earlier manifest that this run
- * did not write (and a subfolder they leave empty), write the manifest, release the lock. Returns CS_OK, or
- * CS_ERR_IO with err filled (then call cs_out_abort). */
+/* Fsync every temporary, judge the earlier files again (as cs_out_open did), rename each to its name, remove
+ * the files of the earlier manifest that this run did not write (and a subfolder they leave empty), write the
+ * manifest, release the lock. Returns CS_OK, or CS_ERR_IO with err filled (then call cs_out_abort). */
 cs_status cs_out_commit(cs_outdir *out, cs_error *err);
 /* A journal in the folder (DIR/.cablesim-journal, a sweep's: each run's result as it finishes), which
- * outlives a kill -9, a power cut or a failed write of the outputs, and which cs_out_commit removes (the
- * outputs hold it all then). cs_out_journal_start writes its first text through a temporary, fsync and
- * rename (it replaces an earlier journal whole or not at all) and keeps it open; cs_out_journal_add
- * appends text and fsyncs. Each returns CS_OK, or CS_ERR_IO with err filled ("DIR/.cablesim-journal: No
- * space left on device"). */
+ * outlives a kill -9, a power cut or a failed write of the outputs, and which the commit of the sweep that
+ * keeps it removes (the outputs hold it all then); to another command it is another command's results.
+ * cs_out_journal_start writes its first text through a temporary, fsync and rename (it replaces an earlier
+ * journal whole or not at all) and keeps it open; cs_out_journal_add appends text and fsyncs. Each returns
+ * CS_OK, or CS_ERR_IO with err filled ("DIR/.cablesim-journal: No space left on device"). */
 cs_status cs_out_journal_start(cs_outdir *out, const char *text, size_t len, cs_error *err);
 cs_status cs_out_journal_add(cs_outdir *out, const char *text, size_t len, cs_error *err);
 /* The journal of the folder dir up to its last whole line (a line cut by a kill is dropped), malloc'ed and
