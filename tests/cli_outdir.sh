@@ -74,7 +74,9 @@ mv "$tmp/events.before" "$own/events.csv"
 # the run is the user's then, kept; one this run would replace fails the commit, nothing written.
 ed="$tmp/edited"
 "$cs" run examples/aps3.yaml -o "$ed" --t-end "10 ms" --plots >/dev/null 2>&1
-# edit_during EDIT: a run of a few seconds into $ed, EDIT run once it holds the folder; its status
+# edit_during EDIT: a run of a few seconds into $ed, EDIT run once it holds the folder and has judged it
+# (the lock is taken just before the judging, which takes milliseconds; the run's steps take over 2 s);
+# its status
 edit_during() {
     "$cs" run examples/aps3.yaml -o "$ed" --t-end "20 ms" --dt "0.0005 ms" >"$tmp/ed.out" 2>&1 &
     local pid=$!
@@ -82,6 +84,7 @@ edit_during() {
         [ -e "$ed/.cablesim-lock" ] && break
         sleep 0.01
     done
+    sleep 0.5
     eval "$1"
     wait "$pid"
 }
