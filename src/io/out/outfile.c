@@ -586,7 +586,7 @@ static cs_status check_contents(cs_outdir *out, cs_error *err) {
     return rc == 0 ? CS_OK : CS_ERR_IO;
 }
 
-/* cs_out_open with signals held: its folders made and its lock taken are known to the handler at once. */
+/* cs_out_open's folders made and lock taken, with signals held: both are known to the handler at once. */
 static cs_status open_held(cs_outdir *out, const char *dir, cs_error *err) {
     snprintf(out->dir, sizeof out->dir, "%s", dir);
     enlist(out);
@@ -610,8 +610,6 @@ static cs_status open_held(cs_outdir *out, const char *dir, cs_error *err) {
         return cs_error_set(err, CS_ERR_IO, "%s: %s", dir, strerror(found ? ENOTDIR : errno));
     }
     cs_status status = take_lock(out, err);
-    if (status == CS_OK) status = read_manifest(out, err);
-    if (status == CS_OK) status = check_contents(out, err);
     if (status != CS_OK) cs_out_abort(out);
     return status;
 }
@@ -631,6 +629,11 @@ cs_status cs_out_open(cs_outdir *out, const char *dir, const char *command, int 
     hold_signals(&old);
     cs_status status = open_held(out, dir, err);
     let_signals(&old);
+    /* the manifest's files read and hashed with signals let through: a Ctrl-C is taken at once, and the
+     * handler finds the folders made and the lock, all it removes */
+    if (status == CS_OK) status = read_manifest(out, err);
+    if (status == CS_OK) status = check_contents(out, err);
+    if (status != CS_OK && out->lock >= 0) cs_out_abort(out);
     return status;
 }
 
