@@ -274,11 +274,19 @@ static void struck_post_in_soil_turns_about_two_thirds_depth(void **state) {
     cs_model_free(m);
 }
 
-/* The same post with no pullout capacity given: it is held by its skin friction, Q = q pi B D^2 / 2.
- * Pushed over at the face's bottom edge with M_cap / ((h + 2D/3) cos theta), the pull along it is
- * push sin theta = P tan theta on the plateau, so it pulls out at tan theta = Q / P: q is set for
- * theta = 30 deg. The soil's work up to then is M_cap (theta - M_cap / k). */
-static void struck_post_pulls_out_at_its_skin_friction(void **state) {
+/* A struck post in soil whose skin friction Q is set so that it starts to slide out at theta = 30 deg:
+ * the horizontal push along the post, P tan(theta) on the plateau, reaches Q there, and up to then the
+ * soil's work is M_cap (theta - M_cap / k). From there the face drags it out: at each step the push's
+ * pull along it balances what the shaft holds, M(x) tan(theta) / (lever + w) = Q x^2 with x = 1 - w / D
+ * and M(x) the footing's capacity falling by Eq. 21's P(x) / P(1), and it carries its load on through the
+ * onset (no drop). At 45 degrees the face rides over it, slid out by the w that balances there. */
+static double slid_footing_moment(const cs_post_model *pm, double x) {
+    double d = pm->embedment, h = pm->load_height, cd = pm->footing.coeff_depth,
+           ch = pm->footing.coeff_height;
+    return pm->moment_cap * x * x * (cd * d + ch * h) / (cd * x * d + ch * (h + (1.0 - x) * d));
+}
+
+static void struck_post_slides_out_at_its_skin_friction(void **state) {
     (void)state;
     cs_post_def post = driven_w6x16();
     double d = 1.016, b = 4.03 * IN, h = 24.0 * IN, theta = 30.0 * M_PI_2_VALUE / 90.0;
@@ -288,13 +296,47 @@ static void struck_post_pulls_out_at_its_skin_friction(void **state) {
     double p = 2.775 * 8000 * PSF * b * d * d / (2.37 * d + 2.64 * h);
     post.footing.pullout_capacity = 0.0; /* omitted: skin friction */
     post.footing.skin_friction = p * tan(theta) / (M_PI_2_VALUE * b * d * d);
-    cs_state *s;
-    cs_model *m = strike_one_post_until(&post, &s, &h, CS_POST_FAILED_PULLOUT);
+    cs_model *m = one_post_model(&post, &h);
     const cs_post_model *pm = &m->posts[0];
     CHECK_REL(pm->pullout_cap, p * tan(theta), 1e-12);
-    double t = hypot(s->posts[0].tilt[0], s->posts[0].tilt[1]);
-    CHECK_ABS(t, theta, 0.01); /* reached within a step (5 m/s x 0.5 ms over a 1.2-m lever) */
-    CHECK_REL(s->e_soil, pm->moment_cap * (t - pm->moment_cap / pm->k_rot), 1e-6);
+    assert_true(pm->soil_yields);
+    cs_error err;
+    cs_state *s = cs_state_create(m, &err);
+    const cs_post_state *ps = &s->posts[0];
+    double onset = NAN, push_before = 0.0, soil_before = 0.0;
+    int sliding_steps = 0;
+    while (ps->status != CS_POST_FAILED_ROTATION && ps->status != CS_POST_FAILED_PULLOUT) {
+        int was = ps->withdrawing;
+        double push = ps->push;
+        assert_int_equal(cs_step(m, s, &err), CS_OK);
+        assert_true(s->t < 1.0);
+        if (!was && ps->withdrawing) {
+            onset = hypot(ps->tilt[0], ps->tilt[1]), push_before = push, soil_before = s->e_soil;
+            continue;
+        }
+        if (!ps->withdrawing || ps->status != CS_POST_SOIL) continue;
+        double t = hypot(ps->tilt[0], ps->tilt[1]), x = 1.0 - ps->pull / pm->embedment;
+        double held = pm->pullout_cap * x * x, pull = ps->push * sin(t);
+        CHECK_REL(pull, held, 1e-9);
+        CHECK_REL(hypot(ps->moment[0], ps->moment[1]), slid_footing_moment(pm, x), 1e-9);
+        assert_true(ps->push >= push - 0.02 * push_before); /* it carries its load on: no drop */
+        sliding_steps++;
+    }
+    CHECK_ABS(onset, theta, 0.01); /* reached within a step (5 m/s x 0.5 ms over a 1.2-m lever) */
+    CHECK_REL(soil_before, pm->moment_cap * (onset - pm->moment_cap / pm->k_rot), 1e-6);
+    assert_true(sliding_steps > 50);
+    assert_int_equal(ps->status, CS_POST_FAILED_ROTATION);
+    /* the slide that balances at the rotation limit, by bisection on the closed form */
+    double lo = 0.0, hi = pm->embedment;
+    for (int k = 0; k < 100; k++) {
+        double w = 0.5 * (lo + hi), x = 1.0 - w / pm->embedment;
+        if (slid_footing_moment(pm, x) * tan(pm->rot_limit) / (ps->lever + w) > pm->pullout_cap * x * x)
+            lo = w;
+        else
+            hi = w;
+    }
+    CHECK_ABS(ps->pull, lo, 0.01); /* the limit is reached within a step */
+    assert_true(lo > 0.3 && lo < pm->embedment);
     cs_state_free(s);
     cs_model_free(m);
 }
@@ -499,7 +541,7 @@ int main(void) {
         cmocka_unit_test(shear_failure_onset),
         cmocka_unit_test(struck_post_absorbs_capacity_times_rotation),
         cmocka_unit_test(struck_post_in_soil_turns_about_two_thirds_depth),
-        cmocka_unit_test(struck_post_pulls_out_at_its_skin_friction),
+        cmocka_unit_test(struck_post_slides_out_at_its_skin_friction),
         cmocka_unit_test(struck_post_takes_the_work_the_face_does),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

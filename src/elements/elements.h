@@ -166,6 +166,14 @@ void cs_post_pull_commit(const cs_model *model, cs_state *s, int p);
  */
 double cs_post_pull_energy(const cs_model *model, const cs_state *s, int p);
 double cs_post_pull_kinetic_energy(const cs_model *model, const cs_state *s, int p);
+/* A struck post dragged out by the edge that pushes it: rigid-plastic, its slide w all plastic. Set its
+ * slide; the shaft's capacity at a slide, N; start the slide; take over a slide its ropes started (before
+ * it is captured); book the slide's work at the end of a step. */
+void cs_post_struck_slide_set(const cs_post_model *pm, cs_post_state *ps, double w);
+double cs_post_struck_slide_cap(const cs_post_model *pm, double w);
+void cs_post_struck_slide_start(const cs_model *model, cs_state *s, int p);
+void cs_post_struck_slide_take(const cs_model *model, cs_state *s, int p);
+void cs_post_struck_slide_commit(const cs_model *model, cs_state *s, int p);
 
 /* ---- attachments (attachment.c) ---- */
 /* The cosine of the lean at which a cable held at height z reaches the open end of post pm's slot. */

@@ -217,6 +217,7 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
          * the post, out of the ground: what pulls a short post out (its skin friction grows as D^2,
          * its lateral capacity more slowly) */
         ps->shear = ps->push, ps->axial = ps->push * sin(v2_norm(ps->tilt[0], ps->tilt[1]));
+        cs_post_struck_slide_commit(model, s, p);
         return;
     }
     cs_post_pull_commit(model, s, p);
@@ -246,14 +247,17 @@ int cs_post_check_failure(const cs_model *model, cs_state *s, int p) {
         st = CS_POST_FAILED_ROTATION, ev = CS_EVENT_POST_ROTATION_LIMIT, value = tilt;
     } else if (ps->shear >= pm->shear_cap) {
         st = CS_POST_FAILED_SHEAR, ev = CS_EVENT_POST_SHEAR, value = ps->shear;
-    } else if ((ps->captured && ps->axial >= cap) || (ps->withdrawing && !(cap > 0.0))) {
+    } else if (ps->withdrawing && !(cap > 0.0)) {
         st = CS_POST_FAILED_PULLOUT, ev = CS_EVENT_POST_PULLOUT, value = ps->axial;
     } else {
         if (ps->status != CS_POST_DOWN && tilt >= cs_post_fold_limit(pm, ps)) {
             ps->status = CS_POST_DOWN;
             cs_event_add(model, s, CS_EVENT_POST_DOWN, CS_ELEMENT_POST, p, tilt);
         }
-        cs_post_pull_start(model, s, p);
+        if (ps->captured && !ps->withdrawing && ps->axial >= cap)
+            cs_post_struck_slide_start(model, s, p); /* dragged out by the edge from here */
+        else
+            cs_post_pull_start(model, s, p);
         return 0;
     }
     ps->status = st;
@@ -342,23 +346,66 @@ static void edge_point(const cs_model *model, int p, int pusher, const double *p
     v3_add(pt, pt, pos);
 }
 
-/* Where a captured post leans with the vehicle at a pose: the pushing edge's point in line with it is
- * a distance d past the base along f, and the post turns about its pivot through the point it was
- * struck at, ps->lever along it: sin(theta) = (d + reach) / lever, reach set at the strike so that the
- * post goes on from where it stood (theta < 0: it leaned toward the edge when struck). The tilt is theta
- * along f and the permanent set across it (the edge pushes along f only, so it turns no tilt across).
- * Returns theta; f gets the direction. */
-static double captured_lean(const cs_model *model, const cs_post_state *ps, int p, const double *pos,
-                            const double *quat, double crush, double *tilt, double *f) {
-    double pt[3], rel[3], base[3] = {model->posts[p].x, 0.0, 0.0};
-    edge_point(model, p, ps->pusher, pos, quat, crush, pt, f);
-    v3_sub(rel, pt, base);
-    double sn = (v3_dot(rel, f) + ps->reach) / ps->lever;
+/* A struck post's lean for an edge at dr (its reach added) and a slide w: the struck point, ps->lever + w
+ * from the pivot (the slide carries it out along the post), is where the edge is: sin(theta) = dr /
+ * (lever + w). The tilt is theta along f and the permanent set across it (the edge pushes along f only, so
+ * it turns no tilt across). Returns theta. */
+static double lean_at(const cs_post_state *ps, double dr, double w, const double *f, double *tilt) {
+    double sn = dr / (ps->lever + w);
     sn = sn < -0.999 ? -0.999 : (sn > 0.999 ? 0.999 : sn);
     double th = asin(sn), along = ps->plastic[0] * f[0] + ps->plastic[1] * f[1];
     tilt[0] = ps->plastic[0] + (th - along) * f[0];
     tilt[1] = ps->plastic[1] + (th - along) * f[1];
     return th;
+}
+
+/* The slide-out balance of a struck post at a slide w, over the shaft's share x^2 (x = 1 - w / D) so that
+ * it stays finite as x goes to 0: the push's pull along the post, M tan(theta) / (lever + w) with M its
+ * moment along f (the footing's capacity at w), less what the shaft holds, Q0. */
+static double slide_balance(const cs_post_model *pm, const cs_post_state *ps, double dr, double w,
+                            const double *f) {
+    cs_post_state at = *ps;
+    double tilt[2], q[2], x = 1.0 - w / pm->embedment;
+    cs_post_struck_slide_set(pm, &at, w);
+    double th = lean_at(ps, dr, w, f, tilt);
+    cs_post_resistance(pm, &at, tilt, q);
+    return (q[0] * f[0] + q[1] * f[1]) * tan(th) / ((ps->lever + w) * x * x) - pm->pullout_cap;
+}
+
+/* How far a struck post sliding out has come with the edge at dr: at least the slide of the last commit
+ * (it does not go back), and beyond it where the push's pull along the post still exceeds what the shaft
+ * holds there, to where they balance. The balance falls as w grows (the shaft and the footing's moment
+ * both fall about as x^2, and the lever grows while theta falls: docs/theory.md), so bisection finds that
+ * point to round-off; where the pull exceeds the shaft's hold all the way, the post is out (w = D). */
+static double struck_slide(const cs_post_model *pm, const cs_post_state *ps, double dr, const double *f) {
+    double lo = ps->pull_commit, hi = pm->embedment * (1.0 - 1e-12);
+    if (!(slide_balance(pm, ps, dr, lo, f) > 0.0)) return lo;
+    if (slide_balance(pm, ps, dr, hi, f) > 0.0) return pm->embedment;
+    for (int k = 0; k < 200 && hi - lo > 1e-15 * pm->embedment; k++) {
+        double mid = 0.5 * (lo + hi);
+        if (slide_balance(pm, ps, dr, mid, f) > 0.0)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
+/* Where a captured post leans with the vehicle at a pose: the pushing edge's point in line with it is
+ * a distance d past the base along f, and the post turns about its pivot through the point it was
+ * struck at: sin(theta) = (d + reach) / (lever + w), reach set at the strike so that the post goes on
+ * from where it stood (theta < 0: it leaned toward the edge when struck), w its slide out of the footing
+ * (struck_slide; the slide at the last commit unless it is sliding out). Returns theta; f gets the
+ * direction, slide (if not NULL) the slide. */
+static double captured_lean(const cs_model *model, const cs_post_state *ps, int p, const double *pos,
+                            const double *quat, double crush, double *tilt, double *f, double *slide) {
+    double pt[3], rel[3], base[3] = {model->posts[p].x, 0.0, 0.0};
+    edge_point(model, p, ps->pusher, pos, quat, crush, pt, f);
+    v3_sub(rel, pt, base);
+    double dr = v3_dot(rel, f) + ps->reach;
+    double w = ps->withdrawing ? struck_slide(&model->posts[p], ps, dr, f) : ps->pull;
+    if (slide) *slide = w;
+    return lean_at(ps, dr, w, f, tilt);
 }
 
 /* Place every captured post for a crush; returns the sum of their pushes along the vehicle's heading
@@ -368,8 +415,9 @@ double cs_post_place_captured(const cs_model *model, cs_state *s, double crush) 
     for (int p = 0; p < model->post_count; p++) {
         cs_post_state *ps = &s->posts[p];
         if (!ps->captured || !cs_post_in_barrier(ps)) continue;
-        double q[2], f[3];
-        double th = captured_lean(model, ps, p, s->pos, s->quat, crush, ps->tilt, f);
+        double q[2], f[3], w;
+        double th = captured_lean(model, ps, p, s->pos, s->quat, crush, ps->tilt, f, &w);
+        if (ps->withdrawing) cs_post_struck_slide_set(&model->posts[p], ps, w);
         cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
         double m = q[0] * f[0] + q[1] * f[1];
         ps->bearing = m >= 0.0;
@@ -378,14 +426,15 @@ double cs_post_place_captured(const cs_model *model, cs_state *s, double crush) 
             ps->push = 0.0;
             continue;
         }
-        ps->push = m / (ps->lever * cos(th));
+        ps->push = m / ((ps->lever + ps->pull) * cos(th));
         if (ps->pusher == CS_PUSH_FACE) total += ps->push;
     }
     return total;
 }
 
 /* The captured posts' resistance (as placed for this crush) on the vehicle, added to force and moment:
- * the gradient of the work Q . dtilt with respect to the vehicle's pose (central differences, 1e-6 m
+ * the gradient of the work Q . dtilt + R dw (R the shaft's hold as a post slides out) with respect to the
+ * vehicle's pose (central differences, 1e-6 m
  * and 1e-6 rad), so that the vehicle's work is exactly what the posts store and dissipate however the
  * face moves (pushing on, coming down, rolling, sliding along its edge). */
 void cs_post_captured_force(const cs_model *model, const cs_state *s, double crush, int face_only,
@@ -394,27 +443,28 @@ void cs_post_captured_force(const cs_model *model, const cs_state *s, double cru
         const cs_post_state *ps = &s->posts[p];
         if (!ps->captured || !cs_post_in_barrier(ps) || !(ps->push > 0.0)) continue;
         if (face_only && ps->pusher != CS_PUSH_FACE) continue;
-        double q[2];
+        double q[2], hold = ps->withdrawing ? cs_post_struck_slide_cap(&model->posts[p], ps->pull) : 0.0;
         cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
         const double h = 1e-6;
         for (int k = 0; k < 6; k++) {
-            double tp[2], tm[2], qp[4], qm[4], pos[3], turn[3] = {0.0, 0.0, 0.0}, w[3], fk[3];
+            double tp[2], tm[2], qp[4], qm[4], pos[3], turn[3] = {0.0, 0.0, 0.0}, w[3], fk[3], sp = 0.0,
+                                                       sm = 0.0;
             memcpy(qp, s->quat, sizeof qp), memcpy(qm, s->quat, sizeof qm);
             v3_copy(pos, s->pos);
             if (k < 3) {
                 pos[k] += h;
-                captured_lean(model, ps, p, pos, s->quat, crush, tp, fk);
+                captured_lean(model, ps, p, pos, s->quat, crush, tp, fk, &sp);
                 pos[k] -= 2.0 * h;
-                captured_lean(model, ps, p, pos, s->quat, crush, tm, fk);
+                captured_lean(model, ps, p, pos, s->quat, crush, tm, fk, &sm);
             } else { /* a turn about world axis k - 3, applied in the body frame */
                 turn[k - 3] = 1.0;
                 quat_unrotate(w, s->quat, turn);
                 quat_integrate(qp, w, h);
                 quat_integrate(qm, w, -h);
-                captured_lean(model, ps, p, pos, qp, crush, tp, fk);
-                captured_lean(model, ps, p, pos, qm, crush, tm, fk);
+                captured_lean(model, ps, p, pos, qp, crush, tp, fk, &sp);
+                captured_lean(model, ps, p, pos, qm, crush, tm, fk, &sm);
             }
-            double g = -(q[0] * (tp[0] - tm[0]) + q[1] * (tp[1] - tm[1])) / (2.0 * h);
+            double g = -(q[0] * (tp[0] - tm[0]) + q[1] * (tp[1] - tm[1]) + hold * (sp - sm)) / (2.0 * h);
             if (k < 3)
                 force[k] += g;
             else
@@ -426,15 +476,17 @@ void cs_post_captured_force(const cs_model *model, const cs_state *s, double cru
 /* Post p struck by `pusher`: off the cable paths, its lever where the edge strikes it. */
 static void capture(const cs_model *model, cs_state *s, int p, int pusher) {
     cs_post_state *ps = &s->posts[p];
+    cs_post_struck_slide_take(model, s, p);
     ps->captured = 1;
     ps->bearing = 1;
     ps->pusher = pusher;
     double pt[3], f[3];
     edge_point(model, p, pusher, s->pos, s->quat, s->crush, pt, f);
-    ps->lever = (pt[2] > 0.05 ? pt[2] : 0.05) + model->posts[p].pivot;
+    /* lever + pull is the struck point's distance from the pivot, as the post slides out */
+    ps->lever = (pt[2] > 0.05 ? pt[2] : 0.05) + model->posts[p].pivot - ps->pull;
     double rel[3], base[3] = {model->posts[p].x, 0.0, 0.0}, lean = ps->tilt[0] * f[0] + ps->tilt[1] * f[1];
     v3_sub(rel, pt, base);
-    ps->reach = ps->lever * sin(lean) - v3_dot(rel, f);
+    ps->reach = (ps->lever + ps->pull) * sin(lean) - v3_dot(rel, f);
     if (!s->contact_started) {
         s->contact_started = 1;
         s->summary.first_contact_time_s = s->t;

@@ -73,6 +73,7 @@ typedef struct cs_validate_result {
     int post_failure;       /* the first post failure's event type, -1 if none */
     int released;           /* cables let go by their posts (cable_release, cable_pulled_off events) */
     double post_failure_t;  /* its time, s */
+    double post_slide;      /* how far the post that failed first had slid out of its footing, m (0: none) */
     char how[2][48];        /* each rope: where and when it broke, or that it held with its peak */
     double slide[2];        /* each dead-man's plough through the soil, m (-1: rigid) */
     double contact_pen;     /* the face's penetration at the first output with a force on it, m (NAN: none) */

@@ -160,9 +160,13 @@ void cs_validate_write_bogie(FILE *md, FILE *csv, cs_validate_suite *s) {
         md,
         "## Bogie tests of %s posts in soil (paper, Table 2)\n\nThe %.0f-lb bogie strikes the post at "
         "%g in; the post rotates in the soil at %.4g x Eq. 21 (S1 = %.0f psf, B = the %.3g-in flange; "
-        "%.4g the soil's dynamic factor) or hinges at Mp, and fails at 45 degrees, or pulls out earlier when "
+        "%.4g the soil's dynamic factor) or hinges at Mp, until the head rides over it at 45 degrees. Once "
         "the pull along the leaning post (push x sin(tilt)) reaches its skin friction q pi B D^2 / 2 "
-        "(q = %.4g kPa/m). Energy absorbed = the bogie's loss of kinetic energy.\n\n"
+        "(q = %.4g kPa/m) the head drags it out of the soil as it turns on, the shaft and the footing "
+        "holding less as it comes out: the tests' \"rotated, then pulled out\" is a post that had begun to "
+        "come out when it failed (how far is in the last column; the tests' posts came all the way out, "
+        "after the model's account ends at 45 degrees). Energy absorbed = the bogie's loss of kinetic "
+        "energy.\n\n"
         "**Calibration.** The dynamic factor and q are the model's two values fitted to these tests, "
         "on the odd ones (NPGB-1, 3, 5, 7, 9) only: the factor by least squares on log energy, q at the "
         "middle of the window that separates their modes; the even tests (NPGB-2, 4, 6, 8, 10) are the "
@@ -182,12 +186,19 @@ void cs_validate_write_bogie(FILE *md, FILE *csv, cs_validate_suite *s) {
         const cs_validate_result *r = &s->jobs[s->bogie[i]].r;
         if (!r->ok) continue;
         double e = r->absorbed / CS_FT_LBF, err = cs_validate_rel_err(e, t->energy_ftlb);
-        const char *mode = r->post_failure == CS_EVENT_POST_PULLOUT          ? "pulled out"
-                           : r->post_failure == CS_EVENT_POST_ROTATION_LIMIT ? "rotation (45 deg)"
-                           : r->post_failure == CS_EVENT_POST_SHEAR          ? "shear"
-                                                                             : "none (post stood)";
-        int mode_ok = t->pullout ? r->post_failure == CS_EVENT_POST_PULLOUT
-                                 : r->post_failure == CS_EVENT_POST_ROTATION_LIMIT;
+        /* the tests' "rotated, then pulled out": the post had begun to slide out of the soil when it failed
+         */
+        int rotated = r->post_failure == CS_EVENT_POST_ROTATION_LIMIT,
+            pulled = r->post_failure == CS_EVENT_POST_PULLOUT || (rotated && r->post_slide > 0.0);
+        char mode[64];
+        snprintf(mode, sizeof mode, "%s",
+                 r->post_failure == CS_EVENT_POST_PULLOUT ? "pulled out"
+                 : r->post_failure == CS_EVENT_POST_SHEAR ? "shear"
+                 : !rotated                               ? "none (post stood)"
+                                                          : "rotation (45 deg)");
+        if (rotated && pulled)
+            snprintf(mode, sizeof mode, "rotated, then pulled out %.0f mm (45 deg)", r->post_slide * 1e3);
+        int mode_ok = t->pullout ? pulled : rotated && !pulled;
         good += mode_ok && fabs(err) <= 20.0;
         good_even += mode_ok && fabs(err) <= 20.0 && i % 2 == 1; /* NPGB-2, 4, ...: the check half */
         double travel = (r->failure_pen - r->contact_pen) * 1e3; /* NAN: no failure */

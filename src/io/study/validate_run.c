@@ -47,14 +47,18 @@ static void collect(const cs_model *m, const cs_state *s, cs_validate_result *r)
                  c < r->sm.cable_count ? r->sm.cables[c].peak_tension_n / 1e3 : 0.0);
     r->cable_break[0] = r->cable_break[1] = -1.0;
     r->post_failure = -1;
+    r->post_slide = 0.0;
     r->released = 0;
     for (int i = 0; i < cs_state_event_count(s); i++) {
         cs_event e_held = {.size = sizeof e_held};
         cs_state_event(s, i, &e_held, NULL);
         const cs_event *e = &e_held;
         r->released += e->type == CS_EVENT_CABLE_RELEASE || e->type == CS_EVENT_CABLE_PULLED_OFF;
-        if (r->post_failure < 0 && post_failure(e->type))
+        if (r->post_failure < 0 && post_failure(e->type)) {
             r->post_failure = (int)e->type, r->post_failure_t = e->t;
+            cs_post_view pv = {.size = sizeof pv};
+            r->post_slide = cs_state_post(m, s, e->element, &pv, NULL) == CS_OK ? pv.withdrawal : 0.0;
+        }
         if ((e->type == CS_EVENT_CABLE_BREAK || e->type == CS_EVENT_TERMINATION_BREAK) && e->element < 2 &&
             r->cable_break[e->element] < 0.0) {
             r->cable_break[e->element] = e->t;
