@@ -24,27 +24,27 @@ static void soil_pressure_is_capped(void **state) {
 }
 
 /* Under impact the soil resists f_d R(b/D) / R(b_ref/D_ref) times Eq. 21, R the passive wedge's
- * three-dimensional factor of a block at grade (Ovesen, Brinch Hansen), f_d = 2.775 for the bogie tests'
+ * three-dimensional factor of a block at grade (Ovesen, Brinch Hansen), f_d = 2.740 for the bogie tests'
  * post (4.03 in, 40 in). Worked by hand at phi = 42 deg: Kp = tan^2(66 deg) = 5.04468, Ka = tan^2(24
  * deg) = 0.198229, (Kp - Ka)^0.67 = 2.87895; R = 1 + 2.87895 x 1.6 / (1 + 5 b / D): 4.06322 for the bogie
  * post (b/D = 0.10075), 2.15158 for a 3 x 5 ft footing (b/D = 0.6), 1.41876 for an 8-ft wide, 4-ft deep
- * block (b/D = 2). So the bogie post keeps 2.775, the 3 x 5 ft footing 1.4694 and the block 0.9690 of
- * Eq. 21; with width_scaling none, every member keeps 2.775. */
+ * block (b/D = 2). So the bogie post keeps 2.740, the 3 x 5 ft footing 1.4509 and the block 0.9568 of
+ * Eq. 21; with width_scaling none, every member keeps 2.740. */
 static void impact_capacity_scales_with_the_wedge(void **state) {
     (void)state;
     cs_footing_def f = fixture_footing(4.03 / 12.0, 40.0 / 12.0, 20.0);
-    CHECK_REL(f.dynamic_factor, 2.775, 1e-15);
+    CHECK_REL(f.dynamic_factor, 2.740, 1e-15);
     CHECK_REL(f.friction_angle, 42.0 * M_PI_2_VALUE / 90.0, 1e-15);
     CHECK_REL(cs_footing_wedge_factor(f.friction_angle, 4.03 * IN, 40.0 * IN), 4.063222, 1e-6);
-    CHECK_REL(cs_footing_dynamic_factor(&f), 2.775, 1e-12);
+    CHECK_REL(cs_footing_dynamic_factor(&f), 2.740, 1e-12);
     const double b_ft[] = {3.0, 8.0}, d_ft[] = {5.0, 4.0}, r[] = {2.151580, 1.418756};
     for (int i = 0; i < 2; i++) {
         cs_footing_def g = fixture_footing(b_ft[i], d_ft[i], 20.0);
         CHECK_REL(cs_footing_wedge_factor(g.friction_angle, g.diameter, g.depth), r[i], 1e-6);
-        CHECK_REL(cs_footing_impact_capacity(&g, 0.0), 2.775 * r[i] / 4.063222 * cs_footing_capacity(&g, 0.0),
+        CHECK_REL(cs_footing_impact_capacity(&g, 0.0), 2.740 * r[i] / 4.063222 * cs_footing_capacity(&g, 0.0),
                   5e-6);
         g.width_scaling = CS_WIDTH_NONE;
-        CHECK_REL(cs_footing_impact_capacity(&g, 0.0), 2.775 * cs_footing_capacity(&g, 0.0), 1e-12);
+        CHECK_REL(cs_footing_impact_capacity(&g, 0.0), 2.740 * cs_footing_capacity(&g, 0.0), 1e-12);
     }
     /* Eq. 21 at the rope's height H = 0: S1 B D / 2.37; the 3 x 5 ft dead-man holds 50,633 lb statically */
     cs_footing_def g = fixture_footing(3.0, 5.0, 20.0);

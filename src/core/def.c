@@ -11,10 +11,10 @@
  * bogie tests (NPGB-1, 3, 5, 7, 9), checked on the even ones. CS_SOIL_* may be set when building, for
  * a calibration study. */
 #ifndef CS_SOIL_DYNAMIC_FACTOR
-#define CS_SOIL_DYNAMIC_FACTOR 2.775
+#define CS_SOIL_DYNAMIC_FACTOR 2.740
 #endif
 #ifndef CS_SOIL_SKIN_FRICTION
-#define CS_SOIL_SKIN_FRICTION 180.0e3 /* Pa/m */
+#define CS_SOIL_SKIN_FRICTION 177.5e3 /* Pa/m */
 #endif
 
 cs_rope_def cs_default_rope_def(void) {
