@@ -171,7 +171,7 @@ void cs_validate_write_bogie(FILE *md, FILE *csv, cs_validate_suite *s) {
         "on the odd ones (NPGB-1, 3, 5, 7, 9) only: the factor by least squares on log energy, q at the "
         "middle of the window that separates their modes; the even tests (NPGB-2, 4, 6, 8, 10) are the "
         "check. "
-        "The mode window is narrow (q within about +-2.5%%): the lateral capacity grows nearly as fast with "
+        "The mode window is narrow (q within about +-1.3%%): the lateral capacity grows nearly as fast with "
         "D as the skin friction (docs/theory.md).\n\n",
         rig->section, rig->mass_lb, rig->head_height_in, soil.dynamic_factor, rig->soil_psf, rig->flange_in,
         soil.dynamic_factor, soil.skin_friction / 1e3);
