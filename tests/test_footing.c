@@ -28,7 +28,7 @@ static void soil_pressure_is_capped(void **state) {
  * post (4.03 in, 40 in). Worked by hand at phi = 42 deg: Kp = tan^2(66 deg) = 5.04468, Ka = tan^2(24
  * deg) = 0.198229, (Kp - Ka)^0.67 = 2.87895; R = 1 + 2.87895 x 1.6 / (1 + 5 b / D): 4.06322 for the bogie
  * post (b/D = 0.10075), 2.15158 for a 3 x 5 ft footing (b/D = 0.6), 1.41876 for an 8-ft wide, 4-ft deep
- * block (b/D = 2). So the bogie post keeps 2.740, the 3 x 5 ft footing 1.4509 and the block 0.9568 of
+ * block (b/D = 2). So the bogie post keeps 2.740, the 3 x 5 ft footing 1.4509 and the block 0.9567 of
  * Eq. 21; with width_scaling none, every member keeps 2.740. */
 static void impact_capacity_scales_with_the_wedge(void **state) {
     (void)state;
