@@ -125,7 +125,7 @@ static double largest_tension(const cs_cable_state *cs) {
 /* docs/theory.md, "Two ropes on one dead-man": APS3's upper rope, tied at grade to the lower one's dead-man
  * and raised over the same end post to 4 ft, holds 0.279 m more rope than the lower (its steeper ramps, by
  * hand), worth 738 kN of the lower's tension over the barrier's EA / L. The dead-men, which both ropes pull,
- * plough at 188.6 kN, so the lower can never stretch that far: at the peak deflection the upper hangs slack,
+ * plough at 189.3 kN, so the lower can never stretch that far: at the peak deflection the upper hangs slack,
  * at its sag tension. By hand with every post down (the ropes straight from the dead-men to the face) the
  * ratio is 0.024, over the lower's 150-450 kN 0.013-0.03; with the line posts leaning at the peak each span
  * sags over 2.4 m instead of 19.8 m and the ratio is lower still ("(c) With the posts leaning"). The run
