@@ -8,12 +8,12 @@
  * a plain build (CMakeLists.txt), where it takes about 1.5 s of CPU.
  *
  * slow-fallback-ced48187 (input `4d c9`): 1 rope of 1.09 in, 7 posts at 11.1 ft, 4 rails, a 5,958-lb vehicle
- * at 26.3 mph and 88 deg. From 0.1205 s every solve fails to Newton and goes through the fallback's sweeps
- * and a try at a fall, and steps are cut into 8ths and 64ths: about 5,200 passes over its 26 unknowns a
- * solve, 75,000 a step, where a run's median is 2 a step. Bounded by its solves, it runs to its time limit
- * at 0.15 s (805 solves of a budget of 6,000, 38 solver warnings) on 5.5 times its work budget; bounded by
- * its work, it ends did_not_converge at 0.124 s (357 solves). Under the sanitizers (10-20 times slower) it
- * runs on a tenth of the default budget, which ends it the same way, sooner (0.121 s).
+ * at 26.3 mph and 88 deg. From 0.1205 s every solve fails to Newton and goes through the fallback's sweeps,
+ * most through a try at a fall too, and steps are cut into 8ths and 64ths: about 5,200 passes over its 26
+ * unknowns a solve, 75,000 a step, where a run's median is 2 a step. Bounded by its solves, it runs to its
+ * time limit at 0.15 s (805 solves of a budget of 6,000, 38 solver warnings) on 5.5 times its work budget;
+ * bounded by its work, it ends did_not_converge at 0.124 s (357 solves). Under the sanitizers (about 20 times
+ * slower) it runs on a tenth of the default budget, which ends it the same way, sooner (0.121 s).
  *
  * fallback-2040a4aa (input `be 00`): 2 ropes of 1.72 in, 10 posts at 10.7 ft, 1 rail, a 9,034-lb vehicle
  * at 34.2 mph and 74 deg, whose step at 0.089 s is cut into 8ths and 64ths, 41 solves of which 39 go
