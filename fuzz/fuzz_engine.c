@@ -22,9 +22,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 /* Each design runs on a tenth of the default solve budget (2 solves a step, and their work: 200 passes
  * over the barrier's unknowns a step on average), so that a unit ends within libFuzzer's timeout under
- * the sanitizers (10-20 times slower): the slow design kept in tests/fuzz-regressions/engine/ ends
- * did_not_converge after about 0.3 s of CPU without them, 3 s with them, where the default budget takes
- * 2 s and 28 s. Of 11,037 stress runs, 21 make 200 passes a step or more and end did_not_converge here,
+ * the sanitizers (about 20 times slower): the slow design kept in tests/fuzz-regressions/engine/ ends
+ * did_not_converge after about 0.1 s of CPU without them, 2 s with them, where the default budget takes
+ * 0.9 s and 20 s. Of 11,037 stress runs, 21 make 200 passes a step or more and end did_not_converge here,
  * which keeps the contract; the others run as they would at the default. */
 #define FUZZ_SOLVE_BUDGET 2.0
 
