@@ -163,11 +163,25 @@ out=$("$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" 2>&1)
 check "a second run into a folder in use is refused, naming the pid holding it" '[ $? -eq 1 ] && grep -q "nothing run: $busy is in use by another cablesim (pid $holder holds $busy/.cablesim-lock)" <<<"$out" || { echo "$out"; false; }'
 kill -KILL "$holder" # no handler runs: the lock stays
 wait "$holder" 2>/dev/null
-check "the killed run left its lock, naming it" '[ "$(cat "$busy/.cablesim-lock")" = "$holder" ]'
+check "the killed run left its lock: cablesim's text, its pid and host" '[ "$(cat "$busy/.cablesim-lock")" = "$(printf "cablesim lock\npid %s\nhost %s" "$holder" "$(uname -n)")" ]'
 out=$("$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" 2>&1)
 check "a dead run's lock is taken over" '[ $? -eq 0 ] && [ -s "$busy/summary.json" ] && [ ! -e "$busy/.cablesim-lock" ] || { echo "$out"; false; }'
-echo 999999999 >"$busy/.cablesim-lock"
-check "a lock file naming no live process is taken over" '"$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" >/dev/null 2>&1'
+printf 'cablesim lock\npid 999999999\nhost %s\n' "$(uname -n)" >"$busy/.cablesim-lock"
+check "a lock naming a process that has ended is taken over" '"$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" >/dev/null 2>&1 && [ ! -e "$busy/.cablesim-lock" ]'
+printf 'cablesim lock\npid %s\nhost %s\n' "$$" "$(uname -n)" >"$busy/.cablesim-lock"
+out=$("$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" 2>&1)
+check "a lock naming a process still running is kept, the folder in use" '[ $? -eq 1 ] && grep -qF "nothing run: $busy is in use by another cablesim (pid $$ holds $busy/.cablesim-lock): wait for it to end, or write elsewhere (if it has ended, remove that file)" <<<"$out" && [ -s "$busy/.cablesim-lock" ] || { echo "$out"; false; }'
+printf 'cablesim lock\npid 999999999\nhost another-machine\n' >"$busy/.cablesim-lock"
+out=$("$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" 2>&1)
+check "a lock of another machine is kept, the folder in use" '[ $? -eq 1 ] && grep -qF "(pid 999999999 on another-machine holds $busy/.cablesim-lock)" <<<"$out" && grep -q "^host another-machine$" "$busy/.cablesim-lock" || { echo "$out"; false; }'
+# A file of the user's named .cablesim-lock that holds a number (no process of that pid) is not a lock:
+# kept, and the folder refused, with --force too.
+echo 999999998 >"$busy/.cablesim-lock"
+out=$("$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" 2>&1)
+check "a file of a number named .cablesim-lock is the user's: refused and kept" '[ $? -eq 1 ] && grep -qF "nothing run: $busy/.cablesim-lock: not a lock of cablesim" <<<"$out" && [ "$(cat "$busy/.cablesim-lock")" = 999999998 ] || { echo "$out"; false; }'
+out=$("$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" --force 2>&1)
+check "--force refuses it too, saying so, and keeps it" '[ $? -eq 1 ] && grep -qF "the folder cannot be locked beside it, even with --force" <<<"$out" && [ "$(cat "$busy/.cablesim-lock")" = 999999998 ] || { echo "$out"; false; }'
+rm "$busy/.cablesim-lock"
 # Ctrl-C (SIGINT) or SIGTERM leaves the folder as it was before the command: no temporary, no lock, the
 # folders the command made removed, an earlier run's files byte for byte; the command then dies by the
 # signal (exit 128 + the signal). validate begins its two files before it runs anything, so the signal

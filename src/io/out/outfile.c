@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 enum { PATH_SIZE = 1400, MAX_DEPTH = 32 };
@@ -259,84 +260,169 @@ static int written(const cs_outdir *out, const char *rel) {
 
 /* ---- the lock ---- */
 
-/* The pid of the lock's holder: the system's word, else the pid the file holds; 0 if neither says. */
-static long lock_holder(int fd) {
-    struct flock fl = {0};
-    fl.l_type = F_WRLCK;
-    fl.l_whence = SEEK_SET;
-    if (fcntl(fd, F_GETLK, &fl) == 0 && fl.l_type != F_UNLCK && fl.l_pid > 0) return (long)fl.l_pid;
-    char text[32] = "";
-    ssize_t n = pread(fd, text, sizeof text - 1, 0);
-    return n > 0 ? strtol(text, NULL, 10) : 0;
+/* The lock file's text, the whole of it: LOCK_HEAD, "pid N" and "host NAME" (its holder's), a line each. A
+ * file of that name holding anything else is not cablesim's: it is neither truncated nor removed. */
+#define LOCK_HEAD "cablesim lock\n"
+enum { LOCK_TEXT_SIZE = 512, HOST_SIZE = 256, PID_DIGITS = 9 };
+
+/* What a lock file's text is: the whole of cablesim's, the beginning of one (a lock being written, between
+ * its file's making and its text), or another's. */
+typedef enum { LOCK_WHOLE, LOCK_BEGUN, LOCK_OTHER } lock_kind;
+
+/* This machine's name into host (HOST_SIZE), as the lock's text holds it: a byte outside '!'..'~' as '?'. */
+static void host_name(char *host) {
+    if (gethostname(host, HOST_SIZE) != 0 || !host[0]) snprintf(host, HOST_SIZE, "?");
+    host[HOST_SIZE - 1] = '\0';
+    for (char *c = host; *c; c++)
+        if (*c < '!' || *c > '~') *c = '?';
 }
 
-/* Whether the lock file fd (st its status) is one cablesim made: a regular file of one name (no hard link
- * to a file elsewhere), empty or holding a pid. Anything else is a user's file: it is neither truncated nor
- * removed. */
-static int lock_is_ours(int fd, const struct stat *st) {
-    char text[32];
-    if (!S_ISREG(st->st_mode) || st->st_nlink != 1 || st->st_size >= (off_t)sizeof text) return 0;
-    ssize_t n = pread(fd, text, sizeof text, 0);
-    if (n < 0 || n != st->st_size) return 0;
-    for (ssize_t i = 0; i < n; i++)
-        if (!(text[i] >= '0' && text[i] <= '9') && !(text[i] == '\n' && i == n - 1)) return 0;
+/* Whether t (n bytes) goes on at *i with the text s: 1 (*i past it), 0 t ends before s does, -1 not. */
+static int lock_word(const char *t, size_t n, size_t *i, const char *s) {
+    for (; *s; s++, ++*i) {
+        if (*i == n) return 0;
+        if (t[*i] != *s) return -1;
+    }
     return 1;
 }
 
-/* DIR/.cablesim-lock, created if missing, locked (fcntl) and holding this pid. A lock whose holder died
- * was released by the system and is taken over; a file of that name that is not a lock is refused. */
+/* Whether t goes on at *i with 1 to max bytes from lo to hi (the first not zero when zero_first is 0) and
+ * '\n', as lock_word says; the bytes into field (max + 1). */
+static int lock_field(const char *t, size_t n, size_t *i, char lo, char hi, int zero_first, size_t max,
+                      char *field) {
+    size_t k = 0;
+    for (; *i < n && t[*i] >= lo && t[*i] <= hi; ++*i) {
+        if (k == max || (k == 0 && !zero_first && t[*i] == '0')) return -1;
+        field[k++] = t[*i];
+    }
+    field[k] = '\0';
+    if (*i == n) return 0;
+    return k > 0 && t[(*i)++] == '\n' ? 1 : -1;
+}
+
+/* What the lock file's text t (n bytes) is; a whole one's pid and host into pid and host (HOST_SIZE). */
+static lock_kind lock_text(const char *t, size_t n, long *pid, char *host) {
+    char digits[PID_DIGITS + 1];
+    size_t i = 0;
+    int r = lock_word(t, n, &i, LOCK_HEAD "pid ");
+    if (r > 0) r = lock_field(t, n, &i, '0', '9', 0, PID_DIGITS, digits);
+    if (r > 0) r = lock_word(t, n, &i, "host ");
+    if (r > 0) r = lock_field(t, n, &i, '!', '~', 1, HOST_SIZE - 1, host);
+    if (r < 0 || (r > 0 && i < n)) return LOCK_OTHER;
+    if (r == 0) return LOCK_BEGUN;
+    *pid = strtol(digits, NULL, 10);
+    return LOCK_WHOLE;
+}
+
+static int same_file(const struct stat *a, const struct stat *b) {
+    return a->st_dev == b->st_dev && a->st_ino == b->st_ino;
+}
+
+/* The pid of the process holding the lock file fd's fcntl lock; 0 if none does (or the system cannot say). */
+static long lock_holder(int fd) {
+    struct flock fl = {.l_type = F_WRLCK, .l_whence = SEEK_SET};
+    return fcntl(fd, F_GETLK, &fl) == 0 && fl.l_type != F_UNLCK && fl.l_pid > 0 ? (long)fl.l_pid : 0;
+}
+
+/* DIR/.cablesim-lock just made (fd, O_EXCL), held: locked (fcntl) and given this process's text. */
+static cs_status hold_lock(cs_outdir *out, int fd, const char *path, const char *host, cs_error *err) {
+    char text[LOCK_TEXT_SIZE];
+    int n = snprintf(text, sizeof text, LOCK_HEAD "pid %ld\nhost %s\n", (long)getpid(), host);
+    struct flock fl = {.l_type = F_WRLCK, .l_whence = SEEK_SET};
+    out->lock = fd; /* signals are held: the handler knows the file at once */
+    if (fcntl(fd, F_SETLK, &fl) == 0 || errno == ENOLCK) { /* ENOLCK: no locks on this file system */
+        ssize_t w = pwrite(fd, text, (size_t)n, 0);
+        if (w == n) return CS_OK;
+        if (w >= 0) errno = ENOSPC;
+    }
+    int errnum = errno;
+    unlink(path);
+    close(fd);
+    out->lock = -1;
+    return cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errnum));
+}
+
+/* Remove the lock file named (as lstat found it) whose text was t (n bytes), a lock whose holder has ended,
+ * while holding its fcntl lock (of two runs taking it over, one removes it) and only while the name holds
+ * that file with that text. 0: removed, or gone since; -1 with errno set. */
+static int remove_ended(const char *path, const struct stat *named, const char *t, ssize_t n) {
+    int fd = open(path, O_RDWR | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+    if (fd < 0) return errno == ENOENT || errno == ELOOP ? 0 : -1;
+    struct flock fl = {.l_type = F_WRLCK, .l_whence = SEEK_SET};
+    struct stat held, now;
+    char again[LOCK_TEXT_SIZE];
+    int rc = 0;
+    if (fstat(fd, &held) == 0 && same_file(&held, named) &&
+        (fcntl(fd, F_SETLK, &fl) == 0 || errno == ENOLCK) && pread(fd, again, sizeof again, 0) == n &&
+        memcmp(again, t, (size_t)n) == 0 && lstat(path, &now) == 0 && same_file(&now, &held))
+        rc = unlink(path);
+    int errnum = errno;
+    close(fd);
+    errno = errnum;
+    return rc == 0 || errnum == ENOENT ? 0 : -1;
+}
+
+/* DIR/.cablesim-lock made (O_EXCL: of two runs, one makes it), locked (fcntl) and holding this process's
+ * text. One there already is another cablesim's while the system says a process holds it, or its text names a
+ * process still running, or another machine; one whose holder has ended (a kill -9) is removed and made
+ * anew. A file of that name whose text is not a lock's is the user's, and the folder is refused. */
 static cs_status take_lock(cs_outdir *out, cs_error *err) {
-    char path[PATH_SIZE];
+    char path[PATH_SIZE], host[HOST_SIZE], held_host[HOST_SIZE], text[LOCK_TEXT_SIZE];
     full_path(out, CS_OUT_LOCK, path, sizeof path);
-    for (int tries = 0; tries < 16; tries++) {
-        int fd = open(path, O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0666);
-        if (fd < 0) {
+    host_name(host);
+    for (int tries = 0, waits = 0; tries < 64; tries++) {
+        int fd = open(path, O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
+        if (fd >= 0) return hold_lock(out, fd, path, host, err);
+        if (errno != EEXIST) {
             return cs_error_set(err, CS_ERR_IO, "%s: cannot write there: %s", out->dir, strerror(errno));
         }
-        struct flock fl = {0};
-        fl.l_type = F_WRLCK;
-        fl.l_whence = SEEK_SET;
-        if (fcntl(fd, F_SETLK, &fl) != 0 && errno != ENOLCK) { /* ENOLCK: no locks on this file system */
-            int errnum = errno;
-            long pid = lock_holder(fd);
+        struct stat named, held;
+        if (lstat(path, &named) != 0) continue; /* gone since: make it */
+        ssize_t n = -1;
+        long holder = 0, pid = 0;
+        if (S_ISREG(named.st_mode) && named.st_nlink == 1) {
+            fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+            if (fd < 0 && errno != ENOENT && errno != ELOOP) {
+                return cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
+            }
+            if (fd < 0) continue; /* gone or replaced since */
+            int errnum = 0;
+            if (fstat(fd, &held) == 0 && same_file(&held, &named)) {
+                holder = lock_holder(fd);
+                n = pread(fd, text, sizeof text, 0);
+                errnum = n < 0 ? errno : 0;
+            }
             close(fd);
-            if (errnum != EACCES && errnum != EAGAIN) {
-                cs_error_set(err, CS_ERR_IO, "%s: cannot lock: %s", path, strerror(errnum));
-            } else if (pid > 0) {
-                cs_error_set(
-                    err, CS_ERR_IO,
-                    "%s is in use by another cablesim (pid %ld holds %s): wait for it to end, or write "
-                    "elsewhere",
-                    out->dir, pid, path);
-            } else {
-                cs_error_set(err, CS_ERR_IO,
-                             "%s is in use by another cablesim (it holds %s): wait for it to end", out->dir,
-                             path);
-            }
-            return CS_ERR_IO;
+            if (errnum) return cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errnum));
+            if (n < 0) continue; /* replaced since */
         }
-        /* the holder before may have removed the file as this took it: then take the new one */
-        struct stat held, now;
-        if (fstat(fd, &held) == 0 && lstat(path, &now) == 0 && held.st_dev == now.st_dev &&
-            held.st_ino == now.st_ino) {
-            if (!lock_is_ours(fd, &held)) {
-                close(fd);
-                return cs_error_set(err, CS_ERR_IO,
-                                    "%s: not a lock of cablesim's (a file of yours, or a link to one): it is "
-                                    "kept; remove it or write elsewhere",
-                                    path);
-            }
-            char pid[32];
-            int n = snprintf(pid, sizeof pid, "%ld\n", (long)getpid());
-            if (ftruncate(fd, 0) != 0 || pwrite(fd, pid, (size_t)n, 0) != n) {
-                cs_status st = cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
-                close(fd);
-                return st;
-            }
-            out->lock = fd;
-            return CS_OK;
+        lock_kind kind = n < 0 ? LOCK_OTHER : lock_text(text, (size_t)n, &pid, held_host);
+        if (kind == LOCK_BEGUN && !holder && waits++ < 20) { /* its maker writes it within microseconds */
+            nanosleep(&(struct timespec){0, 5000000}, NULL);
+            continue;
         }
-        close(fd);
+        if (kind != LOCK_WHOLE && !(kind == LOCK_BEGUN && holder)) {
+            return cs_error_set(
+                err, CS_ERR_IO,
+                "%s: not a lock of cablesim's (a file of yours, or a link to one): it is kept, "
+                "and the folder cannot be locked beside it, even with --force: move it away, "
+                "or write elsewhere",
+                path);
+        }
+        int other_host = !holder && strcmp(held_host, host) != 0;
+        if (holder || other_host || kill((pid_t)pid, 0) == 0 || errno == EPERM) {
+            return cs_error_set(
+                err, CS_ERR_IO,
+                "%s is in use by another cablesim (pid %ld%s%s holds %s): wait for it to end, or "
+                "write elsewhere%s",
+                out->dir, holder ? holder : pid, other_host ? " on " : "", other_host ? held_host : "", path,
+                holder ? "" : " (if it has ended, remove that file)");
+        }
+        if (remove_ended(path, &named, text, n) != 0) {
+            return cs_error_set(err, CS_ERR_IO,
+                                "%s: the lock of an ended cablesim (pid %ld), cannot be removed: %s", path,
+                                pid, strerror(errno));
+        }
     }
     return cs_error_set(err, CS_ERR_IO, "%s: cannot take the lock: other cablesim runs keep taking it", path);
 }

@@ -1,8 +1,10 @@
 /* SPDX-License-Identifier: MIT */
 /* A command's output folder, which never loses a file cablesim did not write.
  *
- * cs_out_open makes the folder, takes its lock (DIR/.cablesim-lock, flock'ed, holding the pid: a second
- * cablesim into the same folder is refused with that pid; a lock whose holder died is taken over) and
+ * cs_out_open makes the folder, takes its lock (DIR/.cablesim-lock, made with O_EXCL, fcntl-locked, its text
+ * "cablesim lock", the pid and the host: a second cablesim into the same folder is refused with that pid; a
+ * lock whose holder has ended is removed and made anew; a file of that name with any other text is the
+ * user's, kept, and the folder refused, even with CS_OUT_FORCE) and
  * reads the manifest an earlier run left (DIR/.cablesim-manifest: every file that run wrote, one a
  * line with its size in bytes and the 64-bit FNV-1a hash of its bytes). A listed file is cablesim's only
  * while it is as written: one changed since (its size or hash differs, or it is no longer a regular file),
