@@ -64,6 +64,16 @@ printf 'notes.txt\t9\t0123456789abcdef\n' >>"$own/.cablesim-manifest"
 out=$("$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" --force 2>&1)
 check "nor does one typed with a wrong hash: --force writes beside it and keeps it" '[ $? -eq 0 ] && [ "$(cat "$own/notes.txt")" = "my notes" ] && ! grep -q "^notes.txt" "$own/.cablesim-manifest" || { echo "$out"; false; }'
 rm "$own/notes.txt"
+# The manifest is read as cablesim writes it: a size with a sign, a space or a leading zero, or a hash in
+# capitals, is a line edited, and its file the user's.
+cp "$own/.cablesim-manifest" "$tmp/manifest.before"
+summary=$(sha256sum <"$own/summary.json")
+for edit in 's/^summary.json\t/&+/' 's/^summary.json\t/& /' 's/^summary.json\t/&0/' 's/^\(summary.json\t[0-9]*\t\)\(.*\)$/\1\U\2/'; do
+    sed "$edit" "$tmp/manifest.before" >"$own/.cablesim-manifest"
+    out=$("$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" 2>&1)
+    check "a manifest line not as cablesim writes it ($edit) makes its file the user's" '[ $? -eq 1 ] && ! cmp -s "$own/.cablesim-manifest" "$tmp/manifest.before" && grep -q "holds summary.json, which .cablesim-manifest lists without the size and hash" <<<"$out" && [ "$(sha256sum <"$own/summary.json")" = "$summary" ] || { echo "$out"; false; }'
+done
+mv "$tmp/manifest.before" "$own/.cablesim-manifest"
 cp "$own/events.csv" "$tmp/events.before"
 truncate -s 64G "$own/events.csv" # sparse: no room taken, 64 GB to read
 out=$(timeout -s KILL 20 "$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" 2>&1)

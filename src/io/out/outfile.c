@@ -226,17 +226,20 @@ static int fingerprint(const char *path, cs_out_print *p) {
     return 0;
 }
 
-/* A manifest line's "SIZE<tab>HASH" (decimal bytes, 16 hex digits) into p: 1, else 0. */
+/* A manifest line's "SIZE<tab>HASH" into p, read strictly as write_manifest writes it: the size in decimal
+ * digits (no sign, space or leading zero but that of "0"), the hash in 16 lowercase hex digits. 1, else 0:
+ * another text there is not cablesim's. */
 static int read_print(const char *text, cs_out_print *p) {
-    char *end;
+    size_t digits = strspn(text, "0123456789");
+    const char *h = text + digits + 1;
+    if (digits == 0 || (text[0] == '0' && digits > 1) || text[digits] != '\t' ||
+        strspn(h, "0123456789abcdef") != 16 || h[16])
+        return 0;
     errno = 0;
-    long long size = strtoll(text, &end, 10);
-    if (end == text || *end != '\t' || size < 0 || errno) return 0;
-    const char *h = end + 1;
-    unsigned long long hash = strtoull(h, &end, 16);
-    if (end - h != 16 || *end || errno) return 0;
+    long long size = strtoll(text, NULL, 10);
+    if (errno) return 0; /* past a long long */
     p->size = size;
-    p->hash = hash;
+    p->hash = strtoull(h, NULL, 16);
     return 1;
 }
 

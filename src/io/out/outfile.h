@@ -4,11 +4,11 @@
  * cs_out_open makes the folder, takes its lock (DIR/.cablesim-lock, made with O_EXCL, fcntl-locked, its text
  * "cablesim lock", the pid and the host: a second cablesim into the same folder is refused with that pid; a
  * lock whose holder has ended is removed and made anew; a file of that name with any other text is the
- * user's, kept, and the folder refused, even with CS_OUT_FORCE) and
- * reads the manifest an earlier run left (DIR/.cablesim-manifest: every file that run wrote, one a
- * line with its size in bytes and the 64-bit FNV-1a hash of its bytes). A listed file is cablesim's only
- * while it is as written: one changed since (its size or hash differs, or it is no longer a regular file),
- * or listed without a size and hash (a line typed in), is the user's. A folder holding a file that is not
+ * user's, kept, and the folder refused, even with CS_OUT_FORCE) and reads the manifest an earlier run left
+ * (DIR/.cablesim-manifest: every file that run wrote, one a line with its size in bytes and the 64-bit FNV-1a
+ * hash of its bytes). A listed file is cablesim's only while it is as written: one changed since (its size or
+ * hash differs, or it is no longer a regular file), or listed without a size and hash (a line typed in) or
+ * with them in another form than cablesim writes, is the user's. A folder holding a file that is not
  * cablesim's is refused, naming it, unless CS_OUT_FORCE: then the run writes beside such files and touches
  * none of them (nor writes over one).
  *
@@ -53,9 +53,9 @@ typedef struct cs_out_print {
 } cs_out_print;
 
 /* A line of the earlier manifest. ours 1: the file is as that run wrote it, or gone; 0: a file of that name
- * is there, changed since; -1: the line gives no size and hash (typed in); -2: another command wrote it (a
- * sweep's results, met by a run), or one the manifest does not name (its "written by" line edited). A file
- * not ours is kept: the user's, or another command's results. */
+ * is there, changed since; -1: the line gives no size and hash in cablesim's form (typed in, or edited); -2:
+ * another command wrote it (a sweep's results, met by a run), or one the manifest does not name (its "written
+ * by" line edited). A file not ours is kept: the user's, or another command's results. */
 typedef struct cs_out_listed {
     char name[128];
     cs_out_print print;
