@@ -69,6 +69,7 @@ int cs_command_compare(int argc, char **argv) {
     def.runs = (const char *const *)(argv + first);
     def.run_count = runs;
     def.measured = measured;
+    def.force_given = "--force";
     cs_compare *cmp = NULL;
     cs_error err;
     if (cs_compare_create(&def, &cmp, &err) != CS_OK) {

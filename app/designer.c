@@ -179,7 +179,7 @@ static int write_page(design *d, const char *dir, int force) {
 #ifdef CS_HAVE_DESIGNER
     cs_outdir out;
     cs_error err = {CS_OK, ""};
-    if (cs_out_open(&out, dir, "designer", force ? CS_OUT_FORCE : 0, &err) != CS_OK) {
+    if (cs_out_open(&out, dir, "designer", force ? CS_OUT_FORCE : 0, "--force", &err) != CS_OK) {
         fprintf(stderr, "cablesim designer: nothing written: %s\n", err.message);
         return CS_EXIT_RUN;
     }

@@ -304,7 +304,8 @@ static int run(const cs_model_input *in, cs_model *model, const options *o, cons
     if (!dir) default_dir(in, o->overrides, path, sizeof path), dir = path;
     cs_outdir out;
     cs_error err = {0};
-    if (cs_out_open(&out, dir, "run", o->force ? CS_OUT_FORCE : 0, &err) != CS_OK) { /* before the run */
+    /* before the run */
+    if (cs_out_open(&out, dir, "run", o->force ? CS_OUT_FORCE : 0, "--force", &err) != CS_OK) {
         fprintf(stderr, "cablesim: nothing run: %s\n", err.message);
         return EXIT_RUN;
     }

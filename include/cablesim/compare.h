@@ -26,6 +26,10 @@ typedef struct cs_compare_def {
     const char *const *runs; /**< the run folders, as `cablesim run -o` wrote them */
     int run_count;           /**< how many: 1 to CS_COMPARE_MAX_RUNS */
     const char *measured;    /**< a measured history (CSV), the reference; NULL: none, the first run is */
+    const char *force_given; /**< the command-line option that stands for CS_COMPARE_FORCE, as the user
+                                  gives it ("--force"), which cs_compare_write's refusal of a folder holding
+                                  files no manifest lists names as the way to write beside them; NULL: the
+                                  refusal names CS_COMPARE_FORCE */
 } cs_compare_def;
 
 /** A comparison: the runs and the measured history read back (opaque). */

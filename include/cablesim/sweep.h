@@ -98,6 +98,10 @@ typedef struct cs_sweep_def {
     const char *const *sets_given;   /**< [set_count] the command-line option each of sets stands for, as
                                           the user gave it ("--dt 2 ms"), which its problems then name; a
                                           NULL entry (or NULL): a --set */
+    const char *force_given;         /**< the command-line option that stands for force, as the user gives
+                                          it ("--force"), which a refusal of a folder holding files no
+                                          manifest lists names as the way to write beside them; NULL: the
+                                          refusal names this def's force */
 } cs_sweep_def;
 
 /** A study run: its runs' inputs and results (opaque). */

@@ -23,6 +23,7 @@ struct cs_compare {
         dev_t dev;
         ino_t ino;
     } folders[CS_COMPARE_MAX_RUNS + 1]; /* the runs' folders and the measured file's: none is written into */
+    char force[64]; /* the way to CS_COMPARE_FORCE a refusal of a folder names (the def's force_given) */
 };
 
 /* Keep the device and inode of the folder path (a run's), or of the one holding it (a measured file's)
@@ -87,6 +88,8 @@ cs_status cs_compare_create(const cs_compare_def *given, cs_compare **out, cs_er
         cs_compare_free(c);
         return rc;
     }
+    snprintf(c->force, sizeof c->force, "%s",
+             def.force_given ? def.force_given : "the flag CS_COMPARE_FORCE");
     *out = c;
     return cs_status_set(err, CS_OK, "");
 }
@@ -146,7 +149,8 @@ cs_status cs_compare_write(const cs_compare *c, const char *dir, int flags, cs_e
                                 c->traces[i].label);
     cs_error wrote;
     cs_outdir out;
-    cs_status st = cs_out_open(&out, dir, "compare", flags & CS_COMPARE_FORCE ? CS_OUT_FORCE : 0, err);
+    cs_status st =
+        cs_out_open(&out, dir, "compare", flags & CS_COMPARE_FORCE ? CS_OUT_FORCE : 0, c->force, err);
     if (st == CS_OK && cs_compare_write_traces(&out, c->traces, c->count, c->reference, &wrote) != CS_OK)
         st = cs_status_set(err, CS_ERR_IO, wrote.message); /* the status cablesim/compare.h promises */
     if (st == CS_OK) st = cs_out_commit(&out, err);

@@ -369,7 +369,7 @@ static int remove_ended(const char *path, const struct stat *named, const char *
  * text. One there already is another cablesim's while the system says a process holds it, or its text names a
  * process still running, or another machine; one whose holder has ended (a kill -9) is removed and made
  * anew. A file of that name whose text is not a lock's is the user's, and the folder is refused. */
-static cs_status take_lock(cs_outdir *out, cs_error *err) {
+static cs_status take_lock(cs_outdir *out, const char *force, cs_error *err) {
     char path[PATH_SIZE], host[HOST_SIZE], held_host[HOST_SIZE], text[LOCK_TEXT_SIZE];
     full_path(out, CS_OUT_LOCK, path, sizeof path);
     host_name(host);
@@ -408,9 +408,8 @@ static cs_status take_lock(cs_outdir *out, cs_error *err) {
             return cs_error_set(
                 err, CS_ERR_IO,
                 "%s: not a lock of cablesim's (a file of yours, or a link to one): it is kept, "
-                "and the folder cannot be locked beside it, even with --force: move it away, "
-                "or write elsewhere",
-                path);
+                "and the folder cannot be locked beside it%s%s: move it away, or write elsewhere",
+                path, force ? ", even with " : "", force ? force : "");
         }
         int other_host = !holder && strcmp(held_host, host) != 0;
         if (holder || other_host || kill((pid_t)pid, 0) == 0 || errno == EPERM) {
@@ -659,24 +658,25 @@ static int scan(const cs_outdir *out, const char *rel, int depth, int remove, ch
     return rc;
 }
 
-/* Refuse a folder holding a file no manifest lists (unless CS_OUT_FORCE), else remove the temporaries
- * a killed run left. */
-static cs_status check_contents(cs_outdir *out, cs_error *err) {
+/* Refuse a folder holding a file no manifest lists (unless CS_OUT_FORCE; the refusal names force, the
+ * caller's way to it, as cs_out_open says), else remove the temporaries a killed run left. */
+static cs_status check_contents(cs_outdir *out, const char *force, cs_error *err) {
     if (out->flags & CS_OUT_FORCE) return CS_OK;
-    char found[PATH_SIZE], why[PATH_SIZE];
+    char found[PATH_SIZE], why[PATH_SIZE], how[160];
     int rc = scan(out, "", 0, 0, found, sizeof found, err);
+    if (force)
+        snprintf(how, sizeof how, "write beside such files with %s (none of them is removed)", force);
+    else
+        snprintf(how, sizeof how, "move such files out of it");
     if (rc == 1)
-        cs_error_set(
-            err, CS_ERR_IO,
-            "%s holds %s, which %s: choose another folder, or give --force to write beside such files "
-            "(none of them is removed)",
-            out->dir, found, not_ours(out, found, why, sizeof why));
+        cs_error_set(err, CS_ERR_IO, "%s holds %s, which %s: choose another folder, or %s", out->dir, found,
+                     not_ours(out, found, why, sizeof why), how);
     if (rc == 0) rc = scan(out, "", 0, 1, found, sizeof found, err);
     return rc == 0 ? CS_OK : CS_ERR_IO;
 }
 
 /* cs_out_open's folders made and lock taken, with signals held: both are known to the handler at once. */
-static cs_status open_held(cs_outdir *out, const char *dir, cs_error *err) {
+static cs_status open_held(cs_outdir *out, const char *dir, const char *force, cs_error *err) {
     snprintf(out->dir, sizeof out->dir, "%s", dir);
     enlist(out);
     char part[1024];
@@ -698,12 +698,13 @@ static cs_status open_held(cs_outdir *out, const char *dir, cs_error *err) {
         cs_out_abort(out);
         return cs_error_set(err, CS_ERR_IO, "%s: %s", dir, strerror(found ? ENOTDIR : errno));
     }
-    cs_status status = take_lock(out, err);
+    cs_status status = take_lock(out, force, err);
     if (status != CS_OK) cs_out_abort(out);
     return status;
 }
 
-cs_status cs_out_open(cs_outdir *out, const char *dir, const char *command, int flags, cs_error *err) {
+cs_status cs_out_open(cs_outdir *out, const char *dir, const char *command, int flags, const char *force,
+                      cs_error *err) {
     memset(out, 0, sizeof *out);
     out->lock = out->journal = -1;
     out->flags = flags;
@@ -716,12 +717,12 @@ cs_status cs_out_open(cs_outdir *out, const char *dir, const char *command, int 
     }
     sigset_t old;
     hold_signals(&old);
-    cs_status status = open_held(out, dir, err);
+    cs_status status = open_held(out, dir, force, err);
     let_signals(&old);
     /* the manifest's files read and hashed with signals let through: a Ctrl-C is taken at once, and the
      * handler finds the folders made and the lock, all it removes */
     if (status == CS_OK) status = read_manifest(out, err);
-    if (status == CS_OK) status = check_contents(out, err);
+    if (status == CS_OK) status = check_contents(out, force, err);
     if (status != CS_OK && out->lock >= 0) cs_out_abort(out);
     return status;
 }

@@ -85,13 +85,16 @@ typedef struct cs_outdir {
 
 /* Create dir (and its parents), take its lock and read its manifest, before anything is computed, for
  * the command (`cablesim COMMAND`: "run", "sweep", "validate", "compare", "designer") that writes it: the
- * files another command wrote there are that command's results, kept as the user's are.
+ * files another command wrote there are that command's results, kept as the user's are. force names the
+ * caller's way to CS_OUT_FORCE as its user gives it ("--force" on the command line, "the flag
+ * CS_COMPARE_FORCE" in the library), which a refusal of the folder names; NULL: the caller has none.
  * Returns CS_OK, or CS_ERR_IO with err filled ("DIR: Not a directory", "DIR is in use by cablesim pid N",
  * "DIR holds notes.txt, which no cablesim run wrote there ...", or "... which has changed since cablesim
  * wrote it there ..."); CS_ERR_INVALID for a path too long, CS_ERR_MEMORY for a manifest that does not fit
  * in memory. Once it returned CS_OK, cs_out_commit or cs_out_abort ends out's use before out goes away
  * (cs_out_signal_cleanup reads it until then). */
-cs_status cs_out_open(cs_outdir *out, const char *dir, const char *command, int flags, cs_error *err);
+cs_status cs_out_open(cs_outdir *out, const char *dir, const char *command, int flags, const char *force,
+                      cs_error *err);
 /* Create DIR/subdir, for files named "subdir/...". Returns CS_OK, or CS_ERR_IO with err filled. */
 cs_status cs_out_subdir(cs_outdir *out, const char *subdir, cs_error *err);
 /* Start a temporary for DIR/name. NULL with err filled on failure: CS_ERR_INVALID for a name longer than

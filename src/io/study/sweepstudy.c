@@ -443,7 +443,9 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, cs_sweep **kee
             rc = EXIT_RUN;
         } else if (o->resume && (done = cs_sweep_resume_runs(dir, spec, &was, x, all, n, o)) < 0) {
             rc = EXIT_BAD;
-        } else if (cs_out_open(&out, dir, "sweep", o->force ? CS_OUT_FORCE : 0, &err) != CS_OK) {
+        } else if (cs_out_open(&out, dir, "sweep", o->force ? CS_OUT_FORCE : 0,
+                               o->force_given ? o->force_given : "cs_sweep_def's force set to 1",
+                               &err) != CS_OK) {
             cs_sweep_say(o, "nothing run: %s", err.message);
             rc = EXIT_RUN;
         } else if (out_open = 1, start_journal(&out, spec, x, all, n, &err) != CS_OK) {

@@ -166,7 +166,7 @@ cs_validate_suite *cs_validate_begin(const cs_validate_opts *o, int *status) {
     cs_validate_suite *s = suite_create(o);
     if (!s) return NULL;
     cs_error err;
-    if (cs_out_open(&s->out, o->dir, "validate", o->force ? CS_OUT_FORCE : 0, &err) != CS_OK) {
+    if (cs_out_open(&s->out, o->dir, "validate", o->force ? CS_OUT_FORCE : 0, "--force", &err) != CS_OK) {
         fprintf(o->err, "cablesim validate: nothing run: %s\n", err.message);
         suite_free(s);
         return NULL;
