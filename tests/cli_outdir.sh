@@ -104,6 +104,30 @@ rm "$ed/plots/speed.png"
 edit_during 'printf " " >>"$ed/summary.json"; edited=$(sha256sum <"$ed/summary.json")'
 check "one it would replace, edited during the run: nothing written, the edit kept" '[ $? -eq 1 ] && grep -q "nothing written: $ed/summary.json: a file is there which has changed since cablesim wrote it there" "$tmp/ed.out" && [ "$(sha256sum <"$ed/summary.json")" = "$edited" ] && [ -z "$(find "$ed" -name ".cablesim-tmp.*" -o -name .cablesim-lock)" ] || { cat "$tmp/ed.out"; false; }'
 
+# An earlier run's file that cannot be removed once the new files are in place (plots/ made read-only)
+# fails the command (status 1), which says the new results are written, names the file and why, and
+# leaves it in the manifest, cablesim's: the next run removes it. Root ignores a folder's permissions, so
+# as root the runs go as nobody, the binary, the model and the parts library copied where nobody reads them.
+pub="$tmp/pub"
+mkdir -p "$pub/ro"
+cp "$cs" "$pub/cablesim" && cp -r "$src/data" "$pub/data" && cp examples/aps3.yaml "$pub/"
+chmod -R a+rX "$pub" && chmod a+x "$tmp"
+as=()
+[ "$(id -u)" -eq 0 ] && as=(setpriv --reuid=65534 --regid=65534 --clear-groups) && chown 65534:65534 "$pub/ro"
+if [ ${#as[@]} -gt 0 ] && ! command -v setpriv >/dev/null; then
+    echo "skipped: an earlier file that cannot be removed (root, and no setpriv to run as nobody)"
+else
+    ro() { "${as[@]}" env CABLESIM_DATA="$pub/data" "$pub/cablesim" run "$pub/aps3.yaml" -o "$pub/ro" "$@" 2>&1; }
+    ro --t-end "10 ms" --plots >/dev/null
+    chmod a-w "$pub/ro/plots"
+    out=$(ro --t-end "12 ms")
+    check "an earlier file that cannot be removed: status 1, the new results written, the file named and why" '[ $? -eq 1 ] && grep -qE "^cablesim: the new results are in $pub/ro, but the earlier run.s plots/[a-z]+\.(png|svg) could not be removed: Permission denied \(and [0-9]+ more of its files\); .cablesim-manifest still lists it" <<<"$out" && ! grep -q "nothing written" <<<"$out" && grep -q "\"t_end_s\":0.012" "$pub/ro/summary.json" || { echo "$out"; false; }'
+    check "the earlier files stay in the manifest with the new ones; no lock or temporary is left" 'grep -qP "^summary.json\t$(stat -c %s "$pub/ro/summary.json")\t" "$pub/ro/.cablesim-manifest" && grep -q "^plots/speed.png" "$pub/ro/.cablesim-manifest" && [ ! -e "$pub/ro/.cablesim-lock" ] && [ -z "$(find "$pub/ro" -name ".cablesim-tmp.*")" ]'
+    chmod u+w "$pub/ro/plots"
+    out=$(ro --t-end "12 ms")
+    check "the next run removes them" '[ $? -eq 0 ] && [ ! -e "$pub/ro/plots" ] && ! grep -q "^plots/" "$pub/ro/.cablesim-manifest" || { echo "$out"; false; }'
+fi
+
 # A failed run leaves the folder as it was: an empty plots/ of the user's stays.
 "$cs" run examples/aps3.yaml -o "$tmp/emptysub" --t-end "10 ms" >/dev/null 2>&1
 mkdir "$tmp/emptysub/plots"

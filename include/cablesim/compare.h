@@ -92,8 +92,10 @@ enum {
  * @param dir the folder (made if need be)
  * @param flags 0 or CS_COMPARE_FORCE
  * @param err filled on failure (may be NULL)
- * @return CS_OK, or CS_ERR_IO with err filled (nothing written), also when dir is the folder of a run
- * compared (writing there would remove that run's files). */
+ * @return CS_OK, or CS_ERR_IO with err filled: "nothing written: " and why (also when dir is the folder of a
+ *         run compared: writing there would remove that run's files), or, when the files are in place but an
+ *         earlier comparison's file there could not be removed, "the new results are in DIR, but ..." naming
+ *         it and why (it stays in the manifest, for the next comparison there to remove). */
 CS_API cs_status cs_compare_write(const cs_compare *compare, const char *dir, int flags, cs_error *err);
 
 /** With a measured history: print each run's validation metrics against it (Sprague-Geers M, P, C, the

@@ -143,8 +143,8 @@ cs_status cs_compare_write(const cs_compare *c, const char *dir, int flags, cs_e
     for (int i = 0; stat(dir, &at) == 0 && i < c->count; i++)
         if (c->folders[i].ino == at.st_ino && c->folders[i].dev == at.st_dev)
             return cs_error_set(err, CS_ERR_IO,
-                                "%s is the folder of %s %s compared: writing there would remove a run's "
-                                "files; choose another folder",
+                                "nothing written: %s is the folder of %s %s compared: writing there would "
+                                "remove a run's files; choose another folder",
                                 dir, c->traces[i].measured ? "the measured history" : "the run",
                                 c->traces[i].label);
     cs_error wrote;
@@ -154,7 +154,7 @@ cs_status cs_compare_write(const cs_compare *c, const char *dir, int flags, cs_e
     if (st == CS_OK && cs_compare_write_traces(&out, c->traces, c->count, c->reference, &wrote) != CS_OK)
         st = cs_status_set(err, CS_ERR_IO, wrote.message); /* the status cablesim/compare.h promises */
     if (st == CS_OK) st = cs_out_commit(&out, err);
-    if (st != CS_OK) cs_out_abort(&out);
+    if (st != CS_OK) cs_out_fail(&out, st, err);
     cs_plot_release(); /* after the last plot (fontconfig's caches) */
     return st == CS_OK ? cs_status_set(err, CS_OK, "") : st;
 }

@@ -560,9 +560,9 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
     return CS_OK;
 }
 
-/* DIR/.cablesim-manifest: the files written, and with prev those of the earlier manifest too, through
- * a temporary and a rename. */
-static cs_status write_manifest(cs_outdir *out, int with_prev, cs_error *err) {
+/* DIR/.cablesim-manifest: the files written and those of the earlier manifest still cablesim's (not removed
+ * by this commit), through a temporary and a rename. */
+static cs_status write_manifest(cs_outdir *out, cs_error *err) {
     char tmp[PATH_SIZE], path[PATH_SIZE];
     full_path(out, CS_OUT_MANIFEST, path, sizeof path);
     int fd = begin_aside(out, "manifest", tmp);
@@ -580,7 +580,7 @@ static cs_status write_manifest(cs_outdir *out, int with_prev, cs_error *err) {
     fprintf(f, "# written by: cablesim %s\n", out->command);
     for (int i = 0; i < out->count; i++)
         fprintf(f, "%s\t%lld\t%016llx\n", out->names[i], out->prints[i].size, out->prints[i].hash);
-    for (int i = 0; with_prev && i < out->prev_count; i++) {
+    for (int i = 0; i < out->prev_count; i++) {
         const cs_out_listed *e = &out->prev[i];
         if (e->ours == 1 && !written(out, e->name))
             fprintf(f, "%s\t%lld\t%016llx\n", e->name, e->print.size, e->print.hash);
@@ -907,19 +907,18 @@ static void sync_folder(const cs_outdir *out, const char *rel, int len) {
     }
 }
 
-/* Remove the earlier run's file rel, a file (not a folder) in a folder of this one (not through a link). */
-static cs_status remove_earlier(const cs_outdir *out, const char *rel, cs_error *err) {
+/* Remove the earlier run's file rel, a file (not a folder) in a folder of this one (not through a link).
+ * 0: removed, or not there; else the errno of the failed removal. */
+static int remove_earlier(const cs_outdir *out, const char *rel) {
     char path[PATH_SIZE];
     struct stat st;
     for (const char *s = strchr(rel, '/'); s; s = strchr(s + 1, '/')) {
         snprintf(path, sizeof path, "%s/%.*s", out->dir, (int)(s - rel), rel);
-        if (lstat(path, &st) != 0 || !S_ISDIR(st.st_mode)) return CS_OK;
+        if (lstat(path, &st) != 0 || !S_ISDIR(st.st_mode)) return 0;
     }
     full_path(out, rel, path, sizeof path);
-    if (lstat(path, &st) != 0 || S_ISDIR(st.st_mode)) return CS_OK;
-    if (unlink(path) == 0 || errno == ENOENT) return CS_OK;
-    return cs_error_set(err, CS_ERR_IO, "%s: an earlier run's file, cannot be removed: %s", path,
-                        strerror(errno));
+    if (lstat(path, &st) != 0 || S_ISDIR(st.st_mode)) return 0;
+    return unlink(path) == 0 || errno == ENOENT ? 0 : errno;
 }
 
 /* cs_out_commit once every file is on the disk: the manifests and the renames. */
@@ -933,9 +932,8 @@ static cs_status put_in_place(cs_outdir *out, cs_error *err) {
     for (int i = 0; st == CS_OK && i < out->count; i++)
         st = place_free(out, out->names[i], err);
     /* the manifest first names both runs' files, so that every file cablesim put here stays its own */
-    if (st == CS_OK) st = write_manifest(out, 1, err);
+    if (st == CS_OK) st = write_manifest(out, err);
     if (st != CS_OK) return st;
-    int earlier = 0; /* the earlier run's files this run does not write: removed below */
     for (int i = 0; i < out->count; i++) {
         full_path(out, out->tmps[i], tmp, sizeof tmp);
         full_path(out, out->names[i], final, sizeof final);
@@ -943,20 +941,30 @@ static cs_status put_in_place(cs_outdir *out, cs_error *err) {
             return cs_error_set(err, CS_ERR_IO, "%s: %s", final, strerror(errno));
         }
     }
+    out->in_place = 1;
+    /* the earlier run's files this run does not write, removed; one that cannot be stays in the manifest,
+     * cablesim's for the next run to remove */
+    int removed = 0, kept = 0, kept_at = 0, kept_errno = 0;
     for (int i = 0; i < out->prev_count; i++) {
         const char *rel = out->prev[i].name, *slash = strrchr(rel, '/');
         if (out->prev[i].ours != 1 || written(out, rel)) continue;
-        earlier++;
-        if ((st = remove_earlier(out, rel, err)) != CS_OK) return st;
+        int errnum = remove_earlier(out, rel);
+        if (errnum) {
+            if (!kept++) kept_at = i, kept_errno = errnum;
+            continue;
+        }
+        out->prev[i].ours = 2, removed++;
         if (slash) { /* a subfolder this left empty */
             full_path(out, rel, tmp, sizeof tmp);
             tmp[strlen(out->dir) + 1 + (size_t)(slash - rel)] = '\0';
             rmdir(tmp);
         }
     }
-    /* the commit point: the manifest of this run's files alone (the first already is, when it named no
-     * earlier file besides them) */
-    if (earlier && (st = write_manifest(out, 0, err)) != CS_OK) return st;
+    /* the commit point: the manifest without the files removed (the first already is, when it named none) */
+    cs_error why;
+    if (removed && write_manifest(out, &why) != CS_OK) {
+        return cs_error_set(err, CS_ERR_IO, "the new results are in %s, but %s", out->dir, why.message);
+    }
     if (out->journal >= 0) { /* this sweep's journal: its runs are in the outputs now */
         full_path(out, CS_OUT_JOURNAL, tmp, sizeof tmp);
         unlink(tmp);
@@ -968,11 +976,19 @@ static cs_status put_in_place(cs_outdir *out, cs_error *err) {
         if (len && (i == 0 || strncmp(out->names[i - 1], out->names[i], (size_t)len + 1) != 0))
             sync_folder(out, out->names[i], len);
     }
+    char more[40] = "";
+    if (kept > 1) snprintf(more, sizeof more, " (and %d more of its files)", kept - 1);
+    if (kept) {
+        st = cs_error_set(err, CS_ERR_IO,
+                          "the new results are in %s, but the earlier run's %s could not be removed: %s%s; "
+                          "%s still lists it for the next run there to remove",
+                          out->dir, out->prev[kept_at].name, strerror(kept_errno), more, CS_OUT_MANIFEST);
+    }
     out->count = 0;
     out->made = out->subdir_count = 0; /* the folders hold a result now */
     release(out);
     delist(out);
-    return CS_OK;
+    return st;
 }
 
 cs_status cs_out_commit(cs_outdir *out, cs_error *err) {
@@ -991,6 +1007,16 @@ cs_status cs_out_commit(cs_outdir *out, cs_error *err) {
     st = put_in_place(out, err);
     let_signals(&old);
     return st;
+}
+
+cs_status cs_out_fail(cs_outdir *out, cs_status status, cs_error *err) {
+    cs_out_abort(out);
+    if (err && !out->in_place) {
+        char why[CS_MESSAGE_SIZE];
+        memcpy(why, err->message, sizeof why);
+        cs_error_set(err, status, "nothing written: %s", why);
+    }
+    return status;
 }
 
 void cs_out_abort(cs_outdir *out) {

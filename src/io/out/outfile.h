@@ -52,7 +52,8 @@ typedef struct cs_out_print {
     unsigned long long hash;
 } cs_out_print;
 
-/* A line of the earlier manifest. ours 1: the file is as that run wrote it, or gone; 0: a file of that name
+/* A line of the earlier manifest. ours 1: the file is as that run wrote it, or gone (2: removed by this run's
+ * commit); 0: a file of that name
  * is there, changed since; -1: the line gives no size and hash in cablesim's form (typed in, or edited); -2:
  * another command wrote it (a sweep's results, met by a run), or one the manifest does not name (its "written
  * by" line edited). A file not ours is kept: the user's, or another command's results. */
@@ -79,6 +80,7 @@ typedef struct cs_outdir {
     char prev_command[16]; /* the earlier manifest's; "" if it names none, or two (another's results) */
     char aside[48]; /* the temporary of the manifest or the journal being written, relative to dir; "" */
     int lock;       /* the lock's file descriptor, -1 when not held */
+    int in_place;   /* 1 once cs_out_commit has renamed the files into place (it may fail after that) */
     int journal;    /* the journal's, open for appending; -1: none */
     unsigned mode;  /* the files' permissions: 0666 less the umask */
 } cs_outdir;
@@ -118,8 +120,15 @@ cs_status cs_out_begin_path(cs_outdir *out, const char *name, char *path, size_t
 cs_status cs_out_end_path(cs_outdir *out, cs_error *err);
 /* Fsync every temporary, judge the earlier files again (as cs_out_open did), rename each to its name, remove
  * the files of the earlier manifest that this run did not write (and a subfolder they leave empty), write the
- * manifest, release the lock. Returns CS_OK, or CS_ERR_IO with err filled (then call cs_out_abort). */
+ * manifest, release the lock. Returns CS_OK, or CS_ERR_IO with err filled (then call cs_out_fail). An earlier
+ * file that cannot be removed (a read-only folder) stays listed in the manifest, for the next run to remove,
+ * and the commit ends, the new files in place (out->in_place), returning CS_ERR_IO: "the new results are in
+ * DIR, but the earlier run's plots/speed.png could not be removed: Permission denied; ...". */
 cs_status cs_out_commit(cs_outdir *out, cs_error *err);
+/* After a failure while out was open (status, err its reason): cs_out_abort, and err's message begun with
+ * "nothing written: " unless the commit had put the files in place (its message then says so). Returns
+ * status. err may be NULL. */
+cs_status cs_out_fail(cs_outdir *out, cs_status status, cs_error *err);
 /* A journal in the folder (DIR/.cablesim-journal, a sweep's: each run's result as it finishes), which
  * outlives a kill -9, a power cut or a failed write of the outputs, and which the commit of the sweep that
  * keeps it removes (the outputs hold it all then); to another command it is another command's results.

@@ -251,11 +251,14 @@ static int write_all(cs_outdir *out, const cs_sweep_spec *spec, const double *x,
     }
     if (rc == CS_OK) rc = cs_out_commit(out, &err);
     if (rc != CS_OK) {
-        cs_out_abort(out);
-        cs_sweep_say(o,
-                     "nothing written: %s; the runs done are kept in %s/%s: `cablesim sweep --resume %s` "
-                     "writes the study once that is put right",
-                     err.message, out->dir, CS_OUT_JOURNAL, out->dir);
+        cs_out_fail(out, rc, &err);
+        if (out->in_place) /* the journal's runs are in the outputs */
+            cs_sweep_say(o, "%s", err.message);
+        else
+            cs_sweep_say(o,
+                         "%s; the runs done are kept in %s/%s: `cablesim sweep --resume %s` writes the study "
+                         "once that is put right",
+                         err.message, out->dir, CS_OUT_JOURNAL, out->dir);
     }
     return rc == CS_OK ? 0 : -1;
 }

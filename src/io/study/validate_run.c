@@ -218,8 +218,8 @@ int cs_validate_finish(cs_validate_suite *s) {
     int bad = cs_out_end_at(&s->out, 0, md, &err) != CS_OK;
     if (cs_out_end_at(&s->out, 1, csv, &err) != CS_OK) bad = 1;
     if (bad || cs_out_commit(&s->out, &err) != CS_OK) {
-        cs_out_abort(&s->out);
-        fprintf(o->err, "cablesim validate: nothing written: %s\n", err.message);
+        cs_out_fail(&s->out, CS_ERR_IO, &err);
+        fprintf(o->err, "cablesim validate: %s\n", err.message);
         suite_free(s);
         return 1;
     }
