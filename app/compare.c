@@ -69,6 +69,7 @@ int cs_command_compare(int argc, char **argv) {
     def.runs = (const char *const *)(argv + first);
     def.run_count = runs;
     def.measured = measured;
+    def.force_given = "--force";
     cs_compare *cmp = NULL;
     cs_error err;
     if (cs_compare_create(&def, &cmp, &err) != CS_OK) {
@@ -77,7 +78,7 @@ int cs_command_compare(int argc, char **argv) {
     }
     int rc = 0;
     if (cs_compare_write(cmp, dir, force ? CS_COMPARE_FORCE : 0, &err) != CS_OK) {
-        fprintf(stderr, "cablesim compare: nothing written: %s\n", err.message);
+        fprintf(stderr, "cablesim compare: %s\n", err.message); /* what was written, or "nothing written" */
         rc = 1;
     } else {
         printf("compared %d run%s%s: %s/{compare.html,compare.csv,compare.md,%splots/compare-*.png,.svg}\n",

@@ -179,7 +179,7 @@ static int write_page(design *d, const char *dir, int force) {
 #ifdef CS_HAVE_DESIGNER
     cs_outdir out;
     cs_error err = {CS_OK, ""};
-    if (cs_out_open(&out, dir, "designer", force ? CS_OUT_FORCE : 0, &err) != CS_OK) {
+    if (cs_out_open(&out, dir, "designer", force ? CS_OUT_FORCE : 0, "--force", &err) != CS_OK) {
         fprintf(stderr, "cablesim designer: nothing written: %s\n", err.message);
         return CS_EXIT_RUN;
     }
@@ -190,8 +190,8 @@ static int write_page(design *d, const char *dir, int force) {
     if (f) st = cs_out_finish(&out, f, st, &err);
     if (st == CS_OK) st = cs_out_commit(&out, &err);
     if (st != CS_OK) {
-        cs_out_abort(&out);
-        fprintf(stderr, "cablesim designer: nothing written: %s\n", err.message);
+        cs_out_fail(&out, st, &err);
+        fprintf(stderr, "cablesim designer: %s\n", err.message);
         return CS_EXIT_RUN;
     }
     printf("designer page for "), cs_term_text(stdout, d->name), printf(": %s/designer.html\n", dir);

@@ -79,9 +79,12 @@ static const char run_usage[] =
     "appear together once all are written, with DIR/.cablesim-manifest listing them, and the files of an\n"
     "earlier run there (its manifest's) that this one does not write are removed: DIR holds one run. A DIR\n"
     "holding a file no manifest lists, or one changed since cablesim wrote it (the manifest holds each\n"
-    "file's size and hash), is refused, naming it. A failed run writes nothing. Ctrl-C (SIGINT) or\n"
-    "SIGTERM leaves DIR as it was, no temporary or lock left and a folder the run made removed, unless\n"
-    "the files were being renamed into place: the renames end first. The run then ends by the signal.\n"
+    "file's size and hash), is refused, naming it. A failed run writes nothing; an earlier run's file\n"
+    "that cannot be removed once the new files are in place fails the run too (status 1), the message\n"
+    "saying the new results are written and naming that file, which the manifest keeps for the next run\n"
+    "to remove. Ctrl-C (SIGINT) or SIGTERM leaves DIR as it was, no temporary or lock left and a folder\n"
+    "the run made removed, unless the files were being renamed into place: the renames end first. The\n"
+    "run then ends by the signal.\n"
     "  -o, --out DIR        the output folder\n"
     "  --force              write into DIR beside files no manifest lists (none of them is removed)\n"
     "  --set PATH=VALUE     replace a value of the model: --set scenario.speed=\"35 mph\"\n"
@@ -256,7 +259,7 @@ static cs_status write_report_html(cs_outdir *out, void *user, cs_error *err) {
 }
 
 /* Every output of the run into out (opened before the run), committed together; on a failure nothing is
- * left (cs_out_abort). */
+ * left (cs_out_fail), unless the files were in place (an earlier run's file that could not be removed). */
 static int write_outputs(cs_outdir *out, const cs_model_input *in, const cs_model *model,
                          const cs_state *state, const cs_record *rec, const cs_run_info *info, int plots,
                          int report) {
@@ -266,8 +269,8 @@ static int write_outputs(cs_outdir *out, const cs_model_input *in, const cs_mode
                                       report ? write_report_html : NULL, &args, &err);
     if (st == CS_OK) st = cs_out_commit(out, &err);
     if (st != CS_OK) {
-        cs_out_abort(out);
-        fprintf(stderr, "cablesim: nothing written: %s\n", err.message);
+        cs_out_fail(out, st, &err);
+        fprintf(stderr, "cablesim: %s\n", err.message);
     }
     return st == CS_OK ? 0 : -1;
 }
@@ -304,7 +307,8 @@ static int run(const cs_model_input *in, cs_model *model, const options *o, cons
     if (!dir) default_dir(in, o->overrides, path, sizeof path), dir = path;
     cs_outdir out;
     cs_error err = {0};
-    if (cs_out_open(&out, dir, "run", o->force ? CS_OUT_FORCE : 0, &err) != CS_OK) { /* before the run */
+    /* before the run */
+    if (cs_out_open(&out, dir, "run", o->force ? CS_OUT_FORCE : 0, "--force", &err) != CS_OK) {
         fprintf(stderr, "cablesim: nothing run: %s\n", err.message);
         return EXIT_RUN;
     }

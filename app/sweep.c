@@ -82,6 +82,7 @@ static int parse_opts(int argc, char **argv, sweep_args *a, int rank) {
     *d = cs_default_sweep_def();
     d->sets = a->sets, d->sets_given = a->given;
     d->allow = a->allow;
+    d->force_given = "--force";
     int v, study = 0;            /* options that define the study, which --resume takes from DIR */
     char first_study[1100] = ""; /* the first of them as given, which a refusal with --resume names */
     optind = 1;

@@ -64,6 +64,16 @@ printf 'notes.txt\t9\t0123456789abcdef\n' >>"$own/.cablesim-manifest"
 out=$("$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" --force 2>&1)
 check "nor does one typed with a wrong hash: --force writes beside it and keeps it" '[ $? -eq 0 ] && [ "$(cat "$own/notes.txt")" = "my notes" ] && ! grep -q "^notes.txt" "$own/.cablesim-manifest" || { echo "$out"; false; }'
 rm "$own/notes.txt"
+# The manifest is read as cablesim writes it: a size with a sign, a space or a leading zero, or a hash in
+# capitals, is a line edited, and its file the user's.
+cp "$own/.cablesim-manifest" "$tmp/manifest.before"
+summary=$(sha256sum <"$own/summary.json")
+for edit in 's/^summary.json\t/&+/' 's/^summary.json\t/& /' 's/^summary.json\t/&0/' 's/^\(summary.json\t[0-9]*\t\)\(.*\)$/\1\U\2/'; do
+    sed "$edit" "$tmp/manifest.before" >"$own/.cablesim-manifest"
+    out=$("$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" 2>&1)
+    check "a manifest line not as cablesim writes it ($edit) makes its file the user's" '[ $? -eq 1 ] && ! cmp -s "$own/.cablesim-manifest" "$tmp/manifest.before" && grep -q "holds summary.json, which .cablesim-manifest lists without the size and hash" <<<"$out" && [ "$(sha256sum <"$own/summary.json")" = "$summary" ] || { echo "$out"; false; }'
+done
+mv "$tmp/manifest.before" "$own/.cablesim-manifest"
 cp "$own/events.csv" "$tmp/events.before"
 truncate -s 64G "$own/events.csv" # sparse: no room taken, 64 GB to read
 out=$(timeout -s KILL 20 "$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" 2>&1)
@@ -93,6 +103,30 @@ check "an earlier run's file edited during the run is kept, not removed" '[ $? -
 rm "$ed/plots/speed.png"
 edit_during 'printf " " >>"$ed/summary.json"; edited=$(sha256sum <"$ed/summary.json")'
 check "one it would replace, edited during the run: nothing written, the edit kept" '[ $? -eq 1 ] && grep -q "nothing written: $ed/summary.json: a file is there which has changed since cablesim wrote it there" "$tmp/ed.out" && [ "$(sha256sum <"$ed/summary.json")" = "$edited" ] && [ -z "$(find "$ed" -name ".cablesim-tmp.*" -o -name .cablesim-lock)" ] || { cat "$tmp/ed.out"; false; }'
+
+# An earlier run's file that cannot be removed once the new files are in place (plots/ made read-only)
+# fails the command (status 1), which says the new results are written, names the file and why, and
+# leaves it in the manifest, cablesim's: the next run removes it. Root ignores a folder's permissions, so
+# as root the runs go as nobody, the binary, the model and the parts library copied where nobody reads them.
+pub="$tmp/pub"
+mkdir -p "$pub/ro"
+cp "$cs" "$pub/cablesim" && cp -r "$src/data" "$pub/data" && cp examples/aps3.yaml "$pub/"
+chmod -R a+rX "$pub" && chmod a+x "$tmp"
+as=()
+[ "$(id -u)" -eq 0 ] && as=(setpriv --reuid=65534 --regid=65534 --clear-groups) && chown 65534:65534 "$pub/ro"
+if [ ${#as[@]} -gt 0 ] && ! command -v setpriv >/dev/null; then
+    echo "skipped: an earlier file that cannot be removed (root, and no setpriv to run as nobody)"
+else
+    ro() { "${as[@]}" env CABLESIM_DATA="$pub/data" "$pub/cablesim" run "$pub/aps3.yaml" -o "$pub/ro" "$@" 2>&1; }
+    ro --t-end "10 ms" --plots >/dev/null
+    chmod a-w "$pub/ro/plots"
+    out=$(ro --t-end "12 ms")
+    check "an earlier file that cannot be removed: status 1, the new results written, the file named and why" '[ $? -eq 1 ] && grep -qE "^cablesim: the new results are in $pub/ro, but the earlier run.s plots/[a-z]+\.(png|svg) could not be removed: Permission denied \(and [0-9]+ more of its files\); .cablesim-manifest still lists it" <<<"$out" && ! grep -q "nothing written" <<<"$out" && grep -q "\"t_end_s\":0.012" "$pub/ro/summary.json" || { echo "$out"; false; }'
+    check "the earlier files stay in the manifest with the new ones; no lock or temporary is left" 'grep -qP "^summary.json\t$(stat -c %s "$pub/ro/summary.json")\t" "$pub/ro/.cablesim-manifest" && grep -q "^plots/speed.png" "$pub/ro/.cablesim-manifest" && [ ! -e "$pub/ro/.cablesim-lock" ] && [ -z "$(find "$pub/ro" -name ".cablesim-tmp.*")" ]'
+    chmod u+w "$pub/ro/plots"
+    out=$(ro --t-end "12 ms")
+    check "the next run removes them" '[ $? -eq 0 ] && [ ! -e "$pub/ro/plots" ] && ! grep -q "^plots/" "$pub/ro/.cablesim-manifest" || { echo "$out"; false; }'
+fi
 
 # A failed run leaves the folder as it was: an empty plots/ of the user's stays.
 "$cs" run examples/aps3.yaml -o "$tmp/emptysub" --t-end "10 ms" >/dev/null 2>&1
@@ -163,11 +197,25 @@ out=$("$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" 2>&1)
 check "a second run into a folder in use is refused, naming the pid holding it" '[ $? -eq 1 ] && grep -q "nothing run: $busy is in use by another cablesim (pid $holder holds $busy/.cablesim-lock)" <<<"$out" || { echo "$out"; false; }'
 kill -KILL "$holder" # no handler runs: the lock stays
 wait "$holder" 2>/dev/null
-check "the killed run left its lock, naming it" '[ "$(cat "$busy/.cablesim-lock")" = "$holder" ]'
+check "the killed run left its lock: cablesim's text, its pid and host" '[ "$(cat "$busy/.cablesim-lock")" = "$(printf "cablesim lock\npid %s\nhost %s" "$holder" "$(uname -n)")" ]'
 out=$("$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" 2>&1)
 check "a dead run's lock is taken over" '[ $? -eq 0 ] && [ -s "$busy/summary.json" ] && [ ! -e "$busy/.cablesim-lock" ] || { echo "$out"; false; }'
-echo 999999999 >"$busy/.cablesim-lock"
-check "a lock file naming no live process is taken over" '"$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" >/dev/null 2>&1'
+printf 'cablesim lock\npid 999999999\nhost %s\n' "$(uname -n)" >"$busy/.cablesim-lock"
+check "a lock naming a process that has ended is taken over" '"$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" >/dev/null 2>&1 && [ ! -e "$busy/.cablesim-lock" ]'
+printf 'cablesim lock\npid %s\nhost %s\n' "$$" "$(uname -n)" >"$busy/.cablesim-lock"
+out=$("$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" 2>&1)
+check "a lock naming a process still running is kept, the folder in use" '[ $? -eq 1 ] && grep -qF "nothing run: $busy is in use by another cablesim (pid $$ holds $busy/.cablesim-lock): wait for it to end, or write elsewhere (if it has ended, remove that file)" <<<"$out" && [ -s "$busy/.cablesim-lock" ] || { echo "$out"; false; }'
+printf 'cablesim lock\npid 999999999\nhost another-machine\n' >"$busy/.cablesim-lock"
+out=$("$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" 2>&1)
+check "a lock of another machine is kept, the folder in use" '[ $? -eq 1 ] && grep -qF "(pid 999999999 on another-machine holds $busy/.cablesim-lock)" <<<"$out" && grep -q "^host another-machine$" "$busy/.cablesim-lock" || { echo "$out"; false; }'
+# A file of the user's named .cablesim-lock that holds a number (no process of that pid) is not a lock:
+# kept, and the folder refused, with --force too.
+echo 999999998 >"$busy/.cablesim-lock"
+out=$("$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" 2>&1)
+check "a file of a number named .cablesim-lock is the user's: refused and kept" '[ $? -eq 1 ] && grep -qF "nothing run: $busy/.cablesim-lock: not a lock of cablesim" <<<"$out" && [ "$(cat "$busy/.cablesim-lock")" = 999999998 ] || { echo "$out"; false; }'
+out=$("$cs" run examples/aps3.yaml -o "$busy" --t-end "10 ms" --force 2>&1)
+check "--force refuses it too, saying so, and keeps it" '[ $? -eq 1 ] && grep -qF "the folder cannot be locked beside it, even with --force" <<<"$out" && [ "$(cat "$busy/.cablesim-lock")" = 999999998 ] || { echo "$out"; false; }'
+rm "$busy/.cablesim-lock"
 # Ctrl-C (SIGINT) or SIGTERM leaves the folder as it was before the command: no temporary, no lock, the
 # folders the command made removed, an earlier run's files byte for byte; the command then dies by the
 # signal (exit 128 + the signal). validate begins its two files before it runs anything, so the signal

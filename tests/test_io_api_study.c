@@ -10,7 +10,8 @@
  * - the same study checked without running (cs_sweep_check_study), from a def of the size before it had
  *   ranks: its runs' inputs are the study's, each run pending;
  * - a def, a row or ranks of a size the library does not know, or ranks that cannot share a study, are
- *   refused by name, and an earlier, smaller row is filled to its size. */
+ *   refused by name, and an earlier, smaller row is filled to its size;
+ * - a folder of the user's is refused naming the interface's way to write beside its files. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <setjmp.h>
@@ -347,10 +348,50 @@ static void compare_is_the_commands(void **state) {
     assert_int_equal(cs_compare_create(&def, &c, &err), CS_ERR_INVALID);
 }
 
+/* A folder of the user's is refused naming the interface's way to write beside its files (the flag, the
+ * def's field), or the option its def says stands for it; the files are kept. */
+static void refusals_name_the_interfaces_force(void **state) {
+    (void)state;
+    char user[300], run[300];
+    snprintf(user, sizeof user, "%s/user", tmp);
+    snprintf(run, sizeof run, "%s/run", tmp);
+    sh("mkdir -p '%s' && echo 'my notes' >'%s/notes.txt'", user, user);
+    sh(CS " run " CS_SOURCE_DIR "/examples/aps3.yaml --t-end '10 ms' -o '%s' >/dev/null", run);
+    cs_error err;
+    const char *runs[] = {run};
+    cs_compare_def def = cs_default_compare_def();
+    def.runs = runs;
+    def.run_count = 1;
+    for (int given = 0; given < 2; given++) {
+        def.force_given = given ? "--force" : NULL;
+        cs_compare *c = NULL;
+        if (cs_compare_create(&def, &c, &err) != CS_OK) fail_msg("%s", err.message);
+        assert_int_equal(cs_compare_write(c, user, 0, &err), CS_ERR_IO);
+        assert_non_null(strstr(err.message, "holds notes.txt, which no cablesim run wrote there"));
+        const char *named = given ? "or write beside such files with --force (none of them is removed)"
+                                  : "or write beside such files with the flag CS_COMPARE_FORCE (none of them";
+        if (!strstr(err.message, named)) fail_msg("%s", err.message);
+        assert_true(given || !strstr(err.message, "--force"));
+        cs_compare_free(c);
+    }
+    cs_sweep_def sweep = cs_default_sweep_def();
+    sweep.spec = CS_SOURCE_DIR "/examples/aps3-uncertain.yaml";
+    sweep.out_dir = user;
+    sweep.runs = 1;
+    cs_sweep *s = NULL;
+    assert_int_equal(cs_sweep_study(&sweep, &s, &err), CS_ERR_IO);
+    assert_null(s);
+    if (!strstr(err.message, "or write beside such files with cs_sweep_def's force set to 1 (none of them"))
+        fail_msg("%s", err.message);
+    assert_null(strstr(err.message, "--force"));
+    sh("[ \"$(cat '%s/notes.txt')\" = 'my notes' ] && [ ! -e '%s/runs.csv' ]", user, user);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(sweep_is_the_commands),
         cmocka_unit_test(compare_is_the_commands),
+        cmocka_unit_test(refusals_name_the_interfaces_force),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

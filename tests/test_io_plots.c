@@ -725,7 +725,7 @@ static void test_figures_through_outdir(void **state) {
     synthetic *s = synthetic_new(FRAMES);
     cs_outdir out;
     cs_error err;
-    assert_int_equal(cs_out_open(&out, s->dir.path, "run", 0, &err), CS_OK);
+    assert_int_equal(cs_out_open(&out, s->dir.path, "run", 0, NULL, &err), CS_OK);
     static const cs_plot_format formats[] = {CS_PLOT_PNG, CS_PLOT_SVG};
     if (cs_figures_write(&out, "plots", formats, 2, &s->d, &err) != CS_OK) fail_msg("%s", err.message);
     char names[2 * CS_FIG_COUNT][64], path[256];

@@ -105,6 +105,21 @@ static void public_record_and_outputs(void **state) {
     assert_int_equal(cs_write_outputs(blocked, &in, m, s, rec, 0, &err), CS_ERR_IO);
     assert_int_equal(err.status, CS_ERR_IO);
     assert_true(strlen(err.message) > 0);
+    /* a folder of the user's is refused naming what the interface allows: another folder, the file moved
+     * (it takes no --force) */
+    char user[sizeof out + 20], notes[sizeof user + 20];
+    snprintf(user, sizeof user, "%s/user", dir);
+    snprintf(notes, sizeof notes, "%s/notes.txt", user);
+    assert_int_equal(mkdir(user, 0777), 0);
+    FILE *f = fopen(notes, "w");
+    assert_non_null(f);
+    fputs("my notes\n", f);
+    assert_int_equal(fclose(f), 0);
+    assert_int_equal(cs_write_outputs(user, &in, m, s, rec, 0, &err), CS_ERR_IO);
+    assert_non_null(strstr(err.message, "holds notes.txt, which no cablesim run wrote there"));
+    assert_non_null(strstr(err.message, "choose another folder, or move such files out of it"));
+    assert_null(strstr(err.message, "--force"));
+    assert_true(exists(user, "notes.txt") && !exists(user, "summary.json"));
     char cmd[128];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
     assert_int_equal(system(cmd), 0);

@@ -26,6 +26,10 @@ typedef struct cs_compare_def {
     const char *const *runs; /**< the run folders, as `cablesim run -o` wrote them */
     int run_count;           /**< how many: 1 to CS_COMPARE_MAX_RUNS */
     const char *measured;    /**< a measured history (CSV), the reference; NULL: none, the first run is */
+    const char *force_given; /**< the command-line option that stands for CS_COMPARE_FORCE, as the user
+                                  gives it ("--force"), which cs_compare_write's refusal of a folder holding
+                                  files no manifest lists names as the way to write beside them; NULL: the
+                                  refusal names CS_COMPARE_FORCE */
 } cs_compare_def;
 
 /** A comparison: the runs and the measured history read back (opaque). */
@@ -88,8 +92,10 @@ enum {
  * @param dir the folder (made if need be)
  * @param flags 0 or CS_COMPARE_FORCE
  * @param err filled on failure (may be NULL)
- * @return CS_OK, or CS_ERR_IO with err filled (nothing written), also when dir is the folder of a run
- * compared (writing there would remove that run's files). */
+ * @return CS_OK, or CS_ERR_IO with err filled: "nothing written: " and why (also when dir is the folder of a
+ *         run compared: writing there would remove that run's files), or, when the files are in place but an
+ *         earlier comparison's file there could not be removed, "the new results are in DIR, but ..." naming
+ *         it and why (it stays in the manifest, for the next comparison there to remove). */
 CS_API cs_status cs_compare_write(const cs_compare *compare, const char *dir, int flags, cs_error *err);
 
 /** With a measured history: print each run's validation metrics against it (Sprague-Geers M, P, C, the

@@ -79,7 +79,8 @@ enum cs_output_flags {
 
 /** Write a run's outputs into a folder, as `cablesim run -o DIR` does: timeseries.csv, events.csv,
  * summary.json and, with CS_OUTPUT_PLOTS, the plots. The folder (and its parents) are created; every file
- * is written beside its final name and renamed once all are complete, so a failure leaves nothing new.
+ * is written beside its final name and renamed once all are complete, so a failure leaves nothing new (but
+ * for an earlier run's file that cannot be removed once they are in place: see the return).
  * The folder keeps the rule of `cablesim run` without --force: a folder holding a file that no run's
  * DIR/.cablesim-manifest lists (with the size and hash it was written with) is refused, and only the files
  * of the earlier manifest, as written, are removed.
@@ -90,7 +91,10 @@ enum cs_output_flags {
  * @param rec its record
  * @param flags 0 or CS_OUTPUT_PLOTS
  * @param err filled on failure (may be NULL)
- * @return CS_OK, or CS_ERR_IO with err filled (nothing written, or a record that lost frames);
+ * @return CS_OK, or CS_ERR_IO with err filled: "nothing written: " and why (a record that lost frames, a
+ *         folder refused, a file that could not be written), or, when the files are in place but an earlier
+ *         run's file there could not be removed, "the new results are in DIR, but ..." naming it and why (it
+ *         stays in the manifest, for the next run there to remove);
  *         CS_ERR_INVALID for an input whose size does not reach its scenario or a folder's path too long;
  *         CS_ERR_MEMORY when memory runs out. */
 CS_API cs_status cs_write_outputs(const char *dir, const cs_model_input *in, const cs_model *model,

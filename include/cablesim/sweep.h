@@ -98,6 +98,10 @@ typedef struct cs_sweep_def {
     const char *const *sets_given;   /**< [set_count] the command-line option each of sets stands for, as
                                           the user gave it ("--dt 2 ms"), which its problems then name; a
                                           NULL entry (or NULL): a --set */
+    const char *force_given;         /**< the command-line option that stands for force, as the user gives
+                                          it ("--force"), which a refusal of a folder holding files no
+                                          manifest lists names as the way to write beside them; NULL: the
+                                          refusal names this def's force */
 } cs_sweep_def;
 
 /** A study run: its runs' inputs and results (opaque). */
@@ -116,7 +120,8 @@ CS_API cs_sweep_def cs_default_sweep_def(void);
  *         with resume, nothing left to run (cs_sweep_ran 0); CS_ERR_INVALID: a def of a size this library
  *         does not know, a spec with problems (each printed to def->errors; the first, or their count, in
  *         err) or a folder that cannot be resumed, nothing run; CS_ERR_IO: the folder could not be taken or
- *         the outputs written (the runs done are kept in its journal for a resume); CS_ERR_MEMORY. */
+ *         the outputs written (the runs done are kept in its journal for a resume), or the outputs are in
+ *         place but an earlier study's file there could not be removed (named in err); CS_ERR_MEMORY. */
 CS_API cs_status cs_sweep_study(const cs_sweep_def *def, cs_sweep **out, cs_error *err);
 /** Check a study without running it, as `cablesim check SPEC` does: the spec with def's changes, and its
  * model with the inputs of run 0 and with each grid level. Nothing is written, no folder is taken.

@@ -23,6 +23,7 @@ struct cs_compare {
         dev_t dev;
         ino_t ino;
     } folders[CS_COMPARE_MAX_RUNS + 1]; /* the runs' folders and the measured file's: none is written into */
+    char force[64]; /* the way to CS_COMPARE_FORCE a refusal of a folder names (the def's force_given) */
 };
 
 /* Keep the device and inode of the folder path (a run's), or of the one holding it (a measured file's)
@@ -87,6 +88,8 @@ cs_status cs_compare_create(const cs_compare_def *given, cs_compare **out, cs_er
         cs_compare_free(c);
         return rc;
     }
+    snprintf(c->force, sizeof c->force, "%s",
+             def.force_given ? def.force_given : "the flag CS_COMPARE_FORCE");
     *out = c;
     return cs_status_set(err, CS_OK, "");
 }
@@ -140,17 +143,18 @@ cs_status cs_compare_write(const cs_compare *c, const char *dir, int flags, cs_e
     for (int i = 0; stat(dir, &at) == 0 && i < c->count; i++)
         if (c->folders[i].ino == at.st_ino && c->folders[i].dev == at.st_dev)
             return cs_error_set(err, CS_ERR_IO,
-                                "%s is the folder of %s %s compared: writing there would remove a run's "
-                                "files; choose another folder",
+                                "nothing written: %s is the folder of %s %s compared: writing there would "
+                                "remove a run's files; choose another folder",
                                 dir, c->traces[i].measured ? "the measured history" : "the run",
                                 c->traces[i].label);
     cs_error wrote;
     cs_outdir out;
-    cs_status st = cs_out_open(&out, dir, "compare", flags & CS_COMPARE_FORCE ? CS_OUT_FORCE : 0, err);
+    cs_status st =
+        cs_out_open(&out, dir, "compare", flags & CS_COMPARE_FORCE ? CS_OUT_FORCE : 0, c->force, err);
     if (st == CS_OK && cs_compare_write_traces(&out, c->traces, c->count, c->reference, &wrote) != CS_OK)
         st = cs_status_set(err, CS_ERR_IO, wrote.message); /* the status cablesim/compare.h promises */
     if (st == CS_OK) st = cs_out_commit(&out, err);
-    if (st != CS_OK) cs_out_abort(&out);
+    if (st != CS_OK) cs_out_fail(&out, st, err);
     cs_plot_release(); /* after the last plot (fontconfig's caches) */
     return st == CS_OK ? cs_status_set(err, CS_OK, "") : st;
 }

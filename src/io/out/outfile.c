@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 enum { PATH_SIZE = 1400, MAX_DEPTH = 32 };
@@ -225,17 +226,20 @@ static int fingerprint(const char *path, cs_out_print *p) {
     return 0;
 }
 
-/* A manifest line's "SIZE<tab>HASH" (decimal bytes, 16 hex digits) into p: 1, else 0. */
+/* A manifest line's "SIZE<tab>HASH" into p, read strictly as write_manifest writes it: the size in decimal
+ * digits (no sign, space or leading zero but that of "0"), the hash in 16 lowercase hex digits. 1, else 0:
+ * another text there is not cablesim's. */
 static int read_print(const char *text, cs_out_print *p) {
-    char *end;
+    size_t digits = strspn(text, "0123456789");
+    const char *h = text + digits + 1;
+    if (digits == 0 || (text[0] == '0' && digits > 1) || text[digits] != '\t' ||
+        strspn(h, "0123456789abcdef") != 16 || h[16])
+        return 0;
     errno = 0;
-    long long size = strtoll(text, &end, 10);
-    if (end == text || *end != '\t' || size < 0 || errno) return 0;
-    const char *h = end + 1;
-    unsigned long long hash = strtoull(h, &end, 16);
-    if (end - h != 16 || *end || errno) return 0;
+    long long size = strtoll(text, NULL, 10);
+    if (errno) return 0; /* past a long long */
     p->size = size;
-    p->hash = hash;
+    p->hash = strtoull(h, NULL, 16);
     return 1;
 }
 
@@ -259,84 +263,168 @@ static int written(const cs_outdir *out, const char *rel) {
 
 /* ---- the lock ---- */
 
-/* The pid of the lock's holder: the system's word, else the pid the file holds; 0 if neither says. */
-static long lock_holder(int fd) {
-    struct flock fl = {0};
-    fl.l_type = F_WRLCK;
-    fl.l_whence = SEEK_SET;
-    if (fcntl(fd, F_GETLK, &fl) == 0 && fl.l_type != F_UNLCK && fl.l_pid > 0) return (long)fl.l_pid;
-    char text[32] = "";
-    ssize_t n = pread(fd, text, sizeof text - 1, 0);
-    return n > 0 ? strtol(text, NULL, 10) : 0;
+/* The lock file's text, the whole of it: LOCK_HEAD, "pid N" and "host NAME" (its holder's), a line each. A
+ * file of that name holding anything else is not cablesim's: it is neither truncated nor removed. */
+#define LOCK_HEAD "cablesim lock\n"
+enum { LOCK_TEXT_SIZE = 512, HOST_SIZE = 256, PID_DIGITS = 9 };
+
+/* What a lock file's text is: the whole of cablesim's, the beginning of one (a lock being written, between
+ * its file's making and its text), or another's. */
+typedef enum { LOCK_WHOLE, LOCK_BEGUN, LOCK_OTHER } lock_kind;
+
+/* This machine's name into host (HOST_SIZE), as the lock's text holds it: a byte outside '!'..'~' as '?'. */
+static void host_name(char *host) {
+    if (gethostname(host, HOST_SIZE) != 0 || !host[0]) snprintf(host, HOST_SIZE, "?");
+    host[HOST_SIZE - 1] = '\0';
+    for (char *c = host; *c; c++)
+        if (*c < '!' || *c > '~') *c = '?';
 }
 
-/* Whether the lock file fd (st its status) is one cablesim made: a regular file of one name (no hard link
- * to a file elsewhere), empty or holding a pid. Anything else is a user's file: it is neither truncated nor
- * removed. */
-static int lock_is_ours(int fd, const struct stat *st) {
-    char text[32];
-    if (!S_ISREG(st->st_mode) || st->st_nlink != 1 || st->st_size >= (off_t)sizeof text) return 0;
-    ssize_t n = pread(fd, text, sizeof text, 0);
-    if (n < 0 || n != st->st_size) return 0;
-    for (ssize_t i = 0; i < n; i++)
-        if (!(text[i] >= '0' && text[i] <= '9') && !(text[i] == '\n' && i == n - 1)) return 0;
+/* Whether t (n bytes) goes on at *i with the text s: 1 (*i past it), 0 t ends before s does, -1 not. */
+static int lock_word(const char *t, size_t n, size_t *i, const char *s) {
+    for (; *s; s++, ++*i) {
+        if (*i == n) return 0;
+        if (t[*i] != *s) return -1;
+    }
     return 1;
 }
 
-/* DIR/.cablesim-lock, created if missing, locked (fcntl) and holding this pid. A lock whose holder died
- * was released by the system and is taken over; a file of that name that is not a lock is refused. */
-static cs_status take_lock(cs_outdir *out, cs_error *err) {
-    char path[PATH_SIZE];
+/* Whether t goes on at *i with 1 to max bytes from lo to hi (the first not zero when zero_first is 0) and
+ * '\n', as lock_word says; the bytes into field (max + 1). */
+static int lock_field(const char *t, size_t n, size_t *i, char lo, char hi, int zero_first, size_t max,
+                      char *field) {
+    size_t k = 0;
+    for (; *i < n && t[*i] >= lo && t[*i] <= hi; ++*i) {
+        if (k == max || (k == 0 && !zero_first && t[*i] == '0')) return -1;
+        field[k++] = t[*i];
+    }
+    field[k] = '\0';
+    if (*i == n) return 0;
+    return k > 0 && t[(*i)++] == '\n' ? 1 : -1;
+}
+
+/* What the lock file's text t (n bytes) is; a whole one's pid and host into pid and host (HOST_SIZE). */
+static lock_kind lock_text(const char *t, size_t n, long *pid, char *host) {
+    char digits[PID_DIGITS + 1];
+    size_t i = 0;
+    int r = lock_word(t, n, &i, LOCK_HEAD "pid ");
+    if (r > 0) r = lock_field(t, n, &i, '0', '9', 0, PID_DIGITS, digits);
+    if (r > 0) r = lock_word(t, n, &i, "host ");
+    if (r > 0) r = lock_field(t, n, &i, '!', '~', 1, HOST_SIZE - 1, host);
+    if (r < 0 || (r > 0 && i < n)) return LOCK_OTHER;
+    if (r == 0) return LOCK_BEGUN;
+    *pid = strtol(digits, NULL, 10);
+    return LOCK_WHOLE;
+}
+
+static int same_file(const struct stat *a, const struct stat *b) {
+    return a->st_dev == b->st_dev && a->st_ino == b->st_ino;
+}
+
+/* The pid of the process holding the lock file fd's fcntl lock; 0 if none does (or the system cannot say). */
+static long lock_holder(int fd) {
+    struct flock fl = {.l_type = F_WRLCK, .l_whence = SEEK_SET};
+    return fcntl(fd, F_GETLK, &fl) == 0 && fl.l_type != F_UNLCK && fl.l_pid > 0 ? (long)fl.l_pid : 0;
+}
+
+/* DIR/.cablesim-lock just made (fd, O_EXCL), held: locked (fcntl) and given this process's text. */
+static cs_status hold_lock(cs_outdir *out, int fd, const char *path, const char *host, cs_error *err) {
+    char text[LOCK_TEXT_SIZE];
+    int n = snprintf(text, sizeof text, LOCK_HEAD "pid %ld\nhost %s\n", (long)getpid(), host);
+    struct flock fl = {.l_type = F_WRLCK, .l_whence = SEEK_SET};
+    out->lock = fd; /* signals are held: the handler knows the file at once */
+    if (fcntl(fd, F_SETLK, &fl) == 0 || errno == ENOLCK) { /* ENOLCK: no locks on this file system */
+        ssize_t w = pwrite(fd, text, (size_t)n, 0);
+        if (w == n) return CS_OK;
+        if (w >= 0) errno = ENOSPC;
+    }
+    int errnum = errno;
+    unlink(path);
+    close(fd);
+    out->lock = -1;
+    return cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errnum));
+}
+
+/* Remove the lock file named (as lstat found it) whose text was t (n bytes), a lock whose holder has ended,
+ * while holding its fcntl lock (of two runs taking it over, one removes it) and only while the name holds
+ * that file with that text. 0: removed, or gone since; -1 with errno set. */
+static int remove_ended(const char *path, const struct stat *named, const char *t, ssize_t n) {
+    int fd = open(path, O_RDWR | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+    if (fd < 0) return errno == ENOENT || errno == ELOOP ? 0 : -1;
+    struct flock fl = {.l_type = F_WRLCK, .l_whence = SEEK_SET};
+    struct stat held, now;
+    char again[LOCK_TEXT_SIZE];
+    int rc = 0;
+    if (fstat(fd, &held) == 0 && same_file(&held, named) &&
+        (fcntl(fd, F_SETLK, &fl) == 0 || errno == ENOLCK) && pread(fd, again, sizeof again, 0) == n &&
+        memcmp(again, t, (size_t)n) == 0 && lstat(path, &now) == 0 && same_file(&now, &held))
+        rc = unlink(path);
+    int errnum = errno;
+    close(fd);
+    errno = errnum;
+    return rc == 0 || errnum == ENOENT ? 0 : -1;
+}
+
+/* DIR/.cablesim-lock made (O_EXCL: of two runs, one makes it), locked (fcntl) and holding this process's
+ * text. One there already is another cablesim's while the system says a process holds it, or its text names a
+ * process still running, or another machine; one whose holder has ended (a kill -9) is removed and made
+ * anew. A file of that name whose text is not a lock's is the user's, and the folder is refused. */
+static cs_status take_lock(cs_outdir *out, const char *force, cs_error *err) {
+    char path[PATH_SIZE], host[HOST_SIZE], held_host[HOST_SIZE], text[LOCK_TEXT_SIZE];
     full_path(out, CS_OUT_LOCK, path, sizeof path);
-    for (int tries = 0; tries < 16; tries++) {
-        int fd = open(path, O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0666);
-        if (fd < 0) {
+    host_name(host);
+    for (int tries = 0, waits = 0; tries < 64; tries++) {
+        int fd = open(path, O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
+        if (fd >= 0) return hold_lock(out, fd, path, host, err);
+        if (errno != EEXIST) {
             return cs_error_set(err, CS_ERR_IO, "%s: cannot write there: %s", out->dir, strerror(errno));
         }
-        struct flock fl = {0};
-        fl.l_type = F_WRLCK;
-        fl.l_whence = SEEK_SET;
-        if (fcntl(fd, F_SETLK, &fl) != 0 && errno != ENOLCK) { /* ENOLCK: no locks on this file system */
-            int errnum = errno;
-            long pid = lock_holder(fd);
+        struct stat named, held;
+        if (lstat(path, &named) != 0) continue; /* gone since: make it */
+        ssize_t n = -1;
+        long holder = 0, pid = 0;
+        if (S_ISREG(named.st_mode) && named.st_nlink == 1) {
+            fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+            if (fd < 0 && errno != ENOENT && errno != ELOOP) {
+                return cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
+            }
+            if (fd < 0) continue; /* gone or replaced since */
+            int errnum = 0;
+            if (fstat(fd, &held) == 0 && same_file(&held, &named)) {
+                holder = lock_holder(fd);
+                n = pread(fd, text, sizeof text, 0);
+                errnum = n < 0 ? errno : 0;
+            }
             close(fd);
-            if (errnum != EACCES && errnum != EAGAIN) {
-                cs_error_set(err, CS_ERR_IO, "%s: cannot lock: %s", path, strerror(errnum));
-            } else if (pid > 0) {
-                cs_error_set(
-                    err, CS_ERR_IO,
-                    "%s is in use by another cablesim (pid %ld holds %s): wait for it to end, or write "
-                    "elsewhere",
-                    out->dir, pid, path);
-            } else {
-                cs_error_set(err, CS_ERR_IO,
-                             "%s is in use by another cablesim (it holds %s): wait for it to end", out->dir,
-                             path);
-            }
-            return CS_ERR_IO;
+            if (errnum) return cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errnum));
+            if (n < 0) continue; /* replaced since */
         }
-        /* the holder before may have removed the file as this took it: then take the new one */
-        struct stat held, now;
-        if (fstat(fd, &held) == 0 && lstat(path, &now) == 0 && held.st_dev == now.st_dev &&
-            held.st_ino == now.st_ino) {
-            if (!lock_is_ours(fd, &held)) {
-                close(fd);
-                return cs_error_set(err, CS_ERR_IO,
-                                    "%s: not a lock of cablesim's (a file of yours, or a link to one): it is "
-                                    "kept; remove it or write elsewhere",
-                                    path);
-            }
-            char pid[32];
-            int n = snprintf(pid, sizeof pid, "%ld\n", (long)getpid());
-            if (ftruncate(fd, 0) != 0 || pwrite(fd, pid, (size_t)n, 0) != n) {
-                cs_status st = cs_error_set(err, CS_ERR_IO, "%s: %s", path, strerror(errno));
-                close(fd);
-                return st;
-            }
-            out->lock = fd;
-            return CS_OK;
+        lock_kind kind = n < 0 ? LOCK_OTHER : lock_text(text, (size_t)n, &pid, held_host);
+        if (kind == LOCK_BEGUN && !holder && waits++ < 20) { /* its maker writes it within microseconds */
+            nanosleep(&(struct timespec){0, 5000000}, NULL);
+            continue;
         }
-        close(fd);
+        if (kind != LOCK_WHOLE && !(kind == LOCK_BEGUN && holder)) {
+            return cs_error_set(
+                err, CS_ERR_IO,
+                "%s: not a lock of cablesim's (a file of yours, or a link to one): it is kept, "
+                "and the folder cannot be locked beside it%s%s: move it away, or write elsewhere",
+                path, force ? ", even with " : "", force ? force : "");
+        }
+        int other_host = !holder && strcmp(held_host, host) != 0;
+        if (holder || other_host || kill((pid_t)pid, 0) == 0 || errno == EPERM) {
+            return cs_error_set(
+                err, CS_ERR_IO,
+                "%s is in use by another cablesim (pid %ld%s%s holds %s): wait for it to end, or "
+                "write elsewhere%s",
+                out->dir, holder ? holder : pid, other_host ? " on " : "", other_host ? held_host : "", path,
+                holder ? "" : " (if it has ended, remove that file)");
+        }
+        if (remove_ended(path, &named, text, n) != 0) {
+            return cs_error_set(err, CS_ERR_IO,
+                                "%s: the lock of an ended cablesim (pid %ld), cannot be removed: %s", path,
+                                pid, strerror(errno));
+        }
     }
     return cs_error_set(err, CS_ERR_IO, "%s: cannot take the lock: other cablesim runs keep taking it", path);
 }
@@ -472,9 +560,9 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
     return CS_OK;
 }
 
-/* DIR/.cablesim-manifest: the files written, and with prev those of the earlier manifest too, through
- * a temporary and a rename. */
-static cs_status write_manifest(cs_outdir *out, int with_prev, cs_error *err) {
+/* DIR/.cablesim-manifest: the files written and those of the earlier manifest still cablesim's (not removed
+ * by this commit), through a temporary and a rename. */
+static cs_status write_manifest(cs_outdir *out, cs_error *err) {
     char tmp[PATH_SIZE], path[PATH_SIZE];
     full_path(out, CS_OUT_MANIFEST, path, sizeof path);
     int fd = begin_aside(out, "manifest", tmp);
@@ -492,7 +580,7 @@ static cs_status write_manifest(cs_outdir *out, int with_prev, cs_error *err) {
     fprintf(f, "# written by: cablesim %s\n", out->command);
     for (int i = 0; i < out->count; i++)
         fprintf(f, "%s\t%lld\t%016llx\n", out->names[i], out->prints[i].size, out->prints[i].hash);
-    for (int i = 0; with_prev && i < out->prev_count; i++) {
+    for (int i = 0; i < out->prev_count; i++) {
         const cs_out_listed *e = &out->prev[i];
         if (e->ours == 1 && !written(out, e->name))
             fprintf(f, "%s\t%lld\t%016llx\n", e->name, e->print.size, e->print.hash);
@@ -570,24 +658,25 @@ static int scan(const cs_outdir *out, const char *rel, int depth, int remove, ch
     return rc;
 }
 
-/* Refuse a folder holding a file no manifest lists (unless CS_OUT_FORCE), else remove the temporaries
- * a killed run left. */
-static cs_status check_contents(cs_outdir *out, cs_error *err) {
+/* Refuse a folder holding a file no manifest lists (unless CS_OUT_FORCE; the refusal names force, the
+ * caller's way to it, as cs_out_open says), else remove the temporaries a killed run left. */
+static cs_status check_contents(cs_outdir *out, const char *force, cs_error *err) {
     if (out->flags & CS_OUT_FORCE) return CS_OK;
-    char found[PATH_SIZE], why[PATH_SIZE];
+    char found[PATH_SIZE], why[PATH_SIZE], how[160];
     int rc = scan(out, "", 0, 0, found, sizeof found, err);
+    if (force)
+        snprintf(how, sizeof how, "write beside such files with %s (none of them is removed)", force);
+    else
+        snprintf(how, sizeof how, "move such files out of it");
     if (rc == 1)
-        cs_error_set(
-            err, CS_ERR_IO,
-            "%s holds %s, which %s: choose another folder, or give --force to write beside such files "
-            "(none of them is removed)",
-            out->dir, found, not_ours(out, found, why, sizeof why));
+        cs_error_set(err, CS_ERR_IO, "%s holds %s, which %s: choose another folder, or %s", out->dir, found,
+                     not_ours(out, found, why, sizeof why), how);
     if (rc == 0) rc = scan(out, "", 0, 1, found, sizeof found, err);
     return rc == 0 ? CS_OK : CS_ERR_IO;
 }
 
 /* cs_out_open's folders made and lock taken, with signals held: both are known to the handler at once. */
-static cs_status open_held(cs_outdir *out, const char *dir, cs_error *err) {
+static cs_status open_held(cs_outdir *out, const char *dir, const char *force, cs_error *err) {
     snprintf(out->dir, sizeof out->dir, "%s", dir);
     enlist(out);
     char part[1024];
@@ -609,12 +698,13 @@ static cs_status open_held(cs_outdir *out, const char *dir, cs_error *err) {
         cs_out_abort(out);
         return cs_error_set(err, CS_ERR_IO, "%s: %s", dir, strerror(found ? ENOTDIR : errno));
     }
-    cs_status status = take_lock(out, err);
+    cs_status status = take_lock(out, force, err);
     if (status != CS_OK) cs_out_abort(out);
     return status;
 }
 
-cs_status cs_out_open(cs_outdir *out, const char *dir, const char *command, int flags, cs_error *err) {
+cs_status cs_out_open(cs_outdir *out, const char *dir, const char *command, int flags, const char *force,
+                      cs_error *err) {
     memset(out, 0, sizeof *out);
     out->lock = out->journal = -1;
     out->flags = flags;
@@ -627,12 +717,12 @@ cs_status cs_out_open(cs_outdir *out, const char *dir, const char *command, int 
     }
     sigset_t old;
     hold_signals(&old);
-    cs_status status = open_held(out, dir, err);
+    cs_status status = open_held(out, dir, force, err);
     let_signals(&old);
     /* the manifest's files read and hashed with signals let through: a Ctrl-C is taken at once, and the
      * handler finds the folders made and the lock, all it removes */
     if (status == CS_OK) status = read_manifest(out, err);
-    if (status == CS_OK) status = check_contents(out, err);
+    if (status == CS_OK) status = check_contents(out, force, err);
     if (status != CS_OK && out->lock >= 0) cs_out_abort(out);
     return status;
 }
@@ -817,19 +907,18 @@ static void sync_folder(const cs_outdir *out, const char *rel, int len) {
     }
 }
 
-/* Remove the earlier run's file rel, a file (not a folder) in a folder of this one (not through a link). */
-static cs_status remove_earlier(const cs_outdir *out, const char *rel, cs_error *err) {
+/* Remove the earlier run's file rel, a file (not a folder) in a folder of this one (not through a link).
+ * 0: removed, or not there; else the errno of the failed removal. */
+static int remove_earlier(const cs_outdir *out, const char *rel) {
     char path[PATH_SIZE];
     struct stat st;
     for (const char *s = strchr(rel, '/'); s; s = strchr(s + 1, '/')) {
         snprintf(path, sizeof path, "%s/%.*s", out->dir, (int)(s - rel), rel);
-        if (lstat(path, &st) != 0 || !S_ISDIR(st.st_mode)) return CS_OK;
+        if (lstat(path, &st) != 0 || !S_ISDIR(st.st_mode)) return 0;
     }
     full_path(out, rel, path, sizeof path);
-    if (lstat(path, &st) != 0 || S_ISDIR(st.st_mode)) return CS_OK;
-    if (unlink(path) == 0 || errno == ENOENT) return CS_OK;
-    return cs_error_set(err, CS_ERR_IO, "%s: an earlier run's file, cannot be removed: %s", path,
-                        strerror(errno));
+    if (lstat(path, &st) != 0 || S_ISDIR(st.st_mode)) return 0;
+    return unlink(path) == 0 || errno == ENOENT ? 0 : errno;
 }
 
 /* cs_out_commit once every file is on the disk: the manifests and the renames. */
@@ -843,9 +932,8 @@ static cs_status put_in_place(cs_outdir *out, cs_error *err) {
     for (int i = 0; st == CS_OK && i < out->count; i++)
         st = place_free(out, out->names[i], err);
     /* the manifest first names both runs' files, so that every file cablesim put here stays its own */
-    if (st == CS_OK) st = write_manifest(out, 1, err);
+    if (st == CS_OK) st = write_manifest(out, err);
     if (st != CS_OK) return st;
-    int earlier = 0; /* the earlier run's files this run does not write: removed below */
     for (int i = 0; i < out->count; i++) {
         full_path(out, out->tmps[i], tmp, sizeof tmp);
         full_path(out, out->names[i], final, sizeof final);
@@ -853,20 +941,30 @@ static cs_status put_in_place(cs_outdir *out, cs_error *err) {
             return cs_error_set(err, CS_ERR_IO, "%s: %s", final, strerror(errno));
         }
     }
+    out->in_place = 1;
+    /* the earlier run's files this run does not write, removed; one that cannot be stays in the manifest,
+     * cablesim's for the next run to remove */
+    int removed = 0, kept = 0, kept_at = 0, kept_errno = 0;
     for (int i = 0; i < out->prev_count; i++) {
         const char *rel = out->prev[i].name, *slash = strrchr(rel, '/');
         if (out->prev[i].ours != 1 || written(out, rel)) continue;
-        earlier++;
-        if ((st = remove_earlier(out, rel, err)) != CS_OK) return st;
+        int errnum = remove_earlier(out, rel);
+        if (errnum) {
+            if (!kept++) kept_at = i, kept_errno = errnum;
+            continue;
+        }
+        out->prev[i].ours = 2, removed++;
         if (slash) { /* a subfolder this left empty */
             full_path(out, rel, tmp, sizeof tmp);
             tmp[strlen(out->dir) + 1 + (size_t)(slash - rel)] = '\0';
             rmdir(tmp);
         }
     }
-    /* the commit point: the manifest of this run's files alone (the first already is, when it named no
-     * earlier file besides them) */
-    if (earlier && (st = write_manifest(out, 0, err)) != CS_OK) return st;
+    /* the commit point: the manifest without the files removed (the first already is, when it named none) */
+    cs_error why;
+    if (removed && write_manifest(out, &why) != CS_OK) {
+        return cs_error_set(err, CS_ERR_IO, "the new results are in %s, but %s", out->dir, why.message);
+    }
     if (out->journal >= 0) { /* this sweep's journal: its runs are in the outputs now */
         full_path(out, CS_OUT_JOURNAL, tmp, sizeof tmp);
         unlink(tmp);
@@ -878,11 +976,19 @@ static cs_status put_in_place(cs_outdir *out, cs_error *err) {
         if (len && (i == 0 || strncmp(out->names[i - 1], out->names[i], (size_t)len + 1) != 0))
             sync_folder(out, out->names[i], len);
     }
+    char more[40] = "";
+    if (kept > 1) snprintf(more, sizeof more, " (and %d more of its files)", kept - 1);
+    if (kept) {
+        st = cs_error_set(err, CS_ERR_IO,
+                          "the new results are in %s, but the earlier run's %s could not be removed: %s%s; "
+                          "%s still lists it for the next run there to remove",
+                          out->dir, out->prev[kept_at].name, strerror(kept_errno), more, CS_OUT_MANIFEST);
+    }
     out->count = 0;
     out->made = out->subdir_count = 0; /* the folders hold a result now */
     release(out);
     delist(out);
-    return CS_OK;
+    return st;
 }
 
 cs_status cs_out_commit(cs_outdir *out, cs_error *err) {
@@ -901,6 +1007,16 @@ cs_status cs_out_commit(cs_outdir *out, cs_error *err) {
     st = put_in_place(out, err);
     let_signals(&old);
     return st;
+}
+
+cs_status cs_out_fail(cs_outdir *out, cs_status status, cs_error *err) {
+    cs_out_abort(out);
+    if (err && !out->in_place) {
+        char why[CS_MESSAGE_SIZE];
+        memcpy(why, err->message, sizeof why);
+        cs_error_set(err, status, "nothing written: %s", why);
+    }
+    return status;
 }
 
 void cs_out_abort(cs_outdir *out) {

@@ -1,12 +1,14 @@
 /* SPDX-License-Identifier: MIT */
 /* A command's output folder, which never loses a file cablesim did not write.
  *
- * cs_out_open makes the folder, takes its lock (DIR/.cablesim-lock, flock'ed, holding the pid: a second
- * cablesim into the same folder is refused with that pid; a lock whose holder died is taken over) and
- * reads the manifest an earlier run left (DIR/.cablesim-manifest: every file that run wrote, one a
- * line with its size in bytes and the 64-bit FNV-1a hash of its bytes). A listed file is cablesim's only
- * while it is as written: one changed since (its size or hash differs, or it is no longer a regular file),
- * or listed without a size and hash (a line typed in), is the user's. A folder holding a file that is not
+ * cs_out_open makes the folder, takes its lock (DIR/.cablesim-lock, made with O_EXCL, fcntl-locked, its text
+ * "cablesim lock", the pid and the host: a second cablesim into the same folder is refused with that pid; a
+ * lock whose holder has ended is removed and made anew; a file of that name with any other text is the
+ * user's, kept, and the folder refused, even with CS_OUT_FORCE) and reads the manifest an earlier run left
+ * (DIR/.cablesim-manifest: every file that run wrote, one a line with its size in bytes and the 64-bit FNV-1a
+ * hash of its bytes). A listed file is cablesim's only while it is as written: one changed since (its size or
+ * hash differs, or it is no longer a regular file), or listed without a size and hash (a line typed in) or
+ * with them in another form than cablesim writes, is the user's. A folder holding a file that is not
  * cablesim's is refused, naming it, unless CS_OUT_FORCE: then the run writes beside such files and touches
  * none of them (nor writes over one).
  *
@@ -50,10 +52,11 @@ typedef struct cs_out_print {
     unsigned long long hash;
 } cs_out_print;
 
-/* A line of the earlier manifest. ours 1: the file is as that run wrote it, or gone; 0: a file of that name
- * is there, changed since; -1: the line gives no size and hash (typed in); -2: another command wrote it (a
- * sweep's results, met by a run), or one the manifest does not name (its "written by" line edited). A file
- * not ours is kept: the user's, or another command's results. */
+/* A line of the earlier manifest. ours 1: the file is as that run wrote it, or gone (2: removed by this run's
+ * commit); 0: a file of that name
+ * is there, changed since; -1: the line gives no size and hash in cablesim's form (typed in, or edited); -2:
+ * another command wrote it (a sweep's results, met by a run), or one the manifest does not name (its "written
+ * by" line edited). A file not ours is kept: the user's, or another command's results. */
 typedef struct cs_out_listed {
     char name[128];
     cs_out_print print;
@@ -77,19 +80,23 @@ typedef struct cs_outdir {
     char prev_command[16]; /* the earlier manifest's; "" if it names none, or two (another's results) */
     char aside[48]; /* the temporary of the manifest or the journal being written, relative to dir; "" */
     int lock;       /* the lock's file descriptor, -1 when not held */
+    int in_place;   /* 1 once cs_out_commit has renamed the files into place (it may fail after that) */
     int journal;    /* the journal's, open for appending; -1: none */
     unsigned mode;  /* the files' permissions: 0666 less the umask */
 } cs_outdir;
 
 /* Create dir (and its parents), take its lock and read its manifest, before anything is computed, for
  * the command (`cablesim COMMAND`: "run", "sweep", "validate", "compare", "designer") that writes it: the
- * files another command wrote there are that command's results, kept as the user's are.
+ * files another command wrote there are that command's results, kept as the user's are. force names the
+ * caller's way to CS_OUT_FORCE as its user gives it ("--force" on the command line, "the flag
+ * CS_COMPARE_FORCE" in the library), which a refusal of the folder names; NULL: the caller has none.
  * Returns CS_OK, or CS_ERR_IO with err filled ("DIR: Not a directory", "DIR is in use by cablesim pid N",
  * "DIR holds notes.txt, which no cablesim run wrote there ...", or "... which has changed since cablesim
  * wrote it there ..."); CS_ERR_INVALID for a path too long, CS_ERR_MEMORY for a manifest that does not fit
  * in memory. Once it returned CS_OK, cs_out_commit or cs_out_abort ends out's use before out goes away
  * (cs_out_signal_cleanup reads it until then). */
-cs_status cs_out_open(cs_outdir *out, const char *dir, const char *command, int flags, cs_error *err);
+cs_status cs_out_open(cs_outdir *out, const char *dir, const char *command, int flags, const char *force,
+                      cs_error *err);
 /* Create DIR/subdir, for files named "subdir/...". Returns CS_OK, or CS_ERR_IO with err filled. */
 cs_status cs_out_subdir(cs_outdir *out, const char *subdir, cs_error *err);
 /* Start a temporary for DIR/name. NULL with err filled on failure: CS_ERR_INVALID for a name longer than
@@ -113,8 +120,15 @@ cs_status cs_out_begin_path(cs_outdir *out, const char *name, char *path, size_t
 cs_status cs_out_end_path(cs_outdir *out, cs_error *err);
 /* Fsync every temporary, judge the earlier files again (as cs_out_open did), rename each to its name, remove
  * the files of the earlier manifest that this run did not write (and a subfolder they leave empty), write the
- * manifest, release the lock. Returns CS_OK, or CS_ERR_IO with err filled (then call cs_out_abort). */
+ * manifest, release the lock. Returns CS_OK, or CS_ERR_IO with err filled (then call cs_out_fail). An earlier
+ * file that cannot be removed (a read-only folder) stays listed in the manifest, for the next run to remove,
+ * and the commit ends, the new files in place (out->in_place), returning CS_ERR_IO: "the new results are in
+ * DIR, but the earlier run's plots/speed.png could not be removed: Permission denied; ...". */
 cs_status cs_out_commit(cs_outdir *out, cs_error *err);
+/* After a failure while out was open (status, err its reason): cs_out_abort, and err's message begun with
+ * "nothing written: " unless the commit had put the files in place (its message then says so). Returns
+ * status. err may be NULL. */
+cs_status cs_out_fail(cs_outdir *out, cs_status status, cs_error *err);
 /* A journal in the folder (DIR/.cablesim-journal, a sweep's: each run's result as it finishes), which
  * outlives a kill -9, a power cut or a failed write of the outputs, and which the commit of the sweep that
  * keeps it removes (the outputs hold it all then); to another command it is another command's results.

@@ -57,10 +57,10 @@ cs_status cs_write_outputs(const char *dir, const cs_model_input *in, const cs_m
     cs_summary sm = {.size = sizeof sm};
     cs_state_summary(state, &sm, NULL);
     cs_run_info_motion(&info, in, rec, state, &sm);
-    cs_status st = cs_out_open(&out, dir, "run", 0, err);
+    cs_status st = cs_out_open(&out, dir, "run", 0, NULL, err); /* the interface has no way to force */
     if (st == CS_OK) st = cs_write_run_files(&out, in, model, state, rec, &info, flags, NULL, NULL, err);
     if (st == CS_OK) st = cs_out_commit(&out, err);
-    if (st != CS_OK) cs_out_abort(&out);
+    if (st != CS_OK) cs_out_fail(&out, st, err);
     return st == CS_OK ? cs_status_set(err, CS_OK, NULL) : st;
 }
 

@@ -72,6 +72,7 @@ cs_status cs_sweep_options_of(const cs_sweep_def *given, cs_sweep_options *o, cs
         o->sets[o->set_count++] = def.sets[i];
     }
     o->errors = def.errors, o->progress = def.progress, o->closing = def.closing;
+    o->force_given = def.force_given;
     return CS_OK;
 }
 

@@ -251,11 +251,14 @@ static int write_all(cs_outdir *out, const cs_sweep_spec *spec, const double *x,
     }
     if (rc == CS_OK) rc = cs_out_commit(out, &err);
     if (rc != CS_OK) {
-        cs_out_abort(out);
-        cs_sweep_say(o,
-                     "nothing written: %s; the runs done are kept in %s/%s: `cablesim sweep --resume %s` "
-                     "writes the study once that is put right",
-                     err.message, out->dir, CS_OUT_JOURNAL, out->dir);
+        cs_out_fail(out, rc, &err);
+        if (out->in_place) /* the journal's runs are in the outputs */
+            cs_sweep_say(o, "%s", err.message);
+        else
+            cs_sweep_say(o,
+                         "%s; the runs done are kept in %s/%s: `cablesim sweep --resume %s` writes the study "
+                         "once that is put right",
+                         err.message, out->dir, CS_OUT_JOURNAL, out->dir);
     }
     return rc == CS_OK ? 0 : -1;
 }
@@ -443,7 +446,9 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, cs_sweep **kee
             rc = EXIT_RUN;
         } else if (o->resume && (done = cs_sweep_resume_runs(dir, spec, &was, x, all, n, o)) < 0) {
             rc = EXIT_BAD;
-        } else if (cs_out_open(&out, dir, "sweep", o->force ? CS_OUT_FORCE : 0, &err) != CS_OK) {
+        } else if (cs_out_open(&out, dir, "sweep", o->force ? CS_OUT_FORCE : 0,
+                               o->force_given ? o->force_given : "cs_sweep_def's force set to 1",
+                               &err) != CS_OK) {
             cs_sweep_say(o, "nothing run: %s", err.message);
             rc = EXIT_RUN;
         } else if (out_open = 1, start_journal(&out, spec, x, all, n, &err) != CS_OK) {

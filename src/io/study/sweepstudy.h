@@ -38,6 +38,7 @@ typedef struct cs_sweep_options {
     int allow_count;
     const char *sets[CS_SWEEP_MAX_SETS];
     const char *sets_given[CS_SWEEP_MAX_SETS]; /* the option each stands for as given, or NULL: a --set */
+    const char *force_given; /* the option that stands for force as given ("--force"), or NULL: the def's */
     int set_count;
     char set_text[CS_SWEEP_MAX_SETS][1100]; /* --t-end and --dt as sets */
 } cs_sweep_options;

@@ -170,7 +170,7 @@ cs_validate_suite *cs_validate_begin(const cs_validate_opts *o, int *status) {
     cs_validate_suite *s = suite_create(o);
     if (!s) return NULL;
     cs_error err;
-    if (cs_out_open(&s->out, o->dir, "validate", o->force ? CS_OUT_FORCE : 0, &err) != CS_OK) {
+    if (cs_out_open(&s->out, o->dir, "validate", o->force ? CS_OUT_FORCE : 0, "--force", &err) != CS_OK) {
         fprintf(o->err, "cablesim validate: nothing run: %s\n", err.message);
         suite_free(s);
         return NULL;
@@ -222,8 +222,8 @@ int cs_validate_finish(cs_validate_suite *s) {
     int bad = cs_out_end_at(&s->out, 0, md, &err) != CS_OK;
     if (cs_out_end_at(&s->out, 1, csv, &err) != CS_OK) bad = 1;
     if (bad || cs_out_commit(&s->out, &err) != CS_OK) {
-        cs_out_abort(&s->out);
-        fprintf(o->err, "cablesim validate: nothing written: %s\n", err.message);
+        cs_out_fail(&s->out, CS_ERR_IO, &err);
+        fprintf(o->err, "cablesim validate: %s\n", err.message);
         suite_free(s);
         return 1;
     }
