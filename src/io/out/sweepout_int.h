@@ -9,6 +9,8 @@
 enum {
     C_OUTCOME,
     C_RATING,
+    C_ASTM_PEN,
+    C_SD_STD,
     C_T,
     C_DECEL,
     C_T_DECEL,

@@ -26,9 +26,11 @@ static int set_column(const cs_sweep_column *c, cs_sweep_result *r, const char *
             }
         return r->status == CS_RUN_OK ? -1 : 0;
     }
-    if (c->what == C_RATING || c->what == C_ERROR) {
-        char *to = c->what == C_RATING ? r->rating : r->error;
-        size_t size = c->what == C_RATING ? sizeof r->rating : sizeof r->error;
+    if (c->kind == CS_COLUMN_TEXT) {
+        char *to = c->what == C_RATING ? r->rating : c->what == C_SD_STD ? r->sd_std_rating : r->error;
+        size_t size = c->what == C_RATING   ? sizeof r->rating
+                      : c->what == C_SD_STD ? sizeof r->sd_std_rating
+                                            : sizeof r->error;
         if (strlen(text) >= size) return -1;
         snprintf(to, size, "%s", text);
         return 0;
@@ -41,6 +43,9 @@ static int set_column(const cs_sweep_column *c, cs_sweep_result *r, const char *
         return 0;
     }
     switch (c->what) {
+    case C_ASTM_PEN:
+        r->astm_penetration = v;
+        break;
     case C_T:
         m->t_end_s = v;
         break;
