@@ -189,6 +189,19 @@ static void test_runs_csv_read_back(void **state) {
     assert_string_equal(err.message,
                         "runs.csv:6:3: a quoted cell not closed (expected a closing \" before the end of "
                         "the file)");
+    /* a runs.csv of a cablesim before the two columns: refused, naming them, not misread */
+    const char *pen = strstr(text, ",astm_f2656_penetration [m],sd_std_02_01_as_run,");
+    snprintf(bad, 2 * n + 64, "%.*s%s", (int)(pen - text), text,
+             pen + strlen(",astm_f2656_penetration [m],sd_std_02_01_as_run"));
+    assert_int_equal(read_back(f, bad, back, &err), -1);
+    assert_string_equal(err.message, "runs.csv:1: written by an older cablesim, without the columns "
+                                     "astm_f2656_penetration [m], sd_std_02_01_as_run: run the study again "
+                                     "without --resume");
+    /* another study's header, with every column: not this study's */
+    snprintf(bad, 2 * n + 64, "run,x [m]%s", strstr(text, ",outcome,"));
+    assert_int_equal(read_back(f, bad, back, &err), -1);
+    assert_string_equal(err.message,
+                        "runs.csv:1: not the header this study writes (another study's runs.csv?)");
     free(bad);
     free(text);
     snprintf(f->r[2].error, sizeof f->r[2].error, "the solve \"diverged\", at 0.1 s"); /* as setup made it */

@@ -220,6 +220,11 @@ static void csv_num(FILE *f, double v) {
     if (isfinite(v)) fprintf(f, "%.10g", v);
 }
 
+int cs_sweep_column_heading(const cs_sweep_column *c, char *buf, size_t size) {
+    return snprintf(buf, size, "%.*s%s%s%s", (int)sizeof c->name, c->name, c->unit ? " [" : "",
+                    c->unit ? c->unit : "", c->unit ? "]" : "");
+}
+
 /* runs.csv's first line. */
 static void runs_header(FILE *f, const cs_sweep_spec *s) {
     int k = s->var_count;
@@ -234,9 +239,11 @@ static void runs_header(FILE *f, const cs_sweep_spec *s) {
         fputc(',', f);
         csv_text(f, head);
     }
-    for (int c = 0; c < nc; c++)
-        fprintf(f, ",%s%s%s%s", cols[c].name, cols[c].unit ? " [" : "", cols[c].unit ? cols[c].unit : "",
-                cols[c].unit ? "]" : "");
+    for (int c = 0; c < nc; c++) {
+        char head[80];
+        cs_sweep_column_heading(&cols[c], head, sizeof head);
+        fprintf(f, ",%s", head);
+    }
     fputc('\n', f);
 }
 
