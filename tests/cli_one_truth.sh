@@ -9,7 +9,8 @@
 # penetration (or how far beyond), the cables counted from 0, the end fittings' strength and the events
 # agree, and report.html's data gives the unit of every number it holds, as the CSVs write it; compare's
 # table gives each run's own numbers. The designation as run is also rate's row for the
-# same condition and a sweep's runs.csv entry, and rate's conclusion is its "rating". Exit 77 (skipped)
+# same condition and a sweep's runs.csv entries (with the ASTM F2656 penetration the label rests on, and
+# SD-STD-02.01's), and rate's conclusion is its "rating". Exit 77 (skipped)
 # for a build without node (no report.html). The designer page's numbers for the same run are checked
 # against these outputs in a browser: designer_one_truth (report/test/designer_truth.mjs).
 source "$(dirname "$0")/lib.sh"
@@ -55,16 +56,25 @@ runs.forEach((dir, k) => {
 console.log(`${seen} values, ${bad} differ`);
 process.exit(bad || seen < 18 ? 1 : 0);' "$tmp/compare/compare.csv" "$tmp/designed" "$tmp/weak")
 check "compare: compare.csv gives each run's summary.json values" '[ $? -eq 0 ] || { echo "$out"; false; }'
-label() { grep -o '"standard":"astm-f2656","label":"[^"]*"' "$1/summary.json" | cut -d'"' -f8; }
+# a standard's label of the run's designation as run in summary.json: astm-f2656 or sd-std-02.01
+label() { grep -o '"standard":"'"${2:-astm-f2656}"'","label":"[^"]*"' "$1/summary.json" | cut -d'"' -f8; }
 check "summary.json: APS3's designation as run is M40/P2" '[ "$(label "$tmp/designed")" = M40/P2 ]'
 # rate at the run's own condition (M40) gives the run's designation on its row, and calls its conclusion
 # the rating
 rate=$("$cs" rate examples/aps3.yaml --standard astm-f2656 --class M40 2>&1)
 check "rate --class M40: its row is the run's designation as run" 'grep -qE "^  M    40 mph  stopped +penetration [0-9.]+ m .* designation as run $(label "$tmp/designed")$" <<<"$rate"'
 check "rate --class M40: its conclusion is the rating, in the run's words" 'grep -qxF "rating: $(grep -o "ASTM F2656 M40/P2 (penetration .*)$" "$tmp/designed.term" | head -1)" <<<"$rate"'
-# a sweep of one run of the same model: runs.csv gives the same designation as run
+# a sweep of one run of the same model: runs.csv gives the same designations as run, ASTM F2656's with
+# the penetration `run` prints for it (to its 2 decimals), SD-STD-02.01's as `run` has it
 printf 'model: %s/examples/aps3.yaml\nmethod: grid\nvary:\n  scenario.speed: [40 mph]\n' "$PWD" >"$tmp/one.yaml"
 "$cs" sweep "$tmp/one.yaml" -o "$tmp/sweep" --threads 1 --quiet --allow-path "$PWD/examples" >/dev/null 2>&1
-col=$(head -1 "$tmp/sweep/runs.csv" | tr , '\n' | grep -nx astm_f2656_as_run | cut -d: -f1)
-check "runs.csv: astm_f2656_as_run is the run's designation as run" '[ -n "$col" ] && [ "$(sed -n 2p "$tmp/sweep/runs.csv" | cut -d, -f"$col")" = "$(label "$tmp/designed")" ]'
+cell() { # runs.csv's cell of its one run in the column headed $1
+    local col
+    col=$(head -1 "$tmp/sweep/runs.csv" | tr , '\n' | grep -nxF "$1" | cut -d: -f1)
+    [ -n "$col" ] && sed -n 2p "$tmp/sweep/runs.csv" | cut -d, -f"$col"
+}
+check "runs.csv: astm_f2656_as_run is the run's designation as run" '[ "$(cell astm_f2656_as_run)" = "$(label "$tmp/designed")" ]'
+pen=$(cell "astm_f2656_penetration [m]")
+check "runs.csv: astm_f2656_penetration is the penetration run prints for that designation" '[ -n "$pen" ] && grep -qF "ASTM F2656 $(label "$tmp/designed") (penetration $(printf "%.2f" "$pen") m " "$tmp/designed.term"'
+check "runs.csv: sd_std_02_01_as_run is the run's SD-STD-02.01 designation as run" '[ -n "$(label "$tmp/designed" sd-std-02.01)" ] && [ "$(cell sd_std_02_01_as_run)" = "$(label "$tmp/designed" sd-std-02.01)" ] && grep -qF "SD-STD-02.01 $(cell sd_std_02_01_as_run) (" "$tmp/designed.term"'
 finish

@@ -42,16 +42,18 @@ done
 
 runs="$tmp/lhs-1/runs.csv"
 check "runs.csv: 4 runs and a header" '[ "$(wc -l <"$runs")" -eq 5 ]'
-check "runs.csv: inputs in SI with units" 'head -1 "$runs" | grep -q "^run,barrier.soil.soil_pressure \[Pa\],barrier.posts\[0\].yield_stress \[Pa\],scenario.speed \[m/s\],outcome,astm_f2656_as_run,"'
+check "runs.csv: inputs in SI with units" 'head -1 "$runs" | grep -q "^run,barrier.soil.soil_pressure \[Pa\],barrier.posts\[0\].yield_stress \[Pa\],scenario.speed \[m/s\],outcome,astm_f2656_as_run,astm_f2656_penetration \[m\],sd_std_02_01_as_run,"'
 check "runs.csv: responses" 'head -1 "$runs" | grep -q "max_dynamic_penetration \[m\].*events_cable_break.*,error$"'
 check "runs.csv: rows in run order" '[ "$(cut -d, -f1 "$runs" | tail -n +2 | tr "\n" " ")" = "0 1 2 3 " ]'
 check "runs.csv: speeds within 38-42 mph" 'awk -F, "NR > 1 && (\$4 < 38 * 0.44704 || \$4 > 42 * 0.44704) { bad = 1 } END { exit bad }" "$runs"'
 check "runs.csv: soil pressure above its 4000-psf minimum" 'awk -F, "NR > 1 && \$2 < 4000 * 47.880258 { bad = 1 } END { exit bad }" "$runs"'
 check "runs.csv: an ASTM label per run" '[ "$(cut -d, -f6 "$runs" | tail -n +2 | grep -cE "^(none|not rated|(C|PU|M|H)[0-9]+/P[1-4])$")" -eq 4 ]'
+check "runs.csv: the ASTM penetration, a number or empty" '[ "$(cut -d, -f7 "$runs" | tail -n +2 | grep -cE "^([0-9.e+-]+)?$")" -eq 4 ]'
+check "runs.csv: an SD-STD-02.01 label per run" '[ "$(cut -d, -f8 "$runs" | tail -n +2 | grep -cE "^(none|not rated|K(4|8|12)/L[1-3])$")" -eq 4 ]'
 check "summary.json: Wilson intervals and Spearman" 'grep -q "\"breakthrough\":{\"count\":0,\"p\":0,\"ci95\":\[0,0.48" "$tmp/lhs-1/summary.json" && grep -q "\"spearman\":{\"max_50ms_decel_g\":{\"barrier.soil.soil_pressure\":" "$tmp/lhs-1/summary.json"'
 check "summary.md: outcome table" 'grep -q "^| max dynamic penetration > 1 m past the attack face (or the vehicle got through) | " "$tmp/lhs-1/summary.md" && grep -q "^## Input importance" "$tmp/lhs-1/summary.md"'
 check "grid: 3 x 2 runs, last variable fastest" '[ "$(cut -d, -f3 "$tmp/grid-1/runs.csv" | tail -n +2 | tr "\n" " ")" = "SD-STD-02.01 PU SD-STD-02.01 PU SD-STD-02.01 PU " ]'
-check "grid: a run cut at its time limit is not rated" '[ "$(grep -c ",time_limit,not rated," "$tmp/grid-1/runs.csv")" -eq 6 ]'
+check "grid: a run cut at its time limit is not rated, with no penetration" '[ "$(grep -c ",time_limit,not rated,,not rated," "$tmp/grid-1/runs.csv")" -eq 6 ]'
 check "grid: a text input has no Spearman" 'grep -q "\"vehicle\":null" "$tmp/grid-1/summary.json"'
 
 # plots: tests/sweep/plot.yaml's grid draws deflection (PNG) and exit speed (SVG) against the post spacing,
@@ -136,7 +138,7 @@ nc="$tmp/nc-1/runs.nc"
 check "runs.csv the same with --netcdf" 'cmp "$tmp/nc-1/runs.csv" "$runs"'
 check "runs.nc: as many runs as runs.csv" '[ "$(ncdump -h "$nc" | grep -oE "^\s*run = [0-9]+" | grep -oE "[0-9]+")" -eq "$(($(wc -l <"$runs") - 1))" ]'
 check "runs.nc: runs.csv's speeds, within 38-42 mph" 'paste -d, <(nc_column "$nc" scenario_speed) <(cut -d, -f4 "$runs" | tail -n +2) | awk -F, "\$1 < 38 * 0.44704 || \$1 > 42 * 0.44704 || \$1 != \$2 { bad = 1 } END { exit bad || NR != 4 }"'
-check "runs.nc: runs.csv's penetrations in full (the CSV's 10 digits)" 'paste -d, <(nc_column "$nc" penetration_beyond) <(cut -d, -f11 "$runs" | tail -n +2) | awk -F, "!(\$1 > 0.05) || (\$1 - \$2) ^ 2 > (5e-10 * \$2) ^ 2 { bad = 1 } END { exit bad || NR != 4 }"'
+check "runs.nc: runs.csv's penetrations in full (the CSV's 10 digits)" 'paste -d, <(nc_column "$nc" penetration_beyond) <(cut -d, -f13 "$runs" | tail -n +2) | awk -F, "!(\$1 > 0.05) || (\$1 - \$2) ^ 2 > (5e-10 * \$2) ^ 2 { bad = 1 } END { exit bad || NR != 4 }"'
 check "runs.nc: units and CF" 'ncdump -h "$nc" | grep -q "scenario_speed:units = \"m/s\"" && ncdump -h "$nc" | grep -q ":Conventions = \"CF-1.8\""'
 sed "s|^model: .*|model: $PWD/examples/aps3.yaml|; s|^seed: 7|&\nnetcdf: true|" tests/sweep/lhs.yaml >"$tmp/lhs-nc.yaml"
 "$cs" sweep --allow-path examples "$tmp/lhs-nc.yaml" -o "$tmp/nc-spec" --quiet >/dev/null 2>&1

@@ -3,8 +3,8 @@
 # A sweep stopped by a signal writes the runs it finished, marked partial, and `sweep --resume DIR` completes
 # it: runs.csv then equals, byte for byte, that of the same sweep never stopped. Stopped twice ways: by
 # CABLESIM_SWEEP_STOP_AFTER (it raises SIGINT once that many runs are done: a fixed point to stop at) and
-# by SIGTERM from this script while the runs go on. A resume refuses a folder whose study changed, and a
-# folder whose study is whole has nothing to run.
+# by SIGTERM from this script while the runs go on. A resume refuses a folder whose study changed, and one
+# whose runs.csv lacks columns this cablesim writes; a folder whose study is whole has nothing to run.
 source "$(dirname "$0")/lib.sh"
 
 # the whole study, never stopped: tests/sweep/lhs.yaml's 4 runs, with runs.nc
@@ -36,6 +36,13 @@ out=$("$cs" sweep --resume "$tmp/changed" 2>&1)
 check "--resume of a changed study: exit 2, why" '[ $? -eq 2 ] && grep -qF "the study has changed since it was stopped" <<<"$out"'
 out=$("$cs" sweep --resume "$tmp/changed" tests/sweep/lhs.yaml 2>&1)
 check "--resume with a spec: exit 2" '[ $? -eq 2 ] && grep -qF -- "--resume DIR takes the study as DIR/summary.json records it" <<<"$out"'
+
+# a folder of a cablesim whose runs.csv had no astm_f2656_penetration and sd_std_02_01_as_run: refused, the
+# columns named, rather than completed with runs that lack them
+CABLESIM_SWEEP_STOP_AFTER=1 "$cs" sweep --allow-path examples tests/sweep/lhs.yaml -o "$tmp/older" --threads 1 --quiet >/dev/null 2>&1
+cut -d, -f7,8 --complement "$tmp/older/runs.csv" >"$tmp/older.csv" && mv "$tmp/older.csv" "$tmp/older/runs.csv"
+out=$("$cs" sweep --resume "$tmp/older" 2>&1)
+check "--resume of an older cablesim's runs.csv: exit 2, the columns it lacks named" '[ $? -eq 2 ] && grep -qxF "cablesim sweep: $tmp/older/runs.csv:1: written by an older cablesim, without the columns astm_f2656_penetration [m], sd_std_02_01_as_run: run the study again without --resume" <<<"$out" || { echo "$out"; false; }'
 
 # a study stopped with --dt: --resume runs the rest at its time step (runs.csv byte for byte the whole sweep's
 # at --dt 0.2 ms), and refuses a --dt or --t-end of its own, named as the user gave it, rather than mix runs

@@ -3,14 +3,15 @@
  * against the command's own outputs for the same study and runs:
  * - a Latin hypercube of 3 runs of examples/aps3-uncertain.yaml cut to 60 ms: the runs.csv it writes is the
  *   command's byte for byte, and the numbers the handle gives (each run's inputs, outcome, largest 50-ms
- *   deceleration, penetration, cable tension, rating) are the ones of the command's runs.csv;
+ *   deceleration, penetration, cable tension, the designations as run and the ASTM F2656 penetration)
+ *   are the ones of the command's runs.csv;
  * - two runs of examples/aps3.yaml cut to 60 ms, 40 and 35 mph, written by `cablesim run`: the compare.csv
  *   the interface writes is the command's byte for byte, and its values and differences are the ones of
  *   that file (and each run's 50-ms deceleration its summary.json's);
  * - the same study checked without running (cs_sweep_check_study), from a def of the size before it had
  *   ranks: its runs' inputs are the study's, each run pending;
  * - a def, a row or ranks of a size the library does not know, or ranks that cannot share a study, are
- *   refused by name, and an earlier, smaller row is filled to its size;
+ *   refused by name, and an earlier, smaller row or run info is filled to its size;
  * - a folder of the user's is refused naming the interface's way to write beside its files. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -175,6 +176,9 @@ static void sweep_is_the_commands(void **state) {
         assert_int_equal(cs_sweep_run_of(s, run, &info, &err), CS_OK);
         assert_int_equal(info.status, CS_SWEEP_RUN_OK);
         assert_string_equal(info.rating, t->cell[r][column(t, "astm_f2656_as_run")]);
+        same_number(info.astm_penetration, number(t, r, column(t, "astm_f2656_penetration [m]")),
+                    "ASTM F2656 penetration");
+        assert_string_equal(info.sd_std_rating, t->cell[r][column(t, "sd_std_02_01_as_run")]);
         cs_summary sm = {.size = sizeof sm};
         assert_int_equal(cs_sweep_run_summary(s, run, &sm, &err), CS_OK);
         assert_string_equal(cs_outcome_name(sm.outcome), t->cell[r][column(t, "outcome")]);
@@ -221,6 +225,16 @@ static void sweep_is_the_commands(void **state) {
     cs_sweep_run_info info = {.size = sizeof info + 8};
     assert_int_equal(cs_sweep_run_of(s, 0, &info, &err), CS_ERR_INVALID);
     assert_true(strstr(err.message, "cs_sweep_run_info: size ") == err.message);
+    /* a run's info as a program built before it had the ASTM penetration passes it: filled to its size */
+    _Alignas(max_align_t) unsigned char earlier[sizeof(cs_sweep_run_info)];
+    memset(earlier, 0x5a, sizeof earlier);
+    size_t before = offsetof(cs_sweep_run_info, astm_penetration);
+    memcpy(earlier, &before, sizeof before);
+    assert_int_equal(cs_sweep_run_of(s, 0, (cs_sweep_run_info *)(void *)earlier, &err), CS_OK);
+    assert_string_equal(((cs_sweep_run_info *)(void *)earlier)->rating,
+                        t->cell[1][column(t, "astm_f2656_as_run")]);
+    for (size_t k = before; k < sizeof earlier; k++)
+        assert_int_equal(earlier[k], 0x5a);
     assert_true(isnan(cs_sweep_input(s, 0, vars)) && !cs_sweep_var_path(s, vars));
     free(t);
     cs_sweep_free(s);

@@ -60,6 +60,8 @@ static int setup(void **state) {
                                 .max_solver_residual = 0.0023941431861234};
     r[0].event_counts[CS_EVENT_POST_HINGE] = 2;
     snprintf(r[0].rating, sizeof r[0].rating, "M40/P2");
+    r[0].astm_penetration = 1.5078125;
+    snprintf(r[0].sd_std_rating, sizeof r[0].sd_std_rating, "K8/L2");
     /* run 1 as run 0 but broken through, before any contact was recorded */
     cs_summary *b = &r[1].summary;
     *b = r[0].summary;
@@ -70,10 +72,14 @@ static int setup(void **state) {
     r[1].event_counts[CS_EVENT_CABLE_BREAK] = 2;
     r[1].event_counts[CS_EVENT_UNDERRIDE] = 1;
     snprintf(r[1].rating, sizeof r[1].rating, "PU40/P4");
+    r[1].astm_penetration = NAN; /* through: P4 rests on no penetration */
+    snprintf(r[1].sd_std_rating, sizeof r[1].sd_std_rating, "not rated");
     r[2].status = CS_RUN_FAILED;
     r[2].summary = r[0].summary;
     r[2].event_counts[CS_EVENT_CABLE_BREAK] = 5;
     snprintf(r[2].rating, sizeof r[2].rating, "none");
+    r[2].astm_penetration = 0.75;
+    snprintf(r[2].sd_std_rating, sizeof r[2].sd_std_rating, "K8/L3");
     snprintf(r[2].error, sizeof r[2].error, "the solve \"diverged\", at 0.1 s");
     *state = f;
     return 0;
@@ -97,8 +103,8 @@ static void test_runs_csv(void **state) {
     assert_int_equal(cs_sweep_write_runs(out, f->spec, f->x, f->r, RUNS, &err), CS_OK);
     fclose(out);
     const char *want =
-        "run,barrier.cables[0].pretension [N],vehicle,outcome,astm_f2656_as_run,time_reached "
-        "[s],max_50ms_decel [g],"
+        "run,barrier.cables[0].pretension [N],vehicle,outcome,astm_f2656_as_run,astm_f2656_penetration "
+        "[m],sd_std_02_01_as_run,time_reached [s],max_50ms_decel [g],"
         "t_max_50ms_decel [s],max_dynamic_penetration [m],penetration_beyond [m],max_barrier_deflection [m],"
         "working_width [m],"
         "stop_time [s],exit_speed [m/s],exit_angle [deg],first_contact_time "
@@ -110,14 +116,15 @@ static void test_runs_csv(void **state) {
         "override,"
         "events_underride,events_cable_release,events_termination_slip,events_post_withdrawal,events_post_"
         "down,events_cable_pulled_off,error\n"
-        "0,17792.886461,SD-STD-02.01,stopped,M40/"
-        "P2,0.5,3.25,0.125,1.23456789,,2.25,2.625,0.4375,,,0.003,2,3,0,"
+        "0,17792.886461,SD-STD-02.01,stopped,M40/P2,1.5078125,K8/"
+        "L2,0.5,3.25,0.125,1.23456789,,2.25,2.625,0.4375,,,0.003,2,3,0,"
         "38621.24685,1087776.709,-4.259510776e-05,1,0.002394143186,20.5,-3.25,1,0,0,2,0,0,0,0,0,0,0,0,0,0,0,"
         "0,0,"
         "\n"
-        "1,17792.886461,PU,breakthrough,PU40/P4,0.5,2.875,0.125,,4.03125,2.25,5.5,,13.75,22.5,,0,3,2,1500000,"
+        "1,17792.886461,PU,breakthrough,PU40/P4,,not "
+        "rated,0.5,2.875,0.125,,4.03125,2.25,5.5,,13.75,22.5,,0,3,2,1500000,"
         "1087776.709,0,1,0.002394143186,20.5,-3.25,1,2,0,0,0,0,0,0,0,0,0,1,0,0,0,0,0,\n"
-        "2,22241.1080763,SD-STD-02.01,failed,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"the solve "
+        "2,22241.1080763,SD-STD-02.01,failed,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,,\"the solve "
         "\"\"diverged\"\", "
         "at "
         "0.1 s\"\n";
@@ -156,6 +163,13 @@ static void test_runs_csv_read_back(void **state) {
     assert_string_equal(back[2].error, f->r[2].error);
     assert_int_equal(back[2].status, CS_RUN_FAILED);
     assert_int_equal(back[1].summary.outcome, CS_BREAKTHROUGH);
+    /* the designations as run and the ASTM penetration, back as written; none where a run has none */
+    assert_string_equal(back[0].rating, "M40/P2");
+    assert_true(back[0].astm_penetration == 1.5078125 && isnan(back[1].astm_penetration));
+    assert_true(isnan(back[2].astm_penetration));
+    assert_string_equal(back[0].sd_std_rating, "K8/L2");
+    assert_string_equal(back[1].sd_std_rating, "not rated");
+    assert_string_equal(back[2].sd_std_rating, "");
 
     /* the runs' rows, then a bad one on line 6 (after the two lines of run 2's error) */
     size_t n = strlen(text);
@@ -175,6 +189,19 @@ static void test_runs_csv_read_back(void **state) {
     assert_string_equal(err.message,
                         "runs.csv:6:3: a quoted cell not closed (expected a closing \" before the end of "
                         "the file)");
+    /* a runs.csv of a cablesim before the two columns: refused, naming them, not misread */
+    const char *pen = strstr(text, ",astm_f2656_penetration [m],sd_std_02_01_as_run,");
+    snprintf(bad, 2 * n + 64, "%.*s%s", (int)(pen - text), text,
+             pen + strlen(",astm_f2656_penetration [m],sd_std_02_01_as_run"));
+    assert_int_equal(read_back(f, bad, back, &err), -1);
+    assert_string_equal(err.message, "runs.csv:1: written by an older cablesim, without the columns "
+                                     "astm_f2656_penetration [m], sd_std_02_01_as_run: run the study again "
+                                     "without --resume");
+    /* another study's header, with every column: not this study's */
+    snprintf(bad, 2 * n + 64, "run,x [m]%s", strstr(text, ",outcome,"));
+    assert_int_equal(read_back(f, bad, back, &err), -1);
+    assert_string_equal(err.message,
+                        "runs.csv:1: not the header this study writes (another study's runs.csv?)");
     free(bad);
     free(text);
     snprintf(f->r[2].error, sizeof f->r[2].error, "the solve \"diverged\", at 0.1 s"); /* as setup made it */
@@ -271,6 +298,7 @@ static void test_runs_netcdf(void **state) {
     /* text results; the failed run's rating is empty, its error whole */
     assert_text(id, "outcome", 12, (const char *const[]){"stopped", "breakthrough", "failed"});
     assert_text(id, "astm_f2656_as_run", 7, (const char *const[]){"M40/P2", "PU40/P4", ""});
+    assert_text(id, "sd_std_02_01_as_run", 9, (const char *const[]){"K8/L2", "not rated", ""});
     assert_text(id, "error", 30, (const char *const[]){"", "", "the solve \"diverged\", at 0.1 s"});
     /* numbers in full (runs.csv rounds to 10 digits), and the fill value where a run has none */
     double fill;
@@ -285,6 +313,9 @@ static void test_runs_netcdf(void **state) {
     assert_string_equal(att(id, var(id, "max_dynamic_penetration"), "units"), "m");
     assert_string_equal(att(id, var(id, "max_dynamic_penetration"), "long_name"),
                         "max dynamic penetration past the attack face (a vehicle the barrier held)");
+    doubles(id, "astm_f2656_penetration", v); /* a P4 through the barrier rests on none */
+    assert_true(v[0] == 1.5078125 && v[1] == NC_FILL_DOUBLE && v[2] == NC_FILL_DOUBLE);
+    assert_string_equal(att(id, var(id, "astm_f2656_penetration"), "units"), "m");
     doubles(id, "energy_balance_error", v);
     assert_true(v[0] == -4.2595107761234e-05 && v[1] == 0 && v[2] == NC_FILL_DOUBLE);
     doubles(id, "stop_time", v);
@@ -409,6 +440,10 @@ static void test_summary_responses(void **state) {
         "or "
         "ran under it, or were redirected)\",\"mean\":13.75,",
         "\"max_50ms_decel_g\":{\"runs\":2,\"over\":\"the runs that ran to the end\",\"mean\":3.0625,",
+        "\"astm_f2656_as_run M40/P2\":{\"count\":1,",
+        "\"astm_f2656_as_run PU40/P4\":{\"count\":1,",
+        "\"sd_std_02_01_as_run K8/L2\":{\"count\":1,",
+        "\"sd_std_02_01_as_run not rated\":{\"count\":1,",
         "\"spearman\":{\"max_50ms_decel_g\":{\"barrier.cables[0].pretension\":null,\"vehicle\":null},"
         "\"max_dynamic_penetration_m\":{",
     };
@@ -426,6 +461,8 @@ static void test_summary_responses(void **state) {
         "\n| max cable tension (kN) | 2 | 769.3 | 1033 | 38.62 |",
         "\n| exit speed (m/s) | 1 | 13.75 | n/a |",
         "\n| input | max 50-ms deceleration (g) | max dynamic penetration (m) | penetration beyond (m) |",
+        "\n| ASTM F2656 designation as run M40/P2 | 1 | 0.5 |",
+        "\n| SD-STD-02.01 designation as run not rated | 1 | 0.5 |",
     };
     for (size_t i = 0; i < sizeof want_md / sizeof want_md[0]; i++)
         if (!strstr(md, want_md[i])) fail_msg("summary.md lacks %s:\n%s", want_md[i], md);
@@ -498,7 +535,7 @@ static void test_plots(void **state) {
                            "column of runs.csv"));
     assert_non_null(strstr(s->errors[1],
                            "tests/sweep/grid.yaml:16:8: plot: y: unknown response 'max_deflection' "
-                           "(expected a number column of runs.csv: time_reached, max_50ms_decel,"));
+                           "(expected a number column of runs.csv: astm_f2656_penetration, time_reached,"));
 }
 
 int main(void) {

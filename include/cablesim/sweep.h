@@ -180,8 +180,13 @@ typedef struct cs_sweep_run_info {
                                      {.size = sizeof r}); the library fills only that much */
     cs_sweep_run_status status; /**< how it went */
     char rating[24];            /**< its ASTM F2656 rating as run, as runs.csv's astm_f2656_as_run: "M40/P1",
-                                     "none" or "not rated" */
+                                     "none" or "not rated"; "" if it did not run to its end */
     char error[256];            /**< why it did not run to its end; "" if it did */
+    double astm_penetration;    /**< m: the penetration its ASTM F2656 rating as run rests on, as that
+                                     standard measures it, as runs.csv's astm_f2656_penetration; NAN where
+                                     it has none ("none", "not rated", through the barrier, not run) */
+    char sd_std_rating[24];     /**< its SD-STD-02.01 rating as run, as runs.csv's sd_std_02_01_as_run:
+                                     "K8/L2", "none" or "not rated"; "" if it did not run to its end */
 } cs_sweep_run_info;
 
 /** Fill out with run `run`, to out's size.

@@ -29,6 +29,11 @@ static const cs_sweep_column summary_columns[C_ERROR] = {
                    "did_not_converge or step_limit; bad_model or failed (see error)",
                    CS_COLUMN_TEXT, C_OUTCOME},
     [C_RATING] = {"astm_f2656_as_run", NULL, NULL, "ASTM F2656 designation as run", CS_COLUMN_TEXT, C_RATING},
+    [C_ASTM_PEN] = {"astm_f2656_penetration", "m", NULL,
+                    "penetration the ASTM F2656 designation as run rests on, as that standard measures it",
+                    CS_COLUMN_REAL, C_ASTM_PEN},
+    [C_SD_STD] = {"sd_std_02_01_as_run", NULL, NULL, "SD-STD-02.01 designation as run", CS_COLUMN_TEXT,
+                  C_SD_STD},
     [C_T] = {"time_reached", "s", NULL, "time reached", CS_COLUMN_REAL, C_T},
     [C_DECEL] = {"max_50ms_decel", "g", "standard_free_fall", "max 50-ms average deceleration",
                  CS_COLUMN_REAL, C_DECEL},
@@ -112,6 +117,9 @@ static int is_failure_event(int t) {
     return t != CS_EVENT_STOPPED && t != CS_EVENT_BREAKTHROUGH && t != CS_EVENT_REDIRECTED;
 }
 
+/* the summary's columns, a count per event type (but those that end a run) and the error */
+_Static_assert(C_ERROR + CS_EVENT_TYPE_COUNT <= CS_SWEEP_MAX_COLUMNS, "runs.csv's columns fit");
+
 int cs_sweep_columns(cs_sweep_column *cols) {
     int n = 0;
     for (int c = 0; c < C_ERROR; c++)
@@ -134,6 +142,8 @@ double cs_sweep_column_number(const cs_sweep_column *c, const cs_sweep_result *r
     if (r->status != CS_RUN_OK || r->pending) return NAN;
     if (c->what >= C_EVENTS) return r->event_counts[c->what - C_EVENTS];
     switch (c->what) {
+    case C_ASTM_PEN:
+        return r->astm_penetration;
     case C_T:
         return m->t_end_s;
     case C_DECEL:
@@ -191,6 +201,8 @@ const char *cs_sweep_column_text(const cs_sweep_column *c, const cs_sweep_result
                                                : "failed";
     case C_RATING:
         return ok ? r->rating : "";
+    case C_SD_STD:
+        return ok ? r->sd_std_rating : "";
     case C_ERROR:
         return ok ? "" : r->error;
     default:
@@ -208,6 +220,11 @@ static void csv_num(FILE *f, double v) {
     if (isfinite(v)) fprintf(f, "%.10g", v);
 }
 
+int cs_sweep_column_heading(const cs_sweep_column *c, char *buf, size_t size) {
+    return snprintf(buf, size, "%.*s%s%s%s", (int)sizeof c->name, c->name, c->unit ? " [" : "",
+                    c->unit ? c->unit : "", c->unit ? "]" : "");
+}
+
 /* runs.csv's first line. */
 static void runs_header(FILE *f, const cs_sweep_spec *s) {
     int k = s->var_count;
@@ -222,9 +239,11 @@ static void runs_header(FILE *f, const cs_sweep_spec *s) {
         fputc(',', f);
         csv_text(f, head);
     }
-    for (int c = 0; c < nc; c++)
-        fprintf(f, ",%s%s%s%s", cols[c].name, cols[c].unit ? " [" : "", cols[c].unit ? cols[c].unit : "",
-                cols[c].unit ? "]" : "");
+    for (int c = 0; c < nc; c++) {
+        char head[80];
+        cs_sweep_column_heading(&cols[c], head, sizeof head);
+        fprintf(f, ",%s", head);
+    }
     fputc('\n', f);
 }
 
@@ -381,15 +400,22 @@ static int make_summary(summary *s, const cs_sweep_spec *spec, const double *x, 
         snprintf(label, sizeof label, "at least one %s", cs_event_type_name((cs_event_type)t));
         if (add_tally(s, name, label, c) != 0) goto oom;
     }
-    /* the ASTM F2656 designations as run, in order of first appearance by run */
-    int first_rating = s->tally_count;
-    for (long i = 0; i < s->ok; i++) {
-        char name[48];
-        snprintf(name, sizeof name, "astm_f2656_as_run %s", r[ok[i]].rating);
-        int seen = 0;
-        for (int t = first_rating; t < s->tally_count && !seen; t++)
-            if (strcmp(s->t[t].name, name) == 0) s->t[t].count++, seen = 1;
-        if (!seen && add_tally(s, name, r[ok[i]].rating, 1) != 0) goto oom;
+    /* each standard's designations as run, in order of first appearance by run: named by runs.csv's
+     * column and its label ("astm_f2656_as_run M40/P2"), in words by the column's long name */
+    static const int designations[] = {C_RATING, C_SD_STD};
+    for (size_t d = 0; d < sizeof designations / sizeof *designations; d++) {
+        const cs_sweep_column *c = &summary_columns[designations[d]];
+        int first = s->tally_count;
+        for (long i = 0; i < s->ok; i++) {
+            const char *label = cs_sweep_column_text(c, &r[ok[i]]);
+            char name[48], words[96];
+            snprintf(name, sizeof name, "%s %s", c->name, label);
+            snprintf(words, sizeof words, "%s %s", c->long_name, label);
+            int seen = 0;
+            for (int t = first; t < s->tally_count && !seen; t++)
+                if (strcmp(s->t[t].name, name) == 0) s->t[t].count++, seen = 1;
+            if (!seen && add_tally(s, name, words, 1) != 0) goto oom;
+        }
     }
     for (int q = 0; q < R_COUNT; q++) {
         long m = 0;
@@ -486,9 +512,7 @@ static cs_status summary_md(FILE *f, const cs_sweep_spec *spec, long n, const su
             s->ok);
     for (int t = 0; t < s->tally_count; t++) {
         cs_interval w = cs_wilson(s->t[t].count, s->ok, Z95);
-        fprintf(f, "| %s",
-                strncmp(s->t[t].name, "astm_f2656_as_run ", 18) == 0 ? "ASTM F2656 designation as run " : "");
-        fprintf(f, "%s | %ld | ", s->t[t].label, s->t[t].count); /* cablesim's words, not the spec's */
+        fprintf(f, "| %s | %ld | ", s->t[t].label, s->t[t].count); /* cablesim's words, not the spec's */
         md_num(f, w.p);
         fprintf(f, " | ");
         md_num(f, w.lo);

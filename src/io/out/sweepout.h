@@ -24,10 +24,11 @@ typedef struct cs_sweep_column {
     int what; /* which value of a result */
 } cs_sweep_column;
 
-enum { CS_SWEEP_MAX_COLUMNS = 24 + CS_EVENT_TYPE_COUNT };
+enum { CS_SWEEP_MAX_COLUMNS = 26 + CS_EVENT_TYPE_COUNT };
 
-/* Fill cols (CS_SWEEP_MAX_COLUMNS) in runs.csv's order: outcome, ASTM F2656 label, the response parameters
- * of the run's summary, the count of each failure event type, the error. Returns how many. */
+/* Fill cols (CS_SWEEP_MAX_COLUMNS) in runs.csv's order: outcome, the ASTM F2656 label as run and the
+ * penetration it rests on, the SD-STD-02.01 label as run, the response parameters of the run's summary,
+ * the count of each failure event type, the error. Returns how many. */
 int cs_sweep_columns(cs_sweep_column *cols);
 /* A run's number in a REAL or COUNT column; NaN where it has none (a run that did not run to the end, the
  * stop time of a run that did not stop, the exit speed of one that did not break through). */

@@ -4,11 +4,15 @@
 #ifndef CS_SWEEPOUT_INT_H
 #define CS_SWEEPOUT_INT_H
 
+#include "sweepout.h"
+
 /* What a column reads from a result: the summary's values in runs.csv's order, the error, then one
  * count per event type (C_EVENTS + type). */
 enum {
     C_OUTCOME,
     C_RATING,
+    C_ASTM_PEN,
+    C_SD_STD,
     C_T,
     C_DECEL,
     C_T_DECEL,
@@ -34,5 +38,9 @@ enum {
     C_ERROR,
     C_EVENTS
 };
+
+/* A column's heading in runs.csv's header: its name, and its unit in brackets ("max_50ms_decel [g]"); its
+ * length, as snprintf's. */
+int cs_sweep_column_heading(const cs_sweep_column *c, char *buf, size_t size);
 
 #endif

@@ -26,9 +26,11 @@ static int set_column(const cs_sweep_column *c, cs_sweep_result *r, const char *
             }
         return r->status == CS_RUN_OK ? -1 : 0;
     }
-    if (c->what == C_RATING || c->what == C_ERROR) {
-        char *to = c->what == C_RATING ? r->rating : r->error;
-        size_t size = c->what == C_RATING ? sizeof r->rating : sizeof r->error;
+    if (c->kind == CS_COLUMN_TEXT) {
+        char *to = c->what == C_RATING ? r->rating : c->what == C_SD_STD ? r->sd_std_rating : r->error;
+        size_t size = c->what == C_RATING   ? sizeof r->rating
+                      : c->what == C_SD_STD ? sizeof r->sd_std_rating
+                                            : sizeof r->error;
         if (strlen(text) >= size) return -1;
         snprintf(to, size, "%s", text);
         return 0;
@@ -41,6 +43,9 @@ static int set_column(const cs_sweep_column *c, cs_sweep_result *r, const char *
         return 0;
     }
     switch (c->what) {
+    case C_ASTM_PEN:
+        r->astm_penetration = v;
+        break;
     case C_T:
         m->t_end_s = v;
         break;
@@ -107,6 +112,22 @@ static int set_column(const cs_sweep_column *c, cs_sweep_result *r, const char *
     return 0;
 }
 
+/* The headings of cols that a header line lacks, comma-separated, into buf ("" if it has them all): those
+ * of the columns added to runs.csv since an older cablesim wrote it. */
+static void missing_columns(const char *line, const cs_sweep_column *cols, int nc, char *buf, size_t size) {
+    size_t used = 0;
+    buf[0] = '\0';
+    for (int c = 0; c < nc; c++) {
+        char head[80] = ",";
+        size_t len = 1 + (size_t)cs_sweep_column_heading(&cols[c], head + 1, sizeof head - 1);
+        const char *at = line;
+        while ((at = strstr(at, head)) && at[len] != ',' && at[len] != '\n' && at[len] != '\0')
+            at += len;
+        if (!at && used < size)
+            used += (size_t)snprintf(buf + used, size - used, "%s%s", used ? ", " : "", head + 1);
+    }
+}
+
 long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *s, const double *x,
                         cs_sweep_result *r, long n, int any_order, cs_error *err) {
     int k = s->var_count;
@@ -127,8 +148,16 @@ long cs_sweep_read_runs(FILE *f, const char *name, const cs_sweep_spec *s, const
     fclose(h);
     h = NULL;
     if (getline(&line, &line_size, f) < 0 || strcmp(line, want) != 0) {
-        cs_error_set(err, CS_ERR_INVALID,
-                     "%s:1: not the header this study writes (another study's runs.csv?)", name);
+        char missing[512] = "";
+        if (line && strncmp(line, "run,", 4) == 0) missing_columns(line, cols, nc, missing, sizeof missing);
+        if (missing[0])
+            cs_error_set(err, CS_ERR_INVALID,
+                         "%s:1: written by an older cablesim, without the columns %s: run the study again "
+                         "without --resume",
+                         name, missing);
+        else
+            cs_error_set(err, CS_ERR_INVALID,
+                         "%s:1: not the header this study writes (another study's runs.csv?)", name);
         goto done;
     }
     count = 0;

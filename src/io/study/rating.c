@@ -242,11 +242,15 @@ cs_rating cs_rate_as_run(cs_standard standard, const char *vehicle_class, const 
     return cs_rate_run(standard, cls, speed, summary, vehicle, rules);
 }
 
+double cs_rating_penetration(const cs_rating *r) {
+    return r->rated && isfinite(r->penetration) ? r->penetration : NAN;
+}
+
 void cs_rating_text(const cs_rating *r, char *buf, size_t size) {
     char pen[192] = ""; /* a rating's penetration where it has one, as its standard measures it */
-    if (r->rated && isfinite(r->penetration))
-        snprintf(pen, sizeof pen, "penetration %.2f m (%.1f ft), %s", r->penetration, r->penetration / CS_FT,
-                 r->reference);
+    double p = cs_rating_penetration(r);
+    if (isfinite(p))
+        snprintf(pen, sizeof pen, "penetration %.2f m (%.1f ft), %s", p, p / CS_FT, r->reference);
     int both = r->note[0] && pen[0], any = r->note[0] || pen[0];
     snprintf(buf, size, "%s %s%s%s%s%s%s", cs_standard_title(r->standard), r->label, any ? " (" : "", r->note,
              both ? "; " : "", pen, any ? ")" : "");

@@ -52,8 +52,14 @@ cs_rating cs_rate_run(cs_standard standard, const char *vehicle_class, double sp
 cs_rating cs_rate_as_run(cs_standard standard, const char *vehicle_class, const cs_vehicle_def *vehicle,
                          double speed, double angle, const cs_summary *summary, const cs_rating_rules *rules);
 
+/* The penetration a designation rests on, m, as its standard measures it: NaN where the label is no
+ * designation with one ("none", "not rated", or a vehicle that got through). What cs_rating_text prints
+ * and a sweep's runs.csv holds. */
+double cs_rating_penetration(const cs_rating *r);
+
 /* The one wording of a rating, for the terminal, summary.json, report.html and `rate`: the standard's
- * title, the label, and the note in brackets ("ASTM F2656 M50/P4 (the vehicle got through)"). */
+ * title, the label, and in brackets the note and the penetration it rests on ("ASTM F2656 M50/P4 (the
+ * vehicle got through)"). */
 void cs_rating_text(const cs_rating *r, char *buf, size_t size);
 
 /* Pieces, for tests and for `cablesim rate`: the speed designation (mph) of an impact speed for a class

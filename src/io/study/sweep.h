@@ -45,8 +45,12 @@ typedef struct cs_sweep_result {
     int pending; /* not run (yet): a sweep stopped by a signal; its outputs leave it out */
     cs_summary summary;
     int event_counts[CS_EVENT_TYPE_COUNT];
-    char rating[24]; /* ASTM F2656 label as run (cs_rate_as_run): "M40/P1", "none" or "not rated" */
-    char error[256]; /* status != OK: why */
+    char rating[24]; /* ASTM F2656 label as run (cs_rate_as_run): "M40/P1", "none" or "not rated"; "" if
+                      * status != OK */
+    double astm_penetration; /* m: the penetration that label rests on (cs_rating_penetration); NaN if none */
+    char
+        sd_std_rating[24]; /* SD-STD-02.01 label as run: "K8/L2", "none" or "not rated"; "" if status != OK */
+    char error[256];       /* status != OK: why */
 } cs_sweep_result;
 
 /* A loader for the spec's runs: it may read the model's files from the folders of spec->allow. NULL

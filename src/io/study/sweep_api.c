@@ -179,10 +179,13 @@ cs_status cs_sweep_run_of(const cs_sweep *s, long run, cs_sweep_run_info *out, c
                               .status = r->pending                      ? CS_SWEEP_RUN_PENDING
                                         : r->status == CS_RUN_BAD_MODEL ? CS_SWEEP_RUN_BAD_MODEL
                                         : r->status == CS_RUN_FAILED    ? CS_SWEEP_RUN_FAILED
-                                                                        : CS_SWEEP_RUN_OK};
+                                                                        : CS_SWEEP_RUN_OK,
+                              .astm_penetration = NAN};
     if (!r->pending) {
         snprintf(full.rating, sizeof full.rating, "%s", r->rating);
         snprintf(full.error, sizeof full.error, "%s", r->status == CS_RUN_OK ? "" : r->error);
+        full.astm_penetration = r->astm_penetration;
+        snprintf(full.sd_std_rating, sizeof full.sd_std_rating, "%s", r->sd_std_rating);
     }
     return cs_status_put_sized(out, &full, sizeof full, "cs_sweep_run_info", err);
 }

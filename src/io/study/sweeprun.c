@@ -45,7 +45,7 @@ cs_loader *cs_sweep_loader(const cs_sweep_spec *s, cs_error *err) {
 
 void cs_sweep_run(const cs_sweep_spec *s, const double *xrow, cs_loader *loader, cs_sweep_result *r) {
     memset(r, 0, sizeof *r);
-    snprintf(r->rating, sizeof r->rating, "none");
+    r->astm_penetration = NAN;
     cs_error err = {0};
     cs_loader *l = loader ? loader : cs_sweep_loader(s, &err);
     if (loader) cs_loader_reuse(loader); /* the model file and the library are parsed once per loader */
@@ -86,9 +86,12 @@ void cs_sweep_run(const cs_sweep_spec *s, const double *xrow, cs_loader *loader,
     }
     if (r->status == CS_RUN_OK) {
         cs_rating_rules rules = cs_default_rating_rules();
-        cs_rating rating = cs_rate_as_run(CS_ASTM_F2656, s->vehicle_class[0] ? s->vehicle_class : NULL,
-                                          &vehicle, speed, angle, &r->summary, &rules);
-        snprintf(r->rating, sizeof r->rating, "%s", rating.label);
+        const char *klass = s->vehicle_class[0] ? s->vehicle_class : NULL;
+        cs_rating astm = cs_rate_as_run(CS_ASTM_F2656, klass, &vehicle, speed, angle, &r->summary, &rules);
+        cs_rating sd = cs_rate_as_run(CS_SD_STD_02_01, klass, &vehicle, speed, angle, &r->summary, &rules);
+        snprintf(r->rating, sizeof r->rating, "%s", astm.label);
+        r->astm_penetration = cs_rating_penetration(&astm);
+        snprintf(r->sd_std_rating, sizeof r->sd_std_rating, "%s", sd.label);
     }
     cs_state_free(state);
     cs_model_free(m);
