@@ -321,10 +321,12 @@ static int same_file(const struct stat *a, const struct stat *b) {
     return a->st_dev == b->st_dev && a->st_ino == b->st_ino;
 }
 
-/* The pid of the process holding the lock file fd's fcntl lock; 0 if none does (or the system cannot say). */
+/* The pid of the process holding the lock file fd's fcntl lock; 0 if none does; -1 if the system cannot
+ * say (no locks on this file system). */
 static long lock_holder(int fd) {
     struct flock fl = {.l_type = F_WRLCK, .l_whence = SEEK_SET};
-    return fcntl(fd, F_GETLK, &fl) == 0 && fl.l_type != F_UNLCK && fl.l_pid > 0 ? (long)fl.l_pid : 0;
+    if (fcntl(fd, F_GETLK, &fl) != 0) return -1;
+    return fl.l_type != F_UNLCK && fl.l_pid > 0 ? (long)fl.l_pid : 0;
 }
 
 /* DIR/.cablesim-lock just made (fd, O_EXCL), held: locked (fcntl) and given this process's text. */
@@ -366,9 +368,10 @@ static int remove_ended(const char *path, const struct stat *named, const char *
 }
 
 /* DIR/.cablesim-lock made (O_EXCL: of two runs, one makes it), locked (fcntl) and holding this process's
- * text. One there already is another cablesim's while the system says a process holds it, or its text names a
- * process still running, or another machine; one whose holder has ended (a kill -9) is removed and made
- * anew. A file of that name whose text is not a lock's is the user's, and the folder is refused. */
+ * text. One there already is another cablesim's while the system says a process holds it, or its text names
+ * another machine, or (where the system cannot say: no locks on the file system) a process still running;
+ * one whose holder has ended (a kill -9) is removed and made anew. A file of that name whose text is not a
+ * lock's is the user's, and the folder is refused. */
 static cs_status take_lock(cs_outdir *out, const char *force, cs_error *err) {
     char path[PATH_SIZE], host[HOST_SIZE], held_host[HOST_SIZE], text[LOCK_TEXT_SIZE];
     full_path(out, CS_OUT_LOCK, path, sizeof path);
@@ -382,7 +385,7 @@ static cs_status take_lock(cs_outdir *out, const char *force, cs_error *err) {
         struct stat named, held;
         if (lstat(path, &named) != 0) continue; /* gone since: make it */
         ssize_t n = -1;
-        long holder = 0, pid = 0;
+        long holder = -1, pid = 0;
         if (S_ISREG(named.st_mode) && named.st_nlink == 1) {
             fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
             if (fd < 0 && errno != ENOENT && errno != ELOOP) {
@@ -400,25 +403,28 @@ static cs_status take_lock(cs_outdir *out, const char *force, cs_error *err) {
             if (n < 0) continue; /* replaced since */
         }
         lock_kind kind = n < 0 ? LOCK_OTHER : lock_text(text, (size_t)n, &pid, held_host);
-        if (kind == LOCK_BEGUN && !holder && waits++ < 20) { /* its maker writes it within microseconds */
+        if (kind == LOCK_BEGUN && holder <= 0 && waits++ < 20) { /* its maker writes it within microseconds */
             nanosleep(&(struct timespec){0, 5000000}, NULL);
             continue;
         }
-        if (kind != LOCK_WHOLE && !(kind == LOCK_BEGUN && holder)) {
+        if (kind != LOCK_WHOLE && !(kind == LOCK_BEGUN && holder > 0)) {
             return cs_error_set(
                 err, CS_ERR_IO,
                 "%s: not a lock of cablesim's (a file of yours, or a link to one): it is kept, "
                 "and the folder cannot be locked beside it%s%s: move it away, or write elsewhere",
                 path, force ? ", even with " : "", force ? force : "");
         }
-        int other_host = !holder && strcmp(held_host, host) != 0;
-        if (holder || other_host || kill((pid_t)pid, 0) == 0 || errno == EPERM) {
+        /* a running cablesim holds its lock's fcntl lock, which ends with it: where the system can say, no
+         * holder means the run has ended (its pid may still be a zombie, or another process's since); only
+         * where it cannot is the pid asked */
+        int other_host = holder <= 0 && strcmp(held_host, host) != 0;
+        if (holder > 0 || other_host || (holder < 0 && (kill((pid_t)pid, 0) == 0 || errno == EPERM))) {
             return cs_error_set(
                 err, CS_ERR_IO,
                 "%s is in use by another cablesim (pid %ld%s%s holds %s): wait for it to end, or "
                 "write elsewhere%s",
-                out->dir, holder ? holder : pid, other_host ? " on " : "", other_host ? held_host : "", path,
-                holder ? "" : " (if it has ended, remove that file)");
+                out->dir, holder > 0 ? holder : pid, other_host ? " on " : "", other_host ? held_host : "",
+                path, holder > 0 ? "" : " (if it has ended, remove that file)");
         }
         if (remove_ended(path, &named, text, n) != 0) {
             return cs_error_set(err, CS_ERR_IO,
