@@ -4,6 +4,7 @@
 #include "check.h"
 #include "fixture.h"
 #include "run/run.h"
+#include "solver/work.h"
 
 /* APS3's dead-man, a 3-ft diameter, 5-ft deep concrete shaft, at both ends. */
 static void dead_men(fixture *fx, double b_ft, double d_ft) {
@@ -148,6 +149,59 @@ static void truck_drags_the_dead_men_through_the_soil(void **state) {
     cs_model_free(m);
 }
 
+/* The dead-men plough up to the end posts (termination.c, "the rope's end at the post next to its
+ * anchor"): the APS3 fixture's truck at 80 mph drags both dead-men more than 3 m through the soil, up to
+ * the end posts lying on the ground, and then past them to the posts next in (5.9 m). Each rope's end
+ * reaches each of those posts' holes in mirror pairs (a termination_at_post at each, the post off that
+ * rope's path from then on), and the solves stay bounded: no step is cut into pieces, none ends above the
+ * tolerance, at most 1% of the solves need the fallback (one does, at 45 ms, long before the ropes' ends
+ * reach the posts), and the ledger closes within 1%. Without the rule the end spans shrink to nanometres
+ * under the ropes' pull: 63 steps cut into pieces, 537 solves through the fallback, 65 steps above the
+ * tolerance and 714,000 Newton passes, against 7,700 with it. */
+static void the_dead_men_plough_up_to_the_end_posts(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    dead_men(&fx, 3.0, 5.0);
+    fx.scenario.speed = 80.0 * MPH;
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    cs_state *s = cs_state_create(m, &err);
+    assert_non_null(s);
+    while (s->outcome == CS_RUNNING)
+        assert_int_equal(cs_step(m, s, &err), CS_OK);
+    int reached[2] = {0, 0};
+    for (int k = 0; k < cs_state_event_count(s); k++) {
+        const cs_event *e = &s->events[k];
+        if (e->type != CS_EVENT_TERMINATION_AT_POST) continue;
+        reached[e->cable_end]++;
+        int mirror = m->post_count - 1 - e->element, twin = 0;
+        for (int j = 0; j < cs_state_event_count(s); j++) /* its mirror image, at the same instant */
+            twin |= s->events[j].type == e->type && s->events[j].t == e->t &&
+                    s->events[j].element == mirror && s->events[j].cable == e->cable &&
+                    s->events[j].cable_end == 1 - e->cable_end;
+        assert_true(twin);
+        assert_true(e->value > 3.0);
+        if (s->cables[e->cable].status == CS_CABLE_INTACT)
+            assert_int_equal(s->cables[e->cable].where[e->element], -1);
+    }
+    cs_summary sm = {.size = sizeof sm};
+    cs_state_summary(s, &sm, NULL);
+    printf("%d and %d rope ends at a post; %ld solves, %ld through the fallback, %ld steps cut, %ld Newton "
+           "passes; %d warnings, ledger %.3g%%, %s\n",
+           reached[0], reached[1], s->work->count.solves, s->work->count.fallback, s->work->count.pieces,
+           s->work->count.newton, sm.solver_warnings, 100.0 * sm.energy_balance_error,
+           cs_outcome_name(sm.outcome));
+    assert_true(reached[0] >= 2 && reached[1] == reached[0]);
+    assert_int_equal(s->work->count.pieces, 0);
+    assert_true(s->work->count.fallback <= s->work->count.solves / 100);
+    assert_int_equal(sm.solver_warnings, 0);
+    assert_true(fabs(sm.energy_balance_error) < 0.01);
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
 /* A dead-man (APS3's 3 x 5 ft, or of the mass given) on one weightless rope to a rigid anchor, the vehicle
  * away, let go from `kick` off its balance: held there at an instant (h = 0), the net force it starts
  * from. */
@@ -262,6 +316,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(anchor_from_its_footing),
                                        cmocka_unit_test(pretension_beyond_the_anchor_pulls_it_in),
                                        cmocka_unit_test(truck_drags_the_dead_men_through_the_soil),
+                                       cmocka_unit_test(the_dead_men_plough_up_to_the_end_posts),
                                        cmocka_unit_test(a_ringing_dead_man_keeps_its_energy),
                                        cmocka_unit_test(a_dead_man_its_ropes_let_go_stops_in_the_soil)};
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* Cable: the rope law's points, the capstan ratio across a frictional support, frictionless tension
- * redistribution by sliding, breaking at the breaking strain and at an end fitting. */
+ * redistribution by sliding, breaking at the breaking strain and at an end fitting, the rope's end at the
+ * post next to its anchor. */
 #include "check.h"
+#include "core/vec3.h"
 #include "fixture.h"
 #include "lay.h"
 #include "run/run.h"
@@ -540,6 +542,75 @@ static void the_fallback_lets_an_end_slip_at_its_load(void **state) {
     world_free(w);
 }
 
+/* Puts cable 0's end node at `end` `within` times the rope's diameter from the hole of the post beside it,
+ * along the end span as it was laid. */
+static void end_near_its_post(const world *w, int end, double within) {
+    cs_cable_state *cs = &w->state->cables[0];
+    int tie = end ? cs->node_count - 1 : 0, hole = end ? tie - 1 : 1;
+    double d[3], *p = cs->pos + 3 * tie, *q = cs->pos + 3 * hole;
+    v3_sub(d, p, q);
+    v3_scale(d, d, within * w->model->cables[0].diameter / v3_norm(d));
+    v3_add(p, q, d);
+}
+
+/* The rope's end at the post next to its anchor (termination.c): APS3 as installed, the lower rope's end
+ * at the start anchor put 0.99 of the rope's diameter (1.75 in) from post 0's hole and its end at the end
+ * anchor 1.01 of it from post 15's. Post 0 leaves the rope's path and post 15 stays: the event names post
+ * 0, the cable, its end and how far the start anchor has moved; the rope is kept (the end nodes' m), the
+ * merged end span holds the rope of both and their plastic strains by their rope. The end anchor's end
+ * within 0.5 of the diameter of post 15 made clamped stays, and leaves once it is threaded. A rope
+ * given without a diameter takes its metallic area's as a solid bar. */
+static void a_rope_end_at_its_post_runs_straight_on(void **state) {
+    (void)state;
+    world *w = make_world(0.15);
+    cs_state *s = w->state;
+    cs_cable_state *cs = &s->cables[0];
+    int n = cs->node_count;
+    double m_end = cs->m[n - 1], s0 = cs->m[1], s1 = cs->m[2] - cs->m[1];
+    cs->ep[0] = 2e-3, cs->ep[1] = 1e-3;
+    s->anchors[0].u[0] = 0.3, s->anchors[0].u[1] = 0.4;
+    end_near_its_post(w, 0, 0.99);
+    end_near_its_post(w, 1, 1.01);
+    int events = cs_state_event_count(s);
+    assert_int_equal(cs_termination_check_post(w->model, 0, s), 1);
+    assert_int_equal(cs->node_count, n - 1);
+    assert_int_equal(cs->where[0], -1);
+    assert_int_equal(cs->node[1], 1);
+    assert_int_equal(cs->where[15], n - 3);
+    CHECK_ABS(cs->m[0], 0.0, 0.0);
+    CHECK_REL(cs->m[1], s0 + s1, 1e-15);
+    CHECK_ABS(cs->m[n - 2], m_end, 0.0);
+    CHECK_REL(cs->ep[0], (2e-3 * s0 + 1e-3 * s1) / (s0 + s1), 1e-12);
+    assert_int_equal(cs_state_event_count(s), events + 1);
+    const cs_event *ev = &s->events[events];
+    assert_int_equal(ev->type, CS_EVENT_TERMINATION_AT_POST);
+    assert_int_equal(ev->element_kind, CS_ELEMENT_POST);
+    assert_int_equal(ev->element, 0);
+    assert_int_equal(ev->cable, 0);
+    assert_int_equal(ev->cable_end, 0);
+    CHECK_REL(ev->value, 0.5, 1e-15);
+    assert_string_equal(cs_event_value_unit(ev->type), "m");
+    assert_int_equal(cs_termination_check_post(w->model, 0, s), 0); /* nothing more within reach */
+    end_near_its_post(w, 1, 0.5);
+    w->model->posts[15].clamped = 1;
+    assert_int_equal(cs_termination_check_post(w->model, 0, s), 0);
+    w->model->posts[15].clamped = 0;
+    assert_int_equal(cs_termination_check_post(w->model, 0, s), 1);
+    assert_int_equal(cs->where[15], -1);
+    assert_int_equal(s->events[events + 1].cable_end, 1);
+    world_free(w);
+
+    fixture fx;
+    fixture_aps3(&fx);
+    fx.cables[0].rope.diameter = 0.0;
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    assert_non_null(m);
+    CHECK_REL(m->cables[0].diameter, sqrt(4.0 * fx.cables[0].rope.area / CS_PI), 1e-15);
+    CHECK_REL(m->cables[1].diameter, 1.75 * IN, 1e-15);
+    cs_model_free(m);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(rope_law_points),
@@ -555,6 +626,7 @@ int main(void) {
         cmocka_unit_test(each_end_breaks_at_its_own_fitting),
         cmocka_unit_test(a_fitting_slips_at_its_load_and_runs_out),
         cmocka_unit_test(the_fallback_lets_an_end_slip_at_its_load),
+        cmocka_unit_test(a_rope_end_at_its_post_runs_straight_on),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

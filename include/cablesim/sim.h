@@ -138,7 +138,11 @@ typedef enum cs_event_type {
                                     keeps the ropes threaded or clamped on it (value: its tilt, rad) */
     CS_EVENT_CABLE_PULLED_OFF, /**< a keyway bolt or bracket pulled off its post's face lets a cable go
                                     (element: the post; value: the pull off the face, N; cable: which) */
-    CS_EVENT_TYPE_COUNT        /**< the number of event types */
+    CS_EVENT_TERMINATION_AT_POST, /**< a rope's end, at its anchor, reaches the hole of the post next to it:
+                                       the post lets the rope run straight on to the anchor (element: the
+                                       post; value: how far that anchor has moved, m; cable_end: which end;
+                                       cable: which) */
+    CS_EVENT_TYPE_COUNT           /**< the number of event types */
 } cs_event_type;
 
 /** The kind of element an event happened to. */
@@ -159,7 +163,8 @@ typedef struct cs_event {
     int element;   /**< index of the cable, post or anchor (0 start, 1 end); 0 for the vehicle */
     double value;  /**< what triggered it, SI: by type (cs_event_type) */
     int cable_end; /**< a termination event's rope end: 0 at the start anchor, 1 at the end anchor; else -1 */
-    int cable;     /**< the cable a post's slot or hook lets go (cable_release); else -1 */
+    int cable;     /**< the cable a post lets go (cable_release, cable_pulled_off, termination_at_post);
+                        else -1 */
     int post;      /**< the post at whose hole a rope broke (cable_break there); else -1 */
 } cs_event;
 

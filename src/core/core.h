@@ -60,6 +60,7 @@ typedef struct cs_cable_model {
     double slip_travel[2];          /* rope each lets slip before the rope runs out of it, m */
     double hole_strength;           /* tension at which it breaks where it runs through a threaded post's
                                        hole, N (0: no loss there) */
+    double diameter;                /* the rope's: given, or its metallic area's as a solid bar, m */
     cs_rope rope;
 } cs_cable_model;
 

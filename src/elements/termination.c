@@ -106,3 +106,28 @@ void cs_termination_commit(const cs_model *model, int c, cs_state *s) {
         cs->slip[end] += out;
     }
 }
+
+/* The rope's end at the post next to its anchor: a dead-man ploughing toward the barrier, or the post folded
+ * down toward it, brings the rope's end, tied at the anchor, up to the post's hole. Within the rope's
+ * diameter of it the end's fitting bears on the post: the rope runs from the anchor straight on, and the
+ * post leaves its path (its node removed, the end span taking the rope and plastic strain of both). Left
+ * there, the end span's chord shrinks to nothing under the rope's pull, its stiffness EA / l grows without
+ * bound and its direction, and so the turn and the capstan band at the hole, flips: no solve converges
+ * (docs/theory.md, Rope ends). A clamped post holds its rope (its end span only goes slack), and a face
+ * corner is not a post: both stay. */
+int cs_termination_check_post(const cs_model *model, int c, cs_state *s) {
+    const cs_cable_model *cm = &model->cables[c];
+    cs_cable_state *cs = &s->cables[c];
+    int any = 0;
+    for (int end = 0; end < 2 && cs->status == CS_CABLE_INTACT && cs->node_count > 2; end++) {
+        int i = end ? cs->node_count - 2 : 1, p = cs->node[i];
+        if (p < 0 || model->posts[p].clamped || cs_span_length(cs, end ? i : 0) >= cm->diameter) continue;
+        cs_cable_remove_node(cs, i);
+        const double *u = s->anchors[end].u;
+        cs_event *e =
+            cs_event_add(model, s, CS_EVENT_TERMINATION_AT_POST, CS_ELEMENT_POST, p, hypot(u[0], u[1]));
+        if (e) e->cable_end = end, e->cable = c;
+        any = 1;
+    }
+    return any;
+}

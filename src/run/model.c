@@ -434,6 +434,7 @@ static cs_model *model_create(const cs_barrier_def *barrier, const cs_vehicle_de
         cm->mu_post = d->post_friction;
         derive_rope(&d->rope, scenario->gravity, &cm->rope);
         cm->hole_strength = d->hole_efficiency * cm->rope.fu;
+        cm->diameter = d->rope.diameter > 0.0 ? d->rope.diameter : sqrt(4.0 * d->rope.area / CS_PI);
         for (int k = 0; k < 2; k++) {
             cm->termination_strength[k] = cs_cable_end_efficiency(d, k, NULL) * cm->rope.fu;
             cm->slip_load[k] = cs_cable_end_slip(d, k, &cm->slip_travel[k]);

@@ -149,7 +149,7 @@ static double resolve_failures(const cs_model *model, cs_state *s, int *changed)
     for (int round = 0; round <= model->cable_count + model->post_count + 2; round++) {
         int any = 0;
         for (int c = 0; c < model->cable_count; c++)
-            any |= cs_cable_check_break(model, c, s);
+            any |= cs_cable_check_break(model, c, s) | cs_termination_check_post(model, c, s);
         for (int p = 0; p < model->post_count; p++)
             any |= cs_post_check_failure(model, s, p) | cs_attachment_check_release(model, s, p);
         any |= cs_anchor_check(model, s);

@@ -400,9 +400,10 @@ static void jacobian_at(const cs_model *model, cs_state *s, cs_system *sys, cons
     }
     int j = w->crush_index;
     if (j < 0) return;
-    /* the crush's column: the rows in its band (a post's two rows come together, from its first) */
+    /* the crush's column: the rows in its band (a post's or an anchor's two rows come together, from the
+     * first: its slot b = 0) */
     int lo = j - sys->ku > 0 ? j - sys->ku : 0, hi = j + sys->kl < n - 1 ? j + sys->kl : n - 1;
-    if (w->slots[lo].kind == CS_U_TILT && w->slots[lo].b == 1) lo--;
+    if (kinds[w->slots[lo].kind]->width > 1) lo -= w->slots[lo].b;
     move_crush(model, s, w, x[j] + 1e-8);
     residual_rows(model, s, w, lo, hi, sys->scratch);
     for (int i = j - sys->ku; i <= hi; i++)
