@@ -148,7 +148,7 @@ static int inside(const char *rel) {
 }
 
 /* The earlier manifest's line naming rel, or NULL. */
-static const cs_out_listed *find(const cs_outdir *out, const char *rel) {
+static cs_out_listed *find(const cs_outdir *out, const char *rel) {
     for (int i = 0; i < out->prev_count; i++)
         if (strcmp(out->prev[i].name, rel) == 0) return &out->prev[i];
     return NULL;
@@ -538,9 +538,16 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
         if (tab) *tab = '\0';
         cs_out_listed e = {.ours = -1};
         size_t len = strlen(line);
-        if (line[0] == '#' || len >= sizeof e.name || !inside(line) || find(out, line)) continue;
+        if (line[0] == '#' || len >= sizeof e.name || !inside(line)) continue;
+        /* a name listed twice (a commit's file and the earlier run's of that name): either is cablesim's */
+        cs_out_listed *seen = find(out, line);
+        if (seen && seen->ours == 1) continue;
         memcpy(e.name, line, len + 1);
         if (tab && read_print(tab + 1, &e.print)) e.ours = as_written(out, &e);
+        if (seen) {
+            if (e.ours == 1) *seen = e;
+            continue;
+        }
         if (out->prev_count == MANIFEST_MAX_FILES) { /* and each line's look-up bounded */
             fclose(f);
             return cs_error_set(
@@ -567,8 +574,10 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
 }
 
 /* DIR/.cablesim-manifest: the files written and those of the earlier manifest still cablesim's (not removed
- * by this commit), through a temporary and a rename. */
-static cs_status write_manifest(cs_outdir *out, cs_error *err) {
+ * by this commit), through a temporary and a rename. With both, also the earlier run's size and hash of the
+ * names this commit writes: a name listed twice is cablesim's while it holds either run's file, so the
+ * manifest is true whichever of the renames are done. */
+static cs_status write_manifest(cs_outdir *out, int both, cs_error *err) {
     char tmp[PATH_SIZE], path[PATH_SIZE];
     full_path(out, CS_OUT_MANIFEST, path, sizeof path);
     int fd = begin_aside(out, "manifest", tmp);
@@ -588,7 +597,7 @@ static cs_status write_manifest(cs_outdir *out, cs_error *err) {
         fprintf(f, "%s\t%lld\t%016llx\n", out->names[i], out->prints[i].size, out->prints[i].hash);
     for (int i = 0; i < out->prev_count; i++) {
         const cs_out_listed *e = &out->prev[i];
-        if (e->ours == 1 && !written(out, e->name))
+        if (e->ours == 1 && (both || !written(out, e->name)))
             fprintf(f, "%s\t%lld\t%016llx\n", e->name, e->print.size, e->print.hash);
     }
     int bad = fflush(f) != 0 || ferror(f) || fsync(fd) != 0;
@@ -938,7 +947,7 @@ static cs_status put_in_place(cs_outdir *out, cs_error *err) {
     for (int i = 0; st == CS_OK && i < out->count; i++)
         st = place_free(out, out->names[i], err);
     /* the manifest first names both runs' files, so that every file cablesim put here stays its own */
-    if (st == CS_OK) st = write_manifest(out, err);
+    if (st == CS_OK) st = write_manifest(out, 1, err);
     if (st != CS_OK) return st;
     for (int i = 0; i < out->count; i++) {
         full_path(out, out->tmps[i], tmp, sizeof tmp);
@@ -966,9 +975,13 @@ static cs_status put_in_place(cs_outdir *out, cs_error *err) {
             rmdir(tmp);
         }
     }
-    /* the commit point: the manifest without the files removed (the first already is, when it named none) */
+    /* the commit point: the manifest of this run's files and the earlier ones kept (the first already is,
+     * when it named no name twice and no file removed) */
+    int twice = 0;
+    for (int i = 0; i < out->prev_count; i++)
+        twice |= out->prev[i].ours == 1 && written(out, out->prev[i].name);
     cs_error why;
-    if (removed && write_manifest(out, &why) != CS_OK) {
+    if ((removed || twice) && write_manifest(out, 0, &why) != CS_OK) {
         return cs_error_set(err, CS_ERR_IO, "the new results are in %s, but %s", out->dir, why.message);
     }
     if (out->journal >= 0) { /* this sweep's journal: its runs are in the outputs now */

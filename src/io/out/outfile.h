@@ -16,10 +16,10 @@
  * flushed, its writing to the disk begun; cs_out_commit fsyncs them all, judges the folder again (a file
  * edited during the run is the user's then; one where a file goes fails the commit), renames them into place,
  * removes the files of the earlier manifest that this run did not write, and writes the new manifest last, by
- * a temporary and a rename: the commit point (the manifest written before the renames is that one already
- * when the earlier manifest named no other file). cs_out_abort removes the temporaries (and the folders
- * cs_out_open made) so a failed run leaves nothing. Either releases the lock. A sweep's journal, beside them,
- * is below.
+ * a temporary and a rename: the commit point (the manifest written before the renames, which lists both runs'
+ * files, is that one already when the earlier manifest named none). cs_out_abort removes the temporaries (and
+ * the folders cs_out_open made) so a failed run leaves nothing. Either releases the lock. A sweep's journal,
+ * beside them, is below.
  *
  * A signal (the command's handler of SIGINT and SIGTERM calls cs_out_signal_cleanup) does what
  * cs_out_abort does to every folder open, from within the handler: the folder is left as it was before
