@@ -12,6 +12,10 @@ if ! command -v gdb >/dev/null; then
     echo "skipped: no gdb to stop the commit between its renames"
     exit 77
 fi
+if ! gdb -q -batch -iex "set debuginfod enabled off" -ex run --args true 2>&1 | grep -q "exited normally"; then
+    echo "skipped: gdb cannot run a program here (ptrace refused)"
+    exit 77
+fi
 # at_put N ACTION ARGS...: cablesim ARGS, stopped as it puts its N-th file in place to run the gdb command
 # ACTION ("shell ..." or "kill"); its terminal output into $tmp/at.out, its exit status the function's
 # (255: none, killed)
@@ -19,8 +23,9 @@ at_put() {
     local n=$1 action=$2 more=()
     shift 2
     for _ in $(seq 2 "$n"); do more+=(-ex continue); done
+    # LeakSanitizer cannot run under ptrace: the sanitized build's leak check is off for these runs
     gdb -q -batch -iex "set debuginfod enabled off" -ex "set breakpoint pending on" -ex "break renameat2" \
-        -ex run "${more[@]}" -ex "$action" -ex delete -ex continue \
+        -ex "set environment ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" -ex run "${more[@]}" -ex "$action" -ex delete -ex continue \
         -ex 'printf "exit status %d\n", $_exitcode' --args "$cs" "$@" >"$tmp/at.out" 2>&1
     local status
     status=$(sed -n 's/^exit status \([0-9]*\)$/\1/p' "$tmp/at.out")
