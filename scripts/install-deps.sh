@@ -19,6 +19,8 @@ if [ "${1:-}" != "--demo" ]; then
   pkgs+=(libopenmpi-dev openmpi-bin)
   # netcdf-bin: ncdump, which the sweep's shell test reads runs.nc with.
   pkgs+=(netcdf-bin)
+  # gdb: stops the command between the renames of its commit (tests/cli_commit.sh).
+  pkgs+=(gdb)
   # doxygen: the API reference (make docs) and its test (tests/api_docs.sh); dpkg-dev, debhelper and
   # lintian: the Debian packages (make package, debian/) and their test (tests/package.sh).
   pkgs+=(doxygen dpkg-dev debhelper lintian)

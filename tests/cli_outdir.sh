@@ -56,6 +56,22 @@ check "a file edited since cablesim wrote it is refused, named, and kept" '[ $? 
 out=$("$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" --force 2>&1)
 check "--force does not write over the edited file either" '[ $? -eq 1 ] && grep -q "summary.json: a file is there which has changed since cablesim wrote it there" <<<"$out" && [ "$(sha256sum <"$own/summary.json")" = "$edited" ] || { echo "$out"; false; }'
 mv "$tmp/summary.before" "$own/summary.json"
+# A name listed twice (the manifest a commit writes before its renames gives a name both runs write each
+# run's size and hash): the file there is cablesim's if it is as either line says, the user's if neither.
+other=$(printf 'summary.json\t5\t0123456789abcdef')
+for order in after before; do
+    cp "$own/.cablesim-manifest" "$tmp/manifest.before"
+    { [ $order = after ] || echo "$other"; cat "$tmp/manifest.before"; [ $order = before ] || echo "$other"; } >"$own/.cablesim-manifest"
+    out=$("$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" 2>&1)
+    check "a name listed twice, the file as written $order the other line: cablesim's, replaced, listed once" '[ $? -eq 0 ] && [ "$(grep -c "^summary.json	" "$own/.cablesim-manifest")" -eq 1 ] || { echo "$out"; false; }'
+done
+cp "$own/summary.json" "$tmp/summary.before"
+printf ' ' >>"$own/summary.json"
+{ cat "$own/.cablesim-manifest"; echo "$other"; } >"$tmp/manifest.twice" && cp "$tmp/manifest.twice" "$own/.cablesim-manifest"
+out=$("$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" 2>&1)
+check "a name listed twice, the file as neither line says: the user's, refused and kept" '[ $? -eq 1 ] && grep -q "nothing run: $own holds summary.json, which has changed since cablesim wrote it there" <<<"$out" && cmp -s "$own/.cablesim-manifest" "$tmp/manifest.twice" || { echo "$out"; false; }'
+mv "$tmp/summary.before" "$own/summary.json"
+head -n -1 "$tmp/manifest.twice" >"$own/.cablesim-manifest"
 echo "my notes" >"$own/notes.txt"
 printf 'notes.txt\n' >>"$own/.cablesim-manifest"
 out=$("$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" 2>&1)

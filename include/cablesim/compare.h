@@ -95,7 +95,9 @@ enum {
  * @return CS_OK, or CS_ERR_IO with err filled: "nothing written: " and why (also when dir is the folder of a
  *         run compared: writing there would remove that run's files), or, when the files are in place but an
  *         earlier comparison's file there could not be removed, "the new results are in DIR, but ..." naming
- *         it and why (it stays in the manifest, for the next comparison there to remove). */
+ *         it and why (it stays in the manifest, for the next comparison there to remove), or, when a rename
+ *         failed and the system refused to take back those before it, "DIR/NAME: why; DIR holds this run's
+ *         NAME2 (and N more), the rest as before the command: run it again to write them all". */
 CS_API cs_status cs_compare_write(const cs_compare *compare, const char *dir, int flags, cs_error *err);
 
 /** With a measured history: print each run's validation metrics against it (Sprague-Geers M, P, C, the

@@ -94,7 +94,9 @@ enum cs_output_flags {
  * @return CS_OK, or CS_ERR_IO with err filled: "nothing written: " and why (a record that lost frames, a
  *         folder refused, a file that could not be written), or, when the files are in place but an earlier
  *         run's file there could not be removed, "the new results are in DIR, but ..." naming it and why (it
- *         stays in the manifest, for the next run there to remove);
+ *         stays in the manifest, for the next run there to remove), or, when a rename failed and the system
+ *         refused to take back those before it, "DIR/NAME: why; DIR holds this run's NAME2 (and N more), the
+ *         rest as before the command: run it again to write them all";
  *         CS_ERR_INVALID for an input whose size does not reach its scenario or a folder's path too long;
  *         CS_ERR_MEMORY when memory runs out. */
 CS_API cs_status cs_write_outputs(const char *dir, const cs_model_input *in, const cs_model *model,

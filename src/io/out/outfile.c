@@ -148,7 +148,7 @@ static int inside(const char *rel) {
 }
 
 /* The earlier manifest's line naming rel, or NULL. */
-static const cs_out_listed *find(const cs_outdir *out, const char *rel) {
+static cs_out_listed *find(const cs_outdir *out, const char *rel) {
     for (int i = 0; i < out->prev_count; i++)
         if (strcmp(out->prev[i].name, rel) == 0) return &out->prev[i];
     return NULL;
@@ -538,9 +538,16 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
         if (tab) *tab = '\0';
         cs_out_listed e = {.ours = -1};
         size_t len = strlen(line);
-        if (line[0] == '#' || len >= sizeof e.name || !inside(line) || find(out, line)) continue;
+        if (line[0] == '#' || len >= sizeof e.name || !inside(line)) continue;
+        /* a name listed twice (a commit's file and the earlier run's of that name): either is cablesim's */
+        cs_out_listed *seen = find(out, line);
+        if (seen && seen->ours == 1) continue;
         memcpy(e.name, line, len + 1);
         if (tab && read_print(tab + 1, &e.print)) e.ours = as_written(out, &e);
+        if (seen) {
+            if (e.ours == 1) *seen = e;
+            continue;
+        }
         if (out->prev_count == MANIFEST_MAX_FILES) { /* and each line's look-up bounded */
             fclose(f);
             return cs_error_set(
@@ -567,8 +574,10 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
 }
 
 /* DIR/.cablesim-manifest: the files written and those of the earlier manifest still cablesim's (not removed
- * by this commit), through a temporary and a rename. */
-static cs_status write_manifest(cs_outdir *out, cs_error *err) {
+ * by this commit), through a temporary and a rename. With both, also the earlier run's size and hash of the
+ * names this commit writes: a name listed twice is cablesim's while it holds either run's file, so the
+ * manifest is true whichever of the renames are done. */
+static cs_status write_manifest(cs_outdir *out, int both, cs_error *err) {
     char tmp[PATH_SIZE], path[PATH_SIZE];
     full_path(out, CS_OUT_MANIFEST, path, sizeof path);
     int fd = begin_aside(out, "manifest", tmp);
@@ -588,7 +597,7 @@ static cs_status write_manifest(cs_outdir *out, cs_error *err) {
         fprintf(f, "%s\t%lld\t%016llx\n", out->names[i], out->prints[i].size, out->prints[i].hash);
     for (int i = 0; i < out->prev_count; i++) {
         const cs_out_listed *e = &out->prev[i];
-        if (e->ours == 1 && !written(out, e->name))
+        if (e->ours == 1 && (both || !written(out, e->name)))
             fprintf(f, "%s\t%lld\t%016llx\n", e->name, e->print.size, e->print.hash);
     }
     int bad = fflush(f) != 0 || ferror(f) || fsync(fd) != 0;
@@ -752,13 +761,15 @@ cs_status cs_out_subdir(cs_outdir *out, const char *subdir, cs_error *err) {
     return CS_OK;
 }
 
-/* Whether this run may put its file at DIR/name: nothing there, or the earlier run's file as written.
- * CS_OK, or CS_ERR_IO with err filled (a folder there, or a file of the user's, which is kept). */
-static cs_status place_free(const cs_outdir *out, const char *name, cs_error *err) {
+/* Whether this run may put its file at DIR/name: nothing there, or the earlier run's file as written (then
+ * *taken is 1, else 0). CS_OK, or CS_ERR_IO with err filled (a folder there, or a file of the user's, which
+ * is kept). */
+static cs_status place_free(const cs_outdir *out, const char *name, int *taken, cs_error *err) {
     char final[PATH_SIZE], why[PATH_SIZE];
     full_path(out, name, final, sizeof final);
     struct stat st;
-    if (lstat(final, &st) != 0) return CS_OK;
+    *taken = lstat(final, &st) == 0;
+    if (!*taken) return CS_OK;
     if (S_ISDIR(st.st_mode)) return cs_error_set(err, CS_ERR_IO, "%s: %s", final, strerror(EISDIR));
     if (listed(out, name)) return CS_OK;
     return cs_error_set(err, CS_ERR_IO,
@@ -778,7 +789,8 @@ static int begin(cs_outdir *out, const char *name, cs_error *err) {
         return -1;
     }
     full_path(out, name, final, sizeof final);
-    if (place_free(out, name, err) != CS_OK) return -1;
+    int taken;
+    if (place_free(out, name, &taken, err) != CS_OK) return -1;
     const char *slash = strrchr(name, '/');
     int head = slash ? (int)(slash - name + 1) : 0;
     char *rel = out->tmps[out->count];
@@ -927,25 +939,92 @@ static int remove_earlier(const cs_outdir *out, const char *rel) {
     return unlink(path) == 0 || errno == ENOENT ? 0 : errno;
 }
 
+/* How cs_out_commit put a file at its name: where no file was; exchanged with the earlier run's file, which
+ * waits under the temporary's name; renamed over it (a file system that cannot exchange). */
+enum { PUT_NEW = 1, PUT_SWAPPED, PUT_OVER };
+
+/* Put the temporary tmp at final, a name that held no file at the commit's look: the system refuses to
+ * replace one put there since (renameat2's RENAME_NOREPLACE, or where the file system has no such rename,
+ * link and unlink, which refuse too), so a file the user saves in that instant is kept. PUT_NEW, or -errno
+ * (-EEXIST: something is there now). */
+static int put_new(const char *tmp, const char *final) {
+    if (renameat2(AT_FDCWD, tmp, AT_FDCWD, final, RENAME_NOREPLACE) == 0) return PUT_NEW;
+    if (errno != EINVAL && errno != ENOSYS) return -errno;
+    if (link(tmp, final) != 0) return -errno;
+    unlink(tmp);
+    return PUT_NEW;
+}
+
+/* Put tmp at final over the earlier run's file there (as written at the commit's look): exchanged with it
+ * (RENAME_EXCHANGE), the earlier file kept under tmp's name until the commit ends, for take_back; where the
+ * file system cannot exchange, renamed over it. How (put_new's way if the earlier file has gone since), or
+ * -errno. */
+static int put_over(const char *tmp, const char *final) {
+    if (renameat2(AT_FDCWD, tmp, AT_FDCWD, final, RENAME_EXCHANGE) == 0) return PUT_SWAPPED;
+    if (errno == ENOENT) return put_new(tmp, final);
+    if (errno != EINVAL && errno != ENOSYS) return -errno;
+    return rename(tmp, final) == 0 ? PUT_OVER : -errno;
+}
+
+/* The i-th file, put in place the way how, taken back: its name holds what it held before the commit again,
+ * this run's file its temporary's name (cs_out_abort removes it). 0, or -1: the name keeps this run's file
+ * (the earlier one was not kept, or the system refused). */
+static int take_back(const cs_outdir *out, int i, int how) {
+    char tmp[PATH_SIZE], final[PATH_SIZE];
+    full_path(out, out->tmps[i], tmp, sizeof tmp);
+    full_path(out, out->names[i], final, sizeof final);
+    if (how == PUT_SWAPPED) return renameat2(AT_FDCWD, final, AT_FDCWD, tmp, RENAME_EXCHANGE);
+    return how == PUT_NEW ? rename(final, tmp) : -1;
+}
+
+/* The failed-th file could not be put in place (errnum): the files put before it taken back, so that the
+ * folder holds the earlier run's results, whole. CS_ERR_IO with err saying why, and, when some of this run's
+ * files could not be taken back (out->in_place -1), which are in place and what to do. The manifest lists
+ * both runs' files, true either way. */
+static cs_status undo(cs_outdir *out, int failed, int errnum, const int *put, cs_error *err) {
+    char why[CS_MESSAGE_SIZE], more[40] = "";
+    full_path(out, out->names[failed], why, sizeof why);
+    size_t n = strlen(why);
+    if (errnum == EEXIST)
+        snprintf(why + n, sizeof why - n,
+                 ": something appeared there during the commit, which is kept: move it away and run again");
+    else
+        snprintf(why + n, sizeof why - n, ": %s", strerror(errnum));
+    int left = 0, first = 0;
+    for (int i = failed - 1; i >= 0; i--)
+        if (take_back(out, i, put[i]) != 0) left++, first = i;
+    if (!left) return cs_error_set(err, CS_ERR_IO, "%s", why);
+    out->in_place = -1;
+    if (left > 1) snprintf(more, sizeof more, " (and %d more)", left - 1);
+    return cs_error_set(err, CS_ERR_IO,
+                        "%s; %s holds this run's %s%s, the rest as before the command: run it again to write "
+                        "them all",
+                        why, out->dir, out->names[first], more);
+}
+
 /* cs_out_commit once every file is on the disk: the manifests and the renames. */
 static cs_status put_in_place(cs_outdir *out, cs_error *err) {
     char tmp[PATH_SIZE], final[PATH_SIZE];
+    int taken[CS_OUT_MAX_FILES], put[CS_OUT_MAX_FILES];
     cs_status st = CS_OK;
     /* the folder as it is now, not as cs_out_open found it: an earlier file edited during the run, or a
      * file the user put where this run writes, is the user's */
     for (int i = 0; i < out->prev_count; i++)
         if (out->prev[i].ours == 1) out->prev[i].ours = as_written(out, &out->prev[i]);
     for (int i = 0; st == CS_OK && i < out->count; i++)
-        st = place_free(out, out->names[i], err);
+        st = place_free(out, out->names[i], &taken[i], err);
     /* the manifest first names both runs' files, so that every file cablesim put here stays its own */
-    if (st == CS_OK) st = write_manifest(out, err);
+    if (st == CS_OK) st = write_manifest(out, 1, err);
     if (st != CS_OK) return st;
     for (int i = 0; i < out->count; i++) {
         full_path(out, out->tmps[i], tmp, sizeof tmp);
         full_path(out, out->names[i], final, sizeof final);
-        if (rename(tmp, final) != 0) {
-            return cs_error_set(err, CS_ERR_IO, "%s: %s", final, strerror(errno));
-        }
+        put[i] = taken[i] ? put_over(tmp, final) : put_new(tmp, final);
+        if (put[i] < 0) return undo(out, i, -put[i], put, err);
+    }
+    for (int i = 0; i < out->count; i++) { /* the earlier run's files exchanged out */
+        full_path(out, out->tmps[i], tmp, sizeof tmp);
+        if (put[i] == PUT_SWAPPED) unlink(tmp);
     }
     out->in_place = 1;
     /* the earlier run's files this run does not write, removed; one that cannot be stays in the manifest,
@@ -966,9 +1045,13 @@ static cs_status put_in_place(cs_outdir *out, cs_error *err) {
             rmdir(tmp);
         }
     }
-    /* the commit point: the manifest without the files removed (the first already is, when it named none) */
+    /* the commit point: the manifest of this run's files and the earlier ones kept (the first already is,
+     * when it named no name twice and no file removed) */
+    int twice = 0;
+    for (int i = 0; i < out->prev_count; i++)
+        twice |= out->prev[i].ours == 1 && written(out, out->prev[i].name);
     cs_error why;
-    if (removed && write_manifest(out, &why) != CS_OK) {
+    if ((removed || twice) && write_manifest(out, 0, &why) != CS_OK) {
         return cs_error_set(err, CS_ERR_IO, "the new results are in %s, but %s", out->dir, why.message);
     }
     if (out->journal >= 0) { /* this sweep's journal: its runs are in the outputs now */

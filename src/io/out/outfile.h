@@ -16,10 +16,10 @@
  * flushed, its writing to the disk begun; cs_out_commit fsyncs them all, judges the folder again (a file
  * edited during the run is the user's then; one where a file goes fails the commit), renames them into place,
  * removes the files of the earlier manifest that this run did not write, and writes the new manifest last, by
- * a temporary and a rename: the commit point (the manifest written before the renames is that one already
- * when the earlier manifest named no other file). cs_out_abort removes the temporaries (and the folders
- * cs_out_open made) so a failed run leaves nothing. Either releases the lock. A sweep's journal, beside them,
- * is below.
+ * a temporary and a rename: the commit point (the manifest written before the renames, which lists both runs'
+ * files, is that one already when the earlier manifest named none). cs_out_abort removes the temporaries (and
+ * the folders cs_out_open made) so a failed run leaves nothing. Either releases the lock. A sweep's journal,
+ * beside them, is below.
  *
  * A signal (the command's handler of SIGINT and SIGTERM calls cs_out_signal_cleanup) does what
  * cs_out_abort does to every folder open, from within the handler: the folder is left as it was before
@@ -80,7 +80,8 @@ typedef struct cs_outdir {
     char prev_command[16]; /* the earlier manifest's; "" if it names none, or two (another's results) */
     char aside[48]; /* the temporary of the manifest or the journal being written, relative to dir; "" */
     int lock;       /* the lock's file descriptor, -1 when not held */
-    int in_place;   /* 1 once cs_out_commit has renamed the files into place (it may fail after that) */
+    int in_place;   /* 1 once cs_out_commit has put the files in place (it may fail after that); -1 some of
+                       them,   a failure it could not undo (its message says which) */
     int journal;    /* the journal's, open for appending; -1: none */
     unsigned mode;  /* the files' permissions: 0666 less the umask */
 } cs_outdir;
@@ -120,13 +121,20 @@ cs_status cs_out_begin_path(cs_outdir *out, const char *name, char *path, size_t
 cs_status cs_out_end_path(cs_outdir *out, cs_error *err);
 /* Fsync every temporary, judge the earlier files again (as cs_out_open did), rename each to its name, remove
  * the files of the earlier manifest that this run did not write (and a subfolder they leave empty), write the
- * manifest, release the lock. Returns CS_OK, or CS_ERR_IO with err filled (then call cs_out_fail). An earlier
+ * manifest, release the lock. Returns CS_OK, or CS_ERR_IO with err filled (then call cs_out_fail). A name
+ * that held no file when judged is renamed to only while it still holds none (RENAME_NOREPLACE): a file the
+ * user saves there in that instant is kept, and fails the commit. A rename that fails takes back those done
+ * before it (an earlier run's file replaced is kept until the commit ends, by RENAME_EXCHANGE), so the
+ * folder holds the earlier run's results, whole; one it cannot take back stays, the commit saying so
+ * (out->in_place -1): "DIR/events.csv: Operation not permitted; DIR holds this run's timeseries.csv, the rest
+ * as before the command: run it again to write them all". The manifest lists both runs' files until the
+ * renames are done, so it is true at every step and the next run owns either. An earlier
  * file that cannot be removed (a read-only folder) stays listed in the manifest, for the next run to remove,
  * and the commit ends, the new files in place (out->in_place), returning CS_ERR_IO: "the new results are in
  * DIR, but the earlier run's plots/speed.png could not be removed: Permission denied; ...". */
 cs_status cs_out_commit(cs_outdir *out, cs_error *err);
 /* After a failure while out was open (status, err its reason): cs_out_abort, and err's message begun with
- * "nothing written: " unless the commit had put the files in place (its message then says so). Returns
+ * "nothing written: " unless the commit had put files in place (its message then says which). Returns
  * status. err may be NULL. */
 cs_status cs_out_fail(cs_outdir *out, cs_status status, cs_error *err);
 /* A journal in the folder (DIR/.cablesim-journal, a sweep's: each run's result as it finishes), which

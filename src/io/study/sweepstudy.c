@@ -252,7 +252,7 @@ static int write_all(cs_outdir *out, const cs_sweep_spec *spec, const double *x,
     if (rc == CS_OK) rc = cs_out_commit(out, &err);
     if (rc != CS_OK) {
         cs_out_fail(out, rc, &err);
-        if (out->in_place) /* the journal's runs are in the outputs */
+        if (out->in_place > 0) /* the journal's runs are in the outputs */
             cs_sweep_say(o, "%s", err.message);
         else
             cs_sweep_say(o,

@@ -1,0 +1,88 @@
+# SPDX-License-Identifier: MIT
+# The commit's renames (src/io/out/outfile.c, docs/robustness.md "A user's files"): a name that held no
+# file when the commit looked is renamed to only while it still holds none, so a file the user saves there
+# in that instant is kept; a rename that fails takes back those done before it, so the folder holds the
+# earlier run's results, whole, and "nothing written" is true; one the system will not take back is named
+# as this run's, and the manifest owns both runs' files, so the next run writes them all. gdb stops the
+# command where it puts a file in place (renameat2, which only the commit's renames call) to do there,
+# in that instant, what a user or the system does.
+# Usage: bash tests/cli_commit.sh path/to/cablesim
+source "$(dirname "$0")/lib.sh"
+if ! command -v gdb >/dev/null; then
+    echo "skipped: no gdb to stop the commit between its renames"
+    exit 77
+fi
+if ! gdb -q -batch -iex "set debuginfod enabled off" -ex run --args true 2>&1 | grep -q "exited normally"; then
+    echo "skipped: gdb cannot run a program here (ptrace refused)"
+    exit 77
+fi
+# at_put N ACTION ARGS...: cablesim ARGS, stopped as it puts its N-th file in place to run the gdb command
+# ACTION ("shell ..." or "kill"); its terminal output into $tmp/at.out, its exit status the function's
+# (255: none, killed)
+at_put() {
+    local n=$1 action=$2 more=()
+    shift 2
+    for _ in $(seq 2 "$n"); do more+=(-ex continue); done
+    # LeakSanitizer cannot run under ptrace: the sanitized build's leak check is off for these runs
+    gdb -q -batch -iex "set debuginfod enabled off" -ex "set breakpoint pending on" -ex "break renameat2" \
+        -ex "set environment ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" -ex run "${more[@]}" -ex "$action" -ex delete -ex continue \
+        -ex 'printf "exit status %d\n", $_exitcode' --args "$cs" "$@" >"$tmp/at.out" 2>&1
+    local status
+    status=$(sed -n 's/^exit status \([0-9]*\)$/\1/p' "$tmp/at.out")
+    return "${status:-255}"
+}
+# the files of the manifest of folder $1, in the order the commit put them in place
+listed() { grep -v "^#" "$1/.cablesim-manifest" | cut -f1; }
+# every file under $1 but the manifest, with its checksum
+sums() { (cd "$1" && find . -type f ! -name .cablesim-manifest -exec md5sum {} + | sort); }
+leftovers() { find "$1" -name ".cablesim-tmp.*" -o -name .cablesim-lock; }
+run=(run examples/aps3.yaml --t-end "10 ms")
+
+# A file saved at a new name between the commit's look and its rename: kept, and the files put in place
+# before it (this run's over an earlier run's, exchanged) taken back.
+d="$tmp/saved"
+"$cs" "${run[@]}" -o "$tmp/ref" --plots >/dev/null 2>&1
+fourth=$(listed "$tmp/ref" | sed -n 4p) # the first of plots/, a name new to a run without plots
+"$cs" "${run[@]}" -o "$d" >/dev/null 2>&1
+before=$(sums "$d")
+at_put 4 "shell echo mine >$d/$fourth" "${run[@]}" -o "$d" --plots --set "scenario.speed=30 mph"
+check "a file saved at a new name during the commit: exit 1, the file named, nothing written" '[ $? -eq 1 ] && grep -qxF "cablesim: nothing written: $d/$fourth: something appeared there during the commit, which is kept: move it away and run again" "$tmp/at.out" || { cat "$tmp/at.out"; false; }'
+check "the file saved is kept, the earlier run whole, no temporary or lock left" '[ "$(cat "$d/$fourth")" = mine ] && [ "$(sums "$d" | grep -v "$fourth")" = "$before" ] && [ "$(ls "$d/plots")" = "$(basename "$fourth")" ] && [ -z "$(leftovers "$d")" ]'
+check "the manifest lists both runs' files: each of the three names twice" '[ "$(listed "$d" | sort | uniq -c | awk "\$1 == 2 {print \$2}" | tr "\n" " ")" = "events.csv summary.json timeseries.csv " ] && [ "$(listed "$d" | grep -c ^plots/)" -eq "$(listed "$tmp/ref" | grep -c ^plots/)" ]'
+rm "$d/$fourth"
+out=$("$cs" "${run[@]}" -o "$d" --plots 2>&1)
+check "the next run owns the earlier files by either listing, and lists its own once" '[ $? -eq 0 ] && [ "$(listed "$d")" = "$(listed "$tmp/ref")" ] && cmp -s "$d/timeseries.csv" "$tmp/ref/timeseries.csv" && [ -z "$(leftovers "$d")" ] || { echo "$out"; false; }'
+
+# Killed (kill -9) between two renames: the folder holds the earlier run's files and this run's, which the
+# manifest lists both, so the next run owns them all and replaces them.
+d="$tmp/killed"
+"$cs" "${run[@]}" -o "$d" >/dev/null 2>&1
+at_put 2 kill "${run[@]}" -o "$d" --t-end "12 ms"
+check "killed between two renames: timeseries.csv this run's, summary.json the earlier run's" '[ $? -eq 255 ] && [ "$(tail -1 "$d/timeseries.csv" | cut -d, -f1)" = 0.012 ] && grep -q "\"t_end_s\":0.01," "$d/summary.json" && [ -e "$d/.cablesim-lock" ] || { cat "$tmp/at.out"; false; }'
+out=$("$cs" "${run[@]}" -o "$d" 2>&1)
+check "the next run owns both runs' files: no refusal, its own in place, no temporary or lock left" '[ $? -eq 0 ] && cmp -s "$d/timeseries.csv" "$tmp/ref/timeseries.csv" && [ "$(listed "$d" | tr "\n" " ")" = "timeseries.csv events.csv summary.json " ] && [ -z "$(leftovers "$d")" ] || { echo "$out"; false; }'
+
+# The same into a new folder: the files put before are removed again.
+d="$tmp/new"
+at_put 2 "shell mkdir -p $d/events.csv/x" "${run[@]}" -o "$d"
+check "a folder made at a new name during the commit: exit 1, nothing written, only that folder left" '[ $? -eq 1 ] && grep -qxF "cablesim: nothing written: $d/events.csv: something appeared there during the commit, which is kept: move it away and run again" "$tmp/at.out" && [ "$(ls -A "$d" | tr "\n" " ")" = ".cablesim-manifest events.csv " ] && [ -d "$d/events.csv/x" ] || { cat "$tmp/at.out"; ls -A "$d"; false; }'
+
+# A rename the system refuses after others, which it refuses to take back too (the folder made
+# immutable): the message names the file in place as this run's and says to run again; the next run does.
+probe="$tmp/probe"
+mkdir "$probe"
+if ! chattr +i "$probe" 2>/dev/null; then
+    echo "skipped: a rename that cannot be taken back (chattr +i is refused here: not root, or not ext4)"
+else
+    chattr -i "$probe"
+    d="$tmp/stuck"
+    "$cs" "${run[@]}" -o "$d" >/dev/null 2>&1
+    at_put 2 "shell chattr +i $d" "${run[@]}" -o "$d" --t-end "12 ms"
+    status=$?
+    chattr -i "$d"
+    check "a rename refused and not taken back: exit 1, which file is this run's, what to do" '[ $status -eq 1 ] && grep -qxF "cablesim: $d/events.csv: Operation not permitted; $d holds this run'"'"'s timeseries.csv, the rest as before the command: run it again to write them all" "$tmp/at.out" && ! grep -q "nothing written" "$tmp/at.out" || { cat "$tmp/at.out"; false; }'
+    check "timeseries.csv is this run's, summary.json the earlier run's, the manifest owns both" '[ "$(tail -1 "$d/timeseries.csv" | cut -d, -f1)" = 0.012 ] && grep -q "\"t_end_s\":0.01," "$d/summary.json" && [ "$(listed "$d" | grep -c "^timeseries.csv$")" -eq 2 ] || { tail -1 "$d/timeseries.csv"; false; }'
+    out=$("$cs" "${run[@]}" -o "$d" --t-end "12 ms" 2>&1)
+    check "run again: all this run's, no temporary or lock left" '[ $? -eq 0 ] && grep -q "\"t_end_s\":0.012" "$d/summary.json" && [ "$(listed "$d" | tr "\n" " ")" = "timeseries.csv events.csv summary.json " ] && [ -z "$(leftovers "$d")" ] || { echo "$out"; false; }'
+fi
+finish
