@@ -223,6 +223,9 @@ try {
     const c = h.querySelector('canvas');
     return [c.width / devicePixelRatio, Math.round(c.getBoundingClientRect().width), h.clientWidth];
   }));
+  // the plots as the screen has them again after the print media above (the ResizeObserver's callbacks
+  // come before the next frames: wait for two)
+  await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
   const onScreen = await plotWidths();
   await page.evaluate(() => {
     document.body.classList.add('print-all');
