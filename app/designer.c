@@ -154,9 +154,13 @@ static char *unit_table(cs_loader *l) {
             texts[n] = found[n];
             n++;
         }
-    cs_units_write_table(l->units, texts, n, f);
+    int written = cs_units_write_table(l->units, texts, n, 1, f);
     fclose(f);
     free(texts), free(found);
+    if (written < 0) {
+        free(table);
+        return NULL;
+    }
     return table;
 }
 

@@ -25,9 +25,13 @@ int main(int argc, char **argv) {
         fprintf(stderr, "units_table: %s\n", u ? "out of memory" : err.message);
         return 1;
     }
-    int written = cs_units_write_table(u, cs_units_usual, cs_units_usual_count, mem);
+    int written = cs_units_write_table(u, cs_units_usual, cs_units_usual_count, 0, mem);
     fclose(mem);
     cs_units_free(u);
+    if (written < 0) {
+        fprintf(stderr, "units_table: out of memory\n");
+        return 1;
+    }
     FILE *out = fopen(argv[1], "w");
     if (!out) {
         perror(argv[1]);

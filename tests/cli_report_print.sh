@@ -5,7 +5,8 @@
 # F2656 as run) are printed to PDF by headless chromium (`--print-to-pdf`, the paper chosen by an @page
 # size added to a copy, as a print dialog would), and each PDF must have exactly one page of that paper;
 # the page's print styles and the sheet's own may set no font size under 8 pt; the sheet, as chromium
-# builds it (--dump-dom), names the test and gives each criterion its verdict. Skipped (77) in a build
+# builds it (--dump-dom), names the test and gives each criterion its verdict. "Print the whole report"
+# prints no plot and no word wider than the printable width of A4 or Letter. Skipped (77) in a build
 # without the report page (node, npm) or without chromium.
 source "$(dirname "$0")/lib.sh"
 
@@ -58,6 +59,32 @@ if plain_only "the pages in chromium: the data sheets and their prints on A4 and
                 'awk -v s="$size" -v w="$want" "BEGIN {split(s, a); split(w, b); exit !(a[1] != \"\" && (a[1] - b[1])^2 < 1 && (a[2] - b[2])^2 < 1)}"'
         done
     done
+
+    # The whole report printed ("Print the whole report": body.print-all, here in a copy) from a window
+    # wider than the paper, on A4 and Letter: no plot and no word beyond the printable width (the page's
+    # 10-mm margins), each plot drawn for the paper before the print (plots.js) and scaled to the page by
+    # the print styles, not cut at the page's edge. A plot printed as a picture has its width in the PDF
+    # (pdfimages: pixels over pixels per inch); one drawn as the print began is text and lines (pdftotext).
+    if command -v pdfimages >/dev/null && command -v pdftotext >/dev/null; then
+        for paper in A4 letter; do
+            sed "s|<body>|<body class=\"print-all\">|; s|</head>|<style>@page { size: $paper; }</style></head>|" \
+                "$tmp/rs1/report.html" >"$tmp/all-$paper.html"
+            "$browser" "${flags[@]}" --window-size=1600,1000 --print-to-pdf="$tmp/all-$paper.pdf" \
+                "file://$tmp/all-$paper.html" >/dev/null 2>&1
+            n=$(pages "$tmp/all-$paper.pdf" 2>/dev/null)
+            check "RS1 whole, $paper: printed on pages (got ${n:-none})" '[ "${n:-0}" -gt 1 ]'
+            width=$([ $paper = A4 ] && echo 595.3 || echo 612)
+            wide=$(pdfimages -list "$tmp/all-$paper.pdf" | awk -v w="$width" \
+                'NR > 2 && $3 == "image" && $4 / $13 * 72 > w - 2 * 28.35 + 1 {printf "%s px at %s ppi on page %s; ", $4, $13, $1}')
+            check "RS1 whole, $paper: no picture wider than the printable width${wide:+ (found: $wide)}" '[ -z "$wide" ]'
+            out=$(pdftotext -bbox "$tmp/all-$paper.pdf" - | grep -o -E '<word xMin="[0-9.]+" yMin="[0-9.]+" xMax="[0-9.]+"[^>]*>[^<]*' |
+                awk -F'"' -v w="$width" '$2 < 28.35 - 1 || $6 > w - 28.35 + 1 {sub(/.*>/, ""); printf "%s; ", $0}')
+            check "RS1 whole, $paper: no word beyond the printable width${out:+ (found: $out)}" '[ -z "$out" ]'
+            check "RS1 whole, $paper: the plots printed" 'pdftotext "$tmp/all-$paper.pdf" - | grep -q "Where the energy went"'
+        done
+    else
+        echo "skipped: the whole report's print width (no pdfimages or pdftotext: poppler-utils)"
+    fi
 
     # RS1 is NCHRP Report 350's test 3-11 as run: each of its criteria on the sheet with a verdict, D and K
     # not judged (never a pass); APS3's truck: ASTM F2656's penetration designation

@@ -211,7 +211,8 @@ static void test_two_threads(void **state) {
 }
 
 /* A table of the usual units and the examples' own, written from udunits2, converts to the same bits and
- * words the same messages; a unit it lacks is unknown. */
+ * words the same messages, a reciprocal unit's too ("'s/m' is a unit of 1/speed"); a unit it lacks is
+ * unknown. */
 static void test_table_same_bits(void **state) {
     cs_units *u = *state;
     char *text = NULL;
@@ -219,9 +220,10 @@ static void test_table_same_bits(void **state) {
     size_t size = 0;
     FILE *f = open_memstream(&text, &size);
     assert_non_null(f);
-    assert_int_equal(cs_units_write_table(u, cs_units_usual, cs_units_usual_count, f), cs_units_usual_count);
+    assert_int_equal(cs_units_write_table(u, cs_units_usual, cs_units_usual_count, 1, f),
+                     cs_units_usual_count);
     const char *more[] = {"kPa/m", "in", "1000 lbf/ft^2", "no-such-unit"};
-    assert_int_equal(cs_units_write_table(u, more, 4, f), 3);
+    assert_int_equal(cs_units_write_table(u, more, 4, 1, f), 3);
     fclose(f);
     cs_units *t = cs_units_from_table(text, &err);
     if (!t) fail_msg("%s", err.message);
@@ -253,7 +255,14 @@ static void test_table_same_bits(void **state) {
                  {"fast", CS_Q_TIME},
                  {"1e400 m", CS_Q_LENGTH},
                  {"2 mph", CS_Q_ANGLE},
-                 {"7 %", CS_Q_NUMBER}};
+                 {"7 %", CS_Q_NUMBER},
+                 {"2 s/m", CS_Q_SPEED},
+                 {"2 h/km", CS_Q_SPEED},
+                 {"0.5 ft-1", CS_Q_LENGTH},
+                 {"0.5 1/ft", CS_Q_LENGTH},
+                 {"2 in/kip", CS_Q_STIFFNESS},
+                 {"3 1/psi", CS_Q_PRESSURE},
+                 {"2 1/in2", CS_Q_AREA}};
     for (size_t i = 0; i < sizeof reads / sizeof reads[0]; i++) {
         double a = NAN, b = NAN;
         cs_error ea = {CS_OK, ""}, eb = {CS_OK, ""};

@@ -35,6 +35,9 @@ function otherAxis(label, factor, decimals) {
   };
 }
 
+// A plot's width in print, px: a plot card's inside on A4 at the page's 10-mm margins (190 mm, 718 px, less
+// the card's padding and border), so that its text prints at about its size on the screen on A4 or Letter.
+const PRINT_WIDTH = 690;
 const timeAxis = { label: 'time (s)', values: (_u, splits) => splits.map((v) => v.toFixed(3).replace(/0+$/, '').replace(/\.$/, '')) };
 
 // Markers drawn over a plot: {t, v, color, shape: 'circle'|'cross'|'diamond'|'triangle', label}. Returns
@@ -394,14 +397,30 @@ export function buildPlots(container, data, onSeek) {
     container.append(el('p', { class: 'nogl' }, `The path in plan could not be drawn: ${e.message}`));
     console.error(`path in plan: ${e.message}`);
   }
-  const resize = () => {
+  // each plot at its card's width, or at width (px), drawn before this returns
+  const resize = (width = null) => {
     for (const p of plots) {
       if (!p.u) continue;
-      const w = Math.max(300, p.host.clientWidth);
-      if (Math.abs(w - p.u.width) > 2) p.u.setSize({ width: w, height: 300 });
+      const w = width || Math.max(300, p.host.clientWidth);
+      if (Math.abs(w - p.u.width) > 2) p.u.batch(() => p.u.setSize({ width: w, height: 300 }));
     }
   };
-  new ResizeObserver(resize).observe(container);
+  // A plot is a canvas as wide as its card on the screen. The whole report printed (body.print-all): each is
+  // drawn PRINT_WIDTH wide before the page is laid out for the paper (a print lays out no ResizeObserver's
+  // width), then scaled by the print styles to the page's width, and drawn for the screen again after; in
+  // between, the observer leaves them so (the plots' new heights would call it).
+  let printing = false;
+  new ResizeObserver(() => {
+    if (!printing) resize();
+  }).observe(container);
+  window.addEventListener('beforeprint', () => {
+    printing = document.body.classList.contains('print-all');
+    if (printing) resize(PRINT_WIDTH);
+  });
+  window.addEventListener('afterprint', () => {
+    printing = false;
+    resize();
+  });
   let current = 0;
   return {
     plots,

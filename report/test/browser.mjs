@@ -5,7 +5,8 @@
 // back), scrubbing to the end moves the vehicle, playing advances, every plot has data, the design table
 // gives the model's values in their units; printed as it opens (print media) it is the data sheet alone on one
 // page of A4 and of Letter with no text under 8 pt, and printed whole (print media, A4) the page drops the
-// replay and its controls, shows every timeline row and nothing wider than the page, and makes a PDF. Screenshots and the
+// replay and its controls, shows every timeline row and nothing wider than the page, and makes a PDF; printed
+// whole from a window wider than the paper, each plot is drawn for the paper and as wide as its card. Screenshots and the
 // PDF go to OUT (a build dir: test artifacts, never committed).
 //
 //   node report/test/browser.mjs --cablesim BUILD/cablesim --modules BUILD/report/node_modules --out DIR
@@ -213,6 +214,30 @@ try {
     writeFileSync(join(out, `datasheet-${format}.pdf`), one);
   }
   await page.emulateMedia({ media: 'screen' });
+
+  // printed whole from a window wider than the paper, as the button prints it: window.print() fires
+  // beforeprint, then lays the page out for the paper with no frame between (no ResizeObserver's width). Each
+  // plot drawn for the paper, no wider than A4's printable width (190 mm, 718 px), and shown as wide as its
+  // card; after the print, drawn for the screen again.
+  const plotWidths = () => page.evaluate(() => [...document.querySelectorAll('.plot')].map((h) => {
+    const c = h.querySelector('canvas');
+    return [c.width / devicePixelRatio, Math.round(c.getBoundingClientRect().width), h.clientWidth];
+  }));
+  // the plots as the screen has them again after the print media above (the ResizeObserver's callbacks
+  // come before the next frames: wait for two)
+  await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
+  const onScreen = await plotWidths();
+  await page.evaluate(() => {
+    document.body.classList.add('print-all');
+    window.dispatchEvent(new Event('beforeprint'));
+  });
+  await page.emulateMedia({ media: 'print' });
+  const drawn = await plotWidths();
+  check('printed whole from a wide window: each plot drawn for the paper (at most 718 px) and as wide as its card', drawn.length > 0 && drawn.every(([w, shown, card]) => w <= 718 && Math.abs(shown - card) <= 1), JSON.stringify(drawn));
+  await page.evaluate(() => window.dispatchEvent(new Event('afterprint')));
+  await page.emulateMedia({ media: 'screen' });
+  const after = await plotWidths();
+  check('after the print: each plot drawn for the screen again', onScreen.some(([w]) => w > 718) && JSON.stringify(after) === JSON.stringify(onScreen), JSON.stringify([onScreen, after]));
 
   // printed whole (the sheet's "Print the whole report"): no controls or replay, every timeline row,
   // nothing wider than an A4 page, a PDF of a few pages

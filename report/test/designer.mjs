@@ -6,13 +6,15 @@
 // (every value the engine is given, its hash), the outcome and the designations as run are the same, and the numbers
 // are too, to every digit of summary.json, when the command has the page's maths (musl's: CMake's
 // default), else within 2% (see compare below). The downloaded YAML runs natively to every digit of
-// `cablesim run --set`; a value in a wrong unit shows its message beside its field; a sweep runs; a
+// `cablesim run --set`; a value in a wrong unit, or in the reciprocal of its unit ("2 s/m"), shows the
+// command's message beside its field; a sweep runs; a
 // model of two files (tests/good/split.yaml) runs as the command runs it. One APS3 run's time in the page is measured (the
 // run, cs_run, by the engine's clock, and the whole call that loads, runs and sums it up: the fastest and
 // the median of 21, in OUT/timing.json) and recorded, not checked.
 //
 //   node report/test/designer.mjs --cablesim BUILD/cablesim --modules BUILD/report/node_modules --out DIR
 //                                 [--math glibc|musl]   (the command's maths, as CMake resolved CS_MATH)
+import { spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
@@ -123,6 +125,19 @@ try {
   check('a speed in kg is refused', !bad.ok);
   const msg = await page.locator('.field[data-path="scenario.speed"] .error').innerText();
   check('its message stands beside the field', msg.includes("'kg' is a unit of mass, not of speed"), msg);
+  // a value in the reciprocal of its unit: named as the command names it, word for word
+  for (const [path, value, words] of [
+    ['scenario.speed', '2 s/m', `'s/m' is a unit of 1/speed, not of speed (expected a speed, e.g. "40 mph")`],
+    ['barrier.cables[0].height', '0.5 ft-1', `'ft-1' is a unit of 1/length, not of length (a '-' before a digit is a negative power) (expected a length, e.g. "8 ft")`],
+  ]) {
+    const was = await field(path).inputValue();
+    const refused = await setValue(path, value);
+    const shown = await page.locator(`.field[data-path="${path}"] .error`).innerText();
+    const command = spawnSync(args.cablesim, ['check', 'examples/aps3.yaml', '--set', `${path}=${value}`], { encoding: 'utf8' });
+    check(`${value} for ${path}: refused, "${words}" beside the field`, !refused.ok && shown === words, shown);
+    check(`${value} for ${path}: the command's words`, command.status !== 0 && command.stderr.includes(`--set ${path}=${value}: ${words}\n`), command.stderr);
+    await setValue(path, was);
+  }
   await setValue('scenario.speed', '35 mph');
 
   // a sweep of the spacing: three runs, each with its response

@@ -63,17 +63,29 @@ static int convertible(cs_units *u, void *unit, cs_quantity q) {
     return u->ops->convert(u, unit, q, 1.0, &si) == 0;
 }
 
+/* The quantity a unit measures: the first of a dimension that converts it (an angle's units are pure
+ * numbers: not asked), else CS_Q_NUMBER for a pure number, else -1. */
+static int quantity_of(cs_units *u, void *unit) {
+    for (int q = CS_Q_LENGTH; q < CS_Q_COUNT; q++)
+        if (q != CS_Q_ANGLE && convertible(u, unit, q)) return q;
+    return convertible(u, unit, CS_Q_NUMBER) ? CS_Q_NUMBER : -1;
+}
+
 /* Name the kind of quantity a unit measures, for a message. */
 static const char *kind_of(cs_units *u, void *unit) {
-    for (int q = CS_Q_LENGTH; q < CS_Q_COUNT; q++)
-        if (q != CS_Q_ANGLE && convertible(u, unit, q)) return quantities[q].name;
-    return convertible(u, unit, CS_Q_NUMBER) ? "pure number" : NULL;
+    int q = quantity_of(u, unit);
+    return q < 0 ? NULL : q == CS_Q_NUMBER ? "pure number" : quantities[q].name;
+}
+
+/* The text of a unit's reciprocal as the messages ask a unit system for it: "1/(s/m)". */
+static void reciprocal_text(const char *text, char *out, size_t size) {
+    snprintf(out, size, "1/(%s)", text);
 }
 
 /* Name the kind of quantity a unit is the reciprocal of ("s/m": speed, "ft-2": area), for a message. */
 static const char *reciprocal_kind_of(cs_units *u, const char *text) {
     char inverse[80];
-    snprintf(inverse, sizeof inverse, "1/(%s)", text);
+    reciprocal_text(text, inverse, sizeof inverse);
     void *unit = u->ops->parse(u, inverse);
     const char *kind = unit ? kind_of(u, unit) : NULL;
     if (unit) u->ops->release(u, unit);
@@ -342,26 +354,71 @@ static int by_factor(cs_units *u, void *unit, cs_quantity q, double factor) {
     return 1;
 }
 
-int cs_units_write_table(cs_units *u, const char *const *texts, int count, FILE *f) {
-    int written = 0;
-    for (int i = 0; i < count; i++) {
+/* The ways a value's reciprocal unit is written, for a unit of text: "s/m" for "m/s"; "1/ft" and "ft-1" for
+ * "ft"; "1/in2" for "in2". Each into spelt[n] (size 80); the count, at most 2. */
+static int reciprocal_spellings(const char *text, char (*spelt)[80]) {
+    const char *slash = strchr(text, '/');
+    int n = 0;
+    if (strpbrk(text, " *()") || strlen(text) >= 60) return 0;
+    if (!slash) {
+        snprintf(spelt[n++], 80, "1/%s", text);
+        if (strspn(text, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ") == strlen(text))
+            snprintf(spelt[n++], 80, "%s-1", text);
+    } else if (slash > text && slash[1] && !strchr(slash + 1, '/') && strncmp(text, "1/", 2) != 0) {
+        snprintf(spelt[n++], 80, "%s/%.*s", slash + 1, (int)(slash - text), text);
+    }
+    return n;
+}
+
+/* One unit's line of a table: its text, then its factor to each quantity's SI unit. */
+static void write_line(cs_units *u, void *unit, const char *text, FILE *f) {
+    fprintf(f, "%s\t", text);
+    for (int q = 0; q < CS_Q_COUNT; q++) {
+        double factor;
+        if (u->ops->convert(u, unit, q, 1.0, &factor) == 0 && isfinite(factor) &&
+            by_factor(u, unit, q, factor))
+            fprintf(f, " %.17g", factor);
+        else
+            fprintf(f, " -");
+    }
+    fputc('\n', f);
+}
+
+int cs_units_write_table(cs_units *u, const char *const *texts, int count, int reciprocals, FILE *f) {
+    /* the texts; with reciprocals, the reciprocal spellings of those of a dimension and "1/(X)" of each X
+     * of no quantity where that is of one: what a message asks of a unit system to name a reciprocal unit */
+    enum { TEXT, SPELLING, INVERSE };
+    struct entry {
+        const char *text;
+        int kind;
+        char made[80];
+    } *e = calloc((size_t)count * 6 + 1, sizeof *e);
+    if (!e) return -1;
+    int n = 0, written = 0;
+    for (; n < count; n++)
+        e[n].text = texts[n];
+    for (int i = 0; i < n; i++) {
         int seen = 0;
         for (int j = 0; j < i && !seen; j++)
-            seen = strcmp(texts[i], texts[j]) == 0;
-        void *unit = seen || strpbrk(texts[i], "\t\n") ? NULL : u->ops->parse(u, texts[i]);
+            seen = strcmp(e[i].text, e[j].text) == 0;
+        void *unit = seen || strpbrk(e[i].text, "\t\n") ? NULL : u->ops->parse(u, e[i].text);
         if (!unit) continue;
-        fprintf(f, "%s\t", texts[i]);
-        for (int q = 0; q < CS_Q_COUNT; q++) {
-            double factor;
-            if (u->ops->convert(u, unit, q, 1.0, &factor) == 0 && isfinite(factor) &&
-                by_factor(u, unit, q, factor))
-                fprintf(f, " %.17g", factor);
-            else
-                fprintf(f, " -");
-        }
-        fputc('\n', f);
+        int q = quantity_of(u, unit);
+        if (e[i].kind != INVERSE || q > CS_Q_NUMBER) write_line(u, unit, e[i].text, f);
         u->ops->release(u, unit);
-        written++;
+        written += e[i].kind == TEXT;
+        char spelt[2][80];
+        int more =
+            reciprocals && q > CS_Q_NUMBER && e[i].kind == TEXT ? reciprocal_spellings(e[i].text, spelt) : 0;
+        for (int k = 0; k < more; k++, n++) {
+            memcpy(e[n].made, spelt[k], sizeof e[n].made);
+            e[n].text = e[n].made, e[n].kind = SPELLING;
+        }
+        if (reciprocals && q < 0 && e[i].kind != INVERSE) {
+            reciprocal_text(e[i].text, e[n].made, sizeof e[n].made);
+            e[n].text = e[n].made, e[n++].kind = INVERSE;
+        }
     }
+    free(e);
     return written;
 }

@@ -57,8 +57,13 @@ extern const int cs_units_usual_count;
 /* The units named by texts[0..count) that u knows (each once; a text holding a tab or a newline is left
  * out) as a table for cs_units_from_table: a line each, "TEXT<tab>" then CS_Q_COUNT factors, one for each
  * quantity, the factor to its SI unit (%.17g: exact) or '-' where the unit is not one of that quantity
- * or u converts it otherwise than by a factor alone. Returns the number of lines. */
-int cs_units_write_table(cs_units *u, const char *const *texts, int count, FILE *f);
+ * or u converts it otherwise than by a factor alone. With reciprocals, so that the table names a value
+ * given in a reciprocal unit as u does ("'s/m' is a unit of 1/speed"; the designer page's table), it also
+ * holds the reciprocals of the texts' units of a dimension as a value is written in them ("s/m" for "m/s";
+ * "1/ft" and "ft-1" for "ft"; "1/in2") and the reciprocal "1/(X)" of each unit X of no quantity, where
+ * that is one of a quantity. Returns the number of texts written (the reciprocals' lines not counted), or
+ * -1 when out of memory. */
+int cs_units_write_table(cs_units *u, const char *const *texts, int count, int reciprocals, FILE *f);
 /* A unit system that knows the units of a table (cs_units_write_table's text) and converts each by its
  * factor: the same messages as any unit system, "unknown unit" for a unit it lacks. NULL with err
  * filled on a malformed table (CS_ERR_INVALID) or no memory (CS_ERR_MEMORY). */
