@@ -12,8 +12,8 @@
 //   node report/test/browser.mjs --cablesim BUILD/cablesim --modules BUILD/report/node_modules --out DIR
 //        [--report FILE]      check this report instead of running one
 //        [--model FILE] [--t-end T]   the run (default examples/aps3.yaml, 55 ms: the 50-ms average exists)
-//        [--docs-shot FILE] [--docs-at F]   also the top of the page, replay at F of the run (0.6), 1200 x 1080
-//                             (docs/report.png)
+//        [--docs-shot FILE] [--docs-at F]   also the story, the cards and the replay (the data sheet above them
+//                             scrolled past), replay at F of the run (0.6), 1200 x 1080 (docs/report.png)
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
@@ -161,7 +161,7 @@ try {
     await page.setViewportSize({ width: 1200, height: 1080 });
     await page.evaluate((f) => {
       window.csReport.replay.seekFrame(Math.round(f * (window.csReport.replay.frameCount - 1)));
-      window.scrollTo(0, 0);
+      document.getElementById('summary').scrollIntoView();
     }, Number(args['docs-at'] || 0.6));
     await page.waitForTimeout(500);
     await page.screenshot({ path: resolve(args['docs-shot']) });

@@ -14,9 +14,11 @@
 //
 //   node report/test/designer.mjs --cablesim BUILD/cablesim --modules BUILD/report/node_modules --out DIR
 //                                 [--math glibc|musl]   (the command's maths, as CMake resolved CS_MATH)
+//                                 [--docs-shot FILE]   also the posts 6 ft apart at 35 mph, a sweep of their
+//                                 spacing, then a speed in a wrong unit refused: 1280 x 820 (docs/designer.png)
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
-import { join } from 'node:path';
+import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 
 import { check, chromiumPath, finish, launch, pageTestArgs, runCablesim, watchedPage } from './harness.mjs';
@@ -164,6 +166,23 @@ try {
   check('a sweep to a run that gets through: the held run gives its max dynamic penetration, the one that got through "beyond" how far it got', fast.cells.length === 2 && through.max_dynamic_penetration_m === null && slow[1] === held.outcome && near(slow[2], held.max_dynamic_penetration_m) && quick[1] === through.outcome && quick[2].startsWith('beyond ') && near(quick[2].slice(7), through.penetration_beyond_m) && fast.sweep.ys[1] === null, JSON.stringify([fast.cells, through.penetration_beyond_m, held.max_dynamic_penetration_m]));
   await page.selectOption('#sweep-field', 'barrier.posts[0].spacing');
   await page.screenshot({ path: join(out, 'designer.png'), fullPage: false });
+  if (args['docs-shot']) {
+    // the spacing swept at 35 mph, then the speed in kg: its message beside it, the last run's results dimmed
+    await page.fill('#sweep-from', '4 ft');
+    await page.fill('#sweep-to', '8 ft');
+    await page.fill('#sweep-steps', '5');
+    await page.click('#sweep-run');
+    await setValue('scenario.speed', '35 kg');
+    await page.setViewportSize({ width: 1280, height: 820 });
+    await page.evaluate(() => {
+      document.getElementById('status').scrollIntoView();
+      const form = document.querySelector('aside');
+      form.scrollTop = form.scrollHeight;
+    });
+    await page.waitForTimeout(500);
+    await page.screenshot({ path: resolve(args['docs-shot']) });
+    await setValue('scenario.speed', '35 mph');
+  }
 
   // the time of one APS3 run in the page, as the file has it
   await page.evaluate(() => document.getElementById('reset').click());
