@@ -363,15 +363,17 @@ static double booked(const cs_state *s) {
  * slide alone (from the end of its onset's step at 30 degrees to the rotation limit), the truck's loss of
  * energy (kinetic and potential, less what its tyres took) equals what the ledger books: the soil's work
  * (the footing turning and the slide), the post's elastic energy, the crush and, at the failure, the
- * released. The slide's share of the soil's work (its work less the turn's, M(x) |d alpha_p| at each
- * commit) is the closed form Q0 D (x0^3 - x^3) / 3 and the hand integral of Q0 x^2 dw over the steps'
- * slides by the trapezoid rule.
- * Tolerances: the balance is the step's first-order error, bounded by a step's work at the largest push,
- * F v dt (89 J: 35.6 kN, 5 m/s, 0.5 ms). Measured: the truck loses 13.3 J more than is booked over the run
- * and 14.2 J over the slide (at 0.25 and 0.125 ms: 6.7 and 3.2, 7.0 and 3.5 J: first order; the turn is
- * booked at the end of a step's cap M(x), which falls as the post comes out). A truck that did not pay for
- * the slide (the gradient without R dw) loses 2.9 kJ less over it. The trapezoid rule errs by Q0 dw^3 /
- * (6 D^2) a step, at most 1.3e-5 of the step's work (dw 2.5 mm, x 0.28 at the end; 1.5e-6 over the slide). */
+ * released. The slide's share of the soil's work (its work less the turn's, booked at the mean of the
+ * falling capacity M(x) over each step) is the closed form Q0 D (x0^3 - x^3) / 3 and the hand integral of
+ * Q0 x^2 dw over the steps' slides by the trapezoid rule.
+ * Tolerances. Over the run the path has kinks (the yield, the slide's onset), where the step errs to first
+ * order, by at most a step's work at the largest push, F v dt (89 J: 35.6 kN, 5 m/s, 0.5 ms); measured
+ * 0.8 J. Over the slide the path is smooth and the truck's trapezoid rule and the booking agree to second
+ * order, that step's work times v dt / lever (0.2 J); allowed 1 J, measured 0.1 J. The turn booked at
+ * the end of each step's capacity lost 14 J there (first order: 7.0 and 3.5 J at 0.25 and 0.125 ms), and
+ * a truck that did not pay for the slide (the gradient without R dw) loses 2.9 kJ less. The trapezoid
+ * rule errs on the integral by Q0 dw^3 / (6 D^2) a step, at most 1.3e-5 of the step's work (dw 2.5 mm, x
+ * 0.28 at the end; 1.5e-6 over the slide). */
 static void sliding_struck_post_costs_the_truck_its_work(void **state) {
     (void)state;
     cs_model *m = sliding_post_model(30.0 * M_PI_2_VALUE / 90.0);
@@ -384,7 +386,7 @@ static void sliding_struck_post_costs_the_truck_its_work(void **state) {
     double hand = 0.0, turn = 0.0, push_max = 0.0, slide_lost = NAN, slide_booked = NAN, slide_soil = NAN;
     while (ps->status != CS_POST_FAILED_ROTATION && ps->status != CS_POST_FAILED_PULLOUT) {
         int was = ps->withdrawing;
-        double w0 = ps->pull, p0[2] = {ps->plastic[0], ps->plastic[1]};
+        double w0 = ps->pull, p0[2] = {ps->plastic[0], ps->plastic[1]}, m0 = cs_post_moment_cap(pm, ps);
         assert_int_equal(cs_step(m, s, &err), CS_OK);
         assert_true(s->t < 1.0);
         push_max = fmax(push_max, ps->push);
@@ -393,7 +395,8 @@ static void sliding_struck_post_costs_the_truck_its_work(void **state) {
         if (!was) continue; /* the onset's step */
         double x0 = 1.0 - w0 / pm->embedment, x1 = 1.0 - ps->pull / pm->embedment;
         hand += pm->pullout_cap * 0.5 * (x0 * x0 + x1 * x1) * (ps->pull - w0);
-        turn += cs_post_moment_cap(pm, ps) * hypot(ps->plastic[0] - p0[0], ps->plastic[1] - p0[1]);
+        turn +=
+            0.5 * (m0 + cs_post_moment_cap(pm, ps)) * hypot(ps->plastic[0] - p0[0], ps->plastic[1] - p0[1]);
         slide_lost = slide_v0 - vehicle_energy(s), slide_booked = booked(s) - slide_b0,
         slide_soil = s->e_soil - slide_soil0;
     }
@@ -407,7 +410,7 @@ static void sliding_struck_post_costs_the_truck_its_work(void **state) {
            slide, tol);
     assert_true(tol < 0.05 * slide);
     CHECK_ABS(lost, booked(s) - b0, tol);
-    CHECK_ABS(slide_lost, slide_booked, tol);
+    CHECK_ABS(slide_lost, slide_booked, 1.0);
     CHECK_REL(slide_soil - turn, hand, 1e-5);
     CHECK_REL(slide_soil - turn, slide, 1e-9);
     cs_state_free(s);
