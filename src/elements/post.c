@@ -186,6 +186,17 @@ static void residual_now(const cs_model *model, const cs_state *s, int p, const 
     cs_post_residual_at(model, s, p, s->posts[p].tilt, chords, axis, rails, r);
 }
 
+/* The moment a plastic turn since the last commit is booked at, q the capacity now. A struck post sliding
+ * out has its capacity fall over the step, from that at the last commit's slide to q, while the vehicle
+ * pays for the turn at the trapezoid rule's mean of the two (step.c); booked at q alone the turn would
+ * lose half the fall times the turn each step (14 J of a 10 kJ slide at 0.5 ms, tests/test_post.c). */
+static double turn_moment(const cs_post_model *pm, const cs_post_state *ps, double q) {
+    if (!ps->captured || !ps->withdrawing) return q;
+    cs_post_state at = *ps;
+    cs_post_struck_slide_set(pm, &at, ps->pull_commit);
+    return 0.5 * (cs_post_moment_cap(pm, &at) + q);
+}
+
 /* End of step: plastic rotation (radial return) and its work, base shear and axial pull. */
 void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     cs_post_state *ps = &s->posts[p];
@@ -197,7 +208,7 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     if (n > q) { /* radial return to the capacity */
         double u[2] = {tr[0] / n, tr[1] / n};
         double np[2] = {ps->tilt[0] - q / pm->k_rot * u[0], ps->tilt[1] - q / pm->k_rot * u[1]};
-        double w = q * v2_norm(np[0] - ps->plastic[0], np[1] - ps->plastic[1]);
+        double w = turn_moment(pm, ps, q) * v2_norm(np[0] - ps->plastic[0], np[1] - ps->plastic[1]);
         int soil = pm->soil_yields || q < pm->moment_cap; /* a footing coming out turns in the soil */
         if (soil)
             s->e_soil += w;

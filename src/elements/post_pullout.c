@@ -199,7 +199,8 @@ void cs_post_struck_slide_start(const cs_model *model, cs_state *s, int p) {
 
 /* A post already sliding under its ropes when struck: from here the edge drags it, so the shaft's slip
  * and the slide's motion, which the rigid-plastic slide does not hold, go to post damping (what the
- * strike takes from them: under 0.2 kJ for the APS posts, theory.md). Call before it is captured. */
+ * strike takes from them: -25 J to 0.87 kJ a post in the examples, theory.md). Call before it is
+ * captured. */
 void cs_post_struck_slide_take(const cs_model *model, cs_state *s, int p) {
     cs_post_state *ps = &s->posts[p];
     if (!ps->withdrawing) return;
