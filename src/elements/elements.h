@@ -161,6 +161,9 @@ double cs_post_pull_cap(const cs_post_model *pm, const cs_post_state *ps);
 double cs_post_moment_cap(const cs_post_model *pm, const cs_post_state *ps);
 /* The ropes' and rails' pull along post p's axis as placed, N. */
 double cs_post_axial_pull(const cs_model *model, const cs_state *s, int p);
+/* The balance of post p's pull as placed: the ropes' and rails' pull along it less the shaft's resistance
+ * and the slide's inertial force over the time since the last commit (the pull's row, in N). */
+double cs_post_pull_balance(const cs_model *model, const cs_state *s, int p);
 /* A post whose pull has reached its capacity starts to slide out: returns 1 if it started. */
 int cs_post_pull_start(const cs_model *model, cs_state *s, int p);
 /* End of step: the slide's plastic work (soil) and the post out of the ground at its embedment. */

@@ -80,7 +80,8 @@ static double trial_of(const cs_post_model *pm, const cs_post_state *ps) {
     return pm->pull_stiffness * (ps->pull - ps->pull_plastic);
 }
 
-double cs_post_axial_pull(const cs_model *model, const cs_state *s, int p) {
+/* The ropes' and rails' pull along post p's axis, the spans' chords from the solve's rows if given. */
+static double axial_pull(const cs_model *model, const cs_state *s, int p, const cs_rows *rows) {
     double a[3], f = 0.0;
     cs_post_axis_at(s->posts[p].tilt, a);
     for (int c = 0; c < model->cable_count; c++) {
@@ -88,10 +89,14 @@ double cs_post_axial_pull(const cs_model *model, const cs_state *s, int p) {
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
         if (i <= 0) continue;
         double fc[3];
-        cs_node_force(cs, i, NULL, fc);
+        cs_node_force(cs, i, rows ? cs_rows_chords(model, rows, c) : NULL, fc);
         f += v3_dot(fc, a);
     }
     return f + cs_rail_pull(model, s, p, a);
+}
+
+double cs_post_axial_pull(const cs_model *model, const cs_state *s, int p) {
+    return axial_pull(model, s, p, NULL);
 }
 
 /* Whether post p's slide has its mass over a time h (a re-solve at a commit holds it; h infinite: at rest).
@@ -109,6 +114,17 @@ static double inertia(const cs_post_model *pm, const cs_post_state *ps, double h
     double k = pm->pull_mass / (h * h);
     if (slope) *slope = k;
     return k * (ps->pull - ps->pull_commit - h * ps->pull_rate);
+}
+
+/* What the pull's row takes from the ropes' and rails' pull: the shaft's resistance and the slide's
+ * inertial force, N. */
+static double held_and_inertia(const cs_post_model *pm, const cs_post_state *ps, double h) {
+    double x, slope;
+    return return_map(pm, ps, trial_of(pm, ps), &x, &slope) + inertia(pm, ps, h, NULL);
+}
+
+double cs_post_pull_balance(const cs_model *model, const cs_state *s, int p) {
+    return cs_post_axial_pull(model, s, p) - held_and_inertia(&model->posts[p], &s->posts[p], s->h);
 }
 
 int cs_post_pull_start(const cs_model *model, cs_state *s, int p) {
@@ -226,20 +242,7 @@ void cs_post_struck_slide_commit(const cs_model *model, cs_state *s, int p) {
 static void residual(const cs_model *model, const cs_state *s, const cs_rows *rows, const cs_slot *u,
                      double *r) {
     int p = u->a;
-    const cs_post_model *pm = &model->posts[p];
-    const cs_post_state *ps = &s->posts[p];
-    double a[3], f = 0.0, x, slope;
-    cs_post_axis_at(ps->tilt, a);
-    for (int c = 0; c < model->cable_count; c++) {
-        const cs_cable_state *cs = &s->cables[c];
-        int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
-        if (i < 0) continue;
-        double fc[3];
-        cs_node_force(cs, i, cs_rows_chords(model, rows, c), fc);
-        f += v3_dot(fc, a);
-    }
-    f += cs_rail_pull(model, s, p, a);
-    r[0] = (f - return_map(pm, ps, trial_of(pm, ps), &x, &slope) - inertia(pm, ps, s->h, NULL)) /
+    r[0] = (axial_pull(model, s, p, rows) - held_and_inertia(&model->posts[p], &s->posts[p], s->h)) /
            cs_rows_force_unit(model);
 }
 

@@ -1,13 +1,14 @@
 /* SPDX-License-Identifier: MIT */
 /* The fallback of the barrier solve: where Newton (system.c) stalls far from equilibrium, Gauss-Seidel
  * over the elements' local problems, each solved with its neighbours held: a post's tilt (its cables
- * sliding through it), a support's material coordinate, a contact's height on the face, and the crush
- * (the paper's crush correction, by regula falsi). It converges where Newton's linearisation misleads it
- * (a massless post on its plastic plateau under the ropes' pull), slowly; Newton goes on from where it
- * leaves off (barrier.c). With may_fall, a post with no equilibrium near falls to the next one.
- * The rows it solves are those of post.c, support.c (with termination.c's ends) and contact.c, one
- * element at a time. */
+ * sliding through it) and, sliding out of its footing, its pull, a support's material coordinate, a contact's
+ * height on the face, and the crush (the paper's crush correction, by regula falsi). It converges where
+ * Newton's linearisation misleads it (a massless post on its plastic plateau under the ropes' pull), slowly;
+ * Newton goes on from where it leaves off (barrier.c). With may_fall, a post with no equilibrium near falls
+ * to the next one. The rows it solves are those of post.c, post_pullout.c, support.c (with termination.c's
+ * ends) and contact.c, one element at a time. */
 #include "core/vec3.h"
+#include "elements/rows.h"
 #include "solver/solver.h"
 #include "solver/work.h"
 
@@ -158,11 +159,12 @@ static double solve_height(const cs_model *model, cs_state *s, int c, int i, int
     return entry;
 }
 
-/* Place the post's cable nodes for a tilt, let the rope slide through the post's own holes (from the
- * material it had on entry, so the residual is a function of the tilt alone), and return the residual
- * there. Sliding inside this block matters: held rope would make the post look as stiff as the cable. */
-static void post_residual(const cs_model *model, cs_state *s, int p, const double *tilt,
-                          const double *m_entry, double *r) {
+/* Place the post's cable nodes for a tilt (and its pull as it stands) and let the rope slide through the
+ * post's own holes, from the material it had on entry, so that what the post feels is a function of its
+ * tilt and pull alone. Sliding inside this block matters: held rope would make the post look as stiff as
+ * the cable. */
+static void place_on_post(const cs_model *model, cs_state *s, int p, const double *tilt,
+                          const double *m_entry) {
     for (int c = 0; c < model->cable_count; c++) {
         cs_cable_state *cs = &s->cables[c];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
@@ -174,7 +176,46 @@ static void post_residual(const cs_model *model, cs_state *s, int p, const doubl
         cs_cable_update_span(cm, cs, i - 1, NULL);
         cs_cable_update_span(cm, cs, i, NULL);
     }
+}
+
+/* The post's residual at a tilt, its nodes placed there (place_on_post). */
+static void post_residual(const cs_model *model, cs_state *s, int p, const double *tilt,
+                          const double *m_entry, double *r) {
+    place_on_post(model, s, p, tilt, m_entry);
     cs_post_residual_at(model, s, p, tilt, NULL, NULL, NULL, r);
+}
+
+/* The balance of a sliding post's pull at w (post_pullout.c), in the force unit of the solve's rows, its
+ * nodes placed there at its tilt (place_on_post). */
+static double pull_residual(const cs_model *model, cs_state *s, int p, double w, const double *m_entry) {
+    s->posts[p].pull = w;
+    place_on_post(model, s, p, s->posts[p].tilt, m_entry);
+    return cs_post_pull_balance(model, s, p) / cs_rows_force_unit(model);
+}
+
+/* A post sliding out of its footing: Newton on its pull with a difference quotient and backtracking, its
+ * tilt and its neighbours held. The pull's row falls with w (the shaft's stiffness, or the slide's mass
+ * over the time since the last commit, m / h^2, outweighs the ropes' slope), so it has one root near.
+ * Without it the fallback would leave the pull where Newton left off, out of balance by the slide's
+ * inertial force m (w - w_c - h v_c) / h^2, which the commit books as the slide's motion (docs/theory.md,
+ * "A post pulled out of its footing"). Returns the relative residual found on entry. */
+static double relax_pull(const cs_model *model, cs_state *s, int p, const double *m_entry, double tol) {
+    double w = s->posts[p].pull, g = pull_residual(model, s, p, w, m_entry), entry = fabs(g);
+    for (int it = 0; it < 30 && fabs(g) > 1e-3 * tol; it++) {
+        const double dw = 1e-9; /* m: a millionth of the slip that mobilises the shaft */
+        double slope = (pull_residual(model, s, p, w + dw, m_entry) - g) / dw;
+        if (!(slope < 0.0)) break;
+        double d = -g / slope, step = fabs(d) > 0.05 ? 0.05 / fabs(d) : 1.0, t = w, gt = g;
+        for (int ls = 0; ls < 12; ls++, step *= 0.5) {
+            t = w + step * d;
+            gt = pull_residual(model, s, p, t, m_entry);
+            if (fabs(gt) < fabs(g)) break;
+        }
+        if (!(fabs(gt) < fabs(g))) break;
+        w = t, g = gt;
+    }
+    pull_residual(model, s, p, w, m_entry); /* leave the nodes at the accepted pull */
+    return entry;
 }
 
 static void entry_material(const cs_model *model, const cs_state *s, int p, double *m_entry) {
@@ -298,6 +339,7 @@ double cs_relax_post(const cs_model *model, cs_state *s, int p, double tol, int 
         fall(model, s, p, m_entry, al, r);
     else
         post_residual(model, s, p, al, m_entry, r); /* leave the nodes at the accepted tilt */
+    if (ps->withdrawing) entry = fmax(entry, relax_pull(model, s, p, m_entry, tol));
     return entry;
 }
 
