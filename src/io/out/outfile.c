@@ -980,8 +980,9 @@ static int take_back(const cs_outdir *out, int i, int how) {
 /* The failed-th file could not be put in place (errnum): the files put before it taken back, so that the
  * folder holds the earlier run's results, whole. CS_ERR_IO with err saying why, and, when some of this run's
  * files could not be taken back (out->in_place -1), which are in place and what to do. The manifest lists
- * both runs' files, true either way. */
-static cs_status undo(cs_outdir *out, int failed, int errnum, const int *put, cs_error *err) {
+ * both runs' files, true either way; one the commit wrote where there was none goes with the files taken
+ * back (fresh: no earlier manifest), so that a folder "nothing written" holds nothing of this run's. */
+static cs_status undo(cs_outdir *out, int failed, int errnum, const int *put, int fresh, cs_error *err) {
     char why[CS_MESSAGE_SIZE], more[40] = "";
     full_path(out, out->names[failed], why, sizeof why);
     size_t n = strlen(why);
@@ -993,7 +994,12 @@ static cs_status undo(cs_outdir *out, int failed, int errnum, const int *put, cs
     int left = 0, first = 0;
     for (int i = failed - 1; i >= 0; i--)
         if (take_back(out, i, put[i]) != 0) left++, first = i;
-    if (!left) return cs_error_set(err, CS_ERR_IO, "%s", why);
+    if (!left) {
+        char manifest[PATH_SIZE];
+        full_path(out, CS_OUT_MANIFEST, manifest, sizeof manifest);
+        if (fresh && unlink(manifest) == 0) sync_folder(out, "", 0);
+        return cs_error_set(err, CS_ERR_IO, "%s", why);
+    }
     out->in_place = -1;
     if (left > 1) snprintf(more, sizeof more, " (and %d more)", left - 1);
     return cs_error_set(err, CS_ERR_IO,
@@ -1014,13 +1020,17 @@ static cs_status put_in_place(cs_outdir *out, cs_error *err) {
     for (int i = 0; st == CS_OK && i < out->count; i++)
         st = place_free(out, out->names[i], &taken[i], err);
     /* the manifest first names both runs' files, so that every file cablesim put here stays its own */
+    char manifest[PATH_SIZE];
+    struct stat was;
+    full_path(out, CS_OUT_MANIFEST, manifest, sizeof manifest);
+    int fresh = lstat(manifest, &was) != 0;
     if (st == CS_OK) st = write_manifest(out, 1, err);
     if (st != CS_OK) return st;
     for (int i = 0; i < out->count; i++) {
         full_path(out, out->tmps[i], tmp, sizeof tmp);
         full_path(out, out->names[i], final, sizeof final);
         put[i] = taken[i] ? put_over(tmp, final) : put_new(tmp, final);
-        if (put[i] < 0) return undo(out, i, -put[i], put, err);
+        if (put[i] < 0) return undo(out, i, -put[i], put, fresh, err);
     }
     for (int i = 0; i < out->count; i++) { /* the earlier run's files exchanged out */
         full_path(out, out->tmps[i], tmp, sizeof tmp);
