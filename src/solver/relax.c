@@ -482,8 +482,8 @@ double cs_relax(const cs_model *model, cs_state *s, int sweeps, int may_fall) {
         for (int k = 0; k < model->post_count; k++) {
             int p = (sweep % 2 == 0) ? k : model->post_count - 1 - k; /* alternate direction */
             worst = fmax(worst, cs_relax_post(model, s, p, sc->solver_tolerance, may_fall));
+            problems += 1 + s->posts[p].withdrawing; /* its tilt, and its pull while it slides out */
         }
-        problems += model->post_count;
         for (int c = 0; c < model->cable_count; c++) {
             cs_cable_state *cs = &s->cables[c];
             if (cs->status != CS_CABLE_INTACT) continue;
