@@ -53,6 +53,15 @@ rm "$d/$fourth"
 out=$("$cs" "${run[@]}" -o "$d" --plots 2>&1)
 check "the next run owns the earlier files by either listing, and lists its own once" '[ $? -eq 0 ] && [ "$(listed "$d")" = "$(listed "$tmp/ref")" ] && cmp -s "$d/timeseries.csv" "$tmp/ref/timeseries.csv" && [ -z "$(leftovers "$d")" ] || { echo "$out"; false; }'
 
+# An earlier run's file the user writes over in the instant before its exchange: put back at its name,
+# this run's taken back, nothing written.
+d="$tmp/edited"
+"$cs" "${run[@]}" -o "$d" >/dev/null 2>&1
+before=$(sums "$d")
+at_put 1 "shell echo mine >$d/timeseries.csv" "${run[@]}" -o "$d" --set "scenario.speed=30 mph"
+check "an earlier file written over during the commit: exit 1, the file named, nothing written" '[ $? -eq 1 ] && grep -qxF "cablesim: nothing written: $d/timeseries.csv: something appeared there during the commit, which is kept: move it away and run again" "$tmp/at.out" || { cat "$tmp/at.out"; false; }'
+check "the user's file kept at its name, the earlier run's others as they were, no temporary or lock left" '[ "$(cat "$d/timeseries.csv")" = mine ] && [ "$(sums "$d" | grep -v timeseries.csv)" = "$(echo "$before" | grep -v timeseries.csv)" ] && [ -z "$(leftovers "$d")" ]'
+
 # Killed (kill -9) between two renames: the folder holds the earlier run's files and this run's, which the
 # manifest lists both, so the next run owns them all and replaces them.
 d="$tmp/killed"

@@ -966,6 +966,30 @@ static int put_over(const char *tmp, const char *final) {
     return rename(tmp, final) == 0 ? PUT_OVER : -errno;
 }
 
+/* Whether the file exchanged out of the i-th name to tmp is the earlier run's as the commit looked at it: a
+ * file the user put at that name in the instant between the look and the exchange is not. */
+static int swapped_out_earlier(const cs_outdir *out, int i, const char *tmp) {
+    const cs_out_listed *e = find(out, out->names[i]);
+    cs_out_print now;
+    return e && e->ours == 1 && fingerprint(tmp, &now) == 0 && now.size == e->print.size &&
+           now.hash == e->print.hash;
+}
+
+/* The user's file, exchanged out of the i-th name to tmp, put back at its name, this run's under tmp (which
+ * cs_out_abort removes). -EEXIST, for undo; where the system will not exchange them back, CS_ERR_IO with
+ * err saying where each is, the temporary kept (its name taken off the list of those to remove). */
+static int put_back(cs_outdir *out, int i, const char *tmp, const char *final, cs_error *err) {
+    if (renameat2(AT_FDCWD, final, AT_FDCWD, tmp, RENAME_EXCHANGE) == 0) return -EEXIST;
+    int errnum = errno;
+    out->in_place = -1;
+    out->tmps[i][0] = '\0';
+    cs_error_set(err, CS_ERR_IO,
+                 "%s: something appeared there during the commit, which could not be put back (%s): it is "
+                 "now %s, and this run's file is at its name: move it back",
+                 final, strerror(errnum), tmp);
+    return 0;
+}
+
 /* The i-th file, put in place the way how, taken back: its name holds what it held before the commit again,
  * this run's file its temporary's name (cs_out_abort removes it). 0, or -1: the name keeps this run's file
  * (the earlier one was not kept, or the system refused). */
@@ -1030,6 +1054,10 @@ static cs_status put_in_place(cs_outdir *out, cs_error *err) {
         full_path(out, out->tmps[i], tmp, sizeof tmp);
         full_path(out, out->names[i], final, sizeof final);
         put[i] = taken[i] ? put_over(tmp, final) : put_new(tmp, final);
+        if (put[i] == PUT_SWAPPED && !swapped_out_earlier(out, i, tmp)) {
+            put[i] = put_back(out, i, tmp, final, err);
+            if (!put[i]) return CS_ERR_IO;
+        }
         if (put[i] < 0) return undo(out, i, -put[i], put, fresh, err);
     }
     for (int i = 0; i < out->count; i++) { /* the earlier run's files exchanged out */
