@@ -1,7 +1,8 @@
 # SPDX-License-Identifier: MIT
 # The commit's renames (src/io/out/outfile.c, docs/robustness.md "A user's files"): a name that held no
 # file when the commit looked is renamed to only while it still holds none, so a file the user saves there
-# in that instant is kept; a rename that fails takes back those done before it, so the folder holds the
+# in that instant is kept, and an earlier run's file the user writes over in that instant goes back to its
+# name; a rename that fails takes back those done before it, so the folder holds the
 # earlier run's results, whole, and "nothing written" is true; one the system will not take back is named
 # as this run's, and the manifest owns both runs' files, so the next run writes them all. gdb stops the
 # command where it puts a file in place (renameat2, which only the commit's renames call) to do there,

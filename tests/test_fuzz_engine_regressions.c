@@ -12,8 +12,8 @@
  * most through a try at a fall too, and steps are cut into 8ths and 64ths: about 5,200 passes over its 26
  * unknowns a solve, 75,000 a step, where a run's median is 2 a step. Bounded by its solves, it runs to its
  * time limit at 0.15 s (805 solves of a budget of 6,000, 38 solver warnings) on 5.5 times its work budget;
- * bounded by its work, it ends did_not_converge at 0.124 s (357 solves). Under the sanitizers (about 20 times
- * slower) it runs on a tenth of the default budget, which ends it the same way, sooner (0.121 s).
+ * bounded by its work, it ends did_not_converge at 0.1235 s (346 solves). Under the sanitizers (about 20
+ * times slower) it runs on a tenth of the default budget, which ends it the same way, sooner (0.121 s).
  *
  * fallback-2040a4aa (input `be 00`): 2 ropes of 1.72 in, 10 posts at 10.7 ft, 1 rail, a 9,034-lb vehicle
  * at 34.2 mph and 74 deg, whose step at 0.089 s is cut into 8ths and 64ths, most of its solves going
