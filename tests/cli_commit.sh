@@ -2,11 +2,12 @@
 # The commit's renames (src/io/out/outfile.c, docs/robustness.md "A user's files"): a name that held no
 # file when the commit looked is renamed to only while it still holds none, so a file the user saves there
 # in that instant is kept, and an earlier run's file the user writes over in that instant goes back to its
-# name; a rename that fails takes back those done before it, so the folder holds the
-# earlier run's results, whole, and "nothing written" is true; one the system will not take back is named
-# as this run's, and the manifest owns both runs' files, so the next run writes them all. gdb stops the
-# command where it puts a file in place (renameat2, which only the commit's renames call) to do there,
-# in that instant, what a user or the system does.
+# name, as does one written over in the instant before its removal; the same where the file system cannot
+# exchange; a rename that fails takes back those done before it, so the folder holds the earlier run's
+# results, whole, and "nothing written" is true; one the system will not take back is named as this
+# run's, and the manifest owns both runs' files, so the next run writes them all. gdb stops the command
+# where it puts a file in place (renameat2, which only the commit's renames call) or moves one aside
+# (rename) to do there, in that instant, what a user or the system does.
 # Usage: bash tests/cli_commit.sh path/to/cablesim
 source "$(dirname "$0")/lib.sh"
 if ! command -v gdb >/dev/null; then
@@ -19,13 +20,15 @@ if ! gdb -q -batch -iex "set debuginfod enabled off" -ex run --args true 2>&1 | 
 fi
 # at_put N ACTION ARGS...: cablesim ARGS, stopped as it puts its N-th file in place to run the gdb command
 # ACTION ("shell ..." or "kill"); its terminal output into $tmp/at.out, its exit status the function's
-# (255: none, killed)
+# (255: none, killed). With at_break=FUNCTION, stopped at that function's N-th call instead of renameat2's;
+# with at_env=VAR=VALUE, run with that in its environment too.
 at_put() {
-    local n=$1 action=$2 more=()
+    local n=$1 action=$2 more=() env=()
     shift 2
     for _ in $(seq 2 "$n"); do more+=(-ex continue); done
+    [ -n "${at_env:-}" ] && env=(-ex "set environment $at_env")
     # LeakSanitizer cannot run under ptrace: the sanitized build's leak check is off for these runs
-    gdb -q -batch -iex "set debuginfod enabled off" -ex "set breakpoint pending on" -ex "break renameat2" \
+    gdb -q -batch -iex "set debuginfod enabled off" -ex "set breakpoint pending on" -ex "break ${at_break:-renameat2}" "${env[@]}" \
         -ex "set environment ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" -ex run "${more[@]}" -ex "$action" -ex delete -ex continue \
         -ex 'printf "exit status %d\n", $_exitcode' --args "$cs" "$@" >"$tmp/at.out" 2>&1
     local status
@@ -76,6 +79,38 @@ check "the next run owns both runs' files: no refusal, its own in place, no temp
 d="$tmp/new"
 at_put 2 "shell mkdir -p $d/events.csv/x" "${run[@]}" -o "$d"
 check "a folder made at a new name during the commit: exit 1, nothing written, only that folder left" '[ $? -eq 1 ] && grep -qxF "cablesim: nothing written: $d/events.csv: something appeared there during the commit, which is kept: move it away and run again" "$tmp/at.out" && [ "$(ls -A "$d")" = events.csv ] && [ -d "$d/events.csv/x" ] || { cat "$tmp/at.out"; ls -A "$d"; false; }'
+
+# An earlier run's file this run does not write, which the user writes over in the instant before it is
+# removed: moved aside, found not to be the earlier run's, and put back; the run's own files in place.
+# (rename's first call in a commit writes the manifest; its second moves the first file to remove aside.)
+d="$tmp/removed"
+"$cs" "${run[@]}" -o "$d" --plots >/dev/null 2>&1
+first=$(listed "$d" | grep ^plots/ | head -1)
+at_break=rename at_put 2 "shell echo mine >$d/$first" "${run[@]}" -o "$d" --set "scenario.speed=30 mph"
+check "an earlier file written over before its removal: the run ends well, the user's file kept" '[ $? -eq 0 ] && [ "$(cat "$d/$first")" = mine ] && [ "$(ls "$d/plots")" = "$(basename "$first")" ] && ! listed "$d" | grep -q ^plots/ && [ -z "$(leftovers "$d")" ] || { cat "$tmp/at.out"; ls -A "$d" "$d/plots"; false; }'
+out=$("$cs" "${run[@]}" -o "$d" 2>&1)
+check "the next run refuses the folder: the user's file named" '[ $? -ne 0 ] && echo "$out" | grep -qF "$first" || { echo "$out"; false; }'
+
+# A file system that cannot exchange or refuse a replacement (renameat2 failing with EINVAL, as where it
+# has no such flags: a library put before the C library's): new names by link and unlink, an earlier
+# run's files renamed over once checked again, and one the user writes over in the instant kept. (A
+# summary names its folder in its command line: the runs are compared without it.)
+shim="$tmp/noexchange.so"
+if ! printf '#include <errno.h>\nint renameat2(int a, const char *b, int c, const char *d, unsigned f) {\n(void)a, (void)b, (void)c, (void)d, (void)f;\nerrno = EINVAL;\nreturn -1;\n}\n' |
+    cc -shared -fPIC -o "$shim" -x c - 2>/dev/null; then
+    echo "skipped: a file system without renameat2's flags (no C compiler to build the library that refuses them)"
+else
+    plain() { LD_PRELOAD="$shim" ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}verify_asan_link_order=0 "$cs" "$@"; }
+    d="$tmp/noexchange"
+    out=$(plain "${run[@]}" -o "$d" --plots 2>&1)
+    check "no exchange: a first run's files put at their names by link and unlink" '[ $? -eq 0 ] && [ "$(sums "$d" | grep -v summary.json)" = "$(sums "$tmp/ref" | grep -v summary.json)" ] && [ "$(listed "$d")" = "$(listed "$tmp/ref")" ] && [ -z "$(leftovers "$d")" ] || { echo "$out"; false; }'
+    out=$(plain "${run[@]}" -o "$d" --set "scenario.speed=30 mph" 2>&1)
+    "$cs" "${run[@]}" -o "$tmp/slower" --set "scenario.speed=30 mph" >/dev/null 2>&1
+    check "no exchange: a rerun renames over the earlier files and removes the plots it does not write" '[ $? -eq 0 ] && [ "$(sums "$d" | grep -v summary.json)" = "$(sums "$tmp/slower" | grep -v summary.json)" ] && [ ! -e "$d/plots" ] && [ -z "$(leftovers "$d")" ] || { echo "$out"; ls -A "$d"; false; }'
+    before=$(sums "$d")
+    at_env="LD_PRELOAD=$shim" at_put 1 "shell echo mine >$d/timeseries.csv" "${run[@]}" -o "$d"
+    check "no exchange: an earlier file written over during the commit kept, nothing written" '[ $? -eq 1 ] && grep -qxF "cablesim: nothing written: $d/timeseries.csv: something appeared there during the commit, which is kept: move it away and run again" "$tmp/at.out" && [ "$(cat "$d/timeseries.csv")" = mine ] && [ "$(sums "$d" | grep -v timeseries.csv)" = "$(echo "$before" | grep -v timeseries.csv)" ] && [ -z "$(leftovers "$d")" ] || { cat "$tmp/at.out"; false; }'
+fi
 
 # A rename the system refuses after others, which it refuses to take back too (the folder made
 # immutable): the message names the file in place as this run's and says to run again; the next run does.

@@ -925,20 +925,6 @@ static void sync_folder(const cs_outdir *out, const char *rel, int len) {
     }
 }
 
-/* Remove the earlier run's file rel, a file (not a folder) in a folder of this one (not through a link).
- * 0: removed, or not there; else the errno of the failed removal. */
-static int remove_earlier(const cs_outdir *out, const char *rel) {
-    char path[PATH_SIZE];
-    struct stat st;
-    for (const char *s = strchr(rel, '/'); s; s = strchr(s + 1, '/')) {
-        snprintf(path, sizeof path, "%s/%.*s", out->dir, (int)(s - rel), rel);
-        if (lstat(path, &st) != 0 || !S_ISDIR(st.st_mode)) return 0;
-    }
-    full_path(out, rel, path, sizeof path);
-    if (lstat(path, &st) != 0 || S_ISDIR(st.st_mode)) return 0;
-    return unlink(path) == 0 || errno == ENOENT ? 0 : errno;
-}
-
 /* How cs_out_commit put a file at its name: where no file was; exchanged with the earlier run's file, which
  * waits under the temporary's name; renamed over it (a file system that cannot exchange). */
 enum { PUT_NEW = 1, PUT_SWAPPED, PUT_OVER };
@@ -955,14 +941,56 @@ static int put_new(const char *tmp, const char *final) {
     return PUT_NEW;
 }
 
-/* Put tmp at final over the earlier run's file there (as written at the commit's look): exchanged with it
- * (RENAME_EXCHANGE), the earlier file kept under tmp's name until the commit ends, for take_back; where the
- * file system cannot exchange, renamed over it. How (put_new's way if the earlier file has gone since), or
+/* Remove the earlier run's file e, a file (not a folder) in a folder of this one (not through a link):
+ * moved aside to a temporary in its folder, then checked against its print, so that a file the user wrote
+ * there since the commit's look goes back to its name (e->ours 0: the user's) and no instant is left in
+ * which it could be removed. 0: removed, kept as the user's, or not there; else the errno of the failed
+ * removal, with err filled only when the user's file could not be put back. */
+static int remove_earlier(const cs_outdir *out, cs_out_listed *e, cs_error *err) {
+    char path[PATH_SIZE], aside[PATH_SIZE], rel[PATH_SIZE];
+    struct stat st;
+    const char *slash = strrchr(e->name, '/');
+    for (const char *s = strchr(e->name, '/'); s; s = strchr(s + 1, '/')) {
+        snprintf(path, sizeof path, "%s/%.*s", out->dir, (int)(s - e->name), e->name);
+        if (lstat(path, &st) != 0 || !S_ISDIR(st.st_mode)) return 0;
+    }
+    full_path(out, e->name, path, sizeof path);
+    if (lstat(path, &st) != 0 || S_ISDIR(st.st_mode)) return 0;
+    snprintf(rel, sizeof rel, "%.*s%sgone.XXXXXX", slash ? (int)(slash - e->name) + 1 : 0, e->name,
+             tmp_prefix);
+    int fd = make_temp(out, rel);
+    if (fd < 0) return errno;
+    close(fd);
+    full_path(out, rel, aside, sizeof aside);
+    if (rename(path, aside) != 0) {
+        int errnum = errno;
+        unlink(aside);
+        return errnum == ENOENT ? 0 : errnum;
+    }
+    cs_out_print now;
+    if (fingerprint(aside, &now) == 0 && now.size == e->print.size && now.hash == e->print.hash)
+        return unlink(aside) == 0 || errno == ENOENT ? 0 : errno;
+    e->ours = 0;
+    int put = put_new(aside, path);
+    if (put == PUT_NEW) return 0;
+    cs_error_set(err, CS_ERR_IO,
+                 "%s: written during the commit, and something appeared at its name before it could be put "
+                 "back (%s): it is now %s: move it back",
+                 path, strerror(-put), aside);
+    return -put;
+}
+
+/* Put tmp at final, the i-th name, over the earlier run's file there (as written at the commit's look):
+ * exchanged with it (RENAME_EXCHANGE), the earlier file kept under tmp's name until the commit ends, for
+ * take_back; where the file system cannot exchange, checked against its print once more and renamed over
+ * it (-EEXIST if the user wrote over it since). How (put_new's way if the earlier file has gone since), or
  * -errno. */
-static int put_over(const char *tmp, const char *final) {
+static int put_over(const cs_outdir *out, int i, const char *tmp, const char *final) {
     if (renameat2(AT_FDCWD, tmp, AT_FDCWD, final, RENAME_EXCHANGE) == 0) return PUT_SWAPPED;
     if (errno == ENOENT) return put_new(tmp, final);
     if (errno != EINVAL && errno != ENOSYS) return -errno;
+    const cs_out_listed *e = find(out, out->names[i]);
+    if (!e || !as_written(out, e)) return -EEXIST;
     return rename(tmp, final) == 0 ? PUT_OVER : -errno;
 }
 
@@ -1053,7 +1081,7 @@ static cs_status put_in_place(cs_outdir *out, cs_error *err) {
     for (int i = 0; i < out->count; i++) {
         full_path(out, out->tmps[i], tmp, sizeof tmp);
         full_path(out, out->names[i], final, sizeof final);
-        put[i] = taken[i] ? put_over(tmp, final) : put_new(tmp, final);
+        put[i] = taken[i] ? put_over(out, i, tmp, final) : put_new(tmp, final);
         if (put[i] == PUT_SWAPPED && !swapped_out_earlier(out, i, tmp)) {
             put[i] = put_back(out, i, tmp, final, err);
             if (!put[i]) return CS_ERR_IO;
@@ -1066,12 +1094,17 @@ static cs_status put_in_place(cs_outdir *out, cs_error *err) {
     }
     out->in_place = 1;
     /* the earlier run's files this run does not write, removed; one that cannot be stays in the manifest,
-     * cablesim's for the next run to remove */
-    int removed = 0, kept = 0, kept_at = 0, kept_errno = 0;
+     * cablesim's for the next run to remove; one the user wrote over since the look is the user's */
+    int removed = 0, kept = 0, kept_at = 0, kept_errno = 0, users = 0;
+    cs_error lost = {0};
     for (int i = 0; i < out->prev_count; i++) {
         const char *rel = out->prev[i].name, *slash = strrchr(rel, '/');
         if (out->prev[i].ours != 1 || written(out, rel)) continue;
-        int errnum = remove_earlier(out, rel);
+        int errnum = remove_earlier(out, &out->prev[i], &lost);
+        if (out->prev[i].ours == 0) {
+            users++;
+            continue;
+        }
         if (errnum) {
             if (!kept++) kept_at = i, kept_errno = errnum;
             continue;
@@ -1084,12 +1117,12 @@ static cs_status put_in_place(cs_outdir *out, cs_error *err) {
         }
     }
     /* the commit point: the manifest of this run's files and the earlier ones kept (the first already is,
-     * when it named no name twice and no file removed) */
+     * when it named no name twice, removed no file and found none the user's since) */
     int twice = 0;
     for (int i = 0; i < out->prev_count; i++)
         twice |= out->prev[i].ours == 1 && written(out, out->prev[i].name);
     cs_error why;
-    if ((removed || twice) && write_manifest(out, 0, &why) != CS_OK) {
+    if ((removed || twice || users) && write_manifest(out, 0, &why) != CS_OK) {
         return cs_error_set(err, CS_ERR_IO, "the new results are in %s, but %s", out->dir, why.message);
     }
     if (out->journal >= 0) { /* this sweep's journal: its runs are in the outputs now */
@@ -1105,7 +1138,9 @@ static cs_status put_in_place(cs_outdir *out, cs_error *err) {
     }
     char more[40] = "";
     if (kept > 1) snprintf(more, sizeof more, " (and %d more of its files)", kept - 1);
-    if (kept) {
+    if (lost.message[0]) {
+        st = cs_error_set(err, CS_ERR_IO, "the new results are in %s, but %s", out->dir, lost.message);
+    } else if (kept) {
         st = cs_error_set(err, CS_ERR_IO,
                           "the new results are in %s, but the earlier run's %s could not be removed: %s%s; "
                           "%s still lists it for the next run there to remove",
