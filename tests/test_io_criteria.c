@@ -2,7 +2,7 @@
 /* NCHRP Report 350 and MASH criteria: which a test has, in order; each limit's edge (OIV 12.2 m/s and ORA
  * 20.49 g for MASH, 12 m/s and 20 g for NCHRP 350's L, roll 75 deg, 60% of the impact angle, the exit box's
  * 10 m); the not-judged ones never passed; the exit box's A from the vehicle's size and the wheels' path
- * extrapolated straight from the loss of contact against its closed form. */
+ * extrapolated straight from the run's end against its closed form. */
 #include "check.h"
 #include "out/record.h"
 #include "study/criteria.h"
@@ -236,7 +236,7 @@ static void verdict_digits(void **state) {
          "preferred 9.1, maximum 12.2)"},
         {"mash", "3-11", "exit box", 0.0, 14.98, CS_VERDICT_FAIL,
          "a wheel crosses the line 4.90 m from the barrier 9.96 m along (box 10.00 m); on the path "
-         "extrapolated straight from the loss of contact"},
+         "extrapolated straight from the run's end"},
         /* a value well apart keeps its usual digits */
         {"nchrp-350", "3-11", "M", 0.0, 17.5, CS_VERDICT_FAIL, "exit 17.5 deg (60% of 25.0 deg: 15.0 deg)"},
     };

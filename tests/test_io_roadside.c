@@ -142,9 +142,55 @@ static void deflection_follows_the_design(void **state) {
     assert_true(deflection(footed) <= deflection(driven));
 }
 
+/* RS2 as its file reads the design, step by step: the barrier's force on the pickup falls to zero as it
+ * moves back toward the traffic (v_y < 0), comes back as the pickup's yaw swings it onto the ropes again,
+ * and ends. The exit is the last loss of contact: its time, and the speed and angle of the CG's velocity
+ * there (to 1e-12), as summary gives them; the run ends at the first step after which the pickup has gone
+ * its own length (CG to front plus CG to rear) at that speed with no contact. */
+static void exit_at_the_last_loss_of_contact(void **st) {
+    (void)st;
+    cs_loader *l;
+    cs_model *m = example_model("roadside/rs2", NULL, &l);
+    cs_error err;
+    cs_state *s = cs_state_create(m, &err);
+    assert_non_null(s);
+    cs_summary sm = {.size = sizeof sm};
+    double t_first = -1.0, t_back = -1.0, t_last = -1.0, v_last[3] = {0};
+    int touching = 0;
+    do {
+        assert_int_equal(cs_step(m, s, &err), CS_OK);
+        cs_vehicle_view v = {.size = sizeof v};
+        assert_int_equal(cs_state_vehicle(m, s, &v, NULL), CS_OK);
+        cs_state_summary(s, &sm, NULL);
+        int now = v.barrier_force[0] != 0.0 || v.barrier_force[1] != 0.0 || v.barrier_force[2] != 0.0;
+        if (touching && !now && v.velocity[1] < 0.0) {
+            t_last = sm.t_end_s;
+            memcpy(v_last, v.velocity, sizeof v_last);
+            if (t_first < 0.0) t_first = t_last;
+        }
+        if (!touching && now && t_first >= 0.0 && t_back < 0.0) t_back = sm.t_end_s;
+        touching = now;
+    } while (sm.outcome == CS_RUNNING);
+    assert_int_equal(sm.outcome, CS_REDIRECTED);
+    printf("rs2: contact lost at %.4f s, back at %.4f s, lost at last at %.4f s; run ends at %.4f s\n",
+           t_first, t_back, t_last, sm.t_end_s);
+    assert_true(t_first > 0.0 && t_back > t_first && t_last > t_back);
+    assert_true(fabs(sm.exit_time_s - t_last) < 1e-12);
+    double speed = sqrt(v_last[0] * v_last[0] + v_last[1] * v_last[1] + v_last[2] * v_last[2]);
+    assert_true(fabs(sm.exit_speed_mps - speed) <= 1e-12 * speed);
+    assert_true(fabs(sm.exit_angle_deg - atan2(-v_last[1], fabs(v_last[0])) * 45.0 / atan(1.0)) < 1e-9);
+    const cs_vehicle_def *vd = cs_model_vehicle(m);
+    double length = vd->cg_to_front + vd->cg_to_rear, dt = cs_model_scenario(m)->dt;
+    assert_true((sm.t_end_s - t_last) * speed >= length && (sm.t_end_s - dt - t_last) * speed < length);
+    cs_state_free(s);
+    cs_model_free(m);
+    cs_loader_free(l);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(roadside_tests_as_pinned),
-                                       cmocka_unit_test(deflection_follows_the_design)};
+                                       cmocka_unit_test(deflection_follows_the_design),
+                                       cmocka_unit_test(exit_at_the_last_loss_of_contact)};
     int failed = cmocka_run_group_tests(tests, NULL, NULL);
     return failed ? failed : pin_skipped ? 77 : 0;
 }

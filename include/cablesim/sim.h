@@ -461,6 +461,8 @@ typedef struct cs_summary {
                                       cs_penetration_is_final(outcome)): how far its front had got when the
                                       run ended, m, its penetration beyond it (summary.json's
                                       penetration_beyond_m); NAN where the penetration is final */
+    double exit_time_s;          /**< when the vehicle last left the barrier's contact, at which
+                                      exit_speed_mps and exit_angle_deg are taken, s; valid with them */
 } cs_summary;
 
 /** Fill out with the response parameters now (at the run's end: the run's), to out's size.

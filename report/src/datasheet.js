@@ -72,11 +72,11 @@ function evaluation(data) {
 }
 
 // Where a wheel track crosses the exit box's far side, as the exit box criterion says it (criteria.c): in
-// the run, or on the path extrapolated from the loss of contact, which the run does not simulate.
+// the run, or on the path extrapolated from the run's end (a vehicle's length past the loss of contact).
 function exitBox(box) {
   if (!box) return '– (no roadside test)';
   if (!Number.isFinite(box.cross_along_m)) return 'not crossed';
-  return `crossed ${f(box.cross_along_m)} m along${box.crossed_in_run ? '' : ' on the path extrapolated from the loss of contact'} (B = ${f(box.b_m)} m)`;
+  return `crossed ${f(box.cross_along_m)} m along${box.crossed_in_run ? '' : " on the path extrapolated from the run's end"} (B = ${f(box.b_m)} m)`;
 }
 
 function verdictClass(v) {
@@ -141,11 +141,11 @@ export function dataSheet(data) {
       ['impact severity', `${f(severity / 1e3)} kJ (${f(severity / KIP_FT)} kip·ft)`],
     ]),
     block('Exit conditions', [
-      ['outcome', `${s.outcome.replace(/_/g, ' ')} at ${seconds(s.outcome === 'stopped' ? s.stop_time_s : s.t_end_s)}`],
+      ['outcome', `${s.outcome.replace(/_/g, ' ')} at ${seconds(s.outcome === 'stopped' ? s.stop_time_s : exits ? s.exit_time_s : s.t_end_s)}`],
       ['speed', exits ? kmh(s.exit_speed_mps) : '– (did not leave)'],
       ['angle', exits && s.exit_angle_deg !== null ? deg(s.exit_angle_deg) : '–'],
       ['exit box (MASH)', exitBox(box)],
-      ['after loss of contact', 'not simulated'],
+      ['after loss of contact', "simulated for the vehicle's length, then not"],
     ]),
     block('Vehicle angles (max)', [
       ['roll, pitch', ev.max_roll_deg === undefined ? '–' : `${deg(ev.max_roll_deg)}, ${deg(ev.max_pitch_deg)}`],

@@ -68,7 +68,7 @@ export function story(data) {
     parts.push(`It broke through at t = ${seconds(s.t_end_s)}, still moving at ${pair('speed', s.exit_speed_mps)}; its front was ${pair('length', s.penetration_beyond_m)} past the cable line when the simulation ended, and going on.`);
   else if (s.outcome === 'redirected')
     parts.push(
-      `The barrier redirected it: it left on the traffic side at t = ${seconds(s.t_end_s)} at ${pair('speed', s.exit_speed_mps)}, ` +
+      `The barrier redirected it: it left on the traffic side at t = ${seconds(s.exit_time_s)} at ${pair('speed', s.exit_speed_mps)}, ` +
         `${fmt(s.exit_angle_deg, 1)}° away from the barrier line, after deflecting the cables ${pair('length', s.max_barrier_deflection_m)} (working width ${pair('length', s.working_width_m)}).`,
     );
   else if (s.outcome === 'step_limit') parts.push(`The simulation took its scenario.max_steps steps at t = ${seconds(s.t_end_s)}, before its end time, with the vehicle still moving, ${penetrationText(s)} past the cable line.`);
@@ -114,7 +114,7 @@ export function cards(data) {
   return el(
     'div',
     { class: 'cards' },
-    card('Outcome', o.word, s.outcome === 'breakthrough' || s.outcome === 'redirected' ? `at t = ${seconds(s.t_end_s)}` : s.outcome === 'stopped' ? `at t = ${seconds(s.stop_time_s)}` : `t = ${seconds(s.t_end_s)}`, `run of ${seconds(s.t_end_s)} simulated`, o.cls),
+    card('Outcome', o.word, typeof s.exit_time_s === 'number' ? `at t = ${seconds(s.exit_time_s)}` : s.outcome === 'stopped' ? `at t = ${seconds(s.stop_time_s)}` : `t = ${seconds(s.t_end_s)}`, `run of ${seconds(s.t_end_s)} simulated`, o.cls),
     card('Max 50-ms deceleration', `${fmt(s.max_50ms_decel_g, 2)} g`, `at t = ${seconds(s.t_max_50ms_decel_s)}`, 'average over the worst 50 ms'),
     card('Penetration', final ? penSI : `beyond ${penSI}`, final ? penUS : `beyond ${penUS}`, final ? 'front face past the cable line' : s.exit_speed_mps !== null ? 'the vehicle got through' : 'still going at the end'),
     card('Exit speed', exitSI, exitUS, exitNote),

@@ -274,8 +274,8 @@ try {
   await page.setViewportSize({ width: 1400, height: 1000 });
 
   // RS1's pickup is redirected and its wheels cross the exit box's far side only on the path extrapolated
-  // from the loss of contact (summary.json's exit_box.crossed_in_run false): the data sheet, whose next row
-  // says the path after the loss of contact is not simulated, says so as the criteria do
+  // from the run's end (summary.json's exit_box.crossed_in_run false): the data sheet, whose next row says
+  // how far the path after the loss of contact is simulated, says so as the criteria do
   if (!args.report) {
     const dir = join(out, 'rs1');
     rmSync(dir, { recursive: true, force: true });
@@ -288,7 +288,7 @@ try {
       const th = [...document.querySelectorAll('table.sheet-block th')].find((e) => e.textContent === 'exit box (MASH)');
       return th ? th.nextElementSibling.textContent : '';
     });
-    check('RS1: the data sheet says its exit box crossing is on the extrapolated path', box.crossed_in_run === false && cell === `crossed ${box.cross_along_m.toFixed(1)} m along on the path extrapolated from the loss of contact (B = ${box.b_m.toFixed(1)} m)`, `${cell} (crossed_in_run ${box.crossed_in_run})`);
+    check('RS1: the data sheet says its exit box crossing is on the extrapolated path', box.crossed_in_run === false && cell === `crossed ${box.cross_along_m.toFixed(1)} m along on the path extrapolated from the run's end (B = ${box.b_m.toFixed(1)} m)`, `${cell} (crossed_in_run ${box.crossed_in_run})`);
   }
 
   check('no console errors', consoleErrors.length === 0, consoleErrors.join(' | '));

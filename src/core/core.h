@@ -229,6 +229,10 @@ struct cs_state {
     double crush_committed, crush_force_committed;
     double face_force; /* N */
     int contact_started;
+    /* the vehicle left the barrier's contact moving away from it at exit_t, with exit_vel; 0 again if it
+     * comes back */
+    int exit_pending;
+    double exit_t, exit_vel[3];
 
     int cable_count_alloc;
     cs_cable_state *cables;

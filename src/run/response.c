@@ -243,8 +243,10 @@ static void end_run(const cs_model *model, cs_state *s, cs_outcome outcome, doub
         s->summary.stop_time_s = s->t;
         cs_event_add(model, s, CS_EVENT_STOPPED, CS_ELEMENT_VEHICLE, 0, value);
     } else if (cs_outcome_exits(outcome)) {
+        const double *v = outcome == CS_REDIRECTED ? s->exit_vel : s->vel; /* at the last loss of contact */
         s->summary.exit_speed_mps = value;
-        s->summary.exit_angle_deg = atan2(-s->vel[1], fabs(s->vel[0])) / CS_DEG;
+        s->summary.exit_angle_deg = atan2(-v[1], fabs(v[0])) / CS_DEG;
+        s->summary.exit_time_s = outcome == CS_REDIRECTED ? s->exit_t : s->t;
         cs_event_add(model, s, outcome == CS_REDIRECTED ? CS_EVENT_REDIRECTED : CS_EVENT_BREAKTHROUGH,
                      CS_ELEMENT_VEHICLE, 0, value);
     }
@@ -323,15 +325,29 @@ void cs_response_update(const cs_model *model, cs_state *s) {
     sm->t_end_s = s->t;
     v3_copy(sm->final_position_m, s->pos);
 
-    if (s->contact_started && u <= model->scenario.stop_speed) {
+    /* moving back to the traffic side when contact ends, even with a cable slipped under it or its CG
+     * still past the line (it straddles the cables on its way out): its exit, unless it comes back */
+    if (!s->contact_started || engaged)
+        s->exit_pending = 0;
+    else if (!s->exit_pending && s->vel[1] < 0.0) {
+        s->exit_pending = 1;
+        s->exit_t = s->t;
+        v3_copy(s->exit_vel, s->vel);
+    }
+    int end = s->t >= model->scenario.t_end - 0.5 * model->scenario.dt;
+    if (s->exit_pending) {
+        /* redirected once it has gone its own length at its exit speed without touching the barrier
+         * again (a swing of its tail or nose back onto the ropes is part of the same impact, a return
+         * later on is another), or has come to rest */
+        const cs_vehicle_def *v = &model->vehicle.def;
+        double gone = (s->t - s->exit_t) * v3_norm(s->exit_vel);
+        if (end || gone >= v->cg_to_front + v->cg_to_rear || v3_norm(s->vel) <= model->scenario.stop_speed)
+            end_run(model, s, CS_REDIRECTED, v3_norm(s->exit_vel));
+    } else if (s->contact_started && u <= model->scenario.stop_speed) {
         end_run(model, s, CS_STOPPED, sm->max_dynamic_penetration_m);
-    } else if (s->contact_started && engaged == 0 && s->vel[1] < 0.0) {
-        /* moving back to the traffic side when contact ends: redirected, even with a cable slipped under
-         * it or its CG still past the line (it straddles the cables on its way out) */
-        end_run(model, s, CS_REDIRECTED, v3_norm(s->vel));
     } else if (s->contact_started && engaged == 0 && (intact == 0 || s->pos[1] > 0.0)) {
         end_run(model, s, through_how(model, s), v3_norm(s->vel));
-    } else if (s->t >= model->scenario.t_end - 0.5 * model->scenario.dt) {
+    } else if (end) {
         end_run(model, s, s->contact_started ? CS_TIME_LIMIT : CS_NO_CONTACT, 0.0);
     }
     sm->outcome = s->outcome;

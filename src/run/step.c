@@ -119,6 +119,8 @@ void cs_state_reset(const cs_model *model, cs_state *s) {
     s->summary.first_contact_time_s = -1.0;
     s->summary.stop_time_s = -1.0;
     s->summary.exit_speed_mps = -1.0;
+    s->summary.exit_time_s = -1.0;
+    s->exit_pending = 0;
 
     cs_vehicle_start(model, s);
     settle_barrier(model, s);

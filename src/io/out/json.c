@@ -362,6 +362,7 @@ json_object *cs_summary_json(const cs_model_input *in, const cs_model *model, co
                            exits ? wnum(&w, s.exit_speed_mps, "exit_speed_mps") : NULL);
     json_object_object_add(doc, "exit_angle_deg",
                            exits ? wnum(&w, s.exit_angle_deg, "exit_angle_deg") : NULL);
+    json_object_object_add(doc, "exit_time_s", exits ? wnum(&w, s.exit_time_s, "exit_time_s") : NULL);
     json_object_object_add(
         doc, "first_contact_time_s",
         s.first_contact_time_s >= 0 ? wnum(&w, s.first_contact_time_s, "first_contact_time_s") : NULL);

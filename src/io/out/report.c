@@ -153,8 +153,11 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
                 in->scenario.max_steps > 0.0 ? floor(in->scenario.max_steps) : CS_MAX_STEPS_DEFAULT,
                 cs_time_text(s.t_end_s, tt));
     else if (s.outcome == CS_REDIRECTED)
-        fprintf(f, "the vehicle was redirected, exit speed %.2f m/s (%.1f mph, %.1f km/h) at %.1f deg\n",
-                s.exit_speed_mps, s.exit_speed_mps / CS_MPH, s.exit_speed_mps * 3.6, s.exit_angle_deg);
+        fprintf(f,
+                "the vehicle was redirected, exit speed %.2f m/s (%.1f mph, %.1f km/h) at %.1f deg, leaving "
+                "contact at t = %s s\n",
+                s.exit_speed_mps, s.exit_speed_mps / CS_MPH, s.exit_speed_mps * 3.6, s.exit_angle_deg,
+                cs_time_text(s.exit_time_s, tt));
     else
         fprintf(f, "the time limit was reached at t = %s s\n", cs_time_text(s.t_end_s, tt));
     if (info) {

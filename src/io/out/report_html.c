@@ -570,6 +570,7 @@ static json_object *summary_of(jw *j, const cs_state *state, const cs_summary *s
     kopt(j, o, "stop_time_s", s->outcome == CS_STOPPED ? s->stop_time_s : NAN);
     kopt(j, o, "exit_speed_mps", cs_outcome_exits(s->outcome) ? s->exit_speed_mps : NAN);
     kopt(j, o, "exit_angle_deg", cs_outcome_exits(s->outcome) ? s->exit_angle_deg : NAN);
+    kopt(j, o, "exit_time_s", cs_outcome_exits(s->outcome) ? s->exit_time_s : NAN);
     kopt(j, o, "first_contact_time_s", s->first_contact_time_s >= 0 ? s->first_contact_time_s : NAN);
     kint(o, "posts_failed_left", s->posts_failed_left);
     kint(o, "posts_failed_right", s->posts_failed_right);

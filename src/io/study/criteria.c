@@ -173,7 +173,7 @@ static void occupant(list *l, const cs_test_result *r, const char *id, double oi
              o->impact == CS_FLAIL_AFTER_RECORD ? " (the occupant's impact comes after the run's end)" : "");
 }
 
-/* NCHRP 350's M: exit angle under 60% of the impact angle, at the loss of contact (a preference). */
+/* NCHRP 350's M: exit angle under 60% of the impact angle, at the (last) loss of contact (a preference). */
 static void exit_angle(list *l, const cs_roadside_test *t, const cs_summary *s) {
     const char *name = "exit angle preferably under 60% of the impact angle";
     if (s->outcome != CS_REDIRECTED) {
@@ -207,12 +207,12 @@ static void exit_box(list *l, const cs_test_result *r) {
         snprintf(c->detail, sizeof c->detail,
                  "a wheel crosses the line %.2f m from the barrier %.*f m along (box %.*f m); %s", e->a,
                  apart(e->cross_along, e->b, 1), e->cross_along, apart(e->cross_along, e->b, 1), e->b,
-                 e->crossed_in_run ? "in the run"
-                                   : "on the path extrapolated straight from the loss of contact");
+                 e->crossed_in_run ? "in the run" : "on the path extrapolated straight from the run's end");
     else
         snprintf(c->detail, sizeof c->detail,
                  "no wheel crosses the line %.2f m from the barrier (the path extrapolated straight from the "
-                 "loss of contact)",
+                 "run's "
+                 "end)",
                  e->a);
 }
 
@@ -239,8 +239,10 @@ int cs_roadside_criteria(const cs_roadside_test *t, const cs_test_result *r, cs_
     if (mash) {
         exit_box(&l, r);
     } else {
-        not_judged(&l, "K", "preferably no intrusion into adjacent traffic lanes after the collision",
-                   "the run ends at the loss of contact: the trajectory after it is not simulated");
+        not_judged(
+            &l, "K", "preferably no intrusion into adjacent traffic lanes after the collision",
+            "the run ends a vehicle's length past the loss of contact: the trajectory further on is not "
+            "simulated");
         exit_angle(&l, t, r->summary);
     }
     return l.n;
