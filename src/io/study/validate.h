@@ -68,6 +68,7 @@ int cs_validate_finish(cs_validate_suite *s);
 typedef struct cs_validate_result {
     int ok;
     cs_summary sm;
+    double dt;              /* the run's time step, s */
     double cable_break[2];  /* s, < 0 if not broken (along the rope or at an end fitting) */
     double absorbed;        /* J: initial kinetic energy minus what is left */
     int post_failure;       /* the first post failure's event type, -1 if none */
@@ -93,11 +94,12 @@ enum {
     CS_VAL_JOINT = 32,
     CS_VAL_JOINT_SEED = 2656
 };
-enum { CS_VAL_READINGS = 12, CS_VAL_ROAD = 6, CS_VAL_ROAD_READINGS = 8 };
+enum { CS_VAL_READINGS = 12, CS_VAL_ROAD = 6, CS_VAL_ROAD_READINGS = 8, CS_VAL_ROAD_STEPS = 2 };
 enum {
     CS_VAL_MAX_JOBS = CS_VAL_CRASH + CS_VAL_BOGIE + CS_VAL_CRASH * CS_VAL_REFINE * CS_VAL_VALUES +
                       CS_VAL_CRASH * CS_VAL_INPUTS * 2 + CS_VAL_CRASH * CS_VAL_JOINT +
-                      CS_VAL_CRASH * CS_VAL_READINGS + CS_VAL_ROAD * (1 + CS_VAL_ROAD_READINGS)
+                      CS_VAL_CRASH * CS_VAL_READINGS +
+                      CS_VAL_ROAD * (1 + CS_VAL_ROAD_READINGS + CS_VAL_ROAD_STEPS)
 };
 
 /* One simulation: its model (NULL: not built, the reason printed), the order's cost estimate, the result. */
@@ -128,6 +130,7 @@ struct cs_validate_suite {
     int reading[CS_VAL_CRASH][CS_VAL_READINGS];                /* test k under readings[r] (-1: none) */
     int road[CS_VAL_ROAD];                                     /* each roadside test as its file stands */
     int road_reading[CS_VAL_ROAD][CS_VAL_ROAD_READINGS];       /* roadside test k under road_readings[r] */
+    int road_step[CS_VAL_ROAD][CS_VAL_ROAD_STEPS];             /* roadside test k at road_steps[d] */
     int missed;                                                /* APS1's or the bogie tests' targets */
     double joint_u[CS_VAL_CRASH][CS_VAL_JOINT][CS_VAL_INPUTS]; /* each input's fraction of its range */
     int base_loaded[CS_VAL_CRASH]; /* base_scenario[k]: the scenario crash test k's file loads to */
@@ -137,6 +140,8 @@ struct cs_validate_suite {
 /* The cases (validate_plan.c). */
 extern const char *const cs_validate_crash_names[CS_VAL_CRASH]; /* "aps1", "aps3", "aps4" */
 extern const char *const cs_validate_road_names[CS_VAL_ROAD];   /* "rs1" .. "rs6" */
+/* The finer time steps each roadside test runs at beside its file's (its convergence). */
+extern const char *const cs_validate_road_steps[CS_VAL_ROAD_STEPS];
 
 /* A refinement: each crash test run at every value of one scenario setting (field: its offset in
  * cs_scenario_def, a double). */

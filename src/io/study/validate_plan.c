@@ -305,11 +305,20 @@ const cs_validate_road_reading cs_validate_road_readings[CS_VAL_ROAD_READINGS] =
     {"impact at the middle (a third of the way in taken)", "rs3 rs4", {"scenario.impact_x=167 ft", NULL}},
 };
 
-static void add_road(cs_validate_suite *s, int k) {
+const char *const cs_validate_road_steps[CS_VAL_ROAD_STEPS] = {"0.25 ms", "0.1 ms"};
+
+/* Queue roadside test k as its file stands, under its readings and (convergence) at the finer steps. */
+static void add_road(cs_validate_suite *s, int k, int convergence) {
     char name[64];
     snprintf(name, sizeof name, "roadside/%s", cs_validate_road_names[k]);
     cs_model_input in = {.size = sizeof in};
     s->road[k] = add_loaded(s, load_example(s, name, NULL, &in), &in);
+    for (int d = 0; d < CS_VAL_ROAD_STEPS; d++) {
+        char set[64];
+        snprintf(set, sizeof set, "scenario.dt=%s", cs_validate_road_steps[d]);
+        const char *sets[] = {set, NULL};
+        s->road_step[k][d] = convergence ? add_loaded(s, load_example(s, name, sets, &in), &in) : -1;
+    }
     for (int r = 0; r < CS_VAL_ROAD_READINGS; r++) {
         s->road_reading[k][r] = -1;
         if (!strstr(cs_validate_road_readings[r].tests, cs_validate_road_names[k])) continue;
@@ -342,8 +351,11 @@ void cs_validate_plan(cs_validate_suite *s) {
             add_refinement(s, t, k);
     for (int k = 0; k < CS_VAL_CRASH && sensitivity; k++)
         add_sensitivity(s, k);
-    for (int k = 0; k < CS_VAL_ROAD; k++)
+    for (int k = 0; k < CS_VAL_ROAD; k++) {
         s->road[k] = -1;
+        for (int d = 0; d < CS_VAL_ROAD_STEPS; d++)
+            s->road_step[k][d] = -1;
+    }
     for (int k = 0; k < CS_VAL_ROAD && cs_validate_wanted(only, "roadside"); k++)
-        add_road(s, k);
+        add_road(s, k, convergence);
 }

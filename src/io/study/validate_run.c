@@ -37,6 +37,7 @@ static int post_failure(cs_event_type type) {
 static void collect(const cs_model *m, const cs_state *s, cs_validate_result *r) {
     r->sm.size = sizeof r->sm;
     cs_state_summary(s, &r->sm, NULL);
+    r->dt = cs_model_scenario(m)->dt;
     for (int a = 0; a < 2; a++) {
         cs_anchor_view v = {.size = sizeof v};
         cs_state_anchor(m, s, a, &v, NULL);
