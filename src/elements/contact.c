@@ -72,9 +72,12 @@ void cs_contact_face_force(const cs_model *model, const cs_state *s, int c, int 
     (void)model;
 }
 
-static void slip(const cs_model *model, cs_state *s, int c, cs_event_type why) {
+/* Cable c leaves the vehicle for good, taking with it the energy it held at its last solve, `held`
+ * (the work the vehicle did on it since is booked with it by the step: docs/theory.md, Energy ledger,
+ * "A rope that slips off the face"). */
+static void slip(const cs_model *model, cs_state *s, int c, cs_event_type why, double held) {
     cs_cable_state *cs = &s->cables[c];
-    s->e_released += cs_cable_stored_energy(&model->cables[c], cs);
+    s->e_released += held;
     for (int i = cs->node_count - 2; i >= 1; i--)
         if (cs_node_is_corner(cs->node[i])) cs_cable_remove_node(cs, i);
     cs_cable_release(cs, CS_CABLE_SLIPPED);
@@ -137,6 +140,11 @@ static double sag_of(const cs_cable_model *cm, const cs_cable_state *cs, int i) 
 
 static void update_cable(const cs_model *model, cs_state *s, int c) {
     cs_cable_state *cs = &s->cables[c];
+    /* what the rope holds as last solved, and the changes of the sag's reference made below: a rope that
+     * slips off takes the first, on the path it was solved on; the second belong to a path it keeps
+     * (a corner let go joins its two spans at one tension until the next solve, which a slip would
+     * release with the spans' difference, (T_l^2 - T_r^2) s_r / 2EA) */
+    double held = cs_cable_stored_energy(&model->cables[c], cs), reference = 0.0;
     cs_contact_place_corners(model, s, s->crush);
     /* release the corners it no longer wraps, keeping where the rope was on each: a corner taken up again
      * below (its turn can point out through the side and back within an update, as on a rope rising from
@@ -152,7 +160,7 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
         double t = cs->tension[i - 1],
                split = sag_of(&model->cables[c], cs, i - 1) + sag_of(&model->cables[c], cs, i);
         cs_cable_remove_node(cs, i);
-        if (t > 0.0) s->e_released += (sag_of(&model->cables[c], cs, i - 1) - split) / (12.0 * t);
+        if (t > 0.0) reference += (sag_of(&model->cables[c], cs, i - 1) - split) / (12.0 * t);
     }
     /* engage corners that have crossed the path */
     for (int k = 0; k < CS_CORNERS; k++) {
@@ -182,7 +190,7 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
             continue;
         if (zn < lo || zn > hi) {
             if (!cs_corner_front(k)) continue; /* below or above the side */
-            slip(model, s, c, zn < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
+            slip(model, s, c, zn < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE, held);
             return;
         }
         if (!released[k]) cs->corner_z[k] = cs->corner_z_commit[k] = bz;
@@ -199,8 +207,9 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
         if (released[k] && was_m[k] > cs->m[j - 1] && was_m[k] < cs->m[j + 1] &&
             was_m_commit[k] > cs->m_commit[j - 1] && was_m_commit[k] < cs->m_commit[j + 1])
             cs->m[j] = was_m[k], cs->m_commit[j] = was_m_commit[k];
-        s->e_released += before - cs_cable_stored_energy(&model->cables[c], cs);
+        reference += before - cs_cable_stored_energy(&model->cables[c], cs);
     }
+    s->e_released += reference;
     cs->engaged = 0;
     for (int i = 1; i + 1 < cs->node_count; i++)
         cs->engaged |= cs_node_is_corner(cs->node[i]);
@@ -245,7 +254,8 @@ int cs_contact_check_slip(const cs_model *model, cs_state *s) {
             double z = cs->corner_z[k], lo, hi;
             cs_vehicle_corner_band(model, k, &lo, &hi);
             if (z >= lo && z <= hi) continue;
-            slip(model, s, c, z < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
+            slip(model, s, c, z < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE,
+                 cs_cable_stored_energy(&model->cables[c], cs));
             any = 1;
             break;
         }

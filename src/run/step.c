@@ -201,14 +201,18 @@ static double work_on_barrier(const loaded_pose *a, const loaded_pose *b) {
 
 /* Each rope's share of it, with the sign turned: the work the rope does on the vehicle, added to its cable's
  * work_on_vehicle (from: each cable's push at pose a, force and moment; at b, its push now). The rule is
- * linear in the force, so the cables' shares and the struck posts' make the whole. */
+ * linear in the force, so the cables' shares and the struck posts' make the whole. A rope that slipped off
+ * the vehicle before the solve at b (left[c]) pushes nothing there, and the work done on it over the
+ * stretch leaves with it: released, with what it held at a (contact.c). */
 static void book_cable_work(const cs_model *model, cs_state *s, const loaded_pose *a, const loaded_pose *b,
-                            const double (*from)[6]) {
+                            const double (*from)[6], const int *left) {
     for (int c = 0; c < model->cable_count; c++) {
         loaded_pose ca = *a, cb = *b;
         v3_copy(ca.force, from[c]), v3_copy(ca.moment, from[c] + 3);
         v3_copy(cb.force, s->cables[c].push), v3_copy(cb.moment, s->cables[c].push + 3);
-        s->cables[c].work_on_vehicle -= work_on_barrier(&ca, &cb);
+        double w = work_on_barrier(&ca, &cb);
+        s->cables[c].work_on_vehicle -= w;
+        if (left[c]) s->e_released += w;
     }
 }
 
@@ -222,12 +226,17 @@ static void book_cable_work(const cs_model *model, cs_state *s, const loaded_pos
  * equilibrium on a branch the path never reached (a rope stretched to its strength with no work done on
  * it), sent back as a failed one is. Returns 1 if it committed, with the largest residual of the solves
  * it committed kept in s->work->solver_residual, the barrier's push at the pose as committed in `end`
- * (before any failure found there) and whether a failure then changed the barrier in *failed. */
+ * (before any failure found there) and whether a failure then changed the barrier in *failed; left[c] says
+ * whether cable c slipped off the vehicle as the pose was taken up, before the solve (contact.c). */
 #define CS_PATH_TRIGGER 1e-2
 
 static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, double allowed,
-                       const loaded_pose *from, loaded_pose *end, int *failed) {
-    cs_contact_update(model, s);               /* 2. cables wrap onto or leave the face */
+                       const loaded_pose *from, loaded_pose *end, int *failed, int *left) {
+    for (int c = 0; c < model->cable_count; c++)
+        left[c] = s->cables[c].status == CS_CABLE_INTACT;
+    cs_contact_update(model, s); /* 2. cables wrap onto or leave the face (left: slipped off it) */
+    for (int c = 0; c < model->cable_count; c++)
+        left[c] &= s->cables[c].status != CS_CABLE_INTACT;
     double worst = cs_barrier_solve(model, s); /* 3. posts, sliding and crush in equilibrium */
     if (allowed < HUGE_VAL) {                  /* the work done on it here */
         cs_barrier_force(model, s);
@@ -259,16 +268,18 @@ static int advance(const cs_model *model, cs_state *s, double h, int commit_anyw
         memcpy(pushes[c], s->cables[c].push, sizeof pushes[c]);
     s->h += h;                  /* the posts swing over the time since the last commit */
     cs_vehicle_integrate(s, h); /* 1. half a kick and a drift */
-    int failed = 0, committed = follow_pose(model, s, commit_anyway, allowed, &from, &to, &failed);
+    int failed = 0, left[CS_MAX_CABLES_PER_POST],
+        committed = follow_pose(model, s, commit_anyway, allowed, &from, &to, &failed, left);
     if (committed < 0) { /* the barrier as last committed, the time since then kept */
         double since = s->h;
         cs_state_restore_barrier(model, s, last), committed = 0;
         s->h = since;
+        memset(left, 0, sizeof left); /* the ropes that slipped are back */
     }
     if (!committed) cs_barrier_force(model, s), to = pose_of(s); /* 6. the barrier's push */
     v3_copy(s->force, to.force), v3_copy(s->moment, to.moment);
     *work += work_on_barrier(&from, &to);
-    book_cable_work(model, s, &from, &to, (const double(*)[6])pushes);
+    book_cable_work(model, s, &from, &to, (const double(*)[6])pushes, left);
     cs_vehicle_finish(model, s, h); /* the second half kick */
     if (failed) {                   /* the next step starts from the push the failures left */
         cs_barrier_force(model, s);
