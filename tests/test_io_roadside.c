@@ -9,7 +9,8 @@
  * - On RS1: deflection grows with the post spacing (2.5, 5, 10 m: fewer posts to bend and rope to hold
  *   between them), falls with the pretension (12, 24, 48 kN: a tauter rope turns the vehicle sooner) and
  *   does not grow when the driven posts are set in concrete footings (a stiffer, stronger base).
- * - On RS1: the ledger closes across the vehicle's override of cable 0 (0.4085 s). */
+ * - On RS1: the ledger closes across the vehicle's override of cable 0 (0.4085 s).
+ * - On RS2: the exit is the last loss of contact, after the pickup swings back onto the ropes. */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <setjmp.h>
