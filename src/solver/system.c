@@ -126,15 +126,28 @@ static void sort_unknowns(cs_system *sys, int n) {
     sys->order_valid = 1;
 }
 
+/* Where post p's unknowns go in the order: at its x while a rope or a rail ties it to its neighbours;
+ * past the barrier's end if nothing does (a post the ropes have left), so that its rows, which couple to
+ * nothing but itself, do not widen the band of the ropes' rows it stood between (at their x, RS6's
+ * released posts made its run 22% dearer than left out of the solve; last, 8%, its run 4.5% longer). */
+static double post_place(const cs_model *model, const cs_state *s, int p) {
+    int left, right;
+    if (cs_rail_ties(model, s, p, &left, &right)) return model->posts[p].x;
+    for (int c = 0; c < model->cable_count; c++)
+        if (s->cables[c].status == CS_CABLE_INTACT && s->cables[c].where[p] > 0) return model->posts[p].x;
+    return HUGE_VAL;
+}
+
 static int assemble(const cs_model *model, const cs_state *s, cs_system *sys) {
     cs_rows *w = &sys->rows;
     cs_slot *sl = w->slots;
     int n = 0;
     for (int p = 0; p < model->post_count; p++) {
         if (!cs_post_solved(model, s, p)) continue;
-        sl[n++] = (cs_slot){model->posts[p].x, CS_U_TILT, p, 0, 0};
-        sl[n++] = (cs_slot){model->posts[p].x, CS_U_TILT, p, 1, 0};
-        if (s->posts[p].withdrawing) sl[n++] = (cs_slot){model->posts[p].x, CS_U_PULL, p, 0, 0};
+        double x = post_place(model, s, p);
+        sl[n++] = (cs_slot){x, CS_U_TILT, p, 0, 0};
+        sl[n++] = (cs_slot){x, CS_U_TILT, p, 1, 0};
+        if (s->posts[p].withdrawing) sl[n++] = (cs_slot){x, CS_U_PULL, p, 0, 0};
     }
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
