@@ -8,6 +8,8 @@
 #include "fixture.h"
 #include "lay.h"
 #include "run/run.h"
+#include "solver/solver.h"
+#include "solver/work.h"
 
 /* A world whose post 0 has the given web area (0: the fixture's) and mass per length; a post with mass
  * (the swing) gets a weightless rope, so that a slack one carries nothing. */
@@ -564,6 +566,77 @@ static void a_sliding_post_balances_under_the_fallback(void **state) {
     world_free(w);
 }
 
+/* A post sliding out of its footing that its rope lets go of, on no rope's path from then on, as a
+ * roadside post whose cables have all left it: post 0 (5 kg/m), the barrier's only post, is pulled along
+ * its axis at 1.5 times its pullout capacity Q0 and across it (a weightless rope whose spans rise 3 m over 5
+ * m to either side of it and come 0.1 m from behind it; rigid anchors) and slides 3 steps under Newton.
+ * Then the rope lets go of it (its node removed: the rope runs straight past, slack) while its shaft holds
+ * 0.99 Q0 and it moves out at 2.4 m/s. Each step after that is solved by Newton (system.c) alone, to 1e-12
+ * of a unit: its pull's row balances to 1e-9 Q0 and its tilt's rows to 1e-9 of its moment unit (measured:
+ * 1e-16), and the barrier's energy, stored and dissipated, stays what it was at the release within 1e-9 of
+ * the post's energy then (the shaft's slip, the spring's turn, the slide's and swing's motion; measured:
+ * 1e-15): with nothing on it, the post springs back on its shaft and spring and backward Euler damps it. A
+ * post left out of Newton's unknowns there keeps its pull and tilt where they are, the shaft's 88 kN and
+ * the spring's 825 N m on it unbalanced (the first step's pull row 14 kN off) and its motion booked as
+ * damping in one step. */
+static void a_sliding_post_the_ropes_let_go_balances_under_newton(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    fx.barrier.cable_count = 1, fx.barrier.post_count = 1;
+    fx.posts[0].section.mass_per_length = 5.0;
+    fx.cables[0].rope.mass_per_length = 0.0;
+    fx.barrier.start_anchor.footing.diameter = fx.barrier.end_anchor.footing.diameter = 0.0; /* rigid */
+    fx.scenario.solver_tolerance = 1e-12;
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    cs_state *s = cs_state_create(m, &err);
+    assert_non_null(s);
+    const cs_post_model *pm = &m->posts[0];
+    cs_post_state *ps = &s->posts[0];
+    double x = pm->x, z = m->cables[0].z, h = m->scenario.dt, b[3], upright[2] = {0.0, 0.0};
+    cs_post_attachment(m, 0, upright, 0.0, z, b);
+    double a[3] = {x - 5.0, -0.1, b[2] + 3.0}, c[3] = {x + 5.0, -0.1, b[2] + 3.0}, strain = 1e-3;
+    for (int k = 0; k < 8; k++) { /* the spans' strain for a pull of 1.5 Q0 */
+        if (k > 0) strain *= 1.5 * pm->pullout_cap / cs_post_axial_pull(m, s, 0);
+        lay_cable(s, a, b, c, strain, strain);
+        cs_cable_update_tensions(&m->cables[0], &s->cables[0], NULL);
+    }
+    ps->axial = cs_post_axial_pull(m, s, 0);
+    assert_true(cs_post_pull_start(m, s, 0));
+    for (int n = 1; n <= 3; n++) { /* under the rope */
+        s->h = h, s->step = n;
+        assert_true(cs_system_solve(m, s, &s->work->sys) >= 0.0);
+        cs_barrier_commit(m, s);
+    }
+    cs_cable_remove_node(&s->cables[0], 1); /* let go: the rope runs straight past the post */
+    assert_true(cs_system_solve(m, s, &s->work->sys) >= 0.0); /* step.c's re-solve at the commit */
+    cs_barrier_commit(m, s);
+    cs_system_jumped(&s->work->sys, s->step);
+    assert_true(ps->withdrawing && ps->pull_rate > 2.0);
+    double e0 = cs_barrier_stored_energy(m, s), r[2], q[2];
+    cs_post_resistance(pm, ps, ps->tilt, q);
+    double scale =
+        cs_post_stored_energy(m, s, 0) + 0.5 * pm->pullout_cap * pm->pullout_cap / pm->pull_stiffness;
+    printf("let go %.2f mm out at %.3f m/s, its shaft holding %.1f kN of Q0 %.1f, its spring %.0f N m\n",
+           1e3 * ps->pull, ps->pull_rate, cs_post_pull_cap(pm, ps) / 1e3, pm->pullout_cap / 1e3,
+           hypot(q[0], q[1]));
+    for (int n = 4; n <= 103; n++) {
+        s->h = h, s->step = n;
+        assert_true(cs_system_solve(m, s, &s->work->sys) >= 0.0);
+        CHECK_ABS(cs_post_pull_balance(m, s, 0), 0.0, 1e-9 * pm->pullout_cap);
+        cs_post_residual_at(m, s, 0, ps->tilt, NULL, NULL, NULL, r);
+        CHECK_ABS(hypot(r[0], r[1]), 0.0, 1e-9 * pm->moment_scale);
+        cs_barrier_commit(m, s);
+        CHECK_ABS(cs_barrier_stored_energy(m, s), e0, 1e-9 * scale);
+    }
+    printf("after 100 steps: %.2f mm out at %.4f m/s, damping %.1f J of the %.1f J scale\n", 1e3 * ps->pull,
+           ps->pull_rate, s->e_post_damping, scale);
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
 /* A post of inertia J = mu h^3 / 3 (pivot at grade) on its elastic spring k, let go from a tilt a0
  * with no cable load (a slack weightless rope): backward Euler's exact discrete solution is
  * [a, w]_{n+1} = M^-1 [a, w]_n, M = [[1, -h], [k h / J, 1]], so a_n is r^n a0 cos(n phi) plus a sine
@@ -660,6 +733,7 @@ int main(void) {
         cmocka_unit_test(free_swing),
         cmocka_unit_test(a_post_slides_out_of_its_footing),
         cmocka_unit_test(a_sliding_post_balances_under_the_fallback),
+        cmocka_unit_test(a_sliding_post_the_ropes_let_go_balances_under_newton),
         cmocka_unit_test(axis_jacobian_derivatives),
         cmocka_unit_test(axis_jacobian_at_the_series_edge),
         cmocka_unit_test(plastic_hinge_at_mp),

@@ -135,7 +135,7 @@ void cs_post_commit(const cs_model *model, cs_state *s, int post);
 double cs_post_stored_energy(const cs_model *model, const cs_state *s, int post);
 double cs_post_elastic_energy(const cs_model *model, const cs_state *s, int post);
 double cs_post_kinetic_energy(const cs_model *model, const cs_state *s, int post);
-int cs_post_held(const cs_model *model, const cs_state *s, int post);
+int cs_post_solved(const cs_model *model, const cs_state *s, int post);
 int cs_post_check_failure(const cs_model *model, cs_state *s, int post);
 /* How far a standing post folds: a post carrying ropes until its top reaches grade (lie_angle), where the
  * ground stops it, a struck post to its rotation limit, where the vehicle's edge rides over it; rad. */

@@ -19,10 +19,13 @@
 #include <math.h>
 #include <string.h>
 
-/* A post with mass cannot move in no time: a re-solve at the instant of a commit (after a failure)
- * holds it where it is. */
-int cs_post_held(const cs_model *model, const cs_state *s, int p) {
-    return model->posts[p].inertia > 0.0 && s->h <= 0.0;
+/* Whether the barrier's solve finds post p's tilt (and its pull while it slides out of its footing),
+ * Newton and the fallback alike, whatever ropes it carries: a post the ropes have left still swings on its
+ * spring and slides on its shaft. Not a struck post (the face moves it), nor one with mass at the instant
+ * of a commit (a re-solve after a failure): it cannot move in no time. */
+int cs_post_solved(const cs_model *model, const cs_state *s, int p) {
+    const cs_post_state *ps = &s->posts[p];
+    return cs_post_in_barrier(ps) && !ps->captured && !(model->posts[p].inertia > 0.0 && s->h <= 0.0);
 }
 
 /* Post p's cable nodes where a tilt puts them, and its axis' Jacobian into axis if not NULL. */

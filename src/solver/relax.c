@@ -268,8 +268,8 @@ static double fall(const cs_model *model, cs_state *s, int p, const double *m_en
  * from balance and may_fall, the post falls to the next equilibrium (fall). Returns the relative
  * residual found on entry. */
 double cs_relax_post(const cs_model *model, cs_state *s, int p, double tol, int may_fall) {
+    if (!cs_post_solved(model, s, p)) return 0.0;
     cs_post_state *ps = &s->posts[p];
-    if (!cs_post_in_barrier(ps) || ps->captured || cs_post_held(model, s, p)) return 0.0;
     const cs_post_model *pm = &model->posts[p];
     double scale = pm->moment_scale, r[2], m_entry[CS_MAX_CABLES_PER_POST];
     double *al = ps->tilt;
