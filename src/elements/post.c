@@ -375,7 +375,8 @@ static double lean_at(const cs_post_state *ps, double dr, double w, const double
 
 /* The slide-out balance of a struck post at a slide w, over the shaft's share x^2 (x = 1 - w / D) so that
  * it stays finite as x goes to 0: the push's pull along the post, M tan(theta) / (lever + w) with M its
- * moment along f (the footing's capacity at w), less what the shaft holds, Q0. */
+ * moment along f (the footing's capacity at w), less what the shaft holds, Q0. An edge that has backed
+ * off (M <= 0) pushes nothing, so it pulls nothing out, whatever the sign of theta. */
 static double slide_balance(const cs_post_model *pm, const cs_post_state *ps, double dr, double w,
                             const double *f) {
     cs_post_state at = *ps;
@@ -383,7 +384,9 @@ static double slide_balance(const cs_post_model *pm, const cs_post_state *ps, do
     cs_post_struck_slide_set(pm, &at, w);
     double th = lean_at(ps, dr, w, f, tilt);
     cs_post_resistance(pm, &at, tilt, q);
-    return (q[0] * f[0] + q[1] * f[1]) * tan(th) / ((ps->lever + w) * x * x) - pm->pullout_cap;
+    double m = q[0] * f[0] + q[1] * f[1];
+    if (!(m > 0.0)) return -pm->pullout_cap;
+    return m * tan(th) / ((ps->lever + w) * x * x) - pm->pullout_cap;
 }
 
 /* How far a struck post sliding out has come with the edge at dr: at least the slide of the last commit
