@@ -188,7 +188,9 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
             across > rear_reach(model, s) * v2_norm(cs->pos[3 * j] - cs->pos[3 * (j - 1)],
                                                     cs->pos[3 * j + 1] - cs->pos[3 * (j - 1) + 1]))
             continue;
-        if (zn < lo || zn > hi) {
+        /* a corner that let the rope go in this update and is across its path again takes it back where it
+         * held it (its corner_z kept): the joined span's chord height there is no rope's height */
+        if (!released[k] && (zn < lo || zn > hi)) {
             if (!cs_corner_front(k)) continue; /* below or above the side */
             slip(model, s, c, zn < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE, held);
             return;
