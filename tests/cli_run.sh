@@ -188,9 +188,10 @@ j="$tmp/rs1/summary.json"
 check "rs1: summary.json's occupant risk with units" 'grep -qE "\"occupant_risk\":\{\"basis\":\"[^\"]*CFC 180[^\"]*\",\"point_m\":\[0,0,0\],\"occupant_impact\":\"in_run\",\"occupant_impact_time_s\":[0-9.e-]+,\"oiv_longitudinal_mps\":[0-9.e-]+,\"oiv_lateral_mps\":[0-9.e-]+,\"ora_longitudinal_g\":[0-9.e-]+,\"ora_lateral_g\":[0-9.e-]+,\"head_impact\":\"in_run\",\"thiv_time_s\":[0-9.e-]+,\"thiv_mps\":[0-9.e-]+,\"thiv_kmh\":[0-9.e-]+,\"phd_g\":[0-9.e-]+,\"asi\":[0-9.e-]+,\"asi_time_s\":[0-9.e-]+\},\"max_roll_deg\":[0-9.e-]+,\"max_pitch_deg\":[0-9.e-]+" "$j"'
 check "rs1: the criteria of NCHRP 350 3-11 as run" 'grep -qE "\"roadside_criteria\":\{\"standard\":\"nchrp-350\",\"test\":\"3-11\",\"vehicle\":\"2000P\",\"criteria\":\[\{\"id\":\"A\"" "$j" && grep -qE "\"id\":\"D\",[^}]*\"verdict\":\"not judged\"" "$j"'
 # A's detail names each cable the pickup rode over or went under (events.csv's override and underride
-# rows, at least one in RS1), and says the other cables held it, as the verdict pass says.
-slipped=$(awk -F, '$2 == "override" { printf "rode over cable %d at %s s\n", $4, $1 } $2 == "underride" { printf "went under cable %d at %s s\n", $4, $1 }' "$tmp/rs1/events.csv")
-check "rs1: criterion A names every cable the vehicle rode over or went under" '[ -n "$slipped" ] && a=$(grep -oE "\"id\":\"A\",[^}]*" "$j") && grep -q "\"verdict\":\"pass\"" <<<"$a" && grep -q "and the other cables held it (no override or underride of the barrier)" <<<"$a" && [ "$(grep -oE "(rode over|went under) cable [0-9]+ at [0-9.e-]+ s" <<<"$a")" = "$slipped" ]'
+# rows, one in RS5), and says the other cables held it, as the verdict pass says.
+"$cs" run examples/roadside/rs5.yaml -o "$tmp/rs5" >/dev/null 2>&1
+slipped=$(awk -F, '$2 == "override" { printf "rode over cable %d at %s s\n", $4, $1 } $2 == "underride" { printf "went under cable %d at %s s\n", $4, $1 }' "$tmp/rs5/events.csv")
+check "rs5: criterion A names every cable the vehicle rode over or went under" '[ -n "$slipped" ] && a=$(grep -oE "\"id\":\"A\",[^}]*" "$tmp/rs5/summary.json") && grep -q "\"verdict\":\"pass\"" <<<"$a" && grep -q "and the other cables held it (no override or underride of the barrier)" <<<"$a" && [ "$(grep -oE "(rode over|went under) cable [0-9]+ at [0-9.e-]+ s" <<<"$a")" = "$slipped" ]'
 # the exit criteria of NCHRP 350 (M: the exit angle, judged; K: the path after, not judged)
 check "rs1: its exit criteria, M judged and K not" 'grep -qE "\"id\":\"M\",[^}]*\"verdict\":\"(pass|FAIL)\"" "$j" && grep -qE "\"id\":\"K\",[^}]*\"verdict\":\"not judged\"" "$j"'
 # MASH's exit box of the 2000P (A = 2 m + 1.95 m wide + 0.16 x 5.35 m long = 4.806 m), beside the criteria
