@@ -267,7 +267,11 @@ static cs_outcome through_how(const cs_model *model, const cs_state *s) {
 }
 
 void cs_response_give_up(const cs_model *model, cs_state *s, cs_outcome why) {
-    end_run(model, s, why, 0.0);
+    /* a vehicle that has left the barrier has been redirected, whatever stops the run on its way out */
+    if (s->exit_pending)
+        end_run(model, s, CS_REDIRECTED, v3_norm(s->exit_vel));
+    else
+        end_run(model, s, why, 0.0);
     s->summary.outcome = s->outcome;
 }
 
