@@ -102,10 +102,15 @@ static void fig_speed(cs_plot *p, const cs_figure_data *d, double *t) {
         mark_at(p, &a, t, u, n, e->t, &m, cs_event_type_name(e->type), &shown);
         if (e->type == CS_EVENT_STOPPED)
             snprintf(note, sizeof note, "stopped at t = %.3f s", e->t);
+        else if (e->type == CS_EVENT_REDIRECTED) /* the run ends a vehicle's length past the exit */
+            snprintf(note, sizeof note,
+                     "redirected: the run ends at t = %.3f s, a vehicle's length after it left the ropes at "
+                     "%.1f m/s (%.1f mph)",
+                     e->t, e->value, e->value / CS_MPH);
         else
-            snprintf(note, sizeof note, "%s at t = %.3f s, leaving at %.1f m/s (%.1f mph), its whole speed",
-                     e->type == CS_EVENT_REDIRECTED ? "redirected" : "broke through", e->t, e->value,
-                     e->value / CS_MPH);
+            snprintf(note, sizeof note,
+                     "broke through at t = %.3f s, leaving at %.1f m/s (%.1f mph), its whole speed", e->t,
+                     e->value, e->value / CS_MPH);
         cs_plot_label(p, &a, e->t, value_at(t, u, n, e->t), -12, 22, 1, note);
     }
     cs_plot_legend(p, &a, CS_LEGEND_BOTTOM_LEFT);
