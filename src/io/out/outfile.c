@@ -973,10 +973,11 @@ static int remove_earlier(const cs_outdir *out, cs_out_listed *e, cs_error *err)
     e->ours = 0;
     int put = put_new(aside, path);
     if (put == PUT_NEW) return 0;
-    cs_error_set(err, CS_ERR_IO,
-                 "%s: written during the commit, and something appeared at its name before it could be put "
-                 "back (%s): it is now %s: move it back",
-                 path, strerror(-put), aside);
+    cs_error_set(
+        err, CS_ERR_IO,
+        "%s: written during the commit, and it could not be put back at its name (%s): it is now %s, "
+        "which the next run into this folder removes as a temporary: move it back first",
+        path, strerror(-put), aside);
     return -put;
 }
 
