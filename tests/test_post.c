@@ -460,6 +460,35 @@ static void struck_post_takes_the_work_the_face_does(void **state) {
     cs_model_free(m);
 }
 
+/* A post inside the outline near the front-left corner is inside both the face and the left side; it
+ * came in across the nearer of the two, which strikes it. With the face 2 mm past it and the side 20 mm
+ * in, the face; the other way round, the side (pushed along its outward normal, not along the heading).
+ * Which edge strikes must not hang on which test looks first, nor on how far one step carries the body. */
+static void a_post_is_struck_by_the_edge_it_came_in_across(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    cs_post_def post = fx.posts[0];
+    cs_model *m = one_post_model(&post, NULL);
+    const cs_vehicle_def *v = &m->vehicle.def;
+    const double cases[2][2] = {{0.002, 0.020}, {0.020, 0.002}}; /* past the face, in from the side, m */
+    const int pusher[2] = {CS_PUSH_FACE, CS_PUSH_LEFT};
+    for (int k = 0; k < 2; k++) {
+        cs_error err;
+        cs_state *s = cs_state_create(m, &err);
+        assert_non_null(s);
+        s->quat[0] = 1.0, s->quat[1] = s->quat[2] = s->quat[3] = 0.0; /* heading +x, the post on its left */
+        s->pos[0] = m->posts[0].x - v->cg_to_front + cases[k][0];
+        s->pos[1] = -(0.5 * v->front_width - cases[k][1]);
+        s->crush = 0.0;
+        assert_int_equal(cs_post_capture(m, s), 1);
+        assert_true(s->posts[0].captured);
+        assert_int_equal(s->posts[0].pusher, pusher[k]);
+        cs_state_free(s);
+    }
+    cs_model_free(m);
+}
+
 /* A post pulled out of its footing (post_pullout.c), driven along its axis by hand: its pull reaches the
  * capacity Q0 (the fixture's 20 kip in 3 ft), it slides, its shaft holding Q0 (1 - w_p / D)^2 past the
  * 0.1-in slip that mobilises it (bearing in compression, elastic unloading), and the soil takes the cap's
@@ -743,6 +772,7 @@ int main(void) {
         cmocka_unit_test(struck_post_slides_out_at_its_skin_friction),
         cmocka_unit_test(sliding_struck_post_costs_the_truck_its_work),
         cmocka_unit_test(struck_post_takes_the_work_the_face_does),
+        cmocka_unit_test(a_post_is_struck_by_the_edge_it_came_in_across),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -273,14 +273,14 @@ try {
   await page.evaluate(() => document.body.classList.remove('print-all'));
   await page.setViewportSize({ width: 1400, height: 1000 });
 
-  // RS1's pickup is redirected and its wheels cross the exit box's far side only on the path extrapolated
+  // RS3's pickup is redirected and its wheels cross the exit box's far side only on the path extrapolated
   // from the run's end (summary.json's exit_box.crossed_in_run false): the data sheet, whose next row says
   // how far the path after the loss of contact is simulated, says so as the criteria do
   if (!args.report) {
-    const dir = join(out, 'rs1');
+    const dir = join(out, 'rs3');
     rmSync(dir, { recursive: true, force: true });
-    const r = spawnSync(args.cablesim, ['run', 'examples/roadside/rs1.yaml', '-o', dir, '--report'], { encoding: 'utf8' });
-    check('RS1: cablesim run --report exits 0', r.status === 0, `${r.status} ${r.stderr}`);
+    const r = spawnSync(args.cablesim, ['run', 'examples/roadside/rs3.yaml', '-o', dir, '--report'], { encoding: 'utf8' });
+    check('RS3: cablesim run --report exits 0', r.status === 0, `${r.status} ${r.stderr}`);
     const box = JSON.parse(readFileSync(join(dir, 'summary.json'), 'utf8')).roadside_criteria.exit_box;
     await page.goto(pathToFileURL(join(dir, 'report.html')).href, { waitUntil: 'load' });
     await page.waitForFunction(() => window.csReport && window.csReport.ready, null, { timeout: 60000 });
@@ -288,7 +288,7 @@ try {
       const th = [...document.querySelectorAll('table.sheet-block th')].find((e) => e.textContent === 'exit box (MASH)');
       return th ? th.nextElementSibling.textContent : '';
     });
-    check('RS1: the data sheet says its exit box crossing is on the extrapolated path', box.crossed_in_run === false && cell === `crossed ${box.cross_along_m.toFixed(1)} m along on the path extrapolated from the run's end (B = ${box.b_m.toFixed(1)} m)`, `${cell} (crossed_in_run ${box.crossed_in_run})`);
+    check('RS3: the data sheet says its exit box crossing is on the extrapolated path', box.crossed_in_run === false && cell === `crossed ${box.cross_along_m.toFixed(1)} m along on the path extrapolated from the run's end (B = ${box.b_m.toFixed(1)} m)`, `${cell} (crossed_in_run ${box.crossed_in_run})`);
   }
 
   check('no console errors', consoleErrors.length === 0, consoleErrors.join(' | '));

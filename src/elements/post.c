@@ -514,8 +514,10 @@ static void capture(const cs_model *model, cs_state *s, int p, int pusher) {
     }
 }
 
-/* Capture the standing posts the face has reached, and those a side has swept over. Returns 1 if any
- * was captured. */
+/* Capture the standing posts the face has reached, and those a side has swept over. A post inside the
+ * outline near a front corner is inside both the face and a side: it came in across the nearer of the
+ * two, which strikes it (a step later with a longer step: which edge strikes must not depend on it).
+ * Returns 1 if any was captured. */
 int cs_post_capture(const cs_model *model, cs_state *s) {
     const cs_vehicle_def *v = &model->vehicle.def;
     double o[3], f[3], left[3], zb;
@@ -528,19 +530,22 @@ int cs_post_capture(const cs_model *model, cs_state *s) {
         cs_post_attachment(model, p, ps->tilt, ps->pull, zb, top);
         v3_sub(rel, o, top);
         double d = v3_dot(rel, f), lat = v3_dot(rel, left);
-        if (d >= 0.0 && fabs(lat) <= 0.5 * v->front_width + CS_CAPTURE_MARGIN && d <= zb) {
-            capture(model, s, p, CS_PUSH_FACE);
-            any = 1;
-            continue;
-        }
-        /* the post at the sides' bottom height, in the body frame */
+        int face = d >= 0.0 && fabs(lat) <= 0.5 * v->front_width + CS_CAPTURE_MARGIN && d <= zb;
+        /* the post at the sides' bottom height, in the body frame: inside the outline by `past_face`
+         * behind the face and `in_side` within the nearer side */
         double zs = v->side_bottom - v->cg_height, lo[3] = {0.0, 0.0, zs}, wl[3];
         quat_rotate(wl, s->quat, lo);
         cs_post_attachment(model, p, ps->tilt, ps->pull, s->pos[2] + wl[2], top);
         v3_sub(rel, top, s->pos);
         quat_unrotate(b, s->quat, rel);
-        if (b[0] > -v->cg_to_rear && b[0] < v->cg_to_front - s->crush && fabs(b[1]) < 0.5 * v->front_width) {
+        double past_face = v->cg_to_front - s->crush - b[0], in_side = 0.5 * v->front_width - fabs(b[1]);
+        int side = b[0] > -v->cg_to_rear && past_face > 0.0 && in_side > 0.0 &&
+                   (in_side < past_face || past_face > zb);
+        if (side) {
             capture(model, s, p, b[1] >= 0.0 ? CS_PUSH_LEFT : CS_PUSH_RIGHT);
+            any = 1;
+        } else if (face) {
+            capture(model, s, p, CS_PUSH_FACE);
             any = 1;
         }
     }
