@@ -204,9 +204,10 @@ static double ledger_sum(const cs_state *s) {
 /* A rope that slips off the face in the contact update, before the solve, leaves with what it held at its
  * last solve and the work the vehicle did on it over the step (docs/theory.md, Energy ledger). The design
  * barrier struck by MASH's 1100C at 100 km/h and 25 degrees: its top rope, above the small car's face,
- * slips over it as the corner first meets it (underride, 0.0045 s); the ledger's sum moves across that
- * step by at most 5 J (RS1's steps move it by up to 3.5 J: the ropes' slide round the
- * corners, Capstan friction). */
+ * slips over it as the corner first meets it (underride, 0.0045 s), in the step the car's face reaches
+ * post 9; the ledger's sum moves across that step by at most 1 J (0.26 J measured). Had the ropes been
+ * wrapped on the face's corners before the struck post left their paths, they would run from the corner
+ * back to a post the face has passed and stretch with no work done on them (2.9 J). */
 static void the_ledger_closes_across_a_slip(void **state) {
     (void)state;
     cs_loader *l;
@@ -228,7 +229,7 @@ static void the_ledger_closes_across_a_slip(void **state) {
             printf("design: cable %d slipped off the face at t = %.4f s, the ledger's sum moved by %+.3f J "
                    "across the step\n",
                    e.element, e.t, ledger_sum(s) - before);
-            CHECK_ABS(ledger_sum(s) - before, 0.0, 5.0);
+            CHECK_ABS(ledger_sum(s) - before, 0.0, 1.0);
         }
     }
     assert_int_equal(slips, 1);

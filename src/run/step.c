@@ -234,7 +234,9 @@ static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, do
                        const loaded_pose *from, loaded_pose *end, int *failed, int *left) {
     for (int c = 0; c < model->cable_count; c++)
         left[c] = s->cables[c].status == CS_CABLE_INTACT;
-    cs_contact_update(model, s); /* 2. cables wrap onto or leave the face (left: slipped off it) */
+    double before = cs_barrier_stored_energy(model, s); /* 2. posts the vehicle has reached are struck */
+    if (cs_post_capture(model, s)) s->e_released += before - cs_barrier_stored_energy(model, s);
+    cs_contact_update(model, s); /* cables wrap onto or leave the face (left: slipped off it) */
     for (int c = 0; c < model->cable_count; c++)
         left[c] &= s->cables[c].status != CS_CABLE_INTACT;
     double worst = cs_barrier_solve(model, s); /* 3. posts, sliding and crush in equilibrium */
