@@ -2,7 +2,7 @@
 /* Posts: cantilever deflection in the elastic range (Eqs. 10-11), the onset of the plastic hinge at
  * Mp = Zx Fy, and shear failure at 0.6 Aw Fy. One cable pulls post 0 toward +y over anchors set 1 m
  * behind the barrier line; for these statics the post is massless. The swing of a post with mass is
- * backward Euler on its spring (free_swing). */
+ * the HHT-alpha method on its spring (free_swing). */
 #include "check.h"
 #include "core/vec3.h"
 #include "fixture.h"
@@ -604,7 +604,7 @@ static void a_sliding_post_balances_under_the_fallback(void **state) {
  * of a unit: its pull's row balances to 1e-9 Q0 and its tilt's rows to 1e-9 of its moment unit (measured:
  * 1e-16), and the barrier's energy, stored and dissipated, stays what it was at the release within 1e-9 of
  * the post's energy then (the shaft's slip, the spring's turn, the slide's and swing's motion; measured:
- * 1e-15): with nothing on it, the post springs back on its shaft and spring and backward Euler damps it. A
+ * 1e-15): with nothing on it, the post springs back on its shaft and spring and the integration damps it. A
  * post left out of Newton's unknowns there keeps its pull and tilt where they are, the shaft's 88 kN and
  * the spring's 825 N m on it unbalanced (the first step's pull row 14 kN off) and its motion booked as
  * damping in one step. */
@@ -667,12 +667,12 @@ static void a_sliding_post_the_ropes_let_go_balances_under_newton(void **state) 
 }
 
 /* A post of inertia J = mu h^3 / 3 (pivot at grade) on its elastic spring k, let go from a tilt a0
- * with no cable load (a slack weightless rope): backward Euler's exact discrete solution is
- * [a, w]_{n+1} = M^-1 [a, w]_n, M = [[1, -h], [k h / J, 1]], so a_n is r^n a0 cos(n phi) plus a sine
- * term, r = (1 + (wn h)^2)^-1/2, phi = atan(wn h), wn = sqrt(k / J). Checks the tilt after each step
- * against the matrix recursion (1e-9), the swing's period against 2 pi / wn (0.1% at wn h = 0.02),
- * and the ledger: spring + kinetic + booked damping (both shares of backward Euler's, the kinetic
- * J |dw|^2 / 2 and the spring's end-point k |da|^2 / 2) stays the energy it started with (1e-9). */
+ * with no cable load (a slack weightless rope). The HHT-alpha method's own recursion, J a = -(1 + alpha)
+ * k x + alpha k x_c with Newmark's x = x_c + h v_c + h^2 ((1/2 - beta) a_c + beta a) and v = v_c + h
+ * ((1 - gamma) a_c + gamma a), solved for a each step, is the swing the engine must take: the tilt
+ * after each step against it (1e-9), the swing's period against 2 pi / wn (0.1% at wn h = 0.02), and
+ * the ledger: spring + kinetic + booked damping (the trapezoid rule's work of the spring's moment less
+ * the kinetic energy's change) stays the energy it started with (1e-9), the method taking a little. */
 static void free_swing(void **state) {
     (void)state;
     world *w = make_world(0.0, 5.0);
@@ -687,14 +687,17 @@ static void free_swing(void **state) {
     memset(&s->posts[0], 0, sizeof s->posts[0]);
     s->posts[0].tilt[1] = s->posts[0].tilt_commit[1] = a0;
     s->posts[0].net[1] = -k * a0; /* the spring's moment where it is let go */
-    double xa = a0, xw = 0.0, t_cross = -1.0;
+    s->posts[0].acc[1] = -k * a0 / j;
+    const double al = CS_HHT_ALPHA, be = CS_HHT_BETA, ga = CS_HHT_GAMMA;
+    double xa = a0, xw = 0.0, xc = -k * a0 / j, t_cross = -1.0;
     for (int n = 1; n <= 400; n++) {
         double prev = s->posts[0].tilt[1];
         s->h = h;
         cs_relax_post(w->model, s, 0, 1e-13, 0);
         cs_post_commit(w->model, s, 0);
-        double det = 1.0 + k * h * h / j, na = (xa + h * xw) / det; /* M^-1 [xa, xw] */
-        xw = (xw - k * h / j * xa) / det, xa = na;
+        double pred = xa + h * xw + h * h * (0.5 - be) * xc;
+        double acc = (-(1.0 + al) * k * pred + al * k * xa) / (j + (1.0 + al) * k * be * h * h);
+        xa = pred + h * h * be * acc, xw += h * ((1.0 - ga) * xc + ga * acc), xc = acc;
         CHECK_ABS(s->posts[0].tilt[1], xa, 1e-9 * a0);
         double now = s->posts[0].tilt[1];
         if (t_cross < 0.0 && prev > 0.0 && now <= 0.0) t_cross = h * (n - 1 + prev / (prev - now));

@@ -15,14 +15,18 @@
 
 enum { CAP = 256 };
 
-/* Central difference steps: 1e-7 rad of tilt; 1e-9 m of rope or contact height (far inside the width
- * over which a support's stick/slip switch is rounded, ~50 um here); 1e-7 m of crush (its row's entries).
+/* Central difference steps: 1e-8 rad of tilt (and 1e-8 m of an anchor's or a pull's move, and of crush in
+ * its row's entries); 1e-9 m of rope or contact height (far inside the width over which a support's
+ * stick/slip switch is rounded, ~50 um here). A rope's slide row at a post next to its wrap on the
+ * vehicle's corner curves sharply in the post's tilt: at the rigid-anchored APS3's step 40 the quotient
+ * over 1e-6 rad is 8.5e-3 of the row off the Jacobian, over 1e-7 rad 4.8e-4, over 1e-8 rad within the
+ * round-off (the Jacobian is the limit).
  * The crush's column is the solver's own forward quotient over 1e-8 m of the rows in its band (the crush
  * law has a kink where loading turns to unloading): it is checked against the same quotient of the whole
  * residual, which shows a row of the band evaluated out of place. An entry the band left out (a bandwidth
  * kept from another structure, system.c band_shape) would show here as a difference. */
 static double step_of(int kind) {
-    return kind == 1 || kind == 3 ? 1e-9 : 1e-7;
+    return kind == 1 || kind == 3 ? 1e-9 : 1e-8;
 }
 #define CRUSH_STEP 1e-8 /* system.c's */
 
@@ -139,7 +143,7 @@ static jac_check check_jacobian(const cs_model *m, cs_state *s) {
 }
 
 /* At the install (no contact), then every 40 steps through the crash until the ropes break: every
- * entry within 1e-4 of its row's largest, kinks aside (on_the_yield_kink). Measured: 1e-7 to 2e-6 of a
+ * entry within 1e-4 of its row's largest, kinks aside (on_the_yield_kink). Measured: 1e-7 to 3e-6 of a
  * row (the quotients' round-off). Leaving out the turning angle's gradient makes 1.2e-4; terms under ~1e-6
  * of a row (the axis' own turning, the rope stiffness' change with the spans' length) are below what this
  * resolves. */
@@ -373,7 +377,8 @@ static void fallback_is_reached_and_balances(void **state) {
  * solve still ends above 1e-2 after Newton and the sweeps; the sweeps that let a post fall along its
  * unbalanced moment converge, and the fall is kept because, committed, the barrier holds no more energy
  * than at its last commit. Through it the run's energy ledger balances: within 0.5% of the initial
- * kinetic energy (0.016% measured). */
+ * kinetic energy (0.014% measured). With the posts swinging by HHT-alpha, whose inertial slope is 3.7
+ * times backward Euler's, few designs reach it: 2 of designs 0-7,999. */
 static void a_post_with_no_equilibrium_near_falls(void **state) {
     (void)state;
     design d;

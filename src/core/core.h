@@ -183,6 +183,7 @@ typedef struct cs_post_state {
     int bearing;           /* a captured post the vehicle's edge bears on (not backed off) */
     double tilt_commit[2]; /* tilt at the last commit, rad */
     double rate[2];        /* rate of tilt at the last commit, rad/s */
+    double acc[2];         /* its acceleration then, rad/s^2 (the HHT-alpha method's) */
     double net[2];         /* the net generalised moment (cables, rails, less the resistance) then, N m */
     int withdrawing;       /* its pull has reached its pullout capacity: it slides out (post_pullout.c) */
     double pull;           /* how far it has slid out along its axis, m */

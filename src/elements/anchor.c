@@ -24,8 +24,8 @@
  * the ropes' end spans: omega h <= 0.11 at 0.5 ms for the APS anchors, 3e-6 of their energy a step),
  * and damps modes the step does not resolve (1.2% a step at omega h = 1, 14% at 3: a light dead-man on
  * short stiff spans, rung by a failure). Backward Euler would take omega^2 h^2 / (1 + omega^2 h^2) of
- * every mode's energy each step (1.2% for APS3's); a post's modes with the ropes reach omega h 0.5-0.9,
- * and the posts keep it for that (post.c; docs/theory.md). The inertial M / (beta h^2 (1 + alpha)) keeps
+ * every mode's energy each step (1.2% for APS3's). The posts swing by the same method (post.c;
+ * docs/theory.md). The inertial M / (beta h^2 (1 + alpha)) keeps
  * the residual monotone where the resistance is flat or softens. A dead-man leaves the soil only when
  * the ropes' uplift reaches its pullout capacity (its weight plus its skin friction unless given): every
  * rope tied to it is then released. A rigid anchor (no footing) never moves. The anchor's rows of the
@@ -36,9 +36,6 @@
 #include <math.h>
 
 #define CS_ANCHOR_SOFTENING_STRAIN 0.05 /* plastic slide from the peak to the residual, over the depth */
-#define CS_HHT_ALPHA (-0.1)
-#define CS_HHT_BETA (0.25 * (1.0 - CS_HHT_ALPHA) * (1.0 - CS_HHT_ALPHA))
-#define CS_HHT_GAMMA (0.5 - CS_HHT_ALPHA)
 
 /* The kinetic energy of its slide at the rate of the last commit. */
 static double kinetic_energy(const cs_anchor_model *am, const cs_anchor_state *as) {

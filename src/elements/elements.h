@@ -8,6 +8,14 @@
 
 #include "core/core.h"
 
+/* The HHT-alpha method (Hilber, Hughes and Taylor 1977) that moves the bodies with mass, the posts'
+ * swing and the dead-men's slide: M a = (1 + alpha) F - alpha F_c, with Newmark's u = u_c + h v_c +
+ * h^2 ((1/2 - beta) a_c + beta a) and v = v_c + h ((1 - gamma) a_c + gamma a). Second order and
+ * unconditionally stable; alpha < 0 damps the modes the step does not resolve (docs/theory.md). */
+#define CS_HHT_ALPHA (-0.1)
+#define CS_HHT_BETA (0.25 * (1.0 - CS_HHT_ALPHA) * (1.0 - CS_HHT_ALPHA))
+#define CS_HHT_GAMMA (0.5 - CS_HHT_ALPHA)
+
 /* ---- rope law (rope.c) ---- */
 double cs_rope_tension(const cs_rope *rope, double strain, double plastic_strain);
 double cs_rope_elastic_energy(const cs_rope *rope, double tension, double material);

@@ -87,52 +87,65 @@ static double ground_stop(const cs_post_model *pm, const cs_post_state *ps, cons
 }
 
 /* The swing: a post of inertia J about its pivot (model.c) goes, over the time h since the last
- * commit, by backward Euler,
- *   J (alpha - alpha_c - h w_c) / h^2 = Q_cables - Q_resist,   w = (alpha - alpha_c) / h,
- * so its residual carries the inertial moment. J / h^2 (about 1e8 N m/rad for 20 kg m^2 at 0.5 ms)
- * dwarfs the slope of the cables' pull that makes a post on its plateau fold (its P-delta), so the
- * residual stays monotone in the tilt and the post swings through where the massless one had no
- * equilibrium near. Backward Euler takes energy out of the swing at each commit, J |w - w_c|^2 / 2 and
- * its end-point rule's share in the forces that swing the post (k |d alpha|^2 / 2 for a spring); both
- * are booked as post damping (commit_swing below; docs/theory.md, "Posts with mass"). */
+ * commit, by the HHT-alpha method (elements.h), as a dead-man slides (anchor.c): with Q = Q_cables -
+ * Q_resist the net generalised moment,
+ *   J a = (1 + alpha) Q(alpha) - alpha Q_c,   alpha = alpha_c + h w_c + h^2 ((1/2 - beta) a_c + beta a),
+ * so its residual carries the inertial moment. Second order: a post's lean converges with the step as
+ * h^2 (backward Euler's damping, first order, left a plastic lean 5% short at 0.5 ms, RS1's post 7).
+ * J / (beta h^2 (1 + alpha)) (about 2e8 N m/rad for 15 kg m^2 at 0.5 ms) dwarfs the slope of the
+ * cables' pull that makes a post on its plateau fold (its P-delta), so the residual stays monotone in
+ * the tilt and the post swings through where the massless one had no equilibrium near. What the method
+ * takes out of the swing, the trapezoid rule's work of Q less the kinetic energy's change, is booked as
+ * post damping (commit_swing below; docs/theory.md, "Posts with mass"). */
 int cs_post_swings(const cs_post_model *pm, double h) {
     return pm->inertia > 0.0 && h > 0.0 && h < HUGE_VAL; /* not massless, held, or at rest */
+}
+
+/* The angular acceleration the step from the last commit to `tilt` over h gives (HHT-alpha). */
+static double acceleration_to(const cs_post_state *ps, int k, double tilt, double h) {
+    return (tilt - ps->tilt_commit[k] - h * ps->rate[k]) / (CS_HHT_BETA * h * h) -
+           (0.5 / CS_HHT_BETA - 1.0) * ps->acc[k];
 }
 
 static void subtract_inertia(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double h,
                              double *r) {
     if (!cs_post_swings(pm, h)) return;
-    double k = pm->inertia / (h * h);
-    r[0] -= k * (tilt[0] - ps->tilt_commit[0] - h * ps->rate[0]);
-    r[1] -= k * (tilt[1] - ps->tilt_commit[1] - h * ps->rate[1]);
+    for (int k = 0; k < 2; k++)
+        r[k] -= (pm->inertia * acceleration_to(ps, k, tilt[k], h) + CS_HHT_ALPHA * ps->net[k]) /
+                (1.0 + CS_HHT_ALPHA);
 }
 
-/* At a commit: the rate the swing ended with, and what backward Euler took out of it. With Q the net
- * generalised moment (the cables' and rails' less the resistance) at the commit, J (w - w_c) = h Q, so
- * the kinetic energy changes by Q da - J |w - w_c|^2 / 2 while the forces' energies change by about
- * -(Q_c + Q) da / 2: the swing loses J |w - w_c|^2 / 2 + (Q_c - Q) da / 2, booked as post damping (the
- * trapezoid rule's work of Q less the kinetic energy's change), as an anchor's (anchor.c). Q is read
- * off that identity (the solve has balanced it, to its tolerance); at a commit with no time since the
- * last (a failure's re-solve), where the ropes' pull can have changed with no swing, it is evaluated.
- * A captured post is moved by the face (no swing of its own). */
+/* At a commit: the rate and acceleration the swing ended with, and what the method took out of it: the
+ * trapezoid rule's work of the net generalised moment Q (the cables' and rails' less the resistance),
+ * (Q_c + Q) . d alpha / 2, less the kinetic energy's change, booked as post damping, as an anchor's
+ * (anchor.c). Q is read off the method's own identity, (1 + alpha) Q = J a + alpha Q_c (the solve has
+ * balanced it, to its tolerance); at a commit with no time since the last (a failure's re-solve), where
+ * the ropes' pull can have changed with no swing, it is evaluated and the acceleration starts again
+ * from it, a = Q / J, as at the start of a motion. A captured post is moved by the face (no swing of
+ * its own). */
 static void commit_swing(const cs_model *model, cs_state *s, int p) {
     const cs_post_model *pm = &model->posts[p];
     cs_post_state *ps = &s->posts[p];
     double *net = ps->net;
     if (ps->captured || pm->inertia <= 0.0) {
-        ps->rate[0] = ps->rate[1] = 0.0;
+        ps->rate[0] = ps->rate[1] = ps->acc[0] = ps->acc[1] = 0.0;
         net[0] = net[1] = 0.0;
     } else if (cs_post_swings(pm, s->h)) {
-        double da0 = ps->tilt[0] - ps->tilt_commit[0], da1 = ps->tilt[1] - ps->tilt_commit[1];
-        double w0 = da0 / s->h, w1 = da1 / s->h, q0 = pm->inertia * (w0 - ps->rate[0]) / s->h,
-               q1 = pm->inertia * (w1 - ps->rate[1]) / s->h;
-        double kinetic =
-            0.5 * pm->inertia * (w0 * w0 + w1 * w1 - ps->rate[0] * ps->rate[0] - ps->rate[1] * ps->rate[1]);
-        s->e_post_damping += 0.5 * ((net[0] + q0) * da0 + (net[1] + q1) * da1) - kinetic;
-        ps->rate[0] = w0, ps->rate[1] = w1, net[0] = q0, net[1] = q1;
+        double kinetic_before = 0.5 * pm->inertia * (ps->rate[0] * ps->rate[0] + ps->rate[1] * ps->rate[1]),
+               work = 0.0;
+        for (int k = 0; k < 2; k++) {
+            double da = ps->tilt[k] - ps->tilt_commit[k], acc = acceleration_to(ps, k, ps->tilt[k], s->h);
+            double q = (pm->inertia * acc + CS_HHT_ALPHA * net[k]) / (1.0 + CS_HHT_ALPHA);
+            work += 0.5 * (net[k] + q) * da;
+            ps->rate[k] += s->h * ((1.0 - CS_HHT_GAMMA) * ps->acc[k] + CS_HHT_GAMMA * acc);
+            ps->acc[k] = acc, net[k] = q;
+        }
+        double kinetic = 0.5 * pm->inertia * (ps->rate[0] * ps->rate[0] + ps->rate[1] * ps->rate[1]);
+        s->e_post_damping += work - (kinetic - kinetic_before);
     } else {
         if (s->h > 0.0) ps->rate[0] = ps->rate[1] = 0.0; /* h infinite, at rest: the rate is 0 */
         cs_post_residual_at(model, s, p, ps->tilt, NULL, NULL, NULL, net);
+        ps->acc[0] = net[0] / pm->inertia, ps->acc[1] = net[1] / pm->inertia;
     }
     ps->tilt_commit[0] = ps->tilt[0], ps->tilt_commit[1] = ps->tilt[1];
 }
@@ -150,7 +163,10 @@ static void resistance_slope(const cs_model *model, const cs_state *s, int p, do
     } else {
         k[0] = k[3] = -pm->k_rot, k[1] = k[2] = 0.0;
     }
-    if (cs_post_swings(pm, s->h)) k[0] -= pm->inertia / (s->h * s->h), k[3] -= pm->inertia / (s->h * s->h);
+    if (cs_post_swings(pm, s->h)) {
+        double inertia = pm->inertia / (CS_HHT_BETA * s->h * s->h * (1.0 + CS_HHT_ALPHA));
+        k[0] -= inertia, k[3] -= inertia;
+    }
     ground_stop(pm, ps, ps->tilt, NULL, k);
 }
 

@@ -17,7 +17,7 @@
  * the way out have no pull left on it, and it leaves the barrier (post_pullout) with nothing to release.
  * The post was rigid along its axis until the slide started, so the slip's elastic energy is counted
  * from there: (R^2 - Q0^2) / 2k. The post slides with its mass m (its steel and half its rail spans) by
- * backward Euler over the time h since the last commit, as its swing does (post.c):
+ * backward Euler over the time h since the last commit (its swing goes by HHT-alpha, post.c):
  *   m (w - w_c - h v_c) / h^2 = F - R(w),   v = (w - w_c) / h,
  * so that where the shaft softens faster than the ropes' pull falls as the post comes out (a rope
  * running across the post's axis pulls it out with little stiffness along it) the post is thrown out

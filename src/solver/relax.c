@@ -282,8 +282,8 @@ double cs_relax_post(const cs_model *model, cs_state *s, int p, double tol, int 
          * cannot see that a post the cables pull less than its capacity must come back. Along the
          * radial line from the elastic boundary to here the residual changes sign once: if it is still
          * positive at the boundary the root lies between (bisect); if not, the post unloads into the
-         * elastic range (restart there). A swinging post's residual has the inertial slope J / h^2
-         * there, which Newton sees. */
+         * elastic range (restart there). A swinging post's residual has the inertial slope J / (beta h^2 (1 +
+         * alpha)) there, which Newton sees. */
         double tr[2] = {al[0] - ps->plastic[0], al[1] - ps->plastic[1]}, tn = v2_norm(tr[0], tr[1]);
         double cap = cs_post_moment_cap(pm, ps);
         if (!cs_post_swings(pm, s->h) && pm->k_rot * tn > cap && (r[0] * tr[0] + r[1] * tr[1]) < 0.0) {
