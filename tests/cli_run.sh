@@ -200,7 +200,11 @@ check "rs5: criterion A names every cable the vehicle rode over or went under" '
 # the exit criteria of NCHRP 350 (M: the exit angle, judged; K: the path after, not judged)
 check "rs1: its exit criteria, M judged and K not" 'grep -qE "\"id\":\"M\",[^}]*\"verdict\":\"(pass|FAIL)\"" "$j" && grep -qE "\"id\":\"K\",[^}]*\"verdict\":\"not judged\"" "$j"'
 # MASH's exit box of the 2000P (A = 2 m + 1.95 m wide + 0.16 x 5.35 m long = 4.806 m), beside the criteria
-check "rs1: the exit box with the criteria" 'grep -qE "\],\"exit_box\":\{\"a_m\":4\.806,\"b_m\":10,\"start_x_m\":[0-9.e-]+,\"direction\":1,\"cross_along_m\":[0-9.e-]+,\"crossed_in_run\":(true|false)\}\}" "$j"'
+check "rs1: the exit box with the criteria" 'grep -qE "\],\"exit_box\":\{\"a_m\":4\.806,\"b_m\":10,\"start_x_m\":[0-9.e-]+,\"direction\":1,\"cross_along_m\":[0-9.e-]+,\"crossed_in_run\":(true|false),\"heading_back\":false\}\}" "$j"'
+# A pickup that leaves the ropes and, a vehicle's length on, moves back toward the barrier with no wheel past
+# the box's far side (the design at 10 deg) has no exit to judge: its box is not judged, not passed
+back=$("$cs" run examples/roadside/design.yaml --set "scenario.angle=10 deg" -o "$tmp/back" 2>&1)
+check "a vehicle moving back toward the barrier: its exit box not judged" 'grep -qE "^  criteria \(as run\)    mash 3-11: .*exit box not judged" <<<"$back" && grep -qE "\"cross_along_m\":null,\"crossed_in_run\":false,\"heading_back\":true\}" "$tmp/back/summary.json" && grep -qF "at its end the vehicle moves back toward the barrier" "$tmp/back/summary.json"'
 check "rs1: the terminal's occupant risk and criteria" 'grep -qE "^  occupant impact      [0-9.]+ s after first contact: OIV [0-9.]+ m/s \([0-9.]+ ft/s\) longitudinal" <<<"$out" && grep -qE "^  EN 1317-1            THIV [0-9.]+ km/h \([0-9.]+ m/s\), PHD [0-9.]+ g, ASI [0-9.]+$" <<<"$out" && grep -qE "^  criteria \(as run\)    nchrp-350 3-11: A (pass|FAIL), D not judged," <<<"$out"'
 # --occupant-at: the CG named as a point gives the CG's numbers; another point is written with them; a
 # bad point is refused with the reason

@@ -53,7 +53,7 @@ static void criteria_of_each_test(void **state) {
     (void)state;
     cs_summary s = redirected(10.0);
     cs_occupant_risk o = {0};
-    cs_exit_box box = {4.9, 10.0, 0.0, 20.0, 0, 1.0};
+    cs_exit_box box = {4.9, 10.0, 0.0, 20.0, 0, 1.0, 0};
     cs_test_result r = {&s, &o, NULL, 0.0, 0.0, &box, NULL};
     cs_criterion c[CS_CRITERIA_MAX];
     char ids[128];
@@ -181,8 +181,17 @@ static void exit_box(void **state) {
     /* moving parallel: never crosses */
     exit_box_path(10.0, 0.0, &box);
     assert_true(isinf(box.cross_along));
+    assert_int_equal(box.heading_back, 0);
     n = judge("mash", "3-11", &r, c, ids, sizeof ids);
     assert_int_equal(find(c, n, "exit box")->verdict, CS_VERDICT_PASS);
+    /* moving back toward the barrier at the run's end, no wheel past the line in the run: where it goes is
+     * a second impact the run does not follow, so the box is not judged (no pass by construction) */
+    exit_box_path(10.0, 1.0, &box);
+    assert_true(isinf(box.cross_along));
+    assert_int_equal(box.heading_back, 1);
+    n = judge("mash", "3-11", &r, c, ids, sizeof ids);
+    assert_int_equal(find(c, n, "exit box")->verdict, CS_VERDICT_NOT_JUDGED);
+    assert_non_null(strstr(find(c, n, "exit box")->detail, "moves back toward the barrier"));
 }
 
 static void test_as_run(void **state) {
@@ -215,7 +224,7 @@ static void verdict_digits(void **state) {
     (void)state;
     cs_summary s = redirected(14.98); /* 3-11: 60% of 25 deg is 15 deg */
     cs_occupant_risk o = {0};
-    cs_exit_box box = {4.9, 10.0, 0.0, 9.96, 0, 1.0};
+    cs_exit_box box = {4.9, 10.0, 0.0, 9.96, 0, 1.0, 0};
     cs_test_result r = {&s, &o, NULL, 75.04 * DEG, 10.0 * DEG, &box, NULL};
     struct {
         const char *std, *test, *id;

@@ -681,7 +681,7 @@ static void test_angles_from_the_data(void **state) {
 static void test_path_from_the_data(void **state) {
     (void)state;
     synthetic *s = synthetic_new(FRAMES);
-    cs_exit_box box = {4.9, 10, 20, HUGE_VAL, 0, 1};
+    cs_exit_box box = {4.9, 10, 20, HUGE_VAL, 0, 1, 0};
     cs_plot_log *log = calloc(1, sizeof *log);
     assert_non_null(log);
     static const char *const standard[3] = {"mash", "nchrp-350", NULL};

@@ -75,6 +75,7 @@ function evaluation(data) {
 // the run, or on the path extrapolated from the run's end (a vehicle's length past the loss of contact).
 function exitBox(box) {
   if (!box) return '– (no roadside test)';
+  if (box.heading_back) return "not judged: no wheel crossed in the run, and at its end the vehicle moves back toward the barrier";
   if (!Number.isFinite(box.cross_along_m)) return 'not crossed';
   return `crossed ${f(box.cross_along_m)} m along${box.crossed_in_run ? '' : " on the path extrapolated from the run's end"} (B = ${f(box.b_m)} m)`;
 }

@@ -291,6 +291,23 @@ try {
     check('RS3: the data sheet says its exit box crossing is on the extrapolated path', box.crossed_in_run === false && cell === `crossed ${box.cross_along_m.toFixed(1)} m along on the path extrapolated from the run's end (B = ${box.b_m.toFixed(1)} m)`, `${cell} (crossed_in_run ${box.crossed_in_run})`);
   }
 
+  // The design's pickup at 10 deg leaves the ropes and, a vehicle's length on, moves back toward the barrier
+  // with no wheel past the box's far side: the data sheet says its box is not judged, as the criteria do
+  if (!args.report) {
+    const dir = join(out, 'back');
+    rmSync(dir, { recursive: true, force: true });
+    const r = spawnSync(args.cablesim, ['run', 'examples/roadside/design.yaml', '--set', 'scenario.angle=10 deg', '-o', dir, '--report'], { encoding: 'utf8' });
+    check('moving back: cablesim run --report exits 0', r.status === 0, `${r.status} ${r.stderr}`);
+    const box = JSON.parse(readFileSync(join(dir, 'summary.json'), 'utf8')).roadside_criteria.exit_box;
+    await page.goto(pathToFileURL(join(dir, 'report.html')).href, { waitUntil: 'load' });
+    await page.waitForFunction(() => window.csReport && window.csReport.ready, null, { timeout: 60000 });
+    const cell = await page.evaluate(() => {
+      const th = [...document.querySelectorAll('table.sheet-block th')].find((e) => e.textContent === 'exit box (MASH)');
+      return th ? th.nextElementSibling.textContent : '';
+    });
+    check('moving back: the data sheet says its exit box is not judged', box.heading_back === true && cell.startsWith('not judged: no wheel crossed in the run'), `${cell} (heading_back ${box.heading_back})`);
+  }
+
   check('no console errors', consoleErrors.length === 0, consoleErrors.join(' | '));
   check('no network requests', requests.length === 0, requests.join(' '));
 } catch (e) {

@@ -300,6 +300,7 @@ static json_object *roadside_criteria(cs_wout *w, const cs_run_info *info) {
     jnum(w, box, "direction", e->dir);
     jopt(w, box, "cross_along_m", e->cross_along);
     jbool(box, "crossed_in_run", e->crossed_in_run);
+    jbool(box, "heading_back", e->heading_back);
     json_object_object_add(o, "exit_box", box);
     return o;
 }

@@ -39,6 +39,7 @@ void cs_exit_box_of_record(const cs_record *rec, const cs_vehicle_def *v, double
     out->start_x = impact_x;
     out->cross_along = HUGE_VAL;
     out->crossed_in_run = 0;
+    out->heading_back = 0;
     out->dir = 1.0;
     int n = cs_record_frame_count(rec);
     if (n < 1) return;
@@ -58,7 +59,10 @@ void cs_exit_box_of_record(const cs_record *rec, const cs_vehicle_def *v, double
     /* past the end: each wheel straight on along the CG's last velocity */
     const cs_vehicle_view *e = cs_record_vehicle(rec, n - 1);
     double vx = e->velocity[0], vy = e->velocity[1];
-    if (vy >= 0.0) return;
+    if (vy >= 0.0) { /* parallel to the barrier it never crosses; toward it, it comes back */
+        out->heading_back = vy > 0.0;
+        return;
+    }
     cs_vehicle_wheels(e, v, w);
     for (int k = 0; k < 4; k++) {
         double t = (-out->a - w[k][1]) / vy, along = (w[k][0] + vx * t - out->start_x) * dir;
@@ -202,18 +206,20 @@ static void exit_box(list *l, const cs_test_result *r) {
         not_judged(l, "exit box", name, "the vehicle did not leave the barrier on the traffic side");
         return;
     }
-    cs_criterion *c = add(l, "exit box", name, e->cross_along >= e->b ? CS_VERDICT_PASS : CS_VERDICT_FAIL);
-    if (isfinite(e->cross_along))
-        snprintf(c->detail, sizeof c->detail,
-                 "a wheel crosses the line %.2f m from the barrier %.*f m along (box %.*f m); %s", e->a,
-                 apart(e->cross_along, e->b, 1), e->cross_along, apart(e->cross_along, e->b, 1), e->b,
-                 e->crossed_in_run ? "in the run" : "on the path extrapolated straight from the run's end");
-    else
-        snprintf(c->detail, sizeof c->detail,
-                 "no wheel crosses the line %.2f m from the barrier (the path extrapolated straight from the "
-                 "run's "
-                 "end)",
+    if (e->heading_back) { /* where it goes next is a second impact, which the run does not follow */
+        char why[200];
+        snprintf(why, sizeof why,
+                 "no wheel crossed the line %.2f m from the barrier in the run, and at its end the vehicle "
+                 "moves back toward the barrier",
                  e->a);
+        not_judged(l, "exit box", name, why);
+        return;
+    }
+    cs_criterion *c = add(l, "exit box", name, e->cross_along >= e->b ? CS_VERDICT_PASS : CS_VERDICT_FAIL);
+    snprintf(c->detail, sizeof c->detail,
+             "a wheel crosses the line %.2f m from the barrier %.*f m along (box %.*f m); %s", e->a,
+             apart(e->cross_along, e->b, 1), e->cross_along, apart(e->cross_along, e->b, 1), e->b,
+             e->crossed_in_run ? "in the run" : "on the path extrapolated straight from the run's end");
 }
 
 int cs_roadside_criteria(const cs_roadside_test *t, const cs_test_result *r, cs_criterion *out) {

@@ -25,6 +25,8 @@ typedef struct cs_exit_box {
     double cross_along; /* how far along from start_x a wheel crosses y = -a, m; HUGE_VAL never */
     int crossed_in_run; /* 1 if it crossed within the run; 0 if on the path extrapolated past its end */
     double dir; /* +1 if the vehicle travels toward +x, -1 toward -x: the box runs from start_x that way */
+    int heading_back; /* 1 if no wheel crossed in the run and the CG moves back toward the barrier at the
+                         run's end: the path past it is a second impact, not followed (no verdict) */
 } cs_exit_box;
 
 /* The wheels' plan positions (x, y; front left, front right, rear left, rear right) of a frame: the
@@ -32,7 +34,8 @@ typedef struct cs_exit_box {
 void cs_vehicle_wheels(const cs_vehicle_view *p, const cs_vehicle_def *v, double w[4][2]);
 
 /* The exit box and the wheels' path of a run: the wheels (track and wheelbase) from the CG's place and
- * yaw in each frame, and past the run's end straight along the CG's last velocity. */
+ * yaw in each frame, and past the run's end straight along the CG's last velocity, if that leads away
+ * from the barrier (else heading_back). */
 void cs_exit_box_of_record(const cs_record *rec, const cs_vehicle_def *v, double impact_x, cs_exit_box *out);
 
 /* What a run gives the criteria. occupant NULL: not computed (the occupant criteria are then not judged,
