@@ -481,7 +481,7 @@ static void a_post_is_struck_by_the_edge_it_came_in_across(void **state) {
         s->pos[0] = m->posts[0].x - v->cg_to_front + cases[k][0];
         s->pos[1] = -(0.5 * v->front_width - cases[k][1]);
         s->crush = 0.0;
-        assert_int_equal(cs_post_capture(m, s), 1);
+        assert_int_equal(cs_post_capture(m, s, 0), 1);
         assert_true(s->posts[0].captured);
         assert_int_equal(s->posts[0].pusher, pusher[k]);
         cs_state_free(s);

@@ -181,6 +181,7 @@ typedef struct cs_post_state {
     double reach;          /* the struck point's lean at the strike less the edge's reach there, m */
     double push;           /* force of the vehicle on a captured post, N */
     int bearing;           /* a captured post the vehicle's edge bears on (not backed off) */
+    int waiting;           /* struck at a step's new pose, before its solve: pushes from the step's end */
     double tilt_commit[2]; /* tilt at the last commit, rad */
     double rate[2];        /* rate of tilt at the last commit, rad/s */
     double acc[2];         /* its acceleration then, rad/s^2 (the HHT-alpha method's) */

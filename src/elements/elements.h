@@ -160,7 +160,9 @@ void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const 
 double cs_post_place_captured(const cs_model *model, cs_state *s, double crush);
 void cs_post_captured_force(const cs_model *model, const cs_state *s, double crush, int face_only,
                             double *force, double *moment);
-int cs_post_capture(const cs_model *model, cs_state *s);
+int cs_post_capture(const cs_model *model, cs_state *s, int waiting);
+/* The posts struck at this step's pose before its solve (waiting) push from here on; 1 if there were. */
+int cs_post_end_waiting(const cs_model *model, cs_state *s);
 
 /* ---- a post sliding out of its footing (post_pullout.c) ---- */
 #define CS_SHAFT_MOBILISATION (0.1 * CS_IN) /* slip that mobilises a shaft's friction in sand, m */

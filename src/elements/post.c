@@ -443,24 +443,34 @@ static double captured_lean(const cs_model *model, const cs_post_state *ps, int 
 
 /* Place every captured post for a crush; returns the sum of their pushes along the vehicle's heading
  * (the captured posts' share of the face's normal force). */
+/* Place captured post p for a crush; returns its push along the vehicle's heading if the face pushes it. */
+static double place_one(const cs_model *model, cs_state *s, int p, double crush) {
+    cs_post_state *ps = &s->posts[p];
+    double q[2], f[3], w;
+    double th = captured_lean(model, ps, p, s->pos, s->quat, crush, ps->tilt, f, &w);
+    if (ps->withdrawing) cs_post_struck_slide_set(&model->posts[p], ps, w);
+    cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
+    double m = q[0] * f[0] + q[1] * f[1];
+    ps->bearing = m >= 0.0;
+    if (!ps->bearing) { /* the edge has backed off: the post stands at its set, free */
+        ps->tilt[0] = ps->plastic[0], ps->tilt[1] = ps->plastic[1];
+        ps->push = 0.0;
+        return 0.0;
+    }
+    ps->push = m / ((ps->lever + ps->pull) * cos(th));
+    return ps->pusher == CS_PUSH_FACE ? ps->push : 0.0;
+}
+
 double cs_post_place_captured(const cs_model *model, cs_state *s, double crush) {
     double total = 0.0;
     for (int p = 0; p < model->post_count; p++) {
         cs_post_state *ps = &s->posts[p];
         if (!ps->captured || !cs_post_in_barrier(ps)) continue;
-        double q[2], f[3], w;
-        double th = captured_lean(model, ps, p, s->pos, s->quat, crush, ps->tilt, f, &w);
-        if (ps->withdrawing) cs_post_struck_slide_set(&model->posts[p], ps, w);
-        cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
-        double m = q[0] * f[0] + q[1] * f[1];
-        ps->bearing = m >= 0.0;
-        if (!ps->bearing) { /* the edge has backed off: the post stands at its set, free */
-            ps->tilt[0] = ps->plastic[0], ps->tilt[1] = ps->plastic[1];
+        if (ps->waiting) { /* placed at its strike; it pushes from the step's end */
             ps->push = 0.0;
             continue;
         }
-        ps->push = m / ((ps->lever + ps->pull) * cos(th));
-        if (ps->pusher == CS_PUSH_FACE) total += ps->push;
+        total += place_one(model, s, p, crush);
     }
     return total;
 }
@@ -506,11 +516,15 @@ void cs_post_captured_force(const cs_model *model, const cs_state *s, double cru
     }
 }
 
-/* Post p struck by `pusher`: off the cable paths, its lever where the edge strikes it. */
-static void capture(const cs_model *model, cs_state *s, int p, int pusher) {
+/* Post p struck by `pusher`: off the cable paths, its lever where the edge strikes it. Its swing ends
+ * there: the kinetic energy it had leaves the barrier's stored energy at the strike, where the caller
+ * books the drop as released. */
+static void capture(const cs_model *model, cs_state *s, int p, int pusher, int waiting) {
     cs_post_state *ps = &s->posts[p];
     cs_post_struck_slide_take(model, s, p);
+    ps->rate[0] = ps->rate[1] = ps->acc[0] = ps->acc[1] = 0.0;
     ps->captured = 1;
+    ps->waiting = waiting;
     ps->bearing = 1;
     ps->pusher = pusher;
     double pt[3], f[3];
@@ -520,6 +534,9 @@ static void capture(const cs_model *model, cs_state *s, int p, int pusher) {
     double rel[3], base[3] = {model->posts[p].x, 0.0, 0.0}, lean = ps->tilt[0] * f[0] + ps->tilt[1] * f[1];
     v3_sub(rel, pt, base);
     ps->reach = (ps->lever + ps->pull) * sin(lean) - v3_dot(rel, f);
+    /* where the edge holds it now: a post sliding out takes the slide the push balances at once */
+    place_one(model, s, p, s->crush);
+    if (waiting) ps->push = 0.0;
     if (!s->contact_started) {
         s->contact_started = 1;
         s->summary.first_contact_time_s = s->t;
@@ -533,8 +550,9 @@ static void capture(const cs_model *model, cs_state *s, int p, int pusher) {
 /* Capture the standing posts the face has reached, and those a side has swept over. A post inside the
  * outline near a front corner is inside both the face and a side: it came in across the nearer of the
  * two, which strikes it (a step later with a longer step: which edge strikes must not depend on it).
- * Returns 1 if any was captured. */
-int cs_post_capture(const cs_model *model, cs_state *s) {
+ * waiting: struck at a step's new pose before its solve, a post pushes nothing until the step's end
+ * (cs_post_end_waiting), as a failure's change does (step.c). Returns 1 if any was captured. */
+int cs_post_capture(const cs_model *model, cs_state *s, int waiting) {
     const cs_vehicle_def *v = &model->vehicle.def;
     double o[3], f[3], left[3], zb;
     face_frame(model, s->pos, s->quat, s->crush, o, f, left, &zb);
@@ -558,13 +576,21 @@ int cs_post_capture(const cs_model *model, cs_state *s) {
         int side = b[0] > -v->cg_to_rear && past_face > 0.0 && in_side > 0.0 &&
                    (in_side < past_face || past_face > zb);
         if (side) {
-            capture(model, s, p, b[1] >= 0.0 ? CS_PUSH_LEFT : CS_PUSH_RIGHT);
+            capture(model, s, p, b[1] >= 0.0 ? CS_PUSH_LEFT : CS_PUSH_RIGHT, waiting);
             any = 1;
         } else if (face) {
-            capture(model, s, p, CS_PUSH_FACE);
+            capture(model, s, p, CS_PUSH_FACE, waiting);
             any = 1;
         }
     }
+    return any;
+}
+
+int cs_post_end_waiting(const cs_model *model, cs_state *s) {
+    int any = 0;
+    for (int p = 0; p < model->post_count; p++)
+        any |= s->posts[p].waiting, s->posts[p].waiting = 0;
+    if (any) cs_post_place_captured(model, s, s->crush);
     return any;
 }
 

@@ -155,7 +155,7 @@ static double resolve_failures(const cs_model *model, cs_state *s, int *changed)
         for (int p = 0; p < model->post_count; p++)
             any |= cs_post_check_failure(model, s, p) | cs_attachment_check_release(model, s, p);
         any |= cs_anchor_check(model, s);
-        any |= cs_post_capture(model, s);
+        any |= cs_post_capture(model, s, 0);
         any |= cs_contact_check_slip(model, s);
         if (!any) break;
         *changed = 1;
@@ -235,7 +235,7 @@ static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, do
     for (int c = 0; c < model->cable_count; c++)
         left[c] = s->cables[c].status == CS_CABLE_INTACT;
     double before = cs_barrier_stored_energy(model, s); /* 2. posts the vehicle has reached are struck */
-    if (cs_post_capture(model, s)) s->e_released += before - cs_barrier_stored_energy(model, s);
+    if (cs_post_capture(model, s, 1)) s->e_released += before - cs_barrier_stored_energy(model, s);
     cs_contact_update(model, s); /* cables wrap onto or leave the face (left: slipped off it) */
     for (int c = 0; c < model->cable_count; c++)
         left[c] &= s->cables[c].status != CS_CABLE_INTACT;
@@ -252,7 +252,9 @@ static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, do
     cs_barrier_commit(model, s); /* 4. plastic flow, friction and crush work */
     cs_barrier_force(model, s);
     *end = pose_of(s);
+    int struck = cs_post_end_waiting(model, s); /* the posts struck in 2 push from here, as a failure */
     worst = fmax(worst, resolve_failures(model, s, failed)); /* 5. breaks, failures, posts struck */
+    *failed |= struck;
     s->work->solver_residual = fmax(s->work->solver_residual, worst);
     return 1;
 }
