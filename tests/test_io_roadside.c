@@ -240,6 +240,15 @@ static void the_ledger_closes_across_a_slip(void **state) {
     cs_loader_free(l);
 }
 
+/* RS1 as installed, to be stepped: its loader and model in *l and *m. */
+static cs_state *rs1_at_rest(cs_loader **l, cs_model **m) {
+    *m = example_model("roadside/rs1", NULL, l);
+    cs_error err;
+    cs_state *s = cs_state_create(*m, &err);
+    if (!s) fail_msg("%s", err.message);
+    return s;
+}
+
 /* RS1's lowest rope stays on the pickup's face through the turn. As the face turns along it (0.4085 s)
  * the corner lets it go, 8 cm above the face's bottom edge (0.507 m against 0.4275 m), and finds itself
  * across it again in the same update: the corner takes it back where it held it. Judged by the joined
@@ -249,10 +258,9 @@ static void the_ledger_closes_across_a_slip(void **state) {
 static void a_rope_let_go_and_taken_back_keeps_its_height(void **state) {
     (void)state;
     cs_loader *l;
-    cs_model *m = example_model("roadside/rs1", NULL, &l);
+    cs_model *m;
     cs_error err;
-    cs_state *s = cs_state_create(m, &err);
-    if (!s) fail_msg("%s", err.message);
+    cs_state *s = rs1_at_rest(&l, &m);
     for (int step = 0; step < 1000; step++) /* 0.5 s */
         assert_int_equal(cs_step(m, s, &err), CS_OK);
     for (int i = 0; i < cs_state_event_count(s); i++) {
@@ -275,10 +283,9 @@ static void a_rope_let_go_and_taken_back_keeps_its_height(void **state) {
 static void a_post_struck_while_sliding_out_keeps_the_ledger(void **state) {
     (void)state;
     cs_loader *l;
-    cs_model *m = example_model("roadside/rs1", NULL, &l);
+    cs_model *m;
     cs_error err;
-    cs_state *s = cs_state_create(m, &err);
-    if (!s) fail_msg("%s", err.message);
+    cs_state *s = rs1_at_rest(&l, &m);
     int strikes = 0;
     while (s->outcome == CS_RUNNING) {
         int sliding[64] = {0};

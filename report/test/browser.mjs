@@ -273,14 +273,13 @@ try {
   await page.evaluate(() => document.body.classList.remove('print-all'));
   await page.setViewportSize({ width: 1400, height: 1000 });
 
-  // RS3's pickup is redirected and its wheels cross the exit box's far side only on the path extrapolated
-  // from the run's end (summary.json's exit_box.crossed_in_run false): the data sheet, whose next row says
-  // how far the path after the loss of contact is simulated, says so as the criteria do
-  if (!args.report) {
-    const dir = join(out, 'rs3');
+  // A roadside run's data sheet row for MASH's exit box, beside summary.json's exit_box: the run's
+  // cablesim run --report in out/name, its exit status checked
+  async function exitBoxRow(name, runArgs) {
+    const dir = join(out, name);
     rmSync(dir, { recursive: true, force: true });
-    const r = spawnSync(args.cablesim, ['run', 'examples/roadside/rs3.yaml', '-o', dir, '--report'], { encoding: 'utf8' });
-    check('RS3: cablesim run --report exits 0', r.status === 0, `${r.status} ${r.stderr}`);
+    const r = spawnSync(args.cablesim, ['run', ...runArgs, '-o', dir, '--report'], { encoding: 'utf8' });
+    check(`${name}: cablesim run --report exits 0`, r.status === 0, `${r.status} ${r.stderr}`);
     const box = JSON.parse(readFileSync(join(dir, 'summary.json'), 'utf8')).roadside_criteria.exit_box;
     await page.goto(pathToFileURL(join(dir, 'report.html')).href, { waitUntil: 'load' });
     await page.waitForFunction(() => window.csReport && window.csReport.ready, null, { timeout: 60000 });
@@ -288,23 +287,19 @@ try {
       const th = [...document.querySelectorAll('table.sheet-block th')].find((e) => e.textContent === 'exit box (MASH)');
       return th ? th.nextElementSibling.textContent : '';
     });
-    check('RS3: the data sheet says its exit box crossing is on the extrapolated path', box.crossed_in_run === false && cell === `crossed ${box.cross_along_m.toFixed(1)} m along on the path extrapolated from the run's end (B = ${box.b_m.toFixed(1)} m)`, `${cell} (crossed_in_run ${box.crossed_in_run})`);
+    return { box, cell };
   }
 
-  // The design's pickup at 10 deg leaves the ropes and, a vehicle's length on, moves back toward the barrier
-  // with no wheel past the box's far side: the data sheet says its box is not judged, as the criteria do
   if (!args.report) {
-    const dir = join(out, 'back');
-    rmSync(dir, { recursive: true, force: true });
-    const r = spawnSync(args.cablesim, ['run', 'examples/roadside/design.yaml', '--set', 'scenario.angle=10 deg', '-o', dir, '--report'], { encoding: 'utf8' });
-    check('moving back: cablesim run --report exits 0', r.status === 0, `${r.status} ${r.stderr}`);
-    const box = JSON.parse(readFileSync(join(dir, 'summary.json'), 'utf8')).roadside_criteria.exit_box;
-    await page.goto(pathToFileURL(join(dir, 'report.html')).href, { waitUntil: 'load' });
-    await page.waitForFunction(() => window.csReport && window.csReport.ready, null, { timeout: 60000 });
-    const cell = await page.evaluate(() => {
-      const th = [...document.querySelectorAll('table.sheet-block th')].find((e) => e.textContent === 'exit box (MASH)');
-      return th ? th.nextElementSibling.textContent : '';
-    });
+    // RS3's pickup is redirected and its wheels cross the exit box's far side only on the path extrapolated
+    // from the run's end (summary.json's exit_box.crossed_in_run false): the data sheet, whose next row says
+    // how far the path after the loss of contact is simulated, says so as the criteria do
+    let { box, cell } = await exitBoxRow('rs3', ['examples/roadside/rs3.yaml']);
+    check('RS3: the data sheet says its exit box crossing is on the extrapolated path', box.crossed_in_run === false && cell === `crossed ${box.cross_along_m.toFixed(1)} m along on the path extrapolated from the run's end (B = ${box.b_m.toFixed(1)} m)`, `${cell} (crossed_in_run ${box.crossed_in_run})`);
+    // the design's pickup at 10 deg leaves the ropes and, a vehicle's length on, moves back toward the
+    // barrier with no wheel past the box's far side: the data sheet says its box is not judged, as the
+    // criteria do
+    ({ box, cell } = await exitBoxRow('back', ['examples/roadside/design.yaml', '--set', 'scenario.angle=10 deg']));
     check('moving back: the data sheet says its exit box is not judged', box.heading_back === true && cell.startsWith('not judged: no wheel crossed in the run'), `${cell} (heading_back ${box.heading_back})`);
   }
 
