@@ -184,6 +184,7 @@ static void exit_box(void **state) {
     assert_int_equal(box.heading_back, 0);
     n = judge("mash", "3-11", &r, c, ids, sizeof ids);
     assert_int_equal(find(c, n, "exit box")->verdict, CS_VERDICT_PASS);
+    assert_non_null(strstr(find(c, n, "exit box")->detail, "no wheel crosses the line"));
     /* moving back toward the barrier at the run's end, no wheel past the line in the run: where it goes is
      * a second impact the run does not follow, so the box is not judged (no pass by construction) */
     exit_box_path(10.0, 1.0, &box);

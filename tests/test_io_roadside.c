@@ -25,6 +25,7 @@
 
 #include "check.h"
 #include "core/core.h"
+#include "elements/elements.h"
 #include "example.h"
 
 enum { TESTS = 6 };
@@ -307,6 +308,39 @@ static void a_post_struck_while_sliding_out_keeps_the_ledger(void **state) {
     cs_loader_free(l);
 }
 
+/* Every post RS2's car strikes (eight, 0.03-0.76 s) leaves the ropes' paths before the step's solve, and
+ * the ropes relax there to the equilibrium without it: that relaxation is released as a failure's jump is,
+ * however small. Across each strike the ledger's sum moves by at most 5 J (1.1 J measured). Mixed into the
+ * vehicle's work and released only past the path's snap (1e-3 of the energy scale, 0.78 kJ), the strike
+ * of post 22 at 0.6075 s moved it by -557 J. */
+static void every_strike_keeps_the_ledger(void **state) {
+    (void)state;
+    cs_loader *l;
+    cs_model *m = example_model("roadside/rs2", NULL, &l);
+    cs_error err;
+    cs_state *s = cs_state_create(m, &err);
+    if (!s) fail_msg("%s", err.message);
+    int strikes = 0;
+    while (s->outcome == CS_RUNNING) {
+        int standing[64] = {0};
+        for (int p = 0; p < m->post_count && p < 64; p++)
+            standing[p] = !s->posts[p].captured && cs_post_in_barrier(&s->posts[p]);
+        double before = ledger_sum(s);
+        assert_int_equal(cs_step(m, s, &err), CS_OK);
+        int struck = 0;
+        for (int p = 0; p < m->post_count && p < 64; p++)
+            struck |= standing[p] && s->posts[p].captured;
+        if (!struck) continue;
+        strikes++;
+        CHECK_ABS(ledger_sum(s) - before, 0.0, 5.0);
+    }
+    printf("rs2: %d strikes, each within 5 J\n", strikes);
+    assert_true(strikes >= 8);
+    cs_state_free(s);
+    cs_model_free(m);
+    cs_loader_free(l);
+}
+
 /* RS1's ledger within 0.05% of its kinetic energy over the whole run (3.5e-4 measured). A struck post
  * whose pushing edge has backed off must not slide further out of its footing: were it to, its shaft's
  * work would come from nowhere, 4.3 J a step from 0.46 s (post 11), and the ledger would be off by 0.11%. */
@@ -330,6 +364,7 @@ int main(void) {
                                        cmocka_unit_test(the_ledger_closes_across_a_slip),
                                        cmocka_unit_test(a_rope_let_go_and_taken_back_keeps_its_height),
                                        cmocka_unit_test(a_post_struck_while_sliding_out_keeps_the_ledger),
+                                       cmocka_unit_test(every_strike_keeps_the_ledger),
                                        cmocka_unit_test(a_struck_post_slides_only_while_pushed)};
     int failed = cmocka_run_group_tests(tests, NULL, NULL);
     return failed ? failed : pin_skipped ? 77 : 0;

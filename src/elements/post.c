@@ -588,9 +588,13 @@ int cs_post_capture(const cs_model *model, cs_state *s, int waiting) {
 
 int cs_post_end_waiting(const cs_model *model, cs_state *s) {
     int any = 0;
-    for (int p = 0; p < model->post_count; p++)
-        any |= s->posts[p].waiting, s->posts[p].waiting = 0;
-    if (any) cs_post_place_captured(model, s, s->crush);
+    for (int p = 0; p < model->post_count; p++) {
+        cs_post_state *ps = &s->posts[p];
+        if (!ps->waiting) continue;
+        ps->waiting = 0, any = 1;
+        place_one(model, s, p, s->crush); /* at the crush solved; its push's shear and pull, as a commit's */
+        ps->shear = ps->push, ps->axial = ps->push * sin(v2_norm(ps->tilt[0], ps->tilt[1]));
+    }
     return any;
 }
 

@@ -235,7 +235,8 @@ static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, do
     for (int c = 0; c < model->cable_count; c++)
         left[c] = s->cables[c].status == CS_CABLE_INTACT;
     double before = cs_barrier_stored_energy(model, s); /* 2. posts the vehicle has reached are struck */
-    if (cs_post_capture(model, s, 1)) s->e_released += before - cs_barrier_stored_energy(model, s);
+    s->work->struck = cs_post_capture(model, s, 1);
+    if (s->work->struck) s->e_released += before - cs_barrier_stored_energy(model, s);
     cs_contact_update(model, s); /* cables wrap onto or leave the face (left: slipped off it) */
     for (int c = 0; c < model->cable_count; c++)
         left[c] &= s->cables[c].status != CS_CABLE_INTACT;
@@ -252,7 +253,9 @@ static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, do
     cs_barrier_commit(model, s); /* 4. plastic flow, friction and crush work */
     cs_barrier_force(model, s);
     *end = pose_of(s);
-    int struck = cs_post_end_waiting(model, s); /* the posts struck in 2 push from here, as a failure */
+    before = cs_barrier_stored_energy(model, s); /* the posts struck in 2 push from here, as a failure */
+    int struck = cs_post_end_waiting(model, s);
+    if (struck) s->e_released += before - cs_barrier_stored_energy(model, s);
     worst = fmax(worst, resolve_failures(model, s, failed)); /* 5. breaks, failures, posts struck */
     *failed |= struck;
     s->work->solver_residual = fmax(s->work->solver_residual, worst);
@@ -296,7 +299,9 @@ static int advance(const cs_model *model, cs_state *s, double h, int commit_anyw
  * booked as released (the barrier snapped to a lower equilibrium: a jump, as a failure's). */
 static double book_gap(const cs_model *model, cs_state *s, double work, double e0, double snap) {
     double gap = work - (barrier_energy(model, s) - e0);
-    if (gap > snap) s->e_released += gap, cs_system_jumped(&s->work->sys, s->step);
+    /* a post struck in stage 2 leaves the ropes' paths before the solve: their relaxation to the
+     * equilibrium without it is a jump of its own, whatever its size */
+    if (gap > (s->work->struck ? 0.0 : snap)) s->e_released += gap, cs_system_jumped(&s->work->sys, s->step);
     return gap;
 }
 

@@ -20,6 +20,7 @@ struct cs_work {
     double stored_committed; /* cs_barrier_stored_energy where the stretch being followed started or last
                               * committed at the last level, J (step.c) */
     double solver_residual;  /* largest residual of the solves the step committed */
+    int struck;              /* the last pose taken up struck a post before its solve (step.c) */
     struct {
         long solves;     /* barrier solves at a pose */
         long fallback;   /* of them, those that needed the fallback's sweeps (relax.c) */
@@ -27,10 +28,10 @@ struct cs_work {
         long falls;      /* of those, the falls kept (barrier.c) */
         long pieces;     /* steps the path following cut into pieces (step.c) */
         long sweeps;     /* the fallback's Gauss-Seidel sweeps (relax.c) */
-        long newton;     /* Newton's residuals and Jacobians evaluated (newton.c), each a pass over the rows */
-        double work;     /* the solver's work, in rows evaluated: each of Newton's passes its n rows, each
-                          * sweep CS_SWEEP_ROW_COST a local problem it solves (relax.c, system.c) */
-    } count;             /* since the state was reset */
+        long newton; /* Newton's residuals and Jacobians evaluated (newton.c), each a pass over the rows */
+        double work; /* the solver's work, in rows evaluated: each of Newton's passes its n rows, each
+                      * sweep CS_SWEEP_ROW_COST a local problem it solves (relax.c, system.c) */
+    } count;         /* since the state was reset */
 };
 
 /* The run's work is bounded by what it costs, not by its count of solves (docs/theory.md, The barrier

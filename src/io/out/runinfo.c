@@ -29,6 +29,8 @@ void cs_run_info_motion(cs_run_info *info, const cs_model_input *in, const cs_re
     if (!cs_roadside_test_as_run(&in->vehicle, in->scenario.speed, in->scenario.angle, &info->criteria_test))
         return;
     cs_exit_box_of_record(rec, &in->vehicle, in->scenario.impact_x, &info->exit_box);
+    info->exit_box.heading_back &=
+        summary->outcome == CS_REDIRECTED; /* only a vehicle that left has an exit */
     cs_test_result r = {summary,
                         info->occupant_ok ? &info->occupant : NULL,
                         info->occupant_error.message,

@@ -216,10 +216,16 @@ static void exit_box(list *l, const cs_test_result *r) {
         return;
     }
     cs_criterion *c = add(l, "exit box", name, e->cross_along >= e->b ? CS_VERDICT_PASS : CS_VERDICT_FAIL);
-    snprintf(c->detail, sizeof c->detail,
-             "a wheel crosses the line %.2f m from the barrier %.*f m along (box %.*f m); %s", e->a,
-             apart(e->cross_along, e->b, 1), e->cross_along, apart(e->cross_along, e->b, 1), e->b,
-             e->crossed_in_run ? "in the run" : "on the path extrapolated straight from the run's end");
+    if (isfinite(e->cross_along))
+        snprintf(c->detail, sizeof c->detail,
+                 "a wheel crosses the line %.2f m from the barrier %.*f m along (box %.*f m); %s", e->a,
+                 apart(e->cross_along, e->b, 1), e->cross_along, apart(e->cross_along, e->b, 1), e->b,
+                 e->crossed_in_run ? "in the run" : "on the path extrapolated straight from the run's end");
+    else /* moving parallel to the barrier at the run's end */
+        snprintf(c->detail, sizeof c->detail,
+                 "no wheel crosses the line %.2f m from the barrier (the path extrapolated straight from the "
+                 "run's end runs parallel to it)",
+                 e->a);
 }
 
 int cs_roadside_criteria(const cs_roadside_test *t, const cs_test_result *r, cs_criterion *out) {

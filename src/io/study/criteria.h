@@ -26,7 +26,8 @@ typedef struct cs_exit_box {
     int crossed_in_run; /* 1 if it crossed within the run; 0 if on the path extrapolated past its end */
     double dir; /* +1 if the vehicle travels toward +x, -1 toward -x: the box runs from start_x that way */
     int heading_back; /* 1 if no wheel crossed in the run and the CG moves back toward the barrier at the
-                         run's end: the path past it is a second impact, not followed (no verdict) */
+                         run's end: the path past it is a second impact, not followed (no verdict); a
+                         run's outputs give it for a redirected run only */
 } cs_exit_box;
 
 /* The wheels' plan positions (x, y; front left, front right, rear left, rear right) of a frame: the
