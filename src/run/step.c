@@ -235,8 +235,8 @@ static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, do
     for (int c = 0; c < model->cable_count; c++)
         left[c] = s->cables[c].status == CS_CABLE_INTACT;
     double before = cs_barrier_stored_energy(model, s); /* 2. posts the vehicle has reached are struck */
-    s->work->struck = cs_post_capture(model, s, 1);
-    if (s->work->struck) s->e_released += before - cs_barrier_stored_energy(model, s);
+    if (cs_post_capture(model, s, 1)) /* kept until the gap of the stretch it falls in is booked */
+        s->work->struck = 1, s->e_released += before - cs_barrier_stored_energy(model, s);
     cs_contact_update(model, s); /* cables wrap onto or leave the face (left: slipped off it) */
     for (int c = 0; c < model->cable_count; c++)
         left[c] &= s->cables[c].status != CS_CABLE_INTACT;
@@ -302,6 +302,7 @@ static double book_gap(const cs_model *model, cs_state *s, double work, double e
     /* a post struck in stage 2 leaves the ropes' paths before the solve: their relaxation to the
      * equilibrium without it is a jump of its own, whatever its size */
     if (gap > (s->work->struck ? 0.0 : snap)) s->e_released += gap, cs_system_jumped(&s->work->sys, s->step);
+    s->work->struck = 0;
     return gap;
 }
 
@@ -331,11 +332,12 @@ static double book_gap(const cs_model *model, cs_state *s, double work, double e
 static void follow_stretch(const cs_model *model, cs_state *s, double h, int level, double scale) {
     double e0 = barrier_energy(model, s), work = 0.0, snap = CS_PATH_GAP * scale * h / model->scenario.dt;
     s->work->stored_committed = e0 - s->e_released; /* a stretch starts from a commit */
+    s->work->struck = 0;
     cs_state *start = s->work->step_start[level];
     cs_state_copy(model, start, s);
     if (advance(model, s, h, 0, HUGE_VAL, NULL, &work) && book_gap(model, s, work, e0, snap) >= -snap) return;
-    if (cs_work_spent(model, s->work)) return; /* the step is not taken (cs_step) */
-    cs_state_copy(model, s, start);
+    if (cs_work_spent(model, s->work)) return;           /* the step is not taken (cs_step) */
+    cs_state_copy(model, s, start), s->work->struck = 0; /* its strikes taken back with it */
     s->work->count.pieces++;
     if (level + 1 < CS_PATH_LEVELS) {
         for (int j = 0; j < CS_PATH_PIECES && !cs_work_spent(model, s->work); j++)

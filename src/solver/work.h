@@ -20,7 +20,8 @@ struct cs_work {
     double stored_committed; /* cs_barrier_stored_energy where the stretch being followed started or last
                               * committed at the last level, J (step.c) */
     double solver_residual;  /* largest residual of the solves the step committed */
-    int struck;              /* the last pose taken up struck a post before its solve (step.c) */
+    int struck;              /* a pose taken up since the stretch's gap was last booked struck a post
+                              * before its solve (step.c) */
     struct {
         long solves;     /* barrier solves at a pose */
         long fallback;   /* of them, those that needed the fallback's sweeps (relax.c) */
