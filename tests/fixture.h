@@ -60,6 +60,8 @@ static inline cs_section_def fixture_hss(void) {
     s.yield_stress = 46 * KSI;
     s.modulus = 29000 * KSI;
     s.mass_per_length = (b * b - bi * bi) * IN * IN * STEEL_DENSITY;
+    s.width = s.depth = b * IN;
+    s.wall = t * IN;
     return s;
 }
 

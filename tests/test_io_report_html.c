@@ -231,6 +231,10 @@ static void design_as_loaded(void **st) {
     has_number(d, "yield_stress_pa", b->posts[0].section.yield_stress);
     has_number(d, "yield_stress_pa", b->posts[6].section.yield_stress);
     assert_true(b->posts[0].section.yield_stress != b->posts[6].section.yield_stress);
+    /* each kind's plastic moment as the engine takes it (APS3's HSS is hollow: no fill named) */
+    has_number(d, "plastic_moment_nm", cs_section_plastic_moment(&b->posts[0].section));
+    has_number(d, "plastic_moment_nm", cs_section_plastic_moment(&b->posts[6].section));
+    assert_null(strstr(d, "fill_strength_pa"));
     assert_int_equal(array_length(d, "\"post_x_m\":"), b->post_count);
     has_number(d, "soil_pressure_pa", b->posts[0].footing.soil_pressure);
     has_number(d, "soil_pressure_pa", 8000 * 47.88025898033584); /* 8000 psf */

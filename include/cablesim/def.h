@@ -114,7 +114,20 @@ typedef struct cs_section_def {
     double yield_stress;    /**< Fy, Pa */
     double modulus;         /**< E, Pa */
     double mass_per_length; /**< kg/m: the post's swing (0: a massless post, the paper's) */
+    double width;         /**< a rectangular tube's outer width across the bending axis, m (0: not a tube) */
+    double depth;         /**< its outer depth in the plane of bending, m */
+    double wall;          /**< its design wall thickness, m */
+    double fill_strength; /**< f'c of the concrete filling the tube, Pa (0: hollow) */
 } cs_section_def;
+
+/** A post section's plastic moment about its strong axis, N m: Zx Fy, and for a tube filled with concrete
+ * (fill_strength > 0) what the fill adds by the plastic stress distribution, the steel at Fy and the
+ * concrete in compression at 0.85 f'c (AISC 360-16 I1.2a; docs/theory.md, "A tube filled with concrete"). */
+CS_API double cs_section_plastic_moment(const cs_section_def *section);
+
+/** A post section's flexural rigidity about its strong axis, N m^2: E Ix, and for a filled tube the
+ * cracked concrete's share C3 Ec Ic added (AISC 360-16 Eq. I2-15). */
+CS_API double cs_section_flexural_rigidity(const cs_section_def *section);
 
 /** How a footing's dynamic factor carries to its own width and depth. */
 typedef enum cs_width_scaling {

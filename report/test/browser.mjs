@@ -291,6 +291,20 @@ try {
   }
 
   if (!args.report) {
+    // APS1's anchor posts are tubes filled with 3,000-psi concrete: the data sheet names the fill and gives
+    // the plastic moment the engine takes, the steel's and the fill's (15.00 kN m: docs/theory.md, "A tube
+    // filled with concrete"), not the hollow tube's Zx Fy (13.67)
+    const dir = join(out, 'aps1');
+    rmSync(dir, { recursive: true, force: true });
+    const r = spawnSync(args.cablesim, ['run', 'examples/aps1.yaml', '--t-end', '2 ms', '-o', dir, '--report'], { encoding: 'utf8' });
+    check('aps1: cablesim run --report exits 0', r.status === 0, `${r.status} ${r.stderr}`);
+    await page.goto(pathToFileURL(join(dir, 'report.html')).href, { waitUntil: 'load' });
+    await page.waitForFunction(() => window.csReport && window.csReport.ready, null, { timeout: 60000 });
+    const fill = await page.evaluate(() => {
+      const cell = (id) => { const tr = document.querySelector(`#design-table tr[data-design="${id}"]`); return tr ? tr.children[1].textContent : ''; };
+      return { fill: cell('post-kind-0-fill'), mp: cell('post-kind-0-mp'), line: cell('post-kind-1-fill') }; // post 0 is an anchor post
+    });
+    check('APS1: the anchor posts\' fill and plastic moment', fill.fill === '20.7 MPa' && fill.mp === '15.0 kN·m' && fill.line === '', JSON.stringify(fill));
     // RS3's pickup is redirected and its wheels cross the exit box's far side only on the path extrapolated
     // from the run's end (summary.json's exit_box.crossed_in_run false): the data sheet, whose next row says
     // how far the path after the loss of contact is simulated, says so as the criteria do

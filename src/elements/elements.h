@@ -16,6 +16,12 @@
 #define CS_HHT_BETA (0.25 * (1.0 - CS_HHT_ALPHA) * (1.0 - CS_HHT_ALPHA))
 #define CS_HHT_GAMMA (0.5 - CS_HHT_ALPHA)
 
+/* ---- post sections (section.c) ---- */
+/* Why a filled section cannot be taken by the plastic stress distribution (no tube geometry, a fill
+ * strength outside 3-10 ksi, walls not compact), written into why (size n) and returned; NULL if it can
+ * or is hollow. */
+const char *cs_section_fill_problem(const cs_section_def *section, char *why, size_t n);
+
 /* ---- rope law (rope.c) ---- */
 double cs_rope_tension(const cs_rope *rope, double strain, double plastic_strain);
 double cs_rope_elastic_energy(const cs_rope *rope, double tension, double material);

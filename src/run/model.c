@@ -103,6 +103,11 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
             return fail(err, "post %d: section properties (Zx, Ix, Aw, Fy, E) must all be > 0", p);
         if (!non_negative(s->mass_per_length))
             return fail(err, "post %d: section mass per length must be >= 0", p);
+        if (!non_negative(s->fill_strength) || !non_negative(s->width) || !non_negative(s->depth) ||
+            !non_negative(s->wall))
+            return fail(err, "post %d: section fill strength and tube geometry must be >= 0", p);
+        char why[200];
+        if (cs_section_fill_problem(s, why, sizeof why)) return fail(err, "post %d: %s", p, why);
         const cs_footing_def *f = &d->footing;
         if (!positive(f->diameter) || !positive(f->depth))
             return fail(err, "post %d: footing diameter and depth must be > 0", p);
@@ -452,7 +457,7 @@ static cs_model *model_create(const cs_barrier_def *barrier, const cs_vehicle_de
         pm->x = d->x;
         pm->height = d->height;
         pm->load_height = mean_z;
-        pm->mp = d->section.plastic_modulus * d->section.yield_stress;
+        pm->mp = cs_section_plastic_moment(&d->section);
         pm->footing = d->footing;
         double p_soil = cs_footing_impact_capacity(&d->footing, mean_z);
         pm->footing_moment = p_soil * mean_z;
@@ -471,7 +476,7 @@ static cs_model *model_create(const cs_barrier_def *barrier, const cs_vehicle_de
          * elastic turn in the soil about 2D/3 down (R (h + 2D/3)^2 / k_soil), springs in series; k_rot
          * is that compliance as a rotation about the pivot (lever h + pivot) */
         double soil_lever = mean_z + 2.0 * d->footing.depth / 3.0,
-               compliance = mean_z * mean_z * mean_z / (3.0 * d->section.modulus * d->section.inertia) +
+               compliance = mean_z * mean_z * mean_z / (3.0 * cs_section_flexural_rigidity(&d->section)) +
                             soil_lever * soil_lever / cs_footing_rotational_stiffness(&d->footing, mean_z);
         pm->k_rot = lever * lever / compliance;
         pm->shear_cap = 0.6 * d->section.web_area * d->section.yield_stress;

@@ -138,6 +138,11 @@ static const cs_field section_fields[] = {
     S("modulus", CS_Q_PRESSURE, CS_POS, modulus, "Young's modulus E"),
     S("mass_per_length", CS_Q_MASS_PER_LENGTH, CS_NONNEG, mass_per_length,
       "mass per length: the post swings with it (0: a massless post)"),
+    S("width", CS_Q_LENGTH, CS_POS | CS_NEW0, width,
+      "a rectangular tube's outer width across the bending axis (a post may fill it: fill_strength)"),
+    S("depth", CS_Q_LENGTH, CS_POS | CS_NEW0, depth,
+      "a rectangular tube's outer depth in the plane of bending"),
+    S("wall", CS_Q_LENGTH, CS_POS | CS_NEW0, wall, "a rectangular tube's design wall thickness"),
 };
 const cs_table cs_table_section = {"section", "A steel post section (strong axis).", CS_T_SECTION,
                                    section_fields, N(section_fields)};
@@ -282,6 +287,9 @@ static const cs_field posts_fields[] = {
     P("modulus", CS_Q_PRESSURE, CS_POS, section.modulus, "replaces the section's E"),
     P("mass_per_length", CS_Q_MASS_PER_LENGTH, CS_NONNEG, section.mass_per_length,
       "replaces the section's mass per length (a filled tube: steel and fill)"),
+    P("fill_strength", CS_Q_PRESSURE, CS_POS | CS_NEW0, section.fill_strength,
+      "f'c of the concrete filling a tube section (3-10 ksi, compact walls): it adds to the plastic moment "
+      "and the stiffness (AISC 360-16 I1.2a, Eq. I2-15)"),
     SUB("footing", CS_F_MAP, CS_REQ, (long)offsetof(cs_post_def, footing), cs_table_footing, "the footing"),
     {"attachment", CS_F_ENUM, CS_Q_NUMBER, 0, (long)offsetof(cs_post_def, attachment), NULL, attachment_words,
      "how the cables hold to the post: through (threaded, sliding with friction), clamped, slot (stacked in "

@@ -432,8 +432,9 @@ static int same_kind(const cs_post_def *a, const cs_post_def *b) {
            a->rotation_limit == b->rotation_limit && s->plastic_modulus == t->plastic_modulus &&
            s->inertia == t->inertia && s->web_area == t->web_area && s->yield_stress == t->yield_stress &&
            s->modulus == t->modulus && s->mass_per_length == t->mass_per_length &&
-           f->diameter == g->diameter && f->depth == g->depth && f->rotation_limit == g->rotation_limit &&
-           f->pullout_capacity == g->pullout_capacity;
+           s->fill_strength == t->fill_strength && s->width == t->width && s->depth == t->depth &&
+           s->wall == t->wall && f->diameter == g->diameter && f->depth == g->depth &&
+           f->rotation_limit == g->rotation_limit && f->pullout_capacity == g->pullout_capacity;
 }
 
 /* The barrier's ropes as the design gives them: each one's height, rope and pretension, and the fitting
@@ -479,6 +480,8 @@ static json_object *design_post_kinds(jw *j, const cs_barrier_def *b) {
         json_object_object_add(kind, "posts", posts);
         knum(j, kind, "height_m", pd->height);
         kfields(j, kind, &pd->section, section_fields, sizeof section_fields / sizeof section_fields[0]);
+        knum(j, kind, "plastic_moment_nm", cs_section_plastic_moment(&pd->section)); /* the engine's M_p */
+        if (pd->section.fill_strength > 0.0) knum(j, kind, "fill_strength_pa", pd->section.fill_strength);
         knum(j, kind, "rotation_limit_rad", pd->rotation_limit);
         kstr(kind, "attachment", cs_attachment_word(pd->attachment));
         double along = cs_post_release_force(pd), off = cs_post_lateral_release_force(pd);
