@@ -330,8 +330,18 @@ double cs_face_normal_force(const cs_model *model, const cs_state *s, const doub
     return n;
 }
 
+/* The band of a face contact's Coulomb friction for a pull F_n into the body: mu F_n, held up to the
+ * friction floor w where the rope pulls little or nothing into it (cs_smooth_floor: exactly mu F_n above
+ * 3.77 w, 1.28 w at F_n = 0); its slope in F_n into *slope if not NULL. */
+double cs_contact_band(const cs_model *model, int c, double fn, double *slope) {
+    double mu = model->vehicle.def.face_friction, s;
+    double b = cs_smooth_floor(mu * fn, CS_FRICTION_FLOOR * model->cables[c].rope.fu, &s);
+    if (slope) *slope = mu * s;
+    return b;
+}
+
 /* The contact at corner k: Coulomb friction along the vertical body, as for a support (lambda = the
- * spans' pull up the body, b = mu times their pull into it, dz from the last step). */
+ * spans' pull up the body, b the band of their pull into it, dz from the last step). */
 static double height_residual(const cs_model *model, const cs_state *s, const cs_rows *rows, int c, int k) {
     const cs_cable_model *cm = &model->cables[c];
     const cs_cable_state *cs = &s->cables[c];
@@ -339,10 +349,10 @@ static double height_residual(const cs_model *model, const cs_state *s, const cs
     int i = cs_cable_find_node(cs, cs_corner_node(k));
     double fz, fn;
     cs_contact_face_force(model, s, c, i, ch, &fz, &fn);
-    double b = model->vehicle.def.face_friction * fn;
     double cstiff = cm->rope.ea / (ch[4 * (i - 1) + 3] + ch[4 * i + 3] + 1e-9);
     double dz = cs->corner_z[k] - cs->corner_z_commit[k];
-    double wf = CS_FRICTION_FLOOR * cm->rope.fu, proj = cs_smooth_clamp(fz + cstiff * dz, b + wf, wf);
+    double proj = cs_smooth_clamp(fz + cstiff * dz, cs_contact_band(model, c, fn, NULL),
+                                  CS_FRICTION_FLOOR * cm->rope.fu);
     return (fz - proj - CS_STICK_EPS * cstiff * dz) * (1.0 / cm->rope.fu);
 }
 
@@ -353,7 +363,7 @@ static void height_jacobian(const cs_model *model, const cs_state *s, const cs_r
     const cs_cable_state *cs = &s->cables[c];
     int i = cs_cable_find_node(cs, cs_corner_node(k));
     const cs_span_grad *sp = cs_rows_spans(model, rows, c, i);
-    double ax[3][3], f[3], fb[3], mu = model->vehicle.def.face_friction, fu = cm->rope.fu;
+    double ax[3][3], f[3], fb[3], fu = cm->rope.fu;
     body_axes(s, ax);
     cs_node_force(cs, i, cs_rows_chords(model, rows, c), f);
     for (int e = 0; e < 3; e++)
@@ -361,12 +371,12 @@ static void height_jacobian(const cs_model *model, const cs_state *s, const cs_r
     double fn = v2_norm(fb[0], fb[1]), wf = CS_FRICTION_FLOOR * fu;
     double len = sp[0].l + sp[1].l + 1e-9, cstiff = cm->rope.ea / len,
            dz = cs->corner_z[k] - cs->corner_z_commit[k];
-    double py, pb;
-    cs_smooth_clamp_slopes(fb[2] + cstiff * dz, mu * fn + wf, wf, &py, &pb);
+    double py, pb, db, band = cs_contact_band(model, c, fn, &db);
+    cs_smooth_clamp_slopes(fb[2] + cstiff * dz, band, wf, &py, &pb);
     double rho[3], gp[3][3] = {{0}}, gm[3] = {0};
     for (int e = 0; e < 3; e++) {
         rho[e] = (1.0 - py) * ax[2][e];
-        if (fn > 0.0) rho[e] -= pb * mu * (fb[0] * ax[0][e] + fb[1] * ax[1][e]) / fn;
+        if (fn > 0.0) rho[e] -= pb * db * (fb[0] * ax[0][e] + fb[1] * ax[1][e]) / fn;
         rho[e] /= fu;
     }
     cs_rows_force_gradient(sp, rho, gp, gm);

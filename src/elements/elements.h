@@ -228,6 +228,9 @@ double cs_vehicle_potential_energy(const cs_model *model, const cs_state *s);
 void cs_contact_update(const cs_model *model, cs_state *s);
 void cs_contact_place_corners(const cs_model *model, cs_state *s, double crush);
 void cs_contact_drop_failed(const cs_model *model, cs_state *s);
+/* The band of a face contact's Coulomb friction for a pull fn into the body: mu fn, held up to the
+ * friction floor where the rope pulls little into it; its slope in fn into *slope if not NULL. */
+double cs_contact_band(const cs_model *model, int c, double fn, double *slope);
 void cs_contact_face_force(const cs_model *model, const cs_state *s, int c, int i, const double *chords,
                            double *fz, double *fn);
 /* Put the contact of corner k (node i of cable c) at body height z on the face. */

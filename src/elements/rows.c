@@ -121,6 +121,12 @@ static double ramp_slope(double x) {
     return x >= RAMP_H ? 1.0 : (x + RAMP_H) / (2.0 * RAMP_H);
 }
 
+double cs_smooth_floor(double a, double w, double *slope) {
+    double x = (a - w) / w;
+    if (slope) *slope = ramp_slope(x);
+    return w + w * ramp(x);
+}
+
 double cs_smooth_clamp(double y, double b, double w) {
     double iw = 1.0 / w;
     return y - w * ramp((y - b) * iw) + w * ramp((-y - b) * iw);

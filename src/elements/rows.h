@@ -113,6 +113,10 @@ void cs_rail_jacobian(const cs_model *model, const cs_state *s, const cs_rows *r
  * at each: C1, exact outside the band, at most w ln 2 off at the corner), so that Newton sees a smooth
  * switch between sticking and sliding; and its slopes in y and b. */
 double cs_smooth_clamp(double y, double b, double w);
+/* max(a, w) with its corner rounded as the clamp's (exact for a >= (1 + 4 ln 2) w; 1.28 w at a = 0), and
+ * its slope in a into *slope if not NULL: a band that is mu F_n where that is well above w, and w where
+ * the rope pulls nothing into the body. */
+double cs_smooth_floor(double a, double w, double *slope);
 void cs_smooth_clamp_slopes(double y, double b, double w, double *dy, double *db);
 
 /* The small stiffness by which a node between two slack spans sticks instead of being undetermined

@@ -112,8 +112,8 @@ double cs_relax_ends(const cs_model *model, int c, cs_state *s) {
     return worst;
 }
 
-/* dir * F_z - mu F_n - the friction floor with the contact of corner k at body height z (the rope in
- * the spans held). */
+/* dir * F_z less the friction band (cs_contact_band) with the contact of corner k at body height z (the
+ * rope in the spans held). */
 static double height_excess(const cs_model *model, cs_state *s, int c, int i, int k, double z, int dir) {
     cs_cable_state *cs = &s->cables[c];
     const cs_cable_model *cm = &model->cables[c];
@@ -122,7 +122,7 @@ static double height_excess(const cs_model *model, cs_state *s, int c, int i, in
     cs_cable_update_span(cm, cs, i, NULL);
     double fz, fn;
     cs_contact_face_force(model, s, c, i, NULL, &fz, &fn);
-    return dir * fz - model->vehicle.def.face_friction * fn - CS_FRICTION_FLOOR * cm->rope.fu;
+    return dir * fz - cs_contact_band(model, c, fn, NULL);
 }
 
 /* Local solve of a contact's height (Coulomb friction on the vertical face, measured from where it was
@@ -138,7 +138,7 @@ static double solve_height(const cs_model *model, cs_state *s, int c, int i, int
         double fz, fn;
         height_excess(model, s, c, i, k, cs->corner_z[k], 1);
         cs_contact_face_force(model, s, c, i, NULL, &fz, &fn);
-        double b = model->vehicle.def.face_friction * fn + CS_FRICTION_FLOOR * fu, dz = cs->corner_z[k] - z0;
+        double b = cs_contact_band(model, c, fn, NULL), dz = cs->corner_z[k] - z0;
         entry =
             (fabs(fz) > b || (dz != 0.0 && fabs(fabs(fz) - b) > tol * fu)) ? fabs(fabs(fz) - b) / fu : 0.0;
     }
