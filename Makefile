@@ -7,7 +7,7 @@ FUZZ_SECONDS ?= 60
 FUZZ_BUILD ?= build-fuzz
 
 .PHONY: all deps configure build demo designer test sanitize fuzz fuzz-build fuzz-seeds fuzz-loader fuzz-engine \
-  fuzz-sweep fuzz-set pin bench docs package format clean
+  fuzz-sweep fuzz-set pin bench figures docs package format clean
 
 all: build
 
@@ -140,6 +140,10 @@ pin: deps
 # BENCH_T_END (end time of the APS3 runs; empty: the model's), BENCH_POSTS, BENCH_POSTS_T_END, BENCH_REPEAT.
 bench: build
 	BUILD=$(BUILD) bash bench/run.sh
+
+# docs/roadside-spacing.png, the guide's design chart, drawn by this build (scripts/docs-figures.sh).
+figures: build
+	bash scripts/docs-figures.sh $(BUILD)
 
 # The Debian packages (debian/, debhelper) in $(BUILD)/deb: libcablesim0, libcablesim-dev, cablesim and
 # cablesim-data, for `apt install ./$(BUILD)/deb/*.deb`.
