@@ -249,7 +249,8 @@ void cs_validate_write_verification(FILE *md, cs_loader *l, const cs_validation_
         "\nThe engine's other closed-form checks run in `make test` (tests/test_*.c): rope law points, "
         "capstan "
         "ratio exp(mu theta), frictionless sliding EA(L/S - 1), cantilever deflection R z^3 / 3EI, hinge at "
-        "Mp, shear onset, struck-post work M_cap x plastic rotation, a post's free swing against backward "
-        "Euler's closed form and period 2 pi sqrt(J / k), free rolling, settling on the tyres, no "
-        "yaw in a symmetric impact, the energy ledger within 1%%.\n\n");
+        "Mp, shear onset, struck-post work M_cap x plastic rotation, a post's free swing against the "
+        "HHT-alpha method's own recursion and period 2 pi sqrt(J / k), a concrete-filled tube's plastic "
+        "moment against a fibre integration, a rope sliding down the face at Coulomb's ratio, free rolling, "
+        "settling on the tyres, no yaw in a symmetric impact, the energy ledger within 1%%.\n\n");
 }
