@@ -331,8 +331,8 @@ double cs_face_normal_force(const cs_model *model, const cs_state *s, const doub
 }
 
 /* The band of a face contact's Coulomb friction for a pull F_n into the body: mu F_n, held up to the
- * friction floor w where the rope pulls little or nothing into it (cs_smooth_floor: exactly mu F_n above
- * 3.77 w, 1.28 w at F_n = 0); its slope in F_n into *slope if not NULL. */
+ * friction floor w where the rope pulls little or nothing into it (cs_smooth_floor: exactly mu F_n where
+ * mu F_n is 3.77 w or more, 1.28 w at F_n = 0); its slope in F_n into *slope if not NULL. */
 double cs_contact_band(const cs_model *model, int c, double fn, double *slope) {
     double mu = model->vehicle.def.face_friction, s;
     double b = cs_smooth_floor(mu * fn, CS_FRICTION_FLOOR * model->cables[c].rope.fu, &s);
@@ -356,7 +356,7 @@ static double height_residual(const cs_model *model, const cs_state *s, const cs
     return (fz - proj - CS_STICK_EPS * cstiff * dz) * (1.0 / cm->rope.fu);
 }
 
-/* A face contact's row (height_residual): r Fu = fz - proj(fz + c dz, mu fn + w, w) - eps c dz. */
+/* A face contact's row (height_residual): r Fu = fz - proj(fz + c dz, band(fn), w) - eps c dz. */
 static void height_jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row, int c,
                             int k) {
     const cs_cable_model *cm = &model->cables[c];

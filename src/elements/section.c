@@ -3,14 +3,14 @@
  * Zx Fy and bends with E Ix. A rectangular tube filled with concrete (b wide, h deep, wall t, core
  * b_i = b - 2t by h_i = h - 2t) is taken by AISC 360-16's plastic stress distribution (I1.2a): the steel
  * at Fy in tension and compression, the concrete at 0.85 f'c in compression and none in tension. With
- * the neutral axis a below the compression face (a >= t), the steel above it less the steel below it,
- * 2t (2a - h) Fy, balances the core's compression 0.85 f'c b_i (a - t):
+ * the neutral axis a below the compression face (a >= t), the steel below it less the steel above it,
+ * 2t (h - 2a) Fy, balances the core's compression 0.85 f'c b_i (a - t):
  *   a = (2 t h Fy + 0.85 f'c b_i t) / (4 t Fy + 0.85 f'c b_i),
  * and the moment is each block's force times its arm about that axis. Without concrete a = h / 2 and
  * the moment is the square-cornered tube's own Z Fy; the fill adds the difference of the two, so that a
- * section keeps the Zx its table gives (its corners' rounding included). The concrete stiffens it by
- * C3 Ec Ic (AISC 360-16 Eq. I2-15: C3 = 0.45 + 3 As / Ag, at most 0.9; Ec = 0.043 w^1.5 sqrt(f'c) MPa,
- * w in kg/m^3). docs/theory.md, "A tube filled with concrete". */
+ * section keeps the Zx its table gives. The concrete stiffens it by C3 Ec Ic (AISC 360-16 Eq. I2-15:
+ * C3 = 0.45 + 3 As / Ag, at most 0.9; Ec = 0.043 w^1.5 sqrt(f'c) MPa, w the model's plain concrete,
+ * CS_CONCRETE_DENSITY, in kg/m^3). docs/theory.md, "A tube filled with concrete". */
 #include "cablesim/units.h"
 #include "elements/elements.h"
 
