@@ -250,11 +250,11 @@ static cs_state *rs1_at_rest(cs_loader **l, cs_model **m) {
     return s;
 }
 
-/* RS1's lowest rope stays on the pickup's face through the turn. As the face turns along it (0.4085 s)
- * the corner lets it go, 8 cm above the face's bottom edge (0.507 m against 0.4275 m), and finds itself
+/* RS1's lowest rope stays on the pickup's face through the turn. As the face turns along it (0.4095 s)
+ * the corner lets it go, 7 cm above the face's bottom edge (0.501 m against 0.426 m), and finds itself
  * across it again in the same update: the corner takes it back where it held it. Judged by the joined
  * span's chord there (17 mm below the edge), which is no rope's height, it would have been declared run
- * over (override). Later, as the pickup leaves (0.93 s), the rope slides down the face past its edge:
+ * over (override). Later, as the pickup leaves (0.9175 s), the rope slides down the face past its edge:
  * that is a slip of its own, and outside the half second stepped here. */
 static void a_rope_let_go_and_taken_back_keeps_its_height(void **state) {
     (void)state;
