@@ -33,6 +33,9 @@ POSTS_REPEAT=${BENCH_POSTS_REPEAT:-3}
 REPEAT=${BENCH_REPEAT:-10}
 ICOUNT=${BENCH_ICOUNT:-1}
 out=results/bench
+# the bench's own folder, made afresh: a run refuses a folder that holds an earlier cablesim's files it
+# cannot tell for its own
+rm -rf "$out"
 mkdir -p "$out"
 md="$out/bench.md"
 cs="$BUILD/cablesim"
