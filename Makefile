@@ -141,7 +141,8 @@ pin: deps
 bench: build
 	BUILD=$(BUILD) bash bench/run.sh
 
-# docs/roadside-spacing.png, the guide's design chart, drawn by this build (scripts/docs-figures.sh).
+# docs/roadside-spacing.png and docs/study-page.png, the guide's figures a run draws, by this build
+# (scripts/docs-figures.sh).
 figures: build
 	bash scripts/docs-figures.sh $(BUILD)
 
