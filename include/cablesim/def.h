@@ -122,7 +122,9 @@ typedef struct cs_section_def {
 
 /** A post section's plastic moment about its strong axis, N m: Zx Fy, and for a tube filled with concrete
  * (fill_strength > 0) what the fill adds by the plastic stress distribution, the steel at Fy and the
- * concrete in compression at 0.85 f'c (AISC 360-16 I1.2a; docs/theory.md, "A tube filled with concrete"). */
+ * concrete in compression at 0.85 f'c (AISC 360-16 I1.2a; docs/theory.md, "A tube filled with concrete").
+ * A fill is taken as given: cs_model_create refuses one the method does not cover (no tube geometry, walls
+ * that are not compact, f'c outside 3-10 ksi), naming the post. */
 CS_API double cs_section_plastic_moment(const cs_section_def *section);
 
 /** A post section's flexural rigidity about its strong axis, N m^2: E Ix, and for a filled tube the
