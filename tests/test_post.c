@@ -666,20 +666,70 @@ static void a_sliding_post_the_ropes_let_go_balances_under_newton(void **state) 
     cs_model_free(m);
 }
 
-/* A post of inertia J = mu h^3 / 3 (pivot at grade) on its elastic spring k, let go from a tilt a0
- * with no cable load (a slack weightless rope). The HHT-alpha method's own recursion, J a = -(1 + alpha)
- * k x + alpha k x_c with Newmark's x = x_c + h v_c + h^2 ((1/2 - beta) a_c + beta a) and v = v_c + h
- * ((1 - gamma) a_c + gamma a), solved for a each step, is the swing the engine must take: the tilt
- * after each step against it (1e-9), the swing's period against 2 pi / wn (0.1% at wn h = 0.02), and
- * the ledger: spring + kinetic + booked damping (the trapezoid rule's work of the spring's moment less
- * the kinetic energy's change) stays the energy it started with (1e-9), the method taking a little. */
+/* The damping ratio of post 0's spring by hand: the steel's and the soil's by their shares of its
+ * compliance, the cantilever's h^3 / 3EI and the footing's (h + 2D/3)^2 / k_soil at the load height h. */
+static double damping_ratio(const world *w) {
+    const cs_post_def *d = &w->fx.posts[0];
+    double h = w->model->cables[0].z, lever = h + 2.0 * d->footing.depth / 3.0;
+    double bend = h * h * h / (3.0 * cs_section_flexural_rigidity(&d->section)),
+           turn = lever * lever / cs_footing_rotational_stiffness(&d->footing, h);
+    return (CS_STEEL_DAMPING_RATIO * bend + CS_SOIL_DAMPING_RATIO * turn) / (bend + turn);
+}
+
+/* A post with mass turned at a steady rate w through its elastic range onto its plastic plateau (its tilt
+ * set each step, no ropes): while elastic its spring and damper carry k e + c w, the damper's share c w
+ * to round-off; on the plateau the slider turns and the damper's share dies away (by (c/h) / (k + c/h)
+ * a step) to under 1e-6 of the capacity, the moment held at the capacity: a folding post resists with its
+ * capacity alone. */
+static void a_folding_post_gains_nothing_from_its_damper(void **state) {
+    (void)state;
+    world *w = make_world(0.0, 5.0);
+    cs_state *s = w->state;
+    const cs_post_model *pm = &w->model->posts[0];
+    cs_post_state *ps = &s->posts[0];
+    double x = pm->x, z = w->model->cables[0].z;
+    double a[3] = {x - 5.0, 0.0, z}, b[3] = {x, 0.0, z}, c[3] = {x + 5.0, 0.0, z};
+    lay_cable(s, a, b, c, -0.05, -0.05);
+    memset(ps, 0, sizeof *ps);
+    const double h = 5e-4, rate = 2.0, cap = pm->moment_cap;
+    double elastic_share = 0.0;
+    int n = 0;
+    for (; n < 400; n++) {
+        s->h = h;
+        ps->tilt[1] += rate * h;
+        cs_post_commit(w->model, s, 0);
+        if (!ps->yielded) elastic_share = ps->damper[1];
+    }
+    printf("damper c %.4g N m s/rad: %.1f N m at %.1f rad/s while elastic, %.3g N m after %d steps on the "
+           "plateau of %.0f N m\n",
+           pm->damping, elastic_share, rate, ps->damper[1], n, cap);
+    assert_true(ps->yielded);
+    CHECK_REL(elastic_share, pm->damping * rate, 1e-9);
+    CHECK_ABS(ps->damper[1], 0.0, 1e-6 * cap);
+    CHECK_REL(ps->moment[1], cap, 1e-6);
+    world_free(w);
+}
+
+/* A post of inertia J = mu h^3 / 3 (pivot at grade) on its elastic spring k and damper c = 2 zeta
+ * sqrt(k J), let go from a tilt a0 with no cable load (a slack weightless rope). The HHT-alpha method's
+ * own recursion, J a = (1 + alpha) Q - alpha Q_c with Q = -k x - (c / h)(x - x_c) (the damper on the
+ * step's elastic turn) and Newmark's x = x_c + h v_c + h^2 ((1/2 - beta) a_c + beta a) and v = v_c + h
+ * ((1 - gamma) a_c + gamma a), solved for a each step, is the swing the engine must take: the tilt after
+ * each step against it (1e-9); its first zero against the damped oscillator's, (pi / 2 + asin(zeta)) /
+ * (wn sqrt(1 - zeta^2)) (0.1% at wn h = 0.02); the next crest against a0 exp(-2 pi zeta / sqrt(1 -
+ * zeta^2)), a viscous damper's (1%: the damper works on the step's mean rate, half a step behind); and the
+ * ledger: spring + kinetic + booked damping (the damper's work and what the method takes) stays the
+ * energy it started with (1e-9). */
 static void free_swing(void **state) {
     (void)state;
     world *w = make_world(0.0, 5.0);
     cs_state *s = w->state;
     const cs_post_model *pm = &w->model->posts[0];
     double j = 5.0 * pow(w->fx.posts[0].height, 3) / 3.0, k = pm->k_rot, wn = sqrt(k / j), h = 0.02 / wn;
+    const double zeta = damping_ratio(w), wd = wn * sqrt(1.0 - zeta * zeta);
     CHECK_REL(pm->inertia, j, 1e-12);
+    CHECK_REL(pm->damping, 2.0 * zeta * sqrt(k * j), 1e-12);
+    assert_true(zeta > CS_STEEL_DAMPING_RATIO && zeta < CS_SOIL_DAMPING_RATIO);
     double x = pm->x, z = w->model->cables[0].z;
     double a[3] = {x - 5.0, 0.0, z}, b[3] = {x, 0.0, z}, c[3] = {x + 5.0, 0.0, z};
     lay_cable(s, a, b, c, -0.05, -0.05); /* slack: the post is loaded by its spring alone */
@@ -688,22 +738,31 @@ static void free_swing(void **state) {
     s->posts[0].tilt[1] = s->posts[0].tilt_commit[1] = a0;
     s->posts[0].net[1] = -k * a0; /* the spring's moment where it is let go */
     s->posts[0].acc[1] = -k * a0 / j;
-    const double al = CS_HHT_ALPHA, be = CS_HHT_BETA, ga = CS_HHT_GAMMA;
-    double xa = a0, xw = 0.0, xc = -k * a0 / j, t_cross = -1.0;
+    const double al = CS_HHT_ALPHA, be = CS_HHT_BETA, ga = CS_HHT_GAMMA, g = pm->damping / h;
+    double xa = a0, xw = 0.0, xc = -k * a0 / j, qc = -k * a0, t_cross = -1.0, crest = 0.0;
     for (int n = 1; n <= 400; n++) {
-        double prev = s->posts[0].tilt[1];
+        double prev = s->posts[0].tilt[1], rate_before = s->posts[0].rate[1];
         s->h = h;
         cs_relax_post(w->model, s, 0, 1e-13, 0);
         cs_post_commit(w->model, s, 0);
         double pred = xa + h * xw + h * h * (0.5 - be) * xc;
-        double acc = (-(1.0 + al) * k * pred + al * k * xa) / (j + (1.0 + al) * k * be * h * h);
-        xa = pred + h * h * be * acc, xw += h * ((1.0 - ga) * xc + ga * acc), xc = acc;
+        double acc =
+            ((1.0 + al) * (-(k + g) * pred + g * xa) - al * qc) / (j + (1.0 + al) * (k + g) * be * h * h);
+        double xn = pred + h * h * be * acc;
+        qc = -k * xn - g * (xn - xa);
+        xa = xn, xw += h * ((1.0 - ga) * xc + ga * acc), xc = acc;
         CHECK_ABS(s->posts[0].tilt[1], xa, 1e-9 * a0);
         double now = s->posts[0].tilt[1];
         if (t_cross < 0.0 && prev > 0.0 && now <= 0.0) t_cross = h * (n - 1 + prev / (prev - now));
+        if (crest == 0.0 && rate_before > 0.0 && s->posts[0].rate[1] <= 0.0) crest = now; /* the next crest */
         CHECK_REL(cs_post_stored_energy(w->model, s, 0) + s->e_post_damping, e0, 1e-9);
     }
-    CHECK_REL(4.0 * t_cross, 2.0 * CS_PI / wn, 1e-3); /* the first zero is a quarter period */
+    CHECK_REL(t_cross, (0.5 * CS_PI + asin(zeta)) / wd,
+              1e-3); /* the first zero: a0 e^(-zeta wn t) (cos + ...) */
+    double viscous = exp(-2.0 * CS_PI * zeta / sqrt(1.0 - zeta * zeta));
+    printf("damped swing: let go at %.4g rad, the next crest %.4g: ratio %.4f (%.4f viscous)\n", a0, crest,
+           crest / a0, viscous);
+    CHECK_REL(crest / a0, viscous, 1e-2);
     assert_true(s->e_post_damping > 0.0);
     world_free(w);
 }
@@ -763,6 +822,7 @@ int main(void) {
         cmocka_unit_test(a_post_folds_until_it_is_down),
         cmocka_unit_test(the_ground_holds_a_post_down),
         cmocka_unit_test(free_swing),
+        cmocka_unit_test(a_folding_post_gains_nothing_from_its_damper),
         cmocka_unit_test(a_post_slides_out_of_its_footing),
         cmocka_unit_test(a_sliding_post_balances_under_the_fallback),
         cmocka_unit_test(a_sliding_post_the_ropes_let_go_balances_under_newton),

@@ -76,8 +76,11 @@ static int on_the_yield_kink(const cs_model *m, const cs_state *s, int j) {
         if (beside_a_yielding_rail(m, s, u->a)) return 1;
         const cs_post_model *pm = &m->posts[u->a];
         const cs_post_state *ps = &s->posts[u->a];
-        k = pm->k_rot, cap = pm->moment_cap;
-        e[0] = ps->tilt[0] - ps->plastic[0], e[1] = ps->tilt[1] - ps->plastic[1];
+        /* the spring's trial k e with its damper's (c / h)(alpha - alpha_c) (post.c), slope k + c / h */
+        double g = !ps->captured && pm->inertia > 0.0 ? pm->damping / m->scenario.dt : 0.0;
+        k = pm->k_rot + g, cap = pm->moment_cap;
+        for (int i = 0; i < 2; i++)
+            e[i] = (pm->k_rot * (ps->tilt[i] - ps->plastic[i]) + g * (ps->tilt[i] - ps->tilt_commit[i])) / k;
     } else if (u->kind == CS_U_ANCHOR) {
         const cs_anchor_model *am = &m->anchors[u->a];
         const cs_anchor_state *as = &s->anchors[u->a];

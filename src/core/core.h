@@ -87,6 +87,7 @@ typedef struct cs_post_model {
     double lateral_release; /* a keyway bolt's or bracket's strength against a pull off its face, N */
     double face_normal; /* y of that face's outward normal while the post stands: -1 attack, +1 protected */
     double inertia;     /* rotational inertia of the post about its pivot, kg m^2 (0: massless) */
+    double damping;     /* the viscous damper beside its elastic spring, N m s/rad (post.c, model.c) */
     cs_footing_def footing;
 } cs_post_model;
 
@@ -186,6 +187,7 @@ typedef struct cs_post_state {
     double rate[2];        /* rate of tilt at the last commit, rad/s */
     double acc[2];         /* its acceleration then, rad/s^2 (the HHT-alpha method's) */
     double net[2];         /* the net generalised moment (cables, rails, less the resistance) then, N m */
+    double damper[2];      /* the damper's share of the resistance then, N m (post.c) */
     int withdrawing;       /* its pull has reached its pullout capacity: it slides out (post_pullout.c) */
     double pull;           /* how far it has slid out along its axis, m */
     double pull_plastic;   /* the plastic part of that (committed), m */

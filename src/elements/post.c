@@ -101,6 +101,37 @@ int cs_post_swings(const cs_post_model *pm, double h) {
     return pm->inertia > 0.0 && h > 0.0 && h < HUGE_VAL; /* not massless, held, or at rest */
 }
 
+/* The damper beside the post's elastic spring (a Kelvin-Voigt element in series with the plastic
+ * slider): the spring and the damper carry k e + c de/dt, e = alpha - alpha_p the elastic turn, and the
+ * slider turns only once that reaches the capacity, so a post folding at its capacity gains nothing
+ * from the damper (de/dt = 0 on the plateau) while one ringing on its spring loses `2 pi zeta` of its
+ * swing's amplitude a cycle, zeta the steel's and the soil's damping by their shares of its compliance
+ * (c = 2 zeta sqrt(k J), model.c). Over the
+ * step de/dt is (e - e_c) / h, which is `alpha - alpha_c` while the slider holds, so the trial moment is
+ *   k (alpha - alpha_p) + (c / h)(alpha - alpha_c),
+ * returned to the capacity as the undamped one. Only a post that swings has it (not a struck one, which
+ * the face moves, nor a re-solve in no time). Returns c / h, 0 where there is none. */
+static double damper_over_h(const cs_post_model *pm, const cs_post_state *ps, double h) {
+    return !ps->captured && cs_post_swings(pm, h) ? pm->damping / h : 0.0;
+}
+
+static void damped_trial(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double h,
+                         double *tr) {
+    double g = damper_over_h(pm, ps, h);
+    for (int k = 0; k < 2; k++)
+        tr[k] = pm->k_rot * (tilt[k] - ps->plastic[k]) + g * (tilt[k] - ps->tilt_commit[k]);
+}
+
+/* The resistance of a post's spring, damper and slider at a tilt over the step h. */
+static void damped_resistance(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double h,
+                              double *q) {
+    double tr[2];
+    damped_trial(pm, ps, tilt, h, tr);
+    double n = v2_norm(tr[0], tr[1]), cap = cs_post_moment_cap(pm, ps);
+    double f = n > cap ? cap / n : 1.0;
+    q[0] = tr[0] * f, q[1] = tr[1] * f;
+}
+
 /* The angular acceleration the step from the last commit to `tilt` over h gives (HHT-alpha). */
 static double acceleration_to(const cs_post_state *ps, int k, double tilt, double h) {
     return (tilt - ps->tilt_commit[k] - h * ps->rate[k]) / (CS_HHT_BETA * h * h) -
@@ -151,17 +182,19 @@ static void commit_swing(const cs_model *model, cs_state *s, int p) {
 }
 
 /* Derivative of -(Q_resist + the inertial moment) of post p at its tilt, 2 x 2 row-major: the elastic
- * stiffness, or on the cap the radial projection's (its moment turns with the tilt, its size held). */
+ * stiffness and the damper's c / h, or on the cap the radial projection's (its moment turns with the
+ * tilt, its size held). */
 static void resistance_slope(const cs_model *model, const cs_state *s, int p, double *k) {
     const cs_post_model *pm = &model->posts[p];
     const cs_post_state *ps = &s->posts[p];
-    double tr[2] = {pm->k_rot * (ps->tilt[0] - ps->plastic[0]), pm->k_rot * (ps->tilt[1] - ps->plastic[1])};
+    double tr[2], slope = pm->k_rot + damper_over_h(pm, ps, s->h);
+    damped_trial(pm, ps, ps->tilt, s->h, tr);
     double n = v2_norm(tr[0], tr[1]), cap = cs_post_moment_cap(pm, ps);
     if (n > cap) {
-        double f = cap * pm->k_rot / n, u[2] = {tr[0] / n, tr[1] / n};
+        double f = cap * slope / n, u[2] = {tr[0] / n, tr[1] / n};
         k[0] = -f * (1.0 - u[0] * u[0]), k[1] = f * u[0] * u[1], k[2] = k[1], k[3] = -f * (1.0 - u[1] * u[1]);
     } else {
-        k[0] = k[3] = -pm->k_rot, k[1] = k[2] = 0.0;
+        k[0] = k[3] = -slope, k[1] = k[2] = 0.0;
     }
     if (cs_post_swings(pm, s->h)) {
         double inertia = pm->inertia / (CS_HHT_BETA * s->h * s->h * (1.0 + CS_HHT_ALPHA));
@@ -192,7 +225,7 @@ void cs_post_residual_at(const cs_model *model, const cs_state *s, int p, const 
     else
         cs_rail_moment(model, s, p, tilt, j, q);
     double res[2];
-    cs_post_resistance(&model->posts[p], &s->posts[p], tilt, res);
+    damped_resistance(&model->posts[p], &s->posts[p], tilt, s->h, res);
     ground_stop(&model->posts[p], &s->posts[p], tilt, res, NULL);
     r[0] = q[0] - res[0], r[1] = q[1] - res[1];
     subtract_inertia(&model->posts[p], &s->posts[p], tilt, s->h, r);
@@ -216,17 +249,25 @@ static double turn_moment(const cs_post_model *pm, const cs_post_state *ps, doub
     return 0.5 * (cs_post_moment_cap(pm, &at) + q);
 }
 
-/* End of step: plastic rotation (radial return) and its work, base shear and axial pull. */
+/* End of step: plastic rotation (radial return) and its work, the damper's work, base shear and axial
+ * pull. On the cap the spring and damper carry the capacity q u between them: the elastic turn e solves
+ * `k e + (c / h)(e - e_c) = q u`. The damper's work over the step is the trapezoid rule's, `(D_c + D) .
+ * (e - e_c) / 2` with D = q - k e, booked as post damping: with the slider's and the spring's it makes up
+ * the resistance's share of the swing's trapezoid (commit_swing). */
 void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     cs_post_state *ps = &s->posts[p];
     if (!cs_post_in_barrier(ps)) return;
     const cs_post_model *pm = &model->posts[p];
+    double g = damper_over_h(pm, ps, s->h), tr[2],
+           was[2] = {ps->tilt_commit[0] - ps->plastic[0], ps->tilt_commit[1] - ps->plastic[1]};
+    damped_trial(pm, ps, ps->tilt, s->h, tr);
     commit_swing(model, s, p);
-    double tr[2] = {pm->k_rot * (ps->tilt[0] - ps->plastic[0]), pm->k_rot * (ps->tilt[1] - ps->plastic[1])};
-    double n = v2_norm(tr[0], tr[1]), q = cs_post_moment_cap(pm, ps);
+    double n = v2_norm(tr[0], tr[1]), q = cs_post_moment_cap(pm, ps), e[2], d[2];
     if (n > q) { /* radial return to the capacity */
         double u[2] = {tr[0] / n, tr[1] / n};
-        double np[2] = {ps->tilt[0] - q / pm->k_rot * u[0], ps->tilt[1] - q / pm->k_rot * u[1]};
+        for (int k = 0; k < 2; k++)
+            e[k] = (q * u[k] + g * was[k]) / (pm->k_rot + g), d[k] = q * u[k] - pm->k_rot * e[k];
+        double np[2] = {ps->tilt[0] - e[0], ps->tilt[1] - e[1]};
         double w = turn_moment(pm, ps, q) * v2_norm(np[0] - ps->plastic[0], np[1] - ps->plastic[1]);
         int soil = pm->soil_yields || q < pm->moment_cap; /* a footing coming out turns in the soil */
         if (soil)
@@ -240,7 +281,13 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
             cs_event_add(model, s, soil ? CS_EVENT_FOOTING_ROTATION : CS_EVENT_POST_HINGE, CS_ELEMENT_POST, p,
                          q);
         }
+    } else {
+        for (int k = 0; k < 2; k++)
+            e[k] = ps->tilt[k] - ps->plastic[k], d[k] = tr[k] - pm->k_rot * e[k];
     }
+    s->e_post_damping +=
+        0.5 * ((ps->damper[0] + d[0]) * (e[0] - was[0]) + (ps->damper[1] + d[1]) * (e[1] - was[1]));
+    ps->damper[0] = d[0], ps->damper[1] = d[1];
     cs_post_resistance(pm, ps, ps->tilt, ps->moment);
     if (ps->captured) {
         /* the horizontal push on a post leaning by theta has the component push sin(theta) along
@@ -522,7 +569,7 @@ void cs_post_captured_force(const cs_model *model, const cs_state *s, double cru
 static void capture(const cs_model *model, cs_state *s, int p, int pusher, int waiting) {
     cs_post_state *ps = &s->posts[p];
     cs_post_struck_slide_take(model, s, p);
-    ps->rate[0] = ps->rate[1] = ps->acc[0] = ps->acc[1] = 0.0;
+    ps->rate[0] = ps->rate[1] = ps->acc[0] = ps->acc[1] = ps->damper[0] = ps->damper[1] = 0.0;
     ps->captured = 1;
     ps->waiting = waiting;
     ps->bearing = 1;

@@ -476,9 +476,11 @@ static cs_model *model_create(const cs_barrier_def *barrier, const cs_vehicle_de
          * elastic turn in the soil about 2D/3 down (R (h + 2D/3)^2 / k_soil), springs in series; k_rot
          * is that compliance as a rotation about the pivot (lever h + pivot) */
         double soil_lever = mean_z + 2.0 * d->footing.depth / 3.0,
-               compliance = mean_z * mean_z * mean_z / (3.0 * cs_section_flexural_rigidity(&d->section)) +
-                            soil_lever * soil_lever / cs_footing_rotational_stiffness(&d->footing, mean_z);
+               bend = mean_z * mean_z * mean_z / (3.0 * cs_section_flexural_rigidity(&d->section)),
+               turn = soil_lever * soil_lever / cs_footing_rotational_stiffness(&d->footing, mean_z),
+               compliance = bend + turn;
         pm->k_rot = lever * lever / compliance;
+        double zeta = (CS_STEEL_DAMPING_RATIO * bend + CS_SOIL_DAMPING_RATIO * turn) / compliance;
         pm->shear_cap = 0.6 * d->section.web_area * d->section.yield_stress;
         pm->pullout_cap = cs_footing_pullout_capacity(&d->footing);
         pm->embedment = d->footing.depth;
@@ -491,6 +493,7 @@ static cs_model *model_create(const cs_barrier_def *barrier, const cs_vehicle_de
         pm->lateral_release = cs_post_lateral_release_force(d);
         pm->face_normal = d->face == CS_FACE_PROTECTED ? 1.0 : -1.0;
         pm->inertia = post_inertia(barrier, p, pm->pivot);
+        pm->damping = 2.0 * zeta * sqrt(pm->k_rot * pm->inertia);
         pm->pull_mass = post_mass(barrier, p);
     }
     cs_anchor_derive(&barrier->start_anchor, scenario->gravity, &m->anchors[0]);
