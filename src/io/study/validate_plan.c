@@ -305,7 +305,7 @@ const cs_validate_road_reading cs_validate_road_readings[CS_VAL_ROAD_READINGS] =
     {"impact at the middle (a third of the way in taken)", "rs3 rs4", {"scenario.impact_x=167 ft", NULL}},
 };
 
-const char *const cs_validate_road_steps[CS_VAL_ROAD_STEPS] = {"0.25 ms", "0.1 ms"};
+const char *const cs_validate_road_steps[CS_VAL_ROAD_STEPS] = {"0.125 ms", "0.05 ms"};
 
 /* Queue roadside test k as its file stands, under its readings and (convergence) at the finer steps. */
 static void add_road(cs_validate_suite *s, int k, int convergence) {

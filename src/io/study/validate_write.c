@@ -192,8 +192,8 @@ void cs_validate_write_convergence(FILE *md, FILE *csv, const cs_validate_suite 
     if (road >= 0.0 && road < HUGE_VAL) {
         road = round(10.0 * road) / 10.0, fine = round(10.0 * fine) / 10.0; /* judged as printed */
         fprintf(md,
-                "\nTarget: changes under 2%% as the step halves (its file's -> %s, half of the examples' "
-                "0.5 ms): %s (largest %.1f%%).",
+                "\nTarget: changes under 2%% as the step halves (its file's -> %s, half of the roadside "
+                "examples' 0.25 ms): %s (largest %.1f%%).",
                 cs_validate_road_steps[0], road < 2.0 ? "met" : "NOT met", road);
         by_response(md, &half);
         fprintf(md, "On to %s: largest change %.1f%%.", cs_validate_road_steps[CS_VAL_ROAD_STEPS - 1], fine);
