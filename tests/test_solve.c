@@ -38,7 +38,9 @@ typedef struct jac_check {
 
 /* Whether unknown j is a post's tilt or pull, an anchor's displacement or a rope's material beside a span
  * that a commit's return map has left on its yield surface (a rope's: past T1, on its hardening branch; a
- * post's tilt or pull beside a rail segment on its cap, which it moves),
+ * post's tilt or pull beside a rail segment on its cap, which it moves; a post's tilt that moves a rope's
+ * node beside such a span: APS3's end span from post 0 to its rigid anchor at step 215 takes 21.36e6 N/rad
+ * of tilt backward and 12.94e6 forward, its kink 5e-10 rad away),
  * or a rope's material at a sticking node between spans of different plastic strain (the strain the rope
  * carries through the node switches from one side's to the other's at the committed material),
  * where a central difference straddles the kink between the elastic slope (which the Jacobian takes there)
@@ -74,11 +76,17 @@ static int on_the_yield_kink(const cs_model *m, const cs_state *s, int j) {
     double k, cap, e[2];
     if (u->kind == CS_U_TILT) {
         if (beside_a_yielding_rail(m, s, u->a)) return 1;
+        for (int c = 0; c < m->cable_count; c++) { /* its tilt moves a node beside a span on its backbone */
+            const cs_cable_state *cs = &s->cables[c];
+            int i = cs->status == CS_CABLE_INTACT ? cs->where[u->a] : -1;
+            if (i > 0 && beside_a_yielding_span(m, s, c, i)) return 1;
+        }
         const cs_post_model *pm = &m->posts[u->a];
         const cs_post_state *ps = &s->posts[u->a];
-        /* the spring's trial k e with its damper's (c / h)(alpha - alpha_c) (post.c), slope k + c / h */
+        /* the spring's trial k e with its damper's (c / h)(alpha - alpha_c) (post.c), slope k + c / h,
+         * against the cap the engine holds it to (a post sliding out holds less) */
         double g = !ps->captured && pm->inertia > 0.0 ? pm->damping / m->scenario.dt : 0.0;
-        k = pm->k_rot + g, cap = pm->moment_cap;
+        k = pm->k_rot + g, cap = cs_post_moment_cap(pm, ps);
         for (int i = 0; i < 2; i++)
             e[i] = (pm->k_rot * (ps->tilt[i] - ps->plastic[i]) + g * (ps->tilt[i] - ps->tilt_commit[i])) / k;
     } else if (u->kind == CS_U_ANCHOR) {
