@@ -111,8 +111,8 @@ static double road_change(FILE *md, const char *name, const char *to, const cs_s
 }
 
 /* The roadside tests at their file's step and the finer ones: deflection, exit speed and angle, and their
- * change from the file's step to the first finer one (half the examples' 0.5 ms) and to the finest. The
- * largest change to the first, or HUGE_VAL if a run failed, -1 if none ran, each response's in *half;
+ * change from the file's step to the first finer one (half the roadside examples' 0.25 ms) and to the finest.
+ * The largest change to the first, or HUGE_VAL if a run failed, -1 if none ran, each response's in *half;
  * *finest the largest to the finest, each response's in *fine. */
 static double road_step_table(FILE *md, FILE *csv, const cs_validate_suite *s, double *finest,
                               road_worst *half, road_worst *fine) {
