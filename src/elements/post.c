@@ -104,10 +104,10 @@ int cs_post_swings(const cs_post_model *pm, double h) {
 /* The damper beside the post's elastic spring (a Kelvin-Voigt element in series with the plastic
  * slider): the spring and the damper carry k e + c de/dt, e = alpha - alpha_p the elastic turn, and the
  * slider turns only once that reaches the capacity, so a post folding at its capacity gains nothing
- * from the damper (de/dt = 0 on the plateau) while one ringing on its spring loses `2 pi zeta` of its
- * swing's amplitude a cycle, zeta the steel's and the soil's damping by their shares of its compliance
- * (c = 2 zeta sqrt(k J), model.c). Over the
- * step de/dt is (e - e_c) / h, which is `alpha - alpha_c` while the slider holds, so the trial moment is
+ * from the damper (de/dt = 0 on the plateau) while one ringing on its spring loses `1 - exp(-2 pi zeta /
+ * sqrt(1 - zeta^2))` of its swing's amplitude a cycle (about 2 pi zeta), zeta the steel's and the soil's
+ * damping by their shares of its compliance (c = 2 zeta sqrt(k J), model.c). Over the step de/dt is
+ * (e - e_c) / h, which is `alpha - alpha_c` while the slider holds, so the trial moment is
  *   k (alpha - alpha_p) + (c / h)(alpha - alpha_c),
  * returned to the capacity as the undamped one. Only a post that swings has it (not a struck one, which
  * the face moves, nor a re-solve in no time). Returns c / h, 0 where there is none. */
