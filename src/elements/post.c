@@ -346,10 +346,11 @@ int cs_post_check_failure(const cs_model *model, cs_state *s, int p) {
 double cs_post_elastic_energy(const cs_model *model, const cs_state *s, int p) {
     const cs_post_state *ps = &s->posts[p];
     if (!cs_post_in_barrier(ps)) return 0.0;
-    double q[2];
-    cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
+    /* k |e|^2 / 2 with e the committed elastic turn: within the capacity after a return, except where the
+     * capacity fell under a post sliding out and its damper holds the spring's relaxation back */
+    double e[2] = {ps->tilt[0] - ps->plastic[0], ps->tilt[1] - ps->plastic[1]};
     double over = ground_stop(&model->posts[p], ps, ps->tilt, NULL, NULL);
-    return 0.5 * (q[0] * q[0] + q[1] * q[1]) / model->posts[p].k_rot +
+    return 0.5 * model->posts[p].k_rot * (e[0] * e[0] + e[1] * e[1]) +
            0.5 * ground_stiffness(&model->posts[p]) * over * over + cs_post_pull_energy(model, s, p);
 }
 
