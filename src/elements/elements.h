@@ -16,7 +16,8 @@
 #define CS_HHT_BETA (0.25 * (1.0 - CS_HHT_ALPHA) * (1.0 - CS_HHT_ALPHA))
 #define CS_HHT_GAMMA (0.5 - CS_HHT_ALPHA)
 /* The material damping of a post's elastic turn, as fractions of critical (post.c, model.c): welded steel
- * at working stress and sand at a cyclic shear strain of 1e-4, the least of each (docs/assumptions.md).
+ * at working stress and sand at a cyclic shear strain of 1e-4 (0.01%), the least of each
+ * (docs/assumptions.md).
  * A post's spring is its bend and its footing's turn in the soil in series; it takes each one's ratio by
  * its share of the compliance (the share of the strain energy each holds). */
 #define CS_STEEL_DAMPING_RATIO 0.02
