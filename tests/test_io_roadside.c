@@ -241,9 +241,9 @@ static void the_ledger_closes_across_a_slip(void **state) {
     cs_loader_free(l);
 }
 
-/* RS1 as installed, to be stepped: its loader and model in *l and *m. */
-static cs_state *rs1_at_rest(cs_loader **l, cs_model **m) {
-    *m = example_model("roadside/rs1", NULL, l);
+/* A roadside example as installed, to be stepped: its loader and model in *l and *m. */
+static cs_state *at_rest(const char *example, cs_loader **l, cs_model **m) {
+    *m = example_model(example, NULL, l);
     cs_error err;
     cs_state *s = cs_state_create(*m, &err);
     if (!s) fail_msg("%s", err.message);
@@ -261,7 +261,7 @@ static void a_rope_let_go_and_taken_back_keeps_its_height(void **state) {
     cs_loader *l;
     cs_model *m;
     cs_error err;
-    cs_state *s = rs1_at_rest(&l, &m);
+    cs_state *s = at_rest("roadside/rs1", &l, &m);
     while (s->t < 0.5 - 1e-9)
         assert_int_equal(cs_step(m, s, &err), CS_OK);
     for (int i = 0; i < cs_state_event_count(s); i++) {
@@ -356,10 +356,9 @@ static void a_struck_post_slides_only_while_pushed(void **state) {
 static void a_rope_sliding_down_the_face_holds_coulombs_ratio(void **state) {
     (void)state;
     cs_loader *l;
-    cs_model *m = example_model("roadside/rs5", NULL, &l);
+    cs_model *m;
     cs_error err;
-    cs_state *s = cs_state_create(m, &err);
-    if (!s) fail_msg("%s", err.message);
+    cs_state *s = at_rest("roadside/rs5", &l, &m);
     const double mu = m->vehicle.def.face_friction, w = CS_FRICTION_FLOOR * m->cables[0].rope.fu;
     int slid = 0;
     while (s->t < 0.06 && s->outcome == CS_RUNNING) {
@@ -394,10 +393,9 @@ static void a_rope_sliding_down_the_face_holds_coulombs_ratio(void **state) {
 static void a_post_ring_dies_at_its_damping_rate(void **state) {
     (void)state;
     cs_loader *l;
-    cs_model *m = example_model("roadside/rs5", NULL, &l);
+    cs_model *m;
     cs_error err;
-    cs_state *s = cs_state_create(m, &err);
-    if (!s) fail_msg("%s", err.message);
+    cs_state *s = at_rest("roadside/rs5", &l, &m);
     const int p = 22;
     const double from[2] = {0.56, 0.684}, width = 0.016;
     double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
