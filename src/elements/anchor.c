@@ -44,8 +44,7 @@ static double kinetic_energy(const cs_anchor_model *am, const cs_anchor_state *a
 
 /* The acceleration the step from the last commit to u over h gives (the HHT-alpha update). */
 static double acceleration_to(const cs_anchor_state *as, int k, double u, double h) {
-    return (u - as->u_commit[k] - h * as->rate[k]) / (CS_HHT_BETA * h * h) -
-           (0.5 / CS_HHT_BETA - 1.0) * as->acc[k];
+    return cs_hht_acceleration(u, as->u_commit[k], as->rate[k], as->acc[k], h);
 }
 
 void cs_anchor_derive(const cs_anchor_def *d, double gravity, cs_anchor_model *am) {
@@ -174,8 +173,7 @@ void cs_anchor_residual(const cs_model *model, const cs_state *s, int a, const d
     r[0] = f[0] - q[0], r[1] = f[1] - q[1];
     if (s->h > 0.0 && s->h < HUGE_VAL)
         for (int k = 0; k < 2; k++)
-            r[k] -= (am->mass * acceleration_to(as, k, as->u[k], s->h) + CS_HHT_ALPHA * as->net[k]) /
-                    (1.0 + CS_HHT_ALPHA);
+            r[k] -= cs_hht_inertia(am->mass, acceleration_to(as, k, as->u[k], s->h), as->net[k]);
 }
 
 static void residual(const cs_model *model, const cs_state *s, const cs_rows *rows, const cs_slot *u,
@@ -202,7 +200,7 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
     for (int i = 0; i < 2; i++)
         for (int j = 0; j < 2; j++)
             k[2 * i + j] = -am->stiffness * (t * ((i == j) - e[i] * e[j]) + slope * e[i] * e[j]);
-    double inertia = am->mass / (CS_HHT_BETA * s->h * s->h * (1.0 + CS_HHT_ALPHA));
+    double inertia = cs_hht_inertia_slope(am->mass, s->h);
     k[0] -= inertia, k[3] -= inertia;
     for (int i = 0; i < 2; i++)
         for (int j = 0; j < 2; j++)
@@ -251,7 +249,7 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
             for (int k = 0; k < 2; k++) {
                 double du = as->u[k] - as->u_commit[k], acc = acceleration_to(as, k, as->u[k], s->h);
                 work += 0.5 * (as->net[k] + net[k]) * du;
-                as->rate[k] += s->h * ((1.0 - CS_HHT_GAMMA) * as->acc[k] + CS_HHT_GAMMA * acc);
+                as->rate[k] = cs_hht_rate(as->rate[k], as->acc[k], acc, s->h);
                 as->acc[k] = acc;
             }
             s->e_post_damping += work - (kinetic_energy(am, as) - kinetic_before);

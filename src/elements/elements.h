@@ -15,6 +15,21 @@
 #define CS_HHT_ALPHA (-0.1)
 #define CS_HHT_BETA (0.25 * (1.0 - CS_HHT_ALPHA) * (1.0 - CS_HHT_ALPHA))
 #define CS_HHT_GAMMA (0.5 - CS_HHT_ALPHA)
+/* The acceleration a step of the method gives, from x_c, v_c and a_c at the last commit to x over h,
+ * and the rate it ends with. */
+static inline double cs_hht_acceleration(double x, double x_c, double v_c, double a_c, double h) {
+    return (x - x_c - h * v_c) / (CS_HHT_BETA * h * h) - (0.5 / CS_HHT_BETA - 1.0) * a_c;
+}
+static inline double cs_hht_rate(double v_c, double a_c, double a, double h) {
+    return v_c + h * ((1.0 - CS_HHT_GAMMA) * a_c + CS_HHT_GAMMA * a);
+}
+/* The inertial force m a of the method's residual, (m a + alpha F_c) / (1 + alpha), and its slope on x. */
+static inline double cs_hht_inertia(double m, double a, double f_c) {
+    return (m * a + CS_HHT_ALPHA * f_c) / (1.0 + CS_HHT_ALPHA);
+}
+static inline double cs_hht_inertia_slope(double m, double h) {
+    return m / (CS_HHT_BETA * h * h * (1.0 + CS_HHT_ALPHA));
+}
 /* The material damping of a post's elastic turn, as fractions of critical (post.c, model.c): welded steel
  * at working stress and sand at a cyclic shear strain of 1e-4 (0.01%), the least of each
  * (docs/assumptions.md).

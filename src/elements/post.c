@@ -134,16 +134,14 @@ static void damped_resistance(const cs_post_model *pm, const cs_post_state *ps, 
 
 /* The angular acceleration the step from the last commit to `tilt` over h gives (HHT-alpha). */
 static double acceleration_to(const cs_post_state *ps, int k, double tilt, double h) {
-    return (tilt - ps->tilt_commit[k] - h * ps->rate[k]) / (CS_HHT_BETA * h * h) -
-           (0.5 / CS_HHT_BETA - 1.0) * ps->acc[k];
+    return cs_hht_acceleration(tilt, ps->tilt_commit[k], ps->rate[k], ps->acc[k], h);
 }
 
 static void subtract_inertia(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double h,
                              double *r) {
     if (!cs_post_swings(pm, h)) return;
     for (int k = 0; k < 2; k++)
-        r[k] -= (pm->inertia * acceleration_to(ps, k, tilt[k], h) + CS_HHT_ALPHA * ps->net[k]) /
-                (1.0 + CS_HHT_ALPHA);
+        r[k] -= cs_hht_inertia(pm->inertia, acceleration_to(ps, k, tilt[k], h), ps->net[k]);
 }
 
 /* At a commit: the rate and acceleration the swing ended with, and what the method took out of it: the
@@ -166,9 +164,9 @@ static void commit_swing(const cs_model *model, cs_state *s, int p) {
                work = 0.0;
         for (int k = 0; k < 2; k++) {
             double da = ps->tilt[k] - ps->tilt_commit[k], acc = acceleration_to(ps, k, ps->tilt[k], s->h);
-            double q = (pm->inertia * acc + CS_HHT_ALPHA * net[k]) / (1.0 + CS_HHT_ALPHA);
+            double q = cs_hht_inertia(pm->inertia, acc, net[k]);
             work += 0.5 * (net[k] + q) * da;
-            ps->rate[k] += s->h * ((1.0 - CS_HHT_GAMMA) * ps->acc[k] + CS_HHT_GAMMA * acc);
+            ps->rate[k] = cs_hht_rate(ps->rate[k], ps->acc[k], acc, s->h);
             ps->acc[k] = acc, net[k] = q;
         }
         double kinetic = 0.5 * pm->inertia * (ps->rate[0] * ps->rate[0] + ps->rate[1] * ps->rate[1]);
@@ -197,7 +195,7 @@ static void resistance_slope(const cs_model *model, const cs_state *s, int p, do
         k[0] = k[3] = -slope, k[1] = k[2] = 0.0;
     }
     if (cs_post_swings(pm, s->h)) {
-        double inertia = pm->inertia / (CS_HHT_BETA * s->h * s->h * (1.0 + CS_HHT_ALPHA));
+        double inertia = cs_hht_inertia_slope(pm->inertia, s->h);
         k[0] -= inertia, k[3] -= inertia;
     }
     ground_stop(pm, ps, ps->tilt, NULL, k);
