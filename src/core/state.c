@@ -145,9 +145,10 @@ static void hash_bytes(unsigned long long *h, const void *data, size_t n) {
 }
 
 /* FNV-1a over the bytes of every number that evolves: the vehicle, each cable's path, plastic strain,
- * status, engagement and face contacts, each post's tilt, plastic rotation, swing rate, status, what
- * pushes a struck one and its slide out of its footing, the rails, each anchor's movement, its rate and
- * acceleration and status, the ledger and the events (field by field: no struct padding). */
+ * status, engagement and face contacts, each post's tilt, plastic rotation, swing (rate, acceleration,
+ * net moment, damper), status, what pushes a struck one and its slide out of its footing (with its
+ * rate and net pull), the rails, each anchor's movement, its rate, acceleration, net force
+ * and status, the ledger and the events (field by field: no struct padding). */
 unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
     unsigned long long h = CS_FNV1A64_BASIS;
     hash_bytes(&h, &s->t, sizeof s->t);
@@ -174,9 +175,13 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
         hash_bytes(&h, &ps->pull, sizeof ps->pull);
         hash_bytes(&h, &ps->pull_plastic, sizeof ps->pull_plastic);
         hash_bytes(&h, &ps->pull_rate, sizeof ps->pull_rate);
+        hash_bytes(&h, &ps->pull_net, sizeof ps->pull_net);
         hash_bytes(&h, ps->tilt, sizeof ps->tilt);
         hash_bytes(&h, ps->plastic, sizeof ps->plastic);
         hash_bytes(&h, ps->rate, sizeof ps->rate);
+        hash_bytes(&h, ps->acc, sizeof ps->acc);
+        hash_bytes(&h, ps->net, sizeof ps->net);
+        hash_bytes(&h, ps->damper, sizeof ps->damper);
         hash_bytes(&h, &ps->push, sizeof ps->push);
     }
     hash_bytes(&h, s->rail_plastic,
@@ -190,6 +195,7 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
         hash_bytes(&h, &as->slide, sizeof as->slide);
         hash_bytes(&h, as->rate, sizeof as->rate);
         hash_bytes(&h, as->acc, sizeof as->acc);
+        hash_bytes(&h, as->net, sizeof as->net);
     }
     /* the ledger's numbers, not its size (the hash of a state is the same as before cs_energy had one) */
     hash_bytes(&h, &s->energy.vehicle_kinetic, sizeof s->energy - offsetof(cs_energy, vehicle_kinetic));
