@@ -678,10 +678,10 @@ static double damping_ratio(const world *w) {
 
 /* A post with mass turned at a steady rate w through its elastic range onto its plastic plateau (its tilt
  * set each step, no ropes): while elastic its spring and damper carry k e + c w, the damper's share c w
- * to round-off; on the plateau the slider turns and the damper's share dies away, by (c/h) / (k + c/h) a
- * step from the plateau's second step on (1e-9: the spring and damper share the capacity, k e + (c/h)(e -
- * e_c) = q, not the spring alone at once), to under 1e-6 of the capacity, the moment held at the capacity:
- * a folding post resists with its capacity alone. */
+ * to round-off, and the post's moment is their sum; on the plateau the slider turns and the damper's share
+ * dies away, by (c/h) / (k + c/h) a step from the plateau's second step on (1e-9: the spring and damper share
+ * the capacity, k e + (c/h)(e - e_c) = q, not the spring alone at once), to under 1e-6 of the capacity, the
+ * moment held at the capacity: a folding post resists with its capacity alone. */
 static void a_folding_post_gains_nothing_from_its_damper(void **state) {
     (void)state;
     world *w = make_world(0.0, 5.0);
@@ -699,9 +699,10 @@ static void a_folding_post_gains_nothing_from_its_damper(void **state) {
         s->h = h;
         ps->tilt[1] += rate * h;
         cs_post_commit(w->model, s, 0);
-        if (!ps->yielded)
+        if (!ps->yielded) {
             elastic_share = ps->damper[1];
-        else if (on < 2)
+            CHECK_REL(ps->moment[1], pm->k_rot * (ps->tilt[1] - ps->plastic[1]) + ps->damper[1], 1e-12);
+        } else if (on < 2)
             plateau[on++] = ps->damper[1];
     }
     printf("damper c %.4g N m s/rad: %.1f N m at %.1f rad/s while elastic, %.3g N m after %d steps on the "

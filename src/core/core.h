@@ -173,7 +173,7 @@ typedef struct cs_post_state {
     cs_post_status status;
     double tilt[2];        /* rotation vector: direction and angle the top moves, rad */
     double plastic[2];     /* plastic part of the rotation (committed), rad */
-    double moment[2];      /* resisting generalised moment, N m */
+    double moment[2];      /* resisting generalised moment (spring and damper, at most the capacity), N m */
     double shear, axial;   /* N */
     int yielded;           /* hinge or soil event already reported */
     int captured;          /* struck by the vehicle: pushed over by it, off the cable paths */

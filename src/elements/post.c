@@ -286,7 +286,8 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     s->e_post_damping +=
         0.5 * ((ps->damper[0] + d[0]) * (e[0] - was[0]) + (ps->damper[1] + d[1]) * (e[1] - was[1]));
     ps->damper[0] = d[0], ps->damper[1] = d[1];
-    cs_post_resistance(pm, ps, ps->tilt, ps->moment);
+    for (int k = 0; k < 2; k++) /* what the post holds against its ropes: its spring's and damper's */
+        ps->moment[k] = pm->k_rot * e[k] + d[k];
     if (ps->captured) {
         /* the horizontal push on a post leaning by theta has the component push sin(theta) along
          * the post, out of the ground: what pulls a short post out (its skin friction grows as D^2,
