@@ -355,6 +355,12 @@ static int run(const cs_model_input *in, cs_model *model, const options *o, cons
     return rc;
 }
 
+/* The section properties' US units for `list`, from units.h's inch, foot and pound. */
+#define IN2 (CS_IN * CS_IN)
+#define IN3 (CS_IN * CS_IN * CS_IN)
+#define IN4 (CS_IN * CS_IN * CS_IN * CS_IN)
+#define LB_PER_FT (CS_LB / CS_FT)
+
 static int list(cs_loader *l) {
     static const char *const titles[] = {"Vehicles", "Wire ropes", "Post sections", "Rail sections"};
     if (cs_loader_data_dir(l)[0]) printf("Parts library: %s\n\n", cs_loader_data_dir(l));
@@ -377,15 +383,13 @@ static int list(cs_loader *l) {
                        d.rope.nominal_strength / CS_KIP, docs[i]);
             else if (k == CS_PART_RAIL)
                 printf("  %-14s A %.3f in2, I %.3f in4, Fy %.0f ksi, %.2f lb/ft  %s\n", names[i],
-                       d.rail.area / 0.00064516, d.rail.inertia / 4.162314256e-07,
-                       d.rail.yield_stress / 6894757.29316836, d.rail.mass_per_length / 1.4881639435695537,
-                       docs[i]);
+                       d.rail.area / IN2, d.rail.inertia / IN4, d.rail.yield_stress / CS_KSI,
+                       d.rail.mass_per_length / LB_PER_FT, docs[i]);
             else
                 printf("  %-14s Zx %.3f in3, Ix %.3f in4, Aw %.3f in2, Fy %.0f ksi, %.2f lb/ft  %s\n",
-                       names[i], d.section.plastic_modulus / 1.6387064e-05,
-                       d.section.inertia / 4.162314256e-07, d.section.web_area / 0.00064516,
-                       d.section.yield_stress / 6894757.29316836,
-                       d.section.mass_per_length / 1.4881639435695537, docs[i]);
+                       names[i], d.section.plastic_modulus / IN3, d.section.inertia / IN4,
+                       d.section.web_area / IN2, d.section.yield_stress / CS_KSI,
+                       d.section.mass_per_length / LB_PER_FT, docs[i]);
         }
     }
     if (cs_loader_error_count(l)) {
