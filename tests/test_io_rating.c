@@ -42,7 +42,7 @@ static void speed_windows(void **state) {
     const double mph[] = {27.9, 28.0, 37.9, 38.0, 46.9, 47.0, 60.0};
     const int rating[] = {0, 30, 30, 40, 40, 50, 50};
     for (int i = 0; i < 7; i++)
-        assert_int_equal(cs_rating_speed_mph(&r, mph[i] * MPH), rating[i]);
+        assert_int_equal(cs_rating_speed_for(&r, NULL, mph[i] * MPH), rating[i]);
 }
 
 static void reference_points(void **state) {

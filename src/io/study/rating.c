@@ -113,10 +113,6 @@ int cs_rating_speed_for(const cs_rating_rules *rules, const char *vehicle_class,
     return 0;
 }
 
-int cs_rating_speed_mph(const cs_rating_rules *rules, double speed) {
-    return cs_rating_speed_for(rules, NULL, speed);
-}
-
 /* Penetration levels; a boundary value belongs to the better level (1.00 m is L3 and P1). */
 const char *cs_rating_level(cs_standard standard, double p) {
     p = round(p * 100.0) / 100.0; /* the standards state limits to the centimetre */

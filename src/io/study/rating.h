@@ -65,7 +65,6 @@ void cs_rating_text(const cs_rating *r, char *buf, size_t size);
 /* Pieces, for tests and for `cablesim rate`: the speed designation (mph) of an impact speed for a class
  * (0 if below every window the class has; NULL class: M's 30, 40 and 50), and the penetration level of a
  * measured penetration ("L3", "P2"...; NULL if none). */
-int cs_rating_speed_mph(const cs_rating_rules *rules, double speed);
 int cs_rating_speed_for(const cs_rating_rules *rules, const char *vehicle_class, double speed);
 const char *cs_rating_level(cs_standard standard, double penetration);
 
