@@ -114,7 +114,9 @@ static void judge_fall(cs_loss_scan *scan, const cs_event *events, int event_cou
     }
 }
 
-void cs_loss_scan_feed(cs_loss_scan *scan, double t, double force, const cs_event *events, int event_count) {
+/* Feed the sample (t, force) with the events up to its time. */
+static void loss_scan_feed(cs_loss_scan *scan, double t, double force, const cs_event *events,
+                           int event_count) {
     if (scan->pending)
         judge_fall(scan, events, event_count);
     else
@@ -133,7 +135,9 @@ void cs_loss_scan_feed(cs_loss_scan *scan, double t, double force, const cs_even
     if (scan->pending) scan->fall = (cs_sudden_loss){sizeof(cs_sudden_loss), t_before, t, before, force};
 }
 
-int cs_loss_scan_finish(cs_loss_scan *scan, const cs_event *events, int event_count) {
+/* The windows flagged, with all the run's events: the kept ones in found[0 .. kept), the rest counted in
+ * missed; returns kept + missed. */
+static int loss_scan_finish(cs_loss_scan *scan, const cs_event *events, int event_count) {
     if (scan->pending) judge_fall(scan, events, event_count);
     scan->open = 0;
     int kept = 0;
@@ -179,9 +183,9 @@ int cs_sudden_losses(const double *t, const double *force, int n, double step, c
     for (int j = 0; j < n; j++) {
         while (seen < event_count && events[seen].t <= t[j] + 1e-6 * step)
             seen++;
-        cs_loss_scan_feed(scan, t[j], force[j], events, seen);
+        loss_scan_feed(scan, t[j], force[j], events, seen);
     }
-    int count = cs_loss_scan_finish(scan, events, event_count);
+    int count = loss_scan_finish(scan, events, event_count);
     int kept = scan->kept < capacity ? scan->kept : capacity;
     if (capacity > 0 &&
         cs_sized_put_array(out, scan->found, sizeof *scan->found, kept, "cs_sudden_loss", err))
@@ -232,7 +236,7 @@ static void end_run(const cs_model *model, cs_state *s, cs_outcome outcome, doub
     s->outcome = outcome;
     close_decel_window(model, s);
     cs_summary *sm = &s->summary;
-    sm->sudden_loss_count = cs_loss_scan_finish(&s->loss, s->events, s->event_count);
+    sm->sudden_loss_count = loss_scan_finish(&s->loss, s->events, s->event_count);
     for (int k = 0; k < CS_SUMMARY_SUDDEN_LOSSES; k++)
         sm->sudden_losses[k] =
             k < s->loss.kept
@@ -279,7 +283,7 @@ void cs_response_update(const cs_model *model, cs_state *s) {
     cs_summary *sm = &s->summary;
     double u = v3_dot(s->vel, model->dir);
     update_decel(model, s, u);
-    cs_loss_scan_feed(&s->loss, s->t, v3_norm(s->force), s->events, s->event_count);
+    loss_scan_feed(&s->loss, s->t, v3_norm(s->force), s->events, s->event_count);
     sm->cable_count = model->cable_count;
     cs_summary_cables(model, s, sm);
     double pen = face_penetration(model, s);

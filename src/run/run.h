@@ -18,20 +18,13 @@
  * barrier solve, "Bounded work"). */
 #define CS_SOLVE_WORK 100.0
 
-/* A state's memory and its workspace, not yet set for a run (cs_state_create resets it: cs_state_reset,
- * step.c). NULL with err set if out of memory. */
-cs_state *cs_state_allocate(const cs_model *model, cs_error *err);
-
 /* ---- response parameters (response.c) ---- */
 void cs_response_update(const cs_model *model, cs_state *s);
 /* The summary's records of the model's first CS_SUMMARY_CABLES cables (cs_summary_cable), from the state. */
 void cs_summary_cables(const cs_model *model, const cs_state *s, cs_summary *sm);
-/* The sudden-loss check on samples fed one by one (cs_sudden_losses): start with a ring of `size`
- * samples (t and f), feed each with the events up to its time, finish at the end with all of them. */
+/* Start the sudden-loss check (response.c), fed a sample a step of the run, or each sample
+ * cs_sudden_losses is given: a ring of `size` samples (t and f), samples `step` apart. */
 void cs_loss_scan_start(cs_loss_scan *scan, double *t, double *f, int size, double step);
-void cs_loss_scan_feed(cs_loss_scan *scan, double t, double force, const cs_event *events, int event_count);
-/* The windows flagged, kept ones in found[0 .. kept), the rest counted in missed: kept + missed. */
-int cs_loss_scan_finish(cs_loss_scan *scan, const cs_event *events, int event_count);
 /* End the run as "did not converge": its solves have used up the budget. */
 void cs_response_give_up(const cs_model *model, cs_state *s, cs_outcome why);
 

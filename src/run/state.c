@@ -51,7 +51,9 @@ static int allocate(const cs_model *model, cs_state *s, int with_workspace) {
     return cs_system_init(model, &w->sys);
 }
 
-cs_state *cs_state_allocate(const cs_model *model, cs_error *err) {
+/* A state's memory and its workspace, not yet set for a run (cs_state_create resets it: cs_state_reset,
+ * step.c). NULL with err set if out of memory. */
+static cs_state *state_allocate(const cs_model *model, cs_error *err) {
     cs_state *s = calloc(1, sizeof *s);
     if (!s || allocate(model, s, 1) != 0) {
         cs_state_free(s);
@@ -62,7 +64,7 @@ cs_state *cs_state_allocate(const cs_model *model, cs_error *err) {
 }
 
 cs_state *cs_state_create(const cs_model *model, cs_error *err) {
-    cs_state *s = cs_state_allocate(model, err);
+    cs_state *s = state_allocate(model, err);
     if (s) cs_state_reset(model, s);
     return s;
 }
