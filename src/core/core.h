@@ -72,7 +72,7 @@ typedef struct cs_post_model {
     double moment_cap;     /* mp, or if the footing is weaker its capacity at the lever h + pivot, N m */
     double moment_scale;   /* the barrier solve's unit of moment for this post's balance, N m (model.c) */
     int soil_yields;       /* 1 if the footing is weaker than the post */
-    double shear_cap;      /* 0.6 Aw Fy, N */
+    double shear_cap;      /* 0.6 Aw Fy, N (section.c) */
     double pullout_cap;    /* N */
     double embedment;      /* the length of it in the ground that its pullout capacity holds, m */
     double pull_stiffness; /* its pull along its axis over the slip that mobilises it, N/m (post_pullout.c) */

@@ -43,6 +43,8 @@ static inline double cs_hht_inertia_slope(double m, double h) {
  * strength outside 3-10 ksi, walls not compact), written into why (size n) and returned; NULL if it can
  * or is hollow. */
 const char *cs_section_fill_problem(const cs_section_def *section, char *why, size_t n);
+/* A section's shear capacity, N: 0.6 Aw Fy (AISC), past which a post shears off at its base (post.c). */
+double cs_section_shear_capacity(const cs_section_def *section);
 
 /* ---- rope law (rope.c) ---- */
 double cs_rope_tension(const cs_rope *rope, double strain, double plastic_strain);

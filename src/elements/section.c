@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* A post section's strength and stiffness in bending about its strong axis. A hollow section yields at
- * Zx Fy and bends with E Ix. A rectangular tube filled with concrete (b wide, h deep, wall t, core
- * b_i = b - 2t by h_i = h - 2t) is taken by AISC 360-16's plastic stress distribution (I1.2a): the steel
- * at Fy in tension and compression, the concrete at 0.85 f'c in compression and none in tension. With
+/* A post section's strength and stiffness in bending about its strong axis, and its shear capacity. A hollow
+ * section yields at Zx Fy and bends with E Ix. A rectangular tube filled with concrete (b wide, h deep, wall
+ * t, core b_i = b - 2t by h_i = h - 2t) is taken by AISC 360-16's plastic stress distribution (I1.2a): the
+ * steel at Fy in tension and compression, the concrete at 0.85 f'c in compression and none in tension. With
  * the neutral axis a below the compression face (a >= t), the steel below it less the steel above it,
  * 2t (h - 2a) Fy, balances the core's compression 0.85 f'c b_i (a - t):
  *   a = (2 t h Fy + 0.85 f'c b_i t) / (4 t Fy + 0.85 f'c b_i),
@@ -40,6 +40,10 @@ double cs_section_flexural_rigidity(const cs_section_def *s) {
     double c3 = fmin(0.45 + 3.0 * (b * h - bi * hi) / (b * h), 0.9);
     double ec = 0.043 * pow(CS_CONCRETE_DENSITY, 1.5) * sqrt(s->fill_strength / 1e6) * 1e6;
     return ei + c3 * ec * bi * hi * hi * hi / 12.0;
+}
+
+double cs_section_shear_capacity(const cs_section_def *s) {
+    return 0.6 * s->web_area * s->yield_stress;
 }
 
 /* The method holds for compact walls (AISC 360-16 Table I1.1b, filled members in flexure: the flanges'

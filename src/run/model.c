@@ -481,7 +481,7 @@ static cs_model *model_create(const cs_barrier_def *barrier, const cs_vehicle_de
                compliance = bend + turn;
         pm->k_rot = lever * lever / compliance;
         double zeta = (CS_STEEL_DAMPING_RATIO * bend + CS_SOIL_DAMPING_RATIO * turn) / compliance;
-        pm->shear_cap = 0.6 * d->section.web_area * d->section.yield_stress;
+        pm->shear_cap = cs_section_shear_capacity(&d->section);
         pm->pullout_cap = cs_footing_pullout_capacity(&d->footing);
         pm->embedment = d->footing.depth;
         pm->pull_stiffness = pm->pullout_cap / CS_SHAFT_MOBILISATION;
