@@ -267,6 +267,9 @@ void cs_contact_commit(const cs_model *model, cs_state *s);
 int cs_contact_check_slip(const cs_model *model, cs_state *s);
 
 /* ---- rails (rail.c) ---- */
+/* A rail's model from its definition: its stiffness, its yield force A Fy, and its buckling load, the
+ * Euler load pi^2 E I / L^2 over the barrier's shortest span `shortest` (HUGE_VAL: none), capped at A Fy. */
+void cs_rail_derive(const cs_rail_def *d, double shortest, cs_rail_model *rm);
 /* Add the rails' generalised moment on post p at a tilt (its neighbours where they stand; axis: the axis'
  * Jacobian at that tilt) to q. */
 void cs_rail_moment(const cs_model *model, const cs_state *s, int p, const double *tilt, const double *axis,

@@ -6,7 +6,7 @@
  * Segment k of a rail joins posts k and k+1 at the rail's height z: the points a = base_k + (z + d_k)
  * axis(alpha_k) and b likewise. It is an axial bar of rest length L0 (the posts' spacing as built): its
  * force N = (EA / L0) (|b - a| - L0 - delta_p), N > 0 in tension, is capped at A Fy in tension and at the
- * Euler load pi^2 E I / L^2 (pinned at the posts, its weak axis; L the barrier's shortest spacing, model.c)
+ * Euler load pi^2 E I / L^2 (pinned at the posts, its weak axis; L the barrier's shortest spacing)
  * in compression, where it then holds that force as it stretches or shortens further (delta_p its
  * plastic, or buckled, change of length, radial return at each commit, the work booked as the rails'
  * plastic work). Its pull on post k, N u (u
@@ -19,6 +19,16 @@
 
 #include <math.h>
 #include <string.h>
+
+void cs_rail_derive(const cs_rail_def *d, double shortest, cs_rail_model *rm) {
+    rm->z = d->height;
+    rm->ea = d->modulus * d->area;
+    rm->yield_force = d->area * d->yield_stress;
+    double euler = shortest < HUGE_VAL
+                       ? 9.869604401089358 /* pi^2 */ * d->modulus * d->inertia / (shortest * shortest)
+                       : rm->yield_force;
+    rm->buckling_load = fmin(euler, rm->yield_force);
+}
 
 static int segment_acts(const cs_model *model, const cs_state *s, int k) {
     if (k < 0 || k + 1 >= model->post_count) return 0;

@@ -417,18 +417,10 @@ static cs_model *model_create(const cs_barrier_def *barrier, const cs_vehicle_de
     m->posts = calloc((size_t)(m->post_count ? m->post_count : 1), sizeof *m->posts);
     if (!m->cables || !m->posts || !m->rails) goto oom;
     for (int r = 0; r < m->rail_count; r++) {
-        const cs_rail_def *d = &barrier->rails[r];
         double shortest = HUGE_VAL;
         for (int p = 0; p + 1 < m->post_count; p++)
             shortest = fmin(shortest, barrier->posts[p + 1].x - barrier->posts[p].x);
-        cs_rail_model *rm = &m->rails[r];
-        rm->z = d->height;
-        rm->ea = d->modulus * d->area;
-        rm->yield_force = d->area * d->yield_stress;
-        double euler = shortest < HUGE_VAL
-                           ? 9.869604401089358 * d->modulus * d->inertia / (shortest * shortest)
-                           : rm->yield_force;
-        rm->buckling_load = fmin(euler, rm->yield_force);
+        cs_rail_derive(&barrier->rails[r], shortest, &m->rails[r]);
     }
 
     for (int c = 0; c < m->cable_count; c++) {
