@@ -70,7 +70,7 @@ typedef struct cs_post_model {
     double mp;    /* plastic moment Zx Fy, N m */
     double footing_moment; /* impact capacity (Eq. 21 x dynamic factor) times its load height, N m */
     double moment_cap;     /* mp, or if the footing is weaker its capacity at the lever h + pivot, N m */
-    double moment_scale;   /* the barrier solve's unit of moment for this post's balance, N m (model.c) */
+    double moment_scale;   /* the barrier solve's unit of moment for this post's balance, N m (post.c) */
     int soil_yields;       /* 1 if the footing is weaker than the post */
     double shear_cap;      /* 0.6 Aw Fy, N (section.c) */
     double pullout_cap;    /* N */
@@ -87,7 +87,7 @@ typedef struct cs_post_model {
     double lateral_release; /* a keyway bolt's or bracket's strength against a pull off its face, N */
     double face_normal; /* y of that face's outward normal while the post stands: -1 attack, +1 protected */
     double inertia;     /* rotational inertia of the post about its pivot, kg m^2 (0: massless) */
-    double damping;     /* the viscous damper beside its elastic spring, N m s/rad (post.c, model.c) */
+    double damping;     /* the viscous damper beside its elastic spring, N m s/rad (post.c) */
     cs_footing_def footing;
 } cs_post_model;
 

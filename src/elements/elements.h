@@ -30,7 +30,7 @@ static inline double cs_hht_inertia(double m, double a, double f_c) {
 static inline double cs_hht_inertia_slope(double m, double h) {
     return m / (CS_HHT_BETA * h * h * (1.0 + CS_HHT_ALPHA));
 }
-/* The material damping of a post's elastic turn, as fractions of critical (post.c, model.c): welded steel
+/* The material damping of a post's elastic turn, as fractions of critical (post.c): welded steel
  * at working stress and sand at a cyclic shear strain of 1e-4 (0.01%), the least of each
  * (docs/assumptions.md).
  * A post's spring is its bend and its footing's turn in the soil in series; it takes each one's ratio by
@@ -138,6 +138,11 @@ void cs_post_axis_at(const double *tilt, double *a);
 void cs_post_axis_jacobian(const double *tilt, double *j, double *dj);
 
 /* ---- posts and footings (post.c, footing.c) ---- */
+/* Post p's model from the barrier's definition, its cables' mean height load_height and the model's
+ * cables (derived before it): which of the post (Zx Fy) and its footing (Eq. 21 times the dynamic factor
+ * at that height) yields, the pivot and moment capacity that follow, its spring and damper, shear and
+ * pullout capacities, retainers, and its inertia and mass with its rails' share. */
+void cs_post_derive(const cs_barrier_def *b, int p, double load_height, const cs_model *m, cs_post_model *pm);
 /* Still in the barrier: standing, or down on the ground with its ropes; not ridden over, sheared or pulled
  * out. */
 static inline int cs_post_in_barrier(const cs_post_state *ps) {

@@ -7,7 +7,7 @@
  * M_cap, then rotation at constant moment (the plastic hinge of Eqs. 13-20, or the footing rotating
  * in the soil past Eq. 21); past the tilt at which its top reaches grade the ground stops it (a post
  * down keeps its ropes). k is the cantilever of Eqs. 10-11 seen at the load height h in series with
- * the footing's elastic turn in the soil (model.c, footing.c).
+ * the footing's elastic turn in the soil (cs_post_derive below, footing.c).
  * Whichever of post and footing holds the smaller pull at h yields: the post at Zx Fy about its base
  * (M_cap = Zx Fy), or the footing at P(h), turning about a pivot 2/3 of its depth down (M_cap = P(h) (h +
  * 2D/3) about that pivot, which may exceed Zx Fy while the base moment P h stays below it); the work goes
@@ -18,6 +18,89 @@
 
 #include <math.h>
 #include <string.h>
+
+/* ---- a post's model from its definition ---- */
+
+/* The length of rail post p carries: half of each span beside it. */
+static double rail_reach(const cs_barrier_def *b, int p) {
+    double x = b->posts[p].x;
+    return 0.5 *
+           ((p > 0 ? x - b->posts[p - 1].x : 0.0) + (p + 1 < b->post_count ? b->posts[p + 1].x - x : 0.0));
+}
+
+/* Rotational inertia of post p about its pivot: its steel from its top down to grade if it hinges there
+ * (pivot 0), the whole post down to the bottom of its embedment, turning with its footing, if the soil
+ * yields; and half of each rail span it holds, a point mass at the rail's height. The footing's mass is
+ * left out (docs/assumptions.md). */
+static double post_inertia(const cs_barrier_def *b, int p, double pivot) {
+    const cs_post_def *d = &b->posts[p];
+    double above = d->height + pivot, below = pivot > 0.0 ? d->footing.depth - pivot : 0.0;
+    double j = d->section.mass_per_length * (above * above * above + below * below * below) / 3.0;
+    double reach = rail_reach(b, p);
+    for (int r = 0; r < b->rail_count; r++) {
+        double lever = b->rails[r].height + pivot;
+        j += b->rails[r].mass_per_length * reach * lever * lever;
+    }
+    return j;
+}
+
+/* The mass of post p along its axis: its steel over its height and embedment and half of each rail span
+ * it holds (not its footing's concrete: a footing's input does not say whether it is concrete or the post
+ * driven in the soil). */
+static double post_mass(const cs_barrier_def *b, int p) {
+    const cs_post_def *d = &b->posts[p];
+    double mass = d->section.mass_per_length * (d->height + d->footing.depth);
+    double reach = rail_reach(b, p);
+    for (int r = 0; r < b->rail_count; r++)
+        mass += b->rails[r].mass_per_length * reach;
+    return mass;
+}
+
+void cs_post_derive(const cs_barrier_def *b, int p, double load_height, const cs_model *m,
+                    cs_post_model *pm) {
+    const cs_post_def *d = &b->posts[p];
+    pm->x = d->x;
+    pm->height = d->height;
+    pm->load_height = load_height;
+    pm->mp = cs_section_plastic_moment(&d->section);
+    pm->footing = d->footing;
+    double p_soil = cs_footing_impact_capacity(&d->footing, load_height);
+    pm->footing_moment = p_soil * load_height;
+    pm->soil_yields = pm->footing_moment < pm->mp;
+    /* a post whose footing yields turns about a point 2/3 of the embedment below grade (the paper,
+     * "Kinetic energy dissipation due to post pullout"), resisting P(h) at its lever h + 2D/3 */
+    pm->pivot = pm->soil_yields ? 2.0 * d->footing.depth / 3.0 : 0.0;
+    double lever = load_height + pm->pivot;
+    pm->moment_cap = pm->soil_yields ? p_soil * lever : pm->mp;
+    /* the solve holds a post's balance to the tolerance of this moment: its strongest rope's
+     * strength at that rope's lever, the ropes' own force unit (a post without ropes: its capacity) */
+    pm->moment_scale = pm->moment_cap;
+    for (int c = 0; c < m->cable_count; c++)
+        pm->moment_scale = fmax(pm->moment_scale, m->cables[c].rope.fu * (m->cables[c].z + pm->pivot));
+    /* the load point moves by the cantilever's bend (Eqs. 10-11: R h^3 / 3EI) plus the footing's
+     * elastic turn in the soil about 2D/3 down (R (h + 2D/3)^2 / k_soil), springs in series; k_rot
+     * is that compliance as a rotation about the pivot (lever h + pivot) */
+    double soil_lever = load_height + 2.0 * d->footing.depth / 3.0,
+           bend = load_height * load_height * load_height / (3.0 * cs_section_flexural_rigidity(&d->section)),
+           turn = soil_lever * soil_lever / cs_footing_rotational_stiffness(&d->footing, load_height),
+           compliance = bend + turn;
+    pm->k_rot = lever * lever / compliance;
+    double zeta = (CS_STEEL_DAMPING_RATIO * bend + CS_SOIL_DAMPING_RATIO * turn) / compliance;
+    pm->shear_cap = cs_section_shear_capacity(&d->section);
+    pm->pullout_cap = cs_footing_pullout_capacity(&d->footing);
+    pm->embedment = d->footing.depth;
+    pm->pull_stiffness = pm->pullout_cap / CS_SHAFT_MOBILISATION;
+    pm->rot_limit = pm->soil_yields ? d->footing.rotation_limit : d->rotation_limit;
+    pm->lie_angle = acos(pm->pivot / (d->height + pm->pivot));
+    pm->clamped = d->attachment == CS_ATTACH_CLAMPED;
+    pm->attach = d->attachment;
+    pm->release_force = cs_post_release_force(d);
+    pm->lateral_release = cs_post_lateral_release_force(d);
+    pm->face_normal = d->face == CS_FACE_PROTECTED ? 1.0 : -1.0;
+    pm->inertia = post_inertia(b, p, pm->pivot);
+    pm->damping = 2.0 * zeta * sqrt(pm->k_rot * pm->inertia);
+    pm->pull_mass = post_mass(b, p);
+}
 
 /* Whether the barrier's solve finds post p's tilt (and its pull while it slides out of its footing),
  * Newton and the fallback alike, whatever ropes it carries: a post the ropes have left still swings on its
@@ -86,7 +169,7 @@ static double ground_stop(const cs_post_model *pm, const cs_post_state *ps, cons
     return over;
 }
 
-/* The swing: a post of inertia J about its pivot (model.c) goes, over the time h since the last
+/* The swing: a post of inertia J about its pivot (cs_post_derive) goes, over the time h since the last
  * commit, by the HHT-alpha method (elements.h), as a dead-man slides (anchor.c): with Q = Q_cables -
  * Q_resist the net generalised moment,
  *   J a = (1 + alpha) Q(alpha) - alpha Q_c,   alpha = alpha_c + h w_c + h^2 ((1/2 - beta) a_c + beta a),
@@ -106,7 +189,7 @@ int cs_post_swings(const cs_post_model *pm, double h) {
  * slider turns only once that reaches the capacity, so a post folding at its capacity gains nothing
  * from the damper (de/dt = 0 on the plateau) while one ringing on its spring loses `1 - exp(-2 pi zeta /
  * sqrt(1 - zeta^2))` of its swing's amplitude a cycle (about 2 pi zeta), zeta the steel's and the soil's
- * damping by their shares of its compliance (c = 2 zeta sqrt(k J), model.c). Over the step de/dt is
+ * damping by their shares of its compliance (c = 2 zeta sqrt(k J), cs_post_derive). Over the step de/dt is
  * (e - e_c) / h, which is `alpha - alpha_c` while the slider holds, so the trial moment is
  *   k (alpha - alpha_p) + (c / h)(alpha - alpha_c),
  * returned to the capacity as the undamped one. Only a post that swings has it (not a struck one, which
@@ -648,8 +731,8 @@ int cs_post_end_waiting(const cs_model *model, cs_state *s) {
 /* ---- the post's rows of the barrier solve ----
  * Unknowns: the tilt alpha (2) (and, sliding out, the pull w: post_pullout.c, whose column the arms
  * z + d_p + w depend on). Rows: Q_cables(alpha) - Q_resist(alpha) - J (alpha - alpha_c - h w_c) / h^2,
- * in units of the post's moment_scale (its strongest rope's strength at that rope's lever, model.c), so
- * that one tolerance is one force everywhere. */
+ * in units of the post's moment_scale (its strongest rope's strength at that rope's lever, cs_post_derive),
+ * so that one tolerance is one force everywhere. */
 static void residual(const cs_model *model, const cs_state *s, const cs_rows *rows, const cs_slot *u,
                      double *r) {
     double q[2];

@@ -13,7 +13,7 @@
  * the unit vector from a to b), and -N u on post k+1, enter their moment balances through each post's
  * axis Jacobian: Q = (z + d) J^T F, as a cable's pull does (post.c). A segment acts while both its posts
  * stand and neither has been struck by the face; a post's failure ends it, its stored energy released.
- * Half of each segment's steel swings with each of its posts (model.c). */
+ * Half of each segment's steel swings with each of its posts (post.c). */
 #include "core/vec3.h"
 #include "elements/rows.h"
 

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* Building the immutable model: check every definition, then derive what the step needs
- * (rope breakpoints, post capacities, tyre springs, the start pose). */
+/* Building the immutable model: check every definition, then derive what the step needs (rope
+ * breakpoints, tyre springs, the start pose; each post's, rail's and anchor's model by its element's own
+ * file: cs_post_derive, cs_rail_derive, cs_anchor_derive). */
 #include "core/vec3.h"
 #include "run/run.h"
 #include "run/sized.h"
@@ -348,41 +349,6 @@ static double critical_step(const cs_model *m, const cs_barrier_def *b) {
     return 2.0 * sqrt(mass / k);
 }
 
-/* The length of rail post p carries: half of each span beside it. */
-static double rail_reach(const cs_barrier_def *b, int p) {
-    double x = b->posts[p].x;
-    return 0.5 *
-           ((p > 0 ? x - b->posts[p - 1].x : 0.0) + (p + 1 < b->post_count ? b->posts[p + 1].x - x : 0.0));
-}
-
-/* Rotational inertia of post p about its pivot: its steel from its top down to grade if it hinges there
- * (pivot 0), the whole post down to the bottom of its embedment, turning with its footing, if the soil
- * yields; and half of each rail span it holds, a point mass at the rail's height. The footing's mass is
- * left out (docs/assumptions.md). */
-static double post_inertia(const cs_barrier_def *b, int p, double pivot) {
-    const cs_post_def *d = &b->posts[p];
-    double above = d->height + pivot, below = pivot > 0.0 ? d->footing.depth - pivot : 0.0;
-    double j = d->section.mass_per_length * (above * above * above + below * below * below) / 3.0;
-    double reach = rail_reach(b, p);
-    for (int r = 0; r < b->rail_count; r++) {
-        double lever = b->rails[r].height + pivot;
-        j += b->rails[r].mass_per_length * reach * lever * lever;
-    }
-    return j;
-}
-
-/* The mass of post p along its axis: its steel over its height and embedment and half of each rail span
- * it holds (not its footing's concrete: a footing's input does not say whether it is concrete or the post
- * driven in the soil). */
-static double post_mass(const cs_barrier_def *b, int p) {
-    const cs_post_def *d = &b->posts[p];
-    double mass = d->section.mass_per_length * (d->height + d->footing.depth);
-    double reach = rail_reach(b, p);
-    for (int r = 0; r < b->rail_count; r++)
-        mass += b->rails[r].mass_per_length * reach;
-    return mass;
-}
-
 static cs_model *model_create(const cs_barrier_def *barrier, const cs_vehicle_def *vehicle,
                               const cs_scenario_def *scenario, cs_error *err);
 
@@ -444,49 +410,7 @@ static cs_model *model_create(const cs_barrier_def *barrier, const cs_vehicle_de
         mean_z += m->cables[c].z / m->cable_count;
     if (m->cable_count == 0) mean_z = vehicle->face_bottom > 0.05 ? vehicle->face_bottom : 0.05;
     for (int p = 0; p < m->post_count; p++) {
-        const cs_post_def *d = &barrier->posts[p];
-        cs_post_model *pm = &m->posts[p];
-        pm->x = d->x;
-        pm->height = d->height;
-        pm->load_height = mean_z;
-        pm->mp = cs_section_plastic_moment(&d->section);
-        pm->footing = d->footing;
-        double p_soil = cs_footing_impact_capacity(&d->footing, mean_z);
-        pm->footing_moment = p_soil * mean_z;
-        pm->soil_yields = pm->footing_moment < pm->mp;
-        /* a post whose footing yields turns about a point 2/3 of the embedment below grade (the paper,
-         * "Kinetic energy dissipation due to post pullout"), resisting P(h) at its lever h + 2D/3 */
-        pm->pivot = pm->soil_yields ? 2.0 * d->footing.depth / 3.0 : 0.0;
-        double lever = mean_z + pm->pivot;
-        pm->moment_cap = pm->soil_yields ? p_soil * lever : pm->mp;
-        /* the solve holds a post's balance to the tolerance of this moment: its strongest rope's
-         * strength at that rope's lever, the ropes' own force unit (a post without ropes: its capacity) */
-        pm->moment_scale = pm->moment_cap;
-        for (int c = 0; c < m->cable_count; c++)
-            pm->moment_scale = fmax(pm->moment_scale, m->cables[c].rope.fu * (m->cables[c].z + pm->pivot));
-        /* the load point moves by the cantilever's bend (Eqs. 10-11: R h^3 / 3EI) plus the footing's
-         * elastic turn in the soil about 2D/3 down (R (h + 2D/3)^2 / k_soil), springs in series; k_rot
-         * is that compliance as a rotation about the pivot (lever h + pivot) */
-        double soil_lever = mean_z + 2.0 * d->footing.depth / 3.0,
-               bend = mean_z * mean_z * mean_z / (3.0 * cs_section_flexural_rigidity(&d->section)),
-               turn = soil_lever * soil_lever / cs_footing_rotational_stiffness(&d->footing, mean_z),
-               compliance = bend + turn;
-        pm->k_rot = lever * lever / compliance;
-        double zeta = (CS_STEEL_DAMPING_RATIO * bend + CS_SOIL_DAMPING_RATIO * turn) / compliance;
-        pm->shear_cap = cs_section_shear_capacity(&d->section);
-        pm->pullout_cap = cs_footing_pullout_capacity(&d->footing);
-        pm->embedment = d->footing.depth;
-        pm->pull_stiffness = pm->pullout_cap / CS_SHAFT_MOBILISATION;
-        pm->rot_limit = pm->soil_yields ? d->footing.rotation_limit : d->rotation_limit;
-        pm->lie_angle = acos(pm->pivot / (d->height + pm->pivot));
-        pm->clamped = d->attachment == CS_ATTACH_CLAMPED;
-        pm->attach = d->attachment;
-        pm->release_force = cs_post_release_force(d);
-        pm->lateral_release = cs_post_lateral_release_force(d);
-        pm->face_normal = d->face == CS_FACE_PROTECTED ? 1.0 : -1.0;
-        pm->inertia = post_inertia(barrier, p, pm->pivot);
-        pm->damping = 2.0 * zeta * sqrt(pm->k_rot * pm->inertia);
-        pm->pull_mass = post_mass(barrier, p);
+        cs_post_derive(barrier, p, mean_z, m, &m->posts[p]);
     }
     cs_anchor_derive(&barrier->start_anchor, scenario->gravity, &m->anchors[0]);
     cs_anchor_derive(&barrier->end_anchor, scenario->gravity, &m->anchors[1]);

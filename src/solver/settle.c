@@ -9,7 +9,7 @@
  * the tilts of the posts within `reach` of it along the barrier (the rails tie neighbours; a span joins
  * the posts at its ends, which on a line that skips posts are further apart), so posts 2 reach + 1 apart
  * share no row and are perturbed together: 2 (2 reach + 1) evaluations of F a Jacobian, 6 on a line of
- * posts every rope and rail visits. Residuals are scaled by each post's moment unit (model.c), as the
+ * posts every rope and rail visits. Residuals are scaled by each post's moment unit (post.c), as the
  * barrier solve's, and solved to 1e-12 of it.
  *
  * A post that the pretension would bend past its elastic limit (a weak end post under a heavy pretension)
