@@ -47,6 +47,9 @@ const char *cs_section_fill_problem(const cs_section_def *section, char *why, si
 double cs_section_shear_capacity(const cs_section_def *section);
 
 /* ---- rope law (rope.c) ---- */
+/* A rope's law from its definition (EA, Fu, the end of the elastic slope T1 and its strain, the second slope,
+ * the strains at Fu and at the break) and its weight per length under gravity g. */
+void cs_rope_derive(const cs_rope_def *d, double g, cs_rope *r);
 double cs_rope_tension(const cs_rope *rope, double strain, double plastic_strain);
 double cs_rope_elastic_energy(const cs_rope *rope, double tension, double material);
 
@@ -233,6 +236,9 @@ double cs_attachment_slot_open(const cs_post_model *pm, double z);
 int cs_attachment_check_release(const cs_model *model, cs_state *s, int p);
 
 /* ---- vehicle (vehicle.c) ---- */
+/* The vehicle's model from its definition under gravity g: the tyres' contact points, springs (each
+ * carrying its share of the axle load at its static deflection) and dampers, the inverse inertias. */
+void cs_vehicle_derive(const cs_vehicle_def *v, double g, cs_vehicle_model *vm);
 void cs_vehicle_face_point(const cs_model *model, const cs_state *s, double crush, double y_body,
                            double z_body, double *world);
 /* Corner k of the outline (CS_CORNERS) at body height z_body, in the world (the front ones crush back),

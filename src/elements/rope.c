@@ -12,6 +12,17 @@
 #include <math.h>
 #include <string.h>
 
+void cs_rope_derive(const cs_rope_def *d, double g, cs_rope *r) {
+    r->ea = d->modulus * d->area;
+    r->fu = d->nominal_strength;
+    r->t1 = d->elastic_limit_ratio * r->fu;
+    r->e1 = r->t1 / r->ea;
+    r->k2 = d->secondary_modulus_ratio * r->ea;
+    r->e2 = cs_rope_strain_at_strength(d);
+    r->e_break = d->breaking_strain;
+    r->w = d->mass_per_length * g;
+}
+
 /* Backbone: elastic slope EA to T1, secondary slope to Fu, then constant Fu (plastic). */
 static double rope_backbone(const cs_rope *r, double e) {
     if (e <= r->e1) return r->ea * e;

@@ -18,6 +18,24 @@
 
 #include <math.h>
 
+void cs_vehicle_derive(const cs_vehicle_def *v, double g, cs_vehicle_model *vm) {
+    vm->def = *v;
+    double a = v->cg_to_front_axle, b = v->wheelbase - a;
+    double axle_load[2] = {v->mass * g * b / v->wheelbase, v->mass * g * a / v->wheelbase};
+    for (int i = 0; i < 4; i++) {
+        int rear = i >= 2;
+        double side = (i % 2 == 0) ? 0.5 : -0.5; /* left wheels first */
+        v3_set(vm->wheel[i], rear ? -b : a, side * v->track, -v->cg_height);
+        double n = 0.5 * axle_load[rear];
+        vm->tyre_k[i] = n / v->tyre_static_deflection;
+        double m_share = g > 0.0 ? n / g : 0.25 * v->mass;
+        vm->tyre_c[i] = 2.0 * v->tyre_damping_ratio * sqrt(vm->tyre_k[i] * m_share);
+        if (g == 0.0) vm->tyre_k[i] = vm->tyre_c[i] = 0.0;
+    }
+    for (int i = 0; i < 3; i++)
+        vm->inv_inertia[i] = 1.0 / v->inertia[i];
+}
+
 #define CS_TYRE_VREG 0.05 /* m/s: slip speed over which tyre friction builds up to mu N */
 
 static void body_to_world(const cs_state *s, const double *body, double *world) {

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* Building the immutable model: check every definition, then derive what the step needs (rope
- * breakpoints, tyre springs, the start pose; each post's, rail's and anchor's model by its element's own
- * file: cs_post_derive, cs_rail_derive, cs_anchor_derive). */
+/* Building the immutable model: check every definition, then derive what the step needs: each element's
+ * model by its own file (cs_rope_derive, cs_post_derive, cs_rail_derive, cs_anchor_derive,
+ * cs_vehicle_derive), the cables' end strengths, the start pose, the budgets and the largest stable step. */
 #include "core/vec3.h"
 #include "run/run.h"
 #include "run/sized.h"
@@ -299,35 +299,6 @@ static int check_scenario(const cs_scenario_def *s, cs_error *err) {
     return 0;
 }
 
-static void derive_rope(const cs_rope_def *d, double g, cs_rope *r) {
-    r->ea = d->modulus * d->area;
-    r->fu = d->nominal_strength;
-    r->t1 = d->elastic_limit_ratio * r->fu;
-    r->e1 = r->t1 / r->ea;
-    r->k2 = d->secondary_modulus_ratio * r->ea;
-    r->e2 = cs_rope_strain_at_strength(d);
-    r->e_break = d->breaking_strain;
-    r->w = d->mass_per_length * g;
-}
-
-static void derive_vehicle(const cs_vehicle_def *v, double g, cs_vehicle_model *vm) {
-    vm->def = *v;
-    double a = v->cg_to_front_axle, b = v->wheelbase - a;
-    double axle_load[2] = {v->mass * g * b / v->wheelbase, v->mass * g * a / v->wheelbase};
-    for (int i = 0; i < 4; i++) {
-        int rear = i >= 2;
-        double side = (i % 2 == 0) ? 0.5 : -0.5; /* left wheels first */
-        v3_set(vm->wheel[i], rear ? -b : a, side * v->track, -v->cg_height);
-        double n = 0.5 * axle_load[rear];
-        vm->tyre_k[i] = n / v->tyre_static_deflection;
-        double m_share = g > 0.0 ? n / g : 0.25 * v->mass;
-        vm->tyre_c[i] = 2.0 * v->tyre_damping_ratio * sqrt(vm->tyre_k[i] * m_share);
-        if (g == 0.0) vm->tyre_k[i] = vm->tyre_c[i] = 0.0;
-    }
-    for (int i = 0; i < 3; i++)
-        vm->inv_inertia[i] = 1.0 / v->inertia[i];
-}
-
 /* Largest stable step of the vehicle against the stiffest span a cable can offer it: half the
  * closest support spacing, all cables in parallel (explicit integration: dt < 2 / omega). */
 static double critical_step(const cs_model *m, const cs_barrier_def *b) {
@@ -395,7 +366,7 @@ static cs_model *model_create(const cs_barrier_def *barrier, const cs_vehicle_de
         cm->z = d->height;
         cm->pretension = d->pretension;
         cm->mu_post = d->post_friction;
-        derive_rope(&d->rope, scenario->gravity, &cm->rope);
+        cs_rope_derive(&d->rope, scenario->gravity, &cm->rope);
         cm->hole_strength = d->hole_efficiency * cm->rope.fu;
         cm->diameter = d->rope.diameter > 0.0 ? d->rope.diameter : sqrt(4.0 * d->rope.area / CS_PI);
         for (int k = 0; k < 2; k++) {
@@ -415,7 +386,7 @@ static cs_model *model_create(const cs_barrier_def *barrier, const cs_vehicle_de
     cs_anchor_derive(&barrier->start_anchor, scenario->gravity, &m->anchors[0]);
     cs_anchor_derive(&barrier->end_anchor, scenario->gravity, &m->anchors[1]);
     m->scenario = *scenario;
-    derive_vehicle(vehicle, scenario->gravity, &m->vehicle);
+    cs_vehicle_derive(vehicle, scenario->gravity, &m->vehicle);
 
     double dt_crit = critical_step(m, barrier);
     if (scenario->dt > dt_crit) {
