@@ -184,7 +184,7 @@ static void exit_angle(list *l, const cs_roadside_test *t, const cs_summary *s) 
         not_judged(l, "M", name, "the vehicle did not leave the barrier on the traffic side");
         return;
     }
-    double lim = 0.6 * t->angle / CS_DEG;
+    double lim = cs_roadside_exit_angle_limit_deg(t);
     int d = apart(s->exit_angle_deg, lim, 1);
     snprintf(add(l, "M", name, cs_roadside_read(t, s).exit_angle_within ? CS_VERDICT_PASS : CS_VERDICT_FAIL)
                  ->detail,

@@ -279,6 +279,10 @@ int cs_roadside_tests(const char *standard, int level, const char *name, cs_road
     return n;
 }
 
+double cs_roadside_exit_angle_limit_deg(const cs_roadside_test *test) {
+    return 0.6 * test->angle / CS_DEG;
+}
+
 cs_roadside_result cs_roadside_read(const cs_roadside_test *test, const cs_summary *summary) {
     cs_roadside_result r;
     memset(&r, 0, sizeof r);
@@ -288,6 +292,7 @@ cs_roadside_result cs_roadside_read(const cs_roadside_test *test, const cs_summa
     r.working_width_m = summary->working_width_m;
     r.exit_speed_mps = cs_outcome_exits(summary->outcome) ? summary->exit_speed_mps : -1.0;
     r.exit_angle_deg = r.exit_speed_mps >= 0.0 ? summary->exit_angle_deg : 0.0;
-    r.exit_angle_within = r.redirected && r.exit_angle_deg < 0.6 * test->angle / CS_DEG; /* "less than" */
+    r.exit_angle_within =
+        r.redirected && r.exit_angle_deg < cs_roadside_exit_angle_limit_deg(test); /* "less than" */
     return r;
 }

@@ -110,5 +110,7 @@ typedef struct cs_roadside_result {
 } cs_roadside_result;
 
 cs_roadside_result cs_roadside_read(const cs_roadside_test *test, const cs_summary *summary);
+/* NCHRP 350's preferred limit on the exit angle (criterion M): 60% of the test's impact angle, degrees. */
+double cs_roadside_exit_angle_limit_deg(const cs_roadside_test *test);
 
 #endif
