@@ -557,7 +557,8 @@ void cs_schema_walk(const char *path, cs_schema_place *out) {
     if (rc < 0) out->fault = CS_PATH_MALFORMED;
 }
 
-void cs_target_defaults(cs_target t, cs_any_def *out) {
+/* The defaults of a target struct (cs_default_*). */
+static void target_defaults(cs_target t, cs_any_def *out) {
     memset(out, 0, sizeof *out);
     switch (t) {
     case CS_T_VEHICLE:
@@ -713,7 +714,7 @@ int cs_schema_markdown(FILE *out) {
     for (size_t k = 0; k < sizeof doc_tables / sizeof doc_tables[0]; k++) {
         const cs_table *t = doc_tables[k];
         cs_any_def defaults;
-        cs_target_defaults(t->target, &defaults);
+        target_defaults(t->target, &defaults);
         fprintf(out, "\n## %s\n\n%s\n\n| key | type | default | meaning |\n| --- | --- | --- | --- |\n",
                 t->name, t->doc);
         for (int i = 0; i < t->count; i++) {

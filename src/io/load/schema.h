@@ -132,8 +132,6 @@ typedef struct cs_schema_place {
 
 /* Walk the schema along a path. */
 void cs_schema_walk(const char *path, cs_schema_place *out);
-/* The defaults of a target struct (cs_default_*). */
-void cs_target_defaults(cs_target t, cs_any_def *out);
 /* The word a model file gives a post's attachment or a cable's termination by ("through", "clips"); "?"
  * for a value that has none. */
 const char *cs_attachment_word(cs_attachment kind);

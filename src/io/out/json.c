@@ -227,7 +227,8 @@ static void jopt(cs_wout *w, json_object *obj, const char *key, double v) {
     json_object_object_add(obj, key, isfinite(v) ? wnum(w, v, key) : NULL);
 }
 
-const char *cs_flail_impact_name(cs_flail_impact k) {
+/* How a flail impact is named in summary.json: "in_run", "after_run", "none". */
+static const char *flail_impact_name(cs_flail_impact k) {
     return k == CS_FLAIL_IN_RECORD ? "in_run" : k == CS_FLAIL_AFTER_RECORD ? "after_run" : "none";
 }
 
@@ -253,13 +254,13 @@ static void occupant_risk(cs_wout *w, json_object *to, const cs_run_info *info) 
         const double cg[3] = {0, 0, 0};
         json_object_object_add(risk, "point_m",
                                jarray(w, "point_m", info->occupant_at ? info->occupant_point : cg, 3));
-        jstr(risk, "occupant_impact", cs_flail_impact_name(o->impact));
+        jstr(risk, "occupant_impact", flail_impact_name(o->impact));
         jopt(w, risk, "occupant_impact_time_s", o->t_impact);
         jnum(w, risk, "oiv_longitudinal_mps", o->oiv_x);
         jnum(w, risk, "oiv_lateral_mps", o->oiv_y);
         jnum(w, risk, "ora_longitudinal_g", o->ora_x);
         jnum(w, risk, "ora_lateral_g", o->ora_y);
-        jstr(risk, "head_impact", cs_flail_impact_name(o->thiv_impact));
+        jstr(risk, "head_impact", flail_impact_name(o->thiv_impact));
         jopt(w, risk, "thiv_time_s", o->t_thiv);
         jnum(w, risk, "thiv_mps", o->thiv);
         jnum(w, risk, "thiv_kmh", o->thiv * 3.6);

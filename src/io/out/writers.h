@@ -41,8 +41,6 @@ typedef struct cs_run_info {
 /* The ratings of a run as run into info (cs_rate_as_run): ASTM F2656 if its vehicle is one of that
  * standard's, and SD-STD-02.01 too for the 15,000-lb truck. */
 void cs_run_info_rate(cs_run_info *info, const cs_model_input *in, const cs_summary *summary);
-/* How a flail impact is named in summary.json and the terminal: "in_run", "after_run", "none". */
-const char *cs_flail_impact_name(cs_flail_impact k);
 /* The occupant risk, the roll and pitch peaks and the roadside criteria as run (if the run stands for a
  * roadside test) of a run's record and its state at the end (its events) into info. */
 void cs_run_info_motion(cs_run_info *info, const cs_model_input *in, const cs_record *rec,

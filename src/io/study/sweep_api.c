@@ -37,7 +37,10 @@ static cs_status ranks_of(const cs_sweep_def *def, cs_sweep_options *o, cs_error
     return CS_OK;
 }
 
-cs_status cs_sweep_options_of(const cs_sweep_def *given, cs_sweep_options *o, cs_error *err) {
+/* A public def (cablesim/sweep.h) as options into o (zeroed first; its strings and ranks are def's). CS_OK,
+ * or CS_ERR_INVALID with err filled (too many sets or folders, runs out of range, ranks that cannot be
+ * taken). */
+static cs_status options_of(const cs_sweep_def *given, cs_sweep_options *o, cs_error *err) {
     cs_sweep_def def = cs_default_sweep_def();
     if (cs_sized_take(&def, sizeof def, given, "cs_sweep_def", err) != CS_OK) return CS_ERR_INVALID;
     memset(o, 0, sizeof *o);
@@ -84,7 +87,7 @@ static cs_status study(const cs_sweep_def *def, int check, cs_sweep **out, cs_er
     if (cs_sized_take(&full, sizeof full, def, "cs_sweep_def", err) != CS_OK) return CS_ERR_INVALID;
     cs_sweep_options *o = malloc(sizeof *o);
     if (!o) return cs_status_set(err, CS_ERR_MEMORY, "out of memory");
-    cs_status st = cs_sweep_options_of(&full, o, err);
+    cs_status st = options_of(&full, o, err);
     if (st != CS_OK) return free(o), st;
     if (check) o->ranks = cs_default_sweep_ranks(), o->progress = NULL, o->closing = NULL;
     int rc = check ? cs_sweep_study_check(o, out) : cs_sweep_study_keep(o, full.command, out);

@@ -26,7 +26,9 @@ enum { EXIT_RUN = CS_SWEEP_EXIT_RUN, EXIT_BAD = CS_SWEEP_EXIT_USAGE };
 
 /* ---- the spec and the folder ---- */
 
-cs_sweep_spec *cs_sweep_study_spec(cs_sweep_options *o, int loud) {
+/* The spec of o->spec with the command line's changes (--set, --runs, --seed, --netcdf, --allow-path);
+ * its problems are in its errors. NULL if memory is short (said on stderr when loud). */
+static cs_sweep_spec *study_spec(cs_sweep_options *o, int loud) {
     cs_error err;
     cs_units *units = cs_units_open(&err);
     if (!units) {
@@ -68,7 +70,8 @@ void cs_sweep_say(cs_sweep_options *o, const char *fmt, ...) {
     if (!o->why[0]) snprintf(o->why, sizeof o->why, "%.511s", text);
 }
 
-void cs_sweep_print_errors(const cs_sweep_spec *spec, cs_sweep_options *o) {
+/* The spec's errors on o->errors (NULL: none); the first into o->why. */
+static void print_errors(const cs_sweep_spec *spec, cs_sweep_options *o) {
     for (int i = 0; o->errors && i < spec->error_count; i++)
         cs_term_text(o->errors, spec->errors[i]), fputc('\n', o->errors);
     if (spec->error_count > 0 && !o->why[0]) /* the first, for a cs_error */
@@ -364,12 +367,12 @@ static cs_sweep *handle(cs_sweep_spec *spec, double *x, cs_sweep_result *all, lo
  * exit status, its problems printed (rank 0). */
 static int spec_checked(cs_sweep_options *o, int rank, cs_sweep_spec **spec, double **x, long *n) {
     *x = NULL, *n = 0;
-    if (!(*spec = cs_sweep_study_spec(o, rank == 0))) return EXIT_RUN;
+    if (!(*spec = study_spec(o, rank == 0))) return EXIT_RUN;
     if ((*spec)->error_count == 0 && !(*x = cs_sweep_samples(*spec, n)))
         cs_sweep_error(*spec, 0, 0, "out of memory for %ld runs", (*spec)->runs);
     if (rank == 0 && (*spec)->error_count == 0) cs_sweep_check(*spec, *x);
     if (!(*spec)->error_count) return 0;
-    if (rank == 0) cs_sweep_print_errors(*spec, o);
+    if (rank == 0) print_errors(*spec, o);
     return EXIT_BAD;
 }
 

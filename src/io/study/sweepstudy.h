@@ -43,11 +43,6 @@ typedef struct cs_sweep_options {
     char set_text[CS_SWEEP_MAX_SETS][1100]; /* --t-end and --dt as sets */
 } cs_sweep_options;
 
-/* The spec of o->spec with the command line's changes (--set, --runs, --seed, --netcdf, --allow-path);
- * its problems are in its errors. NULL if memory is short (said on stderr when loud). */
-cs_sweep_spec *cs_sweep_study_spec(cs_sweep_options *o, int loud);
-/* The spec's errors on f (NULL: none), and their count; the first into o->why. */
-void cs_sweep_print_errors(const cs_sweep_spec *spec, cs_sweep_options *o);
 /* Say a problem: "cablesim sweep: " and it on o->errors (if any), the first one kept in o->why. */
 void cs_sweep_say(cs_sweep_options *o, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
@@ -70,9 +65,5 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, cs_sweep **kee
 /* Check the study of o without running it (cablesim/sweep.h's cs_sweep_check_study): the exit status as
  * cs_sweep_study_keep's, and its runs' inputs into *keep. */
 int cs_sweep_study_check(cs_sweep_options *o, cs_sweep **keep);
-/* A public def (cablesim/sweep.h) as options into o (zeroed first; its strings and ranks are def's). CS_OK,
- * or CS_ERR_INVALID with err filled (too many sets or folders, runs out of range, ranks that cannot be
- * taken). */
-cs_status cs_sweep_options_of(const cs_sweep_def *def, cs_sweep_options *o, cs_error *err);
 
 #endif
