@@ -69,6 +69,7 @@ check "nchrp-350 3-11 alone with the 2000P" '[ "$(grep -cE "^  3-11 2000P +100 k
 # after its end is not known); D and K are never passed
 check "nchrp-350 3-11 lists A D F L K M with verdicts" '[ "$(grep -oE "^       [A-Z] +(pass|FAIL|not judged) " <<<"$out" | awk "{print \$1}" | tr -d "\n")" = "ADFLKM" ]'
 check "a run at its time limit: A not judged" 'grep -qE "^       A +not judged .*time_limit" <<<"$out"'
+check "a run at its time limit: its level's line says it ended mid-collision, not that the vehicle got through" 'grep -qxF "3-11: not known to be contained in every test (a run ended mid-collision: time_limit)" <<<"$out"'
 check "D and K listed as not judged, no pass implied" 'grep -qE "^3-11: not judged \(the model cannot tell; no pass implied\): A, D, F, L, K, M$" <<<"$out"'
 check "a run at its time limit: F and L within their limits so far, not judged" 'grep -qE "^       F +not judged .*over the run, which ended before the collision did" <<<"$out" && grep -qE "^       L +not judged .*\(a lower bound: the run ended, time_limit, before the collision did\)$" <<<"$out"'
 out=$("$cs" rate examples/roadside/rs1.yaml --standard mash --test 3-11 2>&1)
