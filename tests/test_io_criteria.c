@@ -228,6 +228,33 @@ static void test_as_run(void **state) {
     }
     v.mass = 2000; /* head-on: no roadside test */
     assert_int_equal(cs_roadside_test_as_run(&v, 27.6, 90 * DEG, &t), 0);
+    /* a car or pickup test at the level of the run's speed: 50, 70, 100 km/h (each side of 60 and 85) */
+    struct {
+        double mass, kmh;
+        const char *standard, *name;
+    } levels[] = {{2000, 50, "nchrp-350", "1-11"},   {2000, 59.9, "nchrp-350", "1-11"},
+                  {2000, 60, "nchrp-350", "2-11"},   {2000, 70, "nchrp-350", "2-11"},
+                  {2000, 84.9, "nchrp-350", "2-11"}, {2000, 85, "nchrp-350", "3-11"},
+                  {820, 70, "nchrp-350", "2-10"},    {2270, 70, "mash", "2-11"},
+                  {1100, 50, "mash", "1-10"},        {10000, 50, "mash", "4-12"}};
+    for (size_t i = 0; i < sizeof levels / sizeof levels[0]; i++) {
+        v.mass = levels[i].mass;
+        assert_int_equal(cs_roadside_test_as_run(&v, levels[i].kmh / 3.6, 25 * DEG, &t), 1);
+        assert_string_equal(t.standard, levels[i].standard);
+        assert_string_equal(t.name, levels[i].name);
+    }
+    /* a level-2 pickup test has level 3's criteria */
+    cs_summary s = redirected(10.0);
+    cs_occupant_risk o = {0};
+    cs_test_result r = {&s, &o, NULL, 0.0, 0.0, NULL, NULL};
+    cs_criterion c[CS_CRITERIA_MAX];
+    v.mass = 2000;
+    cs_roadside_test_as_run(&v, 70 / 3.6, 25 * DEG, &t);
+    int n = cs_roadside_criteria(&t, &r, c);
+    char ids[64] = "";
+    for (int k = 0; k < n; k++)
+        snprintf(ids + strlen(ids), sizeof ids - strlen(ids), "%s%s", k ? " " : "", c[k].id);
+    assert_string_equal(ids, "A D F L K M");
 }
 
 /* A value judged against a limit never prints the same as the limit: the digits that tell them apart */

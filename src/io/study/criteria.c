@@ -312,6 +312,12 @@ int cs_roadside_test_as_run(const cs_vehicle_def *v, double speed, double angle,
             if (fabs(v->mass - mass) <= 0.05 * mass) {
                 *out = t[i];
                 out->speed = speed, out->angle = angle;
+                if (strcmp(out->name + 1, "-12") != 0) { /* x-10, x-11: the level the run's speed is */
+                    static const char *const names[3][2] = {
+                        {"1-10", "1-11"}, {"2-10", "2-11"}, {"3-10", "3-11"}};
+                    double kmh = speed * 3.6; /* nearest of the levels' 50, 70 and 100 km/h */
+                    out->name = names[kmh < 60.0 ? 0 : kmh < 85.0 ? 1 : 2][out->name[3] == '1'];
+                }
                 return 1;
             }
         }
