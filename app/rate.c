@@ -49,7 +49,8 @@ static const cs_cli rate_cli = {"rate", rate_usage};
 
 /* The tally of a test level's criteria: failed and not-judged letters, each once. */
 typedef struct criteria_tally {
-    int contained, redirected;
+    int contained, redirected, through;
+    const char *unfinished; /* how a run that ended mid-collision ended (its outcome), or NULL */
     char failed[96], not_judged[96];
 } criteria_tally;
 
@@ -116,6 +117,10 @@ static int roadside_one(cs_loader *l, const cs_model_input *in, const cs_roadsid
                 tally_add(tl->not_judged, sizeof tl->not_judged, c[k].id);
         }
         if (!r.contained) tl->contained = 0;
+        if (cs_outcome_through(sm.outcome))
+            tl->through = 1;
+        else if (!r.contained && !tl->unfinished)
+            tl->unfinished = cs_outcome_name(sm.outcome);
         if (!r.redirected) tl->redirected = 0;
     }
     cs_record_free(rec);
@@ -152,17 +157,22 @@ static int rate_roadside(cs_loader *l, const char *file, const char *standard, c
     }
     printf("%s against %s (impact at x = %.2f m, the %s):\n", in.name, standard, in.scenario.impact_x,
            in.scenario.impact_at_corner ? "leading front corner" : "centre of the front face");
-    criteria_tally tl = {1, 1, "", ""};
+    criteria_tally tl = {1, 1, 0, NULL, "", ""};
     int rc = 0;
     for (int k = 0; k < n && rc == 0; k++)
         rc = roadside_one(l, &in, &t[k], &tl);
     if (rc == 0) {
         const char *what = test ? test : (lv == 4 ? "TL-4" : "TL-3");
-        printf("%s: %s\n", what,
-               !tl.contained ? "NOT contained in every test (the vehicle got through)"
-               : !tl.redirected
-                   ? "contained in every test, NOT redirected in every test (the vehicle stopped)"
-                   : "contained and redirected in every test");
+        if (tl.through)
+            printf("%s: NOT contained in every test (the vehicle got through)\n", what);
+        else if (tl.unfinished) /* neither contained nor through: the run ended before the collision did */
+            printf("%s: not known to be contained in every test (a run ended mid-collision: %s)\n", what,
+                   tl.unfinished);
+        else
+            printf("%s: %s\n", what,
+                   !tl.redirected
+                       ? "contained in every test, NOT redirected in every test (the vehicle stopped)"
+                       : "contained and redirected in every test");
         if (tl.failed[0])
             printf("%s: criteria failed: %s\n", what, listed(tl.failed));
         else

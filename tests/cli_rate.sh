@@ -64,11 +64,14 @@ out=$("$cs" rate examples/roadside/rs1.yaml --standard mash --set 'scenario.t_en
 check "mash TL-3 runs 3-10 and 3-11 (exit 0)" '[ $? -eq 0 ] && [ "$(grep -cE "^  3-1[01] +(1100C|2270P) +100 km/h 25 deg .* deflection [0-9.]+ m .* working width [0-9.]+ m" <<<"$out")" -eq 2 ]'
 out=$("$cs" rate examples/roadside/rs1.yaml --standard nchrp-350 --test 3-11 --set 'scenario.t_end=0.3 s' 2>&1)
 check "nchrp-350 3-11 alone with the 2000P" '[ "$(grep -cE "^  3-11 2000P +100 km/h 25 deg" <<<"$out")" -eq 1 ]'
-# the criteria of NCHRP 350's 3-11, in order, each with a verdict; a run stopped by its time limit has A
-# not judged; D and K are never passed
+# the criteria of NCHRP 350's 3-11, in order, each with a verdict; a run stopped by its time limit (0.3 s,
+# mid-collision) has A not judged, and F and L, within their limits so far, not judged either (what comes
+# after its end is not known); D and K are never passed
 check "nchrp-350 3-11 lists A D F L K M with verdicts" '[ "$(grep -oE "^       [A-Z] +(pass|FAIL|not judged) " <<<"$out" | awk "{print \$1}" | tr -d "\n")" = "ADFLKM" ]'
 check "a run at its time limit: A not judged" 'grep -qE "^       A +not judged .*time_limit" <<<"$out"'
-check "D and K listed as not judged, no pass implied" 'grep -qE "^3-11: not judged \(the model cannot tell; no pass implied\): A, D, K, M$" <<<"$out"'
+check "a run at its time limit: its level's line says it ended mid-collision, not that the vehicle got through" 'grep -qxF "3-11: not known to be contained in every test (a run ended mid-collision: time_limit)" <<<"$out"'
+check "D and K listed as not judged, no pass implied" 'grep -qE "^3-11: not judged \(the model cannot tell; no pass implied\): A, D, F, L, K, M$" <<<"$out"'
+check "a run at its time limit: F and L within their limits so far, not judged" 'grep -qE "^       F +not judged .*over the run, which ended before the collision did" <<<"$out" && grep -qE "^       L +not judged .*\(a lower bound: the run ended, time_limit, before the collision did\)$" <<<"$out"'
 out=$("$cs" rate examples/roadside/rs1.yaml --standard mash --test 3-11 2>&1)
 check "mash 3-11 to its end: occupant risk and the exit box judged" 'grep -qE "^       occupant risk \(CG, CFC 180\): OIV [0-9.]+ / [0-9.]+ m/s" <<<"$out" && grep -qE "^       exit box +(pass|FAIL) .* \\(box 10.0 m\\)" <<<"$out" && grep -qE "^       H +(pass|FAIL) " <<<"$out"'
 # The MASH design example is test 3-11 as its model runs it: run and rate give its occupant impact at the

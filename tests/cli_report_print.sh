@@ -102,6 +102,12 @@ if plain_only "the pages in chromium: the data sheets and their prints on A4 and
     oiv=$(grep -oE "OIV [0-9.]+ m/s \([0-9.]+ ft/s\) longitudinal, [0-9.]+ m/s" "$tmp/rs1.out" | awk '{ print $2 ", " $7 }')
     check "RS1's sheet: the occupant impact velocities as the terminal gives them ($oiv m/s)" \
         '[ -n "$oiv" ] && grep -qF "<th scope=\"row\">OIV long., lat.</th><td>$oiv m/s</td>" "$dom"'
+    # with --occupant-at the sheet says its occupant risk is a point's, the criteria the CG's; RS1's has no
+    # such row
+    "$cs" run examples/roadside/rs1.yaml -o "$tmp/rs1p" --occupant-at "30 cm,0.4 m,0.2 m" --report >/dev/null 2>&1
+    "$browser" "${flags[@]}" --dump-dom "file://$tmp/rs1p/report.html" 2>/dev/null | tr -d '\n' >"$tmp/rs1p.dom"
+    check "a sheet at a point of the vehicle says so; RS1's at the CG does not" \
+        'grep -qF "<th scope=\"row\">at a point</th><td>0.30, 0.40, 0.20 m from the CG; criteria: the CG" "$tmp/rs1p.dom" && ! grep -qF "<th scope=\"row\">at a point</th>" "$dom"'
     check "RS1's story gives the impact angle as the sheet does (25.7 deg)" \
         'grep -q "<th scope=\"row\">angle</th><td>25.7°</td>" "$dom" && grep -q "at 25.7° to the barrier line" "$dom"'
     check "RS1's sheet: five sequential pictures, top and side" '[ "$(grep -o "<svg[^>]*class=\"pic top\"" "$dom" | wc -l)" = 5 ] && [ "$(grep -o "<svg[^>]*class=\"pic side\"" "$dom" | wc -l)" = 5 ]'

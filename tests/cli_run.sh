@@ -213,6 +213,9 @@ oiv() { grep -oE "\"oiv_longitudinal_mps\":[0-9.e-]+,\"oiv_lateral_mps\":[0-9.e-
 check "--occupant-at the CG: the CG's occupant risk" '[ -n "$(oiv "$j")" ] && [ "$(oiv "$j")" = "$(oiv "$tmp/rs1cg/summary.json")" ] && grep -qF "\"point_m\":[0,0,0]" "$tmp/rs1cg/summary.json"'
 out=$("$cs" run examples/roadside/rs1.yaml -o "$tmp/rs1p" --occupant-at "30 cm,0.4 m,0.2 m" 2>&1)
 check "--occupant-at a point: written with its place" 'grep -qF "\"point_m\":[0.3,0.4,0.2]" "$tmp/rs1p/summary.json" && grep -qE "^  occupant risk at     x 0.300 m, y 0.400 m, z 0.200 m from the CG" <<<"$out"'
+# the criteria judge the CG's occupant risk, as the standards take it, whatever point the run reports
+crit_l() { grep -oE "\"id\":\"L\",[^}]*" "$1"; }
+check "--occupant-at a point: its own numbers written, L judged on the CG's" '[ "$(oiv "$tmp/rs1p/summary.json")" != "$(oiv "$j")" ] && [ -n "$(crit_l "$j")" ] && [ "$(crit_l "$tmp/rs1p/summary.json")" = "$(crit_l "$j")" ]'
 out=$("$cs" run examples/roadside/rs1.yaml -o "$tmp/rs1bad" --occupant-at "0.3 m,1 kg,0" 2>&1)
 check "--occupant-at with a mass: exit 2, the reason" '[ $? -eq 2 ] && grep -qF "cablesim run: --occupant-at 0.3 m,1 kg,0: " <<<"$out" && grep -q "not of length" <<<"$out" && [ ! -e "$tmp/rs1bad" ]'
 out=$("$cs" run examples/roadside/rs1.yaml -o "$tmp/rs1bad" --occupant-at "0.3 m,1 m" 2>&1)

@@ -1,8 +1,11 @@
 /* SPDX-License-Identifier: MIT */
 /* NCHRP Report 350 and MASH criteria: which a test has, in order; each limit's edge (OIV 12.2 m/s and ORA
  * 20.49 g for MASH, 12 m/s and 20 g for NCHRP 350's L, roll 75 deg, 60% of the impact angle, the exit box's
- * 10 m); the not-judged ones never passed; the exit box's A from the vehicle's size and the wheels' path
- * extrapolated straight from the run's end against its closed form. */
+ * 10 m); the not-judged ones never passed, nor what a run ended mid-collision cannot show; the exit box's A
+ * from the vehicle's size and the wheels' path extrapolated straight from the run's end against its closed
+ * form. */
+#include <stdlib.h>
+
 #include "check.h"
 #include "out/record.h"
 #include "study/criteria.h"
@@ -225,6 +228,33 @@ static void test_as_run(void **state) {
     }
     v.mass = 2000; /* head-on: no roadside test */
     assert_int_equal(cs_roadside_test_as_run(&v, 27.6, 90 * DEG, &t), 0);
+    /* a car or pickup test at the level of the run's speed: 50, 70, 100 km/h (each side of 60 and 85) */
+    struct {
+        double mass, kmh;
+        const char *standard, *name;
+    } levels[] = {{2000, 50, "nchrp-350", "1-11"},   {2000, 59.9, "nchrp-350", "1-11"},
+                  {2000, 60, "nchrp-350", "2-11"},   {2000, 70, "nchrp-350", "2-11"},
+                  {2000, 84.9, "nchrp-350", "2-11"}, {2000, 85, "nchrp-350", "3-11"},
+                  {820, 70, "nchrp-350", "2-10"},    {2270, 70, "mash", "2-11"},
+                  {1100, 50, "mash", "1-10"},        {10000, 50, "mash", "4-12"}};
+    for (size_t i = 0; i < sizeof levels / sizeof levels[0]; i++) {
+        v.mass = levels[i].mass;
+        assert_int_equal(cs_roadside_test_as_run(&v, levels[i].kmh / 3.6, 25 * DEG, &t), 1);
+        assert_string_equal(t.standard, levels[i].standard);
+        assert_string_equal(t.name, levels[i].name);
+    }
+    /* a level-2 pickup test has level 3's criteria */
+    cs_summary s = redirected(10.0);
+    cs_occupant_risk o = {0};
+    cs_test_result r = {&s, &o, NULL, 0.0, 0.0, NULL, NULL};
+    cs_criterion c[CS_CRITERIA_MAX];
+    v.mass = 2000;
+    cs_roadside_test_as_run(&v, 70 / 3.6, 25 * DEG, &t);
+    int n = cs_roadside_criteria(&t, &r, c);
+    char ids[64] = "";
+    for (int k = 0; k < n; k++)
+        snprintf(ids + strlen(ids), sizeof ids - strlen(ids), "%s%s", k ? " " : "", c[k].id);
+    assert_string_equal(ids, "A D F L K M");
 }
 
 /* A value judged against a limit never prints the same as the limit: the digits that tell them apart */
@@ -268,9 +298,66 @@ static void verdict_digits(void **state) {
     }
 }
 
+/* A run that ended mid-collision (its time limit) after a constant 10 g deceleration held tau = 50 ms:
+ * the occupant is a tau^2 / 2 = 0.12 m along at its end, short of the flail space's 0.6 m, at a tau =
+ * 4.9 m/s. Past such an end the vehicle is not known to go on at constant velocity, so the impact the
+ * flail space finds after it is not judged (L, H, I); an impact within such a run has a known OIV and a
+ * ridedown that is a lower bound (over the limit it fails, within it is not judged); roll and pitch
+ * within 75 deg are not judged, past it they fail. The same motion in a run that stopped is judged. */
+static void unfinished_run(void **state) {
+    (void)state;
+    cs_occupant_rules rules = cs_default_occupant_rules();
+    const double dt = 1e-4, a = 10 * 9.80665, tau = 0.05;
+    int n = (int)lround(tau / dt) + 1;
+    double *buf = calloc((size_t)n * 4, sizeof *buf);
+    for (int i = 0; i < n; i++)
+        buf[i] = -a;
+    cs_vehicle_motion m = {n, dt, buf, buf + n, buf + 2 * n, buf + 3 * n};
+    cs_occupant_risk o;
+    cs_error err;
+    assert_int_equal(cs_occupant_risk_compute(&m, &rules, &o, &err), CS_OK);
+    free(buf);
+    assert_int_equal(o.impact, CS_FLAIL_AFTER_RECORD);
+    CHECK_REL(o.oiv_x, a * tau, 1e-9);
+    cs_summary s = redirected(10.0);
+    s.outcome = CS_TIME_LIMIT;
+    cs_test_result r = {&s, &o, NULL, 10 * DEG, 1 * DEG, NULL, NULL};
+    cs_criterion c[CS_CRITERIA_MAX];
+    char ids[128];
+    int k = judge("nchrp-350", "3-11", &r, c, ids, sizeof ids);
+    assert_int_equal(find(c, k, "L")->verdict, CS_VERDICT_NOT_JUDGED);
+    assert_non_null(
+        strstr(find(c, k, "L")->detail, "had not met the interior when the run ended, time_limit"));
+    assert_int_equal(find(c, k, "F")->verdict, CS_VERDICT_NOT_JUDGED);
+    assert_int_equal(verdict_of("mash", "3-11", &r, "H"), CS_VERDICT_NOT_JUDGED);
+    assert_int_equal(verdict_of("mash", "3-11", &r, "I"), CS_VERDICT_NOT_JUDGED);
+    /* stopped: the vehicle still, the occupant meets the interior at 4.9 m/s */
+    s.outcome = CS_STOPPED;
+    assert_int_equal(verdict_of("nchrp-350", "3-11", &r, "L"), CS_VERDICT_PASS);
+    assert_int_equal(verdict_of("mash", "3-11", &r, "H"), CS_VERDICT_PASS);
+    assert_int_equal(verdict_of("mash", "3-11", &r, "I"), CS_VERDICT_PASS);
+    assert_int_equal(verdict_of("mash", "3-11", &r, "F"), CS_VERDICT_PASS);
+    /* an impact within the unfinished run: OIV judged, the ridedown a lower bound */
+    s.outcome = CS_TIME_LIMIT, o.impact = CS_FLAIL_IN_RECORD, o.ora_x = 5.0;
+    assert_int_equal(verdict_of("mash", "3-11", &r, "H"), CS_VERDICT_PASS);
+    assert_int_equal(verdict_of("mash", "3-11", &r, "I"), CS_VERDICT_NOT_JUDGED);
+    assert_int_equal(verdict_of("nchrp-350", "3-11", &r, "L"), CS_VERDICT_NOT_JUDGED);
+    o.oiv_x = 12.5;
+    assert_int_equal(verdict_of("mash", "3-11", &r, "H"), CS_VERDICT_FAIL);
+    assert_int_equal(verdict_of("nchrp-350", "3-11", &r, "L"), CS_VERDICT_FAIL);
+    o.oiv_x = a * tau, o.ora_x = 21.0;
+    assert_int_equal(verdict_of("mash", "3-11", &r, "I"), CS_VERDICT_FAIL);
+    assert_int_equal(verdict_of("nchrp-350", "3-11", &r, "L"), CS_VERDICT_FAIL);
+    r.roll_peak = 80 * DEG;
+    assert_int_equal(verdict_of("nchrp-350", "3-11", &r, "F"), CS_VERDICT_FAIL);
+}
+
 int main(void) {
-    const struct CMUnitTest tests[] = {cmocka_unit_test(criteria_of_each_test), cmocka_unit_test(limits),
-                                       cmocka_unit_test(exit_box), cmocka_unit_test(test_as_run),
-                                       cmocka_unit_test(verdict_digits)};
+    const struct CMUnitTest tests[] = {cmocka_unit_test(criteria_of_each_test),
+                                       cmocka_unit_test(limits),
+                                       cmocka_unit_test(exit_box),
+                                       cmocka_unit_test(test_as_run),
+                                       cmocka_unit_test(verdict_digits),
+                                       cmocka_unit_test(unfinished_run)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

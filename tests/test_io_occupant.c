@@ -3,7 +3,8 @@
  * Butterworth magnitude of its bilinear design (and J211's nominal -3 dB at 1.667 CFC), no phase shift;
  * a constant deceleration's flail-space impact time, OIV and ORA; the impact after the record at the
  * relative velocity held; THIV on a circular path (the head's straight line seen from the turning
- * vehicle); PHD and ASI of constant accelerations; the moving-average maximum of a ramp. */
+ * vehicle); PHD and ASI of constant accelerations; the ridedown of an impact less than a window before
+ * the record's end; the moving-average maximum of a ramp. */
 #include <stdlib.h>
 
 #include "check.h"
@@ -202,8 +203,33 @@ static void window_mean(void **state) {
         x[i] = -fabs(i - 40.0);
     /* |mean| is largest in the window furthest from 40 that fits: 90..99 (mean -54.5) */
     CHECK_REL(cs_window_mean_max(x, 100, 10, 0, &at), 54.5, 1e-12);
-    assert_int_equal(cs_window_mean_max(x, 100, 10, 95, &at), 0.0);
+    /* from 95 no whole window fits: the samples past the end count as zeros, (55 + ... + 59) / 10 */
+    CHECK_REL(cs_window_mean_max(x, 100, 10, 95, &at), 28.5, 1e-12);
+    assert_int_equal(at, 95);
+    assert_int_equal(cs_window_mean_max(x, 100, 10, 100, &at), 0.0);
     assert_int_equal(at, -1);
+}
+
+/* An occupant impact less than a ridedown window before the record's end: the vehicle taken on at
+ * constant velocity past it (as for an impact after the record), so a constant deceleration a gives the
+ * ridedown a (t_end - t_impact) / 10 ms, and PHD the same share of its resultant. */
+static void impact_near_the_end(void **state) {
+    (void)state;
+    cs_occupant_rules rules = cs_default_occupant_rules();
+    const double dt = 1e-4, a = 10 * G, b = 2 * G, t = sqrt(2 * 0.6 / a), left = 0.004;
+    int n = (int)lround((t + left) / dt) + 1;
+    motion mo = constant_motion(n, dt, -a, b, 0.0, 0.0);
+    cs_occupant_risk o;
+    cs_error err;
+    assert_int_equal(cs_occupant_risk_compute(&mo.m, &rules, &o, &err), CS_OK);
+    assert_int_equal(o.impact, CS_FLAIL_IN_RECORD);
+    CHECK_REL(o.t_impact, t, 1e-4);
+    double share = ((n - 1) * dt - t) / 0.010; /* 0.4, to within a sample */
+    CHECK_ABS(o.ora_x, 10.0 * share, 10.0 * 0.011);
+    CHECK_ABS(o.ora_y, 2.0 * share, 2.0 * 0.011);
+    CHECK_ABS(o.phd, hypot(10.0, 2.0) * share, hypot(10.0, 2.0) * 0.011);
+    assert_true(o.ora_x > 3.8 && o.ora_x < 4.2);
+    free(mo.buf);
 }
 
 static void bad_motion(void **state) {
@@ -313,6 +339,7 @@ int main(void) {
                                        cmocka_unit_test(thiv_on_a_circle),
                                        cmocka_unit_test(asi_constant),
                                        cmocka_unit_test(window_mean),
+                                       cmocka_unit_test(impact_near_the_end),
                                        cmocka_unit_test(bad_motion),
                                        cmocka_unit_test(motion_of_a_record),
                                        cmocka_unit_test(motion_at_a_point)};

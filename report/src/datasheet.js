@@ -156,6 +156,10 @@ export function dataSheet(data) {
   const right = [
     block('Occupant risk', o
       ? [
+          // at a point of the vehicle (run --occupant-at), not the CG the standards and the criteria take
+          ...(o.point_m && o.point_m.some((c) => c !== 0)
+            ? [['at a point', `${o.point_m.map((c) => f(c, 2)).join(', ')} m from the CG; criteria: the CG's`]]
+            : []),
           ['OIV long., lat.', `${f(o.oiv_longitudinal_mps, 2)}, ${f(o.oiv_lateral_mps, 2)} m/s`],
           ['ORA long., lat.', `${f(o.ora_longitudinal_g, 2)}, ${f(o.ora_lateral_g, 2)} g`],
           ['THIV', `${f(o.thiv_kmh)} km/h`],

@@ -31,13 +31,19 @@ void cs_run_info_motion(cs_run_info *info, const cs_model_input *in, const cs_re
     cs_exit_box_of_record(rec, &in->vehicle, in->scenario.impact_x, &info->exit_box);
     info->exit_box.heading_back &=
         summary->outcome == CS_REDIRECTED; /* only a vehicle that left has an exit */
-    cs_test_result r = {summary,
-                        info->occupant_ok ? &info->occupant : NULL,
-                        info->occupant_error.message,
-                        info->roll_peak,
-                        info->pitch_peak,
-                        &info->exit_box,
-                        state};
+    /* the standards take the occupant risk at the CG: with --occupant-at, the criteria judge the CG's */
+    cs_occupant_risk cg;
+    cs_error cg_error = {CS_OK, ""};
+    int cg_ok = info->occupant_ok;
+    const cs_occupant_risk *judged = &info->occupant;
+    const char *why = info->occupant_error.message;
+    if (info->occupant_at) {
+        cg_ok = cs_occupant_risk_for_run(rec, summary->first_contact_time_s, NULL, &cg, &cg_error) == CS_OK;
+        judged = &cg, why = cg_error.message;
+    }
+    cs_test_result r = {
+        summary, cg_ok ? judged : NULL, why, info->roll_peak, info->pitch_peak, &info->exit_box, state,
+    };
     info->criteria_count = cs_roadside_criteria(&info->criteria_test, &r, info->criteria);
 }
 

@@ -29,7 +29,7 @@ typedef struct cs_run_info {
                         at the CG (set before cs_run_info_motion) */
     double occupant_point[3];
     int occupant_ok;           /* occupant computed; else occupant_error says why not */
-    cs_occupant_risk occupant; /* at the CG, from the first contact (study/occupant.h) */
+    cs_occupant_risk occupant; /* at the CG (or occupant_point), from the first contact (study/occupant.h) */
     cs_error occupant_error;
     double roll_peak, pitch_peak; /* largest |roll| and |pitch| of the run, rad */
     int criteria_count; /* of the roadside test the run stands for (cs_roadside_test_as_run); 0 none */

@@ -122,16 +122,39 @@ static void not_judged(list *l, const char *id, const char *name, const char *de
     snprintf(add(l, id, name, CS_VERDICT_NOT_JUDGED)->detail, sizeof(cs_criterion){0}.detail, "%s", detail);
 }
 
-/* Upright: roll and pitch at most 75 deg over the run (to the loss of contact). */
+/* Whether the run ended with the vehicle free of the barrier (redirected or through) or stopped: the
+ * motion past its end is then the constant velocity the occupant risk takes there. A run ended otherwise
+ * (its time limit, a solve that did not converge, the step limit) stopped mid-collision: what it found is
+ * a lower bound of a peak, and what comes after its end is not known. */
+static int finished(cs_outcome o) {
+    return o == CS_STOPPED || cs_outcome_exits(o);
+}
+
+/* A verdict from what is known: a value within its limit passes only if it is the whole story (complete);
+ * one over it fails even if it is a lower bound (over); unknown, neither. */
+static cs_verdict known(int ok, int complete, int over_known) {
+    return ok ? (complete ? CS_VERDICT_PASS : CS_VERDICT_NOT_JUDGED)
+              : (over_known ? CS_VERDICT_FAIL : CS_VERDICT_NOT_JUDGED);
+}
+
+/* The worse of two verdicts: a failure, else a criterion not judged, else a pass. */
+static cs_verdict worse(cs_verdict a, cs_verdict b) {
+    return a == CS_VERDICT_FAIL || b == CS_VERDICT_FAIL               ? CS_VERDICT_FAIL
+           : a == CS_VERDICT_NOT_JUDGED || b == CS_VERDICT_NOT_JUDGED ? CS_VERDICT_NOT_JUDGED
+                                                                      : CS_VERDICT_PASS;
+}
+
+/* Upright: roll and pitch at most 75 deg over the run (to its end); of a run that did not finish, only a
+ * failure is judged. */
 static void upright(list *l, const char *id, const cs_test_result *r, const char *name, const char *note) {
     double lim = 75.0 * CS_DEG;
-    cs_criterion *c =
-        add(l, id, name, r->roll_peak <= lim && r->pitch_peak <= lim ? CS_VERDICT_PASS : CS_VERDICT_FAIL);
+    int done = finished(r->summary->outcome);
+    cs_criterion *c = add(l, id, name, known(r->roll_peak <= lim && r->pitch_peak <= lim, done, 1));
     double roll = r->roll_peak / CS_DEG, pitch = r->pitch_peak / CS_DEG;
     snprintf(c->detail, sizeof c->detail,
-             "roll %.*f deg, pitch %.*f deg (limit 75) over the run; after it: not "
-             "judged%s",
-             apart(roll, 75.0, 1), roll, apart(pitch, 75.0, 1), pitch, note);
+             "roll %.*f deg, pitch %.*f deg (limit 75) over the run%s; after it: not judged%s",
+             apart(roll, 75.0, 1), roll, apart(pitch, 75.0, 1), pitch,
+             done ? "" : ", which ended before the collision did", note);
 }
 
 /* An occupant risk value against its maximum (and preferred limit, 0 if none). */
@@ -147,7 +170,10 @@ static int within(char *buf, size_t size, const char *what, double v, const char
     return v <= max;
 }
 
-/* H and I (both directions, preferred and maximum), or NCHRP 350's L (longitudinal, maximum only). */
+/* H and I (both directions, preferred and maximum), or NCHRP 350's L (longitudinal, maximum only). The
+ * occupant risk reads the motion past the run's end as constant velocity; of a run that did not finish,
+ * an occupant impact after its end is not known, and the ridedown found is a lower bound (over the limit
+ * it fails, within it it is not judged). */
 static void occupant(list *l, const cs_test_result *r, const char *id, double oiv_pref, double oiv_max,
                      double ora_pref, double ora_max, int longitudinal_only) {
     const cs_occupant_risk *o = r->occupant;
@@ -158,23 +184,38 @@ static void occupant(list *l, const cs_test_result *r, const char *id, double oi
         if (!longitudinal_only) not_judged(l, "I", "occupant ridedown acceleration", "no occupant risk");
         return;
     }
+    cs_outcome out = r->summary->outcome;
+    int done = finished(out), in_run = o->impact == CS_FLAIL_IN_RECORD, oiv_known = done || in_run;
+    char oiv_note[160] = "", ora_note[160] = "";
+    if (!oiv_known)
+        snprintf(oiv_note, sizeof oiv_note,
+                 " (the occupant had not met the interior when the run ended, %s, with the vehicle still on "
+                 "the barrier: not known)",
+                 cs_outcome_name(out));
+    if (!done && in_run)
+        snprintf(ora_note, sizeof ora_note, " (a lower bound: the run ended, %s, before the collision did)",
+                 cs_outcome_name(out));
+    else if (!done)
+        snprintf(ora_note, sizeof ora_note, "%s", oiv_note);
+    else if (o->impact == CS_FLAIL_AFTER_RECORD)
+        snprintf(ora_note, sizeof ora_note, " (the occupant's impact comes after the run's end)");
     char a[128], b[128], c2[128], d[128];
     if (longitudinal_only) {
-        int ok = within(a, sizeof a, "OIV", o->oiv_x, "m/s", 0.0, oiv_max) &
-                 within(b, sizeof b, "ORA", o->ora_x, "g", 0.0, ora_max);
-        snprintf(add(l, id, oname, ok ? CS_VERDICT_PASS : CS_VERDICT_FAIL)->detail,
-                 sizeof(cs_criterion){0}.detail, "longitudinal %s; %s", a, b);
+        int oiv_ok = within(a, sizeof a, "OIV", o->oiv_x, "m/s", 0.0, oiv_max);
+        int ora_ok = within(b, sizeof b, "ORA", o->ora_x, "g", 0.0, ora_max);
+        cs_verdict v = worse(known(oiv_ok, oiv_known, oiv_known), known(ora_ok, done, done || in_run));
+        snprintf(add(l, id, oname, v)->detail, sizeof(cs_criterion){0}.detail, "longitudinal %s; %s%s", a, b,
+                 ora_note);
         return;
     }
     int ok = within(a, sizeof a, "longitudinal", o->oiv_x, "m/s", oiv_pref, oiv_max) &
              within(b, sizeof b, "lateral", o->oiv_y, "m/s", oiv_pref, oiv_max);
-    snprintf(add(l, id, oname, ok ? CS_VERDICT_PASS : CS_VERDICT_FAIL)->detail,
-             sizeof(cs_criterion){0}.detail, "%s; %s", a, b);
+    snprintf(add(l, id, oname, known(ok, oiv_known, oiv_known))->detail, sizeof(cs_criterion){0}.detail,
+             "%s; %s%s", a, b, oiv_note);
     ok = within(c2, sizeof c2, "longitudinal", o->ora_x, "g", ora_pref, ora_max) &
          within(d, sizeof d, "lateral", o->ora_y, "g", ora_pref, ora_max);
-    snprintf(add(l, "I", "occupant ridedown acceleration", ok ? CS_VERDICT_PASS : CS_VERDICT_FAIL)->detail,
-             sizeof(cs_criterion){0}.detail, "%s; %s%s", c2, d,
-             o->impact == CS_FLAIL_AFTER_RECORD ? " (the occupant's impact comes after the run's end)" : "");
+    snprintf(add(l, "I", "occupant ridedown acceleration", known(ok, done, done || in_run))->detail,
+             sizeof(cs_criterion){0}.detail, "%s; %s%s", c2, d, ora_note);
 }
 
 /* NCHRP 350's M: exit angle under 60% of the impact angle, at the (last) loss of contact (a preference). */
@@ -271,6 +312,12 @@ int cs_roadside_test_as_run(const cs_vehicle_def *v, double speed, double angle,
             if (fabs(v->mass - mass) <= 0.05 * mass) {
                 *out = t[i];
                 out->speed = speed, out->angle = angle;
+                if (strcmp(out->name + 1, "-12") != 0) { /* x-10, x-11: the level the run's speed is */
+                    static const char *const names[3][2] = {
+                        {"1-10", "1-11"}, {"2-10", "2-11"}, {"3-10", "3-11"}};
+                    double kmh = speed * 3.6; /* nearest of the levels' 50, 70 and 100 km/h */
+                    out->name = names[kmh < 60.0 ? 0 : kmh < 85.0 ? 1 : 2][out->name[3] == '1'];
+                }
                 return 1;
             }
         }

@@ -59,7 +59,9 @@ int cs_roadside_criteria(const cs_roadside_test *test, const cs_test_result *r, 
 
 /* The roadside test a run as run stands for: the first of NCHRP Report 350's and then MASH's tests whose
  * vehicle (its mass the number in its name: 2000P, 2270P) the run's is within 5% by mass, impacted at an
- * angle under 45 deg; its speed and angle the run's. Returns 1 and fills out, or 0 if none. */
+ * angle under 45 deg; its speed and angle the run's. A car or pickup test is named at the test level
+ * whose speed (50, 70 or 100 km/h: levels 1, 2 and 3) is nearest the run's: 2-11 for a 2000P at 70 km/h.
+ * Returns 1 and fills out, or 0 if none. */
 int cs_roadside_test_as_run(const cs_vehicle_def *v, double speed, double angle, cs_roadside_test *out);
 
 /* "pass", "FAIL", "not judged". */

@@ -60,13 +60,12 @@ int cs_cfc_filter(double cfc, double dt, const double *x, double *y, int n) {
 double cs_window_mean_max(const double *x, int n, int w, int from, int *at) {
     double best = 0.0, sum = 0.0;
     *at = -1;
-    if (w < 1 || from < 0 || from + w > n) return 0.0;
-    for (int i = from; i < from + w; i++)
+    if (w < 1 || from < 0 || from >= n) return 0.0;
+    for (int i = from; i < from + w && i < n; i++)
         sum += x[i];
-    for (int i = from;; i++) {
+    for (int i = from; i < n; i++) { /* past the end, the window's missing samples are zeros */
         if (*at < 0 || fabs(sum) / w > best) best = fabs(sum) / w, *at = i;
-        if (i + w >= n) break;
-        sum += x[i + w] - x[i];
+        sum += (i + w < n ? x[i + w] : 0.0) - x[i];
     }
     return best;
 }
@@ -111,18 +110,18 @@ static cs_flail_impact crossed_after(const rel_sample *e, int last, double dt, c
     return CS_FLAIL_AFTER_RECORD;
 }
 
-/* The largest resultant of the x and y means over windows of w samples from index from on. */
+/* The largest resultant of the x and y means over windows of w samples from index from on, a window
+ * running past the end with zeros there. */
 static double resultant_mean_max(const double *x, const double *y, int n, int w, int from, int *at) {
     double best = 0.0, sx = 0.0, sy = 0.0;
     *at = -1;
-    if (w < 1 || from < 0 || from + w > n) return 0.0;
-    for (int i = from; i < from + w; i++)
+    if (w < 1 || from < 0 || from >= n) return 0.0;
+    for (int i = from; i < from + w && i < n; i++)
         sx += x[i], sy += y[i];
-    for (int i = from;; i++) {
+    for (int i = from; i < n; i++) { /* past the end, zeros (cs_window_mean_max) */
         double r = hypot(sx, sy) / w;
         if (*at < 0 || r > best) best = r, *at = i;
-        if (i + w >= n) break;
-        sx += x[i + w] - x[i], sy += y[i + w] - y[i];
+        sx += (i + w < n ? x[i + w] : 0.0) - x[i], sy += (i + w < n ? y[i + w] : 0.0) - y[i];
     }
     return best;
 }

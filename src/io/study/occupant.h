@@ -29,8 +29,10 @@ int cs_cfc_coefficients(double cfc, double dt, cs_cfc_coeffs *c);
 int cs_cfc_filter(double cfc, double dt, const double *x, double *y, int n);
 
 /* ---- moving averages ---- */
-/* The largest |mean| of x over any window of w samples starting at index from or later (the window's
- * start index into *at; -1 and 0 if no window fits). */
+/* The largest |mean| of x over any window of w samples starting at index from or later and before n;
+ * a window running past the end takes the samples past it as zeros (the vehicle at constant velocity
+ * after its record, as an occupant impact after the record takes it). The window's start index into *at;
+ * -1 and 0 if from is not in the series. */
 double cs_window_mean_max(const double *x, int n, int w, int from, int *at);
 
 /* ---- occupant risk ---- */
