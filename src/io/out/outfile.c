@@ -487,10 +487,15 @@ static void end_aside(cs_outdir *out) {
 
 /* ---- the manifest ---- */
 
+/* The first line of every manifest cablesim writes, and has written: a file of that name that does not
+ * begin with it is not one. */
+#define MANIFEST_HEAD "# cablesim: the files its last run wrote in this folder"
+
 /* The earlier run's manifest into out->prev (none: empty), each listed file checked against its size
  * and hash. Lines that name no file inside the folder are skipped: a manifest never sends a removal
- * outside. */
-static cs_status read_manifest(cs_outdir *out, cs_error *err) {
+ * outside. A file of that name that does not begin as cablesim's do is the user's: kept, and the folder
+ * refused, even with force (the commit writes its manifest there), whose name the message gives. */
+static cs_status read_manifest(cs_outdir *out, const char *force, cs_error *err) {
     char path[PATH_SIZE];
     full_path(out, CS_OUT_MANIFEST, path, sizeof path);
     int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK); /* a FIFO: no wait for a writer */
@@ -514,6 +519,18 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
         return st;
     }
     char line[512];
+    if (!fgets(line, sizeof line, f) || strncmp(line, MANIFEST_HEAD, sizeof MANIFEST_HEAD - 1) != 0) {
+        fclose(f);
+        return cs_error_set(err, CS_ERR_IO,
+                            "%s: not a manifest of cablesim's (a file of yours): it is kept, and the "
+                            "folder cannot hold cablesim's beside it%s%s: move it away, or write elsewhere",
+                            path, force ? ", even with " : "", force ? force : "");
+    }
+    if (!strchr(line, '\n')) { /* a first line longer than cablesim's: the rest of it is no name */
+        int c;
+        while ((c = fgetc(f)) != EOF && c != '\n') {
+        }
+    }
     int cap = 0, unnamed = 0; /* unnamed: a "written by" line that names no command, or another */
     while (fgets(line, sizeof line, f)) {
         size_t n = strcspn(line, "\n");
@@ -589,9 +606,9 @@ static cs_status write_manifest(cs_outdir *out, int both, cs_error *err) {
         return st;
     }
     fchmod(fd, (mode_t)out->mode);
-    fprintf(f, "# cablesim: the files its last run wrote in this folder, each with its size in bytes and "
-               "the 64-bit FNV-1a hash of its bytes; the next run into it removes or replaces these while "
-               "they are as written, and no other file\n");
+    fprintf(f, MANIFEST_HEAD
+            ", each with its size in bytes and the 64-bit FNV-1a hash of its bytes; the next "
+            "run into it removes or replaces these while they are as written, and no other file\n");
     fprintf(f, "# written by: cablesim %s\n", out->command);
     for (int i = 0; i < out->count; i++)
         fprintf(f, "%s\t%lld\t%016llx\n", out->names[i], out->prints[i].size, out->prints[i].hash);
@@ -736,7 +753,7 @@ cs_status cs_out_open(cs_outdir *out, const char *dir, const char *command, int 
     let_signals(&old);
     /* the manifest's files read and hashed with signals let through: a Ctrl-C is taken at once, and the
      * handler finds the folders made and the lock, all it removes */
-    if (status == CS_OK) status = read_manifest(out, err);
+    if (status == CS_OK) status = read_manifest(out, force, err);
     if (status == CS_OK) status = check_contents(out, force, err);
     if (status != CS_OK && out->lock >= 0) cs_out_abort(out);
     return status;

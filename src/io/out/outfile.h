@@ -6,11 +6,12 @@
  * lock whose holder has ended is removed and made anew; a file of that name with any other text is the
  * user's, kept, and the folder refused, even with CS_OUT_FORCE) and reads the manifest an earlier run left
  * (DIR/.cablesim-manifest: every file that run wrote, one a line with its size in bytes and the 64-bit FNV-1a
- * hash of its bytes). A listed file is cablesim's only while it is as written: one changed since (its size or
- * hash differs, or it is no longer a regular file), or listed without a size and hash (a line typed in) or
- * with them in another form than cablesim writes, is the user's. A folder holding a file that is not
- * cablesim's is refused, naming it, unless CS_OUT_FORCE: then the run writes beside such files and touches
- * none of them (nor writes over one).
+ * hash of its bytes; a file of that name that does not begin as cablesim's manifests do is the user's, kept,
+ * and the folder refused, even with CS_OUT_FORCE). A listed file is cablesim's only while it is as written:
+ * one changed since (its size or hash differs, or it is no longer a regular file), or listed without a size
+ * and hash (a line typed in) or with them in another form than cablesim writes, is the user's. A folder
+ * holding a file that is not cablesim's is refused, naming it, unless CS_OUT_FORCE: then the run writes
+ * beside such files and touches none of them (nor writes over one).
  *
  * Each file is written to a unique temporary beside its name (mkstemp: ".cablesim-tmp.NAME.XXXXXX") and
  * flushed, its writing to the disk begun; cs_out_commit fsyncs them all, judges the folder again (a file
