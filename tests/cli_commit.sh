@@ -142,4 +142,14 @@ pid_of() { echo "\$(sed -n 's/^pid //p' $1/.cablesim-lock)"; } # the shell text 
 d="$tmp/sweepstart"
 at_signal=SIGINT at_break=fsync at_put 1 "shell kill -INT $(pid_of "$d")" "${sw[@]}" -o "$d"
 check "SIGINT as a sweep writes its journal, before its runs: exit 130, the folder it made removed" '[ $? -eq 130 ] && [ ! -e "$d" ] || { cat "$tmp/at.out"; find "$d"; false; }'
+
+# A signal during a sweep's commit, its runs done on two threads: the threads that ran them block SIGINT
+# and SIGTERM, so the study's handler runs in the thread that writes the folder, which takes it once the
+# files are in place: the folder holds the new study whole, no temporary or lock left.
+d="$tmp/sweepcommit"
+"$cs" "${sw[@]}" --threads 2 -o "$d" >/dev/null 2>&1
+"$cs" "${sw[@]}" --threads 2 -o "$tmp/sweepref" --set "scenario.speed=30 mph" >/dev/null 2>&1
+at_signal=SIGINT at_put 2 "shell kill -INT $(pid_of "$d")" "${sw[@]}" --threads 2 -o "$d" --set "scenario.speed=30 mph"
+check "SIGINT during a sweep's commit on two threads: exit 130 once the files are in place" '[ $? -eq 130 ] || { cat "$tmp/at.out"; false; }'
+check "the folder holds the new study whole, no temporary or lock left" 'cmp -s "$d/runs.csv" "$tmp/sweepref/runs.csv" && [ "$(listed "$d")" = "$(listed "$tmp/sweepref")" ] && [ "$(sums "$d" | grep plots/)" = "$(sums "$tmp/sweepref" | grep plots/)" ] && [ -z "$(leftovers "$d")" ] || { ls -A "$d"; cat "$d/.cablesim-manifest"; false; }'
 finish
