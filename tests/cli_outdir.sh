@@ -150,6 +150,13 @@ mkdir "$tmp/emptysub/plots"
 out=$(CABLESIM_TEST_DEV_FULL=plots/speed.png "$cs" run examples/aps3.yaml -o "$tmp/emptysub" --t-end "10 ms" --plots 2>&1)
 check "a failed run keeps an empty subfolder that was there before it" '[ $? -eq 1 ] && grep -q "plots/speed.png: No space left on device" <<<"$out" && [ -d "$tmp/emptysub/plots" ] && [ -z "$(ls -A "$tmp/emptysub/plots")" ] || { echo "$out"; false; }'
 
+# A failed run removes the folders it made, whatever the form of the path: one named with a '.' or a '..'
+# in it too.
+for o in made/. made2/a/../b; do
+    out=$(cd "$tmp" && CABLESIM_TEST_DEV_FULL=summary.json "$cs" run "$src/examples/aps3.yaml" -o "$o" --t-end "10 ms" 2>&1)
+    check "a failed run into $o removes the folders it made" '[ $? -eq 1 ] && grep -q "summary.json: No space left on device" <<<"$out" && [ ! -e "$tmp/${o%%/*}" ] || { echo "$out"; find "$tmp/${o%%/*}"; false; }'
+done
+
 # A folder holds one command's results: another command's are kept as the user's are (named in the
 # refusal, and --force writes beside them), so a validate into a run's folder does not remove the run.
 cmd="$tmp/cmd"

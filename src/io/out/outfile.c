@@ -105,17 +105,11 @@ static void remove_uncommitted(const cs_outdir *out) {
         full_path(out, out->subdirs[i], path, sizeof path);
         rmdir(path);
     }
-    if (out->lock >= 0) unlink_lock(out); /* while it is held: a run waiting on this file tries again */
-    size_t n = strlen(out->dir);
-    memcpy(path, out->dir, n + 1);
-    for (int k = 0; k < out->made; k++) {
-        while (n > 1 && path[n - 1] == '/')
-            path[--n] = '\0';
-        if (rmdir(path) != 0) break;
-        char *slash = strrchr(path, '/');
-        if (!slash) break;
-        *slash = '\0';
-        n = (size_t)(slash - path);
+    if (out->lock >= 0) unlink_lock(out);      /* while it is held: a run waiting on this file tries again */
+    for (int k = out->made - 1; k >= 0; k--) { /* the last made first: each inside those before it */
+        memcpy(path, out->dir, out->made_at[k]);
+        path[out->made_at[k]] = '\0';
+        rmdir(path);
     }
 }
 
@@ -716,12 +710,11 @@ static cs_status open_held(cs_outdir *out, const char *dir, const char *force, c
         if ((dir[i] != '/' && dir[i] != '\0') || dir[i - 1] == '/') continue;
         snprintf(part, sizeof part, "%.*s", (int)i, dir);
         if (mkdir(part, 0777) == 0) {
-            out->made++;
+            if (out->made < (int)(sizeof out->made_at / sizeof out->made_at[0]))
+                out->made_at[out->made++] = (unsigned short)i;
         } else if (errno != EEXIST) {
             cs_out_abort(out);
             return cs_error_set(err, CS_ERR_IO, "%s: %s", part, strerror(errno));
-        } else {
-            out->made = 0; /* only a trailing run of made folders is ours to remove */
         }
     }
     struct stat st;

@@ -73,7 +73,8 @@ typedef struct cs_outdir {
     cs_out_print prints[CS_OUT_MAX_FILES]; /* the files' size and hash, taken at the commit */
     cs_out_listed *prev;                   /* the earlier run's manifest */
     int prev_count;
-    int made;             /* the folders cs_out_open created: the last `made` prefixes of dir */
+    int made;                    /* how many folders cs_out_open created */
+    unsigned short made_at[128]; /* the lengths of the prefixes of dir naming them, in order */
     char subdirs[8][128]; /* the subfolders cs_out_subdir made (cs_out_abort removes them when empty) */
     int subdir_count;
     int flags;             /* CS_OUT_FORCE */
