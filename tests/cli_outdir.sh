@@ -199,6 +199,15 @@ check "validate --force writes beside the journal and keeps it" '[ $? -eq 0 ] &&
 out=$("$cs" sweep --resume "$jr" --force --quiet 2>&1)
 check "then sweep --resume reads the runs back from it" '[ $? -eq 0 ] && [ "$(wc -l <"$jr/runs.csv")" -eq 7 ] && [ ! -e "$jr/.cablesim-journal" ] || { echo "$out"; false; }'
 
+# A file of the user's named .cablesim-journal (one that does not begin as a sweep's journal does, with
+# its study's record) is not one: a sweep into its folder is refused, with --force too, and keeps it.
+uj="$tmp/userjournal"
+mkdir -p "$uj" && echo "my notes" >"$uj/.cablesim-journal"
+for force in "" --force; do
+    out=$("$cs" sweep --allow-path examples tests/sweep/grid.yaml -o "$uj" --quiet $force 2>&1)
+    check "a file of text named .cablesim-journal: sweep ${force:-without --force} refuses it and keeps it" '[ $? -eq 1 ] && grep -qF "nothing run: $uj/.cablesim-journal: not a journal of cablesim" <<<"$out" && [ "$(cat "$uj/.cablesim-journal")" = "my notes" ] && [ "$(ls -A "$uj")" = .cablesim-journal ] || { echo "$out"; ls -A "$uj"; false; }'
+done
+
 # A manifest names files inside its folder only: a line that leaves it removes nothing.
 echo outside >"$tmp/victim.txt"
 mkdir -p "$tmp/linked" && echo linked >"$tmp/linked/x.csv"

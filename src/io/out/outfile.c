@@ -1218,9 +1218,29 @@ static int write_all_sync(int fd, const char *text, size_t len) {
     return fsync(fd);
 }
 
+/* Whether the file at path, if any, may be replaced by a journal: none there, or one that begins as a
+ * journal does. 1, else 0 (a file of the user's, or not a regular file). */
+static int journal_replaceable(const char *path) {
+    char head[sizeof CS_OUT_JOURNAL_HEAD - 1];
+    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+    if (fd < 0) return errno == ENOENT;
+    struct stat st;
+    int ok = fstat(fd, &st) == 0 && S_ISREG(st.st_mode) &&
+             pread(fd, head, sizeof head, 0) == (ssize_t)sizeof head &&
+             memcmp(head, CS_OUT_JOURNAL_HEAD, sizeof head) == 0;
+    close(fd);
+    return ok;
+}
+
 cs_status cs_out_journal_start(cs_outdir *out, const char *text, size_t len, cs_error *err) {
     char tmp[PATH_SIZE], path[PATH_SIZE];
     full_path(out, CS_OUT_JOURNAL, path, sizeof path);
+    if (!journal_replaceable(path))
+        return cs_error_set(err, CS_ERR_IO,
+                            "%s: not a journal of cablesim's (a file of yours): it is kept, with or without "
+                            "force, and the sweep cannot keep its journal beside it: move it away, or write "
+                            "elsewhere",
+                            path);
     int fd = begin_aside(out, "journal", tmp);
     if (fd < 0 || fchmod(fd, (mode_t)out->mode) != 0 || write_all_sync(fd, text, len) != 0 ||
         rename(tmp, path) != 0) {

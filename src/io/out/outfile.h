@@ -46,6 +46,7 @@ enum { CS_OUT_FORCE = 1 };      /* cs_out_open: write beside files no manifest l
 #define CS_OUT_LOCK ".cablesim-lock"
 #define CS_OUT_TMP_PREFIX ".cablesim-tmp."
 #define CS_OUT_JOURNAL ".cablesim-journal"
+#define CS_OUT_JOURNAL_HEAD "{\"cablesim\":" /* how a journal's text begins: its study's record */
 
 /* A file as cablesim wrote it: its size in bytes and the 64-bit FNV-1a hash of its bytes. */
 typedef struct cs_out_print {
@@ -143,8 +144,10 @@ cs_status cs_out_fail(cs_outdir *out, cs_status status, cs_error *err);
  * outlives a kill -9, a power cut or a failed write of the outputs, and which the commit of the sweep that
  * keeps it removes (the outputs hold it all then); to another command it is another command's results.
  * cs_out_journal_start writes its first text through a temporary, fsync and rename (it replaces an earlier
- * journal whole or not at all) and keeps it open; cs_out_journal_add appends text and fsyncs. Each returns
- * CS_OK, or CS_ERR_IO with err filled ("DIR/.cablesim-journal: No space left on device"). */
+ * journal whole or not at all; a file of that name that does not begin with CS_OUT_JOURNAL_HEAD, as every
+ * journal does, is the user's: kept, and the journal refused, even with CS_OUT_FORCE) and keeps it open;
+ * cs_out_journal_add appends text and fsyncs. Each returns CS_OK, or CS_ERR_IO with err filled
+ * ("DIR/.cablesim-journal: No space left on device"). */
 cs_status cs_out_journal_start(cs_outdir *out, const char *text, size_t len, cs_error *err);
 cs_status cs_out_journal_add(cs_outdir *out, const char *text, size_t len, cs_error *err);
 /* The journal of the folder dir up to its last whole line (a line cut by a kill is dropped), malloc'ed and
