@@ -43,7 +43,8 @@ static const char sweep_usage[] =
     "written beside such files, and none of them is removed. --quiet prints nothing but errors (no\n"
     "progress, no closing lines).\n"
     "SIGINT (Ctrl-C) or SIGTERM: the runs under way finish, no other starts, and DIR gets the runs done,\n"
-    "marked partial (summary.md, summary.json \"partial\": true; exit status 130 or 143). --resume DIR\n"
+    "marked partial (summary.md, summary.json \"partial\": true; exit status 130 or 143); before the\n"
+    "runs begin, it leaves DIR as it was. --resume DIR\n"
     "reads them back from DIR/runs.csv, runs the others as those were run (the study's own --set, --t-end\n"
     "and --dt: none of the study's options is taken with --resume) and writes the whole study; it refuses\n"
     "a DIR whose study changed (spec, model, values, cablesim).\n"
@@ -301,6 +302,9 @@ int cs_sweep_command(int argc, char **argv) {
         a.def.ranks = &ranks;
         cs_sweep *study = NULL;
         cs_error err;
+        /* the program's handlers, the study's own while it runs: a signal before the runs (its folder made
+         * and locked, its journal begun) leaves the folder as it was */
+        cs_cli_catch_signals();
         cs_status st = cs_sweep_study(&a.def, &study, &err); /* its problems said on stderr */
         rc = exit_status(st, study);
         cs_sweep_free(study);

@@ -20,19 +20,23 @@ if ! gdb -q -batch -iex "set debuginfod enabled off" -ex run --args true 2>&1 | 
 fi
 # at_put N ACTION ARGS...: cablesim ARGS, stopped as it puts its N-th file in place to run the gdb command
 # ACTION ("shell ..." or "kill"); its terminal output into $tmp/at.out, its exit status the function's
-# (255: none, killed). With at_break=FUNCTION, stopped at that function's N-th call instead of renameat2's;
-# with at_env=VAR=VALUE, run with that in its environment too.
+# (128 + the signal that ended it; 255: none, killed). With at_break=FUNCTION, stopped at that function's
+# N-th call instead of renameat2's; with at_env=VAR=VALUE, run with that in its environment too; with
+# at_signal=SIG, SIG is passed to the command, which gdb does not stop at.
 at_put() {
-    local n=$1 action=$2 more=() env=()
+    local n=$1 action=$2 more=() env=() pass=()
     shift 2
     for _ in $(seq 2 "$n"); do more+=(-ex continue); done
     [ -n "${at_env:-}" ] && env=(-ex "set environment $at_env")
+    [ -n "${at_signal:-}" ] && pass=(-ex "handle $at_signal nostop noprint pass")
     # LeakSanitizer cannot run under ptrace: the sanitized build's leak check is off for these runs
-    gdb -q -batch -iex "set debuginfod enabled off" -ex "set breakpoint pending on" -ex "break ${at_break:-renameat2}" "${env[@]}" \
+    gdb -q -batch -iex "set debuginfod enabled off" "${pass[@]}" -ex "set breakpoint pending on" -ex "break ${at_break:-renameat2}" "${env[@]}" \
         -ex "set environment ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0" -ex run "${more[@]}" -ex "$action" -ex delete -ex continue \
-        -ex 'printf "exit status %d\n", $_exitcode' --args "$cs" "$@" >"$tmp/at.out" 2>&1
-    local status
+        -ex 'printf "exit status %d\n", $_exitcode' -ex 'printf "exit signal %d\n", $_exitsignal' --args "$cs" "$@" >"$tmp/at.out" 2>&1
+    local status signal
     status=$(sed -n 's/^exit status \([0-9]*\)$/\1/p' "$tmp/at.out")
+    signal=$(sed -n 's/^exit signal \([0-9]*\)$/\1/p' "$tmp/at.out")
+    [ -z "$status" ] && [ -n "$signal" ] && status=$((128 + signal))
     return "${status:-255}"
 }
 # the files of the manifest of folder $1, in the order the commit put them in place
@@ -130,4 +134,22 @@ else
     out=$("$cs" "${run[@]}" -o "$d" --t-end "12 ms" 2>&1)
     check "run again: all this run's, no temporary or lock left" '[ $? -eq 0 ] && grep -q "\"t_end_s\":0.012" "$d/summary.json" && [ "$(listed "$d" | tr "\n" " ")" = "timeseries.csv events.csv summary.json " ] && [ -z "$(leftovers "$d")" ] || { echo "$out"; false; }'
 fi
+
+# A signal as a sweep begins, before its runs (here as it writes its journal to the disk, its first fsync,
+# the folder made and locked): the sweep ends by it, its folder as it was: the folder it made removed.
+sw=(sweep --allow-path examples tests/sweep/grid.yaml --quiet)
+pid_of() { echo "\$(sed -n 's/^pid //p' $1/.cablesim-lock)"; } # the shell text of the pid holding $1's lock
+d="$tmp/sweepstart"
+at_signal=SIGINT at_break=fsync at_put 1 "shell kill -INT $(pid_of "$d")" "${sw[@]}" -o "$d"
+check "SIGINT as a sweep writes its journal, before its runs: exit 130, the folder it made removed" '[ $? -eq 130 ] && [ ! -e "$d" ] || { cat "$tmp/at.out"; find "$d"; false; }'
+
+# A signal during a sweep's commit, its runs done on two threads: the threads that ran them block SIGINT
+# and SIGTERM, so the study's handler runs in the thread that writes the folder, which takes it once the
+# files are in place: the folder holds the new study whole, no temporary or lock left.
+d="$tmp/sweepcommit"
+"$cs" "${sw[@]}" --threads 2 -o "$d" >/dev/null 2>&1
+"$cs" "${sw[@]}" --threads 2 -o "$tmp/sweepref" --set "scenario.speed=30 mph" >/dev/null 2>&1
+at_signal=SIGINT at_put 2 "shell kill -INT $(pid_of "$d")" "${sw[@]}" --threads 2 -o "$d" --set "scenario.speed=30 mph"
+check "SIGINT during a sweep's commit on two threads: exit 130 once the files are in place" '[ $? -eq 130 ] || { cat "$tmp/at.out"; false; }'
+check "the folder holds the new study whole, no temporary or lock left" 'cmp -s "$d/runs.csv" "$tmp/sweepref/runs.csv" && [ "$(listed "$d")" = "$(listed "$tmp/sweepref")" ] && [ "$(sums "$d" | grep plots/)" = "$(sums "$tmp/sweepref" | grep plots/)" ] && [ -z "$(leftovers "$d")" ] || { ls -A "$d"; cat "$d/.cablesim-manifest"; false; }'
 finish

@@ -61,7 +61,7 @@ mv "$tmp/summary.before" "$own/summary.json"
 other=$(printf 'summary.json\t5\t0123456789abcdef')
 for order in after before; do
     cp "$own/.cablesim-manifest" "$tmp/manifest.before"
-    { [ $order = after ] || echo "$other"; cat "$tmp/manifest.before"; [ $order = before ] || echo "$other"; } >"$own/.cablesim-manifest"
+    { head -n 2 "$tmp/manifest.before"; [ $order = after ] || echo "$other"; tail -n +3 "$tmp/manifest.before"; [ $order = before ] || echo "$other"; } >"$own/.cablesim-manifest"
     out=$("$cs" run examples/aps3.yaml -o "$own" --t-end "10 ms" 2>&1)
     check "a name listed twice, the file as written $order the other line: cablesim's, replaced, listed once" '[ $? -eq 0 ] && [ "$(grep -c "^summary.json	" "$own/.cablesim-manifest")" -eq 1 ] || { echo "$out"; false; }'
 done
@@ -150,6 +150,13 @@ mkdir "$tmp/emptysub/plots"
 out=$(CABLESIM_TEST_DEV_FULL=plots/speed.png "$cs" run examples/aps3.yaml -o "$tmp/emptysub" --t-end "10 ms" --plots 2>&1)
 check "a failed run keeps an empty subfolder that was there before it" '[ $? -eq 1 ] && grep -q "plots/speed.png: No space left on device" <<<"$out" && [ -d "$tmp/emptysub/plots" ] && [ -z "$(ls -A "$tmp/emptysub/plots")" ] || { echo "$out"; false; }'
 
+# A failed run removes the folders it made, whatever the form of the path: one named with a '.' or a '..'
+# in it too.
+for o in made/. made2/a/../b; do
+    out=$(cd "$tmp" && CABLESIM_TEST_DEV_FULL=summary.json "$cs" run "$src/examples/aps3.yaml" -o "$o" --t-end "10 ms" 2>&1)
+    check "a failed run into $o removes the folders it made" '[ $? -eq 1 ] && grep -q "summary.json: No space left on device" <<<"$out" && [ ! -e "$tmp/${o%%/*}" ] || { echo "$out"; find "$tmp/${o%%/*}"; false; }'
+done
+
 # A folder holds one command's results: another command's are kept as the user's are (named in the
 # refusal, and --force writes beside them), so a validate into a run's folder does not remove the run.
 cmd="$tmp/cmd"
@@ -191,6 +198,15 @@ out=$("$cs" validate -o "$jr" --only verification --force 2>&1)
 check "validate --force writes beside the journal and keeps it" '[ $? -eq 0 ] && [ -s "$jr/validation.md" ] && [ "$(sha256sum <"$jr/.cablesim-journal")" = "$journal" ] || { echo "$out"; false; }'
 out=$("$cs" sweep --resume "$jr" --force --quiet 2>&1)
 check "then sweep --resume reads the runs back from it" '[ $? -eq 0 ] && [ "$(wc -l <"$jr/runs.csv")" -eq 7 ] && [ ! -e "$jr/.cablesim-journal" ] || { echo "$out"; false; }'
+
+# A file of the user's named .cablesim-journal (one that does not begin as a sweep's journal does, with
+# its study's record) is not one: a sweep into its folder is refused, with --force too, and keeps it.
+uj="$tmp/userjournal"
+mkdir -p "$uj" && echo "my notes" >"$uj/.cablesim-journal"
+for force in "" --force; do
+    out=$("$cs" sweep --allow-path examples tests/sweep/grid.yaml -o "$uj" --quiet $force 2>&1)
+    check "a file of text named .cablesim-journal: sweep ${force:-without --force} refuses it and keeps it" '[ $? -eq 1 ] && grep -qF "nothing run: $uj/.cablesim-journal: not a journal of cablesim" <<<"$out" && [ "$(cat "$uj/.cablesim-journal")" = "my notes" ] && [ "$(ls -A "$uj")" = .cablesim-journal ] || { echo "$out"; ls -A "$uj"; false; }'
+done
 
 # A manifest names files inside its folder only: a line that leaves it removes nothing.
 echo outside >"$tmp/victim.txt"
@@ -310,9 +326,9 @@ mkdir -p "$tmp/bigman"
 truncate -s 64G "$tmp/bigman/.cablesim-manifest" # sparse: no room taken
 out=$(timeout -s KILL 20 "$cs" run examples/aps3.yaml -o "$tmp/bigman" --t-end "10 ms" 2>&1)
 check "a manifest of 64 GB (sparse) is refused at once, not read" '[ $? -eq 1 ] && grep -q "nothing run: $tmp/bigman/.cablesim-manifest: 68719476736 bytes, more than a manifest of cablesim.s holds" <<<"$out" && [ "$(stat -c %s "$tmp/bigman/.cablesim-manifest")" = 68719476736 ] || { echo "$out"; false; }'
-seq -f "f%g" 120000 >"$tmp/bigman/.cablesim-manifest"
+{ echo "# cablesim: the files its last run wrote in this folder"; seq -f "f%g" 120000; } >"$tmp/bigman/.cablesim-manifest"
 out=$(timeout -s KILL 20 "$cs" run examples/aps3.yaml -o "$tmp/bigman" --t-end "10 ms" 2>&1)
-check "one of 120,000 names is refused at once" '[ $? -eq 1 ] && grep -q "nothing run: $tmp/bigman/.cablesim-manifest: lists more than 256 files" <<<"$out" && [ "$(wc -l <"$tmp/bigman/.cablesim-manifest")" -eq 120000 ] || { echo "$out"; false; }'
+check "one of 120,000 names is refused at once" '[ $? -eq 1 ] && grep -q "nothing run: $tmp/bigman/.cablesim-manifest: lists more than 256 files" <<<"$out" && [ "$(wc -l <"$tmp/bigman/.cablesim-manifest")" -eq 120001 ] || { echo "$out"; false; }'
 
 # A file named .cablesim-lock that no cablesim made (a hard link to a file elsewhere, or a file of text) is
 # not a lock: it is refused, even with --force, and neither truncated nor removed.
@@ -325,6 +341,20 @@ mkdir -p "$tmp/textlock"
 echo "my notes" >"$tmp/textlock/.cablesim-lock"
 out=$("$cs" run examples/aps3.yaml -o "$tmp/textlock" --t-end "10 ms" 2>&1)
 check "a file of text named .cablesim-lock is refused and kept" '[ $? -eq 1 ] && grep -q "not a lock of cablesim" <<<"$out" && [ "$(cat "$tmp/textlock/.cablesim-lock")" = "my notes" ] || { echo "$out"; false; }'
+
+# A file named .cablesim-manifest that does not begin as every manifest cablesim writes does (a file of
+# notes, an empty file) is not one: the folder is refused, even with --force (the run's manifest goes at
+# that name), and the file kept.
+tm="$tmp/textmanifest"
+mkdir -p "$tm"
+echo "my notes" >"$tm/.cablesim-manifest"
+out=$("$cs" run examples/aps3.yaml -o "$tm" --t-end "10 ms" 2>&1)
+check "a file of text named .cablesim-manifest is refused and kept, nothing written" '[ $? -eq 1 ] && grep -qF "nothing run: $tm/.cablesim-manifest: not a manifest of cablesim" <<<"$out" && [ "$(cat "$tm/.cablesim-manifest")" = "my notes" ] && [ "$(ls -A "$tm")" = .cablesim-manifest ] || { echo "$out"; false; }'
+out=$("$cs" run examples/aps3.yaml -o "$tm" --t-end "10 ms" --force 2>&1)
+check "--force refuses it too, saying so, and keeps it" '[ $? -eq 1 ] && grep -q "the folder cannot hold cablesim.s beside it, even with --force" <<<"$out" && [ "$(cat "$tm/.cablesim-manifest")" = "my notes" ] && [ "$(ls -A "$tm")" = .cablesim-manifest ] || { echo "$out"; false; }'
+: >"$tm/.cablesim-manifest"
+out=$("$cs" sweep --allow-path examples tests/sweep/grid.yaml -o "$tm" --quiet 2>&1)
+check "an empty .cablesim-manifest is refused by sweep too, and kept" '[ $? -eq 1 ] && grep -qF "nothing run: $tm/.cablesim-manifest: not a manifest of cablesim" <<<"$out" && [ -f "$tm/.cablesim-manifest" ] && [ ! -s "$tm/.cablesim-manifest" ] && [ "$(ls -A "$tm")" = .cablesim-manifest ] || { echo "$out"; false; }'
 
 # A model's name never steers where the files go: results/NAME with a NAME of '..' is refused at its
 # place, and nothing is written (tests/bad/name_*.yaml: the other refusals).

@@ -19,7 +19,9 @@ extern "C" {
 #endif
 
 /** Runs worker(arg) on `threads` threads at once and returns when each has returned (OpenMP's parallel
- * region is one: `#pragma omp parallel num_threads(threads)` around the call). */
+ * region is one: `#pragma omp parallel num_threads(threads)` around the call). The worker blocks SIGINT
+ * and SIGTERM, for good, on each thread but the study's own, so that the study's handler of a signal
+ * runs in the thread that writes its folder. */
 typedef void (*cs_sweep_parallel_fn)(int threads, void (*worker)(void *arg), void *arg);
 
 /** How a study's spec draws its runs. */

@@ -105,17 +105,11 @@ static void remove_uncommitted(const cs_outdir *out) {
         full_path(out, out->subdirs[i], path, sizeof path);
         rmdir(path);
     }
-    if (out->lock >= 0) unlink_lock(out); /* while it is held: a run waiting on this file tries again */
-    size_t n = strlen(out->dir);
-    memcpy(path, out->dir, n + 1);
-    for (int k = 0; k < out->made; k++) {
-        while (n > 1 && path[n - 1] == '/')
-            path[--n] = '\0';
-        if (rmdir(path) != 0) break;
-        char *slash = strrchr(path, '/');
-        if (!slash) break;
-        *slash = '\0';
-        n = (size_t)(slash - path);
+    if (out->lock >= 0) unlink_lock(out);      /* while it is held: a run waiting on this file tries again */
+    for (int k = out->made - 1; k >= 0; k--) { /* the last made first: each inside those before it */
+        memcpy(path, out->dir, out->made_at[k]);
+        path[out->made_at[k]] = '\0';
+        rmdir(path);
     }
 }
 
@@ -487,10 +481,15 @@ static void end_aside(cs_outdir *out) {
 
 /* ---- the manifest ---- */
 
+/* The first line of every manifest cablesim writes, and has written: a file of that name that does not
+ * begin with it is not one. */
+#define MANIFEST_HEAD "# cablesim: the files its last run wrote in this folder"
+
 /* The earlier run's manifest into out->prev (none: empty), each listed file checked against its size
  * and hash. Lines that name no file inside the folder are skipped: a manifest never sends a removal
- * outside. */
-static cs_status read_manifest(cs_outdir *out, cs_error *err) {
+ * outside. A file of that name that does not begin as cablesim's do is the user's: kept, and the folder
+ * refused, even with force (the commit writes its manifest there), whose name the message gives. */
+static cs_status read_manifest(cs_outdir *out, const char *force, cs_error *err) {
     char path[PATH_SIZE];
     full_path(out, CS_OUT_MANIFEST, path, sizeof path);
     int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK); /* a FIFO: no wait for a writer */
@@ -514,6 +513,18 @@ static cs_status read_manifest(cs_outdir *out, cs_error *err) {
         return st;
     }
     char line[512];
+    if (!fgets(line, sizeof line, f) || strncmp(line, MANIFEST_HEAD, sizeof MANIFEST_HEAD - 1) != 0) {
+        fclose(f);
+        return cs_error_set(err, CS_ERR_IO,
+                            "%s: not a manifest of cablesim's (a file of yours): it is kept, and the "
+                            "folder cannot hold cablesim's beside it%s%s: move it away, or write elsewhere",
+                            path, force ? ", even with " : "", force ? force : "");
+    }
+    if (!strchr(line, '\n')) { /* a first line longer than cablesim's: the rest of it is no name */
+        int c;
+        while ((c = fgetc(f)) != EOF && c != '\n') {
+        }
+    }
     int cap = 0, unnamed = 0; /* unnamed: a "written by" line that names no command, or another */
     while (fgets(line, sizeof line, f)) {
         size_t n = strcspn(line, "\n");
@@ -589,9 +600,9 @@ static cs_status write_manifest(cs_outdir *out, int both, cs_error *err) {
         return st;
     }
     fchmod(fd, (mode_t)out->mode);
-    fprintf(f, "# cablesim: the files its last run wrote in this folder, each with its size in bytes and "
-               "the 64-bit FNV-1a hash of its bytes; the next run into it removes or replaces these while "
-               "they are as written, and no other file\n");
+    fprintf(f, MANIFEST_HEAD
+            ", each with its size in bytes and the 64-bit FNV-1a hash of its bytes; the next "
+            "run into it removes or replaces these while they are as written, and no other file\n");
     fprintf(f, "# written by: cablesim %s\n", out->command);
     for (int i = 0; i < out->count; i++)
         fprintf(f, "%s\t%lld\t%016llx\n", out->names[i], out->prints[i].size, out->prints[i].hash);
@@ -699,12 +710,11 @@ static cs_status open_held(cs_outdir *out, const char *dir, const char *force, c
         if ((dir[i] != '/' && dir[i] != '\0') || dir[i - 1] == '/') continue;
         snprintf(part, sizeof part, "%.*s", (int)i, dir);
         if (mkdir(part, 0777) == 0) {
-            out->made++;
+            if (out->made < (int)(sizeof out->made_at / sizeof out->made_at[0]))
+                out->made_at[out->made++] = (unsigned short)i;
         } else if (errno != EEXIST) {
             cs_out_abort(out);
             return cs_error_set(err, CS_ERR_IO, "%s: %s", part, strerror(errno));
-        } else {
-            out->made = 0; /* only a trailing run of made folders is ours to remove */
         }
     }
     struct stat st;
@@ -736,7 +746,7 @@ cs_status cs_out_open(cs_outdir *out, const char *dir, const char *command, int 
     let_signals(&old);
     /* the manifest's files read and hashed with signals let through: a Ctrl-C is taken at once, and the
      * handler finds the folders made and the lock, all it removes */
-    if (status == CS_OK) status = read_manifest(out, err);
+    if (status == CS_OK) status = read_manifest(out, force, err);
     if (status == CS_OK) status = check_contents(out, force, err);
     if (status != CS_OK && out->lock >= 0) cs_out_abort(out);
     return status;
@@ -1208,9 +1218,29 @@ static int write_all_sync(int fd, const char *text, size_t len) {
     return fsync(fd);
 }
 
+/* Whether the file at path, if any, may be replaced by a journal: none there, or one that begins as a
+ * journal does. 1, else 0 (a file of the user's, or not a regular file). */
+static int journal_replaceable(const char *path) {
+    char head[sizeof CS_OUT_JOURNAL_HEAD - 1];
+    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+    if (fd < 0) return errno == ENOENT;
+    struct stat st;
+    int ok = fstat(fd, &st) == 0 && S_ISREG(st.st_mode) &&
+             pread(fd, head, sizeof head, 0) == (ssize_t)sizeof head &&
+             memcmp(head, CS_OUT_JOURNAL_HEAD, sizeof head) == 0;
+    close(fd);
+    return ok;
+}
+
 cs_status cs_out_journal_start(cs_outdir *out, const char *text, size_t len, cs_error *err) {
     char tmp[PATH_SIZE], path[PATH_SIZE];
     full_path(out, CS_OUT_JOURNAL, path, sizeof path);
+    if (!journal_replaceable(path))
+        return cs_error_set(err, CS_ERR_IO,
+                            "%s: not a journal of cablesim's (a file of yours): it is kept, with or without "
+                            "force, and the sweep cannot keep its journal beside it: move it away, or write "
+                            "elsewhere",
+                            path);
     int fd = begin_aside(out, "journal", tmp);
     if (fd < 0 || fchmod(fd, (mode_t)out->mode) != 0 || write_all_sync(fd, text, len) != 0 ||
         rename(tmp, path) != 0) {

@@ -6,11 +6,12 @@
  * lock whose holder has ended is removed and made anew; a file of that name with any other text is the
  * user's, kept, and the folder refused, even with CS_OUT_FORCE) and reads the manifest an earlier run left
  * (DIR/.cablesim-manifest: every file that run wrote, one a line with its size in bytes and the 64-bit FNV-1a
- * hash of its bytes). A listed file is cablesim's only while it is as written: one changed since (its size or
- * hash differs, or it is no longer a regular file), or listed without a size and hash (a line typed in) or
- * with them in another form than cablesim writes, is the user's. A folder holding a file that is not
- * cablesim's is refused, naming it, unless CS_OUT_FORCE: then the run writes beside such files and touches
- * none of them (nor writes over one).
+ * hash of its bytes; a file of that name that does not begin as cablesim's manifests do is the user's, kept,
+ * and the folder refused, even with CS_OUT_FORCE). A listed file is cablesim's only while it is as written:
+ * one changed since (its size or hash differs, or it is no longer a regular file), or listed without a size
+ * and hash (a line typed in) or with them in another form than cablesim writes, is the user's. A folder
+ * holding a file that is not cablesim's is refused, naming it, unless CS_OUT_FORCE: then the run writes
+ * beside such files and touches none of them (nor writes over one).
  *
  * Each file is written to a unique temporary beside its name (mkstemp: ".cablesim-tmp.NAME.XXXXXX") and
  * flushed, its writing to the disk begun; cs_out_commit fsyncs them all, judges the folder again (a file
@@ -45,6 +46,7 @@ enum { CS_OUT_FORCE = 1 };      /* cs_out_open: write beside files no manifest l
 #define CS_OUT_LOCK ".cablesim-lock"
 #define CS_OUT_TMP_PREFIX ".cablesim-tmp."
 #define CS_OUT_JOURNAL ".cablesim-journal"
+#define CS_OUT_JOURNAL_HEAD "{\"cablesim\":" /* how a journal's text begins: its study's record */
 
 /* A file as cablesim wrote it: its size in bytes and the 64-bit FNV-1a hash of its bytes. */
 typedef struct cs_out_print {
@@ -72,7 +74,8 @@ typedef struct cs_outdir {
     cs_out_print prints[CS_OUT_MAX_FILES]; /* the files' size and hash, taken at the commit */
     cs_out_listed *prev;                   /* the earlier run's manifest */
     int prev_count;
-    int made;             /* the folders cs_out_open created: the last `made` prefixes of dir */
+    int made;                    /* how many folders cs_out_open created */
+    unsigned short made_at[128]; /* the lengths of the prefixes of dir naming them, in order */
     char subdirs[8][128]; /* the subfolders cs_out_subdir made (cs_out_abort removes them when empty) */
     int subdir_count;
     int flags;             /* CS_OUT_FORCE */
@@ -141,8 +144,10 @@ cs_status cs_out_fail(cs_outdir *out, cs_status status, cs_error *err);
  * outlives a kill -9, a power cut or a failed write of the outputs, and which the commit of the sweep that
  * keeps it removes (the outputs hold it all then); to another command it is another command's results.
  * cs_out_journal_start writes its first text through a temporary, fsync and rename (it replaces an earlier
- * journal whole or not at all) and keeps it open; cs_out_journal_add appends text and fsyncs. Each returns
- * CS_OK, or CS_ERR_IO with err filled ("DIR/.cablesim-journal: No space left on device"). */
+ * journal whole or not at all; a file of that name that does not begin with CS_OUT_JOURNAL_HEAD, as every
+ * journal does, is the user's: kept, and the journal refused, even with CS_OUT_FORCE) and keeps it open;
+ * cs_out_journal_add appends text and fsyncs. Each returns CS_OK, or CS_ERR_IO with err filled
+ * ("DIR/.cablesim-journal: No space left on device"). */
 cs_status cs_out_journal_start(cs_outdir *out, const char *text, size_t len, cs_error *err);
 cs_status cs_out_journal_add(cs_outdir *out, const char *text, size_t len, cs_error *err);
 /* The journal of the folder dir up to its last whole line (a line cut by a kill is dropped), malloc'ed and

@@ -319,11 +319,23 @@ typedef struct runner {
     taker *t;
     progress *p;
     pthread_mutex_t lock;
+    pthread_t writer; /* the thread of the study, which writes its folder */
 } runner;
 
 static void run_worker(void *arg) {
     runner *w = arg;
     int rank = w->ranks->rank, size = w->ranks->ranks;
+    if (!pthread_equal(pthread_self(), w->writer)) {
+        /* SIGINT and SIGTERM blocked here for good (a thread pool's threads outlive the runs): the
+         * study's handlers run in the thread that writes the folder, so that the cleanup of a signal
+         * during the outputs or their commit finds the record of that folder whole, or waits for the
+         * commit's end (outfile.h) */
+        sigset_t set;
+        sigemptyset(&set);
+        sigaddset(&set, SIGINT);
+        sigaddset(&set, SIGTERM);
+        pthread_sigmask(SIG_BLOCK, &set, NULL);
+    }
     cs_loader *loader = cs_sweep_loader(w->spec, NULL); /* one per thread (NULL: one per run) */
     for (;;) {
         pthread_mutex_lock(&w->lock);
@@ -337,7 +349,8 @@ static void run_worker(void *arg) {
         if (rank > 0) w->ranks->send_run(w->ranks->ctx, i, &w->mine[m], sizeof w->mine[m]);
         if (rank == 0) take_run(w->t, i, &w->mine[m]);
         progress_show(w->p, 0);
-        if (w->stop_after > 0 && w->p->done == w->stop_after) raise(SIGINT); /* CABLESIM_SWEEP_STOP_AFTER */
+        if (w->stop_after > 0 && w->p->done == w->stop_after) /* CABLESIM_SWEEP_STOP_AFTER */
+            kill(getpid(), SIGINT);                           /* to the process: this thread may block it */
         pthread_mutex_unlock(&w->lock);
     }
     cs_loader_free(loader);
@@ -530,7 +543,8 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, cs_sweep **kee
                 mine,
                 &t,
                 &p,
-                PTHREAD_MUTEX_INITIALIZER};
+                PTHREAD_MUTEX_INITIALIZER,
+                pthread_self()};
     if (o->parallel)
         o->parallel(threads, run_worker, &w);
     else
