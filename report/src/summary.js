@@ -146,7 +146,7 @@ export function summaryTable(data) {
       const [peakSI, peakUS] = both.force(c.peak_tension_n);
       const [workSI, workUS] = both.energy(c.work_on_vehicle_j);
       return [
-        [`Cable ${c.index}: peak tension`, `${peakSI} at t = ${fmt(c.peak_tension_time_s, 4)} s`, peakUS],
+        [`Cable ${c.index}: peak tension`, `${peakSI} at t = ${seconds(c.peak_tension_time_s)}`, peakUS],
         [`Cable ${c.index}: work on the vehicle`, `${workSI}, ${fmt(100 * c.energy_share, 1)} % of the initial kinetic energy taken`, workUS],
       ];
     }),
@@ -155,7 +155,7 @@ export function summaryTable(data) {
       const [afterSI, afterUS] = both.force(w.force_after_n);
       return [
         'Sudden loss of the barrier\'s force on the vehicle (warning)',
-        `${beforeSI} to ${afterSI} between t = ${fmt(w.t_start_s, 4)} and ${fmt(w.t_end_s, 4)} s`,
+        `${beforeSI} to ${afterSI} between t = ${seconds(w.t_start_s).slice(0, -2)} and ${seconds(w.t_end_s)}`,
         `${beforeUS} to ${afterUS}; no rope, fitting or attachment failed`,
       ];
     }),

@@ -71,13 +71,16 @@ static void events(FILE *f, const cs_state *state) {
 static void sudden_losses(FILE *f, const cs_state *state, const cs_summary *s) {
     cs_sudden_loss losses[CS_SUDDEN_LOSS_KEPT] = {{.size = sizeof losses[0]}};
     int n = cs_state_sudden_losses(state, losses, CS_SUDDEN_LOSS_KEPT, NULL);
-    for (int k = 0; k < n; k++)
+    for (int k = 0; k < n; k++) {
+        char t0[CS_TIME_TEXT_SIZE], t1[CS_TIME_TEXT_SIZE];
         fprintf(
             f,
             "  WARNING sudden loss: force on the vehicle fell from %.1f kN (%.1f kip) to %.1f kN (%.1f kip) "
-            "between %.4f and %.4f s with no rope, fitting or attachment failing\n",
+            "between %s and %s s with no rope, fitting or attachment failing\n",
             losses[k].force_before_n / 1e3, losses[k].force_before_n / CS_KIP, losses[k].force_after_n / 1e3,
-            losses[k].force_after_n / CS_KIP, losses[k].t_start_s, losses[k].t_end_s);
+            losses[k].force_after_n / CS_KIP, cs_time_text(losses[k].t_start_s, t0),
+            cs_time_text(losses[k].t_end_s, t1));
+    }
     if (s->sudden_loss_count > n)
         fprintf(f, "  WARNING sudden loss: %d more such windows\n", s->sudden_loss_count - n);
 }
@@ -186,12 +189,12 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
     for (int c = 0; c < s.cable_count; c++) {
         cs_cable_summary cb = {.size = sizeof cb};
         cs_state_cable_summary(state, c, &cb, NULL);
-        fprintf(
-            f,
-            "  cable %-2d             peak %.1f kN (%.1f kip) at %.4f s; work on the vehicle %.1f kJ (%.0f "
-            "ft-kip), %.1f%% of its kinetic energy taken\n",
-            c, cb.peak_tension_n / 1e3, cb.peak_tension_n / CS_KIP, cb.peak_tension_time_s,
-            cb.work_on_vehicle_j / 1e3, cb.work_on_vehicle_j / (CS_KIP * CS_FT), 100.0 * cb.energy_share);
+        fprintf(f,
+                "  cable %-2d             peak %.1f kN (%.1f kip) at %s s; work on the vehicle %.1f kJ (%.0f "
+                "ft-kip), %.1f%% of its kinetic energy taken\n",
+                c, cb.peak_tension_n / 1e3, cb.peak_tension_n / CS_KIP,
+                cs_time_text(cb.peak_tension_time_s, tt), cb.work_on_vehicle_j / 1e3,
+                cb.work_on_vehicle_j / (CS_KIP * CS_FT), 100.0 * cb.energy_share);
     }
     fprintf(f, "  cables broken        %d of %d\n", s.cables_broken, in->barrier.cable_count);
     fprintf(f,
