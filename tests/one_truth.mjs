@@ -24,7 +24,7 @@ class Node {
   }
 }
 globalThis.document = { createElement: (tag) => new Node(tag) };
-const { summaryTable, designTable, designationsText } = await import('../report/src/summary.js');
+const { summaryTable, designTable, designationsText, cards, decelPeak } = await import('../report/src/summary.js');
 const { timeline } = await import('../report/src/events.js');
 
 const [dir, termFile] = process.argv.slice(2);
@@ -68,6 +68,20 @@ check('peak 50-ms deceleration: terminal = report.html', decelRow[1] === `${term
 check('its time: terminal = report.html (same rounding)', decelRow[2] === `at t = ${termT} s`, `${termT} vs ${decelRow[2]}`);
 check('its time: terminal = summary.json (to its 3 places)', Math.abs(Number(termT) - summary.t_max_50ms_decel_s) <= 0.0005 + 1e-12, `${termT} vs ${summary.t_max_50ms_decel_s}`);
 check('its time: summary.json = report.html data (1e-9 s)', Math.abs(page.summary.t_max_50ms_decel_s - summary.t_max_50ms_decel_s) < 1e-9);
+check('its plot\'s marker: the run\'s peak at the terminal\'s time, not the frames\' largest', decelPeak(page.summary).label === `max ${summary.max_50ms_decel_g.toFixed(2)} g at ${termT} s` && Math.abs(decelPeak(page.summary).t - summary.t_max_50ms_decel_s) < 1e-9, decelPeak(page.summary).label);
+// the outcome's time: the terminal's first line's (the stop, or the loss of contact of a vehicle that left),
+// report.html's summary table and its card
+const termOutcomeT = termLine(/^[^\n]*: the vehicle .* at t = ([0-9.]+) s$/m);
+if (termOutcomeT !== undefined) {
+  const card = cards(page).children.find((c) => c.children[0].textContent === 'Outcome');
+  check('the outcome\'s time: terminal = report.html table and card', row(summaryRows, 'Outcome')[2] === `at t = ${termOutcomeT} s` && card.children[2].textContent === `at t = ${termOutcomeT} s`, `${termOutcomeT} vs ${row(summaryRows, 'Outcome')[2]}, ${card.children[2].textContent}`);
+}
+// a redirected run's end event comes a vehicle's length after the loss of contact: the timeline says when
+// the vehicle left, at the terminal's time
+if (summary.outcome === 'redirected') {
+  const end = timeline(page).find((r) => r.type === 'redirected');
+  check('redirected: the timeline\'s end row names the loss of contact at the terminal\'s time', end && end.text.includes(`left the barrier on the traffic side at t = ${termOutcomeT} s`), end && end.text);
+}
 // the penetration: a number where the vehicle stopped, "beyond" where it got through, everywhere
 const through = summary.max_dynamic_penetration_m === null;
 const pen = through ? summary.penetration_beyond_m : summary.max_dynamic_penetration_m;

@@ -4,7 +4,7 @@
 // article, the vehicle, the impact and exit conditions, sequential top and side pictures at fixed times,
 // the deflection and working width, the occupant risk, and each evaluation criterion of the run's standard
 // with its verdict. Criteria the model cannot judge say "not judged": never a pass.
-import { el } from './summary.js';
+import { el, outcomeTime } from './summary.js';
 import { pair, seconds, MPH, KIP_FT } from './units.js';
 import { frame, picture, pictureBoxes } from './plan.js';
 
@@ -142,7 +142,7 @@ export function dataSheet(data) {
       ['impact severity', `${f(severity / 1e3)} kJ (${f(severity / KIP_FT)} kip·ft)`],
     ]),
     block('Exit conditions', [
-      ['outcome', `${s.outcome.replace(/_/g, ' ')} at ${seconds(s.outcome === 'stopped' ? s.stop_time_s : exits ? s.exit_time_s : s.t_end_s)}`],
+      ['outcome', `${s.outcome.replace(/_/g, ' ')} at ${seconds(outcomeTime(s))}`],
       ['speed', exits ? kmh(s.exit_speed_mps) : '– (did not leave)'],
       ['angle', exits && s.exit_angle_deg !== null ? deg(s.exit_angle_deg) : '–'],
       ['exit box (MASH)', exitBox(box)],

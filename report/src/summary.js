@@ -42,6 +42,19 @@ export function designationsText(data) {
   return r.length ? r.map((x) => x.text).join('; ') : 'not rated: the vehicle is not a test vehicle of ASTM F2656 or SD-STD-02.01';
 }
 
+// When the run's outcome came, as the terminal's first line gives it: the loss of contact of a vehicle
+// that left the barrier (exit_time_s: redirected, or its end for one through it), the stop, else the end.
+export function outcomeTime(s) {
+  if (typeof s.exit_time_s === 'number') return s.exit_time_s;
+  return s.outcome === 'stopped' ? s.stop_time_s : s.t_end_s;
+}
+
+// The largest 50-ms deceleration and its time, the run's (every step, as the terminal and summary.json
+// give them), and the words its plot marks it with.
+export function decelPeak(s) {
+  return { t: s.t_max_50ms_decel_s, g: s.max_50ms_decel_g, label: `max ${fmt(s.max_50ms_decel_g, 2)} g at ${seconds(s.t_max_50ms_decel_s)}` };
+}
+
 export function story(data) {
   const s = data.summary;
   const sc = data.scenario;
@@ -114,7 +127,7 @@ export function cards(data) {
   return el(
     'div',
     { class: 'cards' },
-    card('Outcome', o.word, typeof s.exit_time_s === 'number' ? `at t = ${seconds(s.exit_time_s)}` : s.outcome === 'stopped' ? `at t = ${seconds(s.stop_time_s)}` : `t = ${seconds(s.t_end_s)}`, `run of ${seconds(s.t_end_s)} simulated`, o.cls),
+    card('Outcome', o.word, `at t = ${seconds(outcomeTime(s))}`, `run of ${seconds(s.t_end_s)} simulated`, o.cls),
     card('Max 50-ms deceleration', `${fmt(s.max_50ms_decel_g, 2)} g`, `at t = ${seconds(s.t_max_50ms_decel_s)}`, 'average over the worst 50 ms'),
     card('Penetration', final ? penSI : `beyond ${penSI}`, final ? penUS : `beyond ${penUS}`, final ? 'front face past the cable line' : s.exit_speed_mps !== null ? 'the vehicle got through' : 'still going at the end'),
     card('Exit speed', exitSI, exitUS, exitNote),
@@ -127,7 +140,7 @@ export function summaryTable(data) {
   const s = data.summary;
   const sc = data.scenario;
   const rows = [
-    ['Outcome', (OUTCOME[s.outcome] || OUTCOME.running).word, `at t = ${seconds(s.t_end_s)}`],
+    ['Outcome', (OUTCOME[s.outcome] || OUTCOME.running).word, `at t = ${seconds(outcomeTime(s))}`],
     ['Model', data.name, data.file],
     ['Model hash (FNV-1a 64 of its definitions)', data.cablesim.model_hash || '–', null],
     ['Designation as run', designationsText(data), 'docs/ratings.md'],
