@@ -120,6 +120,18 @@ if (atHole.length || termHoles.length || jsonHoles.length || pageHoles.length) {
   check('breaks at a hole: events.csv = summary.json = the terminal (cable and post)', same(csvHoles, jsonHoles) && same(csvHoles, termHoles), JSON.stringify([csvHoles, jsonHoles, termHoles]));
   check('breaks at a hole: report.html says "at post N\'s hole" for the same cables and posts', same(pageHoles.map((h) => h.slice(0, 2)), csvHoles) && pageHoles.every(([c, p, text]) => text.startsWith(`Cable ${c} `) && text.endsWith(`breaks at post ${p}'s hole`)), JSON.stringify(pageHoles));
 }
+// summary.json: every number outside inputs ends its key with a unit docs/tutorial.md lists ("Elsewhere a
+// number's unit ends its key (`_m`, ...)"), or is one of the pure numbers it names or counts
+const listedUnits = [...(readFileSync(new URL('../docs/tutorial.md', import.meta.url), 'utf8').replace(/\s+/g, ' ').match(/a number's unit ends its key \(([^;]*)\); a key with/) || ['', ''])[1].matchAll(/`(_[a-z]+)`/g)].map((m) => m[1]);
+const pure = /^(posts_failed_[a-z_]+|cables_broken|solver_warnings|cable_count|sudden_loss_count|index|cable|post|energy_share|energy_balance_error|asi|max_solver_residual|direction|value)$/;
+const keyed = new Set();
+(function keys(v, k) {
+  if (typeof v === 'number') keyed.add(k);
+  else if (Array.isArray(v)) v.forEach((e) => keys(e, k));
+  else if (v !== null && typeof v === 'object') for (const [kk, e] of Object.entries(v)) if (kk !== 'inputs' && kk !== 'input_units') keys(e, kk);
+})(summary, '');
+const unlisted = [...keyed].filter((k) => !pure.test(k) && !listedUnits.some((u) => k.endsWith(u)));
+check(`summary.json: every number's key ends in a unit docs/tutorial.md lists (${listedUnits.join(' ')}) or is a pure number`, listedUnits.length >= 8 && unlisted.length === 0, unlisted.join(' '));
 // (c) every number of the page's data carries its unit: page.units, shaped as the data
 // (src/io/out/report_html.h): an object's by key, a list's one unit for all its numbers or a list whose
 // element i % length gives element i's; "" (no unit) only for an integer (a count, an index, a state)
