@@ -428,9 +428,10 @@ static void road_row(FILE *md, const char *name, const char *what, const cs_vali
     char exit[48] = "-";
     if (cs_outcome_exits(m->outcome))
         snprintf(exit, sizeof exit, "%.1f km/h at %.1f deg", m->exit_speed_mps * 3.6, m->exit_angle_deg);
-    fprintf(md, "| %s | %s | %s | %.2f m (%.1f ft) | %.2f m | %s | %d | %d |%s\n", name, what,
+    fprintf(md, "| %s | %s | %s | %.2f m (%.1f ft) | %.2f m (%.1f ft) | %s | %d | %d |%s\n", name, what,
             cs_outcome_name(m->outcome), m->max_barrier_deflection_m, m->max_barrier_deflection_m / CS_FT,
-            m->working_width_m, exit, r->released, m->posts_failed_left + m->posts_failed_right, more);
+            m->working_width_m, m->working_width_m / CS_FT, exit, r->released,
+            m->posts_failed_left + m->posts_failed_right, more);
 }
 
 void cs_validate_write_roadside(FILE *md, FILE *csv, const cs_validate_suite *s) {
