@@ -189,12 +189,15 @@ export function summaryTable(data) {
 // The timeline table; seek(t) moves the replay there when a row is clicked.
 export function timelineTable(data, seek) {
   const rows = timeline(data);
+  // every time with the places that show it exactly (seconds()), the most any row needs, as the terminal
+  // lists the events
+  const places = Math.max(4, ...rows.map((r) => seconds(r.t).length - seconds(r.t).indexOf('.') - 3));
   const tbody = el('tbody');
   for (const r of rows) {
     const tr = el(
       'tr',
       { class: `ev ${r.group}`, title: 'show this moment in the 3D replay', tabindex: '0', onclick: () => seek(r.t), onkeydown: (e) => e.key === 'Enter' && seek(r.t) },
-      el('td', { class: 'num' }, fmt(r.t, 4)),
+      el('td', { class: 'num' }, r.t.toFixed(places)),
       el('td', {}, el('span', { class: 'dot', style: `background:${GROUP_COLORS[r.group]}` }), r.text),
       el('td', { class: 'val' }, r.value),
     );

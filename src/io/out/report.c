@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The readable summary printed after a run: SI first, US units beside. */
 #include <math.h>
+#include <string.h>
 
 #include "cablesim/units.h"
 #include "out/htmltext.h"
@@ -18,6 +19,7 @@ static void events(FILE *f, const cs_state *state) {
     enum { LISTED = 30 };
     int n = cs_state_event_count(state), failures = 0, hinges = 0, footings = 0;
     cs_event first_yield = {0};
+    char tt[CS_TIME_TEXT_SIZE];
     for (int i = 0; i < n; i++) {
         cs_event e_held = {.size = sizeof e_held};
         cs_state_event(state, i, &e_held, NULL);
@@ -30,6 +32,16 @@ static void events(FILE *f, const cs_state *state) {
         footings += e->type == CS_EVENT_FOOTING_ROTATION;
         if (hinges + footings == 1) first_yield = *e;
     }
+    /* the times listed with the places that show each exactly (cs_time_text), the most any needs */
+    int places = 4;
+    for (int i = 0, listed = 0; i < n && listed < LISTED; i++) {
+        cs_event e = {.size = sizeof e};
+        cs_state_event(state, i, &e, NULL);
+        if (yielding(e.type)) continue;
+        listed++;
+        const char *dot = strchr(cs_time_text(e.t, tt), '.');
+        if (dot && (int)strlen(dot + 1) > places) places = (int)strlen(dot + 1);
+    }
     fprintf(f, "  failure events       %d, in order (every event of the run: events.csv)\n", failures);
     for (int i = 0, listed = 0; i < n; i++) {
         cs_event e_held = {.size = sizeof e_held};
@@ -41,26 +53,27 @@ static void events(FILE *f, const cs_state *state) {
             break;
         }
         if (e->element_kind == CS_ELEMENT_VEHICLE)
-            fprintf(f, "    %8.4f s  %s\n", e->t, cs_event_type_name(e->type));
+            fprintf(f, "    %8.*f s  %s\n", places, e->t, cs_event_type_name(e->type));
         else if (e->cable >= 0) /* a cable a post let go */
-            fprintf(f, "    %8.4f s  %-19s %s %d lets cable %d go\n", e->t, cs_event_type_name(e->type),
-                    cs_element_kind_name(e->element_kind), e->element, e->cable);
+            fprintf(f, "    %8.*f s  %-19s %s %d lets cable %d go\n", places, e->t,
+                    cs_event_type_name(e->type), cs_element_kind_name(e->element_kind), e->element, e->cable);
         else if (e->post >= 0) /* a rope broken at a threaded post's hole */
-            fprintf(f, "    %8.4f s  %-19s %s %d at post %d's hole\n", e->t, cs_event_type_name(e->type),
-                    cs_element_kind_name(e->element_kind), e->element, e->post);
+            fprintf(f, "    %8.*f s  %-19s %s %d at post %d's hole\n", places, e->t,
+                    cs_event_type_name(e->type), cs_element_kind_name(e->element_kind), e->element, e->post);
         else if (e->cable_end >= 0) /* a termination event: the rope end that slipped or let go */
-            fprintf(f, "    %8.4f s  %-19s %s %d at the %s anchor\n", e->t, cs_event_type_name(e->type),
-                    cs_element_kind_name(e->element_kind), e->element, cs_event_cable_end_name(e));
+            fprintf(f, "    %8.*f s  %-19s %s %d at the %s anchor\n", places, e->t,
+                    cs_event_type_name(e->type), cs_element_kind_name(e->element_kind), e->element,
+                    cs_event_cable_end_name(e));
         else
-            fprintf(f, "    %8.4f s  %-19s %s %d\n", e->t, cs_event_type_name(e->type),
+            fprintf(f, "    %8.*f s  %-19s %s %d\n", places, e->t, cs_event_type_name(e->type),
                     cs_element_kind_name(e->element_kind), e->element);
     }
     if (hinges + footings)
         fprintf(
             f,
             "  posts yielding       %d plastic hinge%s at the base, %d footing%s turning in the soil (the "
-            "first at %.4f s, post %d)\n",
-            hinges, hinges == 1 ? "" : "s", footings, footings == 1 ? "" : "s", first_yield.t,
+            "first at %.*f s, post %d)\n",
+            hinges, hinges == 1 ? "" : "s", footings, footings == 1 ? "" : "s", places, first_yield.t,
             first_yield.element);
     else
         fprintf(f, "  posts yielding       none\n");
