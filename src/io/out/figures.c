@@ -279,8 +279,8 @@ static void fig_posts(cs_plot *p, const cs_figure_data *d, double *t) {
             failed = cs_fig_post_rank(v->status) == 2;
         }
     char title[TITLE_SIZE], label[CS_LABEL_SIZE], mtitle[TITLE_SIZE], ttitle[TITLE_SIZE];
-    snprintf(title, sizeof title, "%s: the %d posts nearest the impact point (x = %.2f m)", d->in->name,
-             count, d->in->scenario.impact_x);
+    snprintf(title, sizeof title, "%s: the %d posts nearest the impact point (x = %.2f m, %.2f ft)",
+             d->in->name, count, d->in->scenario.impact_x, d->in->scenario.impact_x / CS_FT);
     cs_plot_text(p, 0.5 * p->width, MARGIN + 14, 18, 1, 0.5, title);
     double half = 0.5 * (p->height - 40 - 2 * MARGIN);
     cs_axes am, at;
@@ -306,7 +306,8 @@ static void fig_posts(cs_plot *p, const cs_figure_data *d, double *t) {
         }
         cs_style s = dashed(BLACK, 1.5);
         if (new_cap) {
-            len = snprintf(label, sizeof label, "capacity %.1f kN·m (post", cap / 1e3);
+            len = snprintf(label, sizeof label, "capacity %.1f kN·m, %.1f kip·ft (post", cap / 1e3,
+                           cap / (CS_KIP * CS_FT));
             for (int j = k, m = 0; j < count; j++)
                 if (r->posts[idx[j]].moment_capacity == cap && len < (int)sizeof label - 8)
                     len += snprintf(label + len, sizeof label - (size_t)len, "%s %d", m++ ? "," : "", idx[j]);
