@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: MIT
 # One run, one truth: APS3 as designed (the truck stopped), with its ropes' end fittings at a quarter
 # of their strength (it breaks through), and APS1 with its ropes at half strength at the threaded posts'
-# holes (a rope breaks at a post's hole: every output names that post), each read back from its terminal
+# holes (a rope breaks at a post's hole: every output names that post), and roadside RS1 (redirected: the
+# outcome's time is the loss of contact, its ropes peak between output frames), each read back from its terminal
 # output, summary.json, report.html (its text made by the page's own code: tests/one_truth.mjs),
 # events.csv and timeseries.csv:
 # the designation as run, the peak deceleration and its time at the terminal's precision, the
@@ -17,12 +18,13 @@ source "$(dirname "$0")/lib.sh"
 command -v node >/dev/null || { echo "no node: skipped"; exit 77; }
 weak=(--set "barrier.cables[0].termination_efficiency=0.25" --set "barrier.cables[1].termination_efficiency=0.25")
 hole=(--set "barrier.cables[0].hole_efficiency=0.5" --set "barrier.cables[1].hole_efficiency=0.5")
-for what in designed weak hole; do
+for what in designed weak hole rs1; do
     extra=()
     [ "$what" = weak ] && extra=("${weak[@]}")
     [ "$what" = hole ] && extra=("${hole[@]}")
     model=examples/aps3.yaml
     [ "$what" = hole ] && model=examples/aps1.yaml
+    [ "$what" = rs1 ] && model=examples/roadside/rs1.yaml
     "$cs" run "$model" -o "$tmp/$what" --report "${extra[@]}" >"$tmp/$what.term" 2>&1
     check "$what: the run (exit 0), with report.html" '[ $? -eq 0 ] && [ -s "$tmp/$what/report.html" ]'
     [ -s "$tmp/$what/report.html" ] || { [ "$what" = designed ] && grep -q "no report.html" "$tmp/$what.term" && exit 77; }

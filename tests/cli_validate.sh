@@ -95,6 +95,7 @@ if plain_only "validate's readings, roadside and sensitivity parts"; then
     check "validate --only roadside exits 0" '[ $? -eq 0 ]'
     md="$dir/road/validation.md"
     check "six predictions, measured withheld" '[ "$(grep -cE "^\| rs[1-6] \| as the file reads the design \| (redirected|breakthrough|override|underride|stopped|time_limit) \| [0-9.]+ m .* withheld \|$" "$md")" -eq 6 ]'
+    check "each deflection and working width in m and ft" '[ "$(grep -cE "^\| rs[1-6] \| as the file reads the design \| [a-z_]+ \| [0-9.]+ m \([0-9.]+ ft\) \| [0-9.]+ m \([0-9.]+ ft\) \|" "$md")" -eq 6 ]'
     check "a deflection band per test" '[ "$(grep -cE "^\| rs[1-6] \| \*\*band\*\* \| \| [0-9.]+-[0-9.]+ m \|" "$md")" -eq 6 ]'
     check "no roadside run failed" '! grep -q "| failed |" "$md"'
 

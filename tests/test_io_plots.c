@@ -398,7 +398,7 @@ static synthetic *synthetic_new(int frames) {
         {sizeof(cs_event), 0.299, CS_EVENT_STOPPED, CS_ELEMENT_VEHICLE, 0, 0.3, -1, -1, -1},
     };
     memcpy(s->events, ev, sizeof ev);
-    s->d = (cs_figure_data){&s->in, &s->rec, s->events, (int)(sizeof ev / sizeof ev[0]), NULL, NULL};
+    s->d = (cs_figure_data){&s->in, &s->rec, s->events, (int)(sizeof ev / sizeof ev[0]), NULL, NULL, NULL};
     tmp_make(&s->dir);
     return s;
 }
@@ -673,6 +673,33 @@ static void test_angles_from_the_data(void **state) {
     synthetic_free(s, NULL, 0);
 }
 
+/* The times and the peak the figures print are the run's, as the terminal prints them: the largest 50-ms
+ * deceleration and its time from the run's summary (a step between two frames), not the frames' largest,
+ * and an event's time with the digits that show it exactly (0.2985 s, not 0.299). */
+static void test_peak_and_times_are_the_runs(void **state) {
+    (void)state;
+    synthetic *s = synthetic_new(FRAMES);
+    cs_summary sm = {.size = sizeof sm};
+    sm.max_50ms_decel_g = 2.0049, sm.t_max_50ms_decel_s = 0.1675; /* the frames' largest: 2 g */
+    s->d.summary = &sm;
+    s->events[6].t = 0.2985; /* stopped */
+    cs_plot_log *log = calloc(1, sizeof *log);
+    assert_non_null(log);
+    trace(s, CS_FIG_DECELERATION, log);
+    const cs_plot_logged_text *peak = text_starting(log, "max ");
+    assert_non_null(peak);
+    assert_string_equal(peak->text, "max 2.00 g at t = 0.1675 s");
+    trace(s, CS_FIG_SPEED, log);
+    assert_non_null(text_starting(log, "stopped at t = 0.2985 s"));
+    s->d.summary = NULL; /* without a summary: the frames' largest, at its frame */
+    trace(s, CS_FIG_DECELERATION, log);
+    peak = text_starting(log, "max ");
+    assert_non_null(peak);
+    assert_string_equal(peak->text, "max 2.00 g at t = 0.051 s");
+    free(log);
+    synthetic_free(s, NULL, 0);
+}
+
 /* The path in plan: at true scale, its ranges hold the car at the start and the end and the exit box (A
  * 4.9 m across, B 10 m along from x = 20 m) and are tight about them in one direction (axes from the data, a
  * metre of margin and a tick), the box is named in the legend with its A and B, the legend is clear of the
@@ -766,6 +793,7 @@ int main(void) {
         cmocka_unit_test(test_top_views_true_scale_whole_vehicle),
         cmocka_unit_test(test_mirror_posts_named_in_the_legend),
         cmocka_unit_test(test_angles_from_the_data),
+        cmocka_unit_test(test_peak_and_times_are_the_runs),
         cmocka_unit_test(test_path_from_the_data),
     };
     int rc = cmocka_run_group_tests(tests, NULL, NULL);

@@ -4,8 +4,8 @@
 // article, the vehicle, the impact and exit conditions, sequential top and side pictures at fixed times,
 // the deflection and working width, the occupant risk, and each evaluation criterion of the run's standard
 // with its verdict. Criteria the model cannot judge say "not judged": never a pass.
-import { el } from './summary.js';
-import { pair, seconds, MPH, KIP_FT } from './units.js';
+import { el, outcomeTime } from './summary.js';
+import { pair, seconds, MPH, FT, KIP_FT } from './units.js';
 import { frame, picture, pictureBoxes } from './plan.js';
 
 const STANDARD_TITLE = { 'nchrp-350': 'NCHRP Report 350', mash: 'MASH', 'astm-f2656': 'ASTM F2656', 'sd-std-02.01': 'SD-STD-02.01', 'sd-std-02.01a': 'SD-STD-02.01a' };
@@ -111,7 +111,7 @@ export function dataSheet(data) {
 
   const spacing = posts.length > 1 ? (posts[posts.length - 1][0] - posts[0][0]) / (posts.length - 1) : NaN;
   const length = data.barrier.anchors[1][0] - data.barrier.anchors[0][0];
-  const heights = data.barrier.cables.map((c) => f(c[0], 2)).join(', ');
+  const heights = `${data.barrier.cables.map((c) => f(c[0], 2)).join(', ')} m (${data.barrier.cables.map((c) => f(c[0] / FT, 2)).join(', ')} ft)`;
   const angle = (sc.angle * 180) / Math.PI;
   const severity = 0.5 * v.mass * (sc.speed * Math.sin(sc.angle)) ** 2;
   const yaw0 = S.yaw.length ? S.yaw[0] : 0;
@@ -123,7 +123,7 @@ export function dataSheet(data) {
     block('Test article', [
       ['type', `cable barrier, ${data.barrier.cables.length} cables on ${posts.length} posts`],
       ['installation length', pair('length', length)],
-      ['cable heights', `${heights} m`],
+      ['cable heights', heights],
       ['post spacing', Number.isFinite(spacing) ? `${pair('length', spacing)} (mean)` : '–'],
       ['soil, posts, ropes', 'as the model gives them (the design as run, below)'],
     ]),
@@ -138,11 +138,11 @@ export function dataSheet(data) {
     block('Impact conditions', [
       ['speed', kmh(sc.speed)],
       ['angle', deg(angle)],
-      ['location', `x = ${f(sc.impact_x, 2)} m, ${sc.impact_at_corner ? 'leading front corner' : 'centre of the front'}`],
+      ['location', `x = ${pair('length', sc.impact_x)}, ${sc.impact_at_corner ? 'leading front corner' : 'centre of the front'}`],
       ['impact severity', `${f(severity / 1e3)} kJ (${f(severity / KIP_FT)} kip·ft)`],
     ]),
     block('Exit conditions', [
-      ['outcome', `${s.outcome.replace(/_/g, ' ')} at ${seconds(s.outcome === 'stopped' ? s.stop_time_s : exits ? s.exit_time_s : s.t_end_s)}`],
+      ['outcome', `${s.outcome.replace(/_/g, ' ')} at ${seconds(outcomeTime(s))}`],
       ['speed', exits ? kmh(s.exit_speed_mps) : '– (did not leave)'],
       ['angle', exits && s.exit_angle_deg !== null ? deg(s.exit_angle_deg) : '–'],
       ['exit box (MASH)', exitBox(box)],
@@ -163,7 +163,7 @@ export function dataSheet(data) {
           ['OIV long., lat.', `${f(o.oiv_longitudinal_mps, 2)}, ${f(o.oiv_lateral_mps, 2)} m/s`],
           ['ORA long., lat.', `${f(o.ora_longitudinal_g, 2)}, ${f(o.ora_lateral_g, 2)} g`],
           ['THIV', `${f(o.thiv_kmh)} km/h`],
-          ['PHD', `${f(o.phd_g)} g`],
+          ['PHD', `${f(o.phd_g, 2)} g`],
           ['ASI', f(o.asi, 2)],
           ['max 50-ms decel.', `${f(s.max_50ms_decel_g, 2)} g`],
         ]

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The failure timeline in words: events.csv, one row per moment and kind of event (elements that
 // fail together, like the two mirror posts of a centred impact, share a row).
-import { pair, fmt } from './units.js';
+import { pair, fmt, seconds } from './units.js';
 
 // What each event type means and how its value (SI) reads.
 const KINDS = {
@@ -24,7 +24,8 @@ const KINDS = {
   underride: { group: 'slip', text: (who) => `The vehicle runs under ${lower(who)}: it slips over the front face and stops holding the vehicle`, value: () => '' },
   stopped: { group: 'end', text: () => 'The vehicle has stopped: the barrier contained it', value: (v) => `dynamic penetration ${pair('length', v)}` },
   breakthrough: { group: 'end', text: () => 'The vehicle is through the barrier: no cable holds it any more', value: (v) => `exit speed ${pair('speed', v)}` },
-  redirected: { group: 'end', text: () => 'The vehicle leaves the barrier on the traffic side: the barrier redirected it', value: (v) => `exit speed ${pair('speed', v)}` },
+  // the run's end, a vehicle's length after the loss of contact (exit_time_s), when the vehicle left
+  redirected: { group: 'end', text: (who, end, cable, post, s) => `The run ends: the vehicle left the barrier on the traffic side at t = ${seconds(s.exit_time_s)} and has gone its own length since; the barrier redirected it`, value: (v) => `exit speed ${pair('speed', v)}` },
 };
 
 function s(who) {
@@ -38,7 +39,7 @@ function list(words) {
   return words.length <= 1 ? words.join('') : `${words.slice(0, -1).join(', ')} and ${words[words.length - 1]}`;
 }
 
-// Who: "Post 7 (x = 19.51 m)", "Posts 7 and 8 (x = 19.51 and 21.95 m)", "Cable 0 (upper, 1.22 m high)".
+// Who: "Post 7 (x = 19.51 m)", "Posts 7 and 8 (x = 19.51 and 21.95 m)", "Cable 1 (1.22 m high)".
 function who(data, kind, elements) {
   const b = data.barrier;
   if (kind === 'post') {
@@ -77,7 +78,7 @@ export function timeline(data) {
     if (r.type === 'contact') continue;
     const k = KINDS[r.type];
     const w = who(data, r.kind, r.elements);
-    r.text = k ? k.text(w, r.end, r.cable, r.post) : `${r.type}: ${w}`;
+    r.text = k ? k.text(w, r.end, r.cable, r.post, data.summary) : `${r.type}: ${w}`;
     const distinct = [...new Set(r.values.map((v) => v.toPrecision(4)))];
     r.value = k ? (distinct.length === 1 ? k.value(r.values[0]) : r.values.map((v) => k.value(v)).join('; ')) : '';
   }

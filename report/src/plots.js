@@ -2,8 +2,8 @@
 // Interactive time-series plots (uPlot): hover for values, drag to zoom into a time range, double-click
 // to zoom out, click to show that moment in the 3D replay. A vertical line marks the replay's time.
 import uPlot from 'uplot';
-import { el } from './summary.js';
-import { G0, MPH, FT, KIP, KIP_FT, fmt } from './units.js';
+import { el, decelPeak } from './summary.js';
+import { G0, MPH, FT, KIP, KIP_FT, fmt, seconds } from './units.js';
 import { pathPlan } from './plan.js';
 
 // The palette of the PNG figures (src/io/out/plot.c), so that cable k has the same colour everywhere.
@@ -126,6 +126,15 @@ function valueAt(t, xs, ys) {
   return a + Math.max(0, Math.min(1, u)) * (b - a);
 }
 
+// The speed plot's words at a run's end event (its time, type and exit speed), as the PNG figure's
+// (src/io/out/figures.c): a redirected run ends a vehicle's length after it left the ropes.
+function speedLabel(e) {
+  const speed = `${fmt(e[4], 1)} m/s (${fmt(e[4] / MPH, 1)} mph)`;
+  if (e[1] === 'stopped') return `stopped at t = ${seconds(e[0])}`;
+  if (e[1] === 'redirected') return `redirected: the run ends at t = ${seconds(e[0])}, a vehicle's length after it left the ropes at ${speed}`;
+  return `broke through at t = ${seconds(e[0])}, leaving at ${speed}, its whole speed`;
+}
+
 const line = (label, stroke, width = 2, extra = {}) => ({ label, stroke, width, points: { show: false }, ...extra });
 
 // Every plot: {key, title, caption, data: [t, ...series], series, axes, markers, bands, yRange}.
@@ -138,10 +147,7 @@ function specs(data) {
 
   // 1. deceleration
   {
-    let imax = -1;
-    S.decel50.forEach((v, i) => {
-      if (v !== null && (imax < 0 || v > S.decel50[imax])) imax = i;
-    });
+    const peak = decelPeak(data.summary);
     out.push({
       key: 'deceleration',
       title: 'Deceleration of the vehicle',
@@ -151,7 +157,7 @@ function specs(data) {
       data: [t, S.decel, S.decel50],
       series: [line('raw', '#8cb3e6', 1.2), line('50-ms average', '#0d3f99', 3)],
       axes: [timeAxis, { label: 'deceleration (g)' }, otherAxis('deceleration (m/s²)', G0, 0)],
-      markers: imax >= 0 ? [{ t: t[imax], v: S.decel50[imax], color: '#d91a1a', shape: 'circle', label: `max ${fmt(S.decel50[imax], 2)} g at ${fmt(t[imax], 3)} s` }] : [],
+      markers: peak.g > 0 ? [{ t: peak.t, v: peak.g, color: '#d91a1a', shape: 'circle', label: peak.label }] : [],
     });
   }
   // 2. speed
@@ -165,7 +171,7 @@ function specs(data) {
     yFromZero: true,
     markers: ev
       .filter((e) => e[1] === 'stopped' || e[1] === 'breakthrough' || e[1] === 'redirected')
-      .map((e) => ({ t: e[0], v: valueAt(e[0], t, S.speed), color: '#d91a1a', shape: 'diamond', label: e[1] === 'stopped' ? `stopped at ${fmt(e[0], 3)} s` : `${e[1] === 'redirected' ? 'redirected' : 'broke through'} at ${fmt(e[0], 3)} s, leaving at ${fmt(e[4], 1)} m/s (${fmt(e[4] / MPH, 1)} mph), its whole speed` })),
+      .map((e) => ({ t: e[0], v: valueAt(e[0], t, S.speed), color: '#d91a1a', shape: 'diamond', label: speedLabel(e) })),
   });
   // 3. penetration
   out.push({

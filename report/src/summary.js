@@ -42,6 +42,19 @@ export function designationsText(data) {
   return r.length ? r.map((x) => x.text).join('; ') : 'not rated: the vehicle is not a test vehicle of ASTM F2656 or SD-STD-02.01';
 }
 
+// When the run's outcome came, as the terminal's first line gives it: the loss of contact of a vehicle
+// that left the barrier (exit_time_s: redirected, or its end for one through it), the stop, else the end.
+export function outcomeTime(s) {
+  if (typeof s.exit_time_s === 'number') return s.exit_time_s;
+  return s.outcome === 'stopped' ? s.stop_time_s : s.t_end_s;
+}
+
+// The largest 50-ms deceleration and its time, the run's (every step, as the terminal and summary.json
+// give them), and the words its plot marks it with.
+export function decelPeak(s) {
+  return { t: s.t_max_50ms_decel_s, g: s.max_50ms_decel_g, label: `max ${fmt(s.max_50ms_decel_g, 2)} g at ${seconds(s.t_max_50ms_decel_s)}` };
+}
+
 export function story(data) {
   const s = data.summary;
   const sc = data.scenario;
@@ -114,7 +127,7 @@ export function cards(data) {
   return el(
     'div',
     { class: 'cards' },
-    card('Outcome', o.word, typeof s.exit_time_s === 'number' ? `at t = ${seconds(s.exit_time_s)}` : s.outcome === 'stopped' ? `at t = ${seconds(s.stop_time_s)}` : `t = ${seconds(s.t_end_s)}`, `run of ${seconds(s.t_end_s)} simulated`, o.cls),
+    card('Outcome', o.word, `at t = ${seconds(outcomeTime(s))}`, `run of ${seconds(s.t_end_s)} simulated`, o.cls),
     card('Max 50-ms deceleration', `${fmt(s.max_50ms_decel_g, 2)} g`, `at t = ${seconds(s.t_max_50ms_decel_s)}`, 'average over the worst 50 ms'),
     card('Penetration', final ? penSI : `beyond ${penSI}`, final ? penUS : `beyond ${penUS}`, final ? 'front face past the cable line' : s.exit_speed_mps !== null ? 'the vehicle got through' : 'still going at the end'),
     card('Exit speed', exitSI, exitUS, exitNote),
@@ -127,7 +140,7 @@ export function summaryTable(data) {
   const s = data.summary;
   const sc = data.scenario;
   const rows = [
-    ['Outcome', (OUTCOME[s.outcome] || OUTCOME.running).word, `at t = ${seconds(s.t_end_s)}`],
+    ['Outcome', (OUTCOME[s.outcome] || OUTCOME.running).word, `at t = ${seconds(outcomeTime(s))}`],
     ['Model', data.name, data.file],
     ['Model hash (FNV-1a 64 of its definitions)', data.cablesim.model_hash || '–', null],
     ['Designation as run', designationsText(data), 'docs/ratings.md'],
@@ -146,7 +159,7 @@ export function summaryTable(data) {
       const [peakSI, peakUS] = both.force(c.peak_tension_n);
       const [workSI, workUS] = both.energy(c.work_on_vehicle_j);
       return [
-        [`Cable ${c.index}: peak tension`, `${peakSI} at t = ${fmt(c.peak_tension_time_s, 4)} s`, peakUS],
+        [`Cable ${c.index}: peak tension`, `${peakSI} at t = ${seconds(c.peak_tension_time_s)}`, peakUS],
         [`Cable ${c.index}: work on the vehicle`, `${workSI}, ${fmt(100 * c.energy_share, 1)} % of the initial kinetic energy taken`, workUS],
       ];
     }),
@@ -155,7 +168,7 @@ export function summaryTable(data) {
       const [afterSI, afterUS] = both.force(w.force_after_n);
       return [
         'Sudden loss of the barrier\'s force on the vehicle (warning)',
-        `${beforeSI} to ${afterSI} between t = ${fmt(w.t_start_s, 4)} and ${fmt(w.t_end_s, 4)} s`,
+        `${beforeSI} to ${afterSI} between t = ${seconds(w.t_start_s).slice(0, -2)} and ${seconds(w.t_end_s)}`,
         `${beforeUS} to ${afterUS}; no rope, fitting or attachment failed`,
       ];
     }),
@@ -176,12 +189,15 @@ export function summaryTable(data) {
 // The timeline table; seek(t) moves the replay there when a row is clicked.
 export function timelineTable(data, seek) {
   const rows = timeline(data);
+  // every time with the places that show it exactly (seconds()), the most any row needs, as the terminal
+  // lists the events
+  const places = Math.max(4, ...rows.map((r) => seconds(r.t).length - seconds(r.t).indexOf('.') - 3));
   const tbody = el('tbody');
   for (const r of rows) {
     const tr = el(
       'tr',
       { class: `ev ${r.group}`, title: 'show this moment in the 3D replay', tabindex: '0', onclick: () => seek(r.t), onkeydown: (e) => e.key === 'Enter' && seek(r.t) },
-      el('td', { class: 'num' }, fmt(r.t, 4)),
+      el('td', { class: 'num' }, r.t.toFixed(places)),
       el('td', {}, el('span', { class: 'dot', style: `background:${GROUP_COLORS[r.group]}` }), r.text),
       el('td', { class: 'val' }, r.value),
     );

@@ -3,6 +3,7 @@
  * posts and the vehicle's schematic body at frames from first contact to the end; the body's outline,
  * which figure 9 draws too. */
 #include "figures_int.h"
+#include "numtext.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -133,8 +134,8 @@ static void draw_view(cs_plot *p, const cs_figure_data *d, const snap_geometry *
                       cs_box panel) {
     const cs_record *r = d->rec;
     const cs_barrier_def *b = &d->in->barrier;
-    char title[96];
-    snprintf(title, sizeof title, "t = %.3f s: %s", r->vehicle[f].t,
+    char title[96], tt[CS_TIME_TEXT_SIZE];
+    snprintf(title, sizeof title, "t = %s s: %s", cs_time_text(r->vehicle[f].t, tt),
              side ? "side view (y-z)" : "top view (x-y)");
     cs_axes a;
     cs_axes_init(&a, title, side ? "y, toward the protected side (m)" : "x, along the barrier (m)",

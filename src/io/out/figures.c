@@ -3,6 +3,7 @@
  * marked failure from the events; nothing here recomputes the physics. */
 #include "cablesim/units.h"
 #include "figures_int.h"
+#include "numtext.h"
 #include "status.h"
 #include "writers.h"
 
@@ -68,11 +69,17 @@ static void fig_deceleration(cs_plot *p, const cs_figure_data *d, double *t) {
     cs_style s_raw = line((cs_rgb){0.55, 0.70, 0.90}, 1.2), s_avg = line((cs_rgb){0.05, 0.25, 0.60}, 3);
     cs_plot_line(p, &a, t, raw, n, &s_raw, "raw (every recorded frame)");
     cs_plot_line(p, &a, t, avg, n, &s_avg, "50-ms moving average (defined from t = 50 ms)");
-    if (imax >= 0) {
+    /* the largest 50-ms average: the run's (every step), as the terminal and summary.json give it, else
+     * the frames' */
+    double tq = imax >= 0 ? t[imax] : NAN, gq = imax >= 0 ? avg[imax] : NAN;
+    if (d->summary && d->summary->max_50ms_decel_g > 0)
+        tq = d->summary->t_max_50ms_decel_s, gq = d->summary->max_50ms_decel_g;
+    if (isfinite(tq)) {
+        char tt[CS_TIME_TEXT_SIZE];
         cs_style m = mark(RED, CS_MARK_CIRCLE, 13);
-        cs_plot_line(p, &a, &t[imax], &avg[imax], 1, &m, "largest 50-ms average");
-        snprintf(note, sizeof note, "max %.2f g at t = %.3f s", avg[imax], t[imax]);
-        cs_plot_label(p, &a, t[imax], avg[imax], 12, -16, 0, note);
+        cs_plot_line(p, &a, &tq, &gq, 1, &m, "largest 50-ms average");
+        snprintf(note, sizeof note, "max %.2f g at t = %s s", gq, cs_time_text(tq, tt));
+        cs_plot_label(p, &a, tq, gq, 12, -16, 0, note);
     }
     cs_plot_legend(p, &a, CS_LEGEND_TOP_RIGHT);
 }
@@ -98,19 +105,20 @@ static void fig_speed(cs_plot *p, const cs_figure_data *d, double *t) {
         if (e->type != CS_EVENT_STOPPED && e->type != CS_EVENT_BREAKTHROUGH && e->type != CS_EVENT_REDIRECTED)
             continue;
         int shown = 0;
+        char tt[CS_TIME_TEXT_SIZE];
         cs_style m = mark(RED, CS_MARK_DIAMOND, 14);
         mark_at(p, &a, t, u, n, e->t, &m, cs_event_type_name(e->type), &shown);
         if (e->type == CS_EVENT_STOPPED)
-            snprintf(note, sizeof note, "stopped at t = %.3f s", e->t);
+            snprintf(note, sizeof note, "stopped at t = %s s", cs_time_text(e->t, tt));
         else if (e->type == CS_EVENT_REDIRECTED) /* the run ends a vehicle's length past the exit */
             snprintf(note, sizeof note,
-                     "redirected: the run ends at t = %.3f s, a vehicle's length after it left the ropes at "
+                     "redirected: the run ends at t = %s s, a vehicle's length after it left the ropes at "
                      "%.1f m/s (%.1f mph)",
-                     e->t, e->value, e->value / CS_MPH);
+                     cs_time_text(e->t, tt), e->value, e->value / CS_MPH);
         else
             snprintf(note, sizeof note,
-                     "broke through at t = %.3f s, leaving at %.1f m/s (%.1f mph), its whole speed", e->t,
-                     e->value, e->value / CS_MPH);
+                     "broke through at t = %s s, leaving at %.1f m/s (%.1f mph), its whole speed",
+                     cs_time_text(e->t, tt), e->value, e->value / CS_MPH);
         cs_plot_label(p, &a, e->t, value_at(t, u, n, e->t), -12, 22, 1, note);
     }
     cs_plot_legend(p, &a, CS_LEGEND_BOTTOM_LEFT);
@@ -271,8 +279,8 @@ static void fig_posts(cs_plot *p, const cs_figure_data *d, double *t) {
             failed = cs_fig_post_rank(v->status) == 2;
         }
     char title[TITLE_SIZE], label[CS_LABEL_SIZE], mtitle[TITLE_SIZE], ttitle[TITLE_SIZE];
-    snprintf(title, sizeof title, "%s: the %d posts nearest the impact point (x = %.2f m)", d->in->name,
-             count, d->in->scenario.impact_x);
+    snprintf(title, sizeof title, "%s: the %d posts nearest the impact point (x = %.2f m, %.2f ft)",
+             d->in->name, count, d->in->scenario.impact_x, d->in->scenario.impact_x / CS_FT);
     cs_plot_text(p, 0.5 * p->width, MARGIN + 14, 18, 1, 0.5, title);
     double half = 0.5 * (p->height - 40 - 2 * MARGIN);
     cs_axes am, at;
@@ -298,7 +306,8 @@ static void fig_posts(cs_plot *p, const cs_figure_data *d, double *t) {
         }
         cs_style s = dashed(BLACK, 1.5);
         if (new_cap) {
-            len = snprintf(label, sizeof label, "capacity %.1f kN·m (post", cap / 1e3);
+            len = snprintf(label, sizeof label, "capacity %.1f kN·m, %.1f kip·ft (post", cap / 1e3,
+                           cap / (CS_KIP * CS_FT));
             for (int j = k, m = 0; j < count; j++)
                 if (r->posts[idx[j]].moment_capacity == cap && len < (int)sizeof label - 8)
                     len += snprintf(label + len, sizeof label - (size_t)len, "%s %d", m++ ? "," : "", idx[j]);
@@ -442,7 +451,9 @@ static void fig_angles(cs_plot *p, const cs_figure_data *d, double *t) {
             if (at < 0 || fabs(s[i]) > fabs(s[at])) at = i;
         cs_style st = line(cs_plot_palette(k), k == 2 ? 2.5 : 3);
         if (at >= 0) {
-            snprintf(label, sizeof label, "%s: peak %.1f deg at %.3f s", names[k], s[at], t[at]);
+            char tt[CS_TIME_TEXT_SIZE];
+            snprintf(label, sizeof label, "%s: peak %.1f deg at %s s", names[k], s[at],
+                     cs_time_text(t[at], tt));
             cs_plot_line(p, &a, t, s, n, &st, label);
             cs_style m = mark(cs_plot_palette(k), CS_MARK_CIRCLE, 11);
             cs_plot_line(p, &a, &t[at], &s[at], 1, &m, NULL);

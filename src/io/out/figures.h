@@ -13,8 +13,10 @@
 #include "study/criteria.h"
 
 /* What a figure reads: the resolved model (name, barrier, vehicle, scenario), the frames, the events,
- * and the exit box of a run that stands for a roadside test (NULL: none; the path is drawn without it),
- * with the standard that test is of ("mash", "nchrp-350"). */
+ * the exit box of a run that stands for a roadside test (NULL: none; the path is drawn without it), with
+ * the standard that test is of ("mash", "nchrp-350"), and the run's summary (NULL: none), whose largest
+ * 50-ms deceleration and its time the deceleration's figure marks, as every other output gives them (the
+ * frames, every output interval, can miss the step it peaked at). */
 typedef struct cs_figure_data {
     const cs_model_input *in;
     const cs_record *rec;
@@ -22,6 +24,7 @@ typedef struct cs_figure_data {
     int event_count;
     const cs_exit_box *exit_box;
     const char *standard;
+    const cs_summary *summary;
 } cs_figure_data;
 
 typedef enum cs_figure {

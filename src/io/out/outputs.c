@@ -20,8 +20,10 @@ static cs_status write_plots(cs_outdir *out, const cs_model_input *in, const cs_
     }
     static const cs_plot_format formats[] = {CS_PLOT_PNG, CS_PLOT_SVG};
     int box = info && info->motion && info->criteria_count > 0;
+    cs_summary sm = {.size = sizeof sm};
+    cs_state_summary(state, &sm, NULL);
     cs_figure_data d = {
-        in, rec, events, n, box ? &info->exit_box : NULL, box ? info->criteria_test.standard : NULL};
+        in, rec, events, n, box ? &info->exit_box : NULL, box ? info->criteria_test.standard : NULL, &sm};
     cs_status st = cs_figures_write(out, "plots", formats, 2, &d, err);
     cs_plot_release();
     free(events);

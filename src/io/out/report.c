@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The readable summary printed after a run: SI first, US units beside. */
 #include <math.h>
+#include <string.h>
 
 #include "cablesim/units.h"
 #include "out/htmltext.h"
@@ -18,6 +19,7 @@ static void events(FILE *f, const cs_state *state) {
     enum { LISTED = 30 };
     int n = cs_state_event_count(state), failures = 0, hinges = 0, footings = 0;
     cs_event first_yield = {0};
+    char tt[CS_TIME_TEXT_SIZE];
     for (int i = 0; i < n; i++) {
         cs_event e_held = {.size = sizeof e_held};
         cs_state_event(state, i, &e_held, NULL);
@@ -30,6 +32,16 @@ static void events(FILE *f, const cs_state *state) {
         footings += e->type == CS_EVENT_FOOTING_ROTATION;
         if (hinges + footings == 1) first_yield = *e;
     }
+    /* the times listed with the places that show each exactly (cs_time_text), the most any needs */
+    int places = 4;
+    for (int i = 0, listed = 0; i < n && listed < LISTED; i++) {
+        cs_event e = {.size = sizeof e};
+        cs_state_event(state, i, &e, NULL);
+        if (yielding(e.type)) continue;
+        listed++;
+        const char *dot = strchr(cs_time_text(e.t, tt), '.');
+        if (dot && (int)strlen(dot + 1) > places) places = (int)strlen(dot + 1);
+    }
     fprintf(f, "  failure events       %d, in order (every event of the run: events.csv)\n", failures);
     for (int i = 0, listed = 0; i < n; i++) {
         cs_event e_held = {.size = sizeof e_held};
@@ -41,26 +53,27 @@ static void events(FILE *f, const cs_state *state) {
             break;
         }
         if (e->element_kind == CS_ELEMENT_VEHICLE)
-            fprintf(f, "    %8.4f s  %s\n", e->t, cs_event_type_name(e->type));
+            fprintf(f, "    %8.*f s  %s\n", places, e->t, cs_event_type_name(e->type));
         else if (e->cable >= 0) /* a cable a post let go */
-            fprintf(f, "    %8.4f s  %-19s %s %d lets cable %d go\n", e->t, cs_event_type_name(e->type),
-                    cs_element_kind_name(e->element_kind), e->element, e->cable);
+            fprintf(f, "    %8.*f s  %-19s %s %d lets cable %d go\n", places, e->t,
+                    cs_event_type_name(e->type), cs_element_kind_name(e->element_kind), e->element, e->cable);
         else if (e->post >= 0) /* a rope broken at a threaded post's hole */
-            fprintf(f, "    %8.4f s  %-19s %s %d at post %d's hole\n", e->t, cs_event_type_name(e->type),
-                    cs_element_kind_name(e->element_kind), e->element, e->post);
+            fprintf(f, "    %8.*f s  %-19s %s %d at post %d's hole\n", places, e->t,
+                    cs_event_type_name(e->type), cs_element_kind_name(e->element_kind), e->element, e->post);
         else if (e->cable_end >= 0) /* a termination event: the rope end that slipped or let go */
-            fprintf(f, "    %8.4f s  %-19s %s %d at the %s anchor\n", e->t, cs_event_type_name(e->type),
-                    cs_element_kind_name(e->element_kind), e->element, cs_event_cable_end_name(e));
+            fprintf(f, "    %8.*f s  %-19s %s %d at the %s anchor\n", places, e->t,
+                    cs_event_type_name(e->type), cs_element_kind_name(e->element_kind), e->element,
+                    cs_event_cable_end_name(e));
         else
-            fprintf(f, "    %8.4f s  %-19s %s %d\n", e->t, cs_event_type_name(e->type),
+            fprintf(f, "    %8.*f s  %-19s %s %d\n", places, e->t, cs_event_type_name(e->type),
                     cs_element_kind_name(e->element_kind), e->element);
     }
     if (hinges + footings)
         fprintf(
             f,
             "  posts yielding       %d plastic hinge%s at the base, %d footing%s turning in the soil (the "
-            "first at %.4f s, post %d)\n",
-            hinges, hinges == 1 ? "" : "s", footings, footings == 1 ? "" : "s", first_yield.t,
+            "first at %.*f s, post %d)\n",
+            hinges, hinges == 1 ? "" : "s", footings, footings == 1 ? "" : "s", places, first_yield.t,
             first_yield.element);
     else
         fprintf(f, "  posts yielding       none\n");
@@ -71,13 +84,16 @@ static void events(FILE *f, const cs_state *state) {
 static void sudden_losses(FILE *f, const cs_state *state, const cs_summary *s) {
     cs_sudden_loss losses[CS_SUDDEN_LOSS_KEPT] = {{.size = sizeof losses[0]}};
     int n = cs_state_sudden_losses(state, losses, CS_SUDDEN_LOSS_KEPT, NULL);
-    for (int k = 0; k < n; k++)
+    for (int k = 0; k < n; k++) {
+        char t0[CS_TIME_TEXT_SIZE], t1[CS_TIME_TEXT_SIZE];
         fprintf(
             f,
             "  WARNING sudden loss: force on the vehicle fell from %.1f kN (%.1f kip) to %.1f kN (%.1f kip) "
-            "between %.4f and %.4f s with no rope, fitting or attachment failing\n",
+            "between %s and %s s with no rope, fitting or attachment failing\n",
             losses[k].force_before_n / 1e3, losses[k].force_before_n / CS_KIP, losses[k].force_after_n / 1e3,
-            losses[k].force_after_n / CS_KIP, losses[k].t_start_s, losses[k].t_end_s);
+            losses[k].force_after_n / CS_KIP, cs_time_text(losses[k].t_start_s, t0),
+            cs_time_text(losses[k].t_end_s, t1));
+    }
     if (s->sudden_loss_count > n)
         fprintf(f, "  WARNING sudden loss: %d more such windows\n", s->sudden_loss_count - n);
 }
@@ -186,12 +202,12 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
     for (int c = 0; c < s.cable_count; c++) {
         cs_cable_summary cb = {.size = sizeof cb};
         cs_state_cable_summary(state, c, &cb, NULL);
-        fprintf(
-            f,
-            "  cable %-2d             peak %.1f kN (%.1f kip) at %.4f s; work on the vehicle %.1f kJ (%.0f "
-            "ft-kip), %.1f%% of its kinetic energy taken\n",
-            c, cb.peak_tension_n / 1e3, cb.peak_tension_n / CS_KIP, cb.peak_tension_time_s,
-            cb.work_on_vehicle_j / 1e3, cb.work_on_vehicle_j / (CS_KIP * CS_FT), 100.0 * cb.energy_share);
+        fprintf(f,
+                "  cable %-2d             peak %.1f kN (%.1f kip) at %s s; work on the vehicle %.1f kJ (%.0f "
+                "ft-kip), %.1f%% of its kinetic energy taken\n",
+                c, cb.peak_tension_n / 1e3, cb.peak_tension_n / CS_KIP,
+                cs_time_text(cb.peak_tension_time_s, tt), cb.work_on_vehicle_j / 1e3,
+                cb.work_on_vehicle_j / (CS_KIP * CS_FT), 100.0 * cb.energy_share);
     }
     fprintf(f, "  cables broken        %d of %d\n", s.cables_broken, in->barrier.cable_count);
     fprintf(f,

@@ -37,10 +37,11 @@ void cs_validate_csv_row(FILE *csv, const char *suite, const char *name, const c
             m->max_barrier_deflection_m, m->working_width_m, angle, beyond);
 }
 
-/* The largest penetration; for a run that got through, how far it had got when the run ended: the
- * penetration is beyond it (the summary's max_dynamic_penetration_m is null there). */
+/* The largest penetration; for a run that got through or ended still going (its time limit, its solve
+ * budget), how far it had got when the run ended: the penetration is beyond it (summary.json's
+ * max_dynamic_penetration_m is null there, its penetration_beyond_m that value). */
 const char *cs_validate_penetration_text(const cs_summary *m, char *buf, size_t n) {
-    snprintf(buf, n, "%s%.2f m", cs_outcome_through(m->outcome) ? "beyond " : "",
+    snprintf(buf, n, "%s%.2f m", cs_penetration_is_final(m->outcome) ? "" : "beyond ",
              m->max_dynamic_penetration_m);
     return buf;
 }
@@ -67,9 +68,10 @@ static double refinement_table(FILE *md, FILE *csv, const cs_validate_suite *s, 
             char exit[32] = "-";
             if (cs_outcome_through(r->sm.outcome))
                 snprintf(exit, sizeof exit, "%.2f m/s", r->sm.exit_speed_mps);
-            fprintf(md, "| %s | %s | %s | %.3f g | %.3f m | %s | %.2f%% |\n", cs_validate_crash_names[k],
+            fprintf(md, "| %s | %s | %s | %.3f g | %s%.3f m | %s | %.2f%% |\n", cs_validate_crash_names[k],
                     values[d], cs_outcome_name(r->sm.outcome), r->sm.max_50ms_decel_g,
-                    r->sm.max_dynamic_penetration_m, exit, 100.0 * r->sm.energy_balance_error);
+                    cs_penetration_is_final(r->sm.outcome) ? "" : "beyond ", r->sm.max_dynamic_penetration_m,
+                    exit, 100.0 * r->sm.energy_balance_error);
             char variant[64];
             snprintf(variant, sizeof variant, "%s %s", cs_validate_refinements[t].setting, values[d]);
             cs_validate_csv_row(csv, "convergence", cs_validate_crash_names[k], variant, r);
@@ -428,9 +430,10 @@ static void road_row(FILE *md, const char *name, const char *what, const cs_vali
     char exit[48] = "-";
     if (cs_outcome_exits(m->outcome))
         snprintf(exit, sizeof exit, "%.1f km/h at %.1f deg", m->exit_speed_mps * 3.6, m->exit_angle_deg);
-    fprintf(md, "| %s | %s | %s | %.2f m (%.1f ft) | %.2f m | %s | %d | %d |%s\n", name, what,
+    fprintf(md, "| %s | %s | %s | %.2f m (%.1f ft) | %.2f m (%.1f ft) | %s | %d | %d |%s\n", name, what,
             cs_outcome_name(m->outcome), m->max_barrier_deflection_m, m->max_barrier_deflection_m / CS_FT,
-            m->working_width_m, exit, r->released, m->posts_failed_left + m->posts_failed_right, more);
+            m->working_width_m, m->working_width_m / CS_FT, exit, r->released,
+            m->posts_failed_left + m->posts_failed_right, more);
 }
 
 void cs_validate_write_roadside(FILE *md, FILE *csv, const cs_validate_suite *s) {
