@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Vehicle: free rolling (speed kept, or lost at mu_r g), settling on the tyres after a drop (static
+/* Vehicle: free rolling (speed kept, or lost at mu_r g), a sideways slip against the tyres' cornering
+ * stiffness and friction, settling on the tyres after a drop (static
  * equilibrium at the design ride height), an undamped bounce against its closed form (second order in
  * dt), a centred head-on impact that makes no yaw, and the turn between two poses (the rotation
  * vector the step's work on the barrier is taken over). */
@@ -51,6 +52,47 @@ static void rolling_freely_keeps_its_speed(void **state) {
     CHECK_REL(fx.scenario.speed - v3_norm_test(s->vel), 0.01 * fx.scenario.gravity * 1.0, 1e-3);
     cs_state_free(s);
     cs_model_free(m);
+}
+
+/* The truck of open_road rolling at V with a sideways velocity v_s added across its heading (its ledger
+ * told of the energy added). Over its second and third steps (the first kicks with the accelerations found
+ * before v_s was added; later the body rolls on its tyres, which moves their contacts) the tyres push back
+ * with the cornering force of their slip angle, in all mu m g v_s / sqrt(v_s^2 + (mu V / c)^2), c the
+ * cornering stiffness over the load per radian (the loads sum to m g and their moments about the CG
+ * cancel: no yaw). At a small angle that is c m g v_s / V, the stiffness; at 11 degrees most of mu m g,
+ * saturating. With Coulomb friction alone (mu N at any slip over 0.05 m/s) both would be mu m g. */
+static double sideways(fixture *fx, double vs0) {
+    fx->vehicle.rolling_resistance = 0.0;
+    cs_model *m = model_for(fx);
+    cs_state *s = cs_state_create(m, NULL);
+    double v = v3_norm_test(s->vel), side[3] = {-s->vel[1] / v, s->vel[0] / v, 0.0}, h = m->scenario.dt,
+           at[2];
+    for (int k = 0; k < 2; k++)
+        s->vel[k] += vs0 * side[k];
+    s->e_initial_kinetic += 0.5 * fx->vehicle.mass * vs0 * vs0;
+    for (int k = 0; k < 2; k++) {
+        run_until(m, s, (1 + 2 * k) * h);
+        at[k] = s->vel[0] * side[0] + s->vel[1] * side[1];
+    }
+    cs_state_free(s);
+    cs_model_free(m);
+    return (at[0] - at[1]) / (2.0 * h);
+}
+
+static void a_rolling_tyre_corners_at_its_stiffness(void **state) {
+    (void)state;
+    fixture fx;
+    open_road(&fx);
+    const double c = 0.15 * 180.0 / CS_PI, mu = fx.vehicle.tyre_friction, g = fx.scenario.gravity,
+                 v = fx.scenario.speed;
+    const double across[2] = {0.1, 0.2 * v};
+    for (int k = 0; k < 2; k++) {
+        double got = sideways(&fx, across[k]);
+        double want = mu * g * across[k] / sqrt(across[k] * across[k] + pow(mu * v / c, 2));
+        printf("%.2f m/s across at %.2f m/s: %.4f m/s^2 (%.4f by hand; c g v_s / V %.4f, mu g %.3f)\n",
+               across[k], v, got, want, c * g * across[k] / v, mu * g);
+        CHECK_REL(got, want, 0.01);
+    }
 }
 
 /* The 50-ms average deceleration of a run that ends before its first window is full: the window from
@@ -244,6 +286,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(rolling_freely_keeps_its_speed),
         cmocka_unit_test(short_run_has_its_window_average),
+        cmocka_unit_test(a_rolling_tyre_corners_at_its_stiffness),
         cmocka_unit_test(dropped_vehicle_settles_on_its_tyres),
         cmocka_unit_test(a_tyre_held_off_by_its_damper_keeps_the_ledger),
         cmocka_unit_test(undamped_bounce_converges_at_second_order),

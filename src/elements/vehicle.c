@@ -2,8 +2,9 @@
 /* The vehicle: a rigid body in 6 degrees of freedom on four tyres, with a crushable front face.
  *
  * Forces: gravity; each tyre a vertical spring-damper at its contact point (stiffness from the static
- * axle load and a static deflection), with rolling resistance along the wheel's heading and regularised
- * Coulomb friction across it, F = -mu N v / sqrt(v^2 + v_reg^2); the barrier's resultant force and
+ * axle load and a static deflection), with rolling resistance along the wheel's heading and, across
+ * it, the tyre's cornering force: its cornering stiffness times its slip angle at small angles, the
+ * friction's mu N when it slides (tyre_force); the barrier's resultant force and
  * moment from the quasi-static solve at the pose. Integration is velocity Verlet (kick-drift-kick,
  * second order in dt): v += a dt / 2 with the forces at the step's start, x += v dt, the barrier
  * solved at the new pose, v += a dt / 2 with the forces there; the same for Euler's equations in the
@@ -37,6 +38,9 @@ void cs_vehicle_derive(const cs_vehicle_def *v, double g, cs_vehicle_model *vm) 
 }
 
 #define CS_TYRE_VREG 0.05 /* m/s: slip speed over which tyre friction builds up to mu N */
+/* A rolling tyre's cornering stiffness over its load, per radian of slip angle: 0.15 per degree, the
+ * middle of radial tyres' 11-19% (Gillespie 1992, Fundamentals of Vehicle Dynamics; docs/assumptions.md). */
+#define CS_TYRE_CORNERING (0.15 * 180.0 / CS_PI)
 
 static void body_to_world(const cs_state *s, const double *body, double *world) {
     quat_rotate(world, s->quat, body);
@@ -113,7 +117,11 @@ static void tyre_force(const cs_model *model, const cs_state *s, int w, double *
     double side[3] = {-fwd[1], fwd[0], 0.0};
     double vf = v3_dot(v, fwd), vs = v3_dot(v, side);
     double ff = -vm->def.rolling_resistance * n * vf / sqrt(vf * vf + CS_TYRE_VREG * CS_TYRE_VREG);
-    double fs = -vm->def.tyre_friction * n * vs / sqrt(vs * vs + CS_TYRE_VREG * CS_TYRE_VREG);
+    /* across: c N tan(alpha) at a small slip angle (tan(alpha) = vs / |vf|), saturating at the friction's
+     * mu N, as F = -mu N vs / sqrt(vs^2 + vr^2) with vr = mu |vf| / c (never below the regularising speed,
+     * which a sliding or standing tyre keeps) */
+    double mu = vm->def.tyre_friction, vr = fmax(CS_TYRE_VREG, mu * fabs(vf) / CS_TYRE_CORNERING);
+    double fs = -mu * n * vs / sqrt(vs * vs + vr * vr);
     v3_set(f, ff * fwd[0] + fs * side[0], ff * fwd[1] + fs * side[1], n);
     /* friction, and the damper's c v_z^2 whether the tyre is compressing or extending (n > 0 here) */
     *power += -(ff * vf + fs * vs) + vm->tyre_c[w] * v[2] * v[2];
