@@ -205,9 +205,10 @@ void cs_validate_write_convergence(FILE *md, FILE *csv, const cs_validate_suite 
                defl = fmax(half.change[0], by_fine.change[0]);
         if (round(10.0 * exit) / 10.0 >= 2.0)
             fprintf(md,
-                    "An exit that moves more follows a rope's release decided by a hair (a slot's open end "
-                    "missed by under a milliradian of lean, a hook's hold by a few newtons) and the releases "
-                    "after it: docs/theory.md, Known limitations: the roadside tests.\n");
+                    "An exit that moves more follows a change in which ropes the slots and hooks let go, and "
+                    "when: each release is a threshold of a post's lean or a rope's pull, which a run near "
+                    "it takes or misses as the step changes, and the releases after it follow: "
+                    "docs/theory.md, Known limitations: the roadside tests.\n");
         if (round(10.0 * defl) / 10.0 >= 2.0)
             fprintf(md, "A deflection that moves more with the step is not converged: read it as uncertain "
                         "(docs/theory.md, Known limitations: the roadside tests).\n");
