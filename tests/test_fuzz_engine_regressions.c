@@ -5,15 +5,15 @@
  * the solver's work counter (solver/work.h, in rows evaluated) at most the run's work budget plus what
  * one pass of the solver can add once it is spent (one Newton solve over every unknown the model can
  * have). The work is asserted, never the time (no timed test); ctest gives the test a timeout of 30 s in
- * a plain build (CMakeLists.txt), where it takes about 0.6 s of CPU.
+ * a plain build (CMakeLists.txt), where it takes about 1.5 s of CPU.
  *
  * slow-fallback-ced48187 (input `4d c9`): 1 rope of 1.09 in, 7 posts at 11.1 ft, 4 rails, a 5,958-lb vehicle
- * at 26.3 mph and 88 deg. From 0.0925 s its solves begin to fail to Newton and go through the fallback's
- * sweeps (71 of its 319 solves), and steps are cut into pieces: about 400 Newton passes over its unknowns a
- * solve, where a run's median is 2 a step. On the default budget it breaks through at 0.1305 s on 0.37 of
- * it (7 solver warnings). It is kept to hold a run that its work ends: every slow-* input runs on a tenth
- * of the default budget, on which it ends did_not_converge at 0.1095 s (236 solves), in every build (the
- * sanitizers, about 20 times slower, take that tenth for every input).
+ * at 26.3 mph and 88 deg (stress design 19913). From about 0.1 s its solves fail to Newton and go through
+ * the fallback's sweeps, and steps are cut into pieces, where a run's median is 2.5 passes a step. On the
+ * default budget it spends the whole of it and ends did_not_converge at 0.1345 s (413 solves, 12,004
+ * sweeps). It is kept to hold a run that its work ends: every slow-* input runs on a tenth of the default
+ * budget, on which it ends did_not_converge at 0.111 s (239 solves), in every build (the sanitizers, about
+ * 20 times slower, take that tenth for every input).
  *
  * fallback-2040a4aa (input `be 00`): 2 ropes of 1.72 in, 10 posts at 10.7 ft, 1 rail, a 9,034-lb vehicle
  * at 34.2 mph and 74 deg, a post sliding out of its footing by the impact: it runs to its time limit
