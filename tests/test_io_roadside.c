@@ -385,11 +385,11 @@ static void a_rope_sliding_down_the_face_holds_coulombs_ratio(void **state) {
 }
 
 /* A post's ring dies at its damper's rate (docs/theory.md, Posts with mass, "The post's damper"). RS5's
- * post 22 keeps cable 1 in its slot, leaning near the slot's open end, and the releases near it at
- * 0.47-0.49 s set it ringing on its spring. Its rate's swing (half its range over a 16-ms window, about a
- * cycle) from 0.56 s to 0.684 s falls as a free ring's, exp(-zeta wn t), zeta wn = c / 2J: measured
- * against that within a factor of 1.25 either way (the ropes and the pickup drive it a little). Without a
- * damper the ring kept its swing to 0.87 s. */
+ * post 22 keeps cables 0 and 1 in its slot, leaning near the slot's open end, and the releases near it at
+ * 0.41-0.52 s (its own cable 2, posts 21 and 23) set it ringing on its spring. Its rate's swing (half its
+ * range over a 16-ms window, about a cycle) from 0.56 s to 0.684 s falls as a free ring's, exp(-zeta wn
+ * t), zeta wn = c / 2J: measured against that within a factor of 1.25 either way (the ropes and the pickup
+ * drive it a little; 0.100 of it against 0.122). */
 static void a_post_ring_dies_at_its_damping_rate(void **state) {
     (void)state;
     cs_loader *l;
