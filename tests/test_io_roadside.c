@@ -251,12 +251,11 @@ static cs_state *at_rest(const char *example, cs_loader **l, cs_model **m) {
     return s;
 }
 
-/* RS1's lowest rope stays on the pickup's face through the turn. As the face turns along it (0.409 s)
- * the corner lets it go, 7 cm above the face's bottom edge (0.501 m against 0.426 m), and finds itself
- * across it again in the same update: the corner takes it back where it held it. Judged by the joined
- * span's chord there (18 mm below the edge), which is no rope's height, it would have been declared run
- * over (override). Later, as the pickup leaves (0.9145 s), the rope slides down the face past its edge:
- * that is a slip of its own, and outside the half second stepped here. */
+/* RS1's lowest rope stays on the pickup's face through the turn. Where the face turns along it, a corner
+ * that lets it go above the face's bottom edge finds itself across it again in the same update and takes
+ * it back where it held it, at its own height. Judged by the joined span's chord there, which runs below
+ * the edge and is no rope's height, it would be declared run over (override): no override comes in the
+ * half second stepped here. */
 static void a_rope_let_go_and_taken_back_keeps_its_height(void **state) {
     (void)state;
     cs_loader *l;
