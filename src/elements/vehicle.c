@@ -118,8 +118,8 @@ static void tyre_force(const cs_model *model, const cs_state *s, int w, double *
     double vf = v3_dot(v, fwd), vs = v3_dot(v, side);
     double ff = -vm->def.rolling_resistance * n * vf / sqrt(vf * vf + CS_TYRE_VREG * CS_TYRE_VREG);
     /* across: c N tan(alpha) at a small slip angle (tan(alpha) = vs / |vf|), saturating at the friction's
-     * mu N, as F = -mu N vs / sqrt(vs^2 + vr^2) with vr = mu |vf| / c (never below the regularising speed,
-     * which a sliding or standing tyre keeps) */
+     * mu N, as F = -mu N vs / sqrt(vs^2 + vr^2) with vr = mu |vf| / c (never below the regularising speed:
+     * a tyre rolling slower than c v_reg / mu, 0.6 m/s, keeps smooth Coulomb friction) */
     double mu = vm->def.tyre_friction, vr = fmax(CS_TYRE_VREG, mu * fabs(vf) / CS_TYRE_CORNERING);
     double fs = -mu * n * vs / sqrt(vs * vs + vr * vr);
     v3_set(f, ff * fwd[0] + fs * side[0], ff * fwd[1] + fs * side[1], n);
