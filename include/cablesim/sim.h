@@ -221,7 +221,8 @@ typedef enum cs_cable_status {
     CS_CABLE_INTACT = 0, /**< holding */
     CS_CABLE_BROKEN,     /**< broken along a span or at an end fitting */
     CS_CABLE_RELEASED,   /**< let go by an anchor that pulled out */
-    CS_CABLE_SLIPPED     /**< slipped over or under the vehicle */
+    CS_CABLE_SLIPPED     /**< the vehicle went over or under it: holding, anchored and strung over its posts,
+                              out of contact with the vehicle */
 } cs_cable_status;
 
 /** A cable now. */
@@ -241,6 +242,8 @@ CS_API cs_status cs_state_cable(const cs_model *model, const cs_state *state, in
                                 cs_error *err);
 /** A cable status's name: "intact", "broken", "released", "slipped". */
 CS_API const char *cs_cable_status_name(cs_cable_status status);
+/** 1 if a cable of this status is in the barrier, anchored and holding (intact, or passed by the vehicle). */
+CS_API int cs_cable_status_holds(cs_cable_status status);
 /** Copy up to capacity path points (x, y, z triplets, m) and span tensions (node_count - 1 of them, N).
  * @return the number of points copied. */
 CS_API int cs_state_cable_path(const cs_model *model, const cs_state *state, int cable, double *xyz,

@@ -89,7 +89,7 @@ function main() {
     const t = f[0];
     const k = indexAt(S.t, t);
     const failed = data.barrier.posts.filter((_, p) => postState(f[2][4 * p + 3]) === 'failed').length;
-    const cableState = ['intact', 'broken', 'released', 'slipped off'].map((word, s) => [f[3].filter((c) => c[0] === s).length, word]);
+    const cableState = ['intact', 'broken', 'released', 'passed over or under'].map((word, s) => [f[3].filter((c) => c[0] === s).length, word]);
     const latest = rows.filter((r) => r.t <= t + 1e-9).pop();
     const lines = [
       ['t', seconds(t)],

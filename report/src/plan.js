@@ -100,12 +100,12 @@ export function picture(data, fr, view, f) {
     const tip = top ? [tx, ty] : [ty, tz];
     g.append(svg('polyline', { points: pts(f, [base, tip]), stroke: POST_COLORS[postState(st)], 'stroke-width': 1.6, fill: 'none' }));
   }
-  // cables: intact dark, others dashed grey
+  // cables: holding (intact, or passed over or under by the vehicle) dark, let go dashed grey
   for (const c of fr[3]) {
     const xyz = c[2];
     const line = [];
     for (let i = 0; i + 2 < xyz.length; i += 3) line.push(top ? [xyz[i], xyz[i + 1]] : [xyz[i + 1], xyz[i + 2]]);
-    const intact = c[0] === 0;
+    const intact = c[0] === 0 || c[0] === 3;
     g.append(svg('polyline', { points: pts(f, line), fill: 'none', stroke: intact ? '#0d3f99' : '#999', 'stroke-width': intact ? 1.1 : 0.8, 'stroke-dasharray': intact ? '' : '3 2' }));
   }
   const pose = fr[1];

@@ -231,7 +231,7 @@ function specs(data) {
       key: 'cables',
       title: 'Cable tensions',
       caption:
-        'Tension of each cable (its most loaded span). A cable breaks when its rope reaches its breaking strain (red ×, at the dashed rope strength Fu or beyond); a triangle marks where the vehicle rode over a cable (it slipped under the bumper) and stopped loading it.',
+        'Tension of each cable (its most loaded span). A cable breaks when its rope reaches its breaking strain (red ×, at the dashed rope strength Fu or beyond); a triangle marks where the vehicle rode over a cable (it slipped under the bumper) and a diamond where it ran under one: from there the vehicle no longer loads it, and the cable stays on its posts and anchors.',
       data: [t, ...cols],
       series,
       axes: [timeAxis, { label: 'tension (kN)' }, otherAxis('tension (kip)', 1e3 / KIP, 0)],

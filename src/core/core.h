@@ -147,6 +147,8 @@ struct cs_model {
 typedef struct cs_cable_state {
     cs_cable_status status;
     int engaged;
+    int passed; /* the vehicle went over or under it (override, underride): it stays anchored and strung
+                   over its posts, out of contact with the vehicle for good (contact.c) */
     int node_count;
     int *node;                          /* [max_nodes] */
     int *where;                         /* [post_count] index of each post in node[], -1 if not on the path */

@@ -113,6 +113,10 @@ const char *cs_cable_status_name(cs_cable_status st) {
     return "unknown";
 }
 
+int cs_cable_status_holds(cs_cable_status st) {
+    return st == CS_CABLE_INTACT || st == CS_CABLE_SLIPPED;
+}
+
 const char *cs_post_status_name(cs_post_status st) {
     switch (st) {
     case CS_POST_ELASTIC:
@@ -145,10 +149,10 @@ static void hash_bytes(unsigned long long *h, const void *data, size_t n) {
 }
 
 /* FNV-1a over the bytes of every number that evolves: the vehicle, each cable's path, plastic strain,
- * status, engagement and face contacts, each post's tilt, plastic rotation, swing (rate, acceleration,
- * net moment, damper), status, what pushes a struck one and its slide out of its footing (with its
- * rate and net pull), the rails, each anchor's movement, its rate, acceleration, net force
- * and status, the ledger and the events (field by field: no struct padding). */
+ * status, engagement, whether the vehicle passed it and its face contacts, each post's tilt, plastic
+ * rotation, swing (rate, acceleration, net moment, damper), status, what pushes a struck one and its slide
+ * out of its footing (with its rate and net pull), the rails, each anchor's movement, its rate, acceleration,
+ * net force and status, the ledger and the events (field by field: no struct padding). */
 unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
     unsigned long long h = CS_FNV1A64_BASIS;
     hash_bytes(&h, &s->t, sizeof s->t);
@@ -160,7 +164,7 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
     hash_bytes(&h, &s->crush_max, sizeof s->crush_max);
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
-        int flags[2] = {(int)cs->status, cs->engaged};
+        int flags[3] = {(int)cs->status, cs->engaged, cs->passed};
         hash_bytes(&h, flags, sizeof flags);
         hash_bytes(&h, cs->node, (size_t)cs->node_count * sizeof *cs->node);
         hash_bytes(&h, cs->m, (size_t)cs->node_count * sizeof *cs->m); /* the ends' m: their slip too */

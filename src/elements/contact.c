@@ -19,7 +19,8 @@
  * the corner is an unknown of the barrier solve with Coulomb friction on the vertical body: it sticks
  * while the spans' pull along the body is at most mu times their pull into it, else it slides with the
  * pull (its row below). A contact that slides past an edge slips off the vehicle for good (override or
- * underride). */
+ * underride): the vehicle passes over or under the rope, which stays anchored and strung over its posts,
+ * out of contact with the vehicle. */
 #include "core/vec3.h"
 #include "elements/rows.h"
 
@@ -72,20 +73,40 @@ void cs_contact_face_force(const cs_model *model, const cs_state *s, int c, int 
     (void)model;
 }
 
-/* Cable c leaves the vehicle for good, taking with it the energy it held at its last solve, `held`
- * (the work the vehicle did on it since is booked with it by the step: docs/theory.md, Energy ledger,
- * "A rope that slips off the face"). */
-static void slip(const cs_model *model, cs_state *s, int c, cs_event_type why, double held) {
+/* The sag term q of span i (cs_span_sag): the sag's weight below its chord is -q / (12 T). */
+static double sag_of(const cs_cable_model *cm, const cs_cable_state *cs, int i) {
+    double d[4];
+    cs_span_chord(cs, i, d);
+    return cs_span_sag(&cm->rope, d);
+}
+
+/* Let go the corner at node i of a rope: its two spans join. Returns the change of the sag's reference
+ * this makes, to be booked with the released energy: the joined chord at the tension the left span had,
+ * which the joined span keeps until the next solve (docs/theory.md, The vehicle's outline and contact at an
+ * angle, "Engaging"). */
+static double let_go(const cs_cable_model *cm, cs_cable_state *cs, int i) {
+    double t = cs->tension[i - 1], split = sag_of(cm, cs, i - 1) + sag_of(cm, cs, i);
+    cs_cable_remove_node(cs, i);
+    return t > 0.0 ? (sag_of(cm, cs, i - 1) - split) / (12.0 * t) : 0.0;
+}
+
+/* The vehicle goes over or under cable c (why: override or underride), for good: every corner lets it go
+ * and it stays in the barrier, anchored and strung over its posts, where the next solve finds its
+ * tensions (docs/theory.md, Energy ledger, "A rope that slips off the face"). Returns the change of the
+ * sag's reference the corners let go make. */
+static double slip(const cs_model *model, cs_state *s, int c, cs_event_type why) {
     cs_cable_state *cs = &s->cables[c];
-    s->e_released += held;
+    double reference = 0.0;
     for (int i = cs->node_count - 2; i >= 1; i--)
-        if (cs_node_is_corner(cs->node[i])) cs_cable_remove_node(cs, i);
-    cs_cable_release(cs, CS_CABLE_SLIPPED);
+        if (cs_node_is_corner(cs->node[i])) reference += let_go(&model->cables[c], cs, i);
+    cs->engaged = 0;
+    cs->passed = 1;
     cs_event_add(model, s, why, CS_ELEMENT_CABLE, c, s->t);
     if (!s->contact_started) { /* the vehicle met the cable, if only to pass it */
         s->contact_started = 1;
         s->summary.first_contact_time_s = s->t;
     }
+    return reference;
 }
 
 void cs_contact_place_one(const cs_model *model, cs_state *s, int c, int i, int k, double z) {
@@ -125,26 +146,18 @@ static int wraps(const cs_state *s, const cs_cable_state *cs, int i, int k) {
     return out_end < 0.0 && out_side <= 1e-12;
 }
 
-/* The sag term q of span i (cs_span_sag): the sag's weight below its chord is -q / (12 T). */
 /* How far across a rope's path a rear corner can come in one step: three times the vehicle's travel in
  * it, at least 5 cm (a corner turning with the body moves little more than the body). */
 static double rear_reach(const cs_model *model, const cs_state *s) {
     return fmax(0.05, 3.0 * v3_norm(s->vel) * model->scenario.dt);
 }
 
-static double sag_of(const cs_cable_model *cm, const cs_cable_state *cs, int i) {
-    double d[4];
-    cs_span_chord(cs, i, d);
-    return cs_span_sag(&cm->rope, d);
-}
-
 static void update_cable(const cs_model *model, cs_state *s, int c) {
     cs_cable_state *cs = &s->cables[c];
-    /* what the rope holds as last solved, and the changes of the sag's reference made below: a rope that
-     * slips off takes the first, on the path it was solved on; the second belong to a path it keeps
-     * (a corner let go joins its two spans at one tension until the next solve, which a slip would
-     * release with the spans' difference, (T_l^2 - T_r^2) s_r / 2EA) */
-    double held = cs_cable_stored_energy(&model->cables[c], cs), reference = 0.0;
+    /* the changes of the sag's reference made below (a corner let go joins its two spans at one tension
+     * until the next solve: joined at once they would release the spans' difference, (T_l^2 - T_r^2) s_r /
+     * 2EA, more than the rope holds) */
+    double reference = 0.0;
     cs_contact_place_corners(model, s, s->crush);
     /* release the corners it no longer wraps, keeping where the rope was on each: a corner taken up again
      * below (its turn can point out through the side and back within an update, as on a rope rising from
@@ -157,10 +170,7 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
         int k = cs_node_corner(cs->node[i]);
         if (wraps(s, cs, i, k)) continue;
         released[k] = 1, was_m[k] = cs->m[i], was_m_commit[k] = cs->m_commit[i];
-        double t = cs->tension[i - 1],
-               split = sag_of(&model->cables[c], cs, i - 1) + sag_of(&model->cables[c], cs, i);
-        cs_cable_remove_node(cs, i);
-        if (t > 0.0) reference += (sag_of(&model->cables[c], cs, i - 1) - split) / (12.0 * t);
+        reference += let_go(&model->cables[c], cs, i);
     }
     /* engage corners that have crossed the path */
     for (int k = 0; k < CS_CORNERS; k++) {
@@ -192,7 +202,7 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
          * held it (its corner_z kept): the joined span's chord height there is no rope's height */
         if (!released[k] && (zn < lo || zn > hi)) {
             if (!cs_corner_front(k)) continue; /* below or above the side */
-            slip(model, s, c, zn < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE, held);
+            s->e_released += reference + slip(model, s, c, zn < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
             return;
         }
         if (!released[k]) cs->corner_z[k] = cs->corner_z_commit[k] = bz;
@@ -221,10 +231,10 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
     }
 }
 
-/* Bring every intact cable's path in line with the vehicle's new pose. */
+/* Bring the path of every intact cable the vehicle has not passed in line with the vehicle's new pose. */
 void cs_contact_update(const cs_model *model, cs_state *s) {
     for (int c = 0; c < model->cable_count; c++)
-        if (s->cables[c].status == CS_CABLE_INTACT) update_cable(model, s, c);
+        if (s->cables[c].status == CS_CABLE_INTACT && !s->cables[c].passed) update_cable(model, s, c);
 }
 
 /* End of step: friction work of contacts that slid along the face (|dz| |F_z|, F_z at the bound). */
@@ -244,7 +254,8 @@ void cs_contact_commit(const cs_model *model, cs_state *s) {
 }
 
 /* A contact that slid past its band's edge leaves the vehicle: the cable slips off (below: the vehicle
- * rides over it; above: it runs under it). Returns 1 if any did. */
+ * rides over it; above: it runs under it) and stays in the barrier. The failures' re-solve that follows
+ * books what the rope lets go of (step.c). Returns 1 if any did. */
 int cs_contact_check_slip(const cs_model *model, cs_state *s) {
     int any = 0;
     for (int c = 0; c < model->cable_count; c++) {
@@ -256,8 +267,7 @@ int cs_contact_check_slip(const cs_model *model, cs_state *s) {
             double z = cs->corner_z[k], lo, hi;
             cs_vehicle_corner_band(model, k, &lo, &hi);
             if (z >= lo && z <= hi) continue;
-            slip(model, s, c, z < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE,
-                 cs_cable_stored_energy(&model->cables[c], cs));
+            slip(model, s, c, z < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
             any = 1;
             break;
         }

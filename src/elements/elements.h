@@ -118,7 +118,7 @@ void cs_termination_commit(const cs_model *model, int c, cs_state *s);
 /* The rope's end brought within its diameter of the hole of the post next to its anchor: that post leaves the
  * rope's path (termination_at_post). Returns 1 if any did. */
 int cs_termination_check_post(const cs_model *model, int c, cs_state *s);
-/* The cable carries nothing from now on (broken, released by its anchor, slipped off the face). */
+/* The cable carries nothing from now on (broken, or released by its anchor). */
 void cs_cable_release(cs_cable_state *cs, cs_cable_status status);
 double cs_cable_stored_energy(const cs_cable_model *cm, const cs_cable_state *cs);
 void cs_node_force(const cs_cable_state *cs, int i, const double *chords, double *f);

@@ -256,8 +256,8 @@ static void end_run(const cs_model *model, cs_state *s, cs_outcome outcome, doub
     }
 }
 
-/* How the vehicle got through: over or under every cable, if every cable it left behind slipped off it
- * (none broke or was let go by an anchor), by the way most did; else it broke through. */
+/* How the vehicle got through: over or under every cable, if it passed every cable it left behind that way
+ * (none broke or was let go by an anchor), by the way it passed most; else it broke through. */
 static cs_outcome through_how(const cs_model *model, const cs_state *s) {
     int over = 0, under = 0;
     for (int c = 0; c < model->cable_count; c++)
@@ -301,7 +301,7 @@ void cs_response_update(const cs_model *model, cs_state *s) {
         engaged += s->posts[p].captured && cs_post_in_barrier(&s->posts[p]) && s->posts[p].bearing;
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
-        intact += cs->status == CS_CABLE_INTACT;
+        intact += cs->status == CS_CABLE_INTACT && !cs->passed; /* one the vehicle can still meet */
         engaged += cs->status == CS_CABLE_INTACT && cs->engaged;
         if (cs->max_tension_seen > sm->max_cable_tension_n) sm->max_cable_tension_n = cs->max_tension_seen;
         for (int i = 0; cs->status == CS_CABLE_INTACT && i < cs->node_count; i++)

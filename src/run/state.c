@@ -150,7 +150,7 @@ cs_status cs_state_cable(const cs_model *model, const cs_state *s, int c, cs_cab
         return no_such(err, "cs_cable_view", "cable", c, model->cable_count);
     const cs_cable_state *cs = &s->cables[c];
     cs_cable_view full = {.size = sizeof full}, *out = &full;
-    out->status = cs->status;
+    out->status = cs->status == CS_CABLE_INTACT && cs->passed ? CS_CABLE_SLIPPED : cs->status;
     out->engaged = cs->engaged;
     out->node_count = cs->node_count;
     for (int i = 0; cs->status == CS_CABLE_INTACT && i + 1 < cs->node_count; i++) {

@@ -29,6 +29,7 @@ static void reset_cable(const cs_model *model, int c, cs_cable_state *cs) {
     const cs_cable_model *cm = &model->cables[c];
     cs->status = CS_CABLE_INTACT;
     cs->engaged = 0;
+    cs->passed = 0;
     cs->node_count = model->post_count + 2;
     cs->node[0] = CS_NODE_START;
     v3_set(cs->pos, model->anchors[0].x, 0.0, model->anchors[0].z);
@@ -143,8 +144,8 @@ void cs_state_reset(const cs_model *model, cs_state *s) {
  * changes, and book the stored energy that vanished (massless cable snapping, posts letting go, a
  * struck post leaving the ropes' paths) as released. */
 static double resolve_failures(const cs_model *model, cs_state *s, int *changed) {
-    /* what is released is the whole drop across the failures; a cable slipping off the face inside
-     * the loop books its own share too (contact.c), so restart from the total before the loop */
+    /* what is released is the whole drop across the failures, whatever the loop booked on its way
+     * (contact.c: the sag's reference of corners let go) */
     double before = cs_barrier_stored_energy(model, s), released = s->e_released;
     double worst = 0.0;
     *changed = 0;
@@ -201,18 +202,15 @@ static double work_on_barrier(const loaded_pose *a, const loaded_pose *b) {
 
 /* Each rope's share of it, with the sign turned: the work the rope does on the vehicle, added to its cable's
  * work_on_vehicle (from: each cable's push at pose a, force and moment; at b, its push now). The rule is
- * linear in the force, so the cables' shares and the struck posts' make the whole. A rope that slipped off
- * the vehicle before the solve at b (left[c]) pushes nothing there, and the work done on it over the
- * stretch leaves with it: released, with what it held at a (contact.c). */
+ * linear in the force, so the cables' shares and the struck posts' make the whole. */
 static void book_cable_work(const cs_model *model, cs_state *s, const loaded_pose *a, const loaded_pose *b,
-                            const double (*from)[6], const int *left) {
+                            const double (*from)[6]) {
     for (int c = 0; c < model->cable_count; c++) {
         loaded_pose ca = *a, cb = *b;
         v3_copy(ca.force, from[c]), v3_copy(ca.moment, from[c] + 3);
         v3_copy(cb.force, s->cables[c].push), v3_copy(cb.moment, s->cables[c].push + 3);
         double w = work_on_barrier(&ca, &cb);
         s->cables[c].work_on_vehicle -= w;
-        if (left[c]) s->e_released += w;
     }
 }
 
@@ -226,20 +224,15 @@ static void book_cable_work(const cs_model *model, cs_state *s, const loaded_pos
  * equilibrium on a branch the path never reached (a rope stretched to its strength with no work done on
  * it), sent back as a failed one is. Returns 1 if it committed, with the largest residual of the solves
  * it committed kept in s->work->solver_residual, the barrier's push at the pose as committed in `end`
- * (before any failure found there) and whether a failure then changed the barrier in *failed; left[c] says
- * whether cable c slipped off the vehicle as the pose was taken up, before the solve (contact.c). */
+ * (before any failure found there) and whether a failure then changed the barrier in *failed. */
 #define CS_PATH_TRIGGER 1e-2
 
 static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, double allowed,
-                       const loaded_pose *from, loaded_pose *end, int *failed, int *left) {
-    for (int c = 0; c < model->cable_count; c++)
-        left[c] = s->cables[c].status == CS_CABLE_INTACT;
+                       const loaded_pose *from, loaded_pose *end, int *failed) {
     double before = cs_barrier_stored_energy(model, s); /* 2. posts the vehicle has reached are struck */
     if (cs_post_capture(model, s, 1)) /* kept until the gap of the stretch it falls in is booked */
         s->work->struck = 1, s->e_released += before - cs_barrier_stored_energy(model, s);
-    cs_contact_update(model, s); /* cables wrap onto or leave the face (left: slipped off it) */
-    for (int c = 0; c < model->cable_count; c++)
-        left[c] &= s->cables[c].status != CS_CABLE_INTACT;
+    cs_contact_update(model, s);               /* cables wrap onto or leave the face, or slip past it */
     double worst = cs_barrier_solve(model, s); /* 3. posts, sliding and crush in equilibrium */
     if (allowed < HUGE_VAL) {                  /* the work done on it here */
         cs_barrier_force(model, s);
@@ -275,18 +268,16 @@ static int advance(const cs_model *model, cs_state *s, double h, int commit_anyw
         memcpy(pushes[c], s->cables[c].push, sizeof pushes[c]);
     s->h += h;                  /* the posts swing over the time since the last commit */
     cs_vehicle_integrate(s, h); /* 1. half a kick and a drift */
-    int failed = 0, left[CS_MAX_CABLES_PER_POST],
-        committed = follow_pose(model, s, commit_anyway, allowed, &from, &to, &failed, left);
+    int failed = 0, committed = follow_pose(model, s, commit_anyway, allowed, &from, &to, &failed);
     if (committed < 0) { /* the barrier as last committed, the time since then kept */
         double since = s->h;
         cs_state_restore_barrier(model, s, last), committed = 0;
         s->h = since;
-        memset(left, 0, sizeof left); /* the ropes that slipped are back */
     }
     if (!committed) cs_barrier_force(model, s), to = pose_of(s); /* 6. the barrier's push */
     v3_copy(s->force, to.force), v3_copy(s->moment, to.moment);
     *work += work_on_barrier(&from, &to);
-    book_cable_work(model, s, &from, &to, (const double(*)[6])pushes, left);
+    book_cable_work(model, s, &from, &to, (const double(*)[6])pushes);
     cs_vehicle_finish(model, s, h); /* the second half kick */
     if (failed) {                   /* the next step starts from the push the failures left */
         cs_barrier_force(model, s);

@@ -171,7 +171,7 @@ static void draw_view(cs_plot *p, const cs_figure_data *d, const snap_geometry *
     for (int c = 0; c < r->cable_count; c++) {
         size_t k = (size_t)f * (size_t)r->cable_count + (size_t)c;
         const double *xyz = path_xyz(r, f, c), *ten = r->path_tension + k * (size_t)r->max_nodes;
-        int intact = r->cables[k].status == CS_CABLE_INTACT;
+        int intact = cs_cable_status_holds(r->cables[k].status);
         for (int j = 0; j + 1 < r->path_count[k]; j++) {
             const double *p0 = xyz + 3 * j, *p1 = p0 + 3;
             cs_style s = intact ? line(cs_plot_colormap(ten[j] / g->tmax), 3) : dashed(GREY, 2);
@@ -228,7 +228,7 @@ void cs_fig_snapshots(cs_plot *p, const cs_figure_data *d, double *t) {
     cs_axes_init(&key, NULL, NULL, NULL);
     cs_axes_legend_add(&key, CS_LEGEND_AREA, &sf, "vehicle (schematic outline)");
     cs_axes_legend_add(&key, CS_LEGEND_LINE, &sv, "front face (crushed)");
-    cs_axes_legend_add(&key, CS_LEGEND_LINE, &sb, "cable not intact (broken, released, slipped off)");
+    cs_axes_legend_add(&key, CS_LEGEND_LINE, &sb, "cable let go (broken, or released by its anchor)");
     key.area = (cs_box){920, MARGIN + 40, 400, 100};
     cs_plot_legend(p, &key, CS_LEGEND_TOP_LEFT);
     for (int s = 0; s < g.count; s++) {

@@ -138,7 +138,7 @@ static void fig_penetration(cs_plot *p, const cs_figure_data *d, double *t) {
         cable[i] = NAN;
         for (int c = 0; c < nc; c++) {
             size_t k = (size_t)i * (size_t)nc + (size_t)c;
-            if (r->cables[k].status != CS_CABLE_INTACT) continue;
+            if (!cs_cable_status_holds(r->cables[k].status)) continue;
             for (int j = 0; j < r->path_count[k]; j++) {
                 double y = r->path_xyz[(k * (size_t)r->max_nodes + (size_t)j) * 3 + 1];
                 if (!(y <= cable[i])) cable[i] = y;

@@ -141,13 +141,13 @@ static double s_face(const cs_record *r, const cs_model_input *in, int f, int ar
     (void)in, (void)arg;
     return fmax(r->vehicle[f].front_corners[0][1], r->vehicle[f].front_corners[1][1]);
 }
-/* the furthest point of an intact cable (NaN: none intact) */
+/* the furthest point of a cable that holds (NaN: none does) */
 static double s_deflection(const cs_record *r, const cs_model_input *in, int f, int arg) {
     (void)in, (void)arg;
     double y = NAN;
     for (int c = 0; c < r->cable_count; c++) {
         size_t k = (size_t)f * (size_t)r->cable_count + (size_t)c;
-        if (r->cables[k].status != CS_CABLE_INTACT) continue;
+        if (!cs_cable_status_holds(r->cables[k].status)) continue;
         for (int i = 0; i < r->path_count[k]; i++) {
             double yi = r->path_xyz[(k * (size_t)r->max_nodes + (size_t)i) * 3 + 1];
             if (!(yi <= y)) y = yi;
