@@ -38,17 +38,21 @@ static const char sweep_usage[] =
     "SPEC's `plot:` draws a response against a varied value in DIR/plots/<y>-vs-<x>.png (docs/sweep.md).\n"
     "DIR is checked and locked before any run; the files appear together at the end, listed in\n"
     "DIR/.cablesim-manifest, and an earlier study's files (its manifest's) that this one does not write\n"
-    "are removed. A DIR holding a file no manifest lists (or one changed since cablesim wrote it) is\n"
-    "refused, unless --force: then the study is\n"
-    "written beside such files, and none of them is removed. --quiet prints nothing but errors (no\n"
-    "progress, no closing lines).\n"
+    "are removed. A DIR holding a file no manifest lists (or one changed since cablesim wrote it), or a\n"
+    "stopped study's runs done (below), is refused, unless --force: then the study is written beside such\n"
+    "files, and none of them is removed, and it replaces the stopped study. --quiet prints nothing but\n"
+    "errors (no progress, no closing lines).\n"
     "SIGINT (Ctrl-C) or SIGTERM: the runs under way finish, no other starts, and DIR gets the runs done,\n"
     "marked partial (summary.md, summary.json \"partial\": true; exit status 130 or 143); before the\n"
     "runs begin, it leaves DIR as it was. --resume DIR\n"
     "reads them back from DIR/runs.csv, runs the others as those were run (the study's own --set, --t-end\n"
     "and --dt: none of the study's options is taken with --resume) and writes the whole study; it refuses\n"
-    "a DIR whose study changed (spec, model, values, cablesim).\n"
-    "Exit status: 0 done, 1 the outputs failed, 2 a bad spec or command line, 128 + the signal: partial.\n";
+    "a DIR whose study changed (spec, model, values, cablesim). A new study (no --resume) into a DIR\n"
+    "holding a stopped one's runs done (its summary.json partial, or DIR/.cablesim-journal, the journal\n"
+    "of a sweep killed before its outputs) is refused, exit status 1 and DIR as it was, naming how many:\n"
+    "--resume DIR runs the rest of that study, --force starts the new one afresh and replaces it.\n"
+    "Exit status: 0 done, 1 DIR refused or the outputs failed, 2 a bad spec or command line, 128 + the\n"
+    "signal: partial.\n";
 
 static const cs_cli sweep_cli = {"sweep", sweep_usage};
 

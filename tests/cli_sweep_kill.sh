@@ -3,7 +3,8 @@
 # A sweep survives kill -9 (docs/robustness.md): each run's row is appended to DIR/.cablesim-journal and
 # fsync'ed as it finishes, so a sweep killed with SIGKILL (no handler runs) loses at most the runs under
 # way, and `sweep --resume DIR` runs the rest and writes the same runs.csv, byte for byte, as a sweep never
-# stopped. The journal is removed once the outputs hold its runs; a failed write of the outputs keeps it.
+# stopped. The journal is removed once the outputs hold its runs; a failed write of the outputs keeps it. A
+# new study (no --resume) into the killed sweep's folder is refused, the journal kept.
 source "$(dirname "$0")/lib.sh"
 # kill_when DIR LINES [SIGNAL...]: SIGKILL the sweep $pid (or send it the SIGNALs, one after the other)
 # once DIR's journal has LINES lines (waiting up to 60 s: a loaded machine is slow to start it), and wait
@@ -35,6 +36,11 @@ kill_when "$tmp/killed" 7 # the record, the header, 5 runs
 check "kill -9: the sweep died by SIGKILL (exit 137)" '[ $? -eq 137 ]'
 rows=$(($(wc -l <"$journal") - 2))
 check "kill -9: the journal holds the runs done ($rows of $n), no outputs" '[ "$rows" -ge 5 ] && [ "$rows" -lt "$n" ] && [ ! -e "$tmp/killed/runs.csv" ] && head -1 "$journal" | grep -q "^{\"cablesim\":{\"version\":.*\"partial\":true,\"inputs_hash\":\"[0-9a-f]\{16\}\",\"resume\":{\"spec\":"'
+# the same command again, without --resume: refused (the killed sweep's lock taken over), the journal kept
+# byte for byte, and --resume below still reads its runs back
+cp "$journal" "$tmp/journal.before"
+out=$("$cs" sweep "${spec[@]}" -o "$tmp/killed" --threads 1 --quiet 2>&1)
+check "kill -9, then a new study into its folder: exit 1, the journal's runs named, the journal as it was" '[ $? -eq 1 ] && grep -qxF "cablesim sweep: nothing run: $tmp/killed holds a stopped study, $rows runs done saved in $journal: \`cablesim sweep --resume $tmp/killed\` runs the rest of it, or --force starts this study afresh and replaces it" <<<"$out" && cmp "$journal" "$tmp/journal.before" && [ ! -e "$tmp/killed/runs.csv" ] || { echo "$out"; false; }'
 out=$("$cs" sweep --resume "$tmp/killed" 2>&1)
 check "--resume after kill -9: exit 0, the journalled runs read back" '[ $? -eq 0 ] && grep -qF "sweep: $rows runs read back from" <<<"$out" || { echo "$out"; false; }'
 check "--resume after kill -9: runs.csv byte for byte the whole sweep's" 'cmp "$tmp/killed/runs.csv" "$tmp/whole/runs.csv"'

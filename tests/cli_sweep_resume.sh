@@ -4,8 +4,12 @@
 # it: runs.csv then equals, byte for byte, that of the same sweep never stopped. Stopped twice ways: by
 # CABLESIM_SWEEP_STOP_AFTER (it raises SIGINT once that many runs are done: a fixed point to stop at) and
 # by SIGTERM from this script while the runs go on. A resume refuses a folder whose study changed, and one
-# whose runs.csv lacks columns this cablesim writes; a folder whose study is whole has nothing to run.
+# whose runs.csv lacks columns this cablesim writes; a folder whose study is whole has nothing to run. A new
+# study (no --resume) into a stopped study's folder is refused, the folder left byte for byte as it was,
+# and --force starts it afresh in the stopped study's place.
 source "$(dirname "$0")/lib.sh"
+# snapshot DIR: every name under DIR and the SHA-256 of every file's bytes
+snapshot() { (cd "$1" && find . | LC_ALL=C sort && find . -type f -print0 | LC_ALL=C sort -z | xargs -0 sha256sum); }
 
 # the whole study, never stopped: tests/sweep/lhs.yaml's 4 runs, with runs.nc
 "$cs" sweep --allow-path examples tests/sweep/lhs.yaml -o "$tmp/whole" --netcdf --quiet >/dev/null 2>&1
@@ -19,6 +23,12 @@ check "runs.csv: the header and the one run done, as the whole sweep has it" '[ 
 check "summary.json: partial, 1 run done, by SIGINT" 'grep -q "^\"partial\":true,\"runs_done\":1,\"stopped_by\":\"SIGINT\"," "$dir/summary.json"'
 check "summary.md: a partial note first" '[ "$(sed -n 3p "$dir/summary.md")" = "**Partial**: 1 of 4 runs were run before SIGINT stopped the sweep; the tables below are of those. \`cablesim sweep --resume $dir\` runs the rest and completes these files." ]'
 check "a partial sweep writes no runs.nc" '[ ! -e "$dir/runs.nc" ]'
+# the same command again, without --resume (a re-run by habit after Ctrl-C): refused, nothing written
+before=$(snapshot "$dir")
+"$cs" sweep --allow-path examples tests/sweep/lhs.yaml -o "$dir" --netcdf --threads 1 >"$tmp/again.out" 2>"$tmp/again.err"
+check "a new study into the stopped study's folder: refused, exit 1" '[ $? -eq 1 ] || { cat "$tmp/again.err"; false; }'
+check "the refusal names the folder, the 1 run done and the two ways on" 'grep -qxF "cablesim sweep: nothing run: $dir holds a stopped study, 1 run done saved in $dir/runs.csv: \`cablesim sweep --resume $dir\` runs the rest of it, or --force starts this study afresh and replaces it" "$tmp/again.err" || { cat "$tmp/again.err"; false; }'
+check "the refused study leaves the folder byte for byte as it was" '[ "$(snapshot "$dir")" = "$before" ] && [ ! -s "$tmp/again.out" ]'
 "$cs" sweep --resume "$dir" --threads 2 >"$tmp/resume.out" 2>&1
 check "--resume exits 0" '[ $? -eq 0 ] || { cat "$tmp/resume.out"; false; }'
 check "--resume ran the other 3" 'grep -qxF "sweep: 1 runs read back from $dir/runs.csv, 3 run now" "$tmp/resume.out"'
@@ -28,6 +38,16 @@ check "summary.md: no partial note" '! grep -q "Partial" "$dir/summary.md"'
 check "runs.nc now written (--netcdf kept)" '[ -s "$dir/runs.nc" ]'
 out=$("$cs" sweep --resume "$dir" 2>&1)
 check "--resume of a whole study: nothing to run, exit 0" '[ $? -eq 0 ] && grep -qxF "sweep: $dir holds the whole study (4 runs): nothing to run" <<<"$out"'
+
+# --force: a new study into a stopped study's folder starts afresh and replaces it; a file of the user's
+# there is kept (and, without --force, the stopped study is what the refusal names: --force passes both)
+CABLESIM_SWEEP_STOP_AFTER=1 "$cs" sweep --allow-path examples tests/sweep/lhs.yaml -o "$tmp/forced" --threads 1 --quiet >/dev/null 2>&1
+echo "my notes" >"$tmp/forced/notes.txt"
+out=$("$cs" sweep --allow-path examples tests/sweep/lhs.yaml -o "$tmp/forced" --quiet 2>&1)
+check "a stopped study and a file of the user's: exit 1, the stopped study named" '[ $? -eq 1 ] && grep -qF "holds a stopped study, 1 run done saved in $tmp/forced/runs.csv" <<<"$out" || { echo "$out"; false; }'
+out=$("$cs" sweep --allow-path examples tests/sweep/lhs.yaml -o "$tmp/forced" --force --quiet 2>&1)
+check "--force: the study run afresh, whole, in the stopped one's place" '[ $? -eq 0 ] && cmp "$tmp/forced/runs.csv" "$tmp/whole/runs.csv" && grep -q "^\"partial\":false,\"runs_done\":4," "$tmp/forced/summary.json" || { echo "$out"; false; }'
+check "--force: the user's file kept" '[ "$(cat "$tmp/forced/notes.txt")" = "my notes" ]'
 
 # a study that changed is refused: another value of the model
 CABLESIM_SWEEP_STOP_AFTER=1 "$cs" sweep --allow-path examples tests/sweep/lhs.yaml -o "$tmp/changed" --threads 1 --quiet >/dev/null 2>&1

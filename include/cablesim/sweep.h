@@ -87,7 +87,9 @@ typedef struct cs_sweep_def {
                                    folder and the parts library's */
     int allow_count;          /**< how many (at most 64) */
     int netcdf;               /**< 1: also write runs.nc */
-    int force;                /**< 1: write into a folder beside files no manifest lists */
+    int force;                /**< 1: write into a folder beside files no manifest lists, and start
+                                   afresh in one holding a stopped study's runs done, replacing that
+                                   study (0: either folder is refused, CS_ERR_IO) */
     int threads;              /**< the threads to run on (with parallel); 0: 1 */
     cs_sweep_parallel_fn parallel; /**< how to run on them; NULL: on the calling thread alone */
     const char *command;           /**< the command line, for summary.json; NULL: none */
@@ -121,9 +123,11 @@ CS_API cs_sweep_def cs_default_sweep_def(void);
  * @return CS_OK: done, stopped by a signal (cs_sweep_stopped_by: the runs done are written, partial), or,
  *         with resume, nothing left to run (cs_sweep_ran 0); CS_ERR_INVALID: a def of a size this library
  *         does not know, a spec with problems (each printed to def->errors; the first, or their count, in
- *         err) or a folder that cannot be resumed, nothing run; CS_ERR_IO: the folder could not be taken or
- *         the outputs written (the runs done are kept in its journal for a resume), or the outputs are in
- *         place but an earlier study's file there could not be removed (named in err); CS_ERR_MEMORY. */
+ *         err) or a folder that cannot be resumed, nothing run; CS_ERR_IO: the folder could not be taken
+ *         (without force: it holds a file no manifest lists, or, without resume, a stopped study's runs
+ *         done, which err counts) or the outputs written (the runs done are kept in its journal for a
+ *         resume), or the outputs are in place but an earlier study's file there could not be removed
+ *         (named in err); CS_ERR_MEMORY. */
 CS_API cs_status cs_sweep_study(const cs_sweep_def *def, cs_sweep **out, cs_error *err);
 /** Check a study without running it, as `cablesim check SPEC` does: the spec with def's changes, and its
  * model with the inputs of run 0 and with each grid level. Nothing is written, no folder is taken.

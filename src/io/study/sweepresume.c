@@ -163,3 +163,43 @@ long cs_sweep_resume_runs(const char *dir, const cs_sweep_spec *spec, const cs_s
     if (got < 0) cs_sweep_say(o, "%s", err.message);
     return got;
 }
+
+/* The rows of a sweep's runs.csv text (its header first): its lines, quoted line breaks aside, less one. */
+static long csv_rows(const char *text, size_t length) {
+    long lines = 0;
+    int quoted = 0;
+    for (size_t i = 0; i < length; i++) {
+        if (text[i] == '"')
+            quoted = !quoted; /* a doubled quote inside a quoted cell turns it off and on again */
+        else if (text[i] == '\n' && !quoted)
+            lines++;
+    }
+    return lines > 0 ? lines - 1 : 0;
+}
+
+long cs_sweep_stopped_runs(const char *dir, const char **where) {
+    size_t length = 0;
+    cs_error err;
+    *where = CS_OUT_JOURNAL;
+    char *journal = cs_out_journal_read(dir, &length, &err);
+    if (journal) { /* the study's record, then its runs.csv: the journal's runs are the study's */
+        char *eol = strchr(journal, '\n');
+        long rows = eol && strncmp(journal, CS_OUT_JOURNAL_HEAD, strlen(CS_OUT_JOURNAL_HEAD)) == 0
+                        ? csv_rows(eol + 1, length - (size_t)(eol + 1 - journal))
+                        : 0;
+        free(journal);
+        return rows;
+    }
+    char path[1200];
+    snprintf(path, sizeof path, "%s/summary.json", dir);
+    *where = "runs.csv";
+    if (access(path, F_OK) != 0) return 0;
+    json_object *root = json_object_from_file(path), *v;
+    long done = root && json_object_object_get_ex(root, "partial", &v) && json_object_get_boolean(v) &&
+                        json_object_object_get_ex(root, "runs_done", &v) &&
+                        json_object_is_type(v, json_type_int)
+                    ? (long)json_object_get_int64(v)
+                    : 0;
+    json_object_put(root);
+    return done > 0 ? done : 0;
+}

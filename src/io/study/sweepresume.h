@@ -32,5 +32,10 @@ cs_status cs_sweep_resume_read(const char *dir, cs_sweep_options *o, cs_sweep_re
  * cs_sweep_say). */
 long cs_sweep_resume_runs(const char *dir, const cs_sweep_spec *spec, const cs_sweep_resumed *was,
                           const double *x, cs_sweep_result *all, long n, cs_sweep_options *o);
+/* The runs a stopped study in dir saved, which --resume reads back and a new study there would replace:
+ * the rows of DIR/.cablesim-journal when there is one (a sweep killed before its outputs; or one running,
+ * unless the caller holds the folder's lock), else DIR/summary.json's "runs_done" when it is "partial"; 0
+ * when dir holds neither (or they cannot be read). *where: the file of dir that holds those runs. */
+long cs_sweep_stopped_runs(const char *dir, const char **where);
 
 #endif

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -91,6 +92,34 @@ static void out_dir_of(const cs_sweep_options *o, char *dir, size_t size) {
         int n = (int)strcspn(base, ".");
         snprintf(dir, size, "results/%.*s", n ? n : 5, n ? base : "study"); /* ".x.yaml": results/study */
     }
+}
+
+/* A new study (not --resume, not force) into dir refused while dir holds a stopped study with runs saved,
+ * which the new one's journal and outputs would replace: said (the folder, its runs, the two ways on) and
+ * 1; else 0. */
+static int stopped_study_kept(cs_sweep_options *o, const char *dir) {
+    const char *where;
+    long saved = o->resume || o->force ? 0 : cs_sweep_stopped_runs(dir, &where);
+    if (saved <= 0) return 0;
+    char resume[1100];
+    if (o->force_given)
+        snprintf(resume, sizeof resume, "`cablesim sweep --resume %s`", dir);
+    else
+        snprintf(resume, sizeof resume, "cs_sweep_def's resume set to %s", dir);
+    cs_sweep_say(o,
+                 "nothing run: %s holds a stopped study, %ld run%s done saved in %s/%s: %s runs the rest of "
+                 "it, or %s starts this study afresh and replaces it",
+                 dir, saved, saved == 1 ? "" : "s", dir, where, resume,
+                 o->force_given ? o->force_given : "cs_sweep_def's force set to 1");
+    return 1;
+}
+
+/* Whether dir holds a lock's file: a sweep may be writing its journal there (or one killed left it). */
+static int lock_there(const char *dir) {
+    char path[1200];
+    struct stat st;
+    snprintf(path, sizeof path, "%s/%s", dir, CS_OUT_LOCK);
+    return lstat(path, &st) == 0;
 }
 
 /* ---- progress: a bar on a terminal, plain lines every few seconds otherwise ---- */
@@ -462,12 +491,17 @@ int cs_sweep_study_keep(cs_sweep_options *o, const char *command, cs_sweep **kee
             rc = EXIT_RUN;
         } else if (o->resume && (done = cs_sweep_resume_runs(dir, spec, &was, x, all, n, o)) < 0) {
             rc = EXIT_BAD;
+        } else if (!lock_there(dir) && stopped_study_kept(o, dir)) {
+            rc = EXIT_RUN; /* said before the folder is locked: it is left as it was, and this refusal
+                              comes before that of a file of the user's there, which --force would pass */
         } else if (cs_out_open(&out, dir, "sweep", o->force ? CS_OUT_FORCE : 0,
                                o->force_given ? o->force_given : "cs_sweep_def's force set to 1",
                                &err) != CS_OK) {
             cs_sweep_say(o, "nothing run: %s", err.message);
             rc = EXIT_RUN;
-        } else if (out_open = 1, start_journal(&out, spec, x, all, n, &err) != CS_OK) {
+        } else if (out_open = 1, stopped_study_kept(o, dir)) {
+            rc = EXIT_RUN; /* under the lock: a journal left by a killed sweep whose lock was there */
+        } else if (start_journal(&out, spec, x, all, n, &err) != CS_OK) {
             cs_sweep_say(o, "nothing run: %s", err.message);
             rc = EXIT_RUN;
         }
