@@ -325,6 +325,13 @@ typedef struct cs_scenario_def {
                          ends "step_limit" */
 } cs_scenario_def;
 
+/** Where a vehicle whose front face is front_width wide meets the cable line (y = 0) at the scenario's angle
+ * (between 0 and pi): the x of the face's centre in *centre and of its leading front corner in *corner, m
+ * (impact_x is one or the other, as impact_at_corner says; they lie (w/2) / sin(angle) apart along the line).
+ * Either pointer may be NULL. */
+CS_API void cs_scenario_impact_points(const cs_scenario_def *scenario, double front_width, double *centre,
+                                      double *corner);
+
 /** The largest stop speed against the impact speed: a vehicle at a tenth of its speed keeps 1% of its kinetic
  * energy, where a larger threshold would call a vehicle still moving stopped. */
 #define CS_STOP_SPEED_SHARE 0.1

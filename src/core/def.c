@@ -198,6 +198,14 @@ cs_vehicle_def cs_default_vehicle_def(void) {
     return d;
 }
 
+void cs_scenario_impact_points(const cs_scenario_def *s, double front_width, double *centre, double *corner) {
+    /* the leading corner lies on the side the vehicle travels from, along the line */
+    double half = (cos(s->angle) >= 0.0 ? 0.5 : -0.5) * front_width / sin(s->angle);
+    double c = s->impact_at_corner ? s->impact_x + half : s->impact_x;
+    if (centre) *centre = c;
+    if (corner) *corner = c - half;
+}
+
 cs_scenario_def cs_default_scenario_def(void) {
     cs_scenario_def d;
     memset(&d, 0, sizeof d);

@@ -403,9 +403,8 @@ static cs_model *model_create(const cs_barrier_def *barrier, const cs_vehicle_de
     v3_set(m->dir, cos(th), sin(th), 0.0);
     m->start_yaw = th;
     double yc = -scenario->start_gap - 0.5 * vehicle->front_width * fabs(cos(th));
-    double centre_x = scenario->impact_x;
-    if (scenario->impact_at_corner)
-        centre_x += (cos(th) >= 0.0 ? 0.5 : -0.5) * vehicle->front_width / sin(th);
+    double centre_x;
+    cs_scenario_impact_points(scenario, vehicle->front_width, &centre_x, NULL);
     double xc = centre_x + m->dir[0] * yc / m->dir[1];
     v3_set(m->start_pos, xc - m->dir[0] * vehicle->cg_to_front, yc - m->dir[1] * vehicle->cg_to_front,
            vehicle->cg_height);

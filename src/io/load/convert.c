@@ -645,15 +645,6 @@ static void check_barrier(cs_loader *l, const cs_node *barrier, const cs_barrier
  * barrier are about 0.8 GB of timeseries.csv, and its record as much in memory. */
 enum { CS_MAX_FRAMES = 1000000 };
 
-/* Where the vehicle's leading front corner meets the cable line: the face's centre meets it at impact_x
- * (or the corner does, impact_at: corner), and a face of width w at angle theta meets it over
- * w / sin(theta) of the line, the leading corner first. */
-static double leading_corner_x(const cs_scenario_def *s, double width) {
-    if (s->impact_at_corner) return s->impact_x;
-    double half = 0.5 * width / sin(s->angle);
-    return cos(s->angle) >= 0.0 ? s->impact_x - half : s->impact_x + half;
-}
-
 /* The x of the anchor at the end of the barrier that x is beyond, for a check of where the impact falls:
  * blamed() names a --set of it. */
 static const cs_node *anchor_x(const cs_loader *l, const cs_barrier_def *b, double x) {
@@ -668,7 +659,8 @@ static void check_scenario(cs_loader *l, const cs_node *sc, const cs_scenario_de
                     "the anchors, above %g m and below %g m)",
                     s->impact_x, b->start_anchor.x, b->end_anchor.x);
     else if (b && v && v->front_width > 0.0 && s->angle > 0.0 && s->angle < CS_PI) {
-        double corner = leading_corner_x(s, v->front_width);
+        double corner;
+        cs_scenario_impact_points(s, v->front_width, NULL, &corner);
         const cs_node *width = l->vehicle_node ? cs_node_get(l->vehicle_node, "front_width") : NULL;
         if (corner <= b->start_anchor.x || corner >= b->end_anchor.x)
             cs_err_node(
