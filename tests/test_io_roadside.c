@@ -204,11 +204,11 @@ static double ledger_sum(const cs_state *s) {
     return sum;
 }
 
-/* A rope that slips off the face in the contact update, before the solve, leaves with what it held at its
- * last solve and the work the vehicle did on it over the step (docs/theory.md, Energy ledger). The design
+/* A rope that slips off the face in the contact update, before the solve, stays in the barrier, and its drop
+ * to its path over the posts is booked as released (docs/theory.md, Energy ledger). The design
  * barrier struck by MASH's 1100C at 100 km/h and 25 degrees: its top rope, above the small car's face,
  * slips over it as the corner first meets it (underride, 0.0045 s), in the step the car's face reaches
- * post 9; the ledger's sum moves across that step by at most 1 J (0.34 J measured). Had the ropes been
+ * post 9; the ledger's sum moves across that step by at most 1 J (0.51 J measured). Had the ropes been
  * wrapped on the face's corners before the struck post left their paths, they would run from the corner
  * back to a post the face has passed and stretch with no work done on them (2.9 J; 22 J with the posts
  * swinging by HHT-alpha, whose stiffer inertia leaves the stretch to the ropes). */
@@ -388,7 +388,7 @@ static void a_rope_sliding_down_the_face_holds_coulombs_ratio(void **state) {
  * (cable 1 let go by post 21 at 0.592 s, post 20 at its rotation limit at 0.604 s) set it ringing on its
  * spring. Its rate's swing (half its range over a 16-ms window, about a cycle) from 0.604 s to 0.728 s
  * falls as a free ring's, exp(-zeta wn t), zeta wn = c / 2J: its rate of decay, ln(swing ratio) / t,
- * within 20% of c / 2J (the ropes drive it a little: 15.1 against 17.0 1/s). */
+ * within 20% of c / 2J (the ropes drive it a little: 15.1 against 16.9 1/s). */
 static void a_post_ring_dies_at_its_damping_rate(void **state) {
     (void)state;
     cs_loader *l;
