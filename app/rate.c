@@ -98,7 +98,8 @@ static int roadside_one(cs_loader *l, const cs_model_input *in, const cs_roadsid
         cs_error err = {CS_OK, ""};
         int have = cs_occupant_risk_for_run(rec, sm.first_contact_time_s, NULL, &o, &err) == CS_OK;
         cs_exit_box box;
-        cs_exit_box_of_record(rec, &v, sc.impact_x, &box);
+        cs_exit_box_of_record(rec, &v, sc.impact_x, sm.outcome == CS_REDIRECTED ? sm.exit_time_s : -1.0,
+                              &box);
         cs_test_result res = {&sm, have ? &o : NULL, err.message, 0.0, 0.0, &box, s};
         cs_record_roll_pitch_peaks(rec, &res.roll_peak, &res.pitch_peak);
         if (have)

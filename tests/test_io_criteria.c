@@ -3,7 +3,7 @@
  * 20.49 g for MASH, 12 m/s and 20 g for NCHRP 350's L, roll 75 deg, 60% of the impact angle, the exit box's
  * 10 m); the not-judged ones never passed, nor what a run ended mid-collision cannot show; the exit box's A
  * from the vehicle's size and the wheels' path extrapolated straight from the run's end against its closed
- * form. */
+ * form; B from the loss of contact, on a record where that and the first wheel over the face disagree. */
 #include <stdlib.h>
 
 #include "check.h"
@@ -155,7 +155,7 @@ static void exit_box_path(double vx, double vy, cs_exit_box *box) {
     memset(&v, 0, sizeof v);
     v.front_width = 1.9, v.cg_to_front = 2.0, v.cg_to_rear = 3.5, v.track = 1.6, v.wheelbase = 3.0,
     v.cg_to_front_axle = 1.2;
-    cs_exit_box_of_record(&rec, &v, 50.0, box);
+    cs_exit_box_of_record(&rec, &v, 50.0, -1.0, box); /* no loss of contact: from the first wheel over */
 }
 
 /* A path whose wheels never cross the box's far side (vx, vy at the run's end): heading back or not, the
@@ -203,6 +203,68 @@ static void exit_box(void **state) {
     /* moving back toward the barrier at the run's end, no wheel past the line in the run: where it goes is
      * a second impact the run does not follow, so the box is not judged (no pass by construction) */
     box_never_crossed(10.0, 1.0, 1, CS_VERDICT_NOT_JUDGED, "moves back toward the barrier");
+}
+
+/* Frame p of a vehicle (its CG at x, y, its yaw c = cos, s = sin) moving at (vx, vy), at time t, with its
+ * outline's corners (2.0 m ahead of the CG and 3.5 m behind it, 0.95 m to each side) placed by its yaw. */
+static void frame_at(cs_vehicle_view *p, double t, double x, double y, double c, double s, double vx,
+                     double vy) {
+    memset(p, 0, sizeof *p);
+    p->t = t, p->position[0] = x, p->position[1] = y, p->yaw = atan2(s, c);
+    p->velocity[0] = vx, p->velocity[1] = vy;
+    const double bx[4] = {2.0, 2.0, -3.5, -3.5}, by[4] = {0.95, -0.95, 0.95, -0.95};
+    for (int k = 0; k < 4; k++) {
+        double *q = k < 2 ? p->front_corners[k] : p->rear_corners[k - 2];
+        q[0] = x + c * bx[k] - s * by[k], q[1] = y + s * bx[k] + c * by[k];
+    }
+}
+
+/* Where B starts: MASH measures it from the loss of contact, not from where a wheel first crossed the
+ * barrier's face. A record built so that the two give opposite verdicts, worked by hand (the vehicle of
+ * exit_box_path: A = 2.0 + 1.9 + 0.16 x 5.5 = 4.78 m; wheels 1.2 m ahead of the CG and 1.8 m behind it,
+ * 0.8 m to each side):
+ * - t = 0: CG (-3, -0.5), yaw 0, moving +x: the front left wheel is over the face at x = -1.8 m.
+ * - t = 0.5 s, the loss of contact: CG (8.23, -2.86), heading out at yaw -36.87 deg (cos 0.8, sin -0.6):
+ *   the corner nearest the barrier is the rear left one, at (8.23 - 0.8 x 3.5 + 0.6 x 0.95, -2.86 + 0.6 x
+ *   3.5 + 0.8 x 0.95) = (6.00, 0.00): the box starts at x = 6.00 m. The lowest wheel, the front right, is at
+ *   y = -2.86 - 0.6 x 1.2 - 0.8 x 0.8 = -4.22 m, inside the line y = -4.78 m.
+ * - t = 0.52 s, the run's end: CG (8.55, -3.10) moving at (16, -12) m/s along its heading; the front right
+ *   wheel at (8.55 + 0.8 x 1.2 - 0.6 x 0.8, -3.10 - 1.36) = (9.03, -4.46), still inside. Straight on, it
+ *   meets y = -4.78 after 0.32 / 12 s, 16 x 0.32 / 12 = 0.4267 m further: at x = 9.4567 m (the rear right
+ *   wheel, on its track, at the same x; the left wheels later, at 12.12 m).
+ * From the loss of contact that is 9.4567 - 6.00 = 3.4567 m along, within B = 10 m: FAIL. From the first
+ * wheel over the face it would be 9.4567 + 1.8 = 11.2567 m: a pass. */
+static void exit_box_from_the_loss_of_contact(void **state) {
+    (void)state;
+    cs_vehicle_view frames[3];
+    frame_at(&frames[0], 0.0, -3.0, -0.5, 1.0, 0.0, 20.0, 0.0);
+    frame_at(&frames[1], 0.5, 8.23, -2.86, 0.8, -0.6, 16.0, -12.0);
+    frame_at(&frames[2], 0.52, 8.55, -3.10, 0.8, -0.6, 16.0, -12.0);
+    cs_record rec;
+    memset(&rec, 0, sizeof rec);
+    rec.frame_count = 3, rec.vehicle = frames;
+    cs_vehicle_def v;
+    memset(&v, 0, sizeof v);
+    v.front_width = 1.9, v.cg_to_front = 2.0, v.cg_to_rear = 3.5, v.track = 1.6, v.wheelbase = 3.0,
+    v.cg_to_front_axle = 1.2;
+    cs_exit_box box;
+    cs_exit_box_of_record(&rec, &v, -2.0, 0.5, &box);
+    CHECK_REL(box.a, 4.78, 1e-12);
+    CHECK_ABS(box.start_x, 6.0, 1e-12);
+    CHECK_REL(box.cross_along, 9.03 + 16.0 * 0.32 / 12.0 - 6.0, 1e-12);
+    assert_int_equal(box.crossed_in_run, 0);
+    cs_summary s = redirected(26.6);
+    cs_test_result r = {&s, NULL, "none", 0.0, 0.0, &box, NULL};
+    assert_int_equal(verdict_of("mash", "3-11", &r, "exit box"), CS_VERDICT_FAIL);
+    /* from the first wheel over the face (what a run with no loss of contact falls back to): a pass */
+    cs_exit_box_of_record(&rec, &v, -2.0, -1.0, &box);
+    CHECK_REL(box.start_x, -1.8, 1e-12);
+    CHECK_REL(box.cross_along, 9.03 + 16.0 * 0.32 / 12.0 + 1.8, 1e-12);
+    assert_int_equal(verdict_of("mash", "3-11", &r, "exit box"), CS_VERDICT_PASS);
+    /* a loss of contact between frames: the corner's x interpolated (t = 0.25 s: halfway from the first
+     * frame's front left corner, x -1.0, to the second's rear left, x 6.0) */
+    cs_exit_box_of_record(&rec, &v, -2.0, 0.25, &box);
+    CHECK_REL(box.start_x, 2.5, 1e-12);
 }
 
 static void test_as_run(void **state) {
@@ -282,8 +344,8 @@ static void verdict_digits(void **state) {
          "longitudinal 9.1004 m/s (over the preferred 9.1, maximum 12.2); lateral 0.00 m/s (within the "
          "preferred 9.1, maximum 12.2)"},
         {"mash", "3-11", "exit box", 0.0, 14.98, CS_VERDICT_FAIL,
-         "a wheel crosses the line 4.90 m from the barrier 9.96 m along (box 10.00 m); on the path "
-         "extrapolated straight from the run's end"},
+         "a wheel crosses the line 4.90 m from the barrier 9.96 m past the loss of contact (box 10.00 m); on "
+         "the path extrapolated straight from the run's end"},
         /* a value well apart keeps its usual digits */
         {"nchrp-350", "3-11", "M", 0.0, 17.5, CS_VERDICT_FAIL, "exit 17.5 deg (60% of 25.0 deg: 15.0 deg)"},
     };
@@ -356,6 +418,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(criteria_of_each_test),
                                        cmocka_unit_test(limits),
                                        cmocka_unit_test(exit_box),
+                                       cmocka_unit_test(exit_box_from_the_loss_of_contact),
                                        cmocka_unit_test(test_as_run),
                                        cmocka_unit_test(verdict_digits),
                                        cmocka_unit_test(unfinished_run)};

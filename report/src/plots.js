@@ -386,7 +386,7 @@ export function buildPlots(container, data, onSeek) {
     const standardNote = !rc
       ? 'The run stands for no roadside test, so no exit box is drawn.'
       : rc.standard === 'mash'
-        ? 'MASH asks that no wheel cross the box’s far side (A from the barrier’s face) within B of where a wheel track first crossed the face.'
+        ? 'MASH asks that no wheel cross the box’s far side (A from the barrier’s face) within B of the point where the vehicle lost contact with the barrier.'
         : 'NCHRP Report 350 has no exit box (it judges the exit angle, criterion M): MASH’s box is drawn for reference.';
     container.append(
       el(

@@ -28,7 +28,8 @@ void cs_run_info_motion(cs_run_info *info, const cs_model_input *in, const cs_re
     info->criteria_count = 0;
     if (!cs_roadside_test_as_run(&in->vehicle, in->scenario.speed, in->scenario.angle, &info->criteria_test))
         return;
-    cs_exit_box_of_record(rec, &in->vehicle, in->scenario.impact_x, &info->exit_box);
+    cs_exit_box_of_record(rec, &in->vehicle, in->scenario.impact_x,
+                          summary->outcome == CS_REDIRECTED ? summary->exit_time_s : -1.0, &info->exit_box);
     info->exit_box.heading_back &=
         summary->outcome == CS_REDIRECTED; /* only a vehicle that left has an exit */
     /* the standards take the occupant risk at the CG: with --occupant-at, the criteria judge the CG's */

@@ -33,7 +33,16 @@ void cs_vehicle_wheels(const cs_vehicle_view *p, const cs_vehicle_def *v, double
         w[k][0] = p->position[0] + c * bx[k] - s * by[k], w[k][1] = p->position[1] + s * bx[k] + c * by[k];
 }
 
-void cs_exit_box_of_record(const cs_record *rec, const cs_vehicle_def *v, double impact_x, cs_exit_box *out) {
+/* The x of the vehicle's outline corner nearest the barrier (largest y) in frame view p. */
+static void nearest_corner(const cs_vehicle_view *p, double *x, double *y) {
+    const double *c[4] = {p->front_corners[0], p->front_corners[1], p->rear_corners[0], p->rear_corners[1]};
+    *x = c[0][0], *y = c[0][1];
+    for (int k = 1; k < 4; k++)
+        if (c[k][1] > *y) *x = c[k][0], *y = c[k][1];
+}
+
+void cs_exit_box_of_record(const cs_record *rec, const cs_vehicle_def *v, double impact_x, double t_exit,
+                           cs_exit_box *out) {
     out->a = 2.0 + v->front_width + 0.16 * (v->cg_to_front + v->cg_to_rear);
     out->b = 10.0;
     out->start_x = impact_x;
@@ -44,8 +53,21 @@ void cs_exit_box_of_record(const cs_record *rec, const cs_vehicle_def *v, double
     int n = cs_record_frame_count(rec);
     if (n < 1) return;
     double dir = out->dir = cs_record_vehicle(rec, 0)->velocity[0] >= 0.0 ? 1.0 : -1.0, w[4][2];
-    int started = 0;
-    for (int i = 0; i < n; i++) {
+    int from = 0; /* the first frame followed: at or after the loss of contact */
+    if (t_exit >= 0.0) {
+        while (from + 1 < n && cs_record_vehicle(rec, from)->t < t_exit)
+            from++;
+        const cs_vehicle_view *q = cs_record_vehicle(rec, from),
+                              *p = cs_record_vehicle(rec, from ? from - 1 : 0);
+        double xp, yp, xq, yq;
+        nearest_corner(p, &xp, &yp);
+        nearest_corner(q, &xq, &yq);
+        double f = q->t > p->t ? (t_exit - p->t) / (q->t - p->t) : 1.0;
+        f = f < 0.0 ? 0.0 : f > 1.0 ? 1.0 : f;
+        out->start_x = xp + f * (xq - xp);
+    }
+    int started = t_exit >= 0.0;
+    for (int i = from; i < n; i++) {
         cs_vehicle_wheels(cs_record_vehicle(rec, i), v, w);
         for (int k = 0; k < 4 && !started; k++)
             if (w[k][1] >= 0.0) out->start_x = w[k][0], started = 1;
@@ -259,8 +281,9 @@ static void exit_box(list *l, const cs_test_result *r) {
     cs_criterion *c = add(l, "exit box", name, e->cross_along >= e->b ? CS_VERDICT_PASS : CS_VERDICT_FAIL);
     if (isfinite(e->cross_along))
         snprintf(c->detail, sizeof c->detail,
-                 "a wheel crosses the line %.2f m from the barrier %.*f m along (box %.*f m); %s", e->a,
-                 apart(e->cross_along, e->b, 1), e->cross_along, apart(e->cross_along, e->b, 1), e->b,
+                 "a wheel crosses the line %.2f m from the barrier %.*f m past the loss of contact (box "
+                 "%.*f m); %s",
+                 e->a, apart(e->cross_along, e->b, 1), e->cross_along, apart(e->cross_along, e->b, 1), e->b,
                  e->crossed_in_run ? "in the run" : "on the path extrapolated straight from the run's end");
     else /* moving parallel to the barrier at the run's end */
         snprintf(c->detail, sizeof c->detail,

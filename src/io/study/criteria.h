@@ -18,10 +18,12 @@ typedef struct cs_criterion {
 } cs_criterion;
 
 /* MASH's exit box for a vehicle (docs/ratings.md): A = 2.0 m + its width + 0.16 x its length from the
- * barrier's traffic face (y = 0), B = 10 m along from where its wheel track first crosses that face. */
+ * barrier's traffic face (y = 0), B = 10 m along from the point where the vehicle lost contact with the
+ * barrier. */
 typedef struct cs_exit_box {
     double a, b;        /* m */
-    double start_x;     /* where the wheel track first crossed y = 0 (or the impact point), m */
+    double start_x;     /* the loss of contact's point along the barrier (no loss of contact: the impact
+                           point), m */
     double cross_along; /* how far along from start_x a wheel crosses y = -a, m; HUGE_VAL never */
     int crossed_in_run; /* 1 if it crossed within the run; 0 if on the path extrapolated past its end */
     double dir; /* +1 if the vehicle travels toward +x, -1 toward -x: the box runs from start_x that way */
@@ -34,10 +36,15 @@ typedef struct cs_exit_box {
  * vehicle's track and wheelbase placed by the CG and its yaw. */
 void cs_vehicle_wheels(const cs_vehicle_view *p, const cs_vehicle_def *v, double w[4][2]);
 
-/* The exit box and the wheels' path of a run: the wheels (track and wheelbase) from the CG's place and
- * yaw in each frame, and past the run's end straight along the CG's last velocity, if that leads away
- * from the barrier (else heading_back). */
-void cs_exit_box_of_record(const cs_record *rec, const cs_vehicle_def *v, double impact_x, cs_exit_box *out);
+/* The exit box and the wheels' path of a run whose vehicle last lost contact with the barrier at t_exit
+ * (s; negative: it did not): the box starts at the x of the vehicle's outline corner nearest the barrier
+ * (largest y) then, the frames either side interpolated, and the wheels (track and wheelbase, from the
+ * CG's place and yaw in each frame from then on) are followed to y = -a, in the run and past its end
+ * straight along the CG's last velocity, if that leads away from the barrier (else heading_back). With no
+ * loss of contact the box starts at impact_x and the wheels are followed from the first frame one is over
+ * the barrier's face (y >= 0). */
+void cs_exit_box_of_record(const cs_record *rec, const cs_vehicle_def *v, double impact_x, double t_exit,
+                           cs_exit_box *out);
 
 /* What a run gives the criteria. occupant NULL: not computed (the occupant criteria are then not judged,
  * occupant_why says why). state: the run at its end, whose override and underride events (a cable the
