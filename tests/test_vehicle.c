@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Vehicle: free rolling (speed kept, or lost at mu_r g), a sideways slip against the tyres' cornering
- * stiffness and friction, settling on the tyres after a drop (static
+/* Vehicle: where it starts and where its wheels are, free rolling (speed kept, or lost at mu_r g), a sideways
+ * slip against the tyres' cornering stiffness and friction, settling on the tyres after a drop (static
  * equilibrium at the design ride height), an undamped bounce against its closed form (second order in
  * dt), a centred head-on impact that makes no yaw, and the turn between two poses (the rotation
  * vector the step's work on the barrier is taken over). */
@@ -30,6 +30,41 @@ static void run_until(const cs_model *m, cs_state *s, double t) {
     cs_error err;
     while (s->t < t - 1e-12 && s->outcome == CS_RUNNING)
         assert_int_equal(cs_step(m, s, &err), CS_OK);
+}
+
+/* Where the vehicle starts (cs_scenario_impact_points): at 25 degrees a 2.4-m face meets the cable line over
+ * 1.2 / sin 25 = 2.839 m of it, its leading corner first; with impact_at: corner that corner is at impact_x.
+ * The start pose puts the face's centre, carried on along the heading, at the centre's impact point, and
+ * the wheels where cs_vehicle_wheel_points puts them (the axles a and b from the CG, half the track out,
+ * the CG's height down). */
+static void the_vehicle_starts_on_its_impact_points(void **state) {
+    (void)state;
+    for (int at_corner = 0; at_corner < 2; at_corner++) {
+        fixture fx;
+        fixture_aps3(&fx);
+        const double th = 25.0 * CS_PI / 180.0, w = fx.vehicle.front_width, half = 0.5 * w / sin(th);
+        fx.scenario.angle = th, fx.scenario.impact_x = 20.0, fx.scenario.impact_at_corner = at_corner;
+        double centre, corner;
+        cs_scenario_impact_points(&fx.scenario, w, &centre, &corner);
+        CHECK_ABS(centre - corner, half, 1e-12);
+        CHECK_ABS(at_corner ? corner : centre, 20.0, 1e-12);
+        cs_model *m = model_for(&fx);
+        double face[3]; /* the face's centre at t = 0, then on along the heading to y = 0 */
+        for (int k = 0; k < 3; k++)
+            face[k] = m->start_pos[k] + m->dir[k] * fx.vehicle.cg_to_front;
+        CHECK_ABS(face[0] - face[1] * m->dir[0] / m->dir[1], centre, 1e-9);
+        double wheel[4][3];
+        cs_vehicle_wheel_points(&fx.vehicle, wheel);
+        const double *fl = wheel[0], *rr = wheel[3];
+        CHECK_ABS(fl[0], fx.vehicle.cg_to_front_axle, 0.0);
+        CHECK_ABS(rr[0], fx.vehicle.cg_to_front_axle - fx.vehicle.wheelbase, 0.0);
+        CHECK_ABS(fl[1] - rr[1], fx.vehicle.track, 1e-12);
+        CHECK_ABS(fl[2], -fx.vehicle.cg_height, 0.0);
+        for (int i = 0; i < 4; i++)
+            for (int k = 0; k < 3; k++)
+                CHECK_ABS(m->vehicle.wheel[i][k], wheel[i][k], 0.0);
+        cs_model_free(m);
+    }
 }
 
 static void rolling_freely_keeps_its_speed(void **state) {
@@ -284,6 +319,7 @@ static void a_changed_push_changes_the_accelerations_as_found_afresh(void **stat
 
 int main(void) {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(the_vehicle_starts_on_its_impact_points),
         cmocka_unit_test(rolling_freely_keeps_its_speed),
         cmocka_unit_test(short_run_has_its_window_average),
         cmocka_unit_test(a_rolling_tyre_corners_at_its_stiffness),

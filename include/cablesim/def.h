@@ -360,6 +360,9 @@ CS_API cs_barrier_def cs_default_barrier_def(void);
 /** A vehicle with the documented tyre, friction and crush-unloading defaults; its mass, sizes and crush
  * curve are design data. */
 CS_API cs_vehicle_def cs_default_vehicle_def(void);
+/** Where the vehicle's wheels touch the ground when it stands level, in its own axes from the CG (x
+ * forward, y to its left, z up), m: front left, front right, rear left, rear right. */
+CS_API void cs_vehicle_wheel_points(const cs_vehicle_def *vehicle, double wheel[4][3]);
 /** A head-on attack from 0.05 m before the cables with a 0.5-ms step to 3 s, outputs every 1 ms, the
  * documented tolerances and standard gravity; its speed and impact point are design data. */
 CS_API cs_scenario_def cs_default_scenario_def(void);

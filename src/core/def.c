@@ -198,6 +198,15 @@ cs_vehicle_def cs_default_vehicle_def(void) {
     return d;
 }
 
+void cs_vehicle_wheel_points(const cs_vehicle_def *v, double wheel[4][3]) {
+    double a = v->cg_to_front_axle, b = v->wheelbase - a;
+    for (int i = 0; i < 4; i++) {
+        wheel[i][0] = i < 2 ? a : -b;
+        wheel[i][1] = (i % 2 == 0 ? 0.5 : -0.5) * v->track; /* left wheels first */
+        wheel[i][2] = -v->cg_height;
+    }
+}
+
 void cs_scenario_impact_points(const cs_scenario_def *s, double front_width, double *centre, double *corner) {
     /* the leading corner lies on the side the vehicle travels from, along the line */
     double half = (cos(s->angle) >= 0.0 ? 0.5 : -0.5) * front_width / sin(s->angle);

@@ -23,10 +23,9 @@ void cs_vehicle_derive(const cs_vehicle_def *v, double g, cs_vehicle_model *vm) 
     vm->def = *v;
     double a = v->cg_to_front_axle, b = v->wheelbase - a;
     double axle_load[2] = {v->mass * g * b / v->wheelbase, v->mass * g * a / v->wheelbase};
+    cs_vehicle_wheel_points(v, vm->wheel);
     for (int i = 0; i < 4; i++) {
         int rear = i >= 2;
-        double side = (i % 2 == 0) ? 0.5 : -0.5; /* left wheels first */
-        v3_set(vm->wheel[i], rear ? -b : a, side * v->track, -v->cg_height);
         double n = 0.5 * axle_load[rear];
         vm->tyre_k[i] = n / v->tyre_static_deflection;
         double m_share = g > 0.0 ? n / g : 0.25 * v->mass;

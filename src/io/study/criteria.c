@@ -26,11 +26,11 @@ static int apart(double a, double b, int d) {
 }
 
 void cs_vehicle_wheels(const cs_vehicle_view *p, const cs_vehicle_def *v, double w[4][2]) {
-    double c = cos(p->yaw), s = sin(p->yaw), rear = v->wheelbase - v->cg_to_front_axle;
-    const double bx[4] = {v->cg_to_front_axle, v->cg_to_front_axle, -rear, -rear};
-    const double by[4] = {0.5 * v->track, -0.5 * v->track, 0.5 * v->track, -0.5 * v->track};
+    double c = cos(p->yaw), s = sin(p->yaw), b[4][3];
+    cs_vehicle_wheel_points(v, b);
     for (int k = 0; k < 4; k++)
-        w[k][0] = p->position[0] + c * bx[k] - s * by[k], w[k][1] = p->position[1] + s * bx[k] + c * by[k];
+        w[k][0] = p->position[0] + c * b[k][0] - s * b[k][1],
+        w[k][1] = p->position[1] + s * b[k][0] + c * b[k][1];
 }
 
 /* The x of the vehicle's outline corner nearest the barrier (largest y) in frame view p. */
