@@ -140,6 +140,15 @@ static void limits(void **state) {
     assert_int_equal(verdict_of("nchrp-350", "3-11", &r, "M"), CS_VERDICT_NOT_JUDGED);
 }
 
+/* The vehicle of the exit box's records: 1.9 m wide, 5.5 m long, its wheels 1.6 m apart on a 3-m base. */
+static cs_vehicle_def box_vehicle(void) {
+    cs_vehicle_def v;
+    memset(&v, 0, sizeof v);
+    v.front_width = 1.9, v.cg_to_front = 2.0, v.cg_to_rear = 3.5, v.track = 1.6, v.wheelbase = 3.0,
+    v.cg_to_front_axle = 1.2;
+    return v;
+}
+
 /* A record of two frames: the vehicle (yaw 0) with its left wheels over the barrier's line, then at its
  * end moving away at (vx, vy). */
 static void exit_box_path(double vx, double vy, cs_exit_box *box) {
@@ -151,10 +160,7 @@ static void exit_box_path(double vx, double vy, cs_exit_box *box) {
     cs_record rec;
     memset(&rec, 0, sizeof rec);
     rec.frame_count = 2, rec.vehicle = frames;
-    cs_vehicle_def v;
-    memset(&v, 0, sizeof v);
-    v.front_width = 1.9, v.cg_to_front = 2.0, v.cg_to_rear = 3.5, v.track = 1.6, v.wheelbase = 3.0,
-    v.cg_to_front_axle = 1.2;
+    cs_vehicle_def v = box_vehicle();
     cs_exit_box_of_record(&rec, &v, 50.0, -1.0, box); /* no loss of contact: from the first wheel over */
 }
 
@@ -243,10 +249,7 @@ static void exit_box_from_the_loss_of_contact(void **state) {
     cs_record rec;
     memset(&rec, 0, sizeof rec);
     rec.frame_count = 3, rec.vehicle = frames;
-    cs_vehicle_def v;
-    memset(&v, 0, sizeof v);
-    v.front_width = 1.9, v.cg_to_front = 2.0, v.cg_to_rear = 3.5, v.track = 1.6, v.wheelbase = 3.0,
-    v.cg_to_front_axle = 1.2;
+    cs_vehicle_def v = box_vehicle();
     cs_exit_box box;
     cs_exit_box_of_record(&rec, &v, -2.0, 0.5, &box);
     CHECK_REL(box.a, 4.78, 1e-12);
