@@ -242,6 +242,46 @@ static void the_ledger_closes_across_a_slip(void **state) {
     cs_loader_free(l);
 }
 
+/* A rope the vehicle has ridden over stays in the barrier and can break there, out of the vehicle's way: the
+ * vehicle still rode over it (docs/theory.md, Redirection and the end of a run). RS5 struck by MASH's
+ * 10000S, whose bumper (0.50 m) rides above the lowest rope (0.48 m), that rope's end fittings at 18% of
+ * its strength (31.2 kN): the truck rides over it as it first meets it (0.0045 s); the posts leaning under
+ * the three ropes above pull it to its fittings' strength (0.0515 s); then the truck pushes the three
+ * down its face and rides over each (0.98-1.03 s). It broke no rope it met: the run ends override, not
+ * breakthrough. */
+static void a_rope_passed_then_broken_leaves_an_override(void **state) {
+    (void)state;
+    cs_loader *l;
+    const char *const sets[] = {"vehicle=10000S", "barrier.cables[0].termination_efficiency=0.18", NULL};
+    cs_model *m = example_model("roadside/rs5", sets, &l);
+    cs_error err;
+    cs_state *s = cs_state_create(m, &err);
+    if (!s) fail_msg("%s", err.message);
+    while (s->outcome == CS_RUNNING)
+        assert_int_equal(cs_step(m, s, &err), CS_OK);
+    double over[4] = {-1.0, -1.0, -1.0, -1.0}, broken = -1.0;
+    for (int i = 0; i < cs_state_event_count(s); i++) {
+        cs_event e = {.size = sizeof e};
+        assert_int_equal(cs_state_event(s, i, &e, NULL), CS_OK);
+        if (e.type == CS_EVENT_OVERRIDE) over[e.element] = e.t;
+        assert_true(e.type != CS_EVENT_UNDERRIDE && e.type != CS_EVENT_CABLE_BREAK);
+        if (e.type != CS_EVENT_TERMINATION_BREAK) continue;
+        assert_int_equal(e.element, 0);
+        broken = e.t;
+    }
+    printf("rs5, 10000S: rides over cable 0 at %.4f s, which breaks at %.4f s, and over cables 1-3 at %.4f, "
+           "%.4f and %.4f s: %s\n",
+           over[0], broken, over[1], over[2], over[3], cs_outcome_name(s->outcome));
+    assert_true(over[0] >= 0.0 && broken > over[0]); /* broken after it was passed */
+    for (int c = 1; c < 4; c++)
+        assert_true(over[c] > broken);
+    assert_int_equal(s->cables[0].status, CS_CABLE_BROKEN);
+    assert_int_equal(s->outcome, CS_OVERRIDE);
+    cs_state_free(s);
+    cs_model_free(m);
+    cs_loader_free(l);
+}
+
 /* A roadside example as installed, to be stepped: its loader and model in *l and *m. */
 static cs_state *at_rest(const char *example, cs_loader **l, cs_model **m) {
     *m = example_model(example, NULL, l);
@@ -426,6 +466,7 @@ int main(void) {
                                        cmocka_unit_test(deflection_follows_the_design),
                                        cmocka_unit_test(exit_at_the_last_loss_of_contact),
                                        cmocka_unit_test(the_ledger_closes_across_a_slip),
+                                       cmocka_unit_test(a_rope_passed_then_broken_leaves_an_override),
                                        cmocka_unit_test(a_rope_let_go_and_taken_back_keeps_its_height),
                                        cmocka_unit_test(a_post_struck_while_sliding_out_keeps_the_ledger),
                                        cmocka_unit_test(every_strike_keeps_the_ledger),

@@ -257,11 +257,14 @@ static void end_run(const cs_model *model, cs_state *s, cs_outcome outcome, doub
 }
 
 /* How the vehicle got through: over or under every cable, if it passed every cable it left behind that way
- * (none broke or was let go by an anchor), by the way it passed most; else it broke through. */
+ * (none broke or was let go by an anchor before it passed it: one it passed stays in the barrier, out of its
+ * way, and breaking there later changes nothing of how the vehicle got past it), by the way it passed most;
+ * else it broke through. */
 static cs_outcome through_how(const cs_model *model, const cs_state *s) {
     int over = 0, under = 0;
     for (int c = 0; c < model->cable_count; c++)
-        if (s->cables[c].status == CS_CABLE_BROKEN || s->cables[c].status == CS_CABLE_RELEASED)
+        if (!s->cables[c].passed &&
+            (s->cables[c].status == CS_CABLE_BROKEN || s->cables[c].status == CS_CABLE_RELEASED))
             return CS_BREAKTHROUGH;
     for (int i = 0; i < s->event_count; i++) {
         over += s->events[i].type == CS_EVENT_OVERRIDE;
