@@ -169,7 +169,7 @@ export function summaryTable(data) {
       return [
         'Sudden loss of the barrier\'s force on the vehicle (warning)',
         `${beforeSI} to ${afterSI} between t = ${seconds(w.t_start_s).slice(0, -2)} and ${seconds(w.t_end_s)}`,
-        `${beforeUS} to ${afterUS}; no rope, fitting or attachment failed`,
+        `${beforeUS} to ${afterUS}; no rope, fitting or attachment failed and no rope was passed over or under`,
       ];
     }),
     ['Posts failed', `${s.posts_failed_left + s.posts_failed_right} of ${data.barrier.posts.length}`, `${s.posts_failed_left} at lower x than the impact (${s.posts_failed_rotation_left} past the rotation limit, ${s.posts_failed_shear_left} sheared, ${s.posts_failed_pullout_left} pulled out); ${s.posts_failed_right} at higher x (${s.posts_failed_rotation_right} past the rotation limit, ${s.posts_failed_shear_right} sheared, ${s.posts_failed_pullout_right} pulled out)`],

@@ -77,7 +77,8 @@ static double vehicle_reach(const cs_model *model, const cs_state *s) {
  * earlier to the later. Each sample ends the window of the largest fall to it (from the largest force within
  * the window before it, the latest of equals); that fall is flagged if it passes CS_SUDDEN_LOSS_FRACTION of
  * the largest force so far and no excusing event (a rope breaking, an end fitting letting go, an attachment
- * letting a cable go, an anchor pulling out with its ropes) falls within the window or a sample step of it.
+ * letting a cable go, an anchor pulling out with its ropes, a rope's contact sliding past the face's edge as
+ * the vehicle rides over or runs under it) falls within the window or a sample step of it.
  * It is judged at the next sample, whose events are then known. Falls flagged at successive samples make one
  * stretch, kept by its largest fall; at the end a stretch stays flagged if that fall passes the fraction of
  * the run's largest force (a fall that does passed it of the largest so far, so none is missed). */
@@ -85,7 +86,7 @@ static double vehicle_reach(const cs_model *model, const cs_state *s) {
 static int excuses(cs_event_type type) {
     return type == CS_EVENT_CABLE_BREAK || type == CS_EVENT_TERMINATION_BREAK ||
            type == CS_EVENT_CABLE_RELEASE || type == CS_EVENT_CABLE_PULLED_OFF ||
-           type == CS_EVENT_ANCHOR_PULLOUT;
+           type == CS_EVENT_ANCHOR_PULLOUT || type == CS_EVENT_OVERRIDE || type == CS_EVENT_UNDERRIDE;
 }
 
 void cs_loss_scan_start(cs_loss_scan *scan, double *t, double *f, int size, double step) {

@@ -89,7 +89,8 @@ static void sudden_losses(FILE *f, const cs_state *state, const cs_summary *s) {
         fprintf(
             f,
             "  WARNING sudden loss: force on the vehicle fell from %.1f kN (%.1f kip) to %.1f kN (%.1f kip) "
-            "between %s and %s s with no rope, fitting or attachment failing\n",
+            "between %s and %s s with no rope, fitting or attachment failing and no rope passed over or "
+            "under\n",
             losses[k].force_before_n / 1e3, losses[k].force_before_n / CS_KIP, losses[k].force_after_n / 1e3,
             losses[k].force_after_n / CS_KIP, cs_time_text(losses[k].t_start_s, t0),
             cs_time_text(losses[k].t_end_s, t1));
