@@ -178,7 +178,7 @@ function specs(data) {
     key: 'penetration',
     title: 'Penetration past the cable line',
     caption:
-      'How far the vehicle got past the attack face of the barrier (y = 0, the cable line before impact). Light blue: the front face now; red: the dynamic penetration (the largest so far, the rated value); green dashed: the furthest point of an intact cable (the barrier’s deflection), which ends when no cable is intact.',
+      'How far the vehicle got past the attack face of the barrier (y = 0, the cable line before impact). Light blue: the front face now; red: the dynamic penetration (the largest so far, the rated value); green dashed: the furthest point of a cable that holds, intact or passed over or under by the vehicle (the barrier’s deflection), which ends when none holds.',
     data: [t, S.face, S.penetration, S.deflection],
     series: [line('front face now (m)', '#99c7f2', 7), line('dynamic penetration (m)', '#d91a1a', 2.5), line('cable deflection (m)', '#0d800d', 3, { dash: [8, 5] })],
     axes: [timeAxis, { label: 'past the attack face (m)' }, otherAxis('past the attack face (ft)', 1 / FT, 0)],

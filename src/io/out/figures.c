@@ -157,7 +157,7 @@ static void fig_penetration(cs_plot *p, const cs_figure_data *d, double *t) {
     cs_plot_hline(p, &a, 0, &zero, "attack face (cable line before impact)");
     cs_plot_line(p, &a, t, face, n, &s_face, "front face now (mid-height corners)");
     cs_plot_line(p, &a, t, pen, n, &s_pen, "dynamic penetration (largest so far, any face corner)");
-    cs_plot_line(p, &a, t, cable, n, &s_cable, "barrier deflection (furthest point of an intact cable)");
+    cs_plot_line(p, &a, t, cable, n, &s_cable, "barrier deflection (furthest point of a cable that holds)");
     if (imax >= 0) {
         snprintf(note, sizeof note, "max %.2f m (%.1f ft)", pen[imax], pen[imax] / CS_FT);
         cs_plot_label(p, &a, t[imax], pen[imax], -8, -16, 1, note);
