@@ -77,8 +77,8 @@ typedef enum cs_outcome {
     CS_BREAKTHROUGH,     /**< the vehicle is past the barrier line with no cable holding it */
     CS_TIME_LIMIT,       /**< the run reached scenario.t_end */
     CS_REDIRECTED,       /**< the vehicle left the barrier on the traffic side, moving away from it */
-    CS_OVERRIDE,         /**< it rode over every cable it met (none broke) and went past the barrier line */
-    CS_UNDERRIDE,        /**< it ran under every cable it met (none broke) and went past the barrier line */
+    CS_OVERRIDE,         /**< it rode over every cable it left behind (none broke before it passed) */
+    CS_UNDERRIDE,        /**< it ran under every cable it left behind (none broke before it passed) */
     CS_NO_CONTACT,       /**< it never touched the barrier before the time limit */
     CS_DID_NOT_CONVERGE, /**< the barrier's solves took more than the run's budget, in count or in work
                               (scenario.solve_budget) */
