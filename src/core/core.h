@@ -13,9 +13,11 @@ enum { CS_MAX_CABLES_PER_POST = 64 }; /* = the model's cable limit */
 /* Node ids on a cable's path: posts are 0..post_count-1, the rest are negative. */
 enum { CS_NODE_START = -1, CS_NODE_END = -2, CS_NODE_CORNER = -3 };
 
-/* The vehicle's plan outline: four corners, k = 0 front left, 1 front right, 2 rear left, 3 rear right
- * (the front ones on the crushable face). A cable wrapped on corner k has node id CS_NODE_CORNER - k. */
-enum { CS_CORNERS = 4 };
+/* Where the vehicle meets the cables: the plan outline's four corners, k = 0 front left, 1 front right,
+ * 2 rear left, 3 rear right (the front ones on the crushable face), and the two rear wheels, 4 left and 5
+ * right, which take a rope that passes under the rear overhang (vehicle.c). A cable wrapped on point k has
+ * node id CS_NODE_CORNER - k; "corner" below means any of the six. */
+enum { CS_OUTLINE_CORNERS = 4, CS_CORNERS = 6 };
 enum { CS_PUSH_FACE = 0, CS_PUSH_LEFT = 1, CS_PUSH_RIGHT = 2 }; /* the edge a struck post is pushed by */
 static inline int cs_node_is_corner(int id) {
     return id <= CS_NODE_CORNER && id > CS_NODE_CORNER - CS_CORNERS;
@@ -28,6 +30,9 @@ static inline int cs_corner_node(int k) {
 }
 static inline int cs_corner_front(int k) {
     return k < 2;
+}
+static inline int cs_corner_wheel(int k) {
+    return k >= CS_OUTLINE_CORNERS;
 }
 
 typedef struct cs_rope {
@@ -147,8 +152,12 @@ struct cs_model {
 typedef struct cs_cable_state {
     cs_cable_status status;
     int engaged;
-    int passed; /* the vehicle went over or under it (override, underride): it stays anchored and strung
-                   over its posts, out of contact with the vehicle for good (contact.c) */
+    int passed;   /* the vehicle went over or under it (override, underride): it stays anchored and strung
+                     over its posts, out of contact with the vehicle for good (contact.c) */
+    int handover; /* bit k: corner k may take the rope at any depth at the next contact update (a rear
+                     corner hands it to its wheel as it slides down past the side's bottom) */
+    int passing;  /* bit k: rear corner or wheel k crossed the rope's path with the rope out of its band
+                     (below or above it), and is still across it (contact.c) */
     int node_count;
     int *node;                          /* [max_nodes] */
     int *where;                         /* [post_count] index of each post in node[], -1 if not on the path */

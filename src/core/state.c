@@ -164,7 +164,7 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
     hash_bytes(&h, &s->crush_max, sizeof s->crush_max);
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
-        int flags[3] = {(int)cs->status, cs->engaged, cs->passed};
+        int flags[4] = {(int)cs->status, cs->engaged, cs->passed, cs->passing};
         hash_bytes(&h, flags, sizeof flags);
         hash_bytes(&h, cs->node, (size_t)cs->node_count * sizeof *cs->node);
         hash_bytes(&h, cs->m, (size_t)cs->node_count * sizeof *cs->m); /* the ends' m: their slip too */

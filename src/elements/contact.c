@@ -127,6 +127,12 @@ void cs_contact_place_corners(const cs_model *model, cs_state *s, double crush) 
     }
 }
 
+static void set_engaged(cs_cable_state *cs) {
+    cs->engaged = 0;
+    for (int i = 1; i + 1 < cs->node_count; i++)
+        cs->engaged |= cs_node_is_corner(cs->node[i]);
+}
+
 /* Whether the rope at node i still wraps corner k: the sum of the unit vectors along its two spans (the
  * direction it would pull the corner with equal tensions: the geometry of the turn, whatever friction
  * does to the tensions) has no component out through the face (the rear, for a rear corner) or out
@@ -143,7 +149,7 @@ static int wraps(const cs_state *s, const cs_cable_state *cs, int i, int k) {
         g[e] = a[e] / la + b[e] / lb;
     quat_unrotate(gb, s->quat, g);
     double out_end = cs_corner_front(k) ? gb[0] : -gb[0], out_side = k % 2 == 0 ? gb[1] : -gb[1];
-    return out_end < 0.0 && out_side <= 1e-12;
+    return (cs_corner_wheel(k) || out_end < 0.0) && out_side <= 1e-12; /* a wheel is mid-side */
 }
 
 /* How far across a rope's path a rear corner can come in one step: three times the vehicle's travel in
@@ -175,6 +181,8 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
     /* engage corners that have crossed the path */
     for (int k = 0; k < CS_CORNERS; k++) {
         if (cs_cable_find_node(cs, cs_corner_node(k)) >= 0) continue;
+        /* a rope on a rear corner runs straight along the side past its wheel */
+        if (cs_corner_wheel(k) && cs_cable_find_node(cs, cs_corner_node(k - 2)) >= 0) continue;
         double lo, hi, p[3], zn = 0.0, bz = 0.0;
         corner_heights(model, s, k, &lo, &hi);
         int j = 1;
@@ -190,18 +198,31 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
         if (p[0] <= cs->pos[0] || p[0] >= cs->pos[3 * (cs->node_count - 1)])
             continue; /* beyond the anchors */
         double across = left_of(cs->pos + 3 * (j - 1), cs->pos + 3 * j, p);
-        if (across <= 0.0) continue;
-        /* a rear corner found deep across the path has passed under or over the rope while the rope was
-         * out of the side's band, and the rope stays there: only a corner that crosses it within a step
-         * (its reach) takes it up */
-        if (!cs_corner_front(k) && !released[k] &&
-            across > rear_reach(model, s) * v2_norm(cs->pos[3 * j] - cs->pos[3 * (j - 1)],
-                                                    cs->pos[3 * j + 1] - cs->pos[3 * (j - 1) + 1]))
+        int bit = 1 << k;
+        if (across <= 0.0) {
+            cs->passing &= ~bit;
             continue;
+        }
+        /* a rear corner (or wheel) that crossed the path with the rope out of its band has passed under
+         * or over it, and one found deep across it did so while it was: the rope stays there as long as
+         * the corner is across, however the rope's height moves. Only one that crosses it within a step
+         * (its reach) with the rope in its band takes it up, or one the rope was handed to as it slid past
+         * the side's bottom */
+        int rear = !cs_corner_front(k) && !released[k] && !(cs->handover & bit);
+        if (rear &&
+            ((cs->passing & bit) ||
+             across > rear_reach(model, s) * v2_norm(cs->pos[3 * j] - cs->pos[3 * (j - 1)],
+                                                     cs->pos[3 * j + 1] - cs->pos[3 * (j - 1) + 1]))) {
+            cs->passing |= bit;
+            continue;
+        }
         /* a corner that let the rope go in this update and is across its path again takes it back where it
          * held it (its corner_z kept): the joined span's chord height there is no rope's height */
         if (!released[k] && (zn < lo || zn > hi)) {
-            if (!cs_corner_front(k)) continue; /* below or above the side */
+            if (!cs_corner_front(k)) { /* below or above the side */
+                if (rear) cs->passing |= bit;
+                continue;
+            }
             s->e_released += reference + slip(model, s, c, zn < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
             return;
         }
@@ -222,9 +243,8 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
         reference += before - cs_cable_stored_energy(&model->cables[c], cs);
     }
     s->e_released += reference;
-    cs->engaged = 0;
-    for (int i = 1; i + 1 < cs->node_count; i++)
-        cs->engaged |= cs_node_is_corner(cs->node[i]);
+    cs->handover = 0;
+    set_engaged(cs);
     if (cs->engaged && !s->contact_started) {
         s->contact_started = 1;
         s->summary.first_contact_time_s = s->t;
@@ -254,21 +274,30 @@ void cs_contact_commit(const cs_model *model, cs_state *s) {
 }
 
 /* A contact that slid past its band's edge leaves the vehicle: the cable slips off (below: the vehicle
- * rides over it; above: it runs under it) and stays in the barrier. The failures' re-solve that follows
- * books what the rope lets go of (step.c). Returns 1 if any did. */
+ * rides over it; above: it runs under it) and stays in the barrier, except below a rear corner: a rope
+ * sliding down off the rear overhang meets the rear tyre ahead of it, so the corner lets it go and hands it
+ * to its wheel, which takes it at the update that follows (whatever its depth across the rope's path).
+ * The failures' re-solve that follows books what the rope lets go of (step.c). Returns 1 if any
+ * did. */
 int cs_contact_check_slip(const cs_model *model, cs_state *s) {
     int any = 0;
     for (int c = 0; c < model->cable_count; c++) {
         cs_cable_state *cs = &s->cables[c];
         if (cs->status != CS_CABLE_INTACT || !cs->engaged) continue;
-        for (int i = 1; i + 1 < cs->node_count; i++) {
+        for (int i = cs->node_count - 2; i >= 1; i--) {
             if (!cs_node_is_corner(cs->node[i])) continue;
             int k = cs_node_corner(cs->node[i]);
             double z = cs->corner_z[k], lo, hi;
             cs_vehicle_corner_band(model, k, &lo, &hi);
             if (z >= lo && z <= hi) continue;
-            slip(model, s, c, z < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
             any = 1;
+            if (!cs_corner_front(k) && !cs_corner_wheel(k) && z < lo) {
+                let_go(&model->cables[c], cs, i);
+                cs->handover |= 1 << (k + 2);
+                set_engaged(cs);
+                continue;
+            }
+            slip(model, s, c, z < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
             break;
         }
     }

@@ -135,7 +135,7 @@ cs_status cs_state_vehicle(const cs_model *model, const cs_state *s, cs_vehicle_
     out->face_force = s->face_force;
     out->penetration = s->summary.max_dynamic_penetration_m;
     v3_copy(out->barrier_force, s->force);
-    for (int k = 0; k < CS_CORNERS; k++) {
+    for (int k = 0; k < CS_OUTLINE_CORNERS; k++) {
         double lo, hi;
         cs_vehicle_corner_band(model, k, &lo, &hi);
         cs_vehicle_corner_point(model, s, s->crush, k, 0.5 * (lo + hi),

@@ -30,6 +30,7 @@ static void reset_cable(const cs_model *model, int c, cs_cable_state *cs) {
     cs->status = CS_CABLE_INTACT;
     cs->engaged = 0;
     cs->passed = 0;
+    cs->handover = cs->passing = 0;
     cs->node_count = model->post_count + 2;
     cs->node[0] = CS_NODE_START;
     v3_set(cs->pos, model->anchors[0].x, 0.0, model->anchors[0].z);
