@@ -474,6 +474,46 @@ static void the_rear_wheel_takes_a_rope_under_the_overhang(void **state) {
     cs_loader_free(l);
 }
 
+/* A rope that slides down off a rear corner, under the sill, meets the rear tyre ahead of it: the corner
+ * lets it go and hands it to its wheel, which takes it at the update that follows wherever it lies across
+ * the rope's path, and the rope neither slips off the vehicle nor leaves the barrier. RS1's middle rope
+ * (0.64 m) wraps the left rear corner as the tail swings in; 20 ms on, with the corner and the wheel deep
+ * across its path, its contact there is put 1 cm under the sill and the failures' checks run as a step
+ * runs them. */
+static void a_rope_sliding_off_a_rear_corner_goes_to_its_wheel(void **state) {
+    (void)state;
+    cs_loader *l;
+    cs_model *m;
+    cs_error err;
+    cs_state *s = at_rest("roadside/rs1", &l, &m);
+    const int c = 1, corner = 2, wheel = 4;
+    cs_cable_state *cs = &s->cables[c];
+    double held = 0.0; /* 20 ms after the corner took the rope, deep across it with its wheel */
+    while (s->t < 0.5 && held < 0.02) {
+        assert_int_equal(cs_step(m, s, &err), CS_OK);
+        held = cs_cable_find_node(cs, cs_corner_node(corner)) > 0 ? held + m->scenario.dt : 0.0;
+    }
+    assert_true(cs_cable_find_node(cs, cs_corner_node(corner)) > 0);
+    assert_true(cs_cable_find_node(cs, cs_corner_node(wheel)) < 0);
+    double lo, hi;
+    cs_vehicle_corner_band(m, corner, &lo, &hi);
+    cs->corner_z[corner] = lo - 0.01;
+    int events = cs_state_event_count(s);
+    assert_int_equal(cs_contact_check_slip(m, s), 1);
+    assert_true(cs_cable_find_node(cs, cs_corner_node(corner)) < 0);
+    assert_true(cs->handover == 1 << wheel);
+    cs_contact_update(m, s);
+    int i = cs_cable_find_node(cs, cs_corner_node(wheel));
+    printf("rs1: cable %d slid off the rear corner at %.4f s and its wheel took it, node %d\n", c, s->t, i);
+    assert_true(i > 0);
+    assert_true(cs->handover == 0);
+    assert_true(cs->status == CS_CABLE_INTACT && !cs->passed && cs->engaged);
+    assert_int_equal(cs_state_event_count(s), events); /* no override */
+    cs_state_free(s);
+    cs_model_free(m);
+    cs_loader_free(l);
+}
+
 /* A post's ring dies at its damper's rate (docs/theory.md, Posts with mass, "The post's damper"). RS5's
  * post 22 keeps cables 0 and 1 in its slot, leaning near the slot's open end; the releases and failures
  * near it (cables let go by posts 21-23 at 0.452-0.460 s, post 19 at its rotation limit at 0.480 s) set it
@@ -530,6 +570,7 @@ int main(void) {
                                        cmocka_unit_test(a_struck_post_slides_only_while_pushed),
                                        cmocka_unit_test(a_rope_sliding_down_the_face_holds_coulombs_ratio),
                                        cmocka_unit_test(the_rear_wheel_takes_a_rope_under_the_overhang),
+                                       cmocka_unit_test(a_rope_sliding_off_a_rear_corner_goes_to_its_wheel),
                                        cmocka_unit_test(a_post_ring_dies_at_its_damping_rate)};
     int failed = cmocka_run_group_tests(tests, NULL, NULL);
     return failed ? failed : pin_skipped ? 77 : 0;
