@@ -248,7 +248,7 @@ static void the_ledger_closes_across_a_slip(void **state) {
  * 10000S, whose bumper (0.50 m) rides above the lowest rope (0.48 m), that rope's end fittings at 18% of
  * its strength (31.2 kN): the truck rides over it as it first meets it (0.0045 s); the posts leaning under
  * the three ropes above pull it to its fittings' strength (0.0515 s); then the truck pushes the three
- * down its face and rides over each (0.98-1.03 s). It broke no rope it met: the run ends override, not
+ * down its face and rides over each (0.96-1.01 s). It broke no rope it met: the run ends override, not
  * breakthrough. */
 static void a_rope_passed_then_broken_leaves_an_override(void **state) {
     (void)state;
