@@ -215,7 +215,7 @@ void cs_post_struck_slide_start(const cs_model *model, cs_state *s, int p) {
 
 /* A post already sliding under its ropes when struck: from here the edge drags it, so the shaft's slip
  * and the slide's motion, which the rigid-plastic slide does not hold, go to post damping (what the
- * strike takes from them: -50 J to 0.94 kJ a post in the examples, theory.md). Call before it is
+ * strike takes from them: -50 J to 0.45 kJ a post in the roadside examples, theory.md). Call before it is
  * captured. */
 void cs_post_struck_slide_take(const cs_model *model, cs_state *s, int p) {
     cs_post_state *ps = &s->posts[p];
