@@ -47,6 +47,9 @@ CS_API void cs_model_free(cs_model *model);
 CS_API int cs_model_cable_count(const cs_model *model);
 /** The number of posts. */
 CS_API int cs_model_post_count(const cs_model *model);
+/** The most points a cable's path can hold (its anchors, every post and every point of the vehicle a
+ * cable can wrap): the capacity that cs_state_cable_path never truncates. */
+CS_API int cs_model_path_capacity(const cs_model *model);
 /** A post's position along the barrier, m. */
 CS_API double cs_model_post_x(const cs_model *model, int post);
 /** A cable's height at the posts, m. */

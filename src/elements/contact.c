@@ -6,7 +6,9 @@
  * that lies on the protected side of the path (to the left of the path directed from the start anchor to
  * the end anchor) becomes a support of the cable, with capstan friction (cable.c), so a cable bears on
  * the face head-on, on the front corner and along a side at an angle (straight between the front and rear
- * corners: the side is flat), and on the rear corner as the rear swings in. Between the vehicle and the
+ * corners: the side is flat), and on the rear corner as the rear swings in, or on the rear wheel (the tyre
+ * at the rear axle, in the side's plane, from the ground to the side's top) where the rope runs under the
+ * rear overhang; a wheel takes no rope its rear corner holds. Between the vehicle and the
  * nearest standing posts the cable stays straight. Both tests are in 3D: a corner is tested where the
  * rope runs at its abscissa (a pitched body is not where it is at the CG's height), and released when
  * the rope no longer presses it into the outline: when its pull has a component out through the face
@@ -15,12 +17,13 @@
  * Heights: a cable engages at its height on the span it runs on (the straight line between its
  * neighbouring supports). At a front corner, below the face's bottom edge the vehicle rides over it
  * (override), above the top edge it runs under it (underride). At a rear corner a cable outside the
- * side's band passes below or above the body and does not engage. Once engaged, the contact's height at
- * the corner is an unknown of the barrier solve with Coulomb friction on the vertical body: it sticks
- * while the spans' pull along the body is at most mu times their pull into it, else it slides with the
+ * side's band passes below or above the body and does not engage, and goes on passing it while the
+ * corner stays across it (`passing`): below the sill the rear wheel meets it. Once engaged, the contact's
+ * height at the corner is an unknown of the barrier solve with Coulomb friction on the vertical body: it
+ * sticks while the spans' pull along the body is at most mu times their pull into it, else it slides with the
  * pull (its row below). A contact that slides past an edge slips off the vehicle for good (override or
  * underride): the vehicle passes over or under the rope, which stays anchored and strung over its posts,
- * out of contact with the vehicle. */
+ * out of contact with the vehicle; one that slides down off a rear corner is handed to its wheel. */
 #include "core/vec3.h"
 #include "elements/rows.h"
 
@@ -182,7 +185,10 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
     for (int k = 0; k < CS_CORNERS; k++) {
         if (cs_cable_find_node(cs, cs_corner_node(k)) >= 0) continue;
         /* a rope on a rear corner runs straight along the side past its wheel */
-        if (cs_corner_wheel(k) && cs_cable_find_node(cs, cs_corner_node(k - 2)) >= 0) continue;
+        if (cs_corner_wheel(k) && cs_cable_find_node(cs, cs_corner_node(k - 2)) >= 0) {
+            cs->passing &= ~(1 << k);
+            continue;
+        }
         double lo, hi, p[3], zn = 0.0, bz = 0.0;
         corner_heights(model, s, k, &lo, &hi);
         int j = 1;
@@ -219,8 +225,8 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
         /* a corner that let the rope go in this update and is across its path again takes it back where it
          * held it (its corner_z kept): the joined span's chord height there is no rope's height */
         if (!released[k] && (zn < lo || zn > hi)) {
-            if (!cs_corner_front(k)) { /* below or above the side */
-                if (rear) cs->passing |= bit;
+            if (!cs_corner_front(k)) { /* below or above the side (or the tyre) */
+                cs->passing |= bit;
                 continue;
             }
             s->e_released += reference + slip(model, s, c, zn < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
@@ -237,10 +243,17 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
          * it there). A corner taken up again goes on with the rope it had. */
         double before = cs_cable_stored_energy(&model->cables[c], cs);
         cs_cable_insert_node(cs, j, cs_corner_node(k), p);
+        cs->passing &= ~bit;
         if (released[k] && was_m[k] > cs->m[j - 1] && was_m[k] < cs->m[j + 1] &&
             was_m_commit[k] > cs->m_commit[j - 1] && was_m_commit[k] < cs->m_commit[j + 1])
             cs->m[j] = was_m[k], cs->m_commit[j] = was_m_commit[k];
         reference += before - cs_cable_stored_energy(&model->cables[c], cs);
+    }
+    /* a rear corner that holds the rope holds it straight along the side past its wheel */
+    for (int k = CS_OUTLINE_CORNERS - 2; k < CS_OUTLINE_CORNERS; k++) {
+        int w = cs_cable_find_node(cs, cs_corner_node(k + 2));
+        if (w > 0 && cs_cable_find_node(cs, cs_corner_node(k)) > 0)
+            reference += let_go(&model->cables[c], cs, w);
     }
     s->e_released += reference;
     cs->handover = 0;

@@ -243,7 +243,7 @@ void cs_vehicle_face_point(const cs_model *model, const cs_state *s, double crus
                            double z_body, double *world);
 /* Corner k (CS_CORNERS: the outline's four and the rear wheels) at body height z_body, in the world (the
  * front ones crush back), and the body-z band it meets cables over (the face's, the side's, or a rear
- * tyre's from the ground to the side's bottom). */
+ * wheel's from the ground to the side's top). */
 void cs_vehicle_corner_point(const cs_model *model, const cs_state *s, double crush, int k, double z_body,
                              double *world);
 void cs_vehicle_corner_band(const cs_model *model, int k, double *lo, double *hi);

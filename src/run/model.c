@@ -441,6 +441,9 @@ int cs_model_cable_count(const cs_model *m) {
 int cs_model_post_count(const cs_model *m) {
     return m->post_count;
 }
+int cs_model_path_capacity(const cs_model *m) {
+    return m->max_nodes;
+}
 double cs_model_post_x(const cs_model *m, int p) {
     return m->posts[p].x;
 }

@@ -61,7 +61,7 @@ static void close_decel_window(const cs_model *model, cs_state *s) {
  * top over). */
 static double vehicle_reach(const cs_model *model, const cs_state *s) {
     double best = -HUGE_VAL, p[3];
-    for (int k = 0; k < CS_CORNERS; k++) {
+    for (int k = 0; k < CS_OUTLINE_CORNERS; k++) {
         double z[2];
         cs_vehicle_corner_band(model, k, &z[0], &z[1]);
         for (int e = 0; e < 2; e++) {
