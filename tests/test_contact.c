@@ -24,8 +24,9 @@ static void crush_loads_on_its_curve_and_unloads_elastically(void **state) {
     CHECK_REL(cs_crush_force(&v, 0.7, dmax), cs_crush_curve(&v, 0.7), 1e-12); /* loading past dmax */
 }
 
-/* A cable below the face's bottom edge (a truck whose bumper rides above it) is overridden, one above its
- * top is run under: each slips at first contact with its event, the rest engage and hold. The one passed
+/* A cable below the face's bottom edge and below the front tyres' axle (a truck whose bumper and axle ride
+ * above it: a 0.95-m wheel, its axle at 0.90 m) is overridden, one above its top is run under: each slips
+ * at first contact with its event, the rest engage and hold. The one passed
  * stays in the barrier: anchored and over every post still standing, out of contact, and hanging from them
  * at a tension (the other rope pulls the end posts in toward the truck, so it sags, here at a tenth and a
  * sixth of its pretension, where a rope let go would carry nothing), reported as "slipped". */
@@ -36,6 +37,7 @@ static void cables_below_and_above_the_face_slip(void **state) {
         fixture_aps3(&fx);
         fx.vehicle.face_bottom = k == 0 ? 1.0 : 0.3; /* the lower cable (0.86 m) below it, then */
         fx.vehicle.face_top = k == 0 ? 1.6 : 1.0;    /* the upper (1.22 m) above it */
+        fx.vehicle.wheel_radius = k == 0 ? 0.95 : fx.vehicle.wheel_radius;
         fx.scenario.t_end = 0.05;
         cs_error err;
         cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
@@ -73,6 +75,70 @@ static void cables_below_and_above_the_face_slip(void **state) {
         cs_state_free(s);
         cs_model_free(m);
     }
+}
+
+/* A rope under the bumper but above the front tyres' axle meets the tyres (docs/theory.md, The vehicle's
+ * outline, "The front wheels"). The APS3 truck, its face narrowed to 1.8 m (it strikes no post in the middle
+ * of an 8-ft bay) and its bumper raised to 1.0 m over the lower rope (0.86 m), its axle at 0.35 m (0.40-m
+ * wheels, 0.05 m of static deflection): head-on, the face meets the upper rope and both front corners pass
+ * over the lower one with no event; both front wheels take it, at the front axle in the planes of the sides
+ * to 1e-9 m, above the axle and below the bumper, no sooner than the truck has gone its front overhang
+ * (1.1 m) past the rope's line (the posts the upper rope leans carry the lower one ahead of the truck, so it
+ * meets the wheels later), and they push it: its tension rises above its pretension. */
+static void a_rope_under_the_bumper_meets_the_front_tyres(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    fx.vehicle.front_width = 1.8;
+    fx.vehicle.face_bottom = 1.0;
+    fx.vehicle.face_top = 1.6;
+    fx.scenario.t_end = 0.3;
+    const cs_vehicle_def *v = &fx.vehicle;
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    cs_state *s = cs_state_create(m, &err);
+    const cs_cable_state *cs = &s->cables[0];
+    double t_face = -1.0, y_face = 0.0, taken = -1.0;
+    while (s->outcome == CS_RUNNING && taken < 0.0) {
+        assert_int_equal(cs_step(m, s, &err), CS_OK);
+        if (t_face < 0.0 && s->cables[1].engaged) t_face = s->t, y_face = s->pos[1];
+        for (int k = 0; k < 2; k++)
+            assert_true(cs_cable_find_node(cs, cs_corner_node(k)) < 0);
+        if (cs_cable_find_node(cs, cs_corner_node(6)) > 0 || cs_cable_find_node(cs, cs_corner_node(7)) > 0)
+            taken = s->t;
+    }
+    double overhang = v->cg_to_front - v->cg_to_front_axle, gone = s->pos[1] - y_face;
+    printf(
+        "the lower rope under the bumper: the face met the upper rope at %.4f s, the front wheels took the "
+        "lower at %.4f s, %.3f m on (the overhang %.2f m)\n",
+        t_face, taken, gone, overhang);
+    assert_true(t_face > 0.0 && taken > t_face);
+    assert_true(gone >= overhang);
+    for (int k = 6; k < 8; k++) {
+        int i = cs_cable_find_node(cs, cs_corner_node(k));
+        assert_true(i > 0);
+        double d[3], b[3];
+        v3_sub(d, cs->pos + 3 * i, s->pos);
+        quat_unrotate(b, s->quat, d);
+        CHECK_ABS(b[0], v->cg_to_front_axle, 1e-9);
+        CHECK_ABS(b[1], (k == 6 ? 0.5 : -0.5) * v->front_width, 1e-9);
+        assert_true(b[2] > v->wheel_radius - v->tyre_static_deflection - v->cg_height &&
+                    b[2] < v->face_bottom - v->cg_height);
+    }
+    assert_true(cs->status == CS_CABLE_INTACT && !cs->passed && cs->engaged);
+    double t_pushed = s->t + 0.05, before = cs->tension[cs_cable_find_node(cs, cs_corner_node(6))];
+    while (s->outcome == CS_RUNNING && s->t < t_pushed)
+        assert_int_equal(cs_step(m, s, &err), CS_OK);
+    int i6 = cs_cable_find_node(cs, cs_corner_node(6));
+    assert_true(i6 > 0);
+    printf("the rope between the wheels: %.1f kN when taken, %.1f kN 50 ms on (pretension %.1f kN)\n",
+           before / 1e3, cs->tension[i6] / 1e3, m->cables[0].pretension / 1e3);
+    assert_true(cs->tension[i6] > m->cables[0].pretension && cs->tension[i6] > before);
+    for (int i = 0; i < cs_state_event_count(s); i++)
+        assert_true(s->events[i].type != CS_EVENT_OVERRIDE && s->events[i].type != CS_EVENT_UNDERRIDE);
+    cs_state_free(s);
+    cs_model_free(m);
 }
 
 /* Head-on and centred, each cable wraps both corners of the face; the face's normal force is what the
@@ -251,6 +317,7 @@ static void corners_take_up_a_hanging_rope_with_no_work(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(crush_loads_on_its_curve_and_unloads_elastically),
                                        cmocka_unit_test(cables_below_and_above_the_face_slip),
+                                       cmocka_unit_test(a_rope_under_the_bumper_meets_the_front_tyres),
                                        cmocka_unit_test(cables_wrap_both_corners),
                                        cmocka_unit_test(events_in_order_and_once),
                                        cmocka_unit_test(vehicle_slides_along_a_rope_line),

@@ -270,8 +270,9 @@ typedef struct cs_barrier_def {
 /** Vehicle: a rigid body with a crushable front face. Body frame: x forward, y left, z up, origin at
  * the centre of gravity. Heights are above grade with the vehicle at rest on its tyres. In plan the body
  * is a rectangle front_width wide from the front face to the rear: the cables bear on its four corners,
- * the front ones between the face's bottom and top, the rear ones between the sides' bottom and top, and on
- * its rear tyres at the rear axle, from the ground up (a rope that passes under the rear overhang). */
+ * the front ones between the face's bottom and top, the rear ones between the sides' bottom and top, on
+ * its rear tyres at the rear axle, from the ground up (a rope that passes under the rear overhang), and on
+ * its front tyres at the front axle, from the axle's height up (a rope that passes under the bumper). */
 typedef struct cs_vehicle_def {
     size_t
         size; /**< the size of this struct in the program that filled it: set by cs_default_vehicle_def() */
@@ -298,6 +299,7 @@ typedef struct cs_vehicle_def {
     double crush_deformation[CS_MAX_CRUSH_POINTS]; /**< m */
     double crush_force[CS_MAX_CRUSH_POINTS];       /**< N */
     double crush_unload_stiffness;                 /**< N/m; crush is permanent beyond elastic recovery */
+    double wheel_radius; /**< unloaded tyre radius, m: a front tyre takes a rope above its axle */
 } cs_vehicle_def;
 
 /** The attack and how to integrate it. */

@@ -14,10 +14,11 @@ enum { CS_MAX_CABLES_PER_POST = 64 }; /* = the model's cable limit */
 enum { CS_NODE_START = -1, CS_NODE_END = -2, CS_NODE_CORNER = -3 };
 
 /* Where the vehicle meets the cables: the plan outline's four corners, k = 0 front left, 1 front right,
- * 2 rear left, 3 rear right (the front ones on the crushable face), and the two rear wheels, 4 left and 5
- * right, which take a rope that passes under the rear overhang (vehicle.c). A cable wrapped on point k has
- * node id CS_NODE_CORNER - k; "corner" below means any of the six. */
-enum { CS_OUTLINE_CORNERS = 4, CS_CORNERS = 6 };
+ * 2 rear left, 3 rear right (the front ones on the crushable face), the two rear wheels, 4 left and 5
+ * right, which take a rope that passes under the rear overhang, and the two front wheels, 6 left and 7
+ * right, which take one that passes under the front bumper above their axle (vehicle.c). A cable wrapped
+ * on point k has node id CS_NODE_CORNER - k; "corner" below means any of the eight. */
+enum { CS_OUTLINE_CORNERS = 4, CS_CORNERS = 8 };
 enum { CS_PUSH_FACE = 0, CS_PUSH_LEFT = 1, CS_PUSH_RIGHT = 2 }; /* the edge a struck post is pushed by */
 static inline int cs_node_is_corner(int id) {
     return id <= CS_NODE_CORNER && id > CS_NODE_CORNER - CS_CORNERS;
@@ -28,11 +29,20 @@ static inline int cs_node_corner(int id) {
 static inline int cs_corner_node(int k) {
     return CS_NODE_CORNER - k;
 }
-static inline int cs_corner_front(int k) {
+static inline int cs_corner_front(int k) { /* a front corner, on the face */
     return k < 2;
 }
 static inline int cs_corner_wheel(int k) {
     return k >= CS_OUTLINE_CORNERS;
+}
+static inline int cs_corner_front_wheel(int k) {
+    return k >= CS_OUTLINE_CORNERS + 2;
+}
+static inline int cs_wheel_of(int k) { /* the wheel behind outline corner k, on its side */
+    return cs_corner_front(k) ? k + 6 : k + 2;
+}
+static inline int cs_wheel_corner(int k) { /* the outline corner ahead of (or behind) wheel k */
+    return cs_corner_front_wheel(k) ? k - 6 : k - 2;
 }
 
 typedef struct cs_rope {
@@ -154,10 +164,10 @@ typedef struct cs_cable_state {
     int engaged;
     int passed;   /* the vehicle went over or under it (override, underride): it stays anchored and strung
                      over its posts, out of contact with the vehicle for good (contact.c) */
-    int handover; /* bit k: corner k may take the rope at any depth at the next contact update (a rear
-                     corner hands it to its wheel as it slides down past the side's bottom) */
-    int passing;  /* bit k: rear corner or wheel k crossed the rope's path with the rope out of its band
-                     (below or above it), and is still across it (contact.c) */
+    int handover; /* bit k: wheel k may take the rope at any depth at the next contact update (a corner
+                     hands it to its wheel as it slides down past the face's or the side's bottom) */
+    int passing;  /* bit k: corner or wheel k crossed the rope's path with the rope out of its band (a
+                     front corner: below it), and is still across it (contact.c) */
     int node_count;
     int *node;                          /* [max_nodes] */
     int *where;                         /* [post_count] index of each post in node[], -1 if not on the path */

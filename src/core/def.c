@@ -195,6 +195,7 @@ cs_vehicle_def cs_default_vehicle_def(void) {
     d.tyre_friction = 0.7;
     d.face_friction = 0.3;
     d.crush_unload_stiffness = 2.0e7;
+    d.wheel_radius = 0.4;
     return d;
 }
 

@@ -6,24 +6,26 @@
  * that lies on the protected side of the path (to the left of the path directed from the start anchor to
  * the end anchor) becomes a support of the cable, with capstan friction (cable.c), so a cable bears on
  * the face head-on, on the front corner and along a side at an angle (straight between the front and rear
- * corners: the side is flat), and on the rear corner as the rear swings in, or on the rear wheel (the tyre
- * at the rear axle, in the side's plane, from the ground to the side's top) where the rope runs under the
- * rear overhang; a wheel takes no rope its rear corner holds. Between the vehicle and the
- * nearest standing posts the cable stays straight. Both tests are in 3D: a corner is tested where the
- * rope runs at its abscissa (a pitched body is not where it is at the CG's height), and released when
- * the rope no longer presses it into the outline: when its pull has a component out through the face
- * (or the rear) or out through the side at that corner.
+ * corners: the side is flat), and on the rear corner as the rear swings in. The four tyres, at their axles
+ * in the sides' planes, take what passes under the body: a rear wheel (from the ground to the side's top)
+ * a rope that runs under the rear overhang, a front wheel (from its axle's height up) one that runs under
+ * the bumper; a wheel takes no rope the corner on its side holds. Between the vehicle and the nearest
+ * standing posts the cable stays straight. Both tests are in 3D: a corner is tested where the rope runs at
+ * its abscissa (a pitched body is not where it is at the CG's height), and released when the rope no
+ * longer presses it into the outline: when its pull has a component out through the face (or the rear)
+ * or out through the side at that corner.
  *
  * Heights: a cable engages at its height on the span it runs on (the straight line between its
- * neighbouring supports). At a front corner, below the face's bottom edge the vehicle rides over it
- * (override), above the top edge it runs under it (underride). At a rear corner a cable outside the
- * side's band passes below or above the body and does not engage, and goes on passing it while the
- * corner stays across it (`passing`): below the sill the rear wheel meets it. Once engaged, the contact's
- * height at the corner is an unknown of the barrier solve with Coulomb friction on the vertical body: it
- * sticks while the spans' pull along the body is at most mu times their pull into it, else it slides with the
- * pull (its row below). A contact that slides past an edge slips off the vehicle for good (override or
- * underride): the vehicle passes over or under the rope, which stays anchored and strung over its posts,
- * out of contact with the vehicle; one that slides down off a rear corner is handed to its wheel. */
+ * neighbouring supports). Above a front corner's band the vehicle runs under it (underride), below a front
+ * tyre's axle the tyre climbs over it (override). A corner or wheel that finds the cable otherwise out of
+ * its band passes below or above it and does not engage, and goes on passing it while it stays across it
+ * (`passing`): below the bumper the front wheel meets it, below the sill the rear wheel. Once engaged, the
+ * contact's height at the corner is an unknown of the barrier solve with Coulomb friction on the vertical
+ * body: it sticks while the spans' pull along the body is at most mu times their pull into it, else it
+ * slides with the pull (its row below). A contact that slides past an edge slips off the vehicle for good
+ * (override or underride): the vehicle passes over or under the rope, which stays anchored and strung over
+ * its posts, out of contact with the vehicle; one that slides down off a corner of the outline is handed to
+ * its wheel. */
 #include "core/vec3.h"
 #include "elements/rows.h"
 
@@ -161,6 +163,13 @@ static double rear_reach(const cs_model *model, const cs_state *s) {
     return fmax(0.05, 3.0 * v3_norm(s->vel) * model->scenario.dt);
 }
 
+/* Body z of the axle of the front wheel behind front corner k: its band's bottom. */
+static double axle_z(const cs_model *model, int k) {
+    double lo, hi;
+    cs_vehicle_corner_band(model, cs_wheel_of(k), &lo, &hi);
+    return lo;
+}
+
 static void update_cable(const cs_model *model, cs_state *s, int c) {
     cs_cable_state *cs = &s->cables[c];
     /* the changes of the sag's reference made below (a corner let go joins its two spans at one tension
@@ -184,8 +193,8 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
     /* engage corners that have crossed the path */
     for (int k = 0; k < CS_CORNERS; k++) {
         if (cs_cable_find_node(cs, cs_corner_node(k)) >= 0) continue;
-        /* a rope on a rear corner runs straight along the side past its wheel */
-        if (cs_corner_wheel(k) && cs_cable_find_node(cs, cs_corner_node(k - 2)) >= 0) {
+        /* a rope on a corner runs straight along the side past its wheel */
+        if (cs_corner_wheel(k) && cs_cable_find_node(cs, cs_corner_node(cs_wheel_corner(k))) >= 0) {
             cs->passing &= ~(1 << k);
             continue;
         }
@@ -209,27 +218,32 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
             cs->passing &= ~bit;
             continue;
         }
-        /* a rear corner (or wheel) that crossed the path with the rope out of its band has passed under
-         * or over it, and one found deep across it did so while it was: the rope stays there as long as
-         * the corner is across, however the rope's height moves. Only one that crosses it within a step
-         * (its reach) with the rope in its band takes it up, or one the rope was handed to as it slid past
-         * the side's bottom */
-        int rear = !cs_corner_front(k) && !released[k] && !(cs->handover & bit);
-        if (rear &&
-            ((cs->passing & bit) ||
-             across > rear_reach(model, s) * v2_norm(cs->pos[3 * j] - cs->pos[3 * (j - 1)],
-                                                     cs->pos[3 * j + 1] - cs->pos[3 * (j - 1) + 1]))) {
+        /* a corner (or wheel) that crossed the path with the rope out of its band has passed under or
+         * over it, and a rear corner or wheel found deep across it did so while it was: the rope stays
+         * there as long as the corner is across, however the rope's height moves. Only one that crosses it
+         * within a step (its reach) with the rope in its band takes it up, or a wheel the rope was handed
+         * to as it slid past the face's or the side's bottom */
+        int fresh = !released[k] && !(cs->handover & bit);
+        int deep = !cs_corner_front(k) &&
+                   across > rear_reach(model, s) * v2_norm(cs->pos[3 * j] - cs->pos[3 * (j - 1)],
+                                                           cs->pos[3 * j + 1] - cs->pos[3 * (j - 1) + 1]);
+        if (fresh && ((cs->passing & bit) || deep)) {
             cs->passing |= bit;
             continue;
         }
         /* a corner that let the rope go in this update and is across its path again takes it back where it
-         * held it (its corner_z kept): the joined span's chord height there is no rope's height */
+         * held it (its corner_z kept): the joined span's chord height there is no rope's height. Out of
+         * its band: over the face's top the vehicle runs under the rope; below a front tyre's axle, met
+         * at the wheel or already at the bumper, the tyre climbs over it; otherwise the corner or wheel
+         * passes the rope, and below the bumper or the sill the wheel behind it meets it next */
         if (!released[k] && (zn < lo || zn > hi)) {
-            if (!cs_corner_front(k)) { /* below or above the side (or the tyre) */
+            int under = cs_corner_front(k) && zn > hi;
+            int over = zn < lo && (cs_corner_front_wheel(k) || (cs_corner_front(k) && bz < axle_z(model, k)));
+            if (!under && !over) {
                 cs->passing |= bit;
                 continue;
             }
-            s->e_released += reference + slip(model, s, c, zn < lo ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
+            s->e_released += reference + slip(model, s, c, over ? CS_EVENT_OVERRIDE : CS_EVENT_UNDERRIDE);
             return;
         }
         if (!released[k]) cs->corner_z[k] = cs->corner_z_commit[k] = bz;
@@ -249,9 +263,9 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
             cs->m[j] = was_m[k], cs->m_commit[j] = was_m_commit[k];
         reference += before - cs_cable_stored_energy(&model->cables[c], cs);
     }
-    /* a rear corner that holds the rope holds it straight along the side past its wheel */
-    for (int k = CS_OUTLINE_CORNERS - 2; k < CS_OUTLINE_CORNERS; k++) {
-        int w = cs_cable_find_node(cs, cs_corner_node(k + 2));
+    /* a corner that holds the rope holds it straight along the side past its wheel */
+    for (int k = 0; k < CS_OUTLINE_CORNERS; k++) {
+        int w = cs_cable_find_node(cs, cs_corner_node(cs_wheel_of(k)));
         if (w > 0 && cs_cable_find_node(cs, cs_corner_node(k)) > 0)
             reference += let_go(&model->cables[c], cs, w);
     }
@@ -287,11 +301,12 @@ void cs_contact_commit(const cs_model *model, cs_state *s) {
 }
 
 /* A contact that slid past its band's edge leaves the vehicle: the cable slips off (below: the vehicle
- * rides over it; above: it runs under it) and stays in the barrier, except below a rear corner: a rope
- * sliding down off the rear overhang meets the rear tyre ahead of it, so the corner lets it go and hands it
- * to its wheel, which takes it at the update that follows (whatever its depth across the rope's path).
- * The failures' re-solve that follows books what the rope lets go of (step.c). Returns 1 if any
- * did. */
+ * rides over it; above: it runs under it) and stays in the barrier, except below a corner of the outline: a
+ * rope sliding down off the bumper or the rear overhang meets the tyre behind or ahead of it, so the corner
+ * lets it go, passes it (`passing`) and hands it to its wheel, which takes it at the update that follows
+ * (whatever its depth across the rope's path) or when it comes across it. A rope that slides down a front
+ * tyre below its axle is ridden over. The failures' re-solve that follows books what the rope lets go of
+ * (step.c). Returns 1 if any did. */
 int cs_contact_check_slip(const cs_model *model, cs_state *s) {
     int any = 0;
     for (int c = 0; c < model->cable_count; c++) {
@@ -304,9 +319,10 @@ int cs_contact_check_slip(const cs_model *model, cs_state *s) {
             cs_vehicle_corner_band(model, k, &lo, &hi);
             if (z >= lo && z <= hi) continue;
             any = 1;
-            if (!cs_corner_front(k) && !cs_corner_wheel(k) && z < lo) {
+            if (!cs_corner_wheel(k) && z < lo && !(cs_corner_front(k) && z < axle_z(model, k))) {
                 let_go(&model->cables[c], cs, i);
-                cs->handover |= 1 << (k + 2);
+                cs->passing |= 1 << k;
+                cs->handover |= 1 << cs_wheel_of(k);
                 set_engaged(cs);
                 continue;
             }

@@ -52,23 +52,31 @@ void cs_vehicle_face_point(const cs_model *model, const cs_state *s, double crus
     body_to_world(s, b, world);
 }
 
-/* The rear wheels: at the rear axle the tyre fills the side from the ground to the wheel arch, and the body
- * from there up, so a wheel meets ropes from the ground to the side's top, its tyre's outer face taken in
- * the plane of the side (docs/assumptions.md). A rope that passes under the rear overhang meets it there
- * (docs/theory.md, "The rear wheels"). */
+/* The wheels' contact points. At the rear axle the tyre fills the side from the ground to the wheel arch,
+ * and the body from there up, so a rear wheel meets ropes from the ground to the side's top, its tyre's
+ * outer face taken in the plane of the side (docs/assumptions.md): a rope that passes under the rear
+ * overhang meets it there (docs/theory.md, "The rear wheels"). A front tyre meets a rope that passes under
+ * the bumper with its tread: above the axle it pushes the rope forward and up into the wheel arch and takes
+ * it, below the axle it presses it down and climbs over it, so a front wheel's band starts at the axle's
+ * height at rest, `wheel_radius - tyre_static_deflection` (docs/theory.md, "The front wheels"). */
 void cs_vehicle_corner_point(const cs_model *model, const cs_state *s, double crush, int k, double z_body,
                              double *world) {
     const cs_vehicle_def *v = &model->vehicle.def;
-    double x = cs_corner_front(k)   ? v->cg_to_front - crush
-               : cs_corner_wheel(k) ? v->cg_to_front_axle - v->wheelbase
-                                    : -v->cg_to_rear;
+    double x = cs_corner_front(k)         ? v->cg_to_front - crush
+               : cs_corner_front_wheel(k) ? v->cg_to_front_axle
+               : cs_corner_wheel(k)       ? v->cg_to_front_axle - v->wheelbase
+                                          : -v->cg_to_rear;
     double b[3] = {x, (k % 2 == 0 ? 0.5 : -0.5) * v->front_width, z_body};
     body_to_world(s, b, world);
 }
 
 void cs_vehicle_corner_band(const cs_model *model, int k, double *lo, double *hi) {
     const cs_vehicle_def *v = &model->vehicle.def;
-    *lo = (cs_corner_front(k) ? v->face_bottom : cs_corner_wheel(k) ? 0.0 : v->side_bottom) - v->cg_height;
+    *lo = (cs_corner_front(k)         ? v->face_bottom
+           : cs_corner_front_wheel(k) ? v->wheel_radius - v->tyre_static_deflection
+           : cs_corner_wheel(k)       ? 0.0
+                                      : v->side_bottom) -
+          v->cg_height;
     *hi = (cs_corner_front(k) ? v->face_top : v->side_top) - v->cg_height;
 }
 

@@ -246,6 +246,10 @@ static int check_vehicle(const cs_vehicle_def *v, cs_error *err) {
         !non_negative(v->rolling_resistance) || !non_negative(v->tyre_friction) ||
         !non_negative(v->face_friction))
         return fail(err, "vehicle: tyre and friction parameters must be >= 0 (static deflection > 0)");
+    if (!(v->wheel_radius > v->tyre_static_deflection &&
+          v->wheel_radius - v->tyre_static_deflection < v->side_top))
+        return fail(err, "vehicle: the wheel radius must exceed the tyre's static deflection, and the axle "
+                         "(radius less deflection) lie below the side's top");
     if (v->crush_point_count < 2 || v->crush_point_count > CS_MAX_CRUSH_POINTS)
         return fail(err, "vehicle: crush curve needs 2 to %d points", CS_MAX_CRUSH_POINTS);
     if (v->crush_deformation[0] != 0.0 || v->crush_force[0] != 0.0)

@@ -86,6 +86,8 @@ static const cs_field vehicle_fields[] = {
     V("track", CS_Q_LENGTH, CS_REQ | CS_POS, track, "distance between the left and right wheels"),
     V("tyre_static_deflection", CS_Q_LENGTH, CS_POS, tyre_static_deflection,
       "tyre deflection under the static load; sets the tyre stiffness"),
+    V("wheel_radius", CS_Q_LENGTH, CS_POS, wheel_radius,
+      "unloaded tyre radius; a front tyre takes a rope that passes under the bumper above its axle"),
     V("tyre_damping_ratio", CS_Q_NUMBER, CS_NONNEG, tyre_damping_ratio, "tyre damping, fraction of critical"),
     V("rolling_resistance", CS_Q_NUMBER, CS_NONNEG, rolling_resistance, "rolling resistance coefficient"),
     V("tyre_friction", CS_Q_NUMBER, CS_NONNEG, tyre_friction, "tyre side (lateral) friction coefficient"),
