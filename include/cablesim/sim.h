@@ -69,7 +69,9 @@ CS_API void cs_state_free(cs_state *state);
 /** Put a state back to t = 0, for another run of the same model. */
 CS_API void cs_state_reset(const cs_model *model, cs_state *state);
 
-/** One time step.
+/** One time step. Once the run has ended (cs_state_summary's outcome is no longer CS_RUNNING) a step does
+ * nothing and returns CS_OK, and the time stays where the run ended: a loop of steps tests the outcome, not
+ * the time alone (or calls cs_run).
  * @return CS_OK, or CS_ERR_UNSTABLE with err filled (the state is then frozen). */
 CS_API cs_status cs_step(const cs_model *model, cs_state *state, cs_error *err);
 
