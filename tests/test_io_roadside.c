@@ -517,22 +517,24 @@ static void a_rope_sliding_off_a_rear_corner_goes_to_its_wheel(void **state) {
     cs_loader_free(l);
 }
 
-/* A post's ring dies at its damper's rate (docs/theory.md, Posts with mass, "The post's damper"). RS5's
- * post 22 keeps cables 0 and 1 in its slot, leaning near the slot's open end; the releases and failures
- * near it (cables let go by posts 21-23 at 0.452-0.460 s, post 19 at its rotation limit at 0.480 s) set it
- * ringing on its spring, and nothing within three posts of it lets go or fails until post 20 reaches its
- * rotation limit at 0.599 s. Between the two the amplitude of its rate, half the rise or fall from each
- * extreme to the next, falls as a free ring's, exp(-zeta wn t), zeta wn = c / 2J: its rate of decay, the
- * least-squares slope of the amplitude's logarithm against time over every half-cycle, within 20% of
- * c / 2J (the ropes drive it a little: 19.5 against 16.9 1/s). */
+/* A post's ring dies at its damper's rate (docs/theory.md, Posts with mass, "The post's damper"). RS4's
+ * post 9 keeps all three cables in its slot; the releases near it (post 7 lets cable 0 go at 0.505 s, post
+ * 8 cable 2 at 0.509 s) pull it to its capacity: it yields at 0.514 s, turns 0.007 rad and rings on its
+ * spring, and nothing within three posts of it lets go or fails until post 7 reaches its rotation limit at
+ * 0.660 s. Between the two the amplitude of its rate, half the rise or fall from each extreme to the next,
+ * falls as a free ring's, exp(-zeta wn t), zeta wn = c / 2J: its rate of decay, the least-squares slope of
+ * the amplitude's logarithm against time over every half-cycle, within 20% of c / 2J (17.50 against 17.72
+ * 1/s). RS5, its lowest rope held by the pickup's front wheel, has no such window: between its events
+ * its posts that keep a rope ring with their neighbours through the ropes, their swing falling and rising
+ * again. */
 static void a_post_ring_dies_at_its_damping_rate(void **state) {
     (void)state;
     cs_loader *l;
     cs_model *m;
     cs_error err;
-    cs_state *s = at_rest("roadside/rs5", &l, &m);
-    const int p = 22;
-    const double from = 0.480, to = 0.599;
+    cs_state *s = at_rest("roadside/rs4", &l, &m);
+    const int p = 9;
+    const double from = 0.514, to = 0.660;
     double before = 0.0, last = 0.0, t_last = 0.0, extreme = 0.0, t_extreme = 0.0;
     double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
     int steps = 0, n = 0, extremes = 0;
@@ -549,10 +551,11 @@ static void a_post_ring_dies_at_its_damping_rate(void **state) {
         before = last, last = r, t_last = s->t, steps++;
     }
     const cs_post_model *pm = &m->posts[p];
-    assert_true(s->cables[1].where[p] > 0); /* cable 1 still in its slot */
-    assert_true(n >= 8);                    /* four cycles or more */
+    for (int c = 0; c < m->cable_count; c++)
+        assert_true(s->cables[c].where[p] > 0); /* every cable still in its slot */
+    assert_true(n >= 8);                        /* four cycles or more */
     double rate = -(n * sxy - sx * sy) / (n * sxx - sx * sx), free_rate = 0.5 * pm->damping / pm->inertia;
-    printf("rs5 post %d: its rate's swing dies at %.2f 1/s over %d half-cycles from %.3f to %.3f s (a free "
+    printf("rs4 post %d: its rate's swing dies at %.2f 1/s over %d half-cycles from %.3f to %.3f s (a free "
            "ring at zeta %.3f: %.2f 1/s)\n",
            p, rate, n, from, to, pm->damping / (2.0 * sqrt(pm->k_rot * pm->inertia)), free_rate);
     CHECK_REL(rate, free_rate, 0.2);
