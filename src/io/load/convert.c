@@ -266,7 +266,6 @@ int cs_convert_vehicle(cs_loader *l, const cs_node *v, cs_vehicle_def *out) {
     above(l, v, "side_top", out->side_top, "side_bottom", out->side_bottom);
     above(l, v, "wheelbase", out->wheelbase, "cg_to_front_axle", out->cg_to_front_axle);
     above(l, v, "cg_to_front", out->cg_to_front, "cg_to_front_axle", out->cg_to_front_axle);
-    above(l, v, "wheel_radius", out->wheel_radius, "tyre_static_deflection", out->tyre_static_deflection);
     return l->error_count - before;
 }
 
