@@ -266,6 +266,18 @@ int cs_convert_vehicle(cs_loader *l, const cs_node *v, cs_vehicle_def *out) {
     above(l, v, "side_top", out->side_top, "side_bottom", out->side_bottom);
     above(l, v, "wheelbase", out->wheelbase, "cg_to_front_axle", out->cg_to_front_axle);
     above(l, v, "cg_to_front", out->cg_to_front, "cg_to_front_axle", out->cg_to_front_axle);
+    /* the front axle, where a front tyre's band starts, above the ground and below the side's top */
+    above(l, v, "wheel_radius", out->wheel_radius, "tyre_static_deflection", out->tyre_static_deflection);
+    double axle = out->wheel_radius - out->tyre_static_deflection;
+    if (axle > 0 && !(axle < out->side_top)) {
+        char a[80], b[80];
+        shown(l, v, "wheel_radius", out->wheel_radius, a, sizeof a);
+        shown(l, v, "side_top", out->side_top, b, sizeof b);
+        cs_err_node(l, blamed(at(v, "wheel_radius"), cs_node_get(v, "side_top")), 0,
+                    "wheel_radius %s puts the front axle %.4g m up, not below side_top, %s (expected "
+                    "wheel_radius - tyre_static_deflection < side_top)",
+                    a, axle, b);
+    }
     return l->error_count - before;
 }
 
