@@ -234,10 +234,10 @@ typedef enum cs_cable_status {
 typedef struct cs_cable_view {
     size_t size;            /**< the size of this struct in the program (set it) */
     cs_cable_status status; /**< its condition */
-    int engaged;            /**< 1 while the vehicle's face pushes it */
+    int engaged;            /**< 1 while a corner or wheel of the vehicle holds it */
     double max_tension;     /**< largest span tension now, N */
     double max_strain;      /**< largest span strain now */
-    int node_count;         /**< points of the cable's path (anchors, standing posts, face corners) */
+    int node_count;         /**< points of the cable's path (anchors, standing posts, corners, wheels) */
 } cs_cable_view;
 
 /** Fill out with a cable now, to out's size.

@@ -149,8 +149,8 @@ static void hash_bytes(unsigned long long *h, const void *data, size_t n) {
 }
 
 /* FNV-1a over the bytes of every number that evolves: the vehicle, each cable's path, plastic strain,
- * status, engagement, whether the vehicle passed it, which rear corners pass it and its contacts on the
- * vehicle, each post's tilt, plastic
+ * status, engagement, whether the vehicle passed it, which corners and wheels pass it and its contacts on
+ * the vehicle, each post's tilt, plastic
  * rotation, swing (rate, acceleration, net moment, damper), status, what pushes a struck one and its slide
  * out of its footing (with its rate and net pull), the rails, each anchor's movement, its rate, acceleration,
  * net force and status, the ledger and the events (field by field: no struct padding). */

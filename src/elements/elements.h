@@ -241,9 +241,9 @@ int cs_attachment_check_release(const cs_model *model, cs_state *s, int p);
 void cs_vehicle_derive(const cs_vehicle_def *v, double g, cs_vehicle_model *vm);
 void cs_vehicle_face_point(const cs_model *model, const cs_state *s, double crush, double y_body,
                            double z_body, double *world);
-/* Corner k (CS_CORNERS: the outline's four and the rear wheels) at body height z_body, in the world (the
- * front ones crush back), and the body-z band it meets cables over (the face's, the side's, or a rear
- * wheel's from the ground to the side's top). */
+/* Corner k (CS_CORNERS: the outline's four and the four wheels) at body height z_body, in the world (the
+ * front ones crush back), and the body-z band it meets cables over (the face's, the side's, a rear wheel's
+ * from the ground to the side's top, or a front wheel's from its axle's height at rest to the side's top). */
 void cs_vehicle_corner_point(const cs_model *model, const cs_state *s, double crush, int k, double z_body,
                              double *world);
 void cs_vehicle_corner_band(const cs_model *model, int k, double *lo, double *hi);

@@ -27,7 +27,7 @@ int cs_record_init_for(cs_record *rec, const cs_model *model, cs_record_kind kin
     rec->cable_count = cs_model_cable_count(model);
     rec->post_count = cs_model_post_count(model);
     rec->lean = kind == CS_RECORD_FILES;
-    /* two anchors, every post, the vehicle's corners and rear wheels */
+    /* two anchors, every post, the vehicle's corners and wheels */
     rec->max_nodes = rec->lean ? 0 : cs_model_path_capacity(model);
     double frame = (double)frame_bytes(rec), frames = CS_RECORD_BYTES / frame;
     rec->max_frames = frames < 64.0 ? 64 : (frames > 1e8 ? 100000000 : (int)frames);
