@@ -167,7 +167,8 @@ typedef struct cs_cable_state {
     int handover; /* bit k: wheel k may take the rope at any depth at the next contact update (a corner
                      hands it to its wheel as it slides down past the face's or the side's bottom) */
     int passing;  /* bit k: corner or wheel k crossed the rope's path with the rope out of its band (a
-                     front corner: below it), and is still across it (contact.c) */
+                     front corner: below it), or a corner let the rope slide down off it to its wheel,
+                     and is still across it (contact.c) */
     int node_count;
     int *node;                          /* [max_nodes] */
     int *where;                         /* [post_count] index of each post in node[], -1 if not on the path */
