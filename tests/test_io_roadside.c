@@ -517,6 +517,69 @@ static void a_rope_sliding_off_a_rear_corner_goes_to_its_wheel(void **state) {
     cs_loader_free(l);
 }
 
+/* A rope that slides down off the bumper meets the front tyre behind it (docs/theory.md, The vehicle's
+ * outline, "The front wheels"). RS1's middle rope, 20 ms after the left front corner took it: put 1 cm
+ * under the bumper, above the front axle, the corner lets it go with no event, passes it (it takes it
+ * no more while it is across) and hands it to its wheel, which takes it, in its band and with no
+ * override, at once or as it comes across it (here 10 ms on); put 1 cm under the axle instead, the pickup
+ * rides over it there, with its override. */
+static void a_rope_sliding_off_the_bumper_goes_to_its_front_wheel(void **state) {
+    (void)state;
+    cs_loader *l;
+    cs_model *m;
+    cs_error err;
+    cs_state *s = at_rest("roadside/rs1", &l, &m);
+    const int c = 1, corner = 0, wheel = 6;
+    cs_cable_state *cs = &s->cables[c];
+    double held = 0.0;
+    while (s->t < 0.5 && held < 0.02) {
+        assert_int_equal(cs_step(m, s, &err), CS_OK);
+        held = cs_cable_find_node(cs, cs_corner_node(corner)) > 0 ? held + m->scenario.dt : 0.0;
+    }
+    assert_true(cs_cable_find_node(cs, cs_corner_node(corner)) > 0);
+    cs_state *below = cs_state_create(m, &err);
+    cs_state_copy(m, below, s);
+    double lo, hi, axle, top;
+    cs_vehicle_corner_band(m, corner, &lo, &hi);
+    cs_vehicle_corner_band(m, wheel, &axle, &top);
+    assert_true(axle < lo - 0.01);
+    cs->corner_z[corner] = lo - 0.01;
+    int events = cs_state_event_count(s);
+    assert_int_equal(cs_contact_check_slip(m, s), 1);
+    assert_true(cs_cable_find_node(cs, cs_corner_node(corner)) < 0);
+    assert_true(cs->handover == 1 << wheel && (cs->passing & (1 << corner)));
+    cs_contact_update(m, s);
+    int i = cs_cable_find_node(cs, cs_corner_node(wheel));
+    printf("rs1: cable %d slid off the bumper at %.4f s: the corner passes it, its wheel %s\n", c, s->t,
+           i > 0 ? "took it" : "is not across it");
+    assert_true(cs_cable_find_node(cs, cs_corner_node(corner)) < 0);
+    assert_true(cs->handover == 0);
+    assert_true(cs->status == CS_CABLE_INTACT && !cs->passed);
+    assert_int_equal(cs_state_event_count(s), events); /* no override */
+    double t0 = s->t; /* the wheel, behind the corner, comes across the rope as the pickup goes on */
+    while (s->t < t0 + 0.1 && cs_cable_find_node(cs, cs_corner_node(wheel)) < 0) {
+        assert_int_equal(cs_step(m, s, &err), CS_OK);
+        assert_true(cs_cable_find_node(cs, cs_corner_node(corner)) < 0);
+    }
+    i = cs_cable_find_node(cs, cs_corner_node(wheel));
+    printf("rs1: its front wheel took it at %.4f s, %.1f ms on\n", s->t, 1e3 * (s->t - t0));
+    assert_true(i > 0);
+    assert_true(cs_corner_wheel(wheel) && cs->corner_z[wheel] >= axle && cs->corner_z[wheel] <= top);
+    assert_true(cs->status == CS_CABLE_INTACT && !cs->passed && cs->engaged);
+    for (int e = events; e < cs_state_event_count(s); e++)
+        assert_true(s->events[e].type != CS_EVENT_OVERRIDE && s->events[e].type != CS_EVENT_UNDERRIDE);
+    cs_cable_state *bs = &below->cables[c];
+    bs->corner_z[corner] = axle - 0.01;
+    assert_int_equal(cs_contact_check_slip(m, below), 1);
+    assert_true(bs->passed && !bs->engaged && cs_cable_find_node(bs, cs_corner_node(corner)) < 0);
+    assert_int_equal(cs_state_event_count(below), events + 1);
+    assert_true(below->events[events].type == CS_EVENT_OVERRIDE && below->events[events].element == c);
+    cs_state_free(below);
+    cs_state_free(s);
+    cs_model_free(m);
+    cs_loader_free(l);
+}
+
 /* A post's ring dies at its damper's rate (docs/theory.md, Posts with mass, "The post's damper"). RS4's
  * post 9 keeps all three cables in its slot; the releases near it (post 7 lets cable 0 go at 0.505 s, post
  * 8 cable 2 at 0.509 s) pull it to its capacity: it yields at 0.514 s, turns 0.007 rad and rings on its
@@ -565,19 +628,21 @@ static void a_post_ring_dies_at_its_damping_rate(void **state) {
 }
 
 int main(void) {
-    const struct CMUnitTest tests[] = {cmocka_unit_test(roadside_tests_as_pinned),
-                                       cmocka_unit_test(deflection_follows_the_design),
-                                       cmocka_unit_test(exit_at_the_last_loss_of_contact),
-                                       cmocka_unit_test(the_ledger_closes_across_a_slip),
-                                       cmocka_unit_test(a_rope_passed_then_broken_leaves_an_override),
-                                       cmocka_unit_test(a_rope_let_go_and_taken_back_keeps_its_height),
-                                       cmocka_unit_test(a_post_struck_while_sliding_out_keeps_the_ledger),
-                                       cmocka_unit_test(every_strike_keeps_the_ledger),
-                                       cmocka_unit_test(a_struck_post_slides_only_while_pushed),
-                                       cmocka_unit_test(a_rope_sliding_down_the_face_holds_coulombs_ratio),
-                                       cmocka_unit_test(the_rear_wheel_takes_a_rope_under_the_overhang),
-                                       cmocka_unit_test(a_rope_sliding_off_a_rear_corner_goes_to_its_wheel),
-                                       cmocka_unit_test(a_post_ring_dies_at_its_damping_rate)};
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(roadside_tests_as_pinned),
+        cmocka_unit_test(deflection_follows_the_design),
+        cmocka_unit_test(exit_at_the_last_loss_of_contact),
+        cmocka_unit_test(the_ledger_closes_across_a_slip),
+        cmocka_unit_test(a_rope_passed_then_broken_leaves_an_override),
+        cmocka_unit_test(a_rope_let_go_and_taken_back_keeps_its_height),
+        cmocka_unit_test(a_post_struck_while_sliding_out_keeps_the_ledger),
+        cmocka_unit_test(every_strike_keeps_the_ledger),
+        cmocka_unit_test(a_struck_post_slides_only_while_pushed),
+        cmocka_unit_test(a_rope_sliding_down_the_face_holds_coulombs_ratio),
+        cmocka_unit_test(the_rear_wheel_takes_a_rope_under_the_overhang),
+        cmocka_unit_test(a_rope_sliding_off_a_rear_corner_goes_to_its_wheel),
+        cmocka_unit_test(a_rope_sliding_off_the_bumper_goes_to_its_front_wheel),
+        cmocka_unit_test(a_post_ring_dies_at_its_damping_rate)};
     int failed = cmocka_run_group_tests(tests, NULL, NULL);
     return failed ? failed : pin_skipped ? 77 : 0;
 }
