@@ -9,9 +9,10 @@
 #include <stdio.h>
 #include <string.h>
 
-/* The schematic body: front face (crushed), rear, half width, face bottom and top, wheels; body frame
- * (x forward, z up from the CG). The definition has no overall length: the rear overhang is taken equal
- * to the front one. */
+/* The schematic body: front face (crushed), rear, half width, face bottom and top, wheels (their radius,
+ * their axles at the height at rest where the front tyres take a rope: vehicle.c); body frame (x
+ * forward, z up from the CG). The definition has no overall length: the rear overhang is taken equal to
+ * the front one. */
 typedef struct body {
     double xf, xr, hw, zb, zt, axle[2], wheel_r, wheel_z;
 } body;
@@ -25,8 +26,8 @@ static body vehicle_body(const cs_vehicle_def *v, double crush) {
     b.hw = 0.5 * v->front_width;
     b.zb = v->face_bottom - v->cg_height;
     b.zt = v->face_top - v->cg_height;
-    b.wheel_r = fmin(0.5, fmax(0.2, 0.9 * v->face_bottom));
-    b.wheel_z = b.wheel_r - v->cg_height;
+    b.wheel_r = v->wheel_radius;
+    b.wheel_z = v->wheel_radius - v->tyre_static_deflection - v->cg_height;
     return b;
 }
 
