@@ -163,6 +163,15 @@ static double rear_reach(const cs_model *model, const cs_state *s) {
     return fmax(0.05, 3.0 * v3_norm(s->vel) * model->scenario.dt);
 }
 
+/* How many corners and wheels hold the rope: a tyre that climbs over a rope another one holds passes it,
+ * and the rope stays on the vehicle where it is held. */
+static int holders(const cs_cable_state *cs) {
+    int n = 0;
+    for (int i = 1; i + 1 < cs->node_count; i++)
+        n += cs_node_is_corner(cs->node[i]);
+    return n;
+}
+
 /* Body z of the axle of the front wheel behind front corner k: its band's bottom. */
 static double axle_z(const cs_model *model, int k) {
     double lo, hi;
@@ -234,12 +243,13 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
         /* a corner that let the rope go in this update and is across its path again takes it back where it
          * held it (its corner_z kept): the joined span's chord height there is no rope's height. Out of
          * its band: over the face's top the vehicle runs under the rope; below a front tyre's axle, met
-         * at the wheel or already at the bumper, the tyre climbs over it; otherwise the corner or wheel
-         * passes the rope, and below the bumper or the sill the wheel behind it meets it next */
+         * at the wheel or already at the bumper, the tyre climbs over it, and the vehicle rides over the
+         * rope unless another point holds it; otherwise the corner or wheel passes the rope, and below
+         * the bumper or the sill the wheel behind it meets it next */
         if (!released[k] && (zn < lo || zn > hi)) {
             int under = cs_corner_front(k) && zn > hi;
             int over = zn < lo && (cs_corner_front_wheel(k) || (cs_corner_front(k) && bz < axle_z(model, k)));
-            if (!under && !over) {
+            if (!under && (!over || holders(cs) > 0)) {
                 cs->passing |= bit;
                 continue;
             }
@@ -305,8 +315,9 @@ void cs_contact_commit(const cs_model *model, cs_state *s) {
  * rope sliding down off the bumper or the rear overhang meets the tyre behind or ahead of it, so the corner
  * lets it go, passes it (`passing`) and hands it to its wheel, which takes it at the update that follows
  * (whatever its depth across the rope's path) or when it comes across it. A rope that slides down a front
- * tyre below its axle is ridden over. The failures' re-solve that follows books what the rope lets go of
- * (step.c). Returns 1 if any did. */
+ * tyre below its axle is ridden over, unless another corner or wheel holds it: then the one it slid off
+ * passes it. The failures' re-solve that follows books what the rope lets go of (step.c). Returns 1 if any
+ * did. */
 int cs_contact_check_slip(const cs_model *model, cs_state *s) {
     int any = 0;
     for (int c = 0; c < model->cable_count; c++) {
@@ -319,10 +330,11 @@ int cs_contact_check_slip(const cs_model *model, cs_state *s) {
             cs_vehicle_corner_band(model, k, &lo, &hi);
             if (z >= lo && z <= hi) continue;
             any = 1;
-            if (!cs_corner_wheel(k) && z < lo && !(cs_corner_front(k) && z < axle_z(model, k))) {
+            int to_wheel = !cs_corner_wheel(k) && z < lo && !(cs_corner_front(k) && z < axle_z(model, k));
+            if (to_wheel || (z < lo && holders(cs) > 1)) { /* to its wheel, or held elsewhere */
                 let_go(&model->cables[c], cs, i);
                 cs->passing |= 1 << k;
-                cs->handover |= 1 << cs_wheel_of(k);
+                if (to_wheel) cs->handover |= 1 << cs_wheel_of(k);
                 set_engaged(cs);
                 continue;
             }
