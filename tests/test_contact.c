@@ -141,6 +141,53 @@ static void a_rope_under_the_bumper_meets_the_front_tyres(void **state) {
     cs_model_free(m);
 }
 
+/* A vehicle that runs under every rope at first contact still meets the posts in its way (docs/theory.md,
+ * Redirection and the end of a run): the run goes on until its CG is past the cable line. The APS3 truck
+ * with its face lowered to 0.2-0.7 m runs under both ropes (0.86 and 1.22 m) as it meets them; head-on its
+ * 2.4-m face then strikes posts 7 and 8, which hinge at their plastic moment M_p and fold to the 45-degree
+ * limit: their plastic work `2 M_p (pi / 4)`, less their elastic turn, within 5%. The run ends underride,
+ * one step after the CG crossed the line. */
+static void a_vehicle_under_every_rope_still_strikes_the_posts(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    fx.vehicle.face_bottom = 0.2;
+    fx.vehicle.face_top = 0.7;
+    fx.vehicle.side_top = 0.8;
+    fx.scenario.t_end = 1.0;
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    cs_state *s = cs_state_create(m, &err);
+    assert_int_equal(cs_run(m, s, NULL, NULL, &err), CS_OK);
+    double under = -1.0, mp = 0.0;
+    int unders = 0, hinges = 0, limits = 0;
+    for (int i = 0; i < cs_state_event_count(s); i++) {
+        const cs_event *e = &s->events[i];
+        if (e->type == CS_EVENT_UNDERRIDE) unders++, under = e->t;
+        if (e->type == CS_EVENT_POST_HINGE) {
+            assert_true(e->t > under && under > 0.0); /* struck after it ran under both */
+            hinges++, mp += e->value;
+        }
+        limits += e->type == CS_EVENT_POST_ROTATION_LIMIT;
+    }
+    cs_energy en = {.size = sizeof en};
+    assert_int_equal(cs_state_energy(s, &en, NULL), CS_OK);
+    printf(
+        "under both ropes at %.4f s, %d posts hinged (%.0f N m in all) and %d folded to the limit: plastic "
+        "work %.0f J against %.0f J by hand; the run ends %s at %.4f s, CG %.4f m past the line\n",
+        under, hinges, mp, limits, en.post_plastic, mp * CS_PI / 4.0, cs_outcome_name(s->outcome), s->t,
+        s->pos[1]);
+    assert_int_equal(unders, 2);
+    assert_int_equal(hinges, 2);
+    assert_int_equal(limits, 2);
+    CHECK_REL(en.post_plastic, mp * CS_PI / 4.0, 0.05);
+    assert_int_equal(s->outcome, CS_UNDERRIDE);
+    assert_true(s->pos[1] > 0.0 && s->pos[1] <= v3_norm(s->vel) * fx.scenario.dt);
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
 /* Head-on and centred, each cable wraps both corners of the face; the face's normal force is what the
  * cables pull on the corners along the heading (plus nothing else: a 1.8-m face in the middle of an
  * 8-ft bay strikes no post), and the crush balances it on the crush curve. */
@@ -318,6 +365,7 @@ int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(crush_loads_on_its_curve_and_unloads_elastically),
                                        cmocka_unit_test(cables_below_and_above_the_face_slip),
                                        cmocka_unit_test(a_rope_under_the_bumper_meets_the_front_tyres),
+                                       cmocka_unit_test(a_vehicle_under_every_rope_still_strikes_the_posts),
                                        cmocka_unit_test(cables_wrap_both_corners),
                                        cmocka_unit_test(events_in_order_and_once),
                                        cmocka_unit_test(vehicle_slides_along_a_rope_line),

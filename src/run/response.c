@@ -300,12 +300,11 @@ void cs_response_update(const cs_model *model, cs_state *s) {
         sm->working_width_m = fmax(sm->working_width_m, top[1]);
     }
 
-    int engaged = 0, intact = 0; /* a struck post still standing and bearing holds the vehicle like a cable */
+    int engaged = 0; /* a struck post still standing and bearing holds the vehicle like a cable */
     for (int p = 0; p < model->post_count; p++)
         engaged += s->posts[p].captured && cs_post_in_barrier(&s->posts[p]) && s->posts[p].bearing;
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
-        intact += cs->status == CS_CABLE_INTACT && !cs->passed; /* one the vehicle can still meet */
         engaged += cs->status == CS_CABLE_INTACT && cs->engaged;
         if (cs->max_tension_seen > sm->max_cable_tension_n) sm->max_cable_tension_n = cs->max_tension_seen;
         for (int i = 0; cs->status == CS_CABLE_INTACT && i < cs->node_count; i++)
@@ -357,7 +356,7 @@ void cs_response_update(const cs_model *model, cs_state *s) {
             end_run(model, s, CS_REDIRECTED, v3_norm(s->exit_vel));
     } else if (s->contact_started && u <= model->scenario.stop_speed) {
         end_run(model, s, CS_STOPPED, sm->max_dynamic_penetration_m);
-    } else if (s->contact_started && engaged == 0 && (intact == 0 || s->pos[1] > 0.0)) {
+    } else if (s->contact_started && engaged == 0 && s->pos[1] > 0.0) {
         end_run(model, s, through_how(model, s), v3_norm(s->vel));
     } else if (end) {
         end_run(model, s, s->contact_started ? CS_TIME_LIMIT : CS_NO_CONTACT, 0.0);
