@@ -45,14 +45,15 @@ export function postState(status) {
 }
 
 // The schematic body as in the PNG snapshots (src/io/out/figures.c): front face (crushed), rear, half
-// width, face bottom and top, axles, wheels; body frame x forward, z up from the CG.
+// width, face bottom and top, axles, wheels at their radius and axle height; body frame x forward, z up
+// from the CG.
 function body(v, crush) {
   const b = { xf: v.cg_to_front - crush, axle: [v.cg_to_front_axle, v.cg_to_front_axle - v.wheelbase], hw: 0.5 * v.front_width };
   b.xr = -v.cg_to_rear;
   b.zb = v.face_bottom - v.cg_height;
   b.zt = v.face_top - v.cg_height;
-  b.wheelR = Math.min(0.5, Math.max(0.2, 0.9 * v.face_bottom));
-  b.wheelZ = b.wheelR - v.cg_height;
+  b.wheelR = v.wheel_radius;
+  b.wheelZ = v.wheel_radius - v.tyre_static_deflection - v.cg_height;
   return b;
 }
 

@@ -404,16 +404,19 @@ static const field scenario_fields[] = {{"speed", offsetof(cs_scenario_def, spee
                                         {"dt", offsetof(cs_scenario_def, dt)},
                                         {"t_end", offsetof(cs_scenario_def, t_end)},
                                         {"output_interval", offsetof(cs_scenario_def, output_interval)}};
-static const field vehicle_fields[] = {{"mass", offsetof(cs_vehicle_def, mass)},
-                                       {"cg_height", offsetof(cs_vehicle_def, cg_height)},
-                                       {"cg_to_front", offsetof(cs_vehicle_def, cg_to_front)},
-                                       {"front_width", offsetof(cs_vehicle_def, front_width)},
-                                       {"cg_to_rear", offsetof(cs_vehicle_def, cg_to_rear)},
-                                       {"face_bottom", offsetof(cs_vehicle_def, face_bottom)},
-                                       {"face_top", offsetof(cs_vehicle_def, face_top)},
-                                       {"wheelbase", offsetof(cs_vehicle_def, wheelbase)},
-                                       {"cg_to_front_axle", offsetof(cs_vehicle_def, cg_to_front_axle)},
-                                       {"track", offsetof(cs_vehicle_def, track)}};
+static const field vehicle_fields[] = {
+    {"mass", offsetof(cs_vehicle_def, mass)},
+    {"cg_height", offsetof(cs_vehicle_def, cg_height)},
+    {"cg_to_front", offsetof(cs_vehicle_def, cg_to_front)},
+    {"front_width", offsetof(cs_vehicle_def, front_width)},
+    {"cg_to_rear", offsetof(cs_vehicle_def, cg_to_rear)},
+    {"face_bottom", offsetof(cs_vehicle_def, face_bottom)},
+    {"face_top", offsetof(cs_vehicle_def, face_top)},
+    {"wheelbase", offsetof(cs_vehicle_def, wheelbase)},
+    {"cg_to_front_axle", offsetof(cs_vehicle_def, cg_to_front_axle)},
+    {"track", offsetof(cs_vehicle_def, track)},
+    {"wheel_radius", offsetof(cs_vehicle_def, wheel_radius)},
+    {"tyre_static_deflection", offsetof(cs_vehicle_def, tyre_static_deflection)}};
 
 static void kfields(jw *j, json_object *o, const void *base, const field *fields, size_t count) {
     for (size_t k = 0; k < count; k++) {
