@@ -233,7 +233,7 @@ static void update_cable(const cs_model *model, cs_state *s, int c) {
          * within a step (its reach) with the rope in its band takes it up, or a wheel the rope was handed
          * to as it slid past the face's or the side's bottom */
         int fresh = !released[k] && !(cs->handover & bit);
-        int deep = !cs_corner_front(k) &&
+        int deep = fresh && !(cs->passing & bit) && !cs_corner_front(k) && /* measured only if it decides */
                    across > rear_reach(model, s) * v2_norm(cs->pos[3 * j] - cs->pos[3 * (j - 1)],
                                                            cs->pos[3 * j + 1] - cs->pos[3 * (j - 1) + 1]);
         if (fresh && ((cs->passing & bit) || deep)) {
