@@ -296,12 +296,13 @@ typedef struct cs_anchor_view {
     int yielded;            /**< moving through the soil */
     int failed;             /**< pulled out */
     double displacement[2]; /**< horizontal, m */
-    double force[2];        /**< the soil's resistance, N */
+    double force[2];        /**< the soil's resistance (a rigid anchor: the ropes' pull it holds), N */
     double capacity;        /**< its footing's peak horizontal resistance, N */
     double residual;        /**< what the soil keeps resisting with as it ploughs on past the peak, N */
     double slide;           /**< how far it has ploughed through the soil past its elastic range, m */
     double uplift;          /**< the ropes' upward pull, N */
     double uplift_capacity; /**< the upward pull that pulls it out, N */
+    double peak_pull;       /**< the ropes' largest horizontal pull on it so far, N */
 } cs_anchor_view;
 
 /** Fill out with an anchor now, 0 the start (low x), 1 the end, to out's size.

@@ -271,9 +271,10 @@ struct cs_state {
         double u_commit[2]; /* at the last commit, m */
         double rate[2];     /* its rate at the last commit, m/s */
         double acc[2];      /* its acceleration at the last commit, m/s^2 */
-        double force[2];    /* the soil's resistance at the last commit, N */
-        double net[2];      /* the ropes' pull less that resistance at the last commit, N */
-        double uplift;      /* the ropes' upward pull at the last commit, N */
+        double force[2];  /* the soil's resistance at the last commit (a rigid anchor: the ropes' pull), N */
+        double net[2];    /* the ropes' pull less that resistance at the last commit, N */
+        double uplift;    /* the ropes' upward pull at the last commit, N */
+        double peak_pull; /* the ropes' largest horizontal pull at any commit, N (an output, not hashed) */
     } anchors[2];
 
     double *rail_plastic;  /* [rail_count * post_count] each span's plastic change of length, m (rail.c) */

@@ -221,8 +221,9 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
 
 const cs_row_kind cs_anchor_rows = {2, residual, jacobian};
 
-/* End of step: the slide's rate, acceleration and what its integration dissipates, the plastic slide
- * (radial return) and its work, the resistance, and the ropes' uplift.
+/* End of step: the ropes' pull and its peak so far (a rigid anchor holds that pull, its force), the
+ * slide's rate, acceleration and what its integration dissipates, the plastic slide (radial return) and
+ * its work, the resistance, and the ropes' uplift.
  * Over the step the forces' energies (the ropes' and the soil's, state functions and the soil's plastic
  * work) change by about -(F_c + F(u)) . du / 2, F the net force (the ropes' pull less the soil's
  * resistance); what the step takes out of the motion, that trapezoid rule's work of F less the kinetic
@@ -235,9 +236,15 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
     for (int a = 0; a < 2; a++) {
         const cs_anchor_model *am = &model->anchors[a];
         cs_anchor_state *as = &s->anchors[a];
-        if (am->rigid || as->failed) continue;
+        if (as->failed) continue;
         double f[3], q[2];
         ropes_pull(model, s, a, NULL, f);
+        as->peak_pull = fmax(as->peak_pull, hypot(f[0], f[1]));
+        if (am->rigid) { /* it holds what the ropes pull */
+            as->force[0] = f[0], as->force[1] = f[1];
+            as->uplift = f[2] > 0.0 ? f[2] : 0.0;
+            continue;
+        }
         resistance(am, as, as->u, q, NULL, NULL);
         double net[2] = {f[0] - q[0], f[1] - q[1]};
         double kinetic_before = kinetic_energy(am, as);

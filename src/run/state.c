@@ -184,7 +184,7 @@ cs_status cs_state_anchor(const cs_model *model, const cs_state *s, int a, cs_an
     for (int k = 0; k < 2; k++)
         out->displacement[k] = as->u[k], out->force[k] = as->force[k];
     out->capacity = am->capacity, out->residual = am->residual, out->slide = as->slide;
-    out->uplift = as->uplift, out->uplift_capacity = am->uplift_capacity;
+    out->uplift = as->uplift, out->uplift_capacity = am->uplift_capacity, out->peak_pull = as->peak_pull;
     return cs_sized_put(view, &full, sizeof full, "cs_anchor_view", err);
 }
 

@@ -220,13 +220,15 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
     for (int a = 0; a < 2; a++) {
         cs_anchor_view av = {.size = sizeof av};
         cs_state_anchor(model, state, a, &av, NULL);
-        if (av.rigid) continue;
-        fprintf(f,
-                "  %s anchor         %s, moved %.3f m (peak %.1f kN, %.1f kip; residual %.1f kN, %.1f "
-                "kip)\n",
-                a ? "end  " : "start", cs_anchor_status_name(&av),
-                hypot(av.displacement[0], av.displacement[1]), av.capacity / 1e3, av.capacity / CS_KIP,
-                av.residual / 1e3, av.residual / CS_KIP);
+        fprintf(f, "  %s anchor         ", a ? "end  " : "start");
+        if (av.rigid)
+            fputs("rigid", f);
+        else
+            fprintf(f, "%s, moved %.3f m (peak %.1f kN, %.1f kip; residual %.1f kN, %.1f kip)",
+                    cs_anchor_status_name(&av), hypot(av.displacement[0], av.displacement[1]),
+                    av.capacity / 1e3, av.capacity / CS_KIP, av.residual / 1e3, av.residual / CS_KIP);
+        fprintf(f, "; the ropes pulled it with up to %.1f kN (%.1f kip)\n", av.peak_pull / 1e3,
+                av.peak_pull / CS_KIP);
     }
     fprintf(f, "  kinetic energy       %.1f kJ (%.0f ft-kip)\n", s.initial_kinetic_energy_j / 1e3,
             s.initial_kinetic_energy_j / (CS_KIP * CS_FT));
