@@ -303,6 +303,10 @@ const cs_validate_road_reading cs_validate_road_readings[CS_VAL_ROAD_READINGS] =
      {"barrier.cables[0].pretension=2000 lbf", "barrier.cables[1].pretension=2000 lbf",
       "barrier.cables[2].pretension=2000 lbf", NULL}},
     {"impact at the middle (a third of the way in taken)", "rs3 rs4", {"scenario.impact_x=167 ft", NULL}},
+    {"end anchors that give at their 40-kip design load (rigid taken): 0.35-m shafts 1.5 m deep",
+     "rs1 rs2 rs3 rs4 rs5 rs6",
+     {"barrier.anchors.start.footing.diameter=0.35 m", "barrier.anchors.start.footing.depth=1.5 m",
+      "barrier.anchors.end.footing.diameter=0.35 m", "barrier.anchors.end.footing.depth=1.5 m", NULL}},
 };
 
 const char *const cs_validate_road_steps[CS_VAL_ROAD_STEPS] = {"0.125 ms", "0.05 ms"};
