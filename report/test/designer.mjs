@@ -37,8 +37,10 @@ function native(name, model, sets) {
 // and its hash: the page's loader and unit table are the command's), the outcome and the designations as run. The
 // response numbers: to every digit of summary.json when the command's engine has the page's maths
 // (--math musl: the command has musl's maths); else within TOLERANCE, since glibc's maths differ from the
-// page's in the last bit and a crash carries that into the fourth digit (docs/designer.md).
+// page's in the last bit and a crash carries that into the fourth digit (docs/designer.md). Two numbers both
+// under NEAR_ZERO in magnitude are zero apart from rounding (a head-on run's roll, 1e-4 degrees) and agree.
 const TOLERANCE = 0.02;
+const NEAR_ZERO = 1e-3;
 const exact = args.math === 'musl';
 function compare(what, page, cmd) {
   const inputs = (s) => JSON.stringify({ ...s.inputs, file: null });
@@ -52,7 +54,8 @@ function compare(what, page, cmd) {
     if (typeof a === 'number' && typeof b === 'number') {
       total++;
       if (a === b) same++;
-      const d = Math.abs(a - b) / Math.max(Math.abs(b), 1e-9);
+      const zero = Math.abs(a) < NEAR_ZERO && Math.abs(b) < NEAR_ZERO;
+      const d = zero ? 0 : Math.abs(a - b) / Math.max(Math.abs(b), 1e-9);
       if (d > worst[0]) worst = [d, `${key}: page ${a}, command ${b}`];
     } else if (a && b && typeof a === 'object') for (const k of Object.keys(b)) walk(a[k], b[k], `${key}.${k}`);
   };
