@@ -224,7 +224,7 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
         if (av.rigid)
             fputs("rigid", f);
         else
-            fprintf(f, "%s, moved %.3f m (peak %.1f kN, %.1f kip; residual %.1f kN, %.1f kip)",
+            fprintf(f, "%s, moved %.3f m (the soil's peak %.1f kN, %.1f kip; residual %.1f kN, %.1f kip)",
                     cs_anchor_status_name(&av), hypot(av.displacement[0], av.displacement[1]),
                     av.capacity / 1e3, av.capacity / CS_KIP, av.residual / 1e3, av.residual / CS_KIP);
         fprintf(f, "; the ropes pulled it with up to %.1f kN (%.1f kip)\n", av.peak_pull / 1e3,
