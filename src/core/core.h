@@ -203,6 +203,7 @@ typedef struct cs_post_state {
     double lever;          /* from the pivot to where the vehicle struck it, along the post, m */
     double reach;          /* the struck point's lean at the strike less the edge's reach there, m */
     double push;           /* force of the vehicle on a captured post, N */
+    double lift;           /* how far its slot's cables have ridden up the slot together, m (attachment.c) */
     int bearing;           /* a captured post the vehicle's edge bears on (not backed off) */
     int waiting;           /* struck at a step's new pose, before its solve: pushes from the step's end */
     double tilt_commit[2]; /* tilt at the last commit, rad */

@@ -156,6 +156,10 @@ static inline int cs_post_in_barrier(const cs_post_state *ps) {
 static inline double cs_post_arm(const cs_model *model, const cs_state *s, int p, double z) {
     return z + model->posts[p].pivot + s->posts[p].pull;
 }
+/* Cable c's height on post p: as built, plus its slot's ride up the slot (attachment.c). */
+static inline double cs_post_cable_z(const cs_model *model, const cs_state *s, int p, int c) {
+    return model->cables[c].z + (model->posts[p].attach == CS_ATTACH_SLOT ? s->posts[p].lift : 0.0);
+}
 double cs_footing_capacity(const cs_footing_def *f, double load_height);
 double cs_footing_impact_capacity(const cs_footing_def *f, double load_height);
 /* The passive wedge's three-dimensional factor R(b/D) of a member of width b and depth D (footing.c), and
@@ -230,8 +234,9 @@ void cs_post_struck_slide_take(const cs_model *model, cs_state *s, int p);
 void cs_post_struck_slide_commit(const cs_model *model, cs_state *s, int p);
 
 /* ---- attachments (attachment.c) ---- */
-/* The cosine of the lean at which a cable held at height z reaches the open end of post pm's slot. */
-double cs_attachment_slot_open(const cs_post_model *pm, double z);
+/* Ride post p's slotted cables up their slot until friction holds them or the highest reaches the open
+ * end, booking the ropes' stored energy spent on the way as friction; returns 1 if they moved. */
+int cs_attachment_ride(const cs_model *model, cs_state *s, int p);
 /* Let go of the cables post p's slot or hooks no longer hold; returns 1 if any went. */
 int cs_attachment_check_release(const cs_model *model, cs_state *s, int p);
 

@@ -130,7 +130,9 @@ void cs_post_place_nodes(const cs_model *model, cs_state *s, int p, const double
     for (int k = 0; k < model->cable_count; k++) {
         cs_cable_state *cs = &s->cables[k];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
-        if (i > 0) cs_post_attachment_from(model, p, tilt, pull, sn, c, model->cables[k].z, cs->pos + 3 * i);
+        if (i > 0)
+            cs_post_attachment_from(model, p, tilt, pull, sn, c, cs_post_cable_z(model, s, p, k),
+                                    cs->pos + 3 * i);
     }
 }
 
@@ -295,7 +297,7 @@ void cs_post_residual_at(const cs_model *model, const cs_state *s, int p, const 
         const cs_cable_state *cs = &s->cables[c];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
         if (i < 0) continue;
-        double f[3], l = cs_post_arm(model, s, p, model->cables[c].z);
+        double f[3], l = cs_post_arm(model, s, p, cs_post_cable_z(model, s, p, c));
         cs_node_force(cs, i, chords ? chords + 4 * (size_t)c * (size_t)model->max_nodes : NULL, f);
         q[0] += l * (j[0] * f[0] + j[2] * f[1] + j[4] * f[2]);
         q[1] += l * (j[1] * f[0] + j[3] * f[1] + j[5] * f[2]);
@@ -758,7 +760,7 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
         if (i < 0) continue;
         const cs_span_grad *sp = cs_rows_spans(model, rows, c, i);
-        double l = cs_post_arm(model, s, p, model->cables[c].z), f[3];
+        double l = cs_post_arm(model, s, p, cs_post_cable_z(model, s, p, c)), f[3];
         cs_node_force(cs, i, cs_rows_chords(model, rows, c), f);
         for (int a = 0; a < 2; a++) {
             if (pc >= 0) /* the arm growing as the post slides out */

@@ -22,7 +22,7 @@ static int position_columns(const cs_model *model, const cs_state *s, const cs_r
     int id = cs->node[j];
     if (id >= 0 && rows->tilt_index[id] >= 0) {
         const double *ja = rows->axes + 18 * id;
-        double l = cs_post_arm(model, s, id, model->cables[c].z);
+        double l = cs_post_arm(model, s, id, cs_post_cable_z(model, s, id, c));
         for (int k = 0; k < 2; k++)
             out[k] = (dep){rows->tilt_index[id] + k, {l * ja[k], l * ja[2 + k], l * ja[4 + k]}};
         if (rows->pull_index[id] < 0) return 2;

@@ -233,6 +233,8 @@ static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, do
     double before = cs_barrier_stored_energy(model, s); /* 2. posts the vehicle has reached are struck */
     if (cs_post_capture(model, s, 1)) /* kept until the gap of the stretch it falls in is booked */
         s->work->struck = 1, s->e_released += before - cs_barrier_stored_energy(model, s);
+    for (int p = 0; p < model->post_count; p++) /* slotted cables ride up their slots: the solve settles */
+        s->work->rode |= cs_attachment_ride(model, s, p); /* what the ride leaves (book_gap) */
     cs_contact_update(model, s);               /* cables wrap onto or leave the face, or slip past it */
     double worst = cs_barrier_solve(model, s); /* 3. posts, sliding and crush in equilibrium */
     if (allowed < HUGE_VAL) {                  /* the work done on it here */
@@ -292,9 +294,14 @@ static int advance(const cs_model *model, cs_state *s, double h, int commit_anyw
 static double book_gap(const cs_model *model, cs_state *s, double work, double e0, double snap) {
     double gap = work - (barrier_energy(model, s) - e0);
     /* a post struck in stage 2 leaves the ropes' paths before the solve: their relaxation to the
-     * equilibrium without it is a jump of its own, whatever its size */
-    if (gap > (s->work->struck ? 0.0 : snap)) s->e_released += gap, cs_system_jumped(&s->work->sys, s->step);
-    s->work->struck = 0;
+     * equilibrium without it is a jump of its own, whatever its size, released; slotted cables that rode
+     * up their slots in stage 2 leave the barrier out of balance, and what it loses settling is the
+     * ride's: friction in the slot, which the real cables spend as they slide */
+    if (s->work->struck ? gap > 0.0 : gap > snap && !s->work->rode)
+        s->e_released += gap, cs_system_jumped(&s->work->sys, s->step);
+    else if (s->work->rode && gap > 0.0)
+        s->e_friction += gap;
+    s->work->struck = s->work->rode = 0;
     return gap;
 }
 
@@ -324,12 +331,12 @@ static double book_gap(const cs_model *model, cs_state *s, double work, double e
 static void follow_stretch(const cs_model *model, cs_state *s, double h, int level, double scale) {
     double e0 = barrier_energy(model, s), work = 0.0, snap = CS_PATH_GAP * scale * h / model->scenario.dt;
     s->work->stored_committed = e0 - s->e_released; /* a stretch starts from a commit */
-    s->work->struck = 0;
+    s->work->struck = s->work->rode = 0;
     cs_state *start = s->work->step_start[level];
     cs_state_copy(model, start, s);
     if (advance(model, s, h, 0, HUGE_VAL, NULL, &work) && book_gap(model, s, work, e0, snap) >= -snap) return;
-    if (cs_work_spent(model, s->work)) return;           /* the step is not taken (cs_step) */
-    cs_state_copy(model, s, start), s->work->struck = 0; /* its strikes taken back with it */
+    if (cs_work_spent(model, s->work)) return;                           /* the step is not taken (cs_step) */
+    cs_state_copy(model, s, start), s->work->struck = s->work->rode = 0; /* its strikes taken back */
     s->work->count.pieces++;
     if (level + 1 < CS_PATH_LEVELS) {
         for (int j = 0; j < CS_PATH_PIECES && !cs_work_spent(model, s->work); j++)

@@ -22,6 +22,7 @@ struct cs_work {
     double solver_residual;  /* largest residual of the solves the step committed */
     int struck;              /* a pose taken up since the stretch's gap was last booked struck a post
                               * before its solve (step.c) */
+    int rode;                /* ... or rode slotted cables up their slots before its solve (step.c) */
     struct {
         long solves;     /* barrier solves at a pose */
         long fallback;   /* of them, those that needed the fallback's sweeps (relax.c) */
