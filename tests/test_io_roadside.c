@@ -38,13 +38,19 @@ typedef struct pinned {
     int released, posts_failed;
 } pinned;
 
+/* The examples whose sudden losses are checked apart, each one at a strike
+ * (rs5_loses_force_only_at_a_strike). */
+static int losses_at_strikes(const char *name) {
+    return strcmp(name, "rs5") == 0;
+}
+
 static pinned run(const char *name, const char *const *sets, unsigned long long *hash, double *balance) {
     char path[64];
     snprintf(path, sizeof path, "roadside/%s", name);
     cs_loader *l;
     cs_model *m = example_model(path, sets, &l);
     cs_summary sm;
-    cs_state *s = example_run(name, m, &sm);
+    cs_state *s = example_run_checked(name, m, &sm, !sets && losses_at_strikes(name));
     pinned p;
     memset(&p, 0, sizeof p);
     snprintf(p.outcome, sizeof p.outcome, "%s", cs_outcome_name(sm.outcome));
@@ -627,9 +633,50 @@ static void a_post_ring_dies_at_its_damping_rate(void **state) {
     cs_loader_free(l);
 }
 
+/* A limit of the model (docs/theory.md, known limitations): a post the vehicle strikes leaves the ropes'
+ * paths at the strike, though its slot still holds them. RS5's pickup strikes post 15 at 0.0528 s, leaning
+ * 43.5 degrees with three ropes ridden 0.118 m up its slot, and the force on it falls from 86.9 to 42.4 kN
+ * in that step: the sudden-loss check flags it, as it should. Every sudden loss RS5 flags falls at a strike:
+ * a post the vehicle took within the loss's window or a step of it. */
+static void rs5_loses_force_only_at_a_strike(void **state) {
+    (void)state;
+    cs_loader *l;
+    cs_model *m;
+    cs_error err;
+    cs_state *s = at_rest("roadside/rs5", &l, &m);
+    double struck[64];
+    int strikes = 0;
+    while (s->outcome == CS_RUNNING) {
+        int was[64] = {0};
+        for (int p = 0; p < m->post_count && p < 64; p++)
+            was[p] = s->posts[p].captured;
+        assert_int_equal(cs_step(m, s, &err), CS_OK);
+        for (int p = 0; p < m->post_count && p < 64; p++)
+            if (!was[p] && s->posts[p].captured && strikes < 64) struck[strikes++] = s->t;
+    }
+    cs_summary sm = {.size = sizeof sm};
+    cs_state_summary(s, &sm, NULL);
+    const double slack = 1.001 * m->scenario.dt;
+    printf("rs5: %d strikes, %d sudden losses\n", strikes, sm.sudden_loss_count);
+    assert_true(sm.sudden_loss_count <= CS_SUMMARY_SUDDEN_LOSSES);
+    for (int k = 0; k < sm.sudden_loss_count; k++) {
+        const cs_summary_loss *w = &sm.sudden_losses[k];
+        int at = -1;
+        for (int j = 0; j < strikes && at < 0; j++)
+            if (struck[j] >= w->t_start_s - slack && struck[j] <= w->t_end_s + slack) at = j;
+        printf("rs5: %.1f to %.1f kN between %.5f and %.5f s, %s\n", w->force_before_n / 1e3,
+               w->force_after_n / 1e3, w->t_start_s, w->t_end_s, at >= 0 ? "at a strike" : "at no strike");
+        assert_true(at >= 0);
+    }
+    cs_state_free(s);
+    cs_model_free(m);
+    cs_loader_free(l);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(roadside_tests_as_pinned),
+        cmocka_unit_test(rs5_loses_force_only_at_a_strike),
         cmocka_unit_test(deflection_follows_the_design),
         cmocka_unit_test(exit_at_the_last_loss_of_contact),
         cmocka_unit_test(the_ledger_closes_across_a_slip),

@@ -303,8 +303,9 @@ const cs_validate_road_reading cs_validate_road_readings[CS_VAL_ROAD_READINGS] =
      {"barrier.cables[0].pretension=2000 lbf", "barrier.cables[1].pretension=2000 lbf",
       "barrier.cables[2].pretension=2000 lbf", NULL}},
     {"impact at the middle (a third of the way in taken)", "rs3 rs4", {"scenario.impact_x=167 ft", NULL}},
-    {"slotted cables let go by friction from the first lean, as from a hook with the cap's 1 kN (held to the "
-     "slot's open end taken)",
+    {"slotted cables let go by friction from the first lean, as from a hook with the cap's 1 kN (their ride "
+     "up "
+     "the slot taken)",
      "rs1 rs2 rs3 rs4 rs5",
      {"barrier.posts[0].attachment=hook", "barrier.posts[0].release_force=1 kN", NULL}},
     {"end anchors that give at their 40-kip design load (rigid taken): 0.35-m shafts 1.5 m deep",
