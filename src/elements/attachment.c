@@ -14,12 +14,12 @@
  *
  * is positive, and stop where it is nil, since each cable's spans pull it back toward its height as it
  * rides (the spans' stiffness against a move along the post is at least sum T / L). With R small that is
- * tan(theta) > mu: the post's lean, not the force, starts the ride. The ride is taken at the start of each
- * step from the pulls the last commit left, the rest of the barrier held (the solve holds u as it stands),
- * by regula falsi on N over [0, h - z_top - u]; what the ropes' stored energy loses on it (mu F_n u and the
- * excess of N, which the real cables spend in motion the model does not have) is booked as friction, and
- * so is what the barrier then loses settling around it (step.c). A stack pulled down the slot stays where
- * it is. Once the highest cable
+ * tan(theta) > mu: the post's lean, not the force, starts the ride. The ride is taken from the pulls the
+ * solve left, the rest of the barrier held (the solve holds u as it stands), by regula falsi on N over
+ * [0, h - z_top - u]; the solve then settles the barrier around it, and the two go in turn until the ride
+ * ends (step.c). What the ropes' stored energy loses on a ride (mu F_n u and the excess of N, which the
+ * real cables spend in motion the model does not have) is booked as friction, and so is what the barrier
+ * loses settling around it. A stack pulled down the slot stays where it is. Once the highest cable
  * reaches the open end, the top h, the strap and cap over the slot hold it, as a hook bolt's bend holds a
  * cable on the post's face: it leaves when the stack's net pull passes their strength R, and the ones
  * below ride on to the open end after it. A hook lets its cable go when its own
@@ -118,7 +118,8 @@ static double stack_at(const cs_model *model, cs_state *s, int p, const double a
     return stack_pull(model, s, p, axis, &along, &top);
 }
 
-#define CS_RIDE_TOL 1e-9 /* m: the ride's bracket at which it stops */
+#define CS_RIDE_TOL 1e-9   /* m: the ride's bracket at which it stops */
+#define CS_RIDE_MOVED 1e-6 /* m: a ride shorter than this leaves the barrier as it was, to the solve */
 #define CS_RIDE_ITERATIONS 60
 
 int cs_attachment_ride(const cs_model *model, cs_state *s, int p) {
@@ -150,7 +151,7 @@ int cs_attachment_ride(const cs_model *model, cs_state *s, int p) {
         d = bracketed ? lo + glo * (hi - lo) / (glo - ghi) : fmin(room, lo + glo / fmax(k, 1e-300));
     }
     s->e_friction += e0 - stack_energy(model, s, p);
-    return 1;
+    return ps->lift - u0 > CS_RIDE_MOVED;
 }
 
 /* The outward normal of the face a keyway bolt or bracket is fixed to, normal to the post's unit axis;

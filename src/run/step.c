@@ -227,17 +227,26 @@ static void book_cable_work(const cs_model *model, cs_state *s, const loaded_pos
  * it committed kept in s->work->solver_residual, the barrier's push at the pose as committed in `end`
  * (before any failure found there) and whether a failure then changed the barrier in *failed. */
 #define CS_PATH_TRIGGER 1e-2
+/* Rides of the slots and solves in turn, at most, until the rides end: a ride lengthens the posts' arms,
+ * the solve leans them further, and that rides the cables on, so the turns close on the balance of both
+ * slowly; what is left after them rides at the next step. */
+#define CS_RIDE_ROUNDS 40
 
 static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, double allowed,
                        const loaded_pose *from, loaded_pose *end, int *failed) {
     double before = cs_barrier_stored_energy(model, s); /* 2. posts the vehicle has reached are struck */
     if (cs_post_capture(model, s, 1)) /* kept until the gap of the stretch it falls in is booked */
         s->work->struck = 1, s->e_released += before - cs_barrier_stored_energy(model, s);
-    for (int p = 0; p < model->post_count; p++) /* slotted cables ride up their slots: the solve settles */
-        s->work->rode |= cs_attachment_ride(model, s, p); /* what the ride leaves (book_gap) */
     cs_contact_update(model, s);               /* cables wrap onto or leave the face, or slip past it */
     double worst = cs_barrier_solve(model, s); /* 3. posts, sliding and crush in equilibrium */
-    if (allowed < HUGE_VAL) {                  /* the work done on it here */
+    for (int round = 0; round < CS_RIDE_ROUNDS; round++) { /* slotted cables ride up their slots */
+        int rode = 0;
+        for (int p = 0; p < model->post_count; p++)
+            rode |= cs_attachment_ride(model, s, p);
+        if (!rode) break;
+        s->work->rode = 1, worst = cs_barrier_solve(model, s); /* settled around them (book_gap) */
+    }
+    if (allowed < HUGE_VAL) { /* the work done on it here */
         cs_barrier_force(model, s);
         loaded_pose to = pose_of(s);
         double excess = cs_barrier_trial_energy(model, s, s->work) - allowed - work_on_barrier(from, &to);
