@@ -348,15 +348,19 @@ static int strikes_within(const char *example, const char *const *sets, int slid
     return strikes;
 }
 
-/* A post that the ropes are sliding out of its footing, struck by the pickup: the strike, found at the
+/* A post that the ropes are sliding out of its footing, struck by the vehicle: the strike, found at the
  * step's new pose before the solve, ends its swing and slide there (their energy released, or booked as
  * damping, cs_post_struck_slide_take) and puts it where the edge holds it, its slide balancing the push,
- * all inside the step's booked release; it pushes the pickup from the step's end. RS1 has three such
- * strikes (posts 10-12, 0.188-0.660 s); across each the ledger's sum moves by at most 2 J (under 0.07 J
- * measured). Put where the edge holds it only in the solve, posts 10-12 moved it by -22, -39 and -5 J. */
+ * all inside the step's booked release; it pushes the vehicle from the step's end. RS1's struck posts
+ * (9-13) start to slide out only after they are struck, so it has no such strike. RS5's post 15 starts to
+ * slide out at 0.046 s and is struck at 0.0528 s; RS2's post 16, taken at 0.3 ms, starts to slide out at
+ * 0.0300 s and is struck in the next step (0.0303 s; at the file's 0.25 ms it does not slide out before
+ * the strike). Across each the ledger's sum moves by at most 2 J (-0.035 and -0.033 J measured). */
 static void a_post_struck_while_sliding_out_keeps_the_ledger(void **state) {
     (void)state;
-    assert_true(strikes_within("roadside/rs1", NULL, 1, 2.0) >= 3);
+    static const char *const coarse[] = {"scenario.dt=0.3 ms", NULL};
+    assert_true(strikes_within("roadside/rs5", NULL, 1, 2.0) >= 1);
+    assert_true(strikes_within("roadside/rs2", coarse, 1, 2.0) >= 1);
 }
 
 /* Every post RS2's car strikes (seven, 0.03-0.60 s) leaves the ropes' paths before the step's solve, and
