@@ -354,15 +354,19 @@ static int strikes_within(const char *example, const char *const *sets, int slid
     return strikes;
 }
 
-/* A post that the ropes are sliding out of its footing, struck by the pickup: the strike, found at the
+/* A post that the ropes are sliding out of its footing, struck by the vehicle: the strike, found at the
  * step's new pose before the solve, ends its swing and slide there (their energy released, or booked as
  * damping, cs_post_struck_slide_take) and puts it where the edge holds it, its slide balancing the push,
- * all inside the step's booked release; it pushes the pickup from the step's end. RS1 has three such
- * strikes (posts 10-12, 0.188-0.660 s); across each the ledger's sum moves by at most 2 J (under 0.07 J
- * measured). Put where the edge holds it only in the solve, posts 10-12 moved it by -22, -39 and -5 J. */
+ * all inside the step's booked release; it pushes the vehicle from the step's end. RS1's struck posts
+ * (9-13) start to slide out only after they are struck, so it has no such strike. RS5's post 15 starts to
+ * slide out at 0.046 s and is struck at 0.0528 s; RS2's post 16, taken at 0.3 ms, starts to slide out at
+ * 0.0300 s and is struck in the next step (0.0303 s; at the file's 0.25 ms it does not slide out before
+ * the strike). Across each the ledger's sum moves by at most 2 J (-0.035 and -0.033 J measured). */
 static void a_post_struck_while_sliding_out_keeps_the_ledger(void **state) {
     (void)state;
-    assert_true(strikes_within("roadside/rs1", NULL, 1, 2.0) >= 3);
+    static const char *const coarse[] = {"scenario.dt=0.3 ms", NULL};
+    assert_true(strikes_within("roadside/rs5", NULL, 1, 2.0) >= 1);
+    assert_true(strikes_within("roadside/rs2", coarse, 1, 2.0) >= 1);
 }
 
 /* Every post RS2's car strikes (seven, 0.03-0.60 s) leaves the ropes' paths before the step's solve, and
@@ -587,23 +591,21 @@ static void a_rope_sliding_off_the_bumper_goes_to_its_front_wheel(void **state) 
 }
 
 /* A post's ring dies at its damper's rate (docs/theory.md, Posts with mass, "The post's damper"). RS4's
- * post 9 keeps all three cables in its slot; the releases near it (post 7 lets cable 0 go at 0.505 s, post
- * 8 cable 2 at 0.509 s) pull it to its capacity: it yields at 0.514 s, turns 0.007 rad and rings on its
- * spring, and nothing within three posts of it lets go or fails until post 7 reaches its rotation limit at
- * 0.660 s. Between the two the amplitude of its rate, half the rise or fall from each extreme to the next,
- * falls as a free ring's, exp(-zeta wn t), zeta wn = c / 2J: its rate of decay, the least-squares slope of
- * the amplitude's logarithm against time over every half-cycle, within 20% of c / 2J (17.50 against 17.72
- * 1/s). RS5, its lowest rope held by the pickup's front wheel, has no such window: between its events
- * its posts that keep a rope ring with their neighbours through the ropes, their swing falling and rising
- * again. */
+ * post 10 keeps all three cables in its slot; the releases near it (post 8 lets cable 1 go at 0.262 s, post
+ * 9 cable 2 at 0.2785 s) pull it to its capacity: it yields at 0.284 s and rings on its spring, and nothing
+ * within three posts of it lets go or fails until post 8 lets cable 0 go at 0.3655 s. Between the two the
+ * amplitude of its rate, half the rise or fall from each extreme to the next, falls as a free ring's,
+ * exp(-zeta wn t), zeta wn = c / 2J: its rate of decay, the least-squares slope of the amplitude's
+ * logarithm against time over every half-cycle, within 20% of c / 2J (17.24 against 17.72 1/s over 9
+ * half-cycles). */
 static void a_post_ring_dies_at_its_damping_rate(void **state) {
     (void)state;
     cs_loader *l;
     cs_model *m;
     cs_error err;
     cs_state *s = at_rest("roadside/rs4", &l, &m);
-    const int p = 9;
-    const double from = 0.514, to = 0.660;
+    const int p = 10;
+    const double from = 0.284, to = 0.365;
     double before = 0.0, last = 0.0, t_last = 0.0, extreme = 0.0, t_extreme = 0.0;
     double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
     int steps = 0, n = 0, extremes = 0;
