@@ -131,26 +131,21 @@ static inline cs_model *example_model(const char *name, const char *const *sets,
     return example_model_edited(name, sets, NULL, loader);
 }
 
-/* Run model m from its settled state to its end and fill sm; fails the test if the run fails, or, unless
- * `losses_checked_apart`, if an element dropped its load with no rope, fitting or attachment letting go to
- * explain it (the summary's sudden losses). Returns the final state, for the caller to free. */
-static inline cs_state *example_run_checked(const char *name, const cs_model *m, cs_summary *sm,
-                                            int losses_checked_apart) {
+/* Run model m from its settled state to its end and fill sm; fails the test if the run fails or if an element
+ * dropped its load with no rope, fitting or attachment letting go to explain it (the summary's sudden
+ * losses). Returns the final state, for the caller to free. */
+static inline cs_state *example_run(const char *name, const cs_model *m, cs_summary *sm) {
     cs_error err;
     cs_state *s = cs_state_create(m, &err);
     if (!s) fail_msg("%s: %s", name, err.message);
     if (cs_run(m, s, NULL, NULL, &err) != CS_OK) fail_msg("%s: %s", name, err.message);
     *sm = (cs_summary){.size = sizeof *sm};
     cs_state_summary(s, sm, NULL);
-    if (sm->sudden_loss_count && !losses_checked_apart)
+    if (sm->sudden_loss_count)
         fail_msg("%s: %d sudden losses of the force on the vehicle with no rope, fitting or attachment to "
                  "explain them",
                  name, sm->sudden_loss_count);
     return s;
-}
-
-static inline cs_state *example_run(const char *name, const cs_model *m, cs_summary *sm) {
-    return example_run_checked(name, m, sm, 0);
 }
 
 #endif
