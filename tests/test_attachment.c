@@ -45,6 +45,13 @@ static cs_model *one_post(cs_attachment kind, fixture *fx, double height) {
     return one_post_on(kind, CS_FACE_ATTACK, fx, height);
 }
 
+static cs_state *new_state(const cs_model *m) {
+    cs_error err;
+    cs_state *s = cs_state_create(m, &err);
+    assert_non_null(s);
+    return s;
+}
+
 /* The post leaning theta toward +y; cable c's node on it, its two spans running 10 m along x and 5 m
  * toward +y at tension t each: a pull of 2 t 5 / sqrt(125) across the barrier. Returns that pull. */
 static double lean_and_pull_at(const cs_model *m, cs_state *s, double along_x, double theta, int c,
@@ -246,9 +253,7 @@ static void slot_stack_rides_until_friction_holds(void **state) {
     (void)state;
     fixture fx;
     cs_model *m = one_post(CS_ATTACH_SLOT, &fx, 0.0);
-    cs_error err;
-    cs_state *s = cs_state_create(m, &err);
-    assert_non_null(s);
+    cs_state *s = new_state(m);
     const double mu = m->cables[0].mu_post;
     for (int lean = 0; lean < 2; lean++) {
         cs_state_reset(m, s);
@@ -292,9 +297,7 @@ static void slot_holds_until_its_open_end(void **state) {
     (void)state;
     fixture fx;
     cs_model *m = one_post(CS_ATTACH_SLOT, &fx, 0.0);
-    cs_error err;
-    cs_state *s = cs_state_create(m, &err);
-    assert_non_null(s);
+    cs_state *s = new_state(m);
     double open = m->posts[0].height - m->cables[1].z, th = 60.0 * CS_DEG;
     for (int side = -1; side <= 1; side += 2) {
         cs_state_reset(m, s);

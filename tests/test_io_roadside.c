@@ -362,14 +362,12 @@ static void a_post_struck_while_sliding_out_keeps_the_ledger(void **state) {
     assert_true(strikes_within("roadside/rs1", loose, 1, 2.0) >= 3);
 }
 
-/* Every post RS2's car strikes (seven, 0.03-0.60 s) leaves the ropes' paths before the step's solve, and
+/* Every post RS2's car strikes (eight, 0.030-0.675 s) leaves the ropes' paths before the step's solve, and
  * the ropes relax there to the equilibrium without it: that relaxation is released as a failure's jump is,
- * however small. Across each strike the ledger's sum moves by at most 1 J (0.03 J measured); mixed into the
- * vehicle's work and released only past the path's snap (1e-3 of the energy scale, 0.78 kJ), it would go
- * unbooked. Taken at 0.1 ms, where the step's own truncation is smallest: post 20, pulled out of its socket
- * from 0.30 s until it is struck (0.363 s), slides fast, and the trapezoid's error on that slide moves the
- * ledger more at the file's 0.25 ms: a strike that falls in it would be charged with it (docs/theory.md, a
- * post thrown out of its socket). */
+ * however small. Across each strike the ledger's sum moves by at most 1 J (0.053 J measured); mixed into
+ * the vehicle's work and released only past the path's snap (1e-3 of the energy scale, 0.78 kJ), it would
+ * go unbooked. Taken at 0.1 ms, where the step's own truncation is smallest (0.33 J at the file's 0.25 ms,
+ * post 17). */
 static void every_strike_keeps_the_ledger(void **state) {
     (void)state;
     static const char *const fine[] = {"scenario.dt=0.1 ms", NULL};
