@@ -188,6 +188,7 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
         hash_bytes(&h, ps->net, sizeof ps->net);
         hash_bytes(&h, ps->damper, sizeof ps->damper);
         hash_bytes(&h, &ps->push, sizeof ps->push);
+        if (model->posts[p].attach == CS_ATTACH_SLOT) hash_bytes(&h, &ps->lift, sizeof ps->lift);
     }
     hash_bytes(&h, s->rail_plastic,
                (size_t)model->rail_count * (size_t)model->post_count * sizeof *s->rail_plastic);
