@@ -235,7 +235,8 @@ void cs_post_struck_slide_commit(const cs_model *model, cs_state *s, int p);
 
 /* ---- attachments (attachment.c) ---- */
 /* Ride post p's slotted cables up their slot until friction holds them or the highest reaches the open
- * end, booking the ropes' stored energy spent on the way as friction; returns 1 if they moved. */
+ * end, booking the ropes' stored energy spent on the way as friction; returns 1 if they moved by more
+ * than CS_RIDE_MOVED (a micron), which the barrier's solve must then settle around. */
 int cs_attachment_ride(const cs_model *model, cs_state *s, int p);
 /* Let go of the cables post p's slot or hooks no longer hold; returns 1 if any went. */
 int cs_attachment_check_release(const cs_model *model, cs_state *s, int p);
