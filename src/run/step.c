@@ -229,7 +229,8 @@ static void book_cable_work(const cs_model *model, cs_state *s, const loaded_pos
 #define CS_PATH_TRIGGER 1e-2
 /* Rides of the slots and solves in turn, at most, until the rides end: a ride lengthens the posts' arms,
  * the solve leans them further, and that rides the cables on, so the turns close on the balance of both
- * slowly; what is left after them rides at the next step. */
+ * slowly; what is left after them rides at the next step. A ride starts only from a solve within
+ * CS_PATH_TRIGGER of equilibrium: the pulls of an iterate the path does not commit are not the ropes'. */
 #define CS_RIDE_ROUNDS 40
 
 static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, double allowed,
@@ -239,7 +240,7 @@ static int follow_pose(const cs_model *model, cs_state *s, int commit_anyway, do
         s->work->struck = 1, s->e_released += before - cs_barrier_stored_energy(model, s);
     cs_contact_update(model, s);               /* cables wrap onto or leave the face, or slip past it */
     double worst = cs_barrier_solve(model, s); /* 3. posts, sliding and crush in equilibrium */
-    for (int round = 0; round < CS_RIDE_ROUNDS; round++) { /* slotted cables ride up their slots */
+    for (int round = 0; round < CS_RIDE_ROUNDS && worst <= CS_PATH_TRIGGER; round++) { /* slots ride */
         int rode = 0;
         for (int p = 0; p < model->post_count; p++)
             rode |= cs_attachment_ride(model, s, p);
