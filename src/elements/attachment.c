@@ -101,19 +101,28 @@ static double stack_stiffness(const cs_model *model, const cs_state *s, int p) {
     return k;
 }
 
+/* The stored energy of the spans on either side of the stack's cables: the only spans a ride moves. */
 static double stack_energy(const cs_model *model, const cs_state *s, int p) {
     double e = 0.0;
     for (int c = 0; c < model->cable_count; c++)
-        if (in_slot(s, p, c)) e += cs_cable_stored_energy(&model->cables[c], &s->cables[c]);
+        if (in_slot(s, p, c))
+            for (int i = s->cables[c].where[p] - 1; i <= s->cables[c].where[p]; i++)
+                e += cs_span_stored_energy(&model->cables[c], &s->cables[c], i);
     return e;
 }
 
-/* The stack at lift u, its ropes' tensions with it; returns its net pull. */
+/* The stack at lift u, its spans' tensions with it; returns its net pull. */
 static double stack_at(const cs_model *model, cs_state *s, int p, const double axis[3], double u) {
     s->posts[p].lift = u;
     cs_post_place_nodes(model, s, p, s->posts[p].tilt, NULL);
-    for (int c = 0; c < model->cable_count; c++)
-        if (in_slot(s, p, c)) cs_cable_update_tensions(&model->cables[c], &s->cables[c], NULL);
+    for (int c = 0; c < model->cable_count; c++) {
+        cs_cable_state *cs = &s->cables[c];
+        if (!in_slot(s, p, c)) continue;
+        for (int i = cs->where[p] - 1; i <= cs->where[p]; i++) {
+            double d[4];
+            cs->tension[i] = cs_span_tension_chord(&model->cables[c], cs, i, d);
+        }
+    }
     double along, top;
     return stack_pull(model, s, p, axis, &along, &top);
 }

@@ -89,18 +89,21 @@ void cs_node_force(const cs_cable_state *cs, int i, const double *chords, double
     }
 }
 
+double cs_span_stored_energy(const cs_cable_model *cm, const cs_cable_state *cs, int i) {
+    double t = cs->tension[i], e = cs_rope_elastic_energy(&cm->rope, t, cs->m[i + 1] - cs->m[i]);
+    if (t > 0.0) { /* the sag's weight below the chord */
+        double d[4];
+        cs_span_chord(cs, i, d);
+        e -= cs_span_sag(&cm->rope, d) / (12.0 * t);
+    }
+    return e;
+}
+
 double cs_cable_stored_energy(const cs_cable_model *cm, const cs_cable_state *cs) {
     if (cs->status != CS_CABLE_INTACT) return 0.0;
     double e = 0.0;
-    for (int i = 0; i + 1 < cs->node_count; i++) {
-        double t = cs->tension[i];
-        e += cs_rope_elastic_energy(&cm->rope, t, cs->m[i + 1] - cs->m[i]);
-        if (t > 0.0) { /* the sag's weight below the chord */
-            double d[4];
-            cs_span_chord(cs, i, d);
-            e -= cs_span_sag(&cm->rope, d) / (12.0 * t);
-        }
-    }
+    for (int i = 0; i + 1 < cs->node_count; i++)
+        e += cs_span_stored_energy(cm, cs, i);
     return e;
 }
 

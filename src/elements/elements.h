@@ -120,6 +120,9 @@ void cs_termination_commit(const cs_model *model, int c, cs_state *s);
 int cs_termination_check_post(const cs_model *model, int c, cs_state *s);
 /* The cable carries nothing from now on (broken, or released by its anchor). */
 void cs_cable_release(cs_cable_state *cs, cs_cable_status status);
+/* The rope's stored energy: its elastic energy less its sag's weight below the chords; of span i, and of
+ * the whole cable (0 unless intact). */
+double cs_span_stored_energy(const cs_cable_model *cm, const cs_cable_state *cs, int i);
 double cs_cable_stored_energy(const cs_cable_model *cm, const cs_cable_state *cs);
 void cs_node_force(const cs_cable_state *cs, int i, const double *chords, double *f);
 
