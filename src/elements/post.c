@@ -680,8 +680,13 @@ static void capture(const cs_model *model, cs_state *s, int p, int pusher, int w
 }
 
 /* Capture the standing posts the face has reached, and those a side has swept over. A post inside the
- * outline near a front corner is inside both the face and a side: it came in across the nearer of the
- * two, which strikes it (a step later with a longer step: which edge strikes must not depend on it).
+ * outline near a front corner is inside both the face and a side. The face strikes what it passes within
+ * CS_CAPTURE_MARGIN of its corners, so the side struck it only if it came within that margin of the side
+ * after the face passed it: it did if, at the rates at which the post moves into the outline in the body
+ * frame (v_f behind the face, v_s in from the side: the body's velocity and turn, the post held),
+ * (in_side + margin) v_f < past_face v_s; or if it is further behind the face than the face's reach.
+ * A body at rest takes v_f = v_s. Which edge strikes must not depend on the step's length, nor on the sign
+ * of a round-off (a post on a corner's line, as an impact at a corner puts it: the face).
  * waiting: struck at a step's new pose before its solve, a post pushes nothing until the step's end
  * (cs_post_end_waiting), as a failure's change does (step.c). Returns 1 if any was captured. */
 int cs_post_capture(const cs_model *model, cs_state *s, int waiting) {
@@ -705,8 +710,14 @@ int cs_post_capture(const cs_model *model, cs_state *s, int waiting) {
         v3_sub(rel, top, s->pos);
         quat_unrotate(b, s->quat, rel);
         double past_face = v->cg_to_front - s->crush - b[0], in_side = 0.5 * v->front_width - fabs(b[1]);
+        double rate[3], spin[3]; /* the post moves in the body frame at -(R^T v + omega x b) */
+        quat_unrotate(rate, s->quat, s->vel);
+        v3_cross(spin, s->omega, b);
+        double vf = fmax(rate[0] + spin[0], 0.0),
+               vs = fmax((b[1] >= 0.0 ? 1.0 : -1.0) * (rate[1] + spin[1]), 0.0);
+        if (vf == 0.0 && vs == 0.0) vf = vs = 1.0;
         int side = b[0] > -v->cg_to_rear && past_face > 0.0 && in_side > 0.0 &&
-                   (in_side < past_face || past_face > zb);
+                   ((in_side + CS_CAPTURE_MARGIN) * vf < past_face * vs || past_face > zb);
         if (side) {
             capture(model, s, p, b[1] >= 0.0 ? CS_PUSH_LEFT : CS_PUSH_RIGHT, waiting);
             any = 1;
