@@ -161,6 +161,8 @@ typedef struct cs_footing_def {
                                        residual an anchor ploughs on at; none below: friction_angle) */
     cs_width_scaling width_scaling; /**< how dynamic_factor carries to this member's width */
     double skin_friction; /**< shaft friction per metre of depth, Pa/m (uplift capacity, calibrated) */
+    double unit_weight;   /**< the soil's unit weight, N/m^3: the mass of the passive wedge a moving
+                             anchor carries with it (anchor.c) */
 } cs_footing_def;
 
 /** How the cables are held on a post. All but clamped slide along the barrier with capstan friction.

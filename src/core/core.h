@@ -122,7 +122,8 @@ typedef struct cs_anchor_model {
     double residual;        /* what the soil keeps while it ploughs on past the peak, N */
     double softening;       /* plastic slide over which the resistance falls from the peak to it, m */
     double stiffness;       /* N/m, up to the peak */
-    double mass;            /* kg */
+    double mass;            /* kg: the footing's own, whose weight holds it down */
+    double moving_mass;     /* kg: it and the soil's passive wedge moving with it (footing.c) */
     double uplift_capacity; /* N: the ropes' upward pull that lifts it out of the soil */
 } cs_anchor_model;
 

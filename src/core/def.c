@@ -15,6 +15,8 @@
 #endif
 #ifndef CS_SOIL_SKIN_FRICTION
 #define CS_SOIL_SKIN_FRICTION 177.5e3 /* Pa/m */
+/* unit weight of a compacted crushed-stone base: 135 pcf (docs/assumptions.md) */
+#define CS_SOIL_UNIT_WEIGHT (135.0 * CS_LBF / (CS_FT * CS_FT * CS_FT)) /* N/m^3 */
 #endif
 
 cs_rope_def cs_default_rope_def(void) {
@@ -137,6 +139,7 @@ cs_footing_def cs_default_footing_def(void) {
     d.friction_angle = 42.0 * CS_PI / 180.0;   /* compacted crushed-stone base (AASHTO M147 B): 40-45 deg */
     d.residual_friction_angle = 33.0 * CS_PI / 180.0; /* critical state of quartz sand (Bolton 1986) */
     d.skin_friction = CS_SOIL_SKIN_FRICTION;          /* same */
+    d.unit_weight = CS_SOIL_UNIT_WEIGHT;              /* compacted crushed-stone base: 135 pcf */
     return d;
 }
 

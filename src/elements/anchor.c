@@ -13,7 +13,8 @@
  * the resistance over the slide, is booked as soil. With the trial force n = |k (u - u_p)| above the cap
  * c(s), the slide l solves n - k l = c(s + l): on the softening branch (slope H = (P - P_r) / s_r < k)
  * l = (n - c(s)) / (k - H), past it l = (n - P_r) / k.
- * The footing and what moves with it have mass M, integrated over the time h since the last commit by the
+ * The footing and the soil's passive wedge moving with it have mass M (its own and the wedge's:
+ * footing.c), integrated over the time h since the last commit by the
  * HHT-alpha method (Hilber, Hughes and Taylor 1977): with F = F_ropes - R(u) the net force,
  *   M a = (1 + alpha) F(u) - alpha F_c,
  *   u = u_c + h v_c + h^2 ((1/2 - beta) a_c + beta a),   v = v_c + h ((1 - gamma) a_c + gamma a),
@@ -39,7 +40,7 @@
 
 /* The kinetic energy of its slide at the rate of the last commit. */
 static double kinetic_energy(const cs_anchor_model *am, const cs_anchor_state *as) {
-    return 0.5 * am->mass * (as->rate[0] * as->rate[0] + as->rate[1] * as->rate[1]);
+    return 0.5 * am->moving_mass * (as->rate[0] * as->rate[0] + as->rate[1] * as->rate[1]);
 }
 
 /* The acceleration the step from the last commit to u over h gives (the HHT-alpha update). */
@@ -55,6 +56,7 @@ void cs_anchor_derive(const cs_anchor_def *d, double gravity, cs_anchor_model *a
     double b = f->diameter, len = d->length > 0.0 ? d->length : 0.0;
     double volume = len > 0.0 ? b * len * f->depth : 0.25 * CS_PI * b * b * f->depth;
     am->mass = d->mass > 0.0 ? d->mass : CS_CONCRETE_DENSITY * volume;
+    am->moving_mass = am->mass + cs_footing_wedge_mass(f, gravity);
     am->capacity = cs_footing_impact_capacity(f, d->z);
     am->residual = cs_footing_residual_ratio(f) * am->capacity;
     am->softening = CS_ANCHOR_SOFTENING_STRAIN * f->depth;
@@ -173,7 +175,7 @@ void cs_anchor_residual(const cs_model *model, const cs_state *s, int a, const d
     r[0] = f[0] - q[0], r[1] = f[1] - q[1];
     if (s->h > 0.0 && s->h < HUGE_VAL)
         for (int k = 0; k < 2; k++)
-            r[k] -= cs_hht_inertia(am->mass, acceleration_to(as, k, as->u[k], s->h), as->net[k]);
+            r[k] -= cs_hht_inertia(am->moving_mass, acceleration_to(as, k, as->u[k], s->h), as->net[k]);
 }
 
 static void residual(const cs_model *model, const cs_state *s, const cs_rows *rows, const cs_slot *u,
@@ -200,7 +202,7 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
     for (int i = 0; i < 2; i++)
         for (int j = 0; j < 2; j++)
             k[2 * i + j] = -am->stiffness * (t * ((i == j) - e[i] * e[j]) + slope * e[i] * e[j]);
-    double inertia = cs_hht_inertia_slope(am->mass, s->h);
+    double inertia = cs_hht_inertia_slope(am->moving_mass, s->h);
     k[0] -= inertia, k[3] -= inertia;
     for (int i = 0; i < 2; i++)
         for (int j = 0; j < 2; j++)
@@ -262,7 +264,7 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
             s->e_post_damping += work - (kinetic_energy(am, as) - kinetic_before);
         } else { /* h infinite: settled at rest; h = 0: it keeps the rate it had, as a post does */
             if (s->h > 0.0) as->rate[0] = as->rate[1] = 0.0;
-            as->acc[0] = net[0] / am->mass, as->acc[1] = net[1] / am->mass;
+            as->acc[0] = net[0] / am->moving_mass, as->acc[1] = net[1] / am->moving_mass;
         }
         as->net[0] = net[0], as->net[1] = net[1];
         as->u_commit[0] = as->u[0], as->u_commit[1] = as->u[1];

@@ -12,6 +12,9 @@
 
 enum { CS_MAX_POSTS = 20000, CS_MAX_CABLES = 64 };
 #define CS_MAX_STEPS 5.0e7
+/* a soil's unit weight, N/m^3: from a loose dry sand's to a dense saturated gravel's, with room */
+#define CS_SOIL_UNIT_WEIGHT_MIN 5e3
+#define CS_SOIL_UNIT_WEIGHT_MAX 30e3
 
 static int fail(cs_error *err, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 static int fail(cs_error *err, const char *fmt, ...) {
@@ -81,6 +84,10 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
             if (!(f->residual_friction_angle > 0.0 && f->residual_friction_angle < 1.2))
                 return fail(err, "anchor %d: soil residual friction angle must be between 0 and 69 degrees",
                             k);
+            if (!(f->unit_weight >= CS_SOIL_UNIT_WEIGHT_MIN && f->unit_weight <= CS_SOIL_UNIT_WEIGHT_MAX))
+                return fail(
+                    err, "anchor %d: soil unit weight %.4g kN/m^3 must be between %.0f and %.0f kN/m^3", k,
+                    f->unit_weight / 1e3, CS_SOIL_UNIT_WEIGHT_MIN / 1e3, CS_SOIL_UNIT_WEIGHT_MAX / 1e3);
             if (a->pullout_capacity == 0.0 && f->pullout_capacity == 0.0 && !positive(f->skin_friction))
                 return fail(err, "anchor %d: an anchor without a pullout capacity needs skin friction > 0",
                             k);

@@ -191,6 +191,9 @@ const cs_table cs_table_parts = {"parts",
         FT("residual_friction_angle", CS_Q_ANGLE, CS_POS | CS_MAX90, residual_friction_angle,                \
            "the soil's critical-state angle of friction: the resistance an anchor keeps ploughing past its " \
            "peak"),                                                                                          \
+        FT("unit_weight", CS_Q_PRESSURE_GRADIENT, CS_POS, unit_weight,                                       \
+           "the soil's unit weight (weight per volume, e.g. 135 lbf/ft^3): the passive wedge a moving "      \
+           "anchor carries"),                                                                                \
     {                                                                                                        \
         "width_scaling", CS_F_ENUM, CS_Q_NUMBER, 0, (long)offsetof(cs_footing_def, width_scaling), NULL,     \
             width_scaling_words,                                                                             \

@@ -396,7 +396,8 @@ static const field soil_fields[] = {
     {"coeff_height", offsetof(cs_footing_def, coeff_height)},
     {"dynamic_factor", offsetof(cs_footing_def, dynamic_factor)},
     {"friction_angle_rad", offsetof(cs_footing_def, friction_angle)},
-    {"residual_friction_angle_rad", offsetof(cs_footing_def, residual_friction_angle)}};
+    {"residual_friction_angle_rad", offsetof(cs_footing_def, residual_friction_angle)},
+    {"unit_weight_n_m3", offsetof(cs_footing_def, unit_weight)}};
 /* the scenario's before and after its impact_at_corner, and the vehicle's */
 static const field scenario_fields[] = {{"speed", offsetof(cs_scenario_def, speed)},
                                         {"angle", offsetof(cs_scenario_def, angle)},
