@@ -15,9 +15,9 @@
 #endif
 #ifndef CS_SOIL_SKIN_FRICTION
 #define CS_SOIL_SKIN_FRICTION 177.5e3 /* Pa/m */
+#endif
 /* unit weight of a compacted crushed-stone base: 135 pcf (docs/assumptions.md) */
 #define CS_SOIL_UNIT_WEIGHT (135.0 * CS_LBF / (CS_FT * CS_FT * CS_FT)) /* N/m^3 */
-#endif
 
 cs_rope_def cs_default_rope_def(void) {
     cs_rope_def d;

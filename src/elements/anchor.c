@@ -56,7 +56,7 @@ void cs_anchor_derive(const cs_anchor_def *d, double gravity, cs_anchor_model *a
     double b = f->diameter, len = d->length > 0.0 ? d->length : 0.0;
     double volume = len > 0.0 ? b * len * f->depth : 0.25 * CS_PI * b * b * f->depth;
     am->mass = d->mass > 0.0 ? d->mass : CS_CONCRETE_DENSITY * volume;
-    am->moving_mass = am->mass + cs_footing_wedge_mass(f, gravity);
+    am->moving_mass = am->mass + cs_footing_wedge_mass(f);
     am->capacity = cs_footing_impact_capacity(f, d->z);
     am->residual = cs_footing_residual_ratio(f) * am->capacity;
     am->softening = CS_ANCHOR_SOFTENING_STRAIN * f->depth;

@@ -171,7 +171,7 @@ double cs_footing_wedge_factor(double friction_angle, double width, double depth
 /* The soil's resistance at large movement over its peak (critical state over peak friction angle). */
 double cs_footing_residual_ratio(const cs_footing_def *f);
 /* The soil that moves with a footing pushed through it, as a mass at the footing's speed, kg. */
-double cs_footing_wedge_mass(const cs_footing_def *f, double gravity);
+double cs_footing_wedge_mass(const cs_footing_def *f);
 double cs_footing_dynamic_factor(const cs_footing_def *f);
 double cs_footing_pullout_capacity(const cs_footing_def *f);
 /* Movement that mobilises the soil's passive resistance, over the member's depth (Clough and Duncan
