@@ -327,7 +327,8 @@ static const cs_field anchor_fields[] = {
     QTY("length", CS_Q_LENGTH, CS_POS, cs_anchor_def, length,
         "a block's plan size along the pull (footing.diameter is the face against it; not given: a round "
         "shaft)"),
-    QTY("mass", CS_Q_MASS, CS_POS, cs_anchor_def, mass, "what moves with it (not given: its concrete)"),
+    QTY("mass", CS_Q_MASS, CS_POS, cs_anchor_def, mass,
+        "the footing's own (not given: its concrete); the soil's wedge moves with it too"),
     QTY("pullout_capacity", CS_Q_FORCE, CS_POS | CS_NONE_OK, cs_anchor_def, pullout_capacity,
         "uplift that pulls it out (none: never; not given: its weight and skin friction)"),
 };
