@@ -460,13 +460,15 @@ static void struck_post_takes_the_work_the_face_does(void **state) {
     cs_model_free(m);
 }
 
-/* A post inside the outline near the front-left corner is inside both the face and the left side; the
- * side struck it only if it came within the face's margin (0.1 m) of the side after the face passed it.
- * Moving straight ahead, the body carries no side over a post: 2 mm past the face and 20 mm in from the
- * side, 20 mm past and 2 mm in, or on the corner's line (1e-15 m in, a round-off's sign), the face
- * strikes. Sliding sideways at 5 m/s (no speed ahead), the side swept over it: the side strikes, pushed
- * along its outward normal. Which edge strikes must not hang on which test looks first, on how far one
- * step carries the body, nor on the sign of a round-off (RS1's corner impact on a post). */
+/* A post inside the outline near a front corner is inside both the face and a side; the side struck it
+ * only if it came within the face's margin (0.1 m) of the side after the face passed it. Moving straight
+ * ahead, the body carries no side over a post: 2 mm past the face and 20 mm in from the side, 20 mm past
+ * and 2 mm in, or on the corner's line (1e-15 m in, a round-off's sign), the face strikes. Sliding
+ * sideways at 5 m/s (no speed ahead), or turning at 2 rad/s toward the post's side about its centre
+ * (the front corner sweeping sideways), the side swept over it: the side strikes, pushed along its
+ * outward normal, left or right as the post lies. Which edge strikes must not hang on which test looks
+ * first, on how far one step carries the body, nor on the sign of a round-off (RS1's corner impact on a
+ * post). */
 static void a_post_is_struck_by_the_edge_it_came_in_across(void **state) {
     (void)state;
     fixture fx;
@@ -474,22 +476,24 @@ static void a_post_is_struck_by_the_edge_it_came_in_across(void **state) {
     cs_post_def post = fx.posts[0];
     cs_model *m = one_post_model(&post, NULL);
     const cs_vehicle_def *v = &m->vehicle.def;
-    /* past the face, in from the side (m); the body's velocity ahead and to its left (m/s) */
-    const double cases[5][4] = {{0.002, 0.020, 27.0, 0.0},
-                                {0.020, 0.002, 27.0, 0.0},
-                                {0.002, 1e-15, 27.0, 0.0},
-                                {0.020, 0.002, 0.0, 5.0},
-                                {0.002, 0.020, 0.0, 5.0}};
-    const int pusher[5] = {CS_PUSH_FACE, CS_PUSH_FACE, CS_PUSH_FACE, CS_PUSH_LEFT, CS_PUSH_LEFT};
-    for (int k = 0; k < 5; k++) {
+    /* past the face, in from the side (m); the body's velocity ahead and to its left (m/s), its turn
+     * about the vertical (rad/s, to the left positive); the post on the body's left (1) or right (-1) */
+    const double cases[9][6] = {{0.002, 0.020, 27.0, 0.0, 0.0, 1.0},  {0.020, 0.002, 27.0, 0.0, 0.0, 1.0},
+                                {0.002, 1e-15, 27.0, 0.0, 0.0, 1.0},  {0.020, 0.002, 0.0, 5.0, 0.0, 1.0},
+                                {0.002, 0.020, 0.0, 5.0, 0.0, 1.0},   {0.002, 0.020, 0.0, 0.0, 2.0, 1.0},
+                                {0.002, 0.020, 0.0, -5.0, 0.0, -1.0}, {0.002, 0.020, 0.0, 0.0, -2.0, -1.0},
+                                {0.020, 0.002, 27.0, 0.0, 0.0, -1.0}};
+    const int pusher[9] = {CS_PUSH_FACE, CS_PUSH_FACE,  CS_PUSH_FACE,  CS_PUSH_LEFT, CS_PUSH_LEFT,
+                           CS_PUSH_LEFT, CS_PUSH_RIGHT, CS_PUSH_RIGHT, CS_PUSH_FACE};
+    for (int k = 0; k < 9; k++) {
         cs_error err;
         cs_state *s = cs_state_create(m, &err);
         assert_non_null(s);
-        s->quat[0] = 1.0, s->quat[1] = s->quat[2] = s->quat[3] = 0.0; /* heading +x, the post on its left */
+        s->quat[0] = 1.0, s->quat[1] = s->quat[2] = s->quat[3] = 0.0; /* heading +x */
         s->pos[0] = m->posts[0].x - v->cg_to_front + cases[k][0];
-        s->pos[1] = -(0.5 * v->front_width - cases[k][1]);
+        s->pos[1] = -cases[k][5] * (0.5 * v->front_width - cases[k][1]);
         s->vel[0] = cases[k][2], s->vel[1] = cases[k][3], s->vel[2] = 0.0;
-        s->omega[0] = s->omega[1] = s->omega[2] = 0.0;
+        s->omega[0] = s->omega[1] = 0.0, s->omega[2] = cases[k][4];
         s->crush = 0.0;
         assert_int_equal(cs_post_capture(m, s, 0), 1);
         assert_true(s->posts[0].captured);
