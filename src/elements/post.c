@@ -679,6 +679,18 @@ static void capture(const cs_model *model, cs_state *s, int p, int pusher, int w
     }
 }
 
+/* Whether a post at b in the body frame, past_face behind the face and in_side in from the nearer side,
+ * came within the face's corner margin of the side after the face passed it (cs_post_capture). */
+static int came_in_across_side(const cs_state *s, const double b[3], double past_face, double in_side) {
+    double rate[3], spin[3]; /* the post moves in the body frame at -(R^T v + omega x b) */
+    quat_unrotate(rate, s->quat, s->vel);
+    v3_cross(spin, s->omega, b);
+    double vf = fmax(rate[0] + spin[0], 0.0),
+           vs = fmax((b[1] >= 0.0 ? 1.0 : -1.0) * (rate[1] + spin[1]), 0.0);
+    if (vf == 0.0 && vs == 0.0) vf = vs = 1.0;
+    return (in_side + CS_CAPTURE_MARGIN) * vf < past_face * vs;
+}
+
 /* Capture the standing posts the face has reached, and those a side has swept over. A post inside the
  * outline near a front corner is inside both the face and a side. The face strikes what it passes within
  * CS_CAPTURE_MARGIN of its corners, so the side struck it only if it came within that margin of the side
@@ -710,14 +722,8 @@ int cs_post_capture(const cs_model *model, cs_state *s, int waiting) {
         v3_sub(rel, top, s->pos);
         quat_unrotate(b, s->quat, rel);
         double past_face = v->cg_to_front - s->crush - b[0], in_side = 0.5 * v->front_width - fabs(b[1]);
-        double rate[3], spin[3]; /* the post moves in the body frame at -(R^T v + omega x b) */
-        quat_unrotate(rate, s->quat, s->vel);
-        v3_cross(spin, s->omega, b);
-        double vf = fmax(rate[0] + spin[0], 0.0),
-               vs = fmax((b[1] >= 0.0 ? 1.0 : -1.0) * (rate[1] + spin[1]), 0.0);
-        if (vf == 0.0 && vs == 0.0) vf = vs = 1.0;
         int side = b[0] > -v->cg_to_rear && past_face > 0.0 && in_side > 0.0 &&
-                   ((in_side + CS_CAPTURE_MARGIN) * vf < past_face * vs || past_face > zb);
+                   (past_face > zb || came_in_across_side(s, b, past_face, in_side));
         if (side) {
             capture(model, s, p, b[1] >= 0.0 ? CS_PUSH_LEFT : CS_PUSH_RIGHT, waiting);
             any = 1;
