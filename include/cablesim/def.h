@@ -235,10 +235,9 @@ typedef struct cs_anchor_def {
     double pullout_capacity; /**< uplift that pulls it out, N; 0: its weight plus its skin friction
                               * (footing.skin_friction); HUGE_VAL: never */
     double length;           /**< plan size along the pull, m (0: a round shaft of the footing's diameter) */
-    double
-        mass; /**< kg, the footing's own, whose weight holds it down (0: its concrete, CS_CONCRETE_DENSITY);
-                 the soil's passive wedge is added to it for its motion (footing.unit_weight) */
-    cs_footing_def footing; /**< its width facing the pull (diameter), depth and soil; diameter 0: rigid */
+    double mass;             /**< kg, the footing's own (0: its concrete, CS_CONCRETE_DENSITY): its weight
+                              * holds it down; the soil's wedge moves with it too (footing.unit_weight) */
+    cs_footing_def footing;  /**< its width facing the pull (diameter), depth and soil; diameter 0: rigid */
 } cs_anchor_def;
 
 #define CS_CONCRETE_DENSITY 2300.0 /**< kg/m^3, plain concrete */
