@@ -53,7 +53,7 @@ double cs_footing_residual_ratio(const cs_footing_def *f) {
 /* The passive wedge a footing pushed through the soil carries (Rankine): bounded by the slip plane at
  * 45 - phi/2 to the horizontal from the footing's base to grade, D^2 tan(45 + phi/2) / 2 in section, it
  * slides up that plane as the footing moves by v, at v / cos(45 - phi/2); its kinetic energy is that of a
- * mass rho b D^2 tan(45 + phi/2) / (2 cos^2(45 - phi/2)) = rho b D^2 / cos(phi) at v (rho = gamma / g),
+ * mass rho b D^2 tan(45 + phi/2) / (2 cos^2(45 - phi/2)) = rho b D^2 / cos(phi) at v (rho = gamma / g0),
  * over the footing's width b in plane strain: the 3-D wedge's flanks carry more. The unit weight is a
  * weight at standard gravity, whatever the scenario's. */
 double cs_footing_wedge_mass(const cs_footing_def *f) {
