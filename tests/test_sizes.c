@@ -3,7 +3,9 @@
  * gets the run of today's structs with the defaults for the fields it lacks; a struct not started from
  * its cs_default_*(), or larger than the library's, is refused with a sentence naming it. The earlier
  * structs are today's without their last field: a rope without its diameter (so a cable ending in that
- * smaller rope, read at its own stride in the barrier's array) and a scenario without max_steps.
+ * smaller rope, read at its own stride in the barrier's array) and a scenario without max_steps; and
+ * nested structs a field short in the middle of their owners (a post's section and footing, the start
+ * anchor's footing), the owner's later fields read from where the earlier layout puts them.
  * The structs the engine fills (sim.h: cs_summary, the views, cs_event, cs_energy, cs_cable_summary,
  * cs_sudden_loss, the last in an array at its first one's size) the other way: one a field short
  * gets the leading values of a whole one from the same state and nothing past its size; a size of 0 or
@@ -85,6 +87,81 @@ static void earlier_structs_run_as_todays_with_defaults(void **state) {
     cs_model_free(m);
 }
 
+/* Cut the last field (8 bytes) of the nested struct at offset `at` of size `inner` out of an owner of
+ * `size` bytes at src, into dst: the owner as a program built before that nested struct grew laid it out,
+ * its size and the nested one's set to theirs. Returns the owner's earlier size. */
+static size_t cut_nested(unsigned char *dst, const unsigned char *src, size_t size, size_t at, size_t inner) {
+    memcpy(dst, src, at + inner - 8);
+    memcpy(dst + at + inner - 8, src + at + inner, size - at - inner);
+    size_t earlier = size - 8, nested = inner - 8;
+    memcpy(dst, &earlier, sizeof earlier);
+    memcpy(dst + at, &nested, sizeof nested);
+    return earlier;
+}
+
+/* A program built before a post's section and footing grew (each a field short, in the middle of the
+ * post) and before an anchor's footing grew (the start anchor's in the middle of the barrier): its posts
+ * and anchors are read
+ * at their own layout, the fields after each smaller nested struct from where that layout puts them. */
+static void earlier_nested_structs_run_as_todays_with_defaults(void **state) {
+    (void)state;
+    enum { SEC = offsetof(cs_post_def, section), FOOT = offsetof(cs_post_def, footing) };
+    enum { START = offsetof(cs_barrier_def, start_anchor), END = offsetof(cs_barrier_def, end_anchor) };
+    enum { AFOOT = offsetof(cs_anchor_def, footing) };
+    /* the earlier layouts are today's nested structs cut before their last field */
+    assert_int_equal(offsetof(cs_section_def, fill_strength) + 8, sizeof(cs_section_def));
+    assert_int_equal(offsetof(cs_footing_def, unit_weight) + 8, sizeof(cs_footing_def));
+    assert_true(SEC < FOOT && FOOT + sizeof(cs_footing_def) < sizeof(cs_post_def)); /* both mid-post */
+    assert_true(START + sizeof(cs_anchor_def) <= END); /* the start anchor mid-barrier */
+    fixture fx;
+    fixture_aps3(&fx);
+    fx.scenario.t_end = 0.3;
+    int np = fx.barrier.post_count;
+    /* beyond the earlier structs: must not be read */
+    for (int p = 0; p < np; p++)
+        fx.posts[p].section.fill_strength = 1e9, fx.posts[p].footing.unit_weight = 29e3;
+    fx.barrier.start_anchor.footing.unit_weight = fx.barrier.end_anchor.footing.unit_weight = 29e3;
+
+    enum { POST = sizeof(cs_post_def), OLD_POST = POST - 16 };
+    static unsigned char old_posts[64][OLD_POST];
+    for (int p = 0; p < np; p++) {
+        unsigned char once[POST - 8];
+        size_t n = cut_nested(once, (const unsigned char *)&fx.posts[p], POST, SEC, sizeof(cs_section_def));
+        assert_int_equal(cut_nested(old_posts[p], once, n, FOOT - 8, sizeof(cs_footing_def)), OLD_POST);
+    }
+    enum { BARRIER = sizeof(cs_barrier_def), ANCHOR = sizeof(cs_anchor_def) };
+    unsigned char anchor_once[2][ANCHOR], old_barrier[BARRIER - 16];
+    cs_barrier_def b = fx.barrier;
+    b.posts = (const cs_post_def *)(const void *)old_posts;
+    cut_nested(anchor_once[0], (const unsigned char *)&b.start_anchor, ANCHOR, AFOOT, sizeof(cs_footing_def));
+    cut_nested(anchor_once[1], (const unsigned char *)&b.end_anchor, ANCHOR, AFOOT, sizeof(cs_footing_def));
+    /* the barrier with its anchors a field short: each anchor 8 bytes smaller, in place */
+    unsigned char whole[BARRIER];
+    memcpy(whole, &b, BARRIER);
+    memcpy(whole + START, anchor_once[0], ANCHOR - 8);
+    memcpy(whole + START + ANCHOR - 8, (const unsigned char *)&b + START + ANCHOR, END - START - ANCHOR);
+    memcpy(whole + END - 8, anchor_once[1], ANCHOR - 8);
+    memcpy(whole + END + ANCHOR - 16, (const unsigned char *)&b + END + ANCHOR, BARRIER - END - ANCHOR);
+    size_t old_size = BARRIER - 16;
+    memcpy(old_barrier, whole, BARRIER - 16);
+    memcpy(old_barrier, &old_size, sizeof old_size);
+
+    /* today's structs with the defaults in the fields the earlier ones lack */
+    cs_section_def ds = cs_default_section_def();
+    cs_footing_def df = cs_default_footing_def();
+    for (int p = 0; p < np; p++)
+        fx.posts[p].section.fill_strength = ds.fill_strength,
+        fx.posts[p].footing.unit_weight = df.unit_weight;
+    fx.barrier.start_anchor.footing.unit_weight = fx.barrier.end_anchor.footing.unit_weight = df.unit_weight;
+    unsigned long long today = run_hash(&fx.barrier, &fx.vehicle, &fx.scenario);
+    unsigned long long earlier =
+        run_hash((const cs_barrier_def *)(const void *)old_barrier, &fx.vehicle, &fx.scenario);
+    assert_true(today == earlier);
+    /* and the cut fields were not read: with them today's run differs (the anchors' wedge is heavier) */
+    fx.barrier.start_anchor.footing.unit_weight = fx.barrier.end_anchor.footing.unit_weight = 29e3;
+    assert_true(run_hash(&fx.barrier, &fx.vehicle, &fx.scenario) != today);
+}
+
 static void expect_refused(const cs_barrier_def *b, const cs_vehicle_def *v, const cs_scenario_def *s,
                            const char *want) {
     cs_error err;
@@ -108,7 +185,13 @@ static void unknown_sizes_are_refused(void **state) {
     fx.posts[3].footing.diameter = 0.75 * FT;
     fx.posts[3].footing.depth = 3 * FT;
     fx.posts[3].footing.soil_pressure = 8000 * PSF;
-    fx.posts[3].section.size = sizeof(cs_section_def) - 8; /* a smaller section inside a whole post */
+    /* a smaller section inside a post of today's size: the post's footing is read from where the section
+     * ends, 8 bytes early, and its size there is the section's last field */
+    fx.posts[3].section.size = sizeof(cs_section_def) - 8;
+    expect_refused(&fx.barrier, &fx.vehicle, &fx.scenario, "post 3's footing: size");
+    /* a smaller rope inside a cable of today's size: 8 bytes more cable than this library's */
+    fx.posts[3].section.size = sizeof(cs_section_def);
+    fx.cables[1].rope.size = sizeof(cs_rope_def) - 8;
     expect_refused(&fx.barrier, &fx.vehicle, &fx.scenario, "a layout this library does not know");
 }
 
@@ -382,6 +465,7 @@ static void sudden_losses_fill_an_array_at_its_first_size(void **state) {
 int main(void) {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(earlier_structs_run_as_todays_with_defaults),
+        cmocka_unit_test(earlier_nested_structs_run_as_todays_with_defaults),
         cmocka_unit_test(unknown_sizes_are_refused),
     };
     const struct CMUnitTest filled_tests[] = {

@@ -1,8 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The definitions' sizes (def.h): a struct from a program built against an earlier, smaller version is
  * read to its size, the rest taken from its cs_default_*(); a struct nested in another is read the same
- * way, and may be smaller than this library's only where it ends its owner (a smaller one inside would put
- * the owner's later fields where this version has none). */
+ * way at its own size, and the owner's fields after it from where the caller's layout puts them. */
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -21,7 +20,7 @@ struct kind {
     size_t size;
     void (*fill)(void *def); /* the defaults */
     const char *name;        /* cs_default_NAME() */
-    member members[3];       /* nested definitions, by offset */
+    member members[3];       /* nested definitions, in the order of their offsets */
 };
 
 static void rope(void *d) {
@@ -91,30 +90,42 @@ static int bad(cs_error *err, const char *what, const kind *k, size_t given) {
     return -1;
 }
 
-/* Read the caller's struct at given (room bytes of it at most) into full. */
-static int take(const kind *k, void *full, const void *given, size_t room, const char *what, cs_error *err) {
+/* Read the caller's struct at given (room bytes of it at most) into full; *used gets its size. A version
+ * adds fields only at a struct's end, so the caller's struct is this library's with each nested struct
+ * ending where the caller's own size says and the owner's fields after it moved by what that one lacks
+ * (every definition is 8-byte aligned, its size a multiple of 8): it is read piece by piece, the owner's
+ * own fields between the nested ones, and the defaults kept for whatever the caller's version lacks. */
+static int take(const kind *k, void *full, const void *given, size_t room, const char *what, cs_error *err,
+                size_t *used) {
     size_t n = 0;
     if (room >= sizeof n) memcpy(&n, given, sizeof n);
     k->fill(full);
     if (n < sizeof n || n > k->size || n > room) return bad(err, what, k, n);
-    memcpy(full, given, n);
-    memcpy(full, &k->size, sizeof k->size);
+    const char *g = given;
+    char *f = full;
+    size_t at = 0, to = 0; /* the next byte to read in the caller's struct, and where it goes in full */
     for (int i = 0; i < 3 && k->members[i].kind; i++) {
         const member *m = &k->members[i];
-        if (n <= m->offset) continue; /* the caller's has none of it: its defaults */
+        size_t own = m->offset - to; /* the owner's fields before this nested one */
+        if (n <= at + own) break;    /* the caller's has none of it: its defaults */
+        memcpy(f + to, g + at, own);
         char sub[128];
         snprintf(sub, sizeof sub, "%s's %s", what, m->name);
-        const char *at = (const char *)given + m->offset;
-        if (take(m->kind, (char *)full + m->offset, at, n - m->offset, sub, err) != 0) return -1;
         size_t inner;
-        memcpy(&inner, at, sizeof inner);
-        if (inner < m->kind->size && n > m->offset + inner) {
+        if (take(m->kind, f + m->offset, g + at + own, n - at - own, sub, err, &inner) != 0) return -1;
+        at += own + inner, to = m->offset + m->kind->size;
+    }
+    if (at < n) {
+        if (to + (n - at) > k->size) {
             cs_error_set(err, CS_ERR_INVALID,
-                         "%s: size %zu inside a %s of %zu: a layout this library does not know", sub, inner,
+                         "%s: size %zu with its nested structs as given: a layout this library does not know",
                          what, n);
             return -1;
         }
+        memcpy(f + to, g + at, n - at);
     }
+    memcpy(full, &k->size, sizeof k->size);
+    *used = n;
     return 0;
 }
 
@@ -130,7 +141,8 @@ static int take_array(const kind *k, void *out, const void *given, int count, co
         char at[64];
         snprintf(at, sizeof at, "%s %d", what, i);
         const char *g = (const char *)given + (size_t)i * stride;
-        if (take(k, (char *)out + (size_t)i * k->size, g, stride, at, err) != 0) return -1;
+        size_t used;
+        if (take(k, (char *)out + (size_t)i * k->size, g, stride, at, err, &used) != 0) return -1;
     }
     return 0;
 }
@@ -142,9 +154,10 @@ static void *room_for(int count, size_t size) {
 int cs_defs_take(cs_defs *d, const cs_barrier_def *b, const cs_vehicle_def *v, const cs_scenario_def *s,
                  cs_error *err) {
     memset(d, 0, sizeof *d);
-    if (take(&barrier_kind, &d->barrier, b, SIZE_MAX, "barrier", err) != 0 ||
-        take(&vehicle_kind, &d->vehicle, v, SIZE_MAX, "vehicle", err) != 0 ||
-        take(&scenario_kind, &d->scenario, s, SIZE_MAX, "scenario", err) != 0)
+    size_t used;
+    if (take(&barrier_kind, &d->barrier, b, SIZE_MAX, "barrier", err, &used) != 0 ||
+        take(&vehicle_kind, &d->vehicle, v, SIZE_MAX, "vehicle", err, &used) != 0 ||
+        take(&scenario_kind, &d->scenario, s, SIZE_MAX, "scenario", err, &used) != 0)
         return -1;
     int nc = d->barrier.cable_count, np = d->barrier.post_count, nr = d->barrier.rail_count;
     d->cables = room_for(nc, sizeof *d->cables);
