@@ -18,6 +18,7 @@ typedef struct member {
 } member;
 struct kind {
     size_t size;
+    size_t align;            /* every size of it is a multiple of this */
     void (*fill)(void *def); /* the defaults */
     const char *name;        /* cs_default_NAME() */
     member members[3];       /* nested definitions, in the order of their offsets */
@@ -54,31 +55,51 @@ static void scenario(void *d) {
     *(cs_scenario_def *)d = cs_default_scenario_def();
 }
 
-static const kind rope_kind = {sizeof(cs_rope_def), rope, "rope_def", {{0}}};
-static const kind section_kind = {sizeof(cs_section_def), section, "section_def", {{0}}};
-static const kind footing_kind = {sizeof(cs_footing_def), footing, "footing_def", {{0}}};
-static const kind rail_kind = {sizeof(cs_rail_def), rail, "rail_def", {{0}}};
-static const kind vehicle_kind = {sizeof(cs_vehicle_def), vehicle, "vehicle_def", {{0}}};
-static const kind scenario_kind = {sizeof(cs_scenario_def), scenario, "scenario_def", {{0}}};
+/* The layout read below: one alignment for every definition (a nested struct a multiple of it smaller
+ * moves its owner's later fields by that, which no field's alignment minds), nested members in the order
+ * of their offsets. */
+#define SAME_ALIGN(a, b) _Static_assert(_Alignof(a) == _Alignof(b), #a " and " #b " align alike")
+SAME_ALIGN(cs_cable_def, cs_rope_def);
+SAME_ALIGN(cs_post_def, cs_section_def);
+SAME_ALIGN(cs_post_def, cs_footing_def);
+SAME_ALIGN(cs_anchor_def, cs_footing_def);
+SAME_ALIGN(cs_barrier_def, cs_anchor_def);
+_Static_assert(offsetof(cs_post_def, section) + sizeof(cs_section_def) <= offsetof(cs_post_def, footing),
+               "a post's nested structs in order");
+_Static_assert(offsetof(cs_barrier_def, start_anchor) + sizeof(cs_anchor_def) <=
+                   offsetof(cs_barrier_def, end_anchor),
+               "a barrier's anchors in order");
+
+#define KIND(t) sizeof(t), _Alignof(t)
+static const kind rope_kind = {KIND(cs_rope_def), rope, "rope_def", {{0}}};
+static const kind section_kind = {KIND(cs_section_def), section, "section_def", {{0}}};
+static const kind footing_kind = {KIND(cs_footing_def), footing, "footing_def", {{0}}};
+static const kind rail_kind = {KIND(cs_rail_def), rail, "rail_def", {{0}}};
+static const kind vehicle_kind = {KIND(cs_vehicle_def), vehicle, "vehicle_def", {{0}}};
+static const kind scenario_kind = {KIND(cs_scenario_def), scenario, "scenario_def", {{0}}};
 static const kind cable_kind = {
-    sizeof(cs_cable_def), cable, "cable_def", {{offsetof(cs_cable_def, rope), &rope_kind, "rope"}}};
-static const kind post_kind = {sizeof(cs_post_def),
+    KIND(cs_cable_def), cable, "cable_def", {{offsetof(cs_cable_def, rope), &rope_kind, "rope"}}};
+static const kind post_kind = {KIND(cs_post_def),
                                post,
                                "post_def",
                                {{offsetof(cs_post_def, section), &section_kind, "section"},
                                 {offsetof(cs_post_def, footing), &footing_kind, "footing"}}};
-static const kind anchor_kind = {sizeof(cs_anchor_def),
+static const kind anchor_kind = {KIND(cs_anchor_def),
                                  anchor,
                                  "anchor_def",
                                  {{offsetof(cs_anchor_def, footing), &footing_kind, "footing"}}};
-static const kind barrier_kind = {sizeof(cs_barrier_def),
+static const kind barrier_kind = {KIND(cs_barrier_def),
                                   barrier,
                                   "barrier_def",
                                   {{offsetof(cs_barrier_def, start_anchor), &anchor_kind, "start anchor"},
                                    {offsetof(cs_barrier_def, end_anchor), &anchor_kind, "end anchor"}}};
 
 static int bad(cs_error *err, const char *what, const kind *k, size_t given) {
-    if (given < sizeof given)
+    if (given >= sizeof given && given <= k->size && given % k->align != 0)
+        cs_error_set(err, CS_ERR_INVALID,
+                     "%s: size %zu, not a multiple of its alignment %zu: not a %s's size", what, given,
+                     k->align, k->name);
+    else if (given < sizeof given)
         cs_error_set(err, CS_ERR_INVALID, "%s: size %zu: start it from cs_default_%s(), which sets its size",
                      what, given, k->name);
     else
@@ -93,14 +114,15 @@ static int bad(cs_error *err, const char *what, const kind *k, size_t given) {
 /* Read the caller's struct at given (room bytes of it at most) into full; *used gets its size. A version
  * adds fields only at a struct's end, so the caller's struct is this library's with each nested struct
  * ending where the caller's own size says and the owner's fields after it moved by what that one lacks
- * (every definition is 8-byte aligned, its size a multiple of 8): it is read piece by piece, the owner's
- * own fields between the nested ones, and the defaults kept for whatever the caller's version lacks. */
+ * (every definition has one alignment, its sizes multiples of it: above): it is read piece by piece, the
+ * owner's own fields between the nested ones, and the defaults kept for whatever the caller's version
+ * lacks. A nested struct that cannot be read after a smaller one is a layout this library does not know. */
 static int take(const kind *k, void *full, const void *given, size_t room, const char *what, cs_error *err,
                 size_t *used) {
     size_t n = 0;
     if (room >= sizeof n) memcpy(&n, given, sizeof n);
     k->fill(full);
-    if (n < sizeof n || n > k->size || n > room) return bad(err, what, k, n);
+    if (n < sizeof n || n > k->size || n > room || n % k->align != 0) return bad(err, what, k, n);
     const char *g = given;
     char *f = full;
     size_t at = 0, to = 0; /* the next byte to read in the caller's struct, and where it goes in full */
@@ -112,7 +134,14 @@ static int take(const kind *k, void *full, const void *given, size_t room, const
         char sub[128];
         snprintf(sub, sizeof sub, "%s's %s", what, m->name);
         size_t inner;
-        if (take(m->kind, f + m->offset, g + at + own, n - at - own, sub, err, &inner) != 0) return -1;
+        if (take(m->kind, f + m->offset, g + at + own, n - at - own, sub, err, &inner) != 0) {
+            if (at != to) /* read where a smaller nested struct before it put it */
+                cs_error_set(
+                    err, CS_ERR_INVALID,
+                    "%s: not readable after a smaller nested struct: a layout this library does not know",
+                    sub);
+            return -1;
+        }
         at += own + inner, to = m->offset + m->kind->size;
     }
     if (at < n) {
