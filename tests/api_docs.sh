@@ -25,5 +25,10 @@ for f in cs_loader_create cs_loader_set cs_loader_load cs_loader_build cs_state_
     cs_compare_create cs_compare_get cs_compare_write; do
     check "$f has its documentation" 'grep -q "</span>$f()</h2>" "$tmp"/html/*_8h.html'
 done
+# a struct that grows returned by value from the library would be written at the library's size into the
+# program's smaller one: its defaults are inline in the headers (def.h)
+headers=$(cd "$(dirname "$0")/../include/cablesim" && pwd)
+check "no library function returns a growing struct by value" \
+    '[ -s "$headers/def.h" ] && ! grep -nE "^CS_API cs_[a-z_]+(_def|_ranks_def) cs_" "$headers"/*.h'
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -64,8 +64,12 @@ typedef struct cs_sweep_ranks_def {
     void (*abort)(void *ctx, int status);
 } cs_sweep_ranks_def;
 
-/** A ranks def of one process (rank 0 of 1, no hooks) with its size set. */
-CS_API cs_sweep_ranks_def cs_default_sweep_ranks(void);
+/** A ranks def of one process (rank 0 of 1, no hooks) with its size set (inline: the program's size, def.h).
+ */
+static inline cs_sweep_ranks_def cs_default_sweep_ranks(void) {
+    cs_sweep_ranks_def d = {.size = sizeof d, .rank = 0, .ranks = 1};
+    return d;
+}
 
 /** A study to run. Start it from cs_default_sweep_def(), which sets its size; new fields go at its end. The
  * strings and arrays it points to are read during cs_sweep_study alone. */
@@ -111,8 +115,11 @@ typedef struct cs_sweep_def {
 /** A study run: its runs' inputs and results (opaque). */
 typedef struct cs_sweep cs_sweep;
 
-/** A def with nothing set but its size. */
-CS_API cs_sweep_def cs_default_sweep_def(void);
+/** A def with nothing set but its size (inline: the program's size, def.h). */
+static inline cs_sweep_def cs_default_sweep_def(void) {
+    cs_sweep_def d = {.size = sizeof d};
+    return d;
+}
 
 /** Run a study and write its outputs.
  * @param def the study (read to its size)

@@ -44,10 +44,6 @@ static void keep_folder(cs_compare *c, int i, const char *path, int holding) {
     c->folders[i].ino = known ? st.st_ino : 0;
 }
 
-cs_compare_def cs_default_compare_def(void) {
-    return (cs_compare_def){.size = sizeof(cs_compare_def)};
-}
-
 void cs_compare_free(cs_compare *c) {
     if (!c) return;
     for (int k = 0; k < c->count; k++)

@@ -10,14 +10,6 @@
 #include "status.h"
 #include "study/sweepstudy.h"
 
-cs_sweep_def cs_default_sweep_def(void) {
-    return (cs_sweep_def){.size = sizeof(cs_sweep_def)};
-}
-
-cs_sweep_ranks_def cs_default_sweep_ranks(void) {
-    return (cs_sweep_ranks_def){.size = sizeof(cs_sweep_ranks_def), .rank = 0, .ranks = 1};
-}
-
 /* The def's ranks into o->ranks (to their size): CS_OK, or CS_ERR_INVALID with err filled saying why they
  * cannot be taken. */
 static cs_status ranks_of(const cs_sweep_def *def, cs_sweep_options *o, cs_error *err) {
