@@ -146,7 +146,7 @@ bench: build
 figures: build
 	bash scripts/docs-figures.sh $(BUILD)
 
-# The Debian packages (debian/, debhelper) in $(BUILD)/deb: libcablesim0, libcablesim-dev, cablesim and
+# The Debian packages (debian/, debhelper) in $(BUILD)/deb: libcablesim1, libcablesim-dev, cablesim and
 # cablesim-data, for `apt install ./$(BUILD)/deb/*.deb`.
 package: deps
 	DEB_BUILD_OPTIONS="parallel=$(JOBS) $(DEB_BUILD_OPTIONS)" bash scripts/build-deb.sh $(BUILD)/deb

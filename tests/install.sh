@@ -34,10 +34,10 @@ for f in "$lib/libcablesim.so.$version" "$lib/libcablesim.a" "$lib/pkgconfig/cab
     "$prefix/share/cablesim/examples/api/post_spacing.c" "$prefix/share/cablesim/examples/api/CMakeLists.txt"; do
     check "installed: ${f#"$prefix"/}" '[ -s "$f" ]'
 done
-check "libcablesim.so -> libcablesim.so.0 -> libcablesim.so.$version" \
-    '[ "$(readlink "$lib/libcablesim.so")" = libcablesim.so.0 ] && [ "$(readlink "$lib/libcablesim.so.0")" = "libcablesim.so.$version" ]'
-check "its soname is libcablesim.so.0" 'readelf -d "$lib/libcablesim.so.$version" | grep -q "SONAME.*\[libcablesim.so.0\]"'
-for h in cablesim def sim loader output units; do
+check "libcablesim.so -> libcablesim.so.1 -> libcablesim.so.$version" \
+    '[ "$(readlink "$lib/libcablesim.so")" = libcablesim.so.1 ] && [ "$(readlink "$lib/libcablesim.so.1")" = "libcablesim.so.$version" ]'
+check "its soname is libcablesim.so.1" 'readelf -d "$lib/libcablesim.so.$version" | grep -q "SONAME.*\[libcablesim.so.1\]"'
+for h in cablesim def sim loader output units sweep compare rating export; do
     check "installed header cablesim/$h.h" '[ -s "$prefix/include/cablesim/$h.h" ]'
     printf '#include <cablesim/%s.h>\nint cs_test_unit;\n' "$h" >"$tmp/h-$h.c"
     check "cablesim/$h.h compiles on its own (C17, pedantic)" \

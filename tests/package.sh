@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # The Debian packages (debian/, built by scripts/build-deb.sh with DEB_BUILD_OPTIONS=nocheck): lintian
-# finds no error and no warning in them; libcablesim0 holds the library under its multiarch directory with
+# finds no error and no warning in them; libcablesim1 holds the library under its multiarch directory with
 # its soname link, libcablesim-dev its headers, static library, pkg-config and CMake files, cablesim the
 # command with its manual pages (compressed), the documents they name and bash completion, cablesim-data
 # the parts library and examples; the command's package depends on the libraries it is linked with and
@@ -26,7 +26,7 @@ version=$("$build/cablesim" --version | awk '{print $2}')
 arch=$(dpkg-architecture -qDEB_HOST_ARCH)
 multiarch=$(dpkg-architecture -qDEB_HOST_MULTIARCH)
 deb() { echo "$tmp/${1}_${version}_${2:-$arch}.deb"; }
-for p in libcablesim0 libcablesim-dev cablesim libcablesim0-dbgsym cablesim-dbgsym; do
+for p in libcablesim1 libcablesim-dev cablesim libcablesim1-dbgsym cablesim-dbgsym; do
     check "it made ${p}_${version}_$arch.deb" '[ -s "$(deb "$p")" ]'
 done
 check "it made cablesim-data_${version}_all.deb" '[ -s "$(deb cablesim-data all)" ]'
@@ -49,11 +49,11 @@ has() { # has PACKAGE [ARCH] PATTERN...: each pattern is a whole line of the pac
     done
 }
 lib=/usr/lib/$multiarch
-has libcablesim0 "$lib/libcablesim.so.$version" "$lib/libcablesim.so.0 -> libcablesim.so.$version"
+has libcablesim1 "$lib/libcablesim.so.$version" "$lib/libcablesim.so.1 -> libcablesim.so.$version"
 has libcablesim-dev /usr/include/cablesim/cablesim.h /usr/include/cablesim/export.h /usr/include/cablesim/def.h \
     /usr/include/cablesim/sim.h /usr/include/cablesim/loader.h /usr/include/cablesim/output.h \
     /usr/include/cablesim/rating.h /usr/include/cablesim/units.h \
-    "$lib/libcablesim.so -> libcablesim.so.0" "$lib/libcablesim.a" "$lib/pkgconfig/cablesim.pc" \
+    "$lib/libcablesim.so -> libcablesim.so.1" "$lib/libcablesim.a" "$lib/pkgconfig/cablesim.pc" \
     "$lib/cmake/cablesim/cablesimConfig.cmake" "$lib/cmake/cablesim/cablesimTargets.cmake"
 has cablesim /usr/bin/cablesim /usr/share/man/man1/cablesim.1.gz /usr/share/man/man1/cablesim-run.1.gz \
     /usr/share/man/man1/cablesim-sweep.1.gz /usr/share/bash-completion/completions/cablesim
@@ -70,9 +70,9 @@ for f in $named; do
 done
 check "no manual page names a docs/ path of the source tree" '! zcat "$tmp"/cablesim-root/usr/share/man/man1/*.1.gz | grep -q "[^/]docs/"'
 check "the library's package has a symbols file naming cs_version" \
-    'dpkg-deb --ctrl-tarfile "$(deb libcablesim0)" | tar -xOf - ./symbols | grep -q "^ cs_version@Base"'
+    'dpkg-deb --ctrl-tarfile "$(deb libcablesim1)" | tar -xOf - ./symbols | grep -q "^ cs_version@Base"'
 check "no maintainer script of the library's, ldconfig by debhelper's trigger" \
-    '! dpkg-deb --ctrl-tarfile "$(deb libcablesim0)" | tar -tf - | grep -qE "postinst|postrm" && dpkg-deb --ctrl-tarfile "$(deb libcablesim0)" | tar -xOf - ./triggers | grep -qx "activate-noawait ldconfig"'
+    '! dpkg-deb --ctrl-tarfile "$(deb libcablesim1)" | tar -tf - | grep -qE "postinst|postrm" && dpkg-deb --ctrl-tarfile "$(deb libcablesim1)" | tar -xOf - ./triggers | grep -qx "activate-noawait ldconfig"'
 dpkg-deb --fsys-tarfile "$(deb cablesim)" | tar -xOf - ./usr/bin/cablesim >"$tmp/cablesim"
 check "the command is stripped, its debug symbols in cablesim-dbgsym" \
     '! readelf -S "$tmp/cablesim" | grep -q "\.debug_info" && dpkg-deb -c "$(deb cablesim-dbgsym)" | grep -q "/usr/lib/debug/.build-id/.*\.debug$"'
