@@ -5,6 +5,15 @@
 # $1 is the build tree's Doxyfile. Skipped (77) without doxygen.
 set -u
 doxyfile=${1:?usage: bash tests/api_docs.sh BUILD/Doxyfile}
+# A struct that grows, returned by value from the library, would be written at the library's size into
+# the program's smaller one: the definitions' defaults are inline in the headers (def.h). Checked first,
+# doxygen or not.
+headers=$(cd "$(dirname "$0")/../include/cablesim" && pwd)
+[ -s "$headers/def.h" ] || { echo "FAIL: no headers at $headers"; exit 1; }
+if grep -nE "^CS_API (const )?cs_[a-z_]+(_def|_ranks_def) cs_" "$headers"/*.h; then
+    echo "FAIL: a library function returns a growing struct by value"
+    exit 1
+fi
 command -v doxygen >/dev/null || { echo "SKIP: doxygen is not installed (bash scripts/install-deps.sh)"; exit 77; }
 pass=0
 fail=0
@@ -25,10 +34,5 @@ for f in cs_loader_create cs_loader_set cs_loader_load cs_loader_build cs_state_
     cs_compare_create cs_compare_get cs_compare_write; do
     check "$f has its documentation" 'grep -q "</span>$f()</h2>" "$tmp"/html/*_8h.html'
 done
-# a struct that grows returned by value from the library would be written at the library's size into the
-# program's smaller one: its defaults are inline in the headers (def.h)
-headers=$(cd "$(dirname "$0")/../include/cablesim" && pwd)
-check "no library function returns a growing struct by value" \
-    '[ -s "$headers/def.h" ] && ! grep -nE "^CS_API cs_[a-z_]+(_def|_ranks_def) cs_" "$headers"/*.h'
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

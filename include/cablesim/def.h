@@ -350,7 +350,8 @@ CS_API void cs_scenario_impact_points(const cs_scenario_def *scenario, double fr
 
 /** The post-in-soil model's two calibrated values (docs/assumptions.md, docs/theory.md): fitted on the odd
  * bogie tests (NPGB-1, 3, 5, 7, 9), checked on the even ones. They may be set when building, for a
- * calibration study. */
+ * calibration study: the library built so gives them to the models it loads, a program's
+ * cs_default_footing_def() the values it was compiled with. */
 #ifndef CS_SOIL_DYNAMIC_FACTOR
 #define CS_SOIL_DYNAMIC_FACTOR 2.740
 #endif
@@ -362,7 +363,8 @@ CS_API void cs_scenario_impact_points(const cs_scenario_def *scenario, double fr
 
 /** A rope with the paper's law (Fig. 3) and no size: area, modulus and strength are design data. */
 static inline cs_rope_def cs_default_rope_def(void) {
-    cs_rope_def d = {.size = sizeof d};
+    cs_rope_def d = {0};
+    d.size = sizeof d;
     d.elastic_limit_ratio = 0.6;     /* paper: the modulus drops at 60% of nominal strength */
     d.secondary_modulus_ratio = 0.6; /* paper: "reduced by 40%" */
     d.breaking_strain = 0.03;        /* paper's 0.03 read as a strain (model-notes.md) */
@@ -370,7 +372,8 @@ static inline cs_rope_def cs_default_rope_def(void) {
 }
 /** A cable with the documented defaults (friction, clips) and cs_default_rope_def's rope. */
 static inline cs_cable_def cs_default_cable_def(void) {
-    cs_cable_def d = {.size = sizeof d};
+    cs_cable_def d = {0};
+    d.size = sizeof d;
     d.post_friction = 0.15;               /* steel rope in a steel hole, docs/assumptions.md */
     d.termination = CS_TERMINATION_CLIPS; /* cable clamps, as APS3's: docs/assumptions.md */
     d.ends[0].termination = d.ends[1].termination = CS_TERMINATION_AS_CABLE;
@@ -379,14 +382,16 @@ static inline cs_cable_def cs_default_cable_def(void) {
 }
 /** A section with steel's modulus and no size. */
 static inline cs_section_def cs_default_section_def(void) {
-    cs_section_def d = {.size = sizeof d};
+    cs_section_def d = {0};
+    d.size = sizeof d;
     d.modulus = 200e9;
     return d;
 }
 /** A footing with Eq. 21's coefficients, the 8000-psf cap on the soil pressure, the calibrated soil factors
  * and a 45-degree rotation limit (docs/assumptions.md); its size and soil pressure are design data. */
 static inline cs_footing_def cs_default_footing_def(void) {
-    cs_footing_def d = {.size = sizeof d};
+    cs_footing_def d = {0};
+    d.size = sizeof d;
     d.soil_pressure_cap = 8000.0 * CS_PSF; /* paper: S1 at most 8000 psf under dynamic load */
     d.coeff_depth = 2.37;                  /* paper's Eq. 21 */
     d.coeff_height = 2.64;
@@ -401,7 +406,8 @@ static inline cs_footing_def cs_default_footing_def(void) {
 /** A post threaded by the cables with the paper's 45-degree rotation limit, its section and footing the
  * defaults. */
 static inline cs_post_def cs_default_post_def(void) {
-    cs_post_def d = {.size = sizeof d};
+    cs_post_def d = {0};
+    d.size = sizeof d;
     d.section = cs_default_section_def();
     d.footing = cs_default_footing_def();
     d.attachment = CS_ATTACH_THROUGH;
@@ -410,19 +416,22 @@ static inline cs_post_def cs_default_post_def(void) {
 }
 /** An anchor with cs_default_footing_def's footing, of diameter 0: rigid until its footing is given. */
 static inline cs_anchor_def cs_default_anchor_def(void) {
-    cs_anchor_def d = {.size = sizeof d};
+    cs_anchor_def d = {0};
+    d.size = sizeof d;
     d.footing = cs_default_footing_def();
     return d;
 }
 /** A rail with steel's modulus and no size. */
 static inline cs_rail_def cs_default_rail_def(void) {
-    cs_rail_def d = {.size = sizeof d};
+    cs_rail_def d = {0};
+    d.size = sizeof d;
     d.modulus = 200e9;
     return d;
 }
 /** An empty barrier: no cables, posts or rails, default anchors. */
 static inline cs_barrier_def cs_default_barrier_def(void) {
-    cs_barrier_def d = {.size = sizeof d};
+    cs_barrier_def d = {0};
+    d.size = sizeof d;
     d.start_anchor = cs_default_anchor_def();
     d.end_anchor = cs_default_anchor_def();
     return d;
@@ -430,7 +439,8 @@ static inline cs_barrier_def cs_default_barrier_def(void) {
 /** A vehicle with the documented tyre, friction and crush-unloading defaults; its mass, sizes and crush
  * curve are design data. */
 static inline cs_vehicle_def cs_default_vehicle_def(void) {
-    cs_vehicle_def d = {.size = sizeof d};
+    cs_vehicle_def d = {0};
+    d.size = sizeof d;
     d.tyre_static_deflection = 0.05;
     d.tyre_damping_ratio = 0.3;
     d.rolling_resistance = 0.01;
@@ -446,7 +456,8 @@ CS_API void cs_vehicle_wheel_points(const cs_vehicle_def *vehicle, double wheel[
 /** A head-on attack from 0.05 m before the cables with a 0.5-ms step to 3 s, outputs every 1 ms, the
  * documented tolerances and standard gravity; its speed and impact point are design data. */
 static inline cs_scenario_def cs_default_scenario_def(void) {
-    cs_scenario_def d = {.size = sizeof d};
+    cs_scenario_def d = {0};
+    d.size = sizeof d;
     d.angle = CS_PI / 2.0;
     d.start_gap = 0.05;
     d.dt = 0.5e-3;

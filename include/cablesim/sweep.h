@@ -67,7 +67,9 @@ typedef struct cs_sweep_ranks_def {
 /** A ranks def of one process (rank 0 of 1, no hooks) with its size set (inline: the program's size, def.h).
  */
 static inline cs_sweep_ranks_def cs_default_sweep_ranks(void) {
-    cs_sweep_ranks_def d = {.size = sizeof d, .rank = 0, .ranks = 1};
+    cs_sweep_ranks_def d = {0};
+    d.size = sizeof d;
+    d.ranks = 1; /* rank 0 of 1 */
     return d;
 }
 
@@ -117,7 +119,8 @@ typedef struct cs_sweep cs_sweep;
 
 /** A def with nothing set but its size (inline: the program's size, def.h). */
 static inline cs_sweep_def cs_default_sweep_def(void) {
-    cs_sweep_def d = {.size = sizeof d};
+    cs_sweep_def d = {0};
+    d.size = sizeof d;
     return d;
 }
 
