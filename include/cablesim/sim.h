@@ -56,9 +56,10 @@ CS_API double cs_model_post_x(const cs_model *model, int post);
 CS_API double cs_model_cable_height(const cs_model *model, int cable);
 /** Eq. 21 lateral capacity of a post's footing for a load at height h above grade, N. */
 CS_API double cs_model_footing_capacity(const cs_model *model, int post, double h);
-/** The model's vehicle, as checked. */
+/** The model's vehicle, as checked: the library's struct, its size the library's. A program that copies it
+ * into its own struct copies sizeof its own and sets size to that before it hands the copy back. */
 CS_API const cs_vehicle_def *cs_model_vehicle(const cs_model *model);
-/** The model's scenario, as checked. */
+/** The model's scenario, as checked: the library's struct, read as cs_model_vehicle's. */
 CS_API const cs_scenario_def *cs_model_scenario(const cs_model *model);
 
 /** A state for a model, at t = 0, allocated once with all its scratch memory.
