@@ -259,6 +259,12 @@ const cs_validate_reading cs_validate_readings[CS_VAL_READINGS] = {
      0,
      {"barrier.anchors.start.footing.residual_friction_angle=40 deg",
       "barrier.anchors.end.footing.residual_friction_angle=40 deg", NULL}},
+    {"the dead-men's uplift at the beta method's shaft friction, 25.4 kPa/m, instead of the bogie-fitted "
+     "177.5",
+     "aps1 aps3 aps4",
+     0,
+     {"barrier.anchors.start.footing.skin_friction=25.4 kPa/m",
+      "barrier.anchors.end.footing.skin_friction=25.4 kPa/m", NULL}},
 };
 
 static void add_readings(cs_validate_suite *s, int k) {
