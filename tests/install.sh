@@ -43,6 +43,13 @@ for h in cablesim def sim loader output units sweep compare rating export; do
     check "cablesim/$h.h compiles on its own (C17, pedantic)" \
         '"$cc" -std=c17 -Wall -Wextra -Wpedantic -Werror -I"$prefix/include" -c "$tmp/h-$h.c" -o "$tmp/h-$h.o"'
 done
+# The headers declare extern "C" and hold inline defaults: a C++ program includes them as well.
+if command -v c++ >/dev/null; then
+    printf '#include <cablesim/cablesim.h>\nint cs_test_unit() { return (int)cs_default_post_def().size; }\n' \
+        >"$tmp/h.cc"
+    check "cablesim/cablesim.h compiles as C++ (C++11, pedantic)" \
+        'c++ -std=c++11 -Wall -Wextra -Wpedantic -Werror -I"$prefix/include" -c "$tmp/h.cc" -o "$tmp/h-cc.o"'
+fi
 
 # Exported: the functions the headers declare, and nothing else.
 nm -D --defined-only "$lib/libcablesim.so" | awk '$2 == "T" {print $3}' | sort >"$tmp/exported"

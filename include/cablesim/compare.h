@@ -37,7 +37,7 @@ typedef struct cs_compare cs_compare;
 
 /** A def with no runs and no measured history, its size set (inline: the program's size, def.h). */
 static inline cs_compare_def cs_default_compare_def(void) {
-    cs_compare_def d = {0};
+    cs_compare_def d = CS_ZERO_INIT;
     d.size = sizeof d;
     return d;
 }

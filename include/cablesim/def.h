@@ -348,6 +348,13 @@ CS_API void cs_scenario_impact_points(const cs_scenario_def *scenario, double fr
 /** The steps a run may take when scenario.max_steps is 0. */
 #define CS_MAX_STEPS_DEFAULT 1.0e7
 
+/** An empty initialiser that zeroes a whole struct in C and in C++ alike, without a warning in either. */
+#ifdef __cplusplus
+#define CS_ZERO_INIT {}
+#else
+#define CS_ZERO_INIT {0}
+#endif
+
 /** The post-in-soil model's two calibrated values (docs/assumptions.md, docs/theory.md): fitted on the odd
  * bogie tests (NPGB-1, 3, 5, 7, 9), checked on the even ones. They may be set when building, for a
  * calibration study: the library built so gives them to the models it loads, a program's
@@ -363,7 +370,7 @@ CS_API void cs_scenario_impact_points(const cs_scenario_def *scenario, double fr
 
 /** A rope with the paper's law (Fig. 3) and no size: area, modulus and strength are design data. */
 static inline cs_rope_def cs_default_rope_def(void) {
-    cs_rope_def d = {0};
+    cs_rope_def d = CS_ZERO_INIT;
     d.size = sizeof d;
     d.elastic_limit_ratio = 0.6;     /* paper: the modulus drops at 60% of nominal strength */
     d.secondary_modulus_ratio = 0.6; /* paper: "reduced by 40%" */
@@ -372,7 +379,7 @@ static inline cs_rope_def cs_default_rope_def(void) {
 }
 /** A cable with the documented defaults (friction, clips) and cs_default_rope_def's rope. */
 static inline cs_cable_def cs_default_cable_def(void) {
-    cs_cable_def d = {0};
+    cs_cable_def d = CS_ZERO_INIT;
     d.size = sizeof d;
     d.post_friction = 0.15;               /* steel rope in a steel hole, docs/assumptions.md */
     d.termination = CS_TERMINATION_CLIPS; /* cable clamps, as APS3's: docs/assumptions.md */
@@ -382,7 +389,7 @@ static inline cs_cable_def cs_default_cable_def(void) {
 }
 /** A section with steel's modulus and no size. */
 static inline cs_section_def cs_default_section_def(void) {
-    cs_section_def d = {0};
+    cs_section_def d = CS_ZERO_INIT;
     d.size = sizeof d;
     d.modulus = 200e9;
     return d;
@@ -390,7 +397,7 @@ static inline cs_section_def cs_default_section_def(void) {
 /** A footing with Eq. 21's coefficients, the 8000-psf cap on the soil pressure, the calibrated soil factors
  * and a 45-degree rotation limit (docs/assumptions.md); its size and soil pressure are design data. */
 static inline cs_footing_def cs_default_footing_def(void) {
-    cs_footing_def d = {0};
+    cs_footing_def d = CS_ZERO_INIT;
     d.size = sizeof d;
     d.soil_pressure_cap = 8000.0 * CS_PSF; /* paper: S1 at most 8000 psf under dynamic load */
     d.coeff_depth = 2.37;                  /* paper's Eq. 21 */
@@ -406,7 +413,7 @@ static inline cs_footing_def cs_default_footing_def(void) {
 /** A post threaded by the cables with the paper's 45-degree rotation limit, its section and footing the
  * defaults. */
 static inline cs_post_def cs_default_post_def(void) {
-    cs_post_def d = {0};
+    cs_post_def d = CS_ZERO_INIT;
     d.size = sizeof d;
     d.section = cs_default_section_def();
     d.footing = cs_default_footing_def();
@@ -416,21 +423,21 @@ static inline cs_post_def cs_default_post_def(void) {
 }
 /** An anchor with cs_default_footing_def's footing, of diameter 0: rigid until its footing is given. */
 static inline cs_anchor_def cs_default_anchor_def(void) {
-    cs_anchor_def d = {0};
+    cs_anchor_def d = CS_ZERO_INIT;
     d.size = sizeof d;
     d.footing = cs_default_footing_def();
     return d;
 }
 /** A rail with steel's modulus and no size. */
 static inline cs_rail_def cs_default_rail_def(void) {
-    cs_rail_def d = {0};
+    cs_rail_def d = CS_ZERO_INIT;
     d.size = sizeof d;
     d.modulus = 200e9;
     return d;
 }
 /** An empty barrier: no cables, posts or rails, default anchors. */
 static inline cs_barrier_def cs_default_barrier_def(void) {
-    cs_barrier_def d = {0};
+    cs_barrier_def d = CS_ZERO_INIT;
     d.size = sizeof d;
     d.start_anchor = cs_default_anchor_def();
     d.end_anchor = cs_default_anchor_def();
@@ -439,7 +446,7 @@ static inline cs_barrier_def cs_default_barrier_def(void) {
 /** A vehicle with the documented tyre, friction and crush-unloading defaults; its mass, sizes and crush
  * curve are design data. */
 static inline cs_vehicle_def cs_default_vehicle_def(void) {
-    cs_vehicle_def d = {0};
+    cs_vehicle_def d = CS_ZERO_INIT;
     d.size = sizeof d;
     d.tyre_static_deflection = 0.05;
     d.tyre_damping_ratio = 0.3;
@@ -456,7 +463,7 @@ CS_API void cs_vehicle_wheel_points(const cs_vehicle_def *vehicle, double wheel[
 /** A head-on attack from 0.05 m before the cables with a 0.5-ms step to 3 s, outputs every 1 ms, the
  * documented tolerances and standard gravity; its speed and impact point are design data. */
 static inline cs_scenario_def cs_default_scenario_def(void) {
-    cs_scenario_def d = {0};
+    cs_scenario_def d = CS_ZERO_INIT;
     d.size = sizeof d;
     d.angle = CS_PI / 2.0;
     d.start_gap = 0.05;

@@ -67,7 +67,7 @@ typedef struct cs_sweep_ranks_def {
 /** A ranks def of one process (rank 0 of 1, no hooks) with its size set (inline: the program's size, def.h).
  */
 static inline cs_sweep_ranks_def cs_default_sweep_ranks(void) {
-    cs_sweep_ranks_def d = {0};
+    cs_sweep_ranks_def d = CS_ZERO_INIT;
     d.size = sizeof d;
     d.ranks = 1; /* rank 0 of 1 */
     return d;
@@ -119,7 +119,7 @@ typedef struct cs_sweep cs_sweep;
 
 /** A def with nothing set but its size (inline: the program's size, def.h). */
 static inline cs_sweep_def cs_default_sweep_def(void) {
-    cs_sweep_def d = {0};
+    cs_sweep_def d = CS_ZERO_INIT;
     d.size = sizeof d;
     return d;
 }
