@@ -125,6 +125,7 @@ typedef struct cs_anchor_model {
     double mass;            /* kg: the footing's own, whose weight holds it down */
     double moving_mass;     /* kg: it and the soil's passive wedge moving with it (footing.c) */
     double uplift_capacity; /* N: the ropes' upward pull that lifts it out of the soil */
+    double drag;            /* kg/m: the soil its face sweeps per metre of travel, rho b D (anchor.c) */
 } cs_anchor_model;
 
 typedef struct cs_vehicle_model {
@@ -274,9 +275,10 @@ struct cs_state {
         double rate[2];     /* its rate at the last commit, m/s */
         double acc[2];      /* its acceleration at the last commit, m/s^2 */
         double force[2];  /* the soil's resistance at the last commit (a rigid anchor: the ropes' pull), N */
-        double net[2];    /* the ropes' pull less that resistance at the last commit, N */
+        double net[2];    /* the ropes' pull less that resistance and the drag at the last commit, N */
         double uplift;    /* the ropes' upward pull at the last commit, N */
         double peak_pull; /* the ropes' largest horizontal pull at any commit, N (an output, not hashed) */
+        double swept;     /* the drag's work so far, J (in the soil's: hashed there) */
     } anchors[2];
 
     double *rail_plastic;  /* [rail_count * post_count] each span's plastic change of length, m (rail.c) */

@@ -14,8 +14,11 @@
  * c(s), the slide l solves n - k l = c(s + l): on the softening branch (slope H = (P - P_r) / s_r < k)
  * l = (n - c(s)) / (k - H), past it l = (n - P_r) / k.
  * The footing and the soil's passive wedge moving with it have mass M (its own and the wedge's:
- * footing.c), integrated over the time h since the last commit by the
- * HHT-alpha method (Hilber, Hughes and Taylor 1977): with F = F_ropes - R(u) the net force,
+ * footing.c). Moving at v it also sweeps the soil in front of its face, rho b D per metre of travel, which
+ * must take on its speed: the momentum flux drags it back with c |v| v, c = rho b D (the inertial drag of
+ * a body driven through a granular soil; docs/theory.md), booked as soil. It is integrated over the time h
+ * since the last commit by the HHT-alpha method (Hilber, Hughes and Taylor 1977): with F = F_ropes - R(u)
+ * - c |v(u)| v(u) the net force,
  *   M a = (1 + alpha) F(u) - alpha F_c,
  *   u = u_c + h v_c + h^2 ((1/2 - beta) a_c + beta a),   v = v_c + h ((1 - gamma) a_c + gamma a),
  * beta = (1 - alpha)^2 / 4, gamma = 1/2 - alpha, so that its residual
@@ -61,6 +64,7 @@ void cs_anchor_derive(const cs_anchor_def *d, double gravity, cs_anchor_model *a
     am->residual = cs_footing_residual_ratio(f) * am->capacity;
     am->softening = CS_ANCHOR_SOFTENING_STRAIN * f->depth;
     am->stiffness = am->capacity / (CS_PASSIVE_MOBILISATION * f->depth);
+    am->drag = f->unit_weight / CS_G0 * b * f->depth;
     double perimeter_skin = len > 0.0 ? 2.0 * (b + len) / (CS_PI * b) : 1.0; /* a block's perimeter */
     /* a capacity given for the anchor, or for its footing, is design data and taken as it is */
     double given = d->pullout_capacity > 0.0 ? d->pullout_capacity : f->pullout_capacity;
@@ -153,6 +157,24 @@ static void resistance(const cs_anchor_model *am, const cs_anchor_state *as, con
     if (trial) *trial = n;
 }
 
+/* The soil's inertial drag at the rate v, -c |v| v, into d, and its slope on the rate into dv (2 x 2, row
+ * major) if given: the soil the face sweeps, c = rho b D per metre of travel, brought to the footing's
+ * speed (the momentum flux through the face). */
+static void drag(const cs_anchor_model *am, const double *v, double *d, double *dv) {
+    double speed = v2_norm(v[0], v[1]);
+    d[0] = -am->drag * speed * v[0], d[1] = -am->drag * speed * v[1];
+    if (!dv) return;
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2; j++)
+            dv[2 * i + j] = -am->drag * (speed * (i == j) + (speed > 0.0 ? v[i] * v[j] / speed : 0.0));
+}
+
+/* The rate the step from the last commit to u over h gives (the HHT-alpha update). */
+static void rate_to(const cs_anchor_state *as, const double *u, double h, double *v) {
+    for (int k = 0; k < 2; k++)
+        v[k] = cs_hht_rate(as->rate[k], as->acc[k], acceleration_to(as, k, u[k], h), h);
+}
+
 /* The ropes' pull on the anchor (every intact rope's end span), N; chords as in cs_node_force. */
 static void ropes_pull(const cs_model *model, const cs_state *s, int a, const double *chords, double *f) {
     v3_set(f, 0.0, 0.0, 0.0);
@@ -173,9 +195,14 @@ void cs_anchor_residual(const cs_model *model, const cs_state *s, int a, const d
     ropes_pull(model, s, a, chords, f);
     resistance(am, as, as->u, q, NULL, NULL);
     r[0] = f[0] - q[0], r[1] = f[1] - q[1];
-    if (s->h > 0.0 && s->h < HUGE_VAL)
+    if (s->h > 0.0 && s->h < HUGE_VAL) {
+        double v[2], d[2];
+        rate_to(as, as->u, s->h, v);
+        drag(am, v, d, NULL);
         for (int k = 0; k < 2; k++)
-            r[k] -= cs_hht_inertia(am->moving_mass, acceleration_to(as, k, as->u[k], s->h), as->net[k]);
+            r[k] +=
+                d[k] - cs_hht_inertia(am->moving_mass, acceleration_to(as, k, as->u[k], s->h), as->net[k]);
+    }
 }
 
 static void residual(const cs_model *model, const cs_state *s, const cs_rows *rows, const cs_slot *u,
@@ -186,8 +213,9 @@ static void residual(const cs_model *model, const cs_state *s, const cs_rows *ro
 }
 
 /* Rows a, a+1: the ropes' pull through their end spans (chained to the nodes), less the resistance's slope
- * (k I elastic; past the peak k ((|R| / n) (I - e e^T) + d|R|/dn e e^T), e the trial's direction) and the
- * inertial M / (beta h^2 (1 + alpha)) on the anchor's own columns. */
+ * (k I elastic; past the peak k ((|R| / n) (I - e e^T) + d|R|/dn e e^T), e the trial's direction), the
+ * inertial M / (beta h^2 (1 + alpha)) and the drag's c (|v| I + v v^T / |v|) gamma / (beta h) on the
+ * anchor's own columns. */
 static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row,
                      const cs_slot *u) {
     int a = u->a;
@@ -204,6 +232,13 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
             k[2 * i + j] = -am->stiffness * (t * ((i == j) - e[i] * e[j]) + slope * e[i] * e[j]);
     double inertia = cs_hht_inertia_slope(am->moving_mass, s->h);
     k[0] -= inertia, k[3] -= inertia;
+    if (s->h < HUGE_VAL) { /* the drag's slope on the rate, times dv/du = gamma / (beta h) */
+        double v[2], d[2], dv[4];
+        rate_to(as, as->u, s->h, v);
+        drag(am, v, d, dv);
+        for (int i = 0; i < 4; i++)
+            k[i] += dv[i] * CS_HHT_GAMMA / (CS_HHT_BETA * s->h);
+    }
     for (int i = 0; i < 2; i++)
         for (int j = 0; j < 2; j++)
             cs_rows_add(rows, row + i, row + j, k[2 * i + j] / unit);
@@ -248,25 +283,34 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
             continue;
         }
         resistance(am, as, as->u, q, NULL, NULL);
-        double net[2] = {f[0] - q[0], f[1] - q[1]};
+        double net[2] = {f[0] - q[0], f[1] - q[1]}, d_c[2], d[2];
         double kinetic_before = kinetic_energy(am, as);
+        drag(am, as->rate, d_c, NULL);
         if (s->h > 0.0 && s->h < HUGE_VAL && !cs_anchor_active(model, s, a)) {
             s->e_soil += kinetic_before; /* no rope pulls it: the soil stops it */
             as->rate[0] = as->rate[1] = as->acc[0] = as->acc[1] = 0.0;
+            d[0] = d[1] = 0.0;
         } else if (s->h > 0.0 && s->h < HUGE_VAL) {
-            double work = 0.0;
+            double work = 0.0, swept = 0.0;
             for (int k = 0; k < 2; k++) {
-                double du = as->u[k] - as->u_commit[k], acc = acceleration_to(as, k, as->u[k], s->h);
-                work += 0.5 * (as->net[k] + net[k]) * du;
+                double acc = acceleration_to(as, k, as->u[k], s->h);
                 as->rate[k] = cs_hht_rate(as->rate[k], as->acc[k], acc, s->h);
                 as->acc[k] = acc;
             }
+            drag(am, as->rate, d, NULL);
+            for (int k = 0; k < 2; k++) { /* the trapezoid rule's work of the net force, and the drag's */
+                double du = as->u[k] - as->u_commit[k];
+                work += 0.5 * (as->net[k] + net[k] + d[k]) * du;
+                swept -= 0.5 * (d_c[k] + d[k]) * du;
+            }
+            s->e_soil += swept, as->swept += swept; /* the swept soil's motion, dissipated in the soil */
             s->e_post_damping += work - (kinetic_energy(am, as) - kinetic_before);
         } else { /* h infinite: settled at rest; h = 0: it keeps the rate it had, as a post does */
             if (s->h > 0.0) as->rate[0] = as->rate[1] = 0.0;
-            as->acc[0] = net[0] / am->moving_mass, as->acc[1] = net[1] / am->moving_mass;
+            drag(am, as->rate, d, NULL);
+            as->acc[0] = (net[0] + d[0]) / am->moving_mass, as->acc[1] = (net[1] + d[1]) / am->moving_mass;
         }
-        as->net[0] = net[0], as->net[1] = net[1];
+        as->net[0] = net[0] + d[0], as->net[1] = net[1] + d[1];
         as->u_commit[0] = as->u[0], as->u_commit[1] = as->u[1];
         double tr[2] = {am->stiffness * (as->u[0] - as->plastic[0]),
                         am->stiffness * (as->u[1] - as->plastic[1])};
