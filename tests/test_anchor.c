@@ -324,7 +324,7 @@ static void a_ringing_dead_man_keeps_its_energy(void **state) {
 /* A dead-man ploughing at 5 m/s on its residual with its rope slack is stopped by the soil's residual and
  * by the drag of the soil its face sweeps: M dv/dt = -(P_r + c v^2), c = rho b D = 2162.5 x 0.9144 x
  * 1.524 = 3,013.5 kg/m for APS3's shaft. From v0 it stops after x = (M / 2c) ln(1 + c v0^2 / P_r) and t =
- * (M / sqrt(P_r c)) atan(v0 sqrt(c / P_r)): 0.4715 m in 0.200 s (the residual alone: M v0^2 / 2 P_r =
+ * (M / sqrt(P_r c)) atan(v0 sqrt(c / P_r)): 0.4716 m in 0.200 s (the residual alone: M v0^2 / 2 P_r =
  * 0.560 m). The soil takes the whole of its kinetic energy, the drag's share `M v0^2 / 2 - P_r x`. */
 static void a_ploughing_dead_man_sweeps_the_soil(void **state) {
     (void)state;
