@@ -237,6 +237,49 @@ static void undamped_bounce_converges_at_second_order(void **state) {
     CHECK_REL(coarse / fine, 4.0, 0.02); /* measured 4.0003 */
 }
 
+/* A tyre pressed down past its section height bears on its rim. The fixture's truck (tyres undamped, 0.4-m
+ * wheels, delta = 0.05 m) on rims of 0.3 m bottoms at a compression s = 0.1 m; sent down at v0 = 1.4 m/s
+ * from its ride height it heaves level (each tyre's rate is its share of the weight over delta), so with
+ * x = c - delta and the stop 50 times the tyres' rate, energy gives v0^2 delta / g = x^2 + 50 (x - (s -
+ * delta))^2: x = 0.0612 m, a largest compression of 0.1112 m, against 0.15 m on tyres alone. The ledger
+ * holds, the rims' spring counted with the tyres'. */
+static void a_tyre_bottoms_on_its_rim(void **state) {
+    (void)state;
+    fixture fx;
+    open_road(&fx);
+    fx.scenario.speed = 0.0;
+    fx.scenario.t_end = 10.0;
+    fx.vehicle.tyre_damping_ratio = 0.0;
+    fx.vehicle.wheel_radius = 0.4;
+    const double delta = fx.vehicle.tyre_static_deflection, g = fx.scenario.gravity, v0 = 1.4;
+    for (int rim = 0; rim < 2; rim++) {
+        fx.vehicle.rim_radius = rim ? 0.3 : 0.0;
+        cs_model *m = model_for(&fx);
+        cs_state *s = cs_state_create(m, NULL);
+        s->vel[2] = -v0;
+        cs_vehicle_start(m, s);
+        s->e_initial_kinetic = cs_vehicle_kinetic_energy(m, s);
+        cs_energy_update(m, s);
+        s->e_initial_total = cs_energy_total(&s->energy);
+        double deepest = 0.0, worst = 0.0;
+        cs_error err;
+        while (s->t < 0.3 - 1e-12) {
+            assert_int_equal(cs_step(m, s, &err), CS_OK);
+            deepest = fmax(deepest, delta + fx.vehicle.cg_height - s->pos[2]);
+            if (fabs(s->energy.balance_error) > fabs(worst)) worst = s->energy.balance_error;
+        }
+        double sp = 0.1 - delta, k = 50.0; /* x^2 + k (x - sp)^2 = v0^2 delta / g, the root past sp */
+        double e = v0 * v0 * delta / g, qa = 1.0 + k, qb = -2.0 * k * sp, qc = k * sp * sp - e;
+        double x = rim ? (-qb + sqrt(qb * qb - 4.0 * qa * qc)) / (2.0 * qa) : sqrt(e);
+        printf("%s: largest compression %.4f m (by hand %.4f m), largest balance error %.1e\n",
+               rim ? "on 0.3-m rims" : "no rims", deepest, delta + x, worst);
+        CHECK_REL(deepest, delta + x, 0.01);
+        CHECK_ABS(worst, 0.0, 1e-4);
+        cs_state_free(s);
+        cs_model_free(m);
+    }
+}
+
 /* A centred head-on impact on APS3's two cables between its dead-men (no posts, anchors at face
  * height): mirror symmetry allows no yaw, roll or sideways speed. The barrier solve converges every
  * step to 1e-8 here; what is left is round-off of a solve whose unknowns are not mirror-ordered and
@@ -326,6 +369,7 @@ int main(void) {
         cmocka_unit_test(dropped_vehicle_settles_on_its_tyres),
         cmocka_unit_test(a_tyre_held_off_by_its_damper_keeps_the_ledger),
         cmocka_unit_test(undamped_bounce_converges_at_second_order),
+        cmocka_unit_test(a_tyre_bottoms_on_its_rim),
         cmocka_unit_test(centred_head_on_impact_makes_no_yaw),
         cmocka_unit_test(a_changed_push_changes_the_accelerations_as_found_afresh),
         cmocka_unit_test(turn_between_poses_is_the_rotation_vector),

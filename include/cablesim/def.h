@@ -306,6 +306,9 @@ typedef struct cs_vehicle_def {
     double crush_force[CS_MAX_CRUSH_POINTS];       /**< N */
     double crush_unload_stiffness;                 /**< N/m; crush is permanent beyond elastic recovery */
     double wheel_radius; /**< unloaded tyre radius, m: a front tyre takes a rope above its axle */
+    double rim_radius;   /**< the wheel's rim, m (half the rim diameter of the tyre's size): a tyre pressed
+                            down by wheel_radius - rim_radius bottoms on its rim (0: none given, the tyre
+                            takes any compression) */
 } cs_vehicle_def;
 
 /** The attack and how to integrate it. */
@@ -350,9 +353,11 @@ CS_API void cs_scenario_impact_points(const cs_scenario_def *scenario, double fr
 
 /** An empty initialiser that zeroes a whole struct in C and in C++ alike, without a warning in either. */
 #ifdef __cplusplus
-#define CS_ZERO_INIT {}
+#define CS_ZERO_INIT                                                                                         \
+    {}
 #else
-#define CS_ZERO_INIT {0}
+#define CS_ZERO_INIT                                                                                         \
+    { 0 }
 #endif
 
 /** The post-in-soil model's two calibrated values (docs/assumptions.md, docs/theory.md): fitted on the odd

@@ -133,6 +133,9 @@ typedef struct cs_vehicle_model {
     double wheel[4][3]; /* body-frame tyre contact points at rest (FL, FR, RL, RR) */
     double tyre_k[4];   /* N/m */
     double tyre_c[4];   /* N s/m */
+    double rim_travel;  /* m: the compression at which a tyre bottoms on its rim (HUGE_VAL: no rim given) */
+    double rim_k[4];    /* N/m: the rim's stop past it (vehicle.c) */
+    double rim_c[4];    /* N s/m: its damper, at the tyre's damping ratio */
     double inv_inertia[3];
 } cs_vehicle_model;
 

@@ -2,12 +2,12 @@
 /* The vehicle: a rigid body in 6 degrees of freedom on four tyres, with a crushable front face.
  *
  * Forces: gravity; each tyre a vertical spring-damper at its contact point (stiffness from the static
- * axle load and a static deflection), with rolling resistance along the wheel's heading and, across
- * it, the tyre's cornering force: its cornering stiffness times its slip angle at small angles, the
- * friction's mu N when it slides (tyre_force); the barrier's resultant force and
- * moment from the quasi-static solve at the pose. Integration is velocity Verlet (kick-drift-kick,
- * second order in dt): v += a dt / 2 with the forces at the step's start, x += v dt, the barrier
- * solved at the new pose, v += a dt / 2 with the forces there; the same for Euler's equations in the
+ * axle load and a static deflection; a stiff stop once it is pressed down to its rim), with rolling
+ * resistance along the wheel's heading and, across it, the tyre's cornering force: its cornering stiffness
+ * times its slip angle at small angles, the friction's mu N when it slides (tyre_force); the barrier's
+ * resultant force and moment from the quasi-static solve at the pose. Integration is velocity Verlet
+ * (kick-drift-kick, second order in dt): v += a dt / 2 with the forces at the step's start, x += v dt, the
+ * barrier solved at the new pose, v += a dt / 2 with the forces there; the same for Euler's equations in the
  * body frame, I dw/dt = tau - w x I w, with the quaternion advanced by the exponential map. The tyre
  * forces depend on velocity too: they are taken with the half-step velocity.
  *
@@ -18,6 +18,11 @@
 #include "elements/elements.h"
 
 #include <math.h>
+
+/* A tyre pressed down past its section height (its radius less its rim's) bears on its rim: a stop this
+ * many times the tyre's rate, stiff enough that the compression stays within millimetres of the section
+ * and stiffer stops change nothing the runs report (docs/theory.md, "Tyres that bottom on their rims"). */
+#define CS_RIM_STOP 50.0
 
 void cs_vehicle_derive(const cs_vehicle_def *v, double g, cs_vehicle_model *vm) {
     vm->def = *v;
@@ -31,7 +36,10 @@ void cs_vehicle_derive(const cs_vehicle_def *v, double g, cs_vehicle_model *vm) 
         double m_share = g > 0.0 ? n / g : 0.25 * v->mass;
         vm->tyre_c[i] = 2.0 * v->tyre_damping_ratio * sqrt(vm->tyre_k[i] * m_share);
         if (g == 0.0) vm->tyre_k[i] = vm->tyre_c[i] = 0.0;
+        vm->rim_k[i] = CS_RIM_STOP * vm->tyre_k[i];
+        vm->rim_c[i] = sqrt(CS_RIM_STOP) * vm->tyre_c[i]; /* the same fraction of critical */
     }
+    vm->rim_travel = v->rim_radius > 0.0 ? v->wheel_radius - v->rim_radius : HUGE_VAL;
     for (int i = 0; i < 3; i++)
         vm->inv_inertia[i] = 1.0 / v->inertia[i];
 }
@@ -101,6 +109,16 @@ double cs_crush_permanent(const cs_vehicle_def *v, double dmax) {
     return p > 0.0 ? p : 0.0;
 }
 
+/* The spring force of wheel w's tyre at compression comp > 0 (its rim's stop past the section height),
+ * its energy into *energy and its damping coefficient into *damper (may be NULL). */
+static double tyre_spring(const cs_vehicle_model *vm, int w, double comp, double *energy, double *damper) {
+    double past = comp - vm->rim_travel, n = vm->tyre_k[w] * comp;
+    *energy = 0.5 * vm->tyre_k[w] * comp * comp;
+    if (damper) *damper = vm->tyre_c[w] + (past > 0.0 ? vm->rim_c[w] : 0.0);
+    if (past > 0.0) n += vm->rim_k[w] * past, *energy += 0.5 * vm->rim_k[w] * past * past;
+    return n;
+}
+
 /* Tyre contact force of wheel w (world) at its contact point; adds its dissipated power. */
 static void tyre_force(const cs_model *model, const cs_state *s, int w, double *f, double *point,
                        double *power) {
@@ -114,11 +132,11 @@ static void tyre_force(const cs_model *model, const cs_state *s, int w, double *
     quat_rotate(wv, s->quat, s->omega);
     v3_cross(v, wv, r);
     v3_add(v, v, s->vel);
-    double n = vm->tyre_k[w] * comp - vm->tyre_c[w] * v[2];
+    double stored, c, spring = tyre_spring(vm, w, comp, &stored, &c), n = spring - c * v[2];
     if (n <= 0.0) {
         /* the damper holds the extending tyre off the ground: the spring's energy, which the potential
-         * counts, goes to the damper at k comp v_z */
-        *power += vm->tyre_k[w] * comp * v[2];
+         * counts, goes to the damper at the spring's force times v_z */
+        *power += spring * v[2];
         return;
     }
     double fwd[3], body_x[3] = {1.0, 0.0, 0.0};
@@ -137,7 +155,7 @@ static void tyre_force(const cs_model *model, const cs_state *s, int w, double *
     double fs = -mu * n * vs / sqrt(vs * vs + vr * vr);
     v3_set(f, ff * fwd[0] + fs * side[0], ff * fwd[1] + fs * side[1], n);
     /* friction, and the damper's c v_z^2 whether the tyre is compressing or extending (n > 0 here) */
-    *power += -(ff * vf + fs * vs) + vm->tyre_c[w] * v[2] * v[2];
+    *power += -(ff * vf + fs * vs) + c * v[2] * v[2];
 }
 
 /* Linear and angular (body frame) accelerations at the pose and velocities as they stand, with the
@@ -221,8 +239,8 @@ double cs_vehicle_potential_energy(const cs_model *model, const cs_state *s) {
     for (int w = 0; w < 4; w++) {
         double p[3];
         body_to_world(s, vm->wheel[w], p);
-        double comp = vm->def.tyre_static_deflection - p[2];
-        if (comp > 0.0) e += 0.5 * vm->tyre_k[w] * comp * comp;
+        double comp = vm->def.tyre_static_deflection - p[2], stored;
+        if (comp > 0.0) tyre_spring(vm, w, comp, &stored, NULL), e += stored;
     }
     return e;
 }

@@ -257,6 +257,9 @@ static int check_vehicle(const cs_vehicle_def *v, cs_error *err) {
           v->wheel_radius - v->tyre_static_deflection < v->side_top))
         return fail(err, "vehicle: the wheel radius must exceed the tyre's static deflection, and the axle "
                          "(radius less deflection) lie below the side's top");
+    if (!non_negative(v->rim_radius) || !(v->rim_radius < v->wheel_radius - v->tyre_static_deflection))
+        return fail(err, "vehicle: the rim radius must be >= 0 (0: none) and below the axle's height at rest "
+                         "(wheel radius less the tyre's static deflection)");
     if (v->crush_point_count < 2 || v->crush_point_count > CS_MAX_CRUSH_POINTS)
         return fail(err, "vehicle: crush curve needs 2 to %d points", CS_MAX_CRUSH_POINTS);
     if (v->crush_deformation[0] != 0.0 || v->crush_force[0] != 0.0)

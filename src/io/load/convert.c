@@ -278,6 +278,16 @@ int cs_convert_vehicle(cs_loader *l, const cs_node *v, cs_vehicle_def *out) {
                     "wheel_radius - tyre_static_deflection < side_top)",
                     a, axle, b);
     }
+    if (out->rim_radius > 0.0 && axle > 0 && !(out->rim_radius < axle)) {
+        char r[80], a[80];
+        shown(l, v, "rim_radius", out->rim_radius, r, sizeof r);
+        shown(l, v, "wheel_radius", out->wheel_radius, a, sizeof a);
+        cs_err_node(l, blamed(at(v, "rim_radius"), cs_node_get(v, "wheel_radius")), 0,
+                    "rim_radius %s is not below the axle's height at rest, %.4g m (wheel_radius %s less "
+                    "tyre_static_deflection): the tyre would stand on its rim (expected rim_radius < "
+                    "wheel_radius - tyre_static_deflection)",
+                    r, axle, a);
+    }
     return l->error_count - before;
 }
 

@@ -88,6 +88,9 @@ static const cs_field vehicle_fields[] = {
       "tyre deflection under the static load; sets the tyre stiffness"),
     V("wheel_radius", CS_Q_LENGTH, CS_POS, wheel_radius,
       "unloaded tyre radius; a front tyre takes a rope that passes under the bumper above its axle"),
+    V("rim_radius", CS_Q_LENGTH, CS_NONNEG, rim_radius,
+      "the wheel's rim, half the rim diameter of the tyre's size: a tyre pressed down by wheel_radius - "
+      "rim_radius bottoms on its rim (0 or not given: no rim, the tyre takes any compression)"),
     V("tyre_damping_ratio", CS_Q_NUMBER, CS_NONNEG, tyre_damping_ratio, "tyre damping, fraction of critical"),
     V("rolling_resistance", CS_Q_NUMBER, CS_NONNEG, rolling_resistance, "rolling resistance coefficient"),
     V("tyre_friction", CS_Q_NUMBER, CS_NONNEG, tyre_friction, "tyre side (lateral) friction coefficient"),
