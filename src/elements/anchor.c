@@ -196,12 +196,13 @@ void cs_anchor_residual(const cs_model *model, const cs_state *s, int a, const d
     resistance(am, as, as->u, q, NULL, NULL);
     r[0] = f[0] - q[0], r[1] = f[1] - q[1];
     if (s->h > 0.0 && s->h < HUGE_VAL) {
-        double v[2], d[2];
-        rate_to(as, as->u, s->h, v);
+        double acc[2], v[2], d[2];
+        for (int k = 0; k < 2; k++)
+            acc[k] = acceleration_to(as, k, as->u[k], s->h),
+            v[k] = cs_hht_rate(as->rate[k], as->acc[k], acc[k], s->h);
         drag(am, v, d, NULL);
         for (int k = 0; k < 2; k++)
-            r[k] +=
-                d[k] - cs_hht_inertia(am->moving_mass, acceleration_to(as, k, as->u[k], s->h), as->net[k]);
+            r[k] += d[k] - cs_hht_inertia(am->moving_mass, acc[k], as->net[k]);
     }
 }
 
