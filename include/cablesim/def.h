@@ -352,13 +352,13 @@ CS_API void cs_scenario_impact_points(const cs_scenario_def *scenario, double fr
 #define CS_MAX_STEPS_DEFAULT 1.0e7
 
 /** An empty initialiser that zeroes a whole struct in C and in C++ alike, without a warning in either. */
+/* clang-format off */
 #ifdef __cplusplus
-#define CS_ZERO_INIT                                                                                         \
-    {}
+#define CS_ZERO_INIT {}
 #else
-#define CS_ZERO_INIT                                                                                         \
-    { 0 }
+#define CS_ZERO_INIT {0}
 #endif
+/* clang-format on */
 
 /** The post-in-soil model's two calibrated values (docs/assumptions.md, docs/theory.md): fitted on the odd
  * bogie tests (NPGB-1, 3, 5, 7, 9), checked on the even ones. They may be set when building, for a
