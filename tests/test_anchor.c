@@ -462,6 +462,82 @@ static void a_rigid_anchor_holds_the_ropes_pull(void **state) {
     }
 }
 
+/* A dead-man pulled up by a steep rope rises out of the soil instead of leaving it at once. APS3's 3 x
+ * 5-ft shaft, its skin at the beta method's 25.4 kPa/m (S = q pi B D^2 / 2 = 84.8 kN, W = 22.6 kN), on
+ * one weightless rope pretensioned to 180 kN and rising to a rigid anchor 20 m up and 2 m along: the
+ * uplift, 179 kN, passes W + S at the first step (anchor_withdrawal) and the shaft rises, its rope giving
+ * up its stretch, until the rope's pull no longer holds it up (at rest, F_z <= W + S x^2). With x = 1 - w
+ * / D in the ground the skin holds S x^2 and takes S D (1 - x^3) / 3, to round-off (the rope's pull
+ * along the ground stays inside the face's elastic range: the rest of the soil's work is the drag of
+ * the soil its face sweeps as it gives along the ground, as booked). The rope's
+ * elastic energy goes to lifting the weight, W w, to the skin, to the face's spring and to what backward
+ * Euler takes from the rise (m |v - v_c|^2 / 2 a step, summed here), within 2%: about 1% more is booked
+ * as damping, what the rise's stagger between the solves takes. Not out
+ * (x > 0): no anchor_pullout, the rope held. The ledger closes within 1e-3. */
+static void a_dead_man_rises_out_of_the_soil_by_its_skin(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    dead_men(&fx, 3.0, 5.0);
+    fx.barrier.start_anchor.footing.skin_friction = 25.4e3;
+    fx.barrier.end_anchor.footing.diameter = 0.0; /* rigid, 20 m up */
+    fx.barrier.end_anchor.x = fx.barrier.start_anchor.x + 2.0, fx.barrier.end_anchor.z = 20.0;
+    fx.barrier.cable_count = 1, fx.barrier.post_count = 0, fx.barrier.rail_count = 0;
+    fx.cables[0].rope.mass_per_length = 0.0;
+    fx.cables[0].pretension = 180e3;
+    fx.scenario.start_gap = 1000.0; /* the vehicle stays away */
+    cs_error err;
+    cs_model *m = cs_model_create(&fx.barrier, &fx.vehicle, &fx.scenario, &err);
+    if (!m) fail_msg("%s", err.message);
+    cs_state *s = cs_state_create(m, &err);
+    assert_non_null(s);
+    const cs_anchor_model *am = &m->anchors[0];
+    const cs_anchor_state *as = &s->anchors[0];
+    const double d = 5.0 * FT, skin = 25.4e3 * M_PI_2_VALUE * 2.0 * 3.0 * FT * d * d / 2.0,
+                 weight = am->mass * fx.scenario.gravity;
+    CHECK_REL(am->uplift_skin, skin, 1e-12);
+    CHECK_REL(am->uplift_weight, weight, 1e-12);
+    cs_energy_update(m, s);
+    double soil0 = s->e_soil, rope0 = s->energy.cable_elastic, spring0 = s->energy.anchor_elastic,
+           swept0 = as->swept, damped0 = s->energy.post_damping;
+    int steps = 0;
+    double euler = 0.0; /* backward Euler's take from the rise: m |v - v_c|^2 / 2 a step */
+    while (steps < 4 || as->lift_rate > 0.0) {
+        double v_c = as->lift_rate;
+        assert_int_equal(cs_step(m, s, &err), CS_OK);
+        euler += 0.5 * am->mass * (as->lift_rate - v_c) * (as->lift_rate - v_c);
+        assert_true(++steps < 4000);
+    }
+    double w = as->lift, x = 1.0 - w / d, f[3], work = skin * d * (1.0 - x * x * x) / 3.0;
+    cs_node_force(&s->cables[0], 0, NULL, f);
+    cs_energy_update(m, s);
+    double released = rope0 - s->energy.cable_elastic,
+           spring = s->energy.anchor_elastic - weight * w - spring0; /* the face's spring */
+    const cs_event *ev = NULL;
+    int out = 0;
+    for (int k = 0; k < s->event_count; k++) {
+        if (s->events[k].type == CS_EVENT_ANCHOR_WITHDRAWAL && !ev) ev = &s->events[k];
+        out += s->events[k].type == CS_EVENT_ANCHOR_PULLOUT;
+    }
+    assert_non_null(ev);
+    printf("withdrawal at t = %.4f s with %.1f kN (W + S = %.1f kN); risen %.4f m (x = %.4f), at rest after "
+           "%d steps with an uplift of %.1f kN against W + S x^2 = %.1f kN; the skin's work %.4f kJ (by hand "
+           "%.4f); the rope gave %.3f kJ: the weight %.3f, the skin, the face's spring %.3f, backward Euler "
+           "%.3f, the swept soil %.3f (damping booked %.3f); ledger %.2e\n",
+           ev->t, ev->value / 1e3, (weight + skin) / 1e3, w, x, steps, f[2] / 1e3,
+           (weight + skin * x * x) / 1e3, (s->e_soil - soil0 - (as->swept - swept0)) / 1e3, work / 1e3,
+           released / 1e3, weight * w / 1e3, spring / 1e3, euler / 1e3, (as->swept - swept0) / 1e3,
+           (s->energy.post_damping - damped0) / 1e3, s->energy.balance_error);
+    assert_true(ev->value >= weight + skin);
+    assert_true(w > 0.0 && x > 0.0 && !as->failed && out == 0);
+    assert_true(f[2] <= weight + skin * x * x);
+    CHECK_REL(s->e_soil - soil0 - (as->swept - swept0), work, 1e-9);
+    CHECK_REL(weight * w + work + spring + euler + (as->swept - swept0), released, 0.02);
+    CHECK_ABS(s->energy.balance_error, 0.0, 1e-3);
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
 int main(void) {
     const struct CMUnitTest tests[] = {cmocka_unit_test(anchor_from_its_footing),
                                        cmocka_unit_test(pretension_beyond_the_anchor_pulls_it_in),
@@ -470,6 +546,7 @@ int main(void) {
                                        cmocka_unit_test(a_ringing_dead_man_keeps_its_energy),
                                        cmocka_unit_test(a_ploughing_dead_man_sweeps_the_soil),
                                        cmocka_unit_test(a_dead_man_its_ropes_let_go_stops_in_the_soil),
-                                       cmocka_unit_test(a_rigid_anchor_holds_the_ropes_pull)};
+                                       cmocka_unit_test(a_rigid_anchor_holds_the_ropes_pull),
+                                       cmocka_unit_test(a_dead_man_rises_out_of_the_soil_by_its_skin)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -126,7 +126,8 @@ typedef enum cs_event_type {
     CS_EVENT_POST_SHEAR,          /**< a post shears at its base (value: shear, N) */
     CS_EVENT_POST_PULLOUT,        /**< a post is pulled out of the ground (value: pull, N) */
     CS_EVENT_FOOTING_ROTATION,    /**< a post's footing starts to turn in the soil (value: capacity, N m) */
-    CS_EVENT_ANCHOR_PULLOUT,      /**< an anchor pulls out, releasing its ropes (value: the pull, N) */
+    CS_EVENT_ANCHOR_PULLOUT,      /**< an anchor has risen all the way out of the ground, releasing its ropes
+                                       (value: the ropes' uplift then, N) */
     CS_EVENT_ANCHOR_YIELD,        /**< an anchor's footing starts to move through the soil (value: its
                                        capacity, N) */
     CS_EVENT_OVERRIDE,            /**< the vehicle rides over a cable, below its front face (value: t, s) */
@@ -148,6 +149,8 @@ typedef enum cs_event_type {
                                        the post lets the rope run straight on to the anchor (element: the
                                        post; value: how far that anchor has moved, m; cable_end: which end;
                                        cable: which) */
+    CS_EVENT_ANCHOR_WITHDRAWAL,   /**< the ropes' uplift on an anchor reaches its pullout capacity: it starts
+                                       to rise out of the soil (value: that uplift, N) */
     CS_EVENT_TYPE_COUNT           /**< the number of event types */
 } cs_event_type;
 
@@ -304,6 +307,7 @@ typedef struct cs_anchor_view {
     double uplift;          /**< the ropes' upward pull, N */
     double uplift_capacity; /**< the upward pull that pulls it out, N */
     double peak_pull;       /**< the ropes' largest horizontal pull on it so far, N */
+    double lift;            /**< how far the ropes' uplift has raised it out of the soil, m */
 } cs_anchor_view;
 
 /** Fill out with an anchor now, 0 the start (low x), 1 the end, to out's size.
@@ -312,7 +316,7 @@ typedef struct cs_anchor_view {
 CS_API cs_status cs_state_anchor(const cs_model *model, const cs_state *state, int anchor,
                                  cs_anchor_view *out, cs_error *err);
 /** "rigid", "holding" (in the soil's elastic range), "sliding" (it has yielded and ploughs through the soil),
- * "pulled_out" (lifted out of the soil by the ropes). */
+ * "rising" (the ropes' uplift is raising it out of the soil), "pulled_out" (risen all the way out). */
 CS_API const char *cs_anchor_status_name(const cs_anchor_view *anchor);
 
 /** Energy ledger, J. Every term is a state function or an accumulated dissipation computed on its own;

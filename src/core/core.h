@@ -124,8 +124,12 @@ typedef struct cs_anchor_model {
     double stiffness;       /* N/m, up to the peak */
     double mass;            /* kg: the footing's own, whose weight holds it down */
     double moving_mass;     /* kg: it and the soil's passive wedge moving with it (footing.c) */
-    double uplift_capacity; /* N: the ropes' upward pull that lifts it out of the soil */
-    double drag;            /* kg/m: the soil its face sweeps per metre of travel, rho b D (anchor.c) */
+    double uplift_capacity; /* N: the ropes' upward pull that starts to lift it out of the soil */
+    double uplift_weight;   /* N: its weight's part of that (0 where the capacity is given) */
+    double uplift_skin;     /* N: its skin friction's part, over the whole depth (or the capacity given) */
+    double depth;           /* m: its footing's depth, the lift that takes it out of the soil */
+    double coeff_depth, coeff_height; /* its footing's Eq. 21 coefficients (the capacity as it rises) */
+    double drag; /* kg/m: the soil its face sweeps per metre of travel, rho b D (anchor.c) */
 } cs_anchor_model;
 
 typedef struct cs_vehicle_model {
@@ -282,6 +286,9 @@ struct cs_state {
         double uplift;    /* the ropes' upward pull at the last commit, N */
         double peak_pull; /* the ropes' largest horizontal pull at any commit, N (an output, not hashed) */
         double swept;     /* the drag's work so far, J (in the soil's: hashed there) */
+        int lifting;      /* the ropes' uplift has reached its capacity: it is rising out of the soil */
+        double lift;      /* how far it has risen, m (committed: it moves at the commits) */
+        double lift_rate; /* its upward rate at the last commit, m/s */
     } anchors[2];
 
     double *rail_plastic;  /* [rail_count * post_count] each span's plastic change of length, m (rail.c) */

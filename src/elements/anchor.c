@@ -30,10 +30,15 @@
  * short stiff spans, rung by a failure). Backward Euler would take omega^2 h^2 / (1 + omega^2 h^2) of
  * every mode's energy each step (1.2% for APS3's). The posts swing by the same method (post.c;
  * docs/theory.md). The inertial M / (beta h^2 (1 + alpha)) keeps
- * the residual monotone where the resistance is flat or softens. A dead-man leaves the soil only when
- * the ropes' uplift reaches its pullout capacity (its weight plus its skin friction unless given): every
- * rope tied to it is then released. A rigid anchor (no footing) never moves. The anchor's rows of the
- * barrier solve are given here (rows.h). */
+ * the residual monotone where the resistance is flat or softens.
+ * Once the ropes' uplift reaches its pullout capacity Q = W + S (its weight plus the skin friction of
+ * its whole depth D, unless given) it rises out of the soil by w, as a post slides out of its footing
+ * (post_pullout.c): with x = 1 - w / D still in the ground, the skin holds S x^2 (friction growing
+ * linearly with depth) and the face Eq. 21's share of its peak, residual and swept soil (footing.c,
+ * cs_footing_remaining_share). It rises with its own mass m by backward Euler at each commit, its ropes'
+ * ends with it, m (w - w_c - h v_c) / h^2 = F_z(w) - W - S x^2, and does not sink back (the soil runs in
+ * under it). Out of the ground (w = D) it holds nothing, and every rope tied to it is released. A rigid
+ * anchor (no footing) never moves. The anchor's rows of the barrier solve are given here (rows.h). */
 #include "core/vec3.h"
 #include "elements/rows.h"
 
@@ -44,6 +49,18 @@
 /* The kinetic energy of its slide at the rate of the last commit. */
 static double kinetic_energy(const cs_anchor_model *am, const cs_anchor_state *as) {
     return 0.5 * am->moving_mass * (as->rate[0] * as->rate[0] + as->rate[1] * as->rate[1]);
+}
+
+/* The share of its depth still in the ground, x = 1 - w / D. */
+static double embedded(const cs_anchor_model *am, const cs_anchor_state *as) {
+    return as->lift > 0.0 ? fmax(0.0, 1.0 - as->lift / am->depth) : 1.0;
+}
+
+/* What its face holds as it rises, over what it held in place: Eq. 21 with x D in the ground. */
+static double face_share(const cs_anchor_model *am, const cs_anchor_state *as) {
+    if (!(as->lift > 0.0)) return 1.0;
+    double x = embedded(am, as);
+    return x > 0.0 ? cs_footing_remaining_share(am->coeff_depth, am->coeff_height, am->depth, am->z, x) : 0.0;
 }
 
 /* The acceleration the step from the last commit to u over h gives (the HHT-alpha update). */
@@ -65,11 +82,13 @@ void cs_anchor_derive(const cs_anchor_def *d, double gravity, cs_anchor_model *a
     am->softening = CS_ANCHOR_SOFTENING_STRAIN * f->depth;
     am->stiffness = am->capacity / (CS_PASSIVE_MOBILISATION * f->depth);
     am->drag = f->unit_weight / CS_G0 * b * f->depth;
+    am->depth = f->depth, am->coeff_depth = f->coeff_depth, am->coeff_height = f->coeff_height;
     double perimeter_skin = len > 0.0 ? 2.0 * (b + len) / (CS_PI * b) : 1.0; /* a block's perimeter */
     /* a capacity given for the anchor, or for its footing, is design data and taken as it is */
     double given = d->pullout_capacity > 0.0 ? d->pullout_capacity : f->pullout_capacity;
-    am->uplift_capacity =
-        given > 0.0 ? given : am->mass * gravity + perimeter_skin * cs_footing_pullout_capacity(f);
+    am->uplift_weight = given > 0.0 ? 0.0 : am->mass * gravity;
+    am->uplift_skin = given > 0.0 ? given : perimeter_skin * cs_footing_pullout_capacity(f);
+    am->uplift_capacity = am->uplift_weight + am->uplift_skin;
 }
 
 int cs_anchor_active(const cs_model *model, const cs_state *s, int a) {
@@ -89,7 +108,7 @@ void cs_anchor_place_nodes(const cs_model *model, cs_state *s, int a) {
     for (int c = 0; c < model->cable_count; c++) {
         cs_cable_state *cs = &s->cables[c];
         if (cs->status != CS_CABLE_INTACT) continue;
-        v3_set(cs->pos + 3 * end_node(cs, a), am->x + u[0], u[1], am->z);
+        v3_set(cs->pos + 3 * end_node(cs, a), am->x + u[0], u[1], am->z + s->anchors[a].lift);
     }
 }
 
@@ -121,28 +140,30 @@ double cs_anchor_cap(const cs_anchor_model *am, double s) {
                               : am->capacity - (am->capacity - am->residual) * s / am->softening;
 }
 
-/* The work of the cap over the slide from s0 to s1 (the soil's plastic work), J. */
-static double cap_work(const cs_anchor_model *am, double s0, double s1) {
+/* The work of the cap, times the face's share f, over the slide from s0 to s1 (the soil's plastic work), J.
+ */
+static double cap_work(const cs_anchor_model *am, double f, double s0, double s1) {
     double m = fmin(fmax(am->softening, s0), s1); /* where the softening branch ends inside [s0, s1] */
-    return 0.5 * (m - s0) * (cs_anchor_cap(am, s0) + cs_anchor_cap(am, m)) + (s1 - m) * am->residual;
+    return f * (0.5 * (m - s0) * (cs_anchor_cap(am, s0) + cs_anchor_cap(am, m)) + (s1 - m) * am->residual);
 }
 
-/* The return map at the trial force's magnitude n after the committed slide s: the resistance's magnitude,
- * the slide it takes into *slide and its slope d|R|/dn into *slope (1 elastic, -H/(k - H) softening, 0 on
- * the residual). */
-static double return_map(const cs_anchor_model *am, double s, double n, double *slide, double *slope) {
-    double c = cs_anchor_cap(am, s), k = am->stiffness;
+/* The return map at the trial force's magnitude n after the committed slide s, on the cap times the face's
+ * share f: the resistance's magnitude, the slide it takes into *slide and its slope d|R|/dn into *slope (1
+ * elastic, -H/(k - H) softening, 0 on the residual). */
+static double return_map(const cs_anchor_model *am, double f, double s, double n, double *slide,
+                         double *slope) {
+    double c = f * cs_anchor_cap(am, s), k = am->stiffness, residual = f * am->residual;
     *slide = 0.0, *slope = 1.0;
     if (n <= c) return n;
     if (s < am->softening) {
-        double hard = (am->capacity - am->residual) / am->softening, l = (n - c) / (k - hard);
+        double hard = f * (am->capacity - am->residual) / am->softening, l = (n - c) / (k - hard);
         if (s + l <= am->softening) {
             *slide = l, *slope = -hard / (k - hard);
             return c - hard * l;
         }
     }
-    *slide = (n - am->residual) / k, *slope = 0.0;
-    return am->residual;
+    *slide = (n - residual) / k, *slope = 0.0;
+    return residual;
 }
 
 /* The soil's resistance at displacement u (the trial k (u - u_p) returned radially onto the cap), its
@@ -151,22 +172,23 @@ static void resistance(const cs_anchor_model *am, const cs_anchor_state *as, con
                        double *slope, double *trial) {
     double tr[2] = {am->stiffness * (u[0] - as->plastic[0]), am->stiffness * (u[1] - as->plastic[1])};
     double n = v2_norm(tr[0], tr[1]), slide, dq;
-    double m = return_map(am, as->slide, n, &slide, &dq), f = n > m ? m / n : 1.0;
+    double m = return_map(am, face_share(am, as), as->slide, n, &slide, &dq), f = n > m ? m / n : 1.0;
     q[0] = tr[0] * f, q[1] = tr[1] * f;
     if (slope) *slope = dq;
     if (trial) *trial = n;
 }
 
 /* The soil's inertial drag at the rate v, -c |v| v, into d, and its slope on the rate into dv (2 x 2, row
- * major) if given: the soil the face sweeps, c = rho b D per metre of travel, brought to the footing's
- * speed (the momentum flux through the face). */
-static void drag(const cs_anchor_model *am, const double *v, double *d, double *dv) {
-    double speed = v2_norm(v[0], v[1]);
-    d[0] = -am->drag * speed * v[0], d[1] = -am->drag * speed * v[1];
+ * major) if given: the soil the face sweeps, c = rho b x D per metre of travel (x D the face still in the
+ * ground), brought to the footing's speed (the momentum flux through the face). */
+static void drag(const cs_anchor_model *am, const cs_anchor_state *as, const double *v, double *d,
+                 double *dv) {
+    double speed = v2_norm(v[0], v[1]), c = am->drag * embedded(am, as);
+    d[0] = -c * speed * v[0], d[1] = -c * speed * v[1];
     if (!dv) return;
     for (int i = 0; i < 2; i++)
         for (int j = 0; j < 2; j++)
-            dv[2 * i + j] = -am->drag * (speed * (i == j) + (speed > 0.0 ? v[i] * v[j] / speed : 0.0));
+            dv[2 * i + j] = -c * (speed * (i == j) + (speed > 0.0 ? v[i] * v[j] / speed : 0.0));
 }
 
 /* The rate the step from the last commit to u over h gives (the HHT-alpha update). */
@@ -200,7 +222,7 @@ void cs_anchor_residual(const cs_model *model, const cs_state *s, int a, const d
         for (int k = 0; k < 2; k++)
             acc[k] = acceleration_to(as, k, as->u[k], s->h),
             v[k] = cs_hht_rate(as->rate[k], as->acc[k], acc[k], s->h);
-        drag(am, v, d, NULL);
+        drag(am, as, v, d, NULL);
         for (int k = 0; k < 2; k++)
             r[k] += d[k] - cs_hht_inertia(am->moving_mass, acc[k], as->net[k]);
     }
@@ -236,7 +258,7 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
     if (s->h < HUGE_VAL) { /* the drag's slope on the rate, times dv/du = gamma / (beta h) */
         double v[2], d[2], dv[4];
         rate_to(as, as->u, s->h, v);
-        drag(am, v, d, dv);
+        drag(am, as, v, d, dv);
         for (int i = 0; i < 4; i++)
             k[i] += dv[i] * CS_HHT_GAMMA / (CS_HHT_BETA * s->h);
     }
@@ -258,6 +280,85 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
 }
 
 const cs_row_kind cs_anchor_rows = {2, residual, jacobian};
+
+/* The soil's elastic energy, held at the resistance R = k (u - u_p) on the cap: |R|^2 / 2k. */
+static double elastic_energy(const cs_anchor_model *am, const cs_anchor_state *as) {
+    double q[2];
+    resistance(am, as, as->u, q, NULL, NULL);
+    return 0.5 * (q[0] * q[0] + q[1] * q[1]) / am->stiffness;
+}
+
+/* The ropes' upward pull with the anchor risen by w (its ropes' ends with it, their tensions again). */
+static double uplift_at(const cs_model *model, cs_state *s, int a, double w) {
+    s->anchors[a].lift = w;
+    cs_anchor_place_nodes(model, s, a);
+    for (int c = 0; c < model->cable_count; c++)
+        if (s->cables[c].status == CS_CABLE_INTACT)
+            cs_cable_update_tensions(&model->cables[c], &s->cables[c], NULL);
+    double f[3];
+    ropes_pull(model, s, a, NULL, f);
+    return f[2];
+}
+
+/* g(w) below, from the rise w_c and rate v_c of the last commit; it leaves the anchor risen by w. */
+static double rise_balance(const cs_model *model, cs_state *s, int a, double w, double w_c, double v_c) {
+    const cs_anchor_model *am = &model->anchors[a];
+    double x = 1.0 - w / am->depth;
+    return uplift_at(model, s, a, w) - am->uplift_weight - am->uplift_skin * x * x -
+           am->mass * (w - w_c - s->h * v_c) / (s->h * s->h);
+}
+
+/* Rising out of the soil, at a commit over the time h since the last: once the ropes' uplift F_z reaches
+ * W + S, the rise w solves backward Euler's
+ *   g(w) = F_z(w) - W - S x^2 - m (w - w_c - h v_c) / h^2 = 0,   x = 1 - w / D,
+ * for w in [w_c, D] (it does not sink back: g(w_c) <= 0 holds it where it is, at rest). F_z falls as it
+ * rises (its ropes' end spans shorten) and m / h^2 outweighs the skin's softening 2 S x / D for any
+ * dead-man, so g falls across the interval and bisection finds its root. Booked: the skin's work S D
+ * (x_c^3 - x^3) / 3 as soil, the weight lifted W dw as the anchor's stored energy (it is held up by the
+ * soil run in under it), the rise's kinetic energy, and what backward Euler takes of the ropes' work,
+ * (F_z(w_c) + F_z(w)) dw / 2 by the trapezoid rule, as damping (as a post's slide, post_pullout.c). Its
+ * face then holds Eq. 21's share of x: the soil's elastic energy beyond the lower cap goes into the soil
+ * as the face slides on to it. */
+static void rise(const cs_model *model, cs_state *s, int a) {
+    const cs_anchor_model *am = &model->anchors[a];
+    cs_anchor_state *as = &s->anchors[a];
+    if (!as->lifting) {
+        if (as->uplift < am->uplift_capacity) return;
+        as->lifting = 1, as->lift_rate = 0.0;
+        cs_event_add(model, s, CS_EVENT_ANCHOR_WITHDRAWAL, CS_ELEMENT_ANCHOR, a, as->uplift);
+    }
+    const double h = s->h, m = am->mass, w0 = as->lift, v0 = as->lift_rate, d = am->depth;
+    const double f0 = as->uplift, e0 = elastic_energy(am, as), x0 = 1.0 - w0 / d;
+    double w = w0;
+    if (rise_balance(model, s, a, d, w0, v0) >= 0.0) {
+        w = d; /* out of the ground within the step */
+    } else if (rise_balance(model, s, a, w0, w0, v0) > 0.0) {
+        double lo = w0, hi = d;
+        for (int i = 0; i < 200 && hi - lo > 1e-12 * d; i++) {
+            double mid = 0.5 * (lo + hi);
+            if (rise_balance(model, s, a, mid, w0, v0) > 0.0)
+                lo = mid;
+            else
+                hi = mid;
+        }
+        w = 0.5 * (lo + hi);
+    }
+    double f1 = fmax(0.0, uplift_at(model, s, a, w)), dw = w - w0, v = dw / h, x = 1.0 - w / d;
+    double skin = am->uplift_skin * d * (x0 * x0 * x0 - x * x * x) / 3.0;
+    s->e_soil += skin;
+    s->e_post_damping += 0.5 * (f0 + f1) * dw - skin - am->uplift_weight * dw - 0.5 * m * (v * v - v0 * v0);
+    as->lift_rate = v, as->uplift = f1;
+    /* the face's cap falls with x: it slides on to it, and the elastic energy it no longer holds is the
+     * soil's */
+    double tr[2] = {am->stiffness * (as->u[0] - as->plastic[0]), am->stiffness * (as->u[1] - as->plastic[1])};
+    double n = v2_norm(tr[0], tr[1]), slide, slope;
+    return_map(am, face_share(am, as), as->slide, n, &slide, &slope);
+    if (slide > 0.0) {
+        as->plastic[0] += slide * tr[0] / n, as->plastic[1] += slide * tr[1] / n;
+        as->slide += slide;
+    }
+    s->e_soil += e0 - elastic_energy(am, as);
+}
 
 /* End of step: the ropes' pull and its peak so far (a rigid anchor holds that pull, its force), the
  * slide's rate, acceleration and what its integration dissipates, the plastic slide (radial return) and
@@ -286,7 +387,7 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
         resistance(am, as, as->u, q, NULL, NULL);
         double net[2] = {f[0] - q[0], f[1] - q[1]}, d_c[2], d[2];
         double kinetic_before = kinetic_energy(am, as);
-        drag(am, as->rate, d_c, NULL);
+        drag(am, as, as->rate, d_c, NULL);
         if (s->h > 0.0 && s->h < HUGE_VAL && !cs_anchor_active(model, s, a)) {
             s->e_soil += kinetic_before; /* no rope pulls it: the soil stops it */
             as->rate[0] = as->rate[1] = as->acc[0] = as->acc[1] = 0.0;
@@ -298,7 +399,7 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
                 as->rate[k] = cs_hht_rate(as->rate[k], as->acc[k], acc, s->h);
                 as->acc[k] = acc;
             }
-            drag(am, as->rate, d, NULL);
+            drag(am, as, as->rate, d, NULL);
             for (int k = 0; k < 2; k++) { /* the trapezoid rule's work of the net force, and the drag's */
                 double du = as->u[k] - as->u_commit[k];
                 work += 0.5 * (as->net[k] + net[k] + d[k]) * du;
@@ -308,7 +409,7 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
             s->e_post_damping += work - (kinetic_energy(am, as) - kinetic_before);
         } else { /* h infinite: settled at rest; h = 0: it keeps the rate it had, as a post does */
             if (s->h > 0.0) as->rate[0] = as->rate[1] = 0.0;
-            drag(am, as->rate, d, NULL);
+            drag(am, as, as->rate, d, NULL);
             as->acc[0] = (net[0] + d[0]) / am->moving_mass, as->acc[1] = (net[1] + d[1]) / am->moving_mass;
         }
         as->net[0] = net[0] + d[0], as->net[1] = net[1] + d[1];
@@ -316,10 +417,11 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
         double tr[2] = {am->stiffness * (as->u[0] - as->plastic[0]),
                         am->stiffness * (as->u[1] - as->plastic[1])};
         double n = v2_norm(tr[0], tr[1]), slide, slope;
-        return_map(am, as->slide, n, &slide, &slope);
+        double share = face_share(am, as);
+        return_map(am, share, as->slide, n, &slide, &slope);
         if (slide > 0.0) {
             double e[2] = {tr[0] / n, tr[1] / n};
-            s->e_soil += cap_work(am, as->slide, as->slide + slide);
+            s->e_soil += cap_work(am, share, as->slide, as->slide + slide);
             as->plastic[0] += slide * e[0], as->plastic[1] += slide * e[1];
             as->slide += slide;
             if (!as->yielded) {
@@ -327,19 +429,20 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
                 cs_event_add(model, s, CS_EVENT_ANCHOR_YIELD, CS_ELEMENT_ANCHOR, a, am->capacity);
             }
         }
-        resistance(am, as, as->u, as->force, NULL, NULL);
         as->uplift = f[2] > 0.0 ? f[2] : 0.0;
+        if (s->h > 0.0 && s->h < HUGE_VAL && cs_anchor_active(model, s, a)) rise(model, s, a);
+        resistance(am, as, as->u, as->force, NULL, NULL);
     }
 }
 
-/* An anchor lifted past its pullout capacity by the ropes' uplift leaves the soil; every rope tied to it
- * is released (contact.c). Returns 1 if one did. */
+/* An anchor risen all the way out of the ground holds nothing: it leaves the soil, and every rope tied to
+ * it is released (contact.c). Returns 1 if one did. */
 int cs_anchor_check(const cs_model *model, cs_state *s) {
     int failed = 0;
     for (int a = 0; a < 2; a++) {
         const cs_anchor_model *am = &model->anchors[a];
         cs_anchor_state *as = &s->anchors[a];
-        if (am->rigid || as->failed || as->uplift < am->uplift_capacity) continue;
+        if (am->rigid || as->failed || !(as->lift >= am->depth)) continue;
         as->failed = 1;
         cs_event_add(model, s, CS_EVENT_ANCHOR_PULLOUT, CS_ELEMENT_ANCHOR, a, as->uplift);
         failed = 1;
@@ -352,8 +455,6 @@ double cs_anchor_stored_energy(const cs_model *model, const cs_state *s, int a, 
     const cs_anchor_state *as = &s->anchors[a];
     *kinetic = 0.0;
     if (am->rigid || as->failed) return 0.0;
-    double q[2];
-    resistance(am, as, as->u, q, NULL, NULL);
-    *kinetic = kinetic_energy(am, as);
-    return 0.5 * (q[0] * q[0] + q[1] * q[1]) / am->stiffness;
+    *kinetic = kinetic_energy(am, as) + 0.5 * am->mass * as->lift_rate * as->lift_rate;
+    return elastic_energy(am, as) + am->uplift_weight * as->lift; /* the soil's spring, the weight lifted */
 }

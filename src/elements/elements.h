@@ -174,6 +174,9 @@ double cs_footing_residual_ratio(const cs_footing_def *f);
 double cs_footing_wedge_mass(const cs_footing_def *f);
 double cs_footing_dynamic_factor(const cs_footing_def *f);
 double cs_footing_pullout_capacity(const cs_footing_def *f);
+/* Eq. 21's capacity with only x of the depth in the ground, over the whole depth's (footing.c). */
+double cs_footing_remaining_share(double coeff_depth, double coeff_height, double depth, double height,
+                                  double x);
 /* Movement that mobilises the soil's passive resistance, over the member's depth (Clough and Duncan
  * 1991: about 1% of the height in dense sand, 2% medium, 4% loose): a dead-man's slide, a footing's
  * movement at grade as it turns about its pivot 2D/3 down. */

@@ -80,3 +80,12 @@ double cs_footing_pullout_capacity(const cs_footing_def *f) {
     if (f->pullout_capacity > 0.0) return f->pullout_capacity; /* design data (or HUGE_VAL: never) */
     return f->skin_friction * CS_PI * f->diameter * f->depth * f->depth / 2.0;
 }
+
+/* What Eq. 21 holds with only x of the depth d left in the ground, the body risen (1 - x) d with the load
+ * that much higher, against the whole depth: P(x) / P(1) = x^2 (c_d d + c_h h) / (c_d x d + c_h (h + (1 -
+ * x) d)), about x^2. A post sliding out of its footing and a dead-man rising out of the soil. */
+double cs_footing_remaining_share(double coeff_depth, double coeff_height, double depth, double height,
+                                  double x) {
+    return x * x * (coeff_depth * depth + coeff_height * height) /
+           (coeff_depth * x * depth + coeff_height * (height + (1.0 - x) * depth));
+}

@@ -53,9 +53,7 @@ double cs_post_moment_cap(const cs_post_model *pm, const cs_post_state *ps) {
     const cs_footing_def *f = &pm->footing;
     double d = pm->embedment, h = pm->load_height,
            whole = pm->soil_yields ? pm->moment_cap : pm->footing_moment;
-    double ratio = x * x * (f->coeff_depth * d + f->coeff_height * h) /
-                   (f->coeff_depth * x * d + f->coeff_height * (h + (1.0 - x) * d));
-    return fmin(pm->moment_cap, whole * ratio);
+    return fmin(pm->moment_cap, whole * cs_footing_remaining_share(f->coeff_depth, f->coeff_height, d, h, x));
 }
 
 /* The return map at the trial n = k (w - w_p): the resistance, the x it leaves and the slope dR/dn (1

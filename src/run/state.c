@@ -185,11 +185,16 @@ cs_status cs_state_anchor(const cs_model *model, const cs_state *s, int a, cs_an
         out->displacement[k] = as->u[k], out->force[k] = as->force[k];
     out->capacity = am->capacity, out->residual = am->residual, out->slide = as->slide;
     out->uplift = as->uplift, out->uplift_capacity = am->uplift_capacity, out->peak_pull = as->peak_pull;
+    out->lift = as->lift;
     return cs_sized_put(view, &full, sizeof full, "cs_anchor_view", err);
 }
 
 const char *cs_anchor_status_name(const cs_anchor_view *a) {
-    return a->rigid ? "rigid" : a->failed ? "pulled_out" : a->yielded ? "sliding" : "holding";
+    return a->rigid        ? "rigid"
+           : a->failed     ? "pulled_out"
+           : a->lift > 0.0 ? "rising"
+           : a->yielded    ? "sliding"
+                           : "holding";
 }
 
 cs_status cs_state_post(const cs_model *model, const cs_state *s, int p, cs_post_view *view, cs_error *err) {
