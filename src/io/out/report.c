@@ -227,6 +227,9 @@ void cs_write_summary_text_with(FILE *f, const cs_model_input *in, const cs_mode
             fprintf(f, "%s, moved %.3f m (the soil's peak %.1f kN, %.1f kip; residual %.1f kN, %.1f kip)",
                     cs_anchor_status_name(&av), hypot(av.displacement[0], av.displacement[1]),
                     av.capacity / 1e3, av.capacity / CS_KIP, av.residual / 1e3, av.residual / CS_KIP);
+        if (av.lift > 0.0)
+            fprintf(f, ", risen %.3f m (%.2f ft) out of the soil by the ropes' uplift", av.lift,
+                    av.lift / CS_FT);
         fprintf(f, "; the ropes pulled it with up to %.1f kN (%.1f kip)\n", av.peak_pull / 1e3,
                 av.peak_pull / CS_KIP);
     }
