@@ -92,8 +92,14 @@ static int on_the_yield_kink(const cs_model *m, const cs_state *s, int j) {
     } else if (u->kind == CS_U_ANCHOR) {
         const cs_anchor_model *am = &m->anchors[u->a];
         const cs_anchor_state *as = &s->anchors[u->a];
-        k = am->stiffness, cap = cs_anchor_cap(am, as->slide);
+        k = am->stiffness, cap = cs_anchor_face_share(am, as) * cs_anchor_cap(am, as->slide);
         e[0] = as->u[0] - as->plastic[0], e[1] = as->u[1] - as->plastic[1];
+    } else if (u->kind == CS_U_LIFT) { /* the skin at its hold, S x^2 */
+        const cs_anchor_model *am = &m->anchors[u->a];
+        const cs_anchor_state *as = &s->anchors[u->a];
+        double x = 1.0 - (as->lift_plastic + CS_SHAFT_MOBILISATION) / am->depth;
+        k = am->uplift_skin / CS_SHAFT_MOBILISATION, cap = am->uplift_skin * x * x;
+        e[0] = as->lift - as->lift_plastic, e[1] = 0.0;
     } else if (u->kind == CS_U_NODE) { /* or the plastic strain the rope carries through it changes there */
         const cs_cable_state *cs = &s->cables[u->a];
         int carries = u->b > 0 && u->b + 1 < cs->node_count && cs->ep[u->b - 1] != cs->ep[u->b] &&
@@ -159,6 +165,7 @@ static jac_check check_jacobian(const cs_model *m, cs_state *s) {
  * of a row (the axis' own turning, the rope stiffness' change with the spans' length) are below what this
  * resolves. */
 static int check_along_the_crash(fixture *fx, int *pulls);
+static int lifts; /* checks that found an anchor rising out of the soil (check_along_the_crash) */
 
 /* A fixture's model and its state as installed. */
 static cs_state *start(const fixture *fx, cs_model **m) {
@@ -187,6 +194,22 @@ static void jacobian_with_anchors_in_the_soil(void **state) {
     fixture_aps3(&fx);
     fx.barrier.start_anchor.footing = fx.barrier.end_anchor.footing = fixture_footing(3.0, 5.0, 0.0);
     check_along_the_crash(&fx, &pulls);
+}
+
+/* And with the dead-men rising out of the soil (anchor.c), their skin at the beta method's 25.4 kPa/m:
+ * the rise's row and column, and its column in the anchors' rows and their spans', from 22 ms on (at
+ * least 8 checks of the two). */
+static void jacobian_with_a_dead_man_rising(void **state) {
+    (void)state;
+    fixture fx;
+    int pulls = 0;
+    fixture_aps3(&fx);
+    fx.barrier.start_anchor.footing = fx.barrier.end_anchor.footing = fixture_footing(3.0, 5.0, 0.0);
+    fx.barrier.start_anchor.footing.skin_friction = fx.barrier.end_anchor.footing.skin_friction = 25.4e3;
+    lifts = 0;
+    check_along_the_crash(&fx, &pulls);
+    printf("%d checks of a rising dead-man\n", lifts);
+    assert_true(lifts >= 2 * 8);
 }
 
 /* And with clips that slip (termination.c) at 30 kip at all four rope ends, 18 in of turn-back: the end
@@ -288,8 +311,8 @@ static int check_along_the_crash(fixture *fx_in, int *pulls) {
         if (k % 40 == 0) {
             jac_check c = check_jacobian(m, s);
             const cs_rows *rows = &s->work->sys.rows;
-            for (int j = 0; j < rows->n; j++) /* a post sliding out of its footing */
-                *pulls += rows->slots[j].kind == CS_U_PULL;
+            for (int j = 0; j < rows->n; j++) /* a post sliding out of its footing, an anchor rising */
+                *pulls += rows->slots[j].kind == CS_U_PULL, lifts += rows->slots[j].kind == CS_U_LIFT;
             for (int j = 0; j < rows->n; j++) /* an end node's m: its fitting slips */
                 ends +=
                     rows->slots[j].kind == CS_U_NODE &&
@@ -449,6 +472,7 @@ int main(void) {
                                        cmocka_unit_test(jacobian_is_the_derivative_of_the_residual),
                                        cmocka_unit_test(jacobian_with_a_post_down),
                                        cmocka_unit_test(jacobian_with_anchors_in_the_soil),
+                                       cmocka_unit_test(jacobian_with_a_dead_man_rising),
                                        cmocka_unit_test(jacobian_with_fittings_that_slip),
                                        cmocka_unit_test(jacobian_with_rails),
                                        cmocka_unit_test(crush_column_from_an_anchors_second_row),

@@ -287,8 +287,11 @@ struct cs_state {
         double peak_pull; /* the ropes' largest horizontal pull at any commit, N (an output, not hashed) */
         double swept;     /* the drag's work so far, J (in the soil's: hashed there) */
         int lifting;      /* the ropes' uplift has reached its capacity: it is rising out of the soil */
-        double lift;      /* how far it has risen, m (committed: it moves at the commits) */
-        double lift_rate; /* its upward rate at the last commit, m/s */
+        double lift;      /* how far it has risen out of the soil, m (an unknown of the solve) */
+        double lift_commit;  /* at the last commit, m */
+        double lift_plastic; /* the skin's plastic slip, less the slip that mobilises it, m (committed) */
+        double lift_rate;    /* its upward rate at the last commit, m/s */
+        double lift_net;     /* the net upward force at the last commit, N */
     } anchors[2];
 
     double *rail_plastic;  /* [rail_count * post_count] each span's plastic change of length, m (rail.c) */

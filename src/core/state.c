@@ -202,8 +202,10 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
         hash_bytes(&h, as->rate, sizeof as->rate);
         hash_bytes(&h, as->acc, sizeof as->acc);
         hash_bytes(&h, as->net, sizeof as->net);
-        if (as->lifting)
-            hash_bytes(&h, &as->lift, sizeof as->lift), hash_bytes(&h, &as->lift_rate, sizeof as->lift_rate);
+        if (as->lifting) {
+            double lift[3] = {as->lift, as->lift_plastic, as->lift_rate};
+            hash_bytes(&h, lift, sizeof lift);
+        }
     }
     /* the ledger's numbers, not its size (the hash of a state is the same as before cs_energy had one) */
     hash_bytes(&h, &s->energy.vehicle_kinetic, sizeof s->energy - offsetof(cs_energy, vehicle_kinetic));

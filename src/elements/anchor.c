@@ -31,14 +31,13 @@
  * every mode's energy each step (1.2% for APS3's). The posts swing by the same method (post.c;
  * docs/theory.md). The inertial M / (beta h^2 (1 + alpha)) keeps
  * the residual monotone where the resistance is flat or softens.
- * Once the ropes' uplift reaches its pullout capacity Q = W + S (its weight plus the skin friction of
- * its whole depth D, unless given) it rises out of the soil by w, as a post slides out of its footing
- * (post_pullout.c): with x = 1 - w / D still in the ground, the skin holds S x^2 (friction growing
- * linearly with depth) and the face Eq. 21's share of its peak, residual and swept soil (footing.c,
- * cs_footing_remaining_share). It rises with its own mass m by backward Euler at each commit, its ropes'
- * ends with it, m (w - w_c - h v_c) / h^2 = F_z(w) - W - S x^2, and does not sink back (the soil runs in
- * under it). Out of the ground (w = D) it holds nothing, and every rope tied to it is released. A rigid
- * anchor (no footing) never moves. The anchor's rows of the barrier solve are given here (rows.h). */
+ * Once the ropes' uplift reaches its pullout capacity W + S (its weight plus the skin friction of its
+ * whole depth D, unless given) it rises out of the soil by w, an unknown of the solve, as a post slides
+ * out of its footing (post_pullout.c): with x of D still in the ground the skin holds S x^2 (friction
+ * growing linearly with depth) and the face Eq. 21's share of its peak, residual and swept soil
+ * (footing.c, cs_footing_remaining_share). Out of the ground (x = 0) it holds nothing, and every rope
+ * tied to it is released. A rigid anchor (no footing) never moves. The anchor's rows of the barrier
+ * solve are given here (rows.h). */
 #include "core/vec3.h"
 #include "elements/rows.h"
 
@@ -53,12 +52,13 @@ static double kinetic_energy(const cs_anchor_model *am, const cs_anchor_state *a
 
 /* The share of its depth still in the ground, x = 1 - w / D. */
 static double embedded(const cs_anchor_model *am, const cs_anchor_state *as) {
-    return as->lift > 0.0 ? fmax(0.0, 1.0 - as->lift / am->depth) : 1.0;
+    return as->lift_commit > 0.0 ? fmax(0.0, 1.0 - as->lift_commit / am->depth) : 1.0;
 }
 
-/* What its face holds as it rises, over what it held in place: Eq. 21 with x D in the ground. */
-static double face_share(const cs_anchor_model *am, const cs_anchor_state *as) {
-    if (!(as->lift > 0.0)) return 1.0;
+/* What its face holds as it rises, over what it held in place: Eq. 21 with x D in the ground, x at the
+ * last commit (the face's share moves at the commits, so the horizontal rows keep their slopes). */
+double cs_anchor_face_share(const cs_anchor_model *am, const cs_anchor_state *as) {
+    if (!(as->lift_commit > 0.0)) return 1.0;
     double x = embedded(am, as);
     return x > 0.0 ? cs_footing_remaining_share(am->coeff_depth, am->coeff_height, am->depth, am->z, x) : 0.0;
 }
@@ -172,7 +172,8 @@ static void resistance(const cs_anchor_model *am, const cs_anchor_state *as, con
                        double *slope, double *trial) {
     double tr[2] = {am->stiffness * (u[0] - as->plastic[0]), am->stiffness * (u[1] - as->plastic[1])};
     double n = v2_norm(tr[0], tr[1]), slide, dq;
-    double m = return_map(am, face_share(am, as), as->slide, n, &slide, &dq), f = n > m ? m / n : 1.0;
+    double m = return_map(am, cs_anchor_face_share(am, as), as->slide, n, &slide, &dq),
+           f = n > m ? m / n : 1.0;
     q[0] = tr[0] * f, q[1] = tr[1] * f;
     if (slope) *slope = dq;
     if (trial) *trial = n;
@@ -281,6 +282,71 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
 
 const cs_row_kind cs_anchor_rows = {2, residual, jacobian};
 
+/* ---- rising out of the soil ----
+ * Once the ropes' uplift F_z reaches W + S the rise w is an unknown of the barrier's solve (rows.h), a row
+ * like a post's pull (post_pullout.c): the skin holds R(w), k_s (w - w_p) up to S x^2 with x = 1 - (w_p +
+ * S / k_s) / D still in the ground (cs_shaft_return_map, k_s = S / CS_SHAFT_MOBILISATION), the weight W
+ * is a load, and the concrete's mass m rises by backward Euler over the time h since the last commit:
+ *   F_z(w) - W - R(w) - m (w - w_c - h v_c) / h^2 = 0.
+ * Its ropes' ends ride at the anchor's height plus w. The skin's plastic work S D (x_c^3 - x^3) / 3 is the
+ * soil's, its slip's elastic energy (R^2 - S^2) / 2 k_s and the weight lifted W w are stored with the
+ * anchor, and what backward Euler takes from the rise is damping. Out of the ground (x = 0) it holds
+ * nothing and leaves the soil (cs_anchor_check). */
+
+/* The skin's resistance at the rise as it stands, x into *x and dR/dw into *slope (either may be NULL). */
+static double skin(const cs_anchor_model *am, const cs_anchor_state *as, double *x, double *slope) {
+    double k = am->uplift_skin / CS_SHAFT_MOBILISATION, xs, dn;
+    double x0 = 1.0 - (as->lift_plastic + CS_SHAFT_MOBILISATION) / am->depth;
+    double r =
+        cs_shaft_return_map(am->uplift_skin, k * am->depth, x0, k * (as->lift - as->lift_plastic), &xs, &dn);
+    if (x) *x = xs;
+    if (slope) *slope = k * dn;
+    return r;
+}
+
+/* The rise's inertial force m (w - w_c - h v_c) / h^2 and its slope (0 at an instant or at rest). */
+static double lift_inertia(const cs_anchor_model *am, const cs_anchor_state *as, double h, double *slope) {
+    int moving = h > 0.0 && h < HUGE_VAL;
+    if (slope) *slope = moving ? am->mass / (h * h) : 0.0;
+    return moving ? am->mass * (as->lift - as->lift_commit - h * as->lift_rate) / (h * h) : 0.0;
+}
+
+double cs_anchor_lift_balance(const cs_model *model, const cs_state *s, int a, const double *chords) {
+    const cs_anchor_model *am = &model->anchors[a];
+    const cs_anchor_state *as = &s->anchors[a];
+    double f[3];
+    ropes_pull(model, s, a, chords, f);
+    return f[2] - am->uplift_weight - skin(am, as, NULL, NULL) - lift_inertia(am, as, s->h, NULL);
+}
+
+static void lift_residual(const cs_model *model, const cs_state *s, const cs_rows *rows, const cs_slot *u,
+                          double *r) {
+    r[0] = cs_anchor_lift_balance(model, s, u->a, rows->chords) / cs_rows_force_unit(model);
+}
+
+/* Row: the ropes' uplift through their end spans (chained to the nodes, the rise's own column among
+ * them), less the skin's slope and m / h^2 on its own column. */
+static void lift_jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row,
+                          const cs_slot *u) {
+    int a = u->a;
+    const cs_anchor_model *am = &model->anchors[a];
+    double unit = cs_rows_force_unit(model), ds, dm;
+    skin(am, &s->anchors[a], NULL, &ds);
+    lift_inertia(am, &s->anchors[a], s->h, &dm);
+    cs_rows_add(rows, row, row, -(ds + dm) / unit);
+    for (int c = 0; c < model->cable_count; c++) {
+        const cs_cable_state *cs = &s->cables[c];
+        if (cs->status != CS_CABLE_INTACT) continue;
+        int i = end_node(cs, a);
+        const cs_span_grad *sp = rows->spans + (size_t)c * (size_t)model->max_nodes + (a == 0 ? 0 : i - 1);
+        double rho[3] = {0.0, 0.0, 1.0 / unit}, gp[3][3] = {{0}}, gm[3] = {0};
+        cs_rows_end_force_gradient(sp, a == 0, rho, gp, gm);
+        cs_rows_add_node_gradient(model, s, rows, row, c, i, gp, gm);
+    }
+}
+
+const cs_row_kind cs_lift_rows = {1, lift_residual, lift_jacobian};
+
 /* The soil's elastic energy, held at the resistance R = k (u - u_p) on the cap: |R|^2 / 2k. */
 static double elastic_energy(const cs_anchor_model *am, const cs_anchor_state *as) {
     double q[2];
@@ -288,71 +354,46 @@ static double elastic_energy(const cs_anchor_model *am, const cs_anchor_state *a
     return 0.5 * (q[0] * q[0] + q[1] * q[1]) / am->stiffness;
 }
 
-/* The ropes' upward pull with the anchor risen by w (its ropes' ends with it, their tensions again). */
-static double uplift_at(const cs_model *model, cs_state *s, int a, double w) {
-    s->anchors[a].lift = w;
-    cs_anchor_place_nodes(model, s, a);
-    for (int c = 0; c < model->cable_count; c++)
-        if (s->cables[c].status == CS_CABLE_INTACT)
-            cs_cable_update_tensions(&model->cables[c], &s->cables[c], NULL);
-    double f[3];
-    ropes_pull(model, s, a, NULL, f);
-    return f[2];
-}
-
-/* g(w) below, from the rise w_c and rate v_c of the last commit; it leaves the anchor risen by w. */
-static double rise_balance(const cs_model *model, cs_state *s, int a, double w, double w_c, double v_c) {
-    const cs_anchor_model *am = &model->anchors[a];
-    double x = 1.0 - w / am->depth;
-    return uplift_at(model, s, a, w) - am->uplift_weight - am->uplift_skin * x * x -
-           am->mass * (w - w_c - s->h * v_c) / (s->h * s->h);
-}
-
-/* Rising out of the soil, at a commit over the time h since the last: once the ropes' uplift F_z reaches
- * W + S, the rise w solves backward Euler's
- *   g(w) = F_z(w) - W - S x^2 - m (w - w_c - h v_c) / h^2 = 0,   x = 1 - w / D,
- * for w in [w_c, D] (it does not sink back: g(w_c) <= 0 holds it where it is, at rest). F_z falls as it
- * rises (its ropes' end spans shorten) and m / h^2 outweighs the skin's softening 2 S x / D for any
- * dead-man, so g falls across the interval and bisection finds its root. Booked: the skin's work S D
- * (x_c^3 - x^3) / 3 as soil, the weight lifted W dw as the anchor's stored energy (it is held up by the
- * soil run in under it), the rise's kinetic energy, and what backward Euler takes of the ropes' work,
- * (F_z(w_c) + F_z(w)) dw / 2 by the trapezoid rule, as damping (as a post's slide, post_pullout.c). Its
- * face then holds Eq. 21's share of x: the soil's elastic energy beyond the lower cap goes into the soil
- * as the face slides on to it. */
-static void rise(const cs_model *model, cs_state *s, int a) {
+/* The ropes' uplift has reached W + S: from here the rise is an unknown of the solve, the skin at its
+ * hold where it stands (k_s (w - w_p) = S at w = 0). */
+static void start_lift(const cs_model *model, cs_state *s, int a) {
     const cs_anchor_model *am = &model->anchors[a];
     cs_anchor_state *as = &s->anchors[a];
-    if (!as->lifting) {
-        if (as->uplift < am->uplift_capacity) return;
-        as->lifting = 1, as->lift_rate = 0.0;
-        cs_event_add(model, s, CS_EVENT_ANCHOR_WITHDRAWAL, CS_ELEMENT_ANCHOR, a, as->uplift);
+    as->lifting = 1;
+    as->lift_plastic = as->lift - CS_SHAFT_MOBILISATION;
+    as->lift_commit = as->lift, as->lift_rate = 0.0, as->lift_net = as->uplift - am->uplift_capacity;
+    cs_event_add(model, s, CS_EVENT_ANCHOR_WITHDRAWAL, CS_ELEMENT_ANCHOR, a, as->uplift);
+}
+
+/* The rise at a commit: its rate and net force, what backward Euler took from it (the forces' energies
+ * change by about -(Q_c + Q) dw / 2, Q = m (v - v_c) / h the net force the solve balanced, the kinetic
+ * energy by Q dw - m |v - v_c|^2 / 2), the skin's plastic slip and its work. The face's share falls with
+ * the rise: the face slides on to its lower cap and the elastic energy it no longer holds is the soil's.
+ * fz: the ropes' uplift as solved. */
+static void commit_lift(const cs_model *model, cs_state *s, int a, double fz) {
+    const cs_anchor_model *am = &model->anchors[a];
+    cs_anchor_state *as = &s->anchors[a];
+    double dw = as->lift - as->lift_commit, x, r = skin(am, as, &x, NULL);
+    double x0 = 1.0 - (as->lift_plastic + CS_SHAFT_MOBILISATION) / am->depth;
+    if (s->h > 0.0 && s->h < HUGE_VAL) {
+        double v = dw / s->h, q = am->mass * (v - as->lift_rate) / s->h;
+        s->e_post_damping +=
+            0.5 * (as->lift_net + q) * dw - 0.5 * am->mass * (v * v - as->lift_rate * as->lift_rate);
+        as->lift_rate = v, as->lift_net = q;
+    } else {
+        if (s->h > 0.0) as->lift_rate = 0.0;
+        as->lift_net = fz - am->uplift_weight - r;
     }
-    const double h = s->h, m = am->mass, w0 = as->lift, v0 = as->lift_rate, d = am->depth;
-    const double f0 = as->uplift, e0 = elastic_energy(am, as), x0 = 1.0 - w0 / d;
-    double w = w0;
-    if (rise_balance(model, s, a, d, w0, v0) >= 0.0) {
-        w = d; /* out of the ground within the step */
-    } else if (rise_balance(model, s, a, w0, w0, v0) > 0.0) {
-        double lo = w0, hi = d;
-        for (int i = 0; i < 200 && hi - lo > 1e-12 * d; i++) {
-            double mid = 0.5 * (lo + hi);
-            if (rise_balance(model, s, a, mid, w0, v0) > 0.0)
-                lo = mid;
-            else
-                hi = mid;
-        }
-        w = 0.5 * (lo + hi);
+    if (x < x0) { /* the skin slipped on: its work, and the slip from where it holds */
+        s->e_soil += am->uplift_skin * am->depth * (x0 * x0 * x0 - x * x * x) / 3.0;
+        as->lift_plastic = x > 0.0 ? as->lift - r * CS_SHAFT_MOBILISATION / am->uplift_skin
+                                   : am->depth - CS_SHAFT_MOBILISATION;
     }
-    double f1 = fmax(0.0, uplift_at(model, s, a, w)), dw = w - w0, v = dw / h, x = 1.0 - w / d;
-    double skin = am->uplift_skin * d * (x0 * x0 * x0 - x * x * x) / 3.0;
-    s->e_soil += skin;
-    s->e_post_damping += 0.5 * (f0 + f1) * dw - skin - am->uplift_weight * dw - 0.5 * m * (v * v - v0 * v0);
-    as->lift_rate = v, as->uplift = f1;
-    /* the face's cap falls with x: it slides on to it, and the elastic energy it no longer holds is the
-     * soil's */
+    double e0 = elastic_energy(am, as);
+    as->lift_commit = as->lift;
     double tr[2] = {am->stiffness * (as->u[0] - as->plastic[0]), am->stiffness * (as->u[1] - as->plastic[1])};
     double n = v2_norm(tr[0], tr[1]), slide, slope;
-    return_map(am, face_share(am, as), as->slide, n, &slide, &slope);
+    return_map(am, cs_anchor_face_share(am, as), as->slide, n, &slide, &slope);
     if (slide > 0.0) {
         as->plastic[0] += slide * tr[0] / n, as->plastic[1] += slide * tr[1] / n;
         as->slide += slide;
@@ -417,7 +458,7 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
         double tr[2] = {am->stiffness * (as->u[0] - as->plastic[0]),
                         am->stiffness * (as->u[1] - as->plastic[1])};
         double n = v2_norm(tr[0], tr[1]), slide, slope;
-        double share = face_share(am, as);
+        double share = cs_anchor_face_share(am, as);
         return_map(am, share, as->slide, n, &slide, &slope);
         if (slide > 0.0) {
             double e[2] = {tr[0] / n, tr[1] / n};
@@ -430,7 +471,10 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
             }
         }
         as->uplift = f[2] > 0.0 ? f[2] : 0.0;
-        if (s->h > 0.0 && s->h < HUGE_VAL && cs_anchor_active(model, s, a)) rise(model, s, a);
+        if (as->lifting)
+            commit_lift(model, s, a, f[2]);
+        else if (s->h > 0.0 && s->h < HUGE_VAL && as->uplift >= am->uplift_capacity)
+            start_lift(model, s, a);
         resistance(am, as, as->u, as->force, NULL, NULL);
     }
 }
@@ -442,7 +486,9 @@ int cs_anchor_check(const cs_model *model, cs_state *s) {
     for (int a = 0; a < 2; a++) {
         const cs_anchor_model *am = &model->anchors[a];
         cs_anchor_state *as = &s->anchors[a];
-        if (am->rigid || as->failed || !(as->lift >= am->depth)) continue;
+        if (am->rigid || as->failed || !as->lifting ||
+            1.0 - (as->lift_plastic + CS_SHAFT_MOBILISATION) / am->depth > 0.0)
+            continue;
         as->failed = 1;
         cs_event_add(model, s, CS_EVENT_ANCHOR_PULLOUT, CS_ELEMENT_ANCHOR, a, as->uplift);
         failed = 1;
@@ -456,5 +502,11 @@ double cs_anchor_stored_energy(const cs_model *model, const cs_state *s, int a, 
     *kinetic = 0.0;
     if (am->rigid || as->failed) return 0.0;
     *kinetic = kinetic_energy(am, as) + 0.5 * am->mass * as->lift_rate * as->lift_rate;
-    return elastic_energy(am, as) + am->uplift_weight * as->lift; /* the soil's spring, the weight lifted */
+    double e =
+        elastic_energy(am, as) + am->uplift_weight * as->lift; /* the soil's spring, the weight lifted */
+    if (as->lifting) { /* the skin's slip, counted from where it started (at S) */
+        double r = skin(am, as, NULL, NULL);
+        e += 0.5 * (r * r - am->uplift_skin * am->uplift_skin) * CS_SHAFT_MOBILISATION / am->uplift_skin;
+    }
+    return e;
 }

@@ -174,6 +174,8 @@ double cs_footing_residual_ratio(const cs_footing_def *f);
 double cs_footing_wedge_mass(const cs_footing_def *f);
 double cs_footing_dynamic_factor(const cs_footing_def *f);
 double cs_footing_pullout_capacity(const cs_footing_def *f);
+/* A shaft's friction as it slides out of the soil, with x0 of its depth in the ground (footing.c). */
+double cs_shaft_return_map(double q0, double kd, double x0, double n, double *x, double *slope);
 /* Eq. 21's capacity with only x of the depth in the ground, over the whole depth's (footing.c). */
 double cs_footing_remaining_share(double coeff_depth, double coeff_height, double depth, double height,
                                   double x);
@@ -323,6 +325,11 @@ void cs_anchor_settle(const cs_model *model, cs_state *s);
 void cs_anchor_residual(const cs_model *model, const cs_state *s, int a, const double *chords, double *r);
 void cs_anchor_commit(const cs_model *model, cs_state *s);
 int cs_anchor_check(const cs_model *model, cs_state *s);
+/* What an anchor's face holds as it rises, over what it held in place (anchor.c). */
+double cs_anchor_face_share(const cs_anchor_model *am, const cs_anchor_state *as);
+/* The balance of anchor a's rise as it stands: the ropes' uplift (their spans' chords from the solve's
+ * rows if given) less its weight, its skin's hold and the rise's inertial force, N (anchor.c). */
+double cs_anchor_lift_balance(const cs_model *model, const cs_state *s, int a, const double *chords);
 /* The cap on an anchor's resistance after a plastic slide s (m): its peak falling to its residual, N. */
 double cs_anchor_cap(const cs_anchor_model *am, double s);
 /* The elastic energy of anchor a's soil spring; its kinetic energy into *kinetic. */

@@ -89,3 +89,24 @@ double cs_footing_remaining_share(double coeff_depth, double coeff_height, doubl
     return x * x * (coeff_depth * depth + coeff_height * height) /
            (coeff_depth * x * depth + coeff_height * (height + (1.0 - x) * depth));
 }
+
+/* A shaft sliding out of the soil, its friction growing linearly with depth: with x0 of its depth D in the
+ * ground it holds Q0 x0^2, elastic at k below (the slip that mobilises it: CS_SHAFT_MOBILISATION). At the
+ * trial n = k (w - w_p) above that it slides by l, n - k l = Q0 x^2 with x = x0 - l / D:
+ *   Q0 x^2 - k D x + (k D x0 - n) = 0,   x = 2 (k D x0 - n) / (k D + sqrt(k^2 D^2 - 4 Q0 (k D x0 - n))),
+ * the root at x0 when n = Q0 x0^2 (written so that it loses no digits: k D / Q0 is about 360 for the APS
+ * posts). Returns the resistance, x into *x and dR/dn into *slope (1 elastic, 2 Q0 x / (2 Q0 x - k D)
+ * sliding, 0 out of the ground, x <= 0). A post sliding out of its footing, a dead-man rising out of the
+ * soil. */
+double cs_shaft_return_map(double q0, double kd, double x0, double n, double *x, double *slope) {
+    *x = x0, *slope = 1.0;
+    if (x0 > 0.0 && n <= q0 * x0 * x0) return n;
+    double cst = kd * x0 - n, disc = kd * kd - 4.0 * q0 * cst;
+    if (x0 <= 0.0 || cst <= 0.0 || disc < 0.0) { /* out of the ground */
+        *x = 0.0, *slope = 0.0;
+        return 0.0;
+    }
+    *x = 2.0 * cst / (kd + sqrt(disc));
+    *slope = 2.0 * q0 * *x / (2.0 * q0 * *x - kd);
+    return q0 * *x * *x;
+}

@@ -60,18 +60,8 @@ double cs_post_moment_cap(const cs_post_model *pm, const cs_post_state *ps) {
  * elastic, 2 Q0 x / (2 Q0 x - k D) sliding, 0 out). */
 static double return_map(const cs_post_model *pm, const cs_post_state *ps, double n, double *x,
                          double *slope) {
-    double q0 = pm->pullout_cap, kd = pm->pull_stiffness * pm->embedment,
-           x0 = remaining(pm, ps->pull_plastic);
-    *x = x0, *slope = 1.0;
-    if (x0 > 0.0 && n <= q0 * x0 * x0) return n;
-    double cst = kd * x0 - n, disc = kd * kd - 4.0 * q0 * cst;
-    if (x0 <= 0.0 || cst <= 0.0 || disc < 0.0) { /* out of the ground */
-        *x = 0.0, *slope = 0.0;
-        return 0.0;
-    }
-    *x = 2.0 * cst / (kd + sqrt(disc));
-    *slope = 2.0 * q0 * *x / (2.0 * q0 * *x - kd);
-    return q0 * *x * *x;
+    return cs_shaft_return_map(pm->pullout_cap, pm->pull_stiffness * pm->embedment,
+                               remaining(pm, ps->pull_plastic), n, x, slope);
 }
 
 static double trial_of(const cs_post_model *pm, const cs_post_state *ps) {

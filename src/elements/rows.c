@@ -31,10 +31,13 @@ static int position_columns(const cs_model *model, const cs_state *s, const cs_r
         return 3;
     }
     if (id == CS_NODE_START || id == CS_NODE_END) {
-        int a = rows->anchor_index[id == CS_NODE_START ? 0 : 1];
+        int a = rows->anchor_index[id == CS_NODE_START ? 0 : 1],
+            l = rows->lift_index[id == CS_NODE_START ? 0 : 1];
         if (a < 0) return 0;
         out[0] = (dep){a, {1.0, 0.0, 0.0}}, out[1] = (dep){a + 1, {0.0, 1.0, 0.0}};
-        return 2;
+        if (l < 0) return 2;
+        out[2] = (dep){l, {0.0, 0.0, 1.0}};
+        return 3;
     }
     if (cs_node_is_corner(id)) {
         int h = rows->height_index[CS_CORNERS * c + cs_node_corner(id)];

@@ -20,6 +20,7 @@ typedef enum cs_unknown_kind {
     CS_U_HEIGHT = 3, /* the height of cable a's contact at corner b of the outline (CS_CORNERS) */
     CS_U_ANCHOR = 4, /* anchor a's horizontal displacement (2 slots: b = 0, 1) */
     CS_U_PULL = 5,   /* how far post a has slid out of its footing along its axis (post_pullout.c) */
+    CS_U_LIFT = 6,   /* how far anchor a has risen out of the soil (anchor.c) */
     CS_U_KIND_COUNT
 } cs_unknown_kind;
 
@@ -40,6 +41,7 @@ typedef struct cs_rows {
     int *height_index;   /* [cable_count * CS_CORNERS] a contact's height column, -1 if none */
     int crush_index;     /* -1 if none */
     int anchor_index[2]; /* an anchor's first column, -1 if none */
+    int lift_index[2];   /* an anchor's rise column, -1 if none */
     double *chords;      /* [4 cable_count max_nodes] each span's chord and length at the placement */
     double *axes;        /* [18 post_count] each post axis' Jacobian and its tilt derivatives */
     cs_span_grad *spans; /* [cable_count * max_nodes] each span's tension and gradient */
@@ -63,6 +65,7 @@ extern const cs_row_kind cs_height_rows;  /* contact.c */
 extern const cs_row_kind cs_crush_rows;   /* contact.c */
 extern const cs_row_kind cs_anchor_rows;  /* anchor.c */
 extern const cs_row_kind cs_pull_rows;    /* post_pullout.c */
+extern const cs_row_kind cs_lift_rows;    /* anchor.c */
 
 /* The force unit of the rows that balance forces (supports, anchors, a post's pull): the strongest rope's
  * strength, so that one tolerance is one force everywhere. */

@@ -356,6 +356,39 @@ static void anchor_residual(const cs_model *model, cs_state *s, int a, const dou
     cs_anchor_residual(model, s, a, NULL, r);
 }
 
+/* The balance of an anchor's rise at w, its ropes' ends placed there, in the rows' force unit. */
+static double lift_residual(const cs_model *model, cs_state *s, int a, double w) {
+    s->anchors[a].lift = w;
+    cs_anchor_place_nodes(model, s, a);
+    for (int c = 0; c < model->cable_count; c++)
+        if (s->cables[c].status == CS_CABLE_INTACT)
+            cs_cable_update_tensions(&model->cables[c], &s->cables[c], NULL);
+    return cs_anchor_lift_balance(model, s, a, NULL) / cs_rows_force_unit(model);
+}
+
+/* An anchor rising out of the soil: Newton on its rise with a difference quotient and backtracking, as a
+ * post's pull (relax_pull): the row falls with w (the skin's stiffness, or m / h^2). Returns the relative
+ * residual found on entry. */
+static double relax_lift(const cs_model *model, cs_state *s, int a, double tol) {
+    if (!cs_anchor_active(model, s, a) || !s->anchors[a].lifting) return 0.0;
+    double w = s->anchors[a].lift, g = lift_residual(model, s, a, w), entry = fabs(g);
+    for (int it = 0; it < 30 && fabs(g) > 1e-3 * tol; it++) {
+        const double dw = 1e-9;
+        double slope = (lift_residual(model, s, a, w + dw) - g) / dw;
+        if (!(slope < 0.0)) break;
+        double d = -g / slope, step = fabs(d) > 0.05 ? 0.05 / fabs(d) : 1.0, t = w, gt = g;
+        for (int ls = 0; ls < 12; ls++, step *= 0.5) {
+            t = w + step * d;
+            gt = lift_residual(model, s, a, t);
+            if (fabs(gt) < fabs(g)) break;
+        }
+        if (!(fabs(gt) < fabs(g))) break;
+        w = t, g = gt;
+    }
+    lift_residual(model, s, a, w);
+    return entry;
+}
+
 /* Newton on the anchor's two components with a difference-quotient Jacobian and backtracking. Returns
  * the relative residual found on entry (of the strongest rope's Fu). */
 static double solve_anchor(const cs_model *model, cs_state *s, int a, double tol) {
@@ -497,8 +530,10 @@ double cs_relax(const cs_model *model, cs_state *s, int sweeps, int may_fall) {
             worst = fmax(worst, cs_relax_ends(model, c, s)); /* ends slipping through fittings */
             problems += n;
         }
-        for (int a = 0; a < 2; a++)
+        for (int a = 0; a < 2; a++) {
             worst = fmax(worst, solve_anchor(model, s, a, sc->solver_tolerance));
+            worst = fmax(worst, relax_lift(model, s, a, sc->solver_tolerance));
+        }
         for (int c = 0; c < model->cable_count; c++) { /* contact heights on the face */
             cs_cable_state *cs = &s->cables[c];
             if (cs->status != CS_CABLE_INTACT || !cs->engaged) continue;

@@ -22,7 +22,8 @@
 #include <string.h>
 
 static const cs_row_kind *const kinds[CS_U_KIND_COUNT] = {&cs_post_rows,   &cs_support_rows, &cs_crush_rows,
-                                                          &cs_height_rows, &cs_anchor_rows,  &cs_pull_rows};
+                                                          &cs_height_rows, &cs_anchor_rows,  &cs_pull_rows,
+                                                          &cs_lift_rows};
 
 static int node_slides(const cs_model *model, const cs_cable_state *cs, int i) {
     int id = cs->node[i];
@@ -55,7 +56,7 @@ int cs_system_init(const cs_model *model, cs_system *sys) {
     sys->slots_bw = calloc(n, sizeof *sys->slots_bw);
     sys->nodes_bw = calloc(nc * (nn + 1) + 1, sizeof *sys->nodes_bw);
     sys->scratch = calloc(n, sizeof *sys->scratch);
-    sys->key_count = 3 * np + nc * (np + CS_CORNERS + 2) + CS_CORNERS * nc + 5; /* see slot_key */
+    sys->key_count = 3 * np + nc * (np + CS_CORNERS + 2) + CS_CORNERS * nc + 7; /* see slot_key */
     sys->last = calloc(sys->key_count, sizeof *sys->last);
     sys->last_step = calloc(sys->key_count, sizeof *sys->last_step);
     if (!rw->slots || !rw->tilt_index || !rw->pull_index || !rw->node_index || !rw->height_index ||
@@ -168,6 +169,7 @@ static int assemble(const cs_model *model, const cs_state *s, cs_system *sys) {
         if (cs_anchor_active(model, s, a)) {
             sl[n++] = (cs_slot){model->anchors[a].x, CS_U_ANCHOR, a, 0, 0};
             sl[n++] = (cs_slot){model->anchors[a].x, CS_U_ANCHOR, a, 1, 0};
+            if (s->anchors[a].lifting) sl[n++] = (cs_slot){model->anchors[a].x, CS_U_LIFT, a, 0, 0};
         }
     for (int k = 0; k < n; k++)
         sl[k].id = k;
@@ -181,7 +183,7 @@ static int assemble(const cs_model *model, const cs_state *s, cs_system *sys) {
     w->crush_index = -1;
     for (int i = 0; i < 2 * model->cable_count; i++)
         w->height_index[i] = -1;
-    w->anchor_index[0] = w->anchor_index[1] = -1;
+    w->anchor_index[0] = w->anchor_index[1] = w->lift_index[0] = w->lift_index[1] = -1;
     for (int k = 0; k < n; k++) {
         if (sl[k].kind == CS_U_HEIGHT) w->height_index[CS_CORNERS * sl[k].a + sl[k].b] = k;
         if (sl[k].kind == CS_U_TILT && sl[k].b == 0) w->tilt_index[sl[k].a] = k;
@@ -189,6 +191,7 @@ static int assemble(const cs_model *model, const cs_state *s, cs_system *sys) {
         if (sl[k].kind == CS_U_NODE) w->node_index[sl[k].a * model->max_nodes + sl[k].b] = k;
         if (sl[k].kind == CS_U_CRUSH) w->crush_index = k;
         if (sl[k].kind == CS_U_ANCHOR && sl[k].b == 0) w->anchor_index[sl[k].a] = k;
+        if (sl[k].kind == CS_U_LIFT) w->lift_index[sl[k].a] = k;
     }
     w->n = n;
     return n;
@@ -221,7 +224,9 @@ static void position_deps(const cs_rows *w, const cs_cable_state *cs, int c, int
     int anchor = id == CS_NODE_START || id == CS_NODE_END;
     if (anchor) k = w->anchor_index[id == CS_NODE_START ? 0 : 1];
     if (k < 0) return;
-    int k2 = anchor ? k + 1 : k; /* an anchor's two columns */
+    int k2 = anchor ? k + 1 : k; /* an anchor's two columns, and its rise's */
+    if (anchor && w->lift_index[id == CS_NODE_START ? 0 : 1] > k2)
+        k2 = w->lift_index[id == CS_NODE_START ? 0 : 1];
     if (k < *lo) *lo = k;
     if (k2 > *hi) *hi = k2;
 }
@@ -262,7 +267,7 @@ static void bandwidth(const cs_model *model, const cs_state *s, const cs_rows *w
                 for (int side = 0; side < 2; side++)
                     if ((side ? right : left) >= 0) post_columns(w, side ? right : left, &lo, &hi);
             post_columns(w, u->a, &lo, &hi); /* its own: a post's rows come together */
-        } else if (u->kind == CS_U_ANCHOR) {
+        } else if (u->kind == CS_U_ANCHOR || u->kind == CS_U_LIFT) {
             for (int c = 0; c < model->cable_count; c++) {
                 const cs_cable_state *cs = &s->cables[c];
                 if (cs->status == CS_CABLE_INTACT)
@@ -324,6 +329,7 @@ static void gather(const cs_state *s, const cs_rows *w, int n, double *x) {
         if (u->kind == CS_U_HEIGHT) x[k] = s->cables[u->a].corner_z[u->b];
         if (u->kind == CS_U_ANCHOR) x[k] = s->anchors[u->a].u[u->b];
         if (u->kind == CS_U_PULL) x[k] = s->posts[u->a].pull;
+        if (u->kind == CS_U_LIFT) x[k] = s->anchors[u->a].lift;
     }
 }
 
@@ -337,6 +343,7 @@ static void scatter(const cs_model *model, cs_state *s, const cs_rows *w, int n,
         if (u->kind == CS_U_HEIGHT) s->cables[u->a].corner_z[u->b] = x[k];
         if (u->kind == CS_U_ANCHOR) s->anchors[u->a].u[u->b] = x[k];
         if (u->kind == CS_U_PULL) s->posts[u->a].pull = x[k];
+        if (u->kind == CS_U_LIFT) s->anchors[u->a].lift = x[k];
     }
     for (int a = 0; a < 2; a++)
         if (w->anchor_index[a] >= 0) cs_anchor_place_nodes(model, s, a);
@@ -425,7 +432,7 @@ static double max_step(const cs_model *model, const cs_state *s, const cs_rows *
         const cs_slot *u = &w->slots[k];
         if (u->kind == CS_U_TILT && fabs(dx[k]) * t > 0.1) t = 0.1 / fabs(dx[k]);
         if ((u->kind == CS_U_CRUSH || u->kind == CS_U_HEIGHT || u->kind == CS_U_ANCHOR ||
-             u->kind == CS_U_PULL) &&
+             u->kind == CS_U_PULL || u->kind == CS_U_LIFT) &&
             fabs(dx[k]) * t > 0.05)
             t = 0.05 / fabs(dx[k]);
     }
@@ -476,6 +483,7 @@ static size_t slot_key(const cs_model *model, const cs_state *s, const cs_slot *
     if (u->kind == CS_U_HEIGHT) return past + CS_CORNERS * (size_t)u->a + (size_t)u->b;
     if (u->kind == CS_U_ANCHOR) return past + CS_CORNERS * nc + 1 + 2 * (size_t)u->a + (size_t)u->b;
     if (u->kind == CS_U_PULL) return past + CS_CORNERS * nc + 5 + (size_t)u->a;
+    if (u->kind == CS_U_LIFT) return past + CS_CORNERS * nc + 5 + np + (size_t)u->a;
     return past + CS_CORNERS * nc;
 }
 
