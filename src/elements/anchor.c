@@ -293,12 +293,16 @@ const cs_row_kind cs_anchor_rows = {2, residual, jacobian};
  * anchor, and what backward Euler takes from the rise is damping. Out of the ground (x = 0) it holds
  * nothing and leaves the soil (cs_anchor_check). */
 
+/* The share of its depth the skin still holds over after its plastic slip (committed). */
+static double skin_remaining(const cs_anchor_model *am, const cs_anchor_state *as) {
+    return 1.0 - (as->lift_plastic + CS_SHAFT_MOBILISATION) / am->depth;
+}
+
 /* The skin's resistance at the rise as it stands, x into *x and dR/dw into *slope (either may be NULL). */
 static double skin(const cs_anchor_model *am, const cs_anchor_state *as, double *x, double *slope) {
     double k = am->uplift_skin / CS_SHAFT_MOBILISATION, xs, dn;
-    double x0 = 1.0 - (as->lift_plastic + CS_SHAFT_MOBILISATION) / am->depth;
-    double r =
-        cs_shaft_return_map(am->uplift_skin, k * am->depth, x0, k * (as->lift - as->lift_plastic), &xs, &dn);
+    double r = cs_shaft_return_map(am->uplift_skin, k * am->depth, skin_remaining(am, as),
+                                   k * (as->lift - as->lift_plastic), &xs, &dn);
     if (x) *x = xs;
     if (slope) *slope = k * dn;
     return r;
@@ -373,8 +377,7 @@ static void start_lift(const cs_model *model, cs_state *s, int a) {
 static void commit_lift(const cs_model *model, cs_state *s, int a, double fz) {
     const cs_anchor_model *am = &model->anchors[a];
     cs_anchor_state *as = &s->anchors[a];
-    double dw = as->lift - as->lift_commit, x, r = skin(am, as, &x, NULL);
-    double x0 = 1.0 - (as->lift_plastic + CS_SHAFT_MOBILISATION) / am->depth;
+    double dw = as->lift - as->lift_commit, x, r = skin(am, as, &x, NULL), x0 = skin_remaining(am, as);
     if (s->h > 0.0 && s->h < HUGE_VAL) {
         double v = dw / s->h, q = am->mass * (v - as->lift_rate) / s->h;
         s->e_post_damping +=
@@ -487,7 +490,7 @@ int cs_anchor_check(const cs_model *model, cs_state *s) {
         const cs_anchor_model *am = &model->anchors[a];
         cs_anchor_state *as = &s->anchors[a];
         if (am->rigid || as->failed || !as->lifting ||
-            1.0 - (as->lift_plastic + CS_SHAFT_MOBILISATION) / am->depth > 0.0)
+            (skin_remaining(am, as) > 0.0 && as->lift < am->depth)) /* the skin slipped out, or the body */
             continue;
         as->failed = 1;
         cs_event_add(model, s, CS_EVENT_ANCHOR_PULLOUT, CS_ELEMENT_ANCHOR, a, as->uplift);
