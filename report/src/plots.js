@@ -94,23 +94,45 @@ function drawMarkers(u, markers) {
     if (m.label) {
       ctx.font = `${12 * devicePixelRatio}px system-ui, sans-serif`;
       ctx.fillStyle = '#222';
-      const w = ctx.measureText(m.label).width;
       const pad = 4 * devicePixelRatio;
+      // a note wider than the plotting area is broken into lines at its spaces
+      const lines = wrapText(ctx, m.label, u.bbox.width - 2 * pad);
+      const w = Math.max(...lines.map((l) => ctx.measureText(l).width));
+      const h = 15 * devicePixelRatio;
+      const tall = h * lines.length;
       const right = x + 10 * devicePixelRatio + w < u.bbox.left + u.bbox.width;
-      const below = y - 22 * devicePixelRatio < u.bbox.top;
+      const below = y - 8 * devicePixelRatio - tall < u.bbox.top;
       // beside the marker, on the side with room, then moved in where it would still cross the frame
       const side = right ? x + 10 * devicePixelRatio : x - 10 * devicePixelRatio - w;
       const x0 = Math.max(u.bbox.left + pad, Math.min(side, u.bbox.left + u.bbox.width - pad - w));
-      const h = 15 * devicePixelRatio;
-      let ly = y + (below ? 20 : -8) * devicePixelRatio;
-      for (let k = 0; k < 6 && placed.some((b) => x0 < b[0] + b[2] && b[0] < x0 + w && ly - h < b[1] && b[1] - h < ly); k++) ly += h;
-      placed.push([x0, ly, w]);
+      // ly: the last line's baseline; a box spans (ly - tall, ly]
+      let ly = below ? y + 20 * devicePixelRatio + tall - h : y - 8 * devicePixelRatio;
+      const overlaps = () => placed.some((b) => x0 < b[0] + b[2] && b[0] < x0 + w && ly - tall < b[1] && b[1] - b[3] < ly);
+      for (let k = 0; k < 6 && overlaps(); k++) ly += h;
+      placed.push([x0, ly, w, tall]);
       ctx.textAlign = 'left';
-      ctx.fillText(m.label, x0, ly);
+      lines.forEach((l, i) => ctx.fillText(l, x0, ly - (lines.length - 1 - i) * h));
     }
   }
   ctx.restore();
   return placed.map(([x0, , w]) => ({ x0, x1: x0 + w, left: u.bbox.left, right: u.bbox.left + u.bbox.width }));
+}
+
+// Words of text in lines no wider than width (a word wider than that stands on its own line).
+function wrapText(ctx, text, width) {
+  const lines = [];
+  let line = '';
+  for (const word of text.split(' ')) {
+    const next = line ? `${line} ${word}` : word;
+    if (line && ctx.measureText(next).width > width) {
+      lines.push(line);
+      line = word;
+    } else {
+      line = next;
+    }
+  }
+  if (line) lines.push(line);
+  return lines;
 }
 
 // Value at time t on a series (linear between points).
