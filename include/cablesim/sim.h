@@ -305,7 +305,7 @@ typedef struct cs_anchor_view {
     double residual;        /**< what the soil keeps resisting with as it ploughs on past the peak, N */
     double slide;           /**< how far it has ploughed through the soil past its elastic range, m */
     double uplift;          /**< the ropes' upward pull, N */
-    double uplift_capacity; /**< the upward pull that pulls it out, N */
+    double uplift_capacity; /**< the upward pull at which it starts to rise out of the soil, N */
     double peak_pull;       /**< the ropes' largest horizontal pull on it so far, N */
     double lift;            /**< how far the ropes' uplift has raised it out of the soil, m */
 } cs_anchor_view;
@@ -333,8 +333,9 @@ typedef struct cs_energy {
     double post_kinetic;      /**< the posts' swing */
     double post_plastic;      /**< the posts' plastic hinges */
     double post_damping;      /**< of the posts' swing and the anchors' slide by their implicit integration */
-    double anchor_elastic;    /**< the soil's elastic spring at the anchors */
-    double anchor_kinetic;    /**< the anchors' slide */
+    double anchor_elastic;    /**< the soil's elastic spring at the anchors, and a rising one's weight lifted
+                                   and its skin's slip */
+    double anchor_kinetic;    /**< the anchors' slide and rise */
     double rail_elastic;      /**< the rails' axial strain energy */
     double rail_plastic;      /**< the rails' yielding and buckling */
     double soil;              /**< plastic work of footings and anchors moving through the soil */

@@ -203,7 +203,7 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
         hash_bytes(&h, as->acc, sizeof as->acc);
         hash_bytes(&h, as->net, sizeof as->net);
         if (as->lifting) {
-            double lift[3] = {as->lift, as->lift_plastic, as->lift_rate};
+            double lift[4] = {as->lift, as->lift_plastic, as->lift_rate, as->lift_net};
             hash_bytes(&h, lift, sizeof lift);
         }
     }

@@ -86,8 +86,11 @@ void cs_anchor_derive(const cs_anchor_def *d, double gravity, cs_anchor_model *a
     double perimeter_skin = len > 0.0 ? 2.0 * (b + len) / (CS_PI * b) : 1.0; /* a block's perimeter */
     /* a capacity given for the anchor, or for its footing, is design data and taken as it is */
     double given = d->pullout_capacity > 0.0 ? d->pullout_capacity : f->pullout_capacity;
-    am->uplift_weight = given > 0.0 ? 0.0 : am->mass * gravity;
-    am->uplift_skin = given > 0.0 ? given : perimeter_skin * cs_footing_pullout_capacity(f);
+    /* a capacity given holds its weight too: the weight (up to it) pulls the rising mass down, the skin
+     * holds the rest */
+    am->uplift_weight = given > 0.0 ? fmin(am->mass * gravity, given) : am->mass * gravity;
+    am->uplift_skin =
+        given > 0.0 ? given - am->uplift_weight : perimeter_skin * cs_footing_pullout_capacity(f);
     am->uplift_capacity = am->uplift_weight + am->uplift_skin;
 }
 
@@ -300,6 +303,11 @@ static double skin_remaining(const cs_anchor_model *am, const cs_anchor_state *a
 
 /* The skin's resistance at the rise as it stands, x into *x and dR/dw into *slope (either may be NULL). */
 static double skin(const cs_anchor_model *am, const cs_anchor_state *as, double *x, double *slope) {
+    if (!(am->uplift_skin > 0.0)) { /* no skin (a capacity given as its weight alone) */
+        if (x) *x = skin_remaining(am, as);
+        if (slope) *slope = 0.0;
+        return 0.0;
+    }
     double k = am->uplift_skin / CS_SHAFT_MOBILISATION, xs, dn;
     double r = cs_shaft_return_map(am->uplift_skin, k * am->depth, skin_remaining(am, as),
                                    k * (as->lift - as->lift_plastic), &xs, &dn);
@@ -387,7 +395,8 @@ static void commit_lift(const cs_model *model, cs_state *s, int a, double fz) {
         if (s->h > 0.0) as->lift_rate = 0.0;
         as->lift_net = fz - am->uplift_weight - r;
     }
-    if (x < x0) { /* the skin slipped on: its work, and the slip from where it holds */
+    if (x < x0 &&
+        am->uplift_skin > 0.0) { /* the skin slipped on: its work, and the slip from where it holds */
         s->e_soil += am->uplift_skin * am->depth * (x0 * x0 * x0 - x * x * x) / 3.0;
         as->lift_plastic = x > 0.0 ? as->lift - r * CS_SHAFT_MOBILISATION / am->uplift_skin
                                    : am->depth - CS_SHAFT_MOBILISATION;
@@ -406,7 +415,8 @@ static void commit_lift(const cs_model *model, cs_state *s, int a, double fz) {
 
 /* End of step: the ropes' pull and its peak so far (a rigid anchor holds that pull, its force), the
  * slide's rate, acceleration and what its integration dissipates, the plastic slide (radial return) and
- * its work, the resistance, and the ropes' uplift.
+ * its work, the resistance, and the ropes' uplift; a rising anchor's rise (commit_lift), or the start
+ * of one once the uplift reaches W + S (start_lift).
  * Over the step the forces' energies (the ropes' and the soil's, state functions and the soil's plastic
  * work) change by about -(F_c + F(u)) . du / 2, F the net force (the ropes' pull less the soil's
  * resistance); what the step takes out of the motion, that trapezoid rule's work of F less the kinetic
@@ -474,9 +484,13 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
             }
         }
         as->uplift = f[2] > 0.0 ? f[2] : 0.0;
-        if (as->lifting)
+        if (as->lifting) {
             commit_lift(model, s, a, f[2]);
-        else if (s->h > 0.0 && s->h < HUGE_VAL && as->uplift >= am->uplift_capacity)
+            double q1[2], d1[2]; /* the net force the next step starts from, on the face's share now */
+            resistance(am, as, as->u, q1, NULL, NULL);
+            drag(am, as, as->rate, d1, NULL);
+            as->net[0] = f[0] - q1[0] + d1[0], as->net[1] = f[1] - q1[1] + d1[1];
+        } else if (s->h > 0.0 && s->h < HUGE_VAL && as->uplift >= am->uplift_capacity)
             start_lift(model, s, a);
         resistance(am, as, as->u, as->force, NULL, NULL);
     }
@@ -507,7 +521,7 @@ double cs_anchor_stored_energy(const cs_model *model, const cs_state *s, int a, 
     *kinetic = kinetic_energy(am, as) + 0.5 * am->mass * as->lift_rate * as->lift_rate;
     double e =
         elastic_energy(am, as) + am->uplift_weight * as->lift; /* the soil's spring, the weight lifted */
-    if (as->lifting) { /* the skin's slip, counted from where it started (at S) */
+    if (as->lifting && am->uplift_skin > 0.0) { /* the skin's slip, counted from where it started (at S) */
         double r = skin(am, as, NULL, NULL);
         e += 0.5 * (r * r - am->uplift_skin * am->uplift_skin) * CS_SHAFT_MOBILISATION / am->uplift_skin;
     }

@@ -332,7 +332,8 @@ double cs_anchor_face_share(const cs_anchor_model *am, const cs_anchor_state *as
 double cs_anchor_lift_balance(const cs_model *model, const cs_state *s, int a, const double *chords);
 /* The cap on an anchor's resistance after a plastic slide s (m): its peak falling to its residual, N. */
 double cs_anchor_cap(const cs_anchor_model *am, double s);
-/* The elastic energy of anchor a's soil spring; its kinetic energy into *kinetic. */
+/* What anchor a holds: its soil spring's elastic energy, and once it rises the weight lifted and its
+ * skin's slip; its kinetic energy (its slide's and its rise's) into *kinetic. */
 double cs_anchor_stored_energy(const cs_model *model, const cs_state *s, int a, double *kinetic);
 
 /* ---- the energy ledger (energy.c) ---- */

@@ -273,8 +273,10 @@ static void bandwidth(const cs_model *model, const cs_state *s, const cs_rows *w
                 if (cs->status == CS_CABLE_INTACT)
                     neighbourhood(model, w, cs, c, u->a == 0 ? 0 : cs->node_count - 1, &lo, &hi);
             }
-            hi = hi > k + 1 ? hi : k + 1;
-            lo = lo < k - 1 ? lo : k - 1;
+            if (u->kind == CS_U_ANCHOR) { /* its two rows come together */
+                hi = hi > k + 1 ? hi : k + 1;
+                lo = lo < k - 1 ? lo : k - 1;
+            }
         } else {
             for (int c = 0; c < model->cable_count; c++) {
                 const cs_cable_state *cs = &s->cables[c];
@@ -479,7 +481,7 @@ static size_t slot_key(const cs_model *model, const cs_state *s, const cs_slot *
                                             : np + CS_CORNERS + (id == CS_NODE_END); /* an end fitting */
         return 2 * np + (size_t)u->a * (np + CS_CORNERS + 2) + at;
     }
-    size_t past = 2 * np + nc * (np + CS_CORNERS + 2); /* heights, the crush, anchors, pulls */
+    size_t past = 2 * np + nc * (np + CS_CORNERS + 2); /* heights, the crush, anchors, pulls, rises */
     if (u->kind == CS_U_HEIGHT) return past + CS_CORNERS * (size_t)u->a + (size_t)u->b;
     if (u->kind == CS_U_ANCHOR) return past + CS_CORNERS * nc + 1 + 2 * (size_t)u->a + (size_t)u->b;
     if (u->kind == CS_U_PULL) return past + CS_CORNERS * nc + 5 + (size_t)u->a;
