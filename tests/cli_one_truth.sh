@@ -79,4 +79,13 @@ check "runs.csv: astm_f2656_as_run is the run's designation as run" '[ "$(cell a
 pen=$(cell "astm_f2656_penetration [m]")
 check "runs.csv: astm_f2656_penetration is the penetration run prints for that designation" '[ -n "$pen" ] && grep -qF "ASTM F2656 $(label "$tmp/designed") (penetration $(printf "%.2f" "$pen") m " "$tmp/designed.term"'
 check "runs.csv: sd_std_02_01_as_run is the run's SD-STD-02.01 designation as run" '[ -n "$(label "$tmp/designed" sd-std-02.01)" ] && [ "$(cell sd_std_02_01_as_run)" = "$(label "$tmp/designed" sd-std-02.01)" ] && grep -qF "SD-STD-02.01 $(cell sd_std_02_01_as_run) (" "$tmp/designed.term"'
+# a dead-man that rises out of the soil (APS3 with the dead-men's skin at the beta method's friction):
+# summary.json's lift_m, the terminal's rise and timeseries.csv's last anchor0_lift are one number
+beta=(--set "barrier.anchors.start.footing.skin_friction=25.4 kPa/m" --set "barrier.anchors.end.footing.skin_friction=25.4 kPa/m")
+"$cs" run examples/aps3.yaml -o "$tmp/rise" "${beta[@]}" >"$tmp/rise.term" 2>&1
+lift=$(grep -o '"anchor_start":{[^}]*"lift_m":[^,]*' "$tmp/rise/summary.json" | sed 's/.*"lift_m"://')
+col=$(head -1 "$tmp/rise/timeseries.csv" | tr , '\n' | grep -nxF "anchor0_lift [m]" | cut -d: -f1)
+last=$(tail -1 "$tmp/rise/timeseries.csv" | cut -d, -f"$col")
+check "rise: summary.json's lift_m, the terminal's and timeseries.csv's last row agree (> 0)" \
+    'awk -v a="$lift" -v b="$last" "BEGIN { exit !(a > 0.01 && a == b) }" && grep -qF "start anchor" "$tmp/rise.term" && grep -q "risen $(printf "%.3f" "$lift") m" "$tmp/rise.term"'
 finish

@@ -61,7 +61,7 @@ cs_status cs_timeseries_csv(FILE *f, const cs_record *rec, cs_error *err) {
     for (int p = 0; p < rec->post_count; p++)
         fprintf(f, ",post%d_state,post%d_tilt [rad]", p, p);
     for (int a = 0; a < 2; a++)
-        fprintf(f, ",anchor%d_state,anchor%d_displacement [m],anchor%d_force [N]", a, a, a);
+        fprintf(f, ",anchor%d_state,anchor%d_displacement [m],anchor%d_lift [m],anchor%d_force [N]", a, a, a, a);
     for (int k = 0; k < CS_ENERGY_TERMS; k++)
         fprintf(f, ",%s [J]", cs_energy_term_name(k));
     fprintf(f, ",energy_balance_error [1]");
@@ -111,6 +111,8 @@ cs_status cs_timeseries_csv(FILE *f, const cs_record *rec, cs_error *err) {
             fputs(cs_anchor_status_name(av), f);
             fputc(',', f);
             ts_num(&w, hypot(av->displacement[0], av->displacement[1]), "anchor", a, "", v->t);
+            fputc(',', f);
+            ts_num(&w, av->lift, "anchor", a, "'s rise", v->t);
             fputc(',', f);
             ts_num(&w, hypot(av->force[0], av->force[1]), "anchor", a, "", v->t);
         }

@@ -387,6 +387,7 @@ json_object *cs_summary_json(const cs_model_input *in, const cs_model *model, co
         jnum(&w, o, "residual_n", av.residual);
         jnum(&w, o, "slide_m", av.slide);
         jnum(&w, o, "displacement_m", hypot(av.displacement[0], av.displacement[1]));
+        jnum(&w, o, "lift_m", av.lift);
         jnum(&w, o, "peak_pull_n", av.peak_pull);
         json_object_object_add(doc, a ? "anchor_end" : "anchor_start", o);
     }
