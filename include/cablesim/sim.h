@@ -327,7 +327,8 @@ typedef struct cs_energy {
                                    {.size = sizeof e}); the library fills only that much */
     double vehicle_kinetic;   /**< the vehicle's kinetic energy, translation and rotation */
     double vehicle_potential; /**< gravity and tyre springs, relative to t = 0 */
-    double cable_elastic;     /**< the ropes' elastic strain energy */
+    double cable_elastic;     /**< the ropes' elastic strain energy less their sag's weight below the
+                                   chords: below zero where slack ropes hang (docs/theory.md, Own weight) */
     double cable_plastic;     /**< the ropes' plastic work */
     double post_elastic;      /**< the posts' elastic bending */
     double post_kinetic;      /**< the posts' swing */
