@@ -59,7 +59,7 @@ static double lean_and_pull_at(const cs_model *m, cs_state *s, double along_x, d
     s->posts[0].tilt[0] = along_x, s->posts[0].tilt[1] = theta;
     cs_cable_state *cs = &s->cables[c];
     int i = cs->where[0];
-    cs_post_attachment(m, 0, s->posts[0].tilt, 0.0, cs_post_cable_z(m, s, 0, c), cs->pos + 3 * i);
+    cs_post_attachment(m, 0, s->posts[0].tilt, 0.0, 0, cs_post_cable_z(m, s, 0, c), cs->pos + 3 * i);
     for (int k = -1; k <= 1; k += 2) {
         double *q = cs->pos + 3 * (i + k);
         v3_set(q, cs->pos[3 * i] + 10.0 * k, cs->pos[3 * i + 1] + 5.0, cs->pos[3 * i + 2]);
@@ -215,8 +215,8 @@ static void bolted_face_turns_with_the_post(void **state) {
 /* The post's unit axis as it stands. */
 static void axis_of(const cs_model *m, const cs_state *s, double a[3]) {
     double base[3], top[3];
-    cs_post_attachment(m, 0, s->posts[0].tilt, 0.0, 0.0, base);
-    cs_post_attachment(m, 0, s->posts[0].tilt, 0.0, 1.0, top);
+    cs_post_attachment(m, 0, s->posts[0].tilt, 0.0, 0, 0.0, base);
+    cs_post_attachment(m, 0, s->posts[0].tilt, 0.0, 0, 1.0, top);
     v3_sub(a, top, base);
 }
 

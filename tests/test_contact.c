@@ -84,7 +84,8 @@ static void cables_below_and_above_the_face_slip(void **state) {
  * over the lower one with no event; both front wheels take it, at the front axle in the planes of the sides
  * to 1e-9 m, above the axle and below the bumper, no sooner than the truck has gone its front overhang
  * (1.1 m) past the rope's line (the posts the upper rope leans carry the lower one ahead of the truck, so it
- * meets the wheels later), and they push it: its tension rises above its pretension. */
+ * meets the wheels later), and they push it: its tension rises above its pretension (held down at the posts
+ * the ropes have folded to the ground, it breaks 48 ms on). */
 static void a_rope_under_the_bumper_meets_the_front_tyres(void **state) {
     (void)state;
     fixture fx;
@@ -127,14 +128,18 @@ static void a_rope_under_the_bumper_meets_the_front_tyres(void **state) {
                     b[2] < v->face_bottom - v->cg_height);
     }
     assert_true(cs->status == CS_CABLE_INTACT && !cs->passed && cs->engaged);
-    double t_pushed = s->t + 0.05, before = cs->tension[cs_cable_find_node(cs, cs_corner_node(6))];
-    while (s->outcome == CS_RUNNING && s->t < t_pushed)
+    double t_pushed = s->t + 0.05, before = cs->tension[cs_cable_find_node(cs, cs_corner_node(6))],
+           most = 0.0;
+    while (s->outcome == CS_RUNNING && s->t < t_pushed && cs->status == CS_CABLE_INTACT) {
+        int i6 = cs_cable_find_node(cs, cs_corner_node(6));
+        assert_true(i6 > 0);
+        most = fmax(most, cs->tension[i6]);
         assert_int_equal(cs_step(m, s, &err), CS_OK);
-    int i6 = cs_cable_find_node(cs, cs_corner_node(6));
-    assert_true(i6 > 0);
-    printf("the rope between the wheels: %.1f kN when taken, %.1f kN 50 ms on (pretension %.1f kN)\n",
-           before / 1e3, cs->tension[i6] / 1e3, m->cables[0].pretension / 1e3);
-    assert_true(cs->tension[i6] > m->cables[0].pretension && cs->tension[i6] > before);
+    }
+    printf("the rope between the wheels: %.1f kN when taken, up to %.1f kN over the next 50 ms or until it "
+           "broke (pretension %.1f kN)\n",
+           before / 1e3, most / 1e3, m->cables[0].pretension / 1e3);
+    assert_true(most > m->cables[0].pretension && most > before);
     for (int i = 0; i < cs_state_event_count(s); i++)
         assert_true(s->events[i].type != CS_EVENT_OVERRIDE && s->events[i].type != CS_EVENT_UNDERRIDE);
     cs_state_free(s);

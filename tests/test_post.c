@@ -579,7 +579,7 @@ static void a_sliding_post_balances_under_the_fallback(void **state) {
     cs_post_state *ps = &s->posts[0];
     double x = pm->x, z = w->model->cables[0].z, h = w->model->scenario.dt, b[3], upright[2] = {0.0, 0.0};
     memset(ps, 0, sizeof *ps);
-    cs_post_attachment(w->model, 0, upright, 0.0, z, b);
+    cs_post_attachment(w->model, 0, upright, 0.0, 0, z, b);
     double a[3] = {x - 5.0, 0.0, b[2] + 3.0}, c[3] = {x + 5.0, 0.0, b[2] + 3.0};
     double strain = 1e-3;
     for (int k = 0; k < 8; k++) { /* the spans' strain for a pull of 1.5 Q0 */
@@ -639,7 +639,7 @@ static void a_sliding_post_the_ropes_let_go_balances_under_newton(void **state) 
     const cs_post_model *pm = &m->posts[0];
     cs_post_state *ps = &s->posts[0];
     double x = pm->x, z = m->cables[0].z, h = m->scenario.dt, b[3], upright[2] = {0.0, 0.0};
-    cs_post_attachment(m, 0, upright, 0.0, z, b);
+    cs_post_attachment(m, 0, upright, 0.0, 0, z, b);
     double a[3] = {x - 5.0, -0.1, b[2] + 3.0}, c[3] = {x + 5.0, -0.1, b[2] + 3.0}, strain = 1e-3;
     for (int k = 0; k < 8; k++) { /* the spans' strain for a pull of 1.5 Q0 */
         if (k > 0) strain *= 1.5 * pm->pullout_cap / cs_post_axial_pull(m, s, 0);

@@ -38,9 +38,9 @@ typedef struct jac_check {
 
 /* Whether unknown j is a post's tilt or pull, an anchor's displacement or a rope's material beside a span
  * that a commit's return map has left on its yield surface (a rope's: past T1, on its hardening branch; a
- * post's tilt or pull beside a rail segment on its cap, which it moves; a post's tilt that moves a rope's
- * node beside such a span: APS3's end span from post 0 to its rigid anchor at step 215 takes 21.36e6 N/rad
- * of tilt backward and 12.94e6 forward, its kink 5e-10 rad away),
+ * post's tilt or pull beside a rail segment on its cap, which it moves; a post's tilt or pull that moves a
+ * rope's node beside such a span: APS3's end span from post 0 to its rigid anchor at step 215 takes
+ * 21.36e6 N/rad of tilt backward and 12.94e6 forward, its kink 5e-10 rad away),
  * or a rope's material at a sticking node between spans of different plastic strain (the strain the rope
  * carries through the node switches from one side's to the other's at the committed material),
  * where a central difference straddles the kink between the elastic slope (which the Jacobian takes there)
@@ -58,8 +58,10 @@ static int beside_a_yielding_rail(const cs_model *m, const cs_state *s, int p) {
         for (int k = p - 1; k <= p; k++) {
             if (k < 0 || k + 1 >= m->post_count) continue;
             double a[3], b[3], l0 = m->posts[k + 1].x - m->posts[k].x;
-            cs_post_attachment(m, k, s->posts[k].tilt, s->posts[k].pull, m->rails[r].z, a);
-            cs_post_attachment(m, k + 1, s->posts[k + 1].tilt, s->posts[k + 1].pull, m->rails[r].z, b);
+            cs_post_attachment(m, k, s->posts[k].tilt, s->posts[k].pull, cs_post_slides_upright(m, s, k),
+                               m->rails[r].z, a);
+            cs_post_attachment(m, k + 1, s->posts[k + 1].tilt, s->posts[k + 1].pull,
+                               cs_post_slides_upright(m, s, k + 1), m->rails[r].z, b);
             double d = sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
                             (b[2] - a[2]) * (b[2] - a[2]));
             double n = m->rails[r].ea / l0 *
@@ -74,13 +76,15 @@ static int beside_a_yielding_rail(const cs_model *m, const cs_state *s, int p) {
 static int on_the_yield_kink(const cs_model *m, const cs_state *s, int j) {
     const cs_slot *u = &s->work->sys.rows.slots[j];
     double k, cap, e[2];
-    if (u->kind == CS_U_TILT) {
+    if (u->kind == CS_U_TILT || u->kind == CS_U_PULL) {
         if (beside_a_yielding_rail(m, s, u->a)) return 1;
-        for (int c = 0; c < m->cable_count; c++) { /* its tilt moves a node beside a span on its backbone */
+        for (int c = 0; c < m->cable_count; c++) { /* it moves a node beside a span on its backbone */
             const cs_cable_state *cs = &s->cables[c];
             int i = cs->status == CS_CABLE_INTACT ? cs->where[u->a] : -1;
             if (i > 0 && beside_a_yielding_span(m, s, c, i)) return 1;
         }
+    }
+    if (u->kind == CS_U_TILT) {
         const cs_post_model *pm = &m->posts[u->a];
         const cs_post_state *ps = &s->posts[u->a];
         /* the spring's trial k e with its damper's (c / h)(alpha - alpha_c) (post.c), slope k + c / h,
@@ -108,7 +112,6 @@ static int on_the_yield_kink(const cs_model *m, const cs_state *s, int j) {
     } else if (u->kind == CS_U_HEIGHT) {
         return beside_a_yielding_span(m, s, u->a, cs_cable_find_node(&s->cables[u->a], cs_corner_node(u->b)));
     } else if (u->kind == CS_U_PULL) {
-        if (beside_a_yielding_rail(m, s, u->a)) return 1;
         const cs_post_model *pm = &m->posts[u->a];
         const cs_post_state *ps = &s->posts[u->a];
         k = pm->pull_stiffness, cap = cs_post_pull_cap(pm, ps);
@@ -233,8 +236,10 @@ static void jacobian_with_rails(void **state) {
     int pulls = 0;
     fixture_aps3(&fx);
     fixture_rails(&fx);
+    for (int p = 0; p < fx.barrier.post_count; p++) /* held by 10 kip, posts the ropes lift out upright */
+        fx.posts[p].footing.pullout_capacity = 10.0 * KIP;
     check_along_the_crash(&fx, &pulls);
-    assert_true(pulls >= 2 * 2); /* the intermediate anchor posts sliding out, at two checks at least */
+    assert_true(pulls >= 2 * 2); /* two posts sliding out, at two checks at least */
 }
 
 /* And with a post down on the ground (post.c, the ground stop): APS3 as installed, line post 5 folded
@@ -381,9 +386,11 @@ static cs_state *run_to_end(const fixture *fx, cs_model **m, cs_summary *sm) {
 
 /* The fallback (relax.c) is reached and does its work: with rigid anchors and massless line posts (the
  * paper's), a post on its plastic plateau under the ropes' pull has no equilibrium that Newton's
- * linearisation finds, and the barrier's solve goes to the fallback's sweeps (31 of 820 solves). With
- * them, 28 steps end above the solver tolerance (at most 40 allowed), no solve ends far enough off to try
- * letting a post fall, and the ledger balances within 1% (0.03% measured). */
+ * linearisation finds, and the barrier's solve goes to the fallback's sweeps (60 of 521 solves: the posts
+ * folded to the ground keep their ropes, their stubs upright, until the lower rope's fitting breaks at
+ * 0.159 s). With them, 55 steps end above the solver tolerance (at most 70 allowed; 29 of them after the
+ * break, where the upper rope alone holds the truck over massless posts), no solve ends far enough off to
+ * try letting a post fall, and the ledger balances within 1% (0.12% measured). */
 static void fallback_is_reached_and_balances(void **state) {
     (void)state;
     fixture fx;
@@ -399,7 +406,7 @@ static void fallback_is_reached_and_balances(void **state) {
            s->work->count.solves, s->work->count.fallback, s->work->count.fall_tries, s->work->count.pieces,
            sm.solver_warnings, 100.0 * sm.energy_balance_error, cs_outcome_name(sm.outcome));
     assert_true(s->work->count.fallback > 0);
-    assert_true(sm.solver_warnings <= 40);
+    assert_true(sm.solver_warnings <= 70);
     assert_int_equal(s->work->count.fall_tries, 0);
     assert_true(fabs(sm.energy_balance_error) < 0.01);
     cs_state_free(s);

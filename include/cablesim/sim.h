@@ -139,8 +139,9 @@ typedef enum cs_event_type {
                                        (element: the post; value: the pull along it, N; cable: which) */
     CS_EVENT_TERMINATION_SLIP,    /**< a rope starts to slip through its end fitting (value: that end span's
                                        tension, N; cable_end: which end) */
-    CS_EVENT_POST_WITHDRAWAL,     /**< the ropes' pull along a post reaches its pullout capacity: it starts to
-                                       slide out of its footing (value: that pull, N) */
+    CS_EVENT_POST_WITHDRAWAL,     /**< the ropes' pull out of a post's footing (up for a post hinged at grade,
+                                       along it for one whose footing turns) reaches its pullout capacity: it
+                                       starts to slide out (value: that pull, N) */
     CS_EVENT_POST_DOWN,        /**< a post folded over by its ropes lies on the ground, its top at grade; it
                                     keeps the ropes threaded or clamped on it (value: its tilt, rad) */
     CS_EVENT_CABLE_PULLED_OFF, /**< a keyway bolt or bracket pulled off its post's face lets a cable go

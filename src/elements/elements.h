@@ -129,12 +129,12 @@ void cs_node_force(const cs_cable_state *cs, int i, const double *chords, double
 /* ---- a post's axis (post_axis.c): geometry only ---- */
 /* sin t / t, its derivative over t and cos t at t = |alpha|. */
 void cs_post_axis_terms(double t, double *s, double *g, double *c);
-/* The point at height z (when upright) of post p at a tilt, slid out of the ground by `pull` along its
- * axis: from cs_post_axis_terms' s and c, or found. */
-void cs_post_attachment_from(const cs_model *model, int post, const double *tilt, double pull, double s,
-                             double c, double z, double *out);
-void cs_post_attachment(const cs_model *model, int post, const double *tilt, double pull, double z,
-                        double *out);
+/* The point at height z (when upright) of post p at a tilt, slid out of the ground by `pull`, straight up
+ * if `upright` (cs_post_slides_upright), else along its axis: from cs_post_axis_terms' s and c, or found. */
+void cs_post_attachment_from(const cs_model *model, int post, const double *tilt, double pull, int upright,
+                             double s, double c, double z, double *out);
+void cs_post_attachment(const cs_model *model, int post, const double *tilt, double pull, int upright,
+                        double z, double *out);
 /* The axis' Jacobian da/dalpha (3 x 2, row-major): from s and g, at a tilt, and with its derivatives along
  * the two tilts (dj, 2 x 6: the solver's linearisation of a post's moment). */
 void cs_post_axis_jacobian_from(const double *tilt, double s, double g, double *j);
@@ -155,10 +155,20 @@ static inline int cs_post_in_barrier(const cs_post_state *ps) {
     return ps->status == CS_POST_ELASTIC || ps->status == CS_POST_HINGED || ps->status == CS_POST_SOIL ||
            ps->status == CS_POST_DOWN;
 }
-/* The arm of post p's point at height z from its pivot along its axis: z + pivot depth + its pull. */
-static inline double cs_post_arm(const cs_model *model, const cs_state *s, int p, double z) {
-    return z + model->posts[p].pivot + s->posts[p].pull;
+/* Whether post p slides out of its footing straight up: hinged at grade (its steel yields before its
+ * footing turns), the stub in the footing stays vertical and carries the bent post up with it. A footing
+ * that turns in the soil with its post, and a struck post (the edge drags it), slide along the post's
+ * leaned axis (post_pullout.c; docs/theory.md, "A hinged post's stub stays upright"). */
+static inline int cs_post_slides_upright(const cs_model *model, const cs_state *s, int p) {
+    return !model->posts[p].soil_yields && !s->posts[p].captured;
 }
+/* The arm of post p's point at height z from its pivot along its axis: z + pivot depth, and its pull if
+ * it slides out along its axis (a post sliding upright carries its pivot up with it). */
+static inline double cs_post_arm(const cs_model *model, const cs_state *s, int p, double z) {
+    return z + model->posts[p].pivot + (cs_post_slides_upright(model, s, p) ? 0.0 : s->posts[p].pull);
+}
+/* The unit direction post p slides out of its footing along at a tilt: up, or its axis a(alpha). */
+void cs_post_slide_direction(const cs_model *model, const cs_state *s, int p, const double *tilt, double *d);
 /* Cable c's height on post p: as built, plus its slot's ride up the slot (attachment.c). */
 static inline double cs_post_cable_z(const cs_model *model, const cs_state *s, int p, int c) {
     return model->cables[c].z + (model->posts[p].attach == CS_ATTACH_SLOT ? s->posts[p].lift : 0.0);
@@ -221,9 +231,9 @@ int cs_post_end_waiting(const cs_model *model, cs_state *s);
 /* The pull along its axis that the length of it still in the ground holds, N. */
 double cs_post_pull_cap(const cs_post_model *pm, const cs_post_state *ps);
 double cs_post_moment_cap(const cs_post_model *pm, const cs_post_state *ps);
-/* The ropes' and rails' pull along post p's axis as placed, N. */
+/* The ropes' and rails' pull on post p along the direction it slides out (up, or its axis) as placed, N. */
 double cs_post_axial_pull(const cs_model *model, const cs_state *s, int p);
-/* The balance of post p's pull as placed: the ropes' and rails' pull along it less the shaft's resistance
+/* The balance of post p's pull as placed: the ropes' and rails' pull out of it less the shaft's resistance
  * and the slide's inertial force over the time since the last commit (the pull's row, in N). */
 double cs_post_pull_balance(const cs_model *model, const cs_state *s, int p);
 /* A post whose pull has reached its capacity starts to slide out: returns 1 if it started. */

@@ -121,9 +121,10 @@ void cs_post_place_nodes(const cs_model *model, cs_state *s, int p, const double
     cs_post_axis_terms(v2_norm(tilt[0], tilt[1]), &sn, &g, &c);
     if (axis) cs_post_axis_jacobian_from(tilt, sn, g, axis);
     double pull = s->posts[p].pull;
+    int upright = cs_post_slides_upright(model, s, p);
     if (s->rail_pos && model->rail_count) { /* the rails' points, kept with the tilt and pull they are at */
         for (int r = 0; r < model->rail_count; r++)
-            cs_post_attachment_from(model, p, tilt, pull, sn, c, model->rails[r].z,
+            cs_post_attachment_from(model, p, tilt, pull, upright, sn, c, model->rails[r].z,
                                     s->rail_pos + 3 * ((size_t)p * (size_t)model->rail_count + (size_t)r));
         s->rail_tilt[3 * p] = tilt[0], s->rail_tilt[3 * p + 1] = tilt[1], s->rail_tilt[3 * p + 2] = pull;
     }
@@ -131,7 +132,7 @@ void cs_post_place_nodes(const cs_model *model, cs_state *s, int p, const double
         cs_cable_state *cs = &s->cables[k];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
         if (i > 0)
-            cs_post_attachment_from(model, p, tilt, pull, sn, c, cs_post_cable_z(model, s, p, k),
+            cs_post_attachment_from(model, p, tilt, pull, upright, sn, c, cs_post_cable_z(model, s, p, k),
                                     cs->pos + 3 * i);
     }
 }
@@ -385,7 +386,7 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     /* base shear from the post's own moment over the load height (what equilibrium allows), so a
      * step the solver left short of equilibrium cannot report a shear it never had */
     ps->shear = v2_norm(ps->moment[0], ps->moment[1]) / (pm->load_height + pm->pivot);
-    ps->axial = cs_post_axial_pull(model, s, p); /* the ropes' and rails' pull along it, as solved */
+    ps->axial = cs_post_axial_pull(model, s, p); /* the ropes' and rails' pull out of it, as solved */
 }
 
 double cs_post_fold_limit(const cs_post_model *pm, const cs_post_state *ps) {
@@ -710,7 +711,8 @@ int cs_post_capture(const cs_model *model, cs_state *s, int waiting) {
         cs_post_state *ps = &s->posts[p];
         if (ps->captured || !cs_post_in_barrier(ps)) continue;
         double top[3], rel[3], b[3];
-        cs_post_attachment(model, p, ps->tilt, ps->pull, zb, top);
+        int upright = cs_post_slides_upright(model, s, p);
+        cs_post_attachment(model, p, ps->tilt, ps->pull, upright, zb, top);
         v3_sub(rel, o, top);
         double d = v3_dot(rel, f), lat = v3_dot(rel, left);
         int face = d >= 0.0 && fabs(lat) <= 0.5 * v->front_width + CS_CAPTURE_MARGIN && d <= zb;
@@ -718,7 +720,7 @@ int cs_post_capture(const cs_model *model, cs_state *s, int waiting) {
          * behind the face and `in_side` within the nearer side */
         double zs = v->side_bottom - v->cg_height, lo[3] = {0.0, 0.0, zs}, wl[3];
         quat_rotate(wl, s->quat, lo);
-        cs_post_attachment(model, p, ps->tilt, ps->pull, s->pos[2] + wl[2], top);
+        cs_post_attachment(model, p, ps->tilt, ps->pull, upright, s->pos[2] + wl[2], top);
         v3_sub(rel, top, s->pos);
         quat_unrotate(b, s->quat, rel);
         double past_face = v->cg_to_front - s->crush - b[0], in_side = 0.5 * v->front_width - fabs(b[1]);
@@ -771,7 +773,7 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
     for (int a = 0; a < 2; a++)
         for (int b = 0; b < 2; b++)
             cs_rows_add(rows, row + a, row + b, kr[2 * a + b] / unit);
-    int pc = rows->pull_index[p];
+    int pc = cs_post_slides_upright(model, s, p) ? -1 : rows->pull_index[p]; /* the arms grow with w */
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;

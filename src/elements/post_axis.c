@@ -2,9 +2,11 @@
 /* The axis of a tilted post: a post tilts about its pivot by a rotation vector alpha = theta * u (u the
  * horizontal direction its top moves), so a point at height z (when upright) sits at
  *   pivot + (z + pivot depth + w) a(alpha),   a = (u sin theta, cos theta),
- * w how far it has slid out of the ground along its axis (post_pullout.c), and J = da/dalpha carries a
- * force at that point into the post's generalised moment (post.c, rail.c).
- * Geometry only: no forces, no state; what the post and the rails both build on. */
+ * w how far it has slid out of the ground along its axis (post_pullout.c), or, for a post whose stub
+ * stays upright, at pivot + (z + pivot depth) a(alpha) + w e_z; J = da/dalpha carries a force at that
+ * point into the post's generalised moment (post.c, rail.c).
+ * Geometry only: no forces, and of the state only how a post slides; what the post and the rails both
+ * build on. */
 #include "core/vec3.h"
 #include "elements/elements.h"
 
@@ -34,19 +36,27 @@ void cs_post_axis_terms(double t, double *s, double *g, double *c) {
     }
 }
 
-/* The point at height z (when upright) of post p at tilt alpha, slid out by w along its axis, s and c from
- * cs_post_axis_terms at |alpha|: pivot + (z + pivot depth + w) a(alpha). */
-void cs_post_attachment_from(const cs_model *model, int p, const double *tilt, double pull, double s,
-                             double c, double z, double *out) {
-    double dp = model->posts[p].pivot, l = z + dp + pull;
-    v3_set(out, model->posts[p].x + l * tilt[0] * s, l * tilt[1] * s, -dp + l * c);
+/* The point at height z (when upright) of post p at tilt alpha, slid out by w, s and c from
+ * cs_post_axis_terms at |alpha|: pivot + (z + pivot depth + w) a(alpha), or upright pivot + (z + pivot
+ * depth) a(alpha) + w e_z. */
+void cs_post_attachment_from(const cs_model *model, int p, const double *tilt, double pull, int upright,
+                             double s, double c, double z, double *out) {
+    double dp = model->posts[p].pivot, l = z + dp + (upright ? 0.0 : pull);
+    v3_set(out, model->posts[p].x + l * tilt[0] * s, l * tilt[1] * s, -dp + l * c + (upright ? pull : 0.0));
 }
 
-void cs_post_attachment(const cs_model *model, int p, const double *tilt, double pull, double z,
+void cs_post_attachment(const cs_model *model, int p, const double *tilt, double pull, int upright, double z,
                         double *out) {
     double s, g, c;
     cs_post_axis_terms(v2_norm(tilt[0], tilt[1]), &s, &g, &c);
-    cs_post_attachment_from(model, p, tilt, pull, s, c, z, out);
+    cs_post_attachment_from(model, p, tilt, pull, upright, s, c, z, out);
+}
+
+void cs_post_slide_direction(const cs_model *model, const cs_state *s, int p, const double *tilt, double *d) {
+    if (cs_post_slides_upright(model, s, p))
+        v3_set(d, 0.0, 0.0, 1.0);
+    else
+        cs_post_axis_at(tilt, d);
 }
 
 /* Jacobian of the post axis a(alpha), 3 x 2, row-major, from cs_post_axis_terms' s and g at |alpha|. */

@@ -1,8 +1,11 @@
 /* SPDX-License-Identifier: MIT */
-/* A post sliding out of its footing. Once the ropes' and rails' pull along a post's axis reaches its
- * pullout capacity Q0 (design data, or the shaft friction q pi B D^2 / 2 that grows linearly with depth:
- * footing.c), the post slides out along its axis by w, an unknown of the barrier's solve (rows.h) that
- * moves every point of it by w a(alpha) (post_axis.c). The shaft's friction is then what the length
+/* A post sliding out of its footing. Once the ropes' and rails' pull along the direction d a post slides
+ * in reaches its pullout capacity Q0 (design data, or the shaft friction q pi B D^2 / 2 that grows linearly
+ * with depth: footing.c), the post slides out by w, an unknown of the barrier's solve (rows.h) that moves
+ * every point of it by w d (cs_post_slide_direction, post_axis.c): d = e_z for a post hinged at grade, whose
+ * stub stays upright in its footing and carries the bent post up with it, so that only the pull's vertical
+ * part draws the footing out; d = a(alpha) for a post whose footing turns in the soil with it, and for a
+ * struck post. The shaft's friction is then what the length
  * still in the ground holds: with friction growing linearly with depth and mobilised all along the
  * shaft, a post slid out by w_p keeps D - w_p in the ground and holds
  *   c(w_p) = Q0 x^2,   x = 1 - w_p / D,
@@ -68,10 +71,11 @@ static double trial_of(const cs_post_model *pm, const cs_post_state *ps) {
     return pm->pull_stiffness * (ps->pull - ps->pull_plastic);
 }
 
-/* The ropes' and rails' pull along post p's axis, the spans' chords from the solve's rows if given. */
+/* The ropes' and rails' pull on post p along the direction it slides, the spans' chords from the solve's
+ * rows if given. */
 static double axial_pull(const cs_model *model, const cs_state *s, int p, const cs_rows *rows) {
     double a[3], f = 0.0;
-    cs_post_axis_at(s->posts[p].tilt, a);
+    cs_post_slide_direction(model, s, p, s->posts[p].tilt, a);
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
@@ -223,10 +227,10 @@ void cs_post_struck_slide_commit(const cs_model *model, cs_state *s, int p) {
 }
 
 /* ---- the pull's row of the barrier solve ----
- * Unknown: the pull w. Row: (a(alpha) . sum f_c + the rails' pull along a - R(w) - the slide's inertial
- * force) / U, U the rows' force unit; its slopes: on the nodes' positions and materials (through the
- * spans), on the tilt (the axis turning under the pull, J^T f) and on w (the nodes carried along a, and
- * -dR/dw - m / h^2). */
+ * Unknown: the pull w. Row: (d . sum f_c + the rails' pull along d - R(w) - the slide's inertial force) /
+ * U, U the rows' force unit; its slopes: on the nodes' positions and materials (through the spans), on the
+ * tilt (the axis turning under the pull, J^T f, where d = a(alpha)) and on w (the nodes carried along d,
+ * and -dR/dw - m / h^2). */
 static void residual(const cs_model *model, const cs_state *s, const cs_rows *rows, const cs_slot *u,
                      double *r) {
     int p = u->a;
@@ -241,7 +245,8 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
     const cs_post_state *ps = &s->posts[p];
     const double *ja = rows->axes + 18 * p;
     double unit = cs_rows_force_unit(model), a[3], x, slope, mass;
-    cs_post_axis_at(ps->tilt, a);
+    int turns = !cs_post_slides_upright(model, s, p); /* its direction turns with the tilt */
+    cs_post_slide_direction(model, s, p, ps->tilt, a);
     return_map(pm, ps, trial_of(pm, ps), &x, &slope);
     inertia(pm, ps, s->h, &mass);
     cs_rows_add(rows, row, row, -(pm->pull_stiffness * slope + mass) / unit);
@@ -254,7 +259,7 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
         cs_node_force(cs, i, cs_rows_chords(model, rows, c), f);
         cs_rows_force_gradient(sp, rho, gp, gm);
         cs_rows_add_node_gradient(model, s, rows, row, c, i, gp, gm);
-        for (int b = 0; b < 2; b++) /* the axis turning under the pull */
+        for (int b = 0; b < 2 && turns; b++) /* the axis turning under the pull */
             cs_rows_add(rows, row, tc + b, (ja[b] * f[0] + ja[2 + b] * f[1] + ja[4 + b] * f[2]) / unit);
     }
 }

@@ -53,7 +53,7 @@ static void rail_point(const cs_model *model, const cs_state *s, int r, int p, c
         pull == s->rail_tilt[3 * p + 2])
         v3_copy(out, s->rail_pos + 3 * ((size_t)p * (size_t)model->rail_count + (size_t)r));
     else
-        cs_post_attachment(model, p, tilt, pull, model->rails[r].z, out);
+        cs_post_attachment(model, p, tilt, pull, cs_post_slides_upright(model, s, p), model->rails[r].z, out);
 }
 
 static bar bar_at(const cs_model *model, const cs_state *s, int r, int k, const double *ta,
@@ -128,13 +128,15 @@ double cs_rail_pull(const cs_model *model, const cs_state *s, int p, const doubl
  * dQ_p/dalpha_p = -l_p^2 J_p^T G J_p + l_p dJ_p^T F_p and dQ_p/dalpha_o = l_p l_o J_p^T G J_o; a post
  * sliding out adds dQ_p/dw_p = J_p^T F_p - l_p J_p^T G a_p, dQ_p/dw_o = l_p J_p^T G a_o, and its pull's row
  * a_p . F_p (in the force unit U) has the slopes J_p^T F_p - l_p J_p^T G a_p on alpha_p, l_o J_o^T G a_p on
- * alpha_o, -a_p . G a_p on w_p and a_p . G a_o on w_o (G symmetric). */
+ * alpha_o, -a_p . G a_p on w_p and a_p . G a_o on w_o (G symmetric). a_p is the direction p slides: its
+ * axis, or e_z for a post sliding upright, whose arm l_p does not grow with w_p and whose e_z does not
+ * turn with its tilt, so that its two J_p^T F_p terms drop. */
 void cs_rail_jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row, int p,
                       double unit) {
     const double *ja = rows->axes + 18 * p, *dj = ja + 6;
-    int pp = rows->pull_index[p];
+    int pp = rows->pull_index[p], turns = !cs_post_slides_upright(model, s, p);
     double ap[3] = {0.0, 0.0, 0.0}, force_unit = cs_rows_force_unit(model);
-    if (pp >= 0) cs_post_axis_at(s->posts[p].tilt, ap); /* only a post sliding out reads its axis */
+    if (pp >= 0) cs_post_slide_direction(model, s, p, s->posts[p].tilt, ap); /* read only where p slides */
     for (int r = 0; r < model->rail_count; r++) {
         const cs_rail_model *rm = &model->rails[r];
         double lp = cs_post_arm(model, s, p, rm->z);
@@ -151,7 +153,7 @@ void cs_rail_jacobian(const cs_model *model, const cs_state *s, const cs_rows *r
             double lo = cs_post_arm(model, s, o, rm->z), ao[3] = {0.0, 0.0, 0.0}, gap[3], gao[3];
             int col_o = rows->tilt_index[o], po = rows->pull_index[o];
             const double *jo = rows->axes + 18 * o; /* placed with the unknowns (only read if o is one) */
-            if (po >= 0) cs_post_axis_at(s->posts[o].tilt, ao); /* read only where o slides out */
+            if (po >= 0) cs_post_slide_direction(model, s, o, s->posts[o].tilt, ao); /* read where o slides */
             for (int i = 0; i < 3; i++) /* G a_p and G a_o: the force's change with each pull */
                 gap[i] = g[i][0] * ap[0] + g[i][1] * ap[1] + g[i][2] * ap[2],
                 gao[i] = g[i][0] * ao[0] + g[i][1] * ao[1] + g[i][2] * ao[2];
@@ -159,7 +161,8 @@ void cs_rail_jacobian(const cs_model *model, const cs_state *s, const cs_rows *r
                 double gj[3]; /* G J_p e_a, the force's change with p's own tilt (less its sign) */
                 for (int i = 0; i < 3; i++)
                     gj[i] = g[i][0] * ja[a] + g[i][1] * ja[2 + a] + g[i][2] * ja[4 + a];
-                double jf = ja[a] * f[0] + ja[2 + a] * f[1] + ja[4 + a] * f[2];
+                /* J_p^T F_p: the arm growing along a leaned slide, the direction turning with the tilt */
+                double jf = turns ? ja[a] * f[0] + ja[2 + a] * f[1] + ja[4 + a] * f[2] : 0.0;
                 for (int m = 0; m < 2; m++) {
                     double jtg = ja[m] * gj[0] + ja[2 + m] * gj[1] + ja[4 + m] * gj[2];
                     double turn = dj[6 * a + m] * f[0] + dj[6 * a + 2 + m] * f[1] + dj[6 * a + 4 + m] * f[2];

@@ -14,8 +14,8 @@ typedef struct dep {
 } dep;
 
 /* The columns that move node j of cable c other than the crush (whose column is a difference quotient,
- * system.c): a post's two tilts (the attachment's arm times the axis' Jacobian) and its pull (the axis),
- * a contact's height (the body's z axis). */
+ * system.c): a post's two tilts (the attachment's arm times the axis' Jacobian) and its pull (the direction
+ * it slides: cs_post_slide_direction), a contact's height (the body's z axis). */
 static int position_columns(const cs_model *model, const cs_state *s, const cs_rows *rows, int c, int j,
                             dep *out) {
     const cs_cable_state *cs = &s->cables[c];
@@ -27,7 +27,7 @@ static int position_columns(const cs_model *model, const cs_state *s, const cs_r
             out[k] = (dep){rows->tilt_index[id] + k, {l * ja[k], l * ja[2 + k], l * ja[4 + k]}};
         if (rows->pull_index[id] < 0) return 2;
         out[2].col = rows->pull_index[id];
-        cs_post_axis_at(s->posts[id].tilt, out[2].v);
+        cs_post_slide_direction(model, s, id, s->posts[id].tilt, out[2].v);
         return 3;
     }
     if (id == CS_NODE_START || id == CS_NODE_END) {
