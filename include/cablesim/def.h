@@ -153,7 +153,7 @@ typedef struct cs_footing_def {
     double coeff_depth;       /**< c_d (paper 2.37; building code 2.34) */
     double coeff_height;      /**< c_h (paper 2.64; building code 2.55) */
     double rotation_limit;    /**< as the post's rotation_limit, where the footing turns in the soil, rad */
-    double pullout_capacity;  /**< axial pull along the post that pulls it out, N; 0: the embedment's
+    double pullout_capacity;  /**< pull out of the ground that draws the footing out, N; 0: the embedment's
                                  skin friction (skin_friction pi B D^2 / 2) */
     double dynamic_factor;    /**< soil resistance under impact over Eq. 21's for a member of the bogie tests'
                                  post's proportions (calibrated, assumptions.md); scaled to a member's own

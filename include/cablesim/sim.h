@@ -279,7 +279,7 @@ typedef struct cs_post_view {
     double base_moment;    /**< N m */
     double base_shear;     /**< N */
     double axial_pull;     /**< N, positive pulling the post out */
-    double withdrawal;     /**< how far it has slid out of its footing along its axis, m */
+    double withdrawal;     /**< how far it has slid out of its footing (up, or along its axis), m */
     double
         moment_capacity; /**< Mp about the base, or the footing's P (h + 2D/3) about its pivot if it is the
                             weaker (a footing sliding out: what its length still in the ground holds), N m */

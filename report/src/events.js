@@ -10,7 +10,7 @@ const KINDS = {
   post_rotation_limit: { group: 'fail', text: (who) => `${who} fail${s(who)}: struck and tilted past the rotation limit, the vehicle rides over and it leaves the barrier`, value: (v) => `tilt ${fmt((v * 180) / Math.PI, 1)}°` },
   post_down: { group: 'fail', text: (who) => `${who} ${/ and /.test(who) ? 'are' : 'is'} down: folded over to the ground, still holding the cables threaded or clamped on ${/ and /.test(who) ? 'them' : 'it'}`, value: (v) => `tilt ${fmt((v * 180) / Math.PI, 1)}°` },
   post_shear: { group: 'fail', text: (who) => `${who} fail${s(who)}: sheared off at the base`, value: (v) => `base shear ${pair('force', v)}` },
-  post_withdrawal: { group: 'yield', text: (who) => `${who} start${s(who)} sliding out of the footing (pull along the post at its pullout capacity)`, value: (v) => `axial pull ${pair('force', v)}` },
+  post_withdrawal: { group: 'yield', text: (who) => `${who} start${s(who)} sliding out of the footing (pull out of it at its pullout capacity)`, value: (v) => `axial pull ${pair('force', v)}` },
   post_pullout: { group: 'fail', text: (who) => `${who} fail${s(who)}: slid all the way out of the footing`, value: (v) => `axial pull ${pair('force', v)}` },
   anchor_yield: { group: 'yield', text: (who) => `${who} start${s(who)} sliding through the soil (footing at its capacity)`, value: (v) => `capacity ${pair('force', v)}` },
   anchor_withdrawal: { group: 'yield', text: (who) => `${who} start${s(who)} rising out of the ground (the cables' uplift at its pullout capacity)`, value: (v) => `uplift ${pair('force', v)}` },

@@ -156,11 +156,15 @@ static inline int cs_post_in_barrier(const cs_post_state *ps) {
            ps->status == CS_POST_DOWN;
 }
 /* Whether post p slides out of its footing straight up: hinged at grade (its steel yields before its
- * footing turns), the stub in the footing stays vertical and carries the bent post up with it. A footing
- * that turns in the soil with its post, and a struck post (the edge drags it), slide along the post's
- * leaned axis (post_pullout.c; docs/theory.md, "A hinged post's stub stays upright"). */
+ * footing turns: !soil_yields), the stub in the footing stays vertical and carries the bent post up with
+ * it, also once its footing's moment, falling as it comes out, is the weaker. A post whose soil yields
+ * first turns with its footing and slides along its leaned axis, as a struck post does (the edge drags
+ * it) (post_pullout.c; docs/theory.md, "A hinged post's stub stays upright"). */
+static inline int cs_post_upright(const cs_post_model *pm, const cs_post_state *ps) {
+    return !pm->soil_yields && !ps->captured;
+}
 static inline int cs_post_slides_upright(const cs_model *model, const cs_state *s, int p) {
-    return !model->posts[p].soil_yields && !s->posts[p].captured;
+    return cs_post_upright(&model->posts[p], &s->posts[p]);
 }
 /* The arm of post p's point at height z from its pivot along its axis: z + pivot depth, and its pull if
  * it slides out along its axis (a post sliding upright carries its pivot up with it). */
@@ -207,9 +211,14 @@ double cs_post_elastic_energy(const cs_model *model, const cs_state *s, int post
 double cs_post_kinetic_energy(const cs_model *model, const cs_state *s, int post);
 int cs_post_solved(const cs_model *model, const cs_state *s, int post);
 int cs_post_check_failure(const cs_model *model, cs_state *s, int post);
-/* How far a standing post folds: a post carrying ropes until its top reaches grade (lie_angle), where the
- * ground stops it, a struck post to its rotation limit, where the vehicle's edge rides over it; rad. */
+/* How far a standing post folds: a post carrying ropes until its top reaches grade (cs_post_lie_angle),
+ * where the ground stops it, a struck post to its rotation limit, where the vehicle's edge rides over it;
+ * rad. */
 double cs_post_fold_limit(const cs_post_model *pm, const cs_post_state *ps);
+/* The tilt at which its top reaches grade: acos(pivot / (height + pivot)) as built (lie_angle), and for a
+ * post slid upright by w, its pivot w higher, acos((pivot - w) / (height + pivot)), past 90 degrees; w that
+ * of the last commit, so that the ground's stop holds still over a step (as a sliding post's capacity). */
+double cs_post_lie_angle(const cs_post_model *pm, const cs_post_state *ps);
 /* The residual at a tilt, the post's cable nodes where they stand (the caller places them; chords, axis
  * and rails as formed by the placement, or NULL: found here). */
 void cs_post_residual_at(const cs_model *model, const cs_state *s, int post, const double *tilt,

@@ -144,8 +144,8 @@ void cs_post_resistance(const cs_post_model *pm, const cs_post_state *ps, const 
     q[0] = tr[0] * f, q[1] = tr[1] * f;
 }
 
-/* The ground under a post folded down: past the tilt at which its top reaches grade (lie_angle) the top
- * bears on the ground, a one-sided stop `Q_g = k_g (|alpha| - lie) u` against the turn, stiff enough that
+/* The ground under a post folded down: past the tilt at which its top reaches grade (cs_post_lie_angle) the
+ * top bears on the ground, a one-sided stop `Q_g = k_g (|alpha| - lie) u` against the turn, stiff enough that
  * the post's own capacity presses it CS_GROUND_STOP_TURN past (k_g = M_cap / that turn). The ground, not
  * the base, carries it: it is not in the base moment or shear. A struck post never reaches it (it leaves
  * at its rotation limit). */
@@ -158,12 +158,12 @@ static double ground_stiffness(const cs_post_model *pm) {
  * subtracted from k as the residual's); returns its penetration past the lie angle, rad (0 if clear). */
 static double ground_stop(const cs_post_model *pm, const cs_post_state *ps, const double *tilt, double *q,
                           double *k) {
-    double n = v2_norm(tilt[0], tilt[1]);
-    if (ps->captured || !(n > pm->lie_angle)) return 0.0;
-    double kg = ground_stiffness(pm), u[2] = {tilt[0] / n, tilt[1] / n}, over = n - pm->lie_angle;
+    double n = v2_norm(tilt[0], tilt[1]), lie = cs_post_lie_angle(pm, ps);
+    if (ps->captured || !(n > lie)) return 0.0;
+    double kg = ground_stiffness(pm), u[2] = {tilt[0] / n, tilt[1] / n}, over = n - lie;
     if (q) q[0] += kg * over * u[0], q[1] += kg * over * u[1];
     if (k) { /* d(kg (n - lie) u)/dalpha = kg (u u^T + (1 - lie / n)(I - u u^T)) */
-        double a = 1.0 - pm->lie_angle / n;
+        double a = 1.0 - lie / n;
         k[0] -= kg * (u[0] * u[0] + a * (1.0 - u[0] * u[0]));
         k[1] -= kg * (1.0 - a) * u[0] * u[1];
         k[2] -= kg * (1.0 - a) * u[0] * u[1];
@@ -389,8 +389,14 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     ps->axial = cs_post_axial_pull(model, s, p); /* the ropes' and rails' pull out of it, as solved */
 }
 
+double cs_post_lie_angle(const cs_post_model *pm, const cs_post_state *ps) {
+    if (!ps->withdrawing || !cs_post_upright(pm, ps)) return pm->lie_angle;
+    double c = (pm->pivot - ps->pull_commit) / (pm->height + pm->pivot);
+    return acos(c > -1.0 ? c : -1.0);
+}
+
 double cs_post_fold_limit(const cs_post_model *pm, const cs_post_state *ps) {
-    return ps->captured ? pm->rot_limit : pm->lie_angle;
+    return ps->captured ? pm->rot_limit : cs_post_lie_angle(pm, ps);
 }
 
 /* Failure of a post in the barrier: a struck post turned to its rotation limit, base shear, pullout: a
@@ -751,9 +757,9 @@ int cs_post_end_waiting(const cs_model *model, cs_state *s) {
 
 /* ---- the post's rows of the barrier solve ----
  * Unknowns: the tilt alpha (2) (and, sliding out, the pull w: post_pullout.c, whose column the arms
- * z + d_p + w depend on). Rows: Q_cables(alpha) - Q_resist(alpha) - J (alpha - alpha_c - h w_c) / h^2,
- * in units of the post's moment_scale (its strongest rope's strength at that rope's lever, cs_post_derive),
- * so that one tolerance is one force everywhere. */
+ * z + d_p + w depend on where it slides along its axis). Rows: Q_cables(alpha) - Q_resist(alpha) - J (alpha -
+ * alpha_c - h w_c) / h^2, in units of the post's moment_scale (its strongest rope's strength at that rope's
+ * lever, cs_post_derive), so that one tolerance is one force everywhere. */
 static void residual(const cs_model *model, const cs_state *s, const cs_rows *rows, const cs_slot *u,
                      double *r) {
     double q[2];
