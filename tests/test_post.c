@@ -561,6 +561,65 @@ static void a_post_slides_out_of_its_footing(void **state) {
     world_free(w);
 }
 
+/* A post hinged at grade slides out of its footing straight up (post_axis.c, cs_post_slide_direction;
+ * docs/theory.md, "A hinged post's stub stays upright"): APS3's line post 0 (its steel yields before its
+ * footing: pivot at grade), leaning 0.8 rad across the barrier with its rope running past it. Its
+ * points move by w e_z as it slides w (to 1e-12 m), so the pull that draws its footing out is the ropes'
+ * vertical force on it, not their force along its leaned axis (which counts sin 0.8 = 0.72 of the
+ * horizontal part); struck, it slides along its axis. Slid 0.3 m, it lies on the ground where its raised
+ * top meets grade, at acos((pivot - w) / (height + pivot)), past 90 degrees: its top there is at grade to
+ * 1e-12 m. */
+static void a_hinged_post_slides_up_and_lies_where_its_top_meets_grade(void **state) {
+    (void)state;
+    world *w = make_world(0.0, 0.0);
+    const cs_model *m = w->model;
+    const cs_post_model *pm = &m->posts[0];
+    cs_post_state *ps = &w->state->posts[0];
+    pull(w, 0.01);
+    assert_false(pm->soil_yields);
+    assert_true(pm->pivot == 0.0);
+    double tilt[2] = {0.0, 0.8}, a[3], d[3], p0[3], p1[3], z = m->cables[0].z;
+    cs_post_axis_at(tilt, a);
+    ps->tilt[0] = tilt[0], ps->tilt[1] = tilt[1];
+    cs_post_slide_direction(m, w->state, 0, tilt, d);
+    assert_true(d[0] == 0.0 && d[1] == 0.0 && d[2] == 1.0);
+    cs_post_attachment(m, 0, tilt, 0.0, 1, z, p0);
+    cs_post_attachment(m, 0, tilt, 0.25, 1, z, p1);
+    CHECK_ABS(p1[0] - p0[0], 0.0, 1e-12);
+    CHECK_ABS(p1[1] - p0[1], 0.0, 1e-12);
+    CHECK_ABS(p1[2] - p0[2], 0.25, 1e-12);
+    /* the rope's force on the post, placed at that lean */
+    cs_cable_state *cs = &w->state->cables[0];
+    int i = cs->where[0];
+    assert_true(i > 0);
+    cs_post_place_nodes(m, w->state, 0, tilt, NULL);
+    cs_cable_update_span(&m->cables[0], cs, i - 1, NULL);
+    cs_cable_update_span(&m->cables[0], cs, i, NULL);
+    double f[3];
+    cs_node_force(cs, i, NULL, f);
+    double up = cs_post_axial_pull(m, w->state, 0), along = v3_dot(f, a);
+    printf("leaning 0.8 rad: the rope pulls %.1f kN up, %.1f kN along the post, %.1f kN in all\n", f[2] / 1e3,
+           along / 1e3, v3_norm(f) / 1e3);
+    CHECK_ABS(up, f[2], 1e-12 * v3_norm(f));
+    assert_true(along - up > 0.3 * v3_norm(f));
+    ps->captured = 1; /* struck: along its axis */
+    cs_post_slide_direction(m, w->state, 0, tilt, d);
+    CHECK_ABS(v3_dot(d, a), 1.0, 1e-15);
+    ps->captured = 0;
+    /* slid 0.3 m (at the last commit), it lies where its top meets grade */
+    ps->withdrawing = 1, ps->pull_commit = ps->pull = 0.3;
+    double lie = cs_post_lie_angle(pm, ps), top[3];
+    CHECK_REL(lie, acos((pm->pivot - 0.3) / (pm->height + pm->pivot)), 1e-15);
+    assert_true(lie > 2.0 * atan(1.0)); /* past 90 degrees */
+    CHECK_REL(cs_post_fold_limit(pm, ps), lie, 1e-15);
+    double at[2] = {0.0, lie};
+    cs_post_attachment(m, 0, at, 0.3, 1, pm->height, top);
+    CHECK_ABS(top[2], 0.0, 1e-12);
+    ps->withdrawing = 0; /* standing in its footing: the lie angle as built */
+    CHECK_REL(cs_post_lie_angle(pm, ps), pm->lie_angle, 1e-15);
+    world_free(w);
+}
+
 /* A post with mass sliding out of its footing, solved by the fallback's local problems alone (relax.c), as
  * in a step whose Newton stalled: a weightless rope whose spans rise 3 m over 5 m to either side pulls post
  * 0 (5 kg/m) along its axis at 1.5 times its pullout capacity Q0, and it is let go from rest as it starts
@@ -845,6 +904,7 @@ int main(void) {
         cmocka_unit_test(free_swing),
         cmocka_unit_test(a_folding_post_gains_nothing_from_its_damper),
         cmocka_unit_test(a_post_slides_out_of_its_footing),
+        cmocka_unit_test(a_hinged_post_slides_up_and_lies_where_its_top_meets_grade),
         cmocka_unit_test(a_sliding_post_balances_under_the_fallback),
         cmocka_unit_test(a_sliding_post_the_ropes_let_go_balances_under_newton),
         cmocka_unit_test(axis_jacobian_derivatives),
