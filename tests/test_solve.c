@@ -58,10 +58,10 @@ static int beside_a_yielding_rail(const cs_model *m, const cs_state *s, int p) {
         for (int k = p - 1; k <= p; k++) {
             if (k < 0 || k + 1 >= m->post_count) continue;
             double a[3], b[3], l0 = m->posts[k + 1].x - m->posts[k].x;
-            cs_post_attachment(m, k, s->posts[k].tilt, s->posts[k].pull, cs_post_slides_upright(m, s, k),
+            cs_post_attachment(m, k, s->posts[k].tilt, s->posts[k].pull, cs_post_upright(&m->posts[k]),
                                m->rails[r].z, a);
             cs_post_attachment(m, k + 1, s->posts[k + 1].tilt, s->posts[k + 1].pull,
-                               cs_post_slides_upright(m, s, k + 1), m->rails[r].z, b);
+                               cs_post_upright(&m->posts[k + 1]), m->rails[r].z, b);
             double d = sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
                             (b[2] - a[2]) * (b[2] - a[2]));
             double n = m->rails[r].ea / l0 *

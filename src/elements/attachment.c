@@ -52,7 +52,7 @@ static int held_above(const cs_model *model, const cs_state *s, int p, int c) {
 static void post_axis(const cs_model *model, const cs_state *s, int p, double axis[3]) {
     const cs_post_state *ps = &s->posts[p];
     double base[3], top[3];
-    int upright = cs_post_slides_upright(model, s, p);
+    int upright = cs_post_upright(&model->posts[p]);
     cs_post_attachment(model, p, ps->tilt, ps->pull, upright, 0.0, base);
     cs_post_attachment(model, p, ps->tilt, ps->pull, upright, 1.0, top);
     v3_sub(axis, top, base);

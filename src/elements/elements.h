@@ -130,7 +130,7 @@ void cs_node_force(const cs_cable_state *cs, int i, const double *chords, double
 /* sin t / t, its derivative over t and cos t at t = |alpha|. */
 void cs_post_axis_terms(double t, double *s, double *g, double *c);
 /* The point at height z (when upright) of post p at a tilt, slid out of the ground by `pull`, straight up
- * if `upright` (cs_post_slides_upright), else along its axis: from cs_post_axis_terms' s and c, or found. */
+ * if `upright` (cs_post_upright), else along its axis: from cs_post_axis_terms' s and c, or found. */
 void cs_post_attachment_from(const cs_model *model, int post, const double *tilt, double pull, int upright,
                              double s, double c, double z, double *out);
 void cs_post_attachment(const cs_model *model, int post, const double *tilt, double pull, int upright,
@@ -157,22 +157,20 @@ static inline int cs_post_in_barrier(const cs_post_state *ps) {
 }
 /* Whether post p slides out of its footing straight up: hinged at grade (its steel yields before its
  * footing turns: !soil_yields), the stub in the footing stays vertical and carries the bent post up with
- * it, also once its footing's moment, falling as it comes out, is the weaker. A post whose soil yields
- * first turns with its footing and slides along its leaned axis, as a struck post does (the edge drags
- * it) (post_pullout.c; docs/theory.md, "A hinged post's stub stays upright"). */
-static inline int cs_post_upright(const cs_post_model *pm, const cs_post_state *ps) {
-    return !pm->soil_yields && !ps->captured;
-}
-static inline int cs_post_slides_upright(const cs_model *model, const cs_state *s, int p) {
-    return cs_post_upright(&model->posts[p], &s->posts[p]);
+ * it, also once its footing's moment, falling as it comes out, is the weaker, and also once the vehicle
+ * strikes it (the edge's horizontal push has no vertical part to draw the stub out). A post whose soil
+ * yields first turns with its footing and slides along its leaned axis, struck or not (post_pullout.c;
+ * docs/theory.md, "A hinged post's stub stays upright"). */
+static inline int cs_post_upright(const cs_post_model *pm) {
+    return !pm->soil_yields;
 }
 /* The arm of post p's point at height z from its pivot along its axis: z + pivot depth, and its pull if
  * it slides out along its axis (a post sliding upright carries its pivot up with it). */
 static inline double cs_post_arm(const cs_model *model, const cs_state *s, int p, double z) {
-    return z + model->posts[p].pivot + (cs_post_slides_upright(model, s, p) ? 0.0 : s->posts[p].pull);
+    return z + model->posts[p].pivot + (cs_post_upright(&model->posts[p]) ? 0.0 : s->posts[p].pull);
 }
 /* The unit direction post p slides out of its footing along at a tilt: up, or its axis a(alpha). */
-void cs_post_slide_direction(const cs_model *model, const cs_state *s, int p, const double *tilt, double *d);
+void cs_post_slide_direction(const cs_model *model, int p, const double *tilt, double *d);
 /* Cable c's height on post p: as built, plus its slot's ride up the slot (attachment.c). */
 static inline double cs_post_cable_z(const cs_model *model, const cs_state *s, int p, int c) {
     return model->cables[c].z + (model->posts[p].attach == CS_ATTACH_SLOT ? s->posts[p].lift : 0.0);

@@ -121,7 +121,7 @@ void cs_post_place_nodes(const cs_model *model, cs_state *s, int p, const double
     cs_post_axis_terms(v2_norm(tilt[0], tilt[1]), &sn, &g, &c);
     if (axis) cs_post_axis_jacobian_from(tilt, sn, g, axis);
     double pull = s->posts[p].pull;
-    int upright = cs_post_slides_upright(model, s, p);
+    int upright = cs_post_upright(&model->posts[p]);
     if (s->rail_pos && model->rail_count) { /* the rails' points, kept with the tilt and pull they are at */
         for (int r = 0; r < model->rail_count; r++)
             cs_post_attachment_from(model, p, tilt, pull, upright, sn, c, model->rails[r].z,
@@ -377,8 +377,9 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     if (ps->captured) {
         /* the horizontal push on a post leaning by theta has the component push sin(theta) along
          * the post, out of the ground: what pulls a short post out (its skin friction grows as D^2,
-         * its lateral capacity more slowly) */
-        ps->shear = ps->push, ps->axial = ps->push * sin(v2_norm(ps->tilt[0], ps->tilt[1]));
+         * its lateral capacity more slowly); none up the upright stub of a post hinged at grade */
+        ps->shear = ps->push;
+        ps->axial = cs_post_upright(pm) ? 0.0 : ps->push * sin(v2_norm(ps->tilt[0], ps->tilt[1]));
         cs_post_struck_slide_commit(model, s, p);
         return;
     }
@@ -390,7 +391,7 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
 }
 
 double cs_post_lie_angle(const cs_post_model *pm, const cs_post_state *ps) {
-    if (!ps->withdrawing || !cs_post_upright(pm, ps)) return pm->lie_angle;
+    if (!ps->withdrawing || !cs_post_upright(pm)) return pm->lie_angle;
     double c = (pm->pivot - ps->pull_commit) / (pm->height + pm->pivot);
     return acos(c > -1.0 ? c : -1.0);
 }
@@ -515,12 +516,19 @@ static void edge_point(const cs_model *model, int p, int pusher, const double *p
     v3_add(pt, pt, pos);
 }
 
-/* A struck post's lean for an edge at dr (its reach added) and a slide w: the struck point, ps->lever + w
- * from the pivot (the slide carries it out along the post), is where the edge is: sin(theta) = dr /
- * (lever + w). The tilt is theta along f and the permanent set across it (the edge pushes along f only, so
- * it turns no tilt across). Returns theta. */
-static double lean_at(const cs_post_state *ps, double dr, double w, const double *f, double *tilt) {
-    double sn = dr / (ps->lever + w);
+/* The struck point's distance from the pivot at a slide w: ps->lever + w for a post that slides out along
+ * its axis (the slide carries the point out with it), ps->lever for one hinged at grade, whose stub carries
+ * the hinge up with it (cs_post_upright). */
+static double struck_arm(const cs_post_model *pm, const cs_post_state *ps, double w) {
+    return ps->lever + (cs_post_upright(pm) ? 0.0 : w);
+}
+
+/* A struck post's lean for an edge at dr (its reach added) and a slide w: the struck point is where the
+ * edge is, sin(theta) = dr / struck_arm. The tilt is theta along f and the permanent set across it (the
+ * edge pushes along f only, so it turns no tilt across). Returns theta. */
+static double lean_at(const cs_post_model *pm, const cs_post_state *ps, double dr, double w, const double *f,
+                      double *tilt) {
+    double sn = dr / struck_arm(pm, ps, w);
     sn = sn < -0.999 ? -0.999 : (sn > 0.999 ? 0.999 : sn);
     double th = asin(sn), along = ps->plastic[0] * f[0] + ps->plastic[1] * f[1];
     tilt[0] = ps->plastic[0] + (th - along) * f[0];
@@ -531,13 +539,15 @@ static double lean_at(const cs_post_state *ps, double dr, double w, const double
 /* The slide-out balance of a struck post at a slide w, over the shaft's share x^2 (x = 1 - w / D) so that
  * it stays finite as x goes to 0: the push's pull along the post, M tan(theta) / (lever + w) with M its
  * moment along f (the footing's capacity at w), less what the shaft holds, Q0. An edge that has backed
- * off (M <= 0) pushes nothing, so it pulls nothing out, whatever the sign of theta. */
+ * off (M <= 0) pushes nothing, so it pulls nothing out, whatever the sign of theta; nor does the edge's
+ * horizontal push draw out the upright stub of a post hinged at grade. */
 static double slide_balance(const cs_post_model *pm, const cs_post_state *ps, double dr, double w,
                             const double *f) {
+    if (cs_post_upright(pm)) return -pm->pullout_cap;
     cs_post_state at = *ps;
     double tilt[2], q[2], x = 1.0 - w / pm->embedment;
     cs_post_struck_slide_set(pm, &at, w);
-    double th = lean_at(ps, dr, w, f, tilt);
+    double th = lean_at(pm, ps, dr, w, f, tilt);
     cs_post_resistance(pm, &at, tilt, q);
     double m = q[0] * f[0] + q[1] * f[1];
     if (!(m > 0.0)) return -pm->pullout_cap;
@@ -577,7 +587,7 @@ static double captured_lean(const cs_model *model, const cs_post_state *ps, int 
     double dr = v3_dot(rel, f) + ps->reach;
     double w = ps->withdrawing ? struck_slide(&model->posts[p], ps, dr, f) : ps->pull;
     if (slide) *slide = w;
-    return lean_at(ps, dr, w, f, tilt);
+    return lean_at(&model->posts[p], ps, dr, w, f, tilt);
 }
 
 /* Place every captured post for a crush; returns the sum of their pushes along the vehicle's heading
@@ -596,7 +606,7 @@ static double place_one(const cs_model *model, cs_state *s, int p, double crush)
         ps->push = 0.0;
         return 0.0;
     }
-    ps->push = m / ((ps->lever + ps->pull) * cos(th));
+    ps->push = m / (struck_arm(&model->posts[p], ps, ps->pull) * cos(th));
     return ps->pusher == CS_PUSH_FACE ? ps->push : 0.0;
 }
 
@@ -668,11 +678,14 @@ static void capture(const cs_model *model, cs_state *s, int p, int pusher, int w
     ps->pusher = pusher;
     double pt[3], f[3];
     edge_point(model, p, pusher, s->pos, s->quat, s->crush, pt, f);
-    /* lever + pull is the struck point's distance from the pivot, as the post slides out */
-    ps->lever = (pt[2] > 0.05 ? pt[2] : 0.05) + model->posts[p].pivot - ps->pull;
-    double rel[3], base[3] = {model->posts[p].x, 0.0, 0.0}, lean = ps->tilt[0] * f[0] + ps->tilt[1] * f[1];
+    /* the struck point's distance from the pivot, struck_arm: the edge's height above the pivot, which a
+     * post hinged at grade carries up with its stub as it slides (at least 5 cm) */
+    const cs_post_model *pm = &model->posts[p];
+    double zb = pt[2] > 0.05 ? pt[2] : 0.05;
+    ps->lever = cs_post_upright(pm) ? fmax(zb - ps->pull, 0.05) : zb + pm->pivot - ps->pull;
+    double rel[3], base[3] = {pm->x, 0.0, 0.0}, lean = ps->tilt[0] * f[0] + ps->tilt[1] * f[1];
     v3_sub(rel, pt, base);
-    ps->reach = (ps->lever + ps->pull) * sin(lean) - v3_dot(rel, f);
+    ps->reach = struck_arm(pm, ps, ps->pull) * sin(lean) - v3_dot(rel, f);
     /* where the edge holds it now: a post sliding out takes the slide the push balances at once */
     place_one(model, s, p, s->crush);
     if (waiting) ps->push = 0.0;
@@ -717,7 +730,7 @@ int cs_post_capture(const cs_model *model, cs_state *s, int waiting) {
         cs_post_state *ps = &s->posts[p];
         if (ps->captured || !cs_post_in_barrier(ps)) continue;
         double top[3], rel[3], b[3];
-        int upright = cs_post_slides_upright(model, s, p);
+        int upright = cs_post_upright(&model->posts[p]);
         cs_post_attachment(model, p, ps->tilt, ps->pull, upright, zb, top);
         v3_sub(rel, o, top);
         double d = v3_dot(rel, f), lat = v3_dot(rel, left);
@@ -779,7 +792,7 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
     for (int a = 0; a < 2; a++)
         for (int b = 0; b < 2; b++)
             cs_rows_add(rows, row + a, row + b, kr[2 * a + b] / unit);
-    int pc = cs_post_slides_upright(model, s, p) ? -1 : rows->pull_index[p]; /* the arms grow with w */
+    int pc = cs_post_upright(&model->posts[p]) ? -1 : rows->pull_index[p]; /* the arms grow with w */
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;

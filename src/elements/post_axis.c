@@ -52,8 +52,8 @@ void cs_post_attachment(const cs_model *model, int p, const double *tilt, double
     cs_post_attachment_from(model, p, tilt, pull, upright, s, c, z, out);
 }
 
-void cs_post_slide_direction(const cs_model *model, const cs_state *s, int p, const double *tilt, double *d) {
-    if (cs_post_slides_upright(model, s, p))
+void cs_post_slide_direction(const cs_model *model, int p, const double *tilt, double *d) {
+    if (cs_post_upright(&model->posts[p]))
         v3_set(d, 0.0, 0.0, 1.0);
     else
         cs_post_axis_at(tilt, d);

@@ -75,7 +75,7 @@ static double trial_of(const cs_post_model *pm, const cs_post_state *ps) {
  * rows if given. */
 static double axial_pull(const cs_model *model, const cs_state *s, int p, const cs_rows *rows) {
     double a[3], f = 0.0;
-    cs_post_slide_direction(model, s, p, s->posts[p].tilt, a);
+    cs_post_slide_direction(model, p, s->posts[p].tilt, a);
     for (int c = 0; c < model->cable_count; c++) {
         const cs_cable_state *cs = &s->cables[c];
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
@@ -245,8 +245,8 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
     const cs_post_state *ps = &s->posts[p];
     const double *ja = rows->axes + 18 * p;
     double unit = cs_rows_force_unit(model), a[3], x, slope, mass;
-    int turns = !cs_post_slides_upright(model, s, p); /* its direction turns with the tilt */
-    cs_post_slide_direction(model, s, p, ps->tilt, a);
+    int turns = !cs_post_upright(&model->posts[p]); /* its direction turns with the tilt */
+    cs_post_slide_direction(model, p, ps->tilt, a);
     return_map(pm, ps, trial_of(pm, ps), &x, &slope);
     inertia(pm, ps, s->h, &mass);
     cs_rows_add(rows, row, row, -(pm->pull_stiffness * slope + mass) / unit);

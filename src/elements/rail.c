@@ -53,7 +53,7 @@ static void rail_point(const cs_model *model, const cs_state *s, int r, int p, c
         pull == s->rail_tilt[3 * p + 2])
         v3_copy(out, s->rail_pos + 3 * ((size_t)p * (size_t)model->rail_count + (size_t)r));
     else
-        cs_post_attachment(model, p, tilt, pull, cs_post_slides_upright(model, s, p), model->rails[r].z, out);
+        cs_post_attachment(model, p, tilt, pull, cs_post_upright(&model->posts[p]), model->rails[r].z, out);
 }
 
 static bar bar_at(const cs_model *model, const cs_state *s, int r, int k, const double *ta,
@@ -134,9 +134,9 @@ double cs_rail_pull(const cs_model *model, const cs_state *s, int p, const doubl
 void cs_rail_jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row, int p,
                       double unit) {
     const double *ja = rows->axes + 18 * p, *dj = ja + 6;
-    int pp = rows->pull_index[p], turns = !cs_post_slides_upright(model, s, p);
+    int pp = rows->pull_index[p], turns = !cs_post_upright(&model->posts[p]);
     double ap[3] = {0.0, 0.0, 0.0}, force_unit = cs_rows_force_unit(model);
-    if (pp >= 0) cs_post_slide_direction(model, s, p, s->posts[p].tilt, ap); /* read only where p slides */
+    if (pp >= 0) cs_post_slide_direction(model, p, s->posts[p].tilt, ap); /* read only where p slides */
     for (int r = 0; r < model->rail_count; r++) {
         const cs_rail_model *rm = &model->rails[r];
         double lp = cs_post_arm(model, s, p, rm->z);
@@ -153,7 +153,7 @@ void cs_rail_jacobian(const cs_model *model, const cs_state *s, const cs_rows *r
             double lo = cs_post_arm(model, s, o, rm->z), ao[3] = {0.0, 0.0, 0.0}, gap[3], gao[3];
             int col_o = rows->tilt_index[o], po = rows->pull_index[o];
             const double *jo = rows->axes + 18 * o; /* placed with the unknowns (only read if o is one) */
-            if (po >= 0) cs_post_slide_direction(model, s, o, s->posts[o].tilt, ao); /* read where o slides */
+            if (po >= 0) cs_post_slide_direction(model, o, s->posts[o].tilt, ao); /* read where o slides */
             for (int i = 0; i < 3; i++) /* G a_p and G a_o: the force's change with each pull */
                 gap[i] = g[i][0] * ap[0] + g[i][1] * ap[1] + g[i][2] * ap[2],
                 gao[i] = g[i][0] * ao[0] + g[i][1] * ao[1] + g[i][2] * ao[2];

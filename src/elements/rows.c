@@ -27,7 +27,7 @@ static int position_columns(const cs_model *model, const cs_state *s, const cs_r
             out[k] = (dep){rows->tilt_index[id] + k, {l * ja[k], l * ja[2 + k], l * ja[4 + k]}};
         if (rows->pull_index[id] < 0) return 2;
         out[2].col = rows->pull_index[id];
-        cs_post_slide_direction(model, s, id, s->posts[id].tilt, out[2].v);
+        cs_post_slide_direction(model, id, s->posts[id].tilt, out[2].v);
         return 3;
     }
     if (id == CS_NODE_START || id == CS_NODE_END) {

@@ -296,7 +296,7 @@ void cs_response_update(const cs_model *model, cs_state *s) {
     for (int p = 0; p < model->post_count; p++) {
         if (!cs_post_in_barrier(&s->posts[p])) continue;
         double top[3];
-        cs_post_attachment(model, p, s->posts[p].tilt, s->posts[p].pull, cs_post_slides_upright(model, s, p),
+        cs_post_attachment(model, p, s->posts[p].tilt, s->posts[p].pull, cs_post_upright(&model->posts[p]),
                            model->posts[p].height, top);
         sm->working_width_m = fmax(sm->working_width_m, top[1]);
     }

@@ -170,7 +170,7 @@ static void place_on_post(const cs_model *model, cs_state *s, int p, const doubl
         int i = cs->status == CS_CABLE_INTACT ? cs->where[p] : -1;
         if (i < 0) continue;
         const cs_cable_model *cm = &model->cables[c];
-        cs_post_attachment(model, p, tilt, s->posts[p].pull, cs_post_slides_upright(model, s, p),
+        cs_post_attachment(model, p, tilt, s->posts[p].pull, cs_post_upright(&model->posts[p]),
                            cs_post_cable_z(model, s, p, c), cs->pos + 3 * i);
         cs->m[i] = m_entry[c];
         cs_relax_slide_node(model, cm, cs, i, model->scenario.solver_tolerance);
