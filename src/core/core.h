@@ -61,8 +61,8 @@ typedef struct cs_rope {
  * slides, however small the rope's pull (docs/assumptions.md). Without that floor a contact of a slack
  * rope has no friction and drifts, within the solver's tolerance, a little every step. At a support the
  * width is a pre-sliding slip of w / c (c = EA / (l_L + l_R)): ~50 um on APS3's 1.75-in rope over 8-ft
- * spans. A sharper switch (1e-4) costs the crash tests 10-12% more instructions for changes of 1.6% or
- * less in their results. */
+ * spans. A sharper switch (1e-4) costs the crash tests 5-70% more instructions (APS1 13%, APS3 3.3
+ * times) for changes of 0.07% or less in their results (docs/assumptions.md, stick-slip rounding). */
 #define CS_FRICTION_FLOOR 1e-3
 
 typedef struct cs_cable_model {
