@@ -527,6 +527,41 @@ static void a_post_is_struck_by_the_edge_it_came_in_across(void **state) {
     cs_model_free(m);
 }
 
+/* A post struck with its cable on it leaves the cable's path and lets it go: one cable_struck_off event,
+ * the post its element, the cable named, its value the cable's pull on the post just before (the node's
+ * force, here the pull of two spans at 1% strain bending 2 x 11.3 degrees round it: to 1e-12). */
+static void a_struck_post_lets_its_cable_go_with_an_event(void **state) {
+    (void)state;
+    world *w = make_world(0.0, 0.0);
+    const cs_model *m = w->model;
+    cs_state *s = w->state;
+    const cs_vehicle_def *v = &m->vehicle.def;
+    pull(w, 0.01);
+    cs_cable_state *cs = &s->cables[0];
+    int i = cs->where[0];
+    assert_true(i > 0);
+    double f[3];
+    cs_node_force(cs, i, NULL, f);
+    assert_true(v3_norm(f) > 1e3);
+    s->quat[0] = 1.0, s->quat[1] = s->quat[2] = s->quat[3] = 0.0; /* heading +x, its face just past */
+    s->pos[0] = m->posts[0].x - v->cg_to_front + 0.002, s->pos[1] = 0.0;
+    s->vel[0] = 5.0, s->vel[1] = s->vel[2] = 0.0;
+    s->crush = 0.0;
+    int before = s->event_count;
+    assert_int_equal(cs_post_capture(m, s, 0), 1);
+    assert_int_equal(s->event_count, before + 1);
+    const cs_event *e = &s->events[before];
+    assert_int_equal(e->type, CS_EVENT_CABLE_STRUCK_OFF);
+    assert_int_equal(e->element_kind, CS_ELEMENT_POST);
+    assert_int_equal(e->element, 0);
+    assert_int_equal(e->cable, 0);
+    CHECK_REL(e->value, v3_norm(f), 1e-12);
+    assert_true(cs->where[0] <= 0);
+    assert_string_equal(cs_event_type_name(e->type), "cable_struck_off");
+    assert_string_equal(cs_event_value_unit(e->type), "N");
+    world_free(w);
+}
+
 /* A post pulled out of its footing (post_pullout.c), driven along its axis by hand: its pull reaches the
  * capacity Q0 (the fixture's 20 kip in 3 ft), it slides, its shaft holding Q0 (1 - w_p / D)^2 past the
  * 0.1-in slip that mobilises it (bearing in compression, elastic unloading), and the soil takes the cap's
@@ -942,6 +977,7 @@ int main(void) {
         cmocka_unit_test(sliding_struck_post_costs_the_truck_its_work),
         cmocka_unit_test(struck_post_takes_the_work_the_face_does),
         cmocka_unit_test(a_post_is_struck_by_the_edge_it_came_in_across),
+        cmocka_unit_test(a_struck_post_lets_its_cable_go_with_an_event),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -152,6 +152,9 @@ typedef enum cs_event_type {
                                        cable: which) */
     CS_EVENT_ANCHOR_WITHDRAWAL,   /**< the ropes' uplift on an anchor reaches its pullout capacity: it starts
                                        to rise out of the soil (value: that uplift, N) */
+    CS_EVENT_CABLE_STRUCK_OFF,    /**< the vehicle strikes a post a cable is still on: the post leaves the
+                                       cable's path and lets it go (element: the post; value: the cable's pull
+                                       on the post then, N; cable: which) */
     CS_EVENT_TYPE_COUNT           /**< the number of event types */
 } cs_event_type;
 
@@ -173,8 +176,8 @@ typedef struct cs_event {
     int element;   /**< index of the cable, post or anchor (0 start, 1 end); 0 for the vehicle */
     double value;  /**< what triggered it, SI: by type (cs_event_type) */
     int cable_end; /**< a termination event's rope end: 0 at the start anchor, 1 at the end anchor; else -1 */
-    int cable;     /**< the cable a post lets go (cable_release, cable_pulled_off, termination_at_post);
-                        else -1 */
+    int cable;     /**< the cable a post lets go (cable_release, cable_pulled_off, termination_at_post,
+                        cable_struck_off); else -1 */
     int post;      /**< the post at whose hole a rope broke (cable_break there); else -1 */
 } cs_event;
 

@@ -21,6 +21,7 @@ const KINDS = {
   cable_release: { group: 'slip', text: (who, end, cable) => `${who} let${s(who)} ${cable === undefined ? 'a cable' : `cable ${cable}`} go: bent over, its slot, hook or fitting no longer holds it`, value: (v) => `pull along the post ${pair('force', v)}` },
   termination_at_post: { group: 'slip', text: (who, end, cable) => `${who} let${s(who)} ${cable === undefined ? 'a cable' : `cable ${cable}`} run straight on to the ${end === 0 ? 'start' : 'end'} anchor: the rope's end has reached ${/ and /.test(who) ? 'their holes' : 'its hole'}`, value: (v) => `anchor moved ${pair('length', v)}` },
   cable_pulled_off: { group: 'slip', text: (who, end, cable) => `${who} let${s(who)} ${cable === undefined ? 'a cable' : `cable ${cable}`} go: its keyway bolt or bracket pulled off the post's face`, value: (v) => `pull off the face ${pair('force', v)}` },
+  cable_struck_off: { group: 'slip', text: (who, end, cable) => `${who} let${s(who)} ${cable === undefined ? 'a cable' : `cable ${cable}`} go: struck by the vehicle, it leaves the cable's path`, value: (v) => `pull on the post ${pair('force', v)}` },
   override: { group: 'slip', text: (who) => `The vehicle rides over ${lower(who)}: it slips under the front face and stops holding the vehicle`, value: () => '' },
   underride: { group: 'slip', text: (who) => `The vehicle runs under ${lower(who)}: it slips over the front face and stops holding the vehicle`, value: () => '' },
   stopped: { group: 'end', text: () => 'The vehicle has stopped: the barrier contained it', value: (v) => `dynamic penetration ${pair('length', v)}` },
@@ -64,7 +65,7 @@ export function timeline(data) {
     rows.push({ t: data.summary.first_contact_time_s, type: 'contact', group: 'contact', kind: 'vehicle', elements: [], text: 'First contact: the front face reaches the cables', value: '' });
   }
   // a termination event's sixth item: its cable end, 0 at the start anchor, 1 at the end anchor (-1 for
-  // none); a cable_release's, cable_pulled_off's or termination_at_post's seventh: the cable its post let go (-1 for none); a cable_break's eighth: the
+  // none); a cable_release's, cable_pulled_off's, cable_struck_off's or termination_at_post's seventh: the cable its post let go (-1 for none); a cable_break's eighth: the
   // post at whose hole the rope broke (the terminal's "at post N's hole")
   for (const [t, type, kind, element, value, end, cable, post] of data.events) {
     const last = rows[rows.length - 1];

@@ -3,16 +3,16 @@
 #include "core/core.h"
 
 static const char *const event_names[CS_EVENT_TYPE_COUNT] = {
-    "cable_break",      "termination_break", "post_hinge",     "post_rotation_limit", "post_shear",
-    "post_pullout",     "footing_rotation",  "anchor_pullout", "anchor_yield",        "override",
-    "underride",        "stopped",           "breakthrough",   "redirected",          "cable_release",
-    "termination_slip", "post_withdrawal",   "post_down",      "cable_pulled_off",    "termination_at_post",
-    "anchor_withdrawal"};
+    "cable_break",       "termination_break", "post_hinge",     "post_rotation_limit", "post_shear",
+    "post_pullout",      "footing_rotation",  "anchor_pullout", "anchor_yield",        "override",
+    "underride",         "stopped",           "breakthrough",   "redirected",          "cable_release",
+    "termination_slip",  "post_withdrawal",   "post_down",      "cable_pulled_off",    "termination_at_post",
+    "anchor_withdrawal", "cable_struck_off"};
 
 /* The value each type carries (sim.h) */
-static const char *const event_units[CS_EVENT_TYPE_COUNT] = {"N", "N", "N m", "rad", "N", "N",   "N m",
-                                                             "N", "N", "s",   "s",   "m", "m/s", "m/s",
-                                                             "N", "N", "N",   "rad", "N", "m",   "N"};
+static const char *const event_units[CS_EVENT_TYPE_COUNT] = {
+    "N", "N",   "N m", "rad", "N", "N", "N m", "N", "N", "s", "s",
+    "m", "m/s", "m/s", "N",   "N", "N", "rad", "N", "m", "N", "N"};
 
 const char *cs_event_type_name(cs_event_type type) {
     return (type >= 0 && type < CS_EVENT_TYPE_COUNT) ? event_names[type] : "unknown";

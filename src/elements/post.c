@@ -693,9 +693,14 @@ static void capture(const cs_model *model, cs_state *s, int p, int pusher, int w
         s->contact_started = 1;
         s->summary.first_contact_time_s = s->t;
     }
-    for (int c = 0; c < model->cable_count; c++) {
+    for (int c = 0; c < model->cable_count; c++) { /* it leaves their paths: each let go, an event */
         cs_cable_state *cs = &s->cables[c];
-        if (cs->status == CS_CABLE_INTACT && cs->where[p] > 0) cs_cable_remove_node(cs, cs->where[p]);
+        if (cs->status != CS_CABLE_INTACT || cs->where[p] <= 0) continue;
+        double f[3];
+        cs_node_force(cs, cs->where[p], NULL, f);
+        cs_cable_remove_node(cs, cs->where[p]);
+        cs_event *e = cs_event_add(model, s, CS_EVENT_CABLE_STRUCK_OFF, CS_ELEMENT_POST, p, v3_norm(f));
+        if (e) e->cable = c;
     }
 }
 

@@ -68,11 +68,12 @@ int cs_validate_finish(cs_validate_suite *s);
 typedef struct cs_validate_result {
     int ok;
     cs_summary sm;
-    double dt;              /* the run's time step, s */
-    double cable_break[2];  /* s, < 0 if not broken (along the rope or at an end fitting) */
-    double absorbed;        /* J: initial kinetic energy minus what is left */
-    int post_failure;       /* the first post failure's event type, -1 if none */
-    int released;           /* cables let go by their posts (cable_release, cable_pulled_off events) */
+    double dt;             /* the run's time step, s */
+    double cable_break[2]; /* s, < 0 if not broken (along the rope or at an end fitting) */
+    double absorbed;       /* J: initial kinetic energy minus what is left */
+    int post_failure;      /* the first post failure's event type, -1 if none */
+    int released; /* cables let go by their posts (cable_release, cable_pulled_off, cable_struck_off events)
+                   */
     double post_failure_t;  /* its time, s */
     double post_slide;      /* how far the post that failed first had slid out of its footing, m (0: none) */
     char how[2][48];        /* each rope: where and when it broke, or that it held with its peak */

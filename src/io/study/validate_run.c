@@ -54,7 +54,8 @@ static void collect(const cs_model *m, const cs_state *s, cs_validate_result *r)
         cs_event e_held = {.size = sizeof e_held};
         cs_state_event(s, i, &e_held, NULL);
         const cs_event *e = &e_held;
-        r->released += e->type == CS_EVENT_CABLE_RELEASE || e->type == CS_EVENT_CABLE_PULLED_OFF;
+        r->released += e->type == CS_EVENT_CABLE_RELEASE || e->type == CS_EVENT_CABLE_PULLED_OFF ||
+                       e->type == CS_EVENT_CABLE_STRUCK_OFF;
         if (r->post_failure < 0 && post_failure(e->type)) {
             r->post_failure = (int)e->type, r->post_failure_t = e->t;
             cs_post_view pv = {.size = sizeof pv};
