@@ -141,8 +141,9 @@ struct cs_validate_suite {
 /* The cases (validate_plan.c). */
 extern const char *const cs_validate_crash_names[CS_VAL_CRASH]; /* "aps1", "aps3", "aps4" */
 extern const char *const cs_validate_road_names[CS_VAL_ROAD];   /* "rs1" .. "rs6" */
-/* The finer time steps each roadside test runs at beside its file's (its convergence). */
-extern const char *const cs_validate_road_steps[CS_VAL_ROAD_STEPS];
+/* The finer time steps each roadside test runs at beside its file's (its convergence), as fractions of its
+ * file's step: half of it, then a fifth. */
+extern const double cs_validate_road_step_fractions[CS_VAL_ROAD_STEPS];
 
 /* A refinement: each crash test run at every value of one scenario setting (field: its offset in
  * cs_scenario_def, a double). */
