@@ -4,8 +4,8 @@
  * with depth: footing.c), the post slides out by w, an unknown of the barrier's solve (rows.h) that moves
  * every point of it by w d (cs_post_slide_direction, post_axis.c): d = e_z for a post hinged at grade, whose
  * stub stays upright in its footing and carries the bent post up with it, so that only the pull's vertical
- * part draws the footing out; d = a(alpha) for a post whose footing turns in the soil with it, and for a
- * struck post. The shaft's friction is then what the length
+ * part draws the footing out, struck or not; d = a(alpha) for a post whose footing turns in the soil with
+ * it. The shaft's friction is then what the length
  * still in the ground holds: with friction growing linearly with depth and mobilised all along the
  * shaft, a post slid out by w_p keeps D - w_p in the ground and holds
  *   c(w_p) = Q0 x^2,   x = 1 - w_p / D,
@@ -180,8 +180,9 @@ double cs_post_pull_kinetic_energy(const cs_model *model, const cs_state *s, int
 }
 
 /* ---- a struck post dragged out of its footing ----
- * The edge that pushes a struck post over (post.c) pushes horizontally, so it pulls the post along its
- * axis by push sin(theta). Once that reaches the shaft's capacity Q0 the post slides out with the edge,
+ * The edge that pushes a struck post over (post.c) pushes horizontally, so it pulls a post whose footing
+ * turns with it along its axis by push sin(theta) (the upright stub of a post hinged at grade it does not
+ * draw out). Once that reaches the shaft's capacity Q0 the post slides out with the edge,
  * rigid-plastic: its slide w is all plastic (x = 1 - w / D), the shaft holds Q0 x^2 and the footing's
  * moment falls by P(x) / P(1) (cs_post_moment_cap), and the edge's motion, not the shaft's slip or the
  * post's mass, sets how far it has come (post.c, struck_slide). Its work Q0 D (x0^3 - x^3) / 3 is the
