@@ -328,7 +328,8 @@ static void add_road(cs_validate_suite *s, int k, int convergence) {
     snprintf(name, sizeof name, "roadside/%s", cs_validate_road_names[k]);
     cs_model_input in = {.size = sizeof in};
     int rc = load_example(s, name, NULL, &in);
-    double dt = in.scenario.dt; /* its file's step, which the finer ones divide */
+    double dt = in.scenario.dt; /* its file's step, which the finer ones divide (a file that failed to load
+                                   fails them too, and its convergence reads as failed) */
     s->road[k] = add_loaded(s, rc, &in);
     for (int d = 0; d < CS_VAL_ROAD_STEPS; d++) {
         char set[64];
