@@ -208,9 +208,10 @@ typedef struct cs_post_def {
     cs_attachment attachment;     /**< how it holds the cables */
     double release_force;         /**< a retainer's strength along the post (slot, hook, keyway bolt,
                                      bracket), N (0: the kind's documented value, cs_attachment_release_force) */
-    double rotation_limit;        /**< rotation from vertical at which a post the vehicle pushes over lets its
-                                     edge ride over it (paper: 45 deg), rad; a post carrying ropes folds on
-                                     until its top reaches grade */
+    double rotation_limit;        /**< rotation from vertical past which a post hinged at grade that the
+                                     vehicle pushes over lets it go, rad (90 deg: none; it goes when its top
+                                     comes down to the pushing edge, which rides over it); a post carrying
+                                     ropes folds on until its top reaches grade */
     double lateral_release_force; /**< a keyway bolt's or bracket's strength against a pull off its face, N
                                      (0: the kind's documented value, cs_attachment_lateral_release_force) */
     cs_face face;                 /**< the face a keyway bolt or bracket is fixed to */
@@ -415,15 +416,15 @@ static inline cs_footing_def cs_default_footing_def(void) {
     d.unit_weight = CS_SOIL_UNIT_WEIGHT;              /* compacted crushed-stone base: 135 pcf */
     return d;
 }
-/** A post threaded by the cables with the paper's 45-degree rotation limit, its section and footing the
- * defaults. */
+/** A post threaded by the cables, struck over until its top comes down to the pushing edge (no rotation
+ * limit of its own), its section and footing the defaults. */
 static inline cs_post_def cs_default_post_def(void) {
     cs_post_def d = CS_ZERO_INIT;
     d.size = sizeof d;
     d.section = cs_default_section_def();
     d.footing = cs_default_footing_def();
     d.attachment = CS_ATTACH_THROUGH;
-    d.rotation_limit = CS_PI / 4.0; /* paper: 45 degrees */
+    d.rotation_limit = CS_PI / 2.0; /* none: the edge rides over its top (docs/theory.md, "Struck posts") */
     return d;
 }
 /** An anchor with cs_default_footing_def's footing, of diameter 0: rigid until its footing is given. */

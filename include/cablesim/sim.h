@@ -121,8 +121,9 @@ typedef enum cs_event_type {
     CS_EVENT_TERMINATION_BREAK,   /**< a rope's end fitting lets go (value: that end span's tension, N;
                                        cable_end: which end) */
     CS_EVENT_POST_HINGE,          /**< a plastic hinge forms at a post's base (value: its capacity, N m) */
-    CS_EVENT_POST_ROTATION_LIMIT, /**< a post the vehicle struck turns to its rotation limit: the vehicle
-                                     rides over it and it leaves the barrier (value: rad) */
+    CS_EVENT_POST_ROTATION_LIMIT, /**< a post the vehicle struck turns until the vehicle rides over it (its
+                                     top down to the pushing edge, or its rotation limit) and it leaves the
+                                     barrier (value: its tilt, rad) */
     CS_EVENT_POST_SHEAR,          /**< a post shears at its base (value: shear, N) */
     CS_EVENT_POST_PULLOUT,        /**< a post is pulled out of the ground (value: pull, N) */
     CS_EVENT_FOOTING_ROTATION,    /**< a post's footing starts to turn in the soil (value: capacity, N m) */

@@ -202,16 +202,20 @@ typedef struct cs_cable_state {
 
 typedef struct cs_post_state {
     cs_post_status status;
-    double tilt[2];        /* rotation vector: direction and angle the top moves, rad */
-    double plastic[2];     /* plastic part of the rotation (committed), rad */
-    double moment[2];      /* resisting generalised moment (spring and damper, at most the capacity), N m */
-    double shear, axial;   /* N */
-    int yielded;           /* hinge or soil event already reported */
-    int captured;          /* struck by the vehicle: pushed over by it, off the cable paths */
-    int pusher;            /* what pushes a captured post: CS_PUSH_FACE, _LEFT or _RIGHT (side) */
-    double lever;          /* from the pivot to where the vehicle struck it, along the post, m */
-    double reach;          /* the struck point's lean at the strike less the edge's reach there, m */
-    double push;           /* force of the vehicle on a captured post, N */
+    double tilt[2];         /* rotation vector: direction and angle the top moves, rad */
+    double plastic[2];      /* plastic part of the rotation (committed), rad */
+    double moment[2];       /* resisting generalised moment (spring and damper, at most the capacity), N m */
+    double shear, axial;    /* N */
+    int yielded;            /* hinge or soil event already reported */
+    int captured;           /* struck by the vehicle: pushed over by it, off the cable paths */
+    int pusher;             /* what pushes a captured post: CS_PUSH_FACE, _LEFT or _RIGHT (side) */
+    double lever;           /* from the pivot to where the vehicle struck it, along the post; for a post
+                             * hinged at grade, the edge's height above the hinge now, m */
+    double arm, arm_commit; /* the struck point's distance from the pivot, now and at the last commit, m */
+    double bend, bend_commit; /* its resistance's moment along the push, now and then, N m */
+    double sense;             /* which way the edge slid along it over the last step: +1 up, -1 down */
+    double reach;             /* the struck point's lean at the strike less the edge's reach there, m */
+    double push;              /* force of the vehicle on a captured post, N */
     double lift;           /* how far its slot's cables have ridden up the slot together, m (attachment.c) */
     int bearing;           /* a captured post the vehicle's edge bears on (not backed off) */
     int waiting;           /* struck at a step's new pose, before its solve: pushes from the step's end */

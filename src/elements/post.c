@@ -322,6 +322,18 @@ static void residual_now(const cs_model *model, const cs_state *s, int p, const 
     cs_post_residual_at(model, s, p, s->posts[p].tilt, chords, axis, rails, r);
 }
 
+/* The friction of the edge sliding along a struck post hinged at grade: the face's (cs_vehicle_def
+ * face_friction); none on a post whose footing turns, whose struck point stays put on it. */
+static double edge_friction(const cs_model *model, const cs_post_model *pm) {
+    return cs_post_upright(pm) ? model->vehicle.def.face_friction : 0.0;
+}
+
+/* Which way the edge slides along a struck post: up (+1) or down (-1) since the last commit, or as over the
+ * last step where it has not moved yet (a step's first pose). */
+static double slide_sense(const cs_post_state *ps) {
+    return ps->arm > ps->arm_commit ? 1.0 : ps->arm < ps->arm_commit ? -1.0 : ps->sense;
+}
+
 /* The moment a plastic turn since the last commit is booked at, q the capacity now. A struck post sliding
  * out has its capacity fall over the step, from that at the last commit's slide to q, while the vehicle
  * pays for the turn at the trapezoid rule's mean of the two (step.c); booked at q alone the turn would
@@ -331,6 +343,15 @@ static double turn_moment(const cs_post_model *pm, const cs_post_state *ps, doub
     cs_post_state at = *ps;
     cs_post_struck_slide_set(pm, &at, ps->pull_commit);
     return 0.5 * (cs_post_moment_cap(pm, &at) + q);
+}
+
+/* A struck post's base shear, its push, and its pull out of the ground: the horizontal push on a post
+ * whose footing turns, leaning by theta, has the component push sin(theta) along the post, out of the
+ * ground: what pulls a short post out (its skin friction grows as D^2, its lateral capacity more slowly);
+ * none up the upright stub of a post hinged at grade (docs/theory.md, "Struck posts"). */
+static void struck_loads(const cs_post_model *pm, cs_post_state *ps) {
+    ps->shear = ps->push;
+    ps->axial = cs_post_upright(pm) ? 0.0 : ps->push * sin(v2_norm(ps->tilt[0], ps->tilt[1]));
 }
 
 /* End of step: plastic rotation (radial return) and its work, the damper's work, base shear and axial
@@ -375,11 +396,15 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     for (int k = 0; k < 2; k++) /* what the post holds against its ropes: its spring's and damper's */
         ps->moment[k] = pm->k_rot * e[k] + d[k];
     if (ps->captured) {
-        /* the horizontal push on a post leaning by theta has the component push sin(theta) along
-         * the post, out of the ground: what pulls a short post out (its skin friction grows as D^2,
-         * its lateral capacity more slowly); none up the upright stub of a post hinged at grade */
-        ps->shear = ps->push;
-        ps->axial = cs_post_upright(pm) ? 0.0 : ps->push * sin(v2_norm(ps->tilt[0], ps->tilt[1]));
+        /* the edge's friction up a post hinged at grade, mu (M / arm) over the slide: mu M ln(arm /
+         * arm_commit), M the moment along the push, the mean of the step's ends (the work
+         * cs_post_captured_force took from the vehicle; exact for M steady, as at its capacity) */
+        double mu = edge_friction(model, pm);
+        if (mu > 0.0 && ps->bearing)
+            s->e_friction += mu * 0.5 * (ps->bend_commit + ps->bend) * fabs(log(ps->arm / ps->arm_commit));
+        ps->sense = slide_sense(ps);
+        ps->arm_commit = ps->arm, ps->bend_commit = ps->bend;
+        struck_loads(pm, ps);
         cs_post_struck_slide_commit(model, s, p);
         return;
     }
@@ -397,7 +422,10 @@ double cs_post_lie_angle(const cs_post_model *pm, const cs_post_state *ps) {
 }
 
 double cs_post_fold_limit(const cs_post_model *pm, const cs_post_state *ps) {
-    return ps->captured ? pm->rot_limit : cs_post_lie_angle(pm, ps);
+    if (!ps->captured) return cs_post_lie_angle(pm, ps);
+    if (!cs_post_upright(pm)) return pm->rot_limit;
+    double c = ps->lever / pm->height; /* hinged at grade: its top down to the edge, which rides over it */
+    return fmin(pm->rot_limit, acos(c < 1.0 ? c : 1.0));
 }
 
 /* Failure of a post in the barrier: a struck post turned to its rotation limit, base shear, pullout: a
@@ -516,21 +544,26 @@ static void edge_point(const cs_model *model, int p, int pusher, const double *p
     v3_add(pt, pt, pos);
 }
 
-/* The struck point's distance from the pivot at a slide w: ps->lever + w for a post that slides out along
- * its axis (the slide carries the point out with it), ps->lever for one hinged at grade, whose stub carries
- * the hinge up with it (cs_post_upright). */
-static double struck_arm(const cs_post_model *pm, const cs_post_state *ps, double w) {
-    return ps->lever + (cs_post_upright(pm) ? 0.0 : w);
-}
-
-/* A struck post's lean for an edge at dr (its reach added) and a slide w: the struck point is where the
- * edge is, sin(theta) = dr / struck_arm. The tilt is theta along f and the permanent set across it (the
- * edge pushes along f only, so it turns no tilt across). Returns theta. */
-static double lean_at(const cs_post_model *pm, const cs_post_state *ps, double dr, double w, const double *f,
-                      double *tilt) {
-    double sn = dr / struck_arm(pm, ps, w);
-    sn = sn < -0.999 ? -0.999 : (sn > 0.999 ? 0.999 : sn);
-    double th = asin(sn), along = ps->plastic[0] * f[0] + ps->plastic[1] * f[1];
+/* A struck post's lean for an edge at dr along f (its reach added), zl above the pivot, the post slid out
+ * by w. A post hinged at grade: the edge holds its height and slides up the post, tan(theta) = dr / zl,
+ * the struck point hypot(dr, zl) from the hinge. A post whose footing turns in the soil: the struck point
+ * stays where it was struck on the post, lever + w from the pivot (the slide carries it out), sin(theta) =
+ * dr / (lever + w), the bogie tests' reading (docs/theory.md, "Struck posts"). The tilt is theta along f and
+ * the permanent set across it (the edge pushes along f only, so it turns no tilt across). Returns theta;
+ * *arm gets the struck point's distance from the pivot. */
+static double lean_at(const cs_post_model *pm, const cs_post_state *ps, double dr, double zl, double w,
+                      const double *f, double *tilt, double *arm) {
+    double th;
+    if (cs_post_upright(pm)) {
+        th = atan2(dr, zl);
+        *arm = hypot(dr, zl);
+    } else {
+        double sn = dr / (ps->lever + w);
+        sn = sn < -0.999 ? -0.999 : (sn > 0.999 ? 0.999 : sn);
+        th = asin(sn);
+        *arm = ps->lever + w;
+    }
+    double along = ps->plastic[0] * f[0] + ps->plastic[1] * f[1];
     tilt[0] = ps->plastic[0] + (th - along) * f[0];
     tilt[1] = ps->plastic[1] + (th - along) * f[1];
     return th;
@@ -545,9 +578,9 @@ static double slide_balance(const cs_post_model *pm, const cs_post_state *ps, do
                             const double *f) {
     if (cs_post_upright(pm)) return -pm->pullout_cap;
     cs_post_state at = *ps;
-    double tilt[2], q[2], x = 1.0 - w / pm->embedment;
+    double tilt[2], q[2], x = 1.0 - w / pm->embedment, arm;
     cs_post_struck_slide_set(pm, &at, w);
-    double th = lean_at(pm, ps, dr, w, f, tilt);
+    double th = lean_at(pm, ps, dr, 0.0, w, f, tilt, &arm);
     cs_post_resistance(pm, &at, tilt, q);
     double m = q[0] * f[0] + q[1] * f[1];
     if (!(m > 0.0)) return -pm->pullout_cap;
@@ -573,40 +606,56 @@ static double struck_slide(const cs_post_model *pm, const cs_post_state *ps, dou
     return 0.5 * (lo + hi);
 }
 
-/* Where a captured post leans with the vehicle at a pose: the pushing edge's point in line with it is
- * a distance d past the base along f, and the post turns about its pivot through the point it was
- * struck at: sin(theta) = (d + reach) / (lever + w), reach set at the strike so that the post goes on
- * from where it stood (theta < 0: it leaned toward the edge when struck), w its slide out of the footing
- * (struck_slide; the slide at the last commit unless it is sliding out). Returns theta; f gets the
- * direction, slide (if not NULL) the slide. */
-static double captured_lean(const cs_model *model, const cs_post_state *ps, int p, const double *pos,
-                            const double *quat, double crush, double *tilt, double *f, double *slide) {
-    double pt[3], rel[3], base[3] = {model->posts[p].x, 0.0, 0.0};
-    edge_point(model, p, ps->pusher, pos, quat, crush, pt, f);
-    v3_sub(rel, pt, base);
-    double dr = v3_dot(rel, f) + ps->reach;
-    double w = ps->withdrawing ? struck_slide(&model->posts[p], ps, dr, f) : ps->pull;
-    if (slide) *slide = w;
-    return lean_at(&model->posts[p], ps, dr, w, f, tilt);
+/* The pushing edge's height above the hinge of a post hinged at grade, whose stub has carried the hinge up
+ * by its slide (at least 5 cm). */
+static double edge_height(const cs_post_state *ps, const double *pt) {
+    return fmax(pt[2] - ps->pull, 0.05);
 }
 
-/* Place every captured post for a crush; returns the sum of their pushes along the vehicle's heading
- * (the captured posts' share of the face's normal force). */
-/* Place captured post p for a crush; returns its push along the vehicle's heading if the face pushes it. */
+/* Where a captured post leans with the vehicle at a pose: the pushing edge's point in line with it is
+ * a distance d past the base along f, and the post turns about its pivot as lean_at has it for d + reach,
+ * reach set at the strike so that the post goes on from where it stood (theta < 0: it leaned toward the
+ * edge when struck), w its slide out of the footing (struck_slide; the slide at the last commit unless it
+ * is sliding out). Returns theta; f gets the direction, and if not NULL, slide the slide, arm the struck
+ * point's distance from the pivot and zl the edge's height above a hinge at grade. */
+static double captured_lean(const cs_model *model, const cs_post_state *ps, int p, const double *pos,
+                            const double *quat, double crush, double *tilt, double *f, double *slide,
+                            double *arm, double *zl) {
+    double pt[3], rel[3], base[3] = {model->posts[p].x, 0.0, 0.0}, a;
+    edge_point(model, p, ps->pusher, pos, quat, crush, pt, f);
+    v3_sub(rel, pt, base);
+    double dr = v3_dot(rel, f) + ps->reach, z = edge_height(ps, pt);
+    double w = ps->withdrawing ? struck_slide(&model->posts[p], ps, dr, f) : ps->pull;
+    if (slide) *slide = w;
+    if (zl) *zl = z;
+    double th = lean_at(&model->posts[p], ps, dr, z, w, f, tilt, &a);
+    if (arm) *arm = a;
+    return th;
+}
+
+/* Place captured post p for a crush; returns its push along the vehicle's heading if the face pushes it:
+ * the normal force M / arm along f, cos(theta) + mu sin(theta) of it with the edge's friction up the post
+ * (hinged at grade; the footing turning, M / (arm cos(theta)), the work's gradient along f). */
 static double place_one(const cs_model *model, cs_state *s, int p, double crush) {
     cs_post_state *ps = &s->posts[p];
-    double q[2], f[3], w;
-    double th = captured_lean(model, ps, p, s->pos, s->quat, crush, ps->tilt, f, &w);
-    if (ps->withdrawing) cs_post_struck_slide_set(&model->posts[p], ps, w);
-    cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
+    const cs_post_model *pm = &model->posts[p];
+    double q[2], f[3], w, arm, zl;
+    double th = captured_lean(model, ps, p, s->pos, s->quat, crush, ps->tilt, f, &w, &arm, &zl);
+    if (ps->withdrawing) cs_post_struck_slide_set(pm, ps, w);
+    if (cs_post_upright(pm)) ps->lever = zl;
+    ps->arm = arm;
+    cs_post_resistance(pm, ps, ps->tilt, q);
     double m = q[0] * f[0] + q[1] * f[1];
     ps->bearing = m >= 0.0;
+    ps->bend = ps->bearing ? m : 0.0;
     if (!ps->bearing) { /* the edge has backed off: the post stands at its set, free */
         ps->tilt[0] = ps->plastic[0], ps->tilt[1] = ps->plastic[1];
         ps->push = 0.0;
         return 0.0;
     }
-    ps->push = m / (struck_arm(&model->posts[p], ps, ps->pull) * cos(th));
+    ps->push = cs_post_upright(pm)
+                   ? m / arm * (cos(th) + edge_friction(model, pm) * slide_sense(ps) * sin(th))
+                   : m / (arm * cos(th));
     return ps->pusher == CS_PUSH_FACE ? ps->push : 0.0;
 }
 
@@ -625,38 +674,43 @@ double cs_post_place_captured(const cs_model *model, cs_state *s, double crush) 
 }
 
 /* The captured posts' resistance (as placed for this crush) on the vehicle, added to force and moment:
- * the gradient of the work Q . dtilt + R dw (R the shaft's hold as a post slides out) with respect to the
- * vehicle's pose (central differences, 1e-6 m
- * and 1e-6 rad), so that the vehicle's work is exactly what the posts store and dissipate however the
- * face moves (pushing on, coming down, rolling, sliding along its edge). */
+ * the gradient of the work Q . dtilt + R dw + mu N |ds| (R the shaft's hold as a post slides out; mu N the
+ * friction of the edge sliding up a post hinged at grade by ds, N = M / arm its normal force, the sense of
+ * the slide since the last commit) with respect to the vehicle's pose (central differences, 1e-6 m and
+ * 1e-6 rad), so that the vehicle's work is exactly what the posts store and dissipate however the face
+ * moves (pushing on, coming down, rolling, sliding along its edge). */
 void cs_post_captured_force(const cs_model *model, const cs_state *s, double crush, int face_only,
                             double *force, double *moment) {
     for (int p = 0; p < model->post_count; p++) {
         const cs_post_state *ps = &s->posts[p];
         if (!ps->captured || !cs_post_in_barrier(ps) || !(ps->push > 0.0)) continue;
         if (face_only && ps->pusher != CS_PUSH_FACE) continue;
-        double q[2], hold = ps->withdrawing ? cs_post_struck_slide_cap(&model->posts[p], ps->pull) : 0.0;
-        cs_post_resistance(&model->posts[p], ps, ps->tilt, q);
+        const cs_post_model *pm = &model->posts[p];
+        double q[2], hold = ps->withdrawing ? cs_post_struck_slide_cap(pm, ps->pull) : 0.0;
+        cs_post_resistance(pm, ps, ps->tilt, q);
+        double slip = edge_friction(model, pm) * ps->bend / ps->arm * slide_sense(ps);
         const double h = 1e-6;
         for (int k = 0; k < 6; k++) {
             double tp[2], tm[2], qp[4], qm[4], pos[3], turn[3] = {0.0, 0.0, 0.0}, w[3], fk[3], sp = 0.0,
-                                                       sm = 0.0;
+                                                       sm = 0.0, ap = 0.0, am = 0.0;
             memcpy(qp, s->quat, sizeof qp), memcpy(qm, s->quat, sizeof qm);
             v3_copy(pos, s->pos);
             if (k < 3) {
                 pos[k] += h;
-                captured_lean(model, ps, p, pos, s->quat, crush, tp, fk, &sp);
+                captured_lean(model, ps, p, pos, s->quat, crush, tp, fk, &sp, &ap, NULL);
                 pos[k] -= 2.0 * h;
-                captured_lean(model, ps, p, pos, s->quat, crush, tm, fk, &sm);
+                captured_lean(model, ps, p, pos, s->quat, crush, tm, fk, &sm, &am, NULL);
             } else { /* a turn about world axis k - 3, applied in the body frame */
                 turn[k - 3] = 1.0;
                 quat_unrotate(w, s->quat, turn);
                 quat_integrate(qp, w, h);
                 quat_integrate(qm, w, -h);
-                captured_lean(model, ps, p, pos, qp, crush, tp, fk, &sp);
-                captured_lean(model, ps, p, pos, qm, crush, tm, fk, &sm);
+                captured_lean(model, ps, p, pos, qp, crush, tp, fk, &sp, &ap, NULL);
+                captured_lean(model, ps, p, pos, qm, crush, tm, fk, &sm, &am, NULL);
             }
-            double g = -(q[0] * (tp[0] - tm[0]) + q[1] * (tp[1] - tm[1]) + hold * (sp - sm)) / (2.0 * h);
+            double g =
+                -(q[0] * (tp[0] - tm[0]) + q[1] * (tp[1] - tm[1]) + hold * (sp - sm) + slip * (ap - am)) /
+                (2.0 * h);
             if (k < 3)
                 force[k] += g;
             else
@@ -678,16 +732,19 @@ static void capture(const cs_model *model, cs_state *s, int p, int pusher, int w
     ps->pusher = pusher;
     double pt[3], f[3];
     edge_point(model, p, pusher, s->pos, s->quat, s->crush, pt, f);
-    /* the struck point's distance from the pivot, struck_arm: the edge's height above the pivot, which a
-     * post hinged at grade carries up with its stub as it slides (at least 5 cm) */
+    /* the edge's height above the pivot: above the hinge a post hinged at grade carries up with its stub as
+     * it slides (edge_height); for a post turning in the soil, where it strikes it (at least 5 cm above
+     * grade) less the slide, which carries the struck point out with it (lean_at) */
     const cs_post_model *pm = &model->posts[p];
     double zb = pt[2] > 0.05 ? pt[2] : 0.05;
-    ps->lever = cs_post_upright(pm) ? fmax(zb - ps->pull, 0.05) : zb + pm->pivot - ps->pull;
+    ps->lever = cs_post_upright(pm) ? edge_height(ps, pt) : zb + pm->pivot - ps->pull;
     double rel[3], base[3] = {pm->x, 0.0, 0.0}, lean = ps->tilt[0] * f[0] + ps->tilt[1] * f[1];
     v3_sub(rel, pt, base);
-    ps->reach = struck_arm(pm, ps, ps->pull) * sin(lean) - v3_dot(rel, f);
+    ps->reach =
+        (cs_post_upright(pm) ? ps->lever * tan(lean) : (ps->lever + ps->pull) * sin(lean)) - v3_dot(rel, f);
     /* where the edge holds it now: a post sliding out takes the slide the push balances at once */
     place_one(model, s, p, s->crush);
+    ps->arm_commit = ps->arm, ps->bend_commit = ps->bend, ps->sense = 1.0;
     if (waiting) ps->push = 0.0;
     if (!s->contact_started) {
         s->contact_started = 1;
@@ -768,7 +825,8 @@ int cs_post_end_waiting(const cs_model *model, cs_state *s) {
         if (!ps->waiting) continue;
         ps->waiting = 0, any = 1;
         place_one(model, s, p, s->crush); /* at the crush solved; its push's shear and pull, as a commit's */
-        ps->shear = ps->push, ps->axial = ps->push * sin(v2_norm(ps->tilt[0], ps->tilt[1]));
+        ps->arm_commit = ps->arm, ps->bend_commit = ps->bend;
+        struck_loads(&model->posts[p], ps);
     }
     return any;
 }

@@ -133,9 +133,12 @@ static int check_barrier(const cs_barrier_def *b, cs_error *err) {
             return fail(err, "post %d: unknown width scaling of the soil's dynamic factor", p);
         if (f->pullout_capacity == 0.0 && !positive(f->skin_friction))
             return fail(err, "post %d: a footing without a pullout capacity needs skin friction > 0", p);
-        if (!(d->rotation_limit > 0.0 && d->rotation_limit < 1.5) ||
+        if (!(d->rotation_limit > 0.0 && d->rotation_limit <= 0.5 * CS_PI + 1e-12) ||
             !(f->rotation_limit > 0.0 && f->rotation_limit < 1.5))
-            return fail(err, "post %d: rotation limits must be between 0 and 1.5 rad", p);
+            return fail(err,
+                        "post %d: rotation limits must be above 0 and at most 90 deg (a post's) or 1.5 rad "
+                        "(its footing's)",
+                        p);
         if (d->attachment < CS_ATTACH_THROUGH || d->attachment > CS_ATTACH_BRACKET)
             return fail(err, "post %d: unknown attachment %d", p, (int)d->attachment);
         if (!non_negative(d->release_force)) return fail(err, "post %d: release force must be >= 0", p);

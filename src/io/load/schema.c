@@ -215,9 +215,8 @@ static const cs_field footing_fields[] = {
     FT("depth", CS_Q_LENGTH, CS_REQ | CS_POS, depth, "D: embedment depth"),
     SOIL_FIELDS,
     FT("rotation_limit", CS_Q_ANGLE, CS_POS | CS_MAX90, rotation_limit,
-       "footing rotation at which a post the vehicle pushes over lets it ride over (a post carrying ropes "
-       "folds "
-       "on until its top reaches grade)"),
+       "footing rotation at which a post turning in the soil that the vehicle pushes over lets it ride over "
+       "(a post carrying ropes folds on until its top reaches grade)"),
     FT("pullout_capacity", CS_Q_FORCE, CS_POS | CS_NONE_OK, pullout_capacity,
        "axial pull along the post that pulls it out (none: never; omitted: the skin friction's)"),
 };
@@ -307,8 +306,10 @@ static const cs_field posts_fields[] = {
       "a slot's, hook's, keyway bolt's or bracket's retainer strength along the post (not given: the kind's "
       "documented value)"),
     P("rotation_limit", CS_Q_ANGLE, CS_POS | CS_MAX90, rotation_limit,
-      "rotation at which a post the vehicle pushes over lets it ride over (a post carrying ropes folds on "
-      "until its top reaches grade)"),
+      "rotation past which a post hinged at grade that the vehicle pushes over lets it go (90 deg: none; it "
+      "goes when its top comes down to the pushing edge; a post carrying ropes folds on until its top "
+      "reaches "
+      "grade)"),
     P("lateral_release_force", CS_Q_FORCE, CS_POS, lateral_release_force,
       "a keyway bolt's or bracket's strength against a pull off its face (not given: the kind's documented "
       "value; other kinds: left out)"),
