@@ -64,7 +64,8 @@ static void test_aps3(void **state) {
     close_to(b->posts[0].footing.diameter, 9 * IN);
     close_to(b->posts[0].footing.soil_pressure, 8000 * LBF / (FT * FT));
     close_to(b->posts[0].footing.coeff_depth, 2.37);
-    close_to(b->posts[0].rotation_limit, PI / 4);
+    close_to(b->posts[0].rotation_limit, PI / 2); /* not given: none, the edge rides over its top */
+    close_to(b->posts[0].footing.rotation_limit, PI / 4);
     assert_int_equal(b->posts[0].attachment, CS_ATTACH_THROUGH);
     close_to(b->posts[0].height, 7 * FT);
     close_to(b->cables[0].height, 2.83 * FT);
@@ -429,7 +430,7 @@ static void test_cable_ends(void **state) {
     /* 64-bit FNV-1a (its published vectors: "a", "foobar") over the model's values */
     assert_true(cs_io_fnv(CS_IO_FNV_BASIS, "a", 1) == 0xaf63dc4c8601ec8cULL);
     assert_true(cs_io_fnv(CS_IO_FNV_BASIS, "foobar", 6) == 0x85944171f73967e8ULL);
-    assert_true(cs_model_input_hash(&in) == 0xad5bc77df1a14e49ULL);
+    assert_true(cs_model_input_hash(&in) == 0xce2fc20606736d99ULL);
     cs_loader_free(l);
     static const char *const slip[] = {"barrier.cables[0].slip_load=30 kip",
                                        "barrier.cables[0].slip_travel=18 in",
