@@ -285,9 +285,12 @@ typedef struct cs_post_view {
     double axial_pull;     /**< N, positive pulling the post out */
     double withdrawal;     /**< how far it has slid out of its footing (up, or along its axis), m */
     double
-        moment_capacity; /**< Mp about the base, or the footing's P (h + 2D/3) about its pivot if it is the
-                            weaker (a footing sliding out: what its length still in the ground holds), N m */
-    double top[3];       /**< the top's position, m */
+        moment_capacity;   /**< Mp about the base, or the footing's P (h + 2D/3) about its pivot if it is the
+                              weaker (a footing sliding out: what its length still in the ground holds), N m */
+    double top[3];         /**< the top's position, m */
+    double rotation_limit; /**< the tilt past which a vehicle that strikes it rides over it, rad: its
+                              footing's rotation limit if it turns in the soil, else its own (pi / 2: none;
+                              it goes when its top comes down to the pushing edge) */
 } cs_post_view;
 
 /** Fill out with a post now, to out's size.

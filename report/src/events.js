@@ -7,7 +7,7 @@ import { pair, fmt, seconds } from './units.js';
 const KINDS = {
   post_hinge: { group: 'yield', text: (who) => `${who} yield${s(who)}: a plastic hinge forms at the base`, value: (v) => `moment capacity ${pair('moment', v)}` },
   footing_rotation: { group: 'yield', text: (who) => `${who} start${s(who)} rotating in the soil (footing at its capacity)`, value: (v) => `moment capacity ${pair('moment', v)}` },
-  post_rotation_limit: { group: 'fail', text: (who) => `${who} fail${s(who)}: struck and tilted past the rotation limit, the vehicle rides over and it leaves the barrier`, value: (v) => `tilt ${fmt((v * 180) / Math.PI, 1)}°` },
+  post_rotation_limit: { group: 'fail', text: (who) => `${who} fail${s(who)}: struck and pushed over until the vehicle rides over it (its top down to the pushing edge, or past its rotation limit), it leaves the barrier`, value: (v) => `tilt ${fmt((v * 180) / Math.PI, 1)}°` },
   post_down: { group: 'fail', text: (who) => `${who} ${/ and /.test(who) ? 'are' : 'is'} down: folded over to the ground, still holding the cables threaded or clamped on ${/ and /.test(who) ? 'them' : 'it'}`, value: (v) => `tilt ${fmt((v * 180) / Math.PI, 1)}°` },
   post_shear: { group: 'fail', text: (who) => `${who} fail${s(who)}: sheared off at the base`, value: (v) => `base shear ${pair('force', v)}` },
   post_withdrawal: { group: 'yield', text: (who) => `${who} start${s(who)} sliding out of the footing (pull out of it at its pullout capacity)`, value: (v) => `axial pull ${pair('force', v)}` },

@@ -284,12 +284,12 @@ function specs(data) {
       return markers;
     };
     const tilts = near.map((p, k) => cut(S.post_tilt[k].map((v) => (v * 180) / Math.PI), p));
-    const limits = [...new Set(near.map((p) => data.barrier.posts[p][2]).filter((v) => v !== null))];
+    const limits = [...new Set((S.post_rotation_limit || []).filter((v) => v !== null))];
     out.push({
       key: 'post_tilt',
       title: `Tilt of the ${near.length} posts nearest the impact`,
       caption:
-        'How far each post leans from vertical. A dot marks where a post yields (a plastic hinge at its base, or its footing turning in the soil); a × where it fails (past the dashed rotation limit, sheared, or pulled out). A failed post leaves the barrier, so its curve ends there.',
+        'How far each post leans from vertical. A dot marks where a post yields (a plastic hinge at its base, or its footing turning in the soil); a × where it fails (struck and ridden over: its top down to the vehicle’s edge, or past the dashed rotation limit of a post turning in the soil; sheared; or pulled out). A failed post leaves the barrier, so its curve ends there.',
       data: [t, ...tilts, ...limits.map((l) => t.map(() => (l * 180) / Math.PI))],
       series: [...near.map((p, k) => line(`${postLabel(p)} (deg)`, PALETTE[k % PALETTE.length], k % 2 ? 2.2 : 5)), ...limits.map((l) => line(`rotation limit ${fmt((l * 180) / Math.PI, 0)}°`, '#1a1a1a', 1.5, { dash: [6, 4] }))],
       axes: [timeAxis, { label: 'tilt (deg)' }],

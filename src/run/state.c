@@ -211,6 +211,7 @@ cs_status cs_state_post(const cs_model *model, const cs_state *s, int p, cs_post
     out->axial_pull = ps->axial;
     out->withdrawal = ps->withdrawing ? ps->pull : 0.0;
     out->moment_capacity = cs_post_moment_cap(pm, ps);
+    out->rotation_limit = pm->rot_limit;
     cs_post_attachment(model, p, ps->tilt, ps->pull, cs_post_upright(&model->posts[p]), pm->height, out->top);
     return cs_sized_put(view, &full, sizeof full, "cs_post_view", err);
 }

@@ -240,6 +240,12 @@ static int is_failure(cs_event_type type) {
            type == CS_EVENT_POST_PULLOUT;
 }
 
+/* Whether post p has a rotation limit to draw: a tilt short of 90 degrees past which a struck post goes
+ * (a post hinged at grade has none of its own: it goes when its top comes down to the edge). */
+static int has_limit(const cs_record *r, int p) {
+    return r->posts[p].rotation_limit < 0.5 * CS_PI - 1e-9;
+}
+
 /* The k-th of the nearest posts idx is the mirror image of an earlier one about the impact point: as
  * far from it on the other side, its moment and tilt the same at every frame (within 0.1% of the largest,
  * a curve ending at the same frame). That one's index in idx, or -1. */
@@ -292,17 +298,17 @@ static void fig_posts(cs_plot *p, const cs_figure_data *d, double *t) {
     cs_axes_fit(&at, NULL, tilt, n * count);
     for (int k = 0; k < count && n > 0; k++) {
         cs_axes_fit_point(&am, NAN, r->posts[idx[k]].moment_capacity / 1e3);
-        cs_axes_fit_point(&at, NAN, posts[idx[k]].rotation_limit * 180 / CS_PI);
+        if (has_limit(r, idx[k])) cs_axes_fit_point(&at, NAN, r->posts[idx[k]].rotation_limit * 180 / CS_PI);
     }
     cs_axes_layout(p, &am, (cs_box){MARGIN, MARGIN + 40, p->width - 2 * MARGIN, half});
     cs_axes_layout(p, &at, (cs_box){MARGIN, MARGIN + 40 + half, p->width - 2 * MARGIN, half});
     /* limits, once per distinct value, naming the posts it is theirs */
     for (int k = 0; k < count && n > 0; k++) {
-        double cap = r->posts[idx[k]].moment_capacity, lim = posts[idx[k]].rotation_limit;
-        int new_cap = 1, new_lim = 1, len;
+        double cap = r->posts[idx[k]].moment_capacity, lim = r->posts[idx[k]].rotation_limit;
+        int new_cap = 1, new_lim = has_limit(r, idx[k]), len;
         for (int j = 0; j < k; j++) {
             new_cap &= r->posts[idx[j]].moment_capacity != cap;
-            new_lim &= posts[idx[j]].rotation_limit != lim;
+            new_lim &= r->posts[idx[j]].rotation_limit != lim;
         }
         cs_style s = dashed(BLACK, 1.5);
         if (new_cap) {

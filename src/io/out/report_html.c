@@ -279,6 +279,14 @@ static json_object *write_series(jw *j, const cs_model_input *in, const cs_recor
     }
     json_object_object_add(o, "post_capacity", capacity);
     kunit(units, "post_capacity", "N m");
+    json_object *limit = json_object_new_array(); /* null: none (a post hinged at grade) */
+    for (int k = 0; k < near && r->frame_count > 0; k++) {
+        double lim = r->posts[idx[k]].rotation_limit;
+        snprintf(j->what, sizeof j->what, "post %d's rotation limit", idx[k]);
+        json_object_array_add(limit, opt(j, lim < 0.5 * CS_PI - 1e-9 ? lim : NAN));
+    }
+    json_object_object_add(o, "post_rotation_limit", limit);
+    kunit(units, "post_rotation_limit", "rad");
     json_object *energy = json_object_new_object(), *energy_units = json_object_new_object();
     for (int k = 0; k < LEDGER_TERMS; k++) {
         json_object_object_add(energy, ledger[k].key,
@@ -612,17 +620,16 @@ static void scenario_and_vehicle(jw *j, json_object *doc, const cs_model_input *
 /* "barrier": posts [x, height, rotation limit], cables [height, Fu, pretension], anchors [x, z]; their
  * units barrier_units */
 static const char barrier_units[] =
-    "{\"posts\":[[\"m\",\"m\",\"rad\"]],\"cables\":[[\"m\",\"N\",\"N\"]],\"anchors\":\"m\"}";
+    "{\"posts\":[[\"m\",\"m\"]],\"cables\":[[\"m\",\"N\",\"N\"]],\"anchors\":\"m\"}";
 static json_object *barrier_of(jw *j, const cs_barrier_def *b) {
     json_object *o = json_object_new_object(), *posts = json_object_new_array(),
                 *cables = json_object_new_array(), *anchors = json_object_new_array();
     snprintf(j->what, sizeof j->what, "the barrier");
     for (int p = 0; p < b->post_count; p++) {
         const cs_post_def *pd = &b->posts[p];
-        json_object *a = json_object_new_array_ext(3);
+        json_object *a = json_object_new_array_ext(2);
         json_object_array_add(a, num(j, pd->x));
         json_object_array_add(a, num(j, pd->height));
-        json_object_array_add(a, opt(j, isfinite(pd->rotation_limit) ? pd->rotation_limit : NAN));
         json_object_array_add(posts, a);
     }
     json_object_object_add(o, "posts", posts);
