@@ -549,6 +549,46 @@ static void a_post_is_struck_by_the_edge_it_came_in_across(void **state) {
     cs_model_free(m);
 }
 
+/* The side ends at the rear: a post the left side struck and pushed 5 cm over bears on it 1 cm ahead of
+ * the rear (the body moved on along its heading), and 1 cm behind the rear it stands free at its set,
+ * pushing nothing (post.c `side_passed`; RS3's post 7 was pushed on at its plateau for half a second by
+ * the side's line taken on past the rear). */
+static void the_side_lets_a_post_go_past_the_rear(void **state) {
+    (void)state;
+    fixture fx;
+    fixture_aps3(&fx);
+    cs_post_def post = fx.posts[0];
+    cs_model *m = one_post_model(&post, NULL);
+    const cs_vehicle_def *v = &m->vehicle.def;
+    cs_error err;
+    cs_state *s = cs_state_create(m, &err);
+    assert_non_null(s);
+    s->quat[0] = 1.0, s->quat[1] = s->quat[2] = s->quat[3] = 0.0; /* heading +x */
+    s->pos[0] = m->posts[0].x - v->cg_to_front + 0.020, s->pos[1] = -(0.5 * v->front_width - 0.002);
+    s->vel[0] = 0.0, s->vel[1] = 5.0, s->vel[2] = 0.0;
+    s->omega[0] = s->omega[1] = s->omega[2] = 0.0;
+    s->crush = 0.0;
+    assert_int_equal(cs_post_capture(m, s, 0), 1);
+    assert_int_equal(s->posts[0].pusher, CS_PUSH_LEFT);
+    s->pos[1] += 0.05;
+    const double past[2] = {-0.01, 0.01};
+    for (int k = 0; k < 2; k++) {
+        s->pos[0] = m->posts[0].x + v->cg_to_rear + past[k];
+        cs_post_place_captured(m, s, s->crush);
+        const cs_post_state *ps = &s->posts[0];
+        printf("the post %+.2f m past the rear: bearing %d, push %.1f N, tilt %.4f rad\n", past[k],
+               ps->bearing, ps->push, hypot(ps->tilt[0], ps->tilt[1]));
+        if (k == 0) {
+            assert_true(ps->bearing && ps->push > 1e3);
+        } else {
+            assert_false(ps->bearing);
+            assert_true(ps->push == 0.0 && ps->tilt[0] == ps->plastic[0] && ps->tilt[1] == ps->plastic[1]);
+        }
+    }
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
 /* A post struck with its cable on it leaves the cable's path and lets it go: one cable_struck_off event,
  * the post its element, the cable named, its value the cable's pull on the post just before: the two
  * spans' tensions along their chords, T_l (p_l - p) / |p_l - p| + T_r (p_r - p) / |p_r - p|, summed here
@@ -1006,6 +1046,7 @@ int main(void) {
         cmocka_unit_test(struck_post_takes_the_work_the_face_does),
         cmocka_unit_test(a_post_is_struck_by_the_edge_it_came_in_across),
         cmocka_unit_test(a_struck_post_lets_its_cable_go_with_an_event),
+        cmocka_unit_test(the_side_lets_a_post_go_past_the_rear),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -633,6 +633,18 @@ static double captured_lean(const cs_model *model, const cs_post_state *ps, int 
     return th;
 }
 
+/* Whether the side that struck post p has passed it: its base behind the rear or ahead of the face in
+ * the body frame, beyond the side's edge, which ends there (edge_point extends its line). */
+static int side_passed(const cs_model *model, const cs_state *s, int p) {
+    const cs_post_state *ps = &s->posts[p];
+    if (ps->pusher == CS_PUSH_FACE) return 0;
+    const cs_vehicle_def *v = &model->vehicle.def;
+    double rel[3], b[3], base[3] = {model->posts[p].x, 0.0, 0.0};
+    v3_sub(rel, base, s->pos);
+    quat_unrotate(b, s->quat, rel);
+    return b[0] < -v->cg_to_rear || b[0] > v->cg_to_front - s->crush;
+}
+
 /* Place captured post p for a crush; returns its push along the vehicle's heading if the face pushes it:
  * the normal force M / arm along f, cos(theta) + mu sin(theta) of it with the edge's friction up the post
  * (hinged at grade; the footing turning, M / (arm cos(theta)), the work's gradient along f). */
@@ -646,9 +658,9 @@ static double place_one(const cs_model *model, cs_state *s, int p, double crush)
     ps->arm = arm;
     cs_post_resistance(pm, ps, ps->tilt, q);
     double m = q[0] * f[0] + q[1] * f[1];
-    ps->bearing = m >= 0.0;
+    ps->bearing = m >= 0.0 && !side_passed(model, s, p);
     ps->bend = ps->bearing ? m : 0.0;
-    if (!ps->bearing) { /* the edge has backed off: the post stands at its set, free */
+    if (!ps->bearing) { /* the edge has backed off or passed it: the post stands at its set, free */
         ps->tilt[0] = ps->plastic[0], ps->tilt[1] = ps->plastic[1];
         ps->push = 0.0;
         return 0.0;
