@@ -158,7 +158,8 @@ static inline int cs_post_in_barrier(const cs_post_state *ps) {
 /* Whether post p slides out of its footing straight up: hinged at grade (its steel yields before its
  * footing turns: !soil_yields), the stub in the footing stays vertical and carries the bent post up with
  * it, also once its footing's moment, falling as it comes out, is the weaker, and also once the vehicle
- * strikes it (the edge's horizontal push has no vertical part to draw the stub out). A post whose soil
+ * strikes it (the edge's pull on the stub, its friction's less its normal force's, is left out: at most
+ * mu M_p / z, under a third of the examples' pullout capacities, docs/theory.md). A post whose soil
  * yields first turns with its footing and slides along its leaned axis, struck or not (post_pullout.c;
  * docs/theory.md, "A hinged post's stub stays upright"). */
 static inline int cs_post_upright(const cs_post_model *pm) {
@@ -210,8 +211,9 @@ double cs_post_kinetic_energy(const cs_model *model, const cs_state *s, int post
 int cs_post_solved(const cs_model *model, const cs_state *s, int post);
 int cs_post_check_failure(const cs_model *model, cs_state *s, int post);
 /* How far a standing post folds: a post carrying ropes until its top reaches grade (cs_post_lie_angle),
- * where the ground stops it, a struck post to its rotation limit, where the vehicle's edge rides over it;
- * rad. */
+ * where the ground stops it; a struck post until the vehicle's edge rides over it: hinged at grade, its
+ * top down to the edge (or its own rotation limit, if less), turning in the soil, its footing's rotation
+ * limit; rad. */
 double cs_post_fold_limit(const cs_post_model *pm, const cs_post_state *ps);
 /* The tilt at which its top reaches grade: acos(pivot / (height + pivot)) as built (lie_angle), and for a
  * post slid upright by w, its pivot w higher, acos((pivot - w) / (height + pivot)), past 90 degrees; w that

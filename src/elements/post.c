@@ -348,7 +348,7 @@ static double turn_moment(const cs_post_model *pm, const cs_post_state *ps, doub
 /* A struck post's base shear, its push, and its pull out of the ground: the horizontal push on a post
  * whose footing turns, leaning by theta, has the component push sin(theta) along the post, out of the
  * ground: what pulls a short post out (its skin friction grows as D^2, its lateral capacity more slowly);
- * none up the upright stub of a post hinged at grade (docs/theory.md, "Struck posts"). */
+ * none up the upright stub of a post hinged at grade (docs/theory.md, "Posts struck by the vehicle"). */
 static void struck_loads(const cs_post_model *pm, cs_post_state *ps) {
     ps->shear = ps->push;
     ps->axial = cs_post_upright(pm) ? 0.0 : ps->push * sin(v2_norm(ps->tilt[0], ps->tilt[1]));
@@ -488,16 +488,19 @@ double cs_post_stored_energy(const cs_model *model, const cs_state *s, int p) {
 
 /* ---- posts struck by the vehicle ----
  * A standing post whose base the face's bottom edge reaches (within its width plus a margin) is
- * struck by the vehicle: it leaves the cable paths and is pushed over at the face's bottom edge,
- * height zb at the strike. With the face a distance d past the post's base (along the vehicle's heading
- * f), the post leans by theta = asin(d / (zb + pivot)) toward f, resisting with its moment M
- * (elastic-plastic, as above). A standing post that finds itself inside the body's outline in plan at
- * the sides' bottom (the vehicle at an angle has swept its side over it: the post let its cables go,
- * or the rear swung in) is struck by the nearer side the same way: d is how far the side's bottom edge
- * is past the base along the side's outward normal f. Its resistance acts on the vehicle as the
- * gradient of the work Q . dtilt with respect to the vehicle's pose, so the work the vehicle does is
- * exactly what the post stores and dissipates; along f that is the push M / ((zb + pivot) cos theta)
- * (push x dd = M dtheta), which also loads the crush when the face pushes. */
+ * struck by the vehicle: it leaves the cable paths and is pushed over at the face's bottom edge. With the
+ * face a distance d past the post's base (along the vehicle's heading f), a post hinged at grade leans by
+ * theta = atan(d / z) toward f, z the edge's height above the hinge (the edge keeps its height and
+ * slides up the post, with the face's friction), until its top comes down to the edge; a post whose
+ * footing turns in the soil by theta = asin(d / (zb + pivot)), zb the edge's height at the strike, to its
+ * footing's rotation limit (lean_at). Either resists with its moment M (elastic-plastic, as above). A
+ * standing post that finds itself inside the body's outline in plan at the sides' bottom (the vehicle at
+ * an angle has swept its side over it: the post let its cables go, or the rear swung in) is struck by
+ * the nearer side the same way: d is how far the side's bottom edge is past the base along the side's
+ * outward normal f, until the rear passes it. Its resistance acts on the vehicle as the gradient of its
+ * work (Q . dtilt, and the edge's friction) with respect to the vehicle's pose, so the work the vehicle
+ * does is exactly what the post stores and dissipates; along f that is the push (place_one), which also
+ * loads the crush when the face pushes. */
 #define CS_CAPTURE_MARGIN 0.1 /* m beyond each face corner that still strikes a post */
 
 /* The face at a vehicle pose (pos, quat): the middle of its bottom edge, the heading f (horizontal,
@@ -548,9 +551,9 @@ static void edge_point(const cs_model *model, int p, int pusher, const double *p
  * by w. A post hinged at grade: the edge holds its height and slides up the post, tan(theta) = dr / zl,
  * the struck point hypot(dr, zl) from the hinge. A post whose footing turns in the soil: the struck point
  * stays where it was struck on the post, lever + w from the pivot (the slide carries it out), sin(theta) =
- * dr / (lever + w), the bogie tests' reading (docs/theory.md, "Struck posts"). The tilt is theta along f and
- * the permanent set across it (the edge pushes along f only, so it turns no tilt across). Returns theta;
- * *arm gets the struck point's distance from the pivot. */
+ * dr / (lever + w), the bogie tests' reading (docs/theory.md, "Posts struck by the vehicle"). The tilt is
+ * theta along f and the permanent set across it (the edge pushes along f only, so it turns no tilt across).
+ * Returns theta; *arm gets the struck point's distance from the pivot. */
 static double lean_at(const cs_post_model *pm, const cs_post_state *ps, double dr, double zl, double w,
                       const double *f, double *tilt, double *arm) {
     double th;
@@ -687,8 +690,8 @@ double cs_post_place_captured(const cs_model *model, cs_state *s, double crush) 
 
 /* The captured posts' resistance (as placed for this crush) on the vehicle, added to force and moment:
  * the gradient of the work Q . dtilt + R dw + mu N |ds| (R the shaft's hold as a post slides out; mu N the
- * friction of the edge sliding up a post hinged at grade by ds, N = M / arm its normal force, the sense of
- * the slide since the last commit) with respect to the vehicle's pose (central differences, 1e-6 m and
+ * friction of the edge sliding along a post hinged at grade by ds, N = M / arm its normal force, in the
+ * sense of slide_sense) with respect to the vehicle's pose (central differences, 1e-6 m and
  * 1e-6 rad), so that the vehicle's work is exactly what the posts store and dissipate however the face
  * moves (pushing on, coming down, rolling, sliding along its edge). */
 void cs_post_captured_force(const cs_model *model, const cs_state *s, double crush, int face_only,
