@@ -636,12 +636,20 @@ static double captured_lean(const cs_model *model, const cs_post_state *ps, int 
     return th;
 }
 
-/* Whether the side that struck post p has passed it: its base behind the rear or ahead of the face in
- * the body frame, beyond the side's edge, which ends there (edge_point extends its line). */
-static int side_passed(const cs_model *model, const cs_state *s, int p) {
+/* Whether the edge that struck post p has passed it. A side's edge ends at the rear and at the face
+ * (edge_point extends its line): it has passed once the post's base is behind the rear or ahead of the
+ * face in the body frame. The face's edge ends at its corners: it has passed once the post, at the edge's
+ * height, is further to the side than a corner by more than the margin that struck it (cs_post_capture). */
+static int edge_passed(const cs_model *model, const cs_state *s, int p) {
     const cs_post_state *ps = &s->posts[p];
-    if (ps->pusher == CS_PUSH_FACE) return 0;
     const cs_vehicle_def *v = &model->vehicle.def;
+    if (ps->pusher == CS_PUSH_FACE) {
+        double o[3], f[3], left[3], zb, at[3], rel[3];
+        face_frame(model, s->pos, s->quat, s->crush, o, f, left, &zb);
+        cs_post_attachment(model, p, ps->tilt, ps->pull, cs_post_upright(&model->posts[p]), zb, at);
+        v3_sub(rel, o, at);
+        return fabs(v3_dot(rel, left)) > 0.5 * v->front_width + CS_CAPTURE_MARGIN;
+    }
     double rel[3], b[3], base[3] = {model->posts[p].x, 0.0, 0.0};
     v3_sub(rel, base, s->pos);
     quat_unrotate(b, s->quat, rel);
@@ -657,12 +665,14 @@ static double place_one(const cs_model *model, cs_state *s, int p, double crush)
     double q[2], f[3], w, arm, zl;
     double th = captured_lean(model, ps, p, s->pos, s->quat, crush, ps->tilt, f, &w, &arm, &zl);
     if (ps->withdrawing) cs_post_struck_slide_set(pm, ps, w);
-    if (cs_post_upright(pm)) ps->lever = zl;
     ps->arm = arm;
     cs_post_resistance(pm, ps, ps->tilt, q);
     double m = q[0] * f[0] + q[1] * f[1];
-    ps->bearing = m >= 0.0 && !side_passed(model, s, p);
+    ps->bearing = m >= 0.0 && !edge_passed(model, s, p);
     ps->bend = ps->bearing ? m : 0.0;
+    /* the edge's height over a hinge at grade, while it bears: where it rides over the post (the edge's
+     * line taken on past the vehicle, or backed off, is no edge) */
+    if (ps->bearing && cs_post_upright(pm)) ps->lever = zl;
     if (!ps->bearing) { /* the edge has backed off or passed it: the post stands at its set, free */
         ps->tilt[0] = ps->plastic[0], ps->tilt[1] = ps->plastic[1];
         ps->push = 0.0;
