@@ -393,6 +393,42 @@ static void a_dead_man_its_ropes_let_go_stops_in_the_soil(void **state) {
     cs_model_free(m);
 }
 
+/* A dead-man that has ploughed has the soil it drove into ahead of it and its own trench behind it: the
+ * soil pushes it back off its face and never pulls it on. APS3's dead-man slid 0.1 m along +x (its plastic
+ * slide), at the elastic offsets e from it, with its rope held where it is (the soil's force is then what
+ * the residual loses, h = 0: no inertia): pressed 5 mm into the soil ahead the soil holds k e, to 1e-12;
+ * backed 5 mm off it and pushed 2 mm across, only its sides hold it, k (0, 2 mm), and its elastic energy is
+ * k (2 mm)^2 / 2; a dead-man that has not slid is held all round, k e. */
+static void a_dead_man_backed_off_its_soil_is_held_by_its_sides(void **state) {
+    (void)state;
+    cs_model *m;
+    double balance, kick;
+    cs_state *s = kicked_dead_man(0.0, &m, &balance, &kick);
+    const cs_anchor_model *am = &m->anchors[0];
+    cs_anchor_state *as = &s->anchors[0];
+    s->h = 0.0;
+    const double k = am->stiffness, slid[2] = {0.1, 0.0};
+    const double e[3][2] = {{0.005, 0.0}, {-0.005, 0.002}, {-0.005, 0.002}};
+    const double held[3][2] = {{k * 0.005, 0.0}, {0.0, k * 0.002}, {-k * 0.005, k * 0.002}};
+    for (int c = 0; c < 3; c++) {
+        double p = c < 2 ? slid[0] : 0.0, r0[2], r[2];
+        as->slide = p, as->plastic[0] = p, as->plastic[1] = 0.0;
+        as->u[0] = p, as->u[1] = 0.0;
+        cs_anchor_residual(m, s, 0, NULL, r0);
+        as->u[0] = p + e[c][0], as->u[1] = e[c][1];
+        cs_anchor_residual(m, s, 0, NULL, r);
+        double q[2] = {r0[0] - r[0], r0[1] - r[1]}, kinetic;
+        double stored = cs_anchor_stored_energy(m, s, 0, &kinetic);
+        printf("slid %.1f m, offset (%+.3f, %+.3f) m: the soil holds (%.1f, %.1f) N, stores %.3f J\n", p,
+               e[c][0], e[c][1], q[0], q[1], stored);
+        for (int i = 0; i < 2; i++)
+            assert_true(fabs(q[i] - held[c][i]) <= 1e-12 * k * 0.005);
+        CHECK_REL(stored, 0.5 * (q[0] * q[0] + q[1] * q[1]) / k, 1e-12);
+    }
+    cs_state_free(s);
+    cs_model_free(m);
+}
+
 /* The ropes' horizontal pull on anchor a from their paths: each intact rope's end span, tension times the
  * horizontal part of its direction away from the anchor (weightless ropes: the span is straight). */
 static double pull_by_the_paths(const cs_model *m, const cs_state *s, int a) {
@@ -550,6 +586,7 @@ int main(void) {
                                        cmocka_unit_test(a_ringing_dead_man_keeps_its_energy),
                                        cmocka_unit_test(a_ploughing_dead_man_sweeps_the_soil),
                                        cmocka_unit_test(a_dead_man_its_ropes_let_go_stops_in_the_soil),
+                                       cmocka_unit_test(a_dead_man_backed_off_its_soil_is_held_by_its_sides),
                                        cmocka_unit_test(a_rigid_anchor_holds_the_ropes_pull),
                                        cmocka_unit_test(a_dead_man_rises_out_of_the_soil_by_its_skin)};
     return cmocka_run_group_tests(tests, NULL, NULL);

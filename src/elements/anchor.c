@@ -169,11 +169,33 @@ static double return_map(const cs_anchor_model *am, double f, double s, double n
     return residual;
 }
 
-/* The soil's resistance at displacement u (the trial k (u - u_p) returned radially onto the cap), its
+/* The soil's trial force at displacement u, k (u - u_p) on a footing that has not slid, into tr. One that
+ * has ploughed (s > 0) has the soil it drove into ahead of it, along its plastic slide u_p (n = u_p / |u_p|),
+ * and its own trench behind it: backed off that soil, e . n < 0 with e = u - u_p, its face bears on nothing
+ * and only its sides hold it, k (e - (e . n) n). The soil pushes and never pulls; the potential, |tr|^2 / 2k,
+ * stays continuous. Into proj (2 x 2, row major), if given, d tr / du over k: I, or I - n n^T backed off. */
+static void trial_force(const cs_anchor_model *am, const cs_anchor_state *as, const double *u, double *tr,
+                        double *proj) {
+    double e[2] = {u[0] - as->plastic[0], u[1] - as->plastic[1]}, p = v2_norm(as->plastic[0], as->plastic[1]);
+    double n[2] = {0.0, 0.0}, en = 0.0;
+    if (as->slide > 0.0 && p > 0.0) {
+        n[0] = as->plastic[0] / p, n[1] = as->plastic[1] / p;
+        en = fmin(e[0] * n[0] + e[1] * n[1], 0.0);
+        if (!(en < 0.0)) n[0] = n[1] = en = 0.0;
+    }
+    tr[0] = am->stiffness * (e[0] - en * n[0]), tr[1] = am->stiffness * (e[1] - en * n[1]);
+    if (proj)
+        for (int i = 0; i < 2; i++)
+            for (int j = 0; j < 2; j++)
+                proj[2 * i + j] = (i == j) - n[i] * n[j];
+}
+
+/* The soil's resistance at displacement u (the trial force returned radially onto the cap), its
  * magnitude's slope into *slope and the trial's magnitude into *trial (either may be NULL). */
 static void resistance(const cs_anchor_model *am, const cs_anchor_state *as, const double *u, double *q,
                        double *slope, double *trial) {
-    double tr[2] = {am->stiffness * (u[0] - as->plastic[0]), am->stiffness * (u[1] - as->plastic[1])};
+    double tr[2];
+    trial_force(am, as, u, tr, NULL);
     double n = v2_norm(tr[0], tr[1]), slide, dq;
     double m = return_map(am, cs_anchor_face_share(am, as), as->slide, n, &slide, &dq),
            f = n > m ? m / n : 1.0;
@@ -240,7 +262,8 @@ static void residual(const cs_model *model, const cs_state *s, const cs_rows *ro
 }
 
 /* Rows a, a+1: the ropes' pull through their end spans (chained to the nodes), less the resistance's slope
- * (k I elastic; past the peak k ((|R| / n) (I - e e^T) + d|R|/dn e e^T), e the trial's direction), the
+ * (k P elastic; past the peak k ((|R| / n) (P - e e^T) + d|R|/dn e e^T), e the trial's direction and P the
+ * trial's projection, I or I - n n^T backed off its soil, which e lies in), the
  * inertial M / (beta h^2 (1 + alpha)) and the drag's c (|v| I + v v^T / |v|) gamma / (beta h) on the
  * anchor's own columns. */
 static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *rows, int row,
@@ -248,15 +271,14 @@ static void jacobian(const cs_model *model, const cs_state *s, const cs_rows *ro
     int a = u->a;
     const cs_anchor_model *am = &model->anchors[a];
     const cs_anchor_state *as = &s->anchors[a];
-    double unit = cs_rows_force_unit(model), k[4], q[2], slope, n;
+    double unit = cs_rows_force_unit(model), k[4], q[2], slope, n, tr[2], proj[4];
     resistance(am, as, as->u, q, &slope, &n);
-    double qn = v2_norm(q[0], q[1]), t = n > 0.0 ? qn / n : 1.0, e[2] = {1.0, 0.0};
-    if (n > 0.0)
-        e[0] = (as->u[0] - as->plastic[0]) * am->stiffness / n,
-        e[1] = (as->u[1] - as->plastic[1]) * am->stiffness / n;
+    trial_force(am, as, as->u, tr, proj);
+    double qn = v2_norm(q[0], q[1]), t = n > 0.0 ? qn / n : 1.0, e[2] = {0.0, 0.0};
+    if (n > 0.0) e[0] = tr[0] / n, e[1] = tr[1] / n;
     for (int i = 0; i < 2; i++)
         for (int j = 0; j < 2; j++)
-            k[2 * i + j] = -am->stiffness * (t * ((i == j) - e[i] * e[j]) + slope * e[i] * e[j]);
+            k[2 * i + j] = -am->stiffness * (t * (proj[2 * i + j] - e[i] * e[j]) + slope * e[i] * e[j]);
     double inertia = cs_hht_inertia_slope(am->moving_mass, s->h);
     k[0] -= inertia, k[3] -= inertia;
     if (s->h < HUGE_VAL) { /* the drag's slope on the rate, times dv/du = gamma / (beta h) */
@@ -403,7 +425,8 @@ static void commit_lift(const cs_model *model, cs_state *s, int a, double fz) {
     }
     double e0 = elastic_energy(am, as);
     as->lift_commit = as->lift;
-    double tr[2] = {am->stiffness * (as->u[0] - as->plastic[0]), am->stiffness * (as->u[1] - as->plastic[1])};
+    double tr[2];
+    trial_force(am, as, as->u, tr, NULL);
     double n = v2_norm(tr[0], tr[1]), slide, slope;
     return_map(am, cs_anchor_face_share(am, as), as->slide, n, &slide, &slope);
     if (slide > 0.0) {
@@ -468,8 +491,8 @@ void cs_anchor_commit(const cs_model *model, cs_state *s) {
         }
         as->net[0] = net[0] + d[0], as->net[1] = net[1] + d[1];
         as->u_commit[0] = as->u[0], as->u_commit[1] = as->u[1];
-        double tr[2] = {am->stiffness * (as->u[0] - as->plastic[0]),
-                        am->stiffness * (as->u[1] - as->plastic[1])};
+        double tr[2];
+        trial_force(am, as, as->u, tr, NULL);
         double n = v2_norm(tr[0], tr[1]), slide, slope;
         double share = cs_anchor_face_share(am, as);
         return_map(am, share, as->slide, n, &slide, &slope);
