@@ -398,7 +398,9 @@ static void a_dead_man_its_ropes_let_go_stops_in_the_soil(void **state) {
  * slide), at the elastic offsets e from it, with its rope held where it is (the soil's force is then what
  * the residual loses, h = 0: no inertia): pressed 5 mm into the soil ahead the soil holds k e, to 1e-12;
  * backed 5 mm off it and pushed 2 mm across, only its sides hold it, k (0, 2 mm), and its elastic energy is
- * k (2 mm)^2 / 2; a dead-man that has not slid is held all round, k e. */
+ * k (2 mm)^2 / 2; a dead-man that has not slid is held all round, k e. Moving at v it sweeps the soil ahead
+ * of it, -c |v| v, but none of its trench: at (1, 0.2) m/s the drag is -c |v| v, at (-1, 0.2) m/s only
+ * the motion across, -c (0, 0.2^2), to 1e-9 c (the rate held over the step: no inertial force). */
 static void a_dead_man_backed_off_its_soil_is_held_by_its_sides(void **state) {
     (void)state;
     cs_model *m;
@@ -424,6 +426,25 @@ static void a_dead_man_backed_off_its_soil_is_held_by_its_sides(void **state) {
         for (int i = 0; i < 2; i++)
             assert_true(fabs(q[i] - held[c][i]) <= 1e-12 * k * 0.005);
         CHECK_REL(stored, 0.5 * (q[0] * q[0] + q[1] * q[1]) / k, 1e-12);
+    }
+    const double rates[2][2] = {{1.0, 0.2}, {-1.0, 0.2}}, c = am->drag;
+    const double swept[2][2] = {{-c * hypot(1.0, 0.2) * 1.0, -c * hypot(1.0, 0.2) * 0.2}, {0.0, -c * 0.04}};
+    for (int k = 0; k < 2; k++) {
+        double r[2], r1[2];
+        as->slide = slid[0], as->plastic[0] = slid[0], as->plastic[1] = 0.0;
+        as->u[0] = as->u_commit[0] = slid[0] + 0.005, as->u[1] = as->u_commit[1] = 0.0;
+        s->h = 5e-4;
+        for (int i = 0; i < 2; i++)
+            as->rate[i] = rates[k][i], as->acc[i] = as->net[i] = 0.0, as->u[i] += s->h * rates[k][i];
+        cs_anchor_residual(m, s, 0, NULL, r1);
+        s->h = 0.0;
+        cs_anchor_residual(m, s, 0, NULL, r);
+        double d[2] = {r1[0] - r[0], r1[1] - r[1]};
+        printf("moving at (%+.1f, %+.1f) m/s: the swept soil drags it with (%.3f, %.3f) N, by hand (%.3f, "
+               "%.3f)\n",
+               rates[k][0], rates[k][1], d[0], d[1], swept[k][0], swept[k][1]);
+        for (int i = 0; i < 2; i++)
+            assert_true(fabs(d[i] - swept[k][i]) <= 1e-9 * c);
     }
     cs_state_free(s);
     cs_model_free(m);

@@ -16,8 +16,10 @@
  * The footing and the soil's passive wedge moving with it have mass M (its own and the wedge's:
  * footing.c). Moving at v it also sweeps the soil in front of its face, rho b D per metre of travel, which
  * must take on its speed: the momentum flux drags it back with c |v| v, c = rho b D (the inertial drag of
- * a body driven through a granular soil; docs/theory.md), booked as soil. It is integrated over the time h
- * since the last commit by the HHT-alpha method (Hilber, Hughes and Taylor 1977): with F = F_ropes - R(u)
+ * a body driven through a granular soil; docs/theory.md), booked as soil; backing off the soil it has
+ * ploughed, into its own trench, it sweeps none, and only its sides hold it (trial_force). It is integrated
+ * over the time h since the last commit by the HHT-alpha method (Hilber, Hughes and Taylor 1977): with F =
+ * F_ropes - R(u)
  * - c |v(u)| v(u) the net force,
  *   M a = (1 + alpha) F(u) - alpha F_c,
  *   u = u_c + h v_c + h^2 ((1/2 - beta) a_c + beta a),   v = v_c + h ((1 - gamma) a_c + gamma a),
@@ -169,25 +171,32 @@ static double return_map(const cs_anchor_model *am, double f, double s, double n
     return residual;
 }
 
-/* The soil's trial force at displacement u, k (u - u_p) on a footing that has not slid, into tr. One that
- * has ploughed (s > 0) has the soil it drove into ahead of it, along its plastic slide u_p (n = u_p / |u_p|),
- * and its own trench behind it: backed off that soil, e . n < 0 with e = u - u_p, its face bears on nothing
- * and only its sides hold it, k (e - (e . n) n). The soil pushes and never pulls; the potential, |tr|^2 / 2k,
- * stays continuous. Into proj (2 x 2, row major), if given, d tr / du over k: I, or I - n n^T backed off. */
-static void trial_force(const cs_anchor_model *am, const cs_anchor_state *as, const double *u, double *tr,
-                        double *proj) {
-    double e[2] = {u[0] - as->plastic[0], u[1] - as->plastic[1]}, p = v2_norm(as->plastic[0], as->plastic[1]);
-    double n[2] = {0.0, 0.0}, en = 0.0;
+/* x less its part back along the footing's plastic slide u_p (n = u_p / |u_p|) once it has slid, into out:
+ * the part of an offset or a motion that bears on the soil it ploughed and not into its own trench behind
+ * it. Into proj (2 x 2, row major), if given, d out / dx: I, or I - n n^T where x . n < 0. */
+static void toward_soil(const cs_anchor_state *as, const double *x, double *out, double *proj) {
+    double p = v2_norm(as->plastic[0], as->plastic[1]), n[2] = {0.0, 0.0}, xn = 0.0;
     if (as->slide > 0.0 && p > 0.0) {
         n[0] = as->plastic[0] / p, n[1] = as->plastic[1] / p;
-        en = fmin(e[0] * n[0] + e[1] * n[1], 0.0);
-        if (!(en < 0.0)) n[0] = n[1] = en = 0.0;
+        xn = x[0] * n[0] + x[1] * n[1];
+        if (!(xn < 0.0)) n[0] = n[1] = xn = 0.0;
     }
-    tr[0] = am->stiffness * (e[0] - en * n[0]), tr[1] = am->stiffness * (e[1] - en * n[1]);
+    out[0] = x[0] - xn * n[0], out[1] = x[1] - xn * n[1];
     if (proj)
         for (int i = 0; i < 2; i++)
             for (int j = 0; j < 2; j++)
                 proj[2 * i + j] = (i == j) - n[i] * n[j];
+}
+
+/* The soil's trial force at displacement u into tr: k (u - u_p), on a footing that has ploughed only the
+ * part toward the soil ahead of it. Backed off that soil ((u - u_p) . n < 0) its face bears on nothing and
+ * its sides alone hold it, k (e - (e . n) n): the soil pushes and never pulls, and the potential |tr|^2 /
+ * 2k stays continuous. Into proj, if given, d tr / du over k (toward_soil). */
+static void trial_force(const cs_anchor_model *am, const cs_anchor_state *as, const double *u, double *tr,
+                        double *proj) {
+    double e[2] = {u[0] - as->plastic[0], u[1] - as->plastic[1]};
+    toward_soil(as, e, tr, proj);
+    tr[0] *= am->stiffness, tr[1] *= am->stiffness;
 }
 
 /* The soil's resistance at displacement u (the trial force returned radially onto the cap), its
@@ -206,15 +215,22 @@ static void resistance(const cs_anchor_model *am, const cs_anchor_state *as, con
 
 /* The soil's inertial drag at the rate v, -c |v| v, into d, and its slope on the rate into dv (2 x 2, row
  * major) if given: the soil the face sweeps, c = rho b x D per metre of travel (x D the face still in the
- * ground), brought to the footing's speed (the momentum flux through the face). */
+ * ground), brought to the footing's speed (the momentum flux through the face). A footing that has
+ * ploughed sweeps none with the part of its motion back into its own trench (toward_soil). */
 static void drag(const cs_anchor_model *am, const cs_anchor_state *as, const double *v, double *d,
                  double *dv) {
-    double speed = v2_norm(v[0], v[1]), c = am->drag * embedded(am, as);
-    d[0] = -c * speed * v[0], d[1] = -c * speed * v[1];
+    double w[2], proj[4], c = am->drag * embedded(am, as);
+    toward_soil(as, v, w, proj);
+    double speed = v2_norm(w[0], w[1]);
+    d[0] = -c * speed * w[0], d[1] = -c * speed * w[1];
     if (!dv) return;
     for (int i = 0; i < 2; i++)
-        for (int j = 0; j < 2; j++)
-            dv[2 * i + j] = -c * (speed * (i == j) + (speed > 0.0 ? v[i] * v[j] / speed : 0.0));
+        for (int j = 0; j < 2; j++) {
+            dv[2 * i + j] = 0.0;
+            for (int k = 0; k < 2; k++)
+                dv[2 * i + j] -=
+                    c * (speed * (i == k) + (speed > 0.0 ? w[i] * w[k] / speed : 0.0)) * proj[2 * k + j];
+        }
 }
 
 /* The rate the step from the last commit to u over h gives (the HHT-alpha update). */
