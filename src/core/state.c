@@ -175,7 +175,8 @@ unsigned long long cs_state_hash(const cs_model *model, const cs_state *s) {
     }
     for (int p = 0; p < model->post_count; p++) {
         const cs_post_state *ps = &s->posts[p];
-        int flags[6] = {(int)ps->status, ps->yielded, ps->captured, ps->pusher, ps->bearing, ps->withdrawing};
+        int flags[7] = {(int)ps->status, ps->yielded,     ps->captured, ps->pusher,
+                        ps->bearing,     ps->withdrawing, ps->passed};
         hash_bytes(&h, flags, sizeof flags);
         hash_bytes(&h, &ps->pull, sizeof ps->pull);
         hash_bytes(&h, &ps->pull_plastic, sizeof ps->pull_plastic);

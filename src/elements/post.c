@@ -359,6 +359,8 @@ static void struck_loads(const cs_post_model *pm, cs_post_state *ps) {
  * `k e + (c / h)(e - e_c) = q u`. The damper's work over the step is the trapezoid rule's, `(D_c + D) .
  * (e - e_c) / 2` with D = q - k e, booked as post damping: with the slider's and the spring's it makes up
  * the resistance's share of the swing's trapezoid (commit_swing). */
+static int edge_passed(const cs_model *model, const cs_state *s, int p);
+
 void cs_post_commit(const cs_model *model, cs_state *s, int p) {
     cs_post_state *ps = &s->posts[p];
     if (!cs_post_in_barrier(ps)) return;
@@ -406,6 +408,9 @@ void cs_post_commit(const cs_model *model, cs_state *s, int p) {
         ps->arm_commit = ps->arm, ps->bend_commit = ps->bend;
         struck_loads(pm, ps);
         cs_post_struck_slide_commit(model, s, p);
+        /* an edge that has passed it does not come back: the face's line swung back over it, or a side's
+         * behind the rear, is no edge (edge_passed) */
+        if (edge_passed(model, s, p)) ps->passed = 1;
         return;
     }
     cs_post_pull_commit(model, s, p);
@@ -668,7 +673,7 @@ static double place_one(const cs_model *model, cs_state *s, int p, double crush)
     ps->arm = arm;
     cs_post_resistance(pm, ps, ps->tilt, q);
     double m = q[0] * f[0] + q[1] * f[1];
-    ps->bearing = m >= 0.0 && !edge_passed(model, s, p);
+    ps->bearing = m >= 0.0 && !ps->passed && !edge_passed(model, s, p);
     ps->bend = ps->bearing ? m : 0.0;
     /* the edge's height over a hinge at grade, while it bears: where it rides over the post (the edge's
      * line taken on past the vehicle, or backed off, is no edge) */
