@@ -188,10 +188,10 @@ j="$tmp/rs1/summary.json"
 check "rs1: summary.json's occupant risk with units" 'grep -qE "\"occupant_risk\":\{\"basis\":\"[^\"]*CFC 180[^\"]*\",\"point_m\":\[0,0,0\],\"occupant_impact\":\"in_run\",\"occupant_impact_time_s\":[0-9.e-]+,\"oiv_longitudinal_mps\":[0-9.e-]+,\"oiv_lateral_mps\":[0-9.e-]+,\"ora_longitudinal_g\":[0-9.e-]+,\"ora_lateral_g\":[0-9.e-]+,\"head_impact\":\"in_run\",\"thiv_time_s\":[0-9.e-]+,\"thiv_mps\":[0-9.e-]+,\"thiv_kmh\":[0-9.e-]+,\"phd_g\":[0-9.e-]+,\"asi\":[0-9.e-]+,\"asi_time_s\":[0-9.e-]+\},\"max_roll_deg\":[0-9.e-]+,\"max_pitch_deg\":[0-9.e-]+" "$j"'
 check "rs1: the criteria of NCHRP 350 3-11 as run" 'grep -qE "\"roadside_criteria\":\{\"standard\":\"nchrp-350\",\"test\":\"3-11\",\"vehicle\":\"2000P\",\"criteria\":\[\{\"id\":\"A\"" "$j" && grep -qE "\"id\":\"D\",[^}]*\"verdict\":\"not judged\"" "$j"'
 # A vehicle that has left the barrier is redirected whatever stops the run on its way out: the design's
-# pickup leaves the ropes at 1.224 s and the run would end a vehicle's length later (1.55525 s); 5,000
-# steps (1.25 s at 0.25 ms) stop it first, with the exit already taken.
-left=$("$cs" run examples/roadside/design.yaml --set scenario.max_steps=5000 -o "$tmp/left" 2>&1)
-check "a run stopped by its step limit after the exit: redirected, with its exit" '[ $? -eq 0 ] && head -1 <<<"$left" | grep -qE "^design: the vehicle was redirected, exit speed [0-9.]+ m/s .* leaving contact at t = 1.224 s$" || { head -3 <<<"$left"; false; }'
+# pickup leaves the ropes at 1.495 s and the run would end a vehicle's length later (1.83275 s); 6,000
+# steps (1.5 s at 0.25 ms) stop it first, with the exit already taken.
+left=$("$cs" run examples/roadside/design.yaml --set scenario.max_steps=6000 -o "$tmp/left" 2>&1)
+check "a run stopped by its step limit after the exit: redirected, with its exit" '[ $? -eq 0 ] && head -1 <<<"$left" | grep -qE "^design: the vehicle was redirected, exit speed [0-9.]+ m/s .* leaving contact at t = 1.495 s$" || { head -3 <<<"$left"; false; }'
 # A's detail names each cable the pickup rode over or went under (events.csv's override and underride
 # rows: RS5 with its lowest rope lowered to 0.30 m, under the bumper and the front axle, is ridden over),
 # and says the other cables held it, as the verdict pass says.

@@ -603,7 +603,8 @@ static void the_side_lets_a_post_go_past_the_rear(void **state) {
  * `edge_passed`; RS2's post 23 was pushed on 0.16 m beyond the corner by the face's line taken on past
  * it). Committed there, it stays free with the face swung back over it: the face's line is no edge for a
  * post it has passed (a roadside design's post 12, met again 0.1 m deep, jumped 16 kJ of soil work in a
- * step). */
+ * step). A side that then sweeps over it strikes it afresh (the same design's post 12 and RS2's post 22
+ * with hooks at 1 kN, grazed by a corner and then crossed by the right side for 0.2-0.3 s). */
 static void the_face_lets_a_post_go_past_its_corner(void **state) {
     (void)state;
     fixture fx;
@@ -636,6 +637,12 @@ static void the_face_lets_a_post_go_past_its_corner(void **state) {
     printf("committed past it, the face back over it 0.1 m further on: bearing %d, push %.1f N\n",
            s->posts[0].bearing, s->posts[0].push);
     assert_true(s->posts[0].passed && !s->posts[0].bearing && s->posts[0].push == 0.0);
+    s->pos[0] = m->posts[0].x - v->cg_to_front + 0.5, s->pos[1] = -(0.5 * v->front_width - 0.3);
+    s->vel[0] = 0.0, s->vel[1] = 5.0;
+    assert_int_equal(cs_post_capture(m, s, 0), 1);
+    printf("the left side over it 0.5 m behind the face: struck by %d (left %d), passed %d\n",
+           s->posts[0].pusher, CS_PUSH_LEFT, s->posts[0].passed);
+    assert_true(s->posts[0].pusher == CS_PUSH_LEFT && !s->posts[0].passed);
     cs_state_free(s);
     cs_model_free(m);
 }

@@ -756,7 +756,7 @@ static void capture(const cs_model *model, cs_state *s, int p, int pusher, int w
     cs_post_state *ps = &s->posts[p];
     cs_post_struck_slide_take(model, s, p);
     ps->rate[0] = ps->rate[1] = ps->acc[0] = ps->acc[1] = ps->damper[0] = ps->damper[1] = 0.0;
-    ps->captured = 1;
+    ps->captured = 1, ps->passed = 0;
     ps->waiting = waiting;
     ps->bearing = 1;
     ps->pusher = pusher;
@@ -803,7 +803,8 @@ static int came_in_across_side(const cs_state *s, const double b[3], double past
     return (in_side + CS_CAPTURE_MARGIN) * vf < past_face * vs;
 }
 
-/* Capture the standing posts the face has reached, and those a side has swept over. A post inside the
+/* Capture the standing posts the face has reached, and those a side has swept over: a post an edge has
+ * passed (edge_passed) stands free at its set and is struck afresh by the next edge. A post inside the
  * outline near a front corner is inside both the face and a side. The face strikes what it passes within
  * CS_CAPTURE_MARGIN of its corners, so the side struck it only if it came within that margin of the side
  * after the face passed it: it did if, at the rates at which the post moves into the outline in the body
@@ -820,7 +821,7 @@ int cs_post_capture(const cs_model *model, cs_state *s, int waiting) {
     int any = 0;
     for (int p = 0; p < model->post_count; p++) {
         cs_post_state *ps = &s->posts[p];
-        if (ps->captured || !cs_post_in_barrier(ps)) continue;
+        if ((ps->captured && !ps->passed) || !cs_post_in_barrier(ps)) continue;
         double top[3], rel[3], b[3];
         int upright = cs_post_upright(&model->posts[p]);
         cs_post_attachment(model, p, ps->tilt, ps->pull, upright, zb, top);
