@@ -210,6 +210,14 @@ static cs_model *one_post_model(cs_post_def *post, double *strike_height) {
     return m;
 }
 
+/* one_post_model with APS3's line post. */
+static cs_model *one_line_post_model(void) {
+    fixture fx;
+    fixture_aps3(&fx);
+    cs_post_def post = fx.posts[0];
+    return one_post_model(&post, NULL);
+}
+
 static cs_model *strike_one_post_until(cs_post_def *post, cs_state **state, double *strike_height,
                                        cs_post_status failure) {
     cs_model *m = one_post_model(post, strike_height);
@@ -473,10 +481,7 @@ static void sliding_struck_post_costs_the_truck_its_work(void **state) {
  * let them turn the post for nothing (2,936 J taken for 3,712 J of work). */
 static void struck_post_takes_the_work_the_face_does(void **state) {
     (void)state;
-    fixture fx;
-    fixture_aps3(&fx);
-    cs_post_def post = fx.posts[0];
-    cs_model *m = one_post_model(&post, NULL);
+    cs_model *m = one_line_post_model();
     cs_error err;
     cs_state *s = cs_state_create(m, &err);
     while (!s->posts[0].captured)
@@ -558,6 +563,30 @@ static void a_post_is_struck_by_the_edge_it_came_in_across(void **state) {
     cs_model_free(m);
 }
 
+/* Places captured post 0 with the body's coordinate `axis` at at[0], where the edge that struck it must
+ * bear on it (more than 1 kN), then at at[1], the body risen by `rise`, where it must stand free at its set,
+ * pushing nothing, with the edge's height over its hinge it had at at[0]. */
+static void bears_then_stands_free(const cs_model *m, cs_state *s, int axis, const double at[2],
+                                   double rise) {
+    double lever = 0.0;
+    for (int k = 0; k < 2; k++) {
+        s->pos[axis] = at[k];
+        s->pos[2] += k * rise;
+        cs_post_place_captured(m, s, s->crush);
+        const cs_post_state *ps = &s->posts[0];
+        printf("the body's %c at %.3f m: bearing %d, push %.1f N, tilt %.4f rad\n", "xy"[axis], at[k],
+               ps -> bearing, ps -> push, hypot(ps->tilt[0], ps->tilt[1]));
+        if (k == 0) {
+            lever = ps->lever;
+            assert_true(ps->bearing && ps->push > 1e3);
+        } else {
+            assert_false(ps->bearing);
+            assert_true(ps->push == 0.0 && ps->tilt[0] == ps->plastic[0] && ps->tilt[1] == ps->plastic[1]);
+            assert_true(ps->lever == lever);
+        }
+    }
+}
+
 /* The side ends at the rear: a post the left side struck and pushed 5 cm over bears on it 1 cm ahead of
  * the rear (the body moved on along its heading), and 1 cm behind the rear it stands free at its set,
  * pushing nothing (post.c `edge_passed`; RS3's post 7 was pushed on at its plateau for half a second by
@@ -566,33 +595,14 @@ static void a_post_is_struck_by_the_edge_it_came_in_across(void **state) {
  * went 86 ms after the rear had passed it, at a fold limit taken from the side's line behind the rear). */
 static void the_side_lets_a_post_go_past_the_rear(void **state) {
     (void)state;
-    fixture fx;
-    fixture_aps3(&fx);
-    cs_post_def post = fx.posts[0];
-    cs_model *m = one_post_model(&post, NULL);
+    cs_model *m = one_line_post_model();
     const cs_vehicle_def *v = &m->vehicle.def;
     cs_state *s = body_at_post(m, (const double[6]){0.020, 0.002, 0.0, 5.0, 0.0, 1.0});
     assert_int_equal(cs_post_capture(m, s, 0), 1);
     assert_int_equal(s->posts[0].pusher, CS_PUSH_LEFT);
     s->pos[1] += 0.05;
-    const double past[2] = {-0.01, 0.01};
-    double lever = 0.0;
-    for (int k = 0; k < 2; k++) {
-        s->pos[0] = m->posts[0].x + v->cg_to_rear + past[k];
-        s->pos[2] += k * 0.1;
-        cs_post_place_captured(m, s, s->crush);
-        const cs_post_state *ps = &s->posts[0];
-        if (k == 0) lever = ps->lever;
-        printf("the post %+.2f m past the rear: bearing %d, push %.1f N, tilt %.4f rad\n", past[k],
-               ps->bearing, ps->push, hypot(ps->tilt[0], ps->tilt[1]));
-        if (k == 0) {
-            assert_true(ps->bearing && ps->push > 1e3);
-        } else {
-            assert_false(ps->bearing);
-            assert_true(ps->push == 0.0 && ps->tilt[0] == ps->plastic[0] && ps->tilt[1] == ps->plastic[1]);
-            assert_true(ps->lever == lever);
-        }
-    }
+    const double x = m->posts[0].x + v->cg_to_rear;
+    bears_then_stands_free(m, s, 0, (const double[2]){x - 0.01, x + 0.01}, 0.1); /* 1 cm either side */
     cs_state_free(s);
     cs_model_free(m);
 }
@@ -616,22 +626,10 @@ static void the_face_lets_a_post_go_past_its_corner(void **state) {
     assert_int_equal(cs_post_capture(m, s, 0), 1);
     assert_int_equal(s->posts[0].pusher, CS_PUSH_FACE);
     s->pos[0] += 0.05;
-    const double beyond[2] = {0.09, 0.11};
-    for (int k = 0; k < 2; k++) {
-        s->pos[1] = -(0.5 * v->front_width + beyond[k]);
-        cs_post_place_captured(m, s, s->crush);
-        const cs_post_state *ps = &s->posts[0];
-        printf("the post %.2f m beyond the corner: bearing %d, push %.1f N, tilt %.4f rad\n", beyond[k],
-               ps->bearing, ps->push, hypot(ps->tilt[0], ps->tilt[1]));
-        if (k == 0) {
-            assert_true(ps->bearing && ps->push > 1e3);
-        } else {
-            assert_false(ps->bearing);
-            assert_true(ps->push == 0.0 && ps->tilt[0] == ps->plastic[0] && ps->tilt[1] == ps->plastic[1]);
-        }
-    }
+    const double y = -0.5 * v->front_width; /* the post at the left corner, 0.09 and 0.11 m beyond it */
+    bears_then_stands_free(m, s, 1, (const double[2]){y - 0.09, y - 0.11}, 0.0);
     cs_post_commit(m, s, 0);
-    s->pos[1] = -(0.5 * v->front_width + beyond[0]);
+    s->pos[1] = y - 0.09;
     s->pos[0] += 0.1;
     cs_post_place_captured(m, s, s->crush);
     printf("committed past it, the face back over it 0.1 m further on: bearing %d, push %.1f N\n",
