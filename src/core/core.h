@@ -218,7 +218,7 @@ typedef struct cs_post_state {
     double push;              /* force of the vehicle on a captured post, N */
     double lift;           /* how far its slot's cables have ridden up the slot together, m (attachment.c) */
     int bearing;           /* a captured post the vehicle's edge bears on (not backed off) */
-    int passed;            /* the edge that struck it has passed it (committed): it stands free for good */
+    int passed;            /* the edge that struck it has passed it (committed): free till the next strikes */
     int waiting;           /* struck at a step's new pose, before its solve: pushes from the step's end */
     double tilt_commit[2]; /* tilt at the last commit, rad */
     double rate[2];        /* rate of tilt at the last commit, rad/s */

@@ -18,9 +18,8 @@
  * must take on its speed: the momentum flux drags it back with c |v| v, c = rho b D (the inertial drag of
  * a body driven through a granular soil; docs/theory.md), booked as soil; backing off the soil it has
  * ploughed, into its own trench, it sweeps none, and only its sides hold it (trial_force). It is integrated
- * over the time h since the last commit by the HHT-alpha method (Hilber, Hughes and Taylor 1977): with F =
- * F_ropes - R(u)
- * - c |v(u)| v(u) the net force,
+ * over the time h since the last commit by the HHT-alpha method (Hilber, Hughes and Taylor 1977): with
+ * F = F_ropes - R(u) - c |v(u)| v(u) the net force,
  *   M a = (1 + alpha) F(u) - alpha F_c,
  *   u = u_c + h v_c + h^2 ((1/2 - beta) a_c + beta a),   v = v_c + h ((1 - gamma) a_c + gamma a),
  * beta = (1 - alpha)^2 / 4, gamma = 1/2 - alpha, so that its residual
