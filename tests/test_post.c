@@ -589,10 +589,10 @@ static void bears_then_stands_free(const cs_model *m, cs_state *s, int axis, con
 
 /* The side ends at the rear: a post the left side struck and pushed 5 cm over bears on it 1 cm ahead of
  * the rear (the body moved on along its heading), and 1 cm behind the rear it stands free at its set,
- * pushing nothing (post.c `edge_passed`; RS3's post 7 was pushed on at its plateau for half a second by
- * the side's line taken on past the rear). Free, it keeps the edge's height over its hinge from when the
- * edge last bore on it, and with it where an edge rides over it, though the body rises 0.1 m (RS4's post 7
- * went 86 ms after the rear had passed it, at a fold limit taken from the side's line behind the rear). */
+ * pushing nothing (post.c `edge_passed`: the side's line taken on past the rear would push RS3's post 7 at
+ * its plateau for half a second). Free, it keeps the edge's height over its hinge from when the edge last
+ * bore on it, and with it where an edge rides over it, though the body rises 0.1 m (a fold limit taken from
+ * the side's line behind the rear would fail RS4's post 7 86 ms after the rear has passed it). */
 static void the_side_lets_a_post_go_past_the_rear(void **state) {
     (void)state;
     cs_model *m = one_line_post_model();
@@ -610,11 +610,11 @@ static void the_side_lets_a_post_go_past_the_rear(void **state) {
 /* The face ends at its corners: a post the face struck 5 cm in from its left corner bears on it (the body
  * moved on 5 cm) with the body moved across until the post is 1 cm short of the strike's margin beyond the
  * corner (0.1 m), and 1 cm past that margin it stands free at its set, pushing nothing (post.c
- * `edge_passed`; RS2's post 23 was pushed on 0.16 m beyond the corner by the face's line taken on past
+ * `edge_passed`: the face's line taken on past its corner would push RS2's post 23 on 0.16 m beyond
  * it). Committed there, it stays free with the face swung back over it: the face's line is no edge for a
- * post it has passed (a roadside design's post 12, met again 0.1 m deep, jumped 16 kJ of soil work in a
- * step). A side that then sweeps over it strikes it afresh (the same design's post 12 and RS2's post 22
- * with hooks at 1 kN, grazed by a corner and then crossed by the right side for 0.2-0.3 s). */
+ * post it has passed (met again 0.1 m deep, a roadside design's post 12 would jump to a new lean, 16 kJ
+ * of soil work in a step). A side that then sweeps over it strikes it afresh (the same design's post 12 and
+ * RS2's post 22 with hooks at 1 kN, grazed by a corner and then crossed by the right side for 0.2-0.3 s). */
 static void the_face_lets_a_post_go_past_its_corner(void **state) {
     (void)state;
     fixture fx;
